@@ -1,0 +1,18 @@
+// rasterlab-cli: the renderer without a window. Subcommands:
+//   render                  render a course scene (or the default scene) to PNG
+//   generate-default-scene  write the default scene's three course files
+// Exit status: 0 on success, 1 when an input is bad (one "file:line:col: message" line on
+// stderr), 2 when the command line is wrong. Warnings go to stderr; what was written, to
+// stdout. The command line and its output are in English and stable, for scripts.
+#pragma once
+
+#include <QStringList>
+#include <QTextStream>
+
+namespace rasterlab {
+
+enum ExitCode { ExitOk = 0, ExitBadInput = 1, ExitUsage = 2 };
+
+int runCli(const QStringList& arguments, QTextStream& out, QTextStream& err);
+
+}  // namespace rasterlab

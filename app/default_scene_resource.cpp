@@ -1,0 +1,58 @@
+#include "default_scene_resource.h"
+
+#include <QFile>
+
+#include "default_scene.h"
+
+namespace rasterlab {
+
+QString defaultScenePath(const char* fileName) {
+    return QStringLiteral(":/default-scene/") + QString::fromUtf8(fileName);
+}
+
+namespace {
+
+// The bytes of a file on disk or in the resources, or an Io error naming it.
+rl::Result<QByteArray> readBytes(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return rl::makeError(rl::ErrorCode::Io, rl::SourceLocation{path.toStdString(), 0, 0},
+                             "cannot open: " + file.errorString().toStdString());
+    return file.readAll();
+}
+
+template <typename Parse>
+auto load(const QString& path, rl::Diagnostics& diagnostics, Parse parse)
+    -> decltype(parse(std::string_view(), std::string(), diagnostics)) {
+    auto bytes = readBytes(path);
+    if (!bytes) return bytes.error();
+    const QByteArray& data = bytes.value();
+    return parse(std::string_view(data.constData(), static_cast<std::size_t>(data.size())),
+                 path.toStdString(), diagnostics);
+}
+
+}  // namespace
+
+rl::Result<rl::CourseCamera> loadCamera(const QString& path, rl::Diagnostics& diagnostics) {
+    return load(path, diagnostics, rl::parseCourseCamera);
+}
+
+rl::Result<rl::CourseLighting> loadLighting(const QString& path, rl::Diagnostics& diagnostics) {
+    return load(path, diagnostics, rl::parseCourseLighting);
+}
+
+rl::Result<rl::CourseObject> loadObject(const QString& path, rl::Diagnostics& diagnostics) {
+    return load(path, diagnostics, rl::parseCourseObject);
+}
+
+rl::Result<rl::CourseSceneParts> loadDefaultCourseScene(rl::Diagnostics& diagnostics) {
+    auto camera = loadCamera(defaultScenePath(rl::kDefaultCameraFile), diagnostics);
+    if (!camera) return camera.error();
+    auto lighting = loadLighting(defaultScenePath(rl::kDefaultLightingFile), diagnostics);
+    if (!lighting) return lighting.error();
+    auto object = loadObject(defaultScenePath(rl::kDefaultObjectFile), diagnostics);
+    if (!object) return object.error();
+    return rl::CourseSceneParts{camera.value(), lighting.value(), object.value()};
+}
+
+}  // namespace rasterlab

@@ -1,0 +1,22 @@
+// The default scene embedded in the executables (resources/default-scene, under the
+// resource prefix ":/default-scene/").
+#pragma once
+
+#include <QString>
+
+#include "course_scene.h"
+#include "diagnostics.h"
+
+namespace rasterlab {
+
+QString defaultScenePath(const char* fileName);  // ":/default-scene/<fileName>"
+
+// Reads the three embedded course files.
+rl::Result<rl::CourseSceneParts> loadDefaultCourseScene(rl::Diagnostics& diagnostics);
+
+// Reads one course file from disk or from the resources (paths starting with ":/").
+rl::Result<rl::CourseCamera> loadCamera(const QString& path, rl::Diagnostics& diagnostics);
+rl::Result<rl::CourseLighting> loadLighting(const QString& path, rl::Diagnostics& diagnostics);
+rl::Result<rl::CourseObject> loadObject(const QString& path, rl::Diagnostics& diagnostics);
+
+}  // namespace rasterlab

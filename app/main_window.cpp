@@ -1,0 +1,331 @@
+#include "main_window.h"
+
+#include <QApplication>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QListWidget>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QStatusBar>
+#include <QTextBrowser>
+
+#include <cmath>
+
+#include "frame_image_view.h"
+#include "image_io.h"
+
+namespace rasterlab {
+
+namespace {
+
+QString partTitle(SceneDocument::Part part) {
+    switch (part) {
+        case SceneDocument::Part::Camera: return MainWindow::tr("Open Camera");
+        case SceneDocument::Part::Lighting: return MainWindow::tr("Open Lighting");
+        case SceneDocument::Part::Object: return MainWindow::tr("Open Object");
+    }
+    return {};
+}
+
+QString partFilter(SceneDocument::Part part) {
+    switch (part) {
+        case SceneDocument::Part::Camera:
+            return MainWindow::tr("Camera files (*.cfg *.txt);;All files (*)");
+        case SceneDocument::Part::Lighting:
+            return MainWindow::tr("Lighting files (*.txt *.lux);;All files (*)");
+        case SceneDocument::Part::Object:
+            return MainWindow::tr("Objects (*.byu *.txt);;All files (*)");
+    }
+    return {};
+}
+
+QString displayName(const QString& source) {
+    if (source.startsWith(QStringLiteral(":/")))
+        return MainWindow::tr("%1 (built in)").arg(QFileInfo(source).fileName());
+    return QFileInfo(source).fileName();
+}
+
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    setObjectName(QStringLiteral("MainWindow"));
+    setWindowTitle(tr("RasterLab"));
+    m_view = new FrameImageView(this);
+    m_view->setObjectName(QStringLiteral("imageView"));
+    setCentralWidget(m_view);
+    m_controller = new RenderController(this);
+    connect(m_controller, &RenderController::frameReady, this, &MainWindow::onFrameReady);
+    connect(m_controller, &RenderController::failed, this, &MainWindow::onRenderFailed);
+    connect(m_view, &FrameImageView::pixelHovered, this, &MainWindow::onPixelHovered);
+
+    createDocks();
+    createActions();
+    m_pixelLabel = new QLabel(this);
+    m_timeLabel = new QLabel(this);
+    statusBar()->addWidget(m_pixelLabel, 1);
+    statusBar()->addPermanentWidget(m_timeLabel);
+    resize(1280, 860);
+
+    if (auto status = m_document.loadDefault(); !status)
+        showError(QString::fromStdString(status.error().toString()));
+    refreshMessages();
+    requestRender();
+}
+
+void MainWindow::createActions() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* openObject = file->addAction(tr("Open &Object..."), this,
+                                          [this] { openPartDialog(SceneDocument::Part::Object); });
+    openObject->setShortcut(QKeySequence::Open);
+    openObject->setObjectName(QStringLiteral("openObjectAction"));
+    QAction* openCamera = file->addAction(tr("Open &Camera..."), this,
+                                          [this] { openPartDialog(SceneDocument::Part::Camera); });
+    openCamera->setShortcut(QKeySequence(tr("Ctrl+Shift+C")));
+    QAction* openLighting = file->addAction(
+        tr("Open &Lighting..."), this, [this] { openPartDialog(SceneDocument::Part::Lighting); });
+    openLighting->setShortcut(QKeySequence(tr("Ctrl+Shift+L")));
+    file->addAction(tr("&Default Scene"), this, [this] {
+        if (auto status = m_document.loadDefault(); !status)
+            showError(QString::fromStdString(status.error().toString()));
+        else
+            m_lastError.clear();
+        refreshMessages();
+        requestRender();
+    });
+    file->addSeparator();
+    QAction* exportAction = file->addAction(tr("&Export PNG..."), this, &MainWindow::exportDialog);
+    exportAction->setShortcut(QKeySequence(tr("Ctrl+E")));
+    exportAction->setObjectName(QStringLiteral("exportAction"));
+    file->addSeparator();
+    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    QAction* fit = view->addAction(tr("&Fit to Window"), m_view, &FrameImageView::fitToWindow);
+    fit->setShortcut(QKeySequence(tr("Ctrl+0")));
+    QAction* actual = view->addAction(tr("&Actual Size"), m_view, &FrameImageView::zoomToActualSize);
+    actual->setShortcut(QKeySequence(tr("Ctrl+1")));
+    QAction* zoomIn = view->addAction(tr("Zoom &In"), m_view, &FrameImageView::zoomIn);
+    zoomIn->setShortcut(QKeySequence::ZoomIn);
+    QAction* zoomOut = view->addAction(tr("Zoom &Out"), m_view, &FrameImageView::zoomOut);
+    zoomOut->setShortcut(QKeySequence::ZoomOut);
+    view->addSeparator();
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
+
+    QMenu* shading = menuBar()->addMenu(tr("&Shading"));
+    m_shadingGroup = new QActionGroup(this);
+    const std::pair<rl::ShadingModel, QString> models[] = {
+        {rl::ShadingModel::Phong, tr("&Phong (per pixel)")},
+        {rl::ShadingModel::Gouraud, tr("&Gouraud (per vertex)")},
+        {rl::ShadingModel::Flat, tr("&Flat (per triangle)")},
+    };
+    int key = 1;
+    for (const auto& [model, label] : models) {
+        QAction* action = shading->addAction(label);
+        action->setCheckable(true);
+        action->setChecked(model == m_document.settings().shading);
+        action->setShortcut(QKeySequence(tr("Alt+%1").arg(key++)));
+        action->setData(static_cast<int>(model));
+        m_shadingGroup->addAction(action);
+        connect(action, &QAction::triggered, this, [this, model = model] { setShading(model); });
+    }
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About RasterLab"), this, &MainWindow::about);
+}
+
+void MainWindow::createDocks() {
+    auto* messagesDock = new QDockWidget(tr("Messages"), this);
+    messagesDock->setObjectName(QStringLiteral("messagesDock"));
+    m_messages = new QListWidget(messagesDock);
+    m_messages->setObjectName(QStringLiteral("messagesList"));
+    m_messages->setWordWrap(true);
+    messagesDock->setWidget(m_messages);
+    addDockWidget(Qt::BottomDockWidgetArea, messagesDock);
+
+    auto* sceneDock = new QDockWidget(tr("Scene"), this);
+    sceneDock->setObjectName(QStringLiteral("sceneDock"));
+    m_summary = new QTextBrowser(sceneDock);
+    m_summary->setObjectName(QStringLiteral("sceneSummary"));
+    sceneDock->setWidget(m_summary);
+    addDockWidget(Qt::RightDockWidgetArea, sceneDock);
+    resizeDocks({sceneDock}, {330}, Qt::Horizontal);
+    resizeDocks({messagesDock}, {130}, Qt::Vertical);
+}
+
+bool MainWindow::openPart(SceneDocument::Part part, const QString& path) {
+    auto status = m_document.open(part, path);
+    if (!status) {
+        showError(QString::fromStdString(status.error().toString()));
+        return false;
+    }
+    m_lastError.clear();
+    refreshMessages();
+    requestRender();
+    return true;
+}
+
+void MainWindow::setShading(rl::ShadingModel model) {
+    m_document.setShading(model);
+    for (QAction* action : m_shadingGroup->actions())
+        action->setChecked(action->data().toInt() == static_cast<int>(model));
+    requestRender();
+}
+
+bool MainWindow::exportImage(const QString& path) {
+    QString error;
+    if (m_frame.image.isNull() || !savePng(m_frame.image, path, &error)) {
+        showError(tr("%1: cannot export the image: %2")
+                      .arg(path, error.isEmpty() ? tr("nothing has been rendered yet") : error));
+        return false;
+    }
+    statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).absoluteFilePath()), 5000);
+    return true;
+}
+
+void MainWindow::requestRender() {
+    if (!m_document.isLoaded()) return;
+    m_timeLabel->setText(tr("rendering..."));
+    m_controller->request(m_document.scene());
+}
+
+void MainWindow::onFrameReady(const RenderedFrame& frame) {
+    m_frame = frame;
+    m_view->setImage(frame.image);
+    m_timeLabel->setText(tr("%1 ms").arg(frame.trace->totalMilliseconds, 0, 'f', 1));
+    refreshMessages();
+    refreshSceneSummary();
+}
+
+void MainWindow::onRenderFailed(const QString& message) {
+    // The last good image stays on screen, with the message beside it.
+    showError(message);
+    m_timeLabel->setText(tr("render failed"));
+}
+
+void MainWindow::showError(const QString& message) {
+    m_lastError = message;
+    refreshMessages();
+    statusBar()->showMessage(message, 10000);
+}
+
+void MainWindow::refreshMessages() {
+    m_messages->clear();
+    if (!m_lastError.isEmpty()) {
+        auto* item = new QListWidgetItem(tr("Error: %1").arg(m_lastError), m_messages);
+        item->setForeground(QColor(200, 30, 30));
+    }
+    rl::Diagnostics all = m_document.diagnostics();
+    if (m_frame.trace) all.append(m_frame.trace->diagnostics);
+    for (const auto& d : all.items()) {
+        auto* item = new QListWidgetItem(QString::fromStdString(d.toString()), m_messages);
+        if (d.severity == rl::Severity::Warning) item->setForeground(QColor(170, 110, 0));
+    }
+}
+
+void MainWindow::refreshSceneSummary() {
+    if (!m_frame.trace) return;
+    const rl::FrameTrace& t = *m_frame.trace;
+    const rl::Scene& scene = *t.scene;
+    QString html;
+    html += QStringLiteral("<h3>%1</h3>").arg(tr("Files"));
+    html += QStringLiteral("<p>%1: %2<br>%3: %4<br>%5: %6</p>")
+                .arg(tr("Camera"), displayName(m_document.source(SceneDocument::Part::Camera)),
+                     tr("Lighting"), displayName(m_document.source(SceneDocument::Part::Lighting)),
+                     tr("Object"), displayName(m_document.source(SceneDocument::Part::Object)));
+    html += QStringLiteral("<p>%1</p>")
+                .arg(tr("%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading")
+                         .arg(scene.vertexCount())
+                         .arg(scene.triangleCount())
+                         .arg(scene.width)
+                         .arg(scene.height)
+                         .arg(QString::fromUtf8(rl::shadingModelName(scene.draws.front().shading))));
+    html += QStringLiteral("<h3>%1</h3><table>").arg(tr("Stages"));
+    const QString stageNames[] = {tr("Camera basis"), tr("View transform"), tr("Normals"),
+                                  tr("Projection"),   tr("Scan conversion"), tr("Depth test"),
+                                  tr("Shading")};
+    for (rl::StageId stage : rl::kAllStages) {
+        const auto i = static_cast<std::size_t>(stage);
+        const std::string skip = t.skipReason(stage);
+        html += QStringLiteral("<tr><td>%1</td><td align='right'>%2</td></tr>")
+                    .arg(stageNames[i],
+                         skip.empty() ? tr("%1 ms").arg(t.stageMilliseconds[i], 0, 'f', 2)
+                                      : tr("skipped: %1").arg(QString::fromStdString(skip)));
+    }
+    html += QStringLiteral("</table>");
+    const auto& b = *t.cameraBasis;
+    if (!b.skipped) {
+        html += QStringLiteral("<h3>%1</h3>").arg(tr("Camera basis"));
+        auto vec = [](const rl::dvec3& v) {
+            return QStringLiteral("(%1, %2, %3)")
+                .arg(v.x, 0, 'f', 4)
+                .arg(v.y, 0, 'f', 4)
+                .arg(v.z, 0, 'f', 4);
+        };
+        html += QStringLiteral("<p>U = %1<br>V = %2<br>N = %3<br>%4</p>")
+                    .arg(vec(b.u), vec(b.v), vec(b.n),
+                         tr("largest orthonormality residual: %1").arg(b.maxResidual(), 0, 'g', 3));
+    }
+    html += QStringLiteral("<h3>%1</h3><p>").arg(tr("Counts"));
+    html += tr("Triangles clipped at the near plane: %1; behind the camera: %2<br>")
+                .arg(t.projection->clipped)
+                .arg(t.projection->behind);
+    html += tr("Zero-area triangles: %1 in view space, %2 on screen<br>")
+                .arg(t.normals->degenerateTriangles)
+                .arg(t.scan->degenerate);
+    html += tr("Fragments tested: %1; written: %2; rejected: %3<br>")
+                .arg(t.depth->fragments)
+                .arg(t.depth->passed)
+                .arg(t.depth->rejected);
+    html += tr("Pixels shaded: %1; normals turned toward the viewer: %2; N.L &lt; 0: %3; "
+               "R.V &lt; 0: %4; clamped at 255: %5")
+                .arg(t.shading->shadedPixels)
+                .arg(t.shading->flipped)
+                .arg(t.shading->lightBehind)
+                .arg(t.shading->noSpecular)
+                .arg(t.shading->clampedPixels);
+    html += QStringLiteral("</p>");
+    m_summary->setHtml(html);
+}
+
+void MainWindow::onPixelHovered(QPoint pixel) {
+    if (pixel.x() < 0 || !m_frame.trace) {
+        m_pixelLabel->clear();
+        return;
+    }
+    const QColor c = m_frame.image.pixelColor(pixel);
+    const float z = m_frame.trace->depth->depth.at(pixel.x(), pixel.y());
+    const QString depth = std::isfinite(z) ? QString::number(z, 'g', 6) : tr("empty (+inf)");
+    m_pixelLabel->setText(tr("x %1, y %2   RGB (%3, %4, %5)   depth %6")
+                              .arg(pixel.x())
+                              .arg(pixel.y())
+                              .arg(c.red())
+                              .arg(c.green())
+                              .arg(c.blue())
+                              .arg(depth));
+}
+
+void MainWindow::openPartDialog(SceneDocument::Part part) {
+    const QString path = QFileDialog::getOpenFileName(this, partTitle(part), QString(),
+                                                      partFilter(part));
+    if (!path.isEmpty()) openPart(part, path);
+}
+
+void MainWindow::exportDialog() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export PNG"),
+                                                      QStringLiteral("rasterlab.png"),
+                                                      tr("PNG images (*.png)"));
+    if (!path.isEmpty()) exportImage(path);
+}
+
+void MainWindow::about() {
+    QMessageBox::about(this, tr("About RasterLab"),
+                       tr("<h3>RasterLab %1</h3><p>The classic software rasterization pipeline, "
+                          "stage by stage: camera basis, view transform, normals, projection, "
+                          "scan conversion, depth test and shading.</p>")
+                           .arg(QStringLiteral(RASTERLAB_VERSION)));
+}
+
+}  // namespace rasterlab

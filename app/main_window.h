@@ -1,0 +1,68 @@
+// RasterLab's main window: the rendered image in the centre, a Messages dock with every
+// warning and error (file:line:col), a Scene dock with what was loaded and what each
+// stage did, and menus to open each course file on its own, pick the shading model and
+// export the image. A file that fails to load leaves the previous scene on screen.
+#pragma once
+
+#include <QActionGroup>
+#include <QMainWindow>
+
+#include <memory>
+
+#include "render_controller.h"
+#include "scene_document.h"
+
+class QLabel;
+class QListWidget;
+class QTextBrowser;
+
+namespace rasterlab {
+
+class FrameImageView;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+
+    // Replaces one part of the scene from a file; returns false (and shows the error,
+    // keeping the scene) when the file is bad.
+    bool openPart(SceneDocument::Part part, const QString& path);
+    void setShading(rl::ShadingModel model);
+    bool exportImage(const QString& path);
+
+    const SceneDocument& document() const { return m_document; }
+    std::shared_ptr<const rl::FrameTrace> currentFrame() const { return m_frame.trace; }
+    const QImage& currentImage() const { return m_frame.image; }
+    FrameImageView* imageView() const { return m_view; }
+    QListWidget* messages() const { return m_messages; }
+    RenderController* controller() const { return m_controller; }
+
+private:
+    void createActions();
+    void createDocks();
+    void requestRender();
+    void onFrameReady(const RenderedFrame& frame);
+    void onRenderFailed(const QString& message);
+    void showError(const QString& message);
+    void refreshMessages();
+    void refreshSceneSummary();
+    void onPixelHovered(QPoint pixel);
+    void openPartDialog(SceneDocument::Part part);
+    void exportDialog();
+    void about();
+
+    SceneDocument m_document;
+    RenderController* m_controller = nullptr;
+    RenderedFrame m_frame;
+    QString m_lastError;
+
+    FrameImageView* m_view = nullptr;
+    QListWidget* m_messages = nullptr;
+    QTextBrowser* m_summary = nullptr;
+    QLabel* m_pixelLabel = nullptr;
+    QLabel* m_timeLabel = nullptr;
+    QActionGroup* m_shadingGroup = nullptr;
+};
+
+}  // namespace rasterlab

@@ -1,0 +1,94 @@
+#include "camera_basis.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "format.h"
+
+namespace rl {
+
+double CameraBasis::maxResidual() const {
+    return std::max({std::abs(uDotV), std::abs(uDotN), std::abs(vDotNResidual),
+                     std::abs(uLengthError), std::abs(vLengthError), std::abs(nLengthError)});
+}
+
+Result<CameraBasis> CameraBasisStage::run(const Scene& scene, Diagnostics& diagnostics) const {
+    CameraBasis basis;
+    if (!scene.camera) {
+        basis.skipped = true;
+        basis.skipReason = "the scene gives its model/view matrices directly";
+        return basis;
+    }
+    const CourseCamera& camera = *scene.camera;
+    basis.c = camera.c;
+    basis.nGiven = camera.n;
+    basis.vGiven = camera.v;
+
+    // Reject what makes the basis or the projection undefined.
+    if (!isFinite(camera.c) || !isFinite(camera.n) || !isFinite(camera.v))
+        return makeError(ErrorCode::Degenerate, camera.where.c,
+                         "the camera's C, N and V must be finite numbers");
+    basis.nLength = glm::length(camera.n);
+    if (basis.nLength == 0.0)
+        return makeError(ErrorCode::Degenerate, camera.where.n,
+                         "N, the view direction, is the zero vector: it must point from the "
+                         "camera toward the scene");
+    if (glm::length(camera.v) == 0.0)
+        return makeError(ErrorCode::Degenerate, camera.where.v,
+                         "V, the up vector, is the zero vector: it must say which way is up");
+    if (camera.d == 0.0)
+        return makeError(ErrorCode::Degenerate, camera.where.d,
+                         "d, the distance to the projection plane, is 0: the projection "
+                         "(d/hx) x/z would squash every point to the centre");
+    if (camera.hx == 0.0)
+        return makeError(ErrorCode::Degenerate, camera.where.hx,
+                         "hx, the horizontal half-size of the window, is 0: the projection "
+                         "(d/hx) x/z divides by it");
+    if (camera.hy == 0.0)
+        return makeError(ErrorCode::Degenerate, camera.where.hy,
+                         "hy, the vertical half-size of the window, is 0: the projection "
+                         "(d/hy) y/z divides by it");
+
+    // Gram-Schmidt: normalise N, remove from V its component along N, normalise V.
+    basis.n = camera.n / basis.nLength;
+    basis.vDotN = glm::dot(camera.v, basis.n);
+    basis.vProjection = basis.vDotN * basis.n;
+    basis.vOrthogonal = camera.v - basis.vProjection;
+    basis.vOrthogonalLength = glm::length(basis.vOrthogonal);
+    if (!(basis.vOrthogonalLength > 1e-12 * glm::length(camera.v)))
+        return makeError(ErrorCode::Degenerate, camera.where.v,
+                         "V " + formatVector(camera.v) + " is parallel to N " + formatVector(camera.n) +
+                             ": Gram-Schmidt leaves nothing of V, so 'up' is undefined; "
+                             "choose a V that is not along N");
+    basis.v = basis.vOrthogonal / basis.vOrthogonalLength;
+    basis.u = glm::cross(basis.n, basis.v);
+
+    basis.uDotV = glm::dot(basis.u, basis.v);
+    basis.uDotN = glm::dot(basis.u, basis.n);
+    basis.vDotNResidual = glm::dot(basis.v, basis.n);
+    basis.uLengthError = glm::length(basis.u) - 1.0;
+    basis.vLengthError = glm::length(basis.v) - 1.0;
+    basis.nLengthError = glm::length(basis.n) - 1.0;
+
+    // viewFromWorld: pView = [U; V; N] (pWorld - C).
+    dmat4 rotation(1.0);
+    for (int k = 0; k < 3; ++k) {
+        rotation[k][0] = basis.u[k];
+        rotation[k][1] = basis.v[k];
+        rotation[k][2] = basis.n[k];
+    }
+    dmat4 translation(1.0);
+    translation[3] = dvec4(-camera.c, 1.0);
+    basis.viewFromWorld = rotation * translation;
+
+    if (camera.hx < 0.0)
+        diagnostics.warn(camera.where.hx, "hx is negative: the image is mirrored left to right");
+    if (camera.hy < 0.0)
+        diagnostics.warn(camera.where.hy, "hy is negative: the image is mirrored top to bottom");
+    if (camera.d < 0.0)
+        diagnostics.warn(camera.where.d,
+                         "d is negative: the image is turned upside down and mirrored");
+    return basis;
+}
+
+}  // namespace rl

@@ -1,0 +1,51 @@
+// Stage 1, camera basis (seed 000): from the course camera (C, N, V) build the orthonormal
+// basis {U, V, N} of view space by Gram-Schmidt:
+//     N := N / |N|;   V := V - (V.N) N;   V := V / |V|;   U := N x V
+// and the matrix viewFromWorld = [U; V; N] * translate(-C). Every intermediate vector and
+// the orthogonality residuals are kept, so the view can show the steps with numbers.
+// Degenerate cameras (a zero vector, N parallel to V, d = 0, hx = 0 or hy = 0) are errors
+// that name the values. A scene without a course camera (its draws carry their own view
+// matrices) skips this stage.
+#pragma once
+
+#include <string>
+
+#include "diagnostics.h"
+#include "math.h"
+#include "scene.h"
+
+namespace rl {
+
+struct CameraBasis {
+    bool skipped = false;        // the scene has no course camera
+    std::string skipReason;
+
+    // Inputs, as given.
+    dvec3 c = dvec3(0.0);
+    dvec3 nGiven = dvec3(0.0);
+    dvec3 vGiven = dvec3(0.0);
+
+    // Gram-Schmidt, step by step.
+    double nLength = 0.0;                 // |N| before normalisation
+    dvec3 n = dvec3(0.0, 0.0, 1.0);       // N / |N|
+    double vDotN = 0.0;                   // V.N, with N normalised
+    dvec3 vProjection = dvec3(0.0);       // proj_N(V) = (V.N) N
+    dvec3 vOrthogonal = dvec3(0.0);       // V - proj_N(V)
+    double vOrthogonalLength = 0.0;
+    dvec3 v = dvec3(0.0, 1.0, 0.0);       // normalised
+    dvec3 u = dvec3(1.0, 0.0, 0.0);       // N x V
+
+    // Orthonormality residuals of the result: all zero up to rounding.
+    double uDotV = 0.0, uDotN = 0.0, vDotNResidual = 0.0;
+    double uLengthError = 0.0, vLengthError = 0.0, nLengthError = 0.0;
+    double maxResidual() const;
+
+    dmat4 viewFromWorld = dmat4(1.0);     // rows U, V, N; then the translation by -C
+};
+
+class CameraBasisStage {
+public:
+    Result<CameraBasis> run(const Scene& scene, Diagnostics& diagnostics) const;
+};
+
+}  // namespace rl

@@ -1,0 +1,48 @@
+#include "course_scene.h"
+
+#include <filesystem>
+
+namespace rl {
+
+Result<CourseCamera> parseCourseCamera(std::string_view text, const std::string& fileName,
+                                       Diagnostics& diagnostics) {
+    return readCourseCamera(text, fileName, diagnostics);
+}
+
+Result<CourseLighting> parseCourseLighting(std::string_view text, const std::string& fileName,
+                                           Diagnostics& diagnostics) {
+    return readCourseLighting(text, fileName, diagnostics);
+}
+
+Result<CourseObject> parseCourseObject(std::string_view text, const std::string& fileName,
+                                       Diagnostics& diagnostics) {
+    auto mesh = readByuMesh(text, fileName, diagnostics);
+    if (!mesh) return mesh.error();
+    CourseObject object;
+    object.name = std::filesystem::path(fileName).filename().string();
+    object.mesh = std::make_shared<const Mesh>(std::move(mesh).value());
+    return object;
+}
+
+Scene makeCourseScene(const CourseSceneParts& parts, const CourseSceneSettings& settings) {
+    Scene scene;
+    scene.name = parts.object.name;
+    scene.width = settings.width;
+    scene.height = settings.height;
+    scene.camera = parts.camera;
+    scene.lights = parts.lighting.lights;
+    scene.ambientIntensity = parts.lighting.ambientIntensity;
+    scene.nearPlane = settings.nearPlane;
+    scene.rules = RasterRules::course();
+    scene.conventions = Conventions{};  // the course's: see scene.h
+
+    Draw draw;
+    draw.name = parts.object.name;
+    draw.mesh = parts.object.mesh;
+    draw.material = parts.lighting.material;
+    draw.shading = settings.shading;
+    scene.draws.push_back(std::move(draw));
+    return scene;
+}
+
+}  // namespace rl

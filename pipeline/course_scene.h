@@ -1,0 +1,45 @@
+// A course scene (seed 000): a camera file, a lighting file and an object file, each
+// loaded on its own so that any one can be swapped without touching the others, and put
+// together into a Scene with the course's conventions.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "course_readers.h"
+#include "diagnostics.h"
+#include "scene.h"
+
+namespace rl {
+
+struct CourseObject {
+    std::string name;                   // file name, for messages and views
+    std::shared_ptr<const Mesh> mesh;
+};
+
+struct CourseSceneParts {
+    CourseCamera camera;
+    CourseLighting lighting;
+    CourseObject object;
+};
+
+struct CourseSceneSettings {
+    int width = 800;
+    int height = 600;
+    ShadingModel shading = ShadingModel::Phong;
+    NearPlane nearPlane;
+};
+
+// From text in memory (fileName is used in messages only; the app reads the files).
+Result<CourseCamera> parseCourseCamera(std::string_view text, const std::string& fileName,
+                                       Diagnostics& diagnostics);
+Result<CourseLighting> parseCourseLighting(std::string_view text, const std::string& fileName,
+                                           Diagnostics& diagnostics);
+Result<CourseObject> parseCourseObject(std::string_view text, const std::string& fileName,
+                                       Diagnostics& diagnostics);
+
+// The scene with the course's conventions: NDC y up, depth = view z cleared to +infinity,
+// normals turned toward the viewer, colours in 0..255 truncated to bytes, black background.
+Scene makeCourseScene(const CourseSceneParts& parts, const CourseSceneSettings& settings);
+
+}  // namespace rl

@@ -1,0 +1,45 @@
+// Stage 6, depth test (z-buffer). For every pixel of every span, the screen barycentrics
+// (alpha, beta, gamma) of its sample with respect to the triangle's screen vertices give
+// the fragment's depth, z = alpha z1 + beta z2 + gamma z3 (seed 000: the z of
+// P' = alpha P1 + beta P2 + gamma P3 in view coordinates). The buffer starts at +infinity
+// and the nearer fragment wins: z < stored writes; a tie keeps the earlier triangle.
+//
+// The buffer remembers, for each pixel, the winning triangle and its barycentrics, so
+// shading runs once per visible pixel: the image equals that of shading each fragment as
+// it passes, in triangle order, but no light is computed for fragments that are hidden.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+
+#include "image.h"
+#include "math.h"
+#include "projection.h"
+#include "scan_conversion.h"
+#include "scene.h"
+
+namespace rl {
+
+inline constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
+
+struct DepthTest {
+    Image<float> depth;               // +infinity where nothing was drawn
+    Image<std::uint32_t> triangle;    // index into Projection::triangles, or kNoTriangle
+    Image<vec2> barycentric;          // (beta, gamma) of the winning fragment; alpha = 1 - b - g
+    std::size_t fragments = 0;        // tested
+    std::size_t passed = 0;           // written (including those overwritten later)
+    std::size_t rejected = 0;         // farther than (or as far as) what was stored
+
+    std::size_t coveredPixels() const;
+};
+
+class DepthTestStage {
+public:
+    template <typename Probe>
+    DepthTest run(const Scene& scene, const Projection& projection, const ScanConversion& scan,
+                  Probe& probe) const;
+    DepthTest run(const Scene& scene, const Projection& projection,
+                  const ScanConversion& scan) const;
+};
+
+}  // namespace rl

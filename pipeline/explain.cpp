@@ -1,0 +1,117 @@
+#include "explain.h"
+
+#include <cstdio>
+
+#include "format.h"
+#include "output_image.h"
+
+namespace rl {
+
+namespace {
+
+std::string f3(const vec3& v) { return formatVector(dvec3(v)); }
+
+std::string triangleName(const FrameTrace& trace, std::uint32_t t) {
+    const ScreenTriangle& tri = trace.projection->triangles[t];
+    const Draw& draw = trace.scene->draws[tri.draw];
+    std::string s = "triangle " + std::to_string(tri.source + 1) + " of " + draw.name;
+    if (draw.mesh && tri.source < draw.mesh->triangleLines.size())
+        s += " (line " + std::to_string(draw.mesh->triangleLines[tri.source]) + ")";
+    if (trace.projection->draws[tri.draw].fate[tri.source] == TriangleFate::Clipped)
+        s += ", its part in front of the near plane";
+    return s;
+}
+
+std::string depthText(float z) {
+    if (std::isinf(z)) return z > 0 ? "+infinity" : "-infinity";
+    return formatNumber(z);
+}
+
+void describeSample(std::string& out, const PhongSample& s, const Material& m) {
+    out += "    N = " + f3(s.n) + (s.flipped ? "  (turned toward the viewer: V.N was < 0)" : "") +
+           "\n";
+    if (s.noNormal) {
+        out += "    the normal is zero (only degenerate triangles meet here): ambient only\n";
+        return;
+    }
+    if (s.lightAtPoint) {
+        out += "    the light is at the point itself (L = 0): ambient only\n";
+        return;
+    }
+    out += "    L = " + f3(s.l) + "   V = " + f3(s.v) + "   R = " + f3(s.r) + "\n";
+    out += "    N.L = " + formatNumber(s.nDotL) + "   R.V = " + formatNumber(s.rDotV) + "\n";
+    if (s.lightBehind) out += "    N.L < 0: the light is behind the surface, no diffuse, no specular\n";
+    if (s.noSpecular) out += "    R.V < 0: the reflection points away from the viewer, no specular\n";
+    out += "    ambient  Ia*ka          = " + f3(s.ambient) + "\n";
+    out += "    diffuse  Il*Od*kd*(N.L) = " + f3(s.diffuse) + "\n";
+    out += "    specular Il*ks*(R.V)^n  = " + f3(s.specular) + "   (n = " +
+           formatNumber(m.shininess) + ")\n";
+}
+
+}  // namespace
+
+std::string explainPixel(const FrameTrace& trace, const RecordingProbe& probe) {
+    std::string out;
+    if (!probe.pixel()) return out;
+    const ivec2 px = *probe.pixel();
+    out += "pixel (" + std::to_string(px.x) + ", " + std::to_string(px.y) + ")\n";
+    // Scan conversion: which triangles' spans reach the pixel.
+    int spans = 0;
+    for (const ProbeEvent& event : probe.events()) {
+        if (const auto* span = std::get_if<SpanEvent>(&event)) {
+            if (spans++ == 0) out += "  scan conversion: spans covering the pixel\n";
+            out += "    " + triangleName(trace, span->triangle) + ": row " +
+                   std::to_string(span->span.y) + ", x = " + std::to_string(span->span.xBegin) +
+                   ".." + std::to_string(span->span.xEnd - 1) + " (edges at x = " +
+                   formatNumber(span->xLeft) + " and " + formatNumber(span->xRight) + ")\n";
+        }
+    }
+    bool anyFragment = false;
+    int fragment = 0;
+    for (const ProbeEvent& event : probe.events()) {
+        if (const auto* test = std::get_if<DepthTestEvent>(&event)) {
+            if (!anyFragment) out += "  depth test, in drawing order:\n";
+            anyFragment = true;
+            out += "    " + std::to_string(++fragment) + ". " + triangleName(trace, test->triangle) +
+                   ": barycentrics alpha = " + formatNumber(test->alpha) +
+                   ", beta = " + formatNumber(test->beta) + ", gamma = " +
+                   formatNumber(test->gamma) + "; z = " + depthText(test->depth) +
+                   (test->passed ? " < " : " >= ") + "stored " + depthText(test->stored) +
+                   (test->passed ? ": written\n" : ": rejected, not nearer\n");
+        } else if (const auto* shade = std::get_if<ShadeEvent>(&event)) {
+            const Draw& draw = trace.scene->draws[trace.projection->triangles[shade->triangle].draw];
+            out += "  shading (" + std::string(shadingModelName(shade->model)) + ") of the winner, " +
+                   triangleName(trace, shade->triangle) + ":\n";
+            switch (shade->model) {
+                case ShadingModel::Phong:
+                    out += "    P' = " + f3(shade->pView) + "   N interpolated = " +
+                           f3(shade->nInterpolated) + "\n";
+                    describeSample(out, shade->sample, draw.material);
+                    break;
+                case ShadingModel::Flat:
+                    out += "    one evaluation at the triangle's barycentre, with its normal\n";
+                    describeSample(out, shade->sample, draw.material);
+                    break;
+                case ShadingModel::Gouraud:
+                    out += "    vertex colours " + f3(shade->vertexColours[0]) + ", " +
+                           f3(shade->vertexColours[1]) + ", " + f3(shade->vertexColours[2]) +
+                           ", interpolated with the barycentrics\n";
+                    break;
+            }
+            const Conventions& conv = trace.scene->conventions;
+            const vec3 c = shade->colour;
+            const bool clamped = c.r > conv.colourScale || c.g > conv.colourScale ||
+                                 c.b > conv.colourScale;
+            out += "    colour = " + f3(c) + " -> bytes (" +
+                   std::to_string(toByte(c.r, conv)) + ", " + std::to_string(toByte(c.g, conv)) +
+                   ", " + std::to_string(toByte(c.b, conv)) + ")" +
+                   (clamped ? "  (clamped at " + formatNumber(conv.colourScale) + ")" : "") +
+                   "\n";
+        }
+    }
+    if (!anyFragment)
+        out += "  no triangle covers this pixel: it keeps the background colour\n";
+    return out;
+}
+
+}  // namespace rl

@@ -1,0 +1,40 @@
+// Everything one frame computed: each stage's output, kept so that every view can draw
+// its stage, plus the diagnostics and the time each stage took. Immutable once returned;
+// shared with the UI through shared_ptr<const ...>.
+#pragma once
+
+#include <array>
+#include <memory>
+
+#include "camera_basis.h"
+#include "depth_test.h"
+#include "diagnostics.h"
+#include "normals.h"
+#include "projection.h"
+#include "scan_conversion.h"
+#include "scene.h"
+#include "shading.h"
+#include "stage_id.h"
+#include "view_transform.h"
+
+namespace rl {
+
+struct FrameTrace {
+    std::shared_ptr<const Scene> scene;
+    std::shared_ptr<const CameraBasis> cameraBasis;
+    std::shared_ptr<const ViewTransform> view;
+    std::shared_ptr<const Normals> normals;
+    std::shared_ptr<const Projection> projection;
+    std::shared_ptr<const ScanConversion> scan;
+    std::shared_ptr<const DepthTest> depth;
+    std::shared_ptr<const Shading> shading;
+
+    Diagnostics diagnostics;                          // the scene's, then the stages'
+    std::array<double, kStageCount> stageMilliseconds{};
+    double totalMilliseconds = 0.0;
+
+    // Whether a stage did nothing for this scene, and why ("" when it ran).
+    std::string skipReason(StageId stage) const;
+};
+
+}  // namespace rl

@@ -1,0 +1,84 @@
+// Observation of the inner loops. Scan conversion, the depth test and shading take a
+// probe type as a template parameter and call its hooks inside `if constexpr
+// (Probe::enabled)`: with NullProbe (the default) the hooks compile to nothing, so the
+// plain render carries no trace code. RecordingProbe logs every event that touches a
+// chosen pixel or a chosen triangle: triangle set-up with its edge table, spans, each
+// depth test with both depths and the verdict, and the shading terms.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "math.h"
+#include "phong.h"
+#include "scan_conversion.h"
+#include "scene.h"
+
+namespace rl {
+
+struct NullProbe {
+    static constexpr bool enabled = false;
+};
+
+struct TriangleEvent {
+    std::uint32_t triangle = 0;  // index into Projection::triangles
+    TriangleSetup setup;
+};
+
+struct SpanEvent {
+    std::uint32_t triangle = 0;
+    Span span;
+    double xLeft = 0.0, xRight = 0.0;  // exact edge crossings on this scanline
+};
+
+struct DepthTestEvent {
+    std::uint32_t triangle = 0;
+    int x = 0, y = 0;
+    float alpha = 0.0f, beta = 0.0f, gamma = 0.0f;  // screen barycentrics
+    float depth = 0.0f;                             // the fragment's interpolated depth
+    float stored = 0.0f;                            // the depth buffer before the test
+    bool passed = false;
+};
+
+struct ShadeEvent {
+    std::uint32_t triangle = 0;
+    int x = 0, y = 0;
+    ShadingModel model = ShadingModel::Phong;
+    vec3 pView = vec3(0.0f);        // P' (Phong), the barycentre (flat)
+    vec3 nInterpolated = vec3(0.0f);
+    PhongSample sample;             // Phong: at P'; flat: at the barycentre
+    std::array<vec3, 3> vertexColours{};  // Gouraud: the colours being interpolated
+    vec3 colour = vec3(0.0f);       // before clamping
+};
+
+using ProbeEvent = std::variant<TriangleEvent, SpanEvent, DepthTestEvent, ShadeEvent>;
+
+class RecordingProbe {
+public:
+    static constexpr bool enabled = true;
+
+    static RecordingProbe forPixel(int x, int y);
+    static RecordingProbe forTriangle(std::uint32_t triangle);
+
+    void onTriangle(std::uint32_t triangle, const TriangleSetup& setup);
+    void onSpan(std::uint32_t triangle, const Span& span, double xLeft, double xRight);
+    void onDepthTest(const DepthTestEvent& event);
+    void onShade(const ShadeEvent& event);
+
+    const std::vector<ProbeEvent>& events() const { return m_events; }
+    std::optional<ivec2> pixel() const { return m_pixel; }
+    std::optional<std::uint32_t> triangle() const { return m_triangle; }
+
+private:
+    bool wants(std::uint32_t triangle, int x, int y) const;
+
+    std::optional<ivec2> m_pixel;
+    std::optional<std::uint32_t> m_triangle;
+    std::vector<ProbeEvent> m_events;
+    std::optional<TriangleEvent> m_pendingTriangle;  // pixel mode: kept until a span covers it
+};
+
+}  // namespace rl

@@ -1,0 +1,83 @@
+// Stage 4, projection (seed 000), with clipping against the near plane:
+//  1. each triangle is clipped against the plane z = near in view space (Sutherland-Hodgman
+//     against one plane); a clipped triangle becomes one triangle or a quad split in two,
+//     so nothing is ever divided by a z at or behind the camera;
+//  2. every vertex in front is projected to [-1, 1]: pNdc = ((d/hx) x/z, (d/hy) y/z),
+//     i.e. pClip = clipFromView * pView and pNdc = pClip.xy / pClip.w with w = z;
+//  3. then to pixels, as the seed writes it:
+//     x = (int)((pNdc.x + 1) * width / 2),  y = (int)((1 - pNdc.y) * height / 2),
+//     kept within a guard band of +-2^29 pixels so that scan conversion's integer
+//     arithmetic is exact (a vertex beyond it is pulled in, and a warning says so).
+// Vertices made by clipping are appended after a draw's own vertices and remember the
+// edge and parameter they came from, so later stages interpolate any attribute for them.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "diagnostics.h"
+#include "math.h"
+#include "scene.h"
+#include "view_transform.h"
+
+namespace rl {
+
+enum class TriangleFate : std::uint8_t {
+    Inside,     // wholly in front of the near plane: projected as is
+    Clipped,    // crossed the near plane: its front part is drawn
+    Behind,     // wholly at or behind the near plane: not drawn
+    NonFinite,  // a coordinate is NaN or infinite (only with the naive projection)
+};
+
+// A vertex made by clipping: the point lerp(pView[a], pView[b], t), with a in front.
+struct ClipVertex {
+    std::uint32_t a = 0;
+    std::uint32_t b = 0;
+    double t = 0.0;
+};
+
+struct ScreenTriangle {
+    std::uint32_t draw = 0;
+    std::uint32_t source = 0;              // index of the mesh triangle it comes from
+    std::array<std::uint32_t, 3> v{};      // indices into the draw's projected vertices
+};
+
+struct DrawProjection {
+    dmat4 clipFromView = dmat4(1.0);
+    std::uint32_t originalVertexCount = 0;
+    // Per vertex: first the draw's own vertices, then those made by clipping.
+    std::vector<dvec4> pView;
+    std::vector<dvec2> pNdc;               // [-1, 1] on screen; meaningless where !inFront
+    std::vector<dvec2> pScreenExact;       // pixels, before snapping
+    std::vector<dvec2> pScreen;            // pixels, after snapping (what is rasterized)
+    std::vector<float> depth;              // what the depth buffer compares (view z)
+    std::vector<std::uint8_t> inFront;     // 1 when the vertex was projected
+    std::vector<ClipVertex> generated;     // vertex originalVertexCount + i comes from generated[i]
+    std::vector<TriangleFate> fate;        // per mesh triangle
+};
+
+struct Projection {
+    double nearZ = 0.0;
+    bool naive = false;
+    std::vector<DrawProjection> draws;
+    std::vector<ScreenTriangle> triangles;  // what scan conversion receives, in draw order
+
+    std::size_t inside = 0, clipped = 0, behind = 0, nonFinite = 0;
+    std::size_t throughZeroOrBehind = 0;    // naive projection: triangles with a vertex z <= 0
+    std::size_t outsideGuardBand = 0;       // vertices pulled in to the guard band
+};
+
+// Snapped screen coordinates are kept within +-kGuardBand pixels.
+inline constexpr double kGuardBand = double(1 << 29);
+
+// The projection matrix of the course camera: pClip = ((d/hx) x, (d/hy) y, z, z).
+dmat4 courseClipFromView(const CourseCamera& camera);
+
+class ProjectionStage {
+public:
+    Projection run(const Scene& scene, const ViewTransform& view, Diagnostics& diagnostics) const;
+};
+
+}  // namespace rl

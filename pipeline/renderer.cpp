@@ -1,0 +1,113 @@
+#include "renderer.h"
+
+#include <chrono>
+
+namespace rl {
+
+const char* stageName(StageId stage) {
+    switch (stage) {
+        case StageId::CameraBasis: return "camera basis";
+        case StageId::ViewTransform: return "view transform";
+        case StageId::Normals: return "normals";
+        case StageId::Projection: return "projection";
+        case StageId::ScanConversion: return "scan conversion";
+        case StageId::DepthTest: return "depth test";
+        case StageId::Shading: return "shading";
+    }
+    return "";
+}
+
+std::string FrameTrace::skipReason(StageId stage) const {
+    switch (stage) {
+        case StageId::CameraBasis: return cameraBasis ? cameraBasis->skipReason : "";
+        case StageId::Normals: return normals ? normals->skipReason : "";
+        default: return "";
+    }
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+template <typename Probe>
+Result<FrameTrace> run(std::shared_ptr<const Scene> scenePtr, const RenderOptions& options,
+                       Probe& probe) {
+    if (!scenePtr)
+        return makeError(ErrorCode::Usage, SourceLocation{"<scene>", 0, 0}, "no scene to render");
+    const Scene& scene = *scenePtr;
+    if (scene.width <= 0 || scene.height <= 0)
+        return makeError(ErrorCode::Usage, SourceLocation{scene.name, 0, 0},
+                         "the image size " + std::to_string(scene.width) + "x" +
+                             std::to_string(scene.height) + " is empty");
+    FrameTrace trace;
+    trace.scene = scenePtr;
+    const auto frameStart = Clock::now();
+    auto timed = [&](StageId stage, auto&& body) {
+        const auto start = Clock::now();
+        body();
+        trace.stageMilliseconds[static_cast<std::size_t>(stage)] = millisecondsSince(start);
+    };
+
+    Result<CameraBasis> basis = CameraBasis{};
+    timed(StageId::CameraBasis,
+          [&] { basis = CameraBasisStage().run(scene, trace.diagnostics); });
+    if (!basis) return basis.error();
+    trace.cameraBasis = std::make_shared<const CameraBasis>(std::move(basis).value());
+
+    timed(StageId::ViewTransform, [&] {
+        trace.view = std::make_shared<const ViewTransform>(
+            ViewTransformStage().run(scene, *trace.cameraBasis));
+    });
+    timed(StageId::Normals, [&] {
+        trace.normals = std::make_shared<const Normals>(NormalsStage().run(scene, *trace.view));
+    });
+    timed(StageId::Projection, [&] {
+        trace.projection = std::make_shared<const Projection>(
+            ProjectionStage().run(scene, *trace.view, trace.diagnostics));
+    });
+    timed(StageId::ScanConversion, [&] {
+        trace.scan = std::make_shared<const ScanConversion>(
+            ScanConversionStage().run(scene, *trace.projection, probe));
+    });
+    timed(StageId::DepthTest, [&] {
+        trace.depth = std::make_shared<const DepthTest>(
+            DepthTestStage().run(scene, *trace.projection, *trace.scan, probe));
+    });
+    timed(StageId::Shading, [&] {
+        trace.shading = std::make_shared<const Shading>(
+            ShadingStage().run(scene, *trace.view, *trace.normals, *trace.projection,
+                               *trace.depth, options.shading, probe));
+    });
+    if (trace.scan->spans.empty() && trace.scan->offscreen > 0) {
+        trace.diagnostics.warn(SourceLocation{scene.name, 0, 0},
+                               "no triangle covers a pixel: all " +
+                                   std::to_string(trace.scan->offscreen) +
+                                   " triangles in front of the camera project outside the "
+                                   "image (check N, d, hx and hy)");
+    }
+    if (trace.normals->degenerateTriangles > 0) {
+        trace.diagnostics.note(SourceLocation{scene.name, 0, 0},
+                               std::to_string(trace.normals->degenerateTriangles) +
+                                   " triangles have zero area and no normal");
+    }
+    trace.totalMilliseconds = millisecondsSince(frameStart);
+    return trace;
+}
+
+}  // namespace
+
+Result<FrameTrace> renderFrame(std::shared_ptr<const Scene> scene, const RenderOptions& options) {
+    NullProbe probe;
+    return run(std::move(scene), options, probe);
+}
+
+Result<FrameTrace> traceFrame(std::shared_ptr<const Scene> scene, const RenderOptions& options,
+                              RecordingProbe& probe) {
+    return run(std::move(scene), options, probe);
+}
+
+}  // namespace rl

@@ -1,0 +1,141 @@
+// The scene: what every input format becomes, and the only thing the stages read.
+//
+// A scene is a list of draws (a mesh with its material, model matrix and shading model),
+// the lights, an optional course camera (C, N, V, d, hx, hy), the image size, and the
+// conventions of the format it came from (how NDC maps to pixels, what the depth buffer
+// stores, the colour scale, how bytes are rounded). The stages read conventions from the
+// scene; they have no "if course format" branches.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "diagnostics.h"
+#include "math.h"
+
+namespace rl {
+
+// A triangle mesh in model space. Vertex indices are 0-based here (files are 1-based).
+struct Mesh {
+    std::vector<dvec4> positions;                   // model space, w = 1 for course files
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    SourceLocation source;                          // the file it was read from
+    std::vector<int> triangleLines;                 // source line of each triangle (may be empty)
+};
+
+// Phong material as the course writes it: I = Ia*ka + Il*Od*kd*(N.L) + Il*ks*(R.V)^n.
+struct Material {
+    float ka = 0.0f;                  // ambient coefficient
+    vec3 kd = vec3(0.0f);             // diffuse coefficient, per channel (a scalar kd is broadcast)
+    vec3 od = vec3(0.0f);             // diffuse colour of the object, 0..1
+    float ks = 0.0f;                  // specular coefficient
+    float shininess = 1.0f;           // n, the Phong exponent
+};
+
+// A point light (w = 1) or a directional light (w = 0, position is the direction toward it).
+struct Light {
+    dvec4 pWorld = dvec4(0.0, 0.0, 0.0, 1.0);
+    vec3 intensity = vec3(0.0f);      // Il, in the scene's colour scale
+    SourceLocation where;
+};
+
+// The course camera of seed 000: position C, view direction N, up hint V, and the
+// projection parameters d, hx, hy: pNdc = ((d/hx) x/z, (d/hy) y/z) in view coordinates.
+struct CourseCamera {
+    dvec3 c = dvec3(0.0);
+    dvec3 n = dvec3(0.0, 0.0, 1.0);
+    dvec3 v = dvec3(0.0, 1.0, 0.0);
+    double d = 1.0;
+    double hx = 1.0;
+    double hy = 1.0;
+
+    struct Sources {
+        SourceLocation c, n, v, d, hx, hy;
+    } where;
+};
+
+enum class ShadingModel : std::uint8_t {
+    Flat,     // one Phong evaluation per triangle, at its barycentre (seed 004)
+    Gouraud,  // Phong at the vertices, colours interpolated
+    Phong,    // Phong per pixel with interpolated P' and N (seed 000)
+};
+
+const char* shadingModelName(ShadingModel model);  // "flat", "gouraud", "phong"
+std::optional<ShadingModel> shadingModelFromName(std::string_view name);
+
+struct Draw {
+    std::string name;                          // for messages and views, e.g. "calice2.byu"
+    std::shared_ptr<const Mesh> mesh;
+    Material material;
+    dmat4 worldFromModel = dmat4(1.0);
+    ShadingModel shading = ShadingModel::Phong;
+};
+
+// What the depth buffer holds.
+enum class DepthSource : std::uint8_t {
+    ViewZ,  // the view-space z of P' (seed 000): smaller is nearer, cleared to +infinity
+};
+
+// How a colour channel in the scene's scale becomes a byte.
+enum class ByteRounding : std::uint8_t {
+    Truncate,  // (int) of the clamped value, as the course's C code does
+    Nearest,   // round half up
+};
+
+struct Conventions {
+    bool ndcYUp = true;             // NDC y = +1 is the top row (the course flips y)
+    DepthSource depth = DepthSource::ViewZ;
+    bool flipNormalsTowardViewer = true;  // N := -N when V.N < 0 (seed 000)
+    float colourScale = 255.0f;     // the value that becomes byte 255 (course colours are 0..255)
+    ByteRounding rounding = ByteRounding::Truncate;
+    vec4 background = vec4(0.0f, 0.0f, 0.0f, 1.0f);  // RGBA 0..1 of pixels no triangle covers
+};
+
+// The rasterization rules: where a pixel is sampled, how vertices are snapped, which
+// pixels on an edge belong to the triangle, and how attributes are interpolated. The
+// course's rules (seed 000 as written) sample pixel (x, y) at the integer point (x, y).
+struct RasterRules {
+    enum class VertexSnap : std::uint8_t { Truncate };  // (int) of the screen coordinate
+    enum class FillRule : std::uint8_t { Inclusive };   // samples on an edge are inside
+    enum class Interpolation : std::uint8_t { ScreenAffine };  // screen barycentrics on view P, N
+
+    VertexSnap snap = VertexSnap::Truncate;
+    FillRule fill = FillRule::Inclusive;
+    Interpolation interpolation = Interpolation::ScreenAffine;
+
+    static RasterRules course();  // seed 000 as written
+    std::string name() const;
+};
+
+// Triangles are clipped against the plane z = near in view space before projection.
+struct NearPlane {
+    // A fixed view-space z; when absent, near = autoFraction * (largest vertex z in front).
+    std::optional<double> fixedZ;
+    double autoFraction = 1e-3;
+    // The naive projection of the course: no clipping, every vertex divided by its own z,
+    // even when z <= 0. Only for showing why clipping exists.
+    bool naive = false;
+};
+
+struct Scene {
+    std::string name;
+    int width = 800;
+    int height = 600;
+    std::optional<CourseCamera> camera;
+    std::vector<Draw> draws;
+    std::vector<Light> lights;
+    vec3 ambientIntensity = vec3(0.0f);  // Ia
+    Conventions conventions;
+    RasterRules rules = RasterRules::course();
+    NearPlane nearPlane;
+
+    bool lit() const { return !lights.empty() || ambientIntensity != vec3(0.0f); }
+    std::size_t triangleCount() const;
+    std::size_t vertexCount() const;
+};
+
+}  // namespace rl

@@ -1,0 +1,33 @@
+// Stage 2, view transform (seed 000): every vertex and every light from world to view
+// coordinates, pView = viewFromWorld * worldFromModel * pModel, where viewFromWorld comes
+// from the camera basis ([U; V; N] (P - C) for a course camera). In view space the camera
+// is at the origin and looks along +z: a point is in front when z > 0.
+#pragma once
+
+#include <vector>
+
+#include "camera_basis.h"
+#include "math.h"
+#include "scene.h"
+
+namespace rl {
+
+struct ViewLight {
+    dvec4 pView = dvec4(0.0, 0.0, 0.0, 1.0);  // w = 0: a direction toward the light
+    vec3 intensity = vec3(0.0f);
+};
+
+struct ViewTransform {
+    std::vector<dmat4> viewFromModel;        // per draw
+    std::vector<std::vector<dvec4>> pView;   // per draw, per vertex
+    std::vector<ViewLight> lights;
+    std::size_t verticesInFront = 0;         // z > 0
+    std::size_t verticesBehind = 0;          // z <= 0: at or behind the camera's plane
+};
+
+class ViewTransformStage {
+public:
+    ViewTransform run(const Scene& scene, const CameraBasis& basis) const;
+};
+
+}  // namespace rl

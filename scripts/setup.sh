@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages RasterLab needs to build, run and test, when they are
+# missing. Installing needs root: run as root, or as a user who may use sudo.
+set -euo pipefail
+
+packages=(
+    cmake g++ make                     # the toolchain
+    qt6-base-dev                       # Qt 6 Core, Gui, Widgets, Concurrent, Test
+    qt6-tools-dev qt6-tools-dev-tools  # Qt's CMake support for Linguist
+    qt6-l10n-tools                     # lupdate and lrelease (translations)
+    qt6-qpa-plugins                    # platform plugins (xcb for a desktop)
+    libglm-dev                         # GLM
+    fonts-dejavu-core                  # a font for the window and the offscreen tests
+)
+
+missing=()
+for package in "${packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+        missing+=("$package")
+    fi
+done
+
+if ((${#missing[@]} == 0)); then
+    echo "setup: all ${#packages[@]} packages are installed"
+    exit 0
+fi
+
+echo "setup: installing ${missing[*]}"
+if [[ $(id -u) -eq 0 ]]; then
+    as_root=()
+elif command -v sudo >/dev/null 2>&1; then
+    as_root=(sudo)
+else
+    echo "setup: these packages are missing and installing them needs root or sudo: ${missing[*]}" >&2
+    exit 1
+fi
+"${as_root[@]}" apt-get update
+"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive \
+    apt-get install -y --no-install-recommends "${missing[@]}"

@@ -1,0 +1,77 @@
+#include "test_support.h"
+
+#include <QDir>
+#include <QFile>
+
+namespace testing {
+
+QString samplesDir() {
+    const QString fromEnv = qEnvironmentVariable("RASTERLAB_SAMPLES");
+    const QString dir = fromEnv.isEmpty() ? QStringLiteral(RASTERLAB_SAMPLES_DIR) : fromEnv;
+    return QDir(dir).exists() ? QDir(dir).absolutePath() : QString();
+}
+
+QString sourceDir() { return QStringLiteral(RASTERLAB_SOURCE_DIR); }
+
+QString cliPath() { return QStringLiteral(RASTERLAB_CLI_PATH); }
+
+QByteArray readFile(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        qWarning("cannot open %s", qPrintable(path));
+        return {};
+    }
+    return file.readAll();
+}
+
+std::shared_ptr<const rl::Mesh> makeMesh(std::vector<rl::dvec3> positions,
+                                         std::vector<std::array<std::uint32_t, 3>> triangles) {
+    auto mesh = std::make_shared<rl::Mesh>();
+    for (const auto& p : positions) mesh->positions.emplace_back(p, 1.0);
+    mesh->triangles = std::move(triangles);
+    mesh->source = {"<test>", 0, 0};
+    return mesh;
+}
+
+rl::Scene makeScene(const rl::CourseCamera& camera, std::shared_ptr<const rl::Mesh> mesh,
+                    int width, int height, rl::ShadingModel shading) {
+    rl::Scene scene;
+    scene.name = "<test>";
+    scene.width = width;
+    scene.height = height;
+    scene.camera = camera;
+    rl::Draw draw;
+    draw.name = "<test mesh>";
+    draw.mesh = std::move(mesh);
+    draw.shading = shading;
+    draw.material.ka = 1.0f;
+    draw.material.kd = rl::vec3(1.0f);
+    draw.material.od = rl::vec3(1.0f);
+    scene.draws.push_back(draw);
+    scene.ambientIntensity = rl::vec3(10.0f);
+    return scene;
+}
+
+rl::CourseCamera seedCamera() {
+    rl::CourseCamera c;
+    c.c = {-200.0, -50.0, 300.0};
+    c.n = {0.667, 0.172, -1.0};
+    c.v = {0.0, 3.0, 0.0};
+    c.d = 65.0;
+    c.hx = 0.5;
+    c.hy = 0.6;
+    return c;
+}
+
+rl::CourseCamera axisCamera() {
+    rl::CourseCamera c;
+    c.c = {0.0, 0.0, 0.0};
+    c.n = {0.0, 0.0, 1.0};
+    c.v = {0.0, 1.0, 0.0};
+    c.d = 1.0;
+    c.hx = 1.0;
+    c.hy = 1.0;
+    return c;
+}
+
+}  // namespace testing

@@ -1,0 +1,76 @@
+// Helpers shared by the test suites: where the sample files are, scenes built in code,
+// and comparisons of GLM vectors with a tolerance that print both values on failure.
+#pragma once
+
+#include <QString>
+#include <QtTest>
+
+#include <memory>
+#include <optional>
+
+#include "diagnostics.h"
+#include "math.h"
+#include "scene.h"
+
+namespace testing {
+
+// The course sample folder (../shared/samples or $RASTERLAB_SAMPLES), or an empty string.
+QString samplesDir();
+QString sourceDir();  // the repository's root
+QString cliPath();    // the rasterlab-cli binary
+
+// The text of a file, or a failed test.
+QByteArray readFile(const QString& path);
+
+// A mesh from positions and 0-based triangles.
+std::shared_ptr<const rl::Mesh> makeMesh(std::vector<rl::dvec3> positions,
+                                         std::vector<std::array<std::uint32_t, 3>> triangles);
+
+// A course scene with one draw: camera, one point light, material, mesh, image size.
+rl::Scene makeScene(const rl::CourseCamera& camera, std::shared_ptr<const rl::Mesh> mesh,
+                    int width, int height, rl::ShadingModel shading = rl::ShadingModel::Phong);
+
+// The camera of seed 000: C = (-200, -50, 300), N = (0.667, 0.172, -1), V = (0, 3, 0),
+// d = 65, hx = 0.5, hy = 0.6.
+rl::CourseCamera seedCamera();
+// A camera at the origin looking along +z with y up, d = hx = hy = 1: view = (-x, y, z).
+rl::CourseCamera axisCamera();
+
+// "(x, y, z)" for any GLM vector.
+template <int L, typename T, glm::qualifier Q>
+QString describe(const glm::vec<L, T, Q>& v) {
+    QString s = QStringLiteral("(");
+    for (int k = 0; k < L; ++k) {
+        if (k > 0) s += QStringLiteral(", ");
+        s += QString::number(double(v[k]), 'g', 12);
+    }
+    return s + QStringLiteral(")");
+}
+
+}  // namespace testing
+
+// Compare vectors component by component within a tolerance, printing both on failure.
+#define RL_COMPARE_VEC(actual, expected, tolerance)                                          \
+    do {                                                                                     \
+        const auto a_ = (actual);                                                            \
+        const auto e_ = (expected);                                                          \
+        for (int k_ = 0; k_ < a_.length(); ++k_) {                                           \
+            if (!(std::abs(double(a_[k_]) - double(e_[k_])) <= (tolerance)))                 \
+                QFAIL(qPrintable(QStringLiteral("%1 = %2, expected %3 (tolerance %4)")       \
+                                     .arg(QStringLiteral(#actual), testing::describe(a_),    \
+                                          testing::describe(e_))                             \
+                                     .arg(tolerance)));                                      \
+        }                                                                                    \
+    } while (false)
+
+#define RL_COMPARE_NEAR(actual, expected, tolerance)                                         \
+    do {                                                                                     \
+        const double a_ = double(actual);                                                    \
+        const double e_ = double(expected);                                                  \
+        if (!(std::abs(a_ - e_) <= (tolerance)))                                             \
+            QFAIL(qPrintable(QStringLiteral("%1 = %2, expected %3 (tolerance %4)")           \
+                                 .arg(QStringLiteral(#actual))                               \
+                                 .arg(a_, 0, 'g', 17)                                        \
+                                 .arg(e_, 0, 'g', 17)                                        \
+                                 .arg(tolerance)));                                          \
+    } while (false)

@@ -1,0 +1,632 @@
+// rasterlab-cli run as its users run it: a separate process in a scratch folder. Checks the
+// exit codes (0 done, 1 bad input, 2 bad command line), the exact stderr lines of usage
+// errors, bad files and warnings, and the PNGs it writes, pixel by pixel where it matters.
+#include <QtTest>
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QImage>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+
+#include "test_support.h"
+
+namespace {
+
+struct CliRun {
+    int exitCode = -1;
+    QString out;
+    QString err;
+    QString problem;  // why the process did not run to completion
+};
+
+QStringList linesOf(const QString& text) {
+    QStringList lines = text.split(QLatin1Char('\n'));
+    if (!lines.isEmpty() && lines.last().isEmpty()) lines.removeLast();
+    return lines;
+}
+
+// Runs rasterlab-cli with `arguments` in `workDir` and waits for it to exit.
+bool runCli(const QStringList& arguments, const QString& workDir, CliRun& run) {
+    QProcess process;
+    process.setWorkingDirectory(workDir);
+    process.start(testing::cliPath(), arguments);
+    const QString command =
+        QStringLiteral("rasterlab-cli %1").arg(arguments.join(QLatin1Char(' ')));
+    if (!process.waitForStarted(10000)) {
+        run.problem = command + QStringLiteral(": cannot start: ") + process.errorString();
+        return false;
+    }
+    if (!process.waitForFinished(120000)) {
+        process.kill();
+        process.waitForFinished();
+        run.problem = command + QStringLiteral(": did not finish within 120 s");
+        return false;
+    }
+    run.out = QString::fromUtf8(process.readAllStandardOutput());
+    run.err = QString::fromUtf8(process.readAllStandardError());
+    if (process.exitStatus() != QProcess::NormalExit) {
+        run.problem = command + QStringLiteral(": crashed; stderr: ") + run.err;
+        return false;
+    }
+    run.exitCode = process.exitCode();
+    return true;
+}
+
+#define RUN_CLI(run, arguments, workDir) \
+    QVERIFY2(runCli((arguments), (workDir), (run)), qPrintable((run).problem))
+
+// Writes `content` to `name` in `dir`; returns the absolute path, or "" on failure.
+QString writeFixture(const QTemporaryDir& dir, const QString& name, const QByteArray& content) {
+    const QString path = dir.filePath(name);
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(content) != content.size()) return {};
+    return path;
+}
+
+// The absolute path the CLI prints for `name` written in `dir` (its working directory).
+QString printedPath(const QTemporaryDir& dir, const QString& name) {
+    return QDir(QFileInfo(dir.path()).canonicalFilePath()).absoluteFilePath(name);
+}
+
+bool isBlack(QRgb c) { return qRed(c) == 0 && qGreen(c) == 0 && qBlue(c) == 0; }
+
+// Which pixels are not black, row by row.
+QVector<bool> coverage(const QImage& image) {
+    QVector<bool> mask;
+    mask.reserve(qsizetype(image.width()) * image.height());
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) mask.push_back(!isBlack(image.pixel(x, y)));
+    return mask;
+}
+
+qsizetype countTrue(const QVector<bool>& mask) { return mask.count(true); }
+
+const char* const kTryHelp = "Try 'rasterlab-cli --help' for more information.";
+
+}  // namespace
+
+class TestCli : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+
+    void renderDefaultScene();
+    void shadingModelsDiffer();
+    void depthAndNormalsOutputs();
+    void usageErrors_data();
+    void usageErrors();
+    void badInputFiles_data();
+    void badInputFiles();
+    void missingFile_data();
+    void missingFile();
+    void unwritableOutput();
+    void warnings_data();
+    void warnings();
+    void cameraFacingAway();
+    void explainPixel_data();
+    void explainPixel();
+    void generateDefaultScene();
+    void help_data();
+    void help();
+    void courseSamples_data();
+    void courseSamples();
+};
+
+void TestCli::initTestCase() {
+    QVERIFY2(QFileInfo(testing::cliPath()).isExecutable(),
+             qPrintable(testing::cliPath() + QStringLiteral(" is not an executable")));
+}
+
+void TestCli::renderDefaultScene() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    CliRun run;
+    RUN_CLI(run, QStringList({"render", "--output", "out.png", "--size", "320x240"}), dir.path());
+    QCOMPARE(run.err, QString());
+    QCOMPARE(run.exitCode, 0);
+
+    const QStringList out = linesOf(run.out);
+    QCOMPARE(out.size(), 3);
+    QCOMPARE(out[0], QStringLiteral("rendering the embedded default scene"));
+    QCOMPARE(out[1],
+             QStringLiteral("wrote %1 (image, 320x240)").arg(printedPath(dir, "out.png")));
+    static const QRegularExpression summary(
+        QStringLiteral("^  7776 triangles, phong shading, (\\d+) pixels covered, [0-9.]+ ms$"));
+    const auto match = summary.match(out[2]);
+    QVERIFY2(match.hasMatch(), qPrintable(out[2]));
+
+    const QImage image(dir.filePath("out.png"));
+    QVERIFY(!image.isNull());
+    QCOMPARE(image.size(), QSize(320, 240));
+    QCOMPARE(image.pixel(0, 0), qRgba(0, 0, 0, 255));  // background: opaque black
+    QCOMPARE(image.pixel(319, 239), qRgba(0, 0, 0, 255));
+    bool litNearCentre = false;
+    for (int y = 100; y < 140 && !litNearCentre; ++y)
+        for (int x = 140; x < 180 && !litNearCentre; ++x)
+            litNearCentre = !isBlack(image.pixel(x, y)) && qAlpha(image.pixel(x, y)) == 255;
+    QVERIFY2(litNearCentre, "no opaque lit pixel within 20 pixels of the centre");
+    // The ambient term is not zero, so every covered pixel is lit: the count matches.
+    QCOMPARE(countTrue(coverage(image)), match.captured(1).toLongLong());
+}
+
+void TestCli::shadingModelsDiffer() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QStringList models = {"phong", "flat", "gouraud"};
+    QList<QImage> images;
+    for (const QString& model : models) {
+        const QString file = model + QStringLiteral(".png");
+        CliRun run;
+        RUN_CLI(run,
+                QStringList({"render", "--shading", model, "--size", "400x300", "--output", file}),
+                dir.path());
+        QCOMPARE(run.err, QString());
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.out.contains(QStringLiteral("  7776 triangles, %1 shading, ").arg(model)),
+                 qPrintable(run.out));
+        const QImage image(dir.filePath(file));
+        QVERIFY(!image.isNull());
+        QCOMPARE(image.size(), QSize(400, 300));
+        images.append(image.convertToFormat(QImage::Format_RGBA8888));
+    }
+    for (int i = 0; i < images.size(); ++i) {
+        for (int j = i + 1; j < images.size(); ++j) {
+            QVERIFY2(images[i] != images[j],
+                     qPrintable(QStringLiteral("%1 and %2 give the same image")
+                                    .arg(models[i], models[j])));
+            // The shading model changes colours, never which pixels are covered.
+            QVERIFY2(coverage(images[i]) == coverage(images[j]),
+                     qPrintable(QStringLiteral("%1 and %2 cover different pixels")
+                                    .arg(models[i], models[j])));
+        }
+    }
+}
+
+void TestCli::depthAndNormalsOutputs() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    CliRun run;
+    RUN_CLI(run,
+            QStringList({"render", "--size", "320x240", "--output", "out.png", "--depth-output",
+                         "depth.png", "--normals-output", "normals.png"}),
+            dir.path());
+    QCOMPARE(run.err, QString());
+    QCOMPARE(run.exitCode, 0);
+    const QStringList out = linesOf(run.out);
+    QCOMPARE(out.size(), 6);
+    QCOMPARE(out[1], QStringLiteral("wrote %1 (image, 320x240)").arg(printedPath(dir, "out.png")));
+    QCOMPARE(out[2],
+             QStringLiteral("wrote %1 (z-buffer, 320x240)").arg(printedPath(dir, "depth.png")));
+    static const QRegularExpression range(
+        QStringLiteral("^  z-buffer range: ([0-9.]+) \\(white\\) to ([0-9.]+) \\(dark grey\\)$"));
+    const auto match = range.match(out[3]);
+    QVERIFY2(match.hasMatch(), qPrintable(out[3]));
+    QVERIFY(match.captured(1).toDouble() > 0.0);
+    QVERIFY(match.captured(1).toDouble() < match.captured(2).toDouble());
+    QCOMPARE(out[4],
+             QStringLiteral("wrote %1 (normals, 320x240)").arg(printedPath(dir, "normals.png")));
+
+    const QImage colour(dir.filePath("out.png"));
+    const QImage depth(dir.filePath("depth.png"));
+    const QImage normals(dir.filePath("normals.png"));
+    QCOMPARE(colour.size(), QSize(320, 240));
+    QCOMPARE(depth.size(), QSize(320, 240));
+    QCOMPARE(normals.size(), QSize(320, 240));
+
+    // The three images cover the same pixels; depth is grey from white (nearest) to 40.
+    const QVector<bool> covered = coverage(colour);
+    QVERIFY(countTrue(covered) > 0);
+    QVERIFY(coverage(depth) == covered);
+    QVERIFY(coverage(normals) == covered);
+    int lightest = 0, darkest = 255;
+    for (int y = 0; y < depth.height(); ++y) {
+        for (int x = 0; x < depth.width(); ++x) {
+            const QRgb d = depth.pixel(x, y);
+            QVERIFY(qRed(d) == qGreen(d) && qGreen(d) == qBlue(d));
+            QCOMPARE(qAlpha(d), 255);
+            if (isBlack(d)) continue;
+            lightest = std::max(lightest, qRed(d));
+            darkest = std::min(darkest, qRed(d));
+        }
+    }
+    QCOMPARE(lightest, 255);
+    QCOMPARE(darkest, 40);
+}
+
+void TestCli::usageErrors_data() {
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("message");
+
+    const QStringList out = {"--output", "out.png"};
+    QTest::newRow("size without height")
+        << (QStringList({"render", "--size", "800"}) + out)
+        << "--size expects WIDTHxHEIGHT such as 800x600, found '800'";
+    QTest::newRow("size zero") << (QStringList({"render", "--size", "0x10"}) + out)
+                               << "--size expects WIDTHxHEIGHT such as 800x600, found '0x10'";
+    QTest::newRow("size too large")
+        << (QStringList({"render", "--size", "20000x10"}) + out)
+        << "--size 20000x10 is larger than the limit of 16384 pixels a side";
+    QTest::newRow("unknown shading")
+        << (QStringList({"render", "--shading", "toon"}) + out)
+        << "--shading expects phong, flat or gouraud, found 'toon'";
+    QTest::newRow("negative near") << (QStringList({"render", "--near", "-1"}) + out)
+                                   << "--near expects a positive number, found '-1'";
+    QTest::newRow("zero near") << (QStringList({"render", "--near", "0"}) + out)
+                               << "--near expects a positive number, found '0'";
+    QTest::newRow("no output") << QStringList({"render", "--size", "320x240"})
+                               << "render needs --output FILE.png";
+    QTest::newRow("explain not a pixel")
+        << (QStringList({"render", "--explain-pixel", "a,b"}) + out)
+        << "--explain-pixel expects X,Y such as 400,300, found 'a,b'";
+    QTest::newRow("explain outside")
+        << (QStringList({"render", "--size", "320x240", "--explain-pixel", "100,240"}) + out)
+        << "--explain-pixel 100,240 is outside the 320x240 image";
+    QTest::newRow("explain outside default size")
+        << (QStringList({"render", "--explain-pixel", "800,10"}) + out)
+        << "--explain-pixel 800,10 is outside the 800x600 image";
+    QTest::newRow("unknown command") << QStringList({"paint", "--output", "out.png"})
+                                     << "unknown command 'paint' (commands: render, "
+                                        "generate-default-scene)";
+    QTest::newRow("unknown option") << (QStringList({"render", "--bogus"}) + out)
+                                    << "Unknown option 'bogus'.";
+    QTest::newRow("stray argument") << (QStringList({"render", "scene.cfg"}) + out)
+                                    << "unexpected argument 'scene.cfg'";
+    QTest::newRow("option without value") << QStringList({"render", "--output"})
+                                          << "Missing value after '--output'.";
+    QTest::newRow("generate without dir") << QStringList({"generate-default-scene"})
+                                          << "generate-default-scene needs --dir DIR";
+}
+
+void TestCli::usageErrors() {
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, message);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    CliRun run;
+    RUN_CLI(run, arguments, dir.path());
+    const QStringList err = linesOf(run.err);
+    QCOMPARE(err.size(), 2);
+    QCOMPARE(err[0], QStringLiteral("rasterlab-cli: ") + message);
+    QCOMPARE(err[1], QString::fromLatin1(kTryHelp));
+    QCOMPARE(run.out, QString());
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY(!QFile::exists(dir.filePath("out.png")));
+}
+
+void TestCli::badInputFiles_data() {
+    QTest::addColumn<QString>("option");
+    QTest::addColumn<QString>("fileName");
+    QTest::addColumn<QByteArray>("content");
+    QTest::addColumn<QString>("message");  // %1: the file's path
+
+    // Line 3 is "1.0   a 0.0": the 'a' is at column 7.
+    QTest::newRow("letter for a coordinate")
+        << "--object" << "letter.byu" << QByteArray("3 1\n0 0 0\n1.0   a 0.0\n0 1 0\n1 2 3\n")
+        << "%1:3:7: expected a number for the y coordinate of vertex 2 of 3, found 'a'";
+    // Line 7 is "2  4 5": the 5 is at column 6.
+    QTest::newRow("index out of range")
+        << "--object" << "range.byu"
+        << QByteArray("4 2\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n1 2 3\n2  4 5\n")
+        << "%1:7:6: triangle 2 refers to vertex 5, but the file declares only 4 vertices";
+    QTest::newRow("index zero")
+        << "--object" << "zero.byu" << QByteArray("3 1\n0 0 0\n1 0 0\n0 1 0\n0 1 2\n")
+        << "%1:5:1: triangle 1 refers to vertex 0, but indices are 1-based (1 to 3)";
+    // A blank first line: N is on line 3; the error points at the start of its line.
+    QTest::newRow("camera N zero")
+        << "--camera" << "n-zero.cfg" << QByteArray("\n0 -380 330\n  0 0 0\n0 0 1\n1 0.4 0.3\n")
+        << "%1:3:1: N, the view direction, is the zero vector: it must point from the camera "
+           "toward the scene";
+    // Line 4 is "1   0 0.3": hx is at column 5.
+    QTest::newRow("camera hx zero")
+        << "--camera" << "hx-zero.cfg" << QByteArray("0 -380 330\n0 380 -330\n0 0 1\n1   0 0.3\n")
+        << "%1:4:5: hx, the horizontal half-size of the window, is 0: the projection (d/hx) x/z "
+           "divides by it";
+    // kd (line 4) written with a decimal comma.
+    QTest::newRow("lighting decimal comma")
+        << "--lighting" << "comma.txt"
+        << QByteArray("-260 -420 520\n0.35\n60 60 72\n0,85\n0.88 0.42 0.18\n0.6\n255 248 235\n"
+                      "40\n")
+        << "%1:4:1: expected a number for kd, found '0,85' (the decimal separator is '.')";
+    // Seven lines of eight: the file ends at line 8, column 1.
+    QTest::newRow("lighting too short")
+        << "--lighting" << "short.txt"
+        << QByteArray("-260 -420 520\n0.35\n60 60 72\n0.85\n0.88 0.42 0.18\n0.6\n255 248 235\n")
+        << "%1:8:1: expected n, the specular exponent (1 number), found the end of the file";
+}
+
+void TestCli::badInputFiles() {
+    QFETCH(QString, option);
+    QFETCH(QString, fileName);
+    QFETCH(QByteArray, content);
+    QFETCH(QString, message);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = writeFixture(dir, fileName, content);
+    QVERIFY(!path.isEmpty());
+    CliRun run;
+    RUN_CLI(run, QStringList({"render", option, path, "--output", "out.png"}), dir.path());
+    QCOMPARE(linesOf(run.err), QStringList(message.arg(path)));
+    QCOMPARE(run.exitCode, 1);
+    QVERIFY(!QFile::exists(dir.filePath("out.png")));
+}
+
+void TestCli::missingFile_data() {
+    QTest::addColumn<QString>("option");
+    QTest::newRow("camera") << "--camera";
+    QTest::newRow("lighting") << "--lighting";
+    QTest::newRow("object") << "--object";
+}
+
+void TestCli::missingFile() {
+    QFETCH(QString, option);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath("absent.txt");
+    CliRun run;
+    RUN_CLI(run, QStringList({"render", option, path, "--output", "out.png"}), dir.path());
+    const QStringList err = linesOf(run.err);
+    QCOMPARE(err.size(), 1);
+    // The reason after "cannot open: " is the system's, in the user's language.
+    const QString prefix = path + QStringLiteral(": cannot open: ");
+    QVERIFY2(err[0].startsWith(prefix) && err[0].size() > prefix.size(), qPrintable(err[0]));
+    QCOMPARE(run.exitCode, 1);
+    QVERIFY(!QFile::exists(dir.filePath("out.png")));
+}
+
+void TestCli::unwritableOutput() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    CliRun run;
+    RUN_CLI(run, QStringList({"render", "--size", "64x48", "--output", "no-such-dir/out.png"}),
+            dir.path());
+    const QStringList err = linesOf(run.err);
+    QCOMPARE(err.size(), 1);
+    const QString prefix = QStringLiteral("no-such-dir/out.png: cannot write the image: ");
+    QVERIFY2(err[0].startsWith(prefix) && err[0].size() > prefix.size(), qPrintable(err[0]));
+    QCOMPARE(run.exitCode, 1);
+    QVERIFY(!run.out.contains(QStringLiteral("wrote")));
+}
+
+void TestCli::warnings_data() {
+    QTest::addColumn<QString>("option");
+    QTest::addColumn<QString>("fileName");
+    QTest::addColumn<QByteArray>("content");
+    QTest::addColumn<QString>("warning");  // %1: the file's path
+
+    QTest::newRow("unused vertex")
+        << "--object" << "unused.byu" << QByteArray("4 1\n0 0 0\n100 0 0\n0 100 0\n5 5 5\n1 2 3\n")
+        << "%1: warning: 1 vertex of 4 is not used by any triangle";
+    // Line 4 is "1 -0.4 0.3": hx is at column 3.
+    QTest::newRow("negative hx")
+        << "--camera" << "mirror.cfg" << QByteArray("0 -380 330\n0 380 -330\n0 0 1\n1 -0.4 0.3\n")
+        << "%1:4:3: warning: hx is negative: the image is mirrored left to right";
+    // Line 2 is "0 380 -330 7": the extra 7 is at column 12.
+    QTest::newRow("extra value after N")
+        << "--camera" << "extra.cfg" << QByteArray("0 -380 330\n0 380 -330 7\n0 0 1\n1 0.4 0.3\n")
+        << "%1:2:12: warning: ignored 1 value after N";
+}
+
+void TestCli::warnings() {
+    QFETCH(QString, option);
+    QFETCH(QString, fileName);
+    QFETCH(QByteArray, content);
+    QFETCH(QString, warning);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = writeFixture(dir, fileName, content);
+    QVERIFY(!path.isEmpty());
+    CliRun run;
+    RUN_CLI(run, QStringList({"render", option, path, "--size", "160x120", "--output", "out.png"}),
+            dir.path());
+    QCOMPARE(linesOf(run.err), QStringList(warning.arg(path)));
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY(run.out.contains(QStringLiteral("wrote %1 (image, 160x120)")
+                                 .arg(printedPath(dir, "out.png"))));
+    QCOMPARE(QImage(dir.filePath("out.png")).size(), QSize(160, 120));
+}
+
+void TestCli::cameraFacingAway() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    // The default camera with N negated: it looks away from the knot.
+    const QString path =
+        writeFixture(dir, "away.cfg", "0 -380 330\n0 -380 330\n0 0 1\n1 0.4 0.3\n");
+    QVERIFY(!path.isEmpty());
+    CliRun run;
+    RUN_CLI(run, QStringList({"render", "--camera", path, "--size", "200x150", "--output",
+                              "out.png"}),
+            dir.path());
+    QCOMPARE(linesOf(run.err),
+             QStringList("trefoil.byu: warning: every triangle is behind the camera (is N "
+                         "pointing away from the object?): the image is empty"));
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(run.out.contains(QStringLiteral("  7776 triangles, phong shading, 0 pixels covered")),
+             qPrintable(run.out));
+    const QImage image(dir.filePath("out.png"));
+    QCOMPARE(image.size(), QSize(200, 150));
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            if (image.pixel(x, y) != qRgba(0, 0, 0, 255))
+                QFAIL(qPrintable(QStringLiteral("pixel (%1, %2) is not the background")
+                                     .arg(x)
+                                     .arg(y)));
+}
+
+void TestCli::explainPixel_data() {
+    QTest::addColumn<QPoint>("pixel");
+    QTest::addColumn<bool>("covered");
+    QTest::newRow("on the knot") << QPoint(400, 350) << true;
+    QTest::newRow("corner") << QPoint(0, 0) << false;
+    QTest::newRow("hole of the knot") << QPoint(400, 300) << false;
+}
+
+void TestCli::explainPixel() {
+    QFETCH(QPoint, pixel);
+    QFETCH(bool, covered);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString xy = QStringLiteral("%1,%2").arg(pixel.x()).arg(pixel.y());
+    CliRun run;
+    RUN_CLI(run, QStringList({"render", "--output", "out.png", "--explain-pixel", xy}), dir.path());
+    QCOMPARE(run.err, QString());
+    QCOMPARE(run.exitCode, 0);
+    const QStringList out = linesOf(run.out);
+    const qsizetype start =
+        out.indexOf(QStringLiteral("pixel (%1, %2)").arg(pixel.x()).arg(pixel.y()));
+    QVERIFY2(start >= 0, qPrintable(run.out));
+    const QStringList story = out.mid(start + 1);
+    const QImage image(dir.filePath("out.png"));
+    QCOMPARE(image.size(), QSize(800, 600));
+    const QRgb colour = image.pixel(pixel);
+
+    if (!covered) {
+        QCOMPARE(story, QStringList("  no triangle covers this pixel: it keeps the background "
+                                    "colour"));
+        QCOMPARE(colour, qRgba(0, 0, 0, 255));
+        return;
+    }
+    QVERIFY2(story.contains(QStringLiteral("  depth test, in drawing order:")),
+             qPrintable(run.out));
+    QCOMPARE(story.filter(QRegularExpression(QStringLiteral("^  shading \\(phong\\) of the "
+                                                            "winner, triangle \\d+ of "
+                                                            "trefoil.byu"))).size(),
+             1);
+    QCOMPARE(story.filter(QStringLiteral("    ambient  Ia*ka          = ")).size(), 1);
+    // The default lighting: Ia = (60, 60, 72), ka = 0.35.
+    QVERIFY(story.contains(QStringLiteral("    ambient  Ia*ka          = (21, 21, 25.2)")));
+    // The bytes the story ends with are the pixel's colour in the image.
+    static const QRegularExpression bytes(
+        QStringLiteral("-> bytes \\((\\d+), (\\d+), (\\d+)\\)"));
+    const QStringList colourLines = story.filter(bytes);
+    QCOMPARE(colourLines.size(), 1);
+    const auto match = bytes.match(colourLines.first());
+    QCOMPARE(qRgba(match.captured(1).toInt(), match.captured(2).toInt(),
+                   match.captured(3).toInt(), 255),
+             colour);
+}
+
+void TestCli::generateDefaultScene() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    CliRun run;
+    RUN_CLI(run, QStringList({"generate-default-scene", "--dir", "scene/nested"}), dir.path());
+    QCOMPARE(run.err, QString());
+    QCOMPARE(run.exitCode, 0);
+    const QStringList names = {"camera.cfg", "lighting.txt", "trefoil.byu"};
+    QStringList expectedOut;
+    for (const QString& name : names)
+        expectedOut << QStringLiteral("wrote ") + printedPath(dir, "scene/nested/" + name);
+    QCOMPARE(linesOf(run.out), expectedOut);
+
+    // The committed default scene must be the generator's output, byte for byte.
+    const QString committed = testing::sourceDir() + QStringLiteral("/resources/default-scene/");
+    for (const QString& name : names) {
+        const QByteArray generated = testing::readFile(dir.filePath("scene/nested/" + name));
+        const QByteArray reference = testing::readFile(committed + name);
+        QVERIFY2(!generated.isEmpty(), qPrintable(name));
+        QVERIFY2(!reference.isEmpty(), qPrintable(committed + name));
+        QVERIFY2(generated == reference,
+                 qPrintable(QStringLiteral("%1 differs from the generator's output; run "
+                                           "rasterlab-cli generate-default-scene --dir %2")
+                                .arg(committed + name, committed)));
+    }
+}
+
+void TestCli::help_data() {
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QString>("usage");  // the first line of stdout
+
+    QTest::newRow("--help") << QStringList("--help") << 0
+                            << "Usage: rasterlab-cli <command> [options]";
+    QTest::newRow("help") << QStringList("help") << 0 << "Usage: rasterlab-cli <command> [options]";
+    QTest::newRow("render --help") << QStringList({"render", "--help"}) << 0
+                                   << "Usage: rasterlab-cli render [options]";
+    QTest::newRow("generate --help") << QStringList({"generate-default-scene", "--help"}) << 0
+                                     << "Usage: rasterlab-cli generate-default-scene [options]";
+    QTest::newRow("no arguments") << QStringList() << 2
+                                  << "Usage: rasterlab-cli <command> [options]";
+}
+
+void TestCli::help() {
+    QFETCH(QStringList, arguments);
+    QFETCH(int, exitCode);
+    QFETCH(QString, usage);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    CliRun run;
+    RUN_CLI(run, arguments, dir.path());
+    QCOMPARE(run.exitCode, exitCode);
+    QCOMPARE(run.err, QString());
+    const QStringList out = linesOf(run.out);
+    QVERIFY(out.size() > 2);
+    QCOMPARE(out.first(), usage);
+    if (arguments.value(0) == QStringLiteral("render"))
+        for (const char* option : {"--output", "--size", "--shading", "--explain-pixel"})
+            QVERIFY2(run.out.contains(QLatin1String(option)), option);
+}
+
+void TestCli::courseSamples_data() {
+    QTest::addColumn<QString>("shading");
+    QTest::newRow("phong") << "phong";
+    QTest::newRow("flat") << "flat";
+    QTest::newRow("gouraud") << "gouraud";
+}
+
+void TestCli::courseSamples() {
+    QFETCH(QString, shading);
+    const QString samples = testing::samplesDir();
+    if (samples.isEmpty())
+        QSKIP("the course samples are absent (set RASTERLAB_SAMPLES or RASTERLAB_SAMPLES_DIR)");
+    const QDir ufpe(samples + QStringLiteral("/course/ufpe"));
+    for (const char* name : {"calice2.byu", "calice2.cfg", "iluminacao.txt"})
+        if (!ufpe.exists(QLatin1String(name)))
+            QSKIP(qPrintable(ufpe.filePath(QLatin1String(name)) + QStringLiteral(" is absent")));
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    CliRun run;
+    RUN_CLI(run,
+            QStringList({"render", "--camera", ufpe.filePath("calice2.cfg"), "--lighting",
+                         ufpe.filePath("iluminacao.txt"), "--object", ufpe.filePath("calice2.byu"),
+                         "--shading", shading, "--output", "calice.png"}),
+            dir.path());
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(run.out.contains(QStringLiteral("  2120 triangles, %1 shading, ").arg(shading)),
+             qPrintable(run.out));
+    QVERIFY(!run.out.contains(QStringLiteral("rendering the embedded default scene")));
+    const QImage image(dir.filePath("calice.png"));
+    QCOMPARE(image.size(), QSize(800, 600));
+
+    // White light, Od = (0, 0.8, 0), grey ambient: red and blue get only the ambient and
+    // the white highlight, green also the diffuse term. Green may fall one unit short where
+    // a pixel centre lies on an edge: a barycentric of -6e-8 turns 64 into 63.99999, which
+    // the course's truncation makes 63 (seen in Gouraud on calice2).
+    qsizetype lit = 0, green = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            const QRgb c = image.pixel(x, y);
+            if (isBlack(c)) continue;
+            ++lit;
+            if (qGreen(c) + 1 < qRed(c) || qGreen(c) + 1 < qBlue(c))
+                QFAIL(qPrintable(QStringLiteral("pixel (%1, %2) = (%3, %4, %5) is not green")
+                                     .arg(x)
+                                     .arg(y)
+                                     .arg(qRed(c))
+                                     .arg(qGreen(c))
+                                     .arg(qBlue(c))));
+            if (qGreen(c) > qRed(c) + 32 && qGreen(c) > qBlue(c) + 32) ++green;
+        }
+    }
+    QVERIFY2(lit > 10000, qPrintable(QString::number(lit)));
+    QVERIFY2(green * 10 > lit * 9,
+             qPrintable(QStringLiteral("%1 of %2 lit pixels are clearly green")
+                            .arg(green)
+                            .arg(lit)));
+}
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "tst_cli.moc"

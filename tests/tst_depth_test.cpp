@@ -1,0 +1,124 @@
+// Stage 6, depth test: the nearer fragment wins whatever the drawing order, a tie keeps
+// the earlier triangle, and depths at vertices and inside are those of P' by hand.
+#include <QtTest>
+
+#include "depth_test.h"
+#include "probe.h"
+#include "scan_conversion.h"
+#include "test_support.h"
+
+using namespace rl;
+
+namespace {
+
+Projection screenTriangles(const std::vector<dvec2>& points, const std::vector<float>& depths,
+                           const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+    Projection projection;
+    DrawProjection draw;
+    draw.pScreen = points;
+    draw.pScreenExact = points;
+    draw.depth = depths;
+    draw.inFront.assign(points.size(), 1);
+    projection.draws.push_back(draw);
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+        projection.triangles.push_back({0, static_cast<std::uint32_t>(t), triangles[t]});
+    return projection;
+}
+
+Scene screen(int width, int height) {
+    Scene scene;
+    scene.width = width;
+    scene.height = height;
+    return scene;
+}
+
+DepthTest depthOf(const Scene& scene, const Projection& pr) {
+    const ScanConversion scan = ScanConversionStage().run(scene, pr);
+    return DepthTestStage().run(scene, pr, scan);
+}
+
+}  // namespace
+
+class TestDepthTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void nearerWinsInEitherOrder() {
+        // Two squares' worth of triangles over the same pixels, at depths 5 and 3.
+        const std::vector<dvec2> p = {{0, 0}, {8, 0}, {0, 8}, {0, 0}, {8, 0}, {0, 8}};
+        const std::vector<float> z = {5, 5, 5, 3, 3, 3};
+        for (bool nearFirst : {false, true}) {
+            const auto order = nearFirst ? std::vector<std::array<std::uint32_t, 3>>{{3, 4, 5}, {0, 1, 2}}
+                                         : std::vector<std::array<std::uint32_t, 3>>{{0, 1, 2}, {3, 4, 5}};
+            const Scene scene = screen(10, 10);
+            const DepthTest d = depthOf(scene, screenTriangles(p, z, order));
+            const std::uint32_t nearTriangle = nearFirst ? 0 : 1;
+            QCOMPARE(d.depth.at(2, 2), 3.0f);
+            QCOMPARE(d.triangle.at(2, 2), nearTriangle);
+            QCOMPARE(d.fragments, std::size_t(2 * 45));
+            // Drawn far first, every near fragment passes too; drawn near first, every far
+            // fragment is rejected.
+            QCOMPARE(d.passed, std::size_t(nearFirst ? 45 : 90));
+            QCOMPARE(d.rejected, std::size_t(nearFirst ? 45 : 0));
+        }
+    }
+
+    void tieKeepsTheEarlierTriangle() {
+        const DepthTest d = depthOf(screen(10, 10),
+                                    screenTriangles({{0, 0}, {8, 0}, {0, 8}}, {4, 4, 4},
+                                                    {{0, 1, 2}, {0, 1, 2}}));
+        QCOMPARE(d.triangle.at(1, 1), 0u);  // z < stored is strict
+        QCOMPARE(d.rejected, std::size_t(45));
+    }
+
+    void depthIsInterpolatedWithScreenBarycentrics() {
+        // Vertices (0,0) z=10, (8,0) z=20, (0,8) z=30. At pixel (2,4): beta = 2/8, gamma = 4/8,
+        // alpha = 1/4, so z = 10/4 + 20/4 + 30/2 = 22.5.
+        const DepthTest d = depthOf(screen(10, 10),
+                                    screenTriangles({{0, 0}, {8, 0}, {0, 8}}, {10, 20, 30}, {{0, 1, 2}}));
+        RL_COMPARE_NEAR(d.depth.at(2, 4), 22.5, 1e-5);
+        RL_COMPARE_VEC(d.barycentric.at(2, 4), vec2(0.25f, 0.5f), 1e-7);
+        // At the vertices the depth is the vertex's.
+        QCOMPARE(d.depth.at(0, 0), 10.0f);
+        QCOMPARE(d.depth.at(8, 0), 20.0f);
+        QCOMPARE(d.depth.at(0, 8), 30.0f);
+        // Outside: cleared to +infinity, no triangle.
+        QVERIFY(std::isinf(d.depth.at(9, 9)) && d.depth.at(9, 9) > 0);
+        QCOMPARE(d.triangle.at(9, 9), kNoTriangle);
+        QCOMPARE(d.coveredPixels(), std::size_t(45));
+    }
+
+    void depthAlongARowIsMonotonic() {
+        // A slanted triangle: depth grows with x on every row.
+        const DepthTest d = depthOf(screen(64, 64),
+                                    screenTriangles({{0, 0}, {63, 0}, {0, 63}}, {1, 100, 1}, {{0, 1, 2}}));
+        for (int y = 0; y < 63; ++y)
+            for (int x = 1; x + y <= 63; ++x) QVERIFY(d.depth.at(x, y) > d.depth.at(x - 1, y));
+    }
+
+    void probeSeesBothDepthsAndTheVerdict() {
+        const Projection pr = screenTriangles({{0, 0}, {8, 0}, {0, 8}, {0, 0}, {8, 0}, {0, 8}},
+                                              {5, 5, 5, 3, 3, 3}, {{3, 4, 5}, {0, 1, 2}});
+        const Scene scene = screen(10, 10);
+        const ScanConversion scan = ScanConversionStage().run(scene, pr);
+        auto probe = RecordingProbe::forPixel(1, 2);
+        const DepthTest traced = DepthTestStage().run(scene, pr, scan, probe);
+        const DepthTest plain = DepthTestStage().run(scene, pr, scan);
+        QCOMPARE(traced.depth, plain.depth);
+        QCOMPARE(traced.triangle, plain.triangle);
+        QCOMPARE(probe.events().size(), std::size_t(2));
+        const auto& first = std::get<DepthTestEvent>(probe.events()[0]);
+        const auto& second = std::get<DepthTestEvent>(probe.events()[1]);
+        QCOMPARE(first.triangle, 0u);
+        QVERIFY(first.passed);
+        QVERIFY(std::isinf(first.stored));
+        QCOMPARE(first.depth, 3.0f);
+        QCOMPARE(second.triangle, 1u);
+        QVERIFY(!second.passed);
+        QCOMPARE(second.depth, 5.0f);
+        QCOMPARE(second.stored, 3.0f);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestDepthTest)
+#include "tst_depth_test.moc"

@@ -1,0 +1,420 @@
+// The main window in-process (offscreen): it renders the default scene, keeps the scene and
+// the image when a file is bad and says why (file:line:col), switches shading, exports the
+// image; and its render controller always ends with the newest request.
+#include <QtTest>
+
+#include <QDockWidget>
+#include <QFile>
+#include <QFileInfo>
+#include <QImage>
+#include <QListWidget>
+#include <QSignalSpy>
+#include <QStatusBar>
+#include <QTemporaryDir>
+
+#include <set>
+
+#include "main_window.h"
+#include "render_controller.h"
+#include "scene_document.h"
+#include "test_support.h"
+
+using rasterlab::MainWindow;
+using rasterlab::RenderController;
+using rasterlab::RenderedFrame;
+using rasterlab::SceneDocument;
+
+Q_DECLARE_METATYPE(SceneDocument::Part)
+
+namespace {
+
+constexpr int kFrameTimeoutMs = 10000;
+constexpr std::size_t kDefaultTriangles = 7776;  // the trefoil's header: 3888 7776
+
+RenderedFrame frameAt(const QSignalSpy& spy, qsizetype i) {
+    return spy.at(i).at(0).value<RenderedFrame>();
+}
+
+bool isBlack(QRgb c) { return qRed(c) == 0 && qGreen(c) == 0 && qBlue(c) == 0; }
+
+bool hasLitPixel(const QImage& image) {
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            if (!isBlack(image.pixel(x, y))) return true;
+    return false;
+}
+
+QString writeFixture(const QTemporaryDir& dir, const QString& name, const QByteArray& content) {
+    const QString path = dir.filePath(name);
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(content) != content.size()) return {};
+    return path;
+}
+
+// A tetrahedron around the origin, where the default camera looks.
+const QByteArray kTetrahedron = "4 4\n"
+                                "-80 -80 -80\n"
+                                "80 80 -80\n"
+                                "80 -80 80\n"
+                                "-80 80 80\n"
+                                "1 2 3\n"
+                                "1 4 2\n"
+                                "1 3 4\n"
+                                "2 4 3\n";
+
+}  // namespace
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+
+private slots:
+    void defaultScene();
+    void badFileKeepsScene_data();
+    void badFileKeepsScene();
+    void missingCameraKeepsScene();
+    void degenerateCameraKeepsScene_data();
+    void degenerateCameraKeepsScene();
+    void openGoodObject();
+    void flatShading();
+    void lastShadingWins();
+    void exportImage();
+    void exportToMissingFolder();
+    void docks();
+    void newestRequestWins();
+};
+
+// Waits for the window's first frame (the default scene); fails the test after 10 s.
+#define WAIT_FOR_FIRST_FRAME(spy) \
+    QVERIFY2((spy).count() > 0 || (spy).wait(kFrameTimeoutMs), "no frame within 10 s")
+
+void TestMainWindow::defaultScene() {
+    MainWindow window;
+    QSignalSpy spy(window.controller(), &RenderController::frameReady);
+    WAIT_FOR_FIRST_FRAME(spy);
+    QCOMPARE(spy.count(), 1);
+    QCOMPARE(window.windowTitle(), QStringLiteral("RasterLab"));
+    QVERIFY(window.document().isLoaded());
+
+    const QImage& image = window.currentImage();
+    QCOMPARE(image.size(), QSize(800, 600));
+    QCOMPARE(image.pixel(0, 0), qRgba(0, 0, 0, 255));
+    QVERIFY(!isBlack(image.pixel(400, 350)));  // on the knot's lower band
+    QVERIFY(image == frameAt(spy, 0).image);
+
+    const auto frame = window.currentFrame();
+    QVERIFY(frame);
+    QCOMPARE(frame->scene->triangleCount(), kDefaultTriangles);
+    QCOMPARE(window.document().parts().object.mesh->triangles.size(), kDefaultTriangles);
+    QCOMPARE(frame->scene->width, 800);
+    QCOMPARE(frame->scene->draws.front().shading, rl::ShadingModel::Phong);
+    QCOMPARE(frame->scene->draws.front().name, std::string("trefoil.byu"));
+    QCOMPARE(window.messages()->count(), 0);  // the default scene loads without warnings
+    QVERIFY(window.imageView());
+}
+
+void TestMainWindow::badFileKeepsScene_data() {
+    QTest::addColumn<SceneDocument::Part>("part");
+    QTest::addColumn<QString>("fileName");
+    QTest::addColumn<QByteArray>("content");
+    QTest::addColumn<QString>("message");  // %1: the file's path
+
+    // Line 3 is "1.0   a 0.0": the 'a' is at column 7.
+    QTest::newRow("object letter")
+        << SceneDocument::Part::Object << "letter.byu"
+        << QByteArray("3 1\n0 0 0\n1.0   a 0.0\n0 1 0\n1 2 3\n")
+        << "%1:3:7: expected a number for the y coordinate of vertex 2 of 3, found 'a'";
+    // Line 7 is "2  4 5": the 5 is at column 6.
+    QTest::newRow("object index out of range")
+        << SceneDocument::Part::Object << "range.byu"
+        << QByteArray("4 2\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n1 2 3\n2  4 5\n")
+        << "%1:7:6: triangle 2 refers to vertex 5, but the file declares only 4 vertices";
+    // Line 2 has two numbers: the end of the line is column 6.
+    QTest::newRow("camera short N")
+        << SceneDocument::Part::Camera << "short.cfg"
+        << QByteArray("0 -380 330\n0 380\n0 0 1\n1 0.4 0.3\n")
+        << "%1:2:6: expected 3 numbers for N, found 2";
+    QTest::newRow("lighting decimal comma")
+        << SceneDocument::Part::Lighting << "comma.txt"
+        << QByteArray("-260 -420 520\n0.35\n60 60 72\n0,85\n0.88 0.42 0.18\n0.6\n255 248 235\n"
+                      "40\n")
+        << "%1:4:1: expected a number for kd, found '0,85' (the decimal separator is '.')";
+}
+
+void TestMainWindow::badFileKeepsScene() {
+    QFETCH(SceneDocument::Part, part);
+    QFETCH(QString, fileName);
+    QFETCH(QByteArray, content);
+    QFETCH(QString, message);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = writeFixture(dir, fileName, content);
+    QVERIFY(!path.isEmpty());
+    const QString expected = message.arg(path);
+
+    MainWindow window;
+    QSignalSpy spy(window.controller(), &RenderController::frameReady);
+    WAIT_FOR_FIRST_FRAME(spy);
+    const auto frameBefore = window.currentFrame();
+    const QImage imageBefore = window.currentImage();
+    const auto meshBefore = window.document().parts().object.mesh;
+    const QString sourceBefore = window.document().source(part);
+    spy.clear();
+
+    QVERIFY(!window.openPart(part, path));
+    QCOMPARE(window.messages()->count(), 1);
+    QCOMPARE(window.messages()->item(0)->text(), QStringLiteral("Error: ") + expected);
+    QCOMPARE(window.statusBar()->currentMessage(), expected);
+    QCOMPARE(window.document().source(part), sourceBefore);
+    QCOMPARE(window.document().parts().object.mesh, meshBefore);
+    QVERIFY(!spy.wait(300));  // nothing to re-render
+    QCOMPARE(window.currentFrame(), frameBefore);
+    QCOMPARE(window.currentFrame()->scene->triangleCount(), kDefaultTriangles);
+    QVERIFY(window.currentImage() == imageBefore);
+
+    // The scene is still whole: the next render is the default scene again.
+    window.setShading(rl::ShadingModel::Phong);
+    QVERIFY(spy.wait(kFrameTimeoutMs));
+    QCOMPARE(window.currentFrame()->scene->triangleCount(), kDefaultTriangles);
+    QVERIFY(window.currentImage() == imageBefore);
+    // The error stays listed until a file loads.
+    QCOMPARE(window.messages()->item(0)->text(), QStringLiteral("Error: ") + expected);
+}
+
+void TestMainWindow::missingCameraKeepsScene() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath("absent.cfg");
+    MainWindow window;
+    QSignalSpy spy(window.controller(), &RenderController::frameReady);
+    WAIT_FOR_FIRST_FRAME(spy);
+    const auto frameBefore = window.currentFrame();
+    const QString cameraBefore = window.document().source(SceneDocument::Part::Camera);
+
+    QVERIFY(!window.openPart(SceneDocument::Part::Camera, path));
+    QCOMPARE(window.messages()->count(), 1);
+    const QString prefix = QStringLiteral("Error: %1: cannot open: ").arg(path);
+    const QString text = window.messages()->item(0)->text();
+    QVERIFY2(text.startsWith(prefix) && text.size() > prefix.size(), qPrintable(text));
+    QCOMPARE(window.statusBar()->currentMessage(), text.mid(int(qstrlen("Error: "))));
+    QCOMPARE(window.document().source(SceneDocument::Part::Camera), cameraBefore);
+    QCOMPARE(window.currentFrame(), frameBefore);
+    QCOMPARE(window.currentFrame()->scene->triangleCount(), kDefaultTriangles);
+}
+
+void TestMainWindow::degenerateCameraKeepsScene_data() {
+    QTest::addColumn<QByteArray>("content");
+    QTest::addColumn<QString>("message");  // %1: the file's path
+
+    // Well-formed files whose camera has no basis: refused like a syntax error.
+    QTest::newRow("N zero") << QByteArray("0 -380 330\n0 0 0\n0 0 1\n1 0.4 0.3\n")
+                            << "%1:2:1: N, the view direction, is the zero vector: it must point "
+                               "from the camera toward the scene";
+    // Line 4 is "1   0 0.3": hx is at column 5.
+    QTest::newRow("hx zero") << QByteArray("0 -380 330\n0 380 -330\n0 0 1\n1   0 0.3\n")
+                             << "%1:4:5: hx, the horizontal half-size of the window, is 0: the "
+                                "projection (d/hx) x/z divides by it";
+}
+
+void TestMainWindow::degenerateCameraKeepsScene() {
+    QFETCH(QByteArray, content);
+    QFETCH(QString, message);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = writeFixture(dir, "degenerate.cfg", content);
+    QVERIFY(!path.isEmpty());
+    const QString expected = message.arg(path);
+
+    MainWindow window;
+    QSignalSpy spy(window.controller(), &RenderController::frameReady);
+    QSignalSpy failures(window.controller(), &RenderController::failed);
+    WAIT_FOR_FIRST_FRAME(spy);
+    const QImage imageBefore = window.currentImage();
+    const QString cameraBefore = window.document().source(SceneDocument::Part::Camera);
+    spy.clear();
+
+    QVERIFY(!window.openPart(SceneDocument::Part::Camera, path));
+    QCOMPARE(window.messages()->count(), 1);
+    QCOMPARE(window.messages()->item(0)->text(), QStringLiteral("Error: ") + expected);
+    QCOMPARE(window.statusBar()->currentMessage(), expected);
+    QCOMPARE(window.document().source(SceneDocument::Part::Camera), cameraBefore);
+
+    // The previous camera still renders.
+    window.setShading(rl::ShadingModel::Phong);
+    QVERIFY(spy.wait(kFrameTimeoutMs));
+    QCOMPARE(failures.count(), 0);
+    QVERIFY(window.currentImage() == imageBefore);
+}
+
+void TestMainWindow::openGoodObject() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = writeFixture(dir, "tetra.byu", kTetrahedron);
+    QVERIFY(!path.isEmpty());
+    const QString badPath = writeFixture(dir, "bad.byu", "3 1\n0 0 0\n1 0 0\n");
+    QVERIFY(!badPath.isEmpty());
+
+    MainWindow window;
+    QSignalSpy spy(window.controller(), &RenderController::frameReady);
+    WAIT_FOR_FIRST_FRAME(spy);
+    QVERIFY(!window.openPart(SceneDocument::Part::Object, badPath));  // an error first
+    QCOMPARE(window.messages()->count(), 1);
+    spy.clear();
+
+    QVERIFY(window.openPart(SceneDocument::Part::Object, path));
+    QCOMPARE(window.document().source(SceneDocument::Part::Object), path);
+    QCOMPARE(window.messages()->count(), 0);  // a good file clears the error
+    QVERIFY(spy.wait(kFrameTimeoutMs));
+    QCOMPARE(spy.count(), 1);
+    const auto frame = window.currentFrame();
+    QCOMPARE(frame->scene->triangleCount(), std::size_t(4));
+    QCOMPARE(frame->scene->vertexCount(), std::size_t(4));
+    QCOMPARE(frame->scene->draws.front().name, std::string("tetra.byu"));
+    QCOMPARE(window.currentImage().size(), QSize(800, 600));
+    QVERIFY(hasLitPixel(window.currentImage()));
+    QCOMPARE(window.currentImage().pixel(0, 0), qRgba(0, 0, 0, 255));
+}
+
+void TestMainWindow::flatShading() {
+    MainWindow window;
+    QSignalSpy spy(window.controller(), &RenderController::frameReady);
+    WAIT_FOR_FIRST_FRAME(spy);
+    const QImage phong = window.currentImage();
+    QCOMPARE(window.currentFrame()->scene->draws.front().shading, rl::ShadingModel::Phong);
+    spy.clear();
+
+    window.setShading(rl::ShadingModel::Flat);
+    QCOMPARE(window.document().settings().shading, rl::ShadingModel::Flat);
+    QVERIFY(spy.wait(kFrameTimeoutMs));
+    QCOMPARE(spy.count(), 1);
+    const auto frame = window.currentFrame();
+    QCOMPARE(frame->scene->draws.front().shading, rl::ShadingModel::Flat);
+    QCOMPARE(frame->scene->triangleCount(), kDefaultTriangles);
+    const QImage& flat = window.currentImage();
+    QCOMPARE(flat.size(), phong.size());
+    QVERIFY(flat != phong);
+    // Same coverage, other colours.
+    qsizetype differing = 0;
+    for (int y = 0; y < flat.height(); ++y) {
+        for (int x = 0; x < flat.width(); ++x) {
+            QCOMPARE(isBlack(flat.pixel(x, y)), isBlack(phong.pixel(x, y)));
+            differing += flat.pixel(x, y) != phong.pixel(x, y) ? 1 : 0;
+        }
+    }
+    QVERIFY2(differing > 1000, qPrintable(QString::number(differing)));
+}
+
+void TestMainWindow::lastShadingWins() {
+    MainWindow window;
+    QSignalSpy spy(window.controller(), &RenderController::frameReady);
+    WAIT_FOR_FIRST_FRAME(spy);
+    spy.clear();
+    window.setShading(rl::ShadingModel::Flat);
+    window.setShading(rl::ShadingModel::Phong);
+    window.setShading(rl::ShadingModel::Gouraud);
+    while (spy.isEmpty() ||
+           frameAt(spy, spy.count() - 1).trace->scene->draws.front().shading !=
+               rl::ShadingModel::Gouraud)
+        QVERIFY2(spy.wait(kFrameTimeoutMs), "no Gouraud frame within 10 s");
+    QVERIFY(!spy.wait(300));  // and nothing after it
+    // Flat started at once; Phong waited and was replaced by Gouraud, the newest.
+    QCOMPARE(spy.count(), 2);
+    QCOMPARE(frameAt(spy, 0).trace->scene->draws.front().shading, rl::ShadingModel::Flat);
+    QCOMPARE(window.currentFrame()->scene->draws.front().shading, rl::ShadingModel::Gouraud);
+    QVERIFY(!window.controller()->isBusy());
+}
+
+void TestMainWindow::exportImage() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    MainWindow window;
+    QSignalSpy spy(window.controller(), &RenderController::frameReady);
+    WAIT_FOR_FIRST_FRAME(spy);
+    const QString path = dir.filePath("export.png");
+    QVERIFY(window.exportImage(path));
+    QCOMPARE(window.statusBar()->currentMessage(),
+             QStringLiteral("Exported %1").arg(QFileInfo(path).absoluteFilePath()));
+    QCOMPARE(window.messages()->count(), 0);
+
+    const QImage exported(path);
+    QVERIFY(!exported.isNull());
+    QCOMPARE(exported.size(), QSize(800, 600));
+    const QImage shown = window.currentImage().convertToFormat(QImage::Format_RGBA8888);
+    QVERIFY(exported.convertToFormat(QImage::Format_RGBA8888) == shown);
+    QCOMPARE(exported.pixel(400, 350), window.currentImage().pixel(400, 350));
+}
+
+void TestMainWindow::exportToMissingFolder() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    MainWindow window;
+    QSignalSpy spy(window.controller(), &RenderController::frameReady);
+    WAIT_FOR_FIRST_FRAME(spy);
+    const auto frameBefore = window.currentFrame();
+    const QString path = dir.filePath("no-such-folder/export.png");
+    QVERIFY(!window.exportImage(path));
+    QVERIFY(!QFile::exists(path));
+    QCOMPARE(window.messages()->count(), 1);
+    const QString prefix = QStringLiteral("Error: %1: cannot export the image: ").arg(path);
+    const QString text = window.messages()->item(0)->text();
+    QVERIFY2(text.startsWith(prefix) && text.size() > prefix.size(), qPrintable(text));
+    QCOMPARE(window.statusBar()->currentMessage(), text.mid(int(qstrlen("Error: "))));
+    QCOMPARE(window.currentFrame(), frameBefore);
+}
+
+void TestMainWindow::docks() {
+    MainWindow window;
+    const QList<QDockWidget*> docks = window.findChildren<QDockWidget*>();
+    QCOMPARE(docks.size(), 2);
+    std::set<QString> names;
+    for (const QDockWidget* dock : docks) {
+        QVERIFY2(!dock->objectName().isEmpty(), qPrintable(dock->windowTitle()));
+        QVERIFY(dock->widget());
+        names.insert(dock->objectName());
+    }
+    const std::set<QString> expected = {QStringLiteral("messagesDock"),
+                                        QStringLiteral("sceneDock")};
+    QCOMPARE(names, expected);
+    const auto* messagesDock = window.findChild<QDockWidget*>(QStringLiteral("messagesDock"));
+    QVERIFY(messagesDock);
+    QCOMPARE(messagesDock->widget(), window.messages());
+    // Unique object names let saveState/restoreState find the docks again.
+    QVERIFY(!window.saveState().isEmpty());
+}
+
+void TestMainWindow::newestRequestWins() {
+    RenderController controller;
+    QSignalSpy frames(&controller, &RenderController::frameReady);
+    QSignalSpy failures(&controller, &RenderController::failed);
+    QSignalSpy busy(&controller, &RenderController::busyChanged);
+
+    // One triangle in front of the axis camera; the scenes differ in their width.
+    const auto mesh =
+        testing::makeMesh({{-1.0, -1.0, 5.0}, {1.0, -1.0, 5.0}, {0.0, 1.0, 5.0}}, {{0, 1, 2}});
+    std::vector<std::shared_ptr<const rl::Scene>> scenes;
+    for (int width = 40; width <= 400; width += 40)
+        scenes.push_back(std::make_shared<const rl::Scene>(
+            testing::makeScene(testing::axisCamera(), mesh, width, 30)));
+    for (const auto& scene : scenes) controller.request(scene);
+    QVERIFY(controller.isBusy());
+
+    const auto newest = scenes.back();
+    while (frames.isEmpty() || frameAt(frames, frames.count() - 1).trace->scene != newest)
+        QVERIFY2(frames.wait(kFrameTimeoutMs), "no frame for the newest request within 10 s");
+    QVERIFY(!frames.wait(300));  // nothing after the newest
+
+    // The first request started at once; the eight in between were replaced by the newest.
+    QCOMPARE(frames.count(), 2);
+    QCOMPARE(frameAt(frames, 0).trace->scene, scenes.front());
+    const RenderedFrame last = frameAt(frames, 1);
+    QCOMPARE(last.trace->scene, newest);
+    QCOMPARE(last.image.size(), QSize(400, 30));
+    QVERIFY(hasLitPixel(last.image));
+    QCOMPARE(failures.count(), 0);
+    QVERIFY(!controller.isBusy());
+    QVERIFY(!busy.isEmpty());
+    QCOMPARE(busy.first().at(0).toBool(), true);
+    QCOMPARE(busy.last().at(0).toBool(), false);
+}
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_main_window.moc"

@@ -1,0 +1,211 @@
+// Stage 4, projection: seed 000's triangle to [-1, 1] and to pixels by hand, and clipping
+// against the near plane (a quad splits in two, nothing behind the camera is divided).
+#include <QtTest>
+
+#include "camera_basis.h"
+#include "projection.h"
+#include "test_support.h"
+#include "view_transform.h"
+
+using namespace rl;
+
+class TestProjection : public QObject {
+    Q_OBJECT
+
+private:
+    struct Run {
+        Projection projection;
+        Diagnostics diagnostics;
+    };
+    static Run project(const Scene& scene) {
+        Run run;
+        auto basis = CameraBasisStage().run(scene, run.diagnostics);
+        const ViewTransform view = ViewTransformStage().run(scene, basis.value());
+        run.projection = ProjectionStage().run(scene, view, run.diagnostics);
+        return run;
+    }
+
+private slots:
+    void seedTriangleToPixels() {
+        // pNdc = ((d/hx) x/z, (d/hy) y/z) with d = 65, hx = 0.5, hy = 0.6 and the view
+        // coordinates of tst_view_transform; pixels x = (int)((x + 1) 800/2),
+        // y = (int)((1 - y) 600/2). C's (int) truncates toward zero: -3896.87 -> -3896.
+        const Scene scene = testing::makeScene(
+            testing::seedCamera(),
+            testing::makeMesh({{50, 0, 0}, {0, 50, 0}, {0, 0, 50}}, {{0, 1, 2}}), 800, 600);
+        const Run run = project(scene);
+        const DrawProjection& p = run.projection.draws[0];
+        RL_COMPARE_VEC(p.pNdc[0], dvec2(13.785787171292036, -1.5237054350210493), 1e-9);
+        RL_COMPARE_VEC(p.pNdc[1], dvec2(-0.029144280268794183, 13.989582790515481), 1e-9);
+        RL_COMPARE_VEC(p.pNdc[2], dvec2(11.13910004881189, 1.4483556510447515), 1e-9);
+        RL_COMPARE_VEC(p.pScreenExact[0], dvec2(5914.314868516814, 757.1116305063147), 1e-6);
+        RL_COMPARE_VEC(p.pScreenExact[1], dvec2(388.3422878924823, -3896.8748371546444), 1e-6);
+        RL_COMPARE_VEC(p.pScreenExact[2], dvec2(4855.640019524756, -134.50669531342544), 1e-6);
+        QCOMPARE(p.pScreen[0], dvec2(5914, 757));
+        QCOMPARE(p.pScreen[1], dvec2(388, -3896));
+        QCOMPARE(p.pScreen[2], dvec2(4855, -134));
+        // The depth compared by the z-buffer is the view z.
+        RL_COMPARE_NEAR(p.depth[0], 391.4669354893107, 1e-4);
+        QCOMPARE(run.projection.inside, std::size_t(1));
+        QCOMPARE(run.projection.triangles.size(), std::size_t(1));
+        QCOMPARE(p.fate[0], TriangleFate::Inside);
+    }
+
+    void courseMatrix() {
+        CourseCamera c = testing::seedCamera();
+        const dmat4 m = courseClipFromView(c);
+        const dvec4 clip = m * dvec4(2.0, 3.0, 4.0, 1.0);
+        RL_COMPARE_VEC(clip, dvec4(65.0 / 0.5 * 2.0, 65.0 / 0.6 * 3.0, 4.0, 4.0), 1e-12);
+    }
+
+    void negativeHalfSizeMirrors() {
+        CourseCamera c = testing::axisCamera();
+        c.hx = -1.0;
+        const Scene scene = testing::makeScene(
+            c, testing::makeMesh({{-5, 0, 10}, {0, 5, 10}, {5, 0, 10}}, {{0, 1, 2}}), 100, 100);
+        const Run run = project(scene);
+        // View x of world (-5, 0, 10) is 5; with hx = -1 the NDC x is -0.5.
+        RL_COMPARE_VEC(run.projection.draws[0].pNdc[0], dvec2(-0.5, 0.0), 1e-12);
+        QCOMPARE(run.projection.draws[0].pScreen[0], dvec2(25, 50));
+    }
+
+    void oneVertexBehindMakesAQuad() {
+        // Axis camera (view = (-x, y, z)), near plane fixed at z = 1. A = (0,1,10) and
+        // B = (1,-1,10) are in front, C = (0,0,-10) behind. Edge B->C crosses z = 1 at
+        // t = (1 - 10)/(-10 - 10) = 0.45: view (-1 + 0.45, -1 + 0.45, 1); edge A->C at
+        // t = 0.45 too: view (0, 1 - 0.45, 1). The quad A, B, BC, AC becomes two triangles.
+        Scene scene = testing::makeScene(
+            testing::axisCamera(),
+            testing::makeMesh({{0, 1, 10}, {1, -1, 10}, {0, 0, -10}}, {{0, 1, 2}}), 100, 100);
+        scene.nearPlane.fixedZ = 1.0;
+        const Run run = project(scene);
+        const Projection& pr = run.projection;
+        const DrawProjection& p = pr.draws[0];
+        QCOMPARE(p.fate[0], TriangleFate::Clipped);
+        QCOMPARE(pr.clipped, std::size_t(1));
+        QCOMPARE(pr.triangles.size(), std::size_t(2));
+        QCOMPARE(p.generated.size(), std::size_t(2));
+        QCOMPARE(p.originalVertexCount, 3u);
+        // First made vertex: on B->C; second: on C->A, stored from the front vertex A.
+        QCOMPARE(p.generated[0].a, 1u);
+        QCOMPARE(p.generated[0].b, 2u);
+        RL_COMPARE_NEAR(p.generated[0].t, 0.45, 1e-15);
+        RL_COMPARE_VEC(p.pView[3], dvec4(-0.55, -0.55, 1.0, 1.0), 1e-12);
+        QCOMPARE(p.generated[1].a, 0u);
+        QCOMPARE(p.generated[1].b, 2u);
+        RL_COMPARE_VEC(p.pView[4], dvec4(0.0, 0.55, 1.0, 1.0), 1e-12);
+        QCOMPARE(p.pView[3].z, 1.0);  // exactly on the plane
+        QCOMPARE((std::array<std::uint32_t, 3>{0, 1, 3}), pr.triangles[0].v);
+        QCOMPARE((std::array<std::uint32_t, 3>{0, 3, 4}), pr.triangles[1].v);
+        // The behind vertex was never projected.
+        QCOMPARE(p.inFront[2], std::uint8_t(0));
+        // NDC of the vertex made on B->C: (-0.55 / 1, -0.55 / 1).
+        RL_COMPARE_VEC(p.pNdc[3], dvec2(-0.55, -0.55), 1e-12);
+        QVERIFY(run.diagnostics.contains("1 triangles cross the near plane z = 1 and were clipped; 0 are wholly behind it"));
+    }
+
+    void twoVerticesBehindMakeOneTriangle() {
+        Scene scene = testing::makeScene(
+            testing::axisCamera(),
+            testing::makeMesh({{0, 1, 10}, {1, -1, -10}, {0, 0, -10}}, {{0, 1, 2}}), 100, 100);
+        scene.nearPlane.fixedZ = 1.0;
+        const Run run = project(scene);
+        QCOMPARE(run.projection.triangles.size(), std::size_t(1));
+        QCOMPARE(run.projection.draws[0].generated.size(), std::size_t(2));
+        for (std::uint32_t v : run.projection.triangles[0].v)
+            QVERIFY(run.projection.draws[0].pView[v].z >= 1.0);
+    }
+
+    void vertexOnThePlaneIsInFront() {
+        Scene scene = testing::makeScene(
+            testing::axisCamera(),
+            testing::makeMesh({{0, 1, 1}, {1, -1, 10}, {-1, -1, 10}}, {{0, 1, 2}}), 100, 100);
+        scene.nearPlane.fixedZ = 1.0;
+        const Run run = project(scene);
+        QCOMPARE(run.projection.draws[0].fate[0], TriangleFate::Inside);
+        QCOMPARE(run.projection.draws[0].generated.size(), std::size_t(0));
+    }
+
+    void sharedEdgeClipsIdentically() {
+        // Two triangles share the edge (1,0,10)-(0,0,-10), which crosses the near plane:
+        // both must place the clip vertex at exactly the same point (no crack).
+        Scene scene = testing::makeScene(
+            testing::axisCamera(),
+            testing::makeMesh({{1, 0, 10}, {0, 0, -10}, {0, 2, 10}, {0, -2, 10}},
+                              {{0, 1, 2}, {1, 0, 3}}),
+            100, 100);
+        scene.nearPlane.fixedZ = 0.5;
+        const Run run = project(scene);
+        const DrawProjection& p = run.projection.draws[0];
+        std::vector<dvec4> onSharedEdge;
+        for (std::size_t i = 0; i < p.generated.size(); ++i) {
+            const ClipVertex& g = p.generated[i];
+            if ((g.a == 0 && g.b == 1) || (g.a == 1 && g.b == 0))
+                onSharedEdge.push_back(p.pView[p.originalVertexCount + i]);
+        }
+        QCOMPARE(onSharedEdge.size(), std::size_t(2));
+        QCOMPARE(onSharedEdge[0], onSharedEdge[1]);  // bit for bit
+    }
+
+    void wholeObjectBehindIsEmptyAndSaysSo() {
+        Scene scene = testing::makeScene(
+            testing::axisCamera(),
+            testing::makeMesh({{0, 1, -10}, {1, -1, -10}, {-1, -1, -10}, {0, 0, -20}},
+                              {{0, 1, 2}, {0, 1, 3}}),
+            100, 100);
+        scene.name = "behind.byu";
+        const Run run = project(scene);
+        QCOMPARE(run.projection.behind, std::size_t(2));
+        QCOMPARE(run.projection.triangles.size(), std::size_t(0));
+        QCOMPARE(run.projection.draws[0].fate[1], TriangleFate::Behind);
+        QCOMPARE(run.diagnostics.size(), std::size_t(1));
+        QCOMPARE(QString::fromStdString(run.diagnostics.items()[0].toString()),
+                 QStringLiteral("behind.byu: warning: every triangle is behind the camera (is N "
+                                "pointing away from the object?): the image is empty"));
+    }
+
+    void autoNearPlaneIsAThousandthOfTheFarthestVertex() {
+        Scene scene = testing::makeScene(
+            testing::axisCamera(),
+            testing::makeMesh({{0, 1, 600}, {1, -1, 10}, {-1, -1, -5}}, {{0, 1, 2}}), 100, 100);
+        const Run run = project(scene);
+        RL_COMPARE_NEAR(run.projection.nearZ, 0.6, 1e-15);
+        QCOMPARE(run.projection.clipped, std::size_t(1));
+    }
+
+    void vertexAtTheEyeIsClipped() {
+        // A vertex at the camera's position (z = 0): never divided by 0.
+        Scene scene = testing::makeScene(
+            testing::axisCamera(),
+            testing::makeMesh({{0, 0, 0}, {1, -1, 10}, {-1, -1, 10}}, {{0, 1, 2}}), 100, 100);
+        const Run run = project(scene);
+        QCOMPARE(run.projection.draws[0].fate[0], TriangleFate::Clipped);
+        for (const ScreenTriangle& t : run.projection.triangles)
+            for (std::uint32_t v : t.v) {
+                const dvec2 s = run.projection.draws[0].pScreen[v];
+                QVERIFY(std::isfinite(s.x) && std::isfinite(s.y));
+            }
+    }
+
+    void naiveProjectionDividesByNegativeZ() {
+        Scene scene = testing::makeScene(
+            testing::axisCamera(),
+            testing::makeMesh({{0, 1, 10}, {1, -1, 10}, {2, 4, -10}, {0, 0, 0}},
+                              {{0, 1, 2}, {0, 1, 3}}),
+            100, 100);
+        scene.nearPlane.naive = true;
+        const Run run = project(scene);
+        const DrawProjection& p = run.projection.draws[0];
+        // (2, 4, -10) in view is (-2, 4, -10): NDC (0.2, -0.4), mirrored through the centre.
+        RL_COMPARE_VEC(p.pNdc[2], dvec2(0.2, -0.4), 1e-12);
+        QCOMPARE(p.fate[0], TriangleFate::Inside);
+        // The vertex at z = 0 projects to infinity: that triangle is dropped and counted.
+        QCOMPARE(p.fate[1], TriangleFate::NonFinite);
+        QCOMPARE(run.projection.nonFinite, std::size_t(1));
+        QCOMPARE(run.projection.throughZeroOrBehind, std::size_t(2));
+        QVERIFY(run.diagnostics.contains("naive projection: 2 triangles have a vertex at or behind the camera"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestProjection)
+#include "tst_projection.moc"

@@ -1,0 +1,258 @@
+// Stage 5, scan conversion: spans worked out by hand, clipping to the screen, and the
+// exactness of the edge walk: on random triangles its pixels are exactly those whose
+// sample point lies inside or on the triangle (an independent brute-force test), so a
+// fan of triangles has no cracks.
+#include <QtTest>
+
+#include <random>
+#include <set>
+
+#include "probe.h"
+#include "scan_conversion.h"
+#include "test_support.h"
+
+using namespace rl;
+
+namespace {
+
+// A projection holding screen triangles given directly in pixels.
+Projection screenTriangles(const std::vector<dvec2>& points,
+                           const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+    Projection projection;
+    DrawProjection draw;
+    draw.pScreen = points;
+    draw.pScreenExact = points;
+    draw.depth.assign(points.size(), 1.0f);
+    draw.inFront.assign(points.size(), 1);
+    projection.draws.push_back(draw);
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+        projection.triangles.push_back({0, static_cast<std::uint32_t>(t), triangles[t]});
+    return projection;
+}
+
+Scene screen(int width, int height) {
+    Scene scene;
+    scene.width = width;
+    scene.height = height;
+    return scene;
+}
+
+std::vector<Span> spansOf(const ScanConversion& scan, std::size_t t) {
+    return {scan.spans.begin() + scan.spanStart[t], scan.spans.begin() + scan.spanStart[t + 1]};
+}
+
+// Brute force: pixels whose sample (x, y) is inside or on the triangle, by edge functions.
+std::set<std::pair<int, int>> insidePixels(const std::array<dvec2, 3>& p, int width, int height) {
+    std::set<std::pair<int, int>> inside;
+    auto edge = [](const dvec2& a, const dvec2& b, double x, double y) {
+        return (b.x - a.x) * (y - a.y) - (b.y - a.y) * (x - a.x);  // exact for small integers
+    };
+    const double area = edge(p[0], p[1], p[2].x, p[2].y);
+    if (area == 0.0) return inside;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const double w0 = edge(p[1], p[2], x, y);
+            const double w1 = edge(p[2], p[0], x, y);
+            const double w2 = edge(p[0], p[1], x, y);
+            const bool in = area > 0 ? (w0 >= 0 && w1 >= 0 && w2 >= 0)
+                                     : (w0 <= 0 && w1 <= 0 && w2 <= 0);
+            if (in) inside.insert({x, y});
+        }
+    return inside;
+}
+
+std::set<std::pair<int, int>> pixelsOf(const std::vector<Span>& spans) {
+    std::set<std::pair<int, int>> pixels;
+    for (const Span& s : spans)
+        for (int x = s.xBegin; x < s.xEnd; ++x) pixels.insert({x, s.y});
+    return pixels;
+}
+
+}  // namespace
+
+class TestScanConversion : public QObject {
+    Q_OBJECT
+
+private slots:
+    void rightTriangleByHand() {
+        // (0,0), (4,0), (0,4): row y covers x = 0 .. 4 - y, edges included.
+        const Projection pr = screenTriangles({{0, 0}, {4, 0}, {0, 4}}, {{0, 1, 2}});
+        const ScanConversion scan = ScanConversionStage().run(screen(10, 10), pr);
+        const std::vector<Span> expected = {{0, 0, 5}, {1, 0, 4}, {2, 0, 3}, {3, 0, 2}, {4, 0, 1}};
+        QCOMPARE(spansOf(scan, 0), expected);
+        QCOMPARE(scan.pixels, std::size_t(15));
+    }
+
+    void slopedEdgeByHand() {
+        // (0,0), (5,0), (0,3): the right edge is x = 5 - 5y/3: 5, 3.33, 1.67, 0 on rows 0..3.
+        const Projection pr = screenTriangles({{0, 0}, {5, 0}, {0, 3}}, {{0, 1, 2}});
+        const ScanConversion scan = ScanConversionStage().run(screen(10, 10), pr);
+        const std::vector<Span> expected = {{0, 0, 6}, {1, 0, 4}, {2, 0, 2}, {3, 0, 1}};
+        QCOMPARE(spansOf(scan, 0), expected);
+    }
+
+    void generalTriangleByHand() {
+        // Top (4,1), middle (9,4), bottom (1,7). Long edge x = 4 - (y-1)/2; upper edge
+        // x = 4 + 5(y-1)/3; lower edge x = 9 - 8(y-4)/3.
+        //   y=1: [4, 4]        y=2: [3.5, 5.67] -> 4..5   y=3: [3, 7.33] -> 3..7
+        //   y=4: [2.5, 9] -> 3..9   y=5: [2, 6.33] -> 2..6   y=6: [1.5, 3.67] -> 2..3
+        //   y=7: [1, 1] -> 1..1
+        const Projection pr = screenTriangles({{9, 4}, {1, 7}, {4, 1}}, {{0, 1, 2}});
+        const ScanConversion scan = ScanConversionStage().run(screen(20, 20), pr);
+        const std::vector<Span> expected = {{1, 4, 5}, {2, 4, 6}, {3, 3, 8}, {4, 3, 10},
+                                            {5, 2, 7}, {6, 2, 4}, {7, 1, 2}};
+        QCOMPARE(spansOf(scan, 0), expected);
+        const TriangleSetup s = setupTriangle({dvec2(9, 4), dvec2(1, 7), dvec2(4, 1)});
+        QCOMPARE(s.order, (std::array<int, 3>{2, 0, 1}));
+        QCOMPARE(s.yFirst, 1);
+        QCOMPARE(s.yLast, 7);
+        RL_COMPARE_NEAR(s.longEdge.dxdy, -0.5, 0.0);
+        RL_COMPARE_NEAR(s.upperEdge.dxdy, 5.0 / 3.0, 1e-15);
+        RL_COMPARE_NEAR(s.lowerEdge.dxdy, -8.0 / 3.0, 1e-15);
+        RL_COMPARE_NEAR(s.longEdge.xAt(5), 2.0, 0.0);
+        QVERIFY(s.longEdgeOnLeft);
+    }
+
+    void vertexOrderDoesNotMatter() {
+        const std::vector<dvec2> points = {{9, 4}, {1, 7}, {4, 1}};
+        const std::array<std::array<std::uint32_t, 3>, 6> orders = {
+            {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
+        std::vector<Span> first;
+        for (const auto& order : orders) {
+            const ScanConversion scan =
+                ScanConversionStage().run(screen(20, 20), screenTriangles(points, {order}));
+            if (first.empty()) first = spansOf(scan, 0);
+            QCOMPARE(spansOf(scan, 0), first);
+        }
+    }
+
+    void flatTopAndFlatBottom() {
+        const Projection pr = screenTriangles({{1, 1}, {5, 1}, {3, 3}, {3, 5}},
+                                              {{0, 1, 2}, {0, 3, 1}});
+        const ScanConversion scan = ScanConversionStage().run(screen(10, 10), pr);
+        // Flat top (1,1)-(5,1) down to (3,3): rows 1..3 shrink by one pixel a side.
+        QCOMPARE(spansOf(scan, 0), (std::vector<Span>{{1, 1, 6}, {2, 2, 5}, {3, 3, 4}}));
+        // (1,1), (5,1), (3,5): edges x = 1 + (y-1)/2 and x = 5 - (y-1)/2.
+        QCOMPARE(spansOf(scan, 1),
+                 (std::vector<Span>{{1, 1, 6}, {2, 2, 5}, {3, 2, 5}, {4, 3, 4}, {5, 3, 4}}));
+    }
+
+    void degenerateAndOffscreenAreCounted() {
+        const Projection pr = screenTriangles(
+            {{0, 0}, {2, 2}, {4, 4}, {50, 50}, {60, 50}, {55, 60}, {3, 3}},
+            {{0, 1, 2}, {3, 4, 5}, {0, 0, 6}});
+        const ScanConversion scan = ScanConversionStage().run(screen(10, 10), pr);
+        QCOMPARE(scan.degenerate, std::size_t(2));  // collinear, repeated vertex
+        QCOMPARE(scan.offscreen, std::size_t(1));
+        QCOMPARE(scan.spans.size(), std::size_t(0));
+        QCOMPARE(scan.triangleCount(), std::size_t(3));
+    }
+
+    void gargantuanTriangleFillsTheScreenFast() {
+        // A triangle a million times the screen: only the screen's rows and columns are
+        // walked, so it costs one span per row.
+        const double big = 1e8;
+        const Projection pr = screenTriangles({{-big, -big}, {big, -big}, {0, big}}, {{0, 1, 2}});
+        QElapsedTimer timer;
+        timer.start();
+        const ScanConversion scan = ScanConversionStage().run(screen(640, 480), pr);
+        QCOMPARE(scan.spans.size(), std::size_t(480));
+        QCOMPARE(scan.pixels, std::size_t(640 * 480));
+        for (const Span& s : scan.spans) QCOMPARE((std::pair{s.xBegin, s.xEnd}), (std::pair{0, 640}));
+        qInfo("gargantuan triangle scanned in %lld us", static_cast<long long>(timer.nsecsElapsed() / 1000));
+    }
+
+    void partlyOffscreenIsClipped() {
+        const Projection pr = screenTriangles({{-5, -5}, {5, -5}, {-5, 5}}, {{0, 1, 2}});
+        const ScanConversion scan = ScanConversionStage().run(screen(10, 10), pr);
+        // Rows 0..5 of the screen; row y covers x = -5 .. -y, i.e. 0..-y on screen.
+        QCOMPARE(spansOf(scan, 0), (std::vector<Span>{{0, 0, 1}}));
+    }
+
+    void randomTrianglesMatchBruteForce() {
+        std::mt19937 rng(7);
+        std::uniform_int_distribution<int> coord(-6, 38);
+        int compared = 0;
+        for (int i = 0; i < 3000; ++i) {
+            std::vector<dvec2> p = {{double(coord(rng)), double(coord(rng))},
+                                    {double(coord(rng)), double(coord(rng))},
+                                    {double(coord(rng)), double(coord(rng))}};
+            const ScanConversion scan =
+                ScanConversionStage().run(screen(32, 32), screenTriangles(p, {{0, 1, 2}}));
+            const auto expected = insidePixels({p[0], p[1], p[2]}, 32, 32);
+            const auto actual = pixelsOf(spansOf(scan, 0));
+            if (actual != expected)
+                QFAIL(qPrintable(QStringLiteral("triangle %1 (%2, %3, %4): %5 pixels, expected %6")
+                                     .arg(i)
+                                     .arg(testing::describe(p[0]), testing::describe(p[1]),
+                                          testing::describe(p[2]))
+                                     .arg(actual.size())
+                                     .arg(expected.size())));
+            ++compared;
+        }
+        QCOMPARE(compared, 3000);
+    }
+
+    void randomFansHaveNoCracks() {
+        // Fans of random triangles around a centre: every pixel inside the fan's outline is
+        // covered at least once (the inclusive rule covers shared edges twice, never zero
+        // times). 2,000 fans of 3 to 12 triangles with vertices far off screen too.
+        std::mt19937 rng(11);
+        std::uniform_real_distribution<double> angle(0.0, 1.0);
+        std::uniform_int_distribution<int> spokes(3, 12);
+        std::uniform_real_distribution<double> radius(2.0, 400.0);
+        std::uniform_int_distribution<int> centre(0, 63);
+        long long doubleHits = 0;
+        for (int f = 0; f < 2000; ++f) {
+            const int n = spokes(rng);
+            std::vector<double> angles(static_cast<std::size_t>(n));
+            for (auto& a : angles) a = angle(rng);
+            std::sort(angles.begin(), angles.end());
+            std::vector<dvec2> points = {{double(centre(rng)), double(centre(rng))}};
+            for (double a : angles) {
+                const double r = radius(rng);
+                points.push_back({std::trunc(points[0].x + r * std::cos(6.283185307179586 * a)),
+                                  std::trunc(points[0].y + r * std::sin(6.283185307179586 * a))});
+            }
+            std::vector<std::array<std::uint32_t, 3>> fan;
+            for (int k = 1; k <= n; ++k)
+                fan.push_back({0, static_cast<std::uint32_t>(k),
+                               static_cast<std::uint32_t>(k % n + 1)});
+            const Projection pr = screenTriangles(points, fan);
+            const ScanConversion scan = ScanConversionStage().run(screen(64, 64), pr);
+            std::set<std::pair<int, int>> expected;
+            std::map<std::pair<int, int>, int> hits;
+            for (std::size_t t = 0; t < fan.size(); ++t) {
+                const auto& tri = fan[t];
+                const auto in = insidePixels({points[tri[0]], points[tri[1]], points[tri[2]]}, 64, 64);
+                expected.insert(in.begin(), in.end());
+                for (const auto& px : pixelsOf(spansOf(scan, t))) ++hits[px];
+            }
+            for (const auto& px : expected)
+                if (hits[px] == 0)
+                    QFAIL(qPrintable(QStringLiteral("fan %1: crack at (%2, %3)").arg(f).arg(px.first).arg(px.second)));
+            for (const auto& [px, count] : hits) doubleHits += count > 1 ? count - 1 : 0;
+        }
+        qInfo("inclusive rule: %lld pixels covered more than once in 2,000 fans (shared edges)",
+              doubleHits);
+        QVERIFY(doubleHits > 0);
+    }
+
+    void recordingProbeLogsTriangleAndSpans() {
+        const Projection pr = screenTriangles({{0, 0}, {4, 0}, {0, 4}, {9, 9}, {8, 9}, {9, 8}},
+                                              {{0, 1, 2}, {3, 4, 5}});
+        auto probe = RecordingProbe::forTriangle(0);
+        const ScanConversion traced = ScanConversionStage().run(screen(10, 10), pr, probe);
+        const ScanConversion plain = ScanConversionStage().run(screen(10, 10), pr);
+        QCOMPARE(traced.spans, plain.spans);
+        QCOMPARE(probe.events().size(), std::size_t(1 + 5));
+        QVERIFY(std::holds_alternative<TriangleEvent>(probe.events()[0]));
+        const auto& span = std::get<SpanEvent>(probe.events()[2]);
+        QCOMPARE(span.span, (Span{1, 0, 4}));
+        RL_COMPARE_NEAR(span.xLeft, 0.0, 0.0);
+        RL_COMPARE_NEAR(span.xRight, 3.0, 0.0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestScanConversion)
+#include "tst_scan_conversion.moc"

@@ -1,0 +1,232 @@
+// Stage 7, shading: one pixel's Phong colour worked out term by term, the same pixel
+// flat and Gouraud, each special case of seed 000 (flip, N.L < 0, R.V < 0), and the
+// conversion to bytes (clamp at 255, truncate).
+#include <QtTest>
+
+#include "output_image.h"
+#include "phong.h"
+#include "renderer.h"
+#include "test_support.h"
+
+using namespace rl;
+
+namespace {
+
+// Axis camera (view = (-x, y, z)), 800x600, d = hx = hy = 1. The triangle's view vertices
+// (-10,10,10), (10,10,10), (0,-10,10) project exactly to pixels (0,0), (800,0), (400,600);
+// pixel (400,300) has barycentrics (1/4, 1/4, 1/2) and P' = (0, 0, 10). Its view normal is
+// (20,0,0) x (10,-20,0) = (0,0,-400) -> (0,0,-1). The light is at view (0, 10, 0).
+Scene handScene(ShadingModel model) {
+    Scene scene = testing::makeScene(
+        testing::axisCamera(),
+        testing::makeMesh({{10, 10, 10}, {-10, 10, 10}, {0, -10, 10}}, {{0, 1, 2}}), 800, 600,
+        model);
+    Material& m = scene.draws[0].material;
+    m.ka = 0.2f;
+    m.kd = vec3(0.5f);
+    m.od = vec3(1.0f, 0.5f, 0.25f);
+    m.ks = 0.4f;
+    m.shininess = 2.0f;
+    scene.ambientIntensity = vec3(100.0f, 50.0f, 25.0f);
+    scene.lights = {{dvec4(0.0, 10.0, 0.0, 1.0), vec3(200.0f, 200.0f, 100.0f), {}}};
+    return scene;
+}
+
+struct Pixel {
+    vec3 colour;
+    std::array<int, 3> bytes;
+};
+
+Pixel renderPixel(const Scene& scene, int x, int y) {
+    auto trace = renderFrame(std::make_shared<const Scene>(scene));
+    if (!trace) qFatal("render failed: %s", trace.error().toString().c_str());
+    const Rgba8Image image = colourImage(*trace->shading, *trace->depth, scene.conventions);
+    const std::uint8_t* p = image.pixel(x, y);
+    return {trace->shading->colour.at(x, y), {p[0], p[1], p[2]}};
+}
+
+Material unitMaterial() {
+    Material m;
+    m.ka = 0.1f;
+    m.kd = vec3(1.0f);
+    m.od = vec3(1.0f);
+    m.ks = 1.0f;
+    m.shininess = 1.0f;
+    return m;
+}
+
+}  // namespace
+
+class TestShading : public QObject {
+    Q_OBJECT
+
+private slots:
+    void phongPixelByHand() {
+        // V = -P'/|P'| = (0,0,-1); N = (0,0,-1), V.N = 1 > 0: no flip.
+        // L = (0,10,0) - (0,0,10) = (0,10,-10) -> (0, 0.70711, -0.70711); N.L = 0.70711.
+        // R = 2 (N.L) N - L = (0, -0.70711, -0.70711); R.V = 0.70711; (R.V)^2 = 0.5.
+        // ambient  = Ia ka            = (100, 50, 25) * 0.2                  = (20, 10, 5)
+        // diffuse  = Il Od kd (N.L)   = (200*1, 200*0.5, 100*0.25) * 0.5 * 0.70711
+        //                             = (70.711, 35.355, 8.839)
+        // specular = Il ks (R.V)^n    = (200, 200, 100) * 0.4 * 0.5          = (40, 40, 20)
+        // sum = (130.711, 85.355, 33.839) -> bytes (130, 85, 33)
+        const Pixel p = renderPixel(handScene(ShadingModel::Phong), 400, 300);
+        RL_COMPARE_VEC(p.colour, vec3(130.71068f, 85.35534f, 33.83883f), 1e-3);
+        QCOMPARE(p.bytes, (std::array<int, 3>{130, 85, 33}));
+    }
+
+    void flatPixelByHand() {
+        // One evaluation at the barycentre (0, 10/3, 10) with the triangle normal (0,0,-1):
+        // V = (0, -0.31623, -0.94868); L = (0, 20/3, -10) -> (0, 0.55470, -0.83205);
+        // N.L = 0.83205; R = (0, -0.55470, -0.83205); R.V = 0.96476; (R.V)^2 = 0.93077.
+        // ambient (20, 10, 5); diffuse (200, 100, 25) * 0.5 * 0.83205 = (83.205, 41.603, 10.401);
+        // specular (80, 80, 40) * 0.93077 = (74.462, 74.462, 37.231).
+        // sum = (177.667, 126.064, 52.631) -> bytes (177, 126, 52), on every pixel.
+        const Scene scene = handScene(ShadingModel::Flat);
+        for (auto [x, y] : {std::pair{400, 300}, std::pair{10, 3}, std::pair{400, 599}}) {
+            const Pixel p = renderPixel(scene, x, y);
+            RL_COMPARE_VEC(p.colour, vec3(177.66657f, 126.06405f, 52.63140f), 1e-3);
+            QCOMPARE(p.bytes, (std::array<int, 3>{177, 126, 52}));
+        }
+    }
+
+    void gouraudPixelByHand() {
+        // Vertex (-10,10,10): V = (0.57735, -0.57735, -0.57735), L = (0.70711, 0, -0.70711),
+        //   N.L = 0.70711, R = (-0.70711, 0, -0.70711), R.V = 0: specular 0.
+        //   colour = (20,10,5) + (70.711, 35.355, 8.839) = (90.711, 45.355, 13.839).
+        // Vertex (10,10,10): the mirror image, the same colour.
+        // Vertex (0,-10,10): L = (0, 0.89443, -0.44721), N.L = 0.44721,
+        //   R = (0, -0.89443, -0.44721), V = (0, 0.70711, -0.70711), R.V = -0.31623 < 0: no
+        //   specular; colour = (20,10,5) + (100,50,12.5) * 0.44721 = (64.721, 32.361, 10.590).
+        // Pixel (400,300) = 1/4 c1 + 1/4 c2 + 1/2 c3 = (77.716, 38.858, 12.215) -> (77, 38, 12).
+        const Pixel p = renderPixel(handScene(ShadingModel::Gouraud), 400, 300);
+        RL_COMPARE_VEC(p.colour, vec3(77.71602f, 38.85801f, 12.21450f), 1e-3);
+        QCOMPARE(p.bytes, (std::array<int, 3>{77, 38, 12}));
+    }
+
+    void windingDoesNotMatter() {
+        // Seed 000 turns N toward the viewer, so reversing the triangle's vertex order (its
+        // normal flips) gives the same image.
+        Scene reversed = handScene(ShadingModel::Phong);
+        auto mesh = std::make_shared<Mesh>(*reversed.draws[0].mesh);
+        mesh->triangles[0] = {0, 2, 1};
+        reversed.draws[0].mesh = mesh;
+        auto a = renderFrame(std::make_shared<const Scene>(handScene(ShadingModel::Phong)));
+        auto b = renderFrame(std::make_shared<const Scene>(reversed));
+        QCOMPARE(b->shading->flipped, b->shading->shadedPixels);
+        QCOMPARE(a->shading->flipped, std::size_t(0));
+        // Same pixels covered; colours equal up to float rounding (the barycentrics are
+        // summed in another order), which can move a truncated byte by one.
+        QCOMPARE(a->depth->triangle, b->depth->triangle);
+        float worst = 0.0f;
+        for (int y = 0; y < 600; ++y)
+            for (int x = 0; x < 800; ++x)
+                for (int k = 0; k < 3; ++k)
+                    worst = std::max(worst, std::abs(a->shading->colour.at(x, y)[k] -
+                                                     b->shading->colour.at(x, y)[k]));
+        qInfo("largest colour difference between the two windings: %g (of 255)", double(worst));
+        QVERIFY(worst < 1e-3f);
+    }
+
+    void flipTowardTheViewer() {
+        const ViewLight light{dvec4(0.0, 0.0, 0.0, 1.0), vec3(100.0f)};
+        // P' = (0,0,10), N = (0,0,1) points away from the viewer: V.N = -1 < 0, N := (0,0,-1).
+        const PhongSample s = phong(unitMaterial(), vec3(50.0f), &light, 1, vec3(0, 0, 10),
+                                    vec3(0, 0, 1), true);
+        QVERIFY(s.flipped);
+        RL_COMPARE_VEC(s.n, vec3(0, 0, -1), 0.0);
+        // Light at the eye: N.L = 1, R = V, R.V = 1: diffuse 100, specular 100.
+        RL_COMPARE_VEC(s.colour(), vec3(5.0f + 100.0f + 100.0f), 1e-4);
+        // Without the flip (a convention of other formats) the light is behind the surface.
+        const PhongSample unflipped = phong(unitMaterial(), vec3(50.0f), &light, 1,
+                                            vec3(0, 0, 10), vec3(0, 0, 1), false);
+        QVERIFY(!unflipped.flipped);
+        QVERIFY(unflipped.lightBehind);
+        RL_COMPARE_VEC(unflipped.colour(), vec3(5.0f), 1e-6);
+    }
+
+    void lightBehindTheSurface() {
+        // N = (0,0,-1) faces the viewer; the light at (0,0,20) is behind the surface z = 10.
+        const ViewLight light{dvec4(0.0, 0.0, 20.0, 1.0), vec3(100.0f)};
+        const PhongSample s = phong(unitMaterial(), vec3(50.0f), &light, 1, vec3(0, 0, 10),
+                                    vec3(0, 0, -1), true);
+        QVERIFY(s.lightBehind);
+        QVERIFY(!s.noSpecular);
+        RL_COMPARE_NEAR(s.nDotL, -1.0, 1e-6);
+        RL_COMPARE_VEC(s.diffuse, vec3(0.0f), 0.0);
+        RL_COMPARE_VEC(s.specular, vec3(0.0f), 0.0);
+        RL_COMPARE_VEC(s.colour(), vec3(5.0f), 1e-6);
+    }
+
+    void reflectionAwayFromTheViewer() {
+        // P' = (0,0,10), N = (0,0,-1), V = (0,0,-1). Light at (100, 0, 10.1), nearly grazing:
+        // L = (0.99999, 0, 0.001) (normalised), N.L = -0.001 < 0 would be behind; use
+        // (100, 0, 0): L = (100, 0, -10)/100.499 = (0.99504, 0, -0.09950), N.L = 0.09950,
+        // R = 2 (N.L) N - L = (-0.99504, 0, -0.09950), R.V = 0.09950 > 0. To get R.V < 0 the
+        // viewer must sit on the far side of the reflection: move P' off axis.
+        // P' = (50, 0, 10): V = (-0.98058, 0, -0.19612); N = (0,0,-1); light at (0, 0, 0):
+        // L = V; R = 2 (N.V) N - V = (0.98058, 0, -0.19612); R.V = -0.96154 + 0.03846 < 0.
+        const ViewLight light{dvec4(0.0, 0.0, 0.0, 1.0), vec3(100.0f)};
+        const PhongSample s = phong(unitMaterial(), vec3(0.0f), &light, 1, vec3(50, 0, 10),
+                                    vec3(0, 0, -1), true);
+        QVERIFY(!s.lightBehind);
+        QVERIFY(s.noSpecular);
+        RL_COMPARE_NEAR(s.rDotV, -0.923077, 1e-5);
+        RL_COMPARE_VEC(s.specular, vec3(0.0f), 0.0);
+        RL_COMPARE_VEC(s.diffuse, vec3(100.0f * 0.196116f), 1e-4);  // N.L = 0.19612
+    }
+
+    void degenerateVectors() {
+        const ViewLight light{dvec4(0.0, 0.0, 10.0, 1.0), vec3(100.0f)};
+        // Zero normal: ambient only, flagged.
+        const PhongSample noNormal = phong(unitMaterial(), vec3(50.0f), &light, 1,
+                                           vec3(0, 0, 5), vec3(0.0f), true);
+        QVERIFY(noNormal.noNormal);
+        RL_COMPARE_VEC(noNormal.colour(), vec3(5.0f), 0.0);
+        // The light on the point itself: L = 0, ambient only, flagged; no NaN.
+        const PhongSample atPoint = phong(unitMaterial(), vec3(50.0f), &light, 1,
+                                          vec3(0, 0, 10), vec3(0, 0, -1), true);
+        QVERIFY(atPoint.lightAtPoint);
+        RL_COMPARE_VEC(atPoint.colour(), vec3(5.0f), 0.0);
+    }
+
+    void exponentZeroAndSeveralLights() {
+        Material m = unitMaterial();
+        m.shininess = 0.0f;  // (R.V)^0 = 1 whenever R.V >= 0
+        m.kd = vec3(0.0f);
+        const ViewLight lights[2] = {{dvec4(0.0, 0.0, 0.0, 1.0), vec3(10.0f, 0.0f, 0.0f)},
+                                     {dvec4(0.0, 0.0, -1.0, 0.0), vec3(0.0f, 20.0f, 0.0f)}};
+        // Light 1 at the eye, light 2 directional toward -z (behind the viewer): both have
+        // N.L = 1 on the surface facing the viewer; the specular terms add up.
+        const PhongSample s = phong(m, vec3(0.0f), lights, 2, vec3(0, 0, 10), vec3(0, 0, -1), true);
+        RL_COMPARE_VEC(s.specular, vec3(10.0f, 20.0f, 0.0f), 1e-5);
+    }
+
+    void bytesAreClampedAndTruncated() {
+        const Conventions course;
+        QCOMPARE(int(toByte(130.711f, course)), 130);
+        QCOMPARE(int(toByte(255.9f, course)), 255);
+        QCOMPARE(int(toByte(1e9f, course)), 255);
+        QCOMPARE(int(toByte(-3.0f, course)), 0);
+        QCOMPARE(int(toByte(std::numeric_limits<float>::quiet_NaN(), course)), 0);
+        QCOMPARE(int(toByte(std::numeric_limits<float>::infinity(), course)), 255);
+        Conventions unit;
+        unit.colourScale = 1.0f;
+        unit.rounding = ByteRounding::Nearest;
+        QCOMPARE(int(toByte(0.5f, unit)), 128);
+        QCOMPARE(int(toByte(0.499f, unit)), 127);
+    }
+
+    void clampedPixelsAreCounted() {
+        Scene scene = handScene(ShadingModel::Phong);
+        scene.lights[0].intensity = vec3(2000.0f);
+        auto trace = renderFrame(std::make_shared<const Scene>(scene));
+        QVERIFY(trace->shading->clampedPixels > 0);
+        QCOMPARE(trace->shading->shadedPixels, trace->depth->coveredPixels());
+        const Rgba8Image image = colourImage(*trace->shading, *trace->depth, scene.conventions);
+        QCOMPARE(int(image.pixel(400, 300)[0]), 255);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestShading)
+#include "tst_shading.moc"
