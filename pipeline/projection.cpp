@@ -112,34 +112,29 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             const auto& tri = triangles[t];
             const auto source = static_cast<std::uint32_t>(t);
             const auto drawIndex = static_cast<std::uint32_t>(d);
-            if (out.naive) {
-                bool finite = true, throughZero = false;
+            // A triangle drawn as it is, unless a coordinate is not finite.
+            auto projectWhole = [&] {
                 for (std::uint32_t v : tri) {
-                    finite = finite && finite2(proj.pScreen[v]) && std::isfinite(proj.depth[v]);
-                    throughZero = throughZero || proj.pView[v].z <= 0.0;
-                }
-                out.throughZeroOrBehind += throughZero ? 1 : 0;
-                if (!finite) {
-                    proj.fate[t] = TriangleFate::NonFinite;
-                    ++out.nonFinite;
-                    continue;
+                    if (!finite2(proj.pScreen[v]) || !std::isfinite(proj.depth[v])) {
+                        proj.fate[t] = TriangleFate::NonFinite;
+                        ++out.nonFinite;
+                        return;
+                    }
                 }
                 out.triangles.push_back({drawIndex, source, tri});
                 ++out.inside;
+            };
+            if (out.naive) {
+                bool throughZero = false;
+                for (std::uint32_t v : tri) throughZero = throughZero || proj.pView[v].z <= 0.0;
+                out.throughZeroOrBehind += throughZero ? 1 : 0;
+                projectWhole();
                 continue;
             }
             int frontCount = 0;
             for (std::uint32_t v : tri) frontCount += proj.pView[v].z >= out.nearZ ? 1 : 0;
             if (frontCount == 3) {
-                bool finite = true;
-                for (std::uint32_t v : tri) finite = finite && finite2(proj.pScreen[v]);
-                if (!finite) {
-                    proj.fate[t] = TriangleFate::NonFinite;
-                    ++out.nonFinite;
-                    continue;
-                }
-                out.triangles.push_back({drawIndex, source, tri});
-                ++out.inside;
+                projectWhole();
                 continue;
             }
             if (frontCount == 0) {

@@ -52,6 +52,28 @@ rl::Scene makeScene(const rl::CourseCamera& camera, std::shared_ptr<const rl::Me
     return scene;
 }
 
+rl::Projection screenTriangles(const std::vector<rl::dvec2>& points,
+                               const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                               const std::vector<float>& depths) {
+    rl::Projection projection;
+    rl::DrawProjection draw;
+    draw.pScreen = points;
+    draw.pScreenExact = points;
+    draw.depth = depths.empty() ? std::vector<float>(points.size(), 1.0f) : depths;
+    draw.inFront.assign(points.size(), 1);
+    projection.draws.push_back(draw);
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+        projection.triangles.push_back({0, static_cast<std::uint32_t>(t), triangles[t]});
+    return projection;
+}
+
+rl::Scene screen(int width, int height) {
+    rl::Scene scene;
+    scene.width = width;
+    scene.height = height;
+    return scene;
+}
+
 rl::CourseCamera seedCamera() {
     rl::CourseCamera c;
     c.c = {-200.0, -50.0, 300.0};

@@ -10,6 +10,7 @@
 
 #include "diagnostics.h"
 #include "math.h"
+#include "projection.h"
 #include "scene.h"
 
 namespace testing {
@@ -29,6 +30,14 @@ std::shared_ptr<const rl::Mesh> makeMesh(std::vector<rl::dvec3> positions,
 // A course scene with one draw: camera, one point light, material, mesh, image size.
 rl::Scene makeScene(const rl::CourseCamera& camera, std::shared_ptr<const rl::Mesh> mesh,
                     int width, int height, rl::ShadingModel shading = rl::ShadingModel::Phong);
+
+// A projection holding screen triangles given directly in pixels (one draw), with a depth
+// per vertex (1 when not given), for the scan conversion and depth test suites.
+rl::Projection screenTriangles(const std::vector<rl::dvec2>& points,
+                               const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                               const std::vector<float>& depths = {});
+// A scene that only sets the image size.
+rl::Scene screen(int width, int height);
 
 // The camera of seed 000: C = (-200, -50, 300), N = (0.667, 0.172, -1), V = (0, 3, 0),
 // d = 65, hx = 0.5, hy = 0.6.

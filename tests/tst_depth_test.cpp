@@ -11,26 +11,8 @@ using namespace rl;
 
 namespace {
 
-Projection screenTriangles(const std::vector<dvec2>& points, const std::vector<float>& depths,
-                           const std::vector<std::array<std::uint32_t, 3>>& triangles) {
-    Projection projection;
-    DrawProjection draw;
-    draw.pScreen = points;
-    draw.pScreenExact = points;
-    draw.depth = depths;
-    draw.inFront.assign(points.size(), 1);
-    projection.draws.push_back(draw);
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-        projection.triangles.push_back({0, static_cast<std::uint32_t>(t), triangles[t]});
-    return projection;
-}
-
-Scene screen(int width, int height) {
-    Scene scene;
-    scene.width = width;
-    scene.height = height;
-    return scene;
-}
+using testing::screen;
+using testing::screenTriangles;
 
 DepthTest depthOf(const Scene& scene, const Projection& pr) {
     const ScanConversion scan = ScanConversionStage().run(scene, pr);
@@ -51,7 +33,7 @@ private slots:
             const auto order = nearFirst ? std::vector<std::array<std::uint32_t, 3>>{{3, 4, 5}, {0, 1, 2}}
                                          : std::vector<std::array<std::uint32_t, 3>>{{0, 1, 2}, {3, 4, 5}};
             const Scene scene = screen(10, 10);
-            const DepthTest d = depthOf(scene, screenTriangles(p, z, order));
+            const DepthTest d = depthOf(scene, screenTriangles(p, order, z));
             const std::uint32_t nearTriangle = nearFirst ? 0 : 1;
             QCOMPARE(d.depth.at(2, 2), 3.0f);
             QCOMPARE(d.triangle.at(2, 2), nearTriangle);
@@ -65,8 +47,7 @@ private slots:
 
     void tieKeepsTheEarlierTriangle() {
         const DepthTest d = depthOf(screen(10, 10),
-                                    screenTriangles({{0, 0}, {8, 0}, {0, 8}}, {4, 4, 4},
-                                                    {{0, 1, 2}, {0, 1, 2}}));
+                                    screenTriangles({{0, 0}, {8, 0}, {0, 8}}, {{0, 1, 2}, {0, 1, 2}}, {4, 4, 4}));
         QCOMPARE(d.triangle.at(1, 1), 0u);  // z < stored is strict
         QCOMPARE(d.rejected, std::size_t(45));
     }
@@ -75,7 +56,7 @@ private slots:
         // Vertices (0,0) z=10, (8,0) z=20, (0,8) z=30. At pixel (2,4): beta = 2/8, gamma = 4/8,
         // alpha = 1/4, so z = 10/4 + 20/4 + 30/2 = 22.5.
         const DepthTest d = depthOf(screen(10, 10),
-                                    screenTriangles({{0, 0}, {8, 0}, {0, 8}}, {10, 20, 30}, {{0, 1, 2}}));
+                                    screenTriangles({{0, 0}, {8, 0}, {0, 8}}, {{0, 1, 2}}, {10, 20, 30}));
         RL_COMPARE_NEAR(d.depth.at(2, 4), 22.5, 1e-5);
         RL_COMPARE_VEC(d.barycentric.at(2, 4), vec2(0.25f, 0.5f), 1e-7);
         // At the vertices the depth is the vertex's.
@@ -91,14 +72,13 @@ private slots:
     void depthAlongARowIsMonotonic() {
         // A slanted triangle: depth grows with x on every row.
         const DepthTest d = depthOf(screen(64, 64),
-                                    screenTriangles({{0, 0}, {63, 0}, {0, 63}}, {1, 100, 1}, {{0, 1, 2}}));
+                                    screenTriangles({{0, 0}, {63, 0}, {0, 63}}, {{0, 1, 2}}, {1, 100, 1}));
         for (int y = 0; y < 63; ++y)
             for (int x = 1; x + y <= 63; ++x) QVERIFY(d.depth.at(x, y) > d.depth.at(x - 1, y));
     }
 
     void probeSeesBothDepthsAndTheVerdict() {
-        const Projection pr = screenTriangles({{0, 0}, {8, 0}, {0, 8}, {0, 0}, {8, 0}, {0, 8}},
-                                              {5, 5, 5, 3, 3, 3}, {{3, 4, 5}, {0, 1, 2}});
+        const Projection pr = screenTriangles({{0, 0}, {8, 0}, {0, 8}, {0, 0}, {8, 0}, {0, 8}}, {{3, 4, 5}, {0, 1, 2}}, {5, 5, 5, 3, 3, 3});
         const Scene scene = screen(10, 10);
         const ScanConversion scan = ScanConversionStage().run(scene, pr);
         auto probe = RecordingProbe::forPixel(1, 2);

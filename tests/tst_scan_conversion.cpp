@@ -15,27 +15,8 @@ using namespace rl;
 
 namespace {
 
-// A projection holding screen triangles given directly in pixels.
-Projection screenTriangles(const std::vector<dvec2>& points,
-                           const std::vector<std::array<std::uint32_t, 3>>& triangles) {
-    Projection projection;
-    DrawProjection draw;
-    draw.pScreen = points;
-    draw.pScreenExact = points;
-    draw.depth.assign(points.size(), 1.0f);
-    draw.inFront.assign(points.size(), 1);
-    projection.draws.push_back(draw);
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-        projection.triangles.push_back({0, static_cast<std::uint32_t>(t), triangles[t]});
-    return projection;
-}
-
-Scene screen(int width, int height) {
-    Scene scene;
-    scene.width = width;
-    scene.height = height;
-    return scene;
-}
+using testing::screen;
+using testing::screenTriangles;
 
 std::vector<Span> spansOf(const ScanConversion& scan, std::size_t t) {
     return {scan.spans.begin() + scan.spanStart[t], scan.spans.begin() + scan.spanStart[t + 1]};
