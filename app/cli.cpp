@@ -6,6 +6,9 @@
 #include <QRegularExpression>
 #include <QSaveFile>
 
+#include <new>
+#include <optional>
+
 #include "default_scene.h"
 #include "default_scene_resource.h"
 #include "explain.h"
@@ -18,6 +21,9 @@ namespace rasterlab {
 namespace {
 
 constexpr int kMaxImageSide = 16384;
+// The buffers of one frame take about 40 bytes a pixel (depth, triangle ids, barycentrics,
+// colour, the RGBA image): 40 million pixels, such as 7680x4320, need about 1.6 GB.
+constexpr qint64 kDefaultMaxPixels = 40'000'000;
 
 QString lit(const char* s) { return QString::fromUtf8(s); }
 
@@ -126,12 +132,16 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
     const QCommandLineOption naive(lit("naive-projection"),
                                    lit("Divide by z even at or behind the camera, without "
                                        "clipping (shows why clipping exists)."));
+    const QCommandLineOption maxPixels(lit("max-pixels"),
+                                       lit("Refuse images with more pixels than this "
+                                           "(default 40000000, about 1.6 GB of buffers)."),
+                                       lit("N"), QString::number(kDefaultMaxPixels));
     const QCommandLineOption explain(lit("explain-pixel"),
                                      lit("Print the story of one pixel: the triangles that "
                                          "covered it, each depth test, and its Phong terms."),
                                      lit("X,Y"));
     parser.addOptions({help, camera, lighting, object, size, shading, output, depthOutput,
-                       normalsOutput, near, naive, explain});
+                       normalsOutput, near, naive, maxPixels, explain});
     if (!parser.parse(arguments)) return usageError(err, parser.errorText());
     if (parser.isSet(help)) {
         out << commandHelp(parser, lit("render"));
@@ -149,6 +159,17 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
         return usageError(err, lit("--size %1 is larger than the limit of %2 pixels a side")
                                    .arg(parser.value(size))
                                    .arg(kMaxImageSide));
+    bool maxOk = false;
+    const qint64 pixelLimit = parser.value(maxPixels).toLongLong(&maxOk);
+    if (!maxOk || pixelLimit < 1)
+        return usageError(err, lit("--max-pixels expects a positive whole number, found '%1'")
+                                   .arg(parser.value(maxPixels)));
+    if (qint64(settings.width) * settings.height > pixelLimit)
+        return usageError(err, lit("--size %1 has %2 pixels, more than the limit of %3 (raise it "
+                                   "with --max-pixels if the memory is there)")
+                                   .arg(parser.value(size))
+                                   .arg(qint64(settings.width) * settings.height)
+                                   .arg(pixelLimit));
     const auto model = rl::shadingModelFromName(parser.value(shading).toStdString());
     if (!model)
         return usageError(err, lit("--shading expects phong, flat or gouraud, found '%1'")
@@ -176,32 +197,29 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
                                        .arg(settings.height));
     }
 
-    // Each file replaces its part of the default scene.
+    // Each part from its file, or from the default scene where no file is given.
     rl::Diagnostics diagnostics;
-    auto parts = loadDefaultCourseScene(diagnostics);
-    if (!parts) return inputError(err, parts.error());
-    if (parser.isSet(camera)) {
-        auto c = loadCamera(parser.value(camera), diagnostics);
-        if (!c) return inputError(err, c.error());
-        parts->camera = c.value();
-    }
-    if (parser.isSet(lighting)) {
-        auto l = loadLighting(parser.value(lighting), diagnostics);
-        if (!l) return inputError(err, l.error());
-        parts->lighting = l.value();
-    }
-    if (parser.isSet(object)) {
-        auto o = loadObject(parser.value(object), diagnostics);
-        if (!o) return inputError(err, o.error());
-        parts->object = o.value();
-    }
+    const auto source = [&](const QCommandLineOption& option, CoursePart part) {
+        return parser.isSet(option) ? parser.value(option) : defaultScenePath(part);
+    };
+    auto c = loadCamera(source(camera, CoursePart::Camera), diagnostics);
+    if (!c) return inputError(err, c.error());
+    auto l = loadLighting(source(lighting, CoursePart::Lighting), diagnostics);
+    if (!l) return inputError(err, l.error());
+    auto o = loadObject(source(object, CoursePart::Object), diagnostics);
+    if (!o) return inputError(err, o.error());
     if (!parser.isSet(camera) && !parser.isSet(lighting) && !parser.isSet(object))
         out << "rendering the embedded default scene\n";
 
-    auto scene = std::make_shared<const rl::Scene>(rl::makeCourseScene(parts.value(), settings));
+    auto scene = std::make_shared<const rl::Scene>(
+        rl::makeCourseScene({c.value(), l.value(), o.value()}, settings));
     rl::RenderOptions options;
     options.shading.keepNormals = parser.isSet(normalsOutput);
-    auto trace = rl::renderFrame(scene, options);
+    // With --explain-pixel the one render records that pixel's events; the recording probe
+    // leaves every buffer as the plain render would.
+    std::optional<rl::RecordingProbe> probe;
+    if (parser.isSet(explain)) probe = rl::RecordingProbe::forPixel(explainX, explainY);
+    auto trace = probe ? rl::traceFrame(scene, options, *probe) : rl::renderFrame(scene, options);
     if (!trace) {
         printDiagnostics(diagnostics, err);
         return inputError(err, trace.error());
@@ -231,11 +249,7 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
         << trace->depth->coveredPixels() << " pixels covered, "
         << QString::number(trace->totalMilliseconds, 'f', 1) << " ms\n";
 
-    if (parser.isSet(explain)) {
-        auto probe = rl::RecordingProbe::forPixel(explainX, explainY);
-        auto traced = rl::traceFrame(scene, options, probe);
-        if (traced) out << QString::fromStdString(rl::explainPixel(traced.value(), probe));
-    }
+    if (probe) out << QString::fromStdString(rl::explainPixel(trace.value(), *probe));
     out.flush();
     return ExitOk;
 }
@@ -296,14 +310,21 @@ int runCli(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     QStringList rest = arguments.mid(2);
     rest.prepend(arguments.first() + QLatin1Char(' ') + command);
     int code = ExitUsage;
-    if (command == lit("render"))
-        code = runRender(rest, out, err);
-    else if (command == lit("generate-default-scene"))
-        code = runGenerateDefaultScene(rest, out, err);
-    else
-        code = usageError(err, lit("unknown command '%1' (commands: render, "
-                                   "generate-default-scene)")
-                                   .arg(command));
+    try {
+        if (command == lit("render"))
+            code = runRender(rest, out, err);
+        else if (command == lit("generate-default-scene"))
+            code = runGenerateDefaultScene(rest, out, err);
+        else
+            code = usageError(err, lit("unknown command '%1' (commands: render, "
+                                       "generate-default-scene)")
+                                       .arg(command));
+    } catch (const std::bad_alloc&) {
+        // The only exception the pipeline can meet: a frame larger than the memory.
+        out.flush();
+        err << "rasterlab-cli: not enough memory for this render (try a smaller --size)\n";
+        code = ExitBadInput;
+    }
     out.flush();
     err.flush();
     return code;

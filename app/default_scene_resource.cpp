@@ -6,8 +6,11 @@
 
 namespace rasterlab {
 
-QString defaultScenePath(const char* fileName) {
-    return QStringLiteral(":/default-scene/") + QString::fromUtf8(fileName);
+QString defaultScenePath(CoursePart part) {
+    const char* name = part == CoursePart::Camera     ? rl::kDefaultCameraFile
+                       : part == CoursePart::Lighting ? rl::kDefaultLightingFile
+                                                      : rl::kDefaultObjectFile;
+    return QStringLiteral(":/default-scene/") + QString::fromUtf8(name);
 }
 
 namespace {
@@ -34,11 +37,11 @@ auto load(const QString& path, rl::Diagnostics& diagnostics, Parse parse)
 }  // namespace
 
 rl::Result<rl::CourseCamera> loadCamera(const QString& path, rl::Diagnostics& diagnostics) {
-    return load(path, diagnostics, rl::parseCourseCamera);
+    return load(path, diagnostics, rl::readCourseCamera);
 }
 
 rl::Result<rl::CourseLighting> loadLighting(const QString& path, rl::Diagnostics& diagnostics) {
-    return load(path, diagnostics, rl::parseCourseLighting);
+    return load(path, diagnostics, rl::readCourseLighting);
 }
 
 rl::Result<rl::CourseObject> loadObject(const QString& path, rl::Diagnostics& diagnostics) {
@@ -46,11 +49,11 @@ rl::Result<rl::CourseObject> loadObject(const QString& path, rl::Diagnostics& di
 }
 
 rl::Result<rl::CourseSceneParts> loadDefaultCourseScene(rl::Diagnostics& diagnostics) {
-    auto camera = loadCamera(defaultScenePath(rl::kDefaultCameraFile), diagnostics);
+    auto camera = loadCamera(defaultScenePath(CoursePart::Camera), diagnostics);
     if (!camera) return camera.error();
-    auto lighting = loadLighting(defaultScenePath(rl::kDefaultLightingFile), diagnostics);
+    auto lighting = loadLighting(defaultScenePath(CoursePart::Lighting), diagnostics);
     if (!lighting) return lighting.error();
-    auto object = loadObject(defaultScenePath(rl::kDefaultObjectFile), diagnostics);
+    auto object = loadObject(defaultScenePath(CoursePart::Object), diagnostics);
     if (!object) return object.error();
     return rl::CourseSceneParts{camera.value(), lighting.value(), object.value()};
 }

@@ -9,7 +9,13 @@
 
 namespace rasterlab {
 
-QString defaultScenePath(const char* fileName);  // ":/default-scene/<fileName>"
+// The three parts of a course scene.
+enum class CoursePart { Camera, Lighting, Object };
+inline constexpr CoursePart kCourseParts[] = {CoursePart::Camera, CoursePart::Lighting,
+                                              CoursePart::Object};
+
+// ":/default-scene/camera.cfg", ".../lighting.txt", ".../trefoil.byu".
+QString defaultScenePath(CoursePart part);
 
 // Reads the three embedded course files.
 rl::Result<rl::CourseSceneParts> loadDefaultCourseScene(rl::Diagnostics& diagnostics);

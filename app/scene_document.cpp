@@ -1,7 +1,6 @@
 #include "scene_document.h"
 
 #include "camera_basis.h"
-#include "default_scene.h"
 #include "default_scene_resource.h"
 
 namespace rasterlab {
@@ -9,13 +8,8 @@ namespace rasterlab {
 rl::Status SceneDocument::loadDefault() {
     SceneDocument fresh;
     fresh.m_settings = m_settings;
-    const std::pair<Part, const char*> files[] = {
-        {Part::Camera, rl::kDefaultCameraFile},
-        {Part::Lighting, rl::kDefaultLightingFile},
-        {Part::Object, rl::kDefaultObjectFile},
-    };
-    for (const auto& [part, name] : files) {
-        auto status = fresh.open(part, defaultScenePath(name));
+    for (CoursePart part : kCourseParts) {
+        auto status = fresh.open(part, defaultScenePath(part));
         if (!status) return status;
     }
     fresh.m_loaded = true;

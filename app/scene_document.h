@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "course_scene.h"
+#include "default_scene_resource.h"
 #include "diagnostics.h"
 #include "scene.h"
 
@@ -15,7 +16,7 @@ namespace rasterlab {
 
 class SceneDocument {
 public:
-    enum class Part { Camera, Lighting, Object };
+    using Part = CoursePart;
 
     // The embedded default scene; fails only if the resources are broken.
     rl::Status loadDefault();

@@ -1,6 +1,8 @@
 #include "course_readers.h"
 
 #include <algorithm>
+
+#include "format.h"
 #include <cctype>
 #include <charconv>
 
@@ -72,6 +74,11 @@ std::string whyNotNumber(std::string_view token) {
     return s;
 }
 
+bool startsLikeNumber(std::string_view token) {
+    const char c = token.empty() ? ' ' : token.front();
+    return (c >= '0' && c <= '9') || c == '+' || c == '-' || c == '.';
+}
+
 }  // namespace
 
 Result<std::vector<FieldValue>> readFieldLines(LineScanner& scanner,
@@ -102,7 +109,12 @@ Result<std::vector<FieldValue>> readFieldLines(LineScanner& scanner,
         const int available = static_cast<int>(numeric);
         int taken = limit;
         if (available < limit) {
-            if (numeric < line.tokens.size()) {
+            // After a count the field accepts, text that does not start like a number is a
+            // trailing remark (ignored with a warning below, as after a full line); a token
+            // that starts like a number but is not one is an error.
+            const bool accepted = (field.counts & (1u << available)) != 0;
+            if (numeric < line.tokens.size() &&
+                (!accepted || startsLikeNumber(line.tokens[numeric].text))) {
                 const Token& bad = line.tokens[numeric];
                 return makeError(ErrorCode::Syntax, scanner.at(bad),
                                  "expected a number for " + std::string(field.name) + ", " +
@@ -204,6 +216,32 @@ Result<CourseLighting> readCourseLighting(std::string_view text, const std::stri
     lighting.material.od = rgbOf(f[4]);
     lighting.material.ks = static_cast<float>(f[5].values[0]);
     lighting.material.shininess = static_cast<float>(f[7].values[0]);
+
+    // Values outside the ranges the course gives (seed 004) still render, with a warning.
+    const auto check = [&](const FieldValue& field, const char* name, double low, double high,
+                           const char* range) {
+        for (std::size_t i = 0; i < field.values.size(); ++i) {
+            const double v = field.values[i];
+            if (v >= low && v <= high) continue;
+            std::string label = name;
+            if (field.values.size() == 3) label += std::string(".") + "rgb"[i];
+            diagnostics.warn(field.where[i], label + " = " + formatNumber(v) +
+                                                 " is outside " + range +
+                                                 ", the range the course gives for it");
+        }
+    };
+    check(f[1], "ka", 0.0, 1.0, "[0, 1]");
+    check(f[2], "Ia", 0.0, 255.0, "[0, 255]");
+    check(f[3], "kd", 0.0, 1.0, "[0, 1]");
+    check(f[4], "Od", 0.0, 1.0, "[0, 1]");
+    check(f[5], "ks", 0.0, 1.0, "[0, 1]");
+    check(f[6], "Il", 0.0, 255.0, "[0, 255]");
+    if (!(f[7].values[0] > 0.0))
+        diagnostics.warn(f[7].where[0],
+                         "n = " + formatNumber(f[7].values[0]) +
+                             " is not positive: (R.V)^n then makes no highlight (it is 1 "
+                             "everywhere for n = 0 and grows without bound where R.V nears 0 "
+                             "for n < 0, where the specular term is left out)");
     return lighting;
 }
 

@@ -4,16 +4,6 @@
 
 namespace rl {
 
-Result<CourseCamera> parseCourseCamera(std::string_view text, const std::string& fileName,
-                                       Diagnostics& diagnostics) {
-    return readCourseCamera(text, fileName, diagnostics);
-}
-
-Result<CourseLighting> parseCourseLighting(std::string_view text, const std::string& fileName,
-                                           Diagnostics& diagnostics) {
-    return readCourseLighting(text, fileName, diagnostics);
-}
-
 Result<CourseObject> parseCourseObject(std::string_view text, const std::string& fileName,
                                        Diagnostics& diagnostics) {
     auto mesh = readByuMesh(text, fileName, diagnostics);

@@ -30,11 +30,9 @@ struct CourseSceneSettings {
     NearPlane nearPlane;
 };
 
-// From text in memory (fileName is used in messages only; the app reads the files).
-Result<CourseCamera> parseCourseCamera(std::string_view text, const std::string& fileName,
-                                       Diagnostics& diagnostics);
-Result<CourseLighting> parseCourseLighting(std::string_view text, const std::string& fileName,
-                                           Diagnostics& diagnostics);
+// The object from text in memory, named after its file (fileName is used in messages only;
+// the app reads the files). The camera and lighting come from readCourseCamera and
+// readCourseLighting (course_readers.h).
 Result<CourseObject> parseCourseObject(std::string_view text, const std::string& fileName,
                                        Diagnostics& diagnostics);
 

@@ -1,9 +1,9 @@
 #include "default_scene.h"
 
 #include <cmath>
-#include <cstdio>
 #include <vector>
 
+#include "format.h"
 #include "math.h"
 
 namespace rl {
@@ -29,9 +29,7 @@ dvec3 centreLine(double phi) {
 dvec3 corePoint(double phi) { return {kR * std::cos(kP * phi), kR * std::sin(kP * phi), 0.0}; }
 
 std::string vertexLine(const dvec3& p) {
-    char buffer[96];
-    std::snprintf(buffer, sizeof buffer, "%.4f %.4f %.4f\n", p.x, p.y, p.z);
-    return buffer;
+    return formatFixed(p.x, 4) + ' ' + formatFixed(p.y, 4) + ' ' + formatFixed(p.z, 4) + '\n';
 }
 
 }  // namespace

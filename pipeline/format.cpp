@@ -1,13 +1,23 @@
 #include "format.h"
 
-#include <cstdio>
+#include <charconv>
 
 namespace rl {
 
+// std::to_chars never looks at the C locale, unlike printf: a program whose locale uses a
+// decimal comma (pt_BR) still writes "0.5".
 std::string formatNumber(double value) {
     char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%g", value);
-    return buffer;
+    const auto result =
+        std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 6);
+    return std::string(buffer, result.ptr);
+}
+
+std::string formatFixed(double value, int decimals) {
+    char buffer[64];
+    const auto result =
+        std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, decimals);
+    return std::string(buffer, result.ptr);
 }
 
 std::string formatVector(const dvec3& value) {

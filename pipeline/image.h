@@ -2,7 +2,6 @@
 // Row 0 is the top of the image; pixel (x, y) is at index y * width + x.
 #pragma once
 
-#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -26,7 +25,6 @@ public:
     T* row(int y) { return m_pixels.data() + index(0, y); }
     const T* row(int y) const { return m_pixels.data() + index(0, y); }
 
-    void fill(const T& value) { std::fill(m_pixels.begin(), m_pixels.end(), value); }
     const std::vector<T>& pixels() const { return m_pixels; }
     std::vector<T>& pixels() { return m_pixels; }
 

@@ -56,9 +56,12 @@ inline void addLight(const Material& m, const ViewLight& light, const vec3& pVie
         if (rLength > 0.0f) r /= rLength;
         rDotV = glm::dot(r, vUnit);
         sample.diffuse += light.intensity * m.od * m.kd * nDotL;
-        if (rDotV >= 0.0f) {
-            // (R.V)^n; 0^0 is 1 as in C's pow.
-            sample.specular += light.intensity * m.ks * std::pow(rDotV, m.shininess);
+        if (rDotV >= 0.0f && m.ks != 0.0f) {
+            // (R.V)^n, with 0^0 = 1 as in C's pow. A negative n (outside the course's range,
+            // and warned about when read) makes 0^n infinite: that term is left out rather
+            // than turned into NaN.
+            const float power = std::pow(rDotV, m.shininess);
+            if (std::isfinite(power)) sample.specular += light.intensity * m.ks * power;
         }
     }
     if (first) {

@@ -72,7 +72,10 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             proj.pNdc[i] = pNdc;
             proj.pScreenExact[i] = exact;
             dvec2 snapped(snap(exact.x, scene.rules.snap), snap(exact.y, scene.rules.snap));
-            if (std::abs(snapped.x) > kGuardBand || std::abs(snapped.y) > kGuardBand) {
+            // An infinite coordinate (z = 0 under the naive projection) stays infinite, so the
+            // triangle is dropped as NonFinite instead of being pulled in to the guard band.
+            if (finite2(snapped) &&
+                (std::abs(snapped.x) > kGuardBand || std::abs(snapped.y) > kGuardBand)) {
                 snapped = glm::clamp(snapped, dvec2(-kGuardBand), dvec2(kGuardBand));
                 ++out.outsideGuardBand;
             }

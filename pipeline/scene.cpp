@@ -20,8 +20,6 @@ std::optional<ShadingModel> shadingModelFromName(std::string_view name) {
 
 RasterRules RasterRules::course() { return RasterRules{}; }
 
-std::string RasterRules::name() const { return "course"; }
-
 std::size_t Scene::triangleCount() const {
     std::size_t n = 0;
     for (const auto& draw : draws) n += draw.mesh ? draw.mesh->triangles.size() : 0;

@@ -108,7 +108,6 @@ struct RasterRules {
     Interpolation interpolation = Interpolation::ScreenAffine;
 
     static RasterRules course();  // seed 000 as written
-    std::string name() const;
 };
 
 // Triangles are clipped against the plane z = near in view space before projection.

@@ -43,6 +43,15 @@ vec3 interpolate(const std::vector<vec3>& values, const ScreenTriangle& tri, flo
     return a + beta * (values[tri.v[1]] - a) + gamma * (values[tri.v[2]] - a);
 }
 
+// A normal normalised and, when the convention says so, turned toward the viewer at pView
+// (as phong() does); zero stays zero.
+vec3 orientedNormal(const vec3& n, const vec3& pView, bool flip) {
+    const float length = glm::length(n);
+    if (!(length > 0.0f)) return vec3(0.0f);
+    const vec3 unit = n / length;
+    return flip && glm::dot(-pView, unit) < 0.0f ? -unit : unit;
+}
+
 void count(Shading& out, const PhongSample& s) {
     ++out.phongEvaluations;
     out.flipped += s.flipped ? 1 : 0;
@@ -73,7 +82,11 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                                         normals.skipped ? nullptr : &normals.draws[d]));
 
     // Flat and Gouraud colours, computed the first time a visible pixel needs them.
-    std::vector<std::vector<std::optional<vec3>>> flatColours(projection.draws.size());
+    struct FlatShade {
+        vec3 colour;
+        vec3 normal;  // the triangle's normal as the evaluation used it (turned if need be)
+    };
+    std::vector<std::vector<std::optional<FlatShade>>> flatShades(projection.draws.size());
     std::vector<std::vector<std::optional<vec3>>> vertexColours(projection.draws.size());
 
     // Seed 004: one evaluation at the barycentre of the (unclipped) triangle, with the
@@ -88,14 +101,14 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
         return phong(draw.material, scene.ambientIntensity, lights, lightCount, barycentre, n,
                      flip);
     };
-    auto flatColour = [&](const ScreenTriangle& tri) -> vec3 {
-        auto& cache = flatColours[tri.draw];
+    auto flatShade = [&](const ScreenTriangle& tri) -> const FlatShade& {
+        auto& cache = flatShades[tri.draw];
         if (cache.empty()) cache.resize(scene.draws[tri.draw].mesh->triangles.size());
         auto& slot = cache[tri.source];
         if (!slot) {
             const PhongSample sample = flatPhong(tri);
             count(out, sample);
-            slot = sample.colour();
+            slot = FlatShade{sample.colour(), sample.n};
         }
         return *slot;
     };
@@ -165,12 +178,10 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                     break;
                 }
                 case ShadingModel::Flat: {
-                    colour = flatColour(tri);
-                    if (options.keepNormals || Probe::enabled) {
-                        const PhongSample s = flatPhong(tri);  // cheap: off the plain path
-                        usedNormal = s.n;
-                        if constexpr (Probe::enabled) event.sample = s;
-                    }
+                    const FlatShade& shade = flatShade(tri);
+                    colour = shade.colour;
+                    usedNormal = shade.normal;
+                    if constexpr (Probe::enabled) event.sample = flatPhong(tri);
                     break;
                 }
                 case ShadingModel::Gouraud: {
@@ -179,9 +190,12 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                     const vec3 c2 = vertexColour(tri.draw, tri.v[2]);
                     colour = c0 + beta * (c1 - c0) + gamma * (c2 - c0);
                     if (options.keepNormals) {
+                        // The normal Phong would use here: interpolated, normalised, turned
+                        // toward the viewer, so that the normals image means the same in
+                        // every shading model.
+                        const vec3 p = interpolate(vertices[tri.draw].p, tri, beta, gamma);
                         const vec3 n = interpolate(vertices[tri.draw].n, tri, beta, gamma);
-                        const float len = glm::length(n);
-                        usedNormal = len > 0.0f ? n / len : vec3(0.0f);
+                        usedNormal = orientedNormal(n, p, flip);
                     }
                     if constexpr (Probe::enabled) event.vertexColours = {c0, c1, c2};
                     break;

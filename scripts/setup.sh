@@ -11,6 +11,7 @@ packages=(
     qt6-qpa-plugins                    # platform plugins (xcb for a desktop)
     libglm-dev                         # GLM
     fonts-dejavu-core                  # a font for the window and the offscreen tests
+    locales                            # locale data: a test runs the CLI in pt_BR
 )
 
 missing=()

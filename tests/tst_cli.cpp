@@ -29,9 +29,11 @@ QStringList linesOf(const QString& text) {
 }
 
 // Runs rasterlab-cli with `arguments` in `workDir` and waits for it to exit.
-bool runCli(const QStringList& arguments, const QString& workDir, CliRun& run) {
+bool runCli(const QStringList& arguments, const QString& workDir, CliRun& run,
+            const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment()) {
     QProcess process;
     process.setWorkingDirectory(workDir);
+    process.setProcessEnvironment(environment);
     process.start(testing::cliPath(), arguments);
     const QString command =
         QStringLiteral("rasterlab-cli %1").arg(arguments.join(QLatin1Char(' ')));
@@ -110,6 +112,8 @@ private slots:
     void explainPixel_data();
     void explainPixel();
     void generateDefaultScene();
+    void decimalCommaLocale();
+    void outOfMemory();
     void help_data();
     void help();
     void courseSamples_data();
@@ -250,6 +254,17 @@ void TestCli::usageErrors_data() {
     QTest::newRow("size too large")
         << (QStringList({"render", "--size", "20000x10"}) + out)
         << "--size 20000x10 is larger than the limit of 16384 pixels a side";
+    QTest::newRow("too many pixels")
+        << (QStringList({"render", "--size", "8000x8000"}) + out)
+        << "--size 8000x8000 has 64000000 pixels, more than the limit of 40000000 (raise it "
+           "with --max-pixels if the memory is there)";
+    QTest::newRow("lowered pixel limit")
+        << (QStringList({"render", "--size", "320x240", "--max-pixels", "76799"}) + out)
+        << "--size 320x240 has 76800 pixels, more than the limit of 76799 (raise it with "
+           "--max-pixels if the memory is there)";
+    QTest::newRow("pixel limit not a number")
+        << (QStringList({"render", "--max-pixels", "lots"}) + out)
+        << "--max-pixels expects a positive whole number, found 'lots'";
     QTest::newRow("unknown shading")
         << (QStringList({"render", "--shading", "toon"}) + out)
         << "--shading expects phong, flat or gouraud, found 'toon'";
@@ -534,6 +549,76 @@ void TestCli::generateDefaultScene() {
                                            "rasterlab-cli generate-default-scene --dir %2")
                                 .arg(committed + name, committed)));
     }
+}
+
+// Under a locale whose decimal separator is a comma (pt_BR, the course's own), every
+// number the CLI writes, in files and in messages, still uses '.'. The locale is compiled
+// into a scratch folder with localedef, so the test does not depend on installed locales.
+void TestCli::decimalCommaLocale() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QProcess localedef;
+    localedef.start(QStringLiteral("localedef"),
+                    {QStringLiteral("-i"), QStringLiteral("pt_BR"), QStringLiteral("-f"),
+                     QStringLiteral("UTF-8"), dir.filePath(QStringLiteral("pt_BR.UTF-8"))});
+    if (!localedef.waitForFinished(60000) || localedef.exitStatus() != QProcess::NormalExit ||
+        !QFileInfo::exists(dir.filePath(QStringLiteral("pt_BR.UTF-8/LC_NUMERIC"))))
+        QSKIP("localedef could not build pt_BR.UTF-8 (is the 'locales' package installed?)");
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("LOCPATH"), dir.path());
+    env.insert(QStringLiteral("LC_ALL"), QStringLiteral("pt_BR.UTF-8"));
+    env.insert(QStringLiteral("LANG"), QStringLiteral("pt_BR.UTF-8"));
+    QProcess locale;
+    locale.setProcessEnvironment(env);
+    locale.start(QStringLiteral("locale"), {QStringLiteral("decimal_point")});
+    QVERIFY(locale.waitForFinished(10000));
+    QCOMPARE(QString::fromUtf8(locale.readAllStandardOutput()).trimmed(), QStringLiteral(","));
+
+    // The default scene's files, written under pt_BR, are still the committed ones.
+    CliRun run;
+    RUN_CLI(run, QStringList({"generate-default-scene", "--dir", "scene"}), dir.path());
+    QCOMPARE(run.exitCode, 0);
+    for (const char* name : {"camera.cfg", "lighting.txt", "trefoil.byu"}) {
+        const QString file = QString::fromUtf8(name);
+        QCOMPARE(testing::readFile(dir.filePath(QStringLiteral("scene/") + file)),
+                 testing::readFile(testing::sourceDir() + QStringLiteral("/resources/default-scene/") + file));
+    }
+    // Messages: the numbers in an error keep their points.
+    const QString camera = writeFixture(dir, QStringLiteral("parallel.cfg"),
+                                        "0 0 0\n0.667 0.172 -1\n1.334 0.344 -2\n1 1 1\n");
+    QVERIFY(runCli({"render", "--camera", camera, "--output", "x.png"}, dir.path(), run, env));
+    QCOMPARE(run.exitCode, 1);
+    QVERIFY2(run.err.contains(QStringLiteral("V (1.334, 0.344, -2) is parallel to N (0.667, 0.172, -1)")),
+             qPrintable(run.err));
+    // The pixel explanation: no decimal commas anywhere.
+    QVERIFY(runCli({"render", "--output", "y.png", "--explain-pixel", "460,355"}, dir.path(), run, env));
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(run.out.contains(QStringLiteral("N.L = 0.")), qPrintable(run.out));
+    QVERIFY2(!run.out.contains(QRegularExpression(QStringLiteral("\\d,\\d"))), qPrintable(run.out));
+}
+
+// A frame larger than the memory the process may use: a clear message and exit 1, not a
+// crash. The address space is limited with the shell's ulimit.
+void TestCli::outOfMemory() {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+    QSKIP("sanitizers reserve more address space than the limit this test sets");
+#endif
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QProcess process;
+    process.setWorkingDirectory(dir.path());
+    process.start(QStringLiteral("/bin/sh"),
+                  {QStringLiteral("-c"), QStringLiteral("ulimit -v 1500000 && exec \"$0\" \"$@\""),
+                   testing::cliPath(), QStringLiteral("render"), QStringLiteral("--size"),
+                   QStringLiteral("8000x8000"), QStringLiteral("--max-pixels"),
+                   QStringLiteral("100000000"), QStringLiteral("--output"), QStringLiteral("big.png")});
+    QVERIFY(process.waitForFinished(120000));
+    QCOMPARE(process.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(process.exitCode(), 1);
+    QCOMPARE(linesOf(QString::fromUtf8(process.readAllStandardError())),
+             QStringList(QStringLiteral("rasterlab-cli: not enough memory for this render (try a "
+                                        "smaller --size)")));
+    QVERIFY(!QFileInfo::exists(dir.filePath(QStringLiteral("big.png"))));
 }
 
 void TestCli::help_data() {

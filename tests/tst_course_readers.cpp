@@ -101,6 +101,8 @@ private slots:
     void lighting();
     void lightingWarnings_data();
     void lightingWarnings();
+    void lightingRanges_data();
+    void lightingRanges();
     void lightingErrors_data();
     void lightingErrors();
 
@@ -357,6 +359,40 @@ void TestCourseReaders::lightingWarnings_data() {
     QTest::newRow("a line after the eighth")
         << lightingWithKd("0.75") + "1 1 1\n"
         << QStringList{"light.txt:9:1: warning: ignored 1 line after the lighting's 8 lines"};
+    // A remark after one number is ignored for kd as it is for ka: one number is a valid kd.
+    QTest::newRow("kd with a remark")
+        << lightingWithKd("0.75 ; kd, the diffuse constant")
+        << QStringList{"light.txt:4:6: warning: ignored 5 values after kd"};
+}
+
+void TestCourseReaders::lightingRanges_data() {
+    QTest::addColumn<QByteArray>("text");
+    QTest::addColumn<QStringList>("warnings");
+    QTest::newRow("within the course's ranges") << lightingWithKd("0.75") << QStringList();
+    QTest::newRow("every value outside")
+        << QByteArray("-220 -150 700\n1.5\n300 -1 20\n2\n0.5 1.25 -0.5\n-0.25\n"
+                      "255 256 0\n-2\n")
+        << QStringList{
+               "light.txt:2:1: warning: ka = 1.5 is outside [0, 1], the range the course gives for it",
+               "light.txt:3:1: warning: Ia.r = 300 is outside [0, 255], the range the course gives for it",
+               "light.txt:3:5: warning: Ia.g = -1 is outside [0, 255], the range the course gives for it",
+               "light.txt:4:1: warning: kd = 2 is outside [0, 1], the range the course gives for it",
+               "light.txt:5:5: warning: Od.g = 1.25 is outside [0, 1], the range the course gives for it",
+               "light.txt:5:10: warning: Od.b = -0.5 is outside [0, 1], the range the course gives for it",
+               "light.txt:6:1: warning: ks = -0.25 is outside [0, 1], the range the course gives for it",
+               "light.txt:7:5: warning: Il.g = 256 is outside [0, 255], the range the course gives for it",
+               "light.txt:8:1: warning: n = -2 is not positive: (R.V)^n then makes no highlight (it "
+               "is 1 everywhere for n = 0 and grows without bound where R.V nears 0 for n < 0, where "
+               "the specular term is left out)"};
+}
+
+void TestCourseReaders::lightingRanges() {
+    QFETCH(QByteArray, text);
+    QFETCH(QStringList, warnings);
+    rl::Diagnostics diagnostics;
+    const auto lighting = rl::readCourseLighting(viewOf(text), "light.txt", diagnostics);
+    RL_VERIFY_OK(lighting);
+    QCOMPARE(messagesOf(diagnostics), warnings);
 }
 
 void TestCourseReaders::lightingWarnings() {
@@ -384,6 +420,9 @@ void TestCourseReaders::lightingErrors_data() {
                                        << "light.txt:4:10: expected 1 or 3 numbers for kd, found 2";
     QTest::newRow("kd with a letter")
         << lightingWithKd("x") << syntax << "light.txt:4:1: expected a number for kd, found 'x'";
+    QTest::newRow("kd with a decimal comma in its second channel")
+        << lightingWithKd("0.5 0,3 0.2") << syntax
+        << "light.txt:4:5: expected a number for kd, found '0,3' (the decimal separator is '.')";
     QTest::newRow("missing n line")
         << lightingWithKd("0.75").chopped(2) << missing
         << "light.txt:8:1: expected n, the specular exponent (1 number), "
@@ -776,14 +815,14 @@ void TestCourseReaders::samplesSeedExample() {
     const QString cameraPath = samplePath(QStringLiteral("seed-example/camera.cfg"));
     const QByteArray cameraText = testing::readFile(cameraPath);
     const auto camera =
-        rl::parseCourseCamera(viewOf(cameraText), cameraPath.toStdString(), diagnostics);
+        rl::readCourseCamera(viewOf(cameraText), cameraPath.toStdString(), diagnostics);
     RL_VERIFY_OK(camera);
     checkSeedCamera(*camera);
 
     const QString lightingPath = samplePath(QStringLiteral("seed-example/iluminacao.txt"));
     const QByteArray lightingText = testing::readFile(lightingPath);
     const auto lighting =
-        rl::parseCourseLighting(viewOf(lightingText), lightingPath.toStdString(), diagnostics);
+        rl::readCourseLighting(viewOf(lightingText), lightingPath.toStdString(), diagnostics);
     RL_VERIFY_OK(lighting);
     QCOMPARE(lighting->lights.size(), std::size_t(1));
     RL_COMPARE_VEC(lighting->lights[0].pWorld, rl::dvec4(-200.0, -50.0, 300.0, 1.0), 0.0);
@@ -880,7 +919,7 @@ void TestCourseReaders::samplesUfpeCameras() {
     const QString path = samplePath(file);
     const QByteArray text = testing::readFile(path);
     rl::Diagnostics diagnostics;
-    const auto camera = rl::parseCourseCamera(viewOf(text), path.toStdString(), diagnostics);
+    const auto camera = rl::readCourseCamera(viewOf(text), path.toStdString(), diagnostics);
     RL_VERIFY_OK(camera);
     QCOMPARE(messagesOf(diagnostics), QStringList());
     RL_COMPARE_VEC(camera->c, c, 0.0);
@@ -894,7 +933,7 @@ void TestCourseReaders::samplesUfpeLighting() {
     const QString path = samplePath(QStringLiteral("ufpe/iluminacao.txt"));
     const QByteArray text = testing::readFile(path);
     rl::Diagnostics diagnostics;
-    const auto lighting = rl::parseCourseLighting(viewOf(text), path.toStdString(), diagnostics);
+    const auto lighting = rl::readCourseLighting(viewOf(text), path.toStdString(), diagnostics);
     RL_VERIFY_OK(lighting);
     QCOMPARE(messagesOf(diagnostics), QStringList());
     QCOMPARE(lighting->lights.size(), std::size_t(1));

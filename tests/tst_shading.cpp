@@ -202,6 +202,43 @@ private slots:
         RL_COMPARE_VEC(s.specular, vec3(10.0f, 20.0f, 0.0f), 1e-5);
     }
 
+    void normalsImageIsTheUsedNormal_data() {
+        QTest::addColumn<int>("model");
+        QTest::addColumn<bool>("reversed");
+        for (auto [name, model] : {std::pair{"phong", ShadingModel::Phong},
+                                   std::pair{"gouraud", ShadingModel::Gouraud},
+                                   std::pair{"flat", ShadingModel::Flat}}) {
+            QTest::newRow(name) << int(model) << false;
+            QTest::newRow(qPrintable(QStringLiteral("%1, reversed winding").arg(QString::fromUtf8(name))))
+                << int(model) << true;
+        }
+    }
+
+    void normalsImageIsTheUsedNormal() {
+        // The triangle faces the viewer: in every model the normal used is (0, 0, -1), also
+        // when its winding is reversed (the computed normal (0, 0, 1) is turned toward the
+        // viewer). As colour (N + 1)/2: (128, 128, 0).
+        QFETCH(int, model);
+        QFETCH(bool, reversed);
+        Scene scene = handScene(ShadingModel(model));
+        if (reversed) {
+            auto mesh = std::make_shared<Mesh>(*scene.draws[0].mesh);
+            mesh->triangles[0] = {0, 2, 1};
+            scene.draws[0].mesh = mesh;
+        }
+        RenderOptions options;
+        options.shading.keepNormals = true;
+        auto trace = renderFrame(std::make_shared<const Scene>(scene), options);
+        QVERIFY(trace.ok());
+        for (auto [x, y] : {std::pair{400, 300}, std::pair{5, 2}, std::pair{400, 590}}) {
+            RL_COMPARE_VEC(trace->shading->normal.at(x, y), vec3(0, 0, -1), 1e-6);
+            const Rgba8Image image = normalImage(trace->shading->normal, *trace->depth);
+            const std::uint8_t* p = image.pixel(x, y);
+            QCOMPARE((std::array<int, 3>{p[0], p[1], p[2]}), (std::array<int, 3>{128, 128, 0}));
+        }
+        QCOMPARE(int(normalImage(trace->shading->normal, *trace->depth).pixel(799, 599)[0]), 0);
+    }
+
     void bytesAreClampedAndTruncated() {
         const Conventions course;
         QCOMPARE(int(toByte(130.711f, course)), 130);
