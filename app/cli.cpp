@@ -181,7 +181,7 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
         if (!ok || !(z > 0.0))
             return usageError(err, lit("--near expects a positive number, found '%1'")
                                        .arg(parser.value(near)));
-        settings.nearPlane.fixedZ = z;
+        settings.nearPlane.fixedW = z;
     }
     settings.nearPlane.naive = parser.isSet(naive);
     if (!parser.isSet(output)) return usageError(err, lit("render needs --output FILE.png"));

@@ -58,6 +58,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_controller = new RenderController(this);
     connect(m_controller, &RenderController::frameReady, this, &MainWindow::onFrameReady);
     connect(m_controller, &RenderController::failed, this, &MainWindow::onRenderFailed);
+    connect(m_controller, &RenderController::busyChanged, this, &MainWindow::updateTimeLabel);
     connect(m_view, &FrameImageView::pixelHovered, this, &MainWindow::onPixelHovered);
 
     createDocks();
@@ -187,14 +188,22 @@ bool MainWindow::exportImage(const QString& path) {
 
 void MainWindow::requestRender() {
     if (!m_document.isLoaded()) return;
-    m_timeLabel->setText(tr("rendering..."));
     m_controller->request(m_document.scene());
+}
+
+void MainWindow::updateTimeLabel() {
+    // The last frame's time, and whether a newer frame is still on its way.
+    QString text;
+    if (m_frame.trace) text = tr("%1 ms").arg(m_frame.trace->totalMilliseconds, 0, 'f', 1);
+    if (m_controller->isBusy())
+        text = text.isEmpty() ? tr("rendering...") : tr("%1, rendering...").arg(text);
+    m_timeLabel->setText(text);
 }
 
 void MainWindow::onFrameReady(const RenderedFrame& frame) {
     m_frame = frame;
     m_view->setImage(frame.image);
-    m_timeLabel->setText(tr("%1 ms").arg(frame.trace->totalMilliseconds, 0, 'f', 1));
+    updateTimeLabel();
     refreshMessages();
     refreshSceneSummary();
 }
@@ -202,7 +211,7 @@ void MainWindow::onFrameReady(const RenderedFrame& frame) {
 void MainWindow::onRenderFailed(const QString& message) {
     // The last good image stays on screen, with the message beside it.
     showError(message);
-    m_timeLabel->setText(tr("render failed"));
+    updateTimeLabel();
 }
 
 void MainWindow::showError(const QString& message) {

@@ -42,6 +42,7 @@ private:
     void createActions();
     void createDocks();
     void requestRender();
+    void updateTimeLabel();
     void onFrameReady(const RenderedFrame& frame);
     void onRenderFailed(const QString& message);
     void showError(const QString& message);
@@ -61,7 +62,7 @@ private:
     QListWidget* m_messages = nullptr;
     QTextBrowser* m_summary = nullptr;
     QLabel* m_pixelLabel = nullptr;
-    QLabel* m_timeLabel = nullptr;
+    QLabel* m_timeLabel = nullptr;  // the last frame's time; "rendering..." while busy
     QActionGroup* m_shadingGroup = nullptr;
 };
 

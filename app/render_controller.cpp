@@ -57,13 +57,23 @@ void RenderController::request(std::shared_ptr<const rl::Scene> scene, rl::Rende
 }
 
 void RenderController::start(Request request) {
-    m_running = true;
-    emit busyChanged(true);
+    if (!m_running) {
+        m_running = true;
+        emit busyChanged(true);
+    }
     auto* watcher = new QFutureWatcher<Outcome>(this);
     connect(watcher, &QFutureWatcher<Outcome>::finished, this, [this, watcher] {
         const Outcome outcome = watcher->result();
         watcher->deleteLater();
-        m_running = false;
+        // A newer request may be waiting: start it first, so isBusy() is true while the
+        // frame of this older one is shown (it is still newer than what is on screen).
+        if (m_pending) {
+            Request next = std::move(*m_pending);
+            m_pending.reset();
+            start(std::move(next));
+        } else {
+            m_running = false;
+        }
         if (outcome.generation > m_shownGeneration) {
             m_shownGeneration = outcome.generation;
             if (outcome.error.isEmpty())
@@ -71,13 +81,7 @@ void RenderController::start(Request request) {
             else
                 emit failed(outcome.error);
         }
-        if (m_pending) {
-            Request next = std::move(*m_pending);
-            m_pending.reset();
-            start(std::move(next));
-        } else {
-            emit busyChanged(false);
-        }
+        if (!m_running) emit busyChanged(false);
     });
     watcher->setFuture(QtConcurrent::run(renderOnWorker, request.generation,
                                          std::move(request.scene), request.options));

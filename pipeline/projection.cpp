@@ -1,10 +1,10 @@
 #include "projection.h"
 
-#include "format.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "format.h"
 
 namespace rl {
 
@@ -15,6 +15,12 @@ dmat4 courseClipFromView(const CourseCamera& camera) {
     m[2][2] = 1.0;
     m[2][3] = 1.0;  // w = z
     return m;
+}
+
+dmat4 clipFromViewOf(const Scene& scene, const Draw& draw) {
+    if (draw.clipFromView) return *draw.clipFromView;
+    if (scene.camera) return courseClipFromView(*scene.camera);
+    return dmat4(1.0);
 }
 
 namespace {
@@ -28,51 +34,53 @@ double snap(double coordinate, RasterRules::VertexSnap rule) {
 
 bool finite2(const dvec2& p) { return isFinite(p.x) && isFinite(p.y); }
 
-// The largest view z in front of the camera over every draw (0 if none).
-double farthestZ(const ViewTransform& view) {
-    double zMax = 0.0;
-    for (const auto& vertices : view.pView)
-        for (const dvec4& p : vertices)
-            if (p.z > zMax && isFinite(p.z)) zMax = p.z;
-    return zMax;
-}
-
 }  // namespace
 
 Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                                 Diagnostics& diagnostics) const {
     Projection out;
     out.naive = scene.nearPlane.naive;
-    const double zMax = farthestZ(view);
-    // The near plane must lie strictly in front of the camera, or a vertex at z = 0 would
-    // be divided by 0.
-    const double requested = scene.nearPlane.fixedZ ? *scene.nearPlane.fixedZ
-                                                    : scene.nearPlane.autoFraction * zMax;
-    out.nearZ = std::max(requested, std::numeric_limits<double>::min());
     const double width = scene.width;
     const double height = scene.height;
     const Conventions& conv = scene.conventions;
 
+    // Every vertex to clip space first: the near plane is a plane of clip space, w = near.
     out.draws.resize(scene.draws.size());
+    double wMax = 0.0;
+    for (std::size_t d = 0; d < scene.draws.size(); ++d) {
+        DrawProjection& proj = out.draws[d];
+        proj.clipFromView = clipFromViewOf(scene, scene.draws[d]);
+        proj.pView = view.pView[d];
+        proj.originalVertexCount = static_cast<std::uint32_t>(proj.pView.size());
+        proj.pClip.reserve(proj.pView.size());
+        for (const dvec4& p : proj.pView) {
+            proj.pClip.push_back(proj.clipFromView * p);
+            const double w = proj.pClip.back().w;
+            if (w > wMax && isFinite(w)) wMax = w;
+        }
+    }
+    // The near plane must lie strictly in front of the camera, or a vertex at w = 0 would
+    // be divided by 0.
+    const double requested = scene.nearPlane.fixedW ? *scene.nearPlane.fixedW
+                                                    : scene.nearPlane.autoFraction * wMax;
+    out.nearW = std::max(requested, std::numeric_limits<double>::min());
+
     for (std::size_t d = 0; d < scene.draws.size(); ++d) {
         const Draw& draw = scene.draws[d];
         DrawProjection& proj = out.draws[d];
-        proj.clipFromView = scene.camera ? courseClipFromView(*scene.camera) : dmat4(1.0);
         if (!draw.mesh) continue;
-        const auto& pViewIn = view.pView[d];
-        proj.originalVertexCount = static_cast<std::uint32_t>(pViewIn.size());
-        proj.pView = pViewIn;
 
-        // Project one vertex to NDC and to pixels.
+        // One vertex to NDC and to pixels: pNdc = pClip.xy / pClip.w, then the seed's
+        // x = (int)((pNdc.x + 1) width/2), y = (int)((1 - pNdc.y) height/2).
         auto project = [&](std::uint32_t i) {
-            const dvec4 pClip = proj.clipFromView * proj.pView[i];
+            const dvec4& pClip = proj.pClip[i];
             const dvec2 pNdc = dvec2(pClip) / pClip.w;
             const double yFromTop = conv.ndcYUp ? 1.0 - pNdc.y : pNdc.y + 1.0;
             const dvec2 exact((pNdc.x + 1.0) * width / 2.0, yFromTop * height / 2.0);
             proj.pNdc[i] = pNdc;
             proj.pScreenExact[i] = exact;
             dvec2 snapped(snap(exact.x, scene.rules.snap), snap(exact.y, scene.rules.snap));
-            // An infinite coordinate (z = 0 under the naive projection) stays infinite, so the
+            // An infinite coordinate (w = 0 under the naive projection) stays infinite, so the
             // triangle is dropped as NonFinite instead of being pulled in to the guard band.
             if (finite2(snapped) &&
                 (std::abs(snapped.x) > kGuardBand || std::abs(snapped.y) > kGuardBand)) {
@@ -90,19 +98,24 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             proj.depth.resize(n, 0.0f);
             proj.inFront.resize(n, 0);
         };
-        resizeVertices(pViewIn.size());
+        resizeVertices(proj.pView.size());
+        const auto inFront = [&](std::uint32_t i) { return proj.pClip[i].w >= out.nearW; };
         for (std::uint32_t i = 0; i < proj.originalVertexCount; ++i)
-            if (out.naive || proj.pView[i].z >= out.nearZ) project(i);
+            if (out.naive || inFront(i)) project(i);
 
-        // A vertex on the edge from a (in front) to b (behind), on the near plane.
+        // A vertex on the edge from a (in front) to b (behind), on the near plane. Always
+        // computed from the vertex in front, so that two triangles sharing the edge get the
+        // same point, bit for bit.
         auto addClipVertex = [&](std::uint32_t a, std::uint32_t b) {
-            const double za = proj.pView[a].z;
-            const double zb = proj.pView[b].z;
-            const double t = (out.nearZ - za) / (zb - za);
+            const double wa = proj.pClip[a].w;
+            const double wb = proj.pClip[b].w;
+            const double t = (out.nearW - wa) / (wb - wa);
             const auto index = static_cast<std::uint32_t>(proj.pView.size());
-            dvec4 p = glm::mix(proj.pView[a], proj.pView[b], t);
-            p.z = out.nearZ;
-            proj.pView.push_back(p);
+            const dvec4 pView = glm::mix(proj.pView[a], proj.pView[b], t);
+            dvec4 pClip = glm::mix(proj.pClip[a], proj.pClip[b], t);
+            pClip.w = out.nearW;
+            proj.pView.push_back(pView);
+            proj.pClip.push_back(pClip);
             proj.generated.push_back({a, b, t});
             resizeVertices(proj.pView.size());
             project(index);
@@ -129,13 +142,13 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             };
             if (out.naive) {
                 bool throughZero = false;
-                for (std::uint32_t v : tri) throughZero = throughZero || proj.pView[v].z <= 0.0;
+                for (std::uint32_t v : tri) throughZero = throughZero || proj.pClip[v].w <= 0.0;
                 out.throughZeroOrBehind += throughZero ? 1 : 0;
                 projectWhole();
                 continue;
             }
             int frontCount = 0;
-            for (std::uint32_t v : tri) frontCount += proj.pView[v].z >= out.nearZ ? 1 : 0;
+            for (std::uint32_t v : tri) frontCount += inFront(v) ? 1 : 0;
             if (frontCount == 3) {
                 projectWhole();
                 continue;
@@ -145,15 +158,15 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                 ++out.behind;
                 continue;
             }
-            // Sutherland-Hodgman against z >= near: walk the edges, keep the vertices in
+            // Sutherland-Hodgman against w >= near: walk the edges, keep the vertices in
             // front and add one where an edge crosses the plane. Winding is preserved.
             std::array<std::uint32_t, 4> polygon{};
             int count = 0;
             for (int k = 0; k < 3; ++k) {
                 const std::uint32_t a = tri[static_cast<std::size_t>(k)];
                 const std::uint32_t b = tri[static_cast<std::size_t>((k + 1) % 3)];
-                const bool aFront = proj.pView[a].z >= out.nearZ;
-                const bool bFront = proj.pView[b].z >= out.nearZ;
+                const bool aFront = inFront(a);
+                const bool bFront = inFront(b);
                 if (aFront) polygon[static_cast<std::size_t>(count++)] = a;
                 if (aFront != bFront)
                     polygon[static_cast<std::size_t>(count++)] =
@@ -175,8 +188,9 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                                 "the object?): the image is empty");
     } else if (out.behind + out.clipped > 0) {
         diagnostics.note(where, std::to_string(out.clipped) +
-                                    " triangles cross the near plane z = " + formatNumber(out.nearZ) +
-                                    " and were clipped; " + std::to_string(out.behind) +
+                                    " triangles cross the near plane z = " +
+                                    formatNumber(out.nearW) + " and were clipped; " +
+                                    std::to_string(out.behind) +
                                     " are wholly behind it and were not drawn");
     }
     if (out.naive && out.throughZeroOrBehind > 0) {

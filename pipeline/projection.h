@@ -1,10 +1,12 @@
 // Stage 4, projection (seed 000), with clipping against the near plane:
-//  1. each triangle is clipped against the plane z = near in view space (Sutherland-Hodgman
-//     against one plane); a clipped triangle becomes one triangle or a quad split in two,
-//     so nothing is ever divided by a z at or behind the camera;
-//  2. every vertex in front is projected to [-1, 1]: pNdc = ((d/hx) x/z, (d/hy) y/z),
-//     i.e. pClip = clipFromView * pView and pNdc = pClip.xy / pClip.w with w = z;
-//  3. then to pixels, as the seed writes it:
+//  1. every vertex to clip space, pClip = clipFromView * pView; for the course camera
+//     pClip = ((d/hx) x, (d/hy) y, z, z), so w is the view z;
+//  2. each triangle is clipped against the plane w = near (Sutherland-Hodgman against one
+//     plane); a clipped triangle becomes one triangle or a quad split in two, so nothing
+//     is ever divided by a w at or behind the camera;
+//  3. every vertex in front is projected to [-1, 1], pNdc = pClip.xy / pClip.w: for the
+//     course, ((d/hx) x/z, (d/hy) y/z);
+//  4. then to pixels, as the seed writes it:
 //     x = (int)((pNdc.x + 1) * width / 2),  y = (int)((1 - pNdc.y) * height / 2),
 //     kept within a guard band of +-2^29 pixels so that scan conversion's integer
 //     arithmetic is exact (a vertex beyond it is pulled in, and a warning says so).
@@ -49,6 +51,7 @@ struct DrawProjection {
     std::uint32_t originalVertexCount = 0;
     // Per vertex: first the draw's own vertices, then those made by clipping.
     std::vector<dvec4> pView;
+    std::vector<dvec4> pClip;              // clipFromView * pView (w = near on made vertices)
     std::vector<dvec2> pNdc;               // [-1, 1] on screen; meaningless where !inFront
     std::vector<dvec2> pScreenExact;       // pixels, before snapping
     std::vector<dvec2> pScreen;            // pixels, after snapping (what is rasterized)
@@ -59,7 +62,7 @@ struct DrawProjection {
 };
 
 struct Projection {
-    double nearZ = 0.0;
+    double nearW = 0.0;                     // the near plane, w = nearW in clip space
     bool naive = false;
     std::vector<DrawProjection> draws;
     std::vector<ScreenTriangle> triangles;  // what scan conversion receives, in draw order
@@ -74,6 +77,8 @@ inline constexpr double kGuardBand = double(1 << 29);
 
 // The projection matrix of the course camera: pClip = ((d/hx) x, (d/hy) y, z, z).
 dmat4 courseClipFromView(const CourseCamera& camera);
+// A draw's projection: its own matrix, else the course camera's, else the identity.
+dmat4 clipFromViewOf(const Scene& scene, const Draw& draw);
 
 class ProjectionStage {
 public:

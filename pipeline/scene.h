@@ -72,6 +72,8 @@ struct Draw {
     std::shared_ptr<const Mesh> mesh;
     Material material;
     dmat4 worldFromModel = dmat4(1.0);
+    // The projection of this draw; when absent, the course camera's (d, hx, hy).
+    std::optional<dmat4> clipFromView;
     ShadingModel shading = ShadingModel::Phong;
 };
 
@@ -110,10 +112,11 @@ struct RasterRules {
     static RasterRules course();  // seed 000 as written
 };
 
-// Triangles are clipped against the plane z = near in view space before projection.
+// Triangles are clipped against the plane w = near in clip space before the division by w;
+// for the course camera w is the view z, so this is the plane z = near in view space.
 struct NearPlane {
-    // A fixed view-space z; when absent, near = autoFraction * (largest vertex z in front).
-    std::optional<double> fixedZ;
+    // A fixed w (the course: view z); when absent, near = autoFraction * the largest w.
+    std::optional<double> fixedW;
     double autoFraction = 1e-3;
     // The naive projection of the course: no clipping, every vertex divided by its own z,
     // even when z <= 0. Only for showing why clipping exists.

@@ -3,6 +3,8 @@
 // image; and its render controller always ends with the newest request.
 #include <QtTest>
 
+#include <QThreadPool>
+
 #include <QDockWidget>
 #include <QFile>
 #include <QFileInfo>
@@ -81,6 +83,8 @@ private slots:
     void exportToMissingFolder();
     void docks();
     void newestRequestWins();
+    void failedRenderKeepsTheLastImage();
+    void controllerDestroyedWhileRendering();
 };
 
 // Waits for the window's first frame (the default scene); fails the test after 10 s.
@@ -414,6 +418,39 @@ void TestMainWindow::newestRequestWins() {
     QVERIFY(!busy.isEmpty());
     QCOMPARE(busy.first().at(0).toBool(), true);
     QCOMPARE(busy.last().at(0).toBool(), false);
+}
+
+void TestMainWindow::failedRenderKeepsTheLastImage() {
+    RenderController controller;
+    QSignalSpy frames(&controller, &RenderController::frameReady);
+    QSignalSpy failures(&controller, &RenderController::failed);
+    QSignalSpy busy(&controller, &RenderController::busyChanged);
+    rl::Scene scene = testing::makeScene(
+        testing::axisCamera(),
+        testing::makeMesh({{-1.0, -1.0, 5.0}, {1.0, -1.0, 5.0}, {0.0, 1.0, 5.0}}, {{0, 1, 2}}),
+        0, 30);
+    scene.name = "empty.byu";
+    controller.request(std::make_shared<const rl::Scene>(scene));
+    QVERIFY2(failures.wait(kFrameTimeoutMs), "no failure reported within 10 s");
+    QCOMPARE(failures.first().at(0).toString(),
+             QStringLiteral("empty.byu: the image size 0x30 is empty"));
+    QCOMPARE(frames.count(), 0);
+    QCOMPARE(busy.count(), 2);  // true, then false: one busy period
+    QVERIFY(!controller.isBusy());
+}
+
+void TestMainWindow::controllerDestroyedWhileRendering() {
+    // A render still running when its controller goes (the window closes): no crash, and
+    // the result is simply dropped.
+    auto* controller = new RenderController;
+    const auto mesh =
+        testing::makeMesh({{-1.0, -1.0, 5.0}, {1.0, -1.0, 5.0}, {0.0, 1.0, 5.0}}, {{0, 1, 2}});
+    controller->request(std::make_shared<const rl::Scene>(
+        testing::makeScene(testing::axisCamera(), mesh, 2000, 2000)));
+    QVERIFY(controller->isBusy());
+    delete controller;
+    QThreadPool::globalInstance()->waitForDone();
+    QCoreApplication::processEvents();
 }
 
 QTEST_MAIN(TestMainWindow)

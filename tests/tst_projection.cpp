@@ -77,7 +77,7 @@ private slots:
         Scene scene = testing::makeScene(
             testing::axisCamera(),
             testing::makeMesh({{0, 1, 10}, {1, -1, 10}, {0, 0, -10}}, {{0, 1, 2}}), 100, 100);
-        scene.nearPlane.fixedZ = 1.0;
+        scene.nearPlane.fixedW = 1.0;
         const Run run = project(scene);
         const Projection& pr = run.projection;
         const DrawProjection& p = pr.draws[0];
@@ -91,10 +91,11 @@ private slots:
         QCOMPARE(p.generated[0].b, 2u);
         RL_COMPARE_NEAR(p.generated[0].t, 0.45, 1e-15);
         RL_COMPARE_VEC(p.pView[3], dvec4(-0.55, -0.55, 1.0, 1.0), 1e-12);
+        RL_COMPARE_VEC(p.pClip[3], dvec4(-0.55, -0.55, 1.0, 1.0), 1e-12);
         QCOMPARE(p.generated[1].a, 0u);
         QCOMPARE(p.generated[1].b, 2u);
         RL_COMPARE_VEC(p.pView[4], dvec4(0.0, 0.55, 1.0, 1.0), 1e-12);
-        QCOMPARE(p.pView[3].z, 1.0);  // exactly on the plane
+        QCOMPARE(p.pClip[3].w, 1.0);  // exactly on the plane w = near (w is the view z)
         QCOMPARE((std::array<std::uint32_t, 3>{0, 1, 3}), pr.triangles[0].v);
         QCOMPARE((std::array<std::uint32_t, 3>{0, 3, 4}), pr.triangles[1].v);
         // The behind vertex was never projected.
@@ -108,7 +109,7 @@ private slots:
         Scene scene = testing::makeScene(
             testing::axisCamera(),
             testing::makeMesh({{0, 1, 10}, {1, -1, -10}, {0, 0, -10}}, {{0, 1, 2}}), 100, 100);
-        scene.nearPlane.fixedZ = 1.0;
+        scene.nearPlane.fixedW = 1.0;
         const Run run = project(scene);
         QCOMPARE(run.projection.triangles.size(), std::size_t(1));
         QCOMPARE(run.projection.draws[0].generated.size(), std::size_t(2));
@@ -120,7 +121,7 @@ private slots:
         Scene scene = testing::makeScene(
             testing::axisCamera(),
             testing::makeMesh({{0, 1, 1}, {1, -1, 10}, {-1, -1, 10}}, {{0, 1, 2}}), 100, 100);
-        scene.nearPlane.fixedZ = 1.0;
+        scene.nearPlane.fixedW = 1.0;
         const Run run = project(scene);
         QCOMPARE(run.projection.draws[0].fate[0], TriangleFate::Inside);
         QCOMPARE(run.projection.draws[0].generated.size(), std::size_t(0));
@@ -134,7 +135,7 @@ private slots:
             testing::makeMesh({{1, 0, 10}, {0, 0, -10}, {0, 2, 10}, {0, -2, 10}},
                               {{0, 1, 2}, {1, 0, 3}}),
             100, 100);
-        scene.nearPlane.fixedZ = 0.5;
+        scene.nearPlane.fixedW = 0.5;
         const Run run = project(scene);
         const DrawProjection& p = run.projection.draws[0];
         std::vector<dvec4> onSharedEdge;
@@ -164,12 +165,24 @@ private slots:
                                 "pointing away from the object?): the image is empty"));
     }
 
+    void vertexAtTheEyeUnderNaiveProjectionIsDropped() {
+        // x/0 is infinite: the triangle must be dropped, not pulled in to the guard band.
+        Scene scene = testing::makeScene(
+            testing::axisCamera(),
+            testing::makeMesh({{5, 3, 0}, {1, -1, 10}, {-1, -1, 10}}, {{0, 1, 2}}), 100, 100);
+        scene.nearPlane.naive = true;
+        const Run run = project(scene);
+        QCOMPARE(run.projection.draws[0].fate[0], TriangleFate::NonFinite);
+        QCOMPARE(run.projection.triangles.size(), std::size_t(0));
+        QCOMPARE(run.projection.outsideGuardBand, std::size_t(0));
+    }
+
     void autoNearPlaneIsAThousandthOfTheFarthestVertex() {
         Scene scene = testing::makeScene(
             testing::axisCamera(),
             testing::makeMesh({{0, 1, 600}, {1, -1, 10}, {-1, -1, -5}}, {{0, 1, 2}}), 100, 100);
         const Run run = project(scene);
-        RL_COMPARE_NEAR(run.projection.nearZ, 0.6, 1e-15);
+        RL_COMPARE_NEAR(run.projection.nearW, 0.6, 1e-15);
         QCOMPARE(run.projection.clipped, std::size_t(1));
     }
 
@@ -185,6 +198,38 @@ private slots:
                 const dvec2 s = run.projection.draws[0].pScreen[v];
                 QVERIFY(std::isfinite(s.x) && std::isfinite(s.y));
             }
+    }
+
+    void drawWithItsOwnProjection() {
+        // A draw that brings its own matrix (as command files will): OpenGL's glFrustum(-1, 1,
+        // -1, 1, 1, 10), which looks down -z and puts w = -z. No course camera in the scene:
+        // view coordinates are the draw's own. The triangle at z = -2 is in front; one at
+        // z = +2 is behind.
+        Scene scene;
+        scene.name = "frustum";
+        scene.width = 100;
+        scene.height = 100;
+        Draw draw;
+        draw.mesh = testing::makeMesh({{-1, -1, -2}, {1, -1, -2}, {0, 1, -2}, {0, 0, 2}, {1, 0, 2}, {0, 1, 2}},
+                                      {{0, 1, 2}, {3, 4, 5}});
+        const double n = 1.0, f = 10.0;
+        dmat4 frustum(0.0);
+        frustum[0][0] = n;
+        frustum[1][1] = n;
+        frustum[2][2] = -(f + n) / (f - n);
+        frustum[2][3] = -1.0;
+        frustum[3][2] = -2.0 * f * n / (f - n);
+        draw.clipFromView = frustum;
+        scene.draws.push_back(draw);
+        scene.nearPlane.fixedW = 1.0;
+        const Run run = project(scene);
+        const DrawProjection& p = run.projection.draws[0];
+        QCOMPARE(p.fate[0], TriangleFate::Inside);
+        QCOMPARE(p.fate[1], TriangleFate::Behind);
+        // (-1, -1, -2): clip (-1, -1, ., 2), NDC (-0.5, -0.5): pixel x = 25, y = (1 + 0.5) 50 = 75.
+        RL_COMPARE_VEC(p.pNdc[0], dvec2(-0.5, -0.5), 1e-12);
+        QCOMPARE(p.pScreen[0], dvec2(25, 75));
+        QCOMPARE(clipFromViewOf(scene, scene.draws[0]), frustum);
     }
 
     void naiveProjectionDividesByNegativeZ() {

@@ -5,6 +5,7 @@
 #include "course_scene.h"
 #include "default_scene_resource.h"
 #include "output_image.h"
+#include "phong.h"
 #include "renderer.h"
 #include "test_support.h"
 
@@ -47,6 +48,48 @@ int holes(const DepthTest& depth) {
                 t.at(x, y + 1) != kNoTriangle)
                 ++n;
     return n;
+}
+
+// Whether the sample (x, y) lies inside or on a screen triangle (integer vertices), by
+// edge functions in exact integer arithmetic: an independent check of scan conversion.
+bool covers(const std::array<dvec2, 3>& p, std::int64_t x, std::int64_t y) {
+    auto edge = [&](const dvec2& a, const dvec2& b) {
+        return (std::int64_t(b.x) - std::int64_t(a.x)) * (y - std::int64_t(a.y)) -
+               (std::int64_t(b.y) - std::int64_t(a.y)) * (x - std::int64_t(a.x));
+    };
+    const std::int64_t w0 = edge(p[1], p[2]), w1 = edge(p[2], p[0]), w2 = edge(p[0], p[1]);
+    return (w0 >= 0 && w1 >= 0 && w2 >= 0) || (w0 <= 0 && w1 <= 0 && w2 <= 0);
+}
+
+// The frame's coverage against brute force: a pixel is covered exactly when some
+// non-degenerate screen triangle covers its sample, and its winner is one of those.
+// Returns the number of pixels where the two disagree.
+std::size_t coverageMismatches(const FrameTrace& trace) {
+    const Scene& scene = *trace.scene;
+    Image<std::uint8_t> expected(scene.width, scene.height, 0);
+    for (const ScreenTriangle& tri : trace.projection->triangles) {
+        const auto p = screenVertices(*trace.projection, tri);
+        const double area = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[1].y - p[0].y) * (p[2].x - p[0].x);
+        if (area == 0.0) continue;
+        const int x0 = int(std::max(0.0, std::min({p[0].x, p[1].x, p[2].x})));
+        const int x1 = int(std::min(scene.width - 1.0, std::max({p[0].x, p[1].x, p[2].x})));
+        const int y0 = int(std::max(0.0, std::min({p[0].y, p[1].y, p[2].y})));
+        const int y1 = int(std::min(scene.height - 1.0, std::max({p[0].y, p[1].y, p[2].y})));
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x)
+                if (covers(p, x, y)) expected.at(x, y) = 1;
+    }
+    std::size_t mismatches = 0;
+    for (int y = 0; y < scene.height; ++y)
+        for (int x = 0; x < scene.width; ++x) {
+            const std::uint32_t winner = trace.depth->triangle.at(x, y);
+            const bool covered = winner != kNoTriangle;
+            if (covered != bool(expected.at(x, y))) ++mismatches;
+            else if (covered && !covers(screenVertices(*trace.projection,
+                                                       trace.projection->triangles[winner]), x, y))
+                ++mismatches;
+        }
+    return mismatches;
 }
 
 bool allFinite(const Image<vec3>& image) {
@@ -160,6 +203,65 @@ private slots:
         QVERIFY(flat->shading->phongEvaluations < 7776);
         QVERIFY(gouraud->shading->phongEvaluations <= 3888);
         QCOMPARE(holes(*phong->depth), 0);
+        QCOMPARE(coverageMismatches(*phong), std::size_t(0));
+    }
+
+    void clippedTrianglesAreShadedFromTheirEdges() {
+        // Axis camera (view = (-x, y, z)), near plane w = z = 1. The triangle A (-2,-2,10),
+        // B (2,-2,10), C (0, 6, -10) crosses it: clipping makes vertices on B->C and C->A.
+        Scene scene = testing::makeScene(
+            testing::axisCamera(),
+            testing::makeMesh({{-2, -2, 10}, {2, -2, 10}, {0, 6, -10}}, {{0, 1, 2}}), 200, 200,
+            ShadingModel::Gouraud);
+        scene.nearPlane.fixedW = 1.0;
+        scene.lights = {{dvec4(0.0, 5.0, 0.0, 1.0), vec3(200.0f), {}}};
+        scene.draws[0].material.ks = 0.5f;
+        scene.draws[0].material.shininess = 4.0f;
+        auto plain = renderFrame(std::make_shared<const Scene>(scene));
+        QVERIFY(plain.ok());
+        const Projection& pr = *plain->projection;
+        QCOMPARE(pr.clipped, std::size_t(1));
+        QCOMPARE(pr.triangles.size(), std::size_t(2));
+        // Gouraud: a made vertex's colour is the colours of its edge's ends, interpolated.
+        const DrawProjection& dp = pr.draws[0];
+        const auto& normals = plain->normals->draws[0].vertex;
+        auto litAt = [&](std::uint32_t v) {
+            return phong(scene.draws[0].material, scene.ambientIntensity, plain->view->lights.data(),
+                         1, vec3(dp.pView[v]), normals[v], true).colour();
+        };
+        int checked = 0;
+        for (int y = 0; y < 200 && checked < 50; ++y)
+            for (int x = 0; x < 200 && checked < 50; ++x) {
+                const std::uint32_t t = plain->depth->triangle.at(x, y);
+                if (t == kNoTriangle) continue;
+                auto probe = RecordingProbe::forPixel(x, y);
+                auto traced = traceFrame(std::make_shared<const Scene>(scene), {}, probe);
+                const auto& shade = std::get<ShadeEvent>(probe.events().back());
+                for (int k = 0; k < 3; ++k) {
+                    const std::uint32_t v = pr.triangles[t].v[std::size_t(k)];
+                    vec3 expected = v < dp.originalVertexCount ? litAt(v) : vec3(0.0f);
+                    if (v >= dp.originalVertexCount) {
+                        const ClipVertex& g = dp.generated[v - dp.originalVertexCount];
+                        expected = glm::mix(litAt(g.a), litAt(g.b), float(g.t));
+                    }
+                    RL_COMPARE_VEC(shade.vertexColours[std::size_t(k)], expected, 1e-3);
+                }
+                ++checked;
+                x += 37;  // spread the probes over the triangle
+            }
+        QVERIFY(checked > 10);
+        // Phong: P' on every covered pixel lies on the triangle's plane, on both halves of
+        // the clipped quad (its made vertices lie on the edges).
+        scene.draws[0].shading = ShadingModel::Phong;
+        for (int y = 0; y < 200; y += 7)
+            for (int x = 0; x < 200; x += 7) {
+                if (plain->depth->triangle.at(x, y) == kNoTriangle) continue;
+                auto probe = RecordingProbe::forPixel(x, y);
+                auto traced = traceFrame(std::make_shared<const Scene>(scene), {}, probe);
+                const auto& shade = std::get<ShadeEvent>(probe.events().back());
+                // The view plane through (2,-2,10), (-2,-2,10), (0,6,-10) is 5 y + 2 z = 10.
+                RL_COMPARE_NEAR(5.0 * shade.pView.y + 2.0 * shade.pView.z, 10.0, 1e-3);
+            }
     }
 
     void emptyImageSaysWhy() {
@@ -216,6 +318,7 @@ private slots:
               trace->totalMilliseconds);
         QVERIFY(covered > 10000);
         QCOMPARE(holes(*trace->depth), 0);
+        QCOMPARE(coverageMismatches(trace.value()), std::size_t(0));
         QVERIFY(allFinite(trace->shading->colour));
         // White light on Od = (0, 0.8, 0): green everywhere, red and blue only from the
         // ambient term (Ia ka = 64) and the specular highlight.
