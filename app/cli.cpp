@@ -25,7 +25,9 @@ constexpr int kMaxImageSide = 16384;
 // colour, the RGBA image): 40 million pixels, such as 7680x4320, need about 1.6 GB.
 constexpr qint64 kDefaultMaxPixels = 40'000'000;
 
-QString lit(const char* s) { return QString::fromUtf8(s); }
+QString lit(const char* s) {
+    return QString::fromUtf8(s);
+}
 
 void printDiagnostics(const rl::Diagnostics& diagnostics, QTextStream& err) {
     for (const auto& d : diagnostics.items()) err << QString::fromStdString(d.toString()) << '\n';
@@ -88,8 +90,8 @@ bool parsePixel(const QString& text, int& x, int& y) {
     return true;
 }
 
-bool writePng(const rl::Rgba8Image& image, const QString& path, QTextStream& out,
-              QTextStream& err, const QString& what) {
+bool writePng(const rl::Rgba8Image& image, const QString& path, QTextStream& out, QTextStream& err,
+              const QString& what) {
     QString error;
     if (!savePng(toQImage(image), path, &error)) {
         err << path << ": cannot write the " << what << ": " << error << '\n';
@@ -107,9 +109,8 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
     const QCommandLineOption help({lit("h"), lit("help")}, lit("Show this help."));
     const QCommandLineOption camera(lit("camera"), lit("Camera file (C; N; V; d hx hy)."),
                                     lit("FILE"));
-    const QCommandLineOption lighting(lit("lighting"),
-                                      lit("Lighting file (Pl; ka; Ia; kd; Od; ks; Il; n)."),
-                                      lit("FILE"));
+    const QCommandLineOption lighting(
+        lit("lighting"), lit("Lighting file (Pl; ka; Ia; kd; Od; ks; Il; n)."), lit("FILE"));
     const QCommandLineOption object(lit("object"), lit("Object file (.byu)."), lit("FILE"));
     const QCommandLineOption size(lit("size"), lit("Image size, default 800x600."), lit("WxH"),
                                   lit("800x600"));
@@ -148,13 +149,15 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
         return ExitOk;
     }
     if (!parser.positionalArguments().isEmpty())
-        return usageError(err, lit("unexpected argument '%1'").arg(parser.positionalArguments().first()));
+        return usageError(
+            err, lit("unexpected argument '%1'").arg(parser.positionalArguments().first()));
 
     rl::CourseSceneSettings settings;
     if (!parseSize(parser.value(size), settings.width, settings.height) || settings.width < 1 ||
         settings.height < 1)
-        return usageError(err, lit("--size expects WIDTHxHEIGHT such as 800x600, found '%1'")
-                                   .arg(parser.value(size)));
+        return usageError(
+            err,
+            lit("--size expects WIDTHxHEIGHT such as 800x600, found '%1'").arg(parser.value(size)));
     if (settings.width > kMaxImageSide || settings.height > kMaxImageSide)
         return usageError(err, lit("--size %1 is larger than the limit of %2 pixels a side")
                                    .arg(parser.value(size))
@@ -172,15 +175,16 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
                                    .arg(pixelLimit));
     const auto model = rl::shadingModelFromName(parser.value(shading).toStdString());
     if (!model)
-        return usageError(err, lit("--shading expects phong, flat or gouraud, found '%1'")
-                                   .arg(parser.value(shading)));
+        return usageError(
+            err,
+            lit("--shading expects phong, flat or gouraud, found '%1'").arg(parser.value(shading)));
     settings.shading = *model;
     if (parser.isSet(near)) {
         bool ok = false;
         const double z = parser.value(near).toDouble(&ok);
         if (!ok || !(z > 0.0))
-            return usageError(err, lit("--near expects a positive number, found '%1'")
-                                       .arg(parser.value(near)));
+            return usageError(
+                err, lit("--near expects a positive number, found '%1'").arg(parser.value(near)));
         settings.nearPlane.fixedW = z;
     }
     settings.nearPlane.naive = parser.isSet(naive);
@@ -245,9 +249,8 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
         return ExitBadInput;
 
     out << "  " << scene->triangleCount() << " triangles, "
-        << rl::shadingModelName(settings.shading) << " shading, "
-        << trace->depth->coveredPixels() << " pixels covered, "
-        << QString::number(trace->totalMilliseconds, 'f', 1) << " ms\n";
+        << rl::shadingModelName(settings.shading) << " shading, " << trace->depth->coveredPixels()
+        << " pixels covered, " << QString::number(trace->totalMilliseconds, 'f', 1) << " ms\n";
 
     if (probe) out << QString::fromStdString(rl::explainPixel(trace.value(), *probe));
     out.flush();

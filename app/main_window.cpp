@@ -22,9 +22,12 @@ namespace {
 
 QString partTitle(SceneDocument::Part part) {
     switch (part) {
-        case SceneDocument::Part::Camera: return MainWindow::tr("Open Camera");
-        case SceneDocument::Part::Lighting: return MainWindow::tr("Open Lighting");
-        case SceneDocument::Part::Object: return MainWindow::tr("Open Object");
+        case SceneDocument::Part::Camera:
+            return MainWindow::tr("Open Camera");
+        case SceneDocument::Part::Lighting:
+            return MainWindow::tr("Open Lighting");
+        case SceneDocument::Part::Object:
+            return MainWindow::tr("Open Object");
     }
     return {};
 }
@@ -106,14 +109,16 @@ void MainWindow::createActions() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     QAction* fit = view->addAction(tr("&Fit to Window"), m_view, &FrameImageView::fitToWindow);
     fit->setShortcut(QKeySequence(tr("Ctrl+0")));
-    QAction* actual = view->addAction(tr("&Actual Size"), m_view, &FrameImageView::zoomToActualSize);
+    QAction* actual =
+        view->addAction(tr("&Actual Size"), m_view, &FrameImageView::zoomToActualSize);
     actual->setShortcut(QKeySequence(tr("Ctrl+1")));
     QAction* zoomIn = view->addAction(tr("Zoom &In"), m_view, &FrameImageView::zoomIn);
     zoomIn->setShortcut(QKeySequence::ZoomIn);
     QAction* zoomOut = view->addAction(tr("Zoom &Out"), m_view, &FrameImageView::zoomOut);
     zoomOut->setShortcut(QKeySequence::ZoomOut);
     view->addSeparator();
-    for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        view->addAction(dock->toggleViewAction());
 
     QMenu* shading = menuBar()->addMenu(tr("&Shading"));
     m_shadingGroup = new QActionGroup(this);
@@ -244,24 +249,25 @@ void MainWindow::refreshSceneSummary() {
                 .arg(tr("Camera"), displayName(m_document.source(SceneDocument::Part::Camera)),
                      tr("Lighting"), displayName(m_document.source(SceneDocument::Part::Lighting)),
                      tr("Object"), displayName(m_document.source(SceneDocument::Part::Object)));
-    html += QStringLiteral("<p>%1</p>")
-                .arg(tr("%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading")
-                         .arg(scene.vertexCount())
-                         .arg(scene.triangleCount())
-                         .arg(scene.width)
-                         .arg(scene.height)
-                         .arg(QString::fromUtf8(rl::shadingModelName(scene.draws.front().shading))));
+    html +=
+        QStringLiteral("<p>%1</p>")
+            .arg(tr("%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading")
+                     .arg(scene.vertexCount())
+                     .arg(scene.triangleCount())
+                     .arg(scene.width)
+                     .arg(scene.height)
+                     .arg(QString::fromUtf8(rl::shadingModelName(scene.draws.front().shading))));
     html += QStringLiteral("<h3>%1</h3><table>").arg(tr("Stages"));
-    const QString stageNames[] = {tr("Camera basis"), tr("View transform"), tr("Normals"),
+    const QString stageNames[] = {tr("Camera basis"), tr("View transform"),  tr("Normals"),
                                   tr("Projection"),   tr("Scan conversion"), tr("Depth test"),
                                   tr("Shading")};
     for (rl::StageId stage : rl::kAllStages) {
         const auto i = static_cast<std::size_t>(stage);
         const std::string skip = t.skipReason(stage);
         html += QStringLiteral("<tr><td>%1</td><td align='right'>%2</td></tr>")
-                    .arg(stageNames[i],
-                         skip.empty() ? tr("%1 ms").arg(t.stageMilliseconds[i], 0, 'f', 2)
-                                      : tr("skipped: %1").arg(QString::fromStdString(skip)));
+                    .arg(stageNames[i], skip.empty()
+                                            ? tr("%1 ms").arg(t.stageMilliseconds[i], 0, 'f', 2)
+                                            : tr("skipped: %1").arg(QString::fromStdString(skip)));
     }
     html += QStringLiteral("</table>");
     const auto& b = *t.cameraBasis;
@@ -317,15 +323,14 @@ void MainWindow::onPixelHovered(QPoint pixel) {
 }
 
 void MainWindow::openPartDialog(SceneDocument::Part part) {
-    const QString path = QFileDialog::getOpenFileName(this, partTitle(part), QString(),
-                                                      partFilter(part));
+    const QString path =
+        QFileDialog::getOpenFileName(this, partTitle(part), QString(), partFilter(part));
     if (!path.isEmpty()) openPart(part, path);
 }
 
 void MainWindow::exportDialog() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export PNG"),
-                                                      QStringLiteral("rasterlab.png"),
-                                                      tr("PNG images (*.png)"));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export PNG"), QStringLiteral("rasterlab.png"), tr("PNG images (*.png)"));
     if (!path.isEmpty()) exportImage(path);
 }
 

@@ -19,7 +19,7 @@ namespace rasterlab {
 
 struct RenderedFrame {
     std::shared_ptr<const rl::FrameTrace> trace;
-    QImage image;     // the final colour image, 8-bit RGBA
+    QImage image;  // the final colour image, 8-bit RGBA
 };
 
 class RenderController : public QObject {

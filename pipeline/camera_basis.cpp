@@ -57,7 +57,8 @@ Result<CameraBasis> CameraBasisStage::run(const Scene& scene, Diagnostics& diagn
     basis.vOrthogonalLength = glm::length(basis.vOrthogonal);
     if (!(basis.vOrthogonalLength > 1e-12 * glm::length(camera.v)))
         return makeError(ErrorCode::Degenerate, camera.where.v,
-                         "V " + formatVector(camera.v) + " is parallel to N " + formatVector(camera.n) +
+                         "V " + formatVector(camera.v) + " is parallel to N " +
+                             formatVector(camera.n) +
                              ": Gram-Schmidt leaves nothing of V, so 'up' is undefined; "
                              "choose a V that is not along N");
     basis.v = basis.vOrthogonal / basis.vOrthogonalLength;

@@ -17,7 +17,7 @@
 namespace rl {
 
 struct CameraBasis {
-    bool skipped = false;        // the scene has no course camera
+    bool skipped = false;  // the scene has no course camera
     std::string skipReason;
 
     // Inputs, as given.
@@ -26,21 +26,21 @@ struct CameraBasis {
     dvec3 vGiven = dvec3(0.0);
 
     // Gram-Schmidt, step by step.
-    double nLength = 0.0;                 // |N| before normalisation
-    dvec3 n = dvec3(0.0, 0.0, 1.0);       // N / |N|
-    double vDotN = 0.0;                   // V.N, with N normalised
-    dvec3 vProjection = dvec3(0.0);       // proj_N(V) = (V.N) N
-    dvec3 vOrthogonal = dvec3(0.0);       // V - proj_N(V)
+    double nLength = 0.0;            // |N| before normalisation
+    dvec3 n = dvec3(0.0, 0.0, 1.0);  // N / |N|
+    double vDotN = 0.0;              // V.N, with N normalised
+    dvec3 vProjection = dvec3(0.0);  // proj_N(V) = (V.N) N
+    dvec3 vOrthogonal = dvec3(0.0);  // V - proj_N(V)
     double vOrthogonalLength = 0.0;
-    dvec3 v = dvec3(0.0, 1.0, 0.0);       // normalised
-    dvec3 u = dvec3(1.0, 0.0, 0.0);       // N x V
+    dvec3 v = dvec3(0.0, 1.0, 0.0);  // normalised
+    dvec3 u = dvec3(1.0, 0.0, 0.0);  // N x V
 
     // Orthonormality residuals of the result: all zero up to rounding.
     double uDotV = 0.0, uDotN = 0.0, vDotNResidual = 0.0;
     double uLengthError = 0.0, vLengthError = 0.0, nLengthError = 0.0;
     double maxResidual() const;
 
-    dmat4 viewFromWorld = dmat4(1.0);     // rows U, V, N; then the translation by -C
+    dmat4 viewFromWorld = dmat4(1.0);  // rows U, V, N; then the translation by -C
 };
 
 class CameraBasisStage {

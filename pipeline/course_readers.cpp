@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "format.h"
 #include <cctype>
 #include <charconv>
+#include "format.h"
 
 namespace rl {
 
@@ -152,7 +152,9 @@ Result<std::vector<FieldValue>> readFieldLines(LineScanner& scanner,
 
 namespace {
 
-dvec3 vec3Of(const FieldValue& f) { return dvec3(f.values[0], f.values[1], f.values[2]); }
+dvec3 vec3Of(const FieldValue& f) {
+    return dvec3(f.values[0], f.values[1], f.values[2]);
+}
 
 vec3 rgbOf(const FieldValue& f) {
     if (f.values.size() == 1) return vec3(static_cast<float>(f.values[0]));
@@ -225,9 +227,8 @@ Result<CourseLighting> readCourseLighting(std::string_view text, const std::stri
             if (v >= low && v <= high) continue;
             std::string label = name;
             if (field.values.size() == 3) label += std::string(".") + "rgb"[i];
-            diagnostics.warn(field.where[i], label + " = " + formatNumber(v) +
-                                                 " is outside " + range +
-                                                 ", the range the course gives for it");
+            diagnostics.warn(field.where[i], label + " = " + formatNumber(v) + " is outside " +
+                                                 range + ", the range the course gives for it");
         }
     };
     check(f[1], "ka", 0.0, 1.0, "[0, 1]");
@@ -295,11 +296,10 @@ Result<Mesh> readByuMesh(std::string_view text, const std::string& fileName,
     auto triangleCount = readCount(scanner, line.tokens[1], "triangles");
     if (!triangleCount) return triangleCount.error();
     if (line.tokens.size() > 2)
-        diagnostics.warn(scanner.at(line.tokens[2]),
-                         "ignored " +
-                             plural(static_cast<long long>(line.tokens.size() - 2), "value",
-                                    "values") +
-                             " after the header's two counts");
+        diagnostics.warn(
+            scanner.at(line.tokens[2]),
+            "ignored " + plural(static_cast<long long>(line.tokens.size() - 2), "value", "values") +
+                " after the header's two counts");
 
     // A course Bezier surface also ships as .byu: "m n", then one number (evaluations).
     if (scanner.next(line)) {
@@ -338,16 +338,16 @@ Result<Mesh> readByuMesh(std::string_view text, const std::string& fileName,
     SourceLocation firstExtra;
     for (long long i = 0; i < *vertexCount; ++i) {
         scanner.next(line);  // present: counted above
-        const std::string which = "vertex " + std::to_string(i + 1) + " of " +
-                                  std::to_string(*vertexCount);
+        const std::string which =
+            "vertex " + std::to_string(i + 1) + " of " + std::to_string(*vertexCount);
         if (isComment(line.tokens[0]))
             return commentError(scanner, line.tokens[0], which + " (x y z)");
         dvec4 p(0.0, 0.0, 0.0, 1.0);
         for (int k = 0; k < 3; ++k) {
             if (static_cast<std::size_t>(k) >= line.tokens.size())
-                return makeError(ErrorCode::Syntax, scanner.afterLast(line),
-                                 "expected 3 coordinates for " + which + ", found " +
-                                     std::to_string(k));
+                return makeError(
+                    ErrorCode::Syntax, scanner.afterLast(line),
+                    "expected 3 coordinates for " + which + ", found " + std::to_string(k));
             const Token& token = line.tokens[static_cast<std::size_t>(k)];
             const auto value = parseReal(token.text);
             if (!value)
@@ -366,9 +366,9 @@ Result<Mesh> readByuMesh(std::string_view text, const std::string& fileName,
         scanner.next(line);
         const std::string which = "triangle " + std::to_string(i + 1);
         if (isComment(line.tokens[0]))
-            return commentError(scanner, line.tokens[0],
-                                which + " of " + std::to_string(*triangleCount) +
-                                    " (three vertex indices)");
+            return commentError(
+                scanner, line.tokens[0],
+                which + " of " + std::to_string(*triangleCount) + " (three vertex indices)");
         if (line.tokens.size() < 3)
             return makeError(ErrorCode::Syntax, scanner.afterLast(line),
                              "expected 3 vertex indices for " + which + " of " +

@@ -13,7 +13,7 @@
 namespace rl {
 
 struct CourseObject {
-    std::string name;                   // file name, for messages and views
+    std::string name;  // file name, for messages and views
     std::shared_ptr<const Mesh> mesh;
 };
 

@@ -16,9 +16,9 @@ constexpr double kPi = 3.14159265358979323846;
 // the hole of a torus of radii R (core circle) and r (tube of the torus).
 constexpr int kP = 2, kQ = 3;
 constexpr double kR = 100.0, kr = 40.0;
-constexpr double kTube = 22.0;      // radius of the tube around the centre line
-constexpr int kSegments = 216;      // along the knot
-constexpr int kRings = 18;          // around the tube
+constexpr double kTube = 22.0;  // radius of the tube around the centre line
+constexpr int kSegments = 216;  // along the knot
+constexpr int kRings = 18;      // around the tube
 
 dvec3 centreLine(double phi) {
     const double radius = kR + kr * std::cos(kQ * phi);
@@ -26,7 +26,9 @@ dvec3 centreLine(double phi) {
 }
 
 // The core circle point below the centre line: the tube's frame points away from it.
-dvec3 corePoint(double phi) { return {kR * std::cos(kP * phi), kR * std::sin(kP * phi), 0.0}; }
+dvec3 corePoint(double phi) {
+    return {kR * std::cos(kP * phi), kR * std::sin(kP * phi), 0.0};
+}
 
 std::string vertexLine(const dvec3& p) {
     return formatFixed(p.x, 4) + ' ' + formatFixed(p.y, 4) + ' ' + formatFixed(p.z, 4) + '\n';

@@ -23,12 +23,12 @@ namespace rl {
 inline constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
 
 struct DepthTest {
-    Image<float> depth;               // +infinity where nothing was drawn
-    Image<std::uint32_t> triangle;    // index into Projection::triangles, or kNoTriangle
-    Image<vec2> barycentric;          // (beta, gamma) of the winning fragment; alpha = 1 - b - g
-    std::size_t fragments = 0;        // tested
-    std::size_t passed = 0;           // written (including those overwritten later)
-    std::size_t rejected = 0;         // farther than (or as far as) what was stored
+    Image<float> depth;             // +infinity where nothing was drawn
+    Image<std::uint32_t> triangle;  // index into Projection::triangles, or kNoTriangle
+    Image<vec2> barycentric;        // (beta, gamma) of the winning fragment; alpha = 1 - b - g
+    std::size_t fragments = 0;      // tested
+    std::size_t passed = 0;         // written (including those overwritten later)
+    std::size_t rejected = 0;       // farther than (or as far as) what was stored
 
     std::size_t coveredPixels() const;
 };

@@ -11,7 +11,9 @@ std::string SourceLocation::toString() const {
     return s;
 }
 
-std::string Error::toString() const { return where.toString() + ": " + message; }
+std::string Error::toString() const {
+    return where.toString() + ": " + message;
+}
 
 Error makeError(ErrorCode code, SourceLocation where, std::string message) {
     return Error{code, std::move(message), std::move(where)};

@@ -67,7 +67,9 @@ private:
 // Result of an operation that produces no value.
 struct Done {};
 using Status = Result<Done>;
-inline Status success() { return Done{}; }
+inline Status success() {
+    return Done{};
+}
 
 enum class Severity { Note, Warning };
 

@@ -9,7 +9,9 @@ namespace rl {
 
 namespace {
 
-std::string f3(const vec3& v) { return formatVector(dvec3(v)); }
+std::string f3(const vec3& v) {
+    return formatVector(dvec3(v));
+}
 
 std::string triangleName(const FrameTrace& trace, std::uint32_t t) {
     const ScreenTriangle& tri = trace.projection->triangles[t];
@@ -40,12 +42,14 @@ void describeSample(std::string& out, const PhongSample& s, const Material& m) {
     }
     out += "    L = " + f3(s.l) + "   V = " + f3(s.v) + "   R = " + f3(s.r) + "\n";
     out += "    N.L = " + formatNumber(s.nDotL) + "   R.V = " + formatNumber(s.rDotV) + "\n";
-    if (s.lightBehind) out += "    N.L < 0: the light is behind the surface, no diffuse, no specular\n";
-    if (s.noSpecular) out += "    R.V < 0: the reflection points away from the viewer, no specular\n";
+    if (s.lightBehind)
+        out += "    N.L < 0: the light is behind the surface, no diffuse, no specular\n";
+    if (s.noSpecular)
+        out += "    R.V < 0: the reflection points away from the viewer, no specular\n";
     out += "    ambient  Ia*ka          = " + f3(s.ambient) + "\n";
     out += "    diffuse  Il*Od*kd*(N.L) = " + f3(s.diffuse) + "\n";
-    out += "    specular Il*ks*(R.V)^n  = " + f3(s.specular) + "   (n = " +
-           formatNumber(m.shininess) + ")\n";
+    out += "    specular Il*ks*(R.V)^n  = " + f3(s.specular) +
+           "   (n = " + formatNumber(m.shininess) + ")\n";
 }
 
 }  // namespace
@@ -62,8 +66,9 @@ std::string explainPixel(const FrameTrace& trace, const RecordingProbe& probe) {
             if (spans++ == 0) out += "  scan conversion: spans covering the pixel\n";
             out += "    " + triangleName(trace, span->triangle) + ": row " +
                    std::to_string(span->span.y) + ", x = " + std::to_string(span->span.xBegin) +
-                   ".." + std::to_string(span->span.xEnd - 1) + " (edges at x = " +
-                   formatNumber(span->xLeft) + " and " + formatNumber(span->xRight) + ")\n";
+                   ".." + std::to_string(span->span.xEnd - 1) +
+                   " (edges at x = " + formatNumber(span->xLeft) + " and " +
+                   formatNumber(span->xRight) + ")\n";
         }
     }
     bool anyFragment = false;
@@ -72,20 +77,22 @@ std::string explainPixel(const FrameTrace& trace, const RecordingProbe& probe) {
         if (const auto* test = std::get_if<DepthTestEvent>(&event)) {
             if (!anyFragment) out += "  depth test, in drawing order:\n";
             anyFragment = true;
-            out += "    " + std::to_string(++fragment) + ". " + triangleName(trace, test->triangle) +
+            out += "    " + std::to_string(++fragment) + ". " +
+                   triangleName(trace, test->triangle) +
                    ": barycentrics alpha = " + formatNumber(test->alpha) +
-                   ", beta = " + formatNumber(test->beta) + ", gamma = " +
-                   formatNumber(test->gamma) + "; z = " + depthText(test->depth) +
+                   ", beta = " + formatNumber(test->beta) +
+                   ", gamma = " + formatNumber(test->gamma) + "; z = " + depthText(test->depth) +
                    (test->passed ? " < " : " >= ") + "stored " + depthText(test->stored) +
                    (test->passed ? ": written\n" : ": rejected, not nearer\n");
         } else if (const auto* shade = std::get_if<ShadeEvent>(&event)) {
-            const Draw& draw = trace.scene->draws[trace.projection->triangles[shade->triangle].draw];
-            out += "  shading (" + std::string(shadingModelName(shade->model)) + ") of the winner, " +
-                   triangleName(trace, shade->triangle) + ":\n";
+            const Draw& draw =
+                trace.scene->draws[trace.projection->triangles[shade->triangle].draw];
+            out += "  shading (" + std::string(shadingModelName(shade->model)) +
+                   ") of the winner, " + triangleName(trace, shade->triangle) + ":\n";
             switch (shade->model) {
                 case ShadingModel::Phong:
-                    out += "    P' = " + f3(shade->pView) + "   N interpolated = " +
-                           f3(shade->nInterpolated) + "\n";
+                    out += "    P' = " + f3(shade->pView) +
+                           "   N interpolated = " + f3(shade->nInterpolated) + "\n";
                     describeSample(out, shade->sample, draw.material);
                     break;
                 case ShadingModel::Flat:
@@ -100,17 +107,15 @@ std::string explainPixel(const FrameTrace& trace, const RecordingProbe& probe) {
             }
             const Conventions& conv = trace.scene->conventions;
             const vec3 c = shade->colour;
-            const bool clamped = c.r > conv.colourScale || c.g > conv.colourScale ||
-                                 c.b > conv.colourScale;
-            out += "    colour = " + f3(c) + " -> bytes (" +
-                   std::to_string(toByte(c.r, conv)) + ", " + std::to_string(toByte(c.g, conv)) +
-                   ", " + std::to_string(toByte(c.b, conv)) + ")" +
-                   (clamped ? "  (clamped at " + formatNumber(conv.colourScale) + ")" : "") +
-                   "\n";
+            const bool clamped =
+                c.r > conv.colourScale || c.g > conv.colourScale || c.b > conv.colourScale;
+            out += "    colour = " + f3(c) + " -> bytes (" + std::to_string(toByte(c.r, conv)) +
+                   ", " + std::to_string(toByte(c.g, conv)) + ", " +
+                   std::to_string(toByte(c.b, conv)) + ")" +
+                   (clamped ? "  (clamped at " + formatNumber(conv.colourScale) + ")" : "") + "\n";
         }
     }
-    if (!anyFragment)
-        out += "  no triangle covers this pixel: it keeps the background colour\n";
+    if (!anyFragment) out += "  no triangle covers this pixel: it keeps the background colour\n";
     return out;
 }
 

@@ -29,7 +29,7 @@ struct FrameTrace {
     std::shared_ptr<const DepthTest> depth;
     std::shared_ptr<const Shading> shading;
 
-    Diagnostics diagnostics;                          // what the stages noted and warned
+    Diagnostics diagnostics;  // what the stages noted and warned
     std::array<double, kStageCount> stageMilliseconds{};
     double totalMilliseconds = 0.0;
 

@@ -12,7 +12,8 @@ class Image {
 public:
     Image() = default;
     Image(int width, int height, const T& fill = T())
-        : m_width(width), m_height(height),
+        : m_width(width),
+          m_height(height),
           m_pixels(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), fill) {}
 
     int width() const { return m_width; }

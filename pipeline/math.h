@@ -39,7 +39,11 @@ inline dmat4 matrixFromRows(const double (&rows)[16]) {
     return m;
 }
 
-inline bool isFinite(double v) { return v - v == 0.0; }
-inline bool isFinite(const dvec3& v) { return isFinite(v.x) && isFinite(v.y) && isFinite(v.z); }
+inline bool isFinite(double v) {
+    return v - v == 0.0;
+}
+inline bool isFinite(const dvec3& v) {
+    return isFinite(v.x) && isFinite(v.y) && isFinite(v.z);
+}
 
 }  // namespace rl

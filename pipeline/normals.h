@@ -16,8 +16,8 @@
 namespace rl {
 
 struct DrawNormals {
-    std::vector<vec3> triangle;             // unit length, or zero for a degenerate triangle
-    std::vector<vec3> vertex;               // unit length, or zero for a vertex with no normal
+    std::vector<vec3> triangle;  // unit length, or zero for a degenerate triangle
+    std::vector<vec3> vertex;    // unit length, or zero for a vertex with no normal
     std::size_t degenerateTriangles = 0;
     std::size_t verticesWithoutNormal = 0;  // used by no triangle, or only by degenerate ones
 };

@@ -7,7 +7,8 @@ namespace rl {
 
 std::uint8_t toByte(float value, const Conventions& conventions) {
     if (!(value > 0.0f)) return 0;  // also NaN
-    const float scaled = std::min(value, conventions.colourScale) * (255.0f / conventions.colourScale);
+    const float scaled =
+        std::min(value, conventions.colourScale) * (255.0f / conventions.colourScale);
     const float rounded = conventions.rounding == ByteRounding::Nearest ? std::floor(scaled + 0.5f)
                                                                         : std::floor(scaled);
     return static_cast<std::uint8_t>(std::clamp(rounded, 0.0f, 255.0f));
@@ -25,9 +26,10 @@ Rgba8Image blank(int width, int height) {
 
 void put(Rgba8Image& image, int x, int y, std::uint8_t r, std::uint8_t g, std::uint8_t b,
          std::uint8_t a) {
-    std::uint8_t* p = image.rgba.data() +
-                      (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
-                       static_cast<std::size_t>(x)) * 4;
+    std::uint8_t* p =
+        image.rgba.data() + (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
+                             static_cast<std::size_t>(x)) *
+                                4;
     p[0] = r;
     p[1] = g;
     p[2] = b;
@@ -89,7 +91,8 @@ Rgba8Image depthImage(const Image<float>& depth, const DepthRange& range) {
             // Near white (255), far dark grey (40), so the farthest surface stays visible
             // against the black background.
             const float t = span > 0.0f ? (z - range.nearest) / span : 0.0f;
-            const std::uint8_t g = unitToByte((255.0f - 215.0f * std::clamp(t, 0.0f, 1.0f)) / 255.0f);
+            const std::uint8_t g =
+                unitToByte((255.0f - 215.0f * std::clamp(t, 0.0f, 1.0f)) / 255.0f);
             put(image, x, y, g, g, g, 255);
         }
     }

@@ -27,11 +27,11 @@ struct PhongSample {
     vec3 r = vec3(0.0f);         // reflection of L about N
     float nDotL = 0.0f;
     float rDotV = 0.0f;
-    bool flipped = false;        // V.N < 0: N was turned toward the viewer
-    bool lightBehind = false;    // N.L < 0: no diffuse, no specular
-    bool noSpecular = false;     // R.V < 0: no specular
-    bool noNormal = false;       // N is zero (a vertex of degenerate triangles only): ambient only
-    bool lightAtPoint = false;   // L = 0: the light sits on the point, ambient only
+    bool flipped = false;       // V.N < 0: N was turned toward the viewer
+    bool lightBehind = false;   // N.L < 0: no diffuse, no specular
+    bool noSpecular = false;    // R.V < 0: no specular
+    bool noNormal = false;      // N is zero (a vertex of degenerate triangles only): ambient only
+    bool lightAtPoint = false;  // L = 0: the light sits on the point, ambient only
 
     vec3 colour() const { return ambient + diffuse + specular; }
 };
@@ -74,9 +74,9 @@ inline void addLight(const Material& m, const ViewLight& light, const vec3& pVie
     }
 }
 
-inline PhongSample phong(const Material& m, const vec3& ambientIntensity,
-                         const ViewLight* lights, std::size_t lightCount, const vec3& pView,
-                         const vec3& nView, bool flipTowardViewer) {
+inline PhongSample phong(const Material& m, const vec3& ambientIntensity, const ViewLight* lights,
+                         std::size_t lightCount, const vec3& pView, const vec3& nView,
+                         bool flipTowardViewer) {
     PhongSample s;
     s.ambient = ambientIntensity * m.ka;
     const float vLength = glm::length(pView);

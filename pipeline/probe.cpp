@@ -30,8 +30,7 @@ void RecordingProbe::onTriangle(std::uint32_t triangle, const TriangleSetup& set
     m_events.emplace_back(TriangleEvent{triangle, setup});
 }
 
-void RecordingProbe::onSpan(std::uint32_t triangle, const Span& span, double xLeft,
-                            double xRight) {
+void RecordingProbe::onSpan(std::uint32_t triangle, const Span& span, double xLeft, double xRight) {
     if (m_triangle && *m_triangle != triangle) return;
     if (m_pixel) {
         if (span.y != m_pixel->y || m_pixel->x < span.xBegin || m_pixel->x >= span.xEnd) return;

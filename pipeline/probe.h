@@ -47,11 +47,11 @@ struct ShadeEvent {
     std::uint32_t triangle = 0;
     int x = 0, y = 0;
     ShadingModel model = ShadingModel::Phong;
-    vec3 pView = vec3(0.0f);        // P' (Phong), the barycentre (flat)
+    vec3 pView = vec3(0.0f);  // P' (Phong), the barycentre (flat)
     vec3 nInterpolated = vec3(0.0f);
-    PhongSample sample;             // Phong: at P'; flat: at the barycentre
+    PhongSample sample;                   // Phong: at P'; flat: at the barycentre
     std::array<vec3, 3> vertexColours{};  // Gouraud: the colours being interpolated
-    vec3 colour = vec3(0.0f);       // before clamping
+    vec3 colour = vec3(0.0f);             // before clamping
 };
 
 using ProbeEvent = std::variant<TriangleEvent, SpanEvent, DepthTestEvent, ShadeEvent>;

@@ -27,12 +27,15 @@ namespace {
 
 double snap(double coordinate, RasterRules::VertexSnap rule) {
     switch (rule) {
-        case RasterRules::VertexSnap::Truncate: return std::trunc(coordinate);  // C's (int)
+        case RasterRules::VertexSnap::Truncate:
+            return std::trunc(coordinate);  // C's (int)
     }
     return coordinate;
 }
 
-bool finite2(const dvec2& p) { return isFinite(p.x) && isFinite(p.y); }
+bool finite2(const dvec2& p) {
+    return isFinite(p.x) && isFinite(p.y);
+}
 
 }  // namespace
 
@@ -61,8 +64,8 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
     }
     // The near plane must lie strictly in front of the camera, or a vertex at w = 0 would
     // be divided by 0.
-    const double requested = scene.nearPlane.fixedW ? *scene.nearPlane.fixedW
-                                                    : scene.nearPlane.autoFraction * wMax;
+    const double requested =
+        scene.nearPlane.fixedW ? *scene.nearPlane.fixedW : scene.nearPlane.autoFraction * wMax;
     out.nearW = std::max(requested, std::numeric_limits<double>::min());
 
     for (std::size_t d = 0; d < scene.draws.size(); ++d) {
@@ -184,14 +187,14 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
     const SourceLocation where{scene.name, 0, 0};
     const std::size_t total = scene.triangleCount();
     if (total > 0 && out.behind == total) {
-        diagnostics.warn(where, "every triangle is behind the camera (is N pointing away from "
-                                "the object?): the image is empty");
+        diagnostics.warn(where,
+                         "every triangle is behind the camera (is N pointing away from "
+                         "the object?): the image is empty");
     } else if (out.behind + out.clipped > 0) {
-        diagnostics.note(where, std::to_string(out.clipped) +
-                                    " triangles cross the near plane z = " +
-                                    formatNumber(out.nearW) + " and were clipped; " +
-                                    std::to_string(out.behind) +
-                                    " are wholly behind it and were not drawn");
+        diagnostics.note(
+            where, std::to_string(out.clipped) + " triangles cross the near plane z = " +
+                       formatNumber(out.nearW) + " and were clipped; " +
+                       std::to_string(out.behind) + " are wholly behind it and were not drawn");
     }
     if (out.naive && out.throughZeroOrBehind > 0) {
         diagnostics.warn(where, "naive projection: " + std::to_string(out.throughZeroOrBehind) +

@@ -42,8 +42,8 @@ struct ClipVertex {
 
 struct ScreenTriangle {
     std::uint32_t draw = 0;
-    std::uint32_t source = 0;              // index of the mesh triangle it comes from
-    std::array<std::uint32_t, 3> v{};      // indices into the draw's projected vertices
+    std::uint32_t source = 0;          // index of the mesh triangle it comes from
+    std::array<std::uint32_t, 3> v{};  // indices into the draw's projected vertices
 };
 
 struct DrawProjection {
@@ -51,25 +51,25 @@ struct DrawProjection {
     std::uint32_t originalVertexCount = 0;
     // Per vertex: first the draw's own vertices, then those made by clipping.
     std::vector<dvec4> pView;
-    std::vector<dvec4> pClip;              // clipFromView * pView (w = near on made vertices)
-    std::vector<dvec2> pNdc;               // [-1, 1] on screen; meaningless where !inFront
-    std::vector<dvec2> pScreenExact;       // pixels, before snapping
-    std::vector<dvec2> pScreen;            // pixels, after snapping (what is rasterized)
-    std::vector<float> depth;              // what the depth buffer compares (view z)
-    std::vector<std::uint8_t> inFront;     // 1 when the vertex was projected
-    std::vector<ClipVertex> generated;     // vertex originalVertexCount + i comes from generated[i]
-    std::vector<TriangleFate> fate;        // per mesh triangle
+    std::vector<dvec4> pClip;           // clipFromView * pView (w = near on made vertices)
+    std::vector<dvec2> pNdc;            // [-1, 1] on screen; meaningless where !inFront
+    std::vector<dvec2> pScreenExact;    // pixels, before snapping
+    std::vector<dvec2> pScreen;         // pixels, after snapping (what is rasterized)
+    std::vector<float> depth;           // what the depth buffer compares (view z)
+    std::vector<std::uint8_t> inFront;  // 1 when the vertex was projected
+    std::vector<ClipVertex> generated;  // vertex originalVertexCount + i comes from generated[i]
+    std::vector<TriangleFate> fate;     // per mesh triangle
 };
 
 struct Projection {
-    double nearW = 0.0;                     // the near plane, w = nearW in clip space
+    double nearW = 0.0;  // the near plane, w = nearW in clip space
     bool naive = false;
     std::vector<DrawProjection> draws;
     std::vector<ScreenTriangle> triangles;  // what scan conversion receives, in draw order
 
     std::size_t inside = 0, clipped = 0, behind = 0, nonFinite = 0;
-    std::size_t throughZeroOrBehind = 0;    // naive projection: triangles with a vertex z <= 0
-    std::size_t outsideGuardBand = 0;       // vertices pulled in to the guard band
+    std::size_t throughZeroOrBehind = 0;  // naive projection: triangles with a vertex z <= 0
+    std::size_t outsideGuardBand = 0;     // vertices pulled in to the guard band
 };
 
 // Snapped screen coordinates are kept within +-kGuardBand pixels.

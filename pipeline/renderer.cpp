@@ -6,22 +6,32 @@ namespace rl {
 
 const char* stageName(StageId stage) {
     switch (stage) {
-        case StageId::CameraBasis: return "camera basis";
-        case StageId::ViewTransform: return "view transform";
-        case StageId::Normals: return "normals";
-        case StageId::Projection: return "projection";
-        case StageId::ScanConversion: return "scan conversion";
-        case StageId::DepthTest: return "depth test";
-        case StageId::Shading: return "shading";
+        case StageId::CameraBasis:
+            return "camera basis";
+        case StageId::ViewTransform:
+            return "view transform";
+        case StageId::Normals:
+            return "normals";
+        case StageId::Projection:
+            return "projection";
+        case StageId::ScanConversion:
+            return "scan conversion";
+        case StageId::DepthTest:
+            return "depth test";
+        case StageId::Shading:
+            return "shading";
     }
     return "";
 }
 
 std::string FrameTrace::skipReason(StageId stage) const {
     switch (stage) {
-        case StageId::CameraBasis: return cameraBasis ? cameraBasis->skipReason : "";
-        case StageId::Normals: return normals ? normals->skipReason : "";
-        default: return "";
+        case StageId::CameraBasis:
+            return cameraBasis ? cameraBasis->skipReason : "";
+        case StageId::Normals:
+            return normals ? normals->skipReason : "";
+        default:
+            return "";
     }
 }
 
@@ -53,8 +63,7 @@ Result<FrameTrace> run(std::shared_ptr<const Scene> scenePtr, const RenderOption
     };
 
     Result<CameraBasis> basis = CameraBasis{};
-    timed(StageId::CameraBasis,
-          [&] { basis = CameraBasisStage().run(scene, trace.diagnostics); });
+    timed(StageId::CameraBasis, [&] { basis = CameraBasisStage().run(scene, trace.diagnostics); });
     if (!basis) return basis.error();
     trace.cameraBasis = std::make_shared<const CameraBasis>(std::move(basis).value());
 
@@ -79,8 +88,8 @@ Result<FrameTrace> run(std::shared_ptr<const Scene> scenePtr, const RenderOption
     });
     timed(StageId::Shading, [&] {
         trace.shading = std::make_shared<const Shading>(
-            ShadingStage().run(scene, *trace.view, *trace.normals, *trace.projection,
-                               *trace.depth, options.shading, probe));
+            ShadingStage().run(scene, *trace.view, *trace.normals, *trace.projection, *trace.depth,
+                               options.shading, probe));
     });
     if (trace.scan->spans.empty() && trace.scan->offscreen > 0) {
         trace.diagnostics.warn(SourceLocation{scene.name, 0, 0},

@@ -82,8 +82,8 @@ TriangleSetup setupTriangle(const std::array<dvec2, 3>& p) {
     const ScanEdge& l = s.longEdge;
     const ScanEdge& u = s.upperEdge;
     // (s1 - s0) x (s2 - s0): exact in 64 bits inside the guard band (|coordinate| <= 2^29).
-    s.doubleArea = (u.xBottom - u.xTop) * (l.yBottom - l.yTop) -
-                   (u.yBottom - u.yTop) * (l.xBottom - l.xTop);
+    s.doubleArea =
+        (u.xBottom - u.xTop) * (l.yBottom - l.yTop) - (u.yBottom - u.yTop) * (l.xBottom - l.xTop);
     // The middle vertex is right of the long edge when the area is positive.
     s.longEdgeOnLeft = s.doubleArea > 0;
     // Inclusive rule: every row from the top vertex's to the bottom vertex's.
@@ -144,7 +144,8 @@ ScanConversion ScanConversionStage::run(const Scene& scene, const Projection& pr
         // lower part: from the middle vertex's row down.
         const std::int64_t yMiddle = s.upperEdge.yBottom;
         const bool flatBottom = s.lowerEdge.yBottom == yMiddle;
-        const std::int32_t upperLast = flatBottom ? rowEnd : std::min<std::int32_t>(rowEnd, toRow(yMiddle - 1));
+        const std::int32_t upperLast =
+            flatBottom ? rowEnd : std::min<std::int32_t>(rowEnd, toRow(yMiddle - 1));
         if (rowBegin <= upperLast) walk(s.upperEdge, rowBegin, upperLast);
         if (!flatBottom) {
             const std::int32_t lowerFirst = std::max(rowBegin, upperLast + 1);

@@ -47,12 +47,12 @@ struct ScanEdge {
 
 // The edge table of one triangle.
 struct TriangleSetup {
-    std::array<dvec2, 3> sorted{};  // vertices sorted by y, top first
-    std::array<int, 3> order{};     // sorted[k] is the triangle's vertex order[k]
-    std::int64_t doubleArea = 0;    // (s1 - s0) x (s2 - s0) of the sorted vertices
+    std::array<dvec2, 3> sorted{};            // vertices sorted by y, top first
+    std::array<int, 3> order{};               // sorted[k] is the triangle's vertex order[k]
+    std::int64_t doubleArea = 0;              // (s1 - s0) x (s2 - s0) of the sorted vertices
     ScanEdge longEdge, upperEdge, lowerEdge;  // top-bottom, top-middle, middle-bottom
-    bool longEdgeOnLeft = false;    // the middle vertex lies right of the long edge
-    std::int32_t yFirst = 0, yLast = -1;  // sampled rows, before screen clipping
+    bool longEdgeOnLeft = false;              // the middle vertex lies right of the long edge
+    std::int32_t yFirst = 0, yLast = -1;      // sampled rows, before screen clipping
     bool degenerate() const { return doubleArea == 0; }
 };
 
@@ -62,9 +62,9 @@ TriangleSetup setupTriangle(const std::array<dvec2, 3>& pScreen);
 struct ScanConversion {
     std::vector<std::uint32_t> spanStart;  // spans of triangle t: [spanStart[t], spanStart[t+1])
     std::vector<Span> spans;
-    std::size_t degenerate = 0;            // zero area on screen: not scanned
-    std::size_t offscreen = 0;             // no sampled pixel on the screen
-    std::size_t pixels = 0;                // covered samples, all triangles together
+    std::size_t degenerate = 0;  // zero area on screen: not scanned
+    std::size_t offscreen = 0;   // no sampled pixel on the screen
+    std::size_t pixels = 0;      // covered samples, all triangles together
 
     std::size_t triangleCount() const { return spanStart.empty() ? 0 : spanStart.size() - 1; }
 };

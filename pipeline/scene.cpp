@@ -4,9 +4,12 @@ namespace rl {
 
 const char* shadingModelName(ShadingModel model) {
     switch (model) {
-        case ShadingModel::Flat: return "flat";
-        case ShadingModel::Gouraud: return "gouraud";
-        case ShadingModel::Phong: return "phong";
+        case ShadingModel::Flat:
+            return "flat";
+        case ShadingModel::Gouraud:
+            return "gouraud";
+        case ShadingModel::Phong:
+            return "phong";
     }
     return "phong";
 }
@@ -18,7 +21,9 @@ std::optional<ShadingModel> shadingModelFromName(std::string_view name) {
     return std::nullopt;
 }
 
-RasterRules RasterRules::course() { return RasterRules{}; }
+RasterRules RasterRules::course() {
+    return RasterRules{};
+}
 
 std::size_t Scene::triangleCount() const {
     std::size_t n = 0;

@@ -21,25 +21,25 @@ namespace rl {
 
 // A triangle mesh in model space. Vertex indices are 0-based here (files are 1-based).
 struct Mesh {
-    std::vector<dvec4> positions;                   // model space, w = 1 for course files
+    std::vector<dvec4> positions;  // model space, w = 1 for course files
     std::vector<std::array<std::uint32_t, 3>> triangles;
-    SourceLocation source;                          // the file it was read from
-    std::vector<int> triangleLines;                 // source line of each triangle (may be empty)
+    SourceLocation source;           // the file it was read from
+    std::vector<int> triangleLines;  // source line of each triangle (may be empty)
 };
 
 // Phong material as the course writes it: I = Ia*ka + Il*Od*kd*(N.L) + Il*ks*(R.V)^n.
 struct Material {
-    float ka = 0.0f;                  // ambient coefficient
-    vec3 kd = vec3(0.0f);             // diffuse coefficient, per channel (a scalar kd is broadcast)
-    vec3 od = vec3(0.0f);             // diffuse colour of the object, 0..1
-    float ks = 0.0f;                  // specular coefficient
-    float shininess = 1.0f;           // n, the Phong exponent
+    float ka = 0.0f;         // ambient coefficient
+    vec3 kd = vec3(0.0f);    // diffuse coefficient, per channel (a scalar kd is broadcast)
+    vec3 od = vec3(0.0f);    // diffuse colour of the object, 0..1
+    float ks = 0.0f;         // specular coefficient
+    float shininess = 1.0f;  // n, the Phong exponent
 };
 
 // A point light (w = 1) or a directional light (w = 0, position is the direction toward it).
 struct Light {
     dvec4 pWorld = dvec4(0.0, 0.0, 0.0, 1.0);
-    vec3 intensity = vec3(0.0f);      // Il, in the scene's colour scale
+    vec3 intensity = vec3(0.0f);  // Il, in the scene's colour scale
     SourceLocation where;
 };
 
@@ -68,7 +68,7 @@ const char* shadingModelName(ShadingModel model);  // "flat", "gouraud", "phong"
 std::optional<ShadingModel> shadingModelFromName(std::string_view name);
 
 struct Draw {
-    std::string name;                          // for messages and views, e.g. "calice2.byu"
+    std::string name;  // for messages and views, e.g. "calice2.byu"
     std::shared_ptr<const Mesh> mesh;
     Material material;
     dmat4 worldFromModel = dmat4(1.0);
@@ -89,10 +89,10 @@ enum class ByteRounding : std::uint8_t {
 };
 
 struct Conventions {
-    bool ndcYUp = true;             // NDC y = +1 is the top row (the course flips y)
+    bool ndcYUp = true;  // NDC y = +1 is the top row (the course flips y)
     DepthSource depth = DepthSource::ViewZ;
     bool flipNormalsTowardViewer = true;  // N := -N when V.N < 0 (seed 000)
-    float colourScale = 255.0f;     // the value that becomes byte 255 (course colours are 0..255)
+    float colourScale = 255.0f;  // the value that becomes byte 255 (course colours are 0..255)
     ByteRounding rounding = ByteRounding::Truncate;
     vec4 background = vec4(0.0f, 0.0f, 0.0f, 1.0f);  // RGBA 0..1 of pixels no triangle covers
 };
@@ -101,8 +101,8 @@ struct Conventions {
 // pixels on an edge belong to the triangle, and how attributes are interpolated. The
 // course's rules (seed 000 as written) sample pixel (x, y) at the integer point (x, y).
 struct RasterRules {
-    enum class VertexSnap : std::uint8_t { Truncate };  // (int) of the screen coordinate
-    enum class FillRule : std::uint8_t { Inclusive };   // samples on an edge are inside
+    enum class VertexSnap : std::uint8_t { Truncate };         // (int) of the screen coordinate
+    enum class FillRule : std::uint8_t { Inclusive };          // samples on an edge are inside
     enum class Interpolation : std::uint8_t { ScreenAffine };  // screen barycentrics on view P, N
 
     VertexSnap snap = VertexSnap::Truncate;

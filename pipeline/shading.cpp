@@ -78,8 +78,8 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
     std::vector<DrawVertices> vertices;
     vertices.reserve(projection.draws.size());
     for (std::size_t d = 0; d < projection.draws.size(); ++d)
-        vertices.push_back(drawVertices(projection.draws[d],
-                                        normals.skipped ? nullptr : &normals.draws[d]));
+        vertices.push_back(
+            drawVertices(projection.draws[d], normals.skipped ? nullptr : &normals.draws[d]));
 
     // Flat and Gouraud colours, computed the first time a visible pixel needs them.
     struct FlatShade {
@@ -96,8 +96,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
         const auto& corners = draw.mesh->triangles[tri.source];
         const auto& pv = vertices[tri.draw].p;
         const vec3 barycentre = (pv[corners[0]] + pv[corners[1]] + pv[corners[2]]) / 3.0f;
-        const vec3 n =
-            normals.skipped ? vec3(0.0f) : normals.draws[tri.draw].triangle[tri.source];
+        const vec3 n = normals.skipped ? vec3(0.0f) : normals.draws[tri.draw].triangle[tri.source];
         return phong(draw.material, scene.ambientIntensity, lights, lightCount, barycentre, n,
                      flip);
     };

@@ -27,8 +27,8 @@ struct ShadingOptions {
 };
 
 struct Shading {
-    Image<vec3> colour;             // unclamped, scene colour scale; background where empty
-    Image<vec3> normal;             // unit normal used per pixel (only with keepNormals)
+    Image<vec3> colour;  // unclamped, scene colour scale; background where empty
+    Image<vec3> normal;  // unit normal used per pixel (only with keepNormals)
     std::size_t shadedPixels = 0;
     std::size_t phongEvaluations = 0;
     std::size_t flipped = 0;        // V.N < 0: the normal was turned toward the viewer
@@ -42,8 +42,8 @@ class ShadingStage {
 public:
     template <typename Probe>
     Shading run(const Scene& scene, const ViewTransform& view, const Normals& normals,
-                const Projection& projection, const DepthTest& depth,
-                const ShadingOptions& options, Probe& probe) const;
+                const Projection& projection, const DepthTest& depth, const ShadingOptions& options,
+                Probe& probe) const;
     Shading run(const Scene& scene, const ViewTransform& view, const Normals& normals,
                 const Projection& projection, const DepthTest& depth,
                 const ShadingOptions& options = {}) const;

@@ -22,9 +22,9 @@ struct Token {
 };
 
 struct TextLine {
-    int number = 0;              // 1-based line number
-    std::vector<Token> tokens;   // never empty for lines returned by LineScanner::next
-    int endColumn = 1;           // column just after the last token
+    int number = 0;             // 1-based line number
+    std::vector<Token> tokens;  // never empty for lines returned by LineScanner::next
+    int endColumn = 1;          // column just after the last token
 };
 
 class LineScanner {

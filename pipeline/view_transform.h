@@ -18,11 +18,11 @@ struct ViewLight {
 };
 
 struct ViewTransform {
-    std::vector<dmat4> viewFromModel;        // per draw
-    std::vector<std::vector<dvec4>> pView;   // per draw, per vertex
+    std::vector<dmat4> viewFromModel;       // per draw
+    std::vector<std::vector<dvec4>> pView;  // per draw, per vertex
     std::vector<ViewLight> lights;
-    std::size_t verticesInFront = 0;         // z > 0
-    std::size_t verticesBehind = 0;          // z <= 0: at or behind the camera's plane
+    std::size_t verticesInFront = 0;  // z > 0
+    std::size_t verticesBehind = 0;   // z <= 0: at or behind the camera's plane
 };
 
 class ViewTransformStage {

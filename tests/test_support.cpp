@@ -11,9 +11,13 @@ QString samplesDir() {
     return QDir(dir).exists() ? QDir(dir).absolutePath() : QString();
 }
 
-QString sourceDir() { return QStringLiteral(RASTERLAB_SOURCE_DIR); }
+QString sourceDir() {
+    return QStringLiteral(RASTERLAB_SOURCE_DIR);
+}
 
-QString cliPath() { return QStringLiteral(RASTERLAB_CLI_PATH); }
+QString cliPath() {
+    return QStringLiteral(RASTERLAB_CLI_PATH);
+}
 
 QByteArray readFile(const QString& path) {
     QFile file(path);
@@ -33,8 +37,8 @@ std::shared_ptr<const rl::Mesh> makeMesh(std::vector<rl::dvec3> positions,
     return mesh;
 }
 
-rl::Scene makeScene(const rl::CourseCamera& camera, std::shared_ptr<const rl::Mesh> mesh,
-                    int width, int height, rl::ShadingModel shading) {
+rl::Scene makeScene(const rl::CourseCamera& camera, std::shared_ptr<const rl::Mesh> mesh, int width,
+                    int height, rl::ShadingModel shading) {
     rl::Scene scene;
     scene.name = "<test>";
     scene.width = width;

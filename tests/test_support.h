@@ -28,8 +28,8 @@ std::shared_ptr<const rl::Mesh> makeMesh(std::vector<rl::dvec3> positions,
                                          std::vector<std::array<std::uint32_t, 3>> triangles);
 
 // A course scene with one draw: camera, one point light, material, mesh, image size.
-rl::Scene makeScene(const rl::CourseCamera& camera, std::shared_ptr<const rl::Mesh> mesh,
-                    int width, int height, rl::ShadingModel shading = rl::ShadingModel::Phong);
+rl::Scene makeScene(const rl::CourseCamera& camera, std::shared_ptr<const rl::Mesh> mesh, int width,
+                    int height, rl::ShadingModel shading = rl::ShadingModel::Phong);
 
 // A projection holding screen triangles given directly in pixels (one draw), with a depth
 // per vertex (1 when not given), for the scan conversion and depth test suites.
@@ -59,27 +59,27 @@ QString describe(const glm::vec<L, T, Q>& v) {
 }  // namespace testing
 
 // Compare vectors component by component within a tolerance, printing both on failure.
-#define RL_COMPARE_VEC(actual, expected, tolerance)                                          \
-    do {                                                                                     \
-        const auto a_ = (actual);                                                            \
-        const auto e_ = (expected);                                                          \
-        for (int k_ = 0; k_ < a_.length(); ++k_) {                                           \
-            if (!(std::abs(double(a_[k_]) - double(e_[k_])) <= (tolerance)))                 \
-                QFAIL(qPrintable(QStringLiteral("%1 = %2, expected %3 (tolerance %4)")       \
-                                     .arg(QStringLiteral(#actual), testing::describe(a_),    \
-                                          testing::describe(e_))                             \
-                                     .arg(tolerance)));                                      \
-        }                                                                                    \
+#define RL_COMPARE_VEC(actual, expected, tolerance)                                       \
+    do {                                                                                  \
+        const auto a_ = (actual);                                                         \
+        const auto e_ = (expected);                                                       \
+        for (int k_ = 0; k_ < a_.length(); ++k_) {                                        \
+            if (!(std::abs(double(a_[k_]) - double(e_[k_])) <= (tolerance)))              \
+                QFAIL(qPrintable(QStringLiteral("%1 = %2, expected %3 (tolerance %4)")    \
+                                     .arg(QStringLiteral(#actual), testing::describe(a_), \
+                                          testing::describe(e_))                          \
+                                     .arg(tolerance)));                                   \
+        }                                                                                 \
     } while (false)
 
-#define RL_COMPARE_NEAR(actual, expected, tolerance)                                         \
-    do {                                                                                     \
-        const double a_ = double(actual);                                                    \
-        const double e_ = double(expected);                                                  \
-        if (!(std::abs(a_ - e_) <= (tolerance)))                                             \
-            QFAIL(qPrintable(QStringLiteral("%1 = %2, expected %3 (tolerance %4)")           \
-                                 .arg(QStringLiteral(#actual))                               \
-                                 .arg(a_, 0, 'g', 17)                                        \
-                                 .arg(e_, 0, 'g', 17)                                        \
-                                 .arg(tolerance)));                                          \
+#define RL_COMPARE_NEAR(actual, expected, tolerance)                               \
+    do {                                                                           \
+        const double a_ = double(actual);                                          \
+        const double e_ = double(expected);                                        \
+        if (!(std::abs(a_ - e_) <= (tolerance)))                                   \
+            QFAIL(qPrintable(QStringLiteral("%1 = %2, expected %3 (tolerance %4)") \
+                                 .arg(QStringLiteral(#actual))                     \
+                                 .arg(a_, 0, 'g', 17)                              \
+                                 .arg(e_, 0, 'g', 17)                              \
+                                 .arg(tolerance)));                                \
     } while (false)

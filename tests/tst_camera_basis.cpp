@@ -34,13 +34,15 @@ private slots:
         auto basis = CameraBasisStage().run(sceneWith(testing::seedCamera()), diagnostics);
         QVERIFY(basis.ok());
         RL_COMPARE_NEAR(basis->nLength, 1.2142787982996328, 1e-12);
-        RL_COMPARE_VEC(basis->n, dvec3(0.549297246179384, 0.1416478655814903, -0.8235341022179671), 1e-6);
+        RL_COMPARE_VEC(basis->n, dvec3(0.549297246179384, 0.1416478655814903, -0.8235341022179671),
+                       1e-6);
         RL_COMPARE_NEAR(basis->vDotN, 0.4249435967444709, 1e-12);
         RL_COMPARE_VEC(basis->vProjection,
                        dvec3(0.23342034747330054, 0.06019235347137584, -0.3499555434382317), 1e-12);
         RL_COMPARE_VEC(basis->vOrthogonal,
                        dvec3(-0.23342034747330054, 2.939807646528624, 0.3499555434382317), 1e-12);
-        RL_COMPARE_VEC(basis->v, dvec3(-0.07859929059124296, 0.9899171087400238, 0.117840015878925), 1e-6);
+        RL_COMPARE_VEC(basis->v, dvec3(-0.07859929059124296, 0.9899171087400238, 0.117840015878925),
+                       1e-6);
         RL_COMPARE_VEC(basis->u, dvec3(0.8319222841457599, 0.0, 0.5548921635252217), 1e-6);
         QVERIFY(basis->maxResidual() < 1e-15);
         QVERIFY(!basis->skipped);
@@ -76,7 +78,8 @@ private slots:
             auto basis = CameraBasisStage().run(sceneWith(c), diagnostics);
             QVERIFY(basis.ok());
             if (basis->maxResidual() > 1e-12)
-                QFAIL(qPrintable(QStringLiteral("camera %1: residual %2").arg(i).arg(basis->maxResidual())));
+                QFAIL(qPrintable(
+                    QStringLiteral("camera %1: residual %2").arg(i).arg(basis->maxResidual())));
             // U, V and N span the same plane as the given N and V: U is orthogonal to both.
             QVERIFY(std::abs(glm::dot(basis->u, glm::normalize(c.v))) < 1e-12);
             ++tested;
@@ -89,19 +92,30 @@ private slots:
         QTest::addColumn<double>("value");
         QTest::addColumn<QString>("message");
         QTest::newRow("N zero") << 0 << 0.0
-            << "camera.cfg:2:1: N, the view direction, is the zero vector: it must point from the camera toward the scene";
-        QTest::newRow("V zero") << 1 << 0.0
+                                << "camera.cfg:2:1: N, the view direction, is the zero vector: it "
+                                   "must point from the camera toward the scene";
+        QTest::newRow("V zero")
+            << 1 << 0.0
             << "camera.cfg:3:1: V, the up vector, is the zero vector: it must say which way is up";
         QTest::newRow("V parallel to N") << 1 << 2.0
-            << "camera.cfg:3:1: V (1.334, 0.344, -2) is parallel to N (0.667, 0.172, -1): Gram-Schmidt leaves nothing of V, so 'up' is undefined; choose a V that is not along N";
-        QTest::newRow("V opposite to N") << 1 << -1.0
-            << "camera.cfg:3:1: V (-0.667, -0.172, 1) is parallel to N (0.667, 0.172, -1): Gram-Schmidt leaves nothing of V, so 'up' is undefined; choose a V that is not along N";
-        QTest::newRow("d zero") << 2 << 0.0
-            << "camera.cfg:4:1: d, the distance to the projection plane, is 0: the projection (d/hx) x/z would squash every point to the centre";
+                                         << "camera.cfg:3:1: V (1.334, 0.344, -2) is parallel to N "
+                                            "(0.667, 0.172, -1): Gram-Schmidt leaves nothing of V, "
+                                            "so 'up' is undefined; choose a V that is not along N";
+        QTest::newRow("V opposite to N")
+            << 1 << -1.0
+            << "camera.cfg:3:1: V (-0.667, -0.172, 1) is parallel to N (0.667, 0.172, -1): "
+               "Gram-Schmidt leaves nothing of V, so 'up' is undefined; choose a V that is not "
+               "along N";
+        QTest::newRow("d zero")
+            << 2 << 0.0
+            << "camera.cfg:4:1: d, the distance to the projection plane, is 0: the projection "
+               "(d/hx) x/z would squash every point to the centre";
         QTest::newRow("hx zero") << 3 << 0.0
-            << "camera.cfg:4:4: hx, the horizontal half-size of the window, is 0: the projection (d/hx) x/z divides by it";
+                                 << "camera.cfg:4:4: hx, the horizontal half-size of the window, "
+                                    "is 0: the projection (d/hx) x/z divides by it";
         QTest::newRow("hy zero") << 4 << 0.0
-            << "camera.cfg:4:8: hy, the vertical half-size of the window, is 0: the projection (d/hy) y/z divides by it";
+                                 << "camera.cfg:4:8: hy, the vertical half-size of the window, is "
+                                    "0: the projection (d/hy) y/z divides by it";
     }
 
     void degenerateCameras() {
@@ -110,11 +124,21 @@ private slots:
         QFETCH(QString, message);
         CourseCamera c = locatedSeedCamera();
         switch (field) {
-            case 0: c.n = dvec3(value); break;
-            case 1: c.v = value == 0.0 ? dvec3(0.0) : value * c.n; break;
-            case 2: c.d = value; break;
-            case 3: c.hx = value; break;
-            case 4: c.hy = value; break;
+            case 0:
+                c.n = dvec3(value);
+                break;
+            case 1:
+                c.v = value == 0.0 ? dvec3(0.0) : value * c.n;
+                break;
+            case 2:
+                c.d = value;
+                break;
+            case 3:
+                c.hx = value;
+                break;
+            case 4:
+                c.hy = value;
+                break;
         }
         Diagnostics diagnostics;
         auto basis = CameraBasisStage().run(sceneWith(c), diagnostics);
@@ -132,12 +156,17 @@ private slots:
         auto basis = CameraBasisStage().run(sceneWith(c), diagnostics);
         QVERIFY(basis.ok());
         QCOMPARE(diagnostics.size(), std::size_t(3));
-        QCOMPARE(QString::fromStdString(diagnostics.items()[0].toString()),
-                 QStringLiteral("camera.cfg:4:4: warning: hx is negative: the image is mirrored left to right"));
-        QCOMPARE(QString::fromStdString(diagnostics.items()[1].toString()),
-                 QStringLiteral("camera.cfg:4:8: warning: hy is negative: the image is mirrored top to bottom"));
+        QCOMPARE(
+            QString::fromStdString(diagnostics.items()[0].toString()),
+            QStringLiteral(
+                "camera.cfg:4:4: warning: hx is negative: the image is mirrored left to right"));
+        QCOMPARE(
+            QString::fromStdString(diagnostics.items()[1].toString()),
+            QStringLiteral(
+                "camera.cfg:4:8: warning: hy is negative: the image is mirrored top to bottom"));
         QCOMPARE(QString::fromStdString(diagnostics.items()[2].toString()),
-                 QStringLiteral("camera.cfg:4:1: warning: d is negative: the image is turned upside down and mirrored"));
+                 QStringLiteral("camera.cfg:4:1: warning: d is negative: the image is turned "
+                                "upside down and mirrored"));
     }
 
     void sceneWithoutCameraSkips() {

@@ -73,7 +73,9 @@ QString printedPath(const QTemporaryDir& dir, const QString& name) {
     return QDir(QFileInfo(dir.path()).canonicalFilePath()).absoluteFilePath(name);
 }
 
-bool isBlack(QRgb c) { return qRed(c) == 0 && qGreen(c) == 0 && qBlue(c) == 0; }
+bool isBlack(QRgb c) {
+    return qRed(c) == 0 && qGreen(c) == 0 && qBlue(c) == 0;
+}
 
 // Which pixels are not black, row by row.
 QVector<bool> coverage(const QImage& image) {
@@ -84,7 +86,9 @@ QVector<bool> coverage(const QImage& image) {
     return mask;
 }
 
-qsizetype countTrue(const QVector<bool>& mask) { return mask.count(true); }
+qsizetype countTrue(const QVector<bool>& mask) {
+    return mask.count(true);
+}
 
 const char* const kTryHelp = "Try 'rasterlab-cli --help' for more information.";
 
@@ -136,8 +140,7 @@ void TestCli::renderDefaultScene() {
     const QStringList out = linesOf(run.out);
     QCOMPARE(out.size(), 3);
     QCOMPARE(out[0], QStringLiteral("rendering the embedded default scene"));
-    QCOMPARE(out[1],
-             QStringLiteral("wrote %1 (image, 320x240)").arg(printedPath(dir, "out.png")));
+    QCOMPARE(out[1], QStringLiteral("wrote %1 (image, 320x240)").arg(printedPath(dir, "out.png")));
     static const QRegularExpression summary(
         QStringLiteral("^  7776 triangles, phong shading, (\\d+) pixels covered, [0-9.]+ ms$"));
     const auto match = summary.match(out[2]);
@@ -179,13 +182,15 @@ void TestCli::shadingModelsDiffer() {
     }
     for (int i = 0; i < images.size(); ++i) {
         for (int j = i + 1; j < images.size(); ++j) {
-            QVERIFY2(images[i] != images[j],
-                     qPrintable(QStringLiteral("%1 and %2 give the same image")
-                                    .arg(models[i], models[j])));
+            QVERIFY2(
+                images[i] != images[j],
+                qPrintable(
+                    QStringLiteral("%1 and %2 give the same image").arg(models[i], models[j])));
             // The shading model changes colours, never which pixels are covered.
-            QVERIFY2(coverage(images[i]) == coverage(images[j]),
-                     qPrintable(QStringLiteral("%1 and %2 cover different pixels")
-                                    .arg(models[i], models[j])));
+            QVERIFY2(
+                coverage(images[i]) == coverage(images[j]),
+                qPrintable(
+                    QStringLiteral("%1 and %2 cover different pixels").arg(models[i], models[j])));
         }
     }
 }
@@ -265,9 +270,8 @@ void TestCli::usageErrors_data() {
     QTest::newRow("pixel limit not a number")
         << (QStringList({"render", "--max-pixels", "lots"}) + out)
         << "--max-pixels expects a positive whole number, found 'lots'";
-    QTest::newRow("unknown shading")
-        << (QStringList({"render", "--shading", "toon"}) + out)
-        << "--shading expects phong, flat or gouraud, found 'toon'";
+    QTest::newRow("unknown shading") << (QStringList({"render", "--shading", "toon"}) + out)
+                                     << "--shading expects phong, flat or gouraud, found 'toon'";
     QTest::newRow("negative near") << (QStringList({"render", "--near", "-1"}) + out)
                                    << "--near expects a positive number, found '-1'";
     QTest::newRow("zero near") << (QStringList({"render", "--near", "0"}) + out)
@@ -286,14 +290,14 @@ void TestCli::usageErrors_data() {
     QTest::newRow("unknown command") << QStringList({"paint", "--output", "out.png"})
                                      << "unknown command 'paint' (commands: render, "
                                         "generate-default-scene)";
-    QTest::newRow("unknown option") << (QStringList({"render", "--bogus"}) + out)
-                                    << "Unknown option 'bogus'.";
-    QTest::newRow("stray argument") << (QStringList({"render", "scene.cfg"}) + out)
-                                    << "unexpected argument 'scene.cfg'";
-    QTest::newRow("option without value") << QStringList({"render", "--output"})
-                                          << "Missing value after '--output'.";
-    QTest::newRow("generate without dir") << QStringList({"generate-default-scene"})
-                                          << "generate-default-scene needs --dir DIR";
+    QTest::newRow("unknown option")
+        << (QStringList({"render", "--bogus"}) + out) << "Unknown option 'bogus'.";
+    QTest::newRow("stray argument")
+        << (QStringList({"render", "scene.cfg"}) + out) << "unexpected argument 'scene.cfg'";
+    QTest::newRow("option without value")
+        << QStringList({"render", "--output"}) << "Missing value after '--output'.";
+    QTest::newRow("generate without dir")
+        << QStringList({"generate-default-scene"}) << "generate-default-scene needs --dir DIR";
 }
 
 void TestCli::usageErrors() {
@@ -320,35 +324,42 @@ void TestCli::badInputFiles_data() {
 
     // Line 3 is "1.0   a 0.0": the 'a' is at column 7.
     QTest::newRow("letter for a coordinate")
-        << "--object" << "letter.byu" << QByteArray("3 1\n0 0 0\n1.0   a 0.0\n0 1 0\n1 2 3\n")
+        << "--object"
+        << "letter.byu" << QByteArray("3 1\n0 0 0\n1.0   a 0.0\n0 1 0\n1 2 3\n")
         << "%1:3:7: expected a number for the y coordinate of vertex 2 of 3, found 'a'";
     // Line 7 is "2  4 5": the 5 is at column 6.
     QTest::newRow("index out of range")
-        << "--object" << "range.byu"
-        << QByteArray("4 2\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n1 2 3\n2  4 5\n")
+        << "--object"
+        << "range.byu" << QByteArray("4 2\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n1 2 3\n2  4 5\n")
         << "%1:7:6: triangle 2 refers to vertex 5, but the file declares only 4 vertices";
     QTest::newRow("index zero")
-        << "--object" << "zero.byu" << QByteArray("3 1\n0 0 0\n1 0 0\n0 1 0\n0 1 2\n")
+        << "--object"
+        << "zero.byu" << QByteArray("3 1\n0 0 0\n1 0 0\n0 1 0\n0 1 2\n")
         << "%1:5:1: triangle 1 refers to vertex 0, but indices are 1-based (1 to 3)";
     // A blank first line: N is on line 3; the error points at the start of its line.
     QTest::newRow("camera N zero")
-        << "--camera" << "n-zero.cfg" << QByteArray("\n0 -380 330\n  0 0 0\n0 0 1\n1 0.4 0.3\n")
+        << "--camera"
+        << "n-zero.cfg" << QByteArray("\n0 -380 330\n  0 0 0\n0 0 1\n1 0.4 0.3\n")
         << "%1:3:1: N, the view direction, is the zero vector: it must point from the camera "
            "toward the scene";
     // Line 4 is "1   0 0.3": hx is at column 5.
     QTest::newRow("camera hx zero")
-        << "--camera" << "hx-zero.cfg" << QByteArray("0 -380 330\n0 380 -330\n0 0 1\n1   0 0.3\n")
+        << "--camera"
+        << "hx-zero.cfg" << QByteArray("0 -380 330\n0 380 -330\n0 0 1\n1   0 0.3\n")
         << "%1:4:5: hx, the horizontal half-size of the window, is 0: the projection (d/hx) x/z "
            "divides by it";
     // kd (line 4) written with a decimal comma.
     QTest::newRow("lighting decimal comma")
-        << "--lighting" << "comma.txt"
-        << QByteArray("-260 -420 520\n0.35\n60 60 72\n0,85\n0.88 0.42 0.18\n0.6\n255 248 235\n"
-                      "40\n")
+        << "--lighting"
+        << "comma.txt"
+        << QByteArray(
+               "-260 -420 520\n0.35\n60 60 72\n0,85\n0.88 0.42 0.18\n0.6\n255 248 235\n"
+               "40\n")
         << "%1:4:1: expected a number for kd, found '0,85' (the decimal separator is '.')";
     // Seven lines of eight: the file ends at line 8, column 1.
     QTest::newRow("lighting too short")
-        << "--lighting" << "short.txt"
+        << "--lighting"
+        << "short.txt"
         << QByteArray("-260 -420 520\n0.35\n60 60 72\n0.85\n0.88 0.42 0.18\n0.6\n255 248 235\n")
         << "%1:8:1: expected n, the specular exponent (1 number), found the end of the file";
 }
@@ -413,15 +424,18 @@ void TestCli::warnings_data() {
     QTest::addColumn<QString>("warning");  // %1: the file's path
 
     QTest::newRow("unused vertex")
-        << "--object" << "unused.byu" << QByteArray("4 1\n0 0 0\n100 0 0\n0 100 0\n5 5 5\n1 2 3\n")
+        << "--object"
+        << "unused.byu" << QByteArray("4 1\n0 0 0\n100 0 0\n0 100 0\n5 5 5\n1 2 3\n")
         << "%1: warning: 1 vertex of 4 is not used by any triangle";
     // Line 4 is "1 -0.4 0.3": hx is at column 3.
     QTest::newRow("negative hx")
-        << "--camera" << "mirror.cfg" << QByteArray("0 -380 330\n0 380 -330\n0 0 1\n1 -0.4 0.3\n")
+        << "--camera"
+        << "mirror.cfg" << QByteArray("0 -380 330\n0 380 -330\n0 0 1\n1 -0.4 0.3\n")
         << "%1:4:3: warning: hx is negative: the image is mirrored left to right";
     // Line 2 is "0 380 -330 7": the extra 7 is at column 12.
     QTest::newRow("extra value after N")
-        << "--camera" << "extra.cfg" << QByteArray("0 -380 330\n0 380 -330 7\n0 0 1\n1 0.4 0.3\n")
+        << "--camera"
+        << "extra.cfg" << QByteArray("0 -380 330\n0 380 -330 7\n0 0 1\n1 0.4 0.3\n")
         << "%1:2:12: warning: ignored 1 value after N";
 }
 
@@ -439,8 +453,8 @@ void TestCli::warnings() {
             dir.path());
     QCOMPARE(linesOf(run.err), QStringList(warning.arg(path)));
     QCOMPARE(run.exitCode, 0);
-    QVERIFY(run.out.contains(QStringLiteral("wrote %1 (image, 160x120)")
-                                 .arg(printedPath(dir, "out.png"))));
+    QVERIFY(run.out.contains(
+        QStringLiteral("wrote %1 (image, 160x120)").arg(printedPath(dir, "out.png"))));
     QCOMPARE(QImage(dir.filePath("out.png")).size(), QSize(160, 120));
 }
 
@@ -452,8 +466,8 @@ void TestCli::cameraFacingAway() {
         writeFixture(dir, "away.cfg", "0 -380 330\n0 -380 330\n0 0 1\n1 0.4 0.3\n");
     QVERIFY(!path.isEmpty());
     CliRun run;
-    RUN_CLI(run, QStringList({"render", "--camera", path, "--size", "200x150", "--output",
-                              "out.png"}),
+    RUN_CLI(run,
+            QStringList({"render", "--camera", path, "--size", "200x150", "--output", "out.png"}),
             dir.path());
     QCOMPARE(linesOf(run.err),
              QStringList("trefoil.byu: warning: every triangle is behind the camera (is N "
@@ -466,9 +480,8 @@ void TestCli::cameraFacingAway() {
     for (int y = 0; y < image.height(); ++y)
         for (int x = 0; x < image.width(); ++x)
             if (image.pixel(x, y) != qRgba(0, 0, 0, 255))
-                QFAIL(qPrintable(QStringLiteral("pixel (%1, %2) is not the background")
-                                     .arg(x)
-                                     .arg(y)));
+                QFAIL(qPrintable(
+                    QStringLiteral("pixel (%1, %2) is not the background").arg(x).arg(y)));
 }
 
 void TestCli::explainPixel_data() {
@@ -506,22 +519,23 @@ void TestCli::explainPixel() {
     }
     QVERIFY2(story.contains(QStringLiteral("  depth test, in drawing order:")),
              qPrintable(run.out));
-    QCOMPARE(story.filter(QRegularExpression(QStringLiteral("^  shading \\(phong\\) of the "
-                                                            "winner, triangle \\d+ of "
-                                                            "trefoil.byu"))).size(),
+    QCOMPARE(story
+                 .filter(QRegularExpression(QStringLiteral("^  shading \\(phong\\) of the "
+                                                           "winner, triangle \\d+ of "
+                                                           "trefoil.byu")))
+                 .size(),
              1);
     QCOMPARE(story.filter(QStringLiteral("    ambient  Ia*ka          = ")).size(), 1);
     // The default lighting: Ia = (60, 60, 72), ka = 0.35.
     QVERIFY(story.contains(QStringLiteral("    ambient  Ia*ka          = (21, 21, 25.2)")));
     // The bytes the story ends with are the pixel's colour in the image.
-    static const QRegularExpression bytes(
-        QStringLiteral("-> bytes \\((\\d+), (\\d+), (\\d+)\\)"));
+    static const QRegularExpression bytes(QStringLiteral("-> bytes \\((\\d+), (\\d+), (\\d+)\\)"));
     const QStringList colourLines = story.filter(bytes);
     QCOMPARE(colourLines.size(), 1);
     const auto match = bytes.match(colourLines.first());
-    QCOMPARE(qRgba(match.captured(1).toInt(), match.captured(2).toInt(),
-                   match.captured(3).toInt(), 255),
-             colour);
+    QCOMPARE(
+        qRgba(match.captured(1).toInt(), match.captured(2).toInt(), match.captured(3).toInt(), 255),
+        colour);
 }
 
 void TestCli::generateDefaultScene() {
@@ -581,17 +595,20 @@ void TestCli::decimalCommaLocale() {
     for (const char* name : {"camera.cfg", "lighting.txt", "trefoil.byu"}) {
         const QString file = QString::fromUtf8(name);
         QCOMPARE(testing::readFile(dir.filePath(QStringLiteral("scene/") + file)),
-                 testing::readFile(testing::sourceDir() + QStringLiteral("/resources/default-scene/") + file));
+                 testing::readFile(testing::sourceDir() +
+                                   QStringLiteral("/resources/default-scene/") + file));
     }
     // Messages: the numbers in an error keep their points.
     const QString camera = writeFixture(dir, QStringLiteral("parallel.cfg"),
                                         "0 0 0\n0.667 0.172 -1\n1.334 0.344 -2\n1 1 1\n");
     QVERIFY(runCli({"render", "--camera", camera, "--output", "x.png"}, dir.path(), run, env));
     QCOMPARE(run.exitCode, 1);
-    QVERIFY2(run.err.contains(QStringLiteral("V (1.334, 0.344, -2) is parallel to N (0.667, 0.172, -1)")),
+    QVERIFY2(run.err.contains(
+                 QStringLiteral("V (1.334, 0.344, -2) is parallel to N (0.667, 0.172, -1)")),
              qPrintable(run.err));
     // The pixel explanation: no decimal commas anywhere.
-    QVERIFY(runCli({"render", "--output", "y.png", "--explain-pixel", "460,355"}, dir.path(), run, env));
+    QVERIFY(runCli({"render", "--output", "y.png", "--explain-pixel", "460,355"}, dir.path(), run,
+                   env));
     QCOMPARE(run.exitCode, 0);
     QVERIFY2(run.out.contains(QStringLiteral("N.L = 0.")), qPrintable(run.out));
     QVERIFY2(!run.out.contains(QRegularExpression(QStringLiteral("\\d,\\d"))), qPrintable(run.out));
@@ -607,11 +624,12 @@ void TestCli::outOfMemory() {
     QVERIFY(dir.isValid());
     QProcess process;
     process.setWorkingDirectory(dir.path());
-    process.start(QStringLiteral("/bin/sh"),
-                  {QStringLiteral("-c"), QStringLiteral("ulimit -v 1500000 && exec \"$0\" \"$@\""),
-                   testing::cliPath(), QStringLiteral("render"), QStringLiteral("--size"),
-                   QStringLiteral("8000x8000"), QStringLiteral("--max-pixels"),
-                   QStringLiteral("100000000"), QStringLiteral("--output"), QStringLiteral("big.png")});
+    process.start(
+        QStringLiteral("/bin/sh"),
+        {QStringLiteral("-c"), QStringLiteral("ulimit -v 1500000 && exec \"$0\" \"$@\""),
+         testing::cliPath(), QStringLiteral("render"), QStringLiteral("--size"),
+         QStringLiteral("8000x8000"), QStringLiteral("--max-pixels"), QStringLiteral("100000000"),
+         QStringLiteral("--output"), QStringLiteral("big.png")});
     QVERIFY(process.waitForFinished(120000));
     QCOMPARE(process.exitStatus(), QProcess::NormalExit);
     QCOMPARE(process.exitCode(), 1);
@@ -629,8 +647,8 @@ void TestCli::help_data() {
     QTest::newRow("--help") << QStringList("--help") << 0
                             << "Usage: rasterlab-cli <command> [options]";
     QTest::newRow("help") << QStringList("help") << 0 << "Usage: rasterlab-cli <command> [options]";
-    QTest::newRow("render --help") << QStringList({"render", "--help"}) << 0
-                                   << "Usage: rasterlab-cli render [options]";
+    QTest::newRow("render --help")
+        << QStringList({"render", "--help"}) << 0 << "Usage: rasterlab-cli render [options]";
     QTest::newRow("generate --help") << QStringList({"generate-default-scene", "--help"}) << 0
                                      << "Usage: rasterlab-cli generate-default-scene [options]";
     QTest::newRow("no arguments") << QStringList() << 2
@@ -707,10 +725,9 @@ void TestCli::courseSamples() {
         }
     }
     QVERIFY2(lit > 10000, qPrintable(QString::number(lit)));
-    QVERIFY2(green * 10 > lit * 9,
-             qPrintable(QStringLiteral("%1 of %2 lit pixels are clearly green")
-                            .arg(green)
-                            .arg(lit)));
+    QVERIFY2(
+        green * 10 > lit * 9,
+        qPrintable(QStringLiteral("%1 of %2 lit pixels are clearly green").arg(green).arg(lit)));
 }
 
 QTEST_GUILESS_MAIN(TestCli)

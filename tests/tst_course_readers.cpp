@@ -370,19 +370,30 @@ void TestCourseReaders::lightingRanges_data() {
     QTest::addColumn<QStringList>("warnings");
     QTest::newRow("within the course's ranges") << lightingWithKd("0.75") << QStringList();
     QTest::newRow("every value outside")
-        << QByteArray("-220 -150 700\n1.5\n300 -1 20\n2\n0.5 1.25 -0.5\n-0.25\n"
-                      "255 256 0\n-2\n")
+        << QByteArray(
+               "-220 -150 700\n1.5\n300 -1 20\n2\n0.5 1.25 -0.5\n-0.25\n"
+               "255 256 0\n-2\n")
         << QStringList{
-               "light.txt:2:1: warning: ka = 1.5 is outside [0, 1], the range the course gives for it",
-               "light.txt:3:1: warning: Ia.r = 300 is outside [0, 255], the range the course gives for it",
-               "light.txt:3:5: warning: Ia.g = -1 is outside [0, 255], the range the course gives for it",
-               "light.txt:4:1: warning: kd = 2 is outside [0, 1], the range the course gives for it",
-               "light.txt:5:5: warning: Od.g = 1.25 is outside [0, 1], the range the course gives for it",
-               "light.txt:5:10: warning: Od.b = -0.5 is outside [0, 1], the range the course gives for it",
-               "light.txt:6:1: warning: ks = -0.25 is outside [0, 1], the range the course gives for it",
-               "light.txt:7:5: warning: Il.g = 256 is outside [0, 255], the range the course gives for it",
-               "light.txt:8:1: warning: n = -2 is not positive: (R.V)^n then makes no highlight (it "
-               "is 1 everywhere for n = 0 and grows without bound where R.V nears 0 for n < 0, where "
+               "light.txt:2:1: warning: ka = 1.5 is outside [0, 1], the range the course gives for "
+               "it",
+               "light.txt:3:1: warning: Ia.r = 300 is outside [0, 255], the range the course gives "
+               "for it",
+               "light.txt:3:5: warning: Ia.g = -1 is outside [0, 255], the range the course gives "
+               "for it",
+               "light.txt:4:1: warning: kd = 2 is outside [0, 1], the range the course gives for "
+               "it",
+               "light.txt:5:5: warning: Od.g = 1.25 is outside [0, 1], the range the course gives "
+               "for it",
+               "light.txt:5:10: warning: Od.b = -0.5 is outside [0, 1], the range the course gives "
+               "for it",
+               "light.txt:6:1: warning: ks = -0.25 is outside [0, 1], the range the course gives "
+               "for it",
+               "light.txt:7:5: warning: Il.g = 256 is outside [0, 255], the range the course gives "
+               "for it",
+               "light.txt:8:1: warning: n = -2 is not positive: (R.V)^n then makes no highlight "
+               "(it "
+               "is 1 everywhere for n = 0 and grows without bound where R.V nears 0 for n < 0, "
+               "where "
                "the specular term is left out)"};
 }
 

@@ -30,8 +30,9 @@ private slots:
         const std::vector<dvec2> p = {{0, 0}, {8, 0}, {0, 8}, {0, 0}, {8, 0}, {0, 8}};
         const std::vector<float> z = {5, 5, 5, 3, 3, 3};
         for (bool nearFirst : {false, true}) {
-            const auto order = nearFirst ? std::vector<std::array<std::uint32_t, 3>>{{3, 4, 5}, {0, 1, 2}}
-                                         : std::vector<std::array<std::uint32_t, 3>>{{0, 1, 2}, {3, 4, 5}};
+            const auto order =
+                nearFirst ? std::vector<std::array<std::uint32_t, 3>>{{3, 4, 5}, {0, 1, 2}}
+                          : std::vector<std::array<std::uint32_t, 3>>{{0, 1, 2}, {3, 4, 5}};
             const Scene scene = screen(10, 10);
             const DepthTest d = depthOf(scene, screenTriangles(p, order, z));
             const std::uint32_t nearTriangle = nearFirst ? 0 : 1;
@@ -46,8 +47,9 @@ private slots:
     }
 
     void tieKeepsTheEarlierTriangle() {
-        const DepthTest d = depthOf(screen(10, 10),
-                                    screenTriangles({{0, 0}, {8, 0}, {0, 8}}, {{0, 1, 2}, {0, 1, 2}}, {4, 4, 4}));
+        const DepthTest d =
+            depthOf(screen(10, 10),
+                    screenTriangles({{0, 0}, {8, 0}, {0, 8}}, {{0, 1, 2}, {0, 1, 2}}, {4, 4, 4}));
         QCOMPARE(d.triangle.at(1, 1), 0u);  // z < stored is strict
         QCOMPARE(d.rejected, std::size_t(45));
     }
@@ -55,8 +57,8 @@ private slots:
     void depthIsInterpolatedWithScreenBarycentrics() {
         // Vertices (0,0) z=10, (8,0) z=20, (0,8) z=30. At pixel (2,4): beta = 2/8, gamma = 4/8,
         // alpha = 1/4, so z = 10/4 + 20/4 + 30/2 = 22.5.
-        const DepthTest d = depthOf(screen(10, 10),
-                                    screenTriangles({{0, 0}, {8, 0}, {0, 8}}, {{0, 1, 2}}, {10, 20, 30}));
+        const DepthTest d = depthOf(
+            screen(10, 10), screenTriangles({{0, 0}, {8, 0}, {0, 8}}, {{0, 1, 2}}, {10, 20, 30}));
         RL_COMPARE_NEAR(d.depth.at(2, 4), 22.5, 1e-5);
         RL_COMPARE_VEC(d.barycentric.at(2, 4), vec2(0.25f, 0.5f), 1e-7);
         // At the vertices the depth is the vertex's.
@@ -71,14 +73,15 @@ private slots:
 
     void depthAlongARowIsMonotonic() {
         // A slanted triangle: depth grows with x on every row.
-        const DepthTest d = depthOf(screen(64, 64),
-                                    screenTriangles({{0, 0}, {63, 0}, {0, 63}}, {{0, 1, 2}}, {1, 100, 1}));
+        const DepthTest d = depthOf(
+            screen(64, 64), screenTriangles({{0, 0}, {63, 0}, {0, 63}}, {{0, 1, 2}}, {1, 100, 1}));
         for (int y = 0; y < 63; ++y)
             for (int x = 1; x + y <= 63; ++x) QVERIFY(d.depth.at(x, y) > d.depth.at(x - 1, y));
     }
 
     void probeSeesBothDepthsAndTheVerdict() {
-        const Projection pr = screenTriangles({{0, 0}, {8, 0}, {0, 8}, {0, 0}, {8, 0}, {0, 8}}, {{3, 4, 5}, {0, 1, 2}}, {5, 5, 5, 3, 3, 3});
+        const Projection pr = screenTriangles({{0, 0}, {8, 0}, {0, 8}, {0, 0}, {8, 0}, {0, 8}},
+                                              {{3, 4, 5}, {0, 1, 2}}, {5, 5, 5, 3, 3, 3});
         const Scene scene = screen(10, 10);
         const ScanConversion scan = ScanConversionStage().run(scene, pr);
         auto probe = RecordingProbe::forPixel(1, 2);

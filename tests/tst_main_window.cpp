@@ -37,7 +37,9 @@ RenderedFrame frameAt(const QSignalSpy& spy, qsizetype i) {
     return spy.at(i).at(0).value<RenderedFrame>();
 }
 
-bool isBlack(QRgb c) { return qRed(c) == 0 && qGreen(c) == 0 && qBlue(c) == 0; }
+bool isBlack(QRgb c) {
+    return qRed(c) == 0 && qGreen(c) == 0 && qBlue(c) == 0;
+}
 
 bool hasLitPixel(const QImage& image) {
     for (int y = 0; y < image.height(); ++y)
@@ -54,15 +56,16 @@ QString writeFixture(const QTemporaryDir& dir, const QString& name, const QByteA
 }
 
 // A tetrahedron around the origin, where the default camera looks.
-const QByteArray kTetrahedron = "4 4\n"
-                                "-80 -80 -80\n"
-                                "80 80 -80\n"
-                                "80 -80 80\n"
-                                "-80 80 80\n"
-                                "1 2 3\n"
-                                "1 4 2\n"
-                                "1 3 4\n"
-                                "2 4 3\n";
+const QByteArray kTetrahedron =
+    "4 4\n"
+    "-80 -80 -80\n"
+    "80 80 -80\n"
+    "80 -80 80\n"
+    "-80 80 80\n"
+    "1 2 3\n"
+    "1 4 2\n"
+    "1 3 4\n"
+    "2 4 3\n";
 
 }  // namespace
 
@@ -133,14 +136,14 @@ void TestMainWindow::badFileKeepsScene_data() {
         << QByteArray("4 2\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n1 2 3\n2  4 5\n")
         << "%1:7:6: triangle 2 refers to vertex 5, but the file declares only 4 vertices";
     // Line 2 has two numbers: the end of the line is column 6.
-    QTest::newRow("camera short N")
-        << SceneDocument::Part::Camera << "short.cfg"
-        << QByteArray("0 -380 330\n0 380\n0 0 1\n1 0.4 0.3\n")
-        << "%1:2:6: expected 3 numbers for N, found 2";
+    QTest::newRow("camera short N") << SceneDocument::Part::Camera << "short.cfg"
+                                    << QByteArray("0 -380 330\n0 380\n0 0 1\n1 0.4 0.3\n")
+                                    << "%1:2:6: expected 3 numbers for N, found 2";
     QTest::newRow("lighting decimal comma")
         << SceneDocument::Part::Lighting << "comma.txt"
-        << QByteArray("-260 -420 520\n0.35\n60 60 72\n0,85\n0.88 0.42 0.18\n0.6\n255 248 235\n"
-                      "40\n")
+        << QByteArray(
+               "-260 -420 520\n0.35\n60 60 72\n0,85\n0.88 0.42 0.18\n0.6\n255 248 235\n"
+               "40\n")
         << "%1:4:1: expected a number for kd, found '0,85' (the decimal separator is '.')";
 }
 
@@ -315,9 +318,8 @@ void TestMainWindow::lastShadingWins() {
     window.setShading(rl::ShadingModel::Flat);
     window.setShading(rl::ShadingModel::Phong);
     window.setShading(rl::ShadingModel::Gouraud);
-    while (spy.isEmpty() ||
-           frameAt(spy, spy.count() - 1).trace->scene->draws.front().shading !=
-               rl::ShadingModel::Gouraud)
+    while (spy.isEmpty() || frameAt(spy, spy.count() - 1).trace->scene->draws.front().shading !=
+                                rl::ShadingModel::Gouraud)
         QVERIFY2(spy.wait(kFrameTimeoutMs), "no Gouraud frame within 10 s");
     QVERIFY(!spy.wait(300));  // and nothing after it
     // Flat started at once; Phong waited and was replaced by Gouraud, the newest.
@@ -427,8 +429,8 @@ void TestMainWindow::failedRenderKeepsTheLastImage() {
     QSignalSpy busy(&controller, &RenderController::busyChanged);
     rl::Scene scene = testing::makeScene(
         testing::axisCamera(),
-        testing::makeMesh({{-1.0, -1.0, 5.0}, {1.0, -1.0, 5.0}, {0.0, 1.0, 5.0}}, {{0, 1, 2}}),
-        0, 30);
+        testing::makeMesh({{-1.0, -1.0, 5.0}, {1.0, -1.0, 5.0}, {0.0, 1.0, 5.0}}, {{0, 1, 2}}), 0,
+        30);
     scene.name = "empty.byu";
     controller.request(std::make_shared<const rl::Scene>(scene));
     QVERIFY2(failures.wait(kFrameTimeoutMs), "no failure reported within 10 s");

@@ -32,7 +32,8 @@ private slots:
         QVERIFY(!normals.skipped);
         const vec3 expected(-0.8006776946789038f, -0.5941845525145079f, 0.07655028933198321f);
         RL_COMPARE_VEC(normals.draws[0].triangle[0], expected, 1e-6);
-        for (int v = 0; v < 3; ++v) RL_COMPARE_VEC(normals.draws[0].vertex[std::size_t(v)], expected, 1e-6);
+        for (int v = 0; v < 3; ++v)
+            RL_COMPARE_VEC(normals.draws[0].vertex[std::size_t(v)], expected, 1e-6);
     }
 
     void vertexNormalsAreNormalisedSums() {
@@ -40,8 +41,7 @@ private slots:
         // plane z = 0 and one in the plane x = 0.
         const Scene scene = testing::makeScene(
             testing::axisCamera(),
-            testing::makeMesh({{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {0, 0, 1}},
-                              {{0, 1, 2}, {0, 3, 1}}),
+            testing::makeMesh({{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {0, 0, 1}}, {{0, 1, 2}, {0, 3, 1}}),
             8, 8);
         const Normals normals = normalsOf(scene);
         const auto& n = normals.draws[0];
@@ -105,9 +105,9 @@ private slots:
     }
 
     void unlitSceneSkips() {
-        Scene scene = testing::makeScene(testing::axisCamera(),
-                                         testing::makeMesh({{0, 0, 1}, {0, 1, 1}, {1, 0, 1}}, {{0, 1, 2}}),
-                                         8, 8);
+        Scene scene = testing::makeScene(
+            testing::axisCamera(),
+            testing::makeMesh({{0, 0, 1}, {0, 1, 1}, {1, 0, 1}}, {{0, 1, 2}}), 8, 8);
         scene.ambientIntensity = vec3(0.0f);
         scene.lights.clear();
         const Normals normals = normalsOf(scene);

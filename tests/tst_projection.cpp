@@ -102,7 +102,8 @@ private slots:
         QCOMPARE(p.inFront[2], std::uint8_t(0));
         // NDC of the vertex made on B->C: (-0.55 / 1, -0.55 / 1).
         RL_COMPARE_VEC(p.pNdc[3], dvec2(-0.55, -0.55), 1e-12);
-        QVERIFY(run.diagnostics.contains("1 triangles cross the near plane z = 1 and were clipped; 0 are wholly behind it"));
+        QVERIFY(run.diagnostics.contains(
+            "1 triangles cross the near plane z = 1 and were clipped; 0 are wholly behind it"));
     }
 
     void twoVerticesBehindMakeOneTriangle() {
@@ -130,11 +131,11 @@ private slots:
     void sharedEdgeClipsIdentically() {
         // Two triangles share the edge (1,0,10)-(0,0,-10), which crosses the near plane:
         // both must place the clip vertex at exactly the same point (no crack).
-        Scene scene = testing::makeScene(
-            testing::axisCamera(),
-            testing::makeMesh({{1, 0, 10}, {0, 0, -10}, {0, 2, 10}, {0, -2, 10}},
-                              {{0, 1, 2}, {1, 0, 3}}),
-            100, 100);
+        Scene scene =
+            testing::makeScene(testing::axisCamera(),
+                               testing::makeMesh({{1, 0, 10}, {0, 0, -10}, {0, 2, 10}, {0, -2, 10}},
+                                                 {{0, 1, 2}, {1, 0, 3}}),
+                               100, 100);
         scene.nearPlane.fixedW = 0.5;
         const Run run = project(scene);
         const DrawProjection& p = run.projection.draws[0];
@@ -210,8 +211,9 @@ private slots:
         scene.width = 100;
         scene.height = 100;
         Draw draw;
-        draw.mesh = testing::makeMesh({{-1, -1, -2}, {1, -1, -2}, {0, 1, -2}, {0, 0, 2}, {1, 0, 2}, {0, 1, 2}},
-                                      {{0, 1, 2}, {3, 4, 5}});
+        draw.mesh = testing::makeMesh(
+            {{-1, -1, -2}, {1, -1, -2}, {0, 1, -2}, {0, 0, 2}, {1, 0, 2}, {0, 1, 2}},
+            {{0, 1, 2}, {3, 4, 5}});
         const double n = 1.0, f = 10.0;
         dmat4 frustum(0.0);
         frustum[0][0] = n;
@@ -233,11 +235,11 @@ private slots:
     }
 
     void naiveProjectionDividesByNegativeZ() {
-        Scene scene = testing::makeScene(
-            testing::axisCamera(),
-            testing::makeMesh({{0, 1, 10}, {1, -1, 10}, {2, 4, -10}, {0, 0, 0}},
-                              {{0, 1, 2}, {0, 1, 3}}),
-            100, 100);
+        Scene scene =
+            testing::makeScene(testing::axisCamera(),
+                               testing::makeMesh({{0, 1, 10}, {1, -1, 10}, {2, 4, -10}, {0, 0, 0}},
+                                                 {{0, 1, 2}, {0, 1, 3}}),
+                               100, 100);
         scene.nearPlane.naive = true;
         const Run run = project(scene);
         const DrawProjection& p = run.projection.draws[0];
@@ -248,7 +250,8 @@ private slots:
         QCOMPARE(p.fate[1], TriangleFate::NonFinite);
         QCOMPARE(run.projection.nonFinite, std::size_t(1));
         QCOMPARE(run.projection.throughZeroOrBehind, std::size_t(2));
-        QVERIFY(run.diagnostics.contains("naive projection: 2 triangles have a vertex at or behind the camera"));
+        QVERIFY(run.diagnostics.contains(
+            "naive projection: 2 triangles have a vertex at or behind the camera"));
     }
 };
 

@@ -13,8 +13,8 @@ using namespace rl;
 
 namespace {
 
-std::shared_ptr<const Scene> defaultScene(ShadingModel model = ShadingModel::Phong,
-                                          int width = 800, int height = 600) {
+std::shared_ptr<const Scene> defaultScene(ShadingModel model = ShadingModel::Phong, int width = 800,
+                                          int height = 600) {
     Diagnostics diagnostics;
     auto parts = rasterlab::loadDefaultCourseScene(diagnostics);
     if (!parts) qFatal("%s", parts.error().toString().c_str());
@@ -69,7 +69,8 @@ std::size_t coverageMismatches(const FrameTrace& trace) {
     Image<std::uint8_t> expected(scene.width, scene.height, 0);
     for (const ScreenTriangle& tri : trace.projection->triangles) {
         const auto p = screenVertices(*trace.projection, tri);
-        const double area = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[1].y - p[0].y) * (p[2].x - p[0].x);
+        const double area =
+            (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[1].y - p[0].y) * (p[2].x - p[0].x);
         if (area == 0.0) continue;
         const int x0 = int(std::max(0.0, std::min({p[0].x, p[1].x, p[2].x})));
         const int x1 = int(std::min(scene.width - 1.0, std::max({p[0].x, p[1].x, p[2].x})));
@@ -84,9 +85,11 @@ std::size_t coverageMismatches(const FrameTrace& trace) {
         for (int x = 0; x < scene.width; ++x) {
             const std::uint32_t winner = trace.depth->triangle.at(x, y);
             const bool covered = winner != kNoTriangle;
-            if (covered != bool(expected.at(x, y))) ++mismatches;
-            else if (covered && !covers(screenVertices(*trace.projection,
-                                                       trace.projection->triangles[winner]), x, y))
+            if (covered != bool(expected.at(x, y)))
+                ++mismatches;
+            else if (covered &&
+                     !covers(screenVertices(*trace.projection, trace.projection->triangles[winner]),
+                             x, y))
                 ++mismatches;
         }
     return mismatches;
@@ -174,11 +177,14 @@ private slots:
             shaded += std::holds_alternative<ShadeEvent>(e) ? 1 : 0;
         }
         QVERIFY(std::holds_alternative<TriangleEvent>(triangleProbe.events().front()));
-        QCOMPARE(spans, std::size_t(plain->scan->spanStart[visible + 1] - plain->scan->spanStart[visible]));
+        QCOMPARE(spans, std::size_t(plain->scan->spanStart[visible + 1] -
+                                    plain->scan->spanStart[visible]));
         std::size_t covered = 0, visiblePixels = 0;
-        for (std::size_t k = plain->scan->spanStart[visible]; k < plain->scan->spanStart[visible + 1]; ++k)
+        for (std::size_t k = plain->scan->spanStart[visible];
+             k < plain->scan->spanStart[visible + 1]; ++k)
             covered += std::size_t(plain->scan->spans[k].xEnd - plain->scan->spans[k].xBegin);
-        for (std::uint32_t t : plain->depth->triangle.pixels()) visiblePixels += t == visible ? 1 : 0;
+        for (std::uint32_t t : plain->depth->triangle.pixels())
+            visiblePixels += t == visible ? 1 : 0;
         QCOMPARE(tests, covered);
         QCOMPARE(shaded, visiblePixels);
     }
@@ -226,8 +232,9 @@ private slots:
         const DrawProjection& dp = pr.draws[0];
         const auto& normals = plain->normals->draws[0].vertex;
         auto litAt = [&](std::uint32_t v) {
-            return phong(scene.draws[0].material, scene.ambientIntensity, plain->view->lights.data(),
-                         1, vec3(dp.pView[v]), normals[v], true).colour();
+            return phong(scene.draws[0].material, scene.ambientIntensity,
+                         plain->view->lights.data(), 1, vec3(dp.pView[v]), normals[v], true)
+                .colour();
         };
         int checked = 0;
         for (int y = 0; y < 200 && checked < 50; ++y)
@@ -292,13 +299,15 @@ private slots:
         QTest::addColumn<QString>("object");
         QTest::addColumn<QString>("camera");
         QTest::addColumn<int>("model");
-        for (const auto& [name, model] : {std::pair{"phong", ShadingModel::Phong},
-                                          std::pair{"flat", ShadingModel::Flat},
-                                          std::pair{"gouraud", ShadingModel::Gouraud}}) {
+        for (const auto& [name, model] :
+             {std::pair{"phong", ShadingModel::Phong}, std::pair{"flat", ShadingModel::Flat},
+              std::pair{"gouraud", ShadingModel::Gouraud}}) {
             QTest::newRow(qPrintable(QStringLiteral("calice2 ") + QString::fromUtf8(name)))
-                << "/course/ufpe/calice2.byu" << "/course/ufpe/calice2.cfg" << int(model);
+                << "/course/ufpe/calice2.byu"
+                << "/course/ufpe/calice2.cfg" << int(model);
             QTest::newRow(qPrintable(QStringLiteral("vaso ") + QString::fromUtf8(name)))
-                << "/course/ufpe/vaso.byu" << "/course/ufpe/vaso.cfg" << int(model);
+                << "/course/ufpe/vaso.byu"
+                << "/course/ufpe/vaso.cfg" << int(model);
         }
     }
 
@@ -363,8 +372,7 @@ private slots:
         auto trace = renderFrame(std::make_shared<const Scene>(makeCourseScene(*parts, {})));
         QVERIFY(trace.ok());
         qInfo("inside the vase: %zu clipped, %zu behind, %zu pixels covered",
-              trace->projection->clipped, trace->projection->behind,
-              trace->depth->coveredPixels());
+              trace->projection->clipped, trace->projection->behind, trace->depth->coveredPixels());
         QVERIFY(trace->projection->clipped > 0);
         QVERIFY(trace->projection->behind > 0);
         QVERIFY(trace->depth->coveredPixels() > 0);

@@ -35,8 +35,8 @@ std::set<std::pair<int, int>> insidePixels(const std::array<dvec2, 3>& p, int wi
             const double w0 = edge(p[1], p[2], x, y);
             const double w1 = edge(p[2], p[0], x, y);
             const double w2 = edge(p[0], p[1], x, y);
-            const bool in = area > 0 ? (w0 >= 0 && w1 >= 0 && w2 >= 0)
-                                     : (w0 <= 0 && w1 <= 0 && w2 <= 0);
+            const bool in =
+                area > 0 ? (w0 >= 0 && w1 >= 0 && w2 >= 0) : (w0 <= 0 && w1 <= 0 && w2 <= 0);
             if (in) inside.insert({x, y});
         }
     return inside;
@@ -108,8 +108,8 @@ private slots:
     }
 
     void flatTopAndFlatBottom() {
-        const Projection pr = screenTriangles({{1, 1}, {5, 1}, {3, 3}, {3, 5}},
-                                              {{0, 1, 2}, {0, 3, 1}});
+        const Projection pr =
+            screenTriangles({{1, 1}, {5, 1}, {3, 3}, {3, 5}}, {{0, 1, 2}, {0, 3, 1}});
         const ScanConversion scan = ScanConversionStage().run(screen(10, 10), pr);
         // Flat top (1,1)-(5,1) down to (3,3): rows 1..3 shrink by one pixel a side.
         QCOMPARE(spansOf(scan, 0), (std::vector<Span>{{1, 1, 6}, {2, 2, 5}, {3, 3, 4}}));
@@ -119,9 +119,9 @@ private slots:
     }
 
     void degenerateAndOffscreenAreCounted() {
-        const Projection pr = screenTriangles(
-            {{0, 0}, {2, 2}, {4, 4}, {50, 50}, {60, 50}, {55, 60}, {3, 3}},
-            {{0, 1, 2}, {3, 4, 5}, {0, 0, 6}});
+        const Projection pr =
+            screenTriangles({{0, 0}, {2, 2}, {4, 4}, {50, 50}, {60, 50}, {55, 60}, {3, 3}},
+                            {{0, 1, 2}, {3, 4, 5}, {0, 0, 6}});
         const ScanConversion scan = ScanConversionStage().run(screen(10, 10), pr);
         QCOMPARE(scan.degenerate, std::size_t(2));  // collinear, repeated vertex
         QCOMPARE(scan.offscreen, std::size_t(1));
@@ -139,8 +139,10 @@ private slots:
         const ScanConversion scan = ScanConversionStage().run(screen(640, 480), pr);
         QCOMPARE(scan.spans.size(), std::size_t(480));
         QCOMPARE(scan.pixels, std::size_t(640 * 480));
-        for (const Span& s : scan.spans) QCOMPARE((std::pair{s.xBegin, s.xEnd}), (std::pair{0, 640}));
-        qInfo("gargantuan triangle scanned in %lld us", static_cast<long long>(timer.nsecsElapsed() / 1000));
+        for (const Span& s : scan.spans)
+            QCOMPARE((std::pair{s.xBegin, s.xEnd}), (std::pair{0, 640}));
+        qInfo("gargantuan triangle scanned in %lld us",
+              static_cast<long long>(timer.nsecsElapsed() / 1000));
     }
 
     void partlyOffscreenIsClipped() {
@@ -197,21 +199,25 @@ private slots:
             }
             std::vector<std::array<std::uint32_t, 3>> fan;
             for (int k = 1; k <= n; ++k)
-                fan.push_back({0, static_cast<std::uint32_t>(k),
-                               static_cast<std::uint32_t>(k % n + 1)});
+                fan.push_back(
+                    {0, static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(k % n + 1)});
             const Projection pr = screenTriangles(points, fan);
             const ScanConversion scan = ScanConversionStage().run(screen(64, 64), pr);
             std::set<std::pair<int, int>> expected;
             std::map<std::pair<int, int>, int> hits;
             for (std::size_t t = 0; t < fan.size(); ++t) {
                 const auto& tri = fan[t];
-                const auto in = insidePixels({points[tri[0]], points[tri[1]], points[tri[2]]}, 64, 64);
+                const auto in =
+                    insidePixels({points[tri[0]], points[tri[1]], points[tri[2]]}, 64, 64);
                 expected.insert(in.begin(), in.end());
                 for (const auto& px : pixelsOf(spansOf(scan, t))) ++hits[px];
             }
             for (const auto& px : expected)
                 if (hits[px] == 0)
-                    QFAIL(qPrintable(QStringLiteral("fan %1: crack at (%2, %3)").arg(f).arg(px.first).arg(px.second)));
+                    QFAIL(qPrintable(QStringLiteral("fan %1: crack at (%2, %3)")
+                                         .arg(f)
+                                         .arg(px.first)
+                                         .arg(px.second)));
             for (const auto& [px, count] : hits) doubleHits += count > 1 ? count - 1 : 0;
         }
         qInfo("inclusive rule: %lld pixels covered more than once in 2,000 fans (shared edges)",

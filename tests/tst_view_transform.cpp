@@ -24,9 +24,12 @@ private slots:
         const ViewTransform view = ViewTransformStage().run(scene, basis.value());
         QCOMPARE(view.pView.size(), std::size_t(1));
         const auto& p = view.pView[0];
-        RL_COMPARE_VEC(p[0], dvec4(41.512921978873436, -5.50597197448705, 391.4669354893107, 1.0), 1e-9);
-        RL_COMPARE_VEC(p[1], dvec4(-0.08319222841453211, 47.919847992076285, 371.084466459416, 1.0), 1e-9);
-        RL_COMPARE_VEC(p[2], dvec4(27.661415947846535, 4.315993349021351, 322.8253680694431, 1.0), 1e-9);
+        RL_COMPARE_VEC(p[0], dvec4(41.512921978873436, -5.50597197448705, 391.4669354893107, 1.0),
+                       1e-9);
+        RL_COMPARE_VEC(p[1], dvec4(-0.08319222841453211, 47.919847992076285, 371.084466459416, 1.0),
+                       1e-9);
+        RL_COMPARE_VEC(p[2], dvec4(27.661415947846535, 4.315993349021351, 322.8253680694431, 1.0),
+                       1e-9);
         // The light sits at the camera: the origin of view space.
         RL_COMPARE_VEC(view.lights[0].pView, dvec4(0.0, 0.0, 0.0, 1.0), 1e-12);
         QCOMPARE(view.verticesInFront, std::size_t(3));
@@ -48,8 +51,8 @@ private slots:
     }
 
     void modelMatrixApplies() {
-        Scene scene = testing::makeScene(testing::axisCamera(),
-                                         testing::makeMesh({{1, 0, 0}}, {}), 10, 10);
+        Scene scene =
+            testing::makeScene(testing::axisCamera(), testing::makeMesh({{1, 0, 0}}, {}), 10, 10);
         scene.draws[0].worldFromModel = dmat4(1.0);
         scene.draws[0].worldFromModel[3] = dvec4(0.0, 0.0, 5.0, 1.0);  // translate by +5 z
         Diagnostics diagnostics;

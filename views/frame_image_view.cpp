@@ -27,13 +27,15 @@ void FrameImageView::setImage(const QImage& image) {
 
 double FrameImageView::fitZoom() const {
     if (m_image.isNull() || width() <= 0 || height() <= 0) return 1.0;
-    const double z = std::min(double(width()) / m_image.width(), double(height()) / m_image.height());
+    const double z =
+        std::min(double(width()) / m_image.width(), double(height()) / m_image.height());
     return std::clamp(z, kMinZoom, kMaxZoom);
 }
 
 QPointF FrameImageView::imageOrigin() const {
     const QPointF centre(width() / 2.0, height() / 2.0);
-    return centre + m_offset - QPointF(m_image.width() * m_zoom / 2.0, m_image.height() * m_zoom / 2.0);
+    return centre + m_offset -
+           QPointF(m_image.width() * m_zoom / 2.0, m_image.height() * m_zoom / 2.0);
 }
 
 QPoint FrameImageView::pixelAt(const QPointF& widgetPos) const {
@@ -57,9 +59,13 @@ void FrameImageView::zoomToActualSize() {
     setZoomAround(1.0, QPointF(width() / 2.0, height() / 2.0));
 }
 
-void FrameImageView::zoomIn() { setZoomAround(m_zoom * 2.0, QPointF(width() / 2.0, height() / 2.0)); }
+void FrameImageView::zoomIn() {
+    setZoomAround(m_zoom * 2.0, QPointF(width() / 2.0, height() / 2.0));
+}
 
-void FrameImageView::zoomOut() { setZoomAround(m_zoom / 2.0, QPointF(width() / 2.0, height() / 2.0)); }
+void FrameImageView::zoomOut() {
+    setZoomAround(m_zoom / 2.0, QPointF(width() / 2.0, height() / 2.0));
+}
 
 void FrameImageView::setZoomAround(double zoom, const QPointF& widgetPos) {
     zoom = std::clamp(zoom, kMinZoom, kMaxZoom);
@@ -87,8 +93,10 @@ void FrameImageView::paintEvent(QPaintEvent*) {
         // Pixel grid and pixel centres over the visible part of the image.
         const int x0 = std::max(0, static_cast<int>(std::floor(-origin.x() / m_zoom)));
         const int y0 = std::max(0, static_cast<int>(std::floor(-origin.y() / m_zoom)));
-        const int x1 = std::min(m_image.width(), static_cast<int>(std::ceil((width() - origin.x()) / m_zoom)));
-        const int y1 = std::min(m_image.height(), static_cast<int>(std::ceil((height() - origin.y()) / m_zoom)));
+        const int x1 =
+            std::min(m_image.width(), static_cast<int>(std::ceil((width() - origin.x()) / m_zoom)));
+        const int y1 = std::min(m_image.height(),
+                                static_cast<int>(std::ceil((height() - origin.y()) / m_zoom)));
         painter.setPen(QPen(QColor(128, 128, 128, 110), 0));
         for (int x = x0; x <= x1; ++x)
             painter.drawLine(QPointF(origin.x() + x * m_zoom, origin.y() + y0 * m_zoom),
@@ -101,8 +109,9 @@ void FrameImageView::paintEvent(QPaintEvent*) {
         const double r = std::max(1.0, m_zoom / 16.0);
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x)
-                painter.drawEllipse(QPointF(origin.x() + (x + 0.5) * m_zoom,
-                                            origin.y() + (y + 0.5) * m_zoom), r, r);
+                painter.drawEllipse(
+                    QPointF(origin.x() + (x + 0.5) * m_zoom, origin.y() + (y + 0.5) * m_zoom), r,
+                    r);
     }
 }
 
@@ -146,6 +155,8 @@ void FrameImageView::mouseReleaseEvent(QMouseEvent* event) {
     m_dragging = false;
 }
 
-void FrameImageView::leaveEvent(QEvent*) { emit pixelHovered({-1, -1}); }
+void FrameImageView::leaveEvent(QEvent*) {
+    emit pixelHovered({-1, -1});
+}
 
 }  // namespace rasterlab

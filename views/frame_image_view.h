@@ -57,7 +57,7 @@ private:
     QImage m_image;
     double m_zoom = 1.0;
     bool m_fit = true;
-    QPointF m_offset;         // pan, in widget pixels, of the image centre from the widget centre
+    QPointF m_offset;  // pan, in widget pixels, of the image centre from the widget centre
     QPoint m_dragStart;
     QPointF m_offsetAtDragStart;
     bool m_dragging = false;
