@@ -13,24 +13,24 @@ namespace {
 // and normals, including the vertices made by near-plane clipping (interpolated along the
 // edge they came from).
 struct DrawVertices {
-    std::vector<vec3> p;
-    std::vector<vec3> n;
+    std::vector<vec3> pView;  // positions
+    std::vector<vec3> nView;  // vertex normals (zero where a vertex has none)
 };
 
 DrawVertices drawVertices(const DrawProjection& proj, const DrawNormals* normals) {
     DrawVertices out;
-    out.p.reserve(proj.pView.size());
-    for (const dvec4& p : proj.pView) out.p.emplace_back(p);
+    out.pView.reserve(proj.pView.size());
+    for (const dvec4& p : proj.pView) out.pView.emplace_back(p);
     if (normals && !normals->vertex.empty()) {
-        out.n = normals->vertex;
-        out.n.resize(proj.pView.size());
+        out.nView = normals->vertex;
+        out.nView.resize(proj.pView.size());
         for (std::size_t i = 0; i < proj.generated.size(); ++i) {
             const ClipVertex& g = proj.generated[i];
-            out.n[proj.originalVertexCount + i] =
+            out.nView[proj.originalVertexCount + i] =
                 glm::mix(normals->vertex[g.a], normals->vertex[g.b], static_cast<float>(g.t));
         }
     } else {
-        out.n.assign(proj.pView.size(), vec3(0.0f));
+        out.nView.assign(proj.pView.size(), vec3(0.0f));
     }
     return out;
 }
@@ -94,7 +94,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
     auto flatPhong = [&](const ScreenTriangle& tri) {
         const Draw& draw = scene.draws[tri.draw];
         const auto& corners = draw.mesh->triangles[tri.source];
-        const auto& pv = vertices[tri.draw].p;
+        const auto& pv = vertices[tri.draw].pView;
         const vec3 barycentre = (pv[corners[0]] + pv[corners[1]] + pv[corners[2]]) / 3.0f;
         const vec3 n = normals.skipped ? vec3(0.0f) : normals.draws[tri.draw].triangle[tri.source];
         return phong(draw.material, scene.ambientIntensity, lights, lightCount, barycentre, n,
@@ -127,7 +127,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                     if (!s) {
                         const PhongSample sample =
                             phong(scene.draws[d].material, scene.ambientIntensity, lights,
-                                  lightCount, vertices[d].p[i], vertices[d].n[i], flip);
+                                  lightCount, vertices[d].pView[i], vertices[d].nView[i], flip);
                         count(out, sample);
                         s = sample.colour();
                     }
@@ -137,7 +137,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
             } else {
                 const PhongSample sample =
                     phong(scene.draws[d].material, scene.ambientIntensity, lights, lightCount,
-                          vertices[d].p[v], vertices[d].n[v], flip);
+                          vertices[d].pView[v], vertices[d].nView[v], flip);
                 count(out, sample);
                 slot = sample.colour();
             }
@@ -162,8 +162,8 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
             switch (draw.shading) {
                 case ShadingModel::Phong: {
                     const DrawVertices& dv = vertices[tri.draw];
-                    const vec3 p = interpolate(dv.p, tri, beta, gamma);
-                    const vec3 n = interpolate(dv.n, tri, beta, gamma);
+                    const vec3 p = interpolate(dv.pView, tri, beta, gamma);
+                    const vec3 n = interpolate(dv.nView, tri, beta, gamma);
                     const PhongSample s = phong(draw.material, scene.ambientIntensity, lights,
                                                 lightCount, p, n, flip);
                     count(out, s);
@@ -192,8 +192,8 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                         // The normal Phong would use here: interpolated, normalised, turned
                         // toward the viewer, so that the normals image means the same in
                         // every shading model.
-                        const vec3 p = interpolate(vertices[tri.draw].p, tri, beta, gamma);
-                        const vec3 n = interpolate(vertices[tri.draw].n, tri, beta, gamma);
+                        const vec3 p = interpolate(vertices[tri.draw].pView, tri, beta, gamma);
+                        const vec3 n = interpolate(vertices[tri.draw].nView, tri, beta, gamma);
                         usedNormal = orientedNormal(n, p, flip);
                     }
                     if constexpr (Probe::enabled) event.vertexColours = {c0, c1, c2};
