@@ -24,7 +24,7 @@ Scene makeCourseScene(const CourseSceneParts& parts, const CourseSceneSettings& 
     scene.ambientIntensity = parts.lighting.ambientIntensity;
     scene.nearPlane = settings.nearPlane;
     scene.rules = RasterRules::course();
-    scene.conventions = Conventions{};  // the course's: see scene.h
+    scene.conventions = Conventions::course();
 
     Draw draw;
     draw.name = parts.object.name;

@@ -14,10 +14,13 @@ template <typename Probe>
 DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
                               const ScanConversion& scan, Probe& probe) const {
     DepthTest out;
-    const float clear = std::numeric_limits<float>::infinity();  // seed 000: +infinity
-    out.depth = Image<float>(scene.width, scene.height, clear);
+    const Conventions& conv = scene.conventions;
+    out.depth = Image<float>(scene.width, scene.height, conv.depthClear);
     out.triangle = Image<std::uint32_t>(scene.width, scene.height, kNoTriangle);
     out.barycentric = Image<vec2>(scene.width, scene.height, vec2(0.0f));
+    const double offset = scene.rules.sampleOffset;
+    const bool winsOnTie = conv.depthWinsOnTie;
+    const bool rangeClip = conv.depthRangeClip;
 
     for (std::size_t t = 0; t < projection.triangles.size(); ++t) {
         const std::uint32_t first = scan.spanStart[t];
@@ -41,8 +44,8 @@ DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
 
         for (std::uint32_t k = first; k < last; ++k) {
             const Span& span = scan.spans[k];
-            // The sample of pixel (x, y) is the point (x, y) (course rules).
-            const dvec2 s0 = dvec2(span.xBegin, span.y) - p[0];
+            // The sample of pixel (x, y) is the point (x + offset, y + offset).
+            const dvec2 s0 = dvec2(span.xBegin + offset, span.y + offset) - p[0];
             const double beta0 = (s0.x * e2.y - s0.y * e2.x) / area;
             const double gamma0 = (e1.x * s0.y - e1.y * s0.x) / area;
             float* depthRow = out.depth.row(span.y);
@@ -53,8 +56,17 @@ DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
                 const auto beta = static_cast<float>(beta0 + i * betaDx);
                 const auto gamma = static_cast<float>(gamma0 + i * gammaDx);
                 const float z = z0 + beta * dz1 + gamma * dz2;
+                if (rangeClip && !(z >= 0.0f && z <= 1.0f)) {  // per-pixel clipping (seed 001)
+                    ++out.outsideDepthRange;
+                    if constexpr (Probe::enabled) {
+                        probe.onDepthTest({static_cast<std::uint32_t>(t), x, span.y,
+                                           1.0f - beta - gamma, beta, gamma, z, depthRow[x], false,
+                                           true});
+                    }
+                    continue;
+                }
                 const float stored = depthRow[x];
-                const bool pass = z < stored;
+                const bool pass = z < stored || (winsOnTie && z == stored);
                 if constexpr (Probe::enabled) {
                     probe.onDepthTest({static_cast<std::uint32_t>(t), x, span.y,
                                        1.0f - beta - gamma, beta, gamma, z, stored, pass});
@@ -69,7 +81,7 @@ DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
             out.fragments += static_cast<std::size_t>(span.xEnd - span.xBegin);
         }
     }
-    out.rejected = out.fragments - out.passed;
+    out.rejected = out.fragments - out.passed - out.outsideDepthRange;
     return out;
 }
 

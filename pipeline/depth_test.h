@@ -1,8 +1,11 @@
 // Stage 6, depth test (z-buffer). For every pixel of every span, the screen barycentrics
 // (alpha, beta, gamma) of its sample with respect to the triangle's screen vertices give
-// the fragment's depth, z = alpha z1 + beta z2 + gamma z3 (seed 000: the z of
-// P' = alpha P1 + beta P2 + gamma P3 in view coordinates). The buffer starts at +infinity
-// and the nearer fragment wins: z < stored writes; a tie keeps the earlier triangle.
+// the fragment's depth, z = alpha z1 + beta z2 + gamma z3: for the course the z of
+// P' = alpha P1 + beta P2 + gamma P3 in view coordinates (seed 000), for command files the
+// NDC z (seed 001). The buffer starts at the convention's clear value (+infinity, or 1) and
+// the nearer fragment wins: z < stored writes; on a tie the earlier triangle stays, unless
+// the convention says z <= stored (seed 001). Seed 001 also discards fragments whose z is
+// outside [0, 1] (per-pixel clipping).
 //
 // The buffer remembers, for each pixel, the winning triangle and its barycentrics, so
 // shading runs once per visible pixel: the image equals that of shading each fragment as
@@ -23,12 +26,13 @@ namespace rl {
 inline constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
 
 struct DepthTest {
-    Image<float> depth;             // +infinity where nothing was drawn
-    Image<std::uint32_t> triangle;  // index into Projection::triangles, or kNoTriangle
-    Image<vec2> barycentric;        // (beta, gamma) of the winning fragment; alpha = 1 - b - g
-    std::size_t fragments = 0;      // tested
-    std::size_t passed = 0;         // written (including those overwritten later)
-    std::size_t rejected = 0;       // farther than (or as far as) what was stored
+    Image<float> depth;                 // the clear value where nothing was drawn
+    Image<std::uint32_t> triangle;      // index into Projection::triangles, or kNoTriangle
+    Image<vec2> barycentric;            // (beta, gamma) of the winning fragment; alpha = 1 - b - g
+    std::size_t fragments = 0;          // tested
+    std::size_t passed = 0;             // written (including those overwritten later)
+    std::size_t rejected = 0;           // farther than (or as far as) what was stored
+    std::size_t outsideDepthRange = 0;  // discarded: depth outside [0, 1] (seed 001)
 
     std::size_t coveredPixels() const;
 };

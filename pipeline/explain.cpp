@@ -29,6 +29,14 @@ std::string depthText(float z) {
     return formatNumber(z);
 }
 
+// "< stored 12: written", ">= stored 3: rejected, not nearer", or the range discard.
+std::string depthVerdict(const DepthTestEvent& test, bool winsOnTie) {
+    if (test.outsideDepthRange) return ": discarded, outside the depth range [0, 1]";
+    const std::string stored = "stored " + depthText(test.stored);
+    if (test.passed) return std::string(winsOnTie ? " <= " : " < ") + stored + ": written";
+    return std::string(winsOnTie ? " > " : " >= ") + stored + ": rejected, not nearer";
+}
+
 void describeSample(std::string& out, const PhongSample& s, const Material& m) {
     out += "    N = " + f3(s.n) + (s.flipped ? "  (turned toward the viewer: V.N was < 0)" : "") +
            "\n";
@@ -82,8 +90,7 @@ std::string explainPixel(const FrameTrace& trace, const RecordingProbe& probe) {
                    ": barycentrics alpha = " + formatNumber(test->alpha) +
                    ", beta = " + formatNumber(test->beta) +
                    ", gamma = " + formatNumber(test->gamma) + "; z = " + depthText(test->depth) +
-                   (test->passed ? " < " : " >= ") + "stored " + depthText(test->stored) +
-                   (test->passed ? ": written\n" : ": rejected, not nearer\n");
+                   depthVerdict(*test, trace.scene->conventions.depthWinsOnTie) + "\n";
         } else if (const auto* shade = std::get_if<ShadeEvent>(&event)) {
             const Draw& draw =
                 trace.scene->draws[trace.projection->triangles[shade->triangle].draw];

@@ -38,12 +38,18 @@ Normals NormalsStage::run(const Scene& scene, const ViewTransform& view) const {
             for (std::uint32_t v : tri) sum[v] += n;
         }
 
-        // Vertex normals: the normalised sums.
+        // Vertex normals: the file's own, carried to view space by the inverse transpose of
+        // viewFromModel (seed 002; a non-uniform scale would bend them otherwise), or else
+        // the normalised sums of the triangle normals (seed 000).
         normals.vertex.resize(pView.size(), vec3(0.0f));
+        const auto& given = draw.mesh->normals;
+        const dmat3 normalFromModel =
+            given.empty() ? dmat3(1.0) : glm::transpose(glm::inverse(dmat3(view.viewFromModel[d])));
         for (std::size_t v = 0; v < sum.size(); ++v) {
-            const double length = glm::length(sum[v]);
+            const dvec3 n = given.empty() ? sum[v] : normalFromModel * dvec3(given[v]);
+            const double length = glm::length(n);
             if (length > std::numeric_limits<double>::min() && isFinite(length))
-                normals.vertex[v] = vec3(sum[v] / length);
+                normals.vertex[v] = vec3(n / length);
             else
                 ++normals.verticesWithoutNormal;
         }

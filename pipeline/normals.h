@@ -1,8 +1,9 @@
 // Stage 3, normals (seed 000): in view coordinates, each triangle's normal
 // (P2 - P1) x (P3 - P1), normalised, is added to the normals of its three vertices; then
-// every vertex normal is normalised. Degenerate (zero-area) triangles have no normal and
-// contribute nothing; they are counted, as are vertices left without a normal. Skipped
-// when the scene is not lit (nothing would read the normals).
+// every vertex normal is normalised. Normals given by the file (seed 001's `normal`) are
+// used instead, carried to view space by the inverse transpose of the model/view matrix. Degenerate
+// (zero-area) triangles have no normal and contribute nothing; they are counted, as are vertices
+// left without a normal. Skipped when the scene is not lit (nothing would read the normals).
 #pragma once
 
 #include <cstdint>

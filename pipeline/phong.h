@@ -1,13 +1,19 @@
-// The lighting model of seed 000, for one point P' with normal N in view coordinates:
+// The lighting models, for one point P' with normal N in view coordinates.
+//
+// The course's (seed 000), phong():
 //     V = -P',  L = Pl - P',  N, V, L normalised;
 //     if V.N < 0, N := -N                       (turn the normal toward the viewer)
 //     if N.L < 0: no diffuse and no specular     (the light is behind the surface)
 //     else R = 2 (N.L) N - L, normalised; if R.V < 0: no specular
 //     I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n, per colour channel, summed over lights.
-// Clamping to the colour scale (255) happens once, when the image becomes bytes.
-// Every term and every special case is returned, so the pixel inspector can show them.
+// The command files' (seed 001), lambert():
+//     I = sum over lights with N.L >= 0 of  Il O (N.L)  +  Il (H.N)^s  (the second only
+//     when the shininess s > 0; H = (L + E)/|L + E| with E = -P'/|P'|, Blinn-Phong).
+// Clamping to the colour scale happens once, when the image becomes bytes. Every term and
+// every special case is returned, so the pixel inspector can show them.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -20,33 +26,58 @@ namespace rl {
 struct PhongSample {
     vec3 ambient = vec3(0.0f);   // Ia ka
     vec3 diffuse = vec3(0.0f);   // sum of Il Od kd (N.L)
-    vec3 specular = vec3(0.0f);  // sum of Il ks (R.V)^n
+    vec3 specular = vec3(0.0f);  // sum of Il ks (R.V)^n, or Il (H.N)^s
+    vec3 unlit = vec3(0.0f);     // the object colour itself, for a draw that is not lit
     vec3 n = vec3(0.0f);         // unit normal actually used (after the flip)
     vec3 l = vec3(0.0f);         // unit vector toward the (first) light
     vec3 v = vec3(0.0f);         // unit vector toward the viewer
-    vec3 r = vec3(0.0f);         // reflection of L about N
+    vec3 r = vec3(0.0f);         // reflection of L about N (course), or the half vector H
     float nDotL = 0.0f;
-    float rDotV = 0.0f;
+    float rDotV = 0.0f;         // R.V (course) or H.N (Blinn-Phong)
     bool flipped = false;       // V.N < 0: N was turned toward the viewer
     bool lightBehind = false;   // N.L < 0: no diffuse, no specular
     bool noSpecular = false;    // R.V < 0: no specular
     bool noNormal = false;      // N is zero (a vertex of degenerate triangles only): ambient only
     bool lightAtPoint = false;  // L = 0: the light sits on the point, ambient only
 
-    vec3 colour() const { return ambient + diffuse + specular; }
+    vec3 colour() const { return ambient + diffuse + specular + unlit; }
 };
 
-// For one light; `sample` receives the light's terms added to its diffuse and specular,
-// and the vectors of the first light are kept for display.
-inline void addLight(const Material& m, const ViewLight& light, const vec3& pView,
-                     const vec3& nUnit, const vec3& vUnit, bool first, PhongSample& sample) {
-    vec3 toLight = light.pView.w == 0.0 ? vec3(light.pView) : vec3(light.pView) - pView;
-    const float lLength = glm::length(toLight);
-    if (!(lLength > 0.0f)) {
+// The unit vector from pView toward a light, or zero when the light sits on the point.
+inline vec3 towardLight(const ViewLight& light, const vec3& pView) {
+    const vec3 toLight = light.pView.w == 0.0 ? vec3(light.pView) : vec3(light.pView) - pView;
+    const float length = glm::length(toLight);
+    return length > 0.0f ? toLight / length : vec3(0.0f);
+}
+
+// The normal to light with: normalised, and turned toward the viewer when asked and V.N < 0.
+// False when the normal is zero.
+inline bool orientNormal(PhongSample& s, const vec3& pView, const vec3& nView, bool flip) {
+    const float vLength = glm::length(pView);
+    s.v = vLength > 0.0f ? -pView / vLength : vec3(0.0f);
+    const float nLength = glm::length(nView);
+    if (!(nLength > 0.0f)) {
+        s.noNormal = true;
+        return false;
+    }
+    s.n = nView / nLength;
+    if (flip && glm::dot(s.v, s.n) < 0.0f) {
+        s.n = -s.n;
+        s.flipped = true;
+    }
+    return true;
+}
+
+// One light's terms of the course's model, added to sample; the first light's vectors are
+// kept for display.
+inline void addLight(const Material& m, const vec3& od, const ViewLight& light, const vec3& pView,
+                     bool first, PhongSample& sample) {
+    const vec3 l = towardLight(light, pView);
+    if (l == vec3(0.0f)) {
         if (first) sample.lightAtPoint = true;
         return;
     }
-    const vec3 l = toLight / lLength;
+    const vec3& nUnit = sample.n;
     const float nDotL = glm::dot(nUnit, l);
     vec3 r(0.0f);
     float rDotV = 0.0f;
@@ -54,8 +85,8 @@ inline void addLight(const Material& m, const ViewLight& light, const vec3& pVie
         r = 2.0f * nDotL * nUnit - l;
         const float rLength = glm::length(r);
         if (rLength > 0.0f) r /= rLength;
-        rDotV = glm::dot(r, vUnit);
-        sample.diffuse += light.intensity * m.od * m.kd * nDotL;
+        rDotV = glm::dot(r, sample.v);
+        sample.diffuse += light.intensity * od * m.kd * nDotL;
         if (rDotV >= 0.0f && m.ks != 0.0f) {
             // (R.V)^n, with 0^0 = 1 as in C's pow. A negative n (outside the course's range,
             // and warned about when read) makes 0^n infinite: that term is left out rather
@@ -74,24 +105,51 @@ inline void addLight(const Material& m, const ViewLight& light, const vec3& pVie
     }
 }
 
-inline PhongSample phong(const Material& m, const vec3& ambientIntensity, const ViewLight* lights,
-                         std::size_t lightCount, const vec3& pView, const vec3& nView,
-                         bool flipTowardViewer) {
+// The course's model; od is the object colour (the material's Od, or a per-vertex one).
+inline PhongSample phong(const Material& m, const vec3& od, const vec3& ambientIntensity,
+                         const ViewLight* lights, std::size_t lightCount, const vec3& pView,
+                         const vec3& nView, bool flipTowardViewer) {
     PhongSample s;
     s.ambient = ambientIntensity * m.ka;
-    const float vLength = glm::length(pView);
-    s.v = vLength > 0.0f ? -pView / vLength : vec3(0.0f);
-    const float nLength = glm::length(nView);
-    if (!(nLength > 0.0f)) {
-        s.noNormal = true;
-        return s;
+    if (!orientNormal(s, pView, nView, flipTowardViewer)) return s;
+    for (std::size_t i = 0; i < lightCount; ++i) addLight(m, od, lights[i], pView, i == 0, s);
+    return s;
+}
+
+// The command files' model: Lambert for each light in front of the surface, plus
+// Blinn-Phong highlights when the shininess is positive. The object colour does not tint
+// the highlight.
+inline PhongSample lambert(const vec3& objectColour, float shininess, const ViewLight* lights,
+                           std::size_t lightCount, const vec3& pView, const vec3& nView,
+                           bool flipTowardViewer) {
+    PhongSample s;
+    if (!orientNormal(s, pView, nView, flipTowardViewer)) return s;
+    for (std::size_t i = 0; i < lightCount; ++i) {
+        const vec3 l = towardLight(lights[i], pView);
+        const float nDotL = glm::dot(s.n, l);
+        float hDotN = 0.0f;
+        vec3 h(0.0f);
+        if (nDotL >= 0.0f && l != vec3(0.0f)) {
+            s.diffuse += lights[i].intensity * objectColour * nDotL;
+            if (shininess > 0.0f) {
+                const vec3 sum = l + s.v;
+                const float length = glm::length(sum);
+                if (length > 0.0f) {
+                    h = sum / length;
+                    hDotN = std::max(glm::dot(h, s.n), 0.0f);
+                    s.specular += lights[i].intensity * std::pow(hDotN, shininess);
+                }
+            }
+        }
+        if (i == 0) {
+            s.l = l;
+            s.r = h;
+            s.nDotL = nDotL;
+            s.rDotV = hDotN;
+            s.lightBehind = nDotL < 0.0f;
+            s.lightAtPoint = l == vec3(0.0f);
+        }
     }
-    s.n = nView / nLength;
-    if (flipTowardViewer && glm::dot(s.v, s.n) < 0.0f) {
-        s.n = -s.n;
-        s.flipped = true;
-    }
-    for (std::size_t i = 0; i < lightCount; ++i) addLight(m, lights[i], pView, s.n, s.v, i == 0, s);
     return s;
 }
 

@@ -41,6 +41,7 @@ struct DepthTestEvent {
     float depth = 0.0f;                             // the fragment's interpolated depth
     float stored = 0.0f;                            // the depth buffer before the test
     bool passed = false;
+    bool outsideDepthRange = false;  // discarded before the test: depth outside [0, 1]
 };
 
 struct ShadeEvent {

@@ -25,16 +25,26 @@ dmat4 clipFromViewOf(const Scene& scene, const Draw& draw) {
 
 namespace {
 
-double snap(double coordinate, RasterRules::VertexSnap rule) {
-    switch (rule) {
+// A screen coordinate on the rules' sub-pixel grid.
+double snap(double coordinate, const RasterRules& rules) {
+    const double grid = std::ldexp(1.0, rules.subpixelBits);
+    switch (rules.snap) {
         case RasterRules::VertexSnap::Truncate:
-            return std::trunc(coordinate);  // C's (int)
+            return std::trunc(coordinate * grid) / grid;
+        case RasterRules::VertexSnap::Nearest:
+            return std::floor(coordinate * grid + 0.5) / grid;
     }
     return coordinate;
 }
 
 bool finite2(const dvec2& p) {
     return isFinite(p.x) && isFinite(p.y);
+}
+
+// Twice the signed area in pixels (y down): negative when the triangle is counter-clockwise
+// as it appears on the screen.
+double screenArea(const dvec2& a, const dvec2& b, const dvec2& c) {
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
 
 }  // namespace
@@ -82,7 +92,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             const dvec2 exact((pNdc.x + 1.0) * width / 2.0, yFromTop * height / 2.0);
             proj.pNdc[i] = pNdc;
             proj.pScreenExact[i] = exact;
-            dvec2 snapped(snap(exact.x, scene.rules.snap), snap(exact.y, scene.rules.snap));
+            dvec2 snapped(snap(exact.x, scene.rules), snap(exact.y, scene.rules));
             // An infinite coordinate (w = 0 under the naive projection) stays infinite, so the
             // triangle is dropped as NonFinite instead of being pulled in to the guard band.
             if (finite2(snapped) &&
@@ -91,7 +101,8 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                 ++out.outsideGuardBand;
             }
             proj.pScreen[i] = snapped;
-            proj.depth[i] = static_cast<float>(proj.pView[i].z);
+            proj.depth[i] = static_cast<float>(
+                conv.depth == DepthSource::ViewZ ? proj.pView[i].z : pClip.z / pClip.w);
             proj.inFront[i] = 1;
         };
         auto resizeVertices = [&](std::size_t n) {
@@ -102,100 +113,141 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             proj.inFront.resize(n, 0);
         };
         resizeVertices(proj.pView.size());
-        const auto inFront = [&](std::uint32_t i) { return proj.pClip[i].w >= out.nearW; };
         for (std::uint32_t i = 0; i < proj.originalVertexCount; ++i)
-            if (out.naive || inFront(i)) project(i);
+            if (out.naive || proj.pClip[i].w >= out.nearW) project(i);
 
-        // A vertex on the edge from a (in front) to b (behind), on the near plane. Always
-        // computed from the vertex in front, so that two triangles sharing the edge get the
-        // same point, bit for bit.
-        auto addClipVertex = [&](std::uint32_t a, std::uint32_t b) {
-            const double wa = proj.pClip[a].w;
-            const double wb = proj.pClip[b].w;
-            const double t = (out.nearW - wa) / (wb - wa);
+        // The planes a triangle is clipped against, each as a signed distance (inside >= 0):
+        // the draw's clip planes in view space, then the near plane in clip space.
+        const std::size_t planeCount = draw.clipPlanes.size() + (out.naive ? 0 : 1);
+        auto distance = [&](std::size_t plane, std::uint32_t v) {
+            if (plane < draw.clipPlanes.size())
+                return glm::dot(draw.clipPlanes[plane], proj.pView[v]);
+            return proj.pClip[v].w - out.nearW;
+        };
+        // A vertex where the edge from a (inside) to b (outside) crosses a plane. Always
+        // computed from the inside vertex, so two triangles sharing the edge get the same
+        // point, bit for bit.
+        auto addClipVertex = [&](std::size_t plane, std::uint32_t a, std::uint32_t b) {
+            const double da = distance(plane, a);
+            const double db = distance(plane, b);
+            const double t = da / (da - db);
             const auto index = static_cast<std::uint32_t>(proj.pView.size());
             const dvec4 pView = glm::mix(proj.pView[a], proj.pView[b], t);
             dvec4 pClip = glm::mix(proj.pClip[a], proj.pClip[b], t);
-            pClip.w = out.nearW;
+            if (plane == draw.clipPlanes.size()) pClip.w = out.nearW;  // exactly on it
             proj.pView.push_back(pView);
             proj.pClip.push_back(pClip);
             proj.generated.push_back({a, b, t});
             resizeVertices(proj.pView.size());
-            project(index);
+            if (pClip.w >= out.nearW || out.naive) project(index);
             return index;
         };
 
+        const auto drawIndex = static_cast<std::uint32_t>(d);
         const auto& triangles = draw.mesh->triangles;
         proj.fate.resize(triangles.size(), TriangleFate::Inside);
+        std::vector<std::uint32_t> polygon, clipped;
         for (std::size_t t = 0; t < triangles.size(); ++t) {
             const auto& tri = triangles[t];
             const auto source = static_cast<std::uint32_t>(t);
-            const auto drawIndex = static_cast<std::uint32_t>(d);
-            // A triangle drawn as it is, unless a coordinate is not finite.
-            auto projectWhole = [&] {
-                for (std::uint32_t v : tri) {
-                    if (!finite2(proj.pScreen[v]) || !std::isfinite(proj.depth[v])) {
+            // Emits one screen triangle, unless a coordinate is not finite or cull drops it.
+            auto emit = [&](const std::array<std::uint32_t, 3>& v) {
+                for (std::uint32_t i : v) {
+                    if (!finite2(proj.pScreen[i]) || !std::isfinite(proj.depth[i])) {
                         proj.fate[t] = TriangleFate::NonFinite;
-                        ++out.nonFinite;
-                        return;
+                        return false;
                     }
                 }
-                out.triangles.push_back({drawIndex, source, tri});
-                ++out.inside;
+                if (draw.cull && !(screenArea(proj.pScreen[v[0]], proj.pScreen[v[1]],
+                                              proj.pScreen[v[2]]) < 0.0)) {
+                    proj.fate[t] = TriangleFate::Culled;
+                    return false;
+                }
+                out.triangles.push_back({drawIndex, source, v});
+                return true;
             };
             if (out.naive) {
                 bool throughZero = false;
                 for (std::uint32_t v : tri) throughZero = throughZero || proj.pClip[v].w <= 0.0;
                 out.throughZeroOrBehind += throughZero ? 1 : 0;
-                projectWhole();
+            }
+            // Which planes cut the triangle, and is it wholly outside one of them?
+            bool cut = false;
+            std::size_t outsidePlane = planeCount;
+            for (std::size_t plane = 0; plane < planeCount && outsidePlane == planeCount; ++plane) {
+                int inside = 0;
+                for (std::uint32_t v : tri) inside += distance(plane, v) >= 0.0 ? 1 : 0;
+                if (inside == 0) outsidePlane = plane;
+                cut = cut || inside < 3;
+            }
+            if (outsidePlane < planeCount) {
+                const bool near = outsidePlane == draw.clipPlanes.size();
+                proj.fate[t] = near ? TriangleFate::Behind : TriangleFate::ClippedAway;
+                ++(near ? out.behind : out.clippedAway);
                 continue;
             }
-            int frontCount = 0;
-            for (std::uint32_t v : tri) frontCount += inFront(v) ? 1 : 0;
-            if (frontCount == 3) {
-                projectWhole();
+            if (!cut) {
+                if (emit(tri))
+                    ++out.inside;
+                else
+                    ++(proj.fate[t] == TriangleFate::Culled ? out.culled : out.nonFinite);
                 continue;
             }
-            if (frontCount == 0) {
-                proj.fate[t] = TriangleFate::Behind;
-                ++out.behind;
-                continue;
-            }
-            // Sutherland-Hodgman against w >= near: walk the edges, keep the vertices in
-            // front and add one where an edge crosses the plane. Winding is preserved.
-            std::array<std::uint32_t, 4> polygon{};
-            int count = 0;
-            for (int k = 0; k < 3; ++k) {
-                const std::uint32_t a = tri[static_cast<std::size_t>(k)];
-                const std::uint32_t b = tri[static_cast<std::size_t>((k + 1) % 3)];
-                const bool aFront = inFront(a);
-                const bool bFront = inFront(b);
-                if (aFront) polygon[static_cast<std::size_t>(count++)] = a;
-                if (aFront != bFront)
-                    polygon[static_cast<std::size_t>(count++)] =
-                        aFront ? addClipVertex(a, b) : addClipVertex(b, a);
+            // Sutherland-Hodgman, one plane after the other: walk the polygon's edges, keep
+            // the vertices inside and add one where an edge crosses the plane. Winding is
+            // preserved; the polygon left is cut into a fan.
+            polygon.assign(tri.begin(), tri.end());
+            for (std::size_t plane = 0; plane < planeCount && polygon.size() >= 3; ++plane) {
+                clipped.clear();
+                for (std::size_t k = 0; k < polygon.size(); ++k) {
+                    const std::uint32_t a = polygon[k];
+                    const std::uint32_t b = polygon[(k + 1) % polygon.size()];
+                    const bool aIn = distance(plane, a) >= 0.0;
+                    const bool bIn = distance(plane, b) >= 0.0;
+                    if (aIn) clipped.push_back(a);
+                    if (aIn != bIn)
+                        clipped.push_back(aIn ? addClipVertex(plane, a, b)
+                                              : addClipVertex(plane, b, a));
+                }
+                polygon.swap(clipped);
             }
             proj.fate[t] = TriangleFate::Clipped;
-            ++out.clipped;
-            out.triangles.push_back({drawIndex, source, {polygon[0], polygon[1], polygon[2]}});
-            if (count == 4)  // a quad: split into two triangles
-                out.triangles.push_back({drawIndex, source, {polygon[0], polygon[2], polygon[3]}});
+            bool any = false;
+            for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
+                any = emit({polygon[0], polygon[k], polygon[k + 1]}) || any;
+            if (any) proj.fate[t] = TriangleFate::Clipped;
+            if (polygon.size() < 3) {
+                proj.fate[t] = TriangleFate::ClippedAway;  // only an edge or a point was left
+                ++out.clippedAway;
+            } else if (any) {
+                ++out.clipped;
+            } else {
+                ++(proj.fate[t] == TriangleFate::Culled ? out.culled : out.nonFinite);
+            }
         }
     }
 
-    // Tell the user what was clipped, dropped or drawn naively.
+    // Tell the user what was clipped, dropped, culled or drawn naively.
     const SourceLocation where{scene.name, 0, 0};
     const std::size_t total = scene.triangleCount();
     if (total > 0 && out.behind == total) {
         diagnostics.warn(where,
                          "every triangle is behind the camera (is N pointing away from "
                          "the object?): the image is empty");
-    } else if (out.behind + out.clipped > 0) {
-        diagnostics.note(
-            where, std::to_string(out.clipped) + " triangles cross the near plane z = " +
-                       formatNumber(out.nearW) + " and were clipped; " +
-                       std::to_string(out.behind) + " are wholly behind it and were not drawn");
+    } else if (out.behind + out.clipped + out.clippedAway > 0) {
+        bool planes = false;
+        for (const Draw& draw : scene.draws) planes = planes || !draw.clipPlanes.empty();
+        std::string text = countOf(out.clipped, "triangle was", "triangles were") +
+                           " clipped against the near plane z = " + formatNumber(out.nearW) +
+                           (planes ? " and the clip planes" : "") + "; " +
+                           countOf(out.behind, "lies", "lie") + " wholly behind the near plane";
+        if (out.clippedAway > 0)
+            text += " and " + std::to_string(out.clippedAway) + " wholly outside a clip plane";
+        diagnostics.note(where, text + ", not drawn");
     }
+    if (out.culled > 0)
+        diagnostics.note(where, countOf(out.culled, "triangle is", "triangles are") +
+                                    " clockwise on screen and culled");
     if (out.naive && out.throughZeroOrBehind > 0) {
         diagnostics.warn(where, "naive projection: " + std::to_string(out.throughZeroOrBehind) +
                                     " triangles have a vertex at or behind the camera and were "
@@ -203,7 +255,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
     }
     if (out.outsideGuardBand > 0) {
         diagnostics.warn(where, std::to_string(out.outsideGuardBand) +
-                                    " vertices project more than 2^29 pixels from the image and "
+                                    " vertices project more than 2^28 pixels from the image and "
                                     "were pulled in to that distance: triangles through them "
                                     "may be distorted on screen");
     }

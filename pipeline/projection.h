@@ -1,17 +1,21 @@
-// Stage 4, projection (seed 000), with clipping against the near plane:
+// Stage 4, projection (seed 000), with clipping and culling:
 //  1. every vertex to clip space, pClip = clipFromView * pView; for the course camera
 //     pClip = ((d/hx) x, (d/hy) y, z, z), so w is the view z;
-//  2. each triangle is clipped against the plane w = near (Sutherland-Hodgman against one
-//     plane); a clipped triangle becomes one triangle or a quad split in two, so nothing
-//     is ever divided by a w at or behind the camera;
+//  2. each triangle is clipped against the draw's clip planes (view space, seed 001's
+//     clipplane) and against the near plane w = near (Sutherland-Hodgman, one plane after
+//     the other); the polygon left is cut into a fan of triangles, so nothing is ever
+//     divided by a w at or behind the camera;
 //  3. every vertex in front is projected to [-1, 1], pNdc = pClip.xy / pClip.w: for the
 //     course, ((d/hx) x/z, (d/hy) y/z);
 //  4. then to pixels, as the seed writes it:
 //     x = (int)((pNdc.x + 1) * width / 2),  y = (int)((1 - pNdc.y) * height / 2),
-//     kept within a guard band of +-2^29 pixels so that scan conversion's integer
-//     arithmetic is exact (a vertex beyond it is pulled in, and a warning says so).
+//     snapped to the rules' sub-pixel grid and kept within a guard band of +-2^28 pixels
+//     so that scan conversion's integer arithmetic is exact (a vertex beyond it is pulled
+//     in, and a warning says so);
+//  5. with cull set, triangles that are clockwise on screen are dropped.
 // Vertices made by clipping are appended after a draw's own vertices and remember the
-// edge and parameter they came from, so later stages interpolate any attribute for them.
+// edge and parameter they came from (possibly another made vertex), so later stages
+// interpolate any attribute for them.
 #pragma once
 
 #include <array>
@@ -27,13 +31,16 @@
 namespace rl {
 
 enum class TriangleFate : std::uint8_t {
-    Inside,     // wholly in front of the near plane: projected as is
-    Clipped,    // crossed the near plane: its front part is drawn
-    Behind,     // wholly at or behind the near plane: not drawn
-    NonFinite,  // a coordinate is NaN or infinite (only with the naive projection)
+    Inside,       // wholly inside every plane: projected as is
+    Clipped,      // crossed the near plane or a clip plane: the part inside is drawn
+    Behind,       // wholly at or behind the near plane: not drawn
+    ClippedAway,  // wholly outside one of the draw's clip planes: not drawn
+    Culled,       // clockwise on screen in a draw with cull set: not drawn
+    NonFinite,    // a coordinate is NaN or infinite (only with the naive projection)
 };
 
-// A vertex made by clipping: the point lerp(pView[a], pView[b], t), with a in front.
+// A vertex made by clipping: the point lerp(pView[a], pView[b], t), with a inside the plane
+// that cut the edge (a or b may themselves be made vertices, made earlier).
 struct ClipVertex {
     std::uint32_t a = 0;
     std::uint32_t b = 0;
@@ -67,13 +74,13 @@ struct Projection {
     std::vector<DrawProjection> draws;
     std::vector<ScreenTriangle> triangles;  // what scan conversion receives, in draw order
 
-    std::size_t inside = 0, clipped = 0, behind = 0, nonFinite = 0;
+    std::size_t inside = 0, clipped = 0, behind = 0, clippedAway = 0, culled = 0, nonFinite = 0;
     std::size_t throughZeroOrBehind = 0;  // naive projection: triangles with a vertex z <= 0
     std::size_t outsideGuardBand = 0;     // vertices pulled in to the guard band
 };
 
 // Snapped screen coordinates are kept within +-kGuardBand pixels.
-inline constexpr double kGuardBand = double(1 << 29);
+inline constexpr double kGuardBand = double(1 << 28);
 
 // The projection matrix of the course camera: pClip = ((d/hx) x, (d/hy) y, z, z).
 dmat4 courseClipFromView(const CourseCamera& camera);

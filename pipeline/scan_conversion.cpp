@@ -9,66 +9,108 @@ namespace rl {
 
 namespace {
 
-// Floor of a / b for b > 0, rounding toward minus infinity.
-std::int64_t floorDiv(std::int64_t a, std::int64_t b) {
-    const std::int64_t q = a / b;
+// 128-bit integers for the products of grid coordinates (up to 2^45 each).
+__extension__ using Int128 = __int128;
+
+// Floor and ceiling of a / b for b > 0.
+template <typename T>
+T floorDiv(T a, T b) {
+    const T q = a / b;
     return (a % b != 0 && a < 0) ? q - 1 : q;
 }
+template <typename T>
+T ceilDiv(T a, T b) {
+    return -floorDiv<T>(-a, b);
+}
 
-ScanEdge makeEdge(const dvec2& top, const dvec2& bottom) {
+std::int64_t toGrid(double pixels, int bits) {
+    return static_cast<std::int64_t>(std::llround(std::ldexp(pixels, bits)));
+}
+
+ScanEdge makeEdge(const dvec2& top, const dvec2& bottom, int bits) {
     ScanEdge e;
-    e.xTop = static_cast<std::int64_t>(top.x);
-    e.yTop = static_cast<std::int64_t>(top.y);
-    e.xBottom = static_cast<std::int64_t>(bottom.x);
-    e.yBottom = static_cast<std::int64_t>(bottom.y);
+    e.bits = bits;
+    e.xTop = toGrid(top.x, bits);
+    e.yTop = toGrid(top.y, bits);
+    e.xBottom = toGrid(bottom.x, bits);
+    e.yBottom = toGrid(bottom.y, bits);
     const std::int64_t dy = e.yBottom - e.yTop;
     e.dxdy = dy > 0 ? double(e.xBottom - e.xTop) / double(dy) : 0.0;
     return e;
 }
 
-// Walks one edge down the scanlines: x on row y is xTop + q + r/dy, 0 <= r < dy.
-// Moving to the next row adds dx/dy = step + stepRemainder/dy: integers only.
+// The sampling grid: pixel index p is sampled at p * grid + offset (grid units).
+struct Grid {
+    std::int64_t grid = 1;
+    std::int64_t offset = 0;
+    bool topLeft = false;
+    // The first pixel index whose sample is at or after v (grid units), and at or before it.
+    std::int64_t firstAtOrAfter(std::int64_t v) const { return ceilDiv(v - offset, grid); }
+    std::int64_t lastAtOrBefore(std::int64_t v) const { return floorDiv(v - offset, grid); }
+    std::int64_t sample(std::int64_t p) const { return p * grid + offset; }
+};
+
+// Walks one edge down the scanlines. On a row sampled at ys, the edge's x gives
+// (x - offset) / grid = q + r / D exactly, with D = grid * dy and 0 <= r < D; moving to the
+// next row adds grid * dx / D = step + stepRemainder / D: integers only.
 class EdgeWalker {
 public:
-    EdgeWalker(const ScanEdge& e, std::int64_t firstRow) : m_edge(e) {
-        m_dy = e.yBottom - e.yTop;
+    EdgeWalker(const ScanEdge& e, const Grid& g, std::int64_t firstRow) {
+        const std::int64_t dy = e.yBottom - e.yTop;
         const std::int64_t dx = e.xBottom - e.xTop;
-        m_step = floorDiv(dx, m_dy);
-        m_stepRemainder = dx - m_step * m_dy;
-        const std::int64_t n = (firstRow - e.yTop) * dx;  // |n| < 2^61 in the guard band
-        m_q = floorDiv(n, m_dy);
-        m_r = n - m_q * m_dy;
+        m_d = g.grid * dy;
+        const std::int64_t dxFloor = floorDiv(dx, dy);
+        m_step = dxFloor;
+        m_stepRemainder = g.grid * (dx - dxFloor * dy);
+        const Int128 v = Int128(e.xTop - g.offset) * dy + Int128(g.sample(firstRow) - e.yTop) * dx;
+        const Int128 q = floorDiv<Int128>(v, m_d);
+        m_q = static_cast<std::int64_t>(q);
+        m_r = static_cast<std::int64_t>(v - q * m_d);
+        m_grid = g;
     }
-    std::int64_t floorX() const { return m_edge.xTop + m_q; }
-    std::int64_t ceilX() const { return m_edge.xTop + m_q + (m_r > 0 ? 1 : 0); }
-    double exactX() const { return double(m_edge.xTop + m_q) + double(m_r) / double(m_dy); }
+    std::int64_t floorX() const { return m_q; }
+    std::int64_t ceilX() const { return m_q + (m_r > 0 ? 1 : 0); }
+    double exactX() const {  // pixels
+        return (double(m_q) + double(m_r) / double(m_d)) +
+               double(m_grid.offset) / double(m_grid.grid);
+    }
     void nextRow() {
         m_q += m_step;
         m_r += m_stepRemainder;
-        if (m_r >= m_dy) {
-            m_r -= m_dy;
+        if (m_r >= m_d) {
+            m_r -= m_d;
             ++m_q;
         }
     }
 
 private:
-    const ScanEdge& m_edge;
-    std::int64_t m_dy = 1, m_step = 0, m_stepRemainder = 0, m_q = 0, m_r = 0;
+    std::int64_t m_d = 1, m_step = 0, m_stepRemainder = 0, m_q = 0, m_r = 0;
+    Grid m_grid;
 };
 
 std::int32_t toRow(std::int64_t v) {
     return static_cast<std::int32_t>(std::clamp<std::int64_t>(v, -(1ll << 30), 1ll << 30));
 }
 
-}  // namespace
-
-double ScanEdge::xAt(std::int64_t y) const {
-    const std::int64_t dy = yBottom - yTop;
-    if (dy <= 0) return double(xTop);
-    return double(xTop) + double((y - yTop) * (xBottom - xTop)) / double(dy);
+Grid gridOf(const RasterRules& rules) {
+    Grid g;
+    g.grid = std::int64_t(1) << rules.subpixelBits;
+    g.offset = toGrid(rules.sampleOffset, rules.subpixelBits);
+    g.topLeft = rules.fill == RasterRules::FillRule::TopLeft;
+    return g;
 }
 
-TriangleSetup setupTriangle(const std::array<dvec2, 3>& p) {
+}  // namespace
+
+double ScanEdge::xAt(double y) const {
+    const double scale = std::ldexp(1.0, -bits);
+    const std::int64_t dy = yBottom - yTop;
+    if (dy <= 0) return double(xTop) * scale;
+    return (double(xTop) + (y / scale - double(yTop)) * double(xBottom - xTop) / double(dy)) *
+           scale;
+}
+
+TriangleSetup setupTriangle(const std::array<dvec2, 3>& p, const RasterRules& rules) {
     TriangleSetup s;
     s.order = {0, 1, 2};
     // Sort by y, top first; ties keep the triangle's vertex order.
@@ -76,19 +118,23 @@ TriangleSetup setupTriangle(const std::array<dvec2, 3>& p) {
         return p[static_cast<std::size_t>(a)].y < p[static_cast<std::size_t>(b)].y;
     });
     for (std::size_t k = 0; k < 3; ++k) s.sorted[k] = p[static_cast<std::size_t>(s.order[k])];
-    s.longEdge = makeEdge(s.sorted[0], s.sorted[2]);
-    s.upperEdge = makeEdge(s.sorted[0], s.sorted[1]);
-    s.lowerEdge = makeEdge(s.sorted[1], s.sorted[2]);
+    const int bits = rules.subpixelBits;
+    s.longEdge = makeEdge(s.sorted[0], s.sorted[2], bits);
+    s.upperEdge = makeEdge(s.sorted[0], s.sorted[1], bits);
+    s.lowerEdge = makeEdge(s.sorted[1], s.sorted[2], bits);
     const ScanEdge& l = s.longEdge;
     const ScanEdge& u = s.upperEdge;
-    // (s1 - s0) x (s2 - s0): exact in 64 bits inside the guard band (|coordinate| <= 2^29).
-    s.doubleArea =
-        (u.xBottom - u.xTop) * (l.yBottom - l.yTop) - (u.yBottom - u.yTop) * (l.xBottom - l.xTop);
+    // (s1 - s0) x (s2 - s0), exactly: 128 bits hold the products of grid coordinates.
+    const Int128 area = Int128(u.xBottom - u.xTop) * (l.yBottom - l.yTop) -
+                        Int128(u.yBottom - u.yTop) * (l.xBottom - l.xTop);
+    s.orientation = area > 0 ? 1 : (area < 0 ? -1 : 0);
+    s.doubleArea = double(area) * std::ldexp(1.0, -2 * bits);
     // The middle vertex is right of the long edge when the area is positive.
-    s.longEdgeOnLeft = s.doubleArea > 0;
-    // Inclusive rule: every row from the top vertex's to the bottom vertex's.
-    s.yFirst = toRow(l.yTop);
-    s.yLast = toRow(l.yBottom);
+    s.longEdgeOnLeft = area > 0;
+    // Rows sampled: top <= sample <= bottom (inclusive) or top <= sample < bottom (top-left).
+    const Grid g = gridOf(rules);
+    s.yFirst = toRow(g.firstAtOrAfter(l.yTop));
+    s.yLast = toRow(g.topLeft ? g.firstAtOrAfter(l.yBottom) - 1 : g.lastAtOrBefore(l.yBottom));
     return s;
 }
 
@@ -98,12 +144,14 @@ ScanConversion ScanConversionStage::run(const Scene& scene, const Projection& pr
     ScanConversion out;
     const std::int64_t width = scene.width;
     const std::int32_t height = scene.height;
+    const Grid g = gridOf(scene.rules);
     out.spanStart.reserve(projection.triangles.size() + 1);
 
     for (std::size_t t = 0; t < projection.triangles.size(); ++t) {
         out.spanStart.push_back(static_cast<std::uint32_t>(out.spans.size()));
         const auto triangle = static_cast<std::uint32_t>(t);
-        const TriangleSetup s = setupTriangle(screenVertices(projection, projection.triangles[t]));
+        const TriangleSetup s =
+            setupTriangle(screenVertices(projection, projection.triangles[t]), scene.rules);
         if constexpr (Probe::enabled) probe.onTriangle(triangle, s);
         if (s.degenerate()) {
             ++out.degenerate;
@@ -119,15 +167,17 @@ ScanConversion ScanConversionStage::run(const Scene& scene, const Projection& pr
         const std::size_t spansBefore = out.spans.size();
 
         // Fill rows [first, last] between the long edge and one short edge.
-        EdgeWalker longWalker(s.longEdge, rowBegin);
+        EdgeWalker longWalker(s.longEdge, g, rowBegin);
         auto walk = [&](const ScanEdge& shortEdge, std::int32_t first, std::int32_t last) {
-            EdgeWalker shortWalker(shortEdge, first);
+            EdgeWalker shortWalker(shortEdge, g, first);
             const EdgeWalker& left = s.longEdgeOnLeft ? longWalker : shortWalker;
             const EdgeWalker& right = s.longEdgeOnLeft ? shortWalker : longWalker;
             for (std::int32_t y = first; y <= last; ++y) {
-                // Inclusive rule: pixels ceil(xLeft) .. floor(xRight), clipped to the screen.
+                // Samples left <= x <= right (inclusive) or left <= x < right (top-left),
+                // clipped to the screen.
                 const std::int64_t begin = std::max<std::int64_t>(left.ceilX(), 0);
-                const std::int64_t end = std::min<std::int64_t>(right.floorX() + 1, width);
+                const std::int64_t end =
+                    std::min<std::int64_t>(g.topLeft ? right.ceilX() : right.floorX() + 1, width);
                 if (begin < end) {
                     const Span span{y, static_cast<std::int32_t>(begin),
                                     static_cast<std::int32_t>(end)};
@@ -140,12 +190,13 @@ ScanConversion ScanConversionStage::run(const Scene& scene, const Projection& pr
                 shortWalker.nextRow();
             }
         };
-        // Upper part: rows above the middle vertex (all rows when the bottom is flat);
-        // lower part: from the middle vertex's row down.
+        // Upper part: rows sampled above the middle vertex (all rows when the bottom is
+        // flat); lower part: from the middle vertex's row down.
         const std::int64_t yMiddle = s.upperEdge.yBottom;
         const bool flatBottom = s.lowerEdge.yBottom == yMiddle;
         const std::int32_t upperLast =
-            flatBottom ? rowEnd : std::min<std::int32_t>(rowEnd, toRow(yMiddle - 1));
+            flatBottom ? rowEnd
+                       : std::min<std::int32_t>(rowEnd, toRow(g.firstAtOrAfter(yMiddle) - 1));
         if (rowBegin <= upperLast) walk(s.upperEdge, rowBegin, upperLast);
         if (!flatBottom) {
             const std::int32_t lowerFirst = std::max(rowBegin, upperLast + 1);

@@ -4,17 +4,18 @@
 // vertex. Walking down the scanlines, the x of each edge changes by its constant dx/dy
 // from one scanline to the next, and the span between the two edges is filled.
 //
-// The walk is exact: the snapped vertices are integers, so each edge's x on a scanline is
-// xTop + q + r/dy with an integer quotient q and remainder 0 <= r < dy, both stepped by
-// constants per scanline (Bresenham's idea). No rounding error can open a crack between
-// two triangles or drop a pixel at a shared vertex.
+// The walk is exact: the snapped vertices lie on a grid of 1/2^bits pixel (bits = 0 for the
+// course: integers), so each edge's x on a scanline is a whole number of grid steps plus a
+// remainder r/D, and both are stepped by constants per scanline (Bresenham's idea). No
+// rounding error can open a crack between two triangles or drop a pixel at a shared vertex.
 //
-// Rules (seed 000 as written): pixel (x, y) is sampled at the integer point (x, y), where
-// the truncated vertices lie; a sample exactly on an edge belongs to the triangle, so shared
-// edges are covered by both triangles (no cracks, some pixels twice). Scanlines and spans
-// are clipped to the screen before walking, so a triangle a thousand times the screen
-// costs no more than the pixels it covers. Triangles of zero area on screen have no
-// interior and are counted, not scanned.
+// Rules (RasterRules): pixel (x, y) is sampled at (x + offset, y + offset). Under the
+// course's inclusive rule a sample exactly on an edge belongs to the triangle, so shared
+// edges are covered by both triangles (no cracks, some pixels twice); under the top-left
+// rule (seed 001's half-open DDA: rows top <= y < bottom, pixels left <= x < right) it
+// belongs to exactly one. Scanlines and spans are clipped to the screen before walking,
+// so a triangle a thousand times the screen costs no more than the pixels it covers.
+// Triangles of zero area on screen have no interior and are counted, not scanned.
 #pragma once
 
 #include <array>
@@ -35,29 +36,32 @@ struct Span {
     bool operator==(const Span&) const = default;
 };
 
-// An edge as the scanline walk sees it: from its top end to its bottom end, in pixels.
+// An edge as the scanline walk sees it: from its top end to its bottom end, in grid units
+// (1/2^bits of a pixel).
 struct ScanEdge {
     std::int64_t xTop = 0, yTop = 0;
     std::int64_t xBottom = 0, yBottom = 0;
+    int bits = 0;
     double dxdy = 0.0;  // change of x from one scanline to the next (for display)
 
-    // The x where the edge crosses row y, exactly: xTop + (y - yTop) dx / dy.
-    double xAt(std::int64_t y) const;
+    // The x in pixels where the edge crosses the line y (in pixels).
+    double xAt(double y) const;
 };
 
 // The edge table of one triangle.
 struct TriangleSetup {
-    std::array<dvec2, 3> sorted{};            // vertices sorted by y, top first
+    std::array<dvec2, 3> sorted{};            // vertices sorted by y, top first (pixels)
     std::array<int, 3> order{};               // sorted[k] is the triangle's vertex order[k]
-    std::int64_t doubleArea = 0;              // (s1 - s0) x (s2 - s0) of the sorted vertices
+    double doubleArea = 0.0;                  // (s1 - s0) x (s2 - s0), pixels^2 (for display)
+    int orientation = 0;                      // its exact sign: -1, 0 or +1
     ScanEdge longEdge, upperEdge, lowerEdge;  // top-bottom, top-middle, middle-bottom
     bool longEdgeOnLeft = false;              // the middle vertex lies right of the long edge
     std::int32_t yFirst = 0, yLast = -1;      // sampled rows, before screen clipping
-    bool degenerate() const { return doubleArea == 0; }
+    bool degenerate() const { return orientation == 0; }
 };
 
-// Screen vertices are integers (snapped) within the guard band of projection.h.
-TriangleSetup setupTriangle(const std::array<dvec2, 3>& pScreen);
+// Screen vertices lie on the rules' sub-pixel grid within the guard band of projection.h.
+TriangleSetup setupTriangle(const std::array<dvec2, 3>& pScreen, const RasterRules& rules);
 
 struct ScanConversion {
     std::vector<std::uint32_t> spanStart;  // spans of triangle t: [spanStart[t], spanStart[t+1])

@@ -25,6 +25,34 @@ RasterRules RasterRules::course() {
     return RasterRules{};
 }
 
+RasterRules RasterRules::hw2() {
+    RasterRules rules;
+    rules.subpixelBits = 16;
+    rules.sampleOffset = 0.0;
+    rules.snap = VertexSnap::Nearest;
+    rules.fill = FillRule::TopLeft;
+    rules.interpolation = Interpolation::PerspectiveCorrect;
+    return rules;
+}
+
+Conventions Conventions::course() {
+    return Conventions{};
+}
+
+Conventions Conventions::hw2() {
+    Conventions c;
+    c.ndcYUp = false;  // (-1, -1) is the top-left corner
+    c.depth = DepthSource::NdcZ;
+    c.depthClear = 1.0f;
+    c.depthWinsOnTie = true;
+    c.depthRangeClip = true;
+    c.flipNormalsTowardViewer = false;
+    c.colourScale = 1.0f;
+    c.rounding = ByteRounding::Nearest;
+    c.background = vec4(0.0f);  // untouched pixels are transparent black
+    return c;
+}
+
 std::size_t Scene::triangleCount() const {
     std::size_t n = 0;
     for (const auto& draw : draws) n += draw.mesh ? draw.mesh->triangles.size() : 0;

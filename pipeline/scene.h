@@ -1,14 +1,16 @@
 // The scene: what every input format becomes, and the only thing the stages read.
 //
-// A scene is a list of draws (a mesh with its material, model matrix and shading model),
-// the lights, an optional course camera (C, N, V, d, hx, hy), the image size, and the
-// conventions of the format it came from (how NDC maps to pixels, what the depth buffer
-// stores, the colour scale, how bytes are rounded). The stages read conventions from the
+// A scene is a list of draws (a mesh with its per-vertex attributes, material, model and
+// projection matrices, lighting model and flags), the lights, an optional course camera
+// (C, N, V, d, hx, hy), the image size, the conventions of the format it came from (how
+// NDC maps to pixels, what the depth buffer stores, the colour scale, how bytes are
+// rounded) and its rasterization rules. The stages read conventions and rules from the
 // scene; they have no "if course format" branches.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,9 +22,13 @@
 namespace rl {
 
 // A triangle mesh in model space. Vertex indices are 0-based here (files are 1-based).
+// The attributes beside the positions are optional: empty when the source gives none.
 struct Mesh {
-    std::vector<dvec4> positions;  // model space, w = 1 for course files
+    std::vector<dvec4> positions;  // model space, w = 1 unless the file gives w (HW2 xyzw)
     std::vector<std::array<std::uint32_t, 3>> triangles;
+    std::vector<vec3> colours;       // object colour per vertex, in the scene's colour scale
+    std::vector<vec3> normals;       // model-space normals given by the file
+    std::vector<vec2> texcoords;     // texture coordinates (s, t)
     SourceLocation source;           // the file it was read from
     std::vector<int> triangleLines;  // source line of each triangle (may be empty)
 };
@@ -39,8 +45,20 @@ struct Material {
 // A point light (w = 1) or a directional light (w = 0, position is the direction toward it).
 struct Light {
     dvec4 pWorld = dvec4(0.0, 0.0, 0.0, 1.0);
-    vec3 intensity = vec3(0.0f);  // Il, in the scene's colour scale
+    vec3 intensity = vec3(0.0f);  // Il, in the scene's colour scale (may exceed it, or be < 0)
     SourceLocation where;
+};
+
+// A texture: RGBA texels, 0..1, row 0 at the top (t = 0).
+struct Texture {
+    int width = 0;
+    int height = 0;
+    std::vector<vec4> texels;
+    std::string name;
+    vec4 at(int x, int y) const {
+        return texels[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                      static_cast<std::size_t>(x)];
+    }
 };
 
 // The course camera of seed 000: position C, view direction N, up hint V, and the
@@ -59,13 +77,28 @@ struct CourseCamera {
 };
 
 enum class ShadingModel : std::uint8_t {
-    Flat,     // one Phong evaluation per triangle, at its barycentre (seed 004)
-    Gouraud,  // Phong at the vertices, colours interpolated
-    Phong,    // Phong per pixel with interpolated P' and N (seed 000)
+    Flat,     // one lighting evaluation per triangle, at its barycentre (seed 004)
+    Gouraud,  // lighting at the vertices, colours interpolated
+    Phong,    // lighting per pixel with interpolated P' and N (seed 000)
 };
 
 const char* shadingModelName(ShadingModel model);  // "flat", "gouraud", "phong"
 std::optional<ShadingModel> shadingModelFromName(std::string_view name);
+
+// How a point is lit.
+enum class LightingModel : std::uint8_t {
+    CoursePhong,  // seed 000: Ia ka + Il Od kd (N.L) + Il ks (R.V)^n, N turned to the viewer
+    Lambert,      // seed 001: sum over lights of (N.L) Il O, lights behind (N.L < 0) left
+                  // out, plus Blinn-Phong Il (H.N)^shininess when shininess > 0
+    Unlit,        // the object colour as it is
+};
+
+// Where the object colour (the course's Od) comes from.
+enum class ColourSource : std::uint8_t {
+    Material,  // material.od
+    Vertex,    // the mesh's per-vertex colours, interpolated
+    Texture,   // the draw's texture at the interpolated (s, t)
+};
 
 struct Draw {
     std::string name;  // for messages and views, e.g. "calice2.byu"
@@ -75,14 +108,24 @@ struct Draw {
     // The projection of this draw; when absent, the course camera's (d, hx, hy).
     std::optional<dmat4> clipFromView;
     ShadingModel shading = ShadingModel::Phong;
+    LightingModel lighting = LightingModel::CoursePhong;
+    ColourSource colour = ColourSource::Material;
+    std::shared_ptr<const Texture> texture;  // with ColourSource::Texture
+    bool decals = false;                     // texture alpha-blended over the vertex colour
+    bool flatNormals = false;       // light with the triangle's normal, not the vertex normals
+    bool cull = false;              // drop triangles that are clockwise on screen
+    std::vector<dvec4> clipPlanes;  // view space: keep points with plane . (x, y, z, w) >= 0
+    // The lights this draw sees: the first lightCount of the scene's (all by default).
+    std::size_t lightCount = std::numeric_limits<std::size_t>::max();
 };
 
 // What the depth buffer holds.
 enum class DepthSource : std::uint8_t {
-    ViewZ,  // the view-space z of P' (seed 000): smaller is nearer, cleared to +infinity
+    ViewZ,  // the view-space z of P' (seed 000)
+    NdcZ,   // pClip.z / pClip.w (seed 001)
 };
 
-// How a colour channel in the scene's scale becomes a byte.
+// How a channel in the scene's colour scale becomes a byte.
 enum class ByteRounding : std::uint8_t {
     Truncate,  // (int) of the clamped value, as the course's C code does
     Nearest,   // round half up
@@ -91,25 +134,42 @@ enum class ByteRounding : std::uint8_t {
 struct Conventions {
     bool ndcYUp = true;  // NDC y = +1 is the top row (the course flips y)
     DepthSource depth = DepthSource::ViewZ;
+    float depthClear = std::numeric_limits<float>::infinity();  // the empty depth buffer
+    bool depthWinsOnTie = false;          // z <= stored writes (seed 001); otherwise z < stored
+    bool depthRangeClip = false;          // discard fragments whose depth is outside [0, 1]
     bool flipNormalsTowardViewer = true;  // N := -N when V.N < 0 (seed 000)
     float colourScale = 255.0f;  // the value that becomes byte 255 (course colours are 0..255)
     ByteRounding rounding = ByteRounding::Truncate;
     vec4 background = vec4(0.0f, 0.0f, 0.0f, 1.0f);  // RGBA 0..1 of pixels no triangle covers
+
+    static Conventions course();
+    static Conventions hw2();
 };
 
 // The rasterization rules: where a pixel is sampled, how vertices are snapped, which
-// pixels on an edge belong to the triangle, and how attributes are interpolated. The
-// course's rules (seed 000 as written) sample pixel (x, y) at the integer point (x, y).
+// pixels on an edge belong to the triangle, and how attributes are interpolated.
 struct RasterRules {
-    enum class VertexSnap : std::uint8_t { Truncate };         // (int) of the screen coordinate
-    enum class FillRule : std::uint8_t { Inclusive };          // samples on an edge are inside
-    enum class Interpolation : std::uint8_t { ScreenAffine };  // screen barycentrics on view P, N
+    enum class VertexSnap : std::uint8_t {
+        Truncate,  // toward zero, onto the sub-pixel grid: C's (int) when subpixelBits = 0
+        Nearest,   // to the nearest point of the sub-pixel grid
+    };
+    enum class FillRule : std::uint8_t {
+        Inclusive,  // a sample exactly on an edge is inside: shared edges are covered twice
+        TopLeft,    // on an edge, inside only on a left or a horizontal top edge: once
+    };
+    enum class Interpolation : std::uint8_t {
+        ScreenAffine,        // screen barycentrics applied to view-space P and N (seed 000)
+        PerspectiveCorrect,  // barycentrics weighted by 1/w (seed 001)
+    };
 
+    int subpixelBits = 0;       // vertices lie on a grid of 1/2^bits pixel (at most 16)
+    double sampleOffset = 0.0;  // pixel (x, y) is sampled at (x + offset, y + offset)
     VertexSnap snap = VertexSnap::Truncate;
     FillRule fill = FillRule::Inclusive;
     Interpolation interpolation = Interpolation::ScreenAffine;
 
-    static RasterRules course();  // seed 000 as written
+    static RasterRules course();  // seed 000 as written: integer vertices, inclusive edges
+    static RasterRules hw2();     // seed 001's DDA: samples at integer points, half-open spans
 };
 
 // Triangles are clipped against the plane w = near in clip space before the division by w;

@@ -103,7 +103,8 @@ private slots:
         // NDC of the vertex made on B->C: (-0.55 / 1, -0.55 / 1).
         RL_COMPARE_VEC(p.pNdc[3], dvec2(-0.55, -0.55), 1e-12);
         QVERIFY(run.diagnostics.contains(
-            "1 triangles cross the near plane z = 1 and were clipped; 0 are wholly behind it"));
+            "1 triangle was clipped against the near plane z = 1; 0 lie wholly behind the near "
+            "plane, not drawn"));
     }
 
     void twoVerticesBehindMakeOneTriangle() {

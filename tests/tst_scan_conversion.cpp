@@ -4,6 +4,7 @@
 // fan of triangles has no cracks.
 #include <QtTest>
 
+#include <map>
 #include <random>
 #include <set>
 
@@ -49,6 +50,52 @@ std::set<std::pair<int, int>> pixelsOf(const std::vector<Span>& spans) {
     return pixels;
 }
 
+// Brute force for any rules, in exact integer grid arithmetic: whether pixel (x, y)'s sample
+// is inside. Inclusive: on every edge's inner side or on it, rows top..bottom. Top-left
+// (seed 001's DDA): rows top <= y < bottom; on an edge, inside only if the edge is a left
+// boundary (the inside lies toward +x) or horizontal (the rows decide).
+bool sampleInside(const std::array<dvec2, 3>& p, const RasterRules& rules, int x, int y) {
+    const std::int64_t g = std::int64_t(1) << rules.subpixelBits;
+    const auto grid = [&](double v) { return std::int64_t(std::llround(v * double(g))); };
+    const std::int64_t offset = grid(rules.sampleOffset);
+    const std::int64_t sx = x * g + offset, sy = y * g + offset;
+    std::array<std::int64_t, 3> px{}, py{};
+    for (int k = 0; k < 3; ++k) {
+        px[std::size_t(k)] = grid(p[std::size_t(k)].x);
+        py[std::size_t(k)] = grid(p[std::size_t(k)].y);
+    }
+    const std::int64_t area = (px[1] - px[0]) * (py[2] - py[0]) - (py[1] - py[0]) * (px[2] - px[0]);
+    if (area == 0) return false;
+    const std::int64_t o = area > 0 ? 1 : -1;
+    const std::int64_t top = std::min({py[0], py[1], py[2]});
+    const std::int64_t bottom = std::max({py[0], py[1], py[2]});
+    const bool topLeft = rules.fill == RasterRules::FillRule::TopLeft;
+    if (sy < top || sy > bottom || (topLeft && sy == bottom)) return false;
+    for (int k = 0; k < 3; ++k) {
+        const std::size_t a = std::size_t(k), b = std::size_t((k + 1) % 3);
+        const std::int64_t e =
+            o * ((px[b] - px[a]) * (sy - py[a]) - (py[b] - py[a]) * (sx - px[a]));
+        if (e < 0) return false;
+        if (e == 0 && topLeft && py[a] != py[b] && !(o * (py[a] - py[b]) > 0)) return false;
+    }
+    return true;
+}
+
+std::set<std::pair<int, int>> insideByRule(const std::array<dvec2, 3>& p, const RasterRules& rules,
+                                           int width, int height) {
+    std::set<std::pair<int, int>> inside;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            if (sampleInside(p, rules, x, y)) inside.insert({x, y});
+    return inside;
+}
+
+Scene screenWith(int width, int height, const RasterRules& rules) {
+    Scene scene = screen(width, height);
+    scene.rules = rules;
+    return scene;
+}
+
 }  // namespace
 
 class TestScanConversion : public QObject {
@@ -83,7 +130,8 @@ private slots:
         const std::vector<Span> expected = {{1, 4, 5}, {2, 4, 6}, {3, 3, 8}, {4, 3, 10},
                                             {5, 2, 7}, {6, 2, 4}, {7, 1, 2}};
         QCOMPARE(spansOf(scan, 0), expected);
-        const TriangleSetup s = setupTriangle({dvec2(9, 4), dvec2(1, 7), dvec2(4, 1)});
+        const TriangleSetup s =
+            setupTriangle({dvec2(9, 4), dvec2(1, 7), dvec2(4, 1)}, RasterRules::course());
         QCOMPARE(s.order, (std::array<int, 3>{2, 0, 1}));
         QCOMPARE(s.yFirst, 1);
         QCOMPARE(s.yLast, 7);
@@ -174,6 +222,99 @@ private slots:
             ++compared;
         }
         QCOMPARE(compared, 3000);
+    }
+
+    void subPixelRulesMatchBruteForce_data() {
+        QTest::addColumn<int>("bits");
+        QTest::addColumn<double>("offset");
+        QTest::addColumn<bool>("topLeft");
+        QTest::newRow("hw2: 1/16 grid, samples at integers, top-left") << 4 << 0.0 << true;
+        QTest::newRow("1/16 grid, centres at +0.5, top-left") << 4 << 0.5 << true;
+        QTest::newRow("1/16 grid, centres at +0.5, inclusive") << 4 << 0.5 << false;
+        QTest::newRow("integers, top-left") << 0 << 0.0 << true;
+    }
+
+    void subPixelRulesMatchBruteForce() {
+        QFETCH(int, bits);
+        QFETCH(double, offset);
+        QFETCH(bool, topLeft);
+        RasterRules rules;
+        rules.subpixelBits = bits;
+        rules.sampleOffset = offset;
+        rules.fill = topLeft ? RasterRules::FillRule::TopLeft : RasterRules::FillRule::Inclusive;
+        const double g = std::ldexp(1.0, bits);
+        std::mt19937 rng(23);
+        // Vertices on the grid, often on sample rows and columns (edges through samples).
+        std::uniform_int_distribution<int> coord(-4 * int(g), 36 * int(g));
+        std::uniform_int_distribution<int> snapToPixel(0, 2);
+        for (int i = 0; i < 2000; ++i) {
+            std::array<dvec2, 3> p{};
+            for (auto& v : p) {
+                v = {coord(rng) / g, coord(rng) / g};
+                if (snapToPixel(rng) == 0) v = glm::floor(v) + offset;
+            }
+            const ScanConversion scan = ScanConversionStage().run(
+                screenWith(32, 32, rules), screenTriangles({p[0], p[1], p[2]}, {{0, 1, 2}}));
+            const auto expected = insideByRule(p, rules, 32, 32);
+            const auto actual = pixelsOf(spansOf(scan, 0));
+            if (actual != expected)
+                QFAIL(qPrintable(QStringLiteral("triangle %1 (%2, %3, %4): %5 pixels, expected %6")
+                                     .arg(i)
+                                     .arg(testing::describe(p[0]), testing::describe(p[1]),
+                                          testing::describe(p[2]))
+                                     .arg(actual.size())
+                                     .arg(expected.size())));
+        }
+    }
+
+    void topLeftCoversEachPixelOnce() {
+        // Fans around a centre under the top-left rule: every pixel of the fan is covered
+        // exactly once, shared edges and shared vertices included. The spokes are less than
+        // half a turn apart, so the triangles tile the fan without overlapping.
+        RasterRules rules = RasterRules::hw2();
+        rules.subpixelBits = 4;
+        std::mt19937 rng(5);
+        std::uniform_real_distribution<double> jitter(0.0, 0.4);
+        std::uniform_int_distribution<int> spokes(3, 12);
+        std::uniform_real_distribution<double> radius(2.0, 300.0);
+        std::uniform_int_distribution<int> centre(0, 63);
+        for (int f = 0; f < 2000; ++f) {
+            const int n = spokes(rng);
+            std::vector<double> angles(static_cast<std::size_t>(n));
+            for (std::size_t k = 0; k < angles.size(); ++k)
+                angles[k] = (double(k) + jitter(rng)) / n;
+            std::vector<dvec2> points = {{double(centre(rng)), double(centre(rng))}};
+            for (double a : angles) {
+                const double r = radius(rng);
+                points.push_back(
+                    {std::round(16.0 * (points[0].x + r * std::cos(6.283185307179586 * a))) / 16.0,
+                     std::round(16.0 * (points[0].y + r * std::sin(6.283185307179586 * a))) /
+                         16.0});
+            }
+            std::vector<std::array<std::uint32_t, 3>> fan;
+            for (int k = 1; k <= n; ++k)
+                fan.push_back(
+                    {0, static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(k % n + 1)});
+            const ScanConversion scan =
+                ScanConversionStage().run(screenWith(64, 64, rules), screenTriangles(points, fan));
+            std::map<std::pair<int, int>, int> hits;
+            std::set<std::pair<int, int>> expected;
+            for (std::size_t t = 0; t < fan.size(); ++t) {
+                const auto& tri = fan[t];
+                const auto in =
+                    insideByRule({points[tri[0]], points[tri[1]], points[tri[2]]}, rules, 64, 64);
+                expected.insert(in.begin(), in.end());
+                for (const auto& px : pixelsOf(spansOf(scan, t))) ++hits[px];
+            }
+            for (const auto& px : expected)
+                if (hits[px] != 1)
+                    QFAIL(qPrintable(QStringLiteral("fan %1: pixel (%2, %3) covered %4 times")
+                                         .arg(f)
+                                         .arg(px.first)
+                                         .arg(px.second)
+                                         .arg(hits[px])));
+            QCOMPARE(hits.size(), expected.size());
+        }
     }
 
     void randomFansHaveNoCracks() {
