@@ -9,6 +9,7 @@
 #include <new>
 #include <optional>
 
+#include "command_file.h"
 #include "default_scene.h"
 #include "default_scene_resource.h"
 #include "explain.h"
@@ -55,6 +56,8 @@ QString generalHelp() {
         "Commands:\n"
         "  render                   Render a course scene (camera, lighting, object) to PNG.\n"
         "                           Without scene files, renders the embedded default scene.\n"
+        "  run FILE                 Run a command file (seed 001's png, xyz, trif ...) and\n"
+        "                           write the PNGs it names.\n"
         "  generate-default-scene   Write the default scene's three course files.\n"
         "\n"
         "Run 'rasterlab-cli <command> --help' for a command's options.\n");
@@ -187,7 +190,7 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
                 err, lit("--near expects a positive number, found '%1'").arg(parser.value(near)));
         settings.nearPlane.fixedW = z;
     }
-    settings.nearPlane.naive = parser.isSet(naive);
+    if (parser.isSet(naive)) settings.nearPlane.mode = rl::NearPlane::Mode::Naive;
     if (!parser.isSet(output)) return usageError(err, lit("render needs --output FILE.png"));
     int explainX = -1, explainY = -1;
     if (parser.isSet(explain)) {
@@ -257,6 +260,75 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
     return ExitOk;
 }
 
+int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& err) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        lit("Run a command file and write the PNG images it names (8-bit RGBA, untouched "
+            "pixels transparent black)."));
+    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    const QCommandLineOption help({lit("h"), lit("help")}, lit("Show this help."));
+    const QCommandLineOption outdir(lit("outdir"),
+                                    lit("The folder to write the images into (default: the "
+                                        "current folder)."),
+                                    lit("DIR"), lit("."));
+    const QCommandLineOption maxPixels(lit("max-pixels"),
+                                       lit("Refuse images with more pixels than this "
+                                           "(default 40000000)."),
+                                       lit("N"), QString::number(kDefaultMaxPixels));
+    parser.addOptions({help, outdir, maxPixels});
+    parser.addPositionalArgument(lit("FILE"), lit("The command file."));
+    if (!parser.parse(arguments)) return usageError(err, parser.errorText());
+    if (parser.isSet(help)) {
+        out << commandHelp(parser, lit("run"));
+        return ExitOk;
+    }
+    const QStringList files = parser.positionalArguments();
+    if (files.size() != 1)
+        return usageError(err, files.isEmpty() ? lit("run needs a command file")
+                                               : lit("run takes one command file, found %1")
+                                                     .arg(files.size()));
+    bool maxOk = false;
+    const qint64 pixelLimit = parser.value(maxPixels).toLongLong(&maxOk);
+    if (!maxOk || pixelLimit < 1)
+        return usageError(err, lit("--max-pixels expects a positive whole number, found '%1'")
+                                   .arg(parser.value(maxPixels)));
+
+    rl::Diagnostics diagnostics;
+    auto file = loadCommandFile(files.first(), diagnostics);
+    if (!file) {
+        printDiagnostics(diagnostics, err);
+        return inputError(err, file.error());
+    }
+    printDiagnostics(diagnostics, err);
+    const QDir folder(parser.value(outdir));
+    if (!QDir().mkpath(folder.path())) {
+        err << folder.path() << ": cannot create the folder\n";
+        return ExitBadInput;
+    }
+    for (const rl::Hw2Image& image : file->images) {
+        const rl::Scene& scene = image.scene;
+        if (qint64(scene.width) * scene.height > pixelLimit)
+            return inputError(err, rl::makeError(rl::ErrorCode::Range, image.where,
+                                                 "the image " + std::to_string(scene.width) + "x" +
+                                                     std::to_string(scene.height) +
+                                                     " has more pixels than the limit of " +
+                                                     std::to_string(pixelLimit) +
+                                                     " (raise it with --max-pixels)"));
+        auto trace = rl::renderFrame(std::make_shared<const rl::Scene>(scene));
+        if (!trace) return inputError(err, trace.error());
+        printDiagnostics(trace->diagnostics, err);
+        const QString name = QString::fromStdString(image.fileName);
+        if (!writePng(rl::colourImage(*trace->shading, *trace->depth, scene.conventions),
+                      folder.filePath(name), out, err, lit("image")))
+            return ExitBadInput;
+        out << "  " << scene.triangleCount() << " triangles in " << scene.draws.size()
+            << " draws, " << trace->depth->coveredPixels() << " pixels covered, "
+            << QString::number(trace->totalMilliseconds, 'f', 1) << " ms\n";
+    }
+    out.flush();
+    return ExitOk;
+}
+
 int runGenerateDefaultScene(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     QCommandLineParser parser;
     parser.setApplicationDescription(lit("Write the default scene's three course files."));
@@ -316,10 +388,12 @@ int runCli(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     try {
         if (command == lit("render"))
             code = runRender(rest, out, err);
+        else if (command == lit("run"))
+            code = runCommandFile(rest, out, err);
         else if (command == lit("generate-default-scene"))
             code = runGenerateDefaultScene(rest, out, err);
         else
-            code = usageError(err, lit("unknown command '%1' (commands: render, "
+            code = usageError(err, lit("unknown command '%1' (commands: render, run, "
                                        "generate-default-scene)")
                                        .arg(command));
     } catch (const std::bad_alloc&) {

@@ -52,7 +52,8 @@ double screenArea(const dvec2& a, const dvec2& b, const dvec2& c) {
 Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                                 Diagnostics& diagnostics) const {
     Projection out;
-    out.naive = scene.nearPlane.naive;
+    out.mode = scene.nearPlane.mode;
+    const bool clipNear = out.mode == NearPlane::Mode::Clip;
     const double width = scene.width;
     const double height = scene.height;
     const Conventions& conv = scene.conventions;
@@ -114,11 +115,11 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
         };
         resizeVertices(proj.pView.size());
         for (std::uint32_t i = 0; i < proj.originalVertexCount; ++i)
-            if (out.naive || proj.pClip[i].w >= out.nearW) project(i);
+            if (!clipNear || proj.pClip[i].w >= out.nearW) project(i);
 
         // The planes a triangle is clipped against, each as a signed distance (inside >= 0):
         // the draw's clip planes in view space, then the near plane in clip space.
-        const std::size_t planeCount = draw.clipPlanes.size() + (out.naive ? 0 : 1);
+        const std::size_t planeCount = draw.clipPlanes.size() + (clipNear ? 1 : 0);
         auto distance = [&](std::size_t plane, std::uint32_t v) {
             if (plane < draw.clipPlanes.size())
                 return glm::dot(draw.clipPlanes[plane], proj.pView[v]);
@@ -139,7 +140,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             proj.pClip.push_back(pClip);
             proj.generated.push_back({a, b, t});
             resizeVertices(proj.pView.size());
-            if (pClip.w >= out.nearW || out.naive) project(index);
+            if (!clipNear || pClip.w >= out.nearW) project(index);
             return index;
         };
 
@@ -166,10 +167,19 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                 out.triangles.push_back({drawIndex, source, v});
                 return true;
             };
-            if (out.naive) {
+            if (out.mode == NearPlane::Mode::Naive) {
                 bool throughZero = false;
                 for (std::uint32_t v : tri) throughZero = throughZero || proj.pClip[v].w <= 0.0;
                 out.throughZeroOrBehind += throughZero ? 1 : 0;
+            } else if (out.mode == NearPlane::Mode::SameSide) {
+                const auto positive = [&](std::uint32_t v) { return proj.pClip[v].w > 0.0; };
+                const auto negative = [&](std::uint32_t v) { return proj.pClip[v].w < 0.0; };
+                if (!std::all_of(tri.begin(), tri.end(), positive) &&
+                    !std::all_of(tri.begin(), tri.end(), negative)) {
+                    proj.fate[t] = TriangleFate::NonFinite;
+                    ++out.acrossInfinity;
+                    continue;
+                }
             }
             // Which planes cut the triangle, and is it wholly outside one of them?
             bool cut = false;
@@ -248,7 +258,12 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
     if (out.culled > 0)
         diagnostics.note(where, countOf(out.culled, "triangle is", "triangles are") +
                                     " clockwise on screen and culled");
-    if (out.naive && out.throughZeroOrBehind > 0) {
+    if (out.acrossInfinity > 0) {
+        diagnostics.warn(where, countOf(out.acrossInfinity, "triangle has", "triangles have") +
+                                    " vertices on both sides of w = 0 (in front of and behind "
+                                    "the eye) and would wrap through infinity: not drawn");
+    }
+    if (out.mode == NearPlane::Mode::Naive && out.throughZeroOrBehind > 0) {
         diagnostics.warn(where, "naive projection: " + std::to_string(out.throughZeroOrBehind) +
                                     " triangles have a vertex at or behind the camera and were "
                                     "divided by its z <= 0 anyway");

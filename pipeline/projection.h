@@ -70,12 +70,13 @@ struct DrawProjection {
 
 struct Projection {
     double nearW = 0.0;  // the near plane, w = nearW in clip space
-    bool naive = false;
+    NearPlane::Mode mode = NearPlane::Mode::Clip;
     std::vector<DrawProjection> draws;
     std::vector<ScreenTriangle> triangles;  // what scan conversion receives, in draw order
 
     std::size_t inside = 0, clipped = 0, behind = 0, clippedAway = 0, culled = 0, nonFinite = 0;
-    std::size_t throughZeroOrBehind = 0;  // naive projection: triangles with a vertex z <= 0
+    std::size_t throughZeroOrBehind = 0;  // naive projection: triangles with a vertex w <= 0
+    std::size_t acrossInfinity = 0;       // SameSide: triangles whose w differ in sign
     std::size_t outsideGuardBand = 0;     // vertices pulled in to the guard band
 };
 

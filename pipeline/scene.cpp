@@ -48,7 +48,7 @@ Conventions Conventions::hw2() {
     c.depthRangeClip = true;
     c.flipNormalsTowardViewer = false;
     c.colourScale = 1.0f;
-    c.rounding = ByteRounding::Nearest;
+    c.rounding = ByteRounding::Truncate;
     c.background = vec4(0.0f);  // untouched pixels are transparent black
     return c;
 }

@@ -172,15 +172,24 @@ struct RasterRules {
     static RasterRules hw2();     // seed 001's DDA: samples at integer points, half-open spans
 };
 
-// Triangles are clipped against the plane w = near in clip space before the division by w;
-// for the course camera w is the view z, so this is the plane z = near in view space.
+// What happens to triangles at or behind the camera (w <= 0 in clip space).
 struct NearPlane {
+    enum class Mode : std::uint8_t {
+        // Clip against the plane w = near before dividing by w (for the course camera, w is
+        // the view z: the plane z = near in view space).
+        Clip,
+        // Divide by w without clipping, as seed 001 does ("frustum clipping ... we won't
+        // add it"); a triangle whose vertices' w differ in sign would wrap through
+        // infinity, so it is dropped (and counted) instead.
+        SameSide,
+        // The course's naive projection: every vertex divided by its own w, even w <= 0.
+        // Only for showing why clipping exists.
+        Naive,
+    };
+    Mode mode = Mode::Clip;
     // A fixed w (the course: view z); when absent, near = autoFraction * the largest w.
     std::optional<double> fixedW;
     double autoFraction = 1e-3;
-    // The naive projection of the course: no clipping, every vertex divided by its own z,
-    // even when z <= 0. Only for showing why clipping exists.
-    bool naive = false;
 };
 
 struct Scene {

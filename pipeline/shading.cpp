@@ -79,7 +79,7 @@ vec4 sampleTexture(const Texture& texture, const vec2& st) {
     if (texture.width <= 0 || texture.height <= 0) return vec4(0.0f);
     const auto wrap = [](float u, int size) {
         const float f = u - std::floor(u);  // -1.3, -0.3, 0.7, 1.7 all give 0.7
-        const int i = static_cast<int>(std::floor(f * float(size)));
+        const int i = static_cast<int>(std::floor(f * float(size) + 0.5f)) % size;
         return std::clamp(i, 0, size - 1);
     };
     return texture.at(wrap(st.x, texture.width), wrap(st.y, texture.height));

@@ -288,7 +288,7 @@ void TestCli::usageErrors_data() {
         << (QStringList({"render", "--explain-pixel", "800,10"}) + out)
         << "--explain-pixel 800,10 is outside the 800x600 image";
     QTest::newRow("unknown command") << QStringList({"paint", "--output", "out.png"})
-                                     << "unknown command 'paint' (commands: render, "
+                                     << "unknown command 'paint' (commands: render, run, "
                                         "generate-default-scene)";
     QTest::newRow("unknown option")
         << (QStringList({"render", "--bogus"}) + out) << "Unknown option 'bogus'.";

@@ -172,7 +172,7 @@ private slots:
         Scene scene = testing::makeScene(
             testing::axisCamera(),
             testing::makeMesh({{5, 3, 0}, {1, -1, 10}, {-1, -1, 10}}, {{0, 1, 2}}), 100, 100);
-        scene.nearPlane.naive = true;
+        scene.nearPlane.mode = NearPlane::Mode::Naive;
         const Run run = project(scene);
         QCOMPARE(run.projection.draws[0].fate[0], TriangleFate::NonFinite);
         QCOMPARE(run.projection.triangles.size(), std::size_t(0));
@@ -241,7 +241,7 @@ private slots:
                                testing::makeMesh({{0, 1, 10}, {1, -1, 10}, {2, 4, -10}, {0, 0, 0}},
                                                  {{0, 1, 2}, {0, 1, 3}}),
                                100, 100);
-        scene.nearPlane.naive = true;
+        scene.nearPlane.mode = NearPlane::Mode::Naive;
         const Run run = project(scene);
         const DrawProjection& p = run.projection.draws[0];
         // (2, 4, -10) in view is (-2, 4, -10): NDC (0.2, -0.4), mirrored through the centre.

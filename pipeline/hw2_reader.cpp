@@ -1,0 +1,570 @@
+#include "hw2_reader.h"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <optional>
+
+#include "bezier.h"
+#include "format.h"
+#include "text_scanner.h"
+#include "transforms.h"
+
+namespace rl {
+
+namespace {
+
+// A vertex as `xyz`/`xyzw` defines it, with the current colour, normal and texture
+// coordinate of that moment.
+struct Vertex {
+    dvec4 p = dvec4(0.0, 0.0, 0.0, 1.0);
+    vec3 colour = vec3(1.0f);
+    vec2 st = vec2(0.0f);
+    std::optional<vec3> normal;
+};
+
+// How a drawing command colours its triangles.
+enum class Fill { Flat, Gouraud, Textured };
+
+// The state a draw is made with; consecutive triangles with equal state share a draw.
+struct DrawState {
+    dmat4 modelView = dmat4(1.0);
+    dmat4 projection = dmat4(1.0);
+    std::vector<dvec4> clipPlanes;
+    bool cull = false;
+    std::size_t lightCount = 0;
+    float shininess = 0.0f;
+    Fill fill = Fill::Flat;
+    bool flatNormals = false;
+    std::shared_ptr<const Texture> texture;
+    bool operator==(const DrawState&) const = default;
+};
+
+const char* const kKnownCommands[] = {
+    "png",      "xyz",      "xyzw",     "trif",     "trig",      "trit",    "color",
+    "loadmv",   "loadp",    "multmv",   "frustum",  "ortho",     "translate", "rotatex",
+    "rotatey",  "rotatez",  "rotate",   "scale",    "lookat",    "clipplane", "cull",
+    "rectbezf", "rectbezg", "tribezf",  "tribezg",  "texcoord",  "texture", "decals",
+    "normal",   "sunlight", "bulb",     "shininess", "flatnormals"};
+
+bool isKnown(std::string_view keyword) {
+    return std::find(std::begin(kKnownCommands), std::end(kKnownCommands), keyword) !=
+           std::end(kKnownCommands);
+}
+
+class Hw2Reader {
+public:
+    Hw2Reader(std::string_view text, const std::string& fileName, const TextureLoader& loader,
+              Diagnostics& diagnostics)
+        : m_text(text), m_scanner(text, fileName), m_loader(loader), m_diagnostics(diagnostics) {}
+
+    Result<Hw2File> read();
+
+private:
+    using Args = std::vector<double>;
+
+    Status command(const TextLine& line);
+    Result<Args> numbers(const TextLine& line, std::size_t count, const char* names);
+    Result<std::uint32_t> vertexIndex(const Token& token, const std::string& command);
+    Result<std::vector<std::uint32_t>> indices(const TextLine& line, std::size_t first,
+                                               std::size_t count, const char* names);
+    Result<int> subdivisions(const TextLine& line);
+    Status requireImage(const TextLine& line);
+    void warnExtra(const TextLine& line, std::size_t used);
+
+    Draw& drawFor(const DrawState& state, const SourceLocation& where);
+    void addTriangle(const DrawState& state, const std::array<Vertex, 3>& corners,
+                     const SourceLocation& where);
+    void addPatch(const PatchMesh& patch, Fill fill, const SourceLocation& where);
+    DrawState stateFor(Fill fill, bool hasNormals, bool flatFill) const;
+    void finishImage();
+
+    std::string_view m_text;
+    LineScanner m_scanner;
+    const TextureLoader& m_loader;
+    Diagnostics& m_diagnostics;
+
+    Hw2File m_file;
+    std::optional<Hw2Image> m_image;
+    std::vector<std::shared_ptr<Mesh>> m_meshes;  // the current image's, one per draw
+    std::optional<DrawState> m_lastState;
+
+    // The state commands change.
+    std::vector<Vertex> m_vertices;
+    vec3 m_colour = vec3(1.0f);
+    std::optional<vec3> m_normal;
+    vec2 m_texcoord = vec2(0.0f);
+    dmat4 m_modelView = dmat4(1.0);
+    dmat4 m_projection = dmat4(1.0);
+    std::vector<dvec4> m_clipPlanes;
+    bool m_cull = false;
+    std::shared_ptr<const Texture> m_texture;
+    float m_shininess = 0.0f;
+    bool m_decals = false;       // anywhere in the file (seed 001)
+    bool m_flatNormals = false;  // anywhere in the file (seed 001)
+
+    std::map<std::string, std::pair<int, SourceLocation>> m_unknown;
+};
+
+Result<Hw2File> Hw2Reader::read() {
+    // decals and flatnormals act on the whole file, wherever they appear.
+    {
+        LineScanner scan(m_text, m_scanner.fileName());
+        TextLine line;
+        while (scan.next(line)) {
+            m_decals = m_decals || line.tokens[0].text == "decals";
+            m_flatNormals = m_flatNormals || line.tokens[0].text == "flatnormals";
+        }
+    }
+    TextLine line;
+    while (m_scanner.next(line)) {
+        auto status = command(line);
+        if (!status) return status.error();
+    }
+    finishImage();
+    for (const auto& [keyword, seen] : m_unknown)
+        m_diagnostics.note(seen.second, "skipped " + countOf(std::size_t(seen.first), "line", "lines") +
+                                            " with the unknown command '" + keyword + "'");
+    if (m_file.images.empty())
+        return makeError(ErrorCode::MissingData, m_scanner.endOfInput(),
+                         "expected a 'png width height file' command, found none");
+    return std::move(m_file);
+}
+
+void Hw2Reader::finishImage() {
+    if (!m_image) return;
+    for (std::size_t d = 0; d < m_meshes.size(); ++d) m_image->scene.draws[d].mesh = m_meshes[d];
+    m_file.images.push_back(std::move(*m_image));
+    m_image.reset();
+    m_meshes.clear();
+    m_lastState.reset();
+}
+
+Result<Hw2Reader::Args> Hw2Reader::numbers(const TextLine& line, std::size_t count,
+                                           const char* names) {
+    const std::string keyword(line.tokens[0].text);
+    Args values;
+    for (std::size_t k = 0; k < count; ++k) {
+        if (k + 1 >= line.tokens.size())
+            return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
+                             "expected " + countOf(count, "number", "numbers") + " after '" +
+                                 keyword + "' (" + names + "), found " + std::to_string(k));
+        const Token& token = line.tokens[k + 1];
+        const auto value = parseReal(token.text);
+        if (!value)
+            return makeError(ErrorCode::Syntax, m_scanner.at(token),
+                             "expected a number in '" + keyword + "' (" + names + "), found " +
+                                 quoted(token.text));
+        values.push_back(*value);
+    }
+    warnExtra(line, count + 1);
+    return values;
+}
+
+void Hw2Reader::warnExtra(const TextLine& line, std::size_t used) {
+    if (line.tokens.size() > used)
+        m_diagnostics.warn(m_scanner.at(line.tokens[used]),
+                           "ignored " + countOf(line.tokens.size() - used, "value", "values") +
+                               " after '" + std::string(line.tokens[0].text) + "'");
+}
+
+Result<std::uint32_t> Hw2Reader::vertexIndex(const Token& token, const std::string& command) {
+    const auto index = parseInteger(token.text);
+    if (!index)
+        return makeError(ErrorCode::Syntax, m_scanner.at(token),
+                         "expected a vertex index in '" + command + "', found " + quoted(token.text));
+    const auto count = static_cast<long long>(m_vertices.size());
+    // 1 is the first vertex defined, -1 the last one.
+    const long long resolved = *index > 0 ? *index - 1 : count + *index;
+    if (*index == 0 || resolved < 0 || resolved >= count) {
+        std::string why = *index == 0 ? "indices start at 1 (or count back from -1, the last)"
+                                      : "only " + countOf(std::size_t(count), "vertex is", "vertices are") +
+                                            " defined so far";
+        return makeError(ErrorCode::Range, m_scanner.at(token),
+                         "'" + command + "' refers to vertex " + std::string(token.text) +
+                             ", but " + why);
+    }
+    return static_cast<std::uint32_t>(resolved);
+}
+
+Result<std::vector<std::uint32_t>> Hw2Reader::indices(const TextLine& line, std::size_t first,
+                                                      std::size_t count, const char* names) {
+    const std::string keyword(line.tokens[0].text);
+    std::vector<std::uint32_t> out;
+    for (std::size_t k = 0; k < count; ++k) {
+        if (first + k >= line.tokens.size())
+            return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
+                             "expected " + countOf(count, "vertex index", "vertex indices") +
+                                 " in '" + keyword + "' (" + names + "), found " + std::to_string(k));
+        auto index = vertexIndex(line.tokens[first + k], keyword);
+        if (!index) return index.error();
+        out.push_back(index.value());
+    }
+    warnExtra(line, first + count);
+    return out;
+}
+
+Result<int> Hw2Reader::subdivisions(const TextLine& line) {
+    const std::string keyword(line.tokens[0].text);
+    if (line.tokens.size() < 2)
+        return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
+                         "expected the number of subdivisions after '" + keyword +
+                             "', found the end of the line");
+    const auto n = parseInteger(line.tokens[1].text);
+    if (!n || *n < 1 || *n > 10)
+        return makeError(ErrorCode::Range, m_scanner.at(line.tokens[1]),
+                         "expected the number of subdivisions (a whole number from 1 to 10) "
+                         "after '" + keyword + "', found " + quoted(line.tokens[1].text));
+    return static_cast<int>(*n);
+}
+
+Status Hw2Reader::requireImage(const TextLine& line) {
+    if (m_image) return success();
+    return makeError(ErrorCode::MissingData, m_scanner.at(line.tokens[0]),
+                     "expected a 'png width height file' command before '" +
+                         std::string(line.tokens[0].text) + "'");
+}
+
+DrawState Hw2Reader::stateFor(Fill fill, bool hasNormals, bool flatFill) const {
+    DrawState s;
+    s.modelView = m_modelView;
+    s.projection = m_projection;
+    s.clipPlanes = m_clipPlanes;
+    s.cull = m_cull;
+    s.lightCount = m_image ? m_image->scene.lights.size() : 0;
+    s.shininess = s.lightCount > 0 ? m_shininess : 0.0f;
+    s.fill = fill;
+    // Lit triangles without normals, and flat ones under `flatnormals`, light with the
+    // triangle's own normal.
+    s.flatNormals = s.lightCount > 0 && (!hasNormals || (flatFill && m_flatNormals));
+    if (fill == Fill::Textured) s.texture = m_texture;
+    return s;
+}
+
+Draw& Hw2Reader::drawFor(const DrawState& state, const SourceLocation& where) {
+    Scene& scene = m_image->scene;
+    if (!m_lastState || !(*m_lastState == state)) {
+        Draw draw;
+        draw.name = m_image->fileName + " (line " + std::to_string(where.line) + ")";
+        draw.worldFromModel = state.modelView;
+        draw.clipFromView = state.projection;
+        draw.clipPlanes = state.clipPlanes;
+        draw.cull = state.cull;
+        draw.lightCount = state.lightCount;
+        draw.lighting = state.lightCount > 0 ? LightingModel::Lambert : LightingModel::Unlit;
+        draw.material.shininess = state.shininess;
+        draw.material.od = vec3(1.0f);
+        draw.shading = ShadingModel::Phong;  // per-fragment lighting and interpolation
+        draw.flatNormals = state.flatNormals;
+        draw.colour = state.fill == Fill::Textured ? ColourSource::Texture : ColourSource::Vertex;
+        draw.texture = state.texture;
+        draw.decals = state.fill == Fill::Textured && m_decals;
+        scene.draws.push_back(std::move(draw));
+        auto mesh = std::make_shared<Mesh>();
+        mesh->source = SourceLocation{m_scanner.fileName(), 0, 0};
+        m_meshes.push_back(std::move(mesh));
+        m_lastState = state;
+    }
+    return scene.draws.back();
+}
+
+void Hw2Reader::addTriangle(const DrawState& state, const std::array<Vertex, 3>& corners,
+                            const SourceLocation& where) {
+    drawFor(state, where);
+    Mesh& mesh = *m_meshes.back();
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    for (const Vertex& v : corners) {
+        mesh.positions.push_back(v.p);
+        mesh.colours.push_back(state.fill == Fill::Flat ? m_colour : v.colour);
+        mesh.texcoords.push_back(v.st);
+        mesh.normals.push_back(v.normal.value_or(vec3(0.0f)));
+    }
+    mesh.triangles.push_back({base, base + 1, base + 2});
+    mesh.triangleLines.push_back(where.line);
+}
+
+void Hw2Reader::addPatch(const PatchMesh& patch, Fill fill, const SourceLocation& where) {
+    const DrawState state = stateFor(fill, true, fill == Fill::Flat);
+    drawFor(state, where);
+    Mesh& mesh = *m_meshes.back();
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    for (const PatchVertex& v : patch.vertices) {
+        mesh.positions.push_back(v.p);
+        mesh.colours.push_back(fill == Fill::Flat ? m_colour : v.colour);
+        mesh.texcoords.push_back(v.st);
+        mesh.normals.push_back(v.normal);  // Bezier normals: those of the interpolated shape
+    }
+    for (const auto& t : patch.triangles) {
+        mesh.triangles.push_back({base + t[0], base + t[1], base + t[2]});
+        mesh.triangleLines.push_back(where.line);
+    }
+}
+
+Status Hw2Reader::command(const TextLine& line) {
+    const std::string keyword(line.tokens[0].text);
+    const SourceLocation where = m_scanner.at(line.tokens[0]);
+    if (!isKnown(keyword)) {
+        auto& seen = m_unknown[keyword];
+        if (seen.first++ == 0) seen.second = where;
+        return success();
+    }
+    const auto nums = [&](std::size_t count, const char* names) { return numbers(line, count, names); };
+
+    if (keyword == "png") {
+        if (line.tokens.size() < 4)
+            return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
+                             "expected 'png width height file', found " +
+                                 countOf(line.tokens.size() - 1, "argument", "arguments"));
+        long long size[2] = {0, 0};
+        for (int k = 0; k < 2; ++k) {
+            const Token& token = line.tokens[std::size_t(k + 1)];
+            const auto n = parseInteger(token.text);
+            if (!n || *n < 1 || *n > 65536)
+                return makeError(ErrorCode::Syntax, m_scanner.at(token),
+                                 std::string("expected the image ") + (k == 0 ? "width" : "height") +
+                                     " (a whole number from 1 to 65536), found " + quoted(token.text));
+            size[k] = *n;
+        }
+        warnExtra(line, 4);
+        finishImage();
+        Hw2Image image;
+        image.fileName = std::string(line.tokens[3].text);
+        image.where = where;
+        image.scene.name = image.fileName;
+        image.scene.width = static_cast<int>(size[0]);
+        image.scene.height = static_cast<int>(size[1]);
+        image.scene.conventions = Conventions::hw2();
+        image.scene.rules = RasterRules::hw2();
+        image.scene.nearPlane.mode = NearPlane::Mode::SameSide;
+        m_image = std::move(image);
+        return success();
+    }
+    if (keyword == "xyz" || keyword == "xyzw") {
+        const bool w = keyword == "xyzw";
+        auto v = nums(w ? 4 : 3, w ? "x y z w" : "x y z");
+        if (!v) return v.error();
+        Vertex vertex;
+        vertex.p = dvec4(v->at(0), v->at(1), v->at(2), w ? v->at(3) : 1.0);
+        vertex.colour = m_colour;
+        vertex.st = m_texcoord;
+        vertex.normal = m_normal;
+        m_vertices.push_back(vertex);
+        return success();
+    }
+    if (keyword == "color") {
+        auto v = nums(3, "r g b");
+        if (!v) return v.error();
+        m_colour = vec3(float(v->at(0)), float(v->at(1)), float(v->at(2)));
+        return success();
+    }
+    if (keyword == "normal") {
+        auto v = nums(3, "x y z");
+        if (!v) return v.error();
+        m_normal = vec3(float(v->at(0)), float(v->at(1)), float(v->at(2)));
+        return success();
+    }
+    if (keyword == "texcoord") {
+        auto v = nums(2, "s t");
+        if (!v) return v.error();
+        m_texcoord = vec2(float(v->at(0)), float(v->at(1)));
+        return success();
+    }
+    if (keyword == "trif" || keyword == "trig" || keyword == "trit") {
+        if (auto s = requireImage(line); !s) return s;
+        auto idx = indices(line, 1, 3, "i1 i2 i3");
+        if (!idx) return idx.error();
+        const Fill fill = keyword == "trif" ? Fill::Flat
+                          : keyword == "trig" ? Fill::Gouraud
+                                              : Fill::Textured;
+        if (fill == Fill::Textured && !m_texture)
+            return makeError(ErrorCode::MissingData, where,
+                             "'trit' needs a texture: expected a 'texture file.png' command before it");
+        const std::array<Vertex, 3> corners = {m_vertices[idx->at(0)], m_vertices[idx->at(1)],
+                                               m_vertices[idx->at(2)]};
+        const bool hasNormals = corners[0].normal && corners[1].normal && corners[2].normal;
+        addTriangle(stateFor(fill, hasNormals, fill == Fill::Flat), corners, where);
+        return success();
+    }
+    if (keyword == "rectbezf" || keyword == "rectbezg" || keyword == "tribezf" ||
+        keyword == "tribezg") {
+        if (auto s = requireImage(line); !s) return s;
+        auto subd = subdivisions(line);
+        if (!subd) return subd.error();
+        const bool rect = keyword.starts_with("rect");
+        const std::size_t count = rect ? 16 : 10;
+        auto idx = indices(line, 2, count, rect ? "subd i1 ... i16" : "subd i1 ... i10");
+        if (!idx) return idx.error();
+        const auto point = [&](std::uint32_t i) {
+            const Vertex& v = m_vertices[i];
+            return PatchPoint{v.p, v.colour, v.st};
+        };
+        PatchMesh patch;
+        if (rect) {
+            std::array<PatchPoint, 16> control;
+            for (std::size_t k = 0; k < 16; ++k) control[k] = point(idx->at(k));
+            patch = subdivideRectBezier(control, subd.value());
+        } else {
+            std::array<PatchPoint, 10> control;
+            for (std::size_t k = 0; k < 10; ++k) control[k] = point(idx->at(k));
+            patch = subdivideTriBezier(control, subd.value());
+        }
+        addPatch(patch, keyword.ends_with('f') ? Fill::Flat : Fill::Gouraud, where);
+        return success();
+    }
+    if (keyword == "loadmv" || keyword == "loadp" || keyword == "multmv") {
+        auto v = nums(16, "a11 a12 ... a44, row by row");
+        if (!v) return v.error();
+        double rows[16];
+        std::copy(v->begin(), v->end(), rows);
+        const dmat4 m = matrixFromRows(rows);
+        if (keyword == "loadmv") m_modelView = m;
+        else if (keyword == "multmv") m_modelView = m_modelView * m;
+        else m_projection = m;
+        return success();
+    }
+    if (keyword == "frustum" || keyword == "ortho") {
+        auto v = nums(6, "l r b t n f");
+        if (!v) return v.error();
+        const Args& a = v.value();
+        if (a[0] == a[1] || a[2] == a[3] || a[4] == a[5])
+            return makeError(ErrorCode::Degenerate, where,
+                             "'" + keyword + "' needs l != r, b != t and n != f, found " +
+                                 formatNumber(a[0]) + " " + formatNumber(a[1]) + " " +
+                                 formatNumber(a[2]) + " " + formatNumber(a[3]) + " " +
+                                 formatNumber(a[4]) + " " + formatNumber(a[5]));
+        m_projection = keyword == "frustum" ? frustumMatrix(a[0], a[1], a[2], a[3], a[4], a[5])
+                                            : orthoMatrix(a[0], a[1], a[2], a[3], a[4], a[5]);
+        return success();
+    }
+    if (keyword == "translate" || keyword == "scale") {
+        auto v = nums(3, keyword == "translate" ? "dx dy dz" : "sx sy sz");
+        if (!v) return v.error();
+        const dvec3 d(v->at(0), v->at(1), v->at(2));
+        m_modelView = m_modelView * (keyword == "translate" ? translationMatrix(d) : scaleMatrix(d));
+        return success();
+    }
+    if (keyword == "rotatex" || keyword == "rotatey" || keyword == "rotatez") {
+        auto v = nums(1, "degrees");
+        if (!v) return v.error();
+        const dvec3 axis = keyword == "rotatex" ? dvec3(1, 0, 0)
+                           : keyword == "rotatey" ? dvec3(0, 1, 0)
+                                                  : dvec3(0, 0, 1);
+        m_modelView = m_modelView * rotationMatrix(v->at(0), axis);
+        return success();
+    }
+    if (keyword == "rotate") {
+        auto v = nums(4, "degrees x y z");
+        if (!v) return v.error();
+        const dvec3 axis(v->at(1), v->at(2), v->at(3));
+        if (axis == dvec3(0.0))
+            return makeError(ErrorCode::Degenerate, m_scanner.at(line.tokens[2]),
+                             "'rotate' needs an axis, found the zero vector");
+        m_modelView = m_modelView * rotationMatrix(v->at(0), axis);
+        return success();
+    }
+    if (keyword == "lookat") {
+        auto idx = indices(line, 1, 2, "eye center upx upy upz");
+        if (!idx) return idx.error();
+        if (line.tokens.size() < 6)
+            return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
+                             "expected 'lookat eye center upx upy upz', found " +
+                                 countOf(line.tokens.size() - 1, "argument", "arguments"));
+        dvec3 up(0.0);
+        for (int k = 0; k < 3; ++k) {
+            const Token& token = line.tokens[std::size_t(3 + k)];
+            const auto value = parseReal(token.text);
+            if (!value)
+                return makeError(ErrorCode::Syntax, m_scanner.at(token),
+                                 "expected a number in 'lookat' (eye center upx upy upz), found " +
+                                     quoted(token.text));
+            up[k] = *value;
+        }
+        warnExtra(line, 6);
+        const auto position = [&](std::uint32_t i) {
+            const dvec4& p = m_vertices[i].p;
+            return p.w != 0.0 ? dvec3(p) / p.w : dvec3(p);
+        };
+        const dvec3 eye = position(idx->at(0)), center = position(idx->at(1));
+        if (eye == center || glm::length(glm::cross(center - eye, up)) == 0.0)
+            return makeError(ErrorCode::Degenerate, where,
+                             "'lookat' needs an eye apart from the center and an up that is "
+                             "not along the line of sight");
+        m_modelView = lookAtMatrix(eye, center, up);
+        return success();
+    }
+    if (keyword == "clipplane") {
+        auto v = nums(4, "p1 p2 p3 p4");
+        if (!v) return v.error();
+        // A plane of model coordinates, carried to eye coordinates: p . (M^-1 x) >= 0.
+        const dvec4 plane(v->at(0), v->at(1), v->at(2), v->at(3));
+        m_clipPlanes.push_back(plane);
+        return success();
+    }
+    if (keyword == "cull" || keyword == "decals" || keyword == "flatnormals") {
+        warnExtra(line, 1);
+        if (keyword == "cull") m_cull = true;
+        return success();
+    }
+    if (keyword == "texture") {
+        if (line.tokens.size() < 2)
+            return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
+                             "expected a file name after 'texture', found the end of the line");
+        warnExtra(line, 2);
+        auto texture = m_loader(std::string(line.tokens[1].text), m_scanner.at(line.tokens[1]));
+        if (!texture) return texture.error();
+        m_texture = texture.value();
+        return success();
+    }
+    if (keyword == "sunlight" || keyword == "bulb") {
+        if (auto s = requireImage(line); !s) return s;
+        Light light;
+        light.intensity = m_colour;
+        light.where = where;
+        if (keyword == "sunlight") {
+            auto v = nums(3, "lx ly lz");
+            if (!v) return v.error();
+            const dvec3 direction(v->at(0), v->at(1), v->at(2));
+            if (direction == dvec3(0.0))
+                return makeError(ErrorCode::Degenerate, m_scanner.at(line.tokens[1]),
+                                 "'sunlight' needs a direction, found the zero vector");
+            // A direction, carried to eye coordinates like a normal, then made unit length.
+            const dmat3 normalFromModel = glm::transpose(glm::inverse(dmat3(m_modelView)));
+            light.pWorld = dvec4(glm::normalize(normalFromModel * direction), 0.0);
+        } else {
+            auto idx = indices(line, 1, 1, "i1");
+            if (!idx) return idx.error();
+            const dvec4 p = m_modelView * m_vertices[idx->at(0)].p;
+            light.pWorld = dvec4(p.w != 0.0 ? dvec3(p) / p.w : dvec3(p), 1.0);
+        }
+        m_image->scene.lights.push_back(light);
+        return success();
+    }
+    if (keyword == "shininess") {
+        auto v = nums(1, "alpha");
+        if (!v) return v.error();
+        m_shininess = static_cast<float>(v->at(0));
+        return success();
+    }
+    return success();
+}
+
+}  // namespace
+
+Result<Hw2File> readHw2(std::string_view text, const std::string& fileName,
+                        const TextureLoader& loadTexture, Diagnostics& diagnostics) {
+    Hw2Reader reader(text, fileName, loadTexture, diagnostics);
+    return reader.read();
+}
+
+bool looksLikeHw2(std::string_view text) {
+    LineScanner scanner(text, "");
+    TextLine line;
+    while (scanner.next(line)) {
+        const std::string_view first = line.tokens[0].text;
+        if (isKnown(first)) return true;
+        if (parseReal(first)) return false;  // a course file starts with numbers
+    }
+    return false;
+}
+
+}  // namespace rl

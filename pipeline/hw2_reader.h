@@ -1,0 +1,45 @@
+// The command language of seed 001 ("HW2: 3D Rasterizer"): one command per line, a keyword
+// and its arguments. The reader keeps the state the commands change (the current colour,
+// normal and texture coordinate, the model/view and projection matrices, clip planes,
+// cull, the texture, the lights, the shininess) and turns each drawing command into
+// triangles of a draw, so that a command file becomes a Scene for the same seven stages
+// as the course files. Blank lines and unknown keywords are skipped (a note lists the
+// unknown ones); a known command with missing or malformed arguments is an error with
+// file:line:col.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "diagnostics.h"
+#include "scene.h"
+
+namespace rl {
+
+// One image a command file asks for: its `png` line, and the scene drawn into it.
+struct Hw2Image {
+    std::string fileName;  // as written in the png command
+    SourceLocation where;  // the png command
+    Scene scene;
+};
+
+struct Hw2File {
+    std::vector<Hw2Image> images;
+};
+
+// Loads the image a `texture` command names (relative to the command file's folder);
+// supplied by the caller, since the pipeline reads no image formats itself.
+using TextureLoader = std::function<Result<std::shared_ptr<const Texture>>(
+    const std::string& name, const SourceLocation& where)>;
+
+Result<Hw2File> readHw2(std::string_view text, const std::string& fileName,
+                        const TextureLoader& loadTexture, Diagnostics& diagnostics);
+
+// Whether a text looks like a command file: its first command line starts with a known
+// keyword (png, xyz, ...). Used to tell command files from course files.
+bool looksLikeHw2(std::string_view text);
+
+}  // namespace rl
