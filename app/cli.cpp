@@ -275,7 +275,12 @@ int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& 
                                        lit("Refuse images with more pixels than this "
                                            "(default 40000000)."),
                                        lit("N"), QString::number(kDefaultMaxPixels));
-    parser.addOptions({help, outdir, maxPixels});
+    const QCommandLineOption explain(lit("explain-pixel"),
+                                     lit("Print the story of one pixel of each image: the "
+                                         "triangles that covered it, each depth test, and its "
+                                         "lighting."),
+                                     lit("X,Y"));
+    parser.addOptions({help, outdir, maxPixels, explain});
     parser.addPositionalArgument(lit("FILE"), lit("The command file."));
     if (!parser.parse(arguments)) return usageError(err, parser.errorText());
     if (parser.isSet(help)) {
@@ -292,6 +297,11 @@ int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& 
     if (!maxOk || pixelLimit < 1)
         return usageError(err, lit("--max-pixels expects a positive whole number, found '%1'")
                                    .arg(parser.value(maxPixels)));
+
+    int explainX = -1, explainY = -1;
+    if (parser.isSet(explain) && !parsePixel(parser.value(explain), explainX, explainY))
+        return usageError(err, lit("--explain-pixel expects X,Y such as 400,300, found '%1'")
+                                   .arg(parser.value(explain)));
 
     rl::Diagnostics diagnostics;
     auto file = loadCommandFile(files.first(), diagnostics);
@@ -314,7 +324,12 @@ int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& 
                                                      " has more pixels than the limit of " +
                                                      std::to_string(pixelLimit) +
                                                      " (raise it with --max-pixels)"));
-        auto trace = rl::renderFrame(std::make_shared<const rl::Scene>(scene));
+        const bool explainHere = parser.isSet(explain) && explainX < scene.width &&
+                                 explainY < scene.height;
+        std::optional<rl::RecordingProbe> probe;
+        if (explainHere) probe = rl::RecordingProbe::forPixel(explainX, explainY);
+        auto shared = std::make_shared<const rl::Scene>(scene);
+        auto trace = probe ? rl::traceFrame(shared, {}, *probe) : rl::renderFrame(shared);
         if (!trace) return inputError(err, trace.error());
         printDiagnostics(trace->diagnostics, err);
         const QString name = QString::fromStdString(image.fileName);
@@ -324,6 +339,10 @@ int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& 
         out << "  " << scene.triangleCount() << " triangles in " << scene.draws.size()
             << " draws, " << trace->depth->coveredPixels() << " pixels covered, "
             << QString::number(trace->totalMilliseconds, 'f', 1) << " ms\n";
+        if (probe) out << QString::fromStdString(rl::explainPixel(trace.value(), *probe));
+        else if (parser.isSet(explain))
+            err << "rasterlab-cli: --explain-pixel " << parser.value(explain) << " is outside the "
+                << scene.width << "x" << scene.height << " image " << name << '\n';
     }
     out.flush();
     return ExitOk;

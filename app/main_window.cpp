@@ -74,8 +74,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
     if (auto status = m_document.loadDefault(); !status)
         showError(QString::fromStdString(status.error().toString()));
-    refreshMessages();
-    requestRender();
+    documentChanged();
 }
 
 void MainWindow::createActions() {
@@ -90,13 +89,16 @@ void MainWindow::createActions() {
     QAction* openLighting = file->addAction(
         tr("Open &Lighting..."), this, [this] { openPartDialog(SceneDocument::Part::Lighting); });
     openLighting->setShortcut(QKeySequence(tr("Ctrl+Shift+L")));
+    QAction* openCommands = file->addAction(tr("Open Command &File..."), this,
+                                            &MainWindow::openCommandFileDialog);
+    openCommands->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
+    openCommands->setObjectName(QStringLiteral("openCommandFileAction"));
     file->addAction(tr("&Default Scene"), this, [this] {
         if (auto status = m_document.loadDefault(); !status)
             showError(QString::fromStdString(status.error().toString()));
         else
             m_lastError.clear();
-        refreshMessages();
-        requestRender();
+        documentChanged();
     });
     file->addSeparator();
     QAction* exportAction = file->addAction(tr("&Export PNG..."), this, &MainWindow::exportDialog);
@@ -119,8 +121,13 @@ void MainWindow::createActions() {
     view->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         view->addAction(dock->toggleViewAction());
+    view->addSeparator();
+    // The images a command file names (its png commands): one is shown at a time.
+    m_imageMenu = view->addMenu(tr("&Image"));
+    m_imageMenu->setObjectName(QStringLiteral("imageMenu"));
 
     QMenu* shading = menuBar()->addMenu(tr("&Shading"));
+    m_shadingMenu = shading;
     m_shadingGroup = new QActionGroup(this);
     const std::pair<rl::ShadingModel, QString> models[] = {
         {rl::ShadingModel::Phong, tr("&Phong (per pixel)")},
@@ -168,9 +175,44 @@ bool MainWindow::openPart(SceneDocument::Part part, const QString& path) {
         return false;
     }
     m_lastError.clear();
+    documentChanged();
+    return true;
+}
+
+bool MainWindow::openCommandFile(const QString& path) {
+    auto status = m_document.openCommandFile(path);
+    if (!status) {
+        showError(QString::fromStdString(status.error().toString()));
+        return false;
+    }
+    m_lastError.clear();
+    documentChanged();
+    return true;
+}
+
+void MainWindow::documentChanged() {
+    // The shading menu acts on course scenes; a command file's draws bring their own.
+    m_shadingMenu->setEnabled(!m_document.showsCommandFile());
+    m_imageMenu->clear();
+    const QStringList images = m_document.imageNames();
+    m_imageMenu->setEnabled(images.size() > 1);
+    auto* group = new QActionGroup(m_imageMenu);
+    for (int i = 0; i < images.size(); ++i) {
+        QAction* action = m_imageMenu->addAction(images[i]);
+        action->setCheckable(true);
+        action->setChecked(i == m_document.imageIndex());
+        group->addAction(action);
+        connect(action, &QAction::triggered, this, [this, i] {
+            m_document.setImageIndex(i);
+            requestRender();
+        });
+    }
+    const QString shown = m_document.showsCommandFile()
+                              ? QFileInfo(m_document.commandFilePath()).fileName()
+                              : displayName(m_document.source(SceneDocument::Part::Object));
+    setWindowTitle(tr("%1 - RasterLab").arg(shown));
     refreshMessages();
     requestRender();
-    return true;
 }
 
 void MainWindow::setShading(rl::ShadingModel model) {
@@ -245,18 +287,33 @@ void MainWindow::refreshSceneSummary() {
     const rl::Scene& scene = *t.scene;
     QString html;
     html += QStringLiteral("<h3>%1</h3>").arg(tr("Files"));
-    html += QStringLiteral("<p>%1: %2<br>%3: %4<br>%5: %6</p>")
-                .arg(tr("Camera"), displayName(m_document.source(SceneDocument::Part::Camera)),
-                     tr("Lighting"), displayName(m_document.source(SceneDocument::Part::Lighting)),
-                     tr("Object"), displayName(m_document.source(SceneDocument::Part::Object)));
-    html +=
-        QStringLiteral("<p>%1</p>")
-            .arg(tr("%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading")
-                     .arg(scene.vertexCount())
-                     .arg(scene.triangleCount())
-                     .arg(scene.width)
-                     .arg(scene.height)
-                     .arg(QString::fromUtf8(rl::shadingModelName(scene.draws.front().shading))));
+    if (m_document.showsCommandFile()) {
+        html += QStringLiteral("<p>%1: %2<br>%3: %4</p>")
+                    .arg(tr("Command file"), QFileInfo(m_document.commandFilePath()).fileName(),
+                         tr("Image"), QString::fromStdString(scene.name));
+        html += QStringLiteral("<p>%1</p>")
+                    .arg(tr("%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights")
+                             .arg(scene.vertexCount())
+                             .arg(scene.triangleCount())
+                             .arg(scene.draws.size())
+                             .arg(scene.width)
+                             .arg(scene.height)
+                             .arg(scene.lights.size()));
+    } else {
+        html += QStringLiteral("<p>%1: %2<br>%3: %4<br>%5: %6</p>")
+                    .arg(tr("Camera"), displayName(m_document.source(SceneDocument::Part::Camera)),
+                         tr("Lighting"),
+                         displayName(m_document.source(SceneDocument::Part::Lighting)), tr("Object"),
+                         displayName(m_document.source(SceneDocument::Part::Object)));
+        html += QStringLiteral("<p>%1</p>")
+                    .arg(tr("%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading")
+                             .arg(scene.vertexCount())
+                             .arg(scene.triangleCount())
+                             .arg(scene.width)
+                             .arg(scene.height)
+                             .arg(QString::fromUtf8(
+                                 rl::shadingModelName(m_document.settings().shading))));
+    }
     html += QStringLiteral("<h3>%1</h3><table>").arg(tr("Stages"));
     const QString stageNames[] = {tr("Camera basis"), tr("View transform"),  tr("Normals"),
                                   tr("Projection"),   tr("Scan conversion"), tr("Depth test"),
@@ -328,9 +385,19 @@ void MainWindow::openPartDialog(SceneDocument::Part part) {
     if (!path.isEmpty()) openPart(part, path);
 }
 
+void MainWindow::openCommandFileDialog() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open Command File"), QString(), tr("Command files (*.txt);;All files (*)"));
+    if (!path.isEmpty()) openCommandFile(path);
+}
+
 void MainWindow::exportDialog() {
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Export PNG"), QStringLiteral("rasterlab.png"), tr("PNG images (*.png)"));
+    // A command file names its images; a course scene's image is named after its object.
+    QString name = QStringLiteral("rasterlab.png");
+    if (m_frame.trace && m_document.showsCommandFile())
+        name = QString::fromStdString(m_frame.trace->scene->name);
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export PNG"), name,
+                                                      tr("PNG images (*.png)"));
     if (!path.isEmpty()) exportImage(path);
 }
 

@@ -13,6 +13,7 @@
 #include "scene_document.h"
 
 class QLabel;
+class QMenu;
 class QListWidget;
 class QTextBrowser;
 
@@ -28,6 +29,8 @@ public:
     // Replaces one part of the scene from a file; returns false (and shows the error,
     // keeping the scene) when the file is bad.
     bool openPart(SceneDocument::Part part, const QString& path);
+    // Shows a command file (seed 001); false (the error shown, the scene kept) when bad.
+    bool openCommandFile(const QString& path);
     void setShading(rl::ShadingModel model);
     bool exportImage(const QString& path);
 
@@ -50,6 +53,8 @@ private:
     void refreshSceneSummary();
     void onPixelHovered(QPoint pixel);
     void openPartDialog(SceneDocument::Part part);
+    void openCommandFileDialog();
+    void documentChanged();  // menus, title, messages, and a new render
     void exportDialog();
     void about();
 
@@ -64,6 +69,8 @@ private:
     QLabel* m_pixelLabel = nullptr;
     QLabel* m_timeLabel = nullptr;  // the last frame's time; "rendering..." while busy
     QActionGroup* m_shadingGroup = nullptr;
+    QMenu* m_shadingMenu = nullptr;
+    QMenu* m_imageMenu = nullptr;
 };
 
 }  // namespace rasterlab

@@ -1,6 +1,9 @@
 #include "scene_document.h"
 
+#include <QFile>
+
 #include "camera_basis.h"
+#include "command_file.h"
 #include "default_scene_resource.h"
 
 namespace rasterlab {
@@ -17,7 +20,45 @@ rl::Status SceneDocument::loadDefault() {
     return rl::success();
 }
 
+namespace {
+
+// Whether a file's first bytes look like a command file.
+bool isCommandFile(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) return false;
+    const QByteArray head = file.read(4096);
+    return rl::looksLikeHw2(std::string_view(head.constData(), std::size_t(head.size())));
+}
+
+}  // namespace
+
+rl::Status SceneDocument::openCommandFile(const QString& path) {
+    rl::Diagnostics diagnostics;
+    auto file = loadCommandFile(path, diagnostics);
+    if (!file) return file.error();
+    m_commandFile = std::move(file).value();
+    m_commandFilePath = path;
+    m_commandFileDiagnostics = std::move(diagnostics);
+    m_imageIndex = 0;
+    m_loaded = true;
+    return rl::success();
+}
+
+QStringList SceneDocument::imageNames() const {
+    QStringList names;
+    if (m_commandFile)
+        for (const auto& image : m_commandFile->images)
+            names << QString::fromStdString(image.fileName);
+    return names;
+}
+
+void SceneDocument::setImageIndex(int index) {
+    if (m_commandFile && index >= 0 && index < int(m_commandFile->images.size()))
+        m_imageIndex = index;
+}
+
 rl::Status SceneDocument::open(Part part, const QString& path) {
+    if (part == Part::Object && isCommandFile(path)) return openCommandFile(path);
     rl::Diagnostics diagnostics;
     switch (part) {
         case Part::Camera: {
@@ -48,10 +89,13 @@ rl::Status SceneDocument::open(Part part, const QString& path) {
     }
     m_sources[index(part)] = path;
     m_partDiagnostics[index(part)] = std::move(diagnostics);
+    m_commandFile.reset();  // the course scene is shown again
+    m_commandFilePath.clear();
     return rl::success();
 }
 
 rl::Diagnostics SceneDocument::diagnostics() const {
+    if (m_commandFile) return m_commandFileDiagnostics;
     rl::Diagnostics all;
     for (const auto& d : m_partDiagnostics) all.append(d);
     return all;
@@ -63,6 +107,9 @@ void SceneDocument::setSize(int width, int height) {
 }
 
 std::shared_ptr<const rl::Scene> SceneDocument::scene() const {
+    if (m_commandFile)
+        return std::make_shared<const rl::Scene>(
+            m_commandFile->images[std::size_t(m_imageIndex)].scene);
     return std::make_shared<const rl::Scene>(rl::makeCourseScene(m_parts, m_settings));
 }
 

@@ -37,27 +37,40 @@ std::string depthVerdict(const DepthTestEvent& test, bool winsOnTie) {
     return std::string(winsOnTie ? " > " : " >= ") + stored + ": rejected, not nearer";
 }
 
-void describeSample(std::string& out, const PhongSample& s, const Material& m) {
+void describeSample(std::string& out, const PhongSample& s, const Draw& draw) {
+    if (draw.lighting == LightingModel::Unlit) {
+        out += "    not lit: the colour is the object colour " + f3(s.unlit) + "\n";
+        return;
+    }
     out += "    N = " + f3(s.n) + (s.flipped ? "  (turned toward the viewer: V.N was < 0)" : "") +
            "\n";
     if (s.noNormal) {
-        out += "    the normal is zero (only degenerate triangles meet here): ambient only\n";
+        out += "    the normal is zero (only degenerate triangles meet here): no light reaches it\n";
         return;
     }
     if (s.lightAtPoint) {
-        out += "    the light is at the point itself (L = 0): ambient only\n";
-        return;
+        out += "    the light is at the point itself (L = 0): it adds nothing\n";
+        if (draw.lighting == LightingModel::CoursePhong) return;
     }
-    out += "    L = " + f3(s.l) + "   V = " + f3(s.v) + "   R = " + f3(s.r) + "\n";
-    out += "    N.L = " + formatNumber(s.nDotL) + "   R.V = " + formatNumber(s.rDotV) + "\n";
+    const bool course = draw.lighting == LightingModel::CoursePhong;
+    out += "    L = " + f3(s.l) + "   V = " + f3(s.v) + (course ? "   R = " : "   H = ") +
+           f3(s.r) + (course ? "" : "   (the first light)") + "\n";
+    out += "    N.L = " + formatNumber(s.nDotL) + (course ? "   R.V = " : "   H.N = ") +
+           formatNumber(s.rDotV) + "\n";
     if (s.lightBehind)
         out += "    N.L < 0: the light is behind the surface, no diffuse, no specular\n";
     if (s.noSpecular)
         out += "    R.V < 0: the reflection points away from the viewer, no specular\n";
-    out += "    ambient  Ia*ka          = " + f3(s.ambient) + "\n";
-    out += "    diffuse  Il*Od*kd*(N.L) = " + f3(s.diffuse) + "\n";
-    out += "    specular Il*ks*(R.V)^n  = " + f3(s.specular) +
-           "   (n = " + formatNumber(m.shininess) + ")\n";
+    if (course) {
+        out += "    ambient  Ia*ka          = " + f3(s.ambient) + "\n";
+        out += "    diffuse  Il*Od*kd*(N.L) = " + f3(s.diffuse) + "\n";
+        out += "    specular Il*ks*(R.V)^n  = " + f3(s.specular) +
+               "   (n = " + formatNumber(draw.material.shininess) + ")\n";
+    } else {
+        out += "    diffuse  sum of Il*O*(N.L)  = " + f3(s.diffuse) + "\n";
+        out += "    specular sum of Il*(H.N)^s  = " + f3(s.specular) +
+               "   (s = " + formatNumber(draw.material.shininess) + ")\n";
+    }
 }
 
 }  // namespace
@@ -100,11 +113,11 @@ std::string explainPixel(const FrameTrace& trace, const RecordingProbe& probe) {
                 case ShadingModel::Phong:
                     out += "    P' = " + f3(shade->pView) +
                            "   N interpolated = " + f3(shade->nInterpolated) + "\n";
-                    describeSample(out, shade->sample, draw.material);
+                    describeSample(out, shade->sample, draw);
                     break;
                 case ShadingModel::Flat:
                     out += "    one evaluation at the triangle's barycentre, with its normal\n";
-                    describeSample(out, shade->sample, draw.material);
+                    describeSample(out, shade->sample, draw);
                     break;
                 case ShadingModel::Gouraud:
                     out += "    vertex colours " + f3(shade->vertexColours[0]) + ", " +

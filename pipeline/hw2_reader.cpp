@@ -72,7 +72,7 @@ private:
     Status requireImage(const TextLine& line);
     void warnExtra(const TextLine& line, std::size_t used);
 
-    Draw& drawFor(const DrawState& state, const SourceLocation& where);
+    Draw& drawFor(const DrawState& state);
     void addTriangle(const DrawState& state, const std::array<Vertex, 3>& corners,
                      const SourceLocation& where);
     void addPatch(const PatchMesh& patch, Fill fill, const SourceLocation& where);
@@ -241,11 +241,12 @@ DrawState Hw2Reader::stateFor(Fill fill, bool hasNormals, bool flatFill) const {
     return s;
 }
 
-Draw& Hw2Reader::drawFor(const DrawState& state, const SourceLocation& where) {
+Draw& Hw2Reader::drawFor(const DrawState& state) {
     Scene& scene = m_image->scene;
     if (!m_lastState || !(*m_lastState == state)) {
         Draw draw;
-        draw.name = m_image->fileName + " (line " + std::to_string(where.line) + ")";
+        const std::string& path = m_scanner.fileName();
+        draw.name = path.substr(path.find_last_of('/') + 1);  // the command file's name
         draw.worldFromModel = state.modelView;
         draw.clipFromView = state.projection;
         draw.clipPlanes = state.clipPlanes;
@@ -270,7 +271,7 @@ Draw& Hw2Reader::drawFor(const DrawState& state, const SourceLocation& where) {
 
 void Hw2Reader::addTriangle(const DrawState& state, const std::array<Vertex, 3>& corners,
                             const SourceLocation& where) {
-    drawFor(state, where);
+    drawFor(state);
     Mesh& mesh = *m_meshes.back();
     const auto base = static_cast<std::uint32_t>(mesh.positions.size());
     for (const Vertex& v : corners) {
@@ -285,7 +286,7 @@ void Hw2Reader::addTriangle(const DrawState& state, const std::array<Vertex, 3>&
 
 void Hw2Reader::addPatch(const PatchMesh& patch, Fill fill, const SourceLocation& where) {
     const DrawState state = stateFor(fill, true, fill == Fill::Flat);
-    drawFor(state, where);
+    drawFor(state);
     Mesh& mesh = *m_meshes.back();
     const auto base = static_cast<std::uint32_t>(mesh.positions.size());
     for (const PatchVertex& v : patch.vertices) {
