@@ -110,11 +110,30 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
     parser.setApplicationDescription(lit("Render a course scene to PNG."));
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     const QCommandLineOption help({lit("h"), lit("help")}, lit("Show this help."));
-    const QCommandLineOption camera(lit("camera"), lit("Camera file (C; N; V; d hx hy)."),
-                                    lit("FILE"));
+    const QCommandLineOption camera(
+        lit("camera"), lit("Camera file, in a layout --camera-format names."), lit("FILE"));
+    const QCommandLineOption cameraFormat(
+        lit("camera-format"),
+        lit("Layout of the camera file: auto (default: detected, and named in a note), ufpe "
+            "(C; N; V; d hx hy), ufrpe6 (N; V; d; hx; hy; C), ufrpe5 (C; N; V; hx hy; d) or "
+            "keyvalue (C = x y z, N, V, d, hx, hy in any order). Detection: key = value when a "
+            "line contains '='; otherwise the layout whose lines hold as many numbers as the "
+            "file's, or the one layout a single line away."),
+        lit("FORMAT"), lit("auto"));
     const QCommandLineOption lighting(
-        lit("lighting"), lit("Lighting file (Pl; ka; Ia; kd; Od; ks; Il; n)."), lit("FILE"));
-    const QCommandLineOption object(lit("object"), lit("Object file (.byu)."), lit("FILE"));
+        lit("lighting"), lit("Lighting file, in a layout --lighting-format names."), lit("FILE"));
+    const QCommandLineOption lightingFormat(
+        lit("lighting-format"),
+        lit("Layout of the lighting file: auto (default: detected, and named in a note), ufpe "
+            "(Pl; ka; Ia; kd; Od; ks; Il; n), multi (ka; Ia; kd; Od; ks; n; L; then L times Pl; "
+            "Il), ufrpe (Iamb; Ka; Il; Pl; Kd; Od; Ks; n) or keyvalue (Iamb = r g b, Ka, Il, Pl, "
+            "Kd, Od, Ks, eta in any order). One key = value file may hold both the camera and "
+            "the lighting."),
+        lit("FORMAT"), lit("auto"));
+    const QCommandLineOption object(
+        lit("object"),
+        lit("Object file (.byu: a triangle mesh, a course Bezier surface or a Movie.BYU file)."),
+        lit("FILE"));
     const QCommandLineOption size(lit("size"), lit("Image size, default 800x600."), lit("WxH"),
                                   lit("800x600"));
     const QCommandLineOption shading(lit("shading"), lit("phong (default), flat or gouraud."),
@@ -144,8 +163,8 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
                                      lit("Print the story of one pixel: the triangles that "
                                          "covered it, each depth test, and its Phong terms."),
                                      lit("X,Y"));
-    parser.addOptions({help, camera, lighting, object, size, shading, output, depthOutput,
-                       normalsOutput, near, naive, maxPixels, explain});
+    parser.addOptions({help, camera, cameraFormat, lighting, lightingFormat, object, size, shading,
+                       output, depthOutput, normalsOutput, near, naive, maxPixels, explain});
     if (!parser.parse(arguments)) return usageError(err, parser.errorText());
     if (parser.isSet(help)) {
         out << commandHelp(parser, lit("render"));
@@ -182,6 +201,23 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
             err,
             lit("--shading expects phong, flat or gouraud, found '%1'").arg(parser.value(shading)));
     settings.shading = *model;
+    const auto cameraLayout = rl::cameraLayoutFromName(parser.value(cameraFormat).toStdString());
+    if (!cameraLayout)
+        return usageError(err, lit("--camera-format expects auto, ufpe, ufrpe6, ufrpe5 or "
+                                   "keyvalue, found '%1'")
+                                   .arg(parser.value(cameraFormat)));
+    if (parser.isSet(cameraFormat) && !parser.isSet(camera))
+        return usageError(err, lit("--camera-format applies to the file of --camera, which is "
+                                   "not given"));
+    const auto lightingLayout =
+        rl::lightingLayoutFromName(parser.value(lightingFormat).toStdString());
+    if (!lightingLayout)
+        return usageError(err, lit("--lighting-format expects auto, ufpe, multi, ufrpe or "
+                                   "keyvalue, found '%1'")
+                                   .arg(parser.value(lightingFormat)));
+    if (parser.isSet(lightingFormat) && !parser.isSet(lighting))
+        return usageError(err, lit("--lighting-format applies to the file of --lighting, which "
+                                   "is not given"));
     if (parser.isSet(near)) {
         bool ok = false;
         const double z = parser.value(near).toDouble(&ok);
@@ -209,9 +245,9 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
     const auto source = [&](const QCommandLineOption& option, CoursePart part) {
         return parser.isSet(option) ? parser.value(option) : defaultScenePath(part);
     };
-    auto c = loadCamera(source(camera, CoursePart::Camera), diagnostics);
+    auto c = loadCamera(source(camera, CoursePart::Camera), diagnostics, *cameraLayout);
     if (!c) return inputError(err, c.error());
-    auto l = loadLighting(source(lighting, CoursePart::Lighting), diagnostics);
+    auto l = loadLighting(source(lighting, CoursePart::Lighting), diagnostics, *lightingLayout);
     if (!l) return inputError(err, l.error());
     auto o = loadObject(source(object, CoursePart::Object), diagnostics);
     if (!o) return inputError(err, o.error());
@@ -289,9 +325,9 @@ int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& 
     }
     const QStringList files = parser.positionalArguments();
     if (files.size() != 1)
-        return usageError(err, files.isEmpty() ? lit("run needs a command file")
-                                               : lit("run takes one command file, found %1")
-                                                     .arg(files.size()));
+        return usageError(err, files.isEmpty()
+                                   ? lit("run needs a command file")
+                                   : lit("run takes one command file, found %1").arg(files.size()));
     bool maxOk = false;
     const qint64 pixelLimit = parser.value(maxPixels).toLongLong(&maxOk);
     if (!maxOk || pixelLimit < 1)
@@ -318,14 +354,14 @@ int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& 
     for (const rl::Hw2Image& image : file->images) {
         const rl::Scene& scene = image.scene;
         if (qint64(scene.width) * scene.height > pixelLimit)
-            return inputError(err, rl::makeError(rl::ErrorCode::Range, image.where,
-                                                 "the image " + std::to_string(scene.width) + "x" +
-                                                     std::to_string(scene.height) +
-                                                     " has more pixels than the limit of " +
-                                                     std::to_string(pixelLimit) +
-                                                     " (raise it with --max-pixels)"));
-        const bool explainHere = parser.isSet(explain) && explainX < scene.width &&
-                                 explainY < scene.height;
+            return inputError(
+                err, rl::makeError(
+                         rl::ErrorCode::Range, image.where,
+                         "the image " + std::to_string(scene.width) + "x" +
+                             std::to_string(scene.height) + " has more pixels than the limit of " +
+                             std::to_string(pixelLimit) + " (raise it with --max-pixels)"));
+        const bool explainHere =
+            parser.isSet(explain) && explainX < scene.width && explainY < scene.height;
         std::optional<rl::RecordingProbe> probe;
         if (explainHere) probe = rl::RecordingProbe::forPixel(explainX, explainY);
         auto shared = std::make_shared<const rl::Scene>(scene);
@@ -336,10 +372,11 @@ int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& 
         if (!writePng(rl::colourImage(*trace->shading, *trace->depth, scene.conventions),
                       folder.filePath(name), out, err, lit("image")))
             return ExitBadInput;
-        out << "  " << scene.triangleCount() << " triangles in " << scene.draws.size()
-            << " draws, " << trace->depth->coveredPixels() << " pixels covered, "
+        out << "  " << scene.triangleCount() << " triangles in " << scene.draws.size() << " draws, "
+            << trace->depth->coveredPixels() << " pixels covered, "
             << QString::number(trace->totalMilliseconds, 'f', 1) << " ms\n";
-        if (probe) out << QString::fromStdString(rl::explainPixel(trace.value(), *probe));
+        if (probe)
+            out << QString::fromStdString(rl::explainPixel(trace.value(), *probe));
         else if (parser.isSet(explain))
             err << "rasterlab-cli: --explain-pixel " << parser.value(explain) << " is outside the "
                 << scene.width << "x" << scene.height << " image " << name << '\n';

@@ -2,6 +2,8 @@
 
 #include <QFile>
 
+#include <filesystem>
+
 #include "default_scene.h"
 
 namespace rasterlab {
@@ -34,18 +36,44 @@ auto load(const QString& path, rl::Diagnostics& diagnostics, Parse parse)
                  path.toStdString(), diagnostics);
 }
 
-}  // namespace
-
-rl::Result<rl::CourseCamera> loadCamera(const QString& path, rl::Diagnostics& diagnostics) {
-    return load(path, diagnostics, rl::readCourseCamera);
+// One of the embedded default scene's files (UFPE layouts, read without a note).
+bool isEmbeddedDefault(const QString& path) {
+    return path.startsWith(QStringLiteral(":/default-scene/"));
 }
 
-rl::Result<rl::CourseLighting> loadLighting(const QString& path, rl::Diagnostics& diagnostics) {
-    return load(path, diagnostics, rl::readCourseLighting);
+// The object in any .byu flavour, named after its file.
+rl::Result<rl::CourseObject> parseAnyObject(std::string_view text, const std::string& fileName,
+                                            rl::Diagnostics& diagnostics) {
+    auto mesh = rl::readByuObject(text, fileName, diagnostics);
+    if (!mesh) return mesh.error();
+    rl::CourseObject object;
+    object.name = std::filesystem::path(fileName).filename().string();
+    object.mesh = std::make_shared<const rl::Mesh>(std::move(mesh).value());
+    return object;
+}
+
+}  // namespace
+
+rl::Result<rl::CourseCamera> loadCamera(const QString& path, rl::Diagnostics& diagnostics,
+                                        rl::CameraLayout layout) {
+    if (isEmbeddedDefault(path)) return load(path, diagnostics, rl::readCourseCamera);
+    return load(path, diagnostics,
+                [layout](std::string_view text, const std::string& fileName, rl::Diagnostics& d) {
+                    return rl::readCameraFile(text, fileName, d, layout);
+                });
+}
+
+rl::Result<rl::CourseLighting> loadLighting(const QString& path, rl::Diagnostics& diagnostics,
+                                            rl::LightingLayout layout) {
+    if (isEmbeddedDefault(path)) return load(path, diagnostics, rl::readCourseLighting);
+    return load(path, diagnostics,
+                [layout](std::string_view text, const std::string& fileName, rl::Diagnostics& d) {
+                    return rl::readLightingFile(text, fileName, d, layout);
+                });
 }
 
 rl::Result<rl::CourseObject> loadObject(const QString& path, rl::Diagnostics& diagnostics) {
-    return load(path, diagnostics, rl::parseCourseObject);
+    return load(path, diagnostics, parseAnyObject);
 }
 
 rl::Result<rl::CourseSceneParts> loadDefaultCourseScene(rl::Diagnostics& diagnostics) {

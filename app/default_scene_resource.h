@@ -21,8 +21,14 @@ QString defaultScenePath(CoursePart part);
 rl::Result<rl::CourseSceneParts> loadDefaultCourseScene(rl::Diagnostics& diagnostics);
 
 // Reads one course file from disk or from the resources (paths starting with ":/").
-rl::Result<rl::CourseCamera> loadCamera(const QString& path, rl::Diagnostics& diagnostics);
-rl::Result<rl::CourseLighting> loadLighting(const QString& path, rl::Diagnostics& diagnostics);
+// Cameras and lighting come in any layout of course_readers.h, detected (Auto) or as given,
+// with a note naming the layout; objects in any .byu flavour (rl::readByuObject). The
+// embedded default scene's own files are always read as the UFPE files they are, without
+// the note (it is meant for the user's files), whatever layout is asked for.
+rl::Result<rl::CourseCamera> loadCamera(const QString& path, rl::Diagnostics& diagnostics,
+                                        rl::CameraLayout layout = rl::CameraLayout::Auto);
+rl::Result<rl::CourseLighting> loadLighting(const QString& path, rl::Diagnostics& diagnostics,
+                                            rl::LightingLayout layout = rl::LightingLayout::Auto);
 rl::Result<rl::CourseObject> loadObject(const QString& path, rl::Diagnostics& diagnostics);
 
 }  // namespace rasterlab

@@ -44,6 +44,14 @@ QString partFilter(SceneDocument::Part part) {
     return {};
 }
 
+// A layout's description as a menu label ("detected" is translated; the layouts' own
+// names, such as "UFRPE (N; V; d; hx; hy; C)", are file formats and stay as they are).
+QString layoutLabel(const char* description) {
+    const QString text = QString::fromUtf8(description);
+    return text.startsWith(QStringLiteral("detected")) ? MainWindow::tr("Detect from the file")
+                                                       : text;
+}
+
 QString displayName(const QString& source) {
     if (source.startsWith(QStringLiteral(":/")))
         return MainWindow::tr("%1 (built in)").arg(QFileInfo(source).fileName());
@@ -89,8 +97,8 @@ void MainWindow::createActions() {
     QAction* openLighting = file->addAction(
         tr("Open &Lighting..."), this, [this] { openPartDialog(SceneDocument::Part::Lighting); });
     openLighting->setShortcut(QKeySequence(tr("Ctrl+Shift+L")));
-    QAction* openCommands = file->addAction(tr("Open Command &File..."), this,
-                                            &MainWindow::openCommandFileDialog);
+    QAction* openCommands =
+        file->addAction(tr("Open Command &File..."), this, &MainWindow::openCommandFileDialog);
     openCommands->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
     openCommands->setObjectName(QStringLiteral("openCommandFileAction"));
     file->addAction(tr("&Default Scene"), this, [this] {
@@ -100,6 +108,33 @@ void MainWindow::createActions() {
             m_lastError.clear();
         documentChanged();
     });
+    // The layouts course files are read in: detected, or one chosen by hand.
+    QMenu* formats = file->addMenu(tr("Course File &Layouts"));
+    formats->setObjectName(QStringLiteral("layoutMenu"));
+    QMenu* cameraFormats = formats->addMenu(tr("&Camera"));
+    auto* cameraGroup = new QActionGroup(cameraFormats);
+    for (rl::CameraLayout layout : rl::kCameraLayouts) {
+        QAction* action =
+            cameraFormats->addAction(layoutLabel(rl::cameraLayoutDescription(layout)));
+        action->setCheckable(true);
+        action->setChecked(layout == m_document.cameraLayout());
+        action->setObjectName(QStringLiteral("cameraLayout_") +
+                              QString::fromUtf8(rl::cameraLayoutName(layout)));
+        cameraGroup->addAction(action);
+        connect(action, &QAction::triggered, this, [this, layout] { setCameraLayout(layout); });
+    }
+    QMenu* lightingFormats = formats->addMenu(tr("&Lighting"));
+    auto* lightingGroup = new QActionGroup(lightingFormats);
+    for (rl::LightingLayout layout : rl::kLightingLayouts) {
+        QAction* action =
+            lightingFormats->addAction(layoutLabel(rl::lightingLayoutDescription(layout)));
+        action->setCheckable(true);
+        action->setChecked(layout == m_document.lightingLayout());
+        action->setObjectName(QStringLiteral("lightingLayout_") +
+                              QString::fromUtf8(rl::lightingLayoutName(layout)));
+        lightingGroup->addAction(action);
+        connect(action, &QAction::triggered, this, [this, layout] { setLightingLayout(layout); });
+    }
     file->addSeparator();
     QAction* exportAction = file->addAction(tr("&Export PNG..."), this, &MainWindow::exportDialog);
     exportAction->setShortcut(QKeySequence(tr("Ctrl+E")));
@@ -170,6 +205,28 @@ void MainWindow::createDocks() {
 
 bool MainWindow::openPart(SceneDocument::Part part, const QString& path) {
     auto status = m_document.open(part, path);
+    if (!status) {
+        showError(QString::fromStdString(status.error().toString()));
+        return false;
+    }
+    m_lastError.clear();
+    documentChanged();
+    return true;
+}
+
+bool MainWindow::setCameraLayout(rl::CameraLayout layout) {
+    auto status = m_document.setCameraLayout(layout);
+    if (!status) {
+        showError(QString::fromStdString(status.error().toString()));
+        return false;
+    }
+    m_lastError.clear();
+    documentChanged();
+    return true;
+}
+
+bool MainWindow::setLightingLayout(rl::LightingLayout layout) {
+    auto status = m_document.setLightingLayout(layout);
     if (!status) {
         showError(QString::fromStdString(status.error().toString()));
         return false;
@@ -300,11 +357,11 @@ void MainWindow::refreshSceneSummary() {
                              .arg(scene.height)
                              .arg(scene.lights.size()));
     } else {
-        html += QStringLiteral("<p>%1: %2<br>%3: %4<br>%5: %6</p>")
-                    .arg(tr("Camera"), displayName(m_document.source(SceneDocument::Part::Camera)),
-                         tr("Lighting"),
-                         displayName(m_document.source(SceneDocument::Part::Lighting)), tr("Object"),
-                         displayName(m_document.source(SceneDocument::Part::Object)));
+        html +=
+            QStringLiteral("<p>%1: %2<br>%3: %4<br>%5: %6</p>")
+                .arg(tr("Camera"), displayName(m_document.source(SceneDocument::Part::Camera)),
+                     tr("Lighting"), displayName(m_document.source(SceneDocument::Part::Lighting)),
+                     tr("Object"), displayName(m_document.source(SceneDocument::Part::Object)));
         html += QStringLiteral("<p>%1</p>")
                     .arg(tr("%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading")
                              .arg(scene.vertexCount())
@@ -386,8 +443,8 @@ void MainWindow::openPartDialog(SceneDocument::Part part) {
 }
 
 void MainWindow::openCommandFileDialog() {
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open Command File"), QString(), tr("Command files (*.txt);;All files (*)"));
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Command File"), QString(),
+                                                      tr("Command files (*.txt);;All files (*)"));
     if (!path.isEmpty()) openCommandFile(path);
 }
 
@@ -396,8 +453,8 @@ void MainWindow::exportDialog() {
     QString name = QStringLiteral("rasterlab.png");
     if (m_frame.trace && m_document.showsCommandFile())
         name = QString::fromStdString(m_frame.trace->scene->name);
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export PNG"), name,
-                                                      tr("PNG images (*.png)"));
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export PNG"), name, tr("PNG images (*.png)"));
     if (!path.isEmpty()) exportImage(path);
 }
 

@@ -29,6 +29,10 @@ public:
     // Replaces one part of the scene from a file; returns false (and shows the error,
     // keeping the scene) when the file is bad.
     bool openPart(SceneDocument::Part part, const QString& path);
+    // Reads course cameras / lighting in a layout from now on (Auto: detected), re-reading
+    // the current file; false (the error shown, the scene kept) when it does not fit.
+    bool setCameraLayout(rl::CameraLayout layout);
+    bool setLightingLayout(rl::LightingLayout layout);
     // Shows a command file (seed 001); false (the error shown, the scene kept) when bad.
     bool openCommandFile(const QString& path);
     void setShading(rl::ShadingModel model);

@@ -11,6 +11,8 @@ namespace rasterlab {
 rl::Status SceneDocument::loadDefault() {
     SceneDocument fresh;
     fresh.m_settings = m_settings;
+    fresh.m_cameraLayout = m_cameraLayout;
+    fresh.m_lightingLayout = m_lightingLayout;
     for (CoursePart part : kCourseParts) {
         auto status = fresh.open(part, defaultScenePath(part));
         if (!status) return status;
@@ -62,7 +64,7 @@ rl::Status SceneDocument::open(Part part, const QString& path) {
     rl::Diagnostics diagnostics;
     switch (part) {
         case Part::Camera: {
-            auto camera = loadCamera(path, diagnostics);
+            auto camera = loadCamera(path, diagnostics, m_cameraLayout);
             if (!camera) return camera.error();
             // A camera without a basis (N or V zero or parallel, d, hx or hy zero) would fail
             // every render: refuse it here, so that the previous camera stays.
@@ -75,7 +77,7 @@ rl::Status SceneDocument::open(Part part, const QString& path) {
             break;
         }
         case Part::Lighting: {
-            auto lighting = loadLighting(path, diagnostics);
+            auto lighting = loadLighting(path, diagnostics, m_lightingLayout);
             if (!lighting) return lighting.error();
             m_parts.lighting = lighting.value();
             break;
@@ -92,6 +94,22 @@ rl::Status SceneDocument::open(Part part, const QString& path) {
     m_commandFile.reset();  // the course scene is shown again
     m_commandFilePath.clear();
     return rl::success();
+}
+
+rl::Status SceneDocument::setCameraLayout(rl::CameraLayout layout) {
+    m_cameraLayout = layout;
+    const QString path = source(Part::Camera);
+    if (m_commandFile || path.isEmpty() || path.startsWith(QStringLiteral(":/")))
+        return rl::success();
+    return open(Part::Camera, path);
+}
+
+rl::Status SceneDocument::setLightingLayout(rl::LightingLayout layout) {
+    m_lightingLayout = layout;
+    const QString path = source(Part::Lighting);
+    if (m_commandFile || path.isEmpty() || path.startsWith(QStringLiteral(":/")))
+        return rl::success();
+    return open(Part::Lighting, path);
 }
 
 rl::Diagnostics SceneDocument::diagnostics() const {

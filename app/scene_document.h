@@ -42,6 +42,14 @@ public:
     QString source(Part part) const { return m_sources[index(part)]; }
     rl::Diagnostics diagnostics() const;  // of all three parts in order, or of the command file
 
+    // The layouts camera and lighting files are read in (Auto: detected). Setting one
+    // re-reads the current file of that part in it; on error the layout is set and the
+    // previous part stays.
+    rl::CameraLayout cameraLayout() const { return m_cameraLayout; }
+    rl::LightingLayout lightingLayout() const { return m_lightingLayout; }
+    rl::Status setCameraLayout(rl::CameraLayout layout);
+    rl::Status setLightingLayout(rl::LightingLayout layout);
+
     rl::CourseSceneSettings settings() const { return m_settings; }
     void setShading(rl::ShadingModel model) { m_settings.shading = model; }
     void setSize(int width, int height);
@@ -56,6 +64,8 @@ private:
     QString m_sources[3];
     rl::Diagnostics m_partDiagnostics[3];
     rl::CourseSceneSettings m_settings;
+    rl::CameraLayout m_cameraLayout = rl::CameraLayout::Auto;
+    rl::LightingLayout m_lightingLayout = rl::LightingLayout::Auto;
     std::optional<rl::Hw2File> m_commandFile;
     QString m_commandFilePath;
     rl::Diagnostics m_commandFileDiagnostics;

@@ -10,14 +10,16 @@ PatchPoint mix(const PatchPoint& a, const PatchPoint& b, double t) {
 }
 
 // a + (b - a) s + (c - a) t, for the triangular steps (weights u, v, w on a, b, c).
-PatchPoint blend(const PatchPoint& a, const PatchPoint& b, const PatchPoint& c, double u,
-                 double v, double w) {
+PatchPoint blend(const PatchPoint& a, const PatchPoint& b, const PatchPoint& c, double u, double v,
+                 double w) {
     const auto fu = static_cast<float>(u), fv = static_cast<float>(v), fw = static_cast<float>(w);
     return {u * a.p + v * b.p + w * c.p, fu * a.colour + fv * b.colour + fw * c.colour,
             fu * a.st + fv * b.st + fw * c.st};
 }
 
-dvec3 position(const PatchPoint& p) { return p.p.w != 0.0 ? dvec3(p.p) / p.p.w : dvec3(p.p); }
+dvec3 position(const PatchPoint& p) {
+    return p.p.w != 0.0 ? dvec3(p.p) / p.p.w : dvec3(p.p);
+}
 
 vec3 unit(const dvec3& n) {
     const double length = glm::length(n);
@@ -33,7 +35,9 @@ PatchVertex evaluateRectBezier(const std::array<PatchPoint, 16>& control, double
     while (size > 2) {
         for (int row = 0; row + 1 < size; ++row)
             for (int col = 0; col + 1 < size; ++col) {
-                const auto at = [&](int r, int c) { return q[static_cast<std::size_t>(r * 4 + c)]; };
+                const auto at = [&](int r, int c) {
+                    return q[static_cast<std::size_t>(r * 4 + c)];
+                };
                 const PatchPoint bottom = mix(at(row, col), at(row, col + 1), s);
                 const PatchPoint top = mix(at(row + 1, col), at(row + 1, col + 1), s);
                 q[static_cast<std::size_t>(row * 4 + col)] = mix(bottom, top, t);
@@ -98,8 +102,8 @@ PatchMesh subdivideTriBezier(const std::array<PatchPoint, 10>& control, int subd
     for (int j = 0; j <= n; ++j) {
         rowStart.push_back(static_cast<std::uint32_t>(mesh.vertices.size()));
         for (int i = 0; i + j <= n; ++i)
-            mesh.vertices.push_back(evaluateTriBezier(control, double(n - i - j) / n,
-                                                      double(i) / n, double(j) / n));
+            mesh.vertices.push_back(
+                evaluateTriBezier(control, double(n - i - j) / n, double(i) / n, double(j) / n));
     }
     const auto index = [&](int i, int j) {
         return rowStart[static_cast<std::size_t>(j)] + static_cast<std::uint32_t>(i);
@@ -111,6 +115,72 @@ PatchMesh subdivideTriBezier(const std::array<PatchPoint, 10>& control, int subd
                 mesh.triangles.push_back({index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)});
         }
     return mesh;
+}
+
+std::vector<double> bernsteinWeights(int degree, double t) {
+    // Raising the degree one step at a time: B(k, d) = (1 - t) B(k, d - 1) + t B(k - 1, d - 1).
+    std::vector<double> weights(static_cast<std::size_t>(degree) + 1, 0.0);
+    weights[0] = 1.0;
+    for (int d = 1; d <= degree; ++d)
+        for (int k = d; k >= 0; --k) {
+            const auto at = static_cast<std::size_t>(k);
+            weights[at] = (1.0 - t) * weights[at] + (k > 0 ? t * weights[at - 1] : 0.0);
+        }
+    return weights;
+}
+
+namespace {
+
+// The point at t of the Bezier curve through `points` (modified in place).
+dvec3 deCasteljau(std::vector<dvec3>& points, double t) {
+    for (std::size_t size = points.size(); size > 1; --size)
+        for (std::size_t k = 0; k + 1 < size; ++k)
+            points[k] = glm::mix(points[k], points[k + 1], t);
+    return points.front();
+}
+
+}  // namespace
+
+dvec3 evaluateBezierSurface(std::span<const dvec3> control, int m, int n, double u, double v) {
+    const auto columns = static_cast<std::size_t>(n) + 1;
+    std::vector<dvec3> column(static_cast<std::size_t>(m) + 1);
+    std::vector<dvec3> row(columns);
+    for (std::size_t i = 0; i < column.size(); ++i) {
+        row.assign(control.begin() + static_cast<std::ptrdiff_t>(i * columns),
+                   control.begin() + static_cast<std::ptrdiff_t>((i + 1) * columns));
+        column[i] = deCasteljau(row, v);
+    }
+    return deCasteljau(column, u);
+}
+
+std::vector<dvec3> evaluateBezierSurfaceGrid(std::span<const dvec3> control, int m, int n,
+                                             int evaluations) {
+    const auto count = static_cast<std::size_t>(evaluations);
+    const auto rows = static_cast<std::size_t>(m) + 1;
+    const auto columns = static_cast<std::size_t>(n) + 1;
+    const auto parameter = [&](std::size_t k) {
+        return static_cast<double>(k) / static_cast<double>(count - 1);
+    };
+    // Each row's curve at every v first, then each grid point from the rows' curves.
+    std::vector<dvec3> rowCurves(rows * count, dvec3(0.0));  // [i * count + b]
+    for (std::size_t b = 0; b < count; ++b) {
+        const std::vector<double> weights = bernsteinWeights(n, parameter(b));
+        for (std::size_t i = 0; i < rows; ++i) {
+            dvec3 sum(0.0);
+            for (std::size_t j = 0; j < columns; ++j) sum += weights[j] * control[i * columns + j];
+            rowCurves[i * count + b] = sum;
+        }
+    }
+    std::vector<dvec3> grid(count * count, dvec3(0.0));
+    for (std::size_t a = 0; a < count; ++a) {
+        const std::vector<double> weights = bernsteinWeights(m, parameter(a));
+        for (std::size_t b = 0; b < count; ++b) {
+            dvec3 sum(0.0);
+            for (std::size_t i = 0; i < rows; ++i) sum += weights[i] * rowCurves[i * count + b];
+            grid[a * count + b] = sum;
+        }
+    }
+    return grid;
 }
 
 }  // namespace rl

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "math.h"
@@ -42,5 +43,22 @@ PatchMesh subdivideRectBezier(const std::array<PatchPoint, 16>& control, int sub
 PatchVertex evaluateTriBezier(const std::array<PatchPoint, 10>& control, double u, double v,
                               double w);
 PatchMesh subdivideTriBezier(const std::array<PatchPoint, 10>& control, int subdivisions);
+
+// Tensor-product Bezier surfaces of any degrees m x n (the course's superficie.byu). The
+// (m + 1) x (n + 1) control points come row by row: P(i, j) = control[i * (n + 1) + j].
+// The point at (u, v) in [0, 1]^2 is sum_i sum_j B(i, m)(u) B(j, n)(v) P(i, j): u runs across
+// the rows (i), v along a row (j); the corners (0, 0), (0, 1), (1, 0), (1, 1) are P(0, 0),
+// P(0, n), P(m, 0), P(m, n).
+
+// The degree + 1 Bernstein weights B(k, degree)(t), by de Casteljau's recurrence (stable).
+std::vector<double> bernsteinWeights(int degree, double t);
+// The point at (u, v) by de Casteljau's algorithm: along each row in v, then down the column
+// of the results in u.
+dvec3 evaluateBezierSurface(std::span<const dvec3> control, int m, int n, double u, double v);
+// The surface on an evaluations x evaluations grid (evaluations >= 2), u = a / (evaluations
+// - 1) and v = b / (evaluations - 1), stored at a * evaluations + b; the Bernstein weights of
+// each parameter are computed once.
+std::vector<dvec3> evaluateBezierSurfaceGrid(std::span<const dvec3> control, int m, int n,
+                                             int evaluations);
 
 }  // namespace rl

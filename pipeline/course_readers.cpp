@@ -1,9 +1,13 @@
 #include "course_readers.h"
 
 #include <algorithm>
-
 #include <cctype>
 #include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+#include "bezier.h"
 #include "format.h"
 
 namespace rl {
@@ -64,7 +68,9 @@ bool isNotFinite(std::string_view token) {
 std::string whyNotNumber(std::string_view token) {
     std::string s = "found " + quoted(token);
     const bool hasDigit = token.find_first_of("0123456789") != std::string_view::npos;
-    if (token.find(',') != std::string_view::npos && hasDigit) {
+    if (token.size() > 1 && token.back() == ',' && parseReal(token.substr(0, token.size() - 1))) {
+        s += " (separate the values with spaces, not commas)";
+    } else if (token.find(',') != std::string_view::npos && hasDigit) {
         s += " (the decimal separator is '.')";
     } else if (isOutOfRange(token)) {
         s += ", which is out of range";
@@ -81,9 +87,11 @@ bool startsLikeNumber(std::string_view token) {
 
 }  // namespace
 
-Result<std::vector<FieldValue>> readFieldLines(LineScanner& scanner,
-                                               std::span<const FieldSpec> fields,
-                                               std::string_view what, Diagnostics& diagnostics) {
+namespace {
+
+// The fields of readFieldLines, without the check for lines after the last one.
+Result<std::vector<FieldValue>> readFields(LineScanner& scanner, std::span<const FieldSpec> fields,
+                                           Diagnostics& diagnostics) {
     std::vector<FieldValue> result;
     result.reserve(fields.size());
     TextLine line;
@@ -140,13 +148,28 @@ Result<std::vector<FieldValue>> readFieldLines(LineScanner& scanner,
         }
         result.push_back(std::move(value));
     }
-    if (scanner.next(line)) {
-        const int remaining = 1 + scanner.countRemainingLines();
-        diagnostics.warn(scanner.at(line.number, 1),
-                         "ignored " + plural(remaining, "line", "lines") + " after the " +
-                             std::string(what) + "'s " +
-                             plural(static_cast<long long>(fields.size()), "line", "lines"));
-    }
+    return result;
+}
+
+// A warning for the lines after the `lineCount` lines of a layout, if any.
+void warnTrailingLines(LineScanner& scanner, std::string_view what, long long lineCount,
+                       Diagnostics& diagnostics) {
+    TextLine line;
+    if (!scanner.next(line)) return;
+    const int remaining = 1 + scanner.countRemainingLines();
+    diagnostics.warn(scanner.at(line.number, 1), "ignored " + plural(remaining, "line", "lines") +
+                                                     " after the " + std::string(what) + "'s " +
+                                                     plural(lineCount, "line", "lines"));
+}
+
+}  // namespace
+
+Result<std::vector<FieldValue>> readFieldLines(LineScanner& scanner,
+                                               std::span<const FieldSpec> fields,
+                                               std::string_view what, Diagnostics& diagnostics) {
+    auto result = readFields(scanner, fields, diagnostics);
+    if (result)
+        warnTrailingLines(scanner, what, static_cast<long long>(fields.size()), diagnostics);
     return result;
 }
 
@@ -163,87 +186,188 @@ vec3 rgbOf(const FieldValue& f) {
 }
 
 constexpr unsigned kOne = 1u << 1;
+constexpr unsigned kTwo = 1u << 2;
 constexpr unsigned kThree = 1u << 3;
+
+// The line layouts, shared by their readers and by the detection.
+constexpr FieldSpec kUfpeCamera[] = {
+    {"C", "the camera position", kThree},
+    {"N", "the view direction", kThree},
+    {"V", "the up vector", kThree},
+    {"d hx hy", "the projection distance and half-sizes", kThree},
+};
+constexpr FieldSpec kUfrpeCamera6[] = {
+    {"N", "the view direction", kThree},
+    {"V", "the up vector", kThree},
+    {"d", "the projection distance", kOne},
+    {"hx", "the horizontal half-size of the window", kOne},
+    {"hy", "the vertical half-size of the window", kOne},
+    {"C", "the camera position", kThree},
+};
+constexpr FieldSpec kUfrpeCamera5[] = {
+    {"C", "the camera position", kThree},   {"N", "the view direction", kThree},
+    {"V", "the up vector", kThree},         {"hx hy", "the half-sizes of the window", kTwo},
+    {"d", "the projection distance", kOne},
+};
+constexpr FieldSpec kUfpeLighting[] = {
+    {"Pl", "the light position", kThree},
+    {"ka", "the ambient coefficient", kOne},
+    {"Ia", "the ambient light colour", kThree},
+    {"kd", "the diffuse coefficient", kOne | kThree},
+    {"Od", "the diffuse colour of the object", kThree},
+    {"ks", "the specular coefficient", kOne},
+    {"Il", "the light colour", kThree},
+    {"n", "the specular exponent", kOne},
+};
+// The multi-light file's first seven lines; then L pairs of kUfpeMultiLight.
+constexpr FieldSpec kUfpeMultiHead[] = {
+    {"ka", "the ambient coefficient", kOne},
+    {"Ia", "the ambient light colour", kThree},
+    {"kd", "the diffuse coefficient", kOne | kThree},
+    {"Od", "the diffuse colour of the object", kThree},
+    {"ks", "the specular coefficient", kOne},
+    {"n", "the specular exponent", kOne},
+    {"L", "the number of lights", kOne},
+};
+constexpr FieldSpec kUfpeMultiLight[] = {
+    {"Pl", "the light position", kThree},
+    {"Il", "the light colour", kThree},
+};
+constexpr FieldSpec kUfrpeLighting[] = {
+    {"Iamb", "the ambient light colour", kThree},
+    {"Ka", "the ambient coefficient", kOne},
+    {"Il", "the light colour", kThree},
+    {"Pl", "the light position", kThree},
+    {"Kd", "the diffuse coefficient of each channel", kThree},
+    {"Od", "the diffuse colour of the object", kThree},
+    {"Ks", "the specular coefficient", kOne},
+    {"n", "the specular exponent", kOne},
+};
+
+// One of the numbers of a field: d of "d hx hy" is {field, 0}.
+struct Scalar {
+    const FieldValue* field;
+    std::size_t index;
+};
+
+CourseCamera makeCamera(const FieldValue& c, const FieldValue& n, const FieldValue& v, Scalar d,
+                        Scalar hx, Scalar hy) {
+    CourseCamera camera;
+    camera.c = vec3Of(c);
+    camera.n = vec3Of(n);
+    camera.v = vec3Of(v);
+    camera.d = d.field->values[d.index];
+    camera.hx = hx.field->values[hx.index];
+    camera.hy = hy.field->values[hy.index];
+    camera.where = {c.line,
+                    n.line,
+                    v.line,
+                    d.field->where[d.index],
+                    hx.field->where[hx.index],
+                    hy.field->where[hy.index]};
+    return camera;
+}
+
+// The fields of a lighting file, whatever its layout, and the names the file gives them.
+struct LightingFields {
+    const FieldValue* ka = nullptr;
+    const FieldValue* ia = nullptr;
+    const FieldValue* kd = nullptr;
+    const FieldValue* od = nullptr;
+    const FieldValue* ks = nullptr;
+    const FieldValue* n = nullptr;
+    std::vector<std::pair<const FieldValue*, const FieldValue*>> lights;  // Pl, Il
+};
+struct LightingNames {
+    const char* ka;
+    const char* ia;
+    const char* kd;
+    const char* od;
+    const char* ks;
+    const char* il;
+    const char* n;
+};
+constexpr LightingNames kUfpeNames = {"ka", "Ia", "kd", "Od", "ks", "Il", "n"};
+constexpr LightingNames kUfrpeNames = {"Ka", "Iamb", "Kd", "Od", "Ks", "Il", "n"};
+constexpr LightingNames kKeyValueNames = {"Ka", "Iamb", "Kd", "Od", "Ks", "Il", "eta"};
+
+// Values outside the ranges the course gives (seed 004) still render, with a warning.
+void checkRange(const FieldValue& field, const std::string& name, const std::string& suffix,
+                double low, double high, const char* range, Diagnostics& diagnostics) {
+    for (std::size_t i = 0; i < field.values.size(); ++i) {
+        const double v = field.values[i];
+        if (v >= low && v <= high) continue;
+        std::string label = name;
+        if (field.values.size() == 3) label += std::string(".") + "rgb"[i];
+        diagnostics.warn(field.where[i], label + suffix + " = " + formatNumber(v) + " is outside " +
+                                             range + ", the range the course gives for it");
+    }
+}
+
+// The lighting, with the course's range warnings, in the order ka, Ia, kd, Od, ks, Il, n.
+CourseLighting makeLighting(const LightingFields& f, const LightingNames& names,
+                            Diagnostics& diagnostics) {
+    CourseLighting lighting;
+    const bool numbered = f.lights.size() > 1;
+    for (const auto& [pl, il] : f.lights) {
+        Light light;
+        light.pWorld = dvec4(vec3Of(*pl), 1.0);
+        light.intensity = rgbOf(*il);
+        light.where = pl->line;
+        lighting.lights.push_back(light);
+    }
+    lighting.material.ka = static_cast<float>(f.ka->values[0]);
+    lighting.ambientIntensity = rgbOf(*f.ia);
+    lighting.material.kd = rgbOf(*f.kd);
+    lighting.material.od = rgbOf(*f.od);
+    lighting.material.ks = static_cast<float>(f.ks->values[0]);
+    lighting.material.shininess = static_cast<float>(f.n->values[0]);
+
+    checkRange(*f.ka, names.ka, "", 0.0, 1.0, "[0, 1]", diagnostics);
+    checkRange(*f.ia, names.ia, "", 0.0, 255.0, "[0, 255]", diagnostics);
+    checkRange(*f.kd, names.kd, "", 0.0, 1.0, "[0, 1]", diagnostics);
+    checkRange(*f.od, names.od, "", 0.0, 1.0, "[0, 1]", diagnostics);
+    checkRange(*f.ks, names.ks, "", 0.0, 1.0, "[0, 1]", diagnostics);
+    for (std::size_t k = 0; k < f.lights.size(); ++k)
+        checkRange(*f.lights[k].second, names.il,
+                   numbered ? " of light " + std::to_string(k + 1) : std::string(), 0.0, 255.0,
+                   "[0, 255]", diagnostics);
+    const double n = f.n->values[0];
+    if (!(n > 0.0))
+        diagnostics.warn(f.n->where[0],
+                         std::string(names.n) + " = " + formatNumber(n) +
+                             " is not positive: (R.V)^n then makes no highlight (it is 1 "
+                             "everywhere for n = 0 and grows without bound where R.V nears 0 "
+                             "for n < 0, where the specular term is left out)");
+    return lighting;
+}
 
 }  // namespace
 
 Result<CourseCamera> readCourseCamera(std::string_view text, const std::string& fileName,
                                       Diagnostics& diagnostics) {
-    static constexpr FieldSpec kUfpeCamera[] = {
-        {"C", "the camera position", kThree},
-        {"N", "the view direction", kThree},
-        {"V", "the up vector", kThree},
-        {"d hx hy", "the projection distance and half-sizes", kThree},
-    };
     LineScanner scanner(text, fileName);
     auto fields = readFieldLines(scanner, kUfpeCamera, "camera", diagnostics);
     if (!fields) return fields.error();
     const auto& f = fields.value();
-    CourseCamera camera;
-    camera.c = vec3Of(f[0]);
-    camera.n = vec3Of(f[1]);
-    camera.v = vec3Of(f[2]);
-    camera.d = f[3].values[0];
-    camera.hx = f[3].values[1];
-    camera.hy = f[3].values[2];
-    camera.where = {f[0].line, f[1].line, f[2].line, f[3].where[0], f[3].where[1], f[3].where[2]};
-    return camera;
+    return makeCamera(f[0], f[1], f[2], {&f[3], 0}, {&f[3], 1}, {&f[3], 2});
 }
 
 Result<CourseLighting> readCourseLighting(std::string_view text, const std::string& fileName,
                                           Diagnostics& diagnostics) {
-    static constexpr FieldSpec kUfpeLighting[] = {
-        {"Pl", "the light position", kThree},
-        {"ka", "the ambient coefficient", kOne},
-        {"Ia", "the ambient light colour", kThree},
-        {"kd", "the diffuse coefficient", kOne | kThree},
-        {"Od", "the diffuse colour of the object", kThree},
-        {"ks", "the specular coefficient", kOne},
-        {"Il", "the light colour", kThree},
-        {"n", "the specular exponent", kOne},
-    };
     LineScanner scanner(text, fileName);
     auto fields = readFieldLines(scanner, kUfpeLighting, "lighting", diagnostics);
     if (!fields) return fields.error();
     const auto& f = fields.value();
-    CourseLighting lighting;
-    Light light;
-    light.pWorld = dvec4(vec3Of(f[0]), 1.0);
-    light.intensity = rgbOf(f[6]);
-    light.where = f[0].line;
-    lighting.lights.push_back(light);
-    lighting.material.ka = static_cast<float>(f[1].values[0]);
-    lighting.ambientIntensity = rgbOf(f[2]);
-    lighting.material.kd = rgbOf(f[3]);
-    lighting.material.od = rgbOf(f[4]);
-    lighting.material.ks = static_cast<float>(f[5].values[0]);
-    lighting.material.shininess = static_cast<float>(f[7].values[0]);
-
-    // Values outside the ranges the course gives (seed 004) still render, with a warning.
-    const auto check = [&](const FieldValue& field, const char* name, double low, double high,
-                           const char* range) {
-        for (std::size_t i = 0; i < field.values.size(); ++i) {
-            const double v = field.values[i];
-            if (v >= low && v <= high) continue;
-            std::string label = name;
-            if (field.values.size() == 3) label += std::string(".") + "rgb"[i];
-            diagnostics.warn(field.where[i], label + " = " + formatNumber(v) + " is outside " +
-                                                 range + ", the range the course gives for it");
-        }
-    };
-    check(f[1], "ka", 0.0, 1.0, "[0, 1]");
-    check(f[2], "Ia", 0.0, 255.0, "[0, 255]");
-    check(f[3], "kd", 0.0, 1.0, "[0, 1]");
-    check(f[4], "Od", 0.0, 1.0, "[0, 1]");
-    check(f[5], "ks", 0.0, 1.0, "[0, 1]");
-    check(f[6], "Il", 0.0, 255.0, "[0, 255]");
-    if (!(f[7].values[0] > 0.0))
-        diagnostics.warn(f[7].where[0],
-                         "n = " + formatNumber(f[7].values[0]) +
-                             " is not positive: (R.V)^n then makes no highlight (it is 1 "
-                             "everywhere for n = 0 and grows without bound where R.V nears 0 "
-                             "for n < 0, where the specular term is left out)");
-    return lighting;
+    LightingFields parts;
+    parts.ka = &f[1];
+    parts.ia = &f[2];
+    parts.kd = &f[3];
+    parts.od = &f[4];
+    parts.ks = &f[5];
+    parts.n = &f[7];
+    parts.lights = {{&f[0], &f[6]}};
+    return makeLighting(parts, kUfpeNames, diagnostics);
 }
 
 namespace {
@@ -427,6 +551,1084 @@ Result<Mesh> readByuMesh(std::string_view text, const std::string& fileName,
                                           " not used by any triangle");
     if (*triangleCount == 0) diagnostics.warn(mesh.source, "the object has no triangles");
     return mesh;
+}
+
+// ---------------------------------------------------------------------------------------
+// Course file variants: layout names, detection, key = value files
+
+const char* cameraLayoutName(CameraLayout layout) {
+    switch (layout) {
+        case CameraLayout::Auto:
+            return "auto";
+        case CameraLayout::Ufpe:
+            return "ufpe";
+        case CameraLayout::Ufrpe6:
+            return "ufrpe6";
+        case CameraLayout::Ufrpe5:
+            return "ufrpe5";
+        case CameraLayout::KeyValue:
+            return "keyvalue";
+    }
+    return "auto";
+}
+
+const char* lightingLayoutName(LightingLayout layout) {
+    switch (layout) {
+        case LightingLayout::Auto:
+            return "auto";
+        case LightingLayout::Ufpe:
+            return "ufpe";
+        case LightingLayout::UfpeMulti:
+            return "multi";
+        case LightingLayout::Ufrpe:
+            return "ufrpe";
+        case LightingLayout::KeyValue:
+            return "keyvalue";
+    }
+    return "auto";
+}
+
+std::optional<CameraLayout> cameraLayoutFromName(std::string_view name) {
+    for (CameraLayout layout : kCameraLayouts)
+        if (name == cameraLayoutName(layout)) return layout;
+    return std::nullopt;
+}
+
+std::optional<LightingLayout> lightingLayoutFromName(std::string_view name) {
+    for (LightingLayout layout : kLightingLayouts)
+        if (name == lightingLayoutName(layout)) return layout;
+    return std::nullopt;
+}
+
+const char* cameraLayoutDescription(CameraLayout layout) {
+    switch (layout) {
+        case CameraLayout::Auto:
+            return "detected from the file";
+        case CameraLayout::Ufpe:
+            return "UFPE (C; N; V; d hx hy)";
+        case CameraLayout::Ufrpe6:
+            return "UFRPE (N; V; d; hx; hy; C)";
+        case CameraLayout::Ufrpe5:
+            return "UFRPE (C; N; V; hx hy; d)";
+        case CameraLayout::KeyValue:
+            return "key = value";
+    }
+    return "";
+}
+
+const char* lightingLayoutDescription(LightingLayout layout) {
+    switch (layout) {
+        case LightingLayout::Auto:
+            return "detected from the file";
+        case LightingLayout::Ufpe:
+            return "UFPE (Pl; ka; Ia; kd; Od; ks; Il; n)";
+        case LightingLayout::UfpeMulti:
+            return "UFPE multi-light (ka; Ia; kd; Od; ks; n; L; L times Pl; Il)";
+        case LightingLayout::Ufrpe:
+            return "UFRPE (Iamb; Ka; Il; Pl; Kd; Od; Ks; n)";
+        case LightingLayout::KeyValue:
+            return "key = value";
+    }
+    return "";
+}
+
+namespace {
+
+// What the notes call each flavour.
+std::string cameraFlavour(CameraLayout layout) {
+    switch (layout) {
+        case CameraLayout::Ufpe:
+            return "a UFPE camera, C; N; V; d hx hy";
+        case CameraLayout::Ufrpe6:
+            return "a UFRPE camera, N; V; d; hx; hy; C";
+        case CameraLayout::Ufrpe5:
+            return "a UFRPE camera, C; N; V; hx hy; d";
+        case CameraLayout::KeyValue:
+            return "a key = value camera";
+        case CameraLayout::Auto:
+            break;
+    }
+    return "a camera";
+}
+
+std::string lightingFlavour(LightingLayout layout) {
+    switch (layout) {
+        case LightingLayout::Ufpe:
+            return "a UFPE lighting file, Pl; ka; Ia; kd; Od; ks; Il; n";
+        case LightingLayout::UfpeMulti:
+            return "a UFPE multi-light lighting file, ka; Ia; kd; Od; ks; n; L; L times Pl; Il";
+        case LightingLayout::Ufrpe:
+            return "a UFRPE lighting file, Iamb; Ka; Il; Pl; Kd; Od; Ks; n";
+        case LightingLayout::KeyValue:
+            return "a key = value lighting file";
+        case LightingLayout::Auto:
+            break;
+    }
+    return "a lighting file";
+}
+
+// "a, b and c".
+std::string listText(const std::vector<std::string>& items) {
+    std::string s;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (i > 0) s += i + 1 == items.size() ? " and " : ", ";
+        s += items[i];
+    }
+    return s;
+}
+
+// The shape detection looks at: for each non-blank line, how many numbers it starts with.
+struct FileShape {
+    std::vector<int> numbers;  // leading numeric tokens of each non-blank line
+    std::vector<int> lines;    // the line number of each non-blank line
+    bool hasEquals = false;    // some line contains '='
+};
+
+FileShape shapeOf(std::string_view text) {
+    FileShape shape;
+    LineScanner scanner(text, std::string());
+    TextLine line;
+    while (scanner.next(line)) {
+        int count = 0;
+        while (static_cast<std::size_t>(count) < line.tokens.size() &&
+               parseReal(line.tokens[static_cast<std::size_t>(count)].text))
+            ++count;
+        shape.numbers.push_back(count);
+        shape.lines.push_back(line.number);
+        for (const Token& token : line.tokens)
+            if (token.text.find('=') != std::string_view::npos) shape.hasEquals = true;
+    }
+    return shape;
+}
+
+// "3, 3, 1" (at most 24 counts, then "...").
+std::string countsText(const std::vector<int>& numbers) {
+    constexpr std::size_t kShown = 24;
+    std::string s;
+    for (std::size_t i = 0; i < numbers.size() && i < kShown; ++i) {
+        if (i > 0) s += ", ";
+        s += std::to_string(numbers[i]);
+    }
+    if (numbers.size() > kShown) s += ", ...";
+    return s;
+}
+
+// "the 4 lines have 3, 3, 3, 3 numbers", "the 1 line has 1 number".
+std::string shapeText(const FileShape& shape) {
+    const std::size_t n = shape.numbers.size();
+    if (n == 1) return "the 1 line has " + plural(shape.numbers[0], "number", "numbers");
+    return "the " + std::to_string(n) + " lines have " + countsText(shape.numbers) + " numbers";
+}
+
+// One candidate layout for detection: the counts each of its lines accepts.
+struct Profile {
+    int layout = 0;
+    std::vector<const FieldSpec*> fields;
+};
+
+bool accepts(const FieldSpec& field, int count) {
+    return count < 32 && (field.counts & (1u << count)) != 0;
+}
+
+// How far a file is from a layout: lines with other counts, plus lines missing or extra.
+struct Distance {
+    long long lines = 0;
+    std::string why;  // for a distance of 1: which line
+};
+
+Distance distanceTo(const Profile& profile, const FileShape& shape) {
+    Distance distance;
+    const std::size_t m = profile.fields.size();
+    const std::size_t n = shape.numbers.size();
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < std::min(m, n); ++i) {
+        if (accepts(*profile.fields[i], shape.numbers[i])) continue;
+        if (distance.lines++ == 0) differing = i;
+    }
+    distance.lines += static_cast<long long>(m > n ? m - n : n - m);
+    if (distance.lines != 1) return distance;
+    if (m == n) {
+        const FieldSpec& field = *profile.fields[differing];
+        distance.why = "line " + std::to_string(shape.lines[differing]) + " has " +
+                       plural(shape.numbers[differing], "number", "numbers") + " where " +
+                       std::string(field.name) + " needs " + countText(field.counts);
+    } else if (m > n) {
+        distance.why =
+            "its last line, " + std::string(profile.fields[m - 1]->name) + ", is missing";
+    } else {
+        distance.why = "line " + std::to_string(shape.lines[n - 1]) + " is one line more";
+    }
+    return distance;
+}
+
+// The detection's verdict: a layout (as an int) and why, or none.
+struct Detection {
+    int layout = -1;
+    std::string why;
+    std::string ambiguity;  // when several layouts are one line away: their names
+};
+
+// Steps 2 and 3 of the rule in course_readers.h, over the candidate profiles (a layout may
+// have several, one per length). `describe` names a layout in messages.
+Detection chooseLayout(const std::vector<Profile>& profiles, const FileShape& shape,
+                       const char* (*describe)(int)) {
+    std::vector<std::pair<int, Distance>> best;  // the nearest profile of each layout
+    for (const Profile& profile : profiles) {
+        Distance d = distanceTo(profile, shape);
+        auto it = std::find_if(best.begin(), best.end(),
+                               [&](const auto& b) { return b.first == profile.layout; });
+        if (it == best.end())
+            best.emplace_back(profile.layout, std::move(d));
+        else if (d.lines < it->second.lines)
+            it->second = std::move(d);
+    }
+    Detection detection;
+    const std::string shapeWhy = "no line contains '=' and " + shapeText(shape);
+    for (long long wanted : {0LL, 1LL}) {
+        std::vector<const std::pair<int, Distance>*> at;
+        for (const auto& b : best)
+            if (b.second.lines == wanted) at.push_back(&b);
+        if (at.size() == 1) {
+            detection.layout = at[0]->first;
+            detection.why = wanted == 0 ? shapeWhy + ", as in that layout"
+                                        : shapeWhy + ": no layout fits exactly, and this one is " +
+                                              "one line away (" + at[0]->second.why + ")";
+            return detection;
+        }
+        if (at.size() > 1) {
+            std::vector<std::string> names;
+            for (const auto* b : at) names.emplace_back(describe(b->first));
+            detection.ambiguity = "one line away from " + listText(names);
+            return detection;
+        }
+    }
+    return detection;
+}
+
+const char* describeCamera(int layout) {
+    return cameraLayoutDescription(static_cast<CameraLayout>(layout));
+}
+const char* describeLighting(int layout) {
+    return lightingLayoutDescription(static_cast<LightingLayout>(layout));
+}
+
+Profile profileOf(int layout, std::span<const FieldSpec> fields) {
+    Profile profile{layout, {}};
+    for (const FieldSpec& field : fields) profile.fields.push_back(&field);
+    return profile;
+}
+
+std::vector<Profile> cameraProfiles() {
+    return {profileOf(static_cast<int>(CameraLayout::Ufpe), kUfpeCamera),
+            profileOf(static_cast<int>(CameraLayout::Ufrpe6), kUfrpeCamera6),
+            profileOf(static_cast<int>(CameraLayout::Ufrpe5), kUfrpeCamera5)};
+}
+
+// The multi-light layout holds 7 + 2 L lines (L >= 1): the lengths near the file's are tried.
+std::vector<Profile> lightingProfiles(std::size_t fileLines) {
+    std::vector<Profile> profiles = {
+        profileOf(static_cast<int>(LightingLayout::Ufpe), kUfpeLighting),
+        profileOf(static_cast<int>(LightingLayout::Ufrpe), kUfrpeLighting)};
+    const std::size_t head = std::size(kUfpeMultiHead);
+    std::vector<std::size_t> lengths = {head + 2};
+    for (std::size_t length : {fileLines - 1, fileLines, fileLines + 1})
+        if (fileLines >= 1 && length > head + 2 && (length - head) % 2 == 0)
+            lengths.push_back(length);
+    for (std::size_t length : lengths) {
+        Profile profile = profileOf(static_cast<int>(LightingLayout::UfpeMulti), kUfpeMultiHead);
+        for (std::size_t k = head; k < length; ++k)
+            profile.fields.push_back(&kUfpeMultiLight[(k - head) % 2]);
+        profiles.push_back(std::move(profile));
+    }
+    return profiles;
+}
+
+// Where the general detection error points: the first non-blank line, or the end of input.
+SourceLocation startOf(std::string_view text, const std::string& fileName) {
+    LineScanner scanner(text, fileName);
+    TextLine line;
+    if (scanner.next(line)) return scanner.at(line.number, 1);
+    return scanner.endOfInput();
+}
+
+// Runs the detection rule; on failure, the error naming the layouts tried.
+template <typename Layout>
+Result<std::pair<Layout, std::string>> detectLayout(std::string_view text,
+                                                    const std::string& fileName,
+                                                    const std::vector<Profile>& profiles,
+                                                    const char* (*describe)(int),
+                                                    const std::string& layoutsTried) {
+    const FileShape shape = shapeOf(text);
+    if (shape.hasEquals) return std::pair{Layout::KeyValue, std::string("lines contain '='")};
+    const Detection detection = chooseLayout(profiles, shape, describe);
+    if (detection.layout >= 0)
+        return std::pair{static_cast<Layout>(detection.layout), detection.why};
+    std::string found;
+    if (shape.numbers.empty()) {
+        const bool empty = text.empty() || text == "\xEF\xBB\xBF";  // a BOM alone is empty
+        found = empty ? "an empty file" : "only blank lines";
+    } else if (shape.numbers.size() == 1) {
+        found = "1 line with " + plural(shape.numbers[0], "number", "numbers");
+    } else {
+        found = std::to_string(shape.numbers.size()) + " lines with " + countsText(shape.numbers) +
+                " numbers";
+    }
+    if (!detection.ambiguity.empty()) found += " (" + detection.ambiguity + ")";
+    return makeError(shape.numbers.empty() ? ErrorCode::MissingData : ErrorCode::Syntax,
+                     startOf(text, fileName),
+                     "expected " + layoutsTried + " or key = value, found " + found);
+}
+
+const std::string kCamerasTried =
+    "a camera in one of the layouts UFPE (C; N; V; d hx hy), UFRPE (N; V; d; hx; hy; C), "
+    "UFRPE (C; N; V; hx hy; d)";
+const std::string kLightingsTried =
+    "lighting in one of the layouts UFPE (Pl; ka; Ia; kd; Od; ks; Il; n), UFPE multi-light (ka; "
+    "Ia; kd; Od; ks; n; L; L times Pl; Il), UFRPE (Iamb; Ka; Il; Pl; Kd; Od; Ks; n)";
+
+Result<std::pair<CameraLayout, std::string>> detectCamera(std::string_view text,
+                                                          const std::string& fileName) {
+    return detectLayout<CameraLayout>(text, fileName, cameraProfiles(), describeCamera,
+                                      kCamerasTried);
+}
+
+Result<std::pair<LightingLayout, std::string>> detectLighting(std::string_view text,
+                                                              const std::string& fileName) {
+    return detectLayout<LightingLayout>(text, fileName,
+                                        lightingProfiles(shapeOf(text).numbers.size()),
+                                        describeLighting, kLightingsTried);
+}
+
+// ---- key = value files
+
+struct KeySpec {
+    std::string_view key;  // as the course writes it; matched without regard to case
+    std::string_view description;
+    unsigned counts;
+};
+
+constexpr KeySpec kCameraKeys[] = {
+    {"C", "the camera position", kThree},
+    {"N", "the view direction", kThree},
+    {"V", "the up vector", kThree},
+    {"d", "the projection distance", kOne},
+    {"hx", "the horizontal half-size of the window", kOne},
+    {"hy", "the vertical half-size of the window", kOne},
+};
+constexpr KeySpec kLightingKeys[] = {
+    {"Iamb", "the ambient light colour", kThree},
+    {"Ka", "the ambient coefficient", kOne},
+    {"Il", "the light colour", kThree},
+    {"Pl", "the light position", kThree},
+    {"Kd", "the diffuse coefficient of each channel", kThree},
+    {"Od", "the diffuse colour of the object", kThree},
+    {"Ks", "the specular coefficient", kOne},
+    {"eta", "the specular exponent", kOne},
+};
+constexpr std::string_view kUnusedCameraKey = "U";  // a dummy some camera files carry
+
+bool sameKey(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
+template <std::size_t N>
+std::optional<std::size_t> findKey(const KeySpec (&keys)[N], std::string_view key) {
+    for (std::size_t i = 0; i < N; ++i)
+        if (sameKey(keys[i].key, key)) return i;
+    return std::nullopt;
+}
+
+template <std::size_t N>
+std::string keyList(const KeySpec (&keys)[N]) {
+    std::vector<std::string> names;
+    for (const KeySpec& key : keys) names.emplace_back(key.key);
+    return listText(names);
+}
+
+// The keys of one role (camera or lighting) from a key = value file, in the order of `keys`.
+// Keys of the other role are skipped; keys of neither are skipped with a warning.
+template <std::size_t N, std::size_t M>
+Result<std::vector<FieldValue>> readKeyValues(std::string_view text, const std::string& fileName,
+                                              const char* what, const KeySpec (&keys)[N],
+                                              const char* otherWhat, const KeySpec (&otherKeys)[M],
+                                              bool isCamera, Diagnostics& diagnostics) {
+    LineScanner scanner(text, fileName);
+    std::vector<FieldValue> values(N);
+    std::vector<int> givenOn(N, 0);  // the line each key was given on, 0 when not yet
+    bool otherRoleSeen = false;
+    TextLine line;
+    while (scanner.next(line)) {
+        // Split the line at its first '=': the key before it, the values after it.
+        std::size_t at = 0;
+        std::size_t equals = std::string_view::npos;
+        for (; at < line.tokens.size(); ++at) {
+            equals = line.tokens[at].text.find('=');
+            if (equals != std::string_view::npos) break;
+        }
+        if (at == line.tokens.size())
+            return makeError(ErrorCode::Syntax, scanner.at(line.tokens[0]),
+                             "expected 'key = value', found a line without '=' (" +
+                                 quoted(line.tokens[0].text) +
+                                 (line.tokens.size() > 1 ? " ...)" : ")"));
+        std::string keyText;
+        std::size_t keyWords = 0;
+        for (std::size_t k = 0; k <= at; ++k) {
+            const std::string_view part =
+                k < at ? line.tokens[k].text : line.tokens[k].text.substr(0, equals);
+            if (part.empty()) continue;
+            if (keyWords++ > 0) keyText += ' ';
+            keyText += part;
+        }
+        const SourceLocation keyAt = scanner.at(line.tokens[0]);
+        if (keyWords == 0)
+            return makeError(ErrorCode::Syntax, keyAt, "expected a key before '=', found nothing");
+        if (keyWords > 1)
+            return makeError(ErrorCode::Syntax, keyAt,
+                             "expected one key before '=', found " + quoted(keyText));
+        std::vector<Token> valueTokens;
+        const Token& split = line.tokens[at];
+        if (equals + 1 < split.text.size())
+            valueTokens.push_back({split.text.substr(equals + 1), split.line,
+                                   split.column + static_cast<int>(equals) + 1});
+        valueTokens.insert(valueTokens.end(),
+                           line.tokens.begin() + static_cast<std::ptrdiff_t>(at) + 1,
+                           line.tokens.end());
+
+        const auto index = findKey(keys, keyText);
+        if (!index) {
+            if (findKey(otherKeys, keyText)) {
+                otherRoleSeen = true;
+            } else if (sameKey(keyText, kUnusedCameraKey)) {
+                if (isCamera)
+                    diagnostics.note(
+                        keyAt, "ignored " + keyText + ": the camera's axes come from N and V");
+            } else {
+                diagnostics.warn(keyAt, "ignored the unknown key " + quoted(keyText) + " (a " +
+                                            std::string(what) + " has " + keyList(keys) + "; a " +
+                                            otherWhat + " has " + keyList(otherKeys) + ")");
+            }
+            continue;
+        }
+        const KeySpec& key = keys[*index];
+        const std::string name(key.key);
+        if (givenOn[*index] != 0)
+            return makeError(ErrorCode::Syntax, keyAt,
+                             "expected each key once, found " + name +
+                                 " again (first given on line " + std::to_string(givenOn[*index]) +
+                                 ")");
+        givenOn[*index] = line.number;
+
+        FieldValue& value = values[*index];
+        value.line = scanner.at(line.number, 1);
+        for (const Token& token : valueTokens) {
+            const auto number = parseReal(token.text);
+            if (!number)
+                return makeError(ErrorCode::Syntax, scanner.at(token),
+                                 "expected a number for " + name + ", " + whyNotNumber(token.text));
+            value.values.push_back(*number);
+            value.where.push_back(scanner.at(token));
+        }
+        const int count = static_cast<int>(value.values.size());
+        const int most = maxCount(key.counts);
+        if (count > most)
+            return makeError(ErrorCode::Syntax, value.where[static_cast<std::size_t>(most)],
+                             "expected " + countText(key.counts) + " for " + name + ", found " +
+                                 std::to_string(count));
+        if (!(key.counts & (1u << count)))
+            return makeError(ErrorCode::Syntax, scanner.afterLast(line),
+                             "expected " + countText(key.counts) + " for " + name + ", found " +
+                                 (count == 0 ? std::string("none") : std::to_string(count)));
+    }
+
+    std::vector<std::string> missing;
+    for (std::size_t i = 0; i < N; ++i)
+        if (givenOn[i] == 0) missing.emplace_back(keys[i].key);
+    if (missing.empty()) return values;
+    std::string message;
+    if (missing.size() == N) {
+        message = "expected the " + std::string(what) + " keys " + keyList(keys) +
+                  ", found none of them" +
+                  (otherRoleSeen ? " (only " + std::string(otherWhat) + " keys)" : std::string());
+    } else if (missing.size() == 1) {
+        const KeySpec& key = keys[*findKey(keys, missing[0])];
+        message = "expected a line '" + missing[0] + " = ...' (" + std::string(key.description) +
+                  ", " + countText(key.counts) + "), found no " + missing[0];
+    } else {
+        message = "expected lines for " + listText(missing) + " (a " + std::string(what) +
+                  " needs " + keyList(keys) + "), found none";
+    }
+    return makeError(ErrorCode::MissingData, scanner.endOfInput(), message);
+}
+
+// ---- the readers of each layout
+
+Result<CourseCamera> readCameraAs(std::string_view text, const std::string& fileName,
+                                  CameraLayout layout, Diagnostics& diagnostics) {
+    if (layout == CameraLayout::KeyValue) {
+        auto f = readKeyValues(text, fileName, "camera", kCameraKeys, "lighting file",
+                               kLightingKeys, true, diagnostics);
+        if (!f) return f.error();
+        const auto& v = f.value();
+        return makeCamera(v[0], v[1], v[2], {&v[3], 0}, {&v[4], 0}, {&v[5], 0});
+    }
+    LineScanner scanner(text, fileName);
+    if (layout == CameraLayout::Ufrpe6) {  // N; V; d; hx; hy; C
+        auto f = readFieldLines(scanner, kUfrpeCamera6, "camera", diagnostics);
+        if (!f) return f.error();
+        const auto& v = f.value();
+        return makeCamera(v[5], v[0], v[1], {&v[2], 0}, {&v[3], 0}, {&v[4], 0});
+    }
+    if (layout == CameraLayout::Ufrpe5) {  // C; N; V; hx hy; d
+        auto f = readFieldLines(scanner, kUfrpeCamera5, "camera", diagnostics);
+        if (!f) return f.error();
+        const auto& v = f.value();
+        return makeCamera(v[0], v[1], v[2], {&v[4], 0}, {&v[3], 0}, {&v[3], 1});
+    }
+    return readCourseCamera(text, fileName, diagnostics);
+}
+
+Result<CourseLighting> readMultiLight(std::string_view text, const std::string& fileName,
+                                      Diagnostics& diagnostics) {
+    LineScanner scanner(text, fileName);
+    auto head = readFields(scanner, kUfpeMultiHead, diagnostics);
+    if (!head) return head.error();
+    const auto& h = head.value();
+    // L: a positive whole number of lights, each a pair of lines the file must hold.
+    const double declared = h[6].values[0];
+    const SourceLocation lAt = h[6].where[0];
+    if (!(declared >= 1.0) || declared != std::floor(declared))
+        return makeError(ErrorCode::Syntax, lAt,
+                         "expected the number of lights L (a positive whole number), found " +
+                             formatNumber(declared));
+    const long long available = scanner.countRemainingLines();
+    if (declared > static_cast<double>(available / 2)) {
+        const std::string count = declared < 1e15 ? std::to_string(static_cast<long long>(declared))
+                                                  : formatNumber(declared);
+        return makeError(ErrorCode::Range, lAt,
+                         "L = " + count + " lights need " +
+                             (declared < 1e15 ? std::to_string(2 * static_cast<long long>(declared))
+                                              : "twice as many") +
+                             " lines after it (Pl and Il for each), but only " +
+                             plural(available, "line follows", "lines follow"));
+    }
+    const auto lightCount = static_cast<std::size_t>(declared);
+    std::vector<FieldValue> pairs;
+    pairs.reserve(2 * lightCount);
+    for (std::size_t k = 0; k < lightCount; ++k) {
+        const std::string number = std::to_string(k + 1);
+        const std::string plName = "Pl of light " + number;
+        const std::string ilName = "Il of light " + number;
+        const FieldSpec pair[] = {{plName, kUfpeMultiLight[0].description, kThree},
+                                  {ilName, kUfpeMultiLight[1].description, kThree}};
+        auto fields = readFields(scanner, pair, diagnostics);
+        if (!fields) return fields.error();
+        for (FieldValue& f : fields.value()) pairs.push_back(std::move(f));
+    }
+    warnTrailingLines(scanner, "lighting",
+                      static_cast<long long>(std::size(kUfpeMultiHead) + pairs.size()),
+                      diagnostics);
+    LightingFields parts;
+    parts.ka = &h[0];
+    parts.ia = &h[1];
+    parts.kd = &h[2];
+    parts.od = &h[3];
+    parts.ks = &h[4];
+    parts.n = &h[5];
+    for (std::size_t k = 0; k < lightCount; ++k)
+        parts.lights.emplace_back(&pairs[2 * k], &pairs[2 * k + 1]);
+    return makeLighting(parts, kUfpeNames, diagnostics);
+}
+
+Result<CourseLighting> readLightingAs(std::string_view text, const std::string& fileName,
+                                      LightingLayout layout, Diagnostics& diagnostics) {
+    if (layout == LightingLayout::KeyValue) {
+        auto f = readKeyValues(text, fileName, "lighting file", kLightingKeys, "camera",
+                               kCameraKeys, false, diagnostics);
+        if (!f) return f.error();
+        const auto& v = f.value();  // Iamb, Ka, Il, Pl, Kd, Od, Ks, eta
+        LightingFields parts;
+        parts.ia = &v[0];
+        parts.ka = &v[1];
+        parts.kd = &v[4];
+        parts.od = &v[5];
+        parts.ks = &v[6];
+        parts.n = &v[7];
+        parts.lights = {{&v[3], &v[2]}};
+        return makeLighting(parts, kKeyValueNames, diagnostics);
+    }
+    if (layout == LightingLayout::UfpeMulti) return readMultiLight(text, fileName, diagnostics);
+    if (layout == LightingLayout::Ufrpe) {  // Iamb; Ka; Il; Pl; Kd; Od; Ks; n
+        LineScanner scanner(text, fileName);
+        auto f = readFieldLines(scanner, kUfrpeLighting, "lighting", diagnostics);
+        if (!f) return f.error();
+        const auto& v = f.value();
+        LightingFields parts;
+        parts.ia = &v[0];
+        parts.ka = &v[1];
+        parts.kd = &v[4];
+        parts.od = &v[5];
+        parts.ks = &v[6];
+        parts.n = &v[7];
+        parts.lights = {{&v[3], &v[2]}};
+        return makeLighting(parts, kUfrpeNames, diagnostics);
+    }
+    return readCourseLighting(text, fileName, diagnostics);
+}
+
+// For an error under a layout the caller chose: what detection would have chosen instead.
+template <typename Layout>
+std::string forcedLayoutHint(Layout chosen, const char* chosenText,
+                             const Result<std::pair<Layout, std::string>>& detected,
+                             const char* (*describe)(int)) {
+    std::string hint = "; the layout was set to " + std::string(chosenText);
+    if (!detected) return hint;
+    if (detected->first == chosen) return {};
+    return hint + ", but the file looks like " + describe(static_cast<int>(detected->first)) +
+           " (" + detected->second + ")";
+}
+
+}  // namespace
+
+std::optional<CameraLayout> detectCameraLayout(std::string_view text) {
+    auto detected = detectCamera(text, std::string());
+    if (!detected) return std::nullopt;
+    return detected->first;
+}
+
+std::optional<LightingLayout> detectLightingLayout(std::string_view text) {
+    auto detected = detectLighting(text, std::string());
+    if (!detected) return std::nullopt;
+    return detected->first;
+}
+
+Result<CourseCamera> readCameraFile(std::string_view text, const std::string& fileName,
+                                    Diagnostics& diagnostics, CameraLayout layout) {
+    CameraLayout chosen = layout;
+    std::string why = "the layout was chosen, not detected";
+    if (layout == CameraLayout::Auto) {
+        auto detected = detectCamera(text, fileName);
+        if (!detected) return detected.error();
+        chosen = detected->first;
+        why = detected->second;
+    }
+    Diagnostics read;  // after the note
+    auto camera = readCameraAs(text, fileName, chosen, read);
+    if (!camera) {
+        diagnostics.append(read);
+        if (layout == CameraLayout::Auto) return camera.error();
+        Error error = camera.error();
+        error.message += forcedLayoutHint(chosen, cameraLayoutDescription(chosen),
+                                          detectCamera(text, fileName), describeCamera);
+        return error;
+    }
+    diagnostics.note(SourceLocation{fileName, 0, 0},
+                     "read as " + cameraFlavour(chosen) + " (" + why + ")");
+    diagnostics.append(read);
+    return camera;
+}
+
+Result<CourseLighting> readLightingFile(std::string_view text, const std::string& fileName,
+                                        Diagnostics& diagnostics, LightingLayout layout) {
+    LightingLayout chosen = layout;
+    std::string why = "the layout was chosen, not detected";
+    if (layout == LightingLayout::Auto) {
+        auto detected = detectLighting(text, fileName);
+        if (!detected) return detected.error();
+        chosen = detected->first;
+        why = detected->second;
+    }
+    Diagnostics read;  // after the note
+    auto lighting = readLightingAs(text, fileName, chosen, read);
+    if (!lighting) {
+        diagnostics.append(read);
+        if (layout == LightingLayout::Auto) return lighting.error();
+        Error error = lighting.error();
+        error.message += forcedLayoutHint(chosen, lightingLayoutDescription(chosen),
+                                          detectLighting(text, fileName), describeLighting);
+        return error;
+    }
+    diagnostics.note(SourceLocation{fileName, 0, 0},
+                     "read as " + lightingFlavour(chosen) + " (" + why + ")");
+    diagnostics.append(read);
+    return lighting;
+}
+
+// ---------------------------------------------------------------------------------------
+// .byu flavours: the course's Bezier surface and the original Movie.BYU format
+
+namespace {
+
+// The tokens of the lines after the current one, one at a time (Movie.BYU is free format:
+// several vertices or indices may share a line).
+class TokenReader {
+public:
+    explicit TokenReader(LineScanner& scanner) : m_scanner(scanner) {}
+
+    bool next(Token& token) {
+        while (m_index >= m_line.tokens.size()) {
+            if (!m_scanner.next(m_line)) return false;
+            m_index = 0;
+        }
+        token = m_line.tokens[m_index++];
+        return true;
+    }
+    // Tokens from here to the end, without consuming them.
+    long long countRemaining() const {
+        long long count = static_cast<long long>(m_line.tokens.size() - m_index);
+        LineScanner copy = m_scanner;
+        TextLine line;
+        while (copy.next(line)) count += static_cast<long long>(line.tokens.size());
+        return count;
+    }
+
+private:
+    LineScanner& m_scanner;
+    TextLine m_line;
+    std::size_t m_index = 0;
+};
+
+bool isMovieByuHeader(const TextLine& line) {
+    return line.tokens.size() == 4 &&
+           std::all_of(line.tokens.begin(), line.tokens.end(),
+                       [](const Token& t) { return parseInteger(t.text).has_value(); });
+}
+
+// "used by no triangle" and "no triangles" warnings, as for course meshes.
+void warnUnusedVertices(const Mesh& mesh, const std::vector<unsigned char>& used,
+                        Diagnostics& diagnostics) {
+    long long unused = 0;
+    for (unsigned char u : used) unused += u ? 0 : 1;
+    const auto vertexCount = static_cast<long long>(mesh.positions.size());
+    if (unused > 0 && !mesh.triangles.empty())
+        diagnostics.warn(mesh.source, plural(unused, "vertex", "vertices") + " of " +
+                                          std::to_string(vertexCount) +
+                                          (unused == 1 ? " is" : " are") +
+                                          " not used by any triangle");
+    if (mesh.triangles.empty()) diagnostics.warn(mesh.source, "the object has no triangles");
+}
+
+// `summary` receives "1 part, 8 vertices and 6 polygons" for the note.
+Result<Mesh> readMovieByu(LineScanner& scanner, const TextLine& header, std::string& summary,
+                          Diagnostics& diagnostics) {
+    auto parts = readCount(scanner, header.tokens[0], "parts");
+    if (!parts) return parts.error();
+    auto vertexCount = readCount(scanner, header.tokens[1], "vertices");
+    if (!vertexCount) return vertexCount.error();
+    auto polygonCount = readCount(scanner, header.tokens[2], "polygons");
+    if (!polygonCount) return polygonCount.error();
+    auto indexCount = readCount(scanner, header.tokens[3], "polygon indices (edges)");
+    if (!indexCount) return indexCount.error();
+
+    // Reject counts the file cannot hold before allocating anything (compared without
+    // multiplying the counts, which may overflow).
+    TokenReader tokens(scanner);
+    const long long available = tokens.countRemaining();
+    bool fits = *parts <= available / 2;
+    long long rest = fits ? available - 2 * *parts : 0;
+    fits = fits && *vertexCount <= rest / 3;
+    rest = fits ? rest - 3 * *vertexCount : 0;
+    fits = fits && *indexCount <= rest;
+    const std::string declared = plural(*parts, "part", "parts") + ", " +
+                                 plural(*vertexCount, "vertex", "vertices") + " and " +
+                                 plural(*indexCount, "polygon index", "polygon indices");
+    if (!fits) {
+        unsigned long long total = 0, term = 0;
+        const bool overflow =
+            __builtin_mul_overflow(static_cast<unsigned long long>(*parts), 2ull, &total) ||
+            __builtin_mul_overflow(static_cast<unsigned long long>(*vertexCount), 3ull, &term) ||
+            __builtin_add_overflow(total, term, &total) ||
+            __builtin_add_overflow(total, static_cast<unsigned long long>(*indexCount), &total);
+        return makeError(
+            ErrorCode::Range, scanner.at(header.tokens[0]),
+            "the header declares " + declared + " (" +
+                (overflow ? std::string("more numbers than a file can hold")
+                          : plural(static_cast<long long>(total), "number", "numbers")) +
+                ": 2 a part, 3 a vertex, 1 an index), but only " +
+                plural(available, "number follows", "numbers follow"));
+    }
+    if (*polygonCount > *indexCount / 3)
+        return makeError(ErrorCode::Range, scanner.at(header.tokens[2]),
+                         "the header declares " + plural(*polygonCount, "polygon", "polygons") +
+                             " but only " +
+                             plural(*indexCount, "polygon index", "polygon indices") +
+                             ", fewer than the 3 each polygon needs");
+
+    // One "first last" polygon range per part (parts only group polygons: the mesh is one).
+    Token token;
+    for (long long p = 1; p <= *parts; ++p) {
+        long long range[2] = {0, 0};
+        SourceLocation rangeAt;
+        for (int k = 0; k < 2; ++k) {
+            tokens.next(token);  // present: counted above
+            if (k == 0) rangeAt = scanner.at(token);
+            const std::string what =
+                std::string(k == 0 ? "first" : "last") + " polygon of part " + std::to_string(p);
+            if (isComment(token)) return commentError(scanner, token, "the " + what);
+            const auto value = parseInteger(token.text);
+            if (!value)
+                return makeError(
+                    ErrorCode::Syntax, scanner.at(token),
+                    "expected the " + what + " (a positive integer), found " + quoted(token.text));
+            range[k] = *value;
+        }
+        if (range[0] < 1 || range[1] < range[0] || range[1] > *polygonCount)
+            return makeError(ErrorCode::Range, rangeAt,
+                             "expected the polygon range of part " + std::to_string(p) +
+                                 " within 1 to " + std::to_string(*polygonCount) +
+                                 ", first <= last, found " + std::to_string(range[0]) + " to " +
+                                 std::to_string(range[1]));
+    }
+
+    Mesh mesh;
+    mesh.source = scanner.at(0, 0);
+    mesh.positions.reserve(static_cast<std::size_t>(*vertexCount));
+    static const char* const kAxis[] = {"x", "y", "z"};
+    for (long long i = 0; i < *vertexCount; ++i) {
+        const std::string which =
+            "vertex " + std::to_string(i + 1) + " of " + std::to_string(*vertexCount);
+        dvec4 p(0.0, 0.0, 0.0, 1.0);
+        for (int k = 0; k < 3; ++k) {
+            tokens.next(token);
+            if (isComment(token)) return commentError(scanner, token, which + " (x y z)");
+            const auto value = parseReal(token.text);
+            if (!value)
+                return makeError(ErrorCode::Syntax, scanner.at(token),
+                                 std::string("expected a number for the ") + kAxis[k] +
+                                     " coordinate of " + which + ", " + whyNotNumber(token.text));
+            p[k] = *value;
+        }
+        mesh.positions.push_back(p);
+    }
+
+    // The polygons: 1-based indices, the last of each negated; each fan-triangulated.
+    std::vector<unsigned char> used(mesh.positions.size(), 0);
+    std::vector<std::uint32_t> polygon;
+    long long completed = 0;
+    int polygonLine = 0;
+    SourceLocation lastIndex;
+    for (long long e = 0; e < *indexCount; ++e) {
+        tokens.next(token);
+        const std::string which = "polygon " + std::to_string(completed + 1);
+        if (isComment(token)) return commentError(scanner, token, "an index of " + which);
+        const auto index = parseInteger(token.text);
+        if (!index)
+            return makeError(ErrorCode::Syntax, scanner.at(token),
+                             "expected a vertex index (a non-zero integer, negated at the end of "
+                             "a polygon) for " +
+                                 which + ", found " + quoted(token.text));
+        if (completed == *polygonCount)
+            return makeError(ErrorCode::Range, scanner.at(token),
+                             which + " starts here, but the header declares only " +
+                                 plural(*polygonCount, "polygon", "polygons"));
+        if (*index == 0)
+            return makeError(ErrorCode::Range, scanner.at(token),
+                             which + " refers to vertex 0, but indices are 1-based (1 to " +
+                                 std::to_string(*vertexCount) + ")");
+        // |index|, or 0 for the one value whose magnitude does not fit.
+        const long long vertex =
+            *index == std::numeric_limits<long long>::min() ? 0 : std::llabs(*index);
+        if (vertex == 0 || vertex > *vertexCount)
+            return makeError(ErrorCode::Range, scanner.at(token),
+                             which + " refers to vertex " + std::string(withoutSign(token.text)) +
+                                 ", but the file declares only " +
+                                 plural(*vertexCount, "vertex", "vertices"));
+        if (polygon.empty()) polygonLine = token.line;
+        polygon.push_back(static_cast<std::uint32_t>(vertex - 1));
+        used[static_cast<std::size_t>(vertex - 1)] = 1;
+        lastIndex = scanner.at(token);
+        if (*index > 0) continue;
+        if (polygon.size() < 3)
+            return makeError(
+                ErrorCode::Range, scanner.at(token),
+                which + " has " +
+                    plural(static_cast<long long>(polygon.size()), "vertex", "vertices") +
+                    ", but a polygon needs at least 3");
+        for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
+            mesh.triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
+            mesh.triangleLines.push_back(polygonLine);
+        }
+        polygon.clear();
+        ++completed;
+    }
+    if (!polygon.empty())
+        return makeError(ErrorCode::Syntax, lastIndex,
+                         "expected the last index of polygon " + std::to_string(completed + 1) +
+                             " to be negative (it ends the polygon), found the end of the "
+                             "header's " +
+                             plural(*indexCount, "polygon index", "polygon indices"));
+    if (completed < *polygonCount)
+        return makeError(ErrorCode::Range, scanner.at(header.tokens[2]),
+                         "the header declares " + plural(*polygonCount, "polygon", "polygons") +
+                             ", but its " +
+                             plural(*indexCount, "polygon index", "polygon indices") +
+                             " end only " + std::to_string(completed));
+
+    if (tokens.next(token)) {
+        const long long remaining = 1 + tokens.countRemaining();
+        diagnostics.warn(scanner.at(token),
+                         "ignored " + plural(remaining, "value", "values") +
+                             " after the declared " + declared +
+                             " (the header's counts may be wrong, or a second object follows)");
+    }
+    warnUnusedVertices(mesh, used, diagnostics);
+    summary = plural(*parts, "part", "parts") + ", " + plural(*vertexCount, "vertex", "vertices") +
+              " and " + plural(*polygonCount, "polygon", "polygons");
+    return mesh;
+}
+
+Result<Mesh> readBezierSurface(LineScanner& scanner, const TextLine& header,
+                               const TextLine& evaluationsLine, Diagnostics& diagnostics) {
+    int degree[2] = {0, 0};
+    for (int k = 0; k < 2; ++k) {
+        const Token& token = header.tokens[static_cast<std::size_t>(k)];
+        const long long value = *parseInteger(token.text);  // an integer: detected so
+        if (value < 1 || value > kMaxBezierDegree)
+            return makeError(ErrorCode::Range, scanner.at(token),
+                             std::string("expected the degree ") + (k == 0 ? "m" : "n") +
+                                 " of the Bezier surface (an integer from 1 to " +
+                                 std::to_string(kMaxBezierDegree) + "), found " +
+                                 quoted(token.text));
+        degree[k] = static_cast<int>(value);
+    }
+    if (header.tokens.size() > 2)
+        diagnostics.warn(
+            scanner.at(header.tokens[2]),
+            "ignored " +
+                plural(static_cast<long long>(header.tokens.size() - 2), "value", "values") +
+                " after the Bezier surface's two degrees");
+    const Token& evaluationsToken = evaluationsLine.tokens[0];
+    const long long evaluations = *parseInteger(evaluationsToken.text);
+    if (evaluations < 2 || evaluations > kMaxBezierEvaluations)
+        return makeError(ErrorCode::Range, scanner.at(evaluationsToken),
+                         "expected the number of evaluations per direction (an integer from 2 "
+                         "to " +
+                             std::to_string(kMaxBezierEvaluations) + "), found " +
+                             quoted(evaluationsToken.text));
+
+    const int m = degree[0], n = degree[1];
+    const long long pointCount = static_cast<long long>(m + 1) * (n + 1);
+    const std::string degrees = std::to_string(m) + " x " + std::to_string(n);
+    const long long available = scanner.countRemainingLines();
+    if (pointCount > available)
+        return makeError(ErrorCode::Range, scanner.at(header.tokens[0]),
+                         "the header declares a Bezier surface of degrees " + degrees + ", so " +
+                             std::to_string(pointCount) +
+                             " control points (one a line), but only " +
+                             plural(available, "line follows", "lines follow"));
+
+    std::vector<dvec3> control;
+    control.reserve(static_cast<std::size_t>(pointCount));
+    static const char* const kAxis[] = {"x", "y", "z"};
+    long long linesWithExtraValues = 0;
+    SourceLocation firstExtra;
+    TextLine line;
+    for (int i = 0; i <= m; ++i) {
+        for (int j = 0; j <= n; ++j) {
+            scanner.next(line);  // present: counted above
+            const std::string which =
+                "control point (" + std::to_string(i) + ", " + std::to_string(j) + ")";
+            if (isComment(line.tokens[0]))
+                return commentError(scanner, line.tokens[0], which + " (x y z)");
+            dvec3 p(0.0);
+            for (int k = 0; k < 3; ++k) {
+                if (static_cast<std::size_t>(k) >= line.tokens.size())
+                    return makeError(
+                        ErrorCode::Syntax, scanner.afterLast(line),
+                        "expected 3 coordinates for " + which + ", found " + std::to_string(k));
+                const Token& token = line.tokens[static_cast<std::size_t>(k)];
+                const auto value = parseReal(token.text);
+                if (!value)
+                    return makeError(ErrorCode::Syntax, scanner.at(token),
+                                     std::string("expected a number for the ") + kAxis[k] +
+                                         " coordinate of " + which + ", " +
+                                         whyNotNumber(token.text));
+                p[k] = *value;
+            }
+            if (line.tokens.size() > 3 && linesWithExtraValues++ == 0)
+                firstExtra = scanner.at(line.tokens[3]);
+            control.push_back(p);
+        }
+    }
+    if (linesWithExtraValues > 0)
+        diagnostics.warn(firstExtra, "ignored extra values at the end of " +
+                                         plural(linesWithExtraValues, "line", "lines") +
+                                         " (the first is here)");
+    if (scanner.next(line)) {
+        const int remaining = 1 + scanner.countRemainingLines();
+        diagnostics.warn(scanner.at(line.number, 1),
+                         "ignored " + plural(remaining, "line", "lines") + " after the " +
+                             std::to_string(pointCount) + " control points of the Bezier surface");
+    }
+
+    // E x E points, two triangles for each of the (E - 1)^2 cells.
+    const auto count = static_cast<std::uint32_t>(evaluations);
+    Mesh mesh;
+    mesh.source = scanner.at(0, 0);
+    const std::vector<dvec3> grid =
+        evaluateBezierSurfaceGrid(control, m, n, static_cast<int>(count));
+    mesh.positions.reserve(grid.size());
+    for (const dvec3& p : grid) mesh.positions.emplace_back(p, 1.0);
+    const auto index = [count](std::uint32_t a, std::uint32_t b) { return a * count + b; };
+    mesh.triangles.reserve(2 * static_cast<std::size_t>(count - 1) * (count - 1));
+    for (std::uint32_t a = 0; a + 1 < count; ++a)
+        for (std::uint32_t b = 0; b + 1 < count; ++b) {
+            mesh.triangles.push_back({index(a, b), index(a + 1, b), index(a + 1, b + 1)});
+            mesh.triangles.push_back({index(a, b), index(a + 1, b + 1), index(a, b + 1)});
+        }
+    return mesh;
+}
+
+}  // namespace
+
+Result<Mesh> readByuObject(std::string_view text, const std::string& fileName,
+                           Diagnostics& diagnostics) {
+    LineScanner scanner(text, fileName);
+    TextLine header;
+    if (scanner.next(header)) {
+        if (isMovieByuHeader(header)) {
+            Diagnostics read;  // after the note
+            std::string summary;
+            auto mesh = readMovieByu(scanner, header, summary, read);
+            if (mesh)
+                diagnostics.note(
+                    mesh->source,
+                    "read as an original Movie.BYU file (the header has four integers: parts, "
+                    "vertices, polygons, edges): " +
+                        summary + ", fan-triangulated into " +
+                        plural(static_cast<long long>(mesh->triangles.size()), "triangle",
+                               "triangles"));
+            diagnostics.append(read);
+            return mesh;
+        }
+        TextLine second;
+        if (header.tokens.size() >= 2 && parseInteger(header.tokens[0].text) &&
+            parseInteger(header.tokens[1].text) && scanner.next(second) &&
+            second.tokens.size() == 1 && parseInteger(second.tokens[0].text)) {
+            Diagnostics read;
+            auto mesh = readBezierSurface(scanner, header, second, read);
+            if (mesh) {
+                const std::string e = std::to_string(*parseInteger(second.tokens[0].text));
+                diagnostics.note(
+                    mesh->source,
+                    "read as a course Bezier surface (the header 'm n' is followed by a line of "
+                    "one number, the evaluations per direction): degrees " +
+                        std::to_string(*parseInteger(header.tokens[0].text)) + " x " +
+                        std::to_string(*parseInteger(header.tokens[1].text)) + ", evaluated on a " +
+                        e + " x " + e + " grid into " +
+                        plural(static_cast<long long>(mesh->positions.size()), "vertex",
+                               "vertices") +
+                        " and " +
+                        plural(static_cast<long long>(mesh->triangles.size()), "triangle",
+                               "triangles"));
+            }
+            diagnostics.append(read);
+            return mesh;
+        }
+    }
+    return readByuMesh(text, fileName, diagnostics);
 }
 
 }  // namespace rl

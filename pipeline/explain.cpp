@@ -45,7 +45,8 @@ void describeSample(std::string& out, const PhongSample& s, const Draw& draw) {
     out += "    N = " + f3(s.n) + (s.flipped ? "  (turned toward the viewer: V.N was < 0)" : "") +
            "\n";
     if (s.noNormal) {
-        out += "    the normal is zero (only degenerate triangles meet here): no light reaches it\n";
+        out +=
+            "    the normal is zero (only degenerate triangles meet here): no light reaches it\n";
         return;
     }
     if (s.lightAtPoint) {
@@ -53,8 +54,8 @@ void describeSample(std::string& out, const PhongSample& s, const Draw& draw) {
         if (draw.lighting == LightingModel::CoursePhong) return;
     }
     const bool course = draw.lighting == LightingModel::CoursePhong;
-    out += "    L = " + f3(s.l) + "   V = " + f3(s.v) + (course ? "   R = " : "   H = ") +
-           f3(s.r) + (course ? "" : "   (the first light)") + "\n";
+    out += "    L = " + f3(s.l) + "   V = " + f3(s.v) + (course ? "   R = " : "   H = ") + f3(s.r) +
+           (course ? "" : "   (the first light)") + "\n";
     out += "    N.L = " + formatNumber(s.nDotL) + (course ? "   R.V = " : "   H.N = ") +
            formatNumber(s.rDotV) + "\n";
     if (s.lightBehind)

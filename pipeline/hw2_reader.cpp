@@ -41,11 +41,11 @@ struct DrawState {
 };
 
 const char* const kKnownCommands[] = {
-    "png",      "xyz",      "xyzw",     "trif",     "trig",      "trit",    "color",
-    "loadmv",   "loadp",    "multmv",   "frustum",  "ortho",     "translate", "rotatex",
-    "rotatey",  "rotatez",  "rotate",   "scale",    "lookat",    "clipplane", "cull",
-    "rectbezf", "rectbezg", "tribezf",  "tribezg",  "texcoord",  "texture", "decals",
-    "normal",   "sunlight", "bulb",     "shininess", "flatnormals"};
+    "png",      "xyz",      "xyzw",    "trif",      "trig",       "trit",      "color",
+    "loadmv",   "loadp",    "multmv",  "frustum",   "ortho",      "translate", "rotatex",
+    "rotatey",  "rotatez",  "rotate",  "scale",     "lookat",     "clipplane", "cull",
+    "rectbezf", "rectbezg", "tribezf", "tribezg",   "texcoord",   "texture",   "decals",
+    "normal",   "sunlight", "bulb",    "shininess", "flatnormals"};
 
 bool isKnown(std::string_view keyword) {
     return std::find(std::begin(kKnownCommands), std::end(kKnownCommands), keyword) !=
@@ -66,8 +66,11 @@ private:
     Status command(const TextLine& line);
     Result<Args> numbers(const TextLine& line, std::size_t count, const char* names);
     Result<std::uint32_t> vertexIndex(const Token& token, const std::string& command);
+    // Vertex indices from token `first` on; tokens after them are warned about as extra
+    // values unless the command has more arguments (warnExtraValues false).
     Result<std::vector<std::uint32_t>> indices(const TextLine& line, std::size_t first,
-                                               std::size_t count, const char* names);
+                                               std::size_t count, const char* names,
+                                               bool warnExtraValues = true);
     Result<int> subdivisions(const TextLine& line);
     Status requireImage(const TextLine& line);
     void warnExtra(const TextLine& line, std::size_t used);
@@ -123,7 +126,8 @@ Result<Hw2File> Hw2Reader::read() {
     }
     finishImage();
     for (const auto& [keyword, seen] : m_unknown)
-        m_diagnostics.note(seen.second, "skipped " + countOf(std::size_t(seen.first), "line", "lines") +
+        m_diagnostics.note(seen.second, "skipped " +
+                                            countOf(std::size_t(seen.first), "line", "lines") +
                                             " with the unknown command '" + keyword + "'");
     if (m_file.images.empty())
         return makeError(ErrorCode::MissingData, m_scanner.endOfInput(),
@@ -171,36 +175,40 @@ void Hw2Reader::warnExtra(const TextLine& line, std::size_t used) {
 Result<std::uint32_t> Hw2Reader::vertexIndex(const Token& token, const std::string& command) {
     const auto index = parseInteger(token.text);
     if (!index)
-        return makeError(ErrorCode::Syntax, m_scanner.at(token),
-                         "expected a vertex index in '" + command + "', found " + quoted(token.text));
+        return makeError(
+            ErrorCode::Syntax, m_scanner.at(token),
+            "expected a vertex index in '" + command + "', found " + quoted(token.text));
     const auto count = static_cast<long long>(m_vertices.size());
     // 1 is the first vertex defined, -1 the last one.
     const long long resolved = *index > 0 ? *index - 1 : count + *index;
     if (*index == 0 || resolved < 0 || resolved >= count) {
-        std::string why = *index == 0 ? "indices start at 1 (or count back from -1, the last)"
-                                      : "only " + countOf(std::size_t(count), "vertex is", "vertices are") +
-                                            " defined so far";
-        return makeError(ErrorCode::Range, m_scanner.at(token),
-                         "'" + command + "' refers to vertex " + std::string(token.text) +
-                             ", but " + why);
+        std::string why = *index == 0
+                              ? "indices start at 1 (or count back from -1, the last)"
+                              : "only " + countOf(std::size_t(count), "vertex is", "vertices are") +
+                                    " defined so far";
+        return makeError(
+            ErrorCode::Range, m_scanner.at(token),
+            "'" + command + "' refers to vertex " + std::string(token.text) + ", but " + why);
     }
     return static_cast<std::uint32_t>(resolved);
 }
 
 Result<std::vector<std::uint32_t>> Hw2Reader::indices(const TextLine& line, std::size_t first,
-                                                      std::size_t count, const char* names) {
+                                                      std::size_t count, const char* names,
+                                                      bool warnExtraValues) {
     const std::string keyword(line.tokens[0].text);
     std::vector<std::uint32_t> out;
     for (std::size_t k = 0; k < count; ++k) {
         if (first + k >= line.tokens.size())
             return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
                              "expected " + countOf(count, "vertex index", "vertex indices") +
-                                 " in '" + keyword + "' (" + names + "), found " + std::to_string(k));
+                                 " in '" + keyword + "' (" + names + "), found " +
+                                 std::to_string(k));
         auto index = vertexIndex(line.tokens[first + k], keyword);
         if (!index) return index.error();
         out.push_back(index.value());
     }
-    warnExtra(line, first + count);
+    if (warnExtraValues) warnExtra(line, first + count);
     return out;
 }
 
@@ -214,7 +222,8 @@ Result<int> Hw2Reader::subdivisions(const TextLine& line) {
     if (!n || *n < 1 || *n > 10)
         return makeError(ErrorCode::Range, m_scanner.at(line.tokens[1]),
                          "expected the number of subdivisions (a whole number from 1 to 10) "
-                         "after '" + keyword + "', found " + quoted(line.tokens[1].text));
+                         "after '" +
+                             keyword + "', found " + quoted(line.tokens[1].text));
     return static_cast<int>(*n);
 }
 
@@ -309,7 +318,9 @@ Status Hw2Reader::command(const TextLine& line) {
         if (seen.first++ == 0) seen.second = where;
         return success();
     }
-    const auto nums = [&](std::size_t count, const char* names) { return numbers(line, count, names); };
+    const auto nums = [&](std::size_t count, const char* names) {
+        return numbers(line, count, names);
+    };
 
     if (keyword == "png") {
         if (line.tokens.size() < 4)
@@ -321,9 +332,10 @@ Status Hw2Reader::command(const TextLine& line) {
             const Token& token = line.tokens[std::size_t(k + 1)];
             const auto n = parseInteger(token.text);
             if (!n || *n < 1 || *n > 65536)
-                return makeError(ErrorCode::Syntax, m_scanner.at(token),
-                                 std::string("expected the image ") + (k == 0 ? "width" : "height") +
-                                     " (a whole number from 1 to 65536), found " + quoted(token.text));
+                return makeError(
+                    ErrorCode::Syntax, m_scanner.at(token),
+                    std::string("expected the image ") + (k == 0 ? "width" : "height") +
+                        " (a whole number from 1 to 65536), found " + quoted(token.text));
             size[k] = *n;
         }
         warnExtra(line, 4);
@@ -374,12 +386,13 @@ Status Hw2Reader::command(const TextLine& line) {
         if (auto s = requireImage(line); !s) return s;
         auto idx = indices(line, 1, 3, "i1 i2 i3");
         if (!idx) return idx.error();
-        const Fill fill = keyword == "trif" ? Fill::Flat
+        const Fill fill = keyword == "trif"   ? Fill::Flat
                           : keyword == "trig" ? Fill::Gouraud
                                               : Fill::Textured;
         if (fill == Fill::Textured && !m_texture)
-            return makeError(ErrorCode::MissingData, where,
-                             "'trit' needs a texture: expected a 'texture file.png' command before it");
+            return makeError(
+                ErrorCode::MissingData, where,
+                "'trit' needs a texture: expected a 'texture file.png' command before it");
         const std::array<Vertex, 3> corners = {m_vertices[idx->at(0)], m_vertices[idx->at(1)],
                                                m_vertices[idx->at(2)]};
         const bool hasNormals = corners[0].normal && corners[1].normal && corners[2].normal;
@@ -418,9 +431,12 @@ Status Hw2Reader::command(const TextLine& line) {
         double rows[16];
         std::copy(v->begin(), v->end(), rows);
         const dmat4 m = matrixFromRows(rows);
-        if (keyword == "loadmv") m_modelView = m;
-        else if (keyword == "multmv") m_modelView = m_modelView * m;
-        else m_projection = m;
+        if (keyword == "loadmv")
+            m_modelView = m;
+        else if (keyword == "multmv")
+            m_modelView = m_modelView * m;
+        else
+            m_projection = m;
         return success();
     }
     if (keyword == "frustum" || keyword == "ortho") {
@@ -441,13 +457,14 @@ Status Hw2Reader::command(const TextLine& line) {
         auto v = nums(3, keyword == "translate" ? "dx dy dz" : "sx sy sz");
         if (!v) return v.error();
         const dvec3 d(v->at(0), v->at(1), v->at(2));
-        m_modelView = m_modelView * (keyword == "translate" ? translationMatrix(d) : scaleMatrix(d));
+        m_modelView =
+            m_modelView * (keyword == "translate" ? translationMatrix(d) : scaleMatrix(d));
         return success();
     }
     if (keyword == "rotatex" || keyword == "rotatey" || keyword == "rotatez") {
         auto v = nums(1, "degrees");
         if (!v) return v.error();
-        const dvec3 axis = keyword == "rotatex" ? dvec3(1, 0, 0)
+        const dvec3 axis = keyword == "rotatex"   ? dvec3(1, 0, 0)
                            : keyword == "rotatey" ? dvec3(0, 1, 0)
                                                   : dvec3(0, 0, 1);
         m_modelView = m_modelView * rotationMatrix(v->at(0), axis);
@@ -464,7 +481,8 @@ Status Hw2Reader::command(const TextLine& line) {
         return success();
     }
     if (keyword == "lookat") {
-        auto idx = indices(line, 1, 2, "eye center upx upy upz");
+        // Two indices, then the up vector: only values after the up vector are extra.
+        auto idx = indices(line, 1, 2, "eye center upx upy upz", false);
         if (!idx) return idx.error();
         if (line.tokens.size() < 6)
             return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
@@ -496,7 +514,8 @@ Status Hw2Reader::command(const TextLine& line) {
     if (keyword == "clipplane") {
         auto v = nums(4, "p1 p2 p3 p4");
         if (!v) return v.error();
-        // A plane of model coordinates, carried to eye coordinates: p . (M^-1 x) >= 0.
+        // A plane of eye coordinates, kept as given (seed 001 applies it after the
+        // model/view; the reference images do not carry it through the model/view).
         const dvec4 plane(v->at(0), v->at(1), v->at(2), v->at(3));
         m_clipPlanes.push_back(plane);
         return success();

@@ -24,9 +24,14 @@ Normals NormalsStage::run(const Scene& scene, const ViewTransform& view) const {
         // Triangle normals, summed into their vertices.
         for (std::size_t t = 0; t < triangles.size(); ++t) {
             const auto& tri = triangles[t];
-            const dvec3 p1 = dvec3(pView[tri[0]]);
-            const dvec3 p2 = dvec3(pView[tri[1]]);
-            const dvec3 p3 = dvec3(pView[tri[2]]);
+            // Points, not homogeneous coordinates: (x, y, z) / w (w = 1 in course files).
+            const auto point = [&](std::uint32_t v) {
+                const dvec4& p = pView[v];
+                return p.w != 0.0 && p.w != 1.0 ? dvec3(p) / p.w : dvec3(p);
+            };
+            const dvec3 p1 = point(tri[0]);
+            const dvec3 p2 = point(tri[1]);
+            const dvec3 p3 = point(tri[2]);
             const dvec3 cross = glm::cross(p2 - p1, p3 - p1);
             const double length = glm::length(cross);
             if (!(length > std::numeric_limits<double>::min()) || !isFinite(length)) {

@@ -247,12 +247,18 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
     } else if (out.behind + out.clipped + out.clippedAway > 0) {
         bool planes = false;
         for (const Draw& draw : scene.draws) planes = planes || !draw.clipPlanes.empty();
-        std::string text = countOf(out.clipped, "triangle was", "triangles were") +
-                           " clipped against the near plane z = " + formatNumber(out.nearW) +
-                           (planes ? " and the clip planes" : "") + "; " +
-                           countOf(out.behind, "lies", "lie") + " wholly behind the near plane";
-        if (out.clippedAway > 0)
-            text += " and " + std::to_string(out.clippedAway) + " wholly outside a clip plane";
+        std::string text =
+            countOf(out.clipped, "triangle was", "triangles were") + " clipped against ";
+        if (clipNear) {
+            text += "the near plane z = " + formatNumber(out.nearW) +
+                    (planes ? " and the clip planes" : "") + "; " +
+                    countOf(out.behind, "lies", "lie") + " wholly behind the near plane";
+            if (out.clippedAway > 0)
+                text += " and " + std::to_string(out.clippedAway) + " wholly outside a clip plane";
+        } else {
+            text +=
+                "the clip planes; " + std::to_string(out.clippedAway) + " lie wholly outside one";
+        }
         diagnostics.note(where, text + ", not drawn");
     }
     if (out.culled > 0)

@@ -1,6 +1,7 @@
 // rasterlab-cli run as its users run it: a separate process in a scratch folder. Checks the
 // exit codes (0 done, 1 bad input, 2 bad command line), the exact stderr lines of usage
-// errors, bad files and warnings, and the PNGs it writes, pixel by pixel where it matters.
+// errors, bad files and warnings, and the PNGs it writes, pixel by pixel where it matters;
+// for `render` (course scenes) and `run` (command files of seed 001).
 #include <QtTest>
 
 #include <QDir>
@@ -92,6 +93,11 @@ qsizetype countTrue(const QVector<bool>& mask) {
 
 const char* const kTryHelp = "Try 'rasterlab-cli --help' for more information.";
 
+// The note a camera file in the UFPE layout gets (%1: the file's path).
+const QString kUfpeCameraNote = QStringLiteral(
+    "%1: note: read as a UFPE camera, C; N; V; d hx hy (no line contains '=' and the 4 lines "
+    "have 3, 3, 3, 3 numbers, as in that layout)");
+
 }  // namespace
 
 class TestCli : public QObject {
@@ -113,6 +119,7 @@ private slots:
     void warnings_data();
     void warnings();
     void cameraFacingAway();
+    void courseVariants();
     void explainPixel_data();
     void explainPixel();
     void generateDefaultScene();
@@ -122,6 +129,10 @@ private slots:
     void help();
     void courseSamples_data();
     void courseSamples();
+    void runCommandFile();
+    void runWritesEveryImage();
+    void runBadCommandFile_data();
+    void runBadCommandFile();
 };
 
 void TestCli::initTestCase() {
@@ -298,6 +309,29 @@ void TestCli::usageErrors_data() {
         << QStringList({"render", "--output"}) << "Missing value after '--output'.";
     QTest::newRow("generate without dir")
         << QStringList({"generate-default-scene"}) << "generate-default-scene needs --dir DIR";
+    QTest::newRow("unknown camera format")
+        << (QStringList({"render", "--camera", "c.cfg", "--camera-format", "ufrpe7"}) + out)
+        << "--camera-format expects auto, ufpe, ufrpe6, ufrpe5 or keyvalue, found 'ufrpe7'";
+    QTest::newRow("camera format in capitals")
+        << (QStringList({"render", "--camera", "c.cfg", "--camera-format", "UFPE"}) + out)
+        << "--camera-format expects auto, ufpe, ufrpe6, ufrpe5 or keyvalue, found 'UFPE'";
+    QTest::newRow("unknown lighting format")
+        << (QStringList({"render", "--lighting", "l.txt", "--lighting-format", "multi2"}) + out)
+        << "--lighting-format expects auto, ufpe, multi, ufrpe or keyvalue, found 'multi2'";
+    QTest::newRow("camera format without a camera")
+        << (QStringList({"render", "--camera-format", "keyvalue"}) + out)
+        << "--camera-format applies to the file of --camera, which is not given";
+    QTest::newRow("lighting format without lighting")
+        << (QStringList({"render", "--camera", "c.cfg", "--lighting-format", "multi"}) + out)
+        << "--lighting-format applies to the file of --lighting, which is not given";
+    QTest::newRow("run without a file") << QStringList({"run"}) << "run needs a command file";
+    QTest::newRow("run with two files")
+        << QStringList({"run", "a.txt", "b.txt"}) << "run takes one command file, found 2";
+    QTest::newRow("run, pixel limit zero")
+        << QStringList({"run", "a.txt", "--max-pixels", "0"})
+        << "--max-pixels expects a positive whole number, found '0'";
+    QTest::newRow("run, outdir without value")
+        << QStringList({"run", "a.txt", "--outdir"}) << "Missing value after '--outdir'.";
 }
 
 void TestCli::usageErrors() {
@@ -320,7 +354,7 @@ void TestCli::badInputFiles_data() {
     QTest::addColumn<QString>("option");
     QTest::addColumn<QString>("fileName");
     QTest::addColumn<QByteArray>("content");
-    QTest::addColumn<QString>("message");  // %1: the file's path
+    QTest::addColumn<QString>("message");  // %1: the file's path; lines apart with '\n'
 
     // Line 3 is "1.0   a 0.0": the 'a' is at column 7.
     QTest::newRow("letter for a coordinate")
@@ -336,18 +370,28 @@ void TestCli::badInputFiles_data() {
         << "--object"
         << "zero.byu" << QByteArray("3 1\n0 0 0\n1 0 0\n0 1 0\n0 1 2\n")
         << "%1:5:1: triangle 1 refers to vertex 0, but indices are 1-based (1 to 3)";
-    // A blank first line: N is on line 3; the error points at the start of its line.
+    // A blank first line: N is on line 3; the error points at the start of its line. The
+    // camera was read (its layout noted); the render refuses it.
     QTest::newRow("camera N zero")
         << "--camera"
         << "n-zero.cfg" << QByteArray("\n0 -380 330\n  0 0 0\n0 0 1\n1 0.4 0.3\n")
-        << "%1:3:1: N, the view direction, is the zero vector: it must point from the camera "
-           "toward the scene";
+        << kUfpeCameraNote +
+               "\n%1:3:1: N, the view direction, is the zero vector: it must point from the "
+               "camera toward the scene";
     // Line 4 is "1   0 0.3": hx is at column 5.
     QTest::newRow("camera hx zero")
         << "--camera"
         << "hx-zero.cfg" << QByteArray("0 -380 330\n0 380 -330\n0 0 1\n1   0 0.3\n")
-        << "%1:4:5: hx, the horizontal half-size of the window, is 0: the projection (d/hx) x/z "
-           "divides by it";
+        << kUfpeCameraNote +
+               "\n%1:4:5: hx, the horizontal half-size of the window, is 0: the projection "
+               "(d/hx) x/z divides by it";
+    // Five lines with 3, 3, 3, 1, 2 numbers: no camera layout fits, none is one line away.
+    QTest::newRow("camera in no layout")
+        << "--camera"
+        << "swapped.cfg" << QByteArray("0 -380 330\n0 380 -330\n0 0 1\n1\n0.4 0.3\n")
+        << "%1:1:1: expected a camera in one of the layouts UFPE (C; N; V; d hx hy), UFRPE (N; "
+           "V; d; hx; hy; C), UFRPE (C; N; V; hx hy; d) or key = value, found 5 lines with 3, 3, "
+           "3, 1, 2 numbers";
     // kd (line 4) written with a decimal comma.
     QTest::newRow("lighting decimal comma")
         << "--lighting"
@@ -375,7 +419,7 @@ void TestCli::badInputFiles() {
     QVERIFY(!path.isEmpty());
     CliRun run;
     RUN_CLI(run, QStringList({"render", option, path, "--output", "out.png"}), dir.path());
-    QCOMPARE(linesOf(run.err), QStringList(message.arg(path)));
+    QCOMPARE(linesOf(run.err), message.arg(path).split(QLatin1Char('\n')));
     QCOMPARE(run.exitCode, 1);
     QVERIFY(!QFile::exists(dir.filePath("out.png")));
 }
@@ -421,7 +465,7 @@ void TestCli::warnings_data() {
     QTest::addColumn<QString>("option");
     QTest::addColumn<QString>("fileName");
     QTest::addColumn<QByteArray>("content");
-    QTest::addColumn<QString>("warning");  // %1: the file's path
+    QTest::addColumn<QString>("warning");  // %1: the file's path; lines apart with '\n'
 
     QTest::newRow("unused vertex")
         << "--object"
@@ -431,12 +475,17 @@ void TestCli::warnings_data() {
     QTest::newRow("negative hx")
         << "--camera"
         << "mirror.cfg" << QByteArray("0 -380 330\n0 380 -330\n0 0 1\n1 -0.4 0.3\n")
-        << "%1:4:3: warning: hx is negative: the image is mirrored left to right";
-    // Line 2 is "0 380 -330 7": the extra 7 is at column 12.
+        << kUfpeCameraNote +
+               "\n%1:4:3: warning: hx is negative: the image is mirrored left to right";
+    // Line 2 is "0 380 -330 7": the extra 7 is at column 12. 3, 4, 3, 3 numbers fit no layout,
+    // but UFPE's but for line 2: read as UFPE, whose reader names the extra value.
     QTest::newRow("extra value after N")
         << "--camera"
         << "extra.cfg" << QByteArray("0 -380 330\n0 380 -330 7\n0 0 1\n1 0.4 0.3\n")
-        << "%1:2:12: warning: ignored 1 value after N";
+        << "%1: note: read as a UFPE camera, C; N; V; d hx hy (no line contains '=' and the 4 "
+           "lines have 3, 4, 3, 3 numbers: no layout fits exactly, and this one is one line away "
+           "(line 2 has 4 numbers where N needs 3 numbers))\n"
+           "%1:2:12: warning: ignored 1 value after N";
 }
 
 void TestCli::warnings() {
@@ -451,7 +500,7 @@ void TestCli::warnings() {
     CliRun run;
     RUN_CLI(run, QStringList({"render", option, path, "--size", "160x120", "--output", "out.png"}),
             dir.path());
-    QCOMPARE(linesOf(run.err), QStringList(warning.arg(path)));
+    QCOMPARE(linesOf(run.err), warning.arg(path).split(QLatin1Char('\n')));
     QCOMPARE(run.exitCode, 0);
     QVERIFY(run.out.contains(
         QStringLiteral("wrote %1 (image, 160x120)").arg(printedPath(dir, "out.png"))));
@@ -470,8 +519,9 @@ void TestCli::cameraFacingAway() {
             QStringList({"render", "--camera", path, "--size", "200x150", "--output", "out.png"}),
             dir.path());
     QCOMPARE(linesOf(run.err),
-             QStringList("trefoil.byu: warning: every triangle is behind the camera (is N "
-                         "pointing away from the object?): the image is empty"));
+             QStringList({kUfpeCameraNote.arg(path),
+                          "trefoil.byu: warning: every triangle is behind the camera (is N "
+                          "pointing away from the object?): the image is empty"}));
     QCOMPARE(run.exitCode, 0);
     QVERIFY2(run.out.contains(QStringLiteral("  7776 triangles, phong shading, 0 pixels covered")),
              qPrintable(run.out));
@@ -482,6 +532,85 @@ void TestCli::cameraFacingAway() {
             if (image.pixel(x, y) != qRgba(0, 0, 0, 255))
                 QFAIL(qPrintable(
                     QStringLiteral("pixel (%1, %2) is not the background").arg(x).arg(y)));
+}
+
+// The course variants from the command line: a key = value file holding both the default
+// scene's camera and its lighting renders the default image byte for byte, with a note for
+// each part; a layout given with --camera-format is used as given, and a wrong one names the
+// layout detection would choose; a Bezier surface object is evaluated.
+void TestCli::courseVariants() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString scene = writeFixture(dir, "scene.txt",
+                                       "C = 0 -380 330\nN = 0 380 -330\nV = 0 0 1\nU = 1 0 0\n"
+                                       "d = 1\nhx = 0.4\nhy = 0.3\n"
+                                       "Iamb = 60 60 72\nKa = 0.35\nIl = 255 248 235\n"
+                                       "Pl = -260 -420 520\nKd = 0.85 0.85 0.85\n"
+                                       "Od = 0.88 0.42 0.18\nKs = 0.6\neta = 40\n");
+    QVERIFY(!scene.isEmpty());
+    CliRun run;
+    RUN_CLI(run, QStringList({"render", "--size", "200x150", "--output", "default.png"}),
+            dir.path());
+    QCOMPARE(run.exitCode, 0);
+    RUN_CLI(run,
+            QStringList({"render", "--camera", scene, "--lighting", scene, "--size", "200x150",
+                         "--output", "keyvalue.png"}),
+            dir.path());
+    QCOMPARE(run.exitCode, 0);
+    QCOMPARE(linesOf(run.err),
+             QStringList({scene + ": note: read as a key = value camera (lines contain '=')",
+                          scene + ":4:1: note: ignored U: the camera's axes come from N and V",
+                          scene + ": note: read as a key = value lighting file (lines contain "
+                                  "'=')"}));
+    const QImage reference(dir.filePath("default.png"));
+    const QImage keyValue(dir.filePath("keyvalue.png"));
+    QVERIFY(!reference.isNull());
+    QVERIFY(countTrue(coverage(reference)) > 1000);
+    QVERIFY(keyValue == reference);
+
+    // The default camera as six UFRPE lines, read with the layout given.
+    const QString ufrpe6 =
+        writeFixture(dir, "camera6.txt", "0 380 -330\n0 0 1\n1\n0.4\n0.3\n0 -380 330\n");
+    RUN_CLI(run,
+            QStringList({"render", "--camera", ufrpe6, "--camera-format", "ufrpe6", "--size",
+                         "200x150", "--output", "ufrpe6.png"}),
+            dir.path());
+    QCOMPARE(run.exitCode, 0);
+    QCOMPARE(linesOf(run.err),
+             QStringList(ufrpe6 + ": note: read as a UFRPE camera, N; V; d; hx; hy; C (the "
+                                  "layout was chosen, not detected)"));
+    QVERIFY(QImage(dir.filePath("ufrpe6.png")) == reference);
+
+    // The same file forced into the five-line layout: that layout's error, then the hint.
+    RUN_CLI(run,
+            QStringList({"render", "--camera", ufrpe6, "--camera-format", "ufrpe5", "--output",
+                         "wrong.png"}),
+            dir.path());
+    QCOMPARE(run.exitCode, 1);
+    QCOMPARE(
+        linesOf(run.err),
+        QStringList(ufrpe6 + ":3:2: expected 3 numbers for V, found 1; the layout was set to UFRPE "
+                             "(C; N; V; hx hy; d), but the file looks like UFRPE (N; V; d; hx; hy; "
+                             "C) (no line contains '=' and the 6 lines have 3, 3, 1, 1, 1, 3 "
+                             "numbers, as in that layout)"));
+    QVERIFY(!QFile::exists(dir.filePath("wrong.png")));
+
+    // A course Bezier surface as the object.
+    const QString surface = writeFixture(dir, "superficie.byu",
+                                         "1 2\n4\n-150 -150 400\n-50 -150 200\n50 -150 -100\n"
+                                         "-150 -50 100\n-50 -50 300\n50 -50 0\n");
+    RUN_CLI(run,
+            QStringList(
+                {"render", "--object", surface, "--size", "200x150", "--output", "surface.png"}),
+            dir.path());
+    QCOMPARE(run.exitCode, 0);
+    QCOMPARE(linesOf(run.err).value(0),
+             surface +
+                 ": note: read as a course Bezier surface (the header 'm n' is followed by "
+                 "a line of one number, the evaluations per direction): degrees 1 x 2, "
+                 "evaluated on a 4 x 4 grid into 16 vertices and 18 triangles");
+    QVERIFY2(run.out.contains(QStringLiteral("  18 triangles, phong shading, ")),
+             qPrintable(run.out));
 }
 
 void TestCli::explainPixel_data() {
@@ -651,6 +780,8 @@ void TestCli::help_data() {
         << QStringList({"render", "--help"}) << 0 << "Usage: rasterlab-cli render [options]";
     QTest::newRow("generate --help") << QStringList({"generate-default-scene", "--help"}) << 0
                                      << "Usage: rasterlab-cli generate-default-scene [options]";
+    QTest::newRow("run --help") << QStringList({"run", "--help"}) << 0
+                                << "Usage: rasterlab-cli run [options] FILE";
     QTest::newRow("no arguments") << QStringList() << 2
                                   << "Usage: rasterlab-cli <command> [options]";
 }
@@ -669,7 +800,8 @@ void TestCli::help() {
     QVERIFY(out.size() > 2);
     QCOMPARE(out.first(), usage);
     if (arguments.value(0) == QStringLiteral("render"))
-        for (const char* option : {"--output", "--size", "--shading", "--explain-pixel"})
+        for (const char* option : {"--output", "--size", "--shading", "--explain-pixel",
+                                   "--camera-format", "--lighting-format"})
             QVERIFY2(run.out.contains(QLatin1String(option)), option);
 }
 
@@ -728,6 +860,117 @@ void TestCli::courseSamples() {
     QVERIFY2(
         green * 10 > lit * 9,
         qPrintable(QStringLiteral("%1 of %2 lit pixels are clearly green").arg(green).arg(lit)));
+}
+
+// A command file: one triangle, screen (0, 0), (8, 0), (0, 4) of an 8x4 image, rows 0..3
+// covering 8, 6, 4 and 2 pixels, in (1, 0.5, 0.25) -> bytes (255, 127, 63); then an unknown
+// command, skipped with a note.
+void TestCli::runCommandFile() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = writeFixture(dir, "tri.txt",
+                                      "png 8 4 tri.png\nxyz -1 -1 0.5\nxyz 1 -1 0.5\n"
+                                      "xyz -1 1 0.5\ncolor 1 0.5 0.25\ntrif 1 2 3\nwobble 3\n");
+    QVERIFY(!path.isEmpty());
+    CliRun run;
+    RUN_CLI(run, QStringList({"run", path, "--outdir", "images/out"}), dir.path());
+    QCOMPARE(run.exitCode, 0);
+    QCOMPARE(linesOf(run.err),
+             QStringList(path + ":7:1: note: skipped 1 line with the unknown command 'wobble'"));
+    const QStringList out = linesOf(run.out);
+    QCOMPARE(out.size(), 2);
+    QCOMPARE(out[0],
+             QStringLiteral("wrote %1 (image, 8x4)").arg(printedPath(dir, "images/out/tri.png")));
+    static const QRegularExpression summary(
+        QStringLiteral("^  1 triangles in 1 draws, 20 pixels covered, [0-9.]+ ms$"));
+    QVERIFY2(summary.match(out[1]).hasMatch(), qPrintable(out[1]));
+
+    // 8-bit RGBA: covered pixels opaque, the others transparent black.
+    const QImage image(dir.filePath("images/out/tri.png"));
+    QVERIFY(!image.isNull());
+    QCOMPARE(image.size(), QSize(8, 4));
+    QVERIFY(image.hasAlphaChannel());
+    int opaque = 0;
+    for (int y = 0; y < 4; ++y) {
+        for (int x = 0; x < 8; ++x) {
+            const bool inside = x < 8 - 2 * y;
+            const QRgb expected = inside ? qRgba(255, 127, 63, 255) : qRgba(0, 0, 0, 0);
+            QVERIFY2(image.pixel(x, y) == expected,
+                     qPrintable(QStringLiteral("pixel (%1, %2) is #%3, expected #%4")
+                                    .arg(x)
+                                    .arg(y)
+                                    .arg(image.pixel(x, y), 8, 16, QLatin1Char('0'))
+                                    .arg(expected, 8, 16, QLatin1Char('0'))));
+            opaque += inside ? 1 : 0;
+        }
+    }
+    QCOMPARE(opaque, 20);
+    QVERIFY(!QFile::exists(dir.filePath("tri.png")));  // only into --outdir
+}
+
+void TestCli::runWritesEveryImage() {
+    // Two png commands: two images, written into the current folder without --outdir.
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QVERIFY(QDir(dir.path()).mkdir("files"));
+    const QString path = writeFixture(dir, "files/two.txt",
+                                      "png 4 4 first.png\nxyz -1 -1 0\nxyz 1 -1 0\nxyz -1 1 0\n"
+                                      "trif 1 2 3\npng 6 2 second.png\ntrif 1 2 3\ntrif 3 2 1\n");
+    QVERIFY(!path.isEmpty());
+    CliRun run;
+    RUN_CLI(run, QStringList({"run", "files/two.txt"}), dir.path());
+    QCOMPARE(run.err, QString());
+    QCOMPARE(run.exitCode, 0);
+    const QStringList out = linesOf(run.out);
+    QCOMPARE(out.size(), 4);
+    QCOMPARE(out[0], QStringLiteral("wrote %1 (image, 4x4)").arg(printedPath(dir, "first.png")));
+    // (0, 0), (4, 0), (0, 4): 4 + 3 + 2 + 1 pixels.
+    QVERIFY2(out[1].startsWith(QStringLiteral("  1 triangles in 1 draws, 10 pixels covered, ")),
+             qPrintable(out[1]));
+    QCOMPARE(out[2], QStringLiteral("wrote %1 (image, 6x2)").arg(printedPath(dir, "second.png")));
+    QVERIFY2(out[3].startsWith(QStringLiteral("  2 triangles in 1 draws, ")), qPrintable(out[3]));
+    QCOMPARE(QImage(dir.filePath("first.png")).size(), QSize(4, 4));
+    QCOMPARE(QImage(dir.filePath("second.png")).size(), QSize(6, 2));
+    QVERIFY(!QFile::exists(dir.filePath("files/first.png")));
+}
+
+void TestCli::runBadCommandFile_data() {
+    QTest::addColumn<QByteArray>("content");
+    QTest::addColumn<QString>("message");  // after "<path>:"
+    // "xyz 1 b 3": the b is at column 7.
+    QTest::newRow("letter for a number") << QByteArray("png 8 8 out.png\nxyz 1 b 3\n")
+                                         << "2:7: expected a number in 'xyz' (x y z), found 'b'";
+    // "trif 1 2 4": the 4 is at column 10.
+    QTest::newRow("index out of range")
+        << QByteArray("png 8 8 out.png\nxyz 0 0 0\nxyz 1 0 0\nxyz 0 1 0\ntrif 1 2 4\n")
+        << "5:10: 'trif' refers to vertex 4, but only 3 vertices are defined so far";
+    QTest::newRow("drawing before png")
+        << QByteArray("xyz 0 0 0\nxyz 1 0 0\nxyz 0 1 0\ntrif 1 2 3\npng 8 8 out.png\n")
+        << "4:1: expected a 'png width height file' command before 'trif'";
+    // "png 8 -8 out.png": the -8 is at column 7.
+    QTest::newRow("bad png size") << QByteArray("png 8 -8 out.png\n")
+                                  << "1:7: expected the image height (a whole number from 1 to "
+                                     "65536), found '-8'";
+    QTest::newRow("trit without a texture")
+        << QByteArray("png 8 8 out.png\nxyz 0 0 0\nxyz 1 0 0\nxyz 0 1 0\ntrit 1 2 3\n")
+        << "5:1: 'trit' needs a texture: expected a 'texture file.png' command before it";
+    QTest::newRow("no png") << QByteArray("xyz 0 0 0\n")
+                            << "2:1: expected a 'png width height file' command, found none";
+}
+
+void TestCli::runBadCommandFile() {
+    QFETCH(QByteArray, content);
+    QFETCH(QString, message);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = writeFixture(dir, "bad.txt", content);
+    QVERIFY(!path.isEmpty());
+    CliRun run;
+    RUN_CLI(run, QStringList({"run", path, "--outdir", "out"}), dir.path());
+    QCOMPARE(run.exitCode, 1);
+    QCOMPARE(linesOf(run.err), QStringList(path + QLatin1Char(':') + message));
+    QCOMPARE(run.out, QString());
+    QVERIFY(!QFile::exists(dir.filePath("out/out.png")));
 }
 
 QTEST_GUILESS_MAIN(TestCli)

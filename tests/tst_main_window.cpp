@@ -3,6 +3,7 @@
 // image; and its render controller always ends with the newest request.
 #include <QtTest>
 
+#include <QMenu>
 #include <QThreadPool>
 
 #include <QDockWidget>
@@ -87,6 +88,8 @@ private slots:
     void docks();
     void newestRequestWins();
     void failedRenderKeepsTheLastImage();
+    void commandFile();
+    void courseFileLayouts();
     void controllerDestroyedWhileRendering();
 };
 
@@ -99,7 +102,8 @@ void TestMainWindow::defaultScene() {
     QSignalSpy spy(window.controller(), &RenderController::frameReady);
     WAIT_FOR_FIRST_FRAME(spy);
     QCOMPARE(spy.count(), 1);
-    QCOMPARE(window.windowTitle(), QStringLiteral("RasterLab"));
+    // The window names what it shows: the object, or the command file.
+    QCOMPARE(window.windowTitle(), QStringLiteral("trefoil.byu (built in) - RasterLab"));
     QVERIFY(window.document().isLoaded());
 
     const QImage& image = window.currentImage();
@@ -453,6 +457,77 @@ void TestMainWindow::controllerDestroyedWhileRendering() {
     delete controller;
     QThreadPool::globalInstance()->waitForDone();
     QCoreApplication::processEvents();
+}
+
+void TestMainWindow::commandFile() {
+    MainWindow window;
+    QSignalSpy spy(window.controller(), &RenderController::frameReady);
+    WAIT_FOR_FIRST_FRAME(spy);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    // Two images; the first is shown; a red triangle over the left half of a 20x10 image.
+    const QString path = writeFixture(dir, QStringLiteral("two.txt"),
+                                      "png 20 10 first.png\ncolor 1 0 0\nxyz -1 -1 0\n"
+                                      "xyz 0 -1 0\nxyz -1 1 0\ntrif 1 2 3\n"
+                                      "png 8 8 second.png\ntrif 1 2 3\n");
+    QVERIFY(window.openCommandFile(path));
+    QVERIFY2(spy.wait(kFrameTimeoutMs), "no frame for the command file");
+    const RenderedFrame frame = frameAt(spy, spy.count() - 1);
+    QCOMPARE(frame.image.size(), QSize(20, 10));
+    QCOMPARE(frame.image.pixelColor(1, 1), QColor(255, 0, 0, 255));
+    QCOMPARE(frame.image.pixelColor(19, 9).alpha(), 0);  // untouched: transparent
+    QCOMPARE(window.windowTitle(), QStringLiteral("two.txt - RasterLab"));
+    QVERIFY(window.document().showsCommandFile());
+    QCOMPARE(window.document().imageNames(), QStringList({"first.png", "second.png"}));
+    auto* imageMenu = window.findChild<QMenu*>(QStringLiteral("imageMenu"));
+    QVERIFY(imageMenu && imageMenu->isEnabled());
+    QCOMPARE(imageMenu->actions().size(), 2);
+    imageMenu->actions().at(1)->trigger();
+    QVERIFY2(spy.wait(kFrameTimeoutMs), "no frame for the second image");
+    QCOMPARE(frameAt(spy, spy.count() - 1).image.size(), QSize(8, 8));
+    // A bad command file keeps what is shown.
+    const QString bad =
+        writeFixture(dir, QStringLiteral("bad.txt"), "png 8 8 x.png\nxyz 1 two 3\n");
+    const int frames = int(spy.count());
+    QVERIFY(!window.openCommandFile(bad));
+    QCOMPARE(
+        window.messages()->item(0)->text(),
+        QStringLiteral("Error: %1:2:7: expected a number in 'xyz' (x y z), found 'two'").arg(bad));
+    QVERIFY(!spy.wait(300));
+    QCOMPARE(int(spy.count()), frames);
+    QCOMPARE(window.document().imageIndex(), 1);
+    // Opening a course part shows the course scene again.
+    QVERIFY(window.openPart(SceneDocument::Part::Camera,
+                            rasterlab::defaultScenePath(rasterlab::CoursePart::Camera)));
+    QVERIFY(!window.document().showsCommandFile());
+}
+
+void TestMainWindow::courseFileLayouts() {
+    MainWindow window;
+    QSignalSpy spy(window.controller(), &RenderController::frameReady);
+    WAIT_FOR_FIRST_FRAME(spy);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    // The default camera as UFRPE six lines: N; V; d; hx; hy; C. Detected, with a note.
+    const QString path = writeFixture(dir, QStringLiteral("six.cfg"),
+                                      "0 380 -330\n0 0 1\n1\n0.4\n0.3\n0 -380 330\n");
+    QVERIFY(window.openPart(SceneDocument::Part::Camera, path));
+    QVERIFY2(spy.wait(kFrameTimeoutMs), "no frame for the camera");
+    QCOMPARE(window.document().parts().camera.c, rl::dvec3(0, -380, 330));
+    bool noted = false;
+    for (int i = 0; i < window.messages()->count(); ++i)
+        noted =
+            noted || window.messages()->item(i)->text().contains(QStringLiteral("six.cfg: note:"));
+    QVERIFY(noted);
+    // Forcing the UFPE layout does not fit the file: an error, the camera stays.
+    QVERIFY(!window.setCameraLayout(rl::CameraLayout::Ufpe));
+    QVERIFY(window.messages()->item(0)->text().startsWith(QStringLiteral("Error: ") + path));
+    QCOMPARE(window.document().parts().camera.c, rl::dvec3(0, -380, 330));
+    QCOMPARE(window.document().cameraLayout(), rl::CameraLayout::Ufpe);
+    // Back to detection: it reads again.
+    QVERIFY(window.setCameraLayout(rl::CameraLayout::Auto));
+    auto* menu = window.findChild<QMenu*>(QStringLiteral("layoutMenu"));
+    QVERIFY(menu);
 }
 
 QTEST_MAIN(TestMainWindow)

@@ -232,8 +232,9 @@ private slots:
         const DrawProjection& dp = pr.draws[0];
         const auto& normals = plain->normals->draws[0].vertex;
         auto litAt = [&](std::uint32_t v) {
-            return phong(scene.draws[0].material, scene.draws[0].material.od, scene.ambientIntensity,
-                         plain->view->lights.data(), 1, vec3(dp.pView[v]), normals[v], true)
+            return phong(scene.draws[0].material, scene.draws[0].material.od,
+                         scene.ambientIntensity, plain->view->lights.data(), 1, vec3(dp.pView[v]),
+                         normals[v], true)
                 .colour();
         };
         int checked = 0;

@@ -131,15 +131,15 @@ private slots:
     void flipTowardTheViewer() {
         const ViewLight light{dvec4(0.0, 0.0, 0.0, 1.0), vec3(100.0f)};
         // P' = (0,0,10), N = (0,0,1) points away from the viewer: V.N = -1 < 0, N := (0,0,-1).
-        const PhongSample s =
-            phong(unitMaterial(), vec3(1.0f), vec3(50.0f), &light, 1, vec3(0, 0, 10), vec3(0, 0, 1), true);
+        const PhongSample s = phong(unitMaterial(), vec3(1.0f), vec3(50.0f), &light, 1,
+                                    vec3(0, 0, 10), vec3(0, 0, 1), true);
         QVERIFY(s.flipped);
         RL_COMPARE_VEC(s.n, vec3(0, 0, -1), 0.0);
         // Light at the eye: N.L = 1, R = V, R.V = 1: diffuse 100, specular 100.
         RL_COMPARE_VEC(s.colour(), vec3(5.0f + 100.0f + 100.0f), 1e-4);
         // Without the flip (a convention of other formats) the light is behind the surface.
-        const PhongSample unflipped =
-            phong(unitMaterial(), vec3(1.0f), vec3(50.0f), &light, 1, vec3(0, 0, 10), vec3(0, 0, 1), false);
+        const PhongSample unflipped = phong(unitMaterial(), vec3(1.0f), vec3(50.0f), &light, 1,
+                                            vec3(0, 0, 10), vec3(0, 0, 1), false);
         QVERIFY(!unflipped.flipped);
         QVERIFY(unflipped.lightBehind);
         RL_COMPARE_VEC(unflipped.colour(), vec3(5.0f), 1e-6);
@@ -148,8 +148,8 @@ private slots:
     void lightBehindTheSurface() {
         // N = (0,0,-1) faces the viewer; the light at (0,0,20) is behind the surface z = 10.
         const ViewLight light{dvec4(0.0, 0.0, 20.0, 1.0), vec3(100.0f)};
-        const PhongSample s =
-            phong(unitMaterial(), vec3(1.0f), vec3(50.0f), &light, 1, vec3(0, 0, 10), vec3(0, 0, -1), true);
+        const PhongSample s = phong(unitMaterial(), vec3(1.0f), vec3(50.0f), &light, 1,
+                                    vec3(0, 0, 10), vec3(0, 0, -1), true);
         QVERIFY(s.lightBehind);
         QVERIFY(!s.noSpecular);
         RL_COMPARE_NEAR(s.nDotL, -1.0, 1e-6);
@@ -167,8 +167,8 @@ private slots:
         // P' = (50, 0, 10): V = (-0.98058, 0, -0.19612); N = (0,0,-1); light at (0, 0, 0):
         // L = V; R = 2 (N.V) N - V = (0.98058, 0, -0.19612); R.V = -0.96154 + 0.03846 < 0.
         const ViewLight light{dvec4(0.0, 0.0, 0.0, 1.0), vec3(100.0f)};
-        const PhongSample s =
-            phong(unitMaterial(), vec3(1.0f), vec3(0.0f), &light, 1, vec3(50, 0, 10), vec3(0, 0, -1), true);
+        const PhongSample s = phong(unitMaterial(), vec3(1.0f), vec3(0.0f), &light, 1,
+                                    vec3(50, 0, 10), vec3(0, 0, -1), true);
         QVERIFY(!s.lightBehind);
         QVERIFY(s.noSpecular);
         RL_COMPARE_NEAR(s.rDotV, -0.923077, 1e-5);
@@ -179,13 +179,13 @@ private slots:
     void degenerateVectors() {
         const ViewLight light{dvec4(0.0, 0.0, 10.0, 1.0), vec3(100.0f)};
         // Zero normal: ambient only, flagged.
-        const PhongSample noNormal =
-            phong(unitMaterial(), vec3(1.0f), vec3(50.0f), &light, 1, vec3(0, 0, 5), vec3(0.0f), true);
+        const PhongSample noNormal = phong(unitMaterial(), vec3(1.0f), vec3(50.0f), &light, 1,
+                                           vec3(0, 0, 5), vec3(0.0f), true);
         QVERIFY(noNormal.noNormal);
         RL_COMPARE_VEC(noNormal.colour(), vec3(5.0f), 0.0);
         // The light on the point itself: L = 0, ambient only, flagged; no NaN.
-        const PhongSample atPoint =
-            phong(unitMaterial(), vec3(1.0f), vec3(50.0f), &light, 1, vec3(0, 0, 10), vec3(0, 0, -1), true);
+        const PhongSample atPoint = phong(unitMaterial(), vec3(1.0f), vec3(50.0f), &light, 1,
+                                          vec3(0, 0, 10), vec3(0, 0, -1), true);
         QVERIFY(atPoint.lightAtPoint);
         RL_COMPARE_VEC(atPoint.colour(), vec3(5.0f), 0.0);
     }
@@ -198,7 +198,8 @@ private slots:
                                      {dvec4(0.0, 0.0, -1.0, 0.0), vec3(0.0f, 20.0f, 0.0f)}};
         // Light 1 at the eye, light 2 directional toward -z (behind the viewer): both have
         // N.L = 1 on the surface facing the viewer; the specular terms add up.
-        const PhongSample s = phong(m, m.od, vec3(0.0f), lights, 2, vec3(0, 0, 10), vec3(0, 0, -1), true);
+        const PhongSample s =
+            phong(m, m.od, vec3(0.0f), lights, 2, vec3(0, 0, 10), vec3(0, 0, -1), true);
         RL_COMPARE_VEC(s.specular, vec3(10.0f, 20.0f, 0.0f), 1e-5);
     }
 
