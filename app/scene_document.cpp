@@ -2,6 +2,8 @@
 
 #include <QFile>
 
+#include <new>
+
 #include "camera_basis.h"
 #include "command_file.h"
 #include "default_scene_resource.h"
@@ -34,9 +36,25 @@ bool isCommandFile(const QString& path) {
 
 }  // namespace
 
+namespace {
+
+// A load that may meet a file larger than the memory: std::bad_alloc becomes an error,
+// and the document is unchanged.
+template <typename Load>
+auto guarded(const QString& path, Load load) -> decltype(load()) {
+    try {
+        return load();
+    } catch (const std::bad_alloc&) {
+        return rl::makeError(rl::ErrorCode::Range, rl::SourceLocation{path.toStdString(), 0, 0},
+                             "not enough memory to read this file");
+    }
+}
+
+}  // namespace
+
 rl::Status SceneDocument::openCommandFile(const QString& path) {
     rl::Diagnostics diagnostics;
-    auto file = loadCommandFile(path, diagnostics);
+    auto file = guarded(path, [&] { return loadCommandFile(path, diagnostics); });
     if (!file) return file.error();
     m_commandFile = std::move(file).value();
     m_commandFilePath = path;
@@ -83,7 +101,7 @@ rl::Status SceneDocument::open(Part part, const QString& path) {
             break;
         }
         case Part::Object: {
-            auto object = loadObject(path, diagnostics);
+            auto object = guarded(path, [&] { return loadObject(path, diagnostics); });
             if (!object) return object.error();
             m_parts.object = object.value();
             break;

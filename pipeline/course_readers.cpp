@@ -695,8 +695,12 @@ FileShape shapeOf(std::string_view text) {
             ++count;
         shape.numbers.push_back(count);
         shape.lines.push_back(line.number);
+        // A line holding '=', unless it is a comment ("# d = 5", "// ...", "; ...").
+        const std::string_view first = line.tokens[0].text;
+        const bool comment =
+            first.starts_with('#') || first.starts_with("//") || first.starts_with(';');
         for (const Token& token : line.tokens)
-            if (token.text.find('=') != std::string_view::npos) shape.hasEquals = true;
+            if (!comment && token.text.find('=') != std::string_view::npos) shape.hasEquals = true;
     }
     return shape;
 }
@@ -784,6 +788,26 @@ Detection chooseLayout(const std::vector<Profile>& profiles, const FileShape& sh
     }
     Detection detection;
     const std::string shapeWhy = "no line contains '=' and " + shapeText(shape);
+    // A layout whose lines the file's first lines match exactly, with lines left over: the
+    // known quirk of data after the counts (warned about when read). The longest such
+    // layout wins, so that a stray line after a good file does not make it ambiguous.
+    const Profile* prefix = nullptr;
+    for (const Profile& profile : profiles) {
+        const std::size_t m = profile.fields.size();
+        if (m >= shape.numbers.size() || (prefix && prefix->fields.size() >= m)) continue;
+        bool match = true;
+        for (std::size_t i = 0; i < m && match; ++i)
+            match = accepts(*profile.fields[i], shape.numbers[i]);
+        if (match) prefix = &profile;
+    }
+    const bool exact =
+        std::any_of(best.begin(), best.end(), [](const auto& b) { return b.second.lines == 0; });
+    if (!exact && prefix) {
+        detection.layout = prefix->layout;
+        detection.why = shapeWhy + ": its first " + std::to_string(prefix->fields.size()) +
+                        " lines fit this layout, and the rest is left over";
+        return detection;
+    }
     for (long long wanted : {0LL, 1LL}) {
         std::vector<const std::pair<int, Distance>*> at;
         for (const auto& b : best)
@@ -876,7 +900,9 @@ Result<std::pair<Layout, std::string>> detectLayout(std::string_view text,
     if (!detection.ambiguity.empty()) found += " (" + detection.ambiguity + ")";
     return makeError(shape.numbers.empty() ? ErrorCode::MissingData : ErrorCode::Syntax,
                      startOf(text, fileName),
-                     "expected " + layoutsTried + " or key = value, found " + found);
+                     "expected " + layoutsTried + " or key = value, found " + found +
+                         " (if the layout is known, choose it by hand: --camera-format / "
+                         "--lighting-format, or File > Course File Layouts)");
 }
 
 const std::string kCamerasTried =

@@ -40,6 +40,9 @@ struct DrawState {
     bool operator==(const DrawState&) const = default;
 };
 
+// At most this many triangles in one command file (a rectbezf 10 alone makes 2 million).
+constexpr std::size_t kMaxTriangles = std::size_t(1) << 23;
+
 const char* const kKnownCommands[] = {
     "png",      "xyz",      "xyzw",    "trif",      "trig",       "trit",      "color",
     "loadmv",   "loadp",    "multmv",  "frustum",   "ortho",      "translate", "rotatex",
@@ -81,6 +84,8 @@ private:
     void addPatch(const PatchMesh& patch, Fill fill, const SourceLocation& where);
     DrawState stateFor(Fill fill, bool hasNormals, bool flatFill) const;
     void finishImage();
+    // Counts triangles against the file's limit before they are made.
+    Status reserveTriangles(std::size_t count, const SourceLocation& where);
 
     std::string_view m_text;
     LineScanner m_scanner;
@@ -107,6 +112,7 @@ private:
     bool m_flatNormals = false;  // anywhere in the file (seed 001)
 
     std::map<std::string, std::pair<int, SourceLocation>> m_unknown;
+    std::size_t m_triangleCount = 0;
 };
 
 Result<Hw2File> Hw2Reader::read() {
@@ -278,6 +284,17 @@ Draw& Hw2Reader::drawFor(const DrawState& state) {
     return scene.draws.back();
 }
 
+Status Hw2Reader::reserveTriangles(std::size_t count, const SourceLocation& where) {
+    if (m_triangleCount + count > kMaxTriangles)
+        return makeError(ErrorCode::Range, where,
+                         "this command would bring the file to " +
+                             std::to_string(m_triangleCount + count) +
+                             " triangles, more than the limit of " + std::to_string(kMaxTriangles) +
+                             " a command file may draw");
+    m_triangleCount += count;
+    return success();
+}
+
 void Hw2Reader::addTriangle(const DrawState& state, const std::array<Vertex, 3>& corners,
                             const SourceLocation& where) {
     drawFor(state);
@@ -341,7 +358,27 @@ Status Hw2Reader::command(const TextLine& line) {
         warnExtra(line, 4);
         finishImage();
         Hw2Image image;
-        image.fileName = std::string(line.tokens[3].text);
+        // The image is written beside the others: a name that reaches into folders keeps
+        // only its last part, so a command file cannot write outside the output folder.
+        const std::string asWritten(line.tokens[3].text);
+        const std::size_t slash = asWritten.find_last_of("/\\");
+        image.fileName = slash == std::string::npos ? asWritten : asWritten.substr(slash + 1);
+        if (image.fileName.empty() || image.fileName == "." || image.fileName == "..")
+            return makeError(
+                ErrorCode::Syntax, m_scanner.at(line.tokens[3]),
+                "expected an image file name after 'png width height', found " + quoted(asWritten));
+        if (image.fileName != asWritten)
+            m_diagnostics.warn(m_scanner.at(line.tokens[3]), "the image name " + quoted(asWritten) +
+                                                                 " reaches into folders: "
+                                                                 "it is written as " +
+                                                                 quoted(image.fileName) +
+                                                                 " in the output folder");
+        for (const Hw2Image& earlier : m_file.images)
+            if (earlier.fileName == image.fileName)
+                m_diagnostics.warn(m_scanner.at(line.tokens[3]),
+                                   "an earlier png command (line " +
+                                       std::to_string(earlier.where.line) + ") names " +
+                                       quoted(image.fileName) + " too: this image replaces it");
         image.where = where;
         image.scene.name = image.fileName;
         image.scene.width = static_cast<int>(size[0]);
@@ -396,6 +433,7 @@ Status Hw2Reader::command(const TextLine& line) {
         const std::array<Vertex, 3> corners = {m_vertices[idx->at(0)], m_vertices[idx->at(1)],
                                                m_vertices[idx->at(2)]};
         const bool hasNormals = corners[0].normal && corners[1].normal && corners[2].normal;
+        if (auto s = reserveTriangles(1, where); !s) return s;
         addTriangle(stateFor(fill, hasNormals, fill == Fill::Flat), corners, where);
         return success();
     }
@@ -412,6 +450,8 @@ Status Hw2Reader::command(const TextLine& line) {
             const Vertex& v = m_vertices[i];
             return PatchPoint{v.p, v.colour, v.st};
         };
+        const std::size_t cells = std::size_t(1) << (2 * subd.value());  // 4^subd
+        if (auto s = reserveTriangles(rect ? 2 * cells : cells, where); !s) return s;
         PatchMesh patch;
         if (rect) {
             std::array<PatchPoint, 16> control;

@@ -96,10 +96,12 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             dvec2 snapped(snap(exact.x, scene.rules), snap(exact.y, scene.rules));
             // An infinite coordinate (w = 0 under the naive projection) stays infinite, so the
             // triangle is dropped as NonFinite instead of being pulled in to the guard band.
+            // Clipping keeps drawn vertices inside the guard band; only the naive projection
+            // (which does not clip) can bring one from beyond it, pulled in and counted.
             if (finite2(snapped) &&
                 (std::abs(snapped.x) > kGuardBand || std::abs(snapped.y) > kGuardBand)) {
                 snapped = glm::clamp(snapped, dvec2(-kGuardBand), dvec2(kGuardBand));
-                ++out.outsideGuardBand;
+                if (out.mode == NearPlane::Mode::Naive) ++out.outsideGuardBand;
             }
             proj.pScreen[i] = snapped;
             proj.depth[i] = static_cast<float>(
@@ -118,12 +120,40 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             if (!clipNear || proj.pClip[i].w >= out.nearW) project(i);
 
         // The planes a triangle is clipped against, each as a signed distance (inside >= 0):
-        // the draw's clip planes in view space, then the near plane in clip space.
-        const std::size_t planeCount = draw.clipPlanes.size() + (clipNear ? 1 : 0);
+        // the draw's clip planes (view space); the near plane w = near (clip space; with
+        // SameSide only for a triangle whose w differ in sign); and the guard band, four
+        // planes |x| <= gx |w|, |y| <= gy |w| that keep every vertex within 2^28 pixels of
+        // the image without bending an edge (side is the sign of the triangle's w).
+        const std::size_t userPlanes = draw.clipPlanes.size();
+        const std::size_t nearPlane = userPlanes;
+        const std::size_t firstGuard = userPlanes + 1;
+        const double gx = kGuardBand / width, gy = kGuardBand / height;
+        bool nearActive = clipNear;
+        double side = 1.0;
         auto distance = [&](std::size_t plane, std::uint32_t v) {
-            if (plane < draw.clipPlanes.size())
-                return glm::dot(draw.clipPlanes[plane], proj.pView[v]);
-            return proj.pClip[v].w - out.nearW;
+            if (plane < userPlanes) return glm::dot(draw.clipPlanes[plane], proj.pView[v]);
+            const dvec4& c = proj.pClip[v];
+            switch (plane - nearPlane) {
+                case 0:
+                    return c.w - out.nearW;
+                case 1:
+                    return side * gx * c.w - c.x;
+                case 2:
+                    return side * gx * c.w + c.x;
+                case 3:
+                    return side * gy * c.w - c.y;
+                default:
+                    return side * gy * c.w + c.y;
+            }
+        };
+        // The planes that apply to the current triangle, in order.
+        std::vector<std::size_t> planes;
+        auto choosePlanes = [&] {
+            planes.clear();
+            for (std::size_t k = 0; k < userPlanes; ++k) planes.push_back(k);
+            if (nearActive) planes.push_back(nearPlane);
+            if (out.mode != NearPlane::Mode::Naive)
+                for (std::size_t k = 0; k < 4; ++k) planes.push_back(firstGuard + k);
         };
         // A vertex where the edge from a (inside) to b (outside) crosses a plane. Always
         // computed from the inside vertex, so two triangles sharing the edge get the same
@@ -135,7 +165,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             const auto index = static_cast<std::uint32_t>(proj.pView.size());
             const dvec4 pView = glm::mix(proj.pView[a], proj.pView[b], t);
             dvec4 pClip = glm::mix(proj.pClip[a], proj.pClip[b], t);
-            if (plane == draw.clipPlanes.size()) pClip.w = out.nearW;  // exactly on it
+            if (plane == nearPlane) pClip.w = out.nearW;  // exactly on it
             proj.pView.push_back(pView);
             proj.pClip.push_back(pClip);
             proj.generated.push_back({a, b, t});
@@ -172,28 +202,39 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                 for (std::uint32_t v : tri) throughZero = throughZero || proj.pClip[v].w <= 0.0;
                 out.throughZeroOrBehind += throughZero ? 1 : 0;
             } else if (out.mode == NearPlane::Mode::SameSide) {
+                // Divided by w as they are when all w have one sign; a triangle across w = 0
+                // keeps its part in front of the near plane.
                 const auto positive = [&](std::uint32_t v) { return proj.pClip[v].w > 0.0; };
                 const auto negative = [&](std::uint32_t v) { return proj.pClip[v].w < 0.0; };
-                if (!std::all_of(tri.begin(), tri.end(), positive) &&
-                    !std::all_of(tri.begin(), tri.end(), negative)) {
-                    proj.fate[t] = TriangleFate::NonFinite;
-                    ++out.acrossInfinity;
-                    continue;
-                }
+                const bool allNegative = std::all_of(tri.begin(), tri.end(), negative);
+                nearActive = !allNegative && !std::all_of(tri.begin(), tri.end(), positive);
+                side = allNegative ? -1.0 : 1.0;
+                out.acrossInfinity += nearActive ? 1 : 0;
             }
+            choosePlanes();
             // Which planes cut the triangle, and is it wholly outside one of them?
             bool cut = false;
-            std::size_t outsidePlane = planeCount;
-            for (std::size_t plane = 0; plane < planeCount && outsidePlane == planeCount; ++plane) {
+            std::size_t outsidePlane = SIZE_MAX;
+            for (std::size_t plane : planes) {
                 int inside = 0;
                 for (std::uint32_t v : tri) inside += distance(plane, v) >= 0.0 ? 1 : 0;
-                if (inside == 0) outsidePlane = plane;
+                if (inside == 0) {
+                    outsidePlane = plane;
+                    break;
+                }
                 cut = cut || inside < 3;
             }
-            if (outsidePlane < planeCount) {
-                const bool near = outsidePlane == draw.clipPlanes.size();
-                proj.fate[t] = near ? TriangleFate::Behind : TriangleFate::ClippedAway;
-                ++(near ? out.behind : out.clippedAway);
+            if (outsidePlane != SIZE_MAX) {
+                if (outsidePlane == nearPlane) {
+                    proj.fate[t] = TriangleFate::Behind;
+                    ++out.behind;
+                } else if (outsidePlane < userPlanes) {
+                    proj.fate[t] = TriangleFate::ClippedAway;
+                    ++out.clippedAway;
+                } else {
+                    proj.fate[t] = TriangleFate::BeyondGuardBand;  // far off the image
+                    ++out.beyondGuardBand;
+                }
                 continue;
             }
             if (!cut) {
@@ -207,7 +248,8 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             // the vertices inside and add one where an edge crosses the plane. Winding is
             // preserved; the polygon left is cut into a fan.
             polygon.assign(tri.begin(), tri.end());
-            for (std::size_t plane = 0; plane < planeCount && polygon.size() >= 3; ++plane) {
+            for (std::size_t plane : planes) {
+                if (polygon.size() < 3) break;
                 clipped.clear();
                 for (std::size_t k = 0; k < polygon.size(); ++k) {
                     const std::uint32_t a = polygon[k];
@@ -256,8 +298,9 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             if (out.clippedAway > 0)
                 text += " and " + std::to_string(out.clippedAway) + " wholly outside a clip plane";
         } else {
-            text +=
-                "the clip planes; " + std::to_string(out.clippedAway) + " lie wholly outside one";
+            text += std::string(planes ? "the clip planes or " : "") +
+                    "the guard band 2^28 pixels around the image; " +
+                    std::to_string(out.clippedAway) + " lie wholly outside a clip plane";
         }
         diagnostics.note(where, text + ", not drawn");
     }
@@ -265,9 +308,10 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
         diagnostics.note(where, countOf(out.culled, "triangle is", "triangles are") +
                                     " clockwise on screen and culled");
     if (out.acrossInfinity > 0) {
-        diagnostics.warn(where, countOf(out.acrossInfinity, "triangle has", "triangles have") +
-                                    " vertices on both sides of w = 0 (in front of and behind "
-                                    "the eye) and would wrap through infinity: not drawn");
+        diagnostics.note(where, countOf(out.acrossInfinity, "triangle reaches", "triangles reach") +
+                                    " from in front of the eye to at or behind it (w of "
+                                    "different signs): only the part with w >= " +
+                                    formatNumber(out.nearW) + " is drawn");
     }
     if (out.mode == NearPlane::Mode::Naive && out.throughZeroOrBehind > 0) {
         diagnostics.warn(where, "naive projection: " + std::to_string(out.throughZeroOrBehind) +

@@ -31,12 +31,13 @@
 namespace rl {
 
 enum class TriangleFate : std::uint8_t {
-    Inside,       // wholly inside every plane: projected as is
-    Clipped,      // crossed the near plane or a clip plane: the part inside is drawn
-    Behind,       // wholly at or behind the near plane: not drawn
-    ClippedAway,  // wholly outside one of the draw's clip planes: not drawn
-    Culled,       // clockwise on screen in a draw with cull set: not drawn
-    NonFinite,    // a coordinate is NaN or infinite (only with the naive projection)
+    Inside,           // wholly inside every plane: projected as is
+    Clipped,          // crossed the near plane or a clip plane: the part inside is drawn
+    Behind,           // wholly at or behind the near plane: not drawn
+    ClippedAway,      // wholly outside one of the draw's clip planes: not drawn
+    Culled,           // clockwise on screen in a draw with cull set: not drawn
+    BeyondGuardBand,  // wholly more than 2^28 pixels off the image: not drawn
+    NonFinite,        // a coordinate is NaN or infinite (only with the naive projection)
 };
 
 // A vertex made by clipping: the point lerp(pView[a], pView[b], t), with a inside the plane
@@ -76,7 +77,8 @@ struct Projection {
 
     std::size_t inside = 0, clipped = 0, behind = 0, clippedAway = 0, culled = 0, nonFinite = 0;
     std::size_t throughZeroOrBehind = 0;  // naive projection: triangles with a vertex w <= 0
-    std::size_t acrossInfinity = 0;       // SameSide: triangles whose w differ in sign
+    std::size_t acrossInfinity = 0;       // SameSide: triangles whose w differ in sign (clipped)
+    std::size_t beyondGuardBand = 0;      // wholly more than 2^28 pixels off the image
     std::size_t outsideGuardBand = 0;     // vertices pulled in to the guard band
 };
 

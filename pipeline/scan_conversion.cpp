@@ -23,8 +23,10 @@ T ceilDiv(T a, T b) {
     return -floorDiv<T>(-a, b);
 }
 
+// Snapped coordinates are exact multiples of 1/2^bits: the product is exact, and the
+// conversion to an integer only drops a zero fraction.
 std::int64_t toGrid(double pixels, int bits) {
-    return static_cast<std::int64_t>(std::llround(std::ldexp(pixels, bits)));
+    return static_cast<std::int64_t>(pixels * double(std::int64_t(1) << bits));
 }
 
 ScanEdge makeEdge(const dvec2& top, const dvec2& bottom, int bits) {

@@ -19,7 +19,8 @@ struct DrawVertices {
     std::vector<vec3> nView;     // vertex normals (zero where a vertex has none)
     std::vector<vec3> colour;    // object colours per vertex
     std::vector<vec2> texcoord;  // texture coordinates
-    std::vector<float> invW;     // 1 / clip w, for perspective-correct weights
+    std::vector<double> invW;    // 1 / clip w, for perspective-correct weights (double: a
+                                 // float 1/w would overflow for |w| < 3e-39)
 };
 
 // Values for the vertices made by clipping, interpolated from their edges' ends (which
@@ -61,7 +62,7 @@ DrawVertices drawVertices(const Draw& draw, const DrawProjection& proj, const Dr
     }
     if (perspective) {
         out.invW.reserve(proj.pClip.size());
-        for (const dvec4& p : proj.pClip) out.invW.push_back(static_cast<float>(1.0 / p.w));
+        for (const dvec4& p : proj.pClip) out.invW.push_back(1.0 / p.w);
     }
     return out;
 }
@@ -205,10 +206,11 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
     // Gouraud: the colour of a projected vertex; a vertex made by clipping takes the colour
     // interpolated along its edge, as if clipping had happened after vertex lighting.
     auto vertexColour = [&](std::uint32_t d, std::uint32_t v) -> vec3 {
+        auto& cache = vertexColours[d];
+        if (!cache.empty() && cache[v]) return *cache[v];  // the common case, kept short
         const DrawProjection& proj = projection.draws[d];
         const Draw& draw = scene.draws[d];
         const DrawVertices& dv = vertices[d];
-        auto& cache = vertexColours[d];
         if (cache.empty()) cache.resize(proj.pView.size());
         const auto lit = [&](std::uint32_t i, const auto& self) -> vec3 {
             auto& slot = cache[i];
@@ -244,13 +246,13 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
             float gamma = baryRow[x].y;
             if (perspective) {
                 // Barycentrics for attributes: each weight over its vertex's w, renormalised.
-                const float w0 = (1.0f - beta - gamma) * dv.invW[tri.v[0]];
-                const float w1 = beta * dv.invW[tri.v[1]];
-                const float w2 = gamma * dv.invW[tri.v[2]];
-                const float sum = w0 + w1 + w2;
-                if (sum != 0.0f) {
-                    beta = w1 / sum;
-                    gamma = w2 / sum;
+                const double w0 = double(1.0f - beta - gamma) * dv.invW[tri.v[0]];
+                const double w1 = double(beta) * dv.invW[tri.v[1]];
+                const double w2 = double(gamma) * dv.invW[tri.v[2]];
+                const double sum = w0 + w1 + w2;
+                if (sum != 0.0 && std::isfinite(sum)) {
+                    beta = static_cast<float>(w1 / sum);
+                    gamma = static_cast<float>(w2 / sum);
                 }
             }
             vec3 colour(0.0f);

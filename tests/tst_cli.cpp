@@ -391,7 +391,8 @@ void TestCli::badInputFiles_data() {
         << "swapped.cfg" << QByteArray("0 -380 330\n0 380 -330\n0 0 1\n1\n0.4 0.3\n")
         << "%1:1:1: expected a camera in one of the layouts UFPE (C; N; V; d hx hy), UFRPE (N; "
            "V; d; hx; hy; C), UFRPE (C; N; V; hx hy; d) or key = value, found 5 lines with 3, 3, "
-           "3, 1, 2 numbers";
+           "3, 1, 2 numbers (if the layout is known, choose it by hand: --camera-format / "
+           "--lighting-format, or File > Course File Layouts)";
     // kd (line 4) written with a decimal comma.
     QTest::newRow("lighting decimal comma")
         << "--lighting"

@@ -818,6 +818,17 @@ void TestHw2Reader::extraValuesWarned_data() {
         << QStringList{"cmd.txt:5:8: warning: ignored 1 value after 'bulb'"};
     QTest::newRow("rectbezf, complete")
         << QByteArray("rectbezf 1 1 2 3 1 2 3 1 2 3 1 2 3 1 2 3 1") << QStringList();
+    // Image names stay in the output folder; a name used twice is said.
+    QTest::newRow("png name with folders")
+        << QByteArray("png 4 4 ../../etc/b.png")
+        << QStringList{
+               "cmd.txt:5:9: warning: the image name '../../etc/b.png' reaches into "
+               "folders: it is written as 'b.png' in the output folder"};
+    QTest::newRow("png name used twice")
+        << QByteArray("png 4 4 a.png")
+        << QStringList{
+               "cmd.txt:5:9: warning: an earlier png command (line 1) names 'a.png' "
+               "too: this image replaces it"};
 }
 
 void TestHw2Reader::extraValuesWarned() {
@@ -945,6 +956,16 @@ void TestHw2Reader::errors_data() {
     QTest::newRow("texture without a name")
         << QByteArray("png 4 4 a.png\ntexture\n")
         << "cmd.txt:2:8: expected a file name after 'texture', found the end of the line";
+    QTest::newRow("png name that is only folders")
+        << QByteArray("png 4 4 out/..\n")
+        << "cmd.txt:1:9: expected an image file name after 'png width height', found 'out/..'";
+    // Five subdivision-10 patches: 10,485,760 triangles, over the limit of 2^23.
+    QByteArray patches = head;
+    for (int i = 0; i < 5; ++i) patches += "rectbezf 10 1 2 3 1 2 3 1 2 3 1 2 3 1 2 3 1\n";
+    QTest::newRow("too many triangles")
+        << patches
+        << "cmd.txt:9:1: this command would bring the file to 10485760 triangles, more than "
+           "the limit of 8388608 a command file may draw";
 }
 
 void TestHw2Reader::errors() {

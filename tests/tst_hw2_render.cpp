@@ -234,6 +234,11 @@ private slots:
     void bezierCoverage();
     void bezierColours();
 
+    void guardBandKeepsEdgesStraight();
+    void nearTheEyePlane();
+    void acrossTheEyePlane();
+    void tinyWGivesNoNaN();
+
     void referenceSamples_data();
     void referenceSamples();
     void referenceTextureDisagreement();
@@ -982,4 +987,56 @@ void TestHw2Render::referenceTextureDisagreement() {
 }
 
 QTEST_GUILESS_MAIN(TestHw2Render)
+// A vertex far off the image is clipped by the guard band, not pulled in: the edges through
+// it keep their direction, so the covered pixels do not depend on how far it is.
+void TestHw2Render::guardBandKeepsEdgesStraight() {
+    int first = -1;
+    // Along a direction whose slope passes no sample exactly (a sample exactly on an edge
+    // may fall either way once the far vertex is clipped to the band).
+    for (const char* far : {"1e6 314159.2653589793", "1e8 31415926.53589793",
+                            "1e12 314159265358.9793", "1e15 314159265358979.3"}) {
+        RENDER(frame, QByteArray("png 100 100 g.png\nxyz -1 -1 0.5\nxyz -1 1 0.5\nxyz ") + far +
+                          " 0.5\ntrif 1 2 3\n");
+        if (first < 0) first = covered(frame);
+        QCOMPARE(covered(frame), first);
+        QVERIFY(!frame.trace->diagnostics.contains("pulled in"));
+    }
+    QVERIFY(first > 8000);
+}
+
+// A vertex closing in on the eye plane (z -> 0 under a frustum): the visible part of the
+// triangle, on screen, barely changes.
+void TestHw2Render::nearTheEyePlane() {
+    std::vector<int> pixels;
+    for (const char* z : {"-1e-4", "-1e-6", "-1e-7", "-1e-8", "-1e-12"}) {
+        RENDER(frame, QByteArray("png 100 100 f.png\nfrustum -1 1 -1 1 1 10\nxyz -1 -1 -2\n"
+                                 "xyz 1 -1 -2\nxyz 0 0.5 ") +
+                          z + "\ntrif 1 2 3\n");
+        pixels.push_back(covered(frame));
+    }
+    for (int n : pixels) QCOMPARE(n, pixels.front());
+    QVERIFY(pixels.front() > 50);
+}
+
+// A floor reaching from in front of the eye to behind it (w of both signs): its part in
+// front is drawn, not the whole triangle dropped.
+void TestHw2Render::acrossTheEyePlane() {
+    RENDER(frame,
+           "png 60 60 floor.png\nfrustum -1 1 -1 1 1 10\nxyz -4 -1 -8\nxyz 4 -1 -8\n"
+           "xyz 0 -1 5\ntrif 1 2 3\n");
+    QVERIFY2(covered(frame) > 300, qPrintable(QString::number(covered(frame))));
+    QVERIFY(frame.trace->diagnostics.contains("only the part with w >= "));
+}
+
+// w so small that 1/w overflows a float: the perspective weights stay finite.
+void TestHw2Render::tinyWGivesNoNaN() {
+    RENDER(frame,
+           "png 16 16 w.png\ncolor 1 0 0\nxyzw -1e-39 -1e-39 0 1e-39\n"
+           "xyzw 1e-39 -1e-39 0 1e-39\nxyz 0 1 0\ntrig 1 2 3\n");
+    for (const vec3& c : frame.trace->shading->colour.pixels())
+        QVERIFY(std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b));
+    QVERIFY(covered(frame) > 0);
+    QCOMPARE(pixel(frame, 8, 12), kRed);
+}
+
 #include "tst_hw2_render.moc"

@@ -228,7 +228,8 @@ private slots:
         QTest::addColumn<int>("bits");
         QTest::addColumn<double>("offset");
         QTest::addColumn<bool>("topLeft");
-        QTest::newRow("hw2: 1/16 grid, samples at integers, top-left") << 4 << 0.0 << true;
+        QTest::newRow("hw2: 1/65536 grid, samples at integers, top-left") << 16 << 0.0 << true;
+        QTest::newRow("1/16 grid, samples at integers, top-left") << 4 << 0.0 << true;
         QTest::newRow("1/16 grid, centres at +0.5, top-left") << 4 << 0.5 << true;
         QTest::newRow("1/16 grid, centres at +0.5, inclusive") << 4 << 0.5 << false;
         QTest::newRow("integers, top-left") << 0 << 0.0 << true;
