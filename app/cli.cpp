@@ -2,6 +2,7 @@
 
 #include <QCommandLineParser>
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
 #include <QSaveFile>
@@ -9,12 +10,14 @@
 #include <new>
 #include <optional>
 
+#include "benchmark_scenes.h"
 #include "command_file.h"
 #include "default_scene.h"
 #include "default_scene_resource.h"
 #include "explain.h"
 #include "image_io.h"
 #include "output_image.h"
+#include "parallel.h"
 #include "renderer.h"
 
 namespace rasterlab {
@@ -58,6 +61,7 @@ QString generalHelp() {
         "                           Without scene files, renders the embedded default scene.\n"
         "  run FILE                 Run a command file (seed 001's png, xyz, trif ...) and\n"
         "                           write the PNGs it names.\n"
+        "  bench                    Time a scene's frames (median, min, max, per stage).\n"
         "  generate-default-scene   Write the default scene's three course files.\n"
         "\n"
         "Run 'rasterlab-cli <command> --help' for a command's options.\n");
@@ -105,39 +109,155 @@ bool writePng(const rl::Rgba8Image& image, const QString& path, QTextStream& out
     return true;
 }
 
-int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) {
-    QCommandLineParser parser;
-    parser.setApplicationDescription(lit("Render a course scene to PNG."));
-    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
-    const QCommandLineOption help({lit("h"), lit("help")}, lit("Show this help."));
-    const QCommandLineOption camera(
-        lit("camera"), lit("Camera file, in a layout --camera-format names."), lit("FILE"));
-    const QCommandLineOption cameraFormat(
+// The options that choose and set up a course scene, shared by render and bench.
+struct SceneOptions {
+    QCommandLineOption camera{lit("camera"), lit("Camera file, in a layout --camera-format names."),
+                              lit("FILE")};
+    QCommandLineOption cameraFormat{
         lit("camera-format"),
         lit("Layout of the camera file: auto (default: detected, and named in a note), ufpe "
             "(C; N; V; d hx hy), ufrpe6 (N; V; d; hx; hy; C), ufrpe5 (C; N; V; hx hy; d) or "
             "keyvalue (C = x y z, N, V, d, hx, hy in any order). Detection: key = value when a "
             "line contains '='; otherwise the layout whose lines hold as many numbers as the "
             "file's, or the one layout a single line away."),
-        lit("FORMAT"), lit("auto"));
-    const QCommandLineOption lighting(
-        lit("lighting"), lit("Lighting file, in a layout --lighting-format names."), lit("FILE"));
-    const QCommandLineOption lightingFormat(
+        lit("FORMAT"), lit("auto")};
+    QCommandLineOption lighting{
+        lit("lighting"), lit("Lighting file, in a layout --lighting-format names."), lit("FILE")};
+    QCommandLineOption lightingFormat{
         lit("lighting-format"),
         lit("Layout of the lighting file: auto (default: detected, and named in a note), ufpe "
             "(Pl; ka; Ia; kd; Od; ks; Il; n), multi (ka; Ia; kd; Od; ks; n; L; then L times Pl; "
             "Il), ufrpe (Iamb; Ka; Il; Pl; Kd; Od; Ks; n) or keyvalue (Iamb = r g b, Ka, Il, Pl, "
             "Kd, Od, Ks, eta in any order). One key = value file may hold both the camera and "
             "the lighting."),
-        lit("FORMAT"), lit("auto"));
-    const QCommandLineOption object(
+        lit("FORMAT"), lit("auto")};
+    QCommandLineOption object{
         lit("object"),
         lit("Object file (.byu: a triangle mesh, a course Bezier surface or a Movie.BYU file)."),
-        lit("FILE"));
-    const QCommandLineOption size(lit("size"), lit("Image size, default 800x600."), lit("WxH"),
-                                  lit("800x600"));
-    const QCommandLineOption shading(lit("shading"), lit("phong (default), flat or gouraud."),
-                                     lit("MODEL"), lit("phong"));
+        lit("FILE")};
+    QCommandLineOption size{lit("size"), lit("Image size, default 800x600."), lit("WxH"),
+                            lit("800x600")};
+    QCommandLineOption shading{lit("shading"), lit("phong (default), flat or gouraud."),
+                               lit("MODEL"), lit("phong")};
+    QCommandLineOption near{lit("near"),
+                            lit("View-space z of the near plane (default: 0.001 times the "
+                                "farthest vertex's z)."),
+                            lit("Z")};
+    QCommandLineOption naive{lit("naive-projection"),
+                             lit("Divide by z even at or behind the camera, without clipping "
+                                 "(shows why clipping exists).")};
+    QCommandLineOption backFaces{
+        lit("back-faces"),
+        lit("draw (default for course files): draw every triangle, as seed 000 does; cull "
+            "(default for --scene): leave out the triangles of a closed surface that face away "
+            "from the camera when the camera is outside it and nothing cuts the surface open "
+            "(hidden but for a few silhouette pixels; a note counts them)."),
+        lit("MODE")};
+    QCommandLineOption maxPixels{lit("max-pixels"),
+                                 lit("Refuse images with more pixels than this (default "
+                                     "40000000, about 1.6 GB of buffers)."),
+                                 lit("N"), QString::number(kDefaultMaxPixels)};
+
+    void addTo(QCommandLineParser& parser) const {
+        parser.addOptions({camera, cameraFormat, lighting, lightingFormat, object, size, shading,
+                           near, naive, backFaces, maxPixels});
+    }
+
+    // Checks the options; ExitOk with the settings filled in, or a usage error's code.
+    int settings(const QCommandLineParser& parser, QTextStream& err,
+                 rl::CourseSceneSettings& out) const {
+        if (!parseSize(parser.value(size), out.width, out.height) || out.width < 1 ||
+            out.height < 1)
+            return usageError(err, lit("--size expects WIDTHxHEIGHT such as 800x600, found '%1'")
+                                       .arg(parser.value(size)));
+        if (out.width > kMaxImageSide || out.height > kMaxImageSide)
+            return usageError(err, lit("--size %1 is larger than the limit of %2 pixels a side")
+                                       .arg(parser.value(size))
+                                       .arg(kMaxImageSide));
+        bool maxOk = false;
+        const qint64 pixelLimit = parser.value(maxPixels).toLongLong(&maxOk);
+        if (!maxOk || pixelLimit < 1)
+            return usageError(err, lit("--max-pixels expects a positive whole number, found '%1'")
+                                       .arg(parser.value(maxPixels)));
+        if (qint64(out.width) * out.height > pixelLimit)
+            return usageError(err, lit("--size %1 has %2 pixels, more than the limit of %3 (raise "
+                                       "it with --max-pixels if the memory is there)")
+                                       .arg(parser.value(size))
+                                       .arg(qint64(out.width) * out.height)
+                                       .arg(pixelLimit));
+        const auto model = rl::shadingModelFromName(parser.value(shading).toStdString());
+        if (!model)
+            return usageError(err, lit("--shading expects phong, flat or gouraud, found '%1'")
+                                       .arg(parser.value(shading)));
+        out.shading = *model;
+        if (parser.isSet(near)) {
+            bool ok = false;
+            const double z = parser.value(near).toDouble(&ok);
+            if (!ok || !(z > 0.0))
+                return usageError(
+                    err,
+                    lit("--near expects a positive number, found '%1'").arg(parser.value(near)));
+            out.nearPlane.fixedW = z;
+        }
+        if (parser.isSet(naive)) out.nearPlane.mode = rl::NearPlane::Mode::Naive;
+        if (parser.isSet(backFaces)) {
+            const QString faces = parser.value(backFaces);
+            if (faces != lit("draw") && faces != lit("cull"))
+                return usageError(err,
+                                  lit("--back-faces expects draw or cull, found '%1'").arg(faces));
+            out.cullHiddenBackFaces = faces == lit("cull");
+        }
+        return ExitOk;
+    }
+
+    bool anyFile(const QCommandLineParser& parser) const {
+        return parser.isSet(camera) || parser.isSet(lighting) || parser.isSet(object);
+    }
+
+    // Reads the scene: each part from its file, or from the default scene where no file is
+    // given. ExitOk, or the code of a usage error or a bad file (already printed).
+    int load(const QCommandLineParser& parser, const rl::CourseSceneSettings& settings,
+             QTextStream& err, rl::Diagnostics& diagnostics,
+             std::shared_ptr<const rl::Scene>& scene) const {
+        const auto cameraLayout =
+            rl::cameraLayoutFromName(parser.value(cameraFormat).toStdString());
+        if (!cameraLayout)
+            return usageError(err, lit("--camera-format expects auto, ufpe, ufrpe6, ufrpe5 or "
+                                       "keyvalue, found '%1'")
+                                       .arg(parser.value(cameraFormat)));
+        if (parser.isSet(cameraFormat) && !parser.isSet(camera))
+            return usageError(err, lit("--camera-format applies to the file of --camera, which "
+                                       "is not given"));
+        const auto lightingLayout =
+            rl::lightingLayoutFromName(parser.value(lightingFormat).toStdString());
+        if (!lightingLayout)
+            return usageError(err, lit("--lighting-format expects auto, ufpe, multi, ufrpe or "
+                                       "keyvalue, found '%1'")
+                                       .arg(parser.value(lightingFormat)));
+        if (parser.isSet(lightingFormat) && !parser.isSet(lighting))
+            return usageError(err, lit("--lighting-format applies to the file of --lighting, "
+                                       "which is not given"));
+        const auto source = [&](const QCommandLineOption& option, CoursePart part) {
+            return parser.isSet(option) ? parser.value(option) : defaultScenePath(part);
+        };
+        auto c = loadCamera(source(camera, CoursePart::Camera), diagnostics, *cameraLayout);
+        if (!c) return inputError(err, c.error());
+        auto l = loadLighting(source(lighting, CoursePart::Lighting), diagnostics, *lightingLayout);
+        if (!l) return inputError(err, l.error());
+        auto o = loadObject(source(object, CoursePart::Object), diagnostics);
+        if (!o) return inputError(err, o.error());
+        scene = std::make_shared<const rl::Scene>(
+            rl::makeCourseScene({c.value(), l.value(), o.value()}, settings));
+        return ExitOk;
+    }
+};
+
+int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(lit("Render a course scene to PNG."));
+    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    const QCommandLineOption help({lit("h"), lit("help")}, lit("Show this help."));
+    const SceneOptions sceneOptions;
     const QCommandLineOption output(lit("output"), lit("The PNG to write (required)."),
                                     lit("FILE.png"));
     const QCommandLineOption depthOutput(lit("depth-output"),
@@ -148,23 +268,13 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
                                            lit("Also write the normals as a PNG, (N + 1) / 2 "
                                                "per channel, in view coordinates."),
                                            lit("FILE.png"));
-    const QCommandLineOption near(lit("near"),
-                                  lit("View-space z of the near plane (default: 0.001 times "
-                                      "the farthest vertex's z)."),
-                                  lit("Z"));
-    const QCommandLineOption naive(lit("naive-projection"),
-                                   lit("Divide by z even at or behind the camera, without "
-                                       "clipping (shows why clipping exists)."));
-    const QCommandLineOption maxPixels(lit("max-pixels"),
-                                       lit("Refuse images with more pixels than this "
-                                           "(default 40000000, about 1.6 GB of buffers)."),
-                                       lit("N"), QString::number(kDefaultMaxPixels));
     const QCommandLineOption explain(lit("explain-pixel"),
                                      lit("Print the story of one pixel: the triangles that "
                                          "covered it, each depth test, and its Phong terms."),
                                      lit("X,Y"));
-    parser.addOptions({help, camera, cameraFormat, lighting, lightingFormat, object, size, shading,
-                       output, depthOutput, normalsOutput, near, naive, maxPixels, explain});
+    parser.addOption(help);
+    sceneOptions.addTo(parser);
+    parser.addOptions({output, depthOutput, normalsOutput, explain});
     if (!parser.parse(arguments)) return usageError(err, parser.errorText());
     if (parser.isSet(help)) {
         out << commandHelp(parser, lit("render"));
@@ -175,58 +285,7 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
             err, lit("unexpected argument '%1'").arg(parser.positionalArguments().first()));
 
     rl::CourseSceneSettings settings;
-    if (!parseSize(parser.value(size), settings.width, settings.height) || settings.width < 1 ||
-        settings.height < 1)
-        return usageError(
-            err,
-            lit("--size expects WIDTHxHEIGHT such as 800x600, found '%1'").arg(parser.value(size)));
-    if (settings.width > kMaxImageSide || settings.height > kMaxImageSide)
-        return usageError(err, lit("--size %1 is larger than the limit of %2 pixels a side")
-                                   .arg(parser.value(size))
-                                   .arg(kMaxImageSide));
-    bool maxOk = false;
-    const qint64 pixelLimit = parser.value(maxPixels).toLongLong(&maxOk);
-    if (!maxOk || pixelLimit < 1)
-        return usageError(err, lit("--max-pixels expects a positive whole number, found '%1'")
-                                   .arg(parser.value(maxPixels)));
-    if (qint64(settings.width) * settings.height > pixelLimit)
-        return usageError(err, lit("--size %1 has %2 pixels, more than the limit of %3 (raise it "
-                                   "with --max-pixels if the memory is there)")
-                                   .arg(parser.value(size))
-                                   .arg(qint64(settings.width) * settings.height)
-                                   .arg(pixelLimit));
-    const auto model = rl::shadingModelFromName(parser.value(shading).toStdString());
-    if (!model)
-        return usageError(
-            err,
-            lit("--shading expects phong, flat or gouraud, found '%1'").arg(parser.value(shading)));
-    settings.shading = *model;
-    const auto cameraLayout = rl::cameraLayoutFromName(parser.value(cameraFormat).toStdString());
-    if (!cameraLayout)
-        return usageError(err, lit("--camera-format expects auto, ufpe, ufrpe6, ufrpe5 or "
-                                   "keyvalue, found '%1'")
-                                   .arg(parser.value(cameraFormat)));
-    if (parser.isSet(cameraFormat) && !parser.isSet(camera))
-        return usageError(err, lit("--camera-format applies to the file of --camera, which is "
-                                   "not given"));
-    const auto lightingLayout =
-        rl::lightingLayoutFromName(parser.value(lightingFormat).toStdString());
-    if (!lightingLayout)
-        return usageError(err, lit("--lighting-format expects auto, ufpe, multi, ufrpe or "
-                                   "keyvalue, found '%1'")
-                                   .arg(parser.value(lightingFormat)));
-    if (parser.isSet(lightingFormat) && !parser.isSet(lighting))
-        return usageError(err, lit("--lighting-format applies to the file of --lighting, which "
-                                   "is not given"));
-    if (parser.isSet(near)) {
-        bool ok = false;
-        const double z = parser.value(near).toDouble(&ok);
-        if (!ok || !(z > 0.0))
-            return usageError(
-                err, lit("--near expects a positive number, found '%1'").arg(parser.value(near)));
-        settings.nearPlane.fixedW = z;
-    }
-    if (parser.isSet(naive)) settings.nearPlane.mode = rl::NearPlane::Mode::Naive;
+    if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
     if (!parser.isSet(output)) return usageError(err, lit("render needs --output FILE.png"));
     int explainX = -1, explainY = -1;
     if (parser.isSet(explain)) {
@@ -240,22 +299,12 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
                                        .arg(settings.height));
     }
 
-    // Each part from its file, or from the default scene where no file is given.
     rl::Diagnostics diagnostics;
-    const auto source = [&](const QCommandLineOption& option, CoursePart part) {
-        return parser.isSet(option) ? parser.value(option) : defaultScenePath(part);
-    };
-    auto c = loadCamera(source(camera, CoursePart::Camera), diagnostics, *cameraLayout);
-    if (!c) return inputError(err, c.error());
-    auto l = loadLighting(source(lighting, CoursePart::Lighting), diagnostics, *lightingLayout);
-    if (!l) return inputError(err, l.error());
-    auto o = loadObject(source(object, CoursePart::Object), diagnostics);
-    if (!o) return inputError(err, o.error());
-    if (!parser.isSet(camera) && !parser.isSet(lighting) && !parser.isSet(object))
-        out << "rendering the embedded default scene\n";
+    std::shared_ptr<const rl::Scene> scene;
+    if (int code = sceneOptions.load(parser, settings, err, diagnostics, scene); code != ExitOk)
+        return code;
+    if (!sceneOptions.anyFile(parser)) out << "rendering the embedded default scene\n";
 
-    auto scene = std::make_shared<const rl::Scene>(
-        rl::makeCourseScene({c.value(), l.value(), o.value()}, settings));
     rl::RenderOptions options;
     options.shading.keepNormals = parser.isSet(normalsOutput);
     // With --explain-pixel the one render records that pixel's events; the recording probe
@@ -385,6 +434,175 @@ int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& 
     return ExitOk;
 }
 
+// A line of /proc/self/status in MiB (VmRSS: resident now, VmHWM: resident at its peak),
+// or -1 where the system has no such file.
+double memoryMiB(const char* key) {
+    QFile status(lit("/proc/self/status"));
+    if (!status.open(QIODevice::ReadOnly | QIODevice::Text)) return -1.0;
+    const QByteArray wanted(key);
+    for (const QByteArray& line : status.readAll().split('\n')) {
+        if (!line.startsWith(wanted)) continue;
+        const QList<QByteArray> fields = line.mid(wanted.size()).simplified().split(' ');
+        bool ok = false;
+        const double kib = fields.value(0).toDouble(&ok);
+        return ok ? kib / 1024.0 : -1.0;
+    }
+    return -1.0;
+}
+
+int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        lit("Render a scene again and again and print the time per frame: median, fastest "
+            "and slowest of --frames frames after --warmup untimed ones, shaded pixels and "
+            "triangles per second, and the time of each stage."));
+    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    const QCommandLineOption help({lit("h"), lit("help")}, lit("Show this help."));
+    const SceneOptions sceneOptions;
+    QStringList names;
+    for (const auto& s : rl::benchmarkScenes()) names << QString::fromStdString(s.name);
+    const QCommandLineOption sceneName(
+        lit("scene"),
+        lit("A generated benchmark scene instead of course files: %1.").arg(names.join(lit(", "))),
+        lit("NAME"));
+    const QCommandLineOption frames(lit("frames"), lit("Timed frames (default 21)."), lit("N"),
+                                    lit("21"));
+    const QCommandLineOption warmup(lit("warmup"), lit("Untimed frames first (default 1)."),
+                                    lit("N"), lit("1"));
+    const QCommandLineOption threads(
+        lit("threads"), lit("Threads to render with (default: every core)."), lit("N"));
+    const QCommandLineOption format(lit("format"), lit("md (default) or json."), lit("FORMAT"),
+                                    lit("md"));
+    parser.addOption(help);
+    sceneOptions.addTo(parser);
+    parser.addOptions({sceneName, frames, warmup, threads, format});
+    if (!parser.parse(arguments)) return usageError(err, parser.errorText());
+    if (parser.isSet(help)) {
+        out << commandHelp(parser, lit("bench"));
+        return ExitOk;
+    }
+    if (!parser.positionalArguments().isEmpty())
+        return usageError(
+            err, lit("unexpected argument '%1'").arg(parser.positionalArguments().first()));
+    rl::CourseSceneSettings settings;
+    if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
+    const auto count = [&](const QCommandLineOption& option, int least, int& value) {
+        bool ok = false;
+        value = parser.value(option).toInt(&ok);
+        return ok && value >= least;
+    };
+    int frameCount = 0, warmupCount = 0, threadCount = 0;
+    if (!count(frames, 1, frameCount))
+        return usageError(err, lit("--frames expects a whole number of at least 1, found '%1'")
+                                   .arg(parser.value(frames)));
+    if (!count(warmup, 0, warmupCount))
+        return usageError(err, lit("--warmup expects a whole number of at least 0, found '%1'")
+                                   .arg(parser.value(warmup)));
+    if (parser.isSet(threads) && (!count(threads, 1, threadCount) || threadCount > rl::kMaxThreads))
+        return usageError(err, lit("--threads expects a whole number from 1 to %1, found '%2'")
+                                   .arg(rl::kMaxThreads)
+                                   .arg(parser.value(threads)));
+    const QString outputFormat = parser.value(format);
+    if (outputFormat != lit("md") && outputFormat != lit("json"))
+        return usageError(err, lit("--format expects md or json, found '%1'").arg(outputFormat));
+
+    rl::Diagnostics diagnostics;
+    std::shared_ptr<const rl::Scene> scene;
+    QString sceneLabel;
+    if (parser.isSet(sceneName)) {
+        if (sceneOptions.anyFile(parser))
+            return usageError(err, lit("--scene replaces --camera, --lighting and --object"));
+        auto generated = rl::makeBenchmarkScene(parser.value(sceneName).toStdString(),
+                                                settings.width, settings.height, settings.shading);
+        if (!generated)
+            return usageError(err, lit("--scene expects one of %1, found '%2'")
+                                       .arg(names.join(lit(", ")), parser.value(sceneName)));
+        if (parser.isSet(sceneOptions.backFaces))
+            generated->cullHiddenBackFaces = settings.cullHiddenBackFaces;
+        scene = std::make_shared<const rl::Scene>(std::move(*generated));
+        sceneLabel = parser.value(sceneName);
+    } else {
+        if (int code = sceneOptions.load(parser, settings, err, diagnostics, scene); code != ExitOk)
+            return code;
+        sceneLabel = sceneOptions.anyFile(parser) ? QString::fromStdString(scene->name)
+                                                  : lit("default scene");
+    }
+    printDiagnostics(diagnostics, err);
+
+    rl::RenderOptions options;
+    options.threads = threadCount;  // 0: every core
+    rl::RenderContext context;      // buffers reused from frame to frame
+    std::vector<double> total;
+    std::vector<std::array<double, rl::kStageCount>> stages;
+    std::size_t covered = 0;
+    int usedThreads = 0;
+    double firstRss = -1.0;  // resident memory after the first timed frame, MiB
+    for (int i = 0; i < warmupCount + frameCount; ++i) {
+        auto trace = rl::renderFrame(scene, options, &context);
+        if (!trace) return inputError(err, trace.error());
+        if (i < warmupCount) continue;
+        total.push_back(trace->totalMilliseconds);
+        stages.push_back(trace->stageMilliseconds);
+        covered = trace->depth->coveredPixels();
+        usedThreads = trace->threads;
+        if (i == warmupCount) firstRss = memoryMiB("VmRSS:");
+    }
+    // Memory: the peak over the whole run (scene included), and whether the frames after
+    // the first one added any.
+    const double lastRss = memoryMiB("VmRSS:");
+    const double peakRss = memoryMiB("VmHWM:");
+    const auto median = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+    };
+    const double medianMs = median(total);
+    const double minMs = *std::min_element(total.begin(), total.end());
+    const double maxMs = *std::max_element(total.begin(), total.end());
+    std::array<double, rl::kStageCount> stageMedian{};
+    for (std::size_t k = 0; k < stageMedian.size(); ++k) {
+        std::vector<double> v;
+        for (const auto& f : stages) v.push_back(f[k]);
+        stageMedian[k] = median(v);
+    }
+    const double mpixels = double(covered) / (medianMs * 1e3);
+    const double triangles = double(scene->triangleCount()) / (medianMs / 1e3);
+    const QString shadingName = QString::fromUtf8(rl::shadingModelName(settings.shading));
+    const auto number = [](double v, int decimals) { return QString::number(v, 'f', decimals); };
+    if (outputFormat == lit("json")) {
+        out << "{\"scene\": \"" << sceneLabel << "\", \"shading\": \"" << shadingName
+            << "\", \"width\": " << scene->width << ", \"height\": " << scene->height
+            << ", \"triangles\": " << scene->triangleCount() << ", \"threads\": " << usedThreads
+            << ", \"frames\": " << frameCount << ", \"median_ms\": " << number(medianMs, 3)
+            << ", \"min_ms\": " << number(minMs, 3) << ", \"max_ms\": " << number(maxMs, 3)
+            << ", \"covered_pixels\": " << covered << ", \"mpixels_per_s\": " << number(mpixels, 2)
+            << ", \"triangles_per_s\": " << number(triangles, 0)
+            << ", \"peak_rss_mib\": " << number(peakRss, 1)
+            << ", \"rss_first_frame_mib\": " << number(firstRss, 1)
+            << ", \"rss_last_frame_mib\": " << number(lastRss, 1) << ", \"stages_ms\": {";
+        for (std::size_t k = 0; k < stageMedian.size(); ++k)
+            out << (k ? ", " : "") << "\"" << rl::stageName(rl::kAllStages[k])
+                << "\": " << number(stageMedian[k], 3);
+        out << "}}\n";
+    } else {
+        out << "| scene | size | shading | threads | triangles | median ms | min ms | max ms | "
+               "shaded Mpixel/s | triangles/s |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|\n"
+            << "| " << sceneLabel << " | " << scene->width << "x" << scene->height << " | "
+            << shadingName << " | " << usedThreads << " | " << scene->triangleCount() << " | "
+            << number(medianMs, 2) << " | " << number(minMs, 2) << " | " << number(maxMs, 2)
+            << " | " << number(mpixels, 1) << " | " << number(triangles, 0) << " |\n\n"
+            << "Memory: peak " << number(peakRss, 1) << " MiB resident; " << number(firstRss, 1)
+            << " MiB after the first timed frame, " << number(lastRss, 1)
+            << " MiB after the last.\n\n"
+            << "| stage | median ms |\n|---|---|\n";
+        for (std::size_t k = 0; k < stageMedian.size(); ++k)
+            out << "| " << rl::stageName(rl::kAllStages[k]) << " | " << number(stageMedian[k], 3)
+                << " |\n";
+    }
+    out.flush();
+    return ExitOk;
+}
+
 int runGenerateDefaultScene(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     QCommandLineParser parser;
     parser.setApplicationDescription(lit("Write the default scene's three course files."));
@@ -444,12 +662,14 @@ int runCli(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     try {
         if (command == lit("render"))
             code = runRender(rest, out, err);
+        else if (command == lit("bench"))
+            code = runBench(rest, out, err);
         else if (command == lit("run"))
             code = runCommandFile(rest, out, err);
         else if (command == lit("generate-default-scene"))
             code = runGenerateDefaultScene(rest, out, err);
         else
-            code = usageError(err, lit("unknown command '%1' (commands: render, run, "
+            code = usageError(err, lit("unknown command '%1' (commands: render, run, bench, "
                                        "generate-default-scene)")
                                        .arg(command));
     } catch (const std::bad_alloc&) {

@@ -1,5 +1,7 @@
 #include "benchmark_scenes.h"
 
+#include "mesh_topology.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -36,6 +38,7 @@ std::shared_ptr<Mesh> uvSphere(int nu, int nv) {
         }
     for (int j = 0; j < nu; ++j) t.push_back({ring(nv - 1, j), ring(nv - 1, j + 1), south});
     mesh->source = {"<sphere>", 0, 0};
+    mesh->closedWinding = closedSurfaceWinding(*mesh);
     return mesh;
 }
 
@@ -59,6 +62,7 @@ std::shared_ptr<Mesh> torusMesh(int nu, int nv, double R, double r) {
             mesh->triangles.push_back({id(j, i), id(j + 1, i + 1), id(j + 1, i)});
         }
     mesh->source = {"<torus>", 0, 0};
+    mesh->closedWinding = closedSurfaceWinding(*mesh);
     return mesh;
 }
 
@@ -134,6 +138,7 @@ std::optional<Scene> makeBenchmarkScene(std::string_view name, int width, int he
     scene.rules = RasterRules::course();
     scene.ambientIntensity = vec3(255.0f);
     scene.lights.push_back({dvec4(framing.light, 1.0), vec3(255.0f), {}});
+    scene.cullHiddenBackFaces = true;  // no course semantics to keep: hidden faces left out
     Draw draw;
     draw.name = std::string(name);
     draw.mesh = mesh;

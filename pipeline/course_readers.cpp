@@ -9,6 +9,7 @@
 
 #include "bezier.h"
 #include "format.h"
+#include "mesh_topology.h"
 
 namespace rl {
 
@@ -1609,8 +1610,10 @@ Result<Mesh> readBezierSurface(LineScanner& scanner, const TextLine& header,
 
 }  // namespace
 
-Result<Mesh> readByuObject(std::string_view text, const std::string& fileName,
-                           Diagnostics& diagnostics) {
+namespace {
+
+Result<Mesh> readAnyByuObject(std::string_view text, const std::string& fileName,
+                              Diagnostics& diagnostics) {
     LineScanner scanner(text, fileName);
     TextLine header;
     if (scanner.next(header)) {
@@ -1655,6 +1658,15 @@ Result<Mesh> readByuObject(std::string_view text, const std::string& fileName,
         }
     }
     return readByuMesh(text, fileName, diagnostics);
+}
+
+}  // namespace
+
+Result<Mesh> readByuObject(std::string_view text, const std::string& fileName,
+                           Diagnostics& diagnostics) {
+    auto mesh = readAnyByuObject(text, fileName, diagnostics);
+    if (mesh) mesh->closedWinding = closedSurfaceWinding(*mesh);
+    return mesh;
 }
 
 }  // namespace rl

@@ -2,6 +2,8 @@
 
 #include <filesystem>
 
+#include "mesh_topology.h"
+
 namespace rl {
 
 Result<CourseObject> parseCourseObject(std::string_view text, const std::string& fileName,
@@ -10,6 +12,7 @@ Result<CourseObject> parseCourseObject(std::string_view text, const std::string&
     if (!mesh) return mesh.error();
     CourseObject object;
     object.name = std::filesystem::path(fileName).filename().string();
+    mesh->closedWinding = closedSurfaceWinding(*mesh);
     object.mesh = std::make_shared<const Mesh>(std::move(mesh).value());
     return object;
 }
@@ -23,6 +26,7 @@ Scene makeCourseScene(const CourseSceneParts& parts, const CourseSceneSettings& 
     scene.lights = parts.lighting.lights;
     scene.ambientIntensity = parts.lighting.ambientIntensity;
     scene.nearPlane = settings.nearPlane;
+    scene.cullHiddenBackFaces = settings.cullHiddenBackFaces;
     scene.rules = RasterRules::course();
     scene.conventions = Conventions::course();
 

@@ -28,6 +28,7 @@ struct CourseSceneSettings {
     int height = 600;
     ShadingModel shading = ShadingModel::Phong;
     NearPlane nearPlane;
+    bool cullHiddenBackFaces = false;  // Scene::cullHiddenBackFaces
 };
 
 // The object from text in memory, named after its file (fileName is used in messages only;

@@ -1,6 +1,15 @@
 #include "depth_test.h"
 
+#include <algorithm>
+#include <cstring>
+#include <optional>
+
+#include "parallel.h"
 #include "probe.h"
+
+// The vector helpers are always inlined into the kernels' builds, so no vector is passed
+// between functions: the warning about the AVX calling convention does not apply.
+#pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace rl {
 
@@ -10,91 +19,283 @@ std::size_t DepthTest::coveredPixels() const {
     return n;
 }
 
-template <typename Probe>
-DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
-                              const ScanConversion& scan, Probe& probe) const {
-    DepthTest out;
-    const Conventions& conv = scene.conventions;
-    out.depth = Image<float>(scene.width, scene.height, conv.depthClear);
-    out.triangle = Image<std::uint32_t>(scene.width, scene.height, kNoTriangle);
-    out.barycentric = Image<vec2>(scene.width, scene.height, vec2(0.0f));
-    const double offset = scene.rules.sampleOffset;
-    const bool winsOnTie = conv.depthWinsOnTie;
-    const bool rangeClip = conv.depthRangeClip;
+namespace {
 
+struct Counts {
+    std::size_t fragments = 0, passed = 0, outsideDepthRange = 0;
+};
+
+// The depth test of one span when nothing is recorded and no depth range clips, eight
+// pixels at a time with the compiler's vector extensions (GCC and Clang): every pixel is
+// stored back, changed or not, instead of branching. The operations are those of the general
+// loop (testSpanOf), lane by lane, so the bits are the same. Built for the baseline x86-64
+// and for x86-64-v3 (AVX2), the better one chosen when the program starts. Returns the
+// number of fragments that passed.
+typedef double Doubles4 __attribute__((vector_size(32)));
+typedef float Floats4 __attribute__((vector_size(16)));
+typedef float Floats8 __attribute__((vector_size(32)));
+typedef std::int32_t Ints8 __attribute__((vector_size(32)));
+
+// Lanes where mask is set take a, the others b. Always inlined into testSpan's builds, so no
+// vector is passed between functions (the AVX calling-convention warning does not apply).
+inline __attribute__((always_inline)) Floats8 blend(const Ints8& mask, const Floats8& a,
+                                                    const Floats8& b) {
+    return reinterpret_cast<Floats8>((mask & reinterpret_cast<Ints8>(a)) |
+                                     (~mask & reinterpret_cast<Ints8>(b)));
+}
+
+__attribute__((target_clones("default", "arch=x86-64-v3"))) std::size_t testSpan(
+    float* depthRow, std::uint32_t* idRow, float* baryRow, std::int32_t n, double beta0,
+    double betaDx, double gamma0, double gammaDx, float z0, float dz1, float dz2, std::uint32_t id,
+    bool winsOnTie) {
+    std::int32_t i = 0;
+    const Ints8 tie = winsOnTie ? Ints8{} - 1 : Ints8{};
+    const auto ids = static_cast<std::int32_t>(id);
+    const Doubles4 step = {0.0, 1.0, 2.0, 3.0};
+    Ints8 passes = {};  // minus the number of passes, per lane
+    for (; i + 8 <= n; i += 8) {
+        const Doubles4 low = double(i) + step;
+        const Doubles4 high = double(i + 4) + step;
+        const Floats8 beta = __builtin_shufflevector(
+            __builtin_convertvector(beta0 + low * betaDx, Floats4),
+            __builtin_convertvector(beta0 + high * betaDx, Floats4), 0, 1, 2, 3, 4, 5, 6, 7);
+        const Floats8 gamma = __builtin_shufflevector(
+            __builtin_convertvector(gamma0 + low * gammaDx, Floats4),
+            __builtin_convertvector(gamma0 + high * gammaDx, Floats4), 0, 1, 2, 3, 4, 5, 6, 7);
+        const Floats8 z = (z0 + beta * dz1) + gamma * dz2;
+        Floats8 stored;
+        Ints8 storedId;
+        Floats8 storedBary[2];
+        std::memcpy(&stored, depthRow + i, sizeof stored);
+        std::memcpy(&storedId, idRow + i, sizeof storedId);
+        std::memcpy(storedBary, baryRow + 2 * i, sizeof storedBary);
+        const Ints8 pass = (z < stored) | (tie & (z == stored));
+        const Floats8 depth = blend(pass, z, stored);
+        const Ints8 triangle = (pass & ids) | (~pass & storedId);
+        const Floats8 bary[2] = {
+            blend(__builtin_shufflevector(pass, pass, 0, 0, 1, 1, 2, 2, 3, 3),
+                  __builtin_shufflevector(beta, gamma, 0, 8, 1, 9, 2, 10, 3, 11), storedBary[0]),
+            blend(__builtin_shufflevector(pass, pass, 4, 4, 5, 5, 6, 6, 7, 7),
+                  __builtin_shufflevector(beta, gamma, 4, 12, 5, 13, 6, 14, 7, 15), storedBary[1])};
+        std::memcpy(depthRow + i, &depth, sizeof depth);
+        std::memcpy(idRow + i, &triangle, sizeof triangle);
+        std::memcpy(baryRow + 2 * i, bary, sizeof bary);
+        passes += pass;
+    }
+    std::size_t passed = 0;
+    for (int lane = 0; lane < 8; ++lane) passed += static_cast<std::size_t>(-passes[lane]);
+    for (; i < n; ++i) {
+        const auto beta = static_cast<float>(beta0 + double(i) * betaDx);
+        const auto gamma = static_cast<float>(gamma0 + double(i) * gammaDx);
+        const float z = z0 + beta * dz1 + gamma * dz2;
+        if (z < depthRow[i] || (winsOnTie && z == depthRow[i])) {
+            depthRow[i] = z;
+            idRow[i] = id;
+            baryRow[2 * i] = beta;
+            baryRow[2 * i + 1] = gamma;
+            ++passed;
+        }
+    }
+    return passed;
+}
+
+// What the depth test of one triangle's spans needs, worked out once per triangle.
+struct TriangleSetup {
+    dvec2 p0, e1, e2;
+    double area = 0.0, betaDx = 0.0, gammaDx = 0.0;
+    float z0 = 0.0f, dz1 = 0.0f, dz2 = 0.0f;
+
+    TriangleSetup(const Projection& projection, std::size_t t) {
+        const ScreenTriangle& tri = projection.triangles[t];
+        const DrawProjection& draw = projection.draws[tri.draw];
+        const std::array<dvec2, 3> p = screenVertices(projection, tri);
+        z0 = draw.depth[tri.v[0]];
+        dz1 = draw.depth[tri.v[1]] - z0;
+        dz2 = draw.depth[tri.v[2]] - z0;
+        // Barycentrics of a sample s: s = P1 + beta (P2 - P1) + gamma (P3 - P1), so
+        // beta = (s - P1) x (P3 - P1) / A and gamma = (P2 - P1) x (s - P1) / A, where
+        // A = (P2 - P1) x (P3 - P1). Both are linear in x along a scanline.
+        p0 = p[0];
+        e1 = p[1] - p[0];
+        e2 = p[2] - p[0];
+        area = e1.x * e2.y - e1.y * e2.x;
+        betaDx = e2.y / area;
+        gammaDx = -e1.y / area;
+    }
+};
+
+// The depth test of one span of triangle t.
+template <typename Probe>
+void testSpanOf(const Scene& scene, const TriangleSetup& setup, std::uint32_t id, const Span& span,
+                DepthTest& out, Counts& counts, Probe& probe) {
+    const double offset = scene.rules.sampleOffset;
+    const bool winsOnTie = scene.conventions.depthWinsOnTie;
+    const bool rangeClip = scene.conventions.depthRangeClip;
+    // The sample of pixel (x, y) is the point (x + offset, y + offset).
+    const dvec2 s0 = dvec2(span.xBegin + offset, span.y + offset) - setup.p0;
+    const dvec2 e1 = setup.e1, e2 = setup.e2;
+    const double beta0 = (s0.x * e2.y - s0.y * e2.x) / setup.area;
+    const double gamma0 = (e1.x * s0.y - e1.y * s0.x) / setup.area;
+    const double betaDx = setup.betaDx, gammaDx = setup.gammaDx;
+    const float z0 = setup.z0, dz1 = setup.dz1, dz2 = setup.dz2;
+    float* depthRow = out.depth.row(span.y);
+    std::uint32_t* idRow = out.triangle.row(span.y);
+    vec2* baryRow = out.barycentric.row(span.y);
+    const std::int32_t n = span.xEnd - span.xBegin;
+    counts.fragments += static_cast<std::size_t>(n);
+    if constexpr (!Probe::enabled) {
+        if (!rangeClip) {
+            counts.passed +=
+                testSpan(depthRow + span.xBegin, idRow + span.xBegin, &baryRow[span.xBegin].x, n,
+                         beta0, betaDx, gamma0, gammaDx, z0, dz1, dz2, id, winsOnTie);
+            return;
+        }
+    }
+    for (std::int32_t i = 0; i < n; ++i) {
+        const std::int32_t x = span.xBegin + i;
+        const auto beta = static_cast<float>(beta0 + double(i) * betaDx);
+        const auto gamma = static_cast<float>(gamma0 + double(i) * gammaDx);
+        const float z = z0 + beta * dz1 + gamma * dz2;
+        if (rangeClip && !(z >= 0.0f && z <= 1.0f)) {  // per-pixel clipping (seed 001)
+            ++counts.outsideDepthRange;
+            if constexpr (Probe::enabled) {
+                probe.onDepthTest(
+                    {id, x, span.y, 1.0f - beta - gamma, beta, gamma, z, depthRow[x], false, true});
+            }
+            continue;
+        }
+        const float stored = depthRow[x];
+        const bool pass = z < stored || (winsOnTie && z == stored);
+        if constexpr (Probe::enabled) {
+            probe.onDepthTest({id, x, span.y, 1.0f - beta - gamma, beta, gamma, z, stored, pass});
+        }
+        if (pass) {
+            depthRow[x] = z;
+            idRow[x] = id;
+            baryRow[x] = vec2(beta, gamma);
+        }
+        counts.passed += pass ? 1 : 0;
+    }
+}
+
+// Every span in triangle order, the events in the order a recording probe expects.
+template <typename Probe>
+Counts testAll(const Scene& scene, const Projection& projection, const ScanConversion& scan,
+               DepthTest& out, Probe& probe) {
+    Counts counts;
     for (std::size_t t = 0; t < projection.triangles.size(); ++t) {
         const std::uint32_t first = scan.spanStart[t];
         const std::uint32_t last = scan.spanStart[t + 1];
         if (first == last) continue;
-        const ScreenTriangle& tri = projection.triangles[t];
-        const DrawProjection& draw = projection.draws[tri.draw];
-        const std::array<dvec2, 3> p = screenVertices(projection, tri);
-        const float z0 = draw.depth[tri.v[0]];
-        const float dz1 = draw.depth[tri.v[1]] - z0;
-        const float dz2 = draw.depth[tri.v[2]] - z0;
+        const TriangleSetup setup(projection, t);
+        for (std::uint32_t k = first; k < last; ++k)
+            testSpanOf(scene, setup, static_cast<std::uint32_t>(t), scan.spans[k], out, counts,
+                       probe);
+    }
+    return counts;
+}
 
-        // Barycentrics of a sample s: s = P1 + beta (P2 - P1) + gamma (P3 - P1), so
-        // beta = (s - P1) x (P3 - P1) / A and gamma = (P2 - P1) x (s - P1) / A, where
-        // A = (P2 - P1) x (P3 - P1). Both are linear in x along a scanline.
-        const dvec2 e1 = p[1] - p[0];
-        const dvec2 e2 = p[2] - p[0];
-        const double area = e1.x * e2.y - e1.y * e2.x;
-        const double betaDx = e2.y / area;
-        const double gammaDx = -e1.y / area;
-
-        for (std::uint32_t k = first; k < last; ++k) {
-            const Span& span = scan.spans[k];
-            // The sample of pixel (x, y) is the point (x + offset, y + offset).
-            const dvec2 s0 = dvec2(span.xBegin + offset, span.y + offset) - p[0];
-            const double beta0 = (s0.x * e2.y - s0.y * e2.x) / area;
-            const double gamma0 = (e1.x * s0.y - e1.y * s0.x) / area;
-            float* depthRow = out.depth.row(span.y);
-            std::uint32_t* idRow = out.triangle.row(span.y);
-            vec2* baryRow = out.barycentric.row(span.y);
-            for (std::int32_t x = span.xBegin; x < span.xEnd; ++x) {
-                const double i = x - span.xBegin;
-                const auto beta = static_cast<float>(beta0 + i * betaDx);
-                const auto gamma = static_cast<float>(gamma0 + i * gammaDx);
-                const float z = z0 + beta * dz1 + gamma * dz2;
-                if (rangeClip && !(z >= 0.0f && z <= 1.0f)) {  // per-pixel clipping (seed 001)
-                    ++out.outsideDepthRange;
-                    if constexpr (Probe::enabled) {
-                        probe.onDepthTest({static_cast<std::uint32_t>(t), x, span.y,
-                                           1.0f - beta - gamma, beta, gamma, z, depthRow[x], false,
-                                           true});
-                    }
-                    continue;
-                }
-                const float stored = depthRow[x];
-                const bool pass = z < stored || (winsOnTie && z == stored);
-                if constexpr (Probe::enabled) {
-                    probe.onDepthTest({static_cast<std::uint32_t>(t), x, span.y,
-                                       1.0f - beta - gamma, beta, gamma, z, stored, pass});
-                }
-                if (pass) {
-                    depthRow[x] = z;
-                    idRow[x] = static_cast<std::uint32_t>(t);
-                    baryRow[x] = vec2(beta, gamma);
-                }
-                out.passed += pass ? 1 : 0;
-            }
-            out.fragments += static_cast<std::size_t>(span.xEnd - span.xBegin);
+// The rows one thread owns, chunk by chunk (parallel.h): the chunk's buffers are cleared,
+// then its spans tested in triangle order, so that each chunk's pixels stay in the cache
+// while its triangles are drawn. Every pixel sees the same fragments in the same order as
+// in testAll, so the buffers are the same bits.
+Counts testChunks(const Scene& scene, const Projection& projection, const ScanConversion& scan,
+                  DepthTest& out, int part, int parts) {
+    Counts counts;
+    NullProbe probe;
+    const int chunks = (scene.height + kRowChunk - 1) / kRowChunk;
+    // This thread's spans, sorted by chunk (a counting sort, so triangle order is kept).
+    struct Entry {
+        std::uint32_t triangle, span;
+    };
+    std::vector<std::uint32_t> start(static_cast<std::size_t>(chunks) + 1, 0);
+    for (const Span& span : scan.spans)
+        if (ownsRow(span.y, part, parts)) ++start[static_cast<std::size_t>(span.y / kRowChunk) + 1];
+    for (int c = 0; c < chunks; ++c) start[c + 1] += start[c];
+    std::vector<Entry> entries(start[chunks]);
+    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+    for (std::size_t t = 0; t < projection.triangles.size(); ++t) {
+        for (std::uint32_t k = scan.spanStart[t]; k < scan.spanStart[t + 1]; ++k) {
+            const int y = scan.spans[k].y;
+            if (ownsRow(y, part, parts))
+                entries[next[static_cast<std::size_t>(y / kRowChunk)]++] = {
+                    static_cast<std::uint32_t>(t), k};
         }
+    }
+    const float clear = scene.conventions.depthClear;
+    const std::size_t width = static_cast<std::size_t>(scene.width);
+    for (int c = part; c < chunks; c += parts) {
+        const int y0 = c * kRowChunk;
+        const int y1 = std::min(scene.height, y0 + kRowChunk);
+        const std::size_t pixels = width * static_cast<std::size_t>(y1 - y0);
+        std::fill_n(out.depth.row(y0), pixels, clear);
+        std::fill_n(out.triangle.row(y0), pixels, kNoTriangle);
+        std::fill_n(out.barycentric.row(y0), pixels, vec2(0.0f));
+        std::uint32_t current = kNoTriangle;
+        std::optional<TriangleSetup> setup;
+        for (std::uint32_t e = start[c]; e < start[c + 1]; ++e) {
+            const Entry& entry = entries[e];
+            if (entry.triangle != current) {
+                current = entry.triangle;
+                setup.emplace(projection, current);
+            }
+            testSpanOf(scene, *setup, current, scan.spans[entry.span], out, counts, probe);
+        }
+    }
+    return counts;
+}
+
+}  // namespace
+
+template <typename Probe>
+DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
+                              const ScanConversion& scan, Probe& probe, int threads,
+                              DepthTest* recycled) const {
+    DepthTest out;
+    if (recycled) {
+        out.depth = std::move(recycled->depth);
+        out.triangle = std::move(recycled->triangle);
+        out.barycentric = std::move(recycled->barycentric);
+    }
+    std::vector<Counts> counts;
+    if constexpr (Probe::enabled) {
+        // A recording probe sees the events in triangle order: one thread.
+        out.depth.reset(scene.width, scene.height, scene.conventions.depthClear);
+        out.triangle.reset(scene.width, scene.height, kNoTriangle);
+        out.barycentric.reset(scene.width, scene.height, vec2(0.0f));
+        counts.push_back(testAll(scene, projection, scan, out, probe));
+    } else {
+        // Each thread clears its own rows (testChunks).
+        out.depth.resize(scene.width, scene.height);
+        out.triangle.resize(scene.width, scene.height);
+        out.barycentric.resize(scene.width, scene.height);
+        const int parts = std::max(1, std::min(threads, scene.height));
+        counts.resize(static_cast<std::size_t>(parts));
+        runParts(parts, [&](int part) {
+            counts[static_cast<std::size_t>(part)] =
+                testChunks(scene, projection, scan, out, part, parts);
+        });
+    }
+    for (const Counts& c : counts) {
+        out.fragments += c.fragments;
+        out.passed += c.passed;
+        out.outsideDepthRange += c.outsideDepthRange;
     }
     out.rejected = out.fragments - out.passed - out.outsideDepthRange;
     return out;
 }
 
 DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
-                              const ScanConversion& scan) const {
+                              const ScanConversion& scan, int threads, DepthTest* recycled) const {
     NullProbe probe;
-    return run(scene, projection, scan, probe);
+    return run(scene, projection, scan, probe, threads, recycled);
 }
 
 template DepthTest DepthTestStage::run<NullProbe>(const Scene&, const Projection&,
-                                                  const ScanConversion&, NullProbe&) const;
+                                                  const ScanConversion&, NullProbe&, int,
+                                                  DepthTest*) const;
 template DepthTest DepthTestStage::run<RecordingProbe>(const Scene&, const Projection&,
-                                                       const ScanConversion&,
-                                                       RecordingProbe&) const;
+                                                       const ScanConversion&, RecordingProbe&, int,
+                                                       DepthTest*) const;
 
 }  // namespace rl

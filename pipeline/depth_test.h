@@ -39,11 +39,13 @@ struct DepthTest {
 
 class DepthTestStage {
 public:
+    // threads: the rows are shared out between them (parallel.h); the result does not depend
+    // on their number. recycled: an earlier frame's buffers, whose memory is reused.
     template <typename Probe>
     DepthTest run(const Scene& scene, const Projection& projection, const ScanConversion& scan,
-                  Probe& probe) const;
-    DepthTest run(const Scene& scene, const Projection& projection,
-                  const ScanConversion& scan) const;
+                  Probe& probe, int threads = 1, DepthTest* recycled = nullptr) const;
+    DepthTest run(const Scene& scene, const Projection& projection, const ScanConversion& scan,
+                  int threads = 1, DepthTest* recycled = nullptr) const;
 };
 
 }  // namespace rl

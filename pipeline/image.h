@@ -16,6 +16,22 @@ public:
           m_height(height),
           m_pixels(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), fill) {}
 
+    // The same as assigning Image(width, height, fill), but keeping the memory already held,
+    // so that a buffer reused from frame to frame costs no new pages.
+    void reset(int width, int height, const T& fill = T()) {
+        m_width = width;
+        m_height = height;
+        m_pixels.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), fill);
+    }
+
+    // The size changed without filling: pixels kept from an earlier frame keep their values
+    // and new ones are T(); for a caller that writes every pixel itself.
+    void resize(int width, int height) {
+        m_width = width;
+        m_height = height;
+        m_pixels.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    }
+
     int width() const { return m_width; }
     int height() const { return m_height; }
     bool empty() const { return m_pixels.empty(); }

@@ -1,10 +1,10 @@
 // The lighting models, for one point P' with normal N in view coordinates.
 //
 // The course's (seed 000), phong():
-//     V = -P',  L = Pl - P',  N, V, L normalised;
+//     V = -P',  L = Pl - P',  N, V, L normalised (multiplied by 1/length);
 //     if V.N < 0, N := -N                       (turn the normal toward the viewer)
 //     if N.L < 0: no diffuse and no specular     (the light is behind the surface)
-//     else R = 2 (N.L) N - L, normalised; if R.V < 0: no specular
+//     else R = 2 (N.L) N - L (a unit vector, as N and L are); if R.V < 0: no specular
 //     I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n, per colour channel, summed over lights.
 // The command files' (seed 001), lambert():
 //     I = sum over lights with N.L >= 0 of  Il O (N.L)  +  Il (H.N)^s  (the second only
@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "fast_pow.h"
 #include "math.h"
 #include "scene.h"
 #include "view_transform.h"
@@ -47,20 +48,20 @@ struct PhongSample {
 inline vec3 towardLight(const ViewLight& light, const vec3& pView) {
     const vec3 toLight = light.pView.w == 0.0 ? vec3(light.pView) : vec3(light.pView) - pView;
     const float length = glm::length(toLight);
-    return length > 0.0f ? toLight / length : vec3(0.0f);
+    return length > 0.0f ? toLight * (1.0f / length) : vec3(0.0f);
 }
 
 // The normal to light with: normalised, and turned toward the viewer when asked and V.N < 0.
 // False when the normal is zero.
 inline bool orientNormal(PhongSample& s, const vec3& pView, const vec3& nView, bool flip) {
     const float vLength = glm::length(pView);
-    s.v = vLength > 0.0f ? -pView / vLength : vec3(0.0f);
+    s.v = vLength > 0.0f ? -pView * (1.0f / vLength) : vec3(0.0f);
     const float nLength = glm::length(nView);
     if (!(nLength > 0.0f)) {
         s.noNormal = true;
         return false;
     }
-    s.n = nView / nLength;
+    s.n = nView * (1.0f / nLength);
     if (flip && glm::dot(s.v, s.n) < 0.0f) {
         s.n = -s.n;
         s.flipped = true;
@@ -82,16 +83,15 @@ inline void addLight(const Material& m, const vec3& od, const ViewLight& light, 
     vec3 r(0.0f);
     float rDotV = 0.0f;
     if (nDotL >= 0.0f) {
+        // |R| = 1, since N and L are unit vectors: not normalised again.
         r = 2.0f * nDotL * nUnit - l;
-        const float rLength = glm::length(r);
-        if (rLength > 0.0f) r /= rLength;
         rDotV = glm::dot(r, sample.v);
         sample.diffuse += light.intensity * od * m.kd * nDotL;
         if (rDotV >= 0.0f && m.ks != 0.0f) {
-            // (R.V)^n, with 0^0 = 1 as in C's pow. A negative n (outside the course's range,
-            // and warned about when read) makes 0^n infinite: that term is left out rather
-            // than turned into NaN.
-            const float power = std::pow(rDotV, m.shininess);
+            // (R.V)^n (fast_pow.h), with 0^0 = 1 as in C's pow. A negative n (outside the
+            // course's range, and warned about when read) is not a highlight: its huge or
+            // infinite values are left out rather than turned into NaN.
+            const float power = fastPow(rDotV, m.shininess);
             if (std::isfinite(power)) sample.specular += light.intensity * m.ks * power;
         }
     }
@@ -137,7 +137,7 @@ inline PhongSample lambert(const vec3& objectColour, float shininess, const View
                 if (length > 0.0f) {
                     h = sum / length;
                     hDotN = std::max(glm::dot(h, s.n), 0.0f);
-                    s.specular += lights[i].intensity * std::pow(hDotN, shininess);
+                    s.specular += lights[i].intensity * fastPow(hDotN, shininess);
                 }
             }
         }

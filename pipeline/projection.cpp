@@ -1,10 +1,12 @@
 #include "projection.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
 #include "format.h"
+#include "parallel.h"
 
 namespace rl {
 
@@ -41,6 +43,13 @@ bool finite2(const dvec2& p) {
     return isFinite(p.x) && isFinite(p.y);
 }
 
+// Whether a triangle of a closed surface faces away from the camera (projection.h, step 6):
+// n . P' > 0 in view space, with n by the right-hand rule turned by the surface's winding.
+bool facesAway(const DrawProjection& proj, const std::array<std::uint32_t, 3>& tri, int winding) {
+    const dvec3 a(proj.pView[tri[0]]), b(proj.pView[tri[1]]), c(proj.pView[tri[2]]);
+    return double(winding) * glm::dot(glm::cross(b - a, c - a), a) > 0.0;
+}
+
 // Twice the signed area in pixels (y down): negative when the triangle is counter-clockwise
 // as it appears on the screen.
 double screenArea(const dvec2& a, const dvec2& b, const dvec2& c) {
@@ -50,7 +59,7 @@ double screenArea(const dvec2& a, const dvec2& b, const dvec2& c) {
 }  // namespace
 
 Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
-                                Diagnostics& diagnostics) const {
+                                Diagnostics& diagnostics, int threads) const {
     Projection out;
     out.mode = scene.nearPlane.mode;
     const bool clipNear = out.mode == NearPlane::Mode::Clip;
@@ -66,12 +75,21 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
         proj.clipFromView = clipFromViewOf(scene, scene.draws[d]);
         proj.pView = view.pView[d];
         proj.originalVertexCount = static_cast<std::uint32_t>(proj.pView.size());
-        proj.pClip.reserve(proj.pView.size());
-        for (const dvec4& p : proj.pView) {
-            proj.pClip.push_back(proj.clipFromView * p);
-            const double w = proj.pClip.back().w;
-            if (w > wMax && isFinite(w)) wMax = w;
-        }
+        const std::size_t count = proj.pView.size();
+        proj.pClip.resize(count);
+        const int parts = count < 4096 ? 1 : std::max(1, threads);
+        std::vector<double> partMax(static_cast<std::size_t>(parts), 0.0);
+        runParts(parts, [&](int part) {
+            double& most = partMax[static_cast<std::size_t>(part)];
+            for (std::size_t i = rangeBegin(count, part, parts),
+                             end = rangeBegin(count, part + 1, parts);
+                 i < end; ++i) {
+                proj.pClip[i] = proj.clipFromView * proj.pView[i];
+                const double w = proj.pClip[i].w;
+                if (w > most && isFinite(w)) most = w;
+            }
+        });
+        for (double most : partMax) wMax = std::max(wMax, most);
     }
     // The near plane must lie strictly in front of the camera, or a vertex at w = 0 would
     // be divided by 0.
@@ -116,8 +134,19 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             proj.inFront.resize(n, 0);
         };
         resizeVertices(proj.pView.size());
-        for (std::uint32_t i = 0; i < proj.originalVertexCount; ++i)
-            if (!clipNear || proj.pClip[i].w >= out.nearW) project(i);
+        // Vertices are independent: contiguous ranges on several threads (the naive
+        // projection counts vertices pulled in, so it runs on one).
+        const std::uint32_t vertexCount = proj.originalVertexCount;
+        const int vertexParts =
+            out.mode == NearPlane::Mode::Naive || vertexCount < 4096 ? 1 : std::max(1, threads);
+        runParts(vertexParts, [&](int part) {
+            const auto first =
+                static_cast<std::uint32_t>(rangeBegin(vertexCount, part, vertexParts));
+            const auto last =
+                static_cast<std::uint32_t>(rangeBegin(vertexCount, part + 1, vertexParts));
+            for (std::uint32_t i = first; i < last; ++i)
+                if (!clipNear || proj.pClip[i].w >= out.nearW) project(i);
+        });
 
         // The planes a triangle is clipped against, each as a signed distance (inside >= 0):
         // the draw's clip planes (view space); the near plane w = near (clip space; with
@@ -174,13 +203,75 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             return index;
         };
 
-        const auto drawIndex = static_cast<std::uint32_t>(d);
+        // Hidden back faces (step 6): the winding of the surface as seen in view space (a
+        // mirroring transform turns it over), or 0 when nothing is left out.
+        int hiddenWinding = 0;
+        if (scene.cullHiddenBackFaces && draw.mesh->closedWinding != 0 && !draw.clipFromView &&
+            scene.camera && draw.clipPlanes.empty()) {
+            bool beyondNear = true;
+            for (std::uint32_t i = 0; i < proj.originalVertexCount && beyondNear; ++i)
+                beyondNear = proj.pClip[i].w > out.nearW && proj.pView[i].w == 1.0;
+            const double det = glm::determinant(dmat3(view.viewFromModel[d]));
+            if (beyondNear && det != 0.0)
+                hiddenWinding = det > 0.0 ? draw.mesh->closedWinding : -draw.mesh->closedWinding;
+        }
+
+        // With the near plane always clipped, every triangle meets the same planes: each
+        // vertex's side of each is worked out once (bit k set: outside planes[k]), and a
+        // triangle wholly inside them all costs three loads instead of clipping work.
+        // The verdicts (and the back-face test) are independent per triangle: worked out on
+        // several threads, then the triangles are emitted and clipped in order on one.
+        const bool outcodes = out.mode == NearPlane::Mode::Clip && userPlanes + 5 <= 32;
         const auto& triangles = draw.mesh->triangles;
+        enum Verdict : std::uint8_t { kInside, kBackFace, kCut, kOutside };  // kOutside + plane
+        std::vector<std::uint8_t> verdict;
+        if (outcodes) {
+            choosePlanes();
+            std::vector<std::uint32_t> outcode(proj.originalVertexCount);
+            verdict.resize(triangles.size());
+            const std::size_t triangleCount = triangles.size();
+            const int parts = triangleCount < 4096 ? 1 : std::max(1, threads);
+            runParts(parts, [&](int part) {
+                for (std::size_t v = rangeBegin(vertexCount, part, parts),
+                                 end = rangeBegin(vertexCount, part + 1, parts);
+                     v < end; ++v) {
+                    std::uint32_t bits = 0;
+                    for (std::size_t k = 0; k < planes.size(); ++k)
+                        bits |= distance(planes[k], static_cast<std::uint32_t>(v)) >= 0.0 ? 0u
+                                                                                          : 1u << k;
+                    outcode[v] = bits;
+                }
+            });
+            runParts(parts, [&](int part) {
+                for (std::size_t t = rangeBegin(triangleCount, part, parts),
+                                 end = rangeBegin(triangleCount, part + 1, parts);
+                     t < end; ++t) {
+                    const auto& tri = triangles[t];
+                    if (hiddenWinding != 0 && facesAway(proj, tri, hiddenWinding)) {
+                        verdict[t] = kBackFace;
+                        continue;
+                    }
+                    const std::uint32_t a = outcode[tri[0]], b = outcode[tri[1]],
+                                        c = outcode[tri[2]];
+                    const int outside = kOutside + std::countr_zero(a & b & c);
+                    verdict[t] = static_cast<std::uint8_t>(
+                        (a & b & c) != 0 ? outside : ((a | b | c) != 0 ? kCut : kInside));
+                }
+            });
+        }
+
+        const auto drawIndex = static_cast<std::uint32_t>(d);
         proj.fate.resize(triangles.size(), TriangleFate::Inside);
         std::vector<std::uint32_t> polygon, clipped;
         for (std::size_t t = 0; t < triangles.size(); ++t) {
             const auto& tri = triangles[t];
             const auto source = static_cast<std::uint32_t>(t);
+            if (outcodes ? verdict[t] == kBackFace
+                         : hiddenWinding != 0 && facesAway(proj, tri, hiddenWinding)) {
+                proj.fate[t] = TriangleFate::BackFace;
+                ++out.backFaces;
+                continue;
+            }
             // Emits one screen triangle, unless a coordinate is not finite or cull drops it.
             auto emit = [&](const std::array<std::uint32_t, 3>& v) {
                 for (std::uint32_t i : v) {
@@ -211,18 +302,24 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                 side = allNegative ? -1.0 : 1.0;
                 out.acrossInfinity += nearActive ? 1 : 0;
             }
-            choosePlanes();
-            // Which planes cut the triangle, and is it wholly outside one of them?
+            // Which planes cut the triangle, and is it wholly outside one of them (the first
+            // such plane)?
             bool cut = false;
             std::size_t outsidePlane = SIZE_MAX;
-            for (std::size_t plane : planes) {
-                int inside = 0;
-                for (std::uint32_t v : tri) inside += distance(plane, v) >= 0.0 ? 1 : 0;
-                if (inside == 0) {
-                    outsidePlane = plane;
-                    break;
+            if (outcodes) {
+                if (verdict[t] >= kOutside) outsidePlane = planes[verdict[t] - kOutside];
+                cut = verdict[t] != kInside;
+            } else {
+                choosePlanes();
+                for (std::size_t plane : planes) {
+                    int inside = 0;
+                    for (std::uint32_t v : tri) inside += distance(plane, v) >= 0.0 ? 1 : 0;
+                    if (inside == 0) {
+                        outsidePlane = plane;
+                        break;
+                    }
+                    cut = cut || inside < 3;
                 }
-                cut = cut || inside < 3;
             }
             if (outsidePlane != SIZE_MAX) {
                 if (outsidePlane == nearPlane) {
@@ -304,6 +401,10 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
         }
         diagnostics.note(where, text + ", not drawn");
     }
+    if (out.backFaces > 0)
+        diagnostics.note(where, countOf(out.backFaces, "triangle faces", "triangles face") +
+                                    " away from the camera on a closed surface seen from "
+                                    "outside: hidden, so not drawn (back-face culling)");
     if (out.culled > 0)
         diagnostics.note(where, countOf(out.culled, "triangle is", "triangles are") +
                                     " clockwise on screen and culled");

@@ -12,7 +12,13 @@
 //     snapped to the rules' sub-pixel grid and kept within a guard band of +-2^28 pixels
 //     so that scan conversion's integer arithmetic is exact (a vertex beyond it is pulled
 //     in, and a warning says so);
-//  5. with cull set, triangles that are clockwise on screen are dropped.
+//  5. with cull set, triangles that are clockwise on screen are dropped;
+//  6. back faces of a closed surface (Mesh::closedWinding) are left out before any of this
+//     when the scene allows it (Scene::cullHiddenBackFaces): the draw uses the course
+//     camera, has no clip planes, and every vertex lies beyond the near plane, so the camera
+//     is outside the surface and nothing cuts it open; then every ray from the camera meets
+//     a front face first, and a triangle whose normal points away from the camera,
+//     n . P' > 0 in view space, is hidden.
 // Vertices made by clipping are appended after a draw's own vertices and remember the
 // edge and parameter they came from (possibly another made vertex), so later stages
 // interpolate any attribute for them.
@@ -36,6 +42,7 @@ enum class TriangleFate : std::uint8_t {
     Behind,           // wholly at or behind the near plane: not drawn
     ClippedAway,      // wholly outside one of the draw's clip planes: not drawn
     Culled,           // clockwise on screen in a draw with cull set: not drawn
+    BackFace,         // faces away from the camera on a closed surface seen from outside
     BeyondGuardBand,  // wholly more than 2^28 pixels off the image: not drawn
     NonFinite,        // a coordinate is NaN or infinite (only with the naive projection)
 };
@@ -76,6 +83,7 @@ struct Projection {
     std::vector<ScreenTriangle> triangles;  // what scan conversion receives, in draw order
 
     std::size_t inside = 0, clipped = 0, behind = 0, clippedAway = 0, culled = 0, nonFinite = 0;
+    std::size_t backFaces = 0;            // hidden back faces of closed surfaces, left out
     std::size_t throughZeroOrBehind = 0;  // naive projection: triangles with a vertex w <= 0
     std::size_t acrossInfinity = 0;       // SameSide: triangles whose w differ in sign (clipped)
     std::size_t beyondGuardBand = 0;      // wholly more than 2^28 pixels off the image
@@ -92,7 +100,10 @@ dmat4 clipFromViewOf(const Scene& scene, const Draw& draw);
 
 class ProjectionStage {
 public:
-    Projection run(const Scene& scene, const ViewTransform& view, Diagnostics& diagnostics) const;
+    // threads: vertices and per-triangle verdicts are worked out on several; triangles are
+    // emitted and clipped in order on one (the result does not depend on their number).
+    Projection run(const Scene& scene, const ViewTransform& view, Diagnostics& diagnostics,
+                   int threads = 1) const;
 };
 
 }  // namespace rl

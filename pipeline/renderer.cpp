@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "parallel.h"
+
 namespace rl {
 
 std::string FrameTrace::skipReason(StageId stage) const {
@@ -23,9 +25,15 @@ double millisecondsSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+// A buffer of the context that no earlier trace still holds, to be recycled.
+template <typename T>
+T* recyclable(const std::shared_ptr<T>& held) {
+    return held && held.use_count() == 1 ? held.get() : nullptr;
+}
+
 template <typename Probe>
 Result<FrameTrace> run(std::shared_ptr<const Scene> scenePtr, const RenderOptions& options,
-                       Probe& probe) {
+                       Probe& probe, RenderContext* context) {
     if (!scenePtr)
         return makeError(ErrorCode::Usage, SourceLocation{"<scene>", 0, 0}, "no scene to render");
     const Scene& scene = *scenePtr;
@@ -35,6 +43,8 @@ Result<FrameTrace> run(std::shared_ptr<const Scene> scenePtr, const RenderOption
                              std::to_string(scene.height) + " is empty");
     FrameTrace trace;
     trace.scene = scenePtr;
+    const int threads = Probe::enabled ? 1 : resolveThreads(options.threads);
+    trace.threads = threads;
     const auto frameStart = Clock::now();
     auto timed = [&](StageId stage, auto&& body) {
         const auto start = Clock::now();
@@ -56,20 +66,26 @@ Result<FrameTrace> run(std::shared_ptr<const Scene> scenePtr, const RenderOption
     });
     timed(StageId::Projection, [&] {
         trace.projection = std::make_shared<const Projection>(
-            ProjectionStage().run(scene, *trace.view, trace.diagnostics));
+            ProjectionStage().run(scene, *trace.view, trace.diagnostics, threads));
     });
     timed(StageId::ScanConversion, [&] {
         trace.scan = std::make_shared<const ScanConversion>(
-            ScanConversionStage().run(scene, *trace.projection, probe));
+            ScanConversionStage().run(scene, *trace.projection, probe, threads));
     });
     timed(StageId::DepthTest, [&] {
-        trace.depth = std::make_shared<const DepthTest>(
-            DepthTestStage().run(scene, *trace.projection, *trace.scan, probe));
+        DepthTest* recycled = context ? recyclable(context->depth) : nullptr;
+        auto depth = std::make_shared<DepthTest>(
+            DepthTestStage().run(scene, *trace.projection, *trace.scan, probe, threads, recycled));
+        if (context) context->depth = depth;
+        trace.depth = std::move(depth);
     });
     timed(StageId::Shading, [&] {
-        trace.shading = std::make_shared<const Shading>(
+        Shading* recycled = context ? recyclable(context->shading) : nullptr;
+        auto shading = std::make_shared<Shading>(
             ShadingStage().run(scene, *trace.view, *trace.normals, *trace.projection, *trace.depth,
-                               options.shading, probe));
+                               options.shading, probe, threads, recycled));
+        if (context) context->shading = shading;
+        trace.shading = std::move(shading);
     });
     if (trace.scan->spans.empty() && trace.scan->offscreen > 0) {
         trace.diagnostics.warn(SourceLocation{scene.name, 0, 0},
@@ -89,14 +105,15 @@ Result<FrameTrace> run(std::shared_ptr<const Scene> scenePtr, const RenderOption
 
 }  // namespace
 
-Result<FrameTrace> renderFrame(std::shared_ptr<const Scene> scene, const RenderOptions& options) {
+Result<FrameTrace> renderFrame(std::shared_ptr<const Scene> scene, const RenderOptions& options,
+                               RenderContext* context) {
     NullProbe probe;
-    return run(std::move(scene), options, probe);
+    return run(std::move(scene), options, probe, context);
 }
 
 Result<FrameTrace> traceFrame(std::shared_ptr<const Scene> scene, const RenderOptions& options,
                               RecordingProbe& probe) {
-    return run(std::move(scene), options, probe);
+    return run(std::move(scene), options, probe, nullptr);
 }
 
 }  // namespace rl

@@ -1,6 +1,7 @@
 // Runs the seven stages in lecture order on a scene and keeps every output in a
 // FrameTrace. renderFrame is the plain render; traceFrame runs the same code with a
-// RecordingProbe to log what happens at one pixel or to one triangle. Both are pure
+// RecordingProbe to log what happens at one pixel or to one triangle (on one thread, so the
+// log is in drawing order; the buffers are the same for any number of threads). Both are pure
 // functions of the scene: no global state, so two renders can run at the same time.
 #pragma once
 
@@ -16,10 +17,20 @@ namespace rl {
 
 struct RenderOptions {
     ShadingOptions shading;
+    // Threads for the per-pixel stages: 0 for one per core. The image does not depend on it.
+    int threads = 0;
+};
+
+// Buffers kept from one frame to the next, so that rendering the same size again costs no
+// new memory (and no page faults). A buffer still held by an earlier frame's trace (the
+// window showing it, say) is left alone and a new one is made.
+struct RenderContext {
+    std::shared_ptr<DepthTest> depth;
+    std::shared_ptr<Shading> shading;
 };
 
 Result<FrameTrace> renderFrame(std::shared_ptr<const Scene> scene,
-                               const RenderOptions& options = {});
+                               const RenderOptions& options = {}, RenderContext* context = nullptr);
 Result<FrameTrace> traceFrame(std::shared_ptr<const Scene> scene, const RenderOptions& options,
                               RecordingProbe& probe);
 

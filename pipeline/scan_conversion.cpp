@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "parallel.h"
 #include "probe.h"
 
 namespace rl {
@@ -115,10 +116,16 @@ double ScanEdge::xAt(double y) const {
 TriangleSetup setupTriangle(const std::array<dvec2, 3>& p, const RasterRules& rules) {
     TriangleSetup s;
     s.order = {0, 1, 2};
-    // Sort by y, top first; ties keep the triangle's vertex order.
-    std::stable_sort(s.order.begin(), s.order.end(), [&](int a, int b) {
+    // Sort by y, top first; ties keep the triangle's vertex order (an insertion sort of
+    // three, which is stable and needs no buffer).
+    const auto above = [&](int a, int b) {
         return p[static_cast<std::size_t>(a)].y < p[static_cast<std::size_t>(b)].y;
-    });
+    };
+    if (above(s.order[1], s.order[0])) std::swap(s.order[0], s.order[1]);
+    if (above(s.order[2], s.order[1])) {
+        std::swap(s.order[1], s.order[2]);
+        if (above(s.order[1], s.order[0])) std::swap(s.order[0], s.order[1]);
+    }
     for (std::size_t k = 0; k < 3; ++k) s.sorted[k] = p[static_cast<std::size_t>(s.order[k])];
     const int bits = rules.subpixelBits;
     s.longEdge = makeEdge(s.sorted[0], s.sorted[2], bits);
@@ -140,16 +147,19 @@ TriangleSetup setupTriangle(const std::array<dvec2, 3>& p, const RasterRules& ru
     return s;
 }
 
+namespace {
+
+// Scan converts triangles [firstTriangle, endTriangle) into out (spanStart gets one entry per
+// triangle, the index of its first span in out.spans).
 template <typename Probe>
-ScanConversion ScanConversionStage::run(const Scene& scene, const Projection& projection,
-                                        Probe& probe) const {
-    ScanConversion out;
+void scanTriangles(const Scene& scene, const Projection& projection, std::size_t firstTriangle,
+                   std::size_t endTriangle, ScanConversion& out, Probe& probe) {
     const std::int64_t width = scene.width;
     const std::int32_t height = scene.height;
     const Grid g = gridOf(scene.rules);
-    out.spanStart.reserve(projection.triangles.size() + 1);
+    out.spanStart.reserve(endTriangle - firstTriangle + 1);
 
-    for (std::size_t t = 0; t < projection.triangles.size(); ++t) {
+    for (std::size_t t = firstTriangle; t < endTriangle; ++t) {
         out.spanStart.push_back(static_cast<std::uint32_t>(out.spans.size()));
         const auto triangle = static_cast<std::uint32_t>(t);
         const TriangleSetup s =
@@ -206,18 +216,55 @@ ScanConversion ScanConversionStage::run(const Scene& scene, const Projection& pr
         }
         if (out.spans.size() == spansBefore) ++out.offscreen;
     }
+}
+
+}  // namespace
+
+template <typename Probe>
+ScanConversion ScanConversionStage::run(const Scene& scene, const Projection& projection,
+                                        Probe& probe, int threads) const {
+    ScanConversion out;
+    const std::size_t count = projection.triangles.size();
+    // A recording probe sees the triangles in order: one thread. Otherwise each thread
+    // takes a contiguous range of triangles, and the ranges are put together in order.
+    const int parts = Probe::enabled || count < 1024 ? 1 : std::max(1, threads);
+    if (parts == 1) {
+        scanTriangles(scene, projection, 0, count, out, probe);
+        out.spanStart.push_back(static_cast<std::uint32_t>(out.spans.size()));
+        return out;
+    }
+    std::vector<ScanConversion> partial(static_cast<std::size_t>(parts));
+    runParts(parts, [&](int part) {
+        NullProbe none;
+        scanTriangles(scene, projection, rangeBegin(count, part, parts),
+                      rangeBegin(count, part + 1, parts), partial[static_cast<std::size_t>(part)],
+                      none);
+    });
+    std::size_t spans = 0;
+    for (const ScanConversion& p : partial) spans += p.spans.size();
+    out.spans.reserve(spans);
+    out.spanStart.reserve(count + 1);
+    for (const ScanConversion& p : partial) {
+        const auto offset = static_cast<std::uint32_t>(out.spans.size());
+        for (std::uint32_t start : p.spanStart) out.spanStart.push_back(start + offset);
+        out.spans.insert(out.spans.end(), p.spans.begin(), p.spans.end());
+        out.degenerate += p.degenerate;
+        out.offscreen += p.offscreen;
+        out.pixels += p.pixels;
+    }
     out.spanStart.push_back(static_cast<std::uint32_t>(out.spans.size()));
     return out;
 }
 
-ScanConversion ScanConversionStage::run(const Scene& scene, const Projection& projection) const {
+ScanConversion ScanConversionStage::run(const Scene& scene, const Projection& projection,
+                                        int threads) const {
     NullProbe probe;
-    return run(scene, projection, probe);
+    return run(scene, projection, probe, threads);
 }
 
 template ScanConversion ScanConversionStage::run<NullProbe>(const Scene&, const Projection&,
-                                                            NullProbe&) const;
+                                                            NullProbe&, int) const;
 template ScanConversion ScanConversionStage::run<RecordingProbe>(const Scene&, const Projection&,
-                                                                 RecordingProbe&) const;
+                                                                 RecordingProbe&, int) const;
 
 }  // namespace rl

@@ -79,8 +79,11 @@ struct NullProbe;
 class ScanConversionStage {
 public:
     template <typename Probe>
-    ScanConversion run(const Scene& scene, const Projection& projection, Probe& probe) const;
-    ScanConversion run(const Scene& scene, const Projection& projection) const;
+    // threads: contiguous ranges of triangles are scanned at once, the spans put together
+    // in triangle order (the result does not depend on their number).
+    ScanConversion run(const Scene& scene, const Projection& projection, Probe& probe,
+                       int threads = 1) const;
+    ScanConversion run(const Scene& scene, const Projection& projection, int threads = 1) const;
 };
 
 // The three screen vertices of a screen triangle.

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <optional>
 
+#include "parallel.h"
 #include "phong.h"
+#include "phong_kernel.h"
 #include "probe.h"
 
 namespace rl {
@@ -95,6 +97,22 @@ vec3 orientedNormal(const vec3& n, const vec3& pView, bool flip) {
     return flip && glm::dot(-pView, unit) < 0.0f ? -unit : unit;
 }
 
+// Gouraud's colours for a run of pixels; returns how many are above the colour scale.
+// Plain loops over separate channels, so that the compiler runs them on several lanes.
+std::size_t gouraudRun(const vec3& c0, const vec3& d1, const vec3& d2, const vec2* bary, int count,
+                       vec3* colour, float scale) {
+    std::size_t clamped = 0;
+    for (int i = 0; i < count; ++i) {
+        const float beta = bary[i].x, gamma = bary[i].y;
+        const float r = (c0.r + beta * d1.r) + gamma * d2.r;
+        const float g = (c0.g + beta * d1.g) + gamma * d2.g;
+        const float b = (c0.b + beta * d1.b) + gamma * d2.b;
+        colour[i] = vec3(r, g, b);
+        clamped += (r > scale) | (g > scale) | (b > scale) ? 1u : 0u;
+    }
+    return clamped;
+}
+
 void count(Shading& out, const PhongSample& s) {
     ++out.phongEvaluations;
     out.flipped += s.flipped ? 1 : 0;
@@ -108,12 +126,21 @@ void count(Shading& out, const PhongSample& s) {
 template <typename Probe>
 Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const Normals& normals,
                           const Projection& projection, const DepthTest& depth,
-                          const ShadingOptions& options, Probe& probe) const {
+                          const ShadingOptions& options, Probe& probe, int threads,
+                          Shading* recycled) const {
     Shading out;
+    if (recycled) {
+        out.colour = std::move(recycled->colour);
+        out.normal = std::move(recycled->normal);
+    }
     const Conventions& conv = scene.conventions;
     const vec3 background = vec3(conv.background) * conv.colourScale;
-    out.colour = Image<vec3>(scene.width, scene.height, background);
-    if (options.keepNormals) out.normal = Image<vec3>(scene.width, scene.height, vec3(0.0f));
+    // Every pixel is written below (the background where no triangle won).
+    out.colour.resize(scene.width, scene.height);
+    if (options.keepNormals)
+        out.normal.resize(scene.width, scene.height);
+    else
+        out.normal = Image<vec3>();
     const bool flip = conv.flipNormalsTowardViewer;
     const bool perspective =
         scene.rules.interpolation == RasterRules::Interpolation::PerspectiveCorrect;
@@ -170,14 +197,6 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
         return interpolate(dv.nView, tri, beta, gamma);
     };
 
-    // Flat and Gouraud colours, computed the first time a visible pixel needs them.
-    struct FlatShade {
-        vec3 colour;
-        vec3 normal;  // the triangle's normal as the evaluation used it (turned if need be)
-    };
-    std::vector<std::vector<std::optional<FlatShade>>> flatShades(projection.draws.size());
-    std::vector<std::vector<std::optional<vec3>>> vertexColours(projection.draws.size());
-
     // Seed 004: one evaluation at the barycentre of the (unclipped) triangle, with the
     // triangle's normal.
     auto flatSample = [&](const ScreenTriangle& tri) {
@@ -191,144 +210,286 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
         const vec3 n = normals.skipped ? vec3(0.0f) : normals.draws[tri.draw].triangle[tri.source];
         return light(draw, objectColour(draw, dv, whole, third, third), barycentre, n);
     };
-    auto flatShade = [&](const ScreenTriangle& tri) -> const FlatShade& {
-        auto& cache = flatShades[tri.draw];
-        if (cache.empty()) cache.resize(scene.draws[tri.draw].mesh->triangles.size());
-        auto& slot = cache[tri.source];
-        if (!slot) {
-            const PhongSample sample = flatSample(tri);
-            count(out, sample);
-            slot = FlatShade{sample.colour(), sample.n};
-        }
-        return *slot;
-    };
 
-    // Gouraud: the colour of a projected vertex; a vertex made by clipping takes the colour
-    // interpolated along its edge, as if clipping had happened after vertex lighting.
-    auto vertexColour = [&](std::uint32_t d, std::uint32_t v) -> vec3 {
-        auto& cache = vertexColours[d];
-        if (!cache.empty() && cache[v]) return *cache[v];  // the common case, kept short
-        const DrawProjection& proj = projection.draws[d];
-        const Draw& draw = scene.draws[d];
-        const DrawVertices& dv = vertices[d];
-        if (cache.empty()) cache.resize(proj.pView.size());
-        const auto lit = [&](std::uint32_t i, const auto& self) -> vec3 {
-            auto& slot = cache[i];
-            if (!slot) {
-                if (i >= proj.originalVertexCount) {
-                    const ClipVertex& g = proj.generated[i - proj.originalVertexCount];
-                    slot = glm::mix(self(g.a, self), self(g.b, self), static_cast<float>(g.t));
-                } else {
-                    const ScreenTriangle at{std::uint32_t(d), 0, {i, i, i}};
-                    const PhongSample sample = light(draw, objectColour(draw, dv, at, 0.0f, 0.0f),
-                                                     dv.pView.empty() ? vec3(0.0f) : dv.pView[i],
-                                                     dv.nView.empty() ? vec3(0.0f) : dv.nView[i]);
-                    count(out, sample);
-                    slot = sample.colour();
-                }
+    // Flat and Gouraud colours are evaluated first, for the visible triangles and their
+    // vertices only, so that the pixel loop (on several threads) only reads them.
+    struct DrawTables {
+        std::vector<vec3> flatColour, flatNormal;  // per mesh triangle
+        std::vector<vec3> vertexColour;            // per projected vertex (Gouraud)
+        std::vector<std::uint8_t> done;
+    };
+    std::vector<DrawTables> tables(projection.draws.size());
+    bool anyPerTriangle = false;
+    for (const Draw& draw : scene.draws)
+        anyPerTriangle = anyPerTriangle || draw.shading != ShadingModel::Phong;
+    if (anyPerTriangle) {
+        std::vector<std::uint8_t> visible(projection.triangles.size(), 0);
+        for (std::uint32_t t : depth.triangle.pixels())
+            if (t != kNoTriangle) visible[t] = 1;
+        // Gouraud: a projected vertex's colour; a vertex made by clipping takes the colour
+        // interpolated along its edge, as if clipping had happened after vertex lighting.
+        const auto vertexColour = [&](std::uint32_t d, std::uint32_t v, const auto& self) -> vec3 {
+            DrawTables& table = tables[d];
+            if (table.done[v]) return table.vertexColour[v];
+            const DrawProjection& proj = projection.draws[d];
+            const Draw& draw = scene.draws[d];
+            const DrawVertices& dv = vertices[d];
+            vec3 colour;
+            if (v >= proj.originalVertexCount) {
+                const ClipVertex& g = proj.generated[v - proj.originalVertexCount];
+                colour = glm::mix(self(d, g.a, self), self(d, g.b, self), static_cast<float>(g.t));
+            } else {
+                const ScreenTriangle at{d, 0, {v, v, v}};
+                const PhongSample sample = light(draw, objectColour(draw, dv, at, 0.0f, 0.0f),
+                                                 dv.pView.empty() ? vec3(0.0f) : dv.pView[v],
+                                                 dv.nView.empty() ? vec3(0.0f) : dv.nView[v]);
+                count(out, sample);
+                colour = sample.colour();
             }
-            return *slot;
+            table.vertexColour[v] = colour;
+            table.done[v] = 1;
+            return colour;
         };
-        return lit(v, lit);
-    };
-
-    for (int y = 0; y < scene.height; ++y) {
-        const std::uint32_t* idRow = depth.triangle.row(y);
-        const vec2* baryRow = depth.barycentric.row(y);
-        vec3* colourRow = out.colour.row(y);
-        for (int x = 0; x < scene.width; ++x) {
-            const std::uint32_t t = idRow[x];
-            if (t == kNoTriangle) continue;
+        for (std::size_t t = 0; t < projection.triangles.size(); ++t) {
+            if (!visible[t]) continue;
             const ScreenTriangle& tri = projection.triangles[t];
             const Draw& draw = scene.draws[tri.draw];
-            const DrawVertices& dv = vertices[tri.draw];
-            float beta = baryRow[x].x;
-            float gamma = baryRow[x].y;
-            if (perspective) {
-                // Barycentrics for attributes: each weight over its vertex's w, renormalised.
-                const double w0 = double(1.0f - beta - gamma) * dv.invW[tri.v[0]];
-                const double w1 = double(beta) * dv.invW[tri.v[1]];
-                const double w2 = double(gamma) * dv.invW[tri.v[2]];
-                const double sum = w0 + w1 + w2;
-                if (sum != 0.0 && std::isfinite(sum)) {
-                    beta = static_cast<float>(w1 / sum);
-                    gamma = static_cast<float>(w2 / sum);
+            DrawTables& table = tables[tri.draw];
+            if (draw.shading == ShadingModel::Flat) {
+                if (table.done.empty()) {
+                    table.flatColour.resize(draw.mesh->triangles.size());
+                    table.flatNormal.resize(draw.mesh->triangles.size());
+                    table.done.assign(draw.mesh->triangles.size(), 0);
                 }
-            }
-            vec3 colour(0.0f);
-            vec3 usedNormal(0.0f);
-            [[maybe_unused]] ShadeEvent event;
-            switch (draw.shading) {
-                case ShadingModel::Phong: {
-                    const vec3 p =
-                        dv.pView.empty() ? vec3(0.0f) : interpolate(dv.pView, tri, beta, gamma);
-                    const vec3 n = normalAt(draw, dv, tri, beta, gamma);
-                    const PhongSample s =
-                        light(draw, objectColour(draw, dv, tri, beta, gamma), p, n);
-                    if (draw.lighting != LightingModel::Unlit) count(out, s);
-                    colour = s.colour();
-                    usedNormal = s.n;
-                    if constexpr (Probe::enabled) {
-                        event.pView = p;
-                        event.nInterpolated = n;
-                        event.sample = s;
-                    }
-                    break;
+                if (!table.done[tri.source]) {
+                    const PhongSample sample = flatSample(tri);
+                    count(out, sample);
+                    table.flatColour[tri.source] = sample.colour();
+                    table.flatNormal[tri.source] = sample.n;
+                    table.done[tri.source] = 1;
                 }
-                case ShadingModel::Flat: {
-                    const FlatShade& shade = flatShade(tri);
-                    colour = shade.colour;
-                    usedNormal = shade.normal;
-                    if constexpr (Probe::enabled) event.sample = flatSample(tri);
-                    break;
+            } else if (draw.shading == ShadingModel::Gouraud) {
+                if (table.done.empty()) {
+                    const std::size_t n = projection.draws[tri.draw].pView.size();
+                    table.vertexColour.resize(n);
+                    table.done.assign(n, 0);
                 }
-                case ShadingModel::Gouraud: {
-                    const vec3 c0 = vertexColour(tri.draw, tri.v[0]);
-                    const vec3 c1 = vertexColour(tri.draw, tri.v[1]);
-                    const vec3 c2 = vertexColour(tri.draw, tri.v[2]);
-                    colour = c0 + beta * (c1 - c0) + gamma * (c2 - c0);
-                    if (options.keepNormals && !dv.pView.empty()) {
-                        // The normal Phong would use here: interpolated, normalised, turned
-                        // toward the viewer, so that the normals image means the same in
-                        // every shading model.
-                        const vec3 p = interpolate(dv.pView, tri, beta, gamma);
-                        usedNormal = orientedNormal(normalAt(draw, dv, tri, beta, gamma), p, flip);
-                    }
-                    if constexpr (Probe::enabled) event.vertexColours = {c0, c1, c2};
-                    break;
-                }
-            }
-            colourRow[x] = colour;
-            ++out.shadedPixels;
-            const float scale = conv.colourScale;
-            out.clampedPixels += (colour.r > scale || colour.g > scale || colour.b > scale) ? 1 : 0;
-            if (options.keepNormals) out.normal.at(x, y) = usedNormal;
-            if constexpr (Probe::enabled) {
-                event.triangle = t;
-                event.x = x;
-                event.y = y;
-                event.model = draw.shading;
-                event.colour = colour;
-                probe.onShade(event);
+                for (std::uint32_t v : tri.v) vertexColour(tri.draw, v, vertexColour);
             }
         }
+    }
+
+    // The pixels: rows shared out between the threads (one thread when a probe records).
+    const int parts = Probe::enabled ? 1 : std::max(1, std::min(threads, scene.height));
+    std::vector<Shading> partCounts(static_cast<std::size_t>(parts));
+    runParts(parts, [&](int part) {
+        Shading& counts = partCounts[static_cast<std::size_t>(part)];
+        const float scale = conv.colourScale;
+        for (int y = 0; y < scene.height; ++y) {
+            if (parts > 1 && !ownsRow(y, part, parts)) continue;
+            const std::uint32_t* idRow = depth.triangle.row(y);
+            const vec2* baryRow = depth.barycentric.row(y);
+            vec3* colourRow = out.colour.row(y);
+            vec3* normalRow = options.keepNormals ? out.normal.row(y) : nullptr;
+            int x = 0;
+            while (x < scene.width) {
+                const std::uint32_t t = idRow[x];
+                // A run of pixels won by one triangle (or by none): its set-up is done once.
+                int end = x + 1;
+                while (end < scene.width && idRow[end] == t) ++end;
+                if (t == kNoTriangle) {
+                    std::fill(colourRow + x, colourRow + end, background);
+                    if (normalRow) std::fill(normalRow + x, normalRow + end, vec3(0.0f));
+                    x = end;
+                    continue;
+                }
+                const ScreenTriangle& tri = projection.triangles[t];
+                const Draw& draw = scene.draws[tri.draw];
+                const DrawVertices& dv = vertices[tri.draw];
+                const DrawTables& table = tables[tri.draw];
+                // The course's common case: Phong with the material's colour, screen-affine.
+                const bool coursePhong = draw.shading == ShadingModel::Phong &&
+                                         draw.lighting == LightingModel::CoursePhong &&
+                                         draw.colour == ColourSource::Material &&
+                                         !draw.flatNormals && !perspective && !normals.skipped;
+                const std::size_t lightCount = std::min(draw.lightCount, view.lights.size());
+                if constexpr (!Probe::enabled) {
+                    if (coursePhong && lightCount == 1) {
+                        // Many pixels at once, the same bits as phong() (phong_kernel.h).
+                        const Material& m = draw.material;
+                        const ViewLight& l = view.lights[0];
+                        const vec3& a = dv.pView[tri.v[0]];
+                        const vec3& na = dv.nView[tri.v[0]];
+                        CoursePhongRun run;
+                        run.p0 = a;
+                        run.dp1 = dv.pView[tri.v[1]] - a;
+                        run.dp2 = dv.pView[tri.v[2]] - a;
+                        run.n0 = na;
+                        run.dn1 = dv.nView[tri.v[1]] - na;
+                        run.dn2 = dv.nView[tri.v[2]] - na;
+                        run.ambient = scene.ambientIntensity * m.ka;
+                        run.diffuse = l.intensity * m.od * m.kd;
+                        run.specular = l.intensity * m.ks;
+                        run.light = vec3(l.pView);
+                        run.directional = l.pView.w == 0.0;
+                        run.shininess = m.shininess;
+                        run.flip = flip;
+                        run.withSpecular = m.ks != 0.0f;
+                        CoursePhongCounts c;
+                        shadeCoursePhongRun(run, baryRow + x, end - x, colourRow + x,
+                                            normalRow ? normalRow + x : nullptr, scale, c);
+                        const std::size_t shaded = static_cast<std::size_t>(end - x);
+                        counts.shadedPixels += shaded;
+                        counts.phongEvaluations += shaded;
+                        counts.flipped += c.flipped;
+                        counts.lightBehind += c.lightBehind;
+                        counts.noSpecular += c.noSpecular;
+                        counts.noNormal += c.noNormal;
+                        counts.clampedPixels += c.clamped;
+                        x = end;
+                        continue;
+                    }
+                    if (draw.shading == ShadingModel::Flat && !normalRow) {
+                        // One colour for the whole run.
+                        const vec3 colour = table.flatColour[tri.source];
+                        std::fill(colourRow + x, colourRow + end, colour);
+                        const auto n = static_cast<std::size_t>(end - x);
+                        counts.shadedPixels += n;
+                        if (colour.r > scale || colour.g > scale || colour.b > scale)
+                            counts.clampedPixels += n;
+                        x = end;
+                        continue;
+                    }
+                    if (draw.shading == ShadingModel::Gouraud && !normalRow && !perspective) {
+                        // c0 + beta (c1 - c0) + gamma (c2 - c0), as interpolate() writes it.
+                        const vec3 c0 = table.vertexColour[tri.v[0]];
+                        const vec3 d1 = table.vertexColour[tri.v[1]] - c0;
+                        const vec3 d2 = table.vertexColour[tri.v[2]] - c0;
+                        counts.clampedPixels +=
+                            gouraudRun(c0, d1, d2, baryRow + x, end - x, colourRow + x, scale);
+                        counts.shadedPixels += static_cast<std::size_t>(end - x);
+                        x = end;
+                        continue;
+                    }
+                }
+                for (; x < end; ++x) {
+                    float beta = baryRow[x].x;
+                    float gamma = baryRow[x].y;
+                    vec3 colour(0.0f);
+                    vec3 usedNormal(0.0f);
+                    [[maybe_unused]] ShadeEvent event;
+                    if (coursePhong) {
+                        const vec3 p = interpolate(dv.pView, tri, beta, gamma);
+                        const vec3 n = interpolate(dv.nView, tri, beta, gamma);
+                        const PhongSample s =
+                            phong(draw.material, draw.material.od, scene.ambientIntensity,
+                                  view.lights.data(), lightCount, p, n, flip);
+                        count(counts, s);
+                        colour = s.colour();
+                        usedNormal = s.n;
+                        if constexpr (Probe::enabled) {
+                            event.pView = p;
+                            event.nInterpolated = n;
+                            event.sample = s;
+                        }
+                    } else {
+                        if (perspective) {
+                            // Barycentrics for attributes: each weight over its vertex's w,
+                            // renormalised.
+                            const double w0 = double(1.0f - beta - gamma) * dv.invW[tri.v[0]];
+                            const double w1 = double(beta) * dv.invW[tri.v[1]];
+                            const double w2 = double(gamma) * dv.invW[tri.v[2]];
+                            const double sum = w0 + w1 + w2;
+                            if (sum != 0.0 && std::isfinite(sum)) {
+                                beta = static_cast<float>(w1 / sum);
+                                gamma = static_cast<float>(w2 / sum);
+                            }
+                        }
+                        switch (draw.shading) {
+                            case ShadingModel::Phong: {
+                                const vec3 p = dv.pView.empty()
+                                                   ? vec3(0.0f)
+                                                   : interpolate(dv.pView, tri, beta, gamma);
+                                const vec3 n = normalAt(draw, dv, tri, beta, gamma);
+                                const PhongSample s =
+                                    light(draw, objectColour(draw, dv, tri, beta, gamma), p, n);
+                                if (draw.lighting != LightingModel::Unlit) count(counts, s);
+                                colour = s.colour();
+                                usedNormal = s.n;
+                                if constexpr (Probe::enabled) {
+                                    event.pView = p;
+                                    event.nInterpolated = n;
+                                    event.sample = s;
+                                }
+                                break;
+                            }
+                            case ShadingModel::Flat: {
+                                colour = table.flatColour[tri.source];
+                                usedNormal = table.flatNormal[tri.source];
+                                if constexpr (Probe::enabled) event.sample = flatSample(tri);
+                                break;
+                            }
+                            case ShadingModel::Gouraud: {
+                                const vec3 c0 = table.vertexColour[tri.v[0]];
+                                const vec3 c1 = table.vertexColour[tri.v[1]];
+                                const vec3 c2 = table.vertexColour[tri.v[2]];
+                                colour = c0 + beta * (c1 - c0) + gamma * (c2 - c0);
+                                if (normalRow && !dv.pView.empty()) {
+                                    // The normal Phong would use here: interpolated,
+                                    // normalised, turned toward the viewer, so that the
+                                    // normals image means the same in every shading model.
+                                    const vec3 p = interpolate(dv.pView, tri, beta, gamma);
+                                    usedNormal = orientedNormal(
+                                        normalAt(draw, dv, tri, beta, gamma), p, flip);
+                                }
+                                if constexpr (Probe::enabled) event.vertexColours = {c0, c1, c2};
+                                break;
+                            }
+                        }
+                    }
+                    colourRow[x] = colour;
+                    ++counts.shadedPixels;
+                    counts.clampedPixels +=
+                        (colour.r > scale || colour.g > scale || colour.b > scale) ? 1 : 0;
+                    if (normalRow) normalRow[x] = usedNormal;
+                    if constexpr (Probe::enabled) {
+                        event.triangle = t;
+                        event.x = x;
+                        event.y = y;
+                        event.model = draw.shading;
+                        event.colour = colour;
+                        probe.onShade(event);
+                    }
+                }
+            }
+        }
+    });
+    for (const Shading& c : partCounts) {
+        out.shadedPixels += c.shadedPixels;
+        out.phongEvaluations += c.phongEvaluations;
+        out.flipped += c.flipped;
+        out.lightBehind += c.lightBehind;
+        out.noSpecular += c.noSpecular;
+        out.noNormal += c.noNormal;
+        out.clampedPixels += c.clampedPixels;
     }
     return out;
 }
 
 Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const Normals& normals,
                           const Projection& projection, const DepthTest& depth,
-                          const ShadingOptions& options) const {
+                          const ShadingOptions& options, int threads, Shading* recycled) const {
     NullProbe probe;
-    return run(scene, view, normals, projection, depth, options, probe);
+    return run(scene, view, normals, projection, depth, options, probe, threads, recycled);
 }
 
 template Shading ShadingStage::run<NullProbe>(const Scene&, const ViewTransform&, const Normals&,
                                               const Projection&, const DepthTest&,
-                                              const ShadingOptions&, NullProbe&) const;
+                                              const ShadingOptions&, NullProbe&, int,
+                                              Shading*) const;
 template Shading ShadingStage::run<RecordingProbe>(const Scene&, const ViewTransform&,
                                                    const Normals&, const Projection&,
                                                    const DepthTest&, const ShadingOptions&,
-                                                   RecordingProbe&) const;
+                                                   RecordingProbe&, int, Shading*) const;
 
 }  // namespace rl

@@ -40,13 +40,16 @@ struct Shading {
 
 class ShadingStage {
 public:
+    // threads: the rows are shared out between them (parallel.h); the result does not depend
+    // on their number. recycled: an earlier frame's buffers, whose memory is reused.
     template <typename Probe>
     Shading run(const Scene& scene, const ViewTransform& view, const Normals& normals,
                 const Projection& projection, const DepthTest& depth, const ShadingOptions& options,
-                Probe& probe) const;
+                Probe& probe, int threads = 1, Shading* recycled = nullptr) const;
     Shading run(const Scene& scene, const ViewTransform& view, const Normals& normals,
                 const Projection& projection, const DepthTest& depth,
-                const ShadingOptions& options = {}) const;
+                const ShadingOptions& options = {}, int threads = 1,
+                Shading* recycled = nullptr) const;
 };
 
 }  // namespace rl

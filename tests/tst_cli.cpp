@@ -8,6 +8,9 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -133,6 +136,8 @@ private slots:
     void runWritesEveryImage();
     void runBadCommandFile_data();
     void runBadCommandFile();
+    void bench_data();
+    void bench();
 };
 
 void TestCli::initTestCase() {
@@ -299,7 +304,7 @@ void TestCli::usageErrors_data() {
         << (QStringList({"render", "--explain-pixel", "800,10"}) + out)
         << "--explain-pixel 800,10 is outside the 800x600 image";
     QTest::newRow("unknown command") << QStringList({"paint", "--output", "out.png"})
-                                     << "unknown command 'paint' (commands: render, run, "
+                                     << "unknown command 'paint' (commands: render, run, bench, "
                                         "generate-default-scene)";
     QTest::newRow("unknown option")
         << (QStringList({"render", "--bogus"}) + out) << "Unknown option 'bogus'.";
@@ -332,6 +337,28 @@ void TestCli::usageErrors_data() {
         << "--max-pixels expects a positive whole number, found '0'";
     QTest::newRow("run, outdir without value")
         << QStringList({"run", "a.txt", "--outdir"}) << "Missing value after '--outdir'.";
+    QTest::newRow("back faces unknown") << (QStringList({"render", "--back-faces", "hide"}) + out)
+                                        << "--back-faces expects draw or cull, found 'hide'";
+    QTest::newRow("bench, no frames") << QStringList({"bench", "--frames", "0"})
+                                      << "--frames expects a whole number of at least 1, found '0'";
+    QTest::newRow("bench, negative warm-up")
+        << QStringList({"bench", "--warmup", "-1"})
+        << "--warmup expects a whole number of at least 0, found '-1'";
+    QTest::newRow("bench, zero threads") << QStringList({"bench", "--threads", "0"})
+                                         << "--threads expects a whole number from 1 to 256, "
+                                            "found '0'";
+    QTest::newRow("bench, too many threads")
+        << QStringList({"bench", "--threads", "100000"})
+        << "--threads expects a whole number from 1 to 256, found '100000'";
+    QTest::newRow("bench, unknown format")
+        << QStringList({"bench", "--format", "csv"}) << "--format expects md or json, found 'csv'";
+    QTest::newRow("bench, unknown scene")
+        << QStringList({"bench", "--scene", "teapot"})
+        << "--scene expects one of sphere-1k, sphere-100k, sphere-1m, torus-1k, torus-100k, "
+           "torus-1m, full-screen, found 'teapot'";
+    QTest::newRow("bench, scene and files")
+        << QStringList({"bench", "--scene", "sphere-1k", "--object", "a.byu"})
+        << "--scene replaces --camera, --lighting and --object";
 }
 
 void TestCli::usageErrors() {
@@ -972,6 +999,61 @@ void TestCli::runBadCommandFile() {
     QCOMPARE(linesOf(run.err), QStringList(path + QLatin1Char(':') + message));
     QCOMPARE(run.out, QString());
     QVERIFY(!QFile::exists(dir.filePath("out/out.png")));
+}
+
+void TestCli::bench_data() {
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<int>("triangles");
+    QTest::addColumn<int>("threads");
+    QTest::newRow("default scene, 2 threads")
+        << QStringList({"--size", "200x150", "--threads", "2"}) << 7776 << 2;
+    QTest::newRow("sphere, gouraud, 1 thread")
+        << QStringList({"--scene", "sphere-1k", "--size", "160x120", "--shading", "gouraud",
+                        "--threads", "1"})
+        << 1000 << 1;
+}
+
+void TestCli::bench() {
+    QFETCH(QStringList, arguments);
+    QFETCH(int, triangles);
+    QFETCH(int, threads);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    CliRun run;
+    RUN_CLI(run, QStringList({"bench", "--frames", "5", "--format", "json"}) + arguments,
+            dir.path());
+    QCOMPARE(run.exitCode, 0);
+    QJsonParseError error;
+    const QJsonDocument doc = QJsonDocument::fromJson(run.out.toUtf8(), &error);
+    QVERIFY2(doc.isObject(), qPrintable(error.errorString() + QStringLiteral(": ") + run.out));
+    const QJsonObject o = doc.object();
+    QCOMPARE(o.value(QStringLiteral("triangles")).toInt(), triangles);
+    QCOMPARE(o.value(QStringLiteral("threads")).toInt(), threads);
+    QCOMPARE(o.value(QStringLiteral("frames")).toInt(), 5);
+    const QString size = arguments.at(arguments.indexOf(QStringLiteral("--size")) + 1);
+    QCOMPARE(QStringLiteral("%1x%2")
+                 .arg(o.value(QStringLiteral("width")).toInt())
+                 .arg(o.value(QStringLiteral("height")).toInt()),
+             size);
+    const double median = o.value(QStringLiteral("median_ms")).toDouble();
+    const double fastest = o.value(QStringLiteral("min_ms")).toDouble();
+    const double slowest = o.value(QStringLiteral("max_ms")).toDouble();
+    QVERIFY(fastest > 0.0 && fastest <= median && median <= slowest);
+    QVERIFY(o.value(QStringLiteral("covered_pixels")).toInt() > 0);
+    QVERIFY(o.value(QStringLiteral("peak_rss_mib")).toDouble() > 1.0);
+    const QJsonObject stages = o.value(QStringLiteral("stages_ms")).toObject();
+    QCOMPARE(stages.size(), 7);
+    double sum = 0.0;
+    for (const QJsonValue& v : stages) sum += v.toDouble();
+    QVERIFY(sum > 0.0);
+    // The Markdown table carries the same scene.
+    CliRun md;
+    RUN_CLI(md, QStringList({"bench", "--frames", "1"}) + arguments, dir.path());
+    QCOMPARE(md.exitCode, 0);
+    QVERIFY(md.out.startsWith(QStringLiteral("| scene | size | shading | threads |")));
+    QVERIFY(md.out.contains(QStringLiteral("| ") + size + QStringLiteral(" |")));
+    QVERIFY(md.out.contains(QStringLiteral("| scan conversion | ")));
+    QVERIFY(md.out.contains(QStringLiteral("Memory: peak ")));
 }
 
 QTEST_GUILESS_MAIN(TestCli)

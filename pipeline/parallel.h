@@ -1,0 +1,49 @@
+// Running a stage on several threads: the image's rows are dealt out in chunks of 8, chunk
+// k to thread k mod n, so that every thread gets a share of the busy middle rows and the
+// empty ones alike. Each pixel belongs to one thread, which handles it exactly as a single
+// thread would, in the same triangle order: the image is the same, bit for bit, for any
+// number of threads.
+#pragma once
+
+#include <algorithm>
+#include <thread>
+#include <vector>
+
+namespace rl {
+
+inline constexpr int kMaxThreads = 256;
+
+// 0 means one thread per core; at most kMaxThreads.
+inline int resolveThreads(int requested) {
+    if (requested > 0) return std::min(requested, kMaxThreads);
+    const unsigned cores = std::thread::hardware_concurrency();
+    return cores > 0 ? std::min(static_cast<int>(cores), kMaxThreads) : 1;
+}
+
+inline constexpr int kRowChunk = 8;
+
+// Whether row y belongs to thread `part` of `parts`.
+inline bool ownsRow(int y, int part, int parts) {
+    return (y / kRowChunk) % parts == part;
+}
+
+// Runs body(part) for part = 0 .. parts - 1, part 0 on the calling thread.
+template <typename Body>
+void runParts(int parts, const Body& body) {
+    if (parts <= 1) {
+        body(0);
+        return;
+    }
+    std::vector<std::thread> workers;
+    workers.reserve(static_cast<std::size_t>(parts - 1));
+    for (int part = 1; part < parts; ++part) workers.emplace_back([&body, part] { body(part); });
+    body(0);
+    for (auto& worker : workers) worker.join();
+}
+
+// Splits [0, count) into `parts` contiguous ranges; range k is [begin(k), begin(k + 1)).
+inline std::size_t rangeBegin(std::size_t count, int part, int parts) {
+    return count * static_cast<std::size_t>(part) / static_cast<std::size_t>(parts);
+}
+
+}  // namespace rl

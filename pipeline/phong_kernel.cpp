@@ -1,0 +1,176 @@
+#include "phong_kernel.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+// The helpers below are always inlined into the kernel's two builds, so no vector is ever
+// passed between functions: the warning about the AVX calling convention does not apply.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+#define RL_LANES inline __attribute__((always_inline))
+
+namespace rl {
+
+namespace {
+
+// Eight lanes, written with the compiler's vector extensions (GCC and Clang): each
+// operation below is the scalar one of phong() applied to eight pixels, so the results are
+// the same bits; the compiler turns them into two SSE instructions or one AVX instruction.
+constexpr int kLanes = 8;
+typedef float Floats __attribute__((vector_size(32)));
+typedef std::int32_t Ints __attribute__((vector_size(32)));
+
+RL_LANES Floats splat(float f) {
+    return Floats{f, f, f, f, f, f, f, f};
+}
+RL_LANES Ints splat(std::int32_t i) {
+    return Ints{i, i, i, i, i, i, i, i};
+}
+
+// Lanes where mask is set take a, the others b (mask lanes are all ones or zero).
+RL_LANES Floats select(const Ints& mask, const Floats& a, const Floats& b) {
+    return reinterpret_cast<Floats>((mask & reinterpret_cast<Ints>(a)) |
+                                    (~mask & reinterpret_cast<Ints>(b)));
+}
+
+RL_LANES Floats squareRoot(const Floats& v) {
+    Floats r;
+    for (int i = 0; i < kLanes; ++i) r[i] = __builtin_sqrtf(v[i]);  // correctly rounded
+    return r;
+}
+
+// fast_pow.h's fastLog2, fastExp2 and fastPow, lane by lane.
+RL_LANES Floats log2Lanes(const Floats& x) {
+    const Floats smallest = splat(1.17549435e-38f);
+    const Ints bits = reinterpret_cast<Ints>(select(x < smallest, smallest, x));
+    Floats e = __builtin_convertvector((bits >> 23) - 127, Floats);  // bits is positive
+    Floats m = reinterpret_cast<Floats>((bits & 0x007fffff) | 0x3f800000);
+    const Ints high = m > splat(1.41421356f);
+    m = select(high, m * 0.5f, m);
+    e = select(high, e + 1.0f, e);
+    const Floats t = (m - 1.0f) / (m + 1.0f);
+    const Floats t2 = t * t;
+    const Floats series =
+        1.0f + t2 * (1.0f / 3.0f + t2 * (1.0f / 5.0f + t2 * (1.0f / 7.0f + t2 * (1.0f / 9.0f))));
+    return e + (2.0f * t * series) * 1.44269504f;
+}
+
+RL_LANES Floats exp2Lanes(const Floats& exponent) {
+    const Ints underflow = exponent < -126.0f;
+    const Floats y =
+        select(underflow, splat(-126.0f), select(exponent > 127.0f, splat(127.0f), exponent));
+    const Ints k = __builtin_convertvector(y + 128.5f, Ints) - 128;
+    const Floats f = y - __builtin_convertvector(k, Floats);
+    const Floats u = f * 0.693147181f;
+    const Floats p =
+        1.0f +
+        u * (1.0f + u * (0.5f + u * (1.0f / 6.0f +
+                                     u * (1.0f / 24.0f +
+                                          u * (1.0f / 120.0f +
+                                               u * (1.0f / 720.0f + u * (1.0f / 5040.0f)))))));
+    const Floats scale = reinterpret_cast<Floats>((k + 127) << 23);
+    return select(underflow, splat(0.0f), p * scale);
+}
+
+RL_LANES Floats powLanes(const Floats& x, float n) {
+    const Floats power = exp2Lanes(n * log2Lanes(x));
+    return select(x > 0.0f, power, splat(n == 0.0f ? 1.0f : 0.0f));
+}
+
+}  // namespace
+
+__attribute__((target_clones("default", "arch=x86-64-v3"))) void shadeCoursePhongRun(
+    const CoursePhongRun& run, const vec2* bary, int count, vec3* colour, vec3* normal,
+    float clampScale, CoursePhongCounts& counts) {
+    const Ints all = splat(-1), none = splat(0);
+    const Ints flip = run.flip ? all : none;
+    const Ints directional = run.directional ? all : none;
+    const Ints withSpecular = run.withSpecular ? all : none;
+    const Ints laneIndex = {0, 1, 2, 3, 4, 5, 6, 7};
+    // Minus the counts, per lane (a set lane is -1).
+    Ints flippedSum = none, behindSum = none, noSpecularSum = none, noNormalSum = none,
+         clampedSum = none;
+    for (int start = 0; start < count; start += kLanes) {
+        const int n = count - start < kLanes ? count - start : kLanes;
+        Floats beta, gamma;
+        for (int i = 0; i < kLanes; ++i) {  // lanes past the run repeat its first pixel
+            beta[i] = bary[start + (i < n ? i : 0)].x;
+            gamma[i] = bary[start + (i < n ? i : 0)].y;
+        }
+        // P' and N, as interpolate() writes them: (a + beta d1) + gamma d2.
+        const Floats px = (run.p0.x + beta * run.dp1.x) + gamma * run.dp2.x;
+        const Floats py = (run.p0.y + beta * run.dp1.y) + gamma * run.dp2.y;
+        const Floats pz = (run.p0.z + beta * run.dp1.z) + gamma * run.dp2.z;
+        Floats nx = (run.n0.x + beta * run.dn1.x) + gamma * run.dn2.x;
+        Floats ny = (run.n0.y + beta * run.dn1.y) + gamma * run.dn2.y;
+        Floats nz = (run.n0.z + beta * run.dn1.z) + gamma * run.dn2.z;
+        // V = -P'/|P'| (zero when P' is); N normalised; turned toward the viewer when V.N < 0.
+        const Floats vLength = squareRoot((px * px + py * py) + pz * pz);
+        const Ints hasV = vLength > 0.0f;
+        const Floats vInverse = 1.0f / select(hasV, vLength, splat(1.0f));
+        const Floats vx = select(hasV, -px * vInverse, splat(0.0f));
+        const Floats vy = select(hasV, -py * vInverse, splat(0.0f));
+        const Floats vz = select(hasV, -pz * vInverse, splat(0.0f));
+        const Floats nLength = squareRoot((nx * nx + ny * ny) + nz * nz);
+        const Ints hasN = nLength > 0.0f;
+        const Floats nInverse = 1.0f / select(hasN, nLength, splat(1.0f));
+        nx = nx * nInverse;
+        ny = ny * nInverse;
+        nz = nz * nInverse;
+        const Ints turn = flip & (((vx * nx + vy * ny) + vz * nz) < 0.0f);
+        nx = select(turn, -nx, nx);
+        ny = select(turn, -ny, ny);
+        nz = select(turn, -nz, nz);
+        // L toward the light.
+        const Floats tx = select(directional, splat(run.light.x), run.light.x - px);
+        const Floats ty = select(directional, splat(run.light.y), run.light.y - py);
+        const Floats tz = select(directional, splat(run.light.z), run.light.z - pz);
+        const Floats lLength = squareRoot((tx * tx + ty * ty) + tz * tz);
+        const Ints hasL = lLength > 0.0f;
+        const Floats lInverse = 1.0f / select(hasL, lLength, splat(1.0f));
+        const Floats lx = tx * lInverse, ly = ty * lInverse, lz = tz * lInverse;
+        const Floats nDotL = (nx * lx + ny * ly) + nz * lz;
+        const Ints lit = hasN & hasL & (nDotL >= 0.0f);
+        // R = 2 (N.L) N - L (a unit vector); R.V.
+        const Floats twice = 2.0f * nDotL;
+        const Floats rx = twice * nx - lx, ry = twice * ny - ly, rz = twice * nz - lz;
+        const Floats rDotV = (rx * vx + ry * vy) + rz * vz;
+        const Ints highlight = lit & withSpecular & (rDotV >= 0.0f);
+        const Floats power =
+            select(highlight, powLanes(select(rDotV > 0.0f, rDotV, splat(0.0f)), run.shininess),
+                   splat(0.0f));
+        const Floats zero = splat(0.0f);
+        // ((ambient + diffuse) + specular) + unlit (zero), as PhongSample::colour() adds
+        // them (the last addition turns -0 into +0 there, so here too).
+        const Floats r = ((run.ambient.x + select(lit, run.diffuse.x * nDotL, zero)) +
+                          select(highlight, run.specular.x * power, zero)) +
+                         0.0f;
+        const Floats g = ((run.ambient.y + select(lit, run.diffuse.y * nDotL, zero)) +
+                          select(highlight, run.specular.y * power, zero)) +
+                         0.0f;
+        const Floats b = ((run.ambient.z + select(lit, run.diffuse.z * nDotL, zero)) +
+                          select(highlight, run.specular.z * power, zero)) +
+                         0.0f;
+        const Ints valid = laneIndex < n;
+        flippedSum += valid & hasN & turn;
+        behindSum += valid & hasN & hasL & (nDotL < 0.0f);
+        noSpecularSum += valid & lit & (rDotV < 0.0f);
+        noNormalSum += valid & ~hasN;
+        clampedSum += valid & ((r > clampScale) | (g > clampScale) | (b > clampScale));
+        for (int i = 0; i < n; ++i) colour[start + i] = vec3(r[i], g[i], b[i]);
+        if (normal) {
+            for (int i = 0; i < n; ++i)
+                normal[start + i] = hasN[i] ? vec3(nx[i], ny[i], nz[i]) : vec3(0.0f);
+        }
+    }
+    for (int i = 0; i < kLanes; ++i) {
+        counts.flipped += static_cast<std::size_t>(-flippedSum[i]);
+        counts.lightBehind += static_cast<std::size_t>(-behindSum[i]);
+        counts.noSpecular += static_cast<std::size_t>(-noSpecularSum[i]);
+        counts.noNormal += static_cast<std::size_t>(-noNormalSum[i]);
+        counts.clamped += static_cast<std::size_t>(-clampedSum[i]);
+    }
+}
+
+}  // namespace rl

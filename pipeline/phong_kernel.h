@@ -1,0 +1,38 @@
+// The course's Phong model (phong.h) for a run of pixels that one triangle won, written
+// for several lanes at once: the hot loop of a course render. The same operations in the
+// same order as phong(), so the colours are the same bits as the one-pixel path's (which a
+// recording probe uses); built twice, for the baseline x86-64 and for x86-64-v3 (AVX2), the
+// better one chosen when the program starts.
+#pragma once
+
+#include <cstddef>
+
+#include "math.h"
+
+namespace rl {
+
+// What a run needs, worked out once: P' and N at weights (beta, gamma) are
+// x0 + beta d1 + gamma d2, and one light's constant factors.
+struct CoursePhongRun {
+    vec3 p0, dp1, dp2;  // view-space position
+    vec3 n0, dn1, dn2;  // vertex normal (not normalised)
+    vec3 ambient;       // Ia ka
+    vec3 diffuse;       // (Il Od) kd
+    vec3 specular;      // Il ks
+    vec3 light;         // view-space position, or direction toward the light
+    bool directional = false;
+    float shininess = 1.0f;
+    bool flip = true;          // turn N toward the viewer
+    bool withSpecular = true;  // ks != 0
+};
+
+struct CoursePhongCounts {
+    std::size_t flipped = 0, lightBehind = 0, noSpecular = 0, noNormal = 0, clamped = 0;
+};
+
+// Shades `count` pixels with barycentrics bary[i] = (beta, gamma) into colour[i] (and the
+// normal used into normal[i] when normal is not null); clampScale is the colour scale.
+void shadeCoursePhongRun(const CoursePhongRun& run, const vec2* bary, int count, vec3* colour,
+                         vec3* normal, float clampScale, CoursePhongCounts& counts);
+
+}  // namespace rl

@@ -1,0 +1,299 @@
+// The fast paths against the plain render, bit for bit: a recording probe (which records
+// nothing here) forces the one-pixel, one-thread loops of every stage; renderFrame with 1 to
+// 5 threads takes the banded depth test, the vector kernels and the threaded stages. Every
+// buffer and every count must be the same. Also: closed surfaces and the back faces that
+// culling leaves out.
+#include <QtTest>
+
+#include "benchmark_scenes.h"
+#include "command_file.h"
+#include "course_scene.h"
+#include "default_scene_resource.h"
+#include "mesh_topology.h"
+#include "renderer.h"
+#include "test_support.h"
+
+using namespace rl;
+
+namespace {
+
+std::shared_ptr<const Scene> defaultScene(ShadingModel model, int width, int height) {
+    Diagnostics diagnostics;
+    auto parts = rasterlab::loadDefaultCourseScene(diagnostics);
+    if (!parts) qFatal("%s", parts.error().toString().c_str());
+    CourseSceneSettings settings;
+    settings.shading = model;
+    settings.width = width;
+    settings.height = height;
+    return std::make_shared<const Scene>(makeCourseScene(parts.value(), settings));
+}
+
+// A recording probe that records nothing: its only effect is the plain loops.
+RecordingProbe silentProbe() {
+    return RecordingProbe::forPixel(-1, -1);
+}
+
+// Compares two frames buffer by buffer and count by count; the first difference, or empty.
+QString difference(const FrameTrace& a, const FrameTrace& b) {
+    if (a.projection->triangles.size() != b.projection->triangles.size())
+        return QStringLiteral("screen triangles");
+    if (a.projection->backFaces != b.projection->backFaces) return QStringLiteral("back faces");
+    if (a.scan->spans != b.scan->spans) return QStringLiteral("spans");
+    if (a.scan->spanStart != b.scan->spanStart) return QStringLiteral("span starts");
+    if (a.scan->pixels != b.scan->pixels) return QStringLiteral("scanned pixels");
+    if (a.depth->depth != b.depth->depth) return QStringLiteral("depth buffer");
+    if (a.depth->triangle != b.depth->triangle) return QStringLiteral("triangle buffer");
+    if (a.depth->barycentric != b.depth->barycentric) return QStringLiteral("barycentrics");
+    if (a.depth->fragments != b.depth->fragments || a.depth->passed != b.depth->passed ||
+        a.depth->outsideDepthRange != b.depth->outsideDepthRange)
+        return QStringLiteral("depth counts");
+    const Shading& x = *a.shading;
+    const Shading& y = *b.shading;
+    if (x.colour != y.colour) return QStringLiteral("colour buffer");
+    if (x.normal != y.normal) return QStringLiteral("normal buffer");
+    if (x.shadedPixels != y.shadedPixels) return QStringLiteral("shaded pixels");
+    if (x.phongEvaluations != y.phongEvaluations) return QStringLiteral("Phong evaluations");
+    if (x.flipped != y.flipped) return QStringLiteral("flipped normals");
+    if (x.lightBehind != y.lightBehind) return QStringLiteral("lights behind");
+    if (x.noSpecular != y.noSpecular) return QStringLiteral("no specular");
+    if (x.noNormal != y.noNormal) return QStringLiteral("no normal");
+    if (x.clampedPixels != y.clampedPixels) return QStringLiteral("clamped pixels");
+    return {};
+}
+
+// A tetrahedron with outward normals by the right-hand rule.
+Mesh tetrahedron() {
+    Mesh m;
+    m.positions = {{0, 0, 0, 1}, {1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}};
+    m.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    return m;
+}
+
+}  // namespace
+
+class TestFastPaths : public QObject {
+    Q_OBJECT
+
+private slots:
+    void fastPathsEqualThePlainRender_data() {
+        QTest::addColumn<std::shared_ptr<const Scene>>("scene");
+        for (auto [name, model] :
+             {std::pair{"phong", ShadingModel::Phong}, std::pair{"flat", ShadingModel::Flat},
+              std::pair{"gouraud", ShadingModel::Gouraud}}) {
+            QTest::newRow((std::string("default scene, ") + name).c_str())
+                << defaultScene(model, 400, 300);
+            for (const char* bench : {"sphere-1k", "torus-1k", "full-screen"}) {
+                auto scene = makeBenchmarkScene(bench, 320, 240, model);
+                QVERIFY(scene);
+                QTest::newRow((std::string(bench) + ", " + name).c_str())
+                    << std::make_shared<const Scene>(std::move(*scene));
+            }
+        }
+        // The camera inside the torus: near-plane clipping, no culling, many flipped normals.
+        auto inside = makeBenchmarkScene("torus-1k", 320, 240, ShadingModel::Phong);
+        QVERIFY(inside);
+        inside->camera->c = dvec3(1.0, 0.0, 0.0);
+        inside->camera->n = dvec3(0.0, 0.0, 1.0);
+        QTest::newRow("inside the torus") << std::make_shared<const Scene>(std::move(*inside));
+        // Several lights (the kernel takes one; the others take the plain loop).
+        auto lights = makeBenchmarkScene("sphere-1k", 320, 240, ShadingModel::Phong);
+        QVERIFY(lights);
+        lights->lights.push_back({dvec4(-3.0, 2.0, -4.0, 1.0), vec3(90.0f, 40.0f, 200.0f), {}});
+        lights->lights.push_back({dvec4(0.0, 0.0, -1.0, 0.0), vec3(300.0f), {}});  // clamps
+        QTest::newRow("three lights") << std::make_shared<const Scene>(std::move(*lights));
+        // Directional light, ks = 0, n = 0.5.
+        auto matte = makeBenchmarkScene("sphere-1k", 320, 240, ShadingModel::Phong);
+        QVERIFY(matte);
+        matte->lights[0].pWorld = dvec4(1.0, 1.0, -1.0, 0.0);
+        matte->draws[0].material.ks = 0.0f;
+        QTest::newRow("directional, no specular") << std::make_shared<const Scene>(Scene(*matte));
+        matte->draws[0].material.ks = 0.8f;
+        matte->draws[0].material.shininess = 0.5f;
+        QTest::newRow("directional, n = 0.5") << std::make_shared<const Scene>(std::move(*matte));
+        // HW2 command files: perspective-correct attributes, textures, Lambert, depth range.
+        const QString dir = testing::samplesDir();
+        if (!dir.isEmpty()) {
+            for (const char* name : {"hw2texture", "hw2clipplane", "hw2sun1g", "hw2depth"}) {
+                Diagnostics diagnostics;
+                auto hw2 = rasterlab::loadCommandFile(
+                    dir + QStringLiteral("/hw2/") + QLatin1String(name) + QStringLiteral(".txt"),
+                    diagnostics);
+                QVERIFY2(hw2, name);
+                QTest::newRow(name) << std::make_shared<const Scene>(hw2->images.at(0).scene);
+            }
+        }
+    }
+
+    void fastPathsEqualThePlainRender() {
+        QFETCH(std::shared_ptr<const Scene>, scene);
+        RenderOptions options;
+        options.shading.keepNormals = false;
+        auto probe = silentProbe();
+        auto plain = traceFrame(scene, options, probe);
+        QVERIFY(plain.ok());
+        QCOMPARE(plain->threads, 1);
+        QVERIFY(plain->depth->coveredPixels() > 0);
+        RenderContext context;  // reused buffers must not leak one frame into the next
+        for (int threads : {1, 2, 3, 5}) {
+            options.threads = threads;
+            auto fast = renderFrame(scene, options, &context);
+            QVERIFY(fast.ok());
+            QCOMPARE(fast->threads, threads);
+            const QString diff = difference(*plain, *fast);
+            QVERIFY2(diff.isEmpty(),
+                     qPrintable(QStringLiteral("%1 thread(s): %2 differ").arg(threads).arg(diff)));
+        }
+        // With the normals kept, too (the kernels also write them).
+        options.shading.keepNormals = true;
+        auto probeWithNormals = silentProbe();
+        auto plainNormals = traceFrame(scene, options, probeWithNormals);
+        options.threads = 2;
+        auto fastNormals = renderFrame(scene, options);
+        QVERIFY(plainNormals.ok() && fastNormals.ok());
+        QVERIFY(!fastNormals->shading->normal.empty());
+        QCOMPARE(difference(*plainNormals, *fastNormals), QString());
+    }
+
+    void bufferReuseDoesNotLeakAcrossSizes() {
+        // A larger frame, then a smaller one, then the larger again, through one context.
+        RenderContext context;
+        RenderOptions options;
+        options.threads = 2;
+        const auto large = defaultScene(ShadingModel::Phong, 400, 300);
+        const auto small = defaultScene(ShadingModel::Gouraud, 160, 90);
+        Image<vec3> expected;
+        {
+            auto first = renderFrame(large, options, &context);  // let go at the brace
+            QVERIFY(first.ok());
+            expected = first->shading->colour;
+        }
+        QVERIFY(renderFrame(small, options, &context).ok());
+        auto again = renderFrame(large, options, &context);
+        QVERIFY(again.ok());
+        QCOMPARE(again->shading->colour, expected);
+    }
+
+    void closedSurfaces_data() {
+        QTest::addColumn<int>("expected");
+        QTest::addColumn<QString>("change");
+        QTest::newRow("tetrahedron") << 1 << QString();
+        QTest::newRow("turned inside out") << -1 << QStringLiteral("flip");
+        QTest::newRow("a face missing") << 0 << QStringLiteral("open");
+        QTest::newRow("one face wound the wrong way") << 0 << QStringLiteral("one");
+        QTest::newRow("a repeated corner") << 0 << QStringLiteral("repeat");
+        QTest::newRow("a third face on an edge") << 0 << QStringLiteral("fin");
+        QTest::newRow("two, one inside out") << 0 << QStringLiteral("pair");
+        QTest::newRow("two, both outward") << 1 << QStringLiteral("twins");
+    }
+
+    void closedSurfaces() {
+        QFETCH(int, expected);
+        QFETCH(QString, change);
+        Mesh m = tetrahedron();
+        const auto addCopy = [&](bool flip) {
+            const auto offset = static_cast<std::uint32_t>(m.positions.size());
+            for (std::size_t v = 0; v < 4; ++v)
+                m.positions.push_back(m.positions[v] + dvec4(5.0, 0.0, 0.0, 0.0));
+            for (std::size_t t = 0; t < 4; ++t) {
+                auto tri = m.triangles[t];
+                if (flip) std::swap(tri[1], tri[2]);
+                m.triangles.push_back({tri[0] + offset, tri[1] + offset, tri[2] + offset});
+            }
+        };
+        if (change == QStringLiteral("flip"))
+            for (auto& t : m.triangles) std::swap(t[1], t[2]);
+        if (change == QStringLiteral("open")) m.triangles.pop_back();
+        if (change == QStringLiteral("one")) std::swap(m.triangles[0][1], m.triangles[0][2]);
+        if (change == QStringLiteral("repeat")) m.triangles[0][1] = m.triangles[0][0];
+        if (change == QStringLiteral("fin")) {
+            m.positions.push_back({1, 1, 1, 1});
+            m.triangles.push_back({0, 1, 4});
+        }
+        if (change == QStringLiteral("pair")) addCopy(true);
+        if (change == QStringLiteral("twins")) addCopy(false);
+        QCOMPARE(closedSurfaceWinding(m), expected);
+    }
+
+    void generatedMeshesAreClosed() {
+        QCOMPARE(closedSurfaceWinding(*uvSphere(25, 21)), 1);
+        QCOMPARE(closedSurfaceWinding(*torusMesh(25, 20)), 1);
+        Diagnostics diagnostics;
+        auto parts = rasterlab::loadDefaultCourseScene(diagnostics);
+        QVERIFY(parts);
+        QCOMPARE(parts->object.mesh->closedWinding, closedSurfaceWinding(*parts->object.mesh));
+    }
+
+    void hiddenBackFacesAreLeftOut() {
+        // A unit sphere seen from outside: the triangles left out are exactly those whose
+        // normal points away from the camera, and the image hardly changes.
+        auto culled = makeBenchmarkScene("sphere-1k", 320, 240, ShadingModel::Phong);
+        QVERIFY(culled && culled->cullHiddenBackFaces);
+        Scene all = *culled;
+        all.cullHiddenBackFaces = false;
+        auto withCulling = renderFrame(std::make_shared<const Scene>(*culled));
+        auto without = renderFrame(std::make_shared<const Scene>(all));
+        QVERIFY(withCulling.ok() && without.ok());
+        QCOMPARE(without->projection->backFaces, std::size_t(0));
+        // The course's view basis (U, V, N) is left-handed, so the view transform mirrors
+        // and the outward normal in view space is (c - a) x (b - a).
+        const auto& pView = withCulling->view->pView[0];
+        QVERIFY(glm::determinant(dmat3(withCulling->view->viewFromModel[0])) < 0.0);
+        std::size_t away = 0;
+        for (const auto& t : culled->draws[0].mesh->triangles) {
+            const dvec3 a(pView[t[0]]), b(pView[t[1]]), c(pView[t[2]]);
+            away += glm::dot(glm::cross(c - a, b - a), a) > 0.0 ? 1 : 0;
+        }
+        QVERIFY(away > 550 && away < 700);  // about 1 - (1 - r/d) / 2 of them, d = 2.98 r
+        QCOMPARE(withCulling->projection->backFaces, away);
+        QCOMPARE(withCulling->projection->triangles.size() + away,
+                 without->projection->triangles.size());
+        // Only silhouette pixels change, where the course's integer vertices let a back face
+        // poke out beside the front faces or win the depth test (why course files draw
+        // every triangle unless asked).
+        const std::size_t coveredWith = withCulling->depth->coveredPixels();
+        const std::size_t coveredWithout = without->depth->coveredPixels();
+        QVERIFY(coveredWith <= coveredWithout &&
+                (coveredWithout - coveredWith) * 1000 < coveredWithout);
+        int changed = 0;
+        for (int y = 0; y < 240; ++y)
+            for (int x = 0; x < 320; ++x)
+                changed +=
+                    withCulling->shading->colour.at(x, y) != without->shading->colour.at(x, y) ? 1
+                                                                                               : 0;
+        qInfo("hidden back faces left out: %d of %zu covered pixels change, %zu uncovered", changed,
+              coveredWithout, coveredWithout - coveredWith);
+        QVERIFY(changed * 100 < int(without->depth->coveredPixels()));
+        QVERIFY(withCulling->scan->pixels < without->scan->pixels);
+        bool noted = false;
+        for (const Diagnostic& d : withCulling->diagnostics.items())
+            noted = noted || d.message.find("away from the camera") != std::string::npos;
+        QVERIFY(noted);
+    }
+
+    void backFacesStayWhenTheSurfaceIsOpenOrCut() {
+        // The camera inside the sphere: every vertex is not beyond the near plane.
+        auto inside = makeBenchmarkScene("sphere-1k", 160, 120, ShadingModel::Phong);
+        QVERIFY(inside);
+        inside->camera->c = dvec3(0.0, 0.0, 0.0);
+        auto trace = renderFrame(std::make_shared<const Scene>(std::move(*inside)));
+        QVERIFY(trace.ok());
+        QCOMPARE(trace->projection->backFaces, std::size_t(0));
+        QVERIFY(trace->depth->coveredPixels() == 160u * 120u);  // the inside of the sphere
+        // A clip plane cuts the surface open: the back faces behind the cut show.
+        auto cut = makeBenchmarkScene("sphere-1k", 160, 120, ShadingModel::Phong);
+        QVERIFY(cut);
+        cut->draws[0].clipPlanes.push_back(dvec4(0.0, 0.0, -1.0, 3.0));
+        auto cutTrace = renderFrame(std::make_shared<const Scene>(std::move(*cut)));
+        QVERIFY(cutTrace.ok());
+        QCOMPARE(cutTrace->projection->backFaces, std::size_t(0));
+        // Course files draw every triangle unless asked.
+        const auto course = defaultScene(ShadingModel::Phong, 160, 120);
+        QVERIFY(!course->cullHiddenBackFaces);
+        auto courseTrace = renderFrame(course);
+        QVERIFY(courseTrace.ok());
+        QCOMPARE(courseTrace->projection->backFaces, std::size_t(0));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFastPaths)
+#include "tst_fast_paths.moc"
