@@ -4,9 +4,12 @@
 
 #include <cstdio>
 
+#include "frame_memory.h"
+
 #include "cli.h"
 
 int main(int argc, char* argv[]) {
+    rl::keepFrameMemory();
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("rasterlab-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(RASTERLAB_VERSION));

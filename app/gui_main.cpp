@@ -4,9 +4,11 @@
 #include <QLocale>
 #include <QTranslator>
 
+#include "frame_memory.h"
 #include "main_window.h"
 
 int main(int argc, char* argv[]) {
+    rl::keepFrameMemory();
     QApplication app(argc, argv);
     QCoreApplication::setOrganizationName(QStringLiteral("RasterLab"));
     QCoreApplication::setApplicationName(QStringLiteral("RasterLab"));

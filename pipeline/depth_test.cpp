@@ -200,7 +200,7 @@ Counts testAll(const Scene& scene, const Projection& projection, const ScanConve
 // while its triangles are drawn. Every pixel sees the same fragments in the same order as
 // in testAll, so the buffers are the same bits.
 Counts testChunks(const Scene& scene, const Projection& projection, const ScanConversion& scan,
-                  DepthTest& out, int part, int parts) {
+                  DepthTest& out, int part, int parts, const std::vector<ColumnRange>& previous) {
     Counts counts;
     NullProbe probe;
     const int chunks = (scene.height + kRowChunk - 1) / kRowChunk;
@@ -208,29 +208,45 @@ Counts testChunks(const Scene& scene, const Projection& projection, const ScanCo
     struct Entry {
         std::uint32_t triangle, span;
     };
+    std::vector<std::uint8_t> mine(static_cast<std::size_t>(chunks), 0);
+    for (int c = part; c < chunks; c += parts) mine[static_cast<std::size_t>(c)] = 1;
     std::vector<std::uint32_t> start(static_cast<std::size_t>(chunks) + 1, 0);
-    for (const Span& span : scan.spans)
-        if (ownsRow(span.y, part, parts)) ++start[static_cast<std::size_t>(span.y / kRowChunk) + 1];
-    for (int c = 0; c < chunks; ++c) start[c + 1] += start[c];
+    for (const Span& span : scan.spans) ++start[static_cast<std::size_t>(span.y / kRowChunk) + 1];
+    for (int c = 0; c < chunks; ++c) {
+        const std::uint32_t own = mine[static_cast<std::size_t>(c)] ? start[c + 1] : 0;
+        start[c + 1] = start[c] + own;
+    }
     std::vector<Entry> entries(start[chunks]);
     std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
     for (std::size_t t = 0; t < projection.triangles.size(); ++t) {
         for (std::uint32_t k = scan.spanStart[t]; k < scan.spanStart[t + 1]; ++k) {
-            const int y = scan.spans[k].y;
-            if (ownsRow(y, part, parts))
-                entries[next[static_cast<std::size_t>(y / kRowChunk)]++] = {
-                    static_cast<std::uint32_t>(t), k};
+            const auto c = static_cast<std::size_t>(scan.spans[k].y / kRowChunk);
+            if (mine[c]) entries[next[c]++] = {static_cast<std::uint32_t>(t), k};
         }
     }
     const float clear = scene.conventions.depthClear;
-    const std::size_t width = static_cast<std::size_t>(scene.width);
     for (int c = part; c < chunks; c += parts) {
         const int y0 = c * kRowChunk;
         const int y1 = std::min(scene.height, y0 + kRowChunk);
-        const std::size_t pixels = width * static_cast<std::size_t>(y1 - y0);
-        std::fill_n(out.depth.row(y0), pixels, clear);
-        std::fill_n(out.triangle.row(y0), pixels, kNoTriangle);
-        std::fill_n(out.barycentric.row(y0), pixels, vec2(0.0f));
+        // Clear what the previous frame wrote (everything when that is not known).
+        const ColumnRange dirty =
+            previous.empty() ? ColumnRange{0, scene.width} : previous[static_cast<std::size_t>(c)];
+        if (dirty.begin < dirty.end) {
+            const auto n = static_cast<std::size_t>(dirty.end - dirty.begin);
+            for (int y = y0; y < y1; ++y) {
+                std::fill_n(out.depth.row(y) + dirty.begin, n, clear);
+                std::fill_n(out.triangle.row(y) + dirty.begin, n, kNoTriangle);
+                std::fill_n(out.barycentric.row(y) + dirty.begin, n, vec2(0.0f));
+            }
+        }
+        ColumnRange touched{scene.width, 0};
+        for (std::uint32_t e = start[c]; e < start[c + 1]; ++e) {
+            const Span& span = scan.spans[entries[e].span];
+            touched.begin = std::min(touched.begin, span.xBegin);
+            touched.end = std::max(touched.end, span.xEnd);
+        }
+        out.touched[static_cast<std::size_t>(c)] =
+            touched.begin < touched.end ? touched : ColumnRange{};
         std::uint32_t current = kNoTriangle;
         std::optional<TriangleSetup> setup;
         for (std::uint32_t e = start[c]; e < start[c + 1]; ++e) {
@@ -252,11 +268,19 @@ DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
                               const ScanConversion& scan, Probe& probe, int threads,
                               DepthTest* recycled) const {
     DepthTest out;
+    const float clear = scene.conventions.depthClear;
+    const int chunks = (scene.height + kRowChunk - 1) / kRowChunk;
+    std::vector<ColumnRange> previous;  // what the recycled buffers hold besides the clear value
     if (recycled) {
+        if (recycled->depth.width() == scene.width && recycled->depth.height() == scene.height &&
+            recycled->clearedTo == clear &&
+            recycled->touched.size() == static_cast<std::size_t>(chunks))
+            previous = std::move(recycled->touched);
         out.depth = std::move(recycled->depth);
         out.triangle = std::move(recycled->triangle);
         out.barycentric = std::move(recycled->barycentric);
     }
+    out.clearedTo = clear;
     std::vector<Counts> counts;
     if constexpr (Probe::enabled) {
         // A recording probe sees the events in triangle order: one thread.
@@ -269,11 +293,12 @@ DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
         out.depth.resize(scene.width, scene.height);
         out.triangle.resize(scene.width, scene.height);
         out.barycentric.resize(scene.width, scene.height);
+        out.touched.assign(static_cast<std::size_t>(chunks), ColumnRange{});
         const int parts = std::max(1, std::min(threads, scene.height));
         counts.resize(static_cast<std::size_t>(parts));
         runParts(parts, [&](int part) {
             counts[static_cast<std::size_t>(part)] =
-                testChunks(scene, projection, scan, out, part, parts);
+                testChunks(scene, projection, scan, out, part, parts, previous);
         });
     }
     for (const Counts& c : counts) {

@@ -33,6 +33,12 @@ struct DepthTest {
     std::size_t passed = 0;             // written (including those overwritten later)
     std::size_t rejected = 0;           // farther than (or as far as) what was stored
     std::size_t outsideDepthRange = 0;  // discarded: depth outside [0, 1] (seed 001)
+    // Per chunk of kRowChunk rows (parallel.h), the columns this frame's spans fell in: the
+    // only pixels that can differ from the cleared state. Empty when not tracked (a recording
+    // probe's frame): then every pixel may. The next frame that reuses these buffers clears
+    // only those columns (a small object on a large screen leaves most of it alone).
+    std::vector<ColumnRange> touched;
+    float clearedTo = 0.0f;  // the clear value of the untouched pixels
 
     std::size_t coveredPixels() const;
 };

@@ -7,6 +7,13 @@
 
 namespace rl {
 
+// Columns [begin, end) of a band of rows; empty when begin >= end.
+struct ColumnRange {
+    int begin = 0;
+    int end = 0;
+    bool operator==(const ColumnRange&) const = default;
+};
+
 template <typename T>
 class Image {
 public:

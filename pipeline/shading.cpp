@@ -129,12 +129,24 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                           const ShadingOptions& options, Probe& probe, int threads,
                           Shading* recycled) const {
     Shading out;
+    const Conventions& conv = scene.conventions;
+    const vec3 background = vec3(conv.background) * conv.colourScale;
+    // Columns to work on: only those the depth test touched, and those the recycled colour
+    // buffer holds something other than the background in (when both are known).
+    const int chunks = (scene.height + kRowChunk - 1) / kRowChunk;
+    const bool tracked = !Probe::enabled && !options.keepNormals &&
+                         depth.touched.size() == static_cast<std::size_t>(chunks);
+    std::vector<ColumnRange> previous;
     if (recycled) {
+        if (tracked && recycled->colour.width() == scene.width &&
+            recycled->colour.height() == scene.height && recycled->background == background &&
+            recycled->touched.size() == static_cast<std::size_t>(chunks))
+            previous = std::move(recycled->touched);
         out.colour = std::move(recycled->colour);
         out.normal = std::move(recycled->normal);
     }
-    const Conventions& conv = scene.conventions;
-    const vec3 background = vec3(conv.background) * conv.colourScale;
+    out.background = background;
+    if (tracked) out.touched = depth.touched;
     // Every pixel is written below (the background where no triangle won).
     out.colour.resize(scene.width, scene.height);
     if (options.keepNormals)
@@ -224,8 +236,15 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
         anyPerTriangle = anyPerTriangle || draw.shading != ShadingModel::Phong;
     if (anyPerTriangle) {
         std::vector<std::uint8_t> visible(projection.triangles.size(), 0);
-        for (std::uint32_t t : depth.triangle.pixels())
-            if (t != kNoTriangle) visible[t] = 1;
+        const bool touchedKnown = depth.touched.size() == static_cast<std::size_t>(chunks);
+        for (int y = 0; y < scene.height; ++y) {
+            const ColumnRange columns = touchedKnown
+                                            ? depth.touched[static_cast<std::size_t>(y / kRowChunk)]
+                                            : ColumnRange{0, scene.width};
+            const std::uint32_t* idRow = depth.triangle.row(y);
+            for (int x = columns.begin; x < columns.end; ++x)
+                if (idRow[x] != kNoTriangle) visible[idRow[x]] = 1;
+        }
         // Gouraud: a projected vertex's colour; a vertex made by clipping takes the colour
         // interpolated along its edge, as if clipping had happened after vertex lighting.
         const auto vertexColour = [&](std::uint32_t d, std::uint32_t v, const auto& self) -> vec3 {
@@ -291,12 +310,31 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
             const vec2* baryRow = depth.barycentric.row(y);
             vec3* colourRow = out.colour.row(y);
             vec3* normalRow = options.keepNormals ? out.normal.row(y) : nullptr;
-            int x = 0;
-            while (x < scene.width) {
+            // The columns to shade, and the background missing outside them.
+            ColumnRange columns{0, scene.width};
+            if (tracked) {
+                const auto c = static_cast<std::size_t>(y / kRowChunk);
+                columns = depth.touched[c];
+                const ColumnRange stale =
+                    previous.empty() ? ColumnRange{0, scene.width} : previous[c];
+                if (columns.begin >= columns.end) {
+                    if (stale.begin < stale.end)
+                        std::fill(colourRow + stale.begin, colourRow + stale.end, background);
+                } else {
+                    if (stale.begin < columns.begin)
+                        std::fill(colourRow + stale.begin,
+                                  colourRow + std::min(stale.end, columns.begin), background);
+                    if (stale.end > columns.end)
+                        std::fill(colourRow + std::max(stale.begin, columns.end),
+                                  colourRow + stale.end, background);
+                }
+            }
+            int x = columns.begin;
+            while (x < columns.end) {
                 const std::uint32_t t = idRow[x];
                 // A run of pixels won by one triangle (or by none): its set-up is done once.
                 int end = x + 1;
-                while (end < scene.width && idRow[end] == t) ++end;
+                while (end < columns.end && idRow[end] == t) ++end;
                 if (t == kNoTriangle) {
                     std::fill(colourRow + x, colourRow + end, background);
                     if (normalRow) std::fill(normalRow + x, normalRow + end, vec3(0.0f));

@@ -36,6 +36,11 @@ struct Shading {
     std::size_t noSpecular = 0;     // R.V < 0: no specular
     std::size_t noNormal = 0;       // zero normal: ambient only
     std::size_t clampedPixels = 0;  // a channel above the colour scale (becomes 255)
+    // Per chunk of kRowChunk rows (parallel.h), the columns that may hold other than the
+    // background (the depth test's DepthTest::touched); empty when not tracked. The next
+    // frame that reuses these buffers writes the background only where it is missing.
+    std::vector<ColumnRange> touched;
+    vec3 background = vec3(0.0f);  // of the pixels outside touched
 };
 
 class ShadingStage {

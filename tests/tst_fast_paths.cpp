@@ -173,6 +173,38 @@ private slots:
         QCOMPARE(again->shading->colour, expected);
     }
 
+    void reusedBuffersEqualFreshOnes() {
+        // Through one context: an object moving across the screen, one filling it, a
+        // different background, and back. Each frame equals a render with fresh buffers
+        // (the reused ones clear and repaint only the columns that changed).
+        auto base = makeBenchmarkScene("sphere-1k", 320, 240, ShadingModel::Phong);
+        QVERIFY(base);
+        std::vector<std::shared_ptr<const Scene>> frames;
+        for (double shift : {0.0, 1.5, -1.5}) {
+            Scene moved = *base;
+            moved.camera->c += dvec3(shift, 0.4 * shift, 0.0);
+            frames.push_back(std::make_shared<const Scene>(moved));
+        }
+        auto full = makeBenchmarkScene("full-screen", 320, 240, ShadingModel::Gouraud);
+        QVERIFY(full);
+        frames.push_back(std::make_shared<const Scene>(*full));
+        Scene grey = *base;
+        grey.conventions.background = vec4(0.5f, 0.5f, 0.5f, 1.0f);
+        frames.push_back(std::make_shared<const Scene>(grey));
+        frames.push_back(frames[1]);
+        frames.push_back(frames[0]);
+        RenderContext context;
+        RenderOptions options;
+        options.threads = 2;
+        for (std::size_t i = 0; i < frames.size(); ++i) {
+            auto reused = renderFrame(frames[i], options, &context);
+            auto fresh = renderFrame(frames[i], options);
+            QVERIFY(reused.ok() && fresh.ok());
+            const QString diff = difference(*fresh, *reused);
+            QVERIFY2(diff.isEmpty(), qPrintable(QStringLiteral("frame %1: %2").arg(i).arg(diff)));
+        }
+    }
+
     void closedSurfaces_data() {
         QTest::addColumn<int>("expected");
         QTest::addColumn<QString>("change");
