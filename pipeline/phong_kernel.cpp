@@ -137,9 +137,13 @@ __attribute__((target_clones("default", "arch=x86-64-v3"))) void shadeCoursePhon
         const Floats rx = twice * nx - lx, ry = twice * ny - ly, rz = twice * nz - lz;
         const Floats rDotV = (rx * vx + ry * vy) + rz * vz;
         const Ints highlight = lit & withSpecular & (rDotV >= 0.0f);
+        // No specular work at all when ks = 0.
         const Floats power =
-            select(highlight, powLanes(select(rDotV > 0.0f, rDotV, splat(0.0f)), run.shininess),
-                   splat(0.0f));
+            run.withSpecular
+                ? select(highlight,
+                         powLanes(select(rDotV > 0.0f, rDotV, splat(0.0f)), run.shininess),
+                         splat(0.0f))
+                : splat(0.0f);
         const Floats zero = splat(0.0f);
         // ((ambient + diffuse) + specular) + unlit (zero), as PhongSample::colour() adds
         // them (the last addition turns -0 into +0 there, so here too).
