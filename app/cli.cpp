@@ -534,7 +534,7 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     rl::RenderContext context;      // buffers reused from frame to frame
     std::vector<double> total;
     std::vector<std::array<double, rl::kStageCount>> stages;
-    std::size_t covered = 0;
+    std::size_t covered = 0, fragments = 0;
     int usedThreads = 0;
     double firstRss = -1.0;  // resident memory after the first timed frame, MiB
     for (int i = 0; i < warmupCount + frameCount; ++i) {
@@ -544,6 +544,7 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
         total.push_back(trace->totalMilliseconds);
         stages.push_back(trace->stageMilliseconds);
         covered = trace->depth->coveredPixels();
+        fragments = trace->depth->fragments;
         usedThreads = trace->threads;
         if (i == warmupCount) firstRss = memoryMiB("VmRSS:");
     }
@@ -574,7 +575,8 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
             << ", \"triangles\": " << scene->triangleCount() << ", \"threads\": " << usedThreads
             << ", \"frames\": " << frameCount << ", \"median_ms\": " << number(medianMs, 3)
             << ", \"min_ms\": " << number(minMs, 3) << ", \"max_ms\": " << number(maxMs, 3)
-            << ", \"covered_pixels\": " << covered << ", \"mpixels_per_s\": " << number(mpixels, 2)
+            << ", \"covered_pixels\": " << covered << ", \"fragments\": " << fragments
+            << ", \"mpixels_per_s\": " << number(mpixels, 2)
             << ", \"triangles_per_s\": " << number(triangles, 0)
             << ", \"peak_rss_mib\": " << number(peakRss, 1)
             << ", \"rss_first_frame_mib\": " << number(firstRss, 1)
