@@ -35,6 +35,13 @@ RecordingProbe silentProbe() {
 
 // Compares two frames buffer by buffer and count by count; the first difference, or empty.
 QString difference(const FrameTrace& a, const FrameTrace& b) {
+    if (a.normals->skipped != b.normals->skipped) return QStringLiteral("normals skipped");
+    for (std::size_t d = 0; d < a.normals->draws.size(); ++d) {
+        if (a.normals->draws[d].triangle != b.normals->draws[d].triangle ||
+            a.normals->draws[d].vertex != b.normals->draws[d].vertex ||
+            a.normals->draws[d].degenerateTriangles != b.normals->draws[d].degenerateTriangles)
+            return QStringLiteral("normals");
+    }
     if (a.projection->triangles.size() != b.projection->triangles.size())
         return QStringLiteral("screen triangles");
     if (a.projection->backFaces != b.projection->backFaces) return QStringLiteral("back faces");
