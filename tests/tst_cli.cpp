@@ -1040,6 +1040,9 @@ void TestCli::bench() {
     const double slowest = o.value(QStringLiteral("max_ms")).toDouble();
     QVERIFY(fastest > 0.0 && fastest <= median && median <= slowest);
     QVERIFY(o.value(QStringLiteral("covered_pixels")).toInt() > 0);
+    // Depth first: every covered pixel had at least one fragment, shaded once.
+    QVERIFY(o.value(QStringLiteral("fragments")).toInt() >=
+            o.value(QStringLiteral("covered_pixels")).toInt());
     QVERIFY(o.value(QStringLiteral("peak_rss_mib")).toDouble() > 1.0);
     const QJsonObject stages = o.value(QStringLiteral("stages_ms")).toObject();
     QCOMPARE(stages.size(), 7);
