@@ -15,6 +15,27 @@
 
 namespace rl {
 
+// The two polynomials, for a float or a vector of floats (phong_kernel.cpp), so that every
+// path evaluates them with the same operations.
+// log2 m for t = (m - 1)/(m + 1):
+template <typename F>
+inline __attribute__((always_inline)) F log2FromT(const F& t) {
+    const F t2 = t * t;
+    const F series =
+        1.0f + t2 * (1.0f / 3.0f + t2 * (1.0f / 5.0f + t2 * (1.0f / 7.0f + t2 * (1.0f / 9.0f))));
+    return (2.0f * t * series) * 1.44269504f;  // ln m / ln 2
+}
+// 2^f for |f| <= 1/2:
+template <typename F>
+inline __attribute__((always_inline)) F exp2Fraction(const F& f) {
+    const F u = f * 0.693147181f;
+    return 1.0f +
+           u * (1.0f + u * (0.5f + u * (1.0f / 6.0f +
+                                        u * (1.0f / 24.0f +
+                                             u * (1.0f / 120.0f +
+                                                  u * (1.0f / 720.0f + u * (1.0f / 5040.0f)))))));
+}
+
 inline float fastLog2(float x) {
     const auto bits = std::bit_cast<std::uint32_t>(x < 1.17549435e-38f ? 1.17549435e-38f : x);
     float e = static_cast<float>(static_cast<int>(bits >> 23) - 127);
@@ -22,11 +43,7 @@ inline float fastLog2(float x) {
     const bool high = m > 1.41421356f;
     m = high ? m * 0.5f : m;
     e = high ? e + 1.0f : e;
-    const float t = (m - 1.0f) / (m + 1.0f);
-    const float t2 = t * t;
-    const float series =
-        1.0f + t2 * (1.0f / 3.0f + t2 * (1.0f / 5.0f + t2 * (1.0f / 7.0f + t2 * (1.0f / 9.0f))));
-    return e + (2.0f * t * series) * 1.44269504f;  // ln m / ln 2
+    return e + log2FromT((m - 1.0f) / (m + 1.0f));
 }
 
 inline float fastExp2(float y) {
@@ -34,14 +51,7 @@ inline float fastExp2(float y) {
     y = y < -126.0f ? -126.0f : (y > 127.0f ? 127.0f : y);
     // k = floor(y + 1/2) through a conversion of a positive number (truncation = floor).
     const int k = static_cast<int>(y + 128.5f) - 128;
-    const float f = y - static_cast<float>(k);  // [-1/2, 1/2]
-    const float u = f * 0.693147181f;
-    const float p =
-        1.0f +
-        u * (1.0f + u * (0.5f + u * (1.0f / 6.0f +
-                                     u * (1.0f / 24.0f +
-                                          u * (1.0f / 120.0f +
-                                               u * (1.0f / 720.0f + u * (1.0f / 5040.0f)))))));
+    const float p = exp2Fraction(y - static_cast<float>(k));  // y - k in [-1/2, 1/2]
     const float scale = std::bit_cast<float>(static_cast<std::uint32_t>(k + 127) << 23);
     return underflow ? 0.0f : p * scale;
 }

@@ -1,12 +1,15 @@
+// The helpers below (and fast_pow.h's polynomials) are always inlined into the kernel's two
+// builds, so no vector is ever passed between functions: the warning about the AVX calling
+// convention does not apply.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
 #include "phong_kernel.h"
 
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 
-// The helpers below are always inlined into the kernel's two builds, so no vector is ever
-// passed between functions: the warning about the AVX calling convention does not apply.
-#pragma GCC diagnostic ignored "-Wpsabi"
+#include "fast_pow.h"
 
 #define RL_LANES inline __attribute__((always_inline))
 
@@ -49,11 +52,7 @@ RL_LANES Floats log2Lanes(const Floats& x) {
     const Ints high = m > splat(1.41421356f);
     m = select(high, m * 0.5f, m);
     e = select(high, e + 1.0f, e);
-    const Floats t = (m - 1.0f) / (m + 1.0f);
-    const Floats t2 = t * t;
-    const Floats series =
-        1.0f + t2 * (1.0f / 3.0f + t2 * (1.0f / 5.0f + t2 * (1.0f / 7.0f + t2 * (1.0f / 9.0f))));
-    return e + (2.0f * t * series) * 1.44269504f;
+    return e + log2FromT<Floats>((m - 1.0f) / (m + 1.0f));
 }
 
 RL_LANES Floats exp2Lanes(const Floats& exponent) {
@@ -61,14 +60,7 @@ RL_LANES Floats exp2Lanes(const Floats& exponent) {
     const Floats y =
         select(underflow, splat(-126.0f), select(exponent > 127.0f, splat(127.0f), exponent));
     const Ints k = __builtin_convertvector(y + 128.5f, Ints) - 128;
-    const Floats f = y - __builtin_convertvector(k, Floats);
-    const Floats u = f * 0.693147181f;
-    const Floats p =
-        1.0f +
-        u * (1.0f + u * (0.5f + u * (1.0f / 6.0f +
-                                     u * (1.0f / 24.0f +
-                                          u * (1.0f / 120.0f +
-                                               u * (1.0f / 720.0f + u * (1.0f / 5040.0f)))))));
+    const Floats p = exp2Fraction<Floats>(y - __builtin_convertvector(k, Floats));
     const Floats scale = reinterpret_cast<Floats>((k + 127) << 23);
     return select(underflow, splat(0.0f), p * scale);
 }

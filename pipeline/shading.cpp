@@ -416,73 +416,57 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                     vec3 colour(0.0f);
                     vec3 usedNormal(0.0f);
                     [[maybe_unused]] ShadeEvent event;
-                    if (coursePhong) {
-                        const vec3 p = interpolate(dv.pView, tri, beta, gamma);
-                        const vec3 n = interpolate(dv.nView, tri, beta, gamma);
-                        const PhongSample s =
-                            phong(draw.material, draw.material.od, scene.ambientIntensity,
-                                  view.lights.data(), lightCount, p, n, flip);
-                        count(counts, s);
-                        colour = s.colour();
-                        usedNormal = s.n;
-                        if constexpr (Probe::enabled) {
-                            event.pView = p;
-                            event.nInterpolated = n;
-                            event.sample = s;
+                    if (perspective) {
+                        // Barycentrics for attributes: each weight over its vertex's w,
+                        // renormalised.
+                        const double w0 = double(1.0f - beta - gamma) * dv.invW[tri.v[0]];
+                        const double w1 = double(beta) * dv.invW[tri.v[1]];
+                        const double w2 = double(gamma) * dv.invW[tri.v[2]];
+                        const double sum = w0 + w1 + w2;
+                        if (sum != 0.0 && std::isfinite(sum)) {
+                            beta = static_cast<float>(w1 / sum);
+                            gamma = static_cast<float>(w2 / sum);
                         }
-                    } else {
-                        if (perspective) {
-                            // Barycentrics for attributes: each weight over its vertex's w,
-                            // renormalised.
-                            const double w0 = double(1.0f - beta - gamma) * dv.invW[tri.v[0]];
-                            const double w1 = double(beta) * dv.invW[tri.v[1]];
-                            const double w2 = double(gamma) * dv.invW[tri.v[2]];
-                            const double sum = w0 + w1 + w2;
-                            if (sum != 0.0 && std::isfinite(sum)) {
-                                beta = static_cast<float>(w1 / sum);
-                                gamma = static_cast<float>(w2 / sum);
+                    }
+                    switch (draw.shading) {
+                        case ShadingModel::Phong: {
+                            const vec3 p = dv.pView.empty()
+                                               ? vec3(0.0f)
+                                               : interpolate(dv.pView, tri, beta, gamma);
+                            const vec3 n = normalAt(draw, dv, tri, beta, gamma);
+                            const PhongSample s =
+                                light(draw, objectColour(draw, dv, tri, beta, gamma), p, n);
+                            if (draw.lighting != LightingModel::Unlit) count(counts, s);
+                            colour = s.colour();
+                            usedNormal = s.n;
+                            if constexpr (Probe::enabled) {
+                                event.pView = p;
+                                event.nInterpolated = n;
+                                event.sample = s;
                             }
+                            break;
                         }
-                        switch (draw.shading) {
-                            case ShadingModel::Phong: {
-                                const vec3 p = dv.pView.empty()
-                                                   ? vec3(0.0f)
-                                                   : interpolate(dv.pView, tri, beta, gamma);
-                                const vec3 n = normalAt(draw, dv, tri, beta, gamma);
-                                const PhongSample s =
-                                    light(draw, objectColour(draw, dv, tri, beta, gamma), p, n);
-                                if (draw.lighting != LightingModel::Unlit) count(counts, s);
-                                colour = s.colour();
-                                usedNormal = s.n;
-                                if constexpr (Probe::enabled) {
-                                    event.pView = p;
-                                    event.nInterpolated = n;
-                                    event.sample = s;
-                                }
-                                break;
+                        case ShadingModel::Flat: {
+                            colour = table.flatColour[tri.source];
+                            usedNormal = table.flatNormal[tri.source];
+                            if constexpr (Probe::enabled) event.sample = flatSample(tri);
+                            break;
+                        }
+                        case ShadingModel::Gouraud: {
+                            const vec3 c0 = table.vertexColour[tri.v[0]];
+                            const vec3 c1 = table.vertexColour[tri.v[1]];
+                            const vec3 c2 = table.vertexColour[tri.v[2]];
+                            colour = c0 + beta * (c1 - c0) + gamma * (c2 - c0);
+                            if (normalRow && !dv.pView.empty()) {
+                                // The normal Phong would use here: interpolated,
+                                // normalised, turned toward the viewer, so that the
+                                // normals image means the same in every shading model.
+                                const vec3 p = interpolate(dv.pView, tri, beta, gamma);
+                                usedNormal =
+                                    orientedNormal(normalAt(draw, dv, tri, beta, gamma), p, flip);
                             }
-                            case ShadingModel::Flat: {
-                                colour = table.flatColour[tri.source];
-                                usedNormal = table.flatNormal[tri.source];
-                                if constexpr (Probe::enabled) event.sample = flatSample(tri);
-                                break;
-                            }
-                            case ShadingModel::Gouraud: {
-                                const vec3 c0 = table.vertexColour[tri.v[0]];
-                                const vec3 c1 = table.vertexColour[tri.v[1]];
-                                const vec3 c2 = table.vertexColour[tri.v[2]];
-                                colour = c0 + beta * (c1 - c0) + gamma * (c2 - c0);
-                                if (normalRow && !dv.pView.empty()) {
-                                    // The normal Phong would use here: interpolated,
-                                    // normalised, turned toward the viewer, so that the
-                                    // normals image means the same in every shading model.
-                                    const vec3 p = interpolate(dv.pView, tri, beta, gamma);
-                                    usedNormal = orientedNormal(
-                                        normalAt(draw, dv, tri, beta, gamma), p, flip);
-                                }
-                                if constexpr (Probe::enabled) event.vertexColours = {c0, c1, c2};
-                                break;
-                            }
+                            if constexpr (Probe::enabled) event.vertexColours = {c0, c1, c2};
+                            break;
                         }
                     }
                     colourRow[x] = colour;
