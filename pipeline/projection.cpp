@@ -28,8 +28,8 @@ dmat4 clipFromViewOf(const Scene& scene, const Draw& draw) {
 namespace {
 
 // A screen coordinate on the rules' sub-pixel grid.
-double snap(double coordinate, const RasterRules& rules) {
-    const double grid = std::ldexp(1.0, rules.subpixelBits);
+// grid = 2^subpixelBits, worked out once by the caller.
+double snap(double coordinate, const RasterRules& rules, double grid) {
     switch (rules.snap) {
         case RasterRules::VertexSnap::Truncate:
             return std::trunc(coordinate * grid) / grid;
@@ -66,6 +66,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
     const double width = scene.width;
     const double height = scene.height;
     const Conventions& conv = scene.conventions;
+    const double grid = std::ldexp(1.0, scene.rules.subpixelBits);
 
     // Every vertex to clip space first: the near plane is a plane of clip space, w = near.
     out.draws.resize(scene.draws.size());
@@ -111,7 +112,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             const dvec2 exact((pNdc.x + 1.0) * width / 2.0, yFromTop * height / 2.0);
             proj.pNdc[i] = pNdc;
             proj.pScreenExact[i] = exact;
-            dvec2 snapped(snap(exact.x, scene.rules), snap(exact.y, scene.rules));
+            dvec2 snapped(snap(exact.x, scene.rules, grid), snap(exact.y, scene.rules, grid));
             // An infinite coordinate (w = 0 under the naive projection) stays infinite, so the
             // triangle is dropped as NonFinite instead of being pulled in to the guard band.
             // Clipping keeps drawn vertices inside the guard band; only the naive projection
