@@ -4,6 +4,7 @@
 #include <cstring>
 #include <optional>
 
+#include "multiversion.h"
 #include "parallel.h"
 #include "probe.h"
 
@@ -44,10 +45,10 @@ inline __attribute__((always_inline)) Floats8 blend(const Ints8& mask, const Flo
                                      (~mask & reinterpret_cast<Ints8>(b)));
 }
 
-__attribute__((target_clones("default", "arch=x86-64-v3"))) std::size_t testSpan(
-    float* depthRow, std::uint32_t* idRow, float* baryRow, std::int32_t n, double beta0,
-    double betaDx, double gamma0, double gammaDx, float z0, float dz1, float dz2, std::uint32_t id,
-    bool winsOnTie) {
+RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, float* baryRow,
+                                     std::int32_t n, double beta0, double betaDx, double gamma0,
+                                     double gammaDx, float z0, float dz1, float dz2,
+                                     std::uint32_t id, bool winsOnTie) {
     std::int32_t i = 0;
     const Ints8 tie = winsOnTie ? Ints8{} - 1 : Ints8{};
     const auto ids = static_cast<std::int32_t>(id);

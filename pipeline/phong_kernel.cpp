@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include "fast_pow.h"
+#include "multiversion.h"
 
 #define RL_LANES inline __attribute__((always_inline))
 
@@ -72,9 +73,9 @@ RL_LANES Floats powLanes(const Floats& x, float n) {
 
 }  // namespace
 
-__attribute__((target_clones("default", "arch=x86-64-v3"))) void shadeCoursePhongRun(
-    const CoursePhongRun& run, const vec2* bary, int count, vec3* colour, vec3* normal,
-    float clampScale, CoursePhongCounts& counts) {
+RL_MULTIVERSION void shadeCoursePhongRun(const CoursePhongRun& run, const vec2* bary, int count,
+                                         vec3* colour, vec3* normal, float clampScale,
+                                         CoursePhongCounts& counts) {
     const Ints all = splat(-1), none = splat(0);
     const Ints flip = run.flip ? all : none;
     const Ints directional = run.directional ? all : none;

@@ -108,7 +108,7 @@ std::size_t gouraudRun(const vec3& c0, const vec3& d1, const vec3& d2, const vec
         const float g = (c0.g + beta * d1.g) + gamma * d2.g;
         const float b = (c0.b + beta * d1.b) + gamma * d2.b;
         colour[i] = vec3(r, g, b);
-        clamped += (r > scale) | (g > scale) | (b > scale) ? 1u : 0u;
+        clamped += ((r > scale) | (g > scale) | (b > scale)) ? 1u : 0u;
     }
     return clamped;
 }

@@ -12,6 +12,7 @@ packages=(
     libglm-dev                         # GLM
     fonts-dejavu-core                  # a font for the window and the offscreen tests
     locales                            # locale data: a test runs the CLI in pt_BR
+    clang libclang-rt-14-dev           # Clang and its ThreadSanitizer (scripts/sanitizers.sh)
 )
 
 missing=()

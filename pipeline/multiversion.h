@@ -1,0 +1,19 @@
+// RL_MULTIVERSION: a hot kernel built twice, for the baseline x86-64 and for x86-64-v3
+// (AVX2), the better one picked when the program starts (GCC and Clang's target_clones, an
+// ifunc). Under ThreadSanitizer the picking function would run, instrumented, before the
+// sanitizer is set up, and crash: there the kernel is built once, for the baseline.
+#pragma once
+
+#if defined(__SANITIZE_THREAD__)
+#define RL_THREAD_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(thread_sanitizer)
+#define RL_THREAD_SANITIZER 1
+#endif
+#endif
+
+#if defined(RL_THREAD_SANITIZER) || !defined(__x86_64__)
+#define RL_MULTIVERSION
+#else
+#define RL_MULTIVERSION __attribute__((target_clones("default", "arch=x86-64-v3")))
+#endif
