@@ -32,7 +32,7 @@ struct FrameTrace {
     Diagnostics diagnostics;  // what the stages noted and warned
     std::array<double, kStageCount> stageMilliseconds{};
     double totalMilliseconds = 0.0;
-    int threads = 1;  // the per-pixel stages ran on this many threads
+    int threads = 1;  // the stages that share out their work ran on this many threads
 
     // Whether a stage did nothing for this scene, and why ("" when it ran).
     std::string skipReason(StageId stage) const;

@@ -17,7 +17,8 @@ namespace rl {
 
 struct RenderOptions {
     ShadingOptions shading;
-    // Threads for the per-pixel stages: 0 for one per core. The image does not depend on it.
+    // Threads for the stages that share out their work (all but the first two and normals): 0
+    // for one per core, at most kMaxThreads. The image does not depend on it.
     int threads = 0;
 };
 

@@ -65,10 +65,21 @@ public:
         const std::int64_t dxFloor = floorDiv(dx, dy);
         m_step = dxFloor;
         m_stepRemainder = g.grid * (dx - dxFloor * dy);
-        const Int128 v = Int128(e.xTop - g.offset) * dy + Int128(g.sample(firstRow) - e.yTop) * dx;
-        const Int128 q = floorDiv<Int128>(v, m_d);
-        m_q = static_cast<std::int64_t>(q);
-        m_r = static_cast<std::int64_t>(v - q * m_d);
+        const std::int64_t a = e.xTop - g.offset;
+        const std::int64_t b = g.sample(firstRow) - e.yTop;
+        constexpr std::int64_t kSmall = std::int64_t(1) << 30;
+        if (a > -kSmall && a < kSmall && b > -kSmall && b < kSmall && dx > -kSmall && dx < kSmall &&
+            dy < kSmall) {
+            // The usual case: a dy + b dx fits in 62 bits, and 64-bit division is exact too.
+            const std::int64_t v = a * dy + b * dx;
+            m_q = floorDiv(v, m_d);
+            m_r = v - m_q * m_d;
+        } else {
+            const Int128 v = Int128(a) * dy + Int128(b) * dx;
+            const Int128 q = floorDiv<Int128>(v, m_d);
+            m_q = static_cast<std::int64_t>(q);
+            m_r = static_cast<std::int64_t>(v - q * m_d);
+        }
         m_grid = g;
     }
     std::int64_t floorX() const { return m_q; }
@@ -137,7 +148,7 @@ TriangleSetup setupTriangle(const std::array<dvec2, 3>& p, const RasterRules& ru
     const Int128 area = Int128(u.xBottom - u.xTop) * (l.yBottom - l.yTop) -
                         Int128(u.yBottom - u.yTop) * (l.xBottom - l.xTop);
     s.orientation = area > 0 ? 1 : (area < 0 ? -1 : 0);
-    s.doubleArea = double(area) * std::ldexp(1.0, -2 * bits);
+    s.doubleArea = double(area) / double(std::uint64_t(1) << (2 * bits));  // exact scaling
     // The middle vertex is right of the long edge when the area is positive.
     s.longEdgeOnLeft = area > 0;
     // Rows sampled: top <= sample <= bottom (inclusive) or top <= sample < bottom (top-left).
