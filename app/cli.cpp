@@ -4,12 +4,17 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QGuiApplication>
 #include <QRegularExpression>
 #include <QSaveFile>
 
+#include <algorithm>
+#include <cmath>
 #include <new>
 #include <optional>
 
+#include "accuracy.h"
+#include "accuracy_plot.h"
 #include "benchmark_scenes.h"
 #include "command_file.h"
 #include "default_scene.h"
@@ -62,6 +67,8 @@ QString generalHelp() {
         "  run FILE                 Run a command file (seed 001's png, xyz, trif ...) and\n"
         "                           write the PNGs it names.\n"
         "  bench                    Time a scene's frames (median, min, max, per stage).\n"
+        "  accuracy                 Error against run time of each mode, against an exact\n"
+        "                           ray-cast reference (table, plot, heat maps).\n"
         "  generate-default-scene   Write the default scene's three course files.\n"
         "\n"
         "Run 'rasterlab-cli <command> --help' for a command's options.\n");
@@ -153,6 +160,14 @@ struct SceneOptions {
             "from the camera when the camera is outside it and nothing cuts the surface open "
             "(hidden but for a few silhouette pixels; a note counts them)."),
         lit("MODE")};
+    QCommandLineOption rules{
+        lit("rules"),
+        lit("Rasterization rules: course (default: seed 000 as written, vertices truncated to "
+            "whole pixels, samples at pixel corners, screen-space interpolation), gpu (vertices "
+            "on a 1/256-pixel grid, samples at pixel centres, top-left fill rule, "
+            "perspective-correct interpolation and depth) or hw2 (seed 001's: 1/65536-pixel "
+            "grid, samples at pixel corners, top-left, perspective-correct)."),
+        lit("RULES"), lit("course")};
     QCommandLineOption maxPixels{lit("max-pixels"),
                                  lit("Refuse images with more pixels than this (default "
                                      "40000000, about 1.6 GB of buffers)."),
@@ -160,7 +175,7 @@ struct SceneOptions {
 
     void addTo(QCommandLineParser& parser) const {
         parser.addOptions({camera, cameraFormat, lighting, lightingFormat, object, size, shading,
-                           near, naive, backFaces, maxPixels});
+                           near, naive, backFaces, rules, maxPixels});
     }
 
     // Checks the options; ExitOk with the settings filled in, or a usage error's code.
@@ -190,6 +205,12 @@ struct SceneOptions {
             return usageError(err, lit("--shading expects phong, flat or gouraud, found '%1'")
                                        .arg(parser.value(shading)));
         out.shading = *model;
+        const auto ruleSet = rl::ruleSetFromName(parser.value(rules).toStdString());
+        if (!ruleSet)
+            return usageError(
+                err,
+                lit("--rules expects course, gpu or hw2, found '%1'").arg(parser.value(rules)));
+        out.rules = rl::rulesOf(*ruleSet);
         if (parser.isSet(near)) {
             bool ok = false;
             const double z = parser.value(near).toDouble(&ok);
@@ -248,6 +269,46 @@ struct SceneOptions {
         if (!o) return inputError(err, o.error());
         scene = std::make_shared<const rl::Scene>(
             rl::makeCourseScene({c.value(), l.value(), o.value()}, settings));
+        return ExitOk;
+    }
+
+    static QStringList generatedSceneNames() {
+        QStringList names;
+        for (const auto& s : rl::benchmarkScenes()) names << QString::fromStdString(s.name);
+        return names;
+    }
+    static QCommandLineOption generatedSceneOption() {
+        return {lit("scene"),
+                lit("A generated scene instead of course files: %1.")
+                    .arg(generatedSceneNames().join(lit(", "))),
+                lit("NAME")};
+    }
+
+    // The generated scene --scene names, or the course files (load). ExitOk, or the code of
+    // an error already printed.
+    int loadAny(const QCommandLineParser& parser, const QCommandLineOption& sceneName,
+                const rl::CourseSceneSettings& settings, QTextStream& err,
+                rl::Diagnostics& diagnostics, std::shared_ptr<const rl::Scene>& scene,
+                QString& sceneLabel) const {
+        if (parser.isSet(sceneName)) {
+            if (anyFile(parser))
+                return usageError(err, lit("--scene replaces --camera, --lighting and --object"));
+            auto generated =
+                rl::makeBenchmarkScene(parser.value(sceneName).toStdString(), settings.width,
+                                       settings.height, settings.shading);
+            if (!generated)
+                return usageError(
+                    err, lit("--scene expects one of %1, found '%2'")
+                             .arg(generatedSceneNames().join(lit(", ")), parser.value(sceneName)));
+            if (parser.isSet(backFaces))
+                generated->cullHiddenBackFaces = settings.cullHiddenBackFaces;
+            generated->rules = settings.rules;
+            scene = std::make_shared<const rl::Scene>(std::move(*generated));
+            sceneLabel = parser.value(sceneName);
+            return ExitOk;
+        }
+        if (int code = load(parser, settings, err, diagnostics, scene); code != ExitOk) return code;
+        sceneLabel = anyFile(parser) ? QString::fromStdString(scene->name) : lit("default scene");
         return ExitOk;
     }
 };
@@ -459,12 +520,7 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     const QCommandLineOption help({lit("h"), lit("help")}, lit("Show this help."));
     const SceneOptions sceneOptions;
-    QStringList names;
-    for (const auto& s : rl::benchmarkScenes()) names << QString::fromStdString(s.name);
-    const QCommandLineOption sceneName(
-        lit("scene"),
-        lit("A generated benchmark scene instead of course files: %1.").arg(names.join(lit(", "))),
-        lit("NAME"));
+    const QCommandLineOption sceneName = SceneOptions::generatedSceneOption();
     const QCommandLineOption frames(lit("frames"), lit("Timed frames (default 21)."), lit("N"),
                                     lit("21"));
     const QCommandLineOption warmup(lit("warmup"), lit("Untimed frames first (default 1)."),
@@ -509,24 +565,10 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     rl::Diagnostics diagnostics;
     std::shared_ptr<const rl::Scene> scene;
     QString sceneLabel;
-    if (parser.isSet(sceneName)) {
-        if (sceneOptions.anyFile(parser))
-            return usageError(err, lit("--scene replaces --camera, --lighting and --object"));
-        auto generated = rl::makeBenchmarkScene(parser.value(sceneName).toStdString(),
-                                                settings.width, settings.height, settings.shading);
-        if (!generated)
-            return usageError(err, lit("--scene expects one of %1, found '%2'")
-                                       .arg(names.join(lit(", ")), parser.value(sceneName)));
-        if (parser.isSet(sceneOptions.backFaces))
-            generated->cullHiddenBackFaces = settings.cullHiddenBackFaces;
-        scene = std::make_shared<const rl::Scene>(std::move(*generated));
-        sceneLabel = parser.value(sceneName);
-    } else {
-        if (int code = sceneOptions.load(parser, settings, err, diagnostics, scene); code != ExitOk)
-            return code;
-        sceneLabel = sceneOptions.anyFile(parser) ? QString::fromStdString(scene->name)
-                                                  : lit("default scene");
-    }
+    if (int code =
+            sceneOptions.loadAny(parser, sceneName, settings, err, diagnostics, scene, sceneLabel);
+        code != ExitOk)
+        return code;
     printDiagnostics(diagnostics, err);
 
     rl::RenderOptions options;
@@ -605,6 +647,215 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     return ExitOk;
 }
 
+// A list of whole numbers such as "1,2,4", each from least to most.
+bool parseList(const QString& text, int least, int most, std::vector<int>& values) {
+    values.clear();
+    for (const QString& part : text.split(QLatin1Char(','))) {
+        bool ok = false;
+        const int v = part.trimmed().toInt(&ok);
+        if (!ok || v < least || v > most) return false;
+        if (std::find(values.begin(), values.end(), v) == values.end()) values.push_back(v);
+    }
+    return !values.empty();
+}
+
+QString jsonNumber(double v, int decimals) {
+    return std::isfinite(v) ? QString::number(v, 'f', decimals) : lit("null");
+}
+
+int runAccuracy(const QStringList& arguments, QTextStream& out, QTextStream& err) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        lit("Render a scene in each mode (flat, Gouraud and Phong under the course, gpu and hw2 "
+            "rules, optionally supersampled), time each (median of --repeats frames) and compare "
+            "it with an exact reference: a ray cast per sample in double precision, exact "
+            "barycentrics, perspective-correct attributes, the same lighting formula. Colours "
+            "are compared as displayed, clamped and scaled to 0..1: RMSE, largest error and PSNR "
+            "over the pixels both cover, the share of pixels whose coverage differs, the share "
+            "within 1/255, and the relative error of the depth. --shading and --rules, when given, "
+            "keep only that shading model or rule set."));
+    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    const QCommandLineOption help({lit("h"), lit("help")}, lit("Show this help."));
+    const SceneOptions sceneOptions;
+    const QCommandLineOption sceneName = SceneOptions::generatedSceneOption();
+    const QCommandLineOption format(lit("format"), lit("md (default), csv or json."), lit("FORMAT"),
+                                    lit("md"));
+    const QCommandLineOption plot(lit("plot"), lit("Also draw error against time to a PNG."),
+                                  lit("FILE.png"));
+    const QCommandLineOption heatmaps(
+        lit("heatmaps"),
+        lit("Also write each mode's error heat map to DIR (error-<mode>.png: 0 to 8 byte "
+            "steps, dark blue to white; magenta where only one of the two covers a pixel)."),
+        lit("DIR"));
+    const QCommandLineOption repeats(lit("repeats"),
+                                     lit("Frames timed per mode; the median is reported "
+                                         "(default 5)."),
+                                     lit("N"), lit("5"));
+    const QCommandLineOption supersample(
+        lit("supersample"),
+        lit("Samples per pixel axis to measure, a list such as 1,2,4 (default 1): 2 is 2x2 "
+            "samples averaged, for the render and the reference alike."),
+        lit("LIST"), lit("1"));
+    const QCommandLineOption threads(
+        lit("threads"), lit("Threads to render with (default: every core)."), lit("N"));
+    parser.addOption(help);
+    sceneOptions.addTo(parser);
+    parser.addOptions({sceneName, format, plot, heatmaps, repeats, supersample, threads});
+    if (!parser.parse(arguments)) return usageError(err, parser.errorText());
+    if (parser.isSet(help)) {
+        out << commandHelp(parser, lit("accuracy"));
+        return ExitOk;
+    }
+    if (!parser.positionalArguments().isEmpty())
+        return usageError(
+            err, lit("unexpected argument '%1'").arg(parser.positionalArguments().first()));
+    rl::CourseSceneSettings settings;
+    if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
+    const QString outputFormat = parser.value(format);
+    if (outputFormat != lit("md") && outputFormat != lit("csv") && outputFormat != lit("json"))
+        return usageError(err,
+                          lit("--format expects md, csv or json, found '%1'").arg(outputFormat));
+    std::vector<int> repeatList, samples;
+    if (!parseList(parser.value(repeats), 1, 1000, repeatList) || repeatList.size() != 1)
+        return usageError(err, lit("--repeats expects a whole number from 1 to 1000, found '%1'")
+                                   .arg(parser.value(repeats)));
+    if (!parseList(parser.value(supersample), 1, 8, samples))
+        return usageError(err, lit("--supersample expects whole numbers from 1 to 8 separated "
+                                   "by commas, such as 1,2,4, found '%1'")
+                                   .arg(parser.value(supersample)));
+    int threadCount = 0;
+    if (parser.isSet(threads)) {
+        bool ok = false;
+        threadCount = parser.value(threads).toInt(&ok);
+        if (!ok || threadCount < 1 || threadCount > rl::kMaxThreads)
+            return usageError(err, lit("--threads expects a whole number from 1 to %1, found '%2'")
+                                       .arg(rl::kMaxThreads)
+                                       .arg(parser.value(threads)));
+    }
+    if (parser.isSet(plot) && !qobject_cast<QGuiApplication*>(QCoreApplication::instance()))
+        return usageError(err, lit("--plot needs the program's own start-up (run rasterlab-cli)"));
+
+    rl::Diagnostics diagnostics;
+    std::shared_ptr<const rl::Scene> scene;
+    QString sceneLabel;
+    if (int code =
+            sceneOptions.loadAny(parser, sceneName, settings, err, diagnostics, scene, sceneLabel);
+        code != ExitOk)
+        return code;
+    printDiagnostics(diagnostics, err);
+
+    std::vector<rl::ShadingModel> shadings = {rl::ShadingModel::Flat, rl::ShadingModel::Gouraud,
+                                              rl::ShadingModel::Phong};
+    if (parser.isSet(sceneOptions.shading)) shadings = {settings.shading};
+    std::vector<rl::RuleSet> ruleSets = {rl::RuleSet::Course, rl::RuleSet::Gpu, rl::RuleSet::Hw2};
+    if (parser.isSet(sceneOptions.rules)) ruleSets = {*rl::ruleSetOf(settings.rules)};
+    rl::AccuracyOptions options;
+    options.modes = rl::defaultAccuracyModes(shadings, ruleSets, samples);
+    options.repeats = repeatList.front();
+    options.threads = threadCount;
+    options.keepErrorMaps = parser.isSet(heatmaps);
+    auto report = rl::measureAccuracy(*scene, options);
+    if (!report) return inputError(err, report.error());
+
+    const auto number = [](double v, int decimals) { return QString::number(v, 'f', decimals); };
+    if (outputFormat == lit("json")) {
+        out << "[";
+        bool first = true;
+        for (const rl::AccuracyRow& row : report->rows) {
+            const rl::AccuracyMetrics& m = row.metrics;
+            out << (first ? "\n" : ",\n") << "  {\"mode\": \""
+                << rl::shadingModelName(row.mode.shading) << "\", \"rules\": \""
+                << rl::ruleSetName(row.mode.rules) << "\", \"precision\": \""
+                << QString::fromStdString(row.precision)
+                << "\", \"supersample\": " << row.mode.supersample * row.mode.supersample
+                << ", \"ms\": " << number(row.milliseconds, 3)
+                << ", \"rmse\": " << jsonNumber(m.rmse, 7)
+                << ", \"max_error\": " << jsonNumber(m.maxError, 7)
+                << ", \"psnr\": " << jsonNumber(m.psnr, 2)
+                << ", \"coverage_mismatch\": " << jsonNumber(m.coverageMismatchShare(), 6)
+                << ", \"within_1_255\": " << jsonNumber(m.within1Of255, 6)
+                << ", \"depth_error_mean\": " << jsonNumber(m.depthMeanRelative, 9)
+                << ", \"depth_error_max\": " << jsonNumber(m.depthMaxRelative, 9)
+                << ", \"both_covered\": " << m.bothCovered
+                << ", \"either_covered\": " << m.eitherCovered
+                << ", \"coverage_mismatch_pixels\": " << m.coverageMismatch << "}";
+            first = false;
+        }
+        out << "\n]\n";
+    } else if (outputFormat == lit("csv")) {
+        out << "mode,rules,precision,supersample,ms,rmse,max_error,psnr,coverage_mismatch,"
+               "within_1_255,depth_error_mean,depth_error_max\n";
+        for (const rl::AccuracyRow& row : report->rows) {
+            const rl::AccuracyMetrics& m = row.metrics;
+            out << rl::shadingModelName(row.mode.shading) << "," << rl::ruleSetName(row.mode.rules)
+                << "," << QString::fromStdString(row.precision) << ","
+                << row.mode.supersample * row.mode.supersample << "," << number(row.milliseconds, 3)
+                << "," << number(m.rmse, 7) << "," << number(m.maxError, 7) << ","
+                << (std::isfinite(m.psnr) ? number(m.psnr, 2) : lit("inf")) << ","
+                << number(m.coverageMismatchShare(), 6) << "," << number(m.within1Of255, 6) << ","
+                << number(m.depthMeanRelative, 9) << "," << number(m.depthMaxRelative, 9) << "\n";
+        }
+    } else {
+        out << "Accuracy of " << sceneLabel << " at " << scene->width << "x" << scene->height
+            << " (" << scene->triangleCount() << " triangles) against the exact reference ("
+            << report->referenceRays << " rays, " << number(report->referenceMilliseconds, 0)
+            << " ms). Colour errors in byte steps (1/255) over the pixels both cover; time is "
+               "the median per frame.\n\n"
+            << "| mode | rules | precision | samples | ms | RMSE | max error | PSNR dB | "
+               "coverage mismatch | within 1/255 | depth error mean / max |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+        for (const rl::AccuracyRow& row : report->rows) {
+            const rl::AccuracyMetrics& m = row.metrics;
+            out << "| " << rl::shadingModelName(row.mode.shading) << " | "
+                << rl::ruleSetName(row.mode.rules) << " | " << QString::fromStdString(row.precision)
+                << " | " << row.mode.supersample * row.mode.supersample << " | "
+                << number(row.milliseconds, 2) << " | " << number(m.rmse * 255.0, 3) << " | "
+                << number(m.maxError * 255.0, 2) << " | "
+                << (std::isfinite(m.psnr) ? number(m.psnr, 1) : lit("inf")) << " | "
+                << number(100.0 * m.coverageMismatchShare(), 3) << " % (" << m.coverageMismatch
+                << " px) | " << number(100.0 * m.within1Of255, 3) << " % | "
+                << (std::isnan(m.depthMeanRelative)
+                        ? lit("-")
+                        : QString::number(m.depthMeanRelative, 'g', 2) + lit(" / ") +
+                              QString::number(m.depthMaxRelative, 'g', 2))
+                << " |\n";
+        }
+    }
+    if (parser.isSet(plot)) {
+        const QString title = lit("Error against run time: %1, %2x%3, %4 triangles")
+                                  .arg(sceneLabel)
+                                  .arg(scene->width)
+                                  .arg(scene->height)
+                                  .arg(scene->triangleCount());
+        const QImage image = accuracyPlot(report.value(), title);
+        if (!image.save(parser.value(plot), "PNG")) {
+            err << parser.value(plot) << ": cannot write the plot\n";
+            return ExitBadInput;
+        }
+        out << "wrote " << QFileInfo(parser.value(plot)).absoluteFilePath() << " (plot)\n";
+    }
+    if (parser.isSet(heatmaps)) {
+        const QDir folder(parser.value(heatmaps));
+        if (!QDir().mkpath(folder.path())) {
+            err << folder.path() << ": cannot create the folder\n";
+            return ExitBadInput;
+        }
+        for (const rl::AccuracyRow& row : report->rows) {
+            QString name = QString::fromStdString(rl::accuracyModeName(row.mode));
+            name.replace(QLatin1Char('/'), QLatin1Char('-')).replace(lit(" "), QString());
+            const QString path = folder.filePath(lit("error-%1.png").arg(name));
+            // One scale for every mode: 0 to 8 byte steps, larger errors white.
+            if (!errorHeatMap(row.errorMap, 8.0f / 255.0f).save(path, "PNG")) {
+                err << path << ": cannot write the heat map\n";
+                return ExitBadInput;
+            }
+            out << "wrote " << QFileInfo(path).absoluteFilePath() << " (heat map)\n";
+        }
+    }
+    out.flush();
+    return ExitOk;
+}
+
 int runGenerateDefaultScene(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     QCommandLineParser parser;
     parser.setApplicationDescription(lit("Write the default scene's three course files."));
@@ -666,13 +917,15 @@ int runCli(const QStringList& arguments, QTextStream& out, QTextStream& err) {
             code = runRender(rest, out, err);
         else if (command == lit("bench"))
             code = runBench(rest, out, err);
+        else if (command == lit("accuracy"))
+            code = runAccuracy(rest, out, err);
         else if (command == lit("run"))
             code = runCommandFile(rest, out, err);
         else if (command == lit("generate-default-scene"))
             code = runGenerateDefaultScene(rest, out, err);
         else
             code = usageError(err, lit("unknown command '%1' (commands: render, run, bench, "
-                                       "generate-default-scene)")
+                                       "accuracy, generate-default-scene)")
                                        .arg(command));
     } catch (const std::bad_alloc&) {
         // The only exception the pipeline can meet: a frame larger than the memory.

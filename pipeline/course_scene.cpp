@@ -27,7 +27,7 @@ Scene makeCourseScene(const CourseSceneParts& parts, const CourseSceneSettings& 
     scene.ambientIntensity = parts.lighting.ambientIntensity;
     scene.nearPlane = settings.nearPlane;
     scene.cullHiddenBackFaces = settings.cullHiddenBackFaces;
-    scene.rules = RasterRules::course();
+    scene.rules = settings.rules;
     scene.conventions = Conventions::course();
 
     Draw draw;

@@ -29,6 +29,7 @@ struct CourseSceneSettings {
     ShadingModel shading = ShadingModel::Phong;
     NearPlane nearPlane;
     bool cullHiddenBackFaces = false;  // Scene::cullHiddenBackFaces
+    RasterRules rules = RasterRules::course();
 };
 
 // The object from text in memory, named after its file (fileName is used in messages only;

@@ -22,6 +22,12 @@ std::size_t DepthTest::coveredPixels() const {
 
 namespace {
 
+// View z under perspective-correct rules is interpolated as 1/z (NDC z already is linear).
+bool perspectiveDepth(const Scene& scene) {
+    return scene.rules.interpolation == RasterRules::Interpolation::PerspectiveCorrect &&
+           scene.conventions.depth == DepthSource::ViewZ;
+}
+
 struct Counts {
     std::size_t fragments = 0, passed = 0, outsideDepthRange = 0;
 };
@@ -48,7 +54,7 @@ inline __attribute__((always_inline)) Floats8 blend(const Ints8& mask, const Flo
 RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, float* baryRow,
                                      std::int32_t n, double beta0, double betaDx, double gamma0,
                                      double gammaDx, float z0, float dz1, float dz2,
-                                     std::uint32_t id, bool winsOnTie) {
+                                     std::uint32_t id, bool winsOnTie, bool reciprocal) {
     std::int32_t i = 0;
     const Ints8 tie = winsOnTie ? Ints8{} - 1 : Ints8{};
     const auto ids = static_cast<std::int32_t>(id);
@@ -63,7 +69,8 @@ RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, floa
         const Floats8 gamma = __builtin_shufflevector(
             __builtin_convertvector(gamma0 + low * gammaDx, Floats4),
             __builtin_convertvector(gamma0 + high * gammaDx, Floats4), 0, 1, 2, 3, 4, 5, 6, 7);
-        const Floats8 z = (z0 + beta * dz1) + gamma * dz2;
+        Floats8 z = (z0 + beta * dz1) + gamma * dz2;
+        if (reciprocal) z = 1.0f / z;
         Floats8 stored;
         Ints8 storedId;
         Floats8 storedBary[2];
@@ -88,7 +95,8 @@ RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, floa
     for (; i < n; ++i) {
         const auto beta = static_cast<float>(beta0 + double(i) * betaDx);
         const auto gamma = static_cast<float>(gamma0 + double(i) * gammaDx);
-        const float z = z0 + beta * dz1 + gamma * dz2;
+        float z = z0 + beta * dz1 + gamma * dz2;
+        if (reciprocal) z = 1.0f / z;
         if (z < depthRow[i] || (winsOnTie && z == depthRow[i])) {
             depthRow[i] = z;
             idRow[i] = id;
@@ -101,18 +109,23 @@ RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, floa
 }
 
 // What the depth test of one triangle's spans needs, worked out once per triangle.
+// With reciprocal, the plane interpolated is that of 1/z, and a fragment's depth is one over
+// it: view z is not linear on the screen, but 1/z is (perspective-correct depth).
 struct TriangleSetup {
     dvec2 p0, e1, e2;
     double area = 0.0, betaDx = 0.0, gammaDx = 0.0;
     float z0 = 0.0f, dz1 = 0.0f, dz2 = 0.0f;
 
-    TriangleSetup(const Projection& projection, std::size_t t) {
+    TriangleSetup(const Projection& projection, std::size_t t, bool reciprocal) {
         const ScreenTriangle& tri = projection.triangles[t];
         const DrawProjection& draw = projection.draws[tri.draw];
         const std::array<dvec2, 3> p = screenVertices(projection, tri);
-        z0 = draw.depth[tri.v[0]];
-        dz1 = draw.depth[tri.v[1]] - z0;
-        dz2 = draw.depth[tri.v[2]] - z0;
+        const auto depthOf = [&](std::uint32_t v) {
+            return reciprocal ? 1.0f / draw.depth[v] : draw.depth[v];
+        };
+        z0 = depthOf(tri.v[0]);
+        dz1 = depthOf(tri.v[1]) - z0;
+        dz2 = depthOf(tri.v[2]) - z0;
         // Barycentrics of a sample s: s = P1 + beta (P2 - P1) + gamma (P3 - P1), so
         // beta = (s - P1) x (P3 - P1) / A and gamma = (P2 - P1) x (s - P1) / A, where
         // A = (P2 - P1) x (P3 - P1). Both are linear in x along a scanline.
@@ -132,6 +145,7 @@ void testSpanOf(const Scene& scene, const TriangleSetup& setup, std::uint32_t id
     const double offset = scene.rules.sampleOffset;
     const bool winsOnTie = scene.conventions.depthWinsOnTie;
     const bool rangeClip = scene.conventions.depthRangeClip;
+    const bool reciprocal = perspectiveDepth(scene);
     // The sample of pixel (x, y) is the point (x + offset, y + offset).
     const dvec2 s0 = dvec2(span.xBegin + offset, span.y + offset) - setup.p0;
     const dvec2 e1 = setup.e1, e2 = setup.e2;
@@ -148,7 +162,7 @@ void testSpanOf(const Scene& scene, const TriangleSetup& setup, std::uint32_t id
         if (!rangeClip) {
             counts.passed +=
                 testSpan(depthRow + span.xBegin, idRow + span.xBegin, &baryRow[span.xBegin].x, n,
-                         beta0, betaDx, gamma0, gammaDx, z0, dz1, dz2, id, winsOnTie);
+                         beta0, betaDx, gamma0, gammaDx, z0, dz1, dz2, id, winsOnTie, reciprocal);
             return;
         }
     }
@@ -156,7 +170,8 @@ void testSpanOf(const Scene& scene, const TriangleSetup& setup, std::uint32_t id
         const std::int32_t x = span.xBegin + i;
         const auto beta = static_cast<float>(beta0 + double(i) * betaDx);
         const auto gamma = static_cast<float>(gamma0 + double(i) * gammaDx);
-        const float z = z0 + beta * dz1 + gamma * dz2;
+        float z = z0 + beta * dz1 + gamma * dz2;
+        if (reciprocal) z = 1.0f / z;
         if (rangeClip && !(z >= 0.0f && z <= 1.0f)) {  // per-pixel clipping (seed 001)
             ++counts.outsideDepthRange;
             if constexpr (Probe::enabled) {
@@ -188,7 +203,7 @@ Counts testAll(const Scene& scene, const Projection& projection, const ScanConve
         const std::uint32_t first = scan.spanStart[t];
         const std::uint32_t last = scan.spanStart[t + 1];
         if (first == last) continue;
-        const TriangleSetup setup(projection, t);
+        const TriangleSetup setup(projection, t, perspectiveDepth(scene));
         for (std::uint32_t k = first; k < last; ++k)
             testSpanOf(scene, setup, static_cast<std::uint32_t>(t), scan.spans[k], out, counts,
                        probe);
@@ -254,7 +269,7 @@ Counts testChunks(const Scene& scene, const Projection& projection, const ScanCo
             const Entry& entry = entries[e];
             if (entry.triangle != current) {
                 current = entry.triangle;
-                setup.emplace(projection, current);
+                setup.emplace(projection, current, perspectiveDepth(scene));
             }
             testSpanOf(scene, *setup, current, scan.spans[entry.span], out, counts, probe);
         }

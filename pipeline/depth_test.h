@@ -2,10 +2,11 @@
 // (alpha, beta, gamma) of its sample with respect to the triangle's screen vertices give
 // the fragment's depth, z = alpha z1 + beta z2 + gamma z3: for the course the z of
 // P' = alpha P1 + beta P2 + gamma P3 in view coordinates (seed 000), for command files the
-// NDC z (seed 001). The buffer starts at the convention's clear value (+infinity, or 1) and
-// the nearer fragment wins: z < stored writes; on a tie the earlier triangle stays, unless
-// the convention says z <= stored (seed 001). Seed 001 also discards fragments whose z is
-// outside [0, 1] (per-pixel clipping).
+// NDC z (seed 001). Under perspective-correct rules (RasterRules::gpu, hw2) view z is found
+// as 1 / (alpha / z1 + beta / z2 + gamma / z3), the depth of the point on the triangle. The buffer
+// starts at the convention's clear value (+infinity, or 1) and the nearer fragment wins: z < stored
+// writes; on a tie the earlier triangle stays, unless the convention says z <= stored (seed 001).
+// Seed 001 also discards fragments whose z is outside [0, 1] (per-pixel clipping).
 //
 // The buffer remembers, for each pixel, the winning triangle and its barycentrics, so
 // shading runs once per visible pixel: the image equals that of shading each fragment as

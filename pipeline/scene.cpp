@@ -35,6 +35,53 @@ RasterRules RasterRules::hw2() {
     return rules;
 }
 
+RasterRules RasterRules::gpu() {
+    RasterRules rules;
+    rules.subpixelBits = 8;
+    rules.sampleOffset = 0.5;
+    rules.snap = VertexSnap::Nearest;
+    rules.fill = FillRule::TopLeft;
+    rules.interpolation = Interpolation::PerspectiveCorrect;
+    return rules;
+}
+
+const char* ruleSetName(RuleSet set) {
+    switch (set) {
+        case RuleSet::Course:
+            return "course";
+        case RuleSet::Gpu:
+            return "gpu";
+        case RuleSet::Hw2:
+            return "hw2";
+    }
+    return "course";
+}
+
+std::optional<RuleSet> ruleSetFromName(std::string_view name) {
+    if (name == "course") return RuleSet::Course;
+    if (name == "gpu") return RuleSet::Gpu;
+    if (name == "hw2") return RuleSet::Hw2;
+    return std::nullopt;
+}
+
+RasterRules rulesOf(RuleSet set) {
+    switch (set) {
+        case RuleSet::Course:
+            return RasterRules::course();
+        case RuleSet::Gpu:
+            return RasterRules::gpu();
+        case RuleSet::Hw2:
+            return RasterRules::hw2();
+    }
+    return RasterRules::course();
+}
+
+std::optional<RuleSet> ruleSetOf(const RasterRules& rules) {
+    for (RuleSet set : {RuleSet::Course, RuleSet::Gpu, RuleSet::Hw2})
+        if (rulesOf(set) == rules) return set;
+    return std::nullopt;
+}
+
 Conventions Conventions::course() {
     return Conventions{};
 }

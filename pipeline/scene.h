@@ -173,7 +173,20 @@ struct RasterRules {
 
     static RasterRules course();  // seed 000 as written: integer vertices, inclusive edges
     static RasterRules hw2();     // seed 001's DDA: samples at integer points, half-open spans
+    // What a GPU does: vertices on a 1/256-pixel grid (nearest), samples at pixel centres
+    // (+0.5), the top-left fill rule, perspective-correct attributes (and depth).
+    static RasterRules gpu();
+
+    bool operator==(const RasterRules&) const = default;
 };
+
+// The presets by name: "course", "gpu", "hw2".
+enum class RuleSet : std::uint8_t { Course, Gpu, Hw2 };
+const char* ruleSetName(RuleSet set);
+std::optional<RuleSet> ruleSetFromName(std::string_view name);
+RasterRules rulesOf(RuleSet set);
+// The preset these rules are, if any.
+std::optional<RuleSet> ruleSetOf(const RasterRules& rules);
 
 // What happens to triangles at or behind the camera (w <= 0 in clip space).
 struct NearPlane {

@@ -138,6 +138,9 @@ private slots:
     void runBadCommandFile();
     void bench_data();
     void bench();
+    void rulesChangeTheImage();
+    void accuracyJson();
+    void accuracyTablePlotAndHeatMaps();
 };
 
 void TestCli::initTestCase() {
@@ -305,7 +308,7 @@ void TestCli::usageErrors_data() {
         << "--explain-pixel 800,10 is outside the 800x600 image";
     QTest::newRow("unknown command") << QStringList({"paint", "--output", "out.png"})
                                      << "unknown command 'paint' (commands: render, run, bench, "
-                                        "generate-default-scene)";
+                                        "accuracy, generate-default-scene)";
     QTest::newRow("unknown option")
         << (QStringList({"render", "--bogus"}) + out) << "Unknown option 'bogus'.";
     QTest::newRow("stray argument")
@@ -354,6 +357,21 @@ void TestCli::usageErrors_data() {
         << QStringList({"bench", "--format", "csv"}) << "--format expects md or json, found 'csv'";
     QTest::newRow("bench, unknown scene")
         << QStringList({"bench", "--scene", "teapot"})
+        << "--scene expects one of sphere-1k, sphere-100k, sphere-1m, torus-1k, torus-100k, "
+           "torus-1m, full-screen, found 'teapot'";
+    QTest::newRow("unknown rules") << (QStringList({"render", "--rules", "d3d"}) + out)
+                                   << "--rules expects course, gpu or hw2, found 'd3d'";
+    QTest::newRow("accuracy, unknown format") << QStringList({"accuracy", "--format", "xml"})
+                                              << "--format expects md, csv or json, found 'xml'";
+    QTest::newRow("accuracy, supersample zero")
+        << QStringList({"accuracy", "--supersample", "1,0"})
+        << "--supersample expects whole numbers from 1 to 8 separated by commas, such as 1,2,4, "
+           "found '1,0'";
+    QTest::newRow("accuracy, repeats not a number")
+        << QStringList({"accuracy", "--repeats", "many"})
+        << "--repeats expects a whole number from 1 to 1000, found 'many'";
+    QTest::newRow("accuracy, unknown scene")
+        << QStringList({"accuracy", "--scene", "teapot"})
         << "--scene expects one of sphere-1k, sphere-100k, sphere-1m, torus-1k, torus-100k, "
            "torus-1m, full-screen, found 'teapot'";
     QTest::newRow("bench, scene and files")
@@ -1057,6 +1075,118 @@ void TestCli::bench() {
     QVERIFY(md.out.contains(QStringLiteral("| ") + size + QStringLiteral(" |")));
     QVERIFY(md.out.contains(QStringLiteral("| scan conversion | ")));
     QVERIFY(md.out.contains(QStringLiteral("Memory: peak ")));
+}
+
+void TestCli::rulesChangeTheImage() {
+    // The default scene under each rule set: the same picture, but not the same pixels (the
+    // course samples pixel corners with whole-pixel vertices, gpu and hw2 do not).
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QMap<QString, QImage> images;
+    for (const char* rules : {"course", "gpu", "hw2"}) {
+        CliRun run;
+        const QString name = QStringLiteral("%1.png").arg(QLatin1String(rules));
+        RUN_CLI(run,
+                QStringList({"render", "--size", "200x150", "--rules", QLatin1String(rules),
+                             "--output", name}),
+                dir.path());
+        QCOMPARE(run.exitCode, 0);
+        images[QLatin1String(rules)] = QImage(dir.filePath(name));
+    }
+    const auto differing = [](const QImage& a, const QImage& b) {
+        int n = 0;
+        for (int y = 0; y < a.height(); ++y)
+            for (int x = 0; x < a.width(); ++x) n += a.pixel(x, y) != b.pixel(x, y) ? 1 : 0;
+        return n;
+    };
+    const int covered = int(countTrue(coverage(images[QStringLiteral("gpu")])));
+    QVERIFY(covered > 2000);
+    const int courseVsGpu =
+        differing(images[QStringLiteral("course")], images[QStringLiteral("gpu")]);
+    QVERIFY2(courseVsGpu > covered / 10, qPrintable(QString::number(courseVsGpu)));
+    QVERIFY(differing(images[QStringLiteral("gpu")], images[QStringLiteral("hw2")]) > 0);
+}
+
+void TestCli::accuracyJson() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    CliRun run;
+    RUN_CLI(run,
+            QStringList({"accuracy", "--scene", "sphere-1k", "--size", "160x120", "--repeats", "1",
+                         "--format", "json", "--shading", "phong"}),
+            dir.path());
+    QCOMPARE(run.exitCode, 0);
+    QJsonParseError error;
+    const QJsonDocument doc = QJsonDocument::fromJson(run.out.toUtf8(), &error);
+    QVERIFY2(doc.isArray(), qPrintable(error.errorString() + QStringLiteral(": ") + run.out));
+    const QJsonArray rows = doc.array();
+    QCOMPARE(rows.size(), 3);  // --shading keeps one model, under the three rule sets
+    QStringList rules;
+    for (const QJsonValue& v : rows) {
+        const QJsonObject o = v.toObject();
+        for (const char* key : {"mode", "rules", "precision", "ms", "rmse", "max_error", "psnr",
+                                "coverage_mismatch", "within_1_255"})
+            QVERIFY2(o.contains(QLatin1String(key)), key);
+        QCOMPARE(o.value(QStringLiteral("mode")).toString(), QStringLiteral("phong"));
+        QCOMPARE(o.value(QStringLiteral("precision")).toString(), QStringLiteral("float"));
+        QVERIFY(o.value(QStringLiteral("ms")).toDouble() > 0.0);
+        const double within = o.value(QStringLiteral("within_1_255")).toDouble();
+        QVERIFY(within >= 0.0 && within <= 1.0);
+        rules << o.value(QStringLiteral("rules")).toString();
+        if (rules.last() == QStringLiteral("gpu")) {
+            QVERIFY(within >= 0.999);
+            QVERIFY(o.value(QStringLiteral("rmse")).toDouble() < 0.5 / 255.0);
+        }
+    }
+    QCOMPARE(rules, QStringList({"course", "gpu", "hw2"}));
+}
+
+void TestCli::accuracyTablePlotAndHeatMaps() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    CliRun run;
+    RUN_CLI(run,
+            QStringList({"accuracy", "--scene", "sphere-1k", "--size", "120x90", "--repeats", "1",
+                         "--rules", "gpu", "--supersample", "1,2", "--plot", "plot.png",
+                         "--heatmaps", "maps"}),
+            dir.path());
+    QCOMPARE(run.exitCode, 0);
+    QCOMPARE(run.err, QString());
+    const QStringList lines = linesOf(run.out);
+    QVERIFY(
+        lines.value(0).startsWith(QStringLiteral("Accuracy of sphere-1k at 120x90 (1000 "
+                                                 "triangles) against the exact reference")));
+    QVERIFY(run.out.contains(QStringLiteral(
+        "| mode | rules | precision | samples | ms | RMSE | max error | PSNR dB | coverage "
+        "mismatch | within 1/255 | depth error mean / max |")));
+    // Three shading models at 1 and at 2x2 samples, under the gpu rules.
+    QCOMPARE(
+        lines.filter(QRegularExpression(QStringLiteral("^\\| \\w+ \\| gpu \\| float \\| [14] \\|")))
+            .size(),
+        6);
+    QVERIFY(run.out.contains(QStringLiteral("wrote ") +
+                             printedPath(dir, QStringLiteral("plot.png")) +
+                             QStringLiteral(" (plot)")));
+    const QImage plot(dir.filePath(QStringLiteral("plot.png")));
+    QCOMPARE(plot.size(), QSize(960, 640));
+    // Six markers: the plot is not blank white.
+    int coloured = 0;
+    for (int y = 0; y < plot.height(); ++y)
+        for (int x = 0; x < plot.width(); ++x) {
+            const QRgb c = plot.pixel(x, y);
+            coloured += (qRed(c) != qGreen(c) || qGreen(c) != qBlue(c)) ? 1 : 0;
+        }
+    QVERIFY(coloured > 200);
+    for (const char* mode : {"flat-gpu", "gouraud-gpu", "phong-gpu", "phong-gpux4"}) {
+        const QImage map(
+            dir.filePath(QStringLiteral("maps/error-%1.png").arg(QLatin1String(mode))));
+        QVERIFY2(!map.isNull(), mode);
+        QCOMPARE(map.height(), 160);  // at least room for the colour bar
+        QCOMPARE(map.width(), 120 + 90);
+        // A corner no triangle covers is black; the centre of the sphere is covered.
+        QCOMPARE(map.pixel(0, 0), qRgb(0, 0, 0));
+        QVERIFY(map.pixel(60, 45) != qRgb(0, 0, 0));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestCli)

@@ -1,0 +1,218 @@
+#include "accuracy.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include "frame_trace.h"
+#include "renderer.h"
+
+namespace rl {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2.0;
+}
+
+}  // namespace
+
+std::string accuracyModeName(const AccuracyMode& mode) {
+    std::string name = std::string(shadingModelName(mode.shading)) + "/" + ruleSetName(mode.rules);
+    if (mode.supersample > 1) name += " x" + std::to_string(mode.supersample * mode.supersample);
+    return name;
+}
+
+SampledImage sampleFrame(const FrameTrace& trace, int samplesPerAxis) {
+    const int k = std::max(1, samplesPerAxis);
+    const Image<vec3>& colour = trace.shading->colour;
+    const Image<std::uint32_t>& triangle = trace.depth->triangle;
+    const int width = colour.width() / k, height = colour.height() / k;
+    const double scale = trace.scene->conventions.colourScale;
+    SampledImage out;
+    out.samplesPerAxis = k;
+    out.colour.reset(width, height, dvec3(0.0));
+    out.hits.reset(width, height, 0);
+    out.depth.reset(width, height, std::numeric_limits<double>::quiet_NaN());
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            dvec3 sum(0.0);
+            int hits = 0;
+            for (int j = 0; j < k; ++j) {
+                for (int i = 0; i < k; ++i) {
+                    const int sx = x * k + i, sy = y * k + j;
+                    sum += glm::clamp(dvec3(colour.at(sx, sy)) / scale, dvec3(0.0), dvec3(1.0));
+                    hits += triangle.at(sx, sy) != kNoTriangle ? 1 : 0;
+                }
+            }
+            out.colour.at(x, y) = sum / double(k * k);
+            out.hits.at(x, y) = static_cast<std::uint16_t>(hits);
+            if (k == 1 && hits > 0) out.depth.at(x, y) = trace.depth->depth.at(x, y);
+        }
+    }
+    return out;
+}
+
+AccuracyMetrics compareWithReference(const SampledImage& image, const ReferenceImage& reference) {
+    AccuracyMetrics m;
+    double squares = 0.0, depthSum = 0.0;
+    std::size_t within = 0, depthCount = 0;
+    const int width = std::min(image.colour.width(), reference.colour.width());
+    const int height = std::min(image.colour.height(), reference.colour.height());
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const int ours = image.hits.at(x, y), theirs = reference.hits.at(x, y);
+            if (ours == 0 && theirs == 0) continue;
+            ++m.eitherCovered;
+            if (ours != theirs) ++m.coverageMismatch;
+            if (ours == 0 || theirs == 0) continue;
+            ++m.bothCovered;
+            const dvec3 difference = glm::abs(image.colour.at(x, y) - reference.colour.at(x, y));
+            squares += glm::dot(difference, difference);
+            const double worst = std::max({difference.x, difference.y, difference.z});
+            if (worst > m.maxError || m.worstX < 0) {
+                m.maxError = std::max(m.maxError, worst);
+                m.worstX = x;
+                m.worstY = y;
+            }
+            // One byte step, with room for the rounding of a value stored as a float.
+            if (worst <= 1.0 / 255.0 + 1e-9) ++within;
+            const double z = image.depth.at(x, y), zRef = reference.depth.at(x, y);
+            if (!std::isnan(z) && std::isfinite(zRef) && zRef != 0.0) {
+                const double relative = std::abs(z - zRef) / std::abs(zRef);
+                depthSum += relative;
+                m.depthMaxRelative = std::max(m.depthMaxRelative, relative);
+                ++depthCount;
+            }
+        }
+    }
+    m.rmse = m.bothCovered ? std::sqrt(squares / (3.0 * double(m.bothCovered))) : 0.0;
+    m.psnr =
+        m.rmse > 0.0 ? 20.0 * std::log10(1.0 / m.rmse) : std::numeric_limits<double>::infinity();
+    m.within1Of255 = m.bothCovered ? double(within) / double(m.bothCovered) : 1.0;
+    if (depthCount) {
+        m.depthMeanRelative = depthSum / double(depthCount);
+    } else {
+        m.depthMeanRelative = m.depthMaxRelative = std::numeric_limits<double>::quiet_NaN();
+    }
+    return m;
+}
+
+Image<float> errorMap(const SampledImage& image, const ReferenceImage& reference) {
+    const int width = std::min(image.colour.width(), reference.colour.width());
+    const int height = std::min(image.colour.height(), reference.colour.height());
+    Image<float> out(width, height, std::numeric_limits<float>::quiet_NaN());
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const int ours = image.hits.at(x, y), theirs = reference.hits.at(x, y);
+            if (ours == 0 && theirs == 0) continue;
+            if ((ours == 0) != (theirs == 0)) {
+                out.at(x, y) = -1.0f;
+                continue;
+            }
+            const dvec3 d = glm::abs(image.colour.at(x, y) - reference.colour.at(x, y));
+            out.at(x, y) = static_cast<float>(std::max({d.x, d.y, d.z}));
+        }
+    }
+    return out;
+}
+
+std::vector<AccuracyMode> defaultAccuracyModes(const std::vector<ShadingModel>& shadings,
+                                               const std::vector<RuleSet>& rules,
+                                               const std::vector<int>& supersample) {
+    std::vector<AccuracyMode> modes;
+    for (int k : supersample)
+        for (ShadingModel s : shadings)
+            for (RuleSet r : rules) modes.push_back({s, r, k});
+    return modes;
+}
+
+Result<AccuracyReport> measureAccuracy(const Scene& scene, const AccuracyOptions& options) {
+    std::vector<AccuracyMode> modes = options.modes;
+    if (modes.empty())
+        modes =
+            defaultAccuracyModes({ShadingModel::Flat, ShadingModel::Gouraud, ShadingModel::Phong},
+                                 {RuleSet::Course, RuleSet::Gpu, RuleSet::Hw2}, {1});
+    AccuracyReport report;
+    // The references, one per shading model and sample count, made when first needed.
+    struct Cached {
+        ShadingModel shading;
+        int k;
+        std::shared_ptr<const ReferenceImage> image;
+    };
+    std::vector<Cached> references;
+    for (const AccuracyMode& mode : modes) {
+        if (mode.supersample < 1 || mode.supersample > 16)
+            return makeError(ErrorCode::Usage, {},
+                             "supersampling must be 1 to 16 samples per axis");
+        auto modeScene = std::make_shared<Scene>(scene);
+        modeScene->rules = rulesOf(mode.rules);
+        modeScene->width = scene.width * mode.supersample;
+        modeScene->height = scene.height * mode.supersample;
+        for (Draw& draw : modeScene->draws) draw.shading = mode.shading;
+        const std::shared_ptr<const Scene> shared = modeScene;
+
+        RenderOptions renderOptions;
+        renderOptions.threads = options.threads;
+        RenderContext context;
+        std::vector<double> times;
+        std::optional<FrameTrace> last;
+        SampledImage sampled;
+        // Untimed frames first: one per mode for its buffers, a few more for the first mode,
+        // whose frames also wake the threads and the caches up.
+        const int warmup = &mode == &modes.front() ? 4 : 1;
+        for (int r = 0; r < std::max(1, options.repeats) + warmup; ++r) {
+            last.reset();  // so that the context's buffers are free to be reused
+            const auto started = Clock::now();
+            auto trace = renderFrame(shared, renderOptions, &context);
+            if (!trace) return trace.error();
+            if (mode.supersample > 1) sampled = sampleFrame(trace.value(), mode.supersample);
+            const double ms = millisecondsSince(started);
+            if (r >= warmup) times.push_back(ms);
+            last = std::move(trace.value());
+        }
+        if (mode.supersample == 1) sampled = sampleFrame(*last, 1);
+
+        std::shared_ptr<const ReferenceImage> reference;
+        for (const Cached& c : references)
+            if (c.shading == mode.shading && c.k == mode.supersample) reference = c.image;
+        if (!reference) {
+            // The reference sees the scene at the output size, with the mode's shading.
+            auto referenceScene = *modeScene;
+            referenceScene.width = scene.width;
+            referenceScene.height = scene.height;
+            ReferenceOptions referenceOptions;
+            referenceOptions.samplesPerAxis = mode.supersample;
+            referenceOptions.threads = options.threads;
+            referenceOptions.nearZ = last->projection->nearW;
+            auto made =
+                renderReference(referenceScene, *last->view, *last->normals, referenceOptions);
+            if (!made) return made.error();
+            if (mode.supersample == 1) {
+                report.referenceMilliseconds += made->buildMilliseconds + made->castMilliseconds;
+                report.referenceRays += made->rays;
+            }
+            reference = std::make_shared<const ReferenceImage>(std::move(made.value()));
+            references.push_back({mode.shading, mode.supersample, reference});
+        }
+        AccuracyRow row;
+        row.mode = mode;
+        row.milliseconds = median(times);
+        row.metrics = compareWithReference(sampled, *reference);
+        if (options.keepErrorMaps) row.errorMap = errorMap(sampled, *reference);
+        report.rows.push_back(row);
+    }
+    return report;
+}
+
+}  // namespace rl

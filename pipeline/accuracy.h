@@ -1,0 +1,104 @@
+// Error against run time: each mode of the renderer (a shading model under a rule set,
+// optionally supersampled) is rendered and timed, and compared with the exact reference
+// (reference.h) of the same shading model.
+//
+// Colours are compared as displayed: each channel clamped to [0, colour scale] and divided by
+// it, so 1/255 is one step of a byte. A supersampled mode renders k x k times the pixels and
+// averages the clamped colours of each k x k block; its reference averages k x k rays at the
+// same sample points.
+//
+//   rmse               square root of the mean squared channel difference, over the pixels
+//                      both cover
+//   max_error          the largest channel difference there
+//   psnr               20 log10(1 / rmse) dB (infinite when rmse = 0)
+//   coverage_mismatch  pixels whose number of covered samples differs, over the pixels either
+//                      covers
+//   within_1_255       the share of the commonly covered pixels whose three channels are all
+//                      within 1/255 of the reference
+//   depth error        |z - z_ref| / z_ref of view z, over the commonly covered pixels (k = 1)
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "diagnostics.h"
+#include "image.h"
+#include "reference.h"
+#include "scene.h"
+
+namespace rl {
+
+struct AccuracyMode {
+    ShadingModel shading = ShadingModel::Phong;
+    RuleSet rules = RuleSet::Course;
+    int supersample = 1;  // samples per axis
+    bool operator==(const AccuracyMode&) const = default;
+};
+
+std::string accuracyModeName(const AccuracyMode& mode);  // "phong/gpu", "flat/course x2"
+
+struct AccuracyMetrics {
+    std::size_t bothCovered = 0;  // pixels covered by the render and the reference
+    std::size_t eitherCovered = 0;
+    std::size_t coverageMismatch = 0;  // pixels whose covered-sample counts differ
+    double rmse = 0.0;
+    double maxError = 0.0;
+    double psnr = 0.0;  // +infinity when rmse = 0
+    double within1Of255 = 1.0;
+    double depthMeanRelative = 0.0, depthMaxRelative = 0.0;  // NaN when not measured
+    int worstX = -1, worstY = -1;                            // a pixel with the largest error
+
+    double coverageMismatchShare() const {
+        return eitherCovered ? double(coverageMismatch) / double(eitherCovered) : 0.0;
+    }
+};
+
+// A render brought to the reference's terms: colours clamped and scaled to 0..1 and averaged
+// over k x k blocks, covered samples counted, depth (view z, k = 1 only).
+struct SampledImage {
+    int samplesPerAxis = 1;
+    Image<dvec3> colour;
+    Image<std::uint16_t> hits;
+    Image<double> depth;  // NaN where not measured
+};
+
+struct FrameTrace;
+SampledImage sampleFrame(const FrameTrace& trace, int samplesPerAxis);
+AccuracyMetrics compareWithReference(const SampledImage& image, const ReferenceImage& reference);
+
+// The per-pixel error (largest channel difference, 0..1) for a heat map; -1 where exactly one
+// of the two covers the pixel, NaN where neither does.
+Image<float> errorMap(const SampledImage& image, const ReferenceImage& reference);
+
+struct AccuracyRow {
+    AccuracyMode mode;
+    std::string precision = "float";
+    double milliseconds = 0.0;  // median time per frame (render, plus the k x k averaging)
+    AccuracyMetrics metrics;
+    Image<float> errorMap;  // with AccuracyOptions::keepErrorMaps
+};
+
+struct AccuracyReport {
+    std::vector<AccuracyRow> rows;
+    // The reference's own cost, per shading model measured (k = 1): build and cast, ms.
+    double referenceMilliseconds = 0.0;
+    std::size_t referenceRays = 0;
+};
+
+struct AccuracyOptions {
+    std::vector<AccuracyMode> modes;  // empty: every shading model under every rule set, k = 1
+    int repeats = 5;                  // frames timed per mode (the median is reported)
+    int threads = 0;
+    bool keepErrorMaps = false;
+};
+
+std::vector<AccuracyMode> defaultAccuracyModes(const std::vector<ShadingModel>& shadings,
+                                               const std::vector<RuleSet>& rules,
+                                               const std::vector<int>& supersample);
+
+// Renders every mode of the scene (its own shading and rules are replaced by the mode's) and
+// compares each with the reference.
+Result<AccuracyReport> measureAccuracy(const Scene& scene, const AccuracyOptions& options);
+
+}  // namespace rl
