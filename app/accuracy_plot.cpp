@@ -1,6 +1,7 @@
 #include "accuracy_plot.h"
 
 #include <QCoreApplication>
+#include <QFontMetrics>
 #include <QPainter>
 #include <QPainterPath>
 
@@ -138,15 +139,44 @@ QImage accuracyPlot(const rl::AccuracyReport& report, const QString& title, QSiz
     p.drawText(QRectF(plot.left(), 12, size.width() - plot.left() - 10, 24), Qt::AlignLeft, title);
     p.setFont(font);
 
-    // The points, with their names.
+    // The points: float filled, double hollow. Each float point is named where its label
+    // overlaps no other (right, left, above or below it); a double point sits on its float
+    // point's row, to the right, and is left unnamed.
+    std::vector<QRectF> taken;
+    const QFontMetrics metrics(p.font());
+    const QRectF canvas(0, 0, size.width(), size.height());
     for (const rl::AccuracyRow& row : report.rows) {
         const QPointF at(mapX(row.milliseconds), mapY(row.metrics.rmse * 255.0));
         const double radius = 4.0 + 2.0 * std::log2(double(row.mode.supersample));
-        p.setPen(QPen(Qt::black, 1));
-        p.setBrush(shadingColour(row.mode.shading));
+        const bool inDouble = row.precision == "double";
+        p.setPen(inDouble ? QPen(shadingColour(row.mode.shading), 2) : QPen(Qt::black, 1));
+        p.setBrush(inDouble ? QBrush(Qt::white) : QBrush(shadingColour(row.mode.shading)));
         p.drawPath(marker(row.mode.rules, at, radius));
-        p.drawText(at + QPointF(radius + 3, 4),
-                   QString::fromStdString(rl::accuracyModeName(row.mode)));
+        taken.push_back(QRectF(at.x() - radius, at.y() - radius, 2 * radius, 2 * radius));
+    }
+    p.setPen(Qt::black);
+    for (const rl::AccuracyRow& row : report.rows) {
+        if (row.precision == "double") continue;
+        const QPointF at(mapX(row.milliseconds), mapY(row.metrics.rmse * 255.0));
+        const double radius = 4.0 + 2.0 * std::log2(double(row.mode.supersample));
+        const QString label = QString::fromStdString(rl::accuracyModeName(row.mode));
+        const QSizeF box(metrics.horizontalAdvance(label) + 2, metrics.height());
+        const QPointF places[] = {
+            {at.x() + radius + 3, at.y() - box.height() / 2},
+            {at.x() - radius - 3 - box.width(), at.y() - box.height() / 2},
+            {at.x() - box.width() / 2, at.y() - radius - 2 - box.height()},
+            {at.x() - box.width() / 2, at.y() + radius + 2},
+        };
+        for (const QPointF& place : places) {
+            const QRectF rect(place, box);
+            if (!canvas.contains(rect)) continue;
+            bool free = true;
+            for (const QRectF& other : taken) free = free && !other.intersects(rect);
+            if (!free) continue;
+            p.drawText(rect, Qt::AlignLeft | Qt::AlignVCenter, label);
+            taken.push_back(rect);
+            break;
+        }
     }
 
     // The legend.
@@ -170,6 +200,9 @@ QImage accuracyPlot(const rl::AccuracyReport& report, const QString& title, QSiz
         p.drawText(QPointF(lx + 18, y), QString::fromLatin1(rl::ruleSetName(r)));
     }
     y += 30;
+    p.drawText(QPointF(lx, y),
+               QCoreApplication::translate("AccuracyPlot", "filled: float; hollow: double"));
+    y += 20;
     p.drawText(QPointF(lx, y),
                QCoreApplication::translate("AccuracyPlot", "size: samples per pixel"));
     y += 20;

@@ -809,8 +809,8 @@ int runAccuracy(const QStringList& arguments, QTextStream& out, QTextStream& err
             out << "| " << rl::shadingModelName(row.mode.shading) << " | "
                 << rl::ruleSetName(row.mode.rules) << " | " << QString::fromStdString(row.precision)
                 << " | " << row.mode.supersample * row.mode.supersample << " | "
-                << number(row.milliseconds, 2) << " | " << number(m.rmse * 255.0, 3) << " | "
-                << number(m.maxError * 255.0, 2) << " | "
+                << number(row.milliseconds, 2) << " | " << number(m.rmse * 255.0, 4) << " | "
+                << number(m.maxError * 255.0, 3) << " | "
                 << (std::isfinite(m.psnr) ? number(m.psnr, 1) : lit("inf")) << " | "
                 << number(100.0 * m.coverageMismatchShare(), 3) << " % (" << m.coverageMismatch
                 << " px) | " << number(100.0 * m.within1Of255, 3) << " % | "

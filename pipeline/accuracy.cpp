@@ -7,6 +7,8 @@
 
 #include "frame_trace.h"
 #include "renderer.h"
+#include "scan_conversion.h"
+#include "stage_id.h"
 
 namespace rl {
 
@@ -58,6 +60,147 @@ SampledImage sampleFrame(const FrameTrace& trace, int samplesPerAxis) {
             out.colour.at(x, y) = sum / double(k * k);
             out.hits.at(x, y) = static_cast<std::uint16_t>(hits);
             if (k == 1 && hits > 0) out.depth.at(x, y) = trace.depth->depth.at(x, y);
+        }
+    }
+    return out;
+}
+
+SampledImage shadeFrameInDouble(const FrameTrace& trace, int samplesPerAxis,
+                                double& shadingMilliseconds) {
+    const auto started = Clock::now();
+    const Scene& scene = *trace.scene;
+    const Projection& projection = *trace.projection;
+    const Normals& normals = *trace.normals;
+    const ViewTransform& view = *trace.view;
+    const DepthTest& depth = *trace.depth;
+    const bool perspective =
+        scene.rules.interpolation == RasterRules::Interpolation::PerspectiveCorrect;
+    const bool reciprocalDepth = perspective && scene.conventions.depth == DepthSource::ViewZ;
+    const double scale = scene.conventions.colourScale;
+    const dvec3 background = dvec3(vec3(scene.conventions.background));
+
+    // Per projected vertex, in double: view-space point, normal (a vertex made by clipping
+    // takes them along its edge), 1/w, depth; and Gouraud's vertex colours.
+    struct Vertices {
+        std::vector<dvec3> p, n, colour;
+        std::vector<double> invW, depth;
+    };
+    std::vector<Vertices> vertices(projection.draws.size());
+    for (std::size_t d = 0; d < projection.draws.size(); ++d) {
+        const DrawProjection& proj = projection.draws[d];
+        const Draw& draw = scene.draws[d];
+        Vertices& v = vertices[d];
+        const std::size_t count = proj.pView.size();
+        v.p.resize(count);
+        v.n.assign(count, dvec3(0.0));
+        v.invW.resize(count);
+        v.depth.resize(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            const dvec4& p = proj.pView[i];
+            v.p[i] = p.w != 0.0 && p.w != 1.0 ? dvec3(p) / p.w : dvec3(p);
+            v.invW[i] = 1.0 / proj.pClip[i].w;
+            v.depth[i] = scene.conventions.depth == DepthSource::ViewZ
+                             ? proj.pView[i].z
+                             : proj.pClip[i].z / proj.pClip[i].w;
+            if (i < proj.originalVertexCount && !normals.skipped)
+                v.n[i] = dvec3(normals.draws[d].vertex[i]);
+        }
+        for (std::size_t i = 0; i < proj.generated.size(); ++i) {
+            const ClipVertex& g = proj.generated[i];
+            v.n[proj.originalVertexCount + i] = glm::mix(v.n[g.a], v.n[g.b], g.t);
+        }
+        if (draw.shading == ShadingModel::Gouraud) {
+            v.colour.resize(count);
+            for (std::size_t i = 0; i < proj.originalVertexCount; ++i)
+                v.colour[i] = referencePhong(scene, draw, view.lights, v.p[i], v.n[i]);
+            for (std::size_t i = 0; i < proj.generated.size(); ++i) {
+                const ClipVertex& g = proj.generated[i];
+                v.colour[proj.originalVertexCount + i] =
+                    glm::mix(v.colour[g.a], v.colour[g.b], g.t);
+            }
+        }
+    }
+
+    Image<dvec3> colour(scene.width, scene.height, background * scale);
+    Image<double> depthImage(scene.width, scene.height, 0.0);
+    const double offset = scene.rules.sampleOffset;
+    for (int y = 0; y < scene.height; ++y) {
+        for (int x = 0; x < scene.width; ++x) {
+            const std::uint32_t t = depth.triangle.at(x, y);
+            if (t == kNoTriangle) continue;
+            const ScreenTriangle& tri = projection.triangles[t];
+            const Draw& draw = scene.draws[tri.draw];
+            const Vertices& v = vertices[tri.draw];
+            // Screen barycentrics of the sample, as the depth test writes them, unrounded.
+            const std::array<dvec2, 3> p = screenVertices(projection, tri);
+            const dvec2 s = dvec2(x + offset, y + offset) - p[0];
+            const dvec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
+            const double area = e1.x * e2.y - e1.y * e2.x;
+            const double sb = (s.x * e2.y - s.y * e2.x) / area;
+            const double sg = (e1.x * s.y - e1.y * s.x) / area;
+            const double sa = 1.0 - sb - sg;
+            const auto at = [&](const std::vector<double>& values) {
+                return sa * values[tri.v[0]] + sb * values[tri.v[1]] + sg * values[tri.v[2]];
+            };
+            if (reciprocalDepth) {
+                depthImage.at(x, y) = 1.0 / (sa / v.depth[tri.v[0]] + sb / v.depth[tri.v[1]] +
+                                             sg / v.depth[tri.v[2]]);
+            } else {
+                depthImage.at(x, y) = at(v.depth);
+            }
+            double a = sa, b = sb, g = sg;
+            if (perspective) {
+                const double w0 = sa * v.invW[tri.v[0]], w1 = sb * v.invW[tri.v[1]],
+                             w2 = sg * v.invW[tri.v[2]];
+                const double sum = w0 + w1 + w2;
+                if (sum != 0.0 && std::isfinite(sum)) a = w0 / sum, b = w1 / sum, g = w2 / sum;
+            }
+            const auto mixed = [&](const std::vector<dvec3>& values) {
+                return a * values[tri.v[0]] + b * values[tri.v[1]] + g * values[tri.v[2]];
+            };
+            switch (draw.shading) {
+                case ShadingModel::Flat: {
+                    const auto& corners = draw.mesh->triangles[tri.source];
+                    const dvec3 centre =
+                        (v.p[corners[0]] + v.p[corners[1]] + v.p[corners[2]]) / 3.0;
+                    const dvec3 n = normals.skipped
+                                        ? dvec3(0.0)
+                                        : dvec3(normals.draws[tri.draw].triangle[tri.source]);
+                    colour.at(x, y) = referencePhong(scene, draw, view.lights, centre, n);
+                    break;
+                }
+                case ShadingModel::Gouraud:
+                    colour.at(x, y) = mixed(v.colour);
+                    break;
+                case ShadingModel::Phong:
+                    colour.at(x, y) =
+                        referencePhong(scene, draw, view.lights, mixed(v.p), mixed(v.n));
+                    break;
+            }
+        }
+    }
+    shadingMilliseconds = millisecondsSince(started);
+
+    const int k = std::max(1, samplesPerAxis);
+    const int width = scene.width / k, height = scene.height / k;
+    SampledImage out;
+    out.samplesPerAxis = k;
+    out.colour.reset(width, height, dvec3(0.0));
+    out.hits.reset(width, height, 0);
+    out.depth.reset(width, height, std::numeric_limits<double>::quiet_NaN());
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            dvec3 sum(0.0);
+            int hits = 0;
+            for (int j = 0; j < k; ++j)
+                for (int i = 0; i < k; ++i) {
+                    const int sx = x * k + i, sy = y * k + j;
+                    sum += glm::clamp(colour.at(sx, sy) / scale, dvec3(0.0), dvec3(1.0));
+                    hits += depth.triangle.at(sx, sy) != kNoTriangle ? 1 : 0;
+                }
+            out.colour.at(x, y) = sum / double(k * k);
+            out.hits.at(x, y) = static_cast<std::uint16_t>(hits);
+            if (k == 1 && hits > 0) out.depth.at(x, y) = depthImage.at(x, y);
         }
     }
     return out;
@@ -165,7 +308,7 @@ Result<AccuracyReport> measureAccuracy(const Scene& scene, const AccuracyOptions
         RenderOptions renderOptions;
         renderOptions.threads = options.threads;
         RenderContext context;
-        std::vector<double> times;
+        std::vector<double> times, floatShadingTimes;
         std::optional<FrameTrace> last;
         SampledImage sampled;
         // Untimed frames first: one per mode for its buffers, a few more for the first mode,
@@ -178,7 +321,11 @@ Result<AccuracyReport> measureAccuracy(const Scene& scene, const AccuracyOptions
             if (!trace) return trace.error();
             if (mode.supersample > 1) sampled = sampleFrame(trace.value(), mode.supersample);
             const double ms = millisecondsSince(started);
-            if (r >= warmup) times.push_back(ms);
+            if (r >= warmup) {
+                times.push_back(ms);
+                floatShadingTimes.push_back(
+                    trace->stageMilliseconds[static_cast<std::size_t>(StageId::Shading)]);
+            }
             last = std::move(trace.value());
         }
         if (mode.supersample == 1) sampled = sampleFrame(*last, 1);
@@ -211,6 +358,25 @@ Result<AccuracyReport> measureAccuracy(const Scene& scene, const AccuracyOptions
         row.metrics = compareWithReference(sampled, *reference);
         if (options.keepErrorMaps) row.errorMap = errorMap(sampled, *reference);
         report.rows.push_back(row);
+        if (options.withDouble) {
+            // The float frame's time with its shading stage swapped for the double one
+            // (the median of as many runs).
+            std::vector<double> shadingTimes;
+            SampledImage inDouble;
+            for (int r = 0; r < std::max(1, options.repeats); ++r) {
+                double ms = 0.0;
+                inDouble = shadeFrameInDouble(*last, mode.supersample, ms);
+                shadingTimes.push_back(ms);
+            }
+            AccuracyRow d;
+            d.mode = mode;
+            d.precision = "double";
+            const double floatShading = median(floatShadingTimes);
+            d.milliseconds = std::max(0.0, row.milliseconds - floatShading) + median(shadingTimes);
+            d.metrics = compareWithReference(inDouble, *reference);
+            if (options.keepErrorMaps) d.errorMap = errorMap(inDouble, *reference);
+            report.rows.push_back(std::move(d));
+        }
     }
     return report;
 }

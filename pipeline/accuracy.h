@@ -65,6 +65,14 @@ struct SampledImage {
 
 struct FrameTrace;
 SampledImage sampleFrame(const FrameTrace& trace, int samplesPerAxis);
+
+// The "double" precision of a mode: the frame's coverage and winning triangles as rendered,
+// then every covered pixel's barycentrics, perspective weights, depth and lighting worked out
+// again in double (the renderer's float shading stage, in double: the same interpolation of
+// the same rules, the formula of referencePhong). Returns the frame in the reference's terms,
+// and the time it took in shadingMilliseconds.
+SampledImage shadeFrameInDouble(const FrameTrace& trace, int samplesPerAxis,
+                                double& shadingMilliseconds);
 AccuracyMetrics compareWithReference(const SampledImage& image, const ReferenceImage& reference);
 
 // The per-pixel error (largest channel difference, 0..1) for a heat map; -1 where exactly one
@@ -73,6 +81,9 @@ Image<float> errorMap(const SampledImage& image, const ReferenceImage& reference
 
 struct AccuracyRow {
     AccuracyMode mode;
+    // "float": the renderer as it is. "double": its frame with the shading stage (attributes,
+    // depth, lighting) in double; the time is the float frame's with the float shading stage
+    // replaced by the double one.
     std::string precision = "float";
     double milliseconds = 0.0;  // median time per frame (render, plus the k x k averaging)
     AccuracyMetrics metrics;
@@ -88,6 +99,7 @@ struct AccuracyReport {
 
 struct AccuracyOptions {
     std::vector<AccuracyMode> modes;  // empty: every shading model under every rule set, k = 1
+    bool withDouble = true;           // a "double" row after each mode's "float" one
     int repeats = 5;                  // frames timed per mode (the median is reported)
     int threads = 0;
     bool keepErrorMaps = false;

@@ -207,10 +207,11 @@ private slots:
                                  {RuleSet::Course, RuleSet::Gpu}, {1});
         auto report = measureAccuracy(*scene, options);
         QVERIFY(report);
-        QCOMPARE(report->rows.size(), std::size_t(6));
-        const auto row = [&](ShadingModel s, RuleSet r) {
+        QCOMPARE(report->rows.size(), std::size_t(12));  // each mode in float, then double
+        const auto row = [&](ShadingModel s, RuleSet r, const char* precision = "float") {
             for (const AccuracyRow& x : report->rows)
-                if (x.mode.shading == s && x.mode.rules == r) return x.metrics;
+                if (x.mode.shading == s && x.mode.rules == r && x.precision == precision)
+                    return x.metrics;
             qFatal("no row");
         };
         const AccuracyMetrics gpu = row(ShadingModel::Phong, RuleSet::Gpu);
@@ -226,11 +227,42 @@ private slots:
         QVERIFY(course.coverageMismatchShare() > 0.005);
         QVERIFY2(course.depthMeanRelative > 10.0 * gpu.depthMeanRelative,
                  qPrintable(QStringLiteral("%1").arg(course.depthMeanRelative)));
+        // Double precision changes next to nothing: the error is the rules', not the float's.
+        const AccuracyMetrics gpuDouble = row(ShadingModel::Phong, RuleSet::Gpu, "double");
+        QVERIFY(gpuDouble.within1Of255 >= gpu.within1Of255 - 1e-3);
+        QVERIFY(std::abs(gpuDouble.rmse - gpu.rmse) < 0.05 / 255.0);
+        QCOMPARE(gpuDouble.coverageMismatch, gpu.coverageMismatch);
         for (const AccuracyRow& x : report->rows) {
             QVERIFY(x.milliseconds > 0.0);
             QVERIFY(std::isfinite(x.metrics.rmse));
         }
         QCOMPARE(report->referenceRays, std::size_t(3 * 200 * 150));
+    }
+
+    void doublePrecisionByHand() {
+        // The triangle faces the eye (z = 2 everywhere), so screen-affine and perspective
+        // interpolation agree; under the gpu rules its corners, pixels (0, 4), (4, 4) and
+        // (2, 0), lie on the 1/256 grid and the samples at pixel centres: the frame shaded in
+        // double is the reference, pixel for pixel.
+        Scene scene = triangleScene(ShadingModel::Phong, 0.5f, 2.0f);
+        scene.rules = RasterRules::gpu();
+        const ReferenceImage reference = referenceOf(scene);
+        auto trace = renderFrame(std::make_shared<const Scene>(scene));
+        QVERIFY(trace);
+        double ms = -1.0;
+        const SampledImage inDouble = shadeFrameInDouble(trace.value(), 1, ms);
+        QVERIFY(ms >= 0.0);
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x) {
+                QCOMPARE(int(inDouble.hits.at(x, y)), int(reference.hits.at(x, y)));
+                RL_COMPARE_VEC(inDouble.colour.at(x, y), reference.colour.at(x, y), 1e-12);
+                if (reference.hits.at(x, y)) QCOMPARE(inDouble.depth.at(x, y), 2.0);
+            }
+        RL_COMPARE_VEC(inDouble.colour.at(1, 3), dvec3(103.77190, 64.54867, 44.93706) / 255.0,
+                       1e-7);
+        // The float frame is within float rounding of it.
+        const SampledImage inFloat = sampleFrame(trace.value(), 1);
+        RL_COMPARE_VEC(inFloat.colour.at(1, 3), inDouble.colour.at(1, 3), 1e-5);
     }
 
     void supersamplingKeepsTheGpuRulesExact() {
@@ -239,8 +271,10 @@ private slots:
         AccuracyOptions options;
         options.repeats = 1;
         options.modes = {{ShadingModel::Gouraud, RuleSet::Gpu, 2}};
+        options.withDouble = false;
         auto report = measureAccuracy(*scene, options);
         QVERIFY(report);
+        QCOMPARE(report->rows.size(), std::size_t(1));
         const AccuracyMetrics& m = report->rows.at(0).metrics;
         QCOMPARE(accuracyModeName(report->rows.at(0).mode), std::string("gouraud/gpu x4"));
         QVERIFY2(m.within1Of255 >= 0.999, qPrintable(QString::number(m.within1Of255)));

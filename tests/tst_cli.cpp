@@ -1120,15 +1120,15 @@ void TestCli::accuracyJson() {
     const QJsonDocument doc = QJsonDocument::fromJson(run.out.toUtf8(), &error);
     QVERIFY2(doc.isArray(), qPrintable(error.errorString() + QStringLiteral(": ") + run.out));
     const QJsonArray rows = doc.array();
-    QCOMPARE(rows.size(), 3);  // --shading keeps one model, under the three rule sets
-    QStringList rules;
+    QCOMPARE(rows.size(), 6);  // --shading keeps one model: three rule sets, float and double
+    QStringList rules, precisions;
     for (const QJsonValue& v : rows) {
         const QJsonObject o = v.toObject();
         for (const char* key : {"mode", "rules", "precision", "ms", "rmse", "max_error", "psnr",
                                 "coverage_mismatch", "within_1_255"})
             QVERIFY2(o.contains(QLatin1String(key)), key);
         QCOMPARE(o.value(QStringLiteral("mode")).toString(), QStringLiteral("phong"));
-        QCOMPARE(o.value(QStringLiteral("precision")).toString(), QStringLiteral("float"));
+        precisions << o.value(QStringLiteral("precision")).toString();
         QVERIFY(o.value(QStringLiteral("ms")).toDouble() > 0.0);
         const double within = o.value(QStringLiteral("within_1_255")).toDouble();
         QVERIFY(within >= 0.0 && within <= 1.0);
@@ -1138,7 +1138,8 @@ void TestCli::accuracyJson() {
             QVERIFY(o.value(QStringLiteral("rmse")).toDouble() < 0.5 / 255.0);
         }
     }
-    QCOMPARE(rules, QStringList({"course", "gpu", "hw2"}));
+    QCOMPARE(rules, QStringList({"course", "course", "gpu", "gpu", "hw2", "hw2"}));
+    QCOMPARE(precisions, QStringList({"float", "double", "float", "double", "float", "double"}));
 }
 
 void TestCli::accuracyTablePlotAndHeatMaps() {
@@ -1159,11 +1160,14 @@ void TestCli::accuracyTablePlotAndHeatMaps() {
     QVERIFY(run.out.contains(QStringLiteral(
         "| mode | rules | precision | samples | ms | RMSE | max error | PSNR dB | coverage "
         "mismatch | within 1/255 | depth error mean / max |")));
-    // Three shading models at 1 and at 2x2 samples, under the gpu rules.
-    QCOMPARE(
-        lines.filter(QRegularExpression(QStringLiteral("^\\| \\w+ \\| gpu \\| float \\| [14] \\|")))
-            .size(),
-        6);
+    // Three shading models at 1 and at 2x2 samples, under the gpu rules, in float and double.
+    for (const char* precision : {"float", "double"})
+        QCOMPARE(
+            lines
+                .filter(QRegularExpression(QStringLiteral("^\\| \\w+ \\| gpu \\| %1 \\| [14] \\|")
+                                               .arg(QLatin1String(precision))))
+                .size(),
+            6);
     QVERIFY(run.out.contains(QStringLiteral("wrote ") +
                              printedPath(dir, QStringLiteral("plot.png")) +
                              QStringLiteral(" (plot)")));
