@@ -13,6 +13,7 @@
 
 #include <cmath>
 
+#include "accuracy_panel.h"
 #include "frame_image_view.h"
 #include "image_io.h"
 
@@ -180,6 +181,27 @@ void MainWindow::createActions() {
         connect(action, &QAction::triggered, this, [this, model = model] { setShading(model); });
     }
 
+    shading->addSeparator();
+    QMenu* rules = shading->addMenu(tr("&Rasterization Rules"));
+    rules->setObjectName(QStringLiteral("rulesMenu"));
+    m_rulesGroup = new QActionGroup(this);
+    const std::pair<rl::RuleSet, QString> ruleSets[] = {
+        {rl::RuleSet::Course, tr("&Course (seed 000: whole-pixel vertices, screen-space "
+                                 "interpolation)")},
+        {rl::RuleSet::Gpu, tr("&GPU-like (1/256-pixel vertices, pixel centres, top-left rule, "
+                              "perspective-correct)")},
+        {rl::RuleSet::Hw2, tr("&HW2 (seed 001's reference images)")},
+    };
+    for (const auto& [set, label] : ruleSets) {
+        QAction* action = rules->addAction(label);
+        action->setCheckable(true);
+        action->setChecked(rl::ruleSetOf(m_document.settings().rules) == set);
+        action->setData(static_cast<int>(set));
+        action->setObjectName(QStringLiteral("rules_%1").arg(QLatin1String(rl::ruleSetName(set))));
+        m_rulesGroup->addAction(action);
+        connect(action, &QAction::triggered, this, [this, set = set] { setRules(set); });
+    }
+
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About RasterLab"), this, &MainWindow::about);
 }
@@ -199,6 +221,13 @@ void MainWindow::createDocks() {
     m_summary->setObjectName(QStringLiteral("sceneSummary"));
     sceneDock->setWidget(m_summary);
     addDockWidget(Qt::RightDockWidgetArea, sceneDock);
+    auto* accuracyDock = new QDockWidget(tr("Accuracy"), this);
+    accuracyDock->setObjectName(QStringLiteral("accuracyDock"));
+    m_accuracy = new AccuracyPanel(accuracyDock);
+    accuracyDock->setWidget(m_accuracy);
+    addDockWidget(Qt::RightDockWidgetArea, accuracyDock);
+    tabifyDockWidget(sceneDock, accuracyDock);
+    sceneDock->raise();
     resizeDocks({sceneDock}, {330}, Qt::Horizontal);
     resizeDocks({messagesDock}, {130}, Qt::Vertical);
 }
@@ -249,7 +278,7 @@ bool MainWindow::openCommandFile(const QString& path) {
 
 void MainWindow::documentChanged() {
     // The shading menu acts on course scenes; a command file's draws bring their own.
-    m_shadingMenu->setEnabled(!m_document.showsCommandFile());
+    m_shadingMenu->setEnabled(!m_document.showsCommandFile());  // the rules submenu too
     m_imageMenu->clear();
     const QStringList images = m_document.imageNames();
     m_imageMenu->setEnabled(images.size() > 1);
@@ -290,9 +319,18 @@ bool MainWindow::exportImage(const QString& path) {
     return true;
 }
 
+void MainWindow::setRules(rl::RuleSet rules) {
+    m_document.setRules(rules);
+    for (QAction* action : m_rulesGroup->actions())
+        action->setChecked(action->data().toInt() == static_cast<int>(rules));
+    requestRender();
+}
+
 void MainWindow::requestRender() {
     if (!m_document.isLoaded()) return;
-    m_controller->request(m_document.scene());
+    const std::shared_ptr<const rl::Scene> scene = m_document.scene();
+    m_accuracy->setScene(scene);
+    m_controller->request(scene);
 }
 
 void MainWindow::updateTimeLabel() {

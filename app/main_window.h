@@ -1,7 +1,8 @@
 // RasterLab's main window: the rendered image in the centre, a Messages dock with every
 // warning and error (file:line:col), a Scene dock with what was loaded and what each
-// stage did, and menus to open each course file on its own, pick the shading model and
-// export the image. A file that fails to load leaves the previous scene on screen.
+// stage did, an Accuracy dock (each mode against an exact reference), and menus to open each
+// course file on its own, pick the shading model and the rasterization rules, and export the
+// image. A file that fails to load leaves the previous scene on screen.
 #pragma once
 
 #include <QActionGroup>
@@ -19,6 +20,7 @@ class QTextBrowser;
 
 namespace rasterlab {
 
+class AccuracyPanel;
 class FrameImageView;
 
 class MainWindow : public QMainWindow {
@@ -36,6 +38,7 @@ public:
     // Shows a command file (seed 001); false (the error shown, the scene kept) when bad.
     bool openCommandFile(const QString& path);
     void setShading(rl::ShadingModel model);
+    void setRules(rl::RuleSet rules);
     bool exportImage(const QString& path);
 
     const SceneDocument& document() const { return m_document; }
@@ -44,6 +47,7 @@ public:
     FrameImageView* imageView() const { return m_view; }
     QListWidget* messages() const { return m_messages; }
     RenderController* controller() const { return m_controller; }
+    AccuracyPanel* accuracyPanel() const { return m_accuracy; }
 
 private:
     void createActions();
@@ -73,6 +77,8 @@ private:
     QLabel* m_pixelLabel = nullptr;
     QLabel* m_timeLabel = nullptr;  // the last frame's time; "rendering..." while busy
     QActionGroup* m_shadingGroup = nullptr;
+    QActionGroup* m_rulesGroup = nullptr;
+    AccuracyPanel* m_accuracy = nullptr;
     QMenu* m_shadingMenu = nullptr;
     QMenu* m_imageMenu = nullptr;
 };

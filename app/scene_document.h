@@ -52,6 +52,7 @@ public:
 
     rl::CourseSceneSettings settings() const { return m_settings; }
     void setShading(rl::ShadingModel model) { m_settings.shading = model; }
+    void setRules(rl::RuleSet rules) { m_settings.rules = rl::rulesOf(rules); }
     void setSize(int width, int height);
 
     std::shared_ptr<const rl::Scene> scene() const;

@@ -295,6 +295,8 @@ Result<AccuracyReport> measureAccuracy(const Scene& scene, const AccuracyOptions
     };
     std::vector<Cached> references;
     for (const AccuracyMode& mode : modes) {
+        if (options.cancel && options.cancel->load())
+            return makeError(ErrorCode::Usage, {}, "measurement cancelled");
         if (mode.supersample < 1 || mode.supersample > 16)
             return makeError(ErrorCode::Usage, {},
                              "supersampling must be 1 to 16 samples per axis");
@@ -357,6 +359,10 @@ Result<AccuracyReport> measureAccuracy(const Scene& scene, const AccuracyOptions
         row.milliseconds = median(times);
         row.metrics = compareWithReference(sampled, *reference);
         if (options.keepErrorMaps) row.errorMap = errorMap(sampled, *reference);
+        if (options.keepImages) {
+            row.image = std::make_shared<const SampledImage>(sampled);
+            row.reference = reference;
+        }
         report.rows.push_back(row);
         if (options.withDouble) {
             // The float frame's time with its shading stage swapped for the double one
@@ -375,6 +381,10 @@ Result<AccuracyReport> measureAccuracy(const Scene& scene, const AccuracyOptions
             d.milliseconds = std::max(0.0, row.milliseconds - floatShading) + median(shadingTimes);
             d.metrics = compareWithReference(inDouble, *reference);
             if (options.keepErrorMaps) d.errorMap = errorMap(inDouble, *reference);
+            if (options.keepImages) {
+                d.image = std::make_shared<const SampledImage>(std::move(inDouble));
+                d.reference = reference;
+            }
             report.rows.push_back(std::move(d));
         }
     }

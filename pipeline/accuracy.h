@@ -18,6 +18,8 @@
 //   depth error        |z - z_ref| / z_ref of view z, over the commonly covered pixels (k = 1)
 #pragma once
 
+#include <atomic>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -88,6 +90,10 @@ struct AccuracyRow {
     double milliseconds = 0.0;  // median time per frame (render, plus the k x k averaging)
     AccuracyMetrics metrics;
     Image<float> errorMap;  // with AccuracyOptions::keepErrorMaps
+    // With AccuracyOptions::keepImages: the mode's frame and its reference, in the same terms
+    // (for picking a pixel and reading both values).
+    std::shared_ptr<const SampledImage> image;
+    std::shared_ptr<const ReferenceImage> reference;
 };
 
 struct AccuracyReport {
@@ -103,6 +109,10 @@ struct AccuracyOptions {
     int repeats = 5;                  // frames timed per mode (the median is reported)
     int threads = 0;
     bool keepErrorMaps = false;
+    bool keepImages = false;
+    // Checked between modes: when it becomes true, measureAccuracy stops with a Usage error
+    // ("measurement cancelled").
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 std::vector<AccuracyMode> defaultAccuracyModes(const std::vector<ShadingModel>& shadings,

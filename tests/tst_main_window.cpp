@@ -4,6 +4,8 @@
 #include <QtTest>
 
 #include <QMenu>
+#include <QPushButton>
+#include <QTableWidget>
 #include <QThreadPool>
 
 #include <QDockWidget>
@@ -17,11 +19,13 @@
 
 #include <set>
 
+#include "accuracy_panel.h"
 #include "main_window.h"
 #include "render_controller.h"
 #include "scene_document.h"
 #include "test_support.h"
 
+using rasterlab::AccuracyPanel;
 using rasterlab::MainWindow;
 using rasterlab::RenderController;
 using rasterlab::RenderedFrame;
@@ -82,6 +86,8 @@ private slots:
     void degenerateCameraKeepsScene();
     void openGoodObject();
     void flatShading();
+    void rulesMenu();
+    void accuracyDock();
     void lastShadingWins();
     void exportImage();
     void exportToMissingFolder();
@@ -285,6 +291,76 @@ void TestMainWindow::openGoodObject() {
     QCOMPARE(window.currentImage().pixel(0, 0), qRgba(0, 0, 0, 255));
 }
 
+void TestMainWindow::rulesMenu() {
+    MainWindow window;
+    QSignalSpy spy(window.controller(), &RenderController::frameReady);
+    WAIT_FOR_FIRST_FRAME(spy);
+    const QImage course = window.currentImage();
+    QCOMPARE(window.currentFrame()->scene->rules, rl::RasterRules::course());
+    auto* gpu = window.findChild<QAction*>(QStringLiteral("rules_gpu"));
+    QVERIFY(gpu);
+    QVERIFY(!gpu->isChecked());
+    QVERIFY(window.findChild<QAction*>(QStringLiteral("rules_course"))->isChecked());
+    spy.clear();
+    gpu->trigger();
+    QVERIFY(gpu->isChecked());
+    QVERIFY(spy.wait(kFrameTimeoutMs));
+    QCOMPARE(window.currentFrame()->scene->rules, rl::RasterRules::gpu());
+    QCOMPARE(window.document().settings().rules, rl::RasterRules::gpu());
+    QVERIFY(window.currentImage() != course);
+    // Shading is kept when the rules change.
+    QCOMPARE(window.currentFrame()->scene->draws.front().shading, rl::ShadingModel::Phong);
+}
+
+void TestMainWindow::accuracyDock() {
+    MainWindow window;
+    QSignalSpy spy(window.controller(), &RenderController::frameReady);
+    WAIT_FOR_FIRST_FRAME(spy);
+    AccuracyPanel* panel = window.accuracyPanel();
+    QVERIFY(panel);
+    QCOMPARE(panel->parentWidget()->objectName(), QStringLiteral("accuracyDock"));
+    QVERIFY(!panel->report());
+    QSignalSpy done(panel, &AccuracyPanel::finished);
+    auto* measure = panel->findChild<QPushButton*>(QStringLiteral("measureAccuracy"));
+    QVERIFY(measure);
+    measure->click();
+    QVERIFY(panel->isMeasuring());
+    QVERIFY(done.wait(60000));
+    QVERIFY(!panel->isMeasuring());
+    QVERIFY(panel->report());
+    // Three shading models under three rule sets, each in float and double.
+    QCOMPARE(panel->report()->rows.size(), std::size_t(18));
+    auto* table = panel->findChild<QTableWidget*>(QStringLiteral("accuracyTable"));
+    QCOMPARE(table->rowCount(), 18);
+    // Phong under the GPU-like rules is selected first: its heat map and its numbers.
+    const rl::AccuracyRow& row = panel->report()->rows.at(std::size_t(panel->selectedRow()));
+    QCOMPARE(row.mode.shading, rl::ShadingModel::Phong);
+    QCOMPARE(row.mode.rules, rl::RuleSet::Gpu);
+    QCOMPARE(row.precision, std::string("float"));
+    QVERIFY(row.metrics.within1Of255 >= 0.999);
+    QCOMPARE(table->item(panel->selectedRow(), 1)->text(), QStringLiteral("gpu"));
+    QVERIFY(!panel->plot().isNull());
+    // Cropped to the knot and a margin: smaller than the image, bar included.
+    QVERIFY(panel->heatMap().width() > 200 && panel->heatMap().width() < 800 + 90);
+    QVERIFY(panel->heatMapOrigin().x() > 0);
+    // Picking a covered pixel names both values; the default scene covers the centre.
+    panel->pickPixel(400, 300);
+    QVERIFY2(panel->pickText().startsWith(QStringLiteral("Pixel (400, 300), phong/gpu: mode (")),
+             qPrintable(panel->pickText()));
+    QVERIFY(panel->pickText().contains(QStringLiteral("reference (")));
+    // The course rules are worse, and the table says so.
+    double courseRmse = 0.0;
+    for (const rl::AccuracyRow& r : panel->report()->rows)
+        if (r.mode.shading == rl::ShadingModel::Phong && r.mode.rules == rl::RuleSet::Course &&
+            r.precision == "float")
+            courseRmse = r.metrics.rmse;
+    QVERIFY(courseRmse > 10.0 * row.metrics.rmse);
+    // A new scene clears the results: they were for the old one.
+    window.setShading(rl::ShadingModel::Flat);
+    QVERIFY(!panel->report());
+    QCOMPARE(table->rowCount(), 0);
+}
+
 void TestMainWindow::flatShading() {
     MainWindow window;
     QSignalSpy spy(window.controller(), &RenderController::frameReady);
@@ -374,15 +450,15 @@ void TestMainWindow::exportToMissingFolder() {
 void TestMainWindow::docks() {
     MainWindow window;
     const QList<QDockWidget*> docks = window.findChildren<QDockWidget*>();
-    QCOMPARE(docks.size(), 2);
+    QCOMPARE(docks.size(), 3);
     std::set<QString> names;
     for (const QDockWidget* dock : docks) {
         QVERIFY2(!dock->objectName().isEmpty(), qPrintable(dock->windowTitle()));
         QVERIFY(dock->widget());
         names.insert(dock->objectName());
     }
-    const std::set<QString> expected = {QStringLiteral("messagesDock"),
-                                        QStringLiteral("sceneDock")};
+    const std::set<QString> expected = {QStringLiteral("messagesDock"), QStringLiteral("sceneDock"),
+                                        QStringLiteral("accuracyDock")};
     QCOMPARE(names, expected);
     const auto* messagesDock = window.findChild<QDockWidget*>(QStringLiteral("messagesDock"));
     QVERIFY(messagesDock);

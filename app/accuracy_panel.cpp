@@ -1,0 +1,333 @@
+#include "accuracy_panel.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMouseEvent>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+
+#include "accuracy_plot.h"
+
+namespace rasterlab {
+
+namespace {
+
+QString percent(double share) {
+    return QString::number(100.0 * share, 'f', 3) + QStringLiteral(" %");
+}
+
+QString bytes(const rl::dvec3& c) {
+    return QStringLiteral("(%1, %2, %3)")
+        .arg(c.r * 255.0, 0, 'f', 2)
+        .arg(c.g * 255.0, 0, 'f', 2)
+        .arg(c.b * 255.0, 0, 'f', 2);
+}
+
+}  // namespace
+
+AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent) {
+    setObjectName(QStringLiteral("accuracyPanel"));
+    auto* layout = new QVBoxLayout(this);
+    auto* controls = new QHBoxLayout;
+    m_measure = new QPushButton(tr("&Measure"), this);
+    m_measure->setObjectName(QStringLiteral("measureAccuracy"));
+    m_measure->setToolTip(
+        tr("Render the scene in every mode and compare each with an exact "
+           "ray-cast reference"));
+    m_cancelButton = new QPushButton(tr("Cancel"), this);
+    m_cancelButton->setObjectName(QStringLiteral("cancelAccuracy"));
+    m_cancelButton->setEnabled(false);
+    m_samples = new QComboBox(this);
+    m_samples->setObjectName(QStringLiteral("accuracySamples"));
+    m_samples->addItem(tr("1 sample a pixel"), 1);
+    m_samples->addItem(tr("also 2x2 samples"), 2);
+    m_samples->addItem(tr("also 4x4 samples"), 4);
+    controls->addWidget(m_measure);
+    controls->addWidget(m_cancelButton);
+    controls->addWidget(m_samples, 1);
+    layout->addLayout(controls);
+    m_status = new QLabel(tr("Measures the error of each mode against an exact reference."), this);
+    m_status->setObjectName(QStringLiteral("accuracyStatus"));
+    m_status->setWordWrap(true);
+    layout->addWidget(m_status);
+
+    m_table = new QTableWidget(0, 8, this);
+    m_table->setObjectName(QStringLiteral("accuracyTable"));
+    m_table->setHorizontalHeaderLabels({tr("Mode"), tr("Rules"), tr("Precision"), tr("Samples"),
+                                        tr("ms"), tr("RMSE"), tr("Max error"), tr("Within 1/255")});
+    m_table->setToolTip(tr("Errors in byte steps (1/255) over the pixels both images cover"));
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->verticalHeader()->setVisible(false);
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    layout->addWidget(m_table, 2);
+
+    m_plotLabel = new QLabel(this);
+    m_plotLabel->setObjectName(QStringLiteral("accuracyPlot"));
+    m_plotLabel->setMinimumHeight(120);
+    // The pictures follow the dock's size, never the other way round.
+    m_plotLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Ignored);
+    m_plotLabel->setAlignment(Qt::AlignCenter);
+    layout->addWidget(m_plotLabel, 3);
+    m_heatLabel = new QLabel(this);
+    m_heatLabel->setObjectName(QStringLiteral("accuracyHeatMap"));
+    m_heatLabel->setMinimumHeight(120);
+    m_heatLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Ignored);
+    m_heatLabel->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    m_heatLabel->setCursor(Qt::CrossCursor);
+    m_heatLabel->setToolTip(tr("Click a pixel to compare the mode with the reference there"));
+    m_heatLabel->installEventFilter(this);
+    layout->addWidget(m_heatLabel, 3);
+    m_pick = new QLabel(this);
+    m_pick->setObjectName(QStringLiteral("accuracyPick"));
+    m_pick->setWordWrap(true);
+    m_pick->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(m_pick);
+
+    connect(m_measure, &QPushButton::clicked, this, &AccuracyPanel::measure);
+    connect(m_cancelButton, &QPushButton::clicked, this, &AccuracyPanel::cancel);
+    connect(&m_watcher, &QFutureWatcher<Outcome>::finished, this, &AccuracyPanel::onFinished);
+    connect(m_table, &QTableWidget::currentCellChanged, this, [this](int row) { selectRow(row); });
+}
+
+AccuracyPanel::~AccuracyPanel() {
+    if (m_cancel) m_cancel->store(true);
+    m_watcher.waitForFinished();
+}
+
+void AccuracyPanel::setScene(std::shared_ptr<const rl::Scene> scene) {
+    if (scene == m_scene) return;
+    m_scene = std::move(scene);
+    if (m_running && m_cancel) m_cancel->store(true);
+    ++m_generation;  // a result on its way is for the old scene
+    const bool hadResults = m_report != nullptr;
+    m_report.reset();
+    m_selected = -1;
+    m_table->setRowCount(0);
+    m_plot = m_heatMap = QImage();
+    m_plotLabel->clear();
+    m_heatLabel->clear();
+    m_pick->clear();
+    if (hadResults || m_running) m_status->setText(tr("The scene changed: measure again."));
+}
+
+void AccuracyPanel::measure() {
+    if (!m_scene) return;
+    if (m_running && m_cancel) m_cancel->store(true);
+    m_watcher.waitForFinished();
+    const quint64 generation = ++m_generation;
+    m_cancel = std::make_shared<std::atomic<bool>>(false);
+    rl::AccuracyOptions options;
+    const int k = m_samples->currentData().toInt();
+    std::vector<int> samples = {1};
+    if (k > 1) samples.push_back(k);
+    options.modes = rl::defaultAccuracyModes(
+        {rl::ShadingModel::Flat, rl::ShadingModel::Gouraud, rl::ShadingModel::Phong},
+        {rl::RuleSet::Course, rl::RuleSet::Gpu, rl::RuleSet::Hw2}, samples);
+    options.repeats = 3;
+    options.keepImages = true;
+    options.cancel = m_cancel.get();
+    m_running = true;
+    m_measure->setEnabled(false);
+    m_cancelButton->setEnabled(true);
+    m_status->setText(tr("Measuring %n mode(s) against the exact reference...", nullptr,
+                         int(options.modes.size())));
+    // The cancel flag lives as long as the worker holds its pointer.
+    m_watcher.setFuture(QtConcurrent::run([generation, scene = m_scene, options,
+                                           flag = m_cancel]() -> Outcome {
+        Outcome outcome;
+        outcome.generation = generation;
+        try {
+            auto report = rl::measureAccuracy(*scene, options);
+            if (!report)
+                outcome.error = QString::fromStdString(report.error().toString());
+            else
+                outcome.report = std::make_shared<rl::AccuracyReport>(std::move(report.value()));
+        } catch (const std::exception& e) {
+            outcome.error = QString::fromUtf8(e.what());
+        }
+        return outcome;
+    }));
+}
+
+void AccuracyPanel::cancel() {
+    if (m_running && m_cancel) m_cancel->store(true);
+}
+
+void AccuracyPanel::onFinished() {
+    const Outcome outcome = m_watcher.result();
+    m_running = false;
+    m_measure->setEnabled(true);
+    m_cancelButton->setEnabled(false);
+    if (outcome.generation != m_generation) {
+        emit finished();
+        return;  // for a scene no longer shown, or a measurement replaced
+    }
+    if (!outcome.report) {
+        m_status->setText(outcome.error == QStringLiteral("measurement cancelled")
+                              ? tr("Cancelled.")
+                              : tr("The measurement failed: %1").arg(outcome.error));
+        emit finished();
+        return;
+    }
+    m_report = outcome.report;
+    const rl::AccuracyReport& report = *m_report;
+    m_status->setText(tr("%1 at %2x%3: %4 modes; the exact reference cast %5 rays in %6 ms.")
+                          .arg(QString::fromStdString(m_scene->name))
+                          .arg(m_scene->width)
+                          .arg(m_scene->height)
+                          .arg(report.rows.size())
+                          .arg(report.referenceRays)
+                          .arg(report.referenceMilliseconds, 0, 'f', 0));
+    m_table->setRowCount(int(report.rows.size()));
+    for (int r = 0; r < int(report.rows.size()); ++r) {
+        const rl::AccuracyRow& row = report.rows[std::size_t(r)];
+        const rl::AccuracyMetrics& m = row.metrics;
+        const QStringList cells = {
+            QString::fromLatin1(rl::shadingModelName(row.mode.shading)),
+            QString::fromLatin1(rl::ruleSetName(row.mode.rules)),
+            QString::fromStdString(row.precision),
+            QString::number(row.mode.supersample * row.mode.supersample),
+            QString::number(row.milliseconds, 'f', 2),
+            QString::number(m.rmse * 255.0, 'f', 4),
+            QString::number(m.maxError * 255.0, 'f', 2),
+            percent(m.within1Of255),
+        };
+        for (int c = 0; c < cells.size(); ++c) {
+            auto* item = new QTableWidgetItem(cells[c]);
+            if (c >= 3) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            m_table->setItem(r, c, item);
+        }
+    }
+    m_plot = accuracyPlot(report, tr("Error against run time: %1, %2x%3")
+                                      .arg(QString::fromStdString(m_scene->name))
+                                      .arg(m_scene->width)
+                                      .arg(m_scene->height));
+    // The mode that is interesting first: Phong under the GPU-like rules, if measured.
+    int first = 0;
+    for (int r = 0; r < int(report.rows.size()); ++r) {
+        const rl::AccuracyRow& row = report.rows[std::size_t(r)];
+        if (row.mode.shading == rl::ShadingModel::Phong && row.mode.rules == rl::RuleSet::Gpu &&
+            row.precision == "float" && row.mode.supersample == 1)
+            first = r;
+    }
+    m_table->setCurrentCell(first, 0);
+    selectRow(first);
+    emit finished();
+}
+
+void AccuracyPanel::selectRow(int row) {
+    if (!m_report || row < 0 || row >= int(m_report->rows.size())) return;
+    m_selected = row;
+    const rl::AccuracyRow& r = m_report->rows[std::size_t(row)];
+    if (r.image && r.reference) {
+        // The map of the part of the image either covers (and a margin), so that a small
+        // object is not lost in black.
+        const rl::Image<float> full = rl::errorMap(*r.image, *r.reference);
+        int x0 = full.width(), y0 = full.height(), x1 = -1, y1 = -1;
+        for (int y = 0; y < full.height(); ++y)
+            for (int x = 0; x < full.width(); ++x)
+                if (!std::isnan(full.at(x, y))) {
+                    x0 = std::min(x0, x);
+                    y0 = std::min(y0, y);
+                    x1 = std::max(x1, x);
+                    y1 = std::max(y1, y);
+                }
+        if (x1 < 0) x0 = y0 = 0, x1 = full.width() - 1, y1 = full.height() - 1;
+        const int margin = 8;
+        x0 = std::max(0, x0 - margin);
+        y0 = std::max(0, y0 - margin);
+        x1 = std::min(full.width() - 1, x1 + margin);
+        y1 = std::min(full.height() - 1, y1 + margin);
+        rl::Image<float> part(x1 - x0 + 1, y1 - y0 + 1);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) part.at(x - x0, y - y0) = full.at(x, y);
+        m_heatOrigin = QPoint(x0, y0);
+        m_heatMap = errorHeatMap(part, 8.0f / 255.0f);
+    }
+    const rl::AccuracyMetrics& m = r.metrics;
+    m_pick->setText(tr("%1 (%2): coverage differs on %3 pixels (%4); the largest error, %5 byte "
+                       "steps, is at (%6, %7). Click the map to compare a pixel.")
+                        .arg(QString::fromStdString(rl::accuracyModeName(r.mode)),
+                             QString::fromStdString(r.precision))
+                        .arg(m.coverageMismatch)
+                        .arg(percent(m.coverageMismatchShare()))
+                        .arg(m.maxError * 255.0, 0, 'f', 2)
+                        .arg(m.worstX)
+                        .arg(m.worstY));
+    refreshImages();
+}
+
+void AccuracyPanel::pickPixel(int x, int y) {
+    if (!m_report || m_selected < 0) return;
+    const rl::AccuracyRow& r = m_report->rows[std::size_t(m_selected)];
+    if (!r.image || !r.reference || !r.image->colour.contains(x, y)) return;
+    const rl::dvec3 ours = r.image->colour.at(x, y), exact = r.reference->colour.at(x, y);
+    const int oursHits = r.image->hits.at(x, y), exactHits = r.reference->hits.at(x, y);
+    const int samples = r.mode.supersample * r.mode.supersample;
+    QString text = tr("Pixel (%1, %2), %3: mode %4, reference %5, difference %6 (byte steps).")
+                       .arg(x)
+                       .arg(y)
+                       .arg(QString::fromStdString(rl::accuracyModeName(r.mode)), bytes(ours),
+                            bytes(exact), bytes(ours - exact));
+    if (oursHits != exactHits)
+        text += QLatin1Char(' ') + tr("Coverage differs: %1 of %2 samples covered by the mode, "
+                                      "%3 by the reference.")
+                                       .arg(oursHits)
+                                       .arg(samples)
+                                       .arg(exactHits);
+    m_pick->setText(text);
+}
+
+QString AccuracyPanel::pickText() const {
+    return m_pick->text();
+}
+
+bool AccuracyPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == m_heatLabel && event->type() == QEvent::MouseButtonPress && m_report &&
+        m_selected >= 0) {
+        const auto* mouse = static_cast<QMouseEvent*>(event);
+        const rl::AccuracyRow& r = m_report->rows[std::size_t(m_selected)];
+        const QPixmap shown = m_heatLabel->pixmap();
+        if (r.image && !shown.isNull() && !m_heatMap.isNull()) {
+            // The map is drawn scaled at the label's top left.
+            const double scale = double(shown.width()) / double(m_heatMap.width());
+            const QPointF at = mouse->position() / scale;
+            const int x = int(std::floor(at.x())) + m_heatOrigin.x(),
+                      y = int(std::floor(at.y())) + m_heatOrigin.y();
+            if (x < r.image->colour.width() && y < r.image->colour.height() && x >= 0 && y >= 0)
+                pickPixel(x, y);
+        }
+        return true;
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+void AccuracyPanel::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    refreshImages();
+}
+
+void AccuracyPanel::refreshImages() {
+    const auto fit = [](QLabel* label, const QImage& image) {
+        if (image.isNull()) return;
+        label->setPixmap(QPixmap::fromImage(image).scaled(label->size(), Qt::KeepAspectRatio,
+                                                          Qt::SmoothTransformation));
+    };
+    fit(m_plotLabel, m_plot);
+    // The heat map keeps its pixels sharp when enlarged.
+    if (!m_heatMap.isNull())
+        m_heatLabel->setPixmap(QPixmap::fromImage(m_heatMap).scaled(
+            m_heatLabel->size(), Qt::KeepAspectRatio, Qt::FastTransformation));
+}
+
+}  // namespace rasterlab

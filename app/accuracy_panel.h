@@ -1,0 +1,84 @@
+// The Accuracy dock: measures every mode of the current scene against the exact reference
+// (accuracy.h) on a worker thread, and shows the table, the plot of error against time, and
+// the error heat map of the selected mode, with a colour bar. Clicking the heat map picks a
+// pixel: its value in the mode, in the reference, and the difference.
+#pragma once
+
+#include <QFutureWatcher>
+#include <QImage>
+#include <QWidget>
+
+#include <atomic>
+#include <memory>
+
+#include "accuracy.h"
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QTableWidget;
+
+namespace rasterlab {
+
+class AccuracyPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit AccuracyPanel(QWidget* parent = nullptr);
+    ~AccuracyPanel() override;
+
+    // The scene to measure; the results of another scene are cleared (and a running
+    // measurement's result dropped).
+    void setScene(std::shared_ptr<const rl::Scene> scene);
+    void measure();
+    void cancel();
+    // The row whose heat map is shown; picks the pixel (x, y) of it.
+    void selectRow(int row);
+    void pickPixel(int x, int y);
+
+    bool isMeasuring() const { return m_running; }
+    const rl::AccuracyReport* report() const { return m_report.get(); }
+    int selectedRow() const { return m_selected; }
+    QString pickText() const;
+    // The selected mode's heat map, cropped to the pixels either image covers (and a margin)
+    // from heatMapOrigin() on, with its colour bar on the right.
+    const QImage& heatMap() const { return m_heatMap; }
+    QPoint heatMapOrigin() const { return m_heatOrigin; }
+    const QImage& plot() const { return m_plot; }
+
+signals:
+    void finished();
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+
+private:
+    struct Outcome {
+        quint64 generation = 0;
+        std::shared_ptr<rl::AccuracyReport> report;
+        QString error;
+    };
+    void onFinished();
+    void refreshImages();
+
+    std::shared_ptr<const rl::Scene> m_scene;
+    std::shared_ptr<rl::AccuracyReport> m_report;
+    QFutureWatcher<Outcome> m_watcher;
+    std::shared_ptr<std::atomic<bool>> m_cancel;
+    quint64 m_generation = 0;
+    bool m_running = false;
+    int m_selected = -1;
+    QImage m_plot, m_heatMap;
+    QPoint m_heatOrigin;  // the image pixel at the heat map's top left
+
+    QPushButton* m_measure = nullptr;
+    QPushButton* m_cancelButton = nullptr;
+    QComboBox* m_samples = nullptr;
+    QLabel* m_status = nullptr;
+    QTableWidget* m_table = nullptr;
+    QLabel* m_plotLabel = nullptr;
+    QLabel* m_heatLabel = nullptr;
+    QLabel* m_pick = nullptr;
+};
+
+}  // namespace rasterlab
