@@ -229,7 +229,7 @@ QRgb heatColour(float t) {
 }
 
 QImage errorHeatMap(const rl::Image<float>& error, float maxError) {
-    const int barWidth = 90;
+    const int barWidth = 110;
     const int width = error.width(), height = std::max(error.height(), 160);
     QImage image(width + barWidth, height, QImage::Format_RGB32);
     image.fill(Qt::black);

@@ -1186,7 +1186,7 @@ void TestCli::accuracyTablePlotAndHeatMaps() {
             dir.filePath(QStringLiteral("maps/error-%1.png").arg(QLatin1String(mode))));
         QVERIFY2(!map.isNull(), mode);
         QCOMPARE(map.height(), 160);  // at least room for the colour bar
-        QCOMPARE(map.width(), 120 + 90);
+        QCOMPARE(map.width(), 120 + 110);  // the image and the colour bar
         // A corner no triangle covers is black; the centre of the sphere is covered.
         QCOMPARE(map.pixel(0, 0), qRgb(0, 0, 0));
         QVERIFY(map.pixel(60, 45) != qRgb(0, 0, 0));

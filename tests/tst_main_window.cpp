@@ -341,7 +341,7 @@ void TestMainWindow::accuracyDock() {
     QCOMPARE(table->item(panel->selectedRow(), 1)->text(), QStringLiteral("gpu"));
     QVERIFY(!panel->plot().isNull());
     // Cropped to the knot and a margin: smaller than the image, bar included.
-    QVERIFY(panel->heatMap().width() > 200 && panel->heatMap().width() < 800 + 90);
+    QVERIFY(panel->heatMap().width() > 200 && panel->heatMap().width() < 800 + 110);
     QVERIFY(panel->heatMapOrigin().x() > 0);
     // Picking a covered pixel names both values; the default scene covers the centre.
     panel->pickPixel(400, 300);

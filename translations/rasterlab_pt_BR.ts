@@ -46,7 +46,7 @@
     <message>
         <location filename="../app/accuracy_plot.cpp" line="216"/>
         <source>an RMSE of 0 sits on the floor</source>
-        <translation>um RMSE de 0 fica no piso do gráfico</translation>
+        <translation>RMSE 0: no piso do gráfico</translation>
     </message>
     <message>
         <location filename="../app/accuracy_plot.cpp" line="261"/>
