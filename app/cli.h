@@ -1,5 +1,8 @@
 // rasterlab-cli: the renderer without a window. Subcommands:
 //   render                  render a course scene (or the default scene) to PNG
+//   run                     run a command file (seed 001) and write the PNGs it names
+//   bench                   time a scene's frames, per stage, with the memory used
+//   accuracy                error against run time of each mode, against an exact reference
 //   generate-default-scene  write the default scene's three course files
 // Exit status: 0 on success, 1 when an input is bad (one "file:line:col: message" line on
 // stderr), 2 when the command line is wrong. Warnings go to stderr; what was written, to
