@@ -6,6 +6,8 @@
 #include <QImage>
 #include <QImageReader>
 
+#include "input_file.h"
+
 namespace rasterlab {
 
 rl::Result<std::shared_ptr<const rl::Texture>> loadTexture(const QString& path,
@@ -35,11 +37,9 @@ rl::Result<std::shared_ptr<const rl::Texture>> loadTexture(const QString& path,
 }
 
 rl::Result<rl::Hw2File> loadCommandFile(const QString& path, rl::Diagnostics& diagnostics) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return rl::makeError(rl::ErrorCode::Io, rl::SourceLocation{path.toStdString(), 0, 0},
-                             "cannot open: " + file.errorString().toStdString());
-    const QByteArray bytes = file.readAll();
+    auto read = readInputFile(path);
+    if (!read) return read.error();
+    const QByteArray& bytes = read.value();
     const QDir folder = QFileInfo(path).absoluteDir();
     const rl::TextureLoader loader = [&folder](const std::string& name,
                                                const rl::SourceLocation& where) {

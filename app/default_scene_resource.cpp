@@ -1,10 +1,9 @@
 #include "default_scene_resource.h"
 
-#include <QFile>
-
 #include <filesystem>
 
 #include "default_scene.h"
+#include "input_file.h"
 
 namespace rasterlab {
 
@@ -17,19 +16,10 @@ QString defaultScenePath(CoursePart part) {
 
 namespace {
 
-// The bytes of a file on disk or in the resources, or an Io error naming it.
-rl::Result<QByteArray> readBytes(const QString& path) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return rl::makeError(rl::ErrorCode::Io, rl::SourceLocation{path.toStdString(), 0, 0},
-                             "cannot open: " + file.errorString().toStdString());
-    return file.readAll();
-}
-
 template <typename Parse>
 auto load(const QString& path, rl::Diagnostics& diagnostics, Parse parse)
     -> decltype(parse(std::string_view(), std::string(), diagnostics)) {
-    auto bytes = readBytes(path);
+    auto bytes = readInputFile(path);
     if (!bytes) return bytes.error();
     const QByteArray& data = bytes.value();
     return parse(std::string_view(data.constData(), static_cast<std::size_t>(data.size())),

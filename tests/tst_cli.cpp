@@ -139,6 +139,7 @@ private slots:
     void bench_data();
     void bench();
     void rulesChangeTheImage();
+    void hugeFileFailsFast();
     void accuracyJson();
     void accuracyTablePlotAndHeatMaps();
 };
@@ -1077,6 +1078,32 @@ void TestCli::bench() {
     QVERIFY(md.out.contains(QStringLiteral("Memory: peak ")));
 }
 
+void TestCli::hugeFileFailsFast() {
+    // A gigabyte of garbage (a sparse file: no disk is used) is refused from its size,
+    // before a byte is read: the process stays small and quick.
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    for (const char* name : {"garbage.byu", "garbage.txt"}) {
+        QFile file(dir.filePath(QLatin1String(name)));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        QVERIFY(file.resize(qint64(1) << 30));
+    }
+    CliRun run;
+    RUN_CLI(run, QStringList({"render", "--object", "garbage.byu", "--output", "out.png"}),
+            dir.path());
+    QCOMPARE(run.exitCode, 1);
+    QCOMPARE(linesOf(run.err),
+             QStringList({"garbage.byu: the file has 1024 MiB, more than the 512 MiB an input "
+                          "file may have"}));
+    QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("out.png"))));
+    CliRun command;
+    RUN_CLI(command, QStringList({"run", "garbage.txt"}), dir.path());
+    QCOMPARE(command.exitCode, 1);
+    QCOMPARE(linesOf(command.err),
+             QStringList({"garbage.txt: the file has 1024 MiB, more than the 512 MiB an input "
+                          "file may have"}));
+}
+
 void TestCli::rulesChangeTheImage() {
     // The default scene under each rule set: the same picture, but not the same pixels (the
     // course samples pixel corners with whole-pixel vertices, gpu and hw2 do not).
@@ -1185,7 +1212,7 @@ void TestCli::accuracyTablePlotAndHeatMaps() {
         const QImage map(
             dir.filePath(QStringLiteral("maps/error-%1.png").arg(QLatin1String(mode))));
         QVERIFY2(!map.isNull(), mode);
-        QCOMPARE(map.height(), 160);  // at least room for the colour bar
+        QCOMPARE(map.height(), 160);       // at least room for the colour bar
         QCOMPARE(map.width(), 120 + 110);  // the image and the colour bar
         // A corner no triangle covers is black; the centre of the sphere is covered.
         QCOMPARE(map.pixel(0, 0), qRgb(0, 0, 0));
