@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The test suites again under the sanitizers: every suite built with AddressSanitizer and
 # UndefinedBehaviorSanitizer (GCC) in build-asan/, and the threaded rendering tests
-# (tst_fast_paths: every stage on 1, 2, 3 and 5 threads) built with ThreadSanitizer (Clang)
-# in build-tsan/. Any report fails the run. Expects the packages of setup.sh.
+# (tst_fast_paths: every stage on 1, 2, 3 and 5 threads; tst_accuracy: the threaded
+# reference and renders) built with ThreadSanitizer (Clang) in build-tsan/. Any report fails the run. Expects the packages of setup.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs="$(nproc)"
@@ -17,7 +17,8 @@ cmake --build build-asan --parallel "$jobs"
 CC=clang CXX=clang++ cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DRASTERLAB_BUILD_TESTS=ON -DCMAKE_CXX_FLAGS="-fsanitize=thread" \
     -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread"
-cmake --build build-tsan --parallel "$jobs" --target tst_fast_paths
+cmake --build build-tsan --parallel "$jobs" --target tst_fast_paths tst_accuracy
 (cd build-tsan &&
-    QT_QPA_PLATFORM=offscreen TSAN_OPTIONS="halt_on_error=1" ./tests/tst_fast_paths)
+    QT_QPA_PLATFORM=offscreen TSAN_OPTIONS="halt_on_error=1" ./tests/tst_fast_paths &&
+    QT_QPA_PLATFORM=offscreen TSAN_OPTIONS="halt_on_error=1" ./tests/tst_accuracy)
 echo "sanitizers: ASan+UBSan suites and the TSan threaded tests passed"
