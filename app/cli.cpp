@@ -776,6 +776,7 @@ int runAccuracy(const QStringList& arguments, QTextStream& out, QTextStream& err
                 << ", \"within_1_255\": " << jsonNumber(m.within1Of255, 6)
                 << ", \"depth_error_mean\": " << jsonNumber(m.depthMeanRelative, 9)
                 << ", \"depth_error_max\": " << jsonNumber(m.depthMaxRelative, 9)
+                << ", \"worst_x\": " << m.worstX << ", \"worst_y\": " << m.worstY
                 << ", \"both_covered\": " << m.bothCovered
                 << ", \"either_covered\": " << m.eitherCovered
                 << ", \"coverage_mismatch_pixels\": " << m.coverageMismatch << "}";
@@ -810,8 +811,9 @@ int runAccuracy(const QStringList& arguments, QTextStream& out, QTextStream& err
                 << rl::ruleSetName(row.mode.rules) << " | " << QString::fromStdString(row.precision)
                 << " | " << row.mode.supersample * row.mode.supersample << " | "
                 << number(row.milliseconds, 2) << " | " << number(m.rmse * 255.0, 4) << " | "
-                << number(m.maxError * 255.0, 3) << " | "
-                << (std::isfinite(m.psnr) ? number(m.psnr, 1) : lit("inf")) << " | "
+                << number(m.maxError * 255.0, 3)
+                << (m.worstX >= 0 ? lit(" at (%1, %2)").arg(m.worstX).arg(m.worstY) : QString())
+                << " | " << (std::isfinite(m.psnr) ? number(m.psnr, 1) : lit("inf")) << " | "
                 << number(100.0 * m.coverageMismatchShare(), 3) << " % (" << m.coverageMismatch
                 << " px) | " << number(100.0 * m.within1Of255, 3) << " % | "
                 << (std::isnan(m.depthMeanRelative)
