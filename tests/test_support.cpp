@@ -71,6 +71,17 @@ rl::Projection screenTriangles(const std::vector<rl::dvec2>& points,
     return projection;
 }
 
+bool sameCoveredBarycentrics(const rl::DepthTest& a, const rl::DepthTest& b) {
+    if (a.triangle != b.triangle || a.barycentric.width() != b.barycentric.width() ||
+        a.barycentric.height() != b.barycentric.height())
+        return false;
+    const auto& ids = a.triangle.pixels();
+    for (std::size_t i = 0; i < ids.size(); ++i)
+        if (ids[i] != rl::kNoTriangle && a.barycentric.pixels()[i] != b.barycentric.pixels()[i])
+            return false;
+    return true;
+}
+
 rl::Scene screen(int width, int height) {
     rl::Scene scene;
     scene.width = width;

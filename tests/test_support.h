@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 
+#include "depth_test.h"
 #include "diagnostics.h"
 #include "math.h"
 #include "projection.h"
@@ -38,6 +39,10 @@ rl::Projection screenTriangles(const std::vector<rl::dvec2>& points,
                                const std::vector<float>& depths = {});
 // A scene that only sets the image size.
 rl::Scene screen(int width, int height);
+
+// Whether two depth tests hold the same triangles and, where a triangle won, the same
+// barycentrics (elsewhere the buffer keeps what an earlier frame left).
+bool sameCoveredBarycentrics(const rl::DepthTest& a, const rl::DepthTest& b);
 
 // The camera of seed 000: C = (-200, -50, 300), N = (0.667, 0.172, -1), V = (0, 3, 0),
 // d = 65, hx = 0.5, hy = 0.6.
