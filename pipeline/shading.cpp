@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <optional>
 
+#include "multiversion.h"
 #include "parallel.h"
 #include "phong.h"
 #include "phong_kernel.h"
@@ -97,10 +99,26 @@ vec3 orientedNormal(const vec3& n, const vec3& pView, bool flip) {
     return flip && glm::dot(-pView, unit) < 0.0f ? -unit : unit;
 }
 
+// The end of the run of pixels from `from` on whose triangle is t (at most `limit`): two ids
+// compared at once while they can be.
+int runEnd(const std::uint32_t* ids, int from, int limit, std::uint32_t t) {
+    const std::uint64_t pair = (std::uint64_t(t) << 32) | t;
+    int end = from;
+    while (end + 4 <= limit) {
+        std::uint64_t a, b;
+        std::memcpy(&a, ids + end, sizeof a);
+        std::memcpy(&b, ids + end + 2, sizeof b);
+        if ((a ^ pair) | (b ^ pair)) break;
+        end += 4;
+    }
+    while (end < limit && ids[end] == t) ++end;
+    return end;
+}
+
 // Gouraud's colours for a run of pixels; returns how many are above the colour scale.
 // Plain loops over separate channels, so that the compiler runs them on several lanes.
-std::size_t gouraudRun(const vec3& c0, const vec3& d1, const vec3& d2, const vec2* bary, int count,
-                       vec3* colour, float scale) {
+RL_MULTIVERSION std::size_t gouraudRun(const vec3& c0, const vec3& d1, const vec3& d2,
+                                       const vec2* bary, int count, vec3* colour, float scale) {
     std::size_t clamped = 0;
     for (int i = 0; i < count; ++i) {
         const float beta = bary[i].x, gamma = bary[i].y;
@@ -333,8 +351,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
             while (x < columns.end) {
                 const std::uint32_t t = idRow[x];
                 // A run of pixels won by one triangle (or by none): its set-up is done once.
-                int end = x + 1;
-                while (end < columns.end && idRow[end] == t) ++end;
+                const int end = runEnd(idRow, x + 1, columns.end, t);
                 if (t == kNoTriangle) {
                     std::fill(colourRow + x, colourRow + end, background);
                     if (normalRow) std::fill(normalRow + x, normalRow + end, vec3(0.0f));
