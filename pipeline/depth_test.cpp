@@ -34,7 +34,8 @@ struct Counts {
 
 // The depth test of one span when nothing is recorded and no depth range clips, eight
 // pixels at a time with the compiler's vector extensions (GCC and Clang). A group of eight
-// that passes whole is written without reading what was stored, one that fails whole is not
+// that passes whole is written without reading what was stored (barycentrics only when
+// baryRow is given), one that fails whole is not
 // written, and a mixed one is blended lane by lane and stored back whole. The operations are
 // those of the general loop (testSpanOf), lane by lane, so the bits are the same. Built for
 // the baseline x86-64 and for x86-64-v3 (AVX2), the better one chosen when the program
@@ -86,22 +87,23 @@ RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, floa
             const Ints8 triangle = Ints8{} + ids;
             std::memcpy(depthRow + i, &z, sizeof z);
             std::memcpy(idRow + i, &triangle, sizeof triangle);
-            std::memcpy(baryRow + 2 * i, interleaved, sizeof interleaved);
+            if (baryRow) std::memcpy(baryRow + 2 * i, interleaved, sizeof interleaved);
             continue;
         }
         if (passing == 0) continue;  // nothing to write
         Ints8 storedId;
-        Floats8 storedBary[2];
         std::memcpy(&storedId, idRow + i, sizeof storedId);
-        std::memcpy(storedBary, baryRow + 2 * i, sizeof storedBary);
         const Floats8 depth = blend(pass, z, stored);
         const Ints8 triangle = (pass & ids) | (~pass & storedId);
+        std::memcpy(depthRow + i, &depth, sizeof depth);
+        std::memcpy(idRow + i, &triangle, sizeof triangle);
+        if (!baryRow) continue;
+        Floats8 storedBary[2];
+        std::memcpy(storedBary, baryRow + 2 * i, sizeof storedBary);
         const Floats8 bary[2] = {blend(__builtin_shufflevector(pass, pass, 0, 0, 1, 1, 2, 2, 3, 3),
                                        interleaved[0], storedBary[0]),
                                  blend(__builtin_shufflevector(pass, pass, 4, 4, 5, 5, 6, 6, 7, 7),
                                        interleaved[1], storedBary[1])};
-        std::memcpy(depthRow + i, &depth, sizeof depth);
-        std::memcpy(idRow + i, &triangle, sizeof triangle);
         std::memcpy(baryRow + 2 * i, bary, sizeof bary);
     }
     std::size_t passed = 0;
@@ -114,8 +116,10 @@ RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, floa
         if (z < depthRow[i] || (winsOnTie && z == depthRow[i])) {
             depthRow[i] = z;
             idRow[i] = id;
-            baryRow[2 * i] = beta;
-            baryRow[2 * i + 1] = gamma;
+            if (baryRow) {
+                baryRow[2 * i] = beta;
+                baryRow[2 * i + 1] = gamma;
+            }
             ++passed;
         }
     }
@@ -175,8 +179,9 @@ void testSpanOf(const Scene& scene, const TriangleSetup& setup, std::uint32_t id
     if constexpr (!Probe::enabled) {
         if (!rangeClip) {
             counts.passed +=
-                testSpan(depthRow + span.xBegin, idRow + span.xBegin, &baryRow[span.xBegin].x, n,
-                         beta0, betaDx, gamma0, gammaDx, z0, dz1, dz2, id, winsOnTie, reciprocal);
+                testSpan(depthRow + span.xBegin, idRow + span.xBegin,
+                         out.barycentricsKept ? &baryRow[span.xBegin].x : nullptr, n, beta0, betaDx,
+                         gamma0, gammaDx, z0, dz1, dz2, id, winsOnTie, reciprocal);
             return;
         }
     }
@@ -312,6 +317,11 @@ DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
         out.barycentric = std::move(recycled->barycentric);
     }
     out.clearedTo = clear;
+    // Flat shading reads no barycentrics (one colour per triangle): when every draw is flat
+    // they are not written. A recording probe's frame keeps them for its log.
+    out.barycentricsKept = Probe::enabled || scene.draws.empty();
+    for (const Draw& draw : scene.draws)
+        out.barycentricsKept = out.barycentricsKept || draw.shading != ShadingModel::Flat;
     std::vector<Counts> counts;
     if constexpr (Probe::enabled) {
         // A recording probe sees the events in triangle order: one thread.

@@ -27,11 +27,13 @@ namespace rl {
 inline constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
 
 struct DepthTest {
-    Image<float> depth;                 // the clear value where nothing was drawn
-    Image<std::uint32_t> triangle;      // index into Projection::triangles, or kNoTriangle
+    Image<float> depth;             // the clear value where nothing was drawn
+    Image<std::uint32_t> triangle;  // index into Projection::triangles, or kNoTriangle
     // (beta, gamma) of the winning fragment, alpha = 1 - beta - gamma; meaningful only where
-    // triangle holds one (elsewhere, what an earlier frame in these buffers left).
+    // triangle holds one (elsewhere, what an earlier frame in these buffers left), and only
+    // when barycentricsKept (not when every draw is flat: nothing reads them then).
     Image<vec2> barycentric;
+    bool barycentricsKept = true;
     std::size_t fragments = 0;          // tested
     std::size_t passed = 0;             // written (including those overwritten later)
     std::size_t rejected = 0;           // farther than (or as far as) what was stored

@@ -75,6 +75,7 @@ bool sameCoveredBarycentrics(const rl::DepthTest& a, const rl::DepthTest& b) {
     if (a.triangle != b.triangle || a.barycentric.width() != b.barycentric.width() ||
         a.barycentric.height() != b.barycentric.height())
         return false;
+    if (!a.barycentricsKept || !b.barycentricsKept) return true;  // nothing to compare
     const auto& ids = a.triangle.pixels();
     for (std::size_t i = 0; i < ids.size(); ++i)
         if (ids[i] != rl::kNoTriangle && a.barycentric.pixels()[i] != b.barycentric.pixels()[i])

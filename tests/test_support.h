@@ -41,7 +41,7 @@ rl::Projection screenTriangles(const std::vector<rl::dvec2>& points,
 rl::Scene screen(int width, int height);
 
 // Whether two depth tests hold the same triangles and, where a triangle won, the same
-// barycentrics (elsewhere the buffer keeps what an earlier frame left).
+// barycentrics (elsewhere the buffer keeps what an earlier frame left), when both kept them.
 bool sameCoveredBarycentrics(const rl::DepthTest& a, const rl::DepthTest& b);
 
 // The camera of seed 000: C = (-200, -50, 300), N = (0.667, 0.172, -1), V = (0, 3, 0),
