@@ -829,9 +829,9 @@ int runAccuracy(const QStringList& arguments, QTextStream& out, QTextStream& err
                                   .arg(scene->width)
                                   .arg(scene->height)
                                   .arg(scene->triangleCount());
-        const QImage image = accuracyPlot(report.value(), title);
-        if (!image.save(parser.value(plot), "PNG")) {
-            err << parser.value(plot) << ": cannot write the plot\n";
+        QString error;
+        if (!savePng(accuracyPlot(report.value(), title), parser.value(plot), &error)) {
+            err << parser.value(plot) << ": cannot write the plot: " << error << "\n";
             return ExitBadInput;
         }
         out << "wrote " << QFileInfo(parser.value(plot)).absoluteFilePath() << " (plot)\n";
@@ -847,8 +847,9 @@ int runAccuracy(const QStringList& arguments, QTextStream& out, QTextStream& err
             name.replace(QLatin1Char('/'), QLatin1Char('-')).replace(lit(" "), QString());
             const QString path = folder.filePath(lit("error-%1.png").arg(name));
             // One scale for every mode: 0 to 8 byte steps, larger errors white.
-            if (!errorHeatMap(row.errorMap, 8.0f / 255.0f).save(path, "PNG")) {
-                err << path << ": cannot write the heat map\n";
+            QString error;
+            if (!savePng(errorHeatMap(row.errorMap, 8.0f / 255.0f), path, &error)) {
+                err << path << ": cannot write the heat map: " << error << "\n";
                 return ExitBadInput;
             }
             out << "wrote " << QFileInfo(path).absoluteFilePath() << " (heat map)\n";
