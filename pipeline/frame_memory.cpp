@@ -1,5 +1,9 @@
 #include "frame_memory.h"
 
+// Any C library header defines __GLIBC__ (through <features.h>); without one the test below
+// would be false and the settings silently left out.
+#include <cstdlib>
+
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif

@@ -5,10 +5,26 @@
 // culling leaves out.
 #include <QtTest>
 
+#include <cstdlib>
+#include <cstring>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
+// Sanitizers bring their own allocator, which has none of the C library's settings.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define RL_OWN_ALLOCATOR 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define RL_OWN_ALLOCATOR 1
+#endif
+#endif
+
 #include "benchmark_scenes.h"
 #include "command_file.h"
 #include "course_scene.h"
 #include "default_scene_resource.h"
+#include "frame_memory.h"
 #include "mesh_topology.h"
 #include "renderer.h"
 #include "test_support.h"
@@ -83,6 +99,30 @@ class TestFastPaths : public QObject {
     Q_OBJECT
 
 private slots:
+    void frameMemoryIsKept() {
+#if defined(RL_OWN_ALLOCATOR)
+        QSKIP("a sanitizer's allocator replaces the C library's");
+#elif defined(__GLIBC__)
+        // After keepFrameMemory, an array of 8 MiB comes from the heap (not a fresh mapping,
+        // as above 128 KiB by default), and freeing it leaves the heap as large as it was:
+        // the next frame's arrays reuse those pages instead of faulting in new ones.
+        keepFrameMemory();
+        const struct mallinfo2 before = mallinfo2();
+        void* block = std::malloc(std::size_t(8) << 20);
+        QVERIFY(block);
+        std::memset(block, 1, std::size_t(8) << 20);
+        const struct mallinfo2 held = mallinfo2();
+        QCOMPARE(held.hblkhd, before.hblkhd);  // not mapped on its own
+        QVERIFY(held.arena >= before.arena + (std::size_t(8) << 20) - 4096 ||
+                held.arena >= (std::size_t(8) << 20));
+        std::free(block);
+        const struct mallinfo2 after = mallinfo2();
+        QCOMPARE(after.arena, held.arena);  // the heap's top is not trimmed
+#else
+        QSKIP("only the GNU C library has these settings");
+#endif
+    }
+
     void fastPathsEqualThePlainRender_data() {
         QTest::addColumn<std::shared_ptr<const Scene>>("scene");
         for (auto [name, model] :
