@@ -44,6 +44,26 @@ RL_LANES Floats squareRoot(const Floats& v) {
     return r;
 }
 
+// Whether any lane of a mask is set.
+RL_LANES bool anyLane(const Ints& mask) {
+    Ints folded = mask;
+    for (int i = 1; i < kLanes; ++i) folded[0] |= mask[i];
+    return folded[0] != 0;
+}
+
+// Eight (r, g, b) triples written as 24 consecutive floats (three vector stores).
+RL_LANES void storeInterleaved(const Floats& r, const Floats& g, const Floats& b, float* out) {
+    const Floats rg0 = __builtin_shufflevector(r, g, 0, 8, 0, 1, 9, 1, 2, 10);
+    const Floats rg1 = __builtin_shufflevector(r, g, 2, 3, 11, 3, 4, 12, 4, 5);
+    const Floats rg2 = __builtin_shufflevector(r, g, 13, 5, 6, 14, 6, 7, 15, 7);
+    const Floats out0 = __builtin_shufflevector(rg0, b, 0, 1, 8, 3, 4, 9, 6, 7);
+    const Floats out1 = __builtin_shufflevector(rg1, b, 10, 1, 2, 11, 4, 5, 12, 7);
+    const Floats out2 = __builtin_shufflevector(rg2, b, 0, 13, 2, 3, 14, 5, 6, 15);
+    std::memcpy(out, &out0, sizeof out0);
+    std::memcpy(out + kLanes, &out1, sizeof out1);
+    std::memcpy(out + 2 * kLanes, &out2, sizeof out2);
+}
+
 // fast_pow.h's fastLog2, fastExp2 and fastPow, lane by lane.
 RL_LANES Floats log2Lanes(const Floats& x) {
     const Floats smallest = splat(1.17549435e-38f);
@@ -87,9 +107,18 @@ RL_MULTIVERSION void shadeCoursePhongRun(const CoursePhongRun& run, const vec2* 
     for (int start = 0; start < count; start += kLanes) {
         const int n = count - start < kLanes ? count - start : kLanes;
         Floats beta, gamma;
-        for (int i = 0; i < kLanes; ++i) {  // lanes past the run repeat its first pixel
-            beta[i] = bary[start + (i < n ? i : 0)].x;
-            gamma[i] = bary[start + (i < n ? i : 0)].y;
+        if (n == kLanes) {
+            // Two loads of four (beta, gamma) pairs, split into betas and gammas.
+            Floats low, high;
+            std::memcpy(&low, &bary[start].x, sizeof low);
+            std::memcpy(&high, &bary[start + kLanes / 2].x, sizeof high);
+            beta = __builtin_shufflevector(low, high, 0, 2, 4, 6, 8, 10, 12, 14);
+            gamma = __builtin_shufflevector(low, high, 1, 3, 5, 7, 9, 11, 13, 15);
+        } else {
+            for (int i = 0; i < kLanes; ++i) {  // lanes past the run repeat its first pixel
+                beta[i] = bary[start + (i < n ? i : 0)].x;
+                gamma[i] = bary[start + (i < n ? i : 0)].y;
+            }
         }
         // P' and N, as interpolate() writes them: (a + beta d1) + gamma d2.
         const Floats px = (run.p0.x + beta * run.dp1.x) + gamma * run.dp2.x;
@@ -130,9 +159,10 @@ RL_MULTIVERSION void shadeCoursePhongRun(const CoursePhongRun& run, const vec2* 
         const Floats rx = twice * nx - lx, ry = twice * ny - ly, rz = twice * nz - lz;
         const Floats rDotV = (rx * vx + ry * vy) + rz * vz;
         const Ints highlight = lit & withSpecular & (rDotV >= 0.0f);
-        // No specular work at all when ks = 0.
+        // No specular work at all when ks = 0, nor for eight pixels none of which has a
+        // highlight (the light behind them, or R turned away from V).
         const Floats power =
-            run.withSpecular
+            anyLane(highlight)
                 ? select(highlight,
                          powLanes(select(rDotV > 0.0f, rDotV, splat(0.0f)), run.shininess),
                          splat(0.0f))
@@ -155,7 +185,11 @@ RL_MULTIVERSION void shadeCoursePhongRun(const CoursePhongRun& run, const vec2* 
         noSpecularSum += valid & lit & (rDotV < 0.0f);
         noNormalSum += valid & ~hasN;
         clampedSum += valid & ((r > clampScale) | (g > clampScale) | (b > clampScale));
-        for (int i = 0; i < n; ++i) colour[start + i] = vec3(r[i], g[i], b[i]);
+        if (n == kLanes) {
+            storeInterleaved(r, g, b, &colour[start].x);
+        } else {
+            for (int i = 0; i < n; ++i) colour[start + i] = vec3(r[i], g[i], b[i]);
+        }
         if (normal) {
             for (int i = 0; i < n; ++i)
                 normal[start + i] = hasN[i] ? vec3(nx[i], ny[i], nz[i]) : vec3(0.0f);
