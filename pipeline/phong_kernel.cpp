@@ -204,4 +204,41 @@ RL_MULTIVERSION void shadeCoursePhongRun(const CoursePhongRun& run, const vec2* 
     }
 }
 
+RL_MULTIVERSION std::size_t shadeGouraudRun(const vec3& c0, const vec3& d1, const vec3& d2,
+                                            const vec2* bary, int count, vec3* colour,
+                                            float clampScale) {
+    Ints clampedSum = splat(0);
+    int start = 0;
+    for (; start + kLanes <= count; start += kLanes) {
+        Floats low, high;
+        std::memcpy(&low, &bary[start].x, sizeof low);
+        std::memcpy(&high, &bary[start + kLanes / 2].x, sizeof high);
+        const Floats beta = __builtin_shufflevector(low, high, 0, 2, 4, 6, 8, 10, 12, 14);
+        const Floats gamma = __builtin_shufflevector(low, high, 1, 3, 5, 7, 9, 11, 13, 15);
+        const Floats r = (c0.r + beta * d1.r) + gamma * d2.r;
+        const Floats g = (c0.g + beta * d1.g) + gamma * d2.g;
+        const Floats b = (c0.b + beta * d1.b) + gamma * d2.b;
+        storeInterleaved(r, g, b, &colour[start].x);
+        clampedSum += (r > clampScale) | (g > clampScale) | (b > clampScale);
+    }
+    std::size_t clamped = 0;
+    for (int i = 0; i < kLanes; ++i) clamped += static_cast<std::size_t>(-clampedSum[i]);
+    for (; start < count; ++start) {
+        const float beta = bary[start].x, gamma = bary[start].y;
+        const float r = (c0.r + beta * d1.r) + gamma * d2.r;
+        const float g = (c0.g + beta * d1.g) + gamma * d2.g;
+        const float b = (c0.b + beta * d1.b) + gamma * d2.b;
+        colour[start] = vec3(r, g, b);
+        clamped += ((r > clampScale) | (g > clampScale) | (b > clampScale)) ? 1u : 0u;
+    }
+    return clamped;
+}
+
+RL_MULTIVERSION void fillColourRun(const vec3& colour, int count, vec3* out) {
+    const Floats r = splat(colour.r), g = splat(colour.g), b = splat(colour.b);
+    int start = 0;
+    for (; start + kLanes <= count; start += kLanes) storeInterleaved(r, g, b, &out[start].x);
+    for (; start < count; ++start) out[start] = colour;
+}
+
 }  // namespace rl

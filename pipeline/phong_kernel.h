@@ -35,4 +35,13 @@ struct CoursePhongCounts {
 void shadeCoursePhongRun(const CoursePhongRun& run, const vec2* bary, int count, vec3* colour,
                          vec3* normal, float clampScale, CoursePhongCounts& counts);
 
+// Gouraud's colours for a run of pixels, (c0 + beta d1) + gamma d2 with the barycentrics
+// bary[i] = (beta, gamma), into colour[i] (the same bits as interpolate()); returns how many
+// are above the colour scale.
+std::size_t shadeGouraudRun(const vec3& c0, const vec3& d1, const vec3& d2, const vec2* bary,
+                            int count, vec3* colour, float clampScale);
+
+// out[i] = colour for i < count (a flat run, or the background), eight pixels a store.
+void fillColourRun(const vec3& colour, int count, vec3* out);
+
 }  // namespace rl

@@ -115,22 +115,6 @@ int runEnd(const std::uint32_t* ids, int from, int limit, std::uint32_t t) {
     return end;
 }
 
-// Gouraud's colours for a run of pixels; returns how many are above the colour scale.
-// Plain loops over separate channels, so that the compiler runs them on several lanes.
-RL_MULTIVERSION std::size_t gouraudRun(const vec3& c0, const vec3& d1, const vec3& d2,
-                                       const vec2* bary, int count, vec3* colour, float scale) {
-    std::size_t clamped = 0;
-    for (int i = 0; i < count; ++i) {
-        const float beta = bary[i].x, gamma = bary[i].y;
-        const float r = (c0.r + beta * d1.r) + gamma * d2.r;
-        const float g = (c0.g + beta * d1.g) + gamma * d2.g;
-        const float b = (c0.b + beta * d1.b) + gamma * d2.b;
-        colour[i] = vec3(r, g, b);
-        clamped += ((r > scale) | (g > scale) | (b > scale)) ? 1u : 0u;
-    }
-    return clamped;
-}
-
 void count(Shading& out, const PhongSample& s) {
     ++out.phongEvaluations;
     out.flipped += s.flipped ? 1 : 0;
@@ -260,8 +244,12 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                                             ? depth.touched[static_cast<std::size_t>(y / kRowChunk)]
                                             : ColumnRange{0, scene.width};
             const std::uint32_t* idRow = depth.triangle.row(y);
-            for (int x = columns.begin; x < columns.end; ++x)
-                if (idRow[x] != kNoTriangle) visible[idRow[x]] = 1;
+            // A run of one triangle's pixels at a time.
+            for (int x = columns.begin; x < columns.end;) {
+                const std::uint32_t t = idRow[x];
+                if (t != kNoTriangle) visible[t] = 1;
+                x = runEnd(idRow, x + 1, columns.end, t);
+            }
         }
         // Gouraud: a projected vertex's colour; a vertex made by clipping takes the colour
         // interpolated along its edge, as if clipping had happened after vertex lighting.
@@ -353,7 +341,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                 // A run of pixels won by one triangle (or by none): its set-up is done once.
                 const int end = runEnd(idRow, x + 1, columns.end, t);
                 if (t == kNoTriangle) {
-                    std::fill(colourRow + x, colourRow + end, background);
+                    fillColourRun(background, end - x, colourRow + x);
                     if (normalRow) std::fill(normalRow + x, normalRow + end, vec3(0.0f));
                     x = end;
                     continue;
@@ -407,7 +395,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                     if (draw.shading == ShadingModel::Flat && !normalRow) {
                         // One colour for the whole run.
                         const vec3 colour = table.flatColour[tri.source];
-                        std::fill(colourRow + x, colourRow + end, colour);
+                        fillColourRun(colour, end - x, colourRow + x);
                         const auto n = static_cast<std::size_t>(end - x);
                         counts.shadedPixels += n;
                         if (colour.r > scale || colour.g > scale || colour.b > scale)
@@ -421,7 +409,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                         const vec3 d1 = table.vertexColour[tri.v[1]] - c0;
                         const vec3 d2 = table.vertexColour[tri.v[2]] - c0;
                         counts.clampedPixels +=
-                            gouraudRun(c0, d1, d2, baryRow + x, end - x, colourRow + x, scale);
+                            shadeGouraudRun(c0, d1, d2, baryRow + x, end - x, colourRow + x, scale);
                         counts.shadedPixels += static_cast<std::size_t>(end - x);
                         x = end;
                         continue;
