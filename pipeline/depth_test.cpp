@@ -44,6 +44,8 @@ typedef double Doubles4 __attribute__((vector_size(32)));
 typedef float Floats4 __attribute__((vector_size(16)));
 typedef float Floats8 __attribute__((vector_size(32)));
 typedef std::int32_t Ints8 __attribute__((vector_size(32)));
+typedef std::int32_t Ints4 __attribute__((vector_size(16)));
+typedef std::uint64_t Words2 __attribute__((vector_size(16)));
 
 // Lanes where mask is set take a, the others b. Always inlined into testSpan's builds, so no
 // vector is passed between functions (the AVX calling-convention warning does not apply).
@@ -77,20 +79,26 @@ RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, floa
         std::memcpy(&stored, depthRow + i, sizeof stored);
         const Ints8 pass = (z < stored) | (tie & (z == stored));
         passes += pass;
-        const Floats8 interleaved[2] = {
-            __builtin_shufflevector(beta, gamma, 0, 8, 1, 9, 2, 10, 3, 11),
-            __builtin_shufflevector(beta, gamma, 4, 12, 5, 13, 6, 14, 7, 15)};
-        int passing = 0;
-        for (int lane = 0; lane < 8; ++lane) passing += pass[lane] ? 1 : 0;
-        if (passing == 8) {
+        const Floats8 interleaved0 = __builtin_shufflevector(beta, gamma, 0, 8, 1, 9, 2, 10, 3, 11);
+        const Floats8 interleaved1 =
+            __builtin_shufflevector(beta, gamma, 4, 12, 5, 13, 6, 14, 7, 15);
+        // Whether every lane passes, or none: the halves folded into two 64-bit words.
+        const Ints4 passLow = __builtin_shufflevector(pass, pass, 0, 1, 2, 3);
+        const Ints4 passHigh = __builtin_shufflevector(pass, pass, 4, 5, 6, 7);
+        const Words2 both = reinterpret_cast<Words2>(passLow & passHigh);
+        const Words2 either = reinterpret_cast<Words2>(passLow | passHigh);
+        if ((both[0] & both[1]) == ~std::uint64_t{0}) {
             // Every lane passes (no overdraw here): the stored values are not needed.
             const Ints8 triangle = Ints8{} + ids;
             std::memcpy(depthRow + i, &z, sizeof z);
             std::memcpy(idRow + i, &triangle, sizeof triangle);
-            if (baryRow) std::memcpy(baryRow + 2 * i, interleaved, sizeof interleaved);
+            if (baryRow) {
+                std::memcpy(baryRow + 2 * i, &interleaved0, sizeof interleaved0);
+                std::memcpy(baryRow + 2 * i + 8, &interleaved1, sizeof interleaved1);
+            }
             continue;
         }
-        if (passing == 0) continue;  // nothing to write
+        if ((either[0] | either[1]) == 0) continue;  // nothing to write
         Ints8 storedId;
         std::memcpy(&storedId, idRow + i, sizeof storedId);
         const Floats8 depth = blend(pass, z, stored);
@@ -98,13 +106,15 @@ RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, floa
         std::memcpy(depthRow + i, &depth, sizeof depth);
         std::memcpy(idRow + i, &triangle, sizeof triangle);
         if (!baryRow) continue;
-        Floats8 storedBary[2];
-        std::memcpy(storedBary, baryRow + 2 * i, sizeof storedBary);
-        const Floats8 bary[2] = {blend(__builtin_shufflevector(pass, pass, 0, 0, 1, 1, 2, 2, 3, 3),
-                                       interleaved[0], storedBary[0]),
-                                 blend(__builtin_shufflevector(pass, pass, 4, 4, 5, 5, 6, 6, 7, 7),
-                                       interleaved[1], storedBary[1])};
-        std::memcpy(baryRow + 2 * i, bary, sizeof bary);
+        Floats8 stored0, stored1;
+        std::memcpy(&stored0, baryRow + 2 * i, sizeof stored0);
+        std::memcpy(&stored1, baryRow + 2 * i + 8, sizeof stored1);
+        const Floats8 bary0 =
+            blend(__builtin_shufflevector(pass, pass, 0, 0, 1, 1, 2, 2, 3, 3), interleaved0, stored0);
+        const Floats8 bary1 =
+            blend(__builtin_shufflevector(pass, pass, 4, 4, 5, 5, 6, 6, 7, 7), interleaved1, stored1);
+        std::memcpy(baryRow + 2 * i, &bary0, sizeof bary0);
+        std::memcpy(baryRow + 2 * i + 8, &bary1, sizeof bary1);
     }
     std::size_t passed = 0;
     for (int lane = 0; lane < 8; ++lane) passed += static_cast<std::size_t>(-passes[lane]);

@@ -46,9 +46,10 @@ RL_LANES Floats squareRoot(const Floats& v) {
 
 // Whether any lane of a mask is set.
 RL_LANES bool anyLane(const Ints& mask) {
-    Ints folded = mask;
-    for (int i = 1; i < kLanes; ++i) folded[0] |= mask[i];
-    return folded[0] != 0;
+    typedef std::uint64_t Words2 __attribute__((vector_size(16)));
+    const Words2 either = reinterpret_cast<Words2>(__builtin_shufflevector(mask, mask, 0, 1, 2, 3) |
+                                                   __builtin_shufflevector(mask, mask, 4, 5, 6, 7));
+    return (either[0] | either[1]) != 0;
 }
 
 // Eight (r, g, b) triples written as 24 consecutive floats (three vector stores).
