@@ -1,6 +1,7 @@
 #include "depth_test.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <optional>
 
@@ -303,6 +304,20 @@ Counts testChunks(const Scene& scene, const Projection& projection, const ScanCo
             }
             testSpanOf(scene, *setup, current, scan.spans[entry.span], out, counts, probe);
         }
+        if (!out.visible.empty() && touched.begin < touched.end) {
+            // The triangles that kept a pixel of this chunk, a run of one id at a time. Two
+            // threads may mark the same triangle: relaxed atomic stores of the same value.
+            for (int y = y0; y < y1; ++y) {
+                const std::uint32_t* ids = out.triangle.row(y);
+                for (int x = touched.begin; x < touched.end;) {
+                    const std::uint32_t t = ids[x];
+                    if (t != kNoTriangle)
+                        std::atomic_ref<std::uint8_t>(out.visible[t]).store(
+                            1, std::memory_order_relaxed);
+                    x = runEnd(ids, x + 1, touched.end, t);
+                }
+            }
+        }
     }
     return counts;
 }
@@ -325,6 +340,7 @@ DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
         out.depth = std::move(recycled->depth);
         out.triangle = std::move(recycled->triangle);
         out.barycentric = std::move(recycled->barycentric);
+        out.visible = std::move(recycled->visible);
     }
     out.clearedTo = clear;
     // Flat shading reads no barycentrics (one colour per triangle): when every draw is flat
@@ -345,6 +361,13 @@ DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
         out.triangle.resize(scene.width, scene.height);
         out.barycentric.resize(scene.width, scene.height);
         out.touched.assign(static_cast<std::size_t>(chunks), ColumnRange{});
+        bool perTriangle = false;
+        for (const Draw& draw : scene.draws)
+            perTriangle = perTriangle || draw.shading != ShadingModel::Phong;
+        if (perTriangle)
+            out.visible.assign(projection.triangles.size(), 0);
+        else
+            out.visible.clear();
         const int parts = std::max(1, std::min(threads, scene.height));
         counts.resize(static_cast<std::size_t>(parts));
         runParts(parts, [&](int part) {

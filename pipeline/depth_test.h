@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include "image.h"
@@ -44,9 +45,30 @@ struct DepthTest {
     // only those columns (a small object on a large screen leaves most of it alone).
     std::vector<ColumnRange> touched;
     float clearedTo = 0.0f;  // the clear value of the untouched pixels
+    // Per projected triangle, 1 where it holds a pixel at the end (won the depth test
+    // somewhere and kept it): the triangles flat and Gouraud shading evaluate. Worked out
+    // chunk by chunk while the chunk is in the cache, only when some draw is flat or
+    // Gouraud and nothing records; empty otherwise.
+    std::vector<std::uint8_t> visible;
 
     std::size_t coveredPixels() const;
 };
+
+// The end of the run of pixels from `from` on whose triangle is t (at most `limit`): two ids
+// compared at once while they can be.
+inline int runEnd(const std::uint32_t* ids, int from, int limit, std::uint32_t t) {
+    const std::uint64_t pair = (std::uint64_t(t) << 32) | t;
+    int end = from;
+    while (end + 4 <= limit) {
+        std::uint64_t a, b;
+        std::memcpy(&a, ids + end, sizeof a);
+        std::memcpy(&b, ids + end + 2, sizeof b);
+        if ((a ^ pair) | (b ^ pair)) break;
+        end += 4;
+    }
+    while (end < limit && ids[end] == t) ++end;
+    return end;
+}
 
 class DepthTestStage {
 public:

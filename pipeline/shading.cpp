@@ -99,22 +99,6 @@ vec3 orientedNormal(const vec3& n, const vec3& pView, bool flip) {
     return flip && glm::dot(-pView, unit) < 0.0f ? -unit : unit;
 }
 
-// The end of the run of pixels from `from` on whose triangle is t (at most `limit`): two ids
-// compared at once while they can be.
-int runEnd(const std::uint32_t* ids, int from, int limit, std::uint32_t t) {
-    const std::uint64_t pair = (std::uint64_t(t) << 32) | t;
-    int end = from;
-    while (end + 4 <= limit) {
-        std::uint64_t a, b;
-        std::memcpy(&a, ids + end, sizeof a);
-        std::memcpy(&b, ids + end + 2, sizeof b);
-        if ((a ^ pair) | (b ^ pair)) break;
-        end += 4;
-    }
-    while (end < limit && ids[end] == t) ++end;
-    return end;
-}
-
 void count(Shading& out, const PhongSample& s) {
     ++out.phongEvaluations;
     out.flipped += s.flipped ? 1 : 0;
@@ -237,9 +221,14 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
     for (const Draw& draw : scene.draws)
         anyPerTriangle = anyPerTriangle || draw.shading != ShadingModel::Phong;
     if (anyPerTriangle) {
-        std::vector<std::uint8_t> visible(projection.triangles.size(), 0);
+        // The triangles that kept a pixel: from the depth test when it worked them out,
+        // otherwise found here.
+        std::vector<std::uint8_t> found;
+        const bool known = depth.visible.size() == projection.triangles.size();
+        if (!known) found.assign(projection.triangles.size(), 0);
+        const std::vector<std::uint8_t>& visible = known ? depth.visible : found;
         const bool touchedKnown = depth.touched.size() == static_cast<std::size_t>(chunks);
-        for (int y = 0; y < scene.height; ++y) {
+        for (int y = 0; !known && y < scene.height; ++y) {
             const ColumnRange columns = touchedKnown
                                             ? depth.touched[static_cast<std::size_t>(y / kRowChunk)]
                                             : ColumnRange{0, scene.width};
@@ -247,7 +236,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
             // A run of one triangle's pixels at a time.
             for (int x = columns.begin; x < columns.end;) {
                 const std::uint32_t t = idRow[x];
-                if (t != kNoTriangle) visible[t] = 1;
+                if (t != kNoTriangle) found[t] = 1;
                 x = runEnd(idRow, x + 1, columns.end, t);
             }
         }
