@@ -81,7 +81,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
         const int parts = count < 4096 ? 1 : std::max(1, threads);
         std::vector<double> partMax(static_cast<std::size_t>(parts), 0.0);
         runParts(parts, [&](int part) {
-            double& most = partMax[static_cast<std::size_t>(part)];
+            double most = 0.0;  // on the thread's stack, not beside the other threads'
             for (std::size_t i = rangeBegin(count, part, parts),
                              end = rangeBegin(count, part + 1, parts);
                  i < end; ++i) {
@@ -89,6 +89,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                 const double w = proj.pClip[i].w;
                 if (w > most && isFinite(w)) most = w;
             }
+            partMax[static_cast<std::size_t>(part)] = most;
         });
         for (double most : partMax) wMax = std::max(wMax, most);
     }

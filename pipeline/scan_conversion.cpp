@@ -246,10 +246,14 @@ ScanConversion ScanConversionStage::run(const Scene& scene, const Projection& pr
     }
     std::vector<ScanConversion> partial(static_cast<std::size_t>(parts));
     runParts(parts, [&](int part) {
+        // Filled on the thread's own stack and moved out at the end: the counters and the
+        // vectors' ends, updated for every triangle, would otherwise share a cache line with
+        // the other threads' (1M-triangle sphere, 2 threads: scan conversion 56 -> 24 ms).
         NullProbe none;
+        ScanConversion mine;
         scanTriangles(scene, projection, rangeBegin(count, part, parts),
-                      rangeBegin(count, part + 1, parts), partial[static_cast<std::size_t>(part)],
-                      none);
+                      rangeBegin(count, part + 1, parts), mine, none);
+        partial[static_cast<std::size_t>(part)] = std::move(mine);
     });
     std::size_t spans = 0;
     for (const ScanConversion& p : partial) spans += p.spans.size();

@@ -297,7 +297,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
     const int parts = Probe::enabled ? 1 : std::max(1, std::min(threads, scene.height));
     std::vector<Shading> partCounts(static_cast<std::size_t>(parts));
     runParts(parts, [&](int part) {
-        Shading& counts = partCounts[static_cast<std::size_t>(part)];
+        Shading counts;  // on the thread's stack, not beside the other threads' counters
         const float scale = conv.colourScale;
         for (int y = 0; y < scene.height; ++y) {
             if (parts > 1 && !ownsRow(y, part, parts)) continue;
@@ -479,6 +479,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                 }
             }
         }
+        partCounts[static_cast<std::size_t>(part)] = std::move(counts);
     });
     for (const Shading& c : partCounts) {
         out.shadedPixels += c.shadedPixels;
