@@ -240,30 +240,10 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                 x = runEnd(idRow, x + 1, columns.end, t);
             }
         }
-        // Gouraud: a projected vertex's colour; a vertex made by clipping takes the colour
-        // interpolated along its edge, as if clipping had happened after vertex lighting.
-        const auto vertexColour = [&](std::uint32_t d, std::uint32_t v, const auto& self) -> vec3 {
-            DrawTables& table = tables[d];
-            if (table.done[v]) return table.vertexColour[v];
-            const DrawProjection& proj = projection.draws[d];
-            const Draw& draw = scene.draws[d];
-            const DrawVertices& dv = vertices[d];
-            vec3 colour;
-            if (v >= proj.originalVertexCount) {
-                const ClipVertex& g = proj.generated[v - proj.originalVertexCount];
-                colour = glm::mix(self(d, g.a, self), self(d, g.b, self), static_cast<float>(g.t));
-            } else {
-                const ScreenTriangle at{d, 0, {v, v, v}};
-                const PhongSample sample = light(draw, objectColour(draw, dv, at, 0.0f, 0.0f),
-                                                 dv.pView.empty() ? vec3(0.0f) : dv.pView[v],
-                                                 dv.nView.empty() ? vec3(0.0f) : dv.nView[v]);
-                count(out, sample);
-                colour = sample.colour();
-            }
-            table.vertexColour[v] = colour;
-            table.done[v] = 1;
-            return colour;
-        };
+        // Which flat triangles and Gouraud vertices are needed (done = kNeeded), then their
+        // colours, the independent ones shared out between the threads, then the vertices
+        // made by clipping, from the colours of their edge's ends.
+        constexpr std::uint8_t kNeeded = 1, kDone = 2;
         for (std::size_t t = 0; t < projection.triangles.size(); ++t) {
             if (!visible[t]) continue;
             const ScreenTriangle& tri = projection.triangles[t];
@@ -275,21 +255,88 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                     table.flatNormal.resize(draw.mesh->triangles.size());
                     table.done.assign(draw.mesh->triangles.size(), 0);
                 }
-                if (!table.done[tri.source]) {
-                    const PhongSample sample = flatSample(tri);
-                    count(out, sample);
-                    table.flatColour[tri.source] = sample.colour();
-                    table.flatNormal[tri.source] = sample.n;
-                    table.done[tri.source] = 1;
-                }
+                table.done[tri.source] = kNeeded;
             } else if (draw.shading == ShadingModel::Gouraud) {
                 if (table.done.empty()) {
                     const std::size_t n = projection.draws[tri.draw].pView.size();
                     table.vertexColour.resize(n);
                     table.done.assign(n, 0);
                 }
-                for (std::uint32_t v : tri.v) vertexColour(tri.draw, v, vertexColour);
+                for (std::uint32_t v : tri.v) table.done[v] = kNeeded;
             }
+        }
+        const auto evaluate = [&](std::size_t d, std::size_t i, Shading& counts) {
+            const Draw& draw = scene.draws[d];
+            DrawTables& table = tables[d];
+            if (draw.shading == ShadingModel::Flat) {
+                const ScreenTriangle tri{static_cast<std::uint32_t>(d),
+                                         static_cast<std::uint32_t>(i),
+                                         draw.mesh->triangles[i]};
+                const PhongSample sample = flatSample(tri);
+                count(counts, sample);
+                table.flatColour[i] = sample.colour();
+                table.flatNormal[i] = sample.n;
+            } else {
+                const auto v = static_cast<std::uint32_t>(i);
+                const DrawVertices& dv = vertices[d];
+                const ScreenTriangle at{static_cast<std::uint32_t>(d), 0, {v, v, v}};
+                const PhongSample sample = light(draw, objectColour(draw, dv, at, 0.0f, 0.0f),
+                                                 dv.pView.empty() ? vec3(0.0f) : dv.pView[v],
+                                                 dv.nView.empty() ? vec3(0.0f) : dv.nView[v]);
+                count(counts, sample);
+                table.vertexColour[v] = sample.colour();
+            }
+            table.done[i] = kDone;
+        };
+        for (std::size_t d = 0; d < tables.size(); ++d) {
+            DrawTables& table = tables[d];
+            if (table.done.empty()) continue;
+            // Flat: every triangle; Gouraud: the vertices the projection did not make.
+            const std::size_t independent = scene.draws[d].shading == ShadingModel::Flat
+                                                ? table.done.size()
+                                                : projection.draws[d].originalVertexCount;
+            const int parts = Probe::enabled || independent < 4096 ? 1 : std::max(1, threads);
+            std::vector<Shading> partCounts(static_cast<std::size_t>(parts));
+            runParts(parts, [&](int part) {
+                Shading counts;  // on the thread's stack
+                for (std::size_t i = rangeBegin(independent, part, parts),
+                                 end = rangeBegin(independent, part + 1, parts);
+                     i < end; ++i)
+                    if (table.done[i] == kNeeded) evaluate(d, i, counts);
+                partCounts[static_cast<std::size_t>(part)] = std::move(counts);
+            });
+            for (const Shading& c : partCounts) {
+                out.phongEvaluations += c.phongEvaluations;
+                out.flipped += c.flipped;
+                out.lightBehind += c.lightBehind;
+                out.noSpecular += c.noSpecular;
+                out.noNormal += c.noNormal;
+            }
+        }
+        // Gouraud, a vertex made by clipping: the colour interpolated along its edge, as if
+        // clipping had happened after vertex lighting (the ends may be made by clipping too).
+        const auto clippedColour = [&](std::size_t d, std::uint32_t v, const auto& self) -> vec3 {
+            DrawTables& table = tables[d];
+            if (table.done[v] == kDone) return table.vertexColour[v];
+            const DrawProjection& proj = projection.draws[d];
+            vec3 colour;
+            if (v >= proj.originalVertexCount) {
+                const ClipVertex& g = proj.generated[v - proj.originalVertexCount];
+                colour = glm::mix(self(d, g.a, self), self(d, g.b, self), static_cast<float>(g.t));
+            } else {
+                evaluate(d, v, out);  // an end no visible triangle uses
+                return table.vertexColour[v];
+            }
+            table.vertexColour[v] = colour;
+            table.done[v] = kDone;
+            return colour;
+        };
+        for (std::size_t d = 0; d < tables.size(); ++d) {
+            DrawTables& table = tables[d];
+            if (table.done.empty() || scene.draws[d].shading != ShadingModel::Gouraud) continue;
+            for (std::size_t v = projection.draws[d].originalVertexCount; v < table.done.size(); ++v)
+                if (table.done[v] == kNeeded)
+                    clippedColour(d, static_cast<std::uint32_t>(v), clippedColour);
         }
     }
 
