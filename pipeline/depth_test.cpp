@@ -204,17 +204,14 @@ void testSpanOf(const Scene& scene, const TriangleSetup& setup, std::uint32_t id
         if (reciprocal) z = 1.0f / z;
         if (rangeClip && !(z >= 0.0f && z <= 1.0f)) {  // per-pixel clipping (seed 001)
             ++counts.outsideDepthRange;
-            if constexpr (Probe::enabled) {
-                probe.onDepthTest(
-                    {id, x, span.y, 1.0f - beta - gamma, beta, gamma, z, depthRow[x], false, true});
-            }
+            RL_PROBE_HOOK(probe.onDepthTest(
+                {id, x, span.y, 1.0f - beta - gamma, beta, gamma, z, depthRow[x], false, true}));
             continue;
         }
         const float stored = depthRow[x];
         const bool pass = z < stored || (winsOnTie && z == stored);
-        if constexpr (Probe::enabled) {
-            probe.onDepthTest({id, x, span.y, 1.0f - beta - gamma, beta, gamma, z, stored, pass});
-        }
+        RL_PROBE_HOOK(
+            probe.onDepthTest({id, x, span.y, 1.0f - beta - gamma, beta, gamma, z, stored, pass}));
         if (pass) {
             depthRow[x] = z;
             idRow[x] = id;
@@ -241,35 +238,72 @@ Counts testAll(const Scene& scene, const Projection& projection, const ScanConve
     return counts;
 }
 
+// Every span, sorted by chunk of rows (parallel.h) and within a chunk in triangle order: the
+// spans of chunk c are entries[first[c] .. first[c + 1]).
+struct Entry {
+    std::uint32_t triangle, span;
+};
+struct SpansByChunk {
+    std::vector<Entry> entries;
+    std::vector<std::uint32_t> first;
+};
+
+// A counting sort shared out between the threads: each takes a contiguous range of
+// triangles, counts its spans per chunk, and writes them where the ranges before its own
+// end, so that triangle order is kept within every chunk.
+SpansByChunk sortByChunk(const ScanConversion& scan, int chunks, int threads) {
+    const std::size_t triangles = scan.triangleCount();
+    // Below some thousands of spans, starting threads costs more than it saves.
+    const int parts = scan.spans.size() < 32768 ? 1 : std::max(1, threads);
+    const auto chunkCount = static_cast<std::size_t>(chunks);
+    std::vector<std::vector<std::uint32_t>> next(static_cast<std::size_t>(parts));
+    runParts(parts, [&](int part) {
+        std::vector<std::uint32_t> counts(chunkCount, 0);  // on the thread's own
+        const std::uint32_t begin = scan.spanStart[rangeBegin(triangles, part, parts)];
+        const std::uint32_t end = scan.spanStart[rangeBegin(triangles, part + 1, parts)];
+        for (std::uint32_t k = begin; k < end; ++k)
+            ++counts[static_cast<std::size_t>(scan.spans[k].y / kRowChunk)];
+        next[static_cast<std::size_t>(part)] = std::move(counts);
+    });
+    SpansByChunk out;
+    out.first.assign(chunkCount + 1, 0);
+    std::uint32_t at = 0;
+    for (std::size_t c = 0; c < chunkCount; ++c) {
+        out.first[c] = at;
+        for (auto& counts : next) {  // counts become where each range's spans go
+            const std::uint32_t n = counts[c];
+            counts[c] = at;
+            at += n;
+        }
+    }
+    out.first[chunkCount] = at;
+    out.entries.resize(at);
+    runParts(parts, [&](int part) {
+        std::vector<std::uint32_t>& where = next[static_cast<std::size_t>(part)];
+        for (std::size_t t = rangeBegin(triangles, part, parts),
+                         last = rangeBegin(triangles, part + 1, parts);
+             t < last; ++t) {
+            for (std::uint32_t k = scan.spanStart[t]; k < scan.spanStart[t + 1]; ++k) {
+                const auto c = static_cast<std::size_t>(scan.spans[k].y / kRowChunk);
+                out.entries[where[c]++] = {static_cast<std::uint32_t>(t), k};
+            }
+        }
+    });
+    return out;
+}
+
 // The rows one thread owns, chunk by chunk (parallel.h): the chunk's buffers are cleared,
 // then its spans tested in triangle order, so that each chunk's pixels stay in the cache
 // while its triangles are drawn. Every pixel sees the same fragments in the same order as
 // in testAll, so the buffers are the same bits.
 Counts testChunks(const Scene& scene, const Projection& projection, const ScanConversion& scan,
-                  DepthTest& out, int part, int parts, const std::vector<ColumnRange>& previous) {
+                  const SpansByChunk& sorted, DepthTest& out, int part, int parts,
+                  const std::vector<ColumnRange>& previous) {
     Counts counts;
     NullProbe probe;
     const int chunks = (scene.height + kRowChunk - 1) / kRowChunk;
-    // This thread's spans, sorted by chunk (a counting sort, so triangle order is kept).
-    struct Entry {
-        std::uint32_t triangle, span;
-    };
-    std::vector<std::uint8_t> mine(static_cast<std::size_t>(chunks), 0);
-    for (int c = part; c < chunks; c += parts) mine[static_cast<std::size_t>(c)] = 1;
-    std::vector<std::uint32_t> start(static_cast<std::size_t>(chunks) + 1, 0);
-    for (const Span& span : scan.spans) ++start[static_cast<std::size_t>(span.y / kRowChunk) + 1];
-    for (int c = 0; c < chunks; ++c) {
-        const std::uint32_t own = mine[static_cast<std::size_t>(c)] ? start[c + 1] : 0;
-        start[c + 1] = start[c] + own;
-    }
-    std::vector<Entry> entries(start[chunks]);
-    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-    for (std::size_t t = 0; t < projection.triangles.size(); ++t) {
-        for (std::uint32_t k = scan.spanStart[t]; k < scan.spanStart[t + 1]; ++k) {
-            const auto c = static_cast<std::size_t>(scan.spans[k].y / kRowChunk);
-            if (mine[c]) entries[next[c]++] = {static_cast<std::uint32_t>(t), k};
-        }
-    }
+    const std::vector<Entry>& entries = sorted.entries;
+    const std::vector<std::uint32_t>& start = sorted.first;
     const float clear = scene.conventions.depthClear;
     for (int c = part; c < chunks; c += parts) {
         const int y0 = c * kRowChunk;
@@ -370,9 +404,10 @@ DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
             out.visible.clear();
         const int parts = std::max(1, std::min(threads, scene.height));
         counts.resize(static_cast<std::size_t>(parts));
+        const SpansByChunk sorted = sortByChunk(scan, chunks, threads);
         runParts(parts, [&](int part) {
             counts[static_cast<std::size_t>(part)] =
-                testChunks(scene, projection, scan, out, part, parts, previous);
+                testChunks(scene, projection, scan, sorted, out, part, parts, previous);
         });
     }
     for (const Counts& c : counts) {

@@ -23,6 +23,21 @@ struct NullProbe {
     static constexpr bool enabled = false;
 };
 
+// RL_PROBE_HOOK(statements): a hook of an inner loop, run only when the probe records. A
+// build configured with RASTERLAB_PROBE_HOOKS=OFF leaves every hook out, so that the
+// default build's null probe can be compared with a build that has no probes at all
+// (scripts/probe-cost.sh); its recording probe records nothing.
+#if defined(RL_NO_PROBE_HOOKS)
+#define RL_PROBE_HOOK(...) static_cast<void>(probe)
+#else
+#define RL_PROBE_HOOK(...)                  \
+    do {                                    \
+        if constexpr (Probe::enabled) {     \
+            __VA_ARGS__;                    \
+        }                                   \
+    } while (false)
+#endif
+
 struct TriangleEvent {
     std::uint32_t triangle = 0;  // index into Projection::triangles
     TriangleSetup setup;

@@ -175,7 +175,7 @@ void scanTriangles(const Scene& scene, const Projection& projection, std::size_t
         const auto triangle = static_cast<std::uint32_t>(t);
         const TriangleSetup s =
             setupTriangle(screenVertices(projection, projection.triangles[t]), scene.rules);
-        if constexpr (Probe::enabled) probe.onTriangle(triangle, s);
+        RL_PROBE_HOOK(probe.onTriangle(triangle, s));
         if (s.degenerate()) {
             ++out.degenerate;
             continue;
@@ -206,8 +206,7 @@ void scanTriangles(const Scene& scene, const Projection& projection, std::size_t
                                     static_cast<std::int32_t>(end)};
                     out.spans.push_back(span);
                     out.pixels += static_cast<std::size_t>(span.xEnd - span.xBegin);
-                    if constexpr (Probe::enabled)
-                        probe.onSpan(triangle, span, left.exactX(), right.exactX());
+                    RL_PROBE_HOOK(probe.onSpan(triangle, span, left.exactX(), right.exactX()));
                 }
                 longWalker.nextRow();
                 shortWalker.nextRow();

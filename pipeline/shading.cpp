@@ -480,17 +480,14 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                             if (draw.lighting != LightingModel::Unlit) count(counts, s);
                             colour = s.colour();
                             usedNormal = s.n;
-                            if constexpr (Probe::enabled) {
-                                event.pView = p;
-                                event.nInterpolated = n;
-                                event.sample = s;
-                            }
+                            RL_PROBE_HOOK(event.pView = p; event.nInterpolated = n;
+                                          event.sample = s);
                             break;
                         }
                         case ShadingModel::Flat: {
                             colour = table.flatColour[tri.source];
                             usedNormal = table.flatNormal[tri.source];
-                            if constexpr (Probe::enabled) event.sample = flatSample(tri);
+                            RL_PROBE_HOOK(event.sample = flatSample(tri));
                             break;
                         }
                         case ShadingModel::Gouraud: {
@@ -506,7 +503,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                                 usedNormal =
                                     orientedNormal(normalAt(draw, dv, tri, beta, gamma), p, flip);
                             }
-                            if constexpr (Probe::enabled) event.vertexColours = {c0, c1, c2};
+                            RL_PROBE_HOOK(event.vertexColours = {c0, c1, c2});
                             break;
                         }
                     }
@@ -515,14 +512,9 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                     counts.clampedPixels +=
                         (colour.r > scale || colour.g > scale || colour.b > scale) ? 1 : 0;
                     if (normalRow) normalRow[x] = usedNormal;
-                    if constexpr (Probe::enabled) {
-                        event.triangle = t;
-                        event.x = x;
-                        event.y = y;
-                        event.model = draw.shading;
-                        event.colour = colour;
-                        probe.onShade(event);
-                    }
+                    RL_PROBE_HOOK(event.triangle = t; event.x = x; event.y = y;
+                                  event.model = draw.shading; event.colour = colour;
+                                  probe.onShade(event));
                 }
             }
         }
