@@ -172,7 +172,7 @@ void scanTriangles(const Scene& scene, const Projection& projection, std::size_t
 
     for (std::size_t t = firstTriangle; t < endTriangle; ++t) {
         out.spanStart.push_back(static_cast<std::uint32_t>(out.spans.size()));
-        const auto triangle = static_cast<std::uint32_t>(t);
+        [[maybe_unused]] const auto triangle = static_cast<std::uint32_t>(t);
         const TriangleSetup s =
             setupTriangle(screenVertices(projection, projection.triangles[t]), scene.rules);
         RL_PROBE_HOOK(probe.onTriangle(triangle, s));
