@@ -110,10 +110,10 @@ RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, floa
         Floats8 stored0, stored1;
         std::memcpy(&stored0, baryRow + 2 * i, sizeof stored0);
         std::memcpy(&stored1, baryRow + 2 * i + 8, sizeof stored1);
-        const Floats8 bary0 =
-            blend(__builtin_shufflevector(pass, pass, 0, 0, 1, 1, 2, 2, 3, 3), interleaved0, stored0);
-        const Floats8 bary1 =
-            blend(__builtin_shufflevector(pass, pass, 4, 4, 5, 5, 6, 6, 7, 7), interleaved1, stored1);
+        const Floats8 bary0 = blend(__builtin_shufflevector(pass, pass, 0, 0, 1, 1, 2, 2, 3, 3),
+                                    interleaved0, stored0);
+        const Floats8 bary1 = blend(__builtin_shufflevector(pass, pass, 4, 4, 5, 5, 6, 6, 7, 7),
+                                    interleaved1, stored1);
         std::memcpy(baryRow + 2 * i, &bary0, sizeof bary0);
         std::memcpy(baryRow + 2 * i + 8, &bary1, sizeof bary1);
     }
@@ -346,8 +346,8 @@ Counts testChunks(const Scene& scene, const Projection& projection, const ScanCo
                 for (int x = touched.begin; x < touched.end;) {
                     const std::uint32_t t = ids[x];
                     if (t != kNoTriangle)
-                        std::atomic_ref<std::uint8_t>(out.visible[t]).store(
-                            1, std::memory_order_relaxed);
+                        std::atomic_ref<std::uint8_t>(out.visible[t])
+                            .store(1, std::memory_order_relaxed);
                     x = runEnd(ids, x + 1, touched.end, t);
                 }
             }

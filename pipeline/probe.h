@@ -30,11 +30,11 @@ struct NullProbe {
 #if defined(RL_NO_PROBE_HOOKS)
 #define RL_PROBE_HOOK(...) static_cast<void>(probe)
 #else
-#define RL_PROBE_HOOK(...)                  \
-    do {                                    \
-        if constexpr (Probe::enabled) {     \
-            __VA_ARGS__;                    \
-        }                                   \
+#define RL_PROBE_HOOK(...)              \
+    do {                                \
+        if constexpr (Probe::enabled) { \
+            __VA_ARGS__;                \
+        }                               \
     } while (false)
 #endif
 

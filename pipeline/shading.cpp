@@ -270,8 +270,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
             DrawTables& table = tables[d];
             if (draw.shading == ShadingModel::Flat) {
                 const ScreenTriangle tri{static_cast<std::uint32_t>(d),
-                                         static_cast<std::uint32_t>(i),
-                                         draw.mesh->triangles[i]};
+                                         static_cast<std::uint32_t>(i), draw.mesh->triangles[i]};
                 const PhongSample sample = flatSample(tri);
                 count(counts, sample);
                 table.flatColour[i] = sample.colour();
@@ -334,7 +333,8 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
         for (std::size_t d = 0; d < tables.size(); ++d) {
             DrawTables& table = tables[d];
             if (table.done.empty() || scene.draws[d].shading != ShadingModel::Gouraud) continue;
-            for (std::size_t v = projection.draws[d].originalVertexCount; v < table.done.size(); ++v)
+            for (std::size_t v = projection.draws[d].originalVertexCount; v < table.done.size();
+                 ++v)
                 if (table.done[v] == kNeeded)
                     clippedColour(d, static_cast<std::uint32_t>(v), clippedColour);
         }
