@@ -16,6 +16,7 @@
 #include "accuracy_panel.h"
 #include "frame_image_view.h"
 #include "image_io.h"
+#include "zbuffer_view.h"
 
 namespace rasterlab {
 
@@ -227,6 +228,12 @@ void MainWindow::createDocks() {
     accuracyDock->setWidget(m_accuracy);
     addDockWidget(Qt::RightDockWidgetArea, accuracyDock);
     tabifyDockWidget(sceneDock, accuracyDock);
+    auto* zbufferDock = new QDockWidget(tr("Z-buffer"), this);
+    zbufferDock->setObjectName(QStringLiteral("zbufferDock"));
+    m_zbuffer = new ZBufferView(zbufferDock);
+    zbufferDock->setWidget(m_zbuffer);
+    addDockWidget(Qt::RightDockWidgetArea, zbufferDock);
+    tabifyDockWidget(sceneDock, zbufferDock);
     sceneDock->raise();
     resizeDocks({sceneDock}, {330}, Qt::Horizontal);
     resizeDocks({messagesDock}, {130}, Qt::Vertical);
@@ -345,6 +352,7 @@ void MainWindow::updateTimeLabel() {
 void MainWindow::onFrameReady(const RenderedFrame& frame) {
     m_frame = frame;
     m_view->setImage(frame.image);
+    m_zbuffer->setFrame(frame.trace);
     updateTimeLabel();
     refreshMessages();
     refreshSceneSummary();

@@ -22,6 +22,7 @@ namespace rasterlab {
 
 class AccuracyPanel;
 class FrameImageView;
+class ZBufferView;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -48,6 +49,7 @@ public:
     QListWidget* messages() const { return m_messages; }
     RenderController* controller() const { return m_controller; }
     AccuracyPanel* accuracyPanel() const { return m_accuracy; }
+    ZBufferView* zbufferView() const { return m_zbuffer; }
 
 private:
     void createActions();
@@ -79,6 +81,7 @@ private:
     QActionGroup* m_shadingGroup = nullptr;
     QActionGroup* m_rulesGroup = nullptr;
     AccuracyPanel* m_accuracy = nullptr;
+    ZBufferView* m_zbuffer = nullptr;
     QMenu* m_shadingMenu = nullptr;
     QMenu* m_imageMenu = nullptr;
 };

@@ -450,7 +450,7 @@ void TestMainWindow::exportToMissingFolder() {
 void TestMainWindow::docks() {
     MainWindow window;
     const QList<QDockWidget*> docks = window.findChildren<QDockWidget*>();
-    QCOMPARE(docks.size(), 3);
+    QCOMPARE(docks.size(), 4);
     std::set<QString> names;
     for (const QDockWidget* dock : docks) {
         QVERIFY2(!dock->objectName().isEmpty(), qPrintable(dock->windowTitle()));
@@ -458,7 +458,8 @@ void TestMainWindow::docks() {
         names.insert(dock->objectName());
     }
     const std::set<QString> expected = {QStringLiteral("messagesDock"), QStringLiteral("sceneDock"),
-                                        QStringLiteral("accuracyDock")};
+                                        QStringLiteral("accuracyDock"),
+                                        QStringLiteral("zbufferDock")};
     QCOMPARE(names, expected);
     const auto* messagesDock = window.findChild<QDockWidget*>(QStringLiteral("messagesDock"));
     QVERIFY(messagesDock);

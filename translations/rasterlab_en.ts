@@ -67,67 +67,67 @@
         <translation>&amp;Measure</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="42"/>
+        <location filename="../app/accuracy_panel.cpp" line="43"/>
         <source>Render the scene in every mode and compare each with an exact ray-cast reference</source>
         <translation>Render the scene in every mode and compare each with an exact ray-cast reference</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="44"/>
+        <location filename="../app/accuracy_panel.cpp" line="45"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="49"/>
+        <location filename="../app/accuracy_panel.cpp" line="50"/>
         <source>1 sample a pixel</source>
         <translation>1 sample a pixel</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="50"/>
+        <location filename="../app/accuracy_panel.cpp" line="51"/>
         <source>also 2x2 samples</source>
         <translation>also 2x2 samples</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="51"/>
+        <location filename="../app/accuracy_panel.cpp" line="52"/>
         <source>also 4x4 samples</source>
         <translation>also 4x4 samples</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="56"/>
+        <location filename="../app/accuracy_panel.cpp" line="57"/>
         <source>Measures the error of each mode against an exact reference.</source>
         <translation>Measures the error of each mode against an exact reference.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="63"/>
+        <location filename="../app/accuracy_panel.cpp" line="64"/>
         <source>Mode</source>
         <translation>Mode</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="63"/>
+        <location filename="../app/accuracy_panel.cpp" line="64"/>
         <source>Rules</source>
         <translation>Rules</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="63"/>
+        <location filename="../app/accuracy_panel.cpp" line="64"/>
         <source>Precision</source>
         <translation>Precision</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="63"/>
+        <location filename="../app/accuracy_panel.cpp" line="64"/>
         <source>Samples</source>
         <translation>Samples</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="64"/>
+        <location filename="../app/accuracy_panel.cpp" line="65"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="64"/>
+        <location filename="../app/accuracy_panel.cpp" line="65"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="64"/>
+        <location filename="../app/accuracy_panel.cpp" line="65"/>
         <source>Max error</source>
         <translation>Max error</translation>
     </message>
@@ -147,12 +147,12 @@
         <translation>Click a pixel to compare the mode with the reference there</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="122"/>
+        <location filename="../app/accuracy_panel.cpp" line="120"/>
         <source>The scene changed: measure again.</source>
         <translation>The scene changed: measure again.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/accuracy_panel.cpp" line="144"/>
+        <location filename="../app/accuracy_panel.cpp" line="142"/>
         <source>Measuring %n mode(s) against the exact reference...</source>
         <translation>
             <numerusform>Measuring %n mode against the exact reference...</numerusform>
@@ -160,37 +160,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="179"/>
+        <location filename="../app/accuracy_panel.cpp" line="177"/>
         <source>Cancelled.</source>
         <translation>Cancelled.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="180"/>
+        <location filename="../app/accuracy_panel.cpp" line="178"/>
         <source>The measurement failed: %1</source>
         <translation>The measurement failed: %1</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="186"/>
+        <location filename="../app/accuracy_panel.cpp" line="184"/>
         <source>%1 at %2x%3: %4 modes; the exact reference cast %5 rays in %6 ms.</source>
         <translation>%1 at %2x%3: %4 modes; the exact reference cast %5 rays in %6 ms.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="213"/>
+        <location filename="../app/accuracy_panel.cpp" line="211"/>
         <source>Error against run time: %1, %2x%3</source>
         <translation>Error against run time: %1, %2x%3</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="260"/>
+        <location filename="../app/accuracy_panel.cpp" line="258"/>
         <source>%1 (%2): coverage differs on %3 pixels (%4); the largest error, %5 byte steps, is at (%6, %7). Click the map to compare a pixel.</source>
         <translation>%1 (%2): coverage differs on %3 pixels (%4); the largest error, %5 byte steps, is at (%6, %7). Click the map to compare a pixel.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="279"/>
+        <location filename="../app/accuracy_panel.cpp" line="277"/>
         <source>Pixel (%1, %2), %3: mode %4, reference %5, difference %6 (byte steps).</source>
         <translation>Pixel (%1, %2), %3: mode %4, reference %5, difference %6 (byte steps).</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="285"/>
+        <location filename="../app/accuracy_panel.cpp" line="283"/>
         <source>Coverage differs: %1 of %2 samples covered by the mode, %3 by the reference.</source>
         <translation>Coverage differs: %1 of %2 samples covered by the mode, %3 by the reference.</translation>
     </message>
@@ -198,431 +198,504 @@
 <context>
     <name>rasterlab::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="27"/>
+        <location filename="../app/main_window.cpp" line="28"/>
         <source>Open Camera</source>
         <translation>Open Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="29"/>
+        <location filename="../app/main_window.cpp" line="30"/>
         <source>Open Lighting</source>
         <translation>Open Lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="31"/>
+        <location filename="../app/main_window.cpp" line="32"/>
         <source>Open Object</source>
         <translation>Open Object</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="39"/>
+        <location filename="../app/main_window.cpp" line="40"/>
         <source>Camera files (*.cfg *.txt);;All files (*)</source>
         <translation>Camera files (*.cfg *.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="41"/>
+        <location filename="../app/main_window.cpp" line="42"/>
         <source>Lighting files (*.txt *.lux);;All files (*)</source>
         <translation>Lighting files (*.txt *.lux);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="43"/>
+        <location filename="../app/main_window.cpp" line="44"/>
         <source>Objects (*.byu *.txt);;All files (*)</source>
         <translation>Objects (*.byu *.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="52"/>
+        <location filename="../app/main_window.cpp" line="53"/>
         <source>Detect from the file</source>
         <translation>Detect from the file</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="58"/>
+        <location filename="../app/main_window.cpp" line="59"/>
         <source>%1 (built in)</source>
         <translation>%1 (built in)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="66"/>
+        <location filename="../app/main_window.cpp" line="67"/>
         <source>RasterLab</source>
         <translation>RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="90"/>
+        <location filename="../app/main_window.cpp" line="91"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="91"/>
+        <location filename="../app/main_window.cpp" line="92"/>
         <source>Open &amp;Object...</source>
         <translation>Open &amp;Object...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="95"/>
+        <location filename="../app/main_window.cpp" line="96"/>
         <source>Open &amp;Camera...</source>
         <translation>Open &amp;Camera...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="97"/>
+        <location filename="../app/main_window.cpp" line="98"/>
         <source>Ctrl+Shift+C</source>
         <translation>Ctrl+Shift+C</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="99"/>
+        <location filename="../app/main_window.cpp" line="100"/>
         <source>Open &amp;Lighting...</source>
         <translation>Open &amp;Lighting...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="100"/>
+        <location filename="../app/main_window.cpp" line="101"/>
         <source>Ctrl+Shift+L</source>
         <translation>Ctrl+Shift+L</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="102"/>
+        <location filename="../app/main_window.cpp" line="103"/>
         <source>Open Command &amp;File...</source>
         <translation>Open Command &amp;File...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="103"/>
+        <location filename="../app/main_window.cpp" line="104"/>
         <source>Ctrl+Shift+O</source>
         <translation>Ctrl+Shift+O</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="105"/>
+        <location filename="../app/main_window.cpp" line="106"/>
         <source>&amp;Default Scene</source>
         <translation>&amp;Default Scene</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="113"/>
+        <location filename="../app/main_window.cpp" line="114"/>
         <source>Course File &amp;Layouts</source>
         <translation>Course File &amp;Layouts</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="115"/>
+        <location filename="../app/main_window.cpp" line="116"/>
         <source>&amp;Camera</source>
         <translation>&amp;Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="127"/>
+        <location filename="../app/main_window.cpp" line="128"/>
         <source>&amp;Lighting</source>
         <translation>&amp;Lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="140"/>
+        <location filename="../app/main_window.cpp" line="141"/>
         <source>&amp;Export PNG...</source>
         <translation>&amp;Export PNG...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="141"/>
+        <location filename="../app/main_window.cpp" line="142"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="144"/>
+        <location filename="../app/main_window.cpp" line="145"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="147"/>
+        <location filename="../app/main_window.cpp" line="148"/>
         <source>&amp;View</source>
         <translation>&amp;View</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="148"/>
+        <location filename="../app/main_window.cpp" line="149"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Fit to Window</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="149"/>
+        <location filename="../app/main_window.cpp" line="150"/>
         <source>Ctrl+0</source>
         <translation>Ctrl+0</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="151"/>
+        <location filename="../app/main_window.cpp" line="152"/>
         <source>&amp;Actual Size</source>
         <translation>&amp;Actual Size</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="152"/>
+        <location filename="../app/main_window.cpp" line="153"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="153"/>
+        <location filename="../app/main_window.cpp" line="154"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;In</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="155"/>
+        <location filename="../app/main_window.cpp" line="156"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom &amp;Out</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="162"/>
+        <location filename="../app/main_window.cpp" line="163"/>
         <source>&amp;Image</source>
         <translation>&amp;Image</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="165"/>
+        <location filename="../app/main_window.cpp" line="166"/>
         <source>&amp;Shading</source>
         <translation>&amp;Shading</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="169"/>
+        <location filename="../app/main_window.cpp" line="170"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (per pixel)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="170"/>
+        <location filename="../app/main_window.cpp" line="171"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (per vertex)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="171"/>
+        <location filename="../app/main_window.cpp" line="172"/>
         <source>&amp;Flat (per triangle)</source>
         <translation>&amp;Flat (per triangle)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="178"/>
+        <location filename="../app/main_window.cpp" line="179"/>
         <source>Alt+%1</source>
         <translation>Alt+%1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="185"/>
+        <location filename="../app/main_window.cpp" line="186"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Rasterization Rules</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="189"/>
+        <location filename="../app/main_window.cpp" line="190"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="191"/>
+        <location filename="../app/main_window.cpp" line="192"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="193"/>
+        <location filename="../app/main_window.cpp" line="194"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (seed 001&apos;s reference images)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="205"/>
+        <location filename="../app/main_window.cpp" line="206"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="206"/>
+        <location filename="../app/main_window.cpp" line="207"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="210"/>
+        <location filename="../app/main_window.cpp" line="211"/>
         <source>Messages</source>
         <translation>Messages</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="218"/>
+        <location filename="../app/main_window.cpp" line="219"/>
         <source>Scene</source>
         <translation>Scene</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="224"/>
+        <location filename="../app/main_window.cpp" line="225"/>
         <source>Accuracy</source>
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="299"/>
+        <location filename="../app/main_window.cpp" line="231"/>
+        <source>Z-buffer</source>
+        <translation>Z-buffer</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="306"/>
         <source>%1 - RasterLab</source>
         <translation>%1 - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="314"/>
+        <location filename="../app/main_window.cpp" line="321"/>
         <source>%1: cannot export the image: %2</source>
         <translation>%1: cannot export the image: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="315"/>
+        <location filename="../app/main_window.cpp" line="322"/>
         <source>nothing has been rendered yet</source>
         <translation>nothing has been rendered yet</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="318"/>
+        <location filename="../app/main_window.cpp" line="325"/>
         <source>Exported %1</source>
         <translation>Exported %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="341"/>
+        <location filename="../app/main_window.cpp" line="348"/>
         <source>rendering...</source>
         <translation>rendering...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="341"/>
+        <location filename="../app/main_window.cpp" line="348"/>
         <source>%1, rendering...</source>
         <translation>%1, rendering...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="339"/>
-        <location filename="../app/main_window.cpp" line="421"/>
+        <location filename="../app/main_window.cpp" line="346"/>
+        <location filename="../app/main_window.cpp" line="429"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="368"/>
+        <location filename="../app/main_window.cpp" line="376"/>
         <source>Error: %1</source>
         <translation>Error: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="384"/>
+        <location filename="../app/main_window.cpp" line="392"/>
         <source>Files</source>
         <translation>Files</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="387"/>
+        <location filename="../app/main_window.cpp" line="395"/>
         <source>Command file</source>
         <translation>Command file</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="388"/>
+        <location filename="../app/main_window.cpp" line="396"/>
         <source>Image</source>
         <translation>Image</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="390"/>
+        <location filename="../app/main_window.cpp" line="398"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="400"/>
+        <location filename="../app/main_window.cpp" line="408"/>
         <source>Camera</source>
         <translation>Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="401"/>
+        <location filename="../app/main_window.cpp" line="409"/>
         <source>Lighting</source>
         <translation>Lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="402"/>
+        <location filename="../app/main_window.cpp" line="410"/>
         <source>Object</source>
         <translation>Object</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="404"/>
+        <location filename="../app/main_window.cpp" line="412"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="412"/>
+        <location filename="../app/main_window.cpp" line="420"/>
         <source>Stages</source>
         <translation>Stages</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="413"/>
-        <location filename="../app/main_window.cpp" line="427"/>
+        <location filename="../app/main_window.cpp" line="421"/>
+        <location filename="../app/main_window.cpp" line="435"/>
         <source>Camera basis</source>
         <translation>Camera basis</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="413"/>
+        <location filename="../app/main_window.cpp" line="421"/>
         <source>View transform</source>
         <translation>View transform</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="413"/>
+        <location filename="../app/main_window.cpp" line="421"/>
         <source>Normals</source>
         <translation>Normals</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="414"/>
+        <location filename="../app/main_window.cpp" line="422"/>
         <source>Projection</source>
         <translation>Projection</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="414"/>
+        <location filename="../app/main_window.cpp" line="422"/>
         <source>Scan conversion</source>
         <translation>Scan conversion</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="414"/>
+        <location filename="../app/main_window.cpp" line="422"/>
         <source>Depth test</source>
         <translation>Depth test</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="415"/>
+        <location filename="../app/main_window.cpp" line="423"/>
         <source>Shading</source>
         <translation>Shading</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="422"/>
+        <location filename="../app/main_window.cpp" line="430"/>
         <source>skipped: %1</source>
         <translation>skipped: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="436"/>
+        <location filename="../app/main_window.cpp" line="444"/>
         <source>largest orthonormality residual: %1</source>
         <translation>largest orthonormality residual: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="438"/>
+        <location filename="../app/main_window.cpp" line="446"/>
         <source>Counts</source>
         <translation>Counts</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="439"/>
+        <location filename="../app/main_window.cpp" line="447"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="442"/>
+        <location filename="../app/main_window.cpp" line="450"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="445"/>
+        <location filename="../app/main_window.cpp" line="453"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="449"/>
+        <location filename="../app/main_window.cpp" line="457"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="467"/>
+        <location filename="../app/main_window.cpp" line="475"/>
         <source>empty (+inf)</source>
         <translation>empty (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="468"/>
+        <location filename="../app/main_window.cpp" line="476"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   depth %6</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="484"/>
+        <location filename="../app/main_window.cpp" line="492"/>
         <source>Open Command File</source>
         <translation>Open Command File</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="485"/>
+        <location filename="../app/main_window.cpp" line="493"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Command files (*.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="495"/>
+        <location filename="../app/main_window.cpp" line="503"/>
         <source>Export PNG</source>
         <translation>Export PNG</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="495"/>
+        <location filename="../app/main_window.cpp" line="503"/>
         <source>PNG images (*.png)</source>
         <translation>PNG images (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="500"/>
+        <location filename="../app/main_window.cpp" line="508"/>
         <source>About RasterLab</source>
         <translation>About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="501"/>
+        <location filename="../app/main_window.cpp" line="509"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>rasterlab::ZBufferView</name>
+    <message>
+        <location filename="../views/zbuffer_view.cpp" line="155"/>
+        <source>Automatic range (nearest to farthest drawn)</source>
+        <translation>Automatic range (nearest to farthest drawn)</translation>
+    </message>
+    <message>
+        <location filename="../views/zbuffer_view.cpp" line="170"/>
+        <source>Grey (near white)</source>
+        <translation>Grey (near white)</translation>
+    </message>
+    <message>
+        <location filename="../views/zbuffer_view.cpp" line="171"/>
+        <source>False colour (near red, far blue)</source>
+        <translation>False colour (near red, far blue)</translation>
+    </message>
+    <message>
+        <location filename="../views/zbuffer_view.cpp" line="182"/>
+        <source>Nearest (white / red):</source>
+        <translation>Nearest (white / red):</translation>
+    </message>
+    <message>
+        <location filename="../views/zbuffer_view.cpp" line="183"/>
+        <source>Farthest (dark / blue):</source>
+        <translation>Farthest (dark / blue):</translation>
+    </message>
+    <message>
+        <location filename="../views/zbuffer_view.cpp" line="184"/>
+        <source>Colours:</source>
+        <translation>Colours:</translation>
+    </message>
+    <message>
+        <location filename="../views/zbuffer_view.cpp" line="252"/>
+        <source>No frame yet.</source>
+        <translation>No frame yet.</translation>
+    </message>
+    <message>
+        <location filename="../views/zbuffer_view.cpp" line="269"/>
+        <source>No pixel holds a triangle: the buffer is all clear value.</source>
+        <translation>No pixel holds a triangle: the buffer is all clear value.</translation>
+    </message>
+    <message>
+        <location filename="../views/zbuffer_view.cpp" line="272"/>
+        <source>Drawn depths from %1 to %2; shown from %3 to %4.</source>
+        <translation>Drawn depths from %1 to %2; shown from %3 to %4.</translation>
+    </message>
+    <message>
+        <location filename="../views/zbuffer_view.cpp" line="278"/>
+        <source>%1 pixels nearer and %2 farther than the range are drawn at its ends.</source>
+        <translation>%1 pixels nearer and %2 farther than the range are drawn at its ends.</translation>
+    </message>
+    <message>
+        <location filename="../views/zbuffer_view.cpp" line="292"/>
+        <source>+inf</source>
+        <translation>+inf</translation>
+    </message>
+    <message>
+        <location filename="../views/zbuffer_view.cpp" line="293"/>
+        <source>x %1, y %2: no triangle; the depth stays at the clear value %3</source>
+        <translation>x %1, y %2: no triangle; the depth stays at the clear value %3</translation>
+    </message>
+    <message>
+        <location filename="../views/zbuffer_view.cpp" line="298"/>
+        <source>x %1, y %2: depth %3, triangle %4</source>
+        <translation>x %1, y %2: depth %3, triangle %4</translation>
     </message>
 </context>
 </TS>

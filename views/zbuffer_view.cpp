@@ -1,0 +1,311 @@
+#include "zbuffer_view.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPainter>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "frame_image_view.h"
+
+namespace rasterlab {
+
+namespace {
+
+// Where z falls in the range, 0 (nearest) to 1 (farthest).
+double rangePosition(float z, const DepthRange& range) {
+    const double span = double(range.farthest) - double(range.nearest);
+    if (!(span > 0.0)) return 0.0;
+    return std::clamp((double(z) - double(range.nearest)) / span, 0.0, 1.0);
+}
+
+// The false-colour ramp, near to far: dark red, orange, yellow, green, light blue, dark blue.
+QRgb falseColour(double t) {
+    static constexpr std::array<std::array<int, 3>, 6> stops{{{122, 4, 3},
+                                                              {249, 117, 29},
+                                                              {225, 220, 55},
+                                                              {100, 253, 106},
+                                                              {40, 170, 230},
+                                                              {48, 18, 59}}};
+    const double at = t * double(stops.size() - 1);
+    const auto i = std::min(static_cast<std::size_t>(at), stops.size() - 2);
+    const double f = at - double(i);
+    std::array<int, 3> c{};
+    for (std::size_t k = 0; k < 3; ++k)
+        c[k] = static_cast<int>(std::lround(stops[i][k] + f * (stops[i + 1][k] - stops[i][k])));
+    return qRgb(c[0], c[1], c[2]);
+}
+
+bool covered(const rl::DepthTest& depth, int x, int y) {
+    return depth.triangle.at(x, y) != rl::kNoTriangle;
+}
+
+}  // namespace
+
+DepthRange coveredDepthRange(const rl::DepthTest& depth) {
+    DepthRange range;
+    range.nearest = std::numeric_limits<float>::infinity();
+    range.farthest = -std::numeric_limits<float>::infinity();
+    for (int y = 0; y < depth.depth.height(); ++y) {
+        for (int x = 0; x < depth.depth.width(); ++x) {
+            if (!covered(depth, x, y)) continue;
+            const float z = depth.depth.at(x, y);
+            if (!std::isfinite(z)) continue;
+            range.nearest = std::min(range.nearest, z);
+            range.farthest = std::max(range.farthest, z);
+            range.valid = true;
+        }
+    }
+    if (!range.valid) return DepthRange{};
+    return range;
+}
+
+QRgb depthColour(float z, const DepthRange& range, DepthPalette palette) {
+    const double t = rangePosition(z, range);
+    if (palette == DepthPalette::FalseColour) return falseColour(t);
+    const int grey = static_cast<int>(std::lround(255.0 - 239.0 * t));
+    return qRgb(grey, grey, grey);
+}
+
+QRgb emptyPixelColour(int x, int y) {
+    return ((x / 8 + y / 8) % 2 == 0) ? qRgb(58, 60, 70) : qRgb(78, 80, 92);
+}
+
+QImage depthImage(const rl::DepthTest& depth, const DepthRange& range, DepthPalette palette) {
+    QImage image(depth.depth.width(), depth.depth.height(), QImage::Format_RGB32);
+    for (int y = 0; y < image.height(); ++y) {
+        auto* line = reinterpret_cast<QRgb*>(image.scanLine(y));
+        for (int x = 0; x < image.width(); ++x) {
+            line[x] = covered(depth, x, y) ? depthColour(depth.depth.at(x, y), range, palette)
+                                           : emptyPixelColour(x, y);
+        }
+    }
+    return image;
+}
+
+DepthHistogram depthHistogram(const rl::DepthTest& depth, const DepthRange& range, int bins) {
+    DepthHistogram out;
+    out.counts.assign(static_cast<std::size_t>(std::max(1, bins)), 0);
+    const double span = double(range.farthest) - double(range.nearest);
+    for (int y = 0; y < depth.depth.height(); ++y) {
+        for (int x = 0; x < depth.depth.width(); ++x) {
+            if (!covered(depth, x, y)) continue;
+            const float z = depth.depth.at(x, y);
+            if (z < range.nearest) {
+                ++out.below;
+            } else if (z > range.farthest) {
+                ++out.above;
+            } else {
+                const double t = span > 0.0 ? (double(z) - double(range.nearest)) / span : 0.0;
+                const auto bin = std::min(static_cast<std::size_t>(t * double(out.counts.size())),
+                                          out.counts.size() - 1);
+                ++out.counts[bin];
+            }
+        }
+    }
+    return out;
+}
+
+DepthHistogramWidget::DepthHistogramWidget(QWidget* parent) : QWidget(parent) {
+    setMinimumHeight(60);
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+}
+
+void DepthHistogramWidget::setHistogram(DepthHistogram histogram, const DepthRange& range,
+                                        DepthPalette palette) {
+    m_histogram = std::move(histogram);
+    m_range = range;
+    m_palette = palette;
+    update();
+}
+
+void DepthHistogramWidget::paintEvent(QPaintEvent*) {
+    QPainter painter(this);
+    painter.fillRect(rect(), QColor(36, 36, 40));
+    const auto& counts = m_histogram.counts;
+    if (counts.empty()) return;
+    const int most = *std::max_element(counts.begin(), counts.end());
+    if (most <= 0) return;
+    const double barWidth = double(width()) / double(counts.size());
+    for (std::size_t i = 0; i < counts.size(); ++i) {
+        // Square-root heights, so that small bins stay visible beside the largest.
+        const double h = std::sqrt(double(counts[i]) / double(most)) * (height() - 2);
+        const double t = (double(i) + 0.5) / double(counts.size());
+        const float z =
+            static_cast<float>(m_range.nearest + t * (double(m_range.farthest) - m_range.nearest));
+        painter.fillRect(QRectF(i * barWidth, height() - h, std::max(1.0, barWidth - 1.0), h),
+                         QColor(depthColour(z, m_range, m_palette)));
+    }
+}
+
+ZBufferView::ZBufferView(QWidget* parent) : QWidget(parent) {
+    m_view = new FrameImageView(this);
+    m_view->setObjectName(QStringLiteral("zbufferImage"));
+    m_histogramWidget = new DepthHistogramWidget(this);
+    m_histogramWidget->setObjectName(QStringLiteral("zbufferHistogram"));
+    m_automatic = new QCheckBox(tr("Automatic range (nearest to farthest drawn)"), this);
+    m_automatic->setObjectName(QStringLiteral("zbufferAutomatic"));
+    m_automatic->setChecked(true);
+    m_nearest = new QDoubleSpinBox(this);
+    m_farthest = new QDoubleSpinBox(this);
+    m_nearest->setObjectName(QStringLiteral("zbufferNearest"));
+    m_farthest->setObjectName(QStringLiteral("zbufferFarthest"));
+    for (QDoubleSpinBox* box : {m_nearest, m_farthest}) {
+        box->setDecimals(6);
+        box->setRange(-1e9, 1e9);
+        box->setKeyboardTracking(false);
+        box->setEnabled(false);
+    }
+    m_paletteBox = new QComboBox(this);
+    m_paletteBox->setObjectName(QStringLiteral("zbufferPalette"));
+    m_paletteBox->addItem(tr("Grey (near white)"));
+    m_paletteBox->addItem(tr("False colour (near red, far blue)"));
+    m_rangeLabel = new QLabel(this);
+    m_rangeLabel->setObjectName(QStringLiteral("zbufferRangeLabel"));
+    m_rangeLabel->setWordWrap(true);
+    m_valueLabel = new QLabel(this);
+    m_valueLabel->setObjectName(QStringLiteral("zbufferValue"));
+    m_valueLabel->setWordWrap(true);
+    m_valueLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    auto* form = new QFormLayout;
+    form->addRow(m_automatic);
+    form->addRow(tr("Nearest (white / red):"), m_nearest);
+    form->addRow(tr("Farthest (dark / blue):"), m_farthest);
+    form->addRow(tr("Colours:"), m_paletteBox);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_view, 1);
+    layout->addWidget(m_histogramWidget);
+    layout->addWidget(m_rangeLabel);
+    layout->addLayout(form);
+    layout->addWidget(m_valueLabel);
+
+    connect(m_automatic, &QCheckBox::toggled, this, &ZBufferView::setAutomaticRange);
+    const auto manual = [this] {
+        setManualRange(float(m_nearest->value()), float(m_farthest->value()));
+    };
+    connect(m_nearest, &QDoubleSpinBox::valueChanged, this, manual);
+    connect(m_farthest, &QDoubleSpinBox::valueChanged, this, manual);
+    connect(m_paletteBox, &QComboBox::currentIndexChanged, this, [this](int index) {
+        setPalette(index == 1 ? DepthPalette::FalseColour : DepthPalette::Grey);
+    });
+    connect(m_view, &FrameImageView::pixelHovered, this, &ZBufferView::showValue);
+    connect(m_view, &FrameImageView::pixelPicked, this, &ZBufferView::showValue);
+}
+
+void ZBufferView::setFrame(std::shared_ptr<const rl::FrameTrace> frame) {
+    m_frame = std::move(frame);
+    refresh();
+}
+
+bool ZBufferView::automaticRange() const {
+    return m_automatic->isChecked();
+}
+
+void ZBufferView::setAutomaticRange(bool automatic) {
+    {
+        const QSignalBlocker block(m_automatic);
+        m_automatic->setChecked(automatic);
+    }
+    m_nearest->setEnabled(!automatic);
+    m_farthest->setEnabled(!automatic);
+    refresh();
+}
+
+void ZBufferView::setManualRange(float nearest, float farthest) {
+    {
+        const QSignalBlocker blockAutomatic(m_automatic);
+        const QSignalBlocker blockNearest(m_nearest);
+        const QSignalBlocker blockFarthest(m_farthest);
+        m_automatic->setChecked(false);
+        m_nearest->setEnabled(true);
+        m_farthest->setEnabled(true);
+        m_nearest->setValue(nearest);
+        m_farthest->setValue(farthest);
+    }
+    m_range = DepthRange{std::min(nearest, farthest), std::max(nearest, farthest), true};
+    refresh();
+}
+
+void ZBufferView::setPalette(DepthPalette palette) {
+    m_palette = palette;
+    {
+        const QSignalBlocker block(m_paletteBox);
+        m_paletteBox->setCurrentIndex(palette == DepthPalette::FalseColour ? 1 : 0);
+    }
+    refresh();
+}
+
+void ZBufferView::refresh() {
+    if (!m_frame || !m_frame->depth) {
+        m_image = QImage();
+        m_histogram = DepthHistogram{};
+        m_view->setImage(m_image);
+        m_histogramWidget->setHistogram(m_histogram, m_range, m_palette);
+        m_rangeLabel->setText(tr("No frame yet."));
+        return;
+    }
+    const rl::DepthTest& depth = *m_frame->depth;
+    const DepthRange drawn = coveredDepthRange(depth);
+    if (automaticRange()) {
+        m_range = drawn;
+        const QSignalBlocker blockNearest(m_nearest);
+        const QSignalBlocker blockFarthest(m_farthest);
+        m_nearest->setValue(drawn.nearest);
+        m_farthest->setValue(drawn.farthest);
+    }
+    m_image = depthImage(depth, m_range, m_palette);
+    m_histogram = depthHistogram(depth, m_range, 64);
+    m_view->setImage(m_image);
+    m_histogramWidget->setHistogram(m_histogram, m_range, m_palette);
+    if (!drawn.valid) {
+        m_rangeLabel->setText(tr("No pixel holds a triangle: the buffer is all clear value."));
+        return;
+    }
+    QString text = tr("Drawn depths from %1 to %2; shown from %3 to %4.")
+                       .arg(double(drawn.nearest), 0, 'g', 6)
+                       .arg(double(drawn.farthest), 0, 'g', 6)
+                       .arg(double(m_range.nearest), 0, 'g', 6)
+                       .arg(double(m_range.farthest), 0, 'g', 6);
+    if (m_histogram.below > 0 || m_histogram.above > 0)
+        text += QLatin1Char(' ') + tr("%1 pixels nearer and %2 farther than the range are drawn "
+                                      "at its ends.")
+                                       .arg(m_histogram.below)
+                                       .arg(m_histogram.above);
+    m_rangeLabel->setText(text);
+}
+
+QString ZBufferView::valueText(QPoint pixel) const {
+    if (!m_frame || !m_frame->depth) return {};
+    const rl::DepthTest& depth = *m_frame->depth;
+    if (!depth.depth.contains(pixel.x(), pixel.y())) return {};
+    const std::uint32_t t = depth.triangle.at(pixel.x(), pixel.y());
+    const float z = depth.depth.at(pixel.x(), pixel.y());
+    if (t == rl::kNoTriangle) {
+        const QString clear = std::isinf(z) ? tr("+inf") : QString::number(double(z), 'g', 6);
+        return tr("x %1, y %2: no triangle; the depth stays at the clear value %3")
+            .arg(pixel.x())
+            .arg(pixel.y())
+            .arg(clear);
+    }
+    return tr("x %1, y %2: depth %3, triangle %4")
+        .arg(pixel.x())
+        .arg(pixel.y())
+        .arg(double(z), 0, 'g', 8)
+        .arg(t);
+}
+
+void ZBufferView::showValue(QPoint pixel) {
+    m_valueLabel->setText(pixel.x() < 0 ? QString() : valueText(pixel));
+}
+
+}  // namespace rasterlab
