@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include <QApplication>
+#include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -8,6 +9,7 @@
 #include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QSettings>
 #include <QStatusBar>
 #include <QTextBrowser>
 
@@ -81,6 +83,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     statusBar()->addWidget(m_pixelLabel, 1);
     statusBar()->addPermanentWidget(m_timeLabel);
     resize(1280, 860);
+    m_defaultLayout = saveState(kLayoutVersion);
+    restoreLayout();
 
     if (auto status = m_document.loadDefault(); !status)
         showError(QString::fromStdString(status.error().toString()));
@@ -158,6 +162,8 @@ void MainWindow::createActions() {
     view->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         view->addAction(dock->toggleViewAction());
+    QAction* reset = view->addAction(tr("Reset &Layout"), this, &MainWindow::resetLayout);
+    reset->setObjectName(QStringLiteral("resetLayoutAction"));
     view->addSeparator();
     // The images a command file names (its png commands): one is shown at a time.
     m_imageMenu = view->addMenu(tr("&Image"));
@@ -237,6 +243,31 @@ void MainWindow::createDocks() {
     sceneDock->raise();
     resizeDocks({sceneDock}, {330}, Qt::Horizontal);
     resizeDocks({messagesDock}, {130}, Qt::Vertical);
+}
+
+void MainWindow::resetLayout() {
+    restoreState(m_defaultLayout, kLayoutVersion);
+}
+
+void MainWindow::saveLayout() const {
+    if (QCoreApplication::organizationName().isEmpty()) return;
+    QSettings settings;
+    settings.setValue(QStringLiteral("layout/version"), kLayoutVersion);
+    settings.setValue(QStringLiteral("layout/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("layout/state"), saveState(kLayoutVersion));
+}
+
+void MainWindow::restoreLayout() {
+    if (QCoreApplication::organizationName().isEmpty()) return;
+    const QSettings settings;
+    if (settings.value(QStringLiteral("layout/version")).toInt() != kLayoutVersion) return;
+    restoreGeometry(settings.value(QStringLiteral("layout/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("layout/state")).toByteArray(), kLayoutVersion);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    saveLayout();
+    QMainWindow::closeEvent(event);
 }
 
 bool MainWindow::openPart(SceneDocument::Part part, const QString& path) {

@@ -50,8 +50,20 @@ public:
     RenderController* controller() const { return m_controller; }
     AccuracyPanel* accuracyPanel() const { return m_accuracy; }
     ZBufferView* zbufferView() const { return m_zbuffer; }
+    // The docks as they are when the window opens (View > Reset Layout).
+    void resetLayout();
+
+    // The layout (geometry, docks) is kept in QSettings under layout/, with this version: a
+    // layout saved by another version is not restored. Only when the application has an
+    // organization name (the program sets one; tests choose theirs).
+    static constexpr int kLayoutVersion = 1;
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
 
 private:
+    void saveLayout() const;
+    void restoreLayout();
     void createActions();
     void createDocks();
     void requestRender();
@@ -82,6 +94,7 @@ private:
     QActionGroup* m_rulesGroup = nullptr;
     AccuracyPanel* m_accuracy = nullptr;
     ZBufferView* m_zbuffer = nullptr;
+    QByteArray m_defaultLayout;
     QMenu* m_shadingMenu = nullptr;
     QMenu* m_imageMenu = nullptr;
 };

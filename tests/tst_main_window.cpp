@@ -13,6 +13,7 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QListWidget>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -92,6 +93,7 @@ private slots:
     void exportImage();
     void exportToMissingFolder();
     void docks();
+    void layoutSavedAndReset();
     void newestRequestWins();
     void failedRenderKeepsTheLastImage();
     void commandFile();
@@ -466,6 +468,45 @@ void TestMainWindow::docks() {
     QCOMPARE(messagesDock->widget(), window.messages());
     // Unique object names let saveState/restoreState find the docks again.
     QVERIFY(!window.saveState().isEmpty());
+}
+
+void TestMainWindow::layoutSavedAndReset() {
+    // Settings of our own, in a temporary folder: the user's are not touched.
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, dir.path());
+    QCoreApplication::setOrganizationName(QStringLiteral("RasterLabLayoutTest"));
+    const auto zbufferShown = [](const MainWindow& window) {
+        return !window.findChild<QDockWidget*>(QStringLiteral("zbufferDock"))->isHidden();
+    };
+    {
+        MainWindow window;
+        QVERIFY(zbufferShown(window));  // nothing saved yet: the default layout
+        window.findChild<QDockWidget*>(QStringLiteral("zbufferDock"))->hide();
+        window.close();  // saves the layout
+    }
+    {
+        MainWindow window;
+        QVERIFY(!zbufferShown(window));  // restored as it was left
+        auto* reset = window.findChild<QAction*>(QStringLiteral("resetLayoutAction"));
+        QVERIFY(reset);
+        reset->trigger();
+        QVERIFY(zbufferShown(window));
+        window.findChild<QDockWidget*>(QStringLiteral("zbufferDock"))->hide();
+        window.close();
+    }
+    {
+        // A layout written by another version is not restored.
+        QSettings settings;
+        QCOMPARE(settings.value(QStringLiteral("layout/version")).toInt(),
+                 MainWindow::kLayoutVersion);
+        settings.setValue(QStringLiteral("layout/version"), MainWindow::kLayoutVersion + 1);
+    }
+    {
+        MainWindow window;
+        QVERIFY(zbufferShown(window));
+    }
+    QCoreApplication::setOrganizationName(QString());
 }
 
 void TestMainWindow::newestRequestWins() {
