@@ -431,5 +431,8 @@ template DepthTest DepthTestStage::run<NullProbe>(const Scene&, const Projection
 template DepthTest DepthTestStage::run<RecordingProbe>(const Scene&, const Projection&,
                                                        const ScanConversion&, RecordingProbe&, int,
                                                        DepthTest*) const;
+template DepthTest DepthTestStage::run<ReplayProbe>(const Scene&, const Projection&,
+                                                    const ScanConversion&, ReplayProbe&, int,
+                                                    DepthTest*) const;
 
 }  // namespace rl

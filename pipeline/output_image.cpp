@@ -42,22 +42,29 @@ std::uint8_t unitToByte(float v) {
 
 }  // namespace
 
+std::array<std::uint8_t, 4> colourBytes(const vec3& colour, const Conventions& conventions) {
+    return {toByte(colour.r, conventions), toByte(colour.g, conventions),
+            toByte(colour.b, conventions), 255};
+}
+
+std::array<std::uint8_t, 4> backgroundBytes(const Conventions& conventions) {
+    const vec4 bg = conventions.background;
+    return {unitToByte(bg.r), unitToByte(bg.g), unitToByte(bg.b), unitToByte(bg.a)};
+}
+
 Rgba8Image colourImage(const Shading& shading, const DepthTest& depth,
                        const Conventions& conventions) {
     const int w = shading.colour.width();
     const int h = shading.colour.height();
     Rgba8Image image = blank(w, h);
-    const vec4 bg = conventions.background;
+    const std::array<std::uint8_t, 4> bg = backgroundBytes(conventions);
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
-            if (depth.triangle.at(x, y) == kNoTriangle) {
-                put(image, x, y, unitToByte(bg.r), unitToByte(bg.g), unitToByte(bg.b),
-                    unitToByte(bg.a));
-                continue;
-            }
-            const vec3 c = shading.colour.at(x, y);
-            put(image, x, y, toByte(c.r, conventions), toByte(c.g, conventions),
-                toByte(c.b, conventions), 255);
+            const std::array<std::uint8_t, 4> c =
+                depth.triangle.at(x, y) == kNoTriangle
+                    ? bg
+                    : colourBytes(shading.colour.at(x, y), conventions);
+            put(image, x, y, c[0], c[1], c[2], c[3]);
         }
     }
     return image;

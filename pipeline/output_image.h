@@ -3,6 +3,7 @@
 // buffer as grey levels, and the normals as colours.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -30,6 +31,10 @@ struct Rgba8Image {
 // A channel in the scene's colour scale as a byte: clamped to [0, scale], then rounded by
 // the scene's rule; NaN becomes 0.
 std::uint8_t toByte(float value, const Conventions& conventions);
+
+// A shaded colour as opaque RGBA bytes, and the background's RGBA bytes.
+std::array<std::uint8_t, 4> colourBytes(const vec3& colour, const Conventions& conventions);
+std::array<std::uint8_t, 4> backgroundBytes(const Conventions& conventions);
 
 // The final image: shaded pixels opaque, the others the scene's background.
 Rgba8Image colourImage(const Shading& shading, const DepthTest& depth,

@@ -81,6 +81,7 @@ public:
 
     void onTriangle(std::uint32_t triangle, const TriangleSetup& setup);
     void onSpan(std::uint32_t triangle, const Span& span, double xLeft, double xRight);
+    void onRow(std::uint32_t, std::int32_t, double, double, std::int32_t, std::int32_t) {}
     void onDepthTest(const DepthTestEvent& event);
     void onShade(const ShadeEvent& event);
 
@@ -95,6 +96,70 @@ private:
     std::optional<std::uint32_t> m_triangle;
     std::vector<ProbeEvent> m_events;
     std::optional<TriangleEvent> m_pendingTriangle;  // pixel mode: kept until a span covers it
+};
+
+// What the stepper (replay.h) keeps of scan conversion and the depth test, compactly: every
+// row the edge walk visits (empty ones too) and every fragment's depth test, in drawing
+// order. Scan conversion and the depth test run on one thread with it.
+struct ReplayRowEvent {
+    std::uint32_t triangle = 0;
+    std::int32_t y = 0;
+    std::int32_t xBegin = 0, xEnd = 0;  // the span's pixels [xBegin, xEnd); empty when equal
+    double xLeft = 0.0, xRight = 0.0;   // the exact edge crossings on this row
+};
+
+inline constexpr std::uint32_t kNoFragment = 0xffffffffu;
+
+enum class FragmentVerdict : std::uint8_t {
+    Written,            // nearer than what was stored: depth and colour written
+    Rejected,           // as far as or farther than what was stored
+    OutsideDepthRange,  // discarded before the test: depth outside [0, 1] (seed 001)
+};
+
+// One fragment: a pixel of a triangle's span, tested against the depth buffer.
+struct ReplayFragment {
+    std::int32_t x = 0, y = 0;
+    std::uint32_t triangle = 0;       // Projection::triangles
+    std::uint32_t row = 0;            // FrameReplay::rows()
+    float depth = 0.0f;               // the fragment's interpolated depth
+    float stored = 0.0f;              // the buffer's depth before the test
+    float beta = 0.0f, gamma = 0.0f;  // screen barycentrics (alpha = 1 - beta - gamma)
+    // Written: the fragment whose values it replaced (kNoFragment: the cleared buffer), and
+    // how many fragments have written this pixel, this one included.
+    std::uint32_t previous = kNoFragment;
+    std::uint32_t writeNumber = 0;
+    FragmentVerdict verdict = FragmentVerdict::Rejected;
+    vec3 colour = vec3(0.0f);  // Written: the colour it writes (unclamped, the scene's scale)
+};
+
+class ReplayProbe {
+public:
+    static constexpr bool enabled = true;
+
+    void onTriangle(std::uint32_t, const TriangleSetup&) {}
+    void onSpan(std::uint32_t, const Span&, double, double) {}
+    void onRow(std::uint32_t triangle, std::int32_t y, double xLeft, double xRight,
+               std::int32_t xBegin, std::int32_t xEnd) {
+        rows.push_back({triangle, y, xBegin, xEnd, xLeft, xRight});
+    }
+    void onDepthTest(const DepthTestEvent& e) {
+        ReplayFragment f;
+        f.x = e.x;
+        f.y = e.y;
+        f.triangle = e.triangle;
+        f.depth = e.depth;
+        f.stored = e.stored;
+        f.beta = e.beta;
+        f.gamma = e.gamma;
+        f.verdict = e.outsideDepthRange ? FragmentVerdict::OutsideDepthRange
+                    : e.passed          ? FragmentVerdict::Written
+                                        : FragmentVerdict::Rejected;
+        fragments.push_back(f);
+    }
+    void onShade(const ShadeEvent&) {}
+
+    std::vector<ReplayRowEvent> rows;
+    std::vector<ReplayFragment> fragments;
 };
 
 }  // namespace rl

@@ -208,6 +208,11 @@ void scanTriangles(const Scene& scene, const Projection& projection, std::size_t
                     out.pixels += static_cast<std::size_t>(span.xEnd - span.xBegin);
                     RL_PROBE_HOOK(probe.onSpan(triangle, span, left.exactX(), right.exactX()));
                 }
+                // Every row walked, empty ones included (the stepper's scanlines).
+                RL_PROBE_HOOK(const auto first = static_cast<std::int32_t>(std::min(begin, width));
+                              probe.onRow(triangle, y, left.exactX(), right.exactX(), first,
+                                          static_cast<std::int32_t>(
+                                              std::clamp<std::int64_t>(end, first, width))));
                 longWalker.nextRow();
                 shortWalker.nextRow();
             }
@@ -280,5 +285,7 @@ template ScanConversion ScanConversionStage::run<NullProbe>(const Scene&, const 
                                                             NullProbe&, int) const;
 template ScanConversion ScanConversionStage::run<RecordingProbe>(const Scene&, const Projection&,
                                                                  RecordingProbe&, int) const;
+template ScanConversion ScanConversionStage::run<ReplayProbe>(const Scene&, const Projection&,
+                                                              ReplayProbe&, int) const;
 
 }  // namespace rl
