@@ -309,8 +309,11 @@ void ReplayState::resetTo(bool end) {
     const std::size_t pixels =
         static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height);
     m_image.rgba.resize(pixels * 4);
+    m_buffers.depth.reset(scene.width, scene.height, scene.conventions.depthClear);
+    m_buffers.triangle.reset(scene.width, scene.height, kNoTriangle);
+    m_buffers.barycentric.reset(scene.width, scene.height, vec2(0.0f));
+    m_buffers.clearedTo = scene.conventions.depthClear;
     if (!end) {
-        m_depth.reset(scene.width, scene.height, scene.conventions.depthClear);
         m_writer.reset(scene.width, scene.height, kNoFragment);
         for (std::size_t i = 0; i < pixels; ++i)
             std::copy(m_background.begin(), m_background.end(), m_image.rgba.begin() + 4 * i);
@@ -318,18 +321,18 @@ void ReplayState::resetTo(bool end) {
         return;
     }
     m_writer = m_replay->finalWriter();
-    m_depth.reset(scene.width, scene.height, scene.conventions.depthClear);
     for (int y = 0; y < scene.height; ++y)
         for (int x = 0; x < scene.width; ++x) show(x, y, m_writer.at(x, y));
     m_cursor = m_replay->end();
 }
 
 void ReplayState::show(int x, int y, std::uint32_t writer) {
-    const auto& fragments = m_replay->fragments();
-    m_depth.at(x, y) = writer == kNoFragment ? m_replay->trace().scene->conventions.depthClear
-                                             : fragments[writer].depth;
-    const std::array<std::uint8_t, 4> bytes =
-        writer == kNoFragment ? m_background : m_replay->bytesOf(writer);
+    const bool empty = writer == kNoFragment;
+    const ReplayFragment* f = empty ? nullptr : &m_replay->fragments()[writer];
+    m_buffers.depth.at(x, y) = empty ? m_buffers.clearedTo : f->depth;
+    m_buffers.triangle.at(x, y) = empty ? kNoTriangle : f->triangle;
+    m_buffers.barycentric.at(x, y) = empty ? vec2(0.0f) : vec2(f->beta, f->gamma);
+    const std::array<std::uint8_t, 4> bytes = empty ? m_background : m_replay->bytesOf(writer);
     const std::size_t at = (static_cast<std::size_t>(y) * static_cast<std::size_t>(m_image.width) +
                             static_cast<std::size_t>(x)) *
                            4;
@@ -371,11 +374,6 @@ void ReplayState::seek(ReplayCursor target) {
     for (; at < to; ++at) apply(at);
     for (; at > to; --at) undo(at - 1);
     m_cursor = target;
-}
-
-std::uint32_t ReplayState::triangleAt(int x, int y) const {
-    const std::uint32_t w = m_writer.at(x, y);
-    return w == kNoFragment ? kNoTriangle : m_replay->fragments()[w].triangle;
 }
 
 }  // namespace rl

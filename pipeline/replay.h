@@ -27,6 +27,7 @@
 #include <optional>
 #include <vector>
 
+#include "depth_test.h"
 #include "diagnostics.h"
 #include "frame_trace.h"
 #include "image.h"
@@ -167,11 +168,14 @@ public:
     ReplayCursor cursor() const { return m_cursor; }
     void seek(ReplayCursor target);
 
-    const Image<float>& depth() const { return m_depth; }
+    const Image<float>& depth() const { return m_buffers.depth; }
+    // The depth buffer, the triangle and the barycentrics of each pixel at the cursor, as the
+    // depth test leaves them (its counters are not kept).
+    const DepthTest& buffers() const { return m_buffers; }
     const Image<std::uint32_t>& writer() const { return m_writer; }
     const Rgba8Image& image() const { return m_image; }
     // The triangle holding pixel (x, y) at the cursor, or kNoTriangle.
-    std::uint32_t triangleAt(int x, int y) const;
+    std::uint32_t triangleAt(int x, int y) const { return m_buffers.triangle.at(x, y); }
     // How many fragments were applied or undone by the last seek (for the benchmark).
     std::size_t lastSeekWork() const { return m_lastWork; }
 
@@ -183,7 +187,7 @@ private:
 
     std::shared_ptr<const FrameReplay> m_replay;
     ReplayCursor m_cursor;
-    Image<float> m_depth;
+    DepthTest m_buffers;
     Image<std::uint32_t> m_writer;
     Rgba8Image m_image;
     std::array<std::uint8_t, 4> m_background{};

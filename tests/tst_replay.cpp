@@ -297,6 +297,7 @@ private slots:
         for (int y = 0; y < scene->height; ++y)
             for (int x = 0; x < scene->width; ++x)
                 QCOMPARE(state.triangleAt(x, y), trace->depth->triangle.at(x, y));
+        QVERIFY(testing::sameCoveredBarycentrics(state.buffers(), *trace->depth));
         // Back to the start, by triangles: the cleared buffers.
         while (state.cursor() != replay->start())
             state.seek(replay->previous(state.cursor(), StepGranularity::Triangle));
