@@ -1,11 +1,44 @@
-// rasterlab: the teaching application. Opens on the embedded default scene.
+// rasterlab: the teaching application. Opens on the embedded default scene, or on the files
+// or folder given on the command line.
 #include <QApplication>
+#include <QCommandLineParser>
 #include <QLibraryInfo>
 #include <QLocale>
+#include <QPointer>
+#include <QSettings>
 #include <QTranslator>
+
+#include <functional>
+#include <memory>
 
 #include "frame_memory.h"
 #include "main_window.h"
+
+namespace {
+
+// Our strings and Qt's own (its dialogs) in one language: "" for the system's, "en" or
+// "pt_BR". Installed again when the user picks another language from the View menu.
+class Translators {
+public:
+    void install(const QString& language) {
+        QCoreApplication::removeTranslator(&m_qt);
+        QCoreApplication::removeTranslator(&m_ours);
+        const QLocale locale = language.isEmpty() ? QLocale() : QLocale(language);
+        QLocale::setDefault(locale);
+        if (m_qt.load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
+                      QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+            QCoreApplication::installTranslator(&m_qt);
+        if (m_ours.load(locale, QStringLiteral("rasterlab"), QStringLiteral("_"),
+                        QStringLiteral(":/i18n")))
+            QCoreApplication::installTranslator(&m_ours);
+    }
+
+private:
+    QTranslator m_qt;
+    QTranslator m_ours;
+};
+
+}  // namespace
 
 int main(int argc, char* argv[]) {
     rl::keepFrameMemory();
@@ -14,17 +47,36 @@ int main(int argc, char* argv[]) {
     QCoreApplication::setApplicationName(QStringLiteral("RasterLab"));
     QCoreApplication::setApplicationVersion(QStringLiteral(RASTERLAB_VERSION));
 
-    // Our strings in the system's language (pt_BR or English), and Qt's own dialogs too.
-    QTranslator qtTranslator;
-    if (qtTranslator.load(QLocale(), QStringLiteral("qtbase"), QStringLiteral("_"),
-                          QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        QCoreApplication::installTranslator(&qtTranslator);
-    QTranslator translator;
-    if (translator.load(QLocale(), QStringLiteral("rasterlab"), QStringLiteral("_"),
-                        QStringLiteral(":/i18n")))
-        QCoreApplication::installTranslator(&translator);
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QStringLiteral("The classic software rasterization pipeline, stage by stage."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument(
+        QStringLiteral("files"),
+        QStringLiteral("Course camera, lighting or object files, command files, or a folder."));
+    parser.process(app);
 
-    rasterlab::MainWindow window;
-    window.show();
+    Translators translators;
+    translators.install(QSettings().value(QStringLiteral("language")).toString());
+
+    // A new language builds the window again (every string is set when a widget is made);
+    // the files shown are opened again in it.
+    std::unique_ptr<rasterlab::MainWindow> window;
+    std::function<void(const QStringList&)> open = [&](const QStringList& files) {
+        window = std::make_unique<rasterlab::MainWindow>();
+        for (const QString& file : files)
+            if (!window->openPath(file)) break;
+        QObject::connect(window.get(), &rasterlab::MainWindow::languageChangeRequested,
+                         [&](const QString& language) {
+                             const QStringList shown = window->shownFiles();
+                             window->close();
+                             translators.install(language);
+                             QMetaObject::invokeMethod(
+                                 &app, [&open, shown] { open(shown); }, Qt::QueuedConnection);
+                         });
+        window->show();
+    };
+    open(parser.positionalArguments());
     return app.exec();
 }

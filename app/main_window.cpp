@@ -9,15 +9,23 @@
 #include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QProgressBar>
 #include <QSettings>
 #include <QStatusBar>
+#include <QStyle>
 #include <QTextBrowser>
+#include <QToolBar>
+#include <QToolButton>
 
 #include <cmath>
 
 #include "accuracy_panel.h"
+#include "breakpoints_view.h"
 #include "frame_image_view.h"
 #include "image_io.h"
+#include "replay_builder.h"
+#include "stage_strip.h"
+#include "stepping_bar.h"
 #include "zbuffer_view.h"
 
 namespace rasterlab {
@@ -67,35 +75,149 @@ QString displayName(const QString& source) {
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setObjectName(QStringLiteral("MainWindow"));
     setWindowTitle(tr("RasterLab"));
+    setAcceptDrops(true);
+    m_normalFont = QApplication::font();
+    m_normalPalette = QApplication::palette();
+    m_inspection = new Inspection(this);
     m_view = new FrameImageView(this);
     m_view->setObjectName(QStringLiteral("imageView"));
     setCentralWidget(m_view);
     m_controller = new RenderController(this);
+    m_replayBuilder = new ReplayBuilder(this);
     connect(m_controller, &RenderController::frameReady, this, &MainWindow::onFrameReady);
     connect(m_controller, &RenderController::failed, this, &MainWindow::onRenderFailed);
     connect(m_controller, &RenderController::busyChanged, this, &MainWindow::updateTimeLabel);
+    connect(m_controller, &RenderController::busyChanged, this, &MainWindow::updateBusy);
+    connect(m_replayBuilder, &ReplayBuilder::busyChanged, this, &MainWindow::updateBusy);
+    connect(m_replayBuilder, &ReplayBuilder::built, this,
+            [this](std::shared_ptr<const rl::FrameReplay> replay) {
+                std::optional<rl::ReplayCursor> at;
+                if (m_cursorToRestore) {
+                    // Stepping goes on where it was (the same fragment, for a new frame of the
+                    // same geometry: a light or material being edited).
+                    at = replay->valid(*m_cursorToRestore)
+                             ? *m_cursorToRestore
+                             : replay->atFragment(m_cursorToRestore->fragments);
+                }
+                m_inspection->setReplay(std::move(replay), at);
+            });
+    connect(m_replayBuilder, &ReplayBuilder::failed, this,
+            [this](std::shared_ptr<const rl::FrameTrace> frame, const QString& message) {
+                if (frame == m_inspection->frame()) m_inspection->setReplayError(message);
+            });
     connect(m_view, &FrameImageView::pixelHovered, this, &MainWindow::onPixelHovered);
+    connect(m_view, &FrameImageView::pixelPicked, m_inspection, &Inspection::pickPixel);
+    connect(m_inspection, &Inspection::cursorChanged, this, &MainWindow::onCursorChanged);
+    connect(m_inspection, &Inspection::selectionChanged, this, &MainWindow::updateOverlay);
+    connect(m_inspection, &Inspection::pixelPicked, this, &MainWindow::updateOverlay);
+    connect(m_inspection, &Inspection::presentationChanged, this, &MainWindow::updateOverlay);
+    connect(m_inspection, &Inspection::stageChanged, this, &MainWindow::showStageView);
+    connect(m_inspection, &Inspection::stageChanged, this, &MainWindow::updateOverlay);
+    connect(m_inspection, &Inspection::replayChanged, this, &MainWindow::updateBusy);
+    connect(m_inspection, &Inspection::breakpointHit, this, [this] {
+        statusBar()->showMessage(tr("Stopped at a breakpoint: %1").arg(m_inspection->positionText()),
+                                 8000);
+    });
 
     createDocks();
     createActions();
     m_pixelLabel = new QLabel(this);
+    m_pixelLabel->setObjectName(QStringLiteral("pixelLabel"));
     m_timeLabel = new QLabel(this);
+    m_busyBar = new QProgressBar(this);
+    m_busyBar->setRange(0, 0);  // busy, with no known end
+    m_busyBar->setMaximumWidth(120);
+    m_busyBar->setMaximumHeight(14);
+    m_busyBar->setVisible(false);
+    m_cancelButton = new QToolButton(this);
+    m_cancelButton->setObjectName(QStringLiteral("cancelButton"));
+    m_cancelButton->setText(tr("Cancel"));
+    m_cancelButton->setToolTip(tr("Stop preparing the stepping of this frame"));
+    m_cancelButton->setVisible(false);
+    connect(m_cancelButton, &QToolButton::clicked, this, [this] {
+        m_replayBuilder->cancel();
+        m_inspection->setReplayError(tr("cancelled"));
+        updateBusy();
+    });
     statusBar()->addWidget(m_pixelLabel, 1);
+    statusBar()->addPermanentWidget(m_busyBar);
+    statusBar()->addPermanentWidget(m_cancelButton);
     statusBar()->addPermanentWidget(m_timeLabel);
-    resize(1280, 860);
+    resize(1440, 900);
     m_defaultLayout = saveState(kLayoutVersion);
     restoreLayout();
+
+    m_reloadTimer.setSingleShot(true);
+    m_reloadTimer.setInterval(300);
+    connect(&m_watcher, &QFileSystemWatcher::fileChanged, this, &MainWindow::onWatchedFileChanged);
+    connect(&m_reloadTimer, &QTimer::timeout, this, &MainWindow::reloadChangedFiles);
 
     if (auto status = m_document.loadDefault(); !status)
         showError(QString::fromStdString(status.error().toString()));
     documentChanged();
 }
 
+QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWidget* widget,
+                                 Qt::DockWidgetArea area) {
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(name);
+    widget->setParent(dock);
+    dock->setWidget(widget);
+    addDockWidget(area, dock);
+    return dock;
+}
+
+void MainWindow::createDocks() {
+    auto* stageBar = new QToolBar(tr("Stages"), this);
+    stageBar->setObjectName(QStringLiteral("stageToolBar"));
+    m_stageStrip = new StageStrip(m_inspection, stageBar);
+    stageBar->addWidget(m_stageStrip);
+    addToolBar(Qt::TopToolBarArea, stageBar);
+    addToolBarBreak(Qt::TopToolBarArea);
+    auto* stepBar = new QToolBar(tr("Stepping"), this);
+    stepBar->setObjectName(QStringLiteral("steppingToolBar"));
+    m_steppingBar = new SteppingBar(m_inspection, stepBar);
+    stepBar->addWidget(m_steppingBar);
+    addToolBar(Qt::TopToolBarArea, stepBar);
+
+    m_messages = new QListWidget;
+    m_messages->setObjectName(QStringLiteral("messagesList"));
+    m_messages->setWordWrap(true);
+    QDockWidget* messagesDock =
+        addDock(tr("Messages"), QStringLiteral("messagesDock"), m_messages, Qt::BottomDockWidgetArea);
+
+    m_summary = new QTextBrowser;
+    m_summary->setObjectName(QStringLiteral("sceneSummary"));
+    QDockWidget* sceneDock =
+        addDock(tr("Scene"), QStringLiteral("sceneDock"), m_summary, Qt::LeftDockWidgetArea);
+    m_breakpoints = new BreakpointsView(m_inspection);
+    QDockWidget* breakpointsDock = addDock(tr("Breakpoints"), QStringLiteral("breakpointsDock"),
+                                           m_breakpoints, Qt::LeftDockWidgetArea);
+    tabifyDockWidget(sceneDock, breakpointsDock);
+    m_accuracy = new AccuracyPanel;
+    QDockWidget* accuracyDock = addDock(tr("Accuracy"), QStringLiteral("accuracyDock"), m_accuracy,
+                                        Qt::LeftDockWidgetArea);
+    tabifyDockWidget(sceneDock, accuracyDock);
+    sceneDock->raise();
+
+    m_zbuffer = new ZBufferView;
+    QDockWidget* zbufferDock =
+        addDock(tr("Z-buffer"), QStringLiteral("zbufferDock"), m_zbuffer, Qt::RightDockWidgetArea);
+    zbufferDock->raise();
+    resizeDocks({sceneDock}, {330}, Qt::Horizontal);
+    resizeDocks({zbufferDock}, {420}, Qt::Horizontal);
+    resizeDocks({messagesDock}, {110}, Qt::Vertical);
+}
+
 void MainWindow::createActions() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
-    QAction* openObject = file->addAction(tr("Open &Object..."), this,
+    QAction* open = file->addAction(tr("&Open..."), this, &MainWindow::openDialog);
+    open->setShortcut(QKeySequence::Open);
+    open->setObjectName(QStringLiteral("openAction"));
+    open->setToolTip(tr("A course camera, lighting or object file, or a command file"));
+    QAction* openObject = file->addAction(tr("Open O&bject..."), this,
                                           [this] { openPartDialog(SceneDocument::Part::Object); });
-    openObject->setShortcut(QKeySequence::Open);
+    openObject->setShortcut(QKeySequence(tr("Ctrl+Shift+B")));
     openObject->setObjectName(QStringLiteral("openObjectAction"));
     QAction* openCamera = file->addAction(tr("Open &Camera..."), this,
                                           [this] { openPartDialog(SceneDocument::Part::Camera); });
@@ -107,6 +229,8 @@ void MainWindow::createActions() {
         file->addAction(tr("Open Command &File..."), this, &MainWindow::openCommandFileDialog);
     openCommands->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
     openCommands->setObjectName(QStringLiteral("openCommandFileAction"));
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
     file->addAction(tr("&Default Scene"), this, [this] {
         if (auto status = m_document.loadDefault(); !status)
             showError(QString::fromStdString(status.error().toString()));
@@ -145,6 +269,24 @@ void MainWindow::createActions() {
     QAction* exportAction = file->addAction(tr("&Export PNG..."), this, &MainWindow::exportDialog);
     exportAction->setShortcut(QKeySequence(tr("Ctrl+E")));
     exportAction->setObjectName(QStringLiteral("exportAction"));
+    QMenu* exports = file->addMenu(tr("Export &More"));
+    exports->setObjectName(QStringLiteral("exportMenu"));
+    QAction* exportShown =
+        exports->addAction(tr("Image as &Displayed..."), this, &MainWindow::exportDisplayedDialog);
+    exportShown->setShortcut(QKeySequence(tr("Ctrl+Shift+E")));
+    exports->addAction(tr("&Colour Buffer at the Cursor..."), this, [this] { exportBufferDialog(0); });
+    exports->addAction(tr("D&epth Buffer at the Cursor..."), this, [this] { exportBufferDialog(1); });
+    exports->addAction(tr("&Normal Buffer..."), this, [this] { exportBufferDialog(2); });
+    m_exportViewMenu = exports->addMenu(tr("A &View as Displayed"));
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) {
+        m_exportViewMenu->addAction(dock->windowTitle(), this, [this, dock] {
+            const QString path = QFileDialog::getSaveFileName(
+                this, tr("Export View"), dock->objectName() + QStringLiteral(".png"),
+                tr("PNG images (*.png)"));
+            if (!path.isEmpty()) exportDock(dock->objectName(), path);
+        });
+    }
+    exports->addAction(tr("&Stepping Sequence..."), this, &MainWindow::exportSequenceDialog);
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
@@ -160,14 +302,91 @@ void MainWindow::createActions() {
     QAction* zoomOut = view->addAction(tr("Zoom &Out"), m_view, &FrameImageView::zoomOut);
     zoomOut->setShortcut(QKeySequence::ZoomOut);
     view->addSeparator();
-    for (QDockWidget* dock : findChildren<QDockWidget*>())
-        view->addAction(dock->toggleViewAction());
+    QMenu* panels = view->addMenu(tr("&Panels"));
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) panels->addAction(dock->toggleViewAction());
+    for (QToolBar* bar : findChildren<QToolBar*>()) panels->addAction(bar->toggleViewAction());
     QAction* reset = view->addAction(tr("Reset &Layout"), this, &MainWindow::resetLayout);
     reset->setObjectName(QStringLiteral("resetLayoutAction"));
     view->addSeparator();
     // The images a command file names (its png commands): one is shown at a time.
     m_imageMenu = view->addMenu(tr("&Image"));
     m_imageMenu->setObjectName(QStringLiteral("imageMenu"));
+    view->addSeparator();
+    m_presentationAction = view->addAction(tr("&Presentation Mode"));
+    m_presentationAction->setObjectName(QStringLiteral("presentationAction"));
+    m_presentationAction->setCheckable(true);
+    m_presentationAction->setShortcut(QKeySequence(Qt::Key_F5));
+    m_presentationAction->setToolTip(
+        tr("Larger text, thicker overlays, high contrast; the clicker's keys step (F5 or Esc)"));
+    connect(m_presentationAction, &QAction::toggled, this, &MainWindow::setPresentationMode);
+    auto* leave = new QAction(this);
+    leave->setShortcut(QKeySequence(Qt::Key_Escape));
+    connect(leave, &QAction::triggered, this, [this] { setPresentationMode(false); });
+    addAction(leave);
+    QMenu* language = view->addMenu(tr("&Language"));
+    language->setObjectName(QStringLiteral("languageMenu"));
+    auto* languages = new QActionGroup(language);
+    const QString current =
+        QSettings().value(QStringLiteral("language"), QString()).toString();
+    const std::pair<QString, QString> choices[] = {
+        {QString(), tr("The System's")},
+        {QStringLiteral("en"), QStringLiteral("English")},
+        {QStringLiteral("pt_BR"), QStringLiteral("Portugu\u00eas (Brasil)")}};
+    for (const auto& [code, label] : choices) {
+        QAction* action = language->addAction(label);
+        action->setCheckable(true);
+        action->setChecked(code == current);
+        action->setObjectName(QStringLiteral("language_") + (code.isEmpty() ? QStringLiteral("system") : code));
+        languages->addAction(action);
+        connect(action, &QAction::triggered, this, [this, code = code] {
+            if (!QCoreApplication::organizationName().isEmpty())
+                QSettings().setValue(QStringLiteral("language"), code);
+            emit languageChangeRequested(code);
+        });
+    }
+
+    QMenu* step = menuBar()->addMenu(tr("S&tep"));
+    step->setObjectName(QStringLiteral("stepMenu"));
+    step->addAction(m_steppingBar->toStartAction());
+    step->addAction(m_steppingBar->stepBackAction());
+    step->addAction(m_steppingBar->playAction());
+    step->addAction(m_steppingBar->stepForwardAction());
+    step->addAction(m_steppingBar->toEndAction());
+    step->addAction(m_steppingBar->continueAction());
+    step->addSeparator();
+    QMenu* granularity = step->addMenu(tr("Step &By"));
+    for (QAction* a : m_steppingBar->granularityActions()) granularity->addAction(a);
+    QMenu* stages = step->addMenu(tr("&Stage"));
+    for (rl::StageId stage : rl::kAllStages) {
+        const int n = static_cast<int>(stage) + 1;
+        QAction* a = stages->addAction(QStringLiteral("&%1 %2").arg(n).arg(StageStrip::stageName(stage)));
+        a->setShortcut(QKeySequence(Qt::ALT | (Qt::Key_0 + n)));
+        connect(a, &QAction::triggered, this, [this, stage] { m_inspection->setStage(stage); });
+    }
+    // The keys a presentation clicker sends (arrows, space): on the image, or everywhere in
+    // presentation mode (updateClickerKeys).
+    const std::pair<QKeySequence, QAction*> clicker[] = {
+        {QKeySequence(Qt::Key_Right), m_steppingBar->stepForwardAction()},
+        {QKeySequence(Qt::Key_Down), m_steppingBar->stepForwardAction()},
+        {QKeySequence(Qt::Key_Left), m_steppingBar->stepBackAction()},
+        {QKeySequence(Qt::Key_Up), m_steppingBar->stepBackAction()},
+        {QKeySequence(Qt::Key_Space), m_steppingBar->playAction()},
+        {QKeySequence(Qt::Key_Home), m_steppingBar->toStartAction()},
+        {QKeySequence(Qt::Key_End), m_steppingBar->toEndAction()},
+    };
+    for (const auto& [key, target] : clicker) {
+        auto* a = new QAction(this);
+        a->setShortcut(key);
+        connect(a, &QAction::triggered, target, &QAction::trigger);
+        m_clickerActions.append(a);
+    }
+    updateClickerKeys();
+    QAction* goTo = step->addAction(tr("Pick the Pixel Under the &Mouse"));
+    goTo->setShortcut(QKeySequence(tr("Ctrl+G")));
+    connect(goTo, &QAction::triggered, this, [this] {
+        const QPoint p = m_view->pixelAt(m_view->mapFromGlobal(QCursor::pos()));
+        if (p.x() >= 0) m_inspection->pickPixel(p);
+    });
 
     QMenu* shading = menuBar()->addMenu(tr("&Shading"));
     m_shadingMenu = shading;
@@ -182,7 +401,7 @@ void MainWindow::createActions() {
         QAction* action = shading->addAction(label);
         action->setCheckable(true);
         action->setChecked(model == m_document.settings().shading);
-        action->setShortcut(QKeySequence(tr("Alt+%1").arg(key++)));
+        action->setShortcut(QKeySequence(Qt::ALT | Qt::SHIFT | (Qt::Key_0 + key++)));
         action->setData(static_cast<int>(model));
         m_shadingGroup->addAction(action);
         connect(action, &QAction::triggered, this, [this, model = model] { setShading(model); });
@@ -210,39 +429,61 @@ void MainWindow::createActions() {
     }
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    QAction* keys = help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts);
+    keys->setShortcut(QKeySequence::HelpContents);
     help->addAction(tr("&About RasterLab"), this, &MainWindow::about);
+    refreshRecentMenu();
 }
 
-void MainWindow::createDocks() {
-    auto* messagesDock = new QDockWidget(tr("Messages"), this);
-    messagesDock->setObjectName(QStringLiteral("messagesDock"));
-    m_messages = new QListWidget(messagesDock);
-    m_messages->setObjectName(QStringLiteral("messagesList"));
-    m_messages->setWordWrap(true);
-    messagesDock->setWidget(m_messages);
-    addDockWidget(Qt::BottomDockWidgetArea, messagesDock);
+void MainWindow::updateClickerKeys() {
+    const bool presenting = m_inspection->presentation();
+    for (QAction* a : m_clickerActions) {
+        // Not presenting: the keys step only while the image has the focus (arrows elsewhere
+        // move through tables and fields); presenting, they step wherever the focus is.
+        removeAction(a);
+        m_view->removeAction(a);
+        a->setShortcutContext(presenting ? Qt::WindowShortcut : Qt::WidgetWithChildrenShortcut);
+        if (presenting)
+            addAction(a);
+        else
+            m_view->addAction(a);
+    }
+    m_view->setArrowsMovePick(!presenting);
+}
 
-    auto* sceneDock = new QDockWidget(tr("Scene"), this);
-    sceneDock->setObjectName(QStringLiteral("sceneDock"));
-    m_summary = new QTextBrowser(sceneDock);
-    m_summary->setObjectName(QStringLiteral("sceneSummary"));
-    sceneDock->setWidget(m_summary);
-    addDockWidget(Qt::RightDockWidgetArea, sceneDock);
-    auto* accuracyDock = new QDockWidget(tr("Accuracy"), this);
-    accuracyDock->setObjectName(QStringLiteral("accuracyDock"));
-    m_accuracy = new AccuracyPanel(accuracyDock);
-    accuracyDock->setWidget(m_accuracy);
-    addDockWidget(Qt::RightDockWidgetArea, accuracyDock);
-    tabifyDockWidget(sceneDock, accuracyDock);
-    auto* zbufferDock = new QDockWidget(tr("Z-buffer"), this);
-    zbufferDock->setObjectName(QStringLiteral("zbufferDock"));
-    m_zbuffer = new ZBufferView(zbufferDock);
-    zbufferDock->setWidget(m_zbuffer);
-    addDockWidget(Qt::RightDockWidgetArea, zbufferDock);
-    tabifyDockWidget(sceneDock, zbufferDock);
-    sceneDock->raise();
-    resizeDocks({sceneDock}, {330}, Qt::Horizontal);
-    resizeDocks({messagesDock}, {130}, Qt::Vertical);
+void MainWindow::setPresentationMode(bool on) {
+    if (on == m_inspection->presentation()) return;
+    {
+        const QSignalBlocker block(m_presentationAction);
+        m_presentationAction->setChecked(on);
+    }
+    if (on) {
+        QFont big = m_normalFont;
+        big.setPointSizeF(m_normalFont.pointSizeF() * 1.5);
+        QApplication::setFont(big);
+        // High contrast: white on black, yellow selection.
+        QPalette p;
+        p.setColor(QPalette::Window, Qt::black);
+        p.setColor(QPalette::WindowText, Qt::white);
+        p.setColor(QPalette::Base, QColor(16, 16, 16));
+        p.setColor(QPalette::AlternateBase, QColor(40, 40, 40));
+        p.setColor(QPalette::Text, Qt::white);
+        p.setColor(QPalette::Button, QColor(30, 30, 30));
+        p.setColor(QPalette::ButtonText, Qt::white);
+        p.setColor(QPalette::Highlight, QColor(255, 220, 0));
+        p.setColor(QPalette::HighlightedText, Qt::black);
+        p.setColor(QPalette::ToolTipBase, Qt::black);
+        p.setColor(QPalette::ToolTipText, Qt::white);
+        QApplication::setPalette(p);
+        statusBar()->showMessage(tr("Presentation mode: F5 or Esc to leave; Page Down, Right and "
+                                    "Space step and play"),
+                                 8000);
+    } else {
+        QApplication::setFont(m_normalFont);
+        QApplication::setPalette(m_normalPalette);
+    }
+    m_inspection->setPresentation(on);
+    updateClickerKeys();
 }
 
 void MainWindow::resetLayout() {
@@ -266,6 +507,8 @@ void MainWindow::restoreLayout() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    m_steppingBar->setPlaying(false);
+    if (m_inspection->presentation()) setPresentationMode(false);
     saveLayout();
     QMainWindow::closeEvent(event);
 }
@@ -277,6 +520,7 @@ bool MainWindow::openPart(SceneDocument::Part part, const QString& path) {
         return false;
     }
     m_lastError.clear();
+    addRecentFile(path);
     documentChanged();
     return true;
 }
@@ -310,6 +554,7 @@ bool MainWindow::openCommandFile(const QString& path) {
         return false;
     }
     m_lastError.clear();
+    addRecentFile(path);
     documentChanged();
     return true;
 }
@@ -335,6 +580,7 @@ void MainWindow::documentChanged() {
                               ? QFileInfo(m_document.commandFilePath()).fileName()
                               : displayName(m_document.source(SceneDocument::Part::Object));
     setWindowTitle(tr("%1 - RasterLab").arg(shown));
+    watchSources();
     refreshMessages();
     requestRender();
 }
@@ -380,10 +626,22 @@ void MainWindow::updateTimeLabel() {
     m_timeLabel->setText(text);
 }
 
+void MainWindow::updateBusy() {
+    const bool preparing = m_replayBuilder->isBusy();
+    m_busyBar->setVisible(m_controller->isBusy() || preparing);
+    m_cancelButton->setVisible(preparing);
+    m_busyBar->setToolTip(preparing ? tr("Preparing the stepping of this frame")
+                                    : tr("Rendering"));
+}
+
 void MainWindow::onFrameReady(const RenderedFrame& frame) {
+    // A new frame of the scene being stepped through: stepping goes on at the same place.
+    m_cursorToRestore.reset();
+    if (m_inspection->canStep() && !m_inspection->atEnd()) m_cursorToRestore = m_inspection->cursor();
     m_frame = frame;
-    m_view->setImage(frame.image);
     m_zbuffer->setFrame(frame.trace);
+    m_inspection->setFrame(frame.trace, frame.image);
+    m_replayBuilder->build(frame.trace);
     updateTimeLabel();
     refreshMessages();
     refreshSceneSummary();
@@ -393,6 +651,81 @@ void MainWindow::onRenderFailed(const QString& message) {
     // The last good image stays on screen, with the message beside it.
     showError(message);
     updateTimeLabel();
+}
+
+void MainWindow::onCursorChanged() {
+    m_view->setImage(m_inspection->image());
+    if (const rl::FrameReplay* replay = m_inspection->replay()) {
+        const std::uint32_t tested = m_inspection->cursor().fragments;
+        m_zbuffer->setBuffers(m_inspection->buffers(), tested, replay->writtenBefore(tested));
+    }
+    updateOverlay();
+}
+
+void MainWindow::updateOverlay() {
+    ImageOverlay o;
+    o.lineWidth = m_inspection->lineWidth();
+    o.pickedPixel = m_inspection->pickedPixel();
+    const auto& frame = m_inspection->frame();
+    if (!frame) {
+        m_view->setOverlay(o);
+        return;
+    }
+    o.sampleOffset = frame->scene->rules.sampleOffset;
+    const rl::Projection& projection = *frame->projection;
+    auto screenTriangle = [&](std::uint32_t t) {
+        const std::array<rl::dvec2, 3> p = rl::screenVertices(projection, projection.triangles[t]);
+        return std::array<QPointF, 3>{QPointF(p[0].x, p[0].y), QPointF(p[1].x, p[1].y),
+                                      QPointF(p[2].x, p[2].y)};
+    };
+    const rl::FrameReplay* replay = m_inspection->replay();
+    if (const rl::ReplayRow* row = m_inspection->currentRow(); row && !m_inspection->atEnd()) {
+        o.currentTriangle = screenTriangle(row->triangle);
+        o.scanline = row->y;
+        o.spanBegin = row->xBegin;
+        o.spanEnd = row->xEnd;
+        o.crossings = std::make_pair(row->xLeft, row->xRight);
+        // The current triangle's pixels tested so far (a bounded number).
+        const std::uint32_t end = m_inspection->cursor().fragments;
+        const std::uint32_t first = replay->rows()[replay->firstRow(row->triangle)].fragmentBegin;
+        for (std::uint32_t i = first; i < end && o.coveredPixels.size() < 40000; ++i)
+            o.coveredPixels.emplace_back(replay->fragments()[i].x, replay->fragments()[i].y);
+        if (const std::optional<std::uint32_t> f = m_inspection->currentFragment())
+            o.currentPixel = QPoint(replay->fragments()[*f].x, replay->fragments()[*f].y);
+    }
+    if (const std::optional<std::uint32_t> t = m_inspection->selectedTriangle();
+        t && *t < projection.triangles.size())
+        o.selectedTriangle = screenTriangle(*t);
+    for (const VertexRef& v : m_inspection->selectedVertices()) {
+        if (v.draw >= projection.draws.size()) continue;
+        const rl::DrawProjection& d = projection.draws[v.draw];
+        if (v.vertex < d.pScreen.size() && d.inFront[v.vertex])
+            o.vertices.emplace_back(d.pScreen[v.vertex].x, d.pScreen[v.vertex].y);
+    }
+    // Scan conversion seen as a stage: every span of the frame, before any depth test.
+    if (m_inspection->stage() == rl::StageId::ScanConversion &&
+        m_inspection->granularity() == rl::StepGranularity::Stage && frame->scan) {
+        QImage mask(frame->scene->width, frame->scene->height, QImage::Format_ARGB32);
+        mask.fill(Qt::transparent);
+        const QRgb tint = qRgba(40, 200, 90, 110);
+        for (const rl::Span& s : frame->scan->spans) {
+            auto* line = reinterpret_cast<QRgb*>(mask.scanLine(s.y));
+            for (int x = s.xBegin; x < s.xEnd; ++x) line[x] = tint;
+        }
+        o.coverage = mask;
+    }
+    m_view->setOverlay(std::move(o));
+}
+
+void MainWindow::showStageView(rl::StageId stage) {
+    static const std::array<const char*, rl::kStageCount> docks = {
+        "cameraBasisDock", "vertexTableDock", "normalsDock",        "projectionDock",
+        "scanlineDock",    "zbufferDock",     "pixelInspectorDock"};
+    auto* dock =
+        findChild<QDockWidget*>(QLatin1String(docks[static_cast<std::size_t>(stage)]));
+    if (!dock) return;
+    dock->show();
+    dock->raise();
 }
 
 void MainWindow::showError(const QString& message) {
@@ -449,31 +782,15 @@ void MainWindow::refreshSceneSummary() {
                                  rl::shadingModelName(m_document.settings().shading))));
     }
     html += QStringLiteral("<h3>%1</h3><table>").arg(tr("Stages"));
-    const QString stageNames[] = {tr("Camera basis"), tr("View transform"),  tr("Normals"),
-                                  tr("Projection"),   tr("Scan conversion"), tr("Depth test"),
-                                  tr("Shading")};
     for (rl::StageId stage : rl::kAllStages) {
         const auto i = static_cast<std::size_t>(stage);
-        const std::string skip = t.skipReason(stage);
+        const QString skip = StageStrip::skipReason(t, stage);
         html += QStringLiteral("<tr><td>%1</td><td align='right'>%2</td></tr>")
-                    .arg(stageNames[i], skip.empty()
-                                            ? tr("%1 ms").arg(t.stageMilliseconds[i], 0, 'f', 2)
-                                            : tr("skipped: %1").arg(QString::fromStdString(skip)));
+                    .arg(StageStrip::stageName(stage),
+                         skip.isEmpty() ? tr("%1 ms").arg(t.stageMilliseconds[i], 0, 'f', 2)
+                                        : tr("skipped: %1").arg(skip));
     }
     html += QStringLiteral("</table>");
-    const auto& b = *t.cameraBasis;
-    if (!b.skipped) {
-        html += QStringLiteral("<h3>%1</h3>").arg(tr("Camera basis"));
-        auto vec = [](const rl::dvec3& v) {
-            return QStringLiteral("(%1, %2, %3)")
-                .arg(v.x, 0, 'f', 4)
-                .arg(v.y, 0, 'f', 4)
-                .arg(v.z, 0, 'f', 4);
-        };
-        html += QStringLiteral("<p>U = %1<br>V = %2<br>N = %3<br>%4</p>")
-                    .arg(vec(b.u), vec(b.v), vec(b.n),
-                         tr("largest orthonormality residual: %1").arg(b.maxResidual(), 0, 'g', 3));
-    }
     html += QStringLiteral("<h3>%1</h3><p>").arg(tr("Counts"));
     html += tr("Triangles clipped at the near plane: %1; behind the camera: %2<br>")
                 .arg(t.projection->clipped)
@@ -497,13 +814,15 @@ void MainWindow::refreshSceneSummary() {
 }
 
 void MainWindow::onPixelHovered(QPoint pixel) {
-    if (pixel.x() < 0 || !m_frame.trace) {
+    const rl::DepthTest* buffers = m_inspection->buffers();
+    if (pixel.x() < 0 || !buffers) {
         m_pixelLabel->clear();
         return;
     }
-    const QColor c = m_frame.image.pixelColor(pixel);
-    const float z = m_frame.trace->depth->depth.at(pixel.x(), pixel.y());
-    const QString depth = std::isfinite(z) ? QString::number(z, 'g', 6) : tr("empty (+inf)");
+    // The values at the cursor: what the image shows now.
+    const QColor c = m_view->image().pixelColor(pixel);
+    const float z = buffers->depth.at(pixel.x(), pixel.y());
+    const QString depth = std::isfinite(z) ? QString::number(z, 'g', 7) : tr("empty (+inf)");
     m_pixelLabel->setText(tr("x %1, y %2   RGB (%3, %4, %5)   depth %6")
                               .arg(pixel.x())
                               .arg(pixel.y())
@@ -525,6 +844,13 @@ void MainWindow::openCommandFileDialog() {
     if (!path.isEmpty()) openCommandFile(path);
 }
 
+void MainWindow::openDialog() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open"), QString(),
+        tr("Scene files (*.byu *.cfg *.txt *.lux);;All files (*)"));
+    if (!path.isEmpty()) openPath(path);
+}
+
 void MainWindow::exportDialog() {
     // A command file names its images; a course scene's image is named after its object.
     QString name = QStringLiteral("rasterlab.png");
@@ -541,6 +867,29 @@ void MainWindow::about() {
                           "stage by stage: camera basis, view transform, normals, projection, "
                           "scan conversion, depth test and shading.</p>")
                            .arg(QStringLiteral(RASTERLAB_VERSION)));
+}
+
+void MainWindow::showShortcuts() {
+    QString html = QStringLiteral("<table cellspacing='6'>");
+    auto row = [&](const QString& keys, const QString& what) {
+        html += QStringLiteral("<tr><td><b>%1</b></td><td>%2</td></tr>").arg(keys, what);
+    };
+    row(tr("F10, Page Down, Right (on the image)"), tr("step forward"));
+    row(tr("Shift+F10, Page Up, Left (on the image)"), tr("step back"));
+    row(tr("F6, Space (on the image)"), tr("play / pause"));
+    row(tr("Ctrl+Home, Ctrl+End"), tr("jump to the start / the end of the frame"));
+    row(tr("F8"), tr("continue to the next breakpoint"));
+    row(tr("Ctrl+Shift+1 ... 5"), tr("step by stage, triangle, scanline, span, pixel"));
+    row(tr("Alt+1 ... 7"), tr("show a stage's view"));
+    row(tr("Click, arrows"), tr("pick a pixel, move it by one"));
+    row(tr("F5, Esc"), tr("presentation mode on / off (the arrows and Space then step)"));
+    row(tr("Ctrl+O, Ctrl+E, Ctrl+Shift+E"), tr("open, export the image, export it as displayed"));
+    row(tr("Ctrl+0, Ctrl+1, Ctrl++, Ctrl+-"), tr("fit, actual size, zoom in, zoom out"));
+    html += QStringLiteral("</table>");
+    QMessageBox box(QMessageBox::Information, tr("Keyboard Shortcuts"), html, QMessageBox::Close,
+                    this);
+    box.setTextFormat(Qt::RichText);
+    box.exec();
 }
 
 }  // namespace rasterlab

@@ -1,28 +1,48 @@
-// RasterLab's main window: the rendered image in the centre, a Messages dock with every
-// warning and error (file:line:col), a Scene dock with what was loaded and what each
-// stage did, an Accuracy dock (each mode against an exact reference), and menus to open each
-// course file on its own, pick the shading model and the rasterization rules, and export the
-// image. A file that fails to load leaves the previous scene on screen.
+// RasterLab's main window: the image at the stepping cursor in the centre, with overlays for
+// the triangle, scanline, span and pixel being drawn; the stage strip (the seven stages in
+// the lecture's order) and the stepping bar above it; a dock per stage view (camera basis,
+// vertex table, normals, projection, scanline, z-buffer, pixel inspector), the breakpoints,
+// the live editing panel, the scene summary, the accuracy report and the messages. Every dock
+// has an objectName, so the layout is saved and restored (View > Reset Layout puts it back).
+//
+// Files: Open (a course camera, lighting or object, each replacing its part alone, or a
+// command file; the kind is told from the file), recent files, drag and drop of files or a
+// folder, and a watch on the files shown: a file changed on disk (also when an editor saves
+// by renaming) is read again. A file that fails to load leaves the previous scene on screen,
+// with its file:line:col message in the Messages dock.
 #pragma once
 
 #include <QActionGroup>
+#include <QFileSystemWatcher>
 #include <QMainWindow>
+#include <QTimer>
 
 #include <memory>
 
+#include "inspection.h"
 #include "render_controller.h"
 #include "scene_document.h"
 
 class QLabel;
 class QMenu;
 class QListWidget;
+class QProgressBar;
 class QTextBrowser;
+class QToolButton;
 
 namespace rasterlab {
 
 class AccuracyPanel;
+class BreakpointsView;
 class FrameImageView;
+class ReplayBuilder;
+class StageStrip;
+class SteppingBar;
 class ZBufferView;
+
+// What a file holds, told from its name and its text.
+enum class FileKind { Camera, Lighting, Object, CommandFile, Unknown };
+FileKind detectFileKind(const QString& path);
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -32,6 +52,9 @@ public:
     // Replaces one part of the scene from a file; returns false (and shows the error,
     // keeping the scene) when the file is bad.
     bool openPart(SceneDocument::Part part, const QString& path);
+    // Opens any file: a course part or a command file, told from the file; a folder opens
+    // the course files it holds. False (the error shown, the scene kept) when it fails.
+    bool openPath(const QString& path);
     // Reads course cameras / lighting in a layout from now on (Auto: detected), re-reading
     // the current file; false (the error shown, the scene kept) when it does not fit.
     bool setCameraLayout(rl::CameraLayout layout);
@@ -40,56 +63,109 @@ public:
     bool openCommandFile(const QString& path);
     void setShading(rl::ShadingModel model);
     void setRules(rl::RuleSet rules);
+    // The final image of the frame shown.
     bool exportImage(const QString& path);
+    // The image as displayed (at the cursor, with its overlays), the raw buffers at the cursor,
+    // a dock's view as displayed, and the frame stepped at the current granularity to numbered
+    // PNGs (at most maxImages); false with the error shown when a file cannot be written.
+    bool exportDisplayed(const QString& path);
+    bool exportDepthBuffer(const QString& path);
+    bool exportNormalBuffer(const QString& path);
+    bool exportDock(const QString& dockName, const QString& path);
+    int exportSequence(const QString& folder, int maxImages);
 
     const SceneDocument& document() const { return m_document; }
     std::shared_ptr<const rl::FrameTrace> currentFrame() const { return m_frame.trace; }
-    const QImage& currentImage() const { return m_frame.image; }
+    const QImage& currentImage() const { return m_frame.image; }  // the frame's final image
     FrameImageView* imageView() const { return m_view; }
     QListWidget* messages() const { return m_messages; }
     RenderController* controller() const { return m_controller; }
+    ReplayBuilder* replayBuilder() const { return m_replayBuilder; }
+    Inspection* inspection() const { return m_inspection; }
     AccuracyPanel* accuracyPanel() const { return m_accuracy; }
     ZBufferView* zbufferView() const { return m_zbuffer; }
+    StageStrip* stageStrip() const { return m_stageStrip; }
+    SteppingBar* steppingBar() const { return m_steppingBar; }
+    BreakpointsView* breakpointsView() const { return m_breakpoints; }
+    QStringList recentFiles() const;
+    QStringList watchedFiles() const { return m_watcher.files(); }
+    // The files the scene shown was read from (built-in parts left out).
+    QStringList shownFiles() const;
+    bool presentationMode() const { return m_inspection->presentation(); }
+    void setPresentationMode(bool on);
     // The docks as they are when the window opens (View > Reset Layout).
     void resetLayout();
 
     // The layout (geometry, docks) is kept in QSettings under layout/, with this version: a
     // layout saved by another version is not restored. Only when the application has an
     // organization name (the program sets one; tests choose theirs).
-    static constexpr int kLayoutVersion = 1;
+    static constexpr int kLayoutVersion = 2;
+    static constexpr int kMaxRecentFiles = 10;
+
+signals:
+    // The user chose another language ("", "en" or "pt_BR"): the program builds the window
+    // again in it.
+    void languageChangeRequested(const QString& language);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private:
     void saveLayout() const;
     void restoreLayout();
     void createActions();
     void createDocks();
+    QDockWidget* addDock(const QString& title, const QString& name, QWidget* widget,
+                         Qt::DockWidgetArea area);
     void requestRender();
     void updateTimeLabel();
+    void updateBusy();
     void onFrameReady(const RenderedFrame& frame);
     void onRenderFailed(const QString& message);
+    void onCursorChanged();
+    void updateOverlay();
+    void showStageView(rl::StageId stage);
     void showError(const QString& message);
     void refreshMessages();
     void refreshSceneSummary();
     void onPixelHovered(QPoint pixel);
+    void openDialog();
     void openPartDialog(SceneDocument::Part part);
     void openCommandFileDialog();
-    void documentChanged();  // menus, title, messages, and a new render
+    void documentChanged();  // menus, title, messages, watched files, and a new render
+    void addRecentFile(const QString& path);
+    void refreshRecentMenu();
+    void watchSources();
+    void onWatchedFileChanged(const QString& path);
+    void reloadChangedFiles();
     void exportDialog();
+    void exportDisplayedDialog();
+    void exportBufferDialog(int which);
+    void exportSequenceDialog();
     void about();
+    void showShortcuts();
+    void updateClickerKeys();
 
     SceneDocument m_document;
     RenderController* m_controller = nullptr;
+    ReplayBuilder* m_replayBuilder = nullptr;
+    Inspection* m_inspection = nullptr;
     RenderedFrame m_frame;
     QString m_lastError;
+    std::optional<rl::ReplayCursor> m_cursorToRestore;
 
     FrameImageView* m_view = nullptr;
+    StageStrip* m_stageStrip = nullptr;
+    SteppingBar* m_steppingBar = nullptr;
+    BreakpointsView* m_breakpoints = nullptr;
     QListWidget* m_messages = nullptr;
     QTextBrowser* m_summary = nullptr;
     QLabel* m_pixelLabel = nullptr;
     QLabel* m_timeLabel = nullptr;  // the last frame's time; "rendering..." while busy
+    QProgressBar* m_busyBar = nullptr;
+    QToolButton* m_cancelButton = nullptr;
     QActionGroup* m_shadingGroup = nullptr;
     QActionGroup* m_rulesGroup = nullptr;
     AccuracyPanel* m_accuracy = nullptr;
@@ -97,6 +173,17 @@ private:
     QByteArray m_defaultLayout;
     QMenu* m_shadingMenu = nullptr;
     QMenu* m_imageMenu = nullptr;
+    QMenu* m_recentMenu = nullptr;
+    QMenu* m_exportViewMenu = nullptr;
+    QList<QAction*> m_clickerActions;  // arrows and space: stepping in front of a class
+    QAction* m_presentationAction = nullptr;
+    QFont m_normalFont;
+    QPalette m_normalPalette;
+
+    QFileSystemWatcher m_watcher;
+    QTimer m_reloadTimer;  // editors write in several steps: read once they are done
+    QStringList m_changedFiles;
+    int m_reloadAttempts = 0;
 };
 
 }  // namespace rasterlab

@@ -27,6 +27,8 @@ const char* stepGranularityName(StepGranularity granularity) {
 
 namespace {
 
+constexpr std::uint32_t kPrefixStep = 1024;
+
 // The frame's shading stage run on a list of (triangle, barycentrics) instead of a depth
 // buffer: the fragments are laid out in rows of a stand-in buffer, so the colour of each is
 // worked out by the very code (and kernels) that shaded the frame. A fragment's colour
@@ -127,6 +129,12 @@ Result<std::shared_ptr<const FrameReplay>> FrameReplay::build(
     }
     replay->m_finalWriter = std::move(writer);
     replay->m_written = written.size();
+    replay->m_writtenPrefix.assign(fragments.size() / kPrefixStep + 1, 0);
+    for (std::size_t i = 0, n = 0; i < fragments.size(); ++i) {
+        if (i % kPrefixStep == 0)
+            replay->m_writtenPrefix[i / kPrefixStep] = static_cast<std::uint32_t>(n);
+        n += fragments[i].verdict == FragmentVerdict::Written ? 1 : 0;
+    }
     if (cancelled()) return makeError(ErrorCode::Usage, where, "cancelled");
 
     // The colour each written fragment writes, by the frame's own shading stage.
@@ -135,6 +143,14 @@ Result<std::shared_ptr<const FrameReplay>> FrameReplay::build(
     const std::vector<vec3>& colours = shaded.colour.pixels();
     for (std::size_t k = 0; k < written.size(); ++k) fragments[written[k]].colour = colours[k];
     return std::shared_ptr<const FrameReplay>(std::move(replay));
+}
+
+std::size_t FrameReplay::writtenBefore(std::uint32_t count) const {
+    count = std::min<std::uint32_t>(count, static_cast<std::uint32_t>(m_fragments.size()));
+    std::size_t n = m_writtenPrefix.empty() ? 0 : m_writtenPrefix[count / kPrefixStep];
+    for (std::uint32_t i = count / kPrefixStep * kPrefixStep; i < count; ++i)
+        n += m_fragments[i].verdict == FragmentVerdict::Written ? 1 : 0;
+    return n;
 }
 
 bool FrameReplay::valid(ReplayCursor c) const {

@@ -107,6 +107,8 @@ public:
     // The fragment holding each pixel at the end of the frame, or kNoFragment.
     const Image<std::uint32_t>& finalWriter() const { return m_finalWriter; }
     std::size_t writtenCount() const { return m_written; }
+    // How many of the first `count` fragments were written.
+    std::size_t writtenBefore(std::uint32_t count) const;
 
     ReplayCursor start() const { return {}; }
     ReplayCursor end() const {
@@ -154,6 +156,7 @@ private:
     std::vector<ReplayFragment> m_fragments;
     Image<std::uint32_t> m_finalWriter;
     std::size_t m_written = 0;
+    std::vector<std::uint32_t> m_writtenPrefix;  // written among the first 1024 k fragments
 };
 
 // The buffers at a cursor: the depth buffer, the fragment holding each pixel and the image

@@ -209,10 +209,10 @@ void scanTriangles(const Scene& scene, const Projection& projection, std::size_t
                     RL_PROBE_HOOK(probe.onSpan(triangle, span, left.exactX(), right.exactX()));
                 }
                 // Every row walked, empty ones included (the stepper's scanlines).
-                RL_PROBE_HOOK(const auto first = static_cast<std::int32_t>(std::min(begin, width));
-                              probe.onRow(triangle, y, left.exactX(), right.exactX(), first,
+                RL_PROBE_HOOK(const auto xFirst = static_cast<std::int32_t>(std::min(begin, width));
+                              probe.onRow(triangle, y, left.exactX(), right.exactX(), xFirst,
                                           static_cast<std::int32_t>(
-                                              std::clamp<std::int64_t>(end, first, width))));
+                                              std::clamp<std::int64_t>(end, xFirst, width))));
                 longWalker.nextRow();
                 shortWalker.nextRow();
             }

@@ -452,7 +452,7 @@ void TestMainWindow::exportToMissingFolder() {
 void TestMainWindow::docks() {
     MainWindow window;
     const QList<QDockWidget*> docks = window.findChildren<QDockWidget*>();
-    QCOMPARE(docks.size(), 4);
+    QCOMPARE(docks.size(), 5);
     std::set<QString> names;
     for (const QDockWidget* dock : docks) {
         QVERIFY2(!dock->objectName().isEmpty(), qPrintable(dock->windowTitle()));
@@ -460,8 +460,8 @@ void TestMainWindow::docks() {
         names.insert(dock->objectName());
     }
     const std::set<QString> expected = {QStringLiteral("messagesDock"), QStringLiteral("sceneDock"),
-                                        QStringLiteral("accuracyDock"),
-                                        QStringLiteral("zbufferDock")};
+                                        QStringLiteral("accuracyDock"), QStringLiteral("zbufferDock"),
+                                        QStringLiteral("breakpointsDock")};
     QCOMPARE(names, expected);
     const auto* messagesDock = window.findChild<QDockWidget*>(QStringLiteral("messagesDock"));
     QVERIFY(messagesDock);

@@ -91,6 +91,10 @@ private slots:
         QCOMPARE(rows.size(), std::size_t(19));  // 5 + 5 + 5 + 4
         QCOMPARE(fragments.size(), std::size_t(49));
         QCOMPARE(replay->writtenCount(), std::size_t(33));
+        QCOMPARE(replay->writtenBefore(0), std::size_t(0));
+        QCOMPARE(replay->writtenBefore(20), std::size_t(15));  // triangle 0, none of 1
+        QCOMPARE(replay->writtenBefore(31), std::size_t(16));
+        QCOMPARE(replay->writtenBefore(49), std::size_t(33));
         // Triangle 0, row 2: pixels 0..2, fragments 9..11.
         QCOMPARE(rows[2].y, 2);
         QCOMPARE(rows[2].xBegin, 0);
@@ -288,6 +292,13 @@ private slots:
             colourImage(*trace->shading, *trace->depth, scene->conventions);
         QCOMPARE(replay->fragments().size(), trace->depth->fragments);
         QCOMPARE(replay->writtenCount(), trace->depth->passed);
+        QCOMPARE(replay->writtenBefore(static_cast<std::uint32_t>(replay->fragments().size())),
+                 trace->depth->passed);
+        const auto half = static_cast<std::uint32_t>(replay->fragments().size() / 2 + 3);
+        std::size_t written = 0;
+        for (std::uint32_t i = 0; i < half; ++i)
+            written += replay->fragments()[i].verdict == FragmentVerdict::Written ? 1 : 0;
+        QCOMPARE(replay->writtenBefore(half), written);
         // Forward to the end, by spans.
         ReplayState state(replay);
         while (state.cursor() != replay->end())

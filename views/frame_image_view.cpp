@@ -1,7 +1,9 @@
 #include "frame_image_view.h"
 
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QPainterPath>
 #include <QWheelEvent>
 
 #include <algorithm>
@@ -113,6 +115,130 @@ void FrameImageView::paintEvent(QPaintEvent*) {
                     QPointF(origin.x() + (x + 0.5) * m_zoom, origin.y() + (y + 0.5) * m_zoom), r,
                     r);
     }
+    paintOverlay(painter);
+}
+
+void FrameImageView::setOverlay(ImageOverlay overlay) {
+    m_overlay = std::move(overlay);
+    update();
+}
+
+QPointF FrameImageView::widgetPoint(const QPointF& imagePoint) const {
+    return imageOrigin() + imagePoint * m_zoom;
+}
+
+void FrameImageView::paintOverlay(QPainter& painter) const {
+    const ImageOverlay& o = m_overlay;
+    const double w = o.lineWidth;
+    const QPointF origin = imageOrigin();
+    auto pixelRect = [&](int x, int y, int n = 1) {
+        return QRectF(origin.x() + x * m_zoom, origin.y() + y * m_zoom, n * m_zoom, m_zoom);
+    };
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    if (!o.coverage.isNull()) {
+        painter.setRenderHint(QPainter::SmoothPixmapTransform, false);
+        painter.drawImage(QRectF(origin, QSizeF(m_image.width() * m_zoom, m_image.height() * m_zoom)),
+                          o.coverage);
+    }
+    if (o.scanline >= 0) {
+        // The row being walked, and the span on it.
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(QColor(255, 210, 0, 45));
+        painter.drawRect(pixelRect(0, o.scanline, m_image.width()));
+        if (o.spanEnd > o.spanBegin) {
+            painter.setBrush(Qt::NoBrush);
+            painter.setPen(QPen(QColor(255, 140, 0), w));
+            painter.drawRect(pixelRect(o.spanBegin, o.scanline, o.spanEnd - o.spanBegin));
+        }
+        if (o.crossings) {
+            // Where the edges cross the row's sample line.
+            const double ys = o.scanline + o.sampleOffset;
+            painter.setPen(QPen(QColor(255, 140, 0), w));
+            for (double x : {o.crossings->first, o.crossings->second}) {
+                const QPointF p = widgetPoint({x, ys});
+                painter.drawLine(p + QPointF(0, -6 * w), p + QPointF(0, 6 * w));
+            }
+        }
+    }
+    if (m_zoom >= 4.0 && !o.coveredPixels.empty()) {
+        // The samples of the current triangle's pixels tested so far.
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(QColor(60, 220, 90, 220));
+        const double r = std::max(1.5, m_zoom / 10.0);
+        for (const QPoint& p : o.coveredPixels)
+            painter.drawEllipse(widgetPoint({p.x() + o.sampleOffset, p.y() + o.sampleOffset}), r, r);
+    }
+    auto outline = [&](const std::array<QPointF, 3>& t, const QColor& colour) {
+        QPainterPath path;
+        path.moveTo(widgetPoint(t[0]));
+        path.lineTo(widgetPoint(t[1]));
+        path.lineTo(widgetPoint(t[2]));
+        path.closeSubpath();
+        painter.setBrush(Qt::NoBrush);
+        painter.setPen(QPen(QColor(0, 0, 0, 160), w + 2));
+        painter.drawPath(path);
+        painter.setPen(QPen(colour, w));
+        painter.drawPath(path);
+    };
+    if (o.selectedTriangle) outline(*o.selectedTriangle, QColor(0, 220, 255));
+    if (o.currentTriangle) outline(*o.currentTriangle, QColor(255, 230, 0));
+    for (const QPointF& v : o.vertices) {
+        painter.setBrush(QColor(0, 220, 255));
+        painter.setPen(QPen(Qt::black, 1));
+        painter.drawEllipse(widgetPoint(v), 3 * w, 3 * w);
+    }
+    auto square = [&](QPoint p, const QColor& colour) {
+        if (p.x() < 0) return;
+        QRectF r = pixelRect(p.x(), p.y());
+        const double grow = std::max(0.0, 4.0 - m_zoom);  // visible when small
+        r.adjust(-grow, -grow, grow, grow);
+        painter.setBrush(Qt::NoBrush);
+        painter.setPen(QPen(Qt::black, w + 2));
+        painter.drawRect(r);
+        painter.setPen(QPen(colour, w));
+        painter.drawRect(r);
+    };
+    square(o.currentPixel, QColor(255, 60, 60));
+    square(o.pickedPixel, QColor(255, 0, 255));
+}
+
+std::optional<QPoint> FrameImageView::arrowStep(int key) {
+    switch (key) {
+        case Qt::Key_Left:
+            return QPoint(-1, 0);
+        case Qt::Key_Right:
+            return QPoint(1, 0);
+        case Qt::Key_Up:
+            return QPoint(0, -1);
+        case Qt::Key_Down:
+            return QPoint(0, 1);
+        default:
+            return std::nullopt;
+    }
+}
+
+bool FrameImageView::event(QEvent* event) {
+    // With a pixel picked, the arrow keys move it (before any window shortcut steps).
+    if (event->type() == QEvent::ShortcutOverride && m_arrowsMovePick &&
+        m_overlay.pickedPixel.x() >= 0) {
+        auto* key = static_cast<QKeyEvent*>(event);
+        if (key->modifiers() == Qt::NoModifier && arrowStep(key->key())) {
+            event->accept();
+            return true;
+        }
+    }
+    return QWidget::event(event);
+}
+
+void FrameImageView::keyPressEvent(QKeyEvent* event) {
+    const std::optional<QPoint> step = arrowStep(event->key());
+    if (step && m_arrowsMovePick && m_overlay.pickedPixel.x() >= 0 && !m_image.isNull()) {
+        const QPoint p = m_overlay.pickedPixel + *step;
+        emit pixelPicked(QPoint(std::clamp(p.x(), 0, m_image.width() - 1),
+                                std::clamp(p.y(), 0, m_image.height() - 1)));
+        return;
+    }
+    QWidget::keyPressEvent(event);
 }
 
 void FrameImageView::resizeEvent(QResizeEvent*) {

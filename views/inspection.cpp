@@ -18,6 +18,7 @@ void Inspection::setFrame(std::shared_ptr<const rl::FrameTrace> frame, QImage im
     m_frameImage = std::move(image);
     m_replay.reset();
     m_state.reset();
+    m_replayError.clear();
     m_hit.reset();
     m_hitFrom.reset();
     const bool onImage = m_frame && m_picked.x() >= 0 && m_picked.x() < m_frame->scene->width &&
@@ -49,6 +50,11 @@ void Inspection::setReplay(std::shared_ptr<const rl::FrameReplay> replay,
     }
     emit replayChanged();
     emit cursorChanged();
+}
+
+void Inspection::setReplayError(const QString& message) {
+    m_replayError = message;
+    emit replayChanged();
 }
 
 void Inspection::setStage(rl::StageId stage) {

@@ -46,6 +46,10 @@ public:
     const rl::FrameReplay* replay() const { return m_replay.get(); }
     std::shared_ptr<const rl::FrameReplay> replayPtr() const { return m_replay; }
     bool canStep() const { return m_state != nullptr; }
+    // Why the frame shown cannot be stepped through (too many fragments ...); empty while its
+    // replay is being built or once it is there.
+    QString replayError() const { return m_replayError; }
+    void setReplayError(const QString& message);
 
     // The stage selected in the strip.
     rl::StageId stage() const { return m_stage; }
@@ -133,6 +137,7 @@ private:
     std::vector<VertexRef> m_vertices;
     bool m_presentation = false;
     QImage m_frameImage;  // the frame's image when there is no replay
+    QString m_replayError;
 };
 
 }  // namespace rasterlab

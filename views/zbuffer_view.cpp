@@ -182,7 +182,12 @@ ZBufferView::ZBufferView(QWidget* parent) : QWidget(parent) {
     form->addRow(tr("Nearest (white / red):"), m_nearest);
     form->addRow(tr("Farthest (dark / blue):"), m_farthest);
     form->addRow(tr("Colours:"), m_paletteBox);
+    m_explanation = new QLabel(this);
+    m_explanation->setObjectName(QStringLiteral("zbufferExplanation"));
+    m_explanation->setWordWrap(true);
+    m_explanation->setTextFormat(Qt::RichText);
     auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_explanation);
     layout->addWidget(m_view, 1);
     layout->addWidget(m_histogramWidget);
     layout->addWidget(m_rangeLabel);
@@ -204,7 +209,51 @@ ZBufferView::ZBufferView(QWidget* parent) : QWidget(parent) {
 
 void ZBufferView::setFrame(std::shared_ptr<const rl::FrameTrace> frame) {
     m_frame = std::move(frame);
+    m_buffers = nullptr;
+    m_tested = m_frame && m_frame->depth ? m_frame->depth->fragments : 0;
+    m_written = m_frame && m_frame->depth ? m_frame->depth->passed : 0;
     refresh();
+}
+
+void ZBufferView::setBuffers(const rl::DepthTest* buffers, std::size_t tested,
+                             std::size_t written) {
+    m_buffers = buffers;
+    m_tested = tested;
+    m_written = written;
+    if (!isVisible()) {
+        m_stale = true;
+        return;
+    }
+    refresh();
+}
+
+void ZBufferView::showEvent(QShowEvent* event) {
+    QWidget::showEvent(event);
+    if (m_stale) refresh();
+}
+
+const rl::DepthTest* ZBufferView::shown() const {
+    if (m_buffers) return m_buffers;
+    return m_frame ? m_frame->depth.get() : nullptr;
+}
+
+QString ZBufferView::explanation() const {
+    if (!m_frame || !m_frame->scene) return {};
+    const rl::Conventions& c = m_frame->scene->conventions;
+    const QString clear = std::isinf(c.depthClear) ? tr("+&infin;")
+                                                   : QString::number(double(c.depthClear));
+    const QString test = c.depthWinsOnTie ? QStringLiteral("z &le; z<sub>stored</sub>")
+                                          : QStringLiteral("z &lt; z<sub>stored</sub>");
+    const QString what = c.depth == rl::DepthSource::ViewZ ? tr("the view-space z of P'")
+                                                           : tr("the NDC z");
+    return tr("<b>Z-buffer.</b> Every pixel starts at %1. Each fragment's depth "
+              "z = &alpha;z<sub>1</sub> + &beta;z<sub>2</sub> + &gamma;z<sub>3</sub> (%2) is "
+              "compared with the stored one; it is written, with its colour, only when %3. "
+              "So far: %4 fragments tested, %5 written, %6 rejected.")
+        .arg(clear, what, test)
+        .arg(m_tested)
+        .arg(m_written)
+        .arg(m_tested - std::min(m_tested, m_written));
 }
 
 bool ZBufferView::automaticRange() const {
@@ -246,6 +295,8 @@ void ZBufferView::setPalette(DepthPalette palette) {
 }
 
 void ZBufferView::refresh() {
+    m_stale = false;
+    m_explanation->setText(explanation());
     if (!m_frame || !m_frame->depth) {
         m_image = QImage();
         m_histogram = DepthHistogram{};
@@ -254,7 +305,7 @@ void ZBufferView::refresh() {
         m_rangeLabel->setText(tr("No frame yet."));
         return;
     }
-    const rl::DepthTest& depth = *m_frame->depth;
+    const rl::DepthTest& depth = *shown();
     const DepthRange drawn = coveredDepthRange(depth);
     if (automaticRange()) {
         m_range = drawn;
@@ -286,7 +337,7 @@ void ZBufferView::refresh() {
 
 QString ZBufferView::valueText(QPoint pixel) const {
     if (!m_frame || !m_frame->depth) return {};
-    const rl::DepthTest& depth = *m_frame->depth;
+    const rl::DepthTest& depth = *shown();
     if (!depth.depth.contains(pixel.x(), pixel.y())) return {};
     const std::uint32_t t = depth.triangle.at(pixel.x(), pixel.y());
     const float z = depth.depth.at(pixel.x(), pixel.y());

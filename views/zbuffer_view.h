@@ -71,6 +71,11 @@ public:
     explicit ZBufferView(QWidget* parent = nullptr);
 
     void setFrame(std::shared_ptr<const rl::FrameTrace> frame);
+    // The buffers at the stepping cursor (they must live until the next call), or null for the
+    // frame's own; `tested` and `written` fragments so far. While the view is hidden the
+    // image waits until it is shown.
+    void setBuffers(const rl::DepthTest* buffers, std::size_t tested, std::size_t written);
+    QString explanation() const;
     void setAutomaticRange(bool automatic);
     void setManualRange(float nearest, float farthest);  // also turns the automatic range off
     void setPalette(DepthPalette palette);
@@ -84,11 +89,19 @@ public:
     QString valueText(QPoint pixel) const;
     FrameImageView* imageView() const { return m_view; }
 
+protected:
+    void showEvent(QShowEvent* event) override;
+
 private:
     void refresh();
     void showValue(QPoint pixel);
+    const rl::DepthTest* shown() const;
 
     std::shared_ptr<const rl::FrameTrace> m_frame;
+    const rl::DepthTest* m_buffers = nullptr;
+    std::size_t m_tested = 0, m_written = 0;
+    bool m_stale = false;
+    QLabel* m_explanation = nullptr;
     DepthRange m_range;
     DepthPalette m_palette = DepthPalette::Grey;
     QImage m_image;

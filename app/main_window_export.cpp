@@ -1,0 +1,168 @@
+// The main window's exports: the image as displayed (at the cursor, with its overlays), the
+// raw buffers, any dock's view as displayed, and a stepping sequence as numbered PNGs.
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QProgressDialog>
+#include <QStatusBar>
+
+#include "frame_image_view.h"
+#include "image_io.h"
+#include "main_window.h"
+#include "output_image.h"
+#include "renderer.h"
+
+namespace rasterlab {
+
+namespace {
+
+bool saveOrShow(MainWindow* window, const QImage& image, const QString& path, QString* error) {
+    if (image.isNull()) {
+        *error = MainWindow::tr("nothing has been rendered yet");
+        return false;
+    }
+    (void)window;
+    return savePng(image, path, error);
+}
+
+}  // namespace
+
+bool MainWindow::exportDisplayed(const QString& path) {
+    QString error;
+    if (!saveOrShow(this, m_view->grab().toImage(), path, &error)) {
+        showError(tr("%1: cannot export the image: %2").arg(path, error));
+        return false;
+    }
+    statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).absoluteFilePath()), 5000);
+    return true;
+}
+
+bool MainWindow::exportDepthBuffer(const QString& path) {
+    const rl::DepthTest* buffers = m_inspection->buffers();
+    QString error;
+    QImage image;
+    if (buffers) image = toQImage(rl::depthImage(buffers->depth, rl::depthRange(buffers->depth)));
+    if (!saveOrShow(this, image, path, &error)) {
+        showError(tr("%1: cannot export the depth buffer: %2").arg(path, error));
+        return false;
+    }
+    statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).absoluteFilePath()), 5000);
+    return true;
+}
+
+bool MainWindow::exportNormalBuffer(const QString& path) {
+    // The frame again, keeping the normal each pixel was lit with.
+    QString error;
+    QImage image;
+    if (m_frame.trace) {
+        rl::RenderOptions options;
+        options.shading.keepNormals = true;
+        auto frame = rl::renderFrame(m_frame.trace->scene, options);
+        if (!frame) {
+            error = QString::fromStdString(frame.error().toString());
+        } else {
+            image = toQImage(rl::normalImage(frame->shading->normal, *frame->depth));
+        }
+    }
+    if (error.isEmpty() && !saveOrShow(this, image, path, &error)) {
+        showError(tr("%1: cannot export the normal buffer: %2").arg(path, error));
+        return false;
+    }
+    if (!error.isEmpty()) {
+        showError(tr("%1: cannot export the normal buffer: %2").arg(path, error));
+        return false;
+    }
+    statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).absoluteFilePath()), 5000);
+    return true;
+}
+
+bool MainWindow::exportDock(const QString& dockName, const QString& path) {
+    auto* dock = findChild<QDockWidget*>(dockName);
+    QString error;
+    if (!dock || !dock->widget()) {
+        showError(tr("%1: cannot export the view: there is no view %2").arg(path, dockName));
+        return false;
+    }
+    if (!saveOrShow(this, dock->widget()->grab().toImage(), path, &error)) {
+        showError(tr("%1: cannot export the view: %2").arg(path, error));
+        return false;
+    }
+    statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).absoluteFilePath()), 5000);
+    return true;
+}
+
+int MainWindow::exportSequence(const QString& folder, int maxImages) {
+    if (!m_inspection->canStep() && m_inspection->granularity() != rl::StepGranularity::Stage) {
+        showError(tr("%1: cannot export the steps: the frame cannot be stepped through yet")
+                      .arg(folder));
+        return 0;
+    }
+    if (!QDir().mkpath(folder)) {
+        showError(tr("%1: cannot create the folder").arg(folder));
+        return 0;
+    }
+    const rl::ReplayCursor saved = m_inspection->cursor();
+    const rl::StageId savedStage = m_inspection->stage();
+    QProgressDialog progress(tr("Exporting the steps..."), tr("Cancel"), 0, maxImages, this);
+    progress.setWindowModality(Qt::WindowModal);
+    progress.setMinimumDuration(500);
+    m_inspection->toStart();
+    int written = 0;
+    const QDir dir(folder);
+    while (written < maxImages) {
+        const QString path = dir.filePath(QStringLiteral("step-%1.png").arg(written, 5, 10, QLatin1Char('0')));
+        QString error;
+        if (!savePng(m_view->grab().toImage(), path, &error)) {
+            showError(tr("%1: cannot export the image: %2").arg(path, error));
+            break;
+        }
+        ++written;
+        progress.setValue(written);
+        if (progress.wasCanceled()) break;
+        if (!m_inspection->stepForward()) break;
+    }
+    if (m_inspection->granularity() == rl::StepGranularity::Stage) m_inspection->setStage(savedStage);
+    m_inspection->seek(saved);
+    statusBar()->showMessage(tr("Exported %1 images to %2").arg(written).arg(folder), 8000);
+    return written;
+}
+
+void MainWindow::exportDisplayedDialog() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export the Image as Displayed"),
+                                                      QStringLiteral("rasterlab-view.png"),
+                                                      tr("PNG images (*.png)"));
+    if (!path.isEmpty()) exportDisplayed(path);
+}
+
+void MainWindow::exportBufferDialog(int which) {
+    const QString names[] = {QStringLiteral("colour.png"), QStringLiteral("depth.png"),
+                             QStringLiteral("normals.png")};
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export a Buffer"), names[which],
+                                                      tr("PNG images (*.png)"));
+    if (path.isEmpty()) return;
+    if (which == 0) {
+        QString error;
+        if (!saveOrShow(this, m_inspection->image(), path, &error))
+            showError(tr("%1: cannot export the image: %2").arg(path, error));
+    } else if (which == 1) {
+        exportDepthBuffer(path);
+    } else {
+        exportNormalBuffer(path);
+    }
+}
+
+void MainWindow::exportSequenceDialog() {
+    const QString folder =
+        QFileDialog::getExistingDirectory(this, tr("Folder for the Numbered Images"));
+    if (folder.isEmpty()) return;
+    bool ok = false;
+    const int count = QInputDialog::getInt(
+        this, tr("Stepping Sequence"),
+        tr("At most how many images (one per step, at the current granularity)?"), 200, 1, 100000,
+        1, &ok);
+    if (ok) exportSequence(folder, count);
+}
+
+}  // namespace rasterlab

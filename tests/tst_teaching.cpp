@@ -1,0 +1,391 @@
+// The teaching window in-process (offscreen): stepping through the frame and back, the
+// image and the overlays at the cursor, breakpoints, the clicker's keys in presentation mode,
+// the stage strip's skipped stages, opening any file or a folder, recent files, drag and drop,
+// reading a file again when it changes on disk (also when saved by renaming), and the exports.
+#include <QtTest>
+
+#include <QAction>
+#include <QDockWidget>
+#include <QFile>
+#include <QLabel>
+#include <QSlider>
+#include <QListWidget>
+#include <QMenu>
+#include <QMimeData>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QToolButton>
+
+#include "breakpoints_view.h"
+#include "frame_image_view.h"
+#include "inspection.h"
+#include "main_window.h"
+#include "replay_builder.h"
+#include "stage_strip.h"
+#include "stepping_bar.h"
+#include "test_support.h"
+
+using namespace rasterlab;
+
+namespace {
+
+constexpr int kTimeoutMs = 15000;
+
+QString writeFixture(const QString& path, const QByteArray& content) {
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(content) != content.size()) return {};
+    return path;
+}
+
+// A tetrahedron around the origin, where the default camera looks (4 triangles).
+const QByteArray kTetrahedron =
+    "4 4\n-80 -80 -80\n80 80 -80\n80 -80 80\n-80 80 80\n1 2 3\n1 4 2\n1 3 4\n2 4 3\n";
+// One triangle of it.
+const QByteArray kOneTriangle = "3 1\n-80 -80 -80\n80 80 -80\n80 -80 80\n1 2 3\n";
+const QByteArray kCamera = "0 0 -500\n0 0 1\n0 1 0\n5 1 1\n";  // UFPE: C; N; V; d hx hy
+const QByteArray kLighting =
+    "0 0 -500\n0.2\n100 100 100\n0.7\n1 0.5 0.2\n0.5\n255 255 255\n8\n";  // UFPE lighting
+
+// Waits until the window shows a frame that can be stepped through.
+bool waitForReplay(MainWindow& window) {
+    QElapsedTimer timer;
+    timer.start();
+    while (timer.elapsed() < kTimeoutMs) {
+        if (window.inspection()->canStep() && !window.controller()->isBusy() &&
+            !window.replayBuilder()->isBusy())
+            return true;
+        QTest::qWait(20);
+    }
+    return false;
+}
+
+int differingPixels(const QImage& a, const QImage& b) {
+    const QImage x = a.convertToFormat(QImage::Format_RGBA8888);
+    const QImage y = b.convertToFormat(QImage::Format_RGBA8888);
+    int n = 0;
+    for (int j = 0; j < x.height(); ++j)
+        for (int i = 0; i < x.width(); ++i) n += x.pixel(i, j) != y.pixel(i, j) ? 1 : 0;
+    return n;
+}
+
+}  // namespace
+
+class TestTeaching : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        // Settings of our own, in a folder that goes away.
+        QCoreApplication::setOrganizationName(QStringLiteral("RasterLabTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("tst_teaching"));
+        QSettings::setDefaultFormat(QSettings::IniFormat);
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settings.path());
+    }
+
+    void stepForwardAndBack() {
+        MainWindow window;
+        QVERIFY(waitForReplay(window));
+        Inspection* inspection = window.inspection();
+        const rl::FrameReplay* replay = inspection->replay();
+        QVERIFY(inspection->atEnd());
+        QVERIFY(window.imageView()->image() == window.currentImage());
+        inspection->setGranularity(rl::StepGranularity::Scanline);
+        window.steppingBar()->toStartAction()->trigger();
+        QVERIFY(inspection->atStart());
+        const QImage empty = window.imageView()->image().copy();
+        QCOMPARE(differingPixels(empty, window.currentImage()) > 1000, true);
+        // One scanline: exactly the pixels its fragments wrote change.
+        window.steppingBar()->stepForwardAction()->trigger();
+        const rl::ReplayCursor one = inspection->cursor();
+        QCOMPARE(one, replay->next(replay->start(), rl::StepGranularity::Scanline));
+        const rl::ReplayRow& row = replay->rows()[0];
+        QCOMPARE(differingPixels(window.imageView()->image(), empty),
+                 static_cast<int>(replay->writtenBefore(row.fragmentEnd)));
+        QVERIFY(window.stageStrip()->findChild<QLabel*>(QStringLiteral("stageNote"))
+                    ->text()
+                    .contains(QStringLiteral("scanline %1").arg(row.y)));
+        // The overlay shows the triangle, its scanline and span.
+        const ImageOverlay& overlay = window.imageView()->overlay();
+        QVERIFY(overlay.currentTriangle.has_value());
+        QCOMPARE(overlay.scanline, row.y);
+        QCOMPARE(overlay.spanBegin, row.xBegin);
+        QCOMPARE(overlay.spanEnd, row.xEnd);
+        QCOMPARE(static_cast<int>(overlay.coveredPixels.size()), row.xEnd - row.xBegin);
+        // Back: the empty image again.
+        window.steppingBar()->stepBackAction()->trigger();
+        QVERIFY(inspection->atStart());
+        QCOMPARE(differingPixels(window.imageView()->image(), empty), 0);
+        // The timeline scrubs: half way, then the end is the frame.
+        const int half = window.steppingBar()->timeline()->maximum() / 2;
+        window.steppingBar()->timeline()->setValue(half);
+        QCOMPARE(inspection->cursor(), replay->atFragment(static_cast<std::uint32_t>(half)));
+        window.steppingBar()->toEndAction()->trigger();
+        QCOMPARE(differingPixels(window.imageView()->image(), window.currentImage()), 0);
+        // Stage granularity walks the strip: nothing drawn up to scan conversion.
+        inspection->setGranularity(rl::StepGranularity::Stage);
+        window.steppingBar()->toStartAction()->trigger();
+        QCOMPARE(inspection->stage(), rl::StageId::CameraBasis);
+        QVERIFY(inspection->atStart());
+        for (int k = 0; k < 5; ++k) window.steppingBar()->stepForwardAction()->trigger();
+        QCOMPARE(inspection->stage(), rl::StageId::DepthTest);
+        QVERIFY(inspection->atEnd());
+    }
+
+    void playStopsAtTheEndAndAtBreakpoints() {
+        MainWindow window;
+        const QTemporaryDir dir;
+        window.openPart(SceneDocument::Part::Camera, writeFixture(dir.filePath(QStringLiteral("c.cfg")), kCamera));
+        window.openPart(SceneDocument::Part::Lighting,
+                        writeFixture(dir.filePath(QStringLiteral("l.txt")), kLighting));
+        window.openPart(SceneDocument::Part::Object,
+                        writeFixture(dir.filePath(QStringLiteral("t.byu")), kTetrahedron));
+        QVERIFY(waitForReplay(window));
+        Inspection* inspection = window.inspection();
+        const rl::FrameReplay* replay = inspection->replay();
+        QVERIFY(replay->fragments().size() > 100);
+        // Triangle 3 of the file: the replay stops as its first row is reached.
+        QVERIFY(window.breakpointsView()->add(rl::Breakpoint::Kind::Triangle, 3));
+        inspection->setGranularity(rl::StepGranularity::Scanline);
+        window.steppingBar()->toStartAction()->trigger();
+        QSignalSpy hits(inspection, &Inspection::breakpointHit);
+        window.steppingBar()->setSpeed(240);
+        window.steppingBar()->setPlaying(true);
+        QVERIFY(hits.wait(kTimeoutMs));
+        QVERIFY(!window.steppingBar()->isPlaying());
+        const auto* row = inspection->currentRow();
+        QVERIFY(row);
+        QCOMPARE(window.currentFrame()->projection->triangles[row->triangle].source, 2u);
+        QCOMPARE(inspection->cursor(), replay->atRowStart(replay->firstRow(row->triangle)));
+        // Continue (F8) finds no further one: the end.
+        window.steppingBar()->continueAction()->trigger();
+        QVERIFY(inspection->atEnd());
+        // Play from the end starts again and runs to the end.
+        window.breakpointsView()->clear();
+        inspection->setGranularity(rl::StepGranularity::Triangle);
+        window.steppingBar()->setPlaying(true);
+        QTRY_VERIFY_WITH_TIMEOUT(!window.steppingBar()->isPlaying(), kTimeoutMs);
+        QVERIFY(inspection->atEnd());
+    }
+
+    void clickerKeysInPresentationMode() {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(waitForReplay(window));
+        Inspection* inspection = window.inspection();
+        inspection->setGranularity(rl::StepGranularity::Triangle);
+        inspection->toStart();
+        const QFont before = QApplication::font();
+        QTest::keyClick(&window, Qt::Key_F5);
+        QVERIFY(window.presentationMode());
+        QVERIFY(QApplication::font().pointSizeF() > before.pointSizeF());
+        QCOMPARE(inspection->lineWidth(), 3.0);
+        // In presentation mode the arrows step even with a pixel picked on the image.
+        inspection->pickPixel(QPoint(10, 10));
+        QWidget* image = window.imageView();
+        image->setFocus();
+        QTest::keyClick(image, Qt::Key_Right);
+        const rl::ReplayCursor one = inspection->replay()->next({}, rl::StepGranularity::Triangle);
+        QCOMPARE(inspection->cursor(), one);
+        QTest::keyClick(image, Qt::Key_PageDown);
+        QCOMPARE(inspection->cursor(), inspection->replay()->next(one, rl::StepGranularity::Triangle));
+        QTest::keyClick(image, Qt::Key_PageUp);
+        QCOMPARE(inspection->cursor(), one);
+        QCOMPARE(inspection->pickedPixel(), QPoint(10, 10));
+        QTest::keyClick(image, Qt::Key_Space);
+        QVERIFY(window.steppingBar()->isPlaying());
+        QTest::keyClick(image, Qt::Key_Space);
+        QVERIFY(!window.steppingBar()->isPlaying());
+        QTest::keyClick(image, Qt::Key_Escape);
+        QVERIFY(!window.presentationMode());
+        QCOMPARE(QApplication::font(), before);
+        // Not presenting, the arrows on the image move the picked pixel.
+        inspection->pickPixel(QPoint(400, 300));
+        window.imageView()->setFocus();
+        const rl::ReplayCursor here = inspection->cursor();
+        QTest::keyClick(window.imageView(), Qt::Key_Right);
+        QCOMPARE(inspection->pickedPixel(), QPoint(401, 300));
+        QTest::keyClick(window.imageView(), Qt::Key_Up);
+        QCOMPARE(inspection->pickedPixel(), QPoint(401, 299));
+        QCOMPARE(inspection->cursor(), here);
+    }
+
+    void pickingSelectsTheTriangle() {
+        MainWindow window;
+        QVERIFY(waitForReplay(window));
+        Inspection* inspection = window.inspection();
+        // The knot's lower band covers (400, 350).
+        inspection->pickPixel(QPoint(400, 350));
+        const std::uint32_t t = window.currentFrame()->depth->triangle.at(400, 350);
+        QCOMPARE(inspection->selectedTriangle(), std::optional<std::uint32_t>(t));
+        QCOMPARE(inspection->selectedVertices().size(), std::size_t(3));
+        const ImageOverlay& overlay = window.imageView()->overlay();
+        QCOMPARE(overlay.pickedPixel, QPoint(400, 350));
+        QVERIFY(overlay.selectedTriangle.has_value());
+        QCOMPARE(overlay.vertices.size(), std::size_t(3));
+        // At the start of the frame nothing holds it.
+        inspection->setGranularity(rl::StepGranularity::Pixel);
+        inspection->toStart();
+        inspection->pickPixel(QPoint(400, 350));
+        QVERIFY(!inspection->selectedTriangle());
+    }
+
+    void skippedStagesAreMarked() {
+        MainWindow window;
+        QVERIFY(waitForReplay(window));
+        QVERIFY(!window.stageStrip()->button(rl::StageId::CameraBasis)->text().contains(
+            QStringLiteral("skipped")));
+        const QTemporaryDir dir;
+        // An unlit command file: no course camera, nothing lit.
+        const QString path = writeFixture(dir.filePath(QStringLiteral("unlit.txt")),
+                                          "png 20 10 a.png\ncolor 1 0 0\nxyz -1 -1 0\n"
+                                          "xyz 1 -1 0\nxyz 0 1 0\ntrif 1 2 3\n");
+        QVERIFY(window.openPath(path));
+        QVERIFY(waitForReplay(window));
+        for (rl::StageId stage : {rl::StageId::CameraBasis, rl::StageId::Normals, rl::StageId::Shading})
+            QVERIFY2(window.stageStrip()->button(stage)->text().endsWith(QStringLiteral("(skipped)")),
+                     qPrintable(window.stageStrip()->button(stage)->text()));
+        QCOMPARE(window.stageStrip()->button(rl::StageId::Normals)->toolTip(),
+                 QStringLiteral("Normals is skipped: nothing is lit: no light reads a normal"));
+        QVERIFY(!window.stageStrip()->button(rl::StageId::Projection)->text().contains(
+            QStringLiteral("skipped")));
+    }
+
+    void detectsWhatAFileHolds() {
+        const QTemporaryDir dir;
+        auto file = [&](const char* name, const QByteArray& text) {
+            return writeFixture(dir.filePath(QLatin1String(name)), text);
+        };
+        QCOMPARE(detectFileKind(file("a.byu", kTetrahedron)), FileKind::Object);
+        QCOMPARE(detectFileKind(file("object.txt", kTetrahedron)), FileKind::Object);
+        QCOMPARE(detectFileKind(file("camera.txt", kCamera)), FileKind::Camera);
+        QCOMPARE(detectFileKind(file("light.txt", kLighting)), FileKind::Lighting);
+        QCOMPARE(detectFileKind(file("kv.txt", "C = 0 0 -5\nN = 0 0 1\nV = 0 1 0\nd = 1\n"
+                                               "hx = 1\nhy = 1\n")),
+                 FileKind::Camera);
+        QCOMPARE(detectFileKind(file("kvl.txt", "Iamb = 1 1 1\nKa = 0.1\nPl = 0 0 0\n")),
+                 FileKind::Lighting);
+        QCOMPARE(detectFileKind(file("hw2.txt", "png 4 4 x.png\nxyz 0 0 0\n")),
+                 FileKind::CommandFile);
+        QCOMPARE(detectFileKind(file("notes.txt", "hello there\n")), FileKind::Unknown);
+    }
+
+    void opensAFolderAndRemembersFiles() {
+        QSettings().remove(QStringLiteral("recentFiles"));
+        MainWindow window;
+        QVERIFY(waitForReplay(window));
+        const QTemporaryDir dir;
+        const QString camera = writeFixture(dir.filePath(QStringLiteral("cam.cfg")), kCamera);
+        const QString lighting = writeFixture(dir.filePath(QStringLiteral("luz.txt")), kLighting);
+        const QString object = writeFixture(dir.filePath(QStringLiteral("tetra.byu")), kTetrahedron);
+        QVERIFY(window.openPath(dir.path()));
+        QCOMPARE(window.document().source(SceneDocument::Part::Camera), camera);
+        QCOMPARE(window.document().source(SceneDocument::Part::Lighting), lighting);
+        QCOMPARE(window.document().source(SceneDocument::Part::Object), object);
+        QCOMPARE(window.recentFiles().first(), object);
+        QCOMPARE(window.recentFiles().size(), 3);
+        auto* recent = window.findChild<QMenu*>(QStringLiteral("recentMenu"));
+        QVERIFY(recent->actions().first()->text().endsWith(QStringLiteral("tetra.byu")));
+        QCOMPARE(window.watchedFiles().size(), 3);
+        // A folder with nothing RasterLab reads: the error, and the scene stays.
+        const QTemporaryDir empty;
+        writeFixture(empty.filePath(QStringLiteral("readme.txt")), "nothing\n");
+        QVERIFY(!window.openPath(empty.path()));
+        QCOMPARE(window.document().source(SceneDocument::Part::Object), object);
+        QVERIFY(window.messages()->item(0)->text().contains(QStringLiteral("no course camera")));
+    }
+
+    void dropOpensFiles() {
+        MainWindow window;
+        QVERIFY(waitForReplay(window));
+        const QTemporaryDir dir;
+        const QString object = writeFixture(dir.filePath(QStringLiteral("drop.byu")), kTetrahedron);
+        QMimeData mime;
+        mime.setUrls({QUrl::fromLocalFile(object)});
+        QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(&window, &enter);
+        QVERIFY(enter.isAccepted());
+        QDropEvent drop(QPointF(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(&window, &drop);
+        QCOMPARE(window.document().source(SceneDocument::Part::Object), object);
+    }
+
+    void readsAChangedFileAgain() {
+        MainWindow window;
+        QVERIFY(waitForReplay(window));
+        const QTemporaryDir dir;
+        const QString object = writeFixture(dir.filePath(QStringLiteral("w.byu")), kTetrahedron);
+        QVERIFY(window.openPart(SceneDocument::Part::Object, object));
+        QTRY_COMPARE_WITH_TIMEOUT(window.currentFrame()->scene->triangleCount(), std::size_t(4),
+                                  kTimeoutMs);
+        // Saved in place.
+        writeFixture(object, kOneTriangle);
+        QTRY_COMPARE_WITH_TIMEOUT(window.currentFrame()->scene->triangleCount(), std::size_t(1),
+                                  kTimeoutMs);
+        // Saved by writing another file and renaming it over this one (as many editors do):
+        // still watched.
+        const QString temporary = writeFixture(dir.filePath(QStringLiteral("w.byu.tmp")), kTetrahedron);
+        QVERIFY(QFile::remove(object));
+        QVERIFY(QFile::rename(temporary, object));
+        QTRY_COMPARE_WITH_TIMEOUT(window.currentFrame()->scene->triangleCount(), std::size_t(4),
+                                  kTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(window.watchedFiles().contains(object), kTimeoutMs);
+        // A bad save: the message, and the scene stays.
+        QByteArray bad = kTetrahedron;
+        bad.replace("80 80 -80", "80 8x0 -80");
+        writeFixture(object, bad);
+        QTRY_VERIFY_WITH_TIMEOUT(window.messages()->count() > 0 &&
+                                     window.messages()->item(0)->text().startsWith(
+                                         QStringLiteral("Error: ") + object +
+                                         QStringLiteral(":3:4: expected a number")),
+                                 kTimeoutMs);
+        QCOMPARE(window.currentFrame()->scene->triangleCount(), std::size_t(4));
+        QCOMPARE(window.document().parts().object.mesh->triangles.size(), std::size_t(4));
+    }
+
+    void exports() {
+        MainWindow window;
+        window.resize(1200, 800);
+        const QTemporaryDir dir;
+        window.openPart(SceneDocument::Part::Object,
+                        writeFixture(dir.filePath(QStringLiteral("t.byu")), kTetrahedron));
+        QVERIFY(waitForReplay(window));
+        Inspection* inspection = window.inspection();
+        // The steps, one image per triangle stop and one for the start.
+        inspection->setGranularity(rl::StepGranularity::Triangle);
+        int stops = 1;
+        for (rl::ReplayCursor c; c != inspection->replay()->end();
+             c = inspection->replay()->next(c, rl::StepGranularity::Triangle))
+            ++stops;
+        const QString steps = dir.filePath(QStringLiteral("steps"));
+        QCOMPARE(window.exportSequence(steps, 1000), stops);
+        QVERIFY(QFile::exists(steps + QStringLiteral("/step-00000.png")));
+        QVERIFY(QFile::exists(steps + QStringLiteral("/step-%1.png").arg(stops - 1, 5, 10, QLatin1Char('0'))));
+        QVERIFY(inspection->atEnd());  // where it was
+        QCOMPARE(window.exportSequence(dir.filePath(QStringLiteral("two")), 2), 2);
+        // The image as displayed; the depth buffer at the start (all empty: black).
+        const QString shown = dir.filePath(QStringLiteral("shown.png"));
+        QVERIFY(window.exportDisplayed(shown));
+        QCOMPARE(QImage(shown).size(), window.imageView()->size() * window.imageView()->devicePixelRatio());
+        inspection->toStart();
+        const QString depth = dir.filePath(QStringLiteral("depth.png"));
+        QVERIFY(window.exportDepthBuffer(depth));
+        const QImage z(depth);
+        QCOMPARE(z.size(), QSize(800, 600));
+        QCOMPARE(z.pixel(400, 300), qRgba(0, 0, 0, 255));
+        inspection->toEnd();
+        QVERIFY(window.exportDepthBuffer(depth));
+        QVERIFY(QImage(depth).pixel(400, 300) != qRgba(0, 0, 0, 255));
+        QVERIFY(window.exportNormalBuffer(dir.filePath(QStringLiteral("n.png"))));
+        QVERIFY(window.exportDock(QStringLiteral("zbufferDock"), dir.filePath(QStringLiteral("z.png"))));
+        QVERIFY(!window.exportDock(QStringLiteral("noSuchDock"), dir.filePath(QStringLiteral("x.png"))));
+        // An unwritable place: the error, nothing else lost.
+        QVERIFY(!window.exportDisplayed(dir.filePath(QStringLiteral("no/such/folder/x.png"))));
+    }
+
+private:
+    QTemporaryDir m_settings;
+};
+
+QTEST_MAIN(TestTeaching)
+#include "tst_teaching.moc"

@@ -1,0 +1,124 @@
+#include "stage_strip.h"
+
+#include <QButtonGroup>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QToolButton>
+
+namespace rasterlab {
+
+StageStrip::StageStrip(Inspection* inspection, QWidget* parent)
+    : QWidget(parent), m_inspection(inspection) {
+    setObjectName(QStringLiteral("stageStrip"));
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(4, 2, 4, 2);
+    layout->setSpacing(2);
+    auto* group = new QButtonGroup(this);
+    group->setExclusive(true);
+    for (rl::StageId stage : rl::kAllStages) {
+        const auto i = static_cast<std::size_t>(stage);
+        if (i > 0) {
+            auto* arrow = new QLabel(QStringLiteral("\u2192"), this);
+            arrow->setEnabled(false);
+            layout->addWidget(arrow);
+        }
+        auto* button = new QToolButton(this);
+        button->setCheckable(true);
+        button->setAutoRaise(true);
+        button->setObjectName(QStringLiteral("stage_%1").arg(i + 1));
+        button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+        group->addButton(button, static_cast<int>(i));
+        layout->addWidget(button);
+        m_buttons[i] = button;
+        connect(button, &QToolButton::clicked, this,
+                [this, stage] { m_inspection->setStage(stage); });
+    }
+    m_note = new QLabel(this);
+    m_note->setObjectName(QStringLiteral("stageNote"));
+    layout->addSpacing(8);
+    layout->addWidget(m_note, 1);
+    connect(inspection, &Inspection::frameChanged, this, &StageStrip::refresh);
+    connect(inspection, &Inspection::stageChanged, this, &StageStrip::refresh);
+    connect(inspection, &Inspection::cursorChanged, this, &StageStrip::refresh);
+    connect(inspection, &Inspection::granularityChanged, this, &StageStrip::refresh);
+    connect(inspection, &Inspection::presentationChanged, this, &StageStrip::refresh);
+    refresh();
+}
+
+QString StageStrip::stageName(rl::StageId stage) {
+    switch (stage) {
+        case rl::StageId::CameraBasis:
+            return tr("Camera basis");
+        case rl::StageId::ViewTransform:
+            return tr("View coordinates");
+        case rl::StageId::Normals:
+            return tr("Normals");
+        case rl::StageId::Projection:
+            return tr("Projection");
+        case rl::StageId::ScanConversion:
+            return tr("Scan conversion");
+        case rl::StageId::DepthTest:
+            return tr("Z-buffer");
+        case rl::StageId::Shading:
+            return tr("Lighting");
+    }
+    return {};
+}
+
+QString StageStrip::skipReason(const rl::FrameTrace& frame, rl::StageId stage) {
+    switch (stage) {
+        case rl::StageId::CameraBasis:
+            if (frame.cameraBasis && frame.cameraBasis->skipped)
+                return tr("no course camera: each draw brings its own view matrix");
+            break;
+        case rl::StageId::Normals:
+            if (frame.normals && frame.normals->skipped)
+                return tr("nothing is lit: no light reads a normal");
+            break;
+        case rl::StageId::Shading: {
+            bool lit = frame.scene->lit();
+            bool anyLitDraw = false;
+            for (const rl::Draw& draw : frame.scene->draws)
+                anyLitDraw = anyLitDraw || draw.lighting != rl::LightingModel::Unlit;
+            if (!lit || !anyLitDraw)
+                return tr("nothing is lit: each pixel takes its object's own colour");
+            break;
+        }
+        default:
+            break;
+    }
+    return {};
+}
+
+void StageStrip::refresh() {
+    const auto& frame = m_inspection->frame();
+    QFont font = this->font();
+    if (m_inspection->presentation()) font.setPointSizeF(font.pointSizeF() * 1.3);
+    for (rl::StageId stage : rl::kAllStages) {
+        const auto i = static_cast<std::size_t>(stage);
+        QToolButton* button = m_buttons[i];
+        const QString reason = frame ? skipReason(*frame, stage) : QString();
+        QString text = QStringLiteral("%1 %2").arg(i + 1).arg(stageName(stage));
+        if (!reason.isEmpty()) text += QStringLiteral(" ") + tr("(skipped)");
+        button->setText(text);
+        button->setToolTip(reason.isEmpty() ? stageName(stage)
+                                            : tr("%1 is skipped: %2").arg(stageName(stage), reason));
+        QFont f = font;
+        f.setItalic(!reason.isEmpty());
+        f.setBold(stage == m_inspection->stage());
+        button->setFont(f);
+        QPalette p = palette();
+        if (!reason.isEmpty()) p.setColor(QPalette::ButtonText, QColor(140, 140, 140));
+        button->setPalette(p);
+        button->setChecked(stage == m_inspection->stage());
+    }
+    const bool midFrame = m_inspection->canStep() && !m_inspection->atStart() &&
+                          !m_inspection->atEnd() &&
+                          m_inspection->granularity() != rl::StepGranularity::Stage;
+    m_note->setFont(font);
+    m_note->setText(midFrame ? tr("stages 5-7 run together, fragment by fragment: %1")
+                                   .arg(m_inspection->positionText())
+                             : QString());
+}
+
+}  // namespace rasterlab

@@ -1,0 +1,41 @@
+// The seven stages in the lecture's order, as a strip of buttons: the selected one shows its
+// view; a stage the scene does not use is marked skipped, with the reason in its tooltip and
+// beside its name. While the frame is stepped through pixel by pixel, the last three stages
+// (scan conversion, depth test, shading) run together, one fragment at a time: the strip says so.
+#pragma once
+
+#include <QWidget>
+
+#include <array>
+
+#include "inspection.h"
+#include "stage_id.h"
+
+class QLabel;
+class QToolButton;
+
+namespace rasterlab {
+
+class StageStrip : public QWidget {
+    Q_OBJECT
+public:
+    explicit StageStrip(Inspection* inspection, QWidget* parent = nullptr);
+
+    // The lecture's name of a stage, translated ("Camera basis").
+    static QString stageName(rl::StageId stage);
+    // Why the frame shown does not use a stage, translated; empty when it does.
+    static QString skipReason(const rl::FrameTrace& frame, rl::StageId stage);
+
+    QToolButton* button(rl::StageId stage) const {
+        return m_buttons[static_cast<std::size_t>(stage)];
+    }
+
+private:
+    void refresh();
+
+    Inspection* m_inspection;
+    std::array<QToolButton*, rl::kStageCount> m_buttons{};
+    QLabel* m_note = nullptr;
+};
+
+}  // namespace rasterlab
