@@ -21,11 +21,19 @@
 
 #include "accuracy_panel.h"
 #include "breakpoints_view.h"
+#include "camera_basis.h"
+#include "camera_basis_view.h"
+#include "edit_panel.h"
 #include "frame_image_view.h"
 #include "image_io.h"
+#include "normals_view.h"
+#include "pixel_inspector.h"
+#include "projection_view.h"
 #include "replay_builder.h"
+#include "scanline_view.h"
 #include "stage_strip.h"
 #include "stepping_bar.h"
+#include "vertex_table.h"
 #include "zbuffer_view.h"
 
 namespace rasterlab {
@@ -115,12 +123,24 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_inspection, &Inspection::stageChanged, this, &MainWindow::updateOverlay);
     connect(m_inspection, &Inspection::replayChanged, this, &MainWindow::updateBusy);
     connect(m_inspection, &Inspection::breakpointHit, this, [this] {
-        statusBar()->showMessage(tr("Stopped at a breakpoint: %1").arg(m_inspection->positionText()),
-                                 8000);
+        statusBar()->showMessage(
+            tr("Stopped at a breakpoint: %1").arg(m_inspection->positionText()), 8000);
     });
 
     createDocks();
     createActions();
+    connect(m_edit, &EditPanel::sceneEdited, this, [this] {
+        for (QAction* action : m_shadingGroup->actions())
+            action->setChecked(action->data().toInt() ==
+                               static_cast<int>(m_document.settings().shading));
+        requestRender();
+    });
+    connect(m_edit, &EditPanel::modifiedChanged, this, &QWidget::setWindowModified);
+    connect(m_edit, &EditPanel::saved, this, [this] {
+        refreshMessages();
+        refreshSceneSummary();
+        watchSources();
+    });
     m_pixelLabel = new QLabel(this);
     m_pixelLabel->setObjectName(QStringLiteral("pixelLabel"));
     m_timeLabel = new QLabel(this);
@@ -143,7 +163,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     statusBar()->addPermanentWidget(m_busyBar);
     statusBar()->addPermanentWidget(m_cancelButton);
     statusBar()->addPermanentWidget(m_timeLabel);
-    resize(1440, 900);
+    resize(1560, 960);
     m_defaultLayout = saveState(kLayoutVersion);
     restoreLayout();
 
@@ -183,29 +203,61 @@ void MainWindow::createDocks() {
     m_messages = new QListWidget;
     m_messages->setObjectName(QStringLiteral("messagesList"));
     m_messages->setWordWrap(true);
-    QDockWidget* messagesDock =
-        addDock(tr("Messages"), QStringLiteral("messagesDock"), m_messages, Qt::BottomDockWidgetArea);
+    QDockWidget* messagesDock = addDock(tr("Messages"), QStringLiteral("messagesDock"), m_messages,
+                                        Qt::BottomDockWidgetArea);
 
+    m_edit = new EditPanel(&m_document);
+    QDockWidget* editDock =
+        addDock(tr("Edit"), QStringLiteral("editDock"), m_edit, Qt::LeftDockWidgetArea);
     m_summary = new QTextBrowser;
     m_summary->setObjectName(QStringLiteral("sceneSummary"));
     QDockWidget* sceneDock =
         addDock(tr("Scene"), QStringLiteral("sceneDock"), m_summary, Qt::LeftDockWidgetArea);
+    tabifyDockWidget(editDock, sceneDock);
     m_breakpoints = new BreakpointsView(m_inspection);
     QDockWidget* breakpointsDock = addDock(tr("Breakpoints"), QStringLiteral("breakpointsDock"),
                                            m_breakpoints, Qt::LeftDockWidgetArea);
-    tabifyDockWidget(sceneDock, breakpointsDock);
+    tabifyDockWidget(editDock, breakpointsDock);
     m_accuracy = new AccuracyPanel;
-    QDockWidget* accuracyDock = addDock(tr("Accuracy"), QStringLiteral("accuracyDock"), m_accuracy,
-                                        Qt::LeftDockWidgetArea);
-    tabifyDockWidget(sceneDock, accuracyDock);
-    sceneDock->raise();
+    QDockWidget* accuracyDock =
+        addDock(tr("Accuracy"), QStringLiteral("accuracyDock"), m_accuracy, Qt::LeftDockWidgetArea);
+    tabifyDockWidget(editDock, accuracyDock);
+    editDock->raise();
 
+    // The stage views, in the lecture's order, tabbed on the right; the pixel inspector below.
+    m_cameraBasis = new CameraBasisView(m_inspection);
+    QDockWidget* cameraDock = addDock(tr("1 Camera basis"), QStringLiteral("cameraBasisDock"),
+                                      m_cameraBasis, Qt::RightDockWidgetArea);
+    m_inspector = new PixelInspector(m_inspection);
+    QDockWidget* inspectorDock =
+        addDock(tr("7 Pixel inspector (lighting)"), QStringLiteral("pixelInspectorDock"),
+                m_inspector, Qt::RightDockWidgetArea);
+    splitDockWidget(cameraDock, inspectorDock, Qt::Vertical);
+    m_vertexTable = new VertexTableView(m_inspection);
+    QDockWidget* vertexDock =
+        addDock(tr("2 View coordinates (vertices)"), QStringLiteral("vertexTableDock"),
+                m_vertexTable, Qt::RightDockWidgetArea);
+    tabifyDockWidget(cameraDock, vertexDock);
+    m_normals = new NormalsView(m_inspection);
+    QDockWidget* normalsDock =
+        addDock(tr("3 Normals"), QStringLiteral("normalsDock"), m_normals, Qt::RightDockWidgetArea);
+    tabifyDockWidget(cameraDock, normalsDock);
+    m_projection = new ProjectionView(m_inspection);
+    QDockWidget* projectionDock = addDock(tr("4 Projection"), QStringLiteral("projectionDock"),
+                                          m_projection, Qt::RightDockWidgetArea);
+    tabifyDockWidget(cameraDock, projectionDock);
+    m_scanline = new ScanlineView(m_inspection);
+    QDockWidget* scanlineDock = addDock(tr("5 Scan conversion"), QStringLiteral("scanlineDock"),
+                                        m_scanline, Qt::RightDockWidgetArea);
+    tabifyDockWidget(cameraDock, scanlineDock);
     m_zbuffer = new ZBufferView;
-    QDockWidget* zbufferDock =
-        addDock(tr("Z-buffer"), QStringLiteral("zbufferDock"), m_zbuffer, Qt::RightDockWidgetArea);
-    zbufferDock->raise();
-    resizeDocks({sceneDock}, {330}, Qt::Horizontal);
-    resizeDocks({zbufferDock}, {420}, Qt::Horizontal);
+    QDockWidget* zbufferDock = addDock(tr("6 Z-buffer"), QStringLiteral("zbufferDock"), m_zbuffer,
+                                       Qt::RightDockWidgetArea);
+    tabifyDockWidget(cameraDock, zbufferDock);
+    scanlineDock->raise();
+    resizeDocks({editDock}, {360}, Qt::Horizontal);
+    resizeDocks({cameraDock}, {520}, Qt::Horizontal);
+    resizeDocks({cameraDock, inspectorDock}, {420, 420}, Qt::Vertical);
     resizeDocks({messagesDock}, {110}, Qt::Vertical);
 }
 
@@ -232,6 +284,7 @@ void MainWindow::createActions() {
     m_recentMenu = file->addMenu(tr("Open &Recent"));
     m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
     file->addAction(tr("&Default Scene"), this, [this] {
+        if (!m_edit->maybeSave(this)) return;
         if (auto status = m_document.loadDefault(); !status)
             showError(QString::fromStdString(status.error().toString()));
         else
@@ -266,6 +319,9 @@ void MainWindow::createActions() {
         connect(action, &QAction::triggered, this, [this, layout] { setLightingLayout(layout); });
     }
     file->addSeparator();
+    file->addAction(m_edit->saveAction());
+    file->addAction(m_edit->saveAsAction());
+    file->addSeparator();
     QAction* exportAction = file->addAction(tr("&Export PNG..."), this, &MainWindow::exportDialog);
     exportAction->setShortcut(QKeySequence(tr("Ctrl+E")));
     exportAction->setObjectName(QStringLiteral("exportAction"));
@@ -274,8 +330,10 @@ void MainWindow::createActions() {
     QAction* exportShown =
         exports->addAction(tr("Image as &Displayed..."), this, &MainWindow::exportDisplayedDialog);
     exportShown->setShortcut(QKeySequence(tr("Ctrl+Shift+E")));
-    exports->addAction(tr("&Colour Buffer at the Cursor..."), this, [this] { exportBufferDialog(0); });
-    exports->addAction(tr("D&epth Buffer at the Cursor..."), this, [this] { exportBufferDialog(1); });
+    exports->addAction(tr("&Colour Buffer at the Cursor..."), this,
+                       [this] { exportBufferDialog(0); });
+    exports->addAction(tr("D&epth Buffer at the Cursor..."), this,
+                       [this] { exportBufferDialog(1); });
     exports->addAction(tr("&Normal Buffer..."), this, [this] { exportBufferDialog(2); });
     m_exportViewMenu = exports->addMenu(tr("A &View as Displayed"));
     for (QDockWidget* dock : findChildren<QDockWidget*>()) {
@@ -291,6 +349,10 @@ void MainWindow::createActions() {
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
 
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    edit->addAction(m_edit->undoAction());
+    edit->addAction(m_edit->redoAction());
+
     QMenu* view = menuBar()->addMenu(tr("&View"));
     QAction* fit = view->addAction(tr("&Fit to Window"), m_view, &FrameImageView::fitToWindow);
     fit->setShortcut(QKeySequence(tr("Ctrl+0")));
@@ -303,7 +365,8 @@ void MainWindow::createActions() {
     zoomOut->setShortcut(QKeySequence::ZoomOut);
     view->addSeparator();
     QMenu* panels = view->addMenu(tr("&Panels"));
-    for (QDockWidget* dock : findChildren<QDockWidget*>()) panels->addAction(dock->toggleViewAction());
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        panels->addAction(dock->toggleViewAction());
     for (QToolBar* bar : findChildren<QToolBar*>()) panels->addAction(bar->toggleViewAction());
     QAction* reset = view->addAction(tr("Reset &Layout"), this, &MainWindow::resetLayout);
     reset->setObjectName(QStringLiteral("resetLayoutAction"));
@@ -326,8 +389,7 @@ void MainWindow::createActions() {
     QMenu* language = view->addMenu(tr("&Language"));
     language->setObjectName(QStringLiteral("languageMenu"));
     auto* languages = new QActionGroup(language);
-    const QString current =
-        QSettings().value(QStringLiteral("language"), QString()).toString();
+    const QString current = QSettings().value(QStringLiteral("language"), QString()).toString();
     const std::pair<QString, QString> choices[] = {
         {QString(), tr("The System's")},
         {QStringLiteral("en"), QStringLiteral("English")},
@@ -336,7 +398,8 @@ void MainWindow::createActions() {
         QAction* action = language->addAction(label);
         action->setCheckable(true);
         action->setChecked(code == current);
-        action->setObjectName(QStringLiteral("language_") + (code.isEmpty() ? QStringLiteral("system") : code));
+        action->setObjectName(QStringLiteral("language_") +
+                              (code.isEmpty() ? QStringLiteral("system") : code));
         languages->addAction(action);
         connect(action, &QAction::triggered, this, [this, code = code] {
             if (!QCoreApplication::organizationName().isEmpty())
@@ -359,7 +422,8 @@ void MainWindow::createActions() {
     QMenu* stages = step->addMenu(tr("&Stage"));
     for (rl::StageId stage : rl::kAllStages) {
         const int n = static_cast<int>(stage) + 1;
-        QAction* a = stages->addAction(QStringLiteral("&%1 %2").arg(n).arg(StageStrip::stageName(stage)));
+        QAction* a =
+            stages->addAction(QStringLiteral("&%1 %2").arg(n).arg(StageStrip::stageName(stage)));
         a->setShortcut(QKeySequence(Qt::ALT | (Qt::Key_0 + n)));
         connect(a, &QAction::triggered, this, [this, stage] { m_inspection->setStage(stage); });
     }
@@ -507,13 +571,22 @@ void MainWindow::restoreLayout() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!m_edit->maybeSave(this)) {
+        event->ignore();
+        return;
+    }
     m_steppingBar->setPlaying(false);
     if (m_inspection->presentation()) setPresentationMode(false);
     saveLayout();
     QMainWindow::closeEvent(event);
 }
 
+bool MainWindow::mayReplace(SceneDocument::Part part) {
+    return part == SceneDocument::Part::Object || m_edit->maybeSave(this, part);
+}
+
 bool MainWindow::openPart(SceneDocument::Part part, const QString& path) {
+    if (!mayReplace(part)) return false;
     auto status = m_document.open(part, path);
     if (!status) {
         showError(QString::fromStdString(status.error().toString()));
@@ -526,6 +599,7 @@ bool MainWindow::openPart(SceneDocument::Part part, const QString& path) {
 }
 
 bool MainWindow::setCameraLayout(rl::CameraLayout layout) {
+    if (!mayReplace(SceneDocument::Part::Camera)) return false;
     auto status = m_document.setCameraLayout(layout);
     if (!status) {
         showError(QString::fromStdString(status.error().toString()));
@@ -537,6 +611,7 @@ bool MainWindow::setCameraLayout(rl::CameraLayout layout) {
 }
 
 bool MainWindow::setLightingLayout(rl::LightingLayout layout) {
+    if (!mayReplace(SceneDocument::Part::Lighting)) return false;
     auto status = m_document.setLightingLayout(layout);
     if (!status) {
         showError(QString::fromStdString(status.error().toString()));
@@ -548,6 +623,7 @@ bool MainWindow::setLightingLayout(rl::LightingLayout layout) {
 }
 
 bool MainWindow::openCommandFile(const QString& path) {
+    if (!m_edit->maybeSave(this)) return false;
     auto status = m_document.openCommandFile(path);
     if (!status) {
         showError(QString::fromStdString(status.error().toString()));
@@ -579,7 +655,9 @@ void MainWindow::documentChanged() {
     const QString shown = m_document.showsCommandFile()
                               ? QFileInfo(m_document.commandFilePath()).fileName()
                               : displayName(m_document.source(SceneDocument::Part::Object));
-    setWindowTitle(tr("%1 - RasterLab").arg(shown));
+    setWindowTitle(tr("%1[*] - RasterLab").arg(shown));
+    m_edit->refresh();
+    setWindowModified(m_edit->isModified());
     watchSources();
     refreshMessages();
     requestRender();
@@ -587,6 +665,7 @@ void MainWindow::documentChanged() {
 
 void MainWindow::setShading(rl::ShadingModel model) {
     m_document.setShading(model);
+    m_edit->refresh();
     for (QAction* action : m_shadingGroup->actions())
         action->setChecked(action->data().toInt() == static_cast<int>(model));
     requestRender();
@@ -630,14 +709,14 @@ void MainWindow::updateBusy() {
     const bool preparing = m_replayBuilder->isBusy();
     m_busyBar->setVisible(m_controller->isBusy() || preparing);
     m_cancelButton->setVisible(preparing);
-    m_busyBar->setToolTip(preparing ? tr("Preparing the stepping of this frame")
-                                    : tr("Rendering"));
+    m_busyBar->setToolTip(preparing ? tr("Preparing the stepping of this frame") : tr("Rendering"));
 }
 
 void MainWindow::onFrameReady(const RenderedFrame& frame) {
     // A new frame of the scene being stepped through: stepping goes on at the same place.
     m_cursorToRestore.reset();
-    if (m_inspection->canStep() && !m_inspection->atEnd()) m_cursorToRestore = m_inspection->cursor();
+    if (m_inspection->canStep() && !m_inspection->atEnd())
+        m_cursorToRestore = m_inspection->cursor();
     m_frame = frame;
     m_zbuffer->setFrame(frame.trace);
     m_inspection->setFrame(frame.trace, frame.image);
@@ -648,8 +727,14 @@ void MainWindow::onFrameReady(const RenderedFrame& frame) {
 }
 
 void MainWindow::onRenderFailed(const QString& message) {
-    // The last good image stays on screen, with the message beside it.
+    // The last good image stays on screen, with the message beside it; a camera without a
+    // basis (an edit made N parallel to V, say) is also shown in the camera basis view.
     showError(message);
+    if (m_document.isLoaded()) {
+        rl::Diagnostics ignored;
+        if (!rl::CameraBasisStage().run(*m_document.scene(), ignored))
+            m_cameraBasis->setError(message);
+    }
     updateTimeLabel();
 }
 
@@ -719,10 +804,9 @@ void MainWindow::updateOverlay() {
 
 void MainWindow::showStageView(rl::StageId stage) {
     static const std::array<const char*, rl::kStageCount> docks = {
-        "cameraBasisDock", "vertexTableDock", "normalsDock",        "projectionDock",
+        "cameraBasisDock", "vertexTableDock", "normalsDock",       "projectionDock",
         "scanlineDock",    "zbufferDock",     "pixelInspectorDock"};
-    auto* dock =
-        findChild<QDockWidget*>(QLatin1String(docks[static_cast<std::size_t>(stage)]));
+    auto* dock = findChild<QDockWidget*>(QLatin1String(docks[static_cast<std::size_t>(stage)]));
     if (!dock) return;
     dock->show();
     dock->raise();
@@ -846,8 +930,7 @@ void MainWindow::openCommandFileDialog() {
 
 void MainWindow::openDialog() {
     const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open"), QString(),
-        tr("Scene files (*.byu *.cfg *.txt *.lux);;All files (*)"));
+        this, tr("Open"), QString(), tr("Scene files (*.byu *.cfg *.txt *.lux);;All files (*)"));
     if (!path.isEmpty()) openPath(path);
 }
 

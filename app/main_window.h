@@ -34,6 +34,13 @@ namespace rasterlab {
 
 class AccuracyPanel;
 class BreakpointsView;
+class CameraBasisView;
+class EditPanel;
+class NormalsView;
+class PixelInspector;
+class ProjectionView;
+class ScanlineView;
+class VertexTableView;
 class FrameImageView;
 class ReplayBuilder;
 class StageStrip;
@@ -87,6 +94,13 @@ public:
     StageStrip* stageStrip() const { return m_stageStrip; }
     SteppingBar* steppingBar() const { return m_steppingBar; }
     BreakpointsView* breakpointsView() const { return m_breakpoints; }
+    CameraBasisView* cameraBasisView() const { return m_cameraBasis; }
+    VertexTableView* vertexTableView() const { return m_vertexTable; }
+    NormalsView* normalsView() const { return m_normals; }
+    ProjectionView* projectionView() const { return m_projection; }
+    ScanlineView* scanlineView() const { return m_scanline; }
+    PixelInspector* pixelInspector() const { return m_inspector; }
+    EditPanel* editPanel() const { return m_edit; }
     QStringList recentFiles() const;
     QStringList watchedFiles() const { return m_watcher.files(); }
     // The files the scene shown was read from (built-in parts left out).
@@ -135,6 +149,8 @@ private:
     void openPartDialog(SceneDocument::Part part);
     void openCommandFileDialog();
     void documentChanged();  // menus, title, messages, watched files, and a new render
+    // Asks about unsaved edits of a part about to be replaced: false to stop.
+    bool mayReplace(SceneDocument::Part part);
     void addRecentFile(const QString& path);
     void refreshRecentMenu();
     void watchSources();
@@ -160,6 +176,13 @@ private:
     StageStrip* m_stageStrip = nullptr;
     SteppingBar* m_steppingBar = nullptr;
     BreakpointsView* m_breakpoints = nullptr;
+    CameraBasisView* m_cameraBasis = nullptr;
+    VertexTableView* m_vertexTable = nullptr;
+    NormalsView* m_normals = nullptr;
+    ProjectionView* m_projection = nullptr;
+    ScanlineView* m_scanline = nullptr;
+    PixelInspector* m_inspector = nullptr;
+    EditPanel* m_edit = nullptr;
     QListWidget* m_messages = nullptr;
     QTextBrowser* m_summary = nullptr;
     QLabel* m_pixelLabel = nullptr;

@@ -95,8 +95,8 @@ bool MainWindow::exportDock(const QString& dockName, const QString& path) {
 
 int MainWindow::exportSequence(const QString& folder, int maxImages) {
     if (!m_inspection->canStep() && m_inspection->granularity() != rl::StepGranularity::Stage) {
-        showError(tr("%1: cannot export the steps: the frame cannot be stepped through yet")
-                      .arg(folder));
+        showError(
+            tr("%1: cannot export the steps: the frame cannot be stepped through yet").arg(folder));
         return 0;
     }
     if (!QDir().mkpath(folder)) {
@@ -112,7 +112,8 @@ int MainWindow::exportSequence(const QString& folder, int maxImages) {
     int written = 0;
     const QDir dir(folder);
     while (written < maxImages) {
-        const QString path = dir.filePath(QStringLiteral("step-%1.png").arg(written, 5, 10, QLatin1Char('0')));
+        const QString path =
+            dir.filePath(QStringLiteral("step-%1.png").arg(written, 5, 10, QLatin1Char('0')));
         QString error;
         if (!savePng(m_view->grab().toImage(), path, &error)) {
             showError(tr("%1: cannot export the image: %2").arg(path, error));
@@ -123,7 +124,8 @@ int MainWindow::exportSequence(const QString& folder, int maxImages) {
         if (progress.wasCanceled()) break;
         if (!m_inspection->stepForward()) break;
     }
-    if (m_inspection->granularity() == rl::StepGranularity::Stage) m_inspection->setStage(savedStage);
+    if (m_inspection->granularity() == rl::StepGranularity::Stage)
+        m_inspection->setStage(savedStage);
     m_inspection->seek(saved);
     statusBar()->showMessage(tr("Exported %1 images to %2").arg(written).arg(folder), 8000);
     return written;

@@ -27,7 +27,8 @@ std::set<QString> keysOf(const QString& text) {
     std::set<QString> keys;
     static const QRegularExpression line(QStringLiteral("^\\s*([A-Za-z]+)\\s*="),
                                          QRegularExpression::MultilineOption);
-    for (auto it = line.globalMatch(text); it.hasNext();) keys.insert(it.next().captured(1).toLower());
+    for (auto it = line.globalMatch(text); it.hasNext();)
+        keys.insert(it.next().captured(1).toLower());
     return keys;
 }
 
@@ -105,8 +106,8 @@ bool MainWindow::openPath(const QString& path) {
         }
         if (any) return true;
         if (!commandFile.isEmpty()) return openCommandFile(commandFile);
-        showError(tr("%1: no course camera, lighting, object or command file in this folder")
-                      .arg(path));
+        showError(
+            tr("%1: no course camera, lighting, object or command file in this folder").arg(path));
         return false;
     }
     if (!info.exists()) {
@@ -154,8 +155,9 @@ void MainWindow::refreshRecentMenu() {
     const QStringList files = recentFiles();
     int n = 1;
     for (const QString& file : files) {
-        const QString label = n < 10 ? QStringLiteral("&%1 %2").arg(n).arg(QFileInfo(file).fileName())
-                                     : QFileInfo(file).fileName();
+        const QString label = n < 10
+                                  ? QStringLiteral("&%1 %2").arg(n).arg(QFileInfo(file).fileName())
+                                  : QFileInfo(file).fileName();
         QAction* action = m_recentMenu->addAction(label, this, [this, file] { openPath(file); });
         action->setToolTip(file);
         action->setStatusTip(file);
@@ -227,12 +229,15 @@ void MainWindow::reloadChangedFiles() {
         if (m_document.showsCommandFile() && m_document.commandFilePath() == path) {
             reloaded = openCommandFile(path);
         } else {
-            for (SceneDocument::Part part : kCourseParts)
-                if (m_document.source(part) == path) reloaded = openPart(part, path) || reloaded;
+            for (SceneDocument::Part part : kCourseParts) {
+                // Our own save is not a change to read back (it would clear the undo history).
+                if (m_document.source(part) != path || m_document.fileHoldsLastSave(part)) continue;
+                reloaded = openPart(part, path) || reloaded;
+            }
         }
         if (reloaded)
-            statusBar()->showMessage(tr("%1 changed on disk: read again").arg(QFileInfo(path).fileName()),
-                                     5000);
+            statusBar()->showMessage(
+                tr("%1 changed on disk: read again").arg(QFileInfo(path).fileName()), 5000);
     }
     // A file gone for good (about 10 s) is no longer waited for.
     m_reloadAttempts = waiting.isEmpty() ? 0 : m_reloadAttempts + 1;

@@ -1,12 +1,15 @@
 #include "scene_document.h"
 
 #include <QFile>
+#include <QSaveFile>
 
 #include <new>
 
 #include "camera_basis.h"
 #include "command_file.h"
+#include "course_writers.h"
 #include "default_scene_resource.h"
+#include "input_file.h"
 
 namespace rasterlab {
 
@@ -15,6 +18,7 @@ rl::Status SceneDocument::loadDefault() {
     fresh.m_settings = m_settings;
     fresh.m_cameraLayout = m_cameraLayout;
     fresh.m_lightingLayout = m_lightingLayout;
+    fresh.m_partsReplaced = m_partsReplaced;
     for (CoursePart part : kCourseParts) {
         auto status = fresh.open(part, defaultScenePath(part));
         if (!status) return status;
@@ -77,6 +81,27 @@ void SceneDocument::setImageIndex(int index) {
         m_imageIndex = index;
 }
 
+namespace {
+
+bool isResource(const QString& path) {
+    return path.startsWith(QStringLiteral(":/"));
+}
+
+// The layout a camera or lighting file that was just read is in: the one chosen, or the one
+// detection finds in it (the embedded default scene is UFPE, read without detection).
+template <typename Layout, typename Detect>
+Layout layoutOfFile(const QString& path, Layout chosen, Detect detect) {
+    if (isResource(path)) return Layout::Ufpe;
+    if (chosen != Layout::Auto) return chosen;
+    auto bytes = readInputFile(path);
+    if (!bytes) return Layout::Ufpe;  // read a moment ago; not reached unless it vanished
+    const QByteArray& data = bytes.value();
+    return detect(std::string_view(data.constData(), std::size_t(data.size())))
+        .value_or(Layout::Ufpe);
+}
+
+}  // namespace
+
 rl::Status SceneDocument::open(Part part, const QString& path) {
     if (part == Part::Object && isCommandFile(path)) return openCommandFile(path);
     rl::Diagnostics diagnostics;
@@ -92,12 +117,20 @@ rl::Status SceneDocument::open(Part part, const QString& path) {
             if (auto basis = rl::CameraBasisStage().run(check, basisWarnings); !basis)
                 return basis.error();
             m_parts.camera = camera.value();
+            m_fileCamera = camera.value();
+            m_cameraFileLayout = layoutOfFile(path, m_cameraLayout, rl::detectCameraLayout);
+            m_lastSaved[0].clear();
+            ++m_partsReplaced;
             break;
         }
         case Part::Lighting: {
             auto lighting = loadLighting(path, diagnostics, m_lightingLayout);
             if (!lighting) return lighting.error();
             m_parts.lighting = lighting.value();
+            m_fileLighting = lighting.value();
+            m_lightingFileLayout = layoutOfFile(path, m_lightingLayout, rl::detectLightingLayout);
+            m_lastSaved[1].clear();
+            ++m_partsReplaced;
             break;
         }
         case Part::Object: {
@@ -117,16 +150,14 @@ rl::Status SceneDocument::open(Part part, const QString& path) {
 rl::Status SceneDocument::setCameraLayout(rl::CameraLayout layout) {
     m_cameraLayout = layout;
     const QString path = source(Part::Camera);
-    if (m_commandFile || path.isEmpty() || path.startsWith(QStringLiteral(":/")))
-        return rl::success();
+    if (m_commandFile || path.isEmpty() || isResource(path)) return rl::success();
     return open(Part::Camera, path);
 }
 
 rl::Status SceneDocument::setLightingLayout(rl::LightingLayout layout) {
     m_lightingLayout = layout;
     const QString path = source(Part::Lighting);
-    if (m_commandFile || path.isEmpty() || path.startsWith(QStringLiteral(":/")))
-        return rl::success();
+    if (m_commandFile || path.isEmpty() || isResource(path)) return rl::success();
     return open(Part::Lighting, path);
 }
 
@@ -147,6 +178,353 @@ std::shared_ptr<const rl::Scene> SceneDocument::scene() const {
         return std::make_shared<const rl::Scene>(
             m_commandFile->images[std::size_t(m_imageIndex)].scene);
     return std::make_shared<const rl::Scene>(rl::makeCourseScene(m_parts, m_settings));
+}
+
+// ---- Editing without files
+
+void SceneDocument::setCamera(const rl::CourseCamera& camera) {
+    rl::CourseCamera& c = m_parts.camera;
+    c.c = camera.c;
+    c.n = camera.n;
+    c.v = camera.v;
+    c.d = camera.d;
+    c.hx = camera.hx;
+    c.hy = camera.hy;
+}
+
+void SceneDocument::setLightPosition(std::size_t light, const rl::dvec3& pWorld) {
+    auto& lights = m_parts.lighting.lights;
+    if (light < lights.size()) lights[light].pWorld = rl::dvec4(pWorld, 1.0);
+}
+
+void SceneDocument::setLightIntensity(std::size_t light, const rl::vec3& intensity) {
+    auto& lights = m_parts.lighting.lights;
+    if (light < lights.size()) lights[light].intensity = intensity;
+}
+
+void SceneDocument::setAmbientIntensity(const rl::vec3& intensity) {
+    m_parts.lighting.ambientIntensity = intensity;
+}
+
+void SceneDocument::setMaterial(const rl::Material& material) {
+    m_parts.lighting.material = material;
+}
+
+int SceneDocument::componentCount(Field field) {
+    switch (field) {
+        case Field::C:
+        case Field::N:
+        case Field::V:
+        case Field::LightPosition:
+        case Field::LightIntensity:
+        case Field::Ambient:
+        case Field::Kd:
+        case Field::Od:
+            return 3;
+        default:
+            return 1;
+    }
+}
+
+std::optional<SceneDocument::Part> SceneDocument::partOf(Field field) {
+    switch (field) {
+        case Field::C:
+        case Field::N:
+        case Field::V:
+        case Field::D:
+        case Field::Hx:
+        case Field::Hy:
+            return Part::Camera;
+        case Field::Shading:
+            return std::nullopt;
+        default:
+            return Part::Lighting;
+    }
+}
+
+namespace {
+
+template <typename Vec>
+SceneDocument::Numbers numbersOf(const Vec& v) {
+    return {double(v[0]), double(v[1]), double(v[2])};
+}
+
+SceneDocument::Numbers scalarNumbers(double v) {
+    return {v, 0.0, 0.0};
+}
+
+rl::dvec3 dvec3Of(const SceneDocument::Numbers& n) {
+    return {n[0], n[1], n[2]};
+}
+
+rl::vec3 vec3Of(const SceneDocument::Numbers& n) {
+    return {float(n[0]), float(n[1]), float(n[2])};
+}
+
+}  // namespace
+
+SceneDocument::Numbers SceneDocument::value(Field field, std::size_t light) const {
+    const rl::CourseCamera& c = m_parts.camera;
+    const rl::CourseLighting& l = m_parts.lighting;
+    const rl::Material& m = l.material;
+    switch (field) {
+        case Field::C:
+            return numbersOf(c.c);
+        case Field::N:
+            return numbersOf(c.n);
+        case Field::V:
+            return numbersOf(c.v);
+        case Field::D:
+            return scalarNumbers(c.d);
+        case Field::Hx:
+            return scalarNumbers(c.hx);
+        case Field::Hy:
+            return scalarNumbers(c.hy);
+        case Field::LightPosition:
+            return light < l.lights.size() ? numbersOf(l.lights[light].pWorld) : Numbers{};
+        case Field::LightIntensity:
+            return light < l.lights.size() ? numbersOf(l.lights[light].intensity) : Numbers{};
+        case Field::Ambient:
+            return numbersOf(l.ambientIntensity);
+        case Field::Ka:
+            return scalarNumbers(m.ka);
+        case Field::Kd:
+            return numbersOf(m.kd);
+        case Field::Od:
+            return numbersOf(m.od);
+        case Field::Ks:
+            return scalarNumbers(m.ks);
+        case Field::Shininess:
+            return scalarNumbers(m.shininess);
+        case Field::Shading:
+            return scalarNumbers(double(m_settings.shading));
+    }
+    return {};
+}
+
+void SceneDocument::setValue(Field field, const Numbers& value, std::size_t light) {
+    rl::CourseCamera& c = m_parts.camera;
+    rl::CourseLighting& l = m_parts.lighting;
+    rl::Material& m = l.material;
+    switch (field) {
+        case Field::C:
+            c.c = dvec3Of(value);
+            break;
+        case Field::N:
+            c.n = dvec3Of(value);
+            break;
+        case Field::V:
+            c.v = dvec3Of(value);
+            break;
+        case Field::D:
+            c.d = value[0];
+            break;
+        case Field::Hx:
+            c.hx = value[0];
+            break;
+        case Field::Hy:
+            c.hy = value[0];
+            break;
+        case Field::LightPosition:
+            setLightPosition(light, dvec3Of(value));
+            break;
+        case Field::LightIntensity:
+            setLightIntensity(light, vec3Of(value));
+            break;
+        case Field::Ambient:
+            l.ambientIntensity = vec3Of(value);
+            break;
+        case Field::Ka:
+            m.ka = float(value[0]);
+            break;
+        case Field::Kd:
+            m.kd = vec3Of(value);
+            break;
+        case Field::Od:
+            m.od = vec3Of(value);
+            break;
+        case Field::Ks:
+            m.ks = float(value[0]);
+            break;
+        case Field::Shininess:
+            m.shininess = float(value[0]);
+            break;
+        case Field::Shading:
+            setShading(static_cast<rl::ShadingModel>(int(value[0])));
+            break;
+    }
+}
+
+namespace {
+
+bool sameValues(const rl::CourseCamera& a, const rl::CourseCamera& b) {
+    return a.c == b.c && a.n == b.n && a.v == b.v && a.d == b.d && a.hx == b.hx && a.hy == b.hy;
+}
+
+bool sameValues(const rl::CourseLighting& a, const rl::CourseLighting& b) {
+    const rl::Material &x = a.material, &y = b.material;
+    if (!(x.ka == y.ka && x.kd == y.kd && x.od == y.od && x.ks == y.ks &&
+          x.shininess == y.shininess && a.ambientIntensity == b.ambientIntensity &&
+          a.lights.size() == b.lights.size()))
+        return false;
+    for (std::size_t k = 0; k < a.lights.size(); ++k)
+        if (a.lights[k].pWorld != b.lights[k].pWorld ||
+            a.lights[k].intensity != b.lights[k].intensity)
+            return false;
+    return true;
+}
+
+std::string_view viewOf(const QByteArray& bytes) {
+    return {bytes.constData(), std::size_t(bytes.size())};
+}
+
+rl::Error saveError(const QString& path, rl::ErrorCode code, const std::string& message) {
+    return rl::makeError(code, rl::SourceLocation{path.toStdString(), 0, 0}, message);
+}
+
+}  // namespace
+
+bool SceneDocument::isModified(Part part) const {
+    switch (part) {
+        case Part::Camera:
+            return !sameValues(m_parts.camera, m_fileCamera);
+        case Part::Lighting:
+            return !sameValues(m_parts.lighting, m_fileLighting);
+        case Part::Object:
+            break;
+    }
+    return false;
+}
+
+bool SceneDocument::isModified() const {
+    return isModified(Part::Camera) || isModified(Part::Lighting);
+}
+
+bool SceneDocument::needsPath(Part part) const {
+    const QString path = source(part);
+    return path.isEmpty() || isResource(path);
+}
+
+rl::Status SceneDocument::save(Part part) {
+    if (needsPath(part))
+        return saveError(source(part), rl::ErrorCode::Usage,
+                         "the built-in scene's files cannot be written: save it to a file of "
+                         "your own (Save As)");
+    return writePart(part, source(part), m_cameraFileLayout, m_lightingFileLayout);
+}
+
+rl::Status SceneDocument::saveAs(Part part, const QString& path) {
+    return writePart(part, path, m_cameraFileLayout, m_lightingFileLayout);
+}
+
+rl::Status SceneDocument::saveCameraAs(const QString& path, rl::CameraLayout layout) {
+    return writePart(Part::Camera, path, layout, m_lightingFileLayout);
+}
+
+rl::Status SceneDocument::saveLightingAs(const QString& path, rl::LightingLayout layout) {
+    return writePart(Part::Lighting, path, m_cameraFileLayout, layout);
+}
+
+bool SceneDocument::fileHoldsLastSave(Part part) const {
+    if (part == Part::Object || m_lastSaved[index(part)].isEmpty()) return false;
+    QFile file(source(part));
+    if (!file.open(QIODevice::ReadOnly)) return false;
+    return file.readAll() == m_lastSaved[index(part)];
+}
+
+rl::Status SceneDocument::writePart(Part part, const QString& path, rl::CameraLayout cameraLayout,
+                                    rl::LightingLayout lightingLayout) {
+    if (part == Part::Object)
+        return saveError(path, rl::ErrorCode::Usage, "the object is not edited, so not saved");
+    if (path.isEmpty() || isResource(path))
+        return saveError(path, rl::ErrorCode::Usage, "cannot write into the built-in resources");
+    const std::string fileName = path.toStdString();
+    const bool camera = part == Part::Camera;
+    if (camera) {
+        rl::Scene check;
+        check.camera = m_parts.camera;
+        rl::Diagnostics basisWarnings;
+        if (auto basis = rl::CameraBasisStage().run(check, basisWarnings); !basis)
+            return saveError(
+                path, rl::ErrorCode::Degenerate,
+                "the camera was not saved, as it would not load again: " + basis.error().message);
+    }
+
+    // The file's present text gives its line ending and, in a key = value file, the lines of
+    // the other part; a file in a line layout is replaced whole.
+    QByteArray previous;
+    if (QFile::exists(path)) {
+        if (auto bytes = readInputFile(path)) previous = bytes.value();
+    }
+    const bool previousIsKeyValue =
+        camera ? rl::detectCameraLayout(viewOf(previous)) == rl::CameraLayout::KeyValue
+               : rl::detectLightingLayout(viewOf(previous)) == rl::LightingLayout::KeyValue;
+    const bool keyValue = camera ? cameraLayout == rl::CameraLayout::KeyValue
+                                 : lightingLayout == rl::LightingLayout::KeyValue;
+    if (keyValue && !previousIsKeyValue) {
+        // Only the line ending of a file in another layout carries over.
+        previous = previous.contains("\r\n") ? QByteArray("\r\n") : QByteArray();
+    }
+    auto text = camera ? rl::writeCameraFile(m_parts.camera, cameraLayout, viewOf(previous))
+                       : rl::writeLightingFile(m_parts.lighting, lightingLayout, viewOf(previous));
+    if (!text) return saveError(path, text.error().code, text.error().message);
+
+    // Read back before writing: the file must give these values again.
+    rl::Diagnostics diagnostics;
+    std::optional<rl::CourseCamera> cameraBack;
+    std::optional<rl::CourseLighting> lightingBack;
+    bool same = false;
+    if (camera) {
+        auto back = rl::readCameraFile(*text, fileName, diagnostics, cameraLayout);
+        if (back) cameraBack = back.value();
+        same = back && sameValues(*back, m_parts.camera);
+    } else {
+        auto back = rl::readLightingFile(*text, fileName, diagnostics, lightingLayout);
+        if (back) lightingBack = back.value();
+        same = back && sameValues(*back, m_parts.lighting);
+    }
+    if (!same)
+        return saveError(path, rl::ErrorCode::Unsupported,
+                         "not saved: the text written does not read back as the same values");
+
+    const QByteArray bytes = QByteArray::fromStdString(*text);
+    // Unbuffered, so that a short write is seen here: with a buffer, Qt 6.4's QSaveFile
+    // reports a write cut short by a full disk or a file size limit as a successful commit,
+    // replacing the file with a truncated one.
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered))
+        return saveError(path, rl::ErrorCode::Io,
+                         "cannot write the file: " + file.errorString().toStdString());
+    const qint64 written = file.write(bytes);
+    if (written != bytes.size()) {
+        file.cancelWriting();
+        const std::string why = written < 0 ? file.errorString().toStdString()
+                                            : "only " + std::to_string(written) + " of " +
+                                                  std::to_string(bytes.size()) +
+                                                  " bytes could be written (is the disk full?)";
+        return saveError(path, rl::ErrorCode::Io,
+                         "cannot write the file (it is left as it was): " + why);
+    }
+    if (!file.commit())
+        return saveError(
+            path, rl::ErrorCode::Io,
+            "cannot write the file (it is left as it was): " + file.errorString().toStdString());
+
+    // The part now comes from this file: its locations, warnings, layout and saved values.
+    if (camera) {
+        m_parts.camera.where = cameraBack->where;
+        m_fileCamera = m_parts.camera;
+        m_cameraFileLayout = cameraLayout;
+    } else {
+        for (std::size_t k = 0; k < m_parts.lighting.lights.size(); ++k)
+            m_parts.lighting.lights[k].where = lightingBack->lights[k].where;
+        m_fileLighting = m_parts.lighting;
+        m_lightingFileLayout = lightingLayout;
+    }
+    m_sources[index(part)] = path;
+    m_partDiagnostics[index(part)] = std::move(diagnostics);
+    m_lastSaved[index(part)] = bytes;
+    return rl::success();
 }
 
 }  // namespace rasterlab

@@ -2,11 +2,19 @@
 // with where each came from, their warnings and the render settings, or a command file
 // (seed 001) and the image of it being shown. Each course part is replaced on its own; a
 // file that fails to load leaves everything as it was.
+//
+// The course scene's camera and lighting can also be edited in place (the edit panel) and
+// saved back to their files, in the layout each was read in (course_writers.h). A part is
+// modified while its values differ from its file's (as read or as last saved), so undoing
+// every change makes it unmodified again.
 #pragma once
 
+#include <QByteArray>
 #include <QString>
 #include <QStringList>
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -57,8 +65,77 @@ public:
 
     std::shared_ptr<const rl::Scene> scene() const;
 
+    // ---- Editing without files -------------------------------------------------------
+    // The values of the course scene, changed in place (the sources, warnings and layouts
+    // stay those of the files). Lights out of range are ignored.
+    void setCamera(const rl::CourseCamera& camera);  // C, N, V, d, hx, hy (not `where`)
+    void setLightPosition(std::size_t light, const rl::dvec3& pWorld);
+    void setLightIntensity(std::size_t light, const rl::vec3& intensity);
+    void setAmbientIntensity(const rl::vec3& intensity);  // Ia
+    void setMaterial(const rl::Material& material);       // ka, kd, Od, ks, n
+    // (the shading model: setShading above)
+
+    // The same, one field at a time, as up to three numbers (x y z, r g b, or one number in
+    // [0]): what the edit panel and its undo commands hold. Shading is the ShadingModel's
+    // value; it belongs to no file.
+    enum class Field : std::uint8_t {
+        C,
+        N,
+        V,
+        D,
+        Hx,
+        Hy,
+        LightPosition,   // Pl of one light
+        LightIntensity,  // Il of one light
+        Ambient,         // Ia
+        Ka,
+        Kd,  // per channel
+        Od,
+        Ks,
+        Shininess,  // n
+        Shading,
+    };
+    using Numbers = std::array<double, 3>;
+    static int componentCount(Field field);          // 3 or 1
+    static std::optional<Part> partOf(Field field);  // Camera, Lighting, or none (Shading)
+    Numbers value(Field field, std::size_t light = 0) const;
+    void setValue(Field field, const Numbers& value, std::size_t light = 0);
+
+    // Whether the camera (lighting) differs from its file; the object is never modified.
+    bool isModified(Part part) const;
+    bool isModified() const;
+    // Bumped whenever the camera or lighting is replaced from a file (open, a layout chosen,
+    // the default scene): what was edited before no longer applies (the edit panel clears its
+    // undo history).
+    std::uint64_t partsReplaced() const { return m_partsReplaced; }
+
+    // The layout each file is in, which save() writes: the one chosen (cameraLayout()) or, for
+    // Auto, the one detected when it was read (UFPE for the embedded default scene); after
+    // saveAs, the one written.
+    rl::CameraLayout cameraFileLayout() const { return m_cameraFileLayout; }
+    rl::LightingLayout lightingFileLayout() const { return m_lightingFileLayout; }
+    // Whether save(part) needs a path first: the part comes from the resources (":/...").
+    bool needsPath(Part part) const;
+    // Writes the camera or lighting to its file in its layout, atomically (QSaveFile: the old
+    // file stays whole if anything fails), then reads the text back to check it and to point
+    // the warnings at the new lines; the part is then unmodified. A key = value file keeps its
+    // other lines (course_writers.h), a file its line ending. A camera without a basis (N or V
+    // zero or parallel, d, hx or hy zero) is not saved: it would not load again. On error
+    // nothing changes.
+    rl::Status save(Part part);
+    // The same to another file, which the part comes from afterwards: in the part's file
+    // layout, or in the one given.
+    rl::Status saveAs(Part part, const QString& path);
+    rl::Status saveCameraAs(const QString& path, rl::CameraLayout layout);
+    rl::Status saveLightingAs(const QString& path, rl::LightingLayout layout);
+    // Whether the part's file holds the bytes this document last saved there (a file watcher
+    // can then tell the document's own save from another program's change).
+    bool fileHoldsLastSave(Part part) const;
+
 private:
     static std::size_t index(Part part) { return static_cast<std::size_t>(part); }
+    rl::Status writePart(Part part, const QString& path, rl::CameraLayout cameraLayout,
+                         rl::LightingLayout lightingLayout);
 
     bool m_loaded = false;
     rl::CourseSceneParts m_parts;
@@ -71,6 +148,14 @@ private:
     QString m_commandFilePath;
     rl::Diagnostics m_commandFileDiagnostics;
     int m_imageIndex = 0;
+
+    // Editing: the values of the files (as read or last saved), their layouts, what was saved.
+    rl::CourseCamera m_fileCamera;
+    rl::CourseLighting m_fileLighting;
+    rl::CameraLayout m_cameraFileLayout = rl::CameraLayout::Ufpe;
+    rl::LightingLayout m_lightingFileLayout = rl::LightingLayout::Ufpe;
+    QByteArray m_lastSaved[2];  // camera, lighting
+    std::uint64_t m_partsReplaced = 0;
 };
 
 }  // namespace rasterlab

@@ -55,7 +55,8 @@ bool writeTorus(const QString& dir, int triangles, QString paths[3]) {
     out.setRealNumberPrecision(9);
     out << mesh->positions.size() << ' ' << mesh->triangles.size() << '\n';
     for (const rl::dvec4& p : mesh->positions) out << p.x << ' ' << p.y << ' ' << p.z << '\n';
-    for (const auto& t : mesh->triangles) out << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    for (const auto& t : mesh->triangles)
+        out << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
     return true;
 }
 
@@ -70,17 +71,18 @@ int main(int argc, char* argv[]) {
     rl::keepFrameMemory();
     QApplication app(argc, argv);
     QCommandLineParser parser;
-    parser.addOptions({{QStringLiteral("object"), QStringLiteral("object file"), QStringLiteral("F")},
-                       {QStringLiteral("camera"), QStringLiteral("camera file"), QStringLiteral("F")},
-                       {QStringLiteral("lighting"), QStringLiteral("lighting file"), QStringLiteral("F")},
-                       {QStringLiteral("torus"), QStringLiteral("a generated torus of about N triangles"),
-                        QStringLiteral("N")},
-                       {QStringLiteral("granularity"), QStringLiteral("triangle|scanline|span|pixel"),
-                        QStringLiteral("G"), QStringLiteral("scanline")},
-                       {QStringLiteral("steps"), QStringLiteral("steps to time"), QStringLiteral("N"),
-                        QStringLiteral("300")},
-                       {QStringLiteral("docks"), QStringLiteral("all: every dock shown; image: none"),
-                        QStringLiteral("D"), QStringLiteral("all")}});
+    parser.addOptions(
+        {{QStringLiteral("object"), QStringLiteral("object file"), QStringLiteral("F")},
+         {QStringLiteral("camera"), QStringLiteral("camera file"), QStringLiteral("F")},
+         {QStringLiteral("lighting"), QStringLiteral("lighting file"), QStringLiteral("F")},
+         {QStringLiteral("torus"), QStringLiteral("a generated torus of about N triangles"),
+          QStringLiteral("N")},
+         {QStringLiteral("granularity"), QStringLiteral("triangle|scanline|span|pixel"),
+          QStringLiteral("G"), QStringLiteral("scanline")},
+         {QStringLiteral("steps"), QStringLiteral("steps to time"), QStringLiteral("N"),
+          QStringLiteral("300")},
+         {QStringLiteral("docks"), QStringLiteral("all: every dock shown; image: none"),
+          QStringLiteral("D"), QStringLiteral("all")}});
     parser.process(app);
 
     QTemporaryDir dir;
@@ -129,14 +131,15 @@ int main(int argc, char* argv[]) {
     }
     Inspection* inspection = window.inspection();
     const QString g = parser.value(QStringLiteral("granularity"));
-    inspection->setGranularity(g == QLatin1String("triangle")  ? rl::StepGranularity::Triangle
-                               : g == QLatin1String("span")    ? rl::StepGranularity::Span
-                               : g == QLatin1String("pixel")   ? rl::StepGranularity::Pixel
-                                                               : rl::StepGranularity::Scanline);
+    inspection->setGranularity(g == QLatin1String("triangle") ? rl::StepGranularity::Triangle
+                               : g == QLatin1String("span")   ? rl::StepGranularity::Span
+                               : g == QLatin1String("pixel")  ? rl::StepGranularity::Pixel
+                                                              : rl::StepGranularity::Scanline);
     const auto frame = window.currentFrame();
     const rl::FrameReplay* replay = inspection->replay();
     // Start in the middle of the frame, where the most has been drawn.
-    inspection->seek(replay->atFragment(static_cast<std::uint32_t>(replay->fragments().size() / 3)));
+    inspection->seek(
+        replay->atFragment(static_cast<std::uint32_t>(replay->fragments().size() / 3)));
     window.repaint();
     QCoreApplication::processEvents();
     const int steps = parser.value(QStringLiteral("steps")).toInt();
@@ -156,9 +159,10 @@ int main(int argc, char* argv[]) {
                 replay->fragments().size(), replay->rows().size(),
                 qPrintable(parser.value(QStringLiteral("docks"))));
     std::printf("frame: %.1f ms; replay built in %.1f ms\n", frame->totalMilliseconds, buildMs);
-    std::printf("%zu %s steps: replay and repaint per step median %.2f ms, p90 %.2f ms, worst "
-                "%.2f ms: %.0f steps/s\n",
-                ms.size(), qPrintable(g), median, percentile(ms, 0.9),
-                *std::max_element(ms.begin(), ms.end()), 1000.0 / median);
+    std::printf(
+        "%zu %s steps: replay and repaint per step median %.2f ms, p90 %.2f ms, worst "
+        "%.2f ms: %.0f steps/s\n",
+        ms.size(), qPrintable(g), median, percentile(ms, 0.9),
+        *std::max_element(ms.begin(), ms.end()), 1000.0 / median);
     return 0;
 }

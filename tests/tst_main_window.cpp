@@ -111,7 +111,7 @@ void TestMainWindow::defaultScene() {
     WAIT_FOR_FIRST_FRAME(spy);
     QCOMPARE(spy.count(), 1);
     // The window names what it shows: the object, or the command file.
-    QCOMPARE(window.windowTitle(), QStringLiteral("trefoil.byu (built in) - RasterLab"));
+    QCOMPARE(window.windowTitle(), QStringLiteral("trefoil.byu (built in)[*] - RasterLab"));
     QVERIFY(window.document().isLoaded());
 
     const QImage& image = window.currentImage();
@@ -452,16 +452,20 @@ void TestMainWindow::exportToMissingFolder() {
 void TestMainWindow::docks() {
     MainWindow window;
     const QList<QDockWidget*> docks = window.findChildren<QDockWidget*>();
-    QCOMPARE(docks.size(), 5);
+    QCOMPARE(docks.size(), 12);
     std::set<QString> names;
     for (const QDockWidget* dock : docks) {
         QVERIFY2(!dock->objectName().isEmpty(), qPrintable(dock->windowTitle()));
         QVERIFY(dock->widget());
         names.insert(dock->objectName());
     }
-    const std::set<QString> expected = {QStringLiteral("messagesDock"), QStringLiteral("sceneDock"),
-                                        QStringLiteral("accuracyDock"), QStringLiteral("zbufferDock"),
-                                        QStringLiteral("breakpointsDock")};
+    const std::set<QString> expected = {
+        QStringLiteral("messagesDock"),    QStringLiteral("sceneDock"),
+        QStringLiteral("accuracyDock"),    QStringLiteral("zbufferDock"),
+        QStringLiteral("breakpointsDock"), QStringLiteral("editDock"),
+        QStringLiteral("cameraBasisDock"), QStringLiteral("projectionDock"),
+        QStringLiteral("scanlineDock"),    QStringLiteral("pixelInspectorDock"),
+        QStringLiteral("vertexTableDock"), QStringLiteral("normalsDock")};
     QCOMPARE(names, expected);
     const auto* messagesDock = window.findChild<QDockWidget*>(QStringLiteral("messagesDock"));
     QVERIFY(messagesDock);
@@ -594,7 +598,7 @@ void TestMainWindow::commandFile() {
     QCOMPARE(frame.image.size(), QSize(20, 10));
     QCOMPARE(frame.image.pixelColor(1, 1), QColor(255, 0, 0, 255));
     QCOMPARE(frame.image.pixelColor(19, 9).alpha(), 0);  // untouched: transparent
-    QCOMPARE(window.windowTitle(), QStringLiteral("two.txt - RasterLab"));
+    QCOMPARE(window.windowTitle(), QStringLiteral("two.txt[*] - RasterLab"));
     QVERIFY(window.document().showsCommandFile());
     QCOMPARE(window.document().imageNames(), QStringList({"first.png", "second.png"}));
     auto* imageMenu = window.findChild<QMenu*>(QStringLiteral("imageMenu"));

@@ -8,12 +8,12 @@
 #include <QDockWidget>
 #include <QFile>
 #include <QLabel>
-#include <QSlider>
 #include <QListWidget>
 #include <QMenu>
 #include <QMimeData>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QTemporaryDir>
 #include <QToolButton>
 
@@ -101,9 +101,10 @@ private slots:
         const rl::ReplayRow& row = replay->rows()[0];
         QCOMPARE(differingPixels(window.imageView()->image(), empty),
                  static_cast<int>(replay->writtenBefore(row.fragmentEnd)));
-        QVERIFY(window.stageStrip()->findChild<QLabel*>(QStringLiteral("stageNote"))
-                    ->text()
-                    .contains(QStringLiteral("scanline %1").arg(row.y)));
+        QCOMPARE(window.stageStrip()->findChild<QLabel*>(QStringLiteral("stageNote"))->text(),
+                 QStringLiteral("while stepping, stages 5-7 run together, fragment by fragment"));
+        QVERIFY(window.steppingBar()->positionLabel()->text().contains(
+            QStringLiteral("scanline %1").arg(row.y)));
         // The overlay shows the triangle, its scanline and span.
         const ImageOverlay& overlay = window.imageView()->overlay();
         QVERIFY(overlay.currentTriangle.has_value());
@@ -134,7 +135,8 @@ private slots:
     void playStopsAtTheEndAndAtBreakpoints() {
         MainWindow window;
         const QTemporaryDir dir;
-        window.openPart(SceneDocument::Part::Camera, writeFixture(dir.filePath(QStringLiteral("c.cfg")), kCamera));
+        window.openPart(SceneDocument::Part::Camera,
+                        writeFixture(dir.filePath(QStringLiteral("c.cfg")), kCamera));
         window.openPart(SceneDocument::Part::Lighting,
                         writeFixture(dir.filePath(QStringLiteral("l.txt")), kLighting));
         window.openPart(SceneDocument::Part::Object,
@@ -188,7 +190,8 @@ private slots:
         const rl::ReplayCursor one = inspection->replay()->next({}, rl::StepGranularity::Triangle);
         QCOMPARE(inspection->cursor(), one);
         QTest::keyClick(image, Qt::Key_PageDown);
-        QCOMPARE(inspection->cursor(), inspection->replay()->next(one, rl::StepGranularity::Triangle));
+        QCOMPARE(inspection->cursor(),
+                 inspection->replay()->next(one, rl::StepGranularity::Triangle));
         QTest::keyClick(image, Qt::Key_PageUp);
         QCOMPARE(inspection->cursor(), one);
         QCOMPARE(inspection->pickedPixel(), QPoint(10, 10));
@@ -233,8 +236,10 @@ private slots:
     void skippedStagesAreMarked() {
         MainWindow window;
         QVERIFY(waitForReplay(window));
-        QVERIFY(!window.stageStrip()->button(rl::StageId::CameraBasis)->text().contains(
-            QStringLiteral("skipped")));
+        QVERIFY(!window.stageStrip()
+                     ->button(rl::StageId::CameraBasis)
+                     ->text()
+                     .contains(QStringLiteral("skipped")));
         const QTemporaryDir dir;
         // An unlit command file: no course camera, nothing lit.
         const QString path = writeFixture(dir.filePath(QStringLiteral("unlit.txt")),
@@ -242,13 +247,17 @@ private slots:
                                           "xyz 1 -1 0\nxyz 0 1 0\ntrif 1 2 3\n");
         QVERIFY(window.openPath(path));
         QVERIFY(waitForReplay(window));
-        for (rl::StageId stage : {rl::StageId::CameraBasis, rl::StageId::Normals, rl::StageId::Shading})
-            QVERIFY2(window.stageStrip()->button(stage)->text().endsWith(QStringLiteral("(skipped)")),
-                     qPrintable(window.stageStrip()->button(stage)->text()));
+        for (rl::StageId stage :
+             {rl::StageId::CameraBasis, rl::StageId::Normals, rl::StageId::Shading})
+            QVERIFY2(
+                window.stageStrip()->button(stage)->text().endsWith(QStringLiteral("(skipped)")),
+                qPrintable(window.stageStrip()->button(stage)->text()));
         QCOMPARE(window.stageStrip()->button(rl::StageId::Normals)->toolTip(),
                  QStringLiteral("Normals is skipped: nothing is lit: no light reads a normal"));
-        QVERIFY(!window.stageStrip()->button(rl::StageId::Projection)->text().contains(
-            QStringLiteral("skipped")));
+        QVERIFY(!window.stageStrip()
+                     ->button(rl::StageId::Projection)
+                     ->text()
+                     .contains(QStringLiteral("skipped")));
     }
 
     void detectsWhatAFileHolds() {
@@ -260,8 +269,9 @@ private slots:
         QCOMPARE(detectFileKind(file("object.txt", kTetrahedron)), FileKind::Object);
         QCOMPARE(detectFileKind(file("camera.txt", kCamera)), FileKind::Camera);
         QCOMPARE(detectFileKind(file("light.txt", kLighting)), FileKind::Lighting);
-        QCOMPARE(detectFileKind(file("kv.txt", "C = 0 0 -5\nN = 0 0 1\nV = 0 1 0\nd = 1\n"
-                                               "hx = 1\nhy = 1\n")),
+        QCOMPARE(detectFileKind(file("kv.txt",
+                                     "C = 0 0 -5\nN = 0 0 1\nV = 0 1 0\nd = 1\n"
+                                     "hx = 1\nhy = 1\n")),
                  FileKind::Camera);
         QCOMPARE(detectFileKind(file("kvl.txt", "Iamb = 1 1 1\nKa = 0.1\nPl = 0 0 0\n")),
                  FileKind::Lighting);
@@ -277,7 +287,8 @@ private slots:
         const QTemporaryDir dir;
         const QString camera = writeFixture(dir.filePath(QStringLiteral("cam.cfg")), kCamera);
         const QString lighting = writeFixture(dir.filePath(QStringLiteral("luz.txt")), kLighting);
-        const QString object = writeFixture(dir.filePath(QStringLiteral("tetra.byu")), kTetrahedron);
+        const QString object =
+            writeFixture(dir.filePath(QStringLiteral("tetra.byu")), kTetrahedron);
         QVERIFY(window.openPath(dir.path()));
         QCOMPARE(window.document().source(SceneDocument::Part::Camera), camera);
         QCOMPARE(window.document().source(SceneDocument::Part::Lighting), lighting);
@@ -302,7 +313,8 @@ private slots:
         const QString object = writeFixture(dir.filePath(QStringLiteral("drop.byu")), kTetrahedron);
         QMimeData mime;
         mime.setUrls({QUrl::fromLocalFile(object)});
-        QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, &mime, Qt::LeftButton,
+                              Qt::NoModifier);
         QCoreApplication::sendEvent(&window, &enter);
         QVERIFY(enter.isAccepted());
         QDropEvent drop(QPointF(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
@@ -324,7 +336,8 @@ private slots:
                                   kTimeoutMs);
         // Saved by writing another file and renaming it over this one (as many editors do):
         // still watched.
-        const QString temporary = writeFixture(dir.filePath(QStringLiteral("w.byu.tmp")), kTetrahedron);
+        const QString temporary =
+            writeFixture(dir.filePath(QStringLiteral("w.byu.tmp")), kTetrahedron);
         QVERIFY(QFile::remove(object));
         QVERIFY(QFile::rename(temporary, object));
         QTRY_COMPARE_WITH_TIMEOUT(window.currentFrame()->scene->triangleCount(), std::size_t(4),
@@ -334,11 +347,11 @@ private slots:
         QByteArray bad = kTetrahedron;
         bad.replace("80 80 -80", "80 8x0 -80");
         writeFixture(object, bad);
-        QTRY_VERIFY_WITH_TIMEOUT(window.messages()->count() > 0 &&
-                                     window.messages()->item(0)->text().startsWith(
-                                         QStringLiteral("Error: ") + object +
-                                         QStringLiteral(":3:4: expected a number")),
-                                 kTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            window.messages()->count() > 0 &&
+                window.messages()->item(0)->text().startsWith(
+                    QStringLiteral("Error: ") + object + QStringLiteral(":3:4: expected a number")),
+            kTimeoutMs);
         QCOMPARE(window.currentFrame()->scene->triangleCount(), std::size_t(4));
         QCOMPARE(window.document().parts().object.mesh->triangles.size(), std::size_t(4));
     }
@@ -360,13 +373,15 @@ private slots:
         const QString steps = dir.filePath(QStringLiteral("steps"));
         QCOMPARE(window.exportSequence(steps, 1000), stops);
         QVERIFY(QFile::exists(steps + QStringLiteral("/step-00000.png")));
-        QVERIFY(QFile::exists(steps + QStringLiteral("/step-%1.png").arg(stops - 1, 5, 10, QLatin1Char('0'))));
+        QVERIFY(QFile::exists(
+            steps + QStringLiteral("/step-%1.png").arg(stops - 1, 5, 10, QLatin1Char('0'))));
         QVERIFY(inspection->atEnd());  // where it was
         QCOMPARE(window.exportSequence(dir.filePath(QStringLiteral("two")), 2), 2);
         // The image as displayed; the depth buffer at the start (all empty: black).
         const QString shown = dir.filePath(QStringLiteral("shown.png"));
         QVERIFY(window.exportDisplayed(shown));
-        QCOMPARE(QImage(shown).size(), window.imageView()->size() * window.imageView()->devicePixelRatio());
+        QCOMPARE(QImage(shown).size(),
+                 window.imageView()->size() * window.imageView()->devicePixelRatio());
         inspection->toStart();
         const QString depth = dir.filePath(QStringLiteral("depth.png"));
         QVERIFY(window.exportDepthBuffer(depth));
@@ -377,8 +392,10 @@ private slots:
         QVERIFY(window.exportDepthBuffer(depth));
         QVERIFY(QImage(depth).pixel(400, 300) != qRgba(0, 0, 0, 255));
         QVERIFY(window.exportNormalBuffer(dir.filePath(QStringLiteral("n.png"))));
-        QVERIFY(window.exportDock(QStringLiteral("zbufferDock"), dir.filePath(QStringLiteral("z.png"))));
-        QVERIFY(!window.exportDock(QStringLiteral("noSuchDock"), dir.filePath(QStringLiteral("x.png"))));
+        QVERIFY(window.exportDock(QStringLiteral("zbufferDock"),
+                                  dir.filePath(QStringLiteral("z.png"))));
+        QVERIFY(!window.exportDock(QStringLiteral("noSuchDock"),
+                                   dir.filePath(QStringLiteral("x.png"))));
         // An unwritable place: the error, nothing else lost.
         QVERIFY(!window.exportDisplayed(dir.filePath(QStringLiteral("no/such/folder/x.png"))));
     }

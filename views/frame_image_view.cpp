@@ -137,8 +137,9 @@ void FrameImageView::paintOverlay(QPainter& painter) const {
     painter.setRenderHint(QPainter::Antialiasing, true);
     if (!o.coverage.isNull()) {
         painter.setRenderHint(QPainter::SmoothPixmapTransform, false);
-        painter.drawImage(QRectF(origin, QSizeF(m_image.width() * m_zoom, m_image.height() * m_zoom)),
-                          o.coverage);
+        painter.drawImage(
+            QRectF(origin, QSizeF(m_image.width() * m_zoom, m_image.height() * m_zoom)),
+            o.coverage);
     }
     if (o.scanline >= 0) {
         // The row being walked, and the span on it.
@@ -166,7 +167,8 @@ void FrameImageView::paintOverlay(QPainter& painter) const {
         painter.setBrush(QColor(60, 220, 90, 220));
         const double r = std::max(1.5, m_zoom / 10.0);
         for (const QPoint& p : o.coveredPixels)
-            painter.drawEllipse(widgetPoint({p.x() + o.sampleOffset, p.y() + o.sampleOffset}), r, r);
+            painter.drawEllipse(widgetPoint({p.x() + o.sampleOffset, p.y() + o.sampleOffset}), r,
+                                r);
     }
     auto outline = [&](const std::array<QPointF, 3>& t, const QColor& colour) {
         QPainterPath path;

@@ -61,7 +61,7 @@ public slots:
 
 signals:
     void pixelHovered(QPoint pixel);  // (-1, -1) when the mouse leaves the image
-    void pixelPicked(QPoint pixel);  // clicked, or the picked one moved with the arrow keys
+    void pixelPicked(QPoint pixel);   // clicked, or the picked one moved with the arrow keys
     void zoomChanged(double zoom);
 
 protected:

@@ -101,8 +101,9 @@ void StageStrip::refresh() {
         QString text = QStringLiteral("%1 %2").arg(i + 1).arg(stageName(stage));
         if (!reason.isEmpty()) text += QStringLiteral(" ") + tr("(skipped)");
         button->setText(text);
-        button->setToolTip(reason.isEmpty() ? stageName(stage)
-                                            : tr("%1 is skipped: %2").arg(stageName(stage), reason));
+        button->setToolTip(reason.isEmpty()
+                               ? stageName(stage)
+                               : tr("%1 is skipped: %2").arg(stageName(stage), reason));
         QFont f = font;
         f.setItalic(!reason.isEmpty());
         f.setBold(stage == m_inspection->stage());
@@ -116,8 +117,7 @@ void StageStrip::refresh() {
                           !m_inspection->atEnd() &&
                           m_inspection->granularity() != rl::StepGranularity::Stage;
     m_note->setFont(font);
-    m_note->setText(midFrame ? tr("stages 5-7 run together, fragment by fragment: %1")
-                                   .arg(m_inspection->positionText())
+    m_note->setText(midFrame ? tr("while stepping, stages 5-7 run together, fragment by fragment")
                              : QString());
 }
 

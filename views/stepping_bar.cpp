@@ -40,8 +40,8 @@ SteppingBar::SteppingBar(Inspection* inspection, QWidget* parent)
     : QWidget(parent), m_inspection(inspection) {
     setObjectName(QStringLiteral("steppingBar"));
     const auto icon = [this](QStyle::StandardPixmap p) { return style()->standardIcon(p); };
-    auto action = [&](const QString& text, QStyle::StandardPixmap pixmap,
-                      QList<QKeySequence> keys, const char* name) {
+    auto action = [&](const QString& text, QStyle::StandardPixmap pixmap, QList<QKeySequence> keys,
+                      const char* name) {
         auto* a = new QAction(icon(pixmap), text, this);
         a->setShortcuts(keys);
         a->setObjectName(QLatin1String(name));
@@ -55,12 +55,12 @@ SteppingBar::SteppingBar(Inspection* inspection, QWidget* parent)
     m_back = action(tr("Step &Back"), QStyle::SP_MediaSeekBackward,
                     {QKeySequence(Qt::SHIFT | Qt::Key_F10), QKeySequence(Qt::Key_PageUp)},
                     "stepBackAction");
-    m_play = action(tr("&Play / Pause"), QStyle::SP_MediaPlay, {QKeySequence(Qt::Key_F6)},
-                    "playAction");
+    m_play =
+        action(tr("&Play / Pause"), QStyle::SP_MediaPlay, {QKeySequence(Qt::Key_F6)}, "playAction");
     m_play->setCheckable(true);
-    m_forward = action(tr("Step &Forward"), QStyle::SP_MediaSeekForward,
-                       {QKeySequence(Qt::Key_F10), QKeySequence(Qt::Key_PageDown)},
-                       "stepForwardAction");
+    m_forward =
+        action(tr("Step &Forward"), QStyle::SP_MediaSeekForward,
+               {QKeySequence(Qt::Key_F10), QKeySequence(Qt::Key_PageDown)}, "stepForwardAction");
     m_end = action(tr("Jump to &End"), QStyle::SP_MediaSkipForward,
                    {QKeySequence(Qt::CTRL | Qt::Key_End)}, "toEndAction");
     m_continue = action(tr("&Continue to Breakpoint"), QStyle::SP_MediaSeekForward,

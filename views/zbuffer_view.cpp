@@ -240,12 +240,12 @@ const rl::DepthTest* ZBufferView::shown() const {
 QString ZBufferView::explanation() const {
     if (!m_frame || !m_frame->scene) return {};
     const rl::Conventions& c = m_frame->scene->conventions;
-    const QString clear = std::isinf(c.depthClear) ? tr("+&infin;")
-                                                   : QString::number(double(c.depthClear));
+    const QString clear =
+        std::isinf(c.depthClear) ? tr("+&infin;") : QString::number(double(c.depthClear));
     const QString test = c.depthWinsOnTie ? QStringLiteral("z &le; z<sub>stored</sub>")
                                           : QStringLiteral("z &lt; z<sub>stored</sub>");
-    const QString what = c.depth == rl::DepthSource::ViewZ ? tr("the view-space z of P'")
-                                                           : tr("the NDC z");
+    const QString what =
+        c.depth == rl::DepthSource::ViewZ ? tr("the view-space z of P'") : tr("the NDC z");
     return tr("<b>Z-buffer.</b> Every pixel starts at %1. Each fragment's depth "
               "z = &alpha;z<sub>1</sub> + &beta;z<sub>2</sub> + &gamma;z<sub>3</sub> (%2) is "
               "compared with the stored one; it is written, with its colour, only when %3. "

@@ -1,0 +1,674 @@
+#include "edit_panel.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QMenu>
+#include <QMessageBox>
+#include <QScrollArea>
+#include <QToolButton>
+#include <QUndoStack>
+#include <QVBoxLayout>
+#include <QWheelEvent>
+
+#include <cmath>
+
+#include "scene_edits.h"
+
+namespace rasterlab {
+
+namespace {
+
+// A spin box for one number of a course file: '.' as the decimal separator whatever the
+// system's locale (course files use it), six decimals kept but trailing zeros not shown
+// ("0.667", not "0.667000"), Ctrl+Z and Ctrl+Y left to the panel's undo rather than to the
+// line edit's own, and the wheel only when it has the focus (so that scrolling the panel
+// does not change values on the way).
+class NumberBox : public QDoubleSpinBox {
+public:
+    explicit NumberBox(QWidget* parent = nullptr) : QDoubleSpinBox(parent) {
+        QLocale c = QLocale::c();
+        c.setNumberOptions(QLocale::OmitGroupSeparator);
+        setLocale(c);
+        setDecimals(6);
+        setKeyboardTracking(true);
+        setAccelerated(true);
+        setFocusPolicy(Qt::StrongFocus);
+        setAlignment(Qt::AlignRight);
+    }
+
+    QString textFromValue(double value) const override {
+        QString text = locale().toString(value, 'f', decimals());
+        if (text.contains(QLatin1Char('.'))) {
+            while (text.endsWith(QLatin1Char('0'))) text.chop(1);
+            if (text.endsWith(QLatin1Char('.'))) text.chop(1);
+        }
+        if (text == QLatin1String("-0")) text = QStringLiteral("0");
+        return text;
+    }
+
+    // As wide as a typical number ("-000.00"), not as the range's ends (-1000000): a dock of
+    // 350 pixels holds three in a row; longer numbers scroll, or show when the dock widens.
+    QSize sizeHint() const override { return narrowed(QDoubleSpinBox::sizeHint()); }
+    QSize minimumSizeHint() const override { return narrowed(QDoubleSpinBox::minimumSizeHint()); }
+
+protected:
+    bool event(QEvent* event) override {
+        if (event->type() == QEvent::ShortcutOverride) {
+            auto* key = static_cast<QKeyEvent*>(event);
+            if (key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo)) {
+                event->ignore();  // not the line edit's: the shortcut of the undo action
+                return true;
+            }
+        }
+        return QDoubleSpinBox::event(event);
+    }
+
+    void wheelEvent(QWheelEvent* event) override {
+        if (!hasFocus()) {
+            event->ignore();
+            return;
+        }
+        QDoubleSpinBox::wheelEvent(event);
+    }
+
+private:
+    QSize narrowed(QSize hint) const {
+        const QFontMetrics metrics = fontMetrics();
+        const int longest = std::max(metrics.horizontalAdvance(textFromValue(minimum())),
+                                     metrics.horizontalAdvance(textFromValue(maximum())));
+        const int typical = metrics.horizontalAdvance(QStringLiteral("-000.00"));
+        if (longest > typical) hint.rwidth() -= longest - typical;
+        return hint;
+    }
+};
+
+// The course's symbol of each field ("" for the shading model).
+const char* symbolOf(SceneDocument::Field field) {
+    static const char* const kSymbols[] = {"C",  "N",  "V",  "d",  "hx", "hy", "Pl", "Il",
+                                           "Ia", "ka", "kd", "Od", "ks", "n",  ""};
+    return kSymbols[int(field)];
+}
+
+bool isColour(SceneDocument::Field field) {
+    return field == SceneDocument::Field::LightIntensity ||
+           field == SceneDocument::Field::Ambient || field == SceneDocument::Field::Kd ||
+           field == SceneDocument::Field::Od;
+}
+
+// "x", "y", "z" or "r", "g", "b".
+QLatin1Char componentLetter(SceneDocument::Field field, int component) {
+    return QLatin1Char((isColour(field) ? "rgb" : "xyz")[component]);
+}
+
+bool isLightField(SceneDocument::Field field) {
+    return field == SceneDocument::Field::LightPosition ||
+           field == SceneDocument::Field::LightIntensity;
+}
+
+// The value the document will hold: the lighting's colours and coefficients are floats.
+SceneDocument::Numbers storedAs(SceneDocument::Field field, SceneDocument::Numbers numbers) {
+    const auto part = SceneDocument::partOf(field);
+    if (part == SceneDocument::Part::Lighting && field != SceneDocument::Field::LightPosition)
+        for (double& n : numbers) n = double(float(n));
+    return numbers;
+}
+
+// Shows a value in a spin box without a valueChanged signal, and only when the box shows
+// another value: a box being typed in keeps its text ("2.0" on the way to "2.05" is not
+// rewritten to "2" when the window refreshes the panel after each change).
+void showValue(QDoubleSpinBox* box, double value) {
+    const double shown = QString::number(value, 'f', box->decimals()).toDouble();
+    if (box->value() == shown) return;
+    const QSignalBlocker blocker(box);
+    box->setValue(value);
+}
+
+QLabel* symbolLabel(const QString& symbol, const QString& tip) {
+    auto* label = new QLabel(symbol);
+    label->setToolTip(tip);
+    label->setTextFormat(Qt::RichText);
+    return label;
+}
+
+// "x  y  z" or "R  G  B" above three columns of spin boxes.
+void addHeader(QGridLayout* grid, int row, const QStringList& names) {
+    for (int k = 0; k < names.size(); ++k) {
+        auto* label = new QLabel(names[k]);
+        label->setAlignment(Qt::AlignCenter);
+        label->setForegroundRole(QPalette::PlaceholderText);
+        grid->addWidget(label, row, k + 1);
+    }
+}
+
+}  // namespace
+
+EditPanel::EditPanel(SceneDocument* document, QWidget* parent)
+    : QWidget(parent), m_document(document) {
+    setObjectName(QStringLiteral("editPanel"));
+    m_clock.start();
+    m_stack = new QUndoStack(this);
+    m_stack->setObjectName(QStringLiteral("editUndoStack"));
+
+    auto* scroll = new QScrollArea(this);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
+    m_content = buildContent();
+    scroll->setWidget(m_content);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(scroll);
+
+    createActions();
+    refresh();
+}
+
+QDoubleSpinBox* EditPanel::addBox(Field field, int component, double minimum, double maximum,
+                                  double step, bool adaptive) {
+    auto* box = new NumberBox;
+    box->setRange(minimum, maximum);
+    box->setSingleStep(step);
+    if (adaptive) box->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
+    // "edit_C_x", "edit_kd_r", "edit_n".
+    QString name = QStringLiteral("edit_") + QLatin1String(symbolOf(field));
+    if (SceneDocument::componentCount(field) == 3) {
+        name += QLatin1Char('_');
+        name += componentLetter(field, component);
+    }
+    box->setObjectName(name);
+    m_boxes.push_back({field, component, box});
+    connect(box, &QDoubleSpinBox::valueChanged, this, [this, field, component, box](double value) {
+        m_editing = box;
+        onBoxChanged(field, component, value);
+        m_editing = nullptr;
+    });
+    return box;
+}
+
+QWidget* EditPanel::buildContent() {
+    auto* content = new QWidget;
+    auto* groups = new QVBoxLayout(content);
+
+    m_fileLabel = new QLabel;
+    m_fileLabel->setObjectName(QStringLiteral("editFiles"));
+    m_fileLabel->setWordWrap(true);
+    m_fileLabel->setTextFormat(Qt::RichText);
+    groups->addWidget(m_fileLabel);
+
+    m_kdLink = new QToolButton;
+    m_kdLink->setObjectName(QStringLiteral("editKdLink"));
+    m_kdLink->setText(QStringLiteral("="));
+    m_kdLink->setCheckable(true);
+    m_kdLink->setAutoRaise(true);
+    m_kdLink->setToolTip(
+        tr("One kd for the three channels (the UFPE files have one number): changing one "
+           "changes all three"));
+
+    // One group per part of the lecture's formula; a row per symbol, its numbers in columns
+    // that line up from group to group (the symbols' column, and kd's link button's, are as
+    // wide in every group).
+    const int symbolWidth = fontMetrics().horizontalAdvance(QStringLiteral("hx"));
+    const int linkWidth = m_kdLink->sizeHint().width();
+    const auto group = [groups, symbolWidth, linkWidth](const QString& title) {
+        auto* box = new QGroupBox(title);
+        auto* grid = new QGridLayout(box);
+        grid->setHorizontalSpacing(4);
+        grid->setVerticalSpacing(3);
+        grid->setColumnMinimumWidth(0, symbolWidth);
+        grid->setColumnMinimumWidth(4, linkWidth);
+        grid->setColumnStretch(1, 1);
+        grid->setColumnStretch(2, 1);
+        grid->setColumnStretch(3, 1);
+        groups->addWidget(box);
+        return grid;
+    };
+    const auto vectorRow = [this](QGridLayout* grid, int row, Field field, const QString& symbol,
+                                  const QString& tip, double minimum, double maximum, double step) {
+        grid->addWidget(symbolLabel(symbol, tip), row, 0);
+        for (int k = 0; k < 3; ++k) {
+            QDoubleSpinBox* box = addBox(field, k, minimum, maximum, step);
+            box->setToolTip(tip);
+            grid->addWidget(box, row, k + 1);
+        }
+    };
+    const auto scalarRow = [this](QGridLayout* grid, int row, int column, Field field,
+                                  const QString& symbol, const QString& tip, double minimum,
+                                  double maximum, double step, bool adaptive = false) {
+        QLabel* label = symbolLabel(symbol, tip);
+        if (column > 1) label->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        grid->addWidget(label, row, column - 1);
+        QDoubleSpinBox* box = addBox(field, 0, minimum, maximum, step, adaptive);
+        box->setToolTip(tip);
+        grid->addWidget(box, row, column);
+    };
+    const QStringList xyz = {QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")};
+    const QStringList rgb = {tr("R"), tr("G"), tr("B")};
+
+    // Camera: C, N, V; d, hx, hy (adaptive steps: about 1% of the value).
+    QGridLayout* camera = group(tr("Camera"));
+    addHeader(camera, 0, xyz);
+    vectorRow(camera, 1, Field::C, QStringLiteral("C"), tr("C: the camera's position (world)"),
+              -1e6, 1e6, 10.0);
+    vectorRow(camera, 2, Field::N, QStringLiteral("N"),
+              tr("N: the view direction (normalised by the camera basis)"), -1e4, 1e4, 0.05);
+    vectorRow(camera, 3, Field::V, QStringLiteral("V"),
+              tr("V: the up vector (made orthogonal to N by Gram-Schmidt)"), -1e4, 1e4, 0.05);
+    scalarRow(camera, 4, 1, Field::D, QStringLiteral("d"),
+              tr("d: the distance from C to the projection plane"), 1e-6, 1e6, 0.1, true);
+    scalarRow(camera, 5, 1, Field::Hx, QStringLiteral("hx"),
+              tr("hx: half the width of the window on the projection plane"), 1e-6, 1e6, 0.1, true);
+    scalarRow(camera, 5, 3, Field::Hy, QStringLiteral("hy"),
+              tr("hy: half the height of the window on the projection plane"), 1e-6, 1e6, 0.1,
+              true);
+
+    // Light: Pl, Il of the light chosen.
+    QGridLayout* light = group(tr("Light"));
+    m_lightSelector = new QComboBox;
+    m_lightSelector->setObjectName(QStringLiteral("editLightSelector"));
+    m_lightSelector->setToolTip(tr("The light whose position and colour are shown"));
+    light->addWidget(m_lightSelector, 0, 0, 1, 4);
+    connect(m_lightSelector, &QComboBox::currentIndexChanged, this, [this] { showLight(); });
+    addHeader(light, 1, xyz);
+    vectorRow(light, 2, Field::LightPosition, QStringLiteral("P<sub>l</sub>"),
+              tr("Pl: the light's position (world)"), -1e6, 1e6, 10.0);
+    addHeader(light, 3, rgb);
+    vectorRow(light, 4, Field::LightIntensity, QStringLiteral("I<sub>l</sub>"),
+              tr("Il: the light's colour, 0 to 255 per channel"), 0.0, 1000.0, 5.0);
+
+    // Ambient: Ia, ka.
+    QGridLayout* ambient = group(tr("Ambient"));
+    addHeader(ambient, 0, rgb);
+    vectorRow(ambient, 1, Field::Ambient, QStringLiteral("I<sub>a</sub>"),
+              tr("Ia: the ambient light's colour, 0 to 255 per channel"), 0.0, 1000.0, 5.0);
+    scalarRow(ambient, 2, 1, Field::Ka, QStringLiteral("k<sub>a</sub>"),
+              tr("ka: the ambient coefficient, 0 to 1"), 0.0, 1.0, 0.05);
+
+    // Material: kd (linked or per channel), Od, ks, n.
+    QGridLayout* material = group(tr("Material"));
+    addHeader(material, 0, rgb);
+    vectorRow(material, 1, Field::Kd, QStringLiteral("k<sub>d</sub>"),
+              tr("kd: the diffuse coefficient of each channel, 0 to 1"), 0.0, 1.0, 0.05);
+    material->addWidget(m_kdLink, 1, 4);
+    vectorRow(material, 2, Field::Od, QStringLiteral("O<sub>d</sub>"),
+              tr("Od: the object's diffuse colour, 0 to 1 per channel"), 0.0, 1.0, 0.05);
+    scalarRow(material, 3, 1, Field::Ks, QStringLiteral("k<sub>s</sub>"),
+              tr("ks: the specular coefficient, 0 to 1"), 0.0, 1.0, 0.05);
+    scalarRow(material, 3, 3, Field::Shininess, QStringLiteral("n"),
+              tr("n: the specular exponent (larger: a smaller, sharper highlight)"), 0.0, 10000.0,
+              1.0);
+
+    // Shading: where the formula is evaluated.
+    QGridLayout* shading = group(tr("Shading"));
+    m_shading = new QComboBox;
+    m_shading->setObjectName(QStringLiteral("editShading"));
+    m_shading->addItem(tr("Phong (per pixel)"), int(rl::ShadingModel::Phong));
+    m_shading->addItem(tr("Gouraud (per vertex)"), int(rl::ShadingModel::Gouraud));
+    m_shading->addItem(tr("Flat (per triangle)"), int(rl::ShadingModel::Flat));
+    shading->addWidget(m_shading, 0, 0, 1, 4);
+    connect(m_shading, &QComboBox::currentIndexChanged, this, &EditPanel::onShadingChanged);
+
+    groups->addStretch(1);
+    return content;
+}
+
+void EditPanel::createActions() {
+    m_undoAction = m_stack->createUndoAction(this, tr("&Undo"));
+    m_undoAction->setObjectName(QStringLiteral("editUndoAction"));
+    m_undoAction->setShortcuts(QKeySequence::Undo);
+    m_redoAction = m_stack->createRedoAction(this, tr("&Redo"));
+    m_redoAction->setObjectName(QStringLiteral("editRedoAction"));
+    m_redoAction->setShortcuts(QKeySequence::Redo);
+
+    m_saveAction = new QAction(tr("&Save Camera and Lighting"), this);
+    m_saveAction->setObjectName(QStringLiteral("editSaveAction"));
+    m_saveAction->setShortcuts(QKeySequence::Save);
+    m_saveAction->setToolTip(tr("Write the edited camera and lighting to their files"));
+    connect(m_saveAction, &QAction::triggered, this, [this] { save(window()); });
+
+    m_saveCameraAsAction = new QAction(tr("&Camera..."), this);
+    m_saveCameraAsAction->setObjectName(QStringLiteral("editSaveCameraAsAction"));
+    connect(m_saveCameraAsAction, &QAction::triggered, this,
+            [this] { saveAs(Part::Camera, window()); });
+    m_saveLightingAsAction = new QAction(tr("&Lighting..."), this);
+    m_saveLightingAsAction->setObjectName(QStringLiteral("editSaveLightingAsAction"));
+    connect(m_saveLightingAsAction, &QAction::triggered, this,
+            [this] { saveAs(Part::Lighting, window()); });
+    m_saveAsMenu = new QMenu(this);
+    m_saveAsMenu->addAction(m_saveCameraAsAction);
+    m_saveAsMenu->addAction(m_saveLightingAsAction);
+    m_saveAsAction = new QAction(tr("Save &As"), this);
+    m_saveAsAction->setObjectName(QStringLiteral("editSaveAsAction"));
+    m_saveAsAction->setMenu(m_saveAsMenu);
+
+    // Shortcuts where the panel is, also in a floating dock.
+    addAction(m_undoAction);
+    addAction(m_redoAction);
+    addAction(m_saveAction);
+}
+
+QDoubleSpinBox* EditPanel::spinBox(Field field, int component) const {
+    for (const Box& b : m_boxes)
+        if (b.field == field && b.component == component) return b.box;
+    return nullptr;
+}
+
+std::size_t EditPanel::currentLight() const {
+    return std::size_t(std::max(0, m_lightSelector->currentIndex()));
+}
+
+void EditPanel::setCurrentLight(std::size_t light) {
+    if (light < std::size_t(m_lightSelector->count())) m_lightSelector->setCurrentIndex(int(light));
+}
+
+void EditPanel::refresh() {
+    if (m_document->partsReplaced() != m_seenReplaced) {
+        // A file replaced the camera or lighting: the steps were about other values. kd is
+        // linked when its channels are equal (a UFPE file's one number).
+        m_seenReplaced = m_document->partsReplaced();
+        m_stack->clear();
+        ++m_session;
+        const rl::vec3 kd = m_document->parts().lighting.material.kd;
+        m_kdLink->setChecked(kd.r == kd.g && kd.g == kd.b);
+    }
+    const bool editable = m_document->isLoaded() && !m_document->showsCommandFile();
+    m_content->setEnabled(editable);
+
+    const std::size_t lights = m_document->parts().lighting.lights.size();
+    const std::size_t shown = std::min(currentLight(), lights > 0 ? lights - 1 : 0);
+    {
+        const QSignalBlocker blocker(m_lightSelector);
+        m_lightSelector->clear();
+        for (std::size_t k = 0; k < lights; ++k)
+            m_lightSelector->addItem(tr("Light %1 of %2").arg(k + 1).arg(lights));
+        m_lightSelector->setCurrentIndex(int(shown));
+    }
+    m_lightSelector->setVisible(lights > 1);
+    for (const Box& b : m_boxes) {
+        b.box->setEnabled(!isLightField(b.field) || lights > 0);
+        showValue(b.box, m_document->value(b.field, currentLight())[std::size_t(b.component)]);
+    }
+    {
+        const QSignalBlocker blocker(m_shading);
+        m_shading->setCurrentIndex(m_shading->findData(int(m_document->settings().shading)));
+    }
+    m_saveAsAction->setEnabled(editable);
+    m_saveCameraAsAction->setEnabled(editable);
+    m_saveLightingAsAction->setEnabled(editable);
+    updateModified();
+}
+
+void EditPanel::showLight() {
+    for (const Box& b : m_boxes) {
+        if (isLightField(b.field))
+            showValue(b.box, m_document->value(b.field, currentLight())[std::size_t(b.component)]);
+    }
+}
+
+void EditPanel::showField(Field field) {
+    if (field == Field::Shading) {
+        const QSignalBlocker blocker(m_shading);
+        m_shading->setCurrentIndex(m_shading->findData(int(m_document->settings().shading)));
+        return;
+    }
+    for (const Box& b : m_boxes) {
+        if (b.field != field || b.box == m_editing) continue;  // not under the user's fingers
+        showValue(b.box, m_document->value(field, currentLight())[std::size_t(b.component)]);
+    }
+}
+
+void EditPanel::onBoxChanged(Field field, int component, double value) {
+    const std::size_t light = isLightField(field) ? currentLight() : 0;
+    const SceneDocument::Numbers before = m_document->value(field, light);
+    SceneDocument::Numbers after = before;
+    int source = component;
+    if (field == Field::Kd && m_kdLink->isChecked()) {
+        after = {value, value, value};
+        source = -1;
+    } else {
+        after[std::size_t(component)] = value;
+    }
+    after = storedAs(field, after);
+    if (after == before) return;
+    push(field, light, source, before, after);
+}
+
+void EditPanel::onShadingChanged(int index) {
+    const SceneDocument::Numbers before = m_document->value(Field::Shading);
+    const SceneDocument::Numbers after = {double(m_shading->itemData(index).toInt()), 0.0, 0.0};
+    if (after != before) push(Field::Shading, 0, 0, before, after);
+}
+
+void EditPanel::push(Field field, std::size_t light, int source,
+                     const SceneDocument::Numbers& before, const SceneDocument::Numbers& after) {
+    FieldEdit::Change change;
+    change.field = field;
+    change.light = light;
+    change.source = source;
+    change.before = before;
+    change.after = after;
+    change.atMs = m_clock.elapsed();
+    change.session = m_session;
+    auto apply = [this](Field f, std::size_t l, const SceneDocument::Numbers& v) {
+        this->apply(f, l, v);
+    };
+    m_pushing = true;
+    m_stack->push(new FieldEdit(change, m_mergeIntervalMs, apply,
+                                tr("Change %1").arg(fieldName(field, source, light))));
+    m_pushing = false;
+}
+
+void EditPanel::apply(Field field, std::size_t light, const SceneDocument::Numbers& value) {
+    // An undo or redo ends the merging: the next edit is a step of its own.
+    if (!m_pushing) ++m_session;
+    m_document->setValue(field, value, light);
+    if (isLightField(field) && light != currentLight()) {
+        const QSignalBlocker blocker(m_lightSelector);
+        m_lightSelector->setCurrentIndex(int(light));
+        showLight();
+    }
+    showField(field);
+    updateModified();
+    emit sceneEdited();
+}
+
+bool EditPanel::isModified() const {
+    return m_document->isModified();
+}
+
+void EditPanel::updateModified() {
+    const bool editable = m_document->isLoaded() && !m_document->showsCommandFile();
+    const bool modified = isModified();
+    m_saveAction->setEnabled(editable && modified);
+    updateFileLabel();
+    if (modified == m_modified) return;
+    m_modified = modified;
+    emit modifiedChanged(modified);
+}
+
+namespace {
+
+// Short names of the layouts, for the panel's file lines.
+QString layoutLabel(rl::CameraLayout layout) {
+    switch (layout) {
+        case rl::CameraLayout::Ufpe:
+            return QStringLiteral("UFPE");
+        case rl::CameraLayout::Ufrpe6:
+        case rl::CameraLayout::Ufrpe5:
+            return QStringLiteral("UFRPE");
+        case rl::CameraLayout::KeyValue:
+            return QStringLiteral("key = value");
+        case rl::CameraLayout::Auto:
+            break;
+    }
+    return {};
+}
+
+QString layoutLabel(rl::LightingLayout layout) {
+    switch (layout) {
+        case rl::LightingLayout::Ufpe:
+            return QStringLiteral("UFPE");
+        case rl::LightingLayout::UfpeMulti:
+            return QStringLiteral("UFPE multi-light");
+        case rl::LightingLayout::Ufrpe:
+            return QStringLiteral("UFRPE");
+        case rl::LightingLayout::KeyValue:
+            return QStringLiteral("key = value");
+        case rl::LightingLayout::Auto:
+            break;
+    }
+    return {};
+}
+
+}  // namespace
+
+void EditPanel::updateFileLabel() {
+    if (m_document->showsCommandFile()) {
+        m_fileLabel->setText(tr("A command file is shown: its scene is not edited here."));
+        return;
+    }
+    const auto line = [this](Part part, const QString& title, const QString& layout) {
+        const QString path = m_document->source(part);
+        const QString name = m_document->needsPath(part)
+                                 ? tr("built-in scene")
+                                 : QFileInfo(path).fileName().toHtmlEscaped();
+        QString text = QStringLiteral("<b>%1</b> %2 <span style='color:gray'>(%3)</span>")
+                           .arg(title, name, layout.toHtmlEscaped());
+        if (m_document->isModified(part)) text += QStringLiteral(" <i>%1</i>").arg(tr("modified"));
+        return text;
+    };
+    m_fileLabel->setText(
+        line(Part::Camera, tr("Camera"), layoutLabel(m_document->cameraFileLayout())) +
+        QStringLiteral("<br>") +
+        line(Part::Lighting, tr("Lighting"), layoutLabel(m_document->lightingFileLayout())));
+    m_fileLabel->setToolTip(QDir::toNativeSeparators(m_document->source(Part::Camera)) +
+                            QLatin1Char('\n') +
+                            QDir::toNativeSeparators(m_document->source(Part::Lighting)));
+}
+
+QString EditPanel::fieldName(Field field, int source, std::size_t light) const {
+    if (field == Field::Shading) return tr("shading");
+    QString name = QLatin1String(symbolOf(field));
+    if (SceneDocument::componentCount(field) == 3 && source >= 0) {
+        name += QLatin1Char('.');
+        name += componentLetter(field, source);
+    }
+    if (isLightField(field) && m_document->parts().lighting.lights.size() > 1)
+        name = tr("%1 of light %2").arg(name).arg(light + 1);
+    return name;
+}
+
+QString EditPanel::partName(Part part) const {
+    return part == Part::Camera ? tr("camera") : tr("lighting");
+}
+
+// ---- Saving
+
+bool EditPanel::saveError(Part part, const QString& message, QWidget* parent) {
+    QMessageBox box(QMessageBox::Warning, tr("Save"),
+                    tr("The %1 was not saved.").arg(partName(part)), QMessageBox::Ok,
+                    parent ? parent : this);
+    box.setObjectName(QStringLiteral("saveErrorBox"));
+    box.setInformativeText(message);
+    box.exec();
+    return false;
+}
+
+bool EditPanel::save(Part part, QWidget* parent) {
+    if (m_document->needsPath(part)) return saveAs(part, parent);
+    const rl::Status status = m_document->save(part);
+    ++m_session;  // the next edit is a step of its own
+    if (!status) return saveError(part, QString::fromStdString(status.error().toString()), parent);
+    updateModified();
+    emit saved(part);
+    return true;
+}
+
+bool EditPanel::save(QWidget* parent) {
+    for (Part part : {Part::Camera, Part::Lighting})
+        if (m_document->isModified(part) && !save(part, parent)) return false;
+    return true;
+}
+
+bool EditPanel::saveAs(Part part, QWidget* parent) {
+    // One filter per layout; a lighting with several lights only fits the multi-light one.
+    // Each shows every file: course files end in .cfg, .txt, .lux ..., and a filter with
+    // extensions would make the dialog rewrite the name typed to its first one.
+    QStringList filters;
+    std::vector<int> layouts;
+    int current = 0;
+    const QString patterns = QStringLiteral(" (*)");
+    if (part == Part::Camera) {
+        for (rl::CameraLayout layout : rl::kCameraLayouts) {
+            if (layout == rl::CameraLayout::Auto) continue;
+            if (layout == m_document->cameraFileLayout()) current = int(filters.size());
+            filters << QString::fromUtf8(rl::cameraLayoutDescription(layout)) + patterns;
+            layouts.push_back(int(layout));
+        }
+    } else {
+        const bool several = m_document->parts().lighting.lights.size() > 1;
+        for (rl::LightingLayout layout : rl::kLightingLayouts) {
+            if (layout == rl::LightingLayout::Auto ||
+                (several && layout != rl::LightingLayout::UfpeMulti))
+                continue;
+            if (layout == m_document->lightingFileLayout()) current = int(filters.size());
+            filters << QString::fromUtf8(rl::lightingLayoutDescription(layout)) + patterns;
+            layouts.push_back(int(layout));
+        }
+    }
+    const QString source = m_document->source(part);
+    const QString start = m_document->needsPath(part) ? QFileInfo(source).fileName() : source;
+    QString selected = filters[current];
+    const QString path = QFileDialog::getSaveFileName(
+        parent ? parent : this,
+        part == Part::Camera ? tr("Save Camera As") : tr("Save Lighting As"), start,
+        filters.join(QStringLiteral(";;")), &selected);
+    if (path.isEmpty()) return false;
+    const int chosen = layouts[std::size_t(std::max<qsizetype>(0, filters.indexOf(selected)))];
+    const rl::Status status =
+        part == Part::Camera
+            ? m_document->saveCameraAs(path, static_cast<rl::CameraLayout>(chosen))
+            : m_document->saveLightingAs(path, static_cast<rl::LightingLayout>(chosen));
+    ++m_session;
+    if (!status) return saveError(part, QString::fromStdString(status.error().toString()), parent);
+    updateModified();
+    emit saved(part);
+    return true;
+}
+
+bool EditPanel::maybeSave(QWidget* parent, Part part) {
+    if (!m_document->isModified(part)) return true;
+    const QString file = m_document->needsPath(part)
+                             ? tr("the built-in scene")
+                             : QFileInfo(m_document->source(part)).fileName();
+    QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"),
+                    tr("The %1 has changes that are not saved (%2).").arg(partName(part), file),
+                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
+                    parent ? parent : this);
+    box.setObjectName(QStringLiteral("saveChangesBox"));
+    box.setInformativeText(tr("Save them?"));
+    box.setDefaultButton(QMessageBox::Save);
+    switch (box.exec()) {
+        case QMessageBox::Save:
+            return save(part, parent);
+        case QMessageBox::Discard:
+            return true;
+        default:
+            return false;
+    }
+}
+
+bool EditPanel::maybeSave(QWidget* parent) {
+    for (Part part : {Part::Camera, Part::Lighting})
+        if (!maybeSave(parent, part)) return false;
+    return true;
+}
+
+}  // namespace rasterlab

@@ -1,0 +1,150 @@
+// The edit panel: the course scene's camera, lights, ambient light, material and shading
+// model as spin boxes that change the scene as they change (a held arrow or a typed number
+// re-renders at each value), with undo/redo and Save.
+//
+// The panel edits a SceneDocument it does not own (the main window's) and tells the window
+// through sceneEdited() that the scene must be rendered again; the window calls refresh()
+// whenever it changed the document itself (a file opened, a layout chosen, the shading picked
+// in a menu), so that the panel shows the document's values.
+//
+// Undo: a QUndoStack of FieldEdit commands (scene_edits.h), one per change of one spin box;
+// the changes of one spin box merge into one step while they come with no pause longer than
+// mergeInterval() (1 s): a drag, a held arrow, a typed number. Opening a file over the camera
+// or the lighting clears the history (its steps were about values no longer shown): refresh()
+// notices it through SceneDocument::partsReplaced().
+//
+// Save writes each modified part to its file in the layout it was read in; the built-in
+// scene, which lives in the program's resources, asks for a file first. maybeSave() asks
+// Save / Discard / Cancel for each modified part: the window calls it before closing and
+// before a file replaces a modified part.
+#pragma once
+
+#include <QElapsedTimer>
+#include <QWidget>
+
+#include <cstdint>
+#include <vector>
+
+#include "scene_document.h"
+
+class QAction;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QMenu;
+class QToolButton;
+class QUndoStack;
+
+namespace rasterlab {
+
+class EditPanel : public QWidget {
+    Q_OBJECT
+public:
+    using Field = SceneDocument::Field;
+    using Part = SceneDocument::Part;
+
+    explicit EditPanel(SceneDocument* document, QWidget* parent = nullptr);
+
+    QUndoStack* undoStack() const { return m_stack; }
+    // For the window's menus (the panel holds them too, so that their shortcuts work where
+    // the panel is, docked or floating).
+    QAction* undoAction() const { return m_undoAction; }      // QKeySequence::Undo
+    QAction* redoAction() const { return m_redoAction; }      // QKeySequence::Redo
+    QAction* saveAction() const { return m_saveAction; }      // QKeySequence::Save
+    QAction* saveAsAction() const { return m_saveAsAction; }  // a submenu of the two below
+    QAction* saveCameraAsAction() const { return m_saveCameraAsAction; }
+    QAction* saveLightingAsAction() const { return m_saveLightingAsAction; }
+
+    // Whether the camera or the lighting differs from its file.
+    bool isModified() const;
+    // For each modified part, asks whether to save it (Save / Discard / Cancel); true when
+    // the caller may go on (saved or discarded), false on Cancel or a failed save. True at
+    // once when nothing is modified.
+    bool maybeSave(QWidget* parent);
+    bool maybeSave(QWidget* parent, Part part);
+    // Saves every modified part (the Save action); false when one failed or was cancelled.
+    // Errors are shown in a message box.
+    bool save(QWidget* parent = nullptr);
+    // Saves one part to its file, or asks for one (built-in scene).
+    bool save(Part part, QWidget* parent = nullptr);
+    // Asks for a file and a layout, and saves the part there.
+    bool saveAs(Part part, QWidget* parent = nullptr);
+
+    // The spin box of one number of a field (component 0..2), for tests and for focus.
+    QDoubleSpinBox* spinBox(Field field, int component = 0) const;
+    QComboBox* lightSelector() const { return m_lightSelector; }
+    QComboBox* shadingBox() const { return m_shading; }
+    // Checked: kd's three channels change together (the UFPE files have one kd).
+    QToolButton* kdLinkButton() const { return m_kdLink; }
+    // The light whose Pl and Il are shown.
+    std::size_t currentLight() const;
+    void setCurrentLight(std::size_t light);
+
+    // The longest pause (ms) between two changes of one spin box that still merge them.
+    qint64 mergeInterval() const { return m_mergeIntervalMs; }
+    void setMergeInterval(qint64 ms) { m_mergeIntervalMs = ms; }
+
+public slots:
+    // Shows the document's values; clears the undo history when a file replaced the camera
+    // or the lighting since the last refresh.
+    void refresh();
+
+signals:
+    // The document's scene changed (an edit, an undo or redo): render it again.
+    void sceneEdited();
+    // isModified() changed.
+    void modifiedChanged(bool modified);
+    // A part was written to its file (its source and warnings may have changed).
+    void saved(SceneDocument::Part part);
+
+private:
+    struct Box {
+        Field field;
+        int component;
+        QDoubleSpinBox* box;
+    };
+
+    QWidget* buildContent();
+    QDoubleSpinBox* addBox(Field field, int component, double minimum, double maximum, double step,
+                           bool adaptive = false);
+    void createActions();
+    void onBoxChanged(Field field, int component, double value);
+    void onShadingChanged(int index);
+    void push(Field field, std::size_t light, int source, const SceneDocument::Numbers& before,
+              const SceneDocument::Numbers& after);
+    void apply(Field field, std::size_t light, const SceneDocument::Numbers& value);
+    void showField(Field field);
+    void showLight();
+    void updateModified();
+    void updateFileLabel();
+    QString fieldName(Field field, int source, std::size_t light) const;
+    QString partName(Part part) const;
+    bool saveError(Part part, const QString& message, QWidget* parent);
+
+    SceneDocument* m_document;
+    QUndoStack* m_stack = nullptr;
+    QAction* m_undoAction = nullptr;
+    QAction* m_redoAction = nullptr;
+    QAction* m_saveAction = nullptr;
+    QAction* m_saveAsAction = nullptr;
+    QAction* m_saveCameraAsAction = nullptr;
+    QAction* m_saveLightingAsAction = nullptr;
+    QMenu* m_saveAsMenu = nullptr;
+
+    QWidget* m_content = nullptr;
+    QLabel* m_fileLabel = nullptr;
+    std::vector<Box> m_boxes;
+    QComboBox* m_lightSelector = nullptr;
+    QComboBox* m_shading = nullptr;
+    QToolButton* m_kdLink = nullptr;
+
+    QElapsedTimer m_clock;
+    qint64 m_mergeIntervalMs = 1000;
+    std::uint64_t m_session = 0;           // edits of different sessions never merge
+    std::uint64_t m_seenReplaced = ~0ull;  // the document's partsReplaced() last shown
+    bool m_pushing = false;                // a new edit is being pushed (not an undo or redo)
+    QDoubleSpinBox* m_editing = nullptr;   // the spin box whose change is being pushed
+    bool m_modified = false;
+};
+
+}  // namespace rasterlab

@@ -1,0 +1,251 @@
+#include "course_writers.h"
+
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "text_scanner.h"
+
+namespace rl {
+
+std::string formatExact(double value) {
+    char buffer[64];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    if (ec != std::errc()) return "nan";  // not reached: 64 characters hold any double
+    return std::string(buffer, end);
+}
+
+std::string formatExact(float value) {
+    char buffer[64];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    if (ec == std::errc()) {
+        std::string text(buffer, end);
+        // The readers parse a double and narrow it: the float's shortest text, read as a
+        // double, could in principle lie on the other side of a rounding boundary.
+        const std::optional<double> back = parseReal(text);
+        if (back && std::bit_cast<std::uint32_t>(static_cast<float>(*back)) ==
+                        std::bit_cast<std::uint32_t>(value))
+            return text;
+    }
+    return formatExact(static_cast<double>(value));
+}
+
+namespace {
+
+// The line ending of a file's text: CRLF when it has one.
+std::string_view lineEndingOf(std::string_view previous) {
+    return previous.find("\r\n") != std::string_view::npos ? "\r\n" : "\n";
+}
+
+template <typename T>
+bool isFiniteValue(T value) {
+    return std::isfinite(value);
+}
+
+// The numbers of one line: "x y z".
+template <typename Vec>
+std::string numbers(const Vec& v) {
+    std::string s;
+    for (int k = 0; k < v.length(); ++k) {
+        if (k > 0) s += ' ';
+        s += formatExact(v[k]);
+    }
+    return s;
+}
+
+// kd: one number when the channels are equal (bit for bit, so that -0 and 0 stay apart),
+// else three.
+std::string scalarOrTriple(const vec3& v) {
+    const auto bits = [](float f) { return std::bit_cast<std::uint32_t>(f); };
+    if (bits(v.r) == bits(v.g) && bits(v.g) == bits(v.b)) return formatExact(v.r);
+    return numbers(v);
+}
+
+// One field of a file: its key in a key = value file and its numbers.
+struct Entry {
+    std::string_view key;
+    std::string value;
+};
+
+// The text of a line layout.
+std::string joinLines(const std::vector<std::string>& lines, std::string_view eol) {
+    std::string text;
+    for (const std::string& line : lines) {
+        text += line;
+        text += eol;
+    }
+    return text;
+}
+
+bool sameKey(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
+std::string_view trimmed(std::string_view s) {
+    const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f'; };
+    while (!s.empty() && space(s.front())) s.remove_prefix(1);
+    while (!s.empty() && space(s.back())) s.remove_suffix(1);
+    return s;
+}
+
+// A key = value file: `previous` with the lines of `entries`' keys replaced where they stand
+// (a key given twice keeps its first place only), its other lines kept, and the keys it
+// lacks added at the end.
+std::string writeKeyValues(const std::vector<Entry>& entries, std::string_view previous) {
+    const std::string_view eol = lineEndingOf(previous);
+    std::vector<bool> written(entries.size(), false);
+    std::string text;
+    // A byte-order mark stays in front of the first line.
+    if (previous.starts_with("\xEF\xBB\xBF")) {
+        text += previous.substr(0, 3);
+        previous.remove_prefix(3);
+    }
+    while (!previous.empty()) {
+        const std::size_t newline = previous.find('\n');
+        std::string_view line = previous.substr(0, newline);
+        previous.remove_prefix(newline == std::string_view::npos ? previous.size() : newline + 1);
+        if (line.ends_with('\r')) line.remove_suffix(1);
+        const std::size_t equals = line.find('=');
+        std::optional<std::size_t> entry;
+        if (equals != std::string_view::npos) {
+            const std::string_view key = trimmed(line.substr(0, equals));
+            for (std::size_t i = 0; i < entries.size() && !entry; ++i)
+                if (sameKey(key, entries[i].key)) entry = i;
+        }
+        if (!entry) {
+            text += line;
+            text += eol;
+            continue;
+        }
+        if (written[*entry]) continue;  // a repeated key (the reader refuses those): dropped
+        written[*entry] = true;
+        text += std::string(entries[*entry].key) + " = " + entries[*entry].value;
+        text += eol;
+    }
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        if (written[i]) continue;
+        text += std::string(entries[i].key) + " = " + entries[i].value;
+        text += eol;
+    }
+    return text;
+}
+
+Error writeError(ErrorCode code, std::string message) {
+    return makeError(code, SourceLocation{}, std::move(message));
+}
+
+}  // namespace
+
+Result<std::string> writeCameraFile(const CourseCamera& camera, CameraLayout layout,
+                                    std::string_view previous) {
+    const bool finite =
+        isFiniteValue(camera.c.x) && isFiniteValue(camera.c.y) && isFiniteValue(camera.c.z) &&
+        isFiniteValue(camera.n.x) && isFiniteValue(camera.n.y) && isFiniteValue(camera.n.z) &&
+        isFiniteValue(camera.v.x) && isFiniteValue(camera.v.y) && isFiniteValue(camera.v.z) &&
+        isFiniteValue(camera.d) && isFiniteValue(camera.hx) && isFiniteValue(camera.hy);
+    if (!finite)
+        return writeError(ErrorCode::Range,
+                          "cannot write the camera: its values must be finite numbers (a course "
+                          "file cannot hold nan or inf)");
+    const std::string c = numbers(camera.c), n = numbers(camera.n), v = numbers(camera.v);
+    const std::string d = formatExact(camera.d), hx = formatExact(camera.hx),
+                      hy = formatExact(camera.hy);
+    const std::string_view eol = lineEndingOf(previous);
+    switch (layout) {
+        case CameraLayout::Ufpe:
+            return joinLines({c, n, v, d + ' ' + hx + ' ' + hy}, eol);
+        case CameraLayout::Ufrpe6:
+            return joinLines({n, v, d, hx, hy, c}, eol);
+        case CameraLayout::Ufrpe5:
+            return joinLines({c, n, v, hx + ' ' + hy, d}, eol);
+        case CameraLayout::KeyValue:
+            return writeKeyValues({{"C", c}, {"N", n}, {"V", v}, {"d", d}, {"hx", hx}, {"hy", hy}},
+                                  previous);
+        case CameraLayout::Auto:
+            break;
+    }
+    return writeError(ErrorCode::Usage,
+                      "cannot write a camera in the layout 'auto': choose UFPE, UFRPE or key = "
+                      "value");
+}
+
+Result<std::string> writeLightingFile(const CourseLighting& lighting, LightingLayout layout,
+                                      std::string_view previous) {
+    if (layout == LightingLayout::Auto)
+        return writeError(ErrorCode::Usage,
+                          "cannot write lighting in the layout 'auto': choose UFPE, UFPE "
+                          "multi-light, UFRPE or key = value");
+    const std::size_t count = lighting.lights.size();
+    if (layout != LightingLayout::UfpeMulti && count != 1)
+        return writeError(ErrorCode::Unsupported,
+                          std::string("cannot write ") + std::to_string(count) +
+                              (count == 1 ? " light" : " lights") + " in the layout " +
+                              lightingLayoutDescription(layout) +
+                              ", which holds exactly one: choose the UFPE multi-light layout");
+    if (count == 0)
+        return writeError(ErrorCode::Unsupported,
+                          "cannot write lighting without lights: the UFPE multi-light layout "
+                          "holds one light or more");
+    const Material& m = lighting.material;
+    bool finite = isFiniteValue(m.ka) && isFiniteValue(m.ks) && isFiniteValue(m.shininess);
+    for (int k = 0; k < 3; ++k)
+        finite = finite && isFiniteValue(m.kd[k]) && isFiniteValue(m.od[k]) &&
+                 isFiniteValue(lighting.ambientIntensity[k]);
+    for (const Light& light : lighting.lights) {
+        if (light.pWorld.w != 1.0)
+            return writeError(
+                ErrorCode::Unsupported,
+                "cannot write a directional light (w = " + formatExact(light.pWorld.w) +
+                    "): course files hold point lights (x y z)");
+        for (int k = 0; k < 3; ++k)
+            finite = finite && isFiniteValue(light.pWorld[k]) && isFiniteValue(light.intensity[k]);
+    }
+    if (!finite)
+        return writeError(ErrorCode::Range,
+                          "cannot write the lighting: its values must be finite numbers (a "
+                          "course file cannot hold nan or inf)");
+
+    const std::string ka = formatExact(m.ka), ia = numbers(lighting.ambientIntensity),
+                      od = numbers(m.od), ks = formatExact(m.ks), n = formatExact(m.shininess);
+    const std::string pl = numbers(dvec3(lighting.lights[0].pWorld)),
+                      il = numbers(lighting.lights[0].intensity);
+    const std::string_view eol = lineEndingOf(previous);
+    switch (layout) {
+        case LightingLayout::Ufpe:
+            return joinLines({pl, ka, ia, scalarOrTriple(m.kd), od, ks, il, n}, eol);
+        case LightingLayout::UfpeMulti: {
+            std::vector<std::string> lines = {ka, ia, scalarOrTriple(m.kd), od,
+                                              ks, n,  std::to_string(count)};
+            for (const Light& light : lighting.lights) {
+                lines.push_back(numbers(dvec3(light.pWorld)));
+                lines.push_back(numbers(light.intensity));
+            }
+            return joinLines(lines, eol);
+        }
+        case LightingLayout::Ufrpe:
+            return joinLines({ia, ka, il, pl, numbers(m.kd), od, ks, n}, eol);
+        case LightingLayout::KeyValue:
+            return writeKeyValues({{"Iamb", ia},
+                                   {"Ka", ka},
+                                   {"Il", il},
+                                   {"Pl", pl},
+                                   {"Kd", numbers(m.kd)},
+                                   {"Od", od},
+                                   {"Ks", ks},
+                                   {"eta", n}},
+                                  previous);
+        case LightingLayout::Auto:
+            break;
+    }
+    return writeError(ErrorCode::Usage, "cannot write lighting in the layout 'auto'");
+}
+
+}  // namespace rl

@@ -1,0 +1,222 @@
+// Stage 3's view: the normals. The mesh as the frame projected it, a thin wireframe in screen
+// space, with normal "hairs" (each triangle's from its centroid, each vertex's from the
+// vertex), the view-space normal carried to the screen by the draw's projection. Back faces
+// (n . pView > 0: the normal points away from the camera at the origin) are drawn in red,
+// triangles whose winding disagrees with a neighbour's (a shared edge run the same way by
+// both) in magenta, with their counts. A second tab shows the normal map: per pixel, the
+// normal shading uses there (interpolated with the pixel's barycentrics at the stepping
+// cursor, normalised and turned toward the viewer) as the colour (n + 1) / 2.
+#pragma once
+
+#include <QImage>
+#include <QLineF>
+#include <QPointF>
+#include <QPolygonF>
+#include <QRectF>
+#include <QRgb>
+#include <QWidget>
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "depth_test.h"
+#include "frame_trace.h"
+
+class QCheckBox;
+class QLabel;
+class QTabWidget;
+class QTextBrowser;
+
+namespace rasterlab {
+
+class FrameImageView;
+class Inspection;
+
+// Per mesh triangle, 1 where its normal (P2 - P1) x (P3 - P1) points away from the camera at
+// the origin of view space: n . P1 > 0 (P1 lies on the triangle, so this is n . pView for
+// any of its points). Degenerate triangles are not back faces. pView: the draw's vertices.
+std::vector<std::uint8_t> backFaces(const std::vector<rl::dvec4>& pView, const rl::Mesh& mesh);
+
+// Triangles whose winding disagrees with a neighbour's: an edge run a -> b by two triangles
+// (a consistently wound surface runs a shared edge once each way). Corners compared by index.
+struct WindingReport {
+    std::vector<std::uint8_t> inconsistent;  // per triangle
+    std::size_t edges = 0;                   // edges run the same way by two or more triangles
+    std::size_t triangles = 0;               // triangles with such an edge
+};
+WindingReport inconsistentWinding(const rl::Mesh& mesh);
+
+// The normal shading uses at a pixel, worked out from the depth-test buffers (its triangle
+// and barycentrics) as the renderer does: the vertex normals interpolated and normalised (the
+// triangle's normal for flat shading or flat normals), turned toward the viewer when the
+// scene's convention says so. Equal to what ShadingOptions::keepNormals keeps.
+struct PixelNormal {
+    bool covered = false;
+    std::uint32_t triangle = rl::kNoTriangle;  // Projection::triangles
+    rl::vec3 weights = rl::vec3(0.0f);         // (alpha, beta, gamma) the attributes use
+    bool flat = false;                         // the triangle's normal, not interpolated
+    rl::vec3 interpolated = rl::vec3(0.0f);    // before normalising (or the triangle's)
+    rl::vec3 n = rl::vec3(0.0f);               // unit, toward the viewer; zero for none
+    bool flipped = false;                      // turned toward the viewer (V . N < 0)
+    QString none;                              // why there is no normal, when n is zero
+};
+
+class PixelNormals {
+public:
+    explicit PixelNormals(std::shared_ptr<const rl::FrameTrace> frame);
+    PixelNormal at(const rl::DepthTest& buffers, int x, int y) const;
+    // (n + 1) / 2 per channel, as rl::normalImage writes it; pixels no triangle holds black.
+    QImage image(const rl::DepthTest& buffers) const;
+
+private:
+    struct DrawData {
+        std::vector<rl::vec3> pView;  // (x, y, z) / w, own and made vertices
+        std::vector<rl::vec3> nView;  // vertex normals, extended to made vertices
+        std::vector<double> invW;     // 1 / clip w (perspective-correct rules)
+    };
+    std::shared_ptr<const rl::FrameTrace> m_frame;
+    std::vector<DrawData> m_draws;
+};
+
+// (n + 1) / 2 as a colour, each channel rounded as rl::normalImage does.
+QRgb normalColour(const rl::vec3& n);
+
+// What the screen-space drawing holds, in image pixels (x right, y down).
+struct NormalsPicture {
+    QSizeF screen;
+    QRectF focus;  // what the drawing fits to the widget: the mesh's box within the image
+    enum class Face : std::uint8_t { Front, Back, Inconsistent };
+    struct Triangle {
+        std::array<QPointF, 3> p;
+        Face face = Face::Front;
+    };
+    std::vector<Triangle> triangles;  // the projected triangles (maybe one in wireStep)
+    std::vector<QLineF> triangleHairs, vertexHairs;
+    // The selected projected triangle, its hair and its corners' hairs (always drawn).
+    std::optional<std::array<QPointF, 3>> selected;
+    std::vector<QLineF> selectedTriangleHairs, selectedVertexHairs;
+
+    std::size_t meshTriangles = 0;  // over every draw
+    std::size_t backFaces = 0;      // mesh triangles facing away
+    // Mesh triangles the projection left out as hidden back faces of a closed surface (not
+    // drawn), by this view's test: front (n . P1 <= 0) and back.
+    std::size_t culledFront = 0, culledBack = 0;
+    std::size_t inconsistentEdges = 0;  // WindingReport, summed over the draws
+    std::size_t inconsistentTriangles = 0;
+    std::vector<int> viewWinding;    // per draw: closed surface with normals out (+1), in (-1)
+    std::size_t coveredPixels = 0;   // pixels a triangle holds at the end of the frame
+    std::size_t backFacePixels = 0;  // of them, held by a back face
+    std::size_t hairTriangles = 0;   // triangles that may carry a hair (before subsampling)
+    int wireStep = 1;                // one projected triangle in wireStep is drawn
+    int triangleHairStep = 1, vertexHairStep = 1;
+    double hairLength = 0.0;             // L, view units (of the first draw with hairs)
+    double hairFraction = 0.0;           // L over the size of its mesh
+    std::vector<double> drawHairLength;  // L of each draw
+    bool normalsSkipped = false;
+};
+
+// Paints a NormalsPicture fitted to the widget: wheel to zoom around the mouse, drag to
+// pan, double-click to fit; a click picks the pixel under it.
+class NormalsCanvas : public QWidget {
+    Q_OBJECT
+public:
+    explicit NormalsCanvas(QWidget* parent = nullptr);
+    void setPicture(const NormalsPicture* picture);  // repaints; null for nothing
+    // The picture's contents changed: repaint (and fit again when its focus moved).
+    void pictureChanged();
+    void setLineWidth(double width);
+    void setHairs(bool triangles, bool vertices);
+    QPointF widgetPoint(const QPointF& imagePoint) const;
+    QSize sizeHint() const override { return {640, 480}; }
+
+signals:
+    void pixelPicked(QPoint pixel);
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+
+private:
+    double scale() const;  // widget pixels per image pixel
+    QPointF origin() const;
+    void paintCache();
+
+    const NormalsPicture* m_picture = nullptr;
+    double m_lineWidth = 1.5;
+    bool m_triangleHairs = true, m_vertexHairs = false;
+    double m_zoom = 1.0;  // relative to fitting the image in the widget
+    QPointF m_pan;
+    QRectF m_focus;  // the picture's focus when the zoom was last fitted
+    QPointF m_pressAt, m_panAtPress;
+    bool m_dragged = false;
+    QImage m_cache;  // the wireframe and hairs at the current size, zoom and pan
+    bool m_cacheValid = false;
+};
+
+class NormalsView : public QWidget {
+    Q_OBJECT
+public:
+    explicit NormalsView(Inspection* inspection, QWidget* parent = nullptr);
+
+    const NormalsPicture& picture() const { return m_picture; }
+    // The normal map at the cursor (worked out while its tab is shown, or when asked here).
+    const QImage& normalMap();
+    void setTriangleHairs(bool on);
+    void setVertexHairs(bool on);
+    // Hairs only on the triangles holding a pixel at the end of the frame (and their corners).
+    void setOnlyVisibleHairs(bool on);
+    bool onlyVisibleHairs() const;
+    bool triangleHairs() const;
+    bool vertexHairs() const;
+    void showNormalMap(bool on);  // the normal-map tab, or the mesh
+    QString legendText() const;
+    QString explanationText() const;
+    NormalsCanvas* canvas() const { return m_canvas; }
+    FrameImageView* normalMapView() const { return m_mapView; }
+
+protected:
+    void showEvent(QShowEvent* event) override;
+
+private:
+    void refreshGeometry();
+    void refreshSelection();
+    void refreshMap();
+    void refreshLegend();
+    void refreshExplanation();
+    void showPixelValue(QPoint pixel);
+    bool mapShown() const;
+
+    Inspection* m_inspection = nullptr;
+    NormalsPicture m_picture;
+    std::unique_ptr<PixelNormals> m_pixelNormals;
+    QImage m_map;
+    bool m_geometryDirty = true, m_mapDirty = true;
+    QTabWidget* m_tabs = nullptr;
+    NormalsCanvas* m_canvas = nullptr;
+    FrameImageView* m_mapView = nullptr;
+    QCheckBox* m_triangleHairs = nullptr;
+    QCheckBox* m_vertexHairs = nullptr;
+    QCheckBox* m_onlyVisible = nullptr;
+    QLabel* m_legend = nullptr;
+    QLabel* m_pixelValue = nullptr;
+    QTextBrowser* m_explanation = nullptr;
+    // Per draw: back faces and winding of its mesh triangles, for the explanation.
+    std::vector<std::vector<std::uint8_t>> m_backFace;
+    std::vector<WindingReport> m_winding;
+    // What depends on a mesh alone: its winding checks, kept while the frame uses the mesh.
+    struct MeshFacts {
+        std::shared_ptr<const rl::Mesh> mesh;
+        WindingReport winding;
+        int closed = 0;  // rl::closedSurfaceWinding
+    };
+    std::vector<MeshFacts> m_meshFacts;
+};
+
+}  // namespace rasterlab

@@ -1,0 +1,1108 @@
+#include "pixel_inspector.h"
+
+#include <QApplication>
+#include <QFontDatabase>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPainter>
+#include <QPixmap>
+#include <QSignalBlocker>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <QPolygonF>
+#include <QScrollBar>
+
+#include <algorithm>
+#include <cmath>
+
+#include "inspection.h"
+#include "output_image.h"
+#include "renderer.h"
+
+namespace rasterlab {
+
+namespace {
+
+QString num(double v, int precision = 6) {
+    if (std::isnan(v)) return QStringLiteral("NaN");
+    if (std::isinf(v)) return v > 0 ? QStringLiteral("+inf") : QStringLiteral("-inf");
+    if (v == 0.0) v = 0.0;  // no "-0"
+    return QString::number(v, 'g', precision);
+}
+
+QString vector3(const rl::vec3& v, int precision = 4) {
+    return QStringLiteral("(%1, %2, %3)")
+        .arg(num(v.x, precision), num(v.y, precision), num(v.z, precision));
+}
+
+QString bytesText(const std::array<std::uint8_t, 4>& b) {
+    return QStringLiteral("(%1,%2,%3)").arg(b[0]).arg(b[1]).arg(b[2]);
+}
+
+QPixmap swatch(const std::array<std::uint8_t, 4>& b, int size) {
+    QPixmap pixmap(size, size);
+    pixmap.fill(QColor(b[0], b[1], b[2]));
+    QPainter painter(&pixmap);
+    painter.setPen(QColor(128, 128, 128));
+    painter.drawRect(0, 0, size - 1, size - 1);
+    return pixmap;
+}
+
+// A value of a projected vertex; those made by clipping are interpolated along their edge
+// (shading.cpp, extendByClipping).
+template <typename T>
+T vertexValue(const std::vector<T>& values, const rl::DrawProjection& proj, std::uint32_t v) {
+    if (v < proj.originalVertexCount) return v < values.size() ? values[v] : T(0.0f);
+    const rl::ClipVertex& g = proj.generated[v - proj.originalVertexCount];
+    return glm::mix(vertexValue(values, proj, g.a), vertexValue(values, proj, g.b),
+                    static_cast<float>(g.t));
+}
+
+template <typename T>
+T interpolateAt(const std::vector<T>& values, const rl::DrawProjection& proj,
+                const std::array<std::uint32_t, 3>& v, float beta, float gamma) {
+    const T a = vertexValue(values, proj, v[0]);
+    return a + beta * (vertexValue(values, proj, v[1]) - a) +
+           gamma * (vertexValue(values, proj, v[2]) - a);
+}
+
+// The texel nearest to (s w, t h), wrapping around (shading.cpp).
+rl::vec4 texelAt(const rl::Texture& texture, const rl::vec2& st) {
+    if (texture.width <= 0 || texture.height <= 0) return rl::vec4(0.0f);
+    const auto wrap = [](float u, int size) {
+        const float f = u - std::floor(u);
+        const int i = static_cast<int>(std::floor(f * float(size) + 0.5f)) % size;
+        return std::clamp(i, 0, size - 1);
+    };
+    return texture.at(wrap(st.x, texture.width), wrap(st.y, texture.height));
+}
+
+// The object colour (the course's Od) of a draw at weights (beta, gamma) of vertices v.
+rl::vec3 objectColourAt(const rl::Draw& draw, const rl::DrawProjection& proj,
+                        const std::array<std::uint32_t, 3>& v, float beta, float gamma) {
+    const rl::Mesh& mesh = *draw.mesh;
+    switch (draw.colour) {
+        case rl::ColourSource::Material:
+            return draw.material.od;
+        case rl::ColourSource::Vertex:
+            return mesh.colours.empty() ? draw.material.od
+                                        : interpolateAt(mesh.colours, proj, v, beta, gamma);
+        case rl::ColourSource::Texture: {
+            if (!draw.texture || mesh.texcoords.empty()) return draw.material.od;
+            const rl::vec4 t =
+                texelAt(*draw.texture, interpolateAt(mesh.texcoords, proj, v, beta, gamma));
+            if (!draw.decals || mesh.colours.empty()) return rl::vec3(t);
+            return glm::mix(interpolateAt(mesh.colours, proj, v, beta, gamma), rl::vec3(t), t.a);
+        }
+    }
+    return draw.material.od;
+}
+
+// Screen barycentrics turned into the weights attributes are interpolated with: each over
+// its vertex's w and renormalised under perspective-correct rules (shading.cpp).
+void attributeWeights(const rl::Scene& scene, const rl::DrawProjection& proj,
+                      const rl::ScreenTriangle& tri, float& beta, float& gamma) {
+    if (scene.rules.interpolation != rl::RasterRules::Interpolation::PerspectiveCorrect) return;
+    const auto invW = [&](std::uint32_t v) { return 1.0 / proj.pClip[v].w; };
+    const double w0 = double(1.0f - beta - gamma) * invW(tri.v[0]);
+    const double w1 = double(beta) * invW(tri.v[1]);
+    const double w2 = double(gamma) * invW(tri.v[2]);
+    const double sum = w0 + w1 + w2;
+    if (sum != 0.0 && std::isfinite(sum)) {
+        beta = static_cast<float>(w1 / sum);
+        gamma = static_cast<float>(w2 / sum);
+    }
+}
+
+const std::array<QString, 3>& channelNames() {
+    static const std::array<QString, 3> names{QStringLiteral("R"), QStringLiteral("G"),
+                                              QStringLiteral("B")};
+    return names;
+}
+
+}  // namespace
+
+bool LightingBreakdown::has(LightingFlag flag) const {
+    return std::find(flags.begin(), flags.end(), flag) != flags.end();
+}
+
+// Three stacked bars, one per channel: the terms side by side from 0, the colour scale (the
+// value that becomes byte 255) marked by a line, the total written at the bar's end.
+class TermBars : public QWidget {
+public:
+    struct Segment {
+        QString name;
+        QColor colour;
+        rl::vec3 value;
+    };
+
+    explicit TermBars(QWidget* parent) : QWidget(parent) {
+        setMinimumSize(220, 120);
+        setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    }
+    void setBars(std::vector<Segment> segments, rl::vec3 total, float scale, bool presentation) {
+        m_segments = std::move(segments);
+        m_total = total;
+        m_scale = scale;
+        m_presentation = presentation;
+        QFont f = font();
+        f.setPointSizeF(presentation ? 12.0 : 8.0);
+        setFixedHeight(QFontMetrics(f).height() * 6 + 20);
+        update();
+    }
+    QSize sizeHint() const override { return {320, 130}; }
+
+protected:
+    void paintEvent(QPaintEvent*) override {
+        QPainter painter(this);
+        painter.fillRect(rect(), QColor(32, 32, 36));
+        if (m_segments.empty()) return;
+        QFont f = painter.font();
+        f.setPointSizeF(m_presentation ? 12.0 : 8.0);
+        painter.setFont(f);
+        const QFontMetrics metrics(f);
+        const double line = metrics.height();
+        float most = m_scale;
+        for (int c = 0; c < 3; ++c) {
+            float sum = 0.0f;
+            for (const Segment& s : m_segments) sum += std::max(0.0f, s.value[c]);
+            most = std::max(most, sum);
+        }
+        const double left = metrics.horizontalAdvance(QStringLiteral("G")) + 10;
+        const double right = width() - metrics.horizontalAdvance(QStringLiteral("000.0")) - 10;
+        const double unit = (right - left) / (double(most) * 1.05);
+        const double barHeight = line * 1.2;
+        const double top = line + 6;
+        const std::array<QColor, 3> channelColours{QColor(255, 110, 110), QColor(110, 220, 110),
+                                                   QColor(120, 160, 255)};
+        for (int c = 0; c < 3; ++c) {
+            const double y = top + c * (barHeight + 6);
+            painter.setPen(channelColours[static_cast<std::size_t>(c)]);
+            painter.drawText(QRectF(0, y, left - 4, barHeight), Qt::AlignRight | Qt::AlignVCenter,
+                             channelNames()[static_cast<std::size_t>(c)]);
+            double x = left;
+            for (const Segment& s : m_segments) {
+                const double w = std::max(0.0f, s.value[c]) * unit;
+                if (w <= 0.0) continue;
+                painter.fillRect(QRectF(x, y, w, barHeight), s.colour);
+                painter.setPen(QColor(20, 20, 20));
+                painter.drawLine(QPointF(x + w, y), QPointF(x + w, y + barHeight));
+                x += w;
+            }
+            painter.setPen(QColor(230, 230, 230));
+            painter.drawText(QRectF(x + 4, y, width() - x - 4, barHeight), Qt::AlignVCenter,
+                             num(m_total[c], 4));
+        }
+        // The colour scale: what reaches it or goes beyond becomes byte 255.
+        const double scaleX = left + double(m_scale) * unit;
+        const double bottom = top + 3 * (barHeight + 6) - 6;
+        painter.setPen(QPen(QColor(255, 255, 255), 1.0, Qt::DashLine));
+        painter.drawLine(QPointF(scaleX, top - 3), QPointF(scaleX, bottom + 3));
+        painter.setPen(QColor(230, 230, 230));
+        const QString scaleText = m_scale == 255.0f
+                                      ? QStringLiteral("255")
+                                      : PixelInspector::tr("%1 = byte 255").arg(num(m_scale));
+        painter.drawText(QPointF(std::min(scaleX - metrics.horizontalAdvance(scaleText) / 2.0,
+                                          width() - metrics.horizontalAdvance(scaleText) - 2.0),
+                                 metrics.ascent() + 2),
+                         scaleText);
+        // Legend.
+        double x = left;
+        const double y = bottom + 8;
+        for (const Segment& s : m_segments) {
+            painter.fillRect(QRectF(x, y + 2, 10, line - 4), s.colour);
+            painter.setPen(QColor(220, 220, 220));
+            painter.drawText(QPointF(x + 14, y + metrics.ascent()), s.name);
+            x += 14 + metrics.horizontalAdvance(s.name) + 12;
+        }
+    }
+
+private:
+    std::vector<Segment> m_segments;
+    rl::vec3 m_total = rl::vec3(0.0f);
+    float m_scale = 255.0f;
+    bool m_presentation = false;
+};
+
+// N, L, V and R (or H) from the surface point, drawn in the plane of incidence (the plane
+// of N and L, in which R lies too): N points up, the surface is the horizontal line, L and R
+// are at their true angles, and V is projected onto the page (dashed when it leaves it by
+// more than a little).
+class LightingVectors : public QWidget {
+public:
+    explicit LightingVectors(QWidget* parent) : QWidget(parent) { setFixedSize(180, 160); }
+    void setVectors(std::optional<std::array<rl::vec3, 4>> vectors, QString reflectionName,
+                    double lineWidth, bool presentation) {
+        m_vectors = vectors;
+        m_reflection = std::move(reflectionName);
+        m_lineWidth = lineWidth;
+        m_presentation = presentation;
+        setFixedSize(presentation ? QSize(250, 220) : QSize(180, 160));
+        update();
+    }
+
+protected:
+    void paintEvent(QPaintEvent*) override {
+        QPainter painter(this);
+        painter.fillRect(rect(), QColor(32, 32, 36));
+        if (!m_vectors) return;
+        const auto& [n, l, v, r] = *m_vectors;
+        QFont f = painter.font();
+        f.setPointSizeF(m_presentation ? 12.0 : 8.0);
+        painter.setFont(f);
+        const QFontMetrics metrics(f);
+        painter.setRenderHint(QPainter::Antialiasing);
+        if (!(glm::length(n) > 0.0f)) {
+            painter.setPen(QColor(200, 200, 200));
+            painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap,
+                             PixelInspector::tr("no normal"));
+            return;
+        }
+        // The page: up = N, right = the part of L (else of V) across N.
+        const rl::vec3 up = glm::normalize(n);
+        rl::vec3 across(0.0f);
+        for (const rl::vec3& d : {l, v, rl::vec3(1, 0, 0), rl::vec3(0, 1, 0)}) {
+            const rl::vec3 t = d - glm::dot(d, up) * up;
+            if (glm::length(t) > 1e-4f) {
+                across = glm::normalize(t);
+                break;
+            }
+        }
+        const rl::vec3 out = glm::cross(across, up);
+        const QPointF centre(width() / 2.0, height() - metrics.height() - 14.0);
+        const double length = std::min(width() / 2.0 - 16.0, centre.y() - 14.0);
+        const auto project = [&](const rl::vec3& d) {
+            return centre + QPointF(glm::dot(d, across) * length, -glm::dot(d, up) * length);
+        };
+        painter.setPen(QPen(QColor(140, 140, 150), 2.0));
+        painter.drawLine(QPointF(12, centre.y()), QPointF(width() - 12, centre.y()));
+        // Arrows that fall on one another (N, L and R when the light is straight in front)
+        // are drawn thinner one after the other, so each colour shows, and share one label.
+        struct Label {
+            QPointF tip, at;
+            QString text;
+            QColor colour;
+        };
+        std::vector<Label> labels;
+        double penWidth = m_lineWidth * 2.2;
+        const auto arrow = [&](const rl::vec3& d, const QColor& colour, const QString& name) {
+            if (!(glm::length(d) > 0.0f)) return;
+            const QPointF tip = project(d);
+            const QPointF dir = tip - centre;
+            const double len = std::hypot(dir.x(), dir.y());
+            const bool leaves = std::abs(glm::dot(d, out)) > 0.25f * glm::length(d);
+            painter.setPen(
+                QPen(colour, penWidth, leaves ? Qt::DashLine : Qt::SolidLine, Qt::RoundCap));
+            penWidth = std::max(1.0, penWidth - m_lineWidth * 0.6);
+            painter.drawLine(centre, tip);
+            if (len > 1.0) {
+                const QPointF u = dir / len, w(-u.y(), u.x());
+                QPolygonF head;
+                head << tip << tip - u * 8.0 + w * 4.0 << tip - u * 8.0 - w * 4.0;
+                painter.setPen(Qt::NoPen);
+                painter.setBrush(colour);
+                painter.drawPolygon(head);
+            }
+            for (Label& label : labels) {
+                if (std::hypot(label.tip.x() - tip.x(), label.tip.y() - tip.y()) < 6.0) {
+                    label.text += QStringLiteral(" = ") + name;
+                    return;
+                }
+            }
+            labels.push_back(
+                {tip, len > 1.0 ? tip + dir / len * 10.0 : tip + QPointF(8, -8), name, colour});
+        };
+        arrow(up, QColor(255, 255, 255), QStringLiteral("N"));
+        arrow(l, QColor(255, 210, 60), QStringLiteral("L"));
+        arrow(r, QColor(240, 120, 240), m_reflection);
+        arrow(v, QColor(110, 200, 255), QStringLiteral("V"));
+        for (const Label& label : labels) {
+            painter.setPen(label.colour);
+            const double w = metrics.horizontalAdvance(label.text) + 4.0;
+            const double x = std::max(2.0, std::min(label.at.x() - w / 2.0, width() - w - 2.0));
+            painter.drawText(QRectF(x, label.at.y() - 9, w, 18), Qt::AlignCenter, label.text);
+        }
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(Qt::white);
+        painter.drawEllipse(centre, 2.5, 2.5);
+        painter.setPen(QColor(170, 170, 180));
+        painter.drawText(QRectF(0, height() - metrics.height() - 4, width(), metrics.height()),
+                         Qt::AlignCenter, PixelInspector::tr("in the plane of N and L"));
+    }
+
+private:
+    std::optional<std::array<rl::vec3, 4>> m_vectors;
+    QString m_reflection;
+    double m_lineWidth = 1.5;
+    bool m_presentation = false;
+};
+
+PixelInspector::PixelInspector(Inspection* inspection, QWidget* parent)
+    : QWidget(parent), m_inspection(inspection) {
+    setObjectName(QStringLiteral("pixelInspector"));
+    m_verdictLabel = new QLabel(this);
+    m_verdictLabel->setObjectName(QStringLiteral("pixelVerdict"));
+    m_verdictLabel->setWordWrap(true);
+    m_verdictLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    QFont bold = m_verdictLabel->font();
+    bold.setBold(true);
+    m_verdictLabel->setFont(bold);
+
+    m_table = new QTableWidget(0, 6, this);
+    m_table->setObjectName(QStringLiteral("pixelHistory"));
+    m_table->setHorizontalHeaderLabels(
+        {tr("Step"), tr("Triangle"), tr("Depth test"), tr("Before"), tr("After"), tr("Result")});
+    m_table->verticalHeader()->setVisible(false);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->setWordWrap(false);
+    m_table->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+
+    m_legend = new QLabel(tr("▶ holds the pixel at the stepping cursor; grey rows are not "
+                             "reached yet. Select a row to see its lighting."),
+                          this);
+    m_legend->setObjectName(QStringLiteral("pixelHistoryLegend"));
+    m_legend->setWordWrap(true);
+    m_breakdownTitle = new QLabel(this);
+    m_breakdownTitle->setObjectName(QStringLiteral("pixelBreakdownTitle"));
+    m_breakdownTitle->setWordWrap(true);
+    m_breakdownTitle->setFont(bold);
+    m_bars = new TermBars(this);
+    m_bars->setObjectName(QStringLiteral("pixelTermBars"));
+    m_vectors = new LightingVectors(this);
+    m_vectors->setObjectName(QStringLiteral("pixelVectors"));
+    m_formula = new QLabel(this);
+    m_formula->setObjectName(QStringLiteral("pixelFormula"));
+    m_formula->setTextFormat(Qt::PlainText);
+    m_formula->setWordWrap(true);
+    m_formula->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_formula->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    m_flags = new QLabel(this);
+    m_flags->setObjectName(QStringLiteral("pixelFlags"));
+    m_flags->setWordWrap(true);
+    m_flags->setTextFormat(Qt::RichText);
+
+    auto* pictures = new QHBoxLayout;
+    pictures->addWidget(m_bars, 1);
+    pictures->addWidget(m_vectors, 0, Qt::AlignTop);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_verdictLabel);
+    layout->addWidget(m_table);
+    layout->addWidget(m_legend);
+    layout->addWidget(m_breakdownTitle);
+    layout->addLayout(pictures);
+    layout->addWidget(m_formula);
+    layout->addWidget(m_flags);
+    layout->addStretch(1);
+
+    const auto follow = [this] {
+        if (isVisible()) refresh();
+    };
+    connect(m_inspection, &Inspection::frameChanged, this, follow);
+    connect(m_inspection, &Inspection::replayChanged, this, follow);
+    connect(m_inspection, &Inspection::cursorChanged, this, follow);
+    connect(m_inspection, &Inspection::pixelPicked, this, follow);
+    connect(m_inspection, &Inspection::presentationChanged, this, follow);
+    connect(m_table, &QTableWidget::currentCellChanged, this, [this](int row) {
+        if (row >= 0 && row != m_selected) selectRow(row);
+    });
+}
+
+void PixelInspector::showEvent(QShowEvent* event) {
+    QWidget::showEvent(event);
+    refresh();
+}
+
+void PixelInspector::refresh() {
+    const std::shared_ptr<const rl::FrameTrace>& frame = m_inspection->frame();
+    const QPoint picked = m_inspection->pickedPixel();
+    const bool failed = !m_inspection->replayError().isEmpty();
+    const std::shared_ptr<const rl::FrameReplay> replay = m_inspection->replayPtr();
+    if (frame != m_builtFrame.lock() || replay != m_builtReplay.lock() || picked != m_builtPixel ||
+        failed != m_builtWithoutReplay) {
+        m_builtFrame = frame;
+        m_builtReplay = replay;
+        m_builtPixel = picked;
+        m_builtWithoutReplay = failed;
+        m_userSelected = false;
+        m_breakdown.reset();
+        rebuildHistory();
+    }
+    updateCursorMarks();
+    const int row = m_userSelected ? m_selected : defaultRow();
+    m_selected = row;
+    updateBreakdown();
+    fillTable();
+}
+
+void PixelInspector::rebuildHistory() {
+    m_rows.clear();
+    m_tracedShade.reset();
+    m_traced = false;
+    m_verdict.clear();
+    m_pixel = m_inspection->pickedPixel();
+    const std::shared_ptr<const rl::FrameTrace>& frame = m_inspection->frame();
+    if (!frame || !frame->scene || !frame->depth || m_pixel.x() < 0 ||
+        !frame->depth->depth.contains(m_pixel.x(), m_pixel.y())) {
+        m_pixel = QPoint(-1, -1);
+        m_verdict = frame ? tr("Pick a pixel on the image to see its history.") : QString();
+        return;
+    }
+    const rl::Scene& scene = *frame->scene;
+    const rl::Conventions& conv = scene.conventions;
+    const int x = m_pixel.x(), y = m_pixel.y();
+    const std::array<std::uint8_t, 4> background = rl::backgroundBytes(conv);
+    const auto describeTriangle = [&](PixelHistoryRow& row) {
+        const rl::ScreenTriangle& tri = frame->projection->triangles[row.triangle];
+        row.meshTriangle = tri.source + 1;
+        row.triangleText = QString::number(row.meshTriangle);
+        if (scene.draws.size() > 1)
+            row.triangleText +=
+                QStringLiteral(" (%1)").arg(QString::fromStdString(scene.draws[tri.draw].name));
+    };
+    const auto describeTest = [&](PixelHistoryRow& row) {
+        const bool tie = conv.depthWinsOnTie;
+        switch (row.verdict) {
+            case rl::FragmentVerdict::Written:
+                row.depthText =
+                    QStringLiteral("%1 %2 %3")
+                        .arg(num(row.depth), tie ? QStringLiteral("<=") : QStringLiteral("<"),
+                             num(row.stored));
+                row.resultText = tr("written");
+                break;
+            case rl::FragmentVerdict::Rejected:
+                row.depthText =
+                    QStringLiteral("%1 %2 %3")
+                        .arg(num(row.depth), tie ? QStringLiteral(">") : QStringLiteral(">="),
+                             num(row.stored));
+                if (std::isnan(row.depth))
+                    row.resultText = tr("rejected: the depth is not a number");
+                else if (row.depth == row.stored)
+                    row.resultText = tr("rejected: as far, the earlier keeps it");
+                else
+                    row.resultText = tr("rejected: farther");
+                break;
+            case rl::FragmentVerdict::OutsideDepthRange:
+                row.depthText = tr("%1 outside [0, 1]").arg(num(row.depth));
+                row.resultText = tr("discarded: depth outside [0, 1]");
+                break;
+        }
+    };
+
+    PixelHistoryRow initial;
+    initial.kind = PixelHistoryRow::Kind::Initial;
+    initial.depth = conv.depthClear;
+    initial.depthText = tr("cleared to %1").arg(num(conv.depthClear));
+    initial.resultText = tr("the background");
+    initial.after = background;
+    m_rows.push_back(initial);
+
+    PixelHistoryRow finalRow;
+    finalRow.kind = PixelHistoryRow::Kind::Final;
+    finalRow.resultText = tr("the final pixel");
+    std::uint32_t finalWriterRow = 0;  // index in m_rows of the last write, 0: none
+
+    if (const rl::FrameReplay* replay = m_inspection->replay()) {
+        std::array<std::uint8_t, 4> current = background;
+        for (std::uint32_t id : replay->fragmentsAt(x, y)) {
+            const rl::ReplayFragment& f = replay->fragments()[id];
+            PixelHistoryRow row;
+            row.fragment = id;
+            row.triangle = f.triangle;
+            row.depth = f.depth;
+            row.stored = f.stored;
+            row.beta = f.beta;
+            row.gamma = f.gamma;
+            row.verdict = f.verdict;
+            describeTriangle(row);
+            describeTest(row);
+            row.before = current;
+            if (f.verdict == rl::FragmentVerdict::Written) {
+                current = replay->bytesOf(id);
+                finalWriterRow = static_cast<std::uint32_t>(m_rows.size());
+            }
+            row.after = current;
+            m_rows.push_back(row);
+        }
+        finalRow.after = current;
+    } else if (m_inspection->replayError().isEmpty()) {
+        // The replay is on its way (replayChanged brings it).
+        m_rows.clear();
+        m_verdict = tr("Preparing the stepping of this frame: the pixel's history follows.");
+        return;
+    } else {
+        // No replay (a frame too large to step through): the frame traced again for this
+        // pixel, its depth tests and the shading of the fragment that won.
+        m_traced = true;
+        rl::RecordingProbe probe = rl::RecordingProbe::forPixel(x, y);
+        const auto traced = rl::traceFrame(frame->scene, rl::RenderOptions{}, probe);
+        if (!traced) {
+            m_verdict = tr("The frame could not be traced again: %1")
+                            .arg(QString::fromStdString(traced.error().toString()));
+            return;
+        }
+        std::uint32_t order = 0;
+        for (const rl::ProbeEvent& event : probe.events()) {
+            if (const auto* test = std::get_if<rl::DepthTestEvent>(&event)) {
+                PixelHistoryRow row;
+                row.fragment = order++;
+                row.triangle = test->triangle;
+                row.depth = test->depth;
+                row.stored = test->stored;
+                row.beta = test->beta;
+                row.gamma = test->gamma;
+                row.verdict = test->outsideDepthRange ? rl::FragmentVerdict::OutsideDepthRange
+                              : test->passed          ? rl::FragmentVerdict::Written
+                                                      : rl::FragmentVerdict::Rejected;
+                describeTriangle(row);
+                describeTest(row);
+                if (row.verdict == rl::FragmentVerdict::Written)
+                    finalWriterRow = static_cast<std::uint32_t>(m_rows.size());
+                m_rows.push_back(row);
+            } else if (const auto* shade = std::get_if<rl::ShadeEvent>(&event)) {
+                m_tracedShade = *shade;
+            }
+        }
+        // Colours are known up to the first write, and from the last write on (the final
+        // colour); those of writes overwritten later are not kept without a replay.
+        const bool covered = frame->depth->triangle.at(x, y) != rl::kNoTriangle;
+        const std::array<std::uint8_t, 4> finalBytes =
+            covered && frame->shading && frame->shading->colour.contains(x, y)
+                ? rl::colourBytes(frame->shading->colour.at(x, y), conv)
+                : background;
+        std::optional<std::array<std::uint8_t, 4>> current = background;
+        for (std::size_t i = 1; i < m_rows.size(); ++i) {
+            PixelHistoryRow& row = m_rows[i];
+            row.before = current;
+            if (row.verdict == rl::FragmentVerdict::Written)
+                current = i == finalWriterRow ? std::optional(finalBytes) : std::nullopt;
+            row.after = current;
+        }
+        finalRow.after = finalBytes;
+    }
+    finalRow.depth = frame->depth->depth.at(x, y);
+    if (finalWriterRow > 0) {
+        finalRow.triangle = m_rows[finalWriterRow].triangle;
+        describeTriangle(finalRow);
+        finalRow.fragment = m_rows[finalWriterRow].fragment;
+        finalRow.beta = m_rows[finalWriterRow].beta;
+        finalRow.gamma = m_rows[finalWriterRow].gamma;
+        finalRow.depthText = tr("depth %1").arg(num(finalRow.depth));
+    } else {
+        finalRow.triangleText = tr("none");
+        finalRow.depthText = tr("depth %1 (cleared)").arg(num(finalRow.depth));
+    }
+    m_rows.push_back(finalRow);
+
+    // The verdict.
+    std::size_t written = 0, rejected = 0;
+    for (const PixelHistoryRow& row : m_rows) {
+        if (row.kind != PixelHistoryRow::Kind::Fragment) continue;
+        if (row.verdict == rl::FragmentVerdict::Written)
+            ++written;
+        else
+            ++rejected;
+    }
+    const std::size_t fragments = written + rejected;
+    if (fragments == 0) {
+        m_verdict = tr("Nothing drew here: the pixel keeps the background %1.")
+                        .arg(QStringLiteral("(%1, %2, %3)")
+                                 .arg(background[0])
+                                 .arg(background[1])
+                                 .arg(background[2]));
+        return;
+    }
+    if (written == 0) {
+        m_verdict = fragments == 1
+                        ? tr("The only fragment was rejected: the pixel keeps the background.")
+                        : tr("Every fragment was rejected (%1): the pixel keeps the background.")
+                              .arg(fragments);
+        return;
+    }
+    m_verdict = tr("Written by triangle %1").arg(m_rows[finalWriterRow].triangleText);
+    if (written == 2)
+        m_verdict += QStringLiteral(", ") + tr("over 1 earlier write");
+    else if (written > 2)
+        m_verdict += QStringLiteral(", ") + tr("over %1 earlier writes").arg(written - 1);
+    if (rejected == 1)
+        m_verdict += QStringLiteral("; ") + tr("1 fragment rejected");
+    else if (rejected > 1)
+        m_verdict += QStringLiteral("; ") + tr("%1 fragments rejected").arg(rejected);
+    const std::array<std::uint8_t, 4> finalBytes = *finalRow.after;
+    if (finalBytes[0] == 0 && finalBytes[1] == 0 && finalBytes[2] == 0) {
+        // Why black: from the lighting of the fragment that holds it.
+        std::optional<rl::ShadeEvent> event = m_tracedShade;
+        if (const rl::FrameReplay* replay = m_inspection->replay())
+            event = replay->shade({m_rows[finalWriterRow].fragment}).front();
+        if (event) {
+            const rl::ScreenTriangle& tri = frame->projection->triangles[event->triangle];
+            const rl::Draw& draw = scene.draws[tri.draw];
+            const rl::PhongSample& s = event->sample;
+            const bool ambient = s.ambient.r > 0.0f || s.ambient.g > 0.0f || s.ambient.b > 0.0f;
+            const std::size_t lights =
+                std::min(draw.lightCount, frame->view ? frame->view->lights.size() : 0);
+            QString why;
+            if (event->model == rl::ShadingModel::Gouraud)
+                why = tr("black: the vertex colours mixed here are black");
+            else if (draw.lighting == rl::LightingModel::Unlit)
+                why = tr("black: the object colour is black");
+            else if (ambient)
+                why = tr("black: the light takes away what the ambient term adds");
+            else if (s.noNormal)
+                why = tr("black: zero normal and no ambient");
+            else if (lights == 0)
+                why = tr("black: no light and no ambient");
+            else if (s.lightAtPoint)
+                why = tr("black: the light is at the point and no ambient");
+            else if (s.lightBehind)
+                why = tr("black: N.L < 0 and no ambient");
+            else
+                why =
+                    tr("black: the diffuse and specular terms are 0 here and there is no "
+                       "ambient");
+            m_verdict += QStringLiteral("; ") + why;
+        }
+    }
+    m_verdict += QLatin1Char('.');
+}
+
+void PixelInspector::updateCursorMarks() {
+    if (m_rows.empty()) return;
+    // Fragments [0, reached) have been tested at the cursor (all of them without a replay).
+    const rl::FrameReplay* replay = m_inspection->replay();
+    const std::uint32_t reached =
+        replay && !m_traced ? m_inspection->cursor().fragments : rl::kNoFragment;
+    std::size_t holder = 0;  // the row holding the pixel at the cursor: the initial one
+    for (std::size_t i = 0; i < m_rows.size(); ++i) {
+        PixelHistoryRow& row = m_rows[i];
+        row.atCursor = false;
+        switch (row.kind) {
+            case PixelHistoryRow::Kind::Initial:
+                row.reached = true;
+                break;
+            case PixelHistoryRow::Kind::Fragment:
+                row.reached = reached == rl::kNoFragment || row.fragment < reached;
+                if (row.reached && row.verdict == rl::FragmentVerdict::Written) holder = i;
+                break;
+            case PixelHistoryRow::Kind::Final:
+                row.reached = m_inspection->atEnd();
+                break;
+        }
+    }
+    m_rows[holder].atCursor = true;
+}
+
+int PixelInspector::defaultRow() const {
+    for (std::size_t i = 0; i < m_rows.size(); ++i)
+        if (m_rows[i].atCursor && m_rows[i].kind == PixelHistoryRow::Kind::Fragment)
+            return static_cast<int>(i);
+    return -1;
+}
+
+void PixelInspector::selectRow(int row) {
+    m_userSelected = true;
+    m_selected = row >= 0 && row < static_cast<int>(m_rows.size()) ? row : -1;
+    updateBreakdown();
+    showBreakdown();
+}
+
+QString PixelInspector::formulaText() const {
+    return m_breakdown ? m_breakdown->formula.join(QLatin1Char('\n')) : QString();
+}
+
+void PixelInspector::updateBreakdown() {
+    const std::shared_ptr<const rl::FrameTrace>& frame = m_inspection->frame();
+    const PixelHistoryRow* row = m_selected >= 0 && m_selected < static_cast<int>(m_rows.size())
+                                     ? &m_rows[m_selected]
+                                     : nullptr;
+    // The final row shows the lighting of the fragment that wrote it.
+    const bool hasFragment =
+        row && row->kind != PixelHistoryRow::Kind::Initial && row->fragment != rl::kNoFragment;
+    if (m_breakdown && hasFragment && m_breakdown->historyRow == m_selected &&
+        m_breakdown->fragment == row->fragment)
+        return;  // already shown
+    m_breakdown.reset();
+    if (!frame || !hasFragment) return;
+    std::optional<rl::ShadeEvent> event;
+    if (const rl::FrameReplay* replay = m_inspection->replay(); replay && !m_traced) {
+        event = replay->shade({row->fragment}).front();
+    } else if (m_tracedShade && row->fragment == m_rows.back().fragment) {
+        event = m_tracedShade;  // the fragment that holds the pixel at the end
+    }
+    if (!event) return;
+
+    const rl::Scene& scene = *frame->scene;
+    const rl::Conventions& conv = scene.conventions;
+    const rl::ScreenTriangle& tri = frame->projection->triangles[event->triangle];
+    const rl::DrawProjection& proj = frame->projection->draws[tri.draw];
+    const rl::Draw& draw = scene.draws[tri.draw];
+    const rl::Material& m = draw.material;
+    const rl::PhongSample& s = event->sample;
+    LightingBreakdown b;
+    b.historyRow = m_selected;
+    b.fragment = row->fragment;
+    b.event = *event;
+    b.lighting = draw.lighting;
+    b.lights = std::min(draw.lightCount, frame->view ? frame->view->lights.size() : 0);
+    b.colour = event->colour;
+    b.bytes = rl::colourBytes(event->colour, conv);
+    const rl::ShadingModel model = event->model;
+    const bool lit =
+        model != rl::ShadingModel::Gouraud && draw.lighting != rl::LightingModel::Unlit;
+    if (model != rl::ShadingModel::Gouraud) {
+        b.ambient = s.ambient;
+        b.diffuse = s.diffuse;
+        b.specular = s.specular;
+        b.unlit = s.unlit;
+    }
+    float beta = row->beta, gamma = row->gamma;
+    attributeWeights(scene, proj, tri, beta, gamma);
+    if (model == rl::ShadingModel::Flat) {
+        // At the barycentre of the whole (unclipped) mesh triangle.
+        const auto& corners = draw.mesh->triangles[tri.source];
+        b.objectColour = objectColourAt(draw, proj, corners, 1.0f / 3.0f, 1.0f / 3.0f);
+    } else {
+        b.objectColour = objectColourAt(draw, proj, tri.v, beta, gamma);
+    }
+    if (model == rl::ShadingModel::Gouraud) {
+        b.weights = {1.0f - beta - gamma, beta, gamma};
+        b.vertexColours = event->vertexColours;
+    }
+
+    // Flags.
+    const auto flag = [&](LightingFlag f, const QString& text) {
+        b.flags.push_back(f);
+        b.flagTexts.push_back(text);
+    };
+    if (lit) {
+        if (s.flipped)
+            flag(LightingFlag::Flipped,
+                 tr("N flipped toward the viewer: V.N < 0, so N := −N before lighting."));
+        if (s.noNormal)
+            flag(LightingFlag::ZeroNormal,
+                 tr("Zero normal: only degenerate triangles meet here, or the vertex normals "
+                    "cancel out; ambient only."));
+        if (s.lightAtPoint)
+            flag(LightingFlag::LightAtPoint,
+                 tr("The light is at the point itself (L = 0): it adds nothing."));
+        if (s.lightBehind)
+            flag(LightingFlag::LightBehind,
+                 tr("N.L < 0: the light is behind the surface; no diffuse, no specular."));
+        if (s.noSpecular)
+            flag(LightingFlag::NoSpecular,
+                 tr("R.V < 0: the reflected ray points away from the viewer; no specular."));
+    }
+    const float scale = conv.colourScale;
+    for (int c = 0; c < 3; ++c) {
+        if (event->colour[c] > scale) {
+            QStringList over;
+            for (int k = 0; k < 3; ++k)
+                if (event->colour[k] > scale)
+                    over << QStringLiteral("%1 = %2").arg(channelNames()[std::size_t(k)],
+                                                          num(event->colour[k], 4));
+            flag(LightingFlag::Clamped,
+                 tr("Clamped: %1 above the colour scale %2, written as byte 255.")
+                     .arg(over.join(QStringLiteral(", ")), num(scale)));
+            break;
+        }
+    }
+
+    // The formula with the numbers filled in, one line per channel.
+    const auto byteOf = [&](int c) {
+        const QString byte = QString::number(b.bytes[static_cast<std::size_t>(c)]);
+        return event->colour[c] > scale ? tr("%1 (clamped)").arg(byte) : byte;
+    };
+    QStringList& f = b.formula;
+    switch (model) {
+        case rl::ShadingModel::Gouraud: {
+            b.heading = tr("Gouraud shading, the vertices' colours mixed");
+            f << tr("C = α C1 + β C2 + γ C3");
+            f << QStringLiteral("α = %1, β = %2, γ = %3")
+                     .arg(num(b.weights[0]), num(b.weights[1]), num(b.weights[2]));
+            f << QStringLiteral("C1 = %1, C2 = %2, C3 = %3")
+                     .arg(vector3(b.vertexColours[0]), vector3(b.vertexColours[1]),
+                          vector3(b.vertexColours[2]));
+            for (int c = 0; c < 3; ++c)
+                f << QStringLiteral("%1 = %2 × %3 + %4 × %5 + %6 × %7 = %8 → %9")
+                         .arg(channelNames()[std::size_t(c)], num(b.weights[0], 4),
+                              num(b.vertexColours[0][c], 4), num(b.weights[1], 4),
+                              num(b.vertexColours[1][c], 4), num(b.weights[2], 4),
+                              num(b.vertexColours[2][c], 4), num(event->colour[c]), byteOf(c));
+            break;
+        }
+        case rl::ShadingModel::Flat:
+        case rl::ShadingModel::Phong: {
+            if (draw.lighting == rl::LightingModel::Unlit) {
+                b.heading = tr("not lit, the object colour as it is");
+                f << tr("I = O (the object colour)");
+                for (int c = 0; c < 3; ++c)
+                    f << QStringLiteral("%1 = %2 → %3")
+                             .arg(channelNames()[std::size_t(c)], num(s.unlit[c]), byteOf(c));
+                break;
+            }
+            const bool course = draw.lighting == rl::LightingModel::CoursePhong;
+            b.heading = course ? tr("the course's Phong lighting model")
+                               : tr("Lambert with Blinn-Phong highlights (command files)");
+            if (model == rl::ShadingModel::Flat)
+                f << tr(
+                    "Flat shading: evaluated once, at the triangle's barycentre with the "
+                    "triangle's normal; every pixel of the triangle gets this colour.");
+            if (b.lights > 1)
+                f << tr("%1 lights: the diffuse and specular terms are sums over them; the "
+                        "numbers filled in are the first light's.")
+                         .arg(b.lights);
+            const rl::vec3 il = b.lights > 0 ? frame->view->lights[0].intensity : rl::vec3(0.0f);
+            const bool noLight = b.lights == 0 || s.noNormal || s.lightAtPoint;
+            const rl::vec3 od = b.objectColour;
+            if (course) {
+                f << tr("I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n");
+                if (!noLight && s.lightBehind)
+                    f << QStringLiteral("N.L = %1 < 0").arg(num(s.nDotL));
+                else if (!noLight)
+                    f << QStringLiteral("N.L = %1, R.V = %2, n = %3")
+                             .arg(num(s.nDotL), num(s.rDotV), num(m.shininess));
+            } else {
+                f << (m.shininess > 0.0f ? tr("I = Σ Il O (N.L) + Il (H.N)^s, over the lights "
+                                              "with N.L ≥ 0")
+                                         : tr("I = Σ Il O (N.L), over the lights with N.L ≥ 0"));
+                if (!noLight && s.lightBehind)
+                    f << QStringLiteral("N.L = %1 < 0").arg(num(s.nDotL));
+                else if (!noLight && m.shininess > 0.0f)
+                    f << QStringLiteral("N.L = %1, H.N = %2, s = %3")
+                             .arg(num(s.nDotL), num(s.rDotV), num(m.shininess));
+                else if (!noLight)
+                    f << QStringLiteral("N.L = %1").arg(num(s.nDotL));
+            }
+            for (int c = 0; c < 3; ++c) {
+                const auto k = static_cast<std::size_t>(c);
+                QStringList parts;
+                float first = 0.0f;  // the first light's diffuse and specular
+                if (course)
+                    parts << QStringLiteral("%1 × %2").arg(num(scene.ambientIntensity[c]),
+                                                           num(m.ka));
+                if (noLight || s.lightBehind) {
+                    parts << QStringLiteral("0");
+                } else {
+                    parts << (course ? QStringLiteral("%1 × %2 × %3 × %4")
+                                           .arg(num(il[c]), num(od[c]), num(m.kd[c]), num(s.nDotL))
+                                     : QStringLiteral("%1 × %2 × %3")
+                                           .arg(num(il[c]), num(od[c]), num(s.nDotL)));
+                    first += course ? il[c] * od[c] * m.kd[c] * s.nDotL : il[c] * od[c] * s.nDotL;
+                    if (course) {
+                        if (s.noSpecular) {
+                            parts << QStringLiteral("0");
+                        } else {
+                            parts << QStringLiteral("%1 × %2 × %3^%4")
+                                         .arg(num(il[c]), num(m.ks), num(s.rDotV),
+                                              num(m.shininess));
+                            if (m.ks != 0.0f)
+                                first += il[c] * m.ks * rl::fastPow(s.rDotV, m.shininess);
+                        }
+                    } else if (m.shininess > 0.0f) {
+                        parts << QStringLiteral("%1 × %2^%3")
+                                     .arg(num(il[c]), num(s.rDotV), num(m.shininess));
+                        first += il[c] * rl::fastPow(s.rDotV, m.shininess);
+                    }
+                }
+                const float others = b.diffuse[c] + b.specular[c] - first;
+                if (b.lights > 1) parts << tr("%1 (the other lights)").arg(num(others, 4));
+                QStringList sums;
+                if (course) sums << num(b.ambient[c]);
+                sums << num(b.diffuse[c]);
+                if (course || m.shininess > 0.0f) sums << num(b.specular[c]);
+                // The terms' values between the formula and the total, when there are several.
+                const QString values =
+                    parts.size() > 1 && sums.size() > 1
+                        ? QStringLiteral(" = ") + sums.join(QStringLiteral(" + "))
+                        : QString();
+                f << QStringLiteral("%1 = %2%3 = %4 → %5")
+                         .arg(channelNames()[k], parts.join(QStringLiteral(" + ")), values,
+                              num(event->colour[c]), byteOf(c));
+            }
+            if (course)
+                f << tr("Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6")
+                         .arg(vector3(scene.ambientIntensity), num(m.ka), vector3(il), vector3(od),
+                              vector3(m.kd), num(m.ks));
+            else
+                f << tr("Il = %1, O = %2").arg(vector3(il), vector3(od));
+            break;
+        }
+    }
+    m_breakdown = std::move(b);
+}
+
+void PixelInspector::fillTable() {
+    const QSignalBlocker block(m_table);
+    const bool presenting = m_inspection->presentation();
+    // Larger text when presenting, for the whole inspector.
+    QFont base = QApplication::font(this);
+    if (presenting) base.setPointSizeF(base.pointSizeF() * 1.4);
+    if (font() != base) setFont(base);
+    QFont bold = base;
+    bold.setBold(true);
+    m_verdictLabel->setFont(bold);
+    m_breakdownTitle->setFont(bold);
+    const QFont& tableFont = base;
+    m_table->setFont(tableFont);
+    m_verdictLabel->setText(m_verdict);
+    m_table->setRowCount(static_cast<int>(m_rows.size()));
+    const int swatchSize = presenting ? 20 : 12;
+    int number = 0;
+    for (std::size_t i = 0; i < m_rows.size(); ++i) {
+        const PixelHistoryRow& row = m_rows[i];
+        QString step;
+        switch (row.kind) {
+            case PixelHistoryRow::Kind::Initial:
+                step = tr("start");
+                break;
+            case PixelHistoryRow::Kind::Fragment:
+                step = QString::number(++number);
+                break;
+            case PixelHistoryRow::Kind::Final:
+                step = tr("end");
+                break;
+        }
+        if (row.atCursor) step = QStringLiteral("▶ ") + step;
+        const auto item = [&](int column, const QString& text) {
+            auto* cell = new QTableWidgetItem(text);
+            if (!row.reached) cell->setForeground(QColor(150, 150, 150));
+            if (row.atCursor) cell->setFont(bold);
+            if (row.atCursor) cell->setToolTip(tr("holds the pixel at the stepping cursor"));
+            if (!row.reached) cell->setToolTip(tr("not reached yet by the stepping cursor"));
+            m_table->setItem(static_cast<int>(i), column, cell);
+            return cell;
+        };
+        item(0, step);
+        item(1, row.triangleText);
+        item(2, row.depthText);
+        item(5, row.resultText);
+        const auto colourCell = [&](int column,
+                                    const std::optional<std::array<std::uint8_t, 4>>& bytes) {
+            if (row.kind != PixelHistoryRow::Kind::Fragment && column == 3) {
+                item(column, QString());
+                return;
+            }
+            if (!bytes) {
+                item(column, tr("not kept"))
+                    ->setToolTip(tr("Without stepping, the colours of writes overwritten "
+                                    "later are not kept."));
+                return;
+            }
+            QTableWidgetItem* cell = item(column, bytesText(*bytes));
+            cell->setIcon(QIcon(swatch(*bytes, swatchSize)));
+        };
+        colourCell(3, row.before);
+        colourCell(4, row.after);
+    }
+    m_table->setIconSize(QSize(swatchSize, swatchSize));
+    m_table->resizeColumnsToContents();
+    m_table->resizeRowsToContents();
+    // Tall enough for every row, up to ten; beyond, it scrolls.
+    int height = m_table->horizontalHeader()->height() + 2 * m_table->frameWidth();
+    for (int r = 0; r < std::min(m_table->rowCount(), 10); ++r) height += m_table->rowHeight(r);
+    if (m_table->horizontalScrollBar()->isVisible() ||
+        m_table->horizontalHeader()->length() > m_table->viewport()->width())
+        height += m_table->horizontalScrollBar()->sizeHint().height();
+    m_table->setFixedHeight(height);
+    showBreakdown();
+}
+
+void PixelInspector::showBreakdown() {
+    {
+        const QSignalBlocker block(m_table);
+        if (m_selected >= 0)
+            m_table->selectRow(m_selected);
+        else
+            m_table->clearSelection();
+    }
+    const bool presenting = m_inspection->presentation();
+    const double lineWidth = m_inspection->lineWidth();
+    m_flags->clear();
+    if (!m_breakdown) {
+        QString why;
+        if (m_pixel.x() >= 0) {
+            const PixelHistoryRow* row =
+                m_selected >= 0 ? &m_rows[static_cast<std::size_t>(m_selected)] : nullptr;
+            if (m_traced && row && row->kind != PixelHistoryRow::Kind::Initial)
+                why =
+                    tr("Without stepping, only the lighting of the fragment that holds the pixel "
+                       "at the end is recorded.");
+            else if (row && row->kind == PixelHistoryRow::Kind::Initial)
+                why = tr("The cleared pixel is not lit.");
+            else
+                why =
+                    tr("No fragment holds the pixel at the cursor: select a row of the history "
+                       "to see its lighting.");
+        }
+        m_breakdownTitle->setText(why);
+        m_bars->setBars({}, rl::vec3(0.0f), 255.0f, presenting);
+        m_bars->setVisible(false);
+        m_vectors->setVisible(false);
+        m_formula->clear();
+        return;
+    }
+    const LightingBreakdown& b = *m_breakdown;
+    const PixelHistoryRow& row = m_rows[static_cast<std::size_t>(b.historyRow)];
+    QString title =
+        tr("Lighting of step %1, triangle %2: %3")
+            .arg(row.kind == PixelHistoryRow::Kind::Final ? tr("end")
+                                                          : QString::number(b.historyRow))
+            .arg(row.triangleText, b.heading);
+    if (row.kind == PixelHistoryRow::Kind::Fragment && row.verdict != rl::FragmentVerdict::Written)
+        title += QStringLiteral(" ") + tr("(rejected: this colour was never written)");
+    m_breakdownTitle->setText(title);
+    std::vector<TermBars::Segment> segments;
+    if (b.event.model == rl::ShadingModel::Gouraud) {
+        const std::array<QColor, 3> colours{QColor(200, 120, 80), QColor(120, 180, 90),
+                                            QColor(90, 140, 210)};
+        const std::array<QString, 3> names{QStringLiteral("α C1"), QStringLiteral("β C2"),
+                                           QStringLiteral("γ C3")};
+        for (std::size_t k = 0; k < 3; ++k)
+            segments.push_back({names[k], colours[k], b.weights[k] * b.vertexColours[k]});
+    } else if (b.lighting == rl::LightingModel::Unlit) {
+        segments.push_back({tr("object colour"), QColor(170, 170, 170), b.unlit});
+    } else {
+        if (b.lighting == rl::LightingModel::CoursePhong)
+            segments.push_back({tr("ambient"), QColor(110, 110, 125), b.ambient});
+        segments.push_back({tr("diffuse"), QColor(70, 150, 220), b.diffuse});
+        const rl::Draw& draw =
+            m_inspection->frame()
+                ->scene->draws[m_inspection->frame()->projection->triangles[b.event.triangle].draw];
+        if (b.lighting == rl::LightingModel::CoursePhong || draw.material.shininess > 0.0f)
+            segments.push_back({tr("specular"), QColor(235, 235, 190), b.specular});
+    }
+    m_bars->setBars(std::move(segments), b.colour,
+                    m_inspection->frame()->scene->conventions.colourScale, presenting);
+    m_bars->setVisible(true);
+    const bool vectors =
+        b.event.model != rl::ShadingModel::Gouraud && b.lighting != rl::LightingModel::Unlit;
+    if (vectors) {
+        const rl::PhongSample& s = b.event.sample;
+        m_vectors->setVectors(std::array<rl::vec3, 4>{s.n, s.l, s.v, s.r},
+                              b.lighting == rl::LightingModel::CoursePhong ? QStringLiteral("R")
+                                                                           : QStringLiteral("H"),
+                              lineWidth, presenting);
+    }
+    m_vectors->setVisible(vectors);
+    m_formula->setText(formulaText());
+    QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    if (presenting) mono.setPointSizeF(mono.pointSizeF() * 1.4);
+    m_formula->setFont(mono);
+    if (!b.flagTexts.isEmpty()) {
+        QString html;
+        for (const QString& text : b.flagTexts)
+            html += QStringLiteral("&#9888; ") + text.toHtmlEscaped() + QStringLiteral("<br>");
+        m_flags->setText(html);
+    } else if (b.event.model == rl::ShadingModel::Gouraud) {
+        m_flags->clear();  // the vertices' own cases belong to their lighting, not shown here
+    } else {
+        m_flags->setText(tr("No special case: every term applies as written."));
+    }
+}
+
+}  // namespace rasterlab

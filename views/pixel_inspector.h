@@ -1,0 +1,148 @@
+// The pixel inspector: the story of the pixel picked. Its history lists every fragment that
+// reached it in drawing order (like PIX's pixel history): the triangle, its depth against
+// the stored one with the test's operator, written or rejected and why, the colour before
+// and after, between the cleared pixel and the final one; the rows the stepping cursor has
+// not reached yet are greyed, the one holding the pixel at the cursor marked. A one-line
+// verdict sums it up ("written by triangle 12; 2 fragments rejected", "black: N.L < 0 and
+// no ambient"). Below, the lighting of the history row selected, term by term: ambient,
+// diffuse and specular per channel as numbers and as stacked bars against the colour scale,
+// the formula with the numbers filled in, the vectors N, L, V, R, and every special case.
+// Without a replay (a frame too large to step through: Inspection::replayError) the frame is
+// traced again for the pixel (renderer.h, traceFrame with a RecordingProbe).
+#pragma once
+
+#include <QString>
+#include <QStringList>
+#include <QWidget>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "probe.h"
+#include "replay.h"
+
+class QLabel;
+class QTableWidget;
+
+namespace rasterlab {
+
+class Inspection;
+class TermBars;
+class LightingVectors;
+
+struct PixelHistoryRow {
+    enum class Kind : std::uint8_t { Initial, Fragment, Final };
+    Kind kind = Kind::Fragment;
+    // Fragment rows: the fragment (FrameReplay::fragments(); its order in the traced frame's
+    // log without a replay) and its projected triangle. Final: the triangle holding the pixel.
+    std::uint32_t fragment = rl::kNoFragment;
+    std::uint32_t triangle = rl::kNoTriangle;
+    std::uint32_t meshTriangle = 0;  // the draw's triangle number, from 1 (0: none)
+    float depth = 0.0f, stored = 0.0f;
+    float beta = 0.0f, gamma = 0.0f;  // the fragment's screen barycentrics
+    rl::FragmentVerdict verdict = rl::FragmentVerdict::Rejected;
+    QString triangleText;  // "12", or "12 (calice2.byu)" with several draws
+    QString depthText;     // "0.5 < 1", "2 >= 1", "cleared to +inf"
+    QString resultText;    // "written", "rejected: farther", ...
+    // The colour before and after, as bytes; none where it is not known (without a replay,
+    // the colours of the writes that were overwritten are not kept).
+    std::optional<std::array<std::uint8_t, 4>> before, after;
+    bool reached = true;    // at or before the stepping cursor
+    bool atCursor = false;  // holds the pixel at the cursor
+};
+
+enum class LightingFlag : std::uint8_t {
+    Flipped,       // V.N < 0: N was turned toward the viewer
+    LightBehind,   // N.L < 0: no diffuse, no specular
+    NoSpecular,    // R.V < 0: no specular
+    Clamped,       // a channel above the colour scale
+    ZeroNormal,    // N = 0: ambient only
+    LightAtPoint,  // L = 0: the light sits on the point
+};
+
+// The lighting of one fragment, as the frame's shading stage works it out.
+struct LightingBreakdown {
+    int historyRow = -1;                       // the row of history() it belongs to
+    std::uint32_t fragment = rl::kNoFragment;  // with a replay
+    rl::ShadeEvent event;                      // model, sample (terms, vectors), colour
+    rl::LightingModel lighting = rl::LightingModel::CoursePhong;
+    std::size_t lights = 0;  // the lights the draw sees
+    // The terms per channel, in the scene's colour scale: Phong and flat shading.
+    rl::vec3 ambient = rl::vec3(0.0f), diffuse = rl::vec3(0.0f), specular = rl::vec3(0.0f);
+    rl::vec3 unlit = rl::vec3(0.0f);         // a draw that is not lit: the object colour
+    rl::vec3 objectColour = rl::vec3(0.0f);  // Od (O for command files) at the point
+    // Gouraud: the weights (alpha, beta, gamma) and the vertices' colours they mix.
+    std::array<float, 3> weights{};
+    std::array<rl::vec3, 3> vertexColours{};
+    rl::vec3 colour = rl::vec3(0.0f);  // before clamping
+    std::array<std::uint8_t, 4> bytes{};
+    std::vector<LightingFlag> flags;
+    QStringList flagTexts;  // one sentence per flag, in the order of flags
+    QStringList formula;    // the formula, then one line per channel with its numbers
+    QString heading;        // "Phong shading, the course's lighting model", ...
+    bool has(LightingFlag flag) const;
+};
+
+class PixelInspector : public QWidget {
+    Q_OBJECT
+public:
+    explicit PixelInspector(Inspection* inspection, QWidget* parent = nullptr);
+
+    QPoint pixel() const { return m_pixel; }
+    // Initial, the fragments in drawing order, Final.
+    const std::vector<PixelHistoryRow>& history() const { return m_rows; }
+    QString verdictText() const { return m_verdict; }
+    // The history row whose lighting is shown (-1: none) and its breakdown. By default the
+    // row holding the pixel at the cursor; a row selected (by hand, or here) stays while the
+    // cursor moves, until another pixel is picked.
+    int selectedRow() const { return m_selected; }
+    void selectRow(int row);
+    const std::optional<LightingBreakdown>& breakdown() const { return m_breakdown; }
+    QString formulaText() const;  // the formula lines, joined by newlines
+    // True when the history comes from tracing the frame again (no replay).
+    bool traced() const { return m_traced; }
+    QTableWidget* historyTable() const { return m_table; }
+
+protected:
+    void showEvent(QShowEvent* event) override;
+
+private:
+    void refresh();
+    void rebuildHistory();
+    void updateCursorMarks();
+    void updateBreakdown();
+    void fillTable();
+    void showBreakdown();
+    int defaultRow() const;
+
+    Inspection* m_inspection = nullptr;
+    // What the history was built from: rebuilt only when one of them changes, the cursor
+    // marks updated on every step.
+    std::weak_ptr<const rl::FrameTrace> m_builtFrame;
+    std::weak_ptr<const rl::FrameReplay> m_builtReplay;
+    QPoint m_builtPixel{-1, -1};
+    bool m_builtWithoutReplay = false;  // built after the replay failed (traced)
+
+    QPoint m_pixel{-1, -1};
+    std::vector<PixelHistoryRow> m_rows;
+    std::optional<rl::ShadeEvent> m_tracedShade;  // the final shading, without a replay
+    bool m_traced = false;
+    QString m_verdict;
+    int m_selected = -1;
+    bool m_userSelected = false;  // a row the user chose stays until the pixel changes
+    std::optional<LightingBreakdown> m_breakdown;
+
+    QLabel* m_verdictLabel = nullptr;
+    QTableWidget* m_table = nullptr;
+    QLabel* m_legend = nullptr;
+    QLabel* m_breakdownTitle = nullptr;
+    TermBars* m_bars = nullptr;
+    LightingVectors* m_vectors = nullptr;
+    QLabel* m_formula = nullptr;
+    QLabel* m_flags = nullptr;
+};
+
+}  // namespace rasterlab

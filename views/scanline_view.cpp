@@ -1,0 +1,920 @@
+#include "scanline_view.h"
+
+#include <QEvent>
+#include <QLabel>
+#include <QPainter>
+#include <QPainterPath>
+#include <QTextBrowser>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <vector>
+
+#include "inspection.h"
+
+namespace rasterlab {
+
+namespace {
+
+// The scan converter's exact arithmetic (scan_conversion.cpp), redone here so that the
+// numbers shown are the very ones it walks: vertices on a grid of 1/2^bits pixel, each
+// edge's x on a sampled row a whole number of grid steps plus a remainder.
+__extension__ using Int128 = __int128;
+
+template <typename T>
+T floorDiv(T a, T b) {
+    const T q = a / b;
+    return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+template <typename T>
+T ceilDiv(T a, T b) {
+    return -floorDiv<T>(-a, b);
+}
+
+struct Grid {
+    std::int64_t grid = 1;    // grid units per pixel
+    std::int64_t offset = 0;  // the sample offset, grid units
+    bool topLeft = false;
+    std::int64_t firstAtOrAfter(std::int64_t v) const { return ceilDiv(v - offset, grid); }
+    std::int64_t lastAtOrBefore(std::int64_t v) const { return floorDiv(v - offset, grid); }
+    std::int64_t sample(std::int64_t p) const { return p * grid + offset; }
+};
+
+Grid gridOf(const rl::RasterRules& rules) {
+    Grid g;
+    g.grid = std::int64_t(1) << rules.subpixelBits;
+    g.offset = static_cast<std::int64_t>(rules.sampleOffset * double(g.grid));
+    g.topLeft = rules.fill == rl::RasterRules::FillRule::TopLeft;
+    return g;
+}
+
+// Where an edge (dy > 0) crosses the sampled line of row y: (x - offset) / grid = q + r / d.
+struct Crossing {
+    std::int64_t q = 0, r = 0, d = 1;
+    double exact(const Grid& g) const {
+        return (double(q) + double(r) / double(d)) + double(g.offset) / double(g.grid);
+    }
+    std::int64_t floorX() const { return q; }
+    std::int64_t ceilX() const { return q + (r > 0 ? 1 : 0); }
+};
+
+Crossing crossing(const rl::ScanEdge& e, const Grid& g, std::int64_t y) {
+    const std::int64_t dy = e.yBottom - e.yTop;
+    const std::int64_t dx = e.xBottom - e.xTop;
+    Crossing c;
+    c.d = g.grid * dy;
+    const Int128 v = Int128(e.xTop - g.offset) * dy + Int128(g.sample(y) - e.yTop) * dx;
+    const Int128 q = floorDiv<Int128>(v, c.d);
+    c.q = static_cast<std::int64_t>(q);
+    c.r = static_cast<std::int64_t>(v - q * c.d);
+    return c;
+}
+
+int toRow(std::int64_t v) {
+    return static_cast<int>(std::clamp<std::int64_t>(v, -(1ll << 30), 1ll << 30));
+}
+
+rl::dvec2 pixels(std::int64_t x, std::int64_t y, int bits) {
+    const double scale = std::ldexp(1.0, -bits);
+    return {double(x) * scale, double(y) * scale};
+}
+
+// The last row walked along the upper edge (all rows when the bottom is flat).
+int upperLastRow(const rl::TriangleSetup& s, const Grid& g) {
+    const std::int64_t yMiddle = s.upperEdge.yBottom;
+    if (s.lowerEdge.yBottom == yMiddle) return s.yLast;
+    return std::min(s.yLast, toRow(g.firstAtOrAfter(yMiddle) - 1));
+}
+
+// The normal of a projected vertex, those made by clipping interpolated along their edge
+// (shading.cpp, extendByClipping).
+rl::vec3 vertexNormal(const rl::DrawNormals& normals, const rl::DrawProjection& proj,
+                      std::uint32_t v) {
+    if (v < proj.originalVertexCount)
+        return v < normals.vertex.size() ? normals.vertex[v] : rl::vec3(0.0f);
+    const rl::ClipVertex& g = proj.generated[v - proj.originalVertexCount];
+    return glm::mix(vertexNormal(normals, proj, g.a), vertexNormal(normals, proj, g.b),
+                    static_cast<float>(g.t));
+}
+
+QString num(double v, int precision = 6) {
+    if (std::isinf(v)) return v > 0 ? QStringLiteral("+inf") : QStringLiteral("-inf");
+    if (v == 0.0) v = 0.0;  // no "-0"
+    return QString::number(v, 'g', precision);
+}
+
+QString point(const rl::dvec2& p) {
+    return QStringLiteral("(%1, %2)").arg(num(p.x), num(p.y));
+}
+
+QString vector3(const rl::vec3& v) {
+    return QStringLiteral("(%1, %2, %3)").arg(num(v.x, 4), num(v.y, 4), num(v.z, 4));
+}
+
+// The fewest rows and columns drawn (when the screen has them), and the smallest pixel
+// square: a triangle whose box needs smaller ones is shown through a window around the
+// scanline instead.
+constexpr int kMinRows = 7, kMinColumns = 9;
+constexpr double kMinCell = 6.0;
+
+// [lo, hi] grown to at least n around c, or cut to at most n around c, within [0, limit).
+std::pair<int, int> windowRange(int lo, int hi, int c, int minimum, int maximum, int limit) {
+    if (hi - lo + 1 > maximum) {
+        lo = std::clamp(c - maximum / 2, lo, hi - maximum + 1);
+        hi = lo + maximum - 1;
+    }
+    while (hi - lo + 1 < minimum && (lo > 0 || hi < limit - 1)) {
+        if (lo > 0) --lo;
+        if (hi - lo + 1 < minimum && hi < limit - 1) ++hi;
+    }
+    return {lo, hi};
+}
+
+// The pixels drawn: the triangle's box grown by a pixel, or, when more than maxRows rows or
+// maxColumns columns, a window of them around the scanline and the span (or the pixel at
+// the cursor when the span is wider).
+QRect windowOf(const ScanlineModel& m, int width, int height, int maxColumns, int maxRows) {
+    double xMin = m.setup.sorted[0].x, xMax = xMin;
+    for (const rl::dvec2& p : m.setup.sorted) {
+        xMin = std::min(xMin, p.x);
+        xMax = std::max(xMax, p.x);
+    }
+    const auto clampTo = [](double v, int limit) {
+        return static_cast<int>(std::clamp(v, 0.0, double(limit - 1)));
+    };
+    int left = clampTo(std::floor(xMin) - 1.0, width);
+    int right = clampTo(std::ceil(xMax) + 1.0, width);
+    int top = clampTo(std::floor(m.setup.sorted[0].y) - 1.0, height);
+    int bottom = clampTo(std::ceil(m.setup.sorted[2].y) + 1.0, height);
+    const int cy = m.row ? m.row->y : (m.rowBegin + m.rowEnd) / 2;
+    int cx = (left + right) / 2;
+    const bool spanFits = m.row && !m.row->empty() && m.row->xEnd - m.row->xBegin + 2 <= maxColumns;
+    if (spanFits)
+        cx = (m.row->xBegin + m.row->xEnd - 1) / 2;
+    else if (m.currentPixel)
+        cx = *m.currentPixel;
+    else if (m.row && !m.row->empty())
+        cx = (m.row->xBegin + m.row->xEnd - 1) / 2;
+    maxRows = std::max(maxRows, kMinRows);
+    maxColumns = std::max(maxColumns, kMinColumns);
+    std::tie(top, bottom) = windowRange(top, bottom, cy, kMinRows, maxRows, height);
+    std::tie(left, right) = windowRange(left, right, cx, kMinColumns, maxColumns, width);
+    return QRect(left, top, right - left + 1, bottom - top + 1);
+}
+
+}  // namespace
+
+SpanEnd spanEnd(const rl::FrameTrace& frame, std::uint32_t triangle, int y, int xBegin, int x) {
+    const rl::Scene& scene = *frame.scene;
+    const rl::Projection& projection = *frame.projection;
+    const rl::ScreenTriangle& tri = projection.triangles[triangle];
+    const rl::DrawProjection& draw = projection.draws[tri.draw];
+    const bool perspective =
+        scene.rules.interpolation == rl::RasterRules::Interpolation::PerspectiveCorrect;
+    // The depth test's set-up (depth_test.cpp): under perspective-correct rules view z is
+    // interpolated as 1/z.
+    const bool reciprocal = perspective && scene.conventions.depth == rl::DepthSource::ViewZ;
+    const auto depthOf = [&](std::uint32_t v) {
+        return reciprocal ? 1.0f / draw.depth[v] : draw.depth[v];
+    };
+    const float z0 = depthOf(tri.v[0]);
+    const float dz1 = depthOf(tri.v[1]) - z0;
+    const float dz2 = depthOf(tri.v[2]) - z0;
+    const std::array<rl::dvec2, 3> p = rl::screenVertices(projection, tri);
+    const rl::dvec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
+    const double area = e1.x * e2.y - e1.y * e2.x;
+    const double betaDx = e2.y / area, gammaDx = -e1.y / area;
+    const double offset = scene.rules.sampleOffset;
+    const rl::dvec2 s0 = rl::dvec2(xBegin + offset, y + offset) - p[0];
+    const double beta0 = (s0.x * e2.y - s0.y * e2.x) / area;
+    const double gamma0 = (e1.x * s0.y - e1.y * s0.x) / area;
+    const int i = x - xBegin;
+
+    SpanEnd out;
+    out.x = x;
+    out.y = y;
+    out.sample = rl::dvec2(x + offset, y + offset);
+    out.beta = static_cast<float>(beta0 + double(i) * betaDx);
+    out.gamma = static_cast<float>(gamma0 + double(i) * gammaDx);
+    out.alpha = 1.0f - out.beta - out.gamma;
+    float z = z0 + out.beta * dz1 + out.gamma * dz2;
+    if (reciprocal) z = 1.0f / z;
+    out.depth = z;
+
+    // The normal shading interpolates with these barycentrics (shading.cpp).
+    if (frame.normals && !frame.normals->skipped && tri.draw < frame.normals->draws.size()) {
+        const rl::DrawNormals& normals = frame.normals->draws[tri.draw];
+        rl::vec3 n(0.0f);
+        if (scene.draws[tri.draw].flatNormals) {
+            n = normals.triangle[tri.source];
+        } else {
+            float beta = out.beta, gamma = out.gamma;
+            if (perspective) {
+                const auto invW = [&](std::uint32_t v) { return 1.0 / draw.pClip[v].w; };
+                const double w0 = double(1.0f - beta - gamma) * invW(tri.v[0]);
+                const double w1 = double(beta) * invW(tri.v[1]);
+                const double w2 = double(gamma) * invW(tri.v[2]);
+                const double sum = w0 + w1 + w2;
+                if (sum != 0.0 && std::isfinite(sum)) {
+                    beta = static_cast<float>(w1 / sum);
+                    gamma = static_cast<float>(w2 / sum);
+                }
+            }
+            const rl::vec3 a = vertexNormal(normals, draw, tri.v[0]);
+            const rl::vec3 b = vertexNormal(normals, draw, tri.v[1]);
+            const rl::vec3 c = vertexNormal(normals, draw, tri.v[2]);
+            n = a + beta * (b - a) + gamma * (c - a);
+        }
+        const float length = glm::length(n);
+        out.hasNormal = true;
+        out.normal = length > 0.0f ? n * (1.0f / length) : rl::vec3(0.0f);
+    }
+    return out;
+}
+
+ScanlineModel scanlineModel(const rl::FrameTrace& frame, std::uint32_t triangle,
+                            std::optional<int> y) {
+    const rl::Scene& scene = *frame.scene;
+    ScanlineModel m;
+    m.triangle = triangle;
+    m.setup = rl::setupTriangle(
+        rl::screenVertices(*frame.projection, frame.projection->triangles[triangle]), scene.rules);
+    const rl::TriangleSetup& s = m.setup;
+    const Grid g = gridOf(scene.rules);
+    const int upperLast = upperLastRow(s, g);
+    const std::array<const rl::ScanEdge*, 3> edges{&s.longEdge, &s.upperEdge, &s.lowerEdge};
+    for (std::size_t k = 0; k < 3; ++k) {
+        const rl::ScanEdge& e = *edges[k];
+        ScanEdgeEntry& entry = m.edges[k];
+        entry.top = pixels(e.xTop, e.yTop, e.bits);
+        entry.bottom = pixels(e.xBottom, e.yBottom, e.bits);
+        entry.dxdy = e.dxdy;
+        entry.horizontal = e.yTop == e.yBottom;
+        entry.onLeft = (k == 0) == s.longEdgeOnLeft;
+        if (s.degenerate()) continue;  // not walked
+        switch (k) {
+            case 0:
+                entry.firstRow = s.yFirst;
+                entry.lastRow = s.yLast;
+                break;
+            case 1:
+                entry.firstRow = s.yFirst;
+                entry.lastRow = upperLast;
+                break;
+            default:  // none when the bottom is flat: then upperLast is the last row
+                entry.firstRow = std::max(s.yFirst, upperLast + 1);
+                entry.lastRow = s.yLast;
+                break;
+        }
+        if (entry.horizontal) entry.lastRow = entry.firstRow - 1;
+        entry.xFirstRow = entry.walked() ? crossing(e, g, entry.firstRow).exact(g) : entry.top.x;
+    }
+    m.rowBegin = std::max(s.yFirst, 0);
+    m.rowEnd = std::min(s.yLast, scene.height - 1);
+    if (s.degenerate()) m.rowEnd = m.rowBegin - 1;
+    if (!y || *y < m.rowBegin || *y > m.rowEnd) return m;
+
+    ScanRowInfo row;
+    row.y = *y;
+    row.upperPart = *y <= upperLast;
+    const rl::ScanEdge& shortEdge = row.upperPart ? s.upperEdge : s.lowerEdge;
+    const rl::ScanEdge& left = s.longEdgeOnLeft ? s.longEdge : shortEdge;
+    const rl::ScanEdge& right = s.longEdgeOnLeft ? shortEdge : s.longEdge;
+    const Crossing l = crossing(left, g, *y), r = crossing(right, g, *y);
+    row.xLeft = l.exact(g);
+    row.xRight = r.exact(g);
+    // Samples left <= x <= right (inclusive) or left <= x < right (top-left), on the screen.
+    const std::int64_t width = scene.width;
+    const std::int64_t begin = std::max<std::int64_t>(l.ceilX(), 0);
+    const std::int64_t end = std::min<std::int64_t>(g.topLeft ? r.ceilX() : r.floorX() + 1, width);
+    row.xBegin = static_cast<int>(std::min(begin, width));
+    row.xEnd = static_cast<int>(std::clamp<std::int64_t>(end, row.xBegin, width));
+    if (!row.empty()) {
+        row.first = spanEnd(frame, triangle, *y, row.xBegin, row.xBegin);
+        row.last = spanEnd(frame, triangle, *y, row.xBegin, row.xEnd - 1);
+    }
+    m.row = row;
+    return m;
+}
+
+// The triangle on the pixel grid around the scanline: the pixels written so far in their
+// colour, the span's pixels, the sample points, the three edges, the scanline and its
+// crossings. Each square is a pixel, drawn around its sample point.
+class ScanlineCanvas : public QWidget {
+public:
+    explicit ScanlineCanvas(QWidget* parent) : QWidget(parent) {
+        setMinimumSize(220, 170);
+        setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+    }
+
+    void setContent(std::optional<ScanlineModel> model, QRect window, double offset,
+                    std::vector<QRgb> colours, std::vector<std::uint8_t> written, double lineWidth,
+                    bool presentation) {
+        m_model = std::move(model);
+        m_window = window;
+        m_offset = offset;
+        m_colours = std::move(colours);
+        m_written = std::move(written);
+        m_lineWidth = lineWidth;
+        m_presentation = presentation;
+        update();
+    }
+    QRect window() const { return m_window; }
+    QSize sizeHint() const override { return {420, 300}; }
+
+protected:
+    void paintEvent(QPaintEvent*) override;
+
+private:
+    std::optional<ScanlineModel> m_model;
+    QRect m_window;
+    double m_offset = 0.0;
+    std::vector<QRgb> m_colours;
+    std::vector<std::uint8_t> m_written;
+    double m_lineWidth = 1.5;
+    bool m_presentation = false;
+};
+
+namespace {
+
+const QColor kLongColour(255, 150, 40);
+const QColor kUpperColour(90, 200, 255);
+const QColor kLowerColour(235, 100, 235);
+const QColor kSpanColour(255, 221, 51);
+
+}  // namespace
+
+void ScanlineCanvas::paintEvent(QPaintEvent*) {
+    QPainter painter(this);
+    painter.fillRect(rect(), QColor(32, 32, 36));
+    if (!m_model || m_window.isEmpty()) {
+        painter.setPen(QColor(200, 200, 200));
+        painter.drawText(
+            rect(), Qt::AlignCenter | Qt::TextWordWrap,
+            ScanlineView::tr("No triangle to show: step into the frame or pick a pixel."));
+        return;
+    }
+    painter.setRenderHint(QPainter::Antialiasing);
+    QFont font = painter.font();
+    font.setPointSizeF(m_presentation ? 12.0 : 8.0);
+    painter.setFont(font);
+    const QFontMetrics metrics(font);
+    const ScanlineModel& m = *m_model;
+    const int cols = m_window.width(), rows = m_window.height();
+
+    // Room for the row numbers on the left, the column numbers on top, the legend below.
+    const double marginLeft = metrics.horizontalAdvance(QStringLiteral("0000")) + 6;
+    const double marginTop = metrics.height() + 4;
+    const double marginBottom = metrics.height() + 8;
+    const double cell = std::max(2.0, std::min((width() - marginLeft - 6) / cols,
+                                               (height() - marginTop - marginBottom) / rows));
+    const double gridWidth = cell * cols, gridHeight = cell * rows;
+    const double originX = marginLeft + (width() - marginLeft - 6 - gridWidth) / 2;
+    const double originY = marginTop + (height() - marginTop - marginBottom - gridHeight) / 2;
+    // Pixel (x, y) is the square of side 1 around its sample (x + offset, y + offset).
+    const double u0 = m_window.left() + m_offset - 0.5, v0 = m_window.top() + m_offset - 0.5;
+    const auto at = [&](double u, double v) {
+        return QPointF(originX + (u - u0) * cell, originY + (v - v0) * cell);
+    };
+    const auto square = [&](int x, int y) {
+        return QRectF(at(x + m_offset - 0.5, y + m_offset - 0.5), QSizeF(cell, cell));
+    };
+    const QRectF gridRect(originX, originY, gridWidth, gridHeight);
+
+    // The pixels as they are at the cursor.
+    for (int r = 0; r < rows; ++r) {
+        for (int c = 0; c < cols; ++c) {
+            const auto i = static_cast<std::size_t>(r * cols + c);
+            const bool written = i < m_written.size() && m_written[i];
+            painter.fillRect(square(m_window.left() + c, m_window.top() + r),
+                             written ? QColor(m_colours[i]) : QColor(52, 52, 58));
+        }
+    }
+    // The span.
+    const bool hasRow = m.row.has_value();
+    if (hasRow && !m.row->empty()) {
+        for (int x = std::max(m.row->xBegin, m_window.left());
+             x < std::min(m.row->xEnd, m_window.right() + 1); ++x) {
+            painter.fillRect(square(x, m.row->y), QColor(255, 221, 51, 120));
+        }
+    }
+    if (cell >= 5.0) {
+        painter.setPen(QPen(QColor(90, 90, 100), 1.0));
+        for (int c = 0; c <= cols; ++c)
+            painter.drawLine(QPointF(originX + c * cell, originY),
+                             QPointF(originX + c * cell, originY + gridHeight));
+        for (int r = 0; r <= rows; ++r)
+            painter.drawLine(QPointF(originX, originY + r * cell),
+                             QPointF(originX + gridWidth, originY + r * cell));
+    }
+    if (hasRow && !m.row->empty()) {
+        const int x0 = std::max(m.row->xBegin, m_window.left());
+        const int x1 = std::min(m.row->xEnd, m_window.right() + 1);
+        if (x0 < x1) {
+            painter.setPen(QPen(kSpanColour, m_lineWidth));
+            painter.setBrush(Qt::NoBrush);
+            painter.drawRect(square(x0, m.row->y).united(square(x1 - 1, m.row->y)));
+        }
+    }
+    if (m.currentPixel && hasRow && m_window.contains(*m.currentPixel, m.row->y)) {
+        painter.setPen(QPen(Qt::white, m_lineWidth * 2.0));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawRect(square(*m.currentPixel, m.row->y).adjusted(1, 1, -1, -1));
+    }
+
+    // Sample points: filled on the span, hollow elsewhere.
+    if (cell >= 9.0) {
+        const double radius = std::max(1.5, cell * 0.08);
+        for (int r = 0; r < rows; ++r) {
+            for (int c = 0; c < cols; ++c) {
+                const int x = m_window.left() + c, y = m_window.top() + r;
+                const bool onSpan =
+                    hasRow && y == m.row->y && x >= m.row->xBegin && x < m.row->xEnd;
+                painter.setPen(onSpan ? Qt::NoPen : QPen(QColor(120, 120, 130), 1.0));
+                painter.setBrush(onSpan ? QBrush(QColor(20, 20, 20)) : QBrush(Qt::NoBrush));
+                painter.drawEllipse(at(x + m_offset, y + m_offset), radius, radius);
+            }
+        }
+    }
+
+    // The triangle and its three edges.
+    painter.save();
+    painter.setClipRect(gridRect);
+    QPainterPath outline;
+    outline.moveTo(at(m.setup.sorted[0].x, m.setup.sorted[0].y));
+    outline.lineTo(at(m.setup.sorted[1].x, m.setup.sorted[1].y));
+    outline.lineTo(at(m.setup.sorted[2].x, m.setup.sorted[2].y));
+    outline.closeSubpath();
+    painter.fillPath(outline, QColor(255, 255, 255, 22));
+    const std::array<QColor, 3> edgeColours{kLongColour, kUpperColour, kLowerColour};
+    for (std::size_t k = 0; k < 3; ++k) {
+        const ScanEdgeEntry& e = m.edges[k];
+        painter.setPen(QPen(edgeColours[k], m_lineWidth * 1.4, Qt::SolidLine, Qt::RoundCap));
+        painter.drawLine(at(e.top.x, e.top.y), at(e.bottom.x, e.bottom.y));
+    }
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(Qt::white);
+    for (const rl::dvec2& p : m.setup.sorted)
+        painter.drawEllipse(at(p.x, p.y), m_lineWidth * 1.6, m_lineWidth * 1.6);
+
+    // The scanline through the samples of row y and its crossings with the two edges.
+    if (hasRow) {
+        const double v = m.row->y + m_offset;
+        painter.setPen(QPen(kSpanColour, m_lineWidth, Qt::DashLine));
+        painter.drawLine(at(u0, v), at(u0 + cols, v));
+        const ScanEdgeEntry& longEdge = m.edges[0];
+        const ScanEdgeEntry& shortEdge = m.edges[m.row->upperPart ? 1 : 2];
+        const QColor leftColour =
+            longEdge.onLeft ? kLongColour : edgeColours[m.row->upperPart ? 1 : 2];
+        const QColor rightColour =
+            shortEdge.onLeft ? kLongColour : edgeColours[m.row->upperPart ? 1 : 2];
+        const double d = m_lineWidth * 2.6;
+        for (const auto& [x, colour] :
+             {std::pair{m.row->xLeft, leftColour}, std::pair{m.row->xRight, rightColour}}) {
+            const QPointF c = at(x, v);
+            QPolygonF diamond;
+            diamond << c + QPointF(0, -d) << c + QPointF(d, 0) << c + QPointF(0, d)
+                    << c + QPointF(-d, 0);
+            painter.setPen(QPen(Qt::black, 1.0));
+            painter.setBrush(colour);
+            painter.drawPolygon(diamond);
+        }
+        // The crossings' values, above the line, kept inside the grid.
+        painter.setPen(Qt::white);
+        const QString leftText = QStringLiteral("x_left %1").arg(num(m.row->xLeft, 4));
+        const QString rightText = QStringLiteral("x_right %1").arg(num(m.row->xRight, 4));
+        const double textY = at(0, v).y() - d - 3;
+        const double leftX = std::clamp(
+            at(m.row->xLeft, v).x() - metrics.horizontalAdvance(leftText) - d, gridRect.left() + 2,
+            gridRect.right() - metrics.horizontalAdvance(leftText) - 2);
+        const double rightX =
+            std::clamp(at(m.row->xRight, v).x() + d, gridRect.left() + 2,
+                       gridRect.right() - metrics.horizontalAdvance(rightText) - 2);
+        const auto label = [&](double x, const QString& text) {
+            const QRectF box(x - 2, textY - metrics.ascent() - 1,
+                             metrics.horizontalAdvance(text) + 4, metrics.height() + 2);
+            painter.fillRect(box, QColor(0, 0, 0, 170));
+            painter.drawText(QPointF(x, textY), text);
+        };
+        label(leftX, leftText);
+        if (rightX > leftX + metrics.horizontalAdvance(leftText) + 4) {
+            label(rightX, rightText);
+        } else {  // too close: below the line
+            const double below = at(0, v).y() + d + metrics.ascent() + 3;
+            const QRectF box(rightX - 2, below - metrics.ascent() - 1,
+                             metrics.horizontalAdvance(rightText) + 4, metrics.height() + 2);
+            painter.fillRect(box, QColor(0, 0, 0, 170));
+            painter.drawText(QPointF(rightX, below), rightText);
+        }
+    }
+    painter.restore();
+
+    // Row and column numbers: every one when there is room, else every fifth.
+    painter.setPen(QColor(190, 190, 200));
+    const int every = cell >= metrics.horizontalAdvance(QStringLiteral("0000")) ? 1 : 5;
+    for (int r = 0; r < rows; ++r) {
+        const int y = m_window.top() + r;
+        const bool current = hasRow && y == m.row->y;
+        // Every fifth row, but not beside the current one (whose number is always there).
+        if (!current && (y % every != 0 || (hasRow && every > 1 && std::abs(y - m.row->y) < 2)))
+            continue;
+        const QRectF box(0, originY + r * cell, marginLeft - 4, cell);
+        if (hasRow && y == m.row->y) painter.setPen(kSpanColour);
+        painter.drawText(box, Qt::AlignRight | Qt::AlignVCenter | Qt::TextDontClip,
+                         QString::number(y));
+        painter.setPen(QColor(190, 190, 200));
+    }
+    const int everyColumn = cell >= metrics.horizontalAdvance(QStringLiteral("000")) + 2 ? 1 : 5;
+    for (int c = 0; c < cols; ++c) {
+        const int x = m_window.left() + c;
+        if (x % everyColumn != 0) continue;
+        const QString label = QString::number(x);
+        painter.drawText(
+            QPointF(originX + (c + 0.5) * cell - metrics.horizontalAdvance(label) / 2.0,
+                    originY - metrics.descent() - 3),
+            label);
+    }
+
+    // The legend: which colour is which edge.
+    double x = 8.0;
+    const double y = originY + gridHeight + 4;
+    const std::array<QString, 3> names{ScanlineView::tr("long edge"),
+                                       ScanlineView::tr("upper edge"),
+                                       ScanlineView::tr("lower edge")};
+    for (std::size_t k = 0; k < 3; ++k) {
+        painter.setPen(QPen(edgeColours[k], m_lineWidth * 1.4));
+        painter.drawLine(QPointF(x, y + metrics.height() / 2.0),
+                         QPointF(x + 14, y + metrics.height() / 2.0));
+        painter.setPen(QColor(220, 220, 220));
+        painter.drawText(QPointF(x + 18, y + metrics.ascent()), names[k]);
+        x += 18 + metrics.horizontalAdvance(names[k]) + 12;
+    }
+}
+
+ScanlineView::ScanlineView(Inspection* inspection, QWidget* parent)
+    : QWidget(parent), m_inspection(inspection) {
+    setObjectName(QStringLiteral("scanlineView"));
+    m_title = new QLabel(this);
+    m_title->setObjectName(QStringLiteral("scanlineTitle"));
+    m_title->setWordWrap(true);
+    m_title->setTextFormat(Qt::RichText);
+    m_canvas = new ScanlineCanvas(this);
+    m_canvas->setObjectName(QStringLiteral("scanlineCanvas"));
+    m_text = new QTextBrowser(this);
+    m_text->setObjectName(QStringLiteral("scanlineExplanation"));
+    m_text->setOpenLinks(false);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_title);
+    layout->addWidget(m_canvas, 3);
+    layout->addWidget(m_text, 4);
+
+    const auto follow = [this] {
+        if (isVisible()) refresh();
+    };
+    connect(m_inspection, &Inspection::frameChanged, this, follow);
+    connect(m_inspection, &Inspection::replayChanged, this, follow);
+    connect(m_inspection, &Inspection::cursorChanged, this, follow);
+    connect(m_inspection, &Inspection::selectionChanged, this, follow);
+    connect(m_inspection, &Inspection::pixelPicked, this, follow);
+    connect(m_inspection, &Inspection::presentationChanged, this, [this, follow] {
+        updateFonts();
+        follow();
+    });
+    m_canvas->installEventFilter(this);
+    updateFonts();
+}
+
+void ScanlineView::showEvent(QShowEvent* event) {
+    QWidget::showEvent(event);
+    refresh();
+}
+
+bool ScanlineView::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == m_canvas && event->type() == QEvent::Resize && isVisible() && m_model) refresh();
+    return QWidget::eventFilter(watched, event);
+}
+
+void ScanlineView::updateFonts() {
+    QFont font = m_text->font();
+    font.setPointSizeF(m_inspection->presentation() ? 14.0 : QWidget::font().pointSizeF());
+    m_text->setFont(font);
+    m_title->setFont(font);
+}
+
+QRect ScanlineView::drawnWindow() const {
+    return m_canvas->window();
+}
+
+void ScanlineView::refresh() {
+    m_model.reset();
+    m_followsCursor = false;
+    const std::shared_ptr<const rl::FrameTrace>& frame = m_inspection->frame();
+    if (frame && frame->scene && frame->projection) {
+        const rl::Scene& scene = *frame->scene;
+        const rl::ReplayRow* row = m_inspection->currentRow();
+        if (m_inspection->canStep() && row && !m_inspection->atEnd()) {
+            // The stepping cursor: its row and the pixel last tested on it.
+            m_followsCursor = true;
+            m_model = scanlineModel(*frame, row->triangle, row->y);
+            if (const std::optional<std::uint32_t> f = m_inspection->currentFragment())
+                m_model->currentPixel = m_inspection->replay()->fragments()[*f].x;
+        } else if (const std::optional<std::uint32_t> t = m_inspection->selectedTriangle();
+                   t && *t < frame->projection->triangles.size()) {
+            // The triangle selected: the scanline of the pixel picked when it is one of the
+            // triangle's rows, else its middle row.
+            ScanlineModel whole = scanlineModel(*frame, *t, std::nullopt);
+            const QPoint picked = m_inspection->pickedPixel();
+            const bool pickedRow = picked.y() >= whole.rowBegin && picked.y() <= whole.rowEnd;
+            m_model = scanlineModel(*frame, *t,
+                                    pickedRow ? picked.y() : (whole.rowBegin + whole.rowEnd) / 2);
+            if (pickedRow && m_model->row && picked.x() >= m_model->row->xBegin &&
+                picked.x() < m_model->row->xEnd)
+                m_model->currentPixel = picked.x();
+        }
+        if (m_model) {
+            // As many pixels as fit at the smallest square (the margins take about 50 pixels
+            // across and 40 down).
+            const int maxColumns =
+                static_cast<int>(std::max(0.0, m_canvas->width() - 50.0) / kMinCell);
+            const int maxRows =
+                static_cast<int>(std::max(0.0, m_canvas->height() - 40.0) / kMinCell);
+            const QRect window = windowOf(*m_model, scene.width, scene.height, maxColumns, maxRows);
+            const QImage image = m_inspection->image();
+            const rl::DepthTest* buffers = m_inspection->buffers();
+            std::vector<QRgb> colours(static_cast<std::size_t>(window.width() * window.height()));
+            std::vector<std::uint8_t> written(colours.size(), 0);
+            for (int r = 0; r < window.height(); ++r) {
+                for (int c = 0; c < window.width(); ++c) {
+                    const int x = window.left() + c, y = window.top() + r;
+                    const auto i = static_cast<std::size_t>(r * window.width() + c);
+                    if (buffers && buffers->triangle.contains(x, y))
+                        written[i] = buffers->triangle.at(x, y) != rl::kNoTriangle;
+                    if (image.valid(x, y)) colours[i] = image.pixel(x, y);
+                }
+            }
+            m_canvas->setContent(m_model, window, scene.rules.sampleOffset, std::move(colours),
+                                 std::move(written), m_inspection->lineWidth(),
+                                 m_inspection->presentation());
+        }
+    }
+    if (!m_model) m_canvas->setContent(std::nullopt, QRect(), 0.0, {}, {}, 1.5, false);
+    m_title->setText(titleText());
+    m_text->setHtml(explanationHtml());
+}
+
+QString ScanlineView::titleText() const {
+    const std::shared_ptr<const rl::FrameTrace>& frame = m_inspection->frame();
+    if (!frame) return tr("No frame yet.");
+    if (!m_model) {
+        if (m_inspection->canStep() && m_inspection->atStart())
+            return tr(
+                "Start of the frame: step forward to walk the first triangle, or pick a "
+                "pixel to see the triangle holding it.");
+        return tr("Pick a pixel, or step through the frame, to see a triangle scan converted.");
+    }
+    const rl::ScreenTriangle& tri = frame->projection->triangles[m_model->triangle];
+    const rl::Draw& draw = frame->scene->draws[tri.draw];
+    QString text =
+        tr("<b>Triangle %1</b> of %2").arg(tri.source + 1).arg(draw.mesh->triangles.size());
+    if (frame->scene->draws.size() > 1)
+        text += QStringLiteral(" (%1)").arg(QString::fromStdString(draw.name).toHtmlEscaped());
+    if (m_model->row) text += QStringLiteral(", ") + tr("scanline %1").arg(m_model->row->y);
+    if (m_model->currentPixel)
+        text += QStringLiteral(", ") + tr("pixel %1").arg(*m_model->currentPixel);
+    text += QStringLiteral(" &mdash; ") +
+            (m_followsCursor
+                 ? tr("at the stepping cursor")
+                 : tr("the triangle selected (the cursor is at the %1 of the frame)")
+                       .arg(m_inspection->canStep() && m_inspection->atStart() ? tr("start")
+                                                                               : tr("end")));
+    return text;
+}
+
+QString ScanlineView::explanationText() const {
+    return m_text->toPlainText();
+}
+
+QString ScanlineView::explanationHtml() const {
+    if (!m_model) return {};
+    const rl::FrameTrace& frame = *m_inspection->frame();
+    const rl::Scene& scene = *frame.scene;
+    const ScanlineModel& m = *m_model;
+    const rl::TriangleSetup& s = m.setup;
+    const rl::RasterRules& rules = scene.rules;
+    const bool topLeft = rules.fill == rl::RasterRules::FillRule::TopLeft;
+    const double offset = rules.sampleOffset;
+    QString html;
+
+    // The vertices sorted by y and the edge table.
+    html += QStringLiteral("<p>") +
+            tr("Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the "
+               "top to the bottom; the two short edges meet at the middle vertex.")
+                .arg(point(s.sorted[0]), point(s.sorted[1]), point(s.sorted[2]));
+    if (s.degenerate()) {
+        html += QLatin1Char(' ') +
+                tr("Its area on the screen is zero: it has no inside and is not scanned.") +
+                QStringLiteral("</p>");
+        return html;
+    }
+    html += QLatin1Char(' ') +
+            tr("(s1 &minus; s0) &times; (s2 &minus; s0) = %1, so the middle vertex is %2 of "
+               "the long edge: the long edge bounds the spans on the %3.")
+                .arg(num(s.doubleArea))
+                .arg(s.longEdgeOnLeft ? tr("right") : tr("left"))
+                .arg(s.longEdgeOnLeft ? tr("left") : tr("right")) +
+            QStringLiteral("</p>");
+    // The edge table, one column per edge.
+    const std::array<QString, 3> names{tr("long"), tr("upper"), tr("lower")};
+    const std::array<QString, 3> colours{QStringLiteral("#ff9628"), QStringLiteral("#2a9fd6"),
+                                         QStringLiteral("#c040c0")};
+    const auto tableRow = [&](const QString& header, const auto& cell) {
+        QString line = QStringLiteral("<tr><th align='left'>%1</th>").arg(header);
+        for (std::size_t k = 0; k < 3; ++k)
+            line += QStringLiteral("<td nowrap>%1</td>").arg(cell(m.edges[k]));
+        return line + QStringLiteral("</tr>");
+    };
+    html += QStringLiteral("<table cellspacing='0' cellpadding='3' border='1'><tr><th></th>");
+    for (std::size_t k = 0; k < 3; ++k)
+        html += QStringLiteral("<th><font color='%1'>%2</font></th>").arg(colours[k], names[k]);
+    html += QStringLiteral("</tr>");
+    // Non-breaking spaces: a point is not cut across two lines.
+    const auto unbroken = [](const rl::dvec2& p) {
+        return point(p).replace(QLatin1Char(' '), QStringLiteral("&nbsp;"));
+    };
+    html += tableRow(tr("from"), [&](const ScanEdgeEntry& e) { return unbroken(e.top); });
+    html += tableRow(tr("to"), [&](const ScanEdgeEntry& e) { return unbroken(e.bottom); });
+    html += tableRow(tr("x on its first row"), [](const ScanEdgeEntry& e) {
+        return e.walked() ? num(e.xFirstRow) : QStringLiteral("&mdash;");
+    });
+    html += tableRow(tr("dx/dy"), [this](const ScanEdgeEntry& e) {
+        return e.horizontal ? tr("horizontal") : num(e.dxdy);
+    });
+    html += tableRow(tr("rows"), [this](const ScanEdgeEntry& e) {
+        return e.walked() ? QStringLiteral("%1&ndash;%2").arg(e.firstRow).arg(e.lastRow)
+                          : tr("none");
+    });
+    html += tableRow(
+        tr("side"), [this](const ScanEdgeEntry& e) { return e.onLeft ? tr("left") : tr("right"); });
+    html += QStringLiteral("</table>");
+    if (m.rowBegin > s.yFirst || m.rowEnd < s.yLast)
+        html += QStringLiteral("<p>") +
+                tr("Only rows %1 to %2 are on the screen: the walk starts and stops there.")
+                    .arg(m.rowBegin)
+                    .arg(m.rowEnd) +
+                QStringLiteral("</p>");
+
+    // The scanline: the edges' x stepped by dx/dy, the span, its ends.
+    if (!m.row) {
+        html += QStringLiteral("<p>") + tr("No row of this triangle is on the screen.") +
+                QStringLiteral("</p>");
+        return html;
+    }
+    const ScanRowInfo& row = *m.row;
+    const std::size_t shortIndex = row.upperPart ? 1 : 2;
+    const ScanEdgeEntry& longEdge = m.edges[0];
+    const ScanEdgeEntry& shortEdge = m.edges[shortIndex];
+    const auto step = [&](const ScanEdgeEntry& e, std::size_t k, const QString& name, double x) {
+        const QString which =
+            QStringLiteral("<font color='%1'>%2</font>").arg(colours[k], names[k]);
+        if (row.y == e.firstRow)
+            return tr("%1(%2) = %3, where the %4 edge crosses its first row")
+                .arg(name)
+                .arg(row.y)
+                .arg(num(x))
+                .arg(which);
+        if (row.y == m.rowBegin)
+            return tr("%1(%2) = %3, where the %4 edge crosses the first row on the screen")
+                .arg(name)
+                .arg(row.y)
+                .arg(num(x))
+                .arg(which);
+        return tr("%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge")
+            .arg(name)
+            .arg(row.y)
+            .arg(row.y - 1)
+            .arg(num(x - e.dxdy))
+            .arg(e.dxdy < 0.0 ? QStringLiteral("(%1)").arg(num(e.dxdy)) : num(e.dxdy))
+            .arg(num(x))
+            .arg(which);
+    };
+    const ScanEdgeEntry& leftEdge = longEdge.onLeft ? longEdge : shortEdge;
+    const ScanEdgeEntry& rightEdge = longEdge.onLeft ? shortEdge : longEdge;
+    const std::size_t leftIndex = longEdge.onLeft ? 0 : shortIndex;
+    const std::size_t rightIndex = longEdge.onLeft ? shortIndex : 0;
+    html += QStringLiteral("<p><b>") + tr("Scanline y = %1").arg(row.y) + QStringLiteral("</b>");
+    if (offset != 0.0)
+        html += QLatin1Char(' ') + tr("(sampled at y = %1)").arg(num(row.y + offset));
+    html += QStringLiteral(":<br>") +
+            step(leftEdge, leftIndex, QStringLiteral("x_left"), row.xLeft) +
+            QStringLiteral(";<br>") +
+            step(rightEdge, rightIndex, QStringLiteral("x_right"), row.xRight) +
+            QStringLiteral(".<br>");
+    const QString off = offset != 0.0 ? QStringLiteral(" &minus; %1").arg(num(offset)) : QString();
+    const double leftSample = row.xLeft - offset, rightSample = row.xRight - offset;
+    const long long first = static_cast<long long>(std::ceil(leftSample));
+    const long long last = topLeft ? static_cast<long long>(std::ceil(rightSample)) - 1
+                                   : static_cast<long long>(std::floor(rightSample));
+    if (topLeft) {
+        html += tr("Top-left rule: the samples with x_left &le; x%1 &lt; x_right, pixels "
+                   "ceil(x_left%2) = %3 to ceil(x_right%2) &minus; 1 = %4 (a sample exactly on "
+                   "the right edge belongs to the next triangle).")
+                    .arg(offset != 0.0 ? QStringLiteral(" + %1").arg(num(offset)) : QString(), off)
+                    .arg(first)
+                    .arg(last);
+    } else {
+        html += tr("Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, "
+                   "both ends included (a sample exactly on an edge is inside).")
+                    .arg(off)
+                    .arg(first)
+                    .arg(last);
+    }
+    html += QLatin1Char(' ');
+    if (row.empty()) {
+        html += QStringLiteral("<b>") + tr("No pixel on this row") + QStringLiteral("</b>: ") +
+                (first > last ? tr("the edges cross it between two samples.")
+                              : tr("they are all off the screen."));
+    } else {
+        const int n = row.xEnd - row.xBegin;
+        html += n == 1 ? tr("Span [%1, %2): 1 pixel.").arg(row.xBegin).arg(row.xEnd)
+                       : tr("Span [%1, %2): %3 pixels.").arg(row.xBegin).arg(row.xEnd).arg(n);
+        if (row.xBegin != first || row.xEnd - 1 != last)
+            html +=
+                QLatin1Char(' ') + tr("(cut to the screen's columns 0 to %1)").arg(scene.width - 1);
+    }
+    if (m.currentPixel)
+        html += QLatin1Char(' ') + tr("The pixel at the cursor is x = %1.").arg(*m.currentPixel);
+    html += QStringLiteral("</p>");
+
+    // Depth and normal at both ends of the span.
+    if (!row.empty()) {
+        const rl::ScreenTriangle& tri = frame.projection->triangles[m.triangle];
+        const rl::DrawProjection& draw = frame.projection->draws[tri.draw];
+        const bool perspective =
+            rules.interpolation == rl::RasterRules::Interpolation::PerspectiveCorrect &&
+            scene.conventions.depth == rl::DepthSource::ViewZ;
+        const float z1 = draw.depth[tri.v[0]], z2 = draw.depth[tri.v[1]], z3 = draw.depth[tri.v[2]];
+        html += QStringLiteral("<p>") +
+                tr("At the ends of the span, the barycentrics (&alpha;, &beta;, &gamma;) of the "
+                   "sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the "
+                   "depth, from the vertices' z1 = %4, z2 = %5, z3 = %6:")
+                    .arg(point(rl::screenVertices(*frame.projection, tri)[0]),
+                         point(rl::screenVertices(*frame.projection, tri)[1]),
+                         point(rl::screenVertices(*frame.projection, tri)[2]), num(z1), num(z2),
+                         num(z3));
+        html += QStringLiteral("<br><i>") +
+                (perspective ? tr("1/z = 1/z1 + &beta; (1/z2 &minus; 1/z1) + &gamma; (1/z3 &minus; "
+                                  "1/z1) (perspective-correct: 1/z is linear on the screen)")
+                             : tr("z = z1 + &beta; (z2 &minus; z1) + &gamma; (z3 &minus; z1)")) +
+                QStringLiteral("</i></p>");
+        html += QStringLiteral(
+                    "<table cellspacing='0' cellpadding='3' border='1'><tr><th></th>"
+                    "<th>&alpha;, &beta;, &gamma;</th><th>") +
+                tr("depth") + QStringLiteral("</th><th>") + tr("normal") +
+                QStringLiteral("</th></tr>");
+        std::vector<const SpanEnd*> ends{&*row.first};
+        if (row.xEnd - row.xBegin > 1) ends.push_back(&*row.last);
+        QString lines;
+        for (const SpanEnd* e : ends) {
+            const QString which = QStringLiteral("(%1, %2)").arg(e->x).arg(e->y);
+            const QString normal = !e->hasNormal ? tr("not computed (nothing is lit)")
+                                   : e->normal == rl::vec3(0.0f) ? tr("zero")
+                                                                 : vector3(e->normal);
+            html += QStringLiteral(
+                        "<tr><th>%1</th><td nowrap>%2, %3, %4</td><td><b>%5</b></td>"
+                        "<td nowrap>%6</td></tr>")
+                        .arg(which, num(e->alpha, 4), num(e->beta, 4), num(e->gamma, 4),
+                             num(e->depth), normal);
+            if (perspective)
+                lines += QStringLiteral("<br>%1: z = 1 / (%2 + %3 &times; %4 + %5 &times; %6) = %7")
+                             .arg(which, num(1.0f / z1), num(e->beta), num(1.0f / z2 - 1.0f / z1),
+                                  num(e->gamma), num(1.0f / z3 - 1.0f / z1), num(e->depth));
+            else
+                lines += QStringLiteral("<br>%1: z = %2 + %3 &times; %4 + %5 &times; %6 = %7")
+                             .arg(which, num(z1), num(e->beta), num(z2 - z1), num(e->gamma),
+                                  num(z3 - z1), num(e->depth));
+        }
+        html +=
+            QStringLiteral("</table><p>") +
+            (offset == 0.0 ? tr("Pixel (x, y) is sampled at the point (x, y) itself.")
+                           : tr("Pixel (x, y) is sampled at (x + %1, y + %1).").arg(num(offset))) +
+            lines + QStringLiteral("</p>");
+        html += QStringLiteral("<p>") +
+                tr("The normal is N1 + &beta; (N2 &minus; N1) + &gamma; (N3 &minus; N1) from the "
+                   "vertex normals, normalised%1.")
+                    .arg(rules.interpolation == rl::RasterRules::Interpolation::PerspectiveCorrect
+                             ? tr(", with the barycentrics weighted by 1/w (perspective-correct)")
+                             : QString()) +
+                QStringLiteral("</p>");
+    }
+    html += QStringLiteral("<p><i>") +
+            tr("Edge walking: from one scanline to the next, each edge's x changes by its "
+               "constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. "
+               "The span between the two crossings is filled; the long edge bounds every row, the "
+               "upper edge the rows above the middle vertex, the lower edge the rest.") +
+            QStringLiteral("</i></p>");
+    return html;
+}
+
+}  // namespace rasterlab

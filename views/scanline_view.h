@@ -1,0 +1,115 @@
+// Stage 5's view: the scan conversion of one triangle, where the stepping cursor is (the
+// triangle, scanline and pixel being drawn), or, at the start and the end of the frame, of
+// the triangle selected. It shows the triangle's edge table (long, upper and lower edge:
+// ends, x on the first row, dx/dy, rows, side), the current scanline with its exact edge
+// crossings and the pixels of its span, the depth and normal interpolated at both ends of
+// the span (exactly as the depth test and shading work them out), a drawing of the triangle
+// on the pixel grid around the scanline, and the lecture's explanation with these numbers.
+#pragma once
+
+#include <QRect>
+#include <QString>
+#include <QWidget>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+
+#include "frame_trace.h"
+#include "scan_conversion.h"
+
+class QLabel;
+class QTextBrowser;
+
+namespace rasterlab {
+
+class Inspection;
+class ScanlineCanvas;
+
+// One edge of a triangle's edge table.
+struct ScanEdgeEntry {
+    rl::dvec2 top{0.0}, bottom{0.0};  // its ends, pixels
+    double dxdy = 0.0;                // the change of x from one scanline to the next
+    // The rows the edge walk follows it on, before screen clipping ([firstRow, lastRow],
+    // none when firstRow > lastRow), and its x on the first of them (where the walk starts).
+    int firstRow = 0, lastRow = -1;
+    double xFirstRow = 0.0;
+    bool onLeft = false;      // it bounds the spans on the left
+    bool horizontal = false;  // top.y == bottom.y: no row is walked on it
+    bool walked() const { return firstRow <= lastRow; }
+};
+
+// A pixel at an end of the span, its sample's barycentrics with respect to the screen
+// triangle, the depth the depth test gives it and the normal shading interpolates there.
+struct SpanEnd {
+    int x = 0, y = 0;
+    rl::dvec2 sample{0.0};                          // where pixel (x, y) is sampled
+    float alpha = 0.0f, beta = 0.0f, gamma = 0.0f;  // as the depth test computes them
+    float depth = 0.0f;
+    bool hasNormal = false;            // false when the scene is unlit (no normals)
+    rl::vec3 normal = rl::vec3(0.0f);  // interpolated and normalised (zero: no normal)
+};
+
+// One scanline of the triangle's edge walk.
+struct ScanRowInfo {
+    int y = 0;
+    double xLeft = 0.0, xRight = 0.0;  // the exact crossings of the sampled line y + offset
+    int xBegin = 0, xEnd = 0;          // its pixels [xBegin, xEnd), clipped to the screen
+    bool upperPart = true;             // walked along the upper edge (else the lower)
+    std::optional<SpanEnd> first, last;
+    bool empty() const { return xBegin >= xEnd; }
+};
+
+// What the view shows of triangle t.
+struct ScanlineModel {
+    std::uint32_t triangle = 0;  // Projection::triangles
+    rl::TriangleSetup setup;
+    std::array<ScanEdgeEntry, 3> edges{};  // long, upper, lower
+    int rowBegin = 0, rowEnd = -1;         // the rows walked on the screen [rowBegin, rowEnd]
+    std::optional<ScanRowInfo> row;        // the scanline shown, if the triangle has one
+    std::optional<int> currentPixel;       // x of the pixel at the cursor (or picked)
+};
+
+// The model of triangle t (an index into frame.projection->triangles) at scanline y, or
+// without a scanline when y is not one of the rows walked on the screen.
+ScanlineModel scanlineModel(const rl::FrameTrace& frame, std::uint32_t triangle,
+                            std::optional<int> y);
+// The span end at pixel x of row y of triangle t, as the depth test and shading compute it
+// (the depth test's barycentrics step from the span's first pixel xBegin).
+SpanEnd spanEnd(const rl::FrameTrace& frame, std::uint32_t triangle, int y, int xBegin, int x);
+
+class ScanlineView : public QWidget {
+    Q_OBJECT
+public:
+    explicit ScanlineView(Inspection* inspection, QWidget* parent = nullptr);
+
+    // What is shown (nothing when there is no frame or no triangle to follow).
+    const std::optional<ScanlineModel>& model() const { return m_model; }
+    // True when the view follows the stepping cursor, false when it shows the triangle
+    // selected (at the start or the end of the frame, or without a replay).
+    bool followsCursor() const { return m_followsCursor; }
+    // The explanation shown, as plain text (for tests).
+    QString explanationText() const;
+    QString titleText() const;
+    // The window of pixels drawn: [left, left + width) x [top, top + height).
+    QRect drawnWindow() const;
+
+protected:
+    void showEvent(QShowEvent* event) override;
+    // A canvas resized shows more or fewer pixels.
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    void refresh();
+    void updateFonts();
+    QString explanationHtml() const;
+
+    Inspection* m_inspection = nullptr;
+    std::optional<ScanlineModel> m_model;
+    bool m_followsCursor = false;
+    QLabel* m_title = nullptr;
+    ScanlineCanvas* m_canvas = nullptr;
+    QTextBrowser* m_text = nullptr;
+};
+
+}  // namespace rasterlab
