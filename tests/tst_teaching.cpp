@@ -21,6 +21,7 @@
 #include "frame_image_view.h"
 #include "inspection.h"
 #include "main_window.h"
+#include "pixel_inspector.h"
 #include "replay_builder.h"
 #include "stage_strip.h"
 #include "stepping_bar.h"
@@ -258,6 +259,56 @@ private slots:
                      ->button(rl::StageId::Projection)
                      ->text()
                      .contains(QStringLiteral("skipped")));
+    }
+
+    void phongWorkedOutByHandInTheInspector() {
+        // Camera at the origin looking along +z, V = y: view = (-x, y, z). A square at z = 2
+        // filling the 800x600 image; pixel (400, 300) is sampled at its corner, NDC (0, 0):
+        // the view point P' = (0, 0, 2).
+        // N = (P2 - P1) x (P3 - P1) in view space = (-8, 0, 0) x (-8, 8, 0) / 64 = (0, 0, -1),
+        // toward the viewer already (not flipped); the light at (0, 2, 0):
+        // L = (0, 2, -2) / (2 sqrt 2) = (0, 0.70711, -0.70711); N.L = 0.70711;
+        // R = 2 (N.L) N - L = (0, -0.70711, -0.70711); V = (0, 0, -1); R.V = 0.70711.
+        // Ia ka = 100 x 0.2 = 20; Il Od kd (N.L) = 200 x (1, 0.5, 0.25) x 0.5 x 0.70711 =
+        // (70.711, 35.355, 17.678); Il ks (R.V)^3 = 200 x 0.25 x 0.35355 = 17.678.
+        // I = (108.39, 73.03, 55.36): bytes (108, 73, 55).
+        MainWindow window;
+        window.resize(1400, 900);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        const QTemporaryDir dir;
+        QVERIFY(window.openPath(
+            writeFixture(dir.filePath(QStringLiteral("c.cfg")), "0 0 0\n0 0 1\n0 1 0\n1 1 1\n")));
+        QVERIFY(window.openPath(writeFixture(dir.filePath(QStringLiteral("l.txt")),
+                                             "0 2 0\n0.2\n100 100 100\n0.5\n1 0.5 0.25\n0.25\n"
+                                             "200 200 200\n3\n")));
+        QVERIFY(
+            window.openPath(writeFixture(dir.filePath(QStringLiteral("square.byu")),
+                                         "4 2\n-4 -4 2\n4 -4 2\n4 4 2\n-4 4 2\n1 2 3\n1 3 4\n")));
+        QVERIFY(waitForReplay(window));
+        const auto frame = window.currentFrame();
+        const QPoint pixel(frame->scene->width / 2, frame->scene->height / 2);
+        QCOMPARE(frame->scene->width % 2, 0);
+        // Click on the pixel in the image.
+        window.imageView()->fitToWindow();
+        const QPointF at = window.imageView()->widgetPoint(QPointF(pixel) + QPointF(0.5, 0.5));
+        QTest::mouseClick(window.imageView(), Qt::LeftButton, Qt::NoModifier, at.toPoint());
+        QCOMPARE(window.inspection()->pickedPixel(), pixel);
+        PixelInspector* inspector = window.pixelInspector();
+        inspector->show();
+        QTRY_VERIFY_WITH_TIMEOUT(inspector->breakdown().has_value(), kTimeoutMs);
+        const LightingBreakdown& b = *inspector->breakdown();
+        QVERIFY(!b.has(LightingFlag::Flipped));
+        QVERIFY(!b.has(LightingFlag::LightBehind));
+        RL_COMPARE_VEC(b.ambient, rl::vec3(20.0f), 1e-4);
+        RL_COMPARE_VEC(b.diffuse, rl::vec3(70.7107f, 35.3553f, 17.6777f), 1e-3);
+        RL_COMPARE_VEC(b.specular, rl::vec3(17.6777f), 1e-3);
+        RL_COMPARE_NEAR(b.event.sample.nDotL, 0.707107, 1e-5);
+        RL_COMPARE_NEAR(b.event.sample.rDotV, 0.707107, 1e-5);
+        QCOMPARE(b.bytes, (std::array<std::uint8_t, 4>{108, 73, 55, 255}));
+        QVERIFY2(inspector->formulaText().contains(QStringLiteral("70.71")),
+                 qPrintable(inspector->formulaText()));
+        QCOMPARE(window.currentImage().pixelColor(pixel), QColor(108, 73, 55));
     }
 
     void detectsWhatAFileHolds() {
