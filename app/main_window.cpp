@@ -10,6 +10,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
@@ -181,8 +182,18 @@ QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWid
                                  Qt::DockWidgetArea area) {
     auto* dock = new QDockWidget(title, this);
     dock->setObjectName(name);
-    widget->setParent(dock);
-    dock->setWidget(widget);
+    if (qobject_cast<QAbstractScrollArea*>(widget)) {
+        dock->setWidget(widget);
+    } else {
+        // A view taller than its dock scrolls, rather than making the window taller than the
+        // screen (large text in presentation mode).
+        auto* scroll = new QScrollArea(dock);
+        scroll->setObjectName(name + QStringLiteral("Scroll"));
+        scroll->setFrameShape(QFrame::NoFrame);
+        scroll->setWidgetResizable(true);
+        scroll->setWidget(widget);
+        dock->setWidget(scroll);
+    }
     addDockWidget(area, dock);
     return dock;
 }
@@ -520,6 +531,19 @@ void MainWindow::setPresentationMode(bool on) {
     {
         const QSignalBlocker block(m_presentationAction);
         m_presentationAction->setChecked(on);
+    }
+    // In front of a class: the whole screen, the image and the stage views only.
+    static const char* const kSideDocks[] = {"messagesDock", "editDock", "sceneDock",
+                                             "breakpointsDock", "accuracyDock"};
+    if (on) {
+        m_layoutBeforePresentation = saveState(kLayoutVersion);
+        m_wasFullScreen = isFullScreen();
+        for (const char* name : kSideDocks)
+            if (auto* dock = findChild<QDockWidget*>(QLatin1String(name))) dock->hide();
+        showFullScreen();
+    } else {
+        if (!m_wasFullScreen) showNormal();
+        restoreState(m_layoutBeforePresentation, kLayoutVersion);
     }
     if (on) {
         QFont big = m_normalFont;

@@ -200,6 +200,8 @@ private:
     QMenu* m_exportViewMenu = nullptr;
     QList<QAction*> m_clickerActions;  // arrows and space: stepping in front of a class
     QAction* m_presentationAction = nullptr;
+    QByteArray m_layoutBeforePresentation;
+    bool m_wasFullScreen = false;
     QFont m_normalFont;
     QPalette m_normalPalette;
 

@@ -311,6 +311,19 @@ private slots:
         QCOMPARE(window.currentImage().pixelColor(pixel), QColor(108, 73, 55));
     }
 
+    void languageChoiceIsKept() {
+        MainWindow window;
+        QSignalSpy spy(&window, &MainWindow::languageChangeRequested);
+        auto* portuguese = window.findChild<QAction*>(QStringLiteral("language_pt_BR"));
+        QVERIFY(portuguese);
+        portuguese->trigger();
+        QCOMPARE(spy.count(), 1);
+        QCOMPARE(spy.at(0).at(0).toString(), QStringLiteral("pt_BR"));
+        QCOMPARE(QSettings().value(QStringLiteral("language")).toString(), QStringLiteral("pt_BR"));
+        window.findChild<QAction*>(QStringLiteral("language_system"))->trigger();
+        QCOMPARE(QSettings().value(QStringLiteral("language")).toString(), QString());
+    }
+
     void detectsWhatAFileHolds() {
         const QTemporaryDir dir;
         auto file = [&](const char* name, const QByteArray& text) {

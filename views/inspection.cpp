@@ -24,12 +24,13 @@ void Inspection::setFrame(std::shared_ptr<const rl::FrameTrace> frame, QImage im
     const bool onImage = m_frame && m_picked.x() >= 0 && m_picked.x() < m_frame->scene->width &&
                          m_picked.y() >= 0 && m_picked.y() < m_frame->scene->height;
     if (!onImage) m_picked = QPoint(-1, -1);
+    // Triangle numbers belong to a frame's projection: selected again from the pixel, once
+    // the views have the new frame.
+    m_vertices.clear();
+    m_triangle.reset();
     emit frameChanged();
     emit replayChanged();
     emit cursorChanged();
-    // Triangle numbers belong to a frame's projection: selected again from the pixel.
-    m_vertices.clear();
-    m_triangle.reset();
     if (onImage) {
         pickPixel(m_picked);
     } else {

@@ -418,6 +418,19 @@ void PixelInspector::showEvent(QShowEvent* event) {
     refresh();
 }
 
+void PixelInspector::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    // A larger font (presentation mode): the table's height is worked out again once the
+    // header and the rows have taken it.
+    if (event->type() == QEvent::FontChange)
+        QMetaObject::invokeMethod(
+            this,
+            [this] {
+                if (isVisible()) fillTable();
+            },
+            Qt::QueuedConnection);
+}
+
 void PixelInspector::refresh() {
     const std::shared_ptr<const rl::FrameTrace>& frame = m_inspection->frame();
     const QPoint picked = m_inspection->pickedPixel();

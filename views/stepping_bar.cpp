@@ -3,16 +3,61 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QComboBox>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QPainter>
 #include <QSlider>
 #include <QSpinBox>
-#include <QStyle>
 #include <QToolButton>
 
 namespace rasterlab {
 
 namespace {
+
+enum class Glyph { Start, Back, Play, Pause, Forward, End };
+
+// A media glyph in a colour: triangles and bars on a transparent square.
+QIcon glyphIcon(Glyph glyph, const QColor& colour) {
+    QPixmap pixmap(32, 32);
+    pixmap.fill(Qt::transparent);
+    QPainter p(&pixmap);
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setPen(Qt::NoPen);
+    p.setBrush(colour);
+    const auto left = [&](double x) {  // a triangle pointing left, its tip at x
+        p.drawPolygon(QPolygonF({QPointF(x, 16), QPointF(x + 11, 7), QPointF(x + 11, 25)}));
+    };
+    const auto right = [&](double x) {  // a triangle pointing right, its tip at x
+        p.drawPolygon(QPolygonF({QPointF(x, 16), QPointF(x - 11, 7), QPointF(x - 11, 25)}));
+    };
+    switch (glyph) {
+        case Glyph::Start:
+            p.drawRect(QRectF(7, 7, 3, 18));
+            left(11);
+            break;
+        case Glyph::Back:
+            left(5);
+            left(16);
+            break;
+        case Glyph::Play:
+            p.drawPolygon(QPolygonF({QPointF(10, 6), QPointF(25, 16), QPointF(10, 26)}));
+            break;
+        case Glyph::Pause:
+            p.drawRect(QRectF(9, 7, 5, 18));
+            p.drawRect(QRectF(18, 7, 5, 18));
+            break;
+        case Glyph::Forward:
+            right(16);
+            right(27);
+            break;
+        case Glyph::End:
+            right(21);
+            p.drawRect(QRectF(22, 7, 3, 18));
+            break;
+    }
+    return QIcon(pixmap);
+}
 
 constexpr rl::StepGranularity kGranularities[] = {
     rl::StepGranularity::Stage, rl::StepGranularity::Triangle, rl::StepGranularity::Scanline,
@@ -39,10 +84,8 @@ QString SteppingBar::granularityName(rl::StepGranularity granularity) {
 SteppingBar::SteppingBar(Inspection* inspection, QWidget* parent)
     : QWidget(parent), m_inspection(inspection) {
     setObjectName(QStringLiteral("steppingBar"));
-    const auto icon = [this](QStyle::StandardPixmap p) { return style()->standardIcon(p); };
-    auto action = [&](const QString& text, QStyle::StandardPixmap pixmap, QList<QKeySequence> keys,
-                      const char* name) {
-        auto* a = new QAction(icon(pixmap), text, this);
+    auto action = [&](const QString& text, QList<QKeySequence> keys, const char* name) {
+        auto* a = new QAction(text, this);
         a->setShortcuts(keys);
         a->setObjectName(QLatin1String(name));
         a->setToolTip(keys.isEmpty() ? text
@@ -50,21 +93,19 @@ SteppingBar::SteppingBar(Inspection* inspection, QWidget* parent)
                                            text, keys.first().toString(QKeySequence::NativeText)));
         return a;
     };
-    m_start = action(tr("Jump to &Start"), QStyle::SP_MediaSkipBackward,
-                     {QKeySequence(Qt::CTRL | Qt::Key_Home)}, "toStartAction");
-    m_back = action(tr("Step &Back"), QStyle::SP_MediaSeekBackward,
+    m_start =
+        action(tr("Jump to &Start"), {QKeySequence(Qt::CTRL | Qt::Key_Home)}, "toStartAction");
+    m_back = action(tr("Step &Back"),
                     {QKeySequence(Qt::SHIFT | Qt::Key_F10), QKeySequence(Qt::Key_PageUp)},
                     "stepBackAction");
-    m_play =
-        action(tr("&Play / Pause"), QStyle::SP_MediaPlay, {QKeySequence(Qt::Key_F6)}, "playAction");
+    m_play = action(tr("&Play / Pause"), {QKeySequence(Qt::Key_F6)}, "playAction");
     m_play->setCheckable(true);
     m_forward =
-        action(tr("Step &Forward"), QStyle::SP_MediaSeekForward,
-               {QKeySequence(Qt::Key_F10), QKeySequence(Qt::Key_PageDown)}, "stepForwardAction");
-    m_end = action(tr("Jump to &End"), QStyle::SP_MediaSkipForward,
-                   {QKeySequence(Qt::CTRL | Qt::Key_End)}, "toEndAction");
-    m_continue = action(tr("&Continue to Breakpoint"), QStyle::SP_MediaSeekForward,
-                        {QKeySequence(Qt::Key_F8)}, "continueAction");
+        action(tr("Step &Forward"), {QKeySequence(Qt::Key_F10), QKeySequence(Qt::Key_PageDown)},
+               "stepForwardAction");
+    m_end = action(tr("Jump to &End"), {QKeySequence(Qt::CTRL | Qt::Key_End)}, "toEndAction");
+    m_continue =
+        action(tr("&Continue to Breakpoint"), {QKeySequence(Qt::Key_F8)}, "continueAction");
     connect(m_start, &QAction::triggered, this, [this] {
         setPlaying(false);
         m_inspection->toStart();
@@ -142,6 +183,7 @@ SteppingBar::SteppingBar(Inspection* inspection, QWidget* parent)
 
     m_timer.setInterval(100);
     connect(&m_timer, &QTimer::timeout, this, &SteppingBar::tick);
+    updateIcons();
     connect(inspection, &Inspection::replayChanged, this, &SteppingBar::refresh);
     connect(inspection, &Inspection::cursorChanged, this, &SteppingBar::refresh);
     connect(inspection, &Inspection::granularityChanged, this, &SteppingBar::refresh);
@@ -168,7 +210,22 @@ void SteppingBar::setPlaying(bool playing) {
         m_timer.stop();
     const QSignalBlocker block(m_play);
     m_play->setChecked(playing);
-    m_play->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    updateIcons();
+}
+
+void SteppingBar::updateIcons() {
+    const QColor colour = palette().color(QPalette::ButtonText);
+    m_start->setIcon(glyphIcon(Glyph::Start, colour));
+    m_back->setIcon(glyphIcon(Glyph::Back, colour));
+    m_play->setIcon(glyphIcon(isPlaying() ? Glyph::Pause : Glyph::Play, colour));
+    m_forward->setIcon(glyphIcon(Glyph::Forward, colour));
+    m_end->setIcon(glyphIcon(Glyph::End, colour));
+    m_continue->setIcon(glyphIcon(Glyph::Forward, colour));
+}
+
+void SteppingBar::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::PaletteChange) updateIcons();
 }
 
 void SteppingBar::tick() {

@@ -42,9 +42,13 @@ public:
 
     static QString granularityName(rl::StepGranularity granularity);
 
+protected:
+    void changeEvent(QEvent* event) override;
+
 private:
     void tick();
     void refresh();
+    void updateIcons();  // drawn in the palette's text colour (visible on any background)
 
     Inspection* m_inspection;
     QTimer m_timer;
