@@ -73,6 +73,19 @@ QString layoutLabel(const char* description) {
                                                        : text;
 }
 
+// A shading model's name as people read it, translated.
+QString shadingLabel(rl::ShadingModel model) {
+    switch (model) {
+        case rl::ShadingModel::Flat:
+            return MainWindow::tr("flat");
+        case rl::ShadingModel::Gouraud:
+            return MainWindow::tr("Gouraud");
+        case rl::ShadingModel::Phong:
+            return MainWindow::tr("Phong");
+    }
+    return {};
+}
+
 QString displayName(const QString& source) {
     if (source.startsWith(QStringLiteral(":/")))
         return MainWindow::tr("%1 (built in)").arg(QFileInfo(source).fileName());
@@ -303,7 +316,7 @@ void MainWindow::createActions() {
         documentChanged();
     });
     // The layouts course files are read in: detected, or one chosen by hand.
-    QMenu* formats = file->addMenu(tr("Course File &Layouts"));
+    QMenu* formats = file->addMenu(tr("Course File La&youts"));
     formats->setObjectName(QStringLiteral("layoutMenu"));
     QMenu* cameraFormats = formats->addMenu(tr("&Camera"));
     auto* cameraGroup = new QActionGroup(cameraFormats);
@@ -375,7 +388,7 @@ void MainWindow::createActions() {
     QAction* zoomOut = view->addAction(tr("Zoom &Out"), m_view, &FrameImageView::zoomOut);
     zoomOut->setShortcut(QKeySequence::ZoomOut);
     view->addSeparator();
-    QMenu* panels = view->addMenu(tr("&Panels"));
+    QMenu* panels = view->addMenu(tr("Pa&nels"));
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         panels->addAction(dock->toggleViewAction());
     for (QToolBar* bar : findChildren<QToolBar*>()) panels->addAction(bar->toggleViewAction());
@@ -383,7 +396,7 @@ void MainWindow::createActions() {
     reset->setObjectName(QStringLiteral("resetLayoutAction"));
     view->addSeparator();
     // The images a command file names (its png commands): one is shown at a time.
-    m_imageMenu = view->addMenu(tr("&Image"));
+    m_imageMenu = view->addMenu(tr("I&mage"));
     m_imageMenu->setObjectName(QStringLiteral("imageMenu"));
     view->addSeparator();
     m_presentationAction = view->addAction(tr("&Presentation Mode"));
@@ -397,7 +410,7 @@ void MainWindow::createActions() {
     leave->setShortcut(QKeySequence(Qt::Key_Escape));
     connect(leave, &QAction::triggered, this, [this] { setPresentationMode(false); });
     addAction(leave);
-    QMenu* language = view->addMenu(tr("&Language"));
+    QMenu* language = view->addMenu(tr("Lan&guage"));
     language->setObjectName(QStringLiteral("languageMenu"));
     auto* languages = new QActionGroup(language);
     const QString current = QSettings().value(QStringLiteral("language"), QString()).toString();
@@ -428,9 +441,9 @@ void MainWindow::createActions() {
     step->addAction(m_steppingBar->toEndAction());
     step->addAction(m_steppingBar->continueAction());
     step->addSeparator();
-    QMenu* granularity = step->addMenu(tr("Step &By"));
+    QMenu* granularity = step->addMenu(tr("Step B&y"));
     for (QAction* a : m_steppingBar->granularityActions()) granularity->addAction(a);
-    QMenu* stages = step->addMenu(tr("&Stage"));
+    QMenu* stages = step->addMenu(tr("S&tage"));
     for (rl::StageId stage : rl::kAllStages) {
         const int n = static_cast<int>(stage) + 1;
         QAction* a =
@@ -886,8 +899,7 @@ void MainWindow::refreshSceneSummary() {
                              .arg(scene.triangleCount())
                              .arg(scene.width)
                              .arg(scene.height)
-                             .arg(QString::fromUtf8(
-                                 rl::shadingModelName(m_document.settings().shading))));
+                             .arg(shadingLabel(m_document.settings().shading)));
     }
     html += QStringLiteral("<h3>%1</h3><table>").arg(tr("Stages"));
     for (rl::StageId stage : rl::kAllStages) {
@@ -981,17 +993,23 @@ void MainWindow::showShortcuts() {
     auto row = [&](const QString& keys, const QString& what) {
         html += QStringLiteral("<tr><td><b>%1</b></td><td>%2</td></tr>").arg(keys, what);
     };
-    row(tr("F10, Page Down, Right (on the image)"), tr("step forward"));
-    row(tr("Shift+F10, Page Up, Left (on the image)"), tr("step back"));
-    row(tr("F6, Space (on the image)"), tr("play / pause"));
-    row(tr("Ctrl+Home, Ctrl+End"), tr("jump to the start / the end of the frame"));
-    row(tr("F8"), tr("continue to the next breakpoint"));
-    row(tr("Ctrl+Shift+1 ... 5"), tr("step by stage, triangle, scanline, span, pixel"));
-    row(tr("Alt+1 ... 7"), tr("show a stage's view"));
+    row(QStringLiteral("F10, Page Down"), tr("step forward"));
+    row(QStringLiteral("Shift+F10, Page Up"), tr("step back"));
+    row(QStringLiteral("\u2192 \u2193, \u2190 \u2191"),
+        tr("step forward, back (on the image, or anywhere in presentation mode)"));
+    row(QStringLiteral("F6"), tr("play / pause"));
+    row(tr("Space"), tr("play / pause (on the image, or anywhere in presentation mode)"));
+    row(QStringLiteral("Ctrl+Home, Ctrl+End"), tr("jump to the start / the end of the frame"));
+    row(QStringLiteral("F8"), tr("continue to the next breakpoint"));
+    row(QStringLiteral("Ctrl+Shift+1 ... 5"), tr("step by stage, triangle, scanline, span, pixel"));
+    row(QStringLiteral("Alt+1 ... 7"), tr("show a stage's view"));
     row(tr("Click, arrows"), tr("pick a pixel, move it by one"));
-    row(tr("F5, Esc"), tr("presentation mode on / off (the arrows and Space then step)"));
-    row(tr("Ctrl+O, Ctrl+E, Ctrl+Shift+E"), tr("open, export the image, export it as displayed"));
-    row(tr("Ctrl+0, Ctrl+1, Ctrl++, Ctrl+-"), tr("fit, actual size, zoom in, zoom out"));
+    row(QStringLiteral("F5, Esc"), tr("presentation mode on / off"));
+    row(QStringLiteral("Ctrl+O, Ctrl+E, Ctrl+Shift+E"),
+        tr("open, export the image, export it as displayed"));
+    row(QStringLiteral("Ctrl+S, Ctrl+Z, Ctrl+Shift+Z"), tr("save, undo, redo"));
+    row(QStringLiteral("Ctrl+0, Ctrl+1, Ctrl++, Ctrl+-"),
+        tr("fit, actual size, zoom in, zoom out"));
     html += QStringLiteral("</table>");
     QMessageBox box(QMessageBox::Information, tr("Keyboard Shortcuts"), html, QMessageBox::Close,
                     this);

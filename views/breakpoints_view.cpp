@@ -42,8 +42,10 @@ QString BreakpointsView::describe(const rl::Breakpoint& b, int triangleNumber) {
         case Kind::LightBehind:
             return tr("N.L < 0 at (%1, %2)").arg(b.x).arg(b.y);
         case Kind::NthWrite:
-            return b.x < 0 ? tr("any pixel written the %1th time").arg(b.n)
-                           : tr("(%1, %2) written the %3th time").arg(b.x).arg(b.y).arg(b.n);
+            return b.x < 0 ? tr("any pixel written %n time(s)", nullptr, static_cast<int>(b.n))
+                           : tr("(%1, %2) written %n time(s)", nullptr, static_cast<int>(b.n))
+                                 .arg(b.x)
+                                 .arg(b.y);
     }
     return {};
 }

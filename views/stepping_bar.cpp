@@ -88,9 +88,11 @@ SteppingBar::SteppingBar(Inspection* inspection, QWidget* parent)
         auto* a = new QAction(text, this);
         a->setShortcuts(keys);
         a->setObjectName(QLatin1String(name));
-        a->setToolTip(keys.isEmpty() ? text
+        // The tooltip without the menu's mnemonic marker.
+        const QString plain = QString(text).remove(QLatin1Char('&'));
+        a->setToolTip(keys.isEmpty() ? plain
                                      : QStringLiteral("%1 (%2)").arg(
-                                           text, keys.first().toString(QKeySequence::NativeText)));
+                                           plain, keys.first().toString(QKeySequence::NativeText)));
         return a;
     };
     m_start =
