@@ -60,23 +60,32 @@ int main(int argc, char* argv[]) {
     Translators translators;
     translators.install(QSettings().value(QStringLiteral("language")).toString());
 
-    // A new language builds the window again (every string is set when a widget is made);
-    // the files shown are opened again in it.
+    // A new language builds the window again (every string is set when a widget is made); the
+    // new window takes the old one's document, with its unsaved edits.
     std::unique_ptr<rasterlab::MainWindow> window;
-    std::function<void(const QStringList&)> open = [&](const QStringList& files) {
-        window = std::make_unique<rasterlab::MainWindow>();
-        for (const QString& file : files)
-            if (!window->openPath(file)) break;
-        QObject::connect(window.get(), &rasterlab::MainWindow::languageChangeRequested,
-                         [&](const QString& language) {
-                             const QStringList shown = window->shownFiles();
-                             window->close();
-                             translators.install(language);
-                             QMetaObject::invokeMethod(
-                                 &app, [&open, shown] { open(shown); }, Qt::QueuedConnection);
-                         });
-        window->show();
-    };
-    open(parser.positionalArguments());
+    std::function<void(const rasterlab::SceneDocument*)> build =
+        [&](const rasterlab::SceneDocument* document) {
+            auto fresh = std::make_unique<rasterlab::MainWindow>();
+            if (document) fresh->adoptDocument(*document);
+            QObject::connect(fresh.get(), &rasterlab::MainWindow::languageChangeRequested,
+                             [&](const QString& language) {
+                                 translators.install(language);
+                                 QMetaObject::invokeMethod(
+                                     &app,
+                                     [&] {
+                                         const rasterlab::SceneDocument kept = window->document();
+                                         const QByteArray geometry = window->saveGeometry();
+                                         if (!window->handOver()) return;
+                                         build(&kept);
+                                         window->restoreGeometry(geometry);
+                                     },
+                                     Qt::QueuedConnection);
+                             });
+            fresh->show();
+            window = std::move(fresh);
+        };
+    build(nullptr);
+    for (const QString& file : parser.positionalArguments())
+        if (!window->openPath(file)) break;
     return app.exec();
 }

@@ -173,7 +173,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         m_inspection->setReplayError(tr("cancelled"));
         updateBusy();
     });
-    statusBar()->addWidget(m_pixelLabel, 1);
+    // The pixel readout is permanent: temporary messages take the left of the bar.
+    statusBar()->addPermanentWidget(m_pixelLabel);
     statusBar()->addPermanentWidget(m_busyBar);
     statusBar()->addPermanentWidget(m_cancelButton);
     statusBar()->addPermanentWidget(m_timeLabel);
@@ -192,14 +193,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 }
 
 QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWidget* widget,
-                                 Qt::DockWidgetArea area) {
+                                 Qt::DockWidgetArea area, bool scrolls) {
     auto* dock = new QDockWidget(title, this);
     dock->setObjectName(name);
-    if (qobject_cast<QAbstractScrollArea*>(widget)) {
+    if (!scrolls) {
         dock->setWidget(widget);
     } else {
-        // A view taller than its dock scrolls, rather than making the window taller than the
-        // screen (large text in presentation mode).
+        // A long column of text and tables scrolls, rather than making the window taller than
+        // the screen (large text in presentation mode).
         auto* scroll = new QScrollArea(dock);
         scroll->setObjectName(name + QStringLiteral("Scroll"));
         scroll->setFrameShape(QFrame::NoFrame);
@@ -232,7 +233,7 @@ void MainWindow::createDocks() {
 
     m_edit = new EditPanel(&m_document);
     QDockWidget* editDock =
-        addDock(tr("Edit"), QStringLiteral("editDock"), m_edit, Qt::LeftDockWidgetArea);
+        addDock(tr("Edit"), QStringLiteral("editDock"), m_edit, Qt::LeftDockWidgetArea, true);
     m_summary = new QTextBrowser;
     m_summary->setObjectName(QStringLiteral("sceneSummary"));
     QDockWidget* sceneDock =
@@ -255,7 +256,7 @@ void MainWindow::createDocks() {
     m_inspector = new PixelInspector(m_inspection);
     QDockWidget* inspectorDock =
         addDock(tr("7 Pixel inspector (lighting)"), QStringLiteral("pixelInspectorDock"),
-                m_inspector, Qt::RightDockWidgetArea);
+                m_inspector, Qt::RightDockWidgetArea, true);
     splitDockWidget(cameraDock, inspectorDock, Qt::Vertical);
     m_vertexTable = new VertexTableView(m_inspection);
     QDockWidget* vertexDock =
@@ -607,8 +608,28 @@ void MainWindow::restoreLayout() {
     restoreState(settings.value(QStringLiteral("layout/state")).toByteArray(), kLayoutVersion);
 }
 
+void MainWindow::adoptDocument(const SceneDocument& document) {
+    m_document = document;
+    m_lastError.clear();
+    for (QAction* action : m_shadingGroup->actions())
+        action->setChecked(action->data().toInt() ==
+                           static_cast<int>(m_document.settings().shading));
+    const std::optional<rl::RuleSet> rules = rl::ruleSetOf(m_document.settings().rules);
+    for (QAction* action : m_rulesGroup->actions())
+        action->setChecked(rules && action->data().toInt() == static_cast<int>(*rules));
+    documentChanged();
+}
+
+bool MainWindow::handOver() {
+    m_handingOver = true;
+    const bool closed = close();
+    m_handingOver = false;
+    return closed;
+}
+
 void MainWindow::closeEvent(QCloseEvent* event) {
-    if (!m_edit->maybeSave(this)) {
+    // Handing the document to a new window (another language): its edits go with it.
+    if (!m_handingOver && !m_edit->maybeSave(this)) {
         event->ignore();
         return;
     }

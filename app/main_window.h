@@ -48,7 +48,8 @@ class SteppingBar;
 class ZBufferView;
 
 // What a file holds, told from its name and its text.
-enum class FileKind { Camera, Lighting, Object, CommandFile, Unknown };
+// CameraAndLighting: one key = value file holding both (the UFRPE courses' habit).
+enum class FileKind { Camera, Lighting, CameraAndLighting, Object, CommandFile, Unknown };
 FileKind detectFileKind(const QString& path);
 
 class MainWindow : public QMainWindow {
@@ -107,6 +108,12 @@ public:
     QStringList shownFiles() const;
     bool presentationMode() const { return m_inspection->presentation(); }
     void setPresentationMode(bool on);
+    // The document of another window (its files, values edited and not saved, shading, rules
+    // and layouts), shown here.
+    void adoptDocument(const SceneDocument& document);
+    // Closes the window without asking about unsaved edits (a new window has the document);
+    // false when the close did not happen.
+    bool handOver();
     // The docks as they are when the window opens (View > Reset Layout).
     void resetLayout();
 
@@ -132,7 +139,7 @@ private:
     void createActions();
     void createDocks();
     QDockWidget* addDock(const QString& title, const QString& name, QWidget* widget,
-                         Qt::DockWidgetArea area);
+                         Qt::DockWidgetArea area, bool scrolls = false);
     void requestRender();
     void updateTimeLabel();
     void updateBusy();
@@ -202,6 +209,7 @@ private:
     QAction* m_presentationAction = nullptr;
     QByteArray m_layoutBeforePresentation;
     bool m_wasFullScreen = false;
+    bool m_handingOver = false;
     QFont m_normalFont;
     QPalette m_normalPalette;
 

@@ -52,9 +52,11 @@ FileKind detectFileKind(const QString& path) {
     if (rl::looksLikeHw2(text)) return FileKind::CommandFile;
     if (head.contains('=')) {
         const std::set<QString> keys = keysOf(QString::fromUtf8(head));
-        if (hasAny(keys, {"c", "n", "v", "d", "hx", "hy"})) return FileKind::Camera;
-        if (hasAny(keys, {"iamb", "ka", "il", "pl", "kd", "od", "ks", "eta"}))
-            return FileKind::Lighting;
+        const bool camera = hasAny(keys, {"c", "n", "v", "d", "hx", "hy"});
+        const bool lighting = hasAny(keys, {"iamb", "ka", "il", "pl", "kd", "od", "ks", "eta"});
+        if (camera && lighting) return FileKind::CameraAndLighting;
+        if (camera) return FileKind::Camera;
+        if (lighting) return FileKind::Lighting;
         return FileKind::Unknown;
     }
     if (rl::detectCameraLayout(text)) return FileKind::Camera;
@@ -83,6 +85,10 @@ bool MainWindow::openPath(const QString& path) {
                     if (!found[0]) found[0] = file;
                     break;
                 case FileKind::Lighting:
+                    if (!found[1]) found[1] = file;
+                    break;
+                case FileKind::CameraAndLighting:
+                    if (!found[0]) found[0] = file;
                     if (!found[1]) found[1] = file;
                     break;
                 case FileKind::Object:
@@ -119,6 +125,9 @@ bool MainWindow::openPath(const QString& path) {
             return openPart(SceneDocument::Part::Camera, path);
         case FileKind::Lighting:
             return openPart(SceneDocument::Part::Lighting, path);
+        case FileKind::CameraAndLighting:
+            return openPart(SceneDocument::Part::Camera, path) &&
+                   openPart(SceneDocument::Part::Lighting, path);
         case FileKind::Object:
             return openPart(SceneDocument::Part::Object, path);
         case FileKind::CommandFile:

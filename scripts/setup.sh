@@ -8,6 +8,7 @@ packages=(
     qt6-base-dev                       # Qt 6 Core, Gui, Widgets, Concurrent, Test
     qt6-tools-dev qt6-tools-dev-tools  # Qt's CMake support for Linguist
     qt6-l10n-tools                     # lupdate and lrelease (translations)
+    qt6-translations-l10n              # Qt's own dialogs and buttons in Portuguese
     qt6-qpa-plugins                    # platform plugins (xcb for a desktop)
     libglm-dev                         # GLM
     fonts-dejavu-core                  # a font for the window and the offscreen tests

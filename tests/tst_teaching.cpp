@@ -324,6 +324,29 @@ private slots:
         QCOMPARE(QSettings().value(QStringLiteral("language")).toString(), QString());
     }
 
+    void anotherWindowTakesTheDocument() {
+        // A new language builds the window again: the new one takes the old one's document,
+        // edits not saved included, and the old one closes without asking about them.
+        auto first = std::make_unique<MainWindow>();
+        QVERIFY(waitForReplay(*first));
+        first->setShading(rl::ShadingModel::Gouraud);
+        SceneDocument edited = first->document();
+        edited.setValue(SceneDocument::Field::Ks, {0.125, 0.0, 0.0});
+        QVERIFY(edited.isModified());
+        MainWindow second;
+        second.adoptDocument(edited);
+        QVERIFY(second.document().isModified());
+        QCOMPARE(second.document().value(SceneDocument::Field::Ks)[0], 0.125);
+        QCOMPARE(second.document().settings().shading, rl::ShadingModel::Gouraud);
+        QVERIFY(waitForReplay(second));
+        QCOMPARE(second.currentFrame()->scene->draws[0].shading, rl::ShadingModel::Gouraud);
+        QCOMPARE(second.currentFrame()->scene->draws[0].material.ks, 0.125f);
+        QVERIFY(second.isWindowModified());
+        first->show();
+        QVERIFY(first->handOver());  // no question asked: it would block here
+        QVERIFY(!first->isVisible());
+    }
+
     void detectsWhatAFileHolds() {
         const QTemporaryDir dir;
         auto file = [&](const char* name, const QByteArray& text) {
@@ -339,6 +362,8 @@ private slots:
                  FileKind::Camera);
         QCOMPARE(detectFileKind(file("kvl.txt", "Iamb = 1 1 1\nKa = 0.1\nPl = 0 0 0\n")),
                  FileKind::Lighting);
+        QCOMPARE(detectFileKind(file("both.txt", "C = 0 0 -5\nN = 0 0 1\nIamb = 1 1 1\n")),
+                 FileKind::CameraAndLighting);
         QCOMPARE(detectFileKind(file("hw2.txt", "png 4 4 x.png\nxyz 0 0 0\n")),
                  FileKind::CommandFile);
         QCOMPARE(detectFileKind(file("notes.txt", "hello there\n")), FileKind::Unknown);

@@ -15,7 +15,7 @@ namespace rasterlab {
 
 namespace {
 
-enum class Glyph { Start, Back, Play, Pause, Forward, End };
+enum class Glyph { Start, Back, Play, Pause, Forward, End, Continue };
 
 // A media glyph in a colour: triangles and bars on a transparent square.
 QIcon glyphIcon(Glyph glyph, const QColor& colour) {
@@ -54,6 +54,10 @@ QIcon glyphIcon(Glyph glyph, const QColor& colour) {
         case Glyph::End:
             right(21);
             p.drawRect(QRectF(22, 7, 3, 18));
+            break;
+        case Glyph::Continue:  // a bar, then a triangle: run on from here
+            p.drawRect(QRectF(7, 7, 3, 18));
+            right(26);
             break;
     }
     return QIcon(pixmap);
@@ -222,7 +226,7 @@ void SteppingBar::updateIcons() {
     m_play->setIcon(glyphIcon(isPlaying() ? Glyph::Pause : Glyph::Play, colour));
     m_forward->setIcon(glyphIcon(Glyph::Forward, colour));
     m_end->setIcon(glyphIcon(Glyph::End, colour));
-    m_continue->setIcon(glyphIcon(Glyph::Forward, colour));
+    m_continue->setIcon(glyphIcon(Glyph::Continue, colour));
 }
 
 void SteppingBar::changeEvent(QEvent* event) {

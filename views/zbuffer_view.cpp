@@ -6,6 +6,7 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QPainter>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
@@ -161,6 +162,7 @@ ZBufferView::ZBufferView(QWidget* parent) : QWidget(parent) {
     m_farthest->setObjectName(QStringLiteral("zbufferFarthest"));
     for (QDoubleSpinBox* box : {m_nearest, m_farthest}) {
         box->setDecimals(6);
+        box->setLocale(QLocale::c());  // a decimal point, as every number the views show
         box->setRange(-1e9, 1e9);
         box->setKeyboardTracking(false);
         box->setEnabled(false);
