@@ -140,12 +140,12 @@ RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, floa
 // What the depth test of one triangle's spans needs, worked out once per triangle.
 // With reciprocal, the plane interpolated is that of 1/z, and a fragment's depth is one over
 // it: view z is not linear on the screen, but 1/z is (perspective-correct depth).
-struct TriangleSetup {
+struct TrianglePlane {
     dvec2 p0, e1, e2;
     double area = 0.0, betaDx = 0.0, gammaDx = 0.0;
     float z0 = 0.0f, dz1 = 0.0f, dz2 = 0.0f;
 
-    TriangleSetup(const Projection& projection, std::size_t t, bool reciprocal) {
+    TrianglePlane(const Projection& projection, std::size_t t, bool reciprocal) {
         const ScreenTriangle& tri = projection.triangles[t];
         const DrawProjection& draw = projection.draws[tri.draw];
         const std::array<dvec2, 3> p = screenVertices(projection, tri);
@@ -165,23 +165,36 @@ struct TriangleSetup {
         betaDx = e2.y / area;
         gammaDx = -e1.y / area;
     }
+
+    // The barycentrics of the sample of pixel (xBegin, y), (xBegin + offset, y + offset),
+    // where a span starts.
+    void spanStart(std::int32_t xBegin, std::int32_t y, double offset, double& beta0,
+                   double& gamma0) const {
+        const dvec2 s0 = dvec2(xBegin + offset, y + offset) - p0;
+        beta0 = (s0.x * e2.y - s0.y * e2.x) / area;
+        gamma0 = (e1.x * s0.y - e1.y * s0.x) / area;
+    }
+    // Pixel i of a span starting at beta0, gamma0.
+    FragmentDepth fragment(double beta0, double gamma0, std::int32_t i, bool reciprocal) const {
+        FragmentDepth f;
+        f.beta = static_cast<float>(beta0 + double(i) * betaDx);
+        f.gamma = static_cast<float>(gamma0 + double(i) * gammaDx);
+        f.depth = z0 + f.beta * dz1 + f.gamma * dz2;
+        if (reciprocal) f.depth = 1.0f / f.depth;
+        return f;
+    }
 };
 
 // The depth test of one span of triangle t.
 template <typename Probe>
-void testSpanOf(const Scene& scene, const TriangleSetup& setup, std::uint32_t id, const Span& span,
+void testSpanOf(const Scene& scene, const TrianglePlane& setup, std::uint32_t id, const Span& span,
                 DepthTest& out, Counts& counts, Probe& probe) {
     const double offset = scene.rules.sampleOffset;
     const bool winsOnTie = scene.conventions.depthWinsOnTie;
     const bool rangeClip = scene.conventions.depthRangeClip;
     const bool reciprocal = perspectiveDepth(scene);
-    // The sample of pixel (x, y) is the point (x + offset, y + offset).
-    const dvec2 s0 = dvec2(span.xBegin + offset, span.y + offset) - setup.p0;
-    const dvec2 e1 = setup.e1, e2 = setup.e2;
-    const double beta0 = (s0.x * e2.y - s0.y * e2.x) / setup.area;
-    const double gamma0 = (e1.x * s0.y - e1.y * s0.x) / setup.area;
-    const double betaDx = setup.betaDx, gammaDx = setup.gammaDx;
-    const float z0 = setup.z0, dz1 = setup.dz1, dz2 = setup.dz2;
+    double beta0 = 0.0, gamma0 = 0.0;
+    setup.spanStart(span.xBegin, span.y, offset, beta0, gamma0);
     float* depthRow = out.depth.row(span.y);
     std::uint32_t* idRow = out.triangle.row(span.y);
     vec2* baryRow = out.barycentric.row(span.y);
@@ -189,19 +202,17 @@ void testSpanOf(const Scene& scene, const TriangleSetup& setup, std::uint32_t id
     counts.fragments += static_cast<std::size_t>(n);
     if constexpr (!Probe::enabled) {
         if (!rangeClip) {
-            counts.passed +=
-                testSpan(depthRow + span.xBegin, idRow + span.xBegin,
-                         out.barycentricsKept ? &baryRow[span.xBegin].x : nullptr, n, beta0, betaDx,
-                         gamma0, gammaDx, z0, dz1, dz2, id, winsOnTie, reciprocal);
+            counts.passed += testSpan(depthRow + span.xBegin, idRow + span.xBegin,
+                                      out.barycentricsKept ? &baryRow[span.xBegin].x : nullptr, n,
+                                      beta0, setup.betaDx, gamma0, setup.gammaDx, setup.z0,
+                                      setup.dz1, setup.dz2, id, winsOnTie, reciprocal);
             return;
         }
     }
     for (std::int32_t i = 0; i < n; ++i) {
         const std::int32_t x = span.xBegin + i;
-        const auto beta = static_cast<float>(beta0 + double(i) * betaDx);
-        const auto gamma = static_cast<float>(gamma0 + double(i) * gammaDx);
-        float z = z0 + beta * dz1 + gamma * dz2;
-        if (reciprocal) z = 1.0f / z;
+        const FragmentDepth f = setup.fragment(beta0, gamma0, i, reciprocal);
+        const float beta = f.beta, gamma = f.gamma, z = f.depth;
         if (rangeClip && !(z >= 0.0f && z <= 1.0f)) {  // per-pixel clipping (seed 001)
             ++counts.outsideDepthRange;
             RL_PROBE_HOOK(probe.onDepthTest(
@@ -230,7 +241,7 @@ Counts testAll(const Scene& scene, const Projection& projection, const ScanConve
         const std::uint32_t first = scan.spanStart[t];
         const std::uint32_t last = scan.spanStart[t + 1];
         if (first == last) continue;
-        const TriangleSetup setup(projection, t, perspectiveDepth(scene));
+        const TrianglePlane setup(projection, t, perspectiveDepth(scene));
         for (std::uint32_t k = first; k < last; ++k)
             testSpanOf(scene, setup, static_cast<std::uint32_t>(t), scan.spans[k], out, counts,
                        probe);
@@ -329,7 +340,7 @@ Counts testChunks(const Scene& scene, const Projection& projection, const ScanCo
         out.touched[static_cast<std::size_t>(c)] =
             touched.begin < touched.end ? touched : ColumnRange{};
         std::uint32_t current = kNoTriangle;
-        std::optional<TriangleSetup> setup;
+        std::optional<TrianglePlane> setup;
         for (std::uint32_t e = start[c]; e < start[c + 1]; ++e) {
             const Entry& entry = entries[e];
             if (entry.triangle != current) {
@@ -357,6 +368,15 @@ Counts testChunks(const Scene& scene, const Projection& projection, const ScanCo
 }
 
 }  // namespace
+
+FragmentDepth fragmentDepth(const Scene& scene, const Projection& projection, std::uint32_t t,
+                            std::int32_t y, std::int32_t xBegin, std::int32_t x) {
+    const bool reciprocal = perspectiveDepth(scene);
+    const TrianglePlane setup(projection, t, reciprocal);
+    double beta0 = 0.0, gamma0 = 0.0;
+    setup.spanStart(xBegin, y, scene.rules.sampleOffset, beta0, gamma0);
+    return setup.fragment(beta0, gamma0, x - xBegin, reciprocal);
+}
 
 template <typename Probe>
 DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,

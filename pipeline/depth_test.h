@@ -81,4 +81,15 @@ public:
                   int threads = 1, DepthTest* recycled = nullptr) const;
 };
 
+// One fragment as the depth test works it out: pixel x of the span that starts at pixel
+// xBegin on row y of projected triangle t. The barycentrics step along the span from its
+// first pixel, so xBegin must be where scan conversion starts the span for the bits to
+// agree.
+struct FragmentDepth {
+    float beta = 0.0f, gamma = 0.0f;  // screen barycentrics, alpha = 1 - beta - gamma
+    float depth = 0.0f;
+};
+FragmentDepth fragmentDepth(const Scene& scene, const Projection& projection, std::uint32_t t,
+                            std::int32_t y, std::int32_t xBegin, std::int32_t x);
+
 }  // namespace rl

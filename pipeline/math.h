@@ -39,6 +39,11 @@ inline dmat4 matrixFromRows(const double (&rows)[16]) {
     return m;
 }
 
+// The point a homogeneous position stands for: (x, y, z) / w (w = 0, a direction, as it is).
+inline dvec3 cartesian(const dvec4& p) {
+    return p.w != 0.0 && p.w != 1.0 ? dvec3(p) / p.w : dvec3(p);
+}
+
 inline bool isFinite(double v) {
     return v - v == 0.0;
 }

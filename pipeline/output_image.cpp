@@ -47,6 +47,11 @@ std::array<std::uint8_t, 4> colourBytes(const vec3& colour, const Conventions& c
             toByte(colour.b, conventions), 255};
 }
 
+std::array<std::uint8_t, 4> normalBytes(const vec3& n) {
+    return {unitToByte(n.x * 0.5f + 0.5f), unitToByte(n.y * 0.5f + 0.5f),
+            unitToByte(n.z * 0.5f + 0.5f), 255};
+}
+
 std::array<std::uint8_t, 4> backgroundBytes(const Conventions& conventions) {
     const vec4 bg = conventions.background;
     return {unitToByte(bg.r), unitToByte(bg.g), unitToByte(bg.b), unitToByte(bg.a)};
@@ -114,9 +119,8 @@ Rgba8Image normalImage(const Image<vec3>& normals, const DepthTest& depth) {
                 put(image, x, y, 0, 0, 0, 255);
                 continue;
             }
-            const vec3 n = normals.at(x, y);
-            put(image, x, y, unitToByte(n.x * 0.5f + 0.5f), unitToByte(n.y * 0.5f + 0.5f),
-                unitToByte(n.z * 0.5f + 0.5f), 255);
+            const std::array<std::uint8_t, 4> c = normalBytes(normals.at(x, y));
+            put(image, x, y, c[0], c[1], c[2], c[3]);
         }
     }
     return image;

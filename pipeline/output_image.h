@@ -35,6 +35,8 @@ std::uint8_t toByte(float value, const Conventions& conventions);
 // A shaded colour as opaque RGBA bytes, and the background's RGBA bytes.
 std::array<std::uint8_t, 4> colourBytes(const vec3& colour, const Conventions& conventions);
 std::array<std::uint8_t, 4> backgroundBytes(const Conventions& conventions);
+// A unit normal as opaque RGBA bytes, (n + 1) / 2 per channel (as normalImage writes it).
+std::array<std::uint8_t, 4> normalBytes(const vec3& n);
 
 // The final image: shaded pixels opaque, the others the scene's background.
 Rgba8Image colourImage(const Shading& shading, const DepthTest& depth,

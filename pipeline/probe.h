@@ -132,6 +132,23 @@ struct ReplayFragment {
     vec3 colour = vec3(0.0f);  // Written: the colour it writes (unclamped, the scene's scale)
 };
 
+// A depth test as a fragment: where, which triangle, both depths, the barycentrics and the
+// verdict (the replay fills in row, previous, writeNumber and colour).
+inline ReplayFragment fragmentOf(const DepthTestEvent& e) {
+    ReplayFragment f;
+    f.x = e.x;
+    f.y = e.y;
+    f.triangle = e.triangle;
+    f.depth = e.depth;
+    f.stored = e.stored;
+    f.beta = e.beta;
+    f.gamma = e.gamma;
+    f.verdict = e.outsideDepthRange ? FragmentVerdict::OutsideDepthRange
+                : e.passed          ? FragmentVerdict::Written
+                                    : FragmentVerdict::Rejected;
+    return f;
+}
+
 class ReplayProbe {
 public:
     static constexpr bool enabled = true;
@@ -142,20 +159,7 @@ public:
                std::int32_t xBegin, std::int32_t xEnd) {
         rows.push_back({triangle, y, xBegin, xEnd, xLeft, xRight});
     }
-    void onDepthTest(const DepthTestEvent& e) {
-        ReplayFragment f;
-        f.x = e.x;
-        f.y = e.y;
-        f.triangle = e.triangle;
-        f.depth = e.depth;
-        f.stored = e.stored;
-        f.beta = e.beta;
-        f.gamma = e.gamma;
-        f.verdict = e.outsideDepthRange ? FragmentVerdict::OutsideDepthRange
-                    : e.passed          ? FragmentVerdict::Written
-                                        : FragmentVerdict::Rejected;
-        fragments.push_back(f);
-    }
+    void onDepthTest(const DepthTestEvent& e) { fragments.push_back(fragmentOf(e)); }
     void onShade(const ShadeEvent&) {}
 
     std::vector<ReplayRowEvent> rows;

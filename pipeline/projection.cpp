@@ -109,8 +109,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
         auto project = [&](std::uint32_t i) {
             const dvec4& pClip = proj.pClip[i];
             const dvec2 pNdc = dvec2(pClip) / pClip.w;
-            const double yFromTop = conv.ndcYUp ? 1.0 - pNdc.y : pNdc.y + 1.0;
-            const dvec2 exact((pNdc.x + 1.0) * width / 2.0, yFromTop * height / 2.0);
+            const dvec2 exact = screenFromNdc(pNdc, width, height, conv.ndcYUp);
             proj.pNdc[i] = pNdc;
             proj.pScreenExact[i] = exact;
             dvec2 snapped(snap(exact.x, scene.rules, grid), snap(exact.y, scene.rules, grid));

@@ -90,6 +90,13 @@ struct Projection {
     std::size_t outsideGuardBand = 0;     // vertices pulled in to the guard band
 };
 
+// Pixels from NDC, before snapping: x = (x_ndc + 1) W/2, and y = (1 - y_ndc) H/2 when NDC's
+// y points up (the course's convention), (y_ndc + 1) H/2 otherwise.
+inline dvec2 screenFromNdc(const dvec2& pNdc, double width, double height, bool ndcYUp) {
+    const double yFromTop = ndcYUp ? 1.0 - pNdc.y : pNdc.y + 1.0;
+    return {(pNdc.x + 1.0) * width / 2.0, yFromTop * height / 2.0};
+}
+
 // Snapped screen coordinates are kept within +-kGuardBand pixels.
 inline constexpr double kGuardBand = double(1 << 28);
 

@@ -92,12 +92,7 @@ Result<std::shared_ptr<const FrameReplay>> FrameReplay::build(
     std::uint32_t next = 0;
     for (const ReplayRowEvent& e : probe.rows) {
         ReplayRow row;
-        row.triangle = e.triangle;
-        row.y = e.y;
-        row.xBegin = e.xBegin;
-        row.xEnd = e.xEnd;
-        row.xLeft = e.xLeft;
-        row.xRight = e.xRight;
+        static_cast<ReplayRowEvent&>(row) = e;
         row.fragmentBegin = next;
         next += static_cast<std::uint32_t>(std::max(0, e.xEnd - e.xBegin));
         row.fragmentEnd = next;
@@ -129,11 +124,12 @@ Result<std::shared_ptr<const FrameReplay>> FrameReplay::build(
     }
     replay->m_finalWriter = std::move(writer);
     replay->m_written = written.size();
+    // The count before every 1024th fragment, up to and including the end (which may be one).
     replay->m_writtenPrefix.assign(fragments.size() / kPrefixStep + 1, 0);
-    for (std::size_t i = 0, n = 0; i < fragments.size(); ++i) {
+    for (std::size_t i = 0, n = 0; i <= fragments.size(); ++i) {
         if (i % kPrefixStep == 0)
             replay->m_writtenPrefix[i / kPrefixStep] = static_cast<std::uint32_t>(n);
-        n += fragments[i].verdict == FragmentVerdict::Written ? 1 : 0;
+        if (i < fragments.size()) n += fragments[i].verdict == FragmentVerdict::Written ? 1 : 0;
     }
     if (cancelled()) return makeError(ErrorCode::Usage, where, "cancelled");
 

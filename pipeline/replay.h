@@ -40,12 +40,9 @@ enum class StepGranularity : std::uint8_t { Stage, Triangle, Scanline, Span, Pix
 
 const char* stepGranularityName(StepGranularity granularity);  // "stage", "triangle", ...
 
-// One row of a triangle's edge walk.
-struct ReplayRow {
-    std::uint32_t triangle = 0;
-    std::int32_t y = 0;
-    std::int32_t xBegin = 0, xEnd = 0;  // the span [xBegin, xEnd) on the screen
-    double xLeft = 0.0, xRight = 0.0;   // the exact edge crossings (pixels)
+// One row of a triangle's edge walk (triangle, y, the span [xBegin, xEnd) on the screen and
+// the exact edge crossings xLeft, xRight), and the fragments its pixels made.
+struct ReplayRow : ReplayRowEvent {
     std::uint32_t fragmentBegin = 0, fragmentEnd = 0;
     bool empty() const { return xBegin >= xEnd; }
 };

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <utility>
 
 #include "parallel.h"
 #include "probe.h"
@@ -114,7 +116,66 @@ Grid gridOf(const RasterRules& rules) {
     return g;
 }
 
+// The pixels of a row between its two edges: the samples left <= x <= right (inclusive) or
+// left <= x < right (top-left), clipped to the screen's columns [0, width). Empty when
+// begin >= end.
+struct RowPixels {
+    std::int64_t begin = 0, end = 0;
+};
+RowPixels rowPixels(const EdgeWalker& left, const EdgeWalker& right, const Grid& g,
+                    std::int64_t width) {
+    return {std::max<std::int64_t>(left.ceilX(), 0),
+            std::min<std::int64_t>(g.topLeft ? right.ceilX() : right.floorX() + 1, width)};
+}
+
+// The row's pixels as the stepper records them: [xBegin, xEnd) within [0, width], xBegin <=
+// xEnd (an empty row keeps where its span would start).
+std::pair<std::int32_t, std::int32_t> recordedPixels(const RowPixels& p, std::int64_t width) {
+    const auto xBegin = static_cast<std::int32_t>(std::min(p.begin, width));
+    return {xBegin, static_cast<std::int32_t>(std::clamp<std::int64_t>(p.end, xBegin, width))};
+}
+
+// Tells the probe of a row walked, with its crossings and its pixels as recorded.
+template <typename Probe>
+void reportRow(Probe& probe, std::uint32_t triangle, std::int32_t y, const EdgeWalker& left,
+               const EdgeWalker& right, const RowPixels& pixels, std::int64_t width) {
+    const auto [xBegin, xEnd] = recordedPixels(pixels, width);
+    probe.onRow(triangle, y, left.exactX(), right.exactX(), xBegin, xEnd);
+}
+
+// Rows sampled above the middle vertex are bounded by the upper edge (every row when the
+// bottom is flat), the others by the lower edge.
+std::int32_t lastUpperRow(const TriangleSetup& s, const Grid& g) {
+    const std::int64_t yMiddle = s.upperEdge.yBottom;
+    if (s.lowerEdge.yBottom == yMiddle) return s.yLast;
+    return std::min(s.yLast, toRow(g.firstAtOrAfter(yMiddle) - 1));
+}
+
 }  // namespace
+
+std::int32_t lastUpperRow(const TriangleSetup& s, const RasterRules& rules) {
+    return lastUpperRow(s, gridOf(rules));
+}
+
+ScanRow scanRow(const TriangleSetup& s, const RasterRules& rules, std::int32_t y,
+                std::int32_t width) {
+    const Grid g = gridOf(rules);
+    ScanRow row;
+    row.y = y;
+    row.upperPart = y <= lastUpperRow(s, g);
+    const EdgeWalker longWalker(s.longEdge, g, y);
+    const EdgeWalker shortWalker(row.upperPart ? s.upperEdge : s.lowerEdge, g, y);
+    const EdgeWalker& left = s.longEdgeOnLeft ? longWalker : shortWalker;
+    const EdgeWalker& right = s.longEdgeOnLeft ? shortWalker : longWalker;
+    row.xLeft = left.exactX();
+    row.xRight = right.exactX();
+    std::tie(row.xBegin, row.xEnd) = recordedPixels(rowPixels(left, right, g, width), width);
+    return row;
+}
+
+double edgeCrossing(const ScanEdge& e, const RasterRules& rules, std::int32_t y) {
+    return EdgeWalker(e, gridOf(rules), y).exactX();
+}
 
 double ScanEdge::xAt(double y) const {
     const double scale = std::ldexp(1.0, -bits);
@@ -196,39 +257,26 @@ void scanTriangles(const Scene& scene, const Projection& projection, std::size_t
             const EdgeWalker& left = s.longEdgeOnLeft ? longWalker : shortWalker;
             const EdgeWalker& right = s.longEdgeOnLeft ? shortWalker : longWalker;
             for (std::int32_t y = first; y <= last; ++y) {
-                // Samples left <= x <= right (inclusive) or left <= x < right (top-left),
-                // clipped to the screen.
-                const std::int64_t begin = std::max<std::int64_t>(left.ceilX(), 0);
-                const std::int64_t end =
-                    std::min<std::int64_t>(g.topLeft ? right.ceilX() : right.floorX() + 1, width);
-                if (begin < end) {
-                    const Span span{y, static_cast<std::int32_t>(begin),
-                                    static_cast<std::int32_t>(end)};
+                const RowPixels pixels = rowPixels(left, right, g, width);
+                if (pixels.begin < pixels.end) {
+                    const Span span{y, static_cast<std::int32_t>(pixels.begin),
+                                    static_cast<std::int32_t>(pixels.end)};
                     out.spans.push_back(span);
                     out.pixels += static_cast<std::size_t>(span.xEnd - span.xBegin);
                     RL_PROBE_HOOK(probe.onSpan(triangle, span, left.exactX(), right.exactX()));
                 }
                 // Every row walked, empty ones included (the stepper's scanlines).
-                RL_PROBE_HOOK(const auto xFirst = static_cast<std::int32_t>(std::min(begin, width));
-                              probe.onRow(triangle, y, left.exactX(), right.exactX(), xFirst,
-                                          static_cast<std::int32_t>(
-                                              std::clamp<std::int64_t>(end, xFirst, width))));
+                RL_PROBE_HOOK(reportRow(probe, triangle, y, left, right, pixels, width));
                 longWalker.nextRow();
                 shortWalker.nextRow();
             }
         };
         // Upper part: rows sampled above the middle vertex (all rows when the bottom is
         // flat); lower part: from the middle vertex's row down.
-        const std::int64_t yMiddle = s.upperEdge.yBottom;
-        const bool flatBottom = s.lowerEdge.yBottom == yMiddle;
-        const std::int32_t upperLast =
-            flatBottom ? rowEnd
-                       : std::min<std::int32_t>(rowEnd, toRow(g.firstAtOrAfter(yMiddle) - 1));
+        const std::int32_t upperLast = std::min(rowEnd, lastUpperRow(s, g));
         if (rowBegin <= upperLast) walk(s.upperEdge, rowBegin, upperLast);
-        if (!flatBottom) {
-            const std::int32_t lowerFirst = std::max(rowBegin, upperLast + 1);
-            if (lowerFirst <= rowEnd) walk(s.lowerEdge, lowerFirst, rowEnd);
-        }
+        const std::int32_t lowerFirst = std::max(rowBegin, upperLast + 1);
+        if (lowerFirst <= rowEnd) walk(s.lowerEdge, lowerFirst, rowEnd);
         if (out.spans.size() == spansBefore) ++out.offscreen;
     }
 }

@@ -63,6 +63,28 @@ struct TriangleSetup {
 // Screen vertices lie on the rules' sub-pixel grid within the guard band of projection.h.
 TriangleSetup setupTriangle(const std::array<dvec2, 3>& pScreen, const RasterRules& rules);
 
+// One row of a triangle's edge walk: where the row's sampled line crosses the two edges that
+// bound it, and the pixels between them on the screen. The walk's arithmetic is exact, so
+// the numbers of row y worked out directly are the very ones the walk reaches row by row.
+struct ScanRow {
+    std::int32_t y = 0;
+    double xLeft = 0.0, xRight = 0.0;   // the exact crossings (pixels)
+    std::int32_t xBegin = 0, xEnd = 0;  // its pixels [xBegin, xEnd), clipped to the screen
+    bool upperPart = true;              // bounded by the upper edge (else by the lower)
+    bool empty() const { return xBegin >= xEnd; }
+};
+
+// The last row the walk follows the upper edge on (yLast when the bottom is flat), before
+// screen clipping; the lower edge bounds the rows after it.
+std::int32_t lastUpperRow(const TriangleSetup& s, const RasterRules& rules);
+// Row y, yFirst <= y <= yLast, of a triangle that is not degenerate, on a screen `width`
+// pixels wide.
+ScanRow scanRow(const TriangleSetup& s, const RasterRules& rules, std::int32_t y,
+                std::int32_t width);
+// Where an edge that is not horizontal crosses the sampled line of row y, exactly as the
+// walk has it (pixels).
+double edgeCrossing(const ScanEdge& e, const RasterRules& rules, std::int32_t y);
+
 struct ScanConversion {
     std::vector<std::uint32_t> spanStart;  // spans of triangle t: [spanStart[t], spanStart[t+1])
     std::vector<Span> spans;

@@ -27,26 +27,13 @@ struct DrawVertices {
                                  // float 1/w would overflow for |w| < 3e-39)
 };
 
-// Values for the vertices made by clipping, interpolated from their edges' ends (which
-// may be made vertices too, made earlier).
-template <typename T>
-void extendByClipping(std::vector<T>& values, const DrawProjection& proj) {
-    values.resize(proj.pView.size());
-    for (std::size_t i = 0; i < proj.generated.size(); ++i) {
-        const ClipVertex& g = proj.generated[i];
-        values[proj.originalVertexCount + i] =
-            glm::mix(values[g.a], values[g.b], static_cast<float>(g.t));
-    }
-}
-
 DrawVertices drawVertices(const Draw& draw, const DrawProjection& proj, const DrawNormals* normals,
                           bool perspective) {
     DrawVertices out;
     const bool lit = draw.lighting != LightingModel::Unlit;
     if (lit) {
         out.pView.reserve(proj.pView.size());
-        for (const dvec4& p : proj.pView)
-            out.pView.emplace_back(p.w != 0.0 && p.w != 1.0 ? dvec3(p) / p.w : dvec3(p));
+        for (const dvec4& p : proj.pView) out.pView.emplace_back(cartesian(p));
         if (normals && !normals->vertex.empty()) {
             out.nView = normals->vertex;
             extendByClipping(out.nView, proj);
@@ -71,34 +58,6 @@ DrawVertices drawVertices(const Draw& draw, const DrawProjection& proj, const Dr
     return out;
 }
 
-// alpha A + beta B + gamma C with alpha = 1 - beta - gamma, written as
-// A + beta (B - A) + gamma (C - A) so that equal values interpolate to exactly themselves.
-template <typename T>
-T interpolate(const std::vector<T>& values, const ScreenTriangle& tri, float beta, float gamma) {
-    const T& a = values[tri.v[0]];
-    return a + beta * (values[tri.v[1]] - a) + gamma * (values[tri.v[2]] - a);
-}
-
-// The texel nearest to (s w, t h), the coordinates wrapping around (seed 001).
-vec4 sampleTexture(const Texture& texture, const vec2& st) {
-    if (texture.width <= 0 || texture.height <= 0) return vec4(0.0f);
-    const auto wrap = [](float u, int size) {
-        const float f = u - std::floor(u);  // -1.3, -0.3, 0.7, 1.7 all give 0.7
-        const int i = static_cast<int>(std::floor(f * float(size) + 0.5f)) % size;
-        return std::clamp(i, 0, size - 1);
-    };
-    return texture.at(wrap(st.x, texture.width), wrap(st.y, texture.height));
-}
-
-// A normal normalised and, when the convention says so, turned toward the viewer at pView
-// (as the lighting models do); zero stays zero.
-vec3 orientedNormal(const vec3& n, const vec3& pView, bool flip) {
-    const float length = glm::length(n);
-    if (!(length > 0.0f)) return vec3(0.0f);
-    const vec3 unit = n / length;
-    return flip && glm::dot(-pView, unit) < 0.0f ? -unit : unit;
-}
-
 void count(Shading& out, const PhongSample& s) {
     ++out.phongEvaluations;
     out.flipped += s.flipped ? 1 : 0;
@@ -108,6 +67,23 @@ void count(Shading& out, const PhongSample& s) {
 }
 
 }  // namespace
+
+void attributeWeights(const RasterRules& rules, const DrawProjection& proj,
+                      const std::array<std::uint32_t, 3>& v, float& beta, float& gamma) {
+    if (rules.interpolation != RasterRules::Interpolation::PerspectiveCorrect) return;
+    perspectiveWeights(beta, gamma, 1.0 / proj.pClip[v[0]].w, 1.0 / proj.pClip[v[1]].w,
+                       1.0 / proj.pClip[v[2]].w);
+}
+
+vec4 sampleTexture(const Texture& texture, const vec2& st) {
+    if (texture.width <= 0 || texture.height <= 0) return vec4(0.0f);
+    const auto wrap = [](float u, int size) {
+        const float f = u - std::floor(u);  // -1.3, -0.3, 0.7, 1.7 all give 0.7
+        const int i = static_cast<int>(std::floor(f * float(size) + 0.5f)) % size;
+        return std::clamp(i, 0, size - 1);
+    };
+    return texture.at(wrap(st.x, texture.width), wrap(st.y, texture.height));
+}
 
 template <typename Probe>
 Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const Normals& normals,
@@ -168,31 +144,16 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
         return s;
     };
     // The object colour of a draw at the weights (beta, gamma) of a screen triangle.
-    auto objectColour = [&](const Draw& draw, const DrawVertices& dv, const ScreenTriangle& tri,
-                            float beta, float gamma) -> vec3 {
-        switch (draw.colour) {
-            case ColourSource::Material:
-                return draw.material.od;
-            case ColourSource::Vertex:
-                return dv.colour.empty() ? draw.material.od
-                                         : interpolate(dv.colour, tri, beta, gamma);
-            case ColourSource::Texture: {
-                if (!draw.texture || dv.texcoord.empty()) return draw.material.od;
-                const vec4 texel =
-                    sampleTexture(*draw.texture, interpolate(dv.texcoord, tri, beta, gamma));
-                if (!draw.decals || dv.colour.empty()) return vec3(texel);
-                // Decals: the texture over the object colour, by the texel's alpha.
-                return glm::mix(interpolate(dv.colour, tri, beta, gamma), vec3(texel), texel.a);
-            }
-        }
-        return draw.material.od;
+    auto colourAt = [&](const Draw& draw, const DrawVertices& dv, const ScreenTriangle& tri,
+                        float beta, float gamma) {
+        return objectColour(draw, dv.colour, dv.texcoord, tri.v, beta, gamma);
     };
     // The normal to light a point with: the triangle's (flat normals) or interpolated.
     auto normalAt = [&](const Draw& draw, const DrawVertices& dv, const ScreenTriangle& tri,
                         float beta, float gamma) -> vec3 {
         if (normals.skipped) return vec3(0.0f);
         if (draw.flatNormals) return normals.draws[tri.draw].triangle[tri.source];
-        return interpolate(dv.nView, tri, beta, gamma);
+        return interpolate(dv.nView, tri.v, beta, gamma);
     };
 
     // Seed 004: one evaluation at the barycentre of the (unclipped) triangle, with the
@@ -204,9 +165,9 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
         const ScreenTriangle whole{tri.draw, tri.source, corners};
         const float third = 1.0f / 3.0f;
         const vec3 barycentre =
-            dv.pView.empty() ? vec3(0.0f) : interpolate(dv.pView, whole, third, third);
+            dv.pView.empty() ? vec3(0.0f) : interpolate(dv.pView, whole.v, third, third);
         const vec3 n = normals.skipped ? vec3(0.0f) : normals.draws[tri.draw].triangle[tri.source];
-        return light(draw, objectColour(draw, dv, whole, third, third), barycentre, n);
+        return light(draw, colourAt(draw, dv, whole, third, third), barycentre, n);
     };
 
     // Flat and Gouraud colours are evaluated first, for the visible triangles and their
@@ -279,7 +240,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                 const auto v = static_cast<std::uint32_t>(i);
                 const DrawVertices& dv = vertices[d];
                 const ScreenTriangle at{static_cast<std::uint32_t>(d), 0, {v, v, v}};
-                const PhongSample sample = light(draw, objectColour(draw, dv, at, 0.0f, 0.0f),
+                const PhongSample sample = light(draw, colourAt(draw, dv, at, 0.0f, 0.0f),
                                                  dv.pView.empty() ? vec3(0.0f) : dv.pView[v],
                                                  dv.nView.empty() ? vec3(0.0f) : dv.nView[v]);
                 count(counts, sample);
@@ -457,26 +418,17 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                     vec3 colour(0.0f);
                     vec3 usedNormal(0.0f);
                     [[maybe_unused]] ShadeEvent event;
-                    if (perspective) {
-                        // Barycentrics for attributes: each weight over its vertex's w,
-                        // renormalised.
-                        const double w0 = double(1.0f - beta - gamma) * dv.invW[tri.v[0]];
-                        const double w1 = double(beta) * dv.invW[tri.v[1]];
-                        const double w2 = double(gamma) * dv.invW[tri.v[2]];
-                        const double sum = w0 + w1 + w2;
-                        if (sum != 0.0 && std::isfinite(sum)) {
-                            beta = static_cast<float>(w1 / sum);
-                            gamma = static_cast<float>(w2 / sum);
-                        }
-                    }
+                    if (perspective)
+                        perspectiveWeights(beta, gamma, dv.invW[tri.v[0]], dv.invW[tri.v[1]],
+                                           dv.invW[tri.v[2]]);
                     switch (draw.shading) {
                         case ShadingModel::Phong: {
                             const vec3 p = dv.pView.empty()
                                                ? vec3(0.0f)
-                                               : interpolate(dv.pView, tri, beta, gamma);
+                                               : interpolate(dv.pView, tri.v, beta, gamma);
                             const vec3 n = normalAt(draw, dv, tri, beta, gamma);
                             const PhongSample s =
-                                light(draw, objectColour(draw, dv, tri, beta, gamma), p, n);
+                                light(draw, colourAt(draw, dv, tri, beta, gamma), p, n);
                             if (draw.lighting != LightingModel::Unlit) count(counts, s);
                             colour = s.colour();
                             usedNormal = s.n;
@@ -499,7 +451,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                                 // The normal Phong would use here: interpolated,
                                 // normalised, turned toward the viewer, so that the
                                 // normals image means the same in every shading model.
-                                const vec3 p = interpolate(dv.pView, tri, beta, gamma);
+                                const vec3 p = interpolate(dv.pView, tri.v, beta, gamma);
                                 usedNormal =
                                     orientedNormal(normalAt(draw, dv, tri, beta, gamma), p, flip);
                             }

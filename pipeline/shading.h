@@ -10,7 +10,10 @@
 // scale (0..255 for course files); clamping happens when the image becomes bytes.
 #pragma once
 
+#include <array>
+#include <cmath>
 #include <cstdint>
+#include <vector>
 
 #include "depth_test.h"
 #include "image.h"
@@ -42,6 +45,110 @@ struct Shading {
     std::vector<ColumnRange> touched;
     vec3 background = vec3(0.0f);  // of the pixels outside touched
 };
+
+// The pieces of per-pixel shading that the views explain: the very code the stage runs.
+
+// alpha A + beta B + gamma C with alpha = 1 - beta - gamma, written as
+// A + beta (B - A) + gamma (C - A) so that equal values interpolate to exactly themselves.
+// values: anything indexed by vertex.
+template <typename Values>
+auto interpolate(const Values& values, const std::array<std::uint32_t, 3>& v, float beta,
+                 float gamma) {
+    const auto a = values[v[0]];
+    return a + beta * (values[v[1]] - a) + gamma * (values[v[2]] - a);
+}
+
+// Values given per vertex of a draw's mesh, extended to the vertices made by clipping: each
+// mixes those at the ends of the edge it was made on (which may be made vertices too, made
+// earlier).
+template <typename T>
+void extendByClipping(std::vector<T>& values, const DrawProjection& proj) {
+    values.resize(proj.pView.size());
+    for (std::size_t i = 0; i < proj.generated.size(); ++i) {
+        const ClipVertex& g = proj.generated[i];
+        values[proj.originalVertexCount + i] =
+            glm::mix(values[g.a], values[g.b], static_cast<float>(g.t));
+    }
+}
+
+// The same value at one projected vertex v, without extending the whole list (zero where the
+// mesh has none).
+template <typename T>
+T projectedValue(const std::vector<T>& values, const DrawProjection& proj, std::uint32_t v) {
+    if (v < proj.originalVertexCount) return v < values.size() ? values[v] : T(0.0f);
+    const ClipVertex& g = proj.generated[v - proj.originalVertexCount];
+    return glm::mix(projectedValue(values, proj, g.a), projectedValue(values, proj, g.b),
+                    static_cast<float>(g.t));
+}
+
+// A mesh's per-vertex values seen at a draw's projected vertices (projectedValue), for
+// interpolate and objectColour.
+template <typename T>
+struct ProjectedValues {
+    const std::vector<T>& values;
+    const DrawProjection& proj;
+    bool empty() const { return values.empty(); }
+    T operator[](std::uint32_t v) const { return projectedValue(values, proj, v); }
+};
+
+// Under perspective-correct rules, the weights attributes are interpolated with: each screen
+// barycentric over its vertex's clip w (invW = 1 / w) and renormalised; unchanged when the
+// sum is 0 or not finite.
+inline void perspectiveWeights(float& beta, float& gamma, double invW0, double invW1,
+                               double invW2) {
+    const double w0 = double(1.0f - beta - gamma) * invW0;
+    const double w1 = double(beta) * invW1;
+    const double w2 = double(gamma) * invW2;
+    const double sum = w0 + w1 + w2;
+    if (sum != 0.0 && std::isfinite(sum)) {
+        beta = static_cast<float>(w1 / sum);
+        gamma = static_cast<float>(w2 / sum);
+    }
+}
+// The weights for the vertices v of a draw under the rules: the screen barycentrics, or
+// perspectiveWeights under perspective-correct rules.
+void attributeWeights(const RasterRules& rules, const DrawProjection& proj,
+                      const std::array<std::uint32_t, 3>& v, float& beta, float& gamma);
+
+// The texel nearest to (s w, t h), the coordinates wrapping around (seed 001).
+vec4 sampleTexture(const Texture& texture, const vec2& st);
+
+// The object colour (the course's Od) of a draw at the weights (beta, gamma) of its projected
+// vertices v: the material's, the vertex colours interpolated, or the texel there (decals:
+// over the vertex colours, by the texel's alpha). colours and texcoords are indexed by
+// projected vertex, empty when the draw's colour source does not read them or the mesh has
+// none.
+template <typename Colours, typename Texcoords>
+vec3 objectColour(const Draw& draw, const Colours& colours, const Texcoords& texcoords,
+                  const std::array<std::uint32_t, 3>& v, float beta, float gamma) {
+    switch (draw.colour) {
+        case ColourSource::Material:
+            return draw.material.od;
+        case ColourSource::Vertex:
+            return colours.empty() ? draw.material.od : interpolate(colours, v, beta, gamma);
+        case ColourSource::Texture: {
+            if (!draw.texture || texcoords.empty()) return draw.material.od;
+            const vec4 texel = sampleTexture(*draw.texture, interpolate(texcoords, v, beta, gamma));
+            if (!draw.decals || colours.empty()) return vec3(texel);
+            // Decals: the texture over the object colour, by the texel's alpha.
+            return glm::mix(interpolate(colours, v, beta, gamma), vec3(texel), texel.a);
+        }
+    }
+    return draw.material.od;
+}
+
+// A normal normalised and, when the convention says so, turned toward the viewer at pView
+// (as the lighting models do); zero stays zero. flipped, when given, tells whether it was
+// turned.
+inline vec3 orientedNormal(const vec3& n, const vec3& pView, bool flip, bool* flipped = nullptr) {
+    if (flipped) *flipped = false;
+    const float length = glm::length(n);
+    if (!(length > 0.0f)) return vec3(0.0f);
+    const vec3 unit = n / length;
+    if (!flip || !(glm::dot(-pView, unit) < 0.0f)) return unit;
+    if (flipped) *flipped = true;
+    return -unit;
+}
 
 class ShadingStage {
 public:

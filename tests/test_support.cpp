@@ -5,6 +5,20 @@
 
 namespace testing {
 
+std::shared_ptr<const rl::FrameTrace> renderTrace(std::shared_ptr<const rl::Scene> scene,
+                                                  const rl::RenderOptions& options) {
+    auto frame = rl::renderFrame(std::move(scene), options);
+    if (!frame) qFatal("%s", frame.error().toString().c_str());
+    return std::make_shared<const rl::FrameTrace>(std::move(frame).value());
+}
+
+std::shared_ptr<const rl::FrameReplay> replayOf(
+    const std::shared_ptr<const rl::FrameTrace>& trace) {
+    auto replay = rl::FrameReplay::build(trace);
+    if (!replay) qFatal("%s", replay.error().toString().c_str());
+    return replay.value();
+}
+
 QString samplesDir() {
     const QString fromEnv = qEnvironmentVariable("RASTERLAB_SAMPLES");
     const QString dir = fromEnv.isEmpty() ? QStringLiteral(RASTERLAB_SAMPLES_DIR) : fromEnv;
@@ -53,6 +67,22 @@ rl::Scene makeScene(const rl::CourseCamera& camera, std::shared_ptr<const rl::Me
     draw.material.od = rl::vec3(1.0f);
     scene.draws.push_back(draw);
     scene.ambientIntensity = rl::vec3(10.0f);
+    return scene;
+}
+
+rl::Scene handScene(rl::ShadingModel shading, const std::vector<rl::dvec3>& extraPositions,
+                    const std::vector<std::array<std::uint32_t, 3>>& extraTriangles) {
+    std::vector<rl::dvec3> positions{{1, 1, 1},         {0, 1, 1},          {1, 0, 1},
+                                     {2, 2, 2},         {0, 2, 2},          {2, 0, 2},
+                                     {0.25, 0.25, 0.5}, {-0.25, 0.25, 0.5}, {0.25, -0.25, 0.5},
+                                     {-0.25, 1, 1},     {-0.5, 0.25, 1},    {-0.75, 0.25, 1}};
+    std::vector<std::array<std::uint32_t, 3>> triangles{
+        {0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}};
+    positions.insert(positions.end(), extraPositions.begin(), extraPositions.end());
+    triangles.insert(triangles.end(), extraTriangles.begin(), extraTriangles.end());
+    rl::Scene scene = makeScene(axisCamera(), makeMesh(std::move(positions), std::move(triangles)),
+                                8, 8, shading);
+    scene.lights.push_back({rl::dvec4(0.0, 0.0, 10.0, 1.0), rl::vec3(100.0f), {}});
     return scene;
 }
 

@@ -12,9 +12,17 @@
 #include "diagnostics.h"
 #include "math.h"
 #include "projection.h"
+#include "renderer.h"
+#include "replay.h"
 #include "scene.h"
 
 namespace testing {
+
+// A scene's frame, rendered with these options, and the replay of a frame (a failure of
+// either is fatal).
+std::shared_ptr<const rl::FrameTrace> renderTrace(std::shared_ptr<const rl::Scene> scene,
+                                                  const rl::RenderOptions& options = {});
+std::shared_ptr<const rl::FrameReplay> replayOf(const std::shared_ptr<const rl::FrameTrace>& trace);
 
 // The course sample folder (../shared/samples or $RASTERLAB_SAMPLES), or an empty string.
 QString samplesDir();
@@ -31,6 +39,22 @@ std::shared_ptr<const rl::Mesh> makeMesh(std::vector<rl::dvec3> positions,
 // A course scene with one draw: camera, one point light, material, mesh, image size.
 rl::Scene makeScene(const rl::CourseCamera& camera, std::shared_ptr<const rl::Mesh> mesh, int width,
                     int height, rl::ShadingModel shading = rl::ShadingModel::Phong);
+
+// The hand-made scene whose numbers the stepping, scanline and normals suites work out by
+// hand: four triangles on an 8x8 screen seen by the axis camera (view = (-x, y, z); screen
+// x = (1 - x/z) 4, y = (1 - y/z) 4), drawn in this order:
+//   0: z = 1,   screen (0,0) (4,0) (0,4): rows 0..4, spans of 5, 4, 3, 2, 1 pixels;
+//   1: z = 2,   the same screen triangle, farther: its 15 fragments all rejected;
+//   2: z = 0.5, screen (2,2) (6,2) (2,6): 15 pixels, nearer than everything; it writes
+//      (2,2) a second time;
+//   3: z = 1,   screen (5,0) (6,3) (7,3): rows 0..3, row 1 empty (its edges cross it at
+//      x = 5.33 and 5.67), then 1 and 2 pixels; (6,2) is tri 2's, nearer: rejected.
+// A point light at (0, 0, 10) with Il = 100, behind every triangle as seen from the camera
+// (N.L < 0); the material and Ia of makeScene. extraPositions (numbered from 12) and
+// extraTriangles are drawn after the four.
+rl::Scene handScene(rl::ShadingModel shading = rl::ShadingModel::Phong,
+                    const std::vector<rl::dvec3>& extraPositions = {},
+                    const std::vector<std::array<std::uint32_t, 3>>& extraTriangles = {});
 
 // A projection holding screen triangles given directly in pixels (one draw), with a depth
 // per vertex (1 when not given), for the scan conversion and depth test suites.

@@ -21,8 +21,8 @@
 #endif
 
 #include "benchmark_scenes.h"
-#include "command_file.h"
 #include "course_scene.h"
+#include "course_scenes.h"
 #include "default_scene_resource.h"
 #include "frame_memory.h"
 #include "mesh_topology.h"
@@ -159,17 +159,7 @@ private slots:
         matte->draws[0].material.shininess = 0.5f;
         QTest::newRow("directional, n = 0.5") << std::make_shared<const Scene>(std::move(*matte));
         // HW2 command files: perspective-correct attributes, textures, Lambert, depth range.
-        const QString dir = testing::samplesDir();
-        if (!dir.isEmpty()) {
-            for (const char* name : {"hw2texture", "hw2clipplane", "hw2sun1g", "hw2depth"}) {
-                Diagnostics diagnostics;
-                auto hw2 = rasterlab::loadCommandFile(
-                    dir + QStringLiteral("/hw2/") + QLatin1String(name) + QStringLiteral(".txt"),
-                    diagnostics);
-                QVERIFY2(hw2, name);
-                QTest::newRow(name) << std::make_shared<const Scene>(hw2->images.at(0).scene);
-            }
-        }
+        testing::addHw2Rows({"hw2texture", "hw2clipplane", "hw2sun1g", "hw2depth"});
     }
 
     void fastPathsEqualThePlainRender() {

@@ -10,6 +10,8 @@
 #include <QSlider>
 #include <QToolButton>
 
+#include <algorithm>
+
 #include "benchmark_scenes.h"
 #include "camera_basis_view.h"
 #include "command_file.h"
@@ -32,9 +34,7 @@ namespace {
 std::shared_ptr<const rl::FrameTrace> render(rl::Scene scene) {
     rl::RenderOptions options;
     options.threads = 1;
-    auto frame = rl::renderFrame(std::make_shared<const rl::Scene>(std::move(scene)), options);
-    if (!frame) qFatal("%s", frame.error().toString().c_str());
-    return std::make_shared<const rl::FrameTrace>(std::move(frame).value());
+    return testing::renderTrace(std::make_shared<const rl::Scene>(std::move(scene)), options);
 }
 
 // C = (1, 2, 3), N = (0, 0, 2), V = (0, 3, 4): |N| = 2, N = (0, 0, 1); V.N = 4,
@@ -64,6 +64,26 @@ rl::Scene cameraScene(const rl::CourseCamera& camera) {
 //      vertex 13 = (0.125, 0.125, 0.5) at (37, 37). Its polygon (12, H, I, 13) becomes the
 //      fan (12, 7, 8), (12, 8, 13): screen triangles 1 and 2.
 //   T3 (9, 10, 11), z = -1: wholly behind the near plane.
+// How many mesh triangles ended with a fate, counted from DrawProjection::fate.
+std::size_t fateCount(const rl::Projection& projection, rl::TriangleFate fate) {
+    std::size_t n = 0;
+    for (const rl::DrawProjection& d : projection.draws)
+        n += static_cast<std::size_t>(std::count(d.fate.begin(), d.fate.end(), fate));
+    return n;
+}
+
+// The view's counts are the fates of the mesh triangles.
+void compareWithFates(const rasterlab::FateCounts& c, const rl::Projection& p) {
+    QCOMPARE(c.inside, fateCount(p, rl::TriangleFate::Inside));
+    QCOMPARE(c.clipped, fateCount(p, rl::TriangleFate::Clipped));
+    QCOMPARE(c.behind, fateCount(p, rl::TriangleFate::Behind));
+    QCOMPARE(c.clippedAway, fateCount(p, rl::TriangleFate::ClippedAway));
+    QCOMPARE(c.culled, fateCount(p, rl::TriangleFate::Culled));
+    QCOMPARE(c.backFaces, fateCount(p, rl::TriangleFate::BackFace));
+    QCOMPARE(c.beyondGuardBand, fateCount(p, rl::TriangleFate::BeyondGuardBand));
+    QCOMPARE(c.nonFinite, fateCount(p, rl::TriangleFate::NonFinite));
+}
+
 std::shared_ptr<const rl::FrameTrace> clippingFrame() {
     auto mesh = testing::makeMesh({{-0.5, 0.5, 2},
                                    {-1, 0.5, 2},
@@ -361,7 +381,7 @@ void TestGeometryViews::fatesCountedByHand() {
     QCOMPARE(p.clipped, std::size_t(1));
     QCOMPARE(p.behind, std::size_t(1));
     QCOMPARE(p.triangles.size(), std::size_t(3));
-    // The view counts the same from the fates.
+    // The view shows those counts, and they are the fates of the triangles.
     const rasterlab::FateCounts& c = view.counts();
     QCOMPARE(c.inside, p.inside);
     QCOMPARE(c.culled, p.culled);
@@ -369,6 +389,7 @@ void TestGeometryViews::fatesCountedByHand() {
     QCOMPARE(c.behind, p.behind);
     QCOMPARE(c.clippedAway, p.clippedAway);
     QCOMPARE(c.backFaces, p.backFaces);
+    compareWithFates(c, p);
     QCOMPARE(c.fanTriangles, std::size_t(2));
     QCOMPARE(view.legendText(),
              QStringLiteral("inside 1, clipped 1 (2 on screen), culled 1, back faces 0; behind 1, "
@@ -500,6 +521,23 @@ void TestGeometryViews::highlightsFollowTheInspection() {
     view.show();
     QCOMPARE(view.counts().culled, std::size_t(0));
     QCOMPARE(view.counts().inside, std::size_t(1));
+    // The selection and the cursor moved while hidden, on the same frame: shown as they are
+    // now, not as they were when it was hidden.
+    inspection.setFrame(frame, QImage());
+    inspection.setReplay(rl::FrameReplay::build(frame).value());
+    inspection.toStart();
+    QVERIFY(inspection.stepForward());
+    inspection.selectTriangle(0u);
+    QCOMPARE(view.canvas()->selectedTriangle(), std::optional<std::uint32_t>(0u));
+    QCOMPARE(view.canvas()->currentTriangle(), std::optional<std::uint32_t>(0u));
+    view.hide();
+    inspection.selectTriangle(1u);
+    QVERIFY(inspection.stepForward());
+    view.show();
+    QCOMPARE(view.canvas()->selectedTriangle(), std::optional<std::uint32_t>(1u));
+    QCOMPARE(view.canvas()->currentTriangle(), std::optional<std::uint32_t>(1u));
+    QVERIFY2(view.explanationHtml().contains(QStringLiteral("<b>Triangle 2</b>")),
+             qPrintable(view.explanationHtml()));
 }
 
 void TestGeometryViews::largeScenes() {
@@ -528,6 +566,7 @@ void TestGeometryViews::largeScenes() {
         QCOMPARE(c.culled, p.culled);
         QCOMPARE(c.behind, p.behind);
         QCOMPARE(c.backFaces, p.backFaces);
+        compareWithFates(c, p);
         QCOMPARE(projection.canvas()->triangleCount(ProjectionCanvas::Drawn), p.inside);
         QCOMPARE(projection.canvas()->triangleCount(ProjectionCanvas::Clipped),
                  p.triangles.size() - p.inside);

@@ -6,9 +6,7 @@
 #include <random>
 
 #include "benchmark_scenes.h"
-#include "command_file.h"
-#include "course_scene.h"
-#include "default_scene_resource.h"
+#include "course_scenes.h"
 #include "output_image.h"
 #include "renderer.h"
 #include "replay.h"
@@ -18,31 +16,9 @@ using namespace rl;
 
 namespace {
 
-// Four triangles on an 8x8 screen, seen by the axis camera (screen x = (1 - x/z) 4,
-// y = (1 - y/z) 4), drawn in this order:
-//   0: z = 1,   screen (0,0) (4,0) (0,4): rows 0..4, spans of 5, 4, 3, 2, 1 pixels;
-//   1: z = 2,   the same screen triangle, farther: its 15 fragments all rejected;
-//   2: z = 0.5, screen (2,2) (6,2) (2,6): 15 pixels, nearer than everything; it writes
-//      (2,2) a second time;
-//   3: z = 1,   screen (5,0) (6,3) (7,3): rows 0..3, row 1 empty (its edges cross it at
-//      x = 5.33 and 5.67), then 1 and 2 pixels; (6,2) is tri 2's, nearer: rejected.
-// A point light at (0, 0, 10), behind every triangle as seen from the camera: N.L < 0.
+// testing::handScene, with a specular term: ks = 0.5, n = 2.
 std::shared_ptr<const Scene> handScene(ShadingModel model = ShadingModel::Phong) {
-    auto mesh = testing::makeMesh({{1, 1, 1},
-                                   {0, 1, 1},
-                                   {1, 0, 1},
-                                   {2, 2, 2},
-                                   {0, 2, 2},
-                                   {2, 0, 2},
-                                   {0.25, 0.25, 0.5},
-                                   {-0.25, 0.25, 0.5},
-                                   {0.25, -0.25, 0.5},
-                                   {-0.25, 1, 1},
-                                   {-0.5, 0.25, 1},
-                                   {-0.75, 0.25, 1}},
-                                  {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}});
-    Scene scene = testing::makeScene(testing::axisCamera(), mesh, 8, 8, model);
-    scene.lights.push_back({dvec4(0.0, 0.0, 10.0, 1.0), vec3(100.0f), {}});
+    Scene scene = testing::handScene(model);
     scene.draws[0].material.ks = 0.5f;
     scene.draws[0].material.shininess = 2.0f;
     return std::make_shared<const Scene>(std::move(scene));
@@ -51,29 +27,10 @@ std::shared_ptr<const Scene> handScene(ShadingModel model = ShadingModel::Phong)
 std::shared_ptr<const FrameTrace> render(std::shared_ptr<const Scene> scene, int threads = 2) {
     RenderOptions options;
     options.threads = threads;
-    auto frame = renderFrame(std::move(scene), options);
-    if (!frame) qFatal("%s", frame.error().toString().c_str());
-    return std::make_shared<const FrameTrace>(std::move(frame).value());
+    return testing::renderTrace(std::move(scene), options);
 }
 
-std::shared_ptr<const FrameReplay> replayOf(const std::shared_ptr<const FrameTrace>& trace) {
-    auto replay = FrameReplay::build(trace);
-    if (!replay) qFatal("%s", replay.error().toString().c_str());
-    return replay.value();
-}
-
-std::shared_ptr<const Scene> defaultScene(ShadingModel model, RuleSet rules, int width,
-                                          int height) {
-    Diagnostics diagnostics;
-    auto parts = rasterlab::loadDefaultCourseScene(diagnostics);
-    if (!parts) qFatal("%s", parts.error().toString().c_str());
-    CourseSceneSettings settings;
-    settings.shading = model;
-    settings.rules = rulesOf(rules);
-    settings.width = width;
-    settings.height = height;
-    return std::make_shared<const Scene>(makeCourseScene(parts.value(), settings));
-}
+using testing::replayOf;
 
 QString at(ReplayCursor c) {
     return QStringLiteral("(%1, %2)").arg(c.rows).arg(c.fragments);
@@ -266,22 +223,12 @@ private slots:
                 QTest::newRow(qPrintable(QStringLiteral("trefoil %1 %2")
                                              .arg(QLatin1String(shadingModelName(model)),
                                                   QLatin1String(ruleSetName(rules)))))
-                    << defaultScene(model, rules, 200, 150);
+                    << testing::defaultCourseScene(model, rules, 200, 150);
         auto sphere = makeBenchmarkScene("sphere-1k", 160, 120, ShadingModel::Phong);
         QVERIFY(sphere);
         QTest::newRow("sphere, back faces culled")
             << std::make_shared<const Scene>(std::move(*sphere));
-        const QString dir = testing::samplesDir();
-        if (!dir.isEmpty()) {
-            for (const char* name : {"hw2depth", "hw2texture", "hw2sun1g", "hw2clipplane"}) {
-                Diagnostics diagnostics;
-                auto hw2 = rasterlab::loadCommandFile(
-                    dir + QStringLiteral("/hw2/") + QLatin1String(name) + QStringLiteral(".txt"),
-                    diagnostics);
-                QVERIFY2(hw2, name);
-                QTest::newRow(name) << std::make_shared<const Scene>(hw2->images.at(0).scene);
-            }
-        }
+        testing::addHw2Rows({"hw2depth", "hw2texture", "hw2sun1g", "hw2clipplane"});
     }
 
     void theEndIsTheFrame() {
@@ -321,8 +268,8 @@ private slots:
     }
 
     void anyPathGivesTheSameBuffers() {
-        const auto replay =
-            replayOf(render(defaultScene(ShadingModel::Phong, RuleSet::Course, 160, 120)));
+        const auto replay = replayOf(
+            render(testing::defaultCourseScene(ShadingModel::Phong, RuleSet::Course, 160, 120)));
         const auto count = static_cast<std::uint32_t>(replay->fragments().size());
         QVERIFY(count > 5000);
         std::mt19937 random(7);
@@ -341,8 +288,8 @@ private slots:
 
     void depthOnlyComesNearer() {
         // Along the replay, a pixel's depth never grows (z < stored writes).
-        const auto replay =
-            replayOf(render(defaultScene(ShadingModel::Gouraud, RuleSet::Course, 120, 90)));
+        const auto replay = replayOf(
+            render(testing::defaultCourseScene(ShadingModel::Gouraud, RuleSet::Course, 120, 90)));
         ReplayState state(replay);
         Image<float> before = state.depth();
         while (state.cursor() != replay->end()) {
@@ -351,6 +298,23 @@ private slots:
             for (std::size_t i = 0; i < now.size(); ++i) QVERIFY(now[i] <= before.pixels()[i]);
             before = state.depth();
         }
+    }
+
+    void writtenCountsAtEveryThousandAndTwentyFourth() {
+        // A 32x32 screen covered by two triangles under the GPU's rules (pixel centres, top-left
+        // fill): each of the 1024 pixels is one fragment, written (the buffer starts at +inf).
+        // The counts are kept every 1024 fragments: the end falls on one of those marks.
+        // Axis camera: screen x = (1 - x) 16, y = (1 - y) 16 at z = 1.
+        auto mesh = testing::makeMesh({{1, 1, 1}, {-1, 1, 1}, {-1, -1, 1}, {1, -1, 1}},
+                                      {{0, 1, 2}, {0, 2, 3}});
+        Scene scene = testing::makeScene(testing::axisCamera(), mesh, 32, 32);
+        scene.rules = rulesOf(RuleSet::Gpu);
+        const auto replay = replayOf(render(std::make_shared<const Scene>(std::move(scene))));
+        QCOMPARE(replay->fragments().size(), std::size_t(1024));
+        QCOMPARE(replay->writtenCount(), std::size_t(1024));
+        QCOMPARE(replay->writtenBefore(1023), std::size_t(1023));
+        QCOMPARE(replay->writtenBefore(1024), std::size_t(1024));
+        QCOMPARE(replay->writtenBefore(5000), std::size_t(1024));  // past the end: all of them
     }
 
     void tooManyFragmentsIsAClearError() {

@@ -90,6 +90,18 @@ std::set<std::pair<int, int>> insideByRule(const std::array<dvec2, 3>& p, const 
     return inside;
 }
 
+// The rules of the current row of subPixelRulesMatchBruteForce_data.
+RasterRules rulesOfRow() {
+    QFETCH(int, bits);
+    QFETCH(double, offset);
+    QFETCH(bool, topLeft);
+    RasterRules rules;
+    rules.subpixelBits = bits;
+    rules.sampleOffset = offset;
+    rules.fill = topLeft ? RasterRules::FillRule::TopLeft : RasterRules::FillRule::Inclusive;
+    return rules;
+}
+
 Scene screenWith(int width, int height, const RasterRules& rules) {
     Scene scene = screen(width, height);
     scene.rules = rules;
@@ -236,14 +248,8 @@ private slots:
     }
 
     void subPixelRulesMatchBruteForce() {
-        QFETCH(int, bits);
-        QFETCH(double, offset);
-        QFETCH(bool, topLeft);
-        RasterRules rules;
-        rules.subpixelBits = bits;
-        rules.sampleOffset = offset;
-        rules.fill = topLeft ? RasterRules::FillRule::TopLeft : RasterRules::FillRule::Inclusive;
-        const double g = std::ldexp(1.0, bits);
+        const RasterRules rules = rulesOfRow();
+        const double g = std::ldexp(1.0, rules.subpixelBits);
         std::mt19937 rng(23);
         // Vertices on the grid, often on sample rows and columns (edges through samples).
         std::uniform_int_distribution<int> coord(-4 * int(g), 36 * int(g));
@@ -252,7 +258,7 @@ private slots:
             std::array<dvec2, 3> p{};
             for (auto& v : p) {
                 v = {coord(rng) / g, coord(rng) / g};
-                if (snapToPixel(rng) == 0) v = glm::floor(v) + offset;
+                if (snapToPixel(rng) == 0) v = glm::floor(v) + rules.sampleOffset;
             }
             const ScanConversion scan = ScanConversionStage().run(
                 screenWith(32, 32, rules), screenTriangles({p[0], p[1], p[2]}, {{0, 1, 2}}));
@@ -365,6 +371,44 @@ private slots:
         qInfo("inclusive rule: %lld pixels covered more than once in 2,000 fans (shared edges)",
               doubleHits);
         QVERIFY(doubleHits > 0);
+    }
+
+    void scanRowIsTheWalksRow_data() { subPixelRulesMatchBruteForce_data(); }
+
+    void scanRowIsTheWalksRow() {
+        // Any row worked out on its own (scanRow, edgeCrossing) is, bit for bit, the row the
+        // walk reaches by stepping, empty rows and rows cut by the screen's sides included.
+        const RasterRules rules = rulesOfRow();
+        const double g = std::ldexp(1.0, rules.subpixelBits);
+        std::mt19937 rng(31);
+        std::uniform_int_distribution<int> coord(-12 * int(g), 44 * int(g));
+        std::size_t rows = 0, empty = 0;
+        for (int i = 0; i < 1000; ++i) {
+            std::array<dvec2, 3> p{};
+            for (auto& v : p) v = {coord(rng) / g, coord(rng) / g};
+            ReplayProbe walk;
+            ScanConversionStage().run(screenWith(32, 32, rules),
+                                      screenTriangles({p[0], p[1], p[2]}, {{0, 1, 2}}), walk);
+            const TriangleSetup s = setupTriangle(p, rules);
+            const std::int32_t upperLast = lastUpperRow(s, rules);
+            for (const ReplayRowEvent& e : walk.rows) {
+                const ScanRow row = scanRow(s, rules, e.y, 32);
+                QCOMPARE(row.xLeft, e.xLeft);
+                QCOMPARE(row.xRight, e.xRight);
+                QCOMPARE(row.xBegin, e.xBegin);
+                QCOMPARE(row.xEnd, e.xEnd);
+                QCOMPARE(row.upperPart, e.y <= upperLast);
+                const ScanEdge& shortEdge = row.upperPart ? s.upperEdge : s.lowerEdge;
+                QCOMPARE(edgeCrossing(s.longEdge, rules, e.y),
+                         s.longEdgeOnLeft ? e.xLeft : e.xRight);
+                QCOMPARE(edgeCrossing(shortEdge, rules, e.y),
+                         s.longEdgeOnLeft ? e.xRight : e.xLeft);
+                ++rows;
+                empty += row.empty() ? 1 : 0;
+            }
+        }
+        QVERIFY(rows > 1000);
+        QVERIFY(empty > 0);
     }
 
     void recordingProbeLogsTriangleAndSpans() {

@@ -8,13 +8,13 @@
 // checked against every row of the default scene under the course's and the GPU's rules.
 #include <QtTest>
 
+#include <QPainter>
 #include <QTableWidget>
 
 #include <cmath>
 
 #include "command_file.h"
-#include "course_scene.h"
-#include "default_scene_resource.h"
+#include "course_scenes.h"
 #include "image_io.h"
 #include "inspection.h"
 #include "output_image.h"
@@ -33,8 +33,7 @@ using rasterlab::ScanlineView;
 
 namespace {
 
-// Five triangles on an 8x8 screen, seen by the axis camera (view = (-x, y, z); screen
-// x = (1 - x/z) 4, y = (1 - y/z) 4), drawn in this order (the first four as tst_replay's):
+// testing::handScene's four triangles and a fifth, drawn in this order:
 //   0: z = 1,   screen (0,0) (4,0) (0,4);
 //   1: z = 2,   the same screen triangle, farther: rejected everywhere;
 //   2: z = 0.5, screen (2,2) (6,2) (2,6): writes (2, 2) over triangle 0;
@@ -58,31 +57,16 @@ struct HandOptions {
 };
 
 std::shared_ptr<const Scene> handScene(const HandOptions& o = {}) {
-    std::vector<std::array<std::uint32_t, 3>> triangles{
-        {0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {12, 13, 14}};
-    if (o.duplicate) triangles.push_back({0, 1, 2});
-    auto made = testing::makeMesh({{1, 1, 1},
-                                   {0, 1, 1},
-                                   {1, 0, 1},
-                                   {2, 2, 2},
-                                   {0, 2, 2},
-                                   {2, 0, 2},
-                                   {0.25, 0.25, 0.5},
-                                   {-0.25, 0.25, 0.5},
-                                   {0.25, -0.25, 0.5},
-                                   {-0.25, 1, 1},
-                                   {-0.5, 0.25, 1},
-                                   {-0.75, 0.25, 1},
-                                   {-0.25, 0, 1},
-                                   {-1.5, 0, 2},
-                                   {-1, -3, 4}},
-                                  triangles);
-    auto mesh = std::make_shared<Mesh>(*made);
+    std::vector<std::array<std::uint32_t, 3>> extra{{12, 13, 14}};
+    if (o.duplicate) extra.push_back({0, 1, 2});
+    Scene scene =
+        testing::handScene(o.model, {{-0.25, 0, 1}, {-1.5, 0, 2}, {-1, -3, 4}}, std::move(extra));
     if (o.fileNormals) {
+        auto mesh = std::make_shared<Mesh>(*scene.draws[0].mesh);
         mesh->normals.assign(mesh->positions.size(), vec3(0.0f, 0.0f, -1.0f));
         mesh->normals[1] = vec3(0.0f, 0.0f, 1.0f);
+        scene.draws[0].mesh = std::move(mesh);
     }
-    Scene scene = testing::makeScene(testing::axisCamera(), mesh, 8, 8, o.model);
     scene.ambientIntensity = vec3(o.ambient);
     scene.lights = {Light{dvec4(o.light, 1.0), o.intensity, {}}};
     if (o.secondLight != vec3(0.0f))
@@ -97,16 +81,10 @@ std::shared_ptr<const Scene> handScene(const HandOptions& o = {}) {
 }
 
 std::shared_ptr<const FrameTrace> render(std::shared_ptr<const Scene> scene) {
-    auto frame = renderFrame(std::move(scene));
-    if (!frame) qFatal("%s", frame.error().toString().c_str());
-    return std::make_shared<const FrameTrace>(std::move(frame).value());
+    return testing::renderTrace(std::move(scene));
 }
 
-std::shared_ptr<const FrameReplay> replayOf(const std::shared_ptr<const FrameTrace>& trace) {
-    auto replay = FrameReplay::build(trace);
-    if (!replay) qFatal("%s", replay.error().toString().c_str());
-    return replay.value();
-}
+using testing::replayOf;
 
 // The frame shown by an inspection, with its replay (or the replay's failure).
 void show(Inspection& inspection, const std::shared_ptr<const FrameTrace>& frame,
@@ -117,19 +95,6 @@ void show(Inspection& inspection, const std::shared_ptr<const FrameTrace>& frame
         inspection.setReplay(replayOf(frame));
     else
         inspection.setReplayError(QStringLiteral("too many fragments"));
-}
-
-std::shared_ptr<const Scene> defaultScene(RuleSet rules, int width, int height,
-                                          ShadingModel model = ShadingModel::Phong) {
-    Diagnostics diagnostics;
-    auto parts = rasterlab::loadDefaultCourseScene(diagnostics);
-    if (!parts) qFatal("%s", parts.error().toString().c_str());
-    CourseSceneSettings settings;
-    settings.rules = rulesOf(rules);
-    settings.width = width;
-    settings.height = height;
-    settings.shading = model;
-    return std::make_shared<const Scene>(makeCourseScene(parts.value(), settings));
 }
 
 std::array<std::uint8_t, 4> rgb(int r, int g, int b) {
@@ -180,8 +145,35 @@ private slots:
     void gouraudAndFlat();
     void blackExplained();
     void fallbackWithoutReplay();
+    void imageAtTheCursorIsReadOnly();
     void screenshots();
 };
+
+void TestScanlineInspector::imageAtTheCursorIsReadOnly() {
+    Inspection inspection;
+    const auto frame = render(handScene());
+    show(inspection, frame);
+    // (2, 2) at the end: triangle 2's colour. Drawing on the image the Inspection hands out
+    // draws on a copy: the buffer of the replay, which every view reads, stays as it is.
+    const QRgb written = inspection.image().pixel(2, 2);
+    QImage drawn = inspection.image();
+    drawn.setPixel(2, 2, qRgb(1, 2, 3));
+    QCOMPARE(drawn.pixel(2, 2), qRgb(1, 2, 3));
+    QCOMPARE(inspection.image().pixel(2, 2), written);
+    {
+        QImage painted = inspection.image();
+        QPainter painter(&painted);
+        painter.fillRect(painted.rect(), Qt::green);
+    }
+    QCOMPARE(inspection.image().pixel(2, 2), written);
+    // An image held while the cursor moves shows the buffer at the cursor.
+    const QImage held = inspection.image();
+    const std::array<std::uint8_t, 4> background = backgroundBytes(frame->scene->conventions);
+    inspection.toStart();
+    QCOMPARE(held.pixel(2, 2), qRgba(background[0], background[1], background[2], background[3]));
+    inspection.toEnd();
+    QCOMPARE(held.pixel(2, 2), written);
+}
 
 void TestScanlineInspector::edgeTableAndSpanAtTheCursor() {
     Inspection inspection;
@@ -352,8 +344,10 @@ void TestScanlineInspector::selectedTriangleAtTheEnd() {
 void TestScanlineInspector::walkAndDepthMatchTheReplay_data() {
     QTest::addColumn<std::shared_ptr<const Scene>>("scene");
     QTest::newRow("hand") << handScene();
-    QTest::newRow("trefoil, course rules") << defaultScene(RuleSet::Course, 160, 120);
-    QTest::newRow("trefoil, gpu rules") << defaultScene(RuleSet::Gpu, 160, 120);
+    QTest::newRow("trefoil, course rules")
+        << testing::defaultCourseScene(ShadingModel::Phong, RuleSet::Course, 160, 120);
+    QTest::newRow("trefoil, gpu rules")
+        << testing::defaultCourseScene(ShadingModel::Phong, RuleSet::Gpu, 160, 120);
 }
 
 void TestScanlineInspector::walkAndDepthMatchTheReplay() {
@@ -706,9 +700,10 @@ void TestScanlineInspector::screenshots() {
     const QString dir = qEnvironmentVariable("RASTERLAB_SCREENSHOTS");
     std::vector<std::pair<QString, std::shared_ptr<const Scene>>> scenes{
         {QStringLiteral("hand"), handScene()},
-        {QStringLiteral("trefoil"), defaultScene(RuleSet::Course, 800, 600)},
+        {QStringLiteral("trefoil"),
+         testing::defaultCourseScene(ShadingModel::Phong, RuleSet::Course, 800, 600)},
         {QStringLiteral("trefoil-gpu-gouraud"),
-         defaultScene(RuleSet::Gpu, 800, 600, ShadingModel::Gouraud)}};
+         testing::defaultCourseScene(ShadingModel::Gouraud, RuleSet::Gpu, 800, 600)}};
     const QString samples = testing::samplesDir();
     if (!samples.isEmpty()) {
         Diagnostics hw2Diagnostics;

@@ -13,8 +13,7 @@
 
 #include <cmath>
 
-#include "course_scene.h"
-#include "default_scene_resource.h"
+#include "course_scenes.h"
 #include "frame_image_view.h"
 #include "inspection.h"
 #include "mesh_topology.h"
@@ -39,34 +38,15 @@ std::shared_ptr<const FrameTrace> render(std::shared_ptr<const Scene> scene,
     RenderOptions options;
     options.threads = 2;
     options.shading.keepNormals = keepNormals;
-    auto frame = renderFrame(std::move(scene), options);
-    if (!frame) qFatal("%s", frame.error().toString().c_str());
-    return std::make_shared<const FrameTrace>(std::move(frame).value());
+    return testing::renderTrace(std::move(scene), options);
 }
 
-// tst_replay's four triangles on an 8x8 screen, axis camera (screen x = (1 - x/z) 4,
-// y = (1 - y/z) 4): 0 at z = 1, screen (0,0) (4,0) (0,4); 1 the same at z = 2; 2 at z = 0.5,
-// screen (2,2) (6,2) (2,6); 3 at z = 1, screen (5,0) (6,3) (7,3). In view space triangle 0 is
-// (-1,1,1) (0,1,1) (-1,0,1): (P2 - P1) x (P3 - P1) = (1,0,0) x (0,-1,0) = (0,0,-1), toward the
-// camera; 1 and 2 likewise. Triangle 3, (0.25,1,1) (0.5,0.25,1) (0.75,0.25,1):
-// (0.25,-0.75,0) x (0.5,-0.75,0) = (0,0,0.1875), away from the camera: a back face.
+// testing::handScene's four triangles. In view space triangle 0 is (-1,1,1) (0,1,1) (-1,0,1):
+// (P2 - P1) x (P3 - P1) = (1,0,0) x (0,-1,0) = (0,0,-1), toward the camera; 1 and 2 likewise.
+// Triangle 3, (0.25,1,1) (0.5,0.25,1) (0.75,0.25,1): (0.25,-0.75,0) x (0.5,-0.75,0) =
+// (0,0,0.1875), away from the camera: a back face.
 std::shared_ptr<const Scene> handScene(ShadingModel model = ShadingModel::Phong) {
-    auto mesh = testing::makeMesh({{1, 1, 1},
-                                   {0, 1, 1},
-                                   {1, 0, 1},
-                                   {2, 2, 2},
-                                   {0, 2, 2},
-                                   {2, 0, 2},
-                                   {0.25, 0.25, 0.5},
-                                   {-0.25, 0.25, 0.5},
-                                   {0.25, -0.25, 0.5},
-                                   {-0.25, 1, 1},
-                                   {-0.5, 0.25, 1},
-                                   {-0.75, 0.25, 1}},
-                                  {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}});
-    Scene scene = testing::makeScene(testing::axisCamera(), mesh, 8, 8, model);
-    scene.lights.push_back({dvec4(0.0, 0.0, 10.0, 1.0), vec3(100.0f), {}});
-    return std::make_shared<const Scene>(std::move(scene));
+    return std::make_shared<const Scene>(testing::handScene(model));
 }
 
 // The table's scene: the axis camera with d = 2, hx = 2, hy = 1, so pNdc = (x/z, 2 y/z), on
@@ -116,19 +96,6 @@ std::shared_ptr<const Scene> octahedronScene(bool flipOne) {
     Scene scene = testing::makeScene(camera, octahedron(flipOne), 64, 64);
     scene.lights.push_back({dvec4(0.0, 0.0, -10.0, 1.0), vec3(200.0f), {}});
     return std::make_shared<const Scene>(std::move(scene));
-}
-
-std::shared_ptr<const Scene> defaultScene(ShadingModel model, RuleSet rules, int width,
-                                          int height) {
-    Diagnostics diagnostics;
-    auto parts = rasterlab::loadDefaultCourseScene(diagnostics);
-    if (!parts) qFatal("%s", parts.error().toString().c_str());
-    CourseSceneSettings settings;
-    settings.shading = model;
-    settings.rules = rulesOf(rules);
-    settings.width = width;
-    settings.height = height;
-    return std::make_shared<const Scene>(makeCourseScene(parts.value(), settings));
 }
 
 std::shared_ptr<const Scene> calice2Scene() {
@@ -603,6 +570,15 @@ void TestVertexNormalsViews::selectedTriangleExplained() {
     QVERIFY2(back.contains(QStringLiteral("n · P1 = 1: a back face")), qPrintable(back));
     QVERIFY2(back.contains(QStringLiteral("turned toward the viewer: (0.0000, 0.0000, -1.0000)")),
              qPrintable(back));
+
+    // A pixel picked while the view is hidden, on the same frame: shown when it is shown.
+    view.hide();
+    inspection.pickPixel(QPoint(0, 0));
+    view.show();
+    QVERIFY(view.picture().selected.has_value());
+    QCOMPARE((*view.picture().selected)[2], QPointF(0, 4));
+    QVERIFY2(view.explanationText().contains(QStringLiteral("n · P1 = -1: a front face")),
+             qPrintable(view.explanationText()));
 }
 
 void TestVertexNormalsViews::normalMapOfTheHandScene() {
@@ -658,7 +634,8 @@ void TestVertexNormalsViews::normalMapMatchesTheRenderer_data() {
 void TestVertexNormalsViews::normalMapMatchesTheRenderer() {
     QFETCH(int, model);
     QFETCH(int, rules);
-    const auto frame = render(defaultScene(ShadingModel(model), RuleSet(rules), 400, 300), true);
+    const auto frame =
+        render(testing::defaultCourseScene(ShadingModel(model), RuleSet(rules), 400, 300), true);
     rasterlab::PixelNormals normals(frame);
     const QImage map = normals.image(*frame->depth);
     QCOMPARE(normalMapMismatches(map, *frame), 0);
@@ -687,7 +664,8 @@ void TestVertexNormalsViews::normalMapOfCalice2() {
 void TestVertexNormalsViews::largeScenes() {
     // The default trefoil (7,776 triangles) and calice2 in both views: hairs subsampled, the
     // table's rows one per vertex.
-    const auto trefoil = render(defaultScene(ShadingModel::Phong, RuleSet::Course, 800, 600), true);
+    const auto trefoil =
+        render(testing::defaultCourseScene(ShadingModel::Phong, RuleSet::Course, 800, 600), true);
     Inspection inspection;
     NormalsView normals(&inspection);
     normals.resize(900, 800);

@@ -17,6 +17,7 @@
 #include <numbers>
 
 #include "inspection.h"
+#include "number_text.h"
 
 namespace rasterlab {
 
@@ -37,19 +38,12 @@ const QColor kCloud(170, 170, 180, 130);
 const QColor kFrustum(215, 215, 215);
 const QColor kText(230, 230, 230);
 
-// -0 prints as 0: a cross product of exact vectors gives -0 often, and "-0" only puzzles.
-QString num(double v, int precision = 6) {
-    return QString::number(v + 0.0, 'g', precision);
-}
-
 QString vec(const dvec3& v) {
-    return QStringLiteral("(%1, %2, %3)").arg(num(v.x), num(v.y), num(v.z));
+    return QStringLiteral("(%1, %2, %3)").arg(number(v.x), number(v.y), number(v.z));
 }
 
 dvec3 worldPoint(const rl::Draw& draw, const rl::dvec4& pModel) {
-    rl::dvec4 p = draw.worldFromModel * pModel;
-    if (p.w != 0.0 && p.w != 1.0) p /= p.w;
-    return dvec3(p);
+    return rl::cartesian(draw.worldFromModel * pModel);
 }
 
 // The mesh vertices in world space, at most kMaxCloudPoints of them (every k-th).
@@ -354,7 +348,7 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
         const QRectF windowBox = window.boundingRect();
         if (std::max(windowBox.width(), windowBox.height()) > 24.0) {
             const QPointF top = topmost(window);
-            drawLabel(painter, top, top + QPointF(0, 1), tr("window (d = %1)").arg(num(pic.d)),
+            drawLabel(painter, top, top + QPointF(0, 1), tr("window (d = %1)").arg(number(pic.d)),
                       kFrustum);
         }
         const QPointF farTop = topmost(far);
@@ -371,10 +365,10 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
     };
     const double sn = pic.nGivenScale, sv = pic.vGivenScale;
     arrow(b.nGiven, sn, kColourN.darker(140),
-          tr("N given, |N| = %1").arg(num(glm::length(b.nGiven), 4)), Qt::DashLine,
+          tr("N given, |N| = %1").arg(number(glm::length(b.nGiven), 4)), Qt::DashLine,
           QStringLiteral("N given"));
     arrow(b.vGiven, sv, kColourV.darker(140),
-          tr("V given, |V| = %1").arg(num(glm::length(b.vGiven), 4)), Qt::DashLine,
+          tr("V given, |V| = %1").arg(number(glm::length(b.vGiven), 4)), Qt::DashLine,
           QStringLiteral("V given"));
     if (pic.step >= 1)
         arrow(b.n, s, kColourN, QStringLiteral("N"), Qt::SolidLine, QStringLiteral("N"));
@@ -581,20 +575,21 @@ void CameraBasisView::refresh() {
         m_statusText = tr("N and V are nearly parallel: |V − (V·N) N| / |V| = %1, below %2. "
                           "The basis is ill-conditioned: a tiny change of N or V turns U and V "
                           "a lot. Choose a V further from N.")
-                           .arg(num(m_conditionRatio, 3), num(kIllConditionedRatio));
+                           .arg(number(m_conditionRatio, 3), number(kIllConditionedRatio));
 
-    m_allSteps << tr("1. N := N / |N| = %1 / %2 = %3").arg(vec(b.nGiven), num(b.nLength), vec(b.n))
-               << tr("2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3")
-                      .arg(num(b.vDotN), vec(b.vProjection), vec(b.vOrthogonal))
-               << tr("3. V := V / |V| = %1 / %2 = %3")
-                      .arg(vec(b.vOrthogonal), num(b.vOrthogonalLength), vec(b.v))
-               << tr("4. U := N × V = %1 × %2 = %3").arg(vec(b.n), vec(b.v), vec(b.u));
+    m_allSteps
+        << tr("1. N := N / |N| = %1 / %2 = %3").arg(vec(b.nGiven), number(b.nLength), vec(b.n))
+        << tr("2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3")
+               .arg(number(b.vDotN), vec(b.vProjection), vec(b.vOrthogonal))
+        << tr("3. V := V / |V| = %1 / %2 = %3")
+               .arg(vec(b.vOrthogonal), number(b.vOrthogonalLength), vec(b.v))
+        << tr("4. U := N × V = %1 × %2 = %3").arg(vec(b.n), vec(b.v), vec(b.u));
 
-    m_residualText =
-        tr("U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; "
-           "largest %7")
-            .arg(num(b.uDotV, 3), num(b.uDotN, 3), num(b.vDotNResidual, 3), num(b.uLengthError, 3),
-                 num(b.vLengthError, 3), num(b.nLengthError, 3), num(b.maxResidual(), 3));
+    m_residualText = tr("U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; "
+                        "largest %7")
+                         .arg(number(b.uDotV, 3), number(b.uDotN, 3), number(b.vDotNResidual, 3),
+                              number(b.uLengthError, 3), number(b.vLengthError, 3),
+                              number(b.nLengthError, 3), number(b.maxResidual(), 3));
 
     // viewFromWorld is column-major: row r is m[0][r] .. m[3][r].
     QStringList rows;
@@ -605,7 +600,7 @@ void CameraBasisView::refresh() {
         QStringList cells;
         table += QStringLiteral("<tr><td><b>%1</b></td>").arg(rowNames[r]);
         for (int col = 0; col < 4; ++col) {
-            cells << num(b.viewFromWorld[col][r]);
+            cells << number(b.viewFromWorld[col][r]);
             table += QStringLiteral("<td align=\"right\">&nbsp;%1&nbsp;</td>").arg(cells.back());
         }
         table += QStringLiteral("</tr>");
@@ -638,8 +633,8 @@ void CameraBasisView::refresh() {
            "viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along "
            "+z.</p>"
            "<p>C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.</p>")
-            .arg(vec(b.c), vec(b.nGiven), vec(b.vGiven), num(camera.d), num(camera.hx),
-                 num(camera.hy)) +
+            .arg(vec(b.c), vec(b.nGiven), vec(b.vGiven), number(camera.d), number(camera.hx),
+                 number(camera.hy)) +
         example;
 
     CameraBasisPicture picture;

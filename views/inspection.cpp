@@ -213,9 +213,10 @@ QString Inspection::positionText() const {
 QImage Inspection::image() const {
     if (!m_state) return m_frameImage;
     const rl::Rgba8Image& bytes = m_state->image();
-    return QImage(const_cast<uchar*>(bytes.rgba.data()), bytes.width, bytes.height, bytes.width * 4,
-                  QImage::Format_RGBA8888, &releaseState,
-                  new std::shared_ptr<rl::ReplayState>(m_state));
+    // Read-only: whoever draws on the image gets a copy, the replay's buffer stays as it is.
+    const uchar* data = bytes.rgba.data();
+    return QImage(data, bytes.width, bytes.height, bytes.width * 4, QImage::Format_RGBA8888,
+                  &releaseState, new std::shared_ptr<rl::ReplayState>(m_state));
 }
 
 const rl::DepthTest* Inspection::buffers() const {

@@ -85,7 +85,8 @@ public:
     QString positionText() const;
 
     // The image and the depth-test buffers at the cursor (the frame's without a replay).
-    // The image shares the buffer it shows: it changes as the cursor moves.
+    // The image shares the buffer it shows: it changes as the cursor moves. It is read-only:
+    // drawing on it draws on a copy.
     QImage image() const;
     const rl::DepthTest* buffers() const;
     std::uint32_t triangleAt(QPoint pixel) const;

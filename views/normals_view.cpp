@@ -19,6 +19,9 @@
 #include "frame_image_view.h"
 #include "inspection.h"
 #include "mesh_topology.h"
+#include "number_text.h"
+#include "output_image.h"
+#include "shading.h"
 
 namespace rasterlab {
 
@@ -36,41 +39,31 @@ const QColor kSelectedColour(255, 214, 10);
 const QColor kTriangleHairColour(255, 160, 40);
 const QColor kVertexHairColour(70, 200, 255);
 
-QString number(double v, char format = 'g', int precision = 6) {
-    if (v == 0.0) v = 0.0;
-    QString s = QString::number(v, format, precision);
-    if (s.startsWith(QLatin1Char('-')) && s.mid(1).toDouble() == 0.0) s.remove(0, 1);
-    return s;
+// A triangle's centroid in view space.
+rl::dvec3 centroid(const rl::DrawProjection& proj, const std::array<std::uint32_t, 3>& c) {
+    return (rl::cartesian(proj.pView[c[0]]) + rl::cartesian(proj.pView[c[1]]) +
+            rl::cartesian(proj.pView[c[2]])) /
+           3.0;
 }
 
-template <typename V>
-QString vector(const V& v, char format = 'g', int precision = 6) {
-    // Rounding dust beside the largest component (1e-14 next to 200) is written as 0.
-    double largest = 0.0;
-    for (int k = 0; k < v.length(); ++k) largest = std::max(largest, std::abs(double(v[k])));
-    QString s = QStringLiteral("(");
-    for (int k = 0; k < v.length(); ++k) {
-        if (k > 0) s += QStringLiteral(", ");
-        const double c = double(v[k]);
-        s += number(std::abs(c) < 1e-12 * largest ? 0.0 : c, format, precision);
-    }
-    return s + QLatin1Char(')');
-}
-
-rl::dvec3 point(const rl::dvec4& p) {
-    return p.w != 0.0 && p.w != 1.0 ? rl::dvec3(p) / p.w : rl::dvec3(p);
-}
-
-// As shading interpolates: a + beta (b - a) + gamma (c - a).
-template <typename T>
-T interpolate(const std::vector<T>& values, const std::array<std::uint32_t, 3>& v, float beta,
-              float gamma) {
-    const T& a = values[v[0]];
-    return a + beta * (values[v[1]] - a) + gamma * (values[v[2]] - a);
-}
-
-std::uint8_t unitByte(float v) {
-    return static_cast<std::uint8_t>(std::clamp(std::floor(v * 255.0f + 0.5f), 0.0f, 255.0f));
+// A normal's hair: from its foot in view space, `length` long, both ends carried to image
+// pixels by the draw's projection; none for a zero normal or an end at or behind the near
+// plane (or not finite).
+std::optional<QLineF> hairLine(const rl::Scene& scene, const rl::Projection& projection,
+                               const rl::DrawProjection& proj, double length, const rl::dvec3& foot,
+                               const rl::vec3& n) {
+    if (n == rl::vec3(0.0f)) return std::nullopt;
+    const auto toScreen = [&](const rl::dvec3& p) -> std::optional<QPointF> {
+        const rl::dvec4 c = proj.clipFromView * rl::dvec4(p, 1.0);
+        if (!(c.w > projection.nearW) || !rl::isFinite(rl::dvec3(c))) return std::nullopt;
+        const rl::dvec2 s = rl::screenFromNdc(rl::dvec2(c) / c.w, scene.width, scene.height,
+                                              scene.conventions.ndcYUp);
+        return QPointF(s.x, s.y);
+    };
+    const auto a = toScreen(foot);
+    const auto b = toScreen(foot + length * rl::dvec3(n));
+    if (!a || !b) return std::nullopt;
+    return QLineF(*a, *b);
 }
 
 QString swatch(const QColor& colour) {
@@ -86,8 +79,9 @@ std::vector<std::uint8_t> backFaces(const std::vector<rl::dvec4>& pView, const r
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         const auto& tri = mesh.triangles[t];
         if (tri[0] >= pView.size() || tri[1] >= pView.size() || tri[2] >= pView.size()) continue;
-        const rl::dvec3 p1 = point(pView[tri[0]]);
-        const rl::dvec3 n = glm::cross(point(pView[tri[1]]) - p1, point(pView[tri[2]]) - p1);
+        const rl::dvec3 p1 = rl::cartesian(pView[tri[0]]);
+        const rl::dvec3 n =
+            glm::cross(rl::cartesian(pView[tri[1]]) - p1, rl::cartesian(pView[tri[2]]) - p1);
         out[t] = glm::dot(n, p1) > 0.0 ? 1 : 0;
     }
     return out;
@@ -127,8 +121,8 @@ WindingReport inconsistentWinding(const rl::Mesh& mesh) {
 }
 
 QRgb normalColour(const rl::vec3& n) {
-    return qRgb(unitByte(n.x * 0.5f + 0.5f), unitByte(n.y * 0.5f + 0.5f),
-                unitByte(n.z * 0.5f + 0.5f));
+    const std::array<std::uint8_t, 4> c = rl::normalBytes(n);
+    return qRgb(c[0], c[1], c[2]);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -144,17 +138,12 @@ PixelNormals::PixelNormals(std::shared_ptr<const rl::FrameTrace> frame)
         const rl::DrawProjection& proj = m_frame->projection->draws[d];
         DrawData& out = m_draws[d];
         out.pView.reserve(proj.pView.size());
-        for (const rl::dvec4& p : proj.pView) out.pView.emplace_back(point(p));
+        for (const rl::dvec4& p : proj.pView) out.pView.emplace_back(rl::cartesian(p));
         if (withNormals && d < m_frame->normals->draws.size())
             out.nView = m_frame->normals->draws[d].vertex;
         out.nView.resize(proj.originalVertexCount, rl::vec3(0.0f));
         // Made vertices: mixed along their edge, as shading extends the normals.
-        out.nView.resize(proj.pView.size());
-        for (std::size_t i = 0; i < proj.generated.size(); ++i) {
-            const rl::ClipVertex& g = proj.generated[i];
-            out.nView[proj.originalVertexCount + i] =
-                glm::mix(out.nView[g.a], out.nView[g.b], static_cast<float>(g.t));
-        }
+        rl::extendByClipping(out.nView, proj);
         if (perspective) {
             out.invW.reserve(proj.pClip.size());
             for (const rl::dvec4& p : proj.pClip) out.invW.push_back(1.0 / p.w);
@@ -187,38 +176,26 @@ PixelNormal PixelNormals::at(const rl::DepthTest& buffers, int x, int y) const {
         out.flat = true;
         out.weights = rl::vec3(1.0f / 3.0f);
         const float third = 1.0f / 3.0f;
-        p = interpolate(dv.pView, draw.mesh->triangles[tri.source], third, third);
+        p = rl::interpolate(dv.pView, draw.mesh->triangles[tri.source], third, third);
         out.interpolated = triangleNormal;
     } else {
         float beta = buffers.barycentric.at(x, y).x;
         float gamma = buffers.barycentric.at(x, y).y;
-        if (!dv.invW.empty()) {
-            // Perspective-correct rules: each weight over its vertex's w, renormalised.
-            const double w0 = double(1.0f - beta - gamma) * dv.invW[tri.v[0]];
-            const double w1 = double(beta) * dv.invW[tri.v[1]];
-            const double w2 = double(gamma) * dv.invW[tri.v[2]];
-            const double sum = w0 + w1 + w2;
-            if (sum != 0.0 && std::isfinite(sum)) {
-                beta = static_cast<float>(w1 / sum);
-                gamma = static_cast<float>(w2 / sum);
-            }
-        }
+        if (!dv.invW.empty())  // perspective-correct rules
+            rl::perspectiveWeights(beta, gamma, dv.invW[tri.v[0]], dv.invW[tri.v[1]],
+                                   dv.invW[tri.v[2]]);
         out.weights = rl::vec3(1.0f - beta - gamma, beta, gamma);
-        p = interpolate(dv.pView, tri.v, beta, gamma);
+        p = rl::interpolate(dv.pView, tri.v, beta, gamma);
         out.flat = draw.flatNormals;
         out.interpolated =
-            draw.flatNormals ? triangleNormal : interpolate(dv.nView, tri.v, beta, gamma);
+            draw.flatNormals ? triangleNormal : rl::interpolate(dv.nView, tri.v, beta, gamma);
     }
-    const float length = glm::length(out.interpolated);
-    if (!(length > 0.0f)) {
+    if (!(glm::length(out.interpolated) > 0.0f)) {
         out.none = NormalsView::tr("the interpolated normal is zero");
         return out;
     }
-    out.n = out.interpolated / length;
-    if (scene.conventions.flipNormalsTowardViewer && glm::dot(-p, out.n) < 0.0f) {
-        out.n = -out.n;
-        out.flipped = true;
-    }
+    out.n = rl::orientedNormal(out.interpolated, p, scene.conventions.flipNormalsTowardViewer,
+                               &out.flipped);
     return out;
 }
 
@@ -557,7 +534,11 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
 
 void NormalsView::showEvent(QShowEvent* event) {
     QWidget::showEvent(event);
-    if (m_geometryDirty) refreshGeometry();
+    // The selection, the pixel picked and the cursor may have moved while hidden.
+    if (m_geometryDirty)
+        refreshGeometry();
+    else
+        refreshSelection();
     if (mapShown() && m_mapDirty) refreshMap();
 }
 
@@ -764,7 +745,7 @@ void NormalsView::refreshGeometry() {
             rl::dvec3 low(std::numeric_limits<double>::max()), high(-low);
             double nearest = std::numeric_limits<double>::max();
             for (std::uint32_t v = 0; v < proj.originalVertexCount; ++v) {
-                const rl::dvec3 p = point(proj.pView[v]);
+                const rl::dvec3 p = rl::cartesian(proj.pView[v]);
                 low = glm::min(low, p);
                 high = glm::max(high, p);
                 if (proj.pClip[v].w > projection.nearW)
@@ -780,37 +761,22 @@ void NormalsView::refreshGeometry() {
                 m_picture.hairLength = length;
                 m_picture.hairFraction = size > 0.0 ? length / size : 0.0;
             }
-            const auto toScreen = [&](const rl::dvec3& p) -> std::optional<QPointF> {
-                const rl::dvec4 c = proj.clipFromView * rl::dvec4(p, 1.0);
-                if (!(c.w > projection.nearW) || !rl::isFinite(rl::dvec3(c))) return std::nullopt;
-                const rl::dvec2 ndc = rl::dvec2(c) / c.w;
-                const double yFromTop = scene.conventions.ndcYUp ? 1.0 - ndc.y : ndc.y + 1.0;
-                return QPointF((ndc.x + 1.0) * scene.width / 2.0, yFromTop * scene.height / 2.0);
-            };
-            const auto hair = [&](const rl::dvec3& foot,
-                                  const rl::vec3& n) -> std::optional<QLineF> {
-                if (n == rl::vec3(0.0f)) return std::nullopt;
-                const auto a = toScreen(foot);
-                const auto b = toScreen(foot + length * rl::dvec3(n));
-                if (!a || !b) return std::nullopt;
-                return QLineF(*a, *b);
+            const auto hair = [&](const rl::dvec3& foot, const rl::vec3& n) {
+                return hairLine(scene, projection, proj, length, foot, n);
             };
             for (std::size_t t = 0; t < draw.mesh->triangles.size(); ++t) {
                 if (!hairTriangles[d][t]) continue;
                 if (triangleIndex++ % static_cast<std::size_t>(m_picture.triangleHairStep) != 0)
                     continue;
-                const auto& c = draw.mesh->triangles[t];
-                const rl::dvec3 centroid =
-                    (point(proj.pView[c[0]]) + point(proj.pView[c[1]]) + point(proj.pView[c[2]])) /
-                    3.0;
-                if (const auto line = hair(centroid, normals.triangle[t]))
+                if (const auto line =
+                        hair(centroid(proj, draw.mesh->triangles[t]), normals.triangle[t]))
                     m_picture.triangleHairs.push_back(*line);
             }
             for (std::uint32_t v = 0; v < proj.originalVertexCount; ++v) {
                 if (!hairVertices[d][v]) continue;
                 if (vertexIndex++ % static_cast<std::size_t>(m_picture.vertexHairStep) != 0)
                     continue;
-                if (const auto line = hair(point(proj.pView[v]), normals.vertex[v]))
+                if (const auto line = hair(rl::cartesian(proj.pView[v]), normals.vertex[v]))
                     m_picture.vertexHairs.push_back(*line);
             }
         }
@@ -841,24 +807,14 @@ void NormalsView::refreshSelection() {
             const double length = tri.draw < m_picture.drawHairLength.size()
                                       ? m_picture.drawHairLength[tri.draw]
                                       : 0.0;
-            const auto toScreen = [&](const rl::dvec3& q) -> std::optional<QPointF> {
-                const rl::dvec4 clip = proj.clipFromView * rl::dvec4(q, 1.0);
-                if (!(clip.w > projection.nearW)) return std::nullopt;
-                const rl::dvec2 ndc = rl::dvec2(clip) / clip.w;
-                const double yFromTop = scene.conventions.ndcYUp ? 1.0 - ndc.y : ndc.y + 1.0;
-                return QPointF((ndc.x + 1.0) * scene.width / 2.0, yFromTop * scene.height / 2.0);
-            };
             const auto add = [&](std::vector<QLineF>& to, const rl::dvec3& foot,
                                  const rl::vec3& n) {
-                if (n == rl::vec3(0.0f)) return;
-                const auto a = toScreen(foot), b = toScreen(foot + length * rl::dvec3(n));
-                if (a && b) to.emplace_back(*a, *b);
+                if (const auto line = hairLine(scene, projection, proj, length, foot, n))
+                    to.push_back(*line);
             };
-            add(m_picture.selectedTriangleHairs,
-                (point(proj.pView[c[0]]) + point(proj.pView[c[1]]) + point(proj.pView[c[2]])) / 3.0,
-                normals.triangle[tri.source]);
+            add(m_picture.selectedTriangleHairs, centroid(proj, c), normals.triangle[tri.source]);
             for (std::uint32_t v : c)
-                add(m_picture.selectedVertexHairs, point(proj.pView[v]), normals.vertex[v]);
+                add(m_picture.selectedVertexHairs, rl::cartesian(proj.pView[v]), normals.vertex[v]);
         }
     }
     m_canvas->update();
@@ -918,8 +874,8 @@ void NormalsView::refreshLegend() {
                 tr("triangle normals") + QStringLiteral(" &nbsp; ") + swatch(kVertexHairColour) +
                 QLatin1Char(' ') + tr("vertex normals") + QStringLiteral(" &nbsp; ") +
                 tr("length L = %1 (%2% of the mesh's size)")
-                    .arg(number(p.hairLength, 'g', 3))
-                    .arg(number(p.hairFraction * 100.0, 'g', 2));
+                    .arg(number(p.hairLength, 3))
+                    .arg(number(p.hairFraction * 100.0, 2));
         if (m_onlyVisible->isChecked())
             text += QStringLiteral(", ") +
                     tr("on the %1 triangles seen and their corners").arg(p.hairTriangles);
@@ -961,8 +917,8 @@ void NormalsView::refreshExplanation() {
         const rl::Draw& draw = frame->scene->draws[tri.draw];
         const rl::DrawProjection& proj = frame->projection->draws[tri.draw];
         const auto& c = draw.mesh->triangles[tri.source];
-        const rl::dvec3 p1 = point(proj.pView[c[0]]), p2 = point(proj.pView[c[1]]),
-                        p3 = point(proj.pView[c[2]]);
+        const rl::dvec3 p1 = rl::cartesian(proj.pView[c[0]]), p2 = rl::cartesian(proj.pView[c[1]]),
+                        p3 = rl::cartesian(proj.pView[c[2]]);
         const rl::dvec3 cross = glm::cross(p2 - p1, p3 - p1);
         const double length = glm::length(cross);
         html += tr("<p><b>Triangle %1</b> (vertices %2, %3, %4):<br>P1 = %5, P2 = %6, P3 = %7<br>"
@@ -977,7 +933,7 @@ void NormalsView::refreshExplanation() {
             const rl::dvec3 n = cross / length;
             const double facing = glm::dot(n, p1);
             html += tr("n = <b>%1</b>; n · P1 = %2: %3</p>")
-                        .arg(vector(n, 'f', 4), number(facing, 'g', 4),
+                        .arg(vector(n, 'f', 4), number(facing, 4),
                              facing > 0.0 ? tr("a back face, drawn in red") : tr("a front face"));
         } else {
             html += tr("a degenerate triangle: no normal.</p>");

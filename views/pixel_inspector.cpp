@@ -20,6 +20,7 @@
 #include "inspection.h"
 #include "output_image.h"
 #include "renderer.h"
+#include "shading.h"
 
 namespace rasterlab {
 
@@ -48,72 +49,6 @@ QPixmap swatch(const std::array<std::uint8_t, 4>& b, int size) {
     painter.setPen(QColor(128, 128, 128));
     painter.drawRect(0, 0, size - 1, size - 1);
     return pixmap;
-}
-
-// A value of a projected vertex; those made by clipping are interpolated along their edge
-// (shading.cpp, extendByClipping).
-template <typename T>
-T vertexValue(const std::vector<T>& values, const rl::DrawProjection& proj, std::uint32_t v) {
-    if (v < proj.originalVertexCount) return v < values.size() ? values[v] : T(0.0f);
-    const rl::ClipVertex& g = proj.generated[v - proj.originalVertexCount];
-    return glm::mix(vertexValue(values, proj, g.a), vertexValue(values, proj, g.b),
-                    static_cast<float>(g.t));
-}
-
-template <typename T>
-T interpolateAt(const std::vector<T>& values, const rl::DrawProjection& proj,
-                const std::array<std::uint32_t, 3>& v, float beta, float gamma) {
-    const T a = vertexValue(values, proj, v[0]);
-    return a + beta * (vertexValue(values, proj, v[1]) - a) +
-           gamma * (vertexValue(values, proj, v[2]) - a);
-}
-
-// The texel nearest to (s w, t h), wrapping around (shading.cpp).
-rl::vec4 texelAt(const rl::Texture& texture, const rl::vec2& st) {
-    if (texture.width <= 0 || texture.height <= 0) return rl::vec4(0.0f);
-    const auto wrap = [](float u, int size) {
-        const float f = u - std::floor(u);
-        const int i = static_cast<int>(std::floor(f * float(size) + 0.5f)) % size;
-        return std::clamp(i, 0, size - 1);
-    };
-    return texture.at(wrap(st.x, texture.width), wrap(st.y, texture.height));
-}
-
-// The object colour (the course's Od) of a draw at weights (beta, gamma) of vertices v.
-rl::vec3 objectColourAt(const rl::Draw& draw, const rl::DrawProjection& proj,
-                        const std::array<std::uint32_t, 3>& v, float beta, float gamma) {
-    const rl::Mesh& mesh = *draw.mesh;
-    switch (draw.colour) {
-        case rl::ColourSource::Material:
-            return draw.material.od;
-        case rl::ColourSource::Vertex:
-            return mesh.colours.empty() ? draw.material.od
-                                        : interpolateAt(mesh.colours, proj, v, beta, gamma);
-        case rl::ColourSource::Texture: {
-            if (!draw.texture || mesh.texcoords.empty()) return draw.material.od;
-            const rl::vec4 t =
-                texelAt(*draw.texture, interpolateAt(mesh.texcoords, proj, v, beta, gamma));
-            if (!draw.decals || mesh.colours.empty()) return rl::vec3(t);
-            return glm::mix(interpolateAt(mesh.colours, proj, v, beta, gamma), rl::vec3(t), t.a);
-        }
-    }
-    return draw.material.od;
-}
-
-// Screen barycentrics turned into the weights attributes are interpolated with: each over
-// its vertex's w and renormalised under perspective-correct rules (shading.cpp).
-void attributeWeights(const rl::Scene& scene, const rl::DrawProjection& proj,
-                      const rl::ScreenTriangle& tri, float& beta, float& gamma) {
-    if (scene.rules.interpolation != rl::RasterRules::Interpolation::PerspectiveCorrect) return;
-    const auto invW = [&](std::uint32_t v) { return 1.0 / proj.pClip[v].w; };
-    const double w0 = double(1.0f - beta - gamma) * invW(tri.v[0]);
-    const double w1 = double(beta) * invW(tri.v[1]);
-    const double w2 = double(gamma) * invW(tri.v[2]);
-    const double sum = w0 + w1 + w2;
-    if (sum != 0.0 && std::isfinite(sum)) {
-        beta = static_cast<float>(w1 / sum);
-        gamma = static_cast<float>(w2 / sum);
-    }
 }
 
 const std::array<QString, 3>& channelNames() {
@@ -520,20 +455,26 @@ void PixelInspector::rebuildHistory() {
     finalRow.resultText = tr("the final pixel");
     std::uint32_t finalWriterRow = 0;  // index in m_rows of the last write, 0: none
 
+    // A fragment's row: its triangle, the depth test and its verdict.
+    const auto fragmentRow = [&](std::uint32_t id, const rl::ReplayFragment& f) {
+        PixelHistoryRow row;
+        row.fragment = id;
+        row.triangle = f.triangle;
+        row.depth = f.depth;
+        row.stored = f.stored;
+        row.beta = f.beta;
+        row.gamma = f.gamma;
+        row.verdict = f.verdict;
+        describeTriangle(row);
+        describeTest(row);
+        return row;
+    };
+
     if (const rl::FrameReplay* replay = m_inspection->replay()) {
         std::array<std::uint8_t, 4> current = background;
         for (std::uint32_t id : replay->fragmentsAt(x, y)) {
             const rl::ReplayFragment& f = replay->fragments()[id];
-            PixelHistoryRow row;
-            row.fragment = id;
-            row.triangle = f.triangle;
-            row.depth = f.depth;
-            row.stored = f.stored;
-            row.beta = f.beta;
-            row.gamma = f.gamma;
-            row.verdict = f.verdict;
-            describeTriangle(row);
-            describeTest(row);
+            PixelHistoryRow row = fragmentRow(id, f);
             row.before = current;
             if (f.verdict == rl::FragmentVerdict::Written) {
                 current = replay->bytesOf(id);
@@ -562,18 +503,7 @@ void PixelInspector::rebuildHistory() {
         std::uint32_t order = 0;
         for (const rl::ProbeEvent& event : probe.events()) {
             if (const auto* test = std::get_if<rl::DepthTestEvent>(&event)) {
-                PixelHistoryRow row;
-                row.fragment = order++;
-                row.triangle = test->triangle;
-                row.depth = test->depth;
-                row.stored = test->stored;
-                row.beta = test->beta;
-                row.gamma = test->gamma;
-                row.verdict = test->outsideDepthRange ? rl::FragmentVerdict::OutsideDepthRange
-                              : test->passed          ? rl::FragmentVerdict::Written
-                                                      : rl::FragmentVerdict::Rejected;
-                describeTriangle(row);
-                describeTest(row);
+                const PixelHistoryRow row = fragmentRow(order++, rl::fragmentOf(*test));
                 if (row.verdict == rl::FragmentVerdict::Written)
                     finalWriterRow = static_cast<std::uint32_t>(m_rows.size());
                 m_rows.push_back(row);
@@ -774,13 +704,18 @@ void PixelInspector::updateBreakdown() {
         b.unlit = s.unlit;
     }
     float beta = row->beta, gamma = row->gamma;
-    attributeWeights(scene, proj, tri, beta, gamma);
+    rl::attributeWeights(scene.rules, proj, tri.v, beta, gamma);
+    // The object colour as shading reads it, from the mesh's values at the projected vertices.
+    const rl::Mesh& mesh = *draw.mesh;
+    const rl::ProjectedValues<rl::vec3> colours{mesh.colours, proj};
+    const rl::ProjectedValues<rl::vec2> texcoords{mesh.texcoords, proj};
     if (model == rl::ShadingModel::Flat) {
         // At the barycentre of the whole (unclipped) mesh triangle.
-        const auto& corners = draw.mesh->triangles[tri.source];
-        b.objectColour = objectColourAt(draw, proj, corners, 1.0f / 3.0f, 1.0f / 3.0f);
+        const auto& corners = mesh.triangles[tri.source];
+        b.objectColour =
+            rl::objectColour(draw, colours, texcoords, corners, 1.0f / 3.0f, 1.0f / 3.0f);
     } else {
-        b.objectColour = objectColourAt(draw, proj, tri.v, beta, gamma);
+        b.objectColour = rl::objectColour(draw, colours, texcoords, tri.v, beta, gamma);
     }
     if (model == rl::ShadingModel::Gouraud) {
         b.weights = {1.0f - beta - gamma, beta, gamma};

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "inspection.h"
+#include "number_text.h"
 
 namespace rasterlab {
 
@@ -37,18 +38,8 @@ const QColor kBehindColour(225, 80, 80);
 const QColor kSelectedColour(0, 220, 255);  // as the image views show the selection
 const QColor kCurrentColour(255, 230, 0);   // and the triangle being drawn
 
-QString num(double v, int precision = 6) {
-    return QString::number(v + 0.0, 'g', precision);
-}
-
-// A number as an operand after an operator: negative ones in parentheses, "1 − (−0.5)".
-QString operand(double v) {
-    const QString text = num(v);
-    return v + 0.0 < 0.0 ? QStringLiteral("(%1)").arg(text) : text;
-}
-
 QString pair(double a, double b) {
-    return QStringLiteral("(%1, %2)").arg(num(a), num(b));
+    return QStringLiteral("(%1, %2)").arg(number(a), number(b));
 }
 
 // The part of a line inside a rectangle (Liang-Barsky), so that lines reaching far off the
@@ -91,6 +82,14 @@ void addEdges(std::vector<std::uint64_t>& keys, const std::array<std::uint32_t, 
     }
 }
 
+// One line per edge (each once), between the points of its two vertices.
+template <typename PointOf>
+void appendLines(QVector<QLineF>& lines, std::vector<std::uint64_t> keys, const PointOf& pointOf) {
+    for (std::uint64_t key : uniqueEdges(std::move(keys)))
+        lines.append(QLineF(pointOf(static_cast<std::uint32_t>(key >> 32)),
+                            pointOf(static_cast<std::uint32_t>(key & 0xffffffffu))));
+}
+
 bool isCourseDraw(const rl::Scene& scene, std::uint32_t draw) {
     return scene.camera && draw < scene.draws.size() && !scene.draws[draw].clipFromView;
 }
@@ -107,6 +106,15 @@ void drawBoxedText(QPainter& painter, const QPointF& at, const QString& text,
     painter.setBrush(Qt::NoBrush);
     painter.setPen(colour);
     painter.drawText(at, text);
+}
+
+// The cached layer of a canvas: the widget's size in device pixels, the background colour.
+QImage blankLayer(const QWidget& widget) {
+    const qreal ratio = widget.devicePixelRatioF();
+    QImage layer(widget.size() * ratio, QImage::Format_ARGB32_Premultiplied);
+    layer.setDevicePixelRatio(ratio);
+    layer.fill(kBackground);
+    return layer;
 }
 
 QString swatch(const QColor& colour) {
@@ -129,37 +137,15 @@ void drawBatch(QPainter& painter, const QVector<QLineF>& lines, const QRectF& bo
 }  // namespace
 
 FateCounts countFates(const rl::Projection& projection) {
-    FateCounts c;
-    for (const rl::DrawProjection& draw : projection.draws) {
-        for (TriangleFate fate : draw.fate) {
-            switch (fate) {
-                case TriangleFate::Inside:
-                    ++c.inside;
-                    break;
-                case TriangleFate::Clipped:
-                    ++c.clipped;
-                    break;
-                case TriangleFate::Behind:
-                    ++c.behind;
-                    break;
-                case TriangleFate::ClippedAway:
-                    ++c.clippedAway;
-                    break;
-                case TriangleFate::Culled:
-                    ++c.culled;
-                    break;
-                case TriangleFate::BackFace:
-                    ++c.backFaces;
-                    break;
-                case TriangleFate::BeyondGuardBand:
-                    ++c.beyondGuardBand;
-                    break;
-                case TriangleFate::NonFinite:
-                    ++c.nonFinite;
-                    break;
-            }
-        }
-    }
+    // The projection counts each mesh triangle once, by the fate it ends with.
+    FateCounts c{.inside = projection.inside,
+                 .clipped = projection.clipped,
+                 .behind = projection.behind,
+                 .clippedAway = projection.clippedAway,
+                 .culled = projection.culled,
+                 .backFaces = projection.backFaces,
+                 .beyondGuardBand = projection.beyondGuardBand,
+                 .nonFinite = projection.nonFinite};
     for (const rl::ScreenTriangle& t : projection.triangles)
         if (projection.draws[t.draw].fate[t.source] == TriangleFate::Clipped) ++c.fanTriangles;
     return c;
@@ -213,8 +199,9 @@ QPointF ProjectionCanvas::spacePoint(std::uint32_t draw, std::uint32_t vertex) c
 QPointF ProjectionCanvas::layoutPoint(const QPointF& p) const {
     if (m_space == ProjectionSpace::Pixels || !m_frame) return p;
     const rl::Scene& scene = *m_frame->scene;
-    const double yFromTop = scene.conventions.ndcYUp ? 1.0 - p.y() : p.y() + 1.0;
-    return {(p.x() + 1.0) * scene.width / 2.0, yFromTop * scene.height / 2.0};
+    const rl::dvec2 s = rl::screenFromNdc(rl::dvec2(p.x(), p.y()), scene.width, scene.height,
+                                          scene.conventions.ndcYUp);
+    return {s.x, s.y};
 }
 
 QPointF ProjectionCanvas::spaceFromLayout(const QPointF& l) const {
@@ -304,12 +291,8 @@ void ProjectionCanvas::buildLines() {
     for (int g = 0; g < GroupCount; ++g) {
         for (std::size_t d = 0; d < draws; ++d) {
             const auto draw = static_cast<std::uint32_t>(d);
-            for (std::uint64_t key : uniqueEdges(std::move(keys[g][d]))) {
-                const auto a = static_cast<std::uint32_t>(key >> 32);
-                const auto b = static_cast<std::uint32_t>(key & 0xffffffffu);
-                m_lines[g].append(
-                    QLineF(layoutPoint(spacePoint(draw, a)), layoutPoint(spacePoint(draw, b))));
-            }
+            appendLines(m_lines[g], std::move(keys[g][d]),
+                        [&](std::uint32_t v) { return layoutPoint(spacePoint(draw, v)); });
         }
     }
 }
@@ -327,10 +310,7 @@ void ProjectionCanvas::fit() {
 }
 
 void ProjectionCanvas::paintLayer() {
-    const qreal ratio = devicePixelRatioF();
-    m_layer = QImage(size() * ratio, QImage::Format_ARGB32_Premultiplied);
-    m_layer.setDevicePixelRatio(ratio);
-    m_layer.fill(kBackground);
+    m_layer = blankLayer(*this);
     m_layerValid = true;
     if (!m_frame || !m_frame->projection) return;
     QPainter painter(&m_layer);
@@ -531,14 +511,10 @@ void ProjectionSideView::setFrame(std::shared_ptr<const rl::FrameTrace> frame) {
                     break;
             }
         }
-        const auto append = [&](QVector<QLineF>& lines, std::vector<std::uint64_t> keys) {
-            for (std::uint64_t key : uniqueEdges(std::move(keys)))
-                lines.append(QLineF(at(d, static_cast<std::uint32_t>(key >> 32)),
-                                    at(d, static_cast<std::uint32_t>(key & 0xffffffffu))));
-        };
-        append(m_lines, std::move(plain));
-        append(m_cutLines, std::move(cut));
-        append(m_behindLines, std::move(behind));
+        const auto pointOf = [&](std::uint32_t v) { return at(d, v); };
+        appendLines(m_lines, std::move(plain), pointOf);
+        appendLines(m_cutLines, std::move(cut), pointOf);
+        appendLines(m_behindLines, std::move(behind), pointOf);
         for (std::uint32_t v = proj.originalVertexCount; v < proj.pView.size(); ++v)
             m_made.append(at(d, v));
     }
@@ -548,9 +524,7 @@ void ProjectionSideView::setFrame(std::shared_ptr<const rl::FrameTrace> frame) {
         if (projection.draws[t.draw].fate[t.source] == TriangleFate::Clipped)
             addEdges(kept[t.draw], t.v);
     for (std::size_t d = 0; d < kept.size(); ++d)
-        for (std::uint64_t key : uniqueEdges(std::move(kept[d])))
-            m_keptLines.append(QLineF(at(d, static_cast<std::uint32_t>(key >> 32)),
-                                      at(d, static_cast<std::uint32_t>(key & 0xffffffffu))));
+        appendLines(m_keptLines, std::move(kept[d]), [&](std::uint32_t v) { return at(d, v); });
 }
 
 void ProjectionSideView::setSelected(std::optional<std::uint32_t> triangle) {
@@ -572,10 +546,7 @@ QPointF ProjectionSideView::toWidget(double w, double y) const {
 }
 
 void ProjectionSideView::paintLayer() {
-    const qreal ratio = devicePixelRatioF();
-    m_layer = QImage(size() * ratio, QImage::Format_ARGB32_Premultiplied);
-    m_layer.setDevicePixelRatio(ratio);
-    m_layer.fill(kBackground);
+    m_layer = blankLayer(*this);
     m_layerValid = true;
     if (!m_frame || !m_frame->projection) return;
     QPainter painter(&m_layer);
@@ -645,7 +616,7 @@ void ProjectionSideView::paintLayer() {
     // The near plane's label beside its line, at the top; the count of made vertices in the
     // top right corner, out of the way of the geometry near the plane.
     drawBoxedText(painter, nearTop + QPointF(6.0, metrics.ascent()),
-                  tr("near plane w = %1").arg(num(nearW, 4)), QColor(255, 120, 120));
+                  tr("near plane w = %1").arg(number(nearW, 4)), QColor(255, 120, 120));
     if (!m_made.isEmpty()) {
         const QString made = tr("● made by clipping: %1").arg(m_made.size());
         drawBoxedText(
@@ -784,7 +755,11 @@ void ProjectionView::setSpace(ProjectionSpace space) {
 
 void ProjectionView::showEvent(QShowEvent* event) {
     QWidget::showEvent(event);
-    if (m_dirty) refresh();
+    // The selection and the cursor may have moved while hidden.
+    if (m_dirty)
+        refresh();
+    else
+        refreshSelection();
 }
 
 void ProjectionView::resizeEvent(QResizeEvent* event) {
@@ -860,7 +835,7 @@ void ProjectionView::refresh() {
     html += QStringLiteral("<br>") +
             tr("%1 screen triangles go to scan conversion; the near plane is w = %2.")
                 .arg(m_frame->projection->triangles.size())
-                .arg(num(m_frame->projection->nearW, 4));
+                .arg(number(m_frame->projection->nearW, 4));
     html += QStringLiteral("<br>") +
             tr("%1 selected, %2 being drawn").arg(swatch(kSelectedColour), swatch(kCurrentColour));
     m_legend->setText(html);
@@ -922,21 +897,23 @@ QString ProjectionView::vertexExplanation(std::uint32_t triangle) const {
                 tr("made by clipping, on the edge from vertex %1 to vertex %2 at t = %3")
                     .arg(made.a + 1)
                     .arg(made.b + 1)
-                    .arg(num(made.t));
+                    .arg(number(made.t));
     }
     html += QStringLiteral("<br>pView = (x, y, z) = (%1, %2, %3)")
-                .arg(num(pView.x), num(pView.y), num(pView.z));
+                .arg(number(pView.x), number(pView.y), number(pView.z));
     if (isCourseDraw(scene, t.draw)) {
         const rl::CourseCamera& cam = *scene.camera;
         html += QStringLiteral("<br>x_ndc = (d/hx) x/z = (%1/%2) · %3 / %4 = %5")
-                    .arg(num(cam.d), num(cam.hx), operand(pView.x), operand(pView.z), num(pNdc.x));
+                    .arg(number(cam.d), number(cam.hx), operand(pView.x), operand(pView.z),
+                         number(pNdc.x));
         html += QStringLiteral("<br>y_ndc = (d/hy) y/z = (%1/%2) · %3 / %4 = %5")
-                    .arg(num(cam.d), num(cam.hy), operand(pView.y), operand(pView.z), num(pNdc.y));
+                    .arg(number(cam.d), number(cam.hy), operand(pView.y), operand(pView.z),
+                         number(pNdc.y));
     } else {
         html += QStringLiteral("<br>pClip = clipFromView · pView = (%1, %2, %3, %4)")
-                    .arg(num(pClip.x), num(pClip.y), num(pClip.z), num(pClip.w));
+                    .arg(number(pClip.x), number(pClip.y), number(pClip.z), number(pClip.w));
         html += QStringLiteral("<br>x_ndc = x_clip / w = %1, y_ndc = y_clip / w = %2")
-                    .arg(num(pNdc.x), num(pNdc.y));
+                    .arg(number(pNdc.x), number(pNdc.y));
     }
     // How the exact position becomes the one scan conversion receives.
     const rl::RasterRules& rules = scene.rules;
@@ -950,13 +927,13 @@ QString ProjectionView::vertexExplanation(std::uint32_t triangle) const {
                                                                  : tr("rounded to 1/%1 pixel"))
                 .arg(1 << rules.subpixelBits);
     html += QStringLiteral("<br>x = (x_ndc + 1) W/2 = (%1 + 1) · %2/2 = %3 → %4 (%5)")
-                .arg(operand(pNdc.x), num(w), num(exact.x), num(pScreen.x), rounding);
+                .arg(operand(pNdc.x), number(w), number(exact.x), number(pScreen.x), rounding);
     if (scene.conventions.ndcYUp)
         html += QStringLiteral("<br>y = (1 − y_ndc) H/2 = (1 − %1) · %2/2 = %3 → %4 (%5)")
-                    .arg(operand(pNdc.y), num(h), num(exact.y), num(pScreen.y), rounding);
+                    .arg(operand(pNdc.y), number(h), number(exact.y), number(pScreen.y), rounding);
     else
         html += QStringLiteral("<br>y = (y_ndc + 1) H/2 = (%1 + 1) · %2/2 = %3 → %4 (%5)")
-                    .arg(operand(pNdc.y), num(h), num(exact.y), num(pScreen.y), rounding);
+                    .arg(operand(pNdc.y), number(h), number(exact.y), number(pScreen.y), rounding);
     html += QStringLiteral("</p>");
     return html;
 }

@@ -35,8 +35,8 @@ class Inspection;
 // the image is, so the toggle only changes the numbers, and the snapping shows.
 enum class ProjectionSpace { Ndc, Pixels };
 
-// How many mesh triangles met each fate, counted from DrawProjection::fate, and how many
-// screen triangles the clipped ones became.
+// How many mesh triangles met each fate (the projection's counts), and how many screen
+// triangles the clipped ones became.
 struct FateCounts {
     std::size_t inside = 0, clipped = 0, behind = 0, clippedAway = 0, culled = 0, backFaces = 0,
                 beyondGuardBand = 0, nonFinite = 0;

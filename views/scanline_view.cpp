@@ -12,92 +12,13 @@
 #include <tuple>
 #include <vector>
 
+#include "depth_test.h"
 #include "inspection.h"
+#include "shading.h"
 
 namespace rasterlab {
 
 namespace {
-
-// The scan converter's exact arithmetic (scan_conversion.cpp), redone here so that the
-// numbers shown are the very ones it walks: vertices on a grid of 1/2^bits pixel, each
-// edge's x on a sampled row a whole number of grid steps plus a remainder.
-__extension__ using Int128 = __int128;
-
-template <typename T>
-T floorDiv(T a, T b) {
-    const T q = a / b;
-    return (a % b != 0 && a < 0) ? q - 1 : q;
-}
-template <typename T>
-T ceilDiv(T a, T b) {
-    return -floorDiv<T>(-a, b);
-}
-
-struct Grid {
-    std::int64_t grid = 1;    // grid units per pixel
-    std::int64_t offset = 0;  // the sample offset, grid units
-    bool topLeft = false;
-    std::int64_t firstAtOrAfter(std::int64_t v) const { return ceilDiv(v - offset, grid); }
-    std::int64_t lastAtOrBefore(std::int64_t v) const { return floorDiv(v - offset, grid); }
-    std::int64_t sample(std::int64_t p) const { return p * grid + offset; }
-};
-
-Grid gridOf(const rl::RasterRules& rules) {
-    Grid g;
-    g.grid = std::int64_t(1) << rules.subpixelBits;
-    g.offset = static_cast<std::int64_t>(rules.sampleOffset * double(g.grid));
-    g.topLeft = rules.fill == rl::RasterRules::FillRule::TopLeft;
-    return g;
-}
-
-// Where an edge (dy > 0) crosses the sampled line of row y: (x - offset) / grid = q + r / d.
-struct Crossing {
-    std::int64_t q = 0, r = 0, d = 1;
-    double exact(const Grid& g) const {
-        return (double(q) + double(r) / double(d)) + double(g.offset) / double(g.grid);
-    }
-    std::int64_t floorX() const { return q; }
-    std::int64_t ceilX() const { return q + (r > 0 ? 1 : 0); }
-};
-
-Crossing crossing(const rl::ScanEdge& e, const Grid& g, std::int64_t y) {
-    const std::int64_t dy = e.yBottom - e.yTop;
-    const std::int64_t dx = e.xBottom - e.xTop;
-    Crossing c;
-    c.d = g.grid * dy;
-    const Int128 v = Int128(e.xTop - g.offset) * dy + Int128(g.sample(y) - e.yTop) * dx;
-    const Int128 q = floorDiv<Int128>(v, c.d);
-    c.q = static_cast<std::int64_t>(q);
-    c.r = static_cast<std::int64_t>(v - q * c.d);
-    return c;
-}
-
-int toRow(std::int64_t v) {
-    return static_cast<int>(std::clamp<std::int64_t>(v, -(1ll << 30), 1ll << 30));
-}
-
-rl::dvec2 pixels(std::int64_t x, std::int64_t y, int bits) {
-    const double scale = std::ldexp(1.0, -bits);
-    return {double(x) * scale, double(y) * scale};
-}
-
-// The last row walked along the upper edge (all rows when the bottom is flat).
-int upperLastRow(const rl::TriangleSetup& s, const Grid& g) {
-    const std::int64_t yMiddle = s.upperEdge.yBottom;
-    if (s.lowerEdge.yBottom == yMiddle) return s.yLast;
-    return std::min(s.yLast, toRow(g.firstAtOrAfter(yMiddle) - 1));
-}
-
-// The normal of a projected vertex, those made by clipping interpolated along their edge
-// (shading.cpp, extendByClipping).
-rl::vec3 vertexNormal(const rl::DrawNormals& normals, const rl::DrawProjection& proj,
-                      std::uint32_t v) {
-    if (v < proj.originalVertexCount)
-        return v < normals.vertex.size() ? normals.vertex[v] : rl::vec3(0.0f);
-    const rl::ClipVertex& g = proj.generated[v - proj.originalVertexCount];
-    return glm::mix(vertexNormal(normals, proj, g.a), vertexNormal(normals, proj, g.b),
-                    static_cast<float>(g.t));
-}
 
 QString num(double v, int precision = 6) {
     if (std::isinf(v)) return v > 0 ? QStringLiteral("+inf") : QStringLiteral("-inf");
@@ -170,62 +91,30 @@ SpanEnd spanEnd(const rl::FrameTrace& frame, std::uint32_t triangle, int y, int 
     const rl::Scene& scene = *frame.scene;
     const rl::Projection& projection = *frame.projection;
     const rl::ScreenTriangle& tri = projection.triangles[triangle];
-    const rl::DrawProjection& draw = projection.draws[tri.draw];
-    const bool perspective =
-        scene.rules.interpolation == rl::RasterRules::Interpolation::PerspectiveCorrect;
-    // The depth test's set-up (depth_test.cpp): under perspective-correct rules view z is
-    // interpolated as 1/z.
-    const bool reciprocal = perspective && scene.conventions.depth == rl::DepthSource::ViewZ;
-    const auto depthOf = [&](std::uint32_t v) {
-        return reciprocal ? 1.0f / draw.depth[v] : draw.depth[v];
-    };
-    const float z0 = depthOf(tri.v[0]);
-    const float dz1 = depthOf(tri.v[1]) - z0;
-    const float dz2 = depthOf(tri.v[2]) - z0;
-    const std::array<rl::dvec2, 3> p = rl::screenVertices(projection, tri);
-    const rl::dvec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
-    const double area = e1.x * e2.y - e1.y * e2.x;
-    const double betaDx = e2.y / area, gammaDx = -e1.y / area;
     const double offset = scene.rules.sampleOffset;
-    const rl::dvec2 s0 = rl::dvec2(xBegin + offset, y + offset) - p[0];
-    const double beta0 = (s0.x * e2.y - s0.y * e2.x) / area;
-    const double gamma0 = (e1.x * s0.y - e1.y * s0.x) / area;
-    const int i = x - xBegin;
-
+    // The depth test's numbers (depth_test.h).
+    const rl::FragmentDepth fragment = rl::fragmentDepth(scene, projection, triangle, y, xBegin, x);
     SpanEnd out;
     out.x = x;
     out.y = y;
     out.sample = rl::dvec2(x + offset, y + offset);
-    out.beta = static_cast<float>(beta0 + double(i) * betaDx);
-    out.gamma = static_cast<float>(gamma0 + double(i) * gammaDx);
+    out.beta = fragment.beta;
+    out.gamma = fragment.gamma;
     out.alpha = 1.0f - out.beta - out.gamma;
-    float z = z0 + out.beta * dz1 + out.gamma * dz2;
-    if (reciprocal) z = 1.0f / z;
-    out.depth = z;
+    out.depth = fragment.depth;
 
-    // The normal shading interpolates with these barycentrics (shading.cpp).
+    // The normal shading interpolates with these barycentrics (shading.h).
     if (frame.normals && !frame.normals->skipped && tri.draw < frame.normals->draws.size()) {
         const rl::DrawNormals& normals = frame.normals->draws[tri.draw];
         rl::vec3 n(0.0f);
         if (scene.draws[tri.draw].flatNormals) {
             n = normals.triangle[tri.source];
         } else {
+            const rl::DrawProjection& draw = projection.draws[tri.draw];
             float beta = out.beta, gamma = out.gamma;
-            if (perspective) {
-                const auto invW = [&](std::uint32_t v) { return 1.0 / draw.pClip[v].w; };
-                const double w0 = double(1.0f - beta - gamma) * invW(tri.v[0]);
-                const double w1 = double(beta) * invW(tri.v[1]);
-                const double w2 = double(gamma) * invW(tri.v[2]);
-                const double sum = w0 + w1 + w2;
-                if (sum != 0.0 && std::isfinite(sum)) {
-                    beta = static_cast<float>(w1 / sum);
-                    gamma = static_cast<float>(w2 / sum);
-                }
-            }
-            const rl::vec3 a = vertexNormal(normals, draw, tri.v[0]);
-            const rl::vec3 b = vertexNormal(normals, draw, tri.v[1]);
-            const rl::vec3 c = vertexNormal(normals, draw, tri.v[2]);
-            n = a + beta * (b - a) + gamma * (c - a);
+            rl::attributeWeights(scene.rules, draw, tri.v, beta, gamma);
+            n = rl::interpolate(rl::ProjectedValues<rl::vec3>{normals.vertex, draw}, tri.v, beta,
+                                gamma);
         }
         const float length = glm::length(n);
         out.hasNormal = true;
@@ -237,19 +126,22 @@ SpanEnd spanEnd(const rl::FrameTrace& frame, std::uint32_t triangle, int y, int 
 ScanlineModel scanlineModel(const rl::FrameTrace& frame, std::uint32_t triangle,
                             std::optional<int> y) {
     const rl::Scene& scene = *frame.scene;
+    const rl::RasterRules& rules = scene.rules;
     ScanlineModel m;
     m.triangle = triangle;
     m.setup = rl::setupTriangle(
-        rl::screenVertices(*frame.projection, frame.projection->triangles[triangle]), scene.rules);
+        rl::screenVertices(*frame.projection, frame.projection->triangles[triangle]), rules);
     const rl::TriangleSetup& s = m.setup;
-    const Grid g = gridOf(scene.rules);
-    const int upperLast = upperLastRow(s, g);
+    const int upperLast = rl::lastUpperRow(s, rules);
+    // The edges' ends as the walk sees them: the vertices sorted by y.
     const std::array<const rl::ScanEdge*, 3> edges{&s.longEdge, &s.upperEdge, &s.lowerEdge};
+    const std::array<std::pair<std::size_t, std::size_t>, 3> ends{
+        std::pair<std::size_t, std::size_t>{0, 2}, {0, 1}, {1, 2}};
     for (std::size_t k = 0; k < 3; ++k) {
         const rl::ScanEdge& e = *edges[k];
         ScanEdgeEntry& entry = m.edges[k];
-        entry.top = pixels(e.xTop, e.yTop, e.bits);
-        entry.bottom = pixels(e.xBottom, e.yBottom, e.bits);
+        entry.top = s.sorted[ends[k].first];
+        entry.bottom = s.sorted[ends[k].second];
         entry.dxdy = e.dxdy;
         entry.horizontal = e.yTop == e.yBottom;
         entry.onLeft = (k == 0) == s.longEdgeOnLeft;
@@ -269,7 +161,7 @@ ScanlineModel scanlineModel(const rl::FrameTrace& frame, std::uint32_t triangle,
                 break;
         }
         if (entry.horizontal) entry.lastRow = entry.firstRow - 1;
-        entry.xFirstRow = entry.walked() ? crossing(e, g, entry.firstRow).exact(g) : entry.top.x;
+        entry.xFirstRow = entry.walked() ? rl::edgeCrossing(e, rules, entry.firstRow) : entry.top.x;
     }
     m.rowBegin = std::max(s.yFirst, 0);
     m.rowEnd = std::min(s.yLast, scene.height - 1);
@@ -277,20 +169,7 @@ ScanlineModel scanlineModel(const rl::FrameTrace& frame, std::uint32_t triangle,
     if (!y || *y < m.rowBegin || *y > m.rowEnd) return m;
 
     ScanRowInfo row;
-    row.y = *y;
-    row.upperPart = *y <= upperLast;
-    const rl::ScanEdge& shortEdge = row.upperPart ? s.upperEdge : s.lowerEdge;
-    const rl::ScanEdge& left = s.longEdgeOnLeft ? s.longEdge : shortEdge;
-    const rl::ScanEdge& right = s.longEdgeOnLeft ? shortEdge : s.longEdge;
-    const Crossing l = crossing(left, g, *y), r = crossing(right, g, *y);
-    row.xLeft = l.exact(g);
-    row.xRight = r.exact(g);
-    // Samples left <= x <= right (inclusive) or left <= x < right (top-left), on the screen.
-    const std::int64_t width = scene.width;
-    const std::int64_t begin = std::max<std::int64_t>(l.ceilX(), 0);
-    const std::int64_t end = std::min<std::int64_t>(g.topLeft ? r.ceilX() : r.floorX() + 1, width);
-    row.xBegin = static_cast<int>(std::min(begin, width));
-    row.xEnd = static_cast<int>(std::clamp<std::int64_t>(end, row.xBegin, width));
+    static_cast<rl::ScanRow&>(row) = rl::scanRow(s, rules, *y, scene.width);
     if (!row.empty()) {
         row.first = spanEnd(frame, triangle, *y, row.xBegin, row.xBegin);
         row.last = spanEnd(frame, triangle, *y, row.xBegin, row.xEnd - 1);

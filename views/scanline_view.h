@@ -50,14 +50,10 @@ struct SpanEnd {
     rl::vec3 normal = rl::vec3(0.0f);  // interpolated and normalised (zero: no normal)
 };
 
-// One scanline of the triangle's edge walk.
-struct ScanRowInfo {
-    int y = 0;
-    double xLeft = 0.0, xRight = 0.0;  // the exact crossings of the sampled line y + offset
-    int xBegin = 0, xEnd = 0;          // its pixels [xBegin, xEnd), clipped to the screen
-    bool upperPart = true;             // walked along the upper edge (else the lower)
+// One scanline of the triangle's edge walk (the crossings of the sampled line y + offset,
+// its pixels on the screen) and the ends of its span.
+struct ScanRowInfo : rl::ScanRow {
     std::optional<SpanEnd> first, last;
-    bool empty() const { return xBegin >= xEnd; }
 };
 
 // What the view shows of triangle t.

@@ -16,41 +16,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "number_text.h"
+#include "shading.h"
+
 namespace rasterlab {
 
 namespace {
-
-// A number for the table and the explanations: -0 and rounding dust as 0.
-QString number(double v, char format = 'g', int precision = 6) {
-    if (v == 0.0) v = 0.0;
-    QString s = QString::number(v, format, precision);
-    if (s.startsWith(QLatin1Char('-')) && s.mid(1).toDouble() == 0.0) s.remove(0, 1);
-    return s;
-}
-
-// A number written after an operator: negative ones in parentheses, "2 · (-0.5)".
-QString operand(double v) {
-    const QString s = number(v);
-    return s.startsWith(QLatin1Char('-')) ? QLatin1Char('(') + s + QLatin1Char(')') : s;
-}
-
-template <typename V>
-QString vector(const V& v, char format = 'g', int precision = 6) {
-    // Rounding dust beside the largest component (1e-14 next to 200) is written as 0.
-    double largest = 0.0;
-    for (int k = 0; k < v.length(); ++k) largest = std::max(largest, std::abs(double(v[k])));
-    QString s = QStringLiteral("(");
-    for (int k = 0; k < v.length(); ++k) {
-        if (k > 0) s += QStringLiteral(", ");
-        const double c = double(v[k]);
-        s += number(std::abs(c) < 1e-12 * largest ? 0.0 : c, format, precision);
-    }
-    return s + QLatin1Char(')');
-}
-
-rl::dvec3 point(const rl::dvec4& p) {
-    return p.w != 0.0 && p.w != 1.0 ? rl::dvec3(p) / p.w : rl::dvec3(p);
-}
 
 // Keeps the rows of one triangle's vertices, or all rows.
 class TriangleFilter : public QSortFilterProxyModel {
@@ -124,25 +95,16 @@ rl::dvec4 VertexTableModel::worldHomogeneous(std::uint32_t draw, std::uint32_t v
 }
 
 rl::dvec3 VertexTableModel::worldOf(VertexRef vertex) const {
-    return point(worldHomogeneous(vertex.draw, vertex.vertex));
-}
-
-rl::vec3 VertexTableModel::normalAt(std::uint32_t draw, std::uint32_t vertex) const {
-    const rl::DrawProjection& proj = m_frame->projection->draws[draw];
-    if (vertex >= proj.originalVertexCount) {
-        // As shading extends the normals to made vertices: mixed, not normalised.
-        const rl::ClipVertex& g = proj.generated[vertex - proj.originalVertexCount];
-        return glm::mix(normalAt(draw, g.a), normalAt(draw, g.b), static_cast<float>(g.t));
-    }
-    const auto& normals = m_frame->normals->draws[draw].vertex;
-    return vertex < normals.size() ? normals[vertex] : rl::vec3(0.0f);
+    return rl::cartesian(worldHomogeneous(vertex.draw, vertex.vertex));
 }
 
 std::optional<rl::vec3> VertexTableModel::normalOf(VertexRef vertex) const {
     if (!m_frame || !m_frame->normals || m_frame->normals->skipped ||
         vertex.draw >= m_frame->normals->draws.size())
         return std::nullopt;
-    return normalAt(vertex.draw, vertex.vertex);
+    // As shading extends the normals to made vertices: mixed, not normalised.
+    return rl::projectedValue(m_frame->normals->draws[vertex.draw].vertex,
+                              m_frame->projection->draws[vertex.draw], vertex.vertex);
 }
 
 QVariant VertexTableModel::data(const QModelIndex& index, int role) const {
@@ -165,7 +127,7 @@ QVariant VertexTableModel::data(const QModelIndex& index, int role) const {
                                      .arg(v + 1)
                                      .arg(g.a + 1)
                                      .arg(g.b + 1)
-                                     .arg(number(g.t, 'g', 4));
+                                     .arg(number(g.t, 4));
             if (role == Qt::ToolTipRole)
                 return text + QLatin1Char('\n') +
                        tr("pView = pView(%1) + t (pView(%2) - pView(%1)), on the plane that "
@@ -177,7 +139,7 @@ QVariant VertexTableModel::data(const QModelIndex& index, int role) const {
         case World:
             return vector(worldOf(ref));
         case View:
-            return vector(point(proj.pView[v]));
+            return vector(rl::cartesian(proj.pView[v]));
         case Ndc:
             if (!inFront) {
                 if (role == Qt::ToolTipRole)
@@ -466,7 +428,7 @@ QString VertexTableView::explanationHtml(VertexRef ref) const {
     const rl::DrawProjection& proj = frame.projection->draws[ref.draw];
     const std::uint32_t v = ref.vertex;
     const bool made = v >= proj.originalVertexCount;
-    const rl::dvec3 pView = point(proj.pView[v]);
+    const rl::dvec3 pView = rl::cartesian(proj.pView[v]);
     const bool course =
         scene.camera && !draw.clipFromView && frame.cameraBasis && !frame.cameraBasis->skipped;
     QString html;
@@ -480,7 +442,7 @@ QString VertexTableView::explanationHtml(VertexRef ref) const {
     // World and view.
     if (made) {
         const rl::ClipVertex& g = proj.generated[v - proj.originalVertexCount];
-        const rl::dvec3 a = point(proj.pView[g.a]), b = point(proj.pView[g.b]);
+        const rl::dvec3 a = rl::cartesian(proj.pView[g.a]), b = rl::cartesian(proj.pView[g.b]);
         html += tr("<p>Made by clipping the edge %1-%2 where it crosses a plane (the near plane "
                    "or a clip plane), at t = %3:<br>pView = pView<sub>%1</sub> + t "
                    "(pView<sub>%2</sub> − pView<sub>%1</sub>) = %4 + %3 (%5 − %4) = "
@@ -497,7 +459,7 @@ QString VertexTableView::explanationHtml(VertexRef ref) const {
                         .arg(vector(world));
         else
             html += tr("<p>World: P = worldFromModel · %1 = <b>%2</b></p>")
-                        .arg(vector(point(draw.mesh->positions[v])), vector(world));
+                        .arg(vector(rl::cartesian(draw.mesh->positions[v])), vector(world));
         if (course) {
             const rl::CameraBasis& basis = *frame.cameraBasis;
             const rl::dvec3 d = world - basis.c;

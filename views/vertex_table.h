@@ -54,7 +54,6 @@ public:
 
 private:
     rl::dvec4 worldHomogeneous(std::uint32_t draw, std::uint32_t vertex) const;
-    rl::vec3 normalAt(std::uint32_t draw, std::uint32_t vertex) const;
 
     std::shared_ptr<const rl::FrameTrace> m_frame;
     std::vector<int> m_firstRow;  // per draw, then the total

@@ -1,0 +1,47 @@
+// Scenes made from the program's own files, for the suites that link rasterlab_core: the
+// default course scene (the trefoil) and the HW2 sample command files as data rows.
+#pragma once
+
+#include <QtTest>
+
+#include <initializer_list>
+#include <memory>
+
+#include "command_file.h"
+#include "course_scene.h"
+#include "default_scene_resource.h"
+#include "test_support.h"
+
+namespace testing {
+
+// The default course scene with the given shading, rules and image size.
+inline std::shared_ptr<const rl::Scene> defaultCourseScene(rl::ShadingModel model,
+                                                           rl::RuleSet rules, int width,
+                                                           int height) {
+    rl::Diagnostics diagnostics;
+    auto parts = rasterlab::loadDefaultCourseScene(diagnostics);
+    if (!parts) qFatal("%s", parts.error().toString().c_str());
+    rl::CourseSceneSettings settings;
+    settings.shading = model;
+    settings.rules = rl::rulesOf(rules);
+    settings.width = width;
+    settings.height = height;
+    return std::make_shared<const rl::Scene>(rl::makeCourseScene(parts.value(), settings));
+}
+
+// A data row per HW2 sample named (samples/hw2/<name>.txt), holding its first image's scene
+// in a std::shared_ptr<const rl::Scene> column; none where the samples are absent.
+inline void addHw2Rows(std::initializer_list<const char*> names) {
+    const QString dir = samplesDir();
+    if (dir.isEmpty()) return;
+    for (const char* name : names) {
+        rl::Diagnostics diagnostics;
+        auto hw2 = rasterlab::loadCommandFile(
+            dir + QStringLiteral("/hw2/") + QLatin1String(name) + QStringLiteral(".txt"),
+            diagnostics);
+        QVERIFY2(hw2, name);
+        QTest::newRow(name) << std::make_shared<const rl::Scene>(hw2->images.at(0).scene);
+    }
+}
+
+}  // namespace testing
