@@ -1025,6 +1025,7 @@ void MainWindow::showShortcuts() {
     row(QStringLiteral("Ctrl+Shift+1 ... 5"), tr("step by stage, triangle, scanline, span, pixel"));
     row(QStringLiteral("Alt+1 ... 7"), tr("show a stage's view"));
     row(tr("Click, arrows"), tr("pick a pixel, move it by one"));
+    row(QStringLiteral("Esc"), tr("let go of the picked pixel (on the image)"));
     row(QStringLiteral("F5, Esc"), tr("presentation mode on / off"));
     row(QStringLiteral("Ctrl+O, Ctrl+E, Ctrl+Shift+E"),
         tr("open, export the image, export it as displayed"));

@@ -212,6 +212,12 @@ private slots:
         QTest::keyClick(window.imageView(), Qt::Key_Up);
         QCOMPARE(inspection->pickedPixel(), QPoint(401, 299));
         QCOMPARE(inspection->cursor(), here);
+        // Esc lets go of the pixel; then the arrows step.
+        QTest::keyClick(window.imageView(), Qt::Key_Escape);
+        QCOMPARE(inspection->pickedPixel(), QPoint(-1, -1));
+        QTest::keyClick(window.imageView(), Qt::Key_Right);
+        QCOMPARE(inspection->cursor(),
+                 inspection->replay()->next(here, rl::StepGranularity::Triangle));
     }
 
     void pickingSelectsTheTriangle() {

@@ -325,37 +325,37 @@
 <context>
     <name>rasterlab::CameraBasisCanvas</name>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="183"/>
+        <location filename="../views/camera_basis_view.cpp" line="177"/>
         <source>Drag to turn the scene, wheel to zoom, double-click to reset.</source>
         <translation>Arraste para girar a cena, use a roda para o zoom, clique duas vezes para restaurar.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="186"/>
+        <location filename="../views/camera_basis_view.cpp" line="180"/>
         <source>Reset view</source>
         <translation>Restaurar vista</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="187"/>
+        <location filename="../views/camera_basis_view.cpp" line="181"/>
         <source>Turn the 3D drawing back to where it started</source>
         <translation>Volta o desenho 3D à posição inicial</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="357"/>
+        <location filename="../views/camera_basis_view.cpp" line="351"/>
         <source>window (d = %1)</source>
         <translation>janela (d = %1)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="361"/>
+        <location filename="../views/camera_basis_view.cpp" line="355"/>
         <source>frustum</source>
         <translation>frustum</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="374"/>
+        <location filename="../views/camera_basis_view.cpp" line="368"/>
         <source>N given, |N| = %1</source>
         <translation>N dado, |N| = %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="377"/>
+        <location filename="../views/camera_basis_view.cpp" line="371"/>
         <source>V given, |V| = %1</source>
         <translation>V dado, |V| = %1</translation>
     </message>
@@ -363,127 +363,127 @@
 <context>
     <name>rasterlab::CameraBasisView</name>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="439"/>
+        <location filename="../views/camera_basis_view.cpp" line="433"/>
         <source>Previous step</source>
         <translation>Passo anterior</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="443"/>
+        <location filename="../views/camera_basis_view.cpp" line="437"/>
         <source>Next step</source>
         <translation>Próximo passo</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="554"/>
+        <location filename="../views/camera_basis_view.cpp" line="548"/>
         <source>The camera was rejected: %1</source>
         <translation>A câmera foi rejeitada: %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="557"/>
+        <location filename="../views/camera_basis_view.cpp" line="551"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="559"/>
+        <location filename="../views/camera_basis_view.cpp" line="553"/>
         <source>This stage is skipped: %1.</source>
         <translation>Esta etapa é omitida: %1.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="561"/>
+        <location filename="../views/camera_basis_view.cpp" line="555"/>
         <source>the frame has no camera basis</source>
         <translation>o quadro não tem base da câmera</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="568"/>
+        <location filename="../views/camera_basis_view.cpp" line="562"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; From the course camera (C, N, V) Gram-Schmidt makes the orthonormal basis U, V, N of view space. A scene whose draws carry their own model/view matrices (HW2 command files) has no course camera: this stage does nothing for it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Base da câmera.&lt;/b&gt; A partir da câmera do curso (C, N, V), Gram-Schmidt constrói a base ortonormal U, V, N do espaço de vista. Uma cena cujos desenhos trazem suas próprias matrizes de modelo/vista (arquivos de comandos HW2) não tem câmera do curso: esta etapa não faz nada para ela.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="581"/>
+        <location filename="../views/camera_basis_view.cpp" line="575"/>
         <source>N and V are nearly parallel: |V − (V·N) N| / |V| = %1, below %2. The basis is ill-conditioned: a tiny change of N or V turns U and V a lot. Choose a V further from N.</source>
         <translation>N e V são quase paralelos: |V − (V·N) N| / |V| = %1, abaixo de %2. A base é mal condicionada: uma mudança mínima de N ou V gira muito U e V. Escolha um V mais afastado de N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="586"/>
+        <location filename="../views/camera_basis_view.cpp" line="581"/>
         <source>1. N := N / |N| = %1 / %2 = %3</source>
         <translation>1. N := N / |N| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="587"/>
+        <location filename="../views/camera_basis_view.cpp" line="582"/>
         <source>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</source>
         <translation>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="589"/>
+        <location filename="../views/camera_basis_view.cpp" line="584"/>
         <source>3. V := V / |V| = %1 / %2 = %3</source>
         <translation>3. V := V / |V| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="591"/>
+        <location filename="../views/camera_basis_view.cpp" line="586"/>
         <source>4. U := N × V = %1 × %2 = %3</source>
         <translation>4. U := N × V = %1 × %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="594"/>
+        <location filename="../views/camera_basis_view.cpp" line="588"/>
         <source>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; largest %7</source>
         <translation>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; maior %7</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="617"/>
+        <location filename="../views/camera_basis_view.cpp" line="612"/>
         <source>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): rows U, V, N, then (0 0 0 1); the last column is −U·C, −V·C, −N·C.</source>
         <translation>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): linhas U, V, N e depois (0 0 0 1); a última coluna é −U·C, −V·C, −N·C.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="628"/>
+        <location filename="../views/camera_basis_view.cpp" line="623"/>
         <source>&lt;p&gt;Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vértice 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="631"/>
+        <location filename="../views/camera_basis_view.cpp" line="626"/>
         <source>, in front of the camera (z &gt; 0)</source>
         <translation>, à frente da câmera (z &gt; 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="632"/>
+        <location filename="../views/camera_basis_view.cpp" line="627"/>
         <source>, behind the camera (z ≤ 0)</source>
         <translation>, atrás da câmera (z ≤ 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="635"/>
+        <location filename="../views/camera_basis_view.cpp" line="630"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; Gram-Schmidt keeps the direction of N (where the camera looks), removes from V its part along N so that up is perpendicular to the view direction, and completes the frame with U = N × V, the image&apos;s right. viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Base da câmera.&lt;/b&gt; Gram-Schmidt mantém a direção de N (para onde a câmera olha), remove de V sua componente ao longo de N para que o &quot;para cima&quot; fique perpendicular à direção de visão, e completa o referencial com U = N × V, a direita da imagem. viewFromWorld = [U; V; N] (P − C) põe a câmera na origem olhando ao longo de +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="667"/>
+        <location filename="../views/camera_basis_view.cpp" line="662"/>
         <source>Step %1 of 4</source>
         <translation>Passo %1 de 4</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="684"/>
+        <location filename="../views/camera_basis_view.cpp" line="679"/>
         <source>Step forward to normalise N.</source>
         <translation>Avance um passo para normalizar N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="685"/>
+        <location filename="../views/camera_basis_view.cpp" line="680"/>
         <source>Step forward to remove from V its part along N.</source>
         <translation>Avance um passo para remover de V sua componente ao longo de N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="686"/>
+        <location filename="../views/camera_basis_view.cpp" line="681"/>
         <source>Step forward to normalise V.</source>
         <translation>Avance um passo para normalizar V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="687"/>
+        <location filename="../views/camera_basis_view.cpp" line="682"/>
         <source>Step forward to make U = N × V.</source>
         <translation>Avance um passo para obter U = N × V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="688"/>
+        <location filename="../views/camera_basis_view.cpp" line="683"/>
         <source>The basis is complete; the frustum is drawn with it.</source>
         <translation>A base está completa; o frustum é desenhado com ela.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="701"/>
+        <location filename="../views/camera_basis_view.cpp" line="696"/>
         <source>&lt;b&gt;Orthonormality residuals&lt;/b&gt; (0 up to rounding): %1</source>
         <translation>&lt;b&gt;Resíduos de ortonormalidade&lt;/b&gt; (0 a menos de arredondamento): %1</translation>
     </message>
@@ -875,82 +875,87 @@
         <translation>cancelado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="221"/>
+        <location filename="../app/main_window.cpp" line="222"/>
         <source>Stepping</source>
         <translation>Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="235"/>
+        <location filename="../app/main_window.cpp" line="236"/>
         <source>Edit</source>
         <translation>Edição</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="242"/>
+        <location filename="../app/main_window.cpp" line="243"/>
         <source>Breakpoints</source>
         <translation>Pontos de parada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="253"/>
+        <location filename="../app/main_window.cpp" line="254"/>
         <source>1 Camera basis</source>
         <translation>1 Base da câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="257"/>
+        <location filename="../app/main_window.cpp" line="258"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Inspetor de pixel (iluminação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="262"/>
+        <location filename="../app/main_window.cpp" line="263"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 Coordenadas de vista (vértices)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="267"/>
+        <location filename="../app/main_window.cpp" line="268"/>
         <source>3 Normals</source>
         <translation>3 Normais</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="270"/>
+        <location filename="../app/main_window.cpp" line="271"/>
         <source>4 Projection</source>
         <translation>4 Projeção</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="274"/>
+        <location filename="../app/main_window.cpp" line="275"/>
         <source>5 Scan conversion</source>
         <translation>5 Conversão por varredura</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="278"/>
+        <location filename="../app/main_window.cpp" line="279"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="289"/>
+        <location filename="../app/main_window.cpp" line="290"/>
         <source>&amp;File</source>
         <translation>&amp;Arquivo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="999"/>
+        <location filename="../app/main_window.cpp" line="1020"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>avançar, voltar um passo (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1001"/>
+        <location filename="../app/main_window.cpp" line="1022"/>
         <source>Space</source>
         <translation>Barra de espaço</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1001"/>
+        <location filename="../app/main_window.cpp" line="1022"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>reproduzir / pausar (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1007"/>
+        <location filename="../app/main_window.cpp" line="1028"/>
+        <source>let go of the picked pixel (on the image)</source>
+        <translation>soltar o pixel escolhido (na imagem)</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="1029"/>
         <source>presentation mode on / off</source>
         <translation>ligar / desligar o modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1010"/>
+        <location filename="../app/main_window.cpp" line="1032"/>
         <source>save, undo, redo</source>
         <translation>salvar, desfazer, refazer</translation>
     </message>
@@ -959,42 +964,42 @@
         <translation type="vanished">Abrir &amp;objeto...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="298"/>
+        <location filename="../app/main_window.cpp" line="299"/>
         <source>Open &amp;Camera...</source>
         <translation>Abrir &amp;câmera...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="300"/>
+        <location filename="../app/main_window.cpp" line="301"/>
         <source>Ctrl+Shift+C</source>
         <translation>Ctrl+Shift+C</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="302"/>
+        <location filename="../app/main_window.cpp" line="303"/>
         <source>Open &amp;Lighting...</source>
         <translation>Abrir &amp;iluminação...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="303"/>
+        <location filename="../app/main_window.cpp" line="304"/>
         <source>Ctrl+Shift+L</source>
         <translation>Ctrl+Shift+L</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="305"/>
+        <location filename="../app/main_window.cpp" line="306"/>
         <source>Open Command &amp;File...</source>
         <translation>Abrir arquivo de co&amp;mandos...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="306"/>
+        <location filename="../app/main_window.cpp" line="307"/>
         <source>Ctrl+Shift+O</source>
         <translation>Ctrl+Shift+O</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="308"/>
+        <location filename="../app/main_window.cpp" line="309"/>
         <source>Open &amp;Recent</source>
         <translation>Abrir recen&amp;tes</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="310"/>
+        <location filename="../app/main_window.cpp" line="311"/>
         <source>&amp;Default Scene</source>
         <translation>Cena &amp;padrão</translation>
     </message>
@@ -1003,112 +1008,112 @@
         <translation type="vanished">&amp;Formatos dos arquivos do curso</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="321"/>
+        <location filename="../app/main_window.cpp" line="322"/>
         <source>&amp;Camera</source>
         <translation>&amp;Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="333"/>
+        <location filename="../app/main_window.cpp" line="334"/>
         <source>&amp;Lighting</source>
         <translation>&amp;Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="349"/>
+        <location filename="../app/main_window.cpp" line="350"/>
         <source>&amp;Export PNG...</source>
         <translation>&amp;Exportar PNG...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="350"/>
+        <location filename="../app/main_window.cpp" line="351"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="352"/>
+        <location filename="../app/main_window.cpp" line="353"/>
         <source>Export &amp;More</source>
         <translation>E&amp;xportar mais</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="355"/>
+        <location filename="../app/main_window.cpp" line="356"/>
         <source>Image as &amp;Displayed...</source>
         <translation>Imagem como &amp;exibida...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="356"/>
+        <location filename="../app/main_window.cpp" line="357"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="357"/>
+        <location filename="../app/main_window.cpp" line="358"/>
         <source>&amp;Colour Buffer at the Cursor...</source>
         <translation>Buffer de &amp;cor no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="359"/>
+        <location filename="../app/main_window.cpp" line="360"/>
         <source>D&amp;epth Buffer at the Cursor...</source>
         <translation>Buffer de pro&amp;fundidade no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="361"/>
+        <location filename="../app/main_window.cpp" line="362"/>
         <source>&amp;Normal Buffer...</source>
         <translation>Buffer de &amp;normais...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="362"/>
+        <location filename="../app/main_window.cpp" line="363"/>
         <source>A &amp;View as Displayed</source>
         <translation>Um &amp;painel como exibido</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="366"/>
+        <location filename="../app/main_window.cpp" line="367"/>
         <source>Export View</source>
         <translation>Exportar painel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="371"/>
+        <location filename="../app/main_window.cpp" line="372"/>
         <source>&amp;Stepping Sequence...</source>
         <translation>&amp;Sequência de passos...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="373"/>
+        <location filename="../app/main_window.cpp" line="374"/>
         <source>&amp;Quit</source>
         <translation>Sai&amp;r</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="376"/>
+        <location filename="../app/main_window.cpp" line="377"/>
         <source>&amp;Edit</source>
         <translation>&amp;Editar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="380"/>
+        <location filename="../app/main_window.cpp" line="381"/>
         <source>&amp;View</source>
         <translation>E&amp;xibir</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="381"/>
+        <location filename="../app/main_window.cpp" line="382"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Ajustar à janela</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="382"/>
+        <location filename="../app/main_window.cpp" line="383"/>
         <source>Ctrl+0</source>
         <translation>Ctrl+0</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="384"/>
+        <location filename="../app/main_window.cpp" line="385"/>
         <source>&amp;Actual Size</source>
         <translation>&amp;Tamanho real</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="385"/>
+        <location filename="../app/main_window.cpp" line="386"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="386"/>
+        <location filename="../app/main_window.cpp" line="387"/>
         <source>Zoom &amp;In</source>
         <translation>A&amp;umentar zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="388"/>
+        <location filename="../app/main_window.cpp" line="389"/>
         <source>Zoom &amp;Out</source>
         <translation>&amp;Diminuir zoom</translation>
     </message>
@@ -1117,7 +1122,7 @@
         <translation type="vanished">&amp;Painéis</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="395"/>
+        <location filename="../app/main_window.cpp" line="396"/>
         <source>Reset &amp;Layout</source>
         <translation>Restaurar &amp;layout</translation>
     </message>
@@ -1126,12 +1131,12 @@
         <translation type="vanished">&amp;Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="402"/>
+        <location filename="../app/main_window.cpp" line="403"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="407"/>
+        <location filename="../app/main_window.cpp" line="408"/>
         <source>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</source>
         <translation>Texto maior, sobreposições mais grossas, alto contraste; as teclas do passador de slides avançam os passos (F5 ou Esc)</translation>
     </message>
@@ -1140,12 +1145,12 @@
         <translation type="vanished">Idi&amp;oma</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="418"/>
+        <location filename="../app/main_window.cpp" line="419"/>
         <source>The System&apos;s</source>
         <translation>Do sistema</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="435"/>
+        <location filename="../app/main_window.cpp" line="436"/>
         <source>S&amp;tep</source>
         <translation>&amp;Passo a passo</translation>
     </message>
@@ -1158,32 +1163,32 @@
         <translation type="vanished">&amp;Etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="472"/>
+        <location filename="../app/main_window.cpp" line="473"/>
         <source>Pick the Pixel Under the &amp;Mouse</source>
         <translation>Escolher o pixel sob o &amp;mouse</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="473"/>
+        <location filename="../app/main_window.cpp" line="474"/>
         <source>Ctrl+G</source>
         <translation>Ctrl+G</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="479"/>
+        <location filename="../app/main_window.cpp" line="480"/>
         <source>&amp;Shading</source>
         <translation>&amp;Sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="483"/>
+        <location filename="../app/main_window.cpp" line="484"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (por pixel)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="484"/>
+        <location filename="../app/main_window.cpp" line="485"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (por vértice)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="485"/>
+        <location filename="../app/main_window.cpp" line="486"/>
         <source>&amp;Flat (per triangle)</source>
         <translation>&amp;Flat (por triângulo)</translation>
     </message>
@@ -1192,7 +1197,7 @@
         <translation type="vanished">F10, Page Down, seta para a direita (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="996"/>
+        <location filename="../app/main_window.cpp" line="1017"/>
         <source>step forward</source>
         <translation>avançar um passo</translation>
     </message>
@@ -1201,7 +1206,7 @@
         <translation type="vanished">Shift+F10, Page Up, seta para a esquerda (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="997"/>
+        <location filename="../app/main_window.cpp" line="1018"/>
         <source>step back</source>
         <translation>voltar um passo</translation>
     </message>
@@ -1210,7 +1215,7 @@
         <translation type="vanished">F6, barra de espaço (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1000"/>
+        <location filename="../app/main_window.cpp" line="1021"/>
         <source>play / pause</source>
         <translation>reproduzir / pausar</translation>
     </message>
@@ -1219,7 +1224,7 @@
         <translation type="vanished">Ctrl+Home, Ctrl+End</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1002"/>
+        <location filename="../app/main_window.cpp" line="1023"/>
         <source>jump to the start / the end of the frame</source>
         <translation>ir ao início / ao fim do quadro</translation>
     </message>
@@ -1228,7 +1233,7 @@
         <translation type="vanished">F8</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1003"/>
+        <location filename="../app/main_window.cpp" line="1024"/>
         <source>continue to the next breakpoint</source>
         <translation>continuar até o próximo ponto de parada</translation>
     </message>
@@ -1237,7 +1242,7 @@
         <translation type="vanished">Ctrl+Shift+1 ... 5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1004"/>
+        <location filename="../app/main_window.cpp" line="1025"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>avançar por etapa, triângulo, linha de varredura, segmento, pixel</translation>
     </message>
@@ -1246,17 +1251,17 @@
         <translation type="vanished">Alt+1 ... 7</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1005"/>
+        <location filename="../app/main_window.cpp" line="1026"/>
         <source>show a stage&apos;s view</source>
         <translation>mostrar o painel de uma etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1006"/>
+        <location filename="../app/main_window.cpp" line="1027"/>
         <source>Click, arrows</source>
         <translation>Clique, setas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1006"/>
+        <location filename="../app/main_window.cpp" line="1027"/>
         <source>pick a pixel, move it by one</source>
         <translation>escolher um pixel, movê-lo de um em um</translation>
     </message>
@@ -1273,7 +1278,7 @@
         <translation type="vanished">Ctrl+O, Ctrl+E, Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1009"/>
+        <location filename="../app/main_window.cpp" line="1031"/>
         <source>open, export the image, export it as displayed</source>
         <translation>abrir, exportar a imagem, exportá-la como exibida</translation>
     </message>
@@ -1282,12 +1287,12 @@
         <translation type="vanished">Ctrl+0, Ctrl+1, Ctrl++, Ctrl+-</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1012"/>
+        <location filename="../app/main_window.cpp" line="1034"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>ajustar, tamanho real, aumentar zoom, diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1014"/>
+        <location filename="../app/main_window.cpp" line="1036"/>
         <source>Keyboard Shortcuts</source>
         <translation>Atalhos de teclado</translation>
     </message>
@@ -1296,47 +1301,47 @@
         <translation type="vanished">Alt+%1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="499"/>
+        <location filename="../app/main_window.cpp" line="500"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Regras de rasterização</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="503"/>
+        <location filename="../app/main_window.cpp" line="504"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Curso (semente 000: vértices em pixels inteiros, interpolação no espaço da tela)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="505"/>
+        <location filename="../app/main_window.cpp" line="506"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>Como uma &amp;GPU (vértices em 1/256 de pixel, centros dos pixels, regra top-left, correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="507"/>
+        <location filename="../app/main_window.cpp" line="508"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (as imagens de referência da semente 001)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="519"/>
+        <location filename="../app/main_window.cpp" line="520"/>
         <source>&amp;Help</source>
         <translation>A&amp;juda</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="522"/>
+        <location filename="../app/main_window.cpp" line="523"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="230"/>
+        <location filename="../app/main_window.cpp" line="231"/>
         <source>Messages</source>
         <translation>Mensagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="239"/>
+        <location filename="../app/main_window.cpp" line="240"/>
         <source>Scene</source>
         <translation>Cena</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="247"/>
+        <location filename="../app/main_window.cpp" line="248"/>
         <source>Accuracy</source>
         <translation>Exatidão</translation>
     </message>
@@ -1349,7 +1354,7 @@
         <translation type="vanished">%1 - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="714"/>
+        <location filename="../app/main_window.cpp" line="735"/>
         <location filename="../app/main_window_export.cpp" line="35"/>
         <location filename="../app/main_window_export.cpp" line="119"/>
         <location filename="../app/main_window_export.cpp" line="150"/>
@@ -1357,13 +1362,13 @@
         <translation>%1: não foi possível exportar a imagem: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="715"/>
+        <location filename="../app/main_window.cpp" line="736"/>
         <location filename="../app/main_window_export.cpp" line="23"/>
         <source>nothing has been rendered yet</source>
         <translation>nada foi renderizado ainda</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="718"/>
+        <location filename="../app/main_window.cpp" line="739"/>
         <location filename="../app/main_window_export.cpp" line="38"/>
         <location filename="../app/main_window_export.cpp" line="51"/>
         <location filename="../app/main_window_export.cpp" line="77"/>
@@ -1372,144 +1377,144 @@
         <translation>Exportado %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="741"/>
+        <location filename="../app/main_window.cpp" line="762"/>
         <source>rendering...</source>
         <translation>renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="741"/>
+        <location filename="../app/main_window.cpp" line="762"/>
         <source>%1, rendering...</source>
         <translation>%1, renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="739"/>
-        <location filename="../app/main_window.cpp" line="910"/>
+        <location filename="../app/main_window.cpp" line="760"/>
+        <location filename="../app/main_window.cpp" line="931"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="290"/>
+        <location filename="../app/main_window.cpp" line="291"/>
         <source>&amp;Open...</source>
         <translation>&amp;Abrir...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="293"/>
+        <location filename="../app/main_window.cpp" line="294"/>
         <source>A course camera, lighting or object file, or a command file</source>
         <translation>Um arquivo de câmera, iluminação ou objeto do curso, ou um arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="294"/>
+        <location filename="../app/main_window.cpp" line="295"/>
         <source>Open O&amp;bject...</source>
         <translation>Abrir &amp;objeto...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="296"/>
+        <location filename="../app/main_window.cpp" line="297"/>
         <source>Ctrl+Shift+B</source>
         <translation>Ctrl+Shift+B</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="319"/>
+        <location filename="../app/main_window.cpp" line="320"/>
         <source>Course File La&amp;youts</source>
         <translation>&amp;Formatos dos arquivos do curso</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="391"/>
+        <location filename="../app/main_window.cpp" line="392"/>
         <source>Pa&amp;nels</source>
         <translation>&amp;Painéis</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="399"/>
+        <location filename="../app/main_window.cpp" line="400"/>
         <source>I&amp;mage</source>
         <translation>&amp;Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="413"/>
+        <location filename="../app/main_window.cpp" line="414"/>
         <source>Lan&amp;guage</source>
         <translation>Idi&amp;oma</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="444"/>
+        <location filename="../app/main_window.cpp" line="445"/>
         <source>Step B&amp;y</source>
         <translation>Avançar &amp;por</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="446"/>
+        <location filename="../app/main_window.cpp" line="447"/>
         <source>S&amp;tage</source>
         <translation>&amp;Etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="520"/>
+        <location filename="../app/main_window.cpp" line="521"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="579"/>
+        <location filename="../app/main_window.cpp" line="580"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Modo de apresentação: F5 ou Esc para sair; Page Down, seta para a direita e barra de espaço avançam e reproduzem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="695"/>
+        <location filename="../app/main_window.cpp" line="716"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="749"/>
+        <location filename="../app/main_window.cpp" line="770"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparando o passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="749"/>
+        <location filename="../app/main_window.cpp" line="770"/>
         <source>Rendering</source>
         <translation>Renderizando</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="861"/>
+        <location filename="../app/main_window.cpp" line="882"/>
         <source>Error: %1</source>
         <translation>Erro: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="877"/>
+        <location filename="../app/main_window.cpp" line="898"/>
         <source>Files</source>
         <translation>Arquivos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="880"/>
+        <location filename="../app/main_window.cpp" line="901"/>
         <source>Command file</source>
         <translation>Arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="881"/>
+        <location filename="../app/main_window.cpp" line="902"/>
         <source>Image</source>
         <translation>Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="883"/>
+        <location filename="../app/main_window.cpp" line="904"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vértices, %2 triângulos em %3 desenhos; %4 x %5 pixels; %6 luzes</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="893"/>
+        <location filename="../app/main_window.cpp" line="914"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="894"/>
+        <location filename="../app/main_window.cpp" line="915"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="895"/>
+        <location filename="../app/main_window.cpp" line="916"/>
         <source>Object</source>
         <translation>Objeto</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="897"/>
+        <location filename="../app/main_window.cpp" line="918"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vértices, %2 triângulos; %3 x %4 pixels, sombreamento %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="215"/>
-        <location filename="../app/main_window.cpp" line="904"/>
+        <location filename="../app/main_window.cpp" line="216"/>
+        <location filename="../app/main_window.cpp" line="925"/>
         <source>Stages</source>
         <translation>Etapas</translation>
     </message>
@@ -1542,7 +1547,7 @@
         <translation type="vanished">Tonalização</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="911"/>
+        <location filename="../app/main_window.cpp" line="932"/>
         <source>skipped: %1</source>
         <translation>omitida: %1</translation>
     </message>
@@ -1551,80 +1556,80 @@
         <translation type="vanished">maior resíduo de ortonormalidade: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="914"/>
+        <location filename="../app/main_window.cpp" line="935"/>
         <source>Counts</source>
         <translation>Contagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="915"/>
+        <location filename="../app/main_window.cpp" line="936"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triângulos recortados no plano próximo: %1; atrás da câmera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="918"/>
+        <location filename="../app/main_window.cpp" line="939"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Triângulos de área zero: %1 no espaço de vista, %2 na tela&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="921"/>
+        <location filename="../app/main_window.cpp" line="942"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragmentos testados: %1; escritos: %2; rejeitados: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="925"/>
+        <location filename="../app/main_window.cpp" line="946"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels sombreados: %1; normais voltadas para o observador: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; limitados a 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="945"/>
+        <location filename="../app/main_window.cpp" line="966"/>
         <source>empty (+inf)</source>
         <translation>vazio (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="946"/>
+        <location filename="../app/main_window.cpp" line="967"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   profundidade %6</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="962"/>
+        <location filename="../app/main_window.cpp" line="983"/>
         <source>Open Command File</source>
         <translation>Abrir arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="963"/>
+        <location filename="../app/main_window.cpp" line="984"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Arquivos de comandos (*.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="969"/>
+        <location filename="../app/main_window.cpp" line="990"/>
         <source>Open</source>
         <translation>Abrir</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="969"/>
+        <location filename="../app/main_window.cpp" line="990"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Arquivos de cena (*.byu *.cfg *.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="979"/>
+        <location filename="../app/main_window.cpp" line="1000"/>
         <source>Export PNG</source>
         <translation>Exportar PNG</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="367"/>
-        <location filename="../app/main_window.cpp" line="979"/>
+        <location filename="../app/main_window.cpp" line="368"/>
+        <location filename="../app/main_window.cpp" line="1000"/>
         <location filename="../app/main_window_export.cpp" line="137"/>
         <location filename="../app/main_window_export.cpp" line="145"/>
         <source>PNG images (*.png)</source>
         <translation>Imagens PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="984"/>
+        <location filename="../app/main_window.cpp" line="1005"/>
         <source>About RasterLab</source>
         <translation>Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="985"/>
+        <location filename="../app/main_window.cpp" line="1006"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;O pipeline clássico de rasterização por software, etapa por etapa: base da câmera, coordenadas de vista, normais, projeção, conversão por varredura, teste de profundidade e sombreamento.&lt;/p&gt;</translation>
     </message>
@@ -1695,27 +1700,27 @@
         <translation>No máximo quantas imagens (uma por passo, na granularidade atual)?</translation>
     </message>
     <message>
-        <location filename="../app/main_window_files.cpp" line="110"/>
+        <location filename="../app/main_window_files.cpp" line="116"/>
         <source>%1: no course camera, lighting, object or command file in this folder</source>
         <translation>%1: nenhum arquivo de câmera, iluminação, objeto ou comandos do curso nesta pasta</translation>
     </message>
     <message>
-        <location filename="../app/main_window_files.cpp" line="114"/>
+        <location filename="../app/main_window_files.cpp" line="120"/>
         <source>%1: no such file</source>
         <translation>%1: arquivo inexistente</translation>
     </message>
     <message>
-        <location filename="../app/main_window_files.cpp" line="129"/>
+        <location filename="../app/main_window_files.cpp" line="138"/>
         <source>%1: not a course camera, lighting or object file, nor a command file (expected a .byu object, a camera or lighting in one of the course layouts, or png/xyz/tri commands)</source>
         <translation>%1: não é um arquivo de câmera, iluminação ou objeto do curso, nem um arquivo de comandos (esperava-se um objeto .byu, uma câmera ou iluminação num dos formatos do curso, ou comandos png/xyz/tri)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_files.cpp" line="169"/>
+        <location filename="../app/main_window_files.cpp" line="178"/>
         <source>&amp;Clear the List</source>
         <translation>&amp;Limpar a lista</translation>
     </message>
     <message>
-        <location filename="../app/main_window_files.cpp" line="240"/>
+        <location filename="../app/main_window_files.cpp" line="249"/>
         <source>%1 changed on disk: read again</source>
         <translation>%1 mudou no disco: lido de novo</translation>
     </message>
@@ -1723,218 +1728,218 @@
 <context>
     <name>rasterlab::NormalsView</name>
     <message>
-        <location filename="../views/normals_view.cpp" line="180"/>
+        <location filename="../views/normals_view.cpp" line="169"/>
         <source>the draw is unlit: shading reads no normal</source>
         <translation>o desenho não é iluminado: o sombreamento não lê nenhuma normal</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="214"/>
+        <location filename="../views/normals_view.cpp" line="194"/>
         <source>the interpolated normal is zero</source>
         <translation>a normal interpolada é nula</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="446"/>
+        <location filename="../views/normals_view.cpp" line="423"/>
         <source>Triangle normals</source>
         <translation>Normais dos triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="449"/>
+        <location filename="../views/normals_view.cpp" line="426"/>
         <source>Vertex normals</source>
         <translation>Normais dos vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="452"/>
+        <location filename="../views/normals_view.cpp" line="429"/>
         <source>Only on triangles that are seen</source>
         <translation>Só nos triângulos visíveis</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="455"/>
+        <location filename="../views/normals_view.cpp" line="432"/>
         <source>Hairs only on the triangles that hold a pixel at the end of the frame, and on their corners</source>
         <translation>Segmentos de normal só nos triângulos que ocupam um pixel no fim do quadro, e nos seus vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="482"/>
+        <location filename="../views/normals_view.cpp" line="459"/>
         <source>Per pixel at the stepping cursor, the unit normal shading uses there: the vertex normals interpolated with the pixel&apos;s barycentrics and normalised (the triangle&apos;s normal for flat shading), turned toward the viewer as the course does before lighting; shown as RGB = (n + 1) / 2. Red grows to the right, green upward, blue away from the camera: turned normals face the camera, so blue is mostly below 128. Black: no triangle.</source>
         <translation>Por pixel, no cursor de passo, a normal unitária que o sombreamento usa ali: as normais dos vértices interpoladas com as coordenadas baricêntricas do pixel e normalizadas (a normal do triângulo no sombreamento flat), voltadas para o observador como o curso faz antes da iluminação; mostrada como RGB = (n + 1) / 2. O vermelho cresce para a direita, o verde para cima, o azul para longe da câmera: as normais voltadas encaram a câmera, então o azul fica quase sempre abaixo de 128. Preto: nenhum triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="496"/>
+        <location filename="../views/normals_view.cpp" line="473"/>
         <source>Mesh and normals</source>
         <translation>Malha e normais</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="497"/>
+        <location filename="../views/normals_view.cpp" line="474"/>
         <source>Normal map</source>
         <translation>Mapa de normais</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="884"/>
+        <location filename="../views/normals_view.cpp" line="840"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="890"/>
+        <location filename="../views/normals_view.cpp" line="846"/>
         <source>front faces %1</source>
         <translation>faces frontais %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="892"/>
-        <location filename="../views/normals_view.cpp" line="896"/>
+        <location filename="../views/normals_view.cpp" line="848"/>
+        <location filename="../views/normals_view.cpp" line="852"/>
         <source>(%1 hidden, left out by culling)</source>
         <translation>(%1 ocultas, eliminadas pelo descarte)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="894"/>
+        <location filename="../views/normals_view.cpp" line="850"/>
         <source>back faces (n · pView &amp;gt; 0) %1</source>
         <translation>faces traseiras (n · pView &amp;gt; 0) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="899"/>
+        <location filename="../views/normals_view.cpp" line="855"/>
         <source>inconsistent winding: %1 triangles, %2 edges run the same way by two triangles</source>
         <translation>orientação inconsistente: %1 triângulos, %2 arestas percorridas no mesmo sentido por dois triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="906"/>
+        <location filename="../views/normals_view.cpp" line="862"/>
         <source>%1% of the pixels seen are back faces: the surface is closed and its normals point inward in view space (the course&apos;s [U; V; N] mirrors, so a file wound counter-clockwise seen from outside turns over). Shading turns every normal toward the viewer: the image does not change.</source>
         <translation>%1% dos pixels visíveis são faces traseiras: a superfície é fechada e suas normais apontam para dentro no espaço de vista (a matriz [U; V; N] do curso espelha, então um arquivo orientado no sentido anti-horário visto de fora fica invertido). O sombreamento volta toda normal para o observador: a imagem não muda.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="913"/>
+        <location filename="../views/normals_view.cpp" line="869"/>
         <source>No normals: %1.</source>
         <translation>Sem normais: %1.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="918"/>
+        <location filename="../views/normals_view.cpp" line="874"/>
         <source>triangle normals</source>
         <translation>normais dos triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="919"/>
+        <location filename="../views/normals_view.cpp" line="875"/>
         <source>vertex normals</source>
         <translation>normais dos vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="920"/>
+        <location filename="../views/normals_view.cpp" line="876"/>
         <source>length L = %1 (%2% of the mesh&apos;s size)</source>
         <translation>comprimento L = %1 (%2% do tamanho da malha)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="925"/>
+        <location filename="../views/normals_view.cpp" line="881"/>
         <source>on the %1 triangles seen and their corners</source>
         <translation>nos %1 triângulos visíveis e seus vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="928"/>
+        <location filename="../views/normals_view.cpp" line="884"/>
         <source>Large mesh: one triangle normal in %1 and one vertex normal in %2 are drawn; the selected triangle&apos;s always.</source>
         <translation>Malha grande: desenha-se uma normal de triângulo a cada %1 e uma normal de vértice a cada %2; as do triângulo selecionado, sempre.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="935"/>
+        <location filename="../views/normals_view.cpp" line="891"/>
         <source>One triangle in %1 of the wireframe is drawn.</source>
         <translation>Desenha-se um triângulo do aramado a cada %1.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="942"/>
+        <location filename="../views/normals_view.cpp" line="898"/>
         <source>&lt;p&gt;No frame yet.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Nenhum quadro ainda.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="946"/>
+        <location filename="../views/normals_view.cpp" line="902"/>
         <source>&lt;p&gt;&lt;b&gt;Stage 3, normals&lt;/b&gt;, in view space: each triangle&apos;s normal n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, and each vertex&apos;s normal the normalised sum of the normals of the triangles around it. A triangle faces away from the camera (at the origin) when n · P1 &amp;gt; 0; the course turns such normals toward the viewer when it shades.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Etapa 3, normais&lt;/b&gt;, no espaço de vista: a normal de cada triângulo é n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, e a normal de cada vértice é a soma normalizada das normais dos triângulos ao seu redor. Um triângulo está de costas para a câmera (na origem) quando n · P1 &amp;gt; 0; o curso volta essas normais para o observador ao sombrear.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="953"/>
+        <location filename="../views/normals_view.cpp" line="909"/>
         <source>&lt;p&gt;Skipped for this frame: %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Omitida neste quadro: %1.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="968"/>
+        <location filename="../views/normals_view.cpp" line="924"/>
         <source>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (vertices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</source>
         <translation>&lt;p&gt;&lt;b&gt;Triângulo %1&lt;/b&gt; (vértices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="975"/>
+        <location filename="../views/normals_view.cpp" line="931"/>
         <source> = %1, length %2&lt;br&gt;</source>
         <translation> = %1, comprimento %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="979"/>
+        <location filename="../views/normals_view.cpp" line="935"/>
         <source>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</source>
         <translation>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="981"/>
+        <location filename="../views/normals_view.cpp" line="937"/>
         <source>a back face, drawn in red</source>
         <translation>uma face traseira, desenhada em vermelho</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="981"/>
+        <location filename="../views/normals_view.cpp" line="937"/>
         <source>a front face</source>
         <translation>uma face frontal</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="983"/>
+        <location filename="../views/normals_view.cpp" line="939"/>
         <source>a degenerate triangle: no normal.&lt;/p&gt;</source>
         <translation>um triângulo degenerado: sem normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="988"/>
+        <location filename="../views/normals_view.cpp" line="944"/>
         <source>&lt;p&gt;It runs an edge in the same direction as a neighbour does: the two are wound inconsistently (magenta), and one of their normals points the wrong way.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Ele percorre uma aresta no mesmo sentido que um vizinho: os dois têm orientações inconsistentes (magenta), e uma das suas normais aponta para o lado errado.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="993"/>
+        <location filename="../views/normals_view.cpp" line="949"/>
         <source>&lt;p&gt;Vertex normals: N1 = %1 (vertex %2), N2 = %3 (vertex %4), N3 = %5 (vertex %6)&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normais dos vértices: N1 = %1 (vértice %2), N2 = %3 (vértice %4), N3 = %5 (vértice %6)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1001"/>
+        <location filename="../views/normals_view.cpp" line="957"/>
         <source>&lt;p&gt;Pick a pixel (here or in any image) to select its triangle and see its normal worked out.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Escolha um pixel (aqui ou em qualquer imagem) para selecionar seu triângulo e ver o cálculo da sua normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1011"/>
+        <location filename="../views/normals_view.cpp" line="967"/>
         <source>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </source>
         <translation>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1013"/>
+        <location filename="../views/normals_view.cpp" line="969"/>
         <source>no triangle holds it at the cursor (black in the normal map).&lt;/p&gt;</source>
         <translation>nenhum triângulo o ocupa no cursor (preto no mapa de normais).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1015"/>
+        <location filename="../views/normals_view.cpp" line="971"/>
         <source>no normal: %1 (grey in the normal map).&lt;/p&gt;</source>
         <translation>sem normal: %1 (cinza no mapa de normais).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1018"/>
+        <location filename="../views/normals_view.cpp" line="974"/>
         <source>the triangle&apos;s normal (flat) %1</source>
         <translation>a normal do triângulo (flat) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1020"/>
+        <location filename="../views/normals_view.cpp" line="976"/>
         <source>N = α N1 + β N2 + γ N3 with (α, β, γ) = %1: %2, normalised %3</source>
         <translation>N = α N1 + β N2 + γ N3 com (α, β, γ) = %1: %2, normalizada %3</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1024"/>
+        <location filename="../views/normals_view.cpp" line="980"/>
         <source>; V · N &amp;lt; 0, turned toward the viewer: &lt;b&gt;%1&lt;/b&gt;</source>
         <translation>; V · N &amp;lt; 0, voltada para o observador: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1027"/>
+        <location filename="../views/normals_view.cpp" line="983"/>
         <source>. Colour (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</source>
         <translation>. Cor (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1046"/>
+        <location filename="../views/normals_view.cpp" line="1002"/>
         <source>x %1, y %2: no triangle</source>
         <translation>x %1, y %2: nenhum triângulo</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1050"/>
+        <location filename="../views/normals_view.cpp" line="1006"/>
         <source>x %1, y %2: triangle %3, N = %4, colour (%5, %6, %7)</source>
         <translation>x %1, y %2: triângulo %3, N = %4, cor (%5, %6, %7)</translation>
     </message>
@@ -1942,393 +1947,393 @@
 <context>
     <name>rasterlab::PixelInspector</name>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="206"/>
+        <location filename="../views/pixel_inspector.cpp" line="141"/>
         <source>%1 = byte 255</source>
         <translation>%1 = byte 255</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="260"/>
+        <location filename="../views/pixel_inspector.cpp" line="195"/>
         <source>no normal</source>
         <translation>sem normal</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="332"/>
+        <location filename="../views/pixel_inspector.cpp" line="267"/>
         <source>in the plane of N and L</source>
         <translation>no plano de N e L</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="356"/>
+        <location filename="../views/pixel_inspector.cpp" line="291"/>
         <source>Step</source>
         <translation>Passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="356"/>
+        <location filename="../views/pixel_inspector.cpp" line="291"/>
         <source>Triangle</source>
         <translation>Triângulo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="356"/>
+        <location filename="../views/pixel_inspector.cpp" line="291"/>
         <source>Depth test</source>
         <translation>Teste de profundidade</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="356"/>
+        <location filename="../views/pixel_inspector.cpp" line="291"/>
         <source>Before</source>
         <translation>Antes</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="356"/>
+        <location filename="../views/pixel_inspector.cpp" line="291"/>
         <source>After</source>
         <translation>Depois</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="356"/>
+        <location filename="../views/pixel_inspector.cpp" line="291"/>
         <source>Result</source>
         <translation>Resultado</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="366"/>
+        <location filename="../views/pixel_inspector.cpp" line="301"/>
         <source>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</source>
         <translation>▶ ocupa o pixel no cursor de passo; as linhas cinza ainda não foram alcançadas. Selecione uma linha para ver sua iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="466"/>
+        <location filename="../views/pixel_inspector.cpp" line="401"/>
         <source>Pick a pixel on the image to see its history.</source>
         <translation>Escolha um pixel na imagem para ver seu histórico.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="489"/>
+        <location filename="../views/pixel_inspector.cpp" line="424"/>
         <source>written</source>
         <translation>escrito</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="497"/>
+        <location filename="../views/pixel_inspector.cpp" line="432"/>
         <source>rejected: the depth is not a number</source>
         <translation>rejeitado: a profundidade não é um número</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="499"/>
+        <location filename="../views/pixel_inspector.cpp" line="434"/>
         <source>rejected: as far, the earlier keeps it</source>
         <translation>rejeitado: mesma distância, o anterior fica</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="501"/>
+        <location filename="../views/pixel_inspector.cpp" line="436"/>
         <source>rejected: farther</source>
         <translation>rejeitado: mais distante</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="504"/>
+        <location filename="../views/pixel_inspector.cpp" line="439"/>
         <source>%1 outside [0, 1]</source>
         <translation>%1 fora de [0, 1]</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="505"/>
+        <location filename="../views/pixel_inspector.cpp" line="440"/>
         <source>discarded: depth outside [0, 1]</source>
         <translation>descartado: profundidade fora de [0, 1]</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="513"/>
+        <location filename="../views/pixel_inspector.cpp" line="448"/>
         <source>cleared to %1</source>
         <translation>limpo com %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="514"/>
+        <location filename="../views/pixel_inspector.cpp" line="449"/>
         <source>the background</source>
         <translation>o fundo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="520"/>
+        <location filename="../views/pixel_inspector.cpp" line="455"/>
         <source>the final pixel</source>
         <translation>o pixel final</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="549"/>
+        <location filename="../views/pixel_inspector.cpp" line="490"/>
         <source>Preparing the stepping of this frame: the pixel&apos;s history follows.</source>
         <translation>Preparando o passo a passo deste quadro: o histórico do pixel vem a seguir.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="558"/>
+        <location filename="../views/pixel_inspector.cpp" line="499"/>
         <source>The frame could not be traced again: %1</source>
         <translation>Não foi possível rastrear o quadro de novo: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="608"/>
+        <location filename="../views/pixel_inspector.cpp" line="538"/>
         <source>depth %1</source>
         <translation>profundidade %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="610"/>
+        <location filename="../views/pixel_inspector.cpp" line="540"/>
         <source>none</source>
         <translation>nenhum</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="611"/>
+        <location filename="../views/pixel_inspector.cpp" line="541"/>
         <source>depth %1 (cleared)</source>
         <translation>profundidade %1 (valor de limpeza)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="626"/>
+        <location filename="../views/pixel_inspector.cpp" line="556"/>
         <source>Nothing drew here: the pixel keeps the background %1.</source>
         <translation>Nada foi desenhado aqui: o pixel mantém o fundo %1.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="635"/>
+        <location filename="../views/pixel_inspector.cpp" line="565"/>
         <source>The only fragment was rejected: the pixel keeps the background.</source>
         <translation>O único fragmento foi rejeitado: o pixel mantém o fundo.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="636"/>
+        <location filename="../views/pixel_inspector.cpp" line="566"/>
         <source>Every fragment was rejected (%1): the pixel keeps the background.</source>
         <translation>Todos os fragmentos foram rejeitados (%1): o pixel mantém o fundo.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="640"/>
+        <location filename="../views/pixel_inspector.cpp" line="570"/>
         <source>Written by triangle %1</source>
         <translation>Escrito pelo triângulo %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="642"/>
+        <location filename="../views/pixel_inspector.cpp" line="572"/>
         <source>over 1 earlier write</source>
         <translation>sobre 1 escrita anterior</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="644"/>
+        <location filename="../views/pixel_inspector.cpp" line="574"/>
         <source>over %1 earlier writes</source>
         <translation>sobre %1 escritas anteriores</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="646"/>
+        <location filename="../views/pixel_inspector.cpp" line="576"/>
         <source>1 fragment rejected</source>
         <translation>1 fragmento rejeitado</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="648"/>
+        <location filename="../views/pixel_inspector.cpp" line="578"/>
         <source>%1 fragments rejected</source>
         <translation>%1 fragmentos rejeitados</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="664"/>
+        <location filename="../views/pixel_inspector.cpp" line="594"/>
         <source>black: the vertex colours mixed here are black</source>
         <translation>preto: as cores dos vértices misturadas aqui são pretas</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="666"/>
+        <location filename="../views/pixel_inspector.cpp" line="596"/>
         <source>black: the object colour is black</source>
         <translation>preto: a cor do objeto é preta</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="668"/>
+        <location filename="../views/pixel_inspector.cpp" line="598"/>
         <source>black: the light takes away what the ambient term adds</source>
         <translation>preto: a luz tira o que o termo ambiente acrescenta</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="670"/>
+        <location filename="../views/pixel_inspector.cpp" line="600"/>
         <source>black: zero normal and no ambient</source>
         <translation>preto: normal nula e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="672"/>
+        <location filename="../views/pixel_inspector.cpp" line="602"/>
         <source>black: no light and no ambient</source>
         <translation>preto: sem luz e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="674"/>
+        <location filename="../views/pixel_inspector.cpp" line="604"/>
         <source>black: the light is at the point and no ambient</source>
         <translation>preto: a luz está no próprio ponto e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="676"/>
+        <location filename="../views/pixel_inspector.cpp" line="606"/>
         <source>black: N.L &lt; 0 and no ambient</source>
         <translation>preto: N.L &lt; 0 e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="679"/>
+        <location filename="../views/pixel_inspector.cpp" line="609"/>
         <source>black: the diffuse and specular terms are 0 here and there is no ambient</source>
         <translation>preto: os termos difuso e especular valem 0 aqui e não há ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="798"/>
+        <location filename="../views/pixel_inspector.cpp" line="733"/>
         <source>N flipped toward the viewer: V.N &lt; 0, so N := −N before lighting.</source>
         <translation>N invertida para o observador: V.N &lt; 0, então N := −N antes da iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="801"/>
+        <location filename="../views/pixel_inspector.cpp" line="736"/>
         <source>Zero normal: only degenerate triangles meet here, or the vertex normals cancel out; ambient only.</source>
         <translation>Normal nula: só triângulos degenerados se encontram aqui, ou as normais dos vértices se anulam; só ambiente.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="805"/>
+        <location filename="../views/pixel_inspector.cpp" line="740"/>
         <source>The light is at the point itself (L = 0): it adds nothing.</source>
         <translation>A luz está no próprio ponto (L = 0): não acrescenta nada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="808"/>
+        <location filename="../views/pixel_inspector.cpp" line="743"/>
         <source>N.L &lt; 0: the light is behind the surface; no diffuse, no specular.</source>
         <translation>N.L &lt; 0: a luz está atrás da superfície; sem difusa, sem especular.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="811"/>
+        <location filename="../views/pixel_inspector.cpp" line="746"/>
         <source>R.V &lt; 0: the reflected ray points away from the viewer; no specular.</source>
         <translation>R.V &lt; 0: o raio refletido aponta para longe do observador; sem especular.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="822"/>
+        <location filename="../views/pixel_inspector.cpp" line="757"/>
         <source>Clamped: %1 above the colour scale %2, written as byte 255.</source>
         <translation>Limitado: %1 acima da escala de cor %2, escrito como byte 255.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="831"/>
+        <location filename="../views/pixel_inspector.cpp" line="766"/>
         <source>%1 (clamped)</source>
         <translation>%1 (limitado)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="836"/>
+        <location filename="../views/pixel_inspector.cpp" line="771"/>
         <source>Gouraud shading, the vertices&apos; colours mixed</source>
         <translation>sombreamento de Gouraud, as cores dos vértices misturadas</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="837"/>
+        <location filename="../views/pixel_inspector.cpp" line="772"/>
         <source>C = α C1 + β C2 + γ C3</source>
         <translation>C = α C1 + β C2 + γ C3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="854"/>
+        <location filename="../views/pixel_inspector.cpp" line="789"/>
         <source>not lit, the object colour as it is</source>
         <translation>sem iluminação, a cor do objeto tal como é</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="855"/>
+        <location filename="../views/pixel_inspector.cpp" line="790"/>
         <source>I = O (the object colour)</source>
         <translation>I = O (a cor do objeto)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="862"/>
+        <location filename="../views/pixel_inspector.cpp" line="797"/>
         <source>the course&apos;s Phong lighting model</source>
         <translation>o modelo de iluminação de Phong do curso</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="863"/>
+        <location filename="../views/pixel_inspector.cpp" line="798"/>
         <source>Lambert with Blinn-Phong highlights (command files)</source>
         <translation>Lambert com brilhos de Blinn-Phong (arquivos de comandos)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="865"/>
+        <location filename="../views/pixel_inspector.cpp" line="800"/>
         <source>Flat shading: evaluated once, at the triangle&apos;s barycentre with the triangle&apos;s normal; every pixel of the triangle gets this colour.</source>
         <translation>Sombreamento flat: avaliado uma vez, no baricentro do triângulo, com a normal do triângulo; todo pixel do triângulo recebe esta cor.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="869"/>
+        <location filename="../views/pixel_inspector.cpp" line="804"/>
         <source>%1 lights: the diffuse and specular terms are sums over them; the numbers filled in are the first light&apos;s.</source>
         <translation>%1 luzes: os termos difuso e especular são somas sobre elas; os números preenchidos são os da primeira luz.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="876"/>
+        <location filename="../views/pixel_inspector.cpp" line="811"/>
         <source>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</source>
         <translation>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="883"/>
+        <location filename="../views/pixel_inspector.cpp" line="818"/>
         <source>I = Σ Il O (N.L) + Il (H.N)^s, over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L) + Il (H.N)^s, sobre as luzes com N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="885"/>
+        <location filename="../views/pixel_inspector.cpp" line="820"/>
         <source>I = Σ Il O (N.L), over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L), sobre as luzes com N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="926"/>
+        <location filename="../views/pixel_inspector.cpp" line="861"/>
         <source>%1 (the other lights)</source>
         <translation>%1 (as outras luzes)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="941"/>
+        <location filename="../views/pixel_inspector.cpp" line="876"/>
         <source>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</source>
         <translation>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="945"/>
+        <location filename="../views/pixel_inspector.cpp" line="880"/>
         <source>Il = %1, O = %2</source>
         <translation>Il = %1, O = %2</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="974"/>
+        <location filename="../views/pixel_inspector.cpp" line="909"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="980"/>
-        <location filename="../views/pixel_inspector.cpp" line="1066"/>
+        <location filename="../views/pixel_inspector.cpp" line="915"/>
+        <location filename="../views/pixel_inspector.cpp" line="1001"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="988"/>
+        <location filename="../views/pixel_inspector.cpp" line="923"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>ocupa o pixel no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="989"/>
+        <location filename="../views/pixel_inspector.cpp" line="924"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>ainda não alcançado pelo cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1004"/>
+        <location filename="../views/pixel_inspector.cpp" line="939"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1005"/>
+        <location filename="../views/pixel_inspector.cpp" line="940"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Sem o passo a passo, as cores das escritas sobrescritas depois não são guardadas.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1046"/>
+        <location filename="../views/pixel_inspector.cpp" line="981"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Sem o passo a passo, só a iluminação do fragmento que ocupa o pixel no fim é registrada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1049"/>
+        <location filename="../views/pixel_inspector.cpp" line="984"/>
         <source>The cleared pixel is not lit.</source>
         <translation>O pixel limpo não é iluminado.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1052"/>
+        <location filename="../views/pixel_inspector.cpp" line="987"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>Nenhum fragmento ocupa o pixel no cursor: selecione uma linha do histórico para ver sua iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1065"/>
+        <location filename="../views/pixel_inspector.cpp" line="1000"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Iluminação do passo %1, triângulo %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1070"/>
+        <location filename="../views/pixel_inspector.cpp" line="1005"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejeitado: esta cor nunca foi escrita)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1081"/>
+        <location filename="../views/pixel_inspector.cpp" line="1016"/>
         <source>object colour</source>
         <translation>cor do objeto</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1084"/>
+        <location filename="../views/pixel_inspector.cpp" line="1019"/>
         <source>ambient</source>
         <translation>ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1085"/>
+        <location filename="../views/pixel_inspector.cpp" line="1020"/>
         <source>diffuse</source>
         <translation>difusa</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1090"/>
+        <location filename="../views/pixel_inspector.cpp" line="1025"/>
         <source>specular</source>
         <translation>especular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1117"/>
+        <location filename="../views/pixel_inspector.cpp" line="1052"/>
         <source>No special case: every term applies as written.</source>
         <translation>Nenhum caso especial: todos os termos valem como escritos.</translation>
     </message>
@@ -2336,12 +2341,12 @@
 <context>
     <name>rasterlab::ProjectionCanvas</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="176"/>
+        <location filename="../views/projection_view.cpp" line="162"/>
         <source>Click a triangle to select it; wheel to zoom, drag to pan, double-click to fit.</source>
         <translation>Clique num triângulo para selecioná-lo; roda para o zoom, arraste para deslocar, clique duas vezes para ajustar.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="410"/>
+        <location filename="../views/projection_view.cpp" line="390"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
@@ -2349,27 +2354,27 @@
 <context>
     <name>rasterlab::ProjectionSideView</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="636"/>
+        <location filename="../views/projection_view.cpp" line="607"/>
         <source>view z (= w) →</source>
         <translation>z de vista (= w) →</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="636"/>
+        <location filename="../views/projection_view.cpp" line="607"/>
         <source>clip w →</source>
         <translation>w de recorte →</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="640"/>
+        <location filename="../views/projection_view.cpp" line="611"/>
         <source>y ↑</source>
         <translation>y ↑</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="648"/>
+        <location filename="../views/projection_view.cpp" line="619"/>
         <source>near plane w = %1</source>
         <translation>plano próximo w = %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="650"/>
+        <location filename="../views/projection_view.cpp" line="621"/>
         <source>● made by clipping: %1</source>
         <translation>● criados pelo recorte: %1</translation>
     </message>
@@ -2377,142 +2382,142 @@
 <context>
     <name>rasterlab::ProjectionView</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="691"/>
+        <location filename="../views/projection_view.cpp" line="662"/>
         <source>NDC</source>
         <translation>NDC</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="692"/>
+        <location filename="../views/projection_view.cpp" line="663"/>
         <source>Show the vertices in normalised device coordinates, [-1, 1]</source>
         <translation>Mostra os vértices em coordenadas normalizadas de dispositivo, [-1, 1]</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="695"/>
+        <location filename="../views/projection_view.cpp" line="666"/>
         <source>Pixels</source>
         <translation>Pixels</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="697"/>
+        <location filename="../views/projection_view.cpp" line="668"/>
         <source>Show the vertices in pixels, snapped as scan conversion receives them</source>
         <translation>Mostra os vértices em pixels, ajustados à grade como a conversão por varredura os recebe</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="706"/>
+        <location filename="../views/projection_view.cpp" line="677"/>
         <source>Fit</source>
         <translation>Ajustar</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="707"/>
+        <location filename="../views/projection_view.cpp" line="678"/>
         <source>Show the whole window and its margin</source>
         <translation>Mostra a janela inteira e sua margem</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="826"/>
+        <location filename="../views/projection_view.cpp" line="801"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="831"/>
+        <location filename="../views/projection_view.cpp" line="806"/>
         <source>inside %1, clipped %2 (%3 on screen), culled %4, back faces %5; behind %6, clipped away %7</source>
         <translation>dentro %1, recortados %2 (%3 na tela), descartados %4, faces traseiras %5; atrás %6, eliminados no recorte %7</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="842"/>
+        <location filename="../views/projection_view.cpp" line="817"/>
         <source>beyond the guard band %1</source>
         <translation>além da banda de guarda %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="844"/>
+        <location filename="../views/projection_view.cpp" line="819"/>
         <source>not finite %1</source>
         <translation>não finitos %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="846"/>
+        <location filename="../views/projection_view.cpp" line="821"/>
         <source>%1 drawn whole (inside): %2&lt;br&gt;</source>
         <translation>%1 desenhados inteiros (dentro): %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="847"/>
+        <location filename="../views/projection_view.cpp" line="822"/>
         <source>%1 clipped: %2, drawn as %3 fan triangles&lt;br&gt;</source>
         <translation>%1 recortados: %2, desenhados como %3 triângulos em leque&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="851"/>
+        <location filename="../views/projection_view.cpp" line="826"/>
         <source>%1 culled (clockwise on screen): %2; hidden back faces: %3&lt;br&gt;</source>
         <translation>%1 descartados (sentido horário na tela): %2; faces traseiras ocultas: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="855"/>
+        <location filename="../views/projection_view.cpp" line="830"/>
         <source>Nothing on screen: behind the near plane %1; outside a clip plane %2</source>
         <translation>Nada na tela: atrás do plano próximo %1; fora de um plano de recorte %2</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="858"/>
+        <location filename="../views/projection_view.cpp" line="833"/>
         <source>; beyond the guard band %1</source>
         <translation>; além da banda de guarda %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="859"/>
+        <location filename="../views/projection_view.cpp" line="834"/>
         <source>; not finite %1</source>
         <translation>; não finitos %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="861"/>
+        <location filename="../views/projection_view.cpp" line="836"/>
         <source>%1 screen triangles go to scan conversion; the near plane is w = %2.</source>
         <translation>%1 triângulos de tela vão para a conversão por varredura; o plano próximo é w = %2.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="865"/>
+        <location filename="../views/projection_view.cpp" line="840"/>
         <source>%1 selected, %2 being drawn</source>
         <translation>%1 selecionado, %2 em desenho</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="879"/>
+        <location filename="../views/projection_view.cpp" line="854"/>
         <source>&lt;p&gt;&lt;b&gt;Projection.&lt;/b&gt; Every vertex goes to clip space, pClip = clipFromView · pView. A triangle crossing the near plane w = near is clipped (Sutherland-Hodgman) and its polygon cut into a fan, so nothing is divided by a w at or behind the camera. Then pNdc = pClip.xy / w, and the pixels are x = (x_ndc + 1) W/2, y = (1 − y_ndc) H/2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Projeção.&lt;/b&gt; Todo vértice vai para o espaço de recorte, pClip = clipFromView · pView. Um triângulo que cruza o plano próximo w = near é recortado (Sutherland-Hodgman) e seu polígono é dividido em leque, de modo que nada é dividido por um w na câmera ou atrás dela. Depois pNdc = pClip.xy / w, e os pixels são x = (x_ndc + 1) W/2, y = (1 − y_ndc) H/2.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="886"/>
+        <location filename="../views/projection_view.cpp" line="861"/>
         <source>&lt;p&gt;For the course camera pClip = ((d/hx) x, (d/hy) y, z, z): x_ndc = (d/hx) x/z, y_ndc = (d/hy) y/z, and the pixel coordinates are truncated.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Para a câmera do curso, pClip = ((d/hx) x, (d/hy) y, z, z): x_ndc = (d/hx) x/z, y_ndc = (d/hy) y/z, e as coordenadas de pixel são truncadas.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="894"/>
+        <location filename="../views/projection_view.cpp" line="869"/>
         <source>&lt;p&gt;Click a triangle to see the numbers of its first vertex.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Clique num triângulo para ver os números do seu primeiro vértice.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="914"/>
+        <location filename="../views/projection_view.cpp" line="889"/>
         <source>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (mesh triangle %2%3), its first vertex, vertex %4:</source>
         <translation>&lt;p&gt;&lt;b&gt;Triângulo %1&lt;/b&gt; (triângulo %2 da malha%3), seu primeiro vértice, o vértice %4:</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="917"/>
+        <location filename="../views/projection_view.cpp" line="892"/>
         <source>, clipped</source>
         <translation>, recortado</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="922"/>
+        <location filename="../views/projection_view.cpp" line="897"/>
         <source>made by clipping, on the edge from vertex %1 to vertex %2 at t = %3</source>
         <translation>criado pelo recorte, na aresta do vértice %1 ao vértice %2, em t = %3</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="946"/>
+        <location filename="../views/projection_view.cpp" line="923"/>
         <source>truncated</source>
         <translation>truncado</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="946"/>
+        <location filename="../views/projection_view.cpp" line="923"/>
         <source>rounded</source>
         <translation>arredondado</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="949"/>
+        <location filename="../views/projection_view.cpp" line="926"/>
         <source>truncated to 1/%1 pixel</source>
         <translation>truncado para 1/%1 de pixel</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="950"/>
+        <location filename="../views/projection_view.cpp" line="927"/>
         <source>rounded to 1/%1 pixel</source>
         <translation>arredondado para 1/%1 de pixel</translation>
     </message>
@@ -2520,296 +2525,296 @@
 <context>
     <name>rasterlab::ScanlineView</name>
     <message>
-        <location filename="../views/scanline_view.cpp" line="277"/>
+        <location filename="../views/scanline_view.cpp" line="235"/>
         <source>No triangle to show: step into the frame or pick a pixel.</source>
         <translation>Nenhum triângulo para mostrar: avance pelo quadro ou escolha um pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="464"/>
+        <location filename="../views/scanline_view.cpp" line="422"/>
         <source>long edge</source>
         <translation>aresta longa</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="465"/>
+        <location filename="../views/scanline_view.cpp" line="423"/>
         <source>upper edge</source>
         <translation>aresta superior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="466"/>
+        <location filename="../views/scanline_view.cpp" line="424"/>
         <source>lower edge</source>
         <translation>aresta inferior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="590"/>
+        <location filename="../views/scanline_view.cpp" line="548"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="593"/>
+        <location filename="../views/scanline_view.cpp" line="551"/>
         <source>Start of the frame: step forward to walk the first triangle, or pick a pixel to see the triangle holding it.</source>
         <translation>Início do quadro: avance para percorrer o primeiro triângulo, ou escolha um pixel para ver o triângulo que o ocupa.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="596"/>
+        <location filename="../views/scanline_view.cpp" line="554"/>
         <source>Pick a pixel, or step through the frame, to see a triangle scan converted.</source>
         <translation>Escolha um pixel, ou avance pelo quadro, para ver a conversão por varredura de um triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="601"/>
+        <location filename="../views/scanline_view.cpp" line="559"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</source>
         <translation>&lt;b&gt;Triângulo %1&lt;/b&gt; de %2</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="604"/>
+        <location filename="../views/scanline_view.cpp" line="562"/>
         <source>scanline %1</source>
         <translation>linha de varredura %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="606"/>
+        <location filename="../views/scanline_view.cpp" line="564"/>
         <source>pixel %1</source>
         <translation>pixel %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="609"/>
+        <location filename="../views/scanline_view.cpp" line="567"/>
         <source>at the stepping cursor</source>
         <translation>no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="610"/>
+        <location filename="../views/scanline_view.cpp" line="568"/>
         <source>the triangle selected (the cursor is at the %1 of the frame)</source>
         <translation>o triângulo selecionado (o cursor está no %1 do quadro)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="611"/>
+        <location filename="../views/scanline_view.cpp" line="569"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="612"/>
+        <location filename="../views/scanline_view.cpp" line="570"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="633"/>
+        <location filename="../views/scanline_view.cpp" line="591"/>
         <source>Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the top to the bottom; the two short edges meet at the middle vertex.</source>
         <translation>Vértices ordenados por y: topo %1, meio %2, base %3. A aresta longa vai do topo à base; as duas arestas curtas se encontram no vértice do meio.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="638"/>
+        <location filename="../views/scanline_view.cpp" line="596"/>
         <source>Its area on the screen is zero: it has no inside and is not scanned.</source>
         <translation>Sua área na tela é zero: ele não tem interior e não é varrido.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="643"/>
+        <location filename="../views/scanline_view.cpp" line="601"/>
         <source>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, so the middle vertex is %2 of the long edge: the long edge bounds the spans on the %3.</source>
         <translation>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, então o vértice do meio fica à %2 da aresta longa: a aresta longa limita os segmentos à %3.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="646"/>
-        <location filename="../views/scanline_view.cpp" line="647"/>
-        <location filename="../views/scanline_view.cpp" line="680"/>
+        <location filename="../views/scanline_view.cpp" line="604"/>
+        <location filename="../views/scanline_view.cpp" line="605"/>
+        <location filename="../views/scanline_view.cpp" line="638"/>
         <source>right</source>
         <translation>direita</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="646"/>
-        <location filename="../views/scanline_view.cpp" line="647"/>
-        <location filename="../views/scanline_view.cpp" line="680"/>
+        <location filename="../views/scanline_view.cpp" line="604"/>
+        <location filename="../views/scanline_view.cpp" line="605"/>
+        <location filename="../views/scanline_view.cpp" line="638"/>
         <source>left</source>
         <translation>esquerda</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="650"/>
+        <location filename="../views/scanline_view.cpp" line="608"/>
         <source>long</source>
         <translation>longa</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="650"/>
+        <location filename="../views/scanline_view.cpp" line="608"/>
         <source>upper</source>
         <translation>superior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="650"/>
+        <location filename="../views/scanline_view.cpp" line="608"/>
         <source>lower</source>
         <translation>inferior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="667"/>
+        <location filename="../views/scanline_view.cpp" line="625"/>
         <source>from</source>
         <translation>de</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="668"/>
+        <location filename="../views/scanline_view.cpp" line="626"/>
         <source>to</source>
         <translation>até</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="669"/>
+        <location filename="../views/scanline_view.cpp" line="627"/>
         <source>x on its first row</source>
         <translation>x na sua primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="672"/>
+        <location filename="../views/scanline_view.cpp" line="630"/>
         <source>dx/dy</source>
         <translation>dx/dy</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="673"/>
+        <location filename="../views/scanline_view.cpp" line="631"/>
         <source>horizontal</source>
         <translation>horizontal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="675"/>
+        <location filename="../views/scanline_view.cpp" line="633"/>
         <source>rows</source>
         <translation>linhas</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="677"/>
+        <location filename="../views/scanline_view.cpp" line="635"/>
         <source>none</source>
         <translation>nenhuma</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="680"/>
+        <location filename="../views/scanline_view.cpp" line="638"/>
         <source>side</source>
         <translation>lado</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="684"/>
+        <location filename="../views/scanline_view.cpp" line="642"/>
         <source>Only rows %1 to %2 are on the screen: the walk starts and stops there.</source>
         <translation>Só as linhas %1 a %2 estão na tela: o percurso começa e termina ali.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="691"/>
+        <location filename="../views/scanline_view.cpp" line="649"/>
         <source>No row of this triangle is on the screen.</source>
         <translation>Nenhuma linha deste triângulo está na tela.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="703"/>
+        <location filename="../views/scanline_view.cpp" line="661"/>
         <source>%1(%2) = %3, where the %4 edge crosses its first row</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza sua primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="709"/>
+        <location filename="../views/scanline_view.cpp" line="667"/>
         <source>%1(%2) = %3, where the %4 edge crosses the first row on the screen</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza a primeira linha na tela</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="714"/>
+        <location filename="../views/scanline_view.cpp" line="672"/>
         <source>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</source>
         <translation>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 ao longo da aresta %7</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="727"/>
+        <location filename="../views/scanline_view.cpp" line="685"/>
         <source>Scanline y = %1</source>
         <translation>Linha de varredura y = %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="729"/>
+        <location filename="../views/scanline_view.cpp" line="687"/>
         <source>(sampled at y = %1)</source>
         <translation>(amostrada em y = %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="741"/>
+        <location filename="../views/scanline_view.cpp" line="699"/>
         <source>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Regra top-left: as amostras com x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 a ceil(x_right%2) &amp;minus; 1 = %4 (uma amostra exatamente na aresta direita pertence ao triângulo seguinte).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="748"/>
+        <location filename="../views/scanline_view.cpp" line="706"/>
         <source>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</source>
         <translation>Regra inclusiva: os pixels de ceil(x_left%1) = %2 a floor(x_right%1) = %3, as duas pontas incluídas (uma amostra exatamente sobre uma aresta está dentro).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="756"/>
+        <location filename="../views/scanline_view.cpp" line="714"/>
         <source>No pixel on this row</source>
         <translation>Nenhum pixel nesta linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="757"/>
+        <location filename="../views/scanline_view.cpp" line="715"/>
         <source>the edges cross it between two samples.</source>
         <translation>as arestas a cruzam entre duas amostras.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="758"/>
+        <location filename="../views/scanline_view.cpp" line="716"/>
         <source>they are all off the screen.</source>
         <translation>estão todos fora da tela.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="761"/>
+        <location filename="../views/scanline_view.cpp" line="719"/>
         <source>Span [%1, %2): 1 pixel.</source>
         <translation>Segmento [%1, %2): 1 pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="762"/>
+        <location filename="../views/scanline_view.cpp" line="720"/>
         <source>Span [%1, %2): %3 pixels.</source>
         <translation>Segmento [%1, %2): %3 pixels.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="765"/>
+        <location filename="../views/scanline_view.cpp" line="723"/>
         <source>(cut to the screen&apos;s columns 0 to %1)</source>
         <translation>(cortado às colunas 0 a %1 da tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="768"/>
+        <location filename="../views/scanline_view.cpp" line="726"/>
         <source>The pixel at the cursor is x = %1.</source>
         <translation>O pixel no cursor é x = %1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="780"/>
+        <location filename="../views/scanline_view.cpp" line="738"/>
         <source>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</source>
         <translation>Nas pontas do segmento, as coordenadas baricêntricas (&amp;alpha;, &amp;beta;, &amp;gamma;) da amostra em relação ao triângulo de tela P1 %1, P2 %2, P3 %3 dão a profundidade, a partir dos z dos vértices, z1 = %4, z2 = %5, z3 = %6:</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="788"/>
+        <location filename="../views/scanline_view.cpp" line="746"/>
         <source>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</source>
         <translation>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (com correção de perspectiva: 1/z é linear na tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="790"/>
+        <location filename="../views/scanline_view.cpp" line="748"/>
         <source>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</source>
         <translation>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="795"/>
+        <location filename="../views/scanline_view.cpp" line="753"/>
         <source>depth</source>
         <translation>profundidade</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="795"/>
+        <location filename="../views/scanline_view.cpp" line="753"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="802"/>
+        <location filename="../views/scanline_view.cpp" line="760"/>
         <source>not computed (nothing is lit)</source>
         <translation>não calculada (nada é iluminado)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="803"/>
+        <location filename="../views/scanline_view.cpp" line="761"/>
         <source>zero</source>
         <translation>nula</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="821"/>
+        <location filename="../views/scanline_view.cpp" line="779"/>
         <source>Pixel (x, y) is sampled at the point (x, y) itself.</source>
         <translation>O pixel (x, y) é amostrado no próprio ponto (x, y).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="822"/>
+        <location filename="../views/scanline_view.cpp" line="780"/>
         <source>Pixel (x, y) is sampled at (x + %1, y + %1).</source>
         <translation>O pixel (x, y) é amostrado em (x + %1, y + %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="825"/>
+        <location filename="../views/scanline_view.cpp" line="783"/>
         <source>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</source>
         <translation>A normal é N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1), a partir das normais dos vértices, normalizada%1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="828"/>
+        <location filename="../views/scanline_view.cpp" line="786"/>
         <source>, with the barycentrics weighted by 1/w (perspective-correct)</source>
         <translation>, com as coordenadas baricêntricas ponderadas por 1/w (correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="833"/>
+        <location filename="../views/scanline_view.cpp" line="791"/>
         <source>Edge walking: from one scanline to the next, each edge&apos;s x changes by its constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. The span between the two crossings is filled; the long edge bounds every row, the upper edge the rows above the middle vertex, the lower edge the rest.</source>
         <translation>Percurso das arestas: de uma linha de varredura à seguinte, o x de cada aresta muda pelo seu dx/dy constante, uma adição por aresta e por linha: x_left(y+1) = x_left(y) + dx/dy. O segmento entre os dois cruzamentos é preenchido; a aresta longa limita todas as linhas, a aresta superior as linhas acima do vértice do meio, a aresta inferior as demais.</translation>
     </message>
@@ -2885,87 +2890,87 @@
 <context>
     <name>rasterlab::SteppingBar</name>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="71"/>
+        <location filename="../views/stepping_bar.cpp" line="75"/>
         <source>Stage</source>
         <translation>Etapa</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="73"/>
+        <location filename="../views/stepping_bar.cpp" line="77"/>
         <source>Triangle</source>
         <translation>Triângulo</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="75"/>
+        <location filename="../views/stepping_bar.cpp" line="79"/>
         <source>Scanline</source>
         <translation>Linha de varredura</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="77"/>
+        <location filename="../views/stepping_bar.cpp" line="81"/>
         <source>Span</source>
         <translation>Segmento</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="79"/>
+        <location filename="../views/stepping_bar.cpp" line="83"/>
         <source>Pixel</source>
         <translation>Pixel</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="99"/>
+        <location filename="../views/stepping_bar.cpp" line="103"/>
         <source>Jump to &amp;Start</source>
         <translation>Ir ao &amp;início</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="100"/>
+        <location filename="../views/stepping_bar.cpp" line="104"/>
         <source>Step &amp;Back</source>
         <translation>&amp;Voltar um passo</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="103"/>
+        <location filename="../views/stepping_bar.cpp" line="107"/>
         <source>&amp;Play / Pause</source>
         <translation>&amp;Reproduzir / pausar</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="106"/>
+        <location filename="../views/stepping_bar.cpp" line="110"/>
         <source>Step &amp;Forward</source>
         <translation>&amp;Avançar um passo</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="108"/>
+        <location filename="../views/stepping_bar.cpp" line="112"/>
         <source>Jump to &amp;End</source>
         <translation>Ir ao &amp;fim</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="110"/>
+        <location filename="../views/stepping_bar.cpp" line="114"/>
         <source>&amp;Continue to Breakpoint</source>
         <translation>&amp;Continuar até o ponto de parada</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="136"/>
+        <location filename="../views/stepping_bar.cpp" line="140"/>
         <source>Step by</source>
         <translation>Avançar por</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="167"/>
+        <location filename="../views/stepping_bar.cpp" line="171"/>
         <source> steps/s</source>
         <translation> passos/s</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="168"/>
+        <location filename="../views/stepping_bar.cpp" line="172"/>
         <source>How many steps a second Play makes</source>
         <translation>Quantos passos por segundo a reprodução dá</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="174"/>
+        <location filename="../views/stepping_bar.cpp" line="178"/>
         <source>The frame, fragment by fragment: drag to scrub</source>
         <translation>O quadro, fragmento a fragmento: arraste para percorrê-lo</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="262"/>
+        <location filename="../views/stepping_bar.cpp" line="266"/>
         <source>stepping is being prepared</source>
         <translation>o passo a passo está sendo preparado</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="263"/>
+        <location filename="../views/stepping_bar.cpp" line="267"/>
         <source>no stepping: %1</source>
         <translation>sem passo a passo: %1</translation>
     </message>
@@ -2973,103 +2978,103 @@
 <context>
     <name>rasterlab::VertexTableModel</name>
     <message>
-        <location filename="../views/vertex_table.cpp" line="164"/>
+        <location filename="../views/vertex_table.cpp" line="126"/>
         <source>%1 made by clipping (edge %2-%3, t = %4)</source>
         <translation>%1 criado pelo recorte (aresta %2-%3, t = %4)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="171"/>
+        <location filename="../views/vertex_table.cpp" line="133"/>
         <source>pView = pView(%1) + t (pView(%2) - pView(%1)), on the plane that cut the edge</source>
         <translation>pView = pView(%1) + t (pView(%2) - pView(%1)), no plano que cortou a aresta</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="184"/>
+        <location filename="../views/vertex_table.cpp" line="146"/>
         <source>At or behind the near plane: not projected; the triangles through it are clipped</source>
         <translation>No plano próximo ou atrás dele: não é projetado; os triângulos que passam por ele são recortados</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="187"/>
-        <location filename="../views/vertex_table.cpp" line="191"/>
+        <location filename="../views/vertex_table.cpp" line="149"/>
+        <location filename="../views/vertex_table.cpp" line="153"/>
         <source>behind</source>
         <translation>atrás</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="193"/>
+        <location filename="../views/vertex_table.cpp" line="155"/>
         <source>Exact: %1</source>
         <translation>Exato: %1</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="204"/>
+        <location filename="../views/vertex_table.cpp" line="166"/>
         <source>Mixed along the edge it was made on, as shading does (normalised per pixel)</source>
         <translation>Misturada ao longo da aresta em que o vértice foi criado, como faz o sombreamento (normalizada por pixel)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="220"/>
+        <location filename="../views/vertex_table.cpp" line="182"/>
         <source>Draw</source>
         <translation>Desenho</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="222"/>
+        <location filename="../views/vertex_table.cpp" line="184"/>
         <source>Vertex</source>
         <translation>Vértice</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="224"/>
+        <location filename="../views/vertex_table.cpp" line="186"/>
         <source>World (x, y, z)</source>
         <translation>Mundo (x, y, z)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="226"/>
+        <location filename="../views/vertex_table.cpp" line="188"/>
         <source>View pView</source>
         <translation>Vista pView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="228"/>
+        <location filename="../views/vertex_table.cpp" line="190"/>
         <source>NDC pNdc</source>
         <translation>NDC pNdc</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="230"/>
+        <location filename="../views/vertex_table.cpp" line="192"/>
         <source>Screen pScreen</source>
         <translation>Tela pScreen</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="232"/>
+        <location filename="../views/vertex_table.cpp" line="194"/>
         <source>Normal nView</source>
         <translation>Normal nView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="240"/>
+        <location filename="../views/vertex_table.cpp" line="202"/>
         <source>The draw (object) the vertex belongs to</source>
         <translation>O desenho (objeto) ao qual o vértice pertence</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="242"/>
+        <location filename="../views/vertex_table.cpp" line="204"/>
         <source>The vertex number as in the file (1-based); vertices made by clipping come after the draw&apos;s own</source>
         <translation>O número do vértice como no arquivo (a partir de 1); os vértices criados pelo recorte vêm depois dos do próprio desenho</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="246"/>
+        <location filename="../views/vertex_table.cpp" line="208"/>
         <source>P = worldFromModel · P_model</source>
         <translation>P = worldFromModel · P_model</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="248"/>
+        <location filename="../views/vertex_table.cpp" line="210"/>
         <source>pView = [U; V; N](P − C) for the course camera, or the draw&apos;s view matrix times P_model</source>
         <translation>pView = [U; V; N](P − C) para a câmera do curso, ou a matriz de vista do desenho vezes P_model</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="252"/>
+        <location filename="../views/vertex_table.cpp" line="214"/>
         <source>pNdc = ((d/hx) x/z, (d/hy) y/z) for the course camera, or pClip.xy / pClip.w with pClip = clipFromView · pView</source>
         <translation>pNdc = ((d/hx) x/z, (d/hy) y/z) para a câmera do curso, ou pClip.xy / pClip.w com pClip = clipFromView · pView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="256"/>
+        <location filename="../views/vertex_table.cpp" line="218"/>
         <source>pScreen = ((x_ndc + 1) w/2, (1 − y_ndc) h/2), truncated (snapped to the rules&apos; grid); the tooltip holds the exact value</source>
         <translation>pScreen = ((x_ndc + 1) w/2, (1 − y_ndc) h/2), truncado (ajustado à grade das regras); a dica mostra o valor exato</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="260"/>
+        <location filename="../views/vertex_table.cpp" line="222"/>
         <source>The view-space vertex normal: the normalised sum of the normals of the triangles around it (stage 3)</source>
         <translation>A normal do vértice no espaço de vista: a soma normalizada das normais dos triângulos ao seu redor (etapa 3)</translation>
     </message>
@@ -3077,127 +3082,127 @@
 <context>
     <name>rasterlab::VertexTableView</name>
     <message>
-        <location filename="../views/vertex_table.cpp" line="292"/>
+        <location filename="../views/vertex_table.cpp" line="254"/>
         <source>Only the selected triangle&apos;s vertices</source>
         <translation>Só os vértices do triângulo selecionado</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="350"/>
+        <location filename="../views/vertex_table.cpp" line="312"/>
         <source>%1 vertices, %2 of them made by clipping</source>
         <translation>%1 vértices, %2 deles criados pelo recorte</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="351"/>
+        <location filename="../views/vertex_table.cpp" line="313"/>
         <source>%1 vertices</source>
         <translation>%1 vértices</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="449"/>
+        <location filename="../views/vertex_table.cpp" line="411"/>
         <source>&lt;p&gt;Select a row, or pick a pixel in the image: its triangle&apos;s three vertices are selected. The numbers of the selected vertex are worked through each formula here.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Selecione uma linha, ou escolha um pixel na imagem: os três vértices do seu triângulo são selecionados. Os números do vértice selecionado são calculados aqui, fórmula por fórmula.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="452"/>
+        <location filename="../views/vertex_table.cpp" line="414"/>
         <source>&lt;p&gt;No frame yet.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Nenhum quadro ainda.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="476"/>
+        <location filename="../views/vertex_table.cpp" line="438"/>
         <source>Vertex %1 of draw %2 (%3)</source>
         <translation>Vértice %1 do desenho %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="477"/>
+        <location filename="../views/vertex_table.cpp" line="439"/>
         <source>Vertex %1 of %2</source>
         <translation>Vértice %1 de %2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="484"/>
+        <location filename="../views/vertex_table.cpp" line="446"/>
         <source>&lt;p&gt;Made by clipping the edge %1-%2 where it crosses a plane (the near plane or a clip plane), at t = %3:&lt;br&gt;pView = pView&lt;sub&gt;%1&lt;/sub&gt; + t (pView&lt;sub&gt;%2&lt;/sub&gt; − pView&lt;sub&gt;%1&lt;/sub&gt;) = %4 + %3 (%5 − %4) = &lt;b&gt;%6&lt;/b&gt;&lt;br&gt;World: P = %7 (the same interpolation).&lt;/p&gt;</source>
         <translation>&lt;p&gt;Criado ao recortar a aresta %1-%2 onde ela cruza um plano (o plano próximo ou um plano de recorte), em t = %3:&lt;br&gt;pView = pView&lt;sub&gt;%1&lt;/sub&gt; + t (pView&lt;sub&gt;%2&lt;/sub&gt; − pView&lt;sub&gt;%1&lt;/sub&gt;) = %4 + %3 (%5 − %4) = &lt;b&gt;%6&lt;/b&gt;&lt;br&gt;Mundo: P = %7 (a mesma interpolação).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="495"/>
+        <location filename="../views/vertex_table.cpp" line="457"/>
         <source>&lt;p&gt;World: P = P&lt;sub&gt;model&lt;/sub&gt; = &lt;b&gt;%1&lt;/b&gt; (worldFromModel is the identity)&lt;/p&gt;</source>
         <translation>&lt;p&gt;Mundo: P = P&lt;sub&gt;model&lt;/sub&gt; = &lt;b&gt;%1&lt;/b&gt; (worldFromModel é a identidade)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="499"/>
+        <location filename="../views/vertex_table.cpp" line="461"/>
         <source>&lt;p&gt;World: P = worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Mundo: P = worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="505"/>
+        <location filename="../views/vertex_table.cpp" line="467"/>
         <source>&lt;p&gt;View: pView = [U; V; N](P − C), with C = %1:&lt;br&gt;P − C = %2&lt;br&gt;x = U · (P − C) = %3 · %2 = %4&lt;br&gt;y = V · (P − C) = %5 · %2 = %6&lt;br&gt;z = N · (P − C) = %7 · %2 = %8&lt;br&gt;pView = &lt;b&gt;%9&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vista: pView = [U; V; N](P − C), com C = %1:&lt;br&gt;P − C = %2&lt;br&gt;x = U · (P − C) = %3 · %2 = %4&lt;br&gt;y = V · (P − C) = %5 · %2 = %6&lt;br&gt;z = N · (P − C) = %7 · %2 = %8&lt;br&gt;pView = &lt;b&gt;%9&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="513"/>
+        <location filename="../views/vertex_table.cpp" line="475"/>
         <source>&lt;p&gt;View: pView = viewFromModel · P&lt;sub&gt;model&lt;/sub&gt; (the draw&apos;s own view matrix) = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vista: pView = viewFromModel · P&lt;sub&gt;model&lt;/sub&gt; (a matriz de vista do próprio desenho) = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="521"/>
+        <location filename="../views/vertex_table.cpp" line="483"/>
         <source>&lt;p&gt;z = %1 is not beyond the near plane (w = %2): the vertex is behind, not projected; the triangles through it are clipped there.&lt;/p&gt;</source>
         <translation>&lt;p&gt;z = %1 não está além do plano próximo (w = %2): o vértice está atrás e não é projetado; os triângulos que passam por ele são recortados ali.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="529"/>
+        <location filename="../views/vertex_table.cpp" line="491"/>
         <source>&lt;p&gt;NDC: pNdc = ((d/hx) x/z, (d/hy) y/z) = ((%1/%2) · %3/%4, (%1/%5) · %6/%4) = &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;NDC: pNdc = ((d/hx) x/z, (d/hy) y/z) = ((%1/%2) · %3/%4, (%1/%5) · %6/%4) = &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="534"/>
+        <location filename="../views/vertex_table.cpp" line="496"/>
         <source>&lt;p&gt;Clip: pClip = clipFromView · pView = %1&lt;br&gt;NDC: pNdc = pClip.xy / pClip.w = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Recorte: pClip = clipFromView · pView = %1&lt;br&gt;NDC: pNdc = pClip.xy / pClip.w = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="543"/>
+        <location filename="../views/vertex_table.cpp" line="505"/>
         <source>truncated, as C&apos;s (int) does</source>
         <translation>truncado, como faz o (int) do C</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="545"/>
+        <location filename="../views/vertex_table.cpp" line="507"/>
         <source>truncated to a grid of 1/%1 pixel</source>
         <translation>truncado para uma grade de 1/%1 de pixel</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="547"/>
+        <location filename="../views/vertex_table.cpp" line="509"/>
         <source>rounded to the nearest 1/%1 pixel</source>
         <translation>arredondado para o 1/%1 de pixel mais próximo</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="548"/>
+        <location filename="../views/vertex_table.cpp" line="510"/>
         <source>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</source>
         <translation>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="549"/>
+        <location filename="../views/vertex_table.cpp" line="511"/>
         <source>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</source>
         <translation>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="554"/>
+        <location filename="../views/vertex_table.cpp" line="516"/>
         <source>&lt;p&gt;Screen: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Tela: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="563"/>
+        <location filename="../views/vertex_table.cpp" line="525"/>
         <source>&lt;p&gt;Normal: mixed along the edge like pView, %1; shading normalises it per pixel.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: misturada ao longo da aresta como pView, %1; o sombreamento a normaliza por pixel.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="567"/>
+        <location filename="../views/vertex_table.cpp" line="529"/>
         <source>&lt;p&gt;Normal: the file&apos;s normal carried to view space by the inverse transpose of viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: a normal do arquivo levada ao espaço de vista pela inversa transposta de viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="574"/>
+        <location filename="../views/vertex_table.cpp" line="536"/>
         <source>&lt;p&gt;Normal: the normalised sum of the normals of the %1 triangles around it: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: a soma normalizada das normais dos %1 triângulos ao seu redor: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="580"/>
+        <location filename="../views/vertex_table.cpp" line="542"/>
         <source>&lt;p&gt;Normal: none, %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: nenhuma, %1.&lt;/p&gt;</translation>
     </message>
@@ -3205,87 +3210,87 @@
 <context>
     <name>rasterlab::ZBufferView</name>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="155"/>
+        <location filename="../views/zbuffer_view.cpp" line="156"/>
         <source>Automatic range (nearest to farthest drawn)</source>
         <translation>Faixa automática (do mais próximo ao mais distante desenhado)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="170"/>
+        <location filename="../views/zbuffer_view.cpp" line="172"/>
         <source>Grey (near white)</source>
         <translation>Cinza (perto = branco)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="171"/>
+        <location filename="../views/zbuffer_view.cpp" line="173"/>
         <source>False colour (near red, far blue)</source>
         <translation>Cores falsas (perto vermelho, longe azul)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="182"/>
+        <location filename="../views/zbuffer_view.cpp" line="184"/>
         <source>Nearest (white / red):</source>
         <translation>Mais próximo (branco / vermelho):</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="183"/>
+        <location filename="../views/zbuffer_view.cpp" line="185"/>
         <source>Farthest (dark / blue):</source>
         <translation>Mais distante (escuro / azul):</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="184"/>
+        <location filename="../views/zbuffer_view.cpp" line="186"/>
         <source>Colours:</source>
         <translation>Cores:</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="244"/>
+        <location filename="../views/zbuffer_view.cpp" line="246"/>
         <source>+&amp;infin;</source>
         <translation>+&amp;infin;</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="248"/>
+        <location filename="../views/zbuffer_view.cpp" line="250"/>
         <source>the view-space z of P&apos;</source>
         <translation>o z de P&apos; no espaço de vista</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="248"/>
+        <location filename="../views/zbuffer_view.cpp" line="250"/>
         <source>the NDC z</source>
         <translation>o z em NDC</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="249"/>
+        <location filename="../views/zbuffer_view.cpp" line="251"/>
         <source>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth z = &amp;alpha;z&lt;sub&gt;1&lt;/sub&gt; + &amp;beta;z&lt;sub&gt;2&lt;/sub&gt; + &amp;gamma;z&lt;sub&gt;3&lt;/sub&gt; (%2) is compared with the stored one; it is written, with its colour, only when %3. So far: %4 fragments tested, %5 written, %6 rejected.</source>
         <translation>&lt;b&gt;Z-buffer.&lt;/b&gt; Todo pixel começa em %1. A profundidade de cada fragmento, z = &amp;alpha;z&lt;sub&gt;1&lt;/sub&gt; + &amp;beta;z&lt;sub&gt;2&lt;/sub&gt; + &amp;gamma;z&lt;sub&gt;3&lt;/sub&gt; (%2), é comparada com a armazenada; ela é escrita, com sua cor, só quando %3. Até agora: %4 fragmentos testados, %5 escritos, %6 rejeitados.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="305"/>
+        <location filename="../views/zbuffer_view.cpp" line="307"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="322"/>
+        <location filename="../views/zbuffer_view.cpp" line="324"/>
         <source>No pixel holds a triangle: the buffer is all clear value.</source>
         <translation>Nenhum pixel contém um triângulo: o buffer inteiro está no valor de limpeza.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="325"/>
+        <location filename="../views/zbuffer_view.cpp" line="327"/>
         <source>Drawn depths from %1 to %2; shown from %3 to %4.</source>
         <translation>Profundidades desenhadas de %1 a %2; exibidas de %3 a %4.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="331"/>
+        <location filename="../views/zbuffer_view.cpp" line="333"/>
         <source>%1 pixels nearer and %2 farther than the range are drawn at its ends.</source>
         <translation>%1 pixels mais próximos e %2 mais distantes que a faixa aparecem nas suas extremidades.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="345"/>
+        <location filename="../views/zbuffer_view.cpp" line="347"/>
         <source>+inf</source>
         <translation>+inf</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="346"/>
+        <location filename="../views/zbuffer_view.cpp" line="348"/>
         <source>x %1, y %2: no triangle; the depth stays at the clear value %3</source>
         <translation>x %1, y %2: nenhum triângulo; a profundidade fica no valor de limpeza %3</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="351"/>
+        <location filename="../views/zbuffer_view.cpp" line="353"/>
         <source>x %1, y %2: depth %3, triangle %4</source>
         <translation>x %1, y %2: profundidade %3, triângulo %4</translation>
     </message>

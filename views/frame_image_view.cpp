@@ -92,7 +92,7 @@ void FrameImageView::paintEvent(QPaintEvent*) {
     painter.drawImage(target, m_image);
 
     if (m_zoom >= kGridFromZoom) {
-        // Pixel grid and pixel centres over the visible part of the image.
+        // The pixel grid and the sample points over the visible part of the image.
         const int x0 = std::max(0, static_cast<int>(std::floor(-origin.x() / m_zoom)));
         const int y0 = std::max(0, static_cast<int>(std::floor(-origin.y() / m_zoom)));
         const int x1 =
@@ -109,11 +109,12 @@ void FrameImageView::paintEvent(QPaintEvent*) {
         painter.setPen(Qt::NoPen);
         painter.setBrush(QColor(255, 255, 255, 140));
         const double r = std::max(1.0, m_zoom / 16.0);
+        // Where each pixel is sampled: its centre, or its corner under the course's rules.
+        const double o = m_overlay.sampleOffset;
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x)
                 painter.drawEllipse(
-                    QPointF(origin.x() + (x + 0.5) * m_zoom, origin.y() + (y + 0.5) * m_zoom), r,
-                    r);
+                    QPointF(origin.x() + (x + o) * m_zoom, origin.y() + (y + o) * m_zoom), r, r);
     }
     paintOverlay(painter);
 }
@@ -224,7 +225,8 @@ bool FrameImageView::event(QEvent* event) {
     if (event->type() == QEvent::ShortcutOverride && m_arrowsMovePick &&
         m_overlay.pickedPixel.x() >= 0) {
         auto* key = static_cast<QKeyEvent*>(event);
-        if (key->modifiers() == Qt::NoModifier && arrowStep(key->key())) {
+        if (key->modifiers() == Qt::NoModifier &&
+            (arrowStep(key->key()) || key->key() == Qt::Key_Escape)) {
             event->accept();
             return true;
         }
@@ -233,6 +235,10 @@ bool FrameImageView::event(QEvent* event) {
 }
 
 void FrameImageView::keyPressEvent(QKeyEvent* event) {
+    if (event->key() == Qt::Key_Escape && m_arrowsMovePick && m_overlay.pickedPixel.x() >= 0) {
+        emit pixelPicked(QPoint(-1, -1));  // Esc lets go of the pixel: the arrows step again
+        return;
+    }
     const std::optional<QPoint> step = arrowStep(event->key());
     if (step && m_arrowsMovePick && m_overlay.pickedPixel.x() >= 0 && !m_image.isNull()) {
         const QPoint p = m_overlay.pickedPixel + *step;

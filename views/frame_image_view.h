@@ -1,5 +1,6 @@
 // Shows a rendered image: fit to the window or zoom around the mouse with the wheel, pan
-// by dragging, and at high zoom a pixel grid with the pixel centres, so single pixels
+// by dragging, and at high zoom a pixel grid with the pixels' sample points (their centres,
+// or their corners under the course's rules), so single pixels
 // can be told apart. Reports the pixel under the mouse and the pixel clicked.
 #pragma once
 
