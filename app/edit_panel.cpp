@@ -565,16 +565,13 @@ QString EditPanel::fieldName(Field field, int source, std::size_t light) const {
     return name;
 }
 
-QString EditPanel::partName(Part part) const {
-    return part == Part::Camera ? tr("camera") : tr("lighting");
-}
-
 // ---- Saving
 
 bool EditPanel::saveError(Part part, const QString& message, QWidget* parent) {
-    QMessageBox box(QMessageBox::Warning, tr("Save"),
-                    tr("The %1 was not saved.").arg(partName(part)), QMessageBox::Ok,
-                    parent ? parent : this);
+    QMessageBox box(
+        QMessageBox::Warning, tr("Save"),
+        part == Part::Camera ? tr("The camera was not saved.") : tr("The lighting was not saved."),
+        QMessageBox::Ok, parent ? parent : this);
     box.setObjectName(QStringLiteral("saveErrorBox"));
     box.setInformativeText(message);
     box.exec();
@@ -649,7 +646,9 @@ bool EditPanel::maybeSave(QWidget* parent, Part part) {
                              ? tr("the built-in scene")
                              : QFileInfo(m_document->source(part)).fileName();
     QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"),
-                    tr("The %1 has changes that are not saved (%2).").arg(partName(part), file),
+                    (part == Part::Camera ? tr("The camera has changes that are not saved (%1).")
+                                          : tr("The lighting has changes that are not saved (%1)."))
+                        .arg(file),
                     QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
                     parent ? parent : this);
     box.setObjectName(QStringLiteral("saveChangesBox"));

@@ -118,7 +118,6 @@ private:
     void updateModified();
     void updateFileLabel();
     QString fieldName(Field field, int source, std::size_t light) const;
-    QString partName(Part part) const;
     bool saveError(Part part, const QString& message, QWidget* parent);
 
     SceneDocument* m_document;

@@ -702,52 +702,68 @@
         <translation>%1 of light %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="569"/>
+        <location filename="../app/edit_panel.cpp" line="573"/>
+        <source>The camera was not saved.</source>
+        <translation>The camera was not saved.</translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="573"/>
+        <source>The lighting was not saved.</source>
+        <translation>The lighting was not saved.</translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="649"/>
+        <source>The camera has changes that are not saved (%1).</source>
+        <translation>The camera has changes that are not saved (%1).</translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="650"/>
+        <source>The lighting has changes that are not saved (%1).</source>
+        <translation>The lighting has changes that are not saved (%1).</translation>
+    </message>
+    <message>
         <source>camera</source>
-        <translation>camera</translation>
+        <translation type="vanished">camera</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="569"/>
         <source>lighting</source>
-        <translation>lighting</translation>
+        <translation type="vanished">lighting</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="575"/>
+        <location filename="../app/edit_panel.cpp" line="572"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="576"/>
         <source>The %1 was not saved.</source>
-        <translation>The %1 was not saved.</translation>
+        <translation type="vanished">The %1 was not saved.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="631"/>
+        <location filename="../app/edit_panel.cpp" line="628"/>
         <source>Save Camera As</source>
         <translation>Save Camera As</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="631"/>
+        <location filename="../app/edit_panel.cpp" line="628"/>
         <source>Save Lighting As</source>
         <translation>Save Lighting As</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="649"/>
+        <location filename="../app/edit_panel.cpp" line="646"/>
         <source>the built-in scene</source>
         <translation>the built-in scene</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="651"/>
+        <location filename="../app/edit_panel.cpp" line="648"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="652"/>
         <source>The %1 has changes that are not saved (%2).</source>
-        <translation>The %1 has changes that are not saved (%2).</translation>
+        <translation type="vanished">The %1 has changes that are not saved (%2).</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="656"/>
+        <location filename="../app/edit_panel.cpp" line="655"/>
         <source>Save them?</source>
         <translation>Save them?</translation>
     </message>

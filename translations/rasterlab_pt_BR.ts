@@ -702,52 +702,68 @@
         <translation>%1 da luz %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="569"/>
+        <location filename="../app/edit_panel.cpp" line="573"/>
+        <source>The camera was not saved.</source>
+        <translation>A câmera não foi salva.</translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="573"/>
+        <source>The lighting was not saved.</source>
+        <translation>A iluminação não foi salva.</translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="649"/>
+        <source>The camera has changes that are not saved (%1).</source>
+        <translation>A câmera tem alterações não salvas (%1).</translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="650"/>
+        <source>The lighting has changes that are not saved (%1).</source>
+        <translation>A iluminação tem alterações não salvas (%1).</translation>
+    </message>
+    <message>
         <source>camera</source>
-        <translation>câmera</translation>
+        <translation type="vanished">câmera</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="569"/>
         <source>lighting</source>
-        <translation>iluminação</translation>
+        <translation type="vanished">iluminação</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="575"/>
+        <location filename="../app/edit_panel.cpp" line="572"/>
         <source>Save</source>
         <translation>Salvar</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="576"/>
         <source>The %1 was not saved.</source>
-        <translation>A %1 não foi salva.</translation>
+        <translation type="vanished">A %1 não foi salva.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="631"/>
+        <location filename="../app/edit_panel.cpp" line="628"/>
         <source>Save Camera As</source>
         <translation>Salvar câmera como</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="631"/>
+        <location filename="../app/edit_panel.cpp" line="628"/>
         <source>Save Lighting As</source>
         <translation>Salvar iluminação como</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="649"/>
+        <location filename="../app/edit_panel.cpp" line="646"/>
         <source>the built-in scene</source>
         <translation>a cena embutida</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="651"/>
+        <location filename="../app/edit_panel.cpp" line="648"/>
         <source>Unsaved changes</source>
         <translation>Alterações não salvas</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="652"/>
         <source>The %1 has changes that are not saved (%2).</source>
-        <translation>A %1 tem alterações que não foram salvas (%2).</translation>
+        <translation type="vanished">A %1 tem alterações que não foram salvas (%2).</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="656"/>
+        <location filename="../app/edit_panel.cpp" line="655"/>
         <source>Save them?</source>
         <translation>Salvá-las?</translation>
     </message>
