@@ -18,7 +18,8 @@
 #include <QVBoxLayout>
 #include <QWheelEvent>
 
-#include <cmath>
+#include <algorithm>
+#include <iterator>
 
 #include "scene_edits.h"
 
@@ -94,6 +95,7 @@ private:
 const char* symbolOf(SceneDocument::Field field) {
     static const char* const kSymbols[] = {"C",  "N",  "V",  "d",  "hx", "hy", "Pl", "Il",
                                            "Ia", "ka", "kd", "Od", "ks", "n",  ""};
+    static_assert(std::size(kSymbols) == std::size_t(SceneDocument::Field::Shading) + 1);
     return kSymbols[int(field)];
 }
 
@@ -333,20 +335,17 @@ void EditPanel::createActions() {
     m_saveAction->setToolTip(tr("Write the edited camera and lighting to their files"));
     connect(m_saveAction, &QAction::triggered, this, [this] { save(window()); });
 
-    m_saveCameraAsAction = new QAction(tr("&Camera..."), this);
-    m_saveCameraAsAction->setObjectName(QStringLiteral("editSaveCameraAsAction"));
-    connect(m_saveCameraAsAction, &QAction::triggered, this,
-            [this] { saveAs(Part::Camera, window()); });
-    m_saveLightingAsAction = new QAction(tr("&Lighting..."), this);
-    m_saveLightingAsAction->setObjectName(QStringLiteral("editSaveLightingAsAction"));
-    connect(m_saveLightingAsAction, &QAction::triggered, this,
-            [this] { saveAs(Part::Lighting, window()); });
-    m_saveAsMenu = new QMenu(this);
-    m_saveAsMenu->addAction(m_saveCameraAsAction);
-    m_saveAsMenu->addAction(m_saveLightingAsAction);
+    // Disabled with the Save As action, whose submenu they are.
+    auto* saveAsMenu = new QMenu(this);
+    QAction* camera =
+        saveAsMenu->addAction(tr("&Camera..."), this, [this] { saveAs(Part::Camera, window()); });
+    camera->setObjectName(QStringLiteral("editSaveCameraAsAction"));
+    QAction* lighting = saveAsMenu->addAction(tr("&Lighting..."), this,
+                                              [this] { saveAs(Part::Lighting, window()); });
+    lighting->setObjectName(QStringLiteral("editSaveLightingAsAction"));
     m_saveAsAction = new QAction(tr("Save &As"), this);
     m_saveAsAction->setObjectName(QStringLiteral("editSaveAsAction"));
-    m_saveAsAction->setMenu(m_saveAsMenu);
+    m_saveAsAction->setMenu(saveAsMenu);
 
     // Shortcuts where the panel is, also in a floating dock.
     addAction(m_undoAction);
@@ -378,8 +377,7 @@ void EditPanel::refresh() {
         const rl::vec3 kd = m_document->parts().lighting.material.kd;
         m_kdLink->setChecked(kd.r == kd.g && kd.g == kd.b);
     }
-    const bool editable = m_document->isLoaded() && !m_document->showsCommandFile();
-    m_content->setEnabled(editable);
+    m_content->setEnabled(isEditable());
 
     const std::size_t lights = m_document->parts().lighting.lights.size();
     const std::size_t shown = std::min(currentLight(), lights > 0 ? lights - 1 : 0);
@@ -393,35 +391,38 @@ void EditPanel::refresh() {
     m_lightSelector->setVisible(lights > 1);
     for (const Box& b : m_boxes) {
         b.box->setEnabled(!isLightField(b.field) || lights > 0);
-        showValue(b.box, m_document->value(b.field, currentLight())[std::size_t(b.component)]);
+        showBox(b);
     }
-    {
-        const QSignalBlocker blocker(m_shading);
-        m_shading->setCurrentIndex(m_shading->findData(int(m_document->settings().shading)));
-    }
-    m_saveAsAction->setEnabled(editable);
-    m_saveCameraAsAction->setEnabled(editable);
-    m_saveLightingAsAction->setEnabled(editable);
+    showShading();
+    m_saveAsAction->setEnabled(isEditable());
     updateModified();
 }
 
+bool EditPanel::isEditable() const {
+    return m_document->isLoaded() && !m_document->showsCommandFile();
+}
+
+void EditPanel::showBox(const Box& b) {
+    showValue(b.box, m_document->value(b.field, currentLight())[std::size_t(b.component)]);
+}
+
+void EditPanel::showShading() {
+    const QSignalBlocker blocker(m_shading);
+    m_shading->setCurrentIndex(m_shading->findData(int(m_document->settings().shading)));
+}
+
 void EditPanel::showLight() {
-    for (const Box& b : m_boxes) {
-        if (isLightField(b.field))
-            showValue(b.box, m_document->value(b.field, currentLight())[std::size_t(b.component)]);
-    }
+    for (const Box& b : m_boxes)
+        if (isLightField(b.field)) showBox(b);
 }
 
 void EditPanel::showField(Field field) {
     if (field == Field::Shading) {
-        const QSignalBlocker blocker(m_shading);
-        m_shading->setCurrentIndex(m_shading->findData(int(m_document->settings().shading)));
+        showShading();
         return;
     }
-    for (const Box& b : m_boxes) {
-        if (b.field != field || b.box == m_editing) continue;  // not under the user's fingers
-        showValue(b.box, m_document->value(field, currentLight())[std::size_t(b.component)]);
-    }
+    for (const Box& b : m_boxes)
+        if (b.field == field && b.box != m_editing) showBox(b);  // not under the user's fingers
 }
 
 void EditPanel::onBoxChanged(Field field, int component, double value) {
@@ -484,9 +485,8 @@ bool EditPanel::isModified() const {
 }
 
 void EditPanel::updateModified() {
-    const bool editable = m_document->isLoaded() && !m_document->showsCommandFile();
     const bool modified = isModified();
-    m_saveAction->setEnabled(editable && modified);
+    m_saveAction->setEnabled(isEditable() && modified);
     updateFileLabel();
     if (modified == m_modified) return;
     m_modified = modified;

@@ -51,9 +51,7 @@ public:
     QAction* undoAction() const { return m_undoAction; }      // QKeySequence::Undo
     QAction* redoAction() const { return m_redoAction; }      // QKeySequence::Redo
     QAction* saveAction() const { return m_saveAction; }      // QKeySequence::Save
-    QAction* saveAsAction() const { return m_saveAsAction; }  // a submenu of the two below
-    QAction* saveCameraAsAction() const { return m_saveCameraAsAction; }
-    QAction* saveLightingAsAction() const { return m_saveLightingAsAction; }
+    QAction* saveAsAction() const { return m_saveAsAction; }  // a submenu: Camera, Lighting
 
     // Whether the camera or the lighting differs from its file.
     bool isModified() const;
@@ -113,6 +111,9 @@ private:
     void push(Field field, std::size_t light, int source, const SceneDocument::Numbers& before,
               const SceneDocument::Numbers& after);
     void apply(Field field, std::size_t light, const SceneDocument::Numbers& value);
+    bool isEditable() const;  // a course scene is shown
+    void showBox(const Box& b);
+    void showShading();
     void showField(Field field);
     void showLight();
     void updateModified();
@@ -126,9 +127,6 @@ private:
     QAction* m_redoAction = nullptr;
     QAction* m_saveAction = nullptr;
     QAction* m_saveAsAction = nullptr;
-    QAction* m_saveCameraAsAction = nullptr;
-    QAction* m_saveLightingAsAction = nullptr;
-    QMenu* m_saveAsMenu = nullptr;
 
     QWidget* m_content = nullptr;
     QLabel* m_fileLabel = nullptr;

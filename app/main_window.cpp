@@ -18,6 +18,7 @@
 #include <QToolBar>
 #include <QToolButton>
 
+#include <algorithm>
 #include <cmath>
 
 #include "accuracy_panel.h"
@@ -730,14 +731,7 @@ void MainWindow::setShading(rl::ShadingModel model) {
 }
 
 bool MainWindow::exportImage(const QString& path) {
-    QString error;
-    if (m_frame.image.isNull() || !savePng(m_frame.image, path, &error)) {
-        showError(tr("%1: cannot export the image: %2")
-                      .arg(path, error.isEmpty() ? tr("nothing has been rendered yet") : error));
-        return false;
-    }
-    statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).absoluteFilePath()), 5000);
-    return true;
+    return writePng(m_frame.image, path, tr("%1: cannot export the image: %2"));
 }
 
 void MainWindow::setRules(rl::RuleSet rules) {
@@ -848,14 +842,18 @@ void MainWindow::updateOverlay() {
     // Scan conversion seen as a stage: every span of the frame, before any depth test.
     if (m_inspection->stage() == rl::StageId::ScanConversion &&
         m_inspection->granularity() == rl::StepGranularity::Stage && frame->scan) {
-        QImage mask(frame->scene->width, frame->scene->height, QImage::Format_ARGB32);
-        mask.fill(Qt::transparent);
-        const QRgb tint = qRgba(40, 200, 90, 110);
-        for (const rl::Span& s : frame->scan->spans) {
-            auto* line = reinterpret_cast<QRgb*>(mask.scanLine(s.y));
-            for (int x = s.xBegin; x < s.xEnd; ++x) line[x] = tint;
+        // Made once per frame (the overlay is redrawn on every selection and pick).
+        if (m_coverageFrame.lock() != frame) {
+            m_coverage = QImage(frame->scene->width, frame->scene->height, QImage::Format_ARGB32);
+            m_coverage.fill(Qt::transparent);
+            const QRgb tint = qRgba(40, 200, 90, 110);
+            for (const rl::Span& s : frame->scan->spans) {
+                auto* line = reinterpret_cast<QRgb*>(m_coverage.scanLine(s.y));
+                std::fill(line + s.xBegin, line + s.xEnd, tint);
+            }
+            m_coverageFrame = frame;
         }
-        o.coverage = mask;
+        o.coverage = m_coverage;
     }
     m_view->setOverlay(std::move(o));
 }

@@ -95,11 +95,7 @@ public:
     StageStrip* stageStrip() const { return m_stageStrip; }
     SteppingBar* steppingBar() const { return m_steppingBar; }
     BreakpointsView* breakpointsView() const { return m_breakpoints; }
-    CameraBasisView* cameraBasisView() const { return m_cameraBasis; }
     VertexTableView* vertexTableView() const { return m_vertexTable; }
-    NormalsView* normalsView() const { return m_normals; }
-    ProjectionView* projectionView() const { return m_projection; }
-    ScanlineView* scanlineView() const { return m_scanline; }
     PixelInspector* pixelInspector() const { return m_inspector; }
     EditPanel* editPanel() const { return m_edit; }
     QStringList recentFiles() const;
@@ -163,6 +159,8 @@ private:
     void watchSources();
     void onWatchedFileChanged(const QString& path);
     void reloadChangedFiles();
+    // Writes a picture; false with `failure` (%1 the path, %2 why) shown when it cannot.
+    bool writePng(const QImage& image, const QString& path, const QString& failure);
     void exportDialog();
     void exportDisplayedDialog();
     void exportBufferDialog(int which);
@@ -178,6 +176,8 @@ private:
     RenderedFrame m_frame;
     QString m_lastError;
     std::optional<rl::ReplayCursor> m_cursorToRestore;
+    QImage m_coverage;  // the frame's spans, tinted (scan conversion seen as a stage)
+    std::weak_ptr<const rl::FrameTrace> m_coverageFrame;
 
     FrameImageView* m_view = nullptr;
     StageStrip* m_stageStrip = nullptr;

@@ -16,81 +16,51 @@
 
 namespace rasterlab {
 
-namespace {
-
-bool saveOrShow(MainWindow* window, const QImage& image, const QString& path, QString* error) {
-    if (image.isNull()) {
-        *error = MainWindow::tr("nothing has been rendered yet");
-        return false;
-    }
-    (void)window;
-    return savePng(image, path, error);
-}
-
-}  // namespace
-
-bool MainWindow::exportDisplayed(const QString& path) {
+bool MainWindow::writePng(const QImage& image, const QString& path, const QString& failure) {
     QString error;
-    if (!saveOrShow(this, m_view->grab().toImage(), path, &error)) {
-        showError(tr("%1: cannot export the image: %2").arg(path, error));
+    if (image.isNull() || !savePng(image, path, &error)) {
+        showError(failure.arg(path, error.isEmpty() ? tr("nothing has been rendered yet") : error));
         return false;
     }
     statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).absoluteFilePath()), 5000);
     return true;
+}
+
+bool MainWindow::exportDisplayed(const QString& path) {
+    return writePng(m_view->grab().toImage(), path, tr("%1: cannot export the image: %2"));
 }
 
 bool MainWindow::exportDepthBuffer(const QString& path) {
     const rl::DepthTest* buffers = m_inspection->buffers();
-    QString error;
     QImage image;
     if (buffers) image = toQImage(rl::depthImage(buffers->depth, rl::depthRange(buffers->depth)));
-    if (!saveOrShow(this, image, path, &error)) {
-        showError(tr("%1: cannot export the depth buffer: %2").arg(path, error));
-        return false;
-    }
-    statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).absoluteFilePath()), 5000);
-    return true;
+    return writePng(image, path, tr("%1: cannot export the depth buffer: %2"));
 }
 
 bool MainWindow::exportNormalBuffer(const QString& path) {
     // The frame again, keeping the normal each pixel was lit with.
-    QString error;
+    const QString failure = tr("%1: cannot export the normal buffer: %2");
     QImage image;
     if (m_frame.trace) {
         rl::RenderOptions options;
         options.shading.keepNormals = true;
         auto frame = rl::renderFrame(m_frame.trace->scene, options);
         if (!frame) {
-            error = QString::fromStdString(frame.error().toString());
-        } else {
-            image = toQImage(rl::normalImage(frame->shading->normal, *frame->depth));
+            showError(failure.arg(path, QString::fromStdString(frame.error().toString())));
+            return false;
         }
+        image = toQImage(rl::normalImage(frame->shading->normal, *frame->depth));
     }
-    if (error.isEmpty() && !saveOrShow(this, image, path, &error)) {
-        showError(tr("%1: cannot export the normal buffer: %2").arg(path, error));
-        return false;
-    }
-    if (!error.isEmpty()) {
-        showError(tr("%1: cannot export the normal buffer: %2").arg(path, error));
-        return false;
-    }
-    statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).absoluteFilePath()), 5000);
-    return true;
+    return writePng(image, path, failure);
 }
 
 bool MainWindow::exportDock(const QString& dockName, const QString& path) {
     auto* dock = findChild<QDockWidget*>(dockName);
-    QString error;
     if (!dock || !dock->widget()) {
         showError(tr("%1: cannot export the view: there is no view %2").arg(path, dockName));
         return false;
     }
-    if (!saveOrShow(this, dock->widget()->grab().toImage(), path, &error)) {
-        showError(tr("%1: cannot export the view: %2").arg(path, error));
-        return false;
-    }
-    statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).absoluteFilePath()), 5000);
-    return true;
+    return writePng(dock->widget()->grab().toImage(), path, tr("%1: cannot export the view: %2"));
 }
 
 int MainWindow::exportSequence(const QString& folder, int maxImages) {
@@ -145,9 +115,7 @@ void MainWindow::exportBufferDialog(int which) {
                                                       tr("PNG images (*.png)"));
     if (path.isEmpty()) return;
     if (which == 0) {
-        QString error;
-        if (!saveOrShow(this, m_inspection->image(), path, &error))
-            showError(tr("%1: cannot export the image: %2").arg(path, error));
+        writePng(m_inspection->image(), path, tr("%1: cannot export the image: %2"));
     } else if (which == 1) {
         exportDepthBuffer(path);
     } else {

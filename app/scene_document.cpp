@@ -30,12 +30,15 @@ rl::Status SceneDocument::loadDefault() {
 
 namespace {
 
+std::string_view viewOf(const QByteArray& bytes) {
+    return {bytes.constData(), std::size_t(bytes.size())};
+}
+
 // Whether a file's first bytes look like a command file.
 bool isCommandFile(const QString& path) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) return false;
-    const QByteArray head = file.read(4096);
-    return rl::looksLikeHw2(std::string_view(head.constData(), std::size_t(head.size())));
+    return rl::looksLikeHw2(viewOf(file.read(4096)));
 }
 
 }  // namespace
@@ -83,6 +86,17 @@ void SceneDocument::setImageIndex(int index) {
 
 namespace {
 
+// Why a camera has no basis (N or V zero or parallel, d, hx or hy zero), if it has none: it
+// would fail every render, and a file of it would not load.
+std::optional<rl::Error> basisError(const rl::CourseCamera& camera) {
+    rl::Scene check;
+    check.camera = camera;
+    rl::Diagnostics warnings;  // the render reports them
+    auto basis = rl::CameraBasisStage().run(check, warnings);
+    if (!basis) return basis.error();
+    return std::nullopt;
+}
+
 bool isResource(const QString& path) {
     return path.startsWith(QStringLiteral(":/"));
 }
@@ -95,9 +109,7 @@ Layout layoutOfFile(const QString& path, Layout chosen, Detect detect) {
     if (chosen != Layout::Auto) return chosen;
     auto bytes = readInputFile(path);
     if (!bytes) return Layout::Ufpe;  // read a moment ago; not reached unless it vanished
-    const QByteArray& data = bytes.value();
-    return detect(std::string_view(data.constData(), std::size_t(data.size())))
-        .value_or(Layout::Ufpe);
+    return detect(viewOf(bytes.value())).value_or(Layout::Ufpe);
 }
 
 }  // namespace
@@ -109,17 +121,12 @@ rl::Status SceneDocument::open(Part part, const QString& path) {
         case Part::Camera: {
             auto camera = loadCamera(path, diagnostics, m_cameraLayout);
             if (!camera) return camera.error();
-            // A camera without a basis (N or V zero or parallel, d, hx or hy zero) would fail
-            // every render: refuse it here, so that the previous camera stays.
-            rl::Scene check;
-            check.camera = camera.value();
-            rl::Diagnostics basisWarnings;  // the render reports them again
-            if (auto basis = rl::CameraBasisStage().run(check, basisWarnings); !basis)
-                return basis.error();
+            // A camera without a basis is refused, so that the previous one stays.
+            if (auto error = basisError(camera.value())) return *error;
             m_parts.camera = camera.value();
             m_fileCamera = camera.value();
             m_cameraFileLayout = layoutOfFile(path, m_cameraLayout, rl::detectCameraLayout);
-            m_lastSaved[0].clear();
+            m_lastSaved[index(part)].clear();
             ++m_partsReplaced;
             break;
         }
@@ -129,7 +136,7 @@ rl::Status SceneDocument::open(Part part, const QString& path) {
             m_parts.lighting = lighting.value();
             m_fileLighting = lighting.value();
             m_lightingFileLayout = layoutOfFile(path, m_lightingLayout, rl::detectLightingLayout);
-            m_lastSaved[1].clear();
+            m_lastSaved[index(part)].clear();
             ++m_partsReplaced;
             break;
         }
@@ -181,34 +188,6 @@ std::shared_ptr<const rl::Scene> SceneDocument::scene() const {
 }
 
 // ---- Editing without files
-
-void SceneDocument::setCamera(const rl::CourseCamera& camera) {
-    rl::CourseCamera& c = m_parts.camera;
-    c.c = camera.c;
-    c.n = camera.n;
-    c.v = camera.v;
-    c.d = camera.d;
-    c.hx = camera.hx;
-    c.hy = camera.hy;
-}
-
-void SceneDocument::setLightPosition(std::size_t light, const rl::dvec3& pWorld) {
-    auto& lights = m_parts.lighting.lights;
-    if (light < lights.size()) lights[light].pWorld = rl::dvec4(pWorld, 1.0);
-}
-
-void SceneDocument::setLightIntensity(std::size_t light, const rl::vec3& intensity) {
-    auto& lights = m_parts.lighting.lights;
-    if (light < lights.size()) lights[light].intensity = intensity;
-}
-
-void SceneDocument::setAmbientIntensity(const rl::vec3& intensity) {
-    m_parts.lighting.ambientIntensity = intensity;
-}
-
-void SceneDocument::setMaterial(const rl::Material& material) {
-    m_parts.lighting.material = material;
-}
 
 int SceneDocument::componentCount(Field field) {
     switch (field) {
@@ -326,10 +305,10 @@ void SceneDocument::setValue(Field field, const Numbers& value, std::size_t ligh
             c.hy = value[0];
             break;
         case Field::LightPosition:
-            setLightPosition(light, dvec3Of(value));
+            if (light < l.lights.size()) l.lights[light].pWorld = rl::dvec4(dvec3Of(value), 1.0);
             break;
         case Field::LightIntensity:
-            setLightIntensity(light, vec3Of(value));
+            if (light < l.lights.size()) l.lights[light].intensity = vec3Of(value);
             break;
         case Field::Ambient:
             l.ambientIntensity = vec3Of(value);
@@ -372,10 +351,6 @@ bool sameValues(const rl::CourseLighting& a, const rl::CourseLighting& b) {
             a.lights[k].intensity != b.lights[k].intensity)
             return false;
     return true;
-}
-
-std::string_view viewOf(const QByteArray& bytes) {
-    return {bytes.constData(), std::size_t(bytes.size())};
 }
 
 rl::Error saveError(const QString& path, rl::ErrorCode code, const std::string& message) {
@@ -441,13 +416,10 @@ rl::Status SceneDocument::writePart(Part part, const QString& path, rl::CameraLa
     const std::string fileName = path.toStdString();
     const bool camera = part == Part::Camera;
     if (camera) {
-        rl::Scene check;
-        check.camera = m_parts.camera;
-        rl::Diagnostics basisWarnings;
-        if (auto basis = rl::CameraBasisStage().run(check, basisWarnings); !basis)
+        if (auto error = basisError(m_parts.camera))
             return saveError(
                 path, rl::ErrorCode::Degenerate,
-                "the camera was not saved, as it would not load again: " + basis.error().message);
+                "the camera was not saved, as it would not load again: " + error->message);
     }
 
     // The file's present text gives its line ending and, in a key = value file, the lines of

@@ -66,18 +66,11 @@ public:
     std::shared_ptr<const rl::Scene> scene() const;
 
     // ---- Editing without files -------------------------------------------------------
-    // The values of the course scene, changed in place (the sources, warnings and layouts
-    // stay those of the files). Lights out of range are ignored.
-    void setCamera(const rl::CourseCamera& camera);  // C, N, V, d, hx, hy (not `where`)
-    void setLightPosition(std::size_t light, const rl::dvec3& pWorld);
-    void setLightIntensity(std::size_t light, const rl::vec3& intensity);
-    void setAmbientIntensity(const rl::vec3& intensity);  // Ia
-    void setMaterial(const rl::Material& material);       // ka, kd, Od, ks, n
-    // (the shading model: setShading above)
-
-    // The same, one field at a time, as up to three numbers (x y z, r g b, or one number in
-    // [0]): what the edit panel and its undo commands hold. Shading is the ShadingModel's
-    // value; it belongs to no file.
+    // The values of the course scene, changed in place one field at a time (the sources,
+    // warnings and layouts stay those of the files), as up to three numbers (x y z, r g b, or
+    // one number in [0]): what the edit panel and its undo commands hold. Shading is the
+    // ShadingModel's value (as setShading); it belongs to no file. A light out of range reads
+    // as zeros and is not set.
     enum class Field : std::uint8_t {
         C,
         N,

@@ -42,9 +42,11 @@ std::string_view lineEndingOf(std::string_view previous) {
     return previous.find("\r\n") != std::string_view::npos ? "\r\n" : "\n";
 }
 
-template <typename T>
-bool isFiniteValue(T value) {
-    return std::isfinite(value);
+template <typename Vec>
+bool isFinite(const Vec& v) {
+    for (int k = 0; k < v.length(); ++k)
+        if (!std::isfinite(v[k])) return false;
+    return true;
 }
 
 // The numbers of one line: "x y z".
@@ -103,6 +105,11 @@ std::string writeKeyValues(const std::vector<Entry>& entries, std::string_view p
     const std::string_view eol = lineEndingOf(previous);
     std::vector<bool> written(entries.size(), false);
     std::string text;
+    const auto writeEntry = [&](std::size_t i) {
+        written[i] = true;
+        text += std::string(entries[i].key) + " = " + entries[i].value;
+        text += eol;
+    };
     // A byte-order mark stays in front of the first line.
     if (previous.starts_with("\xEF\xBB\xBF")) {
         text += previous.substr(0, 3);
@@ -125,16 +132,11 @@ std::string writeKeyValues(const std::vector<Entry>& entries, std::string_view p
             text += eol;
             continue;
         }
-        if (written[*entry]) continue;  // a repeated key (the reader refuses those): dropped
-        written[*entry] = true;
-        text += std::string(entries[*entry].key) + " = " + entries[*entry].value;
-        text += eol;
+        // A repeated key (the reader refuses those) is dropped.
+        if (!written[*entry]) writeEntry(*entry);
     }
-    for (std::size_t i = 0; i < entries.size(); ++i) {
-        if (written[i]) continue;
-        text += std::string(entries[i].key) + " = " + entries[i].value;
-        text += eol;
-    }
+    for (std::size_t i = 0; i < entries.size(); ++i)
+        if (!written[i]) writeEntry(i);
     return text;
 }
 
@@ -146,12 +148,8 @@ Error writeError(ErrorCode code, std::string message) {
 
 Result<std::string> writeCameraFile(const CourseCamera& camera, CameraLayout layout,
                                     std::string_view previous) {
-    const bool finite =
-        isFiniteValue(camera.c.x) && isFiniteValue(camera.c.y) && isFiniteValue(camera.c.z) &&
-        isFiniteValue(camera.n.x) && isFiniteValue(camera.n.y) && isFiniteValue(camera.n.z) &&
-        isFiniteValue(camera.v.x) && isFiniteValue(camera.v.y) && isFiniteValue(camera.v.z) &&
-        isFiniteValue(camera.d) && isFiniteValue(camera.hx) && isFiniteValue(camera.hy);
-    if (!finite)
+    if (!isFinite(camera.c) || !isFinite(camera.n) || !isFinite(camera.v) ||
+        !isFinite(dvec3(camera.d, camera.hx, camera.hy)))
         return writeError(ErrorCode::Range,
                           "cannot write the camera: its values must be finite numbers (a course "
                           "file cannot hold nan or inf)");
@@ -195,18 +193,15 @@ Result<std::string> writeLightingFile(const CourseLighting& lighting, LightingLa
                           "cannot write lighting without lights: the UFPE multi-light layout "
                           "holds one light or more");
     const Material& m = lighting.material;
-    bool finite = isFiniteValue(m.ka) && isFiniteValue(m.ks) && isFiniteValue(m.shininess);
-    for (int k = 0; k < 3; ++k)
-        finite = finite && isFiniteValue(m.kd[k]) && isFiniteValue(m.od[k]) &&
-                 isFiniteValue(lighting.ambientIntensity[k]);
+    bool finite = isFinite(vec3(m.ka, m.ks, m.shininess)) && isFinite(m.kd) && isFinite(m.od) &&
+                  isFinite(lighting.ambientIntensity);
     for (const Light& light : lighting.lights) {
         if (light.pWorld.w != 1.0)
             return writeError(
                 ErrorCode::Unsupported,
                 "cannot write a directional light (w = " + formatExact(light.pWorld.w) +
                     "): course files hold point lights (x y z)");
-        for (int k = 0; k < 3; ++k)
-            finite = finite && isFiniteValue(light.pWorld[k]) && isFiniteValue(light.intensity[k]);
+        finite = finite && isFinite(dvec3(light.pWorld)) && isFinite(light.intensity);
     }
     if (!finite)
         return writeError(ErrorCode::Range,

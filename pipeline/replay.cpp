@@ -9,22 +9,6 @@
 
 namespace rl {
 
-const char* stepGranularityName(StepGranularity granularity) {
-    switch (granularity) {
-        case StepGranularity::Stage:
-            return "stage";
-        case StepGranularity::Triangle:
-            return "triangle";
-        case StepGranularity::Scanline:
-            return "scanline";
-        case StepGranularity::Span:
-            return "span";
-        case StepGranularity::Pixel:
-            return "pixel";
-    }
-    return "?";
-}
-
 namespace {
 
 constexpr std::uint32_t kPrefixStep = 1024;
@@ -109,28 +93,27 @@ Result<std::shared_ptr<const FrameReplay>> FrameReplay::build(
                              " fragments");
     for (std::size_t t = 0; t < triangles; ++t) replay->m_rowStart[t + 1] += replay->m_rowStart[t];
 
-    // Which fragment each written one replaced, and how many times its pixel was written.
+    // Which fragment each written one replaced, how many times its pixel has been written
+    // (one more than the fragment it replaced), and the count of writes before every 1024th
+    // fragment, the end included.
     Image<std::uint32_t> writer(scene.width, scene.height, kNoFragment);
-    Image<std::uint32_t> writes(scene.width, scene.height, 0u);
     std::vector<std::uint32_t> written;
     written.reserve(trace->depth->passed);
+    replay->m_writtenPrefix.assign(fragments.size() / kPrefixStep + 1, 0);
     for (std::size_t i = 0; i < fragments.size(); ++i) {
+        if (i % kPrefixStep == 0)
+            replay->m_writtenPrefix[i / kPrefixStep] = static_cast<std::uint32_t>(written.size());
         ReplayFragment& f = fragments[i];
         if (f.verdict != FragmentVerdict::Written) continue;
         f.previous = writer.at(f.x, f.y);
-        f.writeNumber = ++writes.at(f.x, f.y);
+        f.writeNumber = f.previous == kNoFragment ? 1 : fragments[f.previous].writeNumber + 1;
         writer.at(f.x, f.y) = static_cast<std::uint32_t>(i);
         written.push_back(static_cast<std::uint32_t>(i));
     }
+    if (fragments.size() % kPrefixStep == 0)
+        replay->m_writtenPrefix.back() = static_cast<std::uint32_t>(written.size());
     replay->m_finalWriter = std::move(writer);
     replay->m_written = written.size();
-    // The count before every 1024th fragment, up to and including the end (which may be one).
-    replay->m_writtenPrefix.assign(fragments.size() / kPrefixStep + 1, 0);
-    for (std::size_t i = 0, n = 0; i <= fragments.size(); ++i) {
-        if (i % kPrefixStep == 0)
-            replay->m_writtenPrefix[i / kPrefixStep] = static_cast<std::uint32_t>(n);
-        if (i < fragments.size()) n += fragments[i].verdict == FragmentVerdict::Written ? 1 : 0;
-    }
     if (cancelled()) return makeError(ErrorCode::Usage, where, "cancelled");
 
     // The colour each written fragment writes, by the frame's own shading stage.
@@ -382,7 +365,6 @@ void ReplayState::seek(ReplayCursor target) {
         resetTo(true);
         at = total;
     }
-    m_lastWork = at > to ? at - to : to - at;
     for (; at < to; ++at) apply(at);
     for (; at > to; --at) undo(at - 1);
     m_cursor = target;

@@ -38,8 +38,6 @@ namespace rl {
 
 enum class StepGranularity : std::uint8_t { Stage, Triangle, Scanline, Span, Pixel };
 
-const char* stepGranularityName(StepGranularity granularity);  // "stage", "triangle", ...
-
 // One row of a triangle's edge walk (triangle, y, the span [xBegin, xEnd) on the screen and
 // the exact edge crossings xLeft, xRight), and the fragments its pixels made.
 struct ReplayRow : ReplayRowEvent {
@@ -176,8 +174,6 @@ public:
     const Rgba8Image& image() const { return m_image; }
     // The triangle holding pixel (x, y) at the cursor, or kNoTriangle.
     std::uint32_t triangleAt(int x, int y) const { return m_buffers.triangle.at(x, y); }
-    // How many fragments were applied or undone by the last seek (for the benchmark).
-    std::size_t lastSeekWork() const { return m_lastWork; }
 
 private:
     void apply(std::uint32_t i);
@@ -191,7 +187,6 @@ private:
     Image<std::uint32_t> m_writer;
     Rgba8Image m_image;
     std::array<std::uint8_t, 4> m_background{};
-    std::size_t m_lastWork = 0;
 };
 
 }  // namespace rl

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "benchmark_scenes.h"
+#include "course_writers.h"
 #include "frame_memory.h"
 #include "inspection.h"
 #include "main_window.h"
@@ -31,26 +32,34 @@ using namespace rasterlab;
 
 namespace {
 
-// A torus of about `triangles` triangles as the three course files.
+// A torus of about `triangles` triangles as the three course files (the camera and lighting
+// in the UFPE layout, by the course writers).
 bool writeTorus(const QString& dir, int triangles, QString paths[3]) {
     const int nv = 100;
     const int nu = std::max(3, triangles / (2 * nv));
     const auto mesh = rl::torusMesh(nu, nv);
     const rl::Framing framing = rl::frameMesh(*mesh, 800, 600);
+    rl::CourseLighting lighting;
+    lighting.material.ka = 0.2f;
+    lighting.material.kd = rl::vec3(0.7f);
+    lighting.material.od = rl::vec3(0.9f, 0.5f, 0.2f);
+    lighting.material.ks = 0.5f;
+    lighting.material.shininess = 12.0f;
+    lighting.ambientIntensity = rl::vec3(90.0f);
+    lighting.lights.push_back({rl::dvec4(framing.light, 1.0), rl::vec3(255.0f), {}});
+    const auto cameraText = rl::writeCameraFile(framing.camera, rl::CameraLayout::Ufpe);
+    const auto lightingText = rl::writeLightingFile(lighting, rl::LightingLayout::Ufpe);
+    if (!cameraText || !lightingText) return false;
+
     paths[0] = dir + QStringLiteral("/torus.cfg");
     paths[1] = dir + QStringLiteral("/torus-light.txt");
     paths[2] = dir + QStringLiteral("/torus.byu");
-    QFile camera(paths[0]), lighting(paths[1]), object(paths[2]);
-    if (!camera.open(QIODevice::WriteOnly) || !lighting.open(QIODevice::WriteOnly) ||
+    QFile camera(paths[0]), light(paths[1]), object(paths[2]);
+    if (!camera.open(QIODevice::WriteOnly) || !light.open(QIODevice::WriteOnly) ||
         !object.open(QIODevice::WriteOnly))
         return false;
-    const rl::CourseCamera& c = framing.camera;
-    QTextStream(&camera) << c.c.x << ' ' << c.c.y << ' ' << c.c.z << '\n'
-                         << c.n.x << ' ' << c.n.y << ' ' << c.n.z << '\n'
-                         << c.v.x << ' ' << c.v.y << ' ' << c.v.z << '\n'
-                         << c.d << ' ' << c.hx << ' ' << c.hy << '\n';
-    QTextStream(&lighting) << framing.light.x << ' ' << framing.light.y << ' ' << framing.light.z
-                           << "\n0.2\n90 90 90\n0.7\n0.9 0.5 0.2\n0.5\n255 255 255\n12\n";
+    camera.write(QByteArray::fromStdString(*cameraText));
+    light.write(QByteArray::fromStdString(*lightingText));
     QTextStream out(&object);
     out.setRealNumberPrecision(9);
     out << mesh->positions.size() << ' ' << mesh->triangles.size() << '\n';

@@ -22,7 +22,6 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
-#include <QElapsedTimer>
 #include <QFile>
 #include <QLibraryInfo>
 #include <QMenu>
@@ -54,24 +53,22 @@ using namespace rasterlab;
 
 namespace {
 
+constexpr int kTimeoutMs = 60000;
+
 bool waitForReplay(MainWindow& window) {
-    QElapsedTimer timer;
-    timer.start();
-    while (timer.elapsed() < 60000) {
-        if (window.inspection()->canStep() && !window.controller()->isBusy() &&
-            !window.replayBuilder()->isBusy())
-            return true;
-        QTest::qWait(20);
-    }
-    std::printf("FAILED: the frame was not ready to step through in 60 s\n");
-    return false;
+    const bool ready = QTest::qWaitFor(
+        [&] {
+            return window.inspection()->canStep() && !window.controller()->isBusy() &&
+                   !window.replayBuilder()->isBusy();
+        },
+        kTimeoutMs);
+    if (!ready) std::printf("FAILED: the frame was not ready to step through in 60 s\n");
+    return ready;
 }
 
 // After a change of the scene: waits for a frame other than `old`, ready to step through.
 bool waitForNewFrame(MainWindow& window, const std::shared_ptr<const rl::FrameTrace>& old) {
-    QElapsedTimer timer;
-    timer.start();
-    while (window.inspection()->frame() == old && timer.elapsed() < 60000) QTest::qWait(20);
+    (void)QTest::qWaitFor([&] { return window.inspection()->frame() != old; }, kTimeoutMs);
     return waitForReplay(window);
 }
 
@@ -146,9 +143,7 @@ bool saveDock(QDockWidget* dock, const QString& path, QSize size) {
     }
     const QSize old = view->size();
     view->resize(size.expandedTo(view->minimumSizeHint()));
-    QCoreApplication::processEvents();
-    const bool ok = view->grab().save(path, "PNG", 0);
-    std::printf("%s %s\n", ok ? "wrote" : "FAILED", qPrintable(path));
+    const bool ok = save(view, path);
     view->resize(old);
     if (scroll) scroll->setWidgetResizable(true);
     return ok;
@@ -166,6 +161,17 @@ void zoomTo(FrameImageView* view, const QRectF& area, QSizeF room, double minZoo
     while (view->zoom() * 1.25 <= wanted) wheel(view, centre, 1);
     // Centre again (the wheel keeps the point under the mouse, up to rounding).
     drag(view, view->widgetPoint(area.center()), centre);
+}
+
+// The image zoomed onto `area` (zoomTo, in `room`), the part `crop` of the view around its
+// middle saved; then the whole image in the view again.
+bool saveZoomed(FrameImageView* view, const QRectF& area, QSizeF room, double minZoom, QSize crop,
+                const QString& path) {
+    zoomTo(view, area, room, minZoom);
+    const bool ok = save(
+        view, path, around(QPointF(view->width() / 2.0, view->height() / 2.0), crop, view->rect()));
+    view->fitToWindow();
+    return ok;
 }
 
 }  // namespace
@@ -309,10 +315,8 @@ int main(int argc, char* argv[]) {
             box = QPolygonF(QList<QPointF>(t->begin(), t->end())).boundingRect();
         box.adjust(-1.0, -1.0, 1.0, 1.0);
         const QSize crop(620, 420);
-        zoomTo(view, box, QSizeF(crop) * 0.85, 10.0);
-        check(save(view, file(QStringLiteral("image-stepping")),
-                   around(QPointF(view->width() / 2.0, view->height() / 2.0), crop, view->rect())));
-        view->fitToWindow();
+        check(saveZoomed(view, box, QSizeF(crop) * 0.85, 10.0, crop,
+                         file(QStringLiteral("image-stepping"))));
     }
 
     // A breakpoint: the first depth rejection at a pixel where a fragment is rejected.
@@ -394,12 +398,9 @@ int main(int argc, char* argv[]) {
         check(saveDock(dock(window, "pixelInspectorDock"), file(QStringLiteral("inspector-black")),
                        QSize(700, 600)));
         // Where it is: black on black, next to the background.
-        FrameImageView* view = window.imageView();
         const QSize crop(520, 320);
-        zoomTo(view, QRectF(black.x() - 20, black.y() - 12, 41, 25), QSizeF(crop), 4.0);
-        check(save(view, file(QStringLiteral("image-black")),
-                   around(QPointF(view->width() / 2.0, view->height() / 2.0), crop, view->rect())));
-        view->fitToWindow();
+        check(saveZoomed(window.imageView(), QRectF(black.x() - 20, black.y() - 12, 41, 25),
+                         QSizeF(crop), 4.0, crop, file(QStringLiteral("image-black"))));
     }
 
     // In front of a class: ka back to 1 (Undo), the highlight picked, stepped by scanline to

@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <optional>
+#include <string_view>
 
 #include "depth_test.h"
 #include "diagnostics.h"
@@ -31,6 +32,10 @@ QString cliPath();    // the rasterlab-cli binary
 
 // The text of a file, or a failed test.
 QByteArray readFile(const QString& path);
+// Bytes as the readers take them.
+inline std::string_view viewOf(const QByteArray& bytes) {
+    return {bytes.constData(), static_cast<std::size_t>(bytes.size())};
+}
 
 // A mesh from positions and 0-based triangles.
 std::shared_ptr<const rl::Mesh> makeMesh(std::vector<rl::dvec3> positions,

@@ -17,9 +17,8 @@
 
 namespace {
 
-std::string_view viewOf(const QByteArray& bytes) {
-    return {bytes.constData(), static_cast<std::size_t>(bytes.size())};
-}
+using testing::seedCamera;  // seed 000's camera
+using testing::viewOf;
 
 QString qs(const std::string& s) {
     return QString::fromStdString(s);
@@ -84,11 +83,7 @@ QString lightingDiff(const rl::CourseLighting& a, const rl::CourseLighting& b) {
         if (!d_.isEmpty()) QFAIL(qPrintable(context + d_)); \
     } while (false)
 
-// Seed 000's camera and a one-light lighting (the values of tst_course_variants).
-rl::CourseCamera seedCamera() {
-    return testing::seedCamera();
-}
-
+// A one-light lighting (the values of tst_course_variants).
 rl::CourseLighting oneLight() {
     rl::CourseLighting l;
     l.material.ka = 0.25f;
@@ -144,13 +139,6 @@ rl::CourseLighting awkwardLighting() {
 
 QString sample(const QString& relative) {
     return testing::samplesDir() + QStringLiteral("/course/") + relative;
-}
-
-const char* cameraName(rl::CameraLayout layout) {
-    return rl::cameraLayoutName(layout);
-}
-const char* lightingName(rl::LightingLayout layout) {
-    return rl::lightingLayoutName(layout);
 }
 
 }  // namespace
@@ -407,7 +395,7 @@ void TestCourseWriters::cameraRoundTrip_data() {
                              "seed-example/camera.cfg", ""}) {
         for (rl::CameraLayout layout : rl::kCameraLayouts) {
             if (layout == rl::CameraLayout::Auto) continue;
-            QTest::addRow("%s %s", *file ? file : "awkward values", cameraName(layout))
+            QTest::addRow("%s %s", *file ? file : "awkward values", rl::cameraLayoutName(layout))
                 << QString::fromLatin1(file) << layout;
         }
     }
@@ -448,7 +436,7 @@ void TestCourseWriters::lightingRoundTrip_data() {
             const char* label = !*file                            ? "awkward values, two lights"
                                 : std::string_view(file) == "one" ? "awkward values, one light"
                                                                   : file;
-            QTest::addRow("%s %s", label, lightingName(layout))
+            QTest::addRow("%s %s", label, rl::lightingLayoutName(layout))
                 << QString::fromLatin1(file) << layout;
         }
     }

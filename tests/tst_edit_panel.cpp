@@ -57,10 +57,6 @@ QByteArray contentOf(const QString& path) {
     return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
 
-std::string_view viewOf(const QByteArray& bytes) {
-    return {bytes.constData(), std::size_t(bytes.size())};
-}
-
 // Runs `action` while answering the first modal dialog it opens with `button` (or closing
 // it): returns what the dialog said ("objectName: text / informative text"), or "" when none
 // opened.
@@ -484,7 +480,7 @@ void TestEditPanel::saveWritesTheFileInItsLayout() {
                         "255\r\n2\r\n"));
     rl::Diagnostics diagnostics;
     const QByteArray cameraText = contentOf(f.cameraPath);
-    const auto camera = rl::readCameraFile(viewOf(cameraText), "camera", diagnostics);
+    const auto camera = rl::readCameraFile(testing::viewOf(cameraText), "camera", diagnostics);
     QVERIFY(camera.ok());
     QCOMPARE(camera->c, rl::dvec3(75, -50, 600));
     QCOMPARE(camera->n, rl::dvec3(0.1, 0, -1));
@@ -581,7 +577,7 @@ void TestEditPanel::saveInReadOnlyFolderFails() {
     if (geteuid() == 0) QSKIP("root writes into read-only folders");
     Fixture f;
     LOAD(f);
-    f.document.setAmbientIntensity(rl::vec3(10.0f));
+    f.document.setValue(Field::Ambient, {10.0, 10.0, 10.0});
     const QByteArray before = contentOf(f.lightingPath);
     QFile::setPermissions(f.dir.path(), QFileDevice::ReadOwner | QFileDevice::ExeOwner);
     const rl::Status status = f.document.save(Part::Lighting);
@@ -597,9 +593,7 @@ void TestEditPanel::degenerateCameraIsNotSaved() {
     REQUIRE_SAMPLES();
     Fixture f;
     LOAD(f);
-    rl::CourseCamera camera = f.document.parts().camera;
-    camera.v = rl::dvec3(0, 0, 2);  // parallel to N = (0, 0, -1)
-    f.document.setCamera(camera);
+    f.document.setValue(Field::V, {0.0, 0.0, 2.0});  // parallel to N = (0, 0, -1)
     const QByteArray before = contentOf(f.cameraPath);
     const rl::Status status = f.document.save(Part::Camera);
     QVERIFY(!status.ok());

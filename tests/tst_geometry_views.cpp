@@ -145,6 +145,18 @@ void lookAt(QWidget& widget, const QString& name) {
     if (!dir.isEmpty()) image.save(dir + QLatin1Char('/') + name + QStringLiteral(".png"));
 }
 
+// A view on an Inspection of its own, resized and shown.
+template <typename View>
+struct Shown {
+    explicit Shown(QSize size) {
+        view.resize(size);
+        view.show();
+    }
+    Inspection inspection;
+    View view{&inspection};
+};
+constexpr QSize kBasisSize(900, 600), kProjectionSize(900, 700);
+
 }  // namespace
 
 class TestGeometryViews : public QObject {
@@ -166,11 +178,9 @@ private slots:
 };
 
 void TestGeometryViews::gramSchmidtStepsByHand() {
-    Inspection inspection;
-    CameraBasisView view(&inspection);
+    Shown<CameraBasisView> shown(kBasisSize);
+    auto& [inspection, view] = shown;
     QCOMPARE(view.objectName(), QStringLiteral("cameraBasisView"));
-    view.resize(900, 600);
-    view.show();
     inspection.setFrame(render(cameraScene(handCamera())), QImage());
     QCOMPARE(view.step(), 4);
     const QStringList steps = view.stepTexts();
@@ -197,10 +207,8 @@ void TestGeometryViews::gramSchmidtStepsByHand() {
 }
 
 void TestGeometryViews::stepsRevealTheDrawing() {
-    Inspection inspection;
-    CameraBasisView view(&inspection);
-    view.resize(900, 600);
-    view.show();
+    Shown<CameraBasisView> shown(kBasisSize);
+    auto& [inspection, view] = shown;
     QVERIFY(QTest::qWaitForWindowExposed(&view));
     inspection.setFrame(render(cameraScene(handCamera())), QImage());
     auto* slider = view.findChild<QSlider*>(QStringLiteral("cameraBasisStep"));
@@ -249,10 +257,8 @@ void TestGeometryViews::stepsRevealTheDrawing() {
 }
 
 void TestGeometryViews::orbitCamera() {
-    Inspection inspection;
-    CameraBasisView view(&inspection);
-    view.resize(900, 600);
-    view.show();
+    Shown<CameraBasisView> shown(kBasisSize);
+    auto& [inspection, view] = shown;
     inspection.setFrame(render(cameraScene(handCamera())), QImage());
     rasterlab::CameraBasisCanvas* canvas = view.canvas();
     const double yaw = canvas->yaw(), pitch = canvas->pitch();
@@ -277,10 +283,8 @@ void TestGeometryViews::orbitCamera() {
 }
 
 void TestGeometryViews::nearlyParallelIsIllConditioned() {
-    Inspection inspection;
-    CameraBasisView view(&inspection);
-    view.resize(900, 600);
-    view.show();
+    Shown<CameraBasisView> shown(kBasisSize);
+    auto& [inspection, view] = shown;
     // V = (0, 1e-4, 1), N = (0, 0, 1): V.N = 1, V' = (0, 1e-4, 0), |V'| / |V| = 1e-4 /
     // sqrt(1 + 1e-8).
     rl::CourseCamera camera = handCamera();
@@ -305,10 +309,8 @@ void TestGeometryViews::nearlyParallelIsIllConditioned() {
 }
 
 void TestGeometryViews::rejectedCameraShowsUntilNextFrame() {
-    Inspection inspection;
-    CameraBasisView view(&inspection);
-    view.resize(900, 600);
-    view.show();
+    Shown<CameraBasisView> shown(kBasisSize);
+    auto& [inspection, view] = shown;
     QVERIFY(QTest::qWaitForWindowExposed(&view));
     inspection.setFrame(render(cameraScene(handCamera())), QImage());
     view.canvas()->repaint();
@@ -343,10 +345,8 @@ void TestGeometryViews::hw2SceneSkipsTheStage() {
     rl::Diagnostics diagnostics;
     auto hw2 = rasterlab::loadCommandFile(dir + QStringLiteral("/hw2/hw2depth.txt"), diagnostics);
     QVERIFY(hw2);
-    Inspection inspection;
-    CameraBasisView view(&inspection);
-    view.resize(900, 600);
-    view.show();
+    Shown<CameraBasisView> shown(kBasisSize);
+    auto& [inspection, view] = shown;
     inspection.setFrame(render(hw2->images.at(0).scene), QImage());
     QCOMPARE(view.statusText(), QStringLiteral("This stage is skipped: the scene gives its "
                                                "model/view matrices directly."));
@@ -355,7 +355,7 @@ void TestGeometryViews::hw2SceneSkipsTheStage() {
     QCOMPARE(view.canvas()->message(), view.statusText());
     // The projection view draws the HW2 scene in its own clip space.
     ProjectionView projection(&inspection);
-    projection.resize(900, 700);
+    projection.resize(kProjectionSize);
     projection.show();
     const rl::Projection& p = *inspection.frame()->projection;
     QCOMPARE(projection.counts().inside, p.inside);
@@ -367,11 +367,9 @@ void TestGeometryViews::hw2SceneSkipsTheStage() {
 }
 
 void TestGeometryViews::fatesCountedByHand() {
-    Inspection inspection;
-    ProjectionView view(&inspection);
+    Shown<ProjectionView> shown(kProjectionSize);
+    auto& [inspection, view] = shown;
     QCOMPARE(view.objectName(), QStringLiteral("projectionView"));
-    view.resize(900, 700);
-    view.show();
     const auto frame = clippingFrame();
     inspection.setFrame(frame, QImage());
     const rl::Projection& p = *frame->projection;
@@ -412,10 +410,8 @@ void TestGeometryViews::fatesCountedByHand() {
 }
 
 void TestGeometryViews::formulasOfTheSelectedVertex() {
-    Inspection inspection;
-    ProjectionView view(&inspection);
-    view.resize(900, 700);
-    view.show();
+    Shown<ProjectionView> shown(kProjectionSize);
+    auto& [inspection, view] = shown;
     inspection.setFrame(clippingFrame(), QImage());
     QVERIFY(view.explanationHtml().contains(QStringLiteral("Click a triangle")));
     inspection.selectTriangle(0u);
@@ -443,10 +439,8 @@ void TestGeometryViews::formulasOfTheSelectedVertex() {
 }
 
 void TestGeometryViews::sideViewMarksClipping() {
-    Inspection inspection;
-    ProjectionView view(&inspection);
-    view.resize(900, 700);
-    view.show();
+    Shown<ProjectionView> shown(kProjectionSize);
+    auto& [inspection, view] = shown;
     inspection.setFrame(clippingFrame(), QImage());
     // The two vertices the near plane made; T0's and T1's edges plain; T2 and T3 apart.
     QCOMPARE(view.sideView()->madeVertexCount(), std::size_t(2));
@@ -454,10 +448,8 @@ void TestGeometryViews::sideViewMarksClipping() {
 }
 
 void TestGeometryViews::clickSelects() {
-    Inspection inspection;
-    ProjectionView view(&inspection);
-    view.resize(900, 700);
-    view.show();
+    Shown<ProjectionView> shown(kProjectionSize);
+    auto& [inspection, view] = shown;
     QVERIFY(QTest::qWaitForWindowExposed(&view));
     inspection.setFrame(clippingFrame(), QImage());
     ProjectionCanvas* canvas = view.canvas();
@@ -496,10 +488,8 @@ void TestGeometryViews::clickSelects() {
 }
 
 void TestGeometryViews::highlightsFollowTheInspection() {
-    Inspection inspection;
-    ProjectionView view(&inspection);
-    view.resize(900, 700);
-    view.show();
+    Shown<ProjectionView> shown(kProjectionSize);
+    auto& [inspection, view] = shown;
     const auto frame = clippingFrame();
     inspection.setFrame(frame, QImage());
     auto replay = rl::FrameReplay::build(frame);

@@ -111,11 +111,12 @@ std::shared_ptr<const Scene> calice2Scene() {
         makeCourseScene(CourseSceneParts{c.value(), l.value(), o.value()}, {}));
 }
 
-QImage frameImage(const FrameTrace& frame) {
-    const Rgba8Image bytes = colourImage(*frame.shading, *frame.depth, frame.scene->conventions);
-    return QImage(bytes.rgba.data(), bytes.width, bytes.height, bytes.width * 4,
-                  QImage::Format_RGBA8888)
-        .copy();
+// Gives the inspection a frame with its picture, as the main window does.
+void setFrame(Inspection& inspection, const std::shared_ptr<const FrameTrace>& frame) {
+    const Rgba8Image bytes = colourImage(*frame->shading, *frame->depth, frame->scene->conventions);
+    inspection.setFrame(frame, QImage(bytes.rgba.data(), bytes.width, bytes.height, bytes.width * 4,
+                                      QImage::Format_RGBA8888)
+                                   .copy());
 }
 
 // Pixels of `image` whose channels differ from the renderer's normal image by more than 1.
@@ -267,7 +268,7 @@ void TestVertexNormalsViews::tableSelectionGoesToTheInspection() {
     view.resize(900, 500);
     view.show();
     const auto frame = render(tableScene());
-    inspection.setFrame(frame, frameImage(*frame));
+    setFrame(inspection, frame);
     QCOMPARE(view.model()->rowCount(), 8);
 
     QSignalSpy spy(&inspection, &Inspection::selectionChanged);
@@ -291,7 +292,7 @@ void TestVertexNormalsViews::pickedPixelSelectsRows() {
     view.resize(900, 500);
     view.show();
     const auto frame = render(tableScene());
-    inspection.setFrame(frame, frameImage(*frame));
+    setFrame(inspection, frame);
     // Row 3 of triangle 1 runs from its edge (2,3)-(6,2) at x = 2 to its edge (6,2)-(3,5) at
     // x = 5; the clipped triangle is below row 4.
     QCOMPARE(inspection.triangleAt(QPoint(4, 3)), 0u);
@@ -326,7 +327,7 @@ void TestVertexNormalsViews::filterToTheSelectedTriangle() {
     VertexTableView view(&inspection);
     view.show();
     const auto frame = render(tableScene());
-    inspection.setFrame(frame, frameImage(*frame));
+    setFrame(inspection, frame);
     QCOMPARE(view.visibleRowCount(), 8);
     view.setOnlySelectedTriangle(true);
     QVERIFY(view.findChild<QCheckBox*>(QStringLiteral("vertexTableOnlyTriangle"))->isChecked());
@@ -351,7 +352,7 @@ void TestVertexNormalsViews::vertexExplanation() {
     VertexTableView view(&inspection);
     view.show();
     const auto frame = render(tableScene());
-    inspection.setFrame(frame, frameImage(*frame));
+    setFrame(inspection, frame);
     inspection.selectVertices({{0, 0}});
     const QString text = view.explanationText();
     // [U; V; N](P - C) with the axis camera: U = (-1, 0, 0), V = (0, 1, 0), N = (0, 0, 1).
@@ -393,7 +394,7 @@ void TestVertexNormalsViews::triangleNormalsAndBackFaces() {
     QCOMPARE(view.objectName(), QStringLiteral("normalsView"));
     view.resize(700, 600);
     view.show();
-    inspection.setFrame(frame, frameImage(*frame));
+    setFrame(inspection, frame);
     QCOMPARE(view.picture().meshTriangles, std::size_t(4));
     QCOMPARE(view.picture().backFaces, std::size_t(1));
     QCOMPARE(view.picture().inconsistentTriangles, std::size_t(0));
@@ -436,7 +437,7 @@ void TestVertexNormalsViews::octahedronFaces() {
     auto frame = render(octahedronScene(false));
     QCOMPARE(rasterlab::backFaces(frame->projection->draws[0].pView, *octahedron(false)),
              (std::vector<std::uint8_t>{0, 0, 0, 0, 1, 1, 1, 1}));
-    inspection.setFrame(frame, frameImage(*frame));
+    setFrame(inspection, frame);
     QCOMPARE(view.picture().backFaces, std::size_t(4));
     QCOMPARE(view.picture().inconsistentEdges, std::size_t(0));
     // Wound outward in view space: in world space (x mirrored) the other way round, and the
@@ -458,14 +459,14 @@ void TestVertexNormalsViews::octahedronFaces() {
         culled->cullHiddenBackFaces = true;
         const auto culledFrame = render(culled);
         QCOMPARE(culledFrame->projection->backFaces, std::size_t(4));
-        inspection.setFrame(culledFrame, frameImage(*culledFrame));
+        setFrame(inspection, culledFrame);
         QCOMPARE(view.picture().triangles.size(), std::size_t(4));
         QCOMPARE(view.picture().culledBack, std::size_t(4));
         QCOMPARE(view.picture().culledFront, std::size_t(0));
         QVERIFY2(view.legendText().contains(QStringLiteral("back faces (n · pView &gt; 0) 4 (4 "
                                                            "hidden, left out by culling)")),
                  qPrintable(view.legendText()));
-        inspection.setFrame(frame, frameImage(*frame));
+        setFrame(inspection, frame);
     }
     view.setTriangleHairs(false);
     view.setVertexHairs(false);
@@ -473,7 +474,7 @@ void TestVertexNormalsViews::octahedronFaces() {
     QVERIFY(colouredPixels(picture, qRgb(235, 60, 235), 60) == 0);  // no magenta
 
     frame = render(octahedronScene(true));
-    inspection.setFrame(frame, frameImage(*frame));
+    setFrame(inspection, frame);
     QCOMPARE(view.picture().backFaces, std::size_t(3));  // the flipped far face looks front
     QCOMPARE(view.picture().inconsistentEdges, std::size_t(3));
     QCOMPARE(view.picture().inconsistentTriangles, std::size_t(4));
@@ -495,7 +496,7 @@ void TestVertexNormalsViews::hairsProjected() {
     NormalsView view(&inspection);
     view.show();
     const auto frame = render(handScene());
-    inspection.setFrame(frame, frameImage(*frame));
+    setFrame(inspection, frame);
     // By default only the triangles seen carry hairs: triangle 2 of the file is hidden behind
     // triangle 1 everywhere.
     QVERIFY(view.onlyVisibleHairs());
@@ -531,7 +532,7 @@ void TestVertexNormalsViews::hairsProjected() {
     unlit->lights.clear();
     unlit->ambientIntensity = vec3(0.0f);
     const auto dark = render(unlit);
-    inspection.setFrame(dark, frameImage(*dark));
+    setFrame(inspection, dark);
     QVERIFY(view.picture().normalsSkipped);
     QVERIFY(view.picture().triangleHairs.empty());
     QCOMPARE(view.picture().backFaces, std::size_t(1));  // found from pView all the same
@@ -543,7 +544,7 @@ void TestVertexNormalsViews::selectedTriangleExplained() {
     NormalsView view(&inspection);
     view.show();
     const auto frame = render(handScene());
-    inspection.setFrame(frame, frameImage(*frame));
+    setFrame(inspection, frame);
     inspection.pickPixel(QPoint(0, 0));  // triangle 1 of the file (projected triangle 0)
     QCOMPARE(inspection.selectedTriangle(), std::optional<std::uint32_t>(0u));
     QVERIFY(view.picture().selected.has_value());
@@ -587,7 +588,7 @@ void TestVertexNormalsViews::normalMapOfTheHandScene() {
     NormalsView view(&inspection);
     view.show();
     view.showNormalMap(true);
-    inspection.setFrame(frame, frameImage(*frame));
+    setFrame(inspection, frame);
     const QImage& map = view.normalMap();
     QCOMPARE(map.size(), QSize(8, 8));
     // Every normal is (0, 0, -1) toward the camera (triangle 4's turned): (128, 128, 0).
@@ -606,7 +607,7 @@ void TestVertexNormalsViews::normalMapFollowsTheCursor() {
     NormalsView view(&inspection);
     view.show();
     view.showNormalMap(true);
-    inspection.setFrame(frame, frameImage(*frame));
+    setFrame(inspection, frame);
     inspection.setReplay(replay.value());
     QCOMPARE(normalMapMismatches(view.normalMap(), *frame), 0);  // at the end
     inspection.seek(replay.value()->start());
@@ -657,7 +658,7 @@ void TestVertexNormalsViews::normalMapOfCalice2() {
     NormalsView view(&inspection);
     view.showNormalMap(true);
     view.show();
-    inspection.setFrame(frame, frameImage(*frame));
+    setFrame(inspection, frame);
     QCOMPARE(normalMapMismatches(view.normalMap(), *frame), 0);
 }
 
@@ -673,7 +674,7 @@ void TestVertexNormalsViews::largeScenes() {
     VertexTableView table(&inspection);
     table.resize(1000, 600);
     table.show();
-    inspection.setFrame(trefoil, frameImage(*trefoil));
+    setFrame(inspection, trefoil);
     QCOMPARE(table.model()->rowCount(), int(trefoil->scene->draws[0].mesh->positions.size()));
     QCOMPARE(normals.picture().meshTriangles, std::size_t(7776));
     // The default scene's file is wound so that its normals point outward in the course's
@@ -696,7 +697,7 @@ void TestVertexNormalsViews::largeScenes() {
     if (!scene) QSKIP("course samples not found: set RASTERLAB_SAMPLES to the samples folder");
     const auto calice = render(scene, true);
     normals.showNormalMap(false);
-    inspection.setFrame(calice, frameImage(*calice));
+    setFrame(inspection, calice);
     QCOMPARE(table.model()->rowCount(), 1062);
     QCOMPARE(normals.picture().meshTriangles, std::size_t(2120));
     // calice2 is wound the other way: nearly every pixel seen is a "back face", and the legend

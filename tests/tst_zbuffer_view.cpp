@@ -1,6 +1,7 @@
 // The z-buffer view: the range found from the drawn pixels, the grey and false-colour
 // mappings worked out by hand, the checkerboard where no triangle is, the histogram with
-// the pixels outside a manual range, the value under the cursor, and the window's dock.
+// the pixels outside a manual range, the value under the cursor, the explanation's formula
+// under each rule set, and the window's dock.
 #include <QtTest>
 
 #include <QDockWidget>
@@ -60,6 +61,7 @@ private slots:
     void histogram();
     void viewRanges();
     void valueUnderCursor();
+    void explanation();
     void windowDock();
 };
 
@@ -127,6 +129,7 @@ void TestZBufferView::histogram() {
 
 void TestZBufferView::viewRanges() {
     ZBufferView view;
+    view.show();  // a hidden view waits until it is shown
     view.setFrame(traceWith(handMadeDepth()));
     QVERIFY(view.automaticRange());
     QCOMPARE(view.range().nearest, 2.0f);
@@ -165,12 +168,42 @@ void TestZBufferView::valueUnderCursor() {
     QCOMPARE(view.valueText(QPoint(4, 0)), QString());  // outside the image
 }
 
+void TestZBufferView::explanation() {
+    // 9 fragments tested, 6 written. The course interpolates view z on the screen; under the
+    // GPU's perspective-correct rules 1/z is.
+    auto depth = handMadeDepth();
+    depth->fragments = 9;
+    depth->passed = 6;
+    auto scene = std::make_shared<rl::Scene>();
+    auto trace = std::make_shared<rl::FrameTrace>();
+    trace->scene = scene;
+    trace->depth = depth;
+    ZBufferView view;
+    view.setFrame(trace);
+    const QString course = view.explanation();
+    QVERIFY2(course.contains(QStringLiteral("Every pixel starts at +&infin;. Each fragment's depth "
+                                            "z = &alpha;z<sub>1</sub> + &beta;z<sub>2</sub> + "
+                                            "&gamma;z<sub>3</sub> (the view-space z of P')")),
+             qPrintable(course));
+    QVERIFY(course.contains(QStringLiteral("only when z &lt; z<sub>stored</sub>")));
+    QVERIFY(course.contains(QStringLiteral("So far: 9 fragments tested, 6 written, 3 rejected.")));
+    scene->rules = rl::RasterRules::gpu();
+    view.setFrame(trace);
+    QVERIFY(view.explanation().contains(
+        QStringLiteral("1/z = &alpha;/z<sub>1</sub> + &beta;/z<sub>2</sub> + &gamma;/z<sub>3</sub> "
+                       "(the view-space z of P')")));
+}
+
 void TestZBufferView::windowDock() {
     rasterlab::MainWindow window;
     QSignalSpy spy(window.controller(), &rasterlab::RenderController::frameReady);
-    QVERIFY2(spy.count() > 0 || spy.wait(10000), "no frame within 10 s");
-    const auto* dock = window.findChild<QDockWidget*>(QStringLiteral("zbufferDock"));
+    auto* dock = window.findChild<QDockWidget*>(QStringLiteral("zbufferDock"));
     QVERIFY(dock);
+    // The view draws while it is shown: its dock in front.
+    window.show();
+    dock->show();
+    dock->raise();
+    QVERIFY2(spy.count() > 0 || spy.wait(10000), "no frame within 10 s");
     QVERIFY(dock->isAncestorOf(window.zbufferView()));
     const ZBufferView* view = window.zbufferView();
     const auto frame = window.currentFrame();

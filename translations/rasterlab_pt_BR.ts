@@ -325,37 +325,37 @@
 <context>
     <name>rasterlab::CameraBasisCanvas</name>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="177"/>
+        <location filename="../views/camera_basis_view.cpp" line="174"/>
         <source>Drag to turn the scene, wheel to zoom, double-click to reset.</source>
         <translation>Arraste para girar a cena, use a roda para o zoom, clique duas vezes para restaurar.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="180"/>
+        <location filename="../views/camera_basis_view.cpp" line="177"/>
         <source>Reset view</source>
         <translation>Restaurar vista</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="181"/>
+        <location filename="../views/camera_basis_view.cpp" line="178"/>
         <source>Turn the 3D drawing back to where it started</source>
         <translation>Volta o desenho 3D à posição inicial</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="351"/>
+        <location filename="../views/camera_basis_view.cpp" line="365"/>
         <source>window (d = %1)</source>
         <translation>janela (d = %1)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="355"/>
+        <location filename="../views/camera_basis_view.cpp" line="369"/>
         <source>frustum</source>
         <translation>frustum</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="368"/>
+        <location filename="../views/camera_basis_view.cpp" line="382"/>
         <source>N given, |N| = %1</source>
         <translation>N dado, |N| = %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="371"/>
+        <location filename="../views/camera_basis_view.cpp" line="385"/>
         <source>V given, |V| = %1</source>
         <translation>V dado, |V| = %1</translation>
     </message>
@@ -363,127 +363,127 @@
 <context>
     <name>rasterlab::CameraBasisView</name>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="433"/>
+        <location filename="../views/camera_basis_view.cpp" line="447"/>
         <source>Previous step</source>
         <translation>Passo anterior</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="437"/>
+        <location filename="../views/camera_basis_view.cpp" line="451"/>
         <source>Next step</source>
         <translation>Próximo passo</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="548"/>
+        <location filename="../views/camera_basis_view.cpp" line="563"/>
         <source>The camera was rejected: %1</source>
         <translation>A câmera foi rejeitada: %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="551"/>
+        <location filename="../views/camera_basis_view.cpp" line="566"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="553"/>
+        <location filename="../views/camera_basis_view.cpp" line="568"/>
         <source>This stage is skipped: %1.</source>
         <translation>Esta etapa é omitida: %1.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="555"/>
+        <location filename="../views/camera_basis_view.cpp" line="570"/>
         <source>the frame has no camera basis</source>
         <translation>o quadro não tem base da câmera</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="562"/>
+        <location filename="../views/camera_basis_view.cpp" line="577"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; From the course camera (C, N, V) Gram-Schmidt makes the orthonormal basis U, V, N of view space. A scene whose draws carry their own model/view matrices (HW2 command files) has no course camera: this stage does nothing for it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Base da câmera.&lt;/b&gt; A partir da câmera do curso (C, N, V), Gram-Schmidt constrói a base ortonormal U, V, N do espaço de vista. Uma cena cujos desenhos trazem suas próprias matrizes de modelo/vista (arquivos de comandos HW2) não tem câmera do curso: esta etapa não faz nada para ela.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="575"/>
+        <location filename="../views/camera_basis_view.cpp" line="590"/>
         <source>N and V are nearly parallel: |V − (V·N) N| / |V| = %1, below %2. The basis is ill-conditioned: a tiny change of N or V turns U and V a lot. Choose a V further from N.</source>
         <translation>N e V são quase paralelos: |V − (V·N) N| / |V| = %1, abaixo de %2. A base é mal condicionada: uma mudança mínima de N ou V gira muito U e V. Escolha um V mais afastado de N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="581"/>
+        <location filename="../views/camera_basis_view.cpp" line="595"/>
         <source>1. N := N / |N| = %1 / %2 = %3</source>
         <translation>1. N := N / |N| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="582"/>
+        <location filename="../views/camera_basis_view.cpp" line="597"/>
         <source>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</source>
         <translation>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="584"/>
+        <location filename="../views/camera_basis_view.cpp" line="599"/>
         <source>3. V := V / |V| = %1 / %2 = %3</source>
         <translation>3. V := V / |V| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="586"/>
+        <location filename="../views/camera_basis_view.cpp" line="601"/>
         <source>4. U := N × V = %1 × %2 = %3</source>
         <translation>4. U := N × V = %1 × %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="588"/>
+        <location filename="../views/camera_basis_view.cpp" line="603"/>
         <source>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; largest %7</source>
         <translation>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; maior %7</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="612"/>
+        <location filename="../views/camera_basis_view.cpp" line="627"/>
         <source>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): rows U, V, N, then (0 0 0 1); the last column is −U·C, −V·C, −N·C.</source>
         <translation>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): linhas U, V, N e depois (0 0 0 1); a última coluna é −U·C, −V·C, −N·C.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="623"/>
+        <location filename="../views/camera_basis_view.cpp" line="638"/>
         <source>&lt;p&gt;Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vértice 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="626"/>
+        <location filename="../views/camera_basis_view.cpp" line="641"/>
         <source>, in front of the camera (z &gt; 0)</source>
         <translation>, à frente da câmera (z &gt; 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="627"/>
+        <location filename="../views/camera_basis_view.cpp" line="642"/>
         <source>, behind the camera (z ≤ 0)</source>
         <translation>, atrás da câmera (z ≤ 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="630"/>
+        <location filename="../views/camera_basis_view.cpp" line="645"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; Gram-Schmidt keeps the direction of N (where the camera looks), removes from V its part along N so that up is perpendicular to the view direction, and completes the frame with U = N × V, the image&apos;s right. viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Base da câmera.&lt;/b&gt; Gram-Schmidt mantém a direção de N (para onde a câmera olha), remove de V sua componente ao longo de N para que o &quot;para cima&quot; fique perpendicular à direção de visão, e completa o referencial com U = N × V, a direita da imagem. viewFromWorld = [U; V; N] (P − C) põe a câmera na origem olhando ao longo de +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="662"/>
+        <location filename="../views/camera_basis_view.cpp" line="677"/>
         <source>Step %1 of 4</source>
         <translation>Passo %1 de 4</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="679"/>
+        <location filename="../views/camera_basis_view.cpp" line="691"/>
         <source>Step forward to normalise N.</source>
         <translation>Avance um passo para normalizar N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="680"/>
+        <location filename="../views/camera_basis_view.cpp" line="692"/>
         <source>Step forward to remove from V its part along N.</source>
         <translation>Avance um passo para remover de V sua componente ao longo de N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="681"/>
+        <location filename="../views/camera_basis_view.cpp" line="693"/>
         <source>Step forward to normalise V.</source>
         <translation>Avance um passo para normalizar V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="682"/>
+        <location filename="../views/camera_basis_view.cpp" line="694"/>
         <source>Step forward to make U = N × V.</source>
         <translation>Avance um passo para obter U = N × V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="683"/>
+        <location filename="../views/camera_basis_view.cpp" line="695"/>
         <source>The basis is complete; the frustum is drawn with it.</source>
         <translation>A base está completa; o frustum é desenhado com ela.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="696"/>
+        <location filename="../views/camera_basis_view.cpp" line="708"/>
         <source>&lt;b&gt;Orthonormality residuals&lt;/b&gt; (0 up to rounding): %1</source>
         <translation>&lt;b&gt;Resíduos de ortonormalidade&lt;/b&gt; (0 a menos de arredondamento): %1</translation>
     </message>
@@ -491,183 +491,183 @@
 <context>
     <name>rasterlab::EditPanel</name>
     <message>
-        <location filename="../app/edit_panel.cpp" line="212"/>
+        <location filename="../app/edit_panel.cpp" line="214"/>
         <source>One kd for the three channels (the UFPE files have one number): changing one changes all three</source>
         <translation>Um só kd para os três canais (os arquivos da UFPE têm um só número): mudar um muda os três</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="253"/>
+        <location filename="../app/edit_panel.cpp" line="255"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="253"/>
+        <location filename="../app/edit_panel.cpp" line="255"/>
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="253"/>
+        <location filename="../app/edit_panel.cpp" line="255"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="256"/>
+        <location filename="../app/edit_panel.cpp" line="258"/>
         <location filename="../app/edit_panel.cpp" line="548"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="258"/>
+        <location filename="../app/edit_panel.cpp" line="260"/>
         <source>C: the camera&apos;s position (world)</source>
         <translation>C: a posição da câmera (mundo)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="261"/>
+        <location filename="../app/edit_panel.cpp" line="263"/>
         <source>N: the view direction (normalised by the camera basis)</source>
         <translation>N: a direção de visão (normalizada pela base da câmera)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="263"/>
+        <location filename="../app/edit_panel.cpp" line="265"/>
         <source>V: the up vector (made orthogonal to N by Gram-Schmidt)</source>
         <translation>V: o vetor para cima (tornado ortogonal a N por Gram-Schmidt)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="265"/>
+        <location filename="../app/edit_panel.cpp" line="267"/>
         <source>d: the distance from C to the projection plane</source>
         <translation>d: a distância de C ao plano de projeção</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="267"/>
+        <location filename="../app/edit_panel.cpp" line="269"/>
         <source>hx: half the width of the window on the projection plane</source>
         <translation>hx: metade da largura da janela no plano de projeção</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="269"/>
+        <location filename="../app/edit_panel.cpp" line="271"/>
         <source>hy: half the height of the window on the projection plane</source>
         <translation>hy: metade da altura da janela no plano de projeção</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="273"/>
+        <location filename="../app/edit_panel.cpp" line="275"/>
         <source>Light</source>
         <translation>Luz</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="276"/>
+        <location filename="../app/edit_panel.cpp" line="278"/>
         <source>The light whose position and colour are shown</source>
         <translation>A luz cuja posição e cor são mostradas</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="281"/>
+        <location filename="../app/edit_panel.cpp" line="283"/>
         <source>Pl: the light&apos;s position (world)</source>
         <translation>Pl: a posição da luz (mundo)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="284"/>
+        <location filename="../app/edit_panel.cpp" line="286"/>
         <source>Il: the light&apos;s colour, 0 to 255 per channel</source>
         <translation>Il: a cor da luz, de 0 a 255 por canal</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="287"/>
+        <location filename="../app/edit_panel.cpp" line="289"/>
         <source>Ambient</source>
         <translation>Ambiente</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="290"/>
+        <location filename="../app/edit_panel.cpp" line="292"/>
         <source>Ia: the ambient light&apos;s colour, 0 to 255 per channel</source>
         <translation>Ia: a cor da luz ambiente, de 0 a 255 por canal</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="292"/>
+        <location filename="../app/edit_panel.cpp" line="294"/>
         <source>ka: the ambient coefficient, 0 to 1</source>
         <translation>ka: o coeficiente ambiente, de 0 a 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="295"/>
+        <location filename="../app/edit_panel.cpp" line="297"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="298"/>
+        <location filename="../app/edit_panel.cpp" line="300"/>
         <source>kd: the diffuse coefficient of each channel, 0 to 1</source>
         <translation>kd: o coeficiente difuso de cada canal, de 0 a 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="301"/>
+        <location filename="../app/edit_panel.cpp" line="303"/>
         <source>Od: the object&apos;s diffuse colour, 0 to 1 per channel</source>
         <translation>Od: a cor difusa do objeto, de 0 a 1 por canal</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="303"/>
+        <location filename="../app/edit_panel.cpp" line="305"/>
         <source>ks: the specular coefficient, 0 to 1</source>
         <translation>ks: o coeficiente especular, de 0 a 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="305"/>
+        <location filename="../app/edit_panel.cpp" line="307"/>
         <source>n: the specular exponent (larger: a smaller, sharper highlight)</source>
         <translation>n: o expoente especular (maior: um brilho menor e mais nítido)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="309"/>
+        <location filename="../app/edit_panel.cpp" line="311"/>
         <source>Shading</source>
         <translation>Sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="312"/>
+        <location filename="../app/edit_panel.cpp" line="314"/>
         <source>Phong (per pixel)</source>
         <translation>Phong (por pixel)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="313"/>
+        <location filename="../app/edit_panel.cpp" line="315"/>
         <source>Gouraud (per vertex)</source>
         <translation>Gouraud (por vértice)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="314"/>
+        <location filename="../app/edit_panel.cpp" line="316"/>
         <source>Flat (per triangle)</source>
         <translation>Flat (por triângulo)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="323"/>
+        <location filename="../app/edit_panel.cpp" line="325"/>
         <source>&amp;Undo</source>
         <translation>&amp;Desfazer</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="326"/>
+        <location filename="../app/edit_panel.cpp" line="328"/>
         <source>&amp;Redo</source>
         <translation>&amp;Refazer</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="330"/>
+        <location filename="../app/edit_panel.cpp" line="332"/>
         <source>&amp;Save Camera and Lighting</source>
         <translation>&amp;Salvar câmera e iluminação</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="333"/>
+        <location filename="../app/edit_panel.cpp" line="335"/>
         <source>Write the edited camera and lighting to their files</source>
         <translation>Grava a câmera e a iluminação editadas nos seus arquivos</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="336"/>
+        <location filename="../app/edit_panel.cpp" line="341"/>
         <source>&amp;Camera...</source>
         <translation>&amp;Câmera...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="340"/>
+        <location filename="../app/edit_panel.cpp" line="343"/>
         <source>&amp;Lighting...</source>
         <translation>&amp;Iluminação...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="347"/>
+        <location filename="../app/edit_panel.cpp" line="346"/>
         <source>Save &amp;As</source>
         <translation>Sal&amp;var como</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="390"/>
+        <location filename="../app/edit_panel.cpp" line="388"/>
         <source>Light %1 of %2</source>
         <translation>Luz %1 de %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="464"/>
+        <location filename="../app/edit_panel.cpp" line="465"/>
         <source>Change %1</source>
         <translation>alteração de %1</translation>
     </message>
@@ -771,38 +771,38 @@
 <context>
     <name>rasterlab::Inspection</name>
     <message>
-        <location filename="../views/inspection.cpp" line="195"/>
-        <location filename="../views/inspection.cpp" line="197"/>
+        <location filename="../views/inspection.cpp" line="191"/>
+        <location filename="../views/inspection.cpp" line="193"/>
         <source>end of frame</source>
         <translation>fim do quadro</translation>
     </message>
     <message>
-        <location filename="../views/inspection.cpp" line="196"/>
+        <location filename="../views/inspection.cpp" line="192"/>
         <source>start of frame: nothing drawn yet</source>
         <translation>início do quadro: nada desenhado ainda</translation>
     </message>
     <message>
-        <location filename="../views/inspection.cpp" line="201"/>
+        <location filename="../views/inspection.cpp" line="197"/>
         <source>triangle %1 of %2</source>
         <translation>triângulo %1 de %2</translation>
     </message>
     <message>
-        <location filename="../views/inspection.cpp" line="204"/>
+        <location filename="../views/inspection.cpp" line="200"/>
         <source>scanline %1</source>
         <translation>linha de varredura %1</translation>
     </message>
     <message>
-        <location filename="../views/inspection.cpp" line="207"/>
+        <location filename="../views/inspection.cpp" line="203"/>
         <source>no pixel on it</source>
         <translation>nenhum pixel nela</translation>
     </message>
     <message>
-        <location filename="../views/inspection.cpp" line="207"/>
+        <location filename="../views/inspection.cpp" line="203"/>
         <source>span [%1, %2)</source>
         <translation>segmento [%1, %2)</translation>
     </message>
     <message>
-        <location filename="../views/inspection.cpp" line="209"/>
+        <location filename="../views/inspection.cpp" line="205"/>
         <source>pixel %1</source>
         <translation>pixel %1</translation>
     </message>
@@ -810,168 +810,168 @@
 <context>
     <name>rasterlab::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="47"/>
+        <location filename="../app/main_window.cpp" line="48"/>
         <source>Open Camera</source>
         <translation>Abrir câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="49"/>
+        <location filename="../app/main_window.cpp" line="50"/>
         <source>Open Lighting</source>
         <translation>Abrir iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="51"/>
+        <location filename="../app/main_window.cpp" line="52"/>
         <source>Open Object</source>
         <translation>Abrir objeto</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="59"/>
+        <location filename="../app/main_window.cpp" line="60"/>
         <source>Camera files (*.cfg *.txt);;All files (*)</source>
         <translation>Arquivos de câmera (*.cfg *.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="61"/>
+        <location filename="../app/main_window.cpp" line="62"/>
         <source>Lighting files (*.txt *.lux);;All files (*)</source>
         <translation>Arquivos de iluminação (*.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="63"/>
+        <location filename="../app/main_window.cpp" line="64"/>
         <source>Objects (*.byu *.txt);;All files (*)</source>
         <translation>Objetos (*.byu *.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="72"/>
+        <location filename="../app/main_window.cpp" line="73"/>
         <source>Detect from the file</source>
         <translation>Detectar pelo arquivo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="80"/>
+        <location filename="../app/main_window.cpp" line="81"/>
         <source>flat</source>
         <translation>flat</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="82"/>
+        <location filename="../app/main_window.cpp" line="83"/>
         <source>Gouraud</source>
         <translation>Gouraud</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="84"/>
+        <location filename="../app/main_window.cpp" line="85"/>
         <source>Phong</source>
         <translation>Phong</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="91"/>
+        <location filename="../app/main_window.cpp" line="92"/>
         <source>%1 (built in)</source>
         <translation>%1 (embutido)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="99"/>
+        <location filename="../app/main_window.cpp" line="100"/>
         <source>RasterLab</source>
         <translation>RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="141"/>
+        <location filename="../app/main_window.cpp" line="142"/>
         <source>Stopped at a breakpoint: %1</source>
         <translation>Parado num ponto de parada: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="168"/>
-        <location filename="../app/main_window_export.cpp" line="108"/>
+        <location filename="../app/main_window.cpp" line="169"/>
+        <location filename="../app/main_window_export.cpp" line="78"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="169"/>
+        <location filename="../app/main_window.cpp" line="170"/>
         <source>Stop preparing the stepping of this frame</source>
         <translation>Parar a preparação do passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="173"/>
+        <location filename="../app/main_window.cpp" line="174"/>
         <source>cancelled</source>
         <translation>cancelado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="222"/>
+        <location filename="../app/main_window.cpp" line="223"/>
         <source>Stepping</source>
         <translation>Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="236"/>
+        <location filename="../app/main_window.cpp" line="237"/>
         <source>Edit</source>
         <translation>Edição</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="243"/>
+        <location filename="../app/main_window.cpp" line="244"/>
         <source>Breakpoints</source>
         <translation>Pontos de parada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="254"/>
+        <location filename="../app/main_window.cpp" line="255"/>
         <source>1 Camera basis</source>
         <translation>1 Base da câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="258"/>
+        <location filename="../app/main_window.cpp" line="259"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Inspetor de pixel (iluminação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="263"/>
+        <location filename="../app/main_window.cpp" line="264"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 Coordenadas de vista (vértices)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="268"/>
+        <location filename="../app/main_window.cpp" line="269"/>
         <source>3 Normals</source>
         <translation>3 Normais</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="271"/>
+        <location filename="../app/main_window.cpp" line="272"/>
         <source>4 Projection</source>
         <translation>4 Projeção</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="275"/>
+        <location filename="../app/main_window.cpp" line="276"/>
         <source>5 Scan conversion</source>
         <translation>5 Conversão por varredura</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="279"/>
+        <location filename="../app/main_window.cpp" line="280"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="290"/>
+        <location filename="../app/main_window.cpp" line="291"/>
         <source>&amp;File</source>
         <translation>&amp;Arquivo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1020"/>
+        <location filename="../app/main_window.cpp" line="1018"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>avançar, voltar um passo (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1022"/>
+        <location filename="../app/main_window.cpp" line="1020"/>
         <source>Space</source>
         <translation>Barra de espaço</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1022"/>
+        <location filename="../app/main_window.cpp" line="1020"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>reproduzir / pausar (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1028"/>
+        <location filename="../app/main_window.cpp" line="1026"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>soltar o pixel escolhido (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1029"/>
+        <location filename="../app/main_window.cpp" line="1027"/>
         <source>presentation mode on / off</source>
         <translation>ligar / desligar o modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1032"/>
+        <location filename="../app/main_window.cpp" line="1030"/>
         <source>save, undo, redo</source>
         <translation>salvar, desfazer, refazer</translation>
     </message>
@@ -980,42 +980,42 @@
         <translation type="vanished">Abrir &amp;objeto...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="299"/>
+        <location filename="../app/main_window.cpp" line="300"/>
         <source>Open &amp;Camera...</source>
         <translation>Abrir &amp;câmera...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="301"/>
+        <location filename="../app/main_window.cpp" line="302"/>
         <source>Ctrl+Shift+C</source>
         <translation>Ctrl+Shift+C</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="303"/>
+        <location filename="../app/main_window.cpp" line="304"/>
         <source>Open &amp;Lighting...</source>
         <translation>Abrir &amp;iluminação...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="304"/>
+        <location filename="../app/main_window.cpp" line="305"/>
         <source>Ctrl+Shift+L</source>
         <translation>Ctrl+Shift+L</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="306"/>
+        <location filename="../app/main_window.cpp" line="307"/>
         <source>Open Command &amp;File...</source>
         <translation>Abrir arquivo de co&amp;mandos...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="307"/>
+        <location filename="../app/main_window.cpp" line="308"/>
         <source>Ctrl+Shift+O</source>
         <translation>Ctrl+Shift+O</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="309"/>
+        <location filename="../app/main_window.cpp" line="310"/>
         <source>Open &amp;Recent</source>
         <translation>Abrir recen&amp;tes</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="311"/>
+        <location filename="../app/main_window.cpp" line="312"/>
         <source>&amp;Default Scene</source>
         <translation>Cena &amp;padrão</translation>
     </message>
@@ -1024,112 +1024,112 @@
         <translation type="vanished">&amp;Formatos dos arquivos do curso</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="322"/>
+        <location filename="../app/main_window.cpp" line="323"/>
         <source>&amp;Camera</source>
         <translation>&amp;Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="334"/>
+        <location filename="../app/main_window.cpp" line="335"/>
         <source>&amp;Lighting</source>
         <translation>&amp;Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="350"/>
+        <location filename="../app/main_window.cpp" line="351"/>
         <source>&amp;Export PNG...</source>
         <translation>&amp;Exportar PNG...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="351"/>
+        <location filename="../app/main_window.cpp" line="352"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="353"/>
+        <location filename="../app/main_window.cpp" line="354"/>
         <source>Export &amp;More</source>
         <translation>E&amp;xportar mais</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="356"/>
+        <location filename="../app/main_window.cpp" line="357"/>
         <source>Image as &amp;Displayed...</source>
         <translation>Imagem como &amp;exibida...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="357"/>
+        <location filename="../app/main_window.cpp" line="358"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="358"/>
+        <location filename="../app/main_window.cpp" line="359"/>
         <source>&amp;Colour Buffer at the Cursor...</source>
         <translation>Buffer de &amp;cor no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="360"/>
+        <location filename="../app/main_window.cpp" line="361"/>
         <source>D&amp;epth Buffer at the Cursor...</source>
         <translation>Buffer de pro&amp;fundidade no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="362"/>
+        <location filename="../app/main_window.cpp" line="363"/>
         <source>&amp;Normal Buffer...</source>
         <translation>Buffer de &amp;normais...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="363"/>
+        <location filename="../app/main_window.cpp" line="364"/>
         <source>A &amp;View as Displayed</source>
         <translation>Um &amp;painel como exibido</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="367"/>
+        <location filename="../app/main_window.cpp" line="368"/>
         <source>Export View</source>
         <translation>Exportar painel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="372"/>
+        <location filename="../app/main_window.cpp" line="373"/>
         <source>&amp;Stepping Sequence...</source>
         <translation>&amp;Sequência de passos...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="374"/>
+        <location filename="../app/main_window.cpp" line="375"/>
         <source>&amp;Quit</source>
         <translation>Sai&amp;r</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="377"/>
+        <location filename="../app/main_window.cpp" line="378"/>
         <source>&amp;Edit</source>
         <translation>&amp;Editar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="381"/>
+        <location filename="../app/main_window.cpp" line="382"/>
         <source>&amp;View</source>
         <translation>E&amp;xibir</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="382"/>
+        <location filename="../app/main_window.cpp" line="383"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Ajustar à janela</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="383"/>
+        <location filename="../app/main_window.cpp" line="384"/>
         <source>Ctrl+0</source>
         <translation>Ctrl+0</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="385"/>
+        <location filename="../app/main_window.cpp" line="386"/>
         <source>&amp;Actual Size</source>
         <translation>&amp;Tamanho real</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="386"/>
+        <location filename="../app/main_window.cpp" line="387"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="387"/>
+        <location filename="../app/main_window.cpp" line="388"/>
         <source>Zoom &amp;In</source>
         <translation>A&amp;umentar zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="389"/>
+        <location filename="../app/main_window.cpp" line="390"/>
         <source>Zoom &amp;Out</source>
         <translation>&amp;Diminuir zoom</translation>
     </message>
@@ -1138,7 +1138,7 @@
         <translation type="vanished">&amp;Painéis</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="396"/>
+        <location filename="../app/main_window.cpp" line="397"/>
         <source>Reset &amp;Layout</source>
         <translation>Restaurar &amp;layout</translation>
     </message>
@@ -1147,12 +1147,12 @@
         <translation type="vanished">&amp;Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="403"/>
+        <location filename="../app/main_window.cpp" line="404"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="408"/>
+        <location filename="../app/main_window.cpp" line="409"/>
         <source>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</source>
         <translation>Texto maior, sobreposições mais grossas, alto contraste; as teclas do passador de slides avançam os passos (F5 ou Esc)</translation>
     </message>
@@ -1161,12 +1161,12 @@
         <translation type="vanished">Idi&amp;oma</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="419"/>
+        <location filename="../app/main_window.cpp" line="420"/>
         <source>The System&apos;s</source>
         <translation>Do sistema</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="436"/>
+        <location filename="../app/main_window.cpp" line="437"/>
         <source>S&amp;tep</source>
         <translation>&amp;Passo a passo</translation>
     </message>
@@ -1179,32 +1179,32 @@
         <translation type="vanished">&amp;Etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="473"/>
+        <location filename="../app/main_window.cpp" line="474"/>
         <source>Pick the Pixel Under the &amp;Mouse</source>
         <translation>Escolher o pixel sob o &amp;mouse</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="474"/>
+        <location filename="../app/main_window.cpp" line="475"/>
         <source>Ctrl+G</source>
         <translation>Ctrl+G</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="480"/>
+        <location filename="../app/main_window.cpp" line="481"/>
         <source>&amp;Shading</source>
         <translation>&amp;Sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="484"/>
+        <location filename="../app/main_window.cpp" line="485"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (por pixel)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="485"/>
+        <location filename="../app/main_window.cpp" line="486"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (por vértice)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="486"/>
+        <location filename="../app/main_window.cpp" line="487"/>
         <source>&amp;Flat (per triangle)</source>
         <translation>&amp;Flat (por triângulo)</translation>
     </message>
@@ -1213,7 +1213,7 @@
         <translation type="vanished">F10, Page Down, seta para a direita (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1017"/>
+        <location filename="../app/main_window.cpp" line="1015"/>
         <source>step forward</source>
         <translation>avançar um passo</translation>
     </message>
@@ -1222,7 +1222,7 @@
         <translation type="vanished">Shift+F10, Page Up, seta para a esquerda (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1018"/>
+        <location filename="../app/main_window.cpp" line="1016"/>
         <source>step back</source>
         <translation>voltar um passo</translation>
     </message>
@@ -1231,7 +1231,7 @@
         <translation type="vanished">F6, barra de espaço (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1021"/>
+        <location filename="../app/main_window.cpp" line="1019"/>
         <source>play / pause</source>
         <translation>reproduzir / pausar</translation>
     </message>
@@ -1240,7 +1240,7 @@
         <translation type="vanished">Ctrl+Home, Ctrl+End</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1023"/>
+        <location filename="../app/main_window.cpp" line="1021"/>
         <source>jump to the start / the end of the frame</source>
         <translation>ir ao início / ao fim do quadro</translation>
     </message>
@@ -1249,7 +1249,7 @@
         <translation type="vanished">F8</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1024"/>
+        <location filename="../app/main_window.cpp" line="1022"/>
         <source>continue to the next breakpoint</source>
         <translation>continuar até o próximo ponto de parada</translation>
     </message>
@@ -1258,7 +1258,7 @@
         <translation type="vanished">Ctrl+Shift+1 ... 5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1025"/>
+        <location filename="../app/main_window.cpp" line="1023"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>avançar por etapa, triângulo, linha de varredura, segmento, pixel</translation>
     </message>
@@ -1267,17 +1267,17 @@
         <translation type="vanished">Alt+1 ... 7</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1026"/>
+        <location filename="../app/main_window.cpp" line="1024"/>
         <source>show a stage&apos;s view</source>
         <translation>mostrar o painel de uma etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1027"/>
+        <location filename="../app/main_window.cpp" line="1025"/>
         <source>Click, arrows</source>
         <translation>Clique, setas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1027"/>
+        <location filename="../app/main_window.cpp" line="1025"/>
         <source>pick a pixel, move it by one</source>
         <translation>escolher um pixel, movê-lo de um em um</translation>
     </message>
@@ -1294,7 +1294,7 @@
         <translation type="vanished">Ctrl+O, Ctrl+E, Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1031"/>
+        <location filename="../app/main_window.cpp" line="1029"/>
         <source>open, export the image, export it as displayed</source>
         <translation>abrir, exportar a imagem, exportá-la como exibida</translation>
     </message>
@@ -1303,12 +1303,12 @@
         <translation type="vanished">Ctrl+0, Ctrl+1, Ctrl++, Ctrl+-</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1034"/>
+        <location filename="../app/main_window.cpp" line="1032"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>ajustar, tamanho real, aumentar zoom, diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1036"/>
+        <location filename="../app/main_window.cpp" line="1034"/>
         <source>Keyboard Shortcuts</source>
         <translation>Atalhos de teclado</translation>
     </message>
@@ -1317,47 +1317,47 @@
         <translation type="vanished">Alt+%1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="500"/>
+        <location filename="../app/main_window.cpp" line="501"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Regras de rasterização</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="504"/>
+        <location filename="../app/main_window.cpp" line="505"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Curso (semente 000: vértices em pixels inteiros, interpolação no espaço da tela)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="506"/>
+        <location filename="../app/main_window.cpp" line="507"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>Como uma &amp;GPU (vértices em 1/256 de pixel, centros dos pixels, regra top-left, correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="508"/>
+        <location filename="../app/main_window.cpp" line="509"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (as imagens de referência da semente 001)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="520"/>
+        <location filename="../app/main_window.cpp" line="521"/>
         <source>&amp;Help</source>
         <translation>A&amp;juda</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="523"/>
+        <location filename="../app/main_window.cpp" line="524"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="231"/>
+        <location filename="../app/main_window.cpp" line="232"/>
         <source>Messages</source>
         <translation>Mensagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="240"/>
+        <location filename="../app/main_window.cpp" line="241"/>
         <source>Scene</source>
         <translation>Cena</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="248"/>
+        <location filename="../app/main_window.cpp" line="249"/>
         <source>Accuracy</source>
         <translation>Exatidão</translation>
     </message>
@@ -1370,167 +1370,162 @@
         <translation type="vanished">%1 - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="735"/>
-        <location filename="../app/main_window_export.cpp" line="35"/>
-        <location filename="../app/main_window_export.cpp" line="119"/>
-        <location filename="../app/main_window_export.cpp" line="150"/>
+        <location filename="../app/main_window.cpp" line="734"/>
+        <location filename="../app/main_window_export.cpp" line="30"/>
+        <location filename="../app/main_window_export.cpp" line="89"/>
+        <location filename="../app/main_window_export.cpp" line="118"/>
         <source>%1: cannot export the image: %2</source>
         <translation>%1: não foi possível exportar a imagem: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="736"/>
-        <location filename="../app/main_window_export.cpp" line="23"/>
+        <location filename="../app/main_window_export.cpp" line="22"/>
         <source>nothing has been rendered yet</source>
         <translation>nada foi renderizado ainda</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="739"/>
-        <location filename="../app/main_window_export.cpp" line="38"/>
-        <location filename="../app/main_window_export.cpp" line="51"/>
-        <location filename="../app/main_window_export.cpp" line="77"/>
-        <location filename="../app/main_window_export.cpp" line="92"/>
+        <location filename="../app/main_window_export.cpp" line="25"/>
         <source>Exported %1</source>
         <translation>Exportado %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="762"/>
+        <location filename="../app/main_window.cpp" line="756"/>
         <source>rendering...</source>
         <translation>renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="762"/>
+        <location filename="../app/main_window.cpp" line="756"/>
         <source>%1, rendering...</source>
         <translation>%1, renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="760"/>
-        <location filename="../app/main_window.cpp" line="931"/>
+        <location filename="../app/main_window.cpp" line="754"/>
+        <location filename="../app/main_window.cpp" line="929"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="291"/>
+        <location filename="../app/main_window.cpp" line="292"/>
         <source>&amp;Open...</source>
         <translation>&amp;Abrir...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="294"/>
+        <location filename="../app/main_window.cpp" line="295"/>
         <source>A course camera, lighting or object file, or a command file</source>
         <translation>Um arquivo de câmera, iluminação ou objeto do curso, ou um arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="295"/>
+        <location filename="../app/main_window.cpp" line="296"/>
         <source>Open O&amp;bject...</source>
         <translation>Abrir &amp;objeto...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="297"/>
+        <location filename="../app/main_window.cpp" line="298"/>
         <source>Ctrl+Shift+B</source>
         <translation>Ctrl+Shift+B</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="320"/>
+        <location filename="../app/main_window.cpp" line="321"/>
         <source>Course File La&amp;youts</source>
         <translation>&amp;Formatos dos arquivos do curso</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="392"/>
+        <location filename="../app/main_window.cpp" line="393"/>
         <source>Pa&amp;nels</source>
         <translation>&amp;Painéis</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="400"/>
+        <location filename="../app/main_window.cpp" line="401"/>
         <source>I&amp;mage</source>
         <translation>&amp;Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="414"/>
+        <location filename="../app/main_window.cpp" line="415"/>
         <source>Lan&amp;guage</source>
         <translation>Idi&amp;oma</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="445"/>
+        <location filename="../app/main_window.cpp" line="446"/>
         <source>Step B&amp;y</source>
         <translation>Avançar &amp;por</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="447"/>
+        <location filename="../app/main_window.cpp" line="448"/>
         <source>S&amp;tage</source>
         <translation>&amp;Etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="521"/>
+        <location filename="../app/main_window.cpp" line="522"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="580"/>
+        <location filename="../app/main_window.cpp" line="581"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Modo de apresentação: F5 ou Esc para sair; Page Down, seta para a direita e barra de espaço avançam e reproduzem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="716"/>
+        <location filename="../app/main_window.cpp" line="717"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="770"/>
+        <location filename="../app/main_window.cpp" line="764"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparando o passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="770"/>
+        <location filename="../app/main_window.cpp" line="764"/>
         <source>Rendering</source>
         <translation>Renderizando</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="882"/>
+        <location filename="../app/main_window.cpp" line="880"/>
         <source>Error: %1</source>
         <translation>Erro: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="898"/>
+        <location filename="../app/main_window.cpp" line="896"/>
         <source>Files</source>
         <translation>Arquivos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="901"/>
+        <location filename="../app/main_window.cpp" line="899"/>
         <source>Command file</source>
         <translation>Arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="902"/>
+        <location filename="../app/main_window.cpp" line="900"/>
         <source>Image</source>
         <translation>Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="904"/>
+        <location filename="../app/main_window.cpp" line="902"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vértices, %2 triângulos em %3 desenhos; %4 x %5 pixels; %6 luzes</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="914"/>
+        <location filename="../app/main_window.cpp" line="912"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="915"/>
+        <location filename="../app/main_window.cpp" line="913"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="916"/>
+        <location filename="../app/main_window.cpp" line="914"/>
         <source>Object</source>
         <translation>Objeto</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="918"/>
+        <location filename="../app/main_window.cpp" line="916"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vértices, %2 triângulos; %3 x %4 pixels, sombreamento %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="216"/>
-        <location filename="../app/main_window.cpp" line="925"/>
+        <location filename="../app/main_window.cpp" line="217"/>
+        <location filename="../app/main_window.cpp" line="923"/>
         <source>Stages</source>
         <translation>Etapas</translation>
     </message>
@@ -1563,7 +1558,7 @@
         <translation type="vanished">Tonalização</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="932"/>
+        <location filename="../app/main_window.cpp" line="930"/>
         <source>skipped: %1</source>
         <translation>omitida: %1</translation>
     </message>
@@ -1572,146 +1567,145 @@
         <translation type="vanished">maior resíduo de ortonormalidade: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="935"/>
+        <location filename="../app/main_window.cpp" line="933"/>
         <source>Counts</source>
         <translation>Contagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="936"/>
+        <location filename="../app/main_window.cpp" line="934"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triângulos recortados no plano próximo: %1; atrás da câmera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="939"/>
+        <location filename="../app/main_window.cpp" line="937"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Triângulos de área zero: %1 no espaço de vista, %2 na tela&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="942"/>
+        <location filename="../app/main_window.cpp" line="940"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragmentos testados: %1; escritos: %2; rejeitados: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="946"/>
+        <location filename="../app/main_window.cpp" line="944"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels sombreados: %1; normais voltadas para o observador: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; limitados a 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="966"/>
+        <location filename="../app/main_window.cpp" line="964"/>
         <source>empty (+inf)</source>
         <translation>vazio (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="967"/>
+        <location filename="../app/main_window.cpp" line="965"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   profundidade %6</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="983"/>
+        <location filename="../app/main_window.cpp" line="981"/>
         <source>Open Command File</source>
         <translation>Abrir arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="984"/>
+        <location filename="../app/main_window.cpp" line="982"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Arquivos de comandos (*.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="990"/>
+        <location filename="../app/main_window.cpp" line="988"/>
         <source>Open</source>
         <translation>Abrir</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="990"/>
+        <location filename="../app/main_window.cpp" line="988"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Arquivos de cena (*.byu *.cfg *.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1000"/>
+        <location filename="../app/main_window.cpp" line="998"/>
         <source>Export PNG</source>
         <translation>Exportar PNG</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="368"/>
-        <location filename="../app/main_window.cpp" line="1000"/>
-        <location filename="../app/main_window_export.cpp" line="137"/>
-        <location filename="../app/main_window_export.cpp" line="145"/>
+        <location filename="../app/main_window.cpp" line="369"/>
+        <location filename="../app/main_window.cpp" line="998"/>
+        <location filename="../app/main_window_export.cpp" line="107"/>
+        <location filename="../app/main_window_export.cpp" line="115"/>
         <source>PNG images (*.png)</source>
         <translation>Imagens PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1005"/>
+        <location filename="../app/main_window.cpp" line="1003"/>
         <source>About RasterLab</source>
         <translation>Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1006"/>
+        <location filename="../app/main_window.cpp" line="1004"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;O pipeline clássico de rasterização por software, etapa por etapa: base da câmera, coordenadas de vista, normais, projeção, conversão por varredura, teste de profundidade e sombreamento.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="48"/>
+        <location filename="../app/main_window_export.cpp" line="37"/>
         <source>%1: cannot export the depth buffer: %2</source>
         <translation>%1: não foi possível exportar o buffer de profundidade: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="70"/>
-        <location filename="../app/main_window_export.cpp" line="74"/>
+        <location filename="../app/main_window_export.cpp" line="42"/>
         <source>%1: cannot export the normal buffer: %2</source>
         <translation>%1: não foi possível exportar o buffer de normais: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="85"/>
+        <location filename="../app/main_window_export.cpp" line="60"/>
         <source>%1: cannot export the view: there is no view %2</source>
         <translation>%1: não foi possível exportar o painel: não há painel %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="89"/>
+        <location filename="../app/main_window_export.cpp" line="63"/>
         <source>%1: cannot export the view: %2</source>
         <translation>%1: não foi possível exportar o painel: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="99"/>
+        <location filename="../app/main_window_export.cpp" line="69"/>
         <source>%1: cannot export the steps: the frame cannot be stepped through yet</source>
         <translation>%1: não foi possível exportar os passos: o quadro ainda não pode ser percorrido passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="103"/>
+        <location filename="../app/main_window_export.cpp" line="73"/>
         <source>%1: cannot create the folder</source>
         <translation>%1: não foi possível criar a pasta</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="108"/>
+        <location filename="../app/main_window_export.cpp" line="78"/>
         <source>Exporting the steps...</source>
         <translation>Exportando os passos...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="130"/>
+        <location filename="../app/main_window_export.cpp" line="100"/>
         <source>Exported %1 images to %2</source>
         <translation>%1 imagens exportadas para %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="135"/>
+        <location filename="../app/main_window_export.cpp" line="105"/>
         <source>Export the Image as Displayed</source>
         <translation>Exportar a imagem como exibida</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="144"/>
+        <location filename="../app/main_window_export.cpp" line="114"/>
         <source>Export a Buffer</source>
         <translation>Exportar um buffer</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="160"/>
+        <location filename="../app/main_window_export.cpp" line="128"/>
         <source>Folder for the Numbered Images</source>
         <translation>Pasta para as imagens numeradas</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="164"/>
+        <location filename="../app/main_window_export.cpp" line="132"/>
         <source>Stepping Sequence</source>
         <translation>Sequência de passos</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="165"/>
+        <location filename="../app/main_window_export.cpp" line="133"/>
         <source>At most how many images (one per step, at the current granularity)?</source>
         <translation>No máximo quantas imagens (uma por passo, na granularidade atual)?</translation>
     </message>
@@ -1744,218 +1738,218 @@
 <context>
     <name>rasterlab::NormalsView</name>
     <message>
-        <location filename="../views/normals_view.cpp" line="169"/>
+        <location filename="../views/normals_view.cpp" line="165"/>
         <source>the draw is unlit: shading reads no normal</source>
         <translation>o desenho não é iluminado: o sombreamento não lê nenhuma normal</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="194"/>
+        <location filename="../views/normals_view.cpp" line="190"/>
         <source>the interpolated normal is zero</source>
         <translation>a normal interpolada é nula</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="423"/>
+        <location filename="../views/normals_view.cpp" line="389"/>
         <source>Triangle normals</source>
         <translation>Normais dos triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="426"/>
+        <location filename="../views/normals_view.cpp" line="392"/>
         <source>Vertex normals</source>
         <translation>Normais dos vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="429"/>
+        <location filename="../views/normals_view.cpp" line="395"/>
         <source>Only on triangles that are seen</source>
         <translation>Só nos triângulos visíveis</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="432"/>
+        <location filename="../views/normals_view.cpp" line="398"/>
         <source>Hairs only on the triangles that hold a pixel at the end of the frame, and on their corners</source>
         <translation>Segmentos de normal só nos triângulos que ocupam um pixel no fim do quadro, e nos seus vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="459"/>
+        <location filename="../views/normals_view.cpp" line="425"/>
         <source>Per pixel at the stepping cursor, the unit normal shading uses there: the vertex normals interpolated with the pixel&apos;s barycentrics and normalised (the triangle&apos;s normal for flat shading), turned toward the viewer as the course does before lighting; shown as RGB = (n + 1) / 2. Red grows to the right, green upward, blue away from the camera: turned normals face the camera, so blue is mostly below 128. Black: no triangle.</source>
         <translation>Por pixel, no cursor de passo, a normal unitária que o sombreamento usa ali: as normais dos vértices interpoladas com as coordenadas baricêntricas do pixel e normalizadas (a normal do triângulo no sombreamento flat), voltadas para o observador como o curso faz antes da iluminação; mostrada como RGB = (n + 1) / 2. O vermelho cresce para a direita, o verde para cima, o azul para longe da câmera: as normais voltadas encaram a câmera, então o azul fica quase sempre abaixo de 128. Preto: nenhum triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="473"/>
+        <location filename="../views/normals_view.cpp" line="439"/>
         <source>Mesh and normals</source>
         <translation>Malha e normais</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="474"/>
+        <location filename="../views/normals_view.cpp" line="440"/>
         <source>Normal map</source>
         <translation>Mapa de normais</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="840"/>
+        <location filename="../views/normals_view.cpp" line="788"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="846"/>
+        <location filename="../views/normals_view.cpp" line="794"/>
         <source>front faces %1</source>
         <translation>faces frontais %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="848"/>
-        <location filename="../views/normals_view.cpp" line="852"/>
+        <location filename="../views/normals_view.cpp" line="796"/>
+        <location filename="../views/normals_view.cpp" line="800"/>
         <source>(%1 hidden, left out by culling)</source>
         <translation>(%1 ocultas, eliminadas pelo descarte)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="850"/>
+        <location filename="../views/normals_view.cpp" line="798"/>
         <source>back faces (n · pView &amp;gt; 0) %1</source>
         <translation>faces traseiras (n · pView &amp;gt; 0) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="855"/>
+        <location filename="../views/normals_view.cpp" line="803"/>
         <source>inconsistent winding: %1 triangles, %2 edges run the same way by two triangles</source>
         <translation>orientação inconsistente: %1 triângulos, %2 arestas percorridas no mesmo sentido por dois triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="862"/>
+        <location filename="../views/normals_view.cpp" line="810"/>
         <source>%1% of the pixels seen are back faces: the surface is closed and its normals point inward in view space (the course&apos;s [U; V; N] mirrors, so a file wound counter-clockwise seen from outside turns over). Shading turns every normal toward the viewer: the image does not change.</source>
         <translation>%1% dos pixels visíveis são faces traseiras: a superfície é fechada e suas normais apontam para dentro no espaço de vista (a matriz [U; V; N] do curso espelha, então um arquivo orientado no sentido anti-horário visto de fora fica invertido). O sombreamento volta toda normal para o observador: a imagem não muda.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="869"/>
+        <location filename="../views/normals_view.cpp" line="817"/>
         <source>No normals: %1.</source>
         <translation>Sem normais: %1.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="874"/>
+        <location filename="../views/normals_view.cpp" line="822"/>
         <source>triangle normals</source>
         <translation>normais dos triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="875"/>
+        <location filename="../views/normals_view.cpp" line="823"/>
         <source>vertex normals</source>
         <translation>normais dos vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="876"/>
+        <location filename="../views/normals_view.cpp" line="824"/>
         <source>length L = %1 (%2% of the mesh&apos;s size)</source>
         <translation>comprimento L = %1 (%2% do tamanho da malha)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="881"/>
+        <location filename="../views/normals_view.cpp" line="829"/>
         <source>on the %1 triangles seen and their corners</source>
         <translation>nos %1 triângulos visíveis e seus vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="884"/>
+        <location filename="../views/normals_view.cpp" line="832"/>
         <source>Large mesh: one triangle normal in %1 and one vertex normal in %2 are drawn; the selected triangle&apos;s always.</source>
         <translation>Malha grande: desenha-se uma normal de triângulo a cada %1 e uma normal de vértice a cada %2; as do triângulo selecionado, sempre.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="891"/>
+        <location filename="../views/normals_view.cpp" line="839"/>
         <source>One triangle in %1 of the wireframe is drawn.</source>
         <translation>Desenha-se um triângulo do aramado a cada %1.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="898"/>
+        <location filename="../views/normals_view.cpp" line="846"/>
         <source>&lt;p&gt;No frame yet.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Nenhum quadro ainda.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="902"/>
+        <location filename="../views/normals_view.cpp" line="850"/>
         <source>&lt;p&gt;&lt;b&gt;Stage 3, normals&lt;/b&gt;, in view space: each triangle&apos;s normal n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, and each vertex&apos;s normal the normalised sum of the normals of the triangles around it. A triangle faces away from the camera (at the origin) when n · P1 &amp;gt; 0; the course turns such normals toward the viewer when it shades.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Etapa 3, normais&lt;/b&gt;, no espaço de vista: a normal de cada triângulo é n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, e a normal de cada vértice é a soma normalizada das normais dos triângulos ao seu redor. Um triângulo está de costas para a câmera (na origem) quando n · P1 &amp;gt; 0; o curso volta essas normais para o observador ao sombrear.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="909"/>
+        <location filename="../views/normals_view.cpp" line="857"/>
         <source>&lt;p&gt;Skipped for this frame: %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Omitida neste quadro: %1.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="924"/>
+        <location filename="../views/normals_view.cpp" line="872"/>
         <source>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (vertices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</source>
         <translation>&lt;p&gt;&lt;b&gt;Triângulo %1&lt;/b&gt; (vértices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="931"/>
+        <location filename="../views/normals_view.cpp" line="879"/>
         <source> = %1, length %2&lt;br&gt;</source>
         <translation> = %1, comprimento %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="935"/>
+        <location filename="../views/normals_view.cpp" line="883"/>
         <source>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</source>
         <translation>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="937"/>
+        <location filename="../views/normals_view.cpp" line="885"/>
         <source>a back face, drawn in red</source>
         <translation>uma face traseira, desenhada em vermelho</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="937"/>
+        <location filename="../views/normals_view.cpp" line="885"/>
         <source>a front face</source>
         <translation>uma face frontal</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="939"/>
+        <location filename="../views/normals_view.cpp" line="887"/>
         <source>a degenerate triangle: no normal.&lt;/p&gt;</source>
         <translation>um triângulo degenerado: sem normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="944"/>
+        <location filename="../views/normals_view.cpp" line="893"/>
         <source>&lt;p&gt;It runs an edge in the same direction as a neighbour does: the two are wound inconsistently (magenta), and one of their normals points the wrong way.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Ele percorre uma aresta no mesmo sentido que um vizinho: os dois têm orientações inconsistentes (magenta), e uma das suas normais aponta para o lado errado.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="949"/>
+        <location filename="../views/normals_view.cpp" line="898"/>
         <source>&lt;p&gt;Vertex normals: N1 = %1 (vertex %2), N2 = %3 (vertex %4), N3 = %5 (vertex %6)&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normais dos vértices: N1 = %1 (vértice %2), N2 = %3 (vértice %4), N3 = %5 (vértice %6)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="957"/>
+        <location filename="../views/normals_view.cpp" line="906"/>
         <source>&lt;p&gt;Pick a pixel (here or in any image) to select its triangle and see its normal worked out.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Escolha um pixel (aqui ou em qualquer imagem) para selecionar seu triângulo e ver o cálculo da sua normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="967"/>
+        <location filename="../views/normals_view.cpp" line="916"/>
         <source>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </source>
         <translation>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="969"/>
+        <location filename="../views/normals_view.cpp" line="918"/>
         <source>no triangle holds it at the cursor (black in the normal map).&lt;/p&gt;</source>
         <translation>nenhum triângulo o ocupa no cursor (preto no mapa de normais).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="971"/>
+        <location filename="../views/normals_view.cpp" line="920"/>
         <source>no normal: %1 (grey in the normal map).&lt;/p&gt;</source>
         <translation>sem normal: %1 (cinza no mapa de normais).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="974"/>
+        <location filename="../views/normals_view.cpp" line="923"/>
         <source>the triangle&apos;s normal (flat) %1</source>
         <translation>a normal do triângulo (flat) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="976"/>
+        <location filename="../views/normals_view.cpp" line="925"/>
         <source>N = α N1 + β N2 + γ N3 with (α, β, γ) = %1: %2, normalised %3</source>
         <translation>N = α N1 + β N2 + γ N3 com (α, β, γ) = %1: %2, normalizada %3</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="980"/>
+        <location filename="../views/normals_view.cpp" line="929"/>
         <source>; V · N &amp;lt; 0, turned toward the viewer: &lt;b&gt;%1&lt;/b&gt;</source>
         <translation>; V · N &amp;lt; 0, voltada para o observador: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="983"/>
+        <location filename="../views/normals_view.cpp" line="932"/>
         <source>. Colour (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</source>
         <translation>. Cor (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1002"/>
+        <location filename="../views/normals_view.cpp" line="951"/>
         <source>x %1, y %2: no triangle</source>
         <translation>x %1, y %2: nenhum triângulo</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1006"/>
+        <location filename="../views/normals_view.cpp" line="955"/>
         <source>x %1, y %2: triangle %3, N = %4, colour (%5, %6, %7)</source>
         <translation>x %1, y %2: triângulo %3, N = %4, cor (%5, %6, %7)</translation>
     </message>
@@ -1978,343 +1972,343 @@
         <translation>no plano de N e L</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="291"/>
+        <location filename="../views/pixel_inspector.cpp" line="288"/>
         <source>Step</source>
         <translation>Passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="291"/>
+        <location filename="../views/pixel_inspector.cpp" line="288"/>
         <source>Triangle</source>
         <translation>Triângulo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="291"/>
+        <location filename="../views/pixel_inspector.cpp" line="288"/>
         <source>Depth test</source>
         <translation>Teste de profundidade</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="291"/>
+        <location filename="../views/pixel_inspector.cpp" line="288"/>
         <source>Before</source>
         <translation>Antes</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="291"/>
+        <location filename="../views/pixel_inspector.cpp" line="288"/>
         <source>After</source>
         <translation>Depois</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="291"/>
+        <location filename="../views/pixel_inspector.cpp" line="288"/>
         <source>Result</source>
         <translation>Resultado</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="301"/>
+        <location filename="../views/pixel_inspector.cpp" line="298"/>
         <source>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</source>
         <translation>▶ ocupa o pixel no cursor de passo; as linhas cinza ainda não foram alcançadas. Selecione uma linha para ver sua iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="401"/>
+        <location filename="../views/pixel_inspector.cpp" line="413"/>
         <source>Pick a pixel on the image to see its history.</source>
         <translation>Escolha um pixel na imagem para ver seu histórico.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="424"/>
+        <location filename="../views/pixel_inspector.cpp" line="436"/>
         <source>written</source>
         <translation>escrito</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="432"/>
+        <location filename="../views/pixel_inspector.cpp" line="444"/>
         <source>rejected: the depth is not a number</source>
         <translation>rejeitado: a profundidade não é um número</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="434"/>
+        <location filename="../views/pixel_inspector.cpp" line="446"/>
         <source>rejected: as far, the earlier keeps it</source>
         <translation>rejeitado: mesma distância, o anterior fica</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="436"/>
+        <location filename="../views/pixel_inspector.cpp" line="448"/>
         <source>rejected: farther</source>
         <translation>rejeitado: mais distante</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="439"/>
+        <location filename="../views/pixel_inspector.cpp" line="451"/>
         <source>%1 outside [0, 1]</source>
         <translation>%1 fora de [0, 1]</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="440"/>
+        <location filename="../views/pixel_inspector.cpp" line="452"/>
         <source>discarded: depth outside [0, 1]</source>
         <translation>descartado: profundidade fora de [0, 1]</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="448"/>
+        <location filename="../views/pixel_inspector.cpp" line="460"/>
         <source>cleared to %1</source>
         <translation>limpo com %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="449"/>
+        <location filename="../views/pixel_inspector.cpp" line="461"/>
         <source>the background</source>
         <translation>o fundo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="455"/>
+        <location filename="../views/pixel_inspector.cpp" line="467"/>
         <source>the final pixel</source>
         <translation>o pixel final</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="490"/>
+        <location filename="../views/pixel_inspector.cpp" line="497"/>
         <source>Preparing the stepping of this frame: the pixel&apos;s history follows.</source>
         <translation>Preparando o passo a passo deste quadro: o histórico do pixel vem a seguir.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="499"/>
+        <location filename="../views/pixel_inspector.cpp" line="506"/>
         <source>The frame could not be traced again: %1</source>
         <translation>Não foi possível rastrear o quadro de novo: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="538"/>
+        <location filename="../views/pixel_inspector.cpp" line="543"/>
         <source>depth %1</source>
         <translation>profundidade %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="540"/>
+        <location filename="../views/pixel_inspector.cpp" line="545"/>
         <source>none</source>
         <translation>nenhum</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="541"/>
+        <location filename="../views/pixel_inspector.cpp" line="546"/>
         <source>depth %1 (cleared)</source>
         <translation>profundidade %1 (valor de limpeza)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="556"/>
+        <location filename="../views/pixel_inspector.cpp" line="562"/>
         <source>Nothing drew here: the pixel keeps the background %1.</source>
         <translation>Nada foi desenhado aqui: o pixel mantém o fundo %1.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="565"/>
+        <location filename="../views/pixel_inspector.cpp" line="571"/>
         <source>The only fragment was rejected: the pixel keeps the background.</source>
         <translation>O único fragmento foi rejeitado: o pixel mantém o fundo.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="566"/>
+        <location filename="../views/pixel_inspector.cpp" line="572"/>
         <source>Every fragment was rejected (%1): the pixel keeps the background.</source>
         <translation>Todos os fragmentos foram rejeitados (%1): o pixel mantém o fundo.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="570"/>
+        <location filename="../views/pixel_inspector.cpp" line="576"/>
         <source>Written by triangle %1</source>
         <translation>Escrito pelo triângulo %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="572"/>
+        <location filename="../views/pixel_inspector.cpp" line="578"/>
         <source>over 1 earlier write</source>
         <translation>sobre 1 escrita anterior</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="574"/>
+        <location filename="../views/pixel_inspector.cpp" line="580"/>
         <source>over %1 earlier writes</source>
         <translation>sobre %1 escritas anteriores</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="576"/>
+        <location filename="../views/pixel_inspector.cpp" line="582"/>
         <source>1 fragment rejected</source>
         <translation>1 fragmento rejeitado</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="578"/>
+        <location filename="../views/pixel_inspector.cpp" line="584"/>
         <source>%1 fragments rejected</source>
         <translation>%1 fragmentos rejeitados</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="594"/>
+        <location filename="../views/pixel_inspector.cpp" line="600"/>
         <source>black: the vertex colours mixed here are black</source>
         <translation>preto: as cores dos vértices misturadas aqui são pretas</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="596"/>
+        <location filename="../views/pixel_inspector.cpp" line="602"/>
         <source>black: the object colour is black</source>
         <translation>preto: a cor do objeto é preta</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="598"/>
+        <location filename="../views/pixel_inspector.cpp" line="604"/>
         <source>black: the light takes away what the ambient term adds</source>
         <translation>preto: a luz tira o que o termo ambiente acrescenta</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="600"/>
+        <location filename="../views/pixel_inspector.cpp" line="606"/>
         <source>black: zero normal and no ambient</source>
         <translation>preto: normal nula e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="602"/>
+        <location filename="../views/pixel_inspector.cpp" line="608"/>
         <source>black: no light and no ambient</source>
         <translation>preto: sem luz e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="604"/>
+        <location filename="../views/pixel_inspector.cpp" line="610"/>
         <source>black: the light is at the point and no ambient</source>
         <translation>preto: a luz está no próprio ponto e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="606"/>
+        <location filename="../views/pixel_inspector.cpp" line="612"/>
         <source>black: N.L &lt; 0 and no ambient</source>
         <translation>preto: N.L &lt; 0 e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="609"/>
+        <location filename="../views/pixel_inspector.cpp" line="615"/>
         <source>black: the diffuse and specular terms are 0 here and there is no ambient</source>
         <translation>preto: os termos difuso e especular valem 0 aqui e não há ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="733"/>
+        <location filename="../views/pixel_inspector.cpp" line="740"/>
         <source>N flipped toward the viewer: V.N &lt; 0, so N := −N before lighting.</source>
         <translation>N invertida para o observador: V.N &lt; 0, então N := −N antes da iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="736"/>
+        <location filename="../views/pixel_inspector.cpp" line="743"/>
         <source>Zero normal: only degenerate triangles meet here, or the vertex normals cancel out; ambient only.</source>
         <translation>Normal nula: só triângulos degenerados se encontram aqui, ou as normais dos vértices se anulam; só ambiente.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="740"/>
+        <location filename="../views/pixel_inspector.cpp" line="747"/>
         <source>The light is at the point itself (L = 0): it adds nothing.</source>
         <translation>A luz está no próprio ponto (L = 0): não acrescenta nada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="743"/>
+        <location filename="../views/pixel_inspector.cpp" line="750"/>
         <source>N.L &lt; 0: the light is behind the surface; no diffuse, no specular.</source>
         <translation>N.L &lt; 0: a luz está atrás da superfície; sem difusa, sem especular.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="746"/>
+        <location filename="../views/pixel_inspector.cpp" line="753"/>
         <source>R.V &lt; 0: the reflected ray points away from the viewer; no specular.</source>
         <translation>R.V &lt; 0: o raio refletido aponta para longe do observador; sem especular.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="757"/>
+        <location filename="../views/pixel_inspector.cpp" line="764"/>
         <source>Clamped: %1 above the colour scale %2, written as byte 255.</source>
         <translation>Limitado: %1 acima da escala de cor %2, escrito como byte 255.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="766"/>
+        <location filename="../views/pixel_inspector.cpp" line="773"/>
         <source>%1 (clamped)</source>
         <translation>%1 (limitado)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="771"/>
+        <location filename="../views/pixel_inspector.cpp" line="778"/>
         <source>Gouraud shading, the vertices&apos; colours mixed</source>
         <translation>sombreamento de Gouraud, as cores dos vértices misturadas</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="772"/>
+        <location filename="../views/pixel_inspector.cpp" line="779"/>
         <source>C = α C1 + β C2 + γ C3</source>
         <translation>C = α C1 + β C2 + γ C3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="789"/>
+        <location filename="../views/pixel_inspector.cpp" line="796"/>
         <source>not lit, the object colour as it is</source>
         <translation>sem iluminação, a cor do objeto tal como é</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="790"/>
+        <location filename="../views/pixel_inspector.cpp" line="797"/>
         <source>I = O (the object colour)</source>
         <translation>I = O (a cor do objeto)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="797"/>
+        <location filename="../views/pixel_inspector.cpp" line="804"/>
         <source>the course&apos;s Phong lighting model</source>
         <translation>o modelo de iluminação de Phong do curso</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="798"/>
+        <location filename="../views/pixel_inspector.cpp" line="805"/>
         <source>Lambert with Blinn-Phong highlights (command files)</source>
         <translation>Lambert com brilhos de Blinn-Phong (arquivos de comandos)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="800"/>
+        <location filename="../views/pixel_inspector.cpp" line="807"/>
         <source>Flat shading: evaluated once, at the triangle&apos;s barycentre with the triangle&apos;s normal; every pixel of the triangle gets this colour.</source>
         <translation>Sombreamento flat: avaliado uma vez, no baricentro do triângulo, com a normal do triângulo; todo pixel do triângulo recebe esta cor.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="804"/>
+        <location filename="../views/pixel_inspector.cpp" line="811"/>
         <source>%1 lights: the diffuse and specular terms are sums over them; the numbers filled in are the first light&apos;s.</source>
         <translation>%1 luzes: os termos difuso e especular são somas sobre elas; os números preenchidos são os da primeira luz.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="811"/>
+        <location filename="../views/pixel_inspector.cpp" line="818"/>
         <source>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</source>
         <translation>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="818"/>
+        <location filename="../views/pixel_inspector.cpp" line="825"/>
         <source>I = Σ Il O (N.L) + Il (H.N)^s, over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L) + Il (H.N)^s, sobre as luzes com N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="820"/>
+        <location filename="../views/pixel_inspector.cpp" line="827"/>
         <source>I = Σ Il O (N.L), over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L), sobre as luzes com N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="861"/>
+        <location filename="../views/pixel_inspector.cpp" line="868"/>
         <source>%1 (the other lights)</source>
         <translation>%1 (as outras luzes)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="876"/>
+        <location filename="../views/pixel_inspector.cpp" line="883"/>
         <source>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</source>
         <translation>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="880"/>
+        <location filename="../views/pixel_inspector.cpp" line="887"/>
         <source>Il = %1, O = %2</source>
         <translation>Il = %1, O = %2</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="909"/>
+        <location filename="../views/pixel_inspector.cpp" line="907"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="915"/>
+        <location filename="../views/pixel_inspector.cpp" line="913"/>
         <location filename="../views/pixel_inspector.cpp" line="1001"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="923"/>
+        <location filename="../views/pixel_inspector.cpp" line="921"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>ocupa o pixel no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="924"/>
+        <location filename="../views/pixel_inspector.cpp" line="922"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>ainda não alcançado pelo cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="939"/>
+        <location filename="../views/pixel_inspector.cpp" line="937"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="940"/>
+        <location filename="../views/pixel_inspector.cpp" line="938"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Sem o passo a passo, as cores das escritas sobrescritas depois não são guardadas.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="981"/>
+        <location filename="../views/pixel_inspector.cpp" line="982"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Sem o passo a passo, só a iluminação do fragmento que ocupa o pixel no fim é registrada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="984"/>
+        <location filename="../views/pixel_inspector.cpp" line="985"/>
         <source>The cleared pixel is not lit.</source>
         <translation>O pixel limpo não é iluminado.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="987"/>
+        <location filename="../views/pixel_inspector.cpp" line="988"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>Nenhum fragmento ocupa o pixel no cursor: selecione uma linha do histórico para ver sua iluminação.</translation>
     </message>
@@ -2349,7 +2343,7 @@
         <translation>especular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1052"/>
+        <location filename="../views/pixel_inspector.cpp" line="1049"/>
         <source>No special case: every term applies as written.</source>
         <translation>Nenhum caso especial: todos os termos valem como escritos.</translation>
     </message>
@@ -2357,12 +2351,12 @@
 <context>
     <name>rasterlab::ProjectionCanvas</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="162"/>
+        <location filename="../views/projection_view.cpp" line="158"/>
         <source>Click a triangle to select it; wheel to zoom, drag to pan, double-click to fit.</source>
         <translation>Clique num triângulo para selecioná-lo; roda para o zoom, arraste para deslocar, clique duas vezes para ajustar.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="390"/>
+        <location filename="../views/projection_view.cpp" line="385"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
@@ -2370,27 +2364,27 @@
 <context>
     <name>rasterlab::ProjectionSideView</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="607"/>
+        <location filename="../views/projection_view.cpp" line="589"/>
         <source>view z (= w) →</source>
         <translation>z de vista (= w) →</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="607"/>
+        <location filename="../views/projection_view.cpp" line="589"/>
         <source>clip w →</source>
         <translation>w de recorte →</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="611"/>
+        <location filename="../views/projection_view.cpp" line="593"/>
         <source>y ↑</source>
         <translation>y ↑</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="619"/>
+        <location filename="../views/projection_view.cpp" line="601"/>
         <source>near plane w = %1</source>
         <translation>plano próximo w = %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="621"/>
+        <location filename="../views/projection_view.cpp" line="603"/>
         <source>● made by clipping: %1</source>
         <translation>● criados pelo recorte: %1</translation>
     </message>
@@ -2398,142 +2392,142 @@
 <context>
     <name>rasterlab::ProjectionView</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="662"/>
+        <location filename="../views/projection_view.cpp" line="644"/>
         <source>NDC</source>
         <translation>NDC</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="663"/>
+        <location filename="../views/projection_view.cpp" line="645"/>
         <source>Show the vertices in normalised device coordinates, [-1, 1]</source>
         <translation>Mostra os vértices em coordenadas normalizadas de dispositivo, [-1, 1]</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="666"/>
+        <location filename="../views/projection_view.cpp" line="648"/>
         <source>Pixels</source>
         <translation>Pixels</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="668"/>
+        <location filename="../views/projection_view.cpp" line="650"/>
         <source>Show the vertices in pixels, snapped as scan conversion receives them</source>
         <translation>Mostra os vértices em pixels, ajustados à grade como a conversão por varredura os recebe</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="677"/>
+        <location filename="../views/projection_view.cpp" line="659"/>
         <source>Fit</source>
         <translation>Ajustar</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="678"/>
+        <location filename="../views/projection_view.cpp" line="660"/>
         <source>Show the whole window and its margin</source>
         <translation>Mostra a janela inteira e sua margem</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="801"/>
+        <location filename="../views/projection_view.cpp" line="785"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="806"/>
+        <location filename="../views/projection_view.cpp" line="790"/>
         <source>inside %1, clipped %2 (%3 on screen), culled %4, back faces %5; behind %6, clipped away %7</source>
         <translation>dentro %1, recortados %2 (%3 na tela), descartados %4, faces traseiras %5; atrás %6, eliminados no recorte %7</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="817"/>
+        <location filename="../views/projection_view.cpp" line="801"/>
         <source>beyond the guard band %1</source>
         <translation>além da banda de guarda %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="819"/>
+        <location filename="../views/projection_view.cpp" line="803"/>
         <source>not finite %1</source>
         <translation>não finitos %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="821"/>
+        <location filename="../views/projection_view.cpp" line="805"/>
         <source>%1 drawn whole (inside): %2&lt;br&gt;</source>
         <translation>%1 desenhados inteiros (dentro): %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="822"/>
+        <location filename="../views/projection_view.cpp" line="806"/>
         <source>%1 clipped: %2, drawn as %3 fan triangles&lt;br&gt;</source>
         <translation>%1 recortados: %2, desenhados como %3 triângulos em leque&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="826"/>
+        <location filename="../views/projection_view.cpp" line="810"/>
         <source>%1 culled (clockwise on screen): %2; hidden back faces: %3&lt;br&gt;</source>
         <translation>%1 descartados (sentido horário na tela): %2; faces traseiras ocultas: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="830"/>
+        <location filename="../views/projection_view.cpp" line="814"/>
         <source>Nothing on screen: behind the near plane %1; outside a clip plane %2</source>
         <translation>Nada na tela: atrás do plano próximo %1; fora de um plano de recorte %2</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="833"/>
+        <location filename="../views/projection_view.cpp" line="817"/>
         <source>; beyond the guard band %1</source>
         <translation>; além da banda de guarda %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="834"/>
+        <location filename="../views/projection_view.cpp" line="818"/>
         <source>; not finite %1</source>
         <translation>; não finitos %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="836"/>
+        <location filename="../views/projection_view.cpp" line="820"/>
         <source>%1 screen triangles go to scan conversion; the near plane is w = %2.</source>
         <translation>%1 triângulos de tela vão para a conversão por varredura; o plano próximo é w = %2.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="840"/>
+        <location filename="../views/projection_view.cpp" line="824"/>
         <source>%1 selected, %2 being drawn</source>
         <translation>%1 selecionado, %2 em desenho</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="854"/>
+        <location filename="../views/projection_view.cpp" line="844"/>
         <source>&lt;p&gt;&lt;b&gt;Projection.&lt;/b&gt; Every vertex goes to clip space, pClip = clipFromView · pView. A triangle crossing the near plane w = near is clipped (Sutherland-Hodgman) and its polygon cut into a fan, so nothing is divided by a w at or behind the camera. Then pNdc = pClip.xy / w, and the pixels are x = (x_ndc + 1) W/2, y = (1 − y_ndc) H/2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Projeção.&lt;/b&gt; Todo vértice vai para o espaço de recorte, pClip = clipFromView · pView. Um triângulo que cruza o plano próximo w = near é recortado (Sutherland-Hodgman) e seu polígono é dividido em leque, de modo que nada é dividido por um w na câmera ou atrás dela. Depois pNdc = pClip.xy / w, e os pixels são x = (x_ndc + 1) W/2, y = (1 − y_ndc) H/2.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="861"/>
+        <location filename="../views/projection_view.cpp" line="851"/>
         <source>&lt;p&gt;For the course camera pClip = ((d/hx) x, (d/hy) y, z, z): x_ndc = (d/hx) x/z, y_ndc = (d/hy) y/z, and the pixel coordinates are truncated.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Para a câmera do curso, pClip = ((d/hx) x, (d/hy) y, z, z): x_ndc = (d/hx) x/z, y_ndc = (d/hy) y/z, e as coordenadas de pixel são truncadas.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="869"/>
+        <location filename="../views/projection_view.cpp" line="859"/>
         <source>&lt;p&gt;Click a triangle to see the numbers of its first vertex.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Clique num triângulo para ver os números do seu primeiro vértice.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="889"/>
+        <location filename="../views/projection_view.cpp" line="879"/>
         <source>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (mesh triangle %2%3), its first vertex, vertex %4:</source>
         <translation>&lt;p&gt;&lt;b&gt;Triângulo %1&lt;/b&gt; (triângulo %2 da malha%3), seu primeiro vértice, o vértice %4:</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="892"/>
+        <location filename="../views/projection_view.cpp" line="882"/>
         <source>, clipped</source>
         <translation>, recortado</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="897"/>
+        <location filename="../views/projection_view.cpp" line="887"/>
         <source>made by clipping, on the edge from vertex %1 to vertex %2 at t = %3</source>
         <translation>criado pelo recorte, na aresta do vértice %1 ao vértice %2, em t = %3</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="923"/>
+        <location filename="../views/projection_view.cpp" line="913"/>
         <source>truncated</source>
         <translation>truncado</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="923"/>
+        <location filename="../views/projection_view.cpp" line="913"/>
         <source>rounded</source>
         <translation>arredondado</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="926"/>
+        <location filename="../views/projection_view.cpp" line="916"/>
         <source>truncated to 1/%1 pixel</source>
         <translation>truncado para 1/%1 de pixel</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="927"/>
+        <location filename="../views/projection_view.cpp" line="917"/>
         <source>rounded to 1/%1 pixel</source>
         <translation>arredondado para 1/%1 de pixel</translation>
     </message>
@@ -2541,296 +2535,296 @@
 <context>
     <name>rasterlab::ScanlineView</name>
     <message>
-        <location filename="../views/scanline_view.cpp" line="235"/>
+        <location filename="../views/scanline_view.cpp" line="228"/>
         <source>No triangle to show: step into the frame or pick a pixel.</source>
         <translation>Nenhum triângulo para mostrar: avance pelo quadro ou escolha um pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="422"/>
+        <location filename="../views/scanline_view.cpp" line="408"/>
         <source>long edge</source>
         <translation>aresta longa</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="423"/>
+        <location filename="../views/scanline_view.cpp" line="409"/>
         <source>upper edge</source>
         <translation>aresta superior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="424"/>
+        <location filename="../views/scanline_view.cpp" line="410"/>
         <source>lower edge</source>
         <translation>aresta inferior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="548"/>
+        <location filename="../views/scanline_view.cpp" line="540"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="551"/>
+        <location filename="../views/scanline_view.cpp" line="543"/>
         <source>Start of the frame: step forward to walk the first triangle, or pick a pixel to see the triangle holding it.</source>
         <translation>Início do quadro: avance para percorrer o primeiro triângulo, ou escolha um pixel para ver o triângulo que o ocupa.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="554"/>
+        <location filename="../views/scanline_view.cpp" line="546"/>
         <source>Pick a pixel, or step through the frame, to see a triangle scan converted.</source>
         <translation>Escolha um pixel, ou avance pelo quadro, para ver a conversão por varredura de um triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="559"/>
+        <location filename="../views/scanline_view.cpp" line="551"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</source>
         <translation>&lt;b&gt;Triângulo %1&lt;/b&gt; de %2</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="562"/>
+        <location filename="../views/scanline_view.cpp" line="554"/>
         <source>scanline %1</source>
         <translation>linha de varredura %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="564"/>
+        <location filename="../views/scanline_view.cpp" line="556"/>
         <source>pixel %1</source>
         <translation>pixel %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="567"/>
+        <location filename="../views/scanline_view.cpp" line="559"/>
         <source>at the stepping cursor</source>
         <translation>no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="568"/>
+        <location filename="../views/scanline_view.cpp" line="560"/>
         <source>the triangle selected (the cursor is at the %1 of the frame)</source>
         <translation>o triângulo selecionado (o cursor está no %1 do quadro)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="569"/>
+        <location filename="../views/scanline_view.cpp" line="561"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="570"/>
+        <location filename="../views/scanline_view.cpp" line="562"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="591"/>
+        <location filename="../views/scanline_view.cpp" line="583"/>
         <source>Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the top to the bottom; the two short edges meet at the middle vertex.</source>
         <translation>Vértices ordenados por y: topo %1, meio %2, base %3. A aresta longa vai do topo à base; as duas arestas curtas se encontram no vértice do meio.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="596"/>
+        <location filename="../views/scanline_view.cpp" line="588"/>
         <source>Its area on the screen is zero: it has no inside and is not scanned.</source>
         <translation>Sua área na tela é zero: ele não tem interior e não é varrido.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="601"/>
+        <location filename="../views/scanline_view.cpp" line="593"/>
         <source>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, so the middle vertex is %2 of the long edge: the long edge bounds the spans on the %3.</source>
         <translation>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, então o vértice do meio fica à %2 da aresta longa: a aresta longa limita os segmentos à %3.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="604"/>
-        <location filename="../views/scanline_view.cpp" line="605"/>
-        <location filename="../views/scanline_view.cpp" line="638"/>
+        <location filename="../views/scanline_view.cpp" line="596"/>
+        <location filename="../views/scanline_view.cpp" line="597"/>
+        <location filename="../views/scanline_view.cpp" line="630"/>
         <source>right</source>
         <translation>direita</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="604"/>
-        <location filename="../views/scanline_view.cpp" line="605"/>
-        <location filename="../views/scanline_view.cpp" line="638"/>
+        <location filename="../views/scanline_view.cpp" line="596"/>
+        <location filename="../views/scanline_view.cpp" line="597"/>
+        <location filename="../views/scanline_view.cpp" line="630"/>
         <source>left</source>
         <translation>esquerda</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="608"/>
+        <location filename="../views/scanline_view.cpp" line="600"/>
         <source>long</source>
         <translation>longa</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="608"/>
+        <location filename="../views/scanline_view.cpp" line="600"/>
         <source>upper</source>
         <translation>superior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="608"/>
+        <location filename="../views/scanline_view.cpp" line="600"/>
         <source>lower</source>
         <translation>inferior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="625"/>
+        <location filename="../views/scanline_view.cpp" line="617"/>
         <source>from</source>
         <translation>de</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="626"/>
+        <location filename="../views/scanline_view.cpp" line="618"/>
         <source>to</source>
         <translation>até</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="627"/>
+        <location filename="../views/scanline_view.cpp" line="619"/>
         <source>x on its first row</source>
         <translation>x na sua primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="630"/>
+        <location filename="../views/scanline_view.cpp" line="622"/>
         <source>dx/dy</source>
         <translation>dx/dy</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="631"/>
+        <location filename="../views/scanline_view.cpp" line="623"/>
         <source>horizontal</source>
         <translation>horizontal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="633"/>
+        <location filename="../views/scanline_view.cpp" line="625"/>
         <source>rows</source>
         <translation>linhas</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="635"/>
+        <location filename="../views/scanline_view.cpp" line="627"/>
         <source>none</source>
         <translation>nenhuma</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="638"/>
+        <location filename="../views/scanline_view.cpp" line="630"/>
         <source>side</source>
         <translation>lado</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="642"/>
+        <location filename="../views/scanline_view.cpp" line="634"/>
         <source>Only rows %1 to %2 are on the screen: the walk starts and stops there.</source>
         <translation>Só as linhas %1 a %2 estão na tela: o percurso começa e termina ali.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="649"/>
+        <location filename="../views/scanline_view.cpp" line="641"/>
         <source>No row of this triangle is on the screen.</source>
         <translation>Nenhuma linha deste triângulo está na tela.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="661"/>
+        <location filename="../views/scanline_view.cpp" line="653"/>
         <source>%1(%2) = %3, where the %4 edge crosses its first row</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza sua primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="667"/>
+        <location filename="../views/scanline_view.cpp" line="659"/>
         <source>%1(%2) = %3, where the %4 edge crosses the first row on the screen</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza a primeira linha na tela</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="672"/>
+        <location filename="../views/scanline_view.cpp" line="664"/>
         <source>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</source>
         <translation>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 ao longo da aresta %7</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="685"/>
+        <location filename="../views/scanline_view.cpp" line="677"/>
         <source>Scanline y = %1</source>
         <translation>Linha de varredura y = %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="687"/>
+        <location filename="../views/scanline_view.cpp" line="679"/>
         <source>(sampled at y = %1)</source>
         <translation>(amostrada em y = %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="699"/>
+        <location filename="../views/scanline_view.cpp" line="691"/>
         <source>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Regra top-left: as amostras com x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 a ceil(x_right%2) &amp;minus; 1 = %4 (uma amostra exatamente na aresta direita pertence ao triângulo seguinte).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="706"/>
+        <location filename="../views/scanline_view.cpp" line="698"/>
         <source>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</source>
         <translation>Regra inclusiva: os pixels de ceil(x_left%1) = %2 a floor(x_right%1) = %3, as duas pontas incluídas (uma amostra exatamente sobre uma aresta está dentro).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="714"/>
+        <location filename="../views/scanline_view.cpp" line="706"/>
         <source>No pixel on this row</source>
         <translation>Nenhum pixel nesta linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="715"/>
+        <location filename="../views/scanline_view.cpp" line="707"/>
         <source>the edges cross it between two samples.</source>
         <translation>as arestas a cruzam entre duas amostras.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="716"/>
+        <location filename="../views/scanline_view.cpp" line="708"/>
         <source>they are all off the screen.</source>
         <translation>estão todos fora da tela.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="719"/>
+        <location filename="../views/scanline_view.cpp" line="711"/>
         <source>Span [%1, %2): 1 pixel.</source>
         <translation>Segmento [%1, %2): 1 pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="720"/>
+        <location filename="../views/scanline_view.cpp" line="712"/>
         <source>Span [%1, %2): %3 pixels.</source>
         <translation>Segmento [%1, %2): %3 pixels.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="723"/>
+        <location filename="../views/scanline_view.cpp" line="715"/>
         <source>(cut to the screen&apos;s columns 0 to %1)</source>
         <translation>(cortado às colunas 0 a %1 da tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="726"/>
+        <location filename="../views/scanline_view.cpp" line="718"/>
         <source>The pixel at the cursor is x = %1.</source>
         <translation>O pixel no cursor é x = %1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="738"/>
+        <location filename="../views/scanline_view.cpp" line="731"/>
         <source>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</source>
         <translation>Nas pontas do segmento, as coordenadas baricêntricas (&amp;alpha;, &amp;beta;, &amp;gamma;) da amostra em relação ao triângulo de tela P1 %1, P2 %2, P3 %3 dão a profundidade, a partir dos z dos vértices, z1 = %4, z2 = %5, z3 = %6:</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="746"/>
+        <location filename="../views/scanline_view.cpp" line="736"/>
         <source>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</source>
         <translation>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (com correção de perspectiva: 1/z é linear na tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="748"/>
+        <location filename="../views/scanline_view.cpp" line="738"/>
         <source>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</source>
         <translation>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="753"/>
+        <location filename="../views/scanline_view.cpp" line="743"/>
         <source>depth</source>
         <translation>profundidade</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="753"/>
+        <location filename="../views/scanline_view.cpp" line="743"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="760"/>
+        <location filename="../views/scanline_view.cpp" line="750"/>
         <source>not computed (nothing is lit)</source>
         <translation>não calculada (nada é iluminado)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="761"/>
+        <location filename="../views/scanline_view.cpp" line="751"/>
         <source>zero</source>
         <translation>nula</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="779"/>
+        <location filename="../views/scanline_view.cpp" line="769"/>
         <source>Pixel (x, y) is sampled at the point (x, y) itself.</source>
         <translation>O pixel (x, y) é amostrado no próprio ponto (x, y).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="780"/>
+        <location filename="../views/scanline_view.cpp" line="770"/>
         <source>Pixel (x, y) is sampled at (x + %1, y + %1).</source>
         <translation>O pixel (x, y) é amostrado em (x + %1, y + %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="783"/>
+        <location filename="../views/scanline_view.cpp" line="773"/>
         <source>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</source>
         <translation>A normal é N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1), a partir das normais dos vértices, normalizada%1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="786"/>
+        <location filename="../views/scanline_view.cpp" line="776"/>
         <source>, with the barycentrics weighted by 1/w (perspective-correct)</source>
         <translation>, com as coordenadas baricêntricas ponderadas por 1/w (correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="791"/>
+        <location filename="../views/scanline_view.cpp" line="781"/>
         <source>Edge walking: from one scanline to the next, each edge&apos;s x changes by its constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. The span between the two crossings is filled; the long edge bounds every row, the upper edge the rows above the middle vertex, the lower edge the rest.</source>
         <translation>Percurso das arestas: de uma linha de varredura à seguinte, o x de cada aresta muda pelo seu dx/dy constante, uma adição por aresta e por linha: x_left(y+1) = x_left(y) + dx/dy. O segmento entre os dois cruzamentos é preenchido; a aresta longa limita todas as linhas, a aresta superior as linhas acima do vértice do meio, a aresta inferior as demais.</translation>
     </message>
@@ -2838,67 +2832,67 @@
 <context>
     <name>rasterlab::StageStrip</name>
     <message>
-        <location filename="../views/stage_strip.cpp" line="51"/>
+        <location filename="../views/stage_strip.cpp" line="54"/>
         <source>Camera basis</source>
         <translation>Base da câmera</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="53"/>
+        <location filename="../views/stage_strip.cpp" line="56"/>
         <source>View coordinates</source>
         <translation>Coordenadas de vista</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="55"/>
+        <location filename="../views/stage_strip.cpp" line="58"/>
         <source>Normals</source>
         <translation>Normais</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="57"/>
+        <location filename="../views/stage_strip.cpp" line="60"/>
         <source>Projection</source>
         <translation>Projeção</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="59"/>
+        <location filename="../views/stage_strip.cpp" line="62"/>
         <source>Scan conversion</source>
         <translation>Conversão por varredura</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="61"/>
+        <location filename="../views/stage_strip.cpp" line="64"/>
         <source>Z-buffer</source>
         <translation>Z-buffer</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="63"/>
+        <location filename="../views/stage_strip.cpp" line="66"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="72"/>
+        <location filename="../views/stage_strip.cpp" line="75"/>
         <source>no course camera: each draw brings its own view matrix</source>
         <translation>sem câmera do curso: cada desenho traz sua própria matriz de vista</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="76"/>
+        <location filename="../views/stage_strip.cpp" line="79"/>
         <source>nothing is lit: no light reads a normal</source>
         <translation>nada é iluminado: nenhuma luz lê uma normal</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="84"/>
+        <location filename="../views/stage_strip.cpp" line="87"/>
         <source>nothing is lit: each pixel takes its object&apos;s own colour</source>
         <translation>nada é iluminado: cada pixel recebe a cor do seu objeto</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="102"/>
+        <location filename="../views/stage_strip.cpp" line="105"/>
         <source>(skipped)</source>
         <translation>(omitida)</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="106"/>
+        <location filename="../views/stage_strip.cpp" line="109"/>
         <source>%1 is skipped: %2</source>
         <translation>Etapa omitida (%1): %2</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="120"/>
+        <location filename="../views/stage_strip.cpp" line="127"/>
         <source>while stepping, stages 5-7 run together, fragment by fragment</source>
         <translation>no passo a passo, as etapas 5-7 rodam juntas, fragmento a fragmento</translation>
     </message>
@@ -2981,12 +2975,12 @@
         <translation>O quadro, fragmento a fragmento: arraste para percorrê-lo</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="266"/>
+        <location filename="../views/stepping_bar.cpp" line="262"/>
         <source>stepping is being prepared</source>
         <translation>o passo a passo está sendo preparado</translation>
     </message>
     <message>
-        <location filename="../views/stepping_bar.cpp" line="267"/>
+        <location filename="../views/stepping_bar.cpp" line="263"/>
         <source>no stepping: %1</source>
         <translation>sem passo a passo: %1</translation>
     </message>
@@ -2994,103 +2988,103 @@
 <context>
     <name>rasterlab::VertexTableModel</name>
     <message>
-        <location filename="../views/vertex_table.cpp" line="126"/>
+        <location filename="../views/vertex_table.cpp" line="125"/>
         <source>%1 made by clipping (edge %2-%3, t = %4)</source>
         <translation>%1 criado pelo recorte (aresta %2-%3, t = %4)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="133"/>
+        <location filename="../views/vertex_table.cpp" line="132"/>
         <source>pView = pView(%1) + t (pView(%2) - pView(%1)), on the plane that cut the edge</source>
         <translation>pView = pView(%1) + t (pView(%2) - pView(%1)), no plano que cortou a aresta</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="146"/>
+        <location filename="../views/vertex_table.cpp" line="145"/>
         <source>At or behind the near plane: not projected; the triangles through it are clipped</source>
         <translation>No plano próximo ou atrás dele: não é projetado; os triângulos que passam por ele são recortados</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="149"/>
-        <location filename="../views/vertex_table.cpp" line="153"/>
+        <location filename="../views/vertex_table.cpp" line="148"/>
+        <location filename="../views/vertex_table.cpp" line="152"/>
         <source>behind</source>
         <translation>atrás</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="155"/>
+        <location filename="../views/vertex_table.cpp" line="154"/>
         <source>Exact: %1</source>
         <translation>Exato: %1</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="166"/>
+        <location filename="../views/vertex_table.cpp" line="165"/>
         <source>Mixed along the edge it was made on, as shading does (normalised per pixel)</source>
         <translation>Misturada ao longo da aresta em que o vértice foi criado, como faz o sombreamento (normalizada por pixel)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="182"/>
+        <location filename="../views/vertex_table.cpp" line="181"/>
         <source>Draw</source>
         <translation>Desenho</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="184"/>
+        <location filename="../views/vertex_table.cpp" line="183"/>
         <source>Vertex</source>
         <translation>Vértice</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="186"/>
+        <location filename="../views/vertex_table.cpp" line="185"/>
         <source>World (x, y, z)</source>
         <translation>Mundo (x, y, z)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="188"/>
+        <location filename="../views/vertex_table.cpp" line="187"/>
         <source>View pView</source>
         <translation>Vista pView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="190"/>
+        <location filename="../views/vertex_table.cpp" line="189"/>
         <source>NDC pNdc</source>
         <translation>NDC pNdc</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="192"/>
+        <location filename="../views/vertex_table.cpp" line="191"/>
         <source>Screen pScreen</source>
         <translation>Tela pScreen</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="194"/>
+        <location filename="../views/vertex_table.cpp" line="193"/>
         <source>Normal nView</source>
         <translation>Normal nView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="202"/>
+        <location filename="../views/vertex_table.cpp" line="201"/>
         <source>The draw (object) the vertex belongs to</source>
         <translation>O desenho (objeto) ao qual o vértice pertence</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="204"/>
+        <location filename="../views/vertex_table.cpp" line="203"/>
         <source>The vertex number as in the file (1-based); vertices made by clipping come after the draw&apos;s own</source>
         <translation>O número do vértice como no arquivo (a partir de 1); os vértices criados pelo recorte vêm depois dos do próprio desenho</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="208"/>
+        <location filename="../views/vertex_table.cpp" line="207"/>
         <source>P = worldFromModel · P_model</source>
         <translation>P = worldFromModel · P_model</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="210"/>
+        <location filename="../views/vertex_table.cpp" line="209"/>
         <source>pView = [U; V; N](P − C) for the course camera, or the draw&apos;s view matrix times P_model</source>
         <translation>pView = [U; V; N](P − C) para a câmera do curso, ou a matriz de vista do desenho vezes P_model</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="214"/>
+        <location filename="../views/vertex_table.cpp" line="213"/>
         <source>pNdc = ((d/hx) x/z, (d/hy) y/z) for the course camera, or pClip.xy / pClip.w with pClip = clipFromView · pView</source>
         <translation>pNdc = ((d/hx) x/z, (d/hy) y/z) para a câmera do curso, ou pClip.xy / pClip.w com pClip = clipFromView · pView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="218"/>
+        <location filename="../views/vertex_table.cpp" line="217"/>
         <source>pScreen = ((x_ndc + 1) w/2, (1 − y_ndc) h/2), truncated (snapped to the rules&apos; grid); the tooltip holds the exact value</source>
         <translation>pScreen = ((x_ndc + 1) w/2, (1 − y_ndc) h/2), truncado (ajustado à grade das regras); a dica mostra o valor exato</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="222"/>
+        <location filename="../views/vertex_table.cpp" line="221"/>
         <source>The view-space vertex normal: the normalised sum of the normals of the triangles around it (stage 3)</source>
         <translation>A normal do vértice no espaço de vista: a soma normalizada das normais dos triângulos ao seu redor (etapa 3)</translation>
     </message>
@@ -3098,127 +3092,127 @@
 <context>
     <name>rasterlab::VertexTableView</name>
     <message>
-        <location filename="../views/vertex_table.cpp" line="254"/>
+        <location filename="../views/vertex_table.cpp" line="253"/>
         <source>Only the selected triangle&apos;s vertices</source>
         <translation>Só os vértices do triângulo selecionado</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="312"/>
+        <location filename="../views/vertex_table.cpp" line="311"/>
         <source>%1 vertices, %2 of them made by clipping</source>
         <translation>%1 vértices, %2 deles criados pelo recorte</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="313"/>
+        <location filename="../views/vertex_table.cpp" line="312"/>
         <source>%1 vertices</source>
         <translation>%1 vértices</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="411"/>
+        <location filename="../views/vertex_table.cpp" line="406"/>
         <source>&lt;p&gt;Select a row, or pick a pixel in the image: its triangle&apos;s three vertices are selected. The numbers of the selected vertex are worked through each formula here.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Selecione uma linha, ou escolha um pixel na imagem: os três vértices do seu triângulo são selecionados. Os números do vértice selecionado são calculados aqui, fórmula por fórmula.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="414"/>
+        <location filename="../views/vertex_table.cpp" line="409"/>
         <source>&lt;p&gt;No frame yet.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Nenhum quadro ainda.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="438"/>
+        <location filename="../views/vertex_table.cpp" line="433"/>
         <source>Vertex %1 of draw %2 (%3)</source>
         <translation>Vértice %1 do desenho %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="439"/>
+        <location filename="../views/vertex_table.cpp" line="434"/>
         <source>Vertex %1 of %2</source>
         <translation>Vértice %1 de %2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="446"/>
+        <location filename="../views/vertex_table.cpp" line="441"/>
         <source>&lt;p&gt;Made by clipping the edge %1-%2 where it crosses a plane (the near plane or a clip plane), at t = %3:&lt;br&gt;pView = pView&lt;sub&gt;%1&lt;/sub&gt; + t (pView&lt;sub&gt;%2&lt;/sub&gt; − pView&lt;sub&gt;%1&lt;/sub&gt;) = %4 + %3 (%5 − %4) = &lt;b&gt;%6&lt;/b&gt;&lt;br&gt;World: P = %7 (the same interpolation).&lt;/p&gt;</source>
         <translation>&lt;p&gt;Criado ao recortar a aresta %1-%2 onde ela cruza um plano (o plano próximo ou um plano de recorte), em t = %3:&lt;br&gt;pView = pView&lt;sub&gt;%1&lt;/sub&gt; + t (pView&lt;sub&gt;%2&lt;/sub&gt; − pView&lt;sub&gt;%1&lt;/sub&gt;) = %4 + %3 (%5 − %4) = &lt;b&gt;%6&lt;/b&gt;&lt;br&gt;Mundo: P = %7 (a mesma interpolação).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="457"/>
+        <location filename="../views/vertex_table.cpp" line="452"/>
         <source>&lt;p&gt;World: P = P&lt;sub&gt;model&lt;/sub&gt; = &lt;b&gt;%1&lt;/b&gt; (worldFromModel is the identity)&lt;/p&gt;</source>
         <translation>&lt;p&gt;Mundo: P = P&lt;sub&gt;model&lt;/sub&gt; = &lt;b&gt;%1&lt;/b&gt; (worldFromModel é a identidade)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="461"/>
+        <location filename="../views/vertex_table.cpp" line="456"/>
         <source>&lt;p&gt;World: P = worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Mundo: P = worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="467"/>
+        <location filename="../views/vertex_table.cpp" line="462"/>
         <source>&lt;p&gt;View: pView = [U; V; N](P − C), with C = %1:&lt;br&gt;P − C = %2&lt;br&gt;x = U · (P − C) = %3 · %2 = %4&lt;br&gt;y = V · (P − C) = %5 · %2 = %6&lt;br&gt;z = N · (P − C) = %7 · %2 = %8&lt;br&gt;pView = &lt;b&gt;%9&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vista: pView = [U; V; N](P − C), com C = %1:&lt;br&gt;P − C = %2&lt;br&gt;x = U · (P − C) = %3 · %2 = %4&lt;br&gt;y = V · (P − C) = %5 · %2 = %6&lt;br&gt;z = N · (P − C) = %7 · %2 = %8&lt;br&gt;pView = &lt;b&gt;%9&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="475"/>
+        <location filename="../views/vertex_table.cpp" line="470"/>
         <source>&lt;p&gt;View: pView = viewFromModel · P&lt;sub&gt;model&lt;/sub&gt; (the draw&apos;s own view matrix) = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vista: pView = viewFromModel · P&lt;sub&gt;model&lt;/sub&gt; (a matriz de vista do próprio desenho) = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="483"/>
+        <location filename="../views/vertex_table.cpp" line="478"/>
         <source>&lt;p&gt;z = %1 is not beyond the near plane (w = %2): the vertex is behind, not projected; the triangles through it are clipped there.&lt;/p&gt;</source>
         <translation>&lt;p&gt;z = %1 não está além do plano próximo (w = %2): o vértice está atrás e não é projetado; os triângulos que passam por ele são recortados ali.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="491"/>
+        <location filename="../views/vertex_table.cpp" line="486"/>
         <source>&lt;p&gt;NDC: pNdc = ((d/hx) x/z, (d/hy) y/z) = ((%1/%2) · %3/%4, (%1/%5) · %6/%4) = &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;NDC: pNdc = ((d/hx) x/z, (d/hy) y/z) = ((%1/%2) · %3/%4, (%1/%5) · %6/%4) = &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="496"/>
+        <location filename="../views/vertex_table.cpp" line="491"/>
         <source>&lt;p&gt;Clip: pClip = clipFromView · pView = %1&lt;br&gt;NDC: pNdc = pClip.xy / pClip.w = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Recorte: pClip = clipFromView · pView = %1&lt;br&gt;NDC: pNdc = pClip.xy / pClip.w = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="505"/>
+        <location filename="../views/vertex_table.cpp" line="500"/>
         <source>truncated, as C&apos;s (int) does</source>
         <translation>truncado, como faz o (int) do C</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="507"/>
+        <location filename="../views/vertex_table.cpp" line="502"/>
         <source>truncated to a grid of 1/%1 pixel</source>
         <translation>truncado para uma grade de 1/%1 de pixel</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="509"/>
+        <location filename="../views/vertex_table.cpp" line="504"/>
         <source>rounded to the nearest 1/%1 pixel</source>
         <translation>arredondado para o 1/%1 de pixel mais próximo</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="510"/>
+        <location filename="../views/vertex_table.cpp" line="505"/>
         <source>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</source>
         <translation>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="511"/>
+        <location filename="../views/vertex_table.cpp" line="506"/>
         <source>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</source>
         <translation>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="516"/>
+        <location filename="../views/vertex_table.cpp" line="511"/>
         <source>&lt;p&gt;Screen: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Tela: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="525"/>
+        <location filename="../views/vertex_table.cpp" line="520"/>
         <source>&lt;p&gt;Normal: mixed along the edge like pView, %1; shading normalises it per pixel.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: misturada ao longo da aresta como pView, %1; o sombreamento a normaliza por pixel.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="529"/>
+        <location filename="../views/vertex_table.cpp" line="524"/>
         <source>&lt;p&gt;Normal: the file&apos;s normal carried to view space by the inverse transpose of viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: a normal do arquivo levada ao espaço de vista pela inversa transposta de viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="536"/>
+        <location filename="../views/vertex_table.cpp" line="531"/>
         <source>&lt;p&gt;Normal: the normalised sum of the normals of the %1 triangles around it: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: a soma normalizada das normais dos %1 triângulos ao seu redor: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="542"/>
+        <location filename="../views/vertex_table.cpp" line="537"/>
         <source>&lt;p&gt;Normal: none, %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: nenhuma, %1.&lt;/p&gt;</translation>
     </message>
@@ -3256,57 +3250,61 @@
         <translation>Cores:</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="246"/>
+        <location filename="../views/zbuffer_view.cpp" line="249"/>
         <source>+&amp;infin;</source>
         <translation>+&amp;infin;</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="250"/>
+        <location filename="../views/zbuffer_view.cpp" line="253"/>
         <source>the view-space z of P&apos;</source>
         <translation>o z de P&apos; no espaço de vista</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="250"/>
+        <location filename="../views/zbuffer_view.cpp" line="253"/>
         <source>the NDC z</source>
         <translation>o z em NDC</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="251"/>
-        <source>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth z = &amp;alpha;z&lt;sub&gt;1&lt;/sub&gt; + &amp;beta;z&lt;sub&gt;2&lt;/sub&gt; + &amp;gamma;z&lt;sub&gt;3&lt;/sub&gt; (%2) is compared with the stored one; it is written, with its colour, only when %3. So far: %4 fragments tested, %5 written, %6 rejected.</source>
-        <translation>&lt;b&gt;Z-buffer.&lt;/b&gt; Todo pixel começa em %1. A profundidade de cada fragmento, z = &amp;alpha;z&lt;sub&gt;1&lt;/sub&gt; + &amp;beta;z&lt;sub&gt;2&lt;/sub&gt; + &amp;gamma;z&lt;sub&gt;3&lt;/sub&gt; (%2), é comparada com a armazenada; ela é escrita, com sua cor, só quando %3. Até agora: %4 fragmentos testados, %5 escritos, %6 rejeitados.</translation>
+        <location filename="../views/zbuffer_view.cpp" line="264"/>
+        <source>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</source>
+        <translation>&lt;b&gt;Z-buffer.&lt;/b&gt; Todo pixel começa em %1. A profundidade de cada fragmento, %2 (%3), é comparada com a armazenada; ela é escrita, com sua cor, só quando %4. Até agora: %5 fragmentos testados, %6 escritos, %7 rejeitados.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="307"/>
+        <source>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth z = &amp;alpha;z&lt;sub&gt;1&lt;/sub&gt; + &amp;beta;z&lt;sub&gt;2&lt;/sub&gt; + &amp;gamma;z&lt;sub&gt;3&lt;/sub&gt; (%2) is compared with the stored one; it is written, with its colour, only when %3. So far: %4 fragments tested, %5 written, %6 rejected.</source>
+        <translation type="vanished">&lt;b&gt;Z-buffer.&lt;/b&gt; Todo pixel começa em %1. A profundidade de cada fragmento, z = &amp;alpha;z&lt;sub&gt;1&lt;/sub&gt; + &amp;beta;z&lt;sub&gt;2&lt;/sub&gt; + &amp;gamma;z&lt;sub&gt;3&lt;/sub&gt; (%2), é comparada com a armazenada; ela é escrita, com sua cor, só quando %3. Até agora: %4 fragmentos testados, %5 escritos, %6 rejeitados.</translation>
+    </message>
+    <message>
+        <location filename="../views/zbuffer_view.cpp" line="319"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="324"/>
+        <location filename="../views/zbuffer_view.cpp" line="336"/>
         <source>No pixel holds a triangle: the buffer is all clear value.</source>
         <translation>Nenhum pixel contém um triângulo: o buffer inteiro está no valor de limpeza.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="327"/>
+        <location filename="../views/zbuffer_view.cpp" line="339"/>
         <source>Drawn depths from %1 to %2; shown from %3 to %4.</source>
         <translation>Profundidades desenhadas de %1 a %2; exibidas de %3 a %4.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="333"/>
+        <location filename="../views/zbuffer_view.cpp" line="345"/>
         <source>%1 pixels nearer and %2 farther than the range are drawn at its ends.</source>
         <translation>%1 pixels mais próximos e %2 mais distantes que a faixa aparecem nas suas extremidades.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="347"/>
+        <location filename="../views/zbuffer_view.cpp" line="359"/>
         <source>+inf</source>
         <translation>+inf</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="348"/>
+        <location filename="../views/zbuffer_view.cpp" line="360"/>
         <source>x %1, y %2: no triangle; the depth stays at the clear value %3</source>
         <translation>x %1, y %2: nenhum triângulo; a profundidade fica no valor de limpeza %3</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="353"/>
+        <location filename="../views/zbuffer_view.cpp" line="365"/>
         <source>x %1, y %2: depth %3, triangle %4</source>
         <translation>x %1, y %2: profundidade %3, triângulo %4</translation>
     </message>

@@ -25,7 +25,6 @@ public:
     bool add(rl::Breakpoint::Kind kind, int value, bool anyPixel = false);
     void removeSelected();
     void clear();
-    QTreeWidget* list() const { return m_list; }
     // What a breakpoint says, translated ("first depth rejection at (12, 40)").
     static QString describe(const rl::Breakpoint& breakpoint, int triangleNumber);
 

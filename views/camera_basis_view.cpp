@@ -16,6 +16,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "frame_trace.h"
 #include "inspection.h"
 #include "number_text.h"
 
@@ -37,10 +38,6 @@ const QColor kColourU(255, 165, 40), kColourV(235, 115, 235), kColourN(80, 225, 
 const QColor kCloud(170, 170, 180, 130);
 const QColor kFrustum(215, 215, 215);
 const QColor kText(230, 230, 230);
-
-QString vec(const dvec3& v) {
-    return QStringLiteral("(%1, %2, %3)").arg(number(v.x), number(v.y), number(v.z));
-}
 
 dvec3 worldPoint(const rl::Draw& draw, const rl::dvec4& pModel) {
     return rl::cartesian(draw.worldFromModel * pModel);
@@ -200,6 +197,11 @@ void CameraBasisCanvas::setMessage(const QString& message) {
     update();
 }
 
+void CameraBasisCanvas::setStep(int step) {
+    m_picture.step = step;
+    update();
+}
+
 void CameraBasisCanvas::setLineWidth(double width) {
     m_lineWidth = width;
     update();
@@ -238,23 +240,34 @@ void CameraBasisCanvas::orbitFrame(dvec3& right, dvec3& up, dvec3& back) const {
     right = glm::cross(up, back);
 }
 
-QPointF CameraBasisCanvas::toWidget(const dvec3& pWorld) const {
+CameraBasisCanvas::Projector CameraBasisCanvas::projector() const {
     dvec3 right, up, back;
     orbitFrame(right, up, back);
-    const dvec3 eye = std::cos(m_pitch) * (std::sin(m_yaw) * right + std::cos(m_yaw) * back) +
-                      std::sin(m_pitch) * up;
-    const dvec3 screenRight = glm::normalize(glm::cross(up, eye));
-    const dvec3 screenUp = glm::cross(eye, screenRight);
+    Projector p;
+    p.eye = std::cos(m_pitch) * (std::sin(m_yaw) * right + std::cos(m_yaw) * back) +
+            std::sin(m_pitch) * up;
+    p.screenRight = glm::normalize(glm::cross(up, p.eye));
+    p.screenUp = glm::cross(p.eye, p.screenRight);
+    p.centre = m_picture.centre;
     const double r = m_picture.radius > 0.0 ? m_picture.radius : 1.0;
-    const dvec3 q = pWorld - m_picture.centre;
     // A mild perspective: the eye is 6 r from the centre; what is drawn lies within about
     // 1.2 r of it, so nothing comes near the eye.
-    const double distance = 6.0 * r;
+    p.distance = 6.0 * r;
+    p.scale = m_zoom * 0.42 * std::min(width(), height()) / r;
+    p.middle = QPointF(width() / 2.0, height() / 2.0);
+    return p;
+}
+
+QPointF CameraBasisCanvas::Projector::operator()(const dvec3& pWorld) const {
+    const dvec3 q = pWorld - centre;
     const double toward = std::min(glm::dot(q, eye), 0.9 * distance);
     const double f = distance / (distance - toward);
-    const double scale = m_zoom * 0.42 * std::min(width(), height()) / r;
-    return {width() / 2.0 + scale * f * glm::dot(q, screenRight),
-            height() / 2.0 - scale * f * glm::dot(q, screenUp)};
+    return {middle.x() + scale * f * glm::dot(q, screenRight),
+            middle.y() - scale * f * glm::dot(q, screenUp)};
+}
+
+QPointF CameraBasisCanvas::toWidget(const dvec3& pWorld) const {
+    return projector()(pWorld);
 }
 
 void CameraBasisCanvas::paintEvent(QPaintEvent*) {
@@ -269,16 +282,17 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
         return;
     }
     const CameraBasisPicture& pic = m_picture;
+    const Projector project = projector();  // once for every point drawn
     const rl::CameraBasis& b = pic.basis;
     const double w = m_lineWidth;
     const double s = pic.vectorScale;
-    const QPointF c = toWidget(b.c);
+    const QPointF c = project(b.c);
 
     // The mesh, faint, so it shows where the camera looks without hiding the vectors.
     if (!pic.cloud.empty()) {
         QPolygonF points;
         points.reserve(static_cast<int>(pic.cloud.size()));
-        for (const dvec3& p : pic.cloud) points.append(toWidget(p));
+        for (const dvec3& p : pic.cloud) points.append(project(p));
         painter.setPen(QPen(kCloud, std::max(2.0, w + 0.5), Qt::SolidLine, Qt::RoundCap));
         painter.drawPoints(points);
         m_drawn << QStringLiteral("cloud");
@@ -286,7 +300,7 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
 
     // The world axes at the origin when it is in the picture, else a tripod in a corner.
     const bool originShown = glm::length(pic.centre) <= pic.radius * (1.0 + 1e-9);
-    const QPointF o = toWidget(dvec3(0.0));
+    const QPointF o = project(dvec3(0.0));
     const QColor axisColours[3] = {kAxisX, kAxisY, kAxisZ};
     const QString axisNames[3] = {QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("Z")};
     QPointF tripod[3];
@@ -294,7 +308,7 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
     for (int k = 0; k < 3; ++k) {
         dvec3 axis(0.0);
         axis[k] = 1.0;
-        tripod[k] = toWidget(pic.centre + 0.2 * pic.radius * axis) - toWidget(pic.centre);
+        tripod[k] = project(pic.centre + 0.2 * pic.radius * axis) - project(pic.centre);
         longest = std::max(longest, std::hypot(tripod[k].x(), tripod[k].y()));
     }
     for (int k = 0; k < 3; ++k) {
@@ -303,7 +317,7 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
         QPointF from, to;
         if (originShown) {
             from = o;
-            to = toWidget(0.5 * pic.radius * axis);
+            to = project(0.5 * pic.radius * axis);
         } else {
             from = QPointF(52.0, height() - 44.0);
             to = from + (longest > 0.0 ? tripod[k] * (28.0 / longest) : QPointF());
@@ -321,8 +335,8 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
         const double signs[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
         QPolygonF window, far;
         for (const auto& sg : signs) {
-            window << toWidget(b.c + pic.d * b.n + sg[0] * pic.hx * b.u + sg[1] * pic.hy * b.v);
-            far << toWidget(b.c + t * (b.n + sg[0] * ex * b.u + sg[1] * ey * b.v));
+            window << project(b.c + pic.d * b.n + sg[0] * pic.hx * b.u + sg[1] * pic.hy * b.v);
+            far << project(b.c + t * (b.n + sg[0] * ex * b.u + sg[1] * ey * b.v));
         }
         QColor faint = kFrustum;
         faint.setAlpha(90);
@@ -358,7 +372,7 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
     // The vectors, from C; the given ones dashed (their scale: CameraBasisPicture).
     auto arrow = [&](const dvec3& v, double scale, const QColor& colour, const QString& label,
                      Qt::PenStyle style, const QString& item) {
-        const QPointF tip = toWidget(b.c + scale * v);
+        const QPointF tip = project(b.c + scale * v);
         drawArrow(painter, c, tip, colour, style == Qt::SolidLine ? w + 1.0 : w, style);
         drawLabel(painter, tip, c, label, colour);
         m_drawn << item;
@@ -374,9 +388,9 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
         arrow(b.n, s, kColourN, QStringLiteral("N"), Qt::SolidLine, QStringLiteral("N"));
     if (pic.step == 2 || pic.step == 3) {
         // V = (V.N) N + V': the projection on N, the drop from V's tip onto N, and V'.
-        const QPointF projectionTip = toWidget(b.c + sv * b.vProjection);
+        const QPointF projectionTip = project(b.c + sv * b.vProjection);
         painter.setPen(QPen(kColourV, w, Qt::DotLine));
-        painter.drawLine(toWidget(b.c + sv * b.vGiven), projectionTip);
+        painter.drawLine(project(b.c + sv * b.vGiven), projectionTip);
         arrow(b.vProjection, sv, kColourV.lighter(115), QStringLiteral("(V·N) N"), Qt::DotLine,
               QStringLiteral("(V.N) N"));
         arrow(b.vOrthogonal, sv, kColourV, QStringLiteral("V'"), Qt::SolidLine,
@@ -532,7 +546,8 @@ void CameraBasisView::refresh() {
         return;
     }
     m_dirty = false;
-    m_frame = m_inspection ? m_inspection->frame() : nullptr;
+    const std::shared_ptr<const rl::FrameTrace> frame =
+        m_inspection ? m_inspection->frame() : nullptr;
     m_allSteps.clear();
     m_residualText.clear();
     m_matrixText.clear();
@@ -542,12 +557,12 @@ void CameraBasisView::refresh() {
     m_illConditioned = false;
     m_conditionRatio = 1.0;
 
-    const rl::CameraBasis* basis = m_frame ? m_frame->cameraBasis.get() : nullptr;
+    const rl::CameraBasis* basis = frame ? frame->cameraBasis.get() : nullptr;
     QString message;
     if (!m_error.isEmpty()) {
         m_statusText = tr("The camera was rejected: %1").arg(m_error);
         message = m_statusText;
-    } else if (!m_frame) {
+    } else if (!frame) {
         message = tr("No frame yet.");
     } else if (!basis || basis->skipped) {
         m_statusText = tr("This stage is skipped: %1.")
@@ -568,7 +583,7 @@ void CameraBasisView::refresh() {
     }
 
     const rl::CameraBasis& b = *basis;
-    const rl::CourseCamera& camera = *m_frame->scene->camera;
+    const rl::CourseCamera& camera = *frame->scene->camera;
     m_conditionRatio = b.vOrthogonalLength / glm::length(b.vGiven);
     m_illConditioned = m_conditionRatio < kIllConditionedRatio;
     if (m_illConditioned)
@@ -577,13 +592,13 @@ void CameraBasisView::refresh() {
                           "a lot. Choose a V further from N.")
                            .arg(number(m_conditionRatio, 3), number(kIllConditionedRatio));
 
-    m_allSteps
-        << tr("1. N := N / |N| = %1 / %2 = %3").arg(vec(b.nGiven), number(b.nLength), vec(b.n))
-        << tr("2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3")
-               .arg(number(b.vDotN), vec(b.vProjection), vec(b.vOrthogonal))
-        << tr("3. V := V / |V| = %1 / %2 = %3")
-               .arg(vec(b.vOrthogonal), number(b.vOrthogonalLength), vec(b.v))
-        << tr("4. U := N × V = %1 × %2 = %3").arg(vec(b.n), vec(b.v), vec(b.u));
+    m_allSteps << tr("1. N := N / |N| = %1 / %2 = %3")
+                      .arg(vector(b.nGiven), number(b.nLength), vector(b.n))
+               << tr("2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3")
+                      .arg(number(b.vDotN), vector(b.vProjection), vector(b.vOrthogonal))
+               << tr("3. V := V / |V| = %1 / %2 = %3")
+                      .arg(vector(b.vOrthogonal), number(b.vOrthogonalLength), vector(b.v))
+               << tr("4. U := N × V = %1 × %2 = %3").arg(vector(b.n), vector(b.v), vector(b.u));
 
     m_residualText = tr("U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; "
                         "largest %7")
@@ -615,14 +630,14 @@ void CameraBasisView::refresh() {
 
     // The formula with the numbers of the first vertex of the first mesh.
     QString example;
-    const rl::Scene& scene = *m_frame->scene;
+    const rl::Scene& scene = *frame->scene;
     if (!scene.draws.empty() && scene.draws[0].mesh && !scene.draws[0].mesh->positions.empty()) {
         const dvec3 pWorld = worldPoint(scene.draws[0], scene.draws[0].mesh->positions[0]);
         const dvec3 q = pWorld - b.c;
         const dvec3 pView(glm::dot(b.u, q), glm::dot(b.v, q), glm::dot(b.n, q));
         example = tr("<p>Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), "
                      "N·(P − C)) = %3%4.</p>")
-                      .arg(vec(pWorld), vec(q), vec(pView),
+                      .arg(vector(pWorld), vector(q), vector(pView),
                            pView.z > 0.0 ? tr(", in front of the camera (z > 0)")
                                          : tr(", behind the camera (z ≤ 0)"));
     }
@@ -633,8 +648,8 @@ void CameraBasisView::refresh() {
            "viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along "
            "+z.</p>"
            "<p>C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.</p>")
-            .arg(vec(b.c), vec(b.nGiven), vec(b.vGiven), number(camera.d), number(camera.hx),
-                 number(camera.hy)) +
+            .arg(vector(b.c), vector(b.nGiven), vector(b.vGiven), number(camera.d),
+                 number(camera.hx), number(camera.hy)) +
         example;
 
     CameraBasisPicture picture;
@@ -660,10 +675,7 @@ void CameraBasisView::showStep() {
     m_back->setEnabled(numbers && m_step > 0);
     m_forward->setEnabled(numbers && m_step < 4);
     m_stepLabel->setText(tr("Step %1 of 4").arg(m_step));
-
-    CameraBasisPicture picture = m_canvas->picture();
-    picture.step = m_step;
-    m_canvas->setPicture(std::move(picture));
+    m_canvas->setStep(m_step);
 
     // One page: why to distrust the numbers, the steps revealed so far (the newest in
     // bold), the matrix, the residuals, and the explanation.

@@ -10,11 +10,9 @@
 #include <QStringList>
 #include <QWidget>
 
-#include <memory>
 #include <vector>
 
 #include "camera_basis.h"
-#include "frame_trace.h"
 
 class QLabel;
 class QSlider;
@@ -56,6 +54,7 @@ public:
 
     void setPicture(CameraBasisPicture picture);
     const CameraBasisPicture& picture() const { return m_picture; }
+    void setStep(int step);  // the picture's step
     // Shown in place of the drawing (a skipped stage or a camera error); "" for none.
     void setMessage(const QString& message);
     QString message() const { return m_message; }
@@ -91,6 +90,14 @@ private:
     // The orbit's frame: up is the world axis nearest the camera's V (so the scene stands
     // as the camera sees it), forward the horizontal part of -N (we start behind the camera).
     void orbitFrame(rl::dvec3& right, rl::dvec3& up, rl::dvec3& back) const;
+    // World points to the widget under the current orbit, worked out once for many points.
+    struct Projector {
+        rl::dvec3 centre, eye, screenRight, screenUp;
+        double distance = 1.0, scale = 1.0;
+        QPointF middle;
+        QPointF operator()(const rl::dvec3& pWorld) const;
+    };
+    Projector projector() const;
 
     CameraBasisPicture m_picture;
     QToolButton* m_reset = nullptr;
@@ -140,7 +147,6 @@ private:
     void applyPresentation();
 
     Inspection* m_inspection = nullptr;
-    std::shared_ptr<const rl::FrameTrace> m_frame;  // the frame the texts were made for
     bool m_dirty = true;
     int m_step = 4;
     QString m_error;

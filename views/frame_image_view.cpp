@@ -93,12 +93,9 @@ void FrameImageView::paintEvent(QPaintEvent*) {
 
     if (m_zoom >= kGridFromZoom) {
         // The pixel grid and the sample points over the visible part of the image.
-        const int x0 = std::max(0, static_cast<int>(std::floor(-origin.x() / m_zoom)));
-        const int y0 = std::max(0, static_cast<int>(std::floor(-origin.y() / m_zoom)));
-        const int x1 =
-            std::min(m_image.width(), static_cast<int>(std::ceil((width() - origin.x()) / m_zoom)));
-        const int y1 = std::min(m_image.height(),
-                                static_cast<int>(std::ceil((height() - origin.y()) / m_zoom)));
+        const QRect visible = visiblePixels();
+        const int x0 = visible.left(), y0 = visible.top();
+        const int x1 = x0 + visible.width(), y1 = y0 + visible.height();
         painter.setPen(QPen(QColor(128, 128, 128, 110), 0));
         for (int x = x0; x <= x1; ++x)
             painter.drawLine(QPointF(origin.x() + x * m_zoom, origin.y() + y0 * m_zoom),
@@ -128,19 +125,27 @@ QPointF FrameImageView::widgetPoint(const QPointF& imagePoint) const {
     return imageOrigin() + imagePoint * m_zoom;
 }
 
+QRect FrameImageView::visiblePixels() const {
+    const QPointF origin = imageOrigin();
+    const int x0 = std::max(0, static_cast<int>(std::floor(-origin.x() / m_zoom)));
+    const int y0 = std::max(0, static_cast<int>(std::floor(-origin.y() / m_zoom)));
+    const int x1 =
+        std::min(m_image.width(), static_cast<int>(std::ceil((width() - origin.x()) / m_zoom)));
+    const int y1 =
+        std::min(m_image.height(), static_cast<int>(std::ceil((height() - origin.y()) / m_zoom)));
+    return QRect(x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0));
+}
+
 void FrameImageView::paintOverlay(QPainter& painter) const {
     const ImageOverlay& o = m_overlay;
     const double w = o.lineWidth;
-    const QPointF origin = imageOrigin();
     auto pixelRect = [&](int x, int y, int n = 1) {
-        return QRectF(origin.x() + x * m_zoom, origin.y() + y * m_zoom, n * m_zoom, m_zoom);
+        return QRectF(widgetPoint(QPointF(x, y)), QSizeF(n * m_zoom, m_zoom));
     };
     painter.setRenderHint(QPainter::Antialiasing, true);
     if (!o.coverage.isNull()) {
         painter.setRenderHint(QPainter::SmoothPixmapTransform, false);
-        painter.drawImage(
-            QRectF(origin, QSizeF(m_image.width() * m_zoom, m_image.height() * m_zoom)),
-            o.coverage);
+        painter.drawImage(QRectF(widgetPoint({0, 0}), QSizeF(m_image.size()) * m_zoom), o.coverage);
     }
     if (o.scanline >= 0) {
         // The row being walked, and the span on it.
@@ -163,13 +168,16 @@ void FrameImageView::paintOverlay(QPainter& painter) const {
         }
     }
     if (m_zoom >= 4.0 && !o.coveredPixels.empty()) {
-        // The samples of the current triangle's pixels tested so far.
+        // The samples of the current triangle's pixels tested so far, those on the screen
+        // (a large triangle seen close up has many more).
         painter.setPen(Qt::NoPen);
         painter.setBrush(QColor(60, 220, 90, 220));
         const double r = std::max(1.5, m_zoom / 10.0);
+        const QRect visible = visiblePixels();
         for (const QPoint& p : o.coveredPixels)
-            painter.drawEllipse(widgetPoint({p.x() + o.sampleOffset, p.y() + o.sampleOffset}), r,
-                                r);
+            if (visible.contains(p))
+                painter.drawEllipse(widgetPoint({p.x() + o.sampleOffset, p.y() + o.sampleOffset}),
+                                    r, r);
     }
     auto outline = [&](const std::array<QPointF, 3>& t, const QColor& colour) {
         QPainterPath path;

@@ -82,6 +82,7 @@ private:
     static std::optional<QPoint> arrowStep(int key);
     double fitZoom() const;
     QPointF imageOrigin() const;  // widget position of the image's top-left corner
+    QRect visiblePixels() const;  // the image's pixels the widget shows, wholly or in part
 
     static constexpr double kMinZoom = 0.05;
     static constexpr double kMaxZoom = 64.0;

@@ -24,18 +24,14 @@ void Inspection::setFrame(std::shared_ptr<const rl::FrameTrace> frame, QImage im
     const bool onImage = m_frame && m_picked.x() >= 0 && m_picked.x() < m_frame->scene->width &&
                          m_picked.y() >= 0 && m_picked.y() < m_frame->scene->height;
     if (!onImage) m_picked = QPoint(-1, -1);
-    // Triangle numbers belong to a frame's projection: selected again from the pixel, once
-    // the views have the new frame.
+    // Triangle numbers belong to a frame's projection: selected again from the pixel (which
+    // stays), once the views have the new frame. The replay dropped is part of frameChanged;
+    // cursorChanged says the buffers are the new frame's.
     m_vertices.clear();
     m_triangle.reset();
     emit frameChanged();
-    emit replayChanged();
     emit cursorChanged();
-    if (onImage) {
-        pickPixel(m_picked);
-    } else {
-        emit selectionChanged();
-    }
+    selectTriangle(triangleOf(m_picked));
 }
 
 void Inspection::setReplay(std::shared_ptr<const rl::FrameReplay> replay,
@@ -230,11 +226,15 @@ std::uint32_t Inspection::triangleAt(QPoint pixel) const {
     return b->triangle.at(pixel.x(), pixel.y());
 }
 
+std::optional<std::uint32_t> Inspection::triangleOf(QPoint pixel) const {
+    const std::uint32_t t = triangleAt(pixel);
+    return t == rl::kNoTriangle ? std::nullopt : std::optional<std::uint32_t>(t);
+}
+
 void Inspection::pickPixel(QPoint pixel) {
     m_picked = pixel;
-    const std::uint32_t t = pixel.x() >= 0 ? triangleAt(pixel) : rl::kNoTriangle;
     emit pixelPicked(pixel);
-    selectTriangle(t == rl::kNoTriangle ? std::nullopt : std::optional<std::uint32_t>(t));
+    selectTriangle(triangleOf(pixel));
 }
 
 void Inspection::selectTriangle(std::optional<std::uint32_t> triangle) {

@@ -36,7 +36,8 @@ public:
     explicit Inspection(QObject* parent = nullptr);
 
     // A new frame: the replay of the previous one is dropped and the cursor is at the end.
-    // The picked pixel stays when it is still on the image. image: the frame's final image.
+    // The picked pixel stays when it is still on the image, its triangle selected again.
+    // image: the frame's final image. Emits frameChanged, cursorChanged, selectionChanged.
     void setFrame(std::shared_ptr<const rl::FrameTrace> frame, QImage image);
     // The replay of the frame shown (ignored when it belongs to another frame); the cursor
     // moves to `at` (the end by default).
@@ -108,19 +109,20 @@ public:
     double lineWidth() const { return m_presentation ? 3.0 : 1.5; }
 
 signals:
-    void frameChanged();   // a new frame (its replay may follow)
-    void replayChanged();  // stepping became possible, or impossible
+    void frameChanged();   // a new frame, without a replay yet (setReplay may follow)
+    void replayChanged();  // the frame's replay arrived, or why it cannot
     void cursorChanged();  // the buffers at the cursor changed
     void stageChanged(rl::StageId stage);
     void granularityChanged(rl::StepGranularity granularity);
     void breakpointsChanged();
     void breakpointHit(int index);
-    void pixelPicked(QPoint pixel);
-    void selectionChanged();  // the triangle or the vertices selected
+    void pixelPicked(QPoint pixel);  // by pickPixel (a new frame keeps the pixel picked)
+    void selectionChanged();         // the triangle or the vertices selected
     void presentationChanged(bool on);
 
 private:
     void updateCursorStage();
+    std::optional<std::uint32_t> triangleOf(QPoint pixel) const;  // triangleAt, if any
     std::optional<rl::BreakpointHit> nextHit();
 
     std::shared_ptr<const rl::FrameTrace> m_frame;

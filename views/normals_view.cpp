@@ -66,10 +66,6 @@ std::optional<QLineF> hairLine(const rl::Scene& scene, const rl::Projection& pro
     return QLineF(*a, *b);
 }
 
-QString swatch(const QColor& colour) {
-    return QStringLiteral("<span style=\"color:%1\">&#9632;</span>").arg(colour.name());
-}
-
 }  // namespace
 
 // ---------------------------------------------------------------------------------------
@@ -222,47 +218,28 @@ NormalsCanvas::NormalsCanvas(QWidget* parent) : QWidget(parent) {
 
 void NormalsCanvas::setPicture(const NormalsPicture* picture) {
     m_picture = picture;
-    pictureChanged();
+    const QRectF focus = m_picture ? m_picture->focus : QRectF();
+    if (focus != m_view.content()) {
+        m_view.setContent(focus);
+        m_view.fit();
+    }
+    redraw();
 }
 
-void NormalsCanvas::pictureChanged() {
-    // Another mesh or framing: fitted again; the same (a step, a selection): zoom kept.
-    const QRectF focus = m_picture ? m_picture->focus : QRectF();
-    if (focus != m_focus) {
-        m_focus = focus;
-        m_zoom = 1.0;
-        m_pan = {};
-    }
+void NormalsCanvas::redraw() {
     m_cacheValid = false;
     update();
 }
 
 void NormalsCanvas::setLineWidth(double width) {
     m_lineWidth = width;
-    pictureChanged();
+    redraw();
 }
 
 void NormalsCanvas::setHairs(bool triangles, bool vertices) {
     m_triangleHairs = triangles;
     m_vertexHairs = vertices;
-    pictureChanged();
-}
-
-double NormalsCanvas::scale() const {
-    if (!m_picture || m_picture->focus.isEmpty()) return 1.0;
-    const double fit = std::min((width() - 8.0) / m_picture->focus.width(),
-                                (height() - 8.0) / m_picture->focus.height());
-    return std::max(1e-3, fit) * m_zoom;
-}
-
-QPointF NormalsCanvas::origin() const {
-    // The focus rectangle's centre at the widget's centre, moved by the pan.
-    if (!m_picture) return m_pan;
-    return QPointF(width() / 2.0, height() / 2.0) - m_picture->focus.center() * scale() + m_pan;
-}
-
-QPointF NormalsCanvas::widgetPoint(const QPointF& imagePoint) const {
-    return origin() + imagePoint * scale();
+    redraw();
 }
 
 void NormalsCanvas::resizeEvent(QResizeEvent*) {
@@ -277,8 +254,8 @@ void NormalsCanvas::paintCache() {
     m_cacheValid = true;
     if (!m_picture) return;
     QPainter painter(&m_cache);
-    const double s = scale();
-    const QPointF o = origin();
+    const double s = m_view.scale();
+    const QPointF o = m_view.offset();
     painter.fillRect(QRectF(o, m_picture->screen * s), QColor(22, 22, 26));
     painter.setRenderHint(QPainter::Antialiasing, true);
     painter.setTransform(QTransform(s, 0, 0, s, o.x(), o.y()));
@@ -346,8 +323,8 @@ void NormalsCanvas::paintEvent(QPaintEvent*) {
     painter.drawImage(QPoint(0, 0), m_cache);
     if (!m_picture || !m_picture->selected) return;
     // The selected triangle and its hairs, over everything (not cached: it changes alone).
-    const double s = scale();
-    const QPointF o = origin();
+    const double s = m_view.scale();
+    const QPointF o = m_view.offset();
     painter.setRenderHint(QPainter::Antialiasing, true);
     painter.setTransform(QTransform(s, 0, 0, s, o.x(), o.y()));
     QPen outline(kSelectedColour, m_lineWidth);
@@ -372,32 +349,22 @@ void NormalsCanvas::paintEvent(QPaintEvent*) {
 
 void NormalsCanvas::wheelEvent(QWheelEvent* event) {
     if (!m_picture) return;
-    const QPointF at = event->position();
-    const QPointF imagePoint = (at - origin()) / scale();
-    const double factor = std::pow(1.25, event->angleDelta().y() / 120.0);
-    m_zoom = std::clamp(m_zoom * factor, 0.25, 64.0);
-    m_pan += at - widgetPoint(imagePoint);  // keep the point under the mouse where it is
-    pictureChanged();
+    m_view.zoomAround(event->position(), std::pow(1.25, event->angleDelta().y() / 120.0), 0.25,
+                      64.0);
+    redraw();
 }
 
 void NormalsCanvas::mousePressEvent(QMouseEvent* event) {
-    m_pressAt = event->position();
-    m_panAtPress = m_pan;
-    m_dragged = false;
+    m_view.press(event->position());
 }
 
 void NormalsCanvas::mouseMoveEvent(QMouseEvent* event) {
-    if (!(event->buttons() & Qt::LeftButton)) return;
-    const QPointF moved = event->position() - m_pressAt;
-    if (!m_dragged && moved.manhattanLength() < 4.0) return;
-    m_dragged = true;
-    m_pan = m_panAtPress + moved;
-    pictureChanged();
+    if ((event->buttons() & Qt::LeftButton) && m_view.drag(event->position())) redraw();
 }
 
 void NormalsCanvas::mouseReleaseEvent(QMouseEvent* event) {
-    if (m_dragged || !m_picture || event->button() != Qt::LeftButton) return;
-    const QPointF p = (event->position() - origin()) / scale();
+    if (m_view.dragging() || !m_picture || event->button() != Qt::LeftButton) return;
+    const QPointF p = m_view.fromWidget(event->position());
     const QPoint pixel(static_cast<int>(std::floor(p.x())), static_cast<int>(std::floor(p.y())));
     if (pixel.x() >= 0 && pixel.y() >= 0 && pixel.x() < m_picture->screen.width() &&
         pixel.y() < m_picture->screen.height())
@@ -405,9 +372,8 @@ void NormalsCanvas::mouseReleaseEvent(QMouseEvent* event) {
 }
 
 void NormalsCanvas::mouseDoubleClickEvent(QMouseEvent*) {
-    m_zoom = 1.0;
-    m_pan = {};
-    pictureChanged();
+    m_view.fit();
+    redraw();
 }
 
 // ---------------------------------------------------------------------------------------
@@ -516,11 +482,9 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
         if (mapShown()) refreshMap();
         refreshExplanation();
     });
+    // A picked pixel selects its triangle: the explanation's pixel follows from here too.
     connect(m_inspection, &Inspection::selectionChanged, this, [this] {
         if (isVisible() && !m_geometryDirty) refreshSelection();
-    });
-    connect(m_inspection, &Inspection::pixelPicked, this, [this] {
-        if (isVisible() && !m_geometryDirty) refreshExplanation();
     });
     connect(m_inspection, &Inspection::presentationChanged, this, [this](bool on) {
         m_canvas->setLineWidth(m_inspection->lineWidth());
@@ -544,14 +508,6 @@ void NormalsView::showEvent(QShowEvent* event) {
 
 bool NormalsView::mapShown() const {
     return m_tabs->currentIndex() == 1;
-}
-
-bool NormalsView::triangleHairs() const {
-    return m_triangleHairs->isChecked();
-}
-
-bool NormalsView::vertexHairs() const {
-    return m_vertexHairs->isChecked();
 }
 
 void NormalsView::setTriangleHairs(bool on) {
@@ -590,8 +546,6 @@ QString NormalsView::explanationText() const {
 void NormalsView::refreshGeometry() {
     m_geometryDirty = false;
     m_picture = NormalsPicture{};
-    m_backFace.clear();
-    m_winding.clear();
     const auto& frame = m_inspection->frame();
     if (!frame || !frame->projection) {
         m_canvas->setPicture(&m_picture);
@@ -607,36 +561,30 @@ void NormalsView::refreshGeometry() {
     // Per draw: back faces and winding of every mesh triangle. What depends on the mesh alone
     // is kept from frame to frame while the mesh is the same (moving the camera keeps it).
     m_picture.viewWinding.assign(scene.draws.size(), 0);
-    std::vector<MeshFacts> facts;
+    std::vector<std::vector<std::uint8_t>> backFace(scene.draws.size());
+    std::vector<MeshFacts> facts(scene.draws.size());
     for (std::size_t d = 0; d < scene.draws.size(); ++d) {
         const rl::Draw& draw = scene.draws[d];
         const rl::DrawProjection& proj = projection.draws[d];
-        if (!draw.mesh) {
-            m_backFace.emplace_back();
-            m_winding.emplace_back();
-            continue;
-        }
+        if (!draw.mesh) continue;
         const auto known = std::find_if(m_meshFacts.begin(), m_meshFacts.end(),
                                         [&](const MeshFacts& f) { return f.mesh == draw.mesh; });
-        if (known != m_meshFacts.end()) {
-            facts.push_back(*known);
-        } else {
-            facts.push_back(
-                {draw.mesh, inconsistentWinding(*draw.mesh), rl::closedSurfaceWinding(*draw.mesh)});
-        }
-        m_backFace.push_back(backFaces(proj.pView, *draw.mesh));
-        m_winding.push_back(facts.back().winding);
-        const auto& back = m_backFace.back();
+        facts[d] = known != m_meshFacts.end()
+                       ? *known
+                       : MeshFacts{draw.mesh, inconsistentWinding(*draw.mesh),
+                                   rl::closedSurfaceWinding(*draw.mesh)};
+        backFace[d] = backFaces(proj.pView, *draw.mesh);
+        const auto& back = backFace[d];
         m_picture.meshTriangles += draw.mesh->triangles.size();
         m_picture.backFaces +=
             static_cast<std::size_t>(std::count(back.begin(), back.end(), std::uint8_t{1}));
-        m_picture.inconsistentEdges += m_winding.back().edges;
-        m_picture.inconsistentTriangles += m_winding.back().triangles;
+        m_picture.inconsistentEdges += facts[d].winding.edges;
+        m_picture.inconsistentTriangles += facts[d].winding.triangles;
         // A closed surface: do its normals point out of it in view space? The file's winding
         // (right-hand rule, outward +1) turned over by a mirroring view matrix (the course's
         // [U; V; N] always mirrors: det = -1).
         const double det = glm::determinant(rl::dmat3(frame->view->viewFromModel[d]));
-        m_picture.viewWinding[d] = facts.back().closed * (det > 0.0 ? 1 : (det < 0.0 ? -1 : 0));
+        m_picture.viewWinding[d] = facts[d].closed * (det > 0.0 ? 1 : (det < 0.0 ? -1 : 0));
         // Triangles the projection left out as hidden back faces (its own test, which knows
         // the surface's winding), counted where this view's test puts them.
         for (std::size_t t = 0; t < proj.fate.size(); ++t) {
@@ -664,9 +612,9 @@ void NormalsView::refreshGeometry() {
             t.p[static_cast<std::size_t>(k)] =
                 QPointF(proj.pScreen[tri.v[static_cast<std::size_t>(k)]].x,
                         proj.pScreen[tri.v[static_cast<std::size_t>(k)]].y);
-        if (m_winding[tri.draw].inconsistent[tri.source])
+        if (m_meshFacts[tri.draw].winding.inconsistent[tri.source])
             t.face = NormalsPicture::Face::Inconsistent;
-        else if (m_backFace[tri.draw][tri.source])
+        else if (backFace[tri.draw][tri.source])
             t.face = NormalsPicture::Face::Back;
         m_picture.triangles.push_back(t);
         for (const QPointF& q : t.p) {
@@ -698,7 +646,7 @@ void NormalsView::refreshGeometry() {
                 const rl::ScreenTriangle& tri = projection.triangles[row[x]];
                 visible[tri.draw][tri.source] = 1;
                 ++m_picture.coveredPixels;
-                m_picture.backFacePixels += m_backFace[tri.draw][tri.source];
+                m_picture.backFacePixels += backFace[tri.draw][tri.source];
             }
         }
     }
@@ -938,8 +886,9 @@ void NormalsView::refreshExplanation() {
         } else {
             html += tr("a degenerate triangle: no normal.</p>");
         }
-        if (tri.draw < m_winding.size() && m_winding[tri.draw].inconsistent.size() > tri.source &&
-            m_winding[tri.draw].inconsistent[tri.source])
+        if (tri.draw < m_meshFacts.size() &&
+            m_meshFacts[tri.draw].winding.inconsistent.size() > tri.source &&
+            m_meshFacts[tri.draw].winding.inconsistent[tri.source])
             html +=
                 tr("<p>It runs an edge in the same direction as a neighbour does: the two "
                    "are wound inconsistently (magenta), and one of their normals points "

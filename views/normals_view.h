@@ -23,6 +23,7 @@
 
 #include "depth_test.h"
 #include "frame_trace.h"
+#include "zoom_pan.h"
 
 class QCheckBox;
 class QLabel;
@@ -123,12 +124,11 @@ class NormalsCanvas : public QWidget {
     Q_OBJECT
 public:
     explicit NormalsCanvas(QWidget* parent = nullptr);
-    void setPicture(const NormalsPicture* picture);  // repaints; null for nothing
-    // The picture's contents changed: repaint (and fit again when its focus moved).
-    void pictureChanged();
+    // Repaints; null for nothing. Fitted again when the picture's focus moved (another mesh
+    // or framing); the same focus (a step, a selection) keeps the zoom.
+    void setPicture(const NormalsPicture* picture);
     void setLineWidth(double width);
     void setHairs(bool triangles, bool vertices);
-    QPointF widgetPoint(const QPointF& imagePoint) const;
     QSize sizeHint() const override { return {640, 480}; }
 
 signals:
@@ -144,19 +144,14 @@ protected:
     void mouseDoubleClickEvent(QMouseEvent* event) override;
 
 private:
-    double scale() const;  // widget pixels per image pixel
-    QPointF origin() const;
+    void redraw();  // the cached layer is out of date
     void paintCache();
 
     const NormalsPicture* m_picture = nullptr;
     double m_lineWidth = 1.5;
     bool m_triangleHairs = true, m_vertexHairs = false;
-    double m_zoom = 1.0;  // relative to fitting the image in the widget
-    QPointF m_pan;
-    QRectF m_focus;  // the picture's focus when the zoom was last fitted
-    QPointF m_pressAt, m_panAtPress;
-    bool m_dragged = false;
-    QImage m_cache;  // the wireframe and hairs at the current size, zoom and pan
+    ZoomPan m_view{this, 4.0};  // image pixels to widget; fits the picture's focus
+    QImage m_cache;             // the wireframe and hairs at the current size, zoom and pan
     bool m_cacheValid = false;
 };
 
@@ -173,8 +168,6 @@ public:
     // Hairs only on the triangles holding a pixel at the end of the frame (and their corners).
     void setOnlyVisibleHairs(bool on);
     bool onlyVisibleHairs() const;
-    bool triangleHairs() const;
-    bool vertexHairs() const;
     void showNormalMap(bool on);  // the normal-map tab, or the mesh
     QString legendText() const;
     QString explanationText() const;
@@ -207,10 +200,8 @@ private:
     QLabel* m_legend = nullptr;
     QLabel* m_pixelValue = nullptr;
     QTextBrowser* m_explanation = nullptr;
-    // Per draw: back faces and winding of its mesh triangles, for the explanation.
-    std::vector<std::vector<std::uint8_t>> m_backFace;
-    std::vector<WindingReport> m_winding;
-    // What depends on a mesh alone: its winding checks, kept while the frame uses the mesh.
+    // Per draw, what depends on its mesh alone: its winding checks, kept from frame to frame
+    // while the frame uses the mesh (no mesh: none).
     struct MeshFacts {
         std::shared_ptr<const rl::Mesh> mesh;
         WindingReport winding;

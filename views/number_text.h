@@ -1,6 +1,7 @@
-// How the stage views write numbers and vectors in their tables and explanations.
+// How the stage views write numbers, vectors and colour keys in their tables and explanations.
 #pragma once
 
+#include <QColor>
 #include <QLatin1Char>
 #include <QString>
 
@@ -37,6 +38,11 @@ QString vector(const V& v, char format = 'g', int precision = 6) {
         s += number(std::abs(c) < 1e-12 * largest ? 0.0 : c, precision, format);
     }
     return s + QLatin1Char(')');
+}
+
+// A square of a drawing's colour, for a legend written in HTML.
+inline QString swatch(const QColor& colour) {
+    return QStringLiteral("<span style=\"color:%1\">&#9632;</span>").arg(colour.name());
 }
 
 }  // namespace rasterlab

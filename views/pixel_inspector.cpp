@@ -18,6 +18,7 @@
 #include <cmath>
 
 #include "inspection.h"
+#include "number_text.h"
 #include "output_image.h"
 #include "renderer.h"
 #include "shading.h"
@@ -26,16 +27,15 @@ namespace rasterlab {
 
 namespace {
 
+// number(), with the depth buffer's clear value written "+inf" and a NaN depth "NaN".
 QString num(double v, int precision = 6) {
     if (std::isnan(v)) return QStringLiteral("NaN");
     if (std::isinf(v)) return v > 0 ? QStringLiteral("+inf") : QStringLiteral("-inf");
-    if (v == 0.0) v = 0.0;  // no "-0"
-    return QString::number(v, 'g', precision);
+    return number(v, precision);
 }
 
-QString vector3(const rl::vec3& v, int precision = 4) {
-    return QStringLiteral("(%1, %2, %3)")
-        .arg(num(v.x, precision), num(v.y, precision), num(v.z, precision));
+QString vector3(const rl::vec3& v) {
+    return vector(v, 'g', 4);
 }
 
 QString bytesText(const std::array<std::uint8_t, 4>& b) {
@@ -281,9 +281,6 @@ PixelInspector::PixelInspector(Inspection* inspection, QWidget* parent)
     m_verdictLabel->setObjectName(QStringLiteral("pixelVerdict"));
     m_verdictLabel->setWordWrap(true);
     m_verdictLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    QFont bold = m_verdictLabel->font();
-    bold.setBold(true);
-    m_verdictLabel->setFont(bold);
 
     m_table = new QTableWidget(0, 6, this);
     m_table->setObjectName(QStringLiteral("pixelHistory"));
@@ -306,7 +303,6 @@ PixelInspector::PixelInspector(Inspection* inspection, QWidget* parent)
     m_breakdownTitle = new QLabel(this);
     m_breakdownTitle->setObjectName(QStringLiteral("pixelBreakdownTitle"));
     m_breakdownTitle->setWordWrap(true);
-    m_breakdownTitle->setFont(bold);
     m_bars = new TermBars(this);
     m_bars->setObjectName(QStringLiteral("pixelTermBars"));
     m_vectors = new LightingVectors(this);
@@ -316,7 +312,6 @@ PixelInspector::PixelInspector(Inspection* inspection, QWidget* parent)
     m_formula->setTextFormat(Qt::PlainText);
     m_formula->setWordWrap(true);
     m_formula->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_formula->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     m_flags = new QLabel(this);
     m_flags->setObjectName(QStringLiteral("pixelFlags"));
     m_flags->setWordWrap(true);
@@ -346,6 +341,8 @@ PixelInspector::PixelInspector(Inspection* inspection, QWidget* parent)
     connect(m_table, &QTableWidget::currentCellChanged, this, [this](int row) {
         if (row >= 0 && row != m_selected) selectRow(row);
     });
+    applyPresentation();
+    fillTable();
 }
 
 void PixelInspector::showEvent(QShowEvent* event) {
@@ -355,15 +352,26 @@ void PixelInspector::showEvent(QShowEvent* event) {
 
 void PixelInspector::changeEvent(QEvent* event) {
     QWidget::changeEvent(event);
-    // A larger font (presentation mode): the table's height is worked out again once the
-    // header and the rows have taken it.
+    // Another font (presentation mode): the table's height is worked out again once the
+    // header has taken it.
     if (event->type() == QEvent::FontChange)
-        QMetaObject::invokeMethod(
-            this,
-            [this] {
-                if (isVisible()) fillTable();
-            },
-            Qt::QueuedConnection);
+        QMetaObject::invokeMethod(this, &PixelInspector::fitTableHeight, Qt::QueuedConnection);
+}
+
+void PixelInspector::applyPresentation() {
+    // Larger text when presenting, for the whole inspector.
+    m_presenting = m_inspection->presentation();
+    QFont base = QApplication::font(this);
+    if (m_presenting) base.setPointSizeF(base.pointSizeF() * 1.4);
+    setFont(base);
+    m_table->setFont(base);
+    QFont bold = base;
+    bold.setBold(true);
+    m_verdictLabel->setFont(bold);
+    m_breakdownTitle->setFont(bold);
+    QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    if (m_presenting) mono.setPointSizeF(mono.pointSizeF() * 1.4);
+    m_formula->setFont(mono);
 }
 
 void PixelInspector::refresh() {
@@ -371,8 +379,9 @@ void PixelInspector::refresh() {
     const QPoint picked = m_inspection->pickedPixel();
     const bool failed = !m_inspection->replayError().isEmpty();
     const std::shared_ptr<const rl::FrameReplay> replay = m_inspection->replayPtr();
-    if (frame != m_builtFrame.lock() || replay != m_builtReplay.lock() || picked != m_builtPixel ||
-        failed != m_builtWithoutReplay) {
+    const bool rebuild = frame != m_builtFrame.lock() || replay != m_builtReplay.lock() ||
+                         picked != m_builtPixel || failed != m_builtWithoutReplay;
+    if (rebuild) {
         m_builtFrame = frame;
         m_builtReplay = replay;
         m_builtPixel = picked;
@@ -381,9 +390,12 @@ void PixelInspector::refresh() {
         m_breakdown.reset();
         rebuildHistory();
     }
-    updateCursorMarks();
-    const int row = m_userSelected ? m_selected : defaultRow();
-    m_selected = row;
+    const bool marksMoved = updateCursorMarks();
+    const bool restyle = m_inspection->presentation() != m_presenting;
+    // Most steps do not reach this pixel's fragments: nothing to show again then.
+    if (!rebuild && !marksMoved && !restyle) return;
+    if (restyle) applyPresentation();
+    if (!m_userSelected) m_selected = defaultRow();
     updateBreakdown();
     fillTable();
 }
@@ -458,13 +470,8 @@ void PixelInspector::rebuildHistory() {
     // A fragment's row: its triangle, the depth test and its verdict.
     const auto fragmentRow = [&](std::uint32_t id, const rl::ReplayFragment& f) {
         PixelHistoryRow row;
+        static_cast<rl::ReplayFragment&>(row) = f;
         row.fragment = id;
-        row.triangle = f.triangle;
-        row.depth = f.depth;
-        row.stored = f.stored;
-        row.beta = f.beta;
-        row.gamma = f.gamma;
-        row.verdict = f.verdict;
         describeTriangle(row);
         describeTest(row);
         return row;
@@ -528,18 +535,17 @@ void PixelInspector::rebuildHistory() {
         }
         finalRow.after = finalBytes;
     }
-    finalRow.depth = frame->depth->depth.at(x, y);
+    const float finalDepth = frame->depth->depth.at(x, y);
     if (finalWriterRow > 0) {
-        finalRow.triangle = m_rows[finalWriterRow].triangle;
-        describeTriangle(finalRow);
+        static_cast<rl::ReplayFragment&>(finalRow) = m_rows[finalWriterRow];
         finalRow.fragment = m_rows[finalWriterRow].fragment;
-        finalRow.beta = m_rows[finalWriterRow].beta;
-        finalRow.gamma = m_rows[finalWriterRow].gamma;
-        finalRow.depthText = tr("depth %1").arg(num(finalRow.depth));
+        describeTriangle(finalRow);
+        finalRow.depthText = tr("depth %1").arg(num(finalDepth));
     } else {
         finalRow.triangleText = tr("none");
-        finalRow.depthText = tr("depth %1 (cleared)").arg(num(finalRow.depth));
+        finalRow.depthText = tr("depth %1 (cleared)").arg(num(finalDepth));
     }
+    finalRow.depth = finalDepth;
     m_rows.push_back(finalRow);
 
     // The verdict.
@@ -614,30 +620,31 @@ void PixelInspector::rebuildHistory() {
     m_verdict += QLatin1Char('.');
 }
 
-void PixelInspector::updateCursorMarks() {
-    if (m_rows.empty()) return;
+bool PixelInspector::updateCursorMarks() {
+    if (m_rows.empty()) return false;
     // Fragments [0, reached) have been tested at the cursor (all of them without a replay).
     const rl::FrameReplay* replay = m_inspection->replay();
     const std::uint32_t reached =
         replay && !m_traced ? m_inspection->cursor().fragments : rl::kNoFragment;
     std::size_t holder = 0;  // the row holding the pixel at the cursor: the initial one
+    bool moved = false;
     for (std::size_t i = 0; i < m_rows.size(); ++i) {
         PixelHistoryRow& row = m_rows[i];
-        row.atCursor = false;
-        switch (row.kind) {
-            case PixelHistoryRow::Kind::Initial:
-                row.reached = true;
-                break;
-            case PixelHistoryRow::Kind::Fragment:
-                row.reached = reached == rl::kNoFragment || row.fragment < reached;
-                if (row.reached && row.verdict == rl::FragmentVerdict::Written) holder = i;
-                break;
-            case PixelHistoryRow::Kind::Final:
-                row.reached = m_inspection->atEnd();
-                break;
+        bool isReached = true;  // the initial row
+        if (row.kind == PixelHistoryRow::Kind::Fragment) {
+            isReached = reached == rl::kNoFragment || row.fragment < reached;
+            if (isReached && row.verdict == rl::FragmentVerdict::Written) holder = i;
+        } else if (row.kind == PixelHistoryRow::Kind::Final) {
+            isReached = m_inspection->atEnd();
         }
+        moved = moved || row.reached != isReached;
+        row.reached = isReached;
     }
-    m_rows[holder].atCursor = true;
+    for (std::size_t i = 0; i < m_rows.size(); ++i) {
+        moved = moved || m_rows[i].atCursor != (i == holder);
+        m_rows[i].atCursor = i == holder;
+    }
+    return moved;
 }
 
 int PixelInspector::defaultRow() const {
@@ -886,20 +893,11 @@ void PixelInspector::updateBreakdown() {
 
 void PixelInspector::fillTable() {
     const QSignalBlocker block(m_table);
-    const bool presenting = m_inspection->presentation();
-    // Larger text when presenting, for the whole inspector.
-    QFont base = QApplication::font(this);
-    if (presenting) base.setPointSizeF(base.pointSizeF() * 1.4);
-    if (font() != base) setFont(base);
-    QFont bold = base;
+    QFont bold = m_table->font();
     bold.setBold(true);
-    m_verdictLabel->setFont(bold);
-    m_breakdownTitle->setFont(bold);
-    const QFont& tableFont = base;
-    m_table->setFont(tableFont);
     m_verdictLabel->setText(m_verdict);
     m_table->setRowCount(static_cast<int>(m_rows.size()));
-    const int swatchSize = presenting ? 20 : 12;
+    const int swatchSize = m_presenting ? 20 : 12;
     int number = 0;
     for (std::size_t i = 0; i < m_rows.size(); ++i) {
         const PixelHistoryRow& row = m_rows[i];
@@ -950,6 +948,11 @@ void PixelInspector::fillTable() {
     m_table->setIconSize(QSize(swatchSize, swatchSize));
     m_table->resizeColumnsToContents();
     m_table->resizeRowsToContents();
+    fitTableHeight();
+    showBreakdown();
+}
+
+void PixelInspector::fitTableHeight() {
     // Tall enough for every row, up to ten; beyond, it scrolls.
     int height = m_table->horizontalHeader()->height() + 2 * m_table->frameWidth();
     for (int r = 0; r < std::min(m_table->rowCount(), 10); ++r) height += m_table->rowHeight(r);
@@ -957,7 +960,6 @@ void PixelInspector::fillTable() {
         m_table->horizontalHeader()->length() > m_table->viewport()->width())
         height += m_table->horizontalScrollBar()->sizeHint().height();
     m_table->setFixedHeight(height);
-    showBreakdown();
 }
 
 void PixelInspector::showBreakdown() {
@@ -968,7 +970,6 @@ void PixelInspector::showBreakdown() {
         else
             m_table->clearSelection();
     }
-    const bool presenting = m_inspection->presentation();
     const double lineWidth = m_inspection->lineWidth();
     m_flags->clear();
     if (!m_breakdown) {
@@ -988,7 +989,6 @@ void PixelInspector::showBreakdown() {
                        "to see its lighting.");
         }
         m_breakdownTitle->setText(why);
-        m_bars->setBars({}, rl::vec3(0.0f), 255.0f, presenting);
         m_bars->setVisible(false);
         m_vectors->setVisible(false);
         m_formula->clear();
@@ -1025,7 +1025,7 @@ void PixelInspector::showBreakdown() {
             segments.push_back({tr("specular"), QColor(235, 235, 190), b.specular});
     }
     m_bars->setBars(std::move(segments), b.colour,
-                    m_inspection->frame()->scene->conventions.colourScale, presenting);
+                    m_inspection->frame()->scene->conventions.colourScale, m_presenting);
     m_bars->setVisible(true);
     const bool vectors =
         b.event.model != rl::ShadingModel::Gouraud && b.lighting != rl::LightingModel::Unlit;
@@ -1034,13 +1034,10 @@ void PixelInspector::showBreakdown() {
         m_vectors->setVectors(std::array<rl::vec3, 4>{s.n, s.l, s.v, s.r},
                               b.lighting == rl::LightingModel::CoursePhong ? QStringLiteral("R")
                                                                            : QStringLiteral("H"),
-                              lineWidth, presenting);
+                              lineWidth, m_presenting);
     }
     m_vectors->setVisible(vectors);
     m_formula->setText(formulaText());
-    QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
-    if (presenting) mono.setPointSizeF(mono.pointSizeF() * 1.4);
-    m_formula->setFont(mono);
     if (!b.flagTexts.isEmpty()) {
         QString html;
         for (const QString& text : b.flagTexts)

@@ -33,20 +33,20 @@ class Inspection;
 class TermBars;
 class LightingVectors;
 
-struct PixelHistoryRow {
+// A row of the history: a fragment's depth test as the replay keeps it (the base: its
+// triangle, depth, stored depth, barycentrics and verdict) and how the table writes it.
+// The final row holds the fragment that wrote the pixel last (if any), with the depth left in
+// the buffer; the initial row only the cleared depth.
+struct PixelHistoryRow : rl::ReplayFragment {
     enum class Kind : std::uint8_t { Initial, Fragment, Final };
     Kind kind = Kind::Fragment;
-    // Fragment rows: the fragment (FrameReplay::fragments(); its order in the traced frame's
-    // log without a replay) and its projected triangle. Final: the triangle holding the pixel.
+    // The fragment's number (FrameReplay::fragments(); its order in the traced frame's log
+    // without a replay), or kNoFragment.
     std::uint32_t fragment = rl::kNoFragment;
-    std::uint32_t triangle = rl::kNoTriangle;
     std::uint32_t meshTriangle = 0;  // the draw's triangle number, from 1 (0: none)
-    float depth = 0.0f, stored = 0.0f;
-    float beta = 0.0f, gamma = 0.0f;  // the fragment's screen barycentrics
-    rl::FragmentVerdict verdict = rl::FragmentVerdict::Rejected;
-    QString triangleText;  // "12", or "12 (calice2.byu)" with several draws
-    QString depthText;     // "0.5 < 1", "2 >= 1", "cleared to +inf"
-    QString resultText;    // "written", "rejected: farther", ...
+    QString triangleText;            // "12", or "12 (calice2.byu)" with several draws
+    QString depthText;               // "0.5 < 1", "2 >= 1", "cleared to +inf"
+    QString resultText;              // "written", "rejected: farther", ...
     // The colour before and after, as bytes; none where it is not known (without a replay,
     // the colours of the writes that were overwritten are not kept).
     std::optional<std::array<std::uint8_t, 4>> before, after;
@@ -112,20 +112,23 @@ protected:
 
 private:
     void refresh();
+    void applyPresentation();  // the fonts, larger when presenting
     void rebuildHistory();
-    void updateCursorMarks();
+    bool updateCursorMarks();  // true when a row's marks changed
     void updateBreakdown();
     void fillTable();
+    void fitTableHeight();
     void showBreakdown();
     int defaultRow() const;
 
     Inspection* m_inspection = nullptr;
-    // What the history was built from: rebuilt only when one of them changes, the cursor
-    // marks updated on every step.
+    // What the history was built from: rebuilt only when one of them changes. The cursor
+    // marks are worked out on every step; the table is filled again only when they move.
     std::weak_ptr<const rl::FrameTrace> m_builtFrame;
     std::weak_ptr<const rl::FrameReplay> m_builtReplay;
     QPoint m_builtPixel{-1, -1};
     bool m_builtWithoutReplay = false;  // built after the replay failed (traced)
+    bool m_presenting = false;          // the fonts and sizes are presentation mode's
 
     QPoint m_pixel{-1, -1};
     std::vector<PixelHistoryRow> m_rows;

@@ -117,10 +117,6 @@ QImage blankLayer(const QWidget& widget) {
     return layer;
 }
 
-QString swatch(const QColor& colour) {
-    return QStringLiteral("<span style=\"color:%1\">&#9632;</span>").arg(colour.name());
-}
-
 // The widget-space lines of a batch: transformed, clipped to the widget (with a margin) and
 // drawn in one call.
 void drawBatch(QPainter& painter, const QVector<QLineF>& lines, const QRectF& bounds,
@@ -161,6 +157,7 @@ ProjectionCanvas::ProjectionCanvas(QWidget* parent) : QWidget(parent) {
     setToolTip(
         tr("Click a triangle to select it; wheel to zoom, drag to pan, double-click to "
            "fit."));
+    fit();
 }
 
 void ProjectionCanvas::setFrame(std::shared_ptr<const rl::FrameTrace> frame,
@@ -170,8 +167,7 @@ void ProjectionCanvas::setFrame(std::shared_ptr<const rl::FrameTrace> frame,
     m_frame = std::move(frame);
     m_space = space;
     buildLines();
-    if (sizeChanged) m_fitted = true;
-    if (m_fitted) fit();
+    if (sizeChanged) fit();
     m_layerValid = false;
     update();
 }
@@ -213,11 +209,11 @@ QPointF ProjectionCanvas::spaceFromLayout(const QPointF& l) const {
 }
 
 QPointF ProjectionCanvas::toWidget(const QPointF& spacePoint) const {
-    return layoutPoint(spacePoint) * m_scale + m_offset;
+    return m_view.toWidget(layoutPoint(spacePoint));
 }
 
 QPointF ProjectionCanvas::fromWidget(const QPointF& widgetPoint) const {
-    return spaceFromLayout((widgetPoint - m_offset) / m_scale);
+    return spaceFromLayout(m_view.fromWidget(widgetPoint));
 }
 
 QPointF ProjectionCanvas::widgetCentroid(std::uint32_t triangle) const {
@@ -298,13 +294,10 @@ void ProjectionCanvas::buildLines() {
 }
 
 void ProjectionCanvas::fit() {
-    m_fitted = true;
     const double w = m_frame ? m_frame->scene->width : 800.0;
     const double h = m_frame ? m_frame->scene->height : 600.0;
-    // The image and a margin of a quarter of it on every side, where clipped and culled
-    // triangles that fall outside the window still show.
-    m_scale = std::max(1e-9, std::min(width() / (1.5 * w), height() / (1.5 * h)));
-    m_offset = QPointF(width() / 2.0, height() / 2.0) - QPointF(w / 2.0, h / 2.0) * m_scale;
+    m_view.setContent(QRectF(-0.25 * w, -0.25 * h, 1.5 * w, 1.5 * h));
+    m_view.fit();
     m_layerValid = false;
     update();
 }
@@ -315,7 +308,9 @@ void ProjectionCanvas::paintLayer() {
     if (!m_frame || !m_frame->projection) return;
     QPainter painter(&m_layer);
     const rl::Scene& scene = *m_frame->scene;
-    const QRectF window(m_offset, QSizeF(scene.width * m_scale, scene.height * m_scale));
+    const double scale = m_view.scale();
+    const QPointF offset = m_view.offset();
+    const QRectF window(offset, QSizeF(scene.width * scale, scene.height * scale));
     painter.fillRect(window, kWindowFill);
 
     // NDC's axes, faint, through the window's centre.
@@ -328,7 +323,7 @@ void ProjectionCanvas::paintLayer() {
     }
 
     const QRectF bounds = QRectF(rect()).adjusted(-8, -8, 8, 8);
-    const auto map = [this](const QPointF& l) { return l * m_scale + m_offset; };
+    const auto map = [scale, offset](const QPointF& l) { return l * scale + offset; };
     const double w = std::max(1.0, m_lineWidth - 0.5);
     const QColor colours[GroupCount] = {kHiddenColour, kDrawnColour, kClippedColour};
     for (int g = 0; g < GroupCount; ++g) {
@@ -396,22 +391,17 @@ void ProjectionCanvas::paintEvent(QPaintEvent*) {
 }
 
 void ProjectionCanvas::resizeEvent(QResizeEvent*) {
-    if (m_fitted) {
-        fit();
-    } else {
-        m_layerValid = false;
-    }
+    // Fitted, the view follows the widget's size; zoomed or panned, the wireframe stays put.
+    if (!m_view.fitted()) m_view.keepPlace();
+    m_layerValid = false;
 }
 
 void ProjectionCanvas::wheelEvent(QWheelEvent* event) {
     const double steps = event->angleDelta().y() / 120.0;
     if (steps == 0.0) return;
-    // Zoom around the mouse: the layout point under it stays.
-    const QPointF at = event->position();
-    const QPointF layout = (at - m_offset) / m_scale;
-    m_scale = std::clamp(m_scale * std::pow(1.25, steps), 1e-9, 1e9);
-    m_offset = at - layout * m_scale;
-    m_fitted = false;
+    // Zoom around the mouse, to between 1e-9 and 1e9 widget pixels per layout unit.
+    const double fit = m_view.fitScale();
+    m_view.zoomAround(event->position(), std::pow(1.25, steps), 1e-9 / fit, 1e9 / fit);
     m_layerValid = false;
     update();
 }
@@ -419,18 +409,11 @@ void ProjectionCanvas::wheelEvent(QWheelEvent* event) {
 void ProjectionCanvas::mousePressEvent(QMouseEvent* event) {
     if (event->button() != Qt::LeftButton) return;
     m_pressed = true;
-    m_dragging = false;
-    m_pressAt = event->position().toPoint();
-    m_offsetAtPress = m_offset;
+    m_view.press(event->position());
 }
 
 void ProjectionCanvas::mouseMoveEvent(QMouseEvent* event) {
-    if (!m_pressed) return;
-    const QPoint d = event->position().toPoint() - m_pressAt;
-    if (!m_dragging && d.manhattanLength() < 4) return;  // a click, not yet a drag
-    m_dragging = true;
-    m_offset = m_offsetAtPress + QPointF(d);
-    m_fitted = false;
+    if (!m_pressed || !m_view.drag(event->position())) return;
     m_layerValid = false;
     update();
 }
@@ -438,8 +421,7 @@ void ProjectionCanvas::mouseMoveEvent(QMouseEvent* event) {
 void ProjectionCanvas::mouseReleaseEvent(QMouseEvent* event) {
     if (event->button() != Qt::LeftButton || !m_pressed) return;
     m_pressed = false;
-    if (!m_dragging && m_frame) emit triangleClicked(triangleAt(event->position()));
-    m_dragging = false;
+    if (!m_view.dragging() && m_frame) emit triangleClicked(triangleAt(event->position()));
 }
 
 void ProjectionCanvas::mouseDoubleClickEvent(QMouseEvent*) {
@@ -730,11 +712,13 @@ ProjectionView::ProjectionView(Inspection* inspection, QWidget* parent)
             m_dirty = true;
             refresh();
         });
-        const auto selection = [this] {
+        connect(m_inspection, &Inspection::selectionChanged, this, [this] {
             if (isVisible() && !m_dirty) refreshSelection();
-        };
-        connect(m_inspection, &Inspection::selectionChanged, this, selection);
-        connect(m_inspection, &Inspection::cursorChanged, this, selection);
+        });
+        // A step moves the triangle being drawn, not the selection the text explains.
+        connect(m_inspection, &Inspection::cursorChanged, this, [this] {
+            if (isVisible() && !m_dirty) refreshHighlights();
+        });
         connect(m_inspection, &Inspection::presentationChanged, this,
                 &ProjectionView::applyPresentation);
     }
@@ -842,13 +826,19 @@ void ProjectionView::refresh() {
     refreshSelection();
 }
 
-void ProjectionView::refreshSelection() {
+void ProjectionView::refreshHighlights() {
     const std::optional<std::uint32_t> selected =
         m_inspection && m_frame ? m_inspection->selectedTriangle() : std::nullopt;
     const std::optional<std::uint32_t> current =
         m_inspection && m_frame ? m_inspection->currentTriangle() : std::nullopt;
     m_canvas->setHighlights(current, selected);
     m_side->setSelected(selected);
+}
+
+void ProjectionView::refreshSelection() {
+    refreshHighlights();
+    const std::optional<std::uint32_t> selected =
+        m_inspection && m_frame ? m_inspection->selectedTriangle() : std::nullopt;
 
     QString html =
         tr("<p><b>Projection.</b> Every vertex goes to clip space, pClip = "

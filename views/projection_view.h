@@ -20,6 +20,7 @@
 
 #include "frame_trace.h"
 #include "projection.h"
+#include "zoom_pan.h"
 
 class QLabel;
 class QSplitter;
@@ -108,15 +109,13 @@ private:
     std::array<std::size_t, GroupCount> m_triangles{};
     std::optional<std::uint32_t> m_current, m_selected;
     double m_lineWidth = 1.5;
-    // Layout to widget: widget = layout * m_scale + m_offset.
-    double m_scale = 1.0;
-    QPointF m_offset;
-    bool m_fitted = true;  // follow the widget's size until the user zooms or pans
-    QImage m_layer;        // the cached wireframe
+    // Layout to widget. It fits the image and a margin of a quarter of it on every side, where
+    // clipped and culled triangles that fall outside the window still show; it follows the
+    // widget's size until the user zooms or pans.
+    ZoomPan m_view{this, 0.0};
+    QImage m_layer;  // the cached wireframe
     bool m_layerValid = false;
-    QPoint m_pressAt;
-    QPointF m_offsetAtPress;
-    bool m_pressed = false, m_dragging = false;
+    bool m_pressed = false;
 };
 
 // View space from the side: view z (the clip w) to the right, y up, the camera at the origin,
@@ -158,7 +157,6 @@ class ProjectionView : public QWidget {
 public:
     explicit ProjectionView(Inspection* inspection, QWidget* parent = nullptr);
 
-    ProjectionSpace space() const { return m_space; }
     void setSpace(ProjectionSpace space);
 
     // The fates counted from the frame shown.
@@ -175,7 +173,8 @@ protected:
 
 private:
     void refresh();
-    void refreshSelection();
+    void refreshSelection();   // the highlights and the explanation
+    void refreshHighlights();  // the triangles selected and being drawn
     void applyPresentation();
     QString vertexExplanation(std::uint32_t triangle) const;
 

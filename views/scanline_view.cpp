@@ -14,24 +14,17 @@
 
 #include "depth_test.h"
 #include "inspection.h"
+#include "number_text.h"
 #include "shading.h"
 
 namespace rasterlab {
 
 namespace {
 
+// number(), with infinities written "+inf" and "-inf".
 QString num(double v, int precision = 6) {
     if (std::isinf(v)) return v > 0 ? QStringLiteral("+inf") : QStringLiteral("-inf");
-    if (v == 0.0) v = 0.0;  // no "-0"
-    return QString::number(v, 'g', precision);
-}
-
-QString point(const rl::dvec2& p) {
-    return QStringLiteral("(%1, %2)").arg(num(p.x), num(p.y));
-}
-
-QString vector3(const rl::vec3& v) {
-    return QStringLiteral("(%1, %2, %3)").arg(num(v.x, 4), num(v.y, 4), num(v.z, 4));
+    return number(v, precision);
 }
 
 // The fewest rows and columns drawn (when the screen has them), and the smallest pixel
@@ -343,12 +336,11 @@ void ScanlineCanvas::paintEvent(QPaintEvent*) {
         const double v = m.row->y + m_offset;
         painter.setPen(QPen(kSpanColour, m_lineWidth, Qt::DashLine));
         painter.drawLine(at(u0, v), at(u0 + cols, v));
-        const ScanEdgeEntry& longEdge = m.edges[0];
-        const ScanEdgeEntry& shortEdge = m.edges[m.row->upperPart ? 1 : 2];
-        const QColor leftColour =
-            longEdge.onLeft ? kLongColour : edgeColours[m.row->upperPart ? 1 : 2];
-        const QColor rightColour =
-            shortEdge.onLeft ? kLongColour : edgeColours[m.row->upperPart ? 1 : 2];
+        // The long edge bounds the span on one side, the short edge of this row on the other.
+        const QColor shortColour = edgeColours[m.row->upperPart ? 1 : 2];
+        const bool longOnLeft = m.edges[0].onLeft;
+        const QColor leftColour = longOnLeft ? kLongColour : shortColour;
+        const QColor rightColour = longOnLeft ? shortColour : kLongColour;
         const double d = m_lineWidth * 2.6;
         for (const auto& [x, colour] :
              {std::pair{m.row->xLeft, leftColour}, std::pair{m.row->xRight, rightColour}}) {
@@ -364,29 +356,23 @@ void ScanlineCanvas::paintEvent(QPaintEvent*) {
         painter.setPen(Qt::white);
         const QString leftText = QStringLiteral("x_left %1").arg(num(m.row->xLeft, 4));
         const QString rightText = QStringLiteral("x_right %1").arg(num(m.row->xRight, 4));
-        const double textY = at(0, v).y() - d - 3;
+        const double above = at(0, v).y() - d - 3;
         const double leftX = std::clamp(
             at(m.row->xLeft, v).x() - metrics.horizontalAdvance(leftText) - d, gridRect.left() + 2,
             gridRect.right() - metrics.horizontalAdvance(leftText) - 2);
         const double rightX =
             std::clamp(at(m.row->xRight, v).x() + d, gridRect.left() + 2,
                        gridRect.right() - metrics.horizontalAdvance(rightText) - 2);
-        const auto label = [&](double x, const QString& text) {
-            const QRectF box(x - 2, textY - metrics.ascent() - 1,
-                             metrics.horizontalAdvance(text) + 4, metrics.height() + 2);
+        const auto label = [&](double x, double y, const QString& text) {
+            const QRectF box(x - 2, y - metrics.ascent() - 1, metrics.horizontalAdvance(text) + 4,
+                             metrics.height() + 2);
             painter.fillRect(box, QColor(0, 0, 0, 170));
-            painter.drawText(QPointF(x, textY), text);
+            painter.drawText(QPointF(x, y), text);
         };
-        label(leftX, leftText);
-        if (rightX > leftX + metrics.horizontalAdvance(leftText) + 4) {
-            label(rightX, rightText);
-        } else {  // too close: below the line
-            const double below = at(0, v).y() + d + metrics.ascent() + 3;
-            const QRectF box(rightX - 2, below - metrics.ascent() - 1,
-                             metrics.horizontalAdvance(rightText) + 4, metrics.height() + 2);
-            painter.fillRect(box, QColor(0, 0, 0, 170));
-            painter.drawText(QPointF(rightX, below), rightText);
-        }
+        label(leftX, above, leftText);
+        // Too close to the left one: below the line.
+        const bool fits = rightX > leftX + metrics.horizontalAdvance(leftText) + 4;
+        label(rightX, fits ? above : at(0, v).y() + d + metrics.ascent() + 3, rightText);
     }
     painter.restore();
 
@@ -540,7 +526,13 @@ void ScanlineView::refresh() {
     }
     if (!m_model) m_canvas->setContent(std::nullopt, QRect(), 0.0, {}, {}, 1.5, false);
     m_title->setText(titleText());
-    m_text->setHtml(explanationHtml());
+    // Set only when it changed: a step or a signal that leaves it as it was (a new frame
+    // brings several) costs no layout, and the reader's scroll position stays.
+    QString html = explanationHtml();
+    if (html != m_html) {
+        m_html = std::move(html);
+        m_text->setHtml(m_html);
+    }
 }
 
 QString ScanlineView::titleText() const {
@@ -590,7 +582,7 @@ QString ScanlineView::explanationHtml() const {
     html += QStringLiteral("<p>") +
             tr("Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the "
                "top to the bottom; the two short edges meet at the middle vertex.")
-                .arg(point(s.sorted[0]), point(s.sorted[1]), point(s.sorted[2]));
+                .arg(vector(s.sorted[0]), vector(s.sorted[1]), vector(s.sorted[2]));
     if (s.degenerate()) {
         html += QLatin1Char(' ') +
                 tr("Its area on the screen is zero: it has no inside and is not scanned.") +
@@ -620,7 +612,7 @@ QString ScanlineView::explanationHtml() const {
     html += QStringLiteral("</tr>");
     // Non-breaking spaces: a point is not cut across two lines.
     const auto unbroken = [](const rl::dvec2& p) {
-        return point(p).replace(QLatin1Char(' '), QStringLiteral("&nbsp;"));
+        return vector(p).replace(QLatin1Char(' '), QStringLiteral("&nbsp;"));
     };
     html += tableRow(tr("from"), [&](const ScanEdgeEntry& e) { return unbroken(e.top); });
     html += tableRow(tr("to"), [&](const ScanEdgeEntry& e) { return unbroken(e.bottom); });
@@ -734,14 +726,12 @@ QString ScanlineView::explanationHtml() const {
             rules.interpolation == rl::RasterRules::Interpolation::PerspectiveCorrect &&
             scene.conventions.depth == rl::DepthSource::ViewZ;
         const float z1 = draw.depth[tri.v[0]], z2 = draw.depth[tri.v[1]], z3 = draw.depth[tri.v[2]];
+        const std::array<rl::dvec2, 3> p = rl::screenVertices(*frame.projection, tri);
         html += QStringLiteral("<p>") +
                 tr("At the ends of the span, the barycentrics (&alpha;, &beta;, &gamma;) of the "
                    "sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the "
                    "depth, from the vertices' z1 = %4, z2 = %5, z3 = %6:")
-                    .arg(point(rl::screenVertices(*frame.projection, tri)[0]),
-                         point(rl::screenVertices(*frame.projection, tri)[1]),
-                         point(rl::screenVertices(*frame.projection, tri)[2]), num(z1), num(z2),
-                         num(z3));
+                    .arg(vector(p[0]), vector(p[1]), vector(p[2]), num(z1), num(z2), num(z3));
         html += QStringLiteral("<br><i>") +
                 (perspective ? tr("1/z = 1/z1 + &beta; (1/z2 &minus; 1/z1) + &gamma; (1/z3 &minus; "
                                   "1/z1) (perspective-correct: 1/z is linear on the screen)")
@@ -759,7 +749,7 @@ QString ScanlineView::explanationHtml() const {
             const QString which = QStringLiteral("(%1, %2)").arg(e->x).arg(e->y);
             const QString normal = !e->hasNormal ? tr("not computed (nothing is lit)")
                                    : e->normal == rl::vec3(0.0f) ? tr("zero")
-                                                                 : vector3(e->normal);
+                                                                 : vector(e->normal, 'g', 4);
             html += QStringLiteral(
                         "<tr><th>%1</th><td nowrap>%2, %3, %4</td><td><b>%5</b></td>"
                         "<td nowrap>%6</td></tr>")

@@ -106,6 +106,7 @@ private:
     QLabel* m_title = nullptr;
     ScanlineCanvas* m_canvas = nullptr;
     QTextBrowser* m_text = nullptr;
+    QString m_html;  // what m_text shows
 };
 
 }  // namespace rasterlab

@@ -5,6 +5,8 @@
 #include <QLabel>
 #include <QToolButton>
 
+#include <algorithm>
+
 namespace rasterlab {
 
 StageStrip::StageStrip(Inspection* inspection, QWidget* parent)
@@ -39,9 +41,10 @@ StageStrip::StageStrip(Inspection* inspection, QWidget* parent)
     layout->addWidget(m_note, 1);
     connect(inspection, &Inspection::frameChanged, this, &StageStrip::refresh);
     connect(inspection, &Inspection::stageChanged, this, &StageStrip::refresh);
-    connect(inspection, &Inspection::cursorChanged, this, &StageStrip::refresh);
-    connect(inspection, &Inspection::granularityChanged, this, &StageStrip::refresh);
     connect(inspection, &Inspection::presentationChanged, this, &StageStrip::refresh);
+    // A step changes only the note.
+    connect(inspection, &Inspection::cursorChanged, this, &StageStrip::updateNote);
+    connect(inspection, &Inspection::granularityChanged, this, &StageStrip::updateNote);
     refresh();
 }
 
@@ -76,11 +79,11 @@ QString StageStrip::skipReason(const rl::FrameTrace& frame, rl::StageId stage) {
                 return tr("nothing is lit: no light reads a normal");
             break;
         case rl::StageId::Shading: {
-            bool lit = frame.scene->lit();
-            bool anyLitDraw = false;
-            for (const rl::Draw& draw : frame.scene->draws)
-                anyLitDraw = anyLitDraw || draw.lighting != rl::LightingModel::Unlit;
-            if (!lit || !anyLitDraw)
+            const auto& draws = frame.scene->draws;
+            const bool anyLitDraw = std::any_of(draws.begin(), draws.end(), [](const rl::Draw& d) {
+                return d.lighting != rl::LightingModel::Unlit;
+            });
+            if (!frame.scene->lit() || !anyLitDraw)
                 return tr("nothing is lit: each pixel takes its object's own colour");
             break;
         }
@@ -113,10 +116,14 @@ void StageStrip::refresh() {
         button->setPalette(p);
         button->setChecked(stage == m_inspection->stage());
     }
+    m_note->setFont(font);
+    updateNote();
+}
+
+void StageStrip::updateNote() {
     const bool midFrame = m_inspection->canStep() && !m_inspection->atStart() &&
                           !m_inspection->atEnd() &&
                           m_inspection->granularity() != rl::StepGranularity::Stage;
-    m_note->setFont(font);
     m_note->setText(midFrame ? tr("while stepping, stages 5-7 run together, fragment by fragment")
                              : QString());
 }

@@ -32,6 +32,7 @@ public:
 
 private:
     void refresh();
+    void updateNote();  // the note beside the strip, which follows the cursor
 
     Inspection* m_inspection;
     std::array<QToolButton*, rl::kStageCount> m_buttons{};

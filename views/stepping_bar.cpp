@@ -198,10 +198,6 @@ SteppingBar::SteppingBar(Inspection* inspection, QWidget* parent)
     refresh();
 }
 
-int SteppingBar::speed() const {
-    return m_speed->value();
-}
-
 void SteppingBar::setSpeed(int stepsPerSecond) {
     m_speed->setValue(stepsPerSecond);
 }

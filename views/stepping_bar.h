@@ -34,10 +34,8 @@ public:
 
     bool isPlaying() const { return m_timer.isActive(); }
     void setPlaying(bool playing);
-    int speed() const;  // steps a second
-    void setSpeed(int stepsPerSecond);
+    void setSpeed(int stepsPerSecond);  // how many steps a second Play makes
     QSlider* timeline() const { return m_timeline; }
-    QComboBox* granularityBox() const { return m_granularity; }
     QLabel* positionLabel() const { return m_position; }
 
     static QString granularityName(rl::StepGranularity granularity);

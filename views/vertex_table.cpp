@@ -33,7 +33,6 @@ public:
         m_rows = std::move(rows);
         invalidateFilter();
     }
-    bool filtering() const { return m_rows.has_value(); }
 
 protected:
     bool filterAcceptsRow(int row, const QModelIndex&) const override {
@@ -332,10 +331,6 @@ void VertexTableView::fitColumns() {
 
 int VertexTableView::visibleRowCount() const {
     return m_proxy->rowCount();
-}
-
-bool VertexTableView::onlySelectedTriangle() const {
-    return m_onlyTriangle->isChecked();
 }
 
 void VertexTableView::setOnlySelectedTriangle(bool on) {

@@ -71,7 +71,6 @@ public:
     // The rows shown: all, or only those of the selected triangle.
     int visibleRowCount() const;
     void setOnlySelectedTriangle(bool on);
-    bool onlySelectedTriangle() const;
     // The vertex explained below the table, and the explanation as plain text.
     std::optional<VertexRef> explainedVertex() const { return m_explained; }
     QString explanationText() const;

@@ -214,7 +214,7 @@ void ZBufferView::setFrame(std::shared_ptr<const rl::FrameTrace> frame) {
     m_buffers = nullptr;
     m_tested = m_frame && m_frame->depth ? m_frame->depth->fragments : 0;
     m_written = m_frame && m_frame->depth ? m_frame->depth->passed : 0;
-    refresh();
+    refreshWhenShown();
 }
 
 void ZBufferView::setBuffers(const rl::DepthTest* buffers, std::size_t tested,
@@ -222,11 +222,14 @@ void ZBufferView::setBuffers(const rl::DepthTest* buffers, std::size_t tested,
     m_buffers = buffers;
     m_tested = tested;
     m_written = written;
-    if (!isVisible()) {
+    refreshWhenShown();
+}
+
+void ZBufferView::refreshWhenShown() {
+    if (isVisible())
+        refresh();
+    else
         m_stale = true;
-        return;
-    }
-    refresh();
 }
 
 void ZBufferView::showEvent(QShowEvent* event) {
@@ -248,11 +251,20 @@ QString ZBufferView::explanation() const {
                                           : QStringLiteral("z &lt; z<sub>stored</sub>");
     const QString what =
         c.depth == rl::DepthSource::ViewZ ? tr("the view-space z of P'") : tr("the NDC z");
-    return tr("<b>Z-buffer.</b> Every pixel starts at %1. Each fragment's depth "
-              "z = &alpha;z<sub>1</sub> + &beta;z<sub>2</sub> + &gamma;z<sub>3</sub> (%2) is "
-              "compared with the stored one; it is written, with its colour, only when %3. "
-              "So far: %4 fragments tested, %5 written, %6 rejected.")
-        .arg(clear, what, test)
+    // View z under perspective-correct rules is interpolated as 1/z (depth_test.cpp).
+    const bool reciprocal =
+        m_frame->scene->rules.interpolation == rl::RasterRules::Interpolation::PerspectiveCorrect &&
+        c.depth == rl::DepthSource::ViewZ;
+    const QString formula =
+        reciprocal ? QStringLiteral(
+                         "1/z = &alpha;/z<sub>1</sub> + &beta;/z<sub>2</sub> + "
+                         "&gamma;/z<sub>3</sub>")
+                   : QStringLiteral(
+                         "z = &alpha;z<sub>1</sub> + &beta;z<sub>2</sub> + &gamma;z<sub>3</sub>");
+    return tr("<b>Z-buffer.</b> Every pixel starts at %1. Each fragment's depth %2 (%3) is "
+              "compared with the stored one; it is written, with its colour, only when %4. "
+              "So far: %5 fragments tested, %6 written, %7 rejected.")
+        .arg(clear, formula, what, test)
         .arg(m_tested)
         .arg(m_written)
         .arg(m_tested - std::min(m_tested, m_written));

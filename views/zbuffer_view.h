@@ -70,10 +70,10 @@ class ZBufferView : public QWidget {
 public:
     explicit ZBufferView(QWidget* parent = nullptr);
 
+    // The frame, and the buffers at the stepping cursor (they must live until the next
+    // setBuffers or setFrame), or null for the frame's own; `tested` and `written` fragments so
+    // far. While the view is hidden the image waits until it is shown.
     void setFrame(std::shared_ptr<const rl::FrameTrace> frame);
-    // The buffers at the stepping cursor (they must live until the next call), or null for the
-    // frame's own; `tested` and `written` fragments so far. While the view is hidden the
-    // image waits until it is shown.
     void setBuffers(const rl::DepthTest* buffers, std::size_t tested, std::size_t written);
     QString explanation() const;
     void setAutomaticRange(bool automatic);
@@ -94,6 +94,7 @@ protected:
 
 private:
     void refresh();
+    void refreshWhenShown();
     void showValue(QPoint pixel);
     const rl::DepthTest* shown() const;
 
