@@ -2,43 +2,14 @@
 // or folder given on the command line.
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QLibraryInfo>
-#include <QLocale>
-#include <QPointer>
 #include <QSettings>
-#include <QTranslator>
 
 #include <functional>
 #include <memory>
 
 #include "frame_memory.h"
 #include "main_window.h"
-
-namespace {
-
-// Our strings and Qt's own (its dialogs) in one language: "" for the system's, "en" or
-// "pt_BR". Installed again when the user picks another language from the View menu.
-class Translators {
-public:
-    void install(const QString& language) {
-        QCoreApplication::removeTranslator(&m_qt);
-        QCoreApplication::removeTranslator(&m_ours);
-        const QLocale locale = language.isEmpty() ? QLocale() : QLocale(language);
-        QLocale::setDefault(locale);
-        if (m_qt.load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
-                      QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-            QCoreApplication::installTranslator(&m_qt);
-        if (m_ours.load(locale, QStringLiteral("rasterlab"), QStringLiteral("_"),
-                        QStringLiteral(":/i18n")))
-            QCoreApplication::installTranslator(&m_ours);
-    }
-
-private:
-    QTranslator m_qt;
-    QTranslator m_ours;
-};
-
-}  // namespace
+#include "translators.h"
 
 int main(int argc, char* argv[]) {
     rl::keepFrameMemory();
@@ -57,7 +28,7 @@ int main(int argc, char* argv[]) {
         QStringLiteral("Course camera, lighting or object files, command files, or a folder."));
     parser.process(app);
 
-    Translators translators;
+    rasterlab::Translators translators;
     translators.install(QSettings().value(QStringLiteral("language")).toString());
 
     // A new language builds the window again (every string is set when a widget is made); the

@@ -748,6 +748,10 @@ void MainWindow::requestRender() {
     m_controller->request(scene);
 }
 
+bool MainWindow::isReadyToStep() const {
+    return m_inspection->canStep() && !m_controller->isBusy() && !m_replayBuilder->isBusy();
+}
+
 void MainWindow::updateTimeLabel() {
     // The last frame's time, and whether a newer frame is still on its way.
     QString text;
@@ -794,7 +798,7 @@ void MainWindow::onCursorChanged() {
     m_view->setImage(m_inspection->image());
     if (const rl::FrameReplay* replay = m_inspection->replay()) {
         const std::uint32_t tested = m_inspection->cursor().fragments;
-        m_zbuffer->setBuffers(m_inspection->buffers(), tested, replay->writtenBefore(tested));
+        m_zbuffer->setBuffers(m_inspection->sharedBuffers(), tested, replay->writtenBefore(tested));
     }
     updateOverlay();
 }
@@ -822,10 +826,12 @@ void MainWindow::updateOverlay() {
         o.spanBegin = row->xBegin;
         o.spanEnd = row->xEnd;
         o.crossings = std::make_pair(row->xLeft, row->xRight);
-        // The current triangle's pixels tested so far (a bounded number).
+        // The current triangle's pixels tested so far: the last 40,000 at most, nearest the
+        // cursor.
         const std::uint32_t end = m_inspection->cursor().fragments;
         const std::uint32_t first = replay->rows()[replay->firstRow(row->triangle)].fragmentBegin;
-        for (std::uint32_t i = first; i < end && o.coveredPixels.size() < 40000; ++i)
+        const std::uint32_t from = end - std::min<std::uint32_t>(end - first, 40000);
+        for (std::uint32_t i = from; i < end; ++i)
             o.coveredPixels.emplace_back(replay->fragments()[i].x, replay->fragments()[i].y);
         if (const std::optional<std::uint32_t> f = m_inspection->currentFragment())
             o.currentPixel = QPoint(replay->fragments()[*f].x, replay->fragments()[*f].y);

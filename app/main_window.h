@@ -90,6 +90,8 @@ public:
     RenderController* controller() const { return m_controller; }
     ReplayBuilder* replayBuilder() const { return m_replayBuilder; }
     Inspection* inspection() const { return m_inspection; }
+    // The newest frame is shown and its replay built: nothing is on its way.
+    bool isReadyToStep() const;
     AccuracyPanel* accuracyPanel() const { return m_accuracy; }
     ZBufferView* zbufferView() const { return m_zbuffer; }
     StageStrip* stageStrip() const { return m_stageStrip; }

@@ -23,12 +23,6 @@ std::size_t DepthTest::coveredPixels() const {
 
 namespace {
 
-// View z under perspective-correct rules is interpolated as 1/z (NDC z already is linear).
-bool perspectiveDepth(const Scene& scene) {
-    return scene.rules.interpolation == RasterRules::Interpolation::PerspectiveCorrect &&
-           scene.conventions.depth == DepthSource::ViewZ;
-}
-
 struct Counts {
     std::size_t fragments = 0, passed = 0, outsideDepthRange = 0;
 };
@@ -368,6 +362,11 @@ Counts testChunks(const Scene& scene, const Projection& projection, const ScanCo
 }
 
 }  // namespace
+
+bool perspectiveDepth(const Scene& scene) {
+    return scene.rules.interpolation == RasterRules::Interpolation::PerspectiveCorrect &&
+           scene.conventions.depth == DepthSource::ViewZ;
+}
 
 FragmentDepth fragmentDepth(const Scene& scene, const Projection& projection, std::uint32_t t,
                             std::int32_t y, std::int32_t xBegin, std::int32_t x) {

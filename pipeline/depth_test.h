@@ -81,6 +81,10 @@ public:
                   int threads = 1, DepthTest* recycled = nullptr) const;
 };
 
+// Whether the depth test interpolates 1/z rather than z: view z under perspective-correct
+// rules (1/z is linear on the screen; NDC z already is).
+bool perspectiveDepth(const Scene& scene);
+
 // One fragment as the depth test works it out: pixel x of the span that starts at pixel
 // xBegin on row y of projected triangle t. The barycentrics step along the span from its
 // first pixel, so xBegin must be where scan conversion starts the span for the bits to

@@ -130,8 +130,7 @@ int main(int argc, char* argv[]) {
             building = false;
         }
     });
-    while (!(window.inspection()->canStep() && !window.controller()->isBusy() &&
-             !window.replayBuilder()->isBusy())) {
+    while (!window.isReadyToStep()) {
         QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
         if (wait.elapsed() > 120000) {
             std::fprintf(stderr, "no replay within 120 s\n");

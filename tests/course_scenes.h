@@ -1,5 +1,6 @@
 // Scenes made from the program's own files, for the suites that link rasterlab_core: the
-// default course scene (the trefoil) and the HW2 sample command files as data rows.
+// default course scene (the trefoil), the course's chalice and the HW2 sample command files
+// as data rows.
 #pragma once
 
 #include <QtTest>
@@ -27,6 +28,21 @@ inline std::shared_ptr<const rl::Scene> defaultCourseScene(rl::ShadingModel mode
     settings.width = width;
     settings.height = height;
     return std::make_shared<const rl::Scene>(rl::makeCourseScene(parts.value(), settings));
+}
+
+// The course's chalice: samples/course/ufpe/calice2.cfg, iluminacao.txt and calice2.byu, at the
+// default size and shading; null where the samples are absent.
+inline std::shared_ptr<const rl::Scene> calice2Scene() {
+    const QString dir = samplesDir();
+    if (dir.isEmpty()) return nullptr;
+    rl::Diagnostics diagnostics;
+    const QString ufpe = dir + QStringLiteral("/course/ufpe/");
+    auto c = rasterlab::loadCamera(ufpe + QStringLiteral("calice2.cfg"), diagnostics);
+    auto l = rasterlab::loadLighting(ufpe + QStringLiteral("iluminacao.txt"), diagnostics);
+    auto o = rasterlab::loadObject(ufpe + QStringLiteral("calice2.byu"), diagnostics);
+    if (!c || !l || !o) qFatal("cannot load calice2");
+    return std::make_shared<const rl::Scene>(rl::makeCourseScene(
+        rl::CourseSceneParts{c.value(), l.value(), o.value()}, rl::CourseSceneSettings{}));
 }
 
 // A data row per HW2 sample named (samples/hw2/<name>.txt), holding its first image's scene

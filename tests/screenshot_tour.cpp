@@ -23,7 +23,6 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
-#include <QLibraryInfo>
 #include <QMenu>
 #include <QMenuBar>
 #include <QPolygonF>
@@ -32,7 +31,6 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolBar>
-#include <QTranslator>
 #include <QUndoStack>
 #include <QWheelEvent>
 
@@ -47,6 +45,7 @@
 #include "pixel_inspector.h"
 #include "replay_builder.h"
 #include "stepping_bar.h"
+#include "translators.h"
 #include "vertex_table.h"
 
 using namespace rasterlab;
@@ -56,12 +55,7 @@ namespace {
 constexpr int kTimeoutMs = 60000;
 
 bool waitForReplay(MainWindow& window) {
-    const bool ready = QTest::qWaitFor(
-        [&] {
-            return window.inspection()->canStep() && !window.controller()->isBusy() &&
-                   !window.replayBuilder()->isBusy();
-        },
-        kTimeoutMs);
+    const bool ready = QTest::qWaitFor([&] { return window.isReadyToStep(); }, kTimeoutMs);
     if (!ready) std::printf("FAILED: the frame was not ready to step through in 60 s\n");
     return ready;
 }
@@ -193,15 +187,8 @@ int main(int argc, char* argv[]) {
     const QDir out(parser.value(QStringLiteral("out")));
     QDir().mkpath(out.path());
     const QString language = parser.value(QStringLiteral("language"));
-    QTranslator qt, ours;
-    const QLocale locale(language);
-    QLocale::setDefault(locale);
-    if (qt.load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
-                QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        QCoreApplication::installTranslator(&qt);
-    if (ours.load(locale, QStringLiteral("rasterlab"), QStringLiteral("_"),
-                  QStringLiteral(":/i18n")))
-        QCoreApplication::installTranslator(&ours);
+    Translators translators;
+    translators.install(language);
     const QString samples = parser.value(QStringLiteral("samples"));
     const QString suffix = QStringLiteral("-") + language + QStringLiteral(".png");
     auto file = [&](const QString& name) { return out.filePath(name + suffix); };

@@ -16,6 +16,7 @@
 #include "camera_basis_view.h"
 #include "command_file.h"
 #include "course_scene.h"
+#include "course_scenes.h"
 #include "default_scene_resource.h"
 #include "inspection.h"
 #include "projection_view.h"
@@ -118,16 +119,8 @@ std::shared_ptr<const rl::FrameTrace> defaultFrame(Trefoil variant = Trefoil::Co
 }
 
 std::shared_ptr<const rl::FrameTrace> caliceFrame() {
-    const QString dir = testing::samplesDir();
-    if (dir.isEmpty()) return nullptr;
-    rl::Diagnostics diagnostics;
-    const QString ufpe = dir + QStringLiteral("/course/ufpe/");
-    auto c = rasterlab::loadCamera(ufpe + QStringLiteral("calice2.cfg"), diagnostics);
-    auto l = rasterlab::loadLighting(ufpe + QStringLiteral("iluminacao.txt"), diagnostics);
-    auto o = rasterlab::loadObject(ufpe + QStringLiteral("calice2.byu"), diagnostics);
-    if (!c || !l || !o) qFatal("cannot load calice2");
-    return render(rl::makeCourseScene(rl::CourseSceneParts{c.value(), l.value(), o.value()},
-                                      rl::CourseSceneSettings{}));
+    const auto scene = testing::calice2Scene();
+    return scene ? render(*scene) : nullptr;
 }
 
 // Saves a widget's picture where RASTERLAB_VIEW_PICTURES says (to look at them), and checks

@@ -712,17 +712,7 @@ void TestScanlineInspector::screenshots() {
         QVERIFY(hw2);
         scenes.emplace_back(QStringLiteral("hw2sun1g"),
                             std::make_shared<const Scene>(hw2->images.at(0).scene));
-        Diagnostics diagnostics;
-        auto c = rasterlab::loadCamera(samples + QStringLiteral("/course/ufpe/calice2.cfg"),
-                                       diagnostics);
-        auto l = rasterlab::loadLighting(samples + QStringLiteral("/course/ufpe/iluminacao.txt"),
-                                         diagnostics);
-        auto o = rasterlab::loadObject(samples + QStringLiteral("/course/ufpe/calice2.byu"),
-                                       diagnostics);
-        QVERIFY(c && l && o);
-        scenes.emplace_back(QStringLiteral("calice2"),
-                            std::make_shared<const Scene>(makeCourseScene(
-                                CourseSceneParts{c.value(), l.value(), o.value()}, {})));
+        scenes.emplace_back(QStringLiteral("calice2"), testing::calice2Scene());
     }
     for (const auto& [name, scene] : scenes) {
         Inspection inspection;

@@ -50,15 +50,7 @@ const QByteArray kLighting =
 
 // Waits until the window shows a frame that can be stepped through.
 bool waitForReplay(MainWindow& window) {
-    QElapsedTimer timer;
-    timer.start();
-    while (timer.elapsed() < kTimeoutMs) {
-        if (window.inspection()->canStep() && !window.controller()->isBusy() &&
-            !window.replayBuilder()->isBusy())
-            return true;
-        QTest::qWait(20);
-    }
-    return false;
+    return QTest::qWaitFor([&] { return window.isReadyToStep(); }, kTimeoutMs);
 }
 
 int differingPixels(const QImage& a, const QImage& b) {

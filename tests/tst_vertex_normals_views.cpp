@@ -98,19 +98,6 @@ std::shared_ptr<const Scene> octahedronScene(bool flipOne) {
     return std::make_shared<const Scene>(std::move(scene));
 }
 
-std::shared_ptr<const Scene> calice2Scene() {
-    const QString dir = testing::samplesDir();
-    if (dir.isEmpty()) return nullptr;
-    Diagnostics diagnostics;
-    auto c = rasterlab::loadCamera(dir + QStringLiteral("/course/ufpe/calice2.cfg"), diagnostics);
-    auto l =
-        rasterlab::loadLighting(dir + QStringLiteral("/course/ufpe/iluminacao.txt"), diagnostics);
-    auto o = rasterlab::loadObject(dir + QStringLiteral("/course/ufpe/calice2.byu"), diagnostics);
-    if (!c || !l || !o) qFatal("cannot load calice2");
-    return std::make_shared<const Scene>(
-        makeCourseScene(CourseSceneParts{c.value(), l.value(), o.value()}, {}));
-}
-
 // Gives the inspection a frame with its picture, as the main window does.
 void setFrame(Inspection& inspection, const std::shared_ptr<const FrameTrace>& frame) {
     const Rgba8Image bytes = colourImage(*frame->shading, *frame->depth, frame->scene->conventions);
@@ -651,7 +638,7 @@ void TestVertexNormalsViews::normalMapMatchesTheRenderer() {
 }
 
 void TestVertexNormalsViews::normalMapOfCalice2() {
-    const auto scene = calice2Scene();
+    const auto scene = testing::calice2Scene();
     if (!scene) QSKIP("course samples not found: set RASTERLAB_SAMPLES to the samples folder");
     const auto frame = render(scene, true);
     Inspection inspection;
@@ -693,7 +680,7 @@ void TestVertexNormalsViews::largeScenes() {
     QCOMPARE(normalMapMismatches(normals.normalMap(), *trefoil), 0);
     keep(normals, QStringLiteral("normal_map_trefoil"));
 
-    const auto scene = calice2Scene();
+    const auto scene = testing::calice2Scene();
     if (!scene) QSKIP("course samples not found: set RASTERLAB_SAMPLES to the samples folder");
     const auto calice = render(scene, true);
     normals.showNormalMap(false);

@@ -220,6 +220,11 @@ const rl::DepthTest* Inspection::buffers() const {
     return m_frame ? m_frame->depth.get() : nullptr;
 }
 
+std::shared_ptr<const rl::DepthTest> Inspection::sharedBuffers() const {
+    if (m_state) return std::shared_ptr<const rl::DepthTest>(m_state, &m_state->buffers());
+    return m_frame ? m_frame->depth : nullptr;
+}
+
 std::uint32_t Inspection::triangleAt(QPoint pixel) const {
     const rl::DepthTest* b = buffers();
     if (!b || !b->triangle.contains(pixel.x(), pixel.y())) return rl::kNoTriangle;

@@ -90,6 +90,8 @@ public:
     // drawing on it draws on a copy.
     QImage image() const;
     const rl::DepthTest* buffers() const;
+    // The same, held as long as the caller keeps it (a view that draws them later).
+    std::shared_ptr<const rl::DepthTest> sharedBuffers() const;
     std::uint32_t triangleAt(QPoint pixel) const;
 
     // The pixel picked ((-1, -1) for none); picking selects the triangle holding it at the

@@ -722,9 +722,7 @@ QString ScanlineView::explanationHtml() const {
     if (!row.empty()) {
         const rl::ScreenTriangle& tri = frame.projection->triangles[m.triangle];
         const rl::DrawProjection& draw = frame.projection->draws[tri.draw];
-        const bool perspective =
-            rules.interpolation == rl::RasterRules::Interpolation::PerspectiveCorrect &&
-            scene.conventions.depth == rl::DepthSource::ViewZ;
+        const bool perspective = rl::perspectiveDepth(scene);
         const float z1 = draw.depth[tri.v[0]], z2 = draw.depth[tri.v[1]], z3 = draw.depth[tri.v[2]];
         const std::array<rl::dvec2, 3> p = rl::screenVertices(*frame.projection, tri);
         html += QStringLiteral("<p>") +

@@ -211,15 +211,15 @@ ZBufferView::ZBufferView(QWidget* parent) : QWidget(parent) {
 
 void ZBufferView::setFrame(std::shared_ptr<const rl::FrameTrace> frame) {
     m_frame = std::move(frame);
-    m_buffers = nullptr;
+    m_buffers.reset();
     m_tested = m_frame && m_frame->depth ? m_frame->depth->fragments : 0;
     m_written = m_frame && m_frame->depth ? m_frame->depth->passed : 0;
     refreshWhenShown();
 }
 
-void ZBufferView::setBuffers(const rl::DepthTest* buffers, std::size_t tested,
+void ZBufferView::setBuffers(std::shared_ptr<const rl::DepthTest> buffers, std::size_t tested,
                              std::size_t written) {
-    m_buffers = buffers;
+    m_buffers = std::move(buffers);
     m_tested = tested;
     m_written = written;
     refreshWhenShown();
@@ -238,7 +238,7 @@ void ZBufferView::showEvent(QShowEvent* event) {
 }
 
 const rl::DepthTest* ZBufferView::shown() const {
-    if (m_buffers) return m_buffers;
+    if (m_buffers) return m_buffers.get();
     return m_frame ? m_frame->depth.get() : nullptr;
 }
 
@@ -251,10 +251,7 @@ QString ZBufferView::explanation() const {
                                           : QStringLiteral("z &lt; z<sub>stored</sub>");
     const QString what =
         c.depth == rl::DepthSource::ViewZ ? tr("the view-space z of P'") : tr("the NDC z");
-    // View z under perspective-correct rules is interpolated as 1/z (depth_test.cpp).
-    const bool reciprocal =
-        m_frame->scene->rules.interpolation == rl::RasterRules::Interpolation::PerspectiveCorrect &&
-        c.depth == rl::DepthSource::ViewZ;
+    const bool reciprocal = rl::perspectiveDepth(*m_frame->scene);
     const QString formula =
         reciprocal ? QStringLiteral(
                          "1/z = &alpha;/z<sub>1</sub> + &beta;/z<sub>2</sub> + "

@@ -70,11 +70,12 @@ class ZBufferView : public QWidget {
 public:
     explicit ZBufferView(QWidget* parent = nullptr);
 
-    // The frame, and the buffers at the stepping cursor (they must live until the next
-    // setBuffers or setFrame), or null for the frame's own; `tested` and `written` fragments so
-    // far. While the view is hidden the image waits until it is shown.
+    // The frame, and the buffers at the stepping cursor (held until the next setBuffers or
+    // setFrame), or null for the frame's own; `tested` and `written` fragments so far. While the
+    // view is hidden the image waits until it is shown.
     void setFrame(std::shared_ptr<const rl::FrameTrace> frame);
-    void setBuffers(const rl::DepthTest* buffers, std::size_t tested, std::size_t written);
+    void setBuffers(std::shared_ptr<const rl::DepthTest> buffers, std::size_t tested,
+                    std::size_t written);
     QString explanation() const;
     void setAutomaticRange(bool automatic);
     void setManualRange(float nearest, float farthest);  // also turns the automatic range off
@@ -99,7 +100,7 @@ private:
     const rl::DepthTest* shown() const;
 
     std::shared_ptr<const rl::FrameTrace> m_frame;
-    const rl::DepthTest* m_buffers = nullptr;
+    std::shared_ptr<const rl::DepthTest> m_buffers;
     std::size_t m_tested = 0, m_written = 0;
     bool m_stale = false;
     QLabel* m_explanation = nullptr;
