@@ -20,7 +20,11 @@
 //             UFPE multi-light  ka; Ia; kd; Od; ks; n; L; then L times Pl; Il
 //                                                  (1, 3, 1 or 3, 3, 1, 1, 1, then 3, 3 ...)
 //             UFRPE  Iamb; Ka; Il; Pl; Kd; Od; Ks; n      (3, 1, 3, 3, 3, 3, 1, 1)
-//             key = value: Iamb, Ka, Il, Pl, Kd, Od, Ks, eta in any order
+//             key = value: Iamb, Ka, Il, Pl, Kd, Od, Ks, eta in any order; optionally
+//                    the lecture slides' lighting (seed 003): Ke = r g b (emission),
+//                    two_sided = 1|0, blinn = 1|0, Pl = x y z w (w = 0: directional),
+//                    atten = kc kl kq, spot_dir = x y z, spot_cutoff = degrees,
+//                    spot_exp = e, and lights 2 to 8 as Pl2, Il2, atten2 ...
 //   Camera and lighting may share one key = value file: each reader skips the other's keys.
 //
 // Detection rule (no field says which flavour a file is):
@@ -75,6 +79,10 @@ struct CourseLighting {
     Material material;
     vec3 ambientIntensity = vec3(0.0f);  // Ia
     std::vector<Light> lights;
+    // The lecture slides' options (seed 003), which only key = value files can write:
+    // two-sided lighting (the course's N turned toward the viewer) and the highlight's model.
+    bool twoSided = true;
+    SpecularModel specular = SpecularModel::Phong;
 };
 
 Result<CourseCamera> readCourseCamera(std::string_view text, const std::string& fileName,
@@ -119,6 +127,11 @@ std::optional<LightingLayout> lightingLayoutFromName(std::string_view name);
 // For people: "UFPE (C; N; V; d hx hy)", "key = value", "detected from the file" ...
 const char* cameraLayoutDescription(CameraLayout layout);
 const char* lightingLayoutDescription(LightingLayout layout);
+
+// A key of key = value lighting files, in any case: Iamb, Ka, Il, Pl, Kd, Od, Ks, eta, the
+// lecture slides' Ke, two_sided, blinn, atten, spot_dir, spot_cutoff, spot_exp, and the
+// per-light ones numbered for lights 1 to 8 (Pl2, atten3 ...).
+bool isLightingKey(std::string_view key);
 
 // The layout the detection rule chooses for a text, or nullopt when none fits.
 std::optional<CameraLayout> detectCameraLayout(std::string_view text);

@@ -29,12 +29,14 @@ Scene makeCourseScene(const CourseSceneParts& parts, const CourseSceneSettings& 
     scene.cullHiddenBackFaces = settings.cullHiddenBackFaces;
     scene.rules = settings.rules;
     scene.conventions = Conventions::course();
+    scene.conventions.flipNormalsTowardViewer = parts.lighting.twoSided;
 
     Draw draw;
     draw.name = parts.object.name;
     draw.mesh = parts.object.mesh;
     draw.material = parts.lighting.material;
     draw.shading = settings.shading;
+    draw.specular = parts.lighting.specular;
     scene.draws.push_back(std::move(draw));
     return scene;
 }

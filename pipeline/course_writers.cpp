@@ -70,7 +70,7 @@ std::string scalarOrTriple(const vec3& v) {
 
 // One field of a file: its key in a key = value file and its numbers.
 struct Entry {
-    std::string_view key;
+    std::string key;
     std::string value;
 };
 
@@ -99,9 +99,11 @@ std::string_view trimmed(std::string_view s) {
 }
 
 // A key = value file: `previous` with the lines of `entries`' keys replaced where they stand
-// (a key given twice keeps its first place only), its other lines kept, and the keys it
-// lacks added at the end.
-std::string writeKeyValues(const std::vector<Entry>& entries, std::string_view previous) {
+// (a key given twice keeps its first place only), its lines of keys `dropped` says are no
+// longer wanted (an optional key now at its default, a light removed) left out, its other
+// lines kept, and the keys it lacks added at the end.
+std::string writeKeyValues(const std::vector<Entry>& entries, std::string_view previous,
+                           bool (*dropped)(std::string_view key) = nullptr) {
     const std::string_view eol = lineEndingOf(previous);
     std::vector<bool> written(entries.size(), false);
     std::string text;
@@ -128,6 +130,9 @@ std::string writeKeyValues(const std::vector<Entry>& entries, std::string_view p
                 if (sameKey(key, entries[i].key)) entry = i;
         }
         if (!entry) {
+            if (equals != std::string_view::npos && dropped &&
+                dropped(trimmed(line.substr(0, equals))))
+                continue;
             text += line;
             text += eol;
             continue;
@@ -182,27 +187,46 @@ Result<std::string> writeLightingFile(const CourseLighting& lighting, LightingLa
                           "cannot write lighting in the layout 'auto': choose UFPE, UFPE "
                           "multi-light, UFRPE or key = value");
     const std::size_t count = lighting.lights.size();
-    if (layout != LightingLayout::UfpeMulti && count != 1)
+    const bool keyValue = layout == LightingLayout::KeyValue;
+    if (layout != LightingLayout::UfpeMulti && !(keyValue && count >= 1) && count != 1)
         return writeError(ErrorCode::Unsupported,
                           std::string("cannot write ") + std::to_string(count) +
                               (count == 1 ? " light" : " lights") + " in the layout " +
                               lightingLayoutDescription(layout) +
-                              ", which holds exactly one: choose the UFPE multi-light layout");
+                              ", which holds exactly one: choose the UFPE multi-light layout or "
+                              "key = value");
     if (count == 0)
         return writeError(ErrorCode::Unsupported,
-                          "cannot write lighting without lights: the UFPE multi-light layout "
-                          "holds one light or more");
+                          "cannot write lighting without lights: the UFPE multi-light and key = "
+                          "value layouts hold one light or more");
+    if (keyValue && count > 8)
+        return writeError(ErrorCode::Unsupported,
+                          "cannot write " + std::to_string(count) +
+                              " lights in a key = value file, which holds 8 at most (Pl to Pl8)");
     const Material& m = lighting.material;
     bool finite = isFinite(vec3(m.ka, m.ks, m.shininess)) && isFinite(m.kd) && isFinite(m.od) &&
-                  isFinite(lighting.ambientIntensity);
+                  isFinite(lighting.ambientIntensity) && isFinite(m.emission);
+    // What only key = value files hold (the lecture slides' lighting, seed 003).
+    std::string beyondCourse;
+    const auto beyond = [&](bool used, const char* what) {
+        if (used && beyondCourse.empty()) beyondCourse = what;
+    };
+    beyond(m.emission != vec3(0.0f), "an emission (Ke)");
+    beyond(!lighting.twoSided, "one-sided lighting");
+    beyond(lighting.specular != SpecularModel::Phong, "Blinn-Phong highlights");
     for (const Light& light : lighting.lights) {
-        if (light.pWorld.w != 1.0)
-            return writeError(
-                ErrorCode::Unsupported,
-                "cannot write a directional light (w = " + formatExact(light.pWorld.w) +
-                    "): course files hold point lights (x y z)");
-        finite = finite && isFinite(dvec3(light.pWorld)) && isFinite(light.intensity);
+        beyond(light.pWorld.w != 1.0, "a directional light (w = 0)");
+        beyond(light.attenuation != vec3(1.0f, 0.0f, 0.0f), "an attenuated light");
+        beyond(light.spot(), "a spot light");
+        finite = finite && isFinite(dvec3(light.pWorld)) && isFinite(light.intensity) &&
+                 isFinite(light.attenuation) && isFinite(light.spotDirection) &&
+                 isFinite(vec3(light.spotCutoff, light.spotExponent, 0.0f));
     }
+    if (!keyValue && !beyondCourse.empty())
+        return writeError(ErrorCode::Unsupported,
+                          "cannot write " + beyondCourse + " in the layout " +
+                              lightingLayoutDescription(layout) +
+                              ", which holds the course's point lights only: choose key = value");
     if (!finite)
         return writeError(ErrorCode::Range,
                           "cannot write the lighting: its values must be finite numbers (a "
@@ -227,16 +251,35 @@ Result<std::string> writeLightingFile(const CourseLighting& lighting, LightingLa
         }
         case LightingLayout::Ufrpe:
             return joinLines({ia, ka, il, pl, numbers(m.kd), od, ks, n}, eol);
-        case LightingLayout::KeyValue:
-            return writeKeyValues({{"Iamb", ia},
-                                   {"Ka", ka},
-                                   {"Il", il},
-                                   {"Pl", pl},
-                                   {"Kd", numbers(m.kd)},
-                                   {"Od", od},
-                                   {"Ks", ks},
-                                   {"eta", n}},
-                                  previous);
+        case LightingLayout::KeyValue: {
+            // The course's keys in the course's order, then the slides' (only when used).
+            const auto position = [](const Light& light) {
+                return light.pWorld.w == 1.0 ? numbers(dvec3(light.pWorld)) : numbers(light.pWorld);
+            };
+            std::vector<Entry> entries = {
+                {"Iamb", ia},          {"Ka", ka}, {"Il", il}, {"Pl", position(lighting.lights[0])},
+                {"Kd", numbers(m.kd)}, {"Od", od}, {"Ks", ks}, {"eta", n}};
+            if (m.emission != vec3(0.0f)) entries.push_back({"Ke", numbers(m.emission)});
+            if (!lighting.twoSided) entries.push_back({"two_sided", "0"});
+            if (lighting.specular == SpecularModel::BlinnPhong) entries.push_back({"blinn", "1"});
+            for (std::size_t k = 0; k < count; ++k) {
+                const Light& light = lighting.lights[k];
+                const std::string suffix = k == 0 ? std::string() : std::to_string(k + 1);
+                if (k > 0) {
+                    entries.push_back({"Il" + suffix, numbers(light.intensity)});
+                    entries.push_back({"Pl" + suffix, position(light)});
+                }
+                if (light.attenuation != vec3(1.0f, 0.0f, 0.0f))
+                    entries.push_back({"atten" + suffix, numbers(light.attenuation)});
+                if (light.spot()) {
+                    entries.push_back({"spot_dir" + suffix, numbers(light.spotDirection)});
+                    entries.push_back({"spot_cutoff" + suffix, formatExact(light.spotCutoff)});
+                    if (light.spotExponent != 0.0f)
+                        entries.push_back({"spot_exp" + suffix, formatExact(light.spotExponent)});
+                }
+            }
+            return writeKeyValues(entries, previous, isLightingKey);
+        }
         case LightingLayout::Auto:
             break;
     }

@@ -12,11 +12,13 @@
 // layouts (which accept both); UFRPE and key = value files always hold three (their readers
 // take no scalar kd).
 //
-// Lights: UFPE, UFRPE and key = value files hold exactly one light. A lighting with several
-// lights (or none) asked for in one of those layouts is an error that names the multi-light
-// layout, rather than a file silently written in another layout than asked: the layout a file
-// is saved in is the caller's choice. The multi-light layout holds one light or more.
-// Lights are points (w = 1): a directional light (w = 0) cannot be written.
+// Lights: UFPE and UFRPE files hold exactly one light. A lighting with several
+// lights (or none) asked for in one of those layouts is an error that names the multi-light and
+// key = value layouts, rather than a file silently written in another layout than asked: the layout
+// a file is saved in is the caller's choice. The multi-light layout holds one light or more, key =
+// value files one to eight, and only key = value files hold the lecture slides' lighting
+// (directional lights, attenuation, spots, emission, one-sided lighting, Blinn-Phong): the other
+// layouts refuse a lighting that uses it, naming what they cannot hold.
 #pragma once
 
 #include <string>

@@ -6,6 +6,10 @@
 //     if N.L < 0: no diffuse and no specular     (the light is behind the surface)
 //     else R = 2 (N.L) N - L (a unit vector, as N and L are); if R.V < 0: no specular
 //     I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n, per colour channel, summed over lights.
+// With the lecture slides' lighting (seed 003, OpenGL's): a light's two terms are multiplied
+// by its attenuation 1 / (kc + kl d + kq d^2) and its spot factor (lightFactor), the
+// highlight may be Blinn-Phong's Il ks (N.H)^n, and the material's emission Ke is added:
+//     I = Ke + Ia ka + sum over lights of  att spot (Il Od kd (N.L) + Il ks (R.V)^n).
 // The command files' (seed 001), lambert():
 //     I = sum over lights with N.L >= 0 of  Il O (N.L)  +  Il (H.N)^s  (the second only
 //     when the shininess s > 0; H = (L + E)/|L + E| with E = -P'/|P'|, Blinn-Phong).
@@ -29,6 +33,7 @@ struct PhongSample {
     vec3 diffuse = vec3(0.0f);   // sum of Il Od kd (N.L)
     vec3 specular = vec3(0.0f);  // sum of Il ks (R.V)^n, or Il (H.N)^s
     vec3 unlit = vec3(0.0f);     // the object colour itself, for a draw that is not lit
+    vec3 emission = vec3(0.0f);  // Ke, the material's own light
     vec3 n = vec3(0.0f);         // unit normal actually used (after the flip)
     vec3 l = vec3(0.0f);         // unit vector toward the (first) light
     vec3 v = vec3(0.0f);         // unit vector toward the viewer
@@ -40,8 +45,10 @@ struct PhongSample {
     bool noSpecular = false;    // R.V < 0: no specular
     bool noNormal = false;      // N is zero (a vertex of degenerate triangles only): ambient only
     bool lightAtPoint = false;  // L = 0: the light sits on the point, ambient only
+    bool outsideCone = false;   // the point is outside the (first) light's spot cone
 
-    vec3 colour() const { return ambient + diffuse + specular + unlit; }
+    // Emission last: zero for the course's files, so their sums keep their bits.
+    vec3 colour() const { return ambient + diffuse + specular + unlit + emission; }
 };
 
 // The unit vector from pView toward a light, or zero when the light sits on the point.
@@ -69,31 +76,108 @@ inline bool orientNormal(PhongSample& s, const vec3& pView, const vec3& nView, b
     return true;
 }
 
+// What one light gives a point under the course's model: the pixel inspector's breakdown
+// per light and per term (phongPerLight), from the very code the render runs.
+struct LightTerms {
+    vec3 diffuse = vec3(0.0f);   // factor Il Od kd (N.L)
+    vec3 specular = vec3(0.0f);  // factor Il ks (R.V)^n, or (N.H)^n
+    vec3 l = vec3(0.0f);         // unit vector toward the light
+    vec3 r = vec3(0.0f);         // R, or H under Blinn-Phong
+    float nDotL = 0.0f;
+    float rDotV = 0.0f;        // R.V, or N.H under Blinn-Phong
+    float distance = 0.0f;     // to a positional light (0 for a directional one)
+    float attenuation = 1.0f;  // 1 / (kc + kl d + kq d^2)
+    float spotCos = 1.0f;      // -L.D, the cosine of the angle off the spot's axis
+    float spot = 1.0f;         // (-L.D)^exponent inside the cone, 0 outside, 1 if not a spot
+    bool atPoint = false;      // L = 0: the light sits on the point
+    bool behind = false;       // N.L < 0
+    bool noSpecular = false;   // R.V < 0 (N.H < 0)
+    bool outsideCone = false;  // beyond the spot's cutoff: no light from it
+};
+
+// The factor a light's diffuse and specular terms are multiplied by at pView, l the unit
+// vector toward it: attenuation with distance (positional lights) times the spot's.
+inline float lightFactor(const ViewLight& light, const vec3& pView, const vec3& l,
+                         LightTerms* terms) {
+    float factor = 1.0f;
+    if (light.attenuated) {
+        const float d = glm::length(vec3(light.pView) - pView);
+        const vec3& k = light.attenuation;
+        const float denominator = k.x + k.y * d + k.z * d * d;
+        // kc + kl d + kq d^2 <= 0 (coefficients outside OpenGL's range) would divide by zero
+        // or make light negative: the light is left out there instead.
+        const float attenuation = denominator > 0.0f ? 1.0f / denominator : 0.0f;
+        factor *= attenuation;
+        if (terms) {
+            terms->distance = d;
+            terms->attenuation = attenuation;
+        }
+    } else if (terms && light.pView.w != 0.0) {
+        terms->distance = glm::length(vec3(light.pView) - pView);
+    }
+    if (light.spot) {
+        const float spotCos = -glm::dot(l, light.spotDirection);
+        float spot = 0.0f;
+        if (spotCos >= light.spotCosCutoff) {
+            // 0^0 = 1: on the cone's edge at 90 degrees with exponent 0 the light is whole.
+            spot = light.spotExponent == 0.0f
+                       ? 1.0f
+                       : std::pow(std::max(spotCos, 0.0f), light.spotExponent);
+        }
+        factor *= spot;
+        if (terms) {
+            terms->spotCos = spotCos;
+            terms->spot = spot;
+            terms->outsideCone = spotCos < light.spotCosCutoff;
+        }
+    }
+    return factor;
+}
+
 // One light's terms of the course's model, added to sample; the first light's vectors are
-// kept for display.
+// kept for display, and all of this light's in terms when given.
 inline void addLight(const Material& m, const vec3& od, const ViewLight& light, const vec3& pView,
-                     bool first, PhongSample& sample) {
+                     bool first, PhongSample& sample,
+                     SpecularModel specularModel = SpecularModel::Phong,
+                     LightTerms* terms = nullptr) {
     const vec3 l = towardLight(light, pView);
     if (l == vec3(0.0f)) {
         if (first) sample.lightAtPoint = true;
+        if (terms) terms->atPoint = true;
         return;
     }
+    // The course's own lights (not attenuated, not spots) keep the expressions below
+    // unchanged, so their colours are the same bits as the many-pixel kernel's.
+    const bool plain = light.plain();
+    const float factor = plain ? 1.0f : lightFactor(light, pView, l, terms);
     const vec3& nUnit = sample.n;
     const float nDotL = glm::dot(nUnit, l);
     vec3 r(0.0f);
     float rDotV = 0.0f;
+    vec3 diffuse(0.0f), specular(0.0f);
     if (nDotL >= 0.0f) {
-        // |R| = 1, since N and L are unit vectors: not normalised again.
-        r = 2.0f * nDotL * nUnit - l;
-        rDotV = glm::dot(r, sample.v);
-        sample.diffuse += light.intensity * od * m.kd * nDotL;
+        if (specularModel == SpecularModel::BlinnPhong) {
+            // H = (L + V)/|L + V|; zero when the light is straight behind the viewer's line.
+            const vec3 sum = l + sample.v;
+            const float length = glm::length(sum);
+            if (length > 0.0f) r = sum * (1.0f / length);
+            rDotV = glm::dot(nUnit, r);
+        } else {
+            // |R| = 1, since N and L are unit vectors: not normalised again.
+            r = 2.0f * nDotL * nUnit - l;
+            rDotV = glm::dot(r, sample.v);
+        }
+        const vec3 il = plain ? light.intensity : light.intensity * factor;
+        diffuse = il * od * m.kd * nDotL;
         if (rDotV >= 0.0f && m.ks != 0.0f) {
             // (R.V)^n (fast_pow.h), with 0^0 = 1 as in C's pow. A negative n (outside the
             // course's range, and warned about when read) is not a highlight: its huge or
             // infinite values are left out rather than turned into NaN.
             const float power = fastPow(rDotV, m.shininess);
-            if (std::isfinite(power)) sample.specular += light.intensity * m.ks * power;
+            if (std::isfinite(power)) specular = il * m.ks * power;
         }
+        sample.diffuse += diffuse;
+        if (specular != vec3(0.0f)) sample.specular += specular;
     }
     if (first) {
         sample.l = l;
@@ -102,17 +186,34 @@ inline void addLight(const Material& m, const vec3& od, const ViewLight& light, 
         sample.rDotV = rDotV;
         sample.lightBehind = nDotL < 0.0f;
         sample.noSpecular = nDotL >= 0.0f && rDotV < 0.0f;
+        sample.outsideCone = !plain && light.spot && factor == 0.0f && !(nDotL < 0.0f);
+    }
+    if (terms) {
+        terms->diffuse = diffuse;
+        terms->specular = specular;
+        terms->l = l;
+        terms->r = r;
+        terms->nDotL = nDotL;
+        terms->rDotV = rDotV;
+        terms->behind = nDotL < 0.0f;
+        terms->noSpecular = nDotL >= 0.0f && rDotV < 0.0f;
     }
 }
 
 // The course's model; od is the object colour (the material's Od, or a per-vertex one).
+// perLight, when given, receives each light's terms (lightCount entries).
 inline PhongSample phong(const Material& m, const vec3& od, const vec3& ambientIntensity,
                          const ViewLight* lights, std::size_t lightCount, const vec3& pView,
-                         const vec3& nView, bool flipTowardViewer) {
+                         const vec3& nView, bool flipTowardViewer,
+                         SpecularModel specularModel = SpecularModel::Phong,
+                         LightTerms* perLight = nullptr) {
     PhongSample s;
     s.ambient = ambientIntensity * m.ka;
+    s.emission = m.emission;
     if (!orientNormal(s, pView, nView, flipTowardViewer)) return s;
-    for (std::size_t i = 0; i < lightCount; ++i) addLight(m, od, lights[i], pView, i == 0, s);
+    for (std::size_t i = 0; i < lightCount; ++i)
+        addLight(m, od, lights[i], pView, i == 0, s, specularModel,
+                 perLight ? perLight + i : nullptr);
     return s;
 }
 

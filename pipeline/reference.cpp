@@ -177,7 +177,7 @@ Error unsupported(const std::string& what) {
 dvec3 referencePhong(const Scene& scene, const Draw& draw, const std::vector<ViewLight>& lights,
                      const dvec3& pView, const dvec3& nView) {
     const Material& m = draw.material;
-    dvec3 colour = toD(scene.ambientIntensity) * double(m.ka);
+    dvec3 colour = toD(scene.ambientIntensity) * double(m.ka) + toD(m.emission);
     const double nLength = glm::length(nView);
     if (!(nLength > 0.0)) return colour;
     const double vLength = glm::length(pView);
@@ -194,12 +194,33 @@ dvec3 referencePhong(const Scene& scene, const Draw& draw, const std::vector<Vie
         const dvec3 l = toLight / lLength;
         const double nDotL = glm::dot(n, l);
         if (nDotL < 0.0) continue;
-        const dvec3 intensity = toD(light.intensity);
+        double factor = 1.0;
+        if (light.attenuated) {
+            const double d = lLength;
+            const dvec3 k = toD(light.attenuation);
+            const double denominator = k.x + k.y * d + k.z * d * d;
+            factor = denominator > 0.0 ? 1.0 / denominator : 0.0;
+        }
+        if (light.spot) {
+            const double spotCos = -glm::dot(l, toD(light.spotDirection));
+            factor *= spotCos < double(light.spotCosCutoff)
+                          ? 0.0
+                          : (light.spotExponent == 0.0f
+                                 ? 1.0
+                                 : std::pow(std::max(spotCos, 0.0), double(light.spotExponent)));
+        }
+        const dvec3 intensity = toD(light.intensity) * factor;
         colour += intensity * toD(m.od) * toD(m.kd) * nDotL;
-        const dvec3 r = 2.0 * nDotL * n - l;
-        const double rDotV = glm::dot(r, v);
-        if (rDotV >= 0.0 && m.ks != 0.0f) {
-            const double power = std::pow(rDotV, double(m.shininess));
+        double highlight = 0.0;
+        if (draw.specular == SpecularModel::BlinnPhong) {
+            const dvec3 sum = l + v;
+            const double length = glm::length(sum);
+            highlight = length > 0.0 ? glm::dot(n, sum / length) : 0.0;
+        } else {
+            highlight = glm::dot(2.0 * nDotL * n - l, v);
+        }
+        if (highlight >= 0.0 && m.ks != 0.0f) {
+            const double power = std::pow(highlight, double(m.shininess));
             if (std::isfinite(power)) colour += intensity * double(m.ks) * power;
         }
     }

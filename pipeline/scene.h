@@ -43,13 +43,37 @@ struct Material {
     vec3 od = vec3(0.0f);    // diffuse colour of the object, 0..1
     float ks = 0.0f;         // specular coefficient
     float shininess = 1.0f;  // n, the Phong exponent
+    // Ke, the light the surface gives off by itself (OpenGL's GL_EMISSION, seed 003), in the
+    // scene's colour scale like Ia: added to every lit point, lights or not.
+    vec3 emission = vec3(0.0f);
 };
 
-// A point light (w = 1) or a directional light (w = 0, position is the direction toward it).
+// A positional light (w != 0) or a directional light (w = 0, position is the direction
+// toward it), as OpenGL's GL_POSITION (seed 003), optionally attenuated and a spot.
 struct Light {
     dvec4 pWorld = dvec4(0.0, 0.0, 0.0, 1.0);
     vec3 intensity = vec3(0.0f);  // Il, in the scene's colour scale (may exceed it, or be < 0)
     SourceLocation where;
+    // A positional light's diffuse and specular terms are multiplied by
+    // 1 / (kc + kl d + kq d^2), d its distance to the point (GL_CONSTANT_, GL_LINEAR_ and
+    // GL_QUADRATIC_ATTENUATION); (1, 0, 0) leaves them as they are. Not for directional lights.
+    vec3 attenuation = vec3(1.0f, 0.0f, 0.0f);  // (kc, kl, kq)
+    // A spot (GL_SPOT_CUTOFF 0..90 degrees; 180 is not a spot): a point whose direction from
+    // the light, -L, makes an angle above the cutoff with spotDirection gets no light from it;
+    // inside the cone the terms are multiplied by (-L . D)^spotExponent, D = spotDirection
+    // normalised.
+    dvec3 spotDirection = dvec3(0.0, 0.0, -1.0);  // world space
+    float spotCutoff = 180.0f;                    // degrees
+    float spotExponent = 0.0f;
+
+    bool attenuated() const { return attenuation != vec3(1.0f, 0.0f, 0.0f) && pWorld.w != 0.0; }
+    bool spot() const { return spotCutoff != 180.0f; }
+};
+
+// How the course's model makes its highlight.
+enum class SpecularModel : std::uint8_t {
+    Phong,       // Il ks (R.V)^n, R the reflection of L about N (seed 000)
+    BlinnPhong,  // Il ks (N.H)^n, H = (L + V)/|L + V|, the half vector (seed 003)
 };
 
 // A texture: RGBA texels, 0..1, row 0 at the top (t = 0).
@@ -112,6 +136,7 @@ struct Draw {
     std::optional<dmat4> clipFromView;
     ShadingModel shading = ShadingModel::Phong;
     LightingModel lighting = LightingModel::CoursePhong;
+    SpecularModel specular = SpecularModel::Phong;  // of the course's model
     ColourSource colour = ColourSource::Material;
     std::shared_ptr<const Texture> texture;  // with ColourSource::Texture
     bool decals = false;                     // texture alpha-blended over the vertex colour
@@ -138,9 +163,12 @@ struct Conventions {
     bool ndcYUp = true;  // NDC y = +1 is the top row (the course flips y)
     DepthSource depth = DepthSource::ViewZ;
     float depthClear = std::numeric_limits<float>::infinity();  // the empty depth buffer
-    bool depthWinsOnTie = false;          // z <= stored writes (seed 001); otherwise z < stored
-    bool depthRangeClip = false;          // discard fragments whose depth is outside [0, 1]
-    bool flipNormalsTowardViewer = true;  // N := -N when V.N < 0 (seed 000)
+    bool depthWinsOnTie = false;  // z <= stored writes (seed 001); otherwise z < stored
+    bool depthRangeClip = false;  // discard fragments whose depth is outside [0, 1]
+    // N := -N when V.N < 0 (seed 000): two-sided lighting, the back of a surface lit like its
+    // front (OpenGL's GL_LIGHT_MODEL_TWO_SIDE). False: one-sided, a back lit with the normal
+    // pointing away from the viewer.
+    bool flipNormalsTowardViewer = true;
     float colourScale = 255.0f;  // the value that becomes byte 255 (course colours are 0..255)
     ByteRounding rounding = ByteRounding::Truncate;
     vec4 background = vec4(0.0f, 0.0f, 0.0f, 1.0f);  // RGBA 0..1 of pixels no triangle covers

@@ -132,7 +132,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
         switch (draw.lighting) {
             case LightingModel::CoursePhong:
                 return phong(draw.material, objectColour, scene.ambientIntensity,
-                             view.lights.data(), lightCount, p, n, flip);
+                             view.lights.data(), lightCount, p, n, flip, draw.specular);
             case LightingModel::Lambert:
                 return lambert(objectColour, draw.material.shininess, view.lights.data(),
                                lightCount, p, n, flip);
@@ -354,7 +354,10 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                                          !draw.flatNormals && !perspective && !normals.skipped;
                 const std::size_t lightCount = std::min(draw.lightCount, view.lights.size());
                 if constexpr (!Probe::enabled) {
-                    if (coursePhong && lightCount == 1) {
+                    // The kernel knows one plain light, R.V highlights and no emission.
+                    if (coursePhong && lightCount == 1 && view.lights[0].plain() &&
+                        draw.specular == SpecularModel::Phong &&
+                        draw.material.emission == vec3(0.0f)) {
                         // Many pixels at once, the same bits as phong() (phong_kernel.h).
                         const Material& m = draw.material;
                         const ViewLight& l = view.lights[0];

@@ -1,5 +1,7 @@
 #include "view_transform.h"
 
+#include <cmath>
+
 namespace rl {
 
 ViewTransform ViewTransformStage::run(const Scene& scene, const CameraBasis& basis) const {
@@ -20,8 +22,23 @@ ViewTransform ViewTransformStage::run(const Scene& scene, const CameraBasis& bas
         }
         out.pView.push_back(std::move(pView));
     }
-    for (const Light& light : scene.lights)
-        out.lights.push_back({basis.viewFromWorld * light.pWorld, light.intensity});
+    for (const Light& light : scene.lights) {
+        ViewLight v;
+        v.pView = basis.viewFromWorld * light.pWorld;
+        v.intensity = light.intensity;
+        v.attenuation = light.attenuation;
+        v.attenuated = light.attenuated();
+        v.spot = light.spot();
+        if (v.spot) {
+            // A direction: rotated, not moved (w = 0).
+            const dvec3 d = dvec3(basis.viewFromWorld * dvec4(light.spotDirection, 0.0));
+            const double length = glm::length(d);
+            v.spotDirection = length > 0.0 ? vec3(d / length) : vec3(0.0f);
+            v.spotCosCutoff = static_cast<float>(std::cos(glm::radians(double(light.spotCutoff))));
+            v.spotExponent = light.spotExponent;
+        }
+        out.lights.push_back(v);
+    }
     return out;
 }
 

@@ -15,6 +15,15 @@ namespace rl {
 struct ViewLight {
     dvec4 pView = dvec4(0.0, 0.0, 0.0, 1.0);  // w = 0: a direction toward the light
     vec3 intensity = vec3(0.0f);
+    // Light's attenuation and spot (scene.h), the spot direction in view space, unit length.
+    vec3 attenuation = vec3(1.0f, 0.0f, 0.0f);
+    bool attenuated = false;  // a positional light with attenuation other than (1, 0, 0)
+    bool spot = false;        // cutoff other than 180 degrees
+    vec3 spotDirection = vec3(0.0f, 0.0f, 1.0f);
+    float spotCosCutoff = -1.0f;  // cos of the cutoff angle
+    float spotExponent = 0.0f;
+    // Neither attenuated nor a spot: the light of the course's own files.
+    bool plain() const { return !attenuated && !spot; }
 };
 
 struct ViewTransform {

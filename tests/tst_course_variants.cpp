@@ -509,7 +509,8 @@ void TestCourseVariants::cameraWarnings_data() {
         << QStringList{"camera.cfg: note: read as a key = value camera (lines contain '=')",
                        "camera.cfg:7:1: warning: ignored the unknown key 'zoom' (a camera has C, "
                        "N, V, d, hx and hy; a lighting file has Iamb, Ka, Il, Pl, Kd, Od, Ks and "
-                       "eta)"};
+                       "eta; optionally Ke, two_sided, blinn, atten, spot_dir, spot_cutoff and "
+                       "spot_exp; Pl2, Il2 ... for lights 2 to 8)"};
 }
 
 void TestCourseVariants::cameraWarnings() {
@@ -771,8 +772,9 @@ void TestCourseVariants::lightingWarnings_data() {
         << kKeyValueLighting + "C = 1 2 3\nU = 0 0 0\nIa = 1 1 1\n"
         << QStringList{
                "light.txt:11:1: warning: ignored the unknown key 'Ia' (a lighting file "
-               "has Iamb, Ka, Il, Pl, Kd, Od, Ks and eta; a camera has C, N, V, d, hx "
-               "and hy)"};
+               "has Iamb, Ka, Il, Pl, Kd, Od, Ks and eta; optionally Ke, two_sided, blinn, "
+               "atten, spot_dir, spot_cutoff and spot_exp; Pl2, Il2 ... for lights 2 to 8; a "
+               "camera has C, N, V, d, hx and hy)"};
 }
 
 void TestCourseVariants::lightingWarnings() {
@@ -886,7 +888,9 @@ void TestCourseVariants::cameraAndLightingInOneFile() {
         QStringLiteral("scene.txt:9:1: warning: ignored the unknown key 'shadows' (a %1; a %2)");
     const QString cameraKeys = QStringLiteral("camera has C, N, V, d, hx and hy");
     const QString lightingKeys =
-        QStringLiteral("lighting file has Iamb, Ka, Il, Pl, Kd, Od, Ks and eta");
+        QStringLiteral("lighting file has Iamb, Ka, Il, Pl, Kd, Od, Ks and eta; optionally Ke, "
+                       "two_sided, blinn, atten, spot_dir, spot_cutoff and spot_exp; Pl2, Il2 "
+                       "... for lights 2 to 8");
     QCOMPARE(messagesOf(diagnostics),
              QStringList({"scene.txt: note: read as a key = value camera (lines contain '=')",
                           unknown.arg(cameraKeys, lightingKeys),

@@ -155,6 +155,7 @@ private slots:
     void lightingText();
     void kdOneNumberOrThree();
     void errors();
+    void slidesLightingRoundTrip();
     void sharedKeyValueFileKeepsTheOtherPart();
     void lineEndingKept();
     void cameraRoundTrip_data();
@@ -303,22 +304,26 @@ void TestCourseWriters::errors() {
     };
     QCOMPARE(message(rl::writeLightingFile(twoLights(), rl::LightingLayout::Ufpe)),
              QStringLiteral("cannot write 2 lights in the layout UFPE (Pl; ka; Ia; kd; Od; ks; "
-                            "Il; n), which holds exactly one: choose the UFPE multi-light layout"));
+                            "Il; n), which holds exactly one: choose the UFPE multi-light layout or "
+                            "key = value"));
     QCOMPARE(message(rl::writeLightingFile(twoLights(), rl::LightingLayout::Ufrpe)),
              QStringLiteral("cannot write 2 lights in the layout UFRPE (Iamb; Ka; Il; Pl; Kd; "
                             "Od; Ks; n), which holds exactly one: choose the UFPE multi-light "
-                            "layout"));
-    QCOMPARE(message(rl::writeLightingFile(twoLights(), rl::LightingLayout::KeyValue)),
-             QStringLiteral("cannot write 2 lights in the layout key = value, which holds "
-                            "exactly one: choose the UFPE multi-light layout"));
+                            "layout or key = value"));
+    rl::CourseLighting nine = oneLight();
+    nine.lights.resize(9, nine.lights[0]);
+    QCOMPARE(message(rl::writeLightingFile(nine, rl::LightingLayout::KeyValue)),
+             QStringLiteral("cannot write 9 lights in a key = value file, which holds 8 at most "
+                            "(Pl to Pl8)"));
     rl::CourseLighting none = oneLight();
     none.lights.clear();
     QCOMPARE(message(rl::writeLightingFile(none, rl::LightingLayout::UfpeMulti)),
-             QStringLiteral("cannot write lighting without lights: the UFPE multi-light layout "
-                            "holds one light or more"));
+             QStringLiteral("cannot write lighting without lights: the UFPE multi-light and key "
+                            "= value layouts hold one light or more"));
     QCOMPARE(message(rl::writeLightingFile(none, rl::LightingLayout::Ufpe)),
              QStringLiteral("cannot write 0 lights in the layout UFPE (Pl; ka; Ia; kd; Od; ks; "
-                            "Il; n), which holds exactly one: choose the UFPE multi-light layout"));
+                            "Il; n), which holds exactly one: choose the UFPE multi-light layout or "
+                            "key = value"));
     QCOMPARE(message(rl::writeLightingFile(oneLight(), rl::LightingLayout::Auto)),
              QStringLiteral("cannot write lighting in the layout 'auto': choose UFPE, UFPE "
                             "multi-light, UFRPE or key = value"));
@@ -338,8 +343,73 @@ void TestCourseWriters::errors() {
     rl::CourseLighting directional = oneLight();
     directional.lights[0].pWorld.w = 0.0;
     QCOMPARE(message(rl::writeLightingFile(directional, rl::LightingLayout::Ufpe)),
-             QStringLiteral("cannot write a directional light (w = 0): course files hold point "
-                            "lights (x y z)"));
+             QStringLiteral("cannot write a directional light (w = 0) in the layout UFPE (Pl; ka; "
+                            "Ia; kd; Od; ks; Il; n), which holds the course's point lights only: "
+                            "choose key = value"));
+    rl::CourseLighting spot = twoLights();
+    spot.lights[1].spotCutoff = 30.0f;
+    QCOMPARE(message(rl::writeLightingFile(spot, rl::LightingLayout::UfpeMulti)),
+             QStringLiteral("cannot write a spot light in the layout UFPE multi-light (ka; Ia; kd; "
+                            "Od; ks; n; L; L times Pl; Il), which holds the course's point lights "
+                            "only: choose key = value"));
+    rl::CourseLighting blinn = oneLight();
+    blinn.specular = rl::SpecularModel::BlinnPhong;
+    QCOMPARE(message(rl::writeLightingFile(blinn, rl::LightingLayout::Ufrpe)),
+             QStringLiteral("cannot write Blinn-Phong highlights in the layout UFRPE (Iamb; Ka; "
+                            "Il; Pl; Kd; Od; Ks; n), which holds the course's point lights only: "
+                            "choose key = value"));
+}
+
+// The lecture slides' lighting (seed 003) in a key = value file: three lights (a directional
+// one, an attenuated spot, a plain point), emission, one-sided, Blinn-Phong, written in the
+// course's order and then the slides' keys, and read back the same bit for bit.
+void TestCourseWriters::slidesLightingRoundTrip() {
+    rl::CourseLighting l = twoLights();
+    l.material.emission = rl::vec3(12.5f, 0.0f, 3.0f);
+    l.twoSided = false;
+    l.specular = rl::SpecularModel::BlinnPhong;
+    l.lights[0].pWorld = rl::dvec4(1.0, 2.0, -0.5, 0.0);
+    l.lights[1].attenuation = rl::vec3(1.0f, 0.01f, 0.0001f);
+    l.lights[1].spotDirection = rl::dvec3(0.0, -1.0, 0.25);
+    l.lights[1].spotCutoff = 22.5f;
+    l.lights[1].spotExponent = 8.0f;
+    rl::Light third;
+    third.pWorld = rl::dvec4(0.0, 0.0, 10.0, 1.0);
+    third.intensity = rl::vec3(10.0f);
+    l.lights.push_back(third);
+    const auto text = rl::writeLightingFile(l, rl::LightingLayout::KeyValue);
+    QVERIFY2(text.ok(), text.ok() ? "" : text.error().toString().c_str());
+    QCOMPARE(QByteArray::fromStdString(*text),
+             QByteArray("Iamb = 10 20 30\nKa = 0.25\nIl = 40 50 60\nPl = 1 2 -0.5 0\n"
+                        "Kd = 0.5 0.625 0.75\nOd = 0.125 0.25 0.375\nKs = 0.5\neta = 8\n"
+                        "Ke = 12.5 0 3\ntwo_sided = 0\nblinn = 1\nIl2 = 0 128 255\n"
+                        "Pl2 = 820 -150 -200\natten2 = 1 0.01 1e-04\nspot_dir2 = 0 -1 0.25\n"
+                        "spot_cutoff2 = 22.5\nspot_exp2 = 8\nIl3 = 10 10 10\nPl3 = 0 0 10\n"));
+    rl::Diagnostics diagnostics;
+    const auto back = rl::readLightingFile(*text, "slides.txt", diagnostics);
+    QVERIFY2(back.ok(), back.ok() ? "" : back.error().toString().c_str());
+    QCOMPARE(back->lights.size(), std::size_t(3));
+    QCOMPARE(back->material.emission, l.material.emission);
+    QCOMPARE(back->twoSided, false);
+    QCOMPARE(back->specular, rl::SpecularModel::BlinnPhong);
+    for (std::size_t k = 0; k < 3; ++k) {
+        QCOMPARE(back->lights[k].pWorld, l.lights[k].pWorld);
+        QCOMPARE(back->lights[k].intensity, l.lights[k].intensity);
+        QCOMPARE(back->lights[k].attenuation, l.lights[k].attenuation);
+        QCOMPARE(back->lights[k].spotDirection, l.lights[k].spotDirection);
+        QCOMPARE(back->lights[k].spotCutoff, l.lights[k].spotCutoff);
+        QCOMPARE(back->lights[k].spotExponent, l.lights[k].spotExponent);
+    }
+    // Saving it again after the third light and the spot are removed drops their lines.
+    rl::CourseLighting fewer = l;
+    fewer.lights.pop_back();
+    fewer.lights[1].spotCutoff = 180.0f;
+    fewer.lights[1].spotExponent = 0.0f;
+    const auto again = rl::writeLightingFile(fewer, rl::LightingLayout::KeyValue, *text);
+    QVERIFY(again.ok());
+    QVERIFY(!qs(*again).contains(QStringLiteral("Pl3")));
+    QVERIFY(!qs(*again).contains(QStringLiteral("spot")));
+    QVERIFY(qs(*again).contains(QStringLiteral("atten2 = 1 0.01 1e-04\n")));
 }
 
 // One key = value file holds both parts (the readers skip each other's keys): writing the
