@@ -171,6 +171,7 @@ private slots:
     void lightingDetection();
     void lightingErrors_data();
     void lightingErrors();
+    void slidesLighting();
     void lightingWarnings_data();
     void lightingWarnings();
 
@@ -718,6 +719,43 @@ void TestCourseVariants::lightingErrors_data() {
         << kKeyValueCamera << missing
         << "light.txt:7:1: expected the lighting file keys Iamb, Ka, Il, Pl, Kd, Od, Ks and eta, "
            "found none of them (only camera keys)";
+    // The lecture slides' keys (seed 003): each bad value named where it stands.
+    const QByteArray kv = kKeyValueLighting;
+    QTest::newRow("slides: spot cutoff 120")
+        << kv + "spot_cutoff = 120\n"
+        << range
+        << "light.txt:9:15: expected spot_cutoff from 0 to 90 degrees, or 180 (not a spot), "
+           "found 120";
+    QTest::newRow("slides: negative attenuation of light 2")
+        << kv + "Pl2 = 0 0 0\nIl2 = 1 1 1\natten2 = 1 -0.5 0\n"
+        << range
+        << "light.txt:11:12: expected atten2 coefficients of 0 or more (kc kl kq), found -0.5";
+    QTest::newRow("slides: attenuation 0 0 0")
+        << kv + "atten = 0 0 0\n"
+        << range
+        << "light.txt:9:9: expected atten with a coefficient above 0, found 0 0 0 (1 / 0 light)";
+    QTest::newRow("slides: light 3 without light 2")
+        << kv + "Pl3 = 0 0 0\nIl3 = 1 1 1\n"
+        << syntax
+        << "light.txt:9:1: expected light 2 (Pl2, Il2) before light 3, found Pl3 (lights are "
+           "numbered without gaps)";
+    QTest::newRow("slides: light 2 without its colour")
+        << kv + "Pl2 = 0 0 0\n"
+        << missing
+        << "light.txt:9:1: expected a line 'Il2 = ...' (the light colour of light 2), found Pl2 "
+           "without it";
+    QTest::newRow("slides: two_sided 2")
+        << kv + "two_sided = 2\n"
+        << range << "light.txt:9:13: expected 1 or 0 for two_sided, found 2";
+    QTest::newRow("slides: a zero spot direction")
+        << kv + "spot_dir = 0 0 0\nspot_cutoff = 30\n"
+        << range << "light.txt:9:12: expected a spot direction other than 0 0 0 for spot_dir";
+    QTest::newRow("slides: spot exponent 200")
+        << kv + "spot_cutoff = 30\nspot_exp = 200\n"
+        << range << "light.txt:10:12: expected spot_exp from 0 to 128, found 200";
+    QTest::newRow("slides: Pl with five numbers")
+        << QByteArray("Iamb = 10 20 30\nKa = 0.25\nIl = 40 50 60\nPl = 1 2 3 4 5\n") << syntax
+        << "light.txt:4:14: expected 3 or 4 numbers for Pl, found 5";
 }
 
 void TestCourseVariants::lightingErrors() {
@@ -730,6 +768,52 @@ void TestCourseVariants::lightingErrors() {
     QVERIFY(!lighting.ok());
     QCOMPARE(qs(lighting.error().toString()), message);
     QCOMPARE(lighting.error().code, code);
+}
+
+// A key = value file with the lecture slides' lighting (seed 003): a directional light (w = 0),
+// a homogeneous point (w = 2: the point (1, 2, 3)), an attenuated spot, emission, one-sided,
+// Blinn-Phong; and the scene made of it uses them.
+void TestCourseVariants::slidesLighting() {
+    const QByteArray text = kKeyValueLighting +
+                            "Pl = 0 0 -1 0\nKe = 5 0 0\ntwo_sided = 0\nblinn = 1\n"
+                            "Pl2 = 2 4 6 2\nIl2 = 1 2 3\natten2 = 1 0.5 0.25\n"
+                            "spot_dir2 = 0 -1 0\nspot_cutoff2 = 30\nspot_exp2 = 4\n";
+    // Pl is given twice: the first at line 4 (x y z), then again: an error, not a merge.
+    rl::Diagnostics diagnostics;
+    const auto twice = rl::readLightingFile(viewOf(text), "light.txt", diagnostics);
+    QVERIFY(!twice.ok());
+    QCOMPARE(qs(twice.error().toString()),
+             QStringLiteral("light.txt:9:1: expected each key once, found Pl again (first given on "
+                            "line 4)"));
+    QByteArray fixed = text;
+    fixed.replace("Pl = -220 -150 700\n", "");
+    diagnostics = {};
+    const auto lighting = rl::readLightingFile(viewOf(fixed), "light.txt", diagnostics);
+    RL_VERIFY_OK(lighting);
+    QCOMPARE(lighting->lights.size(), std::size_t(2));
+    QCOMPARE(lighting->lights[0].pWorld, rl::dvec4(0.0, 0.0, -1.0, 0.0));
+    QCOMPARE(lighting->lights[1].pWorld, rl::dvec4(1.0, 2.0, 3.0, 1.0));
+    QCOMPARE(lighting->lights[1].intensity, rl::vec3(1.0f, 2.0f, 3.0f));
+    QCOMPARE(lighting->lights[1].attenuation, rl::vec3(1.0f, 0.5f, 0.25f));
+    QCOMPARE(lighting->lights[1].spotDirection, rl::dvec3(0.0, -1.0, 0.0));
+    QCOMPARE(lighting->lights[1].spotCutoff, 30.0f);
+    QCOMPARE(lighting->lights[1].spotExponent, 4.0f);
+    QVERIFY(!lighting->lights[0].spot());
+    QCOMPARE(lighting->material.emission, rl::vec3(5.0f, 0.0f, 0.0f));
+    QVERIFY(!lighting->twoSided);
+    QCOMPARE(lighting->specular, rl::SpecularModel::BlinnPhong);
+    QCOMPARE(messagesOf(diagnostics),
+             QStringList({"light.txt: note: read as a key = value lighting file (lines contain "
+                          "'=')"}));
+
+    rl::CourseSceneParts parts;
+    parts.camera = rl::CourseCamera{};
+    parts.lighting = *lighting;
+    const rl::Scene scene = rl::makeCourseScene(parts, {});
+    QVERIFY(!scene.conventions.flipNormalsTowardViewer);
+    QCOMPARE(scene.lights.size(), std::size_t(2));
+    QCOMPARE(scene.draws.at(0).specular, rl::SpecularModel::BlinnPhong);
+    QCOMPARE(scene.draws.at(0).material.emission, rl::vec3(5.0f, 0.0f, 0.0f));
 }
 
 void TestCourseVariants::lightingWarnings_data() {
@@ -887,10 +971,10 @@ void TestCourseVariants::cameraAndLightingInOneFile() {
     const QString unknown =
         QStringLiteral("scene.txt:9:1: warning: ignored the unknown key 'shadows' (a %1; a %2)");
     const QString cameraKeys = QStringLiteral("camera has C, N, V, d, hx and hy");
-    const QString lightingKeys =
-        QStringLiteral("lighting file has Iamb, Ka, Il, Pl, Kd, Od, Ks and eta; optionally Ke, "
-                       "two_sided, blinn, atten, spot_dir, spot_cutoff and spot_exp; Pl2, Il2 "
-                       "... for lights 2 to 8");
+    const QString lightingKeys = QStringLiteral(
+        "lighting file has Iamb, Ka, Il, Pl, Kd, Od, Ks and eta; optionally Ke, "
+        "two_sided, blinn, atten, spot_dir, spot_cutoff and spot_exp; Pl2, Il2 "
+        "... for lights 2 to 8");
     QCOMPARE(messagesOf(diagnostics),
              QStringList({"scene.txt: note: read as a key = value camera (lines contain '=')",
                           unknown.arg(cameraKeys, lightingKeys),

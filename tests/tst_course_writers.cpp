@@ -302,10 +302,11 @@ void TestCourseWriters::errors() {
     const auto message = [](const auto& result) {
         return result.ok() ? QStringLiteral("(no error)") : qs(result.error().message);
     };
-    QCOMPARE(message(rl::writeLightingFile(twoLights(), rl::LightingLayout::Ufpe)),
-             QStringLiteral("cannot write 2 lights in the layout UFPE (Pl; ka; Ia; kd; Od; ks; "
-                            "Il; n), which holds exactly one: choose the UFPE multi-light layout or "
-                            "key = value"));
+    QCOMPARE(
+        message(rl::writeLightingFile(twoLights(), rl::LightingLayout::Ufpe)),
+        QStringLiteral("cannot write 2 lights in the layout UFPE (Pl; ka; Ia; kd; Od; ks; "
+                       "Il; n), which holds exactly one: choose the UFPE multi-light layout or "
+                       "key = value"));
     QCOMPARE(message(rl::writeLightingFile(twoLights(), rl::LightingLayout::Ufrpe)),
              QStringLiteral("cannot write 2 lights in the layout UFRPE (Iamb; Ka; Il; Pl; Kd; "
                             "Od; Ks; n), which holds exactly one: choose the UFPE multi-light "
@@ -320,10 +321,11 @@ void TestCourseWriters::errors() {
     QCOMPARE(message(rl::writeLightingFile(none, rl::LightingLayout::UfpeMulti)),
              QStringLiteral("cannot write lighting without lights: the UFPE multi-light and key "
                             "= value layouts hold one light or more"));
-    QCOMPARE(message(rl::writeLightingFile(none, rl::LightingLayout::Ufpe)),
-             QStringLiteral("cannot write 0 lights in the layout UFPE (Pl; ka; Ia; kd; Od; ks; "
-                            "Il; n), which holds exactly one: choose the UFPE multi-light layout or "
-                            "key = value"));
+    QCOMPARE(
+        message(rl::writeLightingFile(none, rl::LightingLayout::Ufpe)),
+        QStringLiteral("cannot write 0 lights in the layout UFPE (Pl; ka; Ia; kd; Od; ks; "
+                       "Il; n), which holds exactly one: choose the UFPE multi-light layout or "
+                       "key = value"));
     QCOMPARE(message(rl::writeLightingFile(oneLight(), rl::LightingLayout::Auto)),
              QStringLiteral("cannot write lighting in the layout 'auto': choose UFPE, UFPE "
                             "multi-light, UFRPE or key = value"));

@@ -232,6 +232,122 @@ private slots:
         RL_COMPARE_VEC(s.specular, vec3(10.0f, 20.0f, 0.0f), 1e-5);
     }
 
+    // The lecture slides' lighting (seed 003), worked out by hand.
+    void attenuatedLight() {
+        // A positional light at the eye, Il = 100, kc kl kq = 1, 0.1, 0.01; P' = (0, 0, 10),
+        // N = (0, 0, -1): d = 10, 1 / (1 + 0.1 * 10 + 0.01 * 100) = 1/3. N.L = 1, R = V,
+        // R.V = 1: diffuse 100/3, specular 100/3, ambient 50 * 0.1 = 5; 71.667 in all.
+        ViewLight light{dvec4(0.0, 0.0, 0.0, 1.0), vec3(100.0f)};
+        light.attenuation = vec3(1.0f, 0.1f, 0.01f);
+        light.attenuated = true;
+        LightTerms terms;
+        const PhongSample s =
+            phong(unitMaterial(), vec3(1.0f), vec3(50.0f), &light, 1, vec3(0, 0, 10),
+                  vec3(0, 0, -1), true, SpecularModel::Phong, &terms);
+        RL_COMPARE_NEAR(terms.distance, 10.0, 1e-5);
+        RL_COMPARE_NEAR(terms.attenuation, 1.0 / 3.0, 1e-7);
+        RL_COMPARE_VEC(s.diffuse, vec3(100.0f / 3.0f), 1e-4);
+        RL_COMPARE_VEC(s.specular, vec3(100.0f / 3.0f), 1e-4);
+        RL_COMPARE_VEC(s.colour(), vec3(5.0f + 200.0f / 3.0f), 1e-4);
+        RL_COMPARE_VEC(terms.diffuse, s.diffuse, 0.0);
+        // A directional light is not attenuated (the view transform sets attenuated only
+        // for w != 0).
+        Light directional;
+        directional.pWorld = dvec4(0.0, 0.0, -1.0, 0.0);
+        directional.attenuation = vec3(1.0f, 0.1f, 0.01f);
+        QVERIFY(!directional.attenuated());
+    }
+
+    void spotConeEdge() {
+        // A spot at the eye pointing along +z, cutoff 45 degrees, exponent 2, Il = 100.
+        // P' = (9.9, 0, 10): -L = P'/|P'|, -L.D = 10/14.07125 = 0.710651 >= cos 45 = 0.707107:
+        // inside; spot = 0.710651^2 = 0.505025; N = (0,0,-1), N.L = 0.710651:
+        // diffuse = 100 * 0.505025 * 0.710651 = 35.8897; R.V = 0.01005:
+        // specular = 100 * 0.505025 * 0.01005 = 0.50755.
+        // P' = (10.1, 0, 10): -L.D = 0.703580 < 0.707107: outside, no light from it.
+        Light spot;
+        spot.spotCutoff = 45.0f;
+        QVERIFY(spot.spot());
+        ViewLight light{dvec4(0.0, 0.0, 0.0, 1.0), vec3(100.0f)};
+        light.spot = true;
+        light.spotDirection = vec3(0.0f, 0.0f, 1.0f);
+        light.spotCosCutoff = std::cos(glm::radians(45.0f));
+        light.spotExponent = 2.0f;
+        LightTerms inside;
+        const PhongSample in =
+            phong(unitMaterial(), vec3(1.0f), vec3(50.0f), &light, 1, vec3(9.9f, 0, 10),
+                  vec3(0, 0, -1), true, SpecularModel::Phong, &inside);
+        RL_COMPARE_NEAR(inside.spotCos, 0.710651, 1e-5);
+        RL_COMPARE_NEAR(inside.spot, 0.505025, 1e-5);
+        QVERIFY(!inside.outsideCone);
+        RL_COMPARE_VEC(in.diffuse, vec3(35.8897f), 1e-3);
+        RL_COMPARE_VEC(in.specular, vec3(0.50755f), 1e-3);
+        LightTerms outside;
+        const PhongSample out =
+            phong(unitMaterial(), vec3(1.0f), vec3(50.0f), &light, 1, vec3(10.1f, 0, 10),
+                  vec3(0, 0, -1), true, SpecularModel::Phong, &outside);
+        RL_COMPARE_NEAR(outside.spotCos, 0.703580, 1e-5);
+        QVERIFY(outside.outsideCone);
+        QVERIFY(out.outsideCone);
+        QCOMPARE(outside.spot, 0.0f);
+        RL_COMPARE_VEC(out.colour(), vec3(5.0f), 0.0);
+    }
+
+    void blinnPhongBesidePhong() {
+        // P' = (50, 0, 10), N = (0, 0, -1), light at the eye: L = V = (-0.98058, 0, -0.19612).
+        // Phong: R = 2 (N.L) N - L = (0.98058, 0, -0.19612), R.V = -0.92308 < 0: no highlight.
+        // Blinn-Phong: H = (L + V)/|L + V| = L, N.H = 0.19612: highlight 100 * 0.19612.
+        const ViewLight light{dvec4(0.0, 0.0, 0.0, 1.0), vec3(100.0f)};
+        const PhongSample phongSample = phong(unitMaterial(), vec3(1.0f), vec3(0.0f), &light, 1,
+                                              vec3(50, 0, 10), vec3(0, 0, -1), true);
+        QVERIFY(phongSample.noSpecular);
+        RL_COMPARE_VEC(phongSample.specular, vec3(0.0f), 0.0);
+        const PhongSample blinn =
+            phong(unitMaterial(), vec3(1.0f), vec3(0.0f), &light, 1, vec3(50, 0, 10),
+                  vec3(0, 0, -1), true, SpecularModel::BlinnPhong);
+        QVERIFY(!blinn.noSpecular);
+        RL_COMPARE_NEAR(blinn.rDotV, 0.196116, 1e-5);
+        RL_COMPARE_VEC(blinn.r, vec3(-0.980581f, 0.0f, -0.196116f), 1e-5);
+        RL_COMPARE_VEC(blinn.specular, vec3(19.6116f), 1e-3);
+        RL_COMPARE_VEC(blinn.diffuse, phongSample.diffuse, 0.0);
+    }
+
+    void emissionAndOneSided() {
+        // Ke = (10, 20, 30) is added whatever the lights: with a zero normal (ambient only),
+        // 5 + Ke.
+        Material m = unitMaterial();
+        m.emission = vec3(10.0f, 20.0f, 30.0f);
+        const ViewLight light{dvec4(0.0, 0.0, 0.0, 1.0), vec3(100.0f)};
+        const PhongSample s =
+            phong(m, vec3(1.0f), vec3(50.0f), &light, 1, vec3(0, 0, 10), vec3(0.0f), true);
+        RL_COMPARE_VEC(s.colour(), vec3(15.0f, 25.0f, 35.0f), 0.0);
+        // One-sided: the back of a surface (N = (0,0,1) away from the viewer at the origin)
+        // is not turned round, so the light at the eye is behind it: 5 + Ke only.
+        const PhongSample back =
+            phong(m, vec3(1.0f), vec3(50.0f), &light, 1, vec3(0, 0, 10), vec3(0, 0, 1), false);
+        QVERIFY(back.lightBehind);
+        RL_COMPARE_VEC(back.colour(), vec3(15.0f, 25.0f, 35.0f), 0.0);
+    }
+
+    void perLightTermsAddUp() {
+        // Two lights: a plain one at the eye and an attenuated one at (0, 10, 10) (d = 10,
+        // 1 / (1 + 0.1 * 10) = 0.5). N = (0,0,-1) at P' = (0,0,10): light 2 has N.L = 0
+        // (grazing): no diffuse; its R = -L, R.V = 0: (R.V)^1 = 0, no highlight.
+        ViewLight lights[2] = {{dvec4(0.0, 0.0, 0.0, 1.0), vec3(100.0f)},
+                               {dvec4(0.0, 10.0, 10.0, 1.0), vec3(60.0f)}};
+        lights[1].attenuation = vec3(1.0f, 0.1f, 0.0f);
+        lights[1].attenuated = true;
+        LightTerms terms[2];
+        const PhongSample s =
+            phong(unitMaterial(), vec3(1.0f), vec3(50.0f), lights, 2, vec3(0, 0, 10),
+                  vec3(0, 0, -1), true, SpecularModel::Phong, terms);
+        RL_COMPARE_VEC(terms[0].diffuse, vec3(100.0f), 1e-4);
+        RL_COMPARE_VEC(terms[1].diffuse, vec3(0.0f), 1e-5);
+        RL_COMPARE_NEAR(terms[1].attenuation, 0.5, 1e-7);
+        RL_COMPARE_VEC(s.diffuse, terms[0].diffuse + terms[1].diffuse, 0.0);
+        RL_COMPARE_VEC(s.specular, terms[0].specular + terms[1].specular, 0.0);
+    }
+
     void normalsImageIsTheUsedNormal_data() {
         QTest::addColumn<int>("model");
         QTest::addColumn<bool>("reversed");
