@@ -158,6 +158,26 @@ private slots:
         matte->draws[0].material.ks = 0.8f;
         matte->draws[0].material.shininess = 0.5f;
         QTest::newRow("directional, n = 0.5") << std::make_shared<const Scene>(std::move(*matte));
+        // The lecture slides' lighting: an attenuated spot and a directional light, emission,
+        // Blinn-Phong, one-sided (the kernel takes none of these; flat and Gouraud light
+        // their triangles and vertices with it too).
+        for (auto [name, model] :
+             {std::pair{"phong", ShadingModel::Phong}, std::pair{"flat", ShadingModel::Flat},
+              std::pair{"gouraud", ShadingModel::Gouraud}}) {
+            auto slides = makeBenchmarkScene("sphere-1k", 320, 240, model);
+            QVERIFY(slides);
+            Light& spot = slides->lights[0];
+            spot.attenuation = vec3(1.0f, 0.05f, 0.01f);
+            spot.spotDirection = -dvec3(spot.pWorld);
+            spot.spotCutoff = 12.0f;
+            spot.spotExponent = 3.0f;
+            slides->lights.push_back({dvec4(0.0, 1.0, -1.0, 0.0), vec3(80.0f), {}});
+            slides->draws[0].material.emission = vec3(10.0f, 0.0f, 20.0f);
+            slides->draws[0].specular = SpecularModel::BlinnPhong;
+            slides->conventions.flipNormalsTowardViewer = false;
+            QTest::newRow((std::string("slides' lighting, ") + name).c_str())
+                << std::make_shared<const Scene>(std::move(*slides));
+        }
         // HW2 command files: perspective-correct attributes, textures, Lambert, depth range.
         testing::addHw2Rows({"hw2texture", "hw2clipplane", "hw2sun1g", "hw2depth"});
     }
