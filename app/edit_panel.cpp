@@ -1,6 +1,7 @@
 #include "edit_panel.h"
 
 #include <QAction>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -8,6 +9,7 @@
 #include <QFileInfo>
 #include <QGridLayout>
 #include <QGroupBox>
+#include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QMenu>
@@ -21,6 +23,7 @@
 #include <algorithm>
 #include <iterator>
 
+#include "course_writers.h"
 #include "scene_edits.h"
 
 namespace rasterlab {
@@ -93,8 +96,9 @@ private:
 
 // The course's symbol of each field ("" for the shading model).
 const char* symbolOf(SceneDocument::Field field) {
-    static const char* const kSymbols[] = {"C",  "N",  "V",  "d",  "hx", "hy", "Pl", "Il",
-                                           "Ia", "ka", "kd", "Od", "ks", "n",  ""};
+    static const char* const kSymbols[] = {
+        "C",   "N",  "V",  "d",  "hx", "hy", "Pl", "Il", "directional", "att",   "spot", "cutoff",
+        "exp", "Ia", "ka", "kd", "Od", "ks", "n",  "Ke", "two_sided",   "blinn", ""};
     static_assert(std::size(kSymbols) == std::size_t(SceneDocument::Field::Shading) + 1);
     return kSymbols[int(field)];
 }
@@ -102,23 +106,24 @@ const char* symbolOf(SceneDocument::Field field) {
 bool isColour(SceneDocument::Field field) {
     return field == SceneDocument::Field::LightIntensity ||
            field == SceneDocument::Field::Ambient || field == SceneDocument::Field::Kd ||
-           field == SceneDocument::Field::Od;
+           field == SceneDocument::Field::Od || field == SceneDocument::Field::Emission;
 }
 
-// "x", "y", "z" or "r", "g", "b".
+// "x", "y", "z", "r", "g", "b", or the attenuation's "c", "l", "q" (kc, kl, kq).
 QLatin1Char componentLetter(SceneDocument::Field field, int component) {
+    if (field == SceneDocument::Field::LightAttenuation) return QLatin1Char("clq"[component]);
     return QLatin1Char((isColour(field) ? "rgb" : "xyz")[component]);
 }
 
 bool isLightField(SceneDocument::Field field) {
-    return field == SceneDocument::Field::LightPosition ||
-           field == SceneDocument::Field::LightIntensity;
+    return SceneDocument::isLightField(field);
 }
 
 // The value the document will hold: the lighting's colours and coefficients are floats.
 SceneDocument::Numbers storedAs(SceneDocument::Field field, SceneDocument::Numbers numbers) {
     const auto part = SceneDocument::partOf(field);
-    if (part == SceneDocument::Part::Lighting && field != SceneDocument::Field::LightPosition)
+    if (part == SceneDocument::Part::Lighting && field != SceneDocument::Field::LightPosition &&
+        field != SceneDocument::Field::LightSpotDirection)
         for (double& n : numbers) n = double(float(n));
     return numbers;
 }
@@ -271,19 +276,56 @@ QWidget* EditPanel::buildContent() {
               tr("hy: half the height of the window on the projection plane"), 1e-6, 1e6, 0.1,
               true);
 
-    // Light: Pl, Il of the light chosen.
+    // Light: Pl, Il of the light chosen; directional or not; attenuation; spot.
     QGridLayout* light = group(tr("Light"));
     m_lightSelector = new QComboBox;
     m_lightSelector->setObjectName(QStringLiteral("editLightSelector"));
-    m_lightSelector->setToolTip(tr("The light whose position and colour are shown"));
-    light->addWidget(m_lightSelector, 0, 0, 1, 4);
+    m_lightSelector->setToolTip(tr("The light whose values are shown"));
+    light->addWidget(m_lightSelector, 0, 0, 1, 3);
     connect(m_lightSelector, &QComboBox::currentIndexChanged, this, [this] { showLight(); });
+    m_addLight = new QToolButton;
+    m_addLight->setObjectName(QStringLiteral("editAddLight"));
+    m_addLight->setText(QStringLiteral("+"));
+    m_addLight->setToolTip(tr("Add a light: a copy of the light shown"));
+    connect(m_addLight, &QToolButton::clicked, this, &EditPanel::addLight);
+    m_removeLight = new QToolButton;
+    m_removeLight->setObjectName(QStringLiteral("editRemoveLight"));
+    m_removeLight->setText(QStringLiteral("\u2212"));
+    m_removeLight->setToolTip(tr("Remove the light shown (the scene keeps one light at least)"));
+    connect(m_removeLight, &QToolButton::clicked, this, &EditPanel::removeLight);
+    auto* buttons = new QHBoxLayout;
+    buttons->setSpacing(2);
+    buttons->addWidget(m_addLight);
+    buttons->addWidget(m_removeLight);
+    light->addLayout(buttons, 0, 3, 1, 2);
     addHeader(light, 1, xyz);
     vectorRow(light, 2, Field::LightPosition, QStringLiteral("P<sub>l</sub>"),
-              tr("Pl: the light's position (world)"), -1e6, 1e6, 10.0);
-    addHeader(light, 3, rgb);
-    vectorRow(light, 4, Field::LightIntensity, QStringLiteral("I<sub>l</sub>"),
+              tr("Pl: the light's position (world), or the direction toward it for a directional "
+                 "light"),
+              -1e6, 1e6, 10.0);
+    addCheck(light, 3, Field::LightDirectional, tr("Directional (w = 0)"),
+             tr("A directional light is infinitely far: L is the same everywhere and it is not "
+                "attenuated"));
+    addHeader(light, 4, rgb);
+    vectorRow(light, 5, Field::LightIntensity, QStringLiteral("I<sub>l</sub>"),
               tr("Il: the light's colour, 0 to 255 per channel"), 0.0, 1000.0, 5.0);
+    addHeader(light, 6,
+              {QStringLiteral("k<sub>c</sub>"), QStringLiteral("k<sub>l</sub>"),
+               QStringLiteral("k<sub>q</sub>")});
+    vectorRow(light, 7, Field::LightAttenuation, tr("att"),
+              tr("Attenuation: the light's diffuse and specular terms are divided by kc + kl d + "
+                 "kq d\u00B2, d its distance to the point (1 0 0: none)"),
+              0.0, 1e6, 0.01);
+    addCheck(light, 8, Field::LightSpotCutoff, tr("Spot"),
+             tr("A spot lights only the points within its cutoff angle of its direction"));
+    addHeader(light, 9, xyz);
+    vectorRow(light, 10, Field::LightSpotDirection, QStringLiteral("D"),
+              tr("D: the direction the spot points to (world)"), -1e6, 1e6, 0.1);
+    scalarRow(light, 11, 1, Field::LightSpotCutoff, tr("cut"),
+              tr("The spot's cutoff angle, 0 to 90 degrees"), 0.0, 90.0, 1.0);
+    scalarRow(light, 11, 3, Field::LightSpotExponent, tr("exp"),
+              tr("The spot's exponent: its light falls off as (-L.D)^exp toward the edge"), 0.0,
+              128.0, 1.0);
 
     // Ambient: Ia, ka.
     QGridLayout* ambient = group(tr("Ambient"));
@@ -301,6 +343,10 @@ QWidget* EditPanel::buildContent() {
     material->addWidget(m_kdLink, 1, 4);
     vectorRow(material, 2, Field::Od, QStringLiteral("O<sub>d</sub>"),
               tr("Od: the object's diffuse colour, 0 to 1 per channel"), 0.0, 1.0, 0.05);
+    vectorRow(material, 4, Field::Emission, QStringLiteral("K<sub>e</sub>"),
+              tr("Ke: the light the object gives off by itself, 0 to 255 per channel (added to "
+                 "every lit point)"),
+              0.0, 1000.0, 5.0);
     scalarRow(material, 3, 1, Field::Ks, QStringLiteral("k<sub>s</sub>"),
               tr("ks: the specular coefficient, 0 to 1"), 0.0, 1.0, 0.05);
     scalarRow(material, 3, 3, Field::Shininess, QStringLiteral("n"),
@@ -316,9 +362,102 @@ QWidget* EditPanel::buildContent() {
     m_shading->addItem(tr("Flat (per triangle)"), int(rl::ShadingModel::Flat));
     shading->addWidget(m_shading, 0, 0, 1, 4);
     connect(m_shading, &QComboBox::currentIndexChanged, this, &EditPanel::onShadingChanged);
+    addCheck(shading, 1, Field::TwoSided, tr("Two-sided lighting"),
+             tr("On (the course's rule): where V.N < 0 the normal is turned round, so the back "
+                "of a surface is lit like its front. Off: one-sided, the back keeps a normal "
+                "pointing away"));
+    addCheck(shading, 2, Field::BlinnPhong, tr("Blinn-Phong highlight"),
+             tr("The highlight with the half vector H = (L + V)/|L + V| instead of Phong's "
+                "reflection R: (N.H)^n instead of (R.V)^n"));
 
     groups->addStretch(1);
     return content;
+}
+
+void EditPanel::addCheck(QGridLayout* grid, int row, Field field, const QString& text,
+                         const QString& tip) {
+    auto* check = new QCheckBox(text);
+    check->setObjectName(QStringLiteral("edit_check_") + QLatin1String(symbolOf(field)));
+    check->setToolTip(tip);
+    grid->addWidget(check, row, 0, 1, 5);
+    m_checks.emplace_back(field, check);
+    connect(check, &QCheckBox::toggled, this,
+            [this, field](bool checked) { onCheckToggled(field, checked); });
+}
+
+QCheckBox* EditPanel::checkBox(Field field) const {
+    for (const auto& [f, check] : m_checks)
+        if (f == field) return check;
+    return nullptr;
+}
+
+void EditPanel::onCheckToggled(Field field, bool checked) {
+    const std::size_t light = isLightField(field) ? currentLight() : 0;
+    const SceneDocument::Numbers before = m_document->value(field, light);
+    SceneDocument::Numbers after = before;
+    if (field == Field::LightSpotCutoff)
+        after[0] = checked ? 30.0 : 180.0;
+    else
+        after[0] = checked ? 1.0 : 0.0;
+    if (after == before) return;
+    push(field, light, 0, before, after);
+}
+
+void EditPanel::showChecks(bool lightOnly) {
+    const std::size_t light = currentLight();
+    for (const auto& [field, check] : m_checks) {
+        if (lightOnly && !isLightField(field)) continue;
+        const double v = m_document->value(field, isLightField(field) ? light : 0)[0];
+        const QSignalBlocker blocker(check);
+        check->setChecked(field == Field::LightSpotCutoff ? v != 180.0 : v != 0.0);
+    }
+    // What does not apply to the light shown is greyed: a spot's values when it is no spot,
+    // the attenuation of a directional light.
+    const bool lights = !m_document->parts().lighting.lights.empty();
+    const bool spot = checkBox(Field::LightSpotCutoff)->isChecked();
+    const bool directional = checkBox(Field::LightDirectional)->isChecked();
+    for (const Box& b : m_boxes) {
+        if (b.field == Field::LightSpotDirection || b.field == Field::LightSpotCutoff ||
+            b.field == Field::LightSpotExponent)
+            b.box->setEnabled(lights && spot);
+        else if (b.field == Field::LightAttenuation)
+            b.box->setEnabled(lights && !directional);
+    }
+}
+
+void EditPanel::addLight() {
+    const auto& lights = m_document->parts().lighting.lights;
+    if (!isEditable() || lights.empty() || lights.size() >= 8) return;
+    const rl::Light copy = lights[std::min(currentLight(), lights.size() - 1)];
+    const std::size_t index = lights.size();
+    ++m_session;
+    m_stack->push(new LightListEdit(
+        true, index, copy,
+        [this](bool insert, std::size_t i, const rl::Light& l) { applyLightList(insert, i, l); },
+        tr("Add light %1").arg(index + 1)));
+}
+
+void EditPanel::removeLight() {
+    const auto& lights = m_document->parts().lighting.lights;
+    const std::size_t index = currentLight();
+    if (!isEditable() || lights.size() < 2 || index >= lights.size()) return;
+    ++m_session;
+    m_stack->push(new LightListEdit(
+        false, index, lights[index],
+        [this](bool insert, std::size_t i, const rl::Light& l) { applyLightList(insert, i, l); },
+        tr("Remove light %1").arg(index + 1)));
+}
+
+void EditPanel::applyLightList(bool insert, std::size_t index, const rl::Light& light) {
+    if (!m_pushing) ++m_session;
+    if (insert)
+        m_document->insertLight(index, light);
+    else
+        m_document->takeLight(index);
+    const std::size_t count = m_document->parts().lighting.lights.size();
+    refresh();
+    setCurrentLight(std::min(index, count - 1));
+    emit sceneEdited();
 }
 
 void EditPanel::createActions() {
@@ -388,11 +527,13 @@ void EditPanel::refresh() {
             m_lightSelector->addItem(tr("Light %1 of %2").arg(k + 1).arg(lights));
         m_lightSelector->setCurrentIndex(int(shown));
     }
-    m_lightSelector->setVisible(lights > 1);
+    m_addLight->setEnabled(lights > 0 && lights < 8);
+    m_removeLight->setEnabled(lights > 1);
     for (const Box& b : m_boxes) {
         b.box->setEnabled(!isLightField(b.field) || lights > 0);
         showBox(b);
     }
+    showChecks(false);
     showShading();
     m_saveAsAction->setEnabled(isEditable());
     updateModified();
@@ -414,6 +555,7 @@ void EditPanel::showShading() {
 void EditPanel::showLight() {
     for (const Box& b : m_boxes)
         if (isLightField(b.field)) showBox(b);
+    showChecks(true);
 }
 
 void EditPanel::showField(Field field) {
@@ -423,6 +565,7 @@ void EditPanel::showField(Field field) {
     }
     for (const Box& b : m_boxes)
         if (b.field == field && b.box != m_editing) showBox(b);  // not under the user's fingers
+    showChecks(false);
 }
 
 void EditPanel::onBoxChanged(Field field, int component, double value) {
@@ -554,8 +697,32 @@ void EditPanel::updateFileLabel() {
 }
 
 QString EditPanel::fieldName(Field field, int source, std::size_t light) const {
-    if (field == Field::Shading) return tr("shading");
-    QString name = QLatin1String(symbolOf(field));
+    QString name;
+    switch (field) {
+        case Field::Shading:
+            return tr("shading");
+        case Field::TwoSided:
+            return tr("two-sided lighting");
+        case Field::BlinnPhong:
+            return tr("the highlight's model");
+        case Field::LightDirectional:
+            name = tr("directional");
+            break;
+        case Field::LightSpotCutoff:
+            name = tr("spot cutoff");
+            break;
+        case Field::LightSpotExponent:
+            name = tr("spot exponent");
+            break;
+        case Field::LightSpotDirection:
+            name = tr("spot direction");
+            break;
+        case Field::LightAttenuation:
+            name = tr("attenuation");
+            break;
+        default:
+            name = QLatin1String(symbolOf(field));
+    }
     if (SceneDocument::componentCount(field) == 3 && source >= 0) {
         name += QLatin1Char('.');
         name += componentLetter(field, source);
@@ -595,7 +762,7 @@ bool EditPanel::save(QWidget* parent) {
 }
 
 bool EditPanel::saveAs(Part part, QWidget* parent) {
-    // One filter per layout; a lighting with several lights only fits the multi-light one.
+    // One filter per layout that can hold the part.
     // Each shows every file: course files end in .cfg, .txt, .lux ..., and a filter with
     // extensions would make the dialog rewrite the name typed to its first one.
     QStringList filters;
@@ -610,10 +777,10 @@ bool EditPanel::saveAs(Part part, QWidget* parent) {
             layouts.push_back(int(layout));
         }
     } else {
-        const bool several = m_document->parts().lighting.lights.size() > 1;
+        // Only the layouts that hold this lighting (several lights, the slides' lighting).
+        const rl::CourseLighting& lighting = m_document->parts().lighting;
         for (rl::LightingLayout layout : rl::kLightingLayouts) {
-            if (layout == rl::LightingLayout::Auto ||
-                (several && layout != rl::LightingLayout::UfpeMulti))
+            if (layout == rl::LightingLayout::Auto || !rl::writeLightingFile(lighting, layout).ok())
                 continue;
             if (layout == m_document->lightingFileLayout()) current = int(filters.size());
             filters << QString::fromUtf8(rl::lightingLayoutDescription(layout)) + patterns;

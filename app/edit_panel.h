@@ -23,12 +23,15 @@
 #include <QWidget>
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "scene_document.h"
 
 class QAction;
+class QCheckBox;
 class QComboBox;
+class QGridLayout;
 class QDoubleSpinBox;
 class QLabel;
 class QMenu;
@@ -71,10 +74,14 @@ public:
     // The spin box of one number of a field (component 0..2), for tests and for focus.
     QDoubleSpinBox* spinBox(Field field, int component = 0) const;
     QComboBox* lightSelector() const { return m_lightSelector; }
+    // The check box of a field that is on or off (directional, spot, two-sided, Blinn-Phong).
+    QCheckBox* checkBox(Field field) const;
+    QToolButton* addLightButton() const { return m_addLight; }
+    QToolButton* removeLightButton() const { return m_removeLight; }
     QComboBox* shadingBox() const { return m_shading; }
     // Checked: kd's three channels change together (the UFPE files have one kd).
     QToolButton* kdLinkButton() const { return m_kdLink; }
-    // The light whose Pl and Il are shown.
+    // The light whose values are shown.
     std::size_t currentLight() const;
     void setCurrentLight(std::size_t light);
 
@@ -86,6 +93,10 @@ public slots:
     // Shows the document's values; clears the undo history when a file replaced the camera
     // or the lighting since the last refresh.
     void refresh();
+    // Adds a copy of the light shown after the last one, and shows it; removes the light
+    // shown (not the last one left). Each is one undo step.
+    void addLight();
+    void removeLight();
 
 signals:
     // The document's scene changed (an edit, an undo or redo): render it again.
@@ -105,6 +116,12 @@ private:
     QWidget* buildContent();
     QDoubleSpinBox* addBox(Field field, int component, double minimum, double maximum, double step,
                            bool adaptive = false);
+    // A check box for a field that is on (1) or off (0); for the spot cutoff, on is a spot
+    // (30 degrees when switched on) and off is 180 degrees.
+    void addCheck(QGridLayout* grid, int row, Field field, const QString& text, const QString& tip);
+    void onCheckToggled(Field field, bool checked);
+    void showChecks(bool lightOnly);
+    void applyLightList(bool insert, std::size_t index, const rl::Light& light);
     void createActions();
     void onBoxChanged(Field field, int component, double value);
     void onShadingChanged(int index);
@@ -131,7 +148,10 @@ private:
     QWidget* m_content = nullptr;
     QLabel* m_fileLabel = nullptr;
     std::vector<Box> m_boxes;
+    std::vector<std::pair<Field, QCheckBox*>> m_checks;
     QComboBox* m_lightSelector = nullptr;
+    QToolButton* m_addLight = nullptr;
+    QToolButton* m_removeLight = nullptr;
     QComboBox* m_shading = nullptr;
     QToolButton* m_kdLink = nullptr;
 

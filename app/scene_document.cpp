@@ -196,13 +196,46 @@ int SceneDocument::componentCount(Field field) {
         case Field::V:
         case Field::LightPosition:
         case Field::LightIntensity:
+        case Field::LightAttenuation:
+        case Field::LightSpotDirection:
         case Field::Ambient:
         case Field::Kd:
         case Field::Od:
+        case Field::Emission:
             return 3;
         default:
             return 1;
     }
+}
+
+bool SceneDocument::isLightField(Field field) {
+    switch (field) {
+        case Field::LightPosition:
+        case Field::LightIntensity:
+        case Field::LightDirectional:
+        case Field::LightAttenuation:
+        case Field::LightSpotDirection:
+        case Field::LightSpotCutoff:
+        case Field::LightSpotExponent:
+            return true;
+        default:
+            return false;
+    }
+}
+
+bool SceneDocument::insertLight(std::size_t index, const rl::Light& light) {
+    std::vector<rl::Light>& lights = m_parts.lighting.lights;
+    if (index > lights.size()) return false;
+    lights.insert(lights.begin() + std::ptrdiff_t(index), light);
+    return true;
+}
+
+std::optional<rl::Light> SceneDocument::takeLight(std::size_t index) {
+    std::vector<rl::Light>& lights = m_parts.lighting.lights;
+    if (index >= lights.size() || lights.size() < 2) return std::nullopt;
+    const rl::Light light = lights[index];
+    lights.erase(lights.begin() + std::ptrdiff_t(index));
+    return light;
 }
 
 std::optional<SceneDocument::Part> SceneDocument::partOf(Field field) {
@@ -263,6 +296,24 @@ SceneDocument::Numbers SceneDocument::value(Field field, std::size_t light) cons
             return light < l.lights.size() ? numbersOf(l.lights[light].pWorld) : Numbers{};
         case Field::LightIntensity:
             return light < l.lights.size() ? numbersOf(l.lights[light].intensity) : Numbers{};
+        case Field::LightDirectional:
+            return light < l.lights.size() ? scalarNumbers(l.lights[light].pWorld.w == 0.0 ? 1 : 0)
+                                           : Numbers{};
+        case Field::LightAttenuation:
+            return light < l.lights.size() ? numbersOf(l.lights[light].attenuation) : Numbers{};
+        case Field::LightSpotDirection:
+            return light < l.lights.size() ? numbersOf(l.lights[light].spotDirection) : Numbers{};
+        case Field::LightSpotCutoff:
+            return light < l.lights.size() ? scalarNumbers(l.lights[light].spotCutoff) : Numbers{};
+        case Field::LightSpotExponent:
+            return light < l.lights.size() ? scalarNumbers(l.lights[light].spotExponent)
+                                           : Numbers{};
+        case Field::Emission:
+            return numbersOf(m.emission);
+        case Field::TwoSided:
+            return scalarNumbers(l.twoSided ? 1.0 : 0.0);
+        case Field::BlinnPhong:
+            return scalarNumbers(l.specular == rl::SpecularModel::BlinnPhong ? 1.0 : 0.0);
         case Field::Ambient:
             return numbersOf(l.ambientIntensity);
         case Field::Ka:
@@ -305,10 +356,36 @@ void SceneDocument::setValue(Field field, const Numbers& value, std::size_t ligh
             c.hy = value[0];
             break;
         case Field::LightPosition:
-            if (light < l.lights.size()) l.lights[light].pWorld = rl::dvec4(dvec3Of(value), 1.0);
+            // w stays: a directional light's Pl is its direction.
+            if (light < l.lights.size())
+                l.lights[light].pWorld = rl::dvec4(dvec3Of(value), l.lights[light].pWorld.w);
             break;
         case Field::LightIntensity:
             if (light < l.lights.size()) l.lights[light].intensity = vec3Of(value);
+            break;
+        case Field::LightDirectional:
+            if (light < l.lights.size()) l.lights[light].pWorld.w = value[0] != 0.0 ? 0.0 : 1.0;
+            break;
+        case Field::LightAttenuation:
+            if (light < l.lights.size()) l.lights[light].attenuation = vec3Of(value);
+            break;
+        case Field::LightSpotDirection:
+            if (light < l.lights.size()) l.lights[light].spotDirection = dvec3Of(value);
+            break;
+        case Field::LightSpotCutoff:
+            if (light < l.lights.size()) l.lights[light].spotCutoff = float(value[0]);
+            break;
+        case Field::LightSpotExponent:
+            if (light < l.lights.size()) l.lights[light].spotExponent = float(value[0]);
+            break;
+        case Field::Emission:
+            m.emission = vec3Of(value);
+            break;
+        case Field::TwoSided:
+            l.twoSided = value[0] != 0.0;
+            break;
+        case Field::BlinnPhong:
+            l.specular = value[0] != 0.0 ? rl::SpecularModel::BlinnPhong : rl::SpecularModel::Phong;
             break;
         case Field::Ambient:
             l.ambientIntensity = vec3Of(value);
@@ -343,13 +420,17 @@ bool sameValues(const rl::CourseCamera& a, const rl::CourseCamera& b) {
 bool sameValues(const rl::CourseLighting& a, const rl::CourseLighting& b) {
     const rl::Material &x = a.material, &y = b.material;
     if (!(x.ka == y.ka && x.kd == y.kd && x.od == y.od && x.ks == y.ks &&
-          x.shininess == y.shininess && a.ambientIntensity == b.ambientIntensity &&
-          a.lights.size() == b.lights.size()))
+          x.shininess == y.shininess && x.emission == y.emission &&
+          a.ambientIntensity == b.ambientIntensity && a.twoSided == b.twoSided &&
+          a.specular == b.specular && a.lights.size() == b.lights.size()))
         return false;
-    for (std::size_t k = 0; k < a.lights.size(); ++k)
-        if (a.lights[k].pWorld != b.lights[k].pWorld ||
-            a.lights[k].intensity != b.lights[k].intensity)
+    for (std::size_t k = 0; k < a.lights.size(); ++k) {
+        const rl::Light &p = a.lights[k], &q = b.lights[k];
+        if (p.pWorld != q.pWorld || p.intensity != q.intensity || p.attenuation != q.attenuation ||
+            p.spotDirection != q.spotDirection || p.spotCutoff != q.spotCutoff ||
+            p.spotExponent != q.spotExponent)
             return false;
+    }
     return true;
 }
 

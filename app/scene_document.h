@@ -78,21 +78,39 @@ public:
         D,
         Hx,
         Hy,
-        LightPosition,   // Pl of one light
+        LightPosition,   // Pl of one light (x y z)
         LightIntensity,  // Il of one light
-        Ambient,         // Ia
+        // The lecture slides' lighting (seed 003), of one light: 1 for a directional light
+        // (w = 0, Pl the direction toward it), 0 for a positional one; attenuation kc kl kq;
+        // spot direction, cutoff (degrees, 180: not a spot) and exponent.
+        LightDirectional,
+        LightAttenuation,
+        LightSpotDirection,
+        LightSpotCutoff,
+        LightSpotExponent,
+        Ambient,  // Ia
         Ka,
         Kd,  // per channel
         Od,
         Ks,
-        Shininess,  // n
+        Shininess,   // n
+        Emission,    // Ke
+        TwoSided,    // 1: N turned toward the viewer (the course's), 0: one-sided
+        BlinnPhong,  // 1: Blinn-Phong highlights, 0: Phong's
         Shading,
     };
+    // Whether a field is one light's (set with the light's index).
+    static bool isLightField(Field field);
     using Numbers = std::array<double, 3>;
     static int componentCount(Field field);          // 3 or 1
     static std::optional<Part> partOf(Field field);  // Camera, Lighting, or none (Shading)
     Numbers value(Field field, std::size_t light = 0) const;
     void setValue(Field field, const Numbers& value, std::size_t light = 0);
+    // Lights added or removed (the edit panel's Add and Remove, undoable): insertLight puts
+    // `light` at `index` (at most the count), takeLight removes the light at `index` and
+    // returns it; the lighting keeps one light at least (false / nullopt otherwise).
+    bool insertLight(std::size_t index, const rl::Light& light);
+    std::optional<rl::Light> takeLight(std::size_t index);
 
     // Whether the camera (lighting) differs from its file; the object is never modified.
     bool isModified(Part part) const;

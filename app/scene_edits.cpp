@@ -31,4 +31,18 @@ void FieldEdit::redo() {
     m_apply(m_change.field, m_change.light, m_change.after);
 }
 
+LightListEdit::LightListEdit(bool adding, std::size_t index, const rl::Light& light, Apply apply,
+                             const QString& text)
+    : m_adding(adding), m_index(index), m_light(light), m_apply(std::move(apply)) {
+    setText(text);
+}
+
+void LightListEdit::undo() {
+    m_apply(!m_adding, m_index, m_light);
+}
+
+void LightListEdit::redo() {
+    m_apply(m_adding, m_index, m_light);
+}
+
 }  // namespace rasterlab

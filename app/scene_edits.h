@@ -53,4 +53,23 @@ private:
     Apply m_apply;
 };
 
+// A light added or removed: `light` at `index`. Adding puts it there on redo and takes it
+// away on undo; removing the reverse.
+class LightListEdit : public QUndoCommand {
+public:
+    // Inserts (true) or removes (false) the light at index, and shows the change.
+    using Apply = std::function<void(bool insert, std::size_t index, const rl::Light& light)>;
+
+    LightListEdit(bool adding, std::size_t index, const rl::Light& light, Apply apply,
+                  const QString& text);
+    void undo() override;
+    void redo() override;
+
+private:
+    bool m_adding;
+    std::size_t m_index;
+    rl::Light m_light;
+    Apply m_apply;
+};
+
 }  // namespace rasterlab

@@ -11,6 +11,7 @@
 
 #include <QAbstractButton>
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
@@ -118,6 +119,7 @@ private slots:
     void undoShortcutInASpinBox();
     void kdLinkedOrPerChannel();
     void secondLight();
+    void slidesLighting();
     void shadingIsUndoable();
     void layoutsRemembered();
     void saveWritesTheFileInItsLayout();
@@ -394,12 +396,98 @@ void TestEditPanel::secondLight() {
     QCOMPARE(panel.spinBox(Field::LightPosition, 2)->value(), -200.0);
     QCOMPARE(lights.at(1).pWorld, rl::dvec4(820, -150, -200, 1));
 
-    // One light: no selector.
+    // One light: the selector stays (with Add beside it), Remove is off.
     Fixture g;
     LOAD(g);
     EditPanel single(&g.document);
     single.show();
-    QVERIFY(!single.lightSelector()->isVisible());
+    QCOMPARE(single.lightSelector()->currentText(), QStringLiteral("Light 1 of 1"));
+    QVERIFY(single.addLightButton()->isEnabled());
+    QVERIFY(!single.removeLightButton()->isEnabled());
+}
+
+// The lecture slides' lighting in the panel: a light added (a copy) and removed, each one
+// undo step; directional, spot, attenuation, emission, one-sided, Blinn-Phong set, each
+// undoable, in the scene; the UFPE file cannot hold them (a clear message, the file kept),
+// key = value can, and reads back the same.
+void TestEditPanel::slidesLighting() {
+    REQUIRE_SAMPLES();
+    Fixture f;
+    LOAD(f);
+    EditPanel panel(&f.document);
+    QSignalSpy edited(&panel, &EditPanel::sceneEdited);
+    const auto& lights = f.document.parts().lighting.lights;
+    QCOMPARE(lights.size(), std::size_t(1));
+    panel.addLightButton()->click();
+    QCOMPARE(lights.size(), std::size_t(2));
+    QCOMPARE(lights.at(1).pWorld, lights.at(0).pWorld);
+    QCOMPARE(panel.currentLight(), std::size_t(1));
+    QCOMPARE(panel.lightSelector()->currentText(), QStringLiteral("Light 2 of 2"));
+    QCOMPARE(panel.undoStack()->undoText(), QStringLiteral("Add light 2"));
+    QCOMPARE(f.document.scene()->lights.size(), std::size_t(2));
+    QVERIFY(panel.removeLightButton()->isEnabled());
+
+    // Light 2 becomes a directional light toward +z; light 1 an attenuated spot.
+    panel.spinBox(Field::LightPosition, 0)->setValue(0.0);
+    panel.spinBox(Field::LightPosition, 1)->setValue(0.0);
+    panel.spinBox(Field::LightPosition, 2)->setValue(1.0);
+    panel.checkBox(Field::LightDirectional)->setChecked(true);
+    QCOMPARE(lights.at(1).pWorld, rl::dvec4(0.0, 0.0, 1.0, 0.0));
+    QVERIFY(!panel.spinBox(Field::LightAttenuation, 0)->isEnabled());  // not attenuated
+    panel.setCurrentLight(0);
+    QVERIFY(panel.spinBox(Field::LightAttenuation, 0)->isEnabled());
+    QVERIFY(!panel.spinBox(Field::LightSpotCutoff)->isEnabled());  // no spot yet
+    panel.checkBox(Field::LightSpotCutoff)->setChecked(true);
+    QCOMPARE(lights.at(0).spotCutoff, 30.0f);
+    QVERIFY(panel.spinBox(Field::LightSpotCutoff)->isEnabled());
+    panel.spinBox(Field::LightSpotCutoff)->setValue(20.0);
+    panel.spinBox(Field::LightSpotExponent)->setValue(4.0);
+    panel.spinBox(Field::LightSpotDirection, 2)->setValue(-1.0);
+    panel.spinBox(Field::LightAttenuation, 1)->setValue(0.01);
+    panel.spinBox(Field::Emission, 0)->setValue(10.0);
+    panel.checkBox(Field::TwoSided)->setChecked(false);
+    panel.checkBox(Field::BlinnPhong)->setChecked(true);
+    QCOMPARE(panel.undoStack()->undoText(), QStringLiteral("Change the highlight's model"));
+    const auto scene = f.document.scene();
+    QCOMPARE(scene->lights.at(0).spotCutoff, 20.0f);
+    QCOMPARE(scene->lights.at(0).spotExponent, 4.0f);
+    QCOMPARE(scene->lights.at(0).spotDirection.z, -1.0);
+    QCOMPARE(scene->lights.at(0).attenuation, rl::vec3(1.0f, 0.01f, 0.0f));
+    QCOMPARE(scene->draws.at(0).material.emission, rl::vec3(10.0f, 0.0f, 0.0f));
+    QCOMPARE(scene->draws.at(0).specular, rl::SpecularModel::BlinnPhong);
+    QVERIFY(!scene->conventions.flipNormalsTowardViewer);
+
+    // The UFPE file holds none of it: Save says so and leaves the file.
+    const QByteArray before = contentOf(f.lightingPath);
+    const QString said = answeringDialogs([&] { QVERIFY(!panel.save(Part::Lighting, &panel)); });
+    QCOMPARE(said, QStringLiteral("saveErrorBox: The lighting was not saved. / ") + f.lightingPath +
+                       QStringLiteral(": cannot write 2 lights in the layout UFPE (Pl; ka; Ia; "
+                                      "kd; Od; ks; Il; n), which holds exactly one: choose the "
+                                      "UFPE multi-light layout or key = value"));
+    QCOMPARE(contentOf(f.lightingPath), before);
+    // In key = value it is all kept.
+    const QString keyValue = f.dir.filePath(QStringLiteral("slides.txt"));
+    QVERIFY(f.document.saveLightingAs(keyValue, rl::LightingLayout::KeyValue));
+    SceneDocument again;
+    QVERIFY(again.loadDefault());
+    QVERIFY(again.open(Part::Lighting, keyValue));
+    const rl::CourseLighting& back = again.parts().lighting;
+    QCOMPARE(back.lights.size(), std::size_t(2));
+    QCOMPARE(back.lights.at(0).spotCutoff, 20.0f);
+    QCOMPARE(back.lights.at(1).pWorld, rl::dvec4(0.0, 0.0, 1.0, 0.0));
+    QCOMPARE(back.material.emission, rl::vec3(10.0f, 0.0f, 0.0f));
+    QVERIFY(!back.twoSided);
+    QCOMPARE(back.specular, rl::SpecularModel::BlinnPhong);
+
+    // Undo all of it, step by step, back to the one light of the file.
+    while (panel.undoStack()->canUndo()) panel.undoStack()->undo();
+    QCOMPARE(lights.size(), std::size_t(1));
+    QVERIFY(!lights.at(0).spot());
+    QCOMPARE(f.document.parts().lighting.material.emission, rl::vec3(0.0f));
+    QVERIFY(f.document.parts().lighting.twoSided);
+    QVERIFY(!panel.checkBox(Field::BlinnPhong)->isChecked());
+    QVERIFY(!panel.removeLightButton()->isEnabled());
+    QVERIFY(edited.count() >= 12);
 }
 
 void TestEditPanel::shadingIsUndoable() {
@@ -762,6 +850,7 @@ void TestEditPanel::screenshots() {
     panel.show();
     QVERIFY(QTest::qWaitForWindowExposed(&panel));
     QVERIFY(panel.grab().save(QStringLiteral("/tmp/edit_panel_multi.png")));
+    qInfo("panel width %d", panel.sizeHint().width());
     QVERIFY(panel.sizeHint().width() <= 350);
 
     SceneDocument builtIn;
