@@ -4,6 +4,7 @@
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSignalBlocker>
@@ -63,27 +64,38 @@ AnimationPanel::AnimationPanel(QWidget* parent) : QWidget(parent) {
     m_speed->setObjectName(QStringLiteral("animationSpeed"));
     m_speed->setSuffix(tr(" °/s"));
     form->addRow(tr("Turn:"), m_speed);
-    m_cameraUp = new QCheckBox(tr("about the camera's up (a turntable)"), this);
+    m_cameraUp = new QCheckBox(tr("Turn about the camera's up (a turntable)"), this);
     m_cameraUp->setObjectName(QStringLiteral("animationCameraUp"));
     m_cameraUp->setChecked(true);
-    form->addRow(tr("Axis:"), m_cameraUp);
-    const auto row = [&](std::array<QDoubleSpinBox*, 3>& boxes, double value, double lo, double hi,
-                         const QString& name) {
-        auto* line = new QHBoxLayout;
-        for (int k = 0; k < 3; ++k) {
-            boxes[std::size_t(k)] = numberBox(lo, hi, value, 3, 0.1);
-            boxes[std::size_t(k)]->setObjectName(name + QString::number(k));
-            line->addWidget(boxes[std::size_t(k)]);
-        }
-        return line;
-    };
-    form->addRow(QString(), row(m_axis, 0.0, -1000.0, 1000.0, QStringLiteral("animationAxis")));
-    m_axis[1]->setValue(1.0);
-    form->addRow(tr("Moves (units/s):"),
-                 row(m_velocity, 0.0, -1e6, 1e6, QStringLiteral("animationVelocity")));
-    form->addRow(tr("Scale:"),
-                 row(m_scale, 1.0, -1000.0, 1000.0, QStringLiteral("animationScale")));
+    form->addRow(m_cameraUp);
     layout->addLayout(form);
+    // The three vectors in a grid, a column per world axis, narrow enough for a side dock.
+    auto* grid = new QGridLayout;
+    grid->setHorizontalSpacing(4);
+    const QString axes[] = {QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")};
+    for (int k = 0; k < 3; ++k) {
+        auto* heading = new QLabel(axes[k], this);
+        heading->setAlignment(Qt::AlignCenter);
+        grid->addWidget(heading, 0, k + 1);
+    }
+    const auto row = [&](int r, const QString& label, std::array<QDoubleSpinBox*, 3>& boxes,
+                         double value, double range, const QString& name) {
+        grid->addWidget(new QLabel(label, this), r, 0);
+        for (int k = 0; k < 3; ++k) {
+            QDoubleSpinBox* box = numberBox(-range, range, value, 2, 0.1);
+            box->setObjectName(name + QString::number(k));
+            box->setMinimumWidth(40);
+            box->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+            grid->addWidget(box, r, k + 1);
+            boxes[std::size_t(k)] = box;
+        }
+    };
+    row(1, tr("Axis:"), m_axis, 0.0, 100.0, QStringLiteral("animationAxis"));
+    m_axis[1]->setValue(1.0);
+    row(2, tr("Moves (units/s):"), m_velocity, 0.0, 10000.0, QStringLiteral("animationVelocity"));
+    row(3, tr("Scale:"), m_scale, 1.0, 100.0, QStringLiteral("animationScale"));
+    for (int k = 1; k <= 3; ++k) grid->setColumnStretch(k, 1);
+    layout->addLayout(grid);
 
     m_matrix = new QLabel(this);
     m_matrix->setObjectName(QStringLiteral("animationMatrix"));
