@@ -438,11 +438,15 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
     toggles->addWidget(m_triangleHairs);
     toggles->addWidget(m_vertexHairs);
     toggles->addWidget(m_onlyVisible);
-    toggles->addWidget(m_wrong);
     toggles->addStretch(1);
+    // On a line of its own: the dock keeps the width it had without it.
+    auto* wrongLine = new QHBoxLayout;
+    wrongLine->addWidget(m_wrong);
+    wrongLine->addStretch(1);
     auto* meshLayout = new QVBoxLayout(meshPage);
     meshLayout->setContentsMargins(0, 0, 0, 0);
     meshLayout->addLayout(toggles);
+    meshLayout->addLayout(wrongLine);
     meshLayout->addWidget(m_canvas, 1);
     auto* mapPage = new QWidget(this);
     auto* mapLayout = new QVBoxLayout(mapPage);
