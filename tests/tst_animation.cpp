@@ -407,6 +407,14 @@ private slots:
             cartesian(m * scene.draws[0].worldFromModel * scene.draws[0].mesh->positions[0]);
         RL_COMPARE_VEC(table->model()->worldOf({0, 0}), expected, 1e-9);
         QVERIFY(glm::length(expected - cartesian(scene.draws[0].mesh->positions[0])) > 1.0);
+        // Its explanation names M(t) and the time.
+        window.findChild<QDockWidget*>(QStringLiteral("vertexTableDock"))->raise();
+        window.inspection()->selectVertices({{0, 0}});
+        QTRY_VERIFY_WITH_TIMEOUT(table->explanationText().contains(
+                                     QStringLiteral("World: P = M(t) · worldFromModel · ")) &&
+                                     table->explanationText().contains(
+                                         QStringLiteral("(M: the animation matrix at t = 0.5 s)")),
+                                 kTimeoutMs);
         QCOMPARE(window.inspection()->frame(), frame);
         QVERIFY(window.inspection()->replay());
         auto* matrix = panel->findChild<QLabel*>(QStringLiteral("animationMatrix"));
@@ -417,6 +425,11 @@ private slots:
         panel->setPlaying(true);
         QVERIFY(panel->isPlaying());
         QVERIFY(QTest::qWaitFor([&] { return panel->frame() >= 16; }, kTimeoutMs));
+        QVERIFY(
+            QTest::qWaitFor([&] { return window.currentFrame()->scene->time > 0.5; }, kTimeoutMs));
+        QVERIFY(panel->isPlaying());
+        QVERIFY(!window.inspection()->replay());
+        QVERIFY(!window.replayBuilder()->isBusy());
         // Pause anywhere: that frame is shown and can be stepped through.
         panel->setPlaying(false);
         const double paused = panel->settings().time;
