@@ -15,6 +15,7 @@
 
 #include "accuracy.h"
 #include "accuracy_plot.h"
+#include "animation.h"
 #include "benchmark_scenes.h"
 #include "command_file.h"
 #include "default_scene.h"
@@ -313,13 +314,155 @@ struct SceneOptions {
     }
 };
 
+bool parseVector(const QString& text, rl::dvec3& v) {
+    const QStringList parts = text.split(QLatin1Char(','));
+    if (parts.size() != 3) return false;
+    for (int i = 0; i < 3; ++i) {
+        bool ok = false;
+        v[i] = parts[i].trimmed().toDouble(&ok);
+        if (!ok || !rl::isFinite(v[i])) return false;
+    }
+    return true;
+}
+
+// Seed 002's animation matrix M for render: a turntable (or a motion of one's own) set on
+// every draw, and the time of the frame or the frames to write.
+struct AnimationOptions {
+    QCommandLineOption time{lit("time"),
+                            lit("Render the frame at T seconds of the animation (turns the "
+                                "animation on; default turntable: 36 degrees a second about "
+                                "the camera's up through the object's centre)."),
+                            lit("T")};
+    QCommandLineOption animate{lit("animate"),
+                               lit("Write FRAMES frames of the animation, at t = frame / fps, "
+                                   "as numbered PNGs frame_0000.png ... into the folder "
+                                   "--output names."),
+                               lit("FRAMES")};
+    QCommandLineOption fps{lit("fps"), lit("Frames per second of --animate (default 24)."),
+                           lit("F"), lit("24")};
+    QCommandLineOption turn{lit("turn"),
+                            lit("Degrees a second the object turns (default 36; turns the "
+                                "animation on)."),
+                            lit("DEG")};
+    QCommandLineOption axis{lit("axis"),
+                            lit("World axis of the turn (default: the camera's up, V made "
+                                "perpendicular to N)."),
+                            lit("X,Y,Z")};
+    QCommandLineOption move{lit("move"), lit("Translation in world units a second."), lit("X,Y,Z")};
+    QCommandLineOption scale{lit("scale"),
+                             lit("Scale about the object's centre along the world axes, fixed "
+                                 "in time (a non-uniform one shows why normals take the inverse "
+                                 "transpose of M)."),
+                             lit("X,Y,Z")};
+
+    void addTo(QCommandLineParser& parser) const {
+        parser.addOptions({time, animate, fps, turn, axis, move, scale});
+    }
+    bool any(const QCommandLineParser& parser) const {
+        for (const auto* o : {&time, &animate, &turn, &axis, &move, &scale})
+            if (parser.isSet(*o)) return true;
+        return false;
+    }
+
+    // ExitOk with the animation, the time and the frame count filled in (frames 0 without
+    // --animate), or a usage error's code.
+    int read(const QCommandLineParser& parser, QTextStream& err, rl::Animation& out, double& t,
+             int& frames, double& framesPerSecond) const {
+        const auto number = [&](const QCommandLineOption& option, double& value) {
+            bool ok = false;
+            value = parser.value(option).toDouble(&ok);
+            return ok && rl::isFinite(value);
+        };
+        t = 0.0;
+        if (parser.isSet(time) && !number(time, t))
+            return usageError(
+                err, lit("--time expects a number of seconds, found '%1'").arg(parser.value(time)));
+        frames = 0;
+        if (parser.isSet(animate)) {
+            bool ok = false;
+            frames = parser.value(animate).toInt(&ok);
+            if (!ok || frames < 1 || frames > 100000)
+                return usageError(err, lit("--animate expects a number of frames from 1 to "
+                                           "100000, found '%1'")
+                                           .arg(parser.value(animate)));
+            if (parser.isSet(time))
+                return usageError(err, lit("--time and --animate exclude each other"));
+        }
+        if (!number(fps, framesPerSecond) || !(framesPerSecond > 0.0))
+            return usageError(
+                err, lit("--fps expects a positive number, found '%1'").arg(parser.value(fps)));
+        if (parser.isSet(turn) && !number(turn, out.degreesPerSecond))
+            return usageError(
+                err, lit("--turn expects degrees a second, found '%1'").arg(parser.value(turn)));
+        if (parser.isSet(axis)) {
+            rl::dvec3 a;
+            if (!parseVector(parser.value(axis), a) || a == rl::dvec3(0.0))
+                return usageError(err, lit("--axis expects a non-zero vector X,Y,Z such as "
+                                           "0,1,0, found '%1'")
+                                           .arg(parser.value(axis)));
+            out.axis = a;
+        }
+        if (parser.isSet(move) && !parseVector(parser.value(move), out.velocity))
+            return usageError(
+                err, lit("--move expects X,Y,Z such as 0,0,1, found '%1'").arg(parser.value(move)));
+        if (parser.isSet(scale) && (!parseVector(parser.value(scale), out.scale) ||
+                                    out.scale.x == 0.0 || out.scale.y == 0.0 || out.scale.z == 0.0))
+            return usageError(err, lit("--scale expects X,Y,Z, none zero, such as 2,1,1, found "
+                                       "'%1'")
+                                       .arg(parser.value(scale)));
+        return ExitOk;
+    }
+};
+
+// The scene with the animation on every draw, at time t.
+std::shared_ptr<const rl::Scene> animatedScene(const rl::Scene& scene,
+                                               const rl::Animation& animation, double t) {
+    auto copy = std::make_shared<rl::Scene>(scene);
+    for (rl::Draw& draw : copy->draws) draw.animation = animation;
+    copy->time = t;
+    return copy;
+}
+
+// --animate: frame k at t = k / fps, written to folder/frame_0000.png ...
+int renderAnimation(const rl::Scene& scene, const rl::Animation& animation, int frames,
+                    double framesPerSecond, const QString& folderPath, rl::Diagnostics& diagnostics,
+                    QTextStream& out, QTextStream& err) {
+    const QDir folder(folderPath);
+    if (!QDir().mkpath(folder.path())) {
+        err << folder.path() << ": cannot create the folder\n";
+        return ExitBadInput;
+    }
+    for (int k = 0; k < frames; ++k) {
+        const double t = k / framesPerSecond;
+        const auto frameScene = animatedScene(scene, animation, t);
+        auto trace = rl::renderFrame(frameScene);
+        if (!trace) {
+            printDiagnostics(diagnostics, err);
+            return inputError(err, trace.error());
+        }
+        if (k == 0) {
+            diagnostics.append(trace->diagnostics);
+            printDiagnostics(diagnostics, err);
+        }
+        const QString path = folder.filePath(lit("frame_%1.png").arg(k, 4, 10, QLatin1Char('0')));
+        if (!writePng(rl::colourImage(*trace->shading, *trace->depth, frameScene->conventions),
+                      path, out, err, lit("frame %1, t = %2 s").arg(k).arg(t, 0, 'f', 3)))
+            return ExitBadInput;
+    }
+    out.flush();
+    return ExitOk;
+}
+
 int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     QCommandLineParser parser;
-    parser.setApplicationDescription(lit("Render a course scene to PNG."));
+    parser.setApplicationDescription(
+        lit("Render a course scene to PNG, or the frames of its animation (seed 002's M)."));
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     const QCommandLineOption help({lit("h"), lit("help")}, lit("Show this help."));
     const SceneOptions sceneOptions;
-    const QCommandLineOption output(lit("output"), lit("The PNG to write (required)."),
+    const QCommandLineOption output(lit("output"),
+                                    lit("The PNG to write (required); with --animate, the "
+                                        "folder of the frames."),
                                     lit("FILE.png"));
     const QCommandLineOption depthOutput(lit("depth-output"),
                                          lit("Also write the z-buffer as a grey PNG "
@@ -333,9 +476,11 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
                                      lit("Print the story of one pixel: the triangles that "
                                          "covered it, each depth test, and its Phong terms."),
                                      lit("X,Y"));
+    const AnimationOptions animationOptions;
     parser.addOption(help);
     sceneOptions.addTo(parser);
     parser.addOptions({output, depthOutput, normalsOutput, explain});
+    animationOptions.addTo(parser);
     if (!parser.parse(arguments)) return usageError(err, parser.errorText());
     if (parser.isSet(help)) {
         out << commandHelp(parser, lit("render"));
@@ -360,11 +505,26 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
                                        .arg(settings.height));
     }
 
+    rl::Animation animation;
+    double time = 0.0, framesPerSecond = 24.0;
+    int frames = 0;
+    if (int code = animationOptions.read(parser, err, animation, time, frames, framesPerSecond);
+        code != ExitOk)
+        return code;
+    if (frames > 0 &&
+        (parser.isSet(depthOutput) || parser.isSet(normalsOutput) || parser.isSet(explain)))
+        return usageError(err, lit("--animate writes colour frames only (no --depth-output, "
+                                   "--normals-output or --explain-pixel)"));
+
     rl::Diagnostics diagnostics;
     std::shared_ptr<const rl::Scene> scene;
     if (int code = sceneOptions.load(parser, settings, err, diagnostics, scene); code != ExitOk)
         return code;
     if (!sceneOptions.anyFile(parser)) out << "rendering the embedded default scene\n";
+    if (frames > 0)
+        return renderAnimation(*scene, animation, frames, framesPerSecond, parser.value(output),
+                               diagnostics, out, err);
+    if (animationOptions.any(parser)) scene = animatedScene(*scene, animation, time);
 
     rl::RenderOptions options;
     options.shading.keepNormals = parser.isSet(normalsOutput);

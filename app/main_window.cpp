@@ -22,6 +22,7 @@
 #include <cmath>
 
 #include "accuracy_panel.h"
+#include "animation_panel.h"
 #include "breakpoints_view.h"
 #include "camera_basis.h"
 #include "camera_basis_view.h"
@@ -248,6 +249,15 @@ void MainWindow::createDocks() {
     QDockWidget* accuracyDock =
         addDock(tr("Accuracy"), QStringLiteral("accuracyDock"), m_accuracy, Qt::LeftDockWidgetArea);
     tabifyDockWidget(editDock, accuracyDock);
+    m_animation = new AnimationPanel;
+    QDockWidget* animationDock = addDock(tr("Animation"), QStringLiteral("animationDock"),
+                                         m_animation, Qt::LeftDockWidgetArea, true);
+    tabifyDockWidget(editDock, animationDock);
+    connect(m_animation, &AnimationPanel::changed, this, [this] {
+        m_document.setAnimation(m_animation->settings());
+        requestRender();
+    });
+    connect(m_animation, &AnimationPanel::playingChanged, this, &MainWindow::onAnimationPlaying);
     editDock->raise();
 
     // The stage views, in the lecture's order, tabbed on the right; the pixel inspector below.
@@ -371,6 +381,9 @@ void MainWindow::createActions() {
         });
     }
     exports->addAction(tr("&Stepping Sequence..."), this, &MainWindow::exportSequenceDialog);
+    QAction* exportFrames =
+        exports->addAction(tr("&Animation Frames..."), this, &MainWindow::exportAnimationDialog);
+    exportFrames->setObjectName(QStringLiteral("exportAnimationAction"));
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
@@ -611,6 +624,7 @@ void MainWindow::restoreLayout() {
 
 void MainWindow::adoptDocument(const SceneDocument& document) {
     m_document = document;
+    m_animation->setSettings(m_document.animation());
     m_lastError.clear();
     for (QAction* action : m_shadingGroup->actions())
         action->setChecked(action->data().toInt() ==
@@ -635,6 +649,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
         return;
     }
     m_steppingBar->setPlaying(false);
+    m_animation->setPlaying(false);
     if (m_inspection->presentation()) setPresentationMode(false);
     saveLayout();
     QMainWindow::closeEvent(event);
@@ -776,10 +791,27 @@ void MainWindow::onFrameReady(const RenderedFrame& frame) {
     m_frame = frame;
     m_zbuffer->setFrame(frame.trace);
     m_inspection->setFrame(frame.trace, frame.image);
-    m_replayBuilder->build(frame.trace);
+    m_animation->showScene(*frame.trace->scene);
+    // While the animation plays, a frame is replaced before anyone could step through it: its
+    // replay is built once paused (onAnimationPlaying).
+    if (m_animation->isPlaying())
+        m_replayBuilder->cancel();
+    else
+        m_replayBuilder->build(frame.trace);
     updateTimeLabel();
     refreshMessages();
     refreshSceneSummary();
+}
+
+void MainWindow::onAnimationPlaying(bool playing) {
+    if (playing) {
+        m_cursorToRestore.reset();
+        return;
+    }
+    // Paused: the frame shown can be stepped through. A frame still being rendered builds its
+    // own replay when it arrives.
+    if (m_frame.trace && !m_controller->isBusy() && !m_inspection->replay())
+        m_replayBuilder->build(m_frame.trace);
 }
 
 void MainWindow::onRenderFailed(const QString& message) {

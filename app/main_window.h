@@ -33,6 +33,7 @@ class QToolButton;
 namespace rasterlab {
 
 class AccuracyPanel;
+class AnimationPanel;
 class BreakpointsView;
 class CameraBasisView;
 class EditPanel;
@@ -81,6 +82,10 @@ public:
     bool exportNormalBuffer(const QString& path);
     bool exportDock(const QString& dockName, const QString& path);
     int exportSequence(const QString& folder, int maxImages);
+    // The animation's frames (the animation panel's count, at its frames a second, from
+    // frame 0) as frame_0000.png ... in folder, with a progress dialog that can cancel; the
+    // number written (0 with the error shown when a file cannot be written).
+    int exportAnimationFrames(const QString& folder);
 
     const SceneDocument& document() const { return m_document; }
     std::shared_ptr<const rl::FrameTrace> currentFrame() const { return m_frame.trace; }
@@ -100,6 +105,7 @@ public:
     VertexTableView* vertexTableView() const { return m_vertexTable; }
     PixelInspector* pixelInspector() const { return m_inspector; }
     EditPanel* editPanel() const { return m_edit; }
+    AnimationPanel* animationPanel() const { return m_animation; }
     QStringList recentFiles() const;
     QStringList watchedFiles() const { return m_watcher.files(); }
     // The files the scene shown was read from (built-in parts left out).
@@ -167,6 +173,8 @@ private:
     void exportDisplayedDialog();
     void exportBufferDialog(int which);
     void exportSequenceDialog();
+    void exportAnimationDialog();
+    void onAnimationPlaying(bool playing);
     void about();
     void showShortcuts();
     void updateClickerKeys();
@@ -192,6 +200,7 @@ private:
     ScanlineView* m_scanline = nullptr;
     PixelInspector* m_inspector = nullptr;
     EditPanel* m_edit = nullptr;
+    AnimationPanel* m_animation = nullptr;
     QListWidget* m_messages = nullptr;
     QTextBrowser* m_summary = nullptr;
     QLabel* m_pixelLabel = nullptr;

@@ -1,5 +1,6 @@
 // The main window's exports: the image as displayed (at the cursor, with its overlays), the
-// raw buffers, any dock's view as displayed, and a stepping sequence as numbered PNGs.
+// raw buffers, any dock's view as displayed, a stepping sequence and the animation's frames as
+// numbered PNGs.
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
@@ -8,6 +9,7 @@
 #include <QProgressDialog>
 #include <QStatusBar>
 
+#include "animation_panel.h"
 #include "frame_image_view.h"
 #include "image_io.h"
 #include "main_window.h"
@@ -99,6 +101,56 @@ int MainWindow::exportSequence(const QString& folder, int maxImages) {
     m_inspection->seek(saved);
     statusBar()->showMessage(tr("Exported %1 images to %2").arg(written).arg(folder), 8000);
     return written;
+}
+
+int MainWindow::exportAnimationFrames(const QString& folder) {
+    if (!m_document.isLoaded()) return 0;
+    if (!QDir().mkpath(folder)) {
+        showError(tr("%1: cannot create the folder").arg(folder));
+        return 0;
+    }
+    // The document's scene at each frame's time, rendered here, one after the other; the
+    // window's own frame is left as it is.
+    SceneDocument::Animation animation = m_animation->settings();
+    animation.enabled = true;
+    SceneDocument document = m_document;
+    const int frames = m_animation->frameCount();
+    QProgressDialog progress(tr("Exporting the animation's frames..."), tr("Cancel"), 0, frames,
+                             this);
+    progress.setWindowModality(Qt::WindowModal);
+    progress.setMinimumDuration(500);
+    const QDir dir(folder);
+    int written = 0;
+    for (int k = 0; k < frames; ++k) {
+        animation.time = k / m_animation->framesPerSecond();
+        document.setAnimation(animation);
+        const auto scene = document.scene();
+        auto frame = rl::renderFrame(scene);
+        const QString path =
+            dir.filePath(QStringLiteral("frame_%1.png").arg(k, 4, 10, QLatin1Char('0')));
+        if (!frame) {
+            showError(tr("%1: cannot render the frame: %2")
+                          .arg(path, QString::fromStdString(frame.error().toString())));
+            break;
+        }
+        QString error;
+        if (!savePng(toQImage(rl::colourImage(*frame->shading, *frame->depth, scene->conventions)),
+                     path, &error)) {
+            showError(tr("%1: cannot export the image: %2").arg(path, error));
+            break;
+        }
+        ++written;
+        progress.setValue(written);
+        if (progress.wasCanceled()) break;
+    }
+    statusBar()->showMessage(tr("Exported %1 frames to %2").arg(written).arg(folder), 8000);
+    return written;
+}
+
+void MainWindow::exportAnimationDialog() {
+    const QString folder =
+        QFileDialog::getExistingDirectory(this, tr("Folder for the Animation's Frames"));
+    if (!folder.isEmpty()) exportAnimationFrames(folder);
 }
 
 void MainWindow::exportDisplayedDialog() {

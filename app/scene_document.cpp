@@ -181,10 +181,14 @@ void SceneDocument::setSize(int width, int height) {
 }
 
 std::shared_ptr<const rl::Scene> SceneDocument::scene() const {
-    if (m_commandFile)
-        return std::make_shared<const rl::Scene>(
-            m_commandFile->images[std::size_t(m_imageIndex)].scene);
-    return std::make_shared<const rl::Scene>(rl::makeCourseScene(m_parts, m_settings));
+    auto scene = std::make_shared<rl::Scene>(
+        m_commandFile ? m_commandFile->images[std::size_t(m_imageIndex)].scene
+                      : rl::makeCourseScene(m_parts, m_settings));
+    if (m_animation.enabled) {
+        for (rl::Draw& draw : scene->draws) draw.animation = m_animation.motion;
+        scene->time = m_animation.time;
+    }
+    return scene;
 }
 
 // ---- Editing without files

@@ -65,6 +65,19 @@ public:
 
     std::shared_ptr<const rl::Scene> scene() const;
 
+    // ---- Animation (seed 002's M) ----------------------------------------------------
+    // Part of the session, not of the course files (they have no such field): saving writes
+    // none of it, and opening a file keeps it. When on, every draw of scene() gets the
+    // animation and the scene the time.
+    struct Animation {
+        bool enabled = false;
+        rl::Animation motion;
+        double time = 0.0;  // seconds
+        bool operator==(const Animation&) const = default;
+    };
+    const Animation& animation() const { return m_animation; }
+    void setAnimation(const Animation& animation) { m_animation = animation; }
+
     // ---- Editing without files -------------------------------------------------------
     // The values of the course scene, changed in place one field at a time (the sources,
     // warnings and layouts stay those of the files), as up to three numbers (x y z, r g b, or
@@ -167,6 +180,7 @@ private:
     rl::LightingLayout m_lightingFileLayout = rl::LightingLayout::Ufpe;
     QByteArray m_lastSaved[2];  // camera, lighting
     std::uint64_t m_partsReplaced = 0;
+    Animation m_animation;
 };
 
 }  // namespace rasterlab

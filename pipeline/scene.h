@@ -127,6 +127,17 @@ enum class ColourSource : std::uint8_t {
     Texture,   // the draw's texture at the interpolated (s, t)
 };
 
+// A draw's motion over time (seed 002's animation matrix M; animation.h writes M out). Not
+// part of any course or command file: the GUI's animation panel and the CLI set it.
+struct Animation {
+    double degreesPerSecond = 36.0;  // the turn: 36 degrees a second, a turn in 10 s
+    std::optional<dvec3> axis;       // world; absent: the camera's up (a turntable)
+    std::optional<dvec3> centre;     // world; absent: the centre of the draw's bounding box
+    dvec3 velocity = dvec3(0.0);     // translation, world units per second
+    dvec3 scale = dvec3(1.0);        // about the centre, along the world axes (fixed in time)
+    bool operator==(const Animation&) const = default;
+};
+
 struct Draw {
     std::string name;  // for messages and views, e.g. "calice2.byu"
     std::shared_ptr<const Mesh> mesh;
@@ -145,6 +156,8 @@ struct Draw {
     std::vector<dvec4> clipPlanes;  // view space: keep points with plane . (x, y, z, w) >= 0
     // The lights this draw sees: the first lightCount of the scene's (all by default).
     std::size_t lightCount = std::numeric_limits<std::size_t>::max();
+    // Seed 002's M: when present, the draw is placed by M(scene.time) * worldFromModel.
+    std::optional<Animation> animation;
 };
 
 // What the depth buffer holds.
@@ -253,6 +266,8 @@ struct Scene {
     // silhouette (14 of calice2's 16,907 pixels). False (course files) draws them all, as
     // seed 000 does; the benchmark scenes cull.
     bool cullHiddenBackFaces = false;
+    // The time of this frame in seconds: where the draws with an animation are (animation.h).
+    double time = 0.0;
 
     bool lit() const { return !lights.empty() || ambientIntensity != vec3(0.0f); }
     std::size_t triangleCount() const;

@@ -2,14 +2,19 @@
 
 #include <cmath>
 
+#include "animation.h"
+
 namespace rl {
 
 ViewTransform ViewTransformStage::run(const Scene& scene, const CameraBasis& basis) const {
     ViewTransform out;
+    out.worldFromModel.reserve(scene.draws.size());
     out.viewFromModel.reserve(scene.draws.size());
     out.pView.reserve(scene.draws.size());
     for (const Draw& draw : scene.draws) {
-        const dmat4 viewFromModel = basis.viewFromWorld * draw.worldFromModel;
+        const dmat4 worldFromModel = animatedWorldFromModel(scene, draw);
+        out.worldFromModel.push_back(worldFromModel);
+        const dmat4 viewFromModel = basis.viewFromWorld * worldFromModel;
         out.viewFromModel.push_back(viewFromModel);
         std::vector<dvec4> pView;
         if (draw.mesh) {

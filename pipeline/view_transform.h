@@ -1,7 +1,8 @@
 // Stage 2, view transform (seed 000): every vertex and every light from world to view
 // coordinates, pView = viewFromWorld * worldFromModel * pModel, where viewFromWorld comes
 // from the camera basis ([U; V; N] (P - C) for a course camera). In view space the camera
-// is at the origin and looks along +z: a point is in front when z > 0.
+// is at the origin and looks along +z: a point is in front when z > 0. A draw with an
+// animation is first moved by its M at the scene's time (animation.h, seed 002).
 #pragma once
 
 #include <vector>
@@ -27,6 +28,8 @@ struct ViewLight {
 };
 
 struct ViewTransform {
+    // Per draw: M(t) * worldFromModel (animation.h; worldFromModel itself without an animation)
+    std::vector<dmat4> worldFromModel;
     std::vector<dmat4> viewFromModel;       // per draw
     std::vector<std::vector<dvec4>> pView;  // per draw, per vertex
     std::vector<ViewLight> lights;

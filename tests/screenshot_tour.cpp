@@ -13,11 +13,14 @@
 //   image-black       the image zoomed around that pixel, picked
 //   presentation      presentation mode
 //   strip-command-file  the stage strip of a command file (skipped stages)
+//   animation         the default trefoil's turntable paused mid-turn, stepped by scanline
+//   normals-wrong     the Normals dock under a scale (1, 0.5, 1): right and wrong normals
 //
 //   screenshot_tour --out DIR [--language en|pt_BR] [--samples DIR]
 // (scripts/screenshots.sh runs it in both languages.) The settings are kept in a temporary
 // folder, so no earlier run (recent files, layout, language) changes what is shown.
 #include <QApplication>
+#include <QCheckBox>
 #include <QCommandLineParser>
 #include <QDir>
 #include <QDockWidget>
@@ -28,20 +31,24 @@
 #include <QPolygonF>
 #include <QScrollArea>
 #include <QSettings>
+#include <QSplitter>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolBar>
 #include <QUndoStack>
 #include <QWheelEvent>
 
+#include <climits>
 #include <cstdio>
 #include <vector>
 
+#include "animation_panel.h"
 #include "breakpoints_view.h"
 #include "edit_panel.h"
 #include "frame_image_view.h"
 #include "inspection.h"
 #include "main_window.h"
+#include "normals_view.h"
 #include "pixel_inspector.h"
 #include "replay_builder.h"
 #include "stepping_bar.h"
@@ -411,6 +418,51 @@ int main(int argc, char* argv[]) {
     }
     check(save(&window, file(QStringLiteral("presentation"))));
     window.setPresentationMode(false);
+
+    // Seed 002's animation on the default trefoil: paused at frame 30 (t = 1.25 s, 45
+    // degrees), a pixel picked, stepped by scanline to the middle of the frame.
+    {
+        MainWindow moving;
+        moving.resize(1500, 940);
+        moving.show();
+        if (!waitForReplay(moving)) return 1;
+        AnimationPanel* panel = moving.animationPanel();
+        dock(moving, "animationDock")->raise();
+        panel->findChild<QCheckBox*>(QStringLiteral("animationEnabled"))->setChecked(true);
+        before = moving.inspection()->frame();
+        panel->setFrame(30);
+        if (!waitForNewFrame(moving, before)) return 1;
+        Inspection* in = moving.inspection();
+        const rl::FrameReplay* r = in->replay();
+        // The covered pixel nearest the middle of the image.
+        const rl::Image<std::uint32_t>& holder = in->frame()->depth->triangle;
+        QPoint middle(holder.width() / 2, holder.height() / 2), picked = middle;
+        for (int nearest = INT_MAX, y = 0; y < holder.height(); ++y)
+            for (int x = 0; x < holder.width(); ++x)
+                if (holder.at(x, y) != rl::kNoTriangle &&
+                    (QPoint(x, y) - middle).manhattanLength() < nearest) {
+                    nearest = (QPoint(x, y) - middle).manhattanLength();
+                    picked = QPoint(x, y);
+                }
+        in->pickPixel(picked);
+        in->setGranularity(rl::StepGranularity::Scanline);
+        in->seek(r->next(r->atFragment(static_cast<std::uint32_t>(r->fragments().size() / 2)),
+                         rl::StepGranularity::Scanline));
+        check(save(&moving, file(QStringLiteral("animation"))));
+
+        // The same frame squashed by (1, 0.5, 1): the normals by M leave the surface.
+        before = moving.inspection()->frame();
+        panel->findChild<QDoubleSpinBox*>(QStringLiteral("animationScale1"))->setValue(0.5);
+        if (!waitForNewFrame(moving, before)) return 1;
+        auto* normals = moving.findChild<NormalsView*>(QStringLiteral("normalsView"));
+        normals->setWrongNormals(true);
+        dock(moving, "normalsDock")->raise();
+        moving.inspection()->pickPixel(picked);
+        // Room for the explanation: the two normals of the picked triangle in numbers.
+        if (auto* split = normals->findChild<QSplitter*>()) split->setSizes({560, 620});
+        check(saveDock(dock(moving, "normalsDock"), file(QStringLiteral("normals-wrong")),
+                       QSize(640, 1180)));
+    }
 
     // A command file: no course camera, nothing lit; three stages skipped.
     if (!window.openPath(samples + QStringLiteral("/hw2/hw2depth.txt"))) return 1;

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "animation.h"
 #include "frame_trace.h"
 #include "inspection.h"
 #include "number_text.h"
@@ -39,8 +40,9 @@ const QColor kCloud(170, 170, 180, 130);
 const QColor kFrustum(215, 215, 215);
 const QColor kText(230, 230, 230);
 
-dvec3 worldPoint(const rl::Draw& draw, const rl::dvec4& pModel) {
-    return rl::cartesian(draw.worldFromModel * pModel);
+// Where a vertex is in this frame: moved by the draw's animation matrix M(t), if it has one.
+dvec3 worldPoint(const rl::Scene& scene, const rl::Draw& draw, const rl::dvec4& pModel) {
+    return rl::cartesian(rl::animatedWorldFromModel(scene, draw) * pModel);
 }
 
 // The mesh vertices in world space, at most kMaxCloudPoints of them (every k-th).
@@ -55,9 +57,10 @@ std::vector<dvec3> cloudOf(const rl::Scene& scene) {
     std::size_t i = 0;
     for (const rl::Draw& draw : scene.draws) {
         if (!draw.mesh) continue;
+        const rl::dmat4 worldFromModel = rl::animatedWorldFromModel(scene, draw);
         for (const rl::dvec4& p : draw.mesh->positions) {
             if (i++ % stride != 0) continue;
-            const dvec3 w = worldPoint(draw, p);
+            const dvec3 w = rl::cartesian(worldFromModel * p);
             if (rl::isFinite(w)) cloud.push_back(w);
         }
     }
@@ -632,7 +635,7 @@ void CameraBasisView::refresh() {
     QString example;
     const rl::Scene& scene = *frame->scene;
     if (!scene.draws.empty() && scene.draws[0].mesh && !scene.draws[0].mesh->positions.empty()) {
-        const dvec3 pWorld = worldPoint(scene.draws[0], scene.draws[0].mesh->positions[0]);
+        const dvec3 pWorld = worldPoint(scene, scene.draws[0], scene.draws[0].mesh->positions[0]);
         const dvec3 q = pWorld - b.c;
         const dvec3 pView(glm::dot(b.u, q), glm::dot(b.v, q), glm::dot(b.n, q));
         example = tr("<p>Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), "

@@ -15,7 +15,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
+#include "animation.h"
 #include "frame_image_view.h"
 #include "inspection.h"
 #include "mesh_topology.h"
@@ -38,6 +40,7 @@ const QColor kInconsistentColour(235, 60, 235);
 const QColor kSelectedColour(255, 214, 10);
 const QColor kTriangleHairColour(255, 160, 40);
 const QColor kVertexHairColour(70, 200, 255);
+const QColor kWrongHairColour(150, 255, 80);
 
 // A triangle's centroid in view space.
 rl::dvec3 centroid(const rl::DrawProjection& proj, const std::array<std::uint32_t, 3>& c) {
@@ -242,6 +245,11 @@ void NormalsCanvas::setHairs(bool triangles, bool vertices) {
     redraw();
 }
 
+void NormalsCanvas::setWrongHairs(bool on) {
+    m_wrongHairs = on;
+    redraw();
+}
+
 void NormalsCanvas::resizeEvent(QResizeEvent*) {
     m_cacheValid = false;
 }
@@ -315,6 +323,11 @@ void NormalsCanvas::paintCache() {
         painter.drawLines(m_picture->triangleHairs.data(),
                           static_cast<int>(m_picture->triangleHairs.size()));
     }
+    if (m_wrongHairs && !m_picture->wrongHairs.empty()) {
+        painter.setPen(pen(kWrongHairColour, hair));
+        painter.drawLines(m_picture->wrongHairs.data(),
+                          static_cast<int>(m_picture->wrongHairs.size()));
+    }
 }
 
 void NormalsCanvas::paintEvent(QPaintEvent*) {
@@ -345,6 +358,12 @@ void NormalsCanvas::paintEvent(QPaintEvent*) {
     painter.setPen(hairPen);
     painter.drawLines(m_picture->selectedTriangleHairs.data(),
                       static_cast<int>(m_picture->selectedTriangleHairs.size()));
+    if (m_wrongHairs) {
+        hairPen.setColor(kWrongHairColour);
+        painter.setPen(hairPen);
+        painter.drawLines(m_picture->selectedWrongHairs.data(),
+                          static_cast<int>(m_picture->selectedWrongHairs.size()));
+    }
 }
 
 void NormalsCanvas::wheelEvent(QWheelEvent* event) {
@@ -398,6 +417,12 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
         tr("Hairs only on the triangles that hold a pixel at the end of the frame, and on "
            "their corners"));
     m_onlyVisible->setChecked(true);
+    m_wrong = new QCheckBox(tr("Normals by M (wrong)"), this);
+    m_wrong->setObjectName(QStringLiteral("normalsWrong"));
+    m_wrong->setToolTip(
+        tr("Beside each triangle normal, the model normal carried by viewFromModel itself "
+           "instead of its inverse transpose: it leaves the surface under a non-uniform scale "
+           "(set one in the Animation panel)"));
     m_legend = new QLabel(this);
     m_legend->setObjectName(QStringLiteral("normalsLegend"));
     m_legend->setWordWrap(true);
@@ -414,9 +439,14 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
     toggles->addWidget(m_vertexHairs);
     toggles->addWidget(m_onlyVisible);
     toggles->addStretch(1);
+    // On a line of its own: the dock keeps the width it had without it.
+    auto* wrongLine = new QHBoxLayout;
+    wrongLine->addWidget(m_wrong);
+    wrongLine->addStretch(1);
     auto* meshLayout = new QVBoxLayout(meshPage);
     meshLayout->setContentsMargins(0, 0, 0, 0);
     meshLayout->addLayout(toggles);
+    meshLayout->addLayout(wrongLine);
     meshLayout->addWidget(m_canvas, 1);
     auto* mapPage = new QWidget(this);
     auto* mapLayout = new QVBoxLayout(mapPage);
@@ -459,6 +489,11 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
     connect(m_triangleHairs, &QCheckBox::toggled, this, hairs);
     connect(m_vertexHairs, &QCheckBox::toggled, this, hairs);
     connect(m_onlyVisible, &QCheckBox::toggled, this, [this] {
+        m_geometryDirty = true;
+        if (isVisible()) refreshGeometry();
+    });
+    connect(m_wrong, &QCheckBox::toggled, this, [this](bool on) {
+        m_canvas->setWrongHairs(on);
         m_geometryDirty = true;
         if (isVisible()) refreshGeometry();
     });
@@ -520,6 +555,14 @@ void NormalsView::setVertexHairs(bool on) {
 
 void NormalsView::setOnlyVisibleHairs(bool on) {
     m_onlyVisible->setChecked(on);
+}
+
+void NormalsView::setWrongNormals(bool on) {
+    m_wrong->setChecked(on);
+}
+
+bool NormalsView::wrongNormals() const {
+    return m_wrong->isChecked();
 }
 
 bool NormalsView::onlyVisibleHairs() const {
@@ -712,13 +755,19 @@ void NormalsView::refreshGeometry() {
             const auto hair = [&](const rl::dvec3& foot, const rl::vec3& n) {
                 return hairLine(scene, projection, proj, length, foot, n);
             };
+            const bool wrong = m_wrong->isChecked() && frame->view;
             for (std::size_t t = 0; t < draw.mesh->triangles.size(); ++t) {
                 if (!hairTriangles[d][t]) continue;
                 if (triangleIndex++ % static_cast<std::size_t>(m_picture.triangleHairStep) != 0)
                     continue;
-                if (const auto line =
-                        hair(centroid(proj, draw.mesh->triangles[t]), normals.triangle[t]))
+                const rl::dvec3 foot = centroid(proj, draw.mesh->triangles[t]);
+                if (const auto line = hair(foot, normals.triangle[t]))
                     m_picture.triangleHairs.push_back(*line);
+                if (!wrong) continue;
+                const rl::CarriedNormal carried =
+                    rl::carriedTriangleNormal(frame->view->viewFromModel[d], *draw.mesh, t);
+                if (const auto line = hair(foot, rl::vec3(carried.wrong)))
+                    m_picture.wrongHairs.push_back(*line);
             }
             for (std::uint32_t v = 0; v < proj.originalVertexCount; ++v) {
                 if (!hairVertices[d][v]) continue;
@@ -738,6 +787,7 @@ void NormalsView::refreshSelection() {
     m_picture.selected.reset();
     m_picture.selectedTriangleHairs.clear();
     m_picture.selectedVertexHairs.clear();
+    m_picture.selectedWrongHairs.clear();
     const auto& frame = m_inspection->frame();
     const std::optional<std::uint32_t> t = m_inspection->selectedTriangle();
     if (frame && frame->projection && t && *t < frame->projection->triangles.size()) {
@@ -763,6 +813,11 @@ void NormalsView::refreshSelection() {
             add(m_picture.selectedTriangleHairs, centroid(proj, c), normals.triangle[tri.source]);
             for (std::uint32_t v : c)
                 add(m_picture.selectedVertexHairs, rl::cartesian(proj.pView[v]), normals.vertex[v]);
+            if (m_wrong->isChecked() && frame->view)
+                add(m_picture.selectedWrongHairs, centroid(proj, c),
+                    rl::vec3(rl::carriedTriangleNormal(frame->view->viewFromModel[tri.draw],
+                                                       *scene.draws[tri.draw].mesh, tri.source)
+                                 .wrong));
         }
     }
     m_canvas->update();
@@ -824,6 +879,9 @@ void NormalsView::refreshLegend() {
                 tr("length L = %1 (%2% of the mesh's size)")
                     .arg(number(p.hairLength, 3))
                     .arg(number(p.hairFraction * 100.0, 2));
+        if (m_wrong->isChecked())
+            text += QStringLiteral(" &nbsp; ") + swatch(kWrongHairColour) + QLatin1Char(' ') +
+                    tr("triangle normals carried by M itself (wrong)");
         if (m_onlyVisible->isChecked())
             text += QStringLiteral(", ") +
                     tr("on the %1 triangles seen and their corners").arg(p.hairTriangles);
@@ -838,6 +896,41 @@ void NormalsView::refreshLegend() {
         text += QStringLiteral("<br>") +
                 tr("One triangle in %1 of the wireframe is drawn.").arg(p.wireStep);
     m_legend->setText(text);
+}
+
+QString NormalsView::wrongNormalHtml(const rl::FrameTrace& frame, std::uint32_t d,
+                                     std::uint32_t t) const {
+    const rl::Draw& draw = frame.scene->draws[d];
+    const rl::dmat4& a = frame.view->viewFromModel[d];
+    const rl::CarriedNormal n = rl::carriedTriangleNormal(a, *draw.mesh, t);
+    if (n.nModel == rl::dvec3(0.0)) return {};
+    const auto unit = [](const rl::dvec3& v) {
+        const double l = glm::length(v);
+        return l > 0.0 ? v / l : rl::dvec3(0.0);
+    };
+    const rl::dvec3 e1 = unit(n.edges[0]), e2 = unit(n.edges[1]);
+    const double between =
+        std::acos(std::clamp(glm::dot(n.right, n.wrong), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+    QString html = tr("<p><b>Normals by M, right and wrong</b>: A = viewFromModel = "
+                      "viewFromWorld · M(t) · worldFromModel (M: the animation matrix, the "
+                      "identity when the animation is off). The model-space normal n = %1, "
+                      "det A = %2; the carried edges, made unit: e1 = A (P2 − P1) / |…| = %3, "
+                      "e2 = A (P3 − P1) / |…| = %4.<br>")
+                       .arg(vector(n.nModel, 'f', 4), number(glm::determinant(rl::dmat3(a)), 4),
+                            vector(e1, 'f', 4), vector(e2, 'f', 4));
+    html += tr("Right: A<sup>−T</sup> n, normalised = <b>%1</b>; its dots with e1 and e2 are %2 "
+               "and %3: perpendicular to the surface.<br>")
+                .arg(vector(n.right, 'f', 4), number(glm::dot(n.right, e1), 3, 'f'),
+                     number(glm::dot(n.right, e2), 3, 'f'));
+    html += tr("Wrong: A n, normalised = <b>%1</b>; its dots with e1 and e2 are %2 and %3: "
+               "%4° off the surface's normal.</p>")
+                .arg(vector(n.wrong, 'f', 4), number(glm::dot(n.wrong, e1), 3, 'f'),
+                     number(glm::dot(n.wrong, e2), 3, 'f'), number(between, 4));
+    if (between < 0.01)
+        html +=
+            tr("<p>Here both agree: A has no non-uniform scale. Set a scale such as "
+               "(2, 1, 1) in the Animation panel to see them part.</p>");
+    return html;
 }
 
 void NormalsView::refreshExplanation() {
@@ -893,6 +986,8 @@ void NormalsView::refreshExplanation() {
                 tr("<p>It runs an edge in the same direction as a neighbour does: the two "
                    "are wound inconsistently (magenta), and one of their normals points "
                    "the wrong way.</p>");
+        if (m_wrong->isChecked() && frame->view)
+            html += wrongNormalHtml(*frame, tri.draw, tri.source);
         if (!skipped) {
             const rl::DrawNormals& normals = frame->normals->draws[tri.draw];
             html += tr("<p>Vertex normals: N1 = %1 (vertex %2), N2 = %3 (vertex %4), N3 = %5 "

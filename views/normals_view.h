@@ -5,7 +5,10 @@
 // triangles whose winding disagrees with a neighbour's (a shared edge run the same way by
 // both) in magenta, with their counts. A second tab shows the normal map: per pixel, the
 // normal shading uses there (interpolated with the pixel's barycentrics at the stepping
-// cursor, normalised and turned toward the viewer) as the colour (n + 1) / 2.
+// cursor, normalised and turned toward the viewer) as the colour (n + 1) / 2. On request,
+// beside each triangle normal, the wrong one (seed 002): the model-space normal carried by
+// viewFromModel itself instead of its inverse transpose, which leaves the surface under a
+// non-uniform scale (the animation panel's scale).
 #pragma once
 
 #include <QImage>
@@ -98,6 +101,9 @@ struct NormalsPicture {
     // The selected projected triangle, its hair and its corners' hairs (always drawn).
     std::optional<std::array<QPointF, 3>> selected;
     std::vector<QLineF> selectedTriangleHairs, selectedVertexHairs;
+    // Triangle normals carried by A = viewFromModel itself, not A^-T (rl::carriedTriangleNormal):
+    // drawn when asked, beside the right ones.
+    std::vector<QLineF> wrongHairs, selectedWrongHairs;
 
     std::size_t meshTriangles = 0;  // over every draw
     std::size_t backFaces = 0;      // mesh triangles facing away
@@ -129,6 +135,7 @@ public:
     void setPicture(const NormalsPicture* picture);
     void setLineWidth(double width);
     void setHairs(bool triangles, bool vertices);
+    void setWrongHairs(bool on);
     QSize sizeHint() const override { return {640, 480}; }
 
 signals:
@@ -149,7 +156,7 @@ private:
 
     const NormalsPicture* m_picture = nullptr;
     double m_lineWidth = 1.5;
-    bool m_triangleHairs = true, m_vertexHairs = false;
+    bool m_triangleHairs = true, m_vertexHairs = false, m_wrongHairs = false;
     ZoomPan m_view{this, 4.0};  // image pixels to widget; fits the picture's focus
     QImage m_cache;             // the wireframe and hairs at the current size, zoom and pan
     bool m_cacheValid = false;
@@ -168,6 +175,10 @@ public:
     // Hairs only on the triangles holding a pixel at the end of the frame (and their corners).
     void setOnlyVisibleHairs(bool on);
     bool onlyVisibleHairs() const;
+    // Beside each triangle normal, the normal carried by viewFromModel instead of its inverse
+    // transpose (wrong under a non-uniform scale), and both worked out for the selected one.
+    void setWrongNormals(bool on);
+    bool wrongNormals() const;
     void showNormalMap(bool on);  // the normal-map tab, or the mesh
     QString legendText() const;
     QString explanationText() const;
@@ -183,6 +194,8 @@ private:
     void refreshMap();
     void refreshLegend();
     void refreshExplanation();
+    QString wrongNormalHtml(const rl::FrameTrace& frame, std::uint32_t draw,
+                            std::uint32_t triangle) const;
     void showPixelValue(QPoint pixel);
     bool mapShown() const;
 
@@ -197,6 +210,7 @@ private:
     QCheckBox* m_triangleHairs = nullptr;
     QCheckBox* m_vertexHairs = nullptr;
     QCheckBox* m_onlyVisible = nullptr;
+    QCheckBox* m_wrong = nullptr;
     QLabel* m_legend = nullptr;
     QLabel* m_pixelValue = nullptr;
     QTextBrowser* m_explanation = nullptr;

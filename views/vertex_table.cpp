@@ -89,8 +89,12 @@ rl::dvec4 VertexTableModel::worldHomogeneous(std::uint32_t draw, std::uint32_t v
         const rl::dvec4 a = worldHomogeneous(draw, g.a);
         return a + g.t * (worldHomogeneous(draw, g.b) - a);
     }
+    // M(t) * worldFromModel, as the view transform used it (animation.h).
     const rl::Draw& d = m_frame->scene->draws[draw];
-    return d.worldFromModel * d.mesh->positions[vertex];
+    const rl::dmat4& worldFromModel = m_frame->view && draw < m_frame->view->worldFromModel.size()
+                                          ? m_frame->view->worldFromModel[draw]
+                                          : d.worldFromModel;
+    return worldFromModel * d.mesh->positions[vertex];
 }
 
 rl::dvec3 VertexTableModel::worldOf(VertexRef vertex) const {
@@ -448,7 +452,12 @@ QString VertexTableView::explanationHtml(VertexRef ref) const {
                     .arg(vector(a), vector(b), vector(pView), vector(m_model->worldOf(ref)));
     } else {
         const rl::dvec3 world = m_model->worldOf(ref);
-        if (draw.worldFromModel == rl::dmat4(1.0))
+        if (draw.animation)
+            html += tr("<p>World: P = M(t) · worldFromModel · %1 = <b>%2</b> (M: the "
+                       "animation matrix at t = %3 s)</p>")
+                        .arg(vector(rl::cartesian(draw.mesh->positions[v])), vector(world),
+                             number(frame.scene->time));
+        else if (draw.worldFromModel == rl::dmat4(1.0))
             html += tr("<p>World: P = P<sub>model</sub> = <b>%1</b> (worldFromModel is the "
                        "identity)</p>")
                         .arg(vector(world));
