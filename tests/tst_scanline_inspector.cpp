@@ -54,6 +54,11 @@ struct HandOptions {
     bool depthRangeClip = false;
     ShadingModel model = ShadingModel::Phong;
     vec3 secondLight{0.0f};  // a second light at the first one's place, when not zero
+    // The lecture slides' lighting of the first light and the material.
+    vec3 attenuation{1.0f, 0.0f, 0.0f};
+    float spotCutoff = 180.0f;
+    float spotExponent = 0.0f;
+    vec3 emission{0.0f};
 };
 
 std::shared_ptr<const Scene> handScene(const HandOptions& o = {}) {
@@ -69,6 +74,11 @@ std::shared_ptr<const Scene> handScene(const HandOptions& o = {}) {
     }
     scene.ambientIntensity = vec3(o.ambient);
     scene.lights = {Light{dvec4(o.light, 1.0), o.intensity, {}}};
+    scene.lights[0].attenuation = o.attenuation;
+    scene.lights[0].spotDirection = dvec3(0.0, 0.0, 1.0);  // view (0, 0, 1) too
+    scene.lights[0].spotCutoff = o.spotCutoff;
+    scene.lights[0].spotExponent = o.spotExponent;
+    scene.draws[0].material.emission = o.emission;
     if (o.secondLight != vec3(0.0f))
         scene.lights.push_back({dvec4(o.light, 1.0), o.secondLight, {}});
     Material& m = scene.draws[0].material;
@@ -139,6 +149,7 @@ private slots:
     void historyFollowsTheCursor();
     void phongTermsByHand();
     void severalLights();
+    void slidesLightingByHand();
     void operatorsOnTies();
     void nothingAndEverythingRejected();
     void flags();
@@ -517,6 +528,56 @@ void TestScanlineInspector::severalLights() {
     QCOMPARE(lines.value(3), QStringLiteral("R = 10 × 1 + 100 × 1 × 1 × 1 + 100 × 0.5 × "
                                             "0.816497^2 + 13.33 (the other lights) = 10 + 110 + "
                                             "36.6667 = 156.667 → 156"));
+}
+
+void TestScanlineInspector::slidesLightingByHand() {
+    // (2, 2) as in phongTermsByHand, the light 1.5 away (view (-0.25, 0.25, -1) to P' =
+    // (-0.25, 0.25, 0.5)) attenuated by kc kl kq = 0.5, 1, 0: 1 / (0.5 + 1.5) = 0.5, so
+    // diffuse (50, 50, 6.25) and specular (16.67, 33.33, 8.33); Ke = (5, 0, 0):
+    //   R = 5 + 10 + 50 + 16.667 = 81.667 -> 81, G = 93.333 -> 93, B = 24.583 -> 24.
+    // A spot along +z (cutoff 30, exponent 2): -L.D = 1 at (2, 2), factor 1.
+    HandOptions options;
+    options.attenuation = vec3(0.5f, 1.0f, 0.0f);
+    options.emission = vec3(5.0f, 0.0f, 0.0f);
+    options.spotCutoff = 30.0f;
+    options.spotExponent = 2.0f;
+    Picked p = pick(options, QPoint(2, 2));
+    const auto& b = p.inspector->breakdown();
+    QVERIFY(b);
+    QVERIFY(b->slides);
+    QCOMPARE(b->perLight.size(), std::size_t(1));
+    RL_COMPARE_NEAR(b->perLight[0].distance, 1.5, 1e-6);
+    RL_COMPARE_NEAR(b->perLight[0].attenuation, 0.5, 1e-7);
+    RL_COMPARE_NEAR(b->perLight[0].spot, 1.0, 1e-6);
+    RL_COMPARE_VEC(b->perLight[0].diffuse, vec3(50.0f, 50.0f, 6.25f), 1e-4);
+    RL_COMPARE_VEC(b->perLight[0].specular, vec3(50.0f / 3.0f, 100.0f / 3.0f, 25.0f / 3.0f), 1e-3);
+    RL_COMPARE_VEC(b->emission, vec3(5.0f, 0.0f, 0.0f), 0.0);
+    QCOMPARE(b->bytes, rgb(81, 93, 24));
+    const QStringList& f = b->formula;
+    QCOMPARE(f.value(0), QStringLiteral("I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks "
+                                        "(R.V)^n)"));
+    QVERIFY2(f.contains(QStringLiteral("R = 5 + 10 + 50 + 16.6667 = 81.6667 → 81")),
+             qPrintable(f.join(QLatin1Char('\n'))));
+    QVERIFY(f.contains(QStringLiteral("Ke = (5, 0, 0): the material's own light")));
+    QVERIFY(f.contains(
+        QStringLiteral("  att = 1 / (0.5 + 1 × 1.5 + 0 × 1.5²) = 0.5; spot: −L.D = 1 ≥ cos 30° "
+                       "= 0.866, 1^2 = 1")));
+
+    // (5, 2): P' = (0.125, 0.25, 0.5), -L = (0.375, 0, 1.5)/1.546, -L.D = 0.970143 (14.04
+    // degrees off the axis): outside a 10-degree cone, nothing from the light; inside a
+    // 30-degree one, (16/17) = 0.941176 of it.
+    options.spotCutoff = 10.0f;
+    Picked outside = pick(options, QPoint(5, 2));
+    const auto& o = outside.inspector->breakdown();
+    QVERIFY(o);
+    QVERIFY(o->perLight.at(0).outsideCone);
+    RL_COMPARE_NEAR(o->perLight[0].spotCos, 0.970143, 1e-5);
+    QVERIFY(o->has(rasterlab::LightingFlag::OutsideCone));
+    RL_COMPARE_VEC(o->colour, vec3(15.0f, 10.0f, 10.0f), 1e-5);  // Ke + Ia ka only
+    options.spotCutoff = 30.0f;
+    Picked inside = pick(options, QPoint(5, 2));
+    RL_COMPARE_NEAR(inside.inspector->breakdown()->perLight.at(0).spot, 16.0 / 17.0, 1e-5);
+    QVERIFY(!inside.inspector->breakdown()->has(rasterlab::LightingFlag::OutsideCone));
 }
 
 void TestScanlineInspector::operatorsOnTies() {

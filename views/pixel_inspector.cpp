@@ -665,6 +665,46 @@ QString PixelInspector::formulaText() const {
     return m_breakdown ? m_breakdown->formula.join(QLatin1Char('\n')) : QString();
 }
 
+QStringList PixelInspector::lightLines(std::size_t k, const rl::LightTerms& t,
+                                       const rl::FrameTrace& frame,
+                                       rl::SpecularModel specular) const {
+    const rl::ViewLight& light = frame.view->lights[k];
+    const rl::Light& world = frame.scene->lights[k];
+    QStringList lines;
+    QString where = light.pView.w == 0.0 ? tr("Light %1, directional toward %2 (view), Il = %3")
+                                         : tr("Light %1 at %2 (view), Il = %3");
+    lines << where.arg(k + 1).arg(vector3(rl::vec3(light.pView)), vector3(light.intensity));
+    if (t.atPoint) {
+        lines << tr("  at the point itself (L = 0): nothing");
+        return lines;
+    }
+    QStringList factors;
+    if (light.attenuated)
+        factors << tr("att = 1 / (%1 + %2 × %3 + %4 × %3²) = %5")
+                       .arg(num(light.attenuation.x), num(light.attenuation.y), num(t.distance),
+                            num(light.attenuation.z), num(t.attenuation, 4));
+    else if (light.pView.w != 0.0)
+        factors << tr("d = %1, not attenuated").arg(num(t.distance));
+    if (light.spot)
+        factors << (t.outsideCone ? tr("spot: −L.D = %1 < cos %2° = %3, outside the cone: 0")
+                                        .arg(num(t.spotCos, 4), num(world.spotCutoff),
+                                             num(light.spotCosCutoff, 4))
+                                  : tr("spot: −L.D = %1 ≥ cos %2° = %3, %1^%4 = %5")
+                                        .arg(num(t.spotCos, 4), num(world.spotCutoff),
+                                             num(light.spotCosCutoff, 4), num(light.spotExponent),
+                                             num(t.spot, 4)));
+    if (!factors.isEmpty()) lines << QStringLiteral("  ") + factors.join(QStringLiteral("; "));
+    const QString highlight =
+        specular == rl::SpecularModel::BlinnPhong ? QStringLiteral("N.H") : QStringLiteral("R.V");
+    if (t.behind)
+        lines << tr("  N.L = %1 < 0: behind the surface, nothing").arg(num(t.nDotL));
+    else
+        lines << tr("  N.L = %1, %2 = %3: diffuse %4, specular %5")
+                     .arg(num(t.nDotL), highlight, num(t.rDotV), vector3(t.diffuse),
+                          vector3(t.specular));
+    return lines;
+}
+
 void PixelInspector::updateBreakdown() {
     const std::shared_ptr<const rl::FrameTrace>& frame = m_inspection->frame();
     const PixelHistoryRow* row = m_selected >= 0 && m_selected < static_cast<int>(m_rows.size())
@@ -752,6 +792,44 @@ void PixelInspector::updateBreakdown() {
             flag(LightingFlag::NoSpecular,
                  tr("R.V < 0: the reflected ray points away from the viewer; no specular."));
     }
+    // The course's model light by light: the same call as the shading stage's, at the same
+    // point (P' for Phong; for flat, the barycentre of the whole triangle with its normal).
+    if (lit && draw.lighting == rl::LightingModel::CoursePhong && frame->view) {
+        b.emission = s.emission;
+        rl::vec3 pView = event->pView, nView = event->nInterpolated;
+        if (model == rl::ShadingModel::Flat) {
+            const auto& corners = mesh.triangles[tri.source];
+            std::array<rl::vec3, 3> p;
+            for (std::size_t k = 0; k < 3; ++k)
+                p[k] = rl::vec3(rl::cartesian(proj.pView[corners[k]]));
+            const float third = 1.0f / 3.0f;
+            pView = p[0] + third * (p[1] - p[0]) + third * (p[2] - p[0]);
+            nView = frame->normals && !frame->normals->skipped
+                        ? frame->normals->draws[tri.draw].triangle[tri.source]
+                        : rl::vec3(0.0f);
+        }
+        b.perLight.resize(b.lights);
+        if (b.lights > 0)
+            rl::phong(m, b.objectColour, scene.ambientIntensity, frame->view->lights.data(),
+                      b.lights, pView, nView, conv.flipNormalsTowardViewer, draw.specular,
+                      b.perLight.data());
+        b.slides = m.emission != rl::vec3(0.0f) || draw.specular != rl::SpecularModel::Phong;
+        for (std::size_t k = 0; k < b.lights; ++k)
+            b.slides = b.slides || !frame->view->lights[k].plain() ||
+                       frame->view->lights[k].pView.w == 0.0;
+        for (std::size_t k = 0; k < b.lights; ++k)
+            if (b.perLight[k].outsideCone && !b.perLight[k].behind)
+                flag(LightingFlag::OutsideCone,
+                     tr("Outside the cone of light %1: −L.D = %2 is below cos %3° = %4; it adds "
+                        "nothing here.")
+                         .arg(k + 1)
+                         .arg(num(b.perLight[k].spotCos, 4), num(scene.lights[k].spotCutoff),
+                              num(frame->view->lights[k].spotCosCutoff, 4)));
+        if (!conv.flipNormalsTowardViewer && !s.noNormal && glm::dot(s.n, s.v) < 0.0f)
+            flag(LightingFlag::OneSided,
+                 tr("One-sided lighting: the back of the surface is seen (V.N < 0) and N is not "
+                    "turned toward the viewer."));
+    }
     const float scale = conv.colourScale;
     for (int c = 0; c < 3; ++c) {
         if (event->colour[c] > scale) {
@@ -807,14 +885,22 @@ void PixelInspector::updateBreakdown() {
                 f << tr(
                     "Flat shading: evaluated once, at the triangle's barycentre with the "
                     "triangle's normal; every pixel of the triangle gets this colour.");
-            if (b.lights > 1)
+            if (b.lights > 1 && !(course && b.slides))
                 f << tr("%1 lights: the diffuse and specular terms are sums over them; the "
                         "numbers filled in are the first light's.")
                          .arg(b.lights);
             const rl::vec3 il = b.lights > 0 ? frame->view->lights[0].intensity : rl::vec3(0.0f);
             const bool noLight = b.lights == 0 || s.noNormal || s.lightAtPoint;
             const rl::vec3 od = b.objectColour;
-            if (course) {
+            if (course && b.slides) {
+                f << (draw.specular == rl::SpecularModel::BlinnPhong
+                          ? tr("I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)")
+                          : tr("I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)"));
+                f << tr(
+                    "att = 1 / (kc + kl d + kq d²) for a positional light, 1 for a "
+                    "directional one; spot = (−L.D)^exp inside the cone, 0 outside, 1 for "
+                    "a light that is no spot.");
+            } else if (course) {
                 f << tr("I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n");
                 if (!noLight && s.lightBehind)
                     f << QStringLiteral("N.L = %1 < 0").arg(num(s.nDotL));
@@ -833,51 +919,67 @@ void PixelInspector::updateBreakdown() {
                 else if (!noLight)
                     f << QStringLiteral("N.L = %1").arg(num(s.nDotL));
             }
-            for (int c = 0; c < 3; ++c) {
-                const auto k = static_cast<std::size_t>(c);
-                QStringList parts;
-                float first = 0.0f;  // the first light's diffuse and specular
-                if (course)
-                    parts << QStringLiteral("%1 × %2").arg(num(scene.ambientIntensity[c]),
-                                                           num(m.ka));
-                if (noLight || s.lightBehind) {
-                    parts << QStringLiteral("0");
-                } else {
-                    parts << (course ? QStringLiteral("%1 × %2 × %3 × %4")
-                                           .arg(num(il[c]), num(od[c]), num(m.kd[c]), num(s.nDotL))
-                                     : QStringLiteral("%1 × %2 × %3")
-                                           .arg(num(il[c]), num(od[c]), num(s.nDotL)));
-                    first += course ? il[c] * od[c] * m.kd[c] * s.nDotL : il[c] * od[c] * s.nDotL;
-                    if (course) {
-                        if (s.noSpecular) {
-                            parts << QStringLiteral("0");
-                        } else {
-                            parts << QStringLiteral("%1 × %2 × %3^%4")
-                                         .arg(num(il[c]), num(m.ks), num(s.rDotV),
-                                              num(m.shininess));
-                            if (m.ks != 0.0f)
-                                first += il[c] * m.ks * rl::fastPow(s.rDotV, m.shininess);
-                        }
-                    } else if (m.shininess > 0.0f) {
-                        parts << QStringLiteral("%1 × %2^%3")
-                                     .arg(num(il[c]), num(s.rDotV), num(m.shininess));
-                        first += il[c] * rl::fastPow(s.rDotV, m.shininess);
-                    }
+            if (course && b.slides) {
+                // Ke + Ia ka + each light's diffuse and specular, light by light below.
+                for (int c = 0; c < 3; ++c) {
+                    const auto k = static_cast<std::size_t>(c);
+                    QStringList sums;
+                    sums << num(b.emission[c]) << num(b.ambient[c]);
+                    for (const rl::LightTerms& t : b.perLight)
+                        sums << num(t.diffuse[c]) << num(t.specular[c]);
+                    f << QStringLiteral("%1 = %2 = %3 → %4")
+                             .arg(channelNames()[k], sums.join(QStringLiteral(" + ")),
+                                  num(event->colour[c]), byteOf(c));
                 }
-                const float others = b.diffuse[c] + b.specular[c] - first;
-                if (b.lights > 1) parts << tr("%1 (the other lights)").arg(num(others, 4));
-                QStringList sums;
-                if (course) sums << num(b.ambient[c]);
-                sums << num(b.diffuse[c]);
-                if (course || m.shininess > 0.0f) sums << num(b.specular[c]);
-                // The terms' values between the formula and the total, when there are several.
-                const QString values =
-                    parts.size() > 1 && sums.size() > 1
-                        ? QStringLiteral(" = ") + sums.join(QStringLiteral(" + "))
-                        : QString();
-                f << QStringLiteral("%1 = %2%3 = %4 → %5")
-                         .arg(channelNames()[k], parts.join(QStringLiteral(" + ")), values,
-                              num(event->colour[c]), byteOf(c));
+            } else {
+                for (int c = 0; c < 3; ++c) {
+                    const auto k = static_cast<std::size_t>(c);
+                    QStringList parts;
+                    float first = 0.0f;  // the first light's diffuse and specular
+                    if (course)
+                        parts << QStringLiteral("%1 × %2").arg(num(scene.ambientIntensity[c]),
+                                                               num(m.ka));
+                    if (noLight || s.lightBehind) {
+                        parts << QStringLiteral("0");
+                    } else {
+                        parts << (course
+                                      ? QStringLiteral("%1 × %2 × %3 × %4")
+                                            .arg(num(il[c]), num(od[c]), num(m.kd[c]), num(s.nDotL))
+                                      : QStringLiteral("%1 × %2 × %3")
+                                            .arg(num(il[c]), num(od[c]), num(s.nDotL)));
+                        first +=
+                            course ? il[c] * od[c] * m.kd[c] * s.nDotL : il[c] * od[c] * s.nDotL;
+                        if (course) {
+                            if (s.noSpecular) {
+                                parts << QStringLiteral("0");
+                            } else {
+                                parts << QStringLiteral("%1 × %2 × %3^%4")
+                                             .arg(num(il[c]), num(m.ks), num(s.rDotV),
+                                                  num(m.shininess));
+                                if (m.ks != 0.0f)
+                                    first += il[c] * m.ks * rl::fastPow(s.rDotV, m.shininess);
+                            }
+                        } else if (m.shininess > 0.0f) {
+                            parts << QStringLiteral("%1 × %2^%3")
+                                         .arg(num(il[c]), num(s.rDotV), num(m.shininess));
+                            first += il[c] * rl::fastPow(s.rDotV, m.shininess);
+                        }
+                    }
+                    const float others = b.diffuse[c] + b.specular[c] - first;
+                    if (b.lights > 1) parts << tr("%1 (the other lights)").arg(num(others, 4));
+                    QStringList sums;
+                    if (course) sums << num(b.ambient[c]);
+                    sums << num(b.diffuse[c]);
+                    if (course || m.shininess > 0.0f) sums << num(b.specular[c]);
+                    // The terms' values between the formula and the total, when there are several.
+                    const QString values =
+                        parts.size() > 1 && sums.size() > 1
+                            ? QStringLiteral(" = ") + sums.join(QStringLiteral(" + "))
+                            : QString();
+                    f << QStringLiteral("%1 = %2%3 = %4 → %5")
+                             .arg(channelNames()[k], parts.join(QStringLiteral(" + ")), values,
+                                  num(event->colour[c]), byteOf(c));
+                }
             }
             if (course)
                 f << tr("Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6")
@@ -885,6 +987,12 @@ void PixelInspector::updateBreakdown() {
                               vector3(m.kd), num(m.ks));
             else
                 f << tr("Il = %1, O = %2").arg(vector3(il), vector3(od));
+            if (course && (b.slides || b.lights > 1)) {
+                if (b.emission != rl::vec3(0.0f))
+                    f << tr("Ke = %1: the material's own light").arg(vector3(b.emission));
+                for (std::size_t k = 0; k < b.perLight.size(); ++k)
+                    f << lightLines(k, b.perLight[k], *frame, draw.specular);
+            }
             break;
         }
     }
@@ -1015,14 +1123,30 @@ void PixelInspector::showBreakdown() {
     } else if (b.lighting == rl::LightingModel::Unlit) {
         segments.push_back({tr("object colour"), QColor(170, 170, 170), b.unlit});
     } else {
+        if (b.emission != rl::vec3(0.0f))
+            segments.push_back({tr("emission"), QColor(200, 110, 200), b.emission});
         if (b.lighting == rl::LightingModel::CoursePhong)
             segments.push_back({tr("ambient"), QColor(110, 110, 125), b.ambient});
-        segments.push_back({tr("diffuse"), QColor(70, 150, 220), b.diffuse});
-        const rl::Draw& draw =
-            m_inspection->frame()
-                ->scene->draws[m_inspection->frame()->projection->triangles[b.event.triangle].draw];
-        if (b.lighting == rl::LightingModel::CoursePhong || draw.material.shininess > 0.0f)
-            segments.push_back({tr("specular"), QColor(235, 235, 190), b.specular});
+        if (b.perLight.size() > 1) {
+            // Light by light: each light's diffuse and specular, in shades of its own.
+            for (std::size_t k = 0; k < b.perLight.size(); ++k) {
+                const int shade = int(k % 4) * 30;
+                segments.push_back({tr("diffuse %1").arg(k + 1),
+                                    QColor(70 + shade, 150 - shade / 2, 220 - shade),
+                                    b.perLight[k].diffuse});
+                segments.push_back({tr("specular %1").arg(k + 1),
+                                    QColor(235, 235 - shade, 190 - shade), b.perLight[k].specular});
+            }
+        } else {
+            segments.push_back({tr("diffuse"), QColor(70, 150, 220), b.diffuse});
+            const rl::Draw& draw =
+                m_inspection->frame()
+                    ->scene
+                    ->draws[m_inspection->frame()->projection->triangles[b.event.triangle].draw];
+            if (b.perLight.size() <= 1 &&
+                (b.lighting == rl::LightingModel::CoursePhong || draw.material.shininess > 0.0f))
+                segments.push_back({tr("specular"), QColor(235, 235, 190), b.specular});
+        }
     }
     m_bars->setBars(std::move(segments), b.colour,
                     m_inspection->frame()->scene->conventions.colourScale, m_presenting);

@@ -61,6 +61,8 @@ enum class LightingFlag : std::uint8_t {
     Clamped,       // a channel above the colour scale
     ZeroNormal,    // N = 0: ambient only
     LightAtPoint,  // L = 0: the light sits on the point
+    OutsideCone,   // outside a spot light's cone: no light from it
+    OneSided,      // one-sided lighting: N not turned toward the viewer
 };
 
 // The lighting of one fragment, as the frame's shading stage works it out.
@@ -72,7 +74,14 @@ struct LightingBreakdown {
     std::size_t lights = 0;  // the lights the draw sees
     // The terms per channel, in the scene's colour scale: Phong and flat shading.
     rl::vec3 ambient = rl::vec3(0.0f), diffuse = rl::vec3(0.0f), specular = rl::vec3(0.0f);
-    rl::vec3 unlit = rl::vec3(0.0f);         // a draw that is not lit: the object colour
+    rl::vec3 unlit = rl::vec3(0.0f);     // a draw that is not lit: the object colour
+    rl::vec3 emission = rl::vec3(0.0f);  // Ke (the course's model)
+    // The course's model: what each light gives (attenuation, spot, N.L, R.V or N.H, its
+    // diffuse and specular), from the same code as the render (rl::phong's perLight).
+    std::vector<rl::LightTerms> perLight;
+    // The lecture slides' lighting is in play (attenuation, spots, directional lights,
+    // emission, Blinn-Phong): the formula is written with the light factors.
+    bool slides = false;
     rl::vec3 objectColour = rl::vec3(0.0f);  // Od (O for command files) at the point
     // Gouraud: the weights (alpha, beta, gamma) and the vertices' colours they mix.
     std::array<float, 3> weights{};
@@ -116,6 +125,9 @@ private:
     void rebuildHistory();
     bool updateCursorMarks();  // true when a row's marks changed
     void updateBreakdown();
+    // The lines of one light of the course's model: where it is, its factors, its terms.
+    QStringList lightLines(std::size_t k, const rl::LightTerms& terms, const rl::FrameTrace& frame,
+                           rl::SpecularModel specular) const;
     void fillTable();
     void fitTableHeight();
     void showBreakdown();
