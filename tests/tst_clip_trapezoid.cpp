@@ -5,15 +5,24 @@
 // pixels of the scan converter, under the course and the gpu rules.
 #include <QtTest>
 
+#include <QComboBox>
+#include <QPushButton>
+
 #include <cmath>
 
 #include "course_scenes.h"
+#include "inspection.h"
 #include "near_clip.h"
+#include "near_clip_view.h"
 #include "scan_conversion.h"
 #include "test_support.h"
+#include "trapezoid_view.h"
 #include "trapezoids.h"
 
 using namespace rl;
+using rasterlab::Inspection;
+using rasterlab::NearClipView;
+using rasterlab::TrapezoidView;
 
 namespace {
 
@@ -33,8 +42,9 @@ bool near(const dvec4& a, const dvec4& b) {
 // The default course scene (the trefoil) or the chalice, the camera put at the centre of
 // the object's box, looking toward the object's first vertex: the object surrounds it, so
 // triangles reach from in front of the camera to behind it.
+// nearFraction: the near plane at this fraction of the farthest vertex's w.
 std::shared_ptr<const Scene> cameraInside(CourseSceneParts parts, RuleSet rules,
-                                          ShadingModel shading) {
+                                          ShadingModel shading, double nearFraction = 1e-3) {
     dvec3 lo(1e300), hi(-1e300);
     for (const dvec4& p : parts.object.mesh->positions) {
         lo = glm::min(lo, dvec3(p));
@@ -48,7 +58,45 @@ std::shared_ptr<const Scene> cameraInside(CourseSceneParts parts, RuleSet rules,
     settings.height = 240;
     settings.shading = shading;
     settings.rules = rulesOf(rules);
+    settings.nearPlane.autoFraction = nearFraction;
     return std::make_shared<const Scene>(makeCourseScene(parts, settings));
+}
+
+// Saves a widget's picture where RASTERLAB_VIEW_PICTURES says (to look at them), and checks
+// that it is not one flat colour.
+void lookAt(QWidget& widget, const QString& name) {
+    QCoreApplication::processEvents();
+    const QImage image = widget.grab().toImage();
+    QVERIFY(!image.isNull());
+    bool varied = false;
+    const QRgb first = image.pixel(0, 0);
+    for (int y = 0; y < image.height() && !varied; y += 3)
+        for (int x = 0; x < image.width() && !varied; x += 3) varied = image.pixel(x, y) != first;
+    QVERIFY2(varied, qPrintable(name));
+    const QString dir = qEnvironmentVariable("RASTERLAB_VIEW_PICTURES");
+    if (!dir.isEmpty()) image.save(dir + QLatin1Char('/') + name + QStringLiteral(".png"));
+}
+
+// The axis camera (view = (-x, y, z), d = hx = hy = 1) on a 64x64 image, the near plane
+// fixed at z = 1, and quadByHand's triangle: view A0 = (0, 0, 3), A1 = (2, 0, 3),
+// A2 = (0, 4, -3), so world (0, 0, 3), (-2, 0, 3), (0, 4, -3). On the screen, x = (x/z + 1)
+// 32 and y = (1 - y/z) 32, truncated: A0 (32, 32), A1 (53.3 -> 53, 32), C12 = (4/3, 4/3, 1)
+// (74.7 -> 74, -10.7 -> -10), C20 = (0, 4/3, 1) (32, -10).
+std::shared_ptr<const Scene> clipHandScene() {
+    Scene scene = testing::makeScene(
+        testing::axisCamera(), testing::makeMesh({{0, 0, 3}, {-2, 0, 3}, {0, 4, -3}}, {{0, 1, 2}}),
+        64, 64);
+    scene.nearPlane.fixedW = 1.0;
+    return std::make_shared<const Scene>(std::move(scene));
+}
+
+// The trapezoidsByHand triangle as a scene: screen (2, 0), (8, 4), (0, 8) with view z 2, 4,
+// 6 on a 16x16 image (x = (x/z + 1) 8, y = (1 - y/z) 8): view (-1.5, 2, 2), (0, 2, 4),
+// (-6, 0, 6), world (1.5, 2, 2), (0, 2, 4), (6, 0, 6).
+std::shared_ptr<const Scene> trapezoidHandScene(ShadingModel shading) {
+    return std::make_shared<const Scene>(testing::makeScene(
+        testing::axisCamera(), testing::makeMesh({{1.5, 2, 2}, {0, 2, 4}, {6, 0, 6}}, {{0, 1, 2}}),
+        16, 16, shading));
 }
 
 CourseSceneParts trefoilParts() {
@@ -418,7 +466,197 @@ private slots:
         QVERIFY(scan.pixels > 0);
         QVERIFY(twoParts > 0);
     }
+
+    // The view of quadByHand's triangle: the steps reveal the numbers worked out there, and
+    // the stage drew the quad's two triangles where the comment of clipHandScene says.
+    void nearClipViewByHand() {
+        Inspection inspection;
+        NearClipView view(&inspection);
+        view.resize(900, 640);
+        view.show();
+        const auto trace = testing::renderTrace(clipHandScene());
+        QCOMPARE(trace->projection->draws[0].fate[0], TriangleFate::Clipped);
+        inspection.setFrame(trace, QImage());
+        // Nothing selected: the first clipped triangle of the list, at the first step.
+        QCOMPARE(view.listedTriangles(), 1);
+        QVERIFY(view.model());
+        QCOMPARE(view.model()->source, 0u);
+        QCOMPARE(view.step(), 0);
+        QVERIFY(
+            view.explanationText().contains(QStringLiteral("here near = 1, so P = (0, 0, 1, -1)")));
+        QVERIFY(
+            view.explanationText().contains(QStringLiteral("A0 = (0, 0, 3), A1 = (2, 0, 3), "
+                                                           "A2 = (0, 4, -3)")));
+        lookAt(view, QStringLiteral("near_clip_hand_step1"));
+        auto* next = view.findChild<QPushButton*>(QStringLiteral("nearClipNext"));
+        auto* back = view.findChild<QPushButton*>(QStringLiteral("nearClipBack"));
+        auto* all = view.findChild<QPushButton*>(QStringLiteral("nearClipAll"));
+        QVERIFY(next && back && all);
+        QVERIFY(!back->isEnabled());
+        for (int k = 0; k < 4; ++k) next->click();
+        QCOMPARE(view.step(), 4);
+        const QString edge12 = view.explanationText();
+        QVERIFY2(edge12.contains(QStringLiteral(
+                     "Edge A1–A2: dot(P, A1) = 2 and dot(P, A2) = -4 differ in sign: t = (0 − 2) "
+                     "/ ((-4) − 2) = 0.333333, C = lerp(t, A1, A2) = (1.33333, 1.33333, 1), added "
+                     "as q2.")),
+                 qPrintable(edge12));
+        QVERIFY(!edge12.contains(QStringLiteral("Vertex A2")));  // not yet
+        lookAt(view, QStringLiteral("near_clip_hand_step5"));
+        next->click();
+        next->click();
+        const QString edge20 = view.explanationText();
+        QVERIFY(
+            edge20.contains(QStringLiteral("Vertex A2: dot(P, A2) = -4 < 0: behind the "
+                                           "plane, left out.")));
+        QVERIFY2(edge20.contains(QStringLiteral("t = (0 − (-4)) / (2 − (-4)) = 0.666667, C = "
+                                                "lerp(t, A2, A0) = (0, 1.33333, 1), added as "
+                                                "q3. (The stage computes the same point from "
+                                                "A0, the end in front, with t' = 1 − t = "
+                                                "0.333333")),
+                 qPrintable(edge20));
+        back->click();
+        QCOMPARE(view.step(), 5);
+        all->click();
+        QCOMPARE(view.step(), rasterlab::kNearClipSteps - 1);
+        QVERIFY(!all->isEnabled() && !next->isEnabled());
+        const QString end = view.explanationText();
+        QVERIFY(
+            end.contains(QStringLiteral("Output polygon, 4 vertices: q0 = (0, 0, 3), q1 = "
+                                        "(2, 0, 3), q2 = (1.33333, 1.33333, 1), q3 = (0, "
+                                        "1.33333, 1).")));
+        QVERIFY(
+            end.contains(QStringLiteral("split along the diagonal q0–q2 into the "
+                                        "triangles q0 q1 q2 and q0 q2 q3")));
+        QVERIFY2(end.contains(QStringLiteral("Triangle 1: (32, 32), (53, 32), (74, -10) "
+                                             "(pixels)")),
+                 qPrintable(end));
+        QVERIFY(end.contains(QStringLiteral("Triangle 2: (32, 32), (74, -10), (32, -10)")));
+        lookAt(view, QStringLiteral("near_clip_hand_all"));
+        inspection.setPresentation(true);
+        lookAt(view, QStringLiteral("near_clip_hand_presentation"));
+    }
+
+    // The trapezoid view of trapezoidsByHand's triangle, pixel (3, 2) picked: the corners and
+    // row 2's numbers worked out there.
+    void trapezoidViewByHand() {
+        Inspection inspection;
+        TrapezoidView view(&inspection);
+        view.resize(800, 700);
+        view.show();
+        const auto trace = testing::renderTrace(trapezoidHandScene(ShadingModel::Phong));
+        QCOMPARE(screenVertices(*trace->projection, trace->projection->triangles[0]),
+                 (std::array<dvec2, 3>{dvec2(2, 0), dvec2(8, 4), dvec2(0, 8)}));
+        inspection.setFrame(trace, QImage());
+        inspection.pickPixel(QPoint(3, 2));
+        QVERIFY(view.model());
+        QVERIFY(!view.followsCursor());
+        QCOMPARE(view.model()->split.parts.size(), std::size_t(2));
+        QCOMPARE(view.model()->row->j, 2);
+        QCOMPARE(*view.model()->pixel, 3);
+        QVERIFY(!view.model()->hasColour);
+        const QString text = view.explanationText();
+        QVERIFY2(text.contains(QStringLiteral("s = (4 − 0) / (8 − 0) = 0.5: M' = lerp(s, top, "
+                                              "bottom) = (1, 4), pz = 4.")),
+                 qPrintable(text));
+        QVERIFY(
+            text.contains(QStringLiteral("t_j = (j − TL_j) / (BL_j − TL_j) = (2 − 0) / (4 − "
+                                         "0) = 0.5")));
+        QVERIFY(text.contains(QStringLiteral("L = lerp(t_j, TL, BL): i = 1.5, pz = 3")));
+        QVERIFY(text.contains(QStringLiteral("R = lerp(t_j, TR, BR): i = 5, pz = 3")));
+        QVERIFY(text.contains(QStringLiteral("Pixels i from ceil(L_i) to floor(R_i): 2 to 5.")));
+        QVERIFY(
+            text.contains(QStringLiteral("t_i = (i − L_i) / (R_i − L_i) = (3 − 1.5) / (5 − "
+                                         "1.5) = 0.428571")));
+        QVERIFY(text.contains(QStringLiteral("The depth test's z there: 3 ")));
+        lookAt(view, QStringLiteral("trapezoid_hand"));
+    }
+
+    // A real frame, the trefoil cut open by the near plane, Gouraud shading, with a replay:
+    // the near clip view lists the clipped triangles; the trapezoid view follows the stepping
+    // cursor and carries the vertex colours.
+    void viewsOnARealFrame() {
+        Inspection inspection;
+        NearClipView clip(&inspection);
+        clip.resize(900, 640);
+        clip.show();
+        TrapezoidView trapezoids(&inspection);
+        trapezoids.resize(800, 760);
+        trapezoids.show();
+        // The default trefoil, the near plane moved to about halfway through it (between the
+        // nearest and the farthest vertex): what it cuts is in the picture.
+        Scene cut = *testing::defaultCourseScene(ShadingModel::Gouraud, RuleSet::Course, 480, 360);
+        double wMin = 1e300, wMax = -1e300;
+        const auto whole = testing::renderTrace(std::make_shared<const Scene>(cut));
+        for (const dvec4& p : whole->projection->draws[0].pClip) {
+            wMin = std::min(wMin, p.w);
+            wMax = std::max(wMax, p.w);
+        }
+        cut.nearPlane.fixedW = wMin + 0.45 * (wMax - wMin);
+        const auto scene = std::make_shared<const Scene>(std::move(cut));
+        const auto trace = testing::renderTrace(scene);
+        inspection.setFrame(trace, QImage());
+        const auto replay = testing::replayOf(trace);
+        inspection.setReplay(replay);
+        // Every triangle the near plane cut or hid, up to 5000.
+        QCOMPARE(
+            std::size_t(clip.listedTriangles()),
+            std::min<std::size_t>(trace->projection->clipped + trace->projection->behind, 5000));
+        QVERIFY(trace->projection->clipped > 0);
+        // A triangle clipped into a quad whose first half has pixels on the screen, from the
+        // list: the view selects what it drew.
+        auto* list = clip.findChild<QComboBox*>(QStringLiteral("nearClipTriangles"));
+        const auto fragmentsOf = [&](std::uint32_t t) {
+            std::uint32_t n = 0;
+            for (std::uint32_t r = replay->firstRow(t); r < replay->endRow(t); ++r)
+                n += replay->rows()[r].fragmentEnd - replay->rows()[r].fragmentBegin;
+            return n;
+        };
+        int quad = -1;
+        for (int k = 1; k < list->count() && quad < 0; ++k) {
+            const quint64 key = list->itemData(k).toULongLong();
+            const auto draw = std::uint32_t(key >> 32), source = std::uint32_t(key);
+            const NearClipRecord r = nearClipOf(*scene, *trace->projection, draw, source);
+            const auto drawn = screenTrianglesOf(*trace->projection, draw, source);
+            if (r.polygon.size() == 4 && !drawn.empty() && fragmentsOf(drawn.front()) > 0) quad = k;
+        }
+        QVERIFY(quad > 0);
+        list->setCurrentIndex(quad);
+        emit list->activated(quad);
+        QVERIFY(clip.model() && clip.model()->record.polygon.size() == 4);
+        QCOMPARE(clip.model()->projected.size(), std::size_t(2));
+        QCOMPARE(inspection.selectedTriangle(), clip.model()->projected.front());
+        QCOMPARE(list->currentIndex(), quad);
+        clip.setStep(4);
+        lookAt(clip, QStringLiteral("near_clip_trefoil_step5"));
+        clip.setStep(rasterlab::kNearClipSteps - 1);
+        lookAt(clip, QStringLiteral("near_clip_trefoil_all"));
+
+        // The trapezoid view: the triangle selected (the cursor is at the end), its colours.
+        QVERIFY(trapezoids.model());
+        QCOMPARE(trapezoids.model()->triangle, *inspection.selectedTriangle());
+        QVERIFY(trapezoids.model()->hasColour);
+        // Step to a row in the middle of the frame's largest triangle.
+        std::uint32_t largest = 0, most = 0;
+        for (std::uint32_t t = 0; t < replay->triangleCount(); ++t) {
+            const std::uint32_t fragments = fragmentsOf(t);
+            if (fragments > most) {
+                most = fragments;
+                largest = t;
+            }
+        }
+        const std::uint32_t row = (replay->firstRow(largest) + replay->endRow(largest)) / 2;
+        inspection.seek(replay->atFragment(replay->rows()[row].fragmentBegin + 2));
+        QVERIFY(trapezoids.followsCursor());
+        QCOMPARE(trapezoids.model()->triangle, largest);
+        QCOMPARE(trapezoids.model()->row->j, replay->rows()[row].y);
+        QCOMPARE(trapezoids.model()->row->xBegin, replay->rows()[row].xBegin);
+        QCOMPARE(trapezoids.model()->row->xEnd, replay->rows()[row].xEnd);
+        QVERIFY(trapezoids.model()->hasColour);
+        QVERIFY(trapezoids.explanationText().contains(QStringLiteral("(r, g, b)")));
+        lookAt(trapezoids, QStringLiteral("trapezoid_trefoil"));
+    }
 };
 
-QTEST_GUILESS_MAIN(TestClipTrapezoid)
+QTEST_MAIN(TestClipTrapezoid)
 #include "tst_clip_trapezoid.moc"
