@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "course_scenes.h"
+#include "depth_test.h"
 #include "inspection.h"
 #include "near_clip.h"
 #include "near_clip_view.h"
@@ -436,7 +437,8 @@ private slots:
         const Projection& projection = *trace->projection;
         const ScanConversion& scan = *trace->scan;
         const RasterRules& rules = scene->rules;
-        std::size_t triangles = 0, rows = 0, twoParts = 0;
+        std::size_t triangles = 0, rows = 0, twoParts = 0, depthsCompared = 0;
+        double worst = 0.0;  // the largest relative difference of the depths
         for (std::uint32_t t = 0; t < projection.triangles.size(); ++t) {
             const TriangleSetup s =
                 setupTriangle(screenVertices(projection, projection.triangles[t]), rules);
@@ -448,6 +450,27 @@ private slots:
                     const TrapezoidRow row = trapezoidRow(part, rules, j, scene->width);
                     ++rows;
                     if (!row.empty()) spans.push_back({j, row.xBegin, row.xEnd});
+                }
+            }
+            // Under the course's rules the depth is interpolated linearly on the screen, as the
+            // seed's lerps do: the first pixel of each row gets the depth test's depth (which
+            // works in float from the barycentrics).
+            if (rules == RasterRules::course() && !s.degenerate()) {
+                const ScreenTriangle& tri = projection.triangles[t];
+                std::array<TrapezoidPoint, 3> depths{};
+                for (std::size_t k = 0; k < 3; ++k)
+                    depths[k].pz = projection.draws[tri.draw].depth[tri.v[k]];
+                for (const Trapezoid& part : splitIntoTrapezoids(s, depths, rules).parts) {
+                    for (std::int32_t j = std::max(part.firstRow, 0);
+                         j <= std::min(part.lastRow, scene->height - 1); ++j) {
+                        const TrapezoidRow row = trapezoidRow(part, rules, j, scene->width);
+                        if (row.empty()) continue;
+                        const double lerped = trapezoidPixel(row, rules, row.xBegin).pz;
+                        const float depth =
+                            fragmentDepth(*scene, projection, t, j, row.xBegin, row.xBegin).depth;
+                        worst = std::max(worst, std::abs(lerped - depth) / std::abs(lerped));
+                        ++depthsCompared;
+                    }
                 }
             }
             const std::vector<Span> expected(scan.spans.begin() + scan.spanStart[t],
@@ -465,6 +488,11 @@ private slots:
               twoParts, rows, scan.pixels);
         QVERIFY(scan.pixels > 0);
         QVERIFY(twoParts > 0);
+        if (depthsCompared > 0) {
+            qInfo("depths of %zu rows' first pixels: largest relative difference %g",
+                  depthsCompared, worst);
+            QVERIFY(worst < 1e-6);  // a few float roundings
+        }
     }
 
     // The view of quadByHand's triangle: the steps reveal the numbers worked out there, and

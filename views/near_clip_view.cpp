@@ -201,9 +201,9 @@ void NearClipCanvas::paintSide(QPainter& painter, const QRectF& area) {
     std::array<QPointF, 3> v{};
     for (std::size_t k = 0; k < 3; ++k)
         v[k] = QPointF(across(r.edges[k].distanceA), up(r.pView[k]));
-    // The triangle and the plane; the eye too when it is not far away compared with them.
-    double uMin = r.nearW, uMax = r.nearW;
-    double vMin = v[0].y(), vMax = v[0].y();
+    // The triangle; the plane and the eye too when they are not far away compared with it.
+    double uMin = v[0].x(), uMax = uMin;
+    double vMin = v[0].y(), vMax = vMin;
     for (const QPointF& p : v) {
         uMin = std::min(uMin, p.x());
         uMax = std::max(uMax, p.x());
@@ -211,7 +211,12 @@ void NearClipCanvas::paintSide(QPainter& painter, const QRectF& area) {
         vMax = std::max(vMax, p.y());
     }
     const double size = std::max(uMax - uMin, vMax - vMin);
-    const bool eyeShown = uMin <= 3.0 * size && uMax >= -3.0 * size &&
+    const bool planeShown = r.nearW >= uMin - 3.0 * size && r.nearW <= uMax + 3.0 * size;
+    if (planeShown) {
+        uMin = std::min(uMin, r.nearW);
+        uMax = std::max(uMax, r.nearW);
+    }
+    const bool eyeShown = planeShown && uMin <= 3.0 * size && uMax >= -3.0 * size &&
                           std::min(std::abs(vMin), std::abs(vMax)) <= 3.0 * size;
     if (eyeShown) {
         uMin = std::min(uMin, 0.0);
@@ -343,16 +348,22 @@ void NearClipCanvas::paintSide(QPainter& painter, const QRectF& area) {
                      NearClipView::tr("side view: w across (view z for the course camera), view "
                                       "%1 up")
                          .arg(m_axis == 0 ? QStringLiteral("y") : QStringLiteral("x")));
-    label(painter,
-          QPointF(std::clamp(planeX + 4, area.left(), area.right() - 80),
-                  area.bottom() - metrics.descent() - 2),
-          NearClipView::tr("w = near = %1").arg(number(r.nearW, 4)), kPlane);
+    if (planeShown)
+        label(painter,
+              QPointF(std::clamp(planeX + 4, area.left(), area.right() - 80),
+                      area.bottom() - metrics.descent() - 2),
+              NearClipView::tr("w = near = %1").arg(number(r.nearW, 4)), kPlane);
+    else
+        label(painter, QPointF(area.left() + 4, area.bottom() - metrics.descent() - 2),
+              NearClipView::tr("the plane w = near = %1 is far to the left, out of the picture")
+                  .arg(number(r.nearW, 4)),
+              kPlane);
     if (eyeShown)
         label(painter,
               QPointF(std::clamp(eye.x() - 12, area.left(), area.right() - 20),
                       eye.y() + metrics.ascent() + 8),
               NearClipView::tr("eye"), kText);
-    else
+    else if (planeShown)
         label(painter,
               QPointF(area.left() + 4, area.bottom() - metrics.height() - metrics.descent() - 6),
               NearClipView::tr("the eye (w = 0) is far to the left, out of the picture"), kText);
@@ -712,6 +723,10 @@ QString NearClipView::explanationHtml() const {
         plane += QLatin1Char(' ') +
                  tr("For the course camera w is the view z: the camera looks along +z, and the "
                     "plane is z = near, P = [0, 0, 1, &minus;near].");
+    plane += QLatin1Char(' ') +
+             tr("(Written out, the seed's P keeps z &le; &epsilon;; the plane z = &minus;&epsilon; "
+                "it names is P = [0, 0, &minus;1, &minus;&epsilon;]. Either way the plane lies a "
+                "little in front of the eye, so no vertex drawn is divided by w = 0.)");
     plane +=
         QStringLiteral("<br>") + tr("A0 = %1, A1 = %2, A2 = %3 (view space).")
                                      .arg(point(r.pView[0]), point(r.pView[1]), point(r.pView[2]));
