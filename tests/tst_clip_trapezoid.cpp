@@ -6,6 +6,7 @@
 #include <QtTest>
 
 #include <QComboBox>
+#include <QElapsedTimer>
 #include <QPushButton>
 
 #include <cmath>
@@ -659,6 +660,37 @@ private slots:
         lookAt(clip, QStringLiteral("near_clip_trefoil_step5"));
         clip.setStep(rasterlab::kNearClipSteps - 1);
         lookAt(clip, QStringLiteral("near_clip_trefoil_all"));
+        // A triangle wholly behind, chosen while another is selected: shown, nothing drawn.
+        int behind = -1;
+        for (int k = 1; k < list->count() && behind < 0; ++k) {
+            const quint64 key = list->itemData(k).toULongLong();
+            if (trace->projection->draws[key >> 32].fate[std::uint32_t(key)] ==
+                TriangleFate::Behind)
+                behind = k;
+        }
+        QVERIFY(behind > 0);
+        const auto selectedBefore = inspection.selectedTriangle();
+        list->setCurrentIndex(behind);
+        emit list->activated(behind);
+        QCOMPARE(clip.model()->fate, TriangleFate::Behind);
+        QVERIFY(clip.model()->record.gone());
+        QCOMPARE(inspection.selectedTriangle(), selectedBefore);
+        QCOMPARE(list->currentIndex(), behind);
+        clip.setStep(rasterlab::kNearClipSteps - 1);
+        QVERIFY(clip.explanationText().contains(
+            QStringLiteral("Output polygon: empty. The triangle lies wholly behind the plane")));
+        QVERIFY(
+            clip.explanationText().contains(QStringLiteral("Nothing was drawn from this "
+                                                           "triangle (wholly behind).")));
+        // Another triangle selected elsewhere: the view follows the selection again.
+        inspection.selectTriangle(0u);
+        QCOMPARE(clip.model()->source, trace->projection->triangles[0].source);
+        QVERIFY(!clip.model()->record.gone());
+        // And back to the quad, from the list.
+        list->setCurrentIndex(quad);
+        emit list->activated(quad);
+        QCOMPARE(list->currentIndex(), quad);
+        QCOMPARE(clip.model()->record.polygon.size(), std::size_t(4));
 
         // The trapezoid view: the triangle selected (the cursor is at the end), its colours.
         QVERIFY(trapezoids.model());
@@ -683,6 +715,17 @@ private slots:
         QVERIFY(trapezoids.model()->hasColour);
         QVERIFY(trapezoids.explanationText().contains(QStringLiteral("(r, g, b)")));
         lookAt(trapezoids, QStringLiteral("trapezoid_trefoil"));
+
+        // What the two views cost a step (a figure, not a check): 300 scanlines forward.
+        inspection.setGranularity(StepGranularity::Scanline);
+        QElapsedTimer timer;
+        timer.start();
+        int steps = 0;
+        for (; steps < 300 && inspection.stepForward(); ++steps) {
+        }
+        qInfo("%d scanline steps with both views shown: %.3f ms a step", steps,
+              double(timer.nsecsElapsed()) / 1e6 / std::max(steps, 1));
+        QVERIFY(trapezoids.followsCursor());
     }
 };
 

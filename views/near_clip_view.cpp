@@ -530,6 +530,7 @@ NearClipView::NearClipView(Inspection* inspection, QWidget* parent)
     };
     connect(m_inspection, &Inspection::frameChanged, this, [this, follow] {
         m_chosen.reset();
+        m_triangles->clear();  // made again for the new frame
         follow();
     });
     connect(m_inspection, &Inspection::replayChanged, this, follow);
@@ -582,12 +583,14 @@ void NearClipView::rebuildList() {
 
 void NearClipView::showTriangle(std::uint32_t draw, std::uint32_t source) {
     m_chosen = {draw, source};
+    m_selectionAtChoice = m_inspection->selectedTriangle();
     // The other views follow when it was drawn.
     const std::shared_ptr<const rl::FrameTrace>& frame = m_inspection->frame();
     if (frame && frame->projection) {
         const std::vector<std::uint32_t> drawn =
             rl::screenTrianglesOf(*frame->projection, draw, source);
         if (!drawn.empty() && m_inspection->selectedTriangle() != drawn.front()) {
+            m_selectionAtChoice = drawn.front();
             m_inspection->selectTriangle(drawn.front());
             return;  // selectionChanged refreshes
         }
@@ -609,8 +612,8 @@ void NearClipView::refresh() {
             const rl::ScreenTriangle& t = projection.triangles[*projected];
             selected = std::pair{t.draw, t.source};
         }
-        // The one chosen in the list stays while the selection is its own (or none).
-        if (m_chosen && (!selected || *selected == *m_chosen))
+        // The one chosen in the list stays until another triangle is selected.
+        if (m_chosen && m_inspection->selectedTriangle() == m_selectionAtChoice)
             which = m_chosen;
         else
             which = selected;

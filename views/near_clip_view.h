@@ -93,6 +93,7 @@ private:
     Inspection* m_inspection = nullptr;
     std::optional<NearClipModel> m_model;
     std::optional<std::pair<std::uint32_t, std::uint32_t>> m_chosen;  // from the list
+    std::optional<std::uint32_t> m_selectionAtChoice;                 // the triangle selected then
     int m_step = 0;
     const rl::FrameTrace* m_listFrame = nullptr;  // the frame the list was made for
     QLabel* m_title = nullptr;
