@@ -331,8 +331,12 @@ void NearClipCanvas::paintSide(QPainter& painter, const QRectF& area) {
     for (std::size_t k = 0; k < 3; ++k) {
         const rl::NearClipEdge& e = r.edges[k];
         if (!e.crosses || current < 2 + 2 * int(k)) continue;
-        label(painter, at(r.nearW, up(e.pView)) + QPointF(6, metrics.ascent() + 4),
-              QStringLiteral("C  t=%1").arg(number(e.t, 4)), kMade);
+        // Left of the plane: the vertices in front have their labels on its right.
+        const QString text = QStringLiteral("C  t=%1").arg(number(e.t, 4));
+        label(painter,
+              at(r.nearW, up(e.pView)) +
+                  QPointF(-metrics.horizontalAdvance(text) - 10, metrics.ascent() / 2.0),
+              text, kMade);
     }
     if (showPolygon) {
         for (qsizetype k = 0; k < polygon.size(); ++k)
