@@ -29,6 +29,7 @@
 #include "edit_panel.h"
 #include "frame_image_view.h"
 #include "image_io.h"
+#include "near_clip_view.h"
 #include "normals_view.h"
 #include "pixel_inspector.h"
 #include "projection_view.h"
@@ -36,6 +37,7 @@
 #include "scanline_view.h"
 #include "stage_strip.h"
 #include "stepping_bar.h"
+#include "trapezoid_view.h"
 #include "vertex_table.h"
 #include "zbuffer_view.h"
 
@@ -286,6 +288,15 @@ void MainWindow::createDocks() {
     QDockWidget* scanlineDock = addDock(tr("5 Scan conversion"), QStringLiteral("scanlineDock"),
                                         m_scanline, Qt::RightDockWidgetArea);
     tabifyDockWidget(cameraDock, scanlineDock);
+    // Seed 002's presentations of the same two steps: clipping one triangle step by step,
+    // and the scan as trapezoids.
+    QDockWidget* nearClipDock =
+        addDock(tr("4b Near-plane clipping"), QStringLiteral("nearClipDock"),
+                new NearClipView(m_inspection), Qt::RightDockWidgetArea);
+    tabifyDockWidget(cameraDock, nearClipDock);
+    QDockWidget* trapezoidDock = addDock(tr("5b Trapezoids"), QStringLiteral("trapezoidDock"),
+                                         new TrapezoidView(m_inspection), Qt::RightDockWidgetArea);
+    tabifyDockWidget(cameraDock, trapezoidDock);
     m_zbuffer = new ZBufferView;
     QDockWidget* zbufferDock = addDock(tr("6 Z-buffer"), QStringLiteral("zbufferDock"), m_zbuffer,
                                        Qt::RightDockWidgetArea);

@@ -4,7 +4,8 @@
 //   window            the window on calice2, stepped by scanline past the middle of the frame
 //   toolbars          the stage strip and the stepping bar, mid-frame
 //   menu-file, menu-export, menu-step   the File menu, File > Export More, the Step menu
-//   <dock name>       each stage view (cameraBasisDock ... pixelInspectorDock) and the Scene
+//   <dock name>       each stage view (cameraBasisDock ... pixelInspectorDock, nearClipDock,
+//                     trapezoidDock) and the Scene
 //   image-stepping    the image zoomed to the pixel grid, stepping pixel by pixel
 //   breakpoints       the Breakpoints dock after a breakpoint stopped the replay
 //   messages-error    the Messages dock after a bad object file (the scene kept)
@@ -263,7 +264,8 @@ int main(int argc, char* argv[]) {
         {"cameraBasisDock", {560, 640}},    {"vertexTableDock", {640, 560}},
         {"normalsDock", {560, 660}},        {"projectionDock", {560, 660}},
         {"scanlineDock", {560, 720}},       {"zbufferDock", {520, 760}},
-        {"pixelInspectorDock", {700, 600}}, {"sceneDock", {380, 450}}};
+        {"pixelInspectorDock", {700, 600}}, {"sceneDock", {380, 450}},
+        {"nearClipDock", {620, 700}},       {"trapezoidDock", {560, 760}}};
     window.vertexTableView()->setOnlySelectedTriangle(true);
     for (const auto& [name, size] : docks)
         check(saveDock(dock(window, name), file(QLatin1String(name)), size));

@@ -452,7 +452,7 @@ void TestMainWindow::exportToMissingFolder() {
 void TestMainWindow::docks() {
     MainWindow window;
     const QList<QDockWidget*> docks = window.findChildren<QDockWidget*>();
-    QCOMPARE(docks.size(), 13);
+    QCOMPARE(docks.size(), 15);
     std::set<QString> names;
     for (const QDockWidget* dock : docks) {
         QVERIFY2(!dock->objectName().isEmpty(), qPrintable(dock->windowTitle()));
@@ -466,7 +466,8 @@ void TestMainWindow::docks() {
         QStringLiteral("cameraBasisDock"), QStringLiteral("projectionDock"),
         QStringLiteral("scanlineDock"),    QStringLiteral("pixelInspectorDock"),
         QStringLiteral("vertexTableDock"), QStringLiteral("normalsDock"),
-        QStringLiteral("animationDock")};
+        QStringLiteral("animationDock"),   QStringLiteral("nearClipDock"),
+        QStringLiteral("trapezoidDock")};
     QCOMPARE(names, expected);
     const auto* messagesDock = window.findChild<QDockWidget*>(QStringLiteral("messagesDock"));
     QVERIFY(messagesDock);
