@@ -16,6 +16,9 @@
 //   strip-command-file  the stage strip of a command file (skipped stages)
 //   animation         the default trefoil's turntable paused mid-turn, stepped by scanline
 //   normals-wrong     the Normals dock under a scale (1, 0.5, 1): right and wrong normals
+//   window-lighting, inspector-lighting, edit-lights   calice2 under the lecture slides'
+//                     lighting (an attenuated spot, a directional light, Blinn-Phong): the
+//                     window, the pixel inspector light by light, the Edit dock's lights
 //
 //   screenshot_tour --out DIR [--language en|pt_BR] [--samples DIR]
 // (scripts/screenshots.sh runs it in both languages.) The settings are kept in a temporary
@@ -464,6 +467,42 @@ int main(int argc, char* argv[]) {
         if (auto* split = normals->findChild<QSplitter*>()) split->setSizes({560, 620});
         check(saveDock(dock(moving, "normalsDock"), file(QStringLiteral("normals-wrong")),
                        QSize(640, 1180)));
+    }
+
+    // The lecture slides' lighting on calice2: an attenuated spot on the foot and a dim red
+    // directional light; Blinn-Phong highlights. The brightest pixel (in the spot) picked.
+    {
+        QTemporaryDir lights;
+        const QString path = lights.filePath(QStringLiteral("spot.txt"));
+        QFile text(path);
+        if (!text.open(QIODevice::WriteOnly)) return 1;
+        text.write(
+            "Iamb = 30 30 30\nKa = 0.5\nKd = 1 1 1\nOd = 0 0.8 0\nKs = 0.5\neta = 8\n"
+            "Il = 255 255 255\nPl = 0 250 800\natten = 1 0.0005 0\nspot_dir = 60 130 -800\n"
+            "spot_cutoff = 6\nspot_exp = 8\nPl2 = -1 0 0.3 0\nIl2 = 120 40 40\nblinn = 1\n");
+        text.close();
+        before = inspection->frame();
+        if (!window.openPath(path) || !waitForNewFrame(window, before)) return 1;
+        if (!waitForReplay(window)) return 1;
+        const QImage lit = window.currentImage();
+        QPoint spot(0, 0);
+        for (int y = 0, most = -1; y < lit.height(); ++y)
+            for (int x = 0; x < lit.width(); ++x) {
+                const QColor c = lit.pixelColor(x, y);
+                if (c.green() > most) {
+                    most = c.green();
+                    spot = QPoint(x, y);
+                }
+            }
+        inspection->pickPixel(spot);
+        inspection->seek(window.inspection()->replay()->end());
+        zoomTo(window.imageView(), QRectF(objectBox), QSizeF(window.imageView()->size()) * 0.92,
+               0.1);
+        check(save(&window, file(QStringLiteral("window-lighting"))));
+        check(saveDock(dock(window, "pixelInspectorDock"),
+                       file(QStringLiteral("inspector-lighting")), QSize(760, 900)));
+        check(saveDock(dock(window, "editDock"), file(QStringLiteral("edit-lights")),
+                       QSize(380, 1100)));
     }
 
     // A command file: no course camera, nothing lit; three stages skipped.
