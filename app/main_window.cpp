@@ -83,6 +83,8 @@ QString shadingLabel(rl::ShadingModel model) {
             return MainWindow::tr("Gouraud");
         case rl::ShadingModel::Phong:
             return MainWindow::tr("Phong");
+        case rl::ShadingModel::Painter:
+            return MainWindow::tr("painter's algorithm");
     }
     return {};
 }
@@ -485,6 +487,7 @@ void MainWindow::createActions() {
         {rl::ShadingModel::Phong, tr("&Phong (per pixel)")},
         {rl::ShadingModel::Gouraud, tr("&Gouraud (per vertex)")},
         {rl::ShadingModel::Flat, tr("&Flat (per triangle)")},
+        {rl::ShadingModel::Painter, tr("P&ainter's algorithm (flat, far to near, no depth test)")},
     };
     int key = 1;
     for (const auto& [model, label] : models) {

@@ -429,6 +429,12 @@ void PixelInspector::rebuildHistory() {
         const bool tie = conv.depthWinsOnTie;
         switch (row.verdict) {
             case rl::FragmentVerdict::Written:
+                if (frame->depth->painted) {
+                    // The painter's algorithm compares nothing: the last painted stays.
+                    row.depthText = tr("%1 over %2").arg(num(row.depth), num(row.stored));
+                    row.resultText = tr("painted, no depth test");
+                    break;
+                }
                 row.depthText =
                     QStringLiteral("%1 %2 %3")
                         .arg(num(row.depth), tie ? QStringLiteral("<=") : QStringLiteral("<"),
