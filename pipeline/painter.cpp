@@ -28,9 +28,8 @@ std::vector<std::uint32_t> painterOrder(const Scene& scene, const Projection& pr
         distance[t] = painterDistance(scene, projection, static_cast<std::uint32_t>(t));
     std::vector<std::uint32_t> order(n);
     std::iota(order.begin(), order.end(), 0u);
-    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return distance[a] > distance[b];
-    });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return distance[a] > distance[b]; });
     return order;
 }
 
