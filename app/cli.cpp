@@ -145,9 +145,11 @@ struct SceneOptions {
         lit("FILE")};
     QCommandLineOption size{lit("size"), lit("Image size, default 800x600."), lit("WxH"),
                             lit("800x600")};
-    QCommandLineOption shading{lit("shading"), lit("phong (default), flat, gouraud or painter (flat, triangles painted far to "
-                                   "near without a depth test: seed 004)."),
-                               lit("MODEL"), lit("phong")};
+    QCommandLineOption shading{
+        lit("shading"),
+        lit("phong (default), flat, gouraud or painter (flat, triangles painted far to "
+            "near without a depth test: seed 004)."),
+        lit("MODEL"), lit("phong")};
     QCommandLineOption near{lit("near"),
                             lit("View-space z of the near plane (default: 0.001 times the "
                                 "farthest vertex's z)."),
@@ -204,8 +206,9 @@ struct SceneOptions {
                                        .arg(pixelLimit));
         const auto model = rl::shadingModelFromName(parser.value(shading).toStdString());
         if (!model)
-            return usageError(err, lit("--shading expects phong, flat, gouraud or painter, found '%1'")
-                                       .arg(parser.value(shading)));
+            return usageError(err,
+                              lit("--shading expects phong, flat, gouraud or painter, found '%1'")
+                                  .arg(parser.value(shading)));
         out.shading = *model;
         const auto ruleSet = rl::ruleSetFromName(parser.value(rules).toStdString());
         if (!ruleSet)
@@ -415,10 +418,9 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
         // One more render of each kind, with the z-buffer, to show what the order got wrong.
         const auto comparison = rl::compareWithZBuffer(scene, options);
         if (!comparison) return inputError(err, comparison.error());
-        out << "  painter: " << comparison->differing
-            << " pixels differ from the z-buffer render (" << comparison->wrongOrder
-            << " where a farther triangle was painted last, " << comparison->ties
-            << " where two triangles are as near)\n";
+        out << "  painter: " << comparison->differing << " pixels differ from the z-buffer render ("
+            << comparison->wrongOrder << " where a farther triangle was painted last, "
+            << comparison->ties << " where two triangles are as near)\n";
         if (parser.isSet(painterDiff) &&
             !writePng(rl::differenceImage(*comparison), parser.value(painterDiff), out, err,
                       lit("painter difference")))

@@ -29,6 +29,7 @@
 #include "frame_image_view.h"
 #include "image_io.h"
 #include "normals_view.h"
+#include "painter_view.h"
 #include "pixel_inspector.h"
 #include "projection_view.h"
 #include "replay_builder.h"
@@ -282,6 +283,11 @@ void MainWindow::createDocks() {
     QDockWidget* zbufferDock = addDock(tr("6 Z-buffer"), QStringLiteral("zbufferDock"), m_zbuffer,
                                        Qt::RightDockWidgetArea);
     tabifyDockWidget(cameraDock, zbufferDock);
+    // Seed 004's painter's algorithm beside the z-buffer (renders only while shown).
+    m_painter = new PainterView(m_inspection);
+    QDockWidget* painterDock = addDock(tr("Painter's algorithm"), QStringLiteral("painterDock"),
+                                       m_painter, Qt::RightDockWidgetArea);
+    tabifyDockWidget(cameraDock, painterDock);
     scanlineDock->raise();
     resizeDocks({editDock}, {360}, Qt::Horizontal);
     resizeDocks({cameraDock}, {520}, Qt::Horizontal);

@@ -201,8 +201,7 @@ void testSpanOf(const Scene& scene, const TrianglePlane& setup, std::uint32_t id
             counts.passed += testSpan(depthRow + span.xBegin, idRow + span.xBegin,
                                       out.barycentricsKept ? &baryRow[span.xBegin].x : nullptr, n,
                                       beta0, setup.betaDx, gamma0, setup.gammaDx, setup.z0,
-                                      setup.dz1, setup.dz2, id, winsOnTie, reciprocal,
-                                      out.painted);
+                                      setup.dz1, setup.dz2, id, winsOnTie, reciprocal, out.painted);
             return;
         }
     }

@@ -100,12 +100,13 @@ std::string explainPixel(const FrameTrace& trace, const RecordingProbe& probe) {
         if (const auto* test = std::get_if<DepthTestEvent>(&event)) {
             if (!anyFragment) out += "  depth test, in drawing order:\n";
             anyFragment = true;
-            out += "    " + std::to_string(++fragment) + ". " +
-                   triangleName(trace, test->triangle) +
-                   ": barycentrics alpha = " + formatNumber(test->alpha) +
-                   ", beta = " + formatNumber(test->beta) +
-                   ", gamma = " + formatNumber(test->gamma) + "; z = " + depthText(test->depth) +
-                   depthVerdict(*test, trace.scene->conventions.depthWinsOnTie, trace.depth->painted) + "\n";
+            out +=
+                "    " + std::to_string(++fragment) + ". " + triangleName(trace, test->triangle) +
+                ": barycentrics alpha = " + formatNumber(test->alpha) +
+                ", beta = " + formatNumber(test->beta) + ", gamma = " + formatNumber(test->gamma) +
+                "; z = " + depthText(test->depth) +
+                depthVerdict(*test, trace.scene->conventions.depthWinsOnTie, trace.depth->painted) +
+                "\n";
         } else if (const auto* shade = std::get_if<ShadeEvent>(&event)) {
             const Draw& draw =
                 trace.scene->draws[trace.projection->triangles[shade->triangle].draw];

@@ -345,8 +345,9 @@ void TestCli::usageErrors_data() {
     QTest::newRow("pixel limit not a number")
         << (QStringList({"render", "--max-pixels", "lots"}) + out)
         << "--max-pixels expects a positive whole number, found 'lots'";
-    QTest::newRow("unknown shading") << (QStringList({"render", "--shading", "toon"}) + out)
-                                     << "--shading expects phong, flat, gouraud or painter, found 'toon'";
+    QTest::newRow("unknown shading")
+        << (QStringList({"render", "--shading", "toon"}) + out)
+        << "--shading expects phong, flat, gouraud or painter, found 'toon'";
     QTest::newRow("negative near") << (QStringList({"render", "--near", "-1"}) + out)
                                    << "--near expects a positive number, found '-1'";
     QTest::newRow("zero near") << (QStringList({"render", "--near", "0"}) + out)

@@ -452,7 +452,7 @@ void TestMainWindow::exportToMissingFolder() {
 void TestMainWindow::docks() {
     MainWindow window;
     const QList<QDockWidget*> docks = window.findChildren<QDockWidget*>();
-    QCOMPARE(docks.size(), 12);
+    QCOMPARE(docks.size(), 13);
     std::set<QString> names;
     for (const QDockWidget* dock : docks) {
         QVERIFY2(!dock->objectName().isEmpty(), qPrintable(dock->windowTitle()));
@@ -465,7 +465,8 @@ void TestMainWindow::docks() {
         QStringLiteral("breakpointsDock"), QStringLiteral("editDock"),
         QStringLiteral("cameraBasisDock"), QStringLiteral("projectionDock"),
         QStringLiteral("scanlineDock"),    QStringLiteral("pixelInspectorDock"),
-        QStringLiteral("vertexTableDock"), QStringLiteral("normalsDock")};
+        QStringLiteral("vertexTableDock"), QStringLiteral("normalsDock"),
+        QStringLiteral("painterDock")};
     QCOMPARE(names, expected);
     const auto* messagesDock = window.findChild<QDockWidget*>(QStringLiteral("messagesDock"));
     QVERIFY(messagesDock);

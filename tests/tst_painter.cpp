@@ -39,9 +39,9 @@ Scene twoDraws(Draw first, Draw second) {
 // (0,0) (2,0) (0,2), and a long sloping triangle L (draw 1, ka = 0.5, colour 5) from z = 1 at
 // screen (0,0) to z = 10 at (8,0) and (0,8).
 //   S: world (3,3,3) (1.5,3,3) (3,1.5,3); barycentre view (-2.5, 2.5, 3),
-//      |b| = sqrt(6.25 + 6.25 + 9) = sqrt(21.5) = 4.63681.
+//      |b| = sqrt(6.25 + 6.25 + 9) = sqrt(21.5) = 4.636809.
 //   L: world (1,1,1) (-10,10,10) (10,-10,10); barycentre view (-1/3, 1/3, 7),
-//      |b| = sqrt(1/9 + 1/9 + 49) = sqrt(443)/3 = 7.01585.
+//      |b| = sqrt(1/9 + 1/9 + 49) = sqrt(443)/3 = 7.015855.
 // L is farther by its barycentre: painted first, then S over it. But L's depth at pixel (x, y)
 // is 1 + 9 (x + y)/8 (screen barycentrics x/8, y/8): 1 at (0,0), 2.125 at (1,0) and (0,1),
 // 3.25 where x + y = 2. Of S's six pixels (x + y <= 2), L is nearer than S's 3 at three:
