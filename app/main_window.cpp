@@ -85,7 +85,7 @@ QString shadingLabel(rl::ShadingModel model) {
         case rl::ShadingModel::Phong:
             return MainWindow::tr("Phong");
         case rl::ShadingModel::Painter:
-            return MainWindow::tr("painter's algorithm");
+            return MainWindow::tr("painter's-algorithm flat");  // "..., %5 shading"
     }
     return {};
 }

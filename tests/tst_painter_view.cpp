@@ -6,10 +6,13 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QDir>
 #include <QTableView>
 
 #include "course_scenes.h"
+#include "main_window.h"
+#include "output_image.h"
 #include "frame_image_view.h"
 #include "inspection.h"
 #include "painter_view.h"
@@ -120,6 +123,35 @@ private slots:
         QCOMPARE(table->currentIndex().row(), 1);
         QVERIFY(view.explanation().contains(QStringLiteral("The frame shown uses the z-buffer")));
         QCOMPARE(view.painterImageView()->image().size(), QSize(8, 8));
+    }
+
+    void windowDock() {
+        // The window in painter mode: its frame is painted, and the dock's painter render of
+        // the same scene has the same bytes.
+        rasterlab::MainWindow window;
+        window.resize(1600, 1000);
+        auto* dock = window.findChild<QDockWidget*>(QStringLiteral("painterDock"));
+        QVERIFY(dock);
+        window.show();
+        dock->show();
+        dock->raise();
+        window.setShading(ShadingModel::Painter);
+        QVERIFY2(QTest::qWaitFor(
+                     [&] {
+                         const auto frame = window.currentFrame();
+                         return frame && frame->depth->painted;
+                     },
+                     10000),
+                 "no painted frame within 10 s");
+        QVERIFY(QTest::qWaitFor([&] { return window.painterView()->comparison() != nullptr; },
+                                10000));
+        const auto frame = window.currentFrame();
+        const auto* c = window.painterView()->comparison();
+        QVERIFY(c->painter->scene != frame->scene);  // rendered again by the dock
+        QVERIFY(colourImage(*c->painter->shading, *c->painter->depth, frame->scene->conventions) ==
+                colourImage(*frame->shading, *frame->depth, frame->scene->conventions));
+        QVERIFY(c->wrongOrder > 0);  // the trefoil passes in front of itself
+        saveShot(window, "painter-window");
     }
 
     void screenshots() {

@@ -128,7 +128,6 @@ PainterView::PainterView(Inspection* inspection, QWidget* parent)
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->verticalHeader()->hide();
-    m_table->setMinimumWidth(340);
     m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->setToolTip(
@@ -139,7 +138,10 @@ PainterView::PainterView(Inspection* inspection, QWidget* parent)
     m_leftChoice->setObjectName(QStringLiteral("painterLeftImage"));
     m_leftChoice->addItem(tr("Painter's image"));
     m_leftChoice->addItem(tr("Painted order (first blue, last red)"));
-    m_leftChoice->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    // The dock takes no more room than the stage views beside it: nothing here sets a wide
+    // minimum (the captions and the choice shrink).
+    m_leftChoice->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_leftChoice->setMinimumContentsLength(12);
     m_marksTies = new QCheckBox(tr("Mark ties on shared edges"), this);
     m_marksTies->setObjectName(QStringLiteral("painterMarksTies"));
     m_marksTies->setToolTip(
@@ -147,12 +149,14 @@ PainterView::PainterView(Inspection* inspection, QWidget* parent)
            "z-buffer keeps the first drawn, the painter the last."));
     m_painterCaption = new QLabel(this);
     m_zBufferCaption = new QLabel(this);
+    for (QLabel* caption : {m_painterCaption, m_zBufferCaption})
+        caption->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     m_painterImage = new FrameImageView(this);
     m_painterImage->setObjectName(QStringLiteral("painterImage"));
     m_zBufferImage = new FrameImageView(this);
     m_zBufferImage->setObjectName(QStringLiteral("painterZBufferImage"));
     for (FrameImageView* view : {m_painterImage, m_zBufferImage}) {
-        view->setMinimumSize(160, 120);
+        view->setMinimumSize(80, 60);
         connect(view, &FrameImageView::pixelPicked, m_inspection, &Inspection::pickPixel);
     }
 
@@ -167,19 +171,22 @@ PainterView::PainterView(Inspection* inspection, QWidget* parent)
     auto* right = new QWidget(this);
     auto* rightLayout = new QVBoxLayout(right);
     rightLayout->setContentsMargins(0, 0, 0, 0);
-    auto* rightHeader = new QHBoxLayout;
-    rightHeader->addWidget(m_zBufferCaption, 1);
-    rightHeader->addWidget(m_marksTies);
-    rightLayout->addLayout(rightHeader);
+    rightLayout->addWidget(m_zBufferCaption);
     rightLayout->addWidget(m_zBufferImage, 1);
     auto* images = new QSplitter(Qt::Horizontal, this);
     images->addWidget(left);
     images->addWidget(right);
+    auto* imagesAndTies = new QWidget(this);
+    auto* imagesLayout = new QVBoxLayout(imagesAndTies);
+    imagesLayout->setContentsMargins(0, 0, 0, 0);
+    imagesLayout->addWidget(images, 1);
+    imagesLayout->addWidget(m_marksTies);
     auto* split = new QSplitter(Qt::Horizontal, this);
+    m_split = split;
     split->addWidget(m_table);
-    split->addWidget(images);
-    split->setStretchFactor(1, 3);
-    split->setSizes({380, 820});
+    split->addWidget(imagesAndTies);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 2);
 
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_explanation);
@@ -209,6 +216,11 @@ void PainterView::setLeftImage(int which) {
 
 void PainterView::showEvent(QShowEvent* event) {
     QWidget::showEvent(event);
+    if (!m_splitSet && width() > 0) {
+        // A third for the table, the rest for the two images, once the width is known.
+        m_split->setSizes({width() / 3, width() - width() / 3});
+        m_splitSet = true;
+    }
     if (m_stale || m_comparedFrame.lock() != m_inspection->frame()) recompute();
 }
 

@@ -22,6 +22,7 @@
 class QCheckBox;
 class QComboBox;
 class QLabel;
+class QSplitter;
 class QTableView;
 
 namespace rasterlab {
@@ -66,6 +67,8 @@ private:
     std::vector<std::uint32_t> m_zBufferPixels;  // per rank: pixels the z-buffer shows it at
     bool m_stale = false;
     bool m_following = false;  // the table follows Inspection's selection
+    bool m_splitSet = false;
+    QSplitter* m_split = nullptr;
     QCheckBox* m_marksTies = nullptr;
     QLabel* m_explanation = nullptr;
     QLabel* m_painterCaption = nullptr;
