@@ -91,13 +91,14 @@ Result<PainterComparison> compareWithZBuffer(const std::shared_ptr<const Scene>&
                 continue;
             ++out.differing;
             const std::uint32_t shown = p.depth->triangle.at(x, y);
-            const std::uint32_t nearest = z.depth->triangle.at(x, y);
+            const std::uint32_t winner = z.depth->triangle.at(x, y);
             // The painter's buffer holds the depth of the last triangle painted here.
-            if (p.depth->depth.at(x, y) > z.depth->depth.at(x, y)) {
+            const float last = p.depth->depth.at(x, y), nearest = z.depth->depth.at(x, y);
+            if (last - nearest > kPainterDepthTolerance * std::abs(nearest)) {
                 out.mask.at(x, y) = PixelDifference::WrongOrder;
                 ++out.wrongOrder;
                 if (shown != kNoTriangle) ++out.coversWrongly[shown];
-                if (nearest != kNoTriangle) ++out.hiddenWrongly[painterIndex[nearest]];
+                if (winner != kNoTriangle) ++out.hiddenWrongly[painterIndex[winner]];
             } else {
                 out.mask.at(x, y) = PixelDifference::Tie;
                 ++out.ties;

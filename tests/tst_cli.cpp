@@ -226,16 +226,18 @@ void TestCli::painterCountsDifferences() {
     QVERIFY(dir.isValid());
     CliRun run;
     RUN_CLI(run,
-            QStringList({"render", "--shading", "painter", "--size", "400x300", "--output",
-                         "painter.png", "--painter-diff", "diff.png"}),
+            QStringList({"render", "--shading", "painter", "--output", "painter.png",
+                         "--painter-diff", "diff.png"}),
             dir.path());
     QCOMPARE(run.err, QString());
     QCOMPARE(run.exitCode, 0);
     const auto comparison = rl::compareWithZBuffer(
-        testing::defaultCourseScene(rl::ShadingModel::Painter, rl::RuleSet::Course, 400, 300));
+        testing::defaultCourseScene(rl::ShadingModel::Painter, rl::RuleSet::Course, 800, 600));
     QVERIFY(comparison.ok());
-    // The trefoil passes in front of itself: a painter's order is wrong somewhere.
+    // The trefoil passes in front of itself: at 800x600 a farther triangle is painted over a
+    // nearer one at a few pixels (5, measured); most differences are ties on shared edges.
     QVERIFY(comparison->wrongOrder > 0);
+    QVERIFY(comparison->ties > comparison->wrongOrder);
     const QString line = QStringLiteral(
                              "  painter: %1 pixels differ from the z-buffer render (%2 where a "
                              "farther triangle was painted last, %3 where two triangles are as "
@@ -244,16 +246,23 @@ void TestCli::painterCountsDifferences() {
                              .arg(comparison->wrongOrder)
                              .arg(comparison->ties);
     QVERIFY2(linesOf(run.out).contains(line), qPrintable(run.out));
-    QVERIFY2(run.out.contains(QStringLiteral("wrote %1 (painter difference, 400x300)")
+    QVERIFY2(run.out.contains(QStringLiteral("wrote %1 (painter difference, 800x600)")
                                   .arg(printedPath(dir, "diff.png"))),
              qPrintable(run.out));
     const QImage diff = QImage(dir.filePath("diff.png")).convertToFormat(QImage::Format_RGBA8888);
-    QCOMPARE(diff.size(), QSize(400, 300));
+    QCOMPARE(diff.size(), QSize(800, 600));
     qsizetype red = 0, yellow = 0;
     for (int y = 0; y < diff.height(); ++y) {
         for (int x = 0; x < diff.width(); ++x) {
             const QRgb c = diff.pixel(x, y);
             const auto d = comparison->mask.at(x, y);
+            // Farther by more than the tolerance (not float rounding along a shared edge): a
+            // wrong order; within it, a tie.
+            const float painted = comparison->painter->depth->depth.at(x, y);
+            const float nearest = comparison->zBuffer->depth->depth.at(x, y);
+            if (d != rl::PixelDifference::Same)
+                QCOMPARE(d == rl::PixelDifference::WrongOrder,
+                         painted - nearest > rl::kPainterDepthTolerance * std::abs(nearest));
             if (d == rl::PixelDifference::WrongOrder) {
                 QCOMPARE(c, qRgba(255, 0, 0, 255));
                 ++red;

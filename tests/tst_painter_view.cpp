@@ -6,15 +6,15 @@
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDockWidget>
 #include <QDir>
+#include <QDockWidget>
 #include <QTableView>
 
 #include "course_scenes.h"
-#include "main_window.h"
-#include "output_image.h"
 #include "frame_image_view.h"
 #include "inspection.h"
+#include "main_window.h"
+#include "output_image.h"
 #include "painter_view.h"
 #include "test_support.h"
 
@@ -143,8 +143,8 @@ private slots:
                      },
                      10000),
                  "no painted frame within 10 s");
-        QVERIFY(QTest::qWaitFor([&] { return window.painterView()->comparison() != nullptr; },
-                                10000));
+        QVERIFY(
+            QTest::qWaitFor([&] { return window.painterView()->comparison() != nullptr; }, 10000));
         const auto frame = window.currentFrame();
         const auto* c = window.painterView()->comparison();
         QVERIFY(c->painter->scene != frame->scene);  // rendered again by the dock
@@ -166,7 +166,7 @@ private slots:
         inspection.selectTriangle(1);
         saveShot(view, "painter-failure");
         inspection.setFrame(testing::renderTrace(testing::defaultCourseScene(
-                                ShadingModel::Painter, RuleSet::Course, 400, 300)),
+                                ShadingModel::Painter, RuleSet::Course, 800, 600)),
                             QImage());
         const auto* c = view.comparison();
         QVERIFY(c);
