@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "explain.h"
 #include "output_image.h"
 #include "painter.h"
 #include "renderer.h"
@@ -286,6 +287,21 @@ private slots:
         QVERIFY(state.image() ==
                 colourImage(*trace->shading, *trace->depth, trace->scene->conventions));
         QVERIFY(state.depth().pixels() == trace->depth->depth.pixels());
+    }
+
+    void explainSaysPainted() {
+        // Pixel (0,0) of the failure scene: L painted at depth 1 over the cleared buffer, then
+        // S at 3 over L's 1, no depth test either time.
+        auto probe = RecordingProbe::forPixel(0, 0);
+        auto trace = traceFrame(shared(failureScene()), {}, probe);
+        QVERIFY(trace.ok());
+        const QString text = QString::fromStdString(explainPixel(trace.value(), probe));
+        QVERIFY2(text.contains(QStringLiteral("z = 1, over stored +infinity: painted, no depth "
+                                              "test (painter's algorithm)")),
+                 qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral(
+                     "z = 3, over stored 1: painted, no depth test (painter's algorithm)")),
+                 qPrintable(text));
     }
 
     void replayEndEqualsTheFrameOnAMesh() {
