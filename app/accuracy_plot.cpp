@@ -19,6 +19,7 @@ QString lit(const char* s) {
 QColor shadingColour(rl::ShadingModel shading) {
     switch (shading) {
         case rl::ShadingModel::Flat:
+        case rl::ShadingModel::Painter:
             return QColor(230, 120, 20);
         case rl::ShadingModel::Gouraud:
             return QColor(40, 100, 220);

@@ -23,6 +23,7 @@
 #include "explain.h"
 #include "image_io.h"
 #include "output_image.h"
+#include "painter.h"
 #include "parallel.h"
 #include "renderer.h"
 
@@ -145,8 +146,11 @@ struct SceneOptions {
         lit("FILE")};
     QCommandLineOption size{lit("size"), lit("Image size, default 800x600."), lit("WxH"),
                             lit("800x600")};
-    QCommandLineOption shading{lit("shading"), lit("phong (default), flat or gouraud."),
-                               lit("MODEL"), lit("phong")};
+    QCommandLineOption shading{
+        lit("shading"),
+        lit("phong (default), flat, gouraud or painter (flat, triangles painted far to "
+            "near without a depth test: seed 004)."),
+        lit("MODEL"), lit("phong")};
     QCommandLineOption near{lit("near"),
                             lit("View-space z of the near plane (default: 0.001 times the "
                                 "farthest vertex's z)."),
@@ -203,8 +207,9 @@ struct SceneOptions {
                                        .arg(pixelLimit));
         const auto model = rl::shadingModelFromName(parser.value(shading).toStdString());
         if (!model)
-            return usageError(err, lit("--shading expects phong, flat or gouraud, found '%1'")
-                                       .arg(parser.value(shading)));
+            return usageError(err,
+                              lit("--shading expects phong, flat, gouraud or painter, found '%1'")
+                                  .arg(parser.value(shading)));
         out.shading = *model;
         const auto ruleSet = rl::ruleSetFromName(parser.value(rules).toStdString());
         if (!ruleSet)
@@ -477,9 +482,16 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
                                          "covered it, each depth test, and its Phong terms."),
                                      lit("X,Y"));
     const AnimationOptions animationOptions;
+    const QCommandLineOption painterDiff(
+        lit("painter-diff"),
+        lit("With --shading painter: also write where the painter's image differs from the "
+            "z-buffer's (the same flat colours, with a depth test), over the z-buffer image "
+            "darkened: red where a farther triangle was painted last, yellow where two "
+            "triangles are as near (an edge they share)."),
+        lit("FILE.png"));
     parser.addOption(help);
     sceneOptions.addTo(parser);
-    parser.addOptions({output, depthOutput, normalsOutput, explain});
+    parser.addOptions({output, depthOutput, normalsOutput, explain, painterDiff});
     animationOptions.addTo(parser);
     if (!parser.parse(arguments)) return usageError(err, parser.errorText());
     if (parser.isSet(help)) {
@@ -493,6 +505,8 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
     rl::CourseSceneSettings settings;
     if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
     if (!parser.isSet(output)) return usageError(err, lit("render needs --output FILE.png"));
+    if (parser.isSet(painterDiff) && settings.shading != rl::ShadingModel::Painter)
+        return usageError(err, lit("--painter-diff needs --shading painter"));
     int explainX = -1, explainY = -1;
     if (parser.isSet(explain)) {
         if (!parsePixel(parser.value(explain), explainX, explainY))
@@ -560,6 +574,18 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
     out << "  " << scene->triangleCount() << " triangles, "
         << rl::shadingModelName(settings.shading) << " shading, " << trace->depth->coveredPixels()
         << " pixels covered, " << QString::number(trace->totalMilliseconds, 'f', 1) << " ms\n";
+    if (settings.shading == rl::ShadingModel::Painter) {
+        // One more render of each kind, with the z-buffer, to show what the order got wrong.
+        const auto comparison = rl::compareWithZBuffer(scene, options);
+        if (!comparison) return inputError(err, comparison.error());
+        out << "  painter: " << comparison->differing << " pixels differ from the z-buffer render ("
+            << comparison->wrongOrder << " where a farther triangle was painted last, "
+            << comparison->ties << " where two triangles are as near)\n";
+        if (parser.isSet(painterDiff) &&
+            !writePng(rl::differenceImage(*comparison), parser.value(painterDiff), out, err,
+                      lit("painter difference")))
+            return ExitBadInput;
+    }
 
     if (probe) out << QString::fromStdString(rl::explainPixel(trace.value(), *probe));
     out.flush();

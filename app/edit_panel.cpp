@@ -360,6 +360,8 @@ QWidget* EditPanel::buildContent() {
     m_shading->addItem(tr("Phong (per pixel)"), int(rl::ShadingModel::Phong));
     m_shading->addItem(tr("Gouraud (per vertex)"), int(rl::ShadingModel::Gouraud));
     m_shading->addItem(tr("Flat (per triangle)"), int(rl::ShadingModel::Flat));
+    m_shading->addItem(tr("Painter's algorithm (flat, no depth test)"),
+                       int(rl::ShadingModel::Painter));
     shading->addWidget(m_shading, 0, 0, 1, 4);
     connect(m_shading, &QComboBox::currentIndexChanged, this, &EditPanel::onShadingChanged);
     addCheck(shading, 1, Field::TwoSided, tr("Two-sided lighting"),

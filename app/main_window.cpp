@@ -31,6 +31,7 @@
 #include "image_io.h"
 #include "near_clip_view.h"
 #include "normals_view.h"
+#include "painter_view.h"
 #include "pixel_inspector.h"
 #include "projection_view.h"
 #include "replay_builder.h"
@@ -86,6 +87,8 @@ QString shadingLabel(rl::ShadingModel model) {
             return MainWindow::tr("Gouraud");
         case rl::ShadingModel::Phong:
             return MainWindow::tr("Phong");
+        case rl::ShadingModel::Painter:
+            return MainWindow::tr("painter's-algorithm flat");  // "..., %5 shading"
     }
     return {};
 }
@@ -301,6 +304,11 @@ void MainWindow::createDocks() {
     QDockWidget* zbufferDock = addDock(tr("6 Z-buffer"), QStringLiteral("zbufferDock"), m_zbuffer,
                                        Qt::RightDockWidgetArea);
     tabifyDockWidget(cameraDock, zbufferDock);
+    // Seed 004's painter's algorithm beside the z-buffer (renders only while shown).
+    m_painter = new PainterView(m_inspection);
+    QDockWidget* painterDock = addDock(tr("Painter's algorithm"), QStringLiteral("painterDock"),
+                                       m_painter, Qt::RightDockWidgetArea);
+    tabifyDockWidget(cameraDock, painterDock);
     scanlineDock->raise();
     resizeDocks({editDock}, {360}, Qt::Horizontal);
     resizeDocks({cameraDock}, {520}, Qt::Horizontal);
@@ -509,6 +517,7 @@ void MainWindow::createActions() {
         {rl::ShadingModel::Phong, tr("&Phong (per pixel)")},
         {rl::ShadingModel::Gouraud, tr("&Gouraud (per vertex)")},
         {rl::ShadingModel::Flat, tr("&Flat (per triangle)")},
+        {rl::ShadingModel::Painter, tr("P&ainter's algorithm (flat, far to near, no depth test)")},
     };
     int key = 1;
     for (const auto& [model, label] : models) {

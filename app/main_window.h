@@ -47,6 +47,7 @@ class ReplayBuilder;
 class StageStrip;
 class SteppingBar;
 class ZBufferView;
+class PainterView;
 
 // What a file holds, told from its name and its text.
 // CameraAndLighting: one key = value file holding both (the UFRPE courses' habit).
@@ -99,6 +100,7 @@ public:
     bool isReadyToStep() const;
     AccuracyPanel* accuracyPanel() const { return m_accuracy; }
     ZBufferView* zbufferView() const { return m_zbuffer; }
+    PainterView* painterView() const { return m_painter; }
     StageStrip* stageStrip() const { return m_stageStrip; }
     SteppingBar* steppingBar() const { return m_steppingBar; }
     BreakpointsView* breakpointsView() const { return m_breakpoints; }
@@ -211,6 +213,7 @@ private:
     QActionGroup* m_rulesGroup = nullptr;
     AccuracyPanel* m_accuracy = nullptr;
     ZBufferView* m_zbuffer = nullptr;
+    PainterView* m_painter = nullptr;
     QByteArray m_defaultLayout;
     QMenu* m_shadingMenu = nullptr;
     QMenu* m_imageMenu = nullptr;

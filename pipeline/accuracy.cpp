@@ -159,7 +159,8 @@ SampledImage shadeFrameInDouble(const FrameTrace& trace, int samplesPerAxis,
                 return a * values[tri.v[0]] + b * values[tri.v[1]] + g * values[tri.v[2]];
             };
             switch (draw.shading) {
-                case ShadingModel::Flat: {
+                case ShadingModel::Flat:
+                case ShadingModel::Painter: {
                     const auto& corners = draw.mesh->triangles[tri.source];
                     const dvec3 centre =
                         (v.p[corners[0]] + v.p[corners[1]] + v.p[corners[2]]) / 3.0;

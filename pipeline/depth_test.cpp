@@ -53,9 +53,11 @@ inline __attribute__((always_inline)) Floats8 blend(const Ints8& mask, const Flo
 RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, float* baryRow,
                                      std::int32_t n, double beta0, double betaDx, double gamma0,
                                      double gammaDx, float z0, float dz1, float dz2,
-                                     std::uint32_t id, bool winsOnTie, bool reciprocal) {
+                                     std::uint32_t id, bool winsOnTie, bool reciprocal,
+                                     bool painted) {
     std::int32_t i = 0;
     const Ints8 tie = winsOnTie ? Ints8{} - 1 : Ints8{};
+    const Ints8 always = painted ? Ints8{} - 1 : Ints8{};  // the painter's: no depth test
     const auto ids = static_cast<std::int32_t>(id);
     const Doubles4 step = {0.0, 1.0, 2.0, 3.0};
     Ints8 passes = {};  // minus the number of passes, per lane
@@ -72,7 +74,7 @@ RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, floa
         if (reciprocal) z = 1.0f / z;
         Floats8 stored;
         std::memcpy(&stored, depthRow + i, sizeof stored);
-        const Ints8 pass = (z < stored) | (tie & (z == stored));
+        const Ints8 pass = (z < stored) | (tie & (z == stored)) | always;
         passes += pass;
         const Floats8 interleaved0 = __builtin_shufflevector(beta, gamma, 0, 8, 1, 9, 2, 10, 3, 11);
         const Floats8 interleaved1 =
@@ -118,7 +120,7 @@ RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, floa
         const auto gamma = static_cast<float>(gamma0 + double(i) * gammaDx);
         float z = z0 + beta * dz1 + gamma * dz2;
         if (reciprocal) z = 1.0f / z;
-        if (z < depthRow[i] || (winsOnTie && z == depthRow[i])) {
+        if (painted || z < depthRow[i] || (winsOnTie && z == depthRow[i])) {
             depthRow[i] = z;
             idRow[i] = id;
             if (baryRow) {
@@ -199,7 +201,7 @@ void testSpanOf(const Scene& scene, const TrianglePlane& setup, std::uint32_t id
             counts.passed += testSpan(depthRow + span.xBegin, idRow + span.xBegin,
                                       out.barycentricsKept ? &baryRow[span.xBegin].x : nullptr, n,
                                       beta0, setup.betaDx, gamma0, setup.gammaDx, setup.z0,
-                                      setup.dz1, setup.dz2, id, winsOnTie, reciprocal);
+                                      setup.dz1, setup.dz2, id, winsOnTie, reciprocal, out.painted);
             return;
         }
     }
@@ -214,7 +216,7 @@ void testSpanOf(const Scene& scene, const TrianglePlane& setup, std::uint32_t id
             continue;
         }
         const float stored = depthRow[x];
-        const bool pass = z < stored || (winsOnTie && z == stored);
+        const bool pass = out.painted || z < stored || (winsOnTie && z == stored);
         RL_PROBE_HOOK(
             probe.onDepthTest({id, x, span.y, 1.0f - beta - gamma, beta, gamma, z, stored, pass}));
         if (pass) {
@@ -396,11 +398,12 @@ DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
         out.visible = std::move(recycled->visible);
     }
     out.clearedTo = clear;
+    out.painted = paintersAlgorithm(scene);
     // Flat shading reads no barycentrics (one colour per triangle): when every draw is flat
     // they are not written. A recording probe's frame keeps them for its log.
     out.barycentricsKept = Probe::enabled || scene.draws.empty();
     for (const Draw& draw : scene.draws)
-        out.barycentricsKept = out.barycentricsKept || draw.shading != ShadingModel::Flat;
+        out.barycentricsKept = out.barycentricsKept || !litPerTriangle(draw.shading);
     std::vector<Counts> counts;
     if constexpr (Probe::enabled) {
         // A recording probe sees the events in triangle order: one thread.

@@ -6,7 +6,8 @@
 // as 1 / (alpha / z1 + beta / z2 + gamma / z3), the depth of the point on the triangle. The buffer
 // starts at the convention's clear value (+infinity, or 1) and the nearer fragment wins: z < stored
 // writes; on a tie the earlier triangle stays, unless the convention says z <= stored (seed 001).
-// Seed 001 also discards fragments whose z is outside [0, 1] (per-pixel clipping).
+// Seed 001 also discards fragments whose z is outside [0, 1] (per-pixel clipping). Under the
+// painter's algorithm (paintersAlgorithm(scene)) there is no test: every fragment is written.
 //
 // The buffer remembers, for each pixel, the winning triangle and its barycentrics, so
 // shading runs once per visible pixel: the image equals that of shading each fragment as
@@ -35,6 +36,9 @@ struct DepthTest {
     // when barycentricsKept (not when every draw is flat: nothing reads them then).
     Image<vec2> barycentric;
     bool barycentricsKept = true;
+    // The painter's algorithm (painter.h): no depth test, every fragment is written over what
+    // was there, so the buffer holds the depth of the last painted fragment, not the nearest.
+    bool painted = false;
     std::size_t fragments = 0;          // tested
     std::size_t passed = 0;             // written (including those overwritten later)
     std::size_t rejected = 0;           // farther than (or as far as) what was stored

@@ -30,9 +30,10 @@ std::string depthText(float z) {
 }
 
 // "< stored 12: written", ">= stored 3: rejected, not nearer", or the range discard.
-std::string depthVerdict(const DepthTestEvent& test, bool winsOnTie) {
+std::string depthVerdict(const DepthTestEvent& test, bool winsOnTie, bool painted) {
     if (test.outsideDepthRange) return ": discarded, outside the depth range [0, 1]";
     const std::string stored = "stored " + depthText(test.stored);
+    if (painted) return ", over " + stored + ": painted, no depth test (painter's algorithm)";
     if (test.passed) return std::string(winsOnTie ? " <= " : " < ") + stored + ": written";
     return std::string(winsOnTie ? " > " : " >= ") + stored + ": rejected, not nearer";
 }
@@ -99,12 +100,13 @@ std::string explainPixel(const FrameTrace& trace, const RecordingProbe& probe) {
         if (const auto* test = std::get_if<DepthTestEvent>(&event)) {
             if (!anyFragment) out += "  depth test, in drawing order:\n";
             anyFragment = true;
-            out += "    " + std::to_string(++fragment) + ". " +
-                   triangleName(trace, test->triangle) +
-                   ": barycentrics alpha = " + formatNumber(test->alpha) +
-                   ", beta = " + formatNumber(test->beta) +
-                   ", gamma = " + formatNumber(test->gamma) + "; z = " + depthText(test->depth) +
-                   depthVerdict(*test, trace.scene->conventions.depthWinsOnTie) + "\n";
+            out +=
+                "    " + std::to_string(++fragment) + ". " + triangleName(trace, test->triangle) +
+                ": barycentrics alpha = " + formatNumber(test->alpha) +
+                ", beta = " + formatNumber(test->beta) + ", gamma = " + formatNumber(test->gamma) +
+                "; z = " + depthText(test->depth) +
+                depthVerdict(*test, trace.scene->conventions.depthWinsOnTie, trace.depth->painted) +
+                "\n";
         } else if (const auto* shade = std::get_if<ShadeEvent>(&event)) {
             const Draw& draw =
                 trace.scene->draws[trace.projection->triangles[shade->triangle].draw];
@@ -117,6 +119,7 @@ std::string explainPixel(const FrameTrace& trace, const RecordingProbe& probe) {
                     describeSample(out, shade->sample, draw);
                     break;
                 case ShadingModel::Flat:
+                case ShadingModel::Painter:
                     out += "    one evaluation at the triangle's barycentre, with its normal\n";
                     describeSample(out, shade->sample, draw);
                     break;

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "format.h"
+#include "painter.h"
 #include "parallel.h"
 
 namespace rl {
@@ -431,6 +432,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                                     " triangles project to infinite or undefined coordinates "
                                     "and were not drawn");
     }
+    if (paintersAlgorithm(scene)) sortFarToNear(scene, out);  // seed 004 (painter.h)
     return out;
 }
 

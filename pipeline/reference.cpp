@@ -283,7 +283,8 @@ Result<ReferenceImage> renderReference(const Scene& scene, const ViewTransform& 
         const auto& corners = draw.mesh->triangles[tri.source];
         const double w = 1.0 - u - v;
         switch (draw.shading) {
-            case ShadingModel::Flat: {
+            case ShadingModel::Flat:
+            case ShadingModel::Painter: {
                 const dvec3 centre = tri.a + (tri.e1 + tri.e2) / 3.0;
                 const dvec3 n = normals.skipped ? dvec3(0.0)
                                                 : toD(normals.draws[tri.draw].triangle[tri.source]);

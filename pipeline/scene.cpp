@@ -10,6 +10,8 @@ const char* shadingModelName(ShadingModel model) {
             return "gouraud";
         case ShadingModel::Phong:
             return "phong";
+        case ShadingModel::Painter:
+            return "painter";
     }
     return "phong";
 }
@@ -18,7 +20,14 @@ std::optional<ShadingModel> shadingModelFromName(std::string_view name) {
     if (name == "flat") return ShadingModel::Flat;
     if (name == "gouraud") return ShadingModel::Gouraud;
     if (name == "phong") return ShadingModel::Phong;
+    if (name == "painter") return ShadingModel::Painter;
     return std::nullopt;
+}
+
+bool paintersAlgorithm(const Scene& scene) {
+    for (const Draw& draw : scene.draws)
+        if (draw.shading == ShadingModel::Painter) return true;
+    return false;
 }
 
 RasterRules RasterRules::course() {

@@ -107,10 +107,18 @@ enum class ShadingModel : std::uint8_t {
     Flat,     // one lighting evaluation per triangle, at its barycentre (seed 004)
     Gouraud,  // lighting at the vertices, colours interpolated
     Phong,    // lighting per pixel with interpolated P' and N (seed 000)
+    // Seed 004's painter's algorithm: lit as Flat, but the frame's triangles are painted far
+    // to near by the distance of their barycentres, without a depth test (painter.h).
+    Painter,
 };
 
-const char* shadingModelName(ShadingModel model);  // "flat", "gouraud", "phong"
+const char* shadingModelName(ShadingModel model);  // "flat", "gouraud", "phong", "painter"
 std::optional<ShadingModel> shadingModelFromName(std::string_view name);
+// One lighting evaluation per triangle, at its barycentre: Flat, and Painter, which lights as
+// Flat.
+inline bool litPerTriangle(ShadingModel model) {
+    return model == ShadingModel::Flat || model == ShadingModel::Painter;
+}
 
 // How a point is lit.
 enum class LightingModel : std::uint8_t {
@@ -273,5 +281,9 @@ struct Scene {
     std::size_t triangleCount() const;
     std::size_t vertexCount() const;
 };
+
+// Whether the frame is painted by the painter's algorithm (painter.h): some draw's shading is
+// ShadingModel::Painter. Then every draw's triangles take part in the one far-to-near order.
+bool paintersAlgorithm(const Scene& scene);
 
 }  // namespace rl

@@ -210,7 +210,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
             const ScreenTriangle& tri = projection.triangles[t];
             const Draw& draw = scene.draws[tri.draw];
             DrawTables& table = tables[tri.draw];
-            if (draw.shading == ShadingModel::Flat) {
+            if (litPerTriangle(draw.shading)) {
                 if (table.done.empty()) {
                     table.flatColour.resize(draw.mesh->triangles.size());
                     table.flatNormal.resize(draw.mesh->triangles.size());
@@ -229,7 +229,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
         const auto evaluate = [&](std::size_t d, std::size_t i, Shading& counts) {
             const Draw& draw = scene.draws[d];
             DrawTables& table = tables[d];
-            if (draw.shading == ShadingModel::Flat) {
+            if (litPerTriangle(draw.shading)) {
                 const ScreenTriangle tri{static_cast<std::uint32_t>(d),
                                          static_cast<std::uint32_t>(i), draw.mesh->triangles[i]};
                 const PhongSample sample = flatSample(tri);
@@ -252,7 +252,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
             DrawTables& table = tables[d];
             if (table.done.empty()) continue;
             // Flat: every triangle; Gouraud: the vertices the projection did not make.
-            const std::size_t independent = scene.draws[d].shading == ShadingModel::Flat
+            const std::size_t independent = litPerTriangle(scene.draws[d].shading)
                                                 ? table.done.size()
                                                 : projection.draws[d].originalVertexCount;
             const int parts = Probe::enabled || independent < 4096 ? 1 : std::max(1, threads);
@@ -392,7 +392,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                         x = end;
                         continue;
                     }
-                    if (draw.shading == ShadingModel::Flat && !normalRow) {
+                    if (litPerTriangle(draw.shading) && !normalRow) {
                         // One colour for the whole run.
                         const vec3 colour = table.flatColour[tri.source];
                         fillColourRun(colour, end - x, colourRow + x);
@@ -439,7 +439,8 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                                           event.sample = s);
                             break;
                         }
-                        case ShadingModel::Flat: {
+                        case ShadingModel::Flat:
+                        case ShadingModel::Painter: {
                             colour = table.flatColour[tri.source];
                             usedNormal = table.flatNormal[tri.source];
                             RL_PROBE_HOOK(event.sample = flatSample(tri));

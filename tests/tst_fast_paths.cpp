@@ -127,7 +127,8 @@ private slots:
         QTest::addColumn<std::shared_ptr<const Scene>>("scene");
         for (auto [name, model] :
              {std::pair{"phong", ShadingModel::Phong}, std::pair{"flat", ShadingModel::Flat},
-              std::pair{"gouraud", ShadingModel::Gouraud}}) {
+              std::pair{"gouraud", ShadingModel::Gouraud},
+              std::pair{"painter", ShadingModel::Painter}}) {
             QTest::newRow((std::string("default scene, ") + name).c_str())
                 << defaultScene(model, 400, 300);
             for (const char* bench : {"sphere-1k", "torus-1k", "full-screen"}) {

@@ -452,7 +452,7 @@ void TestMainWindow::exportToMissingFolder() {
 void TestMainWindow::docks() {
     MainWindow window;
     const QList<QDockWidget*> docks = window.findChildren<QDockWidget*>();
-    QCOMPARE(docks.size(), 15);
+    QCOMPARE(docks.size(), 16);
     std::set<QString> names;
     for (const QDockWidget* dock : docks) {
         QVERIFY2(!dock->objectName().isEmpty(), qPrintable(dock->windowTitle()));
@@ -467,7 +467,7 @@ void TestMainWindow::docks() {
         QStringLiteral("scanlineDock"),    QStringLiteral("pixelInspectorDock"),
         QStringLiteral("vertexTableDock"), QStringLiteral("normalsDock"),
         QStringLiteral("animationDock"),   QStringLiteral("nearClipDock"),
-        QStringLiteral("trapezoidDock")};
+        QStringLiteral("trapezoidDock"),   QStringLiteral("painterDock")};
     QCOMPARE(names, expected);
     const auto* messagesDock = window.findChild<QDockWidget*>(QStringLiteral("messagesDock"));
     QVERIFY(messagesDock);

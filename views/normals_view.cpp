@@ -170,7 +170,7 @@ PixelNormal PixelNormals::at(const rl::DepthTest& buffers, int x, int y) const {
     }
     const rl::vec3 triangleNormal = m_frame->normals->draws[tri.draw].triangle[tri.source];
     rl::vec3 p;
-    if (draw.shading == rl::ShadingModel::Flat) {
+    if (rl::litPerTriangle(draw.shading)) {
         // One normal per triangle, turned toward the viewer at the whole triangle's centre.
         out.flat = true;
         out.weights = rl::vec3(1.0f / 3.0f);

@@ -429,6 +429,12 @@ void PixelInspector::rebuildHistory() {
         const bool tie = conv.depthWinsOnTie;
         switch (row.verdict) {
             case rl::FragmentVerdict::Written:
+                if (frame->depth->painted) {
+                    // The painter's algorithm compares nothing: the last painted stays.
+                    row.depthText = tr("%1 over %2").arg(num(row.depth), num(row.stored));
+                    row.resultText = tr("painted, no depth test");
+                    break;
+                }
                 row.depthText =
                     QStringLiteral("%1 %2 %3")
                         .arg(num(row.depth), tie ? QStringLiteral("<=") : QStringLiteral("<"),
@@ -756,7 +762,7 @@ void PixelInspector::updateBreakdown() {
     const rl::Mesh& mesh = *draw.mesh;
     const rl::ProjectedValues<rl::vec3> colours{mesh.colours, proj};
     const rl::ProjectedValues<rl::vec2> texcoords{mesh.texcoords, proj};
-    if (model == rl::ShadingModel::Flat) {
+    if (rl::litPerTriangle(model)) {
         // At the barycentre of the whole (unclipped) mesh triangle.
         const auto& corners = mesh.triangles[tri.source];
         b.objectColour =
@@ -869,6 +875,7 @@ void PixelInspector::updateBreakdown() {
             break;
         }
         case rl::ShadingModel::Flat:
+        case rl::ShadingModel::Painter:
         case rl::ShadingModel::Phong: {
             if (draw.lighting == rl::LightingModel::Unlit) {
                 b.heading = tr("not lit, the object colour as it is");
@@ -881,7 +888,12 @@ void PixelInspector::updateBreakdown() {
             const bool course = draw.lighting == rl::LightingModel::CoursePhong;
             b.heading = course ? tr("the course's Phong lighting model")
                                : tr("Lambert with Blinn-Phong highlights (command files)");
-            if (model == rl::ShadingModel::Flat)
+            if (model == rl::ShadingModel::Painter)
+                f << tr(
+                    "Painter's algorithm: lit as flat shading, once at the triangle's "
+                    "barycentre; the triangles are painted far to near without a depth "
+                    "test.");
+            if (rl::litPerTriangle(model))
                 f << tr(
                     "Flat shading: evaluated once, at the triangle's barycentre with the "
                     "triangle's normal; every pixel of the triangle gets this colour.");

@@ -1,0 +1,134 @@
+#include "painter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "output_image.h"
+
+namespace rl {
+
+dvec3 viewBarycentre(const DrawProjection& draw, const Mesh& mesh, std::uint32_t source) {
+    const auto& corners = mesh.triangles[source];
+    return (cartesian(draw.pView[corners[0]]) + cartesian(draw.pView[corners[1]]) +
+            cartesian(draw.pView[corners[2]])) /
+           3.0;
+}
+
+double painterDistance(const Scene& scene, const Projection& projection, std::uint32_t t) {
+    const ScreenTriangle& tri = projection.triangles[t];
+    return glm::length(
+        viewBarycentre(projection.draws[tri.draw], *scene.draws[tri.draw].mesh, tri.source));
+}
+
+std::vector<std::uint32_t> painterOrder(const Scene& scene, const Projection& projection) {
+    const std::size_t n = projection.triangles.size();
+    std::vector<double> distance(n);
+    for (std::size_t t = 0; t < n; ++t)
+        distance[t] = painterDistance(scene, projection, static_cast<std::uint32_t>(t));
+    std::vector<std::uint32_t> order(n);
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return distance[a] > distance[b]; });
+    return order;
+}
+
+void sortFarToNear(const Scene& scene, Projection& projection) {
+    const std::vector<std::uint32_t> order = painterOrder(scene, projection);
+    std::vector<ScreenTriangle> sorted;
+    sorted.reserve(order.size());
+    for (std::uint32_t t : order) sorted.push_back(projection.triangles[t]);
+    projection.triangles = std::move(sorted);
+}
+
+namespace {
+
+std::shared_ptr<const Scene> withShading(const Scene& scene, ShadingModel model) {
+    auto copy = std::make_shared<Scene>(scene);
+    for (Draw& draw : copy->draws) draw.shading = model;
+    return copy;
+}
+
+}  // namespace
+
+std::shared_ptr<const Scene> painterSceneOf(const Scene& scene) {
+    return withShading(scene, ShadingModel::Painter);
+}
+
+std::shared_ptr<const Scene> zBufferSceneOf(const Scene& scene) {
+    return withShading(scene, ShadingModel::Flat);
+}
+
+Result<PainterComparison> compareWithZBuffer(const std::shared_ptr<const Scene>& scene,
+                                             const RenderOptions& options) {
+    if (!scene)
+        return makeError(ErrorCode::Usage, SourceLocation{"<scene>", 0, 0}, "no scene to render");
+    Result<FrameTrace> painted = renderFrame(painterSceneOf(*scene), options);
+    if (!painted) return painted.error();
+    Result<FrameTrace> tested = renderFrame(zBufferSceneOf(*scene), options);
+    if (!tested) return tested.error();
+    PainterComparison out;
+    out.painter = std::make_shared<const FrameTrace>(std::move(painted).value());
+    out.zBuffer = std::make_shared<const FrameTrace>(std::move(tested).value());
+    const FrameTrace& p = *out.painter;
+    const FrameTrace& z = *out.zBuffer;
+    // The projection is the same but for the order: the z-buffer frame's, sorted, is the
+    // painter's.
+    out.zBufferIndex = painterOrder(*z.scene, *z.projection);
+    std::vector<std::uint32_t> painterIndex(out.zBufferIndex.size());
+    for (std::size_t rank = 0; rank < out.zBufferIndex.size(); ++rank)
+        painterIndex[out.zBufferIndex[rank]] = static_cast<std::uint32_t>(rank);
+    out.hiddenWrongly.assign(out.zBufferIndex.size(), 0);
+    out.coversWrongly.assign(out.zBufferIndex.size(), 0);
+
+    const Rgba8Image painterImage = colourImage(*p.shading, *p.depth, p.scene->conventions);
+    const Rgba8Image zImage = colourImage(*z.shading, *z.depth, z.scene->conventions);
+    out.mask.reset(scene->width, scene->height, PixelDifference::Same);
+    for (int y = 0; y < scene->height; ++y) {
+        for (int x = 0; x < scene->width; ++x) {
+            if (std::equal(painterImage.pixel(x, y), painterImage.pixel(x, y) + 4,
+                           zImage.pixel(x, y)))
+                continue;
+            ++out.differing;
+            const std::uint32_t shown = p.depth->triangle.at(x, y);
+            const std::uint32_t winner = z.depth->triangle.at(x, y);
+            // The painter's buffer holds the depth of the last triangle painted here.
+            const float last = p.depth->depth.at(x, y), nearest = z.depth->depth.at(x, y);
+            if (last - nearest > kPainterDepthTolerance * std::abs(nearest)) {
+                out.mask.at(x, y) = PixelDifference::WrongOrder;
+                ++out.wrongOrder;
+                if (shown != kNoTriangle) ++out.coversWrongly[shown];
+                if (winner != kNoTriangle) ++out.hiddenWrongly[painterIndex[winner]];
+            } else {
+                out.mask.at(x, y) = PixelDifference::Tie;
+                ++out.ties;
+            }
+        }
+    }
+    return out;
+}
+
+Rgba8Image differenceImage(const PainterComparison& comparison) {
+    const FrameTrace& z = *comparison.zBuffer;
+    Rgba8Image out = colourImage(*z.shading, *z.depth, z.scene->conventions);
+    for (int y = 0; y < out.height; ++y) {
+        for (int x = 0; x < out.width; ++x) {
+            std::uint8_t* p = out.rgba.data() + (static_cast<std::size_t>(y) * out.width + x) * 4;
+            switch (comparison.mask.at(x, y)) {
+                case PixelDifference::Same:
+                    for (int c = 0; c < 3; ++c) p[c] = static_cast<std::uint8_t>(p[c] / 3);
+                    break;
+                case PixelDifference::WrongOrder:
+                    p[0] = 255, p[1] = 0, p[2] = 0;
+                    break;
+                case PixelDifference::Tie:
+                    p[0] = 255, p[1] = 220, p[2] = 0;
+                    break;
+            }
+            p[3] = 255;
+        }
+    }
+    return out;
+}
+
+}  // namespace rl
