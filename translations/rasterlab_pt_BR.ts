@@ -4,57 +4,57 @@
 <context>
     <name>AccuracyPlot</name>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="126"/>
+        <location filename="../app/accuracy_plot.cpp" line="127"/>
         <source>median time per frame (ms, log scale)</source>
         <translation>tempo mediano por quadro (ms, escala logarítmica)</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="132"/>
+        <location filename="../app/accuracy_plot.cpp" line="133"/>
         <source>colour RMSE against the exact reference (byte steps, log scale)</source>
         <translation>RMSE da cor contra a referência exata (passos de byte, escala logarítmica)</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="186"/>
+        <location filename="../app/accuracy_plot.cpp" line="187"/>
         <source>colour: shading</source>
         <translation>cor: sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="195"/>
+        <location filename="../app/accuracy_plot.cpp" line="196"/>
         <source>shape: rules</source>
         <translation>forma: regras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="204"/>
+        <location filename="../app/accuracy_plot.cpp" line="205"/>
         <source>filled: float; hollow: double</source>
         <translation>cheio: float; vazado: double</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="207"/>
+        <location filename="../app/accuracy_plot.cpp" line="208"/>
         <source>size: samples per pixel</source>
         <translation>tamanho: amostras por pixel</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="209"/>
+        <location filename="../app/accuracy_plot.cpp" line="210"/>
         <source>exact reference:</source>
         <translation>referência exata:</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="211"/>
+        <location filename="../app/accuracy_plot.cpp" line="212"/>
         <source>%1 ms, %2 rays</source>
         <translation>%1 ms, %2 raios</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="216"/>
+        <location filename="../app/accuracy_plot.cpp" line="217"/>
         <source>an RMSE of 0 sits on the floor</source>
         <translation>RMSE 0: no piso do gráfico</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="261"/>
+        <location filename="../app/accuracy_plot.cpp" line="262"/>
         <source>byte steps</source>
         <translation>passos de byte</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="264"/>
+        <location filename="../app/accuracy_plot.cpp" line="265"/>
         <source>coverage</source>
         <translation>cobertura</translation>
     </message>
@@ -196,6 +196,95 @@
     </message>
 </context>
 <context>
+    <name>rasterlab::AnimationPanel</name>
+    <message>
+        <location filename="../app/animation_panel.cpp" line="28"/>
+        <source>Animate: each draw moved by M(t)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/animation_panel.cpp" line="33"/>
+        <location filename="../app/animation_panel.cpp" line="206"/>
+        <source>Play</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/animation_panel.cpp" line="38"/>
+        <source>Play or pause the animation; paused, every stage view inspects the frame shown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/animation_panel.cpp" line="59"/>
+        <source>Frames:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/animation_panel.cpp" line="62"/>
+        <source>Frames a second:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/animation_panel.cpp" line="65"/>
+        <source> °/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/animation_panel.cpp" line="66"/>
+        <source>Turn:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/animation_panel.cpp" line="67"/>
+        <source>Turn about the camera&apos;s up (a turntable)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/animation_panel.cpp" line="93"/>
+        <source>Axis:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/animation_panel.cpp" line="95"/>
+        <source>Moves (units/s):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/animation_panel.cpp" line="96"/>
+        <source>Scale:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/animation_panel.cpp" line="107"/>
+        <source>&lt;i&gt;The animation belongs to this session: course files have no such field, and saving the camera or lighting does not write it.&lt;/i&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/animation_panel.cpp" line="206"/>
+        <source>Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/animation_panel.cpp" line="218"/>
+        <source>Frame %1 of %2, t = %3 / %4 = %5 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/animation_panel.cpp" line="235"/>
+        <source>&lt;p&gt;M(t) = T(v t) · T(c) · R(axis, ω t) · S · T(−c): not applied (the animation is off, so M is the identity).&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/animation_panel.cpp" line="251"/>
+        <source>&lt;p&gt;M(t) = T(v t) · T(c) · R(axis, ω t) · S · T(−c), at t = %1 s:&lt;br&gt;c = %2 (the centre of the bounding box), axis = %3,&lt;br&gt;ω t = %4 °/s · %1 s = %5°, v t = %6, S = diag%7&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/animation_panel.cpp" line="259"/>
+        <source>&lt;p&gt;Normals are moved by the inverse transpose of M (stage 3).&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>rasterlab::BreakpointsView</name>
     <message>
         <location filename="../views/breakpoints_view.cpp" line="37"/>
@@ -325,37 +414,37 @@
 <context>
     <name>rasterlab::CameraBasisCanvas</name>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="174"/>
+        <location filename="../views/camera_basis_view.cpp" line="177"/>
         <source>Drag to turn the scene, wheel to zoom, double-click to reset.</source>
         <translation>Arraste para girar a cena, use a roda para o zoom, clique duas vezes para restaurar.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="177"/>
+        <location filename="../views/camera_basis_view.cpp" line="180"/>
         <source>Reset view</source>
         <translation>Restaurar vista</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="178"/>
+        <location filename="../views/camera_basis_view.cpp" line="181"/>
         <source>Turn the 3D drawing back to where it started</source>
         <translation>Volta o desenho 3D à posição inicial</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="365"/>
+        <location filename="../views/camera_basis_view.cpp" line="368"/>
         <source>window (d = %1)</source>
         <translation>janela (d = %1)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="369"/>
+        <location filename="../views/camera_basis_view.cpp" line="372"/>
         <source>frustum</source>
         <translation>frustum</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="382"/>
+        <location filename="../views/camera_basis_view.cpp" line="385"/>
         <source>N given, |N| = %1</source>
         <translation>N dado, |N| = %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="385"/>
+        <location filename="../views/camera_basis_view.cpp" line="388"/>
         <source>V given, |V| = %1</source>
         <translation>V dado, |V| = %1</translation>
     </message>
@@ -363,127 +452,127 @@
 <context>
     <name>rasterlab::CameraBasisView</name>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="447"/>
+        <location filename="../views/camera_basis_view.cpp" line="450"/>
         <source>Previous step</source>
         <translation>Passo anterior</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="451"/>
+        <location filename="../views/camera_basis_view.cpp" line="454"/>
         <source>Next step</source>
         <translation>Próximo passo</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="563"/>
+        <location filename="../views/camera_basis_view.cpp" line="566"/>
         <source>The camera was rejected: %1</source>
         <translation>A câmera foi rejeitada: %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="566"/>
+        <location filename="../views/camera_basis_view.cpp" line="569"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="568"/>
+        <location filename="../views/camera_basis_view.cpp" line="571"/>
         <source>This stage is skipped: %1.</source>
         <translation>Esta etapa é omitida: %1.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="570"/>
+        <location filename="../views/camera_basis_view.cpp" line="573"/>
         <source>the frame has no camera basis</source>
         <translation>o quadro não tem base da câmera</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="577"/>
+        <location filename="../views/camera_basis_view.cpp" line="580"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; From the course camera (C, N, V) Gram-Schmidt makes the orthonormal basis U, V, N of view space. A scene whose draws carry their own model/view matrices (HW2 command files) has no course camera: this stage does nothing for it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Base da câmera.&lt;/b&gt; A partir da câmera do curso (C, N, V), Gram-Schmidt constrói a base ortonormal U, V, N do espaço de vista. Uma cena cujos desenhos trazem suas próprias matrizes de modelo/vista (arquivos de comandos HW2) não tem câmera do curso: esta etapa não faz nada para ela.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="590"/>
+        <location filename="../views/camera_basis_view.cpp" line="593"/>
         <source>N and V are nearly parallel: |V − (V·N) N| / |V| = %1, below %2. The basis is ill-conditioned: a tiny change of N or V turns U and V a lot. Choose a V further from N.</source>
         <translation>N e V são quase paralelos: |V − (V·N) N| / |V| = %1, abaixo de %2. A base é mal condicionada: uma mudança mínima de N ou V gira muito U e V. Escolha um V mais afastado de N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="595"/>
+        <location filename="../views/camera_basis_view.cpp" line="598"/>
         <source>1. N := N / |N| = %1 / %2 = %3</source>
         <translation>1. N := N / |N| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="597"/>
+        <location filename="../views/camera_basis_view.cpp" line="600"/>
         <source>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</source>
         <translation>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="599"/>
+        <location filename="../views/camera_basis_view.cpp" line="602"/>
         <source>3. V := V / |V| = %1 / %2 = %3</source>
         <translation>3. V := V / |V| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="601"/>
+        <location filename="../views/camera_basis_view.cpp" line="604"/>
         <source>4. U := N × V = %1 × %2 = %3</source>
         <translation>4. U := N × V = %1 × %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="603"/>
+        <location filename="../views/camera_basis_view.cpp" line="606"/>
         <source>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; largest %7</source>
         <translation>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; maior %7</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="627"/>
+        <location filename="../views/camera_basis_view.cpp" line="630"/>
         <source>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): rows U, V, N, then (0 0 0 1); the last column is −U·C, −V·C, −N·C.</source>
         <translation>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): linhas U, V, N e depois (0 0 0 1); a última coluna é −U·C, −V·C, −N·C.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="638"/>
+        <location filename="../views/camera_basis_view.cpp" line="641"/>
         <source>&lt;p&gt;Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vértice 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="641"/>
+        <location filename="../views/camera_basis_view.cpp" line="644"/>
         <source>, in front of the camera (z &gt; 0)</source>
         <translation>, à frente da câmera (z &gt; 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="642"/>
+        <location filename="../views/camera_basis_view.cpp" line="645"/>
         <source>, behind the camera (z ≤ 0)</source>
         <translation>, atrás da câmera (z ≤ 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="645"/>
+        <location filename="../views/camera_basis_view.cpp" line="648"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; Gram-Schmidt keeps the direction of N (where the camera looks), removes from V its part along N so that up is perpendicular to the view direction, and completes the frame with U = N × V, the image&apos;s right. viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Base da câmera.&lt;/b&gt; Gram-Schmidt mantém a direção de N (para onde a câmera olha), remove de V sua componente ao longo de N para que o &quot;para cima&quot; fique perpendicular à direção de visão, e completa o referencial com U = N × V, a direita da imagem. viewFromWorld = [U; V; N] (P − C) põe a câmera na origem olhando ao longo de +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="677"/>
+        <location filename="../views/camera_basis_view.cpp" line="680"/>
         <source>Step %1 of 4</source>
         <translation>Passo %1 de 4</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="691"/>
+        <location filename="../views/camera_basis_view.cpp" line="694"/>
         <source>Step forward to normalise N.</source>
         <translation>Avance um passo para normalizar N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="692"/>
+        <location filename="../views/camera_basis_view.cpp" line="695"/>
         <source>Step forward to remove from V its part along N.</source>
         <translation>Avance um passo para remover de V sua componente ao longo de N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="693"/>
+        <location filename="../views/camera_basis_view.cpp" line="696"/>
         <source>Step forward to normalise V.</source>
         <translation>Avance um passo para normalizar V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="694"/>
+        <location filename="../views/camera_basis_view.cpp" line="697"/>
         <source>Step forward to make U = N × V.</source>
         <translation>Avance um passo para obter U = N × V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="695"/>
+        <location filename="../views/camera_basis_view.cpp" line="698"/>
         <source>The basis is complete; the frustum is drawn with it.</source>
         <translation>A base está completa; o frustum é desenhado com ela.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="708"/>
+        <location filename="../views/camera_basis_view.cpp" line="711"/>
         <source>&lt;b&gt;Orthonormality residuals&lt;/b&gt; (0 up to rounding): %1</source>
         <translation>&lt;b&gt;Resíduos de ortonormalidade&lt;/b&gt; (0 a menos de arredondamento): %1</translation>
     </message>
@@ -491,233 +580,381 @@
 <context>
     <name>rasterlab::EditPanel</name>
     <message>
-        <location filename="../app/edit_panel.cpp" line="214"/>
+        <location filename="../app/edit_panel.cpp" line="219"/>
         <source>One kd for the three channels (the UFPE files have one number): changing one changes all three</source>
         <translation>Um só kd para os três canais (os arquivos da UFPE têm um só número): mudar um muda os três</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="255"/>
+        <location filename="../app/edit_panel.cpp" line="260"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="255"/>
+        <location filename="../app/edit_panel.cpp" line="260"/>
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="255"/>
+        <location filename="../app/edit_panel.cpp" line="260"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="258"/>
-        <location filename="../app/edit_panel.cpp" line="548"/>
+        <location filename="../app/edit_panel.cpp" line="263"/>
+        <location filename="../app/edit_panel.cpp" line="693"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="260"/>
+        <location filename="../app/edit_panel.cpp" line="265"/>
         <source>C: the camera&apos;s position (world)</source>
         <translation>C: a posição da câmera (mundo)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="263"/>
+        <location filename="../app/edit_panel.cpp" line="268"/>
         <source>N: the view direction (normalised by the camera basis)</source>
         <translation>N: a direção de visão (normalizada pela base da câmera)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="265"/>
+        <location filename="../app/edit_panel.cpp" line="270"/>
         <source>V: the up vector (made orthogonal to N by Gram-Schmidt)</source>
         <translation>V: o vetor para cima (tornado ortogonal a N por Gram-Schmidt)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="267"/>
+        <location filename="../app/edit_panel.cpp" line="272"/>
         <source>d: the distance from C to the projection plane</source>
         <translation>d: a distância de C ao plano de projeção</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="269"/>
+        <location filename="../app/edit_panel.cpp" line="274"/>
         <source>hx: half the width of the window on the projection plane</source>
         <translation>hx: metade da largura da janela no plano de projeção</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="271"/>
+        <location filename="../app/edit_panel.cpp" line="276"/>
         <source>hy: half the height of the window on the projection plane</source>
         <translation>hy: metade da altura da janela no plano de projeção</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="275"/>
+        <location filename="../app/edit_panel.cpp" line="280"/>
         <source>Light</source>
         <translation>Luz</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="278"/>
         <source>The light whose position and colour are shown</source>
-        <translation>A luz cuja posição e cor são mostradas</translation>
+        <translation type="vanished">A luz cuja posição e cor são mostradas</translation>
+    </message>
+    <message>
+        <source>Pl: the light&apos;s position (world)</source>
+        <translation type="vanished">Pl: a posição da luz (mundo)</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="283"/>
-        <source>Pl: the light&apos;s position (world)</source>
-        <translation>Pl: a posição da luz (mundo)</translation>
+        <source>The light whose values are shown</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="286"/>
+        <location filename="../app/edit_panel.cpp" line="289"/>
+        <source>Add a light: a copy of the light shown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="294"/>
+        <source>Remove the light shown (the scene keeps one light at least)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="303"/>
+        <source>Pl: the light&apos;s position (world), or the direction toward it for a directional light</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="306"/>
+        <source>Directional (w = 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="307"/>
+        <source>A directional light is infinitely far: L is the same everywhere and it is not attenuated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="311"/>
         <source>Il: the light&apos;s colour, 0 to 255 per channel</source>
         <translation>Il: a cor da luz, de 0 a 255 por canal</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="289"/>
+        <location filename="../app/edit_panel.cpp" line="315"/>
+        <source>att</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="316"/>
+        <source>Attenuation: the light&apos;s diffuse and specular terms are divided by kc + kl d + kq d², d its distance to the point (1 0 0: none)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="319"/>
+        <source>Spot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="320"/>
+        <source>A spot lights only the points within its cutoff angle of its direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="323"/>
+        <source>D: the direction the spot points to (world)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="324"/>
+        <source>cut</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="325"/>
+        <source>The spot&apos;s cutoff angle, 0 to 90 degrees</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="326"/>
+        <source>exp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="327"/>
+        <source>The spot&apos;s exponent: its light falls off as (-L.D)^exp toward the edge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="331"/>
         <source>Ambient</source>
         <translation>Ambiente</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="292"/>
+        <location filename="../app/edit_panel.cpp" line="334"/>
         <source>Ia: the ambient light&apos;s colour, 0 to 255 per channel</source>
         <translation>Ia: a cor da luz ambiente, de 0 a 255 por canal</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="294"/>
+        <location filename="../app/edit_panel.cpp" line="336"/>
         <source>ka: the ambient coefficient, 0 to 1</source>
         <translation>ka: o coeficiente ambiente, de 0 a 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="297"/>
+        <location filename="../app/edit_panel.cpp" line="339"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="300"/>
+        <location filename="../app/edit_panel.cpp" line="342"/>
         <source>kd: the diffuse coefficient of each channel, 0 to 1</source>
         <translation>kd: o coeficiente difuso de cada canal, de 0 a 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="303"/>
+        <location filename="../app/edit_panel.cpp" line="345"/>
         <source>Od: the object&apos;s diffuse colour, 0 to 1 per channel</source>
         <translation>Od: a cor difusa do objeto, de 0 a 1 por canal</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="305"/>
+        <location filename="../app/edit_panel.cpp" line="347"/>
+        <source>Ke: the light the object gives off by itself, 0 to 255 per channel (added to every lit point)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="351"/>
         <source>ks: the specular coefficient, 0 to 1</source>
         <translation>ks: o coeficiente especular, de 0 a 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="307"/>
+        <location filename="../app/edit_panel.cpp" line="353"/>
         <source>n: the specular exponent (larger: a smaller, sharper highlight)</source>
         <translation>n: o expoente especular (maior: um brilho menor e mais nítido)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="311"/>
+        <location filename="../app/edit_panel.cpp" line="357"/>
         <source>Shading</source>
         <translation>Sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="314"/>
+        <location filename="../app/edit_panel.cpp" line="360"/>
         <source>Phong (per pixel)</source>
         <translation>Phong (por pixel)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="315"/>
+        <location filename="../app/edit_panel.cpp" line="361"/>
         <source>Gouraud (per vertex)</source>
         <translation>Gouraud (por vértice)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="316"/>
+        <location filename="../app/edit_panel.cpp" line="362"/>
         <source>Flat (per triangle)</source>
         <translation>Flat (por triângulo)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="325"/>
+        <location filename="../app/edit_panel.cpp" line="363"/>
+        <source>Painter&apos;s algorithm (flat, no depth test)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="367"/>
+        <source>Two-sided lighting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="368"/>
+        <source>On (the course&apos;s rule): where V.N &lt; 0 the normal is turned round, so the back of a surface is lit like its front. Off: one-sided, the back keeps a normal pointing away</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="371"/>
+        <source>Blinn-Phong highlight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="372"/>
+        <source>The highlight with the half vector H = (L + V)/|L + V| instead of Phong&apos;s reflection R: (N.H)^n instead of (R.V)^n</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="439"/>
+        <source>Add light %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="450"/>
+        <source>Remove light %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="466"/>
         <source>&amp;Undo</source>
         <translation>&amp;Desfazer</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="328"/>
+        <location filename="../app/edit_panel.cpp" line="469"/>
         <source>&amp;Redo</source>
         <translation>&amp;Refazer</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="332"/>
+        <location filename="../app/edit_panel.cpp" line="473"/>
         <source>&amp;Save Camera and Lighting</source>
         <translation>&amp;Salvar câmera e iluminação</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="335"/>
+        <location filename="../app/edit_panel.cpp" line="476"/>
         <source>Write the edited camera and lighting to their files</source>
         <translation>Grava a câmera e a iluminação editadas nos seus arquivos</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="341"/>
+        <location filename="../app/edit_panel.cpp" line="482"/>
         <source>&amp;Camera...</source>
         <translation>&amp;Câmera...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="343"/>
+        <location filename="../app/edit_panel.cpp" line="484"/>
         <source>&amp;Lighting...</source>
         <translation>&amp;Iluminação...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="346"/>
+        <location filename="../app/edit_panel.cpp" line="487"/>
         <source>Save &amp;As</source>
         <translation>Sal&amp;var como</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="388"/>
+        <location filename="../app/edit_panel.cpp" line="529"/>
         <source>Light %1 of %2</source>
         <translation>Luz %1 de %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="465"/>
+        <location filename="../app/edit_panel.cpp" line="610"/>
         <source>Change %1</source>
         <translation>alteração de %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="534"/>
+        <location filename="../app/edit_panel.cpp" line="679"/>
         <source>A command file is shown: its scene is not edited here.</source>
         <translation>Um arquivo de comandos está aberto: sua cena não é editada aqui.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="540"/>
+        <location filename="../app/edit_panel.cpp" line="685"/>
         <source>built-in scene</source>
         <translation>cena embutida</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="544"/>
+        <location filename="../app/edit_panel.cpp" line="689"/>
         <source>modified</source>
         <translation>modificada</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="550"/>
+        <location filename="../app/edit_panel.cpp" line="695"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="557"/>
+        <location filename="../app/edit_panel.cpp" line="705"/>
         <source>shading</source>
         <translation>sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="564"/>
+        <location filename="../app/edit_panel.cpp" line="707"/>
+        <source>two-sided lighting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="709"/>
+        <source>the highlight&apos;s model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="711"/>
+        <source>directional</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="714"/>
+        <source>spot cutoff</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="717"/>
+        <source>spot exponent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="720"/>
+        <source>spot direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="723"/>
+        <source>attenuation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="733"/>
         <source>%1 of light %2</source>
         <translation>%1 da luz %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="573"/>
+        <location filename="../app/edit_panel.cpp" line="742"/>
         <source>The camera was not saved.</source>
         <translation>A câmera não foi salva.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="573"/>
+        <location filename="../app/edit_panel.cpp" line="742"/>
         <source>The lighting was not saved.</source>
         <translation>A iluminação não foi salva.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="649"/>
+        <location filename="../app/edit_panel.cpp" line="818"/>
         <source>The camera has changes that are not saved (%1).</source>
         <translation>A câmera tem alterações não salvas (%1).</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="650"/>
+        <location filename="../app/edit_panel.cpp" line="819"/>
         <source>The lighting has changes that are not saved (%1).</source>
         <translation>A iluminação tem alterações não salvas (%1).</translation>
     </message>
@@ -730,7 +967,7 @@
         <translation type="vanished">iluminação</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="572"/>
+        <location filename="../app/edit_panel.cpp" line="741"/>
         <source>Save</source>
         <translation>Salvar</translation>
     </message>
@@ -739,22 +976,22 @@
         <translation type="vanished">A %1 não foi salva.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="628"/>
+        <location filename="../app/edit_panel.cpp" line="797"/>
         <source>Save Camera As</source>
         <translation>Salvar câmera como</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="628"/>
+        <location filename="../app/edit_panel.cpp" line="797"/>
         <source>Save Lighting As</source>
         <translation>Salvar iluminação como</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="646"/>
+        <location filename="../app/edit_panel.cpp" line="815"/>
         <source>the built-in scene</source>
         <translation>a cena embutida</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="648"/>
+        <location filename="../app/edit_panel.cpp" line="817"/>
         <source>Unsaved changes</source>
         <translation>Alterações não salvas</translation>
     </message>
@@ -763,7 +1000,7 @@
         <translation type="vanished">A %1 tem alterações que não foram salvas (%2).</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="655"/>
+        <location filename="../app/edit_panel.cpp" line="824"/>
         <source>Save them?</source>
         <translation>Salvá-las?</translation>
     </message>
@@ -810,168 +1047,204 @@
 <context>
     <name>rasterlab::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="48"/>
+        <location filename="../app/main_window.cpp" line="52"/>
         <source>Open Camera</source>
         <translation>Abrir câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="50"/>
+        <location filename="../app/main_window.cpp" line="54"/>
         <source>Open Lighting</source>
         <translation>Abrir iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="52"/>
+        <location filename="../app/main_window.cpp" line="56"/>
         <source>Open Object</source>
         <translation>Abrir objeto</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="60"/>
+        <location filename="../app/main_window.cpp" line="64"/>
         <source>Camera files (*.cfg *.txt);;All files (*)</source>
         <translation>Arquivos de câmera (*.cfg *.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="62"/>
+        <location filename="../app/main_window.cpp" line="66"/>
         <source>Lighting files (*.txt *.lux);;All files (*)</source>
         <translation>Arquivos de iluminação (*.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="64"/>
+        <location filename="../app/main_window.cpp" line="68"/>
         <source>Objects (*.byu *.txt);;All files (*)</source>
         <translation>Objetos (*.byu *.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="73"/>
+        <location filename="../app/main_window.cpp" line="77"/>
         <source>Detect from the file</source>
         <translation>Detectar pelo arquivo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="81"/>
+        <location filename="../app/main_window.cpp" line="85"/>
         <source>flat</source>
         <translation>flat</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="83"/>
+        <location filename="../app/main_window.cpp" line="87"/>
         <source>Gouraud</source>
         <translation>Gouraud</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="85"/>
+        <location filename="../app/main_window.cpp" line="89"/>
         <source>Phong</source>
         <translation>Phong</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="92"/>
+        <location filename="../app/main_window.cpp" line="91"/>
+        <source>painter&apos;s-algorithm flat</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="98"/>
         <source>%1 (built in)</source>
         <translation>%1 (embutido)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="100"/>
+        <location filename="../app/main_window.cpp" line="106"/>
         <source>RasterLab</source>
         <translation>RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="142"/>
+        <location filename="../app/main_window.cpp" line="148"/>
         <source>Stopped at a breakpoint: %1</source>
         <translation>Parado num ponto de parada: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="169"/>
-        <location filename="../app/main_window_export.cpp" line="78"/>
+        <location filename="../app/main_window.cpp" line="175"/>
+        <location filename="../app/main_window_export.cpp" line="80"/>
+        <location filename="../app/main_window_export.cpp" line="118"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="170"/>
+        <location filename="../app/main_window.cpp" line="176"/>
         <source>Stop preparing the stepping of this frame</source>
         <translation>Parar a preparação do passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="174"/>
+        <location filename="../app/main_window.cpp" line="180"/>
         <source>cancelled</source>
         <translation>cancelado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="223"/>
+        <location filename="../app/main_window.cpp" line="229"/>
         <source>Stepping</source>
         <translation>Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="237"/>
+        <location filename="../app/main_window.cpp" line="243"/>
         <source>Edit</source>
         <translation>Edição</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="244"/>
+        <location filename="../app/main_window.cpp" line="250"/>
         <source>Breakpoints</source>
         <translation>Pontos de parada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="255"/>
+        <location filename="../app/main_window.cpp" line="258"/>
+        <source>Animation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="270"/>
         <source>1 Camera basis</source>
         <translation>1 Base da câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="259"/>
+        <location filename="../app/main_window.cpp" line="274"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Inspetor de pixel (iluminação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="264"/>
+        <location filename="../app/main_window.cpp" line="279"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 Coordenadas de vista (vértices)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="269"/>
+        <location filename="../app/main_window.cpp" line="284"/>
         <source>3 Normals</source>
         <translation>3 Normais</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="272"/>
+        <location filename="../app/main_window.cpp" line="287"/>
         <source>4 Projection</source>
         <translation>4 Projeção</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="276"/>
+        <location filename="../app/main_window.cpp" line="291"/>
         <source>5 Scan conversion</source>
         <translation>5 Conversão por varredura</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="280"/>
+        <location filename="../app/main_window.cpp" line="297"/>
+        <source>4b Near-plane clipping</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="300"/>
+        <source>5b Trapezoids</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="304"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="291"/>
+        <location filename="../app/main_window.cpp" line="309"/>
+        <source>Painter&apos;s algorithm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="320"/>
         <source>&amp;File</source>
         <translation>&amp;Arquivo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1018"/>
+        <location filename="../app/main_window.cpp" line="404"/>
+        <source>&amp;Animation Frames...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="520"/>
+        <source>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="1076"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>avançar, voltar um passo (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1020"/>
+        <location filename="../app/main_window.cpp" line="1078"/>
         <source>Space</source>
         <translation>Barra de espaço</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1020"/>
+        <location filename="../app/main_window.cpp" line="1078"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>reproduzir / pausar (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1026"/>
+        <location filename="../app/main_window.cpp" line="1084"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>soltar o pixel escolhido (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1027"/>
+        <location filename="../app/main_window.cpp" line="1085"/>
         <source>presentation mode on / off</source>
         <translation>ligar / desligar o modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1030"/>
+        <location filename="../app/main_window.cpp" line="1088"/>
         <source>save, undo, redo</source>
         <translation>salvar, desfazer, refazer</translation>
     </message>
@@ -980,42 +1253,42 @@
         <translation type="vanished">Abrir &amp;objeto...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="300"/>
+        <location filename="../app/main_window.cpp" line="329"/>
         <source>Open &amp;Camera...</source>
         <translation>Abrir &amp;câmera...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="302"/>
+        <location filename="../app/main_window.cpp" line="331"/>
         <source>Ctrl+Shift+C</source>
         <translation>Ctrl+Shift+C</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="304"/>
+        <location filename="../app/main_window.cpp" line="333"/>
         <source>Open &amp;Lighting...</source>
         <translation>Abrir &amp;iluminação...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="305"/>
+        <location filename="../app/main_window.cpp" line="334"/>
         <source>Ctrl+Shift+L</source>
         <translation>Ctrl+Shift+L</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="307"/>
+        <location filename="../app/main_window.cpp" line="336"/>
         <source>Open Command &amp;File...</source>
         <translation>Abrir arquivo de co&amp;mandos...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="308"/>
+        <location filename="../app/main_window.cpp" line="337"/>
         <source>Ctrl+Shift+O</source>
         <translation>Ctrl+Shift+O</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="310"/>
+        <location filename="../app/main_window.cpp" line="339"/>
         <source>Open &amp;Recent</source>
         <translation>Abrir recen&amp;tes</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="312"/>
+        <location filename="../app/main_window.cpp" line="341"/>
         <source>&amp;Default Scene</source>
         <translation>Cena &amp;padrão</translation>
     </message>
@@ -1024,112 +1297,112 @@
         <translation type="vanished">&amp;Formatos dos arquivos do curso</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="323"/>
+        <location filename="../app/main_window.cpp" line="352"/>
         <source>&amp;Camera</source>
         <translation>&amp;Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="335"/>
+        <location filename="../app/main_window.cpp" line="364"/>
         <source>&amp;Lighting</source>
         <translation>&amp;Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="351"/>
+        <location filename="../app/main_window.cpp" line="380"/>
         <source>&amp;Export PNG...</source>
         <translation>&amp;Exportar PNG...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="352"/>
+        <location filename="../app/main_window.cpp" line="381"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="354"/>
+        <location filename="../app/main_window.cpp" line="383"/>
         <source>Export &amp;More</source>
         <translation>E&amp;xportar mais</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="357"/>
+        <location filename="../app/main_window.cpp" line="386"/>
         <source>Image as &amp;Displayed...</source>
         <translation>Imagem como &amp;exibida...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="358"/>
+        <location filename="../app/main_window.cpp" line="387"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="359"/>
+        <location filename="../app/main_window.cpp" line="388"/>
         <source>&amp;Colour Buffer at the Cursor...</source>
         <translation>Buffer de &amp;cor no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="361"/>
+        <location filename="../app/main_window.cpp" line="390"/>
         <source>D&amp;epth Buffer at the Cursor...</source>
         <translation>Buffer de pro&amp;fundidade no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="363"/>
+        <location filename="../app/main_window.cpp" line="392"/>
         <source>&amp;Normal Buffer...</source>
         <translation>Buffer de &amp;normais...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="364"/>
+        <location filename="../app/main_window.cpp" line="393"/>
         <source>A &amp;View as Displayed</source>
         <translation>Um &amp;painel como exibido</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="368"/>
+        <location filename="../app/main_window.cpp" line="397"/>
         <source>Export View</source>
         <translation>Exportar painel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="373"/>
+        <location filename="../app/main_window.cpp" line="402"/>
         <source>&amp;Stepping Sequence...</source>
         <translation>&amp;Sequência de passos...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="375"/>
+        <location filename="../app/main_window.cpp" line="407"/>
         <source>&amp;Quit</source>
         <translation>Sai&amp;r</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="378"/>
+        <location filename="../app/main_window.cpp" line="410"/>
         <source>&amp;Edit</source>
         <translation>&amp;Editar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="382"/>
+        <location filename="../app/main_window.cpp" line="414"/>
         <source>&amp;View</source>
         <translation>E&amp;xibir</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="383"/>
+        <location filename="../app/main_window.cpp" line="415"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Ajustar à janela</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="384"/>
+        <location filename="../app/main_window.cpp" line="416"/>
         <source>Ctrl+0</source>
         <translation>Ctrl+0</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="386"/>
+        <location filename="../app/main_window.cpp" line="418"/>
         <source>&amp;Actual Size</source>
         <translation>&amp;Tamanho real</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="387"/>
+        <location filename="../app/main_window.cpp" line="419"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="388"/>
+        <location filename="../app/main_window.cpp" line="420"/>
         <source>Zoom &amp;In</source>
         <translation>A&amp;umentar zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="390"/>
+        <location filename="../app/main_window.cpp" line="422"/>
         <source>Zoom &amp;Out</source>
         <translation>&amp;Diminuir zoom</translation>
     </message>
@@ -1138,7 +1411,7 @@
         <translation type="vanished">&amp;Painéis</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="397"/>
+        <location filename="../app/main_window.cpp" line="429"/>
         <source>Reset &amp;Layout</source>
         <translation>Restaurar &amp;layout</translation>
     </message>
@@ -1147,12 +1420,12 @@
         <translation type="vanished">&amp;Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="404"/>
+        <location filename="../app/main_window.cpp" line="436"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="409"/>
+        <location filename="../app/main_window.cpp" line="441"/>
         <source>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</source>
         <translation>Texto maior, sobreposições mais grossas, alto contraste; as teclas do passador de slides avançam os passos (F5 ou Esc)</translation>
     </message>
@@ -1161,12 +1434,12 @@
         <translation type="vanished">Idi&amp;oma</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="420"/>
+        <location filename="../app/main_window.cpp" line="452"/>
         <source>The System&apos;s</source>
         <translation>Do sistema</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="437"/>
+        <location filename="../app/main_window.cpp" line="469"/>
         <source>S&amp;tep</source>
         <translation>&amp;Passo a passo</translation>
     </message>
@@ -1179,32 +1452,32 @@
         <translation type="vanished">&amp;Etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="474"/>
+        <location filename="../app/main_window.cpp" line="506"/>
         <source>Pick the Pixel Under the &amp;Mouse</source>
         <translation>Escolher o pixel sob o &amp;mouse</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="475"/>
+        <location filename="../app/main_window.cpp" line="507"/>
         <source>Ctrl+G</source>
         <translation>Ctrl+G</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="481"/>
+        <location filename="../app/main_window.cpp" line="513"/>
         <source>&amp;Shading</source>
         <translation>&amp;Sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="485"/>
+        <location filename="../app/main_window.cpp" line="517"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (por pixel)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="486"/>
+        <location filename="../app/main_window.cpp" line="518"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (por vértice)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="487"/>
+        <location filename="../app/main_window.cpp" line="519"/>
         <source>&amp;Flat (per triangle)</source>
         <translation>&amp;Flat (por triângulo)</translation>
     </message>
@@ -1213,7 +1486,7 @@
         <translation type="vanished">F10, Page Down, seta para a direita (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1015"/>
+        <location filename="../app/main_window.cpp" line="1073"/>
         <source>step forward</source>
         <translation>avançar um passo</translation>
     </message>
@@ -1222,7 +1495,7 @@
         <translation type="vanished">Shift+F10, Page Up, seta para a esquerda (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1016"/>
+        <location filename="../app/main_window.cpp" line="1074"/>
         <source>step back</source>
         <translation>voltar um passo</translation>
     </message>
@@ -1231,7 +1504,7 @@
         <translation type="vanished">F6, barra de espaço (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1019"/>
+        <location filename="../app/main_window.cpp" line="1077"/>
         <source>play / pause</source>
         <translation>reproduzir / pausar</translation>
     </message>
@@ -1240,7 +1513,7 @@
         <translation type="vanished">Ctrl+Home, Ctrl+End</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1021"/>
+        <location filename="../app/main_window.cpp" line="1079"/>
         <source>jump to the start / the end of the frame</source>
         <translation>ir ao início / ao fim do quadro</translation>
     </message>
@@ -1249,7 +1522,7 @@
         <translation type="vanished">F8</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1022"/>
+        <location filename="../app/main_window.cpp" line="1080"/>
         <source>continue to the next breakpoint</source>
         <translation>continuar até o próximo ponto de parada</translation>
     </message>
@@ -1258,7 +1531,7 @@
         <translation type="vanished">Ctrl+Shift+1 ... 5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1023"/>
+        <location filename="../app/main_window.cpp" line="1081"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>avançar por etapa, triângulo, linha de varredura, segmento, pixel</translation>
     </message>
@@ -1267,17 +1540,17 @@
         <translation type="vanished">Alt+1 ... 7</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1024"/>
+        <location filename="../app/main_window.cpp" line="1082"/>
         <source>show a stage&apos;s view</source>
         <translation>mostrar o painel de uma etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1025"/>
+        <location filename="../app/main_window.cpp" line="1083"/>
         <source>Click, arrows</source>
         <translation>Clique, setas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1025"/>
+        <location filename="../app/main_window.cpp" line="1083"/>
         <source>pick a pixel, move it by one</source>
         <translation>escolher um pixel, movê-lo de um em um</translation>
     </message>
@@ -1294,7 +1567,7 @@
         <translation type="vanished">Ctrl+O, Ctrl+E, Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1029"/>
+        <location filename="../app/main_window.cpp" line="1087"/>
         <source>open, export the image, export it as displayed</source>
         <translation>abrir, exportar a imagem, exportá-la como exibida</translation>
     </message>
@@ -1303,12 +1576,12 @@
         <translation type="vanished">Ctrl+0, Ctrl+1, Ctrl++, Ctrl+-</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1032"/>
+        <location filename="../app/main_window.cpp" line="1090"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>ajustar, tamanho real, aumentar zoom, diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1034"/>
+        <location filename="../app/main_window.cpp" line="1092"/>
         <source>Keyboard Shortcuts</source>
         <translation>Atalhos de teclado</translation>
     </message>
@@ -1317,47 +1590,47 @@
         <translation type="vanished">Alt+%1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="501"/>
+        <location filename="../app/main_window.cpp" line="534"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Regras de rasterização</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="505"/>
+        <location filename="../app/main_window.cpp" line="538"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Curso (semente 000: vértices em pixels inteiros, interpolação no espaço da tela)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="507"/>
+        <location filename="../app/main_window.cpp" line="540"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>Como uma &amp;GPU (vértices em 1/256 de pixel, centros dos pixels, regra top-left, correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="509"/>
+        <location filename="../app/main_window.cpp" line="542"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (as imagens de referência da semente 001)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="521"/>
+        <location filename="../app/main_window.cpp" line="554"/>
         <source>&amp;Help</source>
         <translation>A&amp;juda</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="524"/>
+        <location filename="../app/main_window.cpp" line="557"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="232"/>
+        <location filename="../app/main_window.cpp" line="238"/>
         <source>Messages</source>
         <translation>Mensagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="241"/>
+        <location filename="../app/main_window.cpp" line="247"/>
         <source>Scene</source>
         <translation>Cena</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="249"/>
+        <location filename="../app/main_window.cpp" line="255"/>
         <source>Accuracy</source>
         <translation>Exatidão</translation>
     </message>
@@ -1370,162 +1643,163 @@
         <translation type="vanished">%1 - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="734"/>
-        <location filename="../app/main_window_export.cpp" line="30"/>
-        <location filename="../app/main_window_export.cpp" line="89"/>
-        <location filename="../app/main_window_export.cpp" line="118"/>
+        <location filename="../app/main_window.cpp" line="769"/>
+        <location filename="../app/main_window_export.cpp" line="32"/>
+        <location filename="../app/main_window_export.cpp" line="91"/>
+        <location filename="../app/main_window_export.cpp" line="139"/>
+        <location filename="../app/main_window_export.cpp" line="170"/>
         <source>%1: cannot export the image: %2</source>
         <translation>%1: não foi possível exportar a imagem: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="22"/>
+        <location filename="../app/main_window_export.cpp" line="24"/>
         <source>nothing has been rendered yet</source>
         <translation>nada foi renderizado ainda</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="25"/>
+        <location filename="../app/main_window_export.cpp" line="27"/>
         <source>Exported %1</source>
         <translation>Exportado %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="756"/>
+        <location filename="../app/main_window.cpp" line="795"/>
         <source>rendering...</source>
         <translation>renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="756"/>
+        <location filename="../app/main_window.cpp" line="795"/>
         <source>%1, rendering...</source>
         <translation>%1, renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="754"/>
-        <location filename="../app/main_window.cpp" line="929"/>
+        <location filename="../app/main_window.cpp" line="793"/>
+        <location filename="../app/main_window.cpp" line="987"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="292"/>
+        <location filename="../app/main_window.cpp" line="321"/>
         <source>&amp;Open...</source>
         <translation>&amp;Abrir...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="295"/>
+        <location filename="../app/main_window.cpp" line="324"/>
         <source>A course camera, lighting or object file, or a command file</source>
         <translation>Um arquivo de câmera, iluminação ou objeto do curso, ou um arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="296"/>
+        <location filename="../app/main_window.cpp" line="325"/>
         <source>Open O&amp;bject...</source>
         <translation>Abrir &amp;objeto...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="298"/>
+        <location filename="../app/main_window.cpp" line="327"/>
         <source>Ctrl+Shift+B</source>
         <translation>Ctrl+Shift+B</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="321"/>
+        <location filename="../app/main_window.cpp" line="350"/>
         <source>Course File La&amp;youts</source>
         <translation>&amp;Formatos dos arquivos do curso</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="393"/>
+        <location filename="../app/main_window.cpp" line="425"/>
         <source>Pa&amp;nels</source>
         <translation>&amp;Painéis</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="401"/>
+        <location filename="../app/main_window.cpp" line="433"/>
         <source>I&amp;mage</source>
         <translation>&amp;Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="415"/>
+        <location filename="../app/main_window.cpp" line="447"/>
         <source>Lan&amp;guage</source>
         <translation>Idi&amp;oma</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="446"/>
+        <location filename="../app/main_window.cpp" line="478"/>
         <source>Step B&amp;y</source>
         <translation>Avançar &amp;por</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="448"/>
+        <location filename="../app/main_window.cpp" line="480"/>
         <source>S&amp;tage</source>
         <translation>&amp;Etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="522"/>
+        <location filename="../app/main_window.cpp" line="555"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="581"/>
+        <location filename="../app/main_window.cpp" line="614"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Modo de apresentação: F5 ou Esc para sair; Page Down, seta para a direita e barra de espaço avançam e reproduzem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="717"/>
+        <location filename="../app/main_window.cpp" line="752"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="764"/>
+        <location filename="../app/main_window.cpp" line="803"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparando o passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="764"/>
+        <location filename="../app/main_window.cpp" line="803"/>
         <source>Rendering</source>
         <translation>Renderizando</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="880"/>
+        <location filename="../app/main_window.cpp" line="938"/>
         <source>Error: %1</source>
         <translation>Erro: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="896"/>
+        <location filename="../app/main_window.cpp" line="954"/>
         <source>Files</source>
         <translation>Arquivos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="899"/>
+        <location filename="../app/main_window.cpp" line="957"/>
         <source>Command file</source>
         <translation>Arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="900"/>
+        <location filename="../app/main_window.cpp" line="958"/>
         <source>Image</source>
         <translation>Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="902"/>
+        <location filename="../app/main_window.cpp" line="960"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vértices, %2 triângulos em %3 desenhos; %4 x %5 pixels; %6 luzes</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="912"/>
+        <location filename="../app/main_window.cpp" line="970"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="913"/>
+        <location filename="../app/main_window.cpp" line="971"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="914"/>
+        <location filename="../app/main_window.cpp" line="972"/>
         <source>Object</source>
         <translation>Objeto</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="916"/>
+        <location filename="../app/main_window.cpp" line="974"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vértices, %2 triângulos; %3 x %4 pixels, sombreamento %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="217"/>
-        <location filename="../app/main_window.cpp" line="923"/>
+        <location filename="../app/main_window.cpp" line="223"/>
+        <location filename="../app/main_window.cpp" line="981"/>
         <source>Stages</source>
         <translation>Etapas</translation>
     </message>
@@ -1558,7 +1832,7 @@
         <translation type="vanished">Tonalização</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="930"/>
+        <location filename="../app/main_window.cpp" line="988"/>
         <source>skipped: %1</source>
         <translation>omitida: %1</translation>
     </message>
@@ -1567,145 +1841,166 @@
         <translation type="vanished">maior resíduo de ortonormalidade: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="933"/>
+        <location filename="../app/main_window.cpp" line="991"/>
         <source>Counts</source>
         <translation>Contagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="934"/>
+        <location filename="../app/main_window.cpp" line="992"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triângulos recortados no plano próximo: %1; atrás da câmera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="937"/>
+        <location filename="../app/main_window.cpp" line="995"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Triângulos de área zero: %1 no espaço de vista, %2 na tela&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="940"/>
+        <location filename="../app/main_window.cpp" line="998"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragmentos testados: %1; escritos: %2; rejeitados: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="944"/>
+        <location filename="../app/main_window.cpp" line="1002"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels sombreados: %1; normais voltadas para o observador: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; limitados a 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="964"/>
+        <location filename="../app/main_window.cpp" line="1022"/>
         <source>empty (+inf)</source>
         <translation>vazio (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="965"/>
+        <location filename="../app/main_window.cpp" line="1023"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   profundidade %6</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="981"/>
+        <location filename="../app/main_window.cpp" line="1039"/>
         <source>Open Command File</source>
         <translation>Abrir arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="982"/>
+        <location filename="../app/main_window.cpp" line="1040"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Arquivos de comandos (*.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="988"/>
+        <location filename="../app/main_window.cpp" line="1046"/>
         <source>Open</source>
         <translation>Abrir</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="988"/>
+        <location filename="../app/main_window.cpp" line="1046"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Arquivos de cena (*.byu *.cfg *.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="998"/>
+        <location filename="../app/main_window.cpp" line="1056"/>
         <source>Export PNG</source>
         <translation>Exportar PNG</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="369"/>
-        <location filename="../app/main_window.cpp" line="998"/>
-        <location filename="../app/main_window_export.cpp" line="107"/>
-        <location filename="../app/main_window_export.cpp" line="115"/>
+        <location filename="../app/main_window.cpp" line="398"/>
+        <location filename="../app/main_window.cpp" line="1056"/>
+        <location filename="../app/main_window_export.cpp" line="159"/>
+        <location filename="../app/main_window_export.cpp" line="167"/>
         <source>PNG images (*.png)</source>
         <translation>Imagens PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1003"/>
+        <location filename="../app/main_window.cpp" line="1061"/>
         <source>About RasterLab</source>
         <translation>Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1004"/>
+        <location filename="../app/main_window.cpp" line="1062"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;O pipeline clássico de rasterização por software, etapa por etapa: base da câmera, coordenadas de vista, normais, projeção, conversão por varredura, teste de profundidade e sombreamento.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="37"/>
+        <location filename="../app/main_window_export.cpp" line="39"/>
         <source>%1: cannot export the depth buffer: %2</source>
         <translation>%1: não foi possível exportar o buffer de profundidade: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="42"/>
+        <location filename="../app/main_window_export.cpp" line="44"/>
         <source>%1: cannot export the normal buffer: %2</source>
         <translation>%1: não foi possível exportar o buffer de normais: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="60"/>
+        <location filename="../app/main_window_export.cpp" line="62"/>
         <source>%1: cannot export the view: there is no view %2</source>
         <translation>%1: não foi possível exportar o painel: não há painel %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="63"/>
+        <location filename="../app/main_window_export.cpp" line="65"/>
         <source>%1: cannot export the view: %2</source>
         <translation>%1: não foi possível exportar o painel: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="69"/>
+        <location filename="../app/main_window_export.cpp" line="71"/>
         <source>%1: cannot export the steps: the frame cannot be stepped through yet</source>
         <translation>%1: não foi possível exportar os passos: o quadro ainda não pode ser percorrido passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="73"/>
+        <location filename="../app/main_window_export.cpp" line="75"/>
+        <location filename="../app/main_window_export.cpp" line="109"/>
         <source>%1: cannot create the folder</source>
         <translation>%1: não foi possível criar a pasta</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="78"/>
+        <location filename="../app/main_window_export.cpp" line="80"/>
         <source>Exporting the steps...</source>
         <translation>Exportando os passos...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="100"/>
+        <location filename="../app/main_window_export.cpp" line="102"/>
         <source>Exported %1 images to %2</source>
         <translation>%1 imagens exportadas para %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="105"/>
+        <location filename="../app/main_window_export.cpp" line="118"/>
+        <source>Exporting the animation&apos;s frames...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_export.cpp" line="132"/>
+        <source>%1: cannot render the frame: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_export.cpp" line="146"/>
+        <source>Exported %1 frames to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_export.cpp" line="152"/>
+        <source>Folder for the Animation&apos;s Frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_export.cpp" line="157"/>
         <source>Export the Image as Displayed</source>
         <translation>Exportar a imagem como exibida</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="114"/>
+        <location filename="../app/main_window_export.cpp" line="166"/>
         <source>Export a Buffer</source>
         <translation>Exportar um buffer</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="128"/>
+        <location filename="../app/main_window_export.cpp" line="180"/>
         <source>Folder for the Numbered Images</source>
         <translation>Pasta para as imagens numeradas</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="132"/>
+        <location filename="../app/main_window_export.cpp" line="184"/>
         <source>Stepping Sequence</source>
         <translation>Sequência de passos</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="133"/>
+        <location filename="../app/main_window_export.cpp" line="185"/>
         <source>At most how many images (one per step, at the current granularity)?</source>
         <translation>No máximo quantas imagens (uma por passo, na granularidade atual)?</translation>
     </message>
@@ -1736,222 +2031,634 @@
     </message>
 </context>
 <context>
+    <name>rasterlab::NearClipView</name>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="76"/>
+        <source>wholly in front</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="78"/>
+        <source>clipped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="80"/>
+        <source>wholly behind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="82"/>
+        <source>outside a clip plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="84"/>
+        <source>culled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="86"/>
+        <source>hidden back face</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="88"/>
+        <source>beyond the guard band</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="90"/>
+        <source>not finite</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="177"/>
+        <source>No triangle to show: select one, step into the frame, or choose one in the list.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="352"/>
+        <source>side view: w across (view z for the course camera), view %1 up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="359"/>
+        <source>w = near = %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="362"/>
+        <source>the plane w = near = %1 is far to the left, out of the picture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="369"/>
+        <source>eye</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="373"/>
+        <source>the eye (w = 0) is far to the left, out of the picture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="381"/>
+        <source>on the screen (pixels)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="385"/>
+        <source>The last step projects the triangles drawn.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="432"/>
+        <source>zoomed: x %1 to %2, y %3 to %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="465"/>
+        <source>image %1 × %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="470"/>
+        <source>Nothing drawn.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="483"/>
+        <source>The triangle shown: the one selected, or one the near plane cut</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="486"/>
+        <source>y up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="487"/>
+        <source>x up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="488"/>
+        <source>Which view axis the side view draws upward</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="489"/>
+        <source>Back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="491"/>
+        <source>Next</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="493"/>
+        <source>All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="571"/>
+        <source>The triangle selected (or being drawn)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="579"/>
+        <source>triangle %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="675"/>
+        <source>step %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="690"/>
+        <source>No frame yet.</source>
+        <translation type="unfinished">Nenhum quadro ainda.</translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="691"/>
+        <source>No triangle to show: select one or step into the frame.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="693"/>
+        <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="724"/>
+        <source>The seed clips each triangle against the plane z = &amp;minus;&amp;epsilon;, P = [0, 0, &amp;minus;1, &amp;epsilon;], before the perspective divide (OpenGL&apos;s camera looks along &amp;minus;z). The projection stage clips against w = near in clip space, here near = %1, so P = %2 and a point A is kept when dot(P, A) = w &amp;minus; near &amp;ge; 0.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="731"/>
+        <source>For the course camera w is the view z: the camera looks along +z, and the plane is z = near, P = [0, 0, 1, &amp;minus;near].</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="734"/>
+        <source>(Written out, the seed&apos;s P keeps z &amp;le; &amp;epsilon;; the plane z = &amp;minus;&amp;epsilon; it names is P = [0, 0, &amp;minus;1, &amp;minus;&amp;epsilon;]. Either way the plane lies a little in front of the eye, so no vertex drawn is divided by w = 0.)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="738"/>
+        <source>A0 = %1, A1 = %2, A2 = %3 (view space).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="742"/>
+        <source>This scene does not clip against the near plane (the naive or same-side projection): the steps show what clipping would do.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="747"/>
+        <source>The draw&apos;s clip planes cut the triangle first; the polygon the stage drew may differ from the one here.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="754"/>
+        <source>Vertex %1: dot(P, %1) = %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="757"/>
+        <source>kept, added to the output polygon as q%1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="759"/>
+        <source>behind the plane, left out.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="763"/>
+        <source>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 have the same sign: the edge does not cross the plane.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="767"/>
+        <source>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 differ in sign: t = (0 &amp;minus; %5) / (%6 &amp;minus; %5) = %7, C = lerp(t, %1, %2) = %8, added as q%9.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="775"/>
+        <source>(The stage computes the same point from %1, the end in front, with t&apos; = 1 &amp;minus; t = %2, so that the two triangles sharing the edge get it bit for bit.)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="786"/>
+        <source>Output polygon: empty. The triangle lies wholly behind the plane: nothing is drawn.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="792"/>
+        <source>Output polygon, %1 vertices: %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="796"/>
+        <source>The triangle is wholly in front: untouched.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="803"/>
+        <source>Four vertices: split along the diagonal q0&amp;ndash;q2 into the triangles q0 q1 q2 and q0 q2 q3, rendered separately.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="806"/>
+        <source>Three vertices: one triangle, nothing to split.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="808"/>
+        <source>Fewer than three vertices: no triangle.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="811"/>
+        <source>Then each vertex is projected and taken to pixels.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="814"/>
+        <source>Nothing was drawn from this triangle (%1).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="818"/>
+        <source>Triangle %1: %2, %3, %4 (pixels)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/near_clip_view.cpp" line="825"/>
+        <source>(%1 of the %2 triangles were drawn: %3.)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>rasterlab::NormalsView</name>
     <message>
-        <location filename="../views/normals_view.cpp" line="165"/>
+        <location filename="../views/normals_view.cpp" line="168"/>
         <source>the draw is unlit: shading reads no normal</source>
         <translation>o desenho não é iluminado: o sombreamento não lê nenhuma normal</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="190"/>
+        <location filename="../views/normals_view.cpp" line="193"/>
         <source>the interpolated normal is zero</source>
         <translation>a normal interpolada é nula</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="389"/>
+        <location filename="../views/normals_view.cpp" line="408"/>
         <source>Triangle normals</source>
         <translation>Normais dos triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="392"/>
+        <location filename="../views/normals_view.cpp" line="411"/>
         <source>Vertex normals</source>
         <translation>Normais dos vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="395"/>
+        <location filename="../views/normals_view.cpp" line="414"/>
         <source>Only on triangles that are seen</source>
         <translation>Só nos triângulos visíveis</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="398"/>
+        <location filename="../views/normals_view.cpp" line="417"/>
         <source>Hairs only on the triangles that hold a pixel at the end of the frame, and on their corners</source>
         <translation>Segmentos de normal só nos triângulos que ocupam um pixel no fim do quadro, e nos seus vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="425"/>
+        <location filename="../views/normals_view.cpp" line="420"/>
+        <source>Normals by M (wrong)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/normals_view.cpp" line="423"/>
+        <source>Beside each triangle normal, the model normal carried by viewFromModel itself instead of its inverse transpose: it leaves the surface under a non-uniform scale (set one in the Animation panel)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/normals_view.cpp" line="455"/>
         <source>Per pixel at the stepping cursor, the unit normal shading uses there: the vertex normals interpolated with the pixel&apos;s barycentrics and normalised (the triangle&apos;s normal for flat shading), turned toward the viewer as the course does before lighting; shown as RGB = (n + 1) / 2. Red grows to the right, green upward, blue away from the camera: turned normals face the camera, so blue is mostly below 128. Black: no triangle.</source>
         <translation>Por pixel, no cursor de passo, a normal unitária que o sombreamento usa ali: as normais dos vértices interpoladas com as coordenadas baricêntricas do pixel e normalizadas (a normal do triângulo no sombreamento flat), voltadas para o observador como o curso faz antes da iluminação; mostrada como RGB = (n + 1) / 2. O vermelho cresce para a direita, o verde para cima, o azul para longe da câmera: as normais voltadas encaram a câmera, então o azul fica quase sempre abaixo de 128. Preto: nenhum triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="439"/>
+        <location filename="../views/normals_view.cpp" line="469"/>
         <source>Mesh and normals</source>
         <translation>Malha e normais</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="440"/>
+        <location filename="../views/normals_view.cpp" line="470"/>
         <source>Normal map</source>
         <translation>Mapa de normais</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="788"/>
+        <location filename="../views/normals_view.cpp" line="843"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="794"/>
+        <location filename="../views/normals_view.cpp" line="849"/>
         <source>front faces %1</source>
         <translation>faces frontais %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="796"/>
-        <location filename="../views/normals_view.cpp" line="800"/>
+        <location filename="../views/normals_view.cpp" line="851"/>
+        <location filename="../views/normals_view.cpp" line="855"/>
         <source>(%1 hidden, left out by culling)</source>
         <translation>(%1 ocultas, eliminadas pelo descarte)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="798"/>
+        <location filename="../views/normals_view.cpp" line="853"/>
         <source>back faces (n · pView &amp;gt; 0) %1</source>
         <translation>faces traseiras (n · pView &amp;gt; 0) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="803"/>
+        <location filename="../views/normals_view.cpp" line="858"/>
         <source>inconsistent winding: %1 triangles, %2 edges run the same way by two triangles</source>
         <translation>orientação inconsistente: %1 triângulos, %2 arestas percorridas no mesmo sentido por dois triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="810"/>
+        <location filename="../views/normals_view.cpp" line="865"/>
         <source>%1% of the pixels seen are back faces: the surface is closed and its normals point inward in view space (the course&apos;s [U; V; N] mirrors, so a file wound counter-clockwise seen from outside turns over). Shading turns every normal toward the viewer: the image does not change.</source>
         <translation>%1% dos pixels visíveis são faces traseiras: a superfície é fechada e suas normais apontam para dentro no espaço de vista (a matriz [U; V; N] do curso espelha, então um arquivo orientado no sentido anti-horário visto de fora fica invertido). O sombreamento volta toda normal para o observador: a imagem não muda.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="817"/>
+        <location filename="../views/normals_view.cpp" line="872"/>
         <source>No normals: %1.</source>
         <translation>Sem normais: %1.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="822"/>
+        <location filename="../views/normals_view.cpp" line="877"/>
         <source>triangle normals</source>
         <translation>normais dos triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="823"/>
+        <location filename="../views/normals_view.cpp" line="878"/>
         <source>vertex normals</source>
         <translation>normais dos vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="824"/>
+        <location filename="../views/normals_view.cpp" line="879"/>
         <source>length L = %1 (%2% of the mesh&apos;s size)</source>
         <translation>comprimento L = %1 (%2% do tamanho da malha)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="829"/>
+        <location filename="../views/normals_view.cpp" line="884"/>
+        <source>triangle normals carried by M itself (wrong)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/normals_view.cpp" line="887"/>
         <source>on the %1 triangles seen and their corners</source>
         <translation>nos %1 triângulos visíveis e seus vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="832"/>
+        <location filename="../views/normals_view.cpp" line="890"/>
         <source>Large mesh: one triangle normal in %1 and one vertex normal in %2 are drawn; the selected triangle&apos;s always.</source>
         <translation>Malha grande: desenha-se uma normal de triângulo a cada %1 e uma normal de vértice a cada %2; as do triângulo selecionado, sempre.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="839"/>
+        <location filename="../views/normals_view.cpp" line="897"/>
         <source>One triangle in %1 of the wireframe is drawn.</source>
         <translation>Desenha-se um triângulo do aramado a cada %1.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="846"/>
+        <location filename="../views/normals_view.cpp" line="914"/>
+        <source>&lt;p&gt;&lt;b&gt;Normals by M, right and wrong&lt;/b&gt;: A = viewFromModel = viewFromWorld · M(t) · worldFromModel (M: the animation matrix, the identity when the animation is off). The model-space normal n = %1, det A = %2; the carried edges, made unit: e1 = A (P2 − P1) / |…| = %3, e2 = A (P3 − P1) / |…| = %4.&lt;br&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/normals_view.cpp" line="921"/>
+        <source>Right: A&lt;sup&gt;−T&lt;/sup&gt; n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: perpendicular to the surface.&lt;br&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/normals_view.cpp" line="925"/>
+        <source>Wrong: A n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: %4° off the surface&apos;s normal.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/normals_view.cpp" line="931"/>
+        <source>&lt;p&gt;Here both agree: A has no non-uniform scale. Set a scale such as (2, 1, 1) in the Animation panel to see them part.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/normals_view.cpp" line="939"/>
         <source>&lt;p&gt;No frame yet.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Nenhum quadro ainda.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="850"/>
+        <location filename="../views/normals_view.cpp" line="943"/>
         <source>&lt;p&gt;&lt;b&gt;Stage 3, normals&lt;/b&gt;, in view space: each triangle&apos;s normal n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, and each vertex&apos;s normal the normalised sum of the normals of the triangles around it. A triangle faces away from the camera (at the origin) when n · P1 &amp;gt; 0; the course turns such normals toward the viewer when it shades.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Etapa 3, normais&lt;/b&gt;, no espaço de vista: a normal de cada triângulo é n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, e a normal de cada vértice é a soma normalizada das normais dos triângulos ao seu redor. Um triângulo está de costas para a câmera (na origem) quando n · P1 &amp;gt; 0; o curso volta essas normais para o observador ao sombrear.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="857"/>
+        <location filename="../views/normals_view.cpp" line="950"/>
         <source>&lt;p&gt;Skipped for this frame: %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Omitida neste quadro: %1.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="872"/>
+        <location filename="../views/normals_view.cpp" line="965"/>
         <source>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (vertices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</source>
         <translation>&lt;p&gt;&lt;b&gt;Triângulo %1&lt;/b&gt; (vértices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="879"/>
+        <location filename="../views/normals_view.cpp" line="972"/>
         <source> = %1, length %2&lt;br&gt;</source>
         <translation> = %1, comprimento %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="883"/>
+        <location filename="../views/normals_view.cpp" line="976"/>
         <source>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</source>
         <translation>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="885"/>
+        <location filename="../views/normals_view.cpp" line="978"/>
         <source>a back face, drawn in red</source>
         <translation>uma face traseira, desenhada em vermelho</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="885"/>
+        <location filename="../views/normals_view.cpp" line="978"/>
         <source>a front face</source>
         <translation>uma face frontal</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="887"/>
+        <location filename="../views/normals_view.cpp" line="980"/>
         <source>a degenerate triangle: no normal.&lt;/p&gt;</source>
         <translation>um triângulo degenerado: sem normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="893"/>
+        <location filename="../views/normals_view.cpp" line="986"/>
         <source>&lt;p&gt;It runs an edge in the same direction as a neighbour does: the two are wound inconsistently (magenta), and one of their normals points the wrong way.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Ele percorre uma aresta no mesmo sentido que um vizinho: os dois têm orientações inconsistentes (magenta), e uma das suas normais aponta para o lado errado.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="898"/>
+        <location filename="../views/normals_view.cpp" line="993"/>
         <source>&lt;p&gt;Vertex normals: N1 = %1 (vertex %2), N2 = %3 (vertex %4), N3 = %5 (vertex %6)&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normais dos vértices: N1 = %1 (vértice %2), N2 = %3 (vértice %4), N3 = %5 (vértice %6)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="906"/>
+        <location filename="../views/normals_view.cpp" line="1001"/>
         <source>&lt;p&gt;Pick a pixel (here or in any image) to select its triangle and see its normal worked out.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Escolha um pixel (aqui ou em qualquer imagem) para selecionar seu triângulo e ver o cálculo da sua normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="916"/>
+        <location filename="../views/normals_view.cpp" line="1011"/>
         <source>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </source>
         <translation>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="918"/>
+        <location filename="../views/normals_view.cpp" line="1013"/>
         <source>no triangle holds it at the cursor (black in the normal map).&lt;/p&gt;</source>
         <translation>nenhum triângulo o ocupa no cursor (preto no mapa de normais).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="920"/>
+        <location filename="../views/normals_view.cpp" line="1015"/>
         <source>no normal: %1 (grey in the normal map).&lt;/p&gt;</source>
         <translation>sem normal: %1 (cinza no mapa de normais).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="923"/>
+        <location filename="../views/normals_view.cpp" line="1018"/>
         <source>the triangle&apos;s normal (flat) %1</source>
         <translation>a normal do triângulo (flat) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="925"/>
+        <location filename="../views/normals_view.cpp" line="1020"/>
         <source>N = α N1 + β N2 + γ N3 with (α, β, γ) = %1: %2, normalised %3</source>
         <translation>N = α N1 + β N2 + γ N3 com (α, β, γ) = %1: %2, normalizada %3</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="929"/>
+        <location filename="../views/normals_view.cpp" line="1024"/>
         <source>; V · N &amp;lt; 0, turned toward the viewer: &lt;b&gt;%1&lt;/b&gt;</source>
         <translation>; V · N &amp;lt; 0, voltada para o observador: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="932"/>
+        <location filename="../views/normals_view.cpp" line="1027"/>
         <source>. Colour (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</source>
         <translation>. Cor (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="951"/>
+        <location filename="../views/normals_view.cpp" line="1046"/>
         <source>x %1, y %2: no triangle</source>
         <translation>x %1, y %2: nenhum triângulo</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="955"/>
+        <location filename="../views/normals_view.cpp" line="1050"/>
         <source>x %1, y %2: triangle %3, N = %4, colour (%5, %6, %7)</source>
         <translation>x %1, y %2: triângulo %3, N = %4, cor (%5, %6, %7)</translation>
+    </message>
+</context>
+<context>
+    <name>rasterlab::PainterView</name>
+    <message>
+        <location filename="../views/painter_view.cpp" line="69"/>
+        <source>Painted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/painter_view.cpp" line="71"/>
+        <source>Draw</source>
+        <translation type="unfinished">Desenho</translation>
+    </message>
+    <message>
+        <location filename="../views/painter_view.cpp" line="73"/>
+        <source>Triangle</source>
+        <translation type="unfinished">Triângulo</translation>
+    </message>
+    <message>
+        <location filename="../views/painter_view.cpp" line="75"/>
+        <source>|b| (distance)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/painter_view.cpp" line="77"/>
+        <source>Hidden wrongly</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/painter_view.cpp" line="134"/>
+        <source>The triangles in the order the painter paints them: farthest barycentre first. Click a row to select its triangle.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/painter_view.cpp" line="139"/>
+        <source>Painter&apos;s image</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/painter_view.cpp" line="140"/>
+        <source>Painted order (first blue, last red)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/painter_view.cpp" line="145"/>
+        <source>Mark ties on shared edges</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/painter_view.cpp" line="148"/>
+        <source>Pixels on an edge two triangles share, at the same depth: the z-buffer keeps the first drawn, the painter the last.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/painter_view.cpp" line="327"/>
+        <source>rank of the last triangle painted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/painter_view.cpp" line="328"/>
+        <source>painted far to near, no depth test</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../views/painter_view.cpp" line="330"/>
+        <source>Z-buffer (the same flat colours): %n pixel(s) differ</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../views/painter_view.cpp" line="370"/>
+        <source>No frame.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/painter_view.cpp" line="371"/>
+        <source>Not worked out yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../views/painter_view.cpp" line="376"/>
+        <source>&lt;b&gt;Painter&apos;s algorithm&lt;/b&gt; (seed 004): the %n triangle(s) are sorted by the distance |b| of their barycentre b (view space) to the camera, far to near, each lit once at b, and painted in that order &lt;i&gt;without a depth test&lt;/i&gt;: the last painted stays.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../views/painter_view.cpp" line="381"/>
+        <source>The frame shown uses the z-buffer; this view renders the scene again as the painter would.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/painter_view.cpp" line="384"/>
+        <source>Against the z-buffer with the same colours, %1 pixels differ: &lt;span style=&apos;color:#d00000&apos;&gt;%2 where a farther triangle was painted after a nearer one&lt;/span&gt; (the order of whole triangles is not the order of their pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 on edges two triangles share at the same depth&lt;/span&gt; (the z-buffer keeps the first drawn, the painter the last).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/painter_view.cpp" line="399"/>
+        <source>Triangle %1: b = %2, |b| = %3, painted %4 of %5. The z-buffer shows it at %6 pixels; a triangle painted after it covers %7 of them though it is farther there; it covers %8 pixels of nearer triangles painted before it.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2012,338 +2719,443 @@
         <translation>Escolha um pixel na imagem para ver seu histórico.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="436"/>
+        <location filename="../views/pixel_inspector.cpp" line="434"/>
+        <source>%1 over %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="435"/>
+        <source>painted, no depth test</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="442"/>
         <source>written</source>
         <translation>escrito</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="444"/>
+        <location filename="../views/pixel_inspector.cpp" line="450"/>
         <source>rejected: the depth is not a number</source>
         <translation>rejeitado: a profundidade não é um número</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="446"/>
+        <location filename="../views/pixel_inspector.cpp" line="452"/>
         <source>rejected: as far, the earlier keeps it</source>
         <translation>rejeitado: mesma distância, o anterior fica</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="448"/>
+        <location filename="../views/pixel_inspector.cpp" line="454"/>
         <source>rejected: farther</source>
         <translation>rejeitado: mais distante</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="451"/>
+        <location filename="../views/pixel_inspector.cpp" line="457"/>
         <source>%1 outside [0, 1]</source>
         <translation>%1 fora de [0, 1]</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="452"/>
+        <location filename="../views/pixel_inspector.cpp" line="458"/>
         <source>discarded: depth outside [0, 1]</source>
         <translation>descartado: profundidade fora de [0, 1]</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="460"/>
+        <location filename="../views/pixel_inspector.cpp" line="466"/>
         <source>cleared to %1</source>
         <translation>limpo com %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="461"/>
+        <location filename="../views/pixel_inspector.cpp" line="467"/>
         <source>the background</source>
         <translation>o fundo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="467"/>
+        <location filename="../views/pixel_inspector.cpp" line="473"/>
         <source>the final pixel</source>
         <translation>o pixel final</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="497"/>
+        <location filename="../views/pixel_inspector.cpp" line="503"/>
         <source>Preparing the stepping of this frame: the pixel&apos;s history follows.</source>
         <translation>Preparando o passo a passo deste quadro: o histórico do pixel vem a seguir.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="506"/>
+        <location filename="../views/pixel_inspector.cpp" line="512"/>
         <source>The frame could not be traced again: %1</source>
         <translation>Não foi possível rastrear o quadro de novo: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="543"/>
+        <location filename="../views/pixel_inspector.cpp" line="549"/>
         <source>depth %1</source>
         <translation>profundidade %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="545"/>
+        <location filename="../views/pixel_inspector.cpp" line="551"/>
         <source>none</source>
         <translation>nenhum</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="546"/>
+        <location filename="../views/pixel_inspector.cpp" line="552"/>
         <source>depth %1 (cleared)</source>
         <translation>profundidade %1 (valor de limpeza)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="562"/>
+        <location filename="../views/pixel_inspector.cpp" line="568"/>
         <source>Nothing drew here: the pixel keeps the background %1.</source>
         <translation>Nada foi desenhado aqui: o pixel mantém o fundo %1.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="571"/>
+        <location filename="../views/pixel_inspector.cpp" line="577"/>
         <source>The only fragment was rejected: the pixel keeps the background.</source>
         <translation>O único fragmento foi rejeitado: o pixel mantém o fundo.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="572"/>
+        <location filename="../views/pixel_inspector.cpp" line="578"/>
         <source>Every fragment was rejected (%1): the pixel keeps the background.</source>
         <translation>Todos os fragmentos foram rejeitados (%1): o pixel mantém o fundo.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="576"/>
+        <location filename="../views/pixel_inspector.cpp" line="582"/>
         <source>Written by triangle %1</source>
         <translation>Escrito pelo triângulo %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="578"/>
+        <location filename="../views/pixel_inspector.cpp" line="584"/>
         <source>over 1 earlier write</source>
         <translation>sobre 1 escrita anterior</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="580"/>
+        <location filename="../views/pixel_inspector.cpp" line="586"/>
         <source>over %1 earlier writes</source>
         <translation>sobre %1 escritas anteriores</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="582"/>
+        <location filename="../views/pixel_inspector.cpp" line="588"/>
         <source>1 fragment rejected</source>
         <translation>1 fragmento rejeitado</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="584"/>
+        <location filename="../views/pixel_inspector.cpp" line="590"/>
         <source>%1 fragments rejected</source>
         <translation>%1 fragmentos rejeitados</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="600"/>
+        <location filename="../views/pixel_inspector.cpp" line="606"/>
         <source>black: the vertex colours mixed here are black</source>
         <translation>preto: as cores dos vértices misturadas aqui são pretas</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="602"/>
+        <location filename="../views/pixel_inspector.cpp" line="608"/>
         <source>black: the object colour is black</source>
         <translation>preto: a cor do objeto é preta</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="604"/>
+        <location filename="../views/pixel_inspector.cpp" line="610"/>
         <source>black: the light takes away what the ambient term adds</source>
         <translation>preto: a luz tira o que o termo ambiente acrescenta</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="606"/>
+        <location filename="../views/pixel_inspector.cpp" line="612"/>
         <source>black: zero normal and no ambient</source>
         <translation>preto: normal nula e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="608"/>
+        <location filename="../views/pixel_inspector.cpp" line="614"/>
         <source>black: no light and no ambient</source>
         <translation>preto: sem luz e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="610"/>
+        <location filename="../views/pixel_inspector.cpp" line="616"/>
         <source>black: the light is at the point and no ambient</source>
         <translation>preto: a luz está no próprio ponto e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="612"/>
+        <location filename="../views/pixel_inspector.cpp" line="618"/>
         <source>black: N.L &lt; 0 and no ambient</source>
         <translation>preto: N.L &lt; 0 e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="615"/>
+        <location filename="../views/pixel_inspector.cpp" line="621"/>
         <source>black: the diffuse and specular terms are 0 here and there is no ambient</source>
         <translation>preto: os termos difuso e especular valem 0 aqui e não há ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="740"/>
+        <location filename="../views/pixel_inspector.cpp" line="680"/>
+        <source>Light %1, directional toward %2 (view), Il = %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="681"/>
+        <source>Light %1 at %2 (view), Il = %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="684"/>
+        <source>  at the point itself (L = 0): nothing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="689"/>
+        <source>att = 1 / (%1 + %2 × %3 + %4 × %3²) = %5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="693"/>
+        <source>d = %1, not attenuated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="695"/>
+        <source>spot: −L.D = %1 &lt; cos %2° = %3, outside the cone: 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="698"/>
+        <source>spot: −L.D = %1 ≥ cos %2° = %3, %1^%4 = %5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="706"/>
+        <source>  N.L = %1 &lt; 0: behind the surface, nothing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="708"/>
+        <source>  N.L = %1, %2 = %3: diffuse %4, specular %5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="786"/>
         <source>N flipped toward the viewer: V.N &lt; 0, so N := −N before lighting.</source>
         <translation>N invertida para o observador: V.N &lt; 0, então N := −N antes da iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="743"/>
+        <location filename="../views/pixel_inspector.cpp" line="789"/>
         <source>Zero normal: only degenerate triangles meet here, or the vertex normals cancel out; ambient only.</source>
         <translation>Normal nula: só triângulos degenerados se encontram aqui, ou as normais dos vértices se anulam; só ambiente.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="747"/>
+        <location filename="../views/pixel_inspector.cpp" line="793"/>
         <source>The light is at the point itself (L = 0): it adds nothing.</source>
         <translation>A luz está no próprio ponto (L = 0): não acrescenta nada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="750"/>
+        <location filename="../views/pixel_inspector.cpp" line="796"/>
         <source>N.L &lt; 0: the light is behind the surface; no diffuse, no specular.</source>
         <translation>N.L &lt; 0: a luz está atrás da superfície; sem difusa, sem especular.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="753"/>
+        <location filename="../views/pixel_inspector.cpp" line="799"/>
         <source>R.V &lt; 0: the reflected ray points away from the viewer; no specular.</source>
         <translation>R.V &lt; 0: o raio refletido aponta para longe do observador; sem especular.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="764"/>
+        <location filename="../views/pixel_inspector.cpp" line="829"/>
+        <source>Outside the cone of light %1: −L.D = %2 is below cos %3° = %4; it adds nothing here.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="836"/>
+        <source>One-sided lighting: the back of the surface is seen (V.N &lt; 0) and N is not turned toward the viewer.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="848"/>
         <source>Clamped: %1 above the colour scale %2, written as byte 255.</source>
         <translation>Limitado: %1 acima da escala de cor %2, escrito como byte 255.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="773"/>
+        <location filename="../views/pixel_inspector.cpp" line="857"/>
         <source>%1 (clamped)</source>
         <translation>%1 (limitado)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="778"/>
+        <location filename="../views/pixel_inspector.cpp" line="862"/>
         <source>Gouraud shading, the vertices&apos; colours mixed</source>
         <translation>sombreamento de Gouraud, as cores dos vértices misturadas</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="779"/>
+        <location filename="../views/pixel_inspector.cpp" line="863"/>
         <source>C = α C1 + β C2 + γ C3</source>
         <translation>C = α C1 + β C2 + γ C3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="796"/>
+        <location filename="../views/pixel_inspector.cpp" line="881"/>
         <source>not lit, the object colour as it is</source>
         <translation>sem iluminação, a cor do objeto tal como é</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="797"/>
+        <location filename="../views/pixel_inspector.cpp" line="882"/>
         <source>I = O (the object colour)</source>
         <translation>I = O (a cor do objeto)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="804"/>
+        <location filename="../views/pixel_inspector.cpp" line="889"/>
         <source>the course&apos;s Phong lighting model</source>
         <translation>o modelo de iluminação de Phong do curso</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="805"/>
+        <location filename="../views/pixel_inspector.cpp" line="890"/>
         <source>Lambert with Blinn-Phong highlights (command files)</source>
         <translation>Lambert com brilhos de Blinn-Phong (arquivos de comandos)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="807"/>
+        <location filename="../views/pixel_inspector.cpp" line="892"/>
+        <source>Painter&apos;s algorithm: lit as flat shading, once at the triangle&apos;s barycentre; the triangles are painted far to near without a depth test.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="897"/>
         <source>Flat shading: evaluated once, at the triangle&apos;s barycentre with the triangle&apos;s normal; every pixel of the triangle gets this colour.</source>
         <translation>Sombreamento flat: avaliado uma vez, no baricentro do triângulo, com a normal do triângulo; todo pixel do triângulo recebe esta cor.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="811"/>
+        <location filename="../views/pixel_inspector.cpp" line="901"/>
         <source>%1 lights: the diffuse and specular terms are sums over them; the numbers filled in are the first light&apos;s.</source>
         <translation>%1 luzes: os termos difuso e especular são somas sobre elas; os números preenchidos são os da primeira luz.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="818"/>
+        <location filename="../views/pixel_inspector.cpp" line="909"/>
+        <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="910"/>
+        <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="911"/>
+        <source>att = 1 / (kc + kl d + kq d²) for a positional light, 1 for a directional one; spot = (−L.D)^exp inside the cone, 0 outside, 1 for a light that is no spot.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="916"/>
         <source>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</source>
         <translation>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="825"/>
+        <location filename="../views/pixel_inspector.cpp" line="923"/>
         <source>I = Σ Il O (N.L) + Il (H.N)^s, over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L) + Il (H.N)^s, sobre as luzes com N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="827"/>
+        <location filename="../views/pixel_inspector.cpp" line="925"/>
         <source>I = Σ Il O (N.L), over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L), sobre as luzes com N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="868"/>
+        <location filename="../views/pixel_inspector.cpp" line="981"/>
         <source>%1 (the other lights)</source>
         <translation>%1 (as outras luzes)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="883"/>
+        <location filename="../views/pixel_inspector.cpp" line="997"/>
         <source>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</source>
         <translation>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="887"/>
+        <location filename="../views/pixel_inspector.cpp" line="1001"/>
         <source>Il = %1, O = %2</source>
         <translation>Il = %1, O = %2</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="907"/>
+        <location filename="../views/pixel_inspector.cpp" line="1004"/>
+        <source>Ke = %1: the material&apos;s own light</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="1027"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="913"/>
-        <location filename="../views/pixel_inspector.cpp" line="1001"/>
+        <location filename="../views/pixel_inspector.cpp" line="1033"/>
+        <location filename="../views/pixel_inspector.cpp" line="1121"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="921"/>
+        <location filename="../views/pixel_inspector.cpp" line="1041"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>ocupa o pixel no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="922"/>
+        <location filename="../views/pixel_inspector.cpp" line="1042"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>ainda não alcançado pelo cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="937"/>
+        <location filename="../views/pixel_inspector.cpp" line="1057"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="938"/>
+        <location filename="../views/pixel_inspector.cpp" line="1058"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Sem o passo a passo, as cores das escritas sobrescritas depois não são guardadas.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="982"/>
+        <location filename="../views/pixel_inspector.cpp" line="1102"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Sem o passo a passo, só a iluminação do fragmento que ocupa o pixel no fim é registrada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="985"/>
+        <location filename="../views/pixel_inspector.cpp" line="1105"/>
         <source>The cleared pixel is not lit.</source>
         <translation>O pixel limpo não é iluminado.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="988"/>
+        <location filename="../views/pixel_inspector.cpp" line="1108"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>Nenhum fragmento ocupa o pixel no cursor: selecione uma linha do histórico para ver sua iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1000"/>
+        <location filename="../views/pixel_inspector.cpp" line="1120"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Iluminação do passo %1, triângulo %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1005"/>
+        <location filename="../views/pixel_inspector.cpp" line="1125"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejeitado: esta cor nunca foi escrita)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1016"/>
+        <location filename="../views/pixel_inspector.cpp" line="1136"/>
         <source>object colour</source>
         <translation>cor do objeto</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1019"/>
+        <location filename="../views/pixel_inspector.cpp" line="1139"/>
+        <source>emission</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="1141"/>
         <source>ambient</source>
         <translation>ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1020"/>
+        <location filename="../views/pixel_inspector.cpp" line="1146"/>
+        <source>diffuse %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="1149"/>
+        <source>specular %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="1153"/>
         <source>diffuse</source>
         <translation>difusa</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1025"/>
+        <location filename="../views/pixel_inspector.cpp" line="1160"/>
         <source>specular</source>
         <translation>especular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1049"/>
+        <location filename="../views/pixel_inspector.cpp" line="1185"/>
         <source>No special case: every term applies as written.</source>
         <translation>Nenhum caso especial: todos os termos valem como escritos.</translation>
     </message>
@@ -2769,62 +3581,62 @@
         <translation>O pixel no cursor é x = %1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="731"/>
+        <location filename="../views/scanline_view.cpp" line="729"/>
         <source>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</source>
         <translation>Nas pontas do segmento, as coordenadas baricêntricas (&amp;alpha;, &amp;beta;, &amp;gamma;) da amostra em relação ao triângulo de tela P1 %1, P2 %2, P3 %3 dão a profundidade, a partir dos z dos vértices, z1 = %4, z2 = %5, z3 = %6:</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="736"/>
+        <location filename="../views/scanline_view.cpp" line="734"/>
         <source>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</source>
         <translation>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (com correção de perspectiva: 1/z é linear na tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="738"/>
+        <location filename="../views/scanline_view.cpp" line="736"/>
         <source>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</source>
         <translation>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="743"/>
+        <location filename="../views/scanline_view.cpp" line="741"/>
         <source>depth</source>
         <translation>profundidade</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="743"/>
+        <location filename="../views/scanline_view.cpp" line="741"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="750"/>
+        <location filename="../views/scanline_view.cpp" line="748"/>
         <source>not computed (nothing is lit)</source>
         <translation>não calculada (nada é iluminado)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="751"/>
+        <location filename="../views/scanline_view.cpp" line="749"/>
         <source>zero</source>
         <translation>nula</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="769"/>
+        <location filename="../views/scanline_view.cpp" line="767"/>
         <source>Pixel (x, y) is sampled at the point (x, y) itself.</source>
         <translation>O pixel (x, y) é amostrado no próprio ponto (x, y).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="770"/>
+        <location filename="../views/scanline_view.cpp" line="768"/>
         <source>Pixel (x, y) is sampled at (x + %1, y + %1).</source>
         <translation>O pixel (x, y) é amostrado em (x + %1, y + %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="773"/>
+        <location filename="../views/scanline_view.cpp" line="771"/>
         <source>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</source>
         <translation>A normal é N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1), a partir das normais dos vértices, normalizada%1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="776"/>
+        <location filename="../views/scanline_view.cpp" line="774"/>
         <source>, with the barycentrics weighted by 1/w (perspective-correct)</source>
         <translation>, com as coordenadas baricêntricas ponderadas por 1/w (correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="781"/>
+        <location filename="../views/scanline_view.cpp" line="779"/>
         <source>Edge walking: from one scanline to the next, each edge&apos;s x changes by its constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. The span between the two crossings is filled; the long edge bounds every row, the upper edge the rows above the middle vertex, the lower edge the rest.</source>
         <translation>Percurso das arestas: de uma linha de varredura à seguinte, o x de cada aresta muda pelo seu dx/dy constante, uma adição por aresta e por linha: x_left(y+1) = x_left(y) + dx/dy. O segmento entre os dois cruzamentos é preenchido; a aresta longa limita todas as linhas, a aresta superior as linhas acima do vértice do meio, a aresta inferior as demais.</translation>
     </message>
@@ -2986,105 +3798,290 @@
     </message>
 </context>
 <context>
+    <name>rasterlab::TrapezoidView</name>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="104"/>
+        <source>No triangle to show: step into the frame or pick a pixel.</source>
+        <translation type="unfinished">Nenhum triângulo para mostrar: avance pelo quadro ou escolha um pixel.</translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="256"/>
+        <source>upper trapezoid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="257"/>
+        <source>lower trapezoid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="268"/>
+        <source>scanline j</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="370"/>
+        <source>No frame yet.</source>
+        <translation type="unfinished">Nenhum quadro ainda.</translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="372"/>
+        <source>Pick a pixel, or step through the frame, to see a triangle split into trapezoids.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="378"/>
+        <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</source>
+        <translation type="unfinished">&lt;b&gt;Triângulo %1&lt;/b&gt; de %2</translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="379"/>
+        <source>scanline %1</source>
+        <translation type="unfinished">linha de varredura %1</translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="380"/>
+        <source>pixel %1</source>
+        <translation type="unfinished">pixel %1</translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="382"/>
+        <source>at the stepping cursor</source>
+        <translation type="unfinished">no cursor de passo</translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="382"/>
+        <source>the triangle selected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="409"/>
+        <source>Its area on the screen is zero: it has no inside, no trapezoid, and is not scanned.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="417"/>
+        <source>Vertices sorted by j: top %1, middle %2, bottom %3. The triangle is split at the middle vertex&apos;s row j = %4.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="422"/>
+        <source>The long edge from top to bottom meets that row at s = (%1 &amp;minus; %2) / (%3 &amp;minus; %2) = %4: M&apos; = lerp(s, top, bottom) = %5, %6.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="428"/>
+        <source>Two vertices share a row: the triangle is one trapezoid, two of whose corners are the same vertex.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="433"/>
+        <source>Each corner carries the colour Gouraud shading worked out at its vertex, and the depth.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="439"/>
+        <source>Each corner carries the depth%1 (colours are carried under Gouraud shading, for a triangle with a pixel on the screen, once the frame&apos;s replay is built).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="441"/>
+        <source> as 1/z, which is linear on the screen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="446"/>
+        <source>corner</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="449"/>
+        <source>rows</source>
+        <translation type="unfinished">linhas</translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="457"/>
+        <location filename="../views/trapezoid_view.cpp" line="486"/>
+        <source>upper</source>
+        <translation type="unfinished">superior</translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="457"/>
+        <location filename="../views/trapezoid_view.cpp" line="486"/>
+        <source>lower</source>
+        <translation type="unfinished">inferior</translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="471"/>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="484"/>
+        <source>Scanline j = %1, in the %2 trapezoid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="499"/>
+        <source>No pixel of this row lies between L and R on the screen.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="502"/>
+        <source>Pixels i with L_i &amp;le; i%1 &amp;lt; R_i: %2 to %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="507"/>
+        <source>Pixels i from ceil(L_i%1) to floor(R_i%1): %2 to %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="518"/>
+        <source>Pixel i = %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="528"/>
+        <source>z = 1 / (1/z) = %1; the depth test&apos;s z there: %2 (from the barycentrics, in float).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="531"/>
+        <source>The depth test&apos;s z there: %1 (from the barycentrics, in float).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="539"/>
+        <source>The row through the middle vertex belongs to the lower trapezoid only, so no row is scanned twice.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="543"/>
+        <source>Pixel (i, j) is sampled at (i + %1, j + %1): t_j and t_i use those.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="545"/>
+        <source>Top-left rule: a sample exactly on the bottom vertex&apos;s row or on R belongs to the next triangle.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="547"/>
+        <source>Inclusive rule: samples exactly on L, R or the bottom row are inside.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="550"/>
+        <source>These rules interpolate colours perspective-correctly (weights over w): the lerps of the seed, linear on the screen, are what the course rules do; the rows and pixels are the same either way.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="555"/>
+        <source>The same rows and pixels as the edge walk (scan conversion view): L_i and R_i are where the scanline crosses the triangle&apos;s edges.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>rasterlab::VertexTableModel</name>
     <message>
-        <location filename="../views/vertex_table.cpp" line="125"/>
+        <location filename="../views/vertex_table.cpp" line="129"/>
         <source>%1 made by clipping (edge %2-%3, t = %4)</source>
         <translation>%1 criado pelo recorte (aresta %2-%3, t = %4)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="132"/>
+        <location filename="../views/vertex_table.cpp" line="136"/>
         <source>pView = pView(%1) + t (pView(%2) - pView(%1)), on the plane that cut the edge</source>
         <translation>pView = pView(%1) + t (pView(%2) - pView(%1)), no plano que cortou a aresta</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="145"/>
+        <location filename="../views/vertex_table.cpp" line="149"/>
         <source>At or behind the near plane: not projected; the triangles through it are clipped</source>
         <translation>No plano próximo ou atrás dele: não é projetado; os triângulos que passam por ele são recortados</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="148"/>
         <location filename="../views/vertex_table.cpp" line="152"/>
+        <location filename="../views/vertex_table.cpp" line="156"/>
         <source>behind</source>
         <translation>atrás</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="154"/>
+        <location filename="../views/vertex_table.cpp" line="158"/>
         <source>Exact: %1</source>
         <translation>Exato: %1</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="165"/>
+        <location filename="../views/vertex_table.cpp" line="169"/>
         <source>Mixed along the edge it was made on, as shading does (normalised per pixel)</source>
         <translation>Misturada ao longo da aresta em que o vértice foi criado, como faz o sombreamento (normalizada por pixel)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="181"/>
+        <location filename="../views/vertex_table.cpp" line="185"/>
         <source>Draw</source>
         <translation>Desenho</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="183"/>
+        <location filename="../views/vertex_table.cpp" line="187"/>
         <source>Vertex</source>
         <translation>Vértice</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="185"/>
+        <location filename="../views/vertex_table.cpp" line="189"/>
         <source>World (x, y, z)</source>
         <translation>Mundo (x, y, z)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="187"/>
+        <location filename="../views/vertex_table.cpp" line="191"/>
         <source>View pView</source>
         <translation>Vista pView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="189"/>
+        <location filename="../views/vertex_table.cpp" line="193"/>
         <source>NDC pNdc</source>
         <translation>NDC pNdc</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="191"/>
+        <location filename="../views/vertex_table.cpp" line="195"/>
         <source>Screen pScreen</source>
         <translation>Tela pScreen</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="193"/>
+        <location filename="../views/vertex_table.cpp" line="197"/>
         <source>Normal nView</source>
         <translation>Normal nView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="201"/>
+        <location filename="../views/vertex_table.cpp" line="205"/>
         <source>The draw (object) the vertex belongs to</source>
         <translation>O desenho (objeto) ao qual o vértice pertence</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="203"/>
+        <location filename="../views/vertex_table.cpp" line="207"/>
         <source>The vertex number as in the file (1-based); vertices made by clipping come after the draw&apos;s own</source>
         <translation>O número do vértice como no arquivo (a partir de 1); os vértices criados pelo recorte vêm depois dos do próprio desenho</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="207"/>
+        <location filename="../views/vertex_table.cpp" line="211"/>
         <source>P = worldFromModel · P_model</source>
         <translation>P = worldFromModel · P_model</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="209"/>
+        <location filename="../views/vertex_table.cpp" line="213"/>
         <source>pView = [U; V; N](P − C) for the course camera, or the draw&apos;s view matrix times P_model</source>
         <translation>pView = [U; V; N](P − C) para a câmera do curso, ou a matriz de vista do desenho vezes P_model</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="213"/>
+        <location filename="../views/vertex_table.cpp" line="217"/>
         <source>pNdc = ((d/hx) x/z, (d/hy) y/z) for the course camera, or pClip.xy / pClip.w with pClip = clipFromView · pView</source>
         <translation>pNdc = ((d/hx) x/z, (d/hy) y/z) para a câmera do curso, ou pClip.xy / pClip.w com pClip = clipFromView · pView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="217"/>
+        <location filename="../views/vertex_table.cpp" line="221"/>
         <source>pScreen = ((x_ndc + 1) w/2, (1 − y_ndc) h/2), truncated (snapped to the rules&apos; grid); the tooltip holds the exact value</source>
         <translation>pScreen = ((x_ndc + 1) w/2, (1 − y_ndc) h/2), truncado (ajustado à grade das regras); a dica mostra o valor exato</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="221"/>
+        <location filename="../views/vertex_table.cpp" line="225"/>
         <source>The view-space vertex normal: the normalised sum of the normals of the triangles around it (stage 3)</source>
         <translation>A normal do vértice no espaço de vista: a soma normalizada das normais dos triângulos ao seu redor (etapa 3)</translation>
     </message>
@@ -3092,127 +4089,132 @@
 <context>
     <name>rasterlab::VertexTableView</name>
     <message>
-        <location filename="../views/vertex_table.cpp" line="253"/>
+        <location filename="../views/vertex_table.cpp" line="257"/>
         <source>Only the selected triangle&apos;s vertices</source>
         <translation>Só os vértices do triângulo selecionado</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="311"/>
+        <location filename="../views/vertex_table.cpp" line="315"/>
         <source>%1 vertices, %2 of them made by clipping</source>
         <translation>%1 vértices, %2 deles criados pelo recorte</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="312"/>
+        <location filename="../views/vertex_table.cpp" line="316"/>
         <source>%1 vertices</source>
         <translation>%1 vértices</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="406"/>
+        <location filename="../views/vertex_table.cpp" line="410"/>
         <source>&lt;p&gt;Select a row, or pick a pixel in the image: its triangle&apos;s three vertices are selected. The numbers of the selected vertex are worked through each formula here.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Selecione uma linha, ou escolha um pixel na imagem: os três vértices do seu triângulo são selecionados. Os números do vértice selecionado são calculados aqui, fórmula por fórmula.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="409"/>
+        <location filename="../views/vertex_table.cpp" line="413"/>
         <source>&lt;p&gt;No frame yet.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Nenhum quadro ainda.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="433"/>
+        <location filename="../views/vertex_table.cpp" line="437"/>
         <source>Vertex %1 of draw %2 (%3)</source>
         <translation>Vértice %1 do desenho %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="434"/>
+        <location filename="../views/vertex_table.cpp" line="438"/>
         <source>Vertex %1 of %2</source>
         <translation>Vértice %1 de %2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="441"/>
+        <location filename="../views/vertex_table.cpp" line="445"/>
         <source>&lt;p&gt;Made by clipping the edge %1-%2 where it crosses a plane (the near plane or a clip plane), at t = %3:&lt;br&gt;pView = pView&lt;sub&gt;%1&lt;/sub&gt; + t (pView&lt;sub&gt;%2&lt;/sub&gt; − pView&lt;sub&gt;%1&lt;/sub&gt;) = %4 + %3 (%5 − %4) = &lt;b&gt;%6&lt;/b&gt;&lt;br&gt;World: P = %7 (the same interpolation).&lt;/p&gt;</source>
         <translation>&lt;p&gt;Criado ao recortar a aresta %1-%2 onde ela cruza um plano (o plano próximo ou um plano de recorte), em t = %3:&lt;br&gt;pView = pView&lt;sub&gt;%1&lt;/sub&gt; + t (pView&lt;sub&gt;%2&lt;/sub&gt; − pView&lt;sub&gt;%1&lt;/sub&gt;) = %4 + %3 (%5 − %4) = &lt;b&gt;%6&lt;/b&gt;&lt;br&gt;Mundo: P = %7 (a mesma interpolação).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="452"/>
+        <location filename="../views/vertex_table.cpp" line="456"/>
+        <source>&lt;p&gt;World: P = M(t) · worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt; (M: the animation matrix at t = %3 s)&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/vertex_table.cpp" line="461"/>
         <source>&lt;p&gt;World: P = P&lt;sub&gt;model&lt;/sub&gt; = &lt;b&gt;%1&lt;/b&gt; (worldFromModel is the identity)&lt;/p&gt;</source>
         <translation>&lt;p&gt;Mundo: P = P&lt;sub&gt;model&lt;/sub&gt; = &lt;b&gt;%1&lt;/b&gt; (worldFromModel é a identidade)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="456"/>
+        <location filename="../views/vertex_table.cpp" line="465"/>
         <source>&lt;p&gt;World: P = worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Mundo: P = worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="462"/>
+        <location filename="../views/vertex_table.cpp" line="471"/>
         <source>&lt;p&gt;View: pView = [U; V; N](P − C), with C = %1:&lt;br&gt;P − C = %2&lt;br&gt;x = U · (P − C) = %3 · %2 = %4&lt;br&gt;y = V · (P − C) = %5 · %2 = %6&lt;br&gt;z = N · (P − C) = %7 · %2 = %8&lt;br&gt;pView = &lt;b&gt;%9&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vista: pView = [U; V; N](P − C), com C = %1:&lt;br&gt;P − C = %2&lt;br&gt;x = U · (P − C) = %3 · %2 = %4&lt;br&gt;y = V · (P − C) = %5 · %2 = %6&lt;br&gt;z = N · (P − C) = %7 · %2 = %8&lt;br&gt;pView = &lt;b&gt;%9&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="470"/>
+        <location filename="../views/vertex_table.cpp" line="479"/>
         <source>&lt;p&gt;View: pView = viewFromModel · P&lt;sub&gt;model&lt;/sub&gt; (the draw&apos;s own view matrix) = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vista: pView = viewFromModel · P&lt;sub&gt;model&lt;/sub&gt; (a matriz de vista do próprio desenho) = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="478"/>
+        <location filename="../views/vertex_table.cpp" line="487"/>
         <source>&lt;p&gt;z = %1 is not beyond the near plane (w = %2): the vertex is behind, not projected; the triangles through it are clipped there.&lt;/p&gt;</source>
         <translation>&lt;p&gt;z = %1 não está além do plano próximo (w = %2): o vértice está atrás e não é projetado; os triângulos que passam por ele são recortados ali.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="486"/>
+        <location filename="../views/vertex_table.cpp" line="495"/>
         <source>&lt;p&gt;NDC: pNdc = ((d/hx) x/z, (d/hy) y/z) = ((%1/%2) · %3/%4, (%1/%5) · %6/%4) = &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;NDC: pNdc = ((d/hx) x/z, (d/hy) y/z) = ((%1/%2) · %3/%4, (%1/%5) · %6/%4) = &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="491"/>
+        <location filename="../views/vertex_table.cpp" line="500"/>
         <source>&lt;p&gt;Clip: pClip = clipFromView · pView = %1&lt;br&gt;NDC: pNdc = pClip.xy / pClip.w = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Recorte: pClip = clipFromView · pView = %1&lt;br&gt;NDC: pNdc = pClip.xy / pClip.w = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="500"/>
+        <location filename="../views/vertex_table.cpp" line="509"/>
         <source>truncated, as C&apos;s (int) does</source>
         <translation>truncado, como faz o (int) do C</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="502"/>
+        <location filename="../views/vertex_table.cpp" line="511"/>
         <source>truncated to a grid of 1/%1 pixel</source>
         <translation>truncado para uma grade de 1/%1 de pixel</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="504"/>
+        <location filename="../views/vertex_table.cpp" line="513"/>
         <source>rounded to the nearest 1/%1 pixel</source>
         <translation>arredondado para o 1/%1 de pixel mais próximo</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="505"/>
+        <location filename="../views/vertex_table.cpp" line="514"/>
         <source>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</source>
         <translation>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="506"/>
+        <location filename="../views/vertex_table.cpp" line="515"/>
         <source>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</source>
         <translation>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="511"/>
+        <location filename="../views/vertex_table.cpp" line="520"/>
         <source>&lt;p&gt;Screen: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Tela: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="520"/>
+        <location filename="../views/vertex_table.cpp" line="529"/>
         <source>&lt;p&gt;Normal: mixed along the edge like pView, %1; shading normalises it per pixel.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: misturada ao longo da aresta como pView, %1; o sombreamento a normaliza por pixel.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="524"/>
+        <location filename="../views/vertex_table.cpp" line="533"/>
         <source>&lt;p&gt;Normal: the file&apos;s normal carried to view space by the inverse transpose of viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: a normal do arquivo levada ao espaço de vista pela inversa transposta de viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="531"/>
+        <location filename="../views/vertex_table.cpp" line="540"/>
         <source>&lt;p&gt;Normal: the normalised sum of the normals of the %1 triangles around it: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: a soma normalizada das normais dos %1 triângulos ao seu redor: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="537"/>
+        <location filename="../views/vertex_table.cpp" line="546"/>
         <source>&lt;p&gt;Normal: none, %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: nenhuma, %1.&lt;/p&gt;</translation>
     </message>
@@ -3265,7 +4267,7 @@
         <translation>o z em NDC</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="264"/>
+        <location filename="../views/zbuffer_view.cpp" line="261"/>
         <source>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</source>
         <translation>&lt;b&gt;Z-buffer.&lt;/b&gt; Todo pixel começa em %1. A profundidade de cada fragmento, %2 (%3), é comparada com a armazenada; ela é escrita, com sua cor, só quando %4. Até agora: %5 fragmentos testados, %6 escritos, %7 rejeitados.</translation>
     </message>
@@ -3274,37 +4276,37 @@
         <translation type="vanished">&lt;b&gt;Z-buffer.&lt;/b&gt; Todo pixel começa em %1. A profundidade de cada fragmento, z = &amp;alpha;z&lt;sub&gt;1&lt;/sub&gt; + &amp;beta;z&lt;sub&gt;2&lt;/sub&gt; + &amp;gamma;z&lt;sub&gt;3&lt;/sub&gt; (%2), é comparada com a armazenada; ela é escrita, com sua cor, só quando %3. Até agora: %4 fragmentos testados, %5 escritos, %6 rejeitados.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="319"/>
+        <location filename="../views/zbuffer_view.cpp" line="316"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="336"/>
+        <location filename="../views/zbuffer_view.cpp" line="333"/>
         <source>No pixel holds a triangle: the buffer is all clear value.</source>
         <translation>Nenhum pixel contém um triângulo: o buffer inteiro está no valor de limpeza.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="339"/>
+        <location filename="../views/zbuffer_view.cpp" line="336"/>
         <source>Drawn depths from %1 to %2; shown from %3 to %4.</source>
         <translation>Profundidades desenhadas de %1 a %2; exibidas de %3 a %4.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="345"/>
+        <location filename="../views/zbuffer_view.cpp" line="342"/>
         <source>%1 pixels nearer and %2 farther than the range are drawn at its ends.</source>
         <translation>%1 pixels mais próximos e %2 mais distantes que a faixa aparecem nas suas extremidades.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="359"/>
+        <location filename="../views/zbuffer_view.cpp" line="356"/>
         <source>+inf</source>
         <translation>+inf</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="360"/>
+        <location filename="../views/zbuffer_view.cpp" line="357"/>
         <source>x %1, y %2: no triangle; the depth stays at the clear value %3</source>
         <translation>x %1, y %2: nenhum triângulo; a profundidade fica no valor de limpeza %3</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="365"/>
+        <location filename="../views/zbuffer_view.cpp" line="362"/>
         <source>x %1, y %2: depth %3, triangle %4</source>
         <translation>x %1, y %2: profundidade %3, triângulo %4</translation>
     </message>
