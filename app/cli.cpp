@@ -137,8 +137,11 @@ struct SceneOptions {
         lit("Layout of the lighting file: auto (default: detected, and named in a note), ufpe "
             "(Pl; ka; Ia; kd; Od; ks; Il; n), multi (ka; Ia; kd; Od; ks; n; L; then L times Pl; "
             "Il), ufrpe (Iamb; Ka; Il; Pl; Kd; Od; Ks; n) or keyvalue (Iamb = r g b, Ka, Il, Pl, "
-            "Kd, Od, Ks, eta in any order). One key = value file may hold both the camera and "
-            "the lighting."),
+            "Kd, Od, Ks, eta in any order; optionally the lecture slides' lighting: Ke = r g b "
+            "(emission), two_sided = 1|0, blinn = 1|0, Pl = x y z w (w = 0: directional), "
+            "atten = kc kl kq, spot_dir = x y z, spot_cutoff = degrees, spot_exp = e, and "
+            "lights 2 to 8 as Pl2, Il2, atten2 ...). One key = value file may hold both the "
+            "camera and the lighting."),
         lit("FORMAT"), lit("auto")};
     QCommandLineOption object{
         lit("object"),

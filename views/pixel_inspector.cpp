@@ -1167,10 +1167,16 @@ void PixelInspector::showBreakdown() {
         b.event.model != rl::ShadingModel::Gouraud && b.lighting != rl::LightingModel::Unlit;
     if (vectors) {
         const rl::PhongSample& s = b.event.sample;
+        // R, or the half vector H under Blinn-Phong (the command files' model, or the course's
+        // with the slides' option).
+        const rl::Draw& draw =
+            m_inspection->frame()
+                ->scene->draws[m_inspection->frame()->projection->triangles[b.event.triangle].draw];
+        const bool half = b.lighting != rl::LightingModel::CoursePhong ||
+                          draw.specular == rl::SpecularModel::BlinnPhong;
         m_vectors->setVectors(std::array<rl::vec3, 4>{s.n, s.l, s.v, s.r},
-                              b.lighting == rl::LightingModel::CoursePhong ? QStringLiteral("R")
-                                                                           : QStringLiteral("H"),
-                              lineWidth, m_presenting);
+                              half ? QStringLiteral("H") : QStringLiteral("R"), lineWidth,
+                              m_presenting);
     }
     m_vectors->setVisible(vectors);
     m_formula->setText(formulaText());
