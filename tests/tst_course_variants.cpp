@@ -806,6 +806,18 @@ void TestCourseVariants::slidesLighting() {
              QStringList({"light.txt: note: read as a key = value lighting file (lines contain "
                           "'=')"}));
 
+    // The guide's example file reads without a warning: two lights, the first an attenuated
+    // spot, the second directional.
+    diagnostics = {};
+    const QByteArray example = testing::readFile(
+        testing::sourceDir() + QStringLiteral("/docs/examples/slides_lighting.txt"));
+    const auto fromDocs = rl::readLightingFile(viewOf(example), "slides_lighting.txt", diagnostics);
+    RL_VERIFY_OK(fromDocs);
+    QCOMPARE(fromDocs->lights.size(), std::size_t(2));
+    QVERIFY(fromDocs->lights[0].spot() && fromDocs->lights[0].attenuated());
+    QCOMPARE(fromDocs->lights[1].pWorld.w, 0.0);
+    QCOMPARE(diagnostics.warningCount(), std::size_t(0));
+
     rl::CourseSceneParts parts;
     parts.camera = rl::CourseCamera{};
     parts.lighting = *lighting;
