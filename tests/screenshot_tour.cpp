@@ -19,6 +19,7 @@
 //   window-lighting, inspector-lighting, edit-lights   calice2 under the lecture slides'
 //                     lighting (an attenuated spot, a directional light, Blinn-Phong): the
 //                     window, the pixel inspector light by light, the Edit dock's lights
+//   painter           the Painter's algorithm dock on that scene (seed 004)
 //
 //   screenshot_tour --out DIR [--language en|pt_BR] [--samples DIR]
 // (scripts/screenshots.sh runs it in both languages.) The settings are kept in a temporary
@@ -53,6 +54,7 @@
 #include "inspection.h"
 #include "main_window.h"
 #include "normals_view.h"
+#include "painter_view.h"
 #include "pixel_inspector.h"
 #include "replay_builder.h"
 #include "stepping_bar.h"
@@ -503,6 +505,23 @@ int main(int argc, char* argv[]) {
                        file(QStringLiteral("inspector-lighting")), QSize(760, 900)));
         check(saveDock(dock(window, "editDock"), file(QStringLiteral("edit-lights")),
                        QSize(380, 1100)));
+
+        // Seed 004's painter's algorithm on the same scene, beside the z-buffer.
+        before = inspection->frame();
+        window.setShading(rl::ShadingModel::Painter);
+        if (!waitForNewFrame(window, before)) return 1;
+        {
+            auto* painter = window.findChild<PainterView*>();
+            dock(window, "painterDock")->raise();
+            QTest::qWait(50);
+            for (FrameImageView* view : {painter->painterImageView(), painter->zBufferImageView()})
+                zoomTo(view, QRectF(objectBox), QSizeF(view->size()) * 0.95, 0.1);
+        }
+        check(saveDock(dock(window, "painterDock"), file(QStringLiteral("painter")),
+                       QSize(1200, 620)));
+        before = inspection->frame();
+        window.setShading(rl::ShadingModel::Phong);
+        if (!waitForNewFrame(window, before)) return 1;
     }
 
     // A command file: no course camera, nothing lit; three stages skipped.
