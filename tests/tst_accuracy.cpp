@@ -110,6 +110,36 @@ private slots:
         RL_COMPARE_VEC(r.colour.at(2, 3), r.colour.at(1, 3), 1e-12);
     }
 
+    void referenceFollowsTheSlidesLighting() {
+        // The exact reference (double) and the render's phong() (float) agree on the slides'
+        // lighting: an attenuated spot, a directional light, emission, Blinn-Phong.
+        Scene scene = triangleScene(ShadingModel::Phong, 0.5f, 8.0f);
+        Draw& draw = scene.draws[0];
+        draw.material.emission = vec3(3.0f, 2.0f, 1.0f);
+        draw.specular = SpecularModel::BlinnPhong;
+        std::vector<ViewLight> lights(2);
+        lights[0].pView = dvec4(0.5, 1.0, -1.0, 1.0);
+        lights[0].intensity = vec3(200.0f, 150.0f, 100.0f);
+        lights[0].attenuation = vec3(1.0f, 0.2f, 0.05f);
+        lights[0].attenuated = true;
+        lights[0].spot = true;
+        lights[0].spotDirection = glm::normalize(vec3(-0.5f, -1.5f, 3.0f));
+        lights[0].spotCosCutoff = std::cos(glm::radians(25.0f));
+        lights[0].spotExponent = 3.0f;
+        lights[1].pView = dvec4(0.0, 0.0, -1.0, 0.0);
+        lights[1].intensity = vec3(40.0f);
+        const vec3 n = glm::normalize(vec3(0.1f, 0.2f, -1.0f));
+        for (const vec3 p : {vec3(-0.5f, -1.5f, 2.0f), vec3(0.0f, -0.5f, 2.0f)}) {
+            LightTerms terms[2];
+            const PhongSample s =
+                phong(draw.material, draw.material.od, scene.ambientIntensity, lights.data(), 2, p,
+                      n, true, SpecularModel::BlinnPhong, terms);
+            QVERIFY(terms[0].attenuation < 1.0f && terms[0].spot > 0.5f && !terms[0].behind);
+            const dvec3 exact = referencePhong(scene, draw, lights, dvec3(p), dvec3(n));
+            RL_COMPARE_VEC(dvec3(s.colour()), exact, 1e-3);
+        }
+    }
+
     void referenceSupersamplesCountHits() {
         // 2x2 samples: at the corner pixel (0, 3) samples at NDC x = -0.875 and -0.625, y =
         // -0.625 and -0.875; inside when |x| <= (1 - y) / 2: 0.8125 and 0.9375 bound them,
