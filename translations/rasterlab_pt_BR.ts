@@ -200,88 +200,88 @@
     <message>
         <location filename="../app/animation_panel.cpp" line="28"/>
         <source>Animate: each draw moved by M(t)</source>
-        <translation type="unfinished"></translation>
+        <translation>Animar: cada desenho movido por M(t)</translation>
     </message>
     <message>
         <location filename="../app/animation_panel.cpp" line="33"/>
         <location filename="../app/animation_panel.cpp" line="206"/>
         <source>Play</source>
-        <translation type="unfinished"></translation>
+        <translation>Reproduzir</translation>
     </message>
     <message>
         <location filename="../app/animation_panel.cpp" line="38"/>
         <source>Play or pause the animation; paused, every stage view inspects the frame shown</source>
-        <translation type="unfinished"></translation>
+        <translation>Reproduz ou pausa a animação; pausada, o painel de cada etapa inspeciona o quadro exibido</translation>
     </message>
     <message>
         <location filename="../app/animation_panel.cpp" line="59"/>
         <source>Frames:</source>
-        <translation type="unfinished"></translation>
+        <translation>Quadros:</translation>
     </message>
     <message>
         <location filename="../app/animation_panel.cpp" line="62"/>
         <source>Frames a second:</source>
-        <translation type="unfinished"></translation>
+        <translation>Quadros por segundo:</translation>
     </message>
     <message>
         <location filename="../app/animation_panel.cpp" line="65"/>
         <source> °/s</source>
-        <translation type="unfinished"></translation>
+        <translation> °/s</translation>
     </message>
     <message>
         <location filename="../app/animation_panel.cpp" line="66"/>
         <source>Turn:</source>
-        <translation type="unfinished"></translation>
+        <translation>Rotação:</translation>
     </message>
     <message>
         <location filename="../app/animation_panel.cpp" line="67"/>
         <source>Turn about the camera&apos;s up (a turntable)</source>
-        <translation type="unfinished"></translation>
+        <translation>Girar em torno do vetor para cima da câmera (uma mesa giratória)</translation>
     </message>
     <message>
         <location filename="../app/animation_panel.cpp" line="93"/>
         <source>Axis:</source>
-        <translation type="unfinished"></translation>
+        <translation>Eixo:</translation>
     </message>
     <message>
         <location filename="../app/animation_panel.cpp" line="95"/>
         <source>Moves (units/s):</source>
-        <translation type="unfinished"></translation>
+        <translation>Translação (unidades/s):</translation>
     </message>
     <message>
         <location filename="../app/animation_panel.cpp" line="96"/>
         <source>Scale:</source>
-        <translation type="unfinished"></translation>
+        <translation>Escala:</translation>
     </message>
     <message>
         <location filename="../app/animation_panel.cpp" line="107"/>
         <source>&lt;i&gt;The animation belongs to this session: course files have no such field, and saving the camera or lighting does not write it.&lt;/i&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;i&gt;A animação pertence a esta sessão: os arquivos do curso não têm esse campo, e salvar a câmera ou a iluminação não a grava.&lt;/i&gt;</translation>
     </message>
     <message>
         <location filename="../app/animation_panel.cpp" line="206"/>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>Pausar</translation>
     </message>
     <message>
         <location filename="../app/animation_panel.cpp" line="218"/>
         <source>Frame %1 of %2, t = %3 / %4 = %5 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Quadro %1 de %2, t = %3 / %4 = %5 s</translation>
     </message>
     <message>
         <location filename="../app/animation_panel.cpp" line="235"/>
         <source>&lt;p&gt;M(t) = T(v t) · T(c) · R(axis, ω t) · S · T(−c): not applied (the animation is off, so M is the identity).&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;M(t) = T(v t) · T(c) · R(eixo, ω t) · S · T(−c): não aplicada (a animação está desligada, então M é a identidade).&lt;/p&gt;</translation>
     </message>
     <message>
         <location filename="../app/animation_panel.cpp" line="251"/>
         <source>&lt;p&gt;M(t) = T(v t) · T(c) · R(axis, ω t) · S · T(−c), at t = %1 s:&lt;br&gt;c = %2 (the centre of the bounding box), axis = %3,&lt;br&gt;ω t = %4 °/s · %1 s = %5°, v t = %6, S = diag%7&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;M(t) = T(v t) · T(c) · R(eixo, ω t) · S · T(−c), em t = %1 s:&lt;br&gt;c = %2 (o centro da caixa envolvente), eixo = %3,&lt;br&gt;ω t = %4 °/s · %1 s = %5°, v t = %6, S = diag%7&lt;/p&gt;</translation>
     </message>
     <message>
         <location filename="../app/animation_panel.cpp" line="259"/>
         <source>&lt;p&gt;Normals are moved by the inverse transpose of M (stage 3).&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;As normais são levadas pela inversa transposta de M (etapa 3).&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -651,32 +651,32 @@
     <message>
         <location filename="../app/edit_panel.cpp" line="283"/>
         <source>The light whose values are shown</source>
-        <translation type="unfinished"></translation>
+        <translation>A luz cujos valores são mostrados</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="289"/>
         <source>Add a light: a copy of the light shown</source>
-        <translation type="unfinished"></translation>
+        <translation>Adiciona uma luz: uma cópia da luz mostrada</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="294"/>
         <source>Remove the light shown (the scene keeps one light at least)</source>
-        <translation type="unfinished"></translation>
+        <translation>Remove a luz mostrada (a cena mantém pelo menos uma luz)</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="303"/>
         <source>Pl: the light&apos;s position (world), or the direction toward it for a directional light</source>
-        <translation type="unfinished"></translation>
+        <translation>Pl: a posição da luz (mundo), ou a direção até ela, no caso de uma luz direcional</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="306"/>
         <source>Directional (w = 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>Direcional (w = 0)</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="307"/>
         <source>A directional light is infinitely far: L is the same everywhere and it is not attenuated</source>
-        <translation type="unfinished"></translation>
+        <translation>Uma luz direcional está infinitamente distante: L é o mesmo em todo lugar e ela não é atenuada</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="311"/>
@@ -686,47 +686,47 @@
     <message>
         <location filename="../app/edit_panel.cpp" line="315"/>
         <source>att</source>
-        <translation type="unfinished"></translation>
+        <translation>att</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="316"/>
         <source>Attenuation: the light&apos;s diffuse and specular terms are divided by kc + kl d + kq d², d its distance to the point (1 0 0: none)</source>
-        <translation type="unfinished"></translation>
+        <translation>Atenuação: os termos difuso e especular da luz são divididos por kc + kl d + kq d², sendo d a sua distância ao ponto (1 0 0: nenhuma)</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="319"/>
         <source>Spot</source>
-        <translation type="unfinished"></translation>
+        <translation>Spot</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="320"/>
         <source>A spot lights only the points within its cutoff angle of its direction</source>
-        <translation type="unfinished"></translation>
+        <translation>Um spot ilumina só os pontos que estão dentro do seu ângulo de corte em torno da sua direção</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="323"/>
         <source>D: the direction the spot points to (world)</source>
-        <translation type="unfinished"></translation>
+        <translation>D: a direção para onde o spot aponta (mundo)</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="324"/>
         <source>cut</source>
-        <translation type="unfinished"></translation>
+        <translation>corte</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="325"/>
         <source>The spot&apos;s cutoff angle, 0 to 90 degrees</source>
-        <translation type="unfinished"></translation>
+        <translation>O ângulo de corte do spot, de 0 a 90 graus</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="326"/>
         <source>exp</source>
-        <translation type="unfinished"></translation>
+        <translation>exp</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="327"/>
         <source>The spot&apos;s exponent: its light falls off as (-L.D)^exp toward the edge</source>
-        <translation type="unfinished"></translation>
+        <translation>O expoente do spot: sua luz diminui como (-L.D)^exp em direção à borda</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="331"/>
@@ -761,7 +761,7 @@
     <message>
         <location filename="../app/edit_panel.cpp" line="347"/>
         <source>Ke: the light the object gives off by itself, 0 to 255 per channel (added to every lit point)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ke: a luz que o objeto emite por si mesmo, de 0 a 255 por canal (somada a todo ponto iluminado)</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="351"/>
@@ -796,37 +796,37 @@
     <message>
         <location filename="../app/edit_panel.cpp" line="363"/>
         <source>Painter&apos;s algorithm (flat, no depth test)</source>
-        <translation type="unfinished"></translation>
+        <translation>Algoritmo do pintor (flat, sem teste de profundidade)</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="367"/>
         <source>Two-sided lighting</source>
-        <translation type="unfinished"></translation>
+        <translation>Iluminação dos dois lados</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="368"/>
         <source>On (the course&apos;s rule): where V.N &lt; 0 the normal is turned round, so the back of a surface is lit like its front. Off: one-sided, the back keeps a normal pointing away</source>
-        <translation type="unfinished"></translation>
+        <translation>Ligada (a regra do curso): onde V.N &lt; 0 a normal é invertida, então o verso de uma superfície é iluminado como a frente. Desligada: um lado só, o verso mantém uma normal que aponta para longe</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="371"/>
         <source>Blinn-Phong highlight</source>
-        <translation type="unfinished"></translation>
+        <translation>Brilho de Blinn-Phong</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="372"/>
         <source>The highlight with the half vector H = (L + V)/|L + V| instead of Phong&apos;s reflection R: (N.H)^n instead of (R.V)^n</source>
-        <translation type="unfinished"></translation>
+        <translation>O brilho com o vetor médio H = (L + V)/|L + V| em vez da reflexão R de Phong: (N.H)^n em vez de (R.V)^n</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="439"/>
         <source>Add light %1</source>
-        <translation type="unfinished"></translation>
+        <translation>adição da luz %1</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="450"/>
         <source>Remove light %1</source>
-        <translation type="unfinished"></translation>
+        <translation>remoção da luz %1</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="466"/>
@@ -901,37 +901,37 @@
     <message>
         <location filename="../app/edit_panel.cpp" line="707"/>
         <source>two-sided lighting</source>
-        <translation type="unfinished"></translation>
+        <translation>iluminação dos dois lados</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="709"/>
         <source>the highlight&apos;s model</source>
-        <translation type="unfinished"></translation>
+        <translation>modelo do brilho</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="711"/>
         <source>directional</source>
-        <translation type="unfinished"></translation>
+        <translation>direcional</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="714"/>
         <source>spot cutoff</source>
-        <translation type="unfinished"></translation>
+        <translation>corte do spot</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="717"/>
         <source>spot exponent</source>
-        <translation type="unfinished"></translation>
+        <translation>expoente do spot</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="720"/>
         <source>spot direction</source>
-        <translation type="unfinished"></translation>
+        <translation>direção do spot</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="723"/>
         <source>attenuation</source>
-        <translation type="unfinished"></translation>
+        <translation>atenuação</translation>
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="733"/>
@@ -1099,7 +1099,7 @@
     <message>
         <location filename="../app/main_window.cpp" line="91"/>
         <source>painter&apos;s-algorithm flat</source>
-        <translation type="unfinished"></translation>
+        <translation>flat do algoritmo do pintor</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="98"/>
@@ -1151,7 +1151,7 @@
     <message>
         <location filename="../app/main_window.cpp" line="258"/>
         <source>Animation</source>
-        <translation type="unfinished"></translation>
+        <translation>Animação</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="270"/>
@@ -1186,12 +1186,12 @@
     <message>
         <location filename="../app/main_window.cpp" line="297"/>
         <source>4b Near-plane clipping</source>
-        <translation type="unfinished"></translation>
+        <translation>4b Recorte no plano próximo</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="300"/>
         <source>5b Trapezoids</source>
-        <translation type="unfinished"></translation>
+        <translation>5b Trapézios</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="304"/>
@@ -1201,7 +1201,7 @@
     <message>
         <location filename="../app/main_window.cpp" line="309"/>
         <source>Painter&apos;s algorithm</source>
-        <translation type="unfinished"></translation>
+        <translation>Algoritmo do pintor</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="320"/>
@@ -1211,12 +1211,12 @@
     <message>
         <location filename="../app/main_window.cpp" line="404"/>
         <source>&amp;Animation Frames...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Quadros da animação...</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="520"/>
         <source>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Algoritmo do pintor (flat, do mais distante ao mais próximo, sem teste de profundidade)</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="1076"/>
@@ -1962,22 +1962,22 @@
     <message>
         <location filename="../app/main_window_export.cpp" line="118"/>
         <source>Exporting the animation&apos;s frames...</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportando os quadros da animação...</translation>
     </message>
     <message>
         <location filename="../app/main_window_export.cpp" line="132"/>
         <source>%1: cannot render the frame: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: não foi possível renderizar o quadro: %2</translation>
     </message>
     <message>
         <location filename="../app/main_window_export.cpp" line="146"/>
         <source>Exported %1 frames to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 quadros exportados para %2</translation>
     </message>
     <message>
         <location filename="../app/main_window_export.cpp" line="152"/>
         <source>Folder for the Animation&apos;s Frames</source>
-        <translation type="unfinished"></translation>
+        <translation>Pasta para os quadros da animação</translation>
     </message>
     <message>
         <location filename="../app/main_window_export.cpp" line="157"/>
@@ -2035,272 +2035,272 @@
     <message>
         <location filename="../views/near_clip_view.cpp" line="76"/>
         <source>wholly in front</source>
-        <translation type="unfinished"></translation>
+        <translation>inteiramente à frente</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="78"/>
         <source>clipped</source>
-        <translation type="unfinished"></translation>
+        <translation>recortado</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="80"/>
         <source>wholly behind</source>
-        <translation type="unfinished"></translation>
+        <translation>inteiramente atrás</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="82"/>
         <source>outside a clip plane</source>
-        <translation type="unfinished"></translation>
+        <translation>fora de um plano de recorte</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="84"/>
         <source>culled</source>
-        <translation type="unfinished"></translation>
+        <translation>descartado</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="86"/>
         <source>hidden back face</source>
-        <translation type="unfinished"></translation>
+        <translation>face traseira oculta</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="88"/>
         <source>beyond the guard band</source>
-        <translation type="unfinished"></translation>
+        <translation>além da banda de guarda</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="90"/>
         <source>not finite</source>
-        <translation type="unfinished"></translation>
+        <translation>não finito</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="177"/>
         <source>No triangle to show: select one, step into the frame, or choose one in the list.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nenhum triângulo para mostrar: selecione um, avance pelo quadro ou escolha um na lista.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="352"/>
         <source>side view: w across (view z for the course camera), view %1 up</source>
-        <translation type="unfinished"></translation>
+        <translation>vista lateral: w na horizontal (o z de vista, para a câmera do curso), %1 de vista para cima</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="359"/>
         <source>w = near = %1</source>
-        <translation type="unfinished"></translation>
+        <translation>w = near = %1</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="362"/>
         <source>the plane w = near = %1 is far to the left, out of the picture</source>
-        <translation type="unfinished"></translation>
+        <translation>o plano w = near = %1 está bem à esquerda, fora da figura</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="369"/>
         <source>eye</source>
-        <translation type="unfinished"></translation>
+        <translation>olho</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="373"/>
         <source>the eye (w = 0) is far to the left, out of the picture</source>
-        <translation type="unfinished"></translation>
+        <translation>o olho (w = 0) está bem à esquerda, fora da figura</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="381"/>
         <source>on the screen (pixels)</source>
-        <translation type="unfinished"></translation>
+        <translation>na tela (pixels)</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="385"/>
         <source>The last step projects the triangles drawn.</source>
-        <translation type="unfinished"></translation>
+        <translation>O último passo projeta os triângulos desenhados.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="432"/>
         <source>zoomed: x %1 to %2, y %3 to %4</source>
-        <translation type="unfinished"></translation>
+        <translation>ampliado: x de %1 a %2, y de %3 a %4</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="465"/>
         <source>image %1 × %2</source>
-        <translation type="unfinished"></translation>
+        <translation>imagem %1 × %2</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="470"/>
         <source>Nothing drawn.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nada desenhado.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="483"/>
         <source>The triangle shown: the one selected, or one the near plane cut</source>
-        <translation type="unfinished"></translation>
+        <translation>O triângulo mostrado: o selecionado, ou um que o plano próximo cortou</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="486"/>
         <source>y up</source>
-        <translation type="unfinished"></translation>
+        <translation>y para cima</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="487"/>
         <source>x up</source>
-        <translation type="unfinished"></translation>
+        <translation>x para cima</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="488"/>
         <source>Which view axis the side view draws upward</source>
-        <translation type="unfinished"></translation>
+        <translation>Qual eixo de vista a vista lateral desenha para cima</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="489"/>
         <source>Back</source>
-        <translation type="unfinished"></translation>
+        <translation>Voltar</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="491"/>
         <source>Next</source>
-        <translation type="unfinished"></translation>
+        <translation>Avançar</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="493"/>
         <source>All</source>
-        <translation type="unfinished"></translation>
+        <translation>Todos</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="571"/>
         <source>The triangle selected (or being drawn)</source>
-        <translation type="unfinished"></translation>
+        <translation>O triângulo selecionado (ou em desenho)</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="579"/>
         <source>triangle %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>triângulo %1: %2</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="675"/>
         <source>step %1 of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>passo %1 de %2</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="690"/>
         <source>No frame yet.</source>
-        <translation type="unfinished">Nenhum quadro ainda.</translation>
+        <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="691"/>
         <source>No triangle to show: select one or step into the frame.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nenhum triângulo para mostrar: selecione um ou avance pelo quadro.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="693"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;Triângulo %1&lt;/b&gt; de %2: %3</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="724"/>
         <source>The seed clips each triangle against the plane z = &amp;minus;&amp;epsilon;, P = [0, 0, &amp;minus;1, &amp;epsilon;], before the perspective divide (OpenGL&apos;s camera looks along &amp;minus;z). The projection stage clips against w = near in clip space, here near = %1, so P = %2 and a point A is kept when dot(P, A) = w &amp;minus; near &amp;ge; 0.</source>
-        <translation type="unfinished"></translation>
+        <translation>A semente recorta cada triângulo contra o plano z = &amp;minus;&amp;epsilon;, P = [0, 0, &amp;minus;1, &amp;epsilon;], antes da divisão perspectiva (a câmera do OpenGL olha ao longo de &amp;minus;z). A etapa de projeção recorta contra w = near no espaço de recorte, aqui near = %1, então P = %2 e um ponto A é mantido quando dot(P, A) = w &amp;minus; near &amp;ge; 0.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="731"/>
         <source>For the course camera w is the view z: the camera looks along +z, and the plane is z = near, P = [0, 0, 1, &amp;minus;near].</source>
-        <translation type="unfinished"></translation>
+        <translation>Para a câmera do curso, w é o z de vista: a câmera olha ao longo de +z, e o plano é z = near, P = [0, 0, 1, &amp;minus;near].</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="734"/>
         <source>(Written out, the seed&apos;s P keeps z &amp;le; &amp;epsilon;; the plane z = &amp;minus;&amp;epsilon; it names is P = [0, 0, &amp;minus;1, &amp;minus;&amp;epsilon;]. Either way the plane lies a little in front of the eye, so no vertex drawn is divided by w = 0.)</source>
-        <translation type="unfinished"></translation>
+        <translation>(Fazendo as contas, o P da semente mantém z &amp;le; &amp;epsilon;; o plano z = &amp;minus;&amp;epsilon; que ela cita é P = [0, 0, &amp;minus;1, &amp;minus;&amp;epsilon;]. De todo modo, o plano fica um pouco à frente do olho, então nenhum vértice desenhado é dividido por w = 0.)</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="738"/>
         <source>A0 = %1, A1 = %2, A2 = %3 (view space).</source>
-        <translation type="unfinished"></translation>
+        <translation>A0 = %1, A1 = %2, A2 = %3 (espaço de vista).</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="742"/>
         <source>This scene does not clip against the near plane (the naive or same-side projection): the steps show what clipping would do.</source>
-        <translation type="unfinished"></translation>
+        <translation>Esta cena não recorta contra o plano próximo (a projeção ingênua ou a do mesmo lado): os passos mostram o que o recorte faria.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="747"/>
         <source>The draw&apos;s clip planes cut the triangle first; the polygon the stage drew may differ from the one here.</source>
-        <translation type="unfinished"></translation>
+        <translation>Os planos de recorte do desenho cortam o triângulo primeiro; o polígono que a etapa desenhou pode diferir do mostrado aqui.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="754"/>
         <source>Vertex %1: dot(P, %1) = %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Vértice %1: dot(P, %1) = %2</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="757"/>
         <source>kept, added to the output polygon as q%1.</source>
-        <translation type="unfinished"></translation>
+        <translation>mantido, acrescentado ao polígono de saída como q%1.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="759"/>
         <source>behind the plane, left out.</source>
-        <translation type="unfinished"></translation>
+        <translation>atrás do plano, deixado de fora.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="763"/>
         <source>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 have the same sign: the edge does not cross the plane.</source>
-        <translation type="unfinished"></translation>
+        <translation>Aresta %1&amp;ndash;%2: dot(P, %1) = %3 e dot(P, %2) = %4 têm o mesmo sinal: a aresta não cruza o plano.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="767"/>
         <source>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 differ in sign: t = (0 &amp;minus; %5) / (%6 &amp;minus; %5) = %7, C = lerp(t, %1, %2) = %8, added as q%9.</source>
-        <translation type="unfinished"></translation>
+        <translation>Aresta %1&amp;ndash;%2: dot(P, %1) = %3 e dot(P, %2) = %4 têm sinais opostos: t = (0 &amp;minus; %5) / (%6 &amp;minus; %5) = %7, C = lerp(t, %1, %2) = %8, acrescentado como q%9.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="775"/>
         <source>(The stage computes the same point from %1, the end in front, with t&apos; = 1 &amp;minus; t = %2, so that the two triangles sharing the edge get it bit for bit.)</source>
-        <translation type="unfinished"></translation>
+        <translation>(A etapa calcula o mesmo ponto a partir de %1, a ponta que está à frente, com t&apos; = 1 &amp;minus; t = %2, para que os dois triângulos que compartilham a aresta obtenham exatamente o mesmo ponto, bit a bit.)</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="786"/>
         <source>Output polygon: empty. The triangle lies wholly behind the plane: nothing is drawn.</source>
-        <translation type="unfinished"></translation>
+        <translation>Polígono de saída: vazio. O triângulo fica inteiramente atrás do plano: nada é desenhado.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="792"/>
         <source>Output polygon, %1 vertices: %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>Polígono de saída, %1 vértices: %2.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="796"/>
         <source>The triangle is wholly in front: untouched.</source>
-        <translation type="unfinished"></translation>
+        <translation>O triângulo está inteiramente à frente: fica intacto.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="803"/>
         <source>Four vertices: split along the diagonal q0&amp;ndash;q2 into the triangles q0 q1 q2 and q0 q2 q3, rendered separately.</source>
-        <translation type="unfinished"></translation>
+        <translation>Quatro vértices: dividido ao longo da diagonal q0&amp;ndash;q2 nos triângulos q0 q1 q2 e q0 q2 q3, renderizados separadamente.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="806"/>
         <source>Three vertices: one triangle, nothing to split.</source>
-        <translation type="unfinished"></translation>
+        <translation>Três vértices: um triângulo, nada a dividir.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="808"/>
         <source>Fewer than three vertices: no triangle.</source>
-        <translation type="unfinished"></translation>
+        <translation>Menos de três vértices: nenhum triângulo.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="811"/>
         <source>Then each vertex is projected and taken to pixels.</source>
-        <translation type="unfinished"></translation>
+        <translation>Depois, cada vértice é projetado e levado a pixels.</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="814"/>
         <source>Nothing was drawn from this triangle (%1).</source>
-        <translation type="unfinished"></translation>
+        <translation>Nada foi desenhado deste triângulo (%1).</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="818"/>
         <source>Triangle %1: %2, %3, %4 (pixels)</source>
-        <translation type="unfinished"></translation>
+        <translation>Triângulo %1: %2, %3, %4 (pixels)</translation>
     </message>
     <message>
         <location filename="../views/near_clip_view.cpp" line="825"/>
         <source>(%1 of the %2 triangles were drawn: %3.)</source>
-        <translation type="unfinished"></translation>
+        <translation>(%1 dos %2 triângulos foram desenhados: %3.)</translation>
     </message>
 </context>
 <context>
@@ -2338,12 +2338,12 @@
     <message>
         <location filename="../views/normals_view.cpp" line="420"/>
         <source>Normals by M (wrong)</source>
-        <translation type="unfinished"></translation>
+        <translation>Normais por M (erradas)</translation>
     </message>
     <message>
         <location filename="../views/normals_view.cpp" line="423"/>
         <source>Beside each triangle normal, the model normal carried by viewFromModel itself instead of its inverse transpose: it leaves the surface under a non-uniform scale (set one in the Animation panel)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ao lado de cada normal de triângulo, a normal do modelo levada pela própria viewFromModel em vez da sua inversa transposta: sob uma escala não uniforme, ela deixa de ser perpendicular à superfície (defina uma no painel Animação)</translation>
     </message>
     <message>
         <location filename="../views/normals_view.cpp" line="455"/>
@@ -2414,7 +2414,7 @@
     <message>
         <location filename="../views/normals_view.cpp" line="884"/>
         <source>triangle normals carried by M itself (wrong)</source>
-        <translation type="unfinished"></translation>
+        <translation>normais dos triângulos levadas pela própria M (errado)</translation>
     </message>
     <message>
         <location filename="../views/normals_view.cpp" line="887"/>
@@ -2434,22 +2434,22 @@
     <message>
         <location filename="../views/normals_view.cpp" line="914"/>
         <source>&lt;p&gt;&lt;b&gt;Normals by M, right and wrong&lt;/b&gt;: A = viewFromModel = viewFromWorld · M(t) · worldFromModel (M: the animation matrix, the identity when the animation is off). The model-space normal n = %1, det A = %2; the carried edges, made unit: e1 = A (P2 − P1) / |…| = %3, e2 = A (P3 − P1) / |…| = %4.&lt;br&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;&lt;b&gt;Normais por M, certo e errado&lt;/b&gt;: A = viewFromModel = viewFromWorld · M(t) · worldFromModel (M: a matriz de animação, a identidade quando a animação está desligada). A normal no espaço do modelo é n = %1, det A = %2; as arestas levadas, tornadas unitárias: e1 = A (P2 − P1) / |…| = %3, e2 = A (P3 − P1) / |…| = %4.&lt;br&gt;</translation>
     </message>
     <message>
         <location filename="../views/normals_view.cpp" line="921"/>
         <source>Right: A&lt;sup&gt;−T&lt;/sup&gt; n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: perpendicular to the surface.&lt;br&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>Certo: A&lt;sup&gt;−T&lt;/sup&gt; n, normalizada = &lt;b&gt;%1&lt;/b&gt;; seus produtos escalares com e1 e e2 valem %2 e %3: perpendicular à superfície.&lt;br&gt;</translation>
     </message>
     <message>
         <location filename="../views/normals_view.cpp" line="925"/>
         <source>Wrong: A n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: %4° off the surface&apos;s normal.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>Errado: A n, normalizada = &lt;b&gt;%1&lt;/b&gt;; seus produtos escalares com e1 e e2 valem %2 e %3: desviada %4° da normal da superfície.&lt;/p&gt;</translation>
     </message>
     <message>
         <location filename="../views/normals_view.cpp" line="931"/>
         <source>&lt;p&gt;Here both agree: A has no non-uniform scale. Set a scale such as (2, 1, 1) in the Animation panel to see them part.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Aqui as duas coincidem: A não tem escala não uniforme. Defina uma escala como (2, 1, 1) no painel Animação para vê-las se separarem.&lt;/p&gt;</translation>
     </message>
     <message>
         <location filename="../views/normals_view.cpp" line="939"/>
@@ -2562,103 +2562,103 @@
     <message>
         <location filename="../views/painter_view.cpp" line="69"/>
         <source>Painted</source>
-        <translation type="unfinished"></translation>
+        <translation>Ordem</translation>
     </message>
     <message>
         <location filename="../views/painter_view.cpp" line="71"/>
         <source>Draw</source>
-        <translation type="unfinished">Desenho</translation>
+        <translation>Desenho</translation>
     </message>
     <message>
         <location filename="../views/painter_view.cpp" line="73"/>
         <source>Triangle</source>
-        <translation type="unfinished">Triângulo</translation>
+        <translation>Triângulo</translation>
     </message>
     <message>
         <location filename="../views/painter_view.cpp" line="75"/>
         <source>|b| (distance)</source>
-        <translation type="unfinished"></translation>
+        <translation>|b| (distância)</translation>
     </message>
     <message>
         <location filename="../views/painter_view.cpp" line="77"/>
         <source>Hidden wrongly</source>
-        <translation type="unfinished"></translation>
+        <translation>Ocultos por engano</translation>
     </message>
     <message>
         <location filename="../views/painter_view.cpp" line="134"/>
         <source>The triangles in the order the painter paints them: farthest barycentre first. Click a row to select its triangle.</source>
-        <translation type="unfinished"></translation>
+        <translation>Os triângulos na ordem em que o pintor os pinta: o baricentro mais distante primeiro. Clique numa linha para selecionar seu triângulo.</translation>
     </message>
     <message>
         <location filename="../views/painter_view.cpp" line="139"/>
         <source>Painter&apos;s image</source>
-        <translation type="unfinished"></translation>
+        <translation>Imagem do pintor</translation>
     </message>
     <message>
         <location filename="../views/painter_view.cpp" line="140"/>
         <source>Painted order (first blue, last red)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ordem de pintura (primeiro azul, último vermelho)</translation>
     </message>
     <message>
         <location filename="../views/painter_view.cpp" line="145"/>
         <source>Mark ties on shared edges</source>
-        <translation type="unfinished"></translation>
+        <translation>Marcar empates nas arestas compartilhadas</translation>
     </message>
     <message>
         <location filename="../views/painter_view.cpp" line="148"/>
         <source>Pixels on an edge two triangles share, at the same depth: the z-buffer keeps the first drawn, the painter the last.</source>
-        <translation type="unfinished"></translation>
+        <translation>Pixels numa aresta que dois triângulos compartilham, na mesma profundidade: o z-buffer mantém o primeiro desenhado, o pintor o último.</translation>
     </message>
     <message>
         <location filename="../views/painter_view.cpp" line="327"/>
         <source>rank of the last triangle painted</source>
-        <translation type="unfinished"></translation>
+        <translation>ordem do último triângulo pintado</translation>
     </message>
     <message>
         <location filename="../views/painter_view.cpp" line="328"/>
         <source>painted far to near, no depth test</source>
-        <translation type="unfinished"></translation>
+        <translation>pintado do mais distante ao mais próximo, sem teste de profundidade</translation>
     </message>
     <message numerus="yes">
         <location filename="../views/painter_view.cpp" line="330"/>
         <source>Z-buffer (the same flat colours): %n pixel(s) differ</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Z-buffer (as mesmas cores flat): %n pixel difere</numerusform>
+            <numerusform>Z-buffer (as mesmas cores flat): %n pixels diferem</numerusform>
         </translation>
     </message>
     <message>
         <location filename="../views/painter_view.cpp" line="370"/>
         <source>No frame.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nenhum quadro.</translation>
     </message>
     <message>
         <location filename="../views/painter_view.cpp" line="371"/>
         <source>Not worked out yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ainda não calculado.</translation>
     </message>
     <message numerus="yes">
         <location filename="../views/painter_view.cpp" line="376"/>
         <source>&lt;b&gt;Painter&apos;s algorithm&lt;/b&gt; (seed 004): the %n triangle(s) are sorted by the distance |b| of their barycentre b (view space) to the camera, far to near, each lit once at b, and painted in that order &lt;i&gt;without a depth test&lt;/i&gt;: the last painted stays.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>&lt;b&gt;Algoritmo do pintor&lt;/b&gt; (semente 004): o %n triângulo é ordenado pela distância |b| do seu baricentro b (espaço de vista) à câmera, do mais distante ao mais próximo, iluminado uma vez em b e pintado nessa ordem &lt;i&gt;sem teste de profundidade&lt;/i&gt;: o último pintado prevalece.</numerusform>
+            <numerusform>&lt;b&gt;Algoritmo do pintor&lt;/b&gt; (semente 004): os %n triângulos são ordenados pela distância |b| do seu baricentro b (espaço de vista) à câmera, do mais distante ao mais próximo, cada um iluminado uma vez em b, e pintados nessa ordem &lt;i&gt;sem teste de profundidade&lt;/i&gt;: o último pintado prevalece.</numerusform>
         </translation>
     </message>
     <message>
         <location filename="../views/painter_view.cpp" line="381"/>
         <source>The frame shown uses the z-buffer; this view renders the scene again as the painter would.</source>
-        <translation type="unfinished"></translation>
+        <translation>O quadro exibido usa o z-buffer; este painel renderiza a cena de novo como o pintor faria.</translation>
     </message>
     <message>
         <location filename="../views/painter_view.cpp" line="384"/>
         <source>Against the z-buffer with the same colours, %1 pixels differ: &lt;span style=&apos;color:#d00000&apos;&gt;%2 where a farther triangle was painted after a nearer one&lt;/span&gt; (the order of whole triangles is not the order of their pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 on edges two triangles share at the same depth&lt;/span&gt; (the z-buffer keeps the first drawn, the painter the last).</source>
-        <translation type="unfinished"></translation>
+        <translation>Comparado ao z-buffer com as mesmas cores, %1 pixels diferem: &lt;span style=&apos;color:#d00000&apos;&gt;%2 onde um triângulo mais distante foi pintado depois de um mais próximo&lt;/span&gt; (a ordem dos triângulos inteiros não é a ordem dos seus pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 em arestas que dois triângulos compartilham na mesma profundidade&lt;/span&gt; (o z-buffer mantém o primeiro desenhado, o pintor o último).</translation>
     </message>
     <message>
         <location filename="../views/painter_view.cpp" line="399"/>
         <source>Triangle %1: b = %2, |b| = %3, painted %4 of %5. The z-buffer shows it at %6 pixels; a triangle painted after it covers %7 of them though it is farther there; it covers %8 pixels of nearer triangles painted before it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Triângulo %1: b = %2, |b| = %3, pintado na posição %4 de %5. O z-buffer o mostra em %6 pixels; um triângulo pintado depois dele cobre %7 desses pixels, embora ali esteja mais distante; ele cobre %8 pixels de triângulos mais próximos pintados antes dele.</translation>
     </message>
 </context>
 <context>
@@ -2721,12 +2721,12 @@
     <message>
         <location filename="../views/pixel_inspector.cpp" line="434"/>
         <source>%1 over %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 sobre %2</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="435"/>
         <source>painted, no depth test</source>
-        <translation type="unfinished"></translation>
+        <translation>pintado, sem teste de profundidade</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="442"/>
@@ -2881,47 +2881,47 @@
     <message>
         <location filename="../views/pixel_inspector.cpp" line="680"/>
         <source>Light %1, directional toward %2 (view), Il = %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Luz %1, direcional, na direção %2 (vista), Il = %3</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="681"/>
         <source>Light %1 at %2 (view), Il = %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Luz %1 em %2 (vista), Il = %3</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="684"/>
         <source>  at the point itself (L = 0): nothing</source>
-        <translation type="unfinished"></translation>
+        <translation>  no próprio ponto (L = 0): nada</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="689"/>
         <source>att = 1 / (%1 + %2 × %3 + %4 × %3²) = %5</source>
-        <translation type="unfinished"></translation>
+        <translation>att = 1 / (%1 + %2 × %3 + %4 × %3²) = %5</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="693"/>
         <source>d = %1, not attenuated</source>
-        <translation type="unfinished"></translation>
+        <translation>d = %1, sem atenuação</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="695"/>
         <source>spot: −L.D = %1 &lt; cos %2° = %3, outside the cone: 0</source>
-        <translation type="unfinished"></translation>
+        <translation>spot: −L.D = %1 &lt; cos %2° = %3, fora do cone: 0</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="698"/>
         <source>spot: −L.D = %1 ≥ cos %2° = %3, %1^%4 = %5</source>
-        <translation type="unfinished"></translation>
+        <translation>spot: −L.D = %1 ≥ cos %2° = %3, %1^%4 = %5</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="706"/>
         <source>  N.L = %1 &lt; 0: behind the surface, nothing</source>
-        <translation type="unfinished"></translation>
+        <translation>  N.L = %1 &lt; 0: atrás da superfície, nada</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="708"/>
         <source>  N.L = %1, %2 = %3: diffuse %4, specular %5</source>
-        <translation type="unfinished"></translation>
+        <translation>  N.L = %1, %2 = %3: difusa %4, especular %5</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="786"/>
@@ -2951,12 +2951,12 @@
     <message>
         <location filename="../views/pixel_inspector.cpp" line="829"/>
         <source>Outside the cone of light %1: −L.D = %2 is below cos %3° = %4; it adds nothing here.</source>
-        <translation type="unfinished"></translation>
+        <translation>Fora do cone da luz %1: −L.D = %2 está abaixo de cos %3° = %4; ela não acrescenta nada aqui.</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="836"/>
         <source>One-sided lighting: the back of the surface is seen (V.N &lt; 0) and N is not turned toward the viewer.</source>
-        <translation type="unfinished"></translation>
+        <translation>Iluminação de um lado só: vê-se o verso da superfície (V.N &lt; 0) e N não é voltada para o observador.</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="848"/>
@@ -3001,7 +3001,7 @@
     <message>
         <location filename="../views/pixel_inspector.cpp" line="892"/>
         <source>Painter&apos;s algorithm: lit as flat shading, once at the triangle&apos;s barycentre; the triangles are painted far to near without a depth test.</source>
-        <translation type="unfinished"></translation>
+        <translation>Algoritmo do pintor: iluminado como no sombreamento flat, uma vez no baricentro do triângulo; os triângulos são pintados do mais distante ao mais próximo, sem teste de profundidade.</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="897"/>
@@ -3016,17 +3016,17 @@
     <message>
         <location filename="../views/pixel_inspector.cpp" line="909"/>
         <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)</source>
-        <translation type="unfinished"></translation>
+        <translation>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="910"/>
         <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)</source>
-        <translation type="unfinished"></translation>
+        <translation>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="911"/>
         <source>att = 1 / (kc + kl d + kq d²) for a positional light, 1 for a directional one; spot = (−L.D)^exp inside the cone, 0 outside, 1 for a light that is no spot.</source>
-        <translation type="unfinished"></translation>
+        <translation>att = 1 / (kc + kl d + kq d²) para uma luz posicional, 1 para uma direcional; spot = (−L.D)^exp dentro do cone, 0 fora dele, 1 para uma luz que não é spot.</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="916"/>
@@ -3061,7 +3061,7 @@
     <message>
         <location filename="../views/pixel_inspector.cpp" line="1004"/>
         <source>Ke = %1: the material&apos;s own light</source>
-        <translation type="unfinished"></translation>
+        <translation>Ke = %1: a luz própria do material</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="1027"/>
@@ -3127,7 +3127,7 @@
     <message>
         <location filename="../views/pixel_inspector.cpp" line="1139"/>
         <source>emission</source>
-        <translation type="unfinished"></translation>
+        <translation>emissão</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="1141"/>
@@ -3137,12 +3137,12 @@
     <message>
         <location filename="../views/pixel_inspector.cpp" line="1146"/>
         <source>diffuse %1</source>
-        <translation type="unfinished"></translation>
+        <translation>difusa %1</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="1149"/>
         <source>specular %1</source>
-        <translation type="unfinished"></translation>
+        <translation>especular %1</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="1153"/>
@@ -3802,184 +3802,184 @@
     <message>
         <location filename="../views/trapezoid_view.cpp" line="104"/>
         <source>No triangle to show: step into the frame or pick a pixel.</source>
-        <translation type="unfinished">Nenhum triângulo para mostrar: avance pelo quadro ou escolha um pixel.</translation>
+        <translation>Nenhum triângulo para mostrar: avance pelo quadro ou escolha um pixel.</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="256"/>
         <source>upper trapezoid</source>
-        <translation type="unfinished"></translation>
+        <translation>trapézio superior</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="257"/>
         <source>lower trapezoid</source>
-        <translation type="unfinished"></translation>
+        <translation>trapézio inferior</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="268"/>
         <source>scanline j</source>
-        <translation type="unfinished"></translation>
+        <translation>linha de varredura j</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="370"/>
         <source>No frame yet.</source>
-        <translation type="unfinished">Nenhum quadro ainda.</translation>
+        <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="372"/>
         <source>Pick a pixel, or step through the frame, to see a triangle split into trapezoids.</source>
-        <translation type="unfinished"></translation>
+        <translation>Escolha um pixel, ou avance pelo quadro, para ver um triângulo dividido em trapézios.</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="378"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</source>
-        <translation type="unfinished">&lt;b&gt;Triângulo %1&lt;/b&gt; de %2</translation>
+        <translation>&lt;b&gt;Triângulo %1&lt;/b&gt; de %2</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="379"/>
         <source>scanline %1</source>
-        <translation type="unfinished">linha de varredura %1</translation>
+        <translation>linha de varredura %1</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="380"/>
         <source>pixel %1</source>
-        <translation type="unfinished">pixel %1</translation>
+        <translation>pixel %1</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="382"/>
         <source>at the stepping cursor</source>
-        <translation type="unfinished">no cursor de passo</translation>
+        <translation>no cursor de passo</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="382"/>
         <source>the triangle selected</source>
-        <translation type="unfinished"></translation>
+        <translation>o triângulo selecionado</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="409"/>
         <source>Its area on the screen is zero: it has no inside, no trapezoid, and is not scanned.</source>
-        <translation type="unfinished"></translation>
+        <translation>Sua área na tela é zero: ele não tem interior nem trapézio, e não é varrido.</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="417"/>
         <source>Vertices sorted by j: top %1, middle %2, bottom %3. The triangle is split at the middle vertex&apos;s row j = %4.</source>
-        <translation type="unfinished"></translation>
+        <translation>Vértices ordenados por j: topo %1, meio %2, base %3. O triângulo é dividido na linha do vértice do meio, j = %4.</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="422"/>
         <source>The long edge from top to bottom meets that row at s = (%1 &amp;minus; %2) / (%3 &amp;minus; %2) = %4: M&apos; = lerp(s, top, bottom) = %5, %6.</source>
-        <translation type="unfinished"></translation>
+        <translation>A aresta longa, do topo à base, encontra essa linha em s = (%1 &amp;minus; %2) / (%3 &amp;minus; %2) = %4: M&apos; = lerp(s, topo, base) = %5, %6.</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="428"/>
         <source>Two vertices share a row: the triangle is one trapezoid, two of whose corners are the same vertex.</source>
-        <translation type="unfinished"></translation>
+        <translation>Dois vértices estão na mesma linha: o triângulo é um só trapézio, com dois cantos no mesmo vértice.</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="433"/>
         <source>Each corner carries the colour Gouraud shading worked out at its vertex, and the depth.</source>
-        <translation type="unfinished"></translation>
+        <translation>Cada canto leva a cor que o sombreamento de Gouraud calculou no seu vértice, e a profundidade.</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="439"/>
         <source>Each corner carries the depth%1 (colours are carried under Gouraud shading, for a triangle with a pixel on the screen, once the frame&apos;s replay is built).</source>
-        <translation type="unfinished"></translation>
+        <translation>Cada canto leva a profundidade%1 (as cores são levadas no sombreamento de Gouraud, para um triângulo com algum pixel na tela, depois que o passo a passo do quadro estiver preparado).</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="441"/>
         <source> as 1/z, which is linear on the screen</source>
-        <translation type="unfinished"></translation>
+        <translation> como 1/z, que é linear na tela</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="446"/>
         <source>corner</source>
-        <translation type="unfinished"></translation>
+        <translation>canto</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="449"/>
         <source>rows</source>
-        <translation type="unfinished">linhas</translation>
+        <translation>linhas</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="457"/>
         <location filename="../views/trapezoid_view.cpp" line="486"/>
         <source>upper</source>
-        <translation type="unfinished">superior</translation>
+        <translation>superior</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="457"/>
         <location filename="../views/trapezoid_view.cpp" line="486"/>
         <source>lower</source>
-        <translation type="unfinished">inferior</translation>
+        <translation>inferior</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="471"/>
         <source>none</source>
-        <translation type="unfinished"></translation>
+        <translation>nenhuma</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="484"/>
         <source>Scanline j = %1, in the %2 trapezoid</source>
-        <translation type="unfinished"></translation>
+        <translation>Linha de varredura j = %1, no trapézio %2</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="499"/>
         <source>No pixel of this row lies between L and R on the screen.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nenhum pixel desta linha fica entre L e R na tela.</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="502"/>
         <source>Pixels i with L_i &amp;le; i%1 &amp;lt; R_i: %2 to %3.</source>
-        <translation type="unfinished"></translation>
+        <translation>Pixels i com L_i &amp;le; i%1 &amp;lt; R_i: %2 a %3.</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="507"/>
         <source>Pixels i from ceil(L_i%1) to floor(R_i%1): %2 to %3.</source>
-        <translation type="unfinished"></translation>
+        <translation>Pixels i de ceil(L_i%1) a floor(R_i%1): %2 a %3.</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="518"/>
         <source>Pixel i = %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Pixel i = %1</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="528"/>
         <source>z = 1 / (1/z) = %1; the depth test&apos;s z there: %2 (from the barycentrics, in float).</source>
-        <translation type="unfinished"></translation>
+        <translation>z = 1 / (1/z) = %1; o z do teste de profundidade ali: %2 (a partir das coordenadas baricêntricas, em float).</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="531"/>
         <source>The depth test&apos;s z there: %1 (from the barycentrics, in float).</source>
-        <translation type="unfinished"></translation>
+        <translation>O z do teste de profundidade ali: %1 (a partir das coordenadas baricêntricas, em float).</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="539"/>
         <source>The row through the middle vertex belongs to the lower trapezoid only, so no row is scanned twice.</source>
-        <translation type="unfinished"></translation>
+        <translation>A linha que passa pelo vértice do meio pertence só ao trapézio inferior, então nenhuma linha é varrida duas vezes.</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="543"/>
         <source>Pixel (i, j) is sampled at (i + %1, j + %1): t_j and t_i use those.</source>
-        <translation type="unfinished"></translation>
+        <translation>O pixel (i, j) é amostrado em (i + %1, j + %1): t_j e t_i usam esses valores.</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="545"/>
         <source>Top-left rule: a sample exactly on the bottom vertex&apos;s row or on R belongs to the next triangle.</source>
-        <translation type="unfinished"></translation>
+        <translation>Regra top-left: uma amostra exatamente na linha do vértice da base ou sobre R pertence ao triângulo seguinte.</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="547"/>
         <source>Inclusive rule: samples exactly on L, R or the bottom row are inside.</source>
-        <translation type="unfinished"></translation>
+        <translation>Regra inclusiva: as amostras exatamente sobre L, sobre R ou na linha da base estão dentro.</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="550"/>
         <source>These rules interpolate colours perspective-correctly (weights over w): the lerps of the seed, linear on the screen, are what the course rules do; the rows and pixels are the same either way.</source>
-        <translation type="unfinished"></translation>
+        <translation>Estas regras interpolam as cores com correção de perspectiva (pesos divididos por w): os lerps da semente, lineares na tela, são o que fazem as regras do curso; as linhas e os pixels são os mesmos de todo modo.</translation>
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="555"/>
         <source>The same rows and pixels as the edge walk (scan conversion view): L_i and R_i are where the scanline crosses the triangle&apos;s edges.</source>
-        <translation type="unfinished"></translation>
+        <translation>As mesmas linhas e pixels do percurso das arestas (painel de conversão por varredura): L_i e R_i são onde a linha de varredura cruza as arestas do triângulo.</translation>
     </message>
 </context>
 <context>
@@ -4131,7 +4131,7 @@
     <message>
         <location filename="../views/vertex_table.cpp" line="456"/>
         <source>&lt;p&gt;World: P = M(t) · worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt; (M: the animation matrix at t = %3 s)&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Mundo: P = M(t) · worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt; (M: a matriz de animação em t = %3 s)&lt;/p&gt;</translation>
     </message>
     <message>
         <location filename="../views/vertex_table.cpp" line="461"/>
