@@ -1,10 +1,13 @@
 #include "normals.h"
 
+#include <algorithm>
 #include <limits>
+
+#include "parallel.h"
 
 namespace rl {
 
-Normals NormalsStage::run(const Scene& scene, const ViewTransform& view) const {
+Normals NormalsStage::run(const Scene& scene, const ViewTransform& view, int threads) const {
     Normals out;
     if (!scene.lit()) {
         out.skipped = true;
@@ -18,46 +21,69 @@ Normals NormalsStage::run(const Scene& scene, const ViewTransform& view) const {
         if (!draw.mesh) continue;
         const auto& pView = view.pView[d];
         const auto& triangles = draw.mesh->triangles;
-        std::vector<dvec3> sum(pView.size(), dvec3(0.0));
-        normals.triangle.resize(triangles.size(), vec3(0.0f));
-
-        // Triangle normals, summed into their vertices.
-        for (std::size_t t = 0; t < triangles.size(); ++t) {
-            const auto& tri = triangles[t];
-            // Points, not homogeneous coordinates: (x, y, z) / w (w = 1 in course files).
-            const auto point = [&](std::uint32_t v) {
-                const dvec4& p = pView[v];
-                return p.w != 0.0 && p.w != 1.0 ? dvec3(p) / p.w : dvec3(p);
-            };
-            const dvec3 p1 = point(tri[0]);
-            const dvec3 p2 = point(tri[1]);
-            const dvec3 p3 = point(tri[2]);
-            const dvec3 cross = glm::cross(p2 - p1, p3 - p1);
-            const double length = glm::length(cross);
-            if (!(length > std::numeric_limits<double>::min()) || !isFinite(length)) {
-                ++normals.degenerateTriangles;
-                continue;
-            }
-            const dvec3 n = cross / length;
-            normals.triangle[t] = vec3(n);
-            for (std::uint32_t v : tri) sum[v] += n;
-        }
-
-        // Vertex normals: the file's own, carried to view space by the inverse transpose of
-        // viewFromModel (seed 002; a non-uniform scale would bend them otherwise), or else
-        // the normalised sums of the triangle normals (seed 000).
-        normals.vertex.resize(pView.size(), vec3(0.0f));
+        const std::size_t triangleCount = triangles.size();
+        const std::size_t vertexCount = pView.size();
+        normals.triangle.resize(triangleCount, vec3(0.0f));
+        normals.vertex.resize(vertexCount, vec3(0.0f));
+        const int parts = triangleCount < 4096 ? 1 : std::max(1, threads);
         const auto& given = draw.mesh->normals;
         const dmat3 normalFromModel =
             given.empty() ? dmat3(1.0) : glm::transpose(glm::inverse(dmat3(view.viewFromModel[d])));
-        for (std::size_t v = 0; v < sum.size(); ++v) {
-            const dvec3 n = given.empty() ? sum[v] : normalFromModel * dvec3(given[v]);
-            const double length = glm::length(n);
-            if (length > std::numeric_limits<double>::min() && isFinite(length))
-                normals.vertex[v] = vec3(n / length);
-            else
-                ++normals.verticesWithoutNormal;
-        }
+
+        // Each part owns a range of vertices and goes through every triangle in order: it
+        // works out the normal of each triangle with a corner in its range, adds it to those
+        // corners only (so every sum is made in triangle order, whatever the number of
+        // parts), and keeps it when it owns the first corner (so each is kept once).
+        std::vector<std::size_t> degenerateCounts(static_cast<std::size_t>(parts), 0);
+        std::vector<std::size_t> withoutCounts(static_cast<std::size_t>(parts), 0);
+        runParts(parts, [&](int part) {
+            const std::size_t first = rangeBegin(vertexCount, part, parts);
+            const std::size_t last = rangeBegin(vertexCount, part + 1, parts);
+            // One part owns every vertex: no range checks.
+            const bool all = parts == 1;
+            const auto mine = [&](std::uint32_t v) { return all || (v >= first && v < last); };
+            std::vector<dvec3> sum(last - first, dvec3(0.0));
+            std::size_t degenerate = 0;  // on the thread's stack
+            for (std::size_t t = 0; t < triangleCount; ++t) {
+                const auto& tri = triangles[t];
+                if (!all && !mine(tri[0]) && !mine(tri[1]) && !mine(tri[2])) continue;
+                // Points, not homogeneous coordinates: (x, y, z) / w (w = 1 in course files).
+                const auto point = [&](std::uint32_t v) {
+                    const dvec4& p = pView[v];
+                    return p.w != 0.0 && p.w != 1.0 ? dvec3(p) / p.w : dvec3(p);
+                };
+                const dvec3 p1 = point(tri[0]);
+                const dvec3 p2 = point(tri[1]);
+                const dvec3 p3 = point(tri[2]);
+                const dvec3 cross = glm::cross(p2 - p1, p3 - p1);
+                const double length = glm::length(cross);
+                if (!(length > std::numeric_limits<double>::min()) || !isFinite(length)) {
+                    degenerate += mine(tri[0]) ? 1 : 0;
+                    continue;
+                }
+                const dvec3 n = cross / length;
+                if (mine(tri[0])) normals.triangle[t] = vec3(n);
+                for (std::uint32_t v : tri)
+                    if (mine(v)) sum[v - first] += n;
+            }
+            degenerateCounts[static_cast<std::size_t>(part)] = degenerate;
+
+            // Vertex normals: the file's own, carried to view space by the inverse transpose
+            // of viewFromModel (seed 002; a non-uniform scale would bend them otherwise), or
+            // else the normalised sums of the triangle normals (seed 000).
+            std::size_t without = 0;
+            for (std::size_t v = first; v < last; ++v) {
+                const dvec3 n = given.empty() ? sum[v - first] : normalFromModel * dvec3(given[v]);
+                const double length = glm::length(n);
+                if (length > std::numeric_limits<double>::min() && isFinite(length))
+                    normals.vertex[v] = vec3(n / length);
+                else
+                    ++without;
+            }
+            withoutCounts[static_cast<std::size_t>(part)] = without;
+        });
+        for (std::size_t c : degenerateCounts) normals.degenerateTriangles += c;
+        for (std::size_t c : withoutCounts) normals.verticesWithoutNormal += c;
         out.degenerateTriangles += normals.degenerateTriangles;
     }
     return out;

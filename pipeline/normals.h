@@ -32,7 +32,10 @@ struct Normals {
 
 class NormalsStage {
 public:
-    Normals run(const Scene& scene, const ViewTransform& view) const;
+    // threads: the triangles and vertices are shared out between them (parallel.h); each
+    // vertex still sums its triangles' normals in triangle order, so the result is the same
+    // bits for any number.
+    Normals run(const Scene& scene, const ViewTransform& view, int threads = 1) const;
 };
 
 }  // namespace rl

@@ -62,7 +62,8 @@ Result<FrameTrace> run(std::shared_ptr<const Scene> scenePtr, const RenderOption
             ViewTransformStage().run(scene, *trace.cameraBasis));
     });
     timed(StageId::Normals, [&] {
-        trace.normals = std::make_shared<const Normals>(NormalsStage().run(scene, *trace.view));
+        trace.normals =
+            std::make_shared<const Normals>(NormalsStage().run(scene, *trace.view, threads));
     });
     timed(StageId::Projection, [&] {
         trace.projection = std::make_shared<const Projection>(

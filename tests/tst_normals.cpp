@@ -2,6 +2,7 @@
 // degenerate triangles counted and left out.
 #include <QtTest>
 
+#include "benchmark_scenes.h"
 #include "camera_basis.h"
 #include "normals.h"
 #include "test_support.h"
@@ -102,6 +103,32 @@ private slots:
         const Normals normals = normalsOf(scene);
         for (const vec3& n : normals.draws[0].vertex) RL_COMPARE_NEAR(glm::length(n), 1.0, 1e-6);
         for (const vec3& n : normals.draws[0].triangle) RL_COMPARE_NEAR(glm::length(n), 1.0, 1e-6);
+    }
+
+    void sameBitsOnAnyNumberOfThreads() {
+        // The 100k-triangle torus with one triangle made degenerate (two equal corners) and
+        // one vertex used by nothing: 1, 2, 3 and 7 threads give the same normals, bit for
+        // bit, and the same counts.
+        auto scene = makeBenchmarkScene("torus-100k", 64, 48, ShadingModel::Phong);
+        QVERIFY(scene);
+        auto mesh = std::make_shared<Mesh>(*scene->draws[0].mesh);
+        mesh->triangles[5000][1] = mesh->triangles[5000][0];
+        mesh->positions.push_back(dvec4(0.0, 0.0, 0.0, 1.0));
+        scene->draws[0].mesh = mesh;
+        Diagnostics diagnostics;
+        auto basis = CameraBasisStage().run(*scene, diagnostics);
+        const ViewTransform view = ViewTransformStage().run(*scene, basis.value());
+        const Normals one = NormalsStage().run(*scene, view, 1);
+        QCOMPARE(one.draws[0].degenerateTriangles, std::size_t(1));
+        QVERIFY(one.draws[0].verticesWithoutNormal >= 1);
+        for (int threads : {2, 3, 7}) {
+            const Normals many = NormalsStage().run(*scene, view, threads);
+            QVERIFY(many.draws[0].triangle == one.draws[0].triangle);
+            QVERIFY(many.draws[0].vertex == one.draws[0].vertex);
+            QCOMPARE(many.draws[0].degenerateTriangles, one.draws[0].degenerateTriangles);
+            QCOMPARE(many.draws[0].verticesWithoutNormal, one.draws[0].verticesWithoutNormal);
+            QCOMPARE(many.degenerateTriangles, one.degenerateTriangles);
+        }
     }
 
     void unlitSceneSkips() {
