@@ -115,10 +115,6 @@ QLatin1Char componentLetter(SceneDocument::Field field, int component) {
     return QLatin1Char((isColour(field) ? "rgb" : "xyz")[component]);
 }
 
-bool isLightField(SceneDocument::Field field) {
-    return SceneDocument::isLightField(field);
-}
-
 // The value the document will hold: the lighting's colours and coefficients are floats.
 SceneDocument::Numbers storedAs(SceneDocument::Field field, SceneDocument::Numbers numbers) {
     const auto part = SceneDocument::partOf(field);
@@ -394,7 +390,7 @@ QCheckBox* EditPanel::checkBox(Field field) const {
 }
 
 void EditPanel::onCheckToggled(Field field, bool checked) {
-    const std::size_t light = isLightField(field) ? currentLight() : 0;
+    const std::size_t light = SceneDocument::isLightField(field) ? currentLight() : 0;
     const SceneDocument::Numbers before = m_document->value(field, light);
     SceneDocument::Numbers after = before;
     if (field == Field::LightSpotCutoff)
@@ -408,8 +404,9 @@ void EditPanel::onCheckToggled(Field field, bool checked) {
 void EditPanel::showChecks(bool lightOnly) {
     const std::size_t light = currentLight();
     for (const auto& [field, check] : m_checks) {
-        if (lightOnly && !isLightField(field)) continue;
-        const double v = m_document->value(field, isLightField(field) ? light : 0)[0];
+        if (lightOnly && !SceneDocument::isLightField(field)) continue;
+        const double v =
+            m_document->value(field, SceneDocument::isLightField(field) ? light : 0)[0];
         const QSignalBlocker blocker(check);
         check->setChecked(field == Field::LightSpotCutoff ? v != 180.0 : v != 0.0);
     }
@@ -429,25 +426,26 @@ void EditPanel::showChecks(bool lightOnly) {
 
 void EditPanel::addLight() {
     const auto& lights = m_document->parts().lighting.lights;
-    if (!isEditable() || lights.empty() || lights.size() >= 8) return;
-    const rl::Light copy = lights[std::min(currentLight(), lights.size() - 1)];
+    if (!isEditable() || lights.empty() || lights.size() >= rl::kMaxKeyValueLights) return;
     const std::size_t index = lights.size();
-    ++m_session;
-    m_stack->push(new LightListEdit(
-        true, index, copy,
-        [this](bool insert, std::size_t i, const rl::Light& l) { applyLightList(insert, i, l); },
-        tr("Add light %1").arg(index + 1)));
+    pushLightList(true, index, lights[std::min(currentLight(), index - 1)],
+                  tr("Add light %1").arg(index + 1));
 }
 
 void EditPanel::removeLight() {
     const auto& lights = m_document->parts().lighting.lights;
     const std::size_t index = currentLight();
     if (!isEditable() || lights.size() < 2 || index >= lights.size()) return;
+    pushLightList(false, index, lights[index], tr("Remove light %1").arg(index + 1));
+}
+
+void EditPanel::pushLightList(bool adding, std::size_t index, const rl::Light& light,
+                              const QString& text) {
     ++m_session;
     m_stack->push(new LightListEdit(
-        false, index, lights[index],
+        adding, index, light,
         [this](bool insert, std::size_t i, const rl::Light& l) { applyLightList(insert, i, l); },
-        tr("Remove light %1").arg(index + 1)));
+        text));
 }
 
 void EditPanel::applyLightList(bool insert, std::size_t index, const rl::Light& light) {
@@ -529,10 +527,10 @@ void EditPanel::refresh() {
             m_lightSelector->addItem(tr("Light %1 of %2").arg(k + 1).arg(lights));
         m_lightSelector->setCurrentIndex(int(shown));
     }
-    m_addLight->setEnabled(lights > 0 && lights < 8);
+    m_addLight->setEnabled(lights > 0 && lights < rl::kMaxKeyValueLights);
     m_removeLight->setEnabled(lights > 1);
     for (const Box& b : m_boxes) {
-        b.box->setEnabled(!isLightField(b.field) || lights > 0);
+        b.box->setEnabled(!SceneDocument::isLightField(b.field) || lights > 0);
         showBox(b);
     }
     showChecks(false);
@@ -556,7 +554,7 @@ void EditPanel::showShading() {
 
 void EditPanel::showLight() {
     for (const Box& b : m_boxes)
-        if (isLightField(b.field)) showBox(b);
+        if (SceneDocument::isLightField(b.field)) showBox(b);
     showChecks(true);
 }
 
@@ -571,7 +569,7 @@ void EditPanel::showField(Field field) {
 }
 
 void EditPanel::onBoxChanged(Field field, int component, double value) {
-    const std::size_t light = isLightField(field) ? currentLight() : 0;
+    const std::size_t light = SceneDocument::isLightField(field) ? currentLight() : 0;
     const SceneDocument::Numbers before = m_document->value(field, light);
     SceneDocument::Numbers after = before;
     int source = component;
@@ -615,7 +613,7 @@ void EditPanel::apply(Field field, std::size_t light, const SceneDocument::Numbe
     // An undo or redo ends the merging: the next edit is a step of its own.
     if (!m_pushing) ++m_session;
     m_document->setValue(field, value, light);
-    if (isLightField(field) && light != currentLight()) {
+    if (SceneDocument::isLightField(field) && light != currentLight()) {
         const QSignalBlocker blocker(m_lightSelector);
         m_lightSelector->setCurrentIndex(int(light));
         showLight();
@@ -729,7 +727,7 @@ QString EditPanel::fieldName(Field field, int source, std::size_t light) const {
         name += QLatin1Char('.');
         name += componentLetter(field, source);
     }
-    if (isLightField(field) && m_document->parts().lighting.lights.size() > 1)
+    if (SceneDocument::isLightField(field) && m_document->parts().lighting.lights.size() > 1)
         name = tr("%1 of light %2").arg(name).arg(light + 1);
     return name;
 }

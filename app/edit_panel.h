@@ -121,6 +121,8 @@ private:
     void addCheck(QGridLayout* grid, int row, Field field, const QString& text, const QString& tip);
     void onCheckToggled(Field field, bool checked);
     void showChecks(bool lightOnly);
+    // One undo step adding or removing `light` at `index`.
+    void pushLightList(bool adding, std::size_t index, const rl::Light& light, const QString& text);
     void applyLightList(bool insert, std::size_t index, const rl::Light& light);
     void createActions();
     void onBoxChanged(Field field, int component, double value);

@@ -283,6 +283,7 @@ SceneDocument::Numbers SceneDocument::value(Field field, std::size_t light) cons
     const rl::CourseCamera& c = m_parts.camera;
     const rl::CourseLighting& l = m_parts.lighting;
     const rl::Material& m = l.material;
+    const rl::Light* lit = light < l.lights.size() ? &l.lights[light] : nullptr;  // or none
     switch (field) {
         case Field::C:
             return numbersOf(c.c);
@@ -297,21 +298,19 @@ SceneDocument::Numbers SceneDocument::value(Field field, std::size_t light) cons
         case Field::Hy:
             return scalarNumbers(c.hy);
         case Field::LightPosition:
-            return light < l.lights.size() ? numbersOf(l.lights[light].pWorld) : Numbers{};
+            return lit ? numbersOf(lit->pWorld) : Numbers{};
         case Field::LightIntensity:
-            return light < l.lights.size() ? numbersOf(l.lights[light].intensity) : Numbers{};
+            return lit ? numbersOf(lit->intensity) : Numbers{};
         case Field::LightDirectional:
-            return light < l.lights.size() ? scalarNumbers(l.lights[light].pWorld.w == 0.0 ? 1 : 0)
-                                           : Numbers{};
+            return lit ? scalarNumbers(lit->pWorld.w == 0.0 ? 1 : 0) : Numbers{};
         case Field::LightAttenuation:
-            return light < l.lights.size() ? numbersOf(l.lights[light].attenuation) : Numbers{};
+            return lit ? numbersOf(lit->attenuation) : Numbers{};
         case Field::LightSpotDirection:
-            return light < l.lights.size() ? numbersOf(l.lights[light].spotDirection) : Numbers{};
+            return lit ? numbersOf(lit->spotDirection) : Numbers{};
         case Field::LightSpotCutoff:
-            return light < l.lights.size() ? scalarNumbers(l.lights[light].spotCutoff) : Numbers{};
+            return lit ? scalarNumbers(lit->spotCutoff) : Numbers{};
         case Field::LightSpotExponent:
-            return light < l.lights.size() ? scalarNumbers(l.lights[light].spotExponent)
-                                           : Numbers{};
+            return lit ? scalarNumbers(lit->spotExponent) : Numbers{};
         case Field::Emission:
             return numbersOf(m.emission);
         case Field::TwoSided:
@@ -340,6 +339,7 @@ void SceneDocument::setValue(Field field, const Numbers& value, std::size_t ligh
     rl::CourseCamera& c = m_parts.camera;
     rl::CourseLighting& l = m_parts.lighting;
     rl::Material& m = l.material;
+    rl::Light* lit = light < l.lights.size() ? &l.lights[light] : nullptr;  // or none
     switch (field) {
         case Field::C:
             c.c = dvec3Of(value);
@@ -361,26 +361,25 @@ void SceneDocument::setValue(Field field, const Numbers& value, std::size_t ligh
             break;
         case Field::LightPosition:
             // w stays: a directional light's Pl is its direction.
-            if (light < l.lights.size())
-                l.lights[light].pWorld = rl::dvec4(dvec3Of(value), l.lights[light].pWorld.w);
+            if (lit) lit->pWorld = rl::dvec4(dvec3Of(value), lit->pWorld.w);
             break;
         case Field::LightIntensity:
-            if (light < l.lights.size()) l.lights[light].intensity = vec3Of(value);
+            if (lit) lit->intensity = vec3Of(value);
             break;
         case Field::LightDirectional:
-            if (light < l.lights.size()) l.lights[light].pWorld.w = value[0] != 0.0 ? 0.0 : 1.0;
+            if (lit) lit->pWorld.w = value[0] != 0.0 ? 0.0 : 1.0;
             break;
         case Field::LightAttenuation:
-            if (light < l.lights.size()) l.lights[light].attenuation = vec3Of(value);
+            if (lit) lit->attenuation = vec3Of(value);
             break;
         case Field::LightSpotDirection:
-            if (light < l.lights.size()) l.lights[light].spotDirection = dvec3Of(value);
+            if (lit) lit->spotDirection = dvec3Of(value);
             break;
         case Field::LightSpotCutoff:
-            if (light < l.lights.size()) l.lights[light].spotCutoff = float(value[0]);
+            if (lit) lit->spotCutoff = float(value[0]);
             break;
         case Field::LightSpotExponent:
-            if (light < l.lights.size()) l.lights[light].spotExponent = float(value[0]);
+            if (lit) lit->spotExponent = float(value[0]);
             break;
         case Field::Emission:
             m.emission = vec3Of(value);

@@ -937,8 +937,7 @@ struct KeySpec {
     bool perLight = false;  // one per light: "Pl" (or "Pl1") for the first, "Pl2" ...
 };
 
-// Lights a key = value lighting file can hold: Pl, Pl2 ... Pl8 (OpenGL's minimum, seed 003).
-constexpr int kMaxKeyLights = 8;
+constexpr int kMaxKeyLights = static_cast<int>(kMaxKeyValueLights);
 
 constexpr KeySpec kCameraKeys[] = {
     {"C", "the camera position", kThree},
@@ -1013,6 +1012,11 @@ std::optional<KeyMatch> findKey(const KeySpec (&keys)[N], std::string_view key) 
             return KeyMatch{i, key[base] - '1'};
     }
     return std::nullopt;
+}
+
+// A key as written for a light (0 the first): "Pl", "Pl2" ...
+std::string keyName(const KeySpec& key, int light) {
+    return std::string(key.key) + (light > 0 ? std::to_string(light + 1) : std::string());
 }
 
 // The keys every file has, "C, N, V, d, hx and hy".
@@ -1108,8 +1112,7 @@ Result<std::vector<FieldValue>> readKeyValues(std::string_view text, const std::
         }
         const KeySpec& key = keys[match->index];
         const std::size_t slot = match->index + N * static_cast<std::size_t>(match->light);
-        const std::string name =
-            std::string(key.key) + (match->light > 0 ? std::to_string(match->light + 1) : "");
+        const std::string name = keyName(key, match->light);
         if (givenOn[slot] != 0)
             return makeError(ErrorCode::Syntax, keyAt,
                              "expected each key once, found " + name +
@@ -1251,10 +1254,7 @@ Result<CourseLighting> keyValueLighting(const std::vector<FieldValue>& v,
         return v[key + N * static_cast<std::size_t>(light)];
     };
     const auto given = [&](std::size_t key, int light) { return !at(key, light).values.empty(); };
-    const auto name = [](std::size_t key, int light) {
-        return std::string(kLightingKeys[key].key) +
-               (light > 0 ? std::to_string(light + 1) : std::string());
-    };
+    const auto name = [](std::size_t key, int light) { return keyName(kLightingKeys[key], light); };
     LightingFields parts;
     parts.ia = &v[kIamb];
     parts.ka = &v[kKa];

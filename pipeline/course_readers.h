@@ -128,6 +128,9 @@ std::optional<LightingLayout> lightingLayoutFromName(std::string_view name);
 const char* cameraLayoutDescription(CameraLayout layout);
 const char* lightingLayoutDescription(LightingLayout layout);
 
+// The lights a key = value lighting file holds: Pl, Pl2 ... Pl8 (OpenGL's minimum, seed 003).
+inline constexpr std::size_t kMaxKeyValueLights = 8;
+
 // A key of key = value lighting files, in any case: Iamb, Ka, Il, Pl, Kd, Od, Ks, eta, the
 // lecture slides' Ke, two_sided, blinn, atten, spot_dir, spot_cutoff, spot_exp, and the
 // per-light ones numbered for lights 1 to 8 (Pl2, atten3 ...).

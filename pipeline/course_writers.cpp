@@ -199,7 +199,7 @@ Result<std::string> writeLightingFile(const CourseLighting& lighting, LightingLa
         return writeError(ErrorCode::Unsupported,
                           "cannot write lighting without lights: the UFPE multi-light and key = "
                           "value layouts hold one light or more");
-    if (keyValue && count > 8)
+    if (keyValue && count > kMaxKeyValueLights)
         return writeError(ErrorCode::Unsupported,
                           "cannot write " + std::to_string(count) +
                               " lights in a key = value file, which holds 8 at most (Pl to Pl8)");

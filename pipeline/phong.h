@@ -77,7 +77,7 @@ inline bool orientNormal(PhongSample& s, const vec3& pView, const vec3& nView, b
 }
 
 // What one light gives a point under the course's model: the pixel inspector's breakdown
-// per light and per term (phongPerLight), from the very code the render runs.
+// per light and per term (phong's perLight), from the very code the render runs.
 struct LightTerms {
     vec3 diffuse = vec3(0.0f);   // factor Il Od kd (N.L)
     vec3 specular = vec3(0.0f);  // factor Il ks (R.V)^n, or (N.H)^n
@@ -95,11 +95,19 @@ struct LightTerms {
     bool outsideCone = false;  // beyond the spot's cutoff: no light from it
 };
 
-// The factor a light's diffuse and specular terms are multiplied by at pView, l the unit
-// vector toward it: attenuation with distance (positional lights) times the spot's.
-inline float lightFactor(const ViewLight& light, const vec3& pView, const vec3& l,
-                         LightTerms* terms) {
-    float factor = 1.0f;
+// The factor a light's diffuse and specular terms are multiplied by at a point: attenuation
+// with distance (positional lights) times the spot's, and whether the point is outside the
+// spot's cone.
+struct LightFactor {
+    float value = 1.0f;
+    bool outsideCone = false;
+};
+
+// The factor at pView, l the unit vector toward the light; terms, when given, receives its
+// parts (distance, attenuation, the spot's cosine and factor).
+inline LightFactor lightFactor(const ViewLight& light, const vec3& pView, const vec3& l,
+                               LightTerms* terms) {
+    LightFactor f;
     if (light.attenuated) {
         const float d = glm::length(vec3(light.pView) - pView);
         const vec3& k = light.attenuation;
@@ -107,7 +115,7 @@ inline float lightFactor(const ViewLight& light, const vec3& pView, const vec3& 
         // kc + kl d + kq d^2 <= 0 (coefficients outside OpenGL's range) would divide by zero
         // or make light negative: the light is left out there instead.
         const float attenuation = denominator > 0.0f ? 1.0f / denominator : 0.0f;
-        factor *= attenuation;
+        f.value *= attenuation;
         if (terms) {
             terms->distance = d;
             terms->attenuation = attenuation;
@@ -117,21 +125,20 @@ inline float lightFactor(const ViewLight& light, const vec3& pView, const vec3& 
     }
     if (light.spot) {
         const float spotCos = -glm::dot(l, light.spotDirection);
-        float spot = 0.0f;
-        if (spotCos >= light.spotCosCutoff) {
-            // 0^0 = 1: on the cone's edge at 90 degrees with exponent 0 the light is whole.
-            spot = light.spotExponent == 0.0f
-                       ? 1.0f
-                       : std::pow(std::max(spotCos, 0.0f), light.spotExponent);
-        }
-        factor *= spot;
+        f.outsideCone = spotCos < light.spotCosCutoff;
+        // 0^0 = 1: on the cone's edge at 90 degrees with exponent 0 the light is whole.
+        const float spot = !(spotCos >= light.spotCosCutoff) ? 0.0f
+                           : light.spotExponent == 0.0f
+                               ? 1.0f
+                               : std::pow(std::max(spotCos, 0.0f), light.spotExponent);
+        f.value *= spot;
         if (terms) {
             terms->spotCos = spotCos;
             terms->spot = spot;
-            terms->outsideCone = spotCos < light.spotCosCutoff;
+            terms->outsideCone = f.outsideCone;
         }
     }
-    return factor;
+    return f;
 }
 
 // One light's terms of the course's model, added to sample; the first light's vectors are
@@ -149,7 +156,7 @@ inline void addLight(const Material& m, const vec3& od, const ViewLight& light, 
     // The course's own lights (not attenuated, not spots) keep the expressions below
     // unchanged, so their colours are the same bits as the many-pixel kernel's.
     const bool plain = light.plain();
-    const float factor = plain ? 1.0f : lightFactor(light, pView, l, terms);
+    const LightFactor f = plain ? LightFactor{} : lightFactor(light, pView, l, terms);
     const vec3& nUnit = sample.n;
     const float nDotL = glm::dot(nUnit, l);
     vec3 r(0.0f);
@@ -157,7 +164,8 @@ inline void addLight(const Material& m, const vec3& od, const ViewLight& light, 
     vec3 diffuse(0.0f), specular(0.0f);
     if (nDotL >= 0.0f) {
         if (specularModel == SpecularModel::BlinnPhong) {
-            // H = (L + V)/|L + V|; zero when the light is straight behind the viewer's line.
+            // H = (L + V) times 1/|L + V|, normalised the course's way (not lambert()'s
+            // division); zero when the light is straight behind the viewer's line.
             const vec3 sum = l + sample.v;
             const float length = glm::length(sum);
             if (length > 0.0f) r = sum * (1.0f / length);
@@ -167,7 +175,7 @@ inline void addLight(const Material& m, const vec3& od, const ViewLight& light, 
             r = 2.0f * nDotL * nUnit - l;
             rDotV = glm::dot(r, sample.v);
         }
-        const vec3 il = plain ? light.intensity : light.intensity * factor;
+        const vec3 il = plain ? light.intensity : light.intensity * f.value;
         diffuse = il * od * m.kd * nDotL;
         if (rDotV >= 0.0f && m.ks != 0.0f) {
             // (R.V)^n (fast_pow.h), with 0^0 = 1 as in C's pow. A negative n (outside the
@@ -186,7 +194,7 @@ inline void addLight(const Material& m, const vec3& od, const ViewLight& light, 
         sample.rDotV = rDotV;
         sample.lightBehind = nDotL < 0.0f;
         sample.noSpecular = nDotL >= 0.0f && rDotV < 0.0f;
-        sample.outsideCone = !plain && light.spot && factor == 0.0f && !(nDotL < 0.0f);
+        sample.outsideCone = f.outsideCone && !(nDotL < 0.0f);
     }
     if (terms) {
         terms->diffuse = diffuse;

@@ -63,8 +63,8 @@ struct ShadeEvent {
     std::uint32_t triangle = 0;
     int x = 0, y = 0;
     ShadingModel model = ShadingModel::Phong;
-    vec3 pView = vec3(0.0f);  // P' (Phong), the barycentre (flat)
-    vec3 nInterpolated = vec3(0.0f);
+    vec3 pView = vec3(0.0f);              // P' (Phong), the barycentre (flat, painter)
+    vec3 nInterpolated = vec3(0.0f);      // interpolated (Phong), the triangle's (flat, painter)
     PhongSample sample;                   // Phong: at P'; flat: at the barycentre
     std::array<vec3, 3> vertexColours{};  // Gouraud: the colours being interpolated
     vec3 colour = vec3(0.0f);             // before clamping

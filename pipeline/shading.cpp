@@ -157,8 +157,9 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
     };
 
     // Seed 004: one evaluation at the barycentre of the (unclipped) triangle, with the
-    // triangle's normal.
-    auto flatSample = [&](const ScreenTriangle& tri) {
+    // triangle's normal; the point and normal lit are given back when asked (a probe's).
+    auto flatSample = [&](const ScreenTriangle& tri, vec3* point = nullptr,
+                          vec3* normal = nullptr) {
         const Draw& draw = scene.draws[tri.draw];
         const auto& corners = draw.mesh->triangles[tri.source];
         const DrawVertices& dv = vertices[tri.draw];
@@ -167,6 +168,8 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
         const vec3 barycentre =
             dv.pView.empty() ? vec3(0.0f) : interpolate(dv.pView, whole.v, third, third);
         const vec3 n = normals.skipped ? vec3(0.0f) : normals.draws[tri.draw].triangle[tri.source];
+        if (point) *point = barycentre;
+        if (normal) *normal = n;
         return light(draw, colourAt(draw, dv, whole, third, third), barycentre, n);
     };
 
@@ -443,7 +446,8 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                         case ShadingModel::Painter: {
                             colour = table.flatColour[tri.source];
                             usedNormal = table.flatNormal[tri.source];
-                            RL_PROBE_HOOK(event.sample = flatSample(tri));
+                            RL_PROBE_HOOK(event.sample =
+                                              flatSample(tri, &event.pView, &event.nInterpolated));
                             break;
                         }
                         case ShadingModel::Gouraud: {

@@ -798,39 +798,28 @@ void PixelInspector::updateBreakdown() {
             flag(LightingFlag::NoSpecular,
                  tr("R.V < 0: the reflected ray points away from the viewer; no specular."));
     }
-    // The course's model light by light: the same call as the shading stage's, at the same
-    // point (P' for Phong; for flat, the barycentre of the whole triangle with its normal).
+    // The course's model light by light: the same call as the shading stage's, at the point
+    // and with the normal it lit (the event's: P' for Phong, the barycentre for flat).
     if (lit && draw.lighting == rl::LightingModel::CoursePhong && frame->view) {
         b.emission = s.emission;
-        rl::vec3 pView = event->pView, nView = event->nInterpolated;
-        if (model == rl::ShadingModel::Flat) {
-            const auto& corners = mesh.triangles[tri.source];
-            std::array<rl::vec3, 3> p;
-            for (std::size_t k = 0; k < 3; ++k)
-                p[k] = rl::vec3(rl::cartesian(proj.pView[corners[k]]));
-            const float third = 1.0f / 3.0f;
-            pView = p[0] + third * (p[1] - p[0]) + third * (p[2] - p[0]);
-            nView = frame->normals && !frame->normals->skipped
-                        ? frame->normals->draws[tri.draw].triangle[tri.source]
-                        : rl::vec3(0.0f);
-        }
         b.perLight.resize(b.lights);
         if (b.lights > 0)
             rl::phong(m, b.objectColour, scene.ambientIntensity, frame->view->lights.data(),
-                      b.lights, pView, nView, conv.flipNormalsTowardViewer, draw.specular,
-                      b.perLight.data());
+                      b.lights, event->pView, event->nInterpolated, conv.flipNormalsTowardViewer,
+                      draw.specular, b.perLight.data());
         b.slides = m.emission != rl::vec3(0.0f) || draw.specular != rl::SpecularModel::Phong;
-        for (std::size_t k = 0; k < b.lights; ++k)
-            b.slides = b.slides || !frame->view->lights[k].plain() ||
-                       frame->view->lights[k].pView.w == 0.0;
-        for (std::size_t k = 0; k < b.lights; ++k)
-            if (b.perLight[k].outsideCone && !b.perLight[k].behind)
+        for (std::size_t k = 0; k < b.lights; ++k) {
+            const rl::ViewLight& light = frame->view->lights[k];
+            b.slides = b.slides || !light.plain() || light.pView.w == 0.0;
+            const rl::LightTerms& t = b.perLight[k];
+            if (t.outsideCone && !t.behind)
                 flag(LightingFlag::OutsideCone,
                      tr("Outside the cone of light %1: −L.D = %2 is below cos %3° = %4; it adds "
                         "nothing here.")
                          .arg(k + 1)
-                         .arg(num(b.perLight[k].spotCos, 4), num(scene.lights[k].spotCutoff),
-                              num(frame->view->lights[k].spotCosCutoff, 4)));
+                         .arg(num(t.spotCos, 4), num(scene.lights[k].spotCutoff),
+                              num(light.spotCosCutoff, 4)));
+        }
         if (!conv.flipNormalsTowardViewer && !s.noNormal && glm::dot(s.n, s.v) < 0.0f)
             flag(LightingFlag::OneSided,
                  tr("One-sided lighting: the back of the surface is seen (V.N < 0) and N is not "
@@ -1124,6 +1113,8 @@ void PixelInspector::showBreakdown() {
     if (row.kind == PixelHistoryRow::Kind::Fragment && row.verdict != rl::FragmentVerdict::Written)
         title += QStringLiteral(" ") + tr("(rejected: this colour was never written)");
     m_breakdownTitle->setText(title);
+    const rl::FrameTrace& frame = *m_inspection->frame();
+    const rl::Draw& draw = frame.scene->draws[frame.projection->triangles[b.event.triangle].draw];
     std::vector<TermBars::Segment> segments;
     if (b.event.model == rl::ShadingModel::Gouraud) {
         const std::array<QColor, 3> colours{QColor(200, 120, 80), QColor(120, 180, 90),
@@ -1151,17 +1142,12 @@ void PixelInspector::showBreakdown() {
             }
         } else {
             segments.push_back({tr("diffuse"), QColor(70, 150, 220), b.diffuse});
-            const rl::Draw& draw =
-                m_inspection->frame()
-                    ->scene
-                    ->draws[m_inspection->frame()->projection->triangles[b.event.triangle].draw];
-            if (b.perLight.size() <= 1 &&
-                (b.lighting == rl::LightingModel::CoursePhong || draw.material.shininess > 0.0f))
+            if (b.lighting == rl::LightingModel::CoursePhong || draw.material.shininess > 0.0f)
                 segments.push_back({tr("specular"), QColor(235, 235, 190), b.specular});
         }
     }
-    m_bars->setBars(std::move(segments), b.colour,
-                    m_inspection->frame()->scene->conventions.colourScale, m_presenting);
+    m_bars->setBars(std::move(segments), b.colour, frame.scene->conventions.colourScale,
+                    m_presenting);
     m_bars->setVisible(true);
     const bool vectors =
         b.event.model != rl::ShadingModel::Gouraud && b.lighting != rl::LightingModel::Unlit;
@@ -1169,9 +1155,6 @@ void PixelInspector::showBreakdown() {
         const rl::PhongSample& s = b.event.sample;
         // R, or the half vector H under Blinn-Phong (the command files' model, or the course's
         // with the slides' option).
-        const rl::Draw& draw =
-            m_inspection->frame()
-                ->scene->draws[m_inspection->frame()->projection->triangles[b.event.triangle].draw];
         const bool half = b.lighting != rl::LightingModel::CoursePhong ||
                           draw.specular == rl::SpecularModel::BlinnPhong;
         m_vectors->setVectors(std::array<rl::vec3, 4>{s.n, s.l, s.v, s.r},
