@@ -40,15 +40,12 @@ int stepIndex(NearClipStep s) {
 
 }  // namespace
 
-// Sutherland-Hodgman against the rectangle's four sides.
+// Sutherland-Hodgman against the rectangle's four sides, one after the other, with the
+// projection stage's walk (projection.h).
 QPolygonF clipPolygonToRect(QPolygonF polygon, const QRectF& r) {
     const auto side = [&](auto inside, auto cross) {
         QPolygonF out;
-        for (qsizetype k = 0; k < polygon.size(); ++k) {
-            const QPointF a = polygon[k], b = polygon[(k + 1) % polygon.size()];
-            if (inside(a)) out << a;
-            if (inside(a) != inside(b)) out << cross(a, b);
-        }
+        rl::clipPolygonAgainstPlane(polygon, out, inside, cross);
         polygon = out;
     };
     const auto atX = [](const QPointF& a, const QPointF& b, double x) {
@@ -388,7 +385,6 @@ void NearClipCanvas::paintScreen(QPainter& painter, const QRectF& area) {
     const rl::Scene& scene = *m_frame->scene;
     const rl::Projection& projection = *m_frame->projection;
     const rl::DrawProjection& proj = projection.draws[m.draw];
-    // The image and a margin of a quarter of it around: what reaches beyond is cut there.
     // The image and a margin of a quarter of it around (what reaches beyond is cut there),
     // zoomed to the triangles when they are small in it.
     const QRectF image(0, 0, scene.width, scene.height);
