@@ -337,7 +337,7 @@ private slots:
         QCOMPARE(lower.firstRow, 4);
         QCOMPARE(lower.lastRow, 8);
 
-        const TrapezoidRow row2 = trapezoidRow(upper, rules, 2, 10);
+        const TrapezoidRow row2 = trapezoidRow(s, upper, rules, 2, 10);
         QCOMPARE(row2.tj, 0.5);
         QCOMPARE(row2.left.p, dvec2(1.5, 2));
         QCOMPARE(row2.left.pz, 3.0);
@@ -355,7 +355,7 @@ private slots:
         QVERIFY(std::abs(pixel.colour.g - 54.64286f) < 1e-3f);
         QVERIFY(std::abs(pixel.colour.b - 36.42857f) < 1e-3f);
 
-        const TrapezoidRow row6 = trapezoidRow(lower, rules, 6, 10);
+        const TrapezoidRow row6 = trapezoidRow(s, lower, rules, 6, 10);
         QCOMPARE(row6.tj, 0.5);
         QCOMPARE(row6.left.p, dvec2(0.5, 6));
         QCOMPARE(row6.left.pz, 5.0);
@@ -366,23 +366,24 @@ private slots:
         QCOMPARE(row6.xEnd, 5);
         // Row 4, the middle row (t_j = 0): from M' to the middle vertex, pixels 1..8; row 8,
         // the bottom vertex alone.
-        QCOMPARE(trapezoidRow(lower, rules, 4, 10).xBegin, 1);
-        QCOMPARE(trapezoidRow(lower, rules, 4, 10).xEnd, 9);
-        QCOMPARE(trapezoidRow(lower, rules, 8, 10).xBegin, 0);
-        QCOMPARE(trapezoidRow(lower, rules, 8, 10).xEnd, 1);
+        QCOMPARE(trapezoidRow(s, lower, rules, 4, 10).xBegin, 1);
+        QCOMPARE(trapezoidRow(s, lower, rules, 4, 10).xEnd, 9);
+        QCOMPARE(trapezoidRow(s, lower, rules, 8, 10).xBegin, 0);
+        QCOMPARE(trapezoidRow(s, lower, rules, 8, 10).xEnd, 1);
 
         // The same triangle under the gpu rules (samples at +0.5, top-left): rows sampled
         // at 0.5 .. 3.5 are the upper's (0..3), 4.5 .. 7.5 the lower's (4..7): the bottom
         // vertex's row 8 (sampled at 8.5) is below the triangle.
         const RasterRules gpu = RasterRules::gpu();
-        const TrapezoidSplit g = splitIntoTrapezoids(setupTriangle(p, gpu), values, gpu);
+        const TriangleSetup sGpu = setupTriangle(p, gpu);
+        const TrapezoidSplit g = splitIntoTrapezoids(sGpu, values, gpu);
         QCOMPARE(g.parts.size(), std::size_t(2));
         QCOMPARE(g.parts[0].lastRow, 3);
         QCOMPARE(g.parts[1].firstRow, 4);
         QCOMPARE(g.parts[1].lastRow, 7);
         // Row 2 sampled at 2.5: t_j = 2.5/4 = 0.625, L = 2 - 0.625 = 1.375, R = 2 + 0.625 * 6
         // = 5.75; samples 1.375 <= i + 0.5 < 5.75: i = 1..5.
-        const TrapezoidRow r = trapezoidRow(g.parts[0], gpu, 2, 10);
+        const TrapezoidRow r = trapezoidRow(sGpu, g.parts[0], gpu, 2, 10);
         QCOMPARE(r.tj, 0.625);
         QCOMPARE(r.left.p.x, 1.375);
         QCOMPARE(r.right.p.x, 5.75);
@@ -448,7 +449,7 @@ private slots:
             for (const Trapezoid& part : split.parts) {
                 for (std::int32_t j = std::max(part.firstRow, 0);
                      j <= std::min(part.lastRow, scene->height - 1); ++j) {
-                    const TrapezoidRow row = trapezoidRow(part, rules, j, scene->width);
+                    const TrapezoidRow row = trapezoidRow(s, part, rules, j, scene->width);
                     ++rows;
                     if (!row.empty()) spans.push_back({j, row.xBegin, row.xEnd});
                 }
@@ -464,7 +465,7 @@ private slots:
                 for (const Trapezoid& part : splitIntoTrapezoids(s, depths, rules).parts) {
                     for (std::int32_t j = std::max(part.firstRow, 0);
                          j <= std::min(part.lastRow, scene->height - 1); ++j) {
-                        const TrapezoidRow row = trapezoidRow(part, rules, j, scene->width);
+                        const TrapezoidRow row = trapezoidRow(s, part, rules, j, scene->width);
                         if (row.empty()) continue;
                         const double lerped = trapezoidPixel(row, rules, row.xBegin).pz;
                         const float depth =

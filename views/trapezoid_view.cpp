@@ -59,7 +59,7 @@ TrapezoidModel trapezoidModel(const rl::FrameTrace& frame, std::uint32_t triangl
         const rl::Trapezoid& part = m.split.parts[k];
         if (*y >= part.firstRow && *y <= part.lastRow) {
             m.part = k;
-            m.row = rl::trapezoidRow(part, scene.rules, *y, scene.width);
+            m.row = rl::trapezoidRow(m.setup, part, scene.rules, *y, scene.width);
         }
     }
     return m;
