@@ -25,6 +25,7 @@ using namespace rl;
 using rasterlab::Inspection;
 using rasterlab::NearClipView;
 using rasterlab::TrapezoidView;
+using testing::lookAt;
 
 namespace {
 
@@ -64,21 +65,6 @@ std::shared_ptr<const Scene> cameraInside(CourseSceneParts parts, RuleSet rules,
     return std::make_shared<const Scene>(makeCourseScene(parts, settings));
 }
 
-// Saves a widget's picture where RASTERLAB_VIEW_PICTURES says (to look at them), and checks
-// that it is not one flat colour.
-void lookAt(QWidget& widget, const QString& name) {
-    QCoreApplication::processEvents();
-    const QImage image = widget.grab().toImage();
-    QVERIFY(!image.isNull());
-    bool varied = false;
-    const QRgb first = image.pixel(0, 0);
-    for (int y = 0; y < image.height() && !varied; y += 3)
-        for (int x = 0; x < image.width() && !varied; x += 3) varied = image.pixel(x, y) != first;
-    QVERIFY2(varied, qPrintable(name));
-    const QString dir = qEnvironmentVariable("RASTERLAB_VIEW_PICTURES");
-    if (!dir.isEmpty()) image.save(dir + QLatin1Char('/') + name + QStringLiteral(".png"));
-}
-
 // The axis camera (view = (-x, y, z), d = hx = hy = 1) on a 64x64 image, the near plane
 // fixed at z = 1, and quadByHand's triangle: view A0 = (0, 0, 3), A1 = (2, 0, 3),
 // A2 = (0, 4, -3), so world (0, 0, 3), (-2, 0, 3), (0, 4, -3). On the screen, x = (x/z + 1)
@@ -99,6 +85,17 @@ std::shared_ptr<const Scene> trapezoidHandScene(ShadingModel shading) {
     return std::make_shared<const Scene>(testing::makeScene(
         testing::axisCamera(), testing::makeMesh({{1.5, 2, 2}, {0, 2, 4}, {6, 0, 6}}, {{0, 1, 2}}),
         16, 16, shading));
+}
+
+// The first entry of the near clip view's list after the first (the triangle selected) whose
+// mesh triangle (draw, source) is wanted, or -1.
+template <typename Wanted>
+int firstListed(const QComboBox& list, Wanted wanted) {
+    for (int k = 1; k < list.count(); ++k) {
+        const quint64 key = list.itemData(k).toULongLong();
+        if (wanted(std::uint32_t(key >> 32), std::uint32_t(key))) return k;
+    }
+    return -1;
 }
 
 CourseSceneParts trefoilParts() {
@@ -642,14 +639,11 @@ private slots:
                 n += replay->rows()[r].fragmentEnd - replay->rows()[r].fragmentBegin;
             return n;
         };
-        int quad = -1;
-        for (int k = 1; k < list->count() && quad < 0; ++k) {
-            const quint64 key = list->itemData(k).toULongLong();
-            const auto draw = std::uint32_t(key >> 32), source = std::uint32_t(key);
+        const int quad = firstListed(*list, [&](std::uint32_t draw, std::uint32_t source) {
             const NearClipRecord r = nearClipOf(*scene, *trace->projection, draw, source);
             const auto drawn = screenTrianglesOf(*trace->projection, draw, source);
-            if (r.polygon.size() == 4 && !drawn.empty() && fragmentsOf(drawn.front()) > 0) quad = k;
-        }
+            return r.polygon.size() == 4 && !drawn.empty() && fragmentsOf(drawn.front()) > 0;
+        });
         QVERIFY(quad > 0);
         list->setCurrentIndex(quad);
         emit list->activated(quad);
@@ -662,13 +656,9 @@ private slots:
         clip.setStep(rasterlab::kNearClipSteps - 1);
         lookAt(clip, QStringLiteral("near_clip_trefoil_all"));
         // A triangle wholly behind, chosen while another is selected: shown, nothing drawn.
-        int behind = -1;
-        for (int k = 1; k < list->count() && behind < 0; ++k) {
-            const quint64 key = list->itemData(k).toULongLong();
-            if (trace->projection->draws[key >> 32].fate[std::uint32_t(key)] ==
-                TriangleFate::Behind)
-                behind = k;
-        }
+        const int behind = firstListed(*list, [&](std::uint32_t draw, std::uint32_t source) {
+            return trace->projection->draws[draw].fate[source] == TriangleFate::Behind;
+        });
         QVERIFY(behind > 0);
         const auto selectedBefore = inspection.selectedTriangle();
         list->setCurrentIndex(behind);
