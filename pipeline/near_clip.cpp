@@ -23,6 +23,7 @@ NearClipRecord clipAgainstNearPlane(const std::array<dvec4, 3>& pView, const dma
     // minus near.
     std::array<double, 3> distance{};
     for (std::size_t k = 0; k < 3; ++k) distance[k] = (clipFromView * pView[k]).w - nearW;
+    std::array<NearClipPoint, 3> corners{};
     for (std::size_t k = 0; k < 3; ++k) {
         NearClipEdge& e = out.edges[k];
         e.a = k;
@@ -30,17 +31,21 @@ NearClipRecord clipAgainstNearPlane(const std::array<dvec4, 3>& pView, const dma
         e.distanceA = distance[e.a];
         e.distanceB = distance[e.b];
         e.keptA = e.distanceA >= 0.0;
-        const bool keptB = e.distanceB >= 0.0;
-        if (e.keptA) out.polygon.push_back({false, k, pView[k]});
-        e.crosses = e.keptA != keptB;
-        if (!e.crosses) continue;
-        e.t = (0.0 - e.distanceA) / (e.distanceB - e.distanceA);
-        // The stage's C: from the end in front, t' = d_in / (d_in - d_out).
-        const std::size_t in = e.keptA ? e.a : e.b, outside = e.keptA ? e.b : e.a;
-        e.tFromInside = distance[in] / (distance[in] - distance[outside]);
-        e.pView = glm::mix(pView[in], pView[outside], e.tFromInside);
-        out.polygon.push_back({true, k, e.pView});
+        e.crosses = e.keptA != (e.distanceB >= 0.0);
+        corners[k] = {false, k, pView[k]};
     }
+    // The stage's own walk (projection.h); each point made is recorded on its edge, the edge
+    // A-B named by A in the triangle's order.
+    clipPolygonAgainstPlane(
+        corners, out.polygon, [&](const NearClipPoint& p) { return distance[p.index] >= 0.0; },
+        [&](const NearClipPoint& in, const NearClipPoint& behind) {
+            NearClipEdge& e =
+                out.edges[(in.index + 1) % 3 == behind.index ? in.index : behind.index];
+            e.t = (0.0 - e.distanceA) / (e.distanceB - e.distanceA);
+            e.tFromInside = crossingFraction(distance[in.index], distance[behind.index]);
+            e.pView = glm::mix(in.pView, behind.pView, e.tFromInside);
+            return NearClipPoint{true, e.a, e.pView};
+        });
     for (std::size_t k = 1; k + 1 < out.polygon.size(); ++k) out.triangles.push_back({0, k, k + 1});
     return out;
 }

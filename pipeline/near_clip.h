@@ -11,11 +11,12 @@
 //       t = (0 - dot(P, A)) / (dot(P, B) - dot(P, A)), add C = lerp(t, A, B).
 //   A polygon of four vertices q0 q1 q2 q3 is split into the triangles q0 q1 q2, q0 q2 q3.
 //
-// The numbers are the projection stage's own: the same distances, and each C computed as
-// the stage computes it, from the end in front (t' = 1 - t when A is the end behind), so
-// that two triangles sharing an edge get the same point bit for bit. The polygon and its
-// fan are the stage's, as long as no clip plane of the draw cut the triangle first and the
-// guard band did not cut it after (tst_clip_trapezoid checks this on real scenes).
+// The numbers are the projection stage's own: the same distances, the stage's walk
+// (clipPolygonAgainstPlane, projection.h), and each C computed as the stage computes it, from
+// the end in front (t' = 1 - t when A is the end behind), so that two triangles sharing an
+// edge get the same point bit for bit. The polygon and its fan are the stage's, as long as
+// no clip plane of the draw cut the triangle first and the guard band did not cut it after
+// (tst_clip_trapezoid checks this on real scenes).
 #pragma once
 
 #include <array>

@@ -190,9 +190,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
         // computed from the inside vertex, so two triangles sharing the edge get the same
         // point, bit for bit.
         auto addClipVertex = [&](std::size_t plane, std::uint32_t a, std::uint32_t b) {
-            const double da = distance(plane, a);
-            const double db = distance(plane, b);
-            const double t = da / (da - db);
+            const double t = crossingFraction(distance(plane, a), distance(plane, b));
             const auto index = static_cast<std::uint32_t>(proj.pView.size());
             const dvec4 pView = glm::mix(proj.pView[a], proj.pView[b], t);
             dvec4 pClip = glm::mix(proj.pClip[a], proj.pClip[b], t);
@@ -350,16 +348,11 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             for (std::size_t plane : planes) {
                 if (polygon.size() < 3) break;
                 clipped.clear();
-                for (std::size_t k = 0; k < polygon.size(); ++k) {
-                    const std::uint32_t a = polygon[k];
-                    const std::uint32_t b = polygon[(k + 1) % polygon.size()];
-                    const bool aIn = distance(plane, a) >= 0.0;
-                    const bool bIn = distance(plane, b) >= 0.0;
-                    if (aIn) clipped.push_back(a);
-                    if (aIn != bIn)
-                        clipped.push_back(aIn ? addClipVertex(plane, a, b)
-                                              : addClipVertex(plane, b, a));
-                }
+                clipPolygonAgainstPlane(
+                    polygon, clipped, [&](std::uint32_t v) { return distance(plane, v) >= 0.0; },
+                    [&](std::uint32_t in, std::uint32_t outside) {
+                        return addClipVertex(plane, in, outside);
+                    });
                 polygon.swap(clipped);
             }
             proj.fate[t] = TriangleFate::Clipped;

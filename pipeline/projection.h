@@ -26,6 +26,7 @@
 
 #include <array>
 #include <cstdint>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,34 @@ struct Projection {
 inline dvec2 screenFromNdc(const dvec2& pNdc, double width, double height, bool ndcYUp) {
     const double yFromTop = ndcYUp ? 1.0 - pNdc.y : pNdc.y + 1.0;
     return {(pNdc.x + 1.0) * width / 2.0, yFromTop * height / 2.0};
+}
+
+// One plane of Sutherland-Hodgman clipping (step 2): walks the polygon's edges A-B in order,
+// B the vertex after A (the first after the last); adds A when inside(A), and where A and B
+// lie on different sides, the point crossing(in, out) made from the end inside and the end
+// outside (always from the inside end, so two polygons sharing the edge get the same point,
+// bit for bit). The output is appended to `out`, in order: the winding is kept. The
+// projection stage clips with it plane after plane; the near-plane recorder (near_clip.h)
+// and the views cutting polygons to a rectangle use it too.
+template <typename Polygon, typename Out, typename Inside, typename Crossing>
+void clipPolygonAgainstPlane(const Polygon& polygon, Out& out, Inside&& inside,
+                             Crossing&& crossing) {
+    const auto first = std::begin(polygon), last = std::end(polygon);
+    for (auto it = first; it != last; ++it) {
+        const auto next = std::next(it);
+        const auto& a = *it;
+        const auto& b = next == last ? *first : *next;
+        const bool aIn = inside(a);
+        const bool bIn = inside(b);
+        if (aIn) out.push_back(a);
+        if (aIn != bIn) out.push_back(aIn ? crossing(a, b) : crossing(b, a));
+    }
+}
+
+// Where an edge from a point inside a plane (signed distance dIn >= 0) to one outside it
+// (dOut < 0) crosses it, as the fraction of the way from the inside end.
+inline double crossingFraction(double dIn, double dOut) {
+    return dIn / (dIn - dOut);
 }
 
 // Snapped screen coordinates are kept within +-kGuardBand pixels.

@@ -6,18 +6,21 @@
 //   for the pixels i from L_i to R_i: t_i = (i - L_i) / (R_i - L_i), (r, g, b, pz) =
 //   lerp(t_i, L, R).
 // It is the same scan as the edge walk of scan_conversion.h, row for row and pixel for
-// pixel (tst_clip_trapezoid checks it on real scenes under the course and the gpu rules):
+// pixel, because its rows and pixels are the walk's own (tst_clip_trapezoid checks it on
+// real scenes under the course and the gpu rules):
 // - a row is sampled at j + offset (the rules' sample offset; 0 for the course), so t_j
 //   and t_i use j + offset and i + offset;
-// - the row through the middle vertex belongs to the lower trapezoid only, so no row of a
-//   triangle is scanned twice; the last row of the lower one is included under the
-//   inclusive rule and left out when it lies exactly on the bottom vertex under the
-//   top-left rule, as are the pixels of a span (i <= R_i, or i < R_i);
-// - rows and pixels are cut to the screen, as the edge walk's are;
-// - L_i and R_i are worked out from the ends of the triangle's edge they lie on,
-//   x = x_top + (j - y_top)(x_bottom - x_top) / (y_bottom - y_top): the same line as the
-//   lerp between the corners, written so that a crossing exactly on a sample is exactly
-//   on it (the corners on the long edge at the split are rounded).
+// - the rows are split where the walk changes from the upper to the lower edge
+//   (lastUpperRow): the row through the middle vertex belongs to the lower trapezoid only,
+//   so no row of a triangle is scanned twice; the last row of the lower one is included
+//   under the inclusive rule and left out when it lies exactly on the bottom vertex under
+//   the top-left rule;
+// - the pixels of a row are the walk's (scanRow): i <= R_i or i < R_i by the rule, cut to
+//   the screen;
+// - L_i and R_i are worked out from the ends of the triangle's edge they lie on
+//   (ScanEdge::xAt), x = x_top + (j - y_top)(x_bottom - x_top) / (y_bottom - y_top): the
+//   same line as the lerp between the corners, written so that a crossing exactly on a
+//   sample is exactly on it (the corners on the long edge at the split are rounded).
 #pragma once
 
 #include <array>
@@ -42,8 +45,8 @@ TrapezoidPoint lerp(double t, const TrapezoidPoint& a, const TrapezoidPoint& b);
 struct Trapezoid {
     bool upper = true;  // above the middle vertex's row (else below it)
     TrapezoidPoint tl, tr, bl, br;
-    // The edges of the triangle its left and right sides lie on (top end, bottom end).
-    std::array<dvec2, 2> leftEdge{}, rightEdge{};
+    // The edges of the triangle its left and right sides lie on.
+    ScanEdge leftEdge, rightEdge;
     // The rows it covers, before cutting to the screen (none when firstRow > lastRow).
     std::int32_t firstRow = 0, lastRow = -1;
 };
@@ -63,7 +66,8 @@ TrapezoidSplit splitIntoTrapezoids(const TriangleSetup& s,
                                    const std::array<TrapezoidPoint, 3>& values,
                                    const RasterRules& rules);
 
-// Row j of a trapezoid (firstRow <= j <= lastRow) on a screen `width` pixels wide.
+// Row j of a trapezoid (firstRow <= j <= lastRow) of the triangle set up as s, on a screen
+// `width` pixels wide.
 struct TrapezoidRow {
     std::int32_t j = 0;
     double tj = 0.0;
@@ -71,8 +75,8 @@ struct TrapezoidRow {
     std::int32_t xBegin = 0, xEnd = 0;  // the pixels [xBegin, xEnd), cut to the screen
     bool empty() const { return xBegin >= xEnd; }
 };
-TrapezoidRow trapezoidRow(const Trapezoid& trapezoid, const RasterRules& rules, std::int32_t j,
-                          std::int32_t width);
+TrapezoidRow trapezoidRow(const TriangleSetup& s, const Trapezoid& trapezoid,
+                          const RasterRules& rules, std::int32_t j, std::int32_t width);
 
 // Pixel i of a row: t_i = (i + offset - L_i) / (R_i - L_i) and the values lerp(t_i, L, R).
 TrapezoidPoint trapezoidPixel(const TrapezoidRow& row, const RasterRules& rules, std::int32_t i,

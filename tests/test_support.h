@@ -4,6 +4,9 @@
 
 #include <QString>
 #include <QtTest>
+#ifdef QT_WIDGETS_LIB
+#include <QWidget>
+#endif
 
 #include <memory>
 #include <optional>
@@ -89,6 +92,23 @@ QString describe(const glm::vec<L, T, Q>& v) {
     }
     return s + QStringLiteral(")");
 }
+
+#ifdef QT_WIDGETS_LIB  // the suites of the views (linked with Qt Widgets)
+// Saves a widget's picture where RASTERLAB_VIEW_PICTURES says (to look at them), and checks
+// that it is not one flat colour.
+inline void lookAt(QWidget& widget, const QString& name) {
+    QCoreApplication::processEvents();  // the layout requests posted by new texts
+    const QImage image = widget.grab().toImage();
+    QVERIFY(!image.isNull());
+    bool varied = false;
+    const QRgb first = image.pixel(0, 0);
+    for (int y = 0; y < image.height() && !varied; y += 3)
+        for (int x = 0; x < image.width() && !varied; x += 3) varied = image.pixel(x, y) != first;
+    QVERIFY2(varied, qPrintable(name));
+    const QString dir = qEnvironmentVariable("RASTERLAB_VIEW_PICTURES");
+    if (!dir.isEmpty()) image.save(dir + QLatin1Char('/') + name + QStringLiteral(".png"));
+}
+#endif
 
 }  // namespace testing
 

@@ -25,6 +25,7 @@ using namespace rl;
 using rasterlab::Inspection;
 using rasterlab::NearClipView;
 using rasterlab::TrapezoidView;
+using testing::lookAt;
 
 namespace {
 
@@ -64,21 +65,6 @@ std::shared_ptr<const Scene> cameraInside(CourseSceneParts parts, RuleSet rules,
     return std::make_shared<const Scene>(makeCourseScene(parts, settings));
 }
 
-// Saves a widget's picture where RASTERLAB_VIEW_PICTURES says (to look at them), and checks
-// that it is not one flat colour.
-void lookAt(QWidget& widget, const QString& name) {
-    QCoreApplication::processEvents();
-    const QImage image = widget.grab().toImage();
-    QVERIFY(!image.isNull());
-    bool varied = false;
-    const QRgb first = image.pixel(0, 0);
-    for (int y = 0; y < image.height() && !varied; y += 3)
-        for (int x = 0; x < image.width() && !varied; x += 3) varied = image.pixel(x, y) != first;
-    QVERIFY2(varied, qPrintable(name));
-    const QString dir = qEnvironmentVariable("RASTERLAB_VIEW_PICTURES");
-    if (!dir.isEmpty()) image.save(dir + QLatin1Char('/') + name + QStringLiteral(".png"));
-}
-
 // The axis camera (view = (-x, y, z), d = hx = hy = 1) on a 64x64 image, the near plane
 // fixed at z = 1, and quadByHand's triangle: view A0 = (0, 0, 3), A1 = (2, 0, 3),
 // A2 = (0, 4, -3), so world (0, 0, 3), (-2, 0, 3), (0, 4, -3). On the screen, x = (x/z + 1)
@@ -99,6 +85,17 @@ std::shared_ptr<const Scene> trapezoidHandScene(ShadingModel shading) {
     return std::make_shared<const Scene>(testing::makeScene(
         testing::axisCamera(), testing::makeMesh({{1.5, 2, 2}, {0, 2, 4}, {6, 0, 6}}, {{0, 1, 2}}),
         16, 16, shading));
+}
+
+// The first entry of the near clip view's list after the first (the triangle selected) whose
+// mesh triangle (draw, source) is wanted, or -1.
+template <typename Wanted>
+int firstListed(const QComboBox& list, Wanted wanted) {
+    for (int k = 1; k < list.count(); ++k) {
+        const quint64 key = list.itemData(k).toULongLong();
+        if (wanted(std::uint32_t(key >> 32), std::uint32_t(key))) return k;
+    }
+    return -1;
 }
 
 CourseSceneParts trefoilParts() {
@@ -337,7 +334,7 @@ private slots:
         QCOMPARE(lower.firstRow, 4);
         QCOMPARE(lower.lastRow, 8);
 
-        const TrapezoidRow row2 = trapezoidRow(upper, rules, 2, 10);
+        const TrapezoidRow row2 = trapezoidRow(s, upper, rules, 2, 10);
         QCOMPARE(row2.tj, 0.5);
         QCOMPARE(row2.left.p, dvec2(1.5, 2));
         QCOMPARE(row2.left.pz, 3.0);
@@ -355,7 +352,7 @@ private slots:
         QVERIFY(std::abs(pixel.colour.g - 54.64286f) < 1e-3f);
         QVERIFY(std::abs(pixel.colour.b - 36.42857f) < 1e-3f);
 
-        const TrapezoidRow row6 = trapezoidRow(lower, rules, 6, 10);
+        const TrapezoidRow row6 = trapezoidRow(s, lower, rules, 6, 10);
         QCOMPARE(row6.tj, 0.5);
         QCOMPARE(row6.left.p, dvec2(0.5, 6));
         QCOMPARE(row6.left.pz, 5.0);
@@ -366,23 +363,24 @@ private slots:
         QCOMPARE(row6.xEnd, 5);
         // Row 4, the middle row (t_j = 0): from M' to the middle vertex, pixels 1..8; row 8,
         // the bottom vertex alone.
-        QCOMPARE(trapezoidRow(lower, rules, 4, 10).xBegin, 1);
-        QCOMPARE(trapezoidRow(lower, rules, 4, 10).xEnd, 9);
-        QCOMPARE(trapezoidRow(lower, rules, 8, 10).xBegin, 0);
-        QCOMPARE(trapezoidRow(lower, rules, 8, 10).xEnd, 1);
+        QCOMPARE(trapezoidRow(s, lower, rules, 4, 10).xBegin, 1);
+        QCOMPARE(trapezoidRow(s, lower, rules, 4, 10).xEnd, 9);
+        QCOMPARE(trapezoidRow(s, lower, rules, 8, 10).xBegin, 0);
+        QCOMPARE(trapezoidRow(s, lower, rules, 8, 10).xEnd, 1);
 
         // The same triangle under the gpu rules (samples at +0.5, top-left): rows sampled
         // at 0.5 .. 3.5 are the upper's (0..3), 4.5 .. 7.5 the lower's (4..7): the bottom
         // vertex's row 8 (sampled at 8.5) is below the triangle.
         const RasterRules gpu = RasterRules::gpu();
-        const TrapezoidSplit g = splitIntoTrapezoids(setupTriangle(p, gpu), values, gpu);
+        const TriangleSetup sGpu = setupTriangle(p, gpu);
+        const TrapezoidSplit g = splitIntoTrapezoids(sGpu, values, gpu);
         QCOMPARE(g.parts.size(), std::size_t(2));
         QCOMPARE(g.parts[0].lastRow, 3);
         QCOMPARE(g.parts[1].firstRow, 4);
         QCOMPARE(g.parts[1].lastRow, 7);
         // Row 2 sampled at 2.5: t_j = 2.5/4 = 0.625, L = 2 - 0.625 = 1.375, R = 2 + 0.625 * 6
         // = 5.75; samples 1.375 <= i + 0.5 < 5.75: i = 1..5.
-        const TrapezoidRow r = trapezoidRow(g.parts[0], gpu, 2, 10);
+        const TrapezoidRow r = trapezoidRow(sGpu, g.parts[0], gpu, 2, 10);
         QCOMPARE(r.tj, 0.625);
         QCOMPARE(r.left.p.x, 1.375);
         QCOMPARE(r.right.p.x, 5.75);
@@ -448,7 +446,7 @@ private slots:
             for (const Trapezoid& part : split.parts) {
                 for (std::int32_t j = std::max(part.firstRow, 0);
                      j <= std::min(part.lastRow, scene->height - 1); ++j) {
-                    const TrapezoidRow row = trapezoidRow(part, rules, j, scene->width);
+                    const TrapezoidRow row = trapezoidRow(s, part, rules, j, scene->width);
                     ++rows;
                     if (!row.empty()) spans.push_back({j, row.xBegin, row.xEnd});
                 }
@@ -464,7 +462,7 @@ private slots:
                 for (const Trapezoid& part : splitIntoTrapezoids(s, depths, rules).parts) {
                     for (std::int32_t j = std::max(part.firstRow, 0);
                          j <= std::min(part.lastRow, scene->height - 1); ++j) {
-                        const TrapezoidRow row = trapezoidRow(part, rules, j, scene->width);
+                        const TrapezoidRow row = trapezoidRow(s, part, rules, j, scene->width);
                         if (row.empty()) continue;
                         const double lerped = trapezoidPixel(row, rules, row.xBegin).pz;
                         const float depth =
@@ -641,14 +639,11 @@ private slots:
                 n += replay->rows()[r].fragmentEnd - replay->rows()[r].fragmentBegin;
             return n;
         };
-        int quad = -1;
-        for (int k = 1; k < list->count() && quad < 0; ++k) {
-            const quint64 key = list->itemData(k).toULongLong();
-            const auto draw = std::uint32_t(key >> 32), source = std::uint32_t(key);
+        const int quad = firstListed(*list, [&](std::uint32_t draw, std::uint32_t source) {
             const NearClipRecord r = nearClipOf(*scene, *trace->projection, draw, source);
             const auto drawn = screenTrianglesOf(*trace->projection, draw, source);
-            if (r.polygon.size() == 4 && !drawn.empty() && fragmentsOf(drawn.front()) > 0) quad = k;
-        }
+            return r.polygon.size() == 4 && !drawn.empty() && fragmentsOf(drawn.front()) > 0;
+        });
         QVERIFY(quad > 0);
         list->setCurrentIndex(quad);
         emit list->activated(quad);
@@ -661,13 +656,9 @@ private slots:
         clip.setStep(rasterlab::kNearClipSteps - 1);
         lookAt(clip, QStringLiteral("near_clip_trefoil_all"));
         // A triangle wholly behind, chosen while another is selected: shown, nothing drawn.
-        int behind = -1;
-        for (int k = 1; k < list->count() && behind < 0; ++k) {
-            const quint64 key = list->itemData(k).toULongLong();
-            if (trace->projection->draws[key >> 32].fate[std::uint32_t(key)] ==
-                TriangleFate::Behind)
-                behind = k;
-        }
+        const int behind = firstListed(*list, [&](std::uint32_t draw, std::uint32_t source) {
+            return trace->projection->draws[draw].fate[source] == TriangleFate::Behind;
+        });
         QVERIFY(behind > 0);
         const auto selectedBefore = inspection.selectedTriangle();
         list->setCurrentIndex(behind);

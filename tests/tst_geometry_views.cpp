@@ -29,6 +29,7 @@ using rasterlab::Inspection;
 using rasterlab::ProjectionCanvas;
 using rasterlab::ProjectionSpace;
 using rasterlab::ProjectionView;
+using testing::lookAt;
 
 namespace {
 
@@ -121,21 +122,6 @@ std::shared_ptr<const rl::FrameTrace> defaultFrame(Trefoil variant = Trefoil::Co
 std::shared_ptr<const rl::FrameTrace> caliceFrame() {
     const auto scene = testing::calice2Scene();
     return scene ? render(*scene) : nullptr;
-}
-
-// Saves a widget's picture where RASTERLAB_VIEW_PICTURES says (to look at them), and checks
-// that it is not one flat colour.
-void lookAt(QWidget& widget, const QString& name) {
-    QCoreApplication::processEvents();  // the layout requests posted by new texts
-    const QImage image = widget.grab().toImage();
-    QVERIFY(!image.isNull());
-    bool varied = false;
-    const QRgb first = image.pixel(0, 0);
-    for (int y = 0; y < image.height() && !varied; y += 3)
-        for (int x = 0; x < image.width() && !varied; x += 3) varied = image.pixel(x, y) != first;
-    QVERIFY2(varied, qPrintable(name));
-    const QString dir = qEnvironmentVariable("RASTERLAB_VIEW_PICTURES");
-    if (!dir.isEmpty()) image.save(dir + QLatin1Char('/') + name + QStringLiteral(".png"));
 }
 
 // A view on an Inspection of its own, resized and shown.

@@ -40,15 +40,12 @@ int stepIndex(NearClipStep s) {
 
 }  // namespace
 
-// Sutherland-Hodgman against the rectangle's four sides.
+// Sutherland-Hodgman against the rectangle's four sides, one after the other, with the
+// projection stage's walk (projection.h).
 QPolygonF clipPolygonToRect(QPolygonF polygon, const QRectF& r) {
     const auto side = [&](auto inside, auto cross) {
         QPolygonF out;
-        for (qsizetype k = 0; k < polygon.size(); ++k) {
-            const QPointF a = polygon[k], b = polygon[(k + 1) % polygon.size()];
-            if (inside(a)) out << a;
-            if (inside(a) != inside(b)) out << cross(a, b);
-        }
+        rl::clipPolygonAgainstPlane(polygon, out, inside, cross);
         polygon = out;
     };
     const auto atX = [](const QPointF& a, const QPointF& b, double x) {
@@ -388,7 +385,6 @@ void NearClipCanvas::paintScreen(QPainter& painter, const QRectF& area) {
     const rl::Scene& scene = *m_frame->scene;
     const rl::Projection& projection = *m_frame->projection;
     const rl::DrawProjection& proj = projection.draws[m.draw];
-    // The image and a margin of a quarter of it around: what reaches beyond is cut there.
     // The image and a margin of a quarter of it around (what reaches beyond is cut there),
     // zoomed to the triangles when they are small in it.
     const QRectF image(0, 0, scene.width, scene.height);
@@ -472,12 +468,7 @@ void NearClipCanvas::paintScreen(QPainter& painter, const QRectF& area) {
 }
 
 NearClipView::NearClipView(Inspection* inspection, QWidget* parent)
-    : QWidget(parent), m_inspection(inspection) {
-    setObjectName(QStringLiteral("nearClipView"));
-    m_title = new QLabel(this);
-    m_title->setObjectName(QStringLiteral("nearClipTitle"));
-    m_title->setWordWrap(true);
-    m_title->setTextFormat(Qt::RichText);
+    : ExplainedView(inspection, QStringLiteral("nearClip"), parent) {
     m_triangles = new QComboBox(this);
     m_triangles->setObjectName(QStringLiteral("nearClipTriangles"));
     m_triangles->setToolTip(tr("The triangle shown: the one selected, or one the near plane cut"));
@@ -496,9 +487,7 @@ NearClipView::NearClipView(Inspection* inspection, QWidget* parent)
     m_stepLabel->setObjectName(QStringLiteral("nearClipStep"));
     m_canvas = new NearClipCanvas(this);
     m_canvas->setObjectName(QStringLiteral("nearClipCanvas"));
-    m_text = new QTextBrowser(this);
-    m_text->setObjectName(QStringLiteral("nearClipExplanation"));
-    m_text->setOpenLinks(false);
+    setTabOrder(m_all, explanation());  // the explanation after the controls, made before them
 
     auto* controls = new QHBoxLayout;
     controls->addWidget(m_triangles, 1);
@@ -509,11 +498,11 @@ NearClipView::NearClipView(Inspection* inspection, QWidget* parent)
     steps->addWidget(m_all);
     steps->addWidget(m_stepLabel, 1);
     auto* layout = new QVBoxLayout(this);
-    layout->addWidget(m_title);
+    layout->addWidget(title());
     layout->addLayout(controls);
     layout->addLayout(steps);
     layout->addWidget(m_canvas, 3);
-    layout->addWidget(m_text, 3);
+    layout->addWidget(explanation(), 3);
 
     connect(m_back, &QPushButton::clicked, this, [this] { setStep(m_step - 1); });
     connect(m_next, &QPushButton::clicked, this, [this] { setStep(m_step + 1); });
@@ -529,34 +518,17 @@ NearClipView::NearClipView(Inspection* inspection, QWidget* parent)
         const quint64 key = item.toULongLong();
         showTriangle(static_cast<std::uint32_t>(key >> 32), static_cast<std::uint32_t>(key));
     });
-    const auto follow = [this] {
-        if (isVisible()) refresh();
-    };
-    connect(m_inspection, &Inspection::frameChanged, this, [this, follow] {
-        m_chosen.reset();
-        m_triangles->clear();  // made again for the new frame
-        follow();
-    });
-    connect(m_inspection, &Inspection::replayChanged, this, follow);
-    connect(m_inspection, &Inspection::cursorChanged, this, follow);
-    connect(m_inspection, &Inspection::selectionChanged, this, follow);
-    connect(m_inspection, &Inspection::presentationChanged, this, [this] {
-        updateFonts();
-        if (isVisible()) updateStep();
-    });
-    updateFonts();
 }
 
-void NearClipView::showEvent(QShowEvent* event) {
-    QWidget::showEvent(event);
-    refresh();
+void NearClipView::frameChanged() {
+    m_chosen.reset();
+    m_triangles->clear();  // made again for the new frame
+    m_modelFrame = nullptr;
 }
 
-void NearClipView::updateFonts() {
-    QFont font = m_text->font();
-    font.setPointSizeF(m_inspection->presentation() ? 14.0 : QWidget::font().pointSizeF());
-    m_text->setFont(font);
-    m_title->setFont(font);
+void NearClipView::presentationChanged() {
+    // Hidden too: a refresh when shown again draws nothing new for the same triangle.
+    updateStep();
 }
 
 int NearClipView::listedTriangles() const {
@@ -633,9 +605,11 @@ void NearClipView::refresh() {
     }
     const bool same =
         which && m_model && m_model->draw == which->first && m_model->source == which->second;
+    // The same triangle of the same frame (a step of the cursor, mostly): nothing to make again.
+    const bool unchanged = same && frame.get() == m_modelFrame;
     if (!which) {
         m_model.reset();
-    } else {
+    } else if (!unchanged) {
         m_model = nearClipModel(*frame, which->first, which->second);
         if (!same) {
             // Another triangle starts at the first step, unless all steps were shown, and is
@@ -653,6 +627,7 @@ void NearClipView::refresh() {
             m_axis->setCurrentIndex(area(1) > area(0) ? 1 : 0);
         }
     }
+    m_modelFrame = m_model ? frame.get() : nullptr;
     // The list shows the triangle when it is in it.
     int index = 0;
     if (m_model && m_chosen) {
@@ -660,7 +635,7 @@ void NearClipView::refresh() {
         index = std::max(0, m_triangles->findData(QVariant::fromValue(key)));
     }
     m_triangles->setCurrentIndex(index);
-    updateStep();
+    if (!unchanged) updateStep();
 }
 
 void NearClipView::setStep(int step) {
@@ -676,13 +651,8 @@ void NearClipView::updateStep() {
                                  : QString());
     m_canvas->setContent(m_model, m_inspection->frame(), m_step, m_axis->currentIndex(),
                          m_inspection->lineWidth(), m_inspection->presentation());
-    m_title->setText(titleText());
-    QString html = explanationHtml();
-    if (html != m_html) {
-        m_html = std::move(html);
-        m_text->setHtml(m_html);
-        m_text->scrollToAnchor(QStringLiteral("current"));
-    }
+    title()->setText(titleText());
+    if (setExplanation(explanationHtml())) explanation()->scrollToAnchor(QStringLiteral("current"));
 }
 
 QString NearClipView::titleText() const {
@@ -697,10 +667,6 @@ QString NearClipView::titleText() const {
     if (frame->scene->draws.size() > 1)
         text += QStringLiteral(" (%1)").arg(QString::fromStdString(draw.name).toHtmlEscaped());
     return text;
-}
-
-QString NearClipView::explanationText() const {
-    return m_text->toPlainText();
 }
 
 QString NearClipView::explanationHtml() const {

@@ -13,19 +13,18 @@
 #include <QPolygonF>
 #include <QRectF>
 #include <QString>
-#include <QWidget>
 
 #include <cstdint>
 #include <optional>
 #include <vector>
 
+#include "explained_view.h"
 #include "frame_trace.h"
 #include "near_clip.h"
 
 class QComboBox;
 class QLabel;
 class QPushButton;
-class QTextBrowser;
 
 namespace rasterlab {
 
@@ -64,7 +63,7 @@ QPolygonF clipPolygonToRect(QPolygonF polygon, const QRectF& rect);
 
 NearClipModel nearClipModel(const rl::FrameTrace& frame, std::uint32_t draw, std::uint32_t source);
 
-class NearClipView : public QWidget {
+class NearClipView : public ExplainedView {
     Q_OBJECT
 public:
     explicit NearClipView(Inspection* inspection, QWidget* parent = nullptr);
@@ -77,26 +76,22 @@ public:
     // The triangles the list offers (the near plane cut or hid them), without the first
     // entry (the one selected).
     int listedTriangles() const;
-    QString explanationText() const;
     QString titleText() const;
 
-protected:
-    void showEvent(QShowEvent* event) override;
-
 private:
-    void refresh();
+    void refresh() override;
+    void frameChanged() override;
+    void presentationChanged() override;
     void rebuildList();
-    void updateFonts();
     void updateStep();
     QString explanationHtml() const;
 
-    Inspection* m_inspection = nullptr;
     std::optional<NearClipModel> m_model;
+    const rl::FrameTrace* m_modelFrame = nullptr;  // the frame m_model was made for
     std::optional<std::pair<std::uint32_t, std::uint32_t>> m_chosen;  // from the list
     std::optional<std::uint32_t> m_selectionAtChoice;                 // the triangle selected then
     int m_step = 0;
     const rl::FrameTrace* m_listFrame = nullptr;  // the frame the list was made for
-    QLabel* m_title = nullptr;
     QComboBox* m_triangles = nullptr;
     QComboBox* m_axis = nullptr;
     QPushButton* m_back = nullptr;
@@ -104,8 +99,6 @@ private:
     QPushButton* m_all = nullptr;
     QLabel* m_stepLabel = nullptr;
     NearClipCanvas* m_canvas = nullptr;
-    QTextBrowser* m_text = nullptr;
-    QString m_html;
 };
 
 }  // namespace rasterlab

@@ -419,53 +419,19 @@ void ScanlineCanvas::paintEvent(QPaintEvent*) {
 }
 
 ScanlineView::ScanlineView(Inspection* inspection, QWidget* parent)
-    : QWidget(parent), m_inspection(inspection) {
-    setObjectName(QStringLiteral("scanlineView"));
-    m_title = new QLabel(this);
-    m_title->setObjectName(QStringLiteral("scanlineTitle"));
-    m_title->setWordWrap(true);
-    m_title->setTextFormat(Qt::RichText);
+    : ExplainedView(inspection, QStringLiteral("scanline"), parent) {
     m_canvas = new ScanlineCanvas(this);
     m_canvas->setObjectName(QStringLiteral("scanlineCanvas"));
-    m_text = new QTextBrowser(this);
-    m_text->setObjectName(QStringLiteral("scanlineExplanation"));
-    m_text->setOpenLinks(false);
     auto* layout = new QVBoxLayout(this);
-    layout->addWidget(m_title);
+    layout->addWidget(title());
     layout->addWidget(m_canvas, 3);
-    layout->addWidget(m_text, 4);
-
-    const auto follow = [this] {
-        if (isVisible()) refresh();
-    };
-    connect(m_inspection, &Inspection::frameChanged, this, follow);
-    connect(m_inspection, &Inspection::replayChanged, this, follow);
-    connect(m_inspection, &Inspection::cursorChanged, this, follow);
-    connect(m_inspection, &Inspection::selectionChanged, this, follow);
-    connect(m_inspection, &Inspection::pixelPicked, this, follow);
-    connect(m_inspection, &Inspection::presentationChanged, this, [this, follow] {
-        updateFonts();
-        follow();
-    });
+    layout->addWidget(explanation(), 4);
     m_canvas->installEventFilter(this);
-    updateFonts();
-}
-
-void ScanlineView::showEvent(QShowEvent* event) {
-    QWidget::showEvent(event);
-    refresh();
 }
 
 bool ScanlineView::eventFilter(QObject* watched, QEvent* event) {
     if (watched == m_canvas && event->type() == QEvent::Resize && isVisible() && m_model) refresh();
     return QWidget::eventFilter(watched, event);
-}
-
-void ScanlineView::updateFonts() {
-    QFont font = m_text->font();
-    font.setPointSizeF(m_inspection->presentation() ? 14.0 : QWidget::font().pointSizeF());
-    m_text->setFont(font);
-    m_title->setFont(font);
 }
 
 QRect ScanlineView::drawnWindow() const {
@@ -475,64 +441,38 @@ QRect ScanlineView::drawnWindow() const {
 void ScanlineView::refresh() {
     m_model.reset();
     m_followsCursor = false;
-    const std::shared_ptr<const rl::FrameTrace>& frame = m_inspection->frame();
-    if (frame && frame->scene && frame->projection) {
-        const rl::Scene& scene = *frame->scene;
-        const rl::ReplayRow* row = m_inspection->currentRow();
-        if (m_inspection->canStep() && row && !m_inspection->atEnd()) {
-            // The stepping cursor: its row and the pixel last tested on it.
-            m_followsCursor = true;
-            m_model = scanlineModel(*frame, row->triangle, row->y);
-            if (const std::optional<std::uint32_t> f = m_inspection->currentFragment())
-                m_model->currentPixel = m_inspection->replay()->fragments()[*f].x;
-        } else if (const std::optional<std::uint32_t> t = m_inspection->selectedTriangle();
-                   t && *t < frame->projection->triangles.size()) {
-            // The triangle selected: the scanline of the pixel picked when it is one of the
-            // triangle's rows, else its middle row.
-            ScanlineModel whole = scanlineModel(*frame, *t, std::nullopt);
-            const QPoint picked = m_inspection->pickedPixel();
-            const bool pickedRow = picked.y() >= whole.rowBegin && picked.y() <= whole.rowEnd;
-            m_model = scanlineModel(*frame, *t,
-                                    pickedRow ? picked.y() : (whole.rowBegin + whole.rowEnd) / 2);
-            if (pickedRow && m_model->row && picked.x() >= m_model->row->xBegin &&
-                picked.x() < m_model->row->xEnd)
-                m_model->currentPixel = picked.x();
-        }
-        if (m_model) {
-            // As many pixels as fit at the smallest square (the margins take about 50 pixels
-            // across and 40 down).
-            const int maxColumns =
-                static_cast<int>(std::max(0.0, m_canvas->width() - 50.0) / kMinCell);
-            const int maxRows =
-                static_cast<int>(std::max(0.0, m_canvas->height() - 40.0) / kMinCell);
-            const QRect window = windowOf(*m_model, scene.width, scene.height, maxColumns, maxRows);
-            const QImage image = m_inspection->image();
-            const rl::DepthTest* buffers = m_inspection->buffers();
-            std::vector<QRgb> colours(static_cast<std::size_t>(window.width() * window.height()));
-            std::vector<std::uint8_t> written(colours.size(), 0);
-            for (int r = 0; r < window.height(); ++r) {
-                for (int c = 0; c < window.width(); ++c) {
-                    const int x = window.left() + c, y = window.top() + r;
-                    const auto i = static_cast<std::size_t>(r * window.width() + c);
-                    if (buffers && buffers->triangle.contains(x, y))
-                        written[i] = buffers->triangle.at(x, y) != rl::kNoTriangle;
-                    if (image.valid(x, y)) colours[i] = image.pixel(x, y);
-                }
+    if (const std::optional<FollowedRow> followed = followedRow(*m_inspection)) {
+        const rl::FrameTrace& frame = *m_inspection->frame();
+        const rl::Scene& scene = *frame.scene;
+        m_followsCursor = followed->followsCursor;
+        m_model = scanlineModel(frame, followed->triangle, followed->y);
+        m_model->currentPixel = followed->pixel;
+        // As many pixels as fit at the smallest square (the margins take about 50 pixels
+        // across and 40 down).
+        const int maxColumns = static_cast<int>(std::max(0.0, m_canvas->width() - 50.0) / kMinCell);
+        const int maxRows = static_cast<int>(std::max(0.0, m_canvas->height() - 40.0) / kMinCell);
+        const QRect window = windowOf(*m_model, scene.width, scene.height, maxColumns, maxRows);
+        const QImage image = m_inspection->image();
+        const rl::DepthTest* buffers = m_inspection->buffers();
+        std::vector<QRgb> colours(static_cast<std::size_t>(window.width() * window.height()));
+        std::vector<std::uint8_t> written(colours.size(), 0);
+        for (int r = 0; r < window.height(); ++r) {
+            for (int c = 0; c < window.width(); ++c) {
+                const int x = window.left() + c, y = window.top() + r;
+                const auto i = static_cast<std::size_t>(r * window.width() + c);
+                if (buffers && buffers->triangle.contains(x, y))
+                    written[i] = buffers->triangle.at(x, y) != rl::kNoTriangle;
+                if (image.valid(x, y)) colours[i] = image.pixel(x, y);
             }
-            m_canvas->setContent(m_model, window, scene.rules.sampleOffset, std::move(colours),
-                                 std::move(written), m_inspection->lineWidth(),
-                                 m_inspection->presentation());
         }
+        m_canvas->setContent(m_model, window, scene.rules.sampleOffset, std::move(colours),
+                             std::move(written), m_inspection->lineWidth(),
+                             m_inspection->presentation());
+    } else {
+        m_canvas->setContent(std::nullopt, QRect(), 0.0, {}, {}, 1.5, false);
     }
-    if (!m_model) m_canvas->setContent(std::nullopt, QRect(), 0.0, {}, {}, 1.5, false);
-    m_title->setText(titleText());
-    // Set only when it changed: a step or a signal that leaves it as it was (a new frame
-    // brings several) costs no layout, and the reader's scroll position stays.
-    QString html = explanationHtml();
-    if (html != m_html) {
-        m_html = std::move(html);
-        m_text->setHtml(m_html);
-    }
+    title()->setText(titleText());
+    setExplanation(explanationHtml());
 }
 
 QString ScanlineView::titleText() const {
@@ -561,10 +501,6 @@ QString ScanlineView::titleText() const {
                        .arg(m_inspection->canStep() && m_inspection->atStart() ? tr("start")
                                                                                : tr("end")));
     return text;
-}
-
-QString ScanlineView::explanationText() const {
-    return m_text->toPlainText();
 }
 
 QString ScanlineView::explanationHtml() const {

@@ -9,17 +9,14 @@
 
 #include <QRect>
 #include <QString>
-#include <QWidget>
 
 #include <array>
 #include <cstdint>
 #include <optional>
 
+#include "explained_view.h"
 #include "frame_trace.h"
 #include "scan_conversion.h"
-
-class QLabel;
-class QTextBrowser;
 
 namespace rasterlab {
 
@@ -74,7 +71,7 @@ ScanlineModel scanlineModel(const rl::FrameTrace& frame, std::uint32_t triangle,
 // (the depth test's barycentrics step from the span's first pixel xBegin).
 SpanEnd spanEnd(const rl::FrameTrace& frame, std::uint32_t triangle, int y, int xBegin, int x);
 
-class ScanlineView : public QWidget {
+class ScanlineView : public ExplainedView {
     Q_OBJECT
 public:
     explicit ScanlineView(Inspection* inspection, QWidget* parent = nullptr);
@@ -84,29 +81,21 @@ public:
     // True when the view follows the stepping cursor, false when it shows the triangle
     // selected (at the start or the end of the frame, or without a replay).
     bool followsCursor() const { return m_followsCursor; }
-    // The explanation shown, as plain text (for tests).
-    QString explanationText() const;
     QString titleText() const;
     // The window of pixels drawn: [left, left + width) x [top, top + height).
     QRect drawnWindow() const;
 
 protected:
-    void showEvent(QShowEvent* event) override;
     // A canvas resized shows more or fewer pixels.
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-    void refresh();
-    void updateFonts();
+    void refresh() override;
     QString explanationHtml() const;
 
-    Inspection* m_inspection = nullptr;
     std::optional<ScanlineModel> m_model;
     bool m_followsCursor = false;
-    QLabel* m_title = nullptr;
     ScanlineCanvas* m_canvas = nullptr;
-    QTextBrowser* m_text = nullptr;
-    QString m_html;  // what m_text shows
 };
 
 }  // namespace rasterlab

@@ -59,7 +59,7 @@ TrapezoidModel trapezoidModel(const rl::FrameTrace& frame, std::uint32_t triangl
         const rl::Trapezoid& part = m.split.parts[k];
         if (*y >= part.firstRow && *y <= part.lastRow) {
             m.part = k;
-            m.row = rl::trapezoidRow(part, scene.rules, *y, scene.width);
+            m.row = rl::trapezoidRow(m.setup, part, scene.rules, *y, scene.width);
         }
     }
     return m;
@@ -269,46 +269,13 @@ void TrapezoidCanvas::paintEvent(QPaintEvent*) {
 }
 
 TrapezoidView::TrapezoidView(Inspection* inspection, QWidget* parent)
-    : QWidget(parent), m_inspection(inspection) {
-    setObjectName(QStringLiteral("trapezoidView"));
-    m_title = new QLabel(this);
-    m_title->setObjectName(QStringLiteral("trapezoidTitle"));
-    m_title->setWordWrap(true);
-    m_title->setTextFormat(Qt::RichText);
+    : ExplainedView(inspection, QStringLiteral("trapezoid"), parent) {
     m_canvas = new TrapezoidCanvas(this);
     m_canvas->setObjectName(QStringLiteral("trapezoidCanvas"));
-    m_text = new QTextBrowser(this);
-    m_text->setObjectName(QStringLiteral("trapezoidExplanation"));
-    m_text->setOpenLinks(false);
     auto* layout = new QVBoxLayout(this);
-    layout->addWidget(m_title);
+    layout->addWidget(title());
     layout->addWidget(m_canvas, 3);
-    layout->addWidget(m_text, 4);
-    const auto follow = [this] {
-        if (isVisible()) refresh();
-    };
-    connect(m_inspection, &Inspection::frameChanged, this, follow);
-    connect(m_inspection, &Inspection::replayChanged, this, follow);
-    connect(m_inspection, &Inspection::cursorChanged, this, follow);
-    connect(m_inspection, &Inspection::selectionChanged, this, follow);
-    connect(m_inspection, &Inspection::pixelPicked, this, follow);
-    connect(m_inspection, &Inspection::presentationChanged, this, [this, follow] {
-        updateFonts();
-        follow();
-    });
-    updateFonts();
-}
-
-void TrapezoidView::showEvent(QShowEvent* event) {
-    QWidget::showEvent(event);
-    refresh();
-}
-
-void TrapezoidView::updateFonts() {
-    QFont font = m_text->font();
-    font.setPointSizeF(m_inspection->presentation() ? 14.0 : QWidget::font().pointSizeF());
-    m_text->setFont(font);
-    m_title->setFont(font);
+    layout->addWidget(explanation(), 4);
 }
 
 std::optional<std::array<rl::vec3, 3>> TrapezoidView::gouraudColours(std::uint32_t triangle) const {
@@ -330,39 +297,20 @@ std::optional<std::array<rl::vec3, 3>> TrapezoidView::gouraudColours(std::uint32
 void TrapezoidView::refresh() {
     m_model.reset();
     m_followsCursor = false;
-    const std::shared_ptr<const rl::FrameTrace>& frame = m_inspection->frame();
-    if (frame && frame->scene && frame->projection) {
-        const rl::ReplayRow* row = m_inspection->currentRow();
-        if (m_inspection->canStep() && row && !m_inspection->atEnd()) {
-            m_followsCursor = true;
-            m_model = trapezoidModel(*frame, row->triangle, row->y, gouraudColours(row->triangle));
-            if (const std::optional<std::uint32_t> f = m_inspection->currentFragment())
-                m_model->pixel = m_inspection->replay()->fragments()[*f].x;
-        } else if (const std::optional<std::uint32_t> t = m_inspection->selectedTriangle();
-                   t && *t < frame->projection->triangles.size()) {
-            const std::optional<std::array<rl::vec3, 3>> colours = gouraudColours(*t);
-            TrapezoidModel whole = trapezoidModel(*frame, *t, std::nullopt, colours);
-            const QPoint picked = m_inspection->pickedPixel();
-            const bool pickedRow = picked.y() >= whole.rowBegin && picked.y() <= whole.rowEnd;
-            m_model = trapezoidModel(
-                *frame, *t, pickedRow ? picked.y() : (whole.rowBegin + whole.rowEnd) / 2, colours);
-            if (pickedRow && m_model->row && picked.x() >= m_model->row->xBegin &&
-                picked.x() < m_model->row->xEnd)
-                m_model->pixel = picked.x();
-        }
-    }
-    if (m_model)
-        m_canvas->setContent(m_model, frame->scene->width, frame->scene->height,
-                             frame->scene->rules.sampleOffset, m_inspection->lineWidth(),
+    if (const std::optional<FollowedRow> followed = followedRow(*m_inspection)) {
+        const rl::FrameTrace& frame = *m_inspection->frame();
+        m_followsCursor = followed->followsCursor;
+        m_model = trapezoidModel(frame, followed->triangle, followed->y,
+                                 gouraudColours(followed->triangle));
+        m_model->pixel = followed->pixel;
+        m_canvas->setContent(m_model, frame.scene->width, frame.scene->height,
+                             frame.scene->rules.sampleOffset, m_inspection->lineWidth(),
                              m_inspection->presentation());
-    else
+    } else {
         m_canvas->setContent(std::nullopt, 0, 0, 0.0, 1.5, false);
-    m_title->setText(titleText());
-    QString html = explanationHtml();
-    if (html != m_html) {
-        m_html = std::move(html);
-        m_text->setHtml(m_html);
     }
+    title()->setText(titleText());
+    setExplanation(explanationHtml());
 }
 
 QString TrapezoidView::titleText() const {
@@ -381,10 +329,6 @@ QString TrapezoidView::titleText() const {
     text += QStringLiteral(" &mdash; ") +
             (m_followsCursor ? tr("at the stepping cursor") : tr("the triangle selected"));
     return text;
-}
-
-QString TrapezoidView::explanationText() const {
-    return m_text->toPlainText();
 }
 
 QString TrapezoidView::explanationHtml() const {

@@ -9,17 +9,14 @@
 #pragma once
 
 #include <QString>
-#include <QWidget>
 
 #include <array>
 #include <cstdint>
 #include <optional>
 
+#include "explained_view.h"
 #include "frame_trace.h"
 #include "trapezoids.h"
-
-class QLabel;
-class QTextBrowser;
 
 namespace rasterlab {
 
@@ -44,32 +41,23 @@ TrapezoidModel trapezoidModel(const rl::FrameTrace& frame, std::uint32_t triangl
                               std::optional<int> y,
                               const std::optional<std::array<rl::vec3, 3>>& colours);
 
-class TrapezoidView : public QWidget {
+class TrapezoidView : public ExplainedView {
     Q_OBJECT
 public:
     explicit TrapezoidView(Inspection* inspection, QWidget* parent = nullptr);
 
     const std::optional<TrapezoidModel>& model() const { return m_model; }
     bool followsCursor() const { return m_followsCursor; }
-    QString explanationText() const;
     QString titleText() const;
 
-protected:
-    void showEvent(QShowEvent* event) override;
-
 private:
-    void refresh();
-    void updateFonts();
+    void refresh() override;
     QString explanationHtml() const;
     std::optional<std::array<rl::vec3, 3>> gouraudColours(std::uint32_t triangle) const;
 
-    Inspection* m_inspection = nullptr;
     std::optional<TrapezoidModel> m_model;
     bool m_followsCursor = false;
-    QLabel* m_title = nullptr;
     TrapezoidCanvas* m_canvas = nullptr;
-    QTextBrowser* m_text = nullptr;
-    QString m_html;
 };
 
 }  // namespace rasterlab
