@@ -578,8 +578,10 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
         << rl::shadingModelName(settings.shading) << " shading, " << trace->depth->coveredPixels()
         << " pixels covered, " << QString::number(trace->totalMilliseconds, 'f', 1) << " ms\n";
     if (settings.shading == rl::ShadingModel::Painter) {
-        // One more render of each kind, with the z-buffer, to show what the order got wrong.
-        const auto comparison = rl::compareWithZBuffer(scene, options);
+        // One more render, with the z-buffer, to show what the order got wrong (the painter's
+        // is this one).
+        const auto comparison =
+            rl::compareWithZBuffer(std::make_shared<const rl::FrameTrace>(trace.value()), options);
         if (!comparison) return inputError(err, comparison.error());
         out << "  painter: " << comparison->differing << " pixels differ from the z-buffer render ("
             << comparison->wrongOrder << " where a farther triangle was painted last, "

@@ -325,6 +325,45 @@ private slots:
         QVERIFY(threaded->depth->triangle == trace->depth->triangle);
         QVERIFY(threaded->depth->depth.pixels() == trace->depth->depth.pixels());
     }
+
+    void comparisonReusesTheFrame() {
+        // A frame that is one of the two renders (every draw painted, or every draw flat) is
+        // used as it is; the comparison is the same as when both are rendered.
+        const auto expected = compareWithZBuffer(shared(failureScene()));
+        QVERIFY(expected.ok());
+        const auto check = [&](const PainterComparison& c) {
+            QCOMPARE(c.differing, expected->differing);
+            QCOMPARE(c.wrongOrder, expected->wrongOrder);
+            QCOMPARE(c.ties, expected->ties);
+            QVERIFY(c.mask.pixels() == expected->mask.pixels());
+            QCOMPARE(c.zBufferIndex, expected->zBufferIndex);
+            QCOMPARE(c.painterRank, expected->painterRank);
+            QCOMPARE(c.hiddenWrongly, expected->hiddenWrongly);
+            QCOMPARE(c.coversWrongly, expected->coversWrongly);
+            QVERIFY(c.painterImage == expected->painterImage);
+            QVERIFY(c.zBufferImage == expected->zBufferImage);
+            QVERIFY(differenceImage(c) == differenceImage(*expected));
+        };
+        const auto painted = renderTrace(shared(failureScene()));
+        const auto fromPainted = compareWithZBuffer(painted);
+        QVERIFY(fromPainted.ok());
+        QVERIFY(fromPainted->painter == painted);
+        check(*fromPainted);
+        const auto flat = renderTrace(zBufferSceneOf(*painted->scene));
+        const auto fromFlat = compareWithZBuffer(flat);
+        QVERIFY(fromFlat.ok());
+        QVERIFY(fromFlat->zBuffer == flat);
+        check(*fromFlat);
+        // Neither (a Phong frame): both rendered.
+        Scene phong = failureScene();
+        for (Draw& draw : phong.draws) draw.shading = ShadingModel::Phong;
+        const auto lit = renderTrace(shared(phong));
+        const auto fromLit = compareWithZBuffer(lit);
+        QVERIFY(fromLit.ok());
+        QVERIFY(fromLit->painter != lit && fromLit->zBuffer != lit);
+        check(*fromLit);
+        QVERIFY(!compareWithZBuffer(std::shared_ptr<const FrameTrace>()).ok());
+    }
 };
 
 QTEST_GUILESS_MAIN(TestPainter)
