@@ -239,7 +239,7 @@ void AnimationPanel::showScene(const rl::Scene& scene) {
     const rl::Animation& a = *draw->animation;
     const rl::dvec3 c = a.centre ? *a.centre : rl::worldBoundingBoxCentre(*draw);
     const rl::dvec3 axis = a.axis ? *a.axis : rl::turntableAxis(scene);
-    const rl::dmat4 m = rl::animationMatrix(scene, *draw, scene.time);
+    const rl::dmat4 m = rl::animationMatrix(a, c, axis, scene.time);
     QString rows;
     for (int r = 0; r < 4; ++r) {
         rows += QStringLiteral("<tr>");

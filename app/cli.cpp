@@ -426,8 +426,7 @@ struct AnimationOptions {
 std::shared_ptr<const rl::Scene> animatedScene(const rl::Scene& scene,
                                                const rl::Animation& animation, double t) {
     auto copy = std::make_shared<rl::Scene>(scene);
-    for (rl::Draw& draw : copy->draws) draw.animation = animation;
-    copy->time = t;
+    rl::animateEveryDraw(*copy, animation, t);
     return copy;
 }
 
@@ -440,23 +439,26 @@ int renderAnimation(const rl::Scene& scene, const rl::Animation& animation, int 
         err << folder.path() << ": cannot create the folder\n";
         return ExitBadInput;
     }
-    for (int k = 0; k < frames; ++k) {
-        const double t = k / framesPerSecond;
-        const auto frameScene = animatedScene(scene, animation, t);
-        auto trace = rl::renderFrame(frameScene);
-        if (!trace) {
-            printDiagnostics(diagnostics, err);
-            return inputError(err, trace.error());
-        }
-        if (k == 0) {
-            diagnostics.append(trace->diagnostics);
-            printDiagnostics(diagnostics, err);
-        }
-        const QString path = folder.filePath(lit("frame_%1.png").arg(k, 4, 10, QLatin1Char('0')));
-        if (!writePng(rl::colourImage(*trace->shading, *trace->depth, frameScene->conventions),
-                      path, out, err, lit("frame %1, t = %2 s").arg(k).arg(t, 0, 'f', 3)))
-            return ExitBadInput;
+    bool written = true;
+    const rl::Status rendered = rl::renderAnimationFrames(
+        *animatedScene(scene, animation, 0.0), frames, framesPerSecond,
+        [&](int k, double t, const rl::FrameTrace& trace) {
+            if (k == 0) {
+                diagnostics.append(trace.diagnostics);
+                printDiagnostics(diagnostics, err);
+            }
+            const QString path =
+                folder.filePath(QString::fromStdString(rl::animationFrameFileName(k)));
+            written =
+                writePng(rl::colourImage(*trace.shading, *trace.depth, trace.scene->conventions),
+                         path, out, err, lit("frame %1, t = %2 s").arg(k).arg(t, 0, 'f', 3));
+            return written;
+        });
+    if (!rendered) {
+        printDiagnostics(diagnostics, err);
+        return inputError(err, rendered.error());
     }
+    if (!written) return ExitBadInput;
     out.flush();
     return ExitOk;
 }
@@ -578,8 +580,10 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
         << rl::shadingModelName(settings.shading) << " shading, " << trace->depth->coveredPixels()
         << " pixels covered, " << QString::number(trace->totalMilliseconds, 'f', 1) << " ms\n";
     if (settings.shading == rl::ShadingModel::Painter) {
-        // One more render of each kind, with the z-buffer, to show what the order got wrong.
-        const auto comparison = rl::compareWithZBuffer(scene, options);
+        // One more render, with the z-buffer, to show what the order got wrong (the painter's
+        // is this one).
+        const auto comparison =
+            rl::compareWithZBuffer(std::make_shared<const rl::FrameTrace>(trace.value()), options);
         if (!comparison) return inputError(err, comparison.error());
         out << "  painter: " << comparison->differing << " pixels differ from the z-buffer render ("
             << comparison->wrongOrder << " where a farther triangle was painted last, "

@@ -9,6 +9,7 @@
 #include <QProgressDialog>
 #include <QStatusBar>
 
+#include "animation.h"
 #include "animation_panel.h"
 #include "frame_image_view.h"
 #include "image_io.h"
@@ -109,40 +110,37 @@ int MainWindow::exportAnimationFrames(const QString& folder) {
         showError(tr("%1: cannot create the folder").arg(folder));
         return 0;
     }
-    // The document's scene at each frame's time, rendered here, one after the other; the
-    // window's own frame is left as it is.
-    SceneDocument::Animation animation = m_animation->settings();
-    animation.enabled = true;
-    SceneDocument document = m_document;
+    // The document's scene with the animation on, rendered here at each frame's time, one
+    // after the other; the window's own frame is left as it is.
+    auto scene = std::make_shared<rl::Scene>(*m_document.scene());
+    rl::animateEveryDraw(*scene, m_animation->settings().motion, 0.0);
     const int frames = m_animation->frameCount();
     QProgressDialog progress(tr("Exporting the animation's frames..."), tr("Cancel"), 0, frames,
                              this);
     progress.setWindowModality(Qt::WindowModal);
     progress.setMinimumDuration(500);
     const QDir dir(folder);
+    const auto path = [&](int k) {
+        return dir.filePath(QString::fromStdString(rl::animationFrameFileName(k)));
+    };
     int written = 0;
-    for (int k = 0; k < frames; ++k) {
-        animation.time = k / m_animation->framesPerSecond();
-        document.setAnimation(animation);
-        const auto scene = document.scene();
-        auto frame = rl::renderFrame(scene);
-        const QString path =
-            dir.filePath(QStringLiteral("frame_%1.png").arg(k, 4, 10, QLatin1Char('0')));
-        if (!frame) {
-            showError(tr("%1: cannot render the frame: %2")
-                          .arg(path, QString::fromStdString(frame.error().toString())));
-            break;
-        }
-        QString error;
-        if (!savePng(toQImage(rl::colourImage(*frame->shading, *frame->depth, scene->conventions)),
-                     path, &error)) {
-            showError(tr("%1: cannot export the image: %2").arg(path, error));
-            break;
-        }
-        ++written;
-        progress.setValue(written);
-        if (progress.wasCanceled()) break;
-    }
+    const rl::Status rendered = rl::renderAnimationFrames(
+        *scene, frames, m_animation->framesPerSecond(),
+        [&](int k, double, const rl::FrameTrace& frame) {
+            QString error;
+            if (!savePng(toQImage(rl::colourImage(*frame.shading, *frame.depth,
+                                                  frame.scene->conventions)),
+                         path(k), &error)) {
+                showError(tr("%1: cannot export the image: %2").arg(path(k), error));
+                return false;
+            }
+            ++written;
+            progress.setValue(written);
+            return !progress.wasCanceled();
+        });
+    if (!rendered)  // every frame before it was written
+        showError(tr("%1: cannot render the frame: %2")
+                      .arg(path(written), QString::fromStdString(rendered.error().toString())));
     statusBar()->showMessage(tr("Exported %1 frames to %2").arg(written).arg(folder), 8000);
     return written;
 }

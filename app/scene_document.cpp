@@ -5,6 +5,7 @@
 
 #include <new>
 
+#include "animation.h"
 #include "camera_basis.h"
 #include "command_file.h"
 #include "course_writers.h"
@@ -184,10 +185,7 @@ std::shared_ptr<const rl::Scene> SceneDocument::scene() const {
     auto scene = std::make_shared<rl::Scene>(
         m_commandFile ? m_commandFile->images[std::size_t(m_imageIndex)].scene
                       : rl::makeCourseScene(m_parts, m_settings));
-    if (m_animation.enabled) {
-        for (rl::Draw& draw : scene->draws) draw.animation = m_animation.motion;
-        scene->time = m_animation.time;
-    }
+    if (m_animation.enabled) rl::animateEveryDraw(*scene, m_animation.motion, m_animation.time);
     return scene;
 }
 

@@ -1,8 +1,12 @@
 #include "animation.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <limits>
+#include <memory>
 #include <numbers>
+
+#include "renderer.h"
 
 namespace rl {
 
@@ -76,6 +80,31 @@ dmat4 animatedWorldFromModel(const Scene& scene, const Draw& draw) {
     // such scenes render bit for bit as before.
     if (!draw.animation) return draw.worldFromModel;
     return animationMatrix(scene, draw, scene.time) * draw.worldFromModel;
+}
+
+void animateEveryDraw(Scene& scene, const Animation& motion, double t) {
+    for (Draw& draw : scene.draws) draw.animation = motion;
+    scene.time = t;
+}
+
+Status renderAnimationFrames(
+    const Scene& scene, int frames, double framesPerSecond,
+    const std::function<bool(int frame, double t, const FrameTrace& trace)>& use) {
+    for (int k = 0; k < frames; ++k) {
+        const double t = k / framesPerSecond;
+        auto frameScene = std::make_shared<Scene>(scene);
+        frameScene->time = t;
+        Result<FrameTrace> trace = renderFrame(std::move(frameScene));
+        if (!trace) return trace.error();
+        if (!use(k, t, trace.value())) break;
+    }
+    return success();
+}
+
+std::string animationFrameFileName(int frame) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.png", frame);
+    return name;
 }
 
 dmat3 normalMatrix(const dmat4& m) {

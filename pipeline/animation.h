@@ -16,12 +16,17 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <optional>
+#include <string>
 
+#include "diagnostics.h"
 #include "math.h"
 #include "scene.h"
 
 namespace rl {
+
+struct FrameTrace;
 
 // M of a draw at time t (seconds); the identity for a draw without an animation. The one
 // function every stage, view and front end uses.
@@ -38,6 +43,19 @@ dvec3 turntableAxis(const Scene& scene);
 // The centre of the bounding box of the draw's vertices, placed by worldFromModel (the
 // origin for a draw without vertices).
 dvec3 worldBoundingBoxCentre(const Draw& draw);
+
+// Puts `motion` on every draw and sets the scene's time: the animation of the window's panel
+// and of the CLI's --time and --animate.
+void animateEveryDraw(Scene& scene, const Animation& motion, double t);
+
+// Renders frames 0 .. frames - 1 of the scene's animation one after the other, frame k being
+// the scene at t = k / framesPerSecond, and hands each to `use`, which returns false to stop.
+// A frame that fails to render ends it with its error (`use` has then seen the frames before).
+Status renderAnimationFrames(
+    const Scene& scene, int frames, double framesPerSecond,
+    const std::function<bool(int frame, double t, const FrameTrace& trace)>& use);
+// The file an animation's frame is written to: frame_0000.png, frame_0001.png ...
+std::string animationFrameFileName(int frame);
 
 // The matrix that carries normals: the inverse transpose of m's upper 3x3.
 dmat3 normalMatrix(const dmat4& m);

@@ -59,33 +59,53 @@ std::shared_ptr<const Scene> zBufferSceneOf(const Scene& scene) {
     return withShading(scene, ShadingModel::Flat);
 }
 
-Result<PainterComparison> compareWithZBuffer(const std::shared_ptr<const Scene>& scene,
-                                             const RenderOptions& options) {
-    if (!scene)
-        return makeError(ErrorCode::Usage, SourceLocation{"<scene>", 0, 0}, "no scene to render");
-    Result<FrameTrace> painted = renderFrame(painterSceneOf(*scene), options);
+namespace {
+
+bool everyDraw(const Scene& scene, ShadingModel model) {
+    return std::all_of(scene.draws.begin(), scene.draws.end(),
+                       [model](const Draw& draw) { return draw.shading == model; });
+}
+
+// `frame` when there is one, else a render of `scene`.
+Result<std::shared_ptr<const FrameTrace>> reuseOrRender(std::shared_ptr<const FrameTrace> frame,
+                                                        std::shared_ptr<const Scene> scene,
+                                                        const RenderOptions& options) {
+    if (frame) return frame;
+    Result<FrameTrace> rendered = renderFrame(std::move(scene), options);
+    if (!rendered) return rendered.error();
+    return std::make_shared<const FrameTrace>(std::move(rendered).value());
+}
+
+// The comparison of a painter's frame (of painterSceneOf(scene)) with a z-buffer's (of
+// zBufferSceneOf(scene)): the given ones, or renders of them.
+Result<PainterComparison> compare(const Scene& scene, std::shared_ptr<const FrameTrace> painter,
+                                  std::shared_ptr<const FrameTrace> zBuffer,
+                                  const RenderOptions& options) {
+    auto painted = reuseOrRender(std::move(painter), painterSceneOf(scene), options);
     if (!painted) return painted.error();
-    Result<FrameTrace> tested = renderFrame(zBufferSceneOf(*scene), options);
+    auto tested = reuseOrRender(std::move(zBuffer), zBufferSceneOf(scene), options);
     if (!tested) return tested.error();
     PainterComparison out;
-    out.painter = std::make_shared<const FrameTrace>(std::move(painted).value());
-    out.zBuffer = std::make_shared<const FrameTrace>(std::move(tested).value());
+    out.painter = std::move(painted).value();
+    out.zBuffer = std::move(tested).value();
     const FrameTrace& p = *out.painter;
     const FrameTrace& z = *out.zBuffer;
     // The projection is the same but for the order: the z-buffer frame's, sorted, is the
     // painter's.
     out.zBufferIndex = painterOrder(*z.scene, *z.projection);
-    std::vector<std::uint32_t> painterIndex(out.zBufferIndex.size());
+    out.painterRank.resize(out.zBufferIndex.size());
     for (std::size_t rank = 0; rank < out.zBufferIndex.size(); ++rank)
-        painterIndex[out.zBufferIndex[rank]] = static_cast<std::uint32_t>(rank);
+        out.painterRank[out.zBufferIndex[rank]] = static_cast<std::uint32_t>(rank);
     out.hiddenWrongly.assign(out.zBufferIndex.size(), 0);
     out.coversWrongly.assign(out.zBufferIndex.size(), 0);
 
-    const Rgba8Image painterImage = colourImage(*p.shading, *p.depth, p.scene->conventions);
-    const Rgba8Image zImage = colourImage(*z.shading, *z.depth, z.scene->conventions);
-    out.mask.reset(scene->width, scene->height, PixelDifference::Same);
-    for (int y = 0; y < scene->height; ++y) {
-        for (int x = 0; x < scene->width; ++x) {
+    out.painterImage = colourImage(*p.shading, *p.depth, p.scene->conventions);
+    out.zBufferImage = colourImage(*z.shading, *z.depth, z.scene->conventions);
+    const Rgba8Image& painterImage = out.painterImage;
+    const Rgba8Image& zImage = out.zBufferImage;
+    out.mask.reset(scene.width, scene.height, PixelDifference::Same);
+    for (int y = 0; y < scene.height; ++y) {
+        for (int x = 0; x < scene.width; ++x) {
             if (std::equal(painterImage.pixel(x, y), painterImage.pixel(x, y) + 4,
                            zImage.pixel(x, y)))
                 continue;
@@ -98,7 +118,7 @@ Result<PainterComparison> compareWithZBuffer(const std::shared_ptr<const Scene>&
                 out.mask.at(x, y) = PixelDifference::WrongOrder;
                 ++out.wrongOrder;
                 if (shown != kNoTriangle) ++out.coversWrongly[shown];
-                if (winner != kNoTriangle) ++out.hiddenWrongly[painterIndex[winner]];
+                if (winner != kNoTriangle) ++out.hiddenWrongly[out.painterRank[winner]];
             } else {
                 out.mask.at(x, y) = PixelDifference::Tie;
                 ++out.ties;
@@ -108,9 +128,26 @@ Result<PainterComparison> compareWithZBuffer(const std::shared_ptr<const Scene>&
     return out;
 }
 
+}  // namespace
+
+Result<PainterComparison> compareWithZBuffer(const std::shared_ptr<const Scene>& scene,
+                                             const RenderOptions& options) {
+    if (!scene)
+        return makeError(ErrorCode::Usage, SourceLocation{"<scene>", 0, 0}, "no scene to render");
+    return compare(*scene, nullptr, nullptr, options);
+}
+
+Result<PainterComparison> compareWithZBuffer(const std::shared_ptr<const FrameTrace>& frame,
+                                             const RenderOptions& options) {
+    if (!frame || !frame->scene)
+        return makeError(ErrorCode::Usage, SourceLocation{"<scene>", 0, 0}, "no scene to render");
+    const Scene& scene = *frame->scene;
+    return compare(scene, everyDraw(scene, ShadingModel::Painter) ? frame : nullptr,
+                   everyDraw(scene, ShadingModel::Flat) ? frame : nullptr, options);
+}
+
 Rgba8Image differenceImage(const PainterComparison& comparison) {
-    const FrameTrace& z = *comparison.zBuffer;
-    Rgba8Image out = colourImage(*z.shading, *z.depth, z.scene->conventions);
+    Rgba8Image out = comparison.zBufferImage;
     for (int y = 0; y < out.height; ++y) {
         for (int x = 0; x < out.width; ++x) {
             std::uint8_t* p = out.rgba.data() + (static_cast<std::size_t>(y) * out.width + x) * 4;

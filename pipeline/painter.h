@@ -75,9 +75,11 @@ struct PainterComparison {
     std::size_t differing = 0;   // pixels whose bytes differ
     std::size_t wrongOrder = 0;  // of those, where a farther triangle was painted last
     std::size_t ties = 0;        // of those, where the two triangles are as near
+    // The two images, as colourImage makes them.
+    Rgba8Image painterImage, zBufferImage;
     // Per triangle of the painter's frame (its painted rank): the z-buffer frame's index of
-    // the same triangle.
-    std::vector<std::uint32_t> zBufferIndex;
+    // the same triangle; and back, per triangle of the z-buffer's frame: its painted rank.
+    std::vector<std::uint32_t> zBufferIndex, painterRank;
     // Per triangle of the painter's frame: the pixels where it is the nearest (the z-buffer
     // shows it) but a triangle painted after it covers it, and the pixels where it covers a
     // nearer triangle painted before it.
@@ -85,6 +87,11 @@ struct PainterComparison {
 };
 
 Result<PainterComparison> compareWithZBuffer(const std::shared_ptr<const Scene>& scene,
+                                             const RenderOptions& options = {});
+// The same for a frame already rendered (of frame->scene), which is one of the two renders
+// when every draw of its scene is painted (the painter's) or flat (the z-buffer's): it is
+// used as it is, and only the other one is rendered.
+Result<PainterComparison> compareWithZBuffer(const std::shared_ptr<const FrameTrace>& frame,
                                              const RenderOptions& options = {});
 
 // The comparison as a picture: the z-buffer image at a third of its brightness, the pixels

@@ -86,6 +86,28 @@ rl::Scene handScene(rl::ShadingModel shading, const std::vector<rl::dvec3>& extr
     return scene;
 }
 
+rl::Draw ambientDraw(const char* name, std::shared_ptr<const rl::Mesh> mesh, float ka,
+                     rl::ShadingModel shading) {
+    rl::Draw draw;
+    draw.name = name;
+    draw.mesh = std::move(mesh);
+    draw.shading = shading;
+    draw.material.ka = ka;
+    draw.material.kd = rl::vec3(1.0f);
+    draw.material.od = rl::vec3(1.0f);
+    return draw;
+}
+
+rl::Scene painterFailureScene(rl::ShadingModel shading, int size) {
+    rl::Scene scene = makeScene(axisCamera(), nullptr, size, size);
+    scene.draws = {
+        ambientDraw("S", makeMesh({{3, 3, 3}, {1.5, 3, 3}, {3, 1.5, 3}}, {{0, 1, 2}}), 1.0f,
+                    shading),
+        ambientDraw("L", makeMesh({{1, 1, 1}, {-10, 10, 10}, {10, -10, 10}}, {{0, 1, 2}}), 0.5f,
+                    shading)};
+    return scene;
+}
+
 rl::Projection screenTriangles(const std::vector<rl::dvec2>& points,
                                const std::vector<std::array<std::uint32_t, 3>>& triangles,
                                const std::vector<float>& depths) {

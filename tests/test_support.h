@@ -64,6 +64,25 @@ rl::Scene handScene(rl::ShadingModel shading = rl::ShadingModel::Phong,
                     const std::vector<rl::dvec3>& extraPositions = {},
                     const std::vector<std::array<std::uint32_t, 3>>& extraTriangles = {});
 
+// A draw of makeScene's material with its own ka: under makeScene's ambient light alone
+// (Ia = 10) its colour is 10 ka, its byte (int)(10 ka).
+rl::Draw ambientDraw(const char* name, std::shared_ptr<const rl::Mesh> mesh, float ka,
+                     rl::ShadingModel shading = rl::ShadingModel::Painter);
+
+// The painter's failure (tst_painter, tst_painter_view), seen by the axis camera on a
+// size x size screen: a small triangle S (draw 0, ka = 1, colour 10) at z = 3 on screen
+// (0,0) (2,0) (0,2), and a long sloping triangle L (draw 1, ka = 0.5, colour 5) from z = 1 at
+// screen (0,0) to z = 10 at (8,0) and (0,8) (in eighths of the screen when size is not 8).
+//   S: world (3,3,3) (1.5,3,3) (3,1.5,3); barycentre view (-2.5, 2.5, 3),
+//      |b| = sqrt(6.25 + 6.25 + 9) = sqrt(21.5) = 4.636809.
+//   L: world (1,1,1) (-10,10,10) (10,-10,10); barycentre view (-1/3, 1/3, 7),
+//      |b| = sqrt(1/9 + 1/9 + 49) = sqrt(443)/3 = 7.015855.
+// L is farther by its barycentre: painted first, then S over it. But at 8x8 L's depth at pixel
+// (x, y) is 1 + 9 (x + y)/8 (screen barycentrics x/8, y/8): 1 at (0,0), 2.125 at (1,0) and
+// (0,1), 3.25 where x + y = 2. Of S's six pixels (x + y <= 2), L is nearer than S's 3 at
+// three: (0,0), (1,0), (0,1). There the z-buffer shows L (5), the painter S (10).
+rl::Scene painterFailureScene(rl::ShadingModel shading = rl::ShadingModel::Painter, int size = 8);
+
 // A projection holding screen triangles given directly in pixels (one draw), with a depth
 // per vertex (1 when not given), for the scan conversion and depth test suites.
 rl::Projection screenTriangles(const std::vector<rl::dvec2>& points,

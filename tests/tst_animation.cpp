@@ -292,6 +292,38 @@ private slots:
                  qPrintable(QString::number(differingPixels(qimage(*x), qimage(*z)))));
     }
 
+    void frameLoopRendersEachTime() {
+        // renderAnimationFrames: frame k is the scene at t = k / fps, as rendered on its own;
+        // `use` returning false stops it.
+        const auto still = trefoil();
+        Animation a;
+        a.degreesPerSecond = 90.0;
+        auto moving = std::make_shared<Scene>(*still);
+        animateEveryDraw(*moving, a, 5.0);  // the scene's own time is not used
+        QCOMPARE(moving->time, 5.0);
+        QVERIFY(moving->draws[0].animation == a);
+        std::vector<int> frames;
+        std::vector<double> times;
+        int same = 0;
+        const auto use = [&](int k, double t, const FrameTrace& f) {
+            frames.push_back(k);
+            times.push_back(t);
+            same += sameFrame(f, *testing::renderTrace(withAnimation(*still, a, k / 8.0))) ? 1 : 0;
+            return true;
+        };
+        QVERIFY(renderAnimationFrames(*moving, 3, 8.0, use).ok());
+        QCOMPARE(frames, (std::vector<int>{0, 1, 2}));
+        QCOMPARE(same, 3);
+        QCOMPARE(times, (std::vector<double>{0.0, 0.125, 0.25}));
+        int calls = 0;
+        QVERIFY(renderAnimationFrames(*moving, 5, 8.0, [&](int, double, const FrameTrace&) {
+                    return ++calls < 2;
+                }).ok());
+        QCOMPARE(calls, 2);
+        QCOMPARE(animationFrameFileName(7), std::string("frame_0007.png"));
+        QCOMPARE(animationFrameFileName(12345), std::string("frame_12345.png"));
+    }
+
     void cliWritesNumberedFrames() {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());

@@ -24,29 +24,12 @@ using rasterlab::PainterView;
 
 namespace {
 
-Draw ambientDraw(const char* name, std::shared_ptr<const Mesh> mesh, float ka,
-                 ShadingModel shading) {
-    Draw draw;
-    draw.name = name;
-    draw.mesh = std::move(mesh);
-    draw.shading = shading;
-    draw.material.ka = ka;
-    draw.material.kd = vec3(1.0f);
-    draw.material.od = vec3(1.0f);
-    return draw;
-}
-
-// S (draw 0, z = 3, screen (0,0) (2,0) (0,2) on 8x8) and L (draw 1, from z = 1 at (0,0) to
-// z = 10): L's barycentre is farther (sqrt(443)/3 = 7.01586 against sqrt(21.5) = 4.63681), but
-// L is nearer at (0,0), (1,0) and (0,1). `size` scales the screen (the same story, larger).
+// The painter's failure of tst_painter (numbers in test_support.h): L's barycentre is farther
+// (sqrt(443)/3 = 7.01586 against sqrt(21.5) = 4.63681), but L is nearer at (0,0), (1,0) and
+// (0,1). `size` scales the screen (the same story, larger).
 std::shared_ptr<const Scene> failureScene(ShadingModel shading, int size = 8,
                                           bool colours = false) {
-    Scene scene = testing::makeScene(testing::axisCamera(), nullptr, size, size);
-    scene.draws = {
-        ambientDraw("S", testing::makeMesh({{3, 3, 3}, {1.5, 3, 3}, {3, 1.5, 3}}, {{0, 1, 2}}),
-                    1.0f, shading),
-        ambientDraw("L", testing::makeMesh({{1, 1, 1}, {-10, 10, 10}, {10, -10, 10}}, {{0, 1, 2}}),
-                    0.5f, shading)};
+    Scene scene = testing::painterFailureScene(shading, size);
     if (colours) {
         // For the pictures: a light behind the camera, S green, L orange.
         scene.lights.push_back({dvec4(0.0, 0.0, -5.0, 1.0), vec3(255.0f), {}});

@@ -16,7 +16,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "animation.h"
 #include "frame_trace.h"
 #include "inspection.h"
 #include "number_text.h"
@@ -40,13 +39,9 @@ const QColor kCloud(170, 170, 180, 130);
 const QColor kFrustum(215, 215, 215);
 const QColor kText(230, 230, 230);
 
-// Where a vertex is in this frame: moved by the draw's animation matrix M(t), if it has one.
-dvec3 worldPoint(const rl::Scene& scene, const rl::Draw& draw, const rl::dvec4& pModel) {
-    return rl::cartesian(rl::animatedWorldFromModel(scene, draw) * pModel);
-}
-
-// The mesh vertices in world space, at most kMaxCloudPoints of them (every k-th).
-std::vector<dvec3> cloudOf(const rl::Scene& scene) {
+// The mesh vertices in world space, at most kMaxCloudPoints of them (every k-th), where they
+// are in this frame: placed by the view transform's worldFromModel (M(t) included).
+std::vector<dvec3> cloudOf(const rl::Scene& scene, const rl::ViewTransform& view) {
     std::size_t total = 0;
     for (const rl::Draw& draw : scene.draws)
         if (draw.mesh) total += draw.mesh->positions.size();
@@ -55,9 +50,10 @@ std::vector<dvec3> cloudOf(const rl::Scene& scene) {
     std::vector<dvec3> cloud;
     cloud.reserve(total / stride + 1);
     std::size_t i = 0;
-    for (const rl::Draw& draw : scene.draws) {
+    for (std::size_t d = 0; d < scene.draws.size(); ++d) {
+        const rl::Draw& draw = scene.draws[d];
         if (!draw.mesh) continue;
-        const rl::dmat4 worldFromModel = rl::animatedWorldFromModel(scene, draw);
+        const rl::dmat4& worldFromModel = view.worldFromModel[d];
         for (const rl::dvec4& p : draw.mesh->positions) {
             if (i++ % stride != 0) continue;
             const dvec3 w = rl::cartesian(worldFromModel * p);
@@ -635,7 +631,8 @@ void CameraBasisView::refresh() {
     QString example;
     const rl::Scene& scene = *frame->scene;
     if (!scene.draws.empty() && scene.draws[0].mesh && !scene.draws[0].mesh->positions.empty()) {
-        const dvec3 pWorld = worldPoint(scene, scene.draws[0], scene.draws[0].mesh->positions[0]);
+        const dvec3 pWorld =
+            rl::cartesian(frame->view->worldFromModel[0] * scene.draws[0].mesh->positions[0]);
         const dvec3 q = pWorld - b.c;
         const dvec3 pView(glm::dot(b.u, q), glm::dot(b.v, q), glm::dot(b.n, q));
         example = tr("<p>Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), "
@@ -661,7 +658,7 @@ void CameraBasisView::refresh() {
     picture.d = camera.d;
     picture.hx = camera.hx;
     picture.hy = camera.hy;
-    picture.cloud = cloudOf(scene);
+    picture.cloud = cloudOf(scene, *frame->view);
     placePicture(picture);
     m_canvas->setMessage(QString());
     m_canvas->setPicture(std::move(picture));

@@ -23,6 +23,7 @@
 #include "mesh_topology.h"
 #include "number_text.h"
 #include "output_image.h"
+#include "painter.h"
 #include "shading.h"
 
 namespace rasterlab {
@@ -41,13 +42,6 @@ const QColor kSelectedColour(255, 214, 10);
 const QColor kTriangleHairColour(255, 160, 40);
 const QColor kVertexHairColour(70, 200, 255);
 const QColor kWrongHairColour(150, 255, 80);
-
-// A triangle's centroid in view space.
-rl::dvec3 centroid(const rl::DrawProjection& proj, const std::array<std::uint32_t, 3>& c) {
-    return (rl::cartesian(proj.pView[c[0]]) + rl::cartesian(proj.pView[c[1]]) +
-            rl::cartesian(proj.pView[c[2]])) /
-           3.0;
-}
 
 // A normal's hair: from its foot in view space, `length` long, both ends carried to image
 // pixels by the draw's projection; none for a zero normal or an end at or behind the near
@@ -760,7 +754,8 @@ void NormalsView::refreshGeometry() {
                 if (!hairTriangles[d][t]) continue;
                 if (triangleIndex++ % static_cast<std::size_t>(m_picture.triangleHairStep) != 0)
                     continue;
-                const rl::dvec3 foot = centroid(proj, draw.mesh->triangles[t]);
+                const rl::dvec3 foot =
+                    rl::viewBarycentre(proj, *draw.mesh, static_cast<std::uint32_t>(t));
                 if (const auto line = hair(foot, normals.triangle[t]))
                     m_picture.triangleHairs.push_back(*line);
                 if (!wrong) continue;
@@ -801,7 +796,8 @@ void NormalsView::refreshSelection() {
         if (!m_picture.normalsSkipped) {
             const rl::Scene& scene = *frame->scene;
             const rl::DrawNormals& normals = frame->normals->draws[tri.draw];
-            const auto& c = scene.draws[tri.draw].mesh->triangles[tri.source];
+            const rl::Mesh& mesh = *scene.draws[tri.draw].mesh;
+            const auto& c = mesh.triangles[tri.source];
             const double length = tri.draw < m_picture.drawHairLength.size()
                                       ? m_picture.drawHairLength[tri.draw]
                                       : 0.0;
@@ -810,13 +806,14 @@ void NormalsView::refreshSelection() {
                 if (const auto line = hairLine(scene, projection, proj, length, foot, n))
                     to.push_back(*line);
             };
-            add(m_picture.selectedTriangleHairs, centroid(proj, c), normals.triangle[tri.source]);
+            const rl::dvec3 foot = rl::viewBarycentre(proj, mesh, tri.source);
+            add(m_picture.selectedTriangleHairs, foot, normals.triangle[tri.source]);
             for (std::uint32_t v : c)
                 add(m_picture.selectedVertexHairs, rl::cartesian(proj.pView[v]), normals.vertex[v]);
             if (m_wrong->isChecked() && frame->view)
-                add(m_picture.selectedWrongHairs, centroid(proj, c),
-                    rl::vec3(rl::carriedTriangleNormal(frame->view->viewFromModel[tri.draw],
-                                                       *scene.draws[tri.draw].mesh, tri.source)
+                add(m_picture.selectedWrongHairs, foot,
+                    rl::vec3(rl::carriedTriangleNormal(frame->view->viewFromModel[tri.draw], mesh,
+                                                       tri.source)
                                  .wrong));
         }
     }

@@ -10,7 +10,7 @@
 #include <QTableView>
 #include <QVBoxLayout>
 
-#include <algorithm>
+#include <vector>
 
 #include "frame_image_view.h"
 #include "inspection.h"
@@ -239,7 +239,11 @@ void PainterView::recompute() {
     m_error.clear();
     m_zBufferPixels.clear();
     if (frame && frame->scene) {
-        auto result = rl::compareWithZBuffer(frame->scene);
+        // A frame whose draws are all flat is the z-buffer's render: it is used as it is. A
+        // painter frame is rendered again: the dock's render checks the window's (the same
+        // bytes, tst_painter_view).
+        auto result = frame->depth && frame->depth->painted ? rl::compareWithZBuffer(frame->scene)
+                                                            : rl::compareWithZBuffer(frame);
         if (result)
             m_comparison = std::make_shared<const rl::PainterComparison>(std::move(result).value());
         else
@@ -252,22 +256,26 @@ void PainterView::recompute() {
         const rl::PainterComparison& c = *m_comparison;
         const rl::FrameTrace& p = *c.painter;
         const rl::FrameTrace& z = *c.zBuffer;
-        m_painted = toQImage(rl::colourImage(*p.shading, *p.depth, p.scene->conventions));
-        m_zImage = toQImage(rl::colourImage(*z.shading, *z.depth, z.scene->conventions));
+        m_painted = toQImage(c.painterImage);
+        m_zImage = toQImage(c.zBufferImage);
         const int w = p.scene->width, h = p.scene->height;
         m_order = QImage(w, h, QImage::Format_RGB32);
-        std::vector<std::uint32_t> inverse(c.zBufferIndex.size());
-        for (std::size_t r = 0; r < c.zBufferIndex.size(); ++r)
-            inverse[c.zBufferIndex[r]] = static_cast<std::uint32_t>(r);
         m_zBufferPixels.assign(c.zBufferIndex.size(), 0);
         const std::size_t n = p.projection->triangles.size();
+        // Each rank's colour once, when a pixel first shows it (0: not yet; a colour is opaque).
+        std::vector<QRgb> colours(n, 0);
         for (int y = 0; y < h; ++y) {
             auto* orderRow = reinterpret_cast<QRgb*>(m_order.scanLine(y));
             for (int x = 0; x < w; ++x) {
                 const std::uint32_t t = p.depth->triangle.at(x, y);
-                orderRow[x] = t == rl::kNoTriangle ? qRgb(0, 0, 0) : rankColour(t, n).rgb();
+                if (t == rl::kNoTriangle) {
+                    orderRow[x] = qRgb(0, 0, 0);
+                } else {
+                    if (colours[t] == 0) colours[t] = rankColour(t, n).rgb();
+                    orderRow[x] = colours[t];
+                }
                 const std::uint32_t nearest = z.depth->triangle.at(x, y);
-                if (nearest != rl::kNoTriangle) ++m_zBufferPixels[inverse[nearest]];
+                if (nearest != rl::kNoTriangle) ++m_zBufferPixels[c.painterRank[nearest]];
             }
         }
     }
@@ -301,10 +309,7 @@ std::optional<std::uint32_t> PainterView::rankOf(std::uint32_t frameTriangle) co
         return std::nullopt;
     // A painter frame is numbered in painted order; any other in the z-buffer's (draw) order.
     if (frame->depth && frame->depth->painted) return frameTriangle;
-    const auto& index = m_comparison->zBufferIndex;
-    const auto it = std::find(index.begin(), index.end(), frameTriangle);
-    if (it == index.end()) return std::nullopt;
-    return static_cast<std::uint32_t>(it - index.begin());
+    return m_comparison->painterRank[frameTriangle];
 }
 
 std::optional<std::uint32_t> PainterView::frameTriangleOf(std::uint32_t rank) const {

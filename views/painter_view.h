@@ -1,6 +1,7 @@
 // Seed 004's painter's algorithm beside the z-buffer. The scene of the frame shown is rendered
 // both ways (rl::compareWithZBuffer: the same flat colours, one painted far to near without a
-// depth test, one with it), whatever shading the frame itself uses:
+// depth test, one with it), whatever shading the frame itself uses; a flat frame is the
+// z-buffer's render already, and is not rendered again:
 //  - the sort order: the triangles in painted order with their barycentre's distance, and an
 //    image of each pixel's painted rank (far blue, near red);
 //  - the painter's image and the z-buffer's side by side, the pixels where they differ

@@ -90,11 +90,8 @@ rl::dvec4 VertexTableModel::worldHomogeneous(std::uint32_t draw, std::uint32_t v
         return a + g.t * (worldHomogeneous(draw, g.b) - a);
     }
     // M(t) * worldFromModel, as the view transform used it (animation.h).
-    const rl::Draw& d = m_frame->scene->draws[draw];
-    const rl::dmat4& worldFromModel = m_frame->view && draw < m_frame->view->worldFromModel.size()
-                                          ? m_frame->view->worldFromModel[draw]
-                                          : d.worldFromModel;
-    return worldFromModel * d.mesh->positions[vertex];
+    return m_frame->view->worldFromModel[draw] *
+           m_frame->scene->draws[draw].mesh->positions[vertex];
 }
 
 rl::dvec3 VertexTableModel::worldOf(VertexRef vertex) const {
