@@ -306,14 +306,6 @@
         <source>N.L &lt; 0 at (%1, %2)</source>
         <translation>N.L &lt; 0 at (%1, %2)</translation>
     </message>
-    <message>
-        <source>any pixel written the %1th time</source>
-        <translation type="vanished">any pixel written the %1th time</translation>
-    </message>
-    <message>
-        <source>(%1, %2) written the %3th time</source>
-        <translation type="vanished">(%1, %2) written the %3th time</translation>
-    </message>
     <message numerus="yes">
         <location filename="../views/breakpoints_view.cpp" line="45"/>
         <source>any pixel written %n time(s)</source>
@@ -414,37 +406,37 @@
 <context>
     <name>rasterlab::CameraBasisCanvas</name>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="177"/>
+        <location filename="../views/camera_basis_view.cpp" line="173"/>
         <source>Drag to turn the scene, wheel to zoom, double-click to reset.</source>
         <translation>Drag to turn the scene, wheel to zoom, double-click to reset.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="180"/>
+        <location filename="../views/camera_basis_view.cpp" line="176"/>
         <source>Reset view</source>
         <translation>Reset view</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="181"/>
+        <location filename="../views/camera_basis_view.cpp" line="177"/>
         <source>Turn the 3D drawing back to where it started</source>
         <translation>Turn the 3D drawing back to where it started</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="368"/>
+        <location filename="../views/camera_basis_view.cpp" line="364"/>
         <source>window (d = %1)</source>
         <translation>window (d = %1)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="372"/>
+        <location filename="../views/camera_basis_view.cpp" line="368"/>
         <source>frustum</source>
         <translation>frustum</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="385"/>
+        <location filename="../views/camera_basis_view.cpp" line="381"/>
         <source>N given, |N| = %1</source>
         <translation>N given, |N| = %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="388"/>
+        <location filename="../views/camera_basis_view.cpp" line="384"/>
         <source>V given, |V| = %1</source>
         <translation>V given, |V| = %1</translation>
     </message>
@@ -452,127 +444,127 @@
 <context>
     <name>rasterlab::CameraBasisView</name>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="450"/>
+        <location filename="../views/camera_basis_view.cpp" line="446"/>
         <source>Previous step</source>
         <translation>Previous step</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="454"/>
+        <location filename="../views/camera_basis_view.cpp" line="450"/>
         <source>Next step</source>
         <translation>Next step</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="566"/>
+        <location filename="../views/camera_basis_view.cpp" line="562"/>
         <source>The camera was rejected: %1</source>
         <translation>The camera was rejected: %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="569"/>
+        <location filename="../views/camera_basis_view.cpp" line="565"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="571"/>
+        <location filename="../views/camera_basis_view.cpp" line="567"/>
         <source>This stage is skipped: %1.</source>
         <translation>This stage is skipped: %1.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="573"/>
+        <location filename="../views/camera_basis_view.cpp" line="569"/>
         <source>the frame has no camera basis</source>
         <translation>the frame has no camera basis</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="580"/>
+        <location filename="../views/camera_basis_view.cpp" line="576"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; From the course camera (C, N, V) Gram-Schmidt makes the orthonormal basis U, V, N of view space. A scene whose draws carry their own model/view matrices (HW2 command files) has no course camera: this stage does nothing for it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; From the course camera (C, N, V) Gram-Schmidt makes the orthonormal basis U, V, N of view space. A scene whose draws carry their own model/view matrices (HW2 command files) has no course camera: this stage does nothing for it.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="593"/>
+        <location filename="../views/camera_basis_view.cpp" line="589"/>
         <source>N and V are nearly parallel: |V − (V·N) N| / |V| = %1, below %2. The basis is ill-conditioned: a tiny change of N or V turns U and V a lot. Choose a V further from N.</source>
         <translation>N and V are nearly parallel: |V − (V·N) N| / |V| = %1, below %2. The basis is ill-conditioned: a tiny change of N or V turns U and V a lot. Choose a V further from N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="598"/>
+        <location filename="../views/camera_basis_view.cpp" line="594"/>
         <source>1. N := N / |N| = %1 / %2 = %3</source>
         <translation>1. N := N / |N| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="600"/>
+        <location filename="../views/camera_basis_view.cpp" line="596"/>
         <source>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</source>
         <translation>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="602"/>
+        <location filename="../views/camera_basis_view.cpp" line="598"/>
         <source>3. V := V / |V| = %1 / %2 = %3</source>
         <translation>3. V := V / |V| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="604"/>
+        <location filename="../views/camera_basis_view.cpp" line="600"/>
         <source>4. U := N × V = %1 × %2 = %3</source>
         <translation>4. U := N × V = %1 × %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="606"/>
+        <location filename="../views/camera_basis_view.cpp" line="602"/>
         <source>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; largest %7</source>
         <translation>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; largest %7</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="630"/>
+        <location filename="../views/camera_basis_view.cpp" line="626"/>
         <source>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): rows U, V, N, then (0 0 0 1); the last column is −U·C, −V·C, −N·C.</source>
         <translation>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): rows U, V, N, then (0 0 0 1); the last column is −U·C, −V·C, −N·C.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="641"/>
+        <location filename="../views/camera_basis_view.cpp" line="638"/>
         <source>&lt;p&gt;Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="644"/>
+        <location filename="../views/camera_basis_view.cpp" line="641"/>
         <source>, in front of the camera (z &gt; 0)</source>
         <translation>, in front of the camera (z &gt; 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="645"/>
+        <location filename="../views/camera_basis_view.cpp" line="642"/>
         <source>, behind the camera (z ≤ 0)</source>
         <translation>, behind the camera (z ≤ 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="648"/>
+        <location filename="../views/camera_basis_view.cpp" line="645"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; Gram-Schmidt keeps the direction of N (where the camera looks), removes from V its part along N so that up is perpendicular to the view direction, and completes the frame with U = N × V, the image&apos;s right. viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; Gram-Schmidt keeps the direction of N (where the camera looks), removes from V its part along N so that up is perpendicular to the view direction, and completes the frame with U = N × V, the image&apos;s right. viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="680"/>
+        <location filename="../views/camera_basis_view.cpp" line="677"/>
         <source>Step %1 of 4</source>
         <translation>Step %1 of 4</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="694"/>
+        <location filename="../views/camera_basis_view.cpp" line="691"/>
         <source>Step forward to normalise N.</source>
         <translation>Step forward to normalise N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="695"/>
+        <location filename="../views/camera_basis_view.cpp" line="692"/>
         <source>Step forward to remove from V its part along N.</source>
         <translation>Step forward to remove from V its part along N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="696"/>
+        <location filename="../views/camera_basis_view.cpp" line="693"/>
         <source>Step forward to normalise V.</source>
         <translation>Step forward to normalise V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="697"/>
+        <location filename="../views/camera_basis_view.cpp" line="694"/>
         <source>Step forward to make U = N × V.</source>
         <translation>Step forward to make U = N × V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="698"/>
+        <location filename="../views/camera_basis_view.cpp" line="695"/>
         <source>The basis is complete; the frustum is drawn with it.</source>
         <translation>The basis is complete; the frustum is drawn with it.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="711"/>
+        <location filename="../views/camera_basis_view.cpp" line="708"/>
         <source>&lt;b&gt;Orthonormality residuals&lt;/b&gt; (0 up to rounding): %1</source>
         <translation>&lt;b&gt;Orthonormality residuals&lt;/b&gt; (0 up to rounding): %1</translation>
     </message>
@@ -580,427 +572,403 @@
 <context>
     <name>rasterlab::EditPanel</name>
     <message>
-        <location filename="../app/edit_panel.cpp" line="219"/>
+        <location filename="../app/edit_panel.cpp" line="215"/>
         <source>One kd for the three channels (the UFPE files have one number): changing one changes all three</source>
         <translation>One kd for the three channels (the UFPE files have one number): changing one changes all three</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="260"/>
+        <location filename="../app/edit_panel.cpp" line="256"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="260"/>
+        <location filename="../app/edit_panel.cpp" line="256"/>
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="260"/>
+        <location filename="../app/edit_panel.cpp" line="256"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="263"/>
-        <location filename="../app/edit_panel.cpp" line="693"/>
+        <location filename="../app/edit_panel.cpp" line="259"/>
+        <location filename="../app/edit_panel.cpp" line="691"/>
         <source>Camera</source>
         <translation>Camera</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="265"/>
+        <location filename="../app/edit_panel.cpp" line="261"/>
         <source>C: the camera&apos;s position (world)</source>
         <translation>C: the camera&apos;s position (world)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="268"/>
+        <location filename="../app/edit_panel.cpp" line="264"/>
         <source>N: the view direction (normalised by the camera basis)</source>
         <translation>N: the view direction (normalised by the camera basis)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="270"/>
+        <location filename="../app/edit_panel.cpp" line="266"/>
         <source>V: the up vector (made orthogonal to N by Gram-Schmidt)</source>
         <translation>V: the up vector (made orthogonal to N by Gram-Schmidt)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="272"/>
+        <location filename="../app/edit_panel.cpp" line="268"/>
         <source>d: the distance from C to the projection plane</source>
         <translation>d: the distance from C to the projection plane</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="274"/>
+        <location filename="../app/edit_panel.cpp" line="270"/>
         <source>hx: half the width of the window on the projection plane</source>
         <translation>hx: half the width of the window on the projection plane</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="276"/>
+        <location filename="../app/edit_panel.cpp" line="272"/>
         <source>hy: half the height of the window on the projection plane</source>
         <translation>hy: half the height of the window on the projection plane</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="280"/>
+        <location filename="../app/edit_panel.cpp" line="276"/>
         <source>Light</source>
         <translation>Light</translation>
     </message>
     <message>
-        <source>The light whose position and colour are shown</source>
-        <translation type="vanished">The light whose position and colour are shown</translation>
-    </message>
-    <message>
-        <source>Pl: the light&apos;s position (world)</source>
-        <translation type="vanished">Pl: the light&apos;s position (world)</translation>
-    </message>
-    <message>
-        <location filename="../app/edit_panel.cpp" line="283"/>
+        <location filename="../app/edit_panel.cpp" line="279"/>
         <source>The light whose values are shown</source>
         <translation>The light whose values are shown</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="289"/>
+        <location filename="../app/edit_panel.cpp" line="285"/>
         <source>Add a light: a copy of the light shown</source>
         <translation>Add a light: a copy of the light shown</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="294"/>
+        <location filename="../app/edit_panel.cpp" line="290"/>
         <source>Remove the light shown (the scene keeps one light at least)</source>
         <translation>Remove the light shown (the scene keeps one light at least)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="303"/>
+        <location filename="../app/edit_panel.cpp" line="299"/>
         <source>Pl: the light&apos;s position (world), or the direction toward it for a directional light</source>
         <translation>Pl: the light&apos;s position (world), or the direction toward it for a directional light</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="306"/>
+        <location filename="../app/edit_panel.cpp" line="302"/>
         <source>Directional (w = 0)</source>
         <translation>Directional (w = 0)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="307"/>
+        <location filename="../app/edit_panel.cpp" line="303"/>
         <source>A directional light is infinitely far: L is the same everywhere and it is not attenuated</source>
         <translation>A directional light is infinitely far: L is the same everywhere and it is not attenuated</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="311"/>
+        <location filename="../app/edit_panel.cpp" line="307"/>
         <source>Il: the light&apos;s colour, 0 to 255 per channel</source>
         <translation>Il: the light&apos;s colour, 0 to 255 per channel</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="315"/>
+        <location filename="../app/edit_panel.cpp" line="311"/>
         <source>att</source>
         <translation>att</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="316"/>
+        <location filename="../app/edit_panel.cpp" line="312"/>
         <source>Attenuation: the light&apos;s diffuse and specular terms are divided by kc + kl d + kq d², d its distance to the point (1 0 0: none)</source>
         <translation>Attenuation: the light&apos;s diffuse and specular terms are divided by kc + kl d + kq d², d its distance to the point (1 0 0: none)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="319"/>
+        <location filename="../app/edit_panel.cpp" line="315"/>
         <source>Spot</source>
         <translation>Spot</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="320"/>
+        <location filename="../app/edit_panel.cpp" line="316"/>
         <source>A spot lights only the points within its cutoff angle of its direction</source>
         <translation>A spot lights only the points within its cutoff angle of its direction</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="323"/>
+        <location filename="../app/edit_panel.cpp" line="319"/>
         <source>D: the direction the spot points to (world)</source>
         <translation>D: the direction the spot points to (world)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="324"/>
+        <location filename="../app/edit_panel.cpp" line="320"/>
         <source>cut</source>
         <translation>cut</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="325"/>
+        <location filename="../app/edit_panel.cpp" line="321"/>
         <source>The spot&apos;s cutoff angle, 0 to 90 degrees</source>
         <translation>The spot&apos;s cutoff angle, 0 to 90 degrees</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="326"/>
+        <location filename="../app/edit_panel.cpp" line="322"/>
         <source>exp</source>
         <translation>exp</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="327"/>
+        <location filename="../app/edit_panel.cpp" line="323"/>
         <source>The spot&apos;s exponent: its light falls off as (-L.D)^exp toward the edge</source>
         <translation>The spot&apos;s exponent: its light falls off as (-L.D)^exp toward the edge</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="331"/>
+        <location filename="../app/edit_panel.cpp" line="327"/>
         <source>Ambient</source>
         <translation>Ambient</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="334"/>
+        <location filename="../app/edit_panel.cpp" line="330"/>
         <source>Ia: the ambient light&apos;s colour, 0 to 255 per channel</source>
         <translation>Ia: the ambient light&apos;s colour, 0 to 255 per channel</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="336"/>
+        <location filename="../app/edit_panel.cpp" line="332"/>
         <source>ka: the ambient coefficient, 0 to 1</source>
         <translation>ka: the ambient coefficient, 0 to 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="339"/>
+        <location filename="../app/edit_panel.cpp" line="335"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="342"/>
+        <location filename="../app/edit_panel.cpp" line="338"/>
         <source>kd: the diffuse coefficient of each channel, 0 to 1</source>
         <translation>kd: the diffuse coefficient of each channel, 0 to 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="345"/>
+        <location filename="../app/edit_panel.cpp" line="341"/>
         <source>Od: the object&apos;s diffuse colour, 0 to 1 per channel</source>
         <translation>Od: the object&apos;s diffuse colour, 0 to 1 per channel</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="347"/>
+        <location filename="../app/edit_panel.cpp" line="343"/>
         <source>Ke: the light the object gives off by itself, 0 to 255 per channel (added to every lit point)</source>
         <translation>Ke: the light the object gives off by itself, 0 to 255 per channel (added to every lit point)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="351"/>
+        <location filename="../app/edit_panel.cpp" line="347"/>
         <source>ks: the specular coefficient, 0 to 1</source>
         <translation>ks: the specular coefficient, 0 to 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="353"/>
+        <location filename="../app/edit_panel.cpp" line="349"/>
         <source>n: the specular exponent (larger: a smaller, sharper highlight)</source>
         <translation>n: the specular exponent (larger: a smaller, sharper highlight)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="357"/>
+        <location filename="../app/edit_panel.cpp" line="353"/>
         <source>Shading</source>
         <translation>Shading</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="360"/>
+        <location filename="../app/edit_panel.cpp" line="356"/>
         <source>Phong (per pixel)</source>
         <translation>Phong (per pixel)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="361"/>
+        <location filename="../app/edit_panel.cpp" line="357"/>
         <source>Gouraud (per vertex)</source>
         <translation>Gouraud (per vertex)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="362"/>
+        <location filename="../app/edit_panel.cpp" line="358"/>
         <source>Flat (per triangle)</source>
         <translation>Flat (per triangle)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="363"/>
+        <location filename="../app/edit_panel.cpp" line="359"/>
         <source>Painter&apos;s algorithm (flat, no depth test)</source>
         <translation>Painter&apos;s algorithm (flat, no depth test)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="367"/>
+        <location filename="../app/edit_panel.cpp" line="363"/>
         <source>Two-sided lighting</source>
         <translation>Two-sided lighting</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="368"/>
+        <location filename="../app/edit_panel.cpp" line="364"/>
         <source>On (the course&apos;s rule): where V.N &lt; 0 the normal is turned round, so the back of a surface is lit like its front. Off: one-sided, the back keeps a normal pointing away</source>
         <translation>On (the course&apos;s rule): where V.N &lt; 0 the normal is turned round, so the back of a surface is lit like its front. Off: one-sided, the back keeps a normal pointing away</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="371"/>
+        <location filename="../app/edit_panel.cpp" line="367"/>
         <source>Blinn-Phong highlight</source>
         <translation>Blinn-Phong highlight</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="372"/>
+        <location filename="../app/edit_panel.cpp" line="368"/>
         <source>The highlight with the half vector H = (L + V)/|L + V| instead of Phong&apos;s reflection R: (N.H)^n instead of (R.V)^n</source>
         <translation>The highlight with the half vector H = (L + V)/|L + V| instead of Phong&apos;s reflection R: (N.H)^n instead of (R.V)^n</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="439"/>
+        <location filename="../app/edit_panel.cpp" line="432"/>
         <source>Add light %1</source>
         <translation>Add light %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="450"/>
+        <location filename="../app/edit_panel.cpp" line="439"/>
         <source>Remove light %1</source>
         <translation>Remove light %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="466"/>
+        <location filename="../app/edit_panel.cpp" line="464"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="469"/>
+        <location filename="../app/edit_panel.cpp" line="467"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="473"/>
+        <location filename="../app/edit_panel.cpp" line="471"/>
         <source>&amp;Save Camera and Lighting</source>
         <translation>&amp;Save Camera and Lighting</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="476"/>
+        <location filename="../app/edit_panel.cpp" line="474"/>
         <source>Write the edited camera and lighting to their files</source>
         <translation>Write the edited camera and lighting to their files</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="482"/>
+        <location filename="../app/edit_panel.cpp" line="480"/>
         <source>&amp;Camera...</source>
         <translation>&amp;Camera...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="484"/>
+        <location filename="../app/edit_panel.cpp" line="482"/>
         <source>&amp;Lighting...</source>
         <translation>&amp;Lighting...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="487"/>
+        <location filename="../app/edit_panel.cpp" line="485"/>
         <source>Save &amp;As</source>
         <translation>Save &amp;As</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="529"/>
+        <location filename="../app/edit_panel.cpp" line="527"/>
         <source>Light %1 of %2</source>
         <translation>Light %1 of %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="610"/>
+        <location filename="../app/edit_panel.cpp" line="608"/>
         <source>Change %1</source>
         <translation>Change %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="679"/>
+        <location filename="../app/edit_panel.cpp" line="677"/>
         <source>A command file is shown: its scene is not edited here.</source>
         <translation>A command file is shown: its scene is not edited here.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="685"/>
+        <location filename="../app/edit_panel.cpp" line="683"/>
         <source>built-in scene</source>
         <translation>built-in scene</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="689"/>
+        <location filename="../app/edit_panel.cpp" line="687"/>
         <source>modified</source>
         <translation>modified</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="695"/>
+        <location filename="../app/edit_panel.cpp" line="693"/>
         <source>Lighting</source>
         <translation>Lighting</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="705"/>
+        <location filename="../app/edit_panel.cpp" line="703"/>
         <source>shading</source>
         <translation>shading</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="707"/>
+        <location filename="../app/edit_panel.cpp" line="705"/>
         <source>two-sided lighting</source>
         <translation>two-sided lighting</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="709"/>
+        <location filename="../app/edit_panel.cpp" line="707"/>
         <source>the highlight&apos;s model</source>
         <translation>the highlight&apos;s model</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="711"/>
+        <location filename="../app/edit_panel.cpp" line="709"/>
         <source>directional</source>
         <translation>directional</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="714"/>
+        <location filename="../app/edit_panel.cpp" line="712"/>
         <source>spot cutoff</source>
         <translation>spot cutoff</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="717"/>
+        <location filename="../app/edit_panel.cpp" line="715"/>
         <source>spot exponent</source>
         <translation>spot exponent</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="720"/>
+        <location filename="../app/edit_panel.cpp" line="718"/>
         <source>spot direction</source>
         <translation>spot direction</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="723"/>
+        <location filename="../app/edit_panel.cpp" line="721"/>
         <source>attenuation</source>
         <translation>attenuation</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="733"/>
+        <location filename="../app/edit_panel.cpp" line="731"/>
         <source>%1 of light %2</source>
         <translation>%1 of light %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="742"/>
+        <location filename="../app/edit_panel.cpp" line="740"/>
         <source>The camera was not saved.</source>
         <translation>The camera was not saved.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="742"/>
+        <location filename="../app/edit_panel.cpp" line="740"/>
         <source>The lighting was not saved.</source>
         <translation>The lighting was not saved.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="818"/>
+        <location filename="../app/edit_panel.cpp" line="816"/>
         <source>The camera has changes that are not saved (%1).</source>
         <translation>The camera has changes that are not saved (%1).</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="819"/>
+        <location filename="../app/edit_panel.cpp" line="817"/>
         <source>The lighting has changes that are not saved (%1).</source>
         <translation>The lighting has changes that are not saved (%1).</translation>
     </message>
     <message>
-        <source>camera</source>
-        <translation type="vanished">camera</translation>
-    </message>
-    <message>
-        <source>lighting</source>
-        <translation type="vanished">lighting</translation>
-    </message>
-    <message>
-        <location filename="../app/edit_panel.cpp" line="741"/>
+        <location filename="../app/edit_panel.cpp" line="739"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <source>The %1 was not saved.</source>
-        <translation type="vanished">The %1 was not saved.</translation>
-    </message>
-    <message>
-        <location filename="../app/edit_panel.cpp" line="797"/>
+        <location filename="../app/edit_panel.cpp" line="795"/>
         <source>Save Camera As</source>
         <translation>Save Camera As</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="797"/>
+        <location filename="../app/edit_panel.cpp" line="795"/>
         <source>Save Lighting As</source>
         <translation>Save Lighting As</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="815"/>
+        <location filename="../app/edit_panel.cpp" line="813"/>
         <source>the built-in scene</source>
         <translation>the built-in scene</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="817"/>
+        <location filename="../app/edit_panel.cpp" line="815"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <source>The %1 has changes that are not saved (%2).</source>
-        <translation type="vanished">The %1 has changes that are not saved (%2).</translation>
-    </message>
-    <message>
-        <location filename="../app/edit_panel.cpp" line="824"/>
+        <location filename="../app/edit_panel.cpp" line="822"/>
         <source>Save them?</source>
         <translation>Save them?</translation>
     </message>
@@ -1118,7 +1086,7 @@
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="175"/>
-        <location filename="../app/main_window_export.cpp" line="80"/>
+        <location filename="../app/main_window_export.cpp" line="81"/>
         <location filename="../app/main_window_export.cpp" line="118"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
@@ -1249,10 +1217,6 @@
         <translation>save, undo, redo</translation>
     </message>
     <message>
-        <source>Open &amp;Object...</source>
-        <translation type="vanished">Open &amp;Object...</translation>
-    </message>
-    <message>
         <location filename="../app/main_window.cpp" line="329"/>
         <source>Open &amp;Camera...</source>
         <translation>Open &amp;Camera...</translation>
@@ -1291,10 +1255,6 @@
         <location filename="../app/main_window.cpp" line="341"/>
         <source>&amp;Default Scene</source>
         <translation>&amp;Default Scene</translation>
-    </message>
-    <message>
-        <source>Course File &amp;Layouts</source>
-        <translation type="vanished">Course File &amp;Layouts</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="352"/>
@@ -1407,17 +1367,9 @@
         <translation>Zoom &amp;Out</translation>
     </message>
     <message>
-        <source>&amp;Panels</source>
-        <translation type="vanished">&amp;Panels</translation>
-    </message>
-    <message>
         <location filename="../app/main_window.cpp" line="429"/>
         <source>Reset &amp;Layout</source>
         <translation>Reset &amp;Layout</translation>
-    </message>
-    <message>
-        <source>&amp;Image</source>
-        <translation type="vanished">&amp;Image</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="436"/>
@@ -1430,10 +1382,6 @@
         <translation>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</translation>
     </message>
     <message>
-        <source>&amp;Language</source>
-        <translation type="vanished">&amp;Language</translation>
-    </message>
-    <message>
         <location filename="../app/main_window.cpp" line="452"/>
         <source>The System&apos;s</source>
         <translation>The System&apos;s</translation>
@@ -1442,14 +1390,6 @@
         <location filename="../app/main_window.cpp" line="469"/>
         <source>S&amp;tep</source>
         <translation>S&amp;tep</translation>
-    </message>
-    <message>
-        <source>Step &amp;By</source>
-        <translation type="vanished">Step &amp;By</translation>
-    </message>
-    <message>
-        <source>&amp;Stage</source>
-        <translation type="vanished">&amp;Stage</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="506"/>
@@ -1482,17 +1422,9 @@
         <translation>&amp;Flat (per triangle)</translation>
     </message>
     <message>
-        <source>F10, Page Down, Right (on the image)</source>
-        <translation type="vanished">F10, Page Down, Right (on the image)</translation>
-    </message>
-    <message>
         <location filename="../app/main_window.cpp" line="1073"/>
         <source>step forward</source>
         <translation>step forward</translation>
-    </message>
-    <message>
-        <source>Shift+F10, Page Up, Left (on the image)</source>
-        <translation type="vanished">Shift+F10, Page Up, Left (on the image)</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="1074"/>
@@ -1500,17 +1432,9 @@
         <translation>step back</translation>
     </message>
     <message>
-        <source>F6, Space (on the image)</source>
-        <translation type="vanished">F6, Space (on the image)</translation>
-    </message>
-    <message>
         <location filename="../app/main_window.cpp" line="1077"/>
         <source>play / pause</source>
         <translation>play / pause</translation>
-    </message>
-    <message>
-        <source>Ctrl+Home, Ctrl+End</source>
-        <translation type="vanished">Ctrl+Home, Ctrl+End</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="1079"/>
@@ -1518,26 +1442,14 @@
         <translation>jump to the start / the end of the frame</translation>
     </message>
     <message>
-        <source>F8</source>
-        <translation type="vanished">F8</translation>
-    </message>
-    <message>
         <location filename="../app/main_window.cpp" line="1080"/>
         <source>continue to the next breakpoint</source>
         <translation>continue to the next breakpoint</translation>
     </message>
     <message>
-        <source>Ctrl+Shift+1 ... 5</source>
-        <translation type="vanished">Ctrl+Shift+1 ... 5</translation>
-    </message>
-    <message>
         <location filename="../app/main_window.cpp" line="1081"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>step by stage, triangle, scanline, span, pixel</translation>
-    </message>
-    <message>
-        <source>Alt+1 ... 7</source>
-        <translation type="vanished">Alt+1 ... 7</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="1082"/>
@@ -1555,25 +1467,9 @@
         <translation>pick a pixel, move it by one</translation>
     </message>
     <message>
-        <source>F5, Esc</source>
-        <translation type="vanished">F5, Esc</translation>
-    </message>
-    <message>
-        <source>presentation mode on / off (the arrows and Space then step)</source>
-        <translation type="vanished">presentation mode on / off (the arrows and Space then step)</translation>
-    </message>
-    <message>
-        <source>Ctrl+O, Ctrl+E, Ctrl+Shift+E</source>
-        <translation type="vanished">Ctrl+O, Ctrl+E, Ctrl+Shift+E</translation>
-    </message>
-    <message>
         <location filename="../app/main_window.cpp" line="1087"/>
         <source>open, export the image, export it as displayed</source>
         <translation>open, export the image, export it as displayed</translation>
-    </message>
-    <message>
-        <source>Ctrl+0, Ctrl+1, Ctrl++, Ctrl+-</source>
-        <translation type="vanished">Ctrl+0, Ctrl+1, Ctrl++, Ctrl+-</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="1090"/>
@@ -1584,10 +1480,6 @@
         <location filename="../app/main_window.cpp" line="1092"/>
         <source>Keyboard Shortcuts</source>
         <translation>Keyboard Shortcuts</translation>
-    </message>
-    <message>
-        <source>Alt+%1</source>
-        <translation type="vanished">Alt+%1</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="534"/>
@@ -1635,29 +1527,21 @@
         <translation>Accuracy</translation>
     </message>
     <message>
-        <source>Z-buffer</source>
-        <translation type="vanished">Z-buffer</translation>
-    </message>
-    <message>
-        <source>%1 - RasterLab</source>
-        <translation type="vanished">%1 - RasterLab</translation>
-    </message>
-    <message>
         <location filename="../app/main_window.cpp" line="769"/>
-        <location filename="../app/main_window_export.cpp" line="32"/>
-        <location filename="../app/main_window_export.cpp" line="91"/>
-        <location filename="../app/main_window_export.cpp" line="139"/>
-        <location filename="../app/main_window_export.cpp" line="170"/>
+        <location filename="../app/main_window_export.cpp" line="33"/>
+        <location filename="../app/main_window_export.cpp" line="92"/>
+        <location filename="../app/main_window_export.cpp" line="134"/>
+        <location filename="../app/main_window_export.cpp" line="168"/>
         <source>%1: cannot export the image: %2</source>
         <translation>%1: cannot export the image: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="24"/>
+        <location filename="../app/main_window_export.cpp" line="25"/>
         <source>nothing has been rendered yet</source>
         <translation>nothing has been rendered yet</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="27"/>
+        <location filename="../app/main_window_export.cpp" line="28"/>
         <source>Exported %1</source>
         <translation>Exported %1</translation>
     </message>
@@ -1804,41 +1688,9 @@
         <translation>Stages</translation>
     </message>
     <message>
-        <source>Camera basis</source>
-        <translation type="vanished">Camera basis</translation>
-    </message>
-    <message>
-        <source>View transform</source>
-        <translation type="vanished">View transform</translation>
-    </message>
-    <message>
-        <source>Normals</source>
-        <translation type="vanished">Normals</translation>
-    </message>
-    <message>
-        <source>Projection</source>
-        <translation type="vanished">Projection</translation>
-    </message>
-    <message>
-        <source>Scan conversion</source>
-        <translation type="vanished">Scan conversion</translation>
-    </message>
-    <message>
-        <source>Depth test</source>
-        <translation type="vanished">Depth test</translation>
-    </message>
-    <message>
-        <source>Shading</source>
-        <translation type="vanished">Shading</translation>
-    </message>
-    <message>
         <location filename="../app/main_window.cpp" line="988"/>
         <source>skipped: %1</source>
         <translation>skipped: %1</translation>
-    </message>
-    <message>
-        <source>largest orthonormality residual: %1</source>
-        <translation type="vanished">largest orthonormality residual: %1</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="991"/>
@@ -1903,8 +1755,8 @@
     <message>
         <location filename="../app/main_window.cpp" line="398"/>
         <location filename="../app/main_window.cpp" line="1056"/>
-        <location filename="../app/main_window_export.cpp" line="159"/>
-        <location filename="../app/main_window_export.cpp" line="167"/>
+        <location filename="../app/main_window_export.cpp" line="157"/>
+        <location filename="../app/main_window_export.cpp" line="165"/>
         <source>PNG images (*.png)</source>
         <translation>PNG images (*.png)</translation>
     </message>
@@ -1919,43 +1771,43 @@
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="39"/>
+        <location filename="../app/main_window_export.cpp" line="40"/>
         <source>%1: cannot export the depth buffer: %2</source>
         <translation>%1: cannot export the depth buffer: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="44"/>
+        <location filename="../app/main_window_export.cpp" line="45"/>
         <source>%1: cannot export the normal buffer: %2</source>
         <translation>%1: cannot export the normal buffer: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="62"/>
+        <location filename="../app/main_window_export.cpp" line="63"/>
         <source>%1: cannot export the view: there is no view %2</source>
         <translation>%1: cannot export the view: there is no view %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="65"/>
+        <location filename="../app/main_window_export.cpp" line="66"/>
         <source>%1: cannot export the view: %2</source>
         <translation>%1: cannot export the view: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="71"/>
+        <location filename="../app/main_window_export.cpp" line="72"/>
         <source>%1: cannot export the steps: the frame cannot be stepped through yet</source>
         <translation>%1: cannot export the steps: the frame cannot be stepped through yet</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="75"/>
-        <location filename="../app/main_window_export.cpp" line="109"/>
+        <location filename="../app/main_window_export.cpp" line="76"/>
+        <location filename="../app/main_window_export.cpp" line="110"/>
         <source>%1: cannot create the folder</source>
         <translation>%1: cannot create the folder</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="80"/>
+        <location filename="../app/main_window_export.cpp" line="81"/>
         <source>Exporting the steps...</source>
         <translation>Exporting the steps...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="102"/>
+        <location filename="../app/main_window_export.cpp" line="103"/>
         <source>Exported %1 images to %2</source>
         <translation>Exported %1 images to %2</translation>
     </message>
@@ -1965,42 +1817,42 @@
         <translation>Exporting the animation&apos;s frames...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="132"/>
+        <location filename="../app/main_window_export.cpp" line="142"/>
         <source>%1: cannot render the frame: %2</source>
         <translation>%1: cannot render the frame: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="146"/>
+        <location filename="../app/main_window_export.cpp" line="144"/>
         <source>Exported %1 frames to %2</source>
         <translation>Exported %1 frames to %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="152"/>
+        <location filename="../app/main_window_export.cpp" line="150"/>
         <source>Folder for the Animation&apos;s Frames</source>
         <translation>Folder for the Animation&apos;s Frames</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="157"/>
+        <location filename="../app/main_window_export.cpp" line="155"/>
         <source>Export the Image as Displayed</source>
         <translation>Export the Image as Displayed</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="166"/>
+        <location filename="../app/main_window_export.cpp" line="164"/>
         <source>Export a Buffer</source>
         <translation>Export a Buffer</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="180"/>
+        <location filename="../app/main_window_export.cpp" line="178"/>
         <source>Folder for the Numbered Images</source>
         <translation>Folder for the Numbered Images</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="184"/>
+        <location filename="../app/main_window_export.cpp" line="182"/>
         <source>Stepping Sequence</source>
         <translation>Stepping Sequence</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="185"/>
+        <location filename="../app/main_window_export.cpp" line="183"/>
         <source>At most how many images (one per step, at the current granularity)?</source>
         <translation>At most how many images (one per step, at the current granularity)?</translation>
     </message>
@@ -2033,272 +1885,272 @@
 <context>
     <name>rasterlab::NearClipView</name>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="76"/>
+        <location filename="../views/near_clip_view.cpp" line="73"/>
         <source>wholly in front</source>
         <translation>wholly in front</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="78"/>
+        <location filename="../views/near_clip_view.cpp" line="75"/>
         <source>clipped</source>
         <translation>clipped</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="80"/>
+        <location filename="../views/near_clip_view.cpp" line="77"/>
         <source>wholly behind</source>
         <translation>wholly behind</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="82"/>
+        <location filename="../views/near_clip_view.cpp" line="79"/>
         <source>outside a clip plane</source>
         <translation>outside a clip plane</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="84"/>
+        <location filename="../views/near_clip_view.cpp" line="81"/>
         <source>culled</source>
         <translation>culled</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="86"/>
+        <location filename="../views/near_clip_view.cpp" line="83"/>
         <source>hidden back face</source>
         <translation>hidden back face</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="88"/>
+        <location filename="../views/near_clip_view.cpp" line="85"/>
         <source>beyond the guard band</source>
         <translation>beyond the guard band</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="90"/>
+        <location filename="../views/near_clip_view.cpp" line="87"/>
         <source>not finite</source>
         <translation>not finite</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="177"/>
+        <location filename="../views/near_clip_view.cpp" line="174"/>
         <source>No triangle to show: select one, step into the frame, or choose one in the list.</source>
         <translation>No triangle to show: select one, step into the frame, or choose one in the list.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="352"/>
+        <location filename="../views/near_clip_view.cpp" line="349"/>
         <source>side view: w across (view z for the course camera), view %1 up</source>
         <translation>side view: w across (view z for the course camera), view %1 up</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="359"/>
+        <location filename="../views/near_clip_view.cpp" line="356"/>
         <source>w = near = %1</source>
         <translation>w = near = %1</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="362"/>
+        <location filename="../views/near_clip_view.cpp" line="359"/>
         <source>the plane w = near = %1 is far to the left, out of the picture</source>
         <translation>the plane w = near = %1 is far to the left, out of the picture</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="369"/>
+        <location filename="../views/near_clip_view.cpp" line="366"/>
         <source>eye</source>
         <translation>eye</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="373"/>
+        <location filename="../views/near_clip_view.cpp" line="370"/>
         <source>the eye (w = 0) is far to the left, out of the picture</source>
         <translation>the eye (w = 0) is far to the left, out of the picture</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="381"/>
+        <location filename="../views/near_clip_view.cpp" line="378"/>
         <source>on the screen (pixels)</source>
         <translation>on the screen (pixels)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="385"/>
+        <location filename="../views/near_clip_view.cpp" line="382"/>
         <source>The last step projects the triangles drawn.</source>
         <translation>The last step projects the triangles drawn.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="432"/>
+        <location filename="../views/near_clip_view.cpp" line="428"/>
         <source>zoomed: x %1 to %2, y %3 to %4</source>
         <translation>zoomed: x %1 to %2, y %3 to %4</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="465"/>
+        <location filename="../views/near_clip_view.cpp" line="461"/>
         <source>image %1 × %2</source>
         <translation>image %1 × %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="470"/>
+        <location filename="../views/near_clip_view.cpp" line="466"/>
         <source>Nothing drawn.</source>
         <translation>Nothing drawn.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="483"/>
+        <location filename="../views/near_clip_view.cpp" line="474"/>
         <source>The triangle shown: the one selected, or one the near plane cut</source>
         <translation>The triangle shown: the one selected, or one the near plane cut</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="486"/>
+        <location filename="../views/near_clip_view.cpp" line="477"/>
         <source>y up</source>
         <translation>y up</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="487"/>
+        <location filename="../views/near_clip_view.cpp" line="478"/>
         <source>x up</source>
         <translation>x up</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="488"/>
+        <location filename="../views/near_clip_view.cpp" line="479"/>
         <source>Which view axis the side view draws upward</source>
         <translation>Which view axis the side view draws upward</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="489"/>
+        <location filename="../views/near_clip_view.cpp" line="480"/>
         <source>Back</source>
         <translation>Back</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="491"/>
+        <location filename="../views/near_clip_view.cpp" line="482"/>
         <source>Next</source>
         <translation>Next</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="493"/>
+        <location filename="../views/near_clip_view.cpp" line="484"/>
         <source>All</source>
         <translation>All</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="571"/>
+        <location filename="../views/near_clip_view.cpp" line="543"/>
         <source>The triangle selected (or being drawn)</source>
         <translation>The triangle selected (or being drawn)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="579"/>
+        <location filename="../views/near_clip_view.cpp" line="551"/>
         <source>triangle %1: %2</source>
         <translation>triangle %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="675"/>
+        <location filename="../views/near_clip_view.cpp" line="650"/>
         <source>step %1 of %2</source>
         <translation>step %1 of %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="690"/>
+        <location filename="../views/near_clip_view.cpp" line="660"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="691"/>
+        <location filename="../views/near_clip_view.cpp" line="661"/>
         <source>No triangle to show: select one or step into the frame.</source>
         <translation>No triangle to show: select one or step into the frame.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="693"/>
+        <location filename="../views/near_clip_view.cpp" line="663"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2: %3</source>
         <translation>&lt;b&gt;Triangle %1&lt;/b&gt; of %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="724"/>
+        <location filename="../views/near_clip_view.cpp" line="690"/>
         <source>The seed clips each triangle against the plane z = &amp;minus;&amp;epsilon;, P = [0, 0, &amp;minus;1, &amp;epsilon;], before the perspective divide (OpenGL&apos;s camera looks along &amp;minus;z). The projection stage clips against w = near in clip space, here near = %1, so P = %2 and a point A is kept when dot(P, A) = w &amp;minus; near &amp;ge; 0.</source>
         <translation>The seed clips each triangle against the plane z = &amp;minus;&amp;epsilon;, P = [0, 0, &amp;minus;1, &amp;epsilon;], before the perspective divide (OpenGL&apos;s camera looks along &amp;minus;z). The projection stage clips against w = near in clip space, here near = %1, so P = %2 and a point A is kept when dot(P, A) = w &amp;minus; near &amp;ge; 0.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="731"/>
+        <location filename="../views/near_clip_view.cpp" line="697"/>
         <source>For the course camera w is the view z: the camera looks along +z, and the plane is z = near, P = [0, 0, 1, &amp;minus;near].</source>
         <translation>For the course camera w is the view z: the camera looks along +z, and the plane is z = near, P = [0, 0, 1, &amp;minus;near].</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="734"/>
+        <location filename="../views/near_clip_view.cpp" line="700"/>
         <source>(Written out, the seed&apos;s P keeps z &amp;le; &amp;epsilon;; the plane z = &amp;minus;&amp;epsilon; it names is P = [0, 0, &amp;minus;1, &amp;minus;&amp;epsilon;]. Either way the plane lies a little in front of the eye, so no vertex drawn is divided by w = 0.)</source>
         <translation>(Written out, the seed&apos;s P keeps z &amp;le; &amp;epsilon;; the plane z = &amp;minus;&amp;epsilon; it names is P = [0, 0, &amp;minus;1, &amp;minus;&amp;epsilon;]. Either way the plane lies a little in front of the eye, so no vertex drawn is divided by w = 0.)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="738"/>
+        <location filename="../views/near_clip_view.cpp" line="704"/>
         <source>A0 = %1, A1 = %2, A2 = %3 (view space).</source>
         <translation>A0 = %1, A1 = %2, A2 = %3 (view space).</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="742"/>
+        <location filename="../views/near_clip_view.cpp" line="708"/>
         <source>This scene does not clip against the near plane (the naive or same-side projection): the steps show what clipping would do.</source>
         <translation>This scene does not clip against the near plane (the naive or same-side projection): the steps show what clipping would do.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="747"/>
+        <location filename="../views/near_clip_view.cpp" line="713"/>
         <source>The draw&apos;s clip planes cut the triangle first; the polygon the stage drew may differ from the one here.</source>
         <translation>The draw&apos;s clip planes cut the triangle first; the polygon the stage drew may differ from the one here.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="754"/>
+        <location filename="../views/near_clip_view.cpp" line="720"/>
         <source>Vertex %1: dot(P, %1) = %2</source>
         <translation>Vertex %1: dot(P, %1) = %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="757"/>
+        <location filename="../views/near_clip_view.cpp" line="723"/>
         <source>kept, added to the output polygon as q%1.</source>
         <translation>kept, added to the output polygon as q%1.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="759"/>
+        <location filename="../views/near_clip_view.cpp" line="725"/>
         <source>behind the plane, left out.</source>
         <translation>behind the plane, left out.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="763"/>
+        <location filename="../views/near_clip_view.cpp" line="729"/>
         <source>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 have the same sign: the edge does not cross the plane.</source>
         <translation>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 have the same sign: the edge does not cross the plane.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="767"/>
+        <location filename="../views/near_clip_view.cpp" line="733"/>
         <source>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 differ in sign: t = (0 &amp;minus; %5) / (%6 &amp;minus; %5) = %7, C = lerp(t, %1, %2) = %8, added as q%9.</source>
         <translation>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 differ in sign: t = (0 &amp;minus; %5) / (%6 &amp;minus; %5) = %7, C = lerp(t, %1, %2) = %8, added as q%9.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="775"/>
+        <location filename="../views/near_clip_view.cpp" line="741"/>
         <source>(The stage computes the same point from %1, the end in front, with t&apos; = 1 &amp;minus; t = %2, so that the two triangles sharing the edge get it bit for bit.)</source>
         <translation>(The stage computes the same point from %1, the end in front, with t&apos; = 1 &amp;minus; t = %2, so that the two triangles sharing the edge get it bit for bit.)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="786"/>
+        <location filename="../views/near_clip_view.cpp" line="752"/>
         <source>Output polygon: empty. The triangle lies wholly behind the plane: nothing is drawn.</source>
         <translation>Output polygon: empty. The triangle lies wholly behind the plane: nothing is drawn.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="792"/>
+        <location filename="../views/near_clip_view.cpp" line="758"/>
         <source>Output polygon, %1 vertices: %2.</source>
         <translation>Output polygon, %1 vertices: %2.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="796"/>
+        <location filename="../views/near_clip_view.cpp" line="762"/>
         <source>The triangle is wholly in front: untouched.</source>
         <translation>The triangle is wholly in front: untouched.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="803"/>
+        <location filename="../views/near_clip_view.cpp" line="769"/>
         <source>Four vertices: split along the diagonal q0&amp;ndash;q2 into the triangles q0 q1 q2 and q0 q2 q3, rendered separately.</source>
         <translation>Four vertices: split along the diagonal q0&amp;ndash;q2 into the triangles q0 q1 q2 and q0 q2 q3, rendered separately.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="806"/>
+        <location filename="../views/near_clip_view.cpp" line="772"/>
         <source>Three vertices: one triangle, nothing to split.</source>
         <translation>Three vertices: one triangle, nothing to split.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="808"/>
+        <location filename="../views/near_clip_view.cpp" line="774"/>
         <source>Fewer than three vertices: no triangle.</source>
         <translation>Fewer than three vertices: no triangle.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="811"/>
+        <location filename="../views/near_clip_view.cpp" line="777"/>
         <source>Then each vertex is projected and taken to pixels.</source>
         <translation>Then each vertex is projected and taken to pixels.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="814"/>
+        <location filename="../views/near_clip_view.cpp" line="780"/>
         <source>Nothing was drawn from this triangle (%1).</source>
         <translation>Nothing was drawn from this triangle (%1).</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="818"/>
+        <location filename="../views/near_clip_view.cpp" line="784"/>
         <source>Triangle %1: %2, %3, %4 (pixels)</source>
         <translation>Triangle %1: %2, %3, %4 (pixels)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="825"/>
+        <location filename="../views/near_clip_view.cpp" line="791"/>
         <source>(%1 of the %2 triangles were drawn: %3.)</source>
         <translation>(%1 of the %2 triangles were drawn: %3.)</translation>
     </message>
@@ -2306,253 +2158,253 @@
 <context>
     <name>rasterlab::NormalsView</name>
     <message>
-        <location filename="../views/normals_view.cpp" line="168"/>
+        <location filename="../views/normals_view.cpp" line="162"/>
         <source>the draw is unlit: shading reads no normal</source>
         <translation>the draw is unlit: shading reads no normal</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="193"/>
+        <location filename="../views/normals_view.cpp" line="187"/>
         <source>the interpolated normal is zero</source>
         <translation>the interpolated normal is zero</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="408"/>
+        <location filename="../views/normals_view.cpp" line="402"/>
         <source>Triangle normals</source>
         <translation>Triangle normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="411"/>
+        <location filename="../views/normals_view.cpp" line="405"/>
         <source>Vertex normals</source>
         <translation>Vertex normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="414"/>
+        <location filename="../views/normals_view.cpp" line="408"/>
         <source>Only on triangles that are seen</source>
         <translation>Only on triangles that are seen</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="417"/>
+        <location filename="../views/normals_view.cpp" line="411"/>
         <source>Hairs only on the triangles that hold a pixel at the end of the frame, and on their corners</source>
         <translation>Hairs only on the triangles that hold a pixel at the end of the frame, and on their corners</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="420"/>
+        <location filename="../views/normals_view.cpp" line="414"/>
         <source>Normals by M (wrong)</source>
         <translation>Normals by M (wrong)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="423"/>
+        <location filename="../views/normals_view.cpp" line="417"/>
         <source>Beside each triangle normal, the model normal carried by viewFromModel itself instead of its inverse transpose: it leaves the surface under a non-uniform scale (set one in the Animation panel)</source>
         <translation>Beside each triangle normal, the model normal carried by viewFromModel itself instead of its inverse transpose: it leaves the surface under a non-uniform scale (set one in the Animation panel)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="455"/>
+        <location filename="../views/normals_view.cpp" line="449"/>
         <source>Per pixel at the stepping cursor, the unit normal shading uses there: the vertex normals interpolated with the pixel&apos;s barycentrics and normalised (the triangle&apos;s normal for flat shading), turned toward the viewer as the course does before lighting; shown as RGB = (n + 1) / 2. Red grows to the right, green upward, blue away from the camera: turned normals face the camera, so blue is mostly below 128. Black: no triangle.</source>
         <translation>Per pixel at the stepping cursor, the unit normal shading uses there: the vertex normals interpolated with the pixel&apos;s barycentrics and normalised (the triangle&apos;s normal for flat shading), turned toward the viewer as the course does before lighting; shown as RGB = (n + 1) / 2. Red grows to the right, green upward, blue away from the camera: turned normals face the camera, so blue is mostly below 128. Black: no triangle.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="469"/>
+        <location filename="../views/normals_view.cpp" line="463"/>
         <source>Mesh and normals</source>
         <translation>Mesh and normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="470"/>
+        <location filename="../views/normals_view.cpp" line="464"/>
         <source>Normal map</source>
         <translation>Normal map</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="843"/>
+        <location filename="../views/normals_view.cpp" line="840"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="849"/>
+        <location filename="../views/normals_view.cpp" line="846"/>
         <source>front faces %1</source>
         <translation>front faces %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="851"/>
-        <location filename="../views/normals_view.cpp" line="855"/>
+        <location filename="../views/normals_view.cpp" line="848"/>
+        <location filename="../views/normals_view.cpp" line="852"/>
         <source>(%1 hidden, left out by culling)</source>
         <translation>(%1 hidden, left out by culling)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="853"/>
+        <location filename="../views/normals_view.cpp" line="850"/>
         <source>back faces (n · pView &amp;gt; 0) %1</source>
         <translation>back faces (n · pView &amp;gt; 0) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="858"/>
+        <location filename="../views/normals_view.cpp" line="855"/>
         <source>inconsistent winding: %1 triangles, %2 edges run the same way by two triangles</source>
         <translation>inconsistent winding: %1 triangles, %2 edges run the same way by two triangles</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="865"/>
+        <location filename="../views/normals_view.cpp" line="862"/>
         <source>%1% of the pixels seen are back faces: the surface is closed and its normals point inward in view space (the course&apos;s [U; V; N] mirrors, so a file wound counter-clockwise seen from outside turns over). Shading turns every normal toward the viewer: the image does not change.</source>
         <translation>%1% of the pixels seen are back faces: the surface is closed and its normals point inward in view space (the course&apos;s [U; V; N] mirrors, so a file wound counter-clockwise seen from outside turns over). Shading turns every normal toward the viewer: the image does not change.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="872"/>
+        <location filename="../views/normals_view.cpp" line="869"/>
         <source>No normals: %1.</source>
         <translation>No normals: %1.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="877"/>
+        <location filename="../views/normals_view.cpp" line="874"/>
         <source>triangle normals</source>
         <translation>triangle normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="878"/>
+        <location filename="../views/normals_view.cpp" line="875"/>
         <source>vertex normals</source>
         <translation>vertex normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="879"/>
+        <location filename="../views/normals_view.cpp" line="876"/>
         <source>length L = %1 (%2% of the mesh&apos;s size)</source>
         <translation>length L = %1 (%2% of the mesh&apos;s size)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="884"/>
+        <location filename="../views/normals_view.cpp" line="881"/>
         <source>triangle normals carried by M itself (wrong)</source>
         <translation>triangle normals carried by M itself (wrong)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="887"/>
+        <location filename="../views/normals_view.cpp" line="884"/>
         <source>on the %1 triangles seen and their corners</source>
         <translation>on the %1 triangles seen and their corners</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="890"/>
+        <location filename="../views/normals_view.cpp" line="887"/>
         <source>Large mesh: one triangle normal in %1 and one vertex normal in %2 are drawn; the selected triangle&apos;s always.</source>
         <translation>Large mesh: one triangle normal in %1 and one vertex normal in %2 are drawn; the selected triangle&apos;s always.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="897"/>
+        <location filename="../views/normals_view.cpp" line="894"/>
         <source>One triangle in %1 of the wireframe is drawn.</source>
         <translation>One triangle in %1 of the wireframe is drawn.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="914"/>
+        <location filename="../views/normals_view.cpp" line="911"/>
         <source>&lt;p&gt;&lt;b&gt;Normals by M, right and wrong&lt;/b&gt;: A = viewFromModel = viewFromWorld · M(t) · worldFromModel (M: the animation matrix, the identity when the animation is off). The model-space normal n = %1, det A = %2; the carried edges, made unit: e1 = A (P2 − P1) / |…| = %3, e2 = A (P3 − P1) / |…| = %4.&lt;br&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Normals by M, right and wrong&lt;/b&gt;: A = viewFromModel = viewFromWorld · M(t) · worldFromModel (M: the animation matrix, the identity when the animation is off). The model-space normal n = %1, det A = %2; the carried edges, made unit: e1 = A (P2 − P1) / |…| = %3, e2 = A (P3 − P1) / |…| = %4.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="921"/>
+        <location filename="../views/normals_view.cpp" line="918"/>
         <source>Right: A&lt;sup&gt;−T&lt;/sup&gt; n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: perpendicular to the surface.&lt;br&gt;</source>
         <translation>Right: A&lt;sup&gt;−T&lt;/sup&gt; n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: perpendicular to the surface.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="925"/>
+        <location filename="../views/normals_view.cpp" line="922"/>
         <source>Wrong: A n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: %4° off the surface&apos;s normal.&lt;/p&gt;</source>
         <translation>Wrong: A n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: %4° off the surface&apos;s normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="931"/>
+        <location filename="../views/normals_view.cpp" line="928"/>
         <source>&lt;p&gt;Here both agree: A has no non-uniform scale. Set a scale such as (2, 1, 1) in the Animation panel to see them part.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Here both agree: A has no non-uniform scale. Set a scale such as (2, 1, 1) in the Animation panel to see them part.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="939"/>
+        <location filename="../views/normals_view.cpp" line="936"/>
         <source>&lt;p&gt;No frame yet.&lt;/p&gt;</source>
         <translation>&lt;p&gt;No frame yet.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="943"/>
+        <location filename="../views/normals_view.cpp" line="940"/>
         <source>&lt;p&gt;&lt;b&gt;Stage 3, normals&lt;/b&gt;, in view space: each triangle&apos;s normal n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, and each vertex&apos;s normal the normalised sum of the normals of the triangles around it. A triangle faces away from the camera (at the origin) when n · P1 &amp;gt; 0; the course turns such normals toward the viewer when it shades.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Stage 3, normals&lt;/b&gt;, in view space: each triangle&apos;s normal n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, and each vertex&apos;s normal the normalised sum of the normals of the triangles around it. A triangle faces away from the camera (at the origin) when n · P1 &amp;gt; 0; the course turns such normals toward the viewer when it shades.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="950"/>
+        <location filename="../views/normals_view.cpp" line="947"/>
         <source>&lt;p&gt;Skipped for this frame: %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Skipped for this frame: %1.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="965"/>
+        <location filename="../views/normals_view.cpp" line="962"/>
         <source>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (vertices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</source>
         <translation>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (vertices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="972"/>
+        <location filename="../views/normals_view.cpp" line="969"/>
         <source> = %1, length %2&lt;br&gt;</source>
         <translation> = %1, length %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="976"/>
+        <location filename="../views/normals_view.cpp" line="973"/>
         <source>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</source>
         <translation>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="978"/>
+        <location filename="../views/normals_view.cpp" line="975"/>
         <source>a back face, drawn in red</source>
         <translation>a back face, drawn in red</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="978"/>
+        <location filename="../views/normals_view.cpp" line="975"/>
         <source>a front face</source>
         <translation>a front face</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="980"/>
+        <location filename="../views/normals_view.cpp" line="977"/>
         <source>a degenerate triangle: no normal.&lt;/p&gt;</source>
         <translation>a degenerate triangle: no normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="986"/>
+        <location filename="../views/normals_view.cpp" line="983"/>
         <source>&lt;p&gt;It runs an edge in the same direction as a neighbour does: the two are wound inconsistently (magenta), and one of their normals points the wrong way.&lt;/p&gt;</source>
         <translation>&lt;p&gt;It runs an edge in the same direction as a neighbour does: the two are wound inconsistently (magenta), and one of their normals points the wrong way.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="993"/>
+        <location filename="../views/normals_view.cpp" line="990"/>
         <source>&lt;p&gt;Vertex normals: N1 = %1 (vertex %2), N2 = %3 (vertex %4), N3 = %5 (vertex %6)&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vertex normals: N1 = %1 (vertex %2), N2 = %3 (vertex %4), N3 = %5 (vertex %6)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1001"/>
+        <location filename="../views/normals_view.cpp" line="998"/>
         <source>&lt;p&gt;Pick a pixel (here or in any image) to select its triangle and see its normal worked out.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Pick a pixel (here or in any image) to select its triangle and see its normal worked out.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1011"/>
+        <location filename="../views/normals_view.cpp" line="1008"/>
         <source>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </source>
         <translation>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1013"/>
+        <location filename="../views/normals_view.cpp" line="1010"/>
         <source>no triangle holds it at the cursor (black in the normal map).&lt;/p&gt;</source>
         <translation>no triangle holds it at the cursor (black in the normal map).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1015"/>
+        <location filename="../views/normals_view.cpp" line="1012"/>
         <source>no normal: %1 (grey in the normal map).&lt;/p&gt;</source>
         <translation>no normal: %1 (grey in the normal map).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1018"/>
+        <location filename="../views/normals_view.cpp" line="1015"/>
         <source>the triangle&apos;s normal (flat) %1</source>
         <translation>the triangle&apos;s normal (flat) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1020"/>
+        <location filename="../views/normals_view.cpp" line="1017"/>
         <source>N = α N1 + β N2 + γ N3 with (α, β, γ) = %1: %2, normalised %3</source>
         <translation>N = α N1 + β N2 + γ N3 with (α, β, γ) = %1: %2, normalised %3</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1024"/>
+        <location filename="../views/normals_view.cpp" line="1021"/>
         <source>; V · N &amp;lt; 0, turned toward the viewer: &lt;b&gt;%1&lt;/b&gt;</source>
         <translation>; V · N &amp;lt; 0, turned toward the viewer: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1027"/>
+        <location filename="../views/normals_view.cpp" line="1024"/>
         <source>. Colour (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</source>
         <translation>. Colour (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1046"/>
+        <location filename="../views/normals_view.cpp" line="1043"/>
         <source>x %1, y %2: no triangle</source>
         <translation>x %1, y %2: no triangle</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1050"/>
+        <location filename="../views/normals_view.cpp" line="1047"/>
         <source>x %1, y %2: triangle %3, N = %4, colour (%5, %6, %7)</source>
         <translation>x %1, y %2: triangle %3, N = %4, colour (%5, %6, %7)</translation>
     </message>
@@ -2610,17 +2462,17 @@
         <translation>Pixels on an edge two triangles share, at the same depth: the z-buffer keeps the first drawn, the painter the last.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="327"/>
+        <location filename="../views/painter_view.cpp" line="332"/>
         <source>rank of the last triangle painted</source>
         <translation>rank of the last triangle painted</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="328"/>
+        <location filename="../views/painter_view.cpp" line="333"/>
         <source>painted far to near, no depth test</source>
         <translation>painted far to near, no depth test</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/painter_view.cpp" line="330"/>
+        <location filename="../views/painter_view.cpp" line="335"/>
         <source>Z-buffer (the same flat colours): %n pixel(s) differ</source>
         <translation>
             <numerusform>Z-buffer (the same flat colours): %n pixel differs</numerusform>
@@ -2628,17 +2480,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="370"/>
+        <location filename="../views/painter_view.cpp" line="375"/>
         <source>No frame.</source>
         <translation>No frame.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="371"/>
+        <location filename="../views/painter_view.cpp" line="376"/>
         <source>Not worked out yet.</source>
         <translation>Not worked out yet.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/painter_view.cpp" line="376"/>
+        <location filename="../views/painter_view.cpp" line="381"/>
         <source>&lt;b&gt;Painter&apos;s algorithm&lt;/b&gt; (seed 004): the %n triangle(s) are sorted by the distance |b| of their barycentre b (view space) to the camera, far to near, each lit once at b, and painted in that order &lt;i&gt;without a depth test&lt;/i&gt;: the last painted stays.</source>
         <translation>
             <numerusform>&lt;b&gt;Painter&apos;s algorithm&lt;/b&gt; (seed 004): the %n triangle is sorted by the distance |b| of its barycentre b (view space) to the camera, far to near, lit once at b, and painted in that order &lt;i&gt;without a depth test&lt;/i&gt;: the last painted stays.</numerusform>
@@ -2646,17 +2498,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="381"/>
+        <location filename="../views/painter_view.cpp" line="386"/>
         <source>The frame shown uses the z-buffer; this view renders the scene again as the painter would.</source>
         <translation>The frame shown uses the z-buffer; this view renders the scene again as the painter would.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="384"/>
+        <location filename="../views/painter_view.cpp" line="389"/>
         <source>Against the z-buffer with the same colours, %1 pixels differ: &lt;span style=&apos;color:#d00000&apos;&gt;%2 where a farther triangle was painted after a nearer one&lt;/span&gt; (the order of whole triangles is not the order of their pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 on edges two triangles share at the same depth&lt;/span&gt; (the z-buffer keeps the first drawn, the painter the last).</source>
         <translation>Against the z-buffer with the same colours, %1 pixels differ: &lt;span style=&apos;color:#d00000&apos;&gt;%2 where a farther triangle was painted after a nearer one&lt;/span&gt; (the order of whole triangles is not the order of their pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 on edges two triangles share at the same depth&lt;/span&gt; (the z-buffer keeps the first drawn, the painter the last).</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="399"/>
+        <location filename="../views/painter_view.cpp" line="404"/>
         <source>Triangle %1: b = %2, |b| = %3, painted %4 of %5. The z-buffer shows it at %6 pixels; a triangle painted after it covers %7 of them though it is farther there; it covers %8 pixels of nearer triangles painted before it.</source>
         <translation>Triangle %1: b = %2, |b| = %3, painted %4 of %5. The z-buffer shows it at %6 pixels; a triangle painted after it covers %7 of them though it is farther there; it covers %8 pixels of nearer triangles painted before it.</translation>
     </message>
@@ -2949,213 +2801,213 @@
         <translation>R.V &lt; 0: the reflected ray points away from the viewer; no specular.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="829"/>
+        <location filename="../views/pixel_inspector.cpp" line="817"/>
         <source>Outside the cone of light %1: −L.D = %2 is below cos %3° = %4; it adds nothing here.</source>
         <translation>Outside the cone of light %1: −L.D = %2 is below cos %3° = %4; it adds nothing here.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="836"/>
+        <location filename="../views/pixel_inspector.cpp" line="825"/>
         <source>One-sided lighting: the back of the surface is seen (V.N &lt; 0) and N is not turned toward the viewer.</source>
         <translation>One-sided lighting: the back of the surface is seen (V.N &lt; 0) and N is not turned toward the viewer.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="848"/>
+        <location filename="../views/pixel_inspector.cpp" line="837"/>
         <source>Clamped: %1 above the colour scale %2, written as byte 255.</source>
         <translation>Clamped: %1 above the colour scale %2, written as byte 255.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="857"/>
+        <location filename="../views/pixel_inspector.cpp" line="846"/>
         <source>%1 (clamped)</source>
         <translation>%1 (clamped)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="862"/>
+        <location filename="../views/pixel_inspector.cpp" line="851"/>
         <source>Gouraud shading, the vertices&apos; colours mixed</source>
         <translation>Gouraud shading, the vertices&apos; colours mixed</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="863"/>
+        <location filename="../views/pixel_inspector.cpp" line="852"/>
         <source>C = α C1 + β C2 + γ C3</source>
         <translation>C = α C1 + β C2 + γ C3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="881"/>
+        <location filename="../views/pixel_inspector.cpp" line="870"/>
         <source>not lit, the object colour as it is</source>
         <translation>not lit, the object colour as it is</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="882"/>
+        <location filename="../views/pixel_inspector.cpp" line="871"/>
         <source>I = O (the object colour)</source>
         <translation>I = O (the object colour)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="889"/>
+        <location filename="../views/pixel_inspector.cpp" line="878"/>
         <source>the course&apos;s Phong lighting model</source>
         <translation>the course&apos;s Phong lighting model</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="890"/>
+        <location filename="../views/pixel_inspector.cpp" line="879"/>
         <source>Lambert with Blinn-Phong highlights (command files)</source>
         <translation>Lambert with Blinn-Phong highlights (command files)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="892"/>
+        <location filename="../views/pixel_inspector.cpp" line="881"/>
         <source>Painter&apos;s algorithm: lit as flat shading, once at the triangle&apos;s barycentre; the triangles are painted far to near without a depth test.</source>
         <translation>Painter&apos;s algorithm: lit as flat shading, once at the triangle&apos;s barycentre; the triangles are painted far to near without a depth test.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="897"/>
+        <location filename="../views/pixel_inspector.cpp" line="886"/>
         <source>Flat shading: evaluated once, at the triangle&apos;s barycentre with the triangle&apos;s normal; every pixel of the triangle gets this colour.</source>
         <translation>Flat shading: evaluated once, at the triangle&apos;s barycentre with the triangle&apos;s normal; every pixel of the triangle gets this colour.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="901"/>
+        <location filename="../views/pixel_inspector.cpp" line="890"/>
         <source>%1 lights: the diffuse and specular terms are sums over them; the numbers filled in are the first light&apos;s.</source>
         <translation>%1 lights: the diffuse and specular terms are sums over them; the numbers filled in are the first light&apos;s.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="909"/>
+        <location filename="../views/pixel_inspector.cpp" line="898"/>
         <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)</source>
         <translation>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="910"/>
+        <location filename="../views/pixel_inspector.cpp" line="899"/>
         <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)</source>
         <translation>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="911"/>
+        <location filename="../views/pixel_inspector.cpp" line="900"/>
         <source>att = 1 / (kc + kl d + kq d²) for a positional light, 1 for a directional one; spot = (−L.D)^exp inside the cone, 0 outside, 1 for a light that is no spot.</source>
         <translation>att = 1 / (kc + kl d + kq d²) for a positional light, 1 for a directional one; spot = (−L.D)^exp inside the cone, 0 outside, 1 for a light that is no spot.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="916"/>
+        <location filename="../views/pixel_inspector.cpp" line="905"/>
         <source>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</source>
         <translation>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="923"/>
+        <location filename="../views/pixel_inspector.cpp" line="912"/>
         <source>I = Σ Il O (N.L) + Il (H.N)^s, over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L) + Il (H.N)^s, over the lights with N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="925"/>
+        <location filename="../views/pixel_inspector.cpp" line="914"/>
         <source>I = Σ Il O (N.L), over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L), over the lights with N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="981"/>
+        <location filename="../views/pixel_inspector.cpp" line="970"/>
         <source>%1 (the other lights)</source>
         <translation>%1 (the other lights)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="997"/>
+        <location filename="../views/pixel_inspector.cpp" line="986"/>
         <source>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</source>
         <translation>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1001"/>
+        <location filename="../views/pixel_inspector.cpp" line="990"/>
         <source>Il = %1, O = %2</source>
         <translation>Il = %1, O = %2</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1004"/>
+        <location filename="../views/pixel_inspector.cpp" line="993"/>
         <source>Ke = %1: the material&apos;s own light</source>
         <translation>Ke = %1: the material&apos;s own light</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1027"/>
+        <location filename="../views/pixel_inspector.cpp" line="1016"/>
         <source>start</source>
         <translation>start</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1033"/>
-        <location filename="../views/pixel_inspector.cpp" line="1121"/>
+        <location filename="../views/pixel_inspector.cpp" line="1022"/>
+        <location filename="../views/pixel_inspector.cpp" line="1110"/>
         <source>end</source>
         <translation>end</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1041"/>
+        <location filename="../views/pixel_inspector.cpp" line="1030"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>holds the pixel at the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1042"/>
+        <location filename="../views/pixel_inspector.cpp" line="1031"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>not reached yet by the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1057"/>
+        <location filename="../views/pixel_inspector.cpp" line="1046"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1058"/>
+        <location filename="../views/pixel_inspector.cpp" line="1047"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Without stepping, the colours of writes overwritten later are not kept.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1102"/>
+        <location filename="../views/pixel_inspector.cpp" line="1091"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1105"/>
+        <location filename="../views/pixel_inspector.cpp" line="1094"/>
         <source>The cleared pixel is not lit.</source>
         <translation>The cleared pixel is not lit.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1108"/>
+        <location filename="../views/pixel_inspector.cpp" line="1097"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1120"/>
+        <location filename="../views/pixel_inspector.cpp" line="1109"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Lighting of step %1, triangle %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1125"/>
+        <location filename="../views/pixel_inspector.cpp" line="1114"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejected: this colour was never written)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1136"/>
+        <location filename="../views/pixel_inspector.cpp" line="1127"/>
         <source>object colour</source>
         <translation>object colour</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1139"/>
+        <location filename="../views/pixel_inspector.cpp" line="1130"/>
         <source>emission</source>
         <translation>emission</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1141"/>
+        <location filename="../views/pixel_inspector.cpp" line="1132"/>
         <source>ambient</source>
         <translation>ambient</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1146"/>
+        <location filename="../views/pixel_inspector.cpp" line="1137"/>
         <source>diffuse %1</source>
         <translation>diffuse %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1149"/>
+        <location filename="../views/pixel_inspector.cpp" line="1140"/>
         <source>specular %1</source>
         <translation>specular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1153"/>
+        <location filename="../views/pixel_inspector.cpp" line="1144"/>
         <source>diffuse</source>
         <translation>diffuse</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1160"/>
+        <location filename="../views/pixel_inspector.cpp" line="1146"/>
         <source>specular</source>
         <translation>specular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1185"/>
+        <location filename="../views/pixel_inspector.cpp" line="1174"/>
         <source>No special case: every term applies as written.</source>
         <translation>No special case: every term applies as written.</translation>
     </message>
@@ -3367,276 +3219,276 @@
         <translation>lower edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="540"/>
+        <location filename="../views/scanline_view.cpp" line="480"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="543"/>
+        <location filename="../views/scanline_view.cpp" line="483"/>
         <source>Start of the frame: step forward to walk the first triangle, or pick a pixel to see the triangle holding it.</source>
         <translation>Start of the frame: step forward to walk the first triangle, or pick a pixel to see the triangle holding it.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="546"/>
+        <location filename="../views/scanline_view.cpp" line="486"/>
         <source>Pick a pixel, or step through the frame, to see a triangle scan converted.</source>
         <translation>Pick a pixel, or step through the frame, to see a triangle scan converted.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="551"/>
+        <location filename="../views/scanline_view.cpp" line="491"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</source>
         <translation>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="554"/>
+        <location filename="../views/scanline_view.cpp" line="494"/>
         <source>scanline %1</source>
         <translation>scanline %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="556"/>
+        <location filename="../views/scanline_view.cpp" line="496"/>
         <source>pixel %1</source>
         <translation>pixel %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="559"/>
+        <location filename="../views/scanline_view.cpp" line="499"/>
         <source>at the stepping cursor</source>
         <translation>at the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="560"/>
+        <location filename="../views/scanline_view.cpp" line="500"/>
         <source>the triangle selected (the cursor is at the %1 of the frame)</source>
         <translation>the triangle selected (the cursor is at the %1 of the frame)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="561"/>
+        <location filename="../views/scanline_view.cpp" line="501"/>
         <source>start</source>
         <translation>start</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="562"/>
+        <location filename="../views/scanline_view.cpp" line="502"/>
         <source>end</source>
         <translation>end</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="583"/>
+        <location filename="../views/scanline_view.cpp" line="519"/>
         <source>Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the top to the bottom; the two short edges meet at the middle vertex.</source>
         <translation>Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the top to the bottom; the two short edges meet at the middle vertex.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="588"/>
+        <location filename="../views/scanline_view.cpp" line="524"/>
         <source>Its area on the screen is zero: it has no inside and is not scanned.</source>
         <translation>Its area on the screen is zero: it has no inside and is not scanned.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="593"/>
+        <location filename="../views/scanline_view.cpp" line="529"/>
         <source>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, so the middle vertex is %2 of the long edge: the long edge bounds the spans on the %3.</source>
         <translation>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, so the middle vertex is %2 of the long edge: the long edge bounds the spans on the %3.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="596"/>
-        <location filename="../views/scanline_view.cpp" line="597"/>
-        <location filename="../views/scanline_view.cpp" line="630"/>
+        <location filename="../views/scanline_view.cpp" line="532"/>
+        <location filename="../views/scanline_view.cpp" line="533"/>
+        <location filename="../views/scanline_view.cpp" line="566"/>
         <source>right</source>
         <translation>right</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="596"/>
-        <location filename="../views/scanline_view.cpp" line="597"/>
-        <location filename="../views/scanline_view.cpp" line="630"/>
+        <location filename="../views/scanline_view.cpp" line="532"/>
+        <location filename="../views/scanline_view.cpp" line="533"/>
+        <location filename="../views/scanline_view.cpp" line="566"/>
         <source>left</source>
         <translation>left</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="600"/>
+        <location filename="../views/scanline_view.cpp" line="536"/>
         <source>long</source>
         <translation>long</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="600"/>
+        <location filename="../views/scanline_view.cpp" line="536"/>
         <source>upper</source>
         <translation>upper</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="600"/>
+        <location filename="../views/scanline_view.cpp" line="536"/>
         <source>lower</source>
         <translation>lower</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="617"/>
+        <location filename="../views/scanline_view.cpp" line="553"/>
         <source>from</source>
         <translation>from</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="618"/>
+        <location filename="../views/scanline_view.cpp" line="554"/>
         <source>to</source>
         <translation>to</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="619"/>
+        <location filename="../views/scanline_view.cpp" line="555"/>
         <source>x on its first row</source>
         <translation>x on its first row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="622"/>
+        <location filename="../views/scanline_view.cpp" line="558"/>
         <source>dx/dy</source>
         <translation>dx/dy</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="623"/>
+        <location filename="../views/scanline_view.cpp" line="559"/>
         <source>horizontal</source>
         <translation>horizontal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="625"/>
+        <location filename="../views/scanline_view.cpp" line="561"/>
         <source>rows</source>
         <translation>rows</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="627"/>
+        <location filename="../views/scanline_view.cpp" line="563"/>
         <source>none</source>
         <translation>none</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="630"/>
+        <location filename="../views/scanline_view.cpp" line="566"/>
         <source>side</source>
         <translation>side</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="634"/>
+        <location filename="../views/scanline_view.cpp" line="570"/>
         <source>Only rows %1 to %2 are on the screen: the walk starts and stops there.</source>
         <translation>Only rows %1 to %2 are on the screen: the walk starts and stops there.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="641"/>
+        <location filename="../views/scanline_view.cpp" line="577"/>
         <source>No row of this triangle is on the screen.</source>
         <translation>No row of this triangle is on the screen.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="653"/>
+        <location filename="../views/scanline_view.cpp" line="589"/>
         <source>%1(%2) = %3, where the %4 edge crosses its first row</source>
         <translation>%1(%2) = %3, where the %4 edge crosses its first row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="659"/>
+        <location filename="../views/scanline_view.cpp" line="595"/>
         <source>%1(%2) = %3, where the %4 edge crosses the first row on the screen</source>
         <translation>%1(%2) = %3, where the %4 edge crosses the first row on the screen</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="664"/>
+        <location filename="../views/scanline_view.cpp" line="600"/>
         <source>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</source>
         <translation>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="677"/>
+        <location filename="../views/scanline_view.cpp" line="613"/>
         <source>Scanline y = %1</source>
         <translation>Scanline y = %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="679"/>
+        <location filename="../views/scanline_view.cpp" line="615"/>
         <source>(sampled at y = %1)</source>
         <translation>(sampled at y = %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="691"/>
+        <location filename="../views/scanline_view.cpp" line="627"/>
         <source>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="698"/>
+        <location filename="../views/scanline_view.cpp" line="634"/>
         <source>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</source>
         <translation>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="706"/>
+        <location filename="../views/scanline_view.cpp" line="642"/>
         <source>No pixel on this row</source>
         <translation>No pixel on this row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="707"/>
+        <location filename="../views/scanline_view.cpp" line="643"/>
         <source>the edges cross it between two samples.</source>
         <translation>the edges cross it between two samples.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="708"/>
+        <location filename="../views/scanline_view.cpp" line="644"/>
         <source>they are all off the screen.</source>
         <translation>they are all off the screen.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="711"/>
+        <location filename="../views/scanline_view.cpp" line="647"/>
         <source>Span [%1, %2): 1 pixel.</source>
         <translation>Span [%1, %2): 1 pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="712"/>
+        <location filename="../views/scanline_view.cpp" line="648"/>
         <source>Span [%1, %2): %3 pixels.</source>
         <translation>Span [%1, %2): %3 pixels.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="715"/>
+        <location filename="../views/scanline_view.cpp" line="651"/>
         <source>(cut to the screen&apos;s columns 0 to %1)</source>
         <translation>(cut to the screen&apos;s columns 0 to %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="718"/>
+        <location filename="../views/scanline_view.cpp" line="654"/>
         <source>The pixel at the cursor is x = %1.</source>
         <translation>The pixel at the cursor is x = %1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="729"/>
+        <location filename="../views/scanline_view.cpp" line="665"/>
         <source>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</source>
         <translation>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="734"/>
+        <location filename="../views/scanline_view.cpp" line="670"/>
         <source>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</source>
         <translation>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="736"/>
+        <location filename="../views/scanline_view.cpp" line="672"/>
         <source>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</source>
         <translation>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="741"/>
+        <location filename="../views/scanline_view.cpp" line="677"/>
         <source>depth</source>
         <translation>depth</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="741"/>
+        <location filename="../views/scanline_view.cpp" line="677"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="748"/>
+        <location filename="../views/scanline_view.cpp" line="684"/>
         <source>not computed (nothing is lit)</source>
         <translation>not computed (nothing is lit)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="749"/>
+        <location filename="../views/scanline_view.cpp" line="685"/>
         <source>zero</source>
         <translation>zero</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="767"/>
+        <location filename="../views/scanline_view.cpp" line="703"/>
         <source>Pixel (x, y) is sampled at the point (x, y) itself.</source>
         <translation>Pixel (x, y) is sampled at the point (x, y) itself.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="768"/>
+        <location filename="../views/scanline_view.cpp" line="704"/>
         <source>Pixel (x, y) is sampled at (x + %1, y + %1).</source>
         <translation>Pixel (x, y) is sampled at (x + %1, y + %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="771"/>
+        <location filename="../views/scanline_view.cpp" line="707"/>
         <source>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</source>
         <translation>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="774"/>
+        <location filename="../views/scanline_view.cpp" line="710"/>
         <source>, with the barycentrics weighted by 1/w (perspective-correct)</source>
         <translation>, with the barycentrics weighted by 1/w (perspective-correct)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="779"/>
+        <location filename="../views/scanline_view.cpp" line="715"/>
         <source>Edge walking: from one scanline to the next, each edge&apos;s x changes by its constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. The span between the two crossings is filled; the long edge bounds every row, the upper edge the rows above the middle vertex, the lower edge the rest.</source>
         <translation>Edge walking: from one scanline to the next, each edge&apos;s x changes by its constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. The span between the two crossings is filled; the long edge bounds every row, the upper edge the rows above the middle vertex, the lower edge the rest.</translation>
     </message>
@@ -3820,164 +3672,164 @@
         <translation>scanline j</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="370"/>
+        <location filename="../views/trapezoid_view.cpp" line="318"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="372"/>
+        <location filename="../views/trapezoid_view.cpp" line="320"/>
         <source>Pick a pixel, or step through the frame, to see a triangle split into trapezoids.</source>
         <translation>Pick a pixel, or step through the frame, to see a triangle split into trapezoids.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="378"/>
+        <location filename="../views/trapezoid_view.cpp" line="326"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</source>
         <translation>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="379"/>
+        <location filename="../views/trapezoid_view.cpp" line="327"/>
         <source>scanline %1</source>
         <translation>scanline %1</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="380"/>
+        <location filename="../views/trapezoid_view.cpp" line="328"/>
         <source>pixel %1</source>
         <translation>pixel %1</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="382"/>
+        <location filename="../views/trapezoid_view.cpp" line="330"/>
         <source>at the stepping cursor</source>
         <translation>at the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="382"/>
+        <location filename="../views/trapezoid_view.cpp" line="330"/>
         <source>the triangle selected</source>
         <translation>the triangle selected</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="409"/>
+        <location filename="../views/trapezoid_view.cpp" line="353"/>
         <source>Its area on the screen is zero: it has no inside, no trapezoid, and is not scanned.</source>
         <translation>Its area on the screen is zero: it has no inside, no trapezoid, and is not scanned.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="417"/>
+        <location filename="../views/trapezoid_view.cpp" line="361"/>
         <source>Vertices sorted by j: top %1, middle %2, bottom %3. The triangle is split at the middle vertex&apos;s row j = %4.</source>
         <translation>Vertices sorted by j: top %1, middle %2, bottom %3. The triangle is split at the middle vertex&apos;s row j = %4.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="422"/>
+        <location filename="../views/trapezoid_view.cpp" line="366"/>
         <source>The long edge from top to bottom meets that row at s = (%1 &amp;minus; %2) / (%3 &amp;minus; %2) = %4: M&apos; = lerp(s, top, bottom) = %5, %6.</source>
         <translation>The long edge from top to bottom meets that row at s = (%1 &amp;minus; %2) / (%3 &amp;minus; %2) = %4: M&apos; = lerp(s, top, bottom) = %5, %6.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="428"/>
+        <location filename="../views/trapezoid_view.cpp" line="372"/>
         <source>Two vertices share a row: the triangle is one trapezoid, two of whose corners are the same vertex.</source>
         <translation>Two vertices share a row: the triangle is one trapezoid, two of whose corners are the same vertex.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="433"/>
+        <location filename="../views/trapezoid_view.cpp" line="377"/>
         <source>Each corner carries the colour Gouraud shading worked out at its vertex, and the depth.</source>
         <translation>Each corner carries the colour Gouraud shading worked out at its vertex, and the depth.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="439"/>
+        <location filename="../views/trapezoid_view.cpp" line="383"/>
         <source>Each corner carries the depth%1 (colours are carried under Gouraud shading, for a triangle with a pixel on the screen, once the frame&apos;s replay is built).</source>
         <translation>Each corner carries the depth%1 (colours are carried under Gouraud shading, for a triangle with a pixel on the screen, once the frame&apos;s replay is built).</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="441"/>
+        <location filename="../views/trapezoid_view.cpp" line="385"/>
         <source> as 1/z, which is linear on the screen</source>
         <translation> as 1/z, which is linear on the screen</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="446"/>
+        <location filename="../views/trapezoid_view.cpp" line="390"/>
         <source>corner</source>
         <translation>corner</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="449"/>
+        <location filename="../views/trapezoid_view.cpp" line="393"/>
         <source>rows</source>
         <translation>rows</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="457"/>
-        <location filename="../views/trapezoid_view.cpp" line="486"/>
+        <location filename="../views/trapezoid_view.cpp" line="401"/>
+        <location filename="../views/trapezoid_view.cpp" line="430"/>
         <source>upper</source>
         <translation>upper</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="457"/>
-        <location filename="../views/trapezoid_view.cpp" line="486"/>
+        <location filename="../views/trapezoid_view.cpp" line="401"/>
+        <location filename="../views/trapezoid_view.cpp" line="430"/>
         <source>lower</source>
         <translation>lower</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="471"/>
+        <location filename="../views/trapezoid_view.cpp" line="415"/>
         <source>none</source>
         <translation>none</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="484"/>
+        <location filename="../views/trapezoid_view.cpp" line="428"/>
         <source>Scanline j = %1, in the %2 trapezoid</source>
         <translation>Scanline j = %1, in the %2 trapezoid</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="499"/>
+        <location filename="../views/trapezoid_view.cpp" line="443"/>
         <source>No pixel of this row lies between L and R on the screen.</source>
         <translation>No pixel of this row lies between L and R on the screen.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="502"/>
+        <location filename="../views/trapezoid_view.cpp" line="446"/>
         <source>Pixels i with L_i &amp;le; i%1 &amp;lt; R_i: %2 to %3.</source>
         <translation>Pixels i with L_i &amp;le; i%1 &amp;lt; R_i: %2 to %3.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="507"/>
+        <location filename="../views/trapezoid_view.cpp" line="451"/>
         <source>Pixels i from ceil(L_i%1) to floor(R_i%1): %2 to %3.</source>
         <translation>Pixels i from ceil(L_i%1) to floor(R_i%1): %2 to %3.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="518"/>
+        <location filename="../views/trapezoid_view.cpp" line="462"/>
         <source>Pixel i = %1</source>
         <translation>Pixel i = %1</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="528"/>
+        <location filename="../views/trapezoid_view.cpp" line="472"/>
         <source>z = 1 / (1/z) = %1; the depth test&apos;s z there: %2 (from the barycentrics, in float).</source>
         <translation>z = 1 / (1/z) = %1; the depth test&apos;s z there: %2 (from the barycentrics, in float).</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="531"/>
+        <location filename="../views/trapezoid_view.cpp" line="475"/>
         <source>The depth test&apos;s z there: %1 (from the barycentrics, in float).</source>
         <translation>The depth test&apos;s z there: %1 (from the barycentrics, in float).</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="539"/>
+        <location filename="../views/trapezoid_view.cpp" line="483"/>
         <source>The row through the middle vertex belongs to the lower trapezoid only, so no row is scanned twice.</source>
         <translation>The row through the middle vertex belongs to the lower trapezoid only, so no row is scanned twice.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="543"/>
+        <location filename="../views/trapezoid_view.cpp" line="487"/>
         <source>Pixel (i, j) is sampled at (i + %1, j + %1): t_j and t_i use those.</source>
         <translation>Pixel (i, j) is sampled at (i + %1, j + %1): t_j and t_i use those.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="545"/>
+        <location filename="../views/trapezoid_view.cpp" line="489"/>
         <source>Top-left rule: a sample exactly on the bottom vertex&apos;s row or on R belongs to the next triangle.</source>
         <translation>Top-left rule: a sample exactly on the bottom vertex&apos;s row or on R belongs to the next triangle.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="547"/>
+        <location filename="../views/trapezoid_view.cpp" line="491"/>
         <source>Inclusive rule: samples exactly on L, R or the bottom row are inside.</source>
         <translation>Inclusive rule: samples exactly on L, R or the bottom row are inside.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="550"/>
+        <location filename="../views/trapezoid_view.cpp" line="494"/>
         <source>These rules interpolate colours perspective-correctly (weights over w): the lerps of the seed, linear on the screen, are what the course rules do; the rows and pixels are the same either way.</source>
         <translation>These rules interpolate colours perspective-correctly (weights over w): the lerps of the seed, linear on the screen, are what the course rules do; the rows and pixels are the same either way.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="555"/>
+        <location filename="../views/trapezoid_view.cpp" line="499"/>
         <source>The same rows and pixels as the edge walk (scan conversion view): L_i and R_i are where the scanline crosses the triangle&apos;s edges.</source>
         <translation>The same rows and pixels as the edge walk (scan conversion view): L_i and R_i are where the scanline crosses the triangle&apos;s edges.</translation>
     </message>
@@ -3985,103 +3837,103 @@
 <context>
     <name>rasterlab::VertexTableModel</name>
     <message>
-        <location filename="../views/vertex_table.cpp" line="129"/>
+        <location filename="../views/vertex_table.cpp" line="126"/>
         <source>%1 made by clipping (edge %2-%3, t = %4)</source>
         <translation>%1 made by clipping (edge %2-%3, t = %4)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="136"/>
+        <location filename="../views/vertex_table.cpp" line="133"/>
         <source>pView = pView(%1) + t (pView(%2) - pView(%1)), on the plane that cut the edge</source>
         <translation>pView = pView(%1) + t (pView(%2) - pView(%1)), on the plane that cut the edge</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="149"/>
+        <location filename="../views/vertex_table.cpp" line="146"/>
         <source>At or behind the near plane: not projected; the triangles through it are clipped</source>
         <translation>At or behind the near plane: not projected; the triangles through it are clipped</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="152"/>
-        <location filename="../views/vertex_table.cpp" line="156"/>
+        <location filename="../views/vertex_table.cpp" line="149"/>
+        <location filename="../views/vertex_table.cpp" line="153"/>
         <source>behind</source>
         <translation>behind</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="158"/>
+        <location filename="../views/vertex_table.cpp" line="155"/>
         <source>Exact: %1</source>
         <translation>Exact: %1</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="169"/>
+        <location filename="../views/vertex_table.cpp" line="166"/>
         <source>Mixed along the edge it was made on, as shading does (normalised per pixel)</source>
         <translation>Mixed along the edge it was made on, as shading does (normalised per pixel)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="185"/>
+        <location filename="../views/vertex_table.cpp" line="182"/>
         <source>Draw</source>
         <translation>Draw</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="187"/>
+        <location filename="../views/vertex_table.cpp" line="184"/>
         <source>Vertex</source>
         <translation>Vertex</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="189"/>
+        <location filename="../views/vertex_table.cpp" line="186"/>
         <source>World (x, y, z)</source>
         <translation>World (x, y, z)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="191"/>
+        <location filename="../views/vertex_table.cpp" line="188"/>
         <source>View pView</source>
         <translation>View pView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="193"/>
+        <location filename="../views/vertex_table.cpp" line="190"/>
         <source>NDC pNdc</source>
         <translation>NDC pNdc</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="195"/>
+        <location filename="../views/vertex_table.cpp" line="192"/>
         <source>Screen pScreen</source>
         <translation>Screen pScreen</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="197"/>
+        <location filename="../views/vertex_table.cpp" line="194"/>
         <source>Normal nView</source>
         <translation>Normal nView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="205"/>
+        <location filename="../views/vertex_table.cpp" line="202"/>
         <source>The draw (object) the vertex belongs to</source>
         <translation>The draw (object) the vertex belongs to</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="207"/>
+        <location filename="../views/vertex_table.cpp" line="204"/>
         <source>The vertex number as in the file (1-based); vertices made by clipping come after the draw&apos;s own</source>
         <translation>The vertex number as in the file (1-based); vertices made by clipping come after the draw&apos;s own</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="211"/>
+        <location filename="../views/vertex_table.cpp" line="208"/>
         <source>P = worldFromModel · P_model</source>
         <translation>P = worldFromModel · P_model</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="213"/>
+        <location filename="../views/vertex_table.cpp" line="210"/>
         <source>pView = [U; V; N](P − C) for the course camera, or the draw&apos;s view matrix times P_model</source>
         <translation>pView = [U; V; N](P − C) for the course camera, or the draw&apos;s view matrix times P_model</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="217"/>
+        <location filename="../views/vertex_table.cpp" line="214"/>
         <source>pNdc = ((d/hx) x/z, (d/hy) y/z) for the course camera, or pClip.xy / pClip.w with pClip = clipFromView · pView</source>
         <translation>pNdc = ((d/hx) x/z, (d/hy) y/z) for the course camera, or pClip.xy / pClip.w with pClip = clipFromView · pView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="221"/>
+        <location filename="../views/vertex_table.cpp" line="218"/>
         <source>pScreen = ((x_ndc + 1) w/2, (1 − y_ndc) h/2), truncated (snapped to the rules&apos; grid); the tooltip holds the exact value</source>
         <translation>pScreen = ((x_ndc + 1) w/2, (1 − y_ndc) h/2), truncated (snapped to the rules&apos; grid); the tooltip holds the exact value</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="225"/>
+        <location filename="../views/vertex_table.cpp" line="222"/>
         <source>The view-space vertex normal: the normalised sum of the normals of the triangles around it (stage 3)</source>
         <translation>The view-space vertex normal: the normalised sum of the normals of the triangles around it (stage 3)</translation>
     </message>
@@ -4089,132 +3941,132 @@
 <context>
     <name>rasterlab::VertexTableView</name>
     <message>
-        <location filename="../views/vertex_table.cpp" line="257"/>
+        <location filename="../views/vertex_table.cpp" line="254"/>
         <source>Only the selected triangle&apos;s vertices</source>
         <translation>Only the selected triangle&apos;s vertices</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="315"/>
+        <location filename="../views/vertex_table.cpp" line="312"/>
         <source>%1 vertices, %2 of them made by clipping</source>
         <translation>%1 vertices, %2 of them made by clipping</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="316"/>
+        <location filename="../views/vertex_table.cpp" line="313"/>
         <source>%1 vertices</source>
         <translation>%1 vertices</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="410"/>
+        <location filename="../views/vertex_table.cpp" line="407"/>
         <source>&lt;p&gt;Select a row, or pick a pixel in the image: its triangle&apos;s three vertices are selected. The numbers of the selected vertex are worked through each formula here.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Select a row, or pick a pixel in the image: its triangle&apos;s three vertices are selected. The numbers of the selected vertex are worked through each formula here.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="413"/>
+        <location filename="../views/vertex_table.cpp" line="410"/>
         <source>&lt;p&gt;No frame yet.&lt;/p&gt;</source>
         <translation>&lt;p&gt;No frame yet.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="437"/>
+        <location filename="../views/vertex_table.cpp" line="434"/>
         <source>Vertex %1 of draw %2 (%3)</source>
         <translation>Vertex %1 of draw %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="438"/>
+        <location filename="../views/vertex_table.cpp" line="435"/>
         <source>Vertex %1 of %2</source>
         <translation>Vertex %1 of %2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="445"/>
+        <location filename="../views/vertex_table.cpp" line="442"/>
         <source>&lt;p&gt;Made by clipping the edge %1-%2 where it crosses a plane (the near plane or a clip plane), at t = %3:&lt;br&gt;pView = pView&lt;sub&gt;%1&lt;/sub&gt; + t (pView&lt;sub&gt;%2&lt;/sub&gt; − pView&lt;sub&gt;%1&lt;/sub&gt;) = %4 + %3 (%5 − %4) = &lt;b&gt;%6&lt;/b&gt;&lt;br&gt;World: P = %7 (the same interpolation).&lt;/p&gt;</source>
         <translation>&lt;p&gt;Made by clipping the edge %1-%2 where it crosses a plane (the near plane or a clip plane), at t = %3:&lt;br&gt;pView = pView&lt;sub&gt;%1&lt;/sub&gt; + t (pView&lt;sub&gt;%2&lt;/sub&gt; − pView&lt;sub&gt;%1&lt;/sub&gt;) = %4 + %3 (%5 − %4) = &lt;b&gt;%6&lt;/b&gt;&lt;br&gt;World: P = %7 (the same interpolation).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="456"/>
+        <location filename="../views/vertex_table.cpp" line="453"/>
         <source>&lt;p&gt;World: P = M(t) · worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt; (M: the animation matrix at t = %3 s)&lt;/p&gt;</source>
         <translation>&lt;p&gt;World: P = M(t) · worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt; (M: the animation matrix at t = %3 s)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="461"/>
+        <location filename="../views/vertex_table.cpp" line="458"/>
         <source>&lt;p&gt;World: P = P&lt;sub&gt;model&lt;/sub&gt; = &lt;b&gt;%1&lt;/b&gt; (worldFromModel is the identity)&lt;/p&gt;</source>
         <translation>&lt;p&gt;World: P = P&lt;sub&gt;model&lt;/sub&gt; = &lt;b&gt;%1&lt;/b&gt; (worldFromModel is the identity)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="465"/>
+        <location filename="../views/vertex_table.cpp" line="462"/>
         <source>&lt;p&gt;World: P = worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;World: P = worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="471"/>
+        <location filename="../views/vertex_table.cpp" line="468"/>
         <source>&lt;p&gt;View: pView = [U; V; N](P − C), with C = %1:&lt;br&gt;P − C = %2&lt;br&gt;x = U · (P − C) = %3 · %2 = %4&lt;br&gt;y = V · (P − C) = %5 · %2 = %6&lt;br&gt;z = N · (P − C) = %7 · %2 = %8&lt;br&gt;pView = &lt;b&gt;%9&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;View: pView = [U; V; N](P − C), with C = %1:&lt;br&gt;P − C = %2&lt;br&gt;x = U · (P − C) = %3 · %2 = %4&lt;br&gt;y = V · (P − C) = %5 · %2 = %6&lt;br&gt;z = N · (P − C) = %7 · %2 = %8&lt;br&gt;pView = &lt;b&gt;%9&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="479"/>
+        <location filename="../views/vertex_table.cpp" line="476"/>
         <source>&lt;p&gt;View: pView = viewFromModel · P&lt;sub&gt;model&lt;/sub&gt; (the draw&apos;s own view matrix) = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;View: pView = viewFromModel · P&lt;sub&gt;model&lt;/sub&gt; (the draw&apos;s own view matrix) = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="487"/>
+        <location filename="../views/vertex_table.cpp" line="484"/>
         <source>&lt;p&gt;z = %1 is not beyond the near plane (w = %2): the vertex is behind, not projected; the triangles through it are clipped there.&lt;/p&gt;</source>
         <translation>&lt;p&gt;z = %1 is not beyond the near plane (w = %2): the vertex is behind, not projected; the triangles through it are clipped there.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="495"/>
+        <location filename="../views/vertex_table.cpp" line="492"/>
         <source>&lt;p&gt;NDC: pNdc = ((d/hx) x/z, (d/hy) y/z) = ((%1/%2) · %3/%4, (%1/%5) · %6/%4) = &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;NDC: pNdc = ((d/hx) x/z, (d/hy) y/z) = ((%1/%2) · %3/%4, (%1/%5) · %6/%4) = &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="500"/>
+        <location filename="../views/vertex_table.cpp" line="497"/>
         <source>&lt;p&gt;Clip: pClip = clipFromView · pView = %1&lt;br&gt;NDC: pNdc = pClip.xy / pClip.w = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Clip: pClip = clipFromView · pView = %1&lt;br&gt;NDC: pNdc = pClip.xy / pClip.w = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="509"/>
+        <location filename="../views/vertex_table.cpp" line="506"/>
         <source>truncated, as C&apos;s (int) does</source>
         <translation>truncated, as C&apos;s (int) does</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="511"/>
+        <location filename="../views/vertex_table.cpp" line="508"/>
         <source>truncated to a grid of 1/%1 pixel</source>
         <translation>truncated to a grid of 1/%1 pixel</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="513"/>
+        <location filename="../views/vertex_table.cpp" line="510"/>
         <source>rounded to the nearest 1/%1 pixel</source>
         <translation>rounded to the nearest 1/%1 pixel</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="514"/>
+        <location filename="../views/vertex_table.cpp" line="511"/>
         <source>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</source>
         <translation>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="515"/>
+        <location filename="../views/vertex_table.cpp" line="512"/>
         <source>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</source>
         <translation>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="520"/>
+        <location filename="../views/vertex_table.cpp" line="517"/>
         <source>&lt;p&gt;Screen: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Screen: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="529"/>
+        <location filename="../views/vertex_table.cpp" line="526"/>
         <source>&lt;p&gt;Normal: mixed along the edge like pView, %1; shading normalises it per pixel.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: mixed along the edge like pView, %1; shading normalises it per pixel.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="533"/>
+        <location filename="../views/vertex_table.cpp" line="530"/>
         <source>&lt;p&gt;Normal: the file&apos;s normal carried to view space by the inverse transpose of viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: the file&apos;s normal carried to view space by the inverse transpose of viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="540"/>
+        <location filename="../views/vertex_table.cpp" line="537"/>
         <source>&lt;p&gt;Normal: the normalised sum of the normals of the %1 triangles around it: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: the normalised sum of the normals of the %1 triangles around it: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="546"/>
+        <location filename="../views/vertex_table.cpp" line="543"/>
         <source>&lt;p&gt;Normal: none, %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: none, %1.&lt;/p&gt;</translation>
     </message>
@@ -4270,10 +4122,6 @@
         <location filename="../views/zbuffer_view.cpp" line="261"/>
         <source>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</source>
         <translation>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth z = &amp;alpha;z&lt;sub&gt;1&lt;/sub&gt; + &amp;beta;z&lt;sub&gt;2&lt;/sub&gt; + &amp;gamma;z&lt;sub&gt;3&lt;/sub&gt; (%2) is compared with the stored one; it is written, with its colour, only when %3. So far: %4 fragments tested, %5 written, %6 rejected.</source>
-        <translation type="vanished">&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth z = &amp;alpha;z&lt;sub&gt;1&lt;/sub&gt; + &amp;beta;z&lt;sub&gt;2&lt;/sub&gt; + &amp;gamma;z&lt;sub&gt;3&lt;/sub&gt; (%2) is compared with the stored one; it is written, with its colour, only when %3. So far: %4 fragments tested, %5 written, %6 rejected.</translation>
     </message>
     <message>
         <location filename="../views/zbuffer_view.cpp" line="316"/>
