@@ -137,7 +137,8 @@ dmat4 clipFromViewOf(const Scene& scene, const Draw& draw);
 class ProjectionStage {
 public:
     // threads: vertices and per-triangle verdicts are worked out on several; triangles are
-    // emitted and clipped in order on one (the result does not depend on their number).
+    // emitted on several when none needs clipping, else emitted and clipped in order on one
+    // (the result does not depend on their number).
     Projection run(const Scene& scene, const ViewTransform& view, Diagnostics& diagnostics,
                    int threads = 1) const;
 };

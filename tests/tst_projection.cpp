@@ -2,6 +2,7 @@
 // against the near plane (a quad splits in two, nothing behind the camera is divided).
 #include <QtTest>
 
+#include "benchmark_scenes.h"
 #include "camera_basis.h"
 #include "projection.h"
 #include "test_support.h"
@@ -17,11 +18,11 @@ private:
         Projection projection;
         Diagnostics diagnostics;
     };
-    static Run project(const Scene& scene) {
+    static Run project(const Scene& scene, int threads = 1) {
         Run run;
         auto basis = CameraBasisStage().run(scene, run.diagnostics);
         const ViewTransform view = ViewTransformStage().run(scene, basis.value());
-        run.projection = ProjectionStage().run(scene, view, run.diagnostics);
+        run.projection = ProjectionStage().run(scene, view, run.diagnostics, threads);
         return run;
     }
 
@@ -253,6 +254,65 @@ private slots:
         QCOMPARE(run.projection.throughZeroOrBehind, std::size_t(2));
         QVERIFY(run.diagnostics.contains(
             "naive projection: 2 triangles have a vertex at or behind the camera"));
+    }
+    void severalThreadsEmitTheSameTriangles() {
+        // Nothing crosses a plane, so several threads emit the triangles. Draw 0: a closed
+        // torus of 5,120 triangles 8 in front of the axis camera, its hidden back faces left
+        // out. Draw 1 (cull set): 6,000 separate triangles with legs d = 0.25 at z = 5, on a
+        // 200x200 screen (x = (1 - x/z) 100, y = (1 - y/z) 100): every fifth lies at z = -5,
+        // wholly behind the camera (1,200); of the others, those with i % 3 == 0 keep the
+        // order (0,0) (d,0) (0,d), whose screen edges (-5, 0) and (0, -5) have the cross
+        // product +25, clockwise on screen: 2,000 - 400 = 1,600 culled; the rest are
+        // reversed and kept: 3,200.
+        auto torus = torusMesh(64, 40);
+        for (dvec4& p : torus->positions) p.z += 8.0;
+        std::vector<dvec3> positions;
+        std::vector<std::array<std::uint32_t, 3>> separate;
+        const double d = 0.25;
+        for (std::uint32_t i = 0; i < 6000; ++i) {
+            const double x = -2.0 + 4.0 * (i % 80) / 80.0, y = -2.0 + 4.0 * (i / 80) / 75.0;
+            const double z = i % 5 == 0 ? -5.0 : 5.0;
+            positions.push_back({x, y, z});
+            positions.push_back({x + d, y, z});
+            positions.push_back({x, y + d, z});
+            separate.push_back(i % 3 == 0 ? std::array{3 * i, 3 * i + 1, 3 * i + 2}
+                                          : std::array{3 * i, 3 * i + 2, 3 * i + 1});
+        }
+        Scene scene = testing::makeScene(testing::axisCamera(), torus, 200, 200);
+        scene.cullHiddenBackFaces = true;
+        Draw grid = scene.draws[0];
+        grid.mesh = testing::makeMesh(std::move(positions), std::move(separate));
+        grid.cull = true;
+        scene.draws.push_back(grid);
+
+        const Run one = project(scene, 1);
+        const Projection& a = one.projection;
+        QCOMPARE(a.clipped, std::size_t(0));
+        QCOMPARE(a.behind, std::size_t(1200));
+        QCOMPARE(a.culled, std::size_t(1600));
+        QVERIFY(a.backFaces > 2000 && a.backFaces < 3120);
+        QCOMPARE(a.inside, 5120 - a.backFaces + 3200);
+        QCOMPARE(a.triangles.size(), a.inside);
+        for (int threads : {2, 3, 7}) {
+            const Run several = project(scene, threads);
+            const Projection& b = several.projection;
+            QCOMPARE(b.triangles.size(), a.triangles.size());
+            for (std::size_t k = 0; k < a.triangles.size(); ++k) {
+                QCOMPARE(b.triangles[k].draw, a.triangles[k].draw);
+                QCOMPARE(b.triangles[k].source, a.triangles[k].source);
+                QCOMPARE(b.triangles[k].v, a.triangles[k].v);
+            }
+            for (std::size_t draw = 0; draw < 2; ++draw)
+                QVERIFY(b.draws[draw].fate == a.draws[draw].fate);
+            QCOMPARE(b.inside, a.inside);
+            QCOMPARE(b.backFaces, a.backFaces);
+            QCOMPARE(b.behind, a.behind);
+            QCOMPARE(b.culled, a.culled);
+            QCOMPARE(b.clippedAway, a.clippedAway);
+            QCOMPARE(b.beyondGuardBand, a.beyondGuardBand);
+            QCOMPARE(b.nonFinite, a.nonFinite);
+            QCOMPARE(several.diagnostics.size(), one.diagnostics.size());
+        }
     }
 };
 
