@@ -323,8 +323,13 @@ Counts testChunks(const Scene& scene, const Projection& projection, const ScanCo
             for (int y = y0; y < y1; ++y) {
                 std::fill_n(out.depth.row(y) + dirty.begin, n, clear);
                 std::fill_n(out.triangle.row(y) + dirty.begin, n, kNoTriangle);
-                // Barycentrics are read only where a triangle won: not cleared (8 bytes a
-                // pixel of memory traffic saved).
+                // Barycentrics are read only where a triangle won, so any value does; but
+                // zeroing them here with memset brings their lines into the cache ahead of
+                // the spans' stores (full-screen sphere, Gouraud, 1 thread: depth test
+                // 2.5-2.9 -> 2.2 ms).
+                if (out.barycentricsKept)
+                    std::memset(static_cast<void*>(out.barycentric.row(y) + dirty.begin), 0,
+                                n * sizeof(vec2));
             }
         }
         ColumnRange touched{scene.width, 0};
