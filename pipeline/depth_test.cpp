@@ -248,7 +248,8 @@ Counts testAll(const Scene& scene, const Projection& projection, const ScanConve
 // Every span, sorted by chunk of rows (parallel.h) and within a chunk in triangle order: the
 // spans of chunk c are entries[first[c] .. first[c + 1]).
 struct Entry {
-    std::uint32_t triangle, span;
+    std::uint32_t triangle;
+    Span span;  // a copy: the chunk's spans are then read in order, not gathered
 };
 struct SpansByChunk {
     std::vector<Entry> entries;
@@ -291,8 +292,9 @@ SpansByChunk sortByChunk(const ScanConversion& scan, int chunks, int threads) {
                          last = rangeBegin(triangles, part + 1, parts);
              t < last; ++t) {
             for (std::uint32_t k = scan.spanStart[t]; k < scan.spanStart[t + 1]; ++k) {
-                const auto c = static_cast<std::size_t>(scan.spans[k].y / kRowChunk);
-                out.entries[where[c]++] = {static_cast<std::uint32_t>(t), k};
+                const Span& span = scan.spans[k];
+                const auto c = static_cast<std::size_t>(span.y / kRowChunk);
+                out.entries[where[c]++] = {static_cast<std::uint32_t>(t), span};
             }
         }
     });
@@ -303,9 +305,8 @@ SpansByChunk sortByChunk(const ScanConversion& scan, int chunks, int threads) {
 // then its spans tested in triangle order, so that each chunk's pixels stay in the cache
 // while its triangles are drawn. Every pixel sees the same fragments in the same order as
 // in testAll, so the buffers are the same bits.
-Counts testChunks(const Scene& scene, const Projection& projection, const ScanConversion& scan,
-                  const SpansByChunk& sorted, DepthTest& out, int part, int parts,
-                  const std::vector<ColumnRange>& previous) {
+Counts testChunks(const Scene& scene, const Projection& projection, const SpansByChunk& sorted,
+                  DepthTest& out, int part, int parts, const std::vector<ColumnRange>& previous) {
     Counts counts;
     NullProbe probe;
     const int chunks = (scene.height + kRowChunk - 1) / kRowChunk;
@@ -334,7 +335,7 @@ Counts testChunks(const Scene& scene, const Projection& projection, const ScanCo
         }
         ColumnRange touched{scene.width, 0};
         for (std::uint32_t e = start[c]; e < start[c + 1]; ++e) {
-            const Span& span = scan.spans[entries[e].span];
+            const Span& span = entries[e].span;
             touched.begin = std::min(touched.begin, span.xBegin);
             touched.end = std::max(touched.end, span.xEnd);
         }
@@ -348,7 +349,7 @@ Counts testChunks(const Scene& scene, const Projection& projection, const ScanCo
                 current = entry.triangle;
                 setup.emplace(projection, current, perspectiveDepth(scene));
             }
-            testSpanOf(scene, *setup, current, scan.spans[entry.span], out, counts, probe);
+            testSpanOf(scene, *setup, current, entry.span, out, counts, probe);
         }
         if (!out.visible.empty() && touched.begin < touched.end) {
             // The triangles that kept a pixel of this chunk, a run of one id at a time. Two
@@ -434,7 +435,7 @@ DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
         const SpansByChunk sorted = sortByChunk(scan, chunks, threads);
         runParts(parts, [&](int part) {
             counts[static_cast<std::size_t>(part)] =
-                testChunks(scene, projection, scan, sorted, out, part, parts, previous);
+                testChunks(scene, projection, sorted, out, part, parts, previous);
         });
     }
     for (const Counts& c : counts) {
