@@ -57,6 +57,29 @@ double screenArea(const dvec2& a, const dvec2& b, const dvec2& c) {
     return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
 
+// The counter of a projection that counts the triangles of a fate.
+std::size_t& tally(Projection& out, TriangleFate fate) {
+    switch (fate) {
+        case TriangleFate::Inside:
+            return out.inside;
+        case TriangleFate::Clipped:
+            return out.clipped;
+        case TriangleFate::Behind:
+            return out.behind;
+        case TriangleFate::ClippedAway:
+            return out.clippedAway;
+        case TriangleFate::Culled:
+            return out.culled;
+        case TriangleFate::BackFace:
+            return out.backFaces;
+        case TriangleFate::BeyondGuardBand:
+            return out.beyondGuardBand;
+        case TriangleFate::NonFinite:
+            break;
+    }
+    return out.nonFinite;
+}
+
 }  // namespace
 
 Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
@@ -315,14 +338,8 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             for (std::size_t part = 0; part < parts; ++part) {
                 at[part] = kept;
                 kept += counts[part][static_cast<std::size_t>(TriangleFate::Inside)];
-                const auto& c = counts[part];
-                out.inside += c[static_cast<std::size_t>(TriangleFate::Inside)];
-                out.backFaces += c[static_cast<std::size_t>(TriangleFate::BackFace)];
-                out.behind += c[static_cast<std::size_t>(TriangleFate::Behind)];
-                out.clippedAway += c[static_cast<std::size_t>(TriangleFate::ClippedAway)];
-                out.beyondGuardBand += c[static_cast<std::size_t>(TriangleFate::BeyondGuardBand)];
-                out.culled += c[static_cast<std::size_t>(TriangleFate::Culled)];
-                out.nonFinite += c[static_cast<std::size_t>(TriangleFate::NonFinite)];
+                for (std::size_t fate = 0; fate < kFates; ++fate)
+                    tally(out, static_cast<TriangleFate>(fate)) += counts[part][fate];
             }
             out.triangles.resize(kept);
             runParts(triangleParts, [&](int part) {
@@ -393,16 +410,14 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             }
             if (outsidePlane != SIZE_MAX) {
                 proj.fate[t] = outsideFate(outsidePlane);
-                ++(proj.fate[t] == TriangleFate::Behind        ? out.behind
-                   : proj.fate[t] == TriangleFate::ClippedAway ? out.clippedAway
-                                                               : out.beyondGuardBand);
+                ++tally(out, proj.fate[t]);
                 continue;
             }
             if (!cut) {
                 if (emit(tri))
                     ++out.inside;
                 else
-                    ++(proj.fate[t] == TriangleFate::Culled ? out.culled : out.nonFinite);
+                    ++tally(out, proj.fate[t]);
                 continue;
             }
             // Sutherland-Hodgman, one plane after the other: walk the polygon's edges, keep
@@ -430,7 +445,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             } else if (any) {
                 ++out.clipped;
             } else {
-                ++(proj.fate[t] == TriangleFate::Culled ? out.culled : out.nonFinite);
+                ++tally(out, proj.fate[t]);
             }
         }
     }
