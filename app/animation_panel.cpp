@@ -17,6 +17,7 @@
 #include <cmath>
 
 #include "animation.h"
+#include "frame_trace.h"
 #include "number_text.h"
 
 namespace rasterlab {
@@ -223,11 +224,13 @@ void AnimationPanel::updateFrameLabel() {
                               .arg(number(frame() / framesPerSecond(), 4)));
 }
 
-void AnimationPanel::showScene(const rl::Scene& scene) {
+void AnimationPanel::showFrame(const rl::FrameTrace& frame) {
+    const rl::Scene& scene = *frame.scene;
     const rl::Draw* draw = nullptr;
-    for (const rl::Draw& d : scene.draws)
-        if (d.animation) {
-            draw = &d;
+    std::size_t drawIndex = 0;
+    for (; drawIndex < scene.draws.size(); ++drawIndex)
+        if (scene.draws[drawIndex].animation) {
+            draw = &scene.draws[drawIndex];
             break;
         }
     if (!draw) {
@@ -237,8 +240,8 @@ void AnimationPanel::showScene(const rl::Scene& scene) {
         return;
     }
     const rl::Animation& a = *draw->animation;
-    const rl::dvec3 c = a.centre ? *a.centre : rl::worldBoundingBoxCentre(*draw);
-    const rl::dvec3 axis = a.axis ? *a.axis : rl::turntableAxis(scene);
+    const rl::dvec3 c = frame.view->pivot[drawIndex].centre;
+    const rl::dvec3 axis = frame.view->pivot[drawIndex].axis;
     const rl::dmat4 m = rl::animationMatrix(a, c, axis, scene.time);
     QString rows;
     for (int r = 0; r < 4; ++r) {

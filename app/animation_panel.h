@@ -14,6 +14,10 @@
 #include "scene.h"
 #include "scene_document.h"
 
+namespace rl {
+struct FrameTrace;
+}
+
 class QAction;
 class QCheckBox;
 class QDoubleSpinBox;
@@ -43,8 +47,8 @@ public:
     void setPlaying(bool playing);  // playing turns the animation on
     QAction* playAction() const { return m_playAction; }
 
-    // The frame shown, for M(t) with its numbers.
-    void showScene(const rl::Scene& scene);
+    // The frame shown, for M(t) with its numbers (its pivot as the view transform found it).
+    void showFrame(const rl::FrameTrace& frame);
 
 signals:
     void changed();  // a setting or the time: the scene must be rendered again

@@ -811,7 +811,7 @@ void MainWindow::onFrameReady(const RenderedFrame& frame) {
     m_frame = frame;
     m_zbuffer->setFrame(frame.trace);
     m_inspection->setFrame(frame.trace, frame.image);
-    m_animation->showScene(*frame.trace->scene);
+    m_animation->showFrame(*frame.trace);
     // While the animation plays, a frame is replaced before anyone could step through it: its
     // replay is built once paused (onAnimationPlaying).
     if (m_animation->isPlaying())

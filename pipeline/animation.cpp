@@ -68,18 +68,27 @@ dvec3 worldBoundingBoxCentre(const Draw& draw) {
     return 0.5 * (lo + hi);
 }
 
-dmat4 animationMatrix(const Scene& scene, const Draw& draw, double t) {
-    if (!draw.animation) return dmat4(1.0);
+AnimationPivot animationPivot(const Scene& scene, const Draw& draw) {
+    if (!draw.animation) return {};
     const Animation& a = *draw.animation;
-    return animationMatrix(a, a.centre ? *a.centre : worldBoundingBoxCentre(draw),
-                           a.axis ? *a.axis : turntableAxis(scene), t);
+    return {a.centre ? *a.centre : worldBoundingBoxCentre(draw),
+            a.axis ? *a.axis : turntableAxis(scene)};
 }
 
-dmat4 animatedWorldFromModel(const Scene& scene, const Draw& draw) {
+dmat4 animationMatrix(const Scene& scene, const Draw& draw, double t) {
+    if (!draw.animation) return dmat4(1.0);
+    const AnimationPivot pivot = animationPivot(scene, draw);
+    return animationMatrix(*draw.animation, pivot.centre, pivot.axis, t);
+}
+
+dmat4 animatedWorldFromModel(const Scene& scene, const Draw& draw, AnimationPivot* pivot) {
     // Without an animation the matrix is used as it is (not multiplied by an identity), so
     // such scenes render bit for bit as before.
     if (!draw.animation) return draw.worldFromModel;
-    return animationMatrix(scene, draw, scene.time) * draw.worldFromModel;
+    const AnimationPivot resolved = animationPivot(scene, draw);
+    if (pivot) *pivot = resolved;
+    return animationMatrix(*draw.animation, resolved.centre, resolved.axis, scene.time) *
+           draw.worldFromModel;
 }
 
 void animateEveryDraw(Scene& scene, const Animation& motion, double t) {
@@ -90,11 +99,21 @@ void animateEveryDraw(Scene& scene, const Animation& motion, double t) {
 Status renderAnimationFrames(
     const Scene& scene, int frames, double framesPerSecond,
     const std::function<bool(int frame, double t, const FrameTrace& trace)>& use) {
+    // The pivots do not move with time: found once (a pass over each animated mesh), not in
+    // every frame's view transform.
+    Scene pinned = scene;
+    for (Draw& draw : pinned.draws) {
+        if (!draw.animation) continue;
+        const AnimationPivot pivot = animationPivot(scene, draw);
+        draw.animation->centre = pivot.centre;
+        draw.animation->axis = pivot.axis;
+    }
+    RenderContext context;  // the buffers of one frame serve the next
     for (int k = 0; k < frames; ++k) {
         const double t = k / framesPerSecond;
-        auto frameScene = std::make_shared<Scene>(scene);
+        auto frameScene = std::make_shared<Scene>(pinned);
         frameScene->time = t;
-        Result<FrameTrace> trace = renderFrame(std::move(frameScene));
+        Result<FrameTrace> trace = renderFrame(std::move(frameScene), {}, &context);
         if (!trace) return trace.error();
         if (!use(k, t, trace.value())) break;
     }
@@ -105,10 +124,6 @@ std::string animationFrameFileName(int frame) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04d.png", frame);
     return name;
-}
-
-dmat3 normalMatrix(const dmat4& m) {
-    return glm::transpose(glm::inverse(dmat3(m)));
 }
 
 CarriedNormal carriedTriangleNormal(const dmat4& a, const Mesh& mesh, std::size_t triangle) {

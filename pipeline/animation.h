@@ -28,11 +28,21 @@ namespace rl {
 
 struct FrameTrace;
 
+// Where a draw's M turns: the animation's own centre and axis, or else the centre of the
+// draw's bounding box in the world (a pass over its vertices) and the turntable's axis.
+struct AnimationPivot {
+    dvec3 centre = dvec3(0.0);
+    dvec3 axis = dvec3(0.0);
+};
+AnimationPivot animationPivot(const Scene& scene, const Draw& draw);
+
 // M of a draw at time t (seconds); the identity for a draw without an animation. The one
 // function every stage, view and front end uses.
 dmat4 animationMatrix(const Scene& scene, const Draw& draw, double t);
-// M(scene.time) * draw.worldFromModel: where the draw is in the world in this frame.
-dmat4 animatedWorldFromModel(const Scene& scene, const Draw& draw);
+// M(scene.time) * draw.worldFromModel: where the draw is in the world in this frame. With
+// pivot given, the pivot M turned about is written there (for a draw with an animation).
+dmat4 animatedWorldFromModel(const Scene& scene, const Draw& draw,
+                             AnimationPivot* pivot = nullptr);
 
 // M(t) from its parts, as written above (axis of any non-zero length; a zero axis turns
 // nothing).
@@ -56,9 +66,6 @@ Status renderAnimationFrames(
     const std::function<bool(int frame, double t, const FrameTrace& trace)>& use);
 // The file an animation's frame is written to: frame_0000.png, frame_0001.png ...
 std::string animationFrameFileName(int frame);
-
-// The matrix that carries normals: the inverse transpose of m's upper 3x3.
-dmat3 normalMatrix(const dmat4& m);
 
 // A mesh triangle's normal n = (P2 - P1) x (P3 - P1) / |...| in model space, carried by a
 // matrix A (viewFromModel, say) the right way, A^-T n, and the wrong way, A n, both made unit.

@@ -9,10 +9,12 @@ namespace rl {
 ViewTransform ViewTransformStage::run(const Scene& scene, const CameraBasis& basis) const {
     ViewTransform out;
     out.worldFromModel.reserve(scene.draws.size());
+    out.pivot.assign(scene.draws.size(), AnimationPivot{});
     out.viewFromModel.reserve(scene.draws.size());
     out.pView.reserve(scene.draws.size());
-    for (const Draw& draw : scene.draws) {
-        const dmat4 worldFromModel = animatedWorldFromModel(scene, draw);
+    for (std::size_t d = 0; d < scene.draws.size(); ++d) {
+        const Draw& draw = scene.draws[d];
+        const dmat4 worldFromModel = animatedWorldFromModel(scene, draw, &out.pivot[d]);
         out.worldFromModel.push_back(worldFromModel);
         const dmat4 viewFromModel = basis.viewFromWorld * worldFromModel;
         out.viewFromModel.push_back(viewFromModel);

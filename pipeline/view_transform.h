@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "animation.h"
 #include "camera_basis.h"
 #include "math.h"
 #include "scene.h"
@@ -30,6 +31,7 @@ struct ViewLight {
 struct ViewTransform {
     // Per draw: M(t) * worldFromModel (animation.h; worldFromModel itself without an animation)
     std::vector<dmat4> worldFromModel;
+    std::vector<AnimationPivot> pivot;      // per draw: where M turns (zero without an animation)
     std::vector<dmat4> viewFromModel;       // per draw
     std::vector<std::vector<dvec4>> pView;  // per draw, per vertex
     std::vector<ViewLight> lights;
