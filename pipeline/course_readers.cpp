@@ -634,6 +634,10 @@ const char* lightingLayoutDescription(LightingLayout layout) {
     return "";
 }
 
+std::string lightKeyName(std::string_view key, std::size_t light) {
+    return std::string(key) + (light > 0 ? std::to_string(light + 1) : std::string());
+}
+
 namespace {
 
 // What the notes call each flavour.
@@ -1014,9 +1018,8 @@ std::optional<KeyMatch> findKey(const KeySpec (&keys)[N], std::string_view key) 
     return std::nullopt;
 }
 
-// A key as written for a light (0 the first): "Pl", "Pl2" ...
 std::string keyName(const KeySpec& key, int light) {
-    return std::string(key.key) + (light > 0 ? std::to_string(light + 1) : std::string());
+    return lightKeyName(key.key, static_cast<std::size_t>(light));
 }
 
 // The keys every file has, "C, N, V, d, hx and hy".
@@ -1274,9 +1277,9 @@ Result<CourseLighting> keyValueLighting(const std::vector<FieldValue>& v,
         const int expected = static_cast<int>(parts.lights.size());
         if (k != expected)
             return makeError(ErrorCode::Syntax, at(*first, k).line,
-                             "expected light " + std::to_string(expected + 1) + " (Pl" +
-                                 std::to_string(expected + 1) + ", Il" +
-                                 std::to_string(expected + 1) + ") before light " +
+                             "expected light " + std::to_string(expected + 1) + " (" +
+                                 name(kPl, expected) + ", " + name(kIl, expected) +
+                                 ") before light " +
                                  std::to_string(k + 1) + ", found " + name(*first, k) +
                                  " (lights are numbered without gaps)");
         for (const std::size_t key : {std::size_t(kPl), std::size_t(kIl)})

@@ -130,6 +130,8 @@ const char* lightingLayoutDescription(LightingLayout layout);
 
 // The lights a key = value lighting file holds: Pl, Pl2 ... Pl8 (OpenGL's minimum, seed 003).
 inline constexpr std::size_t kMaxKeyValueLights = 8;
+// A key as written for light k (0 the first): "Pl", "Pl2" ...
+std::string lightKeyName(std::string_view key, std::size_t light);
 
 // A key of key = value lighting files, in any case: Iamb, Ka, Il, Pl, Kd, Od, Ks, eta, the
 // lecture slides' Ke, two_sided, blinn, atten, spot_dir, spot_cutoff, spot_exp, and the

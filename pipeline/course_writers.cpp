@@ -42,13 +42,6 @@ std::string_view lineEndingOf(std::string_view previous) {
     return previous.find("\r\n") != std::string_view::npos ? "\r\n" : "\n";
 }
 
-template <typename Vec>
-bool isFinite(const Vec& v) {
-    for (int k = 0; k < v.length(); ++k)
-        if (!std::isfinite(v[k])) return false;
-    return true;
-}
-
 // The numbers of one line: "x y z".
 template <typename Vec>
 std::string numbers(const Vec& v) {
@@ -202,7 +195,9 @@ Result<std::string> writeLightingFile(const CourseLighting& lighting, LightingLa
     if (keyValue && count > kMaxKeyValueLights)
         return writeError(ErrorCode::Unsupported,
                           "cannot write " + std::to_string(count) +
-                              " lights in a key = value file, which holds 8 at most (Pl to Pl8)");
+                              " lights in a key = value file, which holds " +
+                              std::to_string(kMaxKeyValueLights) + " at most (Pl to " +
+                              lightKeyName("Pl", kMaxKeyValueLights - 1) + ")");
     const Material& m = lighting.material;
     bool finite = isFinite(vec3(m.ka, m.ks, m.shininess)) && isFinite(m.kd) && isFinite(m.od) &&
                   isFinite(lighting.ambientIntensity) && isFinite(m.emission);
@@ -264,18 +259,18 @@ Result<std::string> writeLightingFile(const CourseLighting& lighting, LightingLa
             if (lighting.specular == SpecularModel::BlinnPhong) entries.push_back({"blinn", "1"});
             for (std::size_t k = 0; k < count; ++k) {
                 const Light& light = lighting.lights[k];
-                const std::string suffix = k == 0 ? std::string() : std::to_string(k + 1);
+                const auto key = [k](std::string_view base) { return lightKeyName(base, k); };
                 if (k > 0) {
-                    entries.push_back({"Il" + suffix, numbers(light.intensity)});
-                    entries.push_back({"Pl" + suffix, position(light)});
+                    entries.push_back({key("Il"), numbers(light.intensity)});
+                    entries.push_back({key("Pl"), position(light)});
                 }
                 if (light.attenuation != vec3(1.0f, 0.0f, 0.0f))
-                    entries.push_back({"atten" + suffix, numbers(light.attenuation)});
+                    entries.push_back({key("atten"), numbers(light.attenuation)});
                 if (light.spot()) {
-                    entries.push_back({"spot_dir" + suffix, numbers(light.spotDirection)});
-                    entries.push_back({"spot_cutoff" + suffix, formatExact(light.spotCutoff)});
+                    entries.push_back({key("spot_dir"), numbers(light.spotDirection)});
+                    entries.push_back({key("spot_cutoff"), formatExact(light.spotCutoff)});
                     if (light.spotExponent != 0.0f)
-                        entries.push_back({"spot_exp" + suffix, formatExact(light.spotExponent)});
+                        entries.push_back({key("spot_exp"), formatExact(light.spotExponent)});
                 }
             }
             return writeKeyValues(entries, previous, isLightingKey);

@@ -588,8 +588,7 @@ Status Hw2Reader::command(const TextLine& line) {
                 return makeError(ErrorCode::Degenerate, m_scanner.at(line.tokens[1]),
                                  "'sunlight' needs a direction, found the zero vector");
             // A direction, carried to eye coordinates like a normal, then made unit length.
-            const dmat3 normalFromModel = glm::transpose(glm::inverse(dmat3(m_modelView)));
-            light.pWorld = dvec4(glm::normalize(normalFromModel * direction), 0.0);
+            light.pWorld = dvec4(glm::normalize(normalMatrix(m_modelView) * direction), 0.0);
         } else {
             auto idx = indices(line, 1, 1, "i1");
             if (!idx) return idx.error();

@@ -44,10 +44,18 @@ inline dvec3 cartesian(const dvec4& p) {
     return p.w != 0.0 && p.w != 1.0 ? dvec3(p) / p.w : dvec3(p);
 }
 
+// The matrix that carries normals: the inverse transpose of m's upper 3x3.
+inline dmat3 normalMatrix(const dmat4& m) {
+    return glm::transpose(glm::inverse(dmat3(m)));
+}
+
 inline bool isFinite(double v) {
     return v - v == 0.0;
 }
 inline bool isFinite(const dvec3& v) {
+    return isFinite(v.x) && isFinite(v.y) && isFinite(v.z);
+}
+inline bool isFinite(const vec3& v) {
     return isFinite(v.x) && isFinite(v.y) && isFinite(v.z);
 }
 

@@ -28,7 +28,7 @@ Normals NormalsStage::run(const Scene& scene, const ViewTransform& view, int thr
         const int parts = triangleCount < 4096 ? 1 : std::max(1, threads);
         const auto& given = draw.mesh->normals;
         const dmat3 normalFromModel =
-            given.empty() ? dmat3(1.0) : glm::transpose(glm::inverse(dmat3(view.viewFromModel[d])));
+            given.empty() ? dmat3(1.0) : normalMatrix(view.viewFromModel[d]);
 
         // Each part owns a range of vertices and goes through every triangle in order: it
         // works out the normal of each triangle with a corner in its range, adds it to those
@@ -42,19 +42,17 @@ Normals NormalsStage::run(const Scene& scene, const ViewTransform& view, int thr
             // One part owns every vertex: no range checks.
             const bool all = parts == 1;
             const auto mine = [&](std::uint32_t v) { return all || (v >= first && v < last); };
-            std::vector<dvec3> sum(last - first, dvec3(0.0));
+            // The sums of triangle normals, needed only where the file gives no normals.
+            const bool summing = given.empty();
+            std::vector<dvec3> sum(summing ? last - first : 0, dvec3(0.0));
             std::size_t degenerate = 0;  // on the thread's stack
             for (std::size_t t = 0; t < triangleCount; ++t) {
                 const auto& tri = triangles[t];
                 if (!all && !mine(tri[0]) && !mine(tri[1]) && !mine(tri[2])) continue;
                 // Points, not homogeneous coordinates: (x, y, z) / w (w = 1 in course files).
-                const auto point = [&](std::uint32_t v) {
-                    const dvec4& p = pView[v];
-                    return p.w != 0.0 && p.w != 1.0 ? dvec3(p) / p.w : dvec3(p);
-                };
-                const dvec3 p1 = point(tri[0]);
-                const dvec3 p2 = point(tri[1]);
-                const dvec3 p3 = point(tri[2]);
+                const dvec3 p1 = cartesian(pView[tri[0]]);
+                const dvec3 p2 = cartesian(pView[tri[1]]);
+                const dvec3 p3 = cartesian(pView[tri[2]]);
                 const dvec3 cross = glm::cross(p2 - p1, p3 - p1);
                 const double length = glm::length(cross);
                 if (!(length > std::numeric_limits<double>::min()) || !isFinite(length)) {
@@ -63,8 +61,9 @@ Normals NormalsStage::run(const Scene& scene, const ViewTransform& view, int thr
                 }
                 const dvec3 n = cross / length;
                 if (mine(tri[0])) normals.triangle[t] = vec3(n);
-                for (std::uint32_t v : tri)
-                    if (mine(v)) sum[v - first] += n;
+                if (summing)
+                    for (std::uint32_t v : tri)
+                        if (mine(v)) sum[v - first] += n;
             }
             degenerateCounts[static_cast<std::size_t>(part)] = degenerate;
 
