@@ -310,7 +310,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
         };
 
         const auto drawIndex = static_cast<std::uint32_t>(d);
-        if (outcodes && !anyCut && triangleParts > 1) {
+        if (outcodes && !anyCut) {
             // Nothing to clip: the fates on several threads, each counting on its stack, then
             // each thread writes the triangles it kept at its place in the list, so the list
             // is in triangle order as one thread would make it (1M sphere, 2 threads: this

@@ -37,8 +37,12 @@ ScanEdge makeEdge(const dvec2& top, const dvec2& bottom, int bits) {
     const std::int64_t xBottom = toGrid(bottom.x, bits), yBottom = toGrid(bottom.y, bits);
     const std::int64_t dy = yBottom - yTop;
     // Every member given: nothing is zeroed first only to be written again.
-    return ScanEdge{xTop, yTop, xBottom, yBottom, bits,
-                    dy > 0 ? double(xBottom - xTop) / double(dy) : 0.0};
+    return ScanEdge{.xTop = xTop,
+                    .yTop = yTop,
+                    .xBottom = xBottom,
+                    .yBottom = yBottom,
+                    .bits = bits,
+                    .dxdy = dy > 0 ? double(xBottom - xTop) / double(dy) : 0.0};
 }
 
 // The sampling grid: pixel index p is sampled at p * grid + offset (grid units).
@@ -211,16 +215,17 @@ TriangleSetup setupTriangle(const std::array<dvec2, 3>& p, const RasterRules& ru
     // Every member given, so none is zeroed first (a 240-byte rep stos per triangle was the
     // hottest instruction of scan conversion on the 1M sphere).
     return TriangleSetup{
-        sorted,
-        order,
-        double(area) / double(std::uint64_t(1) << (2 * bits)),  // exact scaling
-        area > 0 ? 1 : (area < 0 ? -1 : 0),
-        l,
-        u,
-        makeEdge(sorted[1], sorted[2], bits),
-        area > 0,  // the middle vertex is right of the long edge when the area is positive
-        yFirst,
-        yLast};
+        .sorted = sorted,
+        .order = order,
+        .doubleArea = double(area) / double(std::uint64_t(1) << (2 * bits)),  // exact scaling
+        .orientation = area > 0 ? 1 : (area < 0 ? -1 : 0),
+        .longEdge = l,
+        .upperEdge = u,
+        .lowerEdge = makeEdge(sorted[1], sorted[2], bits),
+        // The middle vertex is right of the long edge when the area is positive.
+        .longEdgeOnLeft = area > 0,
+        .yFirst = yFirst,
+        .yLast = yLast};
 }
 
 namespace {

@@ -304,6 +304,21 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
         }
     }
 
+    // Per draw, whether its pixels go through the many-pixel kernel: the course's common case,
+    // Phong with the material's colour, screen-affine, one plain light, R.V highlights and no
+    // emission (what the kernel knows).
+    std::vector<std::uint8_t> kernelDraw(scene.draws.size(), 0);
+    for (std::size_t d = 0; d < scene.draws.size(); ++d) {
+        const Draw& draw = scene.draws[d];
+        kernelDraw[d] = draw.shading == ShadingModel::Phong &&
+                        draw.lighting == LightingModel::CoursePhong &&
+                        draw.colour == ColourSource::Material && !draw.flatNormals &&
+                        !perspective && !normals.skipped &&
+                        std::min(draw.lightCount, view.lights.size()) == 1 &&
+                        view.lights[0].plain() && draw.specular == SpecularModel::Phong &&
+                        draw.material.emission == vec3(0.0f);
+    }
+
     // The pixels: rows shared out between the threads (one thread when a probe records).
     const int parts = Probe::enabled ? 1 : std::max(1, std::min(threads, scene.height));
     std::vector<Shading> partCounts(static_cast<std::size_t>(parts));
@@ -350,17 +365,8 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                 const Draw& draw = scene.draws[tri.draw];
                 const DrawVertices& dv = vertices[tri.draw];
                 const DrawTables& table = tables[tri.draw];
-                // The course's common case: Phong with the material's colour, screen-affine.
-                const bool coursePhong = draw.shading == ShadingModel::Phong &&
-                                         draw.lighting == LightingModel::CoursePhong &&
-                                         draw.colour == ColourSource::Material &&
-                                         !draw.flatNormals && !perspective && !normals.skipped;
-                const std::size_t lightCount = std::min(draw.lightCount, view.lights.size());
                 if constexpr (!Probe::enabled) {
-                    // The kernel knows one plain light, R.V highlights and no emission.
-                    if (coursePhong && lightCount == 1 && view.lights[0].plain() &&
-                        draw.specular == SpecularModel::Phong &&
-                        draw.material.emission == vec3(0.0f)) {
+                    if (kernelDraw[tri.draw]) {
                         // Many pixels at once, the same bits as phong() (phong_kernel.h).
                         const Material& m = draw.material;
                         const ViewLight& l = view.lights[0];

@@ -46,9 +46,6 @@ TrapezoidSplit splitIntoTrapezoids(const TriangleSetup& s,
             std::tie(t.tl, t.tr) = sides(out.split, middle);
             t.bl = t.br = bottom;
         }
-        const ScanEdge& shortEdge = upper ? s.upperEdge : s.lowerEdge;
-        t.leftEdge = s.longEdgeOnLeft ? s.longEdge : shortEdge;
-        t.rightEdge = s.longEdgeOnLeft ? shortEdge : s.longEdge;
         t.firstRow = upper ? s.yFirst : upperLast + 1;
         t.lastRow = upper ? upperLast : s.yLast;
         out.parts.push_back(t);
@@ -66,8 +63,10 @@ TrapezoidRow trapezoidRow(const TriangleSetup& s, const Trapezoid& trapezoid,
     row.tj = (y - trapezoid.tl.p.y) / (trapezoid.bl.p.y - trapezoid.tl.p.y);
     row.left = lerp(row.tj, trapezoid.tl, trapezoid.bl);
     row.right = lerp(row.tj, trapezoid.tr, trapezoid.br);
-    row.left.p = {trapezoid.leftEdge.xAt(y), y};
-    row.right.p = {trapezoid.rightEdge.xAt(y), y};
+    // The sides lie on the long edge and the short edge of the trapezoid's half.
+    const ScanEdge& shortEdge = trapezoid.upper ? s.upperEdge : s.lowerEdge;
+    row.left.p = {(s.longEdgeOnLeft ? s.longEdge : shortEdge).xAt(y), y};
+    row.right.p = {(s.longEdgeOnLeft ? shortEdge : s.longEdge).xAt(y), y};
     // The pixels the edge walk fills on this row (the fill rule, cut to the screen).
     const ScanRow scan = scanRow(s, rules, j, width);
     row.xBegin = scan.xBegin;

@@ -45,8 +45,6 @@ TrapezoidPoint lerp(double t, const TrapezoidPoint& a, const TrapezoidPoint& b);
 struct Trapezoid {
     bool upper = true;  // above the middle vertex's row (else below it)
     TrapezoidPoint tl, tr, bl, br;
-    // The edges of the triangle its left and right sides lie on.
-    ScanEdge leftEdge, rightEdge;
     // The rows it covers, before cutting to the screen (none when firstRow > lastRow).
     std::int32_t firstRow = 0, lastRow = -1;
 };
