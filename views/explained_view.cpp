@@ -23,10 +23,9 @@ ExplainedView::ExplainedView(Inspection* inspection, const QString& name, QWidge
     const auto follow = [this] {
         if (isVisible()) refresh();
     };
-    connect(m_inspection, &Inspection::frameChanged, this, [this, follow] {
-        frameChanged();
-        follow();
-    });
+    // A new frame: the view's own reset only. Inspection::setFrame emits cursorChanged and
+    // selectionChanged after frameChanged (from nothing else), and those refresh.
+    connect(m_inspection, &Inspection::frameChanged, this, [this] { frameChanged(); });
     connect(m_inspection, &Inspection::replayChanged, this, follow);
     connect(m_inspection, &Inspection::cursorChanged, this, follow);
     // (A pixel picked selects its triangle: selectionChanged follows pixelPicked.)

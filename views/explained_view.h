@@ -29,7 +29,7 @@ protected:
 
     // Makes what is shown again from the Inspection.
     virtual void refresh() = 0;
-    // A new frame, before the refresh (nothing by default).
+    // A new frame, before the refresh that cursorChanged brings (nothing by default).
     virtual void frameChanged() {}
     // The presentation mode changed, the fonts already set: a refresh by default.
     virtual void presentationChanged();
