@@ -13,6 +13,10 @@
 class QLabel;
 class QTextBrowser;
 
+namespace rl {
+struct TriangleSetup;
+}
+
 namespace rasterlab {
 
 class Inspection;
@@ -65,5 +69,14 @@ struct FollowedRow {
     bool followsCursor = false;
 };
 std::optional<FollowedRow> followedRow(const Inspection& inspection);
+
+// The rows of a triangle set up for the scan that lie on a screen `height` rows high,
+// [first, last]: its sampled rows cut to the screen, none (last < first) when it is
+// degenerate.
+struct ScreenRows {
+    int first = 0, last = -1;
+    bool contains(int y) const { return y >= first && y <= last; }
+};
+ScreenRows screenRows(const rl::TriangleSetup& s, int height);
 
 }  // namespace rasterlab
