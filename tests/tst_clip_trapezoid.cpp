@@ -90,10 +90,10 @@ std::shared_ptr<const Scene> trapezoidHandScene(ShadingModel shading) {
 // The first entry of the near clip view's list after the first (the triangle selected) whose
 // mesh triangle (draw, source) is wanted, or -1.
 template <typename Wanted>
-int firstListed(const QComboBox& list, Wanted wanted) {
-    for (int k = 1; k < list.count(); ++k) {
-        const quint64 key = list.itemData(k).toULongLong();
-        if (wanted(std::uint32_t(key >> 32), std::uint32_t(key))) return k;
+int firstListed(const NearClipView& view, Wanted wanted) {
+    for (int k = 1; k <= view.listedTriangles(); ++k) {
+        const auto [draw, source] = *view.listedTriangle(k);
+        if (wanted(draw, source)) return k;
     }
     return -1;
 }
@@ -639,7 +639,7 @@ private slots:
                 n += replay->rows()[r].fragmentEnd - replay->rows()[r].fragmentBegin;
             return n;
         };
-        const int quad = firstListed(*list, [&](std::uint32_t draw, std::uint32_t source) {
+        const int quad = firstListed(clip, [&](std::uint32_t draw, std::uint32_t source) {
             const NearClipRecord r = nearClipOf(*scene, *trace->projection, draw, source);
             const auto drawn = screenTrianglesOf(*trace->projection, draw, source);
             return r.polygon.size() == 4 && !drawn.empty() && fragmentsOf(drawn.front()) > 0;
@@ -656,7 +656,7 @@ private slots:
         clip.setStep(rasterlab::kNearClipSteps - 1);
         lookAt(clip, QStringLiteral("near_clip_trefoil_all"));
         // A triangle wholly behind, chosen while another is selected: shown, nothing drawn.
-        const int behind = firstListed(*list, [&](std::uint32_t draw, std::uint32_t source) {
+        const int behind = firstListed(clip, [&](std::uint32_t draw, std::uint32_t source) {
             return trace->projection->draws[draw].fate[source] == TriangleFate::Behind;
         });
         QVERIFY(behind > 0);
