@@ -23,8 +23,7 @@
 
 #include "animation.h"
 #include "animation_panel.h"
-#include "course_scene.h"
-#include "default_scene_resource.h"
+#include "course_scenes.h"
 #include "inspection.h"
 #include "main_window.h"
 #include "normals_view.h"
@@ -41,14 +40,9 @@ namespace {
 
 constexpr int kTimeoutMs = 20000;
 
-std::shared_ptr<const Scene> trefoil(int width = 240, int height = 180) {
-    Diagnostics diagnostics;
-    auto parts = rasterlab::loadDefaultCourseScene(diagnostics);
-    if (!parts) qFatal("%s", parts.error().toString().c_str());
-    CourseSceneSettings settings;
-    settings.width = width;
-    settings.height = height;
-    return std::make_shared<const Scene>(makeCourseScene(parts.value(), settings));
+// The default course scene at 240x180 with the default settings (Phong, the course's rules).
+std::shared_ptr<const Scene> trefoil() {
+    return testing::defaultCourseScene(ShadingModel::Phong, RuleSet::Course, 240, 180);
 }
 
 std::shared_ptr<const Scene> withAnimation(const Scene& scene, const Animation& animation,

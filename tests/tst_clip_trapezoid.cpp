@@ -98,13 +98,6 @@ int firstListed(const NearClipView& view, Wanted wanted) {
     return -1;
 }
 
-CourseSceneParts trefoilParts() {
-    Diagnostics diagnostics;
-    auto parts = rasterlab::loadDefaultCourseScene(diagnostics);
-    if (!parts) qFatal("%s", parts.error().toString().c_str());
-    return parts.value();
-}
-
 }  // namespace
 
 class TestClipTrapezoid : public QObject {
@@ -217,19 +210,10 @@ private slots:
     void agreesWithTheProjectionStage_data() {
         QTest::addColumn<std::shared_ptr<const Scene>>("scene");
         QTest::newRow("trefoil, camera at its centre")
-            << cameraInside(trefoilParts(), RuleSet::Course, ShadingModel::Phong);
-        if (std::shared_ptr<const Scene> calice = testing::calice2Scene()) {
-            CourseSceneParts parts{calice->camera.value(), {}, {}};
-            Diagnostics diagnostics;
-            const QString ufpe = testing::samplesDir() + QStringLiteral("/course/ufpe/");
-            auto l = rasterlab::loadLighting(ufpe + QStringLiteral("iluminacao.txt"), diagnostics);
-            auto o = rasterlab::loadObject(ufpe + QStringLiteral("calice2.byu"), diagnostics);
-            QVERIFY(l && o);
-            parts.lighting = l.value();
-            parts.object = o.value();
+            << cameraInside(testing::defaultCourseParts(), RuleSet::Course, ShadingModel::Phong);
+        if (std::optional<CourseSceneParts> parts = testing::calice2Parts())
             QTest::newRow("chalice, camera inside the cup")
-                << cameraInside(parts, RuleSet::Course, ShadingModel::Gouraud);
-        }
+                << cameraInside(*parts, RuleSet::Course, ShadingModel::Gouraud);
     }
     void agreesWithTheProjectionStage() {
         QFETCH(std::shared_ptr<const Scene>, scene);
@@ -425,7 +409,7 @@ private slots:
             QTest::newRow(("trefoil, " + name).constData())
                 << testing::defaultCourseScene(ShadingModel::Gouraud, rules, 320, 240);
             QTest::newRow(("trefoil, camera inside, " + name).constData())
-                << cameraInside(trefoilParts(), rules, ShadingModel::Phong);
+                << cameraInside(testing::defaultCourseParts(), rules, ShadingModel::Phong);
         }
         if (std::shared_ptr<const Scene> calice = testing::calice2Scene())
             QTest::newRow("chalice, course") << calice;
