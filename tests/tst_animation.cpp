@@ -24,6 +24,7 @@
 #include "animation.h"
 #include "animation_panel.h"
 #include "course_scenes.h"
+#include "image_io.h"
 #include "inspection.h"
 #include "main_window.h"
 #include "normals_view.h"
@@ -48,8 +49,7 @@ std::shared_ptr<const Scene> trefoil() {
 std::shared_ptr<const Scene> withAnimation(const Scene& scene, const Animation& animation,
                                            double t) {
     auto copy = std::make_shared<Scene>(scene);
-    for (Draw& draw : copy->draws) draw.animation = animation;
-    copy->time = t;
+    animateEveryDraw(*copy, animation, t);
     return copy;
 }
 
@@ -78,10 +78,7 @@ int differingPixels(const QImage& a, const QImage& b) {
 }
 
 QImage qimage(const FrameTrace& frame) {
-    const Rgba8Image bytes = colourImage(*frame.shading, *frame.depth, frame.scene->conventions);
-    return QImage(bytes.rgba.data(), bytes.width, bytes.height, bytes.width * 4,
-                  QImage::Format_RGBA8888)
-        .copy();
+    return rasterlab::toQImage(colourImage(*frame.shading, *frame.depth, frame.scene->conventions));
 }
 
 struct CliRun {
