@@ -11,7 +11,6 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QLabel>
-#include <QProcess>
 #include <QSettings>
 #include <QSlider>
 #include <QSpinBox>
@@ -79,23 +78,6 @@ int differingPixels(const QImage& a, const QImage& b) {
 
 QImage qimage(const FrameTrace& frame) {
     return rasterlab::toQImage(colourImage(*frame.shading, *frame.depth, frame.scene->conventions));
-}
-
-struct CliRun {
-    int exitCode = -1;
-    QString out, err;
-};
-
-CliRun runCli(const QStringList& arguments, const QString& workDir) {
-    QProcess process;
-    process.setWorkingDirectory(workDir);
-    process.start(testing::cliPath(), arguments);
-    CliRun run;
-    if (!process.waitForStarted(10000) || !process.waitForFinished(120000)) return run;
-    run.out = QString::fromUtf8(process.readAllStandardOutput());
-    run.err = QString::fromUtf8(process.readAllStandardError());
-    if (process.exitStatus() == QProcess::NormalExit) run.exitCode = process.exitCode();
-    return run;
 }
 
 // The triangle of the normals case: in the plane x + y = 2, its normal
@@ -318,11 +300,12 @@ private slots:
     void cliWritesNumberedFrames() {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
-        CliRun run =
-            runCli({QStringLiteral("render"), QStringLiteral("--size"), QStringLiteral("160x120"),
-                    QStringLiteral("--animate"), QStringLiteral("3"), QStringLiteral("--fps"),
-                    QStringLiteral("2"), QStringLiteral("--output"), QStringLiteral("frames")},
-                   dir.path());
+        testing::CliRun run;
+        testing::runCli(
+            {QStringLiteral("render"), QStringLiteral("--size"), QStringLiteral("160x120"),
+             QStringLiteral("--animate"), QStringLiteral("3"), QStringLiteral("--fps"),
+             QStringLiteral("2"), QStringLiteral("--output"), QStringLiteral("frames")},
+            dir.path(), run);
         QCOMPARE(run.exitCode, 0);
         QVERIFY2(run.out.contains(QStringLiteral("frame 2, t = 1.000 s")), qPrintable(run.out));
         const QDir frames(dir.filePath(QStringLiteral("frames")));
@@ -336,33 +319,35 @@ private slots:
         QVERIFY(differingPixels(f0, f1) > 100);
         QVERIFY(differingPixels(f1, f2) > 100);
         // Frame 0 is the still scene, and --time 0.5 is frame 1 (t = 1 / 2).
-        run = runCli({QStringLiteral("render"), QStringLiteral("--size"), QStringLiteral("160x120"),
-                      QStringLiteral("--output"), QStringLiteral("still.png")},
-                     dir.path());
+        testing::runCli(
+            {QStringLiteral("render"), QStringLiteral("--size"), QStringLiteral("160x120"),
+             QStringLiteral("--output"), QStringLiteral("still.png")},
+            dir.path(), run);
         QCOMPARE(run.exitCode, 0);
         QCOMPARE(differingPixels(QImage(dir.filePath(QStringLiteral("still.png"))), f0), 0);
-        run = runCli({QStringLiteral("render"), QStringLiteral("--size"), QStringLiteral("160x120"),
-                      QStringLiteral("--time"), QStringLiteral("0.5"), QStringLiteral("--output"),
-                      QStringLiteral("half.png")},
-                     dir.path());
+        testing::runCli({QStringLiteral("render"), QStringLiteral("--size"),
+                         QStringLiteral("160x120"), QStringLiteral("--time"), QStringLiteral("0.5"),
+                         QStringLiteral("--output"), QStringLiteral("half.png")},
+                        dir.path(), run);
         QCOMPARE(run.exitCode, 0);
         QCOMPARE(differingPixels(QImage(dir.filePath(QStringLiteral("half.png"))), f1), 0);
     }
 
     void cliRejectsBadAnimationOptions() {
         QTemporaryDir dir;
-        CliRun run =
-            runCli({QStringLiteral("render"), QStringLiteral("--scale"), QStringLiteral("0,1,1"),
-                    QStringLiteral("--output"), QStringLiteral("x.png")},
-                   dir.path());
+        testing::CliRun run;
+        testing::runCli(
+            {QStringLiteral("render"), QStringLiteral("--scale"), QStringLiteral("0,1,1"),
+             QStringLiteral("--output"), QStringLiteral("x.png")},
+            dir.path(), run);
         QCOMPARE(run.exitCode, 2);
         QCOMPARE(run.err.split(QLatin1Char('\n')).first(),
                  QStringLiteral("rasterlab-cli: --scale expects X,Y,Z, none zero, such as 2,1,1, "
                                 "found '0,1,1'"));
-        run = runCli({QStringLiteral("render"), QStringLiteral("--animate"), QStringLiteral("2"),
-                      QStringLiteral("--time"), QStringLiteral("1"), QStringLiteral("--output"),
-                      QStringLiteral("d")},
-                     dir.path());
+        testing::runCli({QStringLiteral("render"), QStringLiteral("--animate"), QStringLiteral("2"),
+                         QStringLiteral("--time"), QStringLiteral("1"), QStringLiteral("--output"),
+                         QStringLiteral("d")},
+                        dir.path(), run);
         QCOMPARE(run.exitCode, 2);
         QCOMPARE(run.err.split(QLatin1Char('\n')).first(),
                  QStringLiteral("rasterlab-cli: --time and --animate exclude each other"));
