@@ -423,37 +423,31 @@ private slots:
         std::size_t triangles = 0, rows = 0, twoParts = 0, depthsCompared = 0;
         double worst = 0.0;  // the largest relative difference of the depths
         for (std::uint32_t t = 0; t < projection.triangles.size(); ++t) {
-            const TriangleSetup s =
-                setupTriangle(screenVertices(projection, projection.triangles[t]), rules);
-            const TrapezoidSplit split = splitIntoTrapezoids(s, {}, rules);
+            const ScreenTriangle& tri = projection.triangles[t];
+            const TriangleSetup s = setupTriangle(screenVertices(projection, tri), rules);
+            // Under the course's rules the depth is interpolated linearly on the screen, as the
+            // seed's lerps do: the first pixel of each row gets the depth test's depth (which
+            // works in float from the barycentrics). The values carried change no row or pixel.
+            const bool compareDepths = rules == RasterRules::course() && !s.degenerate();
+            std::array<TrapezoidPoint, 3> depths{};
+            if (compareDepths)
+                for (std::size_t k = 0; k < 3; ++k)
+                    depths[k].pz = projection.draws[tri.draw].depth[tri.v[k]];
+            const TrapezoidSplit split = splitIntoTrapezoids(s, depths, rules);
             std::vector<Span> spans;
             for (const Trapezoid& part : split.parts) {
                 for (std::int32_t j = std::max(part.firstRow, 0);
                      j <= std::min(part.lastRow, scene->height - 1); ++j) {
                     const TrapezoidRow row = trapezoidRow(s, part, rules, j, scene->width);
                     ++rows;
-                    if (!row.empty()) spans.push_back({j, row.xBegin, row.xEnd});
-                }
-            }
-            // Under the course's rules the depth is interpolated linearly on the screen, as the
-            // seed's lerps do: the first pixel of each row gets the depth test's depth (which
-            // works in float from the barycentrics).
-            if (rules == RasterRules::course() && !s.degenerate()) {
-                const ScreenTriangle& tri = projection.triangles[t];
-                std::array<TrapezoidPoint, 3> depths{};
-                for (std::size_t k = 0; k < 3; ++k)
-                    depths[k].pz = projection.draws[tri.draw].depth[tri.v[k]];
-                for (const Trapezoid& part : splitIntoTrapezoids(s, depths, rules).parts) {
-                    for (std::int32_t j = std::max(part.firstRow, 0);
-                         j <= std::min(part.lastRow, scene->height - 1); ++j) {
-                        const TrapezoidRow row = trapezoidRow(s, part, rules, j, scene->width);
-                        if (row.empty()) continue;
-                        const double lerped = trapezoidPixel(row, rules, row.xBegin).pz;
-                        const float depth =
-                            fragmentDepth(*scene, projection, t, j, row.xBegin, row.xBegin).depth;
-                        worst = std::max(worst, std::abs(lerped - depth) / std::abs(lerped));
-                        ++depthsCompared;
-                    }
+                    if (row.empty()) continue;
+                    spans.push_back({j, row.xBegin, row.xEnd});
+                    if (!compareDepths) continue;
+                    const double lerped = trapezoidPixel(row, rules, row.xBegin).pz;
+                    const float depth =
+                        fragmentDepth(*scene, projection, t, j, row.xBegin, row.xBegin).depth;
+                    worst = std::max(worst, std::abs(lerped - depth) / std::abs(lerped));
+                    ++depthsCompared;
                 }
             }
             const std::vector<Span> expected(scan.spans.begin() + scan.spanStart[t],
