@@ -7,6 +7,7 @@
 
 #include <initializer_list>
 #include <memory>
+#include <optional>
 
 #include "command_file.h"
 #include "course_scene.h"
@@ -15,34 +16,46 @@
 
 namespace testing {
 
+// The default course scene's camera, lighting and object (the trefoil).
+inline rl::CourseSceneParts defaultCourseParts() {
+    rl::Diagnostics diagnostics;
+    auto parts = rasterlab::loadDefaultCourseScene(diagnostics);
+    if (!parts) qFatal("%s", parts.error().toString().c_str());
+    return parts.value();
+}
+
 // The default course scene with the given shading, rules and image size.
 inline std::shared_ptr<const rl::Scene> defaultCourseScene(rl::ShadingModel model,
                                                            rl::RuleSet rules, int width,
                                                            int height) {
-    rl::Diagnostics diagnostics;
-    auto parts = rasterlab::loadDefaultCourseScene(diagnostics);
-    if (!parts) qFatal("%s", parts.error().toString().c_str());
     rl::CourseSceneSettings settings;
     settings.shading = model;
     settings.rules = rl::rulesOf(rules);
     settings.width = width;
     settings.height = height;
-    return std::make_shared<const rl::Scene>(rl::makeCourseScene(parts.value(), settings));
+    return std::make_shared<const rl::Scene>(rl::makeCourseScene(defaultCourseParts(), settings));
 }
 
-// The course's chalice: samples/course/ufpe/calice2.cfg, iluminacao.txt and calice2.byu, at the
-// default size and shading; null where the samples are absent.
-inline std::shared_ptr<const rl::Scene> calice2Scene() {
+// The course's chalice: samples/course/ufpe/calice2.cfg, iluminacao.txt and calice2.byu; none
+// where the samples are absent.
+inline std::optional<rl::CourseSceneParts> calice2Parts() {
     const QString dir = samplesDir();
-    if (dir.isEmpty()) return nullptr;
+    if (dir.isEmpty()) return std::nullopt;
     rl::Diagnostics diagnostics;
     const QString ufpe = dir + QStringLiteral("/course/ufpe/");
     auto c = rasterlab::loadCamera(ufpe + QStringLiteral("calice2.cfg"), diagnostics);
     auto l = rasterlab::loadLighting(ufpe + QStringLiteral("iluminacao.txt"), diagnostics);
     auto o = rasterlab::loadObject(ufpe + QStringLiteral("calice2.byu"), diagnostics);
     if (!c || !l || !o) qFatal("cannot load calice2");
-    return std::make_shared<const rl::Scene>(rl::makeCourseScene(
-        rl::CourseSceneParts{c.value(), l.value(), o.value()}, rl::CourseSceneSettings{}));
+    return rl::CourseSceneParts{c.value(), l.value(), o.value()};
+}
+
+// The chalice at the default size and shading; null where the samples are absent.
+inline std::shared_ptr<const rl::Scene> calice2Scene() {
+    const std::optional<rl::CourseSceneParts> parts = calice2Parts();
+    if (!parts) return nullptr;
+    return std::make_shared<const rl::Scene>(
+        rl::makeCourseScene(*parts, rl::CourseSceneSettings{}));
 }
 
 // A data row per HW2 sample named (samples/hw2/<name>.txt), holding its first image's scene

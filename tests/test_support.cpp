@@ -2,6 +2,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QProcess>
 
 namespace testing {
 
@@ -31,6 +32,35 @@ QString sourceDir() {
 
 QString cliPath() {
     return QStringLiteral(RASTERLAB_CLI_PATH);
+}
+
+bool runCli(const QStringList& arguments, const QString& workDir, CliRun& run,
+            const QProcessEnvironment& environment) {
+    run = CliRun{};
+    QProcess process;
+    process.setWorkingDirectory(workDir);
+    process.setProcessEnvironment(environment);
+    process.start(cliPath(), arguments);
+    const QString command =
+        QStringLiteral("rasterlab-cli %1").arg(arguments.join(QLatin1Char(' ')));
+    if (!process.waitForStarted(10000)) {
+        run.problem = command + QStringLiteral(": cannot start: ") + process.errorString();
+        return false;
+    }
+    if (!process.waitForFinished(120000)) {
+        process.kill();
+        process.waitForFinished();
+        run.problem = command + QStringLiteral(": did not finish within 120 s");
+        return false;
+    }
+    run.out = QString::fromUtf8(process.readAllStandardOutput());
+    run.err = QString::fromUtf8(process.readAllStandardError());
+    if (process.exitStatus() != QProcess::NormalExit) {
+        run.problem = command + QStringLiteral(": crashed; stderr: ") + run.err;
+        return false;
+    }
+    run.exitCode = process.exitCode();
+    return true;
 }
 
 QByteArray readFile(const QString& path) {

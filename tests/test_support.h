@@ -2,7 +2,9 @@
 // and comparisons of GLM vectors with a tolerance that print both values on failure.
 #pragma once
 
+#include <QProcessEnvironment>
 #include <QString>
+#include <QStringList>
 #include <QtTest>
 #ifdef QT_WIDGETS_LIB
 #include <QWidget>
@@ -32,6 +34,19 @@ std::shared_ptr<const rl::FrameReplay> replayOf(const std::shared_ptr<const rl::
 QString samplesDir();
 QString sourceDir();  // the repository's root
 QString cliPath();    // the rasterlab-cli binary
+
+// What a run of rasterlab-cli gave: its exit code (-1 unless it ran and exited normally), its
+// output and error text, and why it did not run to completion.
+struct CliRun {
+    int exitCode = -1;
+    QString out;
+    QString err;
+    QString problem;  // why the process did not run to completion
+};
+// Runs rasterlab-cli with `arguments` in `workDir` and waits for it to exit; `run` is made
+// again from nothing. False when it could not start, did not finish within 120 s or crashed.
+bool runCli(const QStringList& arguments, const QString& workDir, CliRun& run,
+            const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment());
 
 // The text of a file, or a failed test.
 QByteArray readFile(const QString& path);

@@ -11,7 +11,6 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QLabel>
-#include <QProcess>
 #include <QSettings>
 #include <QSlider>
 #include <QSpinBox>
@@ -23,8 +22,8 @@
 
 #include "animation.h"
 #include "animation_panel.h"
-#include "course_scene.h"
-#include "default_scene_resource.h"
+#include "course_scenes.h"
+#include "image_io.h"
 #include "inspection.h"
 #include "main_window.h"
 #include "normals_view.h"
@@ -41,21 +40,15 @@ namespace {
 
 constexpr int kTimeoutMs = 20000;
 
-std::shared_ptr<const Scene> trefoil(int width = 240, int height = 180) {
-    Diagnostics diagnostics;
-    auto parts = rasterlab::loadDefaultCourseScene(diagnostics);
-    if (!parts) qFatal("%s", parts.error().toString().c_str());
-    CourseSceneSettings settings;
-    settings.width = width;
-    settings.height = height;
-    return std::make_shared<const Scene>(makeCourseScene(parts.value(), settings));
+// The default course scene at 240x180 with the default settings (Phong, the course's rules).
+std::shared_ptr<const Scene> trefoil() {
+    return testing::defaultCourseScene(ShadingModel::Phong, RuleSet::Course, 240, 180);
 }
 
 std::shared_ptr<const Scene> withAnimation(const Scene& scene, const Animation& animation,
                                            double t) {
     auto copy = std::make_shared<Scene>(scene);
-    for (Draw& draw : copy->draws) draw.animation = animation;
-    copy->time = t;
+    animateEveryDraw(*copy, animation, t);
     return copy;
 }
 
@@ -84,27 +77,7 @@ int differingPixels(const QImage& a, const QImage& b) {
 }
 
 QImage qimage(const FrameTrace& frame) {
-    const Rgba8Image bytes = colourImage(*frame.shading, *frame.depth, frame.scene->conventions);
-    return QImage(bytes.rgba.data(), bytes.width, bytes.height, bytes.width * 4,
-                  QImage::Format_RGBA8888)
-        .copy();
-}
-
-struct CliRun {
-    int exitCode = -1;
-    QString out, err;
-};
-
-CliRun runCli(const QStringList& arguments, const QString& workDir) {
-    QProcess process;
-    process.setWorkingDirectory(workDir);
-    process.start(testing::cliPath(), arguments);
-    CliRun run;
-    if (!process.waitForStarted(10000) || !process.waitForFinished(120000)) return run;
-    run.out = QString::fromUtf8(process.readAllStandardOutput());
-    run.err = QString::fromUtf8(process.readAllStandardError());
-    if (process.exitStatus() == QProcess::NormalExit) run.exitCode = process.exitCode();
-    return run;
+    return rasterlab::toQImage(colourImage(*frame.shading, *frame.depth, frame.scene->conventions));
 }
 
 // The triangle of the normals case: in the plane x + y = 2, its normal
@@ -327,11 +300,12 @@ private slots:
     void cliWritesNumberedFrames() {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
-        CliRun run =
-            runCli({QStringLiteral("render"), QStringLiteral("--size"), QStringLiteral("160x120"),
-                    QStringLiteral("--animate"), QStringLiteral("3"), QStringLiteral("--fps"),
-                    QStringLiteral("2"), QStringLiteral("--output"), QStringLiteral("frames")},
-                   dir.path());
+        testing::CliRun run;
+        testing::runCli(
+            {QStringLiteral("render"), QStringLiteral("--size"), QStringLiteral("160x120"),
+             QStringLiteral("--animate"), QStringLiteral("3"), QStringLiteral("--fps"),
+             QStringLiteral("2"), QStringLiteral("--output"), QStringLiteral("frames")},
+            dir.path(), run);
         QCOMPARE(run.exitCode, 0);
         QVERIFY2(run.out.contains(QStringLiteral("frame 2, t = 1.000 s")), qPrintable(run.out));
         const QDir frames(dir.filePath(QStringLiteral("frames")));
@@ -345,33 +319,35 @@ private slots:
         QVERIFY(differingPixels(f0, f1) > 100);
         QVERIFY(differingPixels(f1, f2) > 100);
         // Frame 0 is the still scene, and --time 0.5 is frame 1 (t = 1 / 2).
-        run = runCli({QStringLiteral("render"), QStringLiteral("--size"), QStringLiteral("160x120"),
-                      QStringLiteral("--output"), QStringLiteral("still.png")},
-                     dir.path());
+        testing::runCli(
+            {QStringLiteral("render"), QStringLiteral("--size"), QStringLiteral("160x120"),
+             QStringLiteral("--output"), QStringLiteral("still.png")},
+            dir.path(), run);
         QCOMPARE(run.exitCode, 0);
         QCOMPARE(differingPixels(QImage(dir.filePath(QStringLiteral("still.png"))), f0), 0);
-        run = runCli({QStringLiteral("render"), QStringLiteral("--size"), QStringLiteral("160x120"),
-                      QStringLiteral("--time"), QStringLiteral("0.5"), QStringLiteral("--output"),
-                      QStringLiteral("half.png")},
-                     dir.path());
+        testing::runCli({QStringLiteral("render"), QStringLiteral("--size"),
+                         QStringLiteral("160x120"), QStringLiteral("--time"), QStringLiteral("0.5"),
+                         QStringLiteral("--output"), QStringLiteral("half.png")},
+                        dir.path(), run);
         QCOMPARE(run.exitCode, 0);
         QCOMPARE(differingPixels(QImage(dir.filePath(QStringLiteral("half.png"))), f1), 0);
     }
 
     void cliRejectsBadAnimationOptions() {
         QTemporaryDir dir;
-        CliRun run =
-            runCli({QStringLiteral("render"), QStringLiteral("--scale"), QStringLiteral("0,1,1"),
-                    QStringLiteral("--output"), QStringLiteral("x.png")},
-                   dir.path());
+        testing::CliRun run;
+        testing::runCli(
+            {QStringLiteral("render"), QStringLiteral("--scale"), QStringLiteral("0,1,1"),
+             QStringLiteral("--output"), QStringLiteral("x.png")},
+            dir.path(), run);
         QCOMPARE(run.exitCode, 2);
         QCOMPARE(run.err.split(QLatin1Char('\n')).first(),
                  QStringLiteral("rasterlab-cli: --scale expects X,Y,Z, none zero, such as 2,1,1, "
                                 "found '0,1,1'"));
-        run = runCli({QStringLiteral("render"), QStringLiteral("--animate"), QStringLiteral("2"),
-                      QStringLiteral("--time"), QStringLiteral("1"), QStringLiteral("--output"),
-                      QStringLiteral("d")},
-                     dir.path());
+        testing::runCli({QStringLiteral("render"), QStringLiteral("--animate"), QStringLiteral("2"),
+                         QStringLiteral("--time"), QStringLiteral("1"), QStringLiteral("--output"),
+                         QStringLiteral("d")},
+                        dir.path(), run);
         QCOMPARE(run.exitCode, 2);
         QCOMPARE(run.err.split(QLatin1Char('\n')).first(),
                  QStringLiteral("rasterlab-cli: --time and --animate exclude each other"));

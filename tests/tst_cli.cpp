@@ -19,48 +19,15 @@
 #include "painter.h"
 #include "test_support.h"
 
-namespace {
+using testing::CliRun;
+using testing::runCli;
 
-struct CliRun {
-    int exitCode = -1;
-    QString out;
-    QString err;
-    QString problem;  // why the process did not run to completion
-};
+namespace {
 
 QStringList linesOf(const QString& text) {
     QStringList lines = text.split(QLatin1Char('\n'));
     if (!lines.isEmpty() && lines.last().isEmpty()) lines.removeLast();
     return lines;
-}
-
-// Runs rasterlab-cli with `arguments` in `workDir` and waits for it to exit.
-bool runCli(const QStringList& arguments, const QString& workDir, CliRun& run,
-            const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment()) {
-    QProcess process;
-    process.setWorkingDirectory(workDir);
-    process.setProcessEnvironment(environment);
-    process.start(testing::cliPath(), arguments);
-    const QString command =
-        QStringLiteral("rasterlab-cli %1").arg(arguments.join(QLatin1Char(' ')));
-    if (!process.waitForStarted(10000)) {
-        run.problem = command + QStringLiteral(": cannot start: ") + process.errorString();
-        return false;
-    }
-    if (!process.waitForFinished(120000)) {
-        process.kill();
-        process.waitForFinished();
-        run.problem = command + QStringLiteral(": did not finish within 120 s");
-        return false;
-    }
-    run.out = QString::fromUtf8(process.readAllStandardOutput());
-    run.err = QString::fromUtf8(process.readAllStandardError());
-    if (process.exitStatus() != QProcess::NormalExit) {
-        run.problem = command + QStringLiteral(": crashed; stderr: ") + run.err;
-        return false;
-    }
-    run.exitCode = process.exitCode();
-    return true;
 }
 
 #define RUN_CLI(run, arguments, workDir) \

@@ -90,19 +90,12 @@ std::shared_ptr<const Scene> trapezoidHandScene(ShadingModel shading) {
 // The first entry of the near clip view's list after the first (the triangle selected) whose
 // mesh triangle (draw, source) is wanted, or -1.
 template <typename Wanted>
-int firstListed(const QComboBox& list, Wanted wanted) {
-    for (int k = 1; k < list.count(); ++k) {
-        const quint64 key = list.itemData(k).toULongLong();
-        if (wanted(std::uint32_t(key >> 32), std::uint32_t(key))) return k;
+int firstListed(const NearClipView& view, Wanted wanted) {
+    for (int k = 1; k <= view.listedTriangles(); ++k) {
+        const auto [draw, source] = *view.listedTriangle(k);
+        if (wanted(draw, source)) return k;
     }
     return -1;
-}
-
-CourseSceneParts trefoilParts() {
-    Diagnostics diagnostics;
-    auto parts = rasterlab::loadDefaultCourseScene(diagnostics);
-    if (!parts) qFatal("%s", parts.error().toString().c_str());
-    return parts.value();
 }
 
 }  // namespace
@@ -217,19 +210,10 @@ private slots:
     void agreesWithTheProjectionStage_data() {
         QTest::addColumn<std::shared_ptr<const Scene>>("scene");
         QTest::newRow("trefoil, camera at its centre")
-            << cameraInside(trefoilParts(), RuleSet::Course, ShadingModel::Phong);
-        if (std::shared_ptr<const Scene> calice = testing::calice2Scene()) {
-            CourseSceneParts parts{calice->camera.value(), {}, {}};
-            Diagnostics diagnostics;
-            const QString ufpe = testing::samplesDir() + QStringLiteral("/course/ufpe/");
-            auto l = rasterlab::loadLighting(ufpe + QStringLiteral("iluminacao.txt"), diagnostics);
-            auto o = rasterlab::loadObject(ufpe + QStringLiteral("calice2.byu"), diagnostics);
-            QVERIFY(l && o);
-            parts.lighting = l.value();
-            parts.object = o.value();
+            << cameraInside(testing::defaultCourseParts(), RuleSet::Course, ShadingModel::Phong);
+        if (std::optional<CourseSceneParts> parts = testing::calice2Parts())
             QTest::newRow("chalice, camera inside the cup")
-                << cameraInside(parts, RuleSet::Course, ShadingModel::Gouraud);
-        }
+                << cameraInside(*parts, RuleSet::Course, ShadingModel::Gouraud);
     }
     void agreesWithTheProjectionStage() {
         QFETCH(std::shared_ptr<const Scene>, scene);
@@ -425,7 +409,7 @@ private slots:
             QTest::newRow(("trefoil, " + name).constData())
                 << testing::defaultCourseScene(ShadingModel::Gouraud, rules, 320, 240);
             QTest::newRow(("trefoil, camera inside, " + name).constData())
-                << cameraInside(trefoilParts(), rules, ShadingModel::Phong);
+                << cameraInside(testing::defaultCourseParts(), rules, ShadingModel::Phong);
         }
         if (std::shared_ptr<const Scene> calice = testing::calice2Scene())
             QTest::newRow("chalice, course") << calice;
@@ -439,37 +423,31 @@ private slots:
         std::size_t triangles = 0, rows = 0, twoParts = 0, depthsCompared = 0;
         double worst = 0.0;  // the largest relative difference of the depths
         for (std::uint32_t t = 0; t < projection.triangles.size(); ++t) {
-            const TriangleSetup s =
-                setupTriangle(screenVertices(projection, projection.triangles[t]), rules);
-            const TrapezoidSplit split = splitIntoTrapezoids(s, {}, rules);
+            const ScreenTriangle& tri = projection.triangles[t];
+            const TriangleSetup s = setupTriangle(screenVertices(projection, tri), rules);
+            // Under the course's rules the depth is interpolated linearly on the screen, as the
+            // seed's lerps do: the first pixel of each row gets the depth test's depth (which
+            // works in float from the barycentrics). The values carried change no row or pixel.
+            const bool compareDepths = rules == RasterRules::course() && !s.degenerate();
+            std::array<TrapezoidPoint, 3> depths{};
+            if (compareDepths)
+                for (std::size_t k = 0; k < 3; ++k)
+                    depths[k].pz = projection.draws[tri.draw].depth[tri.v[k]];
+            const TrapezoidSplit split = splitIntoTrapezoids(s, depths, rules);
             std::vector<Span> spans;
             for (const Trapezoid& part : split.parts) {
                 for (std::int32_t j = std::max(part.firstRow, 0);
                      j <= std::min(part.lastRow, scene->height - 1); ++j) {
                     const TrapezoidRow row = trapezoidRow(s, part, rules, j, scene->width);
                     ++rows;
-                    if (!row.empty()) spans.push_back({j, row.xBegin, row.xEnd});
-                }
-            }
-            // Under the course's rules the depth is interpolated linearly on the screen, as the
-            // seed's lerps do: the first pixel of each row gets the depth test's depth (which
-            // works in float from the barycentrics).
-            if (rules == RasterRules::course() && !s.degenerate()) {
-                const ScreenTriangle& tri = projection.triangles[t];
-                std::array<TrapezoidPoint, 3> depths{};
-                for (std::size_t k = 0; k < 3; ++k)
-                    depths[k].pz = projection.draws[tri.draw].depth[tri.v[k]];
-                for (const Trapezoid& part : splitIntoTrapezoids(s, depths, rules).parts) {
-                    for (std::int32_t j = std::max(part.firstRow, 0);
-                         j <= std::min(part.lastRow, scene->height - 1); ++j) {
-                        const TrapezoidRow row = trapezoidRow(s, part, rules, j, scene->width);
-                        if (row.empty()) continue;
-                        const double lerped = trapezoidPixel(row, rules, row.xBegin).pz;
-                        const float depth =
-                            fragmentDepth(*scene, projection, t, j, row.xBegin, row.xBegin).depth;
-                        worst = std::max(worst, std::abs(lerped - depth) / std::abs(lerped));
-                        ++depthsCompared;
-                    }
+                    if (row.empty()) continue;
+                    spans.push_back({j, row.xBegin, row.xEnd});
+                    if (!compareDepths) continue;
+                    const double lerped = trapezoidPixel(row, rules, row.xBegin).pz;
+                    const float depth =
+                        fragmentDepth(*scene, projection, t, j, row.xBegin, row.xBegin).depth;
+                    worst = std::max(worst, std::abs(lerped - depth) / std::abs(lerped));
+                    ++depthsCompared;
                 }
             }
             const std::vector<Span> expected(scan.spans.begin() + scan.spanStart[t],
@@ -639,7 +617,7 @@ private slots:
                 n += replay->rows()[r].fragmentEnd - replay->rows()[r].fragmentBegin;
             return n;
         };
-        const int quad = firstListed(*list, [&](std::uint32_t draw, std::uint32_t source) {
+        const int quad = firstListed(clip, [&](std::uint32_t draw, std::uint32_t source) {
             const NearClipRecord r = nearClipOf(*scene, *trace->projection, draw, source);
             const auto drawn = screenTrianglesOf(*trace->projection, draw, source);
             return r.polygon.size() == 4 && !drawn.empty() && fragmentsOf(drawn.front()) > 0;
@@ -656,7 +634,7 @@ private slots:
         clip.setStep(rasterlab::kNearClipSteps - 1);
         lookAt(clip, QStringLiteral("near_clip_trefoil_all"));
         // A triangle wholly behind, chosen while another is selected: shown, nothing drawn.
-        const int behind = firstListed(*list, [&](std::uint32_t draw, std::uint32_t source) {
+        const int behind = firstListed(clip, [&](std::uint32_t draw, std::uint32_t source) {
             return trace->projection->draws[draw].fate[source] == TriangleFate::Behind;
         });
         QVERIFY(behind > 0);

@@ -26,11 +26,9 @@ Scene twoDraws(Draw first, Draw second) {
     return scene;
 }
 
-// The painter's failure, L painted before S though nearer at three pixels (numbers in
-// test_support.h).
-Scene failureScene() {
-    return testing::painterFailureScene();
-}
+// painterFailureScene(): the painter's failure, L painted before S though nearer at three
+// pixels (numbers in test_support.h).
+using testing::painterFailureScene;
 
 // A square at z = 1 cut along its diagonal into two draws: T0 (ka = 1) on screen (0,0) (4,0)
 // (0,4), T1 (ka = 0.5) on (4,0) (4,4) (0,4). Barycentres: T0 view (-2/3, 2/3, 1), |b| =
@@ -128,7 +126,7 @@ private slots:
     }
 
     void longTriangleOverASmallOne() {
-        const auto comparison = compareWithZBuffer(shared(failureScene()));
+        const auto comparison = compareWithZBuffer(shared(painterFailureScene()));
         QVERIFY(comparison.ok());
         const FrameTrace& p = *comparison->painter;
         const FrameTrace& z = *comparison->zBuffer;
@@ -241,7 +239,7 @@ private slots:
     }
 
     void replayPaintsFarToNear() {
-        const auto trace = renderTrace(shared(failureScene()));
+        const auto trace = renderTrace(shared(painterFailureScene()));
         const auto replay = testing::replayOf(trace);
         const auto& fragments = replay->fragments();
         QCOMPARE(fragments.size(), std::size_t(43 + 6));
@@ -270,7 +268,7 @@ private slots:
         // Pixel (0,0) of the failure scene: L painted at depth 1 over the cleared buffer, then
         // S at 3 over L's 1, no depth test either time.
         auto probe = RecordingProbe::forPixel(0, 0);
-        auto trace = traceFrame(shared(failureScene()), {}, probe);
+        auto trace = traceFrame(shared(painterFailureScene()), {}, probe);
         QVERIFY(trace.ok());
         const QString text = QString::fromStdString(explainPixel(trace.value(), probe));
         QVERIFY2(text.contains(QStringLiteral("z = 1, over stored +infinity: painted, no depth "
@@ -306,7 +304,7 @@ private slots:
     void comparisonReusesTheFrame() {
         // A frame that is one of the two renders (every draw painted, or every draw flat) is
         // used as it is; the comparison is the same as when both are rendered.
-        const auto expected = compareWithZBuffer(shared(failureScene()));
+        const auto expected = compareWithZBuffer(shared(painterFailureScene()));
         QVERIFY(expected.ok());
         const auto check = [&](const PainterComparison& c) {
             QCOMPARE(c.differing, expected->differing);
@@ -321,7 +319,7 @@ private slots:
             QVERIFY(c.zBufferImage == expected->zBufferImage);
             QVERIFY(differenceImage(c) == differenceImage(*expected));
         };
-        const auto painted = renderTrace(shared(failureScene()));
+        const auto painted = renderTrace(shared(painterFailureScene()));
         const auto fromPainted = compareWithZBuffer(painted);
         QVERIFY(fromPainted.ok());
         QVERIFY(fromPainted->painter == painted);
@@ -332,7 +330,7 @@ private slots:
         QVERIFY(fromFlat->zBuffer == flat);
         check(*fromFlat);
         // Neither (a Phong frame): both rendered.
-        Scene phong = failureScene();
+        Scene phong = painterFailureScene();
         for (Draw& draw : phong.draws) draw.shading = ShadingModel::Phong;
         const auto lit = renderTrace(shared(phong));
         const auto fromLit = compareWithZBuffer(lit);

@@ -15,6 +15,7 @@
 
 #include "course_scenes.h"
 #include "frame_image_view.h"
+#include "image_io.h"
 #include "inspection.h"
 #include "mesh_topology.h"
 #include "normals_view.h"
@@ -100,10 +101,8 @@ std::shared_ptr<const Scene> octahedronScene(bool flipOne) {
 
 // Gives the inspection a frame with its picture, as the main window does.
 void setFrame(Inspection& inspection, const std::shared_ptr<const FrameTrace>& frame) {
-    const Rgba8Image bytes = colourImage(*frame->shading, *frame->depth, frame->scene->conventions);
-    inspection.setFrame(frame, QImage(bytes.rgba.data(), bytes.width, bytes.height, bytes.width * 4,
-                                      QImage::Format_RGBA8888)
-                                   .copy());
+    inspection.setFrame(frame, rasterlab::toQImage(colourImage(*frame->shading, *frame->depth,
+                                                               frame->scene->conventions)));
 }
 
 // Pixels of `image` whose channels differ from the renderer's normal image by more than 1.

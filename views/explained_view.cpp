@@ -23,10 +23,9 @@ ExplainedView::ExplainedView(Inspection* inspection, const QString& name, QWidge
     const auto follow = [this] {
         if (isVisible()) refresh();
     };
-    connect(m_inspection, &Inspection::frameChanged, this, [this, follow] {
-        frameChanged();
-        follow();
-    });
+    // A new frame: the view's own reset only. Inspection::setFrame emits cursorChanged and
+    // selectionChanged after frameChanged (from nothing else), and those refresh.
+    connect(m_inspection, &Inspection::frameChanged, this, [this] { frameChanged(); });
     connect(m_inspection, &Inspection::replayChanged, this, follow);
     connect(m_inspection, &Inspection::cursorChanged, this, follow);
     // (A pixel picked selects its triangle: selectionChanged follows pixelPicked.)
@@ -81,17 +80,20 @@ std::optional<FollowedRow> followedRow(const Inspection& inspection) {
     const rl::Scene& scene = *frame->scene;
     const rl::TriangleSetup s =
         rl::setupTriangle(rl::screenVertices(projection, projection.triangles[*t]), scene.rules);
-    // The rows walked on the screen.
-    const int rowBegin = std::max(s.yFirst, 0);
-    const int rowEnd = s.degenerate() ? rowBegin - 1 : std::min(s.yLast, scene.height - 1);
+    const ScreenRows rows = screenRows(s, scene.height);
     const QPoint picked = inspection.pickedPixel();
-    const bool pickedRow = picked.y() >= rowBegin && picked.y() <= rowEnd;
-    FollowedRow f{*t, pickedRow ? picked.y() : (rowBegin + rowEnd) / 2, std::nullopt, false};
+    const bool pickedRow = rows.contains(picked.y());
+    FollowedRow f{*t, pickedRow ? picked.y() : (rows.first + rows.last) / 2, std::nullopt, false};
     if (pickedRow) {
         const rl::ScanRow row = rl::scanRow(s, scene.rules, picked.y(), scene.width);
         if (picked.x() >= row.xBegin && picked.x() < row.xEnd) f.pixel = picked.x();
     }
     return f;
+}
+
+ScreenRows screenRows(const rl::TriangleSetup& s, int height) {
+    const int first = std::max(s.yFirst, 0);
+    return {first, s.degenerate() ? first - 1 : std::min(s.yLast, height - 1)};
 }
 
 }  // namespace rasterlab

@@ -13,6 +13,10 @@
 class QLabel;
 class QTextBrowser;
 
+namespace rl {
+struct TriangleSetup;
+}
+
 namespace rasterlab {
 
 class Inspection;
@@ -29,7 +33,7 @@ protected:
 
     // Makes what is shown again from the Inspection.
     virtual void refresh() = 0;
-    // A new frame, before the refresh (nothing by default).
+    // A new frame, before the refresh that cursorChanged brings (nothing by default).
     virtual void frameChanged() {}
     // The presentation mode changed, the fonts already set: a refresh by default.
     virtual void presentationChanged();
@@ -65,5 +69,14 @@ struct FollowedRow {
     bool followsCursor = false;
 };
 std::optional<FollowedRow> followedRow(const Inspection& inspection);
+
+// The rows of a triangle set up for the scan that lie on a screen `height` rows high,
+// [first, last]: its sampled rows cut to the screen, none (last < first) when it is
+// degenerate.
+struct ScreenRows {
+    int first = 0, last = -1;
+    bool contains(int y) const { return y >= first && y <= last; }
+};
+ScreenRows screenRows(const rl::TriangleSetup& s, int height);
 
 }  // namespace rasterlab

@@ -89,6 +89,11 @@ QString fateText(rl::TriangleFate fate) {
     return {};
 }
 
+// The list's data for mesh triangle `source` of draw `draw`: both in one number.
+QVariant listKey(quint64 draw, quint64 source) {
+    return QVariant::fromValue((draw << 32) | source);
+}
+
 }  // namespace
 
 NearClipModel nearClipModel(const rl::FrameTrace& frame, std::uint32_t draw, std::uint32_t source) {
@@ -509,14 +514,13 @@ NearClipView::NearClipView(Inspection* inspection, QWidget* parent)
     connect(m_all, &QPushButton::clicked, this, [this] { setStep(kNearClipSteps - 1); });
     connect(m_axis, &QComboBox::currentIndexChanged, this, [this] { updateStep(); });
     connect(m_triangles, &QComboBox::activated, this, [this](int index) {
-        const QVariant item = m_triangles->itemData(index);
-        if (!item.isValid()) {
+        const std::optional<std::pair<std::uint32_t, std::uint32_t>> listed = listedTriangle(index);
+        if (!listed) {
             m_chosen.reset();
             refresh();
             return;
         }
-        const quint64 key = item.toULongLong();
-        showTriangle(static_cast<std::uint32_t>(key >> 32), static_cast<std::uint32_t>(key));
+        showTriangle(listed->first, listed->second);
     });
 }
 
@@ -533,6 +537,14 @@ void NearClipView::presentationChanged() {
 
 int NearClipView::listedTriangles() const {
     return m_triangles->count() - 1;
+}
+
+std::optional<std::pair<std::uint32_t, std::uint32_t>> NearClipView::listedTriangle(
+    int index) const {
+    const QVariant item = m_triangles->itemData(index);
+    if (!item.isValid()) return std::nullopt;
+    const quint64 key = item.toULongLong();
+    return std::pair{static_cast<std::uint32_t>(key >> 32), static_cast<std::uint32_t>(key)};
 }
 
 void NearClipView::rebuildList() {
@@ -552,7 +564,7 @@ void NearClipView::rebuildList() {
             if (projection.draws.size() > 1)
                 text = QString::fromStdString(frame->scene->draws[d].name) + QStringLiteral(", ") +
                        text;
-            m_triangles->addItem(text, QVariant::fromValue((quint64(d) << 32) | quint64(t)));
+            m_triangles->addItem(text, listKey(d, t));
         }
     }
 }
@@ -593,11 +605,7 @@ void NearClipView::refresh() {
             which = m_chosen;
         else
             which = selected;
-        if (!which && m_triangles->count() > 1) {
-            const quint64 key = m_triangles->itemData(1).toULongLong();
-            which =
-                std::pair{static_cast<std::uint32_t>(key >> 32), static_cast<std::uint32_t>(key)};
-        }
+        if (!which) which = listedTriangle(1);  // none when the list offers none
         if (which && (which->first >= frame->scene->draws.size() ||
                       !frame->scene->draws[which->first].mesh ||
                       which->second >= frame->scene->draws[which->first].mesh->triangles.size()))
@@ -631,8 +639,7 @@ void NearClipView::refresh() {
     // The list shows the triangle when it is in it.
     int index = 0;
     if (m_model && m_chosen) {
-        const quint64 key = (quint64(m_model->draw) << 32) | quint64(m_model->source);
-        index = std::max(0, m_triangles->findData(QVariant::fromValue(key)));
+        index = std::max(0, m_triangles->findData(listKey(m_model->draw, m_model->source)));
     }
     m_triangles->setCurrentIndex(index);
     if (!unchanged) updateStep();

@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "explained_view.h"
@@ -76,6 +77,9 @@ public:
     // The triangles the list offers (the near plane cut or hid them), without the first
     // entry (the one selected).
     int listedTriangles() const;
+    // The mesh triangle (draw, source) of the list's entry `index`, 1 .. listedTriangles();
+    // none for entry 0 (the one selected) or past the end.
+    std::optional<std::pair<std::uint32_t, std::uint32_t>> listedTriangle(int index) const;
     QString titleText() const;
 
 private:

@@ -221,18 +221,15 @@ void PainterView::showEvent(QShowEvent* event) {
         m_split->setSizes({width() / 3, width() - width() / 3});
         m_splitSet = true;
     }
-    if (m_stale || m_comparedFrame.lock() != m_inspection->frame()) recompute();
+    // A frame that came while hidden is another than the one compared.
+    if (m_comparedFrame.lock() != m_inspection->frame()) recompute();
 }
 
 void PainterView::refreshWhenShown() {
-    if (isVisible())
-        recompute();
-    else
-        m_stale = true;
+    if (isVisible()) recompute();
 }
 
 void PainterView::recompute() {
-    m_stale = false;
     const std::shared_ptr<const rl::FrameTrace>& frame = m_inspection->frame();
     m_comparedFrame = frame;
     m_comparison.reset();

@@ -66,7 +66,6 @@ private:
     std::weak_ptr<const rl::FrameTrace> m_comparedFrame;
     QString m_error;
     std::vector<std::uint32_t> m_zBufferPixels;  // per rank: pixels the z-buffer shows it at
-    bool m_stale = false;
     bool m_following = false;  // the table follows Inspection's selection
     bool m_splitSet = false;
     QSplitter* m_split = nullptr;

@@ -62,7 +62,7 @@ QRect windowOf(const ScanlineModel& m, int width, int height, int maxColumns, in
     int right = clampTo(std::ceil(xMax) + 1.0, width);
     int top = clampTo(std::floor(m.setup.sorted[0].y) - 1.0, height);
     int bottom = clampTo(std::ceil(m.setup.sorted[2].y) + 1.0, height);
-    const int cy = m.row ? m.row->y : (m.rowBegin + m.rowEnd) / 2;
+    const int cy = m.row ? m.row->y : (m.rows.first + m.rows.last) / 2;
     int cx = (left + right) / 2;
     const bool spanFits = m.row && !m.row->empty() && m.row->xEnd - m.row->xBegin + 2 <= maxColumns;
     if (spanFits)
@@ -156,10 +156,8 @@ ScanlineModel scanlineModel(const rl::FrameTrace& frame, std::uint32_t triangle,
         if (entry.horizontal) entry.lastRow = entry.firstRow - 1;
         entry.xFirstRow = entry.walked() ? rl::edgeCrossing(e, rules, entry.firstRow) : entry.top.x;
     }
-    m.rowBegin = std::max(s.yFirst, 0);
-    m.rowEnd = std::min(s.yLast, scene.height - 1);
-    if (s.degenerate()) m.rowEnd = m.rowBegin - 1;
-    if (!y || *y < m.rowBegin || *y > m.rowEnd) return m;
+    m.rows = screenRows(s, scene.height);
+    if (!y || !m.rows.contains(*y)) return m;
 
     ScanRowInfo row;
     static_cast<rl::ScanRow&>(row) = rl::scanRow(s, rules, *y, scene.width);
@@ -565,11 +563,11 @@ QString ScanlineView::explanationHtml() const {
     html += tableRow(
         tr("side"), [this](const ScanEdgeEntry& e) { return e.onLeft ? tr("left") : tr("right"); });
     html += QStringLiteral("</table>");
-    if (m.rowBegin > s.yFirst || m.rowEnd < s.yLast)
+    if (m.rows.first > s.yFirst || m.rows.last < s.yLast)
         html += QStringLiteral("<p>") +
                 tr("Only rows %1 to %2 are on the screen: the walk starts and stops there.")
-                    .arg(m.rowBegin)
-                    .arg(m.rowEnd) +
+                    .arg(m.rows.first)
+                    .arg(m.rows.last) +
                 QStringLiteral("</p>");
 
     // The scanline: the edges' x stepped by dx/dy, the span, its ends.
@@ -591,7 +589,7 @@ QString ScanlineView::explanationHtml() const {
                 .arg(row.y)
                 .arg(num(x))
                 .arg(which);
-        if (row.y == m.rowBegin)
+        if (row.y == m.rows.first)
             return tr("%1(%2) = %3, where the %4 edge crosses the first row on the screen")
                 .arg(name)
                 .arg(row.y)

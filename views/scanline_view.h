@@ -58,7 +58,7 @@ struct ScanlineModel {
     std::uint32_t triangle = 0;  // Projection::triangles
     rl::TriangleSetup setup;
     std::array<ScanEdgeEntry, 3> edges{};  // long, upper, lower
-    int rowBegin = 0, rowEnd = -1;         // the rows walked on the screen [rowBegin, rowEnd]
+    ScreenRows rows;                       // the rows walked on the screen
     std::optional<ScanRowInfo> row;        // the scanline shown, if the triangle has one
     std::optional<int> currentPixel;       // x of the pixel at the cursor (or picked)
 };

@@ -51,10 +51,7 @@ TrapezoidModel trapezoidModel(const rl::FrameTrace& frame, std::uint32_t triangl
         if (colours) values[k].colour = (*colours)[k];
     }
     m.split = rl::splitIntoTrapezoids(m.setup, values, scene.rules);
-    m.rowBegin = std::max(m.setup.yFirst, 0);
-    m.rowEnd = std::min(m.setup.yLast, scene.height - 1);
-    if (m.setup.degenerate()) m.rowEnd = m.rowBegin - 1;
-    if (!y || *y < m.rowBegin || *y > m.rowEnd) return m;
+    if (!y || !screenRows(m.setup, scene.height).contains(*y)) return m;
     for (std::size_t k = 0; k < m.split.parts.size(); ++k) {
         const rl::Trapezoid& part = m.split.parts[k];
         if (*y >= part.firstRow && *y <= part.lastRow) {

@@ -29,7 +29,6 @@ struct TrapezoidModel {
     rl::TrapezoidSplit split;
     bool hasColour = false;           // the corners carry the Gouraud vertex colours
     bool inverseDepth = false;        // pz is 1/z (the depth test interpolates 1/z)
-    int rowBegin = 0, rowEnd = -1;    // the rows on the screen
     std::optional<std::size_t> part;  // the trapezoid holding the current row
     std::optional<rl::TrapezoidRow> row;
     std::optional<int> pixel;  // the pixel at the cursor (or picked) on the row
