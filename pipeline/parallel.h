@@ -6,8 +6,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <thread>
-#include <vector>
 
 namespace rl {
 
@@ -27,6 +27,14 @@ inline bool ownsRow(int y, int part, int parts) {
     return (y / kRowChunk) % parts == part;
 }
 
+// Runs fn(context, part) for part = 1 .. parts - 1 on other threads while the caller runs
+// part 0 (fn(context, 0)), and returns when every part has. The other threads are kept from
+// call to call (parallel.cpp): starting threads for each stage of each frame cost more than
+// some stages themselves, and a thread that has just finished waits a little, awake, for
+// the next stage before it sleeps. Calls from several threads at once are allowed: one
+// that finds the kept threads busy starts threads of its own.
+void runPartsOnWorkers(int parts, void (*fn)(const void* context, int part), const void* context);
+
 // Runs body(part) for part = 0 .. parts - 1, part 0 on the calling thread.
 template <typename Body>
 void runParts(int parts, const Body& body) {
@@ -34,11 +42,9 @@ void runParts(int parts, const Body& body) {
         body(0);
         return;
     }
-    std::vector<std::thread> workers;
-    workers.reserve(static_cast<std::size_t>(parts - 1));
-    for (int part = 1; part < parts; ++part) workers.emplace_back([&body, part] { body(part); });
-    body(0);
-    for (auto& worker : workers) worker.join();
+    runPartsOnWorkers(
+        parts, [](const void* context, int part) { (*static_cast<const Body*>(context))(part); },
+        &body);
 }
 
 // Splits [0, count) into `parts` contiguous ranges; range k is [begin(k), begin(k + 1)).
