@@ -133,6 +133,12 @@ RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, floa
     return passed;
 }
 
+// n copies of value from row on: the clear of a row's depths, with the widest stores the
+// machine has (std::fill_n is built for the baseline's 16-byte ones).
+RL_MULTIVERSION void fillFloats(float* row, std::size_t n, float value) {
+    for (std::size_t i = 0; i < n; ++i) row[i] = value;
+}
+
 // What the depth test of one triangle's spans needs, worked out once per triangle.
 // With reciprocal, the plane interpolated is that of 1/z, and a fragment's depth is one over
 // it: view z is not linear on the screen, but 1/z is (perspective-correct depth).
@@ -322,8 +328,9 @@ Counts testChunks(const Scene& scene, const Projection& projection, const SpansB
         if (dirty.begin < dirty.end) {
             const auto n = static_cast<std::size_t>(dirty.end - dirty.begin);
             for (int y = y0; y < y1; ++y) {
-                std::fill_n(out.depth.row(y) + dirty.begin, n, clear);
-                std::fill_n(out.triangle.row(y) + dirty.begin, n, kNoTriangle);
+                fillFloats(out.depth.row(y) + dirty.begin, n, clear);
+                static_assert(kNoTriangle == ~std::uint32_t{0}, "cleared byte by byte");
+                std::memset(out.triangle.row(y) + dirty.begin, 0xff, n * sizeof(std::uint32_t));
                 // Barycentrics are read only where a triangle won, so any value does; but
                 // zeroing them here with memset brings their lines into the cache ahead of
                 // the spans' stores (full-screen sphere, Gouraud, 1 thread: depth test
