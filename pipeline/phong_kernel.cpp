@@ -92,19 +92,111 @@ RL_LANES Floats powLanes(const Floats& x, float n) {
     return select(x > 0.0f, power, splat(n == 0.0f ? 1.0f : 0.0f));
 }
 
+// The course's Phong model at eight points P with (not normalised) normals N: the
+// operations of phong(), lane by lane, so the colours are the same bits.
+struct LitLanes {
+    Floats r, g, b;
+    Floats nx, ny, nz;  // the normal used (normalised, turned toward the viewer)
+    Ints hasN, turn, behind, noSpecular;
+};
+
+RL_LANES LitLanes lightLanes(const CoursePhongRun& run, const Floats& px, const Floats& py,
+                             const Floats& pz, Floats nx, Floats ny, Floats nz) {
+    const Ints all = splat(-1), none = splat(0);
+    const Ints flip = run.flip ? all : none;
+    const Ints directional = run.directional ? all : none;
+    const Ints withSpecular = run.withSpecular ? all : none;
+    // V = -P'/|P'| (zero when P' is); N normalised; turned toward the viewer when V.N < 0.
+    const Floats vLength = squareRoot((px * px + py * py) + pz * pz);
+    const Ints hasV = vLength > 0.0f;
+    const Floats vInverse = 1.0f / select(hasV, vLength, splat(1.0f));
+    const Floats vx = select(hasV, -px * vInverse, splat(0.0f));
+    const Floats vy = select(hasV, -py * vInverse, splat(0.0f));
+    const Floats vz = select(hasV, -pz * vInverse, splat(0.0f));
+    const Floats nLength = squareRoot((nx * nx + ny * ny) + nz * nz);
+    const Ints hasN = nLength > 0.0f;
+    const Floats nInverse = 1.0f / select(hasN, nLength, splat(1.0f));
+    nx = nx * nInverse;
+    ny = ny * nInverse;
+    nz = nz * nInverse;
+    const Ints turn = flip & (((vx * nx + vy * ny) + vz * nz) < 0.0f);
+    nx = select(turn, -nx, nx);
+    ny = select(turn, -ny, ny);
+    nz = select(turn, -nz, nz);
+    // L toward the light.
+    const Floats tx = select(directional, splat(run.light.x), run.light.x - px);
+    const Floats ty = select(directional, splat(run.light.y), run.light.y - py);
+    const Floats tz = select(directional, splat(run.light.z), run.light.z - pz);
+    const Floats lLength = squareRoot((tx * tx + ty * ty) + tz * tz);
+    const Ints hasL = lLength > 0.0f;
+    const Floats lInverse = 1.0f / select(hasL, lLength, splat(1.0f));
+    const Floats lx = tx * lInverse, ly = ty * lInverse, lz = tz * lInverse;
+    const Floats nDotL = (nx * lx + ny * ly) + nz * lz;
+    const Ints lit = hasN & hasL & (nDotL >= 0.0f);
+    // R = 2 (N.L) N - L (a unit vector); R.V.
+    const Floats twice = 2.0f * nDotL;
+    const Floats rx = twice * nx - lx, ry = twice * ny - ly, rz = twice * nz - lz;
+    const Floats rDotV = (rx * vx + ry * vy) + rz * vz;
+    const Ints highlight = lit & withSpecular & (rDotV >= 0.0f);
+    // No specular work at all when ks = 0, nor for eight points none of which has a
+    // highlight (the light behind them, or R turned away from V).
+    const Floats power =
+        anyLane(highlight)
+            ? select(highlight, powLanes(select(rDotV > 0.0f, rDotV, splat(0.0f)), run.shininess),
+                     splat(0.0f))
+            : splat(0.0f);
+    const Floats zero = splat(0.0f);
+    // ((ambient + diffuse) + specular) + unlit (zero), as PhongSample::colour() adds them
+    // (the last addition turns -0 into +0 there, so here too).
+    LitLanes out;
+    out.r = ((run.ambient.x + select(lit, run.diffuse.x * nDotL, zero)) +
+             select(highlight, run.specular.x * power, zero)) +
+            0.0f;
+    out.g = ((run.ambient.y + select(lit, run.diffuse.y * nDotL, zero)) +
+             select(highlight, run.specular.y * power, zero)) +
+            0.0f;
+    out.b = ((run.ambient.z + select(lit, run.diffuse.z * nDotL, zero)) +
+             select(highlight, run.specular.z * power, zero)) +
+            0.0f;
+    out.nx = nx;
+    out.ny = ny;
+    out.nz = nz;
+    out.hasN = hasN;
+    out.turn = turn;
+    out.behind = hasN & hasL & (nDotL < 0.0f);
+    out.noSpecular = lit & (rDotV < 0.0f);
+    return out;
+}
+
+// Minus the counts of a kernel's lanes (a set lane is -1), added up at the end.
+struct LaneCounts {
+    Ints flipped = splat(0), behind = splat(0), noSpecular = splat(0), noNormal = splat(0),
+         clamped = splat(0);
+
+    RL_LANES void add(const LitLanes& l, const Ints& valid) {
+        flipped += valid & l.hasN & l.turn;
+        behind += valid & l.behind;
+        noSpecular += valid & l.noSpecular;
+        noNormal += valid & ~l.hasN;
+    }
+    RL_LANES void addTo(CoursePhongCounts& counts) const {
+        for (int i = 0; i < kLanes; ++i) {
+            counts.flipped += static_cast<std::size_t>(-flipped[i]);
+            counts.lightBehind += static_cast<std::size_t>(-behind[i]);
+            counts.noSpecular += static_cast<std::size_t>(-noSpecular[i]);
+            counts.noNormal += static_cast<std::size_t>(-noNormal[i]);
+            counts.clamped += static_cast<std::size_t>(-clamped[i]);
+        }
+    }
+};
+
 }  // namespace
 
 RL_MULTIVERSION void shadeCoursePhongRun(const CoursePhongRun& run, const vec2* bary, int count,
                                          vec3* colour, vec3* normal, float clampScale,
                                          CoursePhongCounts& counts) {
-    const Ints all = splat(-1), none = splat(0);
-    const Ints flip = run.flip ? all : none;
-    const Ints directional = run.directional ? all : none;
-    const Ints withSpecular = run.withSpecular ? all : none;
     const Ints laneIndex = {0, 1, 2, 3, 4, 5, 6, 7};
-    // Minus the counts, per lane (a set lane is -1).
-    Ints flippedSum = none, behindSum = none, noSpecularSum = none, noNormalSum = none,
-         clampedSum = none;
+    LaneCounts sums;
     for (int start = 0; start < count; start += kLanes) {
         const int n = count - start < kLanes ? count - start : kLanes;
         Floats beta, gamma;
@@ -125,84 +217,48 @@ RL_MULTIVERSION void shadeCoursePhongRun(const CoursePhongRun& run, const vec2* 
         const Floats px = (run.p0.x + beta * run.dp1.x) + gamma * run.dp2.x;
         const Floats py = (run.p0.y + beta * run.dp1.y) + gamma * run.dp2.y;
         const Floats pz = (run.p0.z + beta * run.dp1.z) + gamma * run.dp2.z;
-        Floats nx = (run.n0.x + beta * run.dn1.x) + gamma * run.dn2.x;
-        Floats ny = (run.n0.y + beta * run.dn1.y) + gamma * run.dn2.y;
-        Floats nz = (run.n0.z + beta * run.dn1.z) + gamma * run.dn2.z;
-        // V = -P'/|P'| (zero when P' is); N normalised; turned toward the viewer when V.N < 0.
-        const Floats vLength = squareRoot((px * px + py * py) + pz * pz);
-        const Ints hasV = vLength > 0.0f;
-        const Floats vInverse = 1.0f / select(hasV, vLength, splat(1.0f));
-        const Floats vx = select(hasV, -px * vInverse, splat(0.0f));
-        const Floats vy = select(hasV, -py * vInverse, splat(0.0f));
-        const Floats vz = select(hasV, -pz * vInverse, splat(0.0f));
-        const Floats nLength = squareRoot((nx * nx + ny * ny) + nz * nz);
-        const Ints hasN = nLength > 0.0f;
-        const Floats nInverse = 1.0f / select(hasN, nLength, splat(1.0f));
-        nx = nx * nInverse;
-        ny = ny * nInverse;
-        nz = nz * nInverse;
-        const Ints turn = flip & (((vx * nx + vy * ny) + vz * nz) < 0.0f);
-        nx = select(turn, -nx, nx);
-        ny = select(turn, -ny, ny);
-        nz = select(turn, -nz, nz);
-        // L toward the light.
-        const Floats tx = select(directional, splat(run.light.x), run.light.x - px);
-        const Floats ty = select(directional, splat(run.light.y), run.light.y - py);
-        const Floats tz = select(directional, splat(run.light.z), run.light.z - pz);
-        const Floats lLength = squareRoot((tx * tx + ty * ty) + tz * tz);
-        const Ints hasL = lLength > 0.0f;
-        const Floats lInverse = 1.0f / select(hasL, lLength, splat(1.0f));
-        const Floats lx = tx * lInverse, ly = ty * lInverse, lz = tz * lInverse;
-        const Floats nDotL = (nx * lx + ny * ly) + nz * lz;
-        const Ints lit = hasN & hasL & (nDotL >= 0.0f);
-        // R = 2 (N.L) N - L (a unit vector); R.V.
-        const Floats twice = 2.0f * nDotL;
-        const Floats rx = twice * nx - lx, ry = twice * ny - ly, rz = twice * nz - lz;
-        const Floats rDotV = (rx * vx + ry * vy) + rz * vz;
-        const Ints highlight = lit & withSpecular & (rDotV >= 0.0f);
-        // No specular work at all when ks = 0, nor for eight pixels none of which has a
-        // highlight (the light behind them, or R turned away from V).
-        const Floats power =
-            anyLane(highlight)
-                ? select(highlight,
-                         powLanes(select(rDotV > 0.0f, rDotV, splat(0.0f)), run.shininess),
-                         splat(0.0f))
-                : splat(0.0f);
-        const Floats zero = splat(0.0f);
-        // ((ambient + diffuse) + specular) + unlit (zero), as PhongSample::colour() adds
-        // them (the last addition turns -0 into +0 there, so here too).
-        const Floats r = ((run.ambient.x + select(lit, run.diffuse.x * nDotL, zero)) +
-                          select(highlight, run.specular.x * power, zero)) +
-                         0.0f;
-        const Floats g = ((run.ambient.y + select(lit, run.diffuse.y * nDotL, zero)) +
-                          select(highlight, run.specular.y * power, zero)) +
-                         0.0f;
-        const Floats b = ((run.ambient.z + select(lit, run.diffuse.z * nDotL, zero)) +
-                          select(highlight, run.specular.z * power, zero)) +
-                         0.0f;
+        const Floats nx = (run.n0.x + beta * run.dn1.x) + gamma * run.dn2.x;
+        const Floats ny = (run.n0.y + beta * run.dn1.y) + gamma * run.dn2.y;
+        const Floats nz = (run.n0.z + beta * run.dn1.z) + gamma * run.dn2.z;
+        const LitLanes l = lightLanes(run, px, py, pz, nx, ny, nz);
         const Ints valid = laneIndex < n;
-        flippedSum += valid & hasN & turn;
-        behindSum += valid & hasN & hasL & (nDotL < 0.0f);
-        noSpecularSum += valid & lit & (rDotV < 0.0f);
-        noNormalSum += valid & ~hasN;
-        clampedSum += valid & ((r > clampScale) | (g > clampScale) | (b > clampScale));
+        sums.add(l, valid);
+        sums.clamped += valid & ((l.r > clampScale) | (l.g > clampScale) | (l.b > clampScale));
         if (n == kLanes) {
-            storeInterleaved(r, g, b, &colour[start].x);
+            storeInterleaved(l.r, l.g, l.b, &colour[start].x);
         } else {
-            for (int i = 0; i < n; ++i) colour[start + i] = vec3(r[i], g[i], b[i]);
+            for (int i = 0; i < n; ++i) colour[start + i] = vec3(l.r[i], l.g[i], l.b[i]);
         }
         if (normal) {
             for (int i = 0; i < n; ++i)
-                normal[start + i] = hasN[i] ? vec3(nx[i], ny[i], nz[i]) : vec3(0.0f);
+                normal[start + i] = l.hasN[i] ? vec3(l.nx[i], l.ny[i], l.nz[i]) : vec3(0.0f);
         }
     }
-    for (int i = 0; i < kLanes; ++i) {
-        counts.flipped += static_cast<std::size_t>(-flippedSum[i]);
-        counts.lightBehind += static_cast<std::size_t>(-behindSum[i]);
-        counts.noSpecular += static_cast<std::size_t>(-noSpecularSum[i]);
-        counts.noNormal += static_cast<std::size_t>(-noNormalSum[i]);
-        counts.clamped += static_cast<std::size_t>(-clampedSum[i]);
+    sums.addTo(counts);
+}
+
+RL_MULTIVERSION void shadeCoursePhongVertices(const CoursePhongRun& run, const vec3* p,
+                                              const vec3* n, const std::uint32_t* vertices,
+                                              int count, vec3* colour, CoursePhongCounts& counts) {
+    const Ints laneIndex = {0, 1, 2, 3, 4, 5, 6, 7};
+    LaneCounts sums;
+    for (int start = 0; start < count; start += kLanes) {
+        const int used = count - start < kLanes ? count - start : kLanes;
+        Floats px, py, pz, nx, ny, nz;
+        for (int i = 0; i < kLanes; ++i) {  // lanes past the list repeat its first vertex
+            const std::uint32_t v = vertices[start + (i < used ? i : 0)];
+            px[i] = p[v].x;
+            py[i] = p[v].y;
+            pz[i] = p[v].z;
+            nx[i] = n[v].x;
+            ny[i] = n[v].y;
+            nz[i] = n[v].z;
+        }
+        const LitLanes l = lightLanes(run, px, py, pz, nx, ny, nz);
+        sums.add(l, laneIndex < used);
+        for (int i = 0; i < used; ++i) colour[vertices[start + i]] = vec3(l.r[i], l.g[i], l.b[i]);
     }
+    sums.addTo(counts);
 }
 
 RL_MULTIVERSION std::size_t shadeGouraudRun(const vec3& c0, const vec3& d1, const vec3& d2,

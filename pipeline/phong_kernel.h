@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include "math.h"
 
@@ -34,6 +35,13 @@ struct CoursePhongCounts {
 // normal used into normal[i] when normal is not null); clampScale is the colour scale.
 void shadeCoursePhongRun(const CoursePhongRun& run, const vec2* bary, int count, vec3* colour,
                          vec3* normal, float clampScale, CoursePhongCounts& counts);
+
+// The same model at a list of vertices (Gouraud's vertex colours): vertex v = vertices[i]
+// is lit at P = p[v] with the normal n[v] (not normalised) as phong() lights it, and its
+// colour written to colour[v]; counts.clamped is not counted.
+void shadeCoursePhongVertices(const CoursePhongRun& run, const vec3* p, const vec3* n,
+                              const std::uint32_t* vertices, int count, vec3* colour,
+                              CoursePhongCounts& counts);
 
 // Gouraud's colours for a run of pixels, (c0 + beta d1) + gamma d2 with the barycentrics
 // bary[i] = (beta, gamma), into colour[i] (the same bits as interpolate()); returns how many

@@ -173,6 +173,45 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
         return light(draw, colourAt(draw, dv, whole, third, third), barycentre, n);
     };
 
+    // Per draw, whether its lighting is what the many-point kernels know (phong_kernel.h):
+    // the course's common case, the course's Phong with the material's colour, one plain
+    // light, R.V highlights and no emission. Its pixels go through the kernel when it is
+    // Phong shaded with interpolated normals, screen-affine; its vertices when Gouraud.
+    std::vector<std::uint8_t> kernelDraw(scene.draws.size(), 0);
+    std::vector<std::uint8_t> kernelVertices(scene.draws.size(), 0);
+    for (std::size_t d = 0; d < scene.draws.size(); ++d) {
+        const Draw& draw = scene.draws[d];
+        const bool kernelLighting =
+            draw.lighting == LightingModel::CoursePhong && draw.colour == ColourSource::Material &&
+            !normals.skipped && std::min(draw.lightCount, view.lights.size()) == 1 &&
+            view.lights[0].plain() && draw.specular == SpecularModel::Phong &&
+            draw.material.emission == vec3(0.0f);
+        kernelDraw[d] = kernelLighting && draw.shading == ShadingModel::Phong &&
+                        !draw.flatNormals && !perspective;
+        kernelVertices[d] = kernelLighting && draw.shading == ShadingModel::Gouraud;
+    }
+    // A kernel's constants for a draw: its material under the one light.
+    auto kernelRun = [&](const Draw& draw) {
+        const Material& m = draw.material;
+        const ViewLight& l = view.lights[0];
+        CoursePhongRun run;
+        run.ambient = scene.ambientIntensity * m.ka;
+        run.diffuse = l.intensity * m.od * m.kd;
+        run.specular = l.intensity * m.ks;
+        run.light = vec3(l.pView);
+        run.directional = l.pView.w == 0.0;
+        run.shininess = m.shininess;
+        run.flip = flip;
+        run.withSpecular = m.ks != 0.0f;
+        return run;
+    };
+    auto addKernelCounts = [](Shading& counts, const CoursePhongCounts& c) {
+        counts.flipped += c.flipped;
+        counts.lightBehind += c.lightBehind;
+        counts.noSpecular += c.noSpecular;
+        counts.noNormal += c.noNormal;
+    };
+
     // Flat and Gouraud colours are evaluated first, for the visible triangles and their
     // vertices only, so that the pixel loop (on several threads) only reads them.
     struct DrawTables {
@@ -262,10 +301,28 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
             std::vector<Shading> partCounts(static_cast<std::size_t>(parts));
             runParts(parts, [&](int part) {
                 Shading counts;  // on the thread's stack
-                for (std::size_t i = rangeBegin(independent, part, parts),
-                                 end = rangeBegin(independent, part + 1, parts);
-                     i < end; ++i)
-                    if (table.done[i] == kNeeded) evaluate(d, i, counts);
+                const std::size_t first = rangeBegin(independent, part, parts);
+                const std::size_t last = rangeBegin(independent, part + 1, parts);
+                if (!Probe::enabled && kernelVertices[d]) {
+                    // Eight vertices at a time (1M sphere, Gouraud: ~250,000 of them).
+                    std::vector<std::uint32_t> needed;
+                    for (std::size_t i = first; i < last; ++i)
+                        if (table.done[i] == kNeeded) {
+                            needed.push_back(static_cast<std::uint32_t>(i));
+                            table.done[i] = kDone;
+                        }
+                    const DrawVertices& dv = vertices[d];
+                    CoursePhongCounts c;
+                    shadeCoursePhongVertices(kernelRun(scene.draws[d]), dv.pView.data(),
+                                             dv.nView.data(), needed.data(),
+                                             static_cast<int>(needed.size()),
+                                             table.vertexColour.data(), c);
+                    counts.phongEvaluations += needed.size();
+                    addKernelCounts(counts, c);
+                } else {
+                    for (std::size_t i = first; i < last; ++i)
+                        if (table.done[i] == kNeeded) evaluate(d, i, counts);
+                }
                 partCounts[static_cast<std::size_t>(part)] = std::move(counts);
             });
             for (const Shading& c : partCounts) {
@@ -302,21 +359,6 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                 if (table.done[v] == kNeeded)
                     clippedColour(d, static_cast<std::uint32_t>(v), clippedColour);
         }
-    }
-
-    // Per draw, whether its pixels go through the many-pixel kernel: the course's common case,
-    // Phong with the material's colour, screen-affine, one plain light, R.V highlights and no
-    // emission (what the kernel knows).
-    std::vector<std::uint8_t> kernelDraw(scene.draws.size(), 0);
-    for (std::size_t d = 0; d < scene.draws.size(); ++d) {
-        const Draw& draw = scene.draws[d];
-        kernelDraw[d] = draw.shading == ShadingModel::Phong &&
-                        draw.lighting == LightingModel::CoursePhong &&
-                        draw.colour == ColourSource::Material && !draw.flatNormals &&
-                        !perspective && !normals.skipped &&
-                        std::min(draw.lightCount, view.lights.size()) == 1 &&
-                        view.lights[0].plain() && draw.specular == SpecularModel::Phong &&
-                        draw.material.emission == vec3(0.0f);
     }
 
     // The pixels: rows shared out between the threads (one thread when a probe records).
@@ -368,35 +410,22 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                 if constexpr (!Probe::enabled) {
                     if (kernelDraw[tri.draw]) {
                         // Many pixels at once, the same bits as phong() (phong_kernel.h).
-                        const Material& m = draw.material;
-                        const ViewLight& l = view.lights[0];
                         const vec3& a = dv.pView[tri.v[0]];
                         const vec3& na = dv.nView[tri.v[0]];
-                        CoursePhongRun run;
+                        CoursePhongRun run = kernelRun(draw);
                         run.p0 = a;
                         run.dp1 = dv.pView[tri.v[1]] - a;
                         run.dp2 = dv.pView[tri.v[2]] - a;
                         run.n0 = na;
                         run.dn1 = dv.nView[tri.v[1]] - na;
                         run.dn2 = dv.nView[tri.v[2]] - na;
-                        run.ambient = scene.ambientIntensity * m.ka;
-                        run.diffuse = l.intensity * m.od * m.kd;
-                        run.specular = l.intensity * m.ks;
-                        run.light = vec3(l.pView);
-                        run.directional = l.pView.w == 0.0;
-                        run.shininess = m.shininess;
-                        run.flip = flip;
-                        run.withSpecular = m.ks != 0.0f;
                         CoursePhongCounts c;
                         shadeCoursePhongRun(run, baryRow + x, end - x, colourRow + x,
                                             normalRow ? normalRow + x : nullptr, scale, c);
                         const std::size_t shaded = static_cast<std::size_t>(end - x);
                         counts.shadedPixels += shaded;
                         counts.phongEvaluations += shaded;
-                        counts.flipped += c.flipped;
-                        counts.lightBehind += c.lightBehind;
-                        counts.noSpecular += c.noSpecular;
-                        counts.noNormal += c.noNormal;
+                        addKernelCounts(counts, c);
                         counts.clampedPixels += c.clamped;
                         x = end;
                         continue;
