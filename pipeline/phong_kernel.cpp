@@ -239,7 +239,8 @@ RL_MULTIVERSION void shadeCoursePhongRun(const CoursePhongRun& run, const vec2* 
 
 RL_MULTIVERSION void shadeCoursePhongVertices(const CoursePhongRun& run, const vec3* p,
                                               const vec3* n, const std::uint32_t* vertices,
-                                              int count, vec3* colour, CoursePhongCounts& counts) {
+                                              int count, vec3* colour, vec3* normal,
+                                              CoursePhongCounts& counts) {
     const Ints laneIndex = {0, 1, 2, 3, 4, 5, 6, 7};
     LaneCounts sums;
     for (int start = 0; start < count; start += kLanes) {
@@ -256,7 +257,11 @@ RL_MULTIVERSION void shadeCoursePhongVertices(const CoursePhongRun& run, const v
         }
         const LitLanes l = lightLanes(run, px, py, pz, nx, ny, nz);
         sums.add(l, laneIndex < used);
-        for (int i = 0; i < used; ++i) colour[vertices[start + i]] = vec3(l.r[i], l.g[i], l.b[i]);
+        for (int i = 0; i < used; ++i) {
+            const std::uint32_t v = vertices[start + i];
+            colour[v] = vec3(l.r[i], l.g[i], l.b[i]);
+            if (normal) normal[v] = l.hasN[i] ? vec3(l.nx[i], l.ny[i], l.nz[i]) : vec3(0.0f);
+        }
     }
     sums.addTo(counts);
 }

@@ -176,7 +176,8 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
     // Per draw, whether its lighting is what the many-point kernels know (phong_kernel.h):
     // the course's common case, the course's Phong with the material's colour, one plain
     // light, R.V highlights and no emission. Its pixels go through the kernel when it is
-    // Phong shaded with interpolated normals, screen-affine; its vertices when Gouraud.
+    // Phong shaded with interpolated normals, screen-affine; its vertices when Gouraud, its
+    // triangles' barycentres when flat.
     std::vector<std::uint8_t> kernelDraw(scene.draws.size(), 0);
     std::vector<std::uint8_t> kernelVertices(scene.draws.size(), 0);
     for (std::size_t d = 0; d < scene.draws.size(); ++d) {
@@ -188,7 +189,8 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
             draw.material.emission == vec3(0.0f);
         kernelDraw[d] = kernelLighting && draw.shading == ShadingModel::Phong &&
                         !draw.flatNormals && !perspective;
-        kernelVertices[d] = kernelLighting && draw.shading == ShadingModel::Gouraud;
+        kernelVertices[d] = kernelLighting && (draw.shading == ShadingModel::Gouraud ||
+                                               litPerTriangle(draw.shading));
     }
     // A kernel's constants for a draw: its material under the one light.
     auto kernelRun = [&](const Draw& draw) {
@@ -303,7 +305,8 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                 Shading counts;  // on the thread's stack
                 const std::size_t first = rangeBegin(independent, part, parts);
                 const std::size_t last = rangeBegin(independent, part + 1, parts);
-                if (!Probe::enabled && kernelVertices[d]) {
+                const Draw& draw = scene.draws[d];
+                if (!Probe::enabled && kernelVertices[d] && draw.shading == ShadingModel::Gouraud) {
                     // Eight vertices at a time (1M sphere, Gouraud: ~250,000 of them).
                     std::vector<std::uint32_t> needed;
                     for (std::size_t i = first; i < last; ++i)
@@ -313,10 +316,37 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                         }
                     const DrawVertices& dv = vertices[d];
                     CoursePhongCounts c;
-                    shadeCoursePhongVertices(kernelRun(scene.draws[d]), dv.pView.data(),
-                                             dv.nView.data(), needed.data(),
-                                             static_cast<int>(needed.size()),
-                                             table.vertexColour.data(), c);
+                    shadeCoursePhongVertices(kernelRun(draw), dv.pView.data(), dv.nView.data(),
+                                             needed.data(), static_cast<int>(needed.size()),
+                                             table.vertexColour.data(), nullptr, c);
+                    counts.phongEvaluations += needed.size();
+                    addKernelCounts(counts, c);
+                } else if (!Probe::enabled && kernelVertices[d]) {
+                    // Flat: eight triangles at a time, each lit at its barycentre with its
+                    // normal as flatSample lights it.
+                    const DrawVertices& dv = vertices[d];
+                    const std::vector<vec3>& triangleNormals = normals.draws[d].triangle;
+                    std::vector<std::uint32_t> needed, order;
+                    std::vector<vec3> points, pointNormals;
+                    const float third = 1.0f / 3.0f;
+                    for (std::size_t i = first; i < last; ++i) {
+                        if (table.done[i] != kNeeded) continue;
+                        order.push_back(static_cast<std::uint32_t>(needed.size()));
+                        needed.push_back(static_cast<std::uint32_t>(i));
+                        points.push_back(
+                            interpolate(dv.pView, draw.mesh->triangles[i], third, third));
+                        pointNormals.push_back(triangleNormals[i]);
+                        table.done[i] = kDone;
+                    }
+                    std::vector<vec3> colours(needed.size()), used(needed.size());
+                    CoursePhongCounts c;
+                    shadeCoursePhongVertices(kernelRun(draw), points.data(), pointNormals.data(),
+                                             order.data(), static_cast<int>(order.size()),
+                                             colours.data(), used.data(), c);
+                    for (std::size_t k = 0; k < needed.size(); ++k) {
+                        table.flatColour[needed[k]] = colours[k];
+                        table.flatNormal[needed[k]] = used[k];
+                    }
                     counts.phongEvaluations += needed.size();
                     addKernelCounts(counts, c);
                 } else {
