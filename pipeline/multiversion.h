@@ -15,5 +15,5 @@
 #if defined(RL_THREAD_SANITIZER) || !defined(__x86_64__)
 #define RL_MULTIVERSION
 #else
-#define RL_MULTIVERSION __attribute__((target_clones("default", "arch=x86-64-v3")))
+#define RL_MULTIVERSION __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
 #endif
