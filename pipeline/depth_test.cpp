@@ -35,8 +35,7 @@ struct Counts {
 // those of the general loop (testSpanOf), lane by lane, so the bits are the same. Built for
 // the baseline x86-64 and for x86-64-v3 (AVX2), the better one chosen when the program
 // starts. Returns the number of fragments that passed.
-typedef double Doubles4 __attribute__((vector_size(32)));
-typedef float Floats4 __attribute__((vector_size(16)));
+typedef double Doubles8 __attribute__((vector_size(64)));
 typedef float Floats8 __attribute__((vector_size(32)));
 typedef std::int32_t Ints8 __attribute__((vector_size(32)));
 typedef std::int32_t Ints4 __attribute__((vector_size(16)));
@@ -59,17 +58,13 @@ RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, floa
     const Ints8 tie = winsOnTie ? Ints8{} - 1 : Ints8{};
     const Ints8 always = painted ? Ints8{} - 1 : Ints8{};  // the painter's: no depth test
     const auto ids = static_cast<std::int32_t>(id);
-    const Doubles4 step = {0.0, 1.0, 2.0, 3.0};
+    const Doubles8 step = {0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0};
     Ints8 passes = {};  // minus the number of passes, per lane
     for (; i + 8 <= n; i += 8) {
-        const Doubles4 low = double(i) + step;
-        const Doubles4 high = double(i + 4) + step;
-        const Floats8 beta = __builtin_shufflevector(
-            __builtin_convertvector(beta0 + low * betaDx, Floats4),
-            __builtin_convertvector(beta0 + high * betaDx, Floats4), 0, 1, 2, 3, 4, 5, 6, 7);
-        const Floats8 gamma = __builtin_shufflevector(
-            __builtin_convertvector(gamma0 + low * gammaDx, Floats4),
-            __builtin_convertvector(gamma0 + high * gammaDx, Floats4), 0, 1, 2, 3, 4, 5, 6, 7);
+        // One vector of eight doubles: two AVX operations, or one AVX-512 operation.
+        const Doubles8 index = double(i) + step;
+        const Floats8 beta = __builtin_convertvector(beta0 + index * betaDx, Floats8);
+        const Floats8 gamma = __builtin_convertvector(gamma0 + index * gammaDx, Floats8);
         Floats8 z = (z0 + beta * dz1) + gamma * dz2;
         if (reciprocal) z = 1.0f / z;
         Floats8 stored;
