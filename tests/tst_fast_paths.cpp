@@ -7,6 +7,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <thread>
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
@@ -230,6 +231,51 @@ private slots:
         auto again = renderFrame(large, options, &context);
         QVERIFY(again.ok());
         QCOMPARE(again->shading->colour, expected);
+    }
+
+    void concurrentRendersEqualOneAtATime() {
+        // The GUI renders on a worker while the accuracy panel or an export renders on
+        // another: three callers at once share the kept threads (parallel.cpp) or, finding
+        // them busy, start their own. Every frame must equal the same frame rendered alone.
+        std::vector<std::shared_ptr<const Scene>> scenes;
+        for (auto [name, model] : {std::pair{"full-screen", ShadingModel::Gouraud},
+                                   std::pair{"sphere-1k", ShadingModel::Phong},
+                                   std::pair{"torus-1k", ShadingModel::Flat}}) {
+            auto scene = makeBenchmarkScene(name, 320, 240, model);
+            QVERIFY(scene);
+            scenes.push_back(std::make_shared<const Scene>(std::move(*scene)));
+        }
+        RenderOptions options;
+        options.threads = 3;
+        std::vector<FrameTrace> alone;
+        for (const auto& scene : scenes) {
+            auto frame = renderFrame(scene, options);
+            QVERIFY(frame.ok());
+            alone.push_back(std::move(frame).value());
+        }
+        constexpr int kFrames = 12;
+        std::vector<std::vector<QString>> differences(scenes.size());
+        std::vector<std::thread> callers;
+        for (std::size_t s = 0; s < scenes.size(); ++s) {
+            callers.emplace_back([&, s] {
+                RenderContext context;
+                for (int i = 0; i < kFrames; ++i) {
+                    auto frame = renderFrame(scenes[s], options, &context);
+                    differences[s].push_back(frame.ok() ? difference(alone[s], *frame)
+                                                        : QStringLiteral("failed"));
+                }
+            });
+        }
+        for (auto& caller : callers) caller.join();
+        for (std::size_t s = 0; s < scenes.size(); ++s) {
+            QCOMPARE(differences[s].size(), std::size_t(kFrames));
+            for (int i = 0; i < kFrames; ++i)
+                QVERIFY2(differences[s][static_cast<std::size_t>(i)].isEmpty(),
+                         qPrintable(QStringLiteral("scene %1, frame %2: %3")
+                                        .arg(s)
+                                        .arg(i)
+                                        .arg(differences[s][static_cast<std::size_t>(i)])));
+        }
     }
 
     void reusedBuffersEqualFreshOnes() {
