@@ -237,17 +237,18 @@ RL_MULTIVERSION void shadeCoursePhongRun(const CoursePhongRun& run, const vec2* 
     sums.addTo(counts);
 }
 
-RL_MULTIVERSION void shadeCoursePhongVertices(const CoursePhongRun& run, const vec3* p,
-                                              const vec3* n, const std::uint32_t* vertices,
-                                              int count, vec3* colour, vec3* normal,
-                                              CoursePhongCounts& counts) {
+RL_MULTIVERSION void shadeCoursePhongPoints(const CoursePhongRun& run, const vec3* p,
+                                            const vec3* n, const std::uint32_t* at,
+                                            std::size_t count, vec3* colour, vec3* normal,
+                                            CoursePhongCounts& counts) {
     const Ints laneIndex = {0, 1, 2, 3, 4, 5, 6, 7};
+    const auto point = [at](std::size_t i) { return at ? at[i] : i; };
     LaneCounts sums;
-    for (int start = 0; start < count; start += kLanes) {
-        const int used = count - start < kLanes ? count - start : kLanes;
+    for (std::size_t start = 0; start < count; start += kLanes) {
+        const int used = count - start < kLanes ? static_cast<int>(count - start) : kLanes;
         Floats px, py, pz, nx, ny, nz;
-        for (int i = 0; i < kLanes; ++i) {  // lanes past the list repeat its first vertex
-            const std::uint32_t v = vertices[start + (i < used ? i : 0)];
+        for (int i = 0; i < kLanes; ++i) {  // lanes past the list repeat its first point
+            const std::size_t v = point(start + static_cast<std::size_t>(i < used ? i : 0));
             px[i] = p[v].x;
             py[i] = p[v].y;
             pz[i] = p[v].z;
@@ -258,7 +259,7 @@ RL_MULTIVERSION void shadeCoursePhongVertices(const CoursePhongRun& run, const v
         const LitLanes l = lightLanes(run, px, py, pz, nx, ny, nz);
         sums.add(l, laneIndex < used);
         for (int i = 0; i < used; ++i) {
-            const std::uint32_t v = vertices[start + i];
+            const std::size_t v = point(start + static_cast<std::size_t>(i));
             colour[v] = vec3(l.r[i], l.g[i], l.b[i]);
             if (normal) normal[v] = l.hasN[i] ? vec3(l.nx[i], l.ny[i], l.nz[i]) : vec3(0.0f);
         }

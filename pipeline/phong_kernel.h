@@ -36,13 +36,13 @@ struct CoursePhongCounts {
 void shadeCoursePhongRun(const CoursePhongRun& run, const vec2* bary, int count, vec3* colour,
                          vec3* normal, float clampScale, CoursePhongCounts& counts);
 
-// The same model at a list of points (Gouraud's vertices, flat's barycentres): point
-// v = vertices[i] is lit at P = p[v] with the normal n[v] (not normalised) as phong() lights
-// it, its colour written to colour[v] and, when normal is not null, the normal used to
-// normal[v]; counts.clamped is not counted.
-void shadeCoursePhongVertices(const CoursePhongRun& run, const vec3* p, const vec3* n,
-                              const std::uint32_t* vertices, int count, vec3* colour, vec3* normal,
-                              CoursePhongCounts& counts);
+// The same model at `count` points (Gouraud's vertices, flat's barycentres): point
+// v = at[i] (v = i when at is null) is lit at P = p[v] with the normal n[v] (not normalised)
+// as phong() lights it, its colour written to colour[v] and, when normal is not null, the
+// normal used to normal[v]; counts.clamped is not counted.
+void shadeCoursePhongPoints(const CoursePhongRun& run, const vec3* p, const vec3* n,
+                            const std::uint32_t* at, std::size_t count, vec3* colour,
+                            vec3* normal, CoursePhongCounts& counts);
 
 // Gouraud's colours for a run of pixels, (c0 + beta d1) + gamma d2 with the barycentrics
 // bary[i] = (beta, gamma), into colour[i] (the same bits as interpolate()); returns how many

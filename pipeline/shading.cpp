@@ -178,8 +178,11 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
     // light, R.V highlights and no emission. Its pixels go through the kernel when it is
     // Phong shaded with interpolated normals, screen-affine; its vertices when Gouraud, its
     // triangles' barycentres when flat.
+    // kernelRuns[d] holds the draw's constants for the kernels (its material under the one
+    // light), worked out once per frame.
     std::vector<std::uint8_t> kernelDraw(scene.draws.size(), 0);
-    std::vector<std::uint8_t> kernelVertices(scene.draws.size(), 0);
+    std::vector<std::uint8_t> kernelPoints(scene.draws.size(), 0);
+    std::vector<CoursePhongRun> kernelRuns(scene.draws.size());
     for (std::size_t d = 0; d < scene.draws.size(); ++d) {
         const Draw& draw = scene.draws[d];
         const bool kernelLighting =
@@ -187,16 +190,12 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
             !normals.skipped && std::min(draw.lightCount, view.lights.size()) == 1 &&
             view.lights[0].plain() && draw.specular == SpecularModel::Phong &&
             draw.material.emission == vec3(0.0f);
-        kernelDraw[d] = kernelLighting && draw.shading == ShadingModel::Phong &&
-                        !draw.flatNormals && !perspective;
-        kernelVertices[d] = kernelLighting && (draw.shading == ShadingModel::Gouraud ||
-                                               litPerTriangle(draw.shading));
-    }
-    // A kernel's constants for a draw: its material under the one light.
-    auto kernelRun = [&](const Draw& draw) {
+        if (!kernelLighting) continue;
+        kernelDraw[d] = draw.shading == ShadingModel::Phong && !draw.flatNormals && !perspective;
+        kernelPoints[d] = draw.shading == ShadingModel::Gouraud || litPerTriangle(draw.shading);
         const Material& m = draw.material;
         const ViewLight& l = view.lights[0];
-        CoursePhongRun run;
+        CoursePhongRun& run = kernelRuns[d];
         run.ambient = scene.ambientIntensity * m.ka;
         run.diffuse = l.intensity * m.od * m.kd;
         run.specular = l.intensity * m.ks;
@@ -205,9 +204,11 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
         run.shininess = m.shininess;
         run.flip = flip;
         run.withSpecular = m.ks != 0.0f;
-        return run;
-    };
-    auto addKernelCounts = [](Shading& counts, const CoursePhongCounts& c) {
+    }
+    // What a kernel counted, for `evaluations` points.
+    auto addKernelCounts = [](Shading& counts, const CoursePhongCounts& c,
+                              std::size_t evaluations) {
+        counts.phongEvaluations += evaluations;
         counts.flipped += c.flipped;
         counts.lightBehind += c.lightBehind;
         counts.noSpecular += c.noSpecular;
@@ -306,7 +307,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                 const std::size_t first = rangeBegin(independent, part, parts);
                 const std::size_t last = rangeBegin(independent, part + 1, parts);
                 const Draw& draw = scene.draws[d];
-                if (!Probe::enabled && kernelVertices[d] && draw.shading == ShadingModel::Gouraud) {
+                if (!Probe::enabled && kernelPoints[d] && draw.shading == ShadingModel::Gouraud) {
                     // Eight vertices at a time (1M sphere, Gouraud: ~250,000 of them).
                     std::vector<std::uint32_t> needed;
                     for (std::size_t i = first; i < last; ++i)
@@ -316,22 +317,20 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                         }
                     const DrawVertices& dv = vertices[d];
                     CoursePhongCounts c;
-                    shadeCoursePhongVertices(kernelRun(draw), dv.pView.data(), dv.nView.data(),
-                                             needed.data(), static_cast<int>(needed.size()),
-                                             table.vertexColour.data(), nullptr, c);
-                    counts.phongEvaluations += needed.size();
-                    addKernelCounts(counts, c);
-                } else if (!Probe::enabled && kernelVertices[d]) {
+                    shadeCoursePhongPoints(kernelRuns[d], dv.pView.data(), dv.nView.data(),
+                                           needed.data(), needed.size(),
+                                           table.vertexColour.data(), nullptr, c);
+                    addKernelCounts(counts, c, needed.size());
+                } else if (!Probe::enabled && kernelPoints[d]) {
                     // Flat: eight triangles at a time, each lit at its barycentre with its
                     // normal as flatSample lights it.
                     const DrawVertices& dv = vertices[d];
                     const std::vector<vec3>& triangleNormals = normals.draws[d].triangle;
-                    std::vector<std::uint32_t> needed, order;
+                    std::vector<std::uint32_t> needed;
                     std::vector<vec3> points, pointNormals;
                     const float third = 1.0f / 3.0f;
                     for (std::size_t i = first; i < last; ++i) {
                         if (table.done[i] != kNeeded) continue;
-                        order.push_back(static_cast<std::uint32_t>(needed.size()));
                         needed.push_back(static_cast<std::uint32_t>(i));
                         points.push_back(
                             interpolate(dv.pView, draw.mesh->triangles[i], third, third));
@@ -340,15 +339,14 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                     }
                     std::vector<vec3> colours(needed.size()), used(needed.size());
                     CoursePhongCounts c;
-                    shadeCoursePhongVertices(kernelRun(draw), points.data(), pointNormals.data(),
-                                             order.data(), static_cast<int>(order.size()),
-                                             colours.data(), used.data(), c);
+                    shadeCoursePhongPoints(kernelRuns[d], points.data(), pointNormals.data(),
+                                           nullptr, needed.size(), colours.data(), used.data(),
+                                           c);
                     for (std::size_t k = 0; k < needed.size(); ++k) {
                         table.flatColour[needed[k]] = colours[k];
                         table.flatNormal[needed[k]] = used[k];
                     }
-                    counts.phongEvaluations += needed.size();
-                    addKernelCounts(counts, c);
+                    addKernelCounts(counts, c, needed.size());
                 } else {
                     for (std::size_t i = first; i < last; ++i)
                         if (table.done[i] == kNeeded) evaluate(d, i, counts);
@@ -442,7 +440,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                         // Many pixels at once, the same bits as phong() (phong_kernel.h).
                         const vec3& a = dv.pView[tri.v[0]];
                         const vec3& na = dv.nView[tri.v[0]];
-                        CoursePhongRun run = kernelRun(draw);
+                        CoursePhongRun run = kernelRuns[tri.draw];
                         run.p0 = a;
                         run.dp1 = dv.pView[tri.v[1]] - a;
                         run.dp2 = dv.pView[tri.v[2]] - a;
@@ -454,8 +452,7 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                                             normalRow ? normalRow + x : nullptr, scale, c);
                         const std::size_t shaded = static_cast<std::size_t>(end - x);
                         counts.shadedPixels += shaded;
-                        counts.phongEvaluations += shaded;
-                        addKernelCounts(counts, c);
+                        addKernelCounts(counts, c, shaded);
                         counts.clampedPixels += c.clamped;
                         x = end;
                         continue;
