@@ -33,8 +33,7 @@ struct Counts {
 // baryRow is given), one that fails whole is not
 // written, and a mixed one is blended lane by lane and stored back whole. The operations are
 // those of the general loop (testSpanOf), lane by lane, so the bits are the same. Built for
-// the baseline x86-64 and for x86-64-v3 (AVX2), the better one chosen when the program
-// starts. Returns the number of fragments that passed.
+// each of RL_MULTIVERSION's machines, the best one chosen when the program starts. Returns the number of fragments that passed.
 typedef double Doubles8 __attribute__((vector_size(64)));
 typedef float Floats8 __attribute__((vector_size(32)));
 typedef std::int32_t Ints8 __attribute__((vector_size(32)));

@@ -1,5 +1,5 @@
-// RL_MULTIVERSION: a hot kernel built twice, for the baseline x86-64 and for x86-64-v3
-// (AVX2), the better one picked when the program starts (GCC and Clang's target_clones, an
+// RL_MULTIVERSION: a hot kernel built three times, for the baseline x86-64, x86-64-v3 (AVX2)
+// and x86-64-v4 (AVX-512), the best one picked when the program starts (GCC and Clang's target_clones, an
 // ifunc). Under ThreadSanitizer the picking function would run, instrumented, before the
 // sanitizer is set up, and crash: there the kernel is built once, for the baseline.
 #pragma once

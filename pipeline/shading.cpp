@@ -307,8 +307,10 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                 const std::size_t first = rangeBegin(independent, part, parts);
                 const std::size_t last = rangeBegin(independent, part + 1, parts);
                 const Draw& draw = scene.draws[d];
-                if (!Probe::enabled && kernelPoints[d] && draw.shading == ShadingModel::Gouraud) {
-                    // Eight vertices at a time (1M sphere, Gouraud: ~250,000 of them).
+                if (!Probe::enabled && kernelPoints[d]) {
+                    // Eight at a time: Gouraud's vertices (1M sphere: ~250,000 of them), or
+                    // flat's triangles, each lit at its barycentre with its normal as
+                    // flatSample lights it.
                     std::vector<std::uint32_t> needed;
                     for (std::size_t i = first; i < last; ++i)
                         if (table.done[i] == kNeeded) {
@@ -317,34 +319,29 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
                         }
                     const DrawVertices& dv = vertices[d];
                     CoursePhongCounts c;
-                    shadeCoursePhongPoints(kernelRuns[d], dv.pView.data(), dv.nView.data(),
-                                           needed.data(), needed.size(),
-                                           table.vertexColour.data(), nullptr, c);
-                    addKernelCounts(counts, c, needed.size());
-                } else if (!Probe::enabled && kernelPoints[d]) {
-                    // Flat: eight triangles at a time, each lit at its barycentre with its
-                    // normal as flatSample lights it.
-                    const DrawVertices& dv = vertices[d];
-                    const std::vector<vec3>& triangleNormals = normals.draws[d].triangle;
-                    std::vector<std::uint32_t> needed;
-                    std::vector<vec3> points, pointNormals;
-                    const float third = 1.0f / 3.0f;
-                    for (std::size_t i = first; i < last; ++i) {
-                        if (table.done[i] != kNeeded) continue;
-                        needed.push_back(static_cast<std::uint32_t>(i));
-                        points.push_back(
-                            interpolate(dv.pView, draw.mesh->triangles[i], third, third));
-                        pointNormals.push_back(triangleNormals[i]);
-                        table.done[i] = kDone;
-                    }
-                    std::vector<vec3> colours(needed.size()), used(needed.size());
-                    CoursePhongCounts c;
-                    shadeCoursePhongPoints(kernelRuns[d], points.data(), pointNormals.data(),
-                                           nullptr, needed.size(), colours.data(), used.data(),
-                                           c);
-                    for (std::size_t k = 0; k < needed.size(); ++k) {
-                        table.flatColour[needed[k]] = colours[k];
-                        table.flatNormal[needed[k]] = used[k];
+                    if (draw.shading == ShadingModel::Gouraud) {
+                        shadeCoursePhongPoints(kernelRuns[d], dv.pView.data(), dv.nView.data(),
+                                               needed.data(), needed.size(),
+                                               table.vertexColour.data(), nullptr, c);
+                    } else {
+                        const std::vector<vec3>& triangleNormals = normals.draws[d].triangle;
+                        std::vector<vec3> points, pointNormals;
+                        points.reserve(needed.size());
+                        pointNormals.reserve(needed.size());
+                        const float third = 1.0f / 3.0f;
+                        for (std::uint32_t i : needed) {
+                            points.push_back(
+                                interpolate(dv.pView, draw.mesh->triangles[i], third, third));
+                            pointNormals.push_back(triangleNormals[i]);
+                        }
+                        std::vector<vec3> colours(needed.size()), used(needed.size());
+                        shadeCoursePhongPoints(kernelRuns[d], points.data(), pointNormals.data(),
+                                               nullptr, needed.size(), colours.data(), used.data(),
+                                               c);
+                        for (std::size_t k = 0; k < needed.size(); ++k) {
+                            table.flatColour[needed[k]] = colours[k];
+                            table.flatNormal[needed[k]] = used[k];
+                        }
                     }
                     addKernelCounts(counts, c, needed.size());
                 } else {
