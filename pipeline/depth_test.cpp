@@ -33,7 +33,8 @@ struct Counts {
 // baryRow is given), one that fails whole is not
 // written, and a mixed one is blended lane by lane and stored back whole. The operations are
 // those of the general loop (testSpanOf), lane by lane, so the bits are the same. Built for
-// each of RL_MULTIVERSION's machines, the best one chosen when the program starts. Returns the number of fragments that passed.
+// each of RL_MULTIVERSION's machines, the best one chosen when the program starts. Returns the
+// number of fragments that passed.
 typedef double Doubles8 __attribute__((vector_size(64)));
 typedef float Floats8 __attribute__((vector_size(32)));
 typedef std::int32_t Ints8 __attribute__((vector_size(32)));
@@ -371,6 +372,30 @@ Counts testChunks(const Scene& scene, const Projection& projection, const SpansB
 }
 
 }  // namespace
+
+// Sixteen ids at a time (one AVX-512 compare, two AVX2 or four SSE ones), then one at a time
+// within the first sixteen that differ.
+RL_MULTIVERSION int runEnd(const std::uint32_t* ids, int from, int limit, std::uint32_t t) {
+    typedef std::uint32_t Ids __attribute__((vector_size(64)));
+    typedef std::uint64_t Words __attribute__((vector_size(64)));
+    typedef std::uint64_t Words4 __attribute__((vector_size(32)));
+    typedef std::uint64_t Words2 __attribute__((vector_size(16)));
+    const Ids same = Ids{} + t;
+    int end = from;
+    while (end + 16 <= limit) {
+        Ids v;
+        std::memcpy(&v, ids + end, sizeof v);
+        const Words differ = reinterpret_cast<Words>(v ^ same);
+        const Words4 half = __builtin_shufflevector(differ, differ, 0, 1, 2, 3) |
+                            __builtin_shufflevector(differ, differ, 4, 5, 6, 7);
+        const Words2 quarter =
+            __builtin_shufflevector(half, half, 0, 1) | __builtin_shufflevector(half, half, 2, 3);
+        if (quarter[0] | quarter[1]) break;
+        end += 16;
+    }
+    while (end < limit && ids[end] == t) ++end;
+    return end;
+}
 
 bool perspectiveDepth(const Scene& scene) {
     return scene.rules.interpolation == RasterRules::Interpolation::PerspectiveCorrect &&

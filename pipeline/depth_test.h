@@ -58,21 +58,10 @@ struct DepthTest {
     std::size_t coveredPixels() const;
 };
 
-// The end of the run of pixels from `from` on whose triangle is t (at most `limit`): two ids
-// compared at once while they can be.
-inline int runEnd(const std::uint32_t* ids, int from, int limit, std::uint32_t t) {
-    const std::uint64_t pair = (std::uint64_t(t) << 32) | t;
-    int end = from;
-    while (end + 4 <= limit) {
-        std::uint64_t a, b;
-        std::memcpy(&a, ids + end, sizeof a);
-        std::memcpy(&b, ids + end + 2, sizeof b);
-        if ((a ^ pair) | (b ^ pair)) break;
-        end += 4;
-    }
-    while (end < limit && ids[end] == t) ++end;
-    return end;
-}
+// The end of the run of pixels from `from` on whose triangle is t (at most `limit`): sixteen
+// ids (a cache line) compared at once while they can be. Shading and the depth test's
+// visible triangles walk every row this way (multiversioned, like the kernels).
+int runEnd(const std::uint32_t* ids, int from, int limit, std::uint32_t t);
 
 class DepthTestStage {
 public:
