@@ -547,6 +547,9 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
 
     rl::RenderOptions options;
     options.shading.keepNormals = parser.isSet(normalsOutput);
+    // The image needs no z-buffer after the depth test; --depth-output does, and so does the
+    // painter's comparison with the z-buffer render below.
+    options.keepDepth = parser.isSet(depthOutput) || settings.shading == rl::ShadingModel::Painter;
     // With --explain-pixel the one render records that pixel's events; the recording probe
     // leaves every buffer as the plain render would.
     std::optional<rl::RecordingProbe> probe;
@@ -722,9 +725,13 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
         lit("threads"), lit("Threads to render with (default: every core)."), lit("N"));
     const QCommandLineOption format(lit("format"), lit("md (default) or json."), lit("FORMAT"),
                                     lit("md"));
+    const QCommandLineOption keepDepth(
+        lit("keep-depth"),
+        lit("Keep the whole z-buffer in memory, as the window does (by default only the band "
+            "of rows a thread is testing is kept, as render does without --depth-output)."));
     parser.addOption(help);
     sceneOptions.addTo(parser);
-    parser.addOptions({sceneName, frames, warmup, threads, format});
+    parser.addOptions({sceneName, frames, warmup, threads, format, keepDepth});
     if (!parser.parse(arguments)) return usageError(err, parser.errorText());
     if (parser.isSet(help)) {
         out << commandHelp(parser, lit("bench"));
@@ -766,7 +773,8 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
 
     rl::RenderOptions options;
     options.threads = threadCount;  // 0: every core
-    rl::RenderContext context;      // buffers reused from frame to frame
+    options.keepDepth = parser.isSet(keepDepth);
+    rl::RenderContext context;  // buffers reused from frame to frame
     std::vector<double> total;
     std::vector<std::array<double, rl::kStageCount>> stages;
     std::size_t covered = 0, fragments = 0;
@@ -810,10 +818,11 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
         out << "{\"scene\": \"" << sceneLabel << "\", \"shading\": \"" << shadingName
             << "\", \"width\": " << scene->width << ", \"height\": " << scene->height
             << ", \"triangles\": " << scene->triangleCount() << ", \"threads\": " << usedThreads
-            << ", \"frames\": " << frameCount << ", \"median_ms\": " << number(medianMs, 3)
-            << ", \"min_ms\": " << number(minMs, 3) << ", \"max_ms\": " << number(maxMs, 3)
-            << ", \"covered_pixels\": " << covered << ", \"fragments\": " << fragments
-            << ", \"mpixels_per_s\": " << number(mpixels, 2)
+            << ", \"frames\": " << frameCount
+            << ", \"z_buffer_kept\": " << (options.keepDepth ? "true" : "false")
+            << ", \"median_ms\": " << number(medianMs, 3) << ", \"min_ms\": " << number(minMs, 3)
+            << ", \"max_ms\": " << number(maxMs, 3) << ", \"covered_pixels\": " << covered
+            << ", \"fragments\": " << fragments << ", \"mpixels_per_s\": " << number(mpixels, 2)
             << ", \"triangles_per_s\": " << number(triangles, 0)
             << ", \"peak_rss_mib\": " << number(peakRss, 1)
             << ", \"rss_first_frame_mib\": " << number(firstRss, 1)
@@ -832,7 +841,10 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
             << " | " << number(mpixels, 1) << " | " << number(triangles, 0) << " |\n\n"
             << "Memory: peak " << number(peakRss, 1) << " MiB resident; " << number(firstRss, 1)
             << " MiB after the first timed frame, " << number(lastRss, 1)
-            << " MiB after the last.\n\n"
+            << " MiB after the last. Z-buffer: "
+            << (options.keepDepth ? "kept whole (--keep-depth)"
+                                  : "a band of rows per thread, in the cache")
+            << ".\n\n"
             << "| stage | median ms |\n|---|---|\n";
         for (std::size_t k = 0; k < stageMedian.size(); ++k)
             out << "| " << rl::stageName(rl::kAllStages[k]) << " | " << number(stageMedian[k], 3)

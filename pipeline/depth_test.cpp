@@ -183,16 +183,16 @@ struct TrianglePlane {
 };
 
 // The depth test of one span of triangle t.
+// depthRow: the depths of the span's row (the z-buffer's row, or the band's in testChunks).
 template <typename Probe>
 void testSpanOf(const Scene& scene, const TrianglePlane& setup, std::uint32_t id, const Span& span,
-                DepthTest& out, Counts& counts, Probe& probe) {
+                float* depthRow, DepthTest& out, Counts& counts, Probe& probe) {
     const double offset = scene.rules.sampleOffset;
     const bool winsOnTie = scene.conventions.depthWinsOnTie;
     const bool rangeClip = scene.conventions.depthRangeClip;
     const bool reciprocal = perspectiveDepth(scene);
     double beta0 = 0.0, gamma0 = 0.0;
     setup.spanStart(span.xBegin, span.y, offset, beta0, gamma0);
-    float* depthRow = out.depth.row(span.y);
     std::uint32_t* idRow = out.triangle.row(span.y);
     vec2* baryRow = out.barycentric.row(span.y);
     const std::int32_t n = span.xEnd - span.xBegin;
@@ -240,8 +240,8 @@ Counts testAll(const Scene& scene, const Projection& projection, const ScanConve
         if (first == last) continue;
         const TrianglePlane setup(projection, t, perspectiveDepth(scene));
         for (std::uint32_t k = first; k < last; ++k)
-            testSpanOf(scene, setup, static_cast<std::uint32_t>(t), scan.spans[k], out, counts,
-                       probe);
+            testSpanOf(scene, setup, static_cast<std::uint32_t>(t), scan.spans[k],
+                       out.depth.row(scan.spans[k].y), out, counts, probe);
     }
     return counts;
 }
@@ -305,7 +305,9 @@ SpansByChunk sortByChunk(const ScanConversion& scan, int chunks, int threads) {
 // The rows one thread owns, chunk by chunk (parallel.h): the chunk's buffers are cleared,
 // then its spans tested in triangle order, so that each chunk's pixels stay in the cache
 // while its triangles are drawn. Every pixel sees the same fragments in the same order as
-// in testAll, so the buffers are the same bits.
+// in testAll, so the buffers are the same bits. When the z-buffer is not kept
+// (DepthTest::depthKept), the chunk's depths are a band of kRowChunk rows of the thread's
+// own, cleared where the chunk's spans fall: it never leaves the cache.
 Counts testChunks(const Scene& scene, const Projection& projection, const SpansByChunk& sorted,
                   DepthTest& out, int part, int parts, const std::vector<ColumnRange>& previous) {
     Counts counts;
@@ -314,16 +316,32 @@ Counts testChunks(const Scene& scene, const Projection& projection, const SpansB
     const std::vector<Entry>& entries = sorted.entries;
     const std::vector<std::uint32_t>& start = sorted.first;
     const float clear = scene.conventions.depthClear;
+    std::vector<float> band;
+    if (!out.depthKept) band.resize(static_cast<std::size_t>(kRowChunk) * scene.width);
+    const auto depthRow = [&](int y, int y0) {
+        return out.depthKept ? out.depth.row(y)
+                             : band.data() + static_cast<std::size_t>(y - y0) * scene.width;
+    };
     for (int c = part; c < chunks; c += parts) {
         const int y0 = c * kRowChunk;
         const int y1 = std::min(scene.height, y0 + kRowChunk);
-        // Clear what the previous frame wrote (everything when that is not known).
+        ColumnRange touched{scene.width, 0};
+        for (std::uint32_t e = start[c]; e < start[c + 1]; ++e) {
+            const Span& span = entries[e].span;
+            touched.begin = std::min(touched.begin, span.xBegin);
+            touched.end = std::max(touched.end, span.xEnd);
+        }
+        // Clear what the previous frame wrote (everything when that is not known); the
+        // band, where this chunk's spans fall.
         const ColumnRange dirty =
             previous.empty() ? ColumnRange{0, scene.width} : previous[static_cast<std::size_t>(c)];
+        const ColumnRange depthDirty = out.depthKept ? dirty : touched;
+        for (int y = y0; y < y1 && depthDirty.begin < depthDirty.end; ++y)
+            fillFloats(depthRow(y, y0) + depthDirty.begin,
+                       static_cast<std::size_t>(depthDirty.end - depthDirty.begin), clear);
         if (dirty.begin < dirty.end) {
             const auto n = static_cast<std::size_t>(dirty.end - dirty.begin);
             for (int y = y0; y < y1; ++y) {
-                fillFloats(out.depth.row(y) + dirty.begin, n, clear);
                 static_assert(kNoTriangle == ~std::uint32_t{0}, "cleared byte by byte");
                 std::memset(out.triangle.row(y) + dirty.begin, 0xff, n * sizeof(std::uint32_t));
                 // Barycentrics are read only where a triangle won, so any value does; but
@@ -335,12 +353,6 @@ Counts testChunks(const Scene& scene, const Projection& projection, const SpansB
                                 n * sizeof(vec2));
             }
         }
-        ColumnRange touched{scene.width, 0};
-        for (std::uint32_t e = start[c]; e < start[c + 1]; ++e) {
-            const Span& span = entries[e].span;
-            touched.begin = std::min(touched.begin, span.xBegin);
-            touched.end = std::max(touched.end, span.xEnd);
-        }
         out.touched[static_cast<std::size_t>(c)] =
             touched.begin < touched.end ? touched : ColumnRange{};
         std::uint32_t current = kNoTriangle;
@@ -351,7 +363,8 @@ Counts testChunks(const Scene& scene, const Projection& projection, const SpansB
                 current = entry.triangle;
                 setup.emplace(projection, current, perspectiveDepth(scene));
             }
-            testSpanOf(scene, *setup, current, entry.span, out, counts, probe);
+            testSpanOf(scene, *setup, current, entry.span, depthRow(entry.span.y, y0), out, counts,
+                       probe);
         }
         if (!out.visible.empty() && touched.begin < touched.end) {
             // The triangles that kept a pixel of this chunk, a run of one id at a time. Two
@@ -414,17 +427,21 @@ FragmentDepth fragmentDepth(const Scene& scene, const Projection& projection, st
 template <typename Probe>
 DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
                               const ScanConversion& scan, Probe& probe, int threads,
-                              DepthTest* recycled) const {
+                              DepthTest* recycled, bool keepDepth) const {
     DepthTest out;
     const float clear = scene.conventions.depthClear;
     const int chunks = (scene.height + kRowChunk - 1) / kRowChunk;
+    // A recording probe's frame keeps every buffer (its views read them).
+    out.depthKept = Probe::enabled || keepDepth;
     std::vector<ColumnRange> previous;  // what the recycled buffers hold besides the clear value
     if (recycled) {
-        if (recycled->depth.width() == scene.width && recycled->depth.height() == scene.height &&
-            recycled->clearedTo == clear &&
+        // A z-buffer that was not kept holds nothing known: then everything is cleared.
+        if (recycled->triangle.width() == scene.width &&
+            recycled->triangle.height() == scene.height && recycled->clearedTo == clear &&
+            (recycled->depthKept || !out.depthKept) &&
             recycled->touched.size() == static_cast<std::size_t>(chunks))
             previous = std::move(recycled->touched);
-        out.depth = std::move(recycled->depth);
+        if (out.depthKept) out.depth = std::move(recycled->depth);
         out.triangle = std::move(recycled->triangle);
         out.barycentric = std::move(recycled->barycentric);
         out.visible = std::move(recycled->visible);
@@ -445,7 +462,7 @@ DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
         counts.push_back(testAll(scene, projection, scan, out, probe));
     } else {
         // Each thread clears its own rows (testChunks).
-        out.depth.resize(scene.width, scene.height);
+        if (out.depthKept) out.depth.resize(scene.width, scene.height);
         out.triangle.resize(scene.width, scene.height);
         out.barycentric.resize(scene.width, scene.height);
         out.touched.assign(static_cast<std::size_t>(chunks), ColumnRange{});
@@ -474,19 +491,20 @@ DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
 }
 
 DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
-                              const ScanConversion& scan, int threads, DepthTest* recycled) const {
+                              const ScanConversion& scan, int threads, DepthTest* recycled,
+                              bool keepDepth) const {
     NullProbe probe;
-    return run(scene, projection, scan, probe, threads, recycled);
+    return run(scene, projection, scan, probe, threads, recycled, keepDepth);
 }
 
 template DepthTest DepthTestStage::run<NullProbe>(const Scene&, const Projection&,
                                                   const ScanConversion&, NullProbe&, int,
-                                                  DepthTest*) const;
+                                                  DepthTest*, bool) const;
 template DepthTest DepthTestStage::run<RecordingProbe>(const Scene&, const Projection&,
                                                        const ScanConversion&, RecordingProbe&, int,
-                                                       DepthTest*) const;
+                                                       DepthTest*, bool) const;
 template DepthTest DepthTestStage::run<ReplayProbe>(const Scene&, const Projection&,
                                                     const ScanConversion&, ReplayProbe&, int,
-                                                    DepthTest*) const;
+                                                    DepthTest*, bool) const;
 
 }  // namespace rl

@@ -29,7 +29,11 @@ namespace rl {
 inline constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
 
 struct DepthTest {
-    Image<float> depth;             // the clear value where nothing was drawn
+    // The clear value where nothing was drawn. Only when depthKept: a caller that needs the
+    // image alone (the command line's render and bench) lets each thread keep the depths
+    // of the band of rows it is testing, in the cache, and this stays empty.
+    Image<float> depth;
+    bool depthKept = true;
     Image<std::uint32_t> triangle;  // index into Projection::triangles, or kNoTriangle
     // (beta, gamma) of the winning fragment, alpha = 1 - beta - gamma; meaningful only where
     // triangle holds one (elsewhere, what an earlier frame in these buffers left), and only
@@ -67,11 +71,13 @@ class DepthTestStage {
 public:
     // threads: the rows are shared out between them (parallel.h); the result does not depend
     // on their number. recycled: an earlier frame's buffers, whose memory is reused.
+    // keepDepth: false leaves DepthTest::depth empty (a recording probe keeps it anyway).
     template <typename Probe>
     DepthTest run(const Scene& scene, const Projection& projection, const ScanConversion& scan,
-                  Probe& probe, int threads = 1, DepthTest* recycled = nullptr) const;
+                  Probe& probe, int threads = 1, DepthTest* recycled = nullptr,
+                  bool keepDepth = true) const;
     DepthTest run(const Scene& scene, const Projection& projection, const ScanConversion& scan,
-                  int threads = 1, DepthTest* recycled = nullptr) const;
+                  int threads = 1, DepthTest* recycled = nullptr, bool keepDepth = true) const;
 };
 
 // Whether the depth test interpolates 1/z rather than z: view z under perspective-correct

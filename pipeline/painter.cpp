@@ -66,12 +66,15 @@ bool everyDraw(const Scene& scene, ShadingModel model) {
                        [model](const Draw& draw) { return draw.shading == model; });
 }
 
-// `frame` when there is one, else a render of `scene`.
+// `frame` when there is one that kept its z-buffer (the comparison reads it), else a render
+// of `scene` that keeps it.
 Result<std::shared_ptr<const FrameTrace>> reuseOrRender(std::shared_ptr<const FrameTrace> frame,
                                                         std::shared_ptr<const Scene> scene,
                                                         const RenderOptions& options) {
-    if (frame) return frame;
-    Result<FrameTrace> rendered = renderFrame(std::move(scene), options);
+    if (frame && frame->depth->depthKept) return frame;
+    RenderOptions withDepth = options;
+    withDepth.keepDepth = true;
+    Result<FrameTrace> rendered = renderFrame(std::move(scene), withDepth);
     if (!rendered) return rendered.error();
     return std::make_shared<const FrameTrace>(std::move(rendered).value());
 }

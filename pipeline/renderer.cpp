@@ -75,8 +75,8 @@ Result<FrameTrace> run(std::shared_ptr<const Scene> scenePtr, const RenderOption
     });
     timed(StageId::DepthTest, [&] {
         DepthTest* recycled = context ? recyclable(context->depth) : nullptr;
-        auto depth = std::make_shared<DepthTest>(
-            DepthTestStage().run(scene, *trace.projection, *trace.scan, probe, threads, recycled));
+        auto depth = std::make_shared<DepthTest>(DepthTestStage().run(
+            scene, *trace.projection, *trace.scan, probe, threads, recycled, options.keepDepth));
         if (context) context->depth = depth;
         trace.depth = std::move(depth);
     });

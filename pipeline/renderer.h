@@ -20,6 +20,10 @@ struct RenderOptions {
     // Threads for the stages that share out their work (all but the first two and normals): 0
     // for one per core, at most kMaxThreads. The image does not depend on it.
     int threads = 0;
+    // Whether the frame keeps its z-buffer (DepthTest::depth): the window's views and a
+    // z-buffer image read it; an image alone does not, and then each thread keeps only the
+    // depths of the band of rows it is testing, in the cache. The image is the same.
+    bool keepDepth = true;
 };
 
 // Buffers kept from one frame to the next, so that rendering the same size again costs no

@@ -1056,18 +1056,24 @@ void TestCli::bench_data() {
     QTest::addColumn<QStringList>("arguments");
     QTest::addColumn<int>("triangles");
     QTest::addColumn<int>("threads");
+    QTest::addColumn<bool>("zBufferKept");
     QTest::newRow("default scene, 2 threads")
-        << QStringList({"--size", "200x150", "--threads", "2"}) << 7776 << 2;
+        << QStringList({"--size", "200x150", "--threads", "2"}) << 7776 << 2 << false;
     QTest::newRow("sphere, gouraud, 1 thread")
         << QStringList({"--scene", "sphere-1k", "--size", "160x120", "--shading", "gouraud",
                         "--threads", "1"})
-        << 1000 << 1;
+        << 1000 << 1 << false;
+    QTest::newRow("sphere, z-buffer kept")
+        << QStringList(
+               {"--scene", "sphere-1k", "--size", "160x120", "--threads", "2", "--keep-depth"})
+        << 1000 << 2 << true;
 }
 
 void TestCli::bench() {
     QFETCH(QStringList, arguments);
     QFETCH(int, triangles);
     QFETCH(int, threads);
+    QFETCH(bool, zBufferKept);
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     CliRun run;
@@ -1081,6 +1087,7 @@ void TestCli::bench() {
     QCOMPARE(o.value(QStringLiteral("triangles")).toInt(), triangles);
     QCOMPARE(o.value(QStringLiteral("threads")).toInt(), threads);
     QCOMPARE(o.value(QStringLiteral("frames")).toInt(), 5);
+    QCOMPARE(o.value(QStringLiteral("z_buffer_kept")).toBool(!zBufferKept), zBufferKept);
     const QString size = arguments.at(arguments.indexOf(QStringLiteral("--size")) + 1);
     QCOMPARE(QStringLiteral("%1x%2")
                  .arg(o.value(QStringLiteral("width")).toInt())
@@ -1108,6 +1115,10 @@ void TestCli::bench() {
     QVERIFY(md.out.contains(QStringLiteral("| ") + size + QStringLiteral(" |")));
     QVERIFY(md.out.contains(QStringLiteral("| scan conversion | ")));
     QVERIFY(md.out.contains(QStringLiteral("Memory: peak ")));
+    QVERIFY(md.out.contains(zBufferKept
+                                ? QStringLiteral("Z-buffer: kept whole (--keep-depth).")
+                                : QStringLiteral("Z-buffer: a band of rows per thread, in the "
+                                                 "cache.")));
 }
 
 void TestCli::hugeFileFailsFast() {

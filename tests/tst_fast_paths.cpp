@@ -65,6 +65,7 @@ QString difference(const FrameTrace& a, const FrameTrace& b) {
     if (a.scan->spans != b.scan->spans) return QStringLiteral("spans");
     if (a.scan->spanStart != b.scan->spanStart) return QStringLiteral("span starts");
     if (a.scan->pixels != b.scan->pixels) return QStringLiteral("scanned pixels");
+    if (a.depth->depthKept != b.depth->depthKept) return QStringLiteral("z-buffer kept");
     if (a.depth->depth != b.depth->depth) return QStringLiteral("depth buffer");
     if (a.depth->triangle != b.depth->triangle) return QStringLiteral("triangle buffer");
     if (!testing::sameCoveredBarycentrics(*a.depth, *b.depth))
@@ -84,6 +85,18 @@ QString difference(const FrameTrace& a, const FrameTrace& b) {
     if (x.noNormal != y.noNormal) return QStringLiteral("no normal");
     if (x.clampedPixels != y.clampedPixels) return QStringLiteral("clamped pixels");
     return {};
+}
+
+// The same, for a frame b rendered without its z-buffer (RenderOptions::keepDepth): every
+// other buffer and count as a's.
+QString differenceWithoutZBuffer(const FrameTrace& a, const FrameTrace& b) {
+    if (b.depth->depthKept || !b.depth->depth.empty()) return QStringLiteral("z-buffer kept");
+    FrameTrace withoutZ = a;
+    auto depth = std::make_shared<DepthTest>(*a.depth);
+    depth->depth = Image<float>();
+    depth->depthKept = false;
+    withoutZ.depth = depth;
+    return difference(withoutZ, b);
 }
 
 // A tetrahedron with outward normals by the right-hand rule.
@@ -202,6 +215,23 @@ private slots:
             const QString diff = difference(*plain, *fast);
             QVERIFY2(diff.isEmpty(),
                      qPrintable(QStringLiteral("%1 thread(s): %2 differ").arg(threads).arg(diff)));
+        }
+        // Without the z-buffer (each thread's band of depths instead), through the same
+        // context and back: every other buffer the same.
+        for (int threads : {1, 2, 3}) {
+            options.threads = threads;
+            options.keepDepth = false;
+            auto banded = renderFrame(scene, options, &context);
+            QVERIFY(banded.ok());
+            const QString diff = differenceWithoutZBuffer(*plain, *banded);
+            QVERIFY2(diff.isEmpty(), qPrintable(QStringLiteral("%1 thread(s), no z-buffer: %2 "
+                                                               "differ")
+                                                    .arg(threads)
+                                                    .arg(diff)));
+            options.keepDepth = true;
+            auto kept = renderFrame(scene, options, &context);
+            QVERIFY(kept.ok());
+            QCOMPARE(difference(*plain, *kept), QString());
         }
         // With the normals kept, too (the kernels also write them).
         options.shading.keepNormals = true;

@@ -337,6 +337,18 @@ private slots:
         QVERIFY(fromLit.ok());
         QVERIFY(fromLit->painter != lit && fromLit->zBuffer != lit);
         check(*fromLit);
+        // A painted frame that did not keep its z-buffer (RenderOptions::keepDepth): the
+        // comparison reads depths, so it renders the painter's frame again, with them.
+        RenderOptions noZBuffer;
+        noZBuffer.keepDepth = false;
+        auto bare = renderFrame(shared(painterFailureScene()), noZBuffer);
+        QVERIFY(bare.ok());
+        QVERIFY(bare->depth->depth.empty());
+        const auto bareFrame = std::make_shared<const FrameTrace>(std::move(bare).value());
+        const auto fromBare = compareWithZBuffer(bareFrame, noZBuffer);
+        QVERIFY(fromBare.ok());
+        QVERIFY(fromBare->painter != bareFrame && fromBare->painter->depth->depthKept);
+        check(*fromBare);
         QVERIFY(!compareWithZBuffer(std::shared_ptr<const FrameTrace>()).ok());
     }
 };
