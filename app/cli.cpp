@@ -547,8 +547,9 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
 
     rl::RenderOptions options;
     options.shading.keepNormals = parser.isSet(normalsOutput);
-    // The image needs no z-buffer after the depth test; --depth-output does, and so does the
-    // painter's comparison with the z-buffer render below.
+    // The image needs no z-buffer after the depth test; --depth-output does, and the painter's
+    // comparison with the z-buffer render below reads this frame's (kept, it need not render
+    // the painter's frame again). --explain-pixel's recording frame keeps it anyway.
     options.keepDepth = parser.isSet(depthOutput) || settings.shading == rl::ShadingModel::Painter;
     // With --explain-pixel the one render records that pixel's events; the recording probe
     // leaves every buffer as the plain render would.

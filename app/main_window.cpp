@@ -1018,8 +1018,12 @@ void MainWindow::onPixelHovered(QPoint pixel) {
     }
     // The values at the cursor: what the image shows now.
     const QColor c = m_view->image().pixelColor(pixel);
-    const float z = buffers->depth.at(pixel.x(), pixel.y());
-    const QString depth = std::isfinite(z) ? QString::number(z, 'g', 7) : tr("empty (+inf)");
+    // The window's frames keep their z-buffer (RenderOptions::keepDepth); checked all the same.
+    const bool kept = buffers->depth.contains(pixel.x(), pixel.y());
+    const float z = kept ? buffers->depth.at(pixel.x(), pixel.y()) : 0.0f;
+    const QString depth = !kept              ? tr("not kept")
+                          : std::isfinite(z) ? QString::number(z, 'g', 7)
+                                             : tr("empty (+inf)");
     m_pixelLabel->setText(tr("x %1, y %2   RGB (%3, %4, %5)   depth %6")
                               .arg(pixel.x())
                               .arg(pixel.y())

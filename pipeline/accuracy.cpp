@@ -59,7 +59,8 @@ SampledImage sampleFrame(const FrameTrace& trace, int samplesPerAxis) {
             }
             out.colour.at(x, y) = sum / double(k * k);
             out.hits.at(x, y) = static_cast<std::uint16_t>(hits);
-            if (k == 1 && hits > 0) out.depth.at(x, y) = trace.depth->depth.at(x, y);
+            if (k == 1 && hits > 0 && trace.depth->depthKept)
+                out.depth.at(x, y) = trace.depth->depth.at(x, y);
         }
     }
     return out;

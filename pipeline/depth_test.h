@@ -15,7 +15,6 @@
 #pragma once
 
 #include <cstdint>
-#include <cstring>
 #include <limits>
 
 #include "image.h"
@@ -30,8 +29,10 @@ inline constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>:
 
 struct DepthTest {
     // The clear value where nothing was drawn. Only when depthKept: a caller that needs the
-    // image alone (the command line's render and bench) lets each thread keep the depths
-    // of the band of rows it is testing, in the cache, and this stays empty.
+    // image alone (RenderOptions::keepDepth false: the command line's render without
+    // --depth-output, painter shading or --explain-pixel, and bench without --keep-depth)
+    // lets each thread keep the depths of the band of rows it is testing, in its cache, and
+    // this stays empty.
     Image<float> depth;
     bool depthKept = true;
     Image<std::uint32_t> triangle;  // index into Projection::triangles, or kNoTriangle
@@ -63,7 +64,7 @@ struct DepthTest {
 };
 
 // The end of the run of pixels from `from` on whose triangle is t (at most `limit`): sixteen
-// ids (a cache line) compared at once while they can be. Shading and the depth test's
+// ids (a cache line's worth) checked at once while they can be. Shading and the depth test's
 // visible triangles walk every row this way (multiversioned, like the kernels).
 int runEnd(const std::uint32_t* ids, int from, int limit, std::uint32_t t);
 

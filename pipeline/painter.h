@@ -90,7 +90,8 @@ Result<PainterComparison> compareWithZBuffer(const std::shared_ptr<const Scene>&
                                              const RenderOptions& options = {});
 // The same for a frame already rendered (of frame->scene), which is one of the two renders
 // when every draw of its scene is painted (the painter's) or flat (the z-buffer's): it is
-// used as it is, and only the other one is rendered.
+// used as it is, and only the other one is rendered, unless it did not keep its z-buffer
+// (RenderOptions::keepDepth; the comparison reads depths): then it is rendered again.
 Result<PainterComparison> compareWithZBuffer(const std::shared_ptr<const FrameTrace>& frame,
                                              const RenderOptions& options = {});
 

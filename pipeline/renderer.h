@@ -28,7 +28,8 @@ struct RenderOptions {
 
 // Buffers kept from one frame to the next, so that rendering the same size again costs no
 // new memory (and no page faults). A buffer still held by an earlier frame's trace (the
-// window showing it, say) is left alone and a new one is made.
+// window showing it, say) is left alone and a new one is made; so is a z-buffer for a frame
+// that keeps it after one that did not (RenderOptions::keepDepth), cleared whole.
 struct RenderContext {
     std::shared_ptr<DepthTest> depth;
     std::shared_ptr<Shading> shading;

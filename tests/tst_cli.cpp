@@ -292,6 +292,16 @@ void TestCli::depthAndNormalsOutputs() {
     }
     QCOMPARE(lightest, 255);
     QCOMPARE(darkest, 40);
+
+    // Without --depth-output the render keeps no z-buffer (each thread a band of depths):
+    // the same image, byte for byte.
+    CliRun plain;
+    RUN_CLI(plain, QStringList({"render", "--size", "320x240", "--output", "plain.png"}),
+            dir.path());
+    QCOMPARE(plain.exitCode, 0);
+    const QByteArray withDepth = testing::readFile(dir.filePath("out.png"));
+    QVERIFY(!withDepth.isEmpty());
+    QCOMPARE(testing::readFile(dir.filePath("plain.png")), withDepth);
 }
 
 void TestCli::usageErrors_data() {
@@ -1063,10 +1073,10 @@ void TestCli::bench_data() {
         << QStringList({"--scene", "sphere-1k", "--size", "160x120", "--shading", "gouraud",
                         "--threads", "1"})
         << 1000 << 1 << false;
-    QTest::newRow("sphere, z-buffer kept")
-        << QStringList(
-               {"--scene", "sphere-1k", "--size", "160x120", "--threads", "2", "--keep-depth"})
-        << 1000 << 2 << true;
+    QTest::newRow("sphere, gouraud, 1 thread, z-buffer kept")
+        << QStringList({"--scene", "sphere-1k", "--size", "160x120", "--shading", "gouraud",
+                        "--threads", "1", "--keep-depth"})
+        << 1000 << 1 << true;
 }
 
 void TestCli::bench() {
@@ -1115,6 +1125,19 @@ void TestCli::bench() {
     QVERIFY(md.out.contains(QStringLiteral("| ") + size + QStringLiteral(" |")));
     QVERIFY(md.out.contains(QStringLiteral("| scan conversion | ")));
     QVERIFY(md.out.contains(QStringLiteral("Memory: peak ")));
+    if (zBufferKept) {
+        // The same frame as without --keep-depth.
+        CliRun band;
+        RUN_CLI(band,
+                QStringList({"bench", "--frames", "1", "--format", "json"}) +
+                    arguments.mid(0, arguments.indexOf(QStringLiteral("--keep-depth"))),
+                dir.path());
+        QCOMPARE(band.exitCode, 0);
+        const QJsonObject b = QJsonDocument::fromJson(band.out.toUtf8()).object();
+        QCOMPARE(b.value(QStringLiteral("z_buffer_kept")).toBool(true), false);
+        for (const char* key : {"covered_pixels", "fragments", "triangles"})
+            QCOMPARE(b.value(QLatin1String(key)).toInt(-1), o.value(QLatin1String(key)).toInt());
+    }
     QVERIFY(md.out.contains(zBufferKept
                                 ? QStringLiteral("Z-buffer: kept whole (--keep-depth).")
                                 : QStringLiteral("Z-buffer: a band of rows per thread, in the "

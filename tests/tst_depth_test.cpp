@@ -25,6 +25,25 @@ class TestDepthTest : public QObject {
     Q_OBJECT
 
 private slots:
+    void runEndFindsTheFirstOtherId() {
+        // Every run length up to 40 from four starting offsets, the other id at every place
+        // (in the first and second sixteen) or nowhere; for an id and for kNoTriangle.
+        for (const std::uint32_t t : {7u, kNoTriangle}) {
+            for (int from = 0; from < 4; ++from) {
+                for (int length = 0; length <= 40; ++length) {
+                    const int limit = from + length;
+                    for (int other = -1; other < length; ++other) {
+                        // Past the limit the ids are t too: a read past it would show.
+                        std::vector<std::uint32_t> ids(static_cast<std::size_t>(limit + 20), t);
+                        if (other >= 0) ids[static_cast<std::size_t>(from + other)] = t ^ 1u;
+                        const int expected = other >= 0 ? from + other : limit;
+                        QCOMPARE(runEnd(ids.data(), from, limit, t), expected);
+                    }
+                }
+            }
+        }
+    }
+
     void nearerWinsInEitherOrder() {
         // Two squares' worth of triangles over the same pixels, at depths 5 and 3.
         const std::vector<dvec2> p = {{0, 0}, {8, 0}, {0, 8}, {0, 0}, {8, 0}, {0, 8}};

@@ -217,17 +217,20 @@ private slots:
                      qPrintable(QStringLiteral("%1 thread(s): %2 differ").arg(threads).arg(diff)));
         }
         // Without the z-buffer (each thread's band of depths instead), through the same
-        // context and back: every other buffer the same.
+        // context and back (each frame let go before the next, so its buffers are reused):
+        // every other buffer the same.
         for (int threads : {1, 2, 3}) {
             options.threads = threads;
-            options.keepDepth = false;
-            auto banded = renderFrame(scene, options, &context);
-            QVERIFY(banded.ok());
-            const QString diff = differenceWithoutZBuffer(*plain, *banded);
-            QVERIFY2(diff.isEmpty(), qPrintable(QStringLiteral("%1 thread(s), no z-buffer: %2 "
-                                                               "differ")
-                                                    .arg(threads)
-                                                    .arg(diff)));
+            {
+                options.keepDepth = false;
+                auto banded = renderFrame(scene, options, &context);
+                QVERIFY(banded.ok());
+                const QString diff = differenceWithoutZBuffer(*plain, *banded);
+                QVERIFY2(diff.isEmpty(),
+                         qPrintable(QStringLiteral("%1 thread(s), no z-buffer: %2 differ")
+                                        .arg(threads)
+                                        .arg(diff)));
+            }
             options.keepDepth = true;
             auto kept = renderFrame(scene, options, &context);
             QVERIFY(kept.ok());
@@ -338,6 +341,45 @@ private slots:
             const QString diff = difference(*fresh, *reused);
             QVERIFY2(diff.isEmpty(), qPrintable(QStringLiteral("frame %1: %2").arg(i).arg(diff)));
         }
+    }
+
+    void zBufferKeptOrNotThroughReusedBuffers() {
+        // Through one context, frames that keep the z-buffer and frames that do not, of a
+        // sphere filling the image and of a small one: each equals a fresh render, and the
+        // triangle buffer is reused from frame to frame (each frame let go before the next).
+        auto full = makeBenchmarkScene("full-screen", 320, 240, ShadingModel::Gouraud);
+        auto small = makeBenchmarkScene("sphere-1k", 320, 240, ShadingModel::Gouraud);
+        QVERIFY(full && small);
+        small->camera->c += dvec3(0.8, 0.3, -2.0);
+        const auto a = std::make_shared<const Scene>(std::move(*full));
+        const auto b = std::make_shared<const Scene>(std::move(*small));
+        const std::vector<std::pair<std::shared_ptr<const Scene>, bool>> frames = {
+            {a, true},  {b, false}, {a, true}, {b, false},
+            {b, false}, {a, false}, {b, true}, {a, true}};
+        RenderContext context;
+        RenderOptions options;
+        options.threads = 2;
+        const void* ids = nullptr;
+        for (std::size_t i = 0; i < frames.size(); ++i) {
+            const auto& [scene, keep] = frames[i];
+            options.keepDepth = keep;
+            auto reused = renderFrame(scene, options, &context);
+            options.keepDepth = true;
+            auto fresh = renderFrame(scene, options);
+            QVERIFY(reused.ok() && fresh.ok());
+            QCOMPARE(reused->depth->depthKept, keep);
+            const QString diff =
+                keep ? difference(*fresh, *reused) : differenceWithoutZBuffer(*fresh, *reused);
+            QVERIFY2(diff.isEmpty(), qPrintable(QStringLiteral("frame %1: %2").arg(i).arg(diff)));
+            const void* now = reused->depth->triangle.pixels().data();
+            if (i > 0) QCOMPARE(now, ids);
+            ids = now;
+        }
+        // The small sphere leaves part of what the full one covered to be cleared.
+        auto covers = renderFrame(a, options), leaves = renderFrame(b, options);
+        QVERIFY(covers.ok() && leaves.ok());
+        QVERIFY(leaves->depth->coveredPixels() > 0);
+        QVERIFY(leaves->depth->coveredPixels() < covers->depth->coveredPixels() / 2);
     }
 
     void closedSurfaces_data() {

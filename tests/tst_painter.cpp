@@ -349,6 +349,13 @@ private slots:
         QVERIFY(fromBare.ok());
         QVERIFY(fromBare->painter != bareFrame && fromBare->painter->depth->depthKept);
         check(*fromBare);
+        auto bareFlat = renderFrame(zBufferSceneOf(*painted->scene), noZBuffer);
+        QVERIFY(bareFlat.ok());
+        const auto bareFlatFrame = std::make_shared<const FrameTrace>(std::move(bareFlat).value());
+        const auto fromBareFlat = compareWithZBuffer(bareFlatFrame, noZBuffer);
+        QVERIFY(fromBareFlat.ok());
+        QVERIFY(fromBareFlat->zBuffer != bareFlatFrame && fromBareFlat->zBuffer->depth->depthKept);
+        check(*fromBareFlat);
         QVERIFY(!compareWithZBuffer(std::shared_ptr<const FrameTrace>()).ok());
     }
 };
