@@ -245,51 +245,12 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
         // The verdicts (and the back-face test) are independent per triangle: worked out on
         // several threads; then the triangles are emitted and clipped in order on one, or,
         // when no triangle needs clipping, emitted on several too.
-        const bool outcodes = out.mode == NearPlane::Mode::Clip && userPlanes + 5 <= 32;
+        const bool outcodes = out.mode == NearPlane::Mode::Clip && userPlanes + 5 <= 31;
         const auto& triangles = draw.mesh->triangles;
         enum Verdict : std::uint8_t { kInside, kBackFace, kCut, kOutside };  // kOutside + plane
         std::vector<std::uint8_t> verdict;
         const std::size_t triangleCount = triangles.size();
         const int triangleParts = triangleCount < 4096 ? 1 : std::max(1, threads);
-        bool anyCut = false;
-        if (outcodes) {
-            choosePlanes();
-            std::vector<std::uint32_t> outcode(proj.originalVertexCount);
-            verdict.resize(triangleCount);
-            const int parts = triangleParts;
-            std::vector<std::uint8_t> cutInPart(static_cast<std::size_t>(parts), 0);
-            runParts(parts, [&](int part) {
-                for (std::size_t v = rangeBegin(vertexCount, part, parts),
-                                 end = rangeBegin(vertexCount, part + 1, parts);
-                     v < end; ++v) {
-                    std::uint32_t bits = 0;
-                    for (std::size_t k = 0; k < planes.size(); ++k)
-                        bits |= distance(planes[k], static_cast<std::uint32_t>(v)) >= 0.0 ? 0u
-                                                                                          : 1u << k;
-                    outcode[v] = bits;
-                }
-            });
-            runParts(parts, [&](int part) {
-                bool cut = false;
-                for (std::size_t t = rangeBegin(triangleCount, part, parts),
-                                 end = rangeBegin(triangleCount, part + 1, parts);
-                     t < end; ++t) {
-                    const auto& tri = triangles[t];
-                    if (hiddenWinding != 0 && facesAway(proj, tri, hiddenWinding)) {
-                        verdict[t] = kBackFace;
-                        continue;
-                    }
-                    const std::uint32_t a = outcode[tri[0]], b = outcode[tri[1]],
-                                        c = outcode[tri[2]];
-                    const int outside = kOutside + std::countr_zero(a & b & c);
-                    verdict[t] = static_cast<std::uint8_t>(
-                        (a & b & c) != 0 ? outside : ((a | b | c) != 0 ? kCut : kInside));
-                    cut = cut || verdict[t] == kCut;
-                }
-                cutInPart[static_cast<std::size_t>(part)] = cut ? 1 : 0;
-            });
-            anyCut = std::find(cutInPart.begin(), cutInPart.end(), 1) != cutInPart.end();
-        }
 
         // What becomes of a triangle that is drawn as is (or of a piece of a clipped one):
         // not drawn when a coordinate is not finite or cull drops it.
@@ -304,42 +265,95 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
         };
         // A triangle wholly outside one of the planes.
         auto outsideFate = [&](std::size_t plane) {
-            return plane == nearPlane    ? TriangleFate::Behind
+            return plane == nearPlane   ? TriangleFate::Behind
                    : plane < userPlanes ? TriangleFate::ClippedAway
                                         : TriangleFate::BeyondGuardBand;  // far off the image
         };
 
-        const auto drawIndex = static_cast<std::uint32_t>(d);
-        if (outcodes && !anyCut) {
-            // Nothing to clip: the fates on several threads, each counting on its stack, then
-            // each thread writes the triangles it kept at its place in the list, so the list
-            // is in triangle order as one thread would make it (1M sphere, 2 threads: this
-            // loop was 6 ms on one).
+        // With outcodes, each triangle that needs no clipping gets its fate in the same pass
+        // (a vertex's bit kNotFinite: its screen position or depth is not finite, what
+        // screenFate asks), counted per part on the thread's stack.
+        constexpr std::uint32_t kNotFinite = 1u << 31;
+        constexpr std::size_t kFates = std::size_t(TriangleFate::NonFinite) + 1;
+        std::vector<std::array<std::size_t, kFates>> fateCounts;
+        bool anyCut = false;
+        if (outcodes) {
+            choosePlanes();
+            std::vector<std::uint32_t> outcode(proj.originalVertexCount);
+            verdict.resize(triangleCount);
             proj.fate.resize(triangleCount);
-            const auto parts = static_cast<std::size_t>(triangleParts);
-            constexpr std::size_t kFates = std::size_t(TriangleFate::NonFinite) + 1;
-            std::vector<std::array<std::size_t, kFates>> counts(parts);
-            runParts(triangleParts, [&](int part) {
+            const int parts = triangleParts;
+            std::vector<std::uint8_t> cutInPart(static_cast<std::size_t>(parts), 0);
+            fateCounts.resize(static_cast<std::size_t>(parts));
+            runParts(parts, [&](int part) {
+                for (std::size_t v = rangeBegin(vertexCount, part, parts),
+                                 end = rangeBegin(vertexCount, part + 1, parts);
+                     v < end; ++v) {
+                    std::uint32_t bits = 0;
+                    for (std::size_t k = 0; k < planes.size(); ++k)
+                        bits |= distance(planes[k], static_cast<std::uint32_t>(v)) >= 0.0 ? 0u
+                                                                                          : 1u << k;
+                    if (!finite2(proj.pScreen[v]) || !std::isfinite(proj.depth[v]))
+                        bits |= kNotFinite;
+                    outcode[v] = bits;
+                }
+            });
+            runParts(parts, [&](int part) {
+                bool cut = false;
                 std::array<std::size_t, kFates> mine{};  // per TriangleFate
-                for (std::size_t t = rangeBegin(triangleCount, part, triangleParts),
-                                 end = rangeBegin(triangleCount, part + 1, triangleParts);
-                     t < end; ++t) {
-                    const TriangleFate fate = verdict[t] == kBackFace ? TriangleFate::BackFace
-                                              : verdict[t] >= kOutside
-                                                  ? outsideFate(planes[verdict[t] - kOutside])
-                                                  : screenFate(triangles[t]);
+                const auto settle = [&](std::size_t t, TriangleFate fate) {
                     proj.fate[t] = fate;
                     ++mine[static_cast<std::size_t>(fate)];
+                };
+                for (std::size_t t = rangeBegin(triangleCount, part, parts),
+                                 end = rangeBegin(triangleCount, part + 1, parts);
+                     t < end; ++t) {
+                    const auto& tri = triangles[t];
+                    if (hiddenWinding != 0 && facesAway(proj, tri, hiddenWinding)) {
+                        verdict[t] = kBackFace;
+                        settle(t, TriangleFate::BackFace);
+                        continue;
+                    }
+                    const std::uint32_t a = outcode[tri[0]], b = outcode[tri[1]],
+                                        c = outcode[tri[2]];
+                    const std::uint32_t all = a & b & c & ~kNotFinite;
+                    const std::uint32_t any = a | b | c;
+                    if (all != 0) {
+                        const int plane = std::countr_zero(all);
+                        verdict[t] = static_cast<std::uint8_t>(kOutside + plane);
+                        settle(t, outsideFate(planes[static_cast<std::size_t>(plane)]));
+                    } else if ((any & ~kNotFinite) != 0) {
+                        verdict[t] = kCut;
+                        cut = true;
+                    } else {
+                        verdict[t] = kInside;
+                        settle(t, (any & kNotFinite) != 0 ? TriangleFate::NonFinite
+                                  : draw.cull &&
+                                          !(screenArea(proj.pScreen[tri[0]], proj.pScreen[tri[1]],
+                                                       proj.pScreen[tri[2]]) < 0.0)
+                                      ? TriangleFate::Culled
+                                      : TriangleFate::Inside);
+                    }
                 }
-                counts[static_cast<std::size_t>(part)] = mine;
+                cutInPart[static_cast<std::size_t>(part)] = cut ? 1 : 0;
+                fateCounts[static_cast<std::size_t>(part)] = mine;
             });
+            anyCut = std::find(cutInPart.begin(), cutInPart.end(), 1) != cutInPart.end();
+        }
+
+        const auto drawIndex = static_cast<std::uint32_t>(d);
+        if (outcodes && !anyCut) {
+            // Nothing to clip: every fate is known; each thread writes the triangles it kept
+            // at its place in the list, so the list is in triangle order as one thread would
+            // make it (1M sphere, 2 threads: this loop was 6 ms on one).
+            const auto parts = static_cast<std::size_t>(triangleParts);
             std::vector<std::size_t> at(parts);
             std::size_t kept = out.triangles.size();
             for (std::size_t part = 0; part < parts; ++part) {
                 at[part] = kept;
-                kept += counts[part][static_cast<std::size_t>(TriangleFate::Inside)];
+                kept += fateCounts[part][static_cast<std::size_t>(TriangleFate::Inside)];
                 for (std::size_t fate = 0; fate < kFates; ++fate)
-                    tally(out, static_cast<TriangleFate>(fate)) += counts[part][fate];
+                    tally(out, static_cast<TriangleFate>(fate)) += fateCounts[part][fate];
             }
             out.triangles.resize(kept);
             runParts(triangleParts, [&](int part) {
@@ -354,7 +368,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             continue;
         }
 
-        proj.fate.resize(triangleCount, TriangleFate::Inside);
+        proj.fate.assign(triangleCount, TriangleFate::Inside);  // the clipping pass's own
         std::vector<std::uint32_t> polygon, clipped;
         for (std::size_t t = 0; t < triangleCount; ++t) {
             const auto& tri = triangles[t];
