@@ -1,7 +1,7 @@
 // RL_MULTIVERSION: a hot kernel built three times, for the baseline x86-64, x86-64-v3 (AVX2)
-// and x86-64-v4 (AVX-512), the best one picked when the program starts (GCC and Clang's target_clones, an
-// ifunc). Under ThreadSanitizer the picking function would run, instrumented, before the
-// sanitizer is set up, and crash: there the kernel is built once, for the baseline.
+// and x86-64-v4 (AVX-512), the best one picked when the program starts (GCC and Clang's
+// target_clones, an ifunc). Under ThreadSanitizer the picking function would run, instrumented,
+// before the sanitizer is set up, and crash: there the kernel is built once, for the baseline.
 #pragma once
 
 #if defined(__SANITIZE_THREAD__)
@@ -15,5 +15,6 @@
 #if defined(RL_THREAD_SANITIZER) || !defined(__x86_64__)
 #define RL_MULTIVERSION
 #else
-#define RL_MULTIVERSION __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
+#define RL_MULTIVERSION \
+    __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
 #endif

@@ -252,16 +252,18 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
         const std::size_t triangleCount = triangles.size();
         const int triangleParts = triangleCount < 4096 ? 1 : std::max(1, threads);
 
+        // Whether cull drops a triangle: not counter-clockwise on the screen.
+        auto culled = [&](const std::array<std::uint32_t, 3>& v) {
+            return draw.cull &&
+                   !(screenArea(proj.pScreen[v[0]], proj.pScreen[v[1]], proj.pScreen[v[2]]) < 0.0);
+        };
         // What becomes of a triangle that is drawn as is (or of a piece of a clipped one):
         // not drawn when a coordinate is not finite or cull drops it.
         auto screenFate = [&](const std::array<std::uint32_t, 3>& v) {
             for (std::uint32_t i : v)
                 if (!finite2(proj.pScreen[i]) || !std::isfinite(proj.depth[i]))
                     return TriangleFate::NonFinite;
-            if (draw.cull &&
-                !(screenArea(proj.pScreen[v[0]], proj.pScreen[v[1]], proj.pScreen[v[2]]) < 0.0))
-                return TriangleFate::Culled;
-            return TriangleFate::Inside;
+            return culled(v) ? TriangleFate::Culled : TriangleFate::Inside;
         };
         // A triangle wholly outside one of the planes.
         auto outsideFate = [&](std::size_t plane) {
@@ -328,11 +330,8 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                     } else {
                         verdict[t] = kInside;
                         settle(t, (any & kNotFinite) != 0 ? TriangleFate::NonFinite
-                                  : draw.cull &&
-                                          !(screenArea(proj.pScreen[tri[0]], proj.pScreen[tri[1]],
-                                                       proj.pScreen[tri[2]]) < 0.0)
-                                      ? TriangleFate::Culled
-                                      : TriangleFate::Inside);
+                                  : culled(tri)           ? TriangleFate::Culled
+                                                          : TriangleFate::Inside);
                     }
                 }
                 cutInPart[static_cast<std::size_t>(part)] = cut ? 1 : 0;
