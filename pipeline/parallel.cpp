@@ -20,6 +20,9 @@ using Clock = std::chrono::steady_clock;
 // longer than a whole small stage to wake.
 constexpr auto kAwake = std::chrono::microseconds(500);
 
+// Spins that only pause before the waiting thread starts giving its core away.
+constexpr int kPauseSpins = 64;
+
 inline void relax() {
 #if defined(__x86_64__) || defined(__i386__)
     _mm_pause();
@@ -28,7 +31,12 @@ inline void relax() {
 #endif
 }
 
-// Waits until value differs from old: looks for kAwake, then sleeps until notified.
+// Waits until value differs from old: looks for kAwake, then sleeps until notified. After a
+// few spins the look gives the core away (yield) between looks: when the thread it waits for
+// shares its core (the machine is busy, or a virtual machine's other core is stalled), that
+// thread runs at once instead of when the waiter's time slice ends. On a busy core the pause
+// alone made two threads slower than one: 5.3 ms a frame against 3.2 with the yield
+// (full-screen Gouraud, both threads held to one core).
 template <typename T>
 T waitWhileEqual(const std::atomic<T>& value, T old) {
     const auto deadline = Clock::now() + kAwake;
@@ -36,7 +44,10 @@ T waitWhileEqual(const std::atomic<T>& value, T old) {
         const T now = value.load(std::memory_order_acquire);
         if (now != old) return now;
         if ((spins & 63) == 63 && Clock::now() > deadline) break;
-        relax();
+        if (spins < kPauseSpins)
+            relax();
+        else
+            std::this_thread::yield();
     }
     for (;;) {
         value.wait(old, std::memory_order_acquire);
