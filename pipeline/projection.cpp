@@ -247,8 +247,9 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
         // when no triangle needs clipping, emitted on several too.
         const bool outcodes = out.mode == NearPlane::Mode::Clip && userPlanes + 5 <= 31;
         const auto& triangles = draw.mesh->triangles;
-        enum Verdict : std::uint8_t { kInside, kBackFace, kCut, kOutside };  // kOutside + plane
-        std::vector<std::uint8_t> verdict;
+        // Per triangle, 1 when a plane cuts it: the clipping pass's work (every other triangle
+        // gets its fate in the verdict pass).
+        std::vector<std::uint8_t> toClip;
         const std::size_t triangleCount = triangles.size();
         const int triangleParts = triangleCount < 4096 ? 1 : std::max(1, threads);
 
@@ -282,7 +283,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
         if (outcodes) {
             choosePlanes();
             std::vector<std::uint32_t> outcode(proj.originalVertexCount);
-            verdict.resize(triangleCount);
+            toClip.assign(triangleCount, 0);
             proj.fate.resize(triangleCount);
             const int parts = triangleParts;
             std::vector<std::uint8_t> cutInPart(static_cast<std::size_t>(parts), 0);
@@ -312,7 +313,6 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                      t < end; ++t) {
                     const auto& tri = triangles[t];
                     if (hiddenWinding != 0 && facesAway(proj, tri, hiddenWinding)) {
-                        verdict[t] = kBackFace;
                         settle(t, TriangleFate::BackFace);
                         continue;
                     }
@@ -321,14 +321,12 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                     const std::uint32_t all = a & b & c & ~kNotFinite;
                     const std::uint32_t any = a | b | c;
                     if (all != 0) {
-                        const int plane = std::countr_zero(all);
-                        verdict[t] = static_cast<std::uint8_t>(kOutside + plane);
-                        settle(t, outsideFate(planes[static_cast<std::size_t>(plane)]));
+                        const auto plane = static_cast<std::size_t>(std::countr_zero(all));
+                        settle(t, outsideFate(planes[plane]));
                     } else if ((any & ~kNotFinite) != 0) {
-                        verdict[t] = kCut;
+                        toClip[t] = 1;
                         cut = true;
                     } else {
-                        verdict[t] = kInside;
                         settle(t, (any & kNotFinite) != 0 ? TriangleFate::NonFinite
                                   : culled(tri)           ? TriangleFate::Culled
                                                           : TriangleFate::Inside);
@@ -340,19 +338,22 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             anyCut = std::find(cutInPart.begin(), cutInPart.end(), 1) != cutInPart.end();
         }
 
+        // With outcodes every triangle but those to clip has its fate: counted here, once.
+        for (const auto& counts : fateCounts)
+            for (std::size_t fate = 0; fate < kFates; ++fate)
+                tally(out, static_cast<TriangleFate>(fate)) += counts[fate];
+
         const auto drawIndex = static_cast<std::uint32_t>(d);
         if (outcodes && !anyCut) {
-            // Nothing to clip: every fate is known; each thread writes the triangles it kept
-            // at its place in the list, so the list is in triangle order as one thread would
-            // make it (1M sphere, 2 threads: this loop was 6 ms on one).
+            // Nothing to clip: each thread writes the triangles it kept at its place in the
+            // list, so the list is in triangle order as one thread would make it (1M sphere,
+            // 2 threads: this loop was 6 ms on one).
             const auto parts = static_cast<std::size_t>(triangleParts);
             std::vector<std::size_t> at(parts);
             std::size_t kept = out.triangles.size();
             for (std::size_t part = 0; part < parts; ++part) {
                 at[part] = kept;
                 kept += fateCounts[part][static_cast<std::size_t>(TriangleFate::Inside)];
-                for (std::size_t fate = 0; fate < kFates; ++fate)
-                    tally(out, static_cast<TriangleFate>(fate)) += fateCounts[part][fate];
             }
             out.triangles.resize(kept);
             runParts(triangleParts, [&](int part) {
@@ -367,13 +368,19 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             continue;
         }
 
-        proj.fate.assign(triangleCount, TriangleFate::Inside);  // the clipping pass's own
+        // Triangle by triangle in order, clipping those that need it. With outcodes the others
+        // have their fates and counts from the verdict pass: only the kept ones are listed.
+        if (!outcodes) proj.fate.assign(triangleCount, TriangleFate::Inside);
         std::vector<std::uint32_t> polygon, clipped;
         for (std::size_t t = 0; t < triangleCount; ++t) {
             const auto& tri = triangles[t];
             const auto source = static_cast<std::uint32_t>(t);
-            if (outcodes ? verdict[t] == kBackFace
-                         : hiddenWinding != 0 && facesAway(proj, tri, hiddenWinding)) {
+            if (outcodes && toClip[t] == 0) {
+                if (proj.fate[t] == TriangleFate::Inside)
+                    out.triangles.push_back({drawIndex, source, tri});
+                continue;
+            }
+            if (!outcodes && hiddenWinding != 0 && facesAway(proj, tri, hiddenWinding)) {
                 proj.fate[t] = TriangleFate::BackFace;
                 ++out.backFaces;
                 continue;
@@ -404,12 +411,9 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             }
             // Which planes cut the triangle, and is it wholly outside one of them (the first
             // such plane)?
-            bool cut = false;
+            bool cut = outcodes;  // the verdict pass leaves only triangles to clip
             std::size_t outsidePlane = SIZE_MAX;
-            if (outcodes) {
-                if (verdict[t] >= kOutside) outsidePlane = planes[verdict[t] - kOutside];
-                cut = verdict[t] != kInside;
-            } else {
+            if (!outcodes) {
                 choosePlanes();
                 for (std::size_t plane : planes) {
                     int inside = 0;
