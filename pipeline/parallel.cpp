@@ -82,7 +82,8 @@ int currentCore() {
 // turns on one core. Full-screen Gouraud at 960x540 on 2 threads took 0.82-0.97 ms a frame
 // for the first hundred frames of a run, as on one thread (0.83), and 0.40 after; moving
 // (30 us to 4 ms, once in a while), 0.44-0.58 from the start.
-void leaveCore(int core, const std::atomic<int>* taken, int takenCount) {
+void leaveCore([[maybe_unused]] int core, [[maybe_unused]] const std::atomic<int>* taken,
+               [[maybe_unused]] int takenCount) {
 #if defined(__linux__)
     cpu_set_t allowed;
     if (sched_getaffinity(0, sizeof allowed, &allowed) != 0) return;
@@ -99,10 +100,6 @@ void leaveCore(int core, const std::atomic<int>* taken, int takenCount) {
             sched_setaffinity(0, sizeof allowed, &allowed);
         return;
     }
-#else
-    (void)core;
-    (void)taken;
-    (void)takenCount;
 #endif
 }
 
@@ -171,7 +168,8 @@ private:
     void (*m_fn)(const void*, int) = nullptr;
     const void* m_context = nullptr;
     int m_parts = 0;
-    // The core each part last ran on (part 0: the caller), -1 where not known.
+    // The core each kept thread was on after its last part, and m_cores[0] the caller's when
+    // it published the job; -1 where not known.
     std::array<std::atomic<int>, kMaxThreads> m_cores{};
     // Never joined: the threads live as long as the program (the object is never destroyed).
     std::vector<std::thread> m_threads;
