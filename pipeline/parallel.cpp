@@ -29,8 +29,14 @@ constexpr auto kAwake = std::chrono::microseconds(500);
 // core, and the two took turns on it again.
 constexpr auto kAwakeForParts = std::chrono::milliseconds(20);
 
-// Spins that only pause before the waiting thread starts giving its core away.
-constexpr int kPauseSpins = 64;
+// The core the calling thread runs on, or -1 where that is not known.
+int currentCore() {
+#if defined(__linux__)
+    return sched_getcpu();
+#else
+    return -1;
+#endif
+}
 
 inline void relax() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -40,38 +46,46 @@ inline void relax() {
 #endif
 }
 
-// Waits until value differs from old: looks for `awake`, then sleeps until notified. After a
-// few spins the look gives the core away (yield) between looks: when the thread it waits for
-// shares its core (the machine is busy, or a virtual machine's other core is stalled), that
-// thread runs at once instead of when the waiter's time slice ends. On a busy core the pause
-// alone made two threads slower than one: 5.3 ms a frame against 3.2 with the yield
-// (full-screen Gouraud, both threads held to one core).
+// Whether the calling thread runs on one of the cores in cores[0 .. count) (-1: not known).
+bool onCoreOf(const std::atomic<int>* cores, int count) {
+    const int core = currentCore();
+    if (core < 0) return false;
+    for (int k = 0; k < count; ++k)
+        if (cores[k].load(std::memory_order_relaxed) == core) return true;
+    return false;
+}
+
+// Waits until value differs from old: looks for `awake`, then sleeps until notified. While
+// it looks, it gives its core away (yield) between looks only when a thread it waits for was
+// last seen on the same core (cores[0 .. count), checked every 64 looks): that thread then
+// runs at once instead of when the waiter's time slice ends. With the two threads held to
+// one core, pausing alone made two threads slower than one (full-screen Gouraud: 5.3 ms a
+// frame against 3.2 with the yield). But yielding on a core of its own made things worse on
+// this virtual machine: a kept thread yielding while it waited for the next job often saw it
+// only 2.5 ms after it was published, frame after frame (full-screen Gouraud in bands, 2
+// threads: median 1.8-3.9 ms a frame against 1.40-1.46 with pauses alone).
 template <typename T>
-T waitWhileEqual(const std::atomic<T>& value, T old, Clock::duration awake) {
+T waitWhileEqual(const std::atomic<T>& value, T old, Clock::duration awake,
+                 const std::atomic<int>* cores, int count) {
     const auto deadline = Clock::now() + awake;
+    bool shared = false;
     for (int spins = 0;; ++spins) {
         const T now = value.load(std::memory_order_acquire);
         if (now != old) return now;
-        if ((spins & 63) == 63 && Clock::now() > deadline) break;
-        if (spins < kPauseSpins)
-            relax();
-        else
+        if ((spins & 63) == 63) {
+            if (Clock::now() > deadline) break;
+            shared = onCoreOf(cores, count);
+        }
+        if (shared)
             std::this_thread::yield();
+        else
+            relax();
     }
     for (;;) {
         value.wait(old, std::memory_order_acquire);
         const T now = value.load(std::memory_order_acquire);
         if (now != old) return now;
     }
-}
-
-// The core the calling thread runs on, or -1 where that is not known.
-int currentCore() {
-#if defined(__linux__)
-    return sched_getcpu();
-#else
-    return -1;
-#endif
 }
 
 // Moves the calling thread off `core` onto an allowed core none of `taken` runs on, if there
@@ -130,7 +144,7 @@ public:
         fn(context, 0);
         for (int left = m_remaining.load(std::memory_order_acquire); left != 0;
              left = m_remaining.load(std::memory_order_acquire))
-            waitWhileEqual(m_remaining, left, kAwakeForParts);
+            waitWhileEqual(m_remaining, left, kAwakeForParts, m_cores.data() + 1, parts - 1);
         m_busy.store(false, std::memory_order_release);
         return true;
     }
@@ -138,9 +152,12 @@ public:
 private:
     void work(int part, std::uint64_t seen) {
         for (;;) {
-            seen = waitWhileEqual(m_generation, seen, kAwake);
+            seen = waitWhileEqual(m_generation, seen, kAwake, m_cores.data(), 1);
             const int parts = m_parts;  // read before the job is acknowledged
-            if (part < parts) m_fn(m_context, part);
+            if (part < parts) {
+                m_cores[part].store(currentCore(), std::memory_order_relaxed);
+                m_fn(m_context, part);
+            }
             if (m_remaining.fetch_sub(1, std::memory_order_acq_rel) == 1) m_remaining.notify_one();
             // After acknowledging: the caller does not wait while this thread moves.
             if (part < parts) spread(part, parts);
@@ -168,8 +185,8 @@ private:
     void (*m_fn)(const void*, int) = nullptr;
     const void* m_context = nullptr;
     int m_parts = 0;
-    // The core each kept thread was on after its last part, and m_cores[0] the caller's when
-    // it published the job; -1 where not known.
+    // The core each kept thread was on when it started its last part and after it, and
+    // m_cores[0] the caller's when it published the job; -1 where not known.
     std::array<std::atomic<int>, kMaxThreads> m_cores{};
     // Never joined: the threads live as long as the program (the object is never destroyed).
     std::vector<std::thread> m_threads;
