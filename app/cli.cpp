@@ -551,6 +551,9 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
     // comparison with the z-buffer render below reads this frame's (kept, it need not render
     // the painter's frame again). --explain-pixel's recording frame keeps it anyway.
     options.keepDepth = parser.isSet(depthOutput) || settings.shading == rl::ShadingModel::Painter;
+    // Nor the ids and barycentrics of the winning fragments, but for the painter's comparison
+    // and the normals image: then the depth test and shading may run band by band.
+    options.keepFragments = options.keepDepth || parser.isSet(normalsOutput);
     // With --explain-pixel the one render records that pixel's events; the recording probe
     // leaves every buffer as the plain render would.
     std::optional<rl::RecordingProbe> probe;
@@ -728,8 +731,9 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
                                     lit("md"));
     const QCommandLineOption keepDepth(
         lit("keep-depth"),
-        lit("Keep the whole z-buffer in memory, as the window does (by default only the band "
-            "of rows a thread is testing is kept, as render does without --depth-output)."));
+        lit("Keep the whole z-buffer and the winning fragments in memory, as the window does "
+            "(by default only the band of rows a thread is testing is kept, shaded as soon as it "
+            "is tested when that pays, as render does without --depth-output)."));
     parser.addOption(help);
     sceneOptions.addTo(parser);
     parser.addOptions({sceneName, frames, warmup, threads, format, keepDepth});
@@ -775,10 +779,12 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     rl::RenderOptions options;
     options.threads = threadCount;  // 0: every core
     options.keepDepth = parser.isSet(keepDepth);
+    options.keepFragments = options.keepDepth;
     rl::RenderContext context;  // buffers reused from frame to frame
     std::vector<double> total;
     std::vector<std::array<double, rl::kStageCount>> stages;
     std::size_t covered = 0, fragments = 0;
+    bool inBands = false;  // depth test and shading run together (RenderOptions::keepFragments)
     int usedThreads = 0;
     double firstRss = -1.0;  // resident memory after the first timed frame, MiB
     for (int i = 0; i < warmupCount + frameCount; ++i) {
@@ -790,6 +796,7 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
         // Counted on the last frame only: reading the whole triangle buffer between frames
         // would bring it into the cache for the next one.
         if (i + 1 == warmupCount + frameCount) covered = trace->depth->coveredPixels();
+        inBands = !trace->depth->fragmentsKept;
         fragments = trace->depth->fragments;
         usedThreads = trace->threads;
         if (i == warmupCount) firstRss = memoryMiB("VmRSS:");
@@ -821,6 +828,7 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
             << ", \"triangles\": " << scene->triangleCount() << ", \"threads\": " << usedThreads
             << ", \"frames\": " << frameCount
             << ", \"z_buffer_kept\": " << (options.keepDepth ? "true" : "false")
+            << ", \"shaded_in_bands\": " << (inBands ? "true" : "false")
             << ", \"median_ms\": " << number(medianMs, 3) << ", \"min_ms\": " << number(minMs, 3)
             << ", \"max_ms\": " << number(maxMs, 3) << ", \"covered_pixels\": " << covered
             << ", \"fragments\": " << fragments << ", \"mpixels_per_s\": " << number(mpixels, 2)
@@ -845,7 +853,12 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
             << " MiB after the last. Z-buffer: "
             << (options.keepDepth ? "kept whole (--keep-depth)"
                                   : "a band of rows per thread, in the cache")
-            << ".\n\n"
+            << "."
+            << (inBands ? " Depth test and shading: together, each chunk of rows shaded by the "
+                          "thread that tested it, from its band (the two stages' times are "
+                          "their sum split as the threads spent it)."
+                        : "")
+            << "\n\n"
             << "| stage | median ms |\n|---|---|\n";
         for (std::size_t k = 0; k < stageMedian.size(); ++k)
             out << "| " << rl::stageName(rl::kAllStages[k]) << " | " << number(stageMedian[k], 3)

@@ -17,6 +17,7 @@
 namespace rl {
 
 std::size_t DepthTest::coveredPixels() const {
+    if (!fragmentsKept) return covered;
     std::size_t n = 0;
     for (std::uint32_t t : triangle.pixels()) n += t != kNoTriangle ? 1 : 0;
     return n;
@@ -183,27 +184,35 @@ struct TrianglePlane {
     }
 };
 
+// The rows of the buffers one span writes: the z-buffer's and the frame's, or those of the
+// band a thread tests a chunk in (testChunks). bary is null when no barycentrics are kept.
+struct Rows {
+    float* depth;
+    std::uint32_t* ids;
+    vec2* bary;
+};
+
 // The depth test of one span of triangle t.
-// depthRow: the depths of the span's row (the z-buffer's row, or the band's in testChunks).
 template <typename Probe>
 void testSpanOf(const Scene& scene, const TrianglePlane& setup, std::uint32_t id, const Span& span,
-                float* depthRow, DepthTest& out, Counts& counts, Probe& probe) {
+                const Rows& rows, bool painted, Counts& counts, Probe& probe) {
     const double offset = scene.rules.sampleOffset;
     const bool winsOnTie = scene.conventions.depthWinsOnTie;
     const bool rangeClip = scene.conventions.depthRangeClip;
     const bool reciprocal = perspectiveDepth(scene);
     double beta0 = 0.0, gamma0 = 0.0;
     setup.spanStart(span.xBegin, span.y, offset, beta0, gamma0);
-    std::uint32_t* idRow = out.triangle.row(span.y);
-    vec2* baryRow = out.barycentric.row(span.y);
+    float* depthRow = rows.depth;
+    std::uint32_t* idRow = rows.ids;
+    vec2* baryRow = rows.bary;
     const std::int32_t n = span.xEnd - span.xBegin;
     counts.fragments += static_cast<std::size_t>(n);
     if constexpr (!Probe::enabled) {
         if (!rangeClip) {
             counts.passed += testSpan(depthRow + span.xBegin, idRow + span.xBegin,
-                                      out.barycentricsKept ? &baryRow[span.xBegin].x : nullptr, n,
-                                      beta0, setup.betaDx, gamma0, setup.gammaDx, setup.z0,
-                                      setup.dz1, setup.dz2, id, winsOnTie, reciprocal, out.painted);
+                                      baryRow ? &baryRow[span.xBegin].x : nullptr, n, beta0,
+                                      setup.betaDx, gamma0, setup.gammaDx, setup.z0, setup.dz1,
+                                      setup.dz2, id, winsOnTie, reciprocal, painted);
             return;
         }
     }
@@ -218,13 +227,13 @@ void testSpanOf(const Scene& scene, const TrianglePlane& setup, std::uint32_t id
             continue;
         }
         const float stored = depthRow[x];
-        const bool pass = out.painted || z < stored || (winsOnTie && z == stored);
+        const bool pass = painted || z < stored || (winsOnTie && z == stored);
         RL_PROBE_HOOK(
             probe.onDepthTest({id, x, span.y, 1.0f - beta - gamma, beta, gamma, z, stored, pass}));
         if (pass) {
             depthRow[x] = z;
             idRow[x] = id;
-            baryRow[x] = vec2(beta, gamma);
+            if (baryRow) baryRow[x] = vec2(beta, gamma);
         }
         counts.passed += pass ? 1 : 0;
     }
@@ -240,9 +249,12 @@ Counts testAll(const Scene& scene, const Projection& projection, const ScanConve
         const std::uint32_t last = scan.spanStart[t + 1];
         if (first == last) continue;
         const TrianglePlane setup(projection, t, perspectiveDepth(scene));
-        for (std::uint32_t k = first; k < last; ++k)
+        for (std::uint32_t k = first; k < last; ++k) {
+            const std::int32_t y = scan.spans[k].y;
             testSpanOf(scene, setup, static_cast<std::uint32_t>(t), scan.spans[k],
-                       out.depth.row(scan.spans[k].y), out, counts, probe);
+                       Rows{out.depth.row(y), out.triangle.row(y), out.barycentric.row(y)},
+                       out.painted, counts, probe);
+        }
     }
     return counts;
 }
@@ -309,53 +321,81 @@ SpansByChunk sortByChunk(const ScanConversion& scan, int chunks, int threads) {
 // in testAll, so the buffers are the same bits. When the z-buffer is not kept
 // (DepthTest::depthKept), the chunk's depths are a band of kRowChunk rows of the thread's
 // own (61 KB at 1920 pixels wide), cleared where the chunk's spans fall: it stays in L2.
+// With a sink (DepthTestStage::runBands) the ids and barycentrics are in the band too, and
+// each chunk is handed to the sink once tested, before the next one overwrites it.
 Counts testChunks(const Scene& scene, const Projection& projection, const SpansByChunk& sorted,
-                  DepthTest& out, int part, int parts, const std::vector<ColumnRange>& previous) {
+                  DepthTest& out, int part, int parts, const std::vector<ColumnRange>& previous,
+                  const BandSink* sink, std::atomic<int>& nextChunk) {
     Counts counts;
     NullProbe probe;
     const int chunks = (scene.height + kRowChunk - 1) / kRowChunk;
     const std::vector<Entry>& entries = sorted.entries;
     const std::vector<std::uint32_t>& start = sorted.first;
     const float clear = scene.conventions.depthClear;
-    std::unique_ptr<float[]> band;  // cleared below where it is used
-    if (!out.depthKept)
-        band = std::make_unique_for_overwrite<float[]>(static_cast<std::size_t>(kRowChunk) *
-                                                       static_cast<std::size_t>(scene.width));
-    const auto depthRow = [&](int y, int y0) {
-        return out.depthKept ? out.depth.row(y)
-                             : band.get() + static_cast<std::size_t>(y - y0) *
-                                                static_cast<std::size_t>(scene.width);
+    const auto width = static_cast<std::size_t>(scene.width);
+    const std::size_t bandPixels = static_cast<std::size_t>(kRowChunk) * width;
+    // The thread's band, cleared below where it is used.
+    std::unique_ptr<float[]> depthBand;
+    std::unique_ptr<std::uint32_t[]> idBand;
+    std::unique_ptr<vec2[]> baryBand;
+    if (!out.depthKept) depthBand = std::make_unique_for_overwrite<float[]>(bandPixels);
+    if (sink) {
+        idBand = std::make_unique_for_overwrite<std::uint32_t[]>(bandPixels);
+        if (out.barycentricsKept) baryBand = std::make_unique_for_overwrite<vec2[]>(bandPixels);
+    }
+    // The first row of chunk rows from y0 on, in each buffer; the rows follow it, width apart.
+    const auto chunkRows = [&](int y0) {
+        Rows rows;
+        rows.depth = out.depthKept ? out.depth.row(y0) : depthBand.get();
+        rows.ids = sink ? idBand.get() : out.triangle.row(y0);
+        rows.bary = !out.barycentricsKept ? nullptr
+                    : sink                ? baryBand.get()
+                                          : out.barycentric.row(y0);
+        return rows;
     };
-    for (int c = part; c < chunks; c += parts) {
+    const auto rowOf = [width](const Rows& first, int dy) {
+        const std::size_t offset = static_cast<std::size_t>(dy) * width;
+        return Rows{first.depth + offset, first.ids + offset,
+                    first.bary ? first.bary + offset : nullptr};
+    };
+    // In bands, each chunk goes to the next thread free to take it (nextChunk): a thread that
+    // starts late (a virtual machine's core can take milliseconds to wake) holds nothing up,
+    // the others take its share. Tested and shaded by one thread, a chunk is the same bits
+    // whichever thread that is. Otherwise chunk c is thread c mod parts's, as in shading.
+    const auto nextOf = [&](int c) {
+        return sink ? nextChunk.fetch_add(1, std::memory_order_relaxed) : c + parts;
+    };
+    for (int c = sink ? nextOf(0) : part; c < chunks; c = nextOf(c)) {
         const int y0 = c * kRowChunk;
         const int y1 = std::min(scene.height, y0 + kRowChunk);
+        const Rows first = chunkRows(y0);
         ColumnRange touched{scene.width, 0};
         for (std::uint32_t e = start[c]; e < start[c + 1]; ++e) {
             const Span& span = entries[e].span;
             touched.begin = std::min(touched.begin, span.xBegin);
             touched.end = std::max(touched.end, span.xEnd);
         }
-        // Clear what the previous frame wrote (everything when that is not known); the
-        // band, where this chunk's spans fall.
+        // Clear what the previous frame wrote (everything when that is not known); a band,
+        // where this chunk's spans fall.
         const ColumnRange dirty =
             previous.empty() ? ColumnRange{0, scene.width} : previous[static_cast<std::size_t>(c)];
         const ColumnRange depthDirty = out.depthKept ? dirty : touched;
-        for (int y = y0; y < y1 && depthDirty.begin < depthDirty.end; ++y)
-            fillFloats(depthRow(y, y0) + depthDirty.begin,
-                       static_cast<std::size_t>(depthDirty.end - depthDirty.begin), clear);
-        if (dirty.begin < dirty.end) {
-            const auto n = static_cast<std::size_t>(dirty.end - dirty.begin);
-            for (int y = y0; y < y1; ++y) {
-                static_assert(kNoTriangle == ~std::uint32_t{0}, "cleared byte by byte");
-                std::memset(out.triangle.row(y) + dirty.begin, 0xff, n * sizeof(std::uint32_t));
-                // Barycentrics are read only where a triangle won, so any value does; but
-                // zeroing them here with memset brings their lines into the cache ahead of
-                // the spans' stores (full-screen sphere, Gouraud, 1 thread: depth test
-                // 2.5-2.9 -> 2.2 ms).
-                if (out.barycentricsKept)
-                    std::memset(static_cast<void*>(out.barycentric.row(y) + dirty.begin), 0,
-                                n * sizeof(vec2));
-            }
+        const ColumnRange idDirty = sink ? touched : dirty;
+        for (int y = y0; y < y1; ++y) {
+            const Rows rows = rowOf(first, y - y0);
+            if (depthDirty.begin < depthDirty.end)
+                fillFloats(rows.depth + depthDirty.begin,
+                           static_cast<std::size_t>(depthDirty.end - depthDirty.begin), clear);
+            if (idDirty.begin >= idDirty.end) continue;
+            const auto n = static_cast<std::size_t>(idDirty.end - idDirty.begin);
+            static_assert(kNoTriangle == ~std::uint32_t{0}, "cleared byte by byte");
+            std::memset(rows.ids + idDirty.begin, 0xff, n * sizeof(std::uint32_t));
+            // Barycentrics are read only where a triangle won, so any value does; but
+            // zeroing the frame's with memset brings their lines into the cache ahead of the
+            // spans' stores (full-screen sphere, Gouraud, 1 thread: depth test 2.5-2.9 ->
+            // 2.2 ms). A band's are in the cache already.
+            if (rows.bary && !sink)
+                std::memset(static_cast<void*>(rows.bary + idDirty.begin), 0, n * sizeof(vec2));
         }
         out.touched[static_cast<std::size_t>(c)] =
             touched.begin < touched.end ? touched : ColumnRange{};
@@ -367,8 +407,13 @@ Counts testChunks(const Scene& scene, const Projection& projection, const SpansB
                 current = entry.triangle;
                 setup.emplace(projection, current, perspectiveDepth(scene));
             }
-            testSpanOf(scene, *setup, current, entry.span, depthRow(entry.span.y, y0), out, counts,
-                       probe);
+            testSpanOf(scene, *setup, current, entry.span, rowOf(first, entry.span.y - y0),
+                       out.painted, counts, probe);
+        }
+        if (sink) {
+            (*sink)(TestedBand{part, y0, y1, out.touched[static_cast<std::size_t>(c)], first.ids,
+                               first.bary, width});
+            continue;
         }
         if (!out.visible.empty() && touched.begin < touched.end) {
             // The triangles that kept a pixel of this chunk, a run of one id at a time. Two
@@ -428,17 +473,22 @@ FragmentDepth fragmentDepth(const Scene& scene, const Projection& projection, st
     return setup.fragment(beta0, gamma0, x - xBegin, reciprocal);
 }
 
+namespace {
+
+// The depth test: on one thread in triangle order when a probe records, otherwise chunk by
+// chunk on `threads` threads (testChunks), each chunk handed to sink when one is given.
 template <typename Probe>
-DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
-                              const ScanConversion& scan, Probe& probe, int threads,
-                              DepthTest* recycled, bool keepDepth) const {
+DepthTest test(const Scene& scene, const Projection& projection, const ScanConversion& scan,
+               Probe& probe, int threads, DepthTest* recycled, bool keepDepth,
+               const BandSink* sink) {
     DepthTest out;
     const float clear = scene.conventions.depthClear;
     const int chunks = (scene.height + kRowChunk - 1) / kRowChunk;
     // A recording probe's frame keeps every buffer (its views read them).
-    out.depthKept = Probe::enabled || keepDepth;
+    out.depthKept = Probe::enabled || (keepDepth && !sink);
+    out.fragmentsKept = Probe::enabled || !sink;
     std::vector<ColumnRange> previous;  // what the recycled buffers hold besides the clear value
-    if (recycled) {
+    if (recycled && out.fragmentsKept) {
         // When this frame keeps its z-buffer and the recycled one did not, nothing in it is
         // known: everything is cleared.
         if (recycled->triangle.width() == scene.width &&
@@ -468,22 +518,25 @@ DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
     } else {
         // Each thread clears its own rows (testChunks).
         if (out.depthKept) out.depth.resize(scene.width, scene.height);
-        out.triangle.resize(scene.width, scene.height);
-        out.barycentric.resize(scene.width, scene.height);
+        if (out.fragmentsKept) {
+            out.triangle.resize(scene.width, scene.height);
+            out.barycentric.resize(scene.width, scene.height);
+        }
         out.touched.assign(static_cast<std::size_t>(chunks), ColumnRange{});
         bool perTriangle = false;
         for (const Draw& draw : scene.draws)
             perTriangle = perTriangle || draw.shading != ShadingModel::Phong;
-        if (perTriangle)
+        if (perTriangle && !sink)
             out.visible.assign(projection.triangles.size(), 0);
         else
             out.visible.clear();
         const int parts = std::max(1, std::min(threads, scene.height));
         counts.resize(static_cast<std::size_t>(parts));
         const SpansByChunk sorted = sortByChunk(scan, chunks, threads);
+        std::atomic<int> nextChunk{0};
         runParts(parts, [&](int part) {
             counts[static_cast<std::size_t>(part)] =
-                testChunks(scene, projection, sorted, out, part, parts, previous);
+                testChunks(scene, projection, sorted, out, part, parts, previous, sink, nextChunk);
         });
     }
     for (const Counts& c : counts) {
@@ -493,6 +546,22 @@ DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
     }
     out.rejected = out.fragments - out.passed - out.outsideDepthRange;
     return out;
+}
+
+}  // namespace
+
+template <typename Probe>
+DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
+                              const ScanConversion& scan, Probe& probe, int threads,
+                              DepthTest* recycled, bool keepDepth) const {
+    return test(scene, projection, scan, probe, threads, recycled, keepDepth, nullptr);
+}
+
+DepthTest DepthTestStage::runBands(const Scene& scene, const Projection& projection,
+                                   const ScanConversion& scan, int threads,
+                                   const BandSink& sink) const {
+    NullProbe probe;
+    return test(scene, projection, scan, probe, threads, nullptr, false, &sink);
 }
 
 DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,

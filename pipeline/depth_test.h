@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 
 #include "image.h"
@@ -35,6 +36,9 @@ struct DepthTest {
     // this stays empty.
     Image<float> depth;
     bool depthKept = true;
+    // Whether triangle and barycentric are kept: not by a frame whose depth test and
+    // shading ran together (DepthTestStage::runBands), which keeps the image alone.
+    bool fragmentsKept = true;
     Image<std::uint32_t> triangle;  // index into Projection::triangles, or kNoTriangle
     // (beta, gamma) of the winning fragment, alpha = 1 - beta - gamma; meaningful only where
     // triangle holds one (elsewhere, what an earlier frame in these buffers left), and only
@@ -60,8 +64,24 @@ struct DepthTest {
     // Gouraud and nothing records; empty otherwise.
     std::vector<std::uint8_t> visible;
 
+    // The pixels a triangle won: counted where triangle is kept, otherwise covered.
     std::size_t coveredPixels() const;
+    std::size_t covered = 0;  // only when !fragmentsKept: counted by the shading of the bands
 };
+
+// One chunk of rows (parallel.h) just depth-tested by thread `part` in a band of its own
+// (DepthTestStage::runBands): row y's winning ids are ids + (y - y0) * stride, its
+// barycentrics bary + (y - y0) * stride (null when none are kept). Valid until the thread's
+// next chunk; only columns holds ids (the columns the chunk's spans fell in).
+struct TestedBand {
+    int part = 0;
+    int y0 = 0, y1 = 0;
+    ColumnRange columns;
+    const std::uint32_t* ids = nullptr;
+    const vec2* bary = nullptr;
+    std::size_t stride = 0;
+};
+using BandSink = std::function<void(const TestedBand&)>;
 
 // The end of the run of pixels from `from` on whose triangle is t (at most `limit`): sixteen
 // ids (a cache line's worth) checked at once while they can be. Shading and the depth test's
@@ -79,6 +99,13 @@ public:
                   bool keepDepth = true) const;
     DepthTest run(const Scene& scene, const Projection& projection, const ScanConversion& scan,
                   int threads = 1, DepthTest* recycled = nullptr, bool keepDepth = true) const;
+    // The same test with nothing kept per pixel: each thread tests its chunks of rows in a band
+    // of its own (depths, ids and barycentrics: 184 KB at 1920 pixels wide, in its L2 cache)
+    // and hands each chunk to sink, on the same thread, before testing the next. The result
+    // has the counts and touched, no z-buffer, ids or barycentrics (fragmentsKept false), and
+    // covered left for the sink's owner to count.
+    DepthTest runBands(const Scene& scene, const Projection& projection, const ScanConversion& scan,
+                       int threads, const BandSink& sink) const;
 };
 
 // Whether the depth test interpolates 1/z rather than z: view z under perspective-correct

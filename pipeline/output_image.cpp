@@ -63,12 +63,15 @@ Rgba8Image colourImage(const Shading& shading, const DepthTest& depth,
     const int h = shading.colour.height();
     Rgba8Image image = blank(w, h);
     const std::array<std::uint8_t, 4> bg = backgroundBytes(conventions);
+    // Which pixels a triangle won: the depth test's ids, or when it kept none (shaded in
+    // bands) the shading's covered.
+    const bool ids = depth.fragmentsKept;
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
+            const bool won =
+                ids ? depth.triangle.at(x, y) != kNoTriangle : shading.covered.at(x, y);
             const std::array<std::uint8_t, 4> c =
-                depth.triangle.at(x, y) == kNoTriangle
-                    ? bg
-                    : colourBytes(shading.colour.at(x, y), conventions);
+                won ? colourBytes(shading.colour.at(x, y), conventions) : bg;
             put(image, x, y, c[0], c[1], c[2], c[3]);
         }
     }

@@ -73,21 +73,45 @@ Result<FrameTrace> run(std::shared_ptr<const Scene> scenePtr, const RenderOption
         trace.scan = std::make_shared<const ScanConversion>(
             ScanConversionStage().run(scene, *trace.projection, probe, threads));
     });
-    timed(StageId::DepthTest, [&] {
-        DepthTest* recycled = context ? recyclable(context->depth) : nullptr;
-        auto depth = std::make_shared<DepthTest>(DepthTestStage().run(
-            scene, *trace.projection, *trace.scan, probe, threads, recycled, options.keepDepth));
-        if (context) context->depth = depth;
-        trace.depth = std::move(depth);
-    });
-    timed(StageId::Shading, [&] {
+    // Depth test and shading together: their time is the pair's, split in the proportion the
+    // threads spent on each.
+    if (!Probe::enabled && !options.keepDepth && !options.keepFragments &&
+        !options.shading.keepNormals && shadeInBands(scene, *trace.projection, *trace.scan)) {
+        const auto start = Clock::now();
         Shading* recycled = context ? recyclable(context->shading) : nullptr;
-        auto shading = std::make_shared<Shading>(
-            ShadingStage().run(scene, *trace.view, *trace.normals, *trace.projection, *trace.depth,
-                               options.shading, probe, threads, recycled));
-        if (context) context->shading = shading;
-        trace.shading = std::move(shading);
-    });
+        double depthShare = 0.0;
+        auto [depth, shading] =
+            ShadingStage().runWithDepthTest(scene, *trace.view, *trace.normals, *trace.projection,
+                                            *trace.scan, threads, recycled, depthShare);
+        const double both = millisecondsSince(start);
+        trace.stageMilliseconds[static_cast<std::size_t>(StageId::DepthTest)] = both * depthShare;
+        trace.stageMilliseconds[static_cast<std::size_t>(StageId::Shading)] =
+            both * (1.0 - depthShare);
+        auto shared = std::make_shared<Shading>(std::move(shading));
+        if (context) {
+            context->shading = shared;
+            context->depth.reset();
+        }
+        trace.depth = std::make_shared<const DepthTest>(std::move(depth));
+        trace.shading = std::move(shared);
+    } else {
+        timed(StageId::DepthTest, [&] {
+            DepthTest* recycled = context ? recyclable(context->depth) : nullptr;
+            auto depth = std::make_shared<DepthTest>(
+                DepthTestStage().run(scene, *trace.projection, *trace.scan, probe, threads,
+                                     recycled, options.keepDepth));
+            if (context) context->depth = depth;
+            trace.depth = std::move(depth);
+        });
+        timed(StageId::Shading, [&] {
+            Shading* recycled = context ? recyclable(context->shading) : nullptr;
+            auto shading = std::make_shared<Shading>(
+                ShadingStage().run(scene, *trace.view, *trace.normals, *trace.projection,
+                                   *trace.depth, options.shading, probe, threads, recycled));
+            if (context) context->shading = shading;
+            trace.shading = std::move(shading);
+        });
+    }
     if (trace.scan->spans.empty() && trace.scan->offscreen > 0) {
         trace.diagnostics.warn(SourceLocation{scene.name, 0, 0},
                                "no triangle covers a pixel: all " +

@@ -24,6 +24,13 @@ struct RenderOptions {
     // z-buffer image read it; an image alone does not, and then each thread keeps only the
     // depths of the band of rows it is testing, in the cache. The image is the same.
     bool keepDepth = true;
+    // Whether the frame keeps, per pixel, the triangle that won it and its barycentrics
+    // (DepthTest::triangle and barycentric): the window's views, the normals image and the
+    // painter's comparison read them. Without them (and without the z-buffer or the normals),
+    // when shadeInBands says it pays, the depth test and shading run together chunk by chunk
+    // (ShadingStage::runWithDepthTest) and the frame keeps the image and which pixels a
+    // triangle covered. The image is the same.
+    bool keepFragments = true;
 };
 
 // Buffers kept from one frame to the next, so that rendering the same size again costs no

@@ -1,6 +1,7 @@
 #include "shading.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <optional>
@@ -85,11 +86,22 @@ vec4 sampleTexture(const Texture& texture, const vec2& st) {
     return texture.at(wrap(st.x, texture.width), wrap(st.y, texture.height));
 }
 
+namespace {
+
+// The depth test run together with shading (ShadingStage::runWithDepthTest): its input, and
+// what it gives back.
+struct InBands {
+    const ScanConversion& scan;
+    DepthTest depth;
+    double depthShare = 0.0;  // of the threads' time, spent testing (the rest shading)
+};
+
+// The shading stage. depth: the frame's depth test, with its ids and barycentrics; or null
+// with bands, when each chunk of rows is shaded as the depth test hands it over.
 template <typename Probe>
-Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const Normals& normals,
-                          const Projection& projection, const DepthTest& depth,
-                          const ShadingOptions& options, Probe& probe, int threads,
-                          Shading* recycled) const {
+Shading shade(const Scene& scene, const ViewTransform& view, const Normals& normals,
+              const Projection& projection, const DepthTest* depth, InBands* bands,
+              const ShadingOptions& options, Probe& probe, int threads, Shading* recycled) {
     Shading out;
     const Conventions& conv = scene.conventions;
     const vec3 background = vec3(conv.background) * conv.colourScale;
@@ -97,20 +109,23 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
     // buffer holds something other than the background in (when both are known).
     const int chunks = (scene.height + kRowChunk - 1) / kRowChunk;
     const bool tracked = !Probe::enabled && !options.keepNormals &&
-                         depth.touched.size() == static_cast<std::size_t>(chunks);
+                         (bands || depth->touched.size() == static_cast<std::size_t>(chunks));
     std::vector<ColumnRange> previous;
     if (recycled) {
         if (tracked && recycled->colour.width() == scene.width &&
             recycled->colour.height() == scene.height && recycled->background == background &&
-            recycled->touched.size() == static_cast<std::size_t>(chunks))
+            recycled->touched.size() == static_cast<std::size_t>(chunks) &&
+            (!bands || recycled->covered.width() == scene.width))
             previous = std::move(recycled->touched);
         out.colour = std::move(recycled->colour);
         out.normal = std::move(recycled->normal);
+        if (bands) out.covered = std::move(recycled->covered);
     }
     out.background = background;
-    if (tracked) out.touched = depth.touched;
+    if (tracked && !bands) out.touched = depth->touched;
     // Every pixel is written below (the background where no triangle won).
     out.colour.resize(scene.width, scene.height);
+    if (bands) out.covered.resize(scene.width, scene.height);
     if (options.keepNormals)
         out.normal.resize(scene.width, scene.height);
     else
@@ -228,17 +243,20 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
         anyPerTriangle = anyPerTriangle || draw.shading != ShadingModel::Phong;
     if (anyPerTriangle) {
         // The triangles that kept a pixel: from the depth test when it worked them out,
-        // otherwise found here.
+        // otherwise found here. In bands, before the depth test: those with a fragment.
         std::vector<std::uint8_t> found;
-        const bool known = depth.visible.size() == projection.triangles.size();
+        const bool known = !bands && depth->visible.size() == projection.triangles.size();
         if (!known) found.assign(projection.triangles.size(), 0);
-        const std::vector<std::uint8_t>& visible = known ? depth.visible : found;
-        const bool touchedKnown = depth.touched.size() == static_cast<std::size_t>(chunks);
-        for (int y = 0; !known && y < scene.height; ++y) {
-            const ColumnRange columns = touchedKnown
-                                            ? depth.touched[static_cast<std::size_t>(y / kRowChunk)]
-                                            : ColumnRange{0, scene.width};
-            const std::uint32_t* idRow = depth.triangle.row(y);
+        const std::vector<std::uint8_t>& visible = known ? depth->visible : found;
+        for (std::size_t t = 0; bands && t < found.size(); ++t)
+            found[t] = bands->scan.spanStart[t] < bands->scan.spanStart[t + 1] ? 1 : 0;
+        const bool touchedKnown =
+            !bands && depth->touched.size() == static_cast<std::size_t>(chunks);
+        for (int y = 0; !known && !bands && y < scene.height; ++y) {
+            const ColumnRange columns =
+                touchedKnown ? depth->touched[static_cast<std::size_t>(y / kRowChunk)]
+                             : ColumnRange{0, scene.width};
+            const std::uint32_t* idRow = depth->triangle.row(y);
             // A run of one triangle's pixels at a time.
             for (int x = columns.begin; x < columns.end;) {
                 const std::uint32_t t = idRow[x];
@@ -386,159 +404,204 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
         }
     }
 
-    // The pixels: rows shared out between the threads (one thread when a probe records).
-    const int parts = Probe::enabled ? 1 : std::max(1, std::min(threads, scene.height));
-    std::vector<Shading> partCounts(static_cast<std::size_t>(parts));
-    runParts(parts, [&](int part) {
-        Shading counts;  // on the thread's stack, not beside the other threads' counters
-        const float scale = conv.colourScale;
-        for (int y = 0; y < scene.height; ++y) {
-            if (parts > 1 && !ownsRow(y, part, parts)) continue;
-            const std::uint32_t* idRow = depth.triangle.row(y);
-            const vec2* baryRow = depth.barycentric.row(y);
-            vec3* colourRow = out.colour.row(y);
-            vec3* normalRow = options.keepNormals ? out.normal.row(y) : nullptr;
-            // The columns to shade, and the background missing outside them.
-            ColumnRange columns{0, scene.width};
-            if (tracked) {
-                const auto c = static_cast<std::size_t>(y / kRowChunk);
-                columns = depth.touched[c];
-                const ColumnRange stale =
-                    previous.empty() ? ColumnRange{0, scene.width} : previous[c];
-                if (columns.begin >= columns.end) {
-                    if (stale.begin < stale.end)
-                        std::fill(colourRow + stale.begin, colourRow + stale.end, background);
-                } else {
-                    if (stale.begin < columns.begin)
-                        std::fill(colourRow + stale.begin,
-                                  colourRow + std::min(stale.end, columns.begin), background);
-                    if (stale.end > columns.end)
-                        std::fill(colourRow + std::max(stale.begin, columns.end),
-                                  colourRow + stale.end, background);
-                }
+    // One row's pixels: idRow and baryRow (null when no draw reads barycentrics) hold what won
+    // them; columns, those to shade (the rest is the background). When tracked, the
+    // background missing outside them is written too. coveredRow: 1 where a triangle won, 0
+    // elsewhere (only in bands, whose ids are not kept).
+    const float scale = conv.colourScale;
+    auto shadeRow = [&](int y, const std::uint32_t* idRow, const vec2* baryRow, ColumnRange columns,
+                        Shading& counts) {
+        vec3* colourRow = out.colour.row(y);
+        vec3* normalRow = options.keepNormals ? out.normal.row(y) : nullptr;
+        std::uint8_t* coveredRow = bands ? out.covered.row(y) : nullptr;
+        if (tracked) {
+            const ColumnRange stale = previous.empty()
+                                          ? ColumnRange{0, scene.width}
+                                          : previous[static_cast<std::size_t>(y / kRowChunk)];
+            const auto clear = [&](int from, int to) {
+                std::fill(colourRow + from, colourRow + to, background);
+                if (coveredRow)
+                    std::memset(coveredRow + from, 0, static_cast<std::size_t>(to - from));
+            };
+            if (columns.begin >= columns.end) {
+                if (stale.begin < stale.end) clear(stale.begin, stale.end);
+            } else {
+                if (stale.begin < columns.begin)
+                    clear(stale.begin, std::min(stale.end, columns.begin));
+                if (stale.end > columns.end) clear(std::max(stale.begin, columns.end), stale.end);
             }
-            int x = columns.begin;
-            while (x < columns.end) {
-                const std::uint32_t t = idRow[x];
-                // A run of pixels won by one triangle (or by none): its set-up is done once.
-                const int end = runEnd(idRow, x + 1, columns.end, t);
-                if (t == kNoTriangle) {
-                    fillColourRun(background, end - x, colourRow + x);
-                    if (normalRow) std::fill(normalRow + x, normalRow + end, vec3(0.0f));
+        }
+        int x = columns.begin;
+        while (x < columns.end) {
+            const std::uint32_t t = idRow[x];
+            // A run of pixels won by one triangle (or by none): its set-up is done once.
+            const int end = runEnd(idRow, x + 1, columns.end, t);
+            if (t == kNoTriangle) {
+                fillColourRun(background, end - x, colourRow + x);
+                if (normalRow) std::fill(normalRow + x, normalRow + end, vec3(0.0f));
+                if (coveredRow) std::memset(coveredRow + x, 0, static_cast<std::size_t>(end - x));
+                x = end;
+                continue;
+            }
+            if (coveredRow) std::memset(coveredRow + x, 1, static_cast<std::size_t>(end - x));
+            const ScreenTriangle& tri = projection.triangles[t];
+            const Draw& draw = scene.draws[tri.draw];
+            const DrawVertices& dv = vertices[tri.draw];
+            const DrawTables& table = tables[tri.draw];
+            if constexpr (!Probe::enabled) {
+                if (kernelDraw[tri.draw]) {
+                    // Many pixels at once, the same bits as phong() (phong_kernel.h).
+                    const vec3& a = dv.pView[tri.v[0]];
+                    const vec3& na = dv.nView[tri.v[0]];
+                    CoursePhongRun run = kernelRuns[tri.draw];
+                    run.p0 = a;
+                    run.dp1 = dv.pView[tri.v[1]] - a;
+                    run.dp2 = dv.pView[tri.v[2]] - a;
+                    run.n0 = na;
+                    run.dn1 = dv.nView[tri.v[1]] - na;
+                    run.dn2 = dv.nView[tri.v[2]] - na;
+                    CoursePhongCounts c;
+                    shadeCoursePhongRun(run, baryRow + x, end - x, colourRow + x,
+                                        normalRow ? normalRow + x : nullptr, scale, c);
+                    const std::size_t shaded = static_cast<std::size_t>(end - x);
+                    counts.shadedPixels += shaded;
+                    addKernelCounts(counts, c, shaded);
+                    counts.clampedPixels += c.clamped;
                     x = end;
                     continue;
                 }
-                const ScreenTriangle& tri = projection.triangles[t];
-                const Draw& draw = scene.draws[tri.draw];
-                const DrawVertices& dv = vertices[tri.draw];
-                const DrawTables& table = tables[tri.draw];
-                if constexpr (!Probe::enabled) {
-                    if (kernelDraw[tri.draw]) {
-                        // Many pixels at once, the same bits as phong() (phong_kernel.h).
-                        const vec3& a = dv.pView[tri.v[0]];
-                        const vec3& na = dv.nView[tri.v[0]];
-                        CoursePhongRun run = kernelRuns[tri.draw];
-                        run.p0 = a;
-                        run.dp1 = dv.pView[tri.v[1]] - a;
-                        run.dp2 = dv.pView[tri.v[2]] - a;
-                        run.n0 = na;
-                        run.dn1 = dv.nView[tri.v[1]] - na;
-                        run.dn2 = dv.nView[tri.v[2]] - na;
-                        CoursePhongCounts c;
-                        shadeCoursePhongRun(run, baryRow + x, end - x, colourRow + x,
-                                            normalRow ? normalRow + x : nullptr, scale, c);
-                        const std::size_t shaded = static_cast<std::size_t>(end - x);
-                        counts.shadedPixels += shaded;
-                        addKernelCounts(counts, c, shaded);
-                        counts.clampedPixels += c.clamped;
-                        x = end;
-                        continue;
-                    }
-                    if (litPerTriangle(draw.shading) && !normalRow) {
-                        // One colour for the whole run.
-                        const vec3 colour = table.flatColour[tri.source];
-                        fillColourRun(colour, end - x, colourRow + x);
-                        const auto n = static_cast<std::size_t>(end - x);
-                        counts.shadedPixels += n;
-                        if (colour.r > scale || colour.g > scale || colour.b > scale)
-                            counts.clampedPixels += n;
-                        x = end;
-                        continue;
-                    }
-                    if (draw.shading == ShadingModel::Gouraud && !normalRow && !perspective) {
-                        // c0 + beta (c1 - c0) + gamma (c2 - c0), as interpolate() writes it.
-                        const vec3 c0 = table.vertexColour[tri.v[0]];
-                        const vec3 d1 = table.vertexColour[tri.v[1]] - c0;
-                        const vec3 d2 = table.vertexColour[tri.v[2]] - c0;
-                        counts.clampedPixels +=
-                            shadeGouraudRun(c0, d1, d2, baryRow + x, end - x, colourRow + x, scale);
-                        counts.shadedPixels += static_cast<std::size_t>(end - x);
-                        x = end;
-                        continue;
-                    }
+                if (litPerTriangle(draw.shading) && !normalRow) {
+                    // One colour for the whole run.
+                    const vec3 colour = table.flatColour[tri.source];
+                    fillColourRun(colour, end - x, colourRow + x);
+                    const auto n = static_cast<std::size_t>(end - x);
+                    counts.shadedPixels += n;
+                    if (colour.r > scale || colour.g > scale || colour.b > scale)
+                        counts.clampedPixels += n;
+                    x = end;
+                    continue;
                 }
-                for (; x < end; ++x) {
-                    float beta = baryRow[x].x;
-                    float gamma = baryRow[x].y;
-                    vec3 colour(0.0f);
-                    vec3 usedNormal(0.0f);
-                    [[maybe_unused]] ShadeEvent event;
-                    if (perspective)
-                        perspectiveWeights(beta, gamma, dv.invW[tri.v[0]], dv.invW[tri.v[1]],
-                                           dv.invW[tri.v[2]]);
-                    switch (draw.shading) {
-                        case ShadingModel::Phong: {
-                            const vec3 p = dv.pView.empty()
-                                               ? vec3(0.0f)
-                                               : interpolate(dv.pView, tri.v, beta, gamma);
-                            const vec3 n = normalAt(draw, dv, tri, beta, gamma);
-                            const PhongSample s =
-                                light(draw, colourAt(draw, dv, tri, beta, gamma), p, n);
-                            if (draw.lighting != LightingModel::Unlit) count(counts, s);
-                            colour = s.colour();
-                            usedNormal = s.n;
-                            RL_PROBE_HOOK(event.pView = p; event.nInterpolated = n;
-                                          event.sample = s);
-                            break;
-                        }
-                        case ShadingModel::Flat:
-                        case ShadingModel::Painter: {
-                            colour = table.flatColour[tri.source];
-                            usedNormal = table.flatNormal[tri.source];
-                            RL_PROBE_HOOK(event.sample =
-                                              flatSample(tri, &event.pView, &event.nInterpolated));
-                            break;
-                        }
-                        case ShadingModel::Gouraud: {
-                            const vec3 c0 = table.vertexColour[tri.v[0]];
-                            const vec3 c1 = table.vertexColour[tri.v[1]];
-                            const vec3 c2 = table.vertexColour[tri.v[2]];
-                            colour = c0 + beta * (c1 - c0) + gamma * (c2 - c0);
-                            if (normalRow && !dv.pView.empty()) {
-                                // The normal Phong would use here: interpolated,
-                                // normalised, turned toward the viewer, so that the
-                                // normals image means the same in every shading model.
-                                const vec3 p = interpolate(dv.pView, tri.v, beta, gamma);
-                                usedNormal =
-                                    orientedNormal(normalAt(draw, dv, tri, beta, gamma), p, flip);
-                            }
-                            RL_PROBE_HOOK(event.vertexColours = {c0, c1, c2});
-                            break;
-                        }
-                    }
-                    colourRow[x] = colour;
-                    ++counts.shadedPixels;
+                if (draw.shading == ShadingModel::Gouraud && !normalRow && !perspective) {
+                    // c0 + beta (c1 - c0) + gamma (c2 - c0), as interpolate() writes it.
+                    const vec3 c0 = table.vertexColour[tri.v[0]];
+                    const vec3 d1 = table.vertexColour[tri.v[1]] - c0;
+                    const vec3 d2 = table.vertexColour[tri.v[2]] - c0;
                     counts.clampedPixels +=
-                        (colour.r > scale || colour.g > scale || colour.b > scale) ? 1 : 0;
-                    if (normalRow) normalRow[x] = usedNormal;
-                    RL_PROBE_HOOK(event.triangle = t; event.x = x; event.y = y;
-                                  event.model = draw.shading; event.colour = colour;
-                                  probe.onShade(event));
+                        shadeGouraudRun(c0, d1, d2, baryRow + x, end - x, colourRow + x, scale);
+                    counts.shadedPixels += static_cast<std::size_t>(end - x);
+                    x = end;
+                    continue;
                 }
             }
+            for (; x < end; ++x) {
+                float beta = baryRow ? baryRow[x].x : 0.0f;
+                float gamma = baryRow ? baryRow[x].y : 0.0f;
+                vec3 colour(0.0f);
+                vec3 usedNormal(0.0f);
+                [[maybe_unused]] ShadeEvent event;
+                if (perspective)
+                    perspectiveWeights(beta, gamma, dv.invW[tri.v[0]], dv.invW[tri.v[1]],
+                                       dv.invW[tri.v[2]]);
+                switch (draw.shading) {
+                    case ShadingModel::Phong: {
+                        const vec3 p = dv.pView.empty() ? vec3(0.0f)
+                                                        : interpolate(dv.pView, tri.v, beta, gamma);
+                        const vec3 n = normalAt(draw, dv, tri, beta, gamma);
+                        const PhongSample s =
+                            light(draw, colourAt(draw, dv, tri, beta, gamma), p, n);
+                        if (draw.lighting != LightingModel::Unlit) count(counts, s);
+                        colour = s.colour();
+                        usedNormal = s.n;
+                        RL_PROBE_HOOK(event.pView = p; event.nInterpolated = n; event.sample = s);
+                        break;
+                    }
+                    case ShadingModel::Flat:
+                    case ShadingModel::Painter: {
+                        colour = table.flatColour[tri.source];
+                        usedNormal = table.flatNormal[tri.source];
+                        RL_PROBE_HOOK(event.sample =
+                                          flatSample(tri, &event.pView, &event.nInterpolated));
+                        break;
+                    }
+                    case ShadingModel::Gouraud: {
+                        const vec3 c0 = table.vertexColour[tri.v[0]];
+                        const vec3 c1 = table.vertexColour[tri.v[1]];
+                        const vec3 c2 = table.vertexColour[tri.v[2]];
+                        colour = c0 + beta * (c1 - c0) + gamma * (c2 - c0);
+                        if (normalRow && !dv.pView.empty()) {
+                            // The normal Phong would use here: interpolated,
+                            // normalised, turned toward the viewer, so that the
+                            // normals image means the same in every shading model.
+                            const vec3 p = interpolate(dv.pView, tri.v, beta, gamma);
+                            usedNormal =
+                                orientedNormal(normalAt(draw, dv, tri, beta, gamma), p, flip);
+                        }
+                        RL_PROBE_HOOK(event.vertexColours = {c0, c1, c2});
+                        break;
+                    }
+                }
+                colourRow[x] = colour;
+                ++counts.shadedPixels;
+                counts.clampedPixels +=
+                    (colour.r > scale || colour.g > scale || colour.b > scale) ? 1 : 0;
+                if (normalRow) normalRow[x] = usedNormal;
+                RL_PROBE_HOOK(event.triangle = t; event.x = x; event.y = y;
+                              event.model = draw.shading; event.colour = colour;
+                              probe.onShade(event));
+            }
         }
-        partCounts[static_cast<std::size_t>(part)] = std::move(counts);
-    });
+    };
+
+    const int parts = Probe::enabled ? 1 : std::max(1, std::min(threads, scene.height));
+    std::vector<Shading> partCounts(static_cast<std::size_t>(parts));
+    if (bands) {
+        // Each chunk as soon as the thread that tested it hands it over, from its band (in
+        // that thread's cache); the time each thread spends testing and shading is summed.
+        // Each thread's counts and times on cache lines of their own.
+        using Clock = std::chrono::steady_clock;
+        struct alignas(64) PartTime {
+            Clock::time_point last;
+            Clock::duration testing{}, shading{};
+            Shading counts;
+        };
+        std::vector<PartTime> times(static_cast<std::size_t>(parts));
+        for (PartTime& t : times) t.last = Clock::now();
+        bands->depth = DepthTestStage().runBands(
+            scene, projection, bands->scan, parts, [&](const TestedBand& band) {
+                const auto part = static_cast<std::size_t>(band.part);
+                const Clock::time_point start = Clock::now();
+                times[part].testing += start - times[part].last;
+                for (int y = band.y0; y < band.y1; ++y) {
+                    const auto row = static_cast<std::size_t>(y - band.y0) * band.stride;
+                    shadeRow(y, band.ids + row, band.bary ? band.bary + row : nullptr, band.columns,
+                             times[part].counts);
+                }
+                times[part].last = Clock::now();
+                times[part].shading += times[part].last - start;
+            });
+        out.touched = bands->depth.touched;
+        Clock::duration testing{}, shading{};
+        for (std::size_t part = 0; part < times.size(); ++part) {
+            testing += times[part].testing;
+            shading += times[part].shading;
+            partCounts[part] = std::move(times[part].counts);
+        }
+        const double sum = std::chrono::duration<double>(testing + shading).count();
+        bands->depthShare = sum > 0.0 ? std::chrono::duration<double>(testing).count() / sum : 0.5;
+    } else {
+        // The rows shared out between the threads (one thread when a probe records).
+        runParts(parts, [&](int part) {
+            Shading counts;  // on the thread's stack, not beside the other threads' counters
+            for (int y = 0; y < scene.height; ++y) {
+                if (parts > 1 && !ownsRow(y, part, parts)) continue;
+                const ColumnRange columns =
+                    tracked ? depth->touched[static_cast<std::size_t>(y / kRowChunk)]
+                            : ColumnRange{0, scene.width};
+                shadeRow(y, depth->triangle.row(y), depth->barycentric.row(y), columns, counts);
+            }
+            partCounts[static_cast<std::size_t>(part)] = std::move(counts);
+        });
+    }
     for (const Shading& c : partCounts) {
         out.shadedPixels += c.shadedPixels;
         out.phongEvaluations += c.phongEvaluations;
@@ -548,7 +611,46 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
         out.noNormal += c.noNormal;
         out.clampedPixels += c.clampedPixels;
     }
+    if (bands) bands->depth.covered = out.shadedPixels;
     return out;
+}
+
+}  // namespace
+
+template <typename Probe>
+Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const Normals& normals,
+                          const Projection& projection, const DepthTest& depth,
+                          const ShadingOptions& options, Probe& probe, int threads,
+                          Shading* recycled) const {
+    return shade(scene, view, normals, projection, &depth, nullptr, options, probe, threads,
+                 recycled);
+}
+
+bool shadeInBands(const Scene& scene, const Projection& projection, const ScanConversion& scan) {
+    // What lighting the triangles with a fragment costs, in points lit (every vertex of a
+    // Gouraud one, the triangle itself when flat), against the fragments to test.
+    std::size_t lit = 0, fragments = 0;
+    for (std::size_t t = 0; t < projection.triangles.size(); ++t) {
+        const std::uint32_t first = scan.spanStart[t], last = scan.spanStart[t + 1];
+        if (first == last) continue;
+        const ShadingModel model = scene.draws[projection.triangles[t].draw].shading;
+        lit += model == ShadingModel::Gouraud ? 3 : litPerTriangle(model) ? 1 : 0;
+        for (std::uint32_t k = first; k < last; ++k)
+            fragments += static_cast<std::size_t>(scan.spans[k].xEnd - scan.spans[k].xBegin);
+    }
+    return lit * kBandsFragmentsPerPoint <= fragments;
+}
+
+std::pair<DepthTest, Shading> ShadingStage::runWithDepthTest(
+    const Scene& scene, const ViewTransform& view, const Normals& normals,
+    const Projection& projection, const ScanConversion& scan, int threads, Shading* recycled,
+    double& depthShare) const {
+    NullProbe probe;
+    InBands bands{scan, DepthTest{}, 0.0};
+    Shading shading = shade(scene, view, normals, projection, nullptr, &bands, ShadingOptions{},
+                            probe, threads, recycled);
+    depthShare = bands.depthShare;
+    return {std::move(bands.depth), std::move(shading)};
 }
 
 Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const Normals& normals,

@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "depth_test.h"
@@ -44,6 +45,9 @@ struct Shading {
     // frame that reuses these buffers writes the background only where it is missing.
     std::vector<ColumnRange> touched;
     vec3 background = vec3(0.0f);  // of the pixels outside touched
+    // 1 where a triangle won the pixel, 0 elsewhere: only when shaded in bands
+    // (ShadingStage::runWithDepthTest), whose depth test keeps no ids; empty otherwise.
+    Image<std::uint8_t> covered;
 };
 
 // The pieces of per-pixel shading that the views explain: the very code the stage runs.
@@ -162,6 +166,24 @@ public:
                 const Projection& projection, const DepthTest& depth,
                 const ShadingOptions& options = {}, int threads = 1,
                 Shading* recycled = nullptr) const;
+    // The depth test and shading together, for a frame that keeps its image alone: each
+    // thread shades a chunk of rows as soon as it has tested it, from the band it tested it
+    // in (DepthTestStage::runBands), so that the ids and barycentrics never leave its cache;
+    // only the colours (and covered) go to memory. The image is the same bits as run's after
+    // the depth test's; the depth test keeps no per-pixel buffer. Flat and Gouraud colours
+    // are worked out first, for every triangle with a fragment (shadeInBands: when they are
+    // few next to the pixels). depthShare: of the threads' time, the part spent testing.
+    std::pair<DepthTest, Shading> runWithDepthTest(const Scene& scene, const ViewTransform& view,
+                                                   const Normals& normals,
+                                                   const Projection& projection,
+                                                   const ScanConversion& scan, int threads,
+                                                   Shading* recycled, double& depthShare) const;
 };
+
+// Whether shading in bands (ShadingStage::runWithDepthTest) pays: the points its flat and
+// Gouraud draws light before the depth test (those of every triangle with a fragment, not
+// only those that keep a pixel) are at most one per kBandsFragmentsPerPoint fragments.
+inline constexpr std::size_t kBandsFragmentsPerPoint = 4;
+bool shadeInBands(const Scene& scene, const Projection& projection, const ScanConversion& scan);
 
 }  // namespace rl

@@ -846,7 +846,7 @@ void TestCli::outOfMemory() {
         QStringLiteral("/bin/sh"),
         {QStringLiteral("-c"), QStringLiteral("ulimit -v 1500000 && exec \"$0\" \"$@\""),
          testing::cliPath(), QStringLiteral("render"), QStringLiteral("--size"),
-         QStringLiteral("8000x8000"), QStringLiteral("--max-pixels"), QStringLiteral("100000000"),
+         QStringLiteral("11000x11000"), QStringLiteral("--max-pixels"), QStringLiteral("150000000"),
          QStringLiteral("--output"), QStringLiteral("big.png")});
     QVERIFY(process.waitForFinished(120000));
     QCOMPARE(process.exitStatus(), QProcess::NormalExit);

@@ -27,6 +27,7 @@
 #include "default_scene_resource.h"
 #include "frame_memory.h"
 #include "mesh_topology.h"
+#include "output_image.h"
 #include "renderer.h"
 #include "test_support.h"
 
@@ -97,6 +98,45 @@ QString differenceWithoutZBuffer(const FrameTrace& a, const FrameTrace& b) {
     depth->depthKept = false;
     withoutZ.depth = depth;
     return difference(withoutZ, b);
+}
+
+// The same, for a frame b whose depth test and shading ran in bands
+// (ShadingStage::runWithDepthTest): no per-pixel buffer but the image and which pixels are
+// covered, and the counts a's. Flat and Gouraud draws light every triangle with a fragment
+// first, so their lighting counts may be larger; Phong's are the same.
+QString differenceInBands(const FrameTrace& a, const FrameTrace& b) {
+    const DepthTest& p = *a.depth;
+    const DepthTest& q = *b.depth;
+    if (q.fragmentsKept || q.depthKept) return QStringLiteral("per-pixel buffers kept");
+    if (!q.triangle.empty() || !q.barycentric.empty() || !q.depth.empty())
+        return QStringLiteral("per-pixel buffers not empty");
+    if (p.fragments != q.fragments || p.passed != q.passed || p.rejected != q.rejected ||
+        p.outsideDepthRange != q.outsideDepthRange)
+        return QStringLiteral("depth counts");
+    if (p.coveredPixels() != q.coveredPixels()) return QStringLiteral("covered pixels");
+    const Shading& x = *a.shading;
+    const Shading& y = *b.shading;
+    if (y.covered.width() != p.triangle.width() || y.covered.height() != p.triangle.height())
+        return QStringLiteral("covered size");
+    for (int row = 0; row < p.triangle.height(); ++row)
+        for (int col = 0; col < p.triangle.width(); ++col)
+            if ((y.covered.at(col, row) != 0) != (p.triangle.at(col, row) != kNoTriangle))
+                return QStringLiteral("covered at %1,%2").arg(col).arg(row);
+    if (x.colour != y.colour) return QStringLiteral("colour buffer");
+    const Conventions& conventions = a.scene->conventions;
+    if (colourImage(x, p, conventions).rgba != colourImage(y, q, conventions).rgba)
+        return QStringLiteral("image");
+    if (x.shadedPixels != y.shadedPixels) return QStringLiteral("shaded pixels");
+    if (x.clampedPixels != y.clampedPixels) return QStringLiteral("clamped pixels");
+    bool perTriangle = false;
+    for (const Draw& draw : a.scene->draws)
+        perTriangle = perTriangle || draw.shading != ShadingModel::Phong;
+    if (perTriangle ? y.phongEvaluations < x.phongEvaluations
+                    : y.phongEvaluations != x.phongEvaluations || y.flipped != x.flipped ||
+                          y.lightBehind != x.lightBehind || y.noSpecular != x.noSpecular ||
+                          y.noNormal != x.noNormal)
+        return QStringLiteral("lighting counts");
+    return {};
 }
 
 // A tetrahedron with outward normals by the right-hand rule.
@@ -232,6 +272,31 @@ private slots:
                                         .arg(diff)));
             }
             options.keepDepth = true;
+            auto kept = renderFrame(scene, options, &context);
+            QVERIFY(kept.ok());
+            QCOMPARE(difference(*plain, *kept), QString());
+        }
+        // In bands where that pays (shadeInBands), through the same context and back: a
+        // frame that keeps nothing per pixel after one that kept everything, and the other
+        // way round.
+        const bool bands = shadeInBands(*scene, *plain->projection, *plain->scan);
+        for (int threads : {1, 2, 3, 5}) {
+            options.threads = threads;
+            {
+                options.keepDepth = false;
+                options.keepFragments = false;
+                auto banded = renderFrame(scene, options, &context);
+                QVERIFY(banded.ok());
+                QCOMPARE(banded->depth->fragmentsKept, !bands);
+                const QString diff = bands ? differenceInBands(*plain, *banded)
+                                           : differenceWithoutZBuffer(*plain, *banded);
+                QVERIFY2(diff.isEmpty(),
+                         qPrintable(QStringLiteral("%1 thread(s), in bands: %2 differ")
+                                        .arg(threads)
+                                        .arg(diff)));
+            }
+            options.keepDepth = true;
+            options.keepFragments = true;
             auto kept = renderFrame(scene, options, &context);
             QVERIFY(kept.ok());
             QCOMPARE(difference(*plain, *kept), QString());
@@ -430,6 +495,42 @@ private slots:
         auto parts = rasterlab::loadDefaultCourseScene(diagnostics);
         QVERIFY(parts);
         QCOMPARE(parts->object.mesh->closedWinding, closedSurfaceWinding(*parts->object.mesh));
+    }
+
+    void bandsWhenPixelsOutnumberLitPoints() {
+        // Gouraud lights three points per triangle with a fragment before the depth test in
+        // bands; bands pay when they are at most one in kBandsFragmentsPerPoint fragments.
+        const auto check = [](const char* name, int width, int height, ShadingModel model) {
+            auto scene = makeBenchmarkScene(name, width, height, model);
+            if (!scene) qFatal("no %s", name);
+            auto shared = std::make_shared<const Scene>(std::move(*scene));
+            RenderOptions options;
+            options.keepDepth = false;
+            options.keepFragments = false;
+            options.threads = 2;
+            auto frame = renderFrame(shared, options);
+            if (!frame.ok()) qFatal("%s", frame.error().toString().c_str());
+            std::size_t withFragments = 0;
+            for (std::size_t t = 0; t + 1 < frame->scan->spanStart.size(); ++t)
+                withFragments += frame->scan->spanStart[t] < frame->scan->spanStart[t + 1];
+            const std::size_t points = model == ShadingModel::Gouraud ? 3 * withFragments
+                                       : model == ShadingModel::Flat  ? withFragments
+                                                                      : 0;
+            const bool expected = points * kBandsFragmentsPerPoint <= frame->depth->fragments;
+            if (shadeInBands(*shared, *frame->projection, *frame->scan) != expected ||
+                frame->depth->fragmentsKept == expected)
+                qFatal("%s %dx%d: bands %d, expected %d", name, width, height,
+                       int(!frame->depth->fragmentsKept), int(expected));
+            return expected;
+        };
+        // A sphere filling the screen: 76,800 fragments, at most 3,000 points.
+        QVERIFY(check("full-screen", 320, 240, ShadingModel::Gouraud));
+        QVERIFY(check("full-screen", 320, 240, ShadingModel::Flat));
+        // 100,000 triangles on 32x24 pixels: about a fragment per triangle that has one.
+        QVERIFY(!check("sphere-100k", 32, 24, ShadingModel::Gouraud));
+        QVERIFY(!check("sphere-100k", 32, 24, ShadingModel::Flat));
+        // Phong lights nothing before the depth test: always in bands.
+        QVERIFY(check("sphere-100k", 32, 24, ShadingModel::Phong));
     }
 
     void hiddenBackFacesAreLeftOut() {
