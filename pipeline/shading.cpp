@@ -248,20 +248,22 @@ Shading shade(const Scene& scene, const ViewTransform& view, const Normals& norm
         const bool known = !bands && depth->visible.size() == projection.triangles.size();
         if (!known) found.assign(projection.triangles.size(), 0);
         const std::vector<std::uint8_t>& visible = known ? depth->visible : found;
-        for (std::size_t t = 0; bands && t < found.size(); ++t)
-            found[t] = bands->scan.spanStart[t] < bands->scan.spanStart[t + 1] ? 1 : 0;
-        const bool touchedKnown =
-            !bands && depth->touched.size() == static_cast<std::size_t>(chunks);
-        for (int y = 0; !known && !bands && y < scene.height; ++y) {
-            const ColumnRange columns =
-                touchedKnown ? depth->touched[static_cast<std::size_t>(y / kRowChunk)]
-                             : ColumnRange{0, scene.width};
-            const std::uint32_t* idRow = depth->triangle.row(y);
-            // A run of one triangle's pixels at a time.
-            for (int x = columns.begin; x < columns.end;) {
-                const std::uint32_t t = idRow[x];
-                if (t != kNoTriangle) found[t] = 1;
-                x = runEnd(idRow, x + 1, columns.end, t);
+        if (bands) {
+            for (std::size_t t = 0; t < found.size(); ++t)
+                found[t] = bands->scan.spanStart[t] < bands->scan.spanStart[t + 1] ? 1 : 0;
+        } else if (!known) {
+            const bool touchedKnown = depth->touched.size() == static_cast<std::size_t>(chunks);
+            for (int y = 0; y < scene.height; ++y) {
+                const ColumnRange columns =
+                    touchedKnown ? depth->touched[static_cast<std::size_t>(y / kRowChunk)]
+                                 : ColumnRange{0, scene.width};
+                const std::uint32_t* idRow = depth->triangle.row(y);
+                // A run of one triangle's pixels at a time.
+                for (int x = columns.begin; x < columns.end;) {
+                    const std::uint32_t t = idRow[x];
+                    if (t != kNoTriangle) found[t] = 1;
+                    x = runEnd(idRow, x + 1, columns.end, t);
+                }
             }
         }
         // Which flat triangles and Gouraud vertices are needed (done = kNeeded), then their
@@ -628,17 +630,18 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
 
 bool shadeInBands(const Scene& scene, const Projection& projection, const ScanConversion& scan) {
     // What lighting the triangles with a fragment costs, in points lit (every vertex of a
-    // Gouraud one, the triangle itself when flat), against the fragments to test.
-    std::size_t lit = 0, fragments = 0;
+    // Gouraud one, the triangle itself when flat), against the fragments to test (scan
+    // conversion's count). Phong lights nothing ahead: no triangle to look at.
+    bool perPoint = false;
+    for (const Draw& draw : scene.draws) perPoint = perPoint || draw.shading != ShadingModel::Phong;
+    if (!perPoint) return true;
+    std::size_t lit = 0;
     for (std::size_t t = 0; t < projection.triangles.size(); ++t) {
-        const std::uint32_t first = scan.spanStart[t], last = scan.spanStart[t + 1];
-        if (first == last) continue;
+        if (scan.spanStart[t] == scan.spanStart[t + 1]) continue;
         const ShadingModel model = scene.draws[projection.triangles[t].draw].shading;
         lit += model == ShadingModel::Gouraud ? 3 : litPerTriangle(model) ? 1 : 0;
-        for (std::uint32_t k = first; k < last; ++k)
-            fragments += static_cast<std::size_t>(scan.spans[k].xEnd - scan.spans[k].xBegin);
     }
-    return lit * kBandsFragmentsPerPoint <= fragments;
+    return lit * kBandsFragmentsPerPoint <= scan.pixels;
 }
 
 std::pair<DepthTest, Shading> ShadingStage::runWithDepthTest(
