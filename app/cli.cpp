@@ -554,6 +554,8 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
     // Nor the ids and barycentrics of the winning fragments, but for the painter's comparison
     // and the normals image: then the depth test and shading may run band by band.
     options.keepFragments = options.keepDepth || parser.isSet(normalsOutput);
+    // Only the normals each draw's shading reads (the normals image is the shading's own).
+    options.keepAllNormals = false;
     // With --explain-pixel the one render records that pixel's events; the recording probe
     // leaves every buffer as the plain render would.
     std::optional<rl::RecordingProbe> probe;
@@ -675,7 +677,14 @@ int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& 
         std::optional<rl::RecordingProbe> probe;
         if (explainHere) probe = rl::RecordingProbe::forPixel(explainX, explainY);
         auto shared = std::make_shared<const rl::Scene>(scene);
-        auto trace = probe ? rl::traceFrame(shared, {}, *probe) : rl::renderFrame(shared);
+        // The image alone is written: no z-buffer, ids or barycentrics are kept, and each
+        // draw gets only the normals its shading reads (the recording probe keeps them all).
+        rl::RenderOptions options;
+        options.keepDepth = false;
+        options.keepFragments = false;
+        options.keepAllNormals = false;
+        auto trace =
+            probe ? rl::traceFrame(shared, {}, *probe) : rl::renderFrame(shared, options);
         if (!trace) return inputError(err, trace.error());
         printDiagnostics(trace->diagnostics, err);
         const QString name = QString::fromStdString(image.fileName);
@@ -780,11 +789,13 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     options.threads = threadCount;  // 0: every core
     options.keepDepth = parser.isSet(keepDepth);
     options.keepFragments = options.keepDepth;
+    options.keepAllNormals = false;
     rl::RenderContext context;  // buffers reused from frame to frame
     std::vector<double> total;
     std::vector<std::array<double, rl::kStageCount>> stages;
     std::size_t covered = 0, fragments = 0;
     bool inBands = false;  // depth test and shading run together (RenderOptions::keepFragments)
+    std::size_t triangleNormalsLeftOut = 0, vertexNormalsLeftOut = 0;  // draws (normalsRead)
     int usedThreads = 0;
     double firstRss = -1.0;  // resident memory after the first timed frame, MiB
     for (int i = 0; i < warmupCount + frameCount; ++i) {
@@ -797,6 +808,8 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
         // would bring it into the cache for the next one.
         if (i + 1 == warmupCount + frameCount) covered = trace->depth->coveredPixels();
         inBands = !trace->depth->fragmentsKept;
+        triangleNormalsLeftOut = trace->normals->triangleNormalsLeftOut;
+        vertexNormalsLeftOut = trace->normals->vertexNormalsLeftOut;
         fragments = trace->depth->fragments;
         usedThreads = trace->threads;
         if (i == warmupCount) firstRss = memoryMiB("VmRSS:");
@@ -829,6 +842,8 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
             << ", \"frames\": " << frameCount
             << ", \"z_buffer_kept\": " << (options.keepDepth ? "true" : "false")
             << ", \"shaded_in_bands\": " << (inBands ? "true" : "false")
+            << ", \"draws_without_triangle_normals\": " << triangleNormalsLeftOut
+            << ", \"draws_without_vertex_normals\": " << vertexNormalsLeftOut
             << ", \"median_ms\": " << number(medianMs, 3) << ", \"min_ms\": " << number(minMs, 3)
             << ", \"max_ms\": " << number(maxMs, 3) << ", \"covered_pixels\": " << covered
             << ", \"fragments\": " << fragments << ", \"mpixels_per_s\": " << number(mpixels, 2)
@@ -858,6 +873,12 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
                           "thread that tested it, from its band (the two stages' times are "
                           "their sum split as the threads spent it)."
                         : "")
+            << (triangleNormalsLeftOut + vertexNormalsLeftOut > 0
+                    ? lit(" Normals: only those the shading reads (left out: the triangles' of "
+                          "%1 draw(s), the vertices' of %2).")
+                          .arg(triangleNormalsLeftOut)
+                          .arg(vertexNormalsLeftOut)
+                    : QString())
             << "\n\n"
             << "| stage | median ms |\n|---|---|\n";
         for (std::size_t k = 0; k < stageMedian.size(); ++k)

@@ -3,7 +3,9 @@
 // every vertex normal is normalised. Normals given by the file (seed 001's `normal`) are
 // used instead, carried to view space by the inverse transpose of the model/view matrix. Degenerate
 // (zero-area) triangles have no normal and contribute nothing; they are counted, as are vertices
-// left without a normal. Skipped when the scene is not lit (nothing would read the normals).
+// left without a normal. Skipped when the scene is not lit (nothing would read the normals);
+// a frame that keeps only its image works out only what each draw's shading reads
+// (NormalsScope::Read: no vertex normal for a flat draw, no triangle normal for Gouraud).
 #pragma once
 
 #include <cstdint>
@@ -17,8 +19,10 @@
 namespace rl {
 
 struct DrawNormals {
-    std::vector<vec3> triangle;  // unit length, or zero for a degenerate triangle
-    std::vector<vec3> vertex;    // unit length, or zero for a vertex with no normal
+    // Unit length, or zero for a degenerate triangle or a vertex with no normal. Empty when
+    // left out (NormalsScope::Read).
+    std::vector<vec3> triangle;
+    std::vector<vec3> vertex;
     std::size_t degenerateTriangles = 0;
     std::size_t verticesWithoutNormal = 0;  // used by no triangle, or only by degenerate ones
 };
@@ -28,6 +32,23 @@ struct Normals {
     std::string skipReason;
     std::vector<DrawNormals> draws;
     std::size_t degenerateTriangles = 0;
+    // Draws whose triangle normals, or vertex normals, were left out (NormalsScope::Read):
+    // their vectors are empty.
+    std::size_t triangleNormalsLeftOut = 0, vertexNormalsLeftOut = 0;
+};
+
+// What a draw's shading reads of the normals: the triangles' when it is lit once per triangle
+// (flat, painter) or Phong shaded with flat normals; the vertices' when Gouraud (its vertices
+// are lit with them) or Phong shaded with interpolated normals. An unlit draw reads neither.
+struct NormalsRead {
+    bool triangle = false;
+    bool vertex = false;
+};
+NormalsRead normalsRead(const Draw& draw);
+
+enum class NormalsScope : std::uint8_t {
+    All,   // every triangle's and every vertex's normal (the window's normals view draws them)
+    Read,  // only what each draw's shading reads (normalsRead); the image is the same
 };
 
 class NormalsStage {
@@ -35,7 +56,8 @@ public:
     // threads: the triangles and vertices are shared out between them (parallel.h); each
     // vertex still sums its triangles' normals in triangle order, so the result is the same
     // bits for any number.
-    Normals run(const Scene& scene, const ViewTransform& view, int threads = 1) const;
+    Normals run(const Scene& scene, const ViewTransform& view, int threads = 1,
+                NormalsScope scope = NormalsScope::All) const;
 };
 
 }  // namespace rl

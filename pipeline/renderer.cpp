@@ -62,8 +62,12 @@ Result<FrameTrace> run(std::shared_ptr<const Scene> scenePtr, const RenderOption
             ViewTransformStage().run(scene, *trace.cameraBasis));
     });
     timed(StageId::Normals, [&] {
-        trace.normals =
-            std::make_shared<const Normals>(NormalsStage().run(scene, *trace.view, threads));
+        const NormalsScope scope =
+            Probe::enabled || options.keepAllNormals || options.shading.keepNormals
+                ? NormalsScope::All
+                : NormalsScope::Read;
+        trace.normals = std::make_shared<const Normals>(
+            NormalsStage().run(scene, *trace.view, threads, scope));
     });
     timed(StageId::Projection, [&] {
         trace.projection = std::make_shared<const Projection>(

@@ -31,6 +31,11 @@ struct RenderOptions {
     // (ShadingStage::runWithDepthTest) and the frame keeps the image and which pixels a
     // triangle covered. The image is the same.
     bool keepFragments = true;
+    // Whether the frame keeps every triangle's and every vertex's normal: the window's normals
+    // view draws them. Without it (and without the normals image), each draw gets only the
+    // normals its shading reads (normalsRead: a flat sphere, say, sums no vertex normals).
+    // The image is the same.
+    bool keepAllNormals = true;
 };
 
 // Buffers kept from one frame to the next, so that rendering the same size again costs no

@@ -1067,16 +1067,23 @@ void TestCli::bench_data() {
     QTest::addColumn<int>("triangles");
     QTest::addColumn<int>("threads");
     QTest::addColumn<bool>("zBufferKept");
+    // Draws whose triangle normals and vertex normals are left out (nothing reads them).
+    QTest::addColumn<int>("withoutTriangleNormals");
+    QTest::addColumn<int>("withoutVertexNormals");
     QTest::newRow("default scene, 2 threads")
-        << QStringList({"--size", "200x150", "--threads", "2"}) << 7776 << 2 << false;
+        << QStringList({"--size", "200x150", "--threads", "2"}) << 7776 << 2 << false << 1 << 0;
     QTest::newRow("sphere, gouraud, 1 thread")
         << QStringList({"--scene", "sphere-1k", "--size", "160x120", "--shading", "gouraud",
                         "--threads", "1"})
-        << 1000 << 1 << false;
+        << 1000 << 1 << false << 1 << 0;
     QTest::newRow("sphere, gouraud, 1 thread, z-buffer kept")
         << QStringList({"--scene", "sphere-1k", "--size", "160x120", "--shading", "gouraud",
                         "--threads", "1", "--keep-depth"})
-        << 1000 << 1 << true;
+        << 1000 << 1 << true << 1 << 0;
+    QTest::newRow("torus, flat, 2 threads")
+        << QStringList({"--scene", "torus-1k", "--size", "160x120", "--shading", "flat",
+                        "--threads", "2"})
+        << 1000 << 2 << false << 0 << 1;
 }
 
 void TestCli::bench() {
@@ -1084,6 +1091,8 @@ void TestCli::bench() {
     QFETCH(int, triangles);
     QFETCH(int, threads);
     QFETCH(bool, zBufferKept);
+    QFETCH(int, withoutTriangleNormals);
+    QFETCH(int, withoutVertexNormals);
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     CliRun run;
@@ -1098,6 +1107,10 @@ void TestCli::bench() {
     QCOMPARE(o.value(QStringLiteral("threads")).toInt(), threads);
     QCOMPARE(o.value(QStringLiteral("frames")).toInt(), 5);
     QCOMPARE(o.value(QStringLiteral("z_buffer_kept")).toBool(!zBufferKept), zBufferKept);
+    QCOMPARE(o.value(QStringLiteral("draws_without_triangle_normals")).toInt(-1),
+             withoutTriangleNormals);
+    QCOMPARE(o.value(QStringLiteral("draws_without_vertex_normals")).toInt(-1),
+             withoutVertexNormals);
     const QString size = arguments.at(arguments.indexOf(QStringLiteral("--size")) + 1);
     QCOMPARE(QStringLiteral("%1x%2")
                  .arg(o.value(QStringLiteral("width")).toInt())
@@ -1125,6 +1138,10 @@ void TestCli::bench() {
     QVERIFY(md.out.contains(QStringLiteral("| ") + size + QStringLiteral(" |")));
     QVERIFY(md.out.contains(QStringLiteral("| scan conversion | ")));
     QVERIFY(md.out.contains(QStringLiteral("Memory: peak ")));
+    QVERIFY(md.out.contains(QStringLiteral(" Normals: only those the shading reads (left out: "
+                                           "the triangles' of %1 draw(s), the vertices' of %2).")
+                                .arg(withoutTriangleNormals)
+                                .arg(withoutVertexNormals)));
     if (zBufferKept) {
         // The same frame as without --keep-depth.
         CliRun band;

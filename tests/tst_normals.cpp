@@ -131,6 +131,46 @@ private slots:
         }
     }
 
+    void readScopeKeepsWhatTheShadingReads() {
+        // The 100k torus, on 1 and 3 threads: flat (and Phong with flat normals) keeps the
+        // triangle normals alone, Gouraud and Phong the vertex normals alone, Gouraud with
+        // flat normals both; each the same bits as the full set, with the same counts.
+        for (auto [model, flatNormals, triangle, vertex] :
+             {std::tuple{ShadingModel::Flat, false, true, false},
+              std::tuple{ShadingModel::Painter, false, true, false},
+              std::tuple{ShadingModel::Phong, true, true, false},
+              std::tuple{ShadingModel::Phong, false, false, true},
+              std::tuple{ShadingModel::Gouraud, false, false, true},
+              std::tuple{ShadingModel::Gouraud, true, true, true}}) {
+            auto scene = makeBenchmarkScene("torus-100k", 64, 48, model);
+            QVERIFY(scene);
+            auto mesh = std::make_shared<Mesh>(*scene->draws[0].mesh);
+            mesh->triangles[5000][1] = mesh->triangles[5000][0];  // degenerate
+            scene->draws[0].mesh = mesh;
+            scene->draws[0].flatNormals = flatNormals;
+            const NormalsRead read = normalsRead(scene->draws[0]);
+            QCOMPARE(read.triangle, triangle);
+            QCOMPARE(read.vertex, vertex);
+            Diagnostics diagnostics;
+            auto basis = CameraBasisStage().run(*scene, diagnostics);
+            const ViewTransform view = ViewTransformStage().run(*scene, basis.value());
+            const Normals all = NormalsStage().run(*scene, view, 1);
+            QCOMPARE(all.triangleNormalsLeftOut + all.vertexNormalsLeftOut, std::size_t(0));
+            for (int threads : {1, 3}) {
+                const Normals kept = NormalsStage().run(*scene, view, threads, NormalsScope::Read);
+                const DrawNormals& n = kept.draws[0];
+                QCOMPARE(n.triangle.empty(), !triangle);
+                QCOMPARE(n.vertex.empty(), !vertex);
+                if (triangle) QVERIFY(n.triangle == all.draws[0].triangle);
+                if (vertex) QVERIFY(n.vertex == all.draws[0].vertex);
+                QCOMPARE(kept.triangleNormalsLeftOut, std::size_t(triangle ? 0 : 1));
+                QCOMPARE(kept.vertexNormalsLeftOut, std::size_t(vertex ? 0 : 1));
+                QCOMPARE(n.degenerateTriangles, std::size_t(1));
+                QCOMPARE(kept.degenerateTriangles, std::size_t(1));
+            }
+        }
+    }
+
     void unlitSceneSkips() {
         Scene scene = testing::makeScene(
             testing::axisCamera(),
