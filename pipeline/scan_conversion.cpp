@@ -15,15 +15,11 @@ namespace {
 // 128-bit integers for the products of grid coordinates (up to 2^45 each).
 __extension__ using Int128 = __int128;
 
-// Floor and ceiling of a / b for b > 0.
+// Floor of a / b for b > 0.
 template <typename T>
 T floorDiv(T a, T b) {
     const T q = a / b;
     return (a % b != 0 && a < 0) ? q - 1 : q;
-}
-template <typename T>
-T ceilDiv(T a, T b) {
-    return -floorDiv<T>(-a, b);
 }
 
 // Snapped coordinates are exact multiples of 1/2^bits: the product is exact, and the
@@ -35,24 +31,23 @@ std::int64_t toGrid(double pixels, int bits) {
 ScanEdge makeEdge(const dvec2& top, const dvec2& bottom, int bits) {
     const std::int64_t xTop = toGrid(top.x, bits), yTop = toGrid(top.y, bits);
     const std::int64_t xBottom = toGrid(bottom.x, bits), yBottom = toGrid(bottom.y, bits);
-    const std::int64_t dy = yBottom - yTop;
     // Every member given: nothing is zeroed first only to be written again.
-    return ScanEdge{.xTop = xTop,
-                    .yTop = yTop,
-                    .xBottom = xBottom,
-                    .yBottom = yBottom,
-                    .bits = bits,
-                    .dxdy = dy > 0 ? double(xBottom - xTop) / double(dy) : 0.0};
+    return ScanEdge{
+        .xTop = xTop, .yTop = yTop, .xBottom = xBottom, .yBottom = yBottom, .bits = bits};
 }
 
-// The sampling grid: pixel index p is sampled at p * grid + offset (grid units).
+// The sampling grid: pixel index p is sampled at p * grid + offset (grid units), grid =
+// 2^bits.
 struct Grid {
     std::int64_t grid = 1;
+    int bits = 0;
     std::int64_t offset = 0;
     bool topLeft = false;
-    // The first pixel index whose sample is at or after v (grid units), and at or before it.
-    std::int64_t firstAtOrAfter(std::int64_t v) const { return ceilDiv(v - offset, grid); }
-    std::int64_t lastAtOrBefore(std::int64_t v) const { return floorDiv(v - offset, grid); }
+    // The first pixel index whose sample is at or after v (grid units), and at or before it:
+    // a ceiling and a floor division by 2^bits, as arithmetic shifts (C++20 defines >> of a
+    // negative number as one).
+    std::int64_t firstAtOrAfter(std::int64_t v) const { return -((offset - v) >> bits); }
+    std::int64_t lastAtOrBefore(std::int64_t v) const { return (v - offset) >> bits; }
     std::int64_t sample(std::int64_t p) const { return p * grid + offset; }
 };
 
@@ -112,6 +107,7 @@ std::int32_t toRow(std::int64_t v) {
 Grid gridOf(const RasterRules& rules) {
     Grid g;
     g.grid = std::int64_t(1) << rules.subpixelBits;
+    g.bits = rules.subpixelBits;
     g.offset = toGrid(rules.sampleOffset, rules.subpixelBits);
     g.topLeft = rules.fill == RasterRules::FillRule::TopLeft;
     return g;
@@ -186,6 +182,22 @@ double ScanEdge::xAt(double y) const {
            scale;
 }
 
+namespace {
+
+// (s1 - s0) x (s2 - s0) of the edges s0 s1 (upper) and s0 s2 (long), exactly: 128 bits hold
+// the products of grid coordinates.
+Int128 crossOf(const ScanEdge& upper, const ScanEdge& longEdge) {
+    return Int128(upper.xBottom - upper.xTop) * (longEdge.yBottom - longEdge.yTop) -
+           Int128(upper.yBottom - upper.yTop) * (longEdge.xBottom - longEdge.xTop);
+}
+
+}  // namespace
+
+double TriangleSetup::doubleArea() const {
+    const double scale = double(std::uint64_t(1) << (2 * longEdge.bits));
+    return double(crossOf(upperEdge, longEdge)) / scale;  // exact scaling
+}
+
 TriangleSetup setupTriangle(const std::array<dvec2, 3>& p, const RasterRules& rules) {
     // Sort by y, top first; ties keep the triangle's vertex order (an insertion sort of
     // three, which is stable and needs no buffer).
@@ -204,9 +216,7 @@ TriangleSetup setupTriangle(const std::array<dvec2, 3>& p, const RasterRules& ru
     const int bits = rules.subpixelBits;
     const ScanEdge l = makeEdge(sorted[0], sorted[2], bits);
     const ScanEdge u = makeEdge(sorted[0], sorted[1], bits);
-    // (s1 - s0) x (s2 - s0), exactly: 128 bits hold the products of grid coordinates.
-    const Int128 area = Int128(u.xBottom - u.xTop) * (l.yBottom - l.yTop) -
-                        Int128(u.yBottom - u.yTop) * (l.xBottom - l.xTop);
+    const Int128 area = crossOf(u, l);
     // Rows sampled: top <= sample <= bottom (inclusive) or top <= sample < bottom (top-left).
     const Grid g = gridOf(rules);
     const std::int32_t yFirst = toRow(g.firstAtOrAfter(l.yTop));
@@ -214,18 +224,16 @@ TriangleSetup setupTriangle(const std::array<dvec2, 3>& p, const RasterRules& ru
         toRow(g.topLeft ? g.firstAtOrAfter(l.yBottom) - 1 : g.lastAtOrBefore(l.yBottom));
     // Every member given, so none is zeroed first (a 240-byte rep stos per triangle was the
     // hottest instruction of scan conversion on the 1M sphere).
-    return TriangleSetup{
-        .sorted = sorted,
-        .order = order,
-        .doubleArea = double(area) / double(std::uint64_t(1) << (2 * bits)),  // exact scaling
-        .orientation = area > 0 ? 1 : (area < 0 ? -1 : 0),
-        .longEdge = l,
-        .upperEdge = u,
-        .lowerEdge = makeEdge(sorted[1], sorted[2], bits),
-        // The middle vertex is right of the long edge when the area is positive.
-        .longEdgeOnLeft = area > 0,
-        .yFirst = yFirst,
-        .yLast = yLast};
+    return TriangleSetup{.sorted = sorted,
+                         .order = order,
+                         .orientation = area > 0 ? 1 : (area < 0 ? -1 : 0),
+                         .longEdge = l,
+                         .upperEdge = u,
+                         .lowerEdge = makeEdge(sorted[1], sorted[2], bits),
+                         // The middle vertex is right of the long edge when the area is positive.
+                         .longEdgeOnLeft = area > 0,
+                         .yFirst = yFirst,
+                         .yLast = yLast};
 }
 
 namespace {

@@ -42,7 +42,12 @@ struct ScanEdge {
     std::int64_t xTop = 0, yTop = 0;
     std::int64_t xBottom = 0, yBottom = 0;
     int bits = 0;
-    double dxdy = 0.0;  // change of x from one scanline to the next (for display)
+
+    // The change of x from one scanline to the next (for display; 0 when horizontal).
+    double dxdy() const {
+        const std::int64_t dy = yBottom - yTop;
+        return dy > 0 ? double(xBottom - xTop) / double(dy) : 0.0;
+    }
 
     // The x in pixels where the edge crosses the line y (in pixels).
     double xAt(double y) const;
@@ -50,14 +55,15 @@ struct ScanEdge {
 
 // The edge table of one triangle.
 struct TriangleSetup {
-    std::array<dvec2, 3> sorted{};            // vertices sorted by y, top first (pixels)
-    std::array<int, 3> order{};               // sorted[k] is the triangle's vertex order[k]
-    double doubleArea = 0.0;                  // (s1 - s0) x (s2 - s0), pixels^2 (for display)
-    int orientation = 0;                      // its exact sign: -1, 0 or +1
+    std::array<dvec2, 3> sorted{};  // vertices sorted by y, top first (pixels)
+    std::array<int, 3> order{};     // sorted[k] is the triangle's vertex order[k]
+    int orientation = 0;            // the exact sign of (s1 - s0) x (s2 - s0): -1, 0 or +1
     ScanEdge longEdge, upperEdge, lowerEdge;  // top-bottom, top-middle, middle-bottom
     bool longEdgeOnLeft = false;              // the middle vertex lies right of the long edge
     std::int32_t yFirst = 0, yLast = -1;      // sampled rows, before screen clipping
     bool degenerate() const { return orientation == 0; }
+    // (s1 - s0) x (s2 - s0), pixels^2 (for display; exact but for the last rounding).
+    double doubleArea() const;
 };
 
 // Screen vertices lie on the rules' sub-pixel grid within the guard band of projection.h.

@@ -147,9 +147,9 @@ private slots:
         QCOMPARE(s.order, (std::array<int, 3>{2, 0, 1}));
         QCOMPARE(s.yFirst, 1);
         QCOMPARE(s.yLast, 7);
-        RL_COMPARE_NEAR(s.longEdge.dxdy, -0.5, 0.0);
-        RL_COMPARE_NEAR(s.upperEdge.dxdy, 5.0 / 3.0, 1e-15);
-        RL_COMPARE_NEAR(s.lowerEdge.dxdy, -8.0 / 3.0, 1e-15);
+        RL_COMPARE_NEAR(s.longEdge.dxdy(), -0.5, 0.0);
+        RL_COMPARE_NEAR(s.upperEdge.dxdy(), 5.0 / 3.0, 1e-15);
+        RL_COMPARE_NEAR(s.lowerEdge.dxdy(), -8.0 / 3.0, 1e-15);
         RL_COMPARE_NEAR(s.longEdge.xAt(5), 2.0, 0.0);
         QVERIFY(s.longEdgeOnLeft);
     }

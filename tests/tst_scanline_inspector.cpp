@@ -207,7 +207,7 @@ void TestScanlineInspector::edgeTableAndSpanAtTheCursor() {
     QCOMPARE(m.currentPixel, std::optional<int>(5));
     // Sorted by y: (5,4), (7,4), (5,7). (s1 - s0) x (s2 - s0) = (2,0) x (0,3) = 6 > 0: the
     // middle vertex is right of the long edge, which bounds the spans on the left.
-    QCOMPARE(m.setup.doubleArea, 6.0);
+    QCOMPARE(m.setup.doubleArea(), 6.0);
     const auto& [longEdge, upper, lower] = m.edges;
     QCOMPARE(longEdge.top, dvec2(5, 4));
     QCOMPARE(longEdge.bottom, dvec2(5, 7));
@@ -290,7 +290,7 @@ void TestScanlineInspector::rowWithNoPixel() {
     const rasterlab::ScanlineModel& m = *view.model();
     QCOMPARE(m.triangle, 3u);
     // Sorted: (5,0), (6,3), (7,3); (1,3) x (2,3) = -3 < 0: the long edge is on the right.
-    QCOMPARE(m.setup.doubleArea, -3.0);
+    QCOMPARE(m.setup.doubleArea(), -3.0);
     RL_COMPARE_NEAR(m.edges[0].dxdy, 2.0 / 3.0, 1e-15);
     QVERIFY(!m.edges[0].onLeft);
     RL_COMPARE_NEAR(m.edges[1].dxdy, 1.0 / 3.0, 1e-15);

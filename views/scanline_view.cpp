@@ -135,7 +135,7 @@ ScanlineModel scanlineModel(const rl::FrameTrace& frame, std::uint32_t triangle,
         ScanEdgeEntry& entry = m.edges[k];
         entry.top = s.sorted[ends[k].first];
         entry.bottom = s.sorted[ends[k].second];
-        entry.dxdy = e.dxdy;
+        entry.dxdy = e.dxdy();
         entry.horizontal = e.yTop == e.yBottom;
         entry.onLeft = (k == 0) == s.longEdgeOnLeft;
         if (s.degenerate()) continue;  // not walked
@@ -526,7 +526,7 @@ QString ScanlineView::explanationHtml() const {
     html += QLatin1Char(' ') +
             tr("(s1 &minus; s0) &times; (s2 &minus; s0) = %1, so the middle vertex is %2 of "
                "the long edge: the long edge bounds the spans on the %3.")
-                .arg(num(s.doubleArea))
+                .arg(num(s.doubleArea()))
                 .arg(s.longEdgeOnLeft ? tr("right") : tr("left"))
                 .arg(s.longEdgeOnLeft ? tr("left") : tr("right")) +
             QStringLiteral("</p>");
