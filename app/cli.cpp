@@ -555,7 +555,7 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
     // and the normals image: then the depth test and shading may run band by band.
     options.keepFragments = options.keepDepth || parser.isSet(normalsOutput);
     // Only the normals each draw's shading reads (the normals image is the shading's own).
-    options.keepAllNormals = false;
+    options.keepForViews = false;
     // With --explain-pixel the one render records that pixel's events; the recording probe
     // leaves every buffer as the plain render would.
     std::optional<rl::RecordingProbe> probe;
@@ -682,7 +682,7 @@ int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& 
         rl::RenderOptions options;
         options.keepDepth = false;
         options.keepFragments = false;
-        options.keepAllNormals = false;
+        options.keepForViews = false;
         auto trace =
             probe ? rl::traceFrame(shared, {}, *probe) : rl::renderFrame(shared, options);
         if (!trace) return inputError(err, trace.error());
@@ -789,7 +789,7 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     options.threads = threadCount;  // 0: every core
     options.keepDepth = parser.isSet(keepDepth);
     options.keepFragments = options.keepDepth;
-    options.keepAllNormals = false;
+    options.keepForViews = false;
     rl::RenderContext context;  // buffers reused from frame to frame
     std::vector<double> total;
     std::vector<std::array<double, rl::kStageCount>> stages;

@@ -83,7 +83,7 @@ std::size_t& tally(Projection& out, TriangleFate fate) {
 }  // namespace
 
 Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
-                                Diagnostics& diagnostics, int threads) const {
+                                Diagnostics& diagnostics, int threads, bool keepExact) const {
     Projection out;
     out.mode = scene.nearPlane.mode;
     const bool clipNear = out.mode == NearPlane::Mode::Clip;
@@ -134,8 +134,10 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             const dvec4& pClip = proj.pClip[i];
             const dvec2 pNdc = dvec2(pClip) / pClip.w;
             const dvec2 exact = screenFromNdc(pNdc, width, height, conv.ndcYUp);
-            proj.pNdc[i] = pNdc;
-            proj.pScreenExact[i] = exact;
+            if (keepExact) {
+                proj.pNdc[i] = pNdc;
+                proj.pScreenExact[i] = exact;
+            }
             dvec2 snapped(snap(exact.x, scene.rules, grid), snap(exact.y, scene.rules, grid));
             // An infinite coordinate (w = 0 under the naive projection) stays infinite, so the
             // triangle is dropped as NonFinite instead of being pulled in to the guard band.
@@ -152,8 +154,10 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             proj.inFront[i] = 1;
         };
         auto resizeVertices = [&](std::size_t n) {
-            proj.pNdc.resize(n, dvec2(0.0));
-            proj.pScreenExact.resize(n, dvec2(0.0));
+            if (keepExact) {
+                proj.pNdc.resize(n, dvec2(0.0));
+                proj.pScreenExact.resize(n, dvec2(0.0));
+            }
             proj.pScreen.resize(n, dvec2(0.0));
             proj.depth.resize(n, 0.0f);
             proj.inFront.resize(n, 0);

@@ -70,6 +70,7 @@ struct DrawProjection {
     std::vector<dvec4> pClip;           // clipFromView * pView (w = near on made vertices)
     std::vector<dvec2> pNdc;            // [-1, 1] on screen; meaningless where !inFront
     std::vector<dvec2> pScreenExact;    // pixels, before snapping
+                                        // (these two are empty unless kept: run's keepExact)
     std::vector<dvec2> pScreen;         // pixels, after snapping (what is rasterized)
     std::vector<float> depth;           // what the depth buffer compares (view z)
     std::vector<std::uint8_t> inFront;  // 1 when the vertex was projected
@@ -139,8 +140,10 @@ public:
     // threads: vertices and per-triangle verdicts are worked out on several; triangles are
     // emitted on several when none needs clipping, else emitted and clipped in order on one
     // (the result does not depend on their number).
+    // keepExact: whether pNdc and pScreenExact are kept (only the views read them; without
+    // them they are empty).
     Projection run(const Scene& scene, const ViewTransform& view, Diagnostics& diagnostics,
-                   int threads = 1) const;
+                   int threads = 1, bool keepExact = true) const;
 };
 
 }  // namespace rl

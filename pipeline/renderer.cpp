@@ -63,15 +63,16 @@ Result<FrameTrace> run(std::shared_ptr<const Scene> scenePtr, const RenderOption
     });
     timed(StageId::Normals, [&] {
         const NormalsScope scope =
-            Probe::enabled || options.keepAllNormals || options.shading.keepNormals
+            Probe::enabled || options.keepForViews || options.shading.keepNormals
                 ? NormalsScope::All
                 : NormalsScope::Read;
-        trace.normals = std::make_shared<const Normals>(
-            NormalsStage().run(scene, *trace.view, threads, scope));
+        trace.normals =
+            std::make_shared<const Normals>(NormalsStage().run(scene, *trace.view, threads, scope));
     });
     timed(StageId::Projection, [&] {
         trace.projection = std::make_shared<const Projection>(
-            ProjectionStage().run(scene, *trace.view, trace.diagnostics, threads));
+            ProjectionStage().run(scene, *trace.view, trace.diagnostics, threads,
+                                  Probe::enabled || options.keepForViews));
     });
     timed(StageId::ScanConversion, [&] {
         trace.scan = std::make_shared<const ScanConversion>(

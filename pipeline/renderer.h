@@ -31,11 +31,12 @@ struct RenderOptions {
     // (ShadingStage::runWithDepthTest) and the frame keeps the image and which pixels a
     // triangle covered. The image is the same.
     bool keepFragments = true;
-    // Whether the frame keeps every triangle's and every vertex's normal: the window's normals
-    // view draws them. Without it (and without the normals image), each draw gets only the
-    // normals its shading reads (normalsRead: a flat sphere, say, sums no vertex normals).
-    // The image is the same.
-    bool keepAllNormals = true;
+    // Whether the frame keeps what only the window's views read: every triangle's and every
+    // vertex's normal (the normals view's hairs), and each vertex's NDC and unsnapped screen
+    // position (the projection view). Without it, each draw gets only the normals its shading
+    // reads (normalsRead: a flat sphere, say, sums no vertex normals; the normals image keeps
+    // them all), and projection only the snapped positions. The image is the same.
+    bool keepForViews = true;
 };
 
 // Buffers kept from one frame to the next, so that rendering the same size again costs no

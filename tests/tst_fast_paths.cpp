@@ -67,7 +67,7 @@ QString normalsDifference(const Normals& a, const Normals& b) {
 }
 
 // A frame's normals as a frame that keeps only those its draws' shading reads has them
-// (RenderOptions::keepAllNormals false): the others emptied and counted as left out.
+// (RenderOptions::keepForViews false): the others emptied and counted as left out.
 FrameTrace withNormalsAsRead(const FrameTrace& a) {
     auto normals = std::make_shared<Normals>(*a.normals);
     for (std::size_t d = 0; d < normals->draws.size(); ++d) {
@@ -316,9 +316,9 @@ private slots:
             {
                 options.keepDepth = false;
                 options.keepFragments = false;
-                options.keepAllNormals = false;
+                options.keepForViews = false;
                 auto banded = renderFrame(scene, options, &context);
-                options.keepAllNormals = true;
+                options.keepForViews = true;
                 QVERIFY(banded.ok());
                 QCOMPARE(banded->depth->fragmentsKept, !bands);
                 const QString diff = bands ? differenceInBands(plainAsRead, *banded)

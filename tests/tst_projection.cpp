@@ -18,11 +18,11 @@ private:
         Projection projection;
         Diagnostics diagnostics;
     };
-    static Run project(const Scene& scene, int threads = 1) {
+    static Run project(const Scene& scene, int threads = 1, bool keepExact = true) {
         Run run;
         auto basis = CameraBasisStage().run(scene, run.diagnostics);
         const ViewTransform view = ViewTransformStage().run(scene, basis.value());
-        run.projection = ProjectionStage().run(scene, view, run.diagnostics, threads);
+        run.projection = ProjectionStage().run(scene, view, run.diagnostics, threads, keepExact);
         return run;
     }
 
@@ -50,6 +50,36 @@ private slots:
         QCOMPARE(run.projection.inside, std::size_t(1));
         QCOMPARE(run.projection.triangles.size(), std::size_t(1));
         QCOMPARE(p.fate[0], TriangleFate::Inside);
+    }
+
+    void exactPositionsLeftOutChangeNothingElse() {
+        // Without keepExact (a frame that keeps only its image), pNdc and pScreenExact are
+        // empty and every other vertex and triangle array is the same bits: a quad made by
+        // the near plane (clipping on one thread) and the 100k torus (emitted on three).
+        Scene quad = testing::makeScene(
+            testing::axisCamera(),
+            testing::makeMesh({{0, 1, 10}, {1, -1, 10}, {0, 0, -10}}, {{0, 1, 2}}), 100, 100);
+        quad.nearPlane.fixedW = 1.0;
+        auto torus = makeBenchmarkScene("torus-100k", 320, 240, ShadingModel::Phong);
+        QVERIFY(torus);
+        for (const auto& [scene, threads] : {std::pair{&quad, 1}, std::pair{&*torus, 3}}) {
+            const Run kept = project(*scene, threads, true);
+            const Run lean = project(*scene, threads, false);
+            const DrawProjection& a = kept.projection.draws[0];
+            const DrawProjection& b = lean.projection.draws[0];
+            QCOMPARE(a.pNdc.size(), a.pView.size());
+            QCOMPARE(a.pScreenExact.size(), a.pView.size());
+            QVERIFY(b.pNdc.empty() && b.pScreenExact.empty());
+            QVERIFY(a.pView == b.pView && a.pClip == b.pClip && a.pScreen == b.pScreen);
+            QVERIFY(a.depth == b.depth && a.inFront == b.inFront && a.fate == b.fate);
+            QCOMPARE(b.generated.size(), a.generated.size());
+            QCOMPARE(lean.projection.triangles.size(), kept.projection.triangles.size());
+            for (std::size_t k = 0; k < kept.projection.triangles.size(); ++k)
+                QCOMPARE(lean.projection.triangles[k].v, kept.projection.triangles[k].v);
+            QCOMPARE(lean.projection.clipped, kept.projection.clipped);
+            QCOMPARE(lean.projection.inside, kept.projection.inside);
+        }
+        QCOMPARE(project(quad, 1, false).projection.triangles.size(), std::size_t(2));
     }
 
     void courseMatrix() {
