@@ -29,13 +29,15 @@ dmat4 clipFromViewOf(const Scene& scene, const Draw& draw) {
 namespace {
 
 // A screen coordinate on the rules' sub-pixel grid.
-// grid = 2^subpixelBits, worked out once by the caller.
-double snap(double coordinate, const RasterRules& rules, double grid) {
+// grid = 2^subpixelBits and cell = 1 / grid, worked out once by the caller: both are powers
+// of two, so multiplying by cell gives the very bits dividing by grid would, without a
+// division.
+double snap(double coordinate, const RasterRules& rules, double grid, double cell) {
     switch (rules.snap) {
         case RasterRules::VertexSnap::Truncate:
-            return std::trunc(coordinate * grid) / grid;
+            return std::trunc(coordinate * grid) * cell;
         case RasterRules::VertexSnap::Nearest:
-            return std::floor(coordinate * grid + 0.5) / grid;
+            return std::floor(coordinate * grid + 0.5) * cell;
     }
     return coordinate;
 }
@@ -91,6 +93,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
     const double height = scene.height;
     const Conventions& conv = scene.conventions;
     const double grid = std::ldexp(1.0, scene.rules.subpixelBits);
+    const double cell = std::ldexp(1.0, -scene.rules.subpixelBits);
 
     // Every vertex to clip space first: the near plane is a plane of clip space, w = near.
     out.draws.resize(scene.draws.size());
@@ -138,7 +141,8 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                 proj.pNdc[i] = pNdc;
                 proj.pScreenExact[i] = exact;
             }
-            dvec2 snapped(snap(exact.x, scene.rules, grid), snap(exact.y, scene.rules, grid));
+            dvec2 snapped(snap(exact.x, scene.rules, grid, cell),
+                          snap(exact.y, scene.rules, grid, cell));
             // An infinite coordinate (w = 0 under the naive projection) stays infinite, so the
             // triangle is dropped as NonFinite instead of being pulled in to the guard band.
             // Clipping keeps drawn vertices inside the guard band; only the naive projection
