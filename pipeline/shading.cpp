@@ -629,30 +629,23 @@ Shading ShadingStage::run(const Scene& scene, const ViewTransform& view, const N
 }
 
 bool shadeInBands(const Scene& scene, const Projection& projection, const ScanConversion& scan) {
-    // What lighting the triangles with a fragment costs, in points lit (every vertex of a
-    // Gouraud one, the triangle itself when flat), against the fragments to test (scan
-    // conversion's count). Phong lights nothing ahead: no triangle to look at.
-    const auto pointsPer = [](ShadingModel model) -> std::size_t {
-        return model == ShadingModel::Gouraud ? 3 : litPerTriangle(model) ? 1 : 0;
-    };
-    std::size_t least = 3, most = 0;  // points per triangle, over the draws
-    for (const Draw& draw : scene.draws) {
-        least = std::min(least, pointsPer(draw.shading));
-        most = std::max(most, pointsPer(draw.shading));
-    }
-    if (most == 0) return true;
-    // The triangles with a fragment: neither degenerate nor off the screen (a 1M-triangle
-    // frame's loop below took 2 ms). When every draw lights as many points per triangle,
-    // or the bounds agree, that is the answer.
+    // What lighting the triangles with a fragment costs, in points lit, against the fragments
+    // to test (scan conversion's count). Phong lights nothing ahead. A flat draw lights each
+    // of its triangles with a fragment; a Gouraud draw each vertex of them, at most all its
+    // vertices (on a closed mesh about half as many as its triangles). The triangles with a
+    // fragment are those neither degenerate nor off the screen (scan conversion counts them),
+    // an upper bound for each draw's.
     const std::size_t withFragments =
         scan.triangleCount() - std::min(scan.triangleCount(), scan.degenerate + scan.offscreen);
-    if (withFragments * most * kBandsFragmentsPerPoint <= scan.pixels) return true;
-    if (withFragments * least * kBandsFragmentsPerPoint > scan.pixels) return false;
-    std::size_t lit = 0;
-    for (std::size_t t = 0; t < projection.triangles.size(); ++t)
-        if (scan.spanStart[t] != scan.spanStart[t + 1])
-            lit += pointsPer(scene.draws[projection.triangles[t].draw].shading);
-    return lit * kBandsFragmentsPerPoint <= scan.pixels;
+    std::size_t flatPoints = 0, gouraudVertices = 0;
+    for (std::size_t d = 0; d < scene.draws.size(); ++d) {
+        const ShadingModel model = scene.draws[d].shading;
+        if (litPerTriangle(model)) flatPoints = withFragments;
+        if (model == ShadingModel::Gouraud && d < projection.draws.size())
+            gouraudVertices += projection.draws[d].pView.size();
+    }
+    const std::size_t points = flatPoints + std::min(gouraudVertices, 3 * withFragments);
+    return points * kBandsFragmentsPerPoint <= scan.pixels;
 }
 
 std::pair<DepthTest, Shading> ShadingStage::runWithDepthTest(

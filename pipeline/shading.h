@@ -182,7 +182,9 @@ public:
 
 // Whether shading in bands (ShadingStage::runWithDepthTest) pays: the points its flat and
 // Gouraud draws light before the depth test (those of every triangle with a fragment, not
-// only those that keep a pixel) are at most one per kBandsFragmentsPerPoint fragments.
+// only those that keep a pixel: a flat draw's triangles, a Gouraud draw's vertices) are at
+// most one per kBandsFragmentsPerPoint fragments, counted by an upper bound that costs no
+// pass over the triangles.
 inline constexpr std::size_t kBandsFragmentsPerPoint = 4;
 bool shadeInBands(const Scene& scene, const Projection& projection, const ScanConversion& scan);
 
