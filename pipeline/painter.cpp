@@ -35,7 +35,7 @@ std::vector<std::uint32_t> painterOrder(const Scene& scene, const Projection& pr
 
 void sortFarToNear(const Scene& scene, Projection& projection) {
     const std::vector<std::uint32_t> order = painterOrder(scene, projection);
-    std::vector<ScreenTriangle> sorted;
+    Buffer<ScreenTriangle> sorted;
     sorted.reserve(order.size());
     for (std::uint32_t t : order) sorted.push_back(projection.triangles[t]);
     projection.triangles = std::move(sorted);

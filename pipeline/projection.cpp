@@ -101,9 +101,11 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
     for (std::size_t d = 0; d < scene.draws.size(); ++d) {
         DrawProjection& proj = out.draws[d];
         proj.clipFromView = clipFromViewOf(scene, scene.draws[d]);
-        proj.pView = view.pView[d];
-        proj.originalVertexCount = static_cast<std::uint32_t>(proj.pView.size());
-        const std::size_t count = proj.pView.size();
+        const std::vector<dvec4>& pView = view.pView[d];
+        proj.originalVertexCount = static_cast<std::uint32_t>(pView.size());
+        const std::size_t count = pView.size();
+        // Both written whole below, shared out between the threads (Buffer: not zeroed first).
+        proj.pView.resize(count);
         proj.pClip.resize(count);
         const int parts = count < 4096 ? 1 : std::max(1, threads);
         std::vector<double> partMax(static_cast<std::size_t>(parts), 0.0);
@@ -112,7 +114,8 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             for (std::size_t i = rangeBegin(count, part, parts),
                              end = rangeBegin(count, part + 1, parts);
                  i < end; ++i) {
-                proj.pClip[i] = proj.clipFromView * proj.pView[i];
+                proj.pView[i] = pView[i];
+                proj.pClip[i] = proj.clipFromView * pView[i];
                 const double w = proj.pClip[i].w;
                 if (w > most && isFinite(w)) most = w;
             }
@@ -157,14 +160,22 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                 conv.depth == DepthSource::ViewZ ? proj.pView[i].z : pClip.z / pClip.w);
             proj.inFront[i] = 1;
         };
+        // The per-vertex arrays to n vertices, the new ones unset (Buffer): each is then
+        // projected or marked as not projected.
         auto resizeVertices = [&](std::size_t n) {
             if (keepExact) {
                 proj.pNdc.resize(n, dvec2(0.0));
                 proj.pScreenExact.resize(n, dvec2(0.0));
             }
-            proj.pScreen.resize(n, dvec2(0.0));
-            proj.depth.resize(n, 0.0f);
-            proj.inFront.resize(n, 0);
+            proj.pScreen.resize(n);
+            proj.depth.resize(n);
+            proj.inFront.resize(n);
+        };
+        // A vertex not projected (behind the near plane): zeros, not in front.
+        auto notProjected = [&](std::uint32_t i) {
+            proj.pScreen[i] = dvec2(0.0);
+            proj.depth[i] = 0.0f;
+            proj.inFront[i] = 0;
         };
         resizeVertices(proj.pView.size());
         // Vertices are independent: contiguous ranges on several threads (the naive
@@ -177,8 +188,12 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                 static_cast<std::uint32_t>(rangeBegin(vertexCount, part, vertexParts));
             const auto last =
                 static_cast<std::uint32_t>(rangeBegin(vertexCount, part + 1, vertexParts));
-            for (std::uint32_t i = first; i < last; ++i)
-                if (!clipNear || proj.pClip[i].w >= out.nearW) project(i);
+            for (std::uint32_t i = first; i < last; ++i) {
+                if (!clipNear || proj.pClip[i].w >= out.nearW)
+                    project(i);
+                else
+                    notProjected(i);
+            }
         });
 
         // The planes a triangle is clipped against, each as a signed distance (inside >= 0):
@@ -230,7 +245,10 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             proj.pClip.push_back(pClip);
             proj.generated.push_back({a, b, t});
             resizeVertices(proj.pView.size());
-            if (!clipNear || pClip.w >= out.nearW) project(index);
+            if (!clipNear || pClip.w >= out.nearW)
+                project(index);
+            else
+                notProjected(index);
             return index;
         };
 
@@ -290,7 +308,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
         bool anyCut = false;
         if (outcodes) {
             choosePlanes();
-            std::vector<std::uint32_t> outcode(proj.originalVertexCount);
+            Buffer<std::uint32_t> outcode(proj.originalVertexCount);  // each written below
             toClip.assign(triangleCount, 0);
             proj.fate.resize(triangleCount);
             const int parts = triangleParts;

@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "buffer.h"
 #include "diagnostics.h"
 #include "math.h"
 #include "scene.h"
@@ -56,24 +57,26 @@ struct ClipVertex {
     double t = 0.0;
 };
 
+// Trivial, with no default member values, so that the projection's list of them is made
+// without being zeroed first (Buffer); one made by hand is brace-initialised.
 struct ScreenTriangle {
-    std::uint32_t draw = 0;
-    std::uint32_t source = 0;          // index of the mesh triangle it comes from
-    std::array<std::uint32_t, 3> v{};  // indices into the draw's projected vertices
+    std::uint32_t draw;
+    std::uint32_t source;            // index of the mesh triangle it comes from
+    std::array<std::uint32_t, 3> v;  // indices into the draw's projected vertices
 };
 
 struct DrawProjection {
     dmat4 clipFromView = dmat4(1.0);
     std::uint32_t originalVertexCount = 0;
     // Per vertex: first the draw's own vertices, then those made by clipping.
-    std::vector<dvec4> pView;
-    std::vector<dvec4> pClip;           // clipFromView * pView (w = near on made vertices)
+    Buffer<dvec4> pView;
+    Buffer<dvec4> pClip;                // clipFromView * pView (w = near on made vertices)
     std::vector<dvec2> pNdc;            // [-1, 1] on screen; meaningless where !inFront
     std::vector<dvec2> pScreenExact;    // pixels, before snapping
                                         // (these two are empty unless kept: run's keepExact)
-    std::vector<dvec2> pScreen;         // pixels, after snapping (what is rasterized)
-    std::vector<float> depth;           // what the depth buffer compares (view z)
-    std::vector<std::uint8_t> inFront;  // 1 when the vertex was projected
+    Buffer<dvec2> pScreen;              // pixels, after snapping (what is rasterized)
+    Buffer<float> depth;                // what the depth buffer compares (view z)
+    Buffer<std::uint8_t> inFront;       // 1 when the vertex was projected
     std::vector<ClipVertex> generated;  // vertex originalVertexCount + i comes from generated[i]
     std::vector<TriangleFate> fate;     // per mesh triangle
 };
@@ -82,7 +85,7 @@ struct Projection {
     double nearW = 0.0;  // the near plane, w = nearW in clip space
     NearPlane::Mode mode = NearPlane::Mode::Clip;
     std::vector<DrawProjection> draws;
-    std::vector<ScreenTriangle> triangles;  // what scan conversion receives, in draw order
+    Buffer<ScreenTriangle> triangles;  // what scan conversion receives, in draw order
 
     std::size_t inside = 0, clipped = 0, behind = 0, clippedAway = 0, culled = 0, nonFinite = 0;
     std::size_t backFaces = 0;            // hidden back faces of closed surfaces, left out

@@ -143,9 +143,12 @@ rl::Projection screenTriangles(const std::vector<rl::dvec2>& points,
                                const std::vector<float>& depths) {
     rl::Projection projection;
     rl::DrawProjection draw;
-    draw.pScreen = points;
+    draw.pScreen.assign(points.begin(), points.end());
     draw.pScreenExact = points;
-    draw.depth = depths.empty() ? std::vector<float>(points.size(), 1.0f) : depths;
+    if (depths.empty())
+        draw.depth.assign(points.size(), 1.0f);
+    else
+        draw.depth.assign(depths.begin(), depths.end());
     draw.inFront.assign(points.size(), 1);
     projection.draws.push_back(draw);
     for (std::size_t t = 0; t < triangles.size(); ++t)

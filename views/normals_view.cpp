@@ -67,7 +67,7 @@ std::optional<QLineF> hairLine(const rl::Scene& scene, const rl::Projection& pro
 
 // ---------------------------------------------------------------------------------------
 
-std::vector<std::uint8_t> backFaces(const std::vector<rl::dvec4>& pView, const rl::Mesh& mesh) {
+std::vector<std::uint8_t> backFaces(std::span<const rl::dvec4> pView, const rl::Mesh& mesh) {
     std::vector<std::uint8_t> out(mesh.triangles.size(), 0);
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         const auto& tri = mesh.triangles[t];

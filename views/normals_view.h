@@ -22,6 +22,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "depth_test.h"
@@ -41,7 +42,7 @@ class Inspection;
 // Per mesh triangle, 1 where its normal (P2 - P1) x (P3 - P1) points away from the camera at
 // the origin of view space: n . P1 > 0 (P1 lies on the triangle, so this is n . pView for
 // any of its points). Degenerate triangles are not back faces. pView: the draw's vertices.
-std::vector<std::uint8_t> backFaces(const std::vector<rl::dvec4>& pView, const rl::Mesh& mesh);
+std::vector<std::uint8_t> backFaces(std::span<const rl::dvec4> pView, const rl::Mesh& mesh);
 
 // Triangles whose winding disagrees with a neighbour's: an edge run a -> b by two triangles
 // (a consistently wound surface runs a shared edge once each way). Corners compared by index.
