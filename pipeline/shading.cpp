@@ -163,10 +163,12 @@ Shading shade(const Scene& scene, const ViewTransform& view, const Normals& norm
                         float beta, float gamma) {
         return objectColour(draw, dv.colour, dv.texcoord, tri.v, beta, gamma);
     };
-    // The normal to light a point with: the triangle's (flat normals) or interpolated.
+    // The normal to light a point with: the triangle's (flat normals) or interpolated. None
+    // for an unlit draw (HW2 geometry before the first light, in a lit scene): nothing reads
+    // it, and drawVertices gives such a draw no vertex normals.
     auto normalAt = [&](const Draw& draw, const DrawVertices& dv, const ScreenTriangle& tri,
                         float beta, float gamma) -> vec3 {
-        if (normals.skipped) return vec3(0.0f);
+        if (normals.skipped || draw.lighting == LightingModel::Unlit) return vec3(0.0f);
         if (draw.flatNormals) return normals.draws[tri.draw].triangle[tri.source];
         return interpolate(dv.nView, tri.v, beta, gamma);
     };

@@ -230,6 +230,8 @@ private slots:
     void flatNormals_data();
     void flatNormals();
     void flatNormalOfXyzwTriangle();
+    void unlitBeforeTheFirstLight_data();
+    void unlitBeforeTheFirstLight();
     void bezierCoverage_data();
     void bezierCoverage();
     void bezierColours();
@@ -761,6 +763,35 @@ void TestHw2Render::flatNormals_data() {
                "png 8 8 t.png\ncolor 1 1 1\nsunlight 0 3 -4\ncolor 0.3 0.6 0.9\n"
                "xyz -1 -1 0.5\nxyz -1 1 0.5\nxyz 1 -1 0.5\ntrif 1 2 3\n")
         << "(61, 122, 183, 255)";
+}
+
+void TestHw2Render::unlitBeforeTheFirstLight_data() {
+    QTest::addColumn<QByteArray>("command");
+    QTest::newRow("trif") << QByteArray("trif");
+    QTest::newRow("trig") << QByteArray("trig");
+}
+
+void TestHw2Render::unlitBeforeTheFirstLight() {
+    // Geometry given before the file's first light is drawn unlit, in its colour, although
+    // the scene is lit (it used to index the vertex normals such a draw is not given and
+    // crash), and so is it with the normals kept and with a pixel's events recorded.
+    QFETCH(QByteArray, command);
+    RENDER(frame,
+           "png 8 8 u.png\ncolor 1 0.5 0.5\n" + screenQuad("0.5", command) + "sunlight 0 0 -1\n");
+    QCOMPARE(frame.scene->draws[0].lighting, LightingModel::Unlit);
+    QVERIFY(frame.scene->lit());
+    QCOMPARE(pixel(frame, 3, 4), QStringLiteral("(255, 127, 127, 255)"));
+    QCOMPARE(count(frame, QStringLiteral("(255, 127, 127, 255)")), 64);
+    RenderOptions options;
+    options.shading.keepNormals = true;
+    auto withNormals = renderFrame(frame.scene, options);
+    QVERIFY(withNormals.ok());
+    QVERIFY(withNormals->shading->colour == frame.trace->shading->colour);
+    QCOMPARE(withNormals->shading->normal.at(3, 4), vec3(0.0f));
+    auto probe = RecordingProbe::forPixel(3, 4);
+    auto traced = traceFrame(frame.scene, RenderOptions{}, probe);
+    QVERIFY(traced.ok());
+    QVERIFY(traced->shading->colour == frame.trace->shading->colour);
 }
 
 void TestHw2Render::flatNormalOfXyzwTriangle() {
