@@ -554,7 +554,8 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
     // Nor the ids and barycentrics of the winning fragments, but for the painter's comparison
     // and the normals image: then the depth test and shading may run band by band.
     options.keepFragments = options.keepDepth || parser.isSet(normalsOutput);
-    // Only the normals each draw's shading reads (the normals image is the shading's own).
+    // Nor what only the window's views read: the normals no draw's shading reads (all are
+    // kept for the normals image) and the vertices' NDC and unsnapped positions.
     options.keepForViews = false;
     // With --explain-pixel the one render records that pixel's events; the recording probe
     // leaves every buffer as the plain render would.

@@ -23,11 +23,10 @@ inline bool unitNormal(const dvec4& q1, const dvec4& q2, const dvec4& q3, dvec3&
 }  // namespace
 
 NormalsRead normalsRead(const Draw& draw) {
-    // With flat normals, Phong lights with the triangle's normal and Gouraud's normals image
-    // shows it (its vertices are still lit with theirs).
-    return NormalsRead{.triangle = litPerTriangle(draw.shading) || draw.flatNormals,
-                       .vertex = draw.shading == ShadingModel::Gouraud ||
-                                 (draw.shading == ShadingModel::Phong && !draw.flatNormals)};
+    const bool phong = draw.shading == ShadingModel::Phong;
+    return NormalsRead{
+        .triangle = litPerTriangle(draw.shading) || (phong && draw.flatNormals),
+        .vertex = draw.shading == ShadingModel::Gouraud || (phong && !draw.flatNormals)};
 }
 
 Normals NormalsStage::run(const Scene& scene, const ViewTransform& view, int threads,

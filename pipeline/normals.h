@@ -5,7 +5,8 @@
 // (zero-area) triangles have no normal and contribute nothing; they are counted, as are vertices
 // left without a normal. Skipped when the scene is not lit (nothing would read the normals);
 // a frame that keeps only its image works out only what each draw's shading reads
-// (NormalsScope::Read: no vertex normal for a flat draw, no triangle normal for Gouraud).
+// (NormalsScope::Read: no vertex normal for a flat draw, no triangle normal for a Gouraud
+// one or a Phong one with interpolated normals).
 #pragma once
 
 #include <cstdint>
@@ -24,7 +25,8 @@ struct DrawNormals {
     std::vector<vec3> triangle;
     std::vector<vec3> vertex;
     std::size_t degenerateTriangles = 0;
-    std::size_t verticesWithoutNormal = 0;  // used by no triangle, or only by degenerate ones
+    // Used by no triangle, or only by degenerate ones (0 when the vertex normals are left out).
+    std::size_t verticesWithoutNormal = 0;
 };
 
 struct Normals {
@@ -37,9 +39,12 @@ struct Normals {
     std::size_t triangleNormalsLeftOut = 0, vertexNormalsLeftOut = 0;
 };
 
-// What a draw's shading reads of the normals: the triangles' when it is lit once per triangle
-// (flat, painter) or Phong shaded with flat normals; the vertices' when Gouraud (its vertices
-// are lit with them) or Phong shaded with interpolated normals. An unlit draw reads neither.
+// What a draw's shading reads of the normals for its colours: the triangles' when it is lit
+// once per triangle (flat, painter) or Phong shaded with flat normals; the vertices' when
+// Gouraud (its vertices are lit with theirs, flat normals or not) or Phong shaded with
+// interpolated normals. The lighting model does not enter: an unlit draw gets what its
+// shading model would read. (The normals image also reads a Gouraud draw's triangle normals
+// when it has flat normals; a frame that keeps that image keeps every normal.)
 struct NormalsRead {
     bool triangle = false;
     bool vertex = false;
