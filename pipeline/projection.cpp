@@ -171,8 +171,13 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             proj.depth.resize(n);
             proj.inFront.resize(n);
         };
-        // A vertex not projected (behind the near plane): zeros, not in front.
-        auto notProjected = [&](std::uint32_t i) {
+        // Vertex i projected when it is in front of the near plane (or nothing is clipped);
+        // otherwise zeros, not in front.
+        auto projectIfInFront = [&](std::uint32_t i) {
+            if (!clipNear || proj.pClip[i].w >= out.nearW) {
+                project(i);
+                return;
+            }
             proj.pScreen[i] = dvec2(0.0);
             proj.depth[i] = 0.0f;
             proj.inFront[i] = 0;
@@ -188,12 +193,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                 static_cast<std::uint32_t>(rangeBegin(vertexCount, part, vertexParts));
             const auto last =
                 static_cast<std::uint32_t>(rangeBegin(vertexCount, part + 1, vertexParts));
-            for (std::uint32_t i = first; i < last; ++i) {
-                if (!clipNear || proj.pClip[i].w >= out.nearW)
-                    project(i);
-                else
-                    notProjected(i);
-            }
+            for (std::uint32_t i = first; i < last; ++i) projectIfInFront(i);
         });
 
         // The planes a triangle is clipped against, each as a signed distance (inside >= 0):
@@ -245,10 +245,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             proj.pClip.push_back(pClip);
             proj.generated.push_back({a, b, t});
             resizeVertices(proj.pView.size());
-            if (!clipNear || pClip.w >= out.nearW)
-                project(index);
-            else
-                notProjected(index);
+            projectIfInFront(index);
             return index;
         };
 

@@ -39,7 +39,6 @@ ScanEdge makeEdge(const dvec2& top, const dvec2& bottom, int bits) {
 // The sampling grid: pixel index p is sampled at p * grid + offset (grid units), grid =
 // 2^bits.
 struct Grid {
-    std::int64_t grid = 1;
     int bits = 0;
     std::int64_t offset = 0;
     bool topLeft = false;
@@ -48,7 +47,8 @@ struct Grid {
     // negative number as one).
     std::int64_t firstAtOrAfter(std::int64_t v) const { return -((offset - v) >> bits); }
     std::int64_t lastAtOrBefore(std::int64_t v) const { return (v - offset) >> bits; }
-    std::int64_t sample(std::int64_t p) const { return p * grid + offset; }
+    std::int64_t grid() const { return std::int64_t(1) << bits; }
+    std::int64_t sample(std::int64_t p) const { return p * grid() + offset; }
 };
 
 // Walks one edge down the scanlines. On a row sampled at ys, the edge's x gives
@@ -59,10 +59,10 @@ public:
     EdgeWalker(const ScanEdge& e, const Grid& g, std::int64_t firstRow) {
         const std::int64_t dy = e.yBottom - e.yTop;
         const std::int64_t dx = e.xBottom - e.xTop;
-        m_d = g.grid * dy;
+        m_d = g.grid() * dy;
         const std::int64_t dxFloor = floorDiv(dx, dy);
         m_step = dxFloor;
-        m_stepRemainder = g.grid * (dx - dxFloor * dy);
+        m_stepRemainder = g.grid() * (dx - dxFloor * dy);
         const std::int64_t a = e.xTop - g.offset;
         const std::int64_t b = g.sample(firstRow) - e.yTop;
         constexpr std::int64_t kSmall = std::int64_t(1) << 30;
@@ -84,7 +84,7 @@ public:
     std::int64_t ceilX() const { return m_q + (m_r > 0 ? 1 : 0); }
     double exactX() const {  // pixels
         return (double(m_q) + double(m_r) / double(m_d)) +
-               double(m_grid.offset) / double(m_grid.grid);
+               double(m_grid.offset) / double(m_grid.grid());
     }
     void nextRow() {
         m_q += m_step;
@@ -106,7 +106,6 @@ std::int32_t toRow(std::int64_t v) {
 
 Grid gridOf(const RasterRules& rules) {
     Grid g;
-    g.grid = std::int64_t(1) << rules.subpixelBits;
     g.bits = rules.subpixelBits;
     g.offset = toGrid(rules.sampleOffset, rules.subpixelBits);
     g.topLeft = rules.fill == RasterRules::FillRule::TopLeft;

@@ -38,9 +38,9 @@ DrawVertices drawVertices(const Draw& draw, const DrawProjection& proj, const Dr
         if (normals && !normals->vertex.empty()) {
             out.nView = normals->vertex;
             extendByClipping(out.nView, proj);
-        } else if (!normals || normalsRead(draw).vertex) {
+        } else if (!normals) {  // the scene is not lit
             out.nView.assign(proj.pView.size(), vec3(0.0f));
-        }  // else left out: the draw's shading does not read them
+        }  // else left out by the normals stage (NormalsScope::Read): nothing reads them
     }
     const bool vertexColours = draw.colour == ColourSource::Vertex ||
                                (draw.colour == ColourSource::Texture && draw.decals);
