@@ -63,10 +63,13 @@ PatchMesh subdivideRectBezier(const std::array<PatchPoint, 16>& control, int sub
         for (int i = 0; i <= n; ++i)
             mesh.vertices.push_back(evaluateRectBezier(control, double(i) / n, double(j) / n));
     const auto index = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+    // Each quad is cut along its diagonal from (i + 1, j) to (i, j + 1), as the HW2 reference
+    // images are: where the patch leaves the depth range [0, 1], the outline follows the
+    // triangles, so the other diagonal would move it.
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-            mesh.triangles.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1)});
-            mesh.triangles.push_back({index(i, j), index(i + 1, j + 1), index(i, j + 1)});
+            mesh.triangles.push_back({index(i, j), index(i + 1, j), index(i, j + 1)});
+            mesh.triangles.push_back({index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)});
         }
     return mesh;
 }

@@ -33,7 +33,8 @@ struct PatchMesh {
 };
 
 // A bicubic patch: control points row by row, four to a row (s along a row, t across rows).
-// Subdivided into 2^subdivisions x 2^subdivisions quads, each split into two triangles.
+// Subdivided into 2^subdivisions x 2^subdivisions quads, each split into two triangles
+// along the diagonal from (s + ds, t) to (s, t + dt).
 PatchVertex evaluateRectBezier(const std::array<PatchPoint, 16>& control, double s, double t);
 PatchMesh subdivideRectBezier(const std::array<PatchPoint, 16>& control, int subdivisions);
 

@@ -657,6 +657,17 @@ void TestTransforms::subdivideRect() {
             RL_COMPARE_VEC(v.st, vec2(float(s), 1.0f - float(t)), 1e-6);
             RL_COMPARE_VEC(v.normal, vec3(0, 0, 1), 1e-6);
         }
+    // Each quad is cut along its diagonal from (i + 1, j) to (i, j + 1), as the HW2 reference
+    // images are (hw2rectbezf matches pixel for pixel only so), two triangles per quad in order.
+    const auto at = [n](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const std::size_t q = std::size_t(2 * (j * n + i));
+            QCOMPARE(mesh.triangles[q],
+                     (std::array<std::uint32_t, 3>{at(i, j), at(i + 1, j), at(i, j + 1)}));
+            QCOMPARE(mesh.triangles[q + 1],
+                     (std::array<std::uint32_t, 3>{at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}));
+        }
     // The triangles tile the square: all wound like the normal (+z), areas summing to 9.
     double area = 0.0;
     for (const auto& tri : mesh.triangles) {
