@@ -568,6 +568,10 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
     }
     diagnostics.append(trace->diagnostics);
     printDiagnostics(diagnostics, err);
+    if (const std::size_t mirrored = rl::trianglesBehindEye(*trace->projection, *scene);
+        mirrored > 0 && rl::everyTriangleBehind(*trace->projection, *scene))
+        err << "hint: --naive-projection draws the " << mirrored
+            << " triangles behind the eye with seed 000's plain divide\n";
 
     const rl::Rgba8Image colour =
         rl::colourImage(*trace->shading, *trace->depth, scene->conventions);
@@ -684,8 +688,7 @@ int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& 
         options.keepDepth = false;
         options.keepFragments = false;
         options.keepForViews = false;
-        auto trace =
-            probe ? rl::traceFrame(shared, {}, *probe) : rl::renderFrame(shared, options);
+        auto trace = probe ? rl::traceFrame(shared, {}, *probe) : rl::renderFrame(shared, options);
         if (!trace) return inputError(err, trace.error());
         printDiagnostics(trace->diagnostics, err);
         const QString name = QString::fromStdString(image.fileName);

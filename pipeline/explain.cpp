@@ -4,6 +4,7 @@
 
 #include "format.h"
 #include "output_image.h"
+#include "shading.h"
 
 namespace rl {
 
@@ -75,6 +76,27 @@ void describeSample(std::string& out, const PhongSample& s, const Draw& draw) {
     }
 }
 
+std::string texelText(const ivec2& texel) {
+    std::string text(1, '(');
+    text += std::to_string(texel.x) + ", " + std::to_string(texel.y) + ")";
+    return text;
+}
+
+// The texel a fragment read; where seed 001's text and the HW2 reference images pick
+// different texels, both, and which one the rules follow.
+void describeTexel(std::string& out, const TexelLookup& lookup, RasterRules::TexelRounding used) {
+    out += "    texture at (s, t) = (" + formatNumber(lookup.st.x) + ", " +
+           formatNumber(lookup.st.y) + "): texel " + texelText(lookup.used) + "\n";
+    if (!lookup.rulesDisagree()) return;
+    const bool images = used == RasterRules::TexelRounding::Truncate;
+    out +=
+        "    here seed 001's text and its reference images disagree: the texel nearest to "
+        "(s w, t h) once the coordinates wrap is " +
+        texelText(lookup.nearest) + ", the images' (int)(s w + 0.5) mod w gives " +
+        texelText(lookup.truncated) + "; these rules follow the " + (images ? "images" : "text") +
+        "\n";
+}
+
 }  // namespace
 
 std::string explainPixel(const FrameTrace& trace, const RecordingProbe& probe) {
@@ -96,8 +118,10 @@ std::string explainPixel(const FrameTrace& trace, const RecordingProbe& probe) {
     }
     bool anyFragment = false;
     int fragment = 0;
+    const DepthTestEvent* written = nullptr;  // the last fragment that passed
     for (const ProbeEvent& event : probe.events()) {
         if (const auto* test = std::get_if<DepthTestEvent>(&event)) {
+            if (test->passed) written = test;
             if (!anyFragment) out += "  depth test, in drawing order:\n";
             anyFragment = true;
             out +=
@@ -137,6 +161,11 @@ std::string explainPixel(const FrameTrace& trace, const RecordingProbe& probe) {
                    ", " + std::to_string(toByte(c.g, conv)) + ", " +
                    std::to_string(toByte(c.b, conv)) + ")" +
                    (clamped ? "  (clamped at " + formatNumber(conv.colourScale) + ")" : "") + "\n";
+            const ScreenTriangle& tri = trace.projection->triangles[shade->triangle];
+            if (written && written->triangle == shade->triangle)
+                if (const auto lookup = texelLookup(*trace.scene, trace.projection->draws[tri.draw],
+                                                    tri.v, tri.draw, written->beta, written->gamma))
+                    describeTexel(out, *lookup, trace.scene->rules.texel);
         }
     }
     if (!anyFragment) out += "  no triangle covers this pixel: it keeps the background colour\n";

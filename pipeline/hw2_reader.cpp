@@ -385,7 +385,9 @@ Status Hw2Reader::command(const TextLine& line) {
         image.scene.height = static_cast<int>(size[1]);
         image.scene.conventions = Conventions::hw2();
         image.scene.rules = RasterRules::hw2();
-        image.scene.nearPlane.mode = NearPlane::Mode::SameSide;
+        // Seed 001: "Frustum clipping happens here in OpenGL, but we won't add it": every
+        // vertex is divided by its w, the per-pixel depth test in [0, 1] does the rest.
+        image.scene.nearPlane.mode = NearPlane::Mode::Naive;
         m_image = std::move(image);
         return success();
     }

@@ -84,6 +84,21 @@ std::size_t& tally(Projection& out, TriangleFate fate) {
 
 }  // namespace
 
+std::size_t trianglesBehindEye(const Projection& projection, const Scene& scene) {
+    std::size_t count = 0;
+    for (std::size_t d = 0; d < scene.draws.size() && d < projection.draws.size(); ++d) {
+        const Draw& draw = scene.draws[d];
+        const DrawProjection& proj = projection.draws[d];
+        if (!draw.mesh) continue;
+        for (const auto& tri : draw.mesh->triangles)
+            count += proj.pClip[tri[0]].w < 0.0 && proj.pClip[tri[1]].w < 0.0 &&
+                             proj.pClip[tri[2]].w < 0.0
+                         ? 1
+                         : 0;
+    }
+    return count;
+}
+
 Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                                 Diagnostics& diagnostics, int threads, bool keepExact) const {
     Projection out;
@@ -134,6 +149,9 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
         DrawProjection& proj = out.draws[d];
         if (!draw.mesh) continue;
 
+        // The plain divide (which does not clip a triangle whose w differ in sign) may pull a
+        // vertex in to the guard band: 1 when it was, 2 once a drawn triangle counted it.
+        std::vector<std::uint8_t> pulledIn;
         // One vertex to NDC and to pixels: pNdc = pClip.xy / pClip.w, then the seed's
         // x = (int)((pNdc.x + 1) width/2), y = (int)((1 - pNdc.y) height/2).
         auto project = [&](std::uint32_t i) {
@@ -153,7 +171,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
             if (finite2(snapped) &&
                 (std::abs(snapped.x) > kGuardBand || std::abs(snapped.y) > kGuardBand)) {
                 snapped = glm::clamp(snapped, dvec2(-kGuardBand), dvec2(kGuardBand));
-                if (out.mode == NearPlane::Mode::Naive) ++out.outsideGuardBand;
+                if (out.mode == NearPlane::Mode::Naive) pulledIn[i] = 1;
             }
             proj.pScreen[i] = snapped;
             proj.depth[i] = static_cast<float>(
@@ -163,6 +181,7 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
         // The per-vertex arrays to n vertices, the new ones unset (Buffer): each is then
         // projected or marked as not projected.
         auto resizeVertices = [&](std::size_t n) {
+            if (out.mode == NearPlane::Mode::Naive) pulledIn.resize(n, 0);
             if (keepExact) {
                 proj.pNdc.resize(n, dvec2(0.0));
                 proj.pScreenExact.resize(n, dvec2(0.0));
@@ -223,13 +242,16 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                     return side * gy * c.w + c.y;
             }
         };
+        // The guard band applies to a triangle whose w all have one sign; the plain divide
+        // leaves a triangle across w = 0 unclipped.
+        bool guardActive = true;
         // The planes that apply to the current triangle, in order.
         std::vector<std::size_t> planes;
         auto choosePlanes = [&] {
             planes.clear();
             for (std::size_t k = 0; k < userPlanes; ++k) planes.push_back(k);
             if (nearActive) planes.push_back(nearPlane);
-            if (out.mode != NearPlane::Mode::Naive)
+            if (guardActive)
                 for (std::size_t k = 0; k < 4; ++k) planes.push_back(firstGuard + k);
         };
         // A vertex where the edge from a (inside) to b (outside) crosses a plane. Always
@@ -416,12 +438,24 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                     return false;
                 }
                 out.triangles.push_back({drawIndex, source, v});
+                for (std::uint32_t i : v)
+                    if (!pulledIn.empty() && pulledIn[i] == 1) {
+                        pulledIn[i] = 2;
+                        ++out.outsideGuardBand;
+                    }
                 return true;
             };
             if (out.mode == NearPlane::Mode::Naive) {
-                bool throughZero = false;
-                for (std::uint32_t v : tri) throughZero = throughZero || proj.pClip[v].w <= 0.0;
-                out.throughZeroOrBehind += throughZero ? 1 : 0;
+                int behind = 0;
+                for (std::uint32_t v : tri) behind += proj.pClip[v].w < 0.0 ? 1 : 0;
+                const bool across =
+                    behind < 3 && std::any_of(tri.begin(), tri.end(), [&](std::uint32_t v) {
+                        return !(proj.pClip[v].w > 0.0);
+                    });
+                out.behindEye += behind == 3 ? 1 : 0;
+                out.acrossEye += across ? 1 : 0;
+                guardActive = !across;
+                side = behind == 3 ? -1.0 : 1.0;
             } else if (out.mode == NearPlane::Mode::SameSide) {
                 // Divided by w as they are when all w have one sign; a triangle across w = 0
                 // keeps its part in front of the near plane.
@@ -493,10 +527,21 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
     // Tell the user what was clipped, dropped, culled or drawn naively.
     const SourceLocation where{scene.name, 0, 0};
     const std::size_t total = scene.triangleCount();
-    if (total > 0 && out.behind == total) {
-        diagnostics.warn(where,
-                         "every triangle is behind the camera (is N pointing away from "
-                         "the object?): the image is empty");
+    if (everyTriangleBehind(out, scene)) {
+        std::string text =
+            "every triangle is behind the camera (is N pointing away from the object?): the "
+            "image is empty";
+        if (const std::size_t mirrored = trianglesBehindEye(out, scene); mirrored > 0)
+            text += std::string(
+                        ". The plain divide of seed 000, x/z and y/z with z < 0, would "
+                        "draw ") +
+                    (total == 1          ? std::string("it")
+                     : mirrored == total ? "all " + std::to_string(mirrored) + " of them"
+                                         : std::to_string(mirrored) + " of them") +
+                    ": the object's point reflection through the eye (turned half a turn on "
+                    "the screen), where the z-buffer, keeping the smallest z, keeps the side "
+                    "farthest from the camera";
+        diagnostics.warn(where, text);
     } else if (out.behind + out.clipped + out.clippedAway > 0) {
         bool planes = false;
         for (const Draw& draw : scene.draws) planes = planes || !draw.clipPlanes.empty();
@@ -528,11 +573,18 @@ Projection ProjectionStage::run(const Scene& scene, const ViewTransform& view,
                                     "different signs): only the part with w >= " +
                                     formatNumber(out.nearW) + " is drawn");
     }
-    if (out.mode == NearPlane::Mode::Naive && out.throughZeroOrBehind > 0) {
-        diagnostics.warn(where, "naive projection: " + std::to_string(out.throughZeroOrBehind) +
-                                    " triangles have a vertex at or behind the camera and were "
-                                    "divided by its z <= 0 anyway");
-    }
+    if (out.behindEye > 0)
+        diagnostics.note(
+            where, "plain divide: " + countOf(out.behindEye, "triangle lies", "triangles lie") +
+                       " wholly behind the eye (w < 0), drawn without clipping as "
+                       "the point reflection through the eye");
+    if (out.acrossEye > 0)
+        diagnostics.warn(where, "plain divide: " +
+                                    countOf(out.acrossEye, "triangle reaches", "triangles reach") +
+                                    " from in front of the eye to at or behind it (w of "
+                                    "different signs, or 0): divided by w without clipping, it "
+                                    "wraps through infinity and is drawn wrong (clipping at the "
+                                    "near plane draws its front part)");
     if (out.outsideGuardBand > 0) {
         diagnostics.warn(where, std::to_string(out.outsideGuardBand) +
                                     " vertices project more than 2^28 pixels from the image and "

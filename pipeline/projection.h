@@ -88,12 +88,27 @@ struct Projection {
     Buffer<ScreenTriangle> triangles;  // what scan conversion receives, in draw order
 
     std::size_t inside = 0, clipped = 0, behind = 0, clippedAway = 0, culled = 0, nonFinite = 0;
-    std::size_t backFaces = 0;            // hidden back faces of closed surfaces, left out
-    std::size_t throughZeroOrBehind = 0;  // naive projection: triangles with a vertex w <= 0
-    std::size_t acrossInfinity = 0;       // SameSide: triangles whose w differ in sign (clipped)
-    std::size_t beyondGuardBand = 0;      // wholly more than 2^28 pixels off the image
-    std::size_t outsideGuardBand = 0;     // vertices pulled in to the guard band
+    std::size_t backFaces = 0;  // hidden back faces of closed surfaces, left out
+    // The plain divide (NearPlane::Mode::Naive): triangles with every w < 0, drawn as their
+    // point reflection through the eye, and those whose w differ in sign or reach 0, which
+    // wrap through infinity and are drawn wrong.
+    std::size_t behindEye = 0;
+    std::size_t acrossEye = 0;
+    std::size_t acrossInfinity = 0;    // SameSide: triangles whose w differ in sign (clipped)
+    std::size_t beyondGuardBand = 0;   // wholly more than 2^28 pixels off the image
+    std::size_t outsideGuardBand = 0;  // vertices pulled in to the guard band
 };
+
+// The triangles of a scene whose three vertices all lie behind the eye (w < 0 in clip
+// space): what the plain divide draws as the point reflection through the eye when near-plane
+// clipping leaves the image empty.
+std::size_t trianglesBehindEye(const Projection& projection, const Scene& scene);
+// Whether near-plane clipping left nothing to draw because every triangle lies behind the
+// near plane: then the warning, the window and the command line offer the plain divide.
+inline bool everyTriangleBehind(const Projection& projection, const Scene& scene) {
+    const std::size_t total = scene.triangleCount();
+    return projection.mode == NearPlane::Mode::Clip && total > 0 && projection.behind == total;
+}
 
 // Pixels from NDC, before snapping: x = (x_ndc + 1) W/2, and y = (1 - y_ndc) H/2 when NDC's
 // y points up (the course's convention), (y_ndc + 1) H/2 otherwise.

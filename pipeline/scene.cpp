@@ -41,6 +41,7 @@ RasterRules RasterRules::hw2() {
     rules.snap = VertexSnap::Nearest;
     rules.fill = FillRule::TopLeft;
     rules.interpolation = Interpolation::PerspectiveCorrect;
+    rules.texel = TexelRounding::Truncate;
     return rules;
 }
 

@@ -213,12 +213,19 @@ struct RasterRules {
         ScreenAffine,        // screen barycentrics applied to view-space P and N (seed 000)
         PerspectiveCorrect,  // barycentrics weighted by 1/w (seed 001)
     };
+    // Which texel of a w x h texture the coordinate s picks (t likewise with h).
+    enum class TexelRounding : std::uint8_t {
+        Nearest,   // the texel nearest to s w once s has wrapped into [0, 1) (seed 001's text)
+        Truncate,  // (int)(s w + 0.5) mod w, (int) toward zero: the HW2 reference images'
+                   // rule, which differs from Nearest where s w + 0.5 < 0
+    };
 
     int subpixelBits = 0;       // vertices lie on a grid of 1/2^bits pixel (at most 16)
     double sampleOffset = 0.0;  // pixel (x, y) is sampled at (x + offset, y + offset)
     VertexSnap snap = VertexSnap::Truncate;
     FillRule fill = FillRule::Inclusive;
     Interpolation interpolation = Interpolation::ScreenAffine;
+    TexelRounding texel = TexelRounding::Nearest;
 
     static RasterRules course();  // seed 000 as written: integer vertices, inclusive edges
     static RasterRules hw2();     // seed 001's DDA: samples at integer points, half-open spans

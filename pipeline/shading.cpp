@@ -76,14 +76,43 @@ void attributeWeights(const RasterRules& rules, const DrawProjection& proj,
                        1.0 / proj.pClip[v[2]].w);
 }
 
-vec4 sampleTexture(const Texture& texture, const vec2& st) {
-    if (texture.width <= 0 || texture.height <= 0) return vec4(0.0f);
-    const auto wrap = [](float u, int size) {
+ivec2 texelIndex(const Texture& texture, const vec2& st, RasterRules::TexelRounding rule) {
+    const auto pick = [rule](float u, int size) {
+        if (rule == RasterRules::TexelRounding::Truncate) {
+            // (int)(u size + 0.5) mod size; a coordinate too large for an int wraps as 0.
+            const float scaled = u * float(size) + 0.5f;
+            const auto whole =
+                std::abs(scaled) < 2e9f ? static_cast<long long>(scaled) : 0LL;  // toward 0
+            const auto i = static_cast<int>(whole % size);
+            return i < 0 ? i + size : i;
+        }
         const float f = u - std::floor(u);  // -1.3, -0.3, 0.7, 1.7 all give 0.7
         const int i = static_cast<int>(std::floor(f * float(size) + 0.5f)) % size;
         return std::clamp(i, 0, size - 1);
     };
-    return texture.at(wrap(st.x, texture.width), wrap(st.y, texture.height));
+    return {pick(st.x, texture.width), pick(st.y, texture.height)};
+}
+
+vec4 sampleTexture(const Texture& texture, const vec2& st, RasterRules::TexelRounding rule) {
+    if (texture.width <= 0 || texture.height <= 0) return vec4(0.0f);
+    const ivec2 texel = texelIndex(texture, st, rule);
+    return texture.at(texel.x, texel.y);
+}
+
+std::optional<TexelLookup> texelLookup(const Scene& scene, const DrawProjection& proj,
+                                       const std::array<std::uint32_t, 3>& v, std::uint32_t draw,
+                                       float beta, float gamma) {
+    const Draw& d = scene.draws[draw];
+    if (d.colour != ColourSource::Texture || !d.texture || !d.mesh || d.mesh->texcoords.empty() ||
+        d.texture->width <= 0 || d.texture->height <= 0)
+        return std::nullopt;
+    attributeWeights(scene.rules, proj, v, beta, gamma);
+    TexelLookup out;
+    out.st = interpolate(ProjectedValues<vec2>{d.mesh->texcoords, proj}, v, beta, gamma);
+    out.used = texelIndex(*d.texture, out.st, scene.rules.texel);
+    out.nearest = texelIndex(*d.texture, out.st, RasterRules::TexelRounding::Nearest);
+    out.truncated = texelIndex(*d.texture, out.st, RasterRules::TexelRounding::Truncate);
+    return out;
 }
 
 namespace {
@@ -161,7 +190,7 @@ Shading shade(const Scene& scene, const ViewTransform& view, const Normals& norm
     // The object colour of a draw at the weights (beta, gamma) of a screen triangle.
     auto colourAt = [&](const Draw& draw, const DrawVertices& dv, const ScreenTriangle& tri,
                         float beta, float gamma) {
-        return objectColour(draw, dv.colour, dv.texcoord, tri.v, beta, gamma);
+        return objectColour(draw, scene.rules.texel, dv.colour, dv.texcoord, tri.v, beta, gamma);
     };
     // The normal to light a point with: the triangle's (flat normals) or interpolated. None
     // for an unlit draw (HW2 geometry before the first light, in a lit scene): nothing reads

@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -114,8 +115,28 @@ inline void perspectiveWeights(float& beta, float& gamma, double invW0, double i
 void attributeWeights(const RasterRules& rules, const DrawProjection& proj,
                       const std::array<std::uint32_t, 3>& v, float& beta, float& gamma);
 
-// The texel nearest to (s w, t h), the coordinates wrapping around (seed 001).
-vec4 sampleTexture(const Texture& texture, const vec2& st);
+// The texel (i, j) of a w x h texture at (s, t), under a rule of texel rounding: the one
+// nearest to (s w, t h), the coordinates wrapping around (seed 001), or the HW2 reference
+// images' truncation (RasterRules::TexelRounding). The texture is not empty.
+ivec2 texelIndex(const Texture& texture, const vec2& st, RasterRules::TexelRounding rule);
+// That texel's value; zero for an empty texture.
+vec4 sampleTexture(const Texture& texture, const vec2& st, RasterRules::TexelRounding rule);
+
+// Where a fragment of a textured draw reads its texture, under both rules of texel rounding:
+// seed 001's text and the HW2 reference images disagree where s w + 0.5 < 0 (or t h + 0.5),
+// and the pixel inspector and --explain-pixel say so.
+struct TexelLookup {
+    vec2 st = vec2(0.0f);        // interpolated under the scene's rules
+    ivec2 used = ivec2(0);       // the texel read, under the scene's rules
+    ivec2 nearest = ivec2(0);    // seed 001's text: nearest to (s w, t h) once wrapped
+    ivec2 truncated = ivec2(0);  // the HW2 images: (int)(s w + 0.5) mod w
+    bool rulesDisagree() const { return nearest != truncated; }
+};
+// The lookup of a fragment of screen triangle tri at its screen weights (beta, gamma); none
+// when its draw does not read a texture.
+std::optional<TexelLookup> texelLookup(const Scene& scene, const DrawProjection& proj,
+                                       const std::array<std::uint32_t, 3>& v, std::uint32_t draw,
+                                       float beta, float gamma);
 
 // The object colour (the course's Od) of a draw at the weights (beta, gamma) of its projected
 // vertices v: the material's, the vertex colours interpolated, or the texel there (decals:
@@ -123,8 +144,9 @@ vec4 sampleTexture(const Texture& texture, const vec2& st);
 // projected vertex, empty when the draw's colour source does not read them or the mesh has
 // none.
 template <typename Colours, typename Texcoords>
-vec3 objectColour(const Draw& draw, const Colours& colours, const Texcoords& texcoords,
-                  const std::array<std::uint32_t, 3>& v, float beta, float gamma) {
+vec3 objectColour(const Draw& draw, RasterRules::TexelRounding texel, const Colours& colours,
+                  const Texcoords& texcoords, const std::array<std::uint32_t, 3>& v, float beta,
+                  float gamma) {
     switch (draw.colour) {
         case ColourSource::Material:
             return draw.material.od;
@@ -132,10 +154,11 @@ vec3 objectColour(const Draw& draw, const Colours& colours, const Texcoords& tex
             return colours.empty() ? draw.material.od : interpolate(colours, v, beta, gamma);
         case ColourSource::Texture: {
             if (!draw.texture || texcoords.empty()) return draw.material.od;
-            const vec4 texel = sampleTexture(*draw.texture, interpolate(texcoords, v, beta, gamma));
-            if (!draw.decals || colours.empty()) return vec3(texel);
+            const vec4 value =
+                sampleTexture(*draw.texture, interpolate(texcoords, v, beta, gamma), texel);
+            if (!draw.decals || colours.empty()) return vec3(value);
             // Decals: the texture over the object colour, by the texel's alpha.
-            return glm::mix(interpolate(colours, v, beta, gamma), vec3(texel), texel.a);
+            return glm::mix(interpolate(colours, v, beta, gamma), vec3(value), value.a);
         }
     }
     return draw.material.od;

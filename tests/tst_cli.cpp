@@ -103,6 +103,7 @@ private slots:
     void courseSamples_data();
     void courseSamples();
     void runCommandFile();
+    void runExplainsTexel();
     void runWritesEveryImage();
     void runBadCommandFile_data();
     void runBadCommandFile();
@@ -610,7 +611,13 @@ void TestCli::cameraFacingAway() {
     QCOMPARE(linesOf(run.err),
              QStringList({kUfpeCameraNote.arg(path),
                           "trefoil.byu: warning: every triangle is behind the camera (is N "
-                          "pointing away from the object?): the image is empty"}));
+                          "pointing away from the object?): the image is empty. The plain "
+                          "divide of seed 000, x/z and y/z with z < 0, would draw all 7776 of "
+                          "them: the object's point reflection through the eye (turned half a "
+                          "turn on the screen), where the z-buffer, keeping the smallest z, "
+                          "keeps the side farthest from the camera",
+                          "hint: --naive-projection draws the 7776 triangles behind the eye "
+                          "with seed 000's plain divide"}));
     QCOMPARE(run.exitCode, 0);
     QVERIFY2(run.out.contains(QStringLiteral("  7776 triangles, phong shading, 0 pixels covered")),
              qPrintable(run.out));
@@ -954,6 +961,33 @@ void TestCli::courseSamples() {
 // A command file: one triangle, screen (0, 0), (8, 0), (0, 4) of an 8x4 image, rows 0..3
 // covering 8, 6, 4 and 2 pixels, in (1, 0.5, 0.25) -> bytes (255, 127, 63); then an unknown
 // command, skipped with a note.
+void TestCli::runExplainsTexel() {
+    // s runs from -1 at x = 0 to 0 at x = 8 along row 0, on a 3x1 texture. At (6, 0),
+    // s = -0.25: the seed's text wraps it to 0.75 and takes the texel nearest to 2.25, 2; the
+    // reference images' (int)(3s + 0.5) = (int)(-0.25) = 0 gives texel 0, which the hw2 rules
+    // read. --explain-pixel says both.
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QImage texture(3, 1, QImage::Format_RGBA8888);
+    for (int i = 0; i < 3; ++i) texture.setPixelColor(i, 0, QColor(40 + 50 * i, 40, 200));
+    QVERIFY(texture.save(dir.filePath("grid.png")));
+    const QString path = writeFixture(dir, "tex.txt",
+                                      "png 8 8 tex.png\ntexture grid.png\ntexcoord -1 0\n"
+                                      "xyz -1 -1 0.5\ntexcoord 0 0\nxyz 1 -1 0.5\ntexcoord -1 0\n"
+                                      "xyz -1 1 0.5\ntrit 1 2 3\n");
+    QVERIFY(!path.isEmpty());
+    CliRun run;
+    RUN_CLI(run, QStringList({"run", path, "--explain-pixel", "6,0"}), dir.path());
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(run.out.contains("    texture at (s, t) = (-0.25, 0): texel (0, 0)\n"
+                              "    here seed 001's text and its reference images disagree: the "
+                              "texel nearest to (s w, t h) once the coordinates wrap is (2, 0), "
+                              "the images' (int)(s w + 0.5) mod w gives (0, 0); these rules "
+                              "follow the images\n"),
+             qPrintable(run.out));
+    QCOMPARE(QImage(dir.filePath("tex.png")).pixelColor(6, 0), QColor(40, 40, 200));
+}
+
 void TestCli::runCommandFile() {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
@@ -1081,8 +1115,8 @@ void TestCli::bench_data() {
                         "--threads", "1", "--keep-depth"})
         << 1000 << 1 << true << 1 << 0;
     QTest::newRow("torus, flat, 2 threads")
-        << QStringList({"--scene", "torus-1k", "--size", "160x120", "--shading", "flat",
-                        "--threads", "2"})
+        << QStringList(
+               {"--scene", "torus-1k", "--size", "160x120", "--shading", "flat", "--threads", "2"})
         << 1000 << 2 << false << 0 << 1;
 }
 

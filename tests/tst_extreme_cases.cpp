@@ -12,6 +12,7 @@
 
 #include "course_readers.h"
 #include "course_scene.h"
+#include "hw2_reader.h"
 #include "renderer.h"
 #include "test_support.h"
 
@@ -310,6 +311,88 @@ private slots:
         QFETCH(QString, message);
         const Outcome out = run(camera, lighting, object);
         QCOMPARE(out.error, message);
+    }
+    // HW2's stiff orthographic projection: l > r (the image mirrored left to right), near
+    // and far both negative (the visible box at positive eye z), a model/view that tilts a
+    // 7x8 grid of unit squares, painted as a checkerboard of pairs of triangles. Every pixel
+    // whose sample lies inside a square (by more than 1e-6 of a pixel) is drawn and every one
+    // outside all of them is not: one continuous checkerboard, without a seam where one path
+    // hands over to another (screen edges, the mirrored x, clipping).
+    void stiffOrthographicCheckerboard() {
+        QByteArray text =
+            "png 120 120 ortho.png\ncolor 0 0.5 0\n"
+            "loadmv 1 0.1 0 0  0 0.6 0.8 -1.2  0 0.8 -0.6 4.5  0 0 0 1\n"
+            "ortho 2 -2.5 -2 -0.5 -5.5 -2.5\n";
+        const auto index = [](int i, int j) { return (j + 4) * 7 + (i + 3) + 1; };
+        for (int j = -4; j <= 3; ++j)
+            for (int i = -3; i <= 3; ++i)
+                text += "xyz " + QByteArray::number(i) + " " + QByteArray::number(j) + " 0\n";
+        std::vector<std::array<dvec2, 3>> expected;  // each triangle on the screen
+        // The seed's ortho matrix, with near = 2n - f, worked out here on its own.
+        const double l = 2, r = -2.5, b = -2, t = -0.5;
+        const auto screen = [&](int i, int j) {
+            const double xEye = i + 0.1 * j, yEye = 0.6 * j - 1.2;
+            const double xNdc = 2 / (r - l) * xEye - (r + l) / (r - l);
+            const double yNdc = 2 / (t - b) * yEye - (t + b) / (t - b);
+            return dvec2((xNdc + 1) * 60, (yNdc + 1) * 60);
+        };
+        for (int j = -4; j < 3; ++j)
+            for (int i = -3; i < 3; ++i) {
+                if ((i + j) % 2 != 0) continue;
+                const int a = index(i, j), bb = index(i + 1, j), c = index(i + 1, j + 1),
+                          d = index(i, j + 1);
+                text += "trif " + QByteArray::number(a) + " " + QByteArray::number(bb) + " " +
+                        QByteArray::number(c) + "\ntrif " + QByteArray::number(a) + " " +
+                        QByteArray::number(c) + " " + QByteArray::number(d) + "\n";
+                expected.push_back({screen(i, j), screen(i + 1, j), screen(i + 1, j + 1)});
+                expected.push_back({screen(i, j), screen(i + 1, j + 1), screen(i, j + 1)});
+            }
+        Diagnostics diagnostics;
+        const TextureLoader noTextures =
+            [](const std::string&,
+               const SourceLocation& where) -> Result<std::shared_ptr<const Texture>> {
+            return makeError(ErrorCode::Io, where, "no textures here");
+        };
+        auto file = readHw2({text.constData(), std::size_t(text.size())}, "ortho.txt", noTextures,
+                            diagnostics);
+        QVERIFY2(file, file ? "" : file.error().toString().c_str());
+        auto scene = std::make_shared<const Scene>(file->images.at(0).scene);
+        auto frame = renderFrame(scene);
+        QVERIFY(frame);
+        // Twice the signed area of (from, to, p): which side of from -> to the point p lies on.
+        const auto side = [](const dvec2& from, const dvec2& to, const dvec2& p) {
+            return (to.x - from.x) * (p.y - from.y) - (to.y - from.y) * (p.x - from.x);
+        };
+        int inside = 0;
+        for (int y = 0; y < 120; ++y)
+            for (int x = 0; x < 120; ++x) {
+                const dvec2 p(x, y);
+                // The sample's least signed distance to the edges of each triangle, in pixels
+                // (positive inside): inside by 1e-6 of a pixel, or outside every one by as much.
+                bool in = false, near = false;
+                for (const auto& tri : expected) {
+                    const double area = side(tri[0], tri[1], tri[2]);
+                    double least = 1e300;
+                    for (int k = 0; k < 3; ++k) {
+                        const dvec2& a = tri[std::size_t(k)];
+                        const dvec2& bEnd = tri[std::size_t((k + 1) % 3)];
+                        least = std::min(
+                            least, side(a, bEnd, p) * (area > 0 ? 1 : -1) / glm::length(bEnd - a));
+                    }
+                    in = in || least > 1e-6;
+                    near = near || std::abs(least) <= 1e-6;
+                }
+                const bool drawn = frame->depth->triangle.at(x, y) != kNoTriangle;
+                inside += in ? 1 : 0;
+                if (near && !in) continue;  // a sample on an edge: the fill rule decides
+                QVERIFY2(drawn == in, qPrintable(QStringLiteral("pixel (%1, %2) %3")
+                                                     .arg(x)
+                                                     .arg(y)
+                                                     .arg(drawn ? "drawn outside the squares"
+                                                                : "missed inside a square")));
+            }
+        // About half the image: a checkerboard that fills it.
+        QVERIFY2(inside > 6000 && inside < 8400, qPrintable(QString::number(inside)));
     }
 };
 

@@ -178,7 +178,9 @@ void TestHw2Reader::png() {
     QCOMPARE(r.snap, RasterRules::VertexSnap::Nearest);
     QCOMPARE(r.fill, RasterRules::FillRule::TopLeft);
     QCOMPARE(r.interpolation, RasterRules::Interpolation::PerspectiveCorrect);
-    QCOMPARE(scene.nearPlane.mode, NearPlane::Mode::SameSide);
+    QCOMPARE(r.texel, RasterRules::TexelRounding::Truncate);
+    // No clipping against w before the divide (seed 001: "we won't add it").
+    QCOMPARE(scene.nearPlane.mode, NearPlane::Mode::Naive);
     QVERIFY(diagnostics.empty());
 }
 

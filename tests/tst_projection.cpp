@@ -193,9 +193,15 @@ private slots:
         QCOMPARE(run.projection.triangles.size(), std::size_t(0));
         QCOMPARE(run.projection.draws[0].fate[1], TriangleFate::Behind);
         QCOMPARE(run.diagnostics.size(), std::size_t(1));
+        QVERIFY(everyTriangleBehind(run.projection, scene));
+        QCOMPARE(trianglesBehindEye(run.projection, scene), std::size_t(2));
         QCOMPARE(QString::fromStdString(run.diagnostics.items()[0].toString()),
                  QStringLiteral("behind.byu: warning: every triangle is behind the camera (is N "
-                                "pointing away from the object?): the image is empty"));
+                                "pointing away from the object?): the image is empty. The plain "
+                                "divide of seed 000, x/z and y/z with z < 0, would draw all 2 of "
+                                "them: the object's point reflection through the eye (turned "
+                                "half a turn on the screen), where the z-buffer, keeping the "
+                                "smallest z, keeps the side farthest from the camera"));
     }
 
     void vertexAtTheEyeUnderNaiveProjectionIsDropped() {
@@ -266,6 +272,74 @@ private slots:
         QCOMPARE(clipFromViewOf(scene, scene.draws[0]), frustum);
     }
 
+    // Seed 000's plain divide against clipping, for the three kinds of course scene: an
+    // object wholly behind the camera, one straddling z = 0, one in front.
+    void plainDivideWhollyBehind() {
+        // The same triangle at z = +10 and at z = -10: divided by z < 0, each vertex lands at
+        // minus its NDC in front, the point reflection through the eye (x and y mirrored).
+        const auto scene = [](double z) {
+            Scene s = testing::makeScene(
+                testing::axisCamera(),
+                testing::makeMesh({{1, 2, z}, {4, -1, z}, {-3, -2, z}}, {{0, 1, 2}}), 100, 100);
+            s.nearPlane.mode = NearPlane::Mode::Naive;
+            return s;
+        };
+        const Run front = project(scene(10)), behind = project(scene(-10));
+        for (std::uint32_t v = 0; v < 3; ++v)
+            RL_COMPARE_VEC(behind.projection.draws[0].pNdc[v], -front.projection.draws[0].pNdc[v],
+                           1e-15);
+        QCOMPARE(behind.projection.triangles.size(), std::size_t(1));
+        QCOMPARE(behind.projection.behindEye, std::size_t(1));
+        QCOMPARE(behind.projection.acrossEye, std::size_t(0));
+        QVERIFY(behind.diagnostics.contains(
+            "plain divide: 1 triangle lies wholly behind the eye (w < 0), drawn without "
+            "clipping as the point reflection through the eye"));
+        QCOMPARE(front.projection.behindEye + front.projection.acrossEye, std::size_t(0));
+        // Clipping draws nothing of it and offers the plain divide in its warning.
+        Scene clipped = scene(-10);
+        clipped.nearPlane.mode = NearPlane::Mode::Clip;
+        const Run none = project(clipped);
+        QVERIFY(everyTriangleBehind(none.projection, clipped));
+        QCOMPARE(none.projection.triangles.size(), std::size_t(0));
+        QVERIFY(none.diagnostics.contains("would draw it: the object's point reflection"));
+    }
+
+    void plainDivideStraddling() {
+        // From z = 10 to z = -5: the plain divide draws the triangle through infinity, wrong,
+        // and says so; clipping draws its front part (a quad: two fan triangles).
+        Scene scene = testing::makeScene(
+            testing::axisCamera(),
+            testing::makeMesh({{-1, -1, 10}, {1, -1, 10}, {0, 1, -5}}, {{0, 1, 2}}), 100, 100);
+        scene.nearPlane.mode = NearPlane::Mode::Naive;
+        const Run plain = project(scene);
+        QCOMPARE(plain.projection.acrossEye, std::size_t(1));
+        QCOMPARE(plain.projection.triangles.size(), std::size_t(1));
+        QVERIFY(plain.diagnostics.contains("it wraps through infinity and is drawn wrong"));
+        scene.nearPlane.mode = NearPlane::Mode::Clip;
+        const Run clipped = project(scene);
+        QCOMPARE(clipped.projection.clipped, std::size_t(1));
+        QCOMPARE(clipped.projection.triangles.size(), std::size_t(2));
+        QVERIFY(!everyTriangleBehind(clipped.projection, scene));
+        QVERIFY(!clipped.diagnostics.contains("plain divide"));
+    }
+
+    void plainDivideInFront() {
+        // Wholly in front: both give the same screen triangles, and neither warns.
+        Scene scene = testing::makeScene(
+            testing::axisCamera(),
+            testing::makeMesh({{-1, -1, 10}, {1, -1, 10}, {0, 1, 5}}, {{0, 1, 2}}), 100, 100);
+        scene.nearPlane.mode = NearPlane::Mode::Naive;
+        const Run plain = project(scene);
+        scene.nearPlane.mode = NearPlane::Mode::Clip;
+        const Run clipped = project(scene);
+        QCOMPARE(plain.projection.triangles.size(), std::size_t(1));
+        QCOMPARE(clipped.projection.triangles.size(), std::size_t(1));
+        for (std::uint32_t v = 0; v < 3; ++v)
+            QCOMPARE(plain.projection.draws[0].pScreen[v], clipped.projection.draws[0].pScreen[v]);
+        QVERIFY(plain.diagnostics.empty());
+        QVERIFY(clipped.diagnostics.empty());
+    }
+
     void naiveProjectionDividesByNegativeZ() {
         Scene scene =
             testing::makeScene(testing::axisCamera(),
@@ -281,9 +355,11 @@ private slots:
         // The vertex at z = 0 projects to infinity: that triangle is dropped and counted.
         QCOMPARE(p.fate[1], TriangleFate::NonFinite);
         QCOMPARE(run.projection.nonFinite, std::size_t(1));
-        QCOMPARE(run.projection.throughZeroOrBehind, std::size_t(2));
+        // Both reach from in front of the eye to behind it (z = -10) or onto it (z = 0).
+        QCOMPARE(run.projection.acrossEye, std::size_t(2));
+        QCOMPARE(run.projection.behindEye, std::size_t(0));
         QVERIFY(run.diagnostics.contains(
-            "naive projection: 2 triangles have a vertex at or behind the camera"));
+            "plain divide: 2 triangles reach from in front of the eye to at or behind it"));
     }
     void severalThreadsEmitTheSameTriangles() {
         // Nothing crosses a plane, so several threads emit the triangles. Draw 0: a closed

@@ -765,10 +765,11 @@ void PixelInspector::updateBreakdown() {
     if (rl::litPerTriangle(model)) {
         // At the barycentre of the whole (unclipped) mesh triangle.
         const auto& corners = mesh.triangles[tri.source];
-        b.objectColour =
-            rl::objectColour(draw, colours, texcoords, corners, 1.0f / 3.0f, 1.0f / 3.0f);
+        b.objectColour = rl::objectColour(draw, scene.rules.texel, colours, texcoords, corners,
+                                          1.0f / 3.0f, 1.0f / 3.0f);
     } else {
-        b.objectColour = rl::objectColour(draw, colours, texcoords, tri.v, beta, gamma);
+        b.objectColour =
+            rl::objectColour(draw, scene.rules.texel, colours, texcoords, tri.v, beta, gamma);
     }
     if (model == rl::ShadingModel::Gouraud) {
         b.weights = {1.0f - beta - gamma, beta, gamma};
@@ -824,6 +825,26 @@ void PixelInspector::updateBreakdown() {
             flag(LightingFlag::OneSided,
                  tr("One-sided lighting: the back of the surface is seen (V.N < 0) and N is not "
                     "turned toward the viewer."));
+    }
+    if (const auto lookup = rl::texelLookup(scene, proj, tri.v, tri.draw, row->beta, row->gamma)) {
+        const auto texel = [](const rl::ivec2& t) {
+            return QStringLiteral("(%1, %2)").arg(t.x).arg(t.y);
+        };
+        QString text = tr("Texture at (s, t) = (%1, %2): texel %3.")
+                           .arg(num(lookup->st.x, 4), num(lookup->st.y, 4), texel(lookup->used));
+        if (lookup->rulesDisagree())
+            text += QLatin1Char(' ') +
+                    (scene.rules.texel == rl::RasterRules::TexelRounding::Truncate
+                         ? tr("Seed 001's text and its reference images disagree here: the "
+                              "texel nearest to (s w, t h) once the coordinates wrap is %1; the "
+                              "images' (int)(s w + 0.5) mod w gives %2, which these rules "
+                              "follow.")
+                         : tr("Seed 001's text and its reference images disagree here: the "
+                              "texel nearest to (s w, t h) once the coordinates wrap is %1, "
+                              "which these rules follow; the images' (int)(s w + 0.5) mod w "
+                              "gives %2."))
+                        .arg(texel(lookup->nearest), texel(lookup->truncated));
+        flag(LightingFlag::Texel, text);
     }
     const float scale = conv.colourScale;
     for (int c = 0; c < 3; ++c) {

@@ -63,6 +63,7 @@ enum class LightingFlag : std::uint8_t {
     LightAtPoint,  // L = 0: the light sits on the point
     OutsideCone,   // outside a spot light's cone: no light from it
     OneSided,      // one-sided lighting: N not turned toward the viewer
+    Texel,         // the texel a textured draw read, and where seed 001's rules disagree
 };
 
 // The lighting of one fragment, as the frame's shading stage works it out.
