@@ -5,11 +5,14 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFrame>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
@@ -17,6 +20,7 @@
 #include <QTextBrowser>
 #include <QToolBar>
 #include <QToolButton>
+#include <QVBoxLayout>
 
 #include <algorithm>
 #include <cmath>
@@ -108,9 +112,33 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_normalFont = QApplication::font();
     m_normalPalette = QApplication::palette();
     m_inspection = new Inspection(this);
-    m_view = new FrameImageView(this);
+    // The image, below a bar that shows only when clipping has left nothing to draw.
+    auto* central = new QWidget(this);
+    auto* centralLayout = new QVBoxLayout(central);
+    centralLayout->setContentsMargins(0, 0, 0, 0);
+    centralLayout->setSpacing(0);
+    m_behindBanner = new QFrame(central);
+    m_behindBanner->setObjectName(QStringLiteral("behindBanner"));
+    m_behindBanner->setAutoFillBackground(true);
+    QPalette bannerPalette = m_behindBanner->palette();
+    bannerPalette.setColor(QPalette::Window, QColor(255, 243, 205));
+    bannerPalette.setColor(QPalette::WindowText, QColor(60, 45, 0));
+    m_behindBanner->setPalette(bannerPalette);
+    auto* bannerLayout = new QHBoxLayout(m_behindBanner);
+    m_behindText = new QLabel(m_behindBanner);
+    m_behindText->setWordWrap(true);
+    m_behindButton = new QPushButton(tr("Draw with the Plain Divide"), m_behindBanner);
+    m_behindButton->setObjectName(QStringLiteral("plainDivideButton"));
+    connect(m_behindButton, &QPushButton::clicked, this,
+            [this] { setProjection(rl::NearPlane::Mode::Naive); });
+    bannerLayout->addWidget(m_behindText, 1);
+    bannerLayout->addWidget(m_behindButton);
+    m_behindBanner->setVisible(false);
+    m_view = new FrameImageView(central);
     m_view->setObjectName(QStringLiteral("imageView"));
-    setCentralWidget(m_view);
+    centralLayout->addWidget(m_behindBanner);
+    centralLayout->addWidget(m_view, 1);
+    setCentralWidget(central);
     m_controller = new RenderController(this);
     m_replayBuilder = new ReplayBuilder(this);
     connect(m_controller, &RenderController::frameReady, this, &MainWindow::onFrameReady);
@@ -533,6 +561,7 @@ void MainWindow::createActions() {
     shading->addSeparator();
     QMenu* rules = shading->addMenu(tr("&Rasterization Rules"));
     rules->setObjectName(QStringLiteral("rulesMenu"));
+    m_rulesMenu = rules;
     m_rulesGroup = new QActionGroup(this);
     const std::pair<rl::RuleSet, QString> ruleSets[] = {
         {rl::RuleSet::Course, tr("&Course (seed 000: whole-pixel vertices, screen-space "
@@ -549,6 +578,27 @@ void MainWindow::createActions() {
         action->setObjectName(QStringLiteral("rules_%1").arg(QLatin1String(rl::ruleSetName(set))));
         m_rulesGroup->addAction(action);
         connect(action, &QAction::triggered, this, [this, set = set] { setRules(set); });
+    }
+
+    QMenu* projection = shading->addMenu(tr("Pro&jection"));
+    projection->setObjectName(QStringLiteral("projectionMenu"));
+    m_projectionGroup = new QActionGroup(this);
+    const std::pair<rl::NearPlane::Mode, QString> modes[] = {
+        {rl::NearPlane::Mode::Clip,
+         tr("&Clip at the Near Plane (nothing behind the eye is divided)")},
+        {rl::NearPlane::Mode::Naive,
+         tr("&Plain Divide, No Clipping (seed 000 as written; seed 001's HW2)")},
+        {rl::NearPlane::Mode::SameSide,
+         tr("&Same Side (clip only triangles that cross the eye plane)")},
+    };
+    for (const auto& [mode, label] : modes) {
+        QAction* action = projection->addAction(label);
+        action->setCheckable(true);
+        action->setChecked(m_document.projection() == mode);
+        action->setData(static_cast<int>(mode));
+        action->setObjectName(QStringLiteral("projection_%1").arg(static_cast<int>(mode)));
+        m_projectionGroup->addAction(action);
+        connect(action, &QAction::triggered, this, [this, mode = mode] { setProjection(mode); });
     }
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
@@ -730,8 +780,13 @@ bool MainWindow::openCommandFile(const QString& path) {
 }
 
 void MainWindow::documentChanged() {
-    // The shading menu acts on course scenes; a command file's draws bring their own.
-    m_shadingMenu->setEnabled(!m_document.showsCommandFile());  // the rules submenu too
+    // The shading models and rules act on course scenes; a command file's draws bring their
+    // own. The projection applies to both.
+    for (QAction* action : m_shadingGroup->actions())
+        action->setEnabled(!m_document.showsCommandFile());
+    m_rulesMenu->setEnabled(!m_document.showsCommandFile());
+    for (QAction* action : m_projectionGroup->actions())
+        action->setChecked(action->data().toInt() == static_cast<int>(m_document.projection()));
     m_imageMenu->clear();
     const QStringList images = m_document.imageNames();
     m_imageMenu->setEnabled(images.size() > 1);
@@ -774,6 +829,32 @@ void MainWindow::setRules(rl::RuleSet rules) {
     for (QAction* action : m_rulesGroup->actions())
         action->setChecked(action->data().toInt() == static_cast<int>(rules));
     requestRender();
+}
+
+void MainWindow::setProjection(rl::NearPlane::Mode mode) {
+    m_document.setProjection(mode);
+    for (QAction* action : m_projectionGroup->actions())
+        action->setChecked(action->data().toInt() == static_cast<int>(mode));
+    requestRender();
+}
+
+void MainWindow::updateBehindBanner() {
+    // Clipping left nothing: say what seed 000's formula would draw, and offer it.
+    const auto& trace = m_frame.trace;
+    const std::size_t mirrored = trace && rl::everyTriangleBehind(*trace->projection, *trace->scene)
+                                     ? rl::trianglesBehindEye(*trace->projection, *trace->scene)
+                                     : 0;
+    m_behindBanner->setVisible(mirrored > 0);
+    if (mirrored == 0) return;
+    m_behindText->setText(
+        tr("Every triangle is behind the camera (is N pointing away from the object?), so "
+           "clipping at the near plane leaves nothing to draw. Seed 000's formula divides by z "
+           "anyway: it would draw %1 of the %2 triangles as the object's point reflection "
+           "through the eye, turned half a turn on the screen, and the z-buffer (keeping the "
+           "smallest z) would keep the side farthest from the camera. The projection view's "
+           "side view shows the eye, N and the object.")
+            .arg(mirrored)
+            .arg(trace->scene->triangleCount()));
 }
 
 void MainWindow::requestRender() {
@@ -821,6 +902,7 @@ void MainWindow::onFrameReady(const RenderedFrame& frame) {
     updateTimeLabel();
     refreshMessages();
     refreshSceneSummary();
+    updateBehindBanner();
 }
 
 void MainWindow::onAnimationPlaying(bool playing) {

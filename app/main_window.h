@@ -27,6 +27,7 @@ class QLabel;
 class QMenu;
 class QListWidget;
 class QProgressBar;
+class QPushButton;
 class QTextBrowser;
 class QToolButton;
 
@@ -73,6 +74,13 @@ public:
     bool openCommandFile(const QString& path);
     void setShading(rl::ShadingModel model);
     void setRules(rl::RuleSet rules);
+    // What happens to triangles at or behind the eye (Shading > Projection), kept with the
+    // scene: clipping at the near plane, the plain divide of seeds 000 and 001, same side.
+    void setProjection(rl::NearPlane::Mode mode);
+    // The bar above the image offering the plain divide when clipping left every triangle
+    // behind the camera (hidden otherwise), and its button.
+    QWidget* behindBanner() const { return m_behindBanner; }
+    QPushButton* behindBannerButton() const { return m_behindButton; }
     // The final image of the frame shown.
     bool exportImage(const QString& path);
     // The image as displayed (at the cursor, with its overlays), the raw buffers at the cursor,
@@ -162,6 +170,7 @@ private:
     void openPartDialog(SceneDocument::Part part);
     void openCommandFileDialog();
     void documentChanged();  // menus, title, messages, watched files, and a new render
+    void updateBehindBanner();
     // Asks about unsaved edits of a part about to be replaced: false to stop.
     bool mayReplace(SceneDocument::Part part);
     void addRecentFile(const QString& path);
@@ -211,6 +220,11 @@ private:
     QToolButton* m_cancelButton = nullptr;
     QActionGroup* m_shadingGroup = nullptr;
     QActionGroup* m_rulesGroup = nullptr;
+    QActionGroup* m_projectionGroup = nullptr;
+    QMenu* m_rulesMenu = nullptr;
+    QWidget* m_behindBanner = nullptr;
+    QLabel* m_behindText = nullptr;
+    QPushButton* m_behindButton = nullptr;
     AccuracyPanel* m_accuracy = nullptr;
     ZBufferView* m_zbuffer = nullptr;
     PainterView* m_painter = nullptr;

@@ -65,6 +65,7 @@ rl::Status SceneDocument::openCommandFile(const QString& path) {
     auto file = guarded(path, [&] { return loadCommandFile(path, diagnostics); });
     if (!file) return file.error();
     m_commandFile = std::move(file).value();
+    m_commandFileProjection = m_commandFile->images.front().scene.nearPlane.mode;
     m_commandFilePath = path;
     m_commandFileDiagnostics = std::move(diagnostics);
     m_imageIndex = 0;
@@ -181,10 +182,22 @@ void SceneDocument::setSize(int width, int height) {
     m_settings.height = height;
 }
 
+rl::NearPlane::Mode SceneDocument::projection() const {
+    return m_commandFile ? m_commandFileProjection : m_settings.nearPlane.mode;
+}
+
+void SceneDocument::setProjection(rl::NearPlane::Mode mode) {
+    if (m_commandFile)
+        m_commandFileProjection = mode;
+    else
+        m_settings.nearPlane.mode = mode;
+}
+
 std::shared_ptr<const rl::Scene> SceneDocument::scene() const {
     auto scene = std::make_shared<rl::Scene>(
         m_commandFile ? m_commandFile->images[std::size_t(m_imageIndex)].scene
                       : rl::makeCourseScene(m_parts, m_settings));
+    scene->nearPlane.mode = projection();
     if (m_animation.enabled) rl::animateEveryDraw(*scene, m_animation.motion, m_animation.time);
     return scene;
 }

@@ -61,6 +61,11 @@ public:
     rl::CourseSceneSettings settings() const { return m_settings; }
     void setShading(rl::ShadingModel model) { m_settings.shading = model; }
     void setRules(rl::RuleSet rules) { m_settings.rules = rl::rulesOf(rules); }
+    // What happens to triangles at or behind the eye: the course scene's choice (clipping at
+    // the near plane unless chosen otherwise), or the command file's (seed 001's plain divide
+    // unless chosen otherwise, reset when a command file is opened).
+    rl::NearPlane::Mode projection() const;
+    void setProjection(rl::NearPlane::Mode mode);
     void setSize(int width, int height);
 
     std::shared_ptr<const rl::Scene> scene() const;
@@ -169,6 +174,7 @@ private:
     rl::CameraLayout m_cameraLayout = rl::CameraLayout::Auto;
     rl::LightingLayout m_lightingLayout = rl::LightingLayout::Auto;
     std::optional<rl::Hw2File> m_commandFile;
+    rl::NearPlane::Mode m_commandFileProjection = rl::NearPlane::Mode::Naive;
     QString m_commandFilePath;
     rl::Diagnostics m_commandFileDiagnostics;
     int m_imageIndex = 0;

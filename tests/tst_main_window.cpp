@@ -3,6 +3,9 @@
 // image; and its render controller always ends with the newest request.
 #include <QtTest>
 
+#include <QLabel>
+#include <QToolButton>
+
 #include <QMenu>
 #include <QPushButton>
 #include <QTableWidget>
@@ -24,6 +27,7 @@
 #include "main_window.h"
 #include "render_controller.h"
 #include "scene_document.h"
+#include "stage_strip.h"
 #include "test_support.h"
 
 using rasterlab::AccuracyPanel;
@@ -88,6 +92,8 @@ private slots:
     void openGoodObject();
     void flatShading();
     void rulesMenu();
+    void plainDivideForAnObjectBehind();
+    void commandFileProjection();
     void accuracyDock();
     void lastShadingWins();
     void exportImage();
@@ -312,6 +318,75 @@ void TestMainWindow::rulesMenu() {
     QVERIFY(window.currentImage() != course);
     // Shading is kept when the rules change.
     QCOMPARE(window.currentFrame()->scene->draws.front().shading, rl::ShadingModel::Phong);
+}
+
+void TestMainWindow::plainDivideForAnObjectBehind() {
+    // A course camera whose N points away from the object (as some of the course's own files
+    // do): clipping leaves nothing; the bar above the image says what seed 000's formula
+    // would draw and draws it in one click; the stage strip says so.
+    MainWindow window;
+    QSignalSpy spy(window.controller(), &RenderController::frameReady);
+    WAIT_FOR_FIRST_FRAME(spy);
+    QVERIFY(!window.behindBanner()->isVisibleTo(&window));
+    QCOMPARE(window.document().projection(), rl::NearPlane::Mode::Clip);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path =
+        writeFixture(dir, QStringLiteral("away.cfg"), "0 -380 330\n0 -380 330\n0 0 1\n1 0.4 0.3\n");
+    QVERIFY(window.openPart(SceneDocument::Part::Camera, path));
+    QVERIFY2(spy.wait(kFrameTimeoutMs), "no frame for the camera");
+    QVERIFY(!hasLitPixel(window.currentImage()));
+    QVERIFY(window.behindBanner()->isVisibleTo(&window));
+    auto* text = window.behindBanner()->findChild<QLabel*>();
+    QVERIFY(text && text->text().contains(QStringLiteral("draw 7776 of the 7776 triangles")));
+    auto* projection = window.stageStrip()->button(rl::StageId::Projection);
+    QVERIFY2(projection->text().endsWith(QStringLiteral("near clip")),
+             qPrintable(projection->text()));
+    spy.clear();
+    window.behindBannerButton()->click();
+    QVERIFY2(spy.wait(kFrameTimeoutMs), "no frame with the plain divide");
+    QCOMPARE(window.document().projection(), rl::NearPlane::Mode::Naive);
+    QCOMPARE(window.currentFrame()->projection->behindEye, kDefaultTriangles);
+    QVERIFY(hasLitPixel(window.currentImage()));
+    QVERIFY(!window.behindBanner()->isVisibleTo(&window));
+    QVERIFY2(projection->text().endsWith(QStringLiteral("plain divide")),
+             qPrintable(projection->text()));
+    QVERIFY(window
+                .findChild<QAction*>(
+                    QStringLiteral("projection_%1").arg(int(rl::NearPlane::Mode::Naive)))
+                ->isChecked());
+}
+
+void TestMainWindow::commandFileProjection() {
+    // Seed 001's xyzw file: the hw2 rules divide by w without clipping; the projection menu
+    // stays open for command files and can clip instead (the part with w > 0).
+    MainWindow window;
+    QSignalSpy spy(window.controller(), &RenderController::frameReady);
+    WAIT_FOR_FIRST_FRAME(spy);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = writeFixture(dir, QStringLiteral("xyzw.txt"),
+                                      "png 120 120 xyzw.png\nxyz 0.5 0 0\nxyzw 1 2 1 2\n"
+                                      "xyzw 1 1 -0.5 -1\ncolor 0 0 0\ntrif 1 2 3\n");
+    QVERIFY(window.openCommandFile(path));
+    QVERIFY2(spy.wait(kFrameTimeoutMs), "no frame for the command file");
+    QCOMPARE(window.currentFrame()->projection->mode, rl::NearPlane::Mode::Naive);
+    QCOMPARE(window.currentFrame()->projection->acrossEye, std::size_t(1));
+    QVERIFY(window.stageStrip()
+                ->button(rl::StageId::Projection)
+                ->text()
+                .endsWith(QStringLiteral("plain divide")));
+    QVERIFY(!window.findChild<QMenu*>(QStringLiteral("rulesMenu"))->isEnabled());
+    auto* clip = window.findChild<QAction*>(
+        QStringLiteral("projection_%1").arg(int(rl::NearPlane::Mode::Clip)));
+    QVERIFY(clip && clip->isEnabled());
+    spy.clear();
+    clip->trigger();
+    QVERIFY2(spy.wait(kFrameTimeoutMs), "no frame with clipping");
+    QCOMPARE(window.currentFrame()->projection->clipped, std::size_t(1));
+    // Opening the file again gives it its own projection back.
+    QVERIFY(window.openCommandFile(path));
+    QCOMPARE(window.document().projection(), rl::NearPlane::Mode::Naive);
 }
 
 void TestMainWindow::accuracyDock() {

@@ -198,88 +198,88 @@
 <context>
     <name>rasterlab::AnimationPanel</name>
     <message>
-        <location filename="../app/animation_panel.cpp" line="28"/>
+        <location filename="../app/animation_panel.cpp" line="29"/>
         <source>Animate: each draw moved by M(t)</source>
         <translation>Animar: cada desenho movido por M(t)</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="33"/>
-        <location filename="../app/animation_panel.cpp" line="206"/>
+        <location filename="../app/animation_panel.cpp" line="34"/>
+        <location filename="../app/animation_panel.cpp" line="207"/>
         <source>Play</source>
         <translation>Reproduzir</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="38"/>
+        <location filename="../app/animation_panel.cpp" line="39"/>
         <source>Play or pause the animation; paused, every stage view inspects the frame shown</source>
         <translation>Reproduz ou pausa a animação; pausada, o painel de cada etapa inspeciona o quadro exibido</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="59"/>
+        <location filename="../app/animation_panel.cpp" line="60"/>
         <source>Frames:</source>
         <translation>Quadros:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="62"/>
+        <location filename="../app/animation_panel.cpp" line="63"/>
         <source>Frames a second:</source>
         <translation>Quadros por segundo:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="65"/>
+        <location filename="../app/animation_panel.cpp" line="66"/>
         <source> °/s</source>
         <translation> °/s</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="66"/>
+        <location filename="../app/animation_panel.cpp" line="67"/>
         <source>Turn:</source>
         <translation>Rotação:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="67"/>
+        <location filename="../app/animation_panel.cpp" line="68"/>
         <source>Turn about the camera&apos;s up (a turntable)</source>
         <translation>Girar em torno do vetor para cima da câmera (uma mesa giratória)</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="93"/>
+        <location filename="../app/animation_panel.cpp" line="94"/>
         <source>Axis:</source>
         <translation>Eixo:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="95"/>
+        <location filename="../app/animation_panel.cpp" line="96"/>
         <source>Moves (units/s):</source>
         <translation>Translação (unidades/s):</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="96"/>
+        <location filename="../app/animation_panel.cpp" line="97"/>
         <source>Scale:</source>
         <translation>Escala:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="107"/>
+        <location filename="../app/animation_panel.cpp" line="108"/>
         <source>&lt;i&gt;The animation belongs to this session: course files have no such field, and saving the camera or lighting does not write it.&lt;/i&gt;</source>
         <translation>&lt;i&gt;A animação pertence a esta sessão: os arquivos do curso não têm esse campo, e salvar a câmera ou a iluminação não a grava.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="206"/>
+        <location filename="../app/animation_panel.cpp" line="207"/>
         <source>Pause</source>
         <translation>Pausar</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="218"/>
+        <location filename="../app/animation_panel.cpp" line="219"/>
         <source>Frame %1 of %2, t = %3 / %4 = %5 s</source>
         <translation>Quadro %1 de %2, t = %3 / %4 = %5 s</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="235"/>
+        <location filename="../app/animation_panel.cpp" line="238"/>
         <source>&lt;p&gt;M(t) = T(v t) · T(c) · R(axis, ω t) · S · T(−c): not applied (the animation is off, so M is the identity).&lt;/p&gt;</source>
         <translation>&lt;p&gt;M(t) = T(v t) · T(c) · R(eixo, ω t) · S · T(−c): não aplicada (a animação está desligada, então M é a identidade).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="251"/>
+        <location filename="../app/animation_panel.cpp" line="254"/>
         <source>&lt;p&gt;M(t) = T(v t) · T(c) · R(axis, ω t) · S · T(−c), at t = %1 s:&lt;br&gt;c = %2 (the centre of the bounding box), axis = %3,&lt;br&gt;ω t = %4 °/s · %1 s = %5°, v t = %6, S = diag%7&lt;/p&gt;</source>
         <translation>&lt;p&gt;M(t) = T(v t) · T(c) · R(eixo, ω t) · S · T(−c), em t = %1 s:&lt;br&gt;c = %2 (o centro da caixa envolvente), eixo = %3,&lt;br&gt;ω t = %4 °/s · %1 s = %5°, v t = %6, S = diag%7&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="259"/>
+        <location filename="../app/animation_panel.cpp" line="262"/>
         <source>&lt;p&gt;Normals are moved by the inverse transpose of M (stage 3).&lt;/p&gt;</source>
         <translation>&lt;p&gt;As normais são levadas pela inversa transposta de M (etapa 3).&lt;/p&gt;</translation>
     </message>
@@ -1015,519 +1015,554 @@
 <context>
     <name>rasterlab::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="52"/>
+        <location filename="../app/main_window.cpp" line="56"/>
         <source>Open Camera</source>
         <translation>Abrir câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="54"/>
+        <location filename="../app/main_window.cpp" line="58"/>
         <source>Open Lighting</source>
         <translation>Abrir iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="56"/>
+        <location filename="../app/main_window.cpp" line="60"/>
         <source>Open Object</source>
         <translation>Abrir objeto</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="64"/>
+        <location filename="../app/main_window.cpp" line="68"/>
         <source>Camera files (*.cfg *.txt);;All files (*)</source>
         <translation>Arquivos de câmera (*.cfg *.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="66"/>
+        <location filename="../app/main_window.cpp" line="70"/>
         <source>Lighting files (*.txt *.lux);;All files (*)</source>
         <translation>Arquivos de iluminação (*.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="68"/>
+        <location filename="../app/main_window.cpp" line="72"/>
         <source>Objects (*.byu *.txt);;All files (*)</source>
         <translation>Objetos (*.byu *.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="77"/>
+        <location filename="../app/main_window.cpp" line="81"/>
         <source>Detect from the file</source>
         <translation>Detectar pelo arquivo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="85"/>
+        <location filename="../app/main_window.cpp" line="89"/>
         <source>flat</source>
         <translation>flat</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="87"/>
+        <location filename="../app/main_window.cpp" line="91"/>
         <source>Gouraud</source>
         <translation>Gouraud</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="89"/>
+        <location filename="../app/main_window.cpp" line="93"/>
         <source>Phong</source>
         <translation>Phong</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="91"/>
+        <location filename="../app/main_window.cpp" line="95"/>
         <source>painter&apos;s-algorithm flat</source>
         <translation>flat do algoritmo do pintor</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="98"/>
+        <location filename="../app/main_window.cpp" line="102"/>
         <source>%1 (built in)</source>
         <translation>%1 (embutido)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="106"/>
+        <location filename="../app/main_window.cpp" line="110"/>
         <source>RasterLab</source>
         <translation>RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="148"/>
+        <location filename="../app/main_window.cpp" line="176"/>
         <source>Stopped at a breakpoint: %1</source>
         <translation>Parado num ponto de parada: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="175"/>
+        <location filename="../app/main_window.cpp" line="203"/>
         <location filename="../app/main_window_export.cpp" line="81"/>
         <location filename="../app/main_window_export.cpp" line="118"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="176"/>
+        <location filename="../app/main_window.cpp" line="204"/>
         <source>Stop preparing the stepping of this frame</source>
         <translation>Parar a preparação do passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="180"/>
+        <location filename="../app/main_window.cpp" line="208"/>
         <source>cancelled</source>
         <translation>cancelado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="229"/>
+        <location filename="../app/main_window.cpp" line="257"/>
         <source>Stepping</source>
         <translation>Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="243"/>
+        <location filename="../app/main_window.cpp" line="271"/>
         <source>Edit</source>
         <translation>Edição</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="250"/>
+        <location filename="../app/main_window.cpp" line="278"/>
         <source>Breakpoints</source>
         <translation>Pontos de parada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="258"/>
+        <location filename="../app/main_window.cpp" line="286"/>
         <source>Animation</source>
         <translation>Animação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="270"/>
+        <location filename="../app/main_window.cpp" line="298"/>
         <source>1 Camera basis</source>
         <translation>1 Base da câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="274"/>
+        <location filename="../app/main_window.cpp" line="302"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Inspetor de pixel (iluminação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="279"/>
+        <location filename="../app/main_window.cpp" line="307"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 Coordenadas de vista (vértices)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="284"/>
+        <location filename="../app/main_window.cpp" line="312"/>
         <source>3 Normals</source>
         <translation>3 Normais</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="287"/>
+        <location filename="../app/main_window.cpp" line="315"/>
         <source>4 Projection</source>
         <translation>4 Projeção</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="291"/>
+        <location filename="../app/main_window.cpp" line="319"/>
         <source>5 Scan conversion</source>
         <translation>5 Conversão por varredura</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="297"/>
+        <location filename="../app/main_window.cpp" line="325"/>
         <source>4b Near-plane clipping</source>
         <translation>4b Recorte no plano próximo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="300"/>
+        <location filename="../app/main_window.cpp" line="328"/>
         <source>5b Trapezoids</source>
         <translation>5b Trapézios</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="304"/>
+        <location filename="../app/main_window.cpp" line="332"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="309"/>
+        <location filename="../app/main_window.cpp" line="337"/>
         <source>Painter&apos;s algorithm</source>
         <translation>Algoritmo do pintor</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="320"/>
+        <location filename="../app/main_window.cpp" line="348"/>
         <source>&amp;File</source>
         <translation>&amp;Arquivo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="404"/>
+        <location filename="../app/main_window.cpp" line="432"/>
         <source>&amp;Animation Frames...</source>
         <translation>&amp;Quadros da animação...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="520"/>
+        <location filename="../app/main_window.cpp" line="548"/>
         <source>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</source>
         <translation>&amp;Algoritmo do pintor (flat, do mais distante ao mais próximo, sem teste de profundidade)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1076"/>
+        <location filename="../app/main_window.cpp" line="1163"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>avançar, voltar um passo (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1078"/>
+        <location filename="../app/main_window.cpp" line="1165"/>
         <source>Space</source>
         <translation>Barra de espaço</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1078"/>
+        <location filename="../app/main_window.cpp" line="1165"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>reproduzir / pausar (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1084"/>
+        <location filename="../app/main_window.cpp" line="1171"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>soltar o pixel escolhido (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1085"/>
+        <location filename="../app/main_window.cpp" line="1172"/>
         <source>presentation mode on / off</source>
         <translation>ligar / desligar o modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1088"/>
+        <location filename="../app/main_window.cpp" line="1175"/>
         <source>save, undo, redo</source>
         <translation>salvar, desfazer, refazer</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="329"/>
+        <location filename="../app/main_window.cpp" line="357"/>
         <source>Open &amp;Camera...</source>
         <translation>Abrir &amp;câmera...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="331"/>
+        <location filename="../app/main_window.cpp" line="130"/>
+        <source>Draw with the Plain Divide</source>
+        <translation>Desenhar com a divisão simples</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="359"/>
         <source>Ctrl+Shift+C</source>
         <translation>Ctrl+Shift+C</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="333"/>
+        <location filename="../app/main_window.cpp" line="361"/>
         <source>Open &amp;Lighting...</source>
         <translation>Abrir &amp;iluminação...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="334"/>
+        <location filename="../app/main_window.cpp" line="362"/>
         <source>Ctrl+Shift+L</source>
         <translation>Ctrl+Shift+L</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="336"/>
+        <location filename="../app/main_window.cpp" line="364"/>
         <source>Open Command &amp;File...</source>
         <translation>Abrir arquivo de co&amp;mandos...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="337"/>
+        <location filename="../app/main_window.cpp" line="365"/>
         <source>Ctrl+Shift+O</source>
         <translation>Ctrl+Shift+O</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="339"/>
+        <location filename="../app/main_window.cpp" line="367"/>
         <source>Open &amp;Recent</source>
         <translation>Abrir recen&amp;tes</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="341"/>
+        <location filename="../app/main_window.cpp" line="369"/>
         <source>&amp;Default Scene</source>
         <translation>Cena &amp;padrão</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="352"/>
+        <location filename="../app/main_window.cpp" line="380"/>
         <source>&amp;Camera</source>
         <translation>&amp;Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="364"/>
+        <location filename="../app/main_window.cpp" line="392"/>
         <source>&amp;Lighting</source>
         <translation>&amp;Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="380"/>
+        <location filename="../app/main_window.cpp" line="408"/>
         <source>&amp;Export PNG...</source>
         <translation>&amp;Exportar PNG...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="381"/>
+        <location filename="../app/main_window.cpp" line="409"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="383"/>
+        <location filename="../app/main_window.cpp" line="411"/>
         <source>Export &amp;More</source>
         <translation>E&amp;xportar mais</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="386"/>
+        <location filename="../app/main_window.cpp" line="414"/>
         <source>Image as &amp;Displayed...</source>
         <translation>Imagem como &amp;exibida...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="387"/>
+        <location filename="../app/main_window.cpp" line="415"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="388"/>
+        <location filename="../app/main_window.cpp" line="416"/>
         <source>&amp;Colour Buffer at the Cursor...</source>
         <translation>Buffer de &amp;cor no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="390"/>
+        <location filename="../app/main_window.cpp" line="418"/>
         <source>D&amp;epth Buffer at the Cursor...</source>
         <translation>Buffer de pro&amp;fundidade no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="392"/>
+        <location filename="../app/main_window.cpp" line="420"/>
         <source>&amp;Normal Buffer...</source>
         <translation>Buffer de &amp;normais...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="393"/>
+        <location filename="../app/main_window.cpp" line="421"/>
         <source>A &amp;View as Displayed</source>
         <translation>Um &amp;painel como exibido</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="397"/>
+        <location filename="../app/main_window.cpp" line="425"/>
         <source>Export View</source>
         <translation>Exportar painel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="402"/>
+        <location filename="../app/main_window.cpp" line="430"/>
         <source>&amp;Stepping Sequence...</source>
         <translation>&amp;Sequência de passos...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="407"/>
+        <location filename="../app/main_window.cpp" line="435"/>
         <source>&amp;Quit</source>
         <translation>Sai&amp;r</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="410"/>
+        <location filename="../app/main_window.cpp" line="438"/>
         <source>&amp;Edit</source>
         <translation>&amp;Editar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="414"/>
+        <location filename="../app/main_window.cpp" line="442"/>
         <source>&amp;View</source>
         <translation>E&amp;xibir</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="415"/>
+        <location filename="../app/main_window.cpp" line="443"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Ajustar à janela</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="416"/>
+        <location filename="../app/main_window.cpp" line="444"/>
         <source>Ctrl+0</source>
         <translation>Ctrl+0</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="418"/>
+        <location filename="../app/main_window.cpp" line="446"/>
         <source>&amp;Actual Size</source>
         <translation>&amp;Tamanho real</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="419"/>
+        <location filename="../app/main_window.cpp" line="447"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="420"/>
+        <location filename="../app/main_window.cpp" line="448"/>
         <source>Zoom &amp;In</source>
         <translation>A&amp;umentar zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="422"/>
+        <location filename="../app/main_window.cpp" line="450"/>
         <source>Zoom &amp;Out</source>
         <translation>&amp;Diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="429"/>
+        <location filename="../app/main_window.cpp" line="457"/>
         <source>Reset &amp;Layout</source>
         <translation>Restaurar &amp;layout</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="436"/>
+        <location filename="../app/main_window.cpp" line="464"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="441"/>
+        <location filename="../app/main_window.cpp" line="469"/>
         <source>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</source>
         <translation>Texto maior, sobreposições mais grossas, alto contraste; as teclas do passador de slides avançam os passos (F5 ou Esc)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="452"/>
+        <location filename="../app/main_window.cpp" line="480"/>
         <source>The System&apos;s</source>
         <translation>Do sistema</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="469"/>
+        <location filename="../app/main_window.cpp" line="497"/>
         <source>S&amp;tep</source>
         <translation>&amp;Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="506"/>
+        <location filename="../app/main_window.cpp" line="534"/>
         <source>Pick the Pixel Under the &amp;Mouse</source>
         <translation>Escolher o pixel sob o &amp;mouse</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="507"/>
+        <location filename="../app/main_window.cpp" line="535"/>
         <source>Ctrl+G</source>
         <translation>Ctrl+G</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="513"/>
+        <location filename="../app/main_window.cpp" line="541"/>
         <source>&amp;Shading</source>
         <translation>&amp;Sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="517"/>
+        <location filename="../app/main_window.cpp" line="545"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (por pixel)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="518"/>
+        <location filename="../app/main_window.cpp" line="546"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (por vértice)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="519"/>
+        <location filename="../app/main_window.cpp" line="547"/>
         <source>&amp;Flat (per triangle)</source>
         <translation>&amp;Flat (por triângulo)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1073"/>
+        <location filename="../app/main_window.cpp" line="583"/>
+        <source>Pro&amp;jection</source>
+        <translation>Pro&amp;jeção</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="588"/>
+        <source>&amp;Clip at the Near Plane (nothing behind the eye is divided)</source>
+        <translation>&amp;Recortar no plano próximo (nada atrás do olho é dividido)</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="590"/>
+        <source>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</source>
+        <translation>&amp;Divisão simples, sem recorte (a seed 000 como escrita; o HW2 da seed 001)</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="592"/>
+        <source>&amp;Same Side (clip only triangles that cross the eye plane)</source>
+        <translation>&amp;Mesmo lado (recortar só os triângulos que cruzam o plano do olho)</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="851"/>
+        <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
+        <translation>Todos os triângulos estão atrás da câmera (N aponta para longe do objeto?), então o recorte no plano próximo não deixa nada para desenhar. A fórmula da seed 000 divide por z mesmo assim: desenharia %1 dos %2 triângulos como a reflexão do objeto pelo olho, girada meia volta na tela, e o z-buffer (que guarda o menor z) guardaria o lado mais distante da câmera. A vista lateral da projeção mostra o olho, N e o objeto.</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="1107"/>
+        <source>not kept</source>
+        <translation>não guardada</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="1160"/>
         <source>step forward</source>
         <translation>avançar um passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1074"/>
+        <location filename="../app/main_window.cpp" line="1161"/>
         <source>step back</source>
         <translation>voltar um passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1077"/>
+        <location filename="../app/main_window.cpp" line="1164"/>
         <source>play / pause</source>
         <translation>reproduzir / pausar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1079"/>
+        <location filename="../app/main_window.cpp" line="1166"/>
         <source>jump to the start / the end of the frame</source>
         <translation>ir ao início / ao fim do quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1080"/>
+        <location filename="../app/main_window.cpp" line="1167"/>
         <source>continue to the next breakpoint</source>
         <translation>continuar até o próximo ponto de parada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1081"/>
+        <location filename="../app/main_window.cpp" line="1168"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>avançar por etapa, triângulo, linha de varredura, segmento, pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1082"/>
+        <location filename="../app/main_window.cpp" line="1169"/>
         <source>show a stage&apos;s view</source>
         <translation>mostrar o painel de uma etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1083"/>
+        <location filename="../app/main_window.cpp" line="1170"/>
         <source>Click, arrows</source>
         <translation>Clique, setas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1083"/>
+        <location filename="../app/main_window.cpp" line="1170"/>
         <source>pick a pixel, move it by one</source>
         <translation>escolher um pixel, movê-lo de um em um</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1087"/>
+        <location filename="../app/main_window.cpp" line="1174"/>
         <source>open, export the image, export it as displayed</source>
         <translation>abrir, exportar a imagem, exportá-la como exibida</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1090"/>
+        <location filename="../app/main_window.cpp" line="1177"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>ajustar, tamanho real, aumentar zoom, diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1092"/>
+        <location filename="../app/main_window.cpp" line="1179"/>
         <source>Keyboard Shortcuts</source>
         <translation>Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="534"/>
+        <location filename="../app/main_window.cpp" line="562"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Regras de rasterização</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="538"/>
+        <location filename="../app/main_window.cpp" line="567"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Curso (semente 000: vértices em pixels inteiros, interpolação no espaço da tela)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="540"/>
+        <location filename="../app/main_window.cpp" line="569"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>Como uma &amp;GPU (vértices em 1/256 de pixel, centros dos pixels, regra top-left, correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="542"/>
+        <location filename="../app/main_window.cpp" line="571"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (as imagens de referência da semente 001)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="554"/>
+        <location filename="../app/main_window.cpp" line="604"/>
         <source>&amp;Help</source>
         <translation>A&amp;juda</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="557"/>
+        <location filename="../app/main_window.cpp" line="607"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="238"/>
+        <location filename="../app/main_window.cpp" line="266"/>
         <source>Messages</source>
         <translation>Mensagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="247"/>
+        <location filename="../app/main_window.cpp" line="275"/>
         <source>Scene</source>
         <translation>Cena</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="255"/>
+        <location filename="../app/main_window.cpp" line="283"/>
         <source>Accuracy</source>
         <translation>Exatidão</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="769"/>
+        <location filename="../app/main_window.cpp" line="824"/>
         <location filename="../app/main_window_export.cpp" line="33"/>
         <location filename="../app/main_window_export.cpp" line="92"/>
         <location filename="../app/main_window_export.cpp" line="134"/>
@@ -1546,227 +1581,227 @@
         <translation>Exportado %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="795"/>
+        <location filename="../app/main_window.cpp" line="877"/>
         <source>rendering...</source>
         <translation>renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="795"/>
+        <location filename="../app/main_window.cpp" line="877"/>
         <source>%1, rendering...</source>
         <translation>%1, renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="793"/>
-        <location filename="../app/main_window.cpp" line="987"/>
+        <location filename="../app/main_window.cpp" line="875"/>
+        <location filename="../app/main_window.cpp" line="1070"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="321"/>
+        <location filename="../app/main_window.cpp" line="349"/>
         <source>&amp;Open...</source>
         <translation>&amp;Abrir...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="324"/>
+        <location filename="../app/main_window.cpp" line="352"/>
         <source>A course camera, lighting or object file, or a command file</source>
         <translation>Um arquivo de câmera, iluminação ou objeto do curso, ou um arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="325"/>
+        <location filename="../app/main_window.cpp" line="353"/>
         <source>Open O&amp;bject...</source>
         <translation>Abrir &amp;objeto...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="327"/>
+        <location filename="../app/main_window.cpp" line="355"/>
         <source>Ctrl+Shift+B</source>
         <translation>Ctrl+Shift+B</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="350"/>
+        <location filename="../app/main_window.cpp" line="378"/>
         <source>Course File La&amp;youts</source>
         <translation>&amp;Formatos dos arquivos do curso</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="425"/>
+        <location filename="../app/main_window.cpp" line="453"/>
         <source>Pa&amp;nels</source>
         <translation>&amp;Painéis</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="433"/>
+        <location filename="../app/main_window.cpp" line="461"/>
         <source>I&amp;mage</source>
         <translation>&amp;Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="447"/>
+        <location filename="../app/main_window.cpp" line="475"/>
         <source>Lan&amp;guage</source>
         <translation>Idi&amp;oma</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="478"/>
+        <location filename="../app/main_window.cpp" line="506"/>
         <source>Step B&amp;y</source>
         <translation>Avançar &amp;por</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="480"/>
+        <location filename="../app/main_window.cpp" line="508"/>
         <source>S&amp;tage</source>
         <translation>&amp;Etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="555"/>
+        <location filename="../app/main_window.cpp" line="605"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="614"/>
+        <location filename="../app/main_window.cpp" line="664"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Modo de apresentação: F5 ou Esc para sair; Page Down, seta para a direita e barra de espaço avançam e reproduzem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="752"/>
+        <location filename="../app/main_window.cpp" line="807"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="803"/>
+        <location filename="../app/main_window.cpp" line="885"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparando o passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="803"/>
+        <location filename="../app/main_window.cpp" line="885"/>
         <source>Rendering</source>
         <translation>Renderizando</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="938"/>
+        <location filename="../app/main_window.cpp" line="1021"/>
         <source>Error: %1</source>
         <translation>Erro: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="954"/>
+        <location filename="../app/main_window.cpp" line="1037"/>
         <source>Files</source>
         <translation>Arquivos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="957"/>
+        <location filename="../app/main_window.cpp" line="1040"/>
         <source>Command file</source>
         <translation>Arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="958"/>
+        <location filename="../app/main_window.cpp" line="1041"/>
         <source>Image</source>
         <translation>Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="960"/>
+        <location filename="../app/main_window.cpp" line="1043"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vértices, %2 triângulos em %3 desenhos; %4 x %5 pixels; %6 luzes</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="970"/>
+        <location filename="../app/main_window.cpp" line="1053"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="971"/>
+        <location filename="../app/main_window.cpp" line="1054"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="972"/>
+        <location filename="../app/main_window.cpp" line="1055"/>
         <source>Object</source>
         <translation>Objeto</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="974"/>
+        <location filename="../app/main_window.cpp" line="1057"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vértices, %2 triângulos; %3 x %4 pixels, sombreamento %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="223"/>
-        <location filename="../app/main_window.cpp" line="981"/>
+        <location filename="../app/main_window.cpp" line="251"/>
+        <location filename="../app/main_window.cpp" line="1064"/>
         <source>Stages</source>
         <translation>Etapas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="988"/>
+        <location filename="../app/main_window.cpp" line="1071"/>
         <source>skipped: %1</source>
         <translation>omitida: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="991"/>
+        <location filename="../app/main_window.cpp" line="1074"/>
         <source>Counts</source>
         <translation>Contagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="992"/>
+        <location filename="../app/main_window.cpp" line="1075"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triângulos recortados no plano próximo: %1; atrás da câmera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="995"/>
+        <location filename="../app/main_window.cpp" line="1078"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Triângulos de área zero: %1 no espaço de vista, %2 na tela&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="998"/>
+        <location filename="../app/main_window.cpp" line="1081"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragmentos testados: %1; escritos: %2; rejeitados: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1002"/>
+        <location filename="../app/main_window.cpp" line="1085"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels sombreados: %1; normais voltadas para o observador: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; limitados a 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1022"/>
+        <location filename="../app/main_window.cpp" line="1109"/>
         <source>empty (+inf)</source>
         <translation>vazio (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1023"/>
+        <location filename="../app/main_window.cpp" line="1110"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   profundidade %6</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1039"/>
+        <location filename="../app/main_window.cpp" line="1126"/>
         <source>Open Command File</source>
         <translation>Abrir arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1040"/>
+        <location filename="../app/main_window.cpp" line="1127"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Arquivos de comandos (*.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1046"/>
+        <location filename="../app/main_window.cpp" line="1133"/>
         <source>Open</source>
         <translation>Abrir</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1046"/>
+        <location filename="../app/main_window.cpp" line="1133"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Arquivos de cena (*.byu *.cfg *.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1056"/>
+        <location filename="../app/main_window.cpp" line="1143"/>
         <source>Export PNG</source>
         <translation>Exportar PNG</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="398"/>
-        <location filename="../app/main_window.cpp" line="1056"/>
+        <location filename="../app/main_window.cpp" line="426"/>
+        <location filename="../app/main_window.cpp" line="1143"/>
         <location filename="../app/main_window_export.cpp" line="157"/>
         <location filename="../app/main_window_export.cpp" line="165"/>
         <source>PNG images (*.png)</source>
         <translation>Imagens PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1061"/>
+        <location filename="../app/main_window.cpp" line="1148"/>
         <source>About RasterLab</source>
         <translation>Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1062"/>
+        <location filename="../app/main_window.cpp" line="1149"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;O pipeline clássico de rasterização por software, etapa por etapa: base da câmera, coordenadas de vista, normais, projeção, conversão por varredura, teste de profundidade e sombreamento.&lt;/p&gt;</translation>
     </message>
@@ -1925,232 +1960,232 @@
         <translation>não finito</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="174"/>
+        <location filename="../views/near_clip_view.cpp" line="179"/>
         <source>No triangle to show: select one, step into the frame, or choose one in the list.</source>
         <translation>Nenhum triângulo para mostrar: selecione um, avance pelo quadro ou escolha um na lista.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="349"/>
+        <location filename="../views/near_clip_view.cpp" line="354"/>
         <source>side view: w across (view z for the course camera), view %1 up</source>
         <translation>vista lateral: w na horizontal (o z de vista, para a câmera do curso), %1 de vista para cima</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="356"/>
+        <location filename="../views/near_clip_view.cpp" line="361"/>
         <source>w = near = %1</source>
         <translation>w = near = %1</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="359"/>
+        <location filename="../views/near_clip_view.cpp" line="364"/>
         <source>the plane w = near = %1 is far to the left, out of the picture</source>
         <translation>o plano w = near = %1 está bem à esquerda, fora da figura</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="366"/>
+        <location filename="../views/near_clip_view.cpp" line="371"/>
         <source>eye</source>
         <translation>olho</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="370"/>
+        <location filename="../views/near_clip_view.cpp" line="375"/>
         <source>the eye (w = 0) is far to the left, out of the picture</source>
         <translation>o olho (w = 0) está bem à esquerda, fora da figura</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="378"/>
+        <location filename="../views/near_clip_view.cpp" line="383"/>
         <source>on the screen (pixels)</source>
         <translation>na tela (pixels)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="382"/>
+        <location filename="../views/near_clip_view.cpp" line="387"/>
         <source>The last step projects the triangles drawn.</source>
         <translation>O último passo projeta os triângulos desenhados.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="428"/>
+        <location filename="../views/near_clip_view.cpp" line="433"/>
         <source>zoomed: x %1 to %2, y %3 to %4</source>
         <translation>ampliado: x de %1 a %2, y de %3 a %4</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="461"/>
+        <location filename="../views/near_clip_view.cpp" line="466"/>
         <source>image %1 × %2</source>
         <translation>imagem %1 × %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="466"/>
+        <location filename="../views/near_clip_view.cpp" line="471"/>
         <source>Nothing drawn.</source>
         <translation>Nada desenhado.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="474"/>
+        <location filename="../views/near_clip_view.cpp" line="479"/>
         <source>The triangle shown: the one selected, or one the near plane cut</source>
         <translation>O triângulo mostrado: o selecionado, ou um que o plano próximo cortou</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="477"/>
+        <location filename="../views/near_clip_view.cpp" line="482"/>
         <source>y up</source>
         <translation>y para cima</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="478"/>
+        <location filename="../views/near_clip_view.cpp" line="483"/>
         <source>x up</source>
         <translation>x para cima</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="479"/>
+        <location filename="../views/near_clip_view.cpp" line="484"/>
         <source>Which view axis the side view draws upward</source>
         <translation>Qual eixo de vista a vista lateral desenha para cima</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="480"/>
+        <location filename="../views/near_clip_view.cpp" line="485"/>
         <source>Back</source>
         <translation>Voltar</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="482"/>
+        <location filename="../views/near_clip_view.cpp" line="487"/>
         <source>Next</source>
         <translation>Avançar</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="484"/>
+        <location filename="../views/near_clip_view.cpp" line="489"/>
         <source>All</source>
         <translation>Todos</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="543"/>
+        <location filename="../views/near_clip_view.cpp" line="555"/>
         <source>The triangle selected (or being drawn)</source>
         <translation>O triângulo selecionado (ou em desenho)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="551"/>
+        <location filename="../views/near_clip_view.cpp" line="563"/>
         <source>triangle %1: %2</source>
         <translation>triângulo %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="650"/>
+        <location filename="../views/near_clip_view.cpp" line="657"/>
         <source>step %1 of %2</source>
         <translation>passo %1 de %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="660"/>
+        <location filename="../views/near_clip_view.cpp" line="667"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="661"/>
+        <location filename="../views/near_clip_view.cpp" line="668"/>
         <source>No triangle to show: select one or step into the frame.</source>
         <translation>Nenhum triângulo para mostrar: selecione um ou avance pelo quadro.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="663"/>
+        <location filename="../views/near_clip_view.cpp" line="670"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2: %3</source>
         <translation>&lt;b&gt;Triângulo %1&lt;/b&gt; de %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="690"/>
+        <location filename="../views/near_clip_view.cpp" line="697"/>
         <source>The seed clips each triangle against the plane z = &amp;minus;&amp;epsilon;, P = [0, 0, &amp;minus;1, &amp;epsilon;], before the perspective divide (OpenGL&apos;s camera looks along &amp;minus;z). The projection stage clips against w = near in clip space, here near = %1, so P = %2 and a point A is kept when dot(P, A) = w &amp;minus; near &amp;ge; 0.</source>
         <translation>A semente recorta cada triângulo contra o plano z = &amp;minus;&amp;epsilon;, P = [0, 0, &amp;minus;1, &amp;epsilon;], antes da divisão perspectiva (a câmera do OpenGL olha ao longo de &amp;minus;z). A etapa de projeção recorta contra w = near no espaço de recorte, aqui near = %1, então P = %2 e um ponto A é mantido quando dot(P, A) = w &amp;minus; near &amp;ge; 0.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="697"/>
+        <location filename="../views/near_clip_view.cpp" line="704"/>
         <source>For the course camera w is the view z: the camera looks along +z, and the plane is z = near, P = [0, 0, 1, &amp;minus;near].</source>
         <translation>Para a câmera do curso, w é o z de vista: a câmera olha ao longo de +z, e o plano é z = near, P = [0, 0, 1, &amp;minus;near].</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="700"/>
+        <location filename="../views/near_clip_view.cpp" line="707"/>
         <source>(Written out, the seed&apos;s P keeps z &amp;le; &amp;epsilon;; the plane z = &amp;minus;&amp;epsilon; it names is P = [0, 0, &amp;minus;1, &amp;minus;&amp;epsilon;]. Either way the plane lies a little in front of the eye, so no vertex drawn is divided by w = 0.)</source>
         <translation>(Fazendo as contas, o P da semente mantém z &amp;le; &amp;epsilon;; o plano z = &amp;minus;&amp;epsilon; que ela cita é P = [0, 0, &amp;minus;1, &amp;minus;&amp;epsilon;]. De todo modo, o plano fica um pouco à frente do olho, então nenhum vértice desenhado é dividido por w = 0.)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="704"/>
+        <location filename="../views/near_clip_view.cpp" line="711"/>
         <source>A0 = %1, A1 = %2, A2 = %3 (view space).</source>
         <translation>A0 = %1, A1 = %2, A2 = %3 (espaço de vista).</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="708"/>
+        <location filename="../views/near_clip_view.cpp" line="715"/>
         <source>This scene does not clip against the near plane (the naive or same-side projection): the steps show what clipping would do.</source>
         <translation>Esta cena não recorta contra o plano próximo (a projeção ingênua ou a do mesmo lado): os passos mostram o que o recorte faria.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="713"/>
+        <location filename="../views/near_clip_view.cpp" line="720"/>
         <source>The draw&apos;s clip planes cut the triangle first; the polygon the stage drew may differ from the one here.</source>
         <translation>Os planos de recorte do desenho cortam o triângulo primeiro; o polígono que a etapa desenhou pode diferir do mostrado aqui.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="720"/>
+        <location filename="../views/near_clip_view.cpp" line="727"/>
         <source>Vertex %1: dot(P, %1) = %2</source>
         <translation>Vértice %1: dot(P, %1) = %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="723"/>
+        <location filename="../views/near_clip_view.cpp" line="730"/>
         <source>kept, added to the output polygon as q%1.</source>
         <translation>mantido, acrescentado ao polígono de saída como q%1.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="725"/>
+        <location filename="../views/near_clip_view.cpp" line="732"/>
         <source>behind the plane, left out.</source>
         <translation>atrás do plano, deixado de fora.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="729"/>
+        <location filename="../views/near_clip_view.cpp" line="736"/>
         <source>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 have the same sign: the edge does not cross the plane.</source>
         <translation>Aresta %1&amp;ndash;%2: dot(P, %1) = %3 e dot(P, %2) = %4 têm o mesmo sinal: a aresta não cruza o plano.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="733"/>
+        <location filename="../views/near_clip_view.cpp" line="740"/>
         <source>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 differ in sign: t = (0 &amp;minus; %5) / (%6 &amp;minus; %5) = %7, C = lerp(t, %1, %2) = %8, added as q%9.</source>
         <translation>Aresta %1&amp;ndash;%2: dot(P, %1) = %3 e dot(P, %2) = %4 têm sinais opostos: t = (0 &amp;minus; %5) / (%6 &amp;minus; %5) = %7, C = lerp(t, %1, %2) = %8, acrescentado como q%9.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="741"/>
+        <location filename="../views/near_clip_view.cpp" line="748"/>
         <source>(The stage computes the same point from %1, the end in front, with t&apos; = 1 &amp;minus; t = %2, so that the two triangles sharing the edge get it bit for bit.)</source>
         <translation>(A etapa calcula o mesmo ponto a partir de %1, a ponta que está à frente, com t&apos; = 1 &amp;minus; t = %2, para que os dois triângulos que compartilham a aresta obtenham exatamente o mesmo ponto, bit a bit.)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="752"/>
+        <location filename="../views/near_clip_view.cpp" line="759"/>
         <source>Output polygon: empty. The triangle lies wholly behind the plane: nothing is drawn.</source>
         <translation>Polígono de saída: vazio. O triângulo fica inteiramente atrás do plano: nada é desenhado.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="758"/>
+        <location filename="../views/near_clip_view.cpp" line="765"/>
         <source>Output polygon, %1 vertices: %2.</source>
         <translation>Polígono de saída, %1 vértices: %2.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="762"/>
+        <location filename="../views/near_clip_view.cpp" line="769"/>
         <source>The triangle is wholly in front: untouched.</source>
         <translation>O triângulo está inteiramente à frente: fica intacto.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="769"/>
+        <location filename="../views/near_clip_view.cpp" line="776"/>
         <source>Four vertices: split along the diagonal q0&amp;ndash;q2 into the triangles q0 q1 q2 and q0 q2 q3, rendered separately.</source>
         <translation>Quatro vértices: dividido ao longo da diagonal q0&amp;ndash;q2 nos triângulos q0 q1 q2 e q0 q2 q3, renderizados separadamente.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="772"/>
+        <location filename="../views/near_clip_view.cpp" line="779"/>
         <source>Three vertices: one triangle, nothing to split.</source>
         <translation>Três vértices: um triângulo, nada a dividir.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="774"/>
+        <location filename="../views/near_clip_view.cpp" line="781"/>
         <source>Fewer than three vertices: no triangle.</source>
         <translation>Menos de três vértices: nenhum triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="777"/>
+        <location filename="../views/near_clip_view.cpp" line="784"/>
         <source>Then each vertex is projected and taken to pixels.</source>
         <translation>Depois, cada vértice é projetado e levado a pixels.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="780"/>
+        <location filename="../views/near_clip_view.cpp" line="787"/>
         <source>Nothing was drawn from this triangle (%1).</source>
         <translation>Nada foi desenhado deste triângulo (%1).</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="784"/>
+        <location filename="../views/near_clip_view.cpp" line="791"/>
         <source>Triangle %1: %2, %3, %4 (pixels)</source>
         <translation>Triângulo %1: %2, %3, %4 (pixels)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="791"/>
+        <location filename="../views/near_clip_view.cpp" line="798"/>
         <source>(%1 of the %2 triangles were drawn: %3.)</source>
         <translation>(%1 dos %2 triângulos foram desenhados: %3.)</translation>
     </message>
@@ -2462,17 +2497,17 @@
         <translation>Pixels numa aresta que dois triângulos compartilham, na mesma profundidade: o z-buffer mantém o primeiro desenhado, o pintor o último.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="332"/>
+        <location filename="../views/painter_view.cpp" line="329"/>
         <source>rank of the last triangle painted</source>
         <translation>ordem do último triângulo pintado</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="333"/>
+        <location filename="../views/painter_view.cpp" line="330"/>
         <source>painted far to near, no depth test</source>
         <translation>pintado do mais distante ao mais próximo, sem teste de profundidade</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/painter_view.cpp" line="335"/>
+        <location filename="../views/painter_view.cpp" line="332"/>
         <source>Z-buffer (the same flat colours): %n pixel(s) differ</source>
         <translation>
             <numerusform>Z-buffer (as mesmas cores flat): %n pixel difere</numerusform>
@@ -2480,17 +2515,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="375"/>
+        <location filename="../views/painter_view.cpp" line="372"/>
         <source>No frame.</source>
         <translation>Nenhum quadro.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="376"/>
+        <location filename="../views/painter_view.cpp" line="373"/>
         <source>Not worked out yet.</source>
         <translation>Ainda não calculado.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/painter_view.cpp" line="381"/>
+        <location filename="../views/painter_view.cpp" line="378"/>
         <source>&lt;b&gt;Painter&apos;s algorithm&lt;/b&gt; (seed 004): the %n triangle(s) are sorted by the distance |b| of their barycentre b (view space) to the camera, far to near, each lit once at b, and painted in that order &lt;i&gt;without a depth test&lt;/i&gt;: the last painted stays.</source>
         <translation>
             <numerusform>&lt;b&gt;Algoritmo do pintor&lt;/b&gt; (semente 004): o %n triângulo é ordenado pela distância |b| do seu baricentro b (espaço de vista) à câmera, do mais distante ao mais próximo, iluminado uma vez em b e pintado nessa ordem &lt;i&gt;sem teste de profundidade&lt;/i&gt;: o último pintado prevalece.</numerusform>
@@ -2498,17 +2533,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="386"/>
+        <location filename="../views/painter_view.cpp" line="383"/>
         <source>The frame shown uses the z-buffer; this view renders the scene again as the painter would.</source>
         <translation>O quadro exibido usa o z-buffer; este painel renderiza a cena de novo como o pintor faria.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="389"/>
+        <location filename="../views/painter_view.cpp" line="386"/>
         <source>Against the z-buffer with the same colours, %1 pixels differ: &lt;span style=&apos;color:#d00000&apos;&gt;%2 where a farther triangle was painted after a nearer one&lt;/span&gt; (the order of whole triangles is not the order of their pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 on edges two triangles share at the same depth&lt;/span&gt; (the z-buffer keeps the first drawn, the painter the last).</source>
         <translation>Comparado ao z-buffer com as mesmas cores, %1 pixels diferem: &lt;span style=&apos;color:#d00000&apos;&gt;%2 onde um triângulo mais distante foi pintado depois de um mais próximo&lt;/span&gt; (a ordem dos triângulos inteiros não é a ordem dos seus pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 em arestas que dois triângulos compartilham na mesma profundidade&lt;/span&gt; (o z-buffer mantém o primeiro desenhado, o pintor o último).</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="404"/>
+        <location filename="../views/painter_view.cpp" line="401"/>
         <source>Triangle %1: b = %2, |b| = %3, painted %4 of %5. The z-buffer shows it at %6 pixels; a triangle painted after it covers %7 of them though it is farther there; it covers %8 pixels of nearer triangles painted before it.</source>
         <translation>Triângulo %1: b = %2, |b| = %3, pintado na posição %4 de %5. O z-buffer o mostra em %6 pixels; um triângulo pintado depois dele cobre %7 desses pixels, embora ali esteja mais distante; ele cobre %8 pixels de triângulos mais próximos pintados antes dele.</translation>
     </message>
@@ -2776,238 +2811,253 @@
         <translation>  N.L = %1, %2 = %3: difusa %4, especular %5</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="786"/>
+        <location filename="../views/pixel_inspector.cpp" line="788"/>
         <source>N flipped toward the viewer: V.N &lt; 0, so N := −N before lighting.</source>
         <translation>N invertida para o observador: V.N &lt; 0, então N := −N antes da iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="789"/>
+        <location filename="../views/pixel_inspector.cpp" line="791"/>
         <source>Zero normal: only degenerate triangles meet here, or the vertex normals cancel out; ambient only.</source>
         <translation>Normal nula: só triângulos degenerados se encontram aqui, ou as normais dos vértices se anulam; só ambiente.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="793"/>
+        <location filename="../views/pixel_inspector.cpp" line="795"/>
         <source>The light is at the point itself (L = 0): it adds nothing.</source>
         <translation>A luz está no próprio ponto (L = 0): não acrescenta nada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="796"/>
+        <location filename="../views/pixel_inspector.cpp" line="798"/>
         <source>N.L &lt; 0: the light is behind the surface; no diffuse, no specular.</source>
         <translation>N.L &lt; 0: a luz está atrás da superfície; sem difusa, sem especular.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="799"/>
+        <location filename="../views/pixel_inspector.cpp" line="801"/>
         <source>R.V &lt; 0: the reflected ray points away from the viewer; no specular.</source>
         <translation>R.V &lt; 0: o raio refletido aponta para longe do observador; sem especular.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="817"/>
+        <location filename="../views/pixel_inspector.cpp" line="819"/>
         <source>Outside the cone of light %1: −L.D = %2 is below cos %3° = %4; it adds nothing here.</source>
         <translation>Fora do cone da luz %1: −L.D = %2 está abaixo de cos %3° = %4; ela não acrescenta nada aqui.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="825"/>
+        <location filename="../views/pixel_inspector.cpp" line="827"/>
         <source>One-sided lighting: the back of the surface is seen (V.N &lt; 0) and N is not turned toward the viewer.</source>
         <translation>Iluminação de um lado só: vê-se o verso da superfície (V.N &lt; 0) e N não é voltada para o observador.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="837"/>
+        <location filename="../views/pixel_inspector.cpp" line="835"/>
+        <source>Texture at (s, t) = (%1, %2): texel %3.</source>
+        <translation>Textura em (s, t) = (%1, %2): texel %3.</translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="840"/>
+        <source>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1; the images&apos; (int)(s w + 0.5) mod w gives %2, which these rules follow.</source>
+        <translation>O texto da seed 001 e as suas imagens de referência discordam aqui: o texel mais próximo de (s w, t h) depois de as coordenadas darem a volta é %1; o (int)(s w + 0.5) mod w das imagens dá %2, que estas regras seguem.</translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="844"/>
+        <source>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1, which these rules follow; the images&apos; (int)(s w + 0.5) mod w gives %2.</source>
+        <translation>O texto da seed 001 e as suas imagens de referência discordam aqui: o texel mais próximo de (s w, t h) depois de as coordenadas darem a volta é %1, que estas regras seguem; o (int)(s w + 0.5) mod w das imagens dá %2.</translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="860"/>
         <source>Clamped: %1 above the colour scale %2, written as byte 255.</source>
         <translation>Limitado: %1 acima da escala de cor %2, escrito como byte 255.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="846"/>
+        <location filename="../views/pixel_inspector.cpp" line="869"/>
         <source>%1 (clamped)</source>
         <translation>%1 (limitado)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="851"/>
+        <location filename="../views/pixel_inspector.cpp" line="874"/>
         <source>Gouraud shading, the vertices&apos; colours mixed</source>
         <translation>sombreamento de Gouraud, as cores dos vértices misturadas</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="852"/>
+        <location filename="../views/pixel_inspector.cpp" line="875"/>
         <source>C = α C1 + β C2 + γ C3</source>
         <translation>C = α C1 + β C2 + γ C3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="870"/>
+        <location filename="../views/pixel_inspector.cpp" line="893"/>
         <source>not lit, the object colour as it is</source>
         <translation>sem iluminação, a cor do objeto tal como é</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="871"/>
+        <location filename="../views/pixel_inspector.cpp" line="894"/>
         <source>I = O (the object colour)</source>
         <translation>I = O (a cor do objeto)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="878"/>
+        <location filename="../views/pixel_inspector.cpp" line="901"/>
         <source>the course&apos;s Phong lighting model</source>
         <translation>o modelo de iluminação de Phong do curso</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="879"/>
+        <location filename="../views/pixel_inspector.cpp" line="902"/>
         <source>Lambert with Blinn-Phong highlights (command files)</source>
         <translation>Lambert com brilhos de Blinn-Phong (arquivos de comandos)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="881"/>
+        <location filename="../views/pixel_inspector.cpp" line="904"/>
         <source>Painter&apos;s algorithm: lit as flat shading, once at the triangle&apos;s barycentre; the triangles are painted far to near without a depth test.</source>
         <translation>Algoritmo do pintor: iluminado como no sombreamento flat, uma vez no baricentro do triângulo; os triângulos são pintados do mais distante ao mais próximo, sem teste de profundidade.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="886"/>
+        <location filename="../views/pixel_inspector.cpp" line="909"/>
         <source>Flat shading: evaluated once, at the triangle&apos;s barycentre with the triangle&apos;s normal; every pixel of the triangle gets this colour.</source>
         <translation>Sombreamento flat: avaliado uma vez, no baricentro do triângulo, com a normal do triângulo; todo pixel do triângulo recebe esta cor.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="890"/>
+        <location filename="../views/pixel_inspector.cpp" line="913"/>
         <source>%1 lights: the diffuse and specular terms are sums over them; the numbers filled in are the first light&apos;s.</source>
         <translation>%1 luzes: os termos difuso e especular são somas sobre elas; os números preenchidos são os da primeira luz.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="898"/>
+        <location filename="../views/pixel_inspector.cpp" line="921"/>
         <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)</source>
         <translation>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="899"/>
+        <location filename="../views/pixel_inspector.cpp" line="922"/>
         <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)</source>
         <translation>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="900"/>
+        <location filename="../views/pixel_inspector.cpp" line="923"/>
         <source>att = 1 / (kc + kl d + kq d²) for a positional light, 1 for a directional one; spot = (−L.D)^exp inside the cone, 0 outside, 1 for a light that is no spot.</source>
         <translation>att = 1 / (kc + kl d + kq d²) para uma luz posicional, 1 para uma direcional; spot = (−L.D)^exp dentro do cone, 0 fora dele, 1 para uma luz que não é spot.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="905"/>
+        <location filename="../views/pixel_inspector.cpp" line="928"/>
         <source>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</source>
         <translation>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="912"/>
+        <location filename="../views/pixel_inspector.cpp" line="935"/>
         <source>I = Σ Il O (N.L) + Il (H.N)^s, over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L) + Il (H.N)^s, sobre as luzes com N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="914"/>
+        <location filename="../views/pixel_inspector.cpp" line="937"/>
         <source>I = Σ Il O (N.L), over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L), sobre as luzes com N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="970"/>
+        <location filename="../views/pixel_inspector.cpp" line="993"/>
         <source>%1 (the other lights)</source>
         <translation>%1 (as outras luzes)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="986"/>
+        <location filename="../views/pixel_inspector.cpp" line="1009"/>
         <source>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</source>
         <translation>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="990"/>
+        <location filename="../views/pixel_inspector.cpp" line="1013"/>
         <source>Il = %1, O = %2</source>
         <translation>Il = %1, O = %2</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="993"/>
+        <location filename="../views/pixel_inspector.cpp" line="1016"/>
         <source>Ke = %1: the material&apos;s own light</source>
         <translation>Ke = %1: a luz própria do material</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1016"/>
+        <location filename="../views/pixel_inspector.cpp" line="1039"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1022"/>
-        <location filename="../views/pixel_inspector.cpp" line="1110"/>
+        <location filename="../views/pixel_inspector.cpp" line="1045"/>
+        <location filename="../views/pixel_inspector.cpp" line="1133"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1030"/>
+        <location filename="../views/pixel_inspector.cpp" line="1053"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>ocupa o pixel no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1031"/>
+        <location filename="../views/pixel_inspector.cpp" line="1054"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>ainda não alcançado pelo cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1046"/>
+        <location filename="../views/pixel_inspector.cpp" line="1069"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1047"/>
+        <location filename="../views/pixel_inspector.cpp" line="1070"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Sem o passo a passo, as cores das escritas sobrescritas depois não são guardadas.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1091"/>
+        <location filename="../views/pixel_inspector.cpp" line="1114"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Sem o passo a passo, só a iluminação do fragmento que ocupa o pixel no fim é registrada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1094"/>
+        <location filename="../views/pixel_inspector.cpp" line="1117"/>
         <source>The cleared pixel is not lit.</source>
         <translation>O pixel limpo não é iluminado.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1097"/>
+        <location filename="../views/pixel_inspector.cpp" line="1120"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>Nenhum fragmento ocupa o pixel no cursor: selecione uma linha do histórico para ver sua iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1109"/>
+        <location filename="../views/pixel_inspector.cpp" line="1132"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Iluminação do passo %1, triângulo %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1114"/>
+        <location filename="../views/pixel_inspector.cpp" line="1137"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejeitado: esta cor nunca foi escrita)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1127"/>
+        <location filename="../views/pixel_inspector.cpp" line="1150"/>
         <source>object colour</source>
         <translation>cor do objeto</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1130"/>
+        <location filename="../views/pixel_inspector.cpp" line="1153"/>
         <source>emission</source>
         <translation>emissão</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1132"/>
+        <location filename="../views/pixel_inspector.cpp" line="1155"/>
         <source>ambient</source>
         <translation>ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1137"/>
+        <location filename="../views/pixel_inspector.cpp" line="1160"/>
         <source>diffuse %1</source>
         <translation>difusa %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1140"/>
+        <location filename="../views/pixel_inspector.cpp" line="1163"/>
         <source>specular %1</source>
         <translation>especular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1144"/>
+        <location filename="../views/pixel_inspector.cpp" line="1167"/>
         <source>diffuse</source>
         <translation>difusa</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1146"/>
+        <location filename="../views/pixel_inspector.cpp" line="1169"/>
         <source>specular</source>
         <translation>especular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1174"/>
+        <location filename="../views/pixel_inspector.cpp" line="1197"/>
         <source>No special case: every term applies as written.</source>
         <translation>Nenhum caso especial: todos os termos valem como escritos.</translation>
     </message>
@@ -3028,27 +3078,37 @@
 <context>
     <name>rasterlab::ProjectionSideView</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="589"/>
+        <location filename="../views/projection_view.cpp" line="596"/>
         <source>view z (= w) →</source>
         <translation>z de vista (= w) →</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="589"/>
+        <location filename="../views/projection_view.cpp" line="596"/>
         <source>clip w →</source>
         <translation>w de recorte →</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="593"/>
+        <location filename="../views/projection_view.cpp" line="600"/>
         <source>y ↑</source>
         <translation>y ↑</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="601"/>
+        <location filename="../views/projection_view.cpp" line="611"/>
+        <source>eye plane w = 0: the plain divide clips nothing</source>
+        <translation>plano do olho w = 0: a divisão simples não recorta nada</translation>
+    </message>
+    <message>
+        <location filename="../views/projection_view.cpp" line="612"/>
         <source>near plane w = %1</source>
         <translation>plano próximo w = %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="603"/>
+        <location filename="../views/projection_view.cpp" line="615"/>
+        <source>the object lies behind the eye (w &lt; 0): N points away from it</source>
+        <translation>o objeto está atrás do olho (w &lt; 0): N aponta para longe dele</translation>
+    </message>
+    <message>
+        <location filename="../views/projection_view.cpp" line="619"/>
         <source>● made by clipping: %1</source>
         <translation>● criados pelo recorte: %1</translation>
     </message>
@@ -3056,142 +3116,152 @@
 <context>
     <name>rasterlab::ProjectionView</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="644"/>
+        <location filename="../views/projection_view.cpp" line="660"/>
         <source>NDC</source>
         <translation>NDC</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="645"/>
+        <location filename="../views/projection_view.cpp" line="661"/>
         <source>Show the vertices in normalised device coordinates, [-1, 1]</source>
         <translation>Mostra os vértices em coordenadas normalizadas de dispositivo, [-1, 1]</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="648"/>
+        <location filename="../views/projection_view.cpp" line="664"/>
         <source>Pixels</source>
         <translation>Pixels</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="650"/>
+        <location filename="../views/projection_view.cpp" line="666"/>
         <source>Show the vertices in pixels, snapped as scan conversion receives them</source>
         <translation>Mostra os vértices em pixels, ajustados à grade como a conversão por varredura os recebe</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="659"/>
+        <location filename="../views/projection_view.cpp" line="675"/>
         <source>Fit</source>
         <translation>Ajustar</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="660"/>
+        <location filename="../views/projection_view.cpp" line="676"/>
         <source>Show the whole window and its margin</source>
         <translation>Mostra a janela inteira e sua margem</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="785"/>
+        <location filename="../views/projection_view.cpp" line="801"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="790"/>
+        <location filename="../views/projection_view.cpp" line="806"/>
         <source>inside %1, clipped %2 (%3 on screen), culled %4, back faces %5; behind %6, clipped away %7</source>
         <translation>dentro %1, recortados %2 (%3 na tela), descartados %4, faces traseiras %5; atrás %6, eliminados no recorte %7</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="801"/>
+        <location filename="../views/projection_view.cpp" line="817"/>
         <source>beyond the guard band %1</source>
         <translation>além da banda de guarda %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="803"/>
+        <location filename="../views/projection_view.cpp" line="819"/>
         <source>not finite %1</source>
         <translation>não finitos %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="805"/>
+        <location filename="../views/projection_view.cpp" line="821"/>
         <source>%1 drawn whole (inside): %2&lt;br&gt;</source>
         <translation>%1 desenhados inteiros (dentro): %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="806"/>
+        <location filename="../views/projection_view.cpp" line="822"/>
         <source>%1 clipped: %2, drawn as %3 fan triangles&lt;br&gt;</source>
         <translation>%1 recortados: %2, desenhados como %3 triângulos em leque&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="810"/>
+        <location filename="../views/projection_view.cpp" line="826"/>
         <source>%1 culled (clockwise on screen): %2; hidden back faces: %3&lt;br&gt;</source>
         <translation>%1 descartados (sentido horário na tela): %2; faces traseiras ocultas: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="814"/>
+        <location filename="../views/projection_view.cpp" line="830"/>
         <source>Nothing on screen: behind the near plane %1; outside a clip plane %2</source>
         <translation>Nada na tela: atrás do plano próximo %1; fora de um plano de recorte %2</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="817"/>
+        <location filename="../views/projection_view.cpp" line="833"/>
         <source>; beyond the guard band %1</source>
         <translation>; além da banda de guarda %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="818"/>
+        <location filename="../views/projection_view.cpp" line="834"/>
         <source>; not finite %1</source>
         <translation>; não finitos %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="820"/>
+        <location filename="../views/projection_view.cpp" line="838"/>
+        <source>%1 screen triangles go to scan conversion. The plain divide clips nothing (seed 000 as written; seed 001&apos;s HW2): %2 wholly behind the eye, drawn mirrored through the centre; %3 across the eye plane, drawn wrong.</source>
+        <translation>%1 triângulos de tela vão para a conversão por varredura. A divisão simples não recorta nada (a seed 000 como escrita; o HW2 da seed 001): %2 inteiramente atrás do olho, desenhados espelhados pelo centro; %3 atravessando o plano do olho, desenhados errados.</translation>
+    </message>
+    <message>
+        <location filename="../views/projection_view.cpp" line="846"/>
         <source>%1 screen triangles go to scan conversion; the near plane is w = %2.</source>
         <translation>%1 triângulos de tela vão para a conversão por varredura; o plano próximo é w = %2.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="824"/>
+        <location filename="../views/projection_view.cpp" line="851"/>
         <source>%1 selected, %2 being drawn</source>
         <translation>%1 selecionado, %2 em desenho</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="844"/>
+        <location filename="../views/projection_view.cpp" line="874"/>
+        <source>&lt;p&gt;&lt;b&gt;Projection.&lt;/b&gt; Every vertex goes to clip space, pClip = clipFromView · pView, and is divided by its w without any clipping, as seed 000 writes the formula and seed 001&apos;s HW2 does (&quot;frustum clipping happens here in OpenGL, but we won&apos;t add it&quot;): pNdc = pClip.xy / w. A vertex behind the eye (w &amp;lt; 0) lands mirrored through the centre; a triangle across the eye plane wraps through infinity. Clipping at the near plane (Shading &amp;gt; Projection) draws only what lies in front.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Projeção.&lt;/b&gt; Cada vértice vai para o espaço de recorte, pClip = clipFromView · pView, e é dividido pelo seu w sem recorte algum, como a seed 000 escreve a fórmula e o HW2 da seed 001 faz (&quot;o recorte pelo frustum acontece aqui no OpenGL, mas não vamos adicioná-lo&quot;): pNdc = pClip.xy / w. Um vértice atrás do olho (w &amp;lt; 0) cai espelhado pelo centro; um triângulo que atravessa o plano do olho dá a volta pelo infinito. O recorte no plano próximo (Sombreamento &amp;gt; Projeção) desenha só o que está à frente.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../views/projection_view.cpp" line="881"/>
         <source>&lt;p&gt;&lt;b&gt;Projection.&lt;/b&gt; Every vertex goes to clip space, pClip = clipFromView · pView. A triangle crossing the near plane w = near is clipped (Sutherland-Hodgman) and its polygon cut into a fan, so nothing is divided by a w at or behind the camera. Then pNdc = pClip.xy / w, and the pixels are x = (x_ndc + 1) W/2, y = (1 − y_ndc) H/2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Projeção.&lt;/b&gt; Todo vértice vai para o espaço de recorte, pClip = clipFromView · pView. Um triângulo que cruza o plano próximo w = near é recortado (Sutherland-Hodgman) e seu polígono é dividido em leque, de modo que nada é dividido por um w na câmera ou atrás dela. Depois pNdc = pClip.xy / w, e os pixels são x = (x_ndc + 1) W/2, y = (1 − y_ndc) H/2.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="851"/>
+        <location filename="../views/projection_view.cpp" line="888"/>
         <source>&lt;p&gt;For the course camera pClip = ((d/hx) x, (d/hy) y, z, z): x_ndc = (d/hx) x/z, y_ndc = (d/hy) y/z, and the pixel coordinates are truncated.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Para a câmera do curso, pClip = ((d/hx) x, (d/hy) y, z, z): x_ndc = (d/hx) x/z, y_ndc = (d/hy) y/z, e as coordenadas de pixel são truncadas.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="859"/>
+        <location filename="../views/projection_view.cpp" line="896"/>
         <source>&lt;p&gt;Click a triangle to see the numbers of its first vertex.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Clique num triângulo para ver os números do seu primeiro vértice.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="879"/>
+        <location filename="../views/projection_view.cpp" line="916"/>
         <source>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (mesh triangle %2%3), its first vertex, vertex %4:</source>
         <translation>&lt;p&gt;&lt;b&gt;Triângulo %1&lt;/b&gt; (triângulo %2 da malha%3), seu primeiro vértice, o vértice %4:</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="882"/>
+        <location filename="../views/projection_view.cpp" line="919"/>
         <source>, clipped</source>
         <translation>, recortado</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="887"/>
+        <location filename="../views/projection_view.cpp" line="924"/>
         <source>made by clipping, on the edge from vertex %1 to vertex %2 at t = %3</source>
         <translation>criado pelo recorte, na aresta do vértice %1 ao vértice %2, em t = %3</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="913"/>
+        <location filename="../views/projection_view.cpp" line="950"/>
         <source>truncated</source>
         <translation>truncado</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="913"/>
+        <location filename="../views/projection_view.cpp" line="950"/>
         <source>rounded</source>
         <translation>arredondado</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="916"/>
+        <location filename="../views/projection_view.cpp" line="953"/>
         <source>truncated to 1/%1 pixel</source>
         <translation>truncado para 1/%1 de pixel</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="917"/>
+        <location filename="../views/projection_view.cpp" line="954"/>
         <source>rounded to 1/%1 pixel</source>
         <translation>arredondado para 1/%1 de pixel</translation>
     </message>
@@ -3199,296 +3269,296 @@
 <context>
     <name>rasterlab::ScanlineView</name>
     <message>
-        <location filename="../views/scanline_view.cpp" line="228"/>
+        <location filename="../views/scanline_view.cpp" line="226"/>
         <source>No triangle to show: step into the frame or pick a pixel.</source>
         <translation>Nenhum triângulo para mostrar: avance pelo quadro ou escolha um pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="408"/>
+        <location filename="../views/scanline_view.cpp" line="406"/>
         <source>long edge</source>
         <translation>aresta longa</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="409"/>
+        <location filename="../views/scanline_view.cpp" line="407"/>
         <source>upper edge</source>
         <translation>aresta superior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="410"/>
+        <location filename="../views/scanline_view.cpp" line="408"/>
         <source>lower edge</source>
         <translation>aresta inferior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="480"/>
+        <location filename="../views/scanline_view.cpp" line="478"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="483"/>
+        <location filename="../views/scanline_view.cpp" line="481"/>
         <source>Start of the frame: step forward to walk the first triangle, or pick a pixel to see the triangle holding it.</source>
         <translation>Início do quadro: avance para percorrer o primeiro triângulo, ou escolha um pixel para ver o triângulo que o ocupa.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="486"/>
+        <location filename="../views/scanline_view.cpp" line="484"/>
         <source>Pick a pixel, or step through the frame, to see a triangle scan converted.</source>
         <translation>Escolha um pixel, ou avance pelo quadro, para ver a conversão por varredura de um triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="491"/>
+        <location filename="../views/scanline_view.cpp" line="489"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</source>
         <translation>&lt;b&gt;Triângulo %1&lt;/b&gt; de %2</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="494"/>
+        <location filename="../views/scanline_view.cpp" line="492"/>
         <source>scanline %1</source>
         <translation>linha de varredura %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="496"/>
+        <location filename="../views/scanline_view.cpp" line="494"/>
         <source>pixel %1</source>
         <translation>pixel %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="499"/>
+        <location filename="../views/scanline_view.cpp" line="497"/>
         <source>at the stepping cursor</source>
         <translation>no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="500"/>
+        <location filename="../views/scanline_view.cpp" line="498"/>
         <source>the triangle selected (the cursor is at the %1 of the frame)</source>
         <translation>o triângulo selecionado (o cursor está no %1 do quadro)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="501"/>
+        <location filename="../views/scanline_view.cpp" line="499"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="502"/>
+        <location filename="../views/scanline_view.cpp" line="500"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="519"/>
+        <location filename="../views/scanline_view.cpp" line="517"/>
         <source>Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the top to the bottom; the two short edges meet at the middle vertex.</source>
         <translation>Vértices ordenados por y: topo %1, meio %2, base %3. A aresta longa vai do topo à base; as duas arestas curtas se encontram no vértice do meio.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="524"/>
+        <location filename="../views/scanline_view.cpp" line="522"/>
         <source>Its area on the screen is zero: it has no inside and is not scanned.</source>
         <translation>Sua área na tela é zero: ele não tem interior e não é varrido.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="529"/>
+        <location filename="../views/scanline_view.cpp" line="527"/>
         <source>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, so the middle vertex is %2 of the long edge: the long edge bounds the spans on the %3.</source>
         <translation>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, então o vértice do meio fica à %2 da aresta longa: a aresta longa limita os segmentos à %3.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="532"/>
-        <location filename="../views/scanline_view.cpp" line="533"/>
-        <location filename="../views/scanline_view.cpp" line="566"/>
+        <location filename="../views/scanline_view.cpp" line="530"/>
+        <location filename="../views/scanline_view.cpp" line="531"/>
+        <location filename="../views/scanline_view.cpp" line="564"/>
         <source>right</source>
         <translation>direita</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="532"/>
-        <location filename="../views/scanline_view.cpp" line="533"/>
-        <location filename="../views/scanline_view.cpp" line="566"/>
+        <location filename="../views/scanline_view.cpp" line="530"/>
+        <location filename="../views/scanline_view.cpp" line="531"/>
+        <location filename="../views/scanline_view.cpp" line="564"/>
         <source>left</source>
         <translation>esquerda</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="536"/>
+        <location filename="../views/scanline_view.cpp" line="534"/>
         <source>long</source>
         <translation>longa</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="536"/>
+        <location filename="../views/scanline_view.cpp" line="534"/>
         <source>upper</source>
         <translation>superior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="536"/>
+        <location filename="../views/scanline_view.cpp" line="534"/>
         <source>lower</source>
         <translation>inferior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="553"/>
+        <location filename="../views/scanline_view.cpp" line="551"/>
         <source>from</source>
         <translation>de</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="554"/>
+        <location filename="../views/scanline_view.cpp" line="552"/>
         <source>to</source>
         <translation>até</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="555"/>
+        <location filename="../views/scanline_view.cpp" line="553"/>
         <source>x on its first row</source>
         <translation>x na sua primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="558"/>
+        <location filename="../views/scanline_view.cpp" line="556"/>
         <source>dx/dy</source>
         <translation>dx/dy</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="559"/>
+        <location filename="../views/scanline_view.cpp" line="557"/>
         <source>horizontal</source>
         <translation>horizontal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="561"/>
+        <location filename="../views/scanline_view.cpp" line="559"/>
         <source>rows</source>
         <translation>linhas</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="563"/>
+        <location filename="../views/scanline_view.cpp" line="561"/>
         <source>none</source>
         <translation>nenhuma</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="566"/>
+        <location filename="../views/scanline_view.cpp" line="564"/>
         <source>side</source>
         <translation>lado</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="570"/>
+        <location filename="../views/scanline_view.cpp" line="568"/>
         <source>Only rows %1 to %2 are on the screen: the walk starts and stops there.</source>
         <translation>Só as linhas %1 a %2 estão na tela: o percurso começa e termina ali.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="577"/>
+        <location filename="../views/scanline_view.cpp" line="575"/>
         <source>No row of this triangle is on the screen.</source>
         <translation>Nenhuma linha deste triângulo está na tela.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="589"/>
+        <location filename="../views/scanline_view.cpp" line="587"/>
         <source>%1(%2) = %3, where the %4 edge crosses its first row</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza sua primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="595"/>
+        <location filename="../views/scanline_view.cpp" line="593"/>
         <source>%1(%2) = %3, where the %4 edge crosses the first row on the screen</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza a primeira linha na tela</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="600"/>
+        <location filename="../views/scanline_view.cpp" line="598"/>
         <source>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</source>
         <translation>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 ao longo da aresta %7</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="613"/>
+        <location filename="../views/scanline_view.cpp" line="611"/>
         <source>Scanline y = %1</source>
         <translation>Linha de varredura y = %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="615"/>
+        <location filename="../views/scanline_view.cpp" line="613"/>
         <source>(sampled at y = %1)</source>
         <translation>(amostrada em y = %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="627"/>
+        <location filename="../views/scanline_view.cpp" line="625"/>
         <source>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Regra top-left: as amostras com x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 a ceil(x_right%2) &amp;minus; 1 = %4 (uma amostra exatamente na aresta direita pertence ao triângulo seguinte).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="634"/>
+        <location filename="../views/scanline_view.cpp" line="632"/>
         <source>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</source>
         <translation>Regra inclusiva: os pixels de ceil(x_left%1) = %2 a floor(x_right%1) = %3, as duas pontas incluídas (uma amostra exatamente sobre uma aresta está dentro).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="642"/>
+        <location filename="../views/scanline_view.cpp" line="640"/>
         <source>No pixel on this row</source>
         <translation>Nenhum pixel nesta linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="643"/>
+        <location filename="../views/scanline_view.cpp" line="641"/>
         <source>the edges cross it between two samples.</source>
         <translation>as arestas a cruzam entre duas amostras.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="644"/>
+        <location filename="../views/scanline_view.cpp" line="642"/>
         <source>they are all off the screen.</source>
         <translation>estão todos fora da tela.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="647"/>
+        <location filename="../views/scanline_view.cpp" line="645"/>
         <source>Span [%1, %2): 1 pixel.</source>
         <translation>Segmento [%1, %2): 1 pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="648"/>
+        <location filename="../views/scanline_view.cpp" line="646"/>
         <source>Span [%1, %2): %3 pixels.</source>
         <translation>Segmento [%1, %2): %3 pixels.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="651"/>
+        <location filename="../views/scanline_view.cpp" line="649"/>
         <source>(cut to the screen&apos;s columns 0 to %1)</source>
         <translation>(cortado às colunas 0 a %1 da tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="654"/>
+        <location filename="../views/scanline_view.cpp" line="652"/>
         <source>The pixel at the cursor is x = %1.</source>
         <translation>O pixel no cursor é x = %1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="665"/>
+        <location filename="../views/scanline_view.cpp" line="663"/>
         <source>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</source>
         <translation>Nas pontas do segmento, as coordenadas baricêntricas (&amp;alpha;, &amp;beta;, &amp;gamma;) da amostra em relação ao triângulo de tela P1 %1, P2 %2, P3 %3 dão a profundidade, a partir dos z dos vértices, z1 = %4, z2 = %5, z3 = %6:</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="670"/>
+        <location filename="../views/scanline_view.cpp" line="668"/>
         <source>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</source>
         <translation>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (com correção de perspectiva: 1/z é linear na tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="672"/>
+        <location filename="../views/scanline_view.cpp" line="670"/>
         <source>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</source>
         <translation>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="677"/>
+        <location filename="../views/scanline_view.cpp" line="675"/>
         <source>depth</source>
         <translation>profundidade</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="677"/>
+        <location filename="../views/scanline_view.cpp" line="675"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="684"/>
+        <location filename="../views/scanline_view.cpp" line="682"/>
         <source>not computed (nothing is lit)</source>
         <translation>não calculada (nada é iluminado)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="685"/>
+        <location filename="../views/scanline_view.cpp" line="683"/>
         <source>zero</source>
         <translation>nula</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="703"/>
+        <location filename="../views/scanline_view.cpp" line="701"/>
         <source>Pixel (x, y) is sampled at the point (x, y) itself.</source>
         <translation>O pixel (x, y) é amostrado no próprio ponto (x, y).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="704"/>
+        <location filename="../views/scanline_view.cpp" line="702"/>
         <source>Pixel (x, y) is sampled at (x + %1, y + %1).</source>
         <translation>O pixel (x, y) é amostrado em (x + %1, y + %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="707"/>
+        <location filename="../views/scanline_view.cpp" line="705"/>
         <source>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</source>
         <translation>A normal é N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1), a partir das normais dos vértices, normalizada%1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="710"/>
+        <location filename="../views/scanline_view.cpp" line="708"/>
         <source>, with the barycentrics weighted by 1/w (perspective-correct)</source>
         <translation>, com as coordenadas baricêntricas ponderadas por 1/w (correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="715"/>
+        <location filename="../views/scanline_view.cpp" line="713"/>
         <source>Edge walking: from one scanline to the next, each edge&apos;s x changes by its constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. The span between the two crossings is filled; the long edge bounds every row, the upper edge the rows above the middle vertex, the lower edge the rest.</source>
         <translation>Percurso das arestas: de uma linha de varredura à seguinte, o x de cada aresta muda pelo seu dx/dy constante, uma adição por aresta e por linha: x_left(y+1) = x_left(y) + dx/dy. O segmento entre os dois cruzamentos é preenchido; a aresta longa limita todas as linhas, a aresta superior as linhas acima do vértice do meio, a aresta inferior as demais.</translation>
     </message>
@@ -3546,17 +3616,52 @@
         <translation>nada é iluminado: cada pixel recebe a cor do seu objeto</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="105"/>
+        <location filename="../views/stage_strip.cpp" line="100"/>
+        <source>near clip</source>
+        <translation>recorte próximo</translation>
+    </message>
+    <message>
+        <location filename="../views/stage_strip.cpp" line="102"/>
+        <source>plain divide</source>
+        <translation>divisão simples</translation>
+    </message>
+    <message>
+        <location filename="../views/stage_strip.cpp" line="104"/>
+        <source>same side</source>
+        <translation>mesmo lado</translation>
+    </message>
+    <message>
+        <location filename="../views/stage_strip.cpp" line="113"/>
+        <source>triangles are clipped at the near plane before the divide, so nothing at or behind the eye is divided by its w (the course and GPU-like rules)</source>
+        <translation>os triângulos são recortados no plano próximo antes da divisão, então nada no olho ou atrás dele é dividido pelo seu w (as regras do curso e as de GPU)</translation>
+    </message>
+    <message>
+        <location filename="../views/stage_strip.cpp" line="116"/>
+        <source>every vertex is divided by its w without clipping, as seed 000 writes it and seed 001&apos;s HW2 does (&quot;we won&apos;t add it&quot;): a triangle behind the eye lands mirrored through the centre, one across the eye plane wraps through infinity</source>
+        <translation>cada vértice é dividido pelo seu w sem recorte, como a seed 000 escreve e o HW2 da seed 001 faz (&quot;não vamos adicioná-lo&quot;): um triângulo atrás do olho cai espelhado pelo centro, um que atravessa o plano do olho dá a volta pelo infinito</translation>
+    </message>
+    <message>
+        <location filename="../views/stage_strip.cpp" line="121"/>
+        <source>triangles wholly in front of or wholly behind the eye are divided as they are; those across the eye plane are clipped at the near plane</source>
+        <translation>os triângulos inteiramente à frente ou inteiramente atrás do olho são divididos como estão; os que atravessam o plano do olho são recortados no plano próximo</translation>
+    </message>
+    <message>
+        <location filename="../views/stage_strip.cpp" line="137"/>
         <source>(skipped)</source>
         <translation>(omitida)</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="109"/>
+        <location filename="../views/stage_strip.cpp" line="141"/>
         <source>%1 is skipped: %2</source>
         <translation>Etapa omitida (%1): %2</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="127"/>
+        <location filename="../views/stage_strip.cpp" line="143"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../views/stage_strip.cpp" line="162"/>
         <source>while stepping, stages 5-7 run together, fragment by fragment</source>
         <translation>no passo a passo, as etapas 5-7 rodam juntas, fragmento a fragmento</translation>
     </message>
@@ -3652,184 +3757,184 @@
 <context>
     <name>rasterlab::TrapezoidView</name>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="104"/>
+        <location filename="../views/trapezoid_view.cpp" line="101"/>
         <source>No triangle to show: step into the frame or pick a pixel.</source>
         <translation>Nenhum triângulo para mostrar: avance pelo quadro ou escolha um pixel.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="256"/>
+        <location filename="../views/trapezoid_view.cpp" line="253"/>
         <source>upper trapezoid</source>
         <translation>trapézio superior</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="257"/>
+        <location filename="../views/trapezoid_view.cpp" line="254"/>
         <source>lower trapezoid</source>
         <translation>trapézio inferior</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="268"/>
+        <location filename="../views/trapezoid_view.cpp" line="265"/>
         <source>scanline j</source>
         <translation>linha de varredura j</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="318"/>
+        <location filename="../views/trapezoid_view.cpp" line="315"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="320"/>
+        <location filename="../views/trapezoid_view.cpp" line="317"/>
         <source>Pick a pixel, or step through the frame, to see a triangle split into trapezoids.</source>
         <translation>Escolha um pixel, ou avance pelo quadro, para ver um triângulo dividido em trapézios.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="326"/>
+        <location filename="../views/trapezoid_view.cpp" line="323"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</source>
         <translation>&lt;b&gt;Triângulo %1&lt;/b&gt; de %2</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="327"/>
+        <location filename="../views/trapezoid_view.cpp" line="324"/>
         <source>scanline %1</source>
         <translation>linha de varredura %1</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="328"/>
+        <location filename="../views/trapezoid_view.cpp" line="325"/>
         <source>pixel %1</source>
         <translation>pixel %1</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="330"/>
+        <location filename="../views/trapezoid_view.cpp" line="327"/>
         <source>at the stepping cursor</source>
         <translation>no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="330"/>
+        <location filename="../views/trapezoid_view.cpp" line="327"/>
         <source>the triangle selected</source>
         <translation>o triângulo selecionado</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="353"/>
+        <location filename="../views/trapezoid_view.cpp" line="350"/>
         <source>Its area on the screen is zero: it has no inside, no trapezoid, and is not scanned.</source>
         <translation>Sua área na tela é zero: ele não tem interior nem trapézio, e não é varrido.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="361"/>
+        <location filename="../views/trapezoid_view.cpp" line="358"/>
         <source>Vertices sorted by j: top %1, middle %2, bottom %3. The triangle is split at the middle vertex&apos;s row j = %4.</source>
         <translation>Vértices ordenados por j: topo %1, meio %2, base %3. O triângulo é dividido na linha do vértice do meio, j = %4.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="366"/>
+        <location filename="../views/trapezoid_view.cpp" line="363"/>
         <source>The long edge from top to bottom meets that row at s = (%1 &amp;minus; %2) / (%3 &amp;minus; %2) = %4: M&apos; = lerp(s, top, bottom) = %5, %6.</source>
         <translation>A aresta longa, do topo à base, encontra essa linha em s = (%1 &amp;minus; %2) / (%3 &amp;minus; %2) = %4: M&apos; = lerp(s, topo, base) = %5, %6.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="372"/>
+        <location filename="../views/trapezoid_view.cpp" line="369"/>
         <source>Two vertices share a row: the triangle is one trapezoid, two of whose corners are the same vertex.</source>
         <translation>Dois vértices estão na mesma linha: o triângulo é um só trapézio, com dois cantos no mesmo vértice.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="377"/>
+        <location filename="../views/trapezoid_view.cpp" line="374"/>
         <source>Each corner carries the colour Gouraud shading worked out at its vertex, and the depth.</source>
         <translation>Cada canto leva a cor que o sombreamento de Gouraud calculou no seu vértice, e a profundidade.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="383"/>
+        <location filename="../views/trapezoid_view.cpp" line="380"/>
         <source>Each corner carries the depth%1 (colours are carried under Gouraud shading, for a triangle with a pixel on the screen, once the frame&apos;s replay is built).</source>
         <translation>Cada canto leva a profundidade%1 (as cores são levadas no sombreamento de Gouraud, para um triângulo com algum pixel na tela, depois que o passo a passo do quadro estiver preparado).</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="385"/>
+        <location filename="../views/trapezoid_view.cpp" line="382"/>
         <source> as 1/z, which is linear on the screen</source>
         <translation> como 1/z, que é linear na tela</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="390"/>
+        <location filename="../views/trapezoid_view.cpp" line="387"/>
         <source>corner</source>
         <translation>canto</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="393"/>
+        <location filename="../views/trapezoid_view.cpp" line="390"/>
         <source>rows</source>
         <translation>linhas</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="401"/>
-        <location filename="../views/trapezoid_view.cpp" line="430"/>
+        <location filename="../views/trapezoid_view.cpp" line="398"/>
+        <location filename="../views/trapezoid_view.cpp" line="427"/>
         <source>upper</source>
         <translation>superior</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="401"/>
-        <location filename="../views/trapezoid_view.cpp" line="430"/>
+        <location filename="../views/trapezoid_view.cpp" line="398"/>
+        <location filename="../views/trapezoid_view.cpp" line="427"/>
         <source>lower</source>
         <translation>inferior</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="415"/>
+        <location filename="../views/trapezoid_view.cpp" line="412"/>
         <source>none</source>
         <translation>nenhuma</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="428"/>
+        <location filename="../views/trapezoid_view.cpp" line="425"/>
         <source>Scanline j = %1, in the %2 trapezoid</source>
         <translation>Linha de varredura j = %1, no trapézio %2</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="443"/>
+        <location filename="../views/trapezoid_view.cpp" line="440"/>
         <source>No pixel of this row lies between L and R on the screen.</source>
         <translation>Nenhum pixel desta linha fica entre L e R na tela.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="446"/>
+        <location filename="../views/trapezoid_view.cpp" line="443"/>
         <source>Pixels i with L_i &amp;le; i%1 &amp;lt; R_i: %2 to %3.</source>
         <translation>Pixels i com L_i &amp;le; i%1 &amp;lt; R_i: %2 a %3.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="451"/>
+        <location filename="../views/trapezoid_view.cpp" line="448"/>
         <source>Pixels i from ceil(L_i%1) to floor(R_i%1): %2 to %3.</source>
         <translation>Pixels i de ceil(L_i%1) a floor(R_i%1): %2 a %3.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="462"/>
+        <location filename="../views/trapezoid_view.cpp" line="459"/>
         <source>Pixel i = %1</source>
         <translation>Pixel i = %1</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="472"/>
+        <location filename="../views/trapezoid_view.cpp" line="469"/>
         <source>z = 1 / (1/z) = %1; the depth test&apos;s z there: %2 (from the barycentrics, in float).</source>
         <translation>z = 1 / (1/z) = %1; o z do teste de profundidade ali: %2 (a partir das coordenadas baricêntricas, em float).</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="475"/>
+        <location filename="../views/trapezoid_view.cpp" line="472"/>
         <source>The depth test&apos;s z there: %1 (from the barycentrics, in float).</source>
         <translation>O z do teste de profundidade ali: %1 (a partir das coordenadas baricêntricas, em float).</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="483"/>
+        <location filename="../views/trapezoid_view.cpp" line="480"/>
         <source>The row through the middle vertex belongs to the lower trapezoid only, so no row is scanned twice.</source>
         <translation>A linha que passa pelo vértice do meio pertence só ao trapézio inferior, então nenhuma linha é varrida duas vezes.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="487"/>
+        <location filename="../views/trapezoid_view.cpp" line="484"/>
         <source>Pixel (i, j) is sampled at (i + %1, j + %1): t_j and t_i use those.</source>
         <translation>O pixel (i, j) é amostrado em (i + %1, j + %1): t_j e t_i usam esses valores.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="489"/>
+        <location filename="../views/trapezoid_view.cpp" line="486"/>
         <source>Top-left rule: a sample exactly on the bottom vertex&apos;s row or on R belongs to the next triangle.</source>
         <translation>Regra top-left: uma amostra exatamente na linha do vértice da base ou sobre R pertence ao triângulo seguinte.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="491"/>
+        <location filename="../views/trapezoid_view.cpp" line="488"/>
         <source>Inclusive rule: samples exactly on L, R or the bottom row are inside.</source>
         <translation>Regra inclusiva: as amostras exatamente sobre L, sobre R ou na linha da base estão dentro.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="494"/>
+        <location filename="../views/trapezoid_view.cpp" line="491"/>
         <source>These rules interpolate colours perspective-correctly (weights over w): the lerps of the seed, linear on the screen, are what the course rules do; the rows and pixels are the same either way.</source>
         <translation>Estas regras interpolam as cores com correção de perspectiva (pesos divididos por w): os lerps da semente, lineares na tela, são o que fazem as regras do curso; as linhas e os pixels são os mesmos de todo modo.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="499"/>
+        <location filename="../views/trapezoid_view.cpp" line="496"/>
         <source>The same rows and pixels as the edge walk (scan conversion view): L_i and R_i are where the scanline crosses the triangle&apos;s edges.</source>
         <translation>As mesmas linhas e pixels do percurso das arestas (painel de conversão por varredura): L_i e R_i são onde a linha de varredura cruza as arestas do triângulo.</translation>
     </message>

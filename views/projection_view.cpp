@@ -567,11 +567,19 @@ void ProjectionSideView::paintLayer() {
     drawBatch(painter, m_keptLines, bounds, map);
 
     painter.setRenderHint(QPainter::Antialiasing, true);
-    // The near plane.
-    const double nearW = projection.nearW;
+    // The near plane; under the plain divide there is none, only the eye plane w = 0.
+    const bool plainDivide = projection.mode == rl::NearPlane::Mode::Naive;
+    const double nearW = plainDivide ? 0.0 : projection.nearW;
     const QPointF nearTop = toWidget(nearW, m_yMax), nearBottom = toWidget(nearW, m_yMin);
-    painter.setPen(QPen(QColor(255, 90, 90), m_lineWidth));
+    painter.setPen(
+        QPen(QColor(255, 90, 90), m_lineWidth, plainDivide ? Qt::DashLine : Qt::SolidLine));
     painter.drawLine(nearTop, nearBottom);
+    // N, the direction the camera looks in (w grows along it).
+    const QPointF nTip = eye + QPointF(std::min(70.0, 0.3 * width()), 0.0);
+    painter.setPen(QPen(kText, m_lineWidth));
+    painter.drawLine(eye, nTip);
+    painter.drawLine(nTip, nTip + QPointF(-7.0, -4.0));
+    painter.drawLine(nTip, nTip + QPointF(-7.0, 4.0));
     // The vertices clipping made, on the near plane (or another plane it met).
     painter.setPen(QPen(Qt::black, 1.0));
     painter.setBrush(kClippedColour);
@@ -597,8 +605,17 @@ void ProjectionSideView::paintLayer() {
                   QStringLiteral("C"), kText);
     // The near plane's label beside its line, at the top; the count of made vertices in the
     // top right corner, out of the way of the geometry near the plane.
+    drawBoxedText(painter,
+                  nTip + QPointF(-metrics.horizontalAdvance(QStringLiteral("N")) / 2.0, -6.0),
+                  QStringLiteral("N"), kText);
     drawBoxedText(painter, nearTop + QPointF(6.0, metrics.ascent()),
-                  tr("near plane w = %1").arg(number(nearW, 4)), QColor(255, 120, 120));
+                  plainDivide ? tr("eye plane w = 0: the plain divide clips nothing")
+                              : tr("near plane w = %1").arg(number(nearW, 4)),
+                  QColor(255, 120, 120));
+    if (rl::everyTriangleBehind(projection, scene)) {
+        const QString behind = tr("the object lies behind the eye (w < 0): N points away from it");
+        drawBoxedText(painter, QPointF(40.0, height() - 28.0), behind, kBehindColour.lighter(130));
+    }
     if (!m_made.isEmpty()) {
         const QString made = tr("● made by clipping: %1").arg(m_made.size());
         drawBoxedText(
@@ -816,10 +833,21 @@ void ProjectionView::refresh() {
                 .arg(c.clippedAway);
     if (c.beyondGuardBand > 0) html += tr("; beyond the guard band %1").arg(c.beyondGuardBand);
     if (c.nonFinite > 0) html += tr("; not finite %1").arg(c.nonFinite);
-    html += QStringLiteral("<br>") +
-            tr("%1 screen triangles go to scan conversion; the near plane is w = %2.")
-                .arg(m_frame->projection->triangles.size())
-                .arg(number(m_frame->projection->nearW, 4));
+    const rl::Projection& projection = *m_frame->projection;
+    if (projection.mode == rl::NearPlane::Mode::Naive) {
+        html += QStringLiteral("<br>") +
+                tr("%1 screen triangles go to scan conversion. The plain divide clips nothing "
+                   "(seed 000 as written; seed 001's HW2): %2 wholly behind the eye, drawn "
+                   "mirrored through the centre; %3 across the eye plane, drawn wrong.")
+                    .arg(projection.triangles.size())
+                    .arg(projection.behindEye)
+                    .arg(projection.acrossEye);
+    } else {
+        html += QStringLiteral("<br>") +
+                tr("%1 screen triangles go to scan conversion; the near plane is w = %2.")
+                    .arg(projection.triangles.size())
+                    .arg(number(projection.nearW, 4));
+    }
     html += QStringLiteral("<br>") +
             tr("%1 selected, %2 being drawn").arg(swatch(kSelectedColour), swatch(kCurrentColour));
     m_legend->setText(html);
@@ -840,12 +868,21 @@ void ProjectionView::refreshSelection() {
     const std::optional<std::uint32_t> selected =
         m_inspection && m_frame ? m_inspection->selectedTriangle() : std::nullopt;
 
+    const bool plainDivide = m_frame && m_frame->projection->mode == rl::NearPlane::Mode::Naive;
     QString html =
-        tr("<p><b>Projection.</b> Every vertex goes to clip space, pClip = "
-           "clipFromView · pView. A triangle crossing the near plane w = near is "
-           "clipped (Sutherland-Hodgman) and its polygon cut into a fan, so nothing "
-           "is divided by a w at or behind the camera. Then pNdc = pClip.xy / w, and "
-           "the pixels are x = (x_ndc + 1) W/2, y = (1 − y_ndc) H/2.</p>");
+        plainDivide
+            ? tr("<p><b>Projection.</b> Every vertex goes to clip space, pClip = "
+                 "clipFromView · pView, and is divided by its w without any clipping, as "
+                 "seed 000 writes the formula and seed 001's HW2 does (\"frustum clipping "
+                 "happens here in OpenGL, but we won't add it\"): pNdc = pClip.xy / w. A "
+                 "vertex behind the eye (w &lt; 0) lands mirrored through the centre; a "
+                 "triangle across the eye plane wraps through infinity. Clipping at the near "
+                 "plane (Shading &gt; Projection) draws only what lies in front.</p>")
+            : tr("<p><b>Projection.</b> Every vertex goes to clip space, pClip = "
+                 "clipFromView · pView. A triangle crossing the near plane w = near is "
+                 "clipped (Sutherland-Hodgman) and its polygon cut into a fan, so nothing "
+                 "is divided by a w at or behind the camera. Then pNdc = pClip.xy / w, and "
+                 "the pixels are x = (x_ndc + 1) W/2, y = (1 − y_ndc) H/2.</p>");
     if (m_frame && m_frame->scene->camera)
         html +=
             tr("<p>For the course camera pClip = ((d/hx) x, (d/hy) y, z, z): "

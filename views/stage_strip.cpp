@@ -93,6 +93,40 @@ QString StageStrip::skipReason(const rl::FrameTrace& frame, rl::StageId stage) {
     return {};
 }
 
+QString StageStrip::modeName(const rl::FrameTrace& frame, rl::StageId stage) {
+    if (stage != rl::StageId::Projection || !frame.projection) return {};
+    switch (frame.projection->mode) {
+        case rl::NearPlane::Mode::Clip:
+            return tr("near clip");
+        case rl::NearPlane::Mode::Naive:
+            return tr("plain divide");
+        case rl::NearPlane::Mode::SameSide:
+            return tr("same side");
+    }
+    return {};
+}
+
+QString StageStrip::modeDescription(const rl::FrameTrace& frame, rl::StageId stage) {
+    if (stage != rl::StageId::Projection || !frame.projection) return {};
+    switch (frame.projection->mode) {
+        case rl::NearPlane::Mode::Clip:
+            return tr(
+                "triangles are clipped at the near plane before the divide, so nothing at "
+                "or behind the eye is divided by its w (the course and GPU-like rules)");
+        case rl::NearPlane::Mode::Naive:
+            return tr(
+                "every vertex is divided by its w without clipping, as seed 000 writes it "
+                "and seed 001's HW2 does (\"we won't add it\"): a triangle behind the eye "
+                "lands mirrored through the centre, one across the eye plane wraps "
+                "through infinity");
+        case rl::NearPlane::Mode::SameSide:
+            return tr(
+                "triangles wholly in front of or wholly behind the eye are divided as they "
+                "are; those across the eye plane are clipped at the near plane");
+    }
+    return {};
+}
+
 void StageStrip::refresh() {
     const auto& frame = m_inspection->frame();
     QFont font = this->font();
@@ -101,12 +135,15 @@ void StageStrip::refresh() {
         const auto i = static_cast<std::size_t>(stage);
         QToolButton* button = m_buttons[i];
         const QString reason = frame ? skipReason(*frame, stage) : QString();
+        const QString mode = frame ? modeName(*frame, stage) : QString();
         QString text = QStringLiteral("%1 %2").arg(i + 1).arg(stageName(stage));
         if (!reason.isEmpty()) text += QStringLiteral(" ") + tr("(skipped)");
+        if (!mode.isEmpty()) text += QStringLiteral(" \u00b7 ") + mode;
         button->setText(text);
-        button->setToolTip(reason.isEmpty()
-                               ? stageName(stage)
-                               : tr("%1 is skipped: %2").arg(stageName(stage), reason));
+        button->setToolTip(!reason.isEmpty() ? tr("%1 is skipped: %2").arg(stageName(stage), reason)
+                           : !mode.isEmpty()
+                               ? tr("%1: %2").arg(stageName(stage), modeDescription(*frame, stage))
+                               : stageName(stage));
         QFont f = font;
         f.setItalic(!reason.isEmpty());
         f.setBold(stage == m_inspection->stage());

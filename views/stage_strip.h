@@ -25,6 +25,10 @@ public:
     static QString stageName(rl::StageId stage);
     // Why the frame shown does not use a stage, translated; empty when it does.
     static QString skipReason(const rl::FrameTrace& frame, rl::StageId stage);
+    // How the frame shown runs a stage when it has a choice (the projection's handling of
+    // triangles behind the eye): a few words for the strip, and a sentence for its tooltip.
+    static QString modeName(const rl::FrameTrace& frame, rl::StageId stage);
+    static QString modeDescription(const rl::FrameTrace& frame, rl::StageId stage);
 
     QToolButton* button(rl::StageId stage) const {
         return m_buttons[static_cast<std::size_t>(stage)];
