@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "format.h"
-#include "painter.h"
+#include "painters_algorithm.h"
 #include "parallel.h"
 
 namespace rl {

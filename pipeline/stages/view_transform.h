@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "animation.h"
+#include "animation_matrix.h"
 #include "camera_basis.h"
 #include "math.h"
 #include "scene.h"

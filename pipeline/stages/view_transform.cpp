@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "animation.h"
+#include "animation_matrix.h"
 
 namespace rl {
 

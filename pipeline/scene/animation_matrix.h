@@ -16,17 +16,13 @@
 #pragma once
 
 #include <array>
-#include <functional>
 #include <optional>
-#include <string>
 
 #include "diagnostics.h"
 #include "math.h"
 #include "scene.h"
 
 namespace rl {
-
-struct FrameTrace;
 
 // Where a draw's M turns: the animation's own centre and axis, or else the centre of the
 // draw's bounding box in the world (a pass over its vertices) and the turntable's axis.
@@ -57,15 +53,6 @@ dvec3 worldBoundingBoxCentre(const Draw& draw);
 // Puts `motion` on every draw and sets the scene's time: the animation of the window's panel
 // and of the CLI's --time and --animate.
 void animateEveryDraw(Scene& scene, const Animation& motion, double t);
-
-// Renders frames 0 .. frames - 1 of the scene's animation one after the other, frame k being
-// the scene at t = k / framesPerSecond, and hands each to `use`, which returns false to stop.
-// A frame that fails to render ends it with its error (`use` has then seen the frames before).
-Status renderAnimationFrames(
-    const Scene& scene, int frames, double framesPerSecond,
-    const std::function<bool(int frame, double t, const FrameTrace& trace)>& use);
-// The file an animation's frame is written to: frame_0000.png, frame_0001.png ...
-std::string animationFrameFileName(int frame);
 
 // A mesh triangle's normal n = (P2 - P1) x (P3 - P1) / |...| in model space, carried by a
 // matrix A (viewFromModel, say) the right way, A^-T n, and the wrong way, A n, both made unit.
