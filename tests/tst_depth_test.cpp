@@ -3,6 +3,7 @@
 #include <QtTest>
 
 #include "depth_test.h"
+#include "depth_test_fast.h"
 #include "probe.h"
 #include "scan_conversion.h"
 #include "test_support.h"
@@ -15,8 +16,8 @@ using testing::screen;
 using testing::screenTriangles;
 
 DepthTest depthOf(const Scene& scene, const Projection& pr) {
-    const ScanConversion scan = ScanConversionStage().run(scene, pr);
-    return DepthTestStage().run(scene, pr, scan);
+    const ScanConversion scan = ScanConversionStage().run({scene, pr});
+    return DepthTestStage().run({scene, pr, scan});
 }
 
 }  // namespace
@@ -37,7 +38,7 @@ private slots:
                         std::vector<std::uint32_t> ids(static_cast<std::size_t>(limit + 20), t);
                         if (other >= 0) ids[static_cast<std::size_t>(from + other)] = t ^ 1u;
                         const int expected = other >= 0 ? from + other : limit;
-                        QCOMPARE(runEnd(ids.data(), from, limit, t), expected);
+                        QCOMPARE(fast::runEnd(ids.data(), from, limit, t), expected);
                     }
                 }
             }
@@ -102,10 +103,10 @@ private slots:
         const Projection pr = screenTriangles({{0, 0}, {8, 0}, {0, 8}, {0, 0}, {8, 0}, {0, 8}},
                                               {{3, 4, 5}, {0, 1, 2}}, {5, 5, 5, 3, 3, 3});
         const Scene scene = screen(10, 10);
-        const ScanConversion scan = ScanConversionStage().run(scene, pr);
+        const ScanConversion scan = ScanConversionStage().run({scene, pr});
         auto probe = RecordingProbe::forPixel(1, 2);
-        const DepthTest traced = DepthTestStage().run(scene, pr, scan, probe);
-        const DepthTest plain = DepthTestStage().run(scene, pr, scan);
+        const DepthTest traced = DepthTestStage().run({scene, pr, scan}, probe);
+        const DepthTest plain = DepthTestStage().run({scene, pr, scan});
         QCOMPARE(traced.depth, plain.depth);
         QCOMPARE(traced.triangle, plain.triangle);
         QCOMPARE(probe.events().size(), std::size_t(2));

@@ -5,6 +5,7 @@
 #include "benchmark_scenes.h"
 #include "camera_basis.h"
 #include "normals.h"
+#include "normals_fast.h"
 #include "test_support.h"
 #include "view_transform.h"
 
@@ -18,7 +19,7 @@ private:
         Diagnostics diagnostics;
         auto basis = CameraBasisStage().run(scene, diagnostics);
         const ViewTransform view = ViewTransformStage().run(scene, basis.value());
-        return NormalsStage().run(scene, view);
+        return NormalsStage().run({scene, view});
     }
 
 private slots:
@@ -105,10 +106,10 @@ private slots:
         for (const vec3& n : normals.draws[0].triangle) RL_COMPARE_NEAR(glm::length(n), 1.0, 1e-6);
     }
 
-    void sameBitsOnAnyNumberOfThreads() {
+    void fastPathSameBitsOnAnyNumberOfThreads() {
         // The 100k-triangle torus with one triangle made degenerate (two equal corners) and
-        // one vertex used by nothing: 1, 2, 3 and 7 threads give the same normals, bit for
-        // bit, and the same counts.
+        // one vertex used by nothing: the fast path on 1, 2, 3 and 7 threads gives the stage's
+        // normals, bit for bit, and the same counts.
         auto scene = makeBenchmarkScene("torus-100k", 64, 48, ShadingModel::Phong);
         QVERIFY(scene);
         auto mesh = std::make_shared<Mesh>(*scene->draws[0].mesh);
@@ -118,11 +119,11 @@ private slots:
         Diagnostics diagnostics;
         auto basis = CameraBasisStage().run(*scene, diagnostics);
         const ViewTransform view = ViewTransformStage().run(*scene, basis.value());
-        const Normals one = NormalsStage().run(*scene, view, 1);
+        const Normals one = NormalsStage().run({*scene, view});
         QCOMPARE(one.draws[0].degenerateTriangles, std::size_t(1));
         QVERIFY(one.draws[0].verticesWithoutNormal >= 1);
-        for (int threads : {2, 3, 7}) {
-            const Normals many = NormalsStage().run(*scene, view, threads);
+        for (int threads : {1, 2, 3, 7}) {
+            const Normals many = fast::normals({*scene, view}, threads, fast::NormalsScope::All);
             QVERIFY(many.draws[0].triangle == one.draws[0].triangle);
             QVERIFY(many.draws[0].vertex == one.draws[0].vertex);
             QCOMPARE(many.draws[0].degenerateTriangles, one.draws[0].degenerateTriangles);
@@ -132,8 +133,8 @@ private slots:
     }
 
     void readScopeKeepsWhatTheShadingReads() {
-        // The 100k torus, on 1 and 3 threads: flat (and Phong with flat normals) keeps the
-        // triangle normals alone, Gouraud (with flat normals or not) and Phong the vertex
+        // The 100k torus, on 1 and 3 threads: the fast path's flat (and Phong with flat normals)
+        // keeps the triangle normals alone, Gouraud (with flat normals or not) and Phong the vertex
         // normals alone; each the same bits as the full set, with the same counts.
         for (auto [model, flatNormals, triangle, vertex] :
              {std::tuple{ShadingModel::Flat, false, true, false},
@@ -154,10 +155,11 @@ private slots:
             Diagnostics diagnostics;
             auto basis = CameraBasisStage().run(*scene, diagnostics);
             const ViewTransform view = ViewTransformStage().run(*scene, basis.value());
-            const Normals all = NormalsStage().run(*scene, view, 1);
+            const Normals all = NormalsStage().run({*scene, view});
             QCOMPARE(all.triangleNormalsLeftOut + all.vertexNormalsLeftOut, std::size_t(0));
             for (int threads : {1, 3}) {
-                const Normals kept = NormalsStage().run(*scene, view, threads, NormalsScope::Read);
+                const Normals kept =
+                    fast::normals({*scene, view}, threads, fast::NormalsScope::Read);
                 const DrawNormals& n = kept.draws[0];
                 QCOMPARE(n.triangle.empty(), !triangle);
                 QCOMPARE(n.vertex.empty(), !vertex);

@@ -5,6 +5,7 @@
 #include "benchmark_scenes.h"
 #include "camera_basis.h"
 #include "projection.h"
+#include "projection_fast.h"
 #include "test_support.h"
 #include "view_transform.h"
 
@@ -18,11 +19,20 @@ private:
         Projection projection;
         Diagnostics diagnostics;
     };
-    static Run project(const Scene& scene, int threads = 1, bool keepExact = true) {
+    // The stage as the lecture writes it.
+    static Run project(const Scene& scene) {
         Run run;
         auto basis = CameraBasisStage().run(scene, run.diagnostics);
         const ViewTransform view = ViewTransformStage().run(scene, basis.value());
-        run.projection = ProjectionStage().run(scene, view, run.diagnostics, threads, keepExact);
+        run.projection = ProjectionStage().run({scene, view}, run.diagnostics);
+        return run;
+    }
+    // The fast path (projection_fast.h).
+    static Run projectFast(const Scene& scene, int threads, bool keepExact = true) {
+        Run run;
+        auto basis = CameraBasisStage().run(scene, run.diagnostics);
+        const ViewTransform view = ViewTransformStage().run(scene, basis.value());
+        run.projection = fast::projection({scene, view}, run.diagnostics, threads, keepExact);
         return run;
     }
 
@@ -63,8 +73,8 @@ private slots:
         auto torus = makeBenchmarkScene("torus-100k", 320, 240, ShadingModel::Phong);
         QVERIFY(torus);
         for (const auto& [scene, threads] : {std::pair{&quad, 1}, std::pair{&*torus, 3}}) {
-            const Run kept = project(*scene, threads, true);
-            const Run lean = project(*scene, threads, false);
+            const Run kept = projectFast(*scene, threads, true);
+            const Run lean = projectFast(*scene, threads, false);
             const DrawProjection& a = kept.projection.draws[0];
             const DrawProjection& b = lean.projection.draws[0];
             QCOMPARE(a.pNdc.size(), a.pView.size());
@@ -79,7 +89,7 @@ private slots:
             QCOMPARE(lean.projection.clipped, kept.projection.clipped);
             QCOMPARE(lean.projection.inside, kept.projection.inside);
         }
-        QCOMPARE(project(quad, 1, false).projection.triangles.size(), std::size_t(2));
+        QCOMPARE(projectFast(quad, 1, false).projection.triangles.size(), std::size_t(2));
     }
 
     void courseMatrix() {
@@ -391,7 +401,7 @@ private slots:
         grid.cull = true;
         scene.draws.push_back(grid);
 
-        const Run one = project(scene, 1);
+        const Run one = project(scene);  // the stage
         const Projection& a = one.projection;
         QCOMPARE(a.clipped, std::size_t(0));
         QCOMPARE(a.behind, std::size_t(1200));
@@ -399,8 +409,8 @@ private slots:
         QVERIFY(a.backFaces > 2000 && a.backFaces < 3120);
         QCOMPARE(a.inside, 5120 - a.backFaces + 3200);
         QCOMPARE(a.triangles.size(), a.inside);
-        for (int threads : {2, 3, 7}) {
-            const Run several = project(scene, threads);
+        for (int threads : {1, 2, 3, 7}) {  // the fast path
+            const Run several = projectFast(scene, threads);
             const Projection& b = several.projection;
             QCOMPARE(b.triangles.size(), a.triangles.size());
             for (std::size_t k = 0; k < a.triangles.size(); ++k) {

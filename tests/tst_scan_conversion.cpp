@@ -117,7 +117,7 @@ private slots:
     void rightTriangleByHand() {
         // (0,0), (4,0), (0,4): row y covers x = 0 .. 4 - y, edges included.
         const Projection pr = screenTriangles({{0, 0}, {4, 0}, {0, 4}}, {{0, 1, 2}});
-        const ScanConversion scan = ScanConversionStage().run(screen(10, 10), pr);
+        const ScanConversion scan = ScanConversionStage().run({screen(10, 10), pr});
         const std::vector<Span> expected = {{0, 0, 5}, {1, 0, 4}, {2, 0, 3}, {3, 0, 2}, {4, 0, 1}};
         QCOMPARE(spansOf(scan, 0), expected);
         QCOMPARE(scan.pixels, std::size_t(15));
@@ -126,7 +126,7 @@ private slots:
     void slopedEdgeByHand() {
         // (0,0), (5,0), (0,3): the right edge is x = 5 - 5y/3: 5, 3.33, 1.67, 0 on rows 0..3.
         const Projection pr = screenTriangles({{0, 0}, {5, 0}, {0, 3}}, {{0, 1, 2}});
-        const ScanConversion scan = ScanConversionStage().run(screen(10, 10), pr);
+        const ScanConversion scan = ScanConversionStage().run({screen(10, 10), pr});
         const std::vector<Span> expected = {{0, 0, 6}, {1, 0, 4}, {2, 0, 2}, {3, 0, 1}};
         QCOMPARE(spansOf(scan, 0), expected);
     }
@@ -138,7 +138,7 @@ private slots:
         //   y=4: [2.5, 9] -> 3..9   y=5: [2, 6.33] -> 2..6   y=6: [1.5, 3.67] -> 2..3
         //   y=7: [1, 1] -> 1..1
         const Projection pr = screenTriangles({{9, 4}, {1, 7}, {4, 1}}, {{0, 1, 2}});
-        const ScanConversion scan = ScanConversionStage().run(screen(20, 20), pr);
+        const ScanConversion scan = ScanConversionStage().run({screen(20, 20), pr});
         const std::vector<Span> expected = {{1, 4, 5}, {2, 4, 6}, {3, 3, 8}, {4, 3, 10},
                                             {5, 2, 7}, {6, 2, 4}, {7, 1, 2}};
         QCOMPARE(spansOf(scan, 0), expected);
@@ -161,7 +161,7 @@ private slots:
         std::vector<Span> first;
         for (const auto& order : orders) {
             const ScanConversion scan =
-                ScanConversionStage().run(screen(20, 20), screenTriangles(points, {order}));
+                ScanConversionStage().run({screen(20, 20), screenTriangles(points, {order})});
             if (first.empty()) first = spansOf(scan, 0);
             QCOMPARE(spansOf(scan, 0), first);
         }
@@ -170,7 +170,7 @@ private slots:
     void flatTopAndFlatBottom() {
         const Projection pr =
             screenTriangles({{1, 1}, {5, 1}, {3, 3}, {3, 5}}, {{0, 1, 2}, {0, 3, 1}});
-        const ScanConversion scan = ScanConversionStage().run(screen(10, 10), pr);
+        const ScanConversion scan = ScanConversionStage().run({screen(10, 10), pr});
         // Flat top (1,1)-(5,1) down to (3,3): rows 1..3 shrink by one pixel a side.
         QCOMPARE(spansOf(scan, 0), (std::vector<Span>{{1, 1, 6}, {2, 2, 5}, {3, 3, 4}}));
         // (1,1), (5,1), (3,5): edges x = 1 + (y-1)/2 and x = 5 - (y-1)/2.
@@ -182,7 +182,7 @@ private slots:
         const Projection pr =
             screenTriangles({{0, 0}, {2, 2}, {4, 4}, {50, 50}, {60, 50}, {55, 60}, {3, 3}},
                             {{0, 1, 2}, {3, 4, 5}, {0, 0, 6}});
-        const ScanConversion scan = ScanConversionStage().run(screen(10, 10), pr);
+        const ScanConversion scan = ScanConversionStage().run({screen(10, 10), pr});
         QCOMPARE(scan.degenerate, std::size_t(2));  // collinear, repeated vertex
         QCOMPARE(scan.offscreen, std::size_t(1));
         QCOMPARE(scan.spans.size(), std::size_t(0));
@@ -196,7 +196,7 @@ private slots:
         const Projection pr = screenTriangles({{-big, -big}, {big, -big}, {0, big}}, {{0, 1, 2}});
         QElapsedTimer timer;
         timer.start();
-        const ScanConversion scan = ScanConversionStage().run(screen(640, 480), pr);
+        const ScanConversion scan = ScanConversionStage().run({screen(640, 480), pr});
         QCOMPARE(scan.spans.size(), std::size_t(480));
         QCOMPARE(scan.pixels, std::size_t(640 * 480));
         for (const Span& s : scan.spans)
@@ -207,7 +207,7 @@ private slots:
 
     void partlyOffscreenIsClipped() {
         const Projection pr = screenTriangles({{-5, -5}, {5, -5}, {-5, 5}}, {{0, 1, 2}});
-        const ScanConversion scan = ScanConversionStage().run(screen(10, 10), pr);
+        const ScanConversion scan = ScanConversionStage().run({screen(10, 10), pr});
         // Rows 0..5 of the screen; row y covers x = -5 .. -y, i.e. 0..-y on screen.
         QCOMPARE(spansOf(scan, 0), (std::vector<Span>{{0, 0, 1}}));
     }
@@ -221,7 +221,7 @@ private slots:
                                     {double(coord(rng)), double(coord(rng))},
                                     {double(coord(rng)), double(coord(rng))}};
             const ScanConversion scan =
-                ScanConversionStage().run(screen(32, 32), screenTriangles(p, {{0, 1, 2}}));
+                ScanConversionStage().run({screen(32, 32), screenTriangles(p, {{0, 1, 2}})});
             const auto expected = insidePixels({p[0], p[1], p[2]}, 32, 32);
             const auto actual = pixelsOf(spansOf(scan, 0));
             if (actual != expected)
@@ -261,7 +261,7 @@ private slots:
                 if (snapToPixel(rng) == 0) v = glm::floor(v) + rules.sampleOffset;
             }
             const ScanConversion scan = ScanConversionStage().run(
-                screenWith(32, 32, rules), screenTriangles({p[0], p[1], p[2]}, {{0, 1, 2}}));
+                {screenWith(32, 32, rules), screenTriangles({p[0], p[1], p[2]}, {{0, 1, 2}})});
             const auto expected = insideByRule(p, rules, 32, 32);
             const auto actual = pixelsOf(spansOf(scan, 0));
             if (actual != expected)
@@ -302,8 +302,8 @@ private slots:
             for (int k = 1; k <= n; ++k)
                 fan.push_back(
                     {0, static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(k % n + 1)});
-            const ScanConversion scan =
-                ScanConversionStage().run(screenWith(64, 64, rules), screenTriangles(points, fan));
+            const ScanConversion scan = ScanConversionStage().run(
+                {screenWith(64, 64, rules), screenTriangles(points, fan)});
             std::map<std::pair<int, int>, int> hits;
             std::set<std::pair<int, int>> expected;
             for (std::size_t t = 0; t < fan.size(); ++t) {
@@ -350,7 +350,7 @@ private slots:
                 fan.push_back(
                     {0, static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(k % n + 1)});
             const Projection pr = screenTriangles(points, fan);
-            const ScanConversion scan = ScanConversionStage().run(screen(64, 64), pr);
+            const ScanConversion scan = ScanConversionStage().run({screen(64, 64), pr});
             std::set<std::pair<int, int>> expected;
             std::map<std::pair<int, int>, int> hits;
             for (std::size_t t = 0; t < fan.size(); ++t) {
@@ -387,8 +387,9 @@ private slots:
             std::array<dvec2, 3> p{};
             for (auto& v : p) v = {coord(rng) / g, coord(rng) / g};
             ReplayProbe walk;
-            ScanConversionStage().run(screenWith(32, 32, rules),
-                                      screenTriangles({p[0], p[1], p[2]}, {{0, 1, 2}}), walk);
+            ScanConversionStage().run(
+                {screenWith(32, 32, rules), screenTriangles({p[0], p[1], p[2]}, {{0, 1, 2}})},
+                walk);
             const TriangleSetup s = setupTriangle(p, rules);
             const std::int32_t upperLast = lastUpperRow(s, rules);
             for (const ReplayRowEvent& e : walk.rows) {
@@ -415,8 +416,8 @@ private slots:
         const Projection pr = screenTriangles({{0, 0}, {4, 0}, {0, 4}, {9, 9}, {8, 9}, {9, 8}},
                                               {{0, 1, 2}, {3, 4, 5}});
         auto probe = RecordingProbe::forTriangle(0);
-        const ScanConversion traced = ScanConversionStage().run(screen(10, 10), pr, probe);
-        const ScanConversion plain = ScanConversionStage().run(screen(10, 10), pr);
+        const ScanConversion traced = ScanConversionStage().run({screen(10, 10), pr}, probe);
+        const ScanConversion plain = ScanConversionStage().run({screen(10, 10), pr});
         QCOMPARE(traced.spans, plain.spans);
         QCOMPARE(probe.events().size(), std::size_t(1 + 5));
         QVERIFY(std::holds_alternative<TriangleEvent>(probe.events()[0]));

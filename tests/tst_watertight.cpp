@@ -139,7 +139,7 @@ void check(const Shape& shape, const RasterRules& rules, Tally& tally) {
     Scene scene = testing::screen(kSize, kSize);
     scene.rules = rules;
     const ScanConversion scan =
-        ScanConversionStage().run(scene, testing::screenTriangles(shape.points, shape.triangles));
+        ScanConversionStage().run({scene, testing::screenTriangles(shape.points, shape.triangles)});
     std::vector<int> hits(kSize * kSize, 0);
     for (const Span& span : scan.spans)
         for (int x = span.xBegin; x < span.xEnd; ++x) ++hits[std::size_t(span.y * kSize + x)];

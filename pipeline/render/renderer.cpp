@@ -2,7 +2,12 @@
 
 #include <chrono>
 
+#include "depth_test_fast.h"
+#include "normals_fast.h"
 #include "parallel.h"
+#include "projection_fast.h"
+#include "scan_conversion_fast.h"
+#include "shading_fast.h"
 
 namespace rl {
 
@@ -31,6 +36,102 @@ T* recyclable(const std::shared_ptr<T>& held) {
     return held && held.use_count() == 1 ? held.get() : nullptr;
 }
 
+// Runs body, and keeps its time as the stage's.
+template <typename Body>
+void timed(FrameTrace& trace, StageId stage, Body&& body) {
+    const auto start = Clock::now();
+    body();
+    trace.stageMilliseconds[static_cast<std::size_t>(stage)] = millisecondsSince(start);
+}
+
+// Stages 3 to 7 as the lecture writes them, each on one thread, the probe hearing of every
+// triangle, span, depth test and pixel shaded.
+template <typename Probe>
+void runLectureStages(FrameTrace& trace, Probe& probe) {
+    const Scene& scene = *trace.scene;
+    timed(trace, StageId::Normals, [&] {
+        trace.normals = std::make_shared<const Normals>(NormalsStage().run({scene, *trace.view}));
+    });
+    timed(trace, StageId::Projection, [&] {
+        trace.projection = std::make_shared<const Projection>(
+            ProjectionStage().run({scene, *trace.view}, trace.diagnostics));
+    });
+    timed(trace, StageId::ScanConversion, [&] {
+        trace.scan = std::make_shared<const ScanConversion>(
+            ScanConversionStage().run({scene, *trace.projection}, probe));
+    });
+    timed(trace, StageId::DepthTest, [&] {
+        trace.depth = std::make_shared<const DepthTest>(
+            DepthTestStage().run({scene, *trace.projection, *trace.scan}, probe));
+    });
+    timed(trace, StageId::Shading, [&] {
+        trace.shading = std::make_shared<const Shading>(ShadingStage().run(
+            {scene, *trace.view, *trace.normals, *trace.projection, *trace.depth}, probe));
+    });
+}
+
+// The depth test and shading together (fast::depthTestAndShading): their time is the pair's,
+// split in the proportion the threads spent on each.
+void runDepthTestAndShadingInBands(FrameTrace& trace, int threads, RenderContext* context) {
+    const auto start = Clock::now();
+    Shading* recycled = context ? recyclable(context->shading) : nullptr;
+    double depthShare = 0.0;
+    const FrameLighting lighting(*trace.scene, *trace.view, *trace.normals, *trace.projection);
+    auto [depth, shading] =
+        fast::depthTestAndShading(lighting, *trace.scan, threads, recycled, depthShare);
+    const double both = millisecondsSince(start);
+    trace.stageMilliseconds[static_cast<std::size_t>(StageId::DepthTest)] = both * depthShare;
+    trace.stageMilliseconds[static_cast<std::size_t>(StageId::Shading)] = both * (1.0 - depthShare);
+    auto shared = std::make_shared<Shading>(std::move(shading));
+    if (context) {
+        context->shading = shared;
+        context->depth.reset();
+    }
+    trace.depth = std::make_shared<const DepthTest>(std::move(depth));
+    trace.shading = std::move(shared);
+}
+
+// Stages 3 to 7 by the fast paths, keeping what the options ask for.
+void runFastStages(FrameTrace& trace, const RenderOptions& options, int threads,
+                   RenderContext* context) {
+    const Scene& scene = *trace.scene;
+    timed(trace, StageId::Normals, [&] {
+        const auto scope = options.keepForViews || options.shading.keepNormals
+                               ? fast::NormalsScope::All
+                               : fast::NormalsScope::Read;
+        trace.normals =
+            std::make_shared<const Normals>(fast::normals({scene, *trace.view}, threads, scope));
+    });
+    timed(trace, StageId::Projection, [&] {
+        trace.projection = std::make_shared<const Projection>(fast::projection(
+            {scene, *trace.view}, trace.diagnostics, threads, options.keepForViews));
+    });
+    timed(trace, StageId::ScanConversion, [&] {
+        trace.scan = std::make_shared<const ScanConversion>(
+            fast::scanConversion({scene, *trace.projection}, threads));
+    });
+    if (!options.keepDepth && !options.keepFragments && !options.shading.keepNormals &&
+        fast::shadeInBands(scene, *trace.projection, *trace.scan)) {
+        runDepthTestAndShadingInBands(trace, threads, context);
+        return;
+    }
+    timed(trace, StageId::DepthTest, [&] {
+        DepthTest* recycled = context ? recyclable(context->depth) : nullptr;
+        auto depth = std::make_shared<DepthTest>(fast::depthTest(
+            {scene, *trace.projection, *trace.scan}, threads, recycled, options.keepDepth));
+        if (context) context->depth = depth;
+        trace.depth = std::move(depth);
+    });
+    timed(trace, StageId::Shading, [&] {
+        Shading* recycled = context ? recyclable(context->shading) : nullptr;
+        auto shading = std::make_shared<Shading>(
+            fast::shading({scene, *trace.view, *trace.normals, *trace.projection, *trace.depth},
+                          {threads, options.shading.keepNormals, recycled}));
+        if (context) context->shading = shading;
+        trace.shading = std::move(shading);
+    });
+}
+
 template <typename Probe>
 Result<FrameTrace> run(std::shared_ptr<const Scene> scenePtr, const RenderOptions& options,
                        Probe& probe, RenderContext* context) {
@@ -46,77 +147,21 @@ Result<FrameTrace> run(std::shared_ptr<const Scene> scenePtr, const RenderOption
     const int threads = Probe::enabled ? 1 : resolveThreads(options.threads);
     trace.threads = threads;
     const auto frameStart = Clock::now();
-    auto timed = [&](StageId stage, auto&& body) {
-        const auto start = Clock::now();
-        body();
-        trace.stageMilliseconds[static_cast<std::size_t>(stage)] = millisecondsSince(start);
-    };
 
     Result<CameraBasis> basis = CameraBasis{};
-    timed(StageId::CameraBasis, [&] { basis = CameraBasisStage().run(scene, trace.diagnostics); });
+    timed(trace, StageId::CameraBasis,
+          [&] { basis = CameraBasisStage().run(scene, trace.diagnostics); });
     if (!basis) return basis.error();
     trace.cameraBasis = std::make_shared<const CameraBasis>(std::move(basis).value());
-
-    timed(StageId::ViewTransform, [&] {
+    timed(trace, StageId::ViewTransform, [&] {
         trace.view = std::make_shared<const ViewTransform>(
             ViewTransformStage().run(scene, *trace.cameraBasis));
     });
-    timed(StageId::Normals, [&] {
-        const NormalsScope scope =
-            Probe::enabled || options.keepForViews || options.shading.keepNormals
-                ? NormalsScope::All
-                : NormalsScope::Read;
-        trace.normals =
-            std::make_shared<const Normals>(NormalsStage().run(scene, *trace.view, threads, scope));
-    });
-    timed(StageId::Projection, [&] {
-        trace.projection = std::make_shared<const Projection>(
-            ProjectionStage().run(scene, *trace.view, trace.diagnostics, threads,
-                                  Probe::enabled || options.keepForViews));
-    });
-    timed(StageId::ScanConversion, [&] {
-        trace.scan = std::make_shared<const ScanConversion>(
-            ScanConversionStage().run(scene, *trace.projection, probe, threads));
-    });
-    // Depth test and shading together: their time is the pair's, split in the proportion the
-    // threads spent on each.
-    if (!Probe::enabled && !options.keepDepth && !options.keepFragments &&
-        !options.shading.keepNormals && shadeInBands(scene, *trace.projection, *trace.scan)) {
-        const auto start = Clock::now();
-        Shading* recycled = context ? recyclable(context->shading) : nullptr;
-        double depthShare = 0.0;
-        auto [depth, shading] =
-            ShadingStage().runWithDepthTest(scene, *trace.view, *trace.normals, *trace.projection,
-                                            *trace.scan, threads, recycled, depthShare);
-        const double both = millisecondsSince(start);
-        trace.stageMilliseconds[static_cast<std::size_t>(StageId::DepthTest)] = both * depthShare;
-        trace.stageMilliseconds[static_cast<std::size_t>(StageId::Shading)] =
-            both * (1.0 - depthShare);
-        auto shared = std::make_shared<Shading>(std::move(shading));
-        if (context) {
-            context->shading = shared;
-            context->depth.reset();
-        }
-        trace.depth = std::make_shared<const DepthTest>(std::move(depth));
-        trace.shading = std::move(shared);
-    } else {
-        timed(StageId::DepthTest, [&] {
-            DepthTest* recycled = context ? recyclable(context->depth) : nullptr;
-            auto depth = std::make_shared<DepthTest>(
-                DepthTestStage().run(scene, *trace.projection, *trace.scan, probe, threads,
-                                     recycled, options.keepDepth));
-            if (context) context->depth = depth;
-            trace.depth = std::move(depth);
-        });
-        timed(StageId::Shading, [&] {
-            Shading* recycled = context ? recyclable(context->shading) : nullptr;
-            auto shading = std::make_shared<Shading>(
-                ShadingStage().run(scene, *trace.view, *trace.normals, *trace.projection,
-                                   *trace.depth, options.shading, probe, threads, recycled));
-            if (context) context->shading = shading;
-            trace.shading = std::move(shading);
-        });
-    }
+    if constexpr (Probe::enabled)
+        runLectureStages(trace, probe);
+    else
+        runFastStages(trace, options, threads, context);
+
     if (trace.scan->spans.empty() && trace.scan->offscreen > 0) {
         trace.diagnostics.warn(SourceLocation{scene.name, 0, 0},
                                "no triangle covers a pixel: all " +

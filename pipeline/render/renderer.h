@@ -1,8 +1,9 @@
 // Runs the seven stages in lecture order on a scene and keeps every output in a
-// FrameTrace. renderFrame is the plain render; traceFrame runs the same code with a
-// RecordingProbe to log what happens at one pixel or to one triangle (on one thread, so the
-// log is in drawing order; the buffers are the same for any number of threads). Both are pure
-// functions of the scene: no global state, so two renders can run at the same time.
+// FrameTrace. renderFrame runs the fast paths (fast/: several threads, vector kernels,
+// bands); traceFrame runs the lecture's stages (stages/) with a RecordingProbe that logs what
+// happens at one pixel or to one triangle, on one thread, in drawing order. The two give the
+// same bits. Both are pure functions of the scene: no global state, so two renders can run at
+// the same time.
 #pragma once
 
 #include <memory>
@@ -14,6 +15,10 @@
 #include "shading.h"
 
 namespace rl {
+
+struct ShadingOptions {
+    bool keepNormals = false;  // also keep the unit normal used at each pixel
+};
 
 struct RenderOptions {
     ShadingOptions shading;
@@ -27,8 +32,8 @@ struct RenderOptions {
     // Whether the frame keeps, per pixel, the triangle that won it and its barycentrics
     // (DepthTest::triangle and barycentric): the window's views, the normals image and the
     // painter's comparison read them. Without them (and without the z-buffer or the normals),
-    // when shadeInBands says it pays, the depth test and shading run together chunk by chunk
-    // (ShadingStage::runWithDepthTest) and the frame keeps the image and which pixels a
+    // when fast::shadeInBands says it pays, the depth test and shading run together chunk by
+    // chunk (fast::depthTestAndShading) and the frame keeps the image and which pixels a
     // triangle covered. The image is the same.
     bool keepFragments = true;
     // Whether the frame keeps what only the window's views read: every triangle's and every
@@ -36,6 +41,7 @@ struct RenderOptions {
     // position (the projection view). Without it, each draw gets only the normals its shading
     // reads (normalsRead: a flat sphere, say, sums no vertex normals; the normals image keeps
     // them all), and projection only the snapped positions. The image is the same.
+    // A traced frame (traceFrame) runs the lecture's stages, which keep everything.
     bool keepForViews = true;
 };
 

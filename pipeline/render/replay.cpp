@@ -13,10 +13,10 @@ namespace {
 
 constexpr std::uint32_t kPrefixStep = 1024;
 
-// The frame's shading stage run on a list of (triangle, barycentrics) instead of a depth
-// buffer: the fragments are laid out in rows of a stand-in buffer, so the colour of each is
-// worked out by the very code (and kernels) that shaded the frame. A fragment's colour
-// depends on its triangle and barycentrics only, not on where its pixel is.
+// The shading stage run on a list of (triangle, barycentrics) instead of a depth buffer: the
+// fragments are laid out in rows of a stand-in buffer, so the colour of each is worked out by
+// the stage's own code. A fragment's colour depends on its triangle and barycentrics only,
+// not on where its pixel is.
 template <typename Probe>
 Shading shadeStandIn(const FrameTrace& trace, const std::vector<ReplayFragment>& all,
                      const std::vector<std::uint32_t>& which, int width, Probe& probe) {
@@ -36,8 +36,8 @@ Shading shadeStandIn(const FrameTrace& trace, const std::vector<ReplayFragment>&
         depth.triangle.at(i % w, i / w) = f.triangle;
         depth.barycentric.at(i % w, i / w) = vec2(f.beta, f.gamma);
     }
-    return ShadingStage().run(standIn, *trace.view, *trace.normals, *trace.projection, depth, {},
-                              probe, Probe::enabled ? 1 : trace.threads);
+    return ShadingStage().run({standIn, *trace.view, *trace.normals, *trace.projection, depth},
+                              probe);
 }
 
 }  // namespace
@@ -62,9 +62,9 @@ Result<std::shared_ptr<const FrameReplay>> FrameReplay::build(
     // The edge walk and the depth test again, on one thread, in drawing order.
     ReplayProbe probe;
     probe.fragments.reserve(trace->scan->pixels);
-    const ScanConversion scan = ScanConversionStage().run(scene, *trace->projection, probe, 1);
+    const ScanConversion scan = ScanConversionStage().run({scene, *trace->projection}, probe);
     if (cancelled()) return makeError(ErrorCode::Usage, where, "cancelled");
-    DepthTestStage().run(scene, *trace->projection, scan, probe, 1);
+    DepthTestStage().run({scene, *trace->projection, scan}, probe);
     if (cancelled()) return makeError(ErrorCode::Usage, where, "cancelled");
     replay->m_fragments = std::move(probe.fragments);
     auto& fragments = replay->m_fragments;

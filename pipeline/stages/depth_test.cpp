@@ -1,18 +1,6 @@
 #include "depth_test.h"
 
-#include <algorithm>
-#include <atomic>
-#include <cstring>
-#include <memory>
-#include <optional>
-
-#include "multiversion.h"
-#include "parallel.h"
 #include "probe.h"
-
-// The vector helpers are always inlined into the kernels' builds, so no vector is passed
-// between functions: the warning about the AVX calling convention does not apply.
-#pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace rl {
 
@@ -23,562 +11,119 @@ std::size_t DepthTest::coveredPixels() const {
     return n;
 }
 
-namespace {
-
-struct Counts {
-    std::size_t fragments = 0, passed = 0, outsideDepthRange = 0;
-};
-
-// The depth test of one span when nothing is recorded and no depth range clips, eight
-// pixels at a time with the compiler's vector extensions (GCC and Clang). A group of eight
-// that passes whole is written without reading what was stored (barycentrics only when
-// baryRow is given), one that fails whole is not
-// written, and a mixed one is blended lane by lane and stored back whole. The operations are
-// those of the general loop (testSpanOf), lane by lane, so the bits are the same. Built for
-// each of RL_MULTIVERSION's machines, the best one chosen when the program starts. Returns the
-// number of fragments that passed.
-typedef double Doubles8 __attribute__((vector_size(64)));
-typedef float Floats8 __attribute__((vector_size(32)));
-typedef std::int32_t Ints8 __attribute__((vector_size(32)));
-typedef std::int32_t Ints4 __attribute__((vector_size(16)));
-typedef std::uint64_t Words2 __attribute__((vector_size(16)));
-
-// Lanes where mask is set take a, the others b. Always inlined into testSpan's builds, so no
-// vector is passed between functions (the AVX calling-convention warning does not apply).
-inline __attribute__((always_inline)) Floats8 blend(const Ints8& mask, const Floats8& a,
-                                                    const Floats8& b) {
-    return reinterpret_cast<Floats8>((mask & reinterpret_cast<Ints8>(a)) |
-                                     (~mask & reinterpret_cast<Ints8>(b)));
-}
-
-RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, float* baryRow,
-                                     std::int32_t n, double beta0, double betaDx, double gamma0,
-                                     double gammaDx, float z0, float dz1, float dz2,
-                                     std::uint32_t id, bool winsOnTie, bool reciprocal,
-                                     bool painted) {
-    std::int32_t i = 0;
-    const Ints8 tie = winsOnTie ? Ints8{} - 1 : Ints8{};
-    const Ints8 always = painted ? Ints8{} - 1 : Ints8{};  // the painter's: no depth test
-    const auto ids = static_cast<std::int32_t>(id);
-    const Doubles8 step = {0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0};
-    Ints8 passes = {};  // minus the number of passes, per lane
-    for (; i + 8 <= n; i += 8) {
-        // One vector of eight doubles: two AVX operations, or one AVX-512 operation.
-        const Doubles8 index = double(i) + step;
-        const Floats8 beta = __builtin_convertvector(beta0 + index * betaDx, Floats8);
-        const Floats8 gamma = __builtin_convertvector(gamma0 + index * gammaDx, Floats8);
-        Floats8 z = (z0 + beta * dz1) + gamma * dz2;
-        if (reciprocal) z = 1.0f / z;
-        Floats8 stored;
-        std::memcpy(&stored, depthRow + i, sizeof stored);
-        const Ints8 pass = (z < stored) | (tie & (z == stored)) | always;
-        passes += pass;
-        const Floats8 interleaved0 = __builtin_shufflevector(beta, gamma, 0, 8, 1, 9, 2, 10, 3, 11);
-        const Floats8 interleaved1 =
-            __builtin_shufflevector(beta, gamma, 4, 12, 5, 13, 6, 14, 7, 15);
-        // Whether every lane passes, or none: the halves folded into two 64-bit words.
-        const Ints4 passLow = __builtin_shufflevector(pass, pass, 0, 1, 2, 3);
-        const Ints4 passHigh = __builtin_shufflevector(pass, pass, 4, 5, 6, 7);
-        const Words2 both = reinterpret_cast<Words2>(passLow & passHigh);
-        const Words2 either = reinterpret_cast<Words2>(passLow | passHigh);
-        if ((both[0] & both[1]) == ~std::uint64_t{0}) {
-            // Every lane passes (no overdraw here): the stored values are not needed.
-            const Ints8 triangle = Ints8{} + ids;
-            std::memcpy(depthRow + i, &z, sizeof z);
-            std::memcpy(idRow + i, &triangle, sizeof triangle);
-            if (baryRow) {
-                std::memcpy(baryRow + 2 * i, &interleaved0, sizeof interleaved0);
-                std::memcpy(baryRow + 2 * i + 8, &interleaved1, sizeof interleaved1);
-            }
-            continue;
-        }
-        if ((either[0] | either[1]) == 0) continue;  // nothing to write
-        Ints8 storedId;
-        std::memcpy(&storedId, idRow + i, sizeof storedId);
-        const Floats8 depth = blend(pass, z, stored);
-        const Ints8 triangle = (pass & ids) | (~pass & storedId);
-        std::memcpy(depthRow + i, &depth, sizeof depth);
-        std::memcpy(idRow + i, &triangle, sizeof triangle);
-        if (!baryRow) continue;
-        Floats8 stored0, stored1;
-        std::memcpy(&stored0, baryRow + 2 * i, sizeof stored0);
-        std::memcpy(&stored1, baryRow + 2 * i + 8, sizeof stored1);
-        const Floats8 bary0 = blend(__builtin_shufflevector(pass, pass, 0, 0, 1, 1, 2, 2, 3, 3),
-                                    interleaved0, stored0);
-        const Floats8 bary1 = blend(__builtin_shufflevector(pass, pass, 4, 4, 5, 5, 6, 6, 7, 7),
-                                    interleaved1, stored1);
-        std::memcpy(baryRow + 2 * i, &bary0, sizeof bary0);
-        std::memcpy(baryRow + 2 * i + 8, &bary1, sizeof bary1);
-    }
-    std::size_t passed = 0;
-    for (int lane = 0; lane < 8; ++lane) passed += static_cast<std::size_t>(-passes[lane]);
-    for (; i < n; ++i) {
-        const auto beta = static_cast<float>(beta0 + double(i) * betaDx);
-        const auto gamma = static_cast<float>(gamma0 + double(i) * gammaDx);
-        float z = z0 + beta * dz1 + gamma * dz2;
-        if (reciprocal) z = 1.0f / z;
-        if (painted || z < depthRow[i] || (winsOnTie && z == depthRow[i])) {
-            depthRow[i] = z;
-            idRow[i] = id;
-            if (baryRow) {
-                baryRow[2 * i] = beta;
-                baryRow[2 * i + 1] = gamma;
-            }
-            ++passed;
-        }
-    }
-    return passed;
-}
-
-// n copies of value from row on: the clear of a row's depths, with the widest stores the
-// machine has (std::fill_n is built for the baseline's 16-byte ones).
-RL_MULTIVERSION void fillFloats(float* row, std::size_t n, float value) {
-    for (std::size_t i = 0; i < n; ++i) row[i] = value;
-}
-
-// What the depth test of one triangle's spans needs, worked out once per triangle.
-// With reciprocal, the plane interpolated is that of 1/z, and a fragment's depth is one over
-// it: view z is not linear on the screen, but 1/z is (perspective-correct depth).
-struct TrianglePlane {
-    dvec2 p0, e1, e2;
-    double area = 0.0, betaDx = 0.0, gammaDx = 0.0;
-    float z0 = 0.0f, dz1 = 0.0f, dz2 = 0.0f;
-
-    TrianglePlane(const Projection& projection, std::size_t t, bool reciprocal) {
-        const ScreenTriangle& tri = projection.triangles[t];
-        const DrawProjection& draw = projection.draws[tri.draw];
-        const std::array<dvec2, 3> p = screenVertices(projection, tri);
-        const auto depthOf = [&](std::uint32_t v) {
-            return reciprocal ? 1.0f / draw.depth[v] : draw.depth[v];
-        };
-        z0 = depthOf(tri.v[0]);
-        dz1 = depthOf(tri.v[1]) - z0;
-        dz2 = depthOf(tri.v[2]) - z0;
-        // Barycentrics of a sample s: s = P1 + beta (P2 - P1) + gamma (P3 - P1), so
-        // beta = (s - P1) x (P3 - P1) / A and gamma = (P2 - P1) x (s - P1) / A, where
-        // A = (P2 - P1) x (P3 - P1). Both are linear in x along a scanline.
-        p0 = p[0];
-        e1 = p[1] - p[0];
-        e2 = p[2] - p[0];
-        area = e1.x * e2.y - e1.y * e2.x;
-        betaDx = e2.y / area;
-        gammaDx = -e1.y / area;
-    }
-
-    // The barycentrics of the sample of pixel (xBegin, y), (xBegin + offset, y + offset),
-    // where a span starts.
-    void spanStart(std::int32_t xBegin, std::int32_t y, double offset, double& beta0,
-                   double& gamma0) const {
-        const dvec2 s0 = dvec2(xBegin + offset, y + offset) - p0;
-        beta0 = (s0.x * e2.y - s0.y * e2.x) / area;
-        gamma0 = (e1.x * s0.y - e1.y * s0.x) / area;
-    }
-    // Pixel i of a span starting at beta0, gamma0.
-    FragmentDepth fragment(double beta0, double gamma0, std::int32_t i, bool reciprocal) const {
-        FragmentDepth f;
-        f.beta = static_cast<float>(beta0 + double(i) * betaDx);
-        f.gamma = static_cast<float>(gamma0 + double(i) * gammaDx);
-        f.depth = z0 + f.beta * dz1 + f.gamma * dz2;
-        if (reciprocal) f.depth = 1.0f / f.depth;
-        return f;
-    }
-};
-
-// The rows of the buffers one span writes: the z-buffer's and the frame's, or those of the
-// band a thread tests a chunk in (testChunks). bary is null when no barycentrics are kept.
-struct Rows {
-    float* depth;
-    std::uint32_t* ids;
-    vec2* bary;
-};
-
-// The depth test of one span of triangle t.
-template <typename Probe>
-void testSpanOf(const Scene& scene, const TrianglePlane& setup, std::uint32_t id, const Span& span,
-                const Rows& rows, bool painted, Counts& counts, Probe& probe) {
-    const double offset = scene.rules.sampleOffset;
-    const bool winsOnTie = scene.conventions.depthWinsOnTie;
-    const bool rangeClip = scene.conventions.depthRangeClip;
-    const bool reciprocal = perspectiveDepth(scene);
-    double beta0 = 0.0, gamma0 = 0.0;
-    setup.spanStart(span.xBegin, span.y, offset, beta0, gamma0);
-    float* depthRow = rows.depth;
-    std::uint32_t* idRow = rows.ids;
-    vec2* baryRow = rows.bary;
-    const std::int32_t n = span.xEnd - span.xBegin;
-    counts.fragments += static_cast<std::size_t>(n);
-    if constexpr (!Probe::enabled) {
-        if (!rangeClip) {
-            counts.passed += testSpan(depthRow + span.xBegin, idRow + span.xBegin,
-                                      baryRow ? &baryRow[span.xBegin].x : nullptr, n, beta0,
-                                      setup.betaDx, gamma0, setup.gammaDx, setup.z0, setup.dz1,
-                                      setup.dz2, id, winsOnTie, reciprocal, painted);
-            return;
-        }
-    }
-    for (std::int32_t i = 0; i < n; ++i) {
-        const std::int32_t x = span.xBegin + i;
-        const FragmentDepth f = setup.fragment(beta0, gamma0, i, reciprocal);
-        const float beta = f.beta, gamma = f.gamma, z = f.depth;
-        if (rangeClip && !(z >= 0.0f && z <= 1.0f)) {  // per-pixel clipping (seed 001)
-            ++counts.outsideDepthRange;
-            RL_PROBE_HOOK(probe.onDepthTest(
-                {id, x, span.y, 1.0f - beta - gamma, beta, gamma, z, depthRow[x], false, true}));
-            continue;
-        }
-        const float stored = depthRow[x];
-        const bool pass = painted || z < stored || (winsOnTie && z == stored);
-        RL_PROBE_HOOK(
-            probe.onDepthTest({id, x, span.y, 1.0f - beta - gamma, beta, gamma, z, stored, pass}));
-        if (pass) {
-            depthRow[x] = z;
-            idRow[x] = id;
-            if (baryRow) baryRow[x] = vec2(beta, gamma);
-        }
-        counts.passed += pass ? 1 : 0;
-    }
-}
-
-// Every span in triangle order, the events in the order a recording probe expects.
-template <typename Probe>
-Counts testAll(const Scene& scene, const Projection& projection, const ScanConversion& scan,
-               DepthTest& out, Probe& probe) {
-    Counts counts;
-    for (std::size_t t = 0; t < projection.triangles.size(); ++t) {
-        const std::uint32_t first = scan.spanStart[t];
-        const std::uint32_t last = scan.spanStart[t + 1];
-        if (first == last) continue;
-        const TrianglePlane setup(projection, t, perspectiveDepth(scene));
-        for (std::uint32_t k = first; k < last; ++k) {
-            const std::int32_t y = scan.spans[k].y;
-            testSpanOf(scene, setup, static_cast<std::uint32_t>(t), scan.spans[k],
-                       Rows{out.depth.row(y), out.triangle.row(y), out.barycentric.row(y)},
-                       out.painted, counts, probe);
-        }
-    }
-    return counts;
-}
-
-// Every span, sorted by chunk of rows (parallel.h) and within a chunk in triangle order: the
-// spans of chunk c are entries[first[c] .. first[c + 1]).
-struct Entry {
-    std::uint32_t triangle;
-    Span span;  // a copy: the chunk's spans are then read in order, not gathered
-};
-struct SpansByChunk {
-    std::vector<Entry> entries;
-    std::vector<std::uint32_t> first;
-};
-
-// A counting sort shared out between the threads: each takes a contiguous range of
-// triangles, counts its spans per chunk, and writes them where the ranges before its own
-// end, so that triangle order is kept within every chunk.
-SpansByChunk sortByChunk(const ScanConversion& scan, int chunks, int threads) {
-    const std::size_t triangles = scan.triangleCount();
-    // Below some thousands of spans, starting threads costs more than it saves.
-    const int parts = scan.spans.size() < 32768 ? 1 : std::max(1, threads);
-    const auto chunkCount = static_cast<std::size_t>(chunks);
-    std::vector<std::vector<std::uint32_t>> next(static_cast<std::size_t>(parts));
-    runParts(parts, [&](int part) {
-        std::vector<std::uint32_t> counts(chunkCount, 0);  // on the thread's own
-        const std::uint32_t begin = scan.spanStart[rangeBegin(triangles, part, parts)];
-        const std::uint32_t end = scan.spanStart[rangeBegin(triangles, part + 1, parts)];
-        for (std::uint32_t k = begin; k < end; ++k)
-            ++counts[static_cast<std::size_t>(scan.spans[k].y / kRowChunk)];
-        next[static_cast<std::size_t>(part)] = std::move(counts);
-    });
-    SpansByChunk out;
-    out.first.assign(chunkCount + 1, 0);
-    std::uint32_t at = 0;
-    for (std::size_t c = 0; c < chunkCount; ++c) {
-        out.first[c] = at;
-        for (auto& counts : next) {  // counts become where each range's spans go
-            const std::uint32_t n = counts[c];
-            counts[c] = at;
-            at += n;
-        }
-    }
-    out.first[chunkCount] = at;
-    out.entries.resize(at);
-    runParts(parts, [&](int part) {
-        std::vector<std::uint32_t>& where = next[static_cast<std::size_t>(part)];
-        for (std::size_t t = rangeBegin(triangles, part, parts),
-                         last = rangeBegin(triangles, part + 1, parts);
-             t < last; ++t) {
-            for (std::uint32_t k = scan.spanStart[t]; k < scan.spanStart[t + 1]; ++k) {
-                const Span& span = scan.spans[k];
-                const auto c = static_cast<std::size_t>(span.y / kRowChunk);
-                out.entries[where[c]++] = {static_cast<std::uint32_t>(t), span};
-            }
-        }
-    });
-    return out;
-}
-
-// The rows one thread owns, chunk by chunk (parallel.h): the chunk's buffers are cleared,
-// then its spans tested in triangle order, so that each chunk's pixels stay in the cache
-// while its triangles are drawn. Every pixel sees the same fragments in the same order as
-// in testAll, so the buffers are the same bits. When the z-buffer is not kept
-// (DepthTest::depthKept), the chunk's depths are a band of kRowChunk rows of the thread's
-// own (61 KB at 1920 pixels wide), cleared where the chunk's spans fall: it stays in L2.
-// With a sink (DepthTestStage::runBands) the ids and barycentrics are in the band too, and
-// each chunk is handed to the sink once tested, before the next one overwrites it.
-Counts testChunks(const Scene& scene, const Projection& projection, const SpansByChunk& sorted,
-                  DepthTest& out, int part, int parts, const std::vector<ColumnRange>& previous,
-                  const BandSink* sink, std::atomic<int>& nextChunk) {
-    Counts counts;
-    NullProbe probe;
-    const int chunks = (scene.height + kRowChunk - 1) / kRowChunk;
-    const std::vector<Entry>& entries = sorted.entries;
-    const std::vector<std::uint32_t>& start = sorted.first;
-    const float clear = scene.conventions.depthClear;
-    const auto width = static_cast<std::size_t>(scene.width);
-    const std::size_t bandPixels = static_cast<std::size_t>(kRowChunk) * width;
-    // The thread's band, cleared below where it is used.
-    std::unique_ptr<float[]> depthBand;
-    std::unique_ptr<std::uint32_t[]> idBand;
-    std::unique_ptr<vec2[]> baryBand;
-    if (!out.depthKept) depthBand = std::make_unique_for_overwrite<float[]>(bandPixels);
-    if (sink) {
-        idBand = std::make_unique_for_overwrite<std::uint32_t[]>(bandPixels);
-        if (out.barycentricsKept) baryBand = std::make_unique_for_overwrite<vec2[]>(bandPixels);
-    }
-    // The first row of chunk rows from y0 on, in each buffer; the rows follow it, width apart.
-    const auto chunkRows = [&](int y0) {
-        Rows rows;
-        rows.depth = out.depthKept ? out.depth.row(y0) : depthBand.get();
-        rows.ids = sink ? idBand.get() : out.triangle.row(y0);
-        rows.bary = !out.barycentricsKept ? nullptr
-                    : sink                ? baryBand.get()
-                                          : out.barycentric.row(y0);
-        return rows;
-    };
-    const auto rowOf = [width](const Rows& first, int dy) {
-        const std::size_t offset = static_cast<std::size_t>(dy) * width;
-        return Rows{first.depth + offset, first.ids + offset,
-                    first.bary ? first.bary + offset : nullptr};
-    };
-    // In bands, each chunk goes to the next thread free to take it (nextChunk): a thread that
-    // starts late (a virtual machine's core can take milliseconds to wake) holds nothing up,
-    // the others take its share. Tested and shaded by one thread, a chunk is the same bits
-    // whichever thread that is. Otherwise chunk c is thread c mod parts's, as in shading.
-    const auto nextOf = [&](int c) {
-        return sink ? nextChunk.fetch_add(1, std::memory_order_relaxed) : c + parts;
-    };
-    for (int c = sink ? nextOf(0) : part; c < chunks; c = nextOf(c)) {
-        const int y0 = c * kRowChunk;
-        const int y1 = std::min(scene.height, y0 + kRowChunk);
-        const Rows first = chunkRows(y0);
-        ColumnRange touched{scene.width, 0};
-        for (std::uint32_t e = start[c]; e < start[c + 1]; ++e) {
-            const Span& span = entries[e].span;
-            touched.begin = std::min(touched.begin, span.xBegin);
-            touched.end = std::max(touched.end, span.xEnd);
-        }
-        // Clear what the previous frame wrote (everything when that is not known); a band,
-        // where this chunk's spans fall.
-        const ColumnRange dirty =
-            previous.empty() ? ColumnRange{0, scene.width} : previous[static_cast<std::size_t>(c)];
-        const ColumnRange depthDirty = out.depthKept ? dirty : touched;
-        const ColumnRange idDirty = sink ? touched : dirty;
-        for (int y = y0; y < y1; ++y) {
-            const Rows rows = rowOf(first, y - y0);
-            if (depthDirty.begin < depthDirty.end)
-                fillFloats(rows.depth + depthDirty.begin,
-                           static_cast<std::size_t>(depthDirty.end - depthDirty.begin), clear);
-            if (idDirty.begin >= idDirty.end) continue;
-            const auto n = static_cast<std::size_t>(idDirty.end - idDirty.begin);
-            static_assert(kNoTriangle == ~std::uint32_t{0}, "cleared byte by byte");
-            std::memset(rows.ids + idDirty.begin, 0xff, n * sizeof(std::uint32_t));
-            // Barycentrics are read only where a triangle won, so any value does; but
-            // zeroing the frame's with memset brings their lines into the cache ahead of the
-            // spans' stores (full-screen sphere, Gouraud, 1 thread: depth test 2.5-2.9 ->
-            // 2.2 ms). A band's are in the cache already.
-            if (rows.bary && !sink)
-                std::memset(static_cast<void*>(rows.bary + idDirty.begin), 0, n * sizeof(vec2));
-        }
-        out.touched[static_cast<std::size_t>(c)] =
-            touched.begin < touched.end ? touched : ColumnRange{};
-        std::uint32_t current = kNoTriangle;
-        std::optional<TrianglePlane> setup;
-        for (std::uint32_t e = start[c]; e < start[c + 1]; ++e) {
-            const Entry& entry = entries[e];
-            if (entry.triangle != current) {
-                current = entry.triangle;
-                setup.emplace(projection, current, perspectiveDepth(scene));
-            }
-            testSpanOf(scene, *setup, current, entry.span, rowOf(first, entry.span.y - y0),
-                       out.painted, counts, probe);
-        }
-        if (sink) {
-            (*sink)(TestedBand{part, y0, y1, out.touched[static_cast<std::size_t>(c)], first.ids,
-                               first.bary, width});
-            continue;
-        }
-        if (!out.visible.empty() && touched.begin < touched.end) {
-            // The triangles that kept a pixel of this chunk, a run of one id at a time. Two
-            // threads may mark the same triangle: relaxed atomic stores of the same value.
-            for (int y = y0; y < y1; ++y) {
-                const std::uint32_t* ids = out.triangle.row(y);
-                for (int x = touched.begin; x < touched.end;) {
-                    const std::uint32_t t = ids[x];
-                    if (t != kNoTriangle)
-                        std::atomic_ref<std::uint8_t>(out.visible[t])
-                            .store(1, std::memory_order_relaxed);
-                    x = runEnd(ids, x + 1, touched.end, t);
-                }
-            }
-        }
-    }
-    return counts;
-}
-
-}  // namespace
-
-// Sixteen ids at a time (their differences from t ORed together: one AVX-512 operation, two
-// AVX2 or four SSE ones), then one at a time within the first sixteen that differ.
-RL_MULTIVERSION int runEnd(const std::uint32_t* ids, int from, int limit, std::uint32_t t) {
-    typedef std::uint32_t Ids __attribute__((vector_size(64)));
-    typedef std::uint64_t Words __attribute__((vector_size(64)));
-    typedef std::uint64_t Words4 __attribute__((vector_size(32)));
-    typedef std::uint64_t Words2 __attribute__((vector_size(16)));
-    const Ids same = Ids{} + t;
-    int end = from;
-    while (end + 16 <= limit) {
-        Ids v;
-        std::memcpy(&v, ids + end, sizeof v);
-        const Words differ = reinterpret_cast<Words>(v ^ same);
-        const Words4 half = __builtin_shufflevector(differ, differ, 0, 1, 2, 3) |
-                            __builtin_shufflevector(differ, differ, 4, 5, 6, 7);
-        const Words2 quarter =
-            __builtin_shufflevector(half, half, 0, 1) | __builtin_shufflevector(half, half, 2, 3);
-        if (quarter[0] | quarter[1]) break;
-        end += 16;
-    }
-    while (end < limit && ids[end] == t) ++end;
-    return end;
-}
-
 bool perspectiveDepth(const Scene& scene) {
     return scene.rules.interpolation == RasterRules::Interpolation::PerspectiveCorrect &&
            scene.conventions.depth == DepthSource::ViewZ;
 }
 
-FragmentDepth fragmentDepth(const Scene& scene, const Projection& projection, std::uint32_t t,
-                            std::int32_t y, std::int32_t xBegin, std::int32_t x) {
-    const bool reciprocal = perspectiveDepth(scene);
-    const TrianglePlane setup(projection, t, reciprocal);
-    double beta0 = 0.0, gamma0 = 0.0;
-    setup.spanStart(xBegin, y, scene.rules.sampleOffset, beta0, gamma0);
-    return setup.fragment(beta0, gamma0, x - xBegin, reciprocal);
+TrianglePlane::TrianglePlane(const Projection& projection, std::size_t t, bool inverse)
+    : reciprocal(inverse) {
+    const ScreenTriangle& tri = projection.triangles[t];
+    const DrawProjection& draw = projection.draws[tri.draw];
+    const std::array<dvec2, 3> p = screenVertices(projection, tri);
+    const auto depthOf = [&](std::uint32_t v) {
+        return reciprocal ? 1.0f / draw.depth[v] : draw.depth[v];
+    };
+    z0 = depthOf(tri.v[0]);
+    dz1 = depthOf(tri.v[1]) - z0;
+    dz2 = depthOf(tri.v[2]) - z0;
+    p0 = p[0];
+    e1 = p[1] - p[0];
+    e2 = p[2] - p[0];
+    area = e1.x * e2.y - e1.y * e2.x;
+    betaDx = e2.y / area;
+    gammaDx = -e1.y / area;
 }
 
-namespace {
+void TrianglePlane::spanStart(std::int32_t xBegin, std::int32_t y, double offset, double& beta0,
+                              double& gamma0) const {
+    const dvec2 s0 = dvec2(xBegin + offset, y + offset) - p0;
+    beta0 = (s0.x * e2.y - s0.y * e2.x) / area;
+    gamma0 = (e1.x * s0.y - e1.y * s0.x) / area;
+}
 
-// The depth test: on one thread in triangle order when a probe records, otherwise chunk by
-// chunk on `threads` threads (testChunks), each chunk handed to sink when one is given.
+FragmentDepth fragmentDepth(const Scene& scene, const Projection& projection, std::uint32_t t,
+                            std::int32_t y, std::int32_t xBegin, std::int32_t x) {
+    const TrianglePlane plane(projection, t, perspectiveDepth(scene));
+    double beta0 = 0.0, gamma0 = 0.0;
+    plane.spanStart(xBegin, y, scene.rules.sampleOffset, beta0, gamma0);
+    return plane.fragment(beta0, gamma0, x - xBegin);
+}
+
 template <typename Probe>
-DepthTest test(const Scene& scene, const Projection& projection, const ScanConversion& scan,
-               Probe& probe, int threads, DepthTest* recycled, bool keepDepth,
-               const BandSink* sink) {
-    DepthTest out;
-    const float clear = scene.conventions.depthClear;
-    const int chunks = (scene.height + kRowChunk - 1) / kRowChunk;
-    // A recording probe's frame keeps every buffer (its views read them).
-    out.depthKept = Probe::enabled || (keepDepth && !sink);
-    out.fragmentsKept = Probe::enabled || !sink;
-    std::vector<ColumnRange> previous;  // what the recycled buffers hold besides the clear value
-    if (recycled && out.fragmentsKept) {
-        // When this frame keeps its z-buffer and the recycled one did not, nothing in it is
-        // known: everything is cleared.
-        if (recycled->triangle.width() == scene.width &&
-            recycled->triangle.height() == scene.height && recycled->clearedTo == clear &&
-            (recycled->depthKept || !out.depthKept) &&
-            recycled->touched.size() == static_cast<std::size_t>(chunks))
-            previous = std::move(recycled->touched);
-        if (out.depthKept) out.depth = std::move(recycled->depth);
-        out.triangle = std::move(recycled->triangle);
-        out.barycentric = std::move(recycled->barycentric);
-        out.visible = std::move(recycled->visible);
-    }
-    out.clearedTo = clear;
-    out.painted = paintersAlgorithm(scene);
-    // Flat shading reads no barycentrics (one colour per triangle): when every draw is flat
-    // they are not written. A recording probe's frame keeps them for its log.
-    out.barycentricsKept = Probe::enabled || scene.draws.empty();
-    for (const Draw& draw : scene.draws)
-        out.barycentricsKept = out.barycentricsKept || !litPerTriangle(draw.shading);
-    std::vector<Counts> counts;
-    if constexpr (Probe::enabled) {
-        // A recording probe sees the events in triangle order: one thread.
-        out.depth.reset(scene.width, scene.height, scene.conventions.depthClear);
-        out.triangle.reset(scene.width, scene.height, kNoTriangle);
-        out.barycentric.reset(scene.width, scene.height, vec2(0.0f));
-        counts.push_back(testAll(scene, projection, scan, out, probe));
-    } else {
-        // Each thread clears its own rows (testChunks).
-        if (out.depthKept) out.depth.resize(scene.width, scene.height);
-        if (out.fragmentsKept) {
-            out.triangle.resize(scene.width, scene.height);
-            out.barycentric.resize(scene.width, scene.height);
+void testSpanPixels(const Scene& scene, const TrianglePlane& plane, std::uint32_t id,
+                    const Span& span, const DepthRows& rows, bool painted, DepthCounts& counts,
+                    Probe& probe) {
+    const bool winsOnTie = scene.conventions.depthWinsOnTie;
+    const bool rangeClip = scene.conventions.depthRangeClip;
+    double beta0 = 0.0, gamma0 = 0.0;
+    plane.spanStart(span.xBegin, span.y, scene.rules.sampleOffset, beta0, gamma0);
+    counts.fragments += static_cast<std::size_t>(span.xEnd - span.xBegin);
+    for (std::int32_t x = span.xBegin; x < span.xEnd; ++x) {
+        const FragmentDepth f = plane.fragment(beta0, gamma0, x - span.xBegin);
+        const float alpha = 1.0f - f.beta - f.gamma;
+        if (rangeClip && !(f.depth >= 0.0f && f.depth <= 1.0f)) {  // per-pixel clipping (seed 001)
+            ++counts.outsideDepthRange;
+            RL_PROBE_HOOK(probe.onDepthTest(
+                {id, x, span.y, alpha, f.beta, f.gamma, f.depth, rows.depth[x], false, true}));
+            continue;
         }
-        out.touched.assign(static_cast<std::size_t>(chunks), ColumnRange{});
-        bool perTriangle = false;
-        for (const Draw& draw : scene.draws)
-            perTriangle = perTriangle || draw.shading != ShadingModel::Phong;
-        if (perTriangle && !sink)
-            out.visible.assign(projection.triangles.size(), 0);
-        else
-            out.visible.clear();
-        const int parts = std::max(1, std::min(threads, scene.height));
-        counts.resize(static_cast<std::size_t>(parts));
-        const SpansByChunk sorted = sortByChunk(scan, chunks, threads);
-        std::atomic<int> nextChunk{0};
-        runParts(parts, [&](int part) {
-            counts[static_cast<std::size_t>(part)] =
-                testChunks(scene, projection, sorted, out, part, parts, previous, sink, nextChunk);
-        });
+        // The nearer fragment wins (on a tie, the one drawn first, unless the convention says
+        // otherwise); the painter's algorithm writes every fragment.
+        const float stored = rows.depth[x];
+        const bool pass = painted || f.depth < stored || (winsOnTie && f.depth == stored);
+        RL_PROBE_HOOK(
+            probe.onDepthTest({id, x, span.y, alpha, f.beta, f.gamma, f.depth, stored, pass}));
+        if (pass) {
+            rows.depth[x] = f.depth;
+            rows.ids[x] = id;
+            if (rows.bary) rows.bary[x] = vec2(f.beta, f.gamma);
+        }
+        counts.passed += pass ? 1 : 0;
     }
-    for (const Counts& c : counts) {
-        out.fragments += c.fragments;
-        out.passed += c.passed;
-        out.outsideDepthRange += c.outsideDepthRange;
+}
+
+template <typename Probe>
+DepthTest DepthTestStage::run(const DepthTestInput& in, Probe& probe) const {
+    const Scene& scene = in.scene;
+    DepthTest out;
+    out.clearedTo = scene.conventions.depthClear;
+    out.painted = paintersAlgorithm(scene);
+    out.depth.reset(scene.width, scene.height, scene.conventions.depthClear);
+    out.triangle.reset(scene.width, scene.height, kNoTriangle);
+    out.barycentric.reset(scene.width, scene.height, vec2(0.0f));
+    // Every span in triangle order.
+    DepthCounts counts;
+    const bool reciprocal = perspectiveDepth(scene);
+    for (std::size_t t = 0; t < in.projection.triangles.size(); ++t) {
+        const std::uint32_t first = in.scan.spanStart[t], last = in.scan.spanStart[t + 1];
+        if (first == last) continue;
+        const TrianglePlane plane(in.projection, t, reciprocal);
+        for (std::uint32_t k = first; k < last; ++k) {
+            const std::int32_t y = in.scan.spans[k].y;
+            testSpanPixels(scene, plane, static_cast<std::uint32_t>(t), in.scan.spans[k],
+                           DepthRows{out.depth.row(y), out.triangle.row(y), out.barycentric.row(y)},
+                           out.painted, counts, probe);
+        }
     }
+    out.fragments = counts.fragments;
+    out.passed = counts.passed;
+    out.outsideDepthRange = counts.outsideDepthRange;
     out.rejected = out.fragments - out.passed - out.outsideDepthRange;
     return out;
 }
 
-}  // namespace
-
-template <typename Probe>
-DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
-                              const ScanConversion& scan, Probe& probe, int threads,
-                              DepthTest* recycled, bool keepDepth) const {
-    return test(scene, projection, scan, probe, threads, recycled, keepDepth, nullptr);
-}
-
-DepthTest DepthTestStage::runBands(const Scene& scene, const Projection& projection,
-                                   const ScanConversion& scan, int threads,
-                                   const BandSink& sink) const {
+DepthTest DepthTestStage::run(const DepthTestInput& in) const {
     NullProbe probe;
-    return test(scene, projection, scan, probe, threads, nullptr, false, &sink);
+    return run(in, probe);
 }
 
-DepthTest DepthTestStage::run(const Scene& scene, const Projection& projection,
-                              const ScanConversion& scan, int threads, DepthTest* recycled,
-                              bool keepDepth) const {
-    NullProbe probe;
-    return run(scene, projection, scan, probe, threads, recycled, keepDepth);
-}
-
-template DepthTest DepthTestStage::run<NullProbe>(const Scene&, const Projection&,
-                                                  const ScanConversion&, NullProbe&, int,
-                                                  DepthTest*, bool) const;
-template DepthTest DepthTestStage::run<RecordingProbe>(const Scene&, const Projection&,
-                                                       const ScanConversion&, RecordingProbe&, int,
-                                                       DepthTest*, bool) const;
-template DepthTest DepthTestStage::run<ReplayProbe>(const Scene&, const Projection&,
-                                                    const ScanConversion&, ReplayProbe&, int,
-                                                    DepthTest*, bool) const;
+template DepthTest DepthTestStage::run<NullProbe>(const DepthTestInput&, NullProbe&) const;
+template DepthTest DepthTestStage::run<RecordingProbe>(const DepthTestInput&,
+                                                       RecordingProbe&) const;
+template DepthTest DepthTestStage::run<ReplayProbe>(const DepthTestInput&, ReplayProbe&) const;
+template void testSpanPixels<NullProbe>(const Scene&, const TrianglePlane&, std::uint32_t,
+                                        const Span&, const DepthRows&, bool, DepthCounts&,
+                                        NullProbe&);
 
 }  // namespace rl

@@ -12,10 +12,11 @@
 // The buffer remembers, for each pixel, the winning triangle and its barycentrics, so
 // shading runs once per visible pixel: the image equals that of shading each fragment as
 // it passes, in triangle order, but no light is computed for fragments that are hidden.
+// The fast path (fast/depth_test_fast.h) tests chunks of rows on several threads, eight
+// pixels at a time.
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <limits>
 
 #include "image.h"
@@ -29,39 +30,35 @@ namespace rl {
 inline constexpr std::uint32_t kNoTriangle = std::numeric_limits<std::uint32_t>::max();
 
 struct DepthTest {
-    // The clear value where nothing was drawn. Only when depthKept: a caller that needs the
-    // image alone (RenderOptions::keepDepth false: the command line's render without
-    // --depth-output, painter shading or --explain-pixel, and bench without --keep-depth)
-    // lets each thread keep the depths of the band of rows it is testing, in its cache, and
-    // this stays empty.
+    // The z-buffer: the clear value where nothing was drawn. Empty when !depthKept (the fast
+    // path's frames that keep their image alone test each band of rows in a buffer of their
+    // own).
     Image<float> depth;
     bool depthKept = true;
-    // Whether triangle and barycentric are kept: not by a frame whose depth test and
-    // shading ran together (DepthTestStage::runBands), which keeps the image alone.
+    // Whether triangle and barycentric are kept: not by the fast path's frames whose depth
+    // test and shading ran together band by band.
     bool fragmentsKept = true;
     Image<std::uint32_t> triangle;  // index into Projection::triangles, or kNoTriangle
     // (beta, gamma) of the winning fragment, alpha = 1 - beta - gamma; meaningful only where
-    // triangle holds one (elsewhere, what an earlier frame in these buffers left), and only
-    // when barycentricsKept (not when every draw is flat: nothing reads them then).
+    // triangle holds one, and only when barycentricsKept (the fast path leaves them out when
+    // every draw is flat: nothing reads them then).
     Image<vec2> barycentric;
     bool barycentricsKept = true;
-    // The painter's algorithm (painter.h): no depth test, every fragment is written over what
-    // was there, so the buffer holds the depth of the last painted fragment, not the nearest.
+    // The painter's algorithm (painters_algorithm.h): no depth test, every fragment is written
+    // over what was there, so the buffer holds the depth of the last painted fragment.
     bool painted = false;
     std::size_t fragments = 0;          // tested
     std::size_t passed = 0;             // written (including those overwritten later)
     std::size_t rejected = 0;           // farther than (or as far as) what was stored
     std::size_t outsideDepthRange = 0;  // discarded: depth outside [0, 1] (seed 001)
-    // Per chunk of kRowChunk rows (parallel.h), the columns this frame's spans fell in: the
-    // only pixels that can differ from the cleared state. Empty when not tracked (a recording
-    // probe's frame): then every pixel may. The next frame that reuses these buffers clears
-    // only those columns (a small object on a large screen leaves most of it alone).
+    float clearedTo = 0.0f;             // the clear value of the untouched pixels
+
+    // What the fast path keeps for the next frame and for shading (empty from the stage):
+    // per chunk of kRowChunk rows (parallel.h), the columns this frame's spans fell in, the
+    // only pixels that can differ from the cleared state (the next frame that reuses these
+    // buffers clears only those); and per projected triangle, 1 where it holds a pixel at the
+    // end (the triangles flat and Gouraud shading light), when some draw is flat or Gouraud.
     std::vector<ColumnRange> touched;
-    float clearedTo = 0.0f;  // the clear value of the untouched pixels
-    // Per projected triangle, 1 where it holds a pixel at the end (won the depth test
-    // somewhere and kept it): the triangles flat and Gouraud shading evaluate. Worked out
-    // chunk by chunk while the chunk is in the cache, only when some draw is flat or
-    // Gouraud and nothing records; empty otherwise.
     std::vector<std::uint8_t> visible;
 
     // The pixels a triangle won: counted where triangle is kept, otherwise covered.
@@ -69,58 +66,81 @@ struct DepthTest {
     std::size_t covered = 0;  // only when !fragmentsKept: counted by the shading of the bands
 };
 
-// One chunk of rows (parallel.h) just depth-tested by thread `part` in a band of its own
-// (DepthTestStage::runBands): row y's winning ids are ids + (y - y0) * stride, its
-// barycentrics bary + (y - y0) * stride (null when none are kept). Valid until the thread's
-// next chunk; only columns holds ids (the columns the chunk's spans fell in).
-struct TestedBand {
-    int part = 0;
-    int y0 = 0, y1 = 0;
-    ColumnRange columns;
-    const std::uint32_t* ids = nullptr;
-    const vec2* bary = nullptr;
-    std::size_t stride = 0;
+struct DepthTestInput {
+    const Scene& scene;
+    const Projection& projection;
+    const ScanConversion& scan;
 };
-using BandSink = std::function<void(const TestedBand&)>;
-
-// The end of the run of pixels from `from` on whose triangle is t (at most `limit`): sixteen
-// ids (a cache line's worth) checked at once while they can be. Shading and the depth test's
-// visible triangles walk every row this way (multiversioned, like the kernels).
-int runEnd(const std::uint32_t* ids, int from, int limit, std::uint32_t t);
 
 class DepthTestStage {
 public:
-    // threads: the rows are shared out between them (parallel.h); the result does not depend
-    // on their number. recycled: an earlier frame's buffers, whose memory is reused.
-    // keepDepth: false leaves DepthTest::depth empty (a recording probe keeps it anyway).
+    // Every span of every triangle in order, pixel by pixel, into a full z-buffer. A probe
+    // (probe.h) hears of every depth test, with both depths and the verdict.
+    DepthTest run(const DepthTestInput& in) const;
     template <typename Probe>
-    DepthTest run(const Scene& scene, const Projection& projection, const ScanConversion& scan,
-                  Probe& probe, int threads = 1, DepthTest* recycled = nullptr,
-                  bool keepDepth = true) const;
-    DepthTest run(const Scene& scene, const Projection& projection, const ScanConversion& scan,
-                  int threads = 1, DepthTest* recycled = nullptr, bool keepDepth = true) const;
-    // The same test with nothing kept per pixel: each thread tests its chunks of rows in a band
-    // of its own (depths, ids and barycentrics: 184 KB at 1920 pixels wide, in its L2 cache)
-    // and hands each chunk to sink, on the same thread, before testing the next. The result
-    // has the counts and touched, no z-buffer, ids or barycentrics (fragmentsKept false), and
-    // covered left for the sink's owner to count.
-    DepthTest runBands(const Scene& scene, const Projection& projection, const ScanConversion& scan,
-                       int threads, const BandSink& sink) const;
+    DepthTest run(const DepthTestInput& in, Probe& probe) const;
 };
 
 // Whether the depth test interpolates 1/z rather than z: view z under perspective-correct
 // rules (1/z is linear on the screen; NDC z already is).
 bool perspectiveDepth(const Scene& scene);
 
-// One fragment as the depth test works it out: pixel x of the span that starts at pixel
-// xBegin on row y of projected triangle t. The barycentrics step along the span from its
-// first pixel, so xBegin must be where scan conversion starts the span for the bits to
-// agree.
+// One fragment as the depth test works it out.
 struct FragmentDepth {
     float beta = 0.0f, gamma = 0.0f;  // screen barycentrics, alpha = 1 - beta - gamma
     float depth = 0.0f;
 };
+
+// What the depth test of one triangle's spans needs, worked out once per triangle: the
+// screen barycentrics of a sample s, from s = P1 + beta (P2 - P1) + gamma (P3 - P1),
+// beta = (s - P1) x (P3 - P1) / A and gamma = (P2 - P1) x (s - P1) / A, A = (P2 - P1) x
+// (P3 - P1); both are linear in x along a scanline. With reciprocal, the plane interpolated
+// is that of 1/z, and a fragment's depth is one over it (view z is not linear on the screen,
+// 1/z is: perspective-correct depth).
+struct TrianglePlane {
+    dvec2 p0, e1, e2;
+    double area = 0.0, betaDx = 0.0, gammaDx = 0.0;
+    float z0 = 0.0f, dz1 = 0.0f, dz2 = 0.0f;
+    bool reciprocal = false;
+
+    TrianglePlane(const Projection& projection, std::size_t t, bool reciprocal);
+    // The barycentrics of the sample of pixel (xBegin, y), (xBegin + offset, y + offset),
+    // where a span starts.
+    void spanStart(std::int32_t xBegin, std::int32_t y, double offset, double& beta0,
+                   double& gamma0) const;
+    // Pixel i of a span whose first pixel has the barycentrics beta0, gamma0: they step by
+    // betaDx and gammaDx from there, so the bits depend on where the span starts.
+    FragmentDepth fragment(double beta0, double gamma0, std::int32_t i) const {
+        FragmentDepth f;
+        f.beta = static_cast<float>(beta0 + double(i) * betaDx);
+        f.gamma = static_cast<float>(gamma0 + double(i) * gammaDx);
+        f.depth = z0 + f.beta * dz1 + f.gamma * dz2;
+        if (reciprocal) f.depth = 1.0f / f.depth;
+        return f;
+    }
+};
+
+// Pixel x of the span that starts at pixel xBegin on row y of projected triangle t, as the
+// depth test works it out (xBegin must be where scan conversion starts the span for the
+// bits to agree).
 FragmentDepth fragmentDepth(const Scene& scene, const Projection& projection, std::uint32_t t,
                             std::int32_t y, std::int32_t xBegin, std::int32_t x);
+
+// The rows of the buffers one span writes (barycentrics null when none are kept).
+struct DepthRows {
+    float* depth;
+    std::uint32_t* ids;
+    vec2* bary;
+};
+struct DepthCounts {
+    std::size_t fragments = 0, passed = 0, outsideDepthRange = 0;
+};
+
+// The depth test of one span of triangle id, pixel by pixel, the lecture's inner loop:
+// rows are the span's row of each buffer; painted: the painter's algorithm (no test).
+template <typename Probe>
+void testSpanPixels(const Scene& scene, const TrianglePlane& plane, std::uint32_t id,
+                    const Span& span, const DepthRows& rows, bool painted, DepthCounts& counts,
+                    Probe& probe);
 
 }  // namespace rl

@@ -1,12 +1,11 @@
 // Stage 3, normals (seed 000): in view coordinates, each triangle's normal
 // (P2 - P1) x (P3 - P1), normalised, is added to the normals of its three vertices; then
 // every vertex normal is normalised. Normals given by the file (seed 001's `normal`) are
-// used instead, carried to view space by the inverse transpose of the model/view matrix. Degenerate
-// (zero-area) triangles have no normal and contribute nothing; they are counted, as are vertices
-// left without a normal. Skipped when the scene is not lit (nothing would read the normals);
-// a frame that keeps only its image works out only what each draw's shading reads
-// (NormalsScope::Read: no vertex normal for a flat draw, no triangle normal for a Gouraud
-// one or a Phong one with interpolated normals).
+// used instead, carried to view space by the inverse transpose of the model/view matrix.
+// Degenerate (zero-area) triangles have no normal and contribute nothing; they are counted,
+// as are vertices left without a normal. Skipped when the scene is not lit (nothing would
+// read the normals). The fast path (fast/normals_fast.h) can leave out what no draw's shading
+// reads (normalsRead).
 #pragma once
 
 #include <cstdint>
@@ -21,7 +20,7 @@ namespace rl {
 
 struct DrawNormals {
     // Unit length, or zero for a degenerate triangle or a vertex with no normal. Empty when
-    // left out (NormalsScope::Read).
+    // left out (by the fast path's NormalsScope::Read).
     std::vector<vec3> triangle;
     std::vector<vec3> vertex;
     std::size_t degenerateTriangles = 0;
@@ -34,7 +33,7 @@ struct Normals {
     std::string skipReason;
     std::vector<DrawNormals> draws;
     std::size_t degenerateTriangles = 0;
-    // Draws whose triangle normals, or vertex normals, were left out (NormalsScope::Read):
+    // Draws whose triangle normals, or vertex normals, were left out (fast/normals_fast.h):
     // their vectors are empty.
     std::size_t triangleNormalsLeftOut = 0, vertexNormalsLeftOut = 0;
 };
@@ -51,18 +50,25 @@ struct NormalsRead {
 };
 NormalsRead normalsRead(const Draw& draw);
 
-enum class NormalsScope : std::uint8_t {
-    All,   // every triangle's and every vertex's normal (the window's normals view draws them)
-    Read,  // only what each draw's shading reads (normalsRead); the image is the same
+// The triangle's unit normal (P2 - P1) x (P3 - P1) / |...| of three points given in
+// homogeneous coordinates (each divided by its w), into n; false when it is degenerate.
+bool unitNormal(const dvec4& q1, const dvec4& q2, const dvec4& q3, dvec3& n);
+
+struct NormalsInput {
+    const Scene& scene;
+    const ViewTransform& view;
 };
 
 class NormalsStage {
 public:
-    // threads: the triangles and vertices are shared out between them (parallel.h); each
-    // vertex still sums its triangles' normals in triangle order, so the result is the same
-    // bits for any number.
-    Normals run(const Scene& scene, const ViewTransform& view, int threads = 1,
-                NormalsScope scope = NormalsScope::All) const;
+    // The lecture's normals of every draw: every triangle's and every vertex's.
+    Normals run(const NormalsInput& in) const;
 };
+
+// The normals of one draw, given its view-space vertices: each triangle's normal, and each
+// vertex's, either the file's own (carried to view space by normalFromModel) or the
+// normalised sum of the normals of the triangles around it, added in triangle order.
+DrawNormals drawNormals(const Mesh& mesh, const std::vector<dvec4>& pView,
+                        const dmat3& normalFromModel);
 
 }  // namespace rl

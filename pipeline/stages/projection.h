@@ -27,6 +27,7 @@
 #include <array>
 #include <cstdint>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -153,15 +154,92 @@ dmat4 courseClipFromView(const CourseCamera& camera);
 // A draw's projection: its own matrix, else the course camera's, else the identity.
 dmat4 clipFromViewOf(const Scene& scene, const Draw& draw);
 
+struct ProjectionInput {
+    const Scene& scene;
+    const ViewTransform& view;
+};
+
 class ProjectionStage {
 public:
-    // threads: vertices and per-triangle verdicts are worked out on several; triangles are
-    // emitted on several when none needs clipping, else emitted and clipped in order on one
-    // (the result does not depend on their number).
-    // keepExact: whether pNdc and pScreenExact are kept (only the views read them; without
-    // them they are empty).
-    Projection run(const Scene& scene, const ViewTransform& view, Diagnostics& diagnostics,
-                   int threads = 1, bool keepExact = true) const;
+    // Steps 1 to 6 above for every draw, triangle by triangle in order; what was clipped,
+    // dropped or culled goes to diagnostics. Every array of DrawProjection is kept.
+    Projection run(const ProjectionInput& in, Diagnostics& diagnostics) const;
 };
+
+// Step 1 for vertices [first, end) of draw d: pView kept, pClip = clipFromView * pView
+// (proj.clipFromView set, the arrays sized). Returns the largest finite w among them.
+double toClipSpace(const ProjectionInput& in, std::size_t d, DrawProjection& proj,
+                   std::size_t first, std::size_t end);
+// The near plane w = near: fixed, or a fraction of the largest w, and always in front of
+// the eye.
+double nearPlaneW(const Scene& scene, double wMax);
+
+// Steps 2 to 6 for one draw: its vertices projected, its triangles clipped and emitted into
+// the projection. The stage runs it on every vertex and triangle in order; the fast path
+// (projection_fast.h) projects ranges of vertices and decides the triangles' fates on
+// several threads with the same pieces.
+class DrawProjector {
+public:
+    // keepExact: whether pNdc and pScreenExact are kept (only the views read them).
+    DrawProjector(const ProjectionInput& in, std::size_t d, Projection& out, bool keepExact);
+
+    // The per-vertex arrays sized for n vertices (new entries unset): each vertex is then
+    // projected, or marked as not projected.
+    void resizeVertices(std::size_t n);
+    // Vertex i to NDC and to pixels when it is in front of the near plane (or nothing is
+    // clipped); otherwise zeros, not in front.
+    void projectIfInFront(std::uint32_t i);
+    // Steps 2, 5 and 6 for mesh triangle t: its fate, counted, and its screen triangles.
+    void projectTriangle(std::size_t t);
+
+    // The pieces of projectTriangle.
+    // Hidden back faces (step 6): the winding of the surface as seen in view space, or 0 when
+    // nothing is left out.
+    int hiddenWinding() const { return m_hiddenWinding; }
+    bool facesAway(const std::array<std::uint32_t, 3>& tri) const;
+    // The planes that apply to the current triangle, in order, each as a signed distance
+    // (inside >= 0): the draw's clip planes, the near plane, the guard band's four.
+    const std::vector<std::size_t>& planes() const { return m_planes; }
+    void choosePlanes();
+    double distance(std::size_t plane, std::uint32_t v) const;
+    // A triangle wholly outside plane.
+    TriangleFate outsideFate(std::size_t plane) const;
+    // Whether cull drops a triangle: not counter-clockwise on the screen.
+    bool culled(const std::array<std::uint32_t, 3>& v) const;
+    // Whether a vertex's screen position and depth are finite.
+    bool finite(std::uint32_t v) const;
+
+private:
+    void projectVertex(std::uint32_t i);
+    std::uint32_t addClipVertex(std::size_t plane, std::uint32_t a, std::uint32_t b);
+    void classifyAcrossTheEye(const std::array<std::uint32_t, 3>& tri);
+    bool emitTriangle(std::size_t t, const std::array<std::uint32_t, 3>& v);
+    void clipTriangle(std::size_t t);
+
+    const Scene& m_scene;
+    const Draw& m_draw;
+    DrawProjection& m_proj;
+    Projection& m_out;
+    std::uint32_t m_index;
+    bool m_keepExact;
+    double m_grid, m_cell;      // the sub-pixel grid 2^bits, and its cell 1 / 2^bits
+    double m_gx, m_gy;          // the guard band in units of w
+    std::size_t m_nearPlane;    // the index of the near plane (after the clip planes)
+    bool m_nearActive;          // the near plane applies to the current triangle
+    bool m_guardActive = true;  // the guard band applies to the current triangle
+    double m_side = 1.0;        // the sign of the current triangle's w
+    int m_hiddenWinding = 0;
+    std::vector<std::size_t> m_planes;
+    std::vector<std::uint32_t> m_polygon, m_clipped;
+    // The plain divide may pull a vertex in to the guard band: 1 when it was, 2 once a drawn
+    // triangle counted it.
+    std::vector<std::uint8_t> m_pulledIn;
+};
+
+// Tells the user what was clipped, dropped, culled or drawn by the plain divide.
+void reportProjection(const Scene& scene, const Projection& projection, Diagnostics& diagnostics);
+
+// The counter of a projection that counts the triangles of a fate.
+std::size_t& tally(Projection& projection, TriangleFate fate);
 
 }  // namespace rl

@@ -5,7 +5,6 @@
 #include <tuple>
 #include <utility>
 
-#include "parallel.h"
 #include "probe.h"
 
 namespace rl {
@@ -221,8 +220,7 @@ TriangleSetup setupTriangle(const std::array<dvec2, 3>& p, const RasterRules& ru
     const std::int32_t yFirst = toRow(g.firstAtOrAfter(l.yTop));
     const std::int32_t yLast =
         toRow(g.topLeft ? g.firstAtOrAfter(l.yBottom) - 1 : g.lastAtOrBefore(l.yBottom));
-    // Every member given, so none is zeroed first (a 240-byte rep stos per triangle was the
-    // hottest instruction of scan conversion on the 1M sphere).
+    // Every member given, so that none is zeroed first only to be written again.
     return TriangleSetup{.sorted = sorted,
                          .order = order,
                          .orientation = area > 0 ? 1 : (area < 0 ? -1 : 0),
@@ -235,13 +233,11 @@ TriangleSetup setupTriangle(const std::array<dvec2, 3>& p, const RasterRules& ru
                          .yLast = yLast};
 }
 
-namespace {
-
-// Scan converts triangles [firstTriangle, endTriangle) into out (spanStart gets one entry per
-// triangle, the index of its first span in out.spans).
 template <typename Probe>
-void scanTriangles(const Scene& scene, const Projection& projection, std::size_t firstTriangle,
+void scanTriangles(const ScanConversionInput& in, std::size_t firstTriangle,
                    std::size_t endTriangle, ScanConversion& out, Probe& probe) {
+    const Scene& scene = in.scene;
+    const Projection& projection = in.projection;
     const std::int64_t width = scene.width;
     const std::int32_t height = scene.height;
     const Grid g = gridOf(scene.rules);
@@ -297,59 +293,26 @@ void scanTriangles(const Scene& scene, const Projection& projection, std::size_t
     }
 }
 
-}  // namespace
-
 template <typename Probe>
-ScanConversion ScanConversionStage::run(const Scene& scene, const Projection& projection,
-                                        Probe& probe, int threads) const {
+ScanConversion ScanConversionStage::run(const ScanConversionInput& in, Probe& probe) const {
     ScanConversion out;
-    const std::size_t count = projection.triangles.size();
-    // A recording probe sees the triangles in order: one thread. Otherwise each thread
-    // takes a contiguous range of triangles, and the ranges are put together in order.
-    const int parts = Probe::enabled || count < 1024 ? 1 : std::max(1, threads);
-    if (parts == 1) {
-        scanTriangles(scene, projection, 0, count, out, probe);
-        out.spanStart.push_back(static_cast<std::uint32_t>(out.spans.size()));
-        return out;
-    }
-    std::vector<ScanConversion> partial(static_cast<std::size_t>(parts));
-    runParts(parts, [&](int part) {
-        // Filled on the thread's own stack and moved out at the end: the counters and the
-        // vectors' ends, updated for every triangle, would otherwise share a cache line with
-        // the other threads' (1M-triangle sphere, 2 threads: scan conversion 56 -> 24 ms).
-        NullProbe none;
-        ScanConversion mine;
-        scanTriangles(scene, projection, rangeBegin(count, part, parts),
-                      rangeBegin(count, part + 1, parts), mine, none);
-        partial[static_cast<std::size_t>(part)] = std::move(mine);
-    });
-    std::size_t spans = 0;
-    for (const ScanConversion& p : partial) spans += p.spans.size();
-    out.spans.reserve(spans);
-    out.spanStart.reserve(count + 1);
-    for (const ScanConversion& p : partial) {
-        const auto offset = static_cast<std::uint32_t>(out.spans.size());
-        for (std::uint32_t start : p.spanStart) out.spanStart.push_back(start + offset);
-        out.spans.insert(out.spans.end(), p.spans.begin(), p.spans.end());
-        out.degenerate += p.degenerate;
-        out.offscreen += p.offscreen;
-        out.pixels += p.pixels;
-    }
+    scanTriangles(in, 0, in.projection.triangles.size(), out, probe);
     out.spanStart.push_back(static_cast<std::uint32_t>(out.spans.size()));
     return out;
 }
 
-ScanConversion ScanConversionStage::run(const Scene& scene, const Projection& projection,
-                                        int threads) const {
+ScanConversion ScanConversionStage::run(const ScanConversionInput& in) const {
     NullProbe probe;
-    return run(scene, projection, probe, threads);
+    return run(in, probe);
 }
 
-template ScanConversion ScanConversionStage::run<NullProbe>(const Scene&, const Projection&,
-                                                            NullProbe&, int) const;
-template ScanConversion ScanConversionStage::run<RecordingProbe>(const Scene&, const Projection&,
-                                                                 RecordingProbe&, int) const;
-template ScanConversion ScanConversionStage::run<ReplayProbe>(const Scene&, const Projection&,
-                                                              ReplayProbe&, int) const;
+template ScanConversion ScanConversionStage::run<NullProbe>(const ScanConversionInput&,
+                                                            NullProbe&) const;
+template ScanConversion ScanConversionStage::run<RecordingProbe>(const ScanConversionInput&,
+                                                                 RecordingProbe&) const;
+template ScanConversion ScanConversionStage::run<ReplayProbe>(const ScanConversionInput&,
+                                                              ReplayProbe&) const;
+template void scanTriangles<NullProbe>(const ScanConversionInput&, std::size_t, std::size_t,
+                                       ScanConversion&, NullProbe&);
 
 }  // namespace rl

@@ -101,18 +101,27 @@ struct ScanConversion {
     std::size_t triangleCount() const { return spanStart.empty() ? 0 : spanStart.size() - 1; }
 };
 
-// The recording probe's view of scan conversion (see probe.h).
-struct NullProbe;
+struct ScanConversionInput {
+    const Scene& scene;
+    const Projection& projection;
+};
 
 class ScanConversionStage {
 public:
+    // Every screen triangle in order, into its spans. A probe (probe.h) hears of each
+    // triangle's set-up, each span and each row walked.
+    ScanConversion run(const ScanConversionInput& in) const;
     template <typename Probe>
-    // threads: contiguous ranges of triangles are scanned at once, the spans put together
-    // in triangle order (the result does not depend on their number).
-    ScanConversion run(const Scene& scene, const Projection& projection, Probe& probe,
-                       int threads = 1) const;
-    ScanConversion run(const Scene& scene, const Projection& projection, int threads = 1) const;
+    ScanConversion run(const ScanConversionInput& in, Probe& probe) const;
 };
+
+// Scan converts triangles [first, end) of the projection into out: spanStart gets one entry
+// per triangle (the index of its first span in out.spans), spans, pixels and the counts
+// theirs. The stage runs it on every triangle; the fast path (scan_conversion_fast.h) on
+// ranges of them at once.
+template <typename Probe>
+void scanTriangles(const ScanConversionInput& in, std::size_t first, std::size_t end,
+                   ScanConversion& out, Probe& probe);
 
 // The three screen vertices of a screen triangle.
 inline std::array<dvec2, 3> screenVertices(const Projection& projection, const ScreenTriangle& t) {

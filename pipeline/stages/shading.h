@@ -21,19 +21,16 @@
 #include "image.h"
 #include "math.h"
 #include "normals.h"
+#include "phong.h"
 #include "projection.h"
 #include "scene.h"
 #include "view_transform.h"
 
 namespace rl {
 
-struct ShadingOptions {
-    bool keepNormals = false;  // also return the unit normal used at each pixel
-};
-
 struct Shading {
     Image<vec3> colour;  // unclamped, scene colour scale; background where empty
-    Image<vec3> normal;  // unit normal used per pixel (only with keepNormals)
+    Image<vec3> normal;  // unit normal used per pixel (the fast path keeps it when asked)
     std::size_t shadedPixels = 0;
     std::size_t phongEvaluations = 0;
     std::size_t flipped = 0;        // V.N < 0: the normal was turned toward the viewer
@@ -46,8 +43,8 @@ struct Shading {
     // frame that reuses these buffers writes the background only where it is missing.
     std::vector<ColumnRange> touched;
     vec3 background = vec3(0.0f);  // of the pixels outside touched
-    // 1 where a triangle won the pixel, 0 elsewhere: only when shaded in bands
-    // (ShadingStage::runWithDepthTest), whose depth test keeps no ids; empty otherwise.
+    // 1 where a triangle won the pixel, 0 elsewhere: only when the fast path shaded it in
+    // bands, whose depth test keeps no ids; empty otherwise.
     Image<std::uint8_t> covered;
 };
 
@@ -177,38 +174,113 @@ inline vec3 orientedNormal(const vec3& n, const vec3& pView, bool flip, bool* fl
     return -unit;
 }
 
-class ShadingStage {
-public:
-    // threads: the rows are shared out between them (parallel.h); the result does not depend
-    // on their number. recycled: an earlier frame's buffers, whose memory is reused.
-    template <typename Probe>
-    Shading run(const Scene& scene, const ViewTransform& view, const Normals& normals,
-                const Projection& projection, const DepthTest& depth, const ShadingOptions& options,
-                Probe& probe, int threads = 1, Shading* recycled = nullptr) const;
-    Shading run(const Scene& scene, const ViewTransform& view, const Normals& normals,
-                const Projection& projection, const DepthTest& depth,
-                const ShadingOptions& options = {}, int threads = 1,
-                Shading* recycled = nullptr) const;
-    // The depth test and shading together, for a frame that keeps its image alone: each
-    // thread shades a chunk of rows as soon as it has tested it, from the band it tested it
-    // in (DepthTestStage::runBands), so that the ids and barycentrics never leave its cache;
-    // only the colours (and covered) go to memory. The image is the same bits as run's after
-    // the depth test's; the depth test keeps no per-pixel buffer. Flat and Gouraud colours
-    // are worked out first, for every triangle with a fragment (shadeInBands: when they are
-    // few next to the pixels). depthShare: of the threads' time, the part spent testing.
-    std::pair<DepthTest, Shading> runWithDepthTest(const Scene& scene, const ViewTransform& view,
-                                                   const Normals& normals,
-                                                   const Projection& projection,
-                                                   const ScanConversion& scan, int threads,
-                                                   Shading* recycled, double& depthShare) const;
+struct ShadingInput {
+    const Scene& scene;
+    const ViewTransform& view;
+    const Normals& normals;
+    const Projection& projection;
+    const DepthTest& depth;
 };
 
-// Whether shading in bands (ShadingStage::runWithDepthTest) pays: the points its flat and
-// Gouraud draws light before the depth test (those of every triangle with a fragment, not
-// only those that keep a pixel: a flat draw's triangles, a Gouraud draw's vertices) are at
-// most one per kBandsFragmentsPerPoint fragments, counted by an upper bound that costs no
-// pass over the triangles.
-inline constexpr std::size_t kBandsFragmentsPerPoint = 4;
-bool shadeInBands(const Scene& scene, const Projection& projection, const ScanConversion& scan);
+class ShadingStage {
+public:
+    // Every pixel of the image: the background where no triangle won it, else the colour of
+    // its winning fragment by the draw's shading model, and the normal used there. A probe
+    // (probe.h) hears of every pixel shaded, with its lighting terms.
+    Shading run(const ShadingInput& in) const;
+    template <typename Probe>
+    Shading run(const ShadingInput& in, Probe& probe) const;
+};
+
+// The stage's pieces, which the fast path (fast/shading_fast.h) uses too ------------------
+
+// What shading reads about one draw's projected vertices, in float: one entry per vertex,
+// the draw's own and then those made by clipping (interpolated along the edge they came
+// from). Only what the draw's lighting and colour source read is filled.
+struct DrawVertices {
+    std::vector<vec3> pView;     // positions (x, y, z) / w
+    std::vector<vec3> nView;     // vertex normals (zero where a vertex has none)
+    std::vector<vec3> colour;    // object colours per vertex
+    std::vector<vec2> texcoord;  // texture coordinates
+    std::vector<double> invW;    // 1 / clip w, for perspective-correct weights (double: a
+                                 // float 1/w would overflow for |w| < 3e-39)
+};
+
+// How the points of a frame's draws are lit, by each draw's lighting model.
+class FrameLighting {
+public:
+    FrameLighting(const Scene& scene, const ViewTransform& view, const Normals& normals,
+                  const Projection& projection);
+
+    const Scene& scene() const { return m_scene; }
+    const ViewTransform& view() const { return m_view; }
+    const Normals& normals() const { return m_normals; }
+    const Projection& projection() const { return m_projection; }
+    const DrawVertices& vertices(std::size_t draw) const { return m_vertices[draw]; }
+    bool perspective() const { return m_perspective; }
+
+    // The light at point p with normal n of a draw whose object colour is objectColour.
+    PhongSample light(const Draw& draw, const vec3& objectColour, const vec3& p,
+                      const vec3& n) const;
+    // The screen weights of a triangle's pixel made perspective-correct when the rules say so.
+    void attributeWeights(const ScreenTriangle& tri, float& beta, float& gamma) const;
+    // The object colour at weights (beta, gamma) of a screen triangle.
+    vec3 colourAt(const ScreenTriangle& tri, float beta, float gamma) const;
+    // The normal to light a point with: the triangle's (flat normals) or interpolated; none
+    // for an unlit draw.
+    vec3 normalAt(const ScreenTriangle& tri, float beta, float gamma) const;
+    // Phong (seed 000): P' and N interpolated at the weights, then lit.
+    PhongSample pixelSample(const ScreenTriangle& tri, float beta, float gamma, vec3* point,
+                            vec3* normal) const;
+    // Flat (seed 004): one evaluation at the barycentre of the (unclipped) triangle, with the
+    // triangle's normal; the point and normal lit are given back when asked.
+    PhongSample flatSample(const ScreenTriangle& tri, vec3* point = nullptr,
+                           vec3* normal = nullptr) const;
+    // Gouraud: vertex v of draw d lit with its normal.
+    PhongSample vertexSample(std::size_t d, std::uint32_t v) const;
+
+private:
+    const Scene& m_scene;
+    const ViewTransform& m_view;
+    const Normals& m_normals;
+    const Projection& m_projection;
+    bool m_flip = true;
+    bool m_perspective = false;
+    std::vector<DrawVertices> m_vertices;
+};
+
+// Flat and Gouraud colours, lit before the pixels for the triangles that hold a pixel: per
+// mesh triangle of a flat draw, the colour and the normal used; per projected vertex of a
+// Gouraud draw, the colour (a vertex made by clipping takes the colour interpolated along
+// its edge, as if clipping had happened after vertex lighting).
+struct DrawColours {
+    std::vector<vec3> flatColour, flatNormal;  // per mesh triangle
+    std::vector<vec3> vertexColour;            // per projected vertex
+    std::vector<std::uint8_t> state;           // per entry: kNotNeeded, kNeeded or kLit
+    static constexpr std::uint8_t kNotNeeded = 0, kNeeded = 1, kLit = 2;
+};
+struct ColourTables {
+    std::vector<DrawColours> draws;
+};
+// Marks what the visible triangles (visible[t] != 0, per projected triangle) need lit.
+ColourTables neededColours(const FrameLighting& lighting, const std::vector<std::uint8_t>& visible);
+// Lights entry i of draw d's table (a flat triangle or a Gouraud vertex), counted in counts.
+void lightEntry(const FrameLighting& lighting, ColourTables& tables, std::size_t d, std::size_t i,
+                Shading& counts);
+// The colours of Gouraud vertices made by clipping, from those of their edge's ends.
+void colourClippedVertices(const FrameLighting& lighting, ColourTables& tables, Shading& counts);
+
+// The colour of a fragment of screen triangle t at screen weights (beta, gamma), at pixel
+// (x, y), by its draw's shading model (the tables hold the flat and Gouraud colours); counted
+// in counts. usedNormal, when given, receives the unit normal it was lit with.
+template <typename Probe>
+vec3 shadeFragment(const FrameLighting& lighting, const ColourTables& tables, std::uint32_t t,
+                   int x, int y, float beta, float gamma, vec3* usedNormal, Shading& counts,
+                   Probe& probe);
+
+// A lit point counted: evaluations, flipped normals, lights behind, no specular, no normal.
+void countSample(Shading& counts, const PhongSample& s);
+// The counts of several frames' parts added up.
+void addCounts(Shading& total, const Shading& part);
 
 }  // namespace rl

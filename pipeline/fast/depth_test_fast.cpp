@@ -1,0 +1,417 @@
+#include "depth_test_fast.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cstring>
+#include <memory>
+#include <optional>
+
+#include "multiversion.h"
+#include "parallel.h"
+#include "probe.h"
+
+// The vector helpers are always inlined into the kernels' builds, so no vector is passed
+// between functions: the warning about the AVX calling convention does not apply.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+namespace rl::fast {
+
+namespace {
+
+// testSpanPixels (stages/depth_test.h) for a span when no depth range clips, eight pixels at
+// a time with the compiler's vector extensions (GCC and Clang). A group of eight that passes
+// whole is written without reading what was stored (barycentrics only when baryRow is
+// given), one that fails whole is not written, and a mixed one is blended lane by lane and
+// stored back whole. The operations are TrianglePlane::fragment's, lane by lane, so the bits
+// are the same. Built for each of RL_MULTIVERSION's machines, the best one chosen when the
+// program starts. Returns the number of fragments that passed.
+typedef double Doubles8 __attribute__((vector_size(64)));
+typedef float Floats8 __attribute__((vector_size(32)));
+typedef std::int32_t Ints8 __attribute__((vector_size(32)));
+typedef std::int32_t Ints4 __attribute__((vector_size(16)));
+typedef std::uint64_t Words2 __attribute__((vector_size(16)));
+
+// Lanes where mask is set take a, the others b. Always inlined into testSpan's builds, so no
+// vector is passed between functions (the AVX calling-convention warning does not apply).
+inline __attribute__((always_inline)) Floats8 blend(const Ints8& mask, const Floats8& a,
+                                                    const Floats8& b) {
+    return reinterpret_cast<Floats8>((mask & reinterpret_cast<Ints8>(a)) |
+                                     (~mask & reinterpret_cast<Ints8>(b)));
+}
+
+RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, float* baryRow,
+                                     std::int32_t n, const TrianglePlane& plane, double beta0,
+                                     double gamma0, std::uint32_t id, bool winsOnTie,
+                                     bool painted) {
+    const double betaDx = plane.betaDx, gammaDx = plane.gammaDx;
+    const float z0 = plane.z0, dz1 = plane.dz1, dz2 = plane.dz2;
+    const bool reciprocal = plane.reciprocal;
+    std::int32_t i = 0;
+    const Ints8 tie = winsOnTie ? Ints8{} - 1 : Ints8{};
+    const Ints8 always = painted ? Ints8{} - 1 : Ints8{};  // the painter's: no depth test
+    const auto ids = static_cast<std::int32_t>(id);
+    const Doubles8 step = {0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0};
+    Ints8 passes = {};  // minus the number of passes, per lane
+    for (; i + 8 <= n; i += 8) {
+        // One vector of eight doubles: two AVX operations, or one AVX-512 operation.
+        const Doubles8 index = double(i) + step;
+        const Floats8 beta = __builtin_convertvector(beta0 + index * betaDx, Floats8);
+        const Floats8 gamma = __builtin_convertvector(gamma0 + index * gammaDx, Floats8);
+        Floats8 z = (z0 + beta * dz1) + gamma * dz2;
+        if (reciprocal) z = 1.0f / z;
+        Floats8 stored;
+        std::memcpy(&stored, depthRow + i, sizeof stored);
+        const Ints8 pass = (z < stored) | (tie & (z == stored)) | always;
+        passes += pass;
+        const Floats8 interleaved0 = __builtin_shufflevector(beta, gamma, 0, 8, 1, 9, 2, 10, 3, 11);
+        const Floats8 interleaved1 =
+            __builtin_shufflevector(beta, gamma, 4, 12, 5, 13, 6, 14, 7, 15);
+        // Whether every lane passes, or none: the halves folded into two 64-bit words.
+        const Ints4 passLow = __builtin_shufflevector(pass, pass, 0, 1, 2, 3);
+        const Ints4 passHigh = __builtin_shufflevector(pass, pass, 4, 5, 6, 7);
+        const Words2 both = reinterpret_cast<Words2>(passLow & passHigh);
+        const Words2 either = reinterpret_cast<Words2>(passLow | passHigh);
+        if ((both[0] & both[1]) == ~std::uint64_t{0}) {
+            // Every lane passes (no overdraw here): the stored values are not needed.
+            const Ints8 triangle = Ints8{} + ids;
+            std::memcpy(depthRow + i, &z, sizeof z);
+            std::memcpy(idRow + i, &triangle, sizeof triangle);
+            if (baryRow) {
+                std::memcpy(baryRow + 2 * i, &interleaved0, sizeof interleaved0);
+                std::memcpy(baryRow + 2 * i + 8, &interleaved1, sizeof interleaved1);
+            }
+            continue;
+        }
+        if ((either[0] | either[1]) == 0) continue;  // nothing to write
+        Ints8 storedId;
+        std::memcpy(&storedId, idRow + i, sizeof storedId);
+        const Floats8 depth = blend(pass, z, stored);
+        const Ints8 triangle = (pass & ids) | (~pass & storedId);
+        std::memcpy(depthRow + i, &depth, sizeof depth);
+        std::memcpy(idRow + i, &triangle, sizeof triangle);
+        if (!baryRow) continue;
+        Floats8 stored0, stored1;
+        std::memcpy(&stored0, baryRow + 2 * i, sizeof stored0);
+        std::memcpy(&stored1, baryRow + 2 * i + 8, sizeof stored1);
+        const Floats8 bary0 = blend(__builtin_shufflevector(pass, pass, 0, 0, 1, 1, 2, 2, 3, 3),
+                                    interleaved0, stored0);
+        const Floats8 bary1 = blend(__builtin_shufflevector(pass, pass, 4, 4, 5, 5, 6, 6, 7, 7),
+                                    interleaved1, stored1);
+        std::memcpy(baryRow + 2 * i, &bary0, sizeof bary0);
+        std::memcpy(baryRow + 2 * i + 8, &bary1, sizeof bary1);
+    }
+    std::size_t passed = 0;
+    for (int lane = 0; lane < 8; ++lane) passed += static_cast<std::size_t>(-passes[lane]);
+    for (; i < n; ++i) {  // the last pixels, one at a time as the stage tests them
+        const FragmentDepth f = plane.fragment(beta0, gamma0, i);
+        if (painted || f.depth < depthRow[i] || (winsOnTie && f.depth == depthRow[i])) {
+            depthRow[i] = f.depth;
+            idRow[i] = id;
+            if (baryRow) {
+                baryRow[2 * i] = f.beta;
+                baryRow[2 * i + 1] = f.gamma;
+            }
+            ++passed;
+        }
+    }
+    return passed;
+}
+
+// n copies of value from row on: the clear of a row's depths, with the widest stores the
+// machine has (std::fill_n is built for the baseline's 16-byte ones).
+RL_MULTIVERSION void fillFloats(float* row, std::size_t n, float value) {
+    for (std::size_t i = 0; i < n; ++i) row[i] = value;
+}
+
+// The depth test of one span: the vector kernel, or the stage's own loop where the depth
+// range clips (seed 001's per-pixel clipping, which the kernel does not do).
+void testSpanFast(const Scene& scene, const TrianglePlane& plane, std::uint32_t id,
+                  const Span& span, const DepthRows& rows, bool painted, DepthCounts& counts) {
+    if (scene.conventions.depthRangeClip) {
+        NullProbe none;
+        testSpanPixels(scene, plane, id, span, rows, painted, counts, none);
+        return;
+    }
+    double beta0 = 0.0, gamma0 = 0.0;
+    plane.spanStart(span.xBegin, span.y, scene.rules.sampleOffset, beta0, gamma0);
+    const std::int32_t n = span.xEnd - span.xBegin;
+    counts.fragments += static_cast<std::size_t>(n);
+    counts.passed += testSpan(rows.depth + span.xBegin, rows.ids + span.xBegin,
+                              rows.bary ? &rows.bary[span.xBegin].x : nullptr, n, plane, beta0,
+                              gamma0, id, scene.conventions.depthWinsOnTie, painted);
+}
+
+// Every span, sorted by chunk of rows (parallel.h) and within a chunk in triangle order: the
+// spans of chunk c are entries[first[c] .. first[c + 1]).
+struct Entry {
+    std::uint32_t triangle;
+    Span span;  // a copy: the chunk's spans are then read in order, not gathered
+};
+struct SpansByChunk {
+    std::vector<Entry> entries;
+    std::vector<std::uint32_t> first;
+};
+
+// A counting sort shared out between the threads: each takes a contiguous range of
+// triangles, counts its spans per chunk, and writes them where the ranges before its own
+// end, so that triangle order is kept within every chunk.
+SpansByChunk sortByChunk(const ScanConversion& scan, int chunks, int threads) {
+    const std::size_t triangles = scan.triangleCount();
+    // Below some thousands of spans, starting threads costs more than it saves.
+    const int parts = scan.spans.size() < 32768 ? 1 : std::max(1, threads);
+    const auto chunkCount = static_cast<std::size_t>(chunks);
+    std::vector<std::vector<std::uint32_t>> next(static_cast<std::size_t>(parts));
+    runParts(parts, [&](int part) {
+        std::vector<std::uint32_t> counts(chunkCount, 0);  // on the thread's own
+        const std::uint32_t begin = scan.spanStart[rangeBegin(triangles, part, parts)];
+        const std::uint32_t end = scan.spanStart[rangeBegin(triangles, part + 1, parts)];
+        for (std::uint32_t k = begin; k < end; ++k)
+            ++counts[static_cast<std::size_t>(scan.spans[k].y / kRowChunk)];
+        next[static_cast<std::size_t>(part)] = std::move(counts);
+    });
+    SpansByChunk out;
+    out.first.assign(chunkCount + 1, 0);
+    std::uint32_t at = 0;
+    for (std::size_t c = 0; c < chunkCount; ++c) {
+        out.first[c] = at;
+        for (auto& counts : next) {  // counts become where each range's spans go
+            const std::uint32_t n = counts[c];
+            counts[c] = at;
+            at += n;
+        }
+    }
+    out.first[chunkCount] = at;
+    out.entries.resize(at);
+    runParts(parts, [&](int part) {
+        std::vector<std::uint32_t>& where = next[static_cast<std::size_t>(part)];
+        for (std::size_t t = rangeBegin(triangles, part, parts),
+                         last = rangeBegin(triangles, part + 1, parts);
+             t < last; ++t) {
+            for (std::uint32_t k = scan.spanStart[t]; k < scan.spanStart[t + 1]; ++k) {
+                const Span& span = scan.spans[k];
+                const auto c = static_cast<std::size_t>(span.y / kRowChunk);
+                out.entries[where[c]++] = {static_cast<std::uint32_t>(t), span};
+            }
+        }
+    });
+    return out;
+}
+
+// The rows one thread owns, chunk by chunk (parallel.h): the chunk's buffers are cleared,
+// then its spans tested in triangle order, so that each chunk's pixels stay in the cache
+// while its triangles are drawn. Every pixel sees the same fragments in the same order as
+// in the stage, so the buffers are the same bits. When the z-buffer is not kept
+// (DepthTest::depthKept), the chunk's depths are a band of kRowChunk rows of the thread's
+// own (61 KB at 1920 pixels wide), cleared where the chunk's spans fall: it stays in L2.
+// With a sink (depthTestInBands) the ids and barycentrics are in the band too, and
+// each chunk is handed to the sink once tested, before the next one overwrites it.
+DepthCounts testChunks(const Scene& scene, const Projection& projection, const SpansByChunk& sorted,
+                       DepthTest& out, int part, int parts,
+                       const std::vector<ColumnRange>& previous, const BandSink* sink,
+                       std::atomic<int>& nextChunk) {
+    DepthCounts counts;
+    const int chunks = (scene.height + kRowChunk - 1) / kRowChunk;
+    const std::vector<Entry>& entries = sorted.entries;
+    const std::vector<std::uint32_t>& start = sorted.first;
+    const float clear = scene.conventions.depthClear;
+    const auto width = static_cast<std::size_t>(scene.width);
+    const std::size_t bandPixels = static_cast<std::size_t>(kRowChunk) * width;
+    // The thread's band, cleared below where it is used.
+    std::unique_ptr<float[]> depthBand;
+    std::unique_ptr<std::uint32_t[]> idBand;
+    std::unique_ptr<vec2[]> baryBand;
+    if (!out.depthKept) depthBand = std::make_unique_for_overwrite<float[]>(bandPixels);
+    if (sink) {
+        idBand = std::make_unique_for_overwrite<std::uint32_t[]>(bandPixels);
+        if (out.barycentricsKept) baryBand = std::make_unique_for_overwrite<vec2[]>(bandPixels);
+    }
+    // The first row of chunk rows from y0 on, in each buffer; the rows follow it, width apart.
+    const auto chunkRows = [&](int y0) {
+        DepthRows rows;
+        rows.depth = out.depthKept ? out.depth.row(y0) : depthBand.get();
+        rows.ids = sink ? idBand.get() : out.triangle.row(y0);
+        rows.bary = !out.barycentricsKept ? nullptr
+                    : sink                ? baryBand.get()
+                                          : out.barycentric.row(y0);
+        return rows;
+    };
+    const auto rowOf = [width](const DepthRows& first, int dy) {
+        const std::size_t offset = static_cast<std::size_t>(dy) * width;
+        return DepthRows{first.depth + offset, first.ids + offset,
+                         first.bary ? first.bary + offset : nullptr};
+    };
+    // In bands, each chunk goes to the next thread free to take it (nextChunk): a thread that
+    // starts late (a virtual machine's core can take milliseconds to wake) holds nothing up,
+    // the others take its share. Tested and shaded by one thread, a chunk is the same bits
+    // whichever thread that is. Otherwise chunk c is thread c mod parts's, as in shading.
+    const auto nextOf = [&](int c) {
+        return sink ? nextChunk.fetch_add(1, std::memory_order_relaxed) : c + parts;
+    };
+    for (int c = sink ? nextOf(0) : part; c < chunks; c = nextOf(c)) {
+        const int y0 = c * kRowChunk;
+        const int y1 = std::min(scene.height, y0 + kRowChunk);
+        const DepthRows first = chunkRows(y0);
+        ColumnRange touched{scene.width, 0};
+        for (std::uint32_t e = start[c]; e < start[c + 1]; ++e) {
+            const Span& span = entries[e].span;
+            touched.begin = std::min(touched.begin, span.xBegin);
+            touched.end = std::max(touched.end, span.xEnd);
+        }
+        // Clear what the previous frame wrote (everything when that is not known); a band,
+        // where this chunk's spans fall.
+        const ColumnRange dirty =
+            previous.empty() ? ColumnRange{0, scene.width} : previous[static_cast<std::size_t>(c)];
+        const ColumnRange depthDirty = out.depthKept ? dirty : touched;
+        const ColumnRange idDirty = sink ? touched : dirty;
+        for (int y = y0; y < y1; ++y) {
+            const DepthRows rows = rowOf(first, y - y0);
+            if (depthDirty.begin < depthDirty.end)
+                fillFloats(rows.depth + depthDirty.begin,
+                           static_cast<std::size_t>(depthDirty.end - depthDirty.begin), clear);
+            if (idDirty.begin >= idDirty.end) continue;
+            const auto n = static_cast<std::size_t>(idDirty.end - idDirty.begin);
+            static_assert(kNoTriangle == ~std::uint32_t{0}, "cleared byte by byte");
+            std::memset(rows.ids + idDirty.begin, 0xff, n * sizeof(std::uint32_t));
+            // Barycentrics are read only where a triangle won, so any value does; but
+            // zeroing the frame's brings their lines into the cache ahead of the spans'
+            // stores. A band's are in the cache already.
+            if (rows.bary && !sink)
+                std::memset(static_cast<void*>(rows.bary + idDirty.begin), 0, n * sizeof(vec2));
+        }
+        out.touched[static_cast<std::size_t>(c)] =
+            touched.begin < touched.end ? touched : ColumnRange{};
+        std::uint32_t current = kNoTriangle;
+        std::optional<TrianglePlane> plane;
+        for (std::uint32_t e = start[c]; e < start[c + 1]; ++e) {
+            const Entry& entry = entries[e];
+            if (entry.triangle != current) {
+                current = entry.triangle;
+                plane.emplace(projection, current, perspectiveDepth(scene));
+            }
+            testSpanFast(scene, *plane, current, entry.span, rowOf(first, entry.span.y - y0),
+                         out.painted, counts);
+        }
+        if (sink) {
+            (*sink)(TestedBand{part, y0, y1, out.touched[static_cast<std::size_t>(c)], first.ids,
+                               first.bary, width});
+            continue;
+        }
+        if (!out.visible.empty() && touched.begin < touched.end) {
+            // The triangles that kept a pixel of this chunk, a run of one id at a time. Two
+            // threads may mark the same triangle: relaxed atomic stores of the same value.
+            for (int y = y0; y < y1; ++y) {
+                const std::uint32_t* ids = out.triangle.row(y);
+                for (int x = touched.begin; x < touched.end;) {
+                    const std::uint32_t t = ids[x];
+                    if (t != kNoTriangle)
+                        std::atomic_ref<std::uint8_t>(out.visible[t])
+                            .store(1, std::memory_order_relaxed);
+                    x = runEnd(ids, x + 1, touched.end, t);
+                }
+            }
+        }
+    }
+    return counts;
+}
+
+}  // namespace
+
+// Sixteen ids at a time (their differences from t ORed together: one AVX-512 operation, two
+// AVX2 or four SSE ones), then one at a time within the first sixteen that differ.
+RL_MULTIVERSION int runEnd(const std::uint32_t* ids, int from, int limit, std::uint32_t t) {
+    typedef std::uint32_t Ids __attribute__((vector_size(64)));
+    typedef std::uint64_t Words __attribute__((vector_size(64)));
+    typedef std::uint64_t Words4 __attribute__((vector_size(32)));
+    typedef std::uint64_t Words2 __attribute__((vector_size(16)));
+    const Ids same = Ids{} + t;
+    int end = from;
+    while (end + 16 <= limit) {
+        Ids v;
+        std::memcpy(&v, ids + end, sizeof v);
+        const Words differ = reinterpret_cast<Words>(v ^ same);
+        const Words4 half = __builtin_shufflevector(differ, differ, 0, 1, 2, 3) |
+                            __builtin_shufflevector(differ, differ, 4, 5, 6, 7);
+        const Words2 quarter =
+            __builtin_shufflevector(half, half, 0, 1) | __builtin_shufflevector(half, half, 2, 3);
+        if (quarter[0] | quarter[1]) break;
+        end += 16;
+    }
+    while (end < limit && ids[end] == t) ++end;
+    return end;
+}
+
+namespace {
+
+// The depth test chunk by chunk on `threads` threads (testChunks), each chunk handed to sink
+// when one is given.
+DepthTest test(const DepthTestInput& in, int threads, DepthTest* recycled, bool keepDepth,
+               const BandSink* sink) {
+    const Scene& scene = in.scene;
+    DepthTest out;
+    const float clear = scene.conventions.depthClear;
+    const int chunks = (scene.height + kRowChunk - 1) / kRowChunk;
+    out.depthKept = keepDepth && !sink;
+    out.fragmentsKept = !sink;
+    std::vector<ColumnRange> previous;  // what the recycled buffers hold besides the clear value
+    if (recycled && out.fragmentsKept) {
+        // When this frame keeps its z-buffer and the recycled one did not, nothing in it is
+        // known: everything is cleared.
+        if (recycled->triangle.width() == scene.width &&
+            recycled->triangle.height() == scene.height && recycled->clearedTo == clear &&
+            (recycled->depthKept || !out.depthKept) &&
+            recycled->touched.size() == static_cast<std::size_t>(chunks))
+            previous = std::move(recycled->touched);
+        if (out.depthKept) out.depth = std::move(recycled->depth);
+        out.triangle = std::move(recycled->triangle);
+        out.barycentric = std::move(recycled->barycentric);
+        out.visible = std::move(recycled->visible);
+    }
+    out.clearedTo = clear;
+    out.painted = paintersAlgorithm(scene);
+    // Flat shading reads no barycentrics (one colour per triangle): when every draw is flat
+    // they are not written.
+    out.barycentricsKept = scene.draws.empty();
+    bool perTriangle = false;
+    for (const Draw& draw : scene.draws) {
+        out.barycentricsKept = out.barycentricsKept || !litPerTriangle(draw.shading);
+        perTriangle = perTriangle || draw.shading != ShadingModel::Phong;
+    }
+    // Each thread clears its own rows (testChunks).
+    if (out.depthKept) out.depth.resize(scene.width, scene.height);
+    if (out.fragmentsKept) {
+        out.triangle.resize(scene.width, scene.height);
+        out.barycentric.resize(scene.width, scene.height);
+    }
+    out.touched.assign(static_cast<std::size_t>(chunks), ColumnRange{});
+    if (perTriangle && !sink)
+        out.visible.assign(in.projection.triangles.size(), 0);
+    else
+        out.visible.clear();
+    const int parts = std::max(1, std::min(threads, scene.height));
+    std::vector<DepthCounts> counts(static_cast<std::size_t>(parts));
+    const SpansByChunk sorted = sortByChunk(in.scan, chunks, threads);
+    std::atomic<int> nextChunk{0};
+    runParts(parts, [&](int part) {
+        counts[static_cast<std::size_t>(part)] =
+            testChunks(scene, in.projection, sorted, out, part, parts, previous, sink, nextChunk);
+    });
+    for (const DepthCounts& c : counts) {
+        out.fragments += c.fragments;
+        out.passed += c.passed;
+        out.outsideDepthRange += c.outsideDepthRange;
+    }
+    out.rejected = out.fragments - out.passed - out.outsideDepthRange;
+    return out;
+}
+
+}  // namespace
+
+DepthTest depthTest(const DepthTestInput& in, int threads, DepthTest* recycled, bool keepDepth) {
+    return test(in, threads, recycled, keepDepth, nullptr);
+}
+
+DepthTest depthTestInBands(const DepthTestInput& in, int threads, const BandSink& sink) {
+    return test(in, threads, nullptr, false, &sink);
+}
+
+}  // namespace rl::fast
