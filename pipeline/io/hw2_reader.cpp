@@ -67,6 +67,25 @@ private:
     using Args = std::vector<double>;
 
     Status command(const TextLine& line);
+    // One command each (command dispatches by keyword).
+    Status readImage(const TextLine& line);
+    Status readVertex(const TextLine& line);
+    Status readColour(const TextLine& line);
+    Status readNormal(const TextLine& line);
+    Status readTexcoord(const TextLine& line);
+    Status readTriangle(const TextLine& line);
+    Status readPatch(const TextLine& line);
+    Status readMatrix(const TextLine& line);
+    Status readProjection(const TextLine& line);
+    Status readTranslateOrScale(const TextLine& line);
+    Status readAxisRotation(const TextLine& line);
+    Status readRotation(const TextLine& line);
+    Status readLookAt(const TextLine& line);
+    Status readClipPlane(const TextLine& line);
+    Status readFlag(const TextLine& line);
+    Status readTexture(const TextLine& line);
+    Status readLight(const TextLine& line);
+    Status readShininess(const TextLine& line);
     Result<Args> numbers(const TextLine& line, std::size_t count, const char* names);
     Result<std::uint32_t> vertexIndex(const Token& token, const std::string& command);
     // Vertex indices from token `first` on; tokens after them are warned about as extra
@@ -335,280 +354,343 @@ Status Hw2Reader::command(const TextLine& line) {
         if (seen.first++ == 0) seen.second = where;
         return success();
     }
-    const auto nums = [&](std::size_t count, const char* names) {
-        return numbers(line, count, names);
-    };
-
-    if (keyword == "png") {
-        if (line.tokens.size() < 4)
-            return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
-                             "expected 'png width height file', found " +
-                                 countOf(line.tokens.size() - 1, "argument", "arguments"));
-        long long size[2] = {0, 0};
-        for (int k = 0; k < 2; ++k) {
-            const Token& token = line.tokens[std::size_t(k + 1)];
-            const auto n = parseInteger(token.text);
-            if (!n || *n < 1 || *n > 65536)
-                return makeError(
-                    ErrorCode::Syntax, m_scanner.at(token),
-                    std::string("expected the image ") + (k == 0 ? "width" : "height") +
-                        " (a whole number from 1 to 65536), found " + quoted(token.text));
-            size[k] = *n;
-        }
-        warnExtra(line, 4);
-        finishImage();
-        Hw2Image image;
-        // The image is written beside the others: a name that reaches into folders keeps
-        // only its last part, so a command file cannot write outside the output folder.
-        const std::string asWritten(line.tokens[3].text);
-        const std::size_t slash = asWritten.find_last_of("/\\");
-        image.fileName = slash == std::string::npos ? asWritten : asWritten.substr(slash + 1);
-        if (image.fileName.empty() || image.fileName == "." || image.fileName == "..")
-            return makeError(
-                ErrorCode::Syntax, m_scanner.at(line.tokens[3]),
-                "expected an image file name after 'png width height', found " + quoted(asWritten));
-        if (image.fileName != asWritten)
-            m_diagnostics.warn(m_scanner.at(line.tokens[3]), "the image name " + quoted(asWritten) +
-                                                                 " reaches into folders: "
-                                                                 "it is written as " +
-                                                                 quoted(image.fileName) +
-                                                                 " in the output folder");
-        for (const Hw2Image& earlier : m_file.images)
-            if (earlier.fileName == image.fileName)
-                m_diagnostics.warn(m_scanner.at(line.tokens[3]),
-                                   "an earlier png command (line " +
-                                       std::to_string(earlier.where.line) + ") names " +
-                                       quoted(image.fileName) + " too: this image replaces it");
-        image.where = where;
-        image.scene.name = image.fileName;
-        image.scene.width = static_cast<int>(size[0]);
-        image.scene.height = static_cast<int>(size[1]);
-        image.scene.conventions = Conventions::hw2();
-        image.scene.rules = RasterRules::hw2();
-        // Seed 001: "Frustum clipping happens here in OpenGL, but we won't add it": every
-        // vertex is divided by its w, the per-pixel depth test in [0, 1] does the rest.
-        image.scene.nearPlane.mode = NearPlane::Mode::Naive;
-        m_image = std::move(image);
-        return success();
-    }
-    if (keyword == "xyz" || keyword == "xyzw") {
-        const bool w = keyword == "xyzw";
-        auto v = nums(w ? 4 : 3, w ? "x y z w" : "x y z");
-        if (!v) return v.error();
-        Vertex vertex;
-        vertex.p = dvec4(v->at(0), v->at(1), v->at(2), w ? v->at(3) : 1.0);
-        vertex.colour = m_colour;
-        vertex.st = m_texcoord;
-        vertex.normal = m_normal;
-        m_vertices.push_back(vertex);
-        return success();
-    }
-    if (keyword == "color") {
-        auto v = nums(3, "r g b");
-        if (!v) return v.error();
-        m_colour = vec3(float(v->at(0)), float(v->at(1)), float(v->at(2)));
-        return success();
-    }
-    if (keyword == "normal") {
-        auto v = nums(3, "x y z");
-        if (!v) return v.error();
-        m_normal = vec3(float(v->at(0)), float(v->at(1)), float(v->at(2)));
-        return success();
-    }
-    if (keyword == "texcoord") {
-        auto v = nums(2, "s t");
-        if (!v) return v.error();
-        m_texcoord = vec2(float(v->at(0)), float(v->at(1)));
-        return success();
-    }
-    if (keyword == "trif" || keyword == "trig" || keyword == "trit") {
-        if (auto s = requireImage(line); !s) return s;
-        auto idx = indices(line, 1, 3, "i1 i2 i3");
-        if (!idx) return idx.error();
-        const Fill fill = keyword == "trif"   ? Fill::Flat
-                          : keyword == "trig" ? Fill::Gouraud
-                                              : Fill::Textured;
-        if (fill == Fill::Textured && !m_texture)
-            return makeError(
-                ErrorCode::MissingData, where,
-                "'trit' needs a texture: expected a 'texture file.png' command before it");
-        const std::array<Vertex, 3> corners = {m_vertices[idx->at(0)], m_vertices[idx->at(1)],
-                                               m_vertices[idx->at(2)]};
-        const bool hasNormals = corners[0].normal && corners[1].normal && corners[2].normal;
-        if (auto s = reserveTriangles(1, where); !s) return s;
-        addTriangle(stateFor(fill, hasNormals, fill == Fill::Flat), corners, where);
-        return success();
-    }
+    if (keyword == "png") return readImage(line);
+    if (keyword == "xyz" || keyword == "xyzw") return readVertex(line);
+    if (keyword == "color") return readColour(line);
+    if (keyword == "normal") return readNormal(line);
+    if (keyword == "texcoord") return readTexcoord(line);
+    if (keyword == "trif" || keyword == "trig" || keyword == "trit") return readTriangle(line);
     if (keyword == "rectbezf" || keyword == "rectbezg" || keyword == "tribezf" ||
-        keyword == "tribezg") {
-        if (auto s = requireImage(line); !s) return s;
-        auto subd = subdivisions(line);
-        if (!subd) return subd.error();
-        const bool rect = keyword.starts_with("rect");
-        const std::size_t count = rect ? 16 : 10;
-        auto idx = indices(line, 2, count, rect ? "subd i1 ... i16" : "subd i1 ... i10");
-        if (!idx) return idx.error();
-        const auto point = [&](std::uint32_t i) {
-            const Vertex& v = m_vertices[i];
-            return PatchPoint{v.p, v.colour, v.st};
-        };
-        const std::size_t cells = std::size_t(1) << (2 * subd.value());  // 4^subd
-        if (auto s = reserveTriangles(rect ? 2 * cells : cells, where); !s) return s;
-        PatchMesh patch;
-        if (rect) {
-            std::array<PatchPoint, 16> control;
-            for (std::size_t k = 0; k < 16; ++k) control[k] = point(idx->at(k));
-            patch = subdivideRectBezier(control, subd.value());
-        } else {
-            std::array<PatchPoint, 10> control;
-            for (std::size_t k = 0; k < 10; ++k) control[k] = point(idx->at(k));
-            patch = subdivideTriBezier(control, subd.value());
-        }
-        addPatch(patch, keyword.ends_with('f') ? Fill::Flat : Fill::Gouraud, where);
-        return success();
-    }
-    if (keyword == "loadmv" || keyword == "loadp" || keyword == "multmv") {
-        auto v = nums(16, "a11 a12 ... a44, row by row");
-        if (!v) return v.error();
-        double rows[16];
-        std::copy(v->begin(), v->end(), rows);
-        const dmat4 m = matrixFromRows(rows);
-        if (keyword == "loadmv")
-            m_modelView = m;
-        else if (keyword == "multmv")
-            m_modelView = m_modelView * m;
-        else
-            m_projection = m;
-        return success();
-    }
-    if (keyword == "frustum" || keyword == "ortho") {
-        auto v = nums(6, "l r b t n f");
-        if (!v) return v.error();
-        const Args& a = v.value();
-        if (a[0] == a[1] || a[2] == a[3] || a[4] == a[5])
-            return makeError(ErrorCode::Degenerate, where,
-                             "'" + keyword + "' needs l != r, b != t and n != f, found " +
-                                 formatNumber(a[0]) + " " + formatNumber(a[1]) + " " +
-                                 formatNumber(a[2]) + " " + formatNumber(a[3]) + " " +
-                                 formatNumber(a[4]) + " " + formatNumber(a[5]));
-        m_projection = keyword == "frustum" ? frustumMatrix(a[0], a[1], a[2], a[3], a[4], a[5])
-                                            : orthoMatrix(a[0], a[1], a[2], a[3], a[4], a[5]);
-        return success();
-    }
-    if (keyword == "translate" || keyword == "scale") {
-        auto v = nums(3, keyword == "translate" ? "dx dy dz" : "sx sy sz");
-        if (!v) return v.error();
-        const dvec3 d(v->at(0), v->at(1), v->at(2));
-        m_modelView =
-            m_modelView * (keyword == "translate" ? translationMatrix(d) : scaleMatrix(d));
-        return success();
-    }
-    if (keyword == "rotatex" || keyword == "rotatey" || keyword == "rotatez") {
-        auto v = nums(1, "degrees");
-        if (!v) return v.error();
-        const dvec3 axis = keyword == "rotatex"   ? dvec3(1, 0, 0)
-                           : keyword == "rotatey" ? dvec3(0, 1, 0)
-                                                  : dvec3(0, 0, 1);
-        m_modelView = m_modelView * rotationMatrix(v->at(0), axis);
-        return success();
-    }
-    if (keyword == "rotate") {
-        auto v = nums(4, "degrees x y z");
-        if (!v) return v.error();
-        const dvec3 axis(v->at(1), v->at(2), v->at(3));
-        if (axis == dvec3(0.0))
-            return makeError(ErrorCode::Degenerate, m_scanner.at(line.tokens[2]),
-                             "'rotate' needs an axis, found the zero vector");
-        m_modelView = m_modelView * rotationMatrix(v->at(0), axis);
-        return success();
-    }
-    if (keyword == "lookat") {
-        // Two indices, then the up vector: only values after the up vector are extra.
-        auto idx = indices(line, 1, 2, "eye center upx upy upz", false);
-        if (!idx) return idx.error();
-        if (line.tokens.size() < 6)
-            return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
-                             "expected 'lookat eye center upx upy upz', found " +
-                                 countOf(line.tokens.size() - 1, "argument", "arguments"));
-        dvec3 up(0.0);
-        for (int k = 0; k < 3; ++k) {
-            const Token& token = line.tokens[std::size_t(3 + k)];
-            const auto value = parseReal(token.text);
-            if (!value)
-                return makeError(ErrorCode::Syntax, m_scanner.at(token),
-                                 "expected a number in 'lookat' (eye center upx upy upz), found " +
-                                     quoted(token.text));
-            up[k] = *value;
-        }
-        warnExtra(line, 6);
-        const auto position = [&](std::uint32_t i) {
-            const dvec4& p = m_vertices[i].p;
-            return p.w != 0.0 ? dvec3(p) / p.w : dvec3(p);
-        };
-        const dvec3 eye = position(idx->at(0)), center = position(idx->at(1));
-        if (eye == center || glm::length(glm::cross(center - eye, up)) == 0.0)
-            return makeError(ErrorCode::Degenerate, where,
-                             "'lookat' needs an eye apart from the center and an up that is "
-                             "not along the line of sight");
-        m_modelView = lookAtMatrix(eye, center, up);
-        return success();
-    }
-    if (keyword == "clipplane") {
-        auto v = nums(4, "p1 p2 p3 p4");
-        if (!v) return v.error();
-        // A plane of eye coordinates, kept as given (seed 001 applies it after the
-        // model/view; the reference images do not carry it through the model/view).
-        const dvec4 plane(v->at(0), v->at(1), v->at(2), v->at(3));
-        m_clipPlanes.push_back(plane);
-        return success();
-    }
-    if (keyword == "cull" || keyword == "decals" || keyword == "flatnormals") {
-        warnExtra(line, 1);
-        if (keyword == "cull") m_cull = true;
-        return success();
-    }
-    if (keyword == "texture") {
-        if (line.tokens.size() < 2)
-            return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
-                             "expected a file name after 'texture', found the end of the line");
-        warnExtra(line, 2);
-        auto texture = m_loader(std::string(line.tokens[1].text), m_scanner.at(line.tokens[1]));
-        if (!texture) return texture.error();
-        m_texture = texture.value();
-        return success();
-    }
-    if (keyword == "sunlight" || keyword == "bulb") {
-        if (auto s = requireImage(line); !s) return s;
-        Light light;
-        light.intensity = m_colour;
-        light.where = where;
-        if (keyword == "sunlight") {
-            auto v = nums(3, "lx ly lz");
-            if (!v) return v.error();
-            const dvec3 direction(v->at(0), v->at(1), v->at(2));
-            if (direction == dvec3(0.0))
-                return makeError(ErrorCode::Degenerate, m_scanner.at(line.tokens[1]),
-                                 "'sunlight' needs a direction, found the zero vector");
-            // A direction, carried to eye coordinates like a normal, then made unit length.
-            light.pWorld = dvec4(glm::normalize(normalMatrix(m_modelView) * direction), 0.0);
-        } else {
-            auto idx = indices(line, 1, 1, "i1");
-            if (!idx) return idx.error();
-            const dvec4 p = m_modelView * m_vertices[idx->at(0)].p;
-            light.pWorld = dvec4(p.w != 0.0 ? dvec3(p) / p.w : dvec3(p), 1.0);
-        }
-        m_image->scene.lights.push_back(light);
-        return success();
-    }
-    if (keyword == "shininess") {
-        auto v = nums(1, "alpha");
-        if (!v) return v.error();
-        m_shininess = static_cast<float>(v->at(0));
-        return success();
-    }
+        keyword == "tribezg")
+        return readPatch(line);
+    if (keyword == "loadmv" || keyword == "loadp" || keyword == "multmv") return readMatrix(line);
+    if (keyword == "frustum" || keyword == "ortho") return readProjection(line);
+    if (keyword == "translate" || keyword == "scale") return readTranslateOrScale(line);
+    if (keyword == "rotatex" || keyword == "rotatey" || keyword == "rotatez")
+        return readAxisRotation(line);
+    if (keyword == "rotate") return readRotation(line);
+    if (keyword == "lookat") return readLookAt(line);
+    if (keyword == "clipplane") return readClipPlane(line);
+    if (keyword == "cull" || keyword == "decals" || keyword == "flatnormals") return readFlag(line);
+    if (keyword == "texture") return readTexture(line);
+    if (keyword == "sunlight" || keyword == "bulb") return readLight(line);
+    if (keyword == "shininess") return readShininess(line);
     return success();
 }
 
+// png width height file: a new image, its scene in seed 001's conventions and rules.
+Status Hw2Reader::readImage(const TextLine& line) {
+    const SourceLocation where = m_scanner.at(line.tokens[0]);
+    if (line.tokens.size() < 4)
+        return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
+                         "expected 'png width height file', found " +
+                             countOf(line.tokens.size() - 1, "argument", "arguments"));
+    long long size[2] = {0, 0};
+    for (int k = 0; k < 2; ++k) {
+        const Token& token = line.tokens[std::size_t(k + 1)];
+        const auto n = parseInteger(token.text);
+        if (!n || *n < 1 || *n > 65536)
+            return makeError(ErrorCode::Syntax, m_scanner.at(token),
+                             std::string("expected the image ") + (k == 0 ? "width" : "height") +
+                                 " (a whole number from 1 to 65536), found " + quoted(token.text));
+        size[k] = *n;
+    }
+    warnExtra(line, 4);
+    finishImage();
+    Hw2Image image;
+    // The image is written beside the others: a name that reaches into folders keeps
+    // only its last part, so a command file cannot write outside the output folder.
+    const std::string asWritten(line.tokens[3].text);
+    const std::size_t slash = asWritten.find_last_of("/\\");
+    image.fileName = slash == std::string::npos ? asWritten : asWritten.substr(slash + 1);
+    if (image.fileName.empty() || image.fileName == "." || image.fileName == "..")
+        return makeError(
+            ErrorCode::Syntax, m_scanner.at(line.tokens[3]),
+            "expected an image file name after 'png width height', found " + quoted(asWritten));
+    if (image.fileName != asWritten)
+        m_diagnostics.warn(m_scanner.at(line.tokens[3]), "the image name " + quoted(asWritten) +
+                                                             " reaches into folders: "
+                                                             "it is written as " +
+                                                             quoted(image.fileName) +
+                                                             " in the output folder");
+    for (const Hw2Image& earlier : m_file.images)
+        if (earlier.fileName == image.fileName)
+            m_diagnostics.warn(m_scanner.at(line.tokens[3]),
+                               "an earlier png command (line " +
+                                   std::to_string(earlier.where.line) + ") names " +
+                                   quoted(image.fileName) + " too: this image replaces it");
+    image.where = where;
+    image.scene.name = image.fileName;
+    image.scene.width = static_cast<int>(size[0]);
+    image.scene.height = static_cast<int>(size[1]);
+    image.scene.conventions = Conventions::hw2();
+    image.scene.rules = RasterRules::hw2();
+    // Seed 001: "Frustum clipping happens here in OpenGL, but we won't add it": every
+    // vertex is divided by its w, the per-pixel depth test in [0, 1] does the rest.
+    image.scene.nearPlane.mode = NearPlane::Mode::Naive;
+    m_image = std::move(image);
+    return success();
+}
+
+// xyz x y z, xyzw x y z w: a vertex with the current colour, normal and texture coordinate.
+Status Hw2Reader::readVertex(const TextLine& line) {
+    const std::string keyword(line.tokens[0].text);
+    const bool w = keyword == "xyzw";
+    auto v = numbers(line, w ? 4 : 3, w ? "x y z w" : "x y z");
+    if (!v) return v.error();
+    Vertex vertex;
+    vertex.p = dvec4(v->at(0), v->at(1), v->at(2), w ? v->at(3) : 1.0);
+    vertex.colour = m_colour;
+    vertex.st = m_texcoord;
+    vertex.normal = m_normal;
+    m_vertices.push_back(vertex);
+    return success();
+}
+
+// color r g b: the current colour.
+Status Hw2Reader::readColour(const TextLine& line) {
+    auto v = numbers(line, 3, "r g b");
+    if (!v) return v.error();
+    m_colour = vec3(float(v->at(0)), float(v->at(1)), float(v->at(2)));
+    return success();
+}
+
+// normal x y z: the current normal.
+Status Hw2Reader::readNormal(const TextLine& line) {
+    auto v = numbers(line, 3, "x y z");
+    if (!v) return v.error();
+    m_normal = vec3(float(v->at(0)), float(v->at(1)), float(v->at(2)));
+    return success();
+}
+
+// texcoord s t: the current texture coordinate.
+Status Hw2Reader::readTexcoord(const TextLine& line) {
+    auto v = numbers(line, 2, "s t");
+    if (!v) return v.error();
+    m_texcoord = vec2(float(v->at(0)), float(v->at(1)));
+    return success();
+}
+
+// trif, trig, trit i1 i2 i3: a triangle, flat, with vertex colours, or textured.
+Status Hw2Reader::readTriangle(const TextLine& line) {
+    const std::string keyword(line.tokens[0].text);
+    const SourceLocation where = m_scanner.at(line.tokens[0]);
+    if (auto s = requireImage(line); !s) return s;
+    auto idx = indices(line, 1, 3, "i1 i2 i3");
+    if (!idx) return idx.error();
+    const Fill fill = keyword == "trif"   ? Fill::Flat
+                      : keyword == "trig" ? Fill::Gouraud
+                                          : Fill::Textured;
+    if (fill == Fill::Textured && !m_texture)
+        return makeError(ErrorCode::MissingData, where,
+                         "'trit' needs a texture: expected a 'texture file.png' command before it");
+    const std::array<Vertex, 3> corners = {m_vertices[idx->at(0)], m_vertices[idx->at(1)],
+                                           m_vertices[idx->at(2)]};
+    const bool hasNormals = corners[0].normal && corners[1].normal && corners[2].normal;
+    if (auto s = reserveTriangles(1, where); !s) return s;
+    addTriangle(stateFor(fill, hasNormals, fill == Fill::Flat), corners, where);
+    return success();
+}
+
+// rectbezf, rectbezg subd i1 ... i16 and tribezf, tribezg subd i1 ... i10: a Bezier patch.
+Status Hw2Reader::readPatch(const TextLine& line) {
+    const std::string keyword(line.tokens[0].text);
+    const SourceLocation where = m_scanner.at(line.tokens[0]);
+    if (auto s = requireImage(line); !s) return s;
+    auto subd = subdivisions(line);
+    if (!subd) return subd.error();
+    const bool rect = keyword.starts_with("rect");
+    const std::size_t count = rect ? 16 : 10;
+    auto idx = indices(line, 2, count, rect ? "subd i1 ... i16" : "subd i1 ... i10");
+    if (!idx) return idx.error();
+    const auto point = [&](std::uint32_t i) {
+        const Vertex& v = m_vertices[i];
+        return PatchPoint{v.p, v.colour, v.st};
+    };
+    const std::size_t cells = std::size_t(1) << (2 * subd.value());  // 4^subd
+    if (auto s = reserveTriangles(rect ? 2 * cells : cells, where); !s) return s;
+    PatchMesh patch;
+    if (rect) {
+        std::array<PatchPoint, 16> control;
+        for (std::size_t k = 0; k < 16; ++k) control[k] = point(idx->at(k));
+        patch = subdivideRectBezier(control, subd.value());
+    } else {
+        std::array<PatchPoint, 10> control;
+        for (std::size_t k = 0; k < 10; ++k) control[k] = point(idx->at(k));
+        patch = subdivideTriBezier(control, subd.value());
+    }
+    addPatch(patch, keyword.ends_with('f') ? Fill::Flat : Fill::Gouraud, where);
+    return success();
+}
+
+// loadmv, multmv, loadp a11 ... a44: a model/view or projection matrix, row by row.
+Status Hw2Reader::readMatrix(const TextLine& line) {
+    const std::string keyword(line.tokens[0].text);
+    auto v = numbers(line, 16, "a11 a12 ... a44, row by row");
+    if (!v) return v.error();
+    double rows[16];
+    std::copy(v->begin(), v->end(), rows);
+    const dmat4 m = matrixFromRows(rows);
+    if (keyword == "loadmv")
+        m_modelView = m;
+    else if (keyword == "multmv")
+        m_modelView = m_modelView * m;
+    else
+        m_projection = m;
+    return success();
+}
+
+// frustum, ortho l r b t n f: the projection.
+Status Hw2Reader::readProjection(const TextLine& line) {
+    const std::string keyword(line.tokens[0].text);
+    const SourceLocation where = m_scanner.at(line.tokens[0]);
+    auto v = numbers(line, 6, "l r b t n f");
+    if (!v) return v.error();
+    const Args& a = v.value();
+    if (a[0] == a[1] || a[2] == a[3] || a[4] == a[5])
+        return makeError(ErrorCode::Degenerate, where,
+                         "'" + keyword + "' needs l != r, b != t and n != f, found " +
+                             formatNumber(a[0]) + " " + formatNumber(a[1]) + " " +
+                             formatNumber(a[2]) + " " + formatNumber(a[3]) + " " +
+                             formatNumber(a[4]) + " " + formatNumber(a[5]));
+    m_projection = keyword == "frustum" ? frustumMatrix(a[0], a[1], a[2], a[3], a[4], a[5])
+                                        : orthoMatrix(a[0], a[1], a[2], a[3], a[4], a[5]);
+    return success();
+}
+
+// translate dx dy dz, scale sx sy sz: added to the model/view.
+Status Hw2Reader::readTranslateOrScale(const TextLine& line) {
+    const std::string keyword(line.tokens[0].text);
+    auto v = numbers(line, 3, keyword == "translate" ? "dx dy dz" : "sx sy sz");
+    if (!v) return v.error();
+    const dvec3 d(v->at(0), v->at(1), v->at(2));
+    m_modelView = m_modelView * (keyword == "translate" ? translationMatrix(d) : scaleMatrix(d));
+    return success();
+}
+
+// rotatex, rotatey, rotatez degrees: added to the model/view.
+Status Hw2Reader::readAxisRotation(const TextLine& line) {
+    const std::string keyword(line.tokens[0].text);
+    auto v = numbers(line, 1, "degrees");
+    if (!v) return v.error();
+    const dvec3 axis = keyword == "rotatex"   ? dvec3(1, 0, 0)
+                       : keyword == "rotatey" ? dvec3(0, 1, 0)
+                                              : dvec3(0, 0, 1);
+    m_modelView = m_modelView * rotationMatrix(v->at(0), axis);
+    return success();
+}
+
+// rotate degrees x y z: added to the model/view.
+Status Hw2Reader::readRotation(const TextLine& line) {
+    auto v = numbers(line, 4, "degrees x y z");
+    if (!v) return v.error();
+    const dvec3 axis(v->at(1), v->at(2), v->at(3));
+    if (axis == dvec3(0.0))
+        return makeError(ErrorCode::Degenerate, m_scanner.at(line.tokens[2]),
+                         "'rotate' needs an axis, found the zero vector");
+    m_modelView = m_modelView * rotationMatrix(v->at(0), axis);
+    return success();
+}
+
+// lookat eye center upx upy upz: replaces the model/view.
+Status Hw2Reader::readLookAt(const TextLine& line) {
+    const SourceLocation where = m_scanner.at(line.tokens[0]);
+    // Two indices, then the up vector: only values after the up vector are extra.
+    auto idx = indices(line, 1, 2, "eye center upx upy upz", false);
+    if (!idx) return idx.error();
+    if (line.tokens.size() < 6)
+        return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
+                         "expected 'lookat eye center upx upy upz', found " +
+                             countOf(line.tokens.size() - 1, "argument", "arguments"));
+    dvec3 up(0.0);
+    for (int k = 0; k < 3; ++k) {
+        const Token& token = line.tokens[std::size_t(3 + k)];
+        const auto value = parseReal(token.text);
+        if (!value)
+            return makeError(ErrorCode::Syntax, m_scanner.at(token),
+                             "expected a number in 'lookat' (eye center upx upy upz), found " +
+                                 quoted(token.text));
+        up[k] = *value;
+    }
+    warnExtra(line, 6);
+    const auto position = [&](std::uint32_t i) {
+        const dvec4& p = m_vertices[i].p;
+        return p.w != 0.0 ? dvec3(p) / p.w : dvec3(p);
+    };
+    const dvec3 eye = position(idx->at(0)), center = position(idx->at(1));
+    if (eye == center || glm::length(glm::cross(center - eye, up)) == 0.0)
+        return makeError(ErrorCode::Degenerate, where,
+                         "'lookat' needs an eye apart from the center and an up that is "
+                         "not along the line of sight");
+    m_modelView = lookAtMatrix(eye, center, up);
+    return success();
+}
+
+// clipplane p1 p2 p3 p4: a plane of eye coordinates for the draws that follow.
+Status Hw2Reader::readClipPlane(const TextLine& line) {
+    auto v = numbers(line, 4, "p1 p2 p3 p4");
+    if (!v) return v.error();
+    // A plane of eye coordinates, kept as given (seed 001 applies it after the
+    // model/view; the reference images do not carry it through the model/view).
+    const dvec4 plane(v->at(0), v->at(1), v->at(2), v->at(3));
+    m_clipPlanes.push_back(plane);
+    return success();
+}
+
+// cull, decals, flatnormals (the last two act on the whole file, read ahead).
+Status Hw2Reader::readFlag(const TextLine& line) {
+    const std::string keyword(line.tokens[0].text);
+    warnExtra(line, 1);
+    if (keyword == "cull") m_cull = true;
+    return success();
+}
+
+// texture file.png: the texture of the textured triangles that follow.
+Status Hw2Reader::readTexture(const TextLine& line) {
+    if (line.tokens.size() < 2)
+        return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
+                         "expected a file name after 'texture', found the end of the line");
+    warnExtra(line, 2);
+    auto texture = m_loader(std::string(line.tokens[1].text), m_scanner.at(line.tokens[1]));
+    if (!texture) return texture.error();
+    m_texture = texture.value();
+    return success();
+}
+
+// sunlight lx ly lz, bulb i: a light of the current colour.
+Status Hw2Reader::readLight(const TextLine& line) {
+    const std::string keyword(line.tokens[0].text);
+    const SourceLocation where = m_scanner.at(line.tokens[0]);
+    if (auto s = requireImage(line); !s) return s;
+    Light light;
+    light.intensity = m_colour;
+    light.where = where;
+    if (keyword == "sunlight") {
+        auto v = numbers(line, 3, "lx ly lz");
+        if (!v) return v.error();
+        const dvec3 direction(v->at(0), v->at(1), v->at(2));
+        if (direction == dvec3(0.0))
+            return makeError(ErrorCode::Degenerate, m_scanner.at(line.tokens[1]),
+                             "'sunlight' needs a direction, found the zero vector");
+        // A direction, carried to eye coordinates like a normal, then made unit length.
+        light.pWorld = dvec4(glm::normalize(normalMatrix(m_modelView) * direction), 0.0);
+    } else {
+        auto idx = indices(line, 1, 1, "i1");
+        if (!idx) return idx.error();
+        const dvec4 p = m_modelView * m_vertices[idx->at(0)].p;
+        light.pWorld = dvec4(p.w != 0.0 ? dvec3(p) / p.w : dvec3(p), 1.0);
+    }
+    m_image->scene.lights.push_back(light);
+    return success();
+}
+
+// shininess alpha: the Blinn-Phong exponent of the lit draws that follow.
+Status Hw2Reader::readShininess(const TextLine& line) {
+    auto v = numbers(line, 1, "alpha");
+    if (!v) return v.error();
+    m_shininess = static_cast<float>(v->at(0));
+    return success();
+}
 }  // namespace
 
 Result<Hw2File> readHw2(std::string_view text, const std::string& fileName,
