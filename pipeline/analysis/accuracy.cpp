@@ -35,12 +35,16 @@ std::string accuracyModeName(const AccuracyMode& mode) {
     return name;
 }
 
-SampledImage sampleFrame(const FrameTrace& trace, int samplesPerAxis) {
+namespace {
+
+// A frame's image at k x k samples a pixel, averaged: each sample's colour (colourAt(x, y),
+// in the scene's scale) clamped to [0, 1], the samples a triangle covers counted, and at one
+// sample a pixel the depth of a covered one (depthAt(x, y), NaN when there is none).
+template <typename ColourAt, typename Covered, typename DepthAt>
+SampledImage downsample(int sampleWidth, int sampleHeight, int samplesPerAxis, double scale,
+                        ColourAt colourAt, Covered covered, DepthAt depthAt) {
     const int k = std::max(1, samplesPerAxis);
-    const Image<vec3>& colour = trace.shading->colour;
-    const Image<std::uint32_t>& triangle = trace.depth->triangle;
-    const int width = colour.width() / k, height = colour.height() / k;
-    const double scale = trace.scene->conventions.colourScale;
+    const int width = sampleWidth / k, height = sampleHeight / k;
     SampledImage out;
     out.samplesPerAxis = k;
     out.colour.reset(width, height, dvec3(0.0));
@@ -53,159 +57,153 @@ SampledImage sampleFrame(const FrameTrace& trace, int samplesPerAxis) {
             for (int j = 0; j < k; ++j) {
                 for (int i = 0; i < k; ++i) {
                     const int sx = x * k + i, sy = y * k + j;
-                    sum += glm::clamp(dvec3(colour.at(sx, sy)) / scale, dvec3(0.0), dvec3(1.0));
-                    hits += triangle.at(sx, sy) != kNoTriangle ? 1 : 0;
+                    sum += glm::clamp(colourAt(sx, sy) / scale, dvec3(0.0), dvec3(1.0));
+                    hits += covered(sx, sy) ? 1 : 0;
                 }
             }
             out.colour.at(x, y) = sum / double(k * k);
             out.hits.at(x, y) = static_cast<std::uint16_t>(hits);
-            if (k == 1 && hits > 0 && trace.depth->depthKept)
-                out.depth.at(x, y) = trace.depth->depth.at(x, y);
+            if (k == 1 && hits > 0) out.depth.at(x, y) = depthAt(x, y);
         }
     }
     return out;
+}
+
+// Per projected vertex of a draw, in double: view-space point, normal (a vertex made by
+// clipping takes them along its edge), 1/w, depth; and Gouraud's vertex colours.
+struct DoubleVertices {
+    std::vector<dvec3> p, n, colour;
+    std::vector<double> invW, depth;
+};
+
+DoubleVertices doubleVertices(const FrameTrace& trace, std::size_t d) {
+    const Scene& scene = *trace.scene;
+    const DrawProjection& proj = trace.projection->draws[d];
+    const Draw& draw = scene.draws[d];
+    const Normals& normals = *trace.normals;
+    DoubleVertices v;
+    const std::size_t count = proj.pView.size();
+    v.p.resize(count);
+    v.n.assign(count, dvec3(0.0));
+    v.invW.resize(count);
+    v.depth.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const dvec4& p = proj.pView[i];
+        v.p[i] = p.w != 0.0 && p.w != 1.0 ? dvec3(p) / p.w : dvec3(p);
+        v.invW[i] = 1.0 / proj.pClip[i].w;
+        v.depth[i] = scene.conventions.depth == DepthSource::ViewZ
+                         ? proj.pView[i].z
+                         : proj.pClip[i].z / proj.pClip[i].w;
+        if (i < proj.originalVertexCount && !normals.skipped)
+            v.n[i] = dvec3(normals.draws[d].vertex[i]);
+    }
+    for (std::size_t i = 0; i < proj.generated.size(); ++i) {
+        const ClipVertex& g = proj.generated[i];
+        v.n[proj.originalVertexCount + i] = glm::mix(v.n[g.a], v.n[g.b], g.t);
+    }
+    if (draw.shading == ShadingModel::Gouraud) {
+        v.colour.resize(count);
+        for (std::size_t i = 0; i < proj.originalVertexCount; ++i)
+            v.colour[i] = referencePhong(scene, draw, trace.view->lights, v.p[i], v.n[i]);
+        for (std::size_t i = 0; i < proj.generated.size(); ++i) {
+            const ClipVertex& g = proj.generated[i];
+            v.colour[proj.originalVertexCount + i] = glm::mix(v.colour[g.a], v.colour[g.b], g.t);
+        }
+    }
+    return v;
+}
+
+// The colour of screen triangle t at the sample of pixel (x, y), in double, and its depth.
+dvec3 shadeSampleInDouble(const FrameTrace& trace, const std::vector<DoubleVertices>& vertices,
+                          std::uint32_t t, int x, int y, double& depth) {
+    const Scene& scene = *trace.scene;
+    const ScreenTriangle& tri = trace.projection->triangles[t];
+    const Draw& draw = scene.draws[tri.draw];
+    const DoubleVertices& v = vertices[tri.draw];
+    // Screen barycentrics of the sample, as the depth test writes them, unrounded.
+    const double offset = scene.rules.sampleOffset;
+    const std::array<dvec2, 3> p = screenVertices(*trace.projection, tri);
+    const dvec2 s = dvec2(x + offset, y + offset) - p[0];
+    const dvec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
+    const double area = e1.x * e2.y - e1.y * e2.x;
+    const double sb = (s.x * e2.y - s.y * e2.x) / area;
+    const double sg = (e1.x * s.y - e1.y * s.x) / area;
+    const double sa = 1.0 - sb - sg;
+    const bool perspective =
+        scene.rules.interpolation == RasterRules::Interpolation::PerspectiveCorrect;
+    const auto& z = v.depth;
+    if (perspective && scene.conventions.depth == DepthSource::ViewZ)
+        depth = 1.0 / (sa / z[tri.v[0]] + sb / z[tri.v[1]] + sg / z[tri.v[2]]);
+    else
+        depth = sa * z[tri.v[0]] + sb * z[tri.v[1]] + sg * z[tri.v[2]];
+    double a = sa, b = sb, g = sg;
+    if (perspective) {
+        const double w0 = sa * v.invW[tri.v[0]], w1 = sb * v.invW[tri.v[1]],
+                     w2 = sg * v.invW[tri.v[2]];
+        const double sum = w0 + w1 + w2;
+        if (sum != 0.0 && std::isfinite(sum)) a = w0 / sum, b = w1 / sum, g = w2 / sum;
+    }
+    const auto mixed = [&](const std::vector<dvec3>& values) {
+        return a * values[tri.v[0]] + b * values[tri.v[1]] + g * values[tri.v[2]];
+    };
+    const std::vector<ViewLight>& lights = trace.view->lights;
+    switch (draw.shading) {
+        case ShadingModel::Flat:
+        case ShadingModel::Painter: {
+            const auto& corners = draw.mesh->triangles[tri.source];
+            const dvec3 centre = (v.p[corners[0]] + v.p[corners[1]] + v.p[corners[2]]) / 3.0;
+            const Normals& normals = *trace.normals;
+            const dvec3 n = normals.skipped
+                                ? dvec3(0.0)
+                                : dvec3(normals.draws[tri.draw].triangle[tri.source]);
+            return referencePhong(scene, draw, lights, centre, n);
+        }
+        case ShadingModel::Gouraud:
+            return mixed(v.colour);
+        case ShadingModel::Phong:
+            break;
+    }
+    return referencePhong(scene, draw, lights, mixed(v.p), mixed(v.n));
+}
+
+}  // namespace
+
+SampledImage sampleFrame(const FrameTrace& trace, int samplesPerAxis) {
+    const Image<vec3>& colour = trace.shading->colour;
+    const DepthTest& depth = *trace.depth;
+    return downsample(
+        colour.width(), colour.height(), samplesPerAxis, trace.scene->conventions.colourScale,
+        [&](int x, int y) { return dvec3(colour.at(x, y)); },
+        [&](int x, int y) { return depth.triangle.at(x, y) != kNoTriangle; },
+        [&](int x, int y) {
+            return depth.depthKept ? double(depth.depth.at(x, y))
+                                   : std::numeric_limits<double>::quiet_NaN();
+        });
 }
 
 SampledImage shadeFrameInDouble(const FrameTrace& trace, int samplesPerAxis,
                                 double& shadingMilliseconds) {
     const auto started = Clock::now();
     const Scene& scene = *trace.scene;
-    const Projection& projection = *trace.projection;
-    const Normals& normals = *trace.normals;
-    const ViewTransform& view = *trace.view;
     const DepthTest& depth = *trace.depth;
-    const bool perspective =
-        scene.rules.interpolation == RasterRules::Interpolation::PerspectiveCorrect;
-    const bool reciprocalDepth = perspective && scene.conventions.depth == DepthSource::ViewZ;
+    std::vector<DoubleVertices> vertices;
+    for (std::size_t d = 0; d < trace.projection->draws.size(); ++d)
+        vertices.push_back(doubleVertices(trace, d));
     const double scale = scene.conventions.colourScale;
-    const dvec3 background = dvec3(vec3(scene.conventions.background));
-
-    // Per projected vertex, in double: view-space point, normal (a vertex made by clipping
-    // takes them along its edge), 1/w, depth; and Gouraud's vertex colours.
-    struct Vertices {
-        std::vector<dvec3> p, n, colour;
-        std::vector<double> invW, depth;
-    };
-    std::vector<Vertices> vertices(projection.draws.size());
-    for (std::size_t d = 0; d < projection.draws.size(); ++d) {
-        const DrawProjection& proj = projection.draws[d];
-        const Draw& draw = scene.draws[d];
-        Vertices& v = vertices[d];
-        const std::size_t count = proj.pView.size();
-        v.p.resize(count);
-        v.n.assign(count, dvec3(0.0));
-        v.invW.resize(count);
-        v.depth.resize(count);
-        for (std::size_t i = 0; i < count; ++i) {
-            const dvec4& p = proj.pView[i];
-            v.p[i] = p.w != 0.0 && p.w != 1.0 ? dvec3(p) / p.w : dvec3(p);
-            v.invW[i] = 1.0 / proj.pClip[i].w;
-            v.depth[i] = scene.conventions.depth == DepthSource::ViewZ
-                             ? proj.pView[i].z
-                             : proj.pClip[i].z / proj.pClip[i].w;
-            if (i < proj.originalVertexCount && !normals.skipped)
-                v.n[i] = dvec3(normals.draws[d].vertex[i]);
-        }
-        for (std::size_t i = 0; i < proj.generated.size(); ++i) {
-            const ClipVertex& g = proj.generated[i];
-            v.n[proj.originalVertexCount + i] = glm::mix(v.n[g.a], v.n[g.b], g.t);
-        }
-        if (draw.shading == ShadingModel::Gouraud) {
-            v.colour.resize(count);
-            for (std::size_t i = 0; i < proj.originalVertexCount; ++i)
-                v.colour[i] = referencePhong(scene, draw, view.lights, v.p[i], v.n[i]);
-            for (std::size_t i = 0; i < proj.generated.size(); ++i) {
-                const ClipVertex& g = proj.generated[i];
-                v.colour[proj.originalVertexCount + i] =
-                    glm::mix(v.colour[g.a], v.colour[g.b], g.t);
-            }
-        }
-    }
-
-    Image<dvec3> colour(scene.width, scene.height, background * scale);
+    Image<dvec3> colour(scene.width, scene.height,
+                        dvec3(vec3(scene.conventions.background)) * scale);
     Image<double> depthImage(scene.width, scene.height, 0.0);
-    const double offset = scene.rules.sampleOffset;
-    for (int y = 0; y < scene.height; ++y) {
-        for (int x = 0; x < scene.width; ++x) {
-            const std::uint32_t t = depth.triangle.at(x, y);
-            if (t == kNoTriangle) continue;
-            const ScreenTriangle& tri = projection.triangles[t];
-            const Draw& draw = scene.draws[tri.draw];
-            const Vertices& v = vertices[tri.draw];
-            // Screen barycentrics of the sample, as the depth test writes them, unrounded.
-            const std::array<dvec2, 3> p = screenVertices(projection, tri);
-            const dvec2 s = dvec2(x + offset, y + offset) - p[0];
-            const dvec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
-            const double area = e1.x * e2.y - e1.y * e2.x;
-            const double sb = (s.x * e2.y - s.y * e2.x) / area;
-            const double sg = (e1.x * s.y - e1.y * s.x) / area;
-            const double sa = 1.0 - sb - sg;
-            const auto at = [&](const std::vector<double>& values) {
-                return sa * values[tri.v[0]] + sb * values[tri.v[1]] + sg * values[tri.v[2]];
-            };
-            if (reciprocalDepth) {
-                depthImage.at(x, y) = 1.0 / (sa / v.depth[tri.v[0]] + sb / v.depth[tri.v[1]] +
-                                             sg / v.depth[tri.v[2]]);
-            } else {
-                depthImage.at(x, y) = at(v.depth);
-            }
-            double a = sa, b = sb, g = sg;
-            if (perspective) {
-                const double w0 = sa * v.invW[tri.v[0]], w1 = sb * v.invW[tri.v[1]],
-                             w2 = sg * v.invW[tri.v[2]];
-                const double sum = w0 + w1 + w2;
-                if (sum != 0.0 && std::isfinite(sum)) a = w0 / sum, b = w1 / sum, g = w2 / sum;
-            }
-            const auto mixed = [&](const std::vector<dvec3>& values) {
-                return a * values[tri.v[0]] + b * values[tri.v[1]] + g * values[tri.v[2]];
-            };
-            switch (draw.shading) {
-                case ShadingModel::Flat:
-                case ShadingModel::Painter: {
-                    const auto& corners = draw.mesh->triangles[tri.source];
-                    const dvec3 centre =
-                        (v.p[corners[0]] + v.p[corners[1]] + v.p[corners[2]]) / 3.0;
-                    const dvec3 n = normals.skipped
-                                        ? dvec3(0.0)
-                                        : dvec3(normals.draws[tri.draw].triangle[tri.source]);
-                    colour.at(x, y) = referencePhong(scene, draw, view.lights, centre, n);
-                    break;
-                }
-                case ShadingModel::Gouraud:
-                    colour.at(x, y) = mixed(v.colour);
-                    break;
-                case ShadingModel::Phong:
-                    colour.at(x, y) =
-                        referencePhong(scene, draw, view.lights, mixed(v.p), mixed(v.n));
-                    break;
-            }
-        }
-    }
+    for (int y = 0; y < scene.height; ++y)
+        for (int x = 0; x < scene.width; ++x)
+            if (const std::uint32_t t = depth.triangle.at(x, y); t != kNoTriangle)
+                colour.at(x, y) =
+                    shadeSampleInDouble(trace, vertices, t, x, y, depthImage.at(x, y));
     shadingMilliseconds = millisecondsSince(started);
-
-    const int k = std::max(1, samplesPerAxis);
-    const int width = scene.width / k, height = scene.height / k;
-    SampledImage out;
-    out.samplesPerAxis = k;
-    out.colour.reset(width, height, dvec3(0.0));
-    out.hits.reset(width, height, 0);
-    out.depth.reset(width, height, std::numeric_limits<double>::quiet_NaN());
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            dvec3 sum(0.0);
-            int hits = 0;
-            for (int j = 0; j < k; ++j)
-                for (int i = 0; i < k; ++i) {
-                    const int sx = x * k + i, sy = y * k + j;
-                    sum += glm::clamp(colour.at(sx, sy) / scale, dvec3(0.0), dvec3(1.0));
-                    hits += depth.triangle.at(sx, sy) != kNoTriangle ? 1 : 0;
-                }
-            out.colour.at(x, y) = sum / double(k * k);
-            out.hits.at(x, y) = static_cast<std::uint16_t>(hits);
-            if (k == 1 && hits > 0) out.depth.at(x, y) = depthImage.at(x, y);
-        }
-    }
-    return out;
+    return downsample(
+        scene.width, scene.height, samplesPerAxis, scale,
+        [&](int x, int y) { return colour.at(x, y); },
+        [&](int x, int y) { return depth.triangle.at(x, y) != kNoTriangle; },
+        [&](int x, int y) { return depthImage.at(x, y); });
 }
 
 AccuracyMetrics compareWithReference(const SampledImage& image, const ReferenceImage& reference) {

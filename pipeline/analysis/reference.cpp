@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "parallel.h"
 
@@ -227,8 +228,10 @@ dvec3 referencePhong(const Scene& scene, const Draw& draw, const std::vector<Vie
     return colour;
 }
 
-Result<ReferenceImage> renderReference(const Scene& scene, const ViewTransform& view,
-                                       const Normals& normals, const ReferenceOptions& options) {
+namespace {
+
+// Why the reference cannot render a scene, or nothing.
+std::optional<Error> whyNotSupported(const Scene& scene) {
     if (!scene.camera) return unsupported("this scene has no course camera");
     if (scene.conventions.depth != DepthSource::ViewZ)
         return unsupported("this scene's depth is NDC z");
@@ -240,61 +243,59 @@ Result<ReferenceImage> renderReference(const Scene& scene, const ViewTransform& 
             return unsupported(draw.name + " takes its colour from its vertices or a texture");
         if (draw.flatNormals) return unsupported(draw.name + " is lit with flat normals");
     }
-    if (options.samplesPerAxis < 1 || options.samplesPerAxis > 16)
-        return makeError(ErrorCode::Usage, {}, "samples per axis must be 1 to 16");
+    return std::nullopt;
+}
 
-    ReferenceImage out;
-    out.samplesPerAxis = options.samplesPerAxis;
-    const auto started = Clock::now();
+dvec3 pointOf(const dvec4& p) {
+    return p.w != 0.0 && p.w != 1.0 ? dvec3(p) / p.w : dvec3(p);
+}
 
-    // The triangles in view space, draw by draw, and what shading needs of each.
+// The triangles in view space, draw by draw (firstOfDraw: the index of each draw's first).
+std::vector<RefTriangle> viewTriangles(const Scene& scene, const ViewTransform& view,
+                                       std::vector<std::uint32_t>& firstOfDraw) {
     std::vector<RefTriangle> triangles;
-    std::vector<std::uint32_t> firstOfDraw;
     for (std::size_t d = 0; d < scene.draws.size(); ++d) {
         firstOfDraw.push_back(static_cast<std::uint32_t>(triangles.size()));
         const Draw& draw = scene.draws[d];
         if (!draw.mesh) continue;
         const std::vector<dvec4>& p = view.pView[d];
-        const auto at = [&](std::uint32_t i) {
-            return p[i].w != 0.0 && p[i].w != 1.0 ? dvec3(p[i]) / p[i].w : dvec3(p[i]);
-        };
         for (std::size_t t = 0; t < draw.mesh->triangles.size(); ++t) {
             const auto& tri = draw.mesh->triangles[t];
-            const dvec3 a = at(tri[0]), b = at(tri[1]), c = at(tri[2]);
+            const dvec3 a = pointOf(p[tri[0]]), b = pointOf(p[tri[1]]), c = pointOf(p[tri[2]]);
             if (!isFinite(a.x + a.y + a.z + b.x + b.y + b.z + c.x + c.y + c.z)) continue;
             triangles.push_back(
                 {a, b - a, c - a, static_cast<std::uint32_t>(d), static_cast<std::uint32_t>(t)});
         }
     }
-    out.triangles = triangles.size();
-    const Hierarchy hierarchy(std::move(triangles));
-    out.buildMilliseconds = millisecondsSince(started);
+    return triangles;
+}
 
-    // Gouraud's vertex colours and flat's triangle colours, worked out when first needed.
-    const auto vertexNormal = [&](std::uint32_t d, std::uint32_t v) {
-        return normals.skipped ? dvec3(0.0) : toD(normals.draws[d].vertex[v]);
-    };
-    const auto vertexPoint = [&](std::uint32_t d, std::uint32_t v) {
-        const dvec4& p = view.pView[d][v];
-        return p.w != 0.0 && p.w != 1.0 ? dvec3(p) / p.w : dvec3(p);
-    };
-    const auto shade = [&](const RefTriangle& tri, double u, double v, const dvec3& point) {
-        const Draw& draw = scene.draws[tri.draw];
+// The colour of a point a ray hit, by its draw's shading model, in double.
+class ReferenceShader {
+public:
+    ReferenceShader(const Scene& scene, const ViewTransform& view, const Normals& normals)
+        : m_scene(scene), m_view(view), m_normals(normals) {}
+
+    // Triangle tri hit at barycentrics (u, v) of its second and third vertices, at point.
+    dvec3 shade(const RefTriangle& tri, double u, double v, const dvec3& point) const {
+        const Draw& draw = m_scene.draws[tri.draw];
         const auto& corners = draw.mesh->triangles[tri.source];
         const double w = 1.0 - u - v;
+        const auto& lights = m_view.lights;
         switch (draw.shading) {
             case ShadingModel::Flat:
             case ShadingModel::Painter: {
                 const dvec3 centre = tri.a + (tri.e1 + tri.e2) / 3.0;
-                const dvec3 n = normals.skipped ? dvec3(0.0)
-                                                : toD(normals.draws[tri.draw].triangle[tri.source]);
-                return referencePhong(scene, draw, view.lights, centre, n);
+                const dvec3 n =
+                    m_normals.skipped ? dvec3(0.0)
+                                      : toD(m_normals.draws[tri.draw].triangle[tri.source]);
+                return referencePhong(m_scene, draw, lights, centre, n);
             }
             case ShadingModel::Gouraud: {
                 dvec3 c(0.0);
                 const double weight[3] = {w, u, v};
                 for (int k = 0; k < 3; ++k)
-                    c += weight[k] * referencePhong(scene, draw, view.lights,
+                    c += weight[k] * referencePhong(m_scene, draw, lights,
                                                     vertexPoint(tri.draw, corners[k]),
                                                     vertexNormal(tri.draw, corners[k]));
                 return c;
@@ -305,13 +306,84 @@ Result<ReferenceImage> renderReference(const Scene& scene, const ViewTransform& 
         const dvec3 n = w * vertexNormal(tri.draw, corners[0]) +
                         u * vertexNormal(tri.draw, corners[1]) +
                         v * vertexNormal(tri.draw, corners[2]);
-        return referencePhong(scene, draw, view.lights, point, n);
-    };
+        return referencePhong(m_scene, draw, lights, point, n);
+    }
 
+private:
+    dvec3 vertexNormal(std::uint32_t d, std::uint32_t v) const {
+        return m_normals.skipped ? dvec3(0.0) : toD(m_normals.draws[d].vertex[v]);
+    }
+    dvec3 vertexPoint(std::uint32_t d, std::uint32_t v) const {
+        return pointOf(m_view.pView[d][v]);
+    }
+
+    const Scene& m_scene;
+    const ViewTransform& m_view;
+    const Normals& m_normals;
+};
+
+// What the rays through one pixel's k x k samples found.
+struct PixelRays {
+    dvec3 colour = dvec3(0.0);  // the samples' mean, each clamped to [0, 1]
+    double depth = 0.0;         // the mean view z of the samples that hit
+    int hits = 0;
+    std::uint32_t lastHit = ReferenceImage::kNoHit;  // the triangle the last hit met
+};
+
+PixelRays castPixel(const Scene& scene, const Hierarchy& hierarchy, const ReferenceShader& shader,
+                    const std::vector<std::uint32_t>& firstOfDraw, int x, int y, int k,
+                    double nearZ) {
     const CourseCamera& camera = *scene.camera;
-    const int k = options.samplesPerAxis;
     const double scale = scene.conventions.colourScale;
     const dvec3 background = dvec3(vec3(scene.conventions.background));
+    PixelRays out;
+    dvec3 sum(0.0);
+    double depthSum = 0.0;
+    for (int j = 0; j < k; ++j) {
+        for (int i = 0; i < k; ++i) {
+            // The sample's NDC, as projection maps NDC to pixels, inverted.
+            const double sx = x + (i + 0.5) / k, sy = y + (j + 0.5) / k;
+            const double ndcX = 2.0 * sx / scene.width - 1.0;
+            const double ndcY = scene.conventions.ndcYUp ? 1.0 - 2.0 * sy / scene.height
+                                                         : 2.0 * sy / scene.height - 1.0;
+            const dvec3 dir(ndcX * camera.hx / camera.d, ndcY * camera.hy / camera.d, 1.0);
+            const Hit hit = hierarchy.cast(dir, nearZ);
+            if (hit.triangle == ReferenceImage::kNoHit) {
+                sum += background;
+                continue;
+            }
+            const RefTriangle& tri = hierarchy.triangle(hit.triangle);
+            const dvec3 colour = shader.shade(tri, hit.u, hit.v, hit.t * dir);
+            sum += glm::clamp(colour / scale, dvec3(0.0), dvec3(1.0));
+            depthSum += hit.t;
+            ++out.hits;
+            out.lastHit = firstOfDraw[tri.draw] + tri.source;
+        }
+    }
+    out.colour = sum / double(k * k);
+    if (out.hits > 0) out.depth = depthSum / out.hits;
+    return out;
+}
+
+}  // namespace
+
+Result<ReferenceImage> renderReference(const Scene& scene, const ViewTransform& view,
+                                       const Normals& normals, const ReferenceOptions& options) {
+    if (const std::optional<Error> why = whyNotSupported(scene)) return *why;
+    if (options.samplesPerAxis < 1 || options.samplesPerAxis > 16)
+        return makeError(ErrorCode::Usage, {}, "samples per axis must be 1 to 16");
+
+    ReferenceImage out;
+    out.samplesPerAxis = options.samplesPerAxis;
+    const auto started = Clock::now();
+    std::vector<std::uint32_t> firstOfDraw;
+    std::vector<RefTriangle> triangles = viewTriangles(scene, view, firstOfDraw);
+    out.triangles = triangles.size();
+    const Hierarchy hierarchy(std::move(triangles));
+    out.buildMilliseconds = millisecondsSince(started);
+
+    const ReferenceShader shader(scene, view, normals);
+    const int k = options.samplesPerAxis;
     out.colour.reset(scene.width, scene.height, dvec3(0.0));
     out.hits.reset(scene.width, scene.height, 0);
     out.depth.reset(scene.width, scene.height, std::numeric_limits<double>::infinity());
@@ -322,37 +394,12 @@ Result<ReferenceImage> renderReference(const Scene& scene, const ViewTransform& 
         for (int y = 0; y < scene.height; ++y) {
             if (!ownsRow(y, part, parts)) continue;
             for (int x = 0; x < scene.width; ++x) {
-                dvec3 sum(0.0);
-                double depthSum = 0.0;
-                int hits = 0;
-                std::uint32_t centreHit = ReferenceImage::kNoHit;
-                for (int j = 0; j < k; ++j) {
-                    for (int i = 0; i < k; ++i) {
-                        // The sample's NDC, as projection maps NDC to pixels, inverted.
-                        const double sx = x + (i + 0.5) / k, sy = y + (j + 0.5) / k;
-                        const double ndcX = 2.0 * sx / scene.width - 1.0;
-                        const double ndcY = scene.conventions.ndcYUp
-                                                ? 1.0 - 2.0 * sy / scene.height
-                                                : 2.0 * sy / scene.height - 1.0;
-                        const dvec3 dir(ndcX * camera.hx / camera.d, ndcY * camera.hy / camera.d,
-                                        1.0);
-                        const Hit hit = hierarchy.cast(dir, options.nearZ);
-                        if (hit.triangle == ReferenceImage::kNoHit) {
-                            sum += background;
-                            continue;
-                        }
-                        const RefTriangle& tri = hierarchy.triangle(hit.triangle);
-                        const dvec3 colour = shade(tri, hit.u, hit.v, hit.t * dir);
-                        sum += glm::clamp(colour / scale, dvec3(0.0), dvec3(1.0));
-                        depthSum += hit.t;
-                        ++hits;
-                        centreHit = firstOfDraw[tri.draw] + tri.source;
-                    }
-                }
-                out.colour.at(x, y) = sum / double(k * k);
-                out.hits.at(x, y) = static_cast<std::uint16_t>(hits);
-                if (hits > 0) out.depth.at(x, y) = depthSum / hits;
-                if (k == 1) out.triangle.at(x, y) = centreHit;
+                const PixelRays rays =
+                    castPixel(scene, hierarchy, shader, firstOfDraw, x, y, k, options.nearZ);
+                out.colour.at(x, y) = rays.colour;
+                out.hits.at(x, y) = static_cast<std::uint16_t>(rays.hits);
+                if (rays.hits > 0) out.depth.at(x, y) = rays.depth;
+                if (k == 1) out.triangle.at(x, y) = rays.lastHit;
             }
         }
     });
