@@ -39,7 +39,7 @@ inline __attribute__((always_inline)) Floats8 blend(const Ints8& mask, const Flo
                                      (~mask & reinterpret_cast<Ints8>(b)));
 }
 
-RL_MULTIVERSION std::size_t testSpan(float* depthRow, std::uint32_t* idRow, float* baryRow,
+RL_MULTIVERSION std::size_t spanKernel(float* depthRow, std::uint32_t* idRow, float* baryRow,
                                      std::int32_t n, const TrianglePlane& plane, double beta0,
                                      double gamma0, std::uint32_t id, bool winsOnTie,
                                      bool painted) {
@@ -125,7 +125,7 @@ RL_MULTIVERSION void fillFloats(float* row, std::size_t n, float value) {
 
 // The depth test of one span: the vector kernel, or the stage's own loop where the depth
 // range clips (seed 001's per-pixel clipping, which the kernel does not do).
-void testSpanFast(const Scene& scene, const TrianglePlane& plane, std::uint32_t id,
+void testSpanOnLanes(const Scene& scene, const TrianglePlane& plane, std::uint32_t id,
                   const Span& span, const DepthRows& rows, bool painted, DepthCounts& counts) {
     if (scene.conventions.depthRangeClip) {
         NullProbe none;
@@ -136,7 +136,7 @@ void testSpanFast(const Scene& scene, const TrianglePlane& plane, std::uint32_t 
     plane.spanStart(span.xBegin, span.y, scene.rules.sampleOffset, beta0, gamma0);
     const std::int32_t n = span.xEnd - span.xBegin;
     counts.fragments += static_cast<std::size_t>(n);
-    counts.passed += testSpan(rows.depth + span.xBegin, rows.ids + span.xBegin,
+    counts.passed += spanKernel(rows.depth + span.xBegin, rows.ids + span.xBegin,
                               rows.bary ? &rows.bary[span.xBegin].x : nullptr, n, plane, beta0,
                               gamma0, id, scene.conventions.depthWinsOnTie, painted);
 }
@@ -288,7 +288,7 @@ DepthCounts testChunks(const Scene& scene, const Projection& projection, const S
                 current = entry.triangle;
                 plane.emplace(projection, current, perspectiveDepth(scene));
             }
-            testSpanFast(scene, *plane, current, entry.span, rowOf(first, entry.span.y - y0),
+            testSpanOnLanes(scene, *plane, current, entry.span, rowOf(first, entry.span.y - y0),
                          out.painted, counts);
         }
         if (sink) {
@@ -405,6 +405,11 @@ DepthTest test(const DepthTestInput& in, int threads, DepthTest* recycled, bool 
 }
 
 }  // namespace
+
+void testSpan(const Scene& scene, const TrianglePlane& plane, std::uint32_t id, const Span& span,
+              const DepthRows& rows, bool painted, DepthCounts& counts) {
+    testSpanOnLanes(scene, plane, id, span, rows, painted, counts);
+}
 
 DepthTest depthTest(const DepthTestInput& in, int threads, DepthTest* recycled, bool keepDepth) {
     return test(in, threads, recycled, keepDepth, nullptr);

@@ -29,6 +29,11 @@ using BandSink = std::function<void(const TestedBand&)>;
 // visible triangles walk every row this way (multiversioned, like the kernels).
 int runEnd(const std::uint32_t* ids, int from, int limit, std::uint32_t t);
 
+// testSpanPixels (stages/depth_test.h) for one span, eight pixels at a time where no depth
+// range clips; the same bits and counts.
+void testSpan(const Scene& scene, const TrianglePlane& plane, std::uint32_t id, const Span& span,
+              const DepthRows& rows, bool painted, DepthCounts& counts);
+
 // threads: the rows are shared out between them in chunks (parallel.h); the result does not
 // depend on their number. recycled: an earlier frame's buffers, whose memory is reused (only
 // the columns it touched are cleared). keepDepth: false leaves DepthTest::depth empty.

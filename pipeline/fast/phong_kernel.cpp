@@ -16,6 +16,20 @@
 
 namespace rl {
 
+CoursePhongRun coursePhongRun(const Material& m, const ViewLight& light,
+                              const vec3& ambientIntensity, bool flip) {
+    CoursePhongRun run;
+    run.ambient = ambientIntensity * m.ka;
+    run.diffuse = light.intensity * m.od * m.kd;
+    run.specular = light.intensity * m.ks;
+    run.light = vec3(light.pView);
+    run.directional = light.pView.w == 0.0;
+    run.shininess = m.shininess;
+    run.flip = flip;
+    run.withSpecular = m.ks != 0.0f;
+    return run;
+}
+
 namespace {
 
 // Eight lanes, written with the compiler's vector extensions (GCC and Clang): each

@@ -9,6 +9,8 @@
 #include <cstdint>
 
 #include "math.h"
+#include "scene.h"
+#include "view_transform.h"
 
 namespace rl {
 
@@ -26,6 +28,11 @@ struct CoursePhongRun {
     bool flip = true;          // turn N toward the viewer
     bool withSpecular = true;  // ks != 0
 };
+
+// The run's constants for a material under one light (its position or direction in view
+// space), as phong() multiplies them: Ia ka, (Il Od) kd, Il ks.
+CoursePhongRun coursePhongRun(const Material& material, const ViewLight& light,
+                              const vec3& ambientIntensity, bool flip);
 
 struct CoursePhongCounts {
     std::size_t flipped = 0, lightBehind = 0, noSpecular = 0, noNormal = 0, clamped = 0;

@@ -40,17 +40,8 @@ Kernels kernelsFor(const FrameLighting& lighting) {
         k.pixels[d] =
             draw.shading == ShadingModel::Phong && !draw.flatNormals && !lighting.perspective();
         k.points[d] = draw.shading == ShadingModel::Gouraud || litPerTriangle(draw.shading);
-        const Material& m = draw.material;
-        const ViewLight& l = view.lights[0];
-        CoursePhongRun& run = k.runs[d];
-        run.ambient = scene.ambientIntensity * m.ka;
-        run.diffuse = l.intensity * m.od * m.kd;
-        run.specular = l.intensity * m.ks;
-        run.light = vec3(l.pView);
-        run.directional = l.pView.w == 0.0;
-        run.shininess = m.shininess;
-        run.flip = scene.conventions.flipNormalsTowardViewer;
-        run.withSpecular = m.ks != 0.0f;
+        k.runs[d] = coursePhongRun(draw.material, view.lights[0], scene.ambientIntensity,
+                                   scene.conventions.flipNormalsTowardViewer);
     }
     return k;
 }
