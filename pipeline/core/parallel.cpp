@@ -25,8 +25,8 @@ using Clock = std::chrono::steady_clock;
 constexpr auto kAwake = std::chrono::microseconds(500);
 // How long a caller waiting for the parts of a job it handed out keeps looking before it
 // sleeps: longer, as the parts are on their way. A caller that slept while a kept thread moved
-// to another core (leaveCore: up to 4 ms on a virtual machine) was woken on that thread's new
-// core, and the two took turns on it again.
+// to another core (leaveCore) would be woken on that thread's new core, and the two would take
+// turns on it again (docs/performance.md).
 constexpr auto kAwakeForParts = std::chrono::milliseconds(20);
 
 // The core the calling thread runs on, or -1 where that is not known.
@@ -58,12 +58,8 @@ bool onCoreOf(const std::atomic<int>* cores, int count) {
 // Waits until value differs from old: looks for `awake`, then sleeps until notified. While
 // it looks, it gives its core away (yield) between looks only when a thread it waits for was
 // last seen on the same core (cores[0 .. count), checked every 64 looks): that thread then
-// runs at once instead of when the waiter's time slice ends. With the two threads held to
-// one core, pausing alone made two threads slower than one (full-screen Gouraud: 5.3 ms a
-// frame against 3.2 with the yield). But yielding on a core of its own made things worse on
-// this virtual machine: a kept thread yielding while it waited for the next job often saw it
-// only 2.5 ms after it was published, frame after frame (full-screen Gouraud in bands, 2
-// threads: median 1.8-3.9 ms a frame against 1.40-1.46 with pauses alone).
+// runs at once instead of when the waiter's time slice ends. On a core of its own it only
+// pauses: yielding there let the scheduler keep it from the next job (docs/performance.md).
 template <typename T>
 T waitWhileEqual(const std::atomic<T>& value, T old, Clock::duration awake,
                  const std::atomic<int>* cores, int count) {
@@ -92,10 +88,8 @@ T waitWhileEqual(const std::atomic<T>& value, T old, Clock::duration awake,
 // is one, and leaves it free to be moved again: held to the one core for a moment, then given
 // back the cores it was allowed. A virtual machine's idle core can look busy to the scheduler
 // (its virtual processor stopped), so a kept thread woken by the caller often wakes on the
-// caller's own core and stays there for a hundred frames or more: the two threads then take
-// turns on one core. Full-screen Gouraud at 960x540 on 2 threads took 0.82-0.97 ms a frame
-// for the first hundred frames of a run, as on one thread (0.83), and 0.40 after; moving
-// (30 us to 4 ms, once in a while), 0.44-0.58 from the start.
+// caller's own core and stays there for many frames: the two threads then take turns on one
+// core (docs/performance.md).
 void leaveCore([[maybe_unused]] int core, [[maybe_unused]] const std::atomic<int>* taken,
                [[maybe_unused]] int takenCount) {
 #if defined(__linux__)
