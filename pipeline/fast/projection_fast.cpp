@@ -165,20 +165,12 @@ void projectDraw(const ProjectionInput& in, std::size_t d, Projection& out, int 
 Projection projection(const ProjectionInput& in, Diagnostics& diagnostics, int threads,
                       bool keepExact) {
     const Scene& scene = in.scene;
-    Projection out;
-    out.mode = scene.nearPlane.mode;
-    out.draws.resize(scene.draws.size());
+    // pView and pClip are written whole, shared out between the threads (Buffer: the sizing
+    // does not zero them first).
+    Projection out = projectionOf(in);
     double wMax = 0.0;
-    for (std::size_t d = 0; d < scene.draws.size(); ++d) {
-        DrawProjection& proj = out.draws[d];
-        proj.clipFromView = clipFromViewOf(scene, scene.draws[d]);
-        const std::size_t count = in.view.pView[d].size();
-        proj.originalVertexCount = static_cast<std::uint32_t>(count);
-        // Both written whole, shared out between the threads (Buffer: not zeroed first).
-        proj.pView.resize(count);
-        proj.pClip.resize(count);
-        wMax = std::max(wMax, toClipSpaceOnThreads(in, d, proj, threads));
-    }
+    for (std::size_t d = 0; d < scene.draws.size(); ++d)
+        wMax = std::max(wMax, toClipSpaceOnThreads(in, d, out.draws[d], threads));
     out.nearW = nearPlaneW(scene, wMax);
     for (std::size_t d = 0; d < scene.draws.size(); ++d)
         if (scene.draws[d].mesh) projectDraw(in, d, out, threads, keepExact);

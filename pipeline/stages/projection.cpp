@@ -93,6 +93,21 @@ std::size_t trianglesBehindEye(const Projection& projection, const Scene& scene)
 
 // Step 1 ---------------------------------------------------------------------------------
 
+Projection projectionOf(const ProjectionInput& in) {
+    Projection out;
+    out.mode = in.scene.nearPlane.mode;
+    out.draws.resize(in.scene.draws.size());
+    for (std::size_t d = 0; d < in.scene.draws.size(); ++d) {
+        DrawProjection& proj = out.draws[d];
+        proj.clipFromView = clipFromViewOf(in.scene, in.scene.draws[d]);
+        const std::size_t count = in.view.pView[d].size();
+        proj.originalVertexCount = static_cast<std::uint32_t>(count);
+        proj.pView.resize(count);
+        proj.pClip.resize(count);
+    }
+    return out;
+}
+
 double toClipSpace(const ProjectionInput& in, std::size_t d, DrawProjection& proj,
                    std::size_t first, std::size_t end) {
     const std::vector<dvec4>& pView = in.view.pView[d];
@@ -368,20 +383,11 @@ void DrawProjector::projectTriangle(std::size_t t) {
 
 Projection ProjectionStage::run(const ProjectionInput& in, Diagnostics& diagnostics) const {
     const Scene& scene = in.scene;
-    Projection out;
-    out.mode = scene.nearPlane.mode;
     // Step 1, every vertex to clip space first: the near plane is a plane of clip space.
-    out.draws.resize(scene.draws.size());
+    Projection out = projectionOf(in);
     double wMax = 0.0;
-    for (std::size_t d = 0; d < scene.draws.size(); ++d) {
-        DrawProjection& proj = out.draws[d];
-        proj.clipFromView = clipFromViewOf(scene, scene.draws[d]);
-        const std::size_t count = in.view.pView[d].size();
-        proj.originalVertexCount = static_cast<std::uint32_t>(count);
-        proj.pView.resize(count);
-        proj.pClip.resize(count);
-        wMax = std::max(wMax, toClipSpace(in, d, proj, 0, count));
-    }
+    for (std::size_t d = 0; d < scene.draws.size(); ++d)
+        wMax = std::max(wMax, toClipSpace(in, d, out.draws[d], 0, out.draws[d].pView.size()));
     out.nearW = nearPlaneW(scene, wMax);
     // Steps 2 to 6, draw by draw, vertex by vertex and triangle by triangle.
     for (std::size_t d = 0; d < scene.draws.size(); ++d) {

@@ -166,6 +166,9 @@ public:
     Projection run(const ProjectionInput& in, Diagnostics& diagnostics) const;
 };
 
+// A projection before step 1: its mode, and each draw's matrix and vertex count, with pView
+// and pClip sized for them (not yet written).
+Projection projectionOf(const ProjectionInput& in);
 // Step 1 for vertices [first, end) of draw d: pView kept, pClip = clipFromView * pView
 // (proj.clipFromView set, the arrays sized). Returns the largest finite w among them.
 double toClipSpace(const ProjectionInput& in, std::size_t d, DrawProjection& proj,
