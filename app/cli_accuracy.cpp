@@ -1,0 +1,235 @@
+// rasterlab-cli accuracy: each mode's error against its run time, measured against an exact
+// reference, as a table, a plot and heat maps.
+#include "cli_common.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QGuiApplication>
+
+#include <algorithm>
+#include <cmath>
+
+#include "accuracy.h"
+#include "accuracy_plot.h"
+#include "image_io.h"
+#include "parallel.h"
+
+namespace rasterlab::cli {
+
+namespace {
+
+// A list of whole numbers such as "1,2,4", each from least to most.
+bool parseList(const QString& text, int least, int most, std::vector<int>& values) {
+    values.clear();
+    for (const QString& part : text.split(QLatin1Char(','))) {
+        bool ok = false;
+        const int v = part.trimmed().toInt(&ok);
+        if (!ok || v < least || v > most) return false;
+        if (std::find(values.begin(), values.end(), v) == values.end()) values.push_back(v);
+    }
+    return !values.empty();
+}
+
+QString jsonNumber(double v, int decimals) {
+    return std::isfinite(v) ? QString::number(v, 'f', decimals) : lit("null");
+}
+
+}  // namespace
+
+int runAccuracy(const QStringList& arguments, QTextStream& out, QTextStream& err) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        lit("Render a scene in each mode (flat, Gouraud and Phong under the course, gpu and hw2 "
+            "rules, optionally supersampled), time each (median of --repeats frames) and compare "
+            "it with an exact reference: a ray cast per sample in double precision, exact "
+            "barycentrics, perspective-correct attributes, the same lighting formula. Colours "
+            "are compared as displayed, clamped and scaled to 0..1: RMSE, largest error and PSNR "
+            "over the pixels both cover, the share of pixels whose coverage differs, the share "
+            "within 1/255, and the relative error of the depth. --shading and --rules, when given, "
+            "keep only that shading model or rule set."));
+    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    const QCommandLineOption help({lit("h"), lit("help")}, lit("Show this help."));
+    const SceneOptions sceneOptions;
+    const QCommandLineOption sceneName = SceneOptions::generatedSceneOption();
+    const QCommandLineOption format(lit("format"), lit("md (default), csv or json."), lit("FORMAT"),
+                                    lit("md"));
+    const QCommandLineOption plot(lit("plot"), lit("Also draw error against time to a PNG."),
+                                  lit("FILE.png"));
+    const QCommandLineOption heatmaps(
+        lit("heatmaps"),
+        lit("Also write each mode's error heat map to DIR (error-<mode>.png: 0 to 8 byte "
+            "steps, dark blue to white; magenta where only one of the two covers a pixel)."),
+        lit("DIR"));
+    const QCommandLineOption repeats(lit("repeats"),
+                                     lit("Frames timed per mode; the median is reported "
+                                         "(default 5)."),
+                                     lit("N"), lit("5"));
+    const QCommandLineOption supersample(
+        lit("supersample"),
+        lit("Samples per pixel axis to measure, a list such as 1,2,4 (default 1): 2 is 2x2 "
+            "samples averaged, for the render and the reference alike."),
+        lit("LIST"), lit("1"));
+    const QCommandLineOption threads(
+        lit("threads"), lit("Threads to render with (default: every core)."), lit("N"));
+    parser.addOption(help);
+    sceneOptions.addTo(parser);
+    parser.addOptions({sceneName, format, plot, heatmaps, repeats, supersample, threads});
+    if (!parser.parse(arguments)) return usageError(err, parser.errorText());
+    if (parser.isSet(help)) {
+        out << commandHelp(parser, lit("accuracy"));
+        return ExitOk;
+    }
+    if (!parser.positionalArguments().isEmpty())
+        return usageError(
+            err, lit("unexpected argument '%1'").arg(parser.positionalArguments().first()));
+    rl::CourseSceneSettings settings;
+    if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
+    const QString outputFormat = parser.value(format);
+    if (outputFormat != lit("md") && outputFormat != lit("csv") && outputFormat != lit("json"))
+        return usageError(err,
+                          lit("--format expects md, csv or json, found '%1'").arg(outputFormat));
+    std::vector<int> repeatList, samples;
+    if (!parseList(parser.value(repeats), 1, 1000, repeatList) || repeatList.size() != 1)
+        return usageError(err, lit("--repeats expects a whole number from 1 to 1000, found '%1'")
+                                   .arg(parser.value(repeats)));
+    if (!parseList(parser.value(supersample), 1, 8, samples))
+        return usageError(err, lit("--supersample expects whole numbers from 1 to 8 separated "
+                                   "by commas, such as 1,2,4, found '%1'")
+                                   .arg(parser.value(supersample)));
+    int threadCount = 0;
+    if (parser.isSet(threads)) {
+        bool ok = false;
+        threadCount = parser.value(threads).toInt(&ok);
+        if (!ok || threadCount < 1 || threadCount > rl::kMaxThreads)
+            return usageError(err, lit("--threads expects a whole number from 1 to %1, found '%2'")
+                                       .arg(rl::kMaxThreads)
+                                       .arg(parser.value(threads)));
+    }
+    if (parser.isSet(plot) && !qobject_cast<QGuiApplication*>(QCoreApplication::instance()))
+        return usageError(err, lit("--plot needs the program's own start-up (run rasterlab-cli)"));
+
+    rl::Diagnostics diagnostics;
+    std::shared_ptr<const rl::Scene> scene;
+    QString sceneLabel;
+    if (int code =
+            sceneOptions.loadAny(parser, sceneName, settings, err, diagnostics, scene, sceneLabel);
+        code != ExitOk)
+        return code;
+    printDiagnostics(diagnostics, err);
+
+    std::vector<rl::ShadingModel> shadings = {rl::ShadingModel::Flat, rl::ShadingModel::Gouraud,
+                                              rl::ShadingModel::Phong};
+    if (parser.isSet(sceneOptions.shading)) shadings = {settings.shading};
+    std::vector<rl::RuleSet> ruleSets = {rl::RuleSet::Course, rl::RuleSet::Gpu, rl::RuleSet::Hw2};
+    if (parser.isSet(sceneOptions.rules)) ruleSets = {*rl::ruleSetOf(settings.rules)};
+    rl::AccuracyOptions options;
+    options.modes = rl::defaultAccuracyModes(shadings, ruleSets, samples);
+    options.repeats = repeatList.front();
+    options.threads = threadCount;
+    options.keepErrorMaps = parser.isSet(heatmaps);
+    auto report = rl::measureAccuracy(*scene, options);
+    if (!report) return inputError(err, report.error());
+
+    const auto number = [](double v, int decimals) { return QString::number(v, 'f', decimals); };
+    if (outputFormat == lit("json")) {
+        out << "[";
+        bool first = true;
+        for (const rl::AccuracyRow& row : report->rows) {
+            const rl::AccuracyMetrics& m = row.metrics;
+            out << (first ? "\n" : ",\n") << "  {\"mode\": \""
+                << rl::shadingModelName(row.mode.shading) << "\", \"rules\": \""
+                << rl::ruleSetName(row.mode.rules) << "\", \"precision\": \""
+                << QString::fromStdString(row.precision)
+                << "\", \"supersample\": " << row.mode.supersample * row.mode.supersample
+                << ", \"ms\": " << number(row.milliseconds, 3)
+                << ", \"rmse\": " << jsonNumber(m.rmse, 7)
+                << ", \"max_error\": " << jsonNumber(m.maxError, 7)
+                << ", \"psnr\": " << jsonNumber(m.psnr, 2)
+                << ", \"coverage_mismatch\": " << jsonNumber(m.coverageMismatchShare(), 6)
+                << ", \"within_1_255\": " << jsonNumber(m.within1Of255, 6)
+                << ", \"depth_error_mean\": " << jsonNumber(m.depthMeanRelative, 9)
+                << ", \"depth_error_max\": " << jsonNumber(m.depthMaxRelative, 9)
+                << ", \"worst_x\": " << m.worstX << ", \"worst_y\": " << m.worstY
+                << ", \"both_covered\": " << m.bothCovered
+                << ", \"either_covered\": " << m.eitherCovered
+                << ", \"coverage_mismatch_pixels\": " << m.coverageMismatch << "}";
+            first = false;
+        }
+        out << "\n]\n";
+    } else if (outputFormat == lit("csv")) {
+        out << "mode,rules,precision,supersample,ms,rmse,max_error,psnr,coverage_mismatch,"
+               "within_1_255,depth_error_mean,depth_error_max\n";
+        for (const rl::AccuracyRow& row : report->rows) {
+            const rl::AccuracyMetrics& m = row.metrics;
+            out << rl::shadingModelName(row.mode.shading) << "," << rl::ruleSetName(row.mode.rules)
+                << "," << QString::fromStdString(row.precision) << ","
+                << row.mode.supersample * row.mode.supersample << "," << number(row.milliseconds, 3)
+                << "," << number(m.rmse, 7) << "," << number(m.maxError, 7) << ","
+                << (std::isfinite(m.psnr) ? number(m.psnr, 2) : lit("inf")) << ","
+                << number(m.coverageMismatchShare(), 6) << "," << number(m.within1Of255, 6) << ","
+                << number(m.depthMeanRelative, 9) << "," << number(m.depthMaxRelative, 9) << "\n";
+        }
+    } else {
+        out << "Accuracy of " << sceneLabel << " at " << scene->width << "x" << scene->height
+            << " (" << scene->triangleCount() << " triangles) against the exact reference ("
+            << report->referenceRays << " rays, " << number(report->referenceMilliseconds, 0)
+            << " ms). Colour errors in byte steps (1/255) over the pixels both cover; time is "
+               "the median per frame.\n\n"
+            << "| mode | rules | precision | samples | ms | RMSE | max error | PSNR dB | "
+               "coverage mismatch | within 1/255 | depth error mean / max |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+        for (const rl::AccuracyRow& row : report->rows) {
+            const rl::AccuracyMetrics& m = row.metrics;
+            out << "| " << rl::shadingModelName(row.mode.shading) << " | "
+                << rl::ruleSetName(row.mode.rules) << " | " << QString::fromStdString(row.precision)
+                << " | " << row.mode.supersample * row.mode.supersample << " | "
+                << number(row.milliseconds, 2) << " | " << number(m.rmse * 255.0, 4) << " | "
+                << number(m.maxError * 255.0, 3)
+                << (m.worstX >= 0 ? lit(" at (%1, %2)").arg(m.worstX).arg(m.worstY) : QString())
+                << " | " << (std::isfinite(m.psnr) ? number(m.psnr, 1) : lit("inf")) << " | "
+                << number(100.0 * m.coverageMismatchShare(), 3) << " % (" << m.coverageMismatch
+                << " px) | " << number(100.0 * m.within1Of255, 3) << " % | "
+                << (std::isnan(m.depthMeanRelative)
+                        ? lit("-")
+                        : QString::number(m.depthMeanRelative, 'g', 2) + lit(" / ") +
+                              QString::number(m.depthMaxRelative, 'g', 2))
+                << " |\n";
+        }
+    }
+    if (parser.isSet(plot)) {
+        const QString title = lit("Error against run time: %1, %2x%3, %4 triangles")
+                                  .arg(sceneLabel)
+                                  .arg(scene->width)
+                                  .arg(scene->height)
+                                  .arg(scene->triangleCount());
+        QString error;
+        if (!savePng(accuracyPlot(report.value(), title), parser.value(plot), &error)) {
+            err << parser.value(plot) << ": cannot write the plot: " << error << "\n";
+            return ExitBadInput;
+        }
+        out << "wrote " << QFileInfo(parser.value(plot)).absoluteFilePath() << " (plot)\n";
+    }
+    if (parser.isSet(heatmaps)) {
+        const QDir folder(parser.value(heatmaps));
+        if (!QDir().mkpath(folder.path())) {
+            err << folder.path() << ": cannot create the folder\n";
+            return ExitBadInput;
+        }
+        for (const rl::AccuracyRow& row : report->rows) {
+            QString name = QString::fromStdString(rl::accuracyModeName(row.mode));
+            name.replace(QLatin1Char('/'), QLatin1Char('-')).replace(lit(" "), QString());
+            const QString path = folder.filePath(lit("error-%1.png").arg(name));
+            // One scale for every mode: 0 to 8 byte steps, larger errors white.
+            QString error;
+            if (!savePng(errorHeatMap(row.errorMap, 8.0f / 255.0f), path, &error)) {
+                err << path << ": cannot write the heat map: " << error << "\n";
+                return ExitBadInput;
+            }
+            out << "wrote " << QFileInfo(path).absoluteFilePath() << " (heat map)\n";
+        }
+    }
+    out.flush();
+    return ExitOk;
+}
+
+}  // namespace rasterlab::cli

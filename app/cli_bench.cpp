@@ -1,0 +1,203 @@
+// rasterlab-cli bench: a scene's frames timed, per stage, with the memory used.
+#include "cli_common.h"
+
+#include <QFile>
+
+#include <algorithm>
+#include <array>
+
+#include "parallel.h"
+#include "renderer.h"
+
+namespace rasterlab::cli {
+
+namespace {
+
+// A line of /proc/self/status in MiB (VmRSS: resident now, VmHWM: resident at its peak),
+// or -1 where the system has no such file.
+double memoryMiB(const char* key) {
+    QFile status(lit("/proc/self/status"));
+    if (!status.open(QIODevice::ReadOnly | QIODevice::Text)) return -1.0;
+    const QByteArray wanted(key);
+    for (const QByteArray& line : status.readAll().split('\n')) {
+        if (!line.startsWith(wanted)) continue;
+        const QList<QByteArray> fields = line.mid(wanted.size()).simplified().split(' ');
+        bool ok = false;
+        const double kib = fields.value(0).toDouble(&ok);
+        return ok ? kib / 1024.0 : -1.0;
+    }
+    return -1.0;
+}
+
+}  // namespace
+
+int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        lit("Render a scene again and again and print the time per frame: median, fastest "
+            "and slowest of --frames frames after --warmup untimed ones, shaded pixels and "
+            "triangles per second, and the time of each stage."));
+    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    const QCommandLineOption help({lit("h"), lit("help")}, lit("Show this help."));
+    const SceneOptions sceneOptions;
+    const QCommandLineOption sceneName = SceneOptions::generatedSceneOption();
+    const QCommandLineOption frames(lit("frames"), lit("Timed frames (default 21)."), lit("N"),
+                                    lit("21"));
+    const QCommandLineOption warmup(lit("warmup"), lit("Untimed frames first (default 1)."),
+                                    lit("N"), lit("1"));
+    const QCommandLineOption threads(
+        lit("threads"), lit("Threads to render with (default: every core)."), lit("N"));
+    const QCommandLineOption format(lit("format"), lit("md (default) or json."), lit("FORMAT"),
+                                    lit("md"));
+    const QCommandLineOption keepDepth(
+        lit("keep-depth"),
+        lit("Keep the whole z-buffer and the winning fragments in memory, as the window does "
+            "(by default only the band of rows a thread is testing is kept, shaded as soon as it "
+            "is tested when that pays, as render does without --depth-output)."));
+    parser.addOption(help);
+    sceneOptions.addTo(parser);
+    parser.addOptions({sceneName, frames, warmup, threads, format, keepDepth});
+    if (!parser.parse(arguments)) return usageError(err, parser.errorText());
+    if (parser.isSet(help)) {
+        out << commandHelp(parser, lit("bench"));
+        return ExitOk;
+    }
+    if (!parser.positionalArguments().isEmpty())
+        return usageError(
+            err, lit("unexpected argument '%1'").arg(parser.positionalArguments().first()));
+    rl::CourseSceneSettings settings;
+    if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
+    const auto count = [&](const QCommandLineOption& option, int least, int& value) {
+        bool ok = false;
+        value = parser.value(option).toInt(&ok);
+        return ok && value >= least;
+    };
+    int frameCount = 0, warmupCount = 0, threadCount = 0;
+    if (!count(frames, 1, frameCount))
+        return usageError(err, lit("--frames expects a whole number of at least 1, found '%1'")
+                                   .arg(parser.value(frames)));
+    if (!count(warmup, 0, warmupCount))
+        return usageError(err, lit("--warmup expects a whole number of at least 0, found '%1'")
+                                   .arg(parser.value(warmup)));
+    if (parser.isSet(threads) && (!count(threads, 1, threadCount) || threadCount > rl::kMaxThreads))
+        return usageError(err, lit("--threads expects a whole number from 1 to %1, found '%2'")
+                                   .arg(rl::kMaxThreads)
+                                   .arg(parser.value(threads)));
+    const QString outputFormat = parser.value(format);
+    if (outputFormat != lit("md") && outputFormat != lit("json"))
+        return usageError(err, lit("--format expects md or json, found '%1'").arg(outputFormat));
+
+    rl::Diagnostics diagnostics;
+    std::shared_ptr<const rl::Scene> scene;
+    QString sceneLabel;
+    if (int code =
+            sceneOptions.loadAny(parser, sceneName, settings, err, diagnostics, scene, sceneLabel);
+        code != ExitOk)
+        return code;
+    printDiagnostics(diagnostics, err);
+
+    rl::RenderOptions options;
+    options.threads = threadCount;  // 0: every core
+    options.keepDepth = parser.isSet(keepDepth);
+    options.keepFragments = options.keepDepth;
+    options.keepForViews = false;
+    rl::RenderContext context;  // buffers reused from frame to frame
+    std::vector<double> total;
+    std::vector<std::array<double, rl::kStageCount>> stages;
+    std::size_t covered = 0, fragments = 0;
+    bool inBands = false;  // depth test and shading run together (RenderOptions::keepFragments)
+    std::size_t triangleNormalsLeftOut = 0, vertexNormalsLeftOut = 0;  // draws (normalsRead)
+    int usedThreads = 0;
+    double firstRss = -1.0;  // resident memory after the first timed frame, MiB
+    for (int i = 0; i < warmupCount + frameCount; ++i) {
+        auto trace = rl::renderFrame(scene, options, &context);
+        if (!trace) return inputError(err, trace.error());
+        if (i < warmupCount) continue;
+        total.push_back(trace->totalMilliseconds);
+        stages.push_back(trace->stageMilliseconds);
+        // Counted on the last frame only: reading the whole triangle buffer between frames
+        // would bring it into the cache for the next one.
+        if (i + 1 == warmupCount + frameCount) covered = trace->depth->coveredPixels();
+        inBands = !trace->depth->fragmentsKept;
+        triangleNormalsLeftOut = trace->normals->triangleNormalsLeftOut;
+        vertexNormalsLeftOut = trace->normals->vertexNormalsLeftOut;
+        fragments = trace->depth->fragments;
+        usedThreads = trace->threads;
+        if (i == warmupCount) firstRss = memoryMiB("VmRSS:");
+    }
+    // Memory: the peak over the whole run (scene included), and whether the frames after
+    // the first one added any.
+    const double lastRss = memoryMiB("VmRSS:");
+    const double peakRss = memoryMiB("VmHWM:");
+    const auto median = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+    };
+    const double medianMs = median(total);
+    const double minMs = *std::min_element(total.begin(), total.end());
+    const double maxMs = *std::max_element(total.begin(), total.end());
+    std::array<double, rl::kStageCount> stageMedian{};
+    for (std::size_t k = 0; k < stageMedian.size(); ++k) {
+        std::vector<double> v;
+        for (const auto& f : stages) v.push_back(f[k]);
+        stageMedian[k] = median(v);
+    }
+    const double mpixels = double(covered) / (medianMs * 1e3);
+    const double triangles = double(scene->triangleCount()) / (medianMs / 1e3);
+    const QString shadingName = QString::fromUtf8(rl::shadingModelName(settings.shading));
+    const auto number = [](double v, int decimals) { return QString::number(v, 'f', decimals); };
+    if (outputFormat == lit("json")) {
+        out << "{\"scene\": \"" << sceneLabel << "\", \"shading\": \"" << shadingName
+            << "\", \"width\": " << scene->width << ", \"height\": " << scene->height
+            << ", \"triangles\": " << scene->triangleCount() << ", \"threads\": " << usedThreads
+            << ", \"frames\": " << frameCount
+            << ", \"z_buffer_kept\": " << (options.keepDepth ? "true" : "false")
+            << ", \"shaded_in_bands\": " << (inBands ? "true" : "false")
+            << ", \"draws_without_triangle_normals\": " << triangleNormalsLeftOut
+            << ", \"draws_without_vertex_normals\": " << vertexNormalsLeftOut
+            << ", \"median_ms\": " << number(medianMs, 3) << ", \"min_ms\": " << number(minMs, 3)
+            << ", \"max_ms\": " << number(maxMs, 3) << ", \"covered_pixels\": " << covered
+            << ", \"fragments\": " << fragments << ", \"mpixels_per_s\": " << number(mpixels, 2)
+            << ", \"triangles_per_s\": " << number(triangles, 0)
+            << ", \"peak_rss_mib\": " << number(peakRss, 1)
+            << ", \"rss_first_frame_mib\": " << number(firstRss, 1)
+            << ", \"rss_last_frame_mib\": " << number(lastRss, 1) << ", \"stages_ms\": {";
+        for (std::size_t k = 0; k < stageMedian.size(); ++k)
+            out << (k ? ", " : "") << "\"" << rl::stageName(rl::kAllStages[k])
+                << "\": " << number(stageMedian[k], 3);
+        out << "}}\n";
+    } else {
+        out << "| scene | size | shading | threads | triangles | median ms | min ms | max ms | "
+               "shaded Mpixel/s | triangles/s |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|\n"
+            << "| " << sceneLabel << " | " << scene->width << "x" << scene->height << " | "
+            << shadingName << " | " << usedThreads << " | " << scene->triangleCount() << " | "
+            << number(medianMs, 2) << " | " << number(minMs, 2) << " | " << number(maxMs, 2)
+            << " | " << number(mpixels, 1) << " | " << number(triangles, 0) << " |\n\n"
+            << "Memory: peak " << number(peakRss, 1) << " MiB resident; " << number(firstRss, 1)
+            << " MiB after the first timed frame, " << number(lastRss, 1)
+            << " MiB after the last. Z-buffer: "
+            << (options.keepDepth ? "kept whole (--keep-depth)"
+                                  : "a band of rows per thread, in the cache")
+            << "."
+            << (inBands ? " Depth test and shading: together, each chunk of rows shaded by the "
+                          "thread that tested it, from its band (the two stages' times are "
+                          "their sum split as the threads spent it)."
+                        : "")
+            << (triangleNormalsLeftOut + vertexNormalsLeftOut > 0
+                    ? lit(" Normals: only those the shading reads (left out: the triangles' of "
+                          "%1 draw(s), the vertices' of %2).")
+                          .arg(triangleNormalsLeftOut)
+                          .arg(vertexNormalsLeftOut)
+                    : QString())
+            << "\n\n"
+            << "| stage | median ms |\n|---|---|\n";
+        for (std::size_t k = 0; k < stageMedian.size(); ++k)
+            out << "| " << rl::stageName(rl::kAllStages[k]) << " | " << number(stageMedian[k], 3)
+                << " |\n";
+    }
+    out.flush();
+    return ExitOk;
+}
+
+}  // namespace rasterlab::cli

@@ -1,0 +1,199 @@
+#include "cli_common.h"
+
+#include <QFileInfo>
+#include <QRegularExpression>
+
+#include "benchmark_scenes.h"
+#include "default_scene_resource.h"
+#include "image_io.h"
+
+namespace rasterlab::cli {
+
+namespace {
+
+constexpr int kMaxImageSide = 16384;
+
+bool parseSize(const QString& text, int& width, int& height) {
+    static const QRegularExpression pattern(lit("^(\\d{1,6})[xX](\\d{1,6})$"));
+    const auto match = pattern.match(text);
+    if (!match.hasMatch()) return false;
+    width = match.captured(1).toInt();
+    height = match.captured(2).toInt();
+    return true;
+}
+
+}  // namespace
+
+void printDiagnostics(const rl::Diagnostics& diagnostics, QTextStream& err) {
+    for (const auto& d : diagnostics.items()) err << QString::fromStdString(d.toString()) << '\n';
+}
+
+int usageError(QTextStream& err, const QString& message) {
+    err << "rasterlab-cli: " << message << '\n'
+        << "Try 'rasterlab-cli --help' for more information.\n";
+    err.flush();
+    return ExitUsage;
+}
+
+int inputError(QTextStream& err, const rl::Error& error) {
+    err << QString::fromStdString(error.toString()) << '\n';
+    err.flush();
+    return ExitBadInput;
+}
+
+QString commandHelp(const QCommandLineParser& parser, const QString& command) {
+    QString text = parser.helpText();
+    const QString prefix = lit("Usage: ");
+    const qsizetype end = text.indexOf(lit(" [options]"));
+    const qsizetype lineEnd = text.indexOf(QLatin1Char('\n'));
+    if (text.startsWith(prefix) && end > 0 && (lineEnd < 0 || end < lineEnd))
+        text.replace(0, end, prefix + lit("rasterlab-cli ") + command);
+    return text;
+}
+
+bool parsePixel(const QString& text, int& x, int& y) {
+    static const QRegularExpression pattern(lit("^(\\d{1,6}),(\\d{1,6})$"));
+    const auto match = pattern.match(text);
+    if (!match.hasMatch()) return false;
+    x = match.captured(1).toInt();
+    y = match.captured(2).toInt();
+    return true;
+}
+
+bool writePng(const rl::Rgba8Image& image, const QString& path, QTextStream& out, QTextStream& err,
+              const QString& what) {
+    QString error;
+    if (!savePng(toQImage(image), path, &error)) {
+        err << path << ": cannot write the " << what << ": " << error << '\n';
+        return false;
+    }
+    out << "wrote " << QFileInfo(path).absoluteFilePath() << " (" << what << ", " << image.width
+        << "x" << image.height << ")\n";
+    return true;
+}
+
+int SceneOptions::settings(const QCommandLineParser& parser, QTextStream& err,
+                           rl::CourseSceneSettings& out) const {
+    if (!parseSize(parser.value(size), out.width, out.height) || out.width < 1 || out.height < 1)
+        return usageError(
+            err,
+            lit("--size expects WIDTHxHEIGHT such as 800x600, found '%1'").arg(parser.value(size)));
+    if (out.width > kMaxImageSide || out.height > kMaxImageSide)
+        return usageError(err, lit("--size %1 is larger than the limit of %2 pixels a side")
+                                   .arg(parser.value(size))
+                                   .arg(kMaxImageSide));
+    bool maxOk = false;
+    const qint64 pixelLimit = parser.value(maxPixels).toLongLong(&maxOk);
+    if (!maxOk || pixelLimit < 1)
+        return usageError(err, lit("--max-pixels expects a positive whole number, found '%1'")
+                                   .arg(parser.value(maxPixels)));
+    if (qint64(out.width) * out.height > pixelLimit)
+        return usageError(err, lit("--size %1 has %2 pixels, more than the limit of %3 (raise "
+                                   "it with --max-pixels if the memory is there)")
+                                   .arg(parser.value(size))
+                                   .arg(qint64(out.width) * out.height)
+                                   .arg(pixelLimit));
+    const auto model = rl::shadingModelFromName(parser.value(shading).toStdString());
+    if (!model)
+        return usageError(err, lit("--shading expects phong, flat, gouraud or painter, found '%1'")
+                                   .arg(parser.value(shading)));
+    out.shading = *model;
+    const auto ruleSet = rl::ruleSetFromName(parser.value(rules).toStdString());
+    if (!ruleSet)
+        return usageError(
+            err, lit("--rules expects course, gpu or hw2, found '%1'").arg(parser.value(rules)));
+    out.rules = rl::rulesOf(*ruleSet);
+    if (parser.isSet(near)) {
+        bool ok = false;
+        const double z = parser.value(near).toDouble(&ok);
+        if (!ok || !(z > 0.0))
+            return usageError(
+                err, lit("--near expects a positive number, found '%1'").arg(parser.value(near)));
+        out.nearPlane.fixedW = z;
+    }
+    if (parser.isSet(naive)) out.nearPlane.mode = rl::NearPlane::Mode::Naive;
+    if (parser.isSet(backFaces)) {
+        const QString faces = parser.value(backFaces);
+        if (faces != lit("draw") && faces != lit("cull"))
+            return usageError(err, lit("--back-faces expects draw or cull, found '%1'").arg(faces));
+        out.cullHiddenBackFaces = faces == lit("cull");
+    }
+    return ExitOk;
+}
+
+bool SceneOptions::anyFile(const QCommandLineParser& parser) const {
+    return parser.isSet(camera) || parser.isSet(lighting) || parser.isSet(object);
+}
+
+int SceneOptions::load(const QCommandLineParser& parser, const rl::CourseSceneSettings& settings,
+                       QTextStream& err, rl::Diagnostics& diagnostics,
+                       std::shared_ptr<const rl::Scene>& scene) const {
+    const auto cameraLayout = rl::cameraLayoutFromName(parser.value(cameraFormat).toStdString());
+    if (!cameraLayout)
+        return usageError(err, lit("--camera-format expects auto, ufpe, ufrpe6, ufrpe5 or "
+                                   "keyvalue, found '%1'")
+                                   .arg(parser.value(cameraFormat)));
+    if (parser.isSet(cameraFormat) && !parser.isSet(camera))
+        return usageError(err, lit("--camera-format applies to the file of --camera, which "
+                                   "is not given"));
+    const auto lightingLayout =
+        rl::lightingLayoutFromName(parser.value(lightingFormat).toStdString());
+    if (!lightingLayout)
+        return usageError(err, lit("--lighting-format expects auto, ufpe, multi, ufrpe or "
+                                   "keyvalue, found '%1'")
+                                   .arg(parser.value(lightingFormat)));
+    if (parser.isSet(lightingFormat) && !parser.isSet(lighting))
+        return usageError(err, lit("--lighting-format applies to the file of --lighting, "
+                                   "which is not given"));
+    const auto source = [&](const QCommandLineOption& option, CoursePart part) {
+        return parser.isSet(option) ? parser.value(option) : defaultScenePath(part);
+    };
+    auto c = loadCamera(source(camera, CoursePart::Camera), diagnostics, *cameraLayout);
+    if (!c) return inputError(err, c.error());
+    auto l = loadLighting(source(lighting, CoursePart::Lighting), diagnostics, *lightingLayout);
+    if (!l) return inputError(err, l.error());
+    auto o = loadObject(source(object, CoursePart::Object), diagnostics);
+    if (!o) return inputError(err, o.error());
+    scene = std::make_shared<const rl::Scene>(
+        rl::makeCourseScene({c.value(), l.value(), o.value()}, settings));
+    return ExitOk;
+}
+
+QStringList SceneOptions::generatedSceneNames() {
+    QStringList names;
+    for (const auto& s : rl::benchmarkScenes()) names << QString::fromStdString(s.name);
+    return names;
+}
+
+QCommandLineOption SceneOptions::generatedSceneOption() {
+    return {lit("scene"),
+            lit("A generated scene instead of course files: %1.")
+                .arg(generatedSceneNames().join(lit(", "))),
+            lit("NAME")};
+}
+
+int SceneOptions::loadAny(const QCommandLineParser& parser, const QCommandLineOption& sceneName,
+                          const rl::CourseSceneSettings& settings, QTextStream& err,
+                          rl::Diagnostics& diagnostics, std::shared_ptr<const rl::Scene>& scene,
+                          QString& sceneLabel) const {
+    if (parser.isSet(sceneName)) {
+        if (anyFile(parser))
+            return usageError(err, lit("--scene replaces --camera, --lighting and --object"));
+        auto generated = rl::makeBenchmarkScene(parser.value(sceneName).toStdString(),
+                                                settings.width, settings.height, settings.shading);
+        if (!generated)
+            return usageError(
+                err, lit("--scene expects one of %1, found '%2'")
+                         .arg(generatedSceneNames().join(lit(", ")), parser.value(sceneName)));
+        if (parser.isSet(backFaces)) generated->cullHiddenBackFaces = settings.cullHiddenBackFaces;
+        generated->rules = settings.rules;
+        scene = std::make_shared<const rl::Scene>(std::move(*generated));
+        sceneLabel = parser.value(sceneName);
+        return ExitOk;
+    }
+    if (int code = load(parser, settings, err, diagnostics, scene); code != ExitOk) return code;
+    sceneLabel = anyFile(parser) ? QString::fromStdString(scene->name) : lit("default scene");
+    return ExitOk;
+}
+
+}  // namespace rasterlab::cli
