@@ -1187,32 +1187,32 @@
         <translation>&amp;Algoritmo do pintor (flat, do mais distante ao mais próximo, sem teste de profundidade)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1163"/>
+        <location filename="../app/main_window.cpp" line="1162"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>avançar, voltar um passo (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1165"/>
+        <location filename="../app/main_window.cpp" line="1164"/>
         <source>Space</source>
         <translation>Barra de espaço</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1165"/>
+        <location filename="../app/main_window.cpp" line="1164"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>reproduzir / pausar (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1171"/>
+        <location filename="../app/main_window.cpp" line="1170"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>soltar o pixel escolhido (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1172"/>
+        <location filename="../app/main_window.cpp" line="1171"/>
         <source>presentation mode on / off</source>
         <translation>ligar / desligar o modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1175"/>
+        <location filename="../app/main_window.cpp" line="1174"/>
         <source>save, undo, redo</source>
         <translation>salvar, desfazer, refazer</translation>
     </message>
@@ -1447,72 +1447,72 @@
         <translation>&amp;Mesmo lado (recortar só os triângulos que cruzam o plano do olho)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="851"/>
+        <location filename="../app/main_window.cpp" line="850"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Todos os triângulos estão atrás da câmera (N aponta para longe do objeto?), então o recorte no plano próximo não deixa nada para desenhar. A fórmula da seed 000 divide por z mesmo assim: desenharia %1 dos %2 triângulos como a reflexão do objeto pelo olho, girada meia volta na tela, e o z-buffer (que guarda o menor z) guardaria o lado mais distante da câmera. A vista lateral da projeção mostra o olho, N e o objeto.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1107"/>
+        <location filename="../app/main_window.cpp" line="1106"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1160"/>
+        <location filename="../app/main_window.cpp" line="1159"/>
         <source>step forward</source>
         <translation>avançar um passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1161"/>
+        <location filename="../app/main_window.cpp" line="1160"/>
         <source>step back</source>
         <translation>voltar um passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1164"/>
+        <location filename="../app/main_window.cpp" line="1163"/>
         <source>play / pause</source>
         <translation>reproduzir / pausar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1166"/>
+        <location filename="../app/main_window.cpp" line="1165"/>
         <source>jump to the start / the end of the frame</source>
         <translation>ir ao início / ao fim do quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1167"/>
+        <location filename="../app/main_window.cpp" line="1166"/>
         <source>continue to the next breakpoint</source>
         <translation>continuar até o próximo ponto de parada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1168"/>
+        <location filename="../app/main_window.cpp" line="1167"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>avançar por etapa, triângulo, linha de varredura, segmento, pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1169"/>
+        <location filename="../app/main_window.cpp" line="1168"/>
         <source>show a stage&apos;s view</source>
         <translation>mostrar o painel de uma etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1170"/>
+        <location filename="../app/main_window.cpp" line="1169"/>
         <source>Click, arrows</source>
         <translation>Clique, setas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1170"/>
+        <location filename="../app/main_window.cpp" line="1169"/>
         <source>pick a pixel, move it by one</source>
         <translation>escolher um pixel, movê-lo de um em um</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1174"/>
+        <location filename="../app/main_window.cpp" line="1173"/>
         <source>open, export the image, export it as displayed</source>
         <translation>abrir, exportar a imagem, exportá-la como exibida</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1177"/>
+        <location filename="../app/main_window.cpp" line="1176"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>ajustar, tamanho real, aumentar zoom, diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1179"/>
+        <location filename="../app/main_window.cpp" line="1178"/>
         <source>Keyboard Shortcuts</source>
         <translation>Atalhos de teclado</translation>
     </message>
@@ -1581,18 +1581,18 @@
         <translation>Exportado %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="877"/>
+        <location filename="../app/main_window.cpp" line="876"/>
         <source>rendering...</source>
         <translation>renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="877"/>
+        <location filename="../app/main_window.cpp" line="876"/>
         <source>%1, rendering...</source>
         <translation>%1, renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="875"/>
-        <location filename="../app/main_window.cpp" line="1070"/>
+        <location filename="../app/main_window.cpp" line="874"/>
+        <location filename="../app/main_window.cpp" line="1069"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -1662,146 +1662,146 @@
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="885"/>
+        <location filename="../app/main_window.cpp" line="884"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparando o passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="885"/>
+        <location filename="../app/main_window.cpp" line="884"/>
         <source>Rendering</source>
         <translation>Renderizando</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1021"/>
+        <location filename="../app/main_window.cpp" line="1020"/>
         <source>Error: %1</source>
         <translation>Erro: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1037"/>
+        <location filename="../app/main_window.cpp" line="1036"/>
         <source>Files</source>
         <translation>Arquivos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1040"/>
+        <location filename="../app/main_window.cpp" line="1039"/>
         <source>Command file</source>
         <translation>Arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1041"/>
+        <location filename="../app/main_window.cpp" line="1040"/>
         <source>Image</source>
         <translation>Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1043"/>
+        <location filename="../app/main_window.cpp" line="1042"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vértices, %2 triângulos em %3 desenhos; %4 x %5 pixels; %6 luzes</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1053"/>
+        <location filename="../app/main_window.cpp" line="1052"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1054"/>
+        <location filename="../app/main_window.cpp" line="1053"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1055"/>
+        <location filename="../app/main_window.cpp" line="1054"/>
         <source>Object</source>
         <translation>Objeto</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1057"/>
+        <location filename="../app/main_window.cpp" line="1056"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vértices, %2 triângulos; %3 x %4 pixels, sombreamento %5</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="251"/>
-        <location filename="../app/main_window.cpp" line="1064"/>
+        <location filename="../app/main_window.cpp" line="1063"/>
         <source>Stages</source>
         <translation>Etapas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1071"/>
+        <location filename="../app/main_window.cpp" line="1070"/>
         <source>skipped: %1</source>
         <translation>omitida: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1074"/>
+        <location filename="../app/main_window.cpp" line="1073"/>
         <source>Counts</source>
         <translation>Contagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1075"/>
+        <location filename="../app/main_window.cpp" line="1074"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triângulos recortados no plano próximo: %1; atrás da câmera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1078"/>
+        <location filename="../app/main_window.cpp" line="1077"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Triângulos de área zero: %1 no espaço de vista, %2 na tela&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1081"/>
+        <location filename="../app/main_window.cpp" line="1080"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragmentos testados: %1; escritos: %2; rejeitados: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1085"/>
+        <location filename="../app/main_window.cpp" line="1084"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels sombreados: %1; normais voltadas para o observador: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; limitados a 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1109"/>
+        <location filename="../app/main_window.cpp" line="1108"/>
         <source>empty (+inf)</source>
         <translation>vazio (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1110"/>
+        <location filename="../app/main_window.cpp" line="1109"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   profundidade %6</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1126"/>
+        <location filename="../app/main_window.cpp" line="1125"/>
         <source>Open Command File</source>
         <translation>Abrir arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1127"/>
+        <location filename="../app/main_window.cpp" line="1126"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Arquivos de comandos (*.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1133"/>
+        <location filename="../app/main_window.cpp" line="1132"/>
         <source>Open</source>
         <translation>Abrir</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1133"/>
+        <location filename="../app/main_window.cpp" line="1132"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Arquivos de cena (*.byu *.cfg *.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1143"/>
+        <location filename="../app/main_window.cpp" line="1142"/>
         <source>Export PNG</source>
         <translation>Exportar PNG</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="426"/>
-        <location filename="../app/main_window.cpp" line="1143"/>
+        <location filename="../app/main_window.cpp" line="1142"/>
         <location filename="../app/main_window_export.cpp" line="157"/>
         <location filename="../app/main_window_export.cpp" line="165"/>
         <source>PNG images (*.png)</source>
         <translation>Imagens PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1148"/>
+        <location filename="../app/main_window.cpp" line="1147"/>
         <source>About RasterLab</source>
         <translation>Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1149"/>
+        <location filename="../app/main_window.cpp" line="1148"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;O pipeline clássico de rasterização por software, etapa por etapa: base da câmera, coordenadas de vista, normais, projeção, conversão por varredura, teste de profundidade e sombreamento.&lt;/p&gt;</translation>
     </message>
@@ -2551,513 +2551,513 @@
 <context>
     <name>rasterlab::PixelInspector</name>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="141"/>
+        <location filename="../views/pixel_inspector.cpp" line="126"/>
         <source>%1 = byte 255</source>
         <translation>%1 = byte 255</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="195"/>
+        <location filename="../views/pixel_inspector.cpp" line="180"/>
         <source>no normal</source>
         <translation>sem normal</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="267"/>
+        <location filename="../views/pixel_inspector.cpp" line="252"/>
         <source>in the plane of N and L</source>
         <translation>no plano de N e L</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="288"/>
+        <location filename="../views/pixel_inspector.cpp" line="273"/>
         <source>Step</source>
         <translation>Passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="288"/>
+        <location filename="../views/pixel_inspector.cpp" line="273"/>
         <source>Triangle</source>
         <translation>Triângulo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="288"/>
+        <location filename="../views/pixel_inspector.cpp" line="273"/>
         <source>Depth test</source>
         <translation>Teste de profundidade</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="288"/>
+        <location filename="../views/pixel_inspector.cpp" line="273"/>
         <source>Before</source>
         <translation>Antes</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="288"/>
+        <location filename="../views/pixel_inspector.cpp" line="273"/>
         <source>After</source>
         <translation>Depois</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="288"/>
+        <location filename="../views/pixel_inspector.cpp" line="273"/>
         <source>Result</source>
         <translation>Resultado</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="298"/>
+        <location filename="../views/pixel_inspector.cpp" line="283"/>
         <source>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</source>
         <translation>▶ ocupa o pixel no cursor de passo; as linhas cinza ainda não foram alcançadas. Selecione uma linha para ver sua iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="413"/>
+        <location filename="../views/pixel_history.cpp" line="23"/>
         <source>Pick a pixel on the image to see its history.</source>
         <translation>Escolha um pixel na imagem para ver seu histórico.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="434"/>
+        <location filename="../views/pixel_history.cpp" line="44"/>
         <source>%1 over %2</source>
         <translation>%1 sobre %2</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="435"/>
+        <location filename="../views/pixel_history.cpp" line="45"/>
         <source>painted, no depth test</source>
         <translation>pintado, sem teste de profundidade</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="442"/>
+        <location filename="../views/pixel_history.cpp" line="52"/>
         <source>written</source>
         <translation>escrito</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="450"/>
+        <location filename="../views/pixel_history.cpp" line="60"/>
         <source>rejected: the depth is not a number</source>
         <translation>rejeitado: a profundidade não é um número</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="452"/>
+        <location filename="../views/pixel_history.cpp" line="62"/>
         <source>rejected: as far, the earlier keeps it</source>
         <translation>rejeitado: mesma distância, o anterior fica</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="454"/>
+        <location filename="../views/pixel_history.cpp" line="64"/>
         <source>rejected: farther</source>
         <translation>rejeitado: mais distante</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="457"/>
+        <location filename="../views/pixel_history.cpp" line="67"/>
         <source>%1 outside [0, 1]</source>
         <translation>%1 fora de [0, 1]</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="458"/>
+        <location filename="../views/pixel_history.cpp" line="68"/>
         <source>discarded: depth outside [0, 1]</source>
         <translation>descartado: profundidade fora de [0, 1]</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="466"/>
+        <location filename="../views/pixel_history.cpp" line="76"/>
         <source>cleared to %1</source>
         <translation>limpo com %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="467"/>
+        <location filename="../views/pixel_history.cpp" line="77"/>
         <source>the background</source>
         <translation>o fundo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="473"/>
+        <location filename="../views/pixel_history.cpp" line="83"/>
         <source>the final pixel</source>
         <translation>o pixel final</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="503"/>
+        <location filename="../views/pixel_history.cpp" line="113"/>
         <source>Preparing the stepping of this frame: the pixel&apos;s history follows.</source>
         <translation>Preparando o passo a passo deste quadro: o histórico do pixel vem a seguir.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="512"/>
+        <location filename="../views/pixel_history.cpp" line="122"/>
         <source>The frame could not be traced again: %1</source>
         <translation>Não foi possível rastrear o quadro de novo: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="549"/>
+        <location filename="../views/pixel_history.cpp" line="159"/>
         <source>depth %1</source>
         <translation>profundidade %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="551"/>
+        <location filename="../views/pixel_history.cpp" line="161"/>
         <source>none</source>
         <translation>nenhum</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="552"/>
+        <location filename="../views/pixel_history.cpp" line="162"/>
         <source>depth %1 (cleared)</source>
         <translation>profundidade %1 (valor de limpeza)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="568"/>
+        <location filename="../views/pixel_history.cpp" line="178"/>
         <source>Nothing drew here: the pixel keeps the background %1.</source>
         <translation>Nada foi desenhado aqui: o pixel mantém o fundo %1.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="577"/>
+        <location filename="../views/pixel_history.cpp" line="187"/>
         <source>The only fragment was rejected: the pixel keeps the background.</source>
         <translation>O único fragmento foi rejeitado: o pixel mantém o fundo.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="578"/>
+        <location filename="../views/pixel_history.cpp" line="188"/>
         <source>Every fragment was rejected (%1): the pixel keeps the background.</source>
         <translation>Todos os fragmentos foram rejeitados (%1): o pixel mantém o fundo.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="582"/>
+        <location filename="../views/pixel_history.cpp" line="192"/>
         <source>Written by triangle %1</source>
         <translation>Escrito pelo triângulo %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="584"/>
+        <location filename="../views/pixel_history.cpp" line="194"/>
         <source>over 1 earlier write</source>
         <translation>sobre 1 escrita anterior</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="586"/>
+        <location filename="../views/pixel_history.cpp" line="196"/>
         <source>over %1 earlier writes</source>
         <translation>sobre %1 escritas anteriores</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="588"/>
+        <location filename="../views/pixel_history.cpp" line="198"/>
         <source>1 fragment rejected</source>
         <translation>1 fragmento rejeitado</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="590"/>
+        <location filename="../views/pixel_history.cpp" line="200"/>
         <source>%1 fragments rejected</source>
         <translation>%1 fragmentos rejeitados</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="606"/>
+        <location filename="../views/pixel_history.cpp" line="216"/>
         <source>black: the vertex colours mixed here are black</source>
         <translation>preto: as cores dos vértices misturadas aqui são pretas</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="608"/>
+        <location filename="../views/pixel_history.cpp" line="218"/>
         <source>black: the object colour is black</source>
         <translation>preto: a cor do objeto é preta</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="610"/>
+        <location filename="../views/pixel_history.cpp" line="220"/>
         <source>black: the light takes away what the ambient term adds</source>
         <translation>preto: a luz tira o que o termo ambiente acrescenta</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="612"/>
+        <location filename="../views/pixel_history.cpp" line="222"/>
         <source>black: zero normal and no ambient</source>
         <translation>preto: normal nula e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="614"/>
+        <location filename="../views/pixel_history.cpp" line="224"/>
         <source>black: no light and no ambient</source>
         <translation>preto: sem luz e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="616"/>
+        <location filename="../views/pixel_history.cpp" line="226"/>
         <source>black: the light is at the point and no ambient</source>
         <translation>preto: a luz está no próprio ponto e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="618"/>
+        <location filename="../views/pixel_history.cpp" line="228"/>
         <source>black: N.L &lt; 0 and no ambient</source>
         <translation>preto: N.L &lt; 0 e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="621"/>
+        <location filename="../views/pixel_history.cpp" line="231"/>
         <source>black: the diffuse and specular terms are 0 here and there is no ambient</source>
         <translation>preto: os termos difuso e especular valem 0 aqui e não há ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="680"/>
+        <location filename="../views/pixel_inspector.cpp" line="405"/>
         <source>Light %1, directional toward %2 (view), Il = %3</source>
         <translation>Luz %1, direcional, na direção %2 (vista), Il = %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="681"/>
+        <location filename="../views/pixel_inspector.cpp" line="406"/>
         <source>Light %1 at %2 (view), Il = %3</source>
         <translation>Luz %1 em %2 (vista), Il = %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="684"/>
+        <location filename="../views/pixel_inspector.cpp" line="409"/>
         <source>  at the point itself (L = 0): nothing</source>
         <translation>  no próprio ponto (L = 0): nada</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="689"/>
+        <location filename="../views/pixel_inspector.cpp" line="414"/>
         <source>att = 1 / (%1 + %2 × %3 + %4 × %3²) = %5</source>
         <translation>att = 1 / (%1 + %2 × %3 + %4 × %3²) = %5</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="693"/>
+        <location filename="../views/pixel_inspector.cpp" line="418"/>
         <source>d = %1, not attenuated</source>
         <translation>d = %1, sem atenuação</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="695"/>
+        <location filename="../views/pixel_inspector.cpp" line="420"/>
         <source>spot: −L.D = %1 &lt; cos %2° = %3, outside the cone: 0</source>
         <translation>spot: −L.D = %1 &lt; cos %2° = %3, fora do cone: 0</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="698"/>
+        <location filename="../views/pixel_inspector.cpp" line="423"/>
         <source>spot: −L.D = %1 ≥ cos %2° = %3, %1^%4 = %5</source>
         <translation>spot: −L.D = %1 ≥ cos %2° = %3, %1^%4 = %5</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="706"/>
+        <location filename="../views/pixel_inspector.cpp" line="431"/>
         <source>  N.L = %1 &lt; 0: behind the surface, nothing</source>
         <translation>  N.L = %1 &lt; 0: atrás da superfície, nada</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="708"/>
+        <location filename="../views/pixel_inspector.cpp" line="433"/>
         <source>  N.L = %1, %2 = %3: diffuse %4, specular %5</source>
         <translation>  N.L = %1, %2 = %3: difusa %4, especular %5</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="788"/>
+        <location filename="../views/pixel_inspector.cpp" line="513"/>
         <source>N flipped toward the viewer: V.N &lt; 0, so N := −N before lighting.</source>
         <translation>N invertida para o observador: V.N &lt; 0, então N := −N antes da iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="791"/>
+        <location filename="../views/pixel_inspector.cpp" line="516"/>
         <source>Zero normal: only degenerate triangles meet here, or the vertex normals cancel out; ambient only.</source>
         <translation>Normal nula: só triângulos degenerados se encontram aqui, ou as normais dos vértices se anulam; só ambiente.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="795"/>
+        <location filename="../views/pixel_inspector.cpp" line="520"/>
         <source>The light is at the point itself (L = 0): it adds nothing.</source>
         <translation>A luz está no próprio ponto (L = 0): não acrescenta nada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="798"/>
+        <location filename="../views/pixel_inspector.cpp" line="523"/>
         <source>N.L &lt; 0: the light is behind the surface; no diffuse, no specular.</source>
         <translation>N.L &lt; 0: a luz está atrás da superfície; sem difusa, sem especular.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="801"/>
+        <location filename="../views/pixel_inspector.cpp" line="526"/>
         <source>R.V &lt; 0: the reflected ray points away from the viewer; no specular.</source>
         <translation>R.V &lt; 0: o raio refletido aponta para longe do observador; sem especular.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="819"/>
+        <location filename="../views/pixel_inspector.cpp" line="544"/>
         <source>Outside the cone of light %1: −L.D = %2 is below cos %3° = %4; it adds nothing here.</source>
         <translation>Fora do cone da luz %1: −L.D = %2 está abaixo de cos %3° = %4; ela não acrescenta nada aqui.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="827"/>
+        <location filename="../views/pixel_inspector.cpp" line="552"/>
         <source>One-sided lighting: the back of the surface is seen (V.N &lt; 0) and N is not turned toward the viewer.</source>
         <translation>Iluminação de um lado só: vê-se o verso da superfície (V.N &lt; 0) e N não é voltada para o observador.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="835"/>
+        <location filename="../views/pixel_inspector.cpp" line="559"/>
         <source>Texture at (s, t) = (%1, %2): texel %3.</source>
         <translation>Textura em (s, t) = (%1, %2): texel %3.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="840"/>
+        <location filename="../views/pixel_inspector.cpp" line="564"/>
         <source>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1; the images&apos; (int)(s w + 0.5) mod w gives %2, which these rules follow.</source>
         <translation>O texto da seed 001 e as suas imagens de referência discordam aqui: o texel mais próximo de (s w, t h) depois de as coordenadas darem a volta é %1; o (int)(s w + 0.5) mod w das imagens dá %2, que estas regras seguem.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="844"/>
+        <location filename="../views/pixel_inspector.cpp" line="568"/>
         <source>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1, which these rules follow; the images&apos; (int)(s w + 0.5) mod w gives %2.</source>
         <translation>O texto da seed 001 e as suas imagens de referência discordam aqui: o texel mais próximo de (s w, t h) depois de as coordenadas darem a volta é %1, que estas regras seguem; o (int)(s w + 0.5) mod w das imagens dá %2.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="860"/>
+        <location filename="../views/pixel_inspector.cpp" line="584"/>
         <source>Clamped: %1 above the colour scale %2, written as byte 255.</source>
         <translation>Limitado: %1 acima da escala de cor %2, escrito como byte 255.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="869"/>
+        <location filename="../views/pixel_inspector.cpp" line="593"/>
         <source>%1 (clamped)</source>
         <translation>%1 (limitado)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="874"/>
+        <location filename="../views/pixel_inspector.cpp" line="598"/>
         <source>Gouraud shading, the vertices&apos; colours mixed</source>
         <translation>sombreamento de Gouraud, as cores dos vértices misturadas</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="875"/>
+        <location filename="../views/pixel_inspector.cpp" line="599"/>
         <source>C = α C1 + β C2 + γ C3</source>
         <translation>C = α C1 + β C2 + γ C3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="893"/>
+        <location filename="../views/pixel_inspector.cpp" line="617"/>
         <source>not lit, the object colour as it is</source>
         <translation>sem iluminação, a cor do objeto tal como é</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="894"/>
+        <location filename="../views/pixel_inspector.cpp" line="618"/>
         <source>I = O (the object colour)</source>
         <translation>I = O (a cor do objeto)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="901"/>
+        <location filename="../views/pixel_inspector.cpp" line="625"/>
         <source>the course&apos;s Phong lighting model</source>
         <translation>o modelo de iluminação de Phong do curso</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="902"/>
+        <location filename="../views/pixel_inspector.cpp" line="626"/>
         <source>Lambert with Blinn-Phong highlights (command files)</source>
         <translation>Lambert com brilhos de Blinn-Phong (arquivos de comandos)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="904"/>
+        <location filename="../views/pixel_inspector.cpp" line="628"/>
         <source>Painter&apos;s algorithm: lit as flat shading, once at the triangle&apos;s barycentre; the triangles are painted far to near without a depth test.</source>
         <translation>Algoritmo do pintor: iluminado como no sombreamento flat, uma vez no baricentro do triângulo; os triângulos são pintados do mais distante ao mais próximo, sem teste de profundidade.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="909"/>
+        <location filename="../views/pixel_inspector.cpp" line="633"/>
         <source>Flat shading: evaluated once, at the triangle&apos;s barycentre with the triangle&apos;s normal; every pixel of the triangle gets this colour.</source>
         <translation>Sombreamento flat: avaliado uma vez, no baricentro do triângulo, com a normal do triângulo; todo pixel do triângulo recebe esta cor.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="913"/>
+        <location filename="../views/pixel_inspector.cpp" line="637"/>
         <source>%1 lights: the diffuse and specular terms are sums over them; the numbers filled in are the first light&apos;s.</source>
         <translation>%1 luzes: os termos difuso e especular são somas sobre elas; os números preenchidos são os da primeira luz.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="921"/>
+        <location filename="../views/pixel_inspector.cpp" line="645"/>
         <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)</source>
         <translation>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="922"/>
+        <location filename="../views/pixel_inspector.cpp" line="646"/>
         <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)</source>
         <translation>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="923"/>
+        <location filename="../views/pixel_inspector.cpp" line="647"/>
         <source>att = 1 / (kc + kl d + kq d²) for a positional light, 1 for a directional one; spot = (−L.D)^exp inside the cone, 0 outside, 1 for a light that is no spot.</source>
         <translation>att = 1 / (kc + kl d + kq d²) para uma luz posicional, 1 para uma direcional; spot = (−L.D)^exp dentro do cone, 0 fora dele, 1 para uma luz que não é spot.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="928"/>
+        <location filename="../views/pixel_inspector.cpp" line="652"/>
         <source>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</source>
         <translation>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="935"/>
+        <location filename="../views/pixel_inspector.cpp" line="659"/>
         <source>I = Σ Il O (N.L) + Il (H.N)^s, over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L) + Il (H.N)^s, sobre as luzes com N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="937"/>
+        <location filename="../views/pixel_inspector.cpp" line="661"/>
         <source>I = Σ Il O (N.L), over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L), sobre as luzes com N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="993"/>
+        <location filename="../views/pixel_inspector.cpp" line="717"/>
         <source>%1 (the other lights)</source>
         <translation>%1 (as outras luzes)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1009"/>
+        <location filename="../views/pixel_inspector.cpp" line="733"/>
         <source>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</source>
         <translation>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1013"/>
+        <location filename="../views/pixel_inspector.cpp" line="737"/>
         <source>Il = %1, O = %2</source>
         <translation>Il = %1, O = %2</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1016"/>
+        <location filename="../views/pixel_inspector.cpp" line="740"/>
         <source>Ke = %1: the material&apos;s own light</source>
         <translation>Ke = %1: a luz própria do material</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1039"/>
+        <location filename="../views/pixel_inspector.cpp" line="764"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1045"/>
-        <location filename="../views/pixel_inspector.cpp" line="1133"/>
+        <location filename="../views/pixel_inspector.cpp" line="770"/>
+        <location filename="../views/pixel_inspector.cpp" line="858"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1053"/>
+        <location filename="../views/pixel_inspector.cpp" line="778"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>ocupa o pixel no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1054"/>
+        <location filename="../views/pixel_inspector.cpp" line="779"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>ainda não alcançado pelo cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1069"/>
+        <location filename="../views/pixel_inspector.cpp" line="794"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1070"/>
+        <location filename="../views/pixel_inspector.cpp" line="795"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Sem o passo a passo, as cores das escritas sobrescritas depois não são guardadas.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1114"/>
+        <location filename="../views/pixel_inspector.cpp" line="839"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Sem o passo a passo, só a iluminação do fragmento que ocupa o pixel no fim é registrada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1117"/>
+        <location filename="../views/pixel_inspector.cpp" line="842"/>
         <source>The cleared pixel is not lit.</source>
         <translation>O pixel limpo não é iluminado.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1120"/>
+        <location filename="../views/pixel_inspector.cpp" line="845"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>Nenhum fragmento ocupa o pixel no cursor: selecione uma linha do histórico para ver sua iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1132"/>
+        <location filename="../views/pixel_inspector.cpp" line="857"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Iluminação do passo %1, triângulo %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1137"/>
+        <location filename="../views/pixel_inspector.cpp" line="862"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejeitado: esta cor nunca foi escrita)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1150"/>
+        <location filename="../views/pixel_inspector.cpp" line="875"/>
         <source>object colour</source>
         <translation>cor do objeto</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1153"/>
+        <location filename="../views/pixel_inspector.cpp" line="878"/>
         <source>emission</source>
         <translation>emissão</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1155"/>
+        <location filename="../views/pixel_inspector.cpp" line="880"/>
         <source>ambient</source>
         <translation>ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1160"/>
+        <location filename="../views/pixel_inspector.cpp" line="885"/>
         <source>diffuse %1</source>
         <translation>difusa %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1163"/>
+        <location filename="../views/pixel_inspector.cpp" line="888"/>
         <source>specular %1</source>
         <translation>especular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1167"/>
+        <location filename="../views/pixel_inspector.cpp" line="892"/>
         <source>diffuse</source>
         <translation>difusa</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1169"/>
+        <location filename="../views/pixel_inspector.cpp" line="894"/>
         <source>specular</source>
         <translation>especular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="1197"/>
+        <location filename="../views/pixel_inspector.cpp" line="922"/>
         <source>No special case: every term applies as written.</source>
         <translation>Nenhum caso especial: todos os termos valem como escritos.</translation>
     </message>
@@ -3078,37 +3078,37 @@
 <context>
     <name>rasterlab::ProjectionSideView</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="596"/>
+        <location filename="../views/projection_view.cpp" line="597"/>
         <source>view z (= w) →</source>
         <translation>z de vista (= w) →</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="596"/>
+        <location filename="../views/projection_view.cpp" line="597"/>
         <source>clip w →</source>
         <translation>w de recorte →</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="600"/>
+        <location filename="../views/projection_view.cpp" line="601"/>
         <source>y ↑</source>
         <translation>y ↑</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="611"/>
+        <location filename="../views/projection_view.cpp" line="612"/>
         <source>eye plane w = 0: the plain divide clips nothing</source>
         <translation>plano do olho w = 0: a divisão simples não recorta nada</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="612"/>
+        <location filename="../views/projection_view.cpp" line="613"/>
         <source>near plane w = %1</source>
         <translation>plano próximo w = %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="615"/>
+        <location filename="../views/projection_view.cpp" line="616"/>
         <source>the object lies behind the eye (w &lt; 0): N points away from it</source>
         <translation>o objeto está atrás do olho (w &lt; 0): N aponta para longe dele</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="619"/>
+        <location filename="../views/projection_view.cpp" line="620"/>
         <source>● made by clipping: %1</source>
         <translation>● criados pelo recorte: %1</translation>
     </message>
@@ -3116,97 +3116,97 @@
 <context>
     <name>rasterlab::ProjectionView</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="660"/>
+        <location filename="../views/projection_view.cpp" line="661"/>
         <source>NDC</source>
         <translation>NDC</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="661"/>
+        <location filename="../views/projection_view.cpp" line="662"/>
         <source>Show the vertices in normalised device coordinates, [-1, 1]</source>
         <translation>Mostra os vértices em coordenadas normalizadas de dispositivo, [-1, 1]</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="664"/>
+        <location filename="../views/projection_view.cpp" line="665"/>
         <source>Pixels</source>
         <translation>Pixels</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="666"/>
+        <location filename="../views/projection_view.cpp" line="667"/>
         <source>Show the vertices in pixels, snapped as scan conversion receives them</source>
         <translation>Mostra os vértices em pixels, ajustados à grade como a conversão por varredura os recebe</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="675"/>
+        <location filename="../views/projection_view.cpp" line="676"/>
         <source>Fit</source>
         <translation>Ajustar</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="676"/>
+        <location filename="../views/projection_view.cpp" line="677"/>
         <source>Show the whole window and its margin</source>
         <translation>Mostra a janela inteira e sua margem</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="801"/>
+        <location filename="../views/projection_view.cpp" line="802"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="806"/>
+        <location filename="../views/projection_view.cpp" line="807"/>
         <source>inside %1, clipped %2 (%3 on screen), culled %4, back faces %5; behind %6, clipped away %7</source>
         <translation>dentro %1, recortados %2 (%3 na tela), descartados %4, faces traseiras %5; atrás %6, eliminados no recorte %7</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="817"/>
+        <location filename="../views/projection_view.cpp" line="818"/>
         <source>beyond the guard band %1</source>
         <translation>além da banda de guarda %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="819"/>
+        <location filename="../views/projection_view.cpp" line="820"/>
         <source>not finite %1</source>
         <translation>não finitos %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="821"/>
+        <location filename="../views/projection_view.cpp" line="822"/>
         <source>%1 drawn whole (inside): %2&lt;br&gt;</source>
         <translation>%1 desenhados inteiros (dentro): %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="822"/>
+        <location filename="../views/projection_view.cpp" line="823"/>
         <source>%1 clipped: %2, drawn as %3 fan triangles&lt;br&gt;</source>
         <translation>%1 recortados: %2, desenhados como %3 triângulos em leque&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="826"/>
+        <location filename="../views/projection_view.cpp" line="827"/>
         <source>%1 culled (clockwise on screen): %2; hidden back faces: %3&lt;br&gt;</source>
         <translation>%1 descartados (sentido horário na tela): %2; faces traseiras ocultas: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="830"/>
+        <location filename="../views/projection_view.cpp" line="831"/>
         <source>Nothing on screen: behind the near plane %1; outside a clip plane %2</source>
         <translation>Nada na tela: atrás do plano próximo %1; fora de um plano de recorte %2</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="833"/>
+        <location filename="../views/projection_view.cpp" line="834"/>
         <source>; beyond the guard band %1</source>
         <translation>; além da banda de guarda %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="834"/>
+        <location filename="../views/projection_view.cpp" line="835"/>
         <source>; not finite %1</source>
         <translation>; não finitos %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="838"/>
+        <location filename="../views/projection_view.cpp" line="839"/>
         <source>%1 screen triangles go to scan conversion. The plain divide clips nothing (seed 000 as written; seed 001&apos;s HW2): %2 wholly behind the eye, drawn mirrored through the centre; %3 across the eye plane, drawn wrong.</source>
         <translation>%1 triângulos de tela vão para a conversão por varredura. A divisão simples não recorta nada (a seed 000 como escrita; o HW2 da seed 001): %2 inteiramente atrás do olho, desenhados espelhados pelo centro; %3 atravessando o plano do olho, desenhados errados.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="846"/>
+        <location filename="../views/projection_view.cpp" line="847"/>
         <source>%1 screen triangles go to scan conversion; the near plane is w = %2.</source>
         <translation>%1 triângulos de tela vão para a conversão por varredura; o plano próximo é w = %2.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="851"/>
+        <location filename="../views/projection_view.cpp" line="852"/>
         <source>%1 selected, %2 being drawn</source>
         <translation>%1 selecionado, %2 em desenho</translation>
     </message>
@@ -3636,32 +3636,32 @@
         <translation>os triângulos são recortados no plano próximo antes da divisão, então nada no olho ou atrás dele é dividido pelo seu w (as regras do curso e as de GPU)</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="116"/>
+        <location filename="../views/stage_strip.cpp" line="117"/>
         <source>every vertex is divided by its w without clipping, as seed 000 writes it and seed 001&apos;s HW2 does (&quot;we won&apos;t add it&quot;): a triangle behind the eye lands mirrored through the centre, one across the eye plane wraps through infinity</source>
         <translation>cada vértice é dividido pelo seu w sem recorte, como a seed 000 escreve e o HW2 da seed 001 faz (&quot;não vamos adicioná-lo&quot;): um triângulo atrás do olho cai espelhado pelo centro, um que atravessa o plano do olho dá a volta pelo infinito</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="121"/>
+        <location filename="../views/stage_strip.cpp" line="123"/>
         <source>triangles wholly in front of or wholly behind the eye are divided as they are; those across the eye plane are clipped at the near plane</source>
         <translation>os triângulos inteiramente à frente ou inteiramente atrás do olho são divididos como estão; os que atravessam o plano do olho são recortados no plano próximo</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="137"/>
+        <location filename="../views/stage_strip.cpp" line="140"/>
         <source>(skipped)</source>
         <translation>(omitida)</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="141"/>
+        <location filename="../views/stage_strip.cpp" line="143"/>
         <source>%1 is skipped: %2</source>
         <translation>Etapa omitida (%1): %2</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="143"/>
+        <location filename="../views/stage_strip.cpp" line="145"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="162"/>
+        <location filename="../views/stage_strip.cpp" line="164"/>
         <source>while stepping, stages 5-7 run together, fragment by fragment</source>
         <translation>no passo a passo, as etapas 5-7 rodam juntas, fragmento a fragmento</translation>
     </message>

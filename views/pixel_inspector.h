@@ -21,6 +21,7 @@
 #include <optional>
 #include <vector>
 
+#include "pixel_history.h"
 #include "probe.h"
 #include "replay.h"
 
@@ -32,27 +33,6 @@ namespace rasterlab {
 class Inspection;
 class TermBars;
 class LightingVectors;
-
-// A row of the history: a fragment's depth test as the replay keeps it (the base: its
-// triangle, depth, stored depth, barycentrics and verdict) and how the table writes it.
-// The final row holds the fragment that wrote the pixel last (if any), with the depth left in
-// the buffer; the initial row only the cleared depth.
-struct PixelHistoryRow : rl::ReplayFragment {
-    enum class Kind : std::uint8_t { Initial, Fragment, Final };
-    Kind kind = Kind::Fragment;
-    // The fragment's number (FrameReplay::fragments(); its order in the traced frame's log
-    // without a replay), or kNoFragment.
-    std::uint32_t fragment = rl::kNoFragment;
-    std::uint32_t meshTriangle = 0;  // the draw's triangle number, from 1 (0: none)
-    QString triangleText;            // "12", or "12 (calice2.byu)" with several draws
-    QString depthText;               // "0.5 < 1", "2 >= 1", "cleared to +inf"
-    QString resultText;              // "written", "rejected: farther", ...
-    // The colour before and after, as bytes; none where it is not known (without a replay,
-    // the colours of the writes that were overwritten are not kept).
-    std::optional<std::array<std::uint8_t, 4>> before, after;
-    bool reached = true;    // at or before the stepping cursor
-    bool atCursor = false;  // holds the pixel at the cursor
-};
 
 enum class LightingFlag : std::uint8_t {
     Flipped,       // V.N < 0: N was turned toward the viewer
@@ -101,10 +81,10 @@ class PixelInspector : public QWidget {
 public:
     explicit PixelInspector(Inspection* inspection, QWidget* parent = nullptr);
 
-    QPoint pixel() const { return m_pixel; }
+    QPoint pixel() const { return m_history.pixel(); }
     // Initial, the fragments in drawing order, Final.
-    const std::vector<PixelHistoryRow>& history() const { return m_rows; }
-    QString verdictText() const { return m_verdict; }
+    const std::vector<PixelHistoryRow>& history() const { return m_history.rows(); }
+    QString verdictText() const { return m_history.verdict(); }
     // The history row whose lighting is shown (-1: none) and its breakdown. By default the
     // row holding the pixel at the cursor; a row selected (by hand, or here) stays while the
     // cursor moves, until another pixel is picked.
@@ -113,7 +93,7 @@ public:
     const std::optional<LightingBreakdown>& breakdown() const { return m_breakdown; }
     QString formulaText() const;  // the formula lines, joined by newlines
     // True when the history comes from tracing the frame again (no replay).
-    bool traced() const { return m_traced; }
+    bool traced() const { return m_history.traced(); }
     QTableWidget* historyTable() const { return m_table; }
 
 protected:
@@ -123,8 +103,6 @@ protected:
 private:
     void refresh();
     void applyPresentation();  // the fonts, larger when presenting
-    void rebuildHistory();
-    bool updateCursorMarks();  // true when a row's marks changed
     void updateBreakdown();
     // The lines of one light of the course's model: where it is, its factors, its terms.
     QStringList lightLines(std::size_t k, const rl::LightTerms& terms, const rl::FrameTrace& frame,
@@ -132,7 +110,6 @@ private:
     void fillTable();
     void fitTableHeight();
     void showBreakdown();
-    int defaultRow() const;
 
     Inspection* m_inspection = nullptr;
     // What the history was built from: rebuilt only when one of them changes. The cursor
@@ -143,11 +120,7 @@ private:
     bool m_builtWithoutReplay = false;  // built after the replay failed (traced)
     bool m_presenting = false;          // the fonts and sizes are presentation mode's
 
-    QPoint m_pixel{-1, -1};
-    std::vector<PixelHistoryRow> m_rows;
-    std::optional<rl::ShadeEvent> m_tracedShade;  // the final shading, without a replay
-    bool m_traced = false;
-    QString m_verdict;
+    PixelHistory m_history;
     int m_selected = -1;
     bool m_userSelected = false;  // a row the user chose stays until the pixel changes
     std::optional<LightingBreakdown> m_breakdown;
