@@ -2601,167 +2601,167 @@
         <translation>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="23"/>
+        <location filename="../views/pixel_history.cpp" line="126"/>
         <source>Pick a pixel on the image to see its history.</source>
         <translation>Pick a pixel on the image to see its history.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="44"/>
+        <location filename="../views/pixel_history.cpp" line="40"/>
         <source>%1 over %2</source>
         <translation>%1 over %2</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="45"/>
+        <location filename="../views/pixel_history.cpp" line="41"/>
         <source>painted, no depth test</source>
         <translation>painted, no depth test</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="52"/>
+        <location filename="../views/pixel_history.cpp" line="48"/>
         <source>written</source>
         <translation>written</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="60"/>
+        <location filename="../views/pixel_history.cpp" line="56"/>
         <source>rejected: the depth is not a number</source>
         <translation>rejected: the depth is not a number</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="62"/>
+        <location filename="../views/pixel_history.cpp" line="58"/>
         <source>rejected: as far, the earlier keeps it</source>
         <translation>rejected: as far, the earlier keeps it</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="64"/>
+        <location filename="../views/pixel_history.cpp" line="60"/>
         <source>rejected: farther</source>
         <translation>rejected: farther</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="67"/>
+        <location filename="../views/pixel_history.cpp" line="63"/>
         <source>%1 outside [0, 1]</source>
         <translation>%1 outside [0, 1]</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="68"/>
+        <location filename="../views/pixel_history.cpp" line="64"/>
         <source>discarded: depth outside [0, 1]</source>
         <translation>discarded: depth outside [0, 1]</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="76"/>
+        <location filename="../views/pixel_history.cpp" line="85"/>
         <source>cleared to %1</source>
         <translation>cleared to %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="77"/>
+        <location filename="../views/pixel_history.cpp" line="86"/>
         <source>the background</source>
         <translation>the background</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="83"/>
+        <location filename="../views/pixel_history.cpp" line="136"/>
         <source>the final pixel</source>
         <translation>the final pixel</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="113"/>
+        <location filename="../views/pixel_history.cpp" line="144"/>
         <source>Preparing the stepping of this frame: the pixel&apos;s history follows.</source>
         <translation>Preparing the stepping of this frame: the pixel&apos;s history follows.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="122"/>
+        <location filename="../views/pixel_history.cpp" line="184"/>
         <source>The frame could not be traced again: %1</source>
         <translation>The frame could not be traced again: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="159"/>
+        <location filename="../views/pixel_history.cpp" line="226"/>
         <source>depth %1</source>
         <translation>depth %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="161"/>
+        <location filename="../views/pixel_history.cpp" line="228"/>
         <source>none</source>
         <translation>none</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="162"/>
+        <location filename="../views/pixel_history.cpp" line="229"/>
         <source>depth %1 (cleared)</source>
         <translation>depth %1 (cleared)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="178"/>
+        <location filename="../views/pixel_history.cpp" line="248"/>
         <source>Nothing drew here: the pixel keeps the background %1.</source>
         <translation>Nothing drew here: the pixel keeps the background %1.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="187"/>
+        <location filename="../views/pixel_history.cpp" line="257"/>
         <source>The only fragment was rejected: the pixel keeps the background.</source>
         <translation>The only fragment was rejected: the pixel keeps the background.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="188"/>
+        <location filename="../views/pixel_history.cpp" line="258"/>
         <source>Every fragment was rejected (%1): the pixel keeps the background.</source>
         <translation>Every fragment was rejected (%1): the pixel keeps the background.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="192"/>
+        <location filename="../views/pixel_history.cpp" line="262"/>
         <source>Written by triangle %1</source>
         <translation>Written by triangle %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="194"/>
+        <location filename="../views/pixel_history.cpp" line="264"/>
         <source>over 1 earlier write</source>
         <translation>over 1 earlier write</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="196"/>
+        <location filename="../views/pixel_history.cpp" line="266"/>
         <source>over %1 earlier writes</source>
         <translation>over %1 earlier writes</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="198"/>
+        <location filename="../views/pixel_history.cpp" line="268"/>
         <source>1 fragment rejected</source>
         <translation>1 fragment rejected</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="200"/>
+        <location filename="../views/pixel_history.cpp" line="270"/>
         <source>%1 fragments rejected</source>
         <translation>%1 fragments rejected</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="216"/>
+        <location filename="../views/pixel_history.cpp" line="101"/>
         <source>black: the vertex colours mixed here are black</source>
         <translation>black: the vertex colours mixed here are black</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="218"/>
+        <location filename="../views/pixel_history.cpp" line="103"/>
         <source>black: the object colour is black</source>
         <translation>black: the object colour is black</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="220"/>
+        <location filename="../views/pixel_history.cpp" line="104"/>
         <source>black: the light takes away what the ambient term adds</source>
         <translation>black: the light takes away what the ambient term adds</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="222"/>
+        <location filename="../views/pixel_history.cpp" line="105"/>
         <source>black: zero normal and no ambient</source>
         <translation>black: zero normal and no ambient</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="224"/>
+        <location filename="../views/pixel_history.cpp" line="106"/>
         <source>black: no light and no ambient</source>
         <translation>black: no light and no ambient</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="226"/>
+        <location filename="../views/pixel_history.cpp" line="107"/>
         <source>black: the light is at the point and no ambient</source>
         <translation>black: the light is at the point and no ambient</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="228"/>
+        <location filename="../views/pixel_history.cpp" line="108"/>
         <source>black: N.L &lt; 0 and no ambient</source>
         <translation>black: N.L &lt; 0 and no ambient</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="231"/>
+        <location filename="../views/pixel_history.cpp" line="109"/>
         <source>black: the diffuse and specular terms are 0 here and there is no ambient</source>
         <translation>black: the diffuse and specular terms are 0 here and there is no ambient</translation>
     </message>

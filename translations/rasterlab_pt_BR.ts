@@ -2601,167 +2601,167 @@
         <translation>▶ ocupa o pixel no cursor de passo; as linhas cinza ainda não foram alcançadas. Selecione uma linha para ver sua iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="23"/>
+        <location filename="../views/pixel_history.cpp" line="126"/>
         <source>Pick a pixel on the image to see its history.</source>
         <translation>Escolha um pixel na imagem para ver seu histórico.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="44"/>
+        <location filename="../views/pixel_history.cpp" line="40"/>
         <source>%1 over %2</source>
         <translation>%1 sobre %2</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="45"/>
+        <location filename="../views/pixel_history.cpp" line="41"/>
         <source>painted, no depth test</source>
         <translation>pintado, sem teste de profundidade</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="52"/>
+        <location filename="../views/pixel_history.cpp" line="48"/>
         <source>written</source>
         <translation>escrito</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="60"/>
+        <location filename="../views/pixel_history.cpp" line="56"/>
         <source>rejected: the depth is not a number</source>
         <translation>rejeitado: a profundidade não é um número</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="62"/>
+        <location filename="../views/pixel_history.cpp" line="58"/>
         <source>rejected: as far, the earlier keeps it</source>
         <translation>rejeitado: mesma distância, o anterior fica</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="64"/>
+        <location filename="../views/pixel_history.cpp" line="60"/>
         <source>rejected: farther</source>
         <translation>rejeitado: mais distante</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="67"/>
+        <location filename="../views/pixel_history.cpp" line="63"/>
         <source>%1 outside [0, 1]</source>
         <translation>%1 fora de [0, 1]</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="68"/>
+        <location filename="../views/pixel_history.cpp" line="64"/>
         <source>discarded: depth outside [0, 1]</source>
         <translation>descartado: profundidade fora de [0, 1]</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="76"/>
+        <location filename="../views/pixel_history.cpp" line="85"/>
         <source>cleared to %1</source>
         <translation>limpo com %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="77"/>
+        <location filename="../views/pixel_history.cpp" line="86"/>
         <source>the background</source>
         <translation>o fundo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="83"/>
+        <location filename="../views/pixel_history.cpp" line="136"/>
         <source>the final pixel</source>
         <translation>o pixel final</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="113"/>
+        <location filename="../views/pixel_history.cpp" line="144"/>
         <source>Preparing the stepping of this frame: the pixel&apos;s history follows.</source>
         <translation>Preparando o passo a passo deste quadro: o histórico do pixel vem a seguir.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="122"/>
+        <location filename="../views/pixel_history.cpp" line="184"/>
         <source>The frame could not be traced again: %1</source>
         <translation>Não foi possível rastrear o quadro de novo: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="159"/>
+        <location filename="../views/pixel_history.cpp" line="226"/>
         <source>depth %1</source>
         <translation>profundidade %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="161"/>
+        <location filename="../views/pixel_history.cpp" line="228"/>
         <source>none</source>
         <translation>nenhum</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="162"/>
+        <location filename="../views/pixel_history.cpp" line="229"/>
         <source>depth %1 (cleared)</source>
         <translation>profundidade %1 (valor de limpeza)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="178"/>
+        <location filename="../views/pixel_history.cpp" line="248"/>
         <source>Nothing drew here: the pixel keeps the background %1.</source>
         <translation>Nada foi desenhado aqui: o pixel mantém o fundo %1.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="187"/>
+        <location filename="../views/pixel_history.cpp" line="257"/>
         <source>The only fragment was rejected: the pixel keeps the background.</source>
         <translation>O único fragmento foi rejeitado: o pixel mantém o fundo.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="188"/>
+        <location filename="../views/pixel_history.cpp" line="258"/>
         <source>Every fragment was rejected (%1): the pixel keeps the background.</source>
         <translation>Todos os fragmentos foram rejeitados (%1): o pixel mantém o fundo.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="192"/>
+        <location filename="../views/pixel_history.cpp" line="262"/>
         <source>Written by triangle %1</source>
         <translation>Escrito pelo triângulo %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="194"/>
+        <location filename="../views/pixel_history.cpp" line="264"/>
         <source>over 1 earlier write</source>
         <translation>sobre 1 escrita anterior</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="196"/>
+        <location filename="../views/pixel_history.cpp" line="266"/>
         <source>over %1 earlier writes</source>
         <translation>sobre %1 escritas anteriores</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="198"/>
+        <location filename="../views/pixel_history.cpp" line="268"/>
         <source>1 fragment rejected</source>
         <translation>1 fragmento rejeitado</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="200"/>
+        <location filename="../views/pixel_history.cpp" line="270"/>
         <source>%1 fragments rejected</source>
         <translation>%1 fragmentos rejeitados</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="216"/>
+        <location filename="../views/pixel_history.cpp" line="101"/>
         <source>black: the vertex colours mixed here are black</source>
         <translation>preto: as cores dos vértices misturadas aqui são pretas</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="218"/>
+        <location filename="../views/pixel_history.cpp" line="103"/>
         <source>black: the object colour is black</source>
         <translation>preto: a cor do objeto é preta</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="220"/>
+        <location filename="../views/pixel_history.cpp" line="104"/>
         <source>black: the light takes away what the ambient term adds</source>
         <translation>preto: a luz tira o que o termo ambiente acrescenta</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="222"/>
+        <location filename="../views/pixel_history.cpp" line="105"/>
         <source>black: zero normal and no ambient</source>
         <translation>preto: normal nula e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="224"/>
+        <location filename="../views/pixel_history.cpp" line="106"/>
         <source>black: no light and no ambient</source>
         <translation>preto: sem luz e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="226"/>
+        <location filename="../views/pixel_history.cpp" line="107"/>
         <source>black: the light is at the point and no ambient</source>
         <translation>preto: a luz está no próprio ponto e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="228"/>
+        <location filename="../views/pixel_history.cpp" line="108"/>
         <source>black: N.L &lt; 0 and no ambient</source>
         <translation>preto: N.L &lt; 0 e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="231"/>
+        <location filename="../views/pixel_history.cpp" line="109"/>
         <source>black: the diffuse and specular terms are 0 here and there is no ambient</source>
         <translation>preto: os termos difuso e especular valem 0 aqui e não há ambiente</translation>
     </message>

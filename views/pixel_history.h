@@ -65,7 +65,19 @@ public:
     // The final shading, without a replay.
     const std::optional<rl::ShadeEvent>& tracedShade() const { return m_tracedShade; }
 
+    struct Source;  // what the rows are worked out from (pixel_history.cpp)
+
 private:
+    // rebuild's parts: the fragments' rows from the replay, or from the frame traced again
+    // (none when it cannot be: the verdict says why), each returning the row of the last
+    // write (0: none); the final row; the verdict.
+    std::uint32_t addReplayedRows(const Source& source, const rl::FrameReplay& replay,
+                                  PixelHistoryRow& finalRow);
+    std::optional<std::uint32_t> addTracedRows(const Source& source, PixelHistoryRow& finalRow);
+    void addFinalRow(const Source& source, PixelHistoryRow finalRow, std::uint32_t finalWriterRow);
+    void writeVerdict(const Source& source, const rl::FrameReplay* replay,
+                      std::uint32_t finalWriterRow);
+
     QPoint m_pixel{-1, -1};
     std::vector<PixelHistoryRow> m_rows;
     std::optional<rl::ShadeEvent> m_tracedShade;
