@@ -2766,202 +2766,202 @@
         <translation>black: the diffuse and specular terms are 0 here and there is no ambient</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="36"/>
+        <location filename="../views/lighting_breakdown.cpp" line="389"/>
         <source>Light %1, directional toward %2 (view), Il = %3</source>
         <translation>Light %1, directional toward %2 (view), Il = %3</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="37"/>
+        <location filename="../views/lighting_breakdown.cpp" line="390"/>
         <source>Light %1 at %2 (view), Il = %3</source>
         <translation>Light %1 at %2 (view), Il = %3</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="40"/>
+        <location filename="../views/lighting_breakdown.cpp" line="393"/>
         <source>  at the point itself (L = 0): nothing</source>
         <translation>  at the point itself (L = 0): nothing</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="45"/>
+        <location filename="../views/lighting_breakdown.cpp" line="398"/>
         <source>att = 1 / (%1 + %2 × %3 + %4 × %3²) = %5</source>
         <translation>att = 1 / (%1 + %2 × %3 + %4 × %3²) = %5</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="49"/>
+        <location filename="../views/lighting_breakdown.cpp" line="402"/>
         <source>d = %1, not attenuated</source>
         <translation>d = %1, not attenuated</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="51"/>
+        <location filename="../views/lighting_breakdown.cpp" line="404"/>
         <source>spot: −L.D = %1 &lt; cos %2° = %3, outside the cone: 0</source>
         <translation>spot: −L.D = %1 &lt; cos %2° = %3, outside the cone: 0</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="54"/>
+        <location filename="../views/lighting_breakdown.cpp" line="407"/>
         <source>spot: −L.D = %1 ≥ cos %2° = %3, %1^%4 = %5</source>
         <translation>spot: −L.D = %1 ≥ cos %2° = %3, %1^%4 = %5</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="62"/>
+        <location filename="../views/lighting_breakdown.cpp" line="415"/>
         <source>  N.L = %1 &lt; 0: behind the surface, nothing</source>
         <translation>  N.L = %1 &lt; 0: behind the surface, nothing</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="64"/>
+        <location filename="../views/lighting_breakdown.cpp" line="417"/>
         <source>  N.L = %1, %2 = %3: diffuse %4, specular %5</source>
         <translation>  N.L = %1, %2 = %3: diffuse %4, specular %5</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="124"/>
+        <location filename="../views/lighting_breakdown.cpp" line="133"/>
         <source>N flipped toward the viewer: V.N &lt; 0, so N := −N before lighting.</source>
         <translation>N flipped toward the viewer: V.N &lt; 0, so N := −N before lighting.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="127"/>
+        <location filename="../views/lighting_breakdown.cpp" line="136"/>
         <source>Zero normal: only degenerate triangles meet here, or the vertex normals cancel out; ambient only.</source>
         <translation>Zero normal: only degenerate triangles meet here, or the vertex normals cancel out; ambient only.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="131"/>
+        <location filename="../views/lighting_breakdown.cpp" line="140"/>
         <source>The light is at the point itself (L = 0): it adds nothing.</source>
         <translation>The light is at the point itself (L = 0): it adds nothing.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="134"/>
+        <location filename="../views/lighting_breakdown.cpp" line="143"/>
         <source>N.L &lt; 0: the light is behind the surface; no diffuse, no specular.</source>
         <translation>N.L &lt; 0: the light is behind the surface; no diffuse, no specular.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="137"/>
+        <location filename="../views/lighting_breakdown.cpp" line="146"/>
         <source>R.V &lt; 0: the reflected ray points away from the viewer; no specular.</source>
         <translation>R.V &lt; 0: the reflected ray points away from the viewer; no specular.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="155"/>
+        <location filename="../views/lighting_breakdown.cpp" line="163"/>
         <source>Outside the cone of light %1: −L.D = %2 is below cos %3° = %4; it adds nothing here.</source>
         <translation>Outside the cone of light %1: −L.D = %2 is below cos %3° = %4; it adds nothing here.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="163"/>
+        <location filename="../views/lighting_breakdown.cpp" line="171"/>
         <source>One-sided lighting: the back of the surface is seen (V.N &lt; 0) and N is not turned toward the viewer.</source>
         <translation>One-sided lighting: the back of the surface is seen (V.N &lt; 0) and N is not turned toward the viewer.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="170"/>
+        <location filename="../views/lighting_breakdown.cpp" line="181"/>
         <source>Texture at (s, t) = (%1, %2): texel %3.</source>
         <translation>Texture at (s, t) = (%1, %2): texel %3.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="175"/>
+        <location filename="../views/lighting_breakdown.cpp" line="186"/>
         <source>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1; the images&apos; (int)(s w + 0.5) mod w gives %2, which these rules follow.</source>
         <translation>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1; the images&apos; (int)(s w + 0.5) mod w gives %2, which these rules follow.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="179"/>
+        <location filename="../views/lighting_breakdown.cpp" line="190"/>
         <source>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1, which these rules follow; the images&apos; (int)(s w + 0.5) mod w gives %2.</source>
         <translation>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1, which these rules follow; the images&apos; (int)(s w + 0.5) mod w gives %2.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="195"/>
+        <location filename="../views/lighting_breakdown.cpp" line="207"/>
         <source>Clamped: %1 above the colour scale %2, written as byte 255.</source>
         <translation>Clamped: %1 above the colour scale %2, written as byte 255.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="204"/>
+        <location filename="../views/lighting_breakdown.cpp" line="216"/>
         <source>%1 (clamped)</source>
         <translation>%1 (clamped)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="209"/>
+        <location filename="../views/lighting_breakdown.cpp" line="221"/>
         <source>Gouraud shading, the vertices&apos; colours mixed</source>
         <translation>Gouraud shading, the vertices&apos; colours mixed</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="210"/>
+        <location filename="../views/lighting_breakdown.cpp" line="222"/>
         <source>C = α C1 + β C2 + γ C3</source>
         <translation>C = α C1 + β C2 + γ C3</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="228"/>
+        <location filename="../views/lighting_breakdown.cpp" line="238"/>
         <source>not lit, the object colour as it is</source>
         <translation>not lit, the object colour as it is</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="229"/>
+        <location filename="../views/lighting_breakdown.cpp" line="239"/>
         <source>I = O (the object colour)</source>
         <translation>I = O (the object colour)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="236"/>
+        <location filename="../views/lighting_breakdown.cpp" line="248"/>
         <source>the course&apos;s Phong lighting model</source>
         <translation>the course&apos;s Phong lighting model</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="237"/>
+        <location filename="../views/lighting_breakdown.cpp" line="249"/>
         <source>Lambert with Blinn-Phong highlights (command files)</source>
         <translation>Lambert with Blinn-Phong highlights (command files)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="239"/>
+        <location filename="../views/lighting_breakdown.cpp" line="251"/>
         <source>Painter&apos;s algorithm: lit as flat shading, once at the triangle&apos;s barycentre; the triangles are painted far to near without a depth test.</source>
         <translation>Painter&apos;s algorithm: lit as flat shading, once at the triangle&apos;s barycentre; the triangles are painted far to near without a depth test.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="244"/>
+        <location filename="../views/lighting_breakdown.cpp" line="256"/>
         <source>Flat shading: evaluated once, at the triangle&apos;s barycentre with the triangle&apos;s normal; every pixel of the triangle gets this colour.</source>
         <translation>Flat shading: evaluated once, at the triangle&apos;s barycentre with the triangle&apos;s normal; every pixel of the triangle gets this colour.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="248"/>
+        <location filename="../views/lighting_breakdown.cpp" line="260"/>
         <source>%1 lights: the diffuse and specular terms are sums over them; the numbers filled in are the first light&apos;s.</source>
         <translation>%1 lights: the diffuse and specular terms are sums over them; the numbers filled in are the first light&apos;s.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="256"/>
+        <location filename="../views/lighting_breakdown.cpp" line="279"/>
         <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)</source>
         <translation>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="257"/>
+        <location filename="../views/lighting_breakdown.cpp" line="280"/>
         <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)</source>
         <translation>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="258"/>
+        <location filename="../views/lighting_breakdown.cpp" line="281"/>
         <source>att = 1 / (kc + kl d + kq d²) for a positional light, 1 for a directional one; spot = (−L.D)^exp inside the cone, 0 outside, 1 for a light that is no spot.</source>
         <translation>att = 1 / (kc + kl d + kq d²) for a positional light, 1 for a directional one; spot = (−L.D)^exp inside the cone, 0 outside, 1 for a light that is no spot.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="263"/>
+        <location filename="../views/lighting_breakdown.cpp" line="286"/>
         <source>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</source>
         <translation>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="270"/>
+        <location filename="../views/lighting_breakdown.cpp" line="293"/>
         <source>I = Σ Il O (N.L) + Il (H.N)^s, over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L) + Il (H.N)^s, over the lights with N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="272"/>
+        <location filename="../views/lighting_breakdown.cpp" line="295"/>
         <source>I = Σ Il O (N.L), over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L), over the lights with N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="328"/>
+        <location filename="../views/lighting_breakdown.cpp" line="352"/>
         <source>%1 (the other lights)</source>
         <translation>%1 (the other lights)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="344"/>
+        <location filename="../views/lighting_breakdown.cpp" line="371"/>
         <source>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</source>
         <translation>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="348"/>
+        <location filename="../views/lighting_breakdown.cpp" line="375"/>
         <source>Il = %1, O = %2</source>
         <translation>Il = %1, O = %2</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="351"/>
+        <location filename="../views/lighting_breakdown.cpp" line="378"/>
         <source>Ke = %1: the material&apos;s own light</source>
         <translation>Ke = %1: the material&apos;s own light</translation>
     </message>
