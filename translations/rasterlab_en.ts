@@ -2193,253 +2193,253 @@
 <context>
     <name>rasterlab::NormalsView</name>
     <message>
-        <location filename="../views/normals_view.cpp" line="162"/>
+        <location filename="../views/normals_model.cpp" line="141"/>
         <source>the draw is unlit: shading reads no normal</source>
         <translation>the draw is unlit: shading reads no normal</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="187"/>
+        <location filename="../views/normals_model.cpp" line="167"/>
         <source>the interpolated normal is zero</source>
         <translation>the interpolated normal is zero</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="402"/>
+        <location filename="../views/normals_view.cpp" line="31"/>
         <source>Triangle normals</source>
         <translation>Triangle normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="405"/>
+        <location filename="../views/normals_view.cpp" line="34"/>
         <source>Vertex normals</source>
         <translation>Vertex normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="408"/>
+        <location filename="../views/normals_view.cpp" line="37"/>
         <source>Only on triangles that are seen</source>
         <translation>Only on triangles that are seen</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="411"/>
+        <location filename="../views/normals_view.cpp" line="40"/>
         <source>Hairs only on the triangles that hold a pixel at the end of the frame, and on their corners</source>
         <translation>Hairs only on the triangles that hold a pixel at the end of the frame, and on their corners</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="414"/>
+        <location filename="../views/normals_view.cpp" line="43"/>
         <source>Normals by M (wrong)</source>
         <translation>Normals by M (wrong)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="417"/>
+        <location filename="../views/normals_view.cpp" line="46"/>
         <source>Beside each triangle normal, the model normal carried by viewFromModel itself instead of its inverse transpose: it leaves the surface under a non-uniform scale (set one in the Animation panel)</source>
         <translation>Beside each triangle normal, the model normal carried by viewFromModel itself instead of its inverse transpose: it leaves the surface under a non-uniform scale (set one in the Animation panel)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="449"/>
+        <location filename="../views/normals_view.cpp" line="78"/>
         <source>Per pixel at the stepping cursor, the unit normal shading uses there: the vertex normals interpolated with the pixel&apos;s barycentrics and normalised (the triangle&apos;s normal for flat shading), turned toward the viewer as the course does before lighting; shown as RGB = (n + 1) / 2. Red grows to the right, green upward, blue away from the camera: turned normals face the camera, so blue is mostly below 128. Black: no triangle.</source>
         <translation>Per pixel at the stepping cursor, the unit normal shading uses there: the vertex normals interpolated with the pixel&apos;s barycentrics and normalised (the triangle&apos;s normal for flat shading), turned toward the viewer as the course does before lighting; shown as RGB = (n + 1) / 2. Red grows to the right, green upward, blue away from the camera: turned normals face the camera, so blue is mostly below 128. Black: no triangle.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="463"/>
+        <location filename="../views/normals_view.cpp" line="92"/>
         <source>Mesh and normals</source>
         <translation>Mesh and normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="464"/>
+        <location filename="../views/normals_view.cpp" line="93"/>
         <source>Normal map</source>
         <translation>Normal map</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="840"/>
+        <location filename="../views/normals_view.cpp" line="242"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="846"/>
+        <location filename="../views/normals_view.cpp" line="248"/>
         <source>front faces %1</source>
         <translation>front faces %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="848"/>
-        <location filename="../views/normals_view.cpp" line="852"/>
+        <location filename="../views/normals_view.cpp" line="250"/>
+        <location filename="../views/normals_view.cpp" line="254"/>
         <source>(%1 hidden, left out by culling)</source>
         <translation>(%1 hidden, left out by culling)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="850"/>
+        <location filename="../views/normals_view.cpp" line="252"/>
         <source>back faces (n · pView &amp;gt; 0) %1</source>
         <translation>back faces (n · pView &amp;gt; 0) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="855"/>
+        <location filename="../views/normals_view.cpp" line="257"/>
         <source>inconsistent winding: %1 triangles, %2 edges run the same way by two triangles</source>
         <translation>inconsistent winding: %1 triangles, %2 edges run the same way by two triangles</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="862"/>
+        <location filename="../views/normals_view.cpp" line="264"/>
         <source>%1% of the pixels seen are back faces: the surface is closed and its normals point inward in view space (the course&apos;s [U; V; N] mirrors, so a file wound counter-clockwise seen from outside turns over). Shading turns every normal toward the viewer: the image does not change.</source>
         <translation>%1% of the pixels seen are back faces: the surface is closed and its normals point inward in view space (the course&apos;s [U; V; N] mirrors, so a file wound counter-clockwise seen from outside turns over). Shading turns every normal toward the viewer: the image does not change.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="869"/>
+        <location filename="../views/normals_view.cpp" line="271"/>
         <source>No normals: %1.</source>
         <translation>No normals: %1.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="874"/>
+        <location filename="../views/normals_view.cpp" line="276"/>
         <source>triangle normals</source>
         <translation>triangle normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="875"/>
+        <location filename="../views/normals_view.cpp" line="277"/>
         <source>vertex normals</source>
         <translation>vertex normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="876"/>
+        <location filename="../views/normals_view.cpp" line="279"/>
         <source>length L = %1 (%2% of the mesh&apos;s size)</source>
         <translation>length L = %1 (%2% of the mesh&apos;s size)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="881"/>
+        <location filename="../views/normals_view.cpp" line="284"/>
         <source>triangle normals carried by M itself (wrong)</source>
         <translation>triangle normals carried by M itself (wrong)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="884"/>
+        <location filename="../views/normals_view.cpp" line="287"/>
         <source>on the %1 triangles seen and their corners</source>
         <translation>on the %1 triangles seen and their corners</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="887"/>
+        <location filename="../views/normals_view.cpp" line="290"/>
         <source>Large mesh: one triangle normal in %1 and one vertex normal in %2 are drawn; the selected triangle&apos;s always.</source>
         <translation>Large mesh: one triangle normal in %1 and one vertex normal in %2 are drawn; the selected triangle&apos;s always.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="894"/>
+        <location filename="../views/normals_view.cpp" line="297"/>
         <source>One triangle in %1 of the wireframe is drawn.</source>
         <translation>One triangle in %1 of the wireframe is drawn.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="911"/>
+        <location filename="../views/normals_view.cpp" line="314"/>
         <source>&lt;p&gt;&lt;b&gt;Normals by M, right and wrong&lt;/b&gt;: A = viewFromModel = viewFromWorld · M(t) · worldFromModel (M: the animation matrix, the identity when the animation is off). The model-space normal n = %1, det A = %2; the carried edges, made unit: e1 = A (P2 − P1) / |…| = %3, e2 = A (P3 − P1) / |…| = %4.&lt;br&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Normals by M, right and wrong&lt;/b&gt;: A = viewFromModel = viewFromWorld · M(t) · worldFromModel (M: the animation matrix, the identity when the animation is off). The model-space normal n = %1, det A = %2; the carried edges, made unit: e1 = A (P2 − P1) / |…| = %3, e2 = A (P3 − P1) / |…| = %4.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="918"/>
+        <location filename="../views/normals_view.cpp" line="321"/>
         <source>Right: A&lt;sup&gt;−T&lt;/sup&gt; n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: perpendicular to the surface.&lt;br&gt;</source>
         <translation>Right: A&lt;sup&gt;−T&lt;/sup&gt; n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: perpendicular to the surface.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="922"/>
+        <location filename="../views/normals_view.cpp" line="325"/>
         <source>Wrong: A n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: %4° off the surface&apos;s normal.&lt;/p&gt;</source>
         <translation>Wrong: A n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: %4° off the surface&apos;s normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="928"/>
+        <location filename="../views/normals_view.cpp" line="331"/>
         <source>&lt;p&gt;Here both agree: A has no non-uniform scale. Set a scale such as (2, 1, 1) in the Animation panel to see them part.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Here both agree: A has no non-uniform scale. Set a scale such as (2, 1, 1) in the Animation panel to see them part.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="936"/>
+        <location filename="../views/normals_view.cpp" line="339"/>
         <source>&lt;p&gt;No frame yet.&lt;/p&gt;</source>
         <translation>&lt;p&gt;No frame yet.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="940"/>
+        <location filename="../views/normals_view.cpp" line="343"/>
         <source>&lt;p&gt;&lt;b&gt;Stage 3, normals&lt;/b&gt;, in view space: each triangle&apos;s normal n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, and each vertex&apos;s normal the normalised sum of the normals of the triangles around it. A triangle faces away from the camera (at the origin) when n · P1 &amp;gt; 0; the course turns such normals toward the viewer when it shades.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Stage 3, normals&lt;/b&gt;, in view space: each triangle&apos;s normal n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, and each vertex&apos;s normal the normalised sum of the normals of the triangles around it. A triangle faces away from the camera (at the origin) when n · P1 &amp;gt; 0; the course turns such normals toward the viewer when it shades.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="947"/>
+        <location filename="../views/normals_view.cpp" line="350"/>
         <source>&lt;p&gt;Skipped for this frame: %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Skipped for this frame: %1.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="962"/>
+        <location filename="../views/normals_view.cpp" line="365"/>
         <source>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (vertices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</source>
         <translation>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (vertices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="969"/>
+        <location filename="../views/normals_view.cpp" line="372"/>
         <source> = %1, length %2&lt;br&gt;</source>
         <translation> = %1, length %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="973"/>
+        <location filename="../views/normals_view.cpp" line="376"/>
         <source>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</source>
         <translation>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="975"/>
+        <location filename="../views/normals_view.cpp" line="378"/>
         <source>a back face, drawn in red</source>
         <translation>a back face, drawn in red</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="975"/>
+        <location filename="../views/normals_view.cpp" line="378"/>
         <source>a front face</source>
         <translation>a front face</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="977"/>
+        <location filename="../views/normals_view.cpp" line="380"/>
         <source>a degenerate triangle: no normal.&lt;/p&gt;</source>
         <translation>a degenerate triangle: no normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="983"/>
+        <location filename="../views/normals_view.cpp" line="384"/>
         <source>&lt;p&gt;It runs an edge in the same direction as a neighbour does: the two are wound inconsistently (magenta), and one of their normals points the wrong way.&lt;/p&gt;</source>
         <translation>&lt;p&gt;It runs an edge in the same direction as a neighbour does: the two are wound inconsistently (magenta), and one of their normals points the wrong way.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="990"/>
+        <location filename="../views/normals_view.cpp" line="391"/>
         <source>&lt;p&gt;Vertex normals: N1 = %1 (vertex %2), N2 = %3 (vertex %4), N3 = %5 (vertex %6)&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vertex normals: N1 = %1 (vertex %2), N2 = %3 (vertex %4), N3 = %5 (vertex %6)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="998"/>
+        <location filename="../views/normals_view.cpp" line="399"/>
         <source>&lt;p&gt;Pick a pixel (here or in any image) to select its triangle and see its normal worked out.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Pick a pixel (here or in any image) to select its triangle and see its normal worked out.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1008"/>
+        <location filename="../views/normals_view.cpp" line="409"/>
         <source>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </source>
         <translation>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1010"/>
+        <location filename="../views/normals_view.cpp" line="411"/>
         <source>no triangle holds it at the cursor (black in the normal map).&lt;/p&gt;</source>
         <translation>no triangle holds it at the cursor (black in the normal map).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1012"/>
+        <location filename="../views/normals_view.cpp" line="413"/>
         <source>no normal: %1 (grey in the normal map).&lt;/p&gt;</source>
         <translation>no normal: %1 (grey in the normal map).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1015"/>
+        <location filename="../views/normals_view.cpp" line="416"/>
         <source>the triangle&apos;s normal (flat) %1</source>
         <translation>the triangle&apos;s normal (flat) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1017"/>
+        <location filename="../views/normals_view.cpp" line="418"/>
         <source>N = α N1 + β N2 + γ N3 with (α, β, γ) = %1: %2, normalised %3</source>
         <translation>N = α N1 + β N2 + γ N3 with (α, β, γ) = %1: %2, normalised %3</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1021"/>
+        <location filename="../views/normals_view.cpp" line="422"/>
         <source>; V · N &amp;lt; 0, turned toward the viewer: &lt;b&gt;%1&lt;/b&gt;</source>
         <translation>; V · N &amp;lt; 0, turned toward the viewer: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1024"/>
+        <location filename="../views/normals_view.cpp" line="425"/>
         <source>. Colour (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</source>
         <translation>. Colour (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1043"/>
+        <location filename="../views/normals_view.cpp" line="444"/>
         <source>x %1, y %2: no triangle</source>
         <translation>x %1, y %2: no triangle</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1047"/>
+        <location filename="../views/normals_view.cpp" line="448"/>
         <source>x %1, y %2: triangle %3, N = %4, colour (%5, %6, %7)</source>
         <translation>x %1, y %2: triangle %3, N = %4, colour (%5, %6, %7)</translation>
     </message>

@@ -2193,253 +2193,253 @@
 <context>
     <name>rasterlab::NormalsView</name>
     <message>
-        <location filename="../views/normals_view.cpp" line="162"/>
+        <location filename="../views/normals_model.cpp" line="141"/>
         <source>the draw is unlit: shading reads no normal</source>
         <translation>o desenho não é iluminado: o sombreamento não lê nenhuma normal</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="187"/>
+        <location filename="../views/normals_model.cpp" line="167"/>
         <source>the interpolated normal is zero</source>
         <translation>a normal interpolada é nula</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="402"/>
+        <location filename="../views/normals_view.cpp" line="31"/>
         <source>Triangle normals</source>
         <translation>Normais dos triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="405"/>
+        <location filename="../views/normals_view.cpp" line="34"/>
         <source>Vertex normals</source>
         <translation>Normais dos vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="408"/>
+        <location filename="../views/normals_view.cpp" line="37"/>
         <source>Only on triangles that are seen</source>
         <translation>Só nos triângulos visíveis</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="411"/>
+        <location filename="../views/normals_view.cpp" line="40"/>
         <source>Hairs only on the triangles that hold a pixel at the end of the frame, and on their corners</source>
         <translation>Segmentos de normal só nos triângulos que ocupam um pixel no fim do quadro, e nos seus vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="414"/>
+        <location filename="../views/normals_view.cpp" line="43"/>
         <source>Normals by M (wrong)</source>
         <translation>Normais por M (erradas)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="417"/>
+        <location filename="../views/normals_view.cpp" line="46"/>
         <source>Beside each triangle normal, the model normal carried by viewFromModel itself instead of its inverse transpose: it leaves the surface under a non-uniform scale (set one in the Animation panel)</source>
         <translation>Ao lado de cada normal de triângulo, a normal do modelo levada pela própria viewFromModel em vez da sua inversa transposta: sob uma escala não uniforme, ela deixa de ser perpendicular à superfície (defina uma no painel Animação)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="449"/>
+        <location filename="../views/normals_view.cpp" line="78"/>
         <source>Per pixel at the stepping cursor, the unit normal shading uses there: the vertex normals interpolated with the pixel&apos;s barycentrics and normalised (the triangle&apos;s normal for flat shading), turned toward the viewer as the course does before lighting; shown as RGB = (n + 1) / 2. Red grows to the right, green upward, blue away from the camera: turned normals face the camera, so blue is mostly below 128. Black: no triangle.</source>
         <translation>Por pixel, no cursor de passo, a normal unitária que o sombreamento usa ali: as normais dos vértices interpoladas com as coordenadas baricêntricas do pixel e normalizadas (a normal do triângulo no sombreamento flat), voltadas para o observador como o curso faz antes da iluminação; mostrada como RGB = (n + 1) / 2. O vermelho cresce para a direita, o verde para cima, o azul para longe da câmera: as normais voltadas encaram a câmera, então o azul fica quase sempre abaixo de 128. Preto: nenhum triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="463"/>
+        <location filename="../views/normals_view.cpp" line="92"/>
         <source>Mesh and normals</source>
         <translation>Malha e normais</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="464"/>
+        <location filename="../views/normals_view.cpp" line="93"/>
         <source>Normal map</source>
         <translation>Mapa de normais</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="840"/>
+        <location filename="../views/normals_view.cpp" line="242"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="846"/>
+        <location filename="../views/normals_view.cpp" line="248"/>
         <source>front faces %1</source>
         <translation>faces frontais %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="848"/>
-        <location filename="../views/normals_view.cpp" line="852"/>
+        <location filename="../views/normals_view.cpp" line="250"/>
+        <location filename="../views/normals_view.cpp" line="254"/>
         <source>(%1 hidden, left out by culling)</source>
         <translation>(%1 ocultas, eliminadas pelo descarte)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="850"/>
+        <location filename="../views/normals_view.cpp" line="252"/>
         <source>back faces (n · pView &amp;gt; 0) %1</source>
         <translation>faces traseiras (n · pView &amp;gt; 0) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="855"/>
+        <location filename="../views/normals_view.cpp" line="257"/>
         <source>inconsistent winding: %1 triangles, %2 edges run the same way by two triangles</source>
         <translation>orientação inconsistente: %1 triângulos, %2 arestas percorridas no mesmo sentido por dois triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="862"/>
+        <location filename="../views/normals_view.cpp" line="264"/>
         <source>%1% of the pixels seen are back faces: the surface is closed and its normals point inward in view space (the course&apos;s [U; V; N] mirrors, so a file wound counter-clockwise seen from outside turns over). Shading turns every normal toward the viewer: the image does not change.</source>
         <translation>%1% dos pixels visíveis são faces traseiras: a superfície é fechada e suas normais apontam para dentro no espaço de vista (a matriz [U; V; N] do curso espelha, então um arquivo orientado no sentido anti-horário visto de fora fica invertido). O sombreamento volta toda normal para o observador: a imagem não muda.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="869"/>
+        <location filename="../views/normals_view.cpp" line="271"/>
         <source>No normals: %1.</source>
         <translation>Sem normais: %1.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="874"/>
+        <location filename="../views/normals_view.cpp" line="276"/>
         <source>triangle normals</source>
         <translation>normais dos triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="875"/>
+        <location filename="../views/normals_view.cpp" line="277"/>
         <source>vertex normals</source>
         <translation>normais dos vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="876"/>
+        <location filename="../views/normals_view.cpp" line="279"/>
         <source>length L = %1 (%2% of the mesh&apos;s size)</source>
         <translation>comprimento L = %1 (%2% do tamanho da malha)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="881"/>
+        <location filename="../views/normals_view.cpp" line="284"/>
         <source>triangle normals carried by M itself (wrong)</source>
         <translation>normais dos triângulos levadas pela própria M (errado)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="884"/>
+        <location filename="../views/normals_view.cpp" line="287"/>
         <source>on the %1 triangles seen and their corners</source>
         <translation>nos %1 triângulos visíveis e seus vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="887"/>
+        <location filename="../views/normals_view.cpp" line="290"/>
         <source>Large mesh: one triangle normal in %1 and one vertex normal in %2 are drawn; the selected triangle&apos;s always.</source>
         <translation>Malha grande: desenha-se uma normal de triângulo a cada %1 e uma normal de vértice a cada %2; as do triângulo selecionado, sempre.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="894"/>
+        <location filename="../views/normals_view.cpp" line="297"/>
         <source>One triangle in %1 of the wireframe is drawn.</source>
         <translation>Desenha-se um triângulo do aramado a cada %1.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="911"/>
+        <location filename="../views/normals_view.cpp" line="314"/>
         <source>&lt;p&gt;&lt;b&gt;Normals by M, right and wrong&lt;/b&gt;: A = viewFromModel = viewFromWorld · M(t) · worldFromModel (M: the animation matrix, the identity when the animation is off). The model-space normal n = %1, det A = %2; the carried edges, made unit: e1 = A (P2 − P1) / |…| = %3, e2 = A (P3 − P1) / |…| = %4.&lt;br&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Normais por M, certo e errado&lt;/b&gt;: A = viewFromModel = viewFromWorld · M(t) · worldFromModel (M: a matriz de animação, a identidade quando a animação está desligada). A normal no espaço do modelo é n = %1, det A = %2; as arestas levadas, tornadas unitárias: e1 = A (P2 − P1) / |…| = %3, e2 = A (P3 − P1) / |…| = %4.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="918"/>
+        <location filename="../views/normals_view.cpp" line="321"/>
         <source>Right: A&lt;sup&gt;−T&lt;/sup&gt; n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: perpendicular to the surface.&lt;br&gt;</source>
         <translation>Certo: A&lt;sup&gt;−T&lt;/sup&gt; n, normalizada = &lt;b&gt;%1&lt;/b&gt;; seus produtos escalares com e1 e e2 valem %2 e %3: perpendicular à superfície.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="922"/>
+        <location filename="../views/normals_view.cpp" line="325"/>
         <source>Wrong: A n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: %4° off the surface&apos;s normal.&lt;/p&gt;</source>
         <translation>Errado: A n, normalizada = &lt;b&gt;%1&lt;/b&gt;; seus produtos escalares com e1 e e2 valem %2 e %3: desviada %4° da normal da superfície.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="928"/>
+        <location filename="../views/normals_view.cpp" line="331"/>
         <source>&lt;p&gt;Here both agree: A has no non-uniform scale. Set a scale such as (2, 1, 1) in the Animation panel to see them part.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Aqui as duas coincidem: A não tem escala não uniforme. Defina uma escala como (2, 1, 1) no painel Animação para vê-las se separarem.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="936"/>
+        <location filename="../views/normals_view.cpp" line="339"/>
         <source>&lt;p&gt;No frame yet.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Nenhum quadro ainda.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="940"/>
+        <location filename="../views/normals_view.cpp" line="343"/>
         <source>&lt;p&gt;&lt;b&gt;Stage 3, normals&lt;/b&gt;, in view space: each triangle&apos;s normal n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, and each vertex&apos;s normal the normalised sum of the normals of the triangles around it. A triangle faces away from the camera (at the origin) when n · P1 &amp;gt; 0; the course turns such normals toward the viewer when it shades.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Etapa 3, normais&lt;/b&gt;, no espaço de vista: a normal de cada triângulo é n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, e a normal de cada vértice é a soma normalizada das normais dos triângulos ao seu redor. Um triângulo está de costas para a câmera (na origem) quando n · P1 &amp;gt; 0; o curso volta essas normais para o observador ao sombrear.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="947"/>
+        <location filename="../views/normals_view.cpp" line="350"/>
         <source>&lt;p&gt;Skipped for this frame: %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Omitida neste quadro: %1.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="962"/>
+        <location filename="../views/normals_view.cpp" line="365"/>
         <source>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (vertices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</source>
         <translation>&lt;p&gt;&lt;b&gt;Triângulo %1&lt;/b&gt; (vértices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="969"/>
+        <location filename="../views/normals_view.cpp" line="372"/>
         <source> = %1, length %2&lt;br&gt;</source>
         <translation> = %1, comprimento %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="973"/>
+        <location filename="../views/normals_view.cpp" line="376"/>
         <source>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</source>
         <translation>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="975"/>
+        <location filename="../views/normals_view.cpp" line="378"/>
         <source>a back face, drawn in red</source>
         <translation>uma face traseira, desenhada em vermelho</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="975"/>
+        <location filename="../views/normals_view.cpp" line="378"/>
         <source>a front face</source>
         <translation>uma face frontal</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="977"/>
+        <location filename="../views/normals_view.cpp" line="380"/>
         <source>a degenerate triangle: no normal.&lt;/p&gt;</source>
         <translation>um triângulo degenerado: sem normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="983"/>
+        <location filename="../views/normals_view.cpp" line="384"/>
         <source>&lt;p&gt;It runs an edge in the same direction as a neighbour does: the two are wound inconsistently (magenta), and one of their normals points the wrong way.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Ele percorre uma aresta no mesmo sentido que um vizinho: os dois têm orientações inconsistentes (magenta), e uma das suas normais aponta para o lado errado.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="990"/>
+        <location filename="../views/normals_view.cpp" line="391"/>
         <source>&lt;p&gt;Vertex normals: N1 = %1 (vertex %2), N2 = %3 (vertex %4), N3 = %5 (vertex %6)&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normais dos vértices: N1 = %1 (vértice %2), N2 = %3 (vértice %4), N3 = %5 (vértice %6)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="998"/>
+        <location filename="../views/normals_view.cpp" line="399"/>
         <source>&lt;p&gt;Pick a pixel (here or in any image) to select its triangle and see its normal worked out.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Escolha um pixel (aqui ou em qualquer imagem) para selecionar seu triângulo e ver o cálculo da sua normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1008"/>
+        <location filename="../views/normals_view.cpp" line="409"/>
         <source>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </source>
         <translation>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1010"/>
+        <location filename="../views/normals_view.cpp" line="411"/>
         <source>no triangle holds it at the cursor (black in the normal map).&lt;/p&gt;</source>
         <translation>nenhum triângulo o ocupa no cursor (preto no mapa de normais).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1012"/>
+        <location filename="../views/normals_view.cpp" line="413"/>
         <source>no normal: %1 (grey in the normal map).&lt;/p&gt;</source>
         <translation>sem normal: %1 (cinza no mapa de normais).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1015"/>
+        <location filename="../views/normals_view.cpp" line="416"/>
         <source>the triangle&apos;s normal (flat) %1</source>
         <translation>a normal do triângulo (flat) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1017"/>
+        <location filename="../views/normals_view.cpp" line="418"/>
         <source>N = α N1 + β N2 + γ N3 with (α, β, γ) = %1: %2, normalised %3</source>
         <translation>N = α N1 + β N2 + γ N3 com (α, β, γ) = %1: %2, normalizada %3</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1021"/>
+        <location filename="../views/normals_view.cpp" line="422"/>
         <source>; V · N &amp;lt; 0, turned toward the viewer: &lt;b&gt;%1&lt;/b&gt;</source>
         <translation>; V · N &amp;lt; 0, voltada para o observador: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1024"/>
+        <location filename="../views/normals_view.cpp" line="425"/>
         <source>. Colour (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</source>
         <translation>. Cor (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1043"/>
+        <location filename="../views/normals_view.cpp" line="444"/>
         <source>x %1, y %2: no triangle</source>
         <translation>x %1, y %2: nenhum triângulo</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="1047"/>
+        <location filename="../views/normals_view.cpp" line="448"/>
         <source>x %1, y %2: triangle %3, N = %4, colour (%5, %6, %7)</source>
         <translation>x %1, y %2: triângulo %3, N = %4, cor (%5, %6, %7)</translation>
     </message>
