@@ -2193,12 +2193,12 @@
 <context>
     <name>rasterlab::NormalsView</name>
     <message>
-        <location filename="../views/normals_model.cpp" line="141"/>
+        <location filename="../views/normals_model.cpp" line="164"/>
         <source>the draw is unlit: shading reads no normal</source>
         <translation>the draw is unlit: shading reads no normal</translation>
     </message>
     <message>
-        <location filename="../views/normals_model.cpp" line="167"/>
+        <location filename="../views/normals_model.cpp" line="190"/>
         <source>the interpolated normal is zero</source>
         <translation>the interpolated normal is zero</translation>
     </message>

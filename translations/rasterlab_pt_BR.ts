@@ -2193,12 +2193,12 @@
 <context>
     <name>rasterlab::NormalsView</name>
     <message>
-        <location filename="../views/normals_model.cpp" line="141"/>
+        <location filename="../views/normals_model.cpp" line="164"/>
         <source>the draw is unlit: shading reads no normal</source>
         <translation>o desenho não é iluminado: o sombreamento não lê nenhuma normal</translation>
     </message>
     <message>
-        <location filename="../views/normals_model.cpp" line="167"/>
+        <location filename="../views/normals_model.cpp" line="190"/>
         <source>the interpolated normal is zero</source>
         <translation>a normal interpolada é nula</translation>
     </message>

@@ -41,6 +41,29 @@ std::optional<QLineF> hairLine(const rl::Scene& scene, const rl::Projection& pro
     return QLineF(*a, *b);
 }
 
+// The hairs' length L for a draw: a fraction of the mesh's size in view space, larger for
+// meshes of few triangles, and at most half the nearest vertex's depth, so that no hair
+// reaches the camera's plane. With the mesh's size.
+struct HairLength {
+    double length = 0.0, size = 0.0;
+};
+HairLength hairLength(const rl::Projection& projection, const rl::DrawProjection& proj,
+                      const rl::Mesh& mesh) {
+    rl::dvec3 low(std::numeric_limits<double>::max()), high(-low);
+    double nearest = std::numeric_limits<double>::max();
+    for (std::uint32_t v = 0; v < proj.originalVertexCount; ++v) {
+        const rl::dvec3 p = rl::cartesian(proj.pView[v]);
+        low = glm::min(low, p);
+        high = glm::max(high, p);
+        if (proj.pClip[v].w > projection.nearW) nearest = std::min(nearest, proj.pClip[v].w);
+    }
+    const double size = proj.originalVertexCount > 0 ? glm::length(high - low) : 0.0;
+    const double fraction = std::clamp(
+        0.3 / std::sqrt(double(std::max<std::size_t>(1, mesh.triangles.size()))), 0.04, 0.3);
+    const double length = std::min(size * fraction, 0.5 * nearest);
+    return {length, size};
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------
@@ -193,14 +216,24 @@ void NormalsModel::rebuild(const std::shared_ptr<const rl::FrameTrace>& frame, b
     m_picture = NormalsPicture{};
     if (!frame || !frame->projection) return;
     const rl::Scene& scene = *frame->scene;
-    const rl::Projection& projection = *frame->projection;
     m_picture.screen = QSizeF(scene.width, scene.height);
     m_picture.normalsSkipped = !frame->normals || frame->normals->skipped;
+    const PerDraw backFace = addFaces(*frame);
+    addWireframe(*frame->projection, backFace);
+    const PerDraw visible = markVisible(*frame, backFace);
+    // The hairs: the view-space normal from its foot, both ends projected by the draw's matrix,
+    // on the triangles drawn (those holding a pixel at the end, when asked) and their corners.
+    if (!m_picture.normalsSkipped)
+        addHairs(*frame, visible, onlyVisible, wrongNormals && frame->view);
+}
 
-    // Per draw: back faces and winding of every mesh triangle. What depends on the mesh alone
-    // is kept from frame to frame while the mesh is the same (moving the camera keeps it).
+// Per draw: back faces and winding of every mesh triangle. What depends on the mesh alone
+// is kept from frame to frame while the mesh is the same (moving the camera keeps it).
+NormalsModel::PerDraw NormalsModel::addFaces(const rl::FrameTrace& frame) {
+    const rl::Scene& scene = *frame.scene;
+    const rl::Projection& projection = *frame.projection;
     m_picture.viewWinding.assign(scene.draws.size(), 0);
-    std::vector<std::vector<std::uint8_t>> backFace(scene.draws.size());
+    PerDraw backFace(scene.draws.size());
     std::vector<MeshFacts> facts(scene.draws.size());
     for (std::size_t d = 0; d < scene.draws.size(); ++d) {
         const rl::Draw& draw = scene.draws[d];
@@ -222,7 +255,7 @@ void NormalsModel::rebuild(const std::shared_ptr<const rl::FrameTrace>& frame, b
         // A closed surface: do its normals point out of it in view space? The file's winding
         // (right-hand rule, outward +1) turned over by a mirroring view matrix (the course's
         // [U; V; N] always mirrors: det = -1).
-        const double det = glm::determinant(rl::dmat3(frame->view->viewFromModel[d]));
+        const double det = glm::determinant(rl::dmat3(frame.view->viewFromModel[d]));
         m_picture.viewWinding[d] = facts[d].closed * (det > 0.0 ? 1 : (det < 0.0 ? -1 : 0));
         // Triangles the projection left out as hidden back faces (its own test, which knows
         // the surface's winding), counted where this view's test puts them.
@@ -235,8 +268,11 @@ void NormalsModel::rebuild(const std::shared_ptr<const rl::FrameTrace>& frame, b
         }
     }
     m_meshFacts = std::move(facts);
+    return backFace;
+}
 
-    // The wireframe: the projected triangles at their snapped screen positions.
+// The wireframe: the projected triangles at their snapped screen positions.
+void NormalsModel::addWireframe(const rl::Projection& projection, const PerDraw& backFace) {
     const std::size_t count = projection.triangles.size();
     m_picture.wireStep = static_cast<int>((count + kMostWireTriangles - 1) / kMostWireTriangles);
     m_picture.wireStep = std::max(1, m_picture.wireStep);
@@ -270,14 +306,20 @@ void NormalsModel::rebuild(const std::shared_ptr<const rl::FrameTrace>& frame, b
                               .intersected(image.adjusted(-4.0, -4.0, 4.0, 4.0));
     }
     if (m_picture.focus.isEmpty()) m_picture.focus = image;
+}
 
-    // Which mesh triangles hold a pixel at the end of the frame, and how many pixels show a
-    // back face there.
-    std::vector<std::vector<std::uint8_t>> visible(scene.draws.size());
+// Which mesh triangles hold a pixel at the end of the frame, and how many pixels show a
+// back face there.
+NormalsModel::PerDraw NormalsModel::markVisible(const rl::FrameTrace& frame,
+                                                const PerDraw& backFace) {
+    const rl::Scene& scene = *frame.scene;
+    const rl::Projection& projection = *frame.projection;
+    const std::size_t count = projection.triangles.size();
+    PerDraw visible(scene.draws.size());
     for (std::size_t d = 0; d < scene.draws.size(); ++d)
         if (scene.draws[d].mesh) visible[d].assign(scene.draws[d].mesh->triangles.size(), 0);
-    if (frame->depth) {
-        const auto& ids = frame->depth->triangle;
+    if (frame.depth) {
+        const auto& ids = frame.depth->triangle;
         for (int y = 0; y < ids.height(); ++y) {
             const std::uint32_t* row = ids.row(y);
             for (int x = 0; x < ids.width(); ++x) {
@@ -289,90 +331,82 @@ void NormalsModel::rebuild(const std::shared_ptr<const rl::FrameTrace>& frame, b
             }
         }
     }
+    return visible;
+}
 
-    // The hairs: the view-space normal from its foot, both ends projected by the draw's matrix,
-    // on the triangles drawn (those holding a pixel at the end, when asked) and their corners.
-    if (!m_picture.normalsSkipped) {
-        std::vector<std::vector<std::uint8_t>> hairTriangles(scene.draws.size());
-        std::vector<std::vector<std::uint8_t>> hairVertices(scene.draws.size());
-        std::size_t vertexCount = 0;
-        for (std::size_t d = 0; d < scene.draws.size(); ++d) {
-            const rl::Draw& draw = scene.draws[d];
-            if (!draw.mesh) continue;
-            const rl::DrawProjection& proj = projection.draws[d];
-            hairTriangles[d].assign(draw.mesh->triangles.size(), 0);
-            hairVertices[d].assign(proj.originalVertexCount, 0);
-            for (std::size_t t = 0; t < draw.mesh->triangles.size(); ++t) {
-                const rl::TriangleFate fate = proj.fate[t];
-                if (fate != rl::TriangleFate::Inside && fate != rl::TriangleFate::Clipped) continue;
-                if (onlyVisible && !visible[d][t]) continue;
-                hairTriangles[d][t] = 1;
-                ++m_picture.hairTriangles;
-                for (std::uint32_t v : draw.mesh->triangles[t])
-                    if (v < hairVertices[d].size()) hairVertices[d][v] = 1;
-            }
-            vertexCount += static_cast<std::size_t>(
-                std::count(hairVertices[d].begin(), hairVertices[d].end(), std::uint8_t{1}));
+// The triangles and vertices that carry a hair, and one in how many of each is drawn.
+void NormalsModel::addHairs(const rl::FrameTrace& frame, const PerDraw& visible, bool onlyVisible,
+                            bool wrong) {
+    const rl::Scene& scene = *frame.scene;
+    const rl::Projection& projection = *frame.projection;
+    PerDraw hairTriangles(scene.draws.size());
+    PerDraw hairVertices(scene.draws.size());
+    std::size_t vertexCount = 0;
+    for (std::size_t d = 0; d < scene.draws.size(); ++d) {
+        const rl::Draw& draw = scene.draws[d];
+        if (!draw.mesh) continue;
+        const rl::DrawProjection& proj = projection.draws[d];
+        hairTriangles[d].assign(draw.mesh->triangles.size(), 0);
+        hairVertices[d].assign(proj.originalVertexCount, 0);
+        for (std::size_t t = 0; t < draw.mesh->triangles.size(); ++t) {
+            const rl::TriangleFate fate = proj.fate[t];
+            if (fate != rl::TriangleFate::Inside && fate != rl::TriangleFate::Clipped) continue;
+            if (onlyVisible && !visible[d][t]) continue;
+            hairTriangles[d][t] = 1;
+            ++m_picture.hairTriangles;
+            for (std::uint32_t v : draw.mesh->triangles[t])
+                if (v < hairVertices[d].size()) hairVertices[d][v] = 1;
         }
-        m_picture.triangleHairStep = std::max<int>(
-            1, static_cast<int>((m_picture.hairTriangles + kMostHairs - 1) / kMostHairs));
-        m_picture.vertexHairStep =
-            std::max<int>(1, static_cast<int>((vertexCount + kMostHairs - 1) / kMostHairs));
-        std::size_t triangleIndex = 0, vertexIndex = 0;  // counted over every draw
-        m_picture.drawHairLength.assign(scene.draws.size(), 0.0);
-        for (std::size_t d = 0; d < scene.draws.size(); ++d) {
-            const rl::Draw& draw = scene.draws[d];
-            if (!draw.mesh) continue;
-            const rl::DrawProjection& proj = projection.draws[d];
-            const rl::DrawNormals& normals = frame->normals->draws[d];
-            // L: a fraction of the mesh's size in view space, larger for meshes of few
-            // triangles, and at most half the nearest vertex's depth, so that no hair reaches
-            // the camera's plane.
-            rl::dvec3 low(std::numeric_limits<double>::max()), high(-low);
-            double nearest = std::numeric_limits<double>::max();
-            for (std::uint32_t v = 0; v < proj.originalVertexCount; ++v) {
-                const rl::dvec3 p = rl::cartesian(proj.pView[v]);
-                low = glm::min(low, p);
-                high = glm::max(high, p);
-                if (proj.pClip[v].w > projection.nearW)
-                    nearest = std::min(nearest, proj.pClip[v].w);
-            }
-            const double size = proj.originalVertexCount > 0 ? glm::length(high - low) : 0.0;
-            const double fraction = std::clamp(
-                0.3 / std::sqrt(double(std::max<std::size_t>(1, draw.mesh->triangles.size()))),
-                0.04, 0.3);
-            const double length = std::min(size * fraction, 0.5 * nearest);
-            m_picture.drawHairLength[d] = length;
-            if (m_picture.hairLength == 0.0) {
-                m_picture.hairLength = length;
-                m_picture.hairFraction = size > 0.0 ? length / size : 0.0;
-            }
-            const auto hair = [&](const rl::dvec3& foot, const rl::vec3& n) {
-                return hairLine(scene, projection, proj, length, foot, n);
-            };
-            const bool wrong = wrongNormals && frame->view;
-            for (std::size_t t = 0; t < draw.mesh->triangles.size(); ++t) {
-                if (!hairTriangles[d][t]) continue;
-                if (triangleIndex++ % static_cast<std::size_t>(m_picture.triangleHairStep) != 0)
-                    continue;
-                const rl::dvec3 foot =
-                    rl::viewBarycentre(proj, *draw.mesh, static_cast<std::uint32_t>(t));
-                if (const auto line = hair(foot, normals.triangle[t]))
-                    m_picture.triangleHairs.push_back(*line);
-                if (!wrong) continue;
-                const rl::CarriedNormal carried =
-                    rl::carriedTriangleNormal(frame->view->viewFromModel[d], *draw.mesh, t);
-                if (const auto line = hair(foot, rl::vec3(carried.wrong)))
-                    m_picture.wrongHairs.push_back(*line);
-            }
-            for (std::uint32_t v = 0; v < proj.originalVertexCount; ++v) {
-                if (!hairVertices[d][v]) continue;
-                if (vertexIndex++ % static_cast<std::size_t>(m_picture.vertexHairStep) != 0)
-                    continue;
-                if (const auto line = hair(rl::cartesian(proj.pView[v]), normals.vertex[v]))
-                    m_picture.vertexHairs.push_back(*line);
-            }
-        }
+        vertexCount += static_cast<std::size_t>(
+            std::count(hairVertices[d].begin(), hairVertices[d].end(), std::uint8_t{1}));
+    }
+    m_picture.triangleHairStep =
+        std::max<int>(1, static_cast<int>((m_picture.hairTriangles + kMostHairs - 1) / kMostHairs));
+    m_picture.vertexHairStep =
+        std::max<int>(1, static_cast<int>((vertexCount + kMostHairs - 1) / kMostHairs));
+    std::size_t triangleIndex = 0, vertexIndex = 0;  // counted over every draw
+    m_picture.drawHairLength.assign(scene.draws.size(), 0.0);
+    for (std::size_t d = 0; d < scene.draws.size(); ++d)
+        if (scene.draws[d].mesh)
+            addDrawHairs(frame, d, hairTriangles, hairVertices, wrong, triangleIndex, vertexIndex);
+}
+
+// One draw's hairs, of the triangles and vertices chosen: one in triangleHairStep (and
+// vertexHairStep), counted over every draw by triangleIndex (and vertexIndex).
+void NormalsModel::addDrawHairs(const rl::FrameTrace& frame, std::size_t d,
+                                const PerDraw& hairTriangles, const PerDraw& hairVertices,
+                                bool wrong, std::size_t& triangleIndex, std::size_t& vertexIndex) {
+    const rl::Scene& scene = *frame.scene;
+    const rl::Projection& projection = *frame.projection;
+    const rl::Draw& draw = scene.draws[d];
+    const rl::DrawProjection& proj = projection.draws[d];
+    const rl::DrawNormals& normals = frame.normals->draws[d];
+    const auto [length, size] = hairLength(projection, proj, *draw.mesh);
+    m_picture.drawHairLength[d] = length;
+    if (m_picture.hairLength == 0.0) {
+        m_picture.hairLength = length;
+        m_picture.hairFraction = size > 0.0 ? length / size : 0.0;
+    }
+    const auto hair = [&](const rl::dvec3& foot, const rl::vec3& n) {
+        return hairLine(scene, projection, proj, length, foot, n);
+    };
+    for (std::size_t t = 0; t < draw.mesh->triangles.size(); ++t) {
+        if (!hairTriangles[d][t]) continue;
+        if (triangleIndex++ % static_cast<std::size_t>(m_picture.triangleHairStep) != 0) continue;
+        const rl::dvec3 foot = rl::viewBarycentre(proj, *draw.mesh, static_cast<std::uint32_t>(t));
+        if (const auto line = hair(foot, normals.triangle[t]))
+            m_picture.triangleHairs.push_back(*line);
+        if (!wrong) continue;
+        const rl::CarriedNormal carried =
+            rl::carriedTriangleNormal(frame.view->viewFromModel[d], *draw.mesh, t);
+        if (const auto line = hair(foot, rl::vec3(carried.wrong)))
+            m_picture.wrongHairs.push_back(*line);
+    }
+    for (std::uint32_t v = 0; v < proj.originalVertexCount; ++v) {
+        if (!hairVertices[d][v]) continue;
+        if (vertexIndex++ % static_cast<std::size_t>(m_picture.vertexHairStep) != 0) continue;
+        if (const auto line = hair(rl::cartesian(proj.pView[v]), normals.vertex[v]))
+            m_picture.vertexHairs.push_back(*line);
     }
 }
 

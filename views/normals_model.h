@@ -127,6 +127,19 @@ public:
     bool inconsistent(std::uint32_t draw, std::uint32_t triangle) const;
 
 private:
+    // Per draw, one byte per mesh triangle (or vertex); none for a draw without a mesh.
+    using PerDraw = std::vector<std::vector<std::uint8_t>>;
+    // rebuild's parts: the faces (the back faces per draw, returned), the wireframe, the
+    // triangles holding a pixel (returned), the hairs and each draw's.
+    PerDraw addFaces(const rl::FrameTrace& frame);
+    void addWireframe(const rl::Projection& projection, const PerDraw& backFace);
+    PerDraw markVisible(const rl::FrameTrace& frame, const PerDraw& backFace);
+    void addHairs(const rl::FrameTrace& frame, const PerDraw& visible, bool onlyVisible,
+                  bool wrong);
+    void addDrawHairs(const rl::FrameTrace& frame, std::size_t d, const PerDraw& hairTriangles,
+                      const PerDraw& hairVertices, bool wrong, std::size_t& triangleIndex,
+                      std::size_t& vertexIndex);
+
     NormalsPicture m_picture;
     // Per draw, what depends on its mesh alone: its winding checks, kept from frame to frame
     // while the frame uses the mesh (no mesh: none).
