@@ -150,7 +150,20 @@ protected:
 private:
     void saveLayout() const;
     void restoreLayout();
+    // The menus, one function each (main_window_actions.cpp), and their submenus.
     void createActions();
+    void createFileMenu();
+    void addLayoutMenus(QMenu* file);
+    void addExportMenu(QMenu* file);
+    void createEditMenu();
+    void createViewMenu();
+    void addLanguageMenu(QMenu* view);
+    void createStepMenu();
+    void addClickerKeys();
+    void createShadingMenu();
+    void addRulesMenu(QMenu* shading);
+    void addProjectionMenu(QMenu* shading);
+    void createHelpMenu();
     void createDocks();
     QDockWidget* addDock(const QString& title, const QString& name, QWidget* widget,
                          Qt::DockWidgetArea area, bool scrolls = false);

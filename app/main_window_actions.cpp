@@ -30,6 +30,16 @@ QString layoutLabel(const char* description) {
 }  // namespace
 
 void MainWindow::createActions() {
+    createFileMenu();
+    createEditMenu();
+    createViewMenu();
+    createStepMenu();
+    createShadingMenu();
+    createHelpMenu();
+    refreshRecentMenu();
+}
+
+void MainWindow::createFileMenu() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     QAction* open = file->addAction(tr("&Open..."), this, &MainWindow::openDialog);
     open->setShortcut(QKeySequence::Open);
@@ -59,7 +69,19 @@ void MainWindow::createActions() {
             m_lastError.clear();
         documentChanged();
     });
-    // The layouts course files are read in: detected, or one chosen by hand.
+    addLayoutMenus(file);
+    file->addSeparator();
+    file->addAction(m_edit->saveAction());
+    file->addAction(m_edit->saveAsAction());
+    file->addSeparator();
+    addExportMenu(file);
+    file->addSeparator();
+    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+}
+
+// The layouts course files are read in: detected, or one chosen by hand.
+void MainWindow::addLayoutMenus(QMenu* file) {
     QMenu* formats = file->addMenu(tr("Course File La&youts"));
     formats->setObjectName(QStringLiteral("layoutMenu"));
     QMenu* cameraFormats = formats->addMenu(tr("&Camera"));
@@ -86,10 +108,10 @@ void MainWindow::createActions() {
         lightingGroup->addAction(action);
         connect(action, &QAction::triggered, this, [this, layout] { setLightingLayout(layout); });
     }
-    file->addSeparator();
-    file->addAction(m_edit->saveAction());
-    file->addAction(m_edit->saveAsAction());
-    file->addSeparator();
+}
+
+// Export PNG, and the other exports in a submenu.
+void MainWindow::addExportMenu(QMenu* file) {
     QAction* exportAction = file->addAction(tr("&Export PNG..."), this, &MainWindow::exportDialog);
     exportAction->setShortcut(QKeySequence(tr("Ctrl+E")));
     exportAction->setObjectName(QStringLiteral("exportAction"));
@@ -116,14 +138,15 @@ void MainWindow::createActions() {
     QAction* exportFrames =
         exports->addAction(tr("&Animation Frames..."), this, &MainWindow::exportAnimationDialog);
     exportFrames->setObjectName(QStringLiteral("exportAnimationAction"));
-    file->addSeparator();
-    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-    quit->setShortcut(QKeySequence::Quit);
+}
 
+void MainWindow::createEditMenu() {
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     edit->addAction(m_edit->undoAction());
     edit->addAction(m_edit->redoAction());
+}
 
+void MainWindow::createViewMenu() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     QAction* fit = view->addAction(tr("&Fit to Window"), m_view, &FrameImageView::fitToWindow);
     fit->setShortcut(QKeySequence(tr("Ctrl+0")));
@@ -157,6 +180,10 @@ void MainWindow::createActions() {
     leave->setShortcut(QKeySequence(Qt::Key_Escape));
     connect(leave, &QAction::triggered, this, [this] { setPresentationMode(false); });
     addAction(leave);
+    addLanguageMenu(view);
+}
+
+void MainWindow::addLanguageMenu(QMenu* view) {
     QMenu* language = view->addMenu(tr("Lan&guage"));
     language->setObjectName(QStringLiteral("languageMenu"));
     auto* languages = new QActionGroup(language);
@@ -178,7 +205,9 @@ void MainWindow::createActions() {
             emit languageChangeRequested(code);
         });
     }
+}
 
+void MainWindow::createStepMenu() {
     QMenu* step = menuBar()->addMenu(tr("S&tep"));
     step->setObjectName(QStringLiteral("stepMenu"));
     step->addAction(m_steppingBar->toStartAction());
@@ -198,8 +227,18 @@ void MainWindow::createActions() {
         a->setShortcut(QKeySequence(Qt::ALT | (Qt::Key_0 + n)));
         connect(a, &QAction::triggered, this, [this, stage] { m_inspection->setStage(stage); });
     }
-    // The keys a presentation clicker sends (arrows, space): on the image, or everywhere in
-    // presentation mode (updateClickerKeys).
+    addClickerKeys();
+    QAction* goTo = step->addAction(tr("Pick the Pixel Under the &Mouse"));
+    goTo->setShortcut(QKeySequence(tr("Ctrl+G")));
+    connect(goTo, &QAction::triggered, this, [this] {
+        const QPoint p = m_view->pixelAt(m_view->mapFromGlobal(QCursor::pos()));
+        if (p.x() >= 0) m_inspection->pickPixel(p);
+    });
+}
+
+// The keys a presentation clicker sends (arrows, space): on the image, or everywhere in
+// presentation mode (updateClickerKeys).
+void MainWindow::addClickerKeys() {
     const std::pair<QKeySequence, QAction*> clicker[] = {
         {QKeySequence(Qt::Key_Right), m_steppingBar->stepForwardAction()},
         {QKeySequence(Qt::Key_Down), m_steppingBar->stepForwardAction()},
@@ -216,13 +255,9 @@ void MainWindow::createActions() {
         m_clickerActions.append(a);
     }
     updateClickerKeys();
-    QAction* goTo = step->addAction(tr("Pick the Pixel Under the &Mouse"));
-    goTo->setShortcut(QKeySequence(tr("Ctrl+G")));
-    connect(goTo, &QAction::triggered, this, [this] {
-        const QPoint p = m_view->pixelAt(m_view->mapFromGlobal(QCursor::pos()));
-        if (p.x() >= 0) m_inspection->pickPixel(p);
-    });
+}
 
+void MainWindow::createShadingMenu() {
     QMenu* shading = menuBar()->addMenu(tr("&Shading"));
     m_shadingMenu = shading;
     m_shadingGroup = new QActionGroup(this);
@@ -242,8 +277,12 @@ void MainWindow::createActions() {
         m_shadingGroup->addAction(action);
         connect(action, &QAction::triggered, this, [this, model = model] { setShading(model); });
     }
-
     shading->addSeparator();
+    addRulesMenu(shading);
+    addProjectionMenu(shading);
+}
+
+void MainWindow::addRulesMenu(QMenu* shading) {
     QMenu* rules = shading->addMenu(tr("&Rasterization Rules"));
     rules->setObjectName(QStringLiteral("rulesMenu"));
     m_rulesMenu = rules;
@@ -264,7 +303,9 @@ void MainWindow::createActions() {
         m_rulesGroup->addAction(action);
         connect(action, &QAction::triggered, this, [this, set = set] { setRules(set); });
     }
+}
 
+void MainWindow::addProjectionMenu(QMenu* shading) {
     QMenu* projection = shading->addMenu(tr("Pro&jection"));
     projection->setObjectName(QStringLiteral("projectionMenu"));
     m_projectionGroup = new QActionGroup(this);
@@ -285,12 +326,13 @@ void MainWindow::createActions() {
         m_projectionGroup->addAction(action);
         connect(action, &QAction::triggered, this, [this, mode = mode] { setProjection(mode); });
     }
+}
 
+void MainWindow::createHelpMenu() {
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     QAction* keys = help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts);
     keys->setShortcut(QKeySequence::HelpContents);
     help->addAction(tr("&About RasterLab"), this, &MainWindow::about);
-    refreshRecentMenu();
 }
 
 }  // namespace rasterlab

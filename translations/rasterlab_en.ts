@@ -1172,17 +1172,17 @@
         <translation>Painter&apos;s algorithm</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="33"/>
+        <location filename="../app/main_window_actions.cpp" line="43"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="117"/>
+        <location filename="../app/main_window_actions.cpp" line="139"/>
         <source>&amp;Animation Frames...</source>
         <translation>&amp;Animation Frames...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="233"/>
+        <location filename="../app/main_window_actions.cpp" line="268"/>
         <source>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</source>
         <translation>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</translation>
     </message>
@@ -1217,7 +1217,7 @@
         <translation>save, undo, redo</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="42"/>
+        <location filename="../app/main_window_actions.cpp" line="52"/>
         <source>Open &amp;Camera...</source>
         <translation>Open &amp;Camera...</translation>
     </message>
@@ -1227,222 +1227,222 @@
         <translation>Draw with the Plain Divide</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="44"/>
+        <location filename="../app/main_window_actions.cpp" line="54"/>
         <source>Ctrl+Shift+C</source>
         <translation>Ctrl+Shift+C</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="46"/>
+        <location filename="../app/main_window_actions.cpp" line="56"/>
         <source>Open &amp;Lighting...</source>
         <translation>Open &amp;Lighting...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="47"/>
+        <location filename="../app/main_window_actions.cpp" line="57"/>
         <source>Ctrl+Shift+L</source>
         <translation>Ctrl+Shift+L</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="49"/>
+        <location filename="../app/main_window_actions.cpp" line="59"/>
         <source>Open Command &amp;File...</source>
         <translation>Open Command &amp;File...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="50"/>
+        <location filename="../app/main_window_actions.cpp" line="60"/>
         <source>Ctrl+Shift+O</source>
         <translation>Ctrl+Shift+O</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="52"/>
+        <location filename="../app/main_window_actions.cpp" line="62"/>
         <source>Open &amp;Recent</source>
         <translation>Open &amp;Recent</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="54"/>
+        <location filename="../app/main_window_actions.cpp" line="64"/>
         <source>&amp;Default Scene</source>
         <translation>&amp;Default Scene</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="65"/>
+        <location filename="../app/main_window_actions.cpp" line="87"/>
         <source>&amp;Camera</source>
         <translation>&amp;Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="77"/>
+        <location filename="../app/main_window_actions.cpp" line="99"/>
         <source>&amp;Lighting</source>
         <translation>&amp;Lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="93"/>
+        <location filename="../app/main_window_actions.cpp" line="115"/>
         <source>&amp;Export PNG...</source>
         <translation>&amp;Export PNG...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="94"/>
+        <location filename="../app/main_window_actions.cpp" line="116"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="96"/>
+        <location filename="../app/main_window_actions.cpp" line="118"/>
         <source>Export &amp;More</source>
         <translation>Export &amp;More</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="99"/>
+        <location filename="../app/main_window_actions.cpp" line="121"/>
         <source>Image as &amp;Displayed...</source>
         <translation>Image as &amp;Displayed...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="100"/>
+        <location filename="../app/main_window_actions.cpp" line="122"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="101"/>
+        <location filename="../app/main_window_actions.cpp" line="123"/>
         <source>&amp;Colour Buffer at the Cursor...</source>
         <translation>&amp;Colour Buffer at the Cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="103"/>
+        <location filename="../app/main_window_actions.cpp" line="125"/>
         <source>D&amp;epth Buffer at the Cursor...</source>
         <translation>D&amp;epth Buffer at the Cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="105"/>
+        <location filename="../app/main_window_actions.cpp" line="127"/>
         <source>&amp;Normal Buffer...</source>
         <translation>&amp;Normal Buffer...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="106"/>
+        <location filename="../app/main_window_actions.cpp" line="128"/>
         <source>A &amp;View as Displayed</source>
         <translation>A &amp;View as Displayed</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="110"/>
+        <location filename="../app/main_window_actions.cpp" line="132"/>
         <source>Export View</source>
         <translation>Export View</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="115"/>
+        <location filename="../app/main_window_actions.cpp" line="137"/>
         <source>&amp;Stepping Sequence...</source>
         <translation>&amp;Stepping Sequence...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="120"/>
+        <location filename="../app/main_window_actions.cpp" line="79"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="123"/>
+        <location filename="../app/main_window_actions.cpp" line="144"/>
         <source>&amp;Edit</source>
         <translation>&amp;Edit</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="127"/>
+        <location filename="../app/main_window_actions.cpp" line="150"/>
         <source>&amp;View</source>
         <translation>&amp;View</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="128"/>
+        <location filename="../app/main_window_actions.cpp" line="151"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Fit to Window</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="129"/>
+        <location filename="../app/main_window_actions.cpp" line="152"/>
         <source>Ctrl+0</source>
         <translation>Ctrl+0</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="131"/>
+        <location filename="../app/main_window_actions.cpp" line="154"/>
         <source>&amp;Actual Size</source>
         <translation>&amp;Actual Size</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="132"/>
+        <location filename="../app/main_window_actions.cpp" line="155"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="133"/>
+        <location filename="../app/main_window_actions.cpp" line="156"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;In</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="135"/>
+        <location filename="../app/main_window_actions.cpp" line="158"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom &amp;Out</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="142"/>
+        <location filename="../app/main_window_actions.cpp" line="165"/>
         <source>Reset &amp;Layout</source>
         <translation>Reset &amp;Layout</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="149"/>
+        <location filename="../app/main_window_actions.cpp" line="172"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Presentation Mode</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="154"/>
+        <location filename="../app/main_window_actions.cpp" line="177"/>
         <source>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</source>
         <translation>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="165"/>
+        <location filename="../app/main_window_actions.cpp" line="192"/>
         <source>The System&apos;s</source>
         <translation>The System&apos;s</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="182"/>
+        <location filename="../app/main_window_actions.cpp" line="211"/>
         <source>S&amp;tep</source>
         <translation>S&amp;tep</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="219"/>
+        <location filename="../app/main_window_actions.cpp" line="231"/>
         <source>Pick the Pixel Under the &amp;Mouse</source>
         <translation>Pick the Pixel Under the &amp;Mouse</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="220"/>
+        <location filename="../app/main_window_actions.cpp" line="232"/>
         <source>Ctrl+G</source>
         <translation>Ctrl+G</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="226"/>
+        <location filename="../app/main_window_actions.cpp" line="261"/>
         <source>&amp;Shading</source>
         <translation>&amp;Shading</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="230"/>
+        <location filename="../app/main_window_actions.cpp" line="265"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (per pixel)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="231"/>
+        <location filename="../app/main_window_actions.cpp" line="266"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (per vertex)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="232"/>
+        <location filename="../app/main_window_actions.cpp" line="267"/>
         <source>&amp;Flat (per triangle)</source>
         <translation>&amp;Flat (per triangle)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="268"/>
+        <location filename="../app/main_window_actions.cpp" line="309"/>
         <source>Pro&amp;jection</source>
         <translation>Pro&amp;jection</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="273"/>
+        <location filename="../app/main_window_actions.cpp" line="314"/>
         <source>&amp;Clip at the Near Plane (nothing behind the eye is divided)</source>
         <translation>&amp;Clip at the Near Plane (nothing behind the eye is divided)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="275"/>
+        <location filename="../app/main_window_actions.cpp" line="316"/>
         <source>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</source>
         <translation>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="277"/>
+        <location filename="../app/main_window_actions.cpp" line="318"/>
         <source>&amp;Same Side (clip only triangles that cross the eye plane)</source>
         <translation>&amp;Same Side (clip only triangles that cross the eye plane)</translation>
     </message>
@@ -1517,32 +1517,32 @@
         <translation>Keyboard Shortcuts</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="247"/>
+        <location filename="../app/main_window_actions.cpp" line="286"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Rasterization Rules</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="252"/>
+        <location filename="../app/main_window_actions.cpp" line="291"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="254"/>
+        <location filename="../app/main_window_actions.cpp" line="293"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="256"/>
+        <location filename="../app/main_window_actions.cpp" line="295"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (seed 001&apos;s reference images)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="289"/>
+        <location filename="../app/main_window_actions.cpp" line="332"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="292"/>
+        <location filename="../app/main_window_actions.cpp" line="335"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;About RasterLab</translation>
     </message>
@@ -1597,57 +1597,57 @@
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="34"/>
+        <location filename="../app/main_window_actions.cpp" line="44"/>
         <source>&amp;Open...</source>
         <translation>&amp;Open...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="37"/>
+        <location filename="../app/main_window_actions.cpp" line="47"/>
         <source>A course camera, lighting or object file, or a command file</source>
         <translation>A course camera, lighting or object file, or a command file</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="38"/>
+        <location filename="../app/main_window_actions.cpp" line="48"/>
         <source>Open O&amp;bject...</source>
         <translation>Open O&amp;bject...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="40"/>
+        <location filename="../app/main_window_actions.cpp" line="50"/>
         <source>Ctrl+Shift+B</source>
         <translation>Ctrl+Shift+B</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="63"/>
+        <location filename="../app/main_window_actions.cpp" line="85"/>
         <source>Course File La&amp;youts</source>
         <translation>Course File La&amp;youts</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="138"/>
+        <location filename="../app/main_window_actions.cpp" line="161"/>
         <source>Pa&amp;nels</source>
         <translation>Pa&amp;nels</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="146"/>
+        <location filename="../app/main_window_actions.cpp" line="169"/>
         <source>I&amp;mage</source>
         <translation>I&amp;mage</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="160"/>
+        <location filename="../app/main_window_actions.cpp" line="187"/>
         <source>Lan&amp;guage</source>
         <translation>Lan&amp;guage</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="191"/>
+        <location filename="../app/main_window_actions.cpp" line="220"/>
         <source>Step B&amp;y</source>
         <translation>Step B&amp;y</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="193"/>
+        <location filename="../app/main_window_actions.cpp" line="222"/>
         <source>S&amp;tage</source>
         <translation>S&amp;tage</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="290"/>
+        <location filename="../app/main_window_actions.cpp" line="333"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Keyboard Shortcuts</translation>
     </message>
@@ -1789,7 +1789,7 @@
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="870"/>
-        <location filename="../app/main_window_actions.cpp" line="111"/>
+        <location filename="../app/main_window_actions.cpp" line="133"/>
         <location filename="../app/main_window_export.cpp" line="157"/>
         <location filename="../app/main_window_export.cpp" line="165"/>
         <source>PNG images (*.png)</source>

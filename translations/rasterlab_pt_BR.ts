@@ -1172,17 +1172,17 @@
         <translation>Algoritmo do pintor</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="33"/>
+        <location filename="../app/main_window_actions.cpp" line="43"/>
         <source>&amp;File</source>
         <translation>&amp;Arquivo</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="117"/>
+        <location filename="../app/main_window_actions.cpp" line="139"/>
         <source>&amp;Animation Frames...</source>
         <translation>&amp;Quadros da animação...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="233"/>
+        <location filename="../app/main_window_actions.cpp" line="268"/>
         <source>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</source>
         <translation>&amp;Algoritmo do pintor (flat, do mais distante ao mais próximo, sem teste de profundidade)</translation>
     </message>
@@ -1217,7 +1217,7 @@
         <translation>salvar, desfazer, refazer</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="42"/>
+        <location filename="../app/main_window_actions.cpp" line="52"/>
         <source>Open &amp;Camera...</source>
         <translation>Abrir &amp;câmera...</translation>
     </message>
@@ -1227,222 +1227,222 @@
         <translation>Desenhar com a divisão simples</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="44"/>
+        <location filename="../app/main_window_actions.cpp" line="54"/>
         <source>Ctrl+Shift+C</source>
         <translation>Ctrl+Shift+C</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="46"/>
+        <location filename="../app/main_window_actions.cpp" line="56"/>
         <source>Open &amp;Lighting...</source>
         <translation>Abrir &amp;iluminação...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="47"/>
+        <location filename="../app/main_window_actions.cpp" line="57"/>
         <source>Ctrl+Shift+L</source>
         <translation>Ctrl+Shift+L</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="49"/>
+        <location filename="../app/main_window_actions.cpp" line="59"/>
         <source>Open Command &amp;File...</source>
         <translation>Abrir arquivo de co&amp;mandos...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="50"/>
+        <location filename="../app/main_window_actions.cpp" line="60"/>
         <source>Ctrl+Shift+O</source>
         <translation>Ctrl+Shift+O</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="52"/>
+        <location filename="../app/main_window_actions.cpp" line="62"/>
         <source>Open &amp;Recent</source>
         <translation>Abrir recen&amp;tes</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="54"/>
+        <location filename="../app/main_window_actions.cpp" line="64"/>
         <source>&amp;Default Scene</source>
         <translation>Cena &amp;padrão</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="65"/>
+        <location filename="../app/main_window_actions.cpp" line="87"/>
         <source>&amp;Camera</source>
         <translation>&amp;Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="77"/>
+        <location filename="../app/main_window_actions.cpp" line="99"/>
         <source>&amp;Lighting</source>
         <translation>&amp;Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="93"/>
+        <location filename="../app/main_window_actions.cpp" line="115"/>
         <source>&amp;Export PNG...</source>
         <translation>&amp;Exportar PNG...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="94"/>
+        <location filename="../app/main_window_actions.cpp" line="116"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="96"/>
+        <location filename="../app/main_window_actions.cpp" line="118"/>
         <source>Export &amp;More</source>
         <translation>E&amp;xportar mais</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="99"/>
+        <location filename="../app/main_window_actions.cpp" line="121"/>
         <source>Image as &amp;Displayed...</source>
         <translation>Imagem como &amp;exibida...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="100"/>
+        <location filename="../app/main_window_actions.cpp" line="122"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="101"/>
+        <location filename="../app/main_window_actions.cpp" line="123"/>
         <source>&amp;Colour Buffer at the Cursor...</source>
         <translation>Buffer de &amp;cor no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="103"/>
+        <location filename="../app/main_window_actions.cpp" line="125"/>
         <source>D&amp;epth Buffer at the Cursor...</source>
         <translation>Buffer de pro&amp;fundidade no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="105"/>
+        <location filename="../app/main_window_actions.cpp" line="127"/>
         <source>&amp;Normal Buffer...</source>
         <translation>Buffer de &amp;normais...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="106"/>
+        <location filename="../app/main_window_actions.cpp" line="128"/>
         <source>A &amp;View as Displayed</source>
         <translation>Um &amp;painel como exibido</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="110"/>
+        <location filename="../app/main_window_actions.cpp" line="132"/>
         <source>Export View</source>
         <translation>Exportar painel</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="115"/>
+        <location filename="../app/main_window_actions.cpp" line="137"/>
         <source>&amp;Stepping Sequence...</source>
         <translation>&amp;Sequência de passos...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="120"/>
+        <location filename="../app/main_window_actions.cpp" line="79"/>
         <source>&amp;Quit</source>
         <translation>Sai&amp;r</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="123"/>
+        <location filename="../app/main_window_actions.cpp" line="144"/>
         <source>&amp;Edit</source>
         <translation>&amp;Editar</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="127"/>
+        <location filename="../app/main_window_actions.cpp" line="150"/>
         <source>&amp;View</source>
         <translation>E&amp;xibir</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="128"/>
+        <location filename="../app/main_window_actions.cpp" line="151"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Ajustar à janela</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="129"/>
+        <location filename="../app/main_window_actions.cpp" line="152"/>
         <source>Ctrl+0</source>
         <translation>Ctrl+0</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="131"/>
+        <location filename="../app/main_window_actions.cpp" line="154"/>
         <source>&amp;Actual Size</source>
         <translation>&amp;Tamanho real</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="132"/>
+        <location filename="../app/main_window_actions.cpp" line="155"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="133"/>
+        <location filename="../app/main_window_actions.cpp" line="156"/>
         <source>Zoom &amp;In</source>
         <translation>A&amp;umentar zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="135"/>
+        <location filename="../app/main_window_actions.cpp" line="158"/>
         <source>Zoom &amp;Out</source>
         <translation>&amp;Diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="142"/>
+        <location filename="../app/main_window_actions.cpp" line="165"/>
         <source>Reset &amp;Layout</source>
         <translation>Restaurar &amp;layout</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="149"/>
+        <location filename="../app/main_window_actions.cpp" line="172"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="154"/>
+        <location filename="../app/main_window_actions.cpp" line="177"/>
         <source>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</source>
         <translation>Texto maior, sobreposições mais grossas, alto contraste; as teclas do passador de slides avançam os passos (F5 ou Esc)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="165"/>
+        <location filename="../app/main_window_actions.cpp" line="192"/>
         <source>The System&apos;s</source>
         <translation>Do sistema</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="182"/>
+        <location filename="../app/main_window_actions.cpp" line="211"/>
         <source>S&amp;tep</source>
         <translation>&amp;Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="219"/>
+        <location filename="../app/main_window_actions.cpp" line="231"/>
         <source>Pick the Pixel Under the &amp;Mouse</source>
         <translation>Escolher o pixel sob o &amp;mouse</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="220"/>
+        <location filename="../app/main_window_actions.cpp" line="232"/>
         <source>Ctrl+G</source>
         <translation>Ctrl+G</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="226"/>
+        <location filename="../app/main_window_actions.cpp" line="261"/>
         <source>&amp;Shading</source>
         <translation>&amp;Sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="230"/>
+        <location filename="../app/main_window_actions.cpp" line="265"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (por pixel)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="231"/>
+        <location filename="../app/main_window_actions.cpp" line="266"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (por vértice)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="232"/>
+        <location filename="../app/main_window_actions.cpp" line="267"/>
         <source>&amp;Flat (per triangle)</source>
         <translation>&amp;Flat (por triângulo)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="268"/>
+        <location filename="../app/main_window_actions.cpp" line="309"/>
         <source>Pro&amp;jection</source>
         <translation>Pro&amp;jeção</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="273"/>
+        <location filename="../app/main_window_actions.cpp" line="314"/>
         <source>&amp;Clip at the Near Plane (nothing behind the eye is divided)</source>
         <translation>&amp;Recortar no plano próximo (nada atrás do olho é dividido)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="275"/>
+        <location filename="../app/main_window_actions.cpp" line="316"/>
         <source>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</source>
         <translation>&amp;Divisão simples, sem recorte (a seed 000 como escrita; o HW2 da seed 001)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="277"/>
+        <location filename="../app/main_window_actions.cpp" line="318"/>
         <source>&amp;Same Side (clip only triangles that cross the eye plane)</source>
         <translation>&amp;Mesmo lado (recortar só os triângulos que cruzam o plano do olho)</translation>
     </message>
@@ -1517,32 +1517,32 @@
         <translation>Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="247"/>
+        <location filename="../app/main_window_actions.cpp" line="286"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Regras de rasterização</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="252"/>
+        <location filename="../app/main_window_actions.cpp" line="291"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Curso (semente 000: vértices em pixels inteiros, interpolação no espaço da tela)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="254"/>
+        <location filename="../app/main_window_actions.cpp" line="293"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>Como uma &amp;GPU (vértices em 1/256 de pixel, centros dos pixels, regra top-left, correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="256"/>
+        <location filename="../app/main_window_actions.cpp" line="295"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (as imagens de referência da semente 001)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="289"/>
+        <location filename="../app/main_window_actions.cpp" line="332"/>
         <source>&amp;Help</source>
         <translation>A&amp;juda</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="292"/>
+        <location filename="../app/main_window_actions.cpp" line="335"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;Sobre o RasterLab</translation>
     </message>
@@ -1597,57 +1597,57 @@
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="34"/>
+        <location filename="../app/main_window_actions.cpp" line="44"/>
         <source>&amp;Open...</source>
         <translation>&amp;Abrir...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="37"/>
+        <location filename="../app/main_window_actions.cpp" line="47"/>
         <source>A course camera, lighting or object file, or a command file</source>
         <translation>Um arquivo de câmera, iluminação ou objeto do curso, ou um arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="38"/>
+        <location filename="../app/main_window_actions.cpp" line="48"/>
         <source>Open O&amp;bject...</source>
         <translation>Abrir &amp;objeto...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="40"/>
+        <location filename="../app/main_window_actions.cpp" line="50"/>
         <source>Ctrl+Shift+B</source>
         <translation>Ctrl+Shift+B</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="63"/>
+        <location filename="../app/main_window_actions.cpp" line="85"/>
         <source>Course File La&amp;youts</source>
         <translation>&amp;Formatos dos arquivos do curso</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="138"/>
+        <location filename="../app/main_window_actions.cpp" line="161"/>
         <source>Pa&amp;nels</source>
         <translation>&amp;Painéis</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="146"/>
+        <location filename="../app/main_window_actions.cpp" line="169"/>
         <source>I&amp;mage</source>
         <translation>&amp;Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="160"/>
+        <location filename="../app/main_window_actions.cpp" line="187"/>
         <source>Lan&amp;guage</source>
         <translation>Idi&amp;oma</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="191"/>
+        <location filename="../app/main_window_actions.cpp" line="220"/>
         <source>Step B&amp;y</source>
         <translation>Avançar &amp;por</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="193"/>
+        <location filename="../app/main_window_actions.cpp" line="222"/>
         <source>S&amp;tage</source>
         <translation>&amp;Etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="290"/>
+        <location filename="../app/main_window_actions.cpp" line="333"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Atalhos de teclado</translation>
     </message>
@@ -1789,7 +1789,7 @@
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="870"/>
-        <location filename="../app/main_window_actions.cpp" line="111"/>
+        <location filename="../app/main_window_actions.cpp" line="133"/>
         <location filename="../app/main_window_export.cpp" line="157"/>
         <location filename="../app/main_window_export.cpp" line="165"/>
         <source>PNG images (*.png)</source>
