@@ -501,15 +501,26 @@ QString ScanlineView::titleText() const {
     return text;
 }
 
+namespace {
+
+// The edges' colours in the text, as the drawing shows them: long, upper, lower.
+const std::array<QString, 3>& edgeColours() {
+    static const std::array<QString, 3> colours{
+        QStringLiteral("#ff9628"), QStringLiteral("#2a9fd6"), QStringLiteral("#c040c0")};
+    return colours;
+}
+
+}  // namespace
+
+std::array<QString, 3> ScanlineView::edgeNames() {
+    return {tr("long"), tr("upper"), tr("lower")};
+}
+
 QString ScanlineView::explanationHtml() const {
     if (!m_model) return {};
     const rl::FrameTrace& frame = *m_inspection->frame();
-    const rl::Scene& scene = *frame.scene;
     const ScanlineModel& m = *m_model;
     const rl::TriangleSetup& s = m.setup;
-    const rl::RasterRules& rules = scene.rules;
-    const bool topLeft = rules.fill == rl::RasterRules::FillRule::TopLeft;
-    const double offset = rules.sampleOffset;
     QString html;
 
     // The vertices sorted by y and the edge table.
@@ -530,17 +541,39 @@ QString ScanlineView::explanationHtml() const {
                 .arg(s.longEdgeOnLeft ? tr("right") : tr("left"))
                 .arg(s.longEdgeOnLeft ? tr("left") : tr("right")) +
             QStringLiteral("</p>");
-    // The edge table, one column per edge.
-    const std::array<QString, 3> names{tr("long"), tr("upper"), tr("lower")};
-    const std::array<QString, 3> colours{QStringLiteral("#ff9628"), QStringLiteral("#2a9fd6"),
-                                         QStringLiteral("#c040c0")};
+    html += edgeTableHtml(m);
+
+    // The scanline: the edges' x stepped by dx/dy, the span, its ends.
+    if (!m.row) {
+        html += QStringLiteral("<p>") + tr("No row of this triangle is on the screen.") +
+                QStringLiteral("</p>");
+        return html;
+    }
+    html += scanlineHtml(m, *frame.scene);
+    // Depth and normal at both ends of the span.
+    if (!m.row->empty()) html += spanEndsHtml(m, frame);
+    html += QStringLiteral("<p><i>") +
+            tr("Edge walking: from one scanline to the next, each edge's x changes by its "
+               "constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. "
+               "The span between the two crossings is filled; the long edge bounds every row, the "
+               "upper edge the rows above the middle vertex, the lower edge the rest.") +
+            QStringLiteral("</i></p>");
+    return html;
+}
+
+// The edge table, one column per edge, and the rows of it on the screen.
+QString ScanlineView::edgeTableHtml(const ScanlineModel& m) const {
+    const rl::TriangleSetup& s = m.setup;
+    const std::array<QString, 3> names = edgeNames();
+    const std::array<QString, 3>& colours = edgeColours();
     const auto tableRow = [&](const QString& header, const auto& cell) {
         QString line = QStringLiteral("<tr><th align='left'>%1</th>").arg(header);
         for (std::size_t k = 0; k < 3; ++k)
             line += QStringLiteral("<td nowrap>%1</td>").arg(cell(m.edges[k]));
         return line + QStringLiteral("</tr>");
     };
-    html += QStringLiteral("<table cellspacing='0' cellpadding='3' border='1'><tr><th></th>");
+    QString html =
+        QStringLiteral("<table cellspacing='0' cellpadding='3' border='1'><tr><th></th>");
     for (std::size_t k = 0; k < 3; ++k)
         html += QStringLiteral("<th><font color='%1'>%2</font></th>").arg(colours[k], names[k]);
     html += QStringLiteral("</tr>");
@@ -569,13 +602,16 @@ QString ScanlineView::explanationHtml() const {
                     .arg(m.rows.first)
                     .arg(m.rows.last) +
                 QStringLiteral("</p>");
+    return html;
+}
 
-    // The scanline: the edges' x stepped by dx/dy, the span, its ends.
-    if (!m.row) {
-        html += QStringLiteral("<p>") + tr("No row of this triangle is on the screen.") +
-                QStringLiteral("</p>");
-        return html;
-    }
+// The scanline shown: its edges' crossings stepped by dx/dy, the fill rule and the span.
+QString ScanlineView::scanlineHtml(const ScanlineModel& m, const rl::Scene& scene) const {
+    const rl::RasterRules& rules = scene.rules;
+    const bool topLeft = rules.fill == rl::RasterRules::FillRule::TopLeft;
+    const double offset = rules.sampleOffset;
+    const std::array<QString, 3> names = edgeNames();
+    const std::array<QString, 3>& colours = edgeColours();
     const ScanRowInfo& row = *m.row;
     const std::size_t shortIndex = row.upperPart ? 1 : 2;
     const ScanEdgeEntry& longEdge = m.edges[0];
@@ -608,7 +644,8 @@ QString ScanlineView::explanationHtml() const {
     const ScanEdgeEntry& rightEdge = longEdge.onLeft ? shortEdge : longEdge;
     const std::size_t leftIndex = longEdge.onLeft ? 0 : shortIndex;
     const std::size_t rightIndex = longEdge.onLeft ? shortIndex : 0;
-    html += QStringLiteral("<p><b>") + tr("Scanline y = %1").arg(row.y) + QStringLiteral("</b>");
+    QString html =
+        QStringLiteral("<p><b>") + tr("Scanline y = %1").arg(row.y) + QStringLiteral("</b>");
     if (offset != 0.0)
         html += QLatin1Char(' ') + tr("(sampled at y = %1)").arg(num(row.y + offset));
     html += QStringLiteral(":<br>") +
@@ -651,70 +688,67 @@ QString ScanlineView::explanationHtml() const {
     if (m.currentPixel)
         html += QLatin1Char(' ') + tr("The pixel at the cursor is x = %1.").arg(*m.currentPixel);
     html += QStringLiteral("</p>");
+    return html;
+}
 
-    // Depth and normal at both ends of the span.
-    if (!row.empty()) {
-        const rl::ScreenTriangle& tri = frame.projection->triangles[m.triangle];
-        const rl::DrawProjection& draw = frame.projection->draws[tri.draw];
-        const bool perspective = rl::perspectiveDepth(scene);
-        const float z1 = draw.depth[tri.v[0]], z2 = draw.depth[tri.v[1]], z3 = draw.depth[tri.v[2]];
-        const std::array<rl::dvec2, 3> p = rl::screenVertices(*frame.projection, tri);
-        html += QStringLiteral("<p>") +
-                tr("At the ends of the span, the barycentrics (&alpha;, &beta;, &gamma;) of the "
-                   "sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the "
-                   "depth, from the vertices' z1 = %4, z2 = %5, z3 = %6:")
-                    .arg(vector(p[0]), vector(p[1]), vector(p[2]), num(z1), num(z2), num(z3));
-        html += QStringLiteral("<br><i>") +
-                (perspective ? tr("1/z = 1/z1 + &beta; (1/z2 &minus; 1/z1) + &gamma; (1/z3 &minus; "
-                                  "1/z1) (perspective-correct: 1/z is linear on the screen)")
-                             : tr("z = z1 + &beta; (z2 &minus; z1) + &gamma; (z3 &minus; z1)")) +
-                QStringLiteral("</i></p>");
+// The depth and the normal at both ends of the span, from the barycentrics of their samples.
+QString ScanlineView::spanEndsHtml(const ScanlineModel& m, const rl::FrameTrace& frame) const {
+    const rl::Scene& scene = *frame.scene;
+    const rl::RasterRules& rules = scene.rules;
+    const double offset = rules.sampleOffset;
+    const ScanRowInfo& row = *m.row;
+    const rl::ScreenTriangle& tri = frame.projection->triangles[m.triangle];
+    const rl::DrawProjection& draw = frame.projection->draws[tri.draw];
+    const bool perspective = rl::perspectiveDepth(scene);
+    const float z1 = draw.depth[tri.v[0]], z2 = draw.depth[tri.v[1]], z3 = draw.depth[tri.v[2]];
+    const std::array<rl::dvec2, 3> p = rl::screenVertices(*frame.projection, tri);
+    QString html = QStringLiteral("<p>") +
+                   tr("At the ends of the span, the barycentrics (&alpha;, &beta;, &gamma;) of the "
+                      "sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the "
+                      "depth, from the vertices' z1 = %4, z2 = %5, z3 = %6:")
+                       .arg(vector(p[0]), vector(p[1]), vector(p[2]), num(z1), num(z2), num(z3));
+    html += QStringLiteral("<br><i>") +
+            (perspective ? tr("1/z = 1/z1 + &beta; (1/z2 &minus; 1/z1) + &gamma; (1/z3 &minus; "
+                              "1/z1) (perspective-correct: 1/z is linear on the screen)")
+                         : tr("z = z1 + &beta; (z2 &minus; z1) + &gamma; (z3 &minus; z1)")) +
+            QStringLiteral("</i></p>");
+    html += QStringLiteral(
+                "<table cellspacing='0' cellpadding='3' border='1'><tr><th></th>"
+                "<th>&alpha;, &beta;, &gamma;</th><th>") +
+            tr("depth") + QStringLiteral("</th><th>") + tr("normal") + QStringLiteral("</th></tr>");
+    std::vector<const SpanEnd*> ends{&*row.first};
+    if (row.xEnd - row.xBegin > 1) ends.push_back(&*row.last);
+    QString lines;
+    for (const SpanEnd* e : ends) {
+        const QString which = QStringLiteral("(%1, %2)").arg(e->x).arg(e->y);
+        const QString normal = !e->hasNormal                 ? tr("not computed (nothing is lit)")
+                               : e->normal == rl::vec3(0.0f) ? tr("zero")
+                                                             : vector(e->normal, 'g', 4);
         html += QStringLiteral(
-                    "<table cellspacing='0' cellpadding='3' border='1'><tr><th></th>"
-                    "<th>&alpha;, &beta;, &gamma;</th><th>") +
-                tr("depth") + QStringLiteral("</th><th>") + tr("normal") +
-                QStringLiteral("</th></tr>");
-        std::vector<const SpanEnd*> ends{&*row.first};
-        if (row.xEnd - row.xBegin > 1) ends.push_back(&*row.last);
-        QString lines;
-        for (const SpanEnd* e : ends) {
-            const QString which = QStringLiteral("(%1, %2)").arg(e->x).arg(e->y);
-            const QString normal = !e->hasNormal ? tr("not computed (nothing is lit)")
-                                   : e->normal == rl::vec3(0.0f) ? tr("zero")
-                                                                 : vector(e->normal, 'g', 4);
-            html += QStringLiteral(
-                        "<tr><th>%1</th><td nowrap>%2, %3, %4</td><td><b>%5</b></td>"
-                        "<td nowrap>%6</td></tr>")
-                        .arg(which, num(e->alpha, 4), num(e->beta, 4), num(e->gamma, 4),
-                             num(e->depth), normal);
-            if (perspective)
-                lines += QStringLiteral("<br>%1: z = 1 / (%2 + %3 &times; %4 + %5 &times; %6) = %7")
-                             .arg(which, num(1.0f / z1), num(e->beta), num(1.0f / z2 - 1.0f / z1),
-                                  num(e->gamma), num(1.0f / z3 - 1.0f / z1), num(e->depth));
-            else
-                lines += QStringLiteral("<br>%1: z = %2 + %3 &times; %4 + %5 &times; %6 = %7")
-                             .arg(which, num(z1), num(e->beta), num(z2 - z1), num(e->gamma),
-                                  num(z3 - z1), num(e->depth));
-        }
-        html +=
-            QStringLiteral("</table><p>") +
+                    "<tr><th>%1</th><td nowrap>%2, %3, %4</td><td><b>%5</b></td>"
+                    "<td nowrap>%6</td></tr>")
+                    .arg(which, num(e->alpha, 4), num(e->beta, 4), num(e->gamma, 4), num(e->depth),
+                         normal);
+        if (perspective)
+            lines += QStringLiteral("<br>%1: z = 1 / (%2 + %3 &times; %4 + %5 &times; %6) = %7")
+                         .arg(which, num(1.0f / z1), num(e->beta), num(1.0f / z2 - 1.0f / z1),
+                              num(e->gamma), num(1.0f / z3 - 1.0f / z1), num(e->depth));
+        else
+            lines += QStringLiteral("<br>%1: z = %2 + %3 &times; %4 + %5 &times; %6 = %7")
+                         .arg(which, num(z1), num(e->beta), num(z2 - z1), num(e->gamma),
+                              num(z3 - z1), num(e->depth));
+    }
+    html += QStringLiteral("</table><p>") +
             (offset == 0.0 ? tr("Pixel (x, y) is sampled at the point (x, y) itself.")
                            : tr("Pixel (x, y) is sampled at (x + %1, y + %1).").arg(num(offset))) +
             lines + QStringLiteral("</p>");
-        html += QStringLiteral("<p>") +
-                tr("The normal is N1 + &beta; (N2 &minus; N1) + &gamma; (N3 &minus; N1) from the "
-                   "vertex normals, normalised%1.")
-                    .arg(rules.interpolation == rl::RasterRules::Interpolation::PerspectiveCorrect
-                             ? tr(", with the barycentrics weighted by 1/w (perspective-correct)")
-                             : QString()) +
-                QStringLiteral("</p>");
-    }
-    html += QStringLiteral("<p><i>") +
-            tr("Edge walking: from one scanline to the next, each edge's x changes by its "
-               "constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. "
-               "The span between the two crossings is filled; the long edge bounds every row, the "
-               "upper edge the rows above the middle vertex, the lower edge the rest.") +
-            QStringLiteral("</i></p>");
+    html += QStringLiteral("<p>") +
+            tr("The normal is N1 + &beta; (N2 &minus; N1) + &gamma; (N3 &minus; N1) from the "
+               "vertex normals, normalised%1.")
+                .arg(rules.interpolation == rl::RasterRules::Interpolation::PerspectiveCorrect
+                         ? tr(", with the barycentrics weighted by 1/w (perspective-correct)")
+                         : QString()) +
+            QStringLiteral("</p>");
     return html;
 }
 

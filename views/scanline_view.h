@@ -91,7 +91,12 @@ protected:
 
 private:
     void refresh() override;
+    // The lecture's explanation with this triangle's numbers, section by section.
     QString explanationHtml() const;
+    QString edgeTableHtml(const ScanlineModel& m) const;
+    QString scanlineHtml(const ScanlineModel& m, const rl::Scene& scene) const;
+    QString spanEndsHtml(const ScanlineModel& m, const rl::FrameTrace& frame) const;
+    static std::array<QString, 3> edgeNames();  // long, upper, lower
 
     std::optional<ScanlineModel> m_model;
     bool m_followsCursor = false;
