@@ -34,6 +34,124 @@ QString jsonNumber(double v, int decimals) {
     return std::isfinite(v) ? QString::number(v, 'f', decimals) : lit("null");
 }
 
+// A number with a fixed count of decimals.
+QString number(double v, int decimals) {
+    return QString::number(v, 'f', decimals);
+}
+
+// The report in the format --format names: JSON, CSV, or a Markdown table (md) under a line
+// about the scene and the reference.
+void printJson(const rl::AccuracyReport& report, QTextStream& out) {
+    out << "[";
+    bool first = true;
+    for (const rl::AccuracyRow& row : report.rows) {
+        const rl::AccuracyMetrics& m = row.metrics;
+        out << (first ? "\n" : ",\n") << "  {\"mode\": \"" << rl::shadingModelName(row.mode.shading)
+            << "\", \"rules\": \"" << rl::ruleSetName(row.mode.rules) << "\", \"precision\": \""
+            << QString::fromStdString(row.precision)
+            << "\", \"supersample\": " << row.mode.supersample * row.mode.supersample
+            << ", \"ms\": " << number(row.milliseconds, 3)
+            << ", \"rmse\": " << jsonNumber(m.rmse, 7)
+            << ", \"max_error\": " << jsonNumber(m.maxError, 7)
+            << ", \"psnr\": " << jsonNumber(m.psnr, 2)
+            << ", \"coverage_mismatch\": " << jsonNumber(m.coverageMismatchShare(), 6)
+            << ", \"within_1_255\": " << jsonNumber(m.within1Of255, 6)
+            << ", \"depth_error_mean\": " << jsonNumber(m.depthMeanRelative, 9)
+            << ", \"depth_error_max\": " << jsonNumber(m.depthMaxRelative, 9)
+            << ", \"worst_x\": " << m.worstX << ", \"worst_y\": " << m.worstY
+            << ", \"both_covered\": " << m.bothCovered
+            << ", \"either_covered\": " << m.eitherCovered
+            << ", \"coverage_mismatch_pixels\": " << m.coverageMismatch << "}";
+        first = false;
+    }
+    out << "\n]\n";
+}
+
+void printCsv(const rl::AccuracyReport& report, QTextStream& out) {
+    out << "mode,rules,precision,supersample,ms,rmse,max_error,psnr,coverage_mismatch,"
+           "within_1_255,depth_error_mean,depth_error_max\n";
+    for (const rl::AccuracyRow& row : report.rows) {
+        const rl::AccuracyMetrics& m = row.metrics;
+        out << rl::shadingModelName(row.mode.shading) << "," << rl::ruleSetName(row.mode.rules)
+            << "," << QString::fromStdString(row.precision) << ","
+            << row.mode.supersample * row.mode.supersample << "," << number(row.milliseconds, 3)
+            << "," << number(m.rmse, 7) << "," << number(m.maxError, 7) << ","
+            << (std::isfinite(m.psnr) ? number(m.psnr, 2) : lit("inf")) << ","
+            << number(m.coverageMismatchShare(), 6) << "," << number(m.within1Of255, 6) << ","
+            << number(m.depthMeanRelative, 9) << "," << number(m.depthMaxRelative, 9) << "\n";
+    }
+}
+
+void printTable(const rl::AccuracyReport& report, const rl::Scene& scene, const QString& sceneLabel,
+                QTextStream& out) {
+    out << "Accuracy of " << sceneLabel << " at " << scene.width << "x" << scene.height << " ("
+        << scene.triangleCount() << " triangles) against the exact reference ("
+        << report.referenceRays << " rays, " << number(report.referenceMilliseconds, 0)
+        << " ms). Colour errors in byte steps (1/255) over the pixels both cover; time is "
+           "the median per frame.\n\n"
+        << "| mode | rules | precision | samples | ms | RMSE | max error | PSNR dB | "
+           "coverage mismatch | within 1/255 | depth error mean / max |\n"
+        << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const rl::AccuracyRow& row : report.rows) {
+        const rl::AccuracyMetrics& m = row.metrics;
+        out << "| " << rl::shadingModelName(row.mode.shading) << " | "
+            << rl::ruleSetName(row.mode.rules) << " | " << QString::fromStdString(row.precision)
+            << " | " << row.mode.supersample * row.mode.supersample << " | "
+            << number(row.milliseconds, 2) << " | " << number(m.rmse * 255.0, 4) << " | "
+            << number(m.maxError * 255.0, 3)
+            << (m.worstX >= 0 ? lit(" at (%1, %2)").arg(m.worstX).arg(m.worstY) : QString())
+            << " | " << (std::isfinite(m.psnr) ? number(m.psnr, 1) : lit("inf")) << " | "
+            << number(100.0 * m.coverageMismatchShare(), 3) << " % (" << m.coverageMismatch
+            << " px) | " << number(100.0 * m.within1Of255, 3) << " % | "
+            << (std::isnan(m.depthMeanRelative)
+                    ? lit("-")
+                    : QString::number(m.depthMeanRelative, 'g', 2) + lit(" / ") +
+                          QString::number(m.depthMaxRelative, 'g', 2))
+            << " |\n";
+    }
+}
+
+// --plot: error against run time. ExitOk, or ExitBadInput when the file cannot be written.
+int writePlot(const rl::AccuracyReport& report, const rl::Scene& scene, const QString& sceneLabel,
+              const QString& path, QTextStream& out, QTextStream& err) {
+    const QString title = lit("Error against run time: %1, %2x%3, %4 triangles")
+                              .arg(sceneLabel)
+                              .arg(scene.width)
+                              .arg(scene.height)
+                              .arg(scene.triangleCount());
+    QString error;
+    if (!savePng(accuracyPlot(report, title), path, &error)) {
+        err << path << ": cannot write the plot: " << error << "\n";
+        return ExitBadInput;
+    }
+    out << "wrote " << QFileInfo(path).absoluteFilePath() << " (plot)\n";
+    return ExitOk;
+}
+
+// --heatmaps: each mode's error heat map in the folder. ExitOk, or ExitBadInput when the
+// folder or a file cannot be written.
+int writeHeatMaps(const rl::AccuracyReport& report, const QString& folderPath, QTextStream& out,
+                  QTextStream& err) {
+    const QDir folder(folderPath);
+    if (!QDir().mkpath(folder.path())) {
+        err << folder.path() << ": cannot create the folder\n";
+        return ExitBadInput;
+    }
+    for (const rl::AccuracyRow& row : report.rows) {
+        QString name = QString::fromStdString(rl::accuracyModeName(row.mode));
+        name.replace(QLatin1Char('/'), QLatin1Char('-')).replace(lit(" "), QString());
+        const QString path = folder.filePath(lit("error-%1.png").arg(name));
+        // One scale for every mode: 0 to 8 byte steps, larger errors white.
+        QString error;
+        if (!savePng(errorHeatMap(row.errorMap, 8.0f / 255.0f), path, &error)) {
+            err << path << ": cannot write the heat map: " << error << "\n";
+            return ExitBadInput;
+        }
+        out << "wrote " << QFileInfo(path).absoluteFilePath() << " (heat map)\n";
+    }
+    return ExitOk;
+}
+
 }  // namespace
 
 int runAccuracy(const QStringList& arguments, QTextStream& out, QTextStream& err) {
@@ -130,103 +248,20 @@ int runAccuracy(const QStringList& arguments, QTextStream& out, QTextStream& err
     auto report = rl::measureAccuracy(*scene, options);
     if (!report) return inputError(err, report.error());
 
-    const auto number = [](double v, int decimals) { return QString::number(v, 'f', decimals); };
-    if (outputFormat == lit("json")) {
-        out << "[";
-        bool first = true;
-        for (const rl::AccuracyRow& row : report->rows) {
-            const rl::AccuracyMetrics& m = row.metrics;
-            out << (first ? "\n" : ",\n") << "  {\"mode\": \""
-                << rl::shadingModelName(row.mode.shading) << "\", \"rules\": \""
-                << rl::ruleSetName(row.mode.rules) << "\", \"precision\": \""
-                << QString::fromStdString(row.precision)
-                << "\", \"supersample\": " << row.mode.supersample * row.mode.supersample
-                << ", \"ms\": " << number(row.milliseconds, 3)
-                << ", \"rmse\": " << jsonNumber(m.rmse, 7)
-                << ", \"max_error\": " << jsonNumber(m.maxError, 7)
-                << ", \"psnr\": " << jsonNumber(m.psnr, 2)
-                << ", \"coverage_mismatch\": " << jsonNumber(m.coverageMismatchShare(), 6)
-                << ", \"within_1_255\": " << jsonNumber(m.within1Of255, 6)
-                << ", \"depth_error_mean\": " << jsonNumber(m.depthMeanRelative, 9)
-                << ", \"depth_error_max\": " << jsonNumber(m.depthMaxRelative, 9)
-                << ", \"worst_x\": " << m.worstX << ", \"worst_y\": " << m.worstY
-                << ", \"both_covered\": " << m.bothCovered
-                << ", \"either_covered\": " << m.eitherCovered
-                << ", \"coverage_mismatch_pixels\": " << m.coverageMismatch << "}";
-            first = false;
-        }
-        out << "\n]\n";
-    } else if (outputFormat == lit("csv")) {
-        out << "mode,rules,precision,supersample,ms,rmse,max_error,psnr,coverage_mismatch,"
-               "within_1_255,depth_error_mean,depth_error_max\n";
-        for (const rl::AccuracyRow& row : report->rows) {
-            const rl::AccuracyMetrics& m = row.metrics;
-            out << rl::shadingModelName(row.mode.shading) << "," << rl::ruleSetName(row.mode.rules)
-                << "," << QString::fromStdString(row.precision) << ","
-                << row.mode.supersample * row.mode.supersample << "," << number(row.milliseconds, 3)
-                << "," << number(m.rmse, 7) << "," << number(m.maxError, 7) << ","
-                << (std::isfinite(m.psnr) ? number(m.psnr, 2) : lit("inf")) << ","
-                << number(m.coverageMismatchShare(), 6) << "," << number(m.within1Of255, 6) << ","
-                << number(m.depthMeanRelative, 9) << "," << number(m.depthMaxRelative, 9) << "\n";
-        }
-    } else {
-        out << "Accuracy of " << sceneLabel << " at " << scene->width << "x" << scene->height
-            << " (" << scene->triangleCount() << " triangles) against the exact reference ("
-            << report->referenceRays << " rays, " << number(report->referenceMilliseconds, 0)
-            << " ms). Colour errors in byte steps (1/255) over the pixels both cover; time is "
-               "the median per frame.\n\n"
-            << "| mode | rules | precision | samples | ms | RMSE | max error | PSNR dB | "
-               "coverage mismatch | within 1/255 | depth error mean / max |\n"
-            << "|---|---|---|---|---|---|---|---|---|---|---|\n";
-        for (const rl::AccuracyRow& row : report->rows) {
-            const rl::AccuracyMetrics& m = row.metrics;
-            out << "| " << rl::shadingModelName(row.mode.shading) << " | "
-                << rl::ruleSetName(row.mode.rules) << " | " << QString::fromStdString(row.precision)
-                << " | " << row.mode.supersample * row.mode.supersample << " | "
-                << number(row.milliseconds, 2) << " | " << number(m.rmse * 255.0, 4) << " | "
-                << number(m.maxError * 255.0, 3)
-                << (m.worstX >= 0 ? lit(" at (%1, %2)").arg(m.worstX).arg(m.worstY) : QString())
-                << " | " << (std::isfinite(m.psnr) ? number(m.psnr, 1) : lit("inf")) << " | "
-                << number(100.0 * m.coverageMismatchShare(), 3) << " % (" << m.coverageMismatch
-                << " px) | " << number(100.0 * m.within1Of255, 3) << " % | "
-                << (std::isnan(m.depthMeanRelative)
-                        ? lit("-")
-                        : QString::number(m.depthMeanRelative, 'g', 2) + lit(" / ") +
-                              QString::number(m.depthMaxRelative, 'g', 2))
-                << " |\n";
-        }
-    }
+    if (outputFormat == lit("json"))
+        printJson(*report, out);
+    else if (outputFormat == lit("csv"))
+        printCsv(*report, out);
+    else
+        printTable(*report, *scene, sceneLabel, out);
     if (parser.isSet(plot)) {
-        const QString title = lit("Error against run time: %1, %2x%3, %4 triangles")
-                                  .arg(sceneLabel)
-                                  .arg(scene->width)
-                                  .arg(scene->height)
-                                  .arg(scene->triangleCount());
-        QString error;
-        if (!savePng(accuracyPlot(report.value(), title), parser.value(plot), &error)) {
-            err << parser.value(plot) << ": cannot write the plot: " << error << "\n";
-            return ExitBadInput;
-        }
-        out << "wrote " << QFileInfo(parser.value(plot)).absoluteFilePath() << " (plot)\n";
+        if (int code = writePlot(*report, *scene, sceneLabel, parser.value(plot), out, err);
+            code != ExitOk)
+            return code;
     }
     if (parser.isSet(heatmaps)) {
-        const QDir folder(parser.value(heatmaps));
-        if (!QDir().mkpath(folder.path())) {
-            err << folder.path() << ": cannot create the folder\n";
-            return ExitBadInput;
-        }
-        for (const rl::AccuracyRow& row : report->rows) {
-            QString name = QString::fromStdString(rl::accuracyModeName(row.mode));
-            name.replace(QLatin1Char('/'), QLatin1Char('-')).replace(lit(" "), QString());
-            const QString path = folder.filePath(lit("error-%1.png").arg(name));
-            // One scale for every mode: 0 to 8 byte steps, larger errors white.
-            QString error;
-            if (!savePng(errorHeatMap(row.errorMap, 8.0f / 255.0f), path, &error)) {
-                err << path << ": cannot write the heat map: " << error << "\n";
-                return ExitBadInput;
-            }
-            out << "wrote " << QFileInfo(path).absoluteFilePath() << " (heat map)\n";
-        }
+        if (int code = writeHeatMaps(*report, parser.value(heatmaps), out, err); code != ExitOk)
+            return code;
     }
     out.flush();
     return ExitOk;

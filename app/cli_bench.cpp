@@ -29,6 +29,124 @@ double memoryMiB(const char* key) {
     return -1.0;
 }
 
+// What the timed frames gave: their times, what they covered, the memory used.
+struct BenchResult {
+    std::size_t covered = 0, fragments = 0;
+    bool inBands = false;  // depth test and shading run together (RenderOptions::keepFragments)
+    std::size_t triangleNormalsLeftOut = 0, vertexNormalsLeftOut = 0;  // draws (normalsRead)
+    int usedThreads = 0;
+    double firstRss = -1.0;  // resident memory after the first timed frame, MiB
+    // Memory: the peak over the whole run (scene included), and whether the frames after
+    // the first one added any.
+    double lastRss = -1.0, peakRss = -1.0;
+    double medianMs = 0.0, minMs = 0.0, maxMs = 0.0;
+    std::array<double, rl::kStageCount> stageMedian{};
+    double mpixels = 0.0, triangles = 0.0;  // shaded Mpixel/s and triangles/s at the median
+};
+
+// --warmup untimed frames, then --frames timed ones, the buffers reused from frame to frame.
+// ExitOk with the result filled in, or the code of a frame that failed (already printed).
+int timeFrames(const std::shared_ptr<const rl::Scene>& scene, const rl::RenderOptions& options,
+               int warmupCount, int frameCount, QTextStream& err, BenchResult& result) {
+    rl::RenderContext context;  // buffers reused from frame to frame
+    std::vector<double> total;
+    std::vector<std::array<double, rl::kStageCount>> stages;
+    for (int i = 0; i < warmupCount + frameCount; ++i) {
+        auto trace = rl::renderFrame(scene, options, &context);
+        if (!trace) return inputError(err, trace.error());
+        if (i < warmupCount) continue;
+        total.push_back(trace->totalMilliseconds);
+        stages.push_back(trace->stageMilliseconds);
+        // Counted on the last frame only: reading the whole triangle buffer between frames
+        // would bring it into the cache for the next one.
+        if (i + 1 == warmupCount + frameCount) result.covered = trace->depth->coveredPixels();
+        result.inBands = !trace->depth->fragmentsKept;
+        result.triangleNormalsLeftOut = trace->normals->triangleNormalsLeftOut;
+        result.vertexNormalsLeftOut = trace->normals->vertexNormalsLeftOut;
+        result.fragments = trace->depth->fragments;
+        result.usedThreads = trace->threads;
+        if (i == warmupCount) result.firstRss = memoryMiB("VmRSS:");
+    }
+    result.lastRss = memoryMiB("VmRSS:");
+    result.peakRss = memoryMiB("VmHWM:");
+    const auto median = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+    };
+    result.medianMs = median(total);
+    result.minMs = *std::min_element(total.begin(), total.end());
+    result.maxMs = *std::max_element(total.begin(), total.end());
+    for (std::size_t k = 0; k < result.stageMedian.size(); ++k) {
+        std::vector<double> v;
+        for (const auto& f : stages) v.push_back(f[k]);
+        result.stageMedian[k] = median(v);
+    }
+    result.mpixels = double(result.covered) / (result.medianMs * 1e3);
+    result.triangles = double(scene->triangleCount()) / (result.medianMs / 1e3);
+    return ExitOk;
+}
+
+// A number with a fixed count of decimals.
+QString number(double v, int decimals) {
+    return QString::number(v, 'f', decimals);
+}
+
+// The result as one JSON object.
+void printJson(const BenchResult& r, const rl::Scene& scene, const QString& sceneLabel,
+               const QString& shadingName, int frameCount, bool keepDepth, QTextStream& out) {
+    out << "{\"scene\": \"" << sceneLabel << "\", \"shading\": \"" << shadingName
+        << "\", \"width\": " << scene.width << ", \"height\": " << scene.height
+        << ", \"triangles\": " << scene.triangleCount() << ", \"threads\": " << r.usedThreads
+        << ", \"frames\": " << frameCount
+        << ", \"z_buffer_kept\": " << (keepDepth ? "true" : "false")
+        << ", \"shaded_in_bands\": " << (r.inBands ? "true" : "false")
+        << ", \"draws_without_triangle_normals\": " << r.triangleNormalsLeftOut
+        << ", \"draws_without_vertex_normals\": " << r.vertexNormalsLeftOut
+        << ", \"median_ms\": " << number(r.medianMs, 3) << ", \"min_ms\": " << number(r.minMs, 3)
+        << ", \"max_ms\": " << number(r.maxMs, 3) << ", \"covered_pixels\": " << r.covered
+        << ", \"fragments\": " << r.fragments << ", \"mpixels_per_s\": " << number(r.mpixels, 2)
+        << ", \"triangles_per_s\": " << number(r.triangles, 0)
+        << ", \"peak_rss_mib\": " << number(r.peakRss, 1)
+        << ", \"rss_first_frame_mib\": " << number(r.firstRss, 1)
+        << ", \"rss_last_frame_mib\": " << number(r.lastRss, 1) << ", \"stages_ms\": {";
+    for (std::size_t k = 0; k < r.stageMedian.size(); ++k)
+        out << (k ? ", " : "") << "\"" << rl::stageName(rl::kAllStages[k])
+            << "\": " << number(r.stageMedian[k], 3);
+    out << "}}\n";
+}
+
+// The result as Markdown: the frame times, the memory, and each stage's time.
+void printTable(const BenchResult& r, const rl::Scene& scene, const QString& sceneLabel,
+                const QString& shadingName, bool keepDepth, QTextStream& out) {
+    out << "| scene | size | shading | threads | triangles | median ms | min ms | max ms | "
+           "shaded Mpixel/s | triangles/s |\n"
+        << "|---|---|---|---|---|---|---|---|---|---|\n"
+        << "| " << sceneLabel << " | " << scene.width << "x" << scene.height << " | " << shadingName
+        << " | " << r.usedThreads << " | " << scene.triangleCount() << " | "
+        << number(r.medianMs, 2) << " | " << number(r.minMs, 2) << " | " << number(r.maxMs, 2)
+        << " | " << number(r.mpixels, 1) << " | " << number(r.triangles, 0) << " |\n\n"
+        << "Memory: peak " << number(r.peakRss, 1) << " MiB resident; " << number(r.firstRss, 1)
+        << " MiB after the first timed frame, " << number(r.lastRss, 1)
+        << " MiB after the last. Z-buffer: "
+        << (keepDepth ? "kept whole (--keep-depth)" : "a band of rows per thread, in the cache")
+        << "."
+        << (r.inBands ? " Depth test and shading: together, each chunk of rows shaded by the "
+                        "thread that tested it, from its band (the two stages' times are "
+                        "their sum split as the threads spent it)."
+                      : "")
+        << (r.triangleNormalsLeftOut + r.vertexNormalsLeftOut > 0
+                ? lit(" Normals: only those the shading reads (left out: the triangles' of "
+                      "%1 draw(s), the vertices' of %2).")
+                      .arg(r.triangleNormalsLeftOut)
+                      .arg(r.vertexNormalsLeftOut)
+                : QString())
+        << "\n\n"
+        << "| stage | median ms |\n|---|---|\n";
+    for (std::size_t k = 0; k < r.stageMedian.size(); ++k)
+        out << "| " << rl::stageName(rl::kAllStages[k]) << " | " << number(r.stageMedian[k], 3)
+            << " |\n";
+}
+
 }  // namespace
 
 int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
@@ -101,101 +219,14 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     options.keepDepth = parser.isSet(keepDepth);
     options.keepFragments = options.keepDepth;
     options.keepForViews = false;
-    rl::RenderContext context;  // buffers reused from frame to frame
-    std::vector<double> total;
-    std::vector<std::array<double, rl::kStageCount>> stages;
-    std::size_t covered = 0, fragments = 0;
-    bool inBands = false;  // depth test and shading run together (RenderOptions::keepFragments)
-    std::size_t triangleNormalsLeftOut = 0, vertexNormalsLeftOut = 0;  // draws (normalsRead)
-    int usedThreads = 0;
-    double firstRss = -1.0;  // resident memory after the first timed frame, MiB
-    for (int i = 0; i < warmupCount + frameCount; ++i) {
-        auto trace = rl::renderFrame(scene, options, &context);
-        if (!trace) return inputError(err, trace.error());
-        if (i < warmupCount) continue;
-        total.push_back(trace->totalMilliseconds);
-        stages.push_back(trace->stageMilliseconds);
-        // Counted on the last frame only: reading the whole triangle buffer between frames
-        // would bring it into the cache for the next one.
-        if (i + 1 == warmupCount + frameCount) covered = trace->depth->coveredPixels();
-        inBands = !trace->depth->fragmentsKept;
-        triangleNormalsLeftOut = trace->normals->triangleNormalsLeftOut;
-        vertexNormalsLeftOut = trace->normals->vertexNormalsLeftOut;
-        fragments = trace->depth->fragments;
-        usedThreads = trace->threads;
-        if (i == warmupCount) firstRss = memoryMiB("VmRSS:");
-    }
-    // Memory: the peak over the whole run (scene included), and whether the frames after
-    // the first one added any.
-    const double lastRss = memoryMiB("VmRSS:");
-    const double peakRss = memoryMiB("VmHWM:");
-    const auto median = [](std::vector<double> v) {
-        std::sort(v.begin(), v.end());
-        return v[v.size() / 2];
-    };
-    const double medianMs = median(total);
-    const double minMs = *std::min_element(total.begin(), total.end());
-    const double maxMs = *std::max_element(total.begin(), total.end());
-    std::array<double, rl::kStageCount> stageMedian{};
-    for (std::size_t k = 0; k < stageMedian.size(); ++k) {
-        std::vector<double> v;
-        for (const auto& f : stages) v.push_back(f[k]);
-        stageMedian[k] = median(v);
-    }
-    const double mpixels = double(covered) / (medianMs * 1e3);
-    const double triangles = double(scene->triangleCount()) / (medianMs / 1e3);
+    BenchResult result;
+    if (int code = timeFrames(scene, options, warmupCount, frameCount, err, result); code != ExitOk)
+        return code;
     const QString shadingName = QString::fromUtf8(rl::shadingModelName(settings.shading));
-    const auto number = [](double v, int decimals) { return QString::number(v, 'f', decimals); };
-    if (outputFormat == lit("json")) {
-        out << "{\"scene\": \"" << sceneLabel << "\", \"shading\": \"" << shadingName
-            << "\", \"width\": " << scene->width << ", \"height\": " << scene->height
-            << ", \"triangles\": " << scene->triangleCount() << ", \"threads\": " << usedThreads
-            << ", \"frames\": " << frameCount
-            << ", \"z_buffer_kept\": " << (options.keepDepth ? "true" : "false")
-            << ", \"shaded_in_bands\": " << (inBands ? "true" : "false")
-            << ", \"draws_without_triangle_normals\": " << triangleNormalsLeftOut
-            << ", \"draws_without_vertex_normals\": " << vertexNormalsLeftOut
-            << ", \"median_ms\": " << number(medianMs, 3) << ", \"min_ms\": " << number(minMs, 3)
-            << ", \"max_ms\": " << number(maxMs, 3) << ", \"covered_pixels\": " << covered
-            << ", \"fragments\": " << fragments << ", \"mpixels_per_s\": " << number(mpixels, 2)
-            << ", \"triangles_per_s\": " << number(triangles, 0)
-            << ", \"peak_rss_mib\": " << number(peakRss, 1)
-            << ", \"rss_first_frame_mib\": " << number(firstRss, 1)
-            << ", \"rss_last_frame_mib\": " << number(lastRss, 1) << ", \"stages_ms\": {";
-        for (std::size_t k = 0; k < stageMedian.size(); ++k)
-            out << (k ? ", " : "") << "\"" << rl::stageName(rl::kAllStages[k])
-                << "\": " << number(stageMedian[k], 3);
-        out << "}}\n";
-    } else {
-        out << "| scene | size | shading | threads | triangles | median ms | min ms | max ms | "
-               "shaded Mpixel/s | triangles/s |\n"
-            << "|---|---|---|---|---|---|---|---|---|---|\n"
-            << "| " << sceneLabel << " | " << scene->width << "x" << scene->height << " | "
-            << shadingName << " | " << usedThreads << " | " << scene->triangleCount() << " | "
-            << number(medianMs, 2) << " | " << number(minMs, 2) << " | " << number(maxMs, 2)
-            << " | " << number(mpixels, 1) << " | " << number(triangles, 0) << " |\n\n"
-            << "Memory: peak " << number(peakRss, 1) << " MiB resident; " << number(firstRss, 1)
-            << " MiB after the first timed frame, " << number(lastRss, 1)
-            << " MiB after the last. Z-buffer: "
-            << (options.keepDepth ? "kept whole (--keep-depth)"
-                                  : "a band of rows per thread, in the cache")
-            << "."
-            << (inBands ? " Depth test and shading: together, each chunk of rows shaded by the "
-                          "thread that tested it, from its band (the two stages' times are "
-                          "their sum split as the threads spent it)."
-                        : "")
-            << (triangleNormalsLeftOut + vertexNormalsLeftOut > 0
-                    ? lit(" Normals: only those the shading reads (left out: the triangles' of "
-                          "%1 draw(s), the vertices' of %2).")
-                          .arg(triangleNormalsLeftOut)
-                          .arg(vertexNormalsLeftOut)
-                    : QString())
-            << "\n\n"
-            << "| stage | median ms |\n|---|---|\n";
-        for (std::size_t k = 0; k < stageMedian.size(); ++k)
-            out << "| " << rl::stageName(rl::kAllStages[k]) << " | " << number(stageMedian[k], 3)
-                << " |\n";
-    }
+    if (outputFormat == lit("json"))
+        printJson(result, *scene, sceneLabel, shadingName, frameCount, options.keepDepth, out);
+    else
+        printTable(result, *scene, sceneLabel, shadingName, options.keepDepth, out);
     out.flush();
     return ExitOk;
 }
