@@ -198,6 +198,16 @@ protected:
     void paintEvent(QPaintEvent*) override;
 
 private:
+    struct Grid;
+    // paintEvent's layers, bottom to top: the pixels and samples; the triangle and the scanline
+    // (clipped to the grid); the row and column numbers; the legend.
+    void paintPixels(QPainter& painter, const Grid& grid) const;
+    void paintTriangle(QPainter& painter, const Grid& grid) const;
+    void paintScanline(QPainter& painter, const Grid& grid, const QFontMetrics& metrics) const;
+    void paintNumbers(QPainter& painter, const Grid& grid, double marginLeft,
+                      const QFontMetrics& metrics) const;
+    void paintLegend(QPainter& painter, const Grid& grid, const QFontMetrics& metrics) const;
+
     std::optional<ScanlineModel> m_model;
     QRect m_window;
     double m_offset = 0.0;
@@ -213,8 +223,22 @@ const QColor kLongColour(255, 150, 40);
 const QColor kUpperColour(90, 200, 255);
 const QColor kLowerColour(235, 100, 235);
 const QColor kSpanColour(255, 221, 51);
+const std::array<QColor, 3> kEdgeColours{kLongColour, kUpperColour, kLowerColour};
 
 }  // namespace
+
+// Where the pixels are drawn: pixel (x, y) is the square of side 1 around its sample
+// (x + offset, y + offset), cell widget pixels a side; (u0, v0) is the window's corner.
+struct ScanlineCanvas::Grid {
+    double cell = 0.0, originX = 0.0, originY = 0.0, u0 = 0.0, v0 = 0.0, offset = 0.0;
+    QRectF rect;  // the window's pixels, in the widget
+    QPointF at(double u, double v) const {
+        return QPointF(originX + (u - u0) * cell, originY + (v - v0) * cell);
+    }
+    QRectF square(int x, int y) const {
+        return QRectF(at(x + offset - 0.5, y + offset - 0.5), QSizeF(cell, cell));
+    }
+};
 
 void ScanlineCanvas::paintEvent(QPaintEvent*) {
     QPainter painter(this);
@@ -231,34 +255,42 @@ void ScanlineCanvas::paintEvent(QPaintEvent*) {
     font.setPointSizeF(m_presentation ? 12.0 : 8.0);
     painter.setFont(font);
     const QFontMetrics metrics(font);
-    const ScanlineModel& m = *m_model;
     const int cols = m_window.width(), rows = m_window.height();
 
     // Room for the row numbers on the left, the column numbers on top, the legend below.
     const double marginLeft = metrics.horizontalAdvance(QStringLiteral("0000")) + 6;
     const double marginTop = metrics.height() + 4;
     const double marginBottom = metrics.height() + 8;
-    const double cell = std::max(2.0, std::min((width() - marginLeft - 6) / cols,
-                                               (height() - marginTop - marginBottom) / rows));
-    const double gridWidth = cell * cols, gridHeight = cell * rows;
-    const double originX = marginLeft + (width() - marginLeft - 6 - gridWidth) / 2;
-    const double originY = marginTop + (height() - marginTop - marginBottom - gridHeight) / 2;
-    // Pixel (x, y) is the square of side 1 around its sample (x + offset, y + offset).
-    const double u0 = m_window.left() + m_offset - 0.5, v0 = m_window.top() + m_offset - 0.5;
-    const auto at = [&](double u, double v) {
-        return QPointF(originX + (u - u0) * cell, originY + (v - v0) * cell);
-    };
-    const auto square = [&](int x, int y) {
-        return QRectF(at(x + m_offset - 0.5, y + m_offset - 0.5), QSizeF(cell, cell));
-    };
-    const QRectF gridRect(originX, originY, gridWidth, gridHeight);
+    Grid grid;
+    grid.cell = std::max(2.0, std::min((width() - marginLeft - 6) / cols,
+                                       (height() - marginTop - marginBottom) / rows));
+    const double gridWidth = grid.cell * cols, gridHeight = grid.cell * rows;
+    grid.originX = marginLeft + (width() - marginLeft - 6 - gridWidth) / 2;
+    grid.originY = marginTop + (height() - marginTop - marginBottom - gridHeight) / 2;
+    grid.u0 = m_window.left() + m_offset - 0.5;
+    grid.v0 = m_window.top() + m_offset - 0.5;
+    grid.offset = m_offset;
+    grid.rect = QRectF(grid.originX, grid.originY, gridWidth, gridHeight);
 
-    // The pixels as they are at the cursor.
+    paintPixels(painter, grid);
+    painter.save();
+    painter.setClipRect(grid.rect);
+    paintTriangle(painter, grid);
+    if (m_model->row) paintScanline(painter, grid, metrics);
+    painter.restore();
+    paintNumbers(painter, grid, marginLeft, metrics);
+    paintLegend(painter, grid, metrics);
+}
+
+// The pixels as they are at the cursor, the span, the pixel at the cursor and the samples.
+void ScanlineCanvas::paintPixels(QPainter& painter, const Grid& grid) const {
+    const ScanlineModel& m = *m_model;
+    const int cols = m_window.width(), rows = m_window.height();
     for (int r = 0; r < rows; ++r) {
         for (int c = 0; c < cols; ++c) {
             const auto i = static_cast<std::size_t>(r * cols + c);
             const bool written = i < m_written.size() && m_written[i];
-            painter.fillRect(square(m_window.left() + c, m_window.top() + r),
+            painter.fillRect(grid.square(m_window.left() + c, m_window.top() + r),
                              written ? QColor(m_colours[i]) : QColor(52, 52, 58));
         }
     }
@@ -267,17 +299,17 @@ void ScanlineCanvas::paintEvent(QPaintEvent*) {
     if (hasRow && !m.row->empty()) {
         for (int x = std::max(m.row->xBegin, m_window.left());
              x < std::min(m.row->xEnd, m_window.right() + 1); ++x) {
-            painter.fillRect(square(x, m.row->y), QColor(255, 221, 51, 120));
+            painter.fillRect(grid.square(x, m.row->y), QColor(255, 221, 51, 120));
         }
     }
-    if (cell >= 5.0) {
+    if (grid.cell >= 5.0) {
         painter.setPen(QPen(QColor(90, 90, 100), 1.0));
         for (int c = 0; c <= cols; ++c)
-            painter.drawLine(QPointF(originX + c * cell, originY),
-                             QPointF(originX + c * cell, originY + gridHeight));
+            painter.drawLine(QPointF(grid.originX + c * grid.cell, grid.originY),
+                             QPointF(grid.originX + c * grid.cell, grid.rect.bottom()));
         for (int r = 0; r <= rows; ++r)
-            painter.drawLine(QPointF(originX, originY + r * cell),
-                             QPointF(originX + gridWidth, originY + r * cell));
+            painter.drawLine(QPointF(grid.originX, grid.originY + r * grid.cell),
+                             QPointF(grid.rect.right(), grid.originY + r * grid.cell));
     }
     if (hasRow && !m.row->empty()) {
         const int x0 = std::max(m.row->xBegin, m_window.left());
@@ -285,18 +317,18 @@ void ScanlineCanvas::paintEvent(QPaintEvent*) {
         if (x0 < x1) {
             painter.setPen(QPen(kSpanColour, m_lineWidth));
             painter.setBrush(Qt::NoBrush);
-            painter.drawRect(square(x0, m.row->y).united(square(x1 - 1, m.row->y)));
+            painter.drawRect(grid.square(x0, m.row->y).united(grid.square(x1 - 1, m.row->y)));
         }
     }
     if (m.currentPixel && hasRow && m_window.contains(*m.currentPixel, m.row->y)) {
         painter.setPen(QPen(Qt::white, m_lineWidth * 2.0));
         painter.setBrush(Qt::NoBrush);
-        painter.drawRect(square(*m.currentPixel, m.row->y).adjusted(1, 1, -1, -1));
+        painter.drawRect(grid.square(*m.currentPixel, m.row->y).adjusted(1, 1, -1, -1));
     }
 
     // Sample points: filled on the span, hollow elsewhere.
-    if (cell >= 9.0) {
-        const double radius = std::max(1.5, cell * 0.08);
+    if (grid.cell >= 9.0) {
+        const double radius = std::max(1.5, grid.cell * 0.08);
         for (int r = 0; r < rows; ++r) {
             for (int c = 0; c < cols; ++c) {
                 const int x = m_window.left() + c, y = m_window.top() + r;
@@ -304,110 +336,120 @@ void ScanlineCanvas::paintEvent(QPaintEvent*) {
                     hasRow && y == m.row->y && x >= m.row->xBegin && x < m.row->xEnd;
                 painter.setPen(onSpan ? Qt::NoPen : QPen(QColor(120, 120, 130), 1.0));
                 painter.setBrush(onSpan ? QBrush(QColor(20, 20, 20)) : QBrush(Qt::NoBrush));
-                painter.drawEllipse(at(x + m_offset, y + m_offset), radius, radius);
+                painter.drawEllipse(grid.at(x + m_offset, y + m_offset), radius, radius);
             }
         }
     }
+}
 
-    // The triangle and its three edges.
-    painter.save();
-    painter.setClipRect(gridRect);
+// The triangle and its three edges.
+void ScanlineCanvas::paintTriangle(QPainter& painter, const Grid& grid) const {
+    const ScanlineModel& m = *m_model;
     QPainterPath outline;
-    outline.moveTo(at(m.setup.sorted[0].x, m.setup.sorted[0].y));
-    outline.lineTo(at(m.setup.sorted[1].x, m.setup.sorted[1].y));
-    outline.lineTo(at(m.setup.sorted[2].x, m.setup.sorted[2].y));
+    outline.moveTo(grid.at(m.setup.sorted[0].x, m.setup.sorted[0].y));
+    outline.lineTo(grid.at(m.setup.sorted[1].x, m.setup.sorted[1].y));
+    outline.lineTo(grid.at(m.setup.sorted[2].x, m.setup.sorted[2].y));
     outline.closeSubpath();
     painter.fillPath(outline, QColor(255, 255, 255, 22));
-    const std::array<QColor, 3> edgeColours{kLongColour, kUpperColour, kLowerColour};
     for (std::size_t k = 0; k < 3; ++k) {
         const ScanEdgeEntry& e = m.edges[k];
-        painter.setPen(QPen(edgeColours[k], m_lineWidth * 1.4, Qt::SolidLine, Qt::RoundCap));
-        painter.drawLine(at(e.top.x, e.top.y), at(e.bottom.x, e.bottom.y));
+        painter.setPen(QPen(kEdgeColours[k], m_lineWidth * 1.4, Qt::SolidLine, Qt::RoundCap));
+        painter.drawLine(grid.at(e.top.x, e.top.y), grid.at(e.bottom.x, e.bottom.y));
     }
     painter.setPen(Qt::NoPen);
     painter.setBrush(Qt::white);
     for (const rl::dvec2& p : m.setup.sorted)
-        painter.drawEllipse(at(p.x, p.y), m_lineWidth * 1.6, m_lineWidth * 1.6);
+        painter.drawEllipse(grid.at(p.x, p.y), m_lineWidth * 1.6, m_lineWidth * 1.6);
+}
 
-    // The scanline through the samples of row y and its crossings with the two edges.
-    if (hasRow) {
-        const double v = m.row->y + m_offset;
-        painter.setPen(QPen(kSpanColour, m_lineWidth, Qt::DashLine));
-        painter.drawLine(at(u0, v), at(u0 + cols, v));
-        // The long edge bounds the span on one side, the short edge of this row on the other.
-        const QColor shortColour = edgeColours[m.row->upperPart ? 1 : 2];
-        const bool longOnLeft = m.edges[0].onLeft;
-        const QColor leftColour = longOnLeft ? kLongColour : shortColour;
-        const QColor rightColour = longOnLeft ? shortColour : kLongColour;
-        const double d = m_lineWidth * 2.6;
-        for (const auto& [x, colour] :
-             {std::pair{m.row->xLeft, leftColour}, std::pair{m.row->xRight, rightColour}}) {
-            const QPointF c = at(x, v);
-            QPolygonF diamond;
-            diamond << c + QPointF(0, -d) << c + QPointF(d, 0) << c + QPointF(0, d)
-                    << c + QPointF(-d, 0);
-            painter.setPen(QPen(Qt::black, 1.0));
-            painter.setBrush(colour);
-            painter.drawPolygon(diamond);
-        }
-        // The crossings' values, above the line, kept inside the grid.
-        painter.setPen(Qt::white);
-        const QString leftText = QStringLiteral("x_left %1").arg(num(m.row->xLeft, 4));
-        const QString rightText = QStringLiteral("x_right %1").arg(num(m.row->xRight, 4));
-        const double above = at(0, v).y() - d - 3;
-        const double leftX = std::clamp(
-            at(m.row->xLeft, v).x() - metrics.horizontalAdvance(leftText) - d, gridRect.left() + 2,
-            gridRect.right() - metrics.horizontalAdvance(leftText) - 2);
-        const double rightX =
-            std::clamp(at(m.row->xRight, v).x() + d, gridRect.left() + 2,
-                       gridRect.right() - metrics.horizontalAdvance(rightText) - 2);
-        const auto label = [&](double x, double y, const QString& text) {
-            const QRectF box(x - 2, y - metrics.ascent() - 1, metrics.horizontalAdvance(text) + 4,
-                             metrics.height() + 2);
-            painter.fillRect(box, QColor(0, 0, 0, 170));
-            painter.drawText(QPointF(x, y), text);
-        };
-        label(leftX, above, leftText);
-        // Too close to the left one: below the line.
-        const bool fits = rightX > leftX + metrics.horizontalAdvance(leftText) + 4;
-        label(rightX, fits ? above : at(0, v).y() + d + metrics.ascent() + 3, rightText);
+// The scanline through the samples of row y and its crossings with the two edges.
+void ScanlineCanvas::paintScanline(QPainter& painter, const Grid& grid,
+                                   const QFontMetrics& metrics) const {
+    const ScanlineModel& m = *m_model;
+    const QRectF& gridRect = grid.rect;
+    const double v = m.row->y + m_offset;
+    painter.setPen(QPen(kSpanColour, m_lineWidth, Qt::DashLine));
+    painter.drawLine(grid.at(grid.u0, v), grid.at(grid.u0 + m_window.width(), v));
+    // The long edge bounds the span on one side, the short edge of this row on the other.
+    const QColor shortColour = kEdgeColours[m.row->upperPart ? 1 : 2];
+    const bool longOnLeft = m.edges[0].onLeft;
+    const QColor leftColour = longOnLeft ? kLongColour : shortColour;
+    const QColor rightColour = longOnLeft ? shortColour : kLongColour;
+    const double d = m_lineWidth * 2.6;
+    for (const auto& [x, colour] :
+         {std::pair{m.row->xLeft, leftColour}, std::pair{m.row->xRight, rightColour}}) {
+        const QPointF c = grid.at(x, v);
+        QPolygonF diamond;
+        diamond << c + QPointF(0, -d) << c + QPointF(d, 0) << c + QPointF(0, d)
+                << c + QPointF(-d, 0);
+        painter.setPen(QPen(Qt::black, 1.0));
+        painter.setBrush(colour);
+        painter.drawPolygon(diamond);
     }
-    painter.restore();
+    // The crossings' values, above the line, kept inside the grid.
+    painter.setPen(Qt::white);
+    const QString leftText = QStringLiteral("x_left %1").arg(num(m.row->xLeft, 4));
+    const QString rightText = QStringLiteral("x_right %1").arg(num(m.row->xRight, 4));
+    const double above = grid.at(0, v).y() - d - 3;
+    const double leftX =
+        std::clamp(grid.at(m.row->xLeft, v).x() - metrics.horizontalAdvance(leftText) - d,
+                   gridRect.left() + 2, gridRect.right() - metrics.horizontalAdvance(leftText) - 2);
+    const double rightX = std::clamp(grid.at(m.row->xRight, v).x() + d, gridRect.left() + 2,
+                                     gridRect.right() - metrics.horizontalAdvance(rightText) - 2);
+    const auto label = [&](double x, double y, const QString& text) {
+        const QRectF box(x - 2, y - metrics.ascent() - 1, metrics.horizontalAdvance(text) + 4,
+                         metrics.height() + 2);
+        painter.fillRect(box, QColor(0, 0, 0, 170));
+        painter.drawText(QPointF(x, y), text);
+    };
+    label(leftX, above, leftText);
+    // Too close to the left one: below the line.
+    const bool fits = rightX > leftX + metrics.horizontalAdvance(leftText) + 4;
+    label(rightX, fits ? above : grid.at(0, v).y() + d + metrics.ascent() + 3, rightText);
+}
 
-    // Row and column numbers: every one when there is room, else every fifth.
+// Row and column numbers: every one when there is room, else every fifth.
+void ScanlineCanvas::paintNumbers(QPainter& painter, const Grid& grid, double marginLeft,
+                                  const QFontMetrics& metrics) const {
+    const ScanlineModel& m = *m_model;
+    const bool hasRow = m.row.has_value();
     painter.setPen(QColor(190, 190, 200));
-    const int every = cell >= metrics.horizontalAdvance(QStringLiteral("0000")) ? 1 : 5;
-    for (int r = 0; r < rows; ++r) {
+    const int every = grid.cell >= metrics.horizontalAdvance(QStringLiteral("0000")) ? 1 : 5;
+    for (int r = 0; r < m_window.height(); ++r) {
         const int y = m_window.top() + r;
         const bool current = hasRow && y == m.row->y;
         // Every fifth row, but not beside the current one (whose number is always there).
         if (!current && (y % every != 0 || (hasRow && every > 1 && std::abs(y - m.row->y) < 2)))
             continue;
-        const QRectF box(0, originY + r * cell, marginLeft - 4, cell);
+        const QRectF box(0, grid.originY + r * grid.cell, marginLeft - 4, grid.cell);
         if (hasRow && y == m.row->y) painter.setPen(kSpanColour);
         painter.drawText(box, Qt::AlignRight | Qt::AlignVCenter | Qt::TextDontClip,
                          QString::number(y));
         painter.setPen(QColor(190, 190, 200));
     }
-    const int everyColumn = cell >= metrics.horizontalAdvance(QStringLiteral("000")) + 2 ? 1 : 5;
-    for (int c = 0; c < cols; ++c) {
+    const int everyColumn =
+        grid.cell >= metrics.horizontalAdvance(QStringLiteral("000")) + 2 ? 1 : 5;
+    for (int c = 0; c < m_window.width(); ++c) {
         const int x = m_window.left() + c;
         if (x % everyColumn != 0) continue;
         const QString label = QString::number(x);
         painter.drawText(
-            QPointF(originX + (c + 0.5) * cell - metrics.horizontalAdvance(label) / 2.0,
-                    originY - metrics.descent() - 3),
+            QPointF(grid.originX + (c + 0.5) * grid.cell - metrics.horizontalAdvance(label) / 2.0,
+                    grid.originY - metrics.descent() - 3),
             label);
     }
+}
 
-    // The legend: which colour is which edge.
+// The legend: which colour is which edge.
+void ScanlineCanvas::paintLegend(QPainter& painter, const Grid& grid,
+                                 const QFontMetrics& metrics) const {
     double x = 8.0;
-    const double y = originY + gridHeight + 4;
+    const double y = grid.rect.bottom() + 4;
     const std::array<QString, 3> names{ScanlineView::tr("long edge"),
                                        ScanlineView::tr("upper edge"),
                                        ScanlineView::tr("lower edge")};
     for (std::size_t k = 0; k < 3; ++k) {
-        painter.setPen(QPen(edgeColours[k], m_lineWidth * 1.4));
+        painter.setPen(QPen(kEdgeColours[k], m_lineWidth * 1.4));
         painter.drawLine(QPointF(x, y + metrics.height() / 2.0),
                          QPointF(x + 14, y + metrics.height() / 2.0));
         painter.setPen(QColor(220, 220, 220));
