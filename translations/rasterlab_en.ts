@@ -2551,52 +2551,52 @@
 <context>
     <name>rasterlab::PixelInspector</name>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="122"/>
+        <location filename="../views/pixel_inspector.cpp" line="118"/>
         <source>%1 = byte 255</source>
         <translation>%1 = byte 255</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="176"/>
+        <location filename="../views/pixel_inspector.cpp" line="172"/>
         <source>no normal</source>
         <translation>no normal</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="248"/>
+        <location filename="../views/pixel_inspector.cpp" line="244"/>
         <source>in the plane of N and L</source>
         <translation>in the plane of N and L</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="269"/>
+        <location filename="../views/pixel_inspector.cpp" line="265"/>
         <source>Step</source>
         <translation>Step</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="269"/>
+        <location filename="../views/pixel_inspector.cpp" line="265"/>
         <source>Triangle</source>
         <translation>Triangle</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="269"/>
+        <location filename="../views/pixel_inspector.cpp" line="265"/>
         <source>Depth test</source>
         <translation>Depth test</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="269"/>
+        <location filename="../views/pixel_inspector.cpp" line="265"/>
         <source>Before</source>
         <translation>Before</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="269"/>
+        <location filename="../views/pixel_inspector.cpp" line="265"/>
         <source>After</source>
         <translation>After</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="269"/>
+        <location filename="../views/pixel_inspector.cpp" line="265"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="279"/>
+        <location filename="../views/pixel_inspector.cpp" line="275"/>
         <source>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</source>
         <translation>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</translation>
     </message>
@@ -2766,298 +2766,298 @@
         <translation>black: the diffuse and specular terms are 0 here and there is no ambient</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="389"/>
+        <location filename="../views/lighting_breakdown.cpp" line="388"/>
         <source>Light %1, directional toward %2 (view), Il = %3</source>
         <translation>Light %1, directional toward %2 (view), Il = %3</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="390"/>
+        <location filename="../views/lighting_breakdown.cpp" line="389"/>
         <source>Light %1 at %2 (view), Il = %3</source>
         <translation>Light %1 at %2 (view), Il = %3</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="393"/>
+        <location filename="../views/lighting_breakdown.cpp" line="392"/>
         <source>  at the point itself (L = 0): nothing</source>
         <translation>  at the point itself (L = 0): nothing</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="398"/>
+        <location filename="../views/lighting_breakdown.cpp" line="397"/>
         <source>att = 1 / (%1 + %2 × %3 + %4 × %3²) = %5</source>
         <translation>att = 1 / (%1 + %2 × %3 + %4 × %3²) = %5</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="402"/>
+        <location filename="../views/lighting_breakdown.cpp" line="401"/>
         <source>d = %1, not attenuated</source>
         <translation>d = %1, not attenuated</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="404"/>
+        <location filename="../views/lighting_breakdown.cpp" line="403"/>
         <source>spot: −L.D = %1 &lt; cos %2° = %3, outside the cone: 0</source>
         <translation>spot: −L.D = %1 &lt; cos %2° = %3, outside the cone: 0</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="407"/>
+        <location filename="../views/lighting_breakdown.cpp" line="406"/>
         <source>spot: −L.D = %1 ≥ cos %2° = %3, %1^%4 = %5</source>
         <translation>spot: −L.D = %1 ≥ cos %2° = %3, %1^%4 = %5</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="415"/>
+        <location filename="../views/lighting_breakdown.cpp" line="414"/>
         <source>  N.L = %1 &lt; 0: behind the surface, nothing</source>
         <translation>  N.L = %1 &lt; 0: behind the surface, nothing</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="417"/>
+        <location filename="../views/lighting_breakdown.cpp" line="416"/>
         <source>  N.L = %1, %2 = %3: diffuse %4, specular %5</source>
         <translation>  N.L = %1, %2 = %3: diffuse %4, specular %5</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="133"/>
+        <location filename="../views/lighting_breakdown.cpp" line="132"/>
         <source>N flipped toward the viewer: V.N &lt; 0, so N := −N before lighting.</source>
         <translation>N flipped toward the viewer: V.N &lt; 0, so N := −N before lighting.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="136"/>
+        <location filename="../views/lighting_breakdown.cpp" line="135"/>
         <source>Zero normal: only degenerate triangles meet here, or the vertex normals cancel out; ambient only.</source>
         <translation>Zero normal: only degenerate triangles meet here, or the vertex normals cancel out; ambient only.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="140"/>
+        <location filename="../views/lighting_breakdown.cpp" line="139"/>
         <source>The light is at the point itself (L = 0): it adds nothing.</source>
         <translation>The light is at the point itself (L = 0): it adds nothing.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="143"/>
+        <location filename="../views/lighting_breakdown.cpp" line="142"/>
         <source>N.L &lt; 0: the light is behind the surface; no diffuse, no specular.</source>
         <translation>N.L &lt; 0: the light is behind the surface; no diffuse, no specular.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="146"/>
+        <location filename="../views/lighting_breakdown.cpp" line="145"/>
         <source>R.V &lt; 0: the reflected ray points away from the viewer; no specular.</source>
         <translation>R.V &lt; 0: the reflected ray points away from the viewer; no specular.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="163"/>
+        <location filename="../views/lighting_breakdown.cpp" line="162"/>
         <source>Outside the cone of light %1: −L.D = %2 is below cos %3° = %4; it adds nothing here.</source>
         <translation>Outside the cone of light %1: −L.D = %2 is below cos %3° = %4; it adds nothing here.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="171"/>
+        <location filename="../views/lighting_breakdown.cpp" line="170"/>
         <source>One-sided lighting: the back of the surface is seen (V.N &lt; 0) and N is not turned toward the viewer.</source>
         <translation>One-sided lighting: the back of the surface is seen (V.N &lt; 0) and N is not turned toward the viewer.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="181"/>
+        <location filename="../views/lighting_breakdown.cpp" line="180"/>
         <source>Texture at (s, t) = (%1, %2): texel %3.</source>
         <translation>Texture at (s, t) = (%1, %2): texel %3.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="186"/>
+        <location filename="../views/lighting_breakdown.cpp" line="185"/>
         <source>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1; the images&apos; (int)(s w + 0.5) mod w gives %2, which these rules follow.</source>
         <translation>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1; the images&apos; (int)(s w + 0.5) mod w gives %2, which these rules follow.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="190"/>
+        <location filename="../views/lighting_breakdown.cpp" line="189"/>
         <source>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1, which these rules follow; the images&apos; (int)(s w + 0.5) mod w gives %2.</source>
         <translation>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1, which these rules follow; the images&apos; (int)(s w + 0.5) mod w gives %2.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="207"/>
+        <location filename="../views/lighting_breakdown.cpp" line="206"/>
         <source>Clamped: %1 above the colour scale %2, written as byte 255.</source>
         <translation>Clamped: %1 above the colour scale %2, written as byte 255.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="216"/>
+        <location filename="../views/lighting_breakdown.cpp" line="215"/>
         <source>%1 (clamped)</source>
         <translation>%1 (clamped)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="221"/>
+        <location filename="../views/lighting_breakdown.cpp" line="220"/>
         <source>Gouraud shading, the vertices&apos; colours mixed</source>
         <translation>Gouraud shading, the vertices&apos; colours mixed</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="222"/>
+        <location filename="../views/lighting_breakdown.cpp" line="221"/>
         <source>C = α C1 + β C2 + γ C3</source>
         <translation>C = α C1 + β C2 + γ C3</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="238"/>
+        <location filename="../views/lighting_breakdown.cpp" line="237"/>
         <source>not lit, the object colour as it is</source>
         <translation>not lit, the object colour as it is</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="239"/>
+        <location filename="../views/lighting_breakdown.cpp" line="238"/>
         <source>I = O (the object colour)</source>
         <translation>I = O (the object colour)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="248"/>
+        <location filename="../views/lighting_breakdown.cpp" line="247"/>
         <source>the course&apos;s Phong lighting model</source>
         <translation>the course&apos;s Phong lighting model</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="249"/>
+        <location filename="../views/lighting_breakdown.cpp" line="248"/>
         <source>Lambert with Blinn-Phong highlights (command files)</source>
         <translation>Lambert with Blinn-Phong highlights (command files)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="251"/>
+        <location filename="../views/lighting_breakdown.cpp" line="250"/>
         <source>Painter&apos;s algorithm: lit as flat shading, once at the triangle&apos;s barycentre; the triangles are painted far to near without a depth test.</source>
         <translation>Painter&apos;s algorithm: lit as flat shading, once at the triangle&apos;s barycentre; the triangles are painted far to near without a depth test.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="256"/>
+        <location filename="../views/lighting_breakdown.cpp" line="255"/>
         <source>Flat shading: evaluated once, at the triangle&apos;s barycentre with the triangle&apos;s normal; every pixel of the triangle gets this colour.</source>
         <translation>Flat shading: evaluated once, at the triangle&apos;s barycentre with the triangle&apos;s normal; every pixel of the triangle gets this colour.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="260"/>
+        <location filename="../views/lighting_breakdown.cpp" line="259"/>
         <source>%1 lights: the diffuse and specular terms are sums over them; the numbers filled in are the first light&apos;s.</source>
         <translation>%1 lights: the diffuse and specular terms are sums over them; the numbers filled in are the first light&apos;s.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="279"/>
+        <location filename="../views/lighting_breakdown.cpp" line="278"/>
         <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)</source>
         <translation>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="280"/>
+        <location filename="../views/lighting_breakdown.cpp" line="279"/>
         <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)</source>
         <translation>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="281"/>
+        <location filename="../views/lighting_breakdown.cpp" line="280"/>
         <source>att = 1 / (kc + kl d + kq d²) for a positional light, 1 for a directional one; spot = (−L.D)^exp inside the cone, 0 outside, 1 for a light that is no spot.</source>
         <translation>att = 1 / (kc + kl d + kq d²) for a positional light, 1 for a directional one; spot = (−L.D)^exp inside the cone, 0 outside, 1 for a light that is no spot.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="286"/>
+        <location filename="../views/lighting_breakdown.cpp" line="285"/>
         <source>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</source>
         <translation>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="293"/>
+        <location filename="../views/lighting_breakdown.cpp" line="292"/>
         <source>I = Σ Il O (N.L) + Il (H.N)^s, over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L) + Il (H.N)^s, over the lights with N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="295"/>
+        <location filename="../views/lighting_breakdown.cpp" line="294"/>
         <source>I = Σ Il O (N.L), over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L), over the lights with N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="352"/>
+        <location filename="../views/lighting_breakdown.cpp" line="351"/>
         <source>%1 (the other lights)</source>
         <translation>%1 (the other lights)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="371"/>
+        <location filename="../views/lighting_breakdown.cpp" line="370"/>
         <source>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</source>
         <translation>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="375"/>
+        <location filename="../views/lighting_breakdown.cpp" line="374"/>
         <source>Il = %1, O = %2</source>
         <translation>Il = %1, O = %2</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="378"/>
+        <location filename="../views/lighting_breakdown.cpp" line="377"/>
         <source>Ke = %1: the material&apos;s own light</source>
         <translation>Ke = %1: the material&apos;s own light</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="434"/>
+        <location filename="../views/pixel_inspector.cpp" line="430"/>
         <source>start</source>
         <translation>start</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="440"/>
-        <location filename="../views/pixel_inspector.cpp" line="528"/>
+        <location filename="../views/pixel_inspector.cpp" line="436"/>
+        <location filename="../views/pixel_inspector.cpp" line="524"/>
         <source>end</source>
         <translation>end</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="448"/>
+        <location filename="../views/pixel_inspector.cpp" line="444"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>holds the pixel at the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="449"/>
+        <location filename="../views/pixel_inspector.cpp" line="445"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>not reached yet by the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="464"/>
+        <location filename="../views/pixel_inspector.cpp" line="460"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="465"/>
+        <location filename="../views/pixel_inspector.cpp" line="461"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Without stepping, the colours of writes overwritten later are not kept.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="509"/>
+        <location filename="../views/pixel_inspector.cpp" line="505"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="512"/>
+        <location filename="../views/pixel_inspector.cpp" line="508"/>
         <source>The cleared pixel is not lit.</source>
         <translation>The cleared pixel is not lit.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="515"/>
+        <location filename="../views/pixel_inspector.cpp" line="511"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="527"/>
+        <location filename="../views/pixel_inspector.cpp" line="523"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Lighting of step %1, triangle %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="532"/>
+        <location filename="../views/pixel_inspector.cpp" line="528"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejected: this colour was never written)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="545"/>
+        <location filename="../views/pixel_inspector.cpp" line="541"/>
         <source>object colour</source>
         <translation>object colour</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="548"/>
+        <location filename="../views/pixel_inspector.cpp" line="544"/>
         <source>emission</source>
         <translation>emission</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="550"/>
+        <location filename="../views/pixel_inspector.cpp" line="546"/>
         <source>ambient</source>
         <translation>ambient</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="555"/>
+        <location filename="../views/pixel_inspector.cpp" line="551"/>
         <source>diffuse %1</source>
         <translation>diffuse %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="558"/>
+        <location filename="../views/pixel_inspector.cpp" line="554"/>
         <source>specular %1</source>
         <translation>specular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="562"/>
+        <location filename="../views/pixel_inspector.cpp" line="558"/>
         <source>diffuse</source>
         <translation>diffuse</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="564"/>
+        <location filename="../views/pixel_inspector.cpp" line="560"/>
         <source>specular</source>
         <translation>specular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="592"/>
+        <location filename="../views/pixel_inspector.cpp" line="588"/>
         <source>No special case: every term applies as written.</source>
         <translation>No special case: every term applies as written.</translation>
     </message>

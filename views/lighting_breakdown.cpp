@@ -7,7 +7,6 @@
 
 #include "output_image.h"
 #include "pixel_text.h"
-#include "renderer.h"
 #include "shading.h"
 
 namespace rasterlab {

@@ -18,12 +18,8 @@
 #include <cmath>
 
 #include "inspection.h"
-#include "number_text.h"
-#include "output_image.h"
 #include "pixel_history.h"
 #include "pixel_text.h"
-#include "renderer.h"
-#include "shading.h"
 
 namespace rasterlab {
 

@@ -1,4 +1,5 @@
-// How the pixel inspector and its history write numbers, vectors and channel names.
+// How the pixel inspector, its history and its lighting breakdown write numbers, vectors and
+// channel names.
 #pragma once
 
 #include <QString>
