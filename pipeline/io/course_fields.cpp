@@ -1,0 +1,303 @@
+// The helpers the course readers share (course_fields.h): number tokens and their messages,
+// field lines, the camera and lighting built from fields, and the tokens of .byu files.
+#include "course_fields.h"
+
+#include <cctype>
+#include <charconv>
+
+#include "format.h"
+
+namespace rl::course_io {
+
+namespace {
+
+// A well-formed decimal number too large (or too small) for a double, such as "1e999"; not
+// a malformed one such as "1.2.3" or "1e".
+bool isOutOfRange(std::string_view token) {
+    const std::string_view digits = withoutSign(token);
+    if (digits.empty() || digits.find_first_not_of(".0123456789eE+-") != std::string_view::npos ||
+        !(digits.front() == '.' || (digits.front() >= '0' && digits.front() <= '9')))
+        return false;
+    if (token.front() == '+') token.remove_prefix(1);  // from_chars takes '-' only
+    double value = 0.0;
+    const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+    return ec == std::errc::result_out_of_range && end == token.data() + token.size();
+}
+
+// "nan", "-nan", "inf", "+Inf", "infinity" ... in any case.
+bool isNotFinite(std::string_view token) {
+    std::string lower(withoutSign(token));
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return lower == "nan" || lower == "inf" || lower == "infinity";
+}
+
+bool startsLikeNumber(std::string_view token) {
+    const char c = token.empty() ? ' ' : token.front();
+    return (c >= '0' && c <= '9') || c == '+' || c == '-' || c == '.';
+}
+
+}  // namespace
+
+std::string countText(unsigned counts) {
+    std::vector<int> accepted;
+    for (int k = 0; k < 32; ++k)
+        if (counts & (1u << k)) accepted.push_back(k);
+    std::string s;
+    for (std::size_t i = 0; i < accepted.size(); ++i) {
+        if (i > 0) s += i + 1 == accepted.size() ? " or " : ", ";
+        s += std::to_string(accepted[i]);
+    }
+    s += accepted.size() == 1 && accepted[0] == 1 ? " number" : " numbers";
+    return s;
+}
+
+int maxCount(unsigned counts) {
+    int m = 0;
+    for (int k = 0; k < 32; ++k)
+        if (counts & (1u << k)) m = k;
+    return m;
+}
+
+std::string plural(long long n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+// The token without one leading sign.
+std::string_view withoutSign(std::string_view token) {
+    if (!token.empty() && (token.front() == '+' || token.front() == '-')) token.remove_prefix(1);
+    return token;
+}
+
+// Why a token is not a number, for the end of an error message.
+std::string whyNotNumber(std::string_view token) {
+    std::string s = "found " + quoted(token);
+    const bool hasDigit = token.find_first_of("0123456789") != std::string_view::npos;
+    if (token.size() > 1 && token.back() == ',' && parseReal(token.substr(0, token.size() - 1))) {
+        s += " (separate the values with spaces, not commas)";
+    } else if (token.find(',') != std::string_view::npos && hasDigit) {
+        s += " (the decimal separator is '.')";
+    } else if (isOutOfRange(token)) {
+        s += ", which is out of range";
+    } else if (isNotFinite(token)) {
+        s += ", which is not a finite number";
+    }
+    return s;
+}
+
+// "a, b and c".
+std::string listText(const std::vector<std::string>& items) {
+    std::string s;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (i > 0) s += i + 1 == items.size() ? " and " : ", ";
+        s += items[i];
+    }
+    return s;
+}
+
+// ---- field lines
+
+// The fields of readFieldLines, without the check for lines after the last one.
+Result<std::vector<FieldValue>> readFields(LineScanner& scanner, std::span<const FieldSpec> fields,
+                                           Diagnostics& diagnostics) {
+    std::vector<FieldValue> result;
+    result.reserve(fields.size());
+    TextLine line;
+    for (const FieldSpec& field : fields) {
+        const std::string expected = std::string(field.name) + ", " +
+                                     std::string(field.description) + " (" +
+                                     countText(field.counts) + ")";
+        if (!scanner.next(line))
+            return makeError(ErrorCode::MissingData, scanner.endOfInput(),
+                             "expected " + expected + ", found the end of the file");
+
+        FieldValue value;
+        value.line = scanner.at(line.number, 1);
+        // Numbers first: the line's leading numeric tokens.
+        std::size_t numeric = 0;
+        for (; numeric < line.tokens.size(); ++numeric) {
+            const Token& token = line.tokens[numeric];
+            if (!parseReal(token.text)) break;
+        }
+        // Take all the numbers the field accepts; what follows them is ignored with a
+        // warning. A field may accept several counts (kd: one number or an RGB triple).
+        const int limit = maxCount(field.counts);
+        const int available = static_cast<int>(numeric);
+        int taken = limit;
+        if (available < limit) {
+            // After a count the field accepts, text that does not start like a number is a
+            // trailing remark (ignored with a warning below, as after a full line); a token
+            // that starts like a number but is not one is an error.
+            const bool accepted = (field.counts & (1u << available)) != 0;
+            if (numeric < line.tokens.size() &&
+                (!accepted || startsLikeNumber(line.tokens[numeric].text))) {
+                const Token& bad = line.tokens[numeric];
+                return makeError(ErrorCode::Syntax, scanner.at(bad),
+                                 "expected a number for " + std::string(field.name) + ", " +
+                                     whyNotNumber(bad.text));
+            }
+            if (!(field.counts & (1u << available)))
+                return makeError(ErrorCode::Syntax, scanner.afterLast(line),
+                                 "expected " + countText(field.counts) + " for " +
+                                     std::string(field.name) + ", found " +
+                                     std::to_string(available));
+            taken = available;
+        }
+        for (int k = 0; k < taken; ++k) {
+            const Token& token = line.tokens[static_cast<std::size_t>(k)];
+            value.values.push_back(*parseReal(token.text));
+            value.where.push_back(scanner.at(token));
+        }
+        if (line.tokens.size() > static_cast<std::size_t>(taken)) {
+            const std::size_t extra = line.tokens.size() - static_cast<std::size_t>(taken);
+            diagnostics.warn(scanner.at(line.tokens[static_cast<std::size_t>(taken)]),
+                             "ignored " + plural(static_cast<long long>(extra), "value", "values") +
+                                 " after " + std::string(field.name));
+        }
+        result.push_back(std::move(value));
+    }
+    return result;
+}
+
+// A warning for the lines after the `lineCount` lines of a layout, if any.
+void warnTrailingLines(LineScanner& scanner, std::string_view what, long long lineCount,
+                       Diagnostics& diagnostics) {
+    TextLine line;
+    if (!scanner.next(line)) return;
+    const int remaining = 1 + scanner.countRemainingLines();
+    diagnostics.warn(scanner.at(line.number, 1), "ignored " + plural(remaining, "line", "lines") +
+                                                     " after the " + std::string(what) + "'s " +
+                                                     plural(lineCount, "line", "lines"));
+}
+
+// ---- the camera and the lighting, from the fields of any layout
+
+dvec3 vec3Of(const FieldValue& f) {
+    return dvec3(f.values[0], f.values[1], f.values[2]);
+}
+
+vec3 rgbOf(const FieldValue& f) {
+    if (f.values.size() == 1) return vec3(static_cast<float>(f.values[0]));
+    return vec3(static_cast<float>(f.values[0]), static_cast<float>(f.values[1]),
+                static_cast<float>(f.values[2]));
+}
+
+CourseCamera makeCamera(const FieldValue& c, const FieldValue& n, const FieldValue& v, Scalar d,
+                        Scalar hx, Scalar hy) {
+    CourseCamera camera;
+    camera.c = vec3Of(c);
+    camera.n = vec3Of(n);
+    camera.v = vec3Of(v);
+    camera.d = d.field->values[d.index];
+    camera.hx = hx.field->values[hx.index];
+    camera.hy = hy.field->values[hy.index];
+    camera.where = {c.line,
+                    n.line,
+                    v.line,
+                    d.field->where[d.index],
+                    hx.field->where[hx.index],
+                    hy.field->where[hy.index]};
+    return camera;
+}
+
+// Values outside the ranges the course gives (seed 004) still render, with a warning.
+void checkRange(const FieldValue& field, const std::string& name, const std::string& suffix,
+                double low, double high, const char* range, Diagnostics& diagnostics) {
+    for (std::size_t i = 0; i < field.values.size(); ++i) {
+        const double v = field.values[i];
+        if (v >= low && v <= high) continue;
+        std::string label = name;
+        if (field.values.size() == 3) label += std::string(".") + "rgb"[i];
+        diagnostics.warn(field.where[i], label + suffix + " = " + formatNumber(v) + " is outside " +
+                                             range + ", the range the course gives for it");
+    }
+}
+
+// The lighting, with the course's range warnings, in the order ka, Ia, kd, Od, ks, Il, n.
+CourseLighting makeLighting(const LightingFields& f, const LightingNames& names,
+                            Diagnostics& diagnostics) {
+    CourseLighting lighting;
+    const bool numbered = f.lights.size() > 1;
+    for (const auto& [pl, il] : f.lights) {
+        Light light;
+        light.pWorld = dvec4(vec3Of(*pl), 1.0);
+        light.intensity = rgbOf(*il);
+        light.where = pl->line;
+        lighting.lights.push_back(light);
+    }
+    lighting.material.ka = static_cast<float>(f.ka->values[0]);
+    lighting.ambientIntensity = rgbOf(*f.ia);
+    lighting.material.kd = rgbOf(*f.kd);
+    lighting.material.od = rgbOf(*f.od);
+    lighting.material.ks = static_cast<float>(f.ks->values[0]);
+    lighting.material.shininess = static_cast<float>(f.n->values[0]);
+
+    checkRange(*f.ka, names.ka, "", 0.0, 1.0, "[0, 1]", diagnostics);
+    checkRange(*f.ia, names.ia, "", 0.0, 255.0, "[0, 255]", diagnostics);
+    checkRange(*f.kd, names.kd, "", 0.0, 1.0, "[0, 1]", diagnostics);
+    checkRange(*f.od, names.od, "", 0.0, 1.0, "[0, 1]", diagnostics);
+    checkRange(*f.ks, names.ks, "", 0.0, 1.0, "[0, 1]", diagnostics);
+    for (std::size_t k = 0; k < f.lights.size(); ++k)
+        checkRange(*f.lights[k].second, names.il,
+                   numbered ? " of light " + std::to_string(k + 1) : std::string(), 0.0, 255.0,
+                   "[0, 255]", diagnostics);
+    const double n = f.n->values[0];
+    if (!(n > 0.0))
+        diagnostics.warn(f.n->where[0],
+                         std::string(names.n) + " = " + formatNumber(n) +
+                             " is not positive: (R.V)^n then makes no highlight (it is 1 "
+                             "everywhere for n = 0 and grows without bound where R.V nears 0 "
+                             "for n < 0, where the specular term is left out)");
+    return lighting;
+}
+
+// ---- .byu tokens
+
+// Reads a header count: a non-negative integer.
+Result<long long> readCount(const LineScanner& scanner, const Token& token, const char* what) {
+    const auto n = parseInteger(token.text);
+    if (!n || *n < 0)
+        return makeError(ErrorCode::Syntax, scanner.at(token),
+                         std::string("expected the number of ") + what +
+                             " (a non-negative integer), found " + quoted(token.text));
+    return *n;
+}
+
+bool isComment(const Token& token) {
+    return token.text.starts_with('#') || token.text.starts_with("//");
+}
+
+Error commentError(const LineScanner& scanner, const Token& token, const std::string& expected) {
+    return makeError(ErrorCode::Syntax, scanner.at(token),
+                     "expected " + expected + ", found a comment (" + quoted(token.text) +
+                         "), but .byu files have no comments");
+}
+
+// "used by no triangle" and "no triangles" warnings, as for course meshes.
+void warnUnusedVertices(const Mesh& mesh, const std::vector<unsigned char>& used,
+                        Diagnostics& diagnostics) {
+    long long unused = 0;
+    for (unsigned char u : used) unused += u ? 0 : 1;
+    const auto vertexCount = static_cast<long long>(mesh.positions.size());
+    if (unused > 0 && !mesh.triangles.empty())
+        diagnostics.warn(mesh.source, plural(unused, "vertex", "vertices") + " of " +
+                                          std::to_string(vertexCount) +
+                                          (unused == 1 ? " is" : " are") +
+                                          " not used by any triangle");
+    if (mesh.triangles.empty()) diagnostics.warn(mesh.source, "the object has no triangles");
+}
+
+}  // namespace rl::course_io
+
+namespace rl {
+
+Result<std::vector<FieldValue>> readFieldLines(LineScanner& scanner,
+                                               std::span<const FieldSpec> fields,
+                                               std::string_view what, Diagnostics& diagnostics) {
+    auto result = course_io::readFields(scanner, fields, diagnostics);
+    if (result)
+        course_io::warnTrailingLines(scanner, what, static_cast<long long>(fields.size()),
+                                     diagnostics);
+    return result;
+}
+
+}  // namespace rl

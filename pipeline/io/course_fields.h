@@ -1,0 +1,101 @@
+// What the course readers share, internal to io/ (other folders include course_readers.h):
+// the number tokens and their messages, the field lines of the line layouts, the course's
+// camera and lighting built from fields, and the tokens of .byu files. Defined in
+// course_fields.cpp, except the last section, which one family's file offers another.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "course_readers.h"
+
+namespace rl::course_io {
+
+// ---- number tokens and their messages
+
+// The counts a field accepts, for messages: "3 numbers", "1 or 3 numbers".
+std::string countText(unsigned counts);
+// The largest count a field accepts.
+int maxCount(unsigned counts);
+// "1 vertex", "8 vertices".
+std::string plural(long long n, const char* one, const char* many);
+// The token without one leading sign.
+std::string_view withoutSign(std::string_view token);
+// Why a token is not a number, for the end of an error message: "found 'x'" and a hint.
+std::string whyNotNumber(std::string_view token);
+// "a, b and c".
+std::string listText(const std::vector<std::string>& items);
+
+// The counts of a FieldSpec or a key: bit k set when k numbers are accepted.
+inline constexpr unsigned kOne = 1u << 1;
+inline constexpr unsigned kTwo = 1u << 2;
+inline constexpr unsigned kThree = 1u << 3;
+inline constexpr unsigned kFour = 1u << 4;
+
+// ---- field lines
+
+// The fields of readFieldLines, without the check for lines after the last one.
+Result<std::vector<FieldValue>> readFields(LineScanner& scanner, std::span<const FieldSpec> fields,
+                                           Diagnostics& diagnostics);
+// A warning for the lines after the `lineCount` lines of a layout, if any.
+void warnTrailingLines(LineScanner& scanner, std::string_view what, long long lineCount,
+                       Diagnostics& diagnostics);
+
+// ---- the camera and the lighting, from the fields of any layout
+
+dvec3 vec3Of(const FieldValue& f);
+// An RGB triple, or one number for all three channels.
+vec3 rgbOf(const FieldValue& f);
+
+// One of the numbers of a field: d of "d hx hy" is {field, 0}.
+struct Scalar {
+    const FieldValue* field;
+    std::size_t index;
+};
+
+CourseCamera makeCamera(const FieldValue& c, const FieldValue& n, const FieldValue& v, Scalar d,
+                        Scalar hx, Scalar hy);
+
+// The fields of a lighting file, whatever its layout, and the names the file gives them.
+struct LightingFields {
+    const FieldValue* ka = nullptr;
+    const FieldValue* ia = nullptr;
+    const FieldValue* kd = nullptr;
+    const FieldValue* od = nullptr;
+    const FieldValue* ks = nullptr;
+    const FieldValue* n = nullptr;
+    std::vector<std::pair<const FieldValue*, const FieldValue*>> lights;  // Pl, Il
+};
+struct LightingNames {
+    const char* ka;
+    const char* ia;
+    const char* kd;
+    const char* od;
+    const char* ks;
+    const char* il;
+    const char* n;
+};
+
+// Values outside the ranges the course gives (seed 004) still render, with a warning.
+void checkRange(const FieldValue& field, const std::string& name, const std::string& suffix,
+                double low, double high, const char* range, Diagnostics& diagnostics);
+
+// The lighting, with the course's range warnings, in the order ka, Ia, kd, Od, ks, Il, n.
+CourseLighting makeLighting(const LightingFields& f, const LightingNames& names,
+                            Diagnostics& diagnostics);
+
+// ---- .byu tokens
+
+// Reads a header count: a non-negative integer.
+Result<long long> readCount(const LineScanner& scanner, const Token& token, const char* what);
+bool isComment(const Token& token);
+Error commentError(const LineScanner& scanner, const Token& token, const std::string& expected);
+
+// "used by no triangle" and "no triangles" warnings.
+void warnUnusedVertices(const Mesh& mesh, const std::vector<unsigned char>& used,
+                        Diagnostics& diagnostics);
+
+}  // namespace rl::course_io
