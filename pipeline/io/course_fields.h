@@ -98,4 +98,17 @@ Error commentError(const LineScanner& scanner, const Token& token, const std::st
 void warnUnusedVertices(const Mesh& mesh, const std::vector<unsigned char>& used,
                         Diagnostics& diagnostics);
 
+// ---- the .byu flavours that readByuObject (course_readers.cpp) tells apart
+
+// A header of four integers, "parts vertices polygons edges" (movie_byu.cpp).
+bool isMovieByuHeader(const TextLine& line);
+// An original Movie.BYU file after its header, each polygon fan-triangulated
+// (movie_byu.cpp). `summary` receives "1 part, 8 vertices and 6 polygons" for the note.
+Result<Mesh> readMovieByu(LineScanner& scanner, const TextLine& header, std::string& summary,
+                          Diagnostics& diagnostics);
+// A course Bezier surface after its lines "m n" and E, evaluated on an E x E grid
+// (bezier_surface.cpp).
+Result<Mesh> readBezierSurface(LineScanner& scanner, const TextLine& header,
+                               const TextLine& evaluationsLine, Diagnostics& diagnostics);
+
 }  // namespace rl::course_io
