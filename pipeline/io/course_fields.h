@@ -98,6 +98,13 @@ Error commentError(const LineScanner& scanner, const Token& token, const std::st
 void warnUnusedVertices(const Mesh& mesh, const std::vector<unsigned char>& used,
                         Diagnostics& diagnostics);
 
+// ---- key = value files, for readCameraFile and readLightingFile (course_key_value.cpp)
+
+Result<CourseCamera> readKeyValueCamera(std::string_view text, const std::string& fileName,
+                                        Diagnostics& diagnostics);
+Result<CourseLighting> readKeyValueLighting(std::string_view text, const std::string& fileName,
+                                            Diagnostics& diagnostics);
+
 // ---- the .byu flavours that readByuObject (course_readers.cpp) tells apart
 
 // A header of four integers, "parts vertices polygons edges" (movie_byu.cpp).

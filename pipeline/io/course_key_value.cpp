@@ -1,0 +1,414 @@
+// Key = value camera and lighting files: "C = x y z", "Pl2 = ..." in any order, in any case,
+// camera and lighting keys in one file or two; the lighting may use the lecture slides' keys.
+#include <algorithm>
+#include <cctype>
+#include <optional>
+
+#include "course_fields.h"
+#include "format.h"
+
+namespace rl {
+
+using namespace course_io;  // the helpers the course readers share
+
+namespace {
+
+struct KeySpec {
+    std::string_view key;  // as the course writes it; matched without regard to case
+    std::string_view description;
+    unsigned counts;
+    bool required = true;   // every file has it (for the first light, when perLight)
+    bool perLight = false;  // one per light: "Pl" (or "Pl1") for the first, "Pl2" ...
+};
+
+constexpr int kMaxKeyLights = static_cast<int>(kMaxKeyValueLights);
+
+constexpr KeySpec kCameraKeys[] = {
+    {"C", "the camera position", kThree},
+    {"N", "the view direction", kThree},
+    {"V", "the up vector", kThree},
+    {"d", "the projection distance", kOne},
+    {"hx", "the horizontal half-size of the window", kOne},
+    {"hy", "the vertical half-size of the window", kOne},
+};
+constexpr KeySpec kLightingKeys[] = {
+    {"Iamb", "the ambient light colour", kThree},
+    {"Ka", "the ambient coefficient", kOne},
+    {"Il", "the light colour", kThree, true, true},
+    {"Pl", "the light position (x y z, or x y z w: w = 0 for a directional light)", kThree | kFour,
+     true, true},
+    {"Kd", "the diffuse coefficient of each channel", kThree},
+    {"Od", "the diffuse colour of the object", kThree},
+    {"Ks", "the specular coefficient", kOne},
+    {"eta", "the specular exponent", kOne},
+    // The lecture slides' lighting (seed 003), beyond the course's files.
+    {"Ke", "the emission of the object", kThree, false},
+    {"two_sided", "two-sided lighting, 1 or 0", kOne, false},
+    {"blinn", "Blinn-Phong highlights, 1 or 0", kOne, false},
+    {"atten", "the attenuation kc kl kq", kThree, false, true},
+    {"spot_dir", "the spot direction", kThree, false, true},
+    {"spot_cutoff", "the spot cutoff angle in degrees", kOne, false, true},
+    {"spot_exp", "the spot exponent", kOne, false, true},
+};
+// Index of each in kLightingKeys.
+enum LightingKey : std::size_t {
+    kIamb,
+    kKa,
+    kIl,
+    kPl,
+    kKd,
+    kOd,
+    kKs,
+    kEta,
+    kKe,
+    kTwoSided,
+    kBlinn,
+    kAtten,
+    kSpotDir,
+    kSpotCutoff,
+    kSpotExp,
+    kLightingKeyCount
+};
+constexpr std::string_view kUnusedCameraKey = "U";  // a dummy some camera files carry
+
+bool sameKey(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
+// A key of `keys` and the light it is for (0 for the first): "Pl" and "Pl1" are the first
+// light's, "Pl2" the second's, for the keys given per light.
+struct KeyMatch {
+    std::size_t index = 0;
+    int light = 0;
+};
+
+template <std::size_t N>
+std::optional<KeyMatch> findKey(const KeySpec (&keys)[N], std::string_view key) {
+    for (std::size_t i = 0; i < N; ++i) {
+        if (sameKey(keys[i].key, key)) return KeyMatch{i, 0};
+        const std::size_t base = keys[i].key.size();
+        if (keys[i].perLight && key.size() == base + 1 &&
+            sameKey(keys[i].key, key.substr(0, base)) && key[base] >= '1' &&
+            key[base] < '1' + kMaxKeyLights)
+            return KeyMatch{i, key[base] - '1'};
+    }
+    return std::nullopt;
+}
+
+std::string keyName(const KeySpec& key, int light) {
+    return lightKeyName(key.key, static_cast<std::size_t>(light));
+}
+
+// The keys every file has, "C, N, V, d, hx and hy".
+template <std::size_t N>
+std::string keyList(const KeySpec (&keys)[N]) {
+    std::vector<std::string> names;
+    for (const KeySpec& key : keys)
+        if (key.required) names.emplace_back(key.key);
+    return listText(names);
+}
+
+// keyList, then the keys a file may have: "...; optionally Ke, ... (Pl2, Il2 ... for more
+// lights)".
+template <std::size_t N>
+std::string keyListWithOptional(const KeySpec (&keys)[N]) {
+    std::vector<std::string> optional;
+    bool perLight = false;
+    for (const KeySpec& key : keys) {
+        if (!key.required) optional.emplace_back(key.key);
+        perLight = perLight || key.perLight;
+    }
+    if (optional.empty()) return keyList(keys);
+    return keyList(keys) + "; optionally " + listText(optional) +
+           (perLight ? "; Pl2, Il2 ... for lights 2 to " + std::to_string(kMaxKeyLights)
+                     : std::string());
+}
+
+// The keys of one role (camera or lighting) from a key = value file, in the order of `keys`.
+// Keys of the other role are skipped; keys of neither are skipped with a warning.
+template <std::size_t N, std::size_t M>
+Result<std::vector<FieldValue>> readKeyValues(std::string_view text, const std::string& fileName,
+                                              const char* what, const KeySpec (&keys)[N],
+                                              const char* otherWhat, const KeySpec (&otherKeys)[M],
+                                              bool isCamera, Diagnostics& diagnostics) {
+    LineScanner scanner(text, fileName);
+    // Key i of light k at i + N k.
+    std::vector<FieldValue> values(N * kMaxKeyLights);
+    std::vector<int> givenOn(N * kMaxKeyLights, 0);  // the line each was given on, 0 when not yet
+    bool otherRoleSeen = false;
+    TextLine line;
+    while (scanner.next(line)) {
+        // Split the line at its first '=': the key before it, the values after it.
+        std::size_t at = 0;
+        std::size_t equals = std::string_view::npos;
+        for (; at < line.tokens.size(); ++at) {
+            equals = line.tokens[at].text.find('=');
+            if (equals != std::string_view::npos) break;
+        }
+        if (at == line.tokens.size())
+            return makeError(ErrorCode::Syntax, scanner.at(line.tokens[0]),
+                             "expected 'key = value', found a line without '=' (" +
+                                 quoted(line.tokens[0].text) +
+                                 (line.tokens.size() > 1 ? " ...)" : ")"));
+        std::string keyText;
+        std::size_t keyWords = 0;
+        for (std::size_t k = 0; k <= at; ++k) {
+            const std::string_view part =
+                k < at ? line.tokens[k].text : line.tokens[k].text.substr(0, equals);
+            if (part.empty()) continue;
+            if (keyWords++ > 0) keyText += ' ';
+            keyText += part;
+        }
+        const SourceLocation keyAt = scanner.at(line.tokens[0]);
+        if (keyWords == 0)
+            return makeError(ErrorCode::Syntax, keyAt, "expected a key before '=', found nothing");
+        if (keyWords > 1)
+            return makeError(ErrorCode::Syntax, keyAt,
+                             "expected one key before '=', found " + quoted(keyText));
+        std::vector<Token> valueTokens;
+        const Token& split = line.tokens[at];
+        if (equals + 1 < split.text.size())
+            valueTokens.push_back({split.text.substr(equals + 1), split.line,
+                                   split.column + static_cast<int>(equals) + 1});
+        valueTokens.insert(valueTokens.end(),
+                           line.tokens.begin() + static_cast<std::ptrdiff_t>(at) + 1,
+                           line.tokens.end());
+
+        const auto match = findKey(keys, keyText);
+        if (!match) {
+            if (findKey(otherKeys, keyText)) {
+                otherRoleSeen = true;
+            } else if (sameKey(keyText, kUnusedCameraKey)) {
+                if (isCamera)
+                    diagnostics.note(
+                        keyAt, "ignored " + keyText + ": the camera's axes come from N and V");
+            } else {
+                diagnostics.warn(keyAt, "ignored the unknown key " + quoted(keyText) + " (a " +
+                                            std::string(what) + " has " +
+                                            keyListWithOptional(keys) + "; a " + otherWhat +
+                                            " has " + keyListWithOptional(otherKeys) + ")");
+            }
+            continue;
+        }
+        const KeySpec& key = keys[match->index];
+        const std::size_t slot = match->index + N * static_cast<std::size_t>(match->light);
+        const std::string name = keyName(key, match->light);
+        if (givenOn[slot] != 0)
+            return makeError(ErrorCode::Syntax, keyAt,
+                             "expected each key once, found " + name +
+                                 " again (first given on line " + std::to_string(givenOn[slot]) +
+                                 ")");
+        givenOn[slot] = line.number;
+
+        FieldValue& value = values[slot];
+        value.line = scanner.at(line.number, 1);
+        for (const Token& token : valueTokens) {
+            const auto number = parseReal(token.text);
+            if (!number)
+                return makeError(ErrorCode::Syntax, scanner.at(token),
+                                 "expected a number for " + name + ", " + whyNotNumber(token.text));
+            value.values.push_back(*number);
+            value.where.push_back(scanner.at(token));
+        }
+        const int count = static_cast<int>(value.values.size());
+        const int most = maxCount(key.counts);
+        if (count > most)
+            return makeError(ErrorCode::Syntax, value.where[static_cast<std::size_t>(most)],
+                             "expected " + countText(key.counts) + " for " + name + ", found " +
+                                 std::to_string(count));
+        if (!(key.counts & (1u << count)))
+            return makeError(ErrorCode::Syntax, scanner.afterLast(line),
+                             "expected " + countText(key.counts) + " for " + name + ", found " +
+                                 (count == 0 ? std::string("none") : std::to_string(count)));
+    }
+
+    std::vector<std::string> missing;
+    std::size_t required = 0;
+    for (std::size_t i = 0; i < N; ++i) {
+        required += keys[i].required ? 1 : 0;
+        if (keys[i].required && givenOn[i] == 0) missing.emplace_back(keys[i].key);
+    }
+    if (missing.empty()) return values;
+    std::string message;
+    if (missing.size() == required) {
+        message = "expected the " + std::string(what) + " keys " + keyList(keys) +
+                  ", found none of them" +
+                  (otherRoleSeen ? " (only " + std::string(otherWhat) + " keys)" : std::string());
+    } else if (missing.size() == 1) {
+        const KeySpec& key = keys[findKey(keys, missing[0])->index];
+        message = "expected a line '" + missing[0] + " = ...' (" + std::string(key.description) +
+                  ", " + countText(key.counts) + "), found no " + missing[0];
+    } else {
+        message = "expected lines for " + listText(missing) + " (a " + std::string(what) +
+                  " needs " + keyList(keys) + "), found none";
+    }
+    return makeError(ErrorCode::MissingData, scanner.endOfInput(), message);
+}
+
+constexpr LightingNames kKeyValueNames = {"Ka", "Iamb", "Kd", "Od", "Ks", "Il", "eta"};
+
+// A key = value lighting file's values (readKeyValues over kLightingKeys): the course's keys,
+// then the lecture slides' (emission, two-sided, Blinn-Phong, more lights, w, attenuation,
+// spots), each checked against the range OpenGL allows it.
+Result<CourseLighting> keyValueLighting(const std::vector<FieldValue>& v,
+                                        Diagnostics& diagnostics) {
+    constexpr std::size_t N = kLightingKeyCount;
+    const auto at = [&](std::size_t key, int light) -> const FieldValue& {
+        return v[key + N * static_cast<std::size_t>(light)];
+    };
+    const auto given = [&](std::size_t key, int light) { return !at(key, light).values.empty(); };
+    const auto name = [](std::size_t key, int light) { return keyName(kLightingKeys[key], light); };
+    LightingFields parts;
+    parts.ia = &v[kIamb];
+    parts.ka = &v[kKa];
+    parts.kd = &v[kKd];
+    parts.od = &v[kOd];
+    parts.ks = &v[kKs];
+    parts.n = &v[kEta];
+    parts.lights = {{&v[kPl], &v[kIl]}};
+    // Lights 2 ... are numbered without gaps, each with its Pl and Il.
+    for (int k = 1; k < kMaxKeyLights; ++k) {
+        std::optional<std::size_t> first;
+        for (std::size_t key = 0; key < N; ++key)
+            if (kLightingKeys[key].perLight && given(key, k) &&
+                (!first || at(key, k).line.line < at(*first, k).line.line))
+                first = key;
+        if (!first) continue;
+        const int expected = static_cast<int>(parts.lights.size());
+        if (k != expected)
+            return makeError(ErrorCode::Syntax, at(*first, k).line,
+                             "expected light " + std::to_string(expected + 1) + " (" +
+                                 name(kPl, expected) + ", " + name(kIl, expected) +
+                                 ") before light " + std::to_string(k + 1) + ", found " +
+                                 name(*first, k) + " (lights are numbered without gaps)");
+        for (const std::size_t key : {std::size_t(kPl), std::size_t(kIl)})
+            if (!given(key, k))
+                return makeError(ErrorCode::MissingData, at(*first, k).line,
+                                 "expected a line '" + name(key, k) + " = ...' (" +
+                                     std::string(kLightingKeys[key].description) + " of light " +
+                                     std::to_string(k + 1) + "), found " + name(*first, k) +
+                                     " without it");
+        parts.lights.emplace_back(&at(kPl, k), &at(kIl, k));
+    }
+    CourseLighting lighting = makeLighting(parts, kKeyValueNames, diagnostics);
+
+    const auto flag = [&](std::size_t key) -> Result<std::optional<bool>> {
+        if (!given(key, 0)) return std::optional<bool>();
+        const double value = at(key, 0).values[0];
+        if (value != 0.0 && value != 1.0)
+            return makeError(
+                ErrorCode::Range, at(key, 0).where[0],
+                "expected 1 or 0 for " + name(key, 0) + ", found " + formatNumber(value));
+        return std::optional<bool>(value == 1.0);
+    };
+    auto twoSided = flag(kTwoSided);
+    if (!twoSided) return twoSided.error();
+    if (twoSided.value()) lighting.twoSided = *twoSided.value();
+    auto blinn = flag(kBlinn);
+    if (!blinn) return blinn.error();
+    if (blinn.value() && *blinn.value()) lighting.specular = SpecularModel::BlinnPhong;
+    if (given(kKe, 0)) {
+        lighting.material.emission = rgbOf(at(kKe, 0));
+        checkRange(at(kKe, 0), "Ke", "", 0.0, 255.0, "[0, 255]", diagnostics);
+    }
+
+    for (std::size_t k = 0; k < lighting.lights.size(); ++k) {
+        const int light = static_cast<int>(k);
+        Light& l = lighting.lights[k];
+        const FieldValue& pl = at(kPl, light);
+        if (pl.values.size() == 4) {
+            // Homogeneous, as GL_POSITION: w = 0 a direction toward the light, otherwise the
+            // point (x/w, y/w, z/w).
+            const double w = pl.values[3];
+            l.pWorld = w == 0.0 ? dvec4(vec3Of(pl), 0.0) : dvec4(vec3Of(pl) / w, 1.0);
+        }
+        if (given(kAtten, light)) {
+            const FieldValue& a = at(kAtten, light);
+            for (std::size_t i = 0; i < 3; ++i)
+                if (!(a.values[i] >= 0.0))
+                    return makeError(ErrorCode::Range, a.where[i],
+                                     "expected " + name(kAtten, light) +
+                                         " coefficients of 0 or more (kc kl kq), found " +
+                                         formatNumber(a.values[i]));
+            if (a.values[0] == 0.0 && a.values[1] == 0.0 && a.values[2] == 0.0)
+                return makeError(ErrorCode::Range, a.where[0],
+                                 "expected " + name(kAtten, light) +
+                                     " with a coefficient above 0, found 0 0 0 (1 / 0 light)");
+            l.attenuation = rgbOf(a);
+            if (l.pWorld.w == 0.0)
+                diagnostics.warn(a.line, name(kAtten, light) +
+                                             " has no effect: a directional light (w = 0) is "
+                                             "not attenuated");
+        }
+        if (given(kSpotDir, light)) {
+            const FieldValue& d = at(kSpotDir, light);
+            if (vec3Of(d) == dvec3(0.0))
+                return makeError(
+                    ErrorCode::Range, d.where[0],
+                    "expected a spot direction other than 0 0 0 for " + name(kSpotDir, light));
+            l.spotDirection = vec3Of(d);
+        }
+        if (given(kSpotCutoff, light)) {
+            const FieldValue& c = at(kSpotCutoff, light);
+            const double cutoff = c.values[0];
+            if (!((cutoff >= 0.0 && cutoff <= 90.0) || cutoff == 180.0))
+                return makeError(ErrorCode::Range, c.where[0],
+                                 "expected " + name(kSpotCutoff, light) +
+                                     " from 0 to 90 degrees, or 180 (not a spot), found " +
+                                     formatNumber(cutoff));
+            l.spotCutoff = static_cast<float>(cutoff);
+            if (l.spot() && !given(kSpotDir, light))
+                diagnostics.note(c.line, name(kSpotCutoff, light) + ": no " +
+                                             name(kSpotDir, light) +
+                                             ", the spot points along -z (OpenGL's default)");
+        }
+        if (given(kSpotExp, light)) {
+            const FieldValue& e = at(kSpotExp, light);
+            if (!(e.values[0] >= 0.0 && e.values[0] <= 128.0))
+                return makeError(ErrorCode::Range, e.where[0],
+                                 "expected " + name(kSpotExp, light) + " from 0 to 128, found " +
+                                     formatNumber(e.values[0]));
+            l.spotExponent = static_cast<float>(e.values[0]);
+        }
+        if (!l.spot() && (given(kSpotDir, light) || given(kSpotExp, light)))
+            diagnostics.warn(at(given(kSpotDir, light) ? kSpotDir : kSpotExp, light).line,
+                             "light " + std::to_string(k + 1) + " is not a spot without " +
+                                 name(kSpotCutoff, light) +
+                                 " (0 to 90 degrees): its spot direction and exponent are unused");
+    }
+    return lighting;
+}
+
+}  // namespace
+
+std::string lightKeyName(std::string_view key, std::size_t light) {
+    return std::string(key) + (light > 0 ? std::to_string(light + 1) : std::string());
+}
+
+bool isLightingKey(std::string_view key) {
+    return findKey(kLightingKeys, key).has_value();
+}
+
+Result<CourseCamera> course_io::readKeyValueCamera(std::string_view text,
+                                                   const std::string& fileName,
+                                                   Diagnostics& diagnostics) {
+    auto f = readKeyValues(text, fileName, "camera", kCameraKeys, "lighting file", kLightingKeys,
+                           true, diagnostics);
+    if (!f) return f.error();
+    const auto& v = f.value();
+    return makeCamera(v[0], v[1], v[2], {&v[3], 0}, {&v[4], 0}, {&v[5], 0});
+}
+
+Result<CourseLighting> course_io::readKeyValueLighting(std::string_view text,
+                                                       const std::string& fileName,
+                                                       Diagnostics& diagnostics) {
+    auto f = readKeyValues(text, fileName, "lighting file", kLightingKeys, "camera", kCameraKeys,
+                           false, diagnostics);
+    if (!f) return f.error();
+    return keyValueLighting(f.value(), diagnostics);
+}
+
+}  // namespace rl
