@@ -38,6 +38,10 @@
 //   4. Otherwise an error naming the layouts tried and the counts the file has.
 // Every successful read notes which flavour was assumed and why; a layout given by the
 // caller skips detection.
+//
+// One file per layout family: course_camera_lighting.cpp (the line layouts, their names and
+// the detection), course_key_value.cpp, byu_mesh.cpp, bezier_surface.cpp, movie_byu.cpp, and
+// course_readers.cpp (readByuObject); course_fields.h holds what they share.
 #pragma once
 
 #include <cstdint>
