@@ -272,6 +272,43 @@ Error commentError(const LineScanner& scanner, const Token& token, const std::st
                          "), but .byu files have no comments");
 }
 
+Result<double> readCoordinate(const LineScanner& scanner, const Token& token, int axis,
+                              const std::string& which) {
+    static const char* const kAxis[] = {"x", "y", "z"};
+    const auto value = parseReal(token.text);
+    if (!value)
+        return makeError(ErrorCode::Syntax, scanner.at(token),
+                         std::string("expected a number for the ") + kAxis[axis] +
+                             " coordinate of " + which + ", " + whyNotNumber(token.text));
+    return *value;
+}
+
+Result<dvec3> readPointLine(const LineScanner& scanner, const TextLine& line,
+                            const std::string& which) {
+    if (isComment(line.tokens[0])) return commentError(scanner, line.tokens[0], which + " (x y z)");
+    dvec3 p(0.0);
+    for (int k = 0; k < 3; ++k) {
+        if (static_cast<std::size_t>(k) >= line.tokens.size())
+            return makeError(
+                ErrorCode::Syntax, scanner.afterLast(line),
+                "expected 3 coordinates for " + which + ", found " + std::to_string(k));
+        auto value = readCoordinate(scanner, line.tokens[static_cast<std::size_t>(k)], k, which);
+        if (!value) return value.error();
+        p[k] = *value;
+    }
+    return p;
+}
+
+void ExtraValues::note(const LineScanner& scanner, const TextLine& line) {
+    if (line.tokens.size() > 3 && lines++ == 0) first = scanner.at(line.tokens[3]);
+}
+
+void ExtraValues::warn(Diagnostics& diagnostics) const {
+    if (lines > 0)
+        diagnostics.warn(first, "ignored extra values at the end of " +
+                                    plural(lines, "line", "lines") + " (the first is here)");
+}
+
 // "used by no triangle" and "no triangles" warnings, as for course meshes.
 void warnUnusedVertices(const Mesh& mesh, const std::vector<unsigned char>& used,
                         Diagnostics& diagnostics) {

@@ -94,6 +94,23 @@ Result<long long> readCount(const LineScanner& scanner, const Token& token, cons
 bool isComment(const Token& token);
 Error commentError(const LineScanner& scanner, const Token& token, const std::string& expected);
 
+// Coordinate `axis` (0 for x) of the point `which` ("vertex 3 of 8"): a number.
+Result<double> readCoordinate(const LineScanner& scanner, const Token& token, int axis,
+                              const std::string& which);
+// The x y z of a point on a line of its own (a vertex, a control point).
+Result<dvec3> readPointLine(const LineScanner& scanner, const TextLine& line,
+                            const std::string& which);
+
+// The lines holding values after their first three (x y z, or a triangle's three indices),
+// for one warning after the last.
+struct ExtraValues {
+    long long lines = 0;
+    SourceLocation first;
+
+    void note(const LineScanner& scanner, const TextLine& line);
+    void warn(Diagnostics& diagnostics) const;
+};
+
 // "used by no triangle" and "no triangles" warnings.
 void warnUnusedVertices(const Mesh& mesh, const std::vector<unsigned char>& used,
                         Diagnostics& diagnostics);
