@@ -5,8 +5,17 @@
 
 namespace rl::course_io {
 
-Result<Mesh> readBezierSurface(LineScanner& scanner, const TextLine& header,
-                               const TextLine& evaluationsLine, Diagnostics& diagnostics) {
+namespace {
+
+// What the first two lines declare: the degrees m x n and the evaluations per direction E.
+struct BezierHeader {
+    int m = 0;
+    int n = 0;
+    long long evaluations = 0;
+};
+
+Result<BezierHeader> readBezierHeader(const LineScanner& scanner, const TextLine& header,
+                                      const TextLine& evaluationsLine, Diagnostics& diagnostics) {
     int degree[2] = {0, 0};
     for (int k = 0; k < 2; ++k) {
         const Token& token = header.tokens[static_cast<std::size_t>(k)];
@@ -33,8 +42,14 @@ Result<Mesh> readBezierSurface(LineScanner& scanner, const TextLine& header,
                          "to " +
                              std::to_string(kMaxBezierEvaluations) + "), found " +
                              quoted(evaluationsToken.text));
+    return BezierHeader{degree[0], degree[1], evaluations};
+}
 
-    const int m = degree[0], n = degree[1];
+// The (m+1)(n+1) control points, one a line, row by row.
+Result<std::vector<dvec3>> readControlPoints(LineScanner& scanner, const TextLine& header,
+                                             const BezierHeader& surface,
+                                             Diagnostics& diagnostics) {
+    const int m = surface.m, n = surface.n;
     const long long pointCount = static_cast<long long>(m + 1) * (n + 1);
     const std::string degrees = std::to_string(m) + " x " + std::to_string(n);
     const long long available = scanner.countRemainingLines();
@@ -47,54 +62,37 @@ Result<Mesh> readBezierSurface(LineScanner& scanner, const TextLine& header,
 
     std::vector<dvec3> control;
     control.reserve(static_cast<std::size_t>(pointCount));
-    static const char* const kAxis[] = {"x", "y", "z"};
-    long long linesWithExtraValues = 0;
-    SourceLocation firstExtra;
+    ExtraValues extra;
     TextLine line;
     for (int i = 0; i <= m; ++i) {
         for (int j = 0; j <= n; ++j) {
             scanner.next(line);  // present: counted above
             const std::string which =
                 "control point (" + std::to_string(i) + ", " + std::to_string(j) + ")";
-            if (isComment(line.tokens[0]))
-                return commentError(scanner, line.tokens[0], which + " (x y z)");
-            dvec3 p(0.0);
-            for (int k = 0; k < 3; ++k) {
-                if (static_cast<std::size_t>(k) >= line.tokens.size())
-                    return makeError(
-                        ErrorCode::Syntax, scanner.afterLast(line),
-                        "expected 3 coordinates for " + which + ", found " + std::to_string(k));
-                const Token& token = line.tokens[static_cast<std::size_t>(k)];
-                const auto value = parseReal(token.text);
-                if (!value)
-                    return makeError(ErrorCode::Syntax, scanner.at(token),
-                                     std::string("expected a number for the ") + kAxis[k] +
-                                         " coordinate of " + which + ", " +
-                                         whyNotNumber(token.text));
-                p[k] = *value;
-            }
-            if (line.tokens.size() > 3 && linesWithExtraValues++ == 0)
-                firstExtra = scanner.at(line.tokens[3]);
-            control.push_back(p);
+            auto p = readPointLine(scanner, line, which);
+            if (!p) return p.error();
+            extra.note(scanner, line);
+            control.push_back(*p);
         }
     }
-    if (linesWithExtraValues > 0)
-        diagnostics.warn(firstExtra, "ignored extra values at the end of " +
-                                         plural(linesWithExtraValues, "line", "lines") +
-                                         " (the first is here)");
+    extra.warn(diagnostics);
     if (scanner.next(line)) {
         const int remaining = 1 + scanner.countRemainingLines();
         diagnostics.warn(scanner.at(line.number, 1),
                          "ignored " + plural(remaining, "line", "lines") + " after the " +
                              std::to_string(pointCount) + " control points of the Bezier surface");
     }
+    return control;
+}
 
-    // E x E points, two triangles for each of the (E - 1)^2 cells.
-    const auto count = static_cast<std::uint32_t>(evaluations);
+// The surface evaluated on E x E points, two triangles for each of the (E - 1)^2 cells.
+Mesh gridMesh(const std::vector<dvec3>& control, const BezierHeader& surface,
+              SourceLocation source) {
+    const auto count = static_cast<std::uint32_t>(surface.evaluations);
     Mesh mesh;
-    mesh.source = scanner.at(0, 0);
+    mesh.source = std::move(source);
     const std::vector<dvec3> grid =
-        evaluateBezierSurfaceGrid(control, m, n, static_cast<int>(count));
+        evaluateBezierSurfaceGrid(control, surface.m, surface.n, static_cast<int>(count));
     mesh.positions.reserve(grid.size());
     for (const dvec3& p : grid) mesh.positions.emplace_back(p, 1.0);
     const auto index = [count](std::uint32_t a, std::uint32_t b) { return a * count + b; };
@@ -105,6 +103,17 @@ Result<Mesh> readBezierSurface(LineScanner& scanner, const TextLine& header,
             mesh.triangles.push_back({index(a, b), index(a + 1, b + 1), index(a, b + 1)});
         }
     return mesh;
+}
+
+}  // namespace
+
+Result<Mesh> readBezierSurface(LineScanner& scanner, const TextLine& header,
+                               const TextLine& evaluationsLine, Diagnostics& diagnostics) {
+    auto surface = readBezierHeader(scanner, header, evaluationsLine, diagnostics);
+    if (!surface) return surface.error();
+    auto control = readControlPoints(scanner, header, *surface, diagnostics);
+    if (!control) return control.error();
+    return gridMesh(*control, *surface, scanner.at(0, 0));
 }
 
 }  // namespace rl::course_io
