@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <optional>
+#include <span>
 
 #include "course_fields.h"
 #include "format.h"
@@ -85,9 +86,8 @@ struct KeyMatch {
     int light = 0;
 };
 
-template <std::size_t N>
-std::optional<KeyMatch> findKey(const KeySpec (&keys)[N], std::string_view key) {
-    for (std::size_t i = 0; i < N; ++i) {
+std::optional<KeyMatch> findKey(std::span<const KeySpec> keys, std::string_view key) {
+    for (std::size_t i = 0; i < keys.size(); ++i) {
         if (sameKey(keys[i].key, key)) return KeyMatch{i, 0};
         const std::size_t base = keys[i].key.size();
         if (keys[i].perLight && key.size() == base + 1 &&
@@ -103,8 +103,7 @@ std::string keyName(const KeySpec& key, int light) {
 }
 
 // The keys every file has, "C, N, V, d, hx and hy".
-template <std::size_t N>
-std::string keyList(const KeySpec (&keys)[N]) {
+std::string keyList(std::span<const KeySpec> keys) {
     std::vector<std::string> names;
     for (const KeySpec& key : keys)
         if (key.required) names.emplace_back(key.key);
@@ -113,8 +112,7 @@ std::string keyList(const KeySpec (&keys)[N]) {
 
 // keyList, then the keys a file may have: "...; optionally Ke, ... (Pl2, Il2 ... for more
 // lights)".
-template <std::size_t N>
-std::string keyListWithOptional(const KeySpec (&keys)[N]) {
+std::string keyListWithOptional(std::span<const KeySpec> keys) {
     std::vector<std::string> optional;
     bool perLight = false;
     for (const KeySpec& key : keys) {
@@ -127,125 +125,167 @@ std::string keyListWithOptional(const KeySpec (&keys)[N]) {
                      : std::string());
 }
 
-// The keys of one role (camera or lighting) from a key = value file, in the order of `keys`.
-// Keys of the other role are skipped; keys of neither are skipped with a warning.
-template <std::size_t N, std::size_t M>
-Result<std::vector<FieldValue>> readKeyValues(std::string_view text, const std::string& fileName,
-                                              const char* what, const KeySpec (&keys)[N],
-                                              const char* otherWhat, const KeySpec (&otherKeys)[M],
-                                              bool isCamera, Diagnostics& diagnostics) {
-    LineScanner scanner(text, fileName);
-    // Key i of light k at i + N k.
-    std::vector<FieldValue> values(N * kMaxKeyLights);
-    std::vector<int> givenOn(N * kMaxKeyLights, 0);  // the line each was given on, 0 when not yet
-    bool otherRoleSeen = false;
-    TextLine line;
-    while (scanner.next(line)) {
-        // Split the line at its first '=': the key before it, the values after it.
-        std::size_t at = 0;
-        std::size_t equals = std::string_view::npos;
-        for (; at < line.tokens.size(); ++at) {
-            equals = line.tokens[at].text.find('=');
-            if (equals != std::string_view::npos) break;
-        }
-        if (at == line.tokens.size())
-            return makeError(ErrorCode::Syntax, scanner.at(line.tokens[0]),
-                             "expected 'key = value', found a line without '=' (" +
-                                 quoted(line.tokens[0].text) +
-                                 (line.tokens.size() > 1 ? " ...)" : ")"));
-        std::string keyText;
-        std::size_t keyWords = 0;
-        for (std::size_t k = 0; k <= at; ++k) {
-            const std::string_view part =
-                k < at ? line.tokens[k].text : line.tokens[k].text.substr(0, equals);
-            if (part.empty()) continue;
-            if (keyWords++ > 0) keyText += ' ';
-            keyText += part;
-        }
-        const SourceLocation keyAt = scanner.at(line.tokens[0]);
-        if (keyWords == 0)
-            return makeError(ErrorCode::Syntax, keyAt, "expected a key before '=', found nothing");
-        if (keyWords > 1)
-            return makeError(ErrorCode::Syntax, keyAt,
-                             "expected one key before '=', found " + quoted(keyText));
-        std::vector<Token> valueTokens;
-        const Token& split = line.tokens[at];
-        if (equals + 1 < split.text.size())
-            valueTokens.push_back({split.text.substr(equals + 1), split.line,
-                                   split.column + static_cast<int>(equals) + 1});
-        valueTokens.insert(valueTokens.end(),
-                           line.tokens.begin() + static_cast<std::ptrdiff_t>(at) + 1,
-                           line.tokens.end());
+// The keys a reader reads (the camera's or the lighting's), and the other reader's, which
+// the same file may hold.
+struct KeyRoles {
+    const char* what;  // "camera", "lighting file"
+    std::span<const KeySpec> keys;
+    const char* otherWhat;
+    std::span<const KeySpec> otherKeys;
+    bool isCamera;
+};
 
-        const auto match = findKey(keys, keyText);
-        if (!match) {
-            if (findKey(otherKeys, keyText)) {
-                otherRoleSeen = true;
-            } else if (sameKey(keyText, kUnusedCameraKey)) {
-                if (isCamera)
-                    diagnostics.note(
-                        keyAt, "ignored " + keyText + ": the camera's axes come from N and V");
-            } else {
-                diagnostics.warn(keyAt, "ignored the unknown key " + quoted(keyText) + " (a " +
-                                            std::string(what) + " has " +
-                                            keyListWithOptional(keys) + "; a " + otherWhat +
-                                            " has " + keyListWithOptional(otherKeys) + ")");
-            }
-            continue;
-        }
-        const KeySpec& key = keys[match->index];
-        const std::size_t slot = match->index + N * static_cast<std::size_t>(match->light);
-        const std::string name = keyName(key, match->light);
-        if (givenOn[slot] != 0)
-            return makeError(ErrorCode::Syntax, keyAt,
-                             "expected each key once, found " + name +
-                                 " again (first given on line " + std::to_string(givenOn[slot]) +
-                                 ")");
-        givenOn[slot] = line.number;
+// A line "key = values", split at its first '=', which may touch the key or the values.
+struct KeyLine {
+    std::string key;
+    SourceLocation keyAt;
+    std::vector<Token> values;
+};
 
-        FieldValue& value = values[slot];
-        value.line = scanner.at(line.number, 1);
-        for (const Token& token : valueTokens) {
-            const auto number = parseReal(token.text);
-            if (!number)
-                return makeError(ErrorCode::Syntax, scanner.at(token),
-                                 "expected a number for " + name + ", " + whyNotNumber(token.text));
-            value.values.push_back(*number);
-            value.where.push_back(scanner.at(token));
-        }
-        const int count = static_cast<int>(value.values.size());
-        const int most = maxCount(key.counts);
-        if (count > most)
-            return makeError(ErrorCode::Syntax, value.where[static_cast<std::size_t>(most)],
-                             "expected " + countText(key.counts) + " for " + name + ", found " +
-                                 std::to_string(count));
-        if (!(key.counts & (1u << count)))
-            return makeError(ErrorCode::Syntax, scanner.afterLast(line),
-                             "expected " + countText(key.counts) + " for " + name + ", found " +
-                                 (count == 0 ? std::string("none") : std::to_string(count)));
+Result<KeyLine> splitKeyLine(const LineScanner& scanner, const TextLine& line) {
+    std::size_t at = 0;
+    std::size_t equals = std::string_view::npos;
+    for (; at < line.tokens.size(); ++at) {
+        equals = line.tokens[at].text.find('=');
+        if (equals != std::string_view::npos) break;
     }
+    if (at == line.tokens.size())
+        return makeError(ErrorCode::Syntax, scanner.at(line.tokens[0]),
+                         "expected 'key = value', found a line without '=' (" +
+                             quoted(line.tokens[0].text) +
+                             (line.tokens.size() > 1 ? " ...)" : ")"));
+    KeyLine result;
+    std::size_t keyWords = 0;
+    for (std::size_t k = 0; k <= at; ++k) {
+        const std::string_view part =
+            k < at ? line.tokens[k].text : line.tokens[k].text.substr(0, equals);
+        if (part.empty()) continue;
+        if (keyWords++ > 0) result.key += ' ';
+        result.key += part;
+    }
+    result.keyAt = scanner.at(line.tokens[0]);
+    if (keyWords == 0)
+        return makeError(ErrorCode::Syntax, result.keyAt,
+                         "expected a key before '=', found nothing");
+    if (keyWords > 1)
+        return makeError(ErrorCode::Syntax, result.keyAt,
+                         "expected one key before '=', found " + quoted(result.key));
+    const Token& split = line.tokens[at];
+    if (equals + 1 < split.text.size())
+        result.values.push_back({split.text.substr(equals + 1), split.line,
+                                 split.column + static_cast<int>(equals) + 1});
+    result.values.insert(result.values.end(),
+                         line.tokens.begin() + static_cast<std::ptrdiff_t>(at) + 1,
+                         line.tokens.end());
+    return result;
+}
 
+// A key the reader does not read: the other role's is skipped, the camera's dummy U with a
+// note, any other with a warning. True for the other role's.
+bool skipKey(const KeyLine& line, const KeyRoles& roles, Diagnostics& diagnostics) {
+    if (findKey(roles.otherKeys, line.key)) return true;
+    if (sameKey(line.key, kUnusedCameraKey)) {
+        if (roles.isCamera)
+            diagnostics.note(line.keyAt,
+                             "ignored " + line.key + ": the camera's axes come from N and V");
+    } else {
+        diagnostics.warn(line.keyAt, "ignored the unknown key " + quoted(line.key) + " (a " +
+                                         std::string(roles.what) + " has " +
+                                         keyListWithOptional(roles.keys) + "; a " +
+                                         roles.otherWhat + " has " +
+                                         keyListWithOptional(roles.otherKeys) + ")");
+    }
+    return false;
+}
+
+// The numbers after the '=' of `line`, as many as `key` accepts; `name` is the key as
+// written for its light ("Pl2").
+Status readKeyNumbers(const LineScanner& scanner, const TextLine& line, const KeyLine& keyLine,
+                      const KeySpec& key, const std::string& name, FieldValue& value) {
+    value.line = scanner.at(line.number, 1);
+    for (const Token& token : keyLine.values) {
+        const auto number = parseReal(token.text);
+        if (!number)
+            return makeError(ErrorCode::Syntax, scanner.at(token),
+                             "expected a number for " + name + ", " + whyNotNumber(token.text));
+        value.values.push_back(*number);
+        value.where.push_back(scanner.at(token));
+    }
+    const int count = static_cast<int>(value.values.size());
+    const int most = maxCount(key.counts);
+    if (count > most)
+        return makeError(ErrorCode::Syntax, value.where[static_cast<std::size_t>(most)],
+                         "expected " + countText(key.counts) + " for " + name + ", found " +
+                             std::to_string(count));
+    if (!(key.counts & (1u << count)))
+        return makeError(ErrorCode::Syntax, scanner.afterLast(line),
+                         "expected " + countText(key.counts) + " for " + name + ", found " +
+                             (count == 0 ? std::string("none") : std::to_string(count)));
+    return success();
+}
+
+// The error for the keys every file has that this one lacks (`givenOn` is 0 for them), if
+// any.
+std::optional<Error> missingKeys(const LineScanner& scanner, const KeyRoles& roles,
+                                 const std::vector<int>& givenOn, bool otherRoleSeen) {
+    const std::span<const KeySpec> keys = roles.keys;
     std::vector<std::string> missing;
     std::size_t required = 0;
-    for (std::size_t i = 0; i < N; ++i) {
+    for (std::size_t i = 0; i < keys.size(); ++i) {
         required += keys[i].required ? 1 : 0;
         if (keys[i].required && givenOn[i] == 0) missing.emplace_back(keys[i].key);
     }
-    if (missing.empty()) return values;
+    if (missing.empty()) return std::nullopt;
     std::string message;
     if (missing.size() == required) {
-        message = "expected the " + std::string(what) + " keys " + keyList(keys) +
-                  ", found none of them" +
-                  (otherRoleSeen ? " (only " + std::string(otherWhat) + " keys)" : std::string());
+        message =
+            "expected the " + std::string(roles.what) + " keys " + keyList(keys) +
+            ", found none of them" +
+            (otherRoleSeen ? " (only " + std::string(roles.otherWhat) + " keys)" : std::string());
     } else if (missing.size() == 1) {
         const KeySpec& key = keys[findKey(keys, missing[0])->index];
         message = "expected a line '" + missing[0] + " = ...' (" + std::string(key.description) +
                   ", " + countText(key.counts) + "), found no " + missing[0];
     } else {
-        message = "expected lines for " + listText(missing) + " (a " + std::string(what) +
+        message = "expected lines for " + listText(missing) + " (a " + std::string(roles.what) +
                   " needs " + keyList(keys) + "), found none";
     }
     return makeError(ErrorCode::MissingData, scanner.endOfInput(), message);
+}
+
+// The keys of one role (camera or lighting) from a key = value file, in the order of `keys`.
+// Keys of the other role are skipped; keys of neither are skipped with a warning.
+Result<std::vector<FieldValue>> readKeyValues(std::string_view text, const std::string& fileName,
+                                              const KeyRoles& roles, Diagnostics& diagnostics) {
+    LineScanner scanner(text, fileName);
+    const std::size_t n = roles.keys.size();
+    // Key i of light k at i + n k.
+    std::vector<FieldValue> values(n * kMaxKeyLights);
+    std::vector<int> givenOn(n * kMaxKeyLights, 0);  // the line each was given on, 0 when not yet
+    bool otherRoleSeen = false;
+    TextLine line;
+    while (scanner.next(line)) {
+        auto keyLine = splitKeyLine(scanner, line);
+        if (!keyLine) return keyLine.error();
+        const auto match = findKey(roles.keys, keyLine->key);
+        if (!match) {
+            otherRoleSeen = skipKey(*keyLine, roles, diagnostics) || otherRoleSeen;
+            continue;
+        }
+        const KeySpec& key = roles.keys[match->index];
+        const std::size_t slot = match->index + n * static_cast<std::size_t>(match->light);
+        const std::string name = keyName(key, match->light);
+        if (givenOn[slot] != 0)
+            return makeError(ErrorCode::Syntax, keyLine->keyAt,
+                             "expected each key once, found " + name +
+                                 " again (first given on line " + std::to_string(givenOn[slot]) +
+                                 ")");
+        givenOn[slot] = line.number;
+        if (Status read = readKeyNumbers(scanner, line, *keyLine, key, name, values[slot]); !read)
+            return read.error();
+    }
+    if (auto missing = missingKeys(scanner, roles, givenOn, otherRoleSeen)) return *missing;
+    return values;
 }
 
 constexpr LightingNames kKeyValueNames = {"Ka", "Iamb", "Kd", "Od", "Ks", "Il", "eta"};
@@ -395,8 +435,8 @@ bool isLightingKey(std::string_view key) {
 Result<CourseCamera> course_io::readKeyValueCamera(std::string_view text,
                                                    const std::string& fileName,
                                                    Diagnostics& diagnostics) {
-    auto f = readKeyValues(text, fileName, "camera", kCameraKeys, "lighting file", kLightingKeys,
-                           true, diagnostics);
+    const KeyRoles roles{"camera", kCameraKeys, "lighting file", kLightingKeys, true};
+    auto f = readKeyValues(text, fileName, roles, diagnostics);
     if (!f) return f.error();
     const auto& v = f.value();
     return makeCamera(v[0], v[1], v[2], {&v[3], 0}, {&v[4], 0}, {&v[5], 0});
@@ -405,8 +445,8 @@ Result<CourseCamera> course_io::readKeyValueCamera(std::string_view text,
 Result<CourseLighting> course_io::readKeyValueLighting(std::string_view text,
                                                        const std::string& fileName,
                                                        Diagnostics& diagnostics) {
-    auto f = readKeyValues(text, fileName, "lighting file", kLightingKeys, "camera", kCameraKeys,
-                           false, diagnostics);
+    const KeyRoles roles{"lighting file", kLightingKeys, "camera", kCameraKeys, false};
+    auto f = readKeyValues(text, fileName, roles, diagnostics);
     if (!f) return f.error();
     return keyValueLighting(f.value(), diagnostics);
 }
