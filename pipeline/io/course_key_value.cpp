@@ -290,135 +290,176 @@ Result<std::vector<FieldValue>> readKeyValues(std::string_view text, const std::
 
 constexpr LightingNames kKeyValueNames = {"Ka", "Iamb", "Kd", "Od", "Ks", "Il", "eta"};
 
-// A key = value lighting file's values (readKeyValues over kLightingKeys): the course's keys,
-// then the lecture slides' (emission, two-sided, Blinn-Phong, more lights, w, attenuation,
-// spots), each checked against the range OpenGL allows it.
-Result<CourseLighting> keyValueLighting(const std::vector<FieldValue>& v,
-                                        Diagnostics& diagnostics) {
-    constexpr std::size_t N = kLightingKeyCount;
-    const auto at = [&](std::size_t key, int light) -> const FieldValue& {
-        return v[key + N * static_cast<std::size_t>(light)];
-    };
-    const auto given = [&](std::size_t key, int light) { return !at(key, light).values.empty(); };
-    const auto name = [](std::size_t key, int light) { return keyName(kLightingKeys[key], light); };
+// A key = value lighting file's values (readKeyValues over kLightingKeys), by key and light.
+class LightingValues {
+public:
+    explicit LightingValues(const std::vector<FieldValue>& values) : m_values(values) {}
+
+    const FieldValue& at(std::size_t key, int light) const {
+        return m_values[key + kLightingKeyCount * static_cast<std::size_t>(light)];
+    }
+    bool given(std::size_t key, int light) const { return !at(key, light).values.empty(); }
+    static std::string name(std::size_t key, int light) {
+        return keyName(kLightingKeys[key], light);
+    }
+
+private:
+    const std::vector<FieldValue>& m_values;
+};
+
+// The course's keys, and the lights: Pl and Il, then lights 2 ... numbered without gaps,
+// each with its Pl and Il.
+Result<LightingFields> courseFields(const LightingValues& v) {
     LightingFields parts;
-    parts.ia = &v[kIamb];
-    parts.ka = &v[kKa];
-    parts.kd = &v[kKd];
-    parts.od = &v[kOd];
-    parts.ks = &v[kKs];
-    parts.n = &v[kEta];
-    parts.lights = {{&v[kPl], &v[kIl]}};
-    // Lights 2 ... are numbered without gaps, each with its Pl and Il.
+    parts.ia = &v.at(kIamb, 0);
+    parts.ka = &v.at(kKa, 0);
+    parts.kd = &v.at(kKd, 0);
+    parts.od = &v.at(kOd, 0);
+    parts.ks = &v.at(kKs, 0);
+    parts.n = &v.at(kEta, 0);
+    parts.lights = {{&v.at(kPl, 0), &v.at(kIl, 0)}};
     for (int k = 1; k < kMaxKeyLights; ++k) {
         std::optional<std::size_t> first;
-        for (std::size_t key = 0; key < N; ++key)
-            if (kLightingKeys[key].perLight && given(key, k) &&
-                (!first || at(key, k).line.line < at(*first, k).line.line))
+        for (std::size_t key = 0; key < kLightingKeyCount; ++key)
+            if (kLightingKeys[key].perLight && v.given(key, k) &&
+                (!first || v.at(key, k).line.line < v.at(*first, k).line.line))
                 first = key;
         if (!first) continue;
         const int expected = static_cast<int>(parts.lights.size());
         if (k != expected)
-            return makeError(ErrorCode::Syntax, at(*first, k).line,
+            return makeError(ErrorCode::Syntax, v.at(*first, k).line,
                              "expected light " + std::to_string(expected + 1) + " (" +
-                                 name(kPl, expected) + ", " + name(kIl, expected) +
+                                 v.name(kPl, expected) + ", " + v.name(kIl, expected) +
                                  ") before light " + std::to_string(k + 1) + ", found " +
-                                 name(*first, k) + " (lights are numbered without gaps)");
+                                 v.name(*first, k) + " (lights are numbered without gaps)");
         for (const std::size_t key : {std::size_t(kPl), std::size_t(kIl)})
-            if (!given(key, k))
-                return makeError(ErrorCode::MissingData, at(*first, k).line,
-                                 "expected a line '" + name(key, k) + " = ...' (" +
+            if (!v.given(key, k))
+                return makeError(ErrorCode::MissingData, v.at(*first, k).line,
+                                 "expected a line '" + v.name(key, k) + " = ...' (" +
                                      std::string(kLightingKeys[key].description) + " of light " +
-                                     std::to_string(k + 1) + "), found " + name(*first, k) +
+                                     std::to_string(k + 1) + "), found " + v.name(*first, k) +
                                      " without it");
-        parts.lights.emplace_back(&at(kPl, k), &at(kIl, k));
+        parts.lights.emplace_back(&v.at(kPl, k), &v.at(kIl, k));
     }
-    CourseLighting lighting = makeLighting(parts, kKeyValueNames, diagnostics);
+    return parts;
+}
 
-    const auto flag = [&](std::size_t key) -> Result<std::optional<bool>> {
-        if (!given(key, 0)) return std::optional<bool>();
-        const double value = at(key, 0).values[0];
-        if (value != 0.0 && value != 1.0)
-            return makeError(
-                ErrorCode::Range, at(key, 0).where[0],
-                "expected 1 or 0 for " + name(key, 0) + ", found " + formatNumber(value));
-        return std::optional<bool>(value == 1.0);
-    };
-    auto twoSided = flag(kTwoSided);
+// A flag of the lecture slides, 1 or 0, if given.
+Result<std::optional<bool>> readFlag(const LightingValues& v, std::size_t key) {
+    if (!v.given(key, 0)) return std::optional<bool>();
+    const double value = v.at(key, 0).values[0];
+    if (value != 0.0 && value != 1.0)
+        return makeError(
+            ErrorCode::Range, v.at(key, 0).where[0],
+            "expected 1 or 0 for " + v.name(key, 0) + ", found " + formatNumber(value));
+    return std::optional<bool>(value == 1.0);
+}
+
+// The lecture slides' keys for the whole lighting: two_sided, blinn and Ke.
+Status readSlidesLighting(const LightingValues& v, CourseLighting& lighting,
+                          Diagnostics& diagnostics) {
+    auto twoSided = readFlag(v, kTwoSided);
     if (!twoSided) return twoSided.error();
     if (twoSided.value()) lighting.twoSided = *twoSided.value();
-    auto blinn = flag(kBlinn);
+    auto blinn = readFlag(v, kBlinn);
     if (!blinn) return blinn.error();
     if (blinn.value() && *blinn.value()) lighting.specular = SpecularModel::BlinnPhong;
-    if (given(kKe, 0)) {
-        lighting.material.emission = rgbOf(at(kKe, 0));
-        checkRange(at(kKe, 0), "Ke", "", 0.0, 255.0, "[0, 255]", diagnostics);
+    if (v.given(kKe, 0)) {
+        lighting.material.emission = rgbOf(v.at(kKe, 0));
+        checkRange(v.at(kKe, 0), "Ke", "", 0.0, 255.0, "[0, 255]", diagnostics);
     }
+    return success();
+}
 
-    for (std::size_t k = 0; k < lighting.lights.size(); ++k) {
-        const int light = static_cast<int>(k);
-        Light& l = lighting.lights[k];
-        const FieldValue& pl = at(kPl, light);
-        if (pl.values.size() == 4) {
-            // Homogeneous, as GL_POSITION: w = 0 a direction toward the light, otherwise the
-            // point (x/w, y/w, z/w).
-            const double w = pl.values[3];
-            l.pWorld = w == 0.0 ? dvec4(vec3Of(pl), 0.0) : dvec4(vec3Of(pl) / w, 1.0);
-        }
-        if (given(kAtten, light)) {
-            const FieldValue& a = at(kAtten, light);
-            for (std::size_t i = 0; i < 3; ++i)
-                if (!(a.values[i] >= 0.0))
-                    return makeError(ErrorCode::Range, a.where[i],
-                                     "expected " + name(kAtten, light) +
-                                         " coefficients of 0 or more (kc kl kq), found " +
-                                         formatNumber(a.values[i]));
-            if (a.values[0] == 0.0 && a.values[1] == 0.0 && a.values[2] == 0.0)
-                return makeError(ErrorCode::Range, a.where[0],
-                                 "expected " + name(kAtten, light) +
-                                     " with a coefficient above 0, found 0 0 0 (1 / 0 light)");
-            l.attenuation = rgbOf(a);
-            if (l.pWorld.w == 0.0)
-                diagnostics.warn(a.line, name(kAtten, light) +
-                                             " has no effect: a directional light (w = 0) is "
-                                             "not attenuated");
-        }
-        if (given(kSpotDir, light)) {
-            const FieldValue& d = at(kSpotDir, light);
-            if (vec3Of(d) == dvec3(0.0))
-                return makeError(
-                    ErrorCode::Range, d.where[0],
-                    "expected a spot direction other than 0 0 0 for " + name(kSpotDir, light));
-            l.spotDirection = vec3Of(d);
-        }
-        if (given(kSpotCutoff, light)) {
-            const FieldValue& c = at(kSpotCutoff, light);
-            const double cutoff = c.values[0];
-            if (!((cutoff >= 0.0 && cutoff <= 90.0) || cutoff == 180.0))
-                return makeError(ErrorCode::Range, c.where[0],
-                                 "expected " + name(kSpotCutoff, light) +
-                                     " from 0 to 90 degrees, or 180 (not a spot), found " +
-                                     formatNumber(cutoff));
-            l.spotCutoff = static_cast<float>(cutoff);
-            if (l.spot() && !given(kSpotDir, light))
-                diagnostics.note(c.line, name(kSpotCutoff, light) + ": no " +
-                                             name(kSpotDir, light) +
-                                             ", the spot points along -z (OpenGL's default)");
-        }
-        if (given(kSpotExp, light)) {
-            const FieldValue& e = at(kSpotExp, light);
-            if (!(e.values[0] >= 0.0 && e.values[0] <= 128.0))
-                return makeError(ErrorCode::Range, e.where[0],
-                                 "expected " + name(kSpotExp, light) + " from 0 to 128, found " +
-                                     formatNumber(e.values[0]));
-            l.spotExponent = static_cast<float>(e.values[0]);
-        }
-        if (!l.spot() && (given(kSpotDir, light) || given(kSpotExp, light)))
-            diagnostics.warn(at(given(kSpotDir, light) ? kSpotDir : kSpotExp, light).line,
-                             "light " + std::to_string(k + 1) + " is not a spot without " +
-                                 name(kSpotCutoff, light) +
-                                 " (0 to 90 degrees): its spot direction and exponent are unused");
+// atten of one light: kc kl kq, none negative, not all 0.
+Status readAttenuation(const LightingValues& v, int light, Light& l, Diagnostics& diagnostics) {
+    if (!v.given(kAtten, light)) return success();
+    const FieldValue& a = v.at(kAtten, light);
+    const std::string name = v.name(kAtten, light);
+    for (std::size_t i = 0; i < 3; ++i)
+        if (!(a.values[i] >= 0.0))
+            return makeError(ErrorCode::Range, a.where[i],
+                             "expected " + name + " coefficients of 0 or more (kc kl kq), found " +
+                                 formatNumber(a.values[i]));
+    if (a.values[0] == 0.0 && a.values[1] == 0.0 && a.values[2] == 0.0)
+        return makeError(
+            ErrorCode::Range, a.where[0],
+            "expected " + name + " with a coefficient above 0, found 0 0 0 (1 / 0 light)");
+    l.attenuation = rgbOf(a);
+    if (l.pWorld.w == 0.0)
+        diagnostics.warn(a.line, name +
+                                     " has no effect: a directional light (w = 0) is "
+                                     "not attenuated");
+    return success();
+}
+
+// spot_dir, spot_cutoff and spot_exp of one light, in the ranges OpenGL allows.
+Status readSpot(const LightingValues& v, int light, Light& l, Diagnostics& diagnostics) {
+    if (v.given(kSpotDir, light)) {
+        const FieldValue& d = v.at(kSpotDir, light);
+        if (vec3Of(d) == dvec3(0.0))
+            return makeError(
+                ErrorCode::Range, d.where[0],
+                "expected a spot direction other than 0 0 0 for " + v.name(kSpotDir, light));
+        l.spotDirection = vec3Of(d);
     }
+    if (v.given(kSpotCutoff, light)) {
+        const FieldValue& c = v.at(kSpotCutoff, light);
+        const double cutoff = c.values[0];
+        if (!((cutoff >= 0.0 && cutoff <= 90.0) || cutoff == 180.0))
+            return makeError(ErrorCode::Range, c.where[0],
+                             "expected " + v.name(kSpotCutoff, light) +
+                                 " from 0 to 90 degrees, or 180 (not a spot), found " +
+                                 formatNumber(cutoff));
+        l.spotCutoff = static_cast<float>(cutoff);
+        if (l.spot() && !v.given(kSpotDir, light))
+            diagnostics.note(c.line, v.name(kSpotCutoff, light) + ": no " +
+                                         v.name(kSpotDir, light) +
+                                         ", the spot points along -z (OpenGL's default)");
+    }
+    if (v.given(kSpotExp, light)) {
+        const FieldValue& e = v.at(kSpotExp, light);
+        if (!(e.values[0] >= 0.0 && e.values[0] <= 128.0))
+            return makeError(ErrorCode::Range, e.where[0],
+                             "expected " + v.name(kSpotExp, light) + " from 0 to 128, found " +
+                                 formatNumber(e.values[0]));
+        l.spotExponent = static_cast<float>(e.values[0]);
+    }
+    if (!l.spot() && (v.given(kSpotDir, light) || v.given(kSpotExp, light)))
+        diagnostics.warn(v.at(v.given(kSpotDir, light) ? kSpotDir : kSpotExp, light).line,
+                         "light " + std::to_string(light + 1) + " is not a spot without " +
+                             v.name(kSpotCutoff, light) +
+                             " (0 to 90 degrees): its spot direction and exponent are unused");
+    return success();
+}
+
+// The lecture slides' keys of one light: w, attenuation and spot.
+Status readSlidesLight(const LightingValues& v, int light, Light& l, Diagnostics& diagnostics) {
+    const FieldValue& pl = v.at(kPl, light);
+    if (pl.values.size() == 4) {
+        // Homogeneous, as GL_POSITION: w = 0 a direction toward the light, otherwise the
+        // point (x/w, y/w, z/w).
+        const double w = pl.values[3];
+        l.pWorld = w == 0.0 ? dvec4(vec3Of(pl), 0.0) : dvec4(vec3Of(pl) / w, 1.0);
+    }
+    if (Status read = readAttenuation(v, light, l, diagnostics); !read) return read;
+    return readSpot(v, light, l, diagnostics);
+}
+
+// A key = value lighting file's values (readKeyValues over kLightingKeys): the course's keys,
+// then the lecture slides' (emission, two-sided, Blinn-Phong, more lights, w, attenuation,
+// spots), each checked against the range OpenGL allows it.
+Result<CourseLighting> keyValueLighting(const std::vector<FieldValue>& values,
+                                        Diagnostics& diagnostics) {
+    const LightingValues v(values);
+    auto parts = courseFields(v);
+    if (!parts) return parts.error();
+    CourseLighting lighting = makeLighting(*parts, kKeyValueNames, diagnostics);
+    if (Status read = readSlidesLighting(v, lighting, diagnostics); !read) return read.error();
+    for (std::size_t k = 0; k < lighting.lights.size(); ++k)
+        if (Status read = readSlidesLight(v, static_cast<int>(k), lighting.lights[k], diagnostics);
+            !read)
+            return read.error();
     return lighting;
 }
 
