@@ -173,8 +173,41 @@ Result<std::string> writeCameraFile(const CourseCamera& camera, CameraLayout lay
                       "value");
 }
 
-Result<std::string> writeLightingFile(const CourseLighting& lighting, LightingLayout layout,
-                                      std::string_view previous) {
+namespace {
+
+// What only key = value files hold (the lecture slides' lighting, seed 003): the first such
+// feature the lighting uses, or "" when it uses none.
+std::string beyondCourse(const CourseLighting& lighting) {
+    std::string beyond;
+    const auto use = [&](bool used, const char* what) {
+        if (used && beyond.empty()) beyond = what;
+    };
+    const Material& m = lighting.material;
+    use(m.emission != vec3(0.0f), "an emission (Ke)");
+    use(!lighting.twoSided, "one-sided lighting");
+    use(lighting.specular != SpecularModel::Phong, "Blinn-Phong highlights");
+    for (const Light& light : lighting.lights) {
+        use(light.pWorld.w != 1.0, "a directional light (w = 0)");
+        use(light.attenuation != vec3(1.0f, 0.0f, 0.0f), "an attenuated light");
+        use(light.spot(), "a spot light");
+    }
+    return beyond;
+}
+
+bool isFiniteLighting(const CourseLighting& lighting) {
+    const Material& m = lighting.material;
+    bool finite = isFinite(vec3(m.ka, m.ks, m.shininess)) && isFinite(m.kd) && isFinite(m.od) &&
+                  isFinite(lighting.ambientIntensity) && isFinite(m.emission);
+    for (const Light& light : lighting.lights)
+        finite = finite && isFinite(dvec3(light.pWorld)) && isFinite(light.intensity) &&
+                 isFinite(light.attenuation) && isFinite(light.spotDirection) &&
+                 isFinite(vec3(light.spotCutoff, light.spotExponent, 0.0f));
+    return finite;
+}
+
+// Why the lighting cannot be written in `layout`, if it cannot: the layout's number of
+// lights, what only key = value files hold, values that are not finite.
+std::optional<Error> unwritableLighting(const CourseLighting& lighting, LightingLayout layout) {
     if (layout == LightingLayout::Auto)
         return writeError(ErrorCode::Usage,
                           "cannot write lighting in the layout 'auto': choose UFPE, UFPE "
@@ -198,35 +231,62 @@ Result<std::string> writeLightingFile(const CourseLighting& lighting, LightingLa
                               " lights in a key = value file, which holds " +
                               std::to_string(kMaxKeyValueLights) + " at most (Pl to " +
                               lightKeyName("Pl", kMaxKeyValueLights - 1) + ")");
-    const Material& m = lighting.material;
-    bool finite = isFinite(vec3(m.ka, m.ks, m.shininess)) && isFinite(m.kd) && isFinite(m.od) &&
-                  isFinite(lighting.ambientIntensity) && isFinite(m.emission);
-    // What only key = value files hold (the lecture slides' lighting, seed 003).
-    std::string beyondCourse;
-    const auto beyond = [&](bool used, const char* what) {
-        if (used && beyondCourse.empty()) beyondCourse = what;
-    };
-    beyond(m.emission != vec3(0.0f), "an emission (Ke)");
-    beyond(!lighting.twoSided, "one-sided lighting");
-    beyond(lighting.specular != SpecularModel::Phong, "Blinn-Phong highlights");
-    for (const Light& light : lighting.lights) {
-        beyond(light.pWorld.w != 1.0, "a directional light (w = 0)");
-        beyond(light.attenuation != vec3(1.0f, 0.0f, 0.0f), "an attenuated light");
-        beyond(light.spot(), "a spot light");
-        finite = finite && isFinite(dvec3(light.pWorld)) && isFinite(light.intensity) &&
-                 isFinite(light.attenuation) && isFinite(light.spotDirection) &&
-                 isFinite(vec3(light.spotCutoff, light.spotExponent, 0.0f));
-    }
-    if (!keyValue && !beyondCourse.empty())
+    const std::string beyond = beyondCourse(lighting);
+    if (!keyValue && !beyond.empty())
         return writeError(ErrorCode::Unsupported,
-                          "cannot write " + beyondCourse + " in the layout " +
+                          "cannot write " + beyond + " in the layout " +
                               lightingLayoutDescription(layout) +
                               ", which holds the course's point lights only: choose key = value");
-    if (!finite)
+    if (!isFiniteLighting(lighting))
         return writeError(ErrorCode::Range,
                           "cannot write the lighting: its values must be finite numbers (a "
                           "course file cannot hold nan or inf)");
+    return std::nullopt;
+}
 
+// The entries of a key = value lighting file: the course's keys in the course's order, then
+// the slides' (only when used).
+std::vector<Entry> lightingEntries(const CourseLighting& lighting) {
+    const Material& m = lighting.material;
+    const auto position = [](const Light& light) {
+        return light.pWorld.w == 1.0 ? numbers(dvec3(light.pWorld)) : numbers(light.pWorld);
+    };
+    std::vector<Entry> entries = {{"Iamb", numbers(lighting.ambientIntensity)},
+                                  {"Ka", formatExact(m.ka)},
+                                  {"Il", numbers(lighting.lights[0].intensity)},
+                                  {"Pl", position(lighting.lights[0])},
+                                  {"Kd", numbers(m.kd)},
+                                  {"Od", numbers(m.od)},
+                                  {"Ks", formatExact(m.ks)},
+                                  {"eta", formatExact(m.shininess)}};
+    if (m.emission != vec3(0.0f)) entries.push_back({"Ke", numbers(m.emission)});
+    if (!lighting.twoSided) entries.push_back({"two_sided", "0"});
+    if (lighting.specular == SpecularModel::BlinnPhong) entries.push_back({"blinn", "1"});
+    for (std::size_t k = 0; k < lighting.lights.size(); ++k) {
+        const Light& light = lighting.lights[k];
+        const auto key = [k](std::string_view base) { return lightKeyName(base, k); };
+        if (k > 0) {
+            entries.push_back({key("Il"), numbers(light.intensity)});
+            entries.push_back({key("Pl"), position(light)});
+        }
+        if (light.attenuation != vec3(1.0f, 0.0f, 0.0f))
+            entries.push_back({key("atten"), numbers(light.attenuation)});
+        if (light.spot()) {
+            entries.push_back({key("spot_dir"), numbers(light.spotDirection)});
+            entries.push_back({key("spot_cutoff"), formatExact(light.spotCutoff)});
+            if (light.spotExponent != 0.0f)
+                entries.push_back({key("spot_exp"), formatExact(light.spotExponent)});
+        }
+    }
+    return entries;
+}
+
+}  // namespace
+
+Result<std::string> writeLightingFile(const CourseLighting& lighting, LightingLayout layout,
+                                      std::string_view previous) {
+    if (auto error = unwritableLighting(lighting, layout)) return *error;
+    const Material& m = lighting.material;
     const std::string ka = formatExact(m.ka), ia = numbers(lighting.ambientIntensity),
                       od = numbers(m.od), ks = formatExact(m.ks), n = formatExact(m.shininess);
     const std::string pl = numbers(dvec3(lighting.lights[0].pWorld)),
@@ -236,8 +296,8 @@ Result<std::string> writeLightingFile(const CourseLighting& lighting, LightingLa
         case LightingLayout::Ufpe:
             return joinLines({pl, ka, ia, scalarOrTriple(m.kd), od, ks, il, n}, eol);
         case LightingLayout::UfpeMulti: {
-            std::vector<std::string> lines = {ka, ia, scalarOrTriple(m.kd), od,
-                                              ks, n,  std::to_string(count)};
+            std::vector<std::string> lines = {
+                ka, ia, scalarOrTriple(m.kd), od, ks, n, std::to_string(lighting.lights.size())};
             for (const Light& light : lighting.lights) {
                 lines.push_back(numbers(dvec3(light.pWorld)));
                 lines.push_back(numbers(light.intensity));
@@ -246,35 +306,8 @@ Result<std::string> writeLightingFile(const CourseLighting& lighting, LightingLa
         }
         case LightingLayout::Ufrpe:
             return joinLines({ia, ka, il, pl, numbers(m.kd), od, ks, n}, eol);
-        case LightingLayout::KeyValue: {
-            // The course's keys in the course's order, then the slides' (only when used).
-            const auto position = [](const Light& light) {
-                return light.pWorld.w == 1.0 ? numbers(dvec3(light.pWorld)) : numbers(light.pWorld);
-            };
-            std::vector<Entry> entries = {
-                {"Iamb", ia},          {"Ka", ka}, {"Il", il}, {"Pl", position(lighting.lights[0])},
-                {"Kd", numbers(m.kd)}, {"Od", od}, {"Ks", ks}, {"eta", n}};
-            if (m.emission != vec3(0.0f)) entries.push_back({"Ke", numbers(m.emission)});
-            if (!lighting.twoSided) entries.push_back({"two_sided", "0"});
-            if (lighting.specular == SpecularModel::BlinnPhong) entries.push_back({"blinn", "1"});
-            for (std::size_t k = 0; k < count; ++k) {
-                const Light& light = lighting.lights[k];
-                const auto key = [k](std::string_view base) { return lightKeyName(base, k); };
-                if (k > 0) {
-                    entries.push_back({key("Il"), numbers(light.intensity)});
-                    entries.push_back({key("Pl"), position(light)});
-                }
-                if (light.attenuation != vec3(1.0f, 0.0f, 0.0f))
-                    entries.push_back({key("atten"), numbers(light.attenuation)});
-                if (light.spot()) {
-                    entries.push_back({key("spot_dir"), numbers(light.spotDirection)});
-                    entries.push_back({key("spot_cutoff"), formatExact(light.spotCutoff)});
-                    if (light.spotExponent != 0.0f)
-                        entries.push_back({key("spot_exp"), formatExact(light.spotExponent)});
-                }
-            }
-            return writeKeyValues(entries, previous, isLightingKey);
-        }
+        case LightingLayout::KeyValue:
+            return writeKeyValues(lightingEntries(lighting), previous, isLightingKey);
         case LightingLayout::Auto:
             break;
     }
