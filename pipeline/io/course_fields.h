@@ -1,7 +1,7 @@
 // What the course readers share, internal to io/ (other folders include course_readers.h):
 // the number tokens and their messages, the field lines of the line layouts, the course's
-// camera and lighting built from fields, and the tokens of .byu files. Defined in
-// course_fields.cpp, except the last section, which one family's file offers another.
+// camera and lighting built from fields, and the tokens of .byu files, all defined in
+// course_fields.cpp; then the readers one family's file calls in another's.
 #pragma once
 
 #include <span>
