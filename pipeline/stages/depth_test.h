@@ -120,6 +120,32 @@ struct TrianglePlane {
     }
 };
 
+inline TrianglePlane::TrianglePlane(const Projection& projection, std::size_t t, bool inverse)
+    : reciprocal(inverse) {
+    const ScreenTriangle& tri = projection.triangles[t];
+    const DrawProjection& draw = projection.draws[tri.draw];
+    const std::array<dvec2, 3> p = screenVertices(projection, tri);
+    const auto depthOf = [&](std::uint32_t v) {
+        return reciprocal ? 1.0f / draw.depth[v] : draw.depth[v];
+    };
+    z0 = depthOf(tri.v[0]);
+    dz1 = depthOf(tri.v[1]) - z0;
+    dz2 = depthOf(tri.v[2]) - z0;
+    p0 = p[0];
+    e1 = p[1] - p[0];
+    e2 = p[2] - p[0];
+    area = e1.x * e2.y - e1.y * e2.x;
+    betaDx = e2.y / area;
+    gammaDx = -e1.y / area;
+}
+
+inline void TrianglePlane::spanStart(std::int32_t xBegin, std::int32_t y, double offset,
+                                     double& beta0, double& gamma0) const {
+    const dvec2 s0 = dvec2(xBegin + offset, y + offset) - p0;
+    beta0 = (s0.x * e2.y - s0.y * e2.x) / area;
+    gamma0 = (e1.x * s0.y - e1.y * s0.x) / area;
+}
+
 // Pixel x of the span that starts at pixel xBegin on row y of projected triangle t, as the
 // depth test works it out (xBegin must be where scan conversion starts the span for the
 // bits to agree).

@@ -4,15 +4,6 @@
 
 namespace rl {
 
-bool unitNormal(const dvec4& q1, const dvec4& q2, const dvec4& q3, dvec3& n) {
-    const dvec3 p1 = cartesian(q1);
-    const dvec3 cross = glm::cross(cartesian(q2) - p1, cartesian(q3) - p1);
-    const double length = glm::length(cross);
-    if (!(length > std::numeric_limits<double>::min()) || !isFinite(length)) return false;
-    n = cross / length;
-    return true;
-}
-
 NormalsRead normalsRead(const Draw& draw) {
     const bool phong = draw.shading == ShadingModel::Phong;
     return NormalsRead{

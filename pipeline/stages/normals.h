@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -52,7 +53,14 @@ NormalsRead normalsRead(const Draw& draw);
 
 // The triangle's unit normal (P2 - P1) x (P3 - P1) / |...| of three points given in
 // homogeneous coordinates (each divided by its w), into n; false when it is degenerate.
-bool unitNormal(const dvec4& q1, const dvec4& q2, const dvec4& q3, dvec3& n);
+inline bool unitNormal(const dvec4& q1, const dvec4& q2, const dvec4& q3, dvec3& n) {
+    const dvec3 p1 = cartesian(q1);
+    const dvec3 cross = glm::cross(cartesian(q2) - p1, cartesian(q3) - p1);
+    const double length = glm::length(cross);
+    if (!(length > std::numeric_limits<double>::min()) || !isFinite(length)) return false;
+    n = cross / length;
+    return true;
+}
 
 struct NormalsInput {
     const Scene& scene;

@@ -25,34 +25,6 @@ dmat4 clipFromViewOf(const Scene& scene, const Draw& draw) {
     return dmat4(1.0);
 }
 
-namespace {
-
-// A screen coordinate on the rules' sub-pixel grid.
-// grid = 2^subpixelBits and cell = 1 / grid, worked out once by the caller: both are powers
-// of two, so multiplying by cell gives the very bits dividing by grid would, without a
-// division.
-double snap(double coordinate, const RasterRules& rules, double grid, double cell) {
-    switch (rules.snap) {
-        case RasterRules::VertexSnap::Truncate:
-            return std::trunc(coordinate * grid) * cell;
-        case RasterRules::VertexSnap::Nearest:
-            return std::floor(coordinate * grid + 0.5) * cell;
-    }
-    return coordinate;
-}
-
-bool finite2(const dvec2& p) {
-    return isFinite(p.x) && isFinite(p.y);
-}
-
-// Twice the signed area in pixels (y down): negative when the triangle is counter-clockwise
-// as it appears on the screen.
-double screenArea(const dvec2& a, const dvec2& b, const dvec2& c) {
-    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-}
-
-}  // namespace
-
 // The counter of a projection that counts the triangles of a fate.
 std::size_t& tally(Projection& out, TriangleFate fate) {
     switch (fate) {
@@ -172,49 +144,6 @@ void DrawProjector::resizeVertices(std::size_t n) {
     m_proj.inFront.resize(n);
 }
 
-// Steps 3 and 4: pNdc = pClip.xy / pClip.w, then the seed's x = (int)((pNdc.x + 1) width/2),
-// y = (int)((1 - pNdc.y) height/2), snapped to the rules' grid.
-void DrawProjector::projectVertex(std::uint32_t i) {
-    const dvec4& pClip = m_proj.pClip[i];
-    const dvec2 pNdc = dvec2(pClip) / pClip.w;
-    const dvec2 exact =
-        screenFromNdc(pNdc, m_scene.width, m_scene.height, m_scene.conventions.ndcYUp);
-    if (m_keepExact) {
-        m_proj.pNdc[i] = pNdc;
-        m_proj.pScreenExact[i] = exact;
-    }
-    const RasterRules& rules = m_scene.rules;
-    dvec2 snapped(snap(exact.x, rules, m_grid, m_cell), snap(exact.y, rules, m_grid, m_cell));
-    // An infinite coordinate (w = 0 under the plain divide) stays infinite, so the triangle is
-    // dropped as NonFinite. Clipping keeps drawn vertices inside the guard band; only the
-    // plain divide (which does not clip across the eye plane) can bring one from beyond it.
-    if (finite2(snapped) &&
-        (std::abs(snapped.x) > kGuardBand || std::abs(snapped.y) > kGuardBand)) {
-        snapped = glm::clamp(snapped, dvec2(-kGuardBand), dvec2(kGuardBand));
-        if (!m_pulledIn.empty()) m_pulledIn[i] = 1;
-    }
-    m_proj.pScreen[i] = snapped;
-    m_proj.depth[i] = static_cast<float>(
-        m_scene.conventions.depth == DepthSource::ViewZ ? m_proj.pView[i].z : pClip.z / pClip.w);
-    m_proj.inFront[i] = 1;
-}
-
-void DrawProjector::projectIfInFront(std::uint32_t i) {
-    if (m_out.mode != NearPlane::Mode::Clip || m_proj.pClip[i].w >= m_out.nearW) {
-        projectVertex(i);
-        return;
-    }
-    m_proj.pScreen[i] = dvec2(0.0);
-    m_proj.depth[i] = 0.0f;
-    m_proj.inFront[i] = 0;
-}
-
-bool DrawProjector::facesAway(const std::array<std::uint32_t, 3>& tri) const {
-    // n . P' > 0 in view space, with n by the right-hand rule turned by the surface's winding.
-    const dvec3 a(m_proj.pView[tri[0]]), b(m_proj.pView[tri[1]]), c(m_proj.pView[tri[2]]);
-    return double(m_hiddenWinding) * glm::dot(glm::cross(b - a, c - a), a) > 0.0;
-}
-
 void DrawProjector::choosePlanes() {
     m_planes.clear();
     for (std::size_t k = 0; k < m_nearPlane; ++k) m_planes.push_back(k);
@@ -223,39 +152,10 @@ void DrawProjector::choosePlanes() {
         for (std::size_t k = 1; k <= 4; ++k) m_planes.push_back(m_nearPlane + k);
 }
 
-double DrawProjector::distance(std::size_t plane, std::uint32_t v) const {
-    // The clip planes are planes of view space; the near plane and the guard band, four
-    // planes |x| <= gx |w|, |y| <= gy |w| that keep every vertex within 2^28 pixels of the
-    // image without bending an edge, planes of clip space (side: the sign of the triangle's w).
-    if (plane < m_nearPlane) return glm::dot(m_draw.clipPlanes[plane], m_proj.pView[v]);
-    const dvec4& c = m_proj.pClip[v];
-    switch (plane - m_nearPlane) {
-        case 0:
-            return c.w - m_out.nearW;
-        case 1:
-            return m_side * m_gx * c.w - c.x;
-        case 2:
-            return m_side * m_gx * c.w + c.x;
-        case 3:
-            return m_side * m_gy * c.w - c.y;
-        default:
-            return m_side * m_gy * c.w + c.y;
-    }
-}
-
 TriangleFate DrawProjector::outsideFate(std::size_t plane) const {
     return plane == m_nearPlane  ? TriangleFate::Behind
            : plane < m_nearPlane ? TriangleFate::ClippedAway
                                  : TriangleFate::BeyondGuardBand;  // far off the image
-}
-
-bool DrawProjector::culled(const std::array<std::uint32_t, 3>& v) const {
-    const auto& s = m_proj.pScreen;
-    return m_draw.cull && !(screenArea(s[v[0]], s[v[1]], s[v[2]]) < 0.0);
-}
-
-bool DrawProjector::finite(std::uint32_t v) const {
-    return finite2(m_proj.pScreen[v]) && std::isfinite(m_proj.depth[v]);
 }
 
 // A vertex where the edge from a (inside) to b (outside) crosses a plane. Always computed from
