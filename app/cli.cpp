@@ -27,6 +27,7 @@ QString generalHelp() {
         "  accuracy                 Error against run time of each mode, against an exact\n"
         "                           ray-cast reference (table, plot, heat maps).\n"
         "  generate-default-scene   Write the default scene's three course files.\n"
+        "  generate-lessons         Write the shipped lessons' course and lesson files.\n"
         "\n"
         "Run 'rasterlab-cli <command> --help' for a command's options.\n");
 }
@@ -59,9 +60,11 @@ int runCli(const QStringList& arguments, QTextStream& out, QTextStream& err) {
             code = cli::runCommandFile(rest, out, err);
         else if (command == lit("generate-default-scene"))
             code = cli::runGenerateDefaultScene(rest, out, err);
+        else if (command == lit("generate-lessons"))
+            code = cli::runGenerateLessons(rest, out, err);
         else
             code = cli::usageError(err, lit("unknown command '%1' (commands: render, run, bench, "
-                                            "accuracy, generate-default-scene)")
+                                            "accuracy, generate-default-scene, generate-lessons)")
                                             .arg(command));
     } catch (const std::bad_alloc&) {
         // The only exception the pipeline can meet: a frame larger than the memory.

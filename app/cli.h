@@ -4,6 +4,7 @@
 //   bench                   time a scene's frames, per stage, with the memory used
 //   accuracy                error against run time of each mode, against an exact reference
 //   generate-default-scene  write the default scene's three course files
+//   generate-lessons        write the shipped lessons' course files and lesson files
 // Exit status: 0 on success, 1 when an input is bad (one "file:line:col: message" line on
 // stderr), 2 when the command line is wrong. Warnings go to stderr; what was written, to
 // stdout. The command line and its output are in English and stable, for scripts.

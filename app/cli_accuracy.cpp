@@ -202,6 +202,7 @@ int runAccuracy(const QStringList& arguments, QTextStream& out, QTextStream& err
             err, lit("unexpected argument '%1'").arg(parser.positionalArguments().first()));
     rl::CourseSceneSettings settings;
     if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
+    sceneOptions.lessonSettings(parser, sceneName, settings);
     const QString outputFormat = parser.value(format);
     if (outputFormat != lit("md") && outputFormat != lit("csv") && outputFormat != lit("json"))
         return usageError(err,

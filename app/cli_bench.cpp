@@ -185,6 +185,7 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
             err, lit("unexpected argument '%1'").arg(parser.positionalArguments().first()));
     rl::CourseSceneSettings settings;
     if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
+    sceneOptions.lessonSettings(parser, sceneName, settings);
     const auto count = [&](const QCommandLineOption& option, int least, int& value) {
         bool ok = false;
         value = parser.value(option).toInt(&ok);

@@ -5,6 +5,7 @@
 
 #include "benchmark_scenes.h"
 #include "default_scene_resource.h"
+#include "examples.h"
 #include "image_io.h"
 
 namespace rasterlab::cli {
@@ -12,6 +13,12 @@ namespace rasterlab::cli {
 namespace {
 
 constexpr int kMaxImageSide = 16384;
+
+QStringList benchmarkSceneNames() {
+    QStringList names;
+    for (const auto& s : rl::benchmarkScenes()) names << QString::fromStdString(s.name);
+    return names;
+}
 
 bool parseSize(const QString& text, int& width, int& height) {
     static const QRegularExpression pattern(lit("^(\\d{1,6})[xX](\\d{1,6})$"));
@@ -160,17 +167,51 @@ int SceneOptions::load(const QCommandLineParser& parser, const rl::CourseSceneSe
 }
 
 QStringList SceneOptions::generatedSceneNames() {
-    QStringList names;
+    QStringList names = exampleNames();
     for (const auto& s : rl::benchmarkScenes()) names << QString::fromStdString(s.name);
     return names;
 }
 
 QCommandLineOption SceneOptions::generatedSceneOption() {
     return {lit("scene"),
-            lit("A generated scene instead of course files: %1.")
-                .arg(generatedSceneNames().join(lit(", "))),
+            lit("A shipped lesson (%1: its size, shading and near plane unless given) or a "
+                "generated benchmark scene (%2) instead of course files.")
+                .arg(exampleNames().join(lit(", ")), benchmarkSceneNames().join(lit(", "))),
             lit("NAME")};
 }
+
+void SceneOptions::lessonSettings(const QCommandLineParser& parser,
+                                  const QCommandLineOption& sceneName,
+                                  rl::CourseSceneSettings& settings) const {
+    if (!parser.isSet(sceneName) || !isExample(parser.value(sceneName))) return;
+    const Lesson lesson = exampleLesson(parser.value(sceneName));
+    if (!parser.isSet(size) && lesson.imageSize) {
+        settings.width = lesson.imageSize->width();
+        settings.height = lesson.imageSize->height();
+    }
+    if (!parser.isSet(shading) && lesson.shading) settings.shading = *lesson.shading;
+    if (!parser.isSet(near)) settings.nearPlane.fixedW = lesson.nearW;
+    if (!parser.isSet(rules) && lesson.rules) settings.rules = rl::rulesOf(*lesson.rules);
+}
+
+namespace {
+
+// A shipped lesson's three course files, embedded in the program.
+int loadExample(const QString& name, const rl::CourseSceneSettings& settings, QTextStream& err,
+                rl::Diagnostics& diagnostics, std::shared_ptr<const rl::Scene>& scene) {
+    const QString folder = exampleFolder(name) + QLatin1Char('/');
+    auto c = loadCamera(folder + lit("camera.cfg"), diagnostics);
+    if (!c) return inputError(err, c.error());
+    auto l = loadLighting(folder + lit("lighting.txt"), diagnostics);
+    if (!l) return inputError(err, l.error());
+    auto o = loadObject(folder + name + lit(".byu"), diagnostics);
+    if (!o) return inputError(err, o.error());
+    scene = std::make_shared<const rl::Scene>(
+        rl::makeCourseScene({c.value(), l.value(), o.value()}, settings));
+    return ExitOk;
+}
+
+}  // namespace
 
 int SceneOptions::loadAny(const QCommandLineParser& parser, const QCommandLineOption& sceneName,
                           const rl::CourseSceneSettings& settings, QTextStream& err,
@@ -179,6 +220,10 @@ int SceneOptions::loadAny(const QCommandLineParser& parser, const QCommandLineOp
     if (parser.isSet(sceneName)) {
         if (anyFile(parser))
             return usageError(err, lit("--scene replaces --camera, --lighting and --object"));
+        if (isExample(parser.value(sceneName))) {
+            sceneLabel = parser.value(sceneName);
+            return loadExample(sceneLabel, settings, err, diagnostics, scene);
+        }
         auto generated = rl::makeBenchmarkScene(parser.value(sceneName).toStdString(),
                                                 settings.width, settings.height, settings.shading);
         if (!generated)

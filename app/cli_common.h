@@ -121,11 +121,16 @@ struct SceneOptions {
              QTextStream& err, rl::Diagnostics& diagnostics,
              std::shared_ptr<const rl::Scene>& scene) const;
 
+    // The names --scene takes: the shipped lessons, then the benchmark scenes.
     static QStringList generatedSceneNames();
     static QCommandLineOption generatedSceneOption();
+    // A shipped lesson's own settings (image size, shading, near plane, rules) where the
+    // command line does not set them; nothing for other names.
+    void lessonSettings(const QCommandLineParser& parser, const QCommandLineOption& sceneName,
+                        rl::CourseSceneSettings& settings) const;
 
-    // The generated scene --scene names, or the course files (load). ExitOk, or the code of
-    // an error already printed.
+    // The lesson or generated scene --scene names, or the course files (load). ExitOk, or the
+    // code of an error already printed.
     int loadAny(const QCommandLineParser& parser, const QCommandLineOption& sceneName,
                 const rl::CourseSceneSettings& settings, QTextStream& err,
                 rl::Diagnostics& diagnostics, std::shared_ptr<const rl::Scene>& scene,
@@ -138,5 +143,6 @@ int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& 
 int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err);
 int runAccuracy(const QStringList& arguments, QTextStream& out, QTextStream& err);
 int runGenerateDefaultScene(const QStringList& arguments, QTextStream& out, QTextStream& err);
+int runGenerateLessons(const QStringList& arguments, QTextStream& out, QTextStream& err);
 
 }  // namespace rasterlab::cli

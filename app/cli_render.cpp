@@ -189,9 +189,10 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
             "darkened: red where a farther triangle was painted last, yellow where two "
             "triangles are as near (an edge they share)."),
         lit("FILE.png"));
+    const QCommandLineOption sceneName = SceneOptions::generatedSceneOption();
     parser.addOption(help);
     sceneOptions.addTo(parser);
-    parser.addOptions({output, depthOutput, normalsOutput, explain, painterDiff});
+    parser.addOptions({sceneName, output, depthOutput, normalsOutput, explain, painterDiff});
     animationOptions.addTo(parser);
     if (!parser.parse(arguments)) return usageError(err, parser.errorText());
     if (parser.isSet(help)) {
@@ -204,6 +205,7 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
 
     rl::CourseSceneSettings settings;
     if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
+    sceneOptions.lessonSettings(parser, sceneName, settings);
     if (!parser.isSet(output)) return usageError(err, lit("render needs --output FILE.png"));
     if (parser.isSet(painterDiff) && settings.shading != rl::ShadingModel::Painter)
         return usageError(err, lit("--painter-diff needs --shading painter"));
@@ -232,9 +234,15 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
 
     rl::Diagnostics diagnostics;
     std::shared_ptr<const rl::Scene> scene;
-    if (int code = sceneOptions.load(parser, settings, err, diagnostics, scene); code != ExitOk)
+    QString sceneLabel;
+    if (int code =
+            sceneOptions.loadAny(parser, sceneName, settings, err, diagnostics, scene, sceneLabel);
+        code != ExitOk)
         return code;
-    if (!sceneOptions.anyFile(parser)) out << "rendering the embedded default scene\n";
+    if (parser.isSet(sceneName))
+        out << "rendering " << sceneLabel << '\n';
+    else if (!sceneOptions.anyFile(parser))
+        out << "rendering the embedded default scene\n";
     if (frames > 0)
         return renderAnimation(*scene, animation, frames, framesPerSecond, parser.value(output),
                                diagnostics, out, err);

@@ -26,9 +26,10 @@ auto load(const QString& path, rl::Diagnostics& diagnostics, Parse parse)
                  path.toStdString(), diagnostics);
 }
 
-// One of the embedded default scene's files (UFPE layouts, read without a note).
-bool isEmbeddedDefault(const QString& path) {
-    return path.startsWith(QStringLiteral(":/default-scene/"));
+// One of the files embedded in the program (the default scene, the shipped lessons): read in
+// the layout detected, without a note saying so.
+bool isEmbedded(const QString& path) {
+    return path.startsWith(QStringLiteral(":/"));
 }
 
 // The object in any .byu flavour, named after its file.
@@ -44,22 +45,34 @@ rl::Result<rl::CourseObject> parseAnyObject(std::string_view text, const std::st
 
 }  // namespace
 
+namespace {
+
+// Reads a camera or lighting file: an embedded one in the layout detected in it, keeping its
+// warnings but not the note naming the layout (the program's own files need no such note).
+template <typename Layout, typename Detect, typename Read>
+auto loadPart(const QString& path, rl::Diagnostics& diagnostics, Layout layout, Detect detect,
+              Read read) {
+    return load(path, diagnostics,
+                [&](std::string_view text, const std::string& fileName, rl::Diagnostics& d) {
+                    if (!isEmbedded(path)) return read(text, fileName, d, layout);
+                    rl::Diagnostics all;
+                    auto part = read(text, fileName, all, detect(text).value_or(Layout::Ufpe));
+                    for (const rl::Diagnostic& item : all.items())
+                        if (item.severity == rl::Severity::Warning) d.warn(item.where, item.message);
+                    return part;
+                });
+}
+
+}  // namespace
+
 rl::Result<rl::CourseCamera> loadCamera(const QString& path, rl::Diagnostics& diagnostics,
                                         rl::CameraLayout layout) {
-    if (isEmbeddedDefault(path)) return load(path, diagnostics, rl::readCourseCamera);
-    return load(path, diagnostics,
-                [layout](std::string_view text, const std::string& fileName, rl::Diagnostics& d) {
-                    return rl::readCameraFile(text, fileName, d, layout);
-                });
+    return loadPart(path, diagnostics, layout, rl::detectCameraLayout, rl::readCameraFile);
 }
 
 rl::Result<rl::CourseLighting> loadLighting(const QString& path, rl::Diagnostics& diagnostics,
                                             rl::LightingLayout layout) {
-    if (isEmbeddedDefault(path)) return load(path, diagnostics, rl::readCourseLighting);
-    return load(path, diagnostics,
-                [layout](std::string_view text, const std::string& fileName, rl::Diagnostics& d) {
-                    return rl::readLightingFile(text, fileName, d, layout);
-                });
+    return loadPart(path, diagnostics, layout, rl::detectLightingLayout, rl::readLightingFile);
 }
 
 rl::Result<rl::CourseObject> loadObject(const QString& path, rl::Diagnostics& diagnostics) {

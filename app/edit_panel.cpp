@@ -24,6 +24,7 @@
 #include <iterator>
 
 #include "course_writers.h"
+#include "examples.h"
 #include "scene_edits.h"
 
 namespace rasterlab {
@@ -679,7 +680,11 @@ void EditPanel::updateFileLabel() {
     }
     const auto line = [this](Part part, const QString& title, const QString& layout) {
         const QString path = m_document->source(part);
-        const QString name = m_document->needsPath(part)
+        const std::optional<QString> example = exampleOfPath(path);
+        const QString name = example ? tr("%1 of the %2 example")
+                                           .arg(QFileInfo(path).fileName(), *example)
+                                           .toHtmlEscaped()
+                             : m_document->needsPath(part)
                                  ? tr("built-in scene")
                                  : QFileInfo(path).fileName().toHtmlEscaped();
         QString text = QStringLiteral("<b>%1</b> %2 <span style='color:gray'>(%3)</span>")
@@ -809,7 +814,9 @@ bool EditPanel::saveAs(Part part, QWidget* parent) {
 
 bool EditPanel::maybeSave(QWidget* parent, Part part) {
     if (!m_document->isModified(part)) return true;
-    const QString file = m_document->needsPath(part)
+    const std::optional<QString> example = exampleOfPath(m_document->source(part));
+    const QString file = example ? tr("the %1 example").arg(*example)
+                         : m_document->needsPath(part)
                              ? tr("the built-in scene")
                              : QFileInfo(m_document->source(part)).fileName();
     QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"),

@@ -2,11 +2,15 @@
 // or folder given on the command line.
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QDir>
 #include <QSettings>
+
+#include <cstdio>
 
 #include <functional>
 #include <memory>
 
+#include "examples.h"
 #include "frame_memory.h"
 #include "main_window.h"
 #include "translators.h"
@@ -25,14 +29,27 @@ int main(int argc, char* argv[]) {
     parser.addVersionOption();
     parser.addPositionalArgument(
         QStringLiteral("files"),
-        QStringLiteral("Course camera, lighting or object files, command files, or a folder."));
+        QStringLiteral("Course camera, lighting or object files, command files, a folder, or "
+                       "a lesson file (.rasterlab)."));
+    const QCommandLineOption scene(
+        QStringLiteral("scene"),
+        QStringLiteral("Open a shipped lesson: %1.").arg(rasterlab::exampleNames().join(QStringLiteral(", "))),
+        QStringLiteral("NAME"));
+    parser.addOption(scene);
     parser.process(app);
+    if (parser.isSet(scene) && !rasterlab::isExample(parser.value(scene))) {
+        fprintf(stderr, "rasterlab: --scene expects one of %s, found '%s'\n",
+                qPrintable(rasterlab::exampleNames().join(QStringLiteral(", "))),
+                qPrintable(parser.value(scene)));
+        return 2;
+    }
 
     rasterlab::Translators translators;
     translators.install(QSettings().value(QStringLiteral("language")).toString());
 
     // A new language builds the window again (every string is set when a widget is made); the
-    // new window takes the old one's document, with its unsaved edits.
+    // new window takes the old one's document, with its unsaved edits, and its view: stepping,
+    // picked pixel, breakpoints, zoom, docks (as a lesson file would keep them).
     std::unique_ptr<rasterlab::MainWindow> window;
     std::function<void(const rasterlab::SceneDocument*)> build =
         [&](const rasterlab::SceneDocument* document) {
@@ -45,10 +62,12 @@ int main(int argc, char* argv[]) {
                                      &app,
                                      [&] {
                                          const rasterlab::SceneDocument kept = window->document();
+                                         const rasterlab::Lesson view = window->currentLesson(QDir());
                                          const QByteArray geometry = window->saveGeometry();
                                          if (!window->handOver()) return;
                                          build(&kept);
                                          window->restoreGeometry(geometry);
+                                         window->restoreView(view);
                                      },
                                      Qt::QueuedConnection);
                              });
@@ -56,6 +75,7 @@ int main(int argc, char* argv[]) {
             window = std::move(fresh);
         };
     build(nullptr);
+    if (parser.isSet(scene)) window->openExample(parser.value(scene));
     for (const QString& file : parser.positionalArguments())
         if (!window->openPath(file)) break;
     return app.exec();

@@ -31,6 +31,7 @@
 #include "camera_basis.h"
 #include "camera_basis_view.h"
 #include "edit_panel.h"
+#include "examples.h"
 #include "frame_image_view.h"
 #include "image_io.h"
 #include "near_clip_view.h"
@@ -90,6 +91,8 @@ QString shadingLabel(rl::ShadingModel model) {
 }
 
 QString displayName(const QString& source) {
+    if (const std::optional<QString> example = exampleOfPath(source))
+        return MainWindow::tr("%1 (the %2 example)").arg(QFileInfo(source).fileName(), *example);
     if (source.startsWith(QStringLiteral(":/")))
         return MainWindow::tr("%1 (built in)").arg(QFileInfo(source).fileName());
     return QFileInfo(source).fileName();
@@ -464,6 +467,7 @@ bool MainWindow::openPart(SceneDocument::Part part, const QString& path) {
         showError(QString::fromStdString(status.error().toString()));
         return false;
     }
+    if (part == SceneDocument::Part::Object || m_document.showsCommandFile()) leaveLesson();
     m_lastError.clear();
     addRecentFile(path);
     documentChanged();
@@ -501,6 +505,7 @@ bool MainWindow::openCommandFile(const QString& path) {
         showError(QString::fromStdString(status.error().toString()));
         return false;
     }
+    leaveLesson();
     m_lastError.clear();
     addRecentFile(path);
     documentChanged();
@@ -620,6 +625,7 @@ void MainWindow::onFrameReady(const RenderedFrame& frame) {
     m_frame = frame;
     m_zbuffer->setFrame(frame.trace);
     m_inspection->setFrame(frame.trace, frame.image);
+    applyPendingView(frame);
     m_animation->showFrame(*frame.trace);
     // While the animation plays, a frame is replaced before anyone could step through it: its
     // replay is built once paused (onAnimationPlaying).
@@ -748,6 +754,10 @@ void MainWindow::refreshMessages() {
         auto* item = new QListWidgetItem(tr("Error: %1").arg(m_lastError), m_messages);
         item->setForeground(QColor(200, 30, 30));
     }
+    for (const QString& problem : m_lessonProblems) {
+        auto* item = new QListWidgetItem(problem, m_messages);
+        item->setForeground(QColor(170, 110, 0));
+    }
     rl::Diagnostics all = m_document.diagnostics();
     if (m_frame.trace) all.append(m_frame.trace->diagnostics);
     for (const auto& d : all.items()) {
@@ -761,6 +771,10 @@ void MainWindow::refreshSceneSummary() {
     const rl::FrameTrace& t = *m_frame.trace;
     const rl::Scene& scene = *t.scene;
     QString html;
+    if (!m_lessonTitle.isEmpty() || !m_lessonNotes.isEmpty())
+        html += QStringLiteral("<h3>%1</h3><p>%2</p>")
+                    .arg(tr("Lesson: %1").arg(m_lessonTitle.toHtmlEscaped()),
+                         m_lessonNotes.toHtmlEscaped());
     html += QStringLiteral("<h3>%1</h3>").arg(tr("Files"));
     if (m_document.showsCommandFile()) {
         html += QStringLiteral("<p>%1: %2<br>%3: %4</p>")

@@ -20,9 +20,11 @@
 #include <memory>
 
 #include "inspection.h"
+#include "lesson_file.h"
 #include "render_controller.h"
 #include "scene_document.h"
 
+class QDir;
 class QLabel;
 class QMenu;
 class QListWidget;
@@ -91,6 +93,9 @@ public:
     bool exportNormalBuffer(const QString& path);
     bool exportDock(const QString& dockName, const QString& path);
     int exportSequence(const QString& folder, int maxImages);
+    // The frame shown rendered in flat, Gouraud and Phong shading, side by side with their
+    // names under them, as one PNG (a course scene's; small images enlarged pixel by pixel).
+    bool exportShadingSideBySide(const QString& path);
     // The animation's frames (the animation panel's count, at its frames a second, from
     // frame 0) as frame_0000.png ... in folder, with a progress dialog that can cancel; the
     // number written (0 with the error shown when a file cannot be written).
@@ -131,11 +136,38 @@ public:
     // The docks as they are when the window opens (View > Reset Layout).
     void resetLayout();
 
+    // ---- Lessons (main_window_lessons.cpp) -----------------------------------------------
+    // Opens a lesson file (lesson_file.h): its scene, settings, stepping and window. A part
+    // of the scene that cannot be read keeps the part shown, and the Messages dock says what
+    // was not restored. False, with the error shown and nothing changed, when the lesson
+    // file itself is bad.
+    bool openLesson(const QString& path);
+    // A shipped lesson (File > Examples); false for an unknown name.
+    bool openExample(const QString& name);
+    // The setup on screen as a lesson file; false with the error shown when it cannot be
+    // written.
+    bool saveLesson(const QString& path);
+    // The setup on screen, with file paths relative to `base`.
+    Lesson currentLesson(const QDir& base) const;
+    // Restores a lesson's stepping, picked pixel, breakpoints, zoom, docks and presentation
+    // mode, not its scene (the cursor, pixel and zoom once the next frame is shown): what a
+    // window built again in another language keeps.
+    void restoreView(const Lesson& lesson);
+    QStringList recentLessons() const;
+    // Whether a lesson's cursor, pixel or zoom still waits for the first frame of its scene.
+    bool lessonViewPending() const { return m_pendingView.has_value(); }
+    // What opening the last lesson could not restore (shown in the Messages dock).
+    QStringList lessonProblems() const { return m_lessonProblems; }
+    // What the lesson shown says about itself (a shipped lesson's in the language shown).
+    QString lessonTitle() const { return m_lessonTitle; }
+    QString lessonNotes() const { return m_lessonNotes; }
+
     // The layout (geometry, docks) is kept in QSettings under layout/, with this version: a
     // layout saved by another version is not restored. Only when the application has an
     // organization name (the program sets one; tests choose theirs).
     static constexpr int kLayoutVersion = 2;
     static constexpr int kMaxRecentFiles = 10;
+    static constexpr int kMaxRecentLessons = 10;
 
 signals:
     // The user chose another language ("", "en" or "pt_BR"): the program builds the window
@@ -164,6 +196,17 @@ private:
     void addRulesMenu(QMenu* shading);
     void addProjectionMenu(QMenu* shading);
     void createHelpMenu();
+    void addLessonMenus(QMenu* file);
+    void refreshRecentLessons();
+    void openLessonDialog();
+    void saveLessonDialog();
+    // The lesson's scene, settings and edits in a copy of the document; `problems` gets what
+    // could not be restored.
+    SceneDocument lessonDocument(const Lesson& lesson, const QDir& base, QStringList& problems);
+    void applyPendingView(const RenderedFrame& frame);
+    // Another object, command file or the default scene replaces a lesson's: its text goes,
+    // and its image size and near plane give way to 800 x 600 and the automatic near plane.
+    void leaveLesson();
     void createDocks();
     QDockWidget* addDock(const QString& title, const QString& name, QWidget* widget,
                          Qt::DockWidgetArea area, bool scrolls = false);
@@ -245,6 +288,19 @@ private:
     QMenu* m_shadingMenu = nullptr;
     QMenu* m_imageMenu = nullptr;
     QMenu* m_recentMenu = nullptr;
+    QMenu* m_recentLessonsMenu = nullptr;
+    // The lesson shown (its title and text), and what opening it could not restore.
+    QString m_lessonTitle, m_lessonNotes, m_lessonExample;
+    QStringList m_lessonProblems;
+    // A lesson's cursor, pixel and zoom, waiting for the first frame of its scene.
+    struct PendingView {
+        quint64 generation = 0;  // RenderController's request the lesson's scene went in
+        std::optional<rl::ReplayCursor> cursor;
+        std::optional<QPoint> pixel;
+        std::optional<double> zoom;
+        std::optional<QPointF> centre;
+    };
+    std::optional<PendingView> m_pendingView;
     QMenu* m_exportViewMenu = nullptr;
     QList<QAction*> m_clickerActions;  // arrows and space: stepping in front of a class
     QAction* m_presentationAction = nullptr;

@@ -63,12 +63,17 @@ void MainWindow::createFileMenu() {
     m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
     file->addAction(tr("&Default Scene"), this, [this] {
         if (!m_edit->maybeSave(this)) return;
-        if (auto status = m_document.loadDefault(); !status)
+        if (auto status = m_document.loadDefault(); !status) {
             showError(QString::fromStdString(status.error().toString()));
-        else
+        } else {
+            leaveLesson();
             m_lastError.clear();
+        }
         documentChanged();
     });
+    file->addSeparator();
+    addLessonMenus(file);
+    file->addSeparator();
     addLayoutMenus(file);
     file->addSeparator();
     file->addAction(m_edit->saveAction());
@@ -134,6 +139,13 @@ void MainWindow::addExportMenu(QMenu* file) {
             if (!path.isEmpty()) exportDock(dock->objectName(), path);
         });
     }
+    QAction* sideBySide = exports->addAction(tr("Shading Side &by Side..."), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(
+            this, tr("Export Shading Side by Side"), QStringLiteral("shading.png"),
+            tr("PNG images (*.png)"));
+        if (!path.isEmpty()) exportShadingSideBySide(path);
+    });
+    sideBySide->setObjectName(QStringLiteral("exportShadingAction"));
     exports->addAction(tr("&Stepping Sequence..."), this, &MainWindow::exportSequenceDialog);
     QAction* exportFrames =
         exports->addAction(tr("&Animation Frames..."), this, &MainWindow::exportAnimationDialog);

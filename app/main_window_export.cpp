@@ -1,11 +1,12 @@
 // The main window's exports: the image as displayed (at the cursor, with its overlays), the
-// raw buffers, any dock's view as displayed, a stepping sequence and the animation's frames as
-// numbered PNGs.
+// raw buffers, any dock's view as displayed, the frame in three shading models side by side, a
+// stepping sequence and the animation's frames as numbered PNGs.
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
+#include <QPainter>
 #include <QProgressDialog>
 #include <QStatusBar>
 
@@ -55,6 +56,45 @@ bool MainWindow::exportNormalBuffer(const QString& path) {
         image = toQImage(rl::normalImage(frame->shading->normal, *frame->depth));
     }
     return writePng(image, path, failure);
+}
+
+bool MainWindow::exportShadingSideBySide(const QString& path) {
+    const QString failure = tr("%1: cannot export the shadings side by side: %2");
+    if (!m_frame.trace || m_document.showsCommandFile()) {
+        showError(failure.arg(path, tr("it needs a course scene")));
+        return false;
+    }
+    const rl::ShadingModel models[] = {rl::ShadingModel::Flat, rl::ShadingModel::Gouraud,
+                                       rl::ShadingModel::Phong};
+    const QString names[] = {tr("Flat"), tr("Gouraud"), tr("Phong")};
+    const rl::Scene& shown = *m_frame.trace->scene;
+    // Small images (a lesson's 32 x 24) are enlarged, pixel by pixel, to be read on a slide.
+    const int scale = std::max(1, 480 / std::max(shown.width, 1));
+    const int w = shown.width * scale, h = shown.height * scale, gap = 12;
+    const int caption = std::max(28, w / 14);
+    QImage sheet(3 * w + 2 * gap, h + caption, QImage::Format_RGB32);
+    sheet.fill(Qt::white);
+    QPainter painter(&sheet);
+    QFont font = painter.font();
+    font.setPixelSize(caption * 3 / 5);
+    painter.setFont(font);
+    painter.setPen(Qt::black);
+    for (int i = 0; i < 3; ++i) {
+        auto scene = std::make_shared<rl::Scene>(shown);
+        for (rl::Draw& draw : scene->draws) draw.shading = models[i];
+        const auto frame = rl::renderFrame(scene);
+        if (!frame) {
+            showError(failure.arg(path, QString::fromStdString(frame.error().toString())));
+            return false;
+        }
+        const QImage image =
+            toQImage(rl::colourImage(*frame->shading, *frame->depth, scene->conventions));
+        const QRect where(i * (w + gap), 0, w, h);
+        painter.drawImage(where, image);
+        painter.drawText(QRect(where.left(), h, w, caption), Qt::AlignCenter, names[i]);
+    }
+    painter.end();
+    return writePng(sheet, path, failure);
 }
 
 bool MainWindow::exportDock(const QString& dockName, const QString& path) {

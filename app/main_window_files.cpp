@@ -73,6 +73,8 @@ FileKind detectFileKind(const QString& path) {
 
 bool MainWindow::openPath(const QString& path) {
     const QFileInfo info(path);
+    if (info.suffix().compare(QLatin1String("rasterlab"), Qt::CaseInsensitive) == 0)
+        return openLesson(path);
     if (info.isDir()) {
         // A folder: the course files it holds (the first of each kind, by name).
         std::optional<QString> found[3];

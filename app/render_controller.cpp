@@ -23,6 +23,7 @@ Outcome renderOnWorker(quint64 generation, std::shared_ptr<const rl::Scene> scen
                        rl::RenderOptions options) {
     Outcome outcome;
     outcome.generation = generation;
+    outcome.frame.generation = generation;
     try {
         auto trace = rl::renderFrame(scene, options);
         if (!trace) {

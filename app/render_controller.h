@@ -20,6 +20,7 @@ namespace rasterlab {
 struct RenderedFrame {
     std::shared_ptr<const rl::FrameTrace> trace;
     QImage image;  // the final colour image, 8-bit RGBA
+    quint64 generation = 0;  // the request it answers (RenderController::lastRequest())
 };
 
 class RenderController : public QObject {
@@ -30,6 +31,8 @@ public:
 
     void request(std::shared_ptr<const rl::Scene> scene, rl::RenderOptions options = {});
     bool isBusy() const { return m_running; }
+    // The number of the last request made; frames carry the number of theirs.
+    quint64 lastRequest() const { return m_nextGeneration - 1; }
 
 signals:
     void frameReady(rasterlab::RenderedFrame frame);

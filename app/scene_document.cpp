@@ -104,11 +104,10 @@ bool isResource(const QString& path) {
 }
 
 // The layout a camera or lighting file that was just read is in: the one chosen, or the one
-// detection finds in it (the embedded default scene is UFPE, read without detection).
+// detection finds in it (always detection for the files embedded in the program).
 template <typename Layout, typename Detect>
 Layout layoutOfFile(const QString& path, Layout chosen, Detect detect) {
-    if (isResource(path)) return Layout::Ufpe;
-    if (chosen != Layout::Auto) return chosen;
+    if (chosen != Layout::Auto && !isResource(path)) return chosen;
     auto bytes = readInputFile(path);
     if (!bytes) return Layout::Ufpe;  // read a moment ago; not reached unless it vanished
     return detect(viewOf(bytes.value())).value_or(Layout::Ufpe);

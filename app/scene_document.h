@@ -67,6 +67,8 @@ public:
     rl::NearPlane::Mode projection() const;
     void setProjection(rl::NearPlane::Mode mode);
     void setSize(int width, int height);
+    // The near plane's fixed w (the course's view z), or automatic (nullopt).
+    void setNearW(std::optional<double> w) { m_settings.nearPlane.fixedW = w; }
 
     std::shared_ptr<const rl::Scene> scene() const;
 

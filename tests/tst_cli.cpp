@@ -352,7 +352,7 @@ void TestCli::usageErrors_data() {
         << "--explain-pixel 800,10 is outside the 800x600 image";
     QTest::newRow("unknown command") << QStringList({"paint", "--output", "out.png"})
                                      << "unknown command 'paint' (commands: render, run, bench, "
-                                        "accuracy, generate-default-scene)";
+                                        "accuracy, generate-default-scene, generate-lessons)";
     QTest::newRow("unknown option")
         << (QStringList({"render", "--bogus"}) + out) << "Unknown option 'bogus'.";
     QTest::newRow("stray argument")
@@ -401,7 +401,8 @@ void TestCli::usageErrors_data() {
         << QStringList({"bench", "--format", "csv"}) << "--format expects md or json, found 'csv'";
     QTest::newRow("bench, unknown scene")
         << QStringList({"bench", "--scene", "teapot"})
-        << "--scene expects one of sphere-1k, sphere-100k, sphere-1m, torus-1k, torus-100k, "
+        << "--scene expects one of triangle, zbuffer, near-plane, goblet, sphere, lights, "
+           "painter-cycle, gouraud, sphere-1k, sphere-100k, sphere-1m, torus-1k, torus-100k, "
            "torus-1m, full-screen, found 'teapot'";
     QTest::newRow("unknown rules") << (QStringList({"render", "--rules", "d3d"}) + out)
                                    << "--rules expects course, gpu or hw2, found 'd3d'";
@@ -416,7 +417,8 @@ void TestCli::usageErrors_data() {
         << "--repeats expects a whole number from 1 to 1000, found 'many'";
     QTest::newRow("accuracy, unknown scene")
         << QStringList({"accuracy", "--scene", "teapot"})
-        << "--scene expects one of sphere-1k, sphere-100k, sphere-1m, torus-1k, torus-100k, "
+        << "--scene expects one of triangle, zbuffer, near-plane, goblet, sphere, lights, "
+           "painter-cycle, gouraud, sphere-1k, sphere-100k, sphere-1m, torus-1k, torus-100k, "
            "torus-1m, full-screen, found 'teapot'";
     QTest::newRow("bench, scene and files")
         << QStringList({"bench", "--scene", "sphere-1k", "--object", "a.byu"})

@@ -165,6 +165,24 @@ void BreakpointsView::clear() {
     publish();
 }
 
+std::vector<rl::Breakpoint> BreakpointsView::entries() const {
+    std::vector<rl::Breakpoint> out;
+    for (const Entry& e : m_entries) {
+        rl::Breakpoint b = e.breakpoint;
+        if (b.kind == Kind::Triangle) b.triangle = static_cast<std::uint32_t>(e.triangleNumber);
+        out.push_back(b);
+    }
+    return out;
+}
+
+void BreakpointsView::setEntries(const std::vector<rl::Breakpoint>& breakpoints) {
+    m_entries.clear();
+    for (const rl::Breakpoint& b : breakpoints)
+        m_entries.push_back({b, b.kind == Kind::Triangle ? static_cast<int>(b.triangle) : 0});
+    m_hit = -1;
+    publish();
+}
+
 void BreakpointsView::publish() {
     // Triangle numbers become the frame's projected triangles (they change with the frame).
     std::vector<rl::Breakpoint> list;

@@ -25,6 +25,10 @@ public:
     bool add(rl::Breakpoint::Kind kind, int value, bool anyPixel = false);
     void removeSelected();
     void clear();
+    // The breakpoints as the list holds them, a Triangle's `triangle` being the mesh's 1-based
+    // number; and all of them replaced by such a list (what lesson files keep).
+    std::vector<rl::Breakpoint> entries() const;
+    void setEntries(const std::vector<rl::Breakpoint>& breakpoints);
     // What a breakpoint says, translated ("first depth rejection at (12, 40)").
     static QString describe(const rl::Breakpoint& breakpoint, int triangleNumber);
 

@@ -57,6 +57,19 @@ void FrameImageView::fitToWindow() {
     update();
 }
 
+QPointF FrameImageView::centrePoint() const {
+    return (QPointF(width() / 2.0, height() / 2.0) - imageOrigin()) / m_zoom;
+}
+
+void FrameImageView::showAt(double zoom, const QPointF& imagePoint) {
+    m_zoom = std::clamp(zoom, kMinZoom, kMaxZoom);
+    m_fit = false;
+    m_offset = QPointF(m_image.width() * m_zoom / 2.0, m_image.height() * m_zoom / 2.0) -
+               imagePoint * m_zoom;
+    emit zoomChanged(m_zoom);
+    update();
+}
+
 void FrameImageView::zoomToActualSize() {
     setZoomAround(1.0, QPointF(width() / 2.0, height() / 2.0));
 }

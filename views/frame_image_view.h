@@ -49,6 +49,9 @@ public:
 
     double zoom() const { return m_zoom; }
     bool fitsWindow() const { return m_fit; }
+    // The image point at the view's centre; showAt puts an image point there, at a zoom.
+    QPointF centrePoint() const;
+    void showAt(double zoom, const QPointF& imagePoint);
     // The image pixel under a widget position, or (-1, -1) outside the image.
     QPoint pixelAt(const QPointF& widgetPos) const;
 
