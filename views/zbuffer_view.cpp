@@ -46,10 +46,6 @@ QRgb falseColour(double t) {
     return qRgb(c[0], c[1], c[2]);
 }
 
-bool covered(const rl::DepthTest& depth, int x, int y) {
-    return depth.triangle.at(x, y) != rl::kNoTriangle;
-}
-
 }  // namespace
 
 DepthRange coveredDepthRange(const rl::DepthTest& depth) {
@@ -57,15 +53,16 @@ DepthRange coveredDepthRange(const rl::DepthTest& depth) {
     range.nearest = std::numeric_limits<float>::infinity();
     range.farthest = -std::numeric_limits<float>::infinity();
     for (int y = 0; y < depth.depth.height(); ++y) {
+        const std::uint32_t* triangles = depth.triangle.row(y);
+        const float* depths = depth.depth.row(y);
         for (int x = 0; x < depth.depth.width(); ++x) {
-            if (!covered(depth, x, y)) continue;
-            const float z = depth.depth.at(x, y);
-            if (!std::isfinite(z)) continue;
+            const float z = depths[x];
+            if (triangles[x] == rl::kNoTriangle || !std::isfinite(z)) continue;
             range.nearest = std::min(range.nearest, z);
             range.farthest = std::max(range.farthest, z);
-            range.valid = true;
         }
     }
+    range.valid = range.nearest <= range.farthest;
     if (!range.valid) return DepthRange{};
     return range;
 }
@@ -83,12 +80,16 @@ QRgb emptyPixelColour(int x, int y) {
 
 QImage depthImage(const rl::DepthTest& depth, const DepthRange& range, DepthPalette palette) {
     QImage image(depth.depth.width(), depth.depth.height(), QImage::Format_RGB32);
+    const int width = image.width();
     for (int y = 0; y < image.height(); ++y) {
         auto* line = reinterpret_cast<QRgb*>(image.scanLine(y));
-        for (int x = 0; x < image.width(); ++x) {
-            line[x] = covered(depth, x, y) ? depthColour(depth.depth.at(x, y), range, palette)
-                                           : emptyPixelColour(x, y);
-        }
+        const std::uint32_t* triangles = depth.triangle.row(y);
+        const float* depths = depth.depth.row(y);
+        // The empty pixels' 8 x 8 checkerboard (emptyPixelColour), a row at a time.
+        const QRgb empty[2] = {emptyPixelColour(0, y), emptyPixelColour(8, y)};
+        for (int x = 0; x < width; ++x)
+            line[x] = triangles[x] != rl::kNoTriangle ? depthColour(depths[x], range, palette)
+                                                      : empty[(x >> 3) & 1];
     }
     return image;
 }
@@ -98,9 +99,11 @@ DepthHistogram depthHistogram(const rl::DepthTest& depth, const DepthRange& rang
     out.counts.assign(static_cast<std::size_t>(std::max(1, bins)), 0);
     const double span = double(range.farthest) - double(range.nearest);
     for (int y = 0; y < depth.depth.height(); ++y) {
+        const std::uint32_t* triangles = depth.triangle.row(y);
+        const float* depths = depth.depth.row(y);
         for (int x = 0; x < depth.depth.width(); ++x) {
-            if (!covered(depth, x, y)) continue;
-            const float z = depth.depth.at(x, y);
+            if (triangles[x] == rl::kNoTriangle) continue;
+            const float z = depths[x];
             if (z < range.nearest) {
                 ++out.below;
             } else if (z > range.farthest) {
