@@ -5,9 +5,24 @@
 
 #include <exception>
 
+#ifdef Q_OS_LINUX
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
 namespace rasterlab {
 
 namespace {
+
+// The replay's thread yields to the renders and to the window: a drag in the Edit dock renders
+// frame after frame while each one's replay is being built behind it. Linux gives each thread
+// its own nice value; elsewhere the thread keeps the process's priority.
+void yieldToRenders() {
+#ifdef Q_OS_LINUX
+    setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 10);
+#endif
+}
 
 struct Outcome {
     std::shared_ptr<const rl::FrameReplay> replay;
@@ -18,6 +33,9 @@ struct Outcome {
 }  // namespace
 
 ReplayBuilder::ReplayBuilder(QObject* parent) : QObject(parent) {
+    // One build at a time, on a thread of its own: a frame being rendered never waits in the
+    // shared pool behind replays that are still finishing after their cancel.
+    m_pool.setMaxThreadCount(1);
     qRegisterMetaType<std::shared_ptr<const rl::FrameReplay>>();
     qRegisterMetaType<std::shared_ptr<const rl::FrameTrace>>();
 }
@@ -50,7 +68,8 @@ void ReplayBuilder::build(std::shared_ptr<const rl::FrameTrace> frame) {
         if (--m_busy == 0) emit busyChanged(false);
     });
     const rl::ReplayLimits copy = limits;
-    watcher->setFuture(QtConcurrent::run([frame, flag, copy] {
+    watcher->setFuture(QtConcurrent::run(&m_pool, [frame, flag, copy] {
+        yieldToRenders();
         Outcome outcome;
         try {
             auto replay = rl::FrameReplay::build(frame, copy, flag.get());

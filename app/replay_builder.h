@@ -5,6 +5,7 @@
 #pragma once
 
 #include <QObject>
+#include <QThreadPool>
 
 #include <atomic>
 #include <memory>
@@ -31,6 +32,7 @@ signals:
     void busyChanged(bool busy);
 
 private:
+    QThreadPool m_pool;
     std::shared_ptr<std::atomic<bool>> m_cancel;
     int m_busy = 0;
 };
