@@ -51,6 +51,9 @@ namespace rasterlab {
 
 namespace {
 
+// How long after the last edit frames still count as part of a drag (onFrameReady).
+constexpr int kEditPauseMs = 150;
+
 QString partTitle(SceneDocument::Part part) {
     switch (part) {
         case SceneDocument::Part::Camera:
@@ -141,18 +144,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_controller, &RenderController::busyChanged, this, &MainWindow::updateTimeLabel);
     connect(m_controller, &RenderController::busyChanged, this, &MainWindow::updateBusy);
     connect(m_replayBuilder, &ReplayBuilder::busyChanged, this, &MainWindow::updateBusy);
-    connect(m_replayBuilder, &ReplayBuilder::built, this,
-            [this](std::shared_ptr<const rl::FrameReplay> replay) {
-                std::optional<rl::ReplayCursor> at;
-                if (m_cursorToRestore) {
-                    // Stepping goes on where it was (the same fragment, for a new frame of the
-                    // same geometry: a light or material being edited).
-                    at = replay->valid(*m_cursorToRestore)
-                             ? *m_cursorToRestore
-                             : replay->atFragment(m_cursorToRestore->fragments);
-                }
-                m_inspection->setReplay(std::move(replay), at);
-            });
+    connect(m_replayBuilder, &ReplayBuilder::built, this, &MainWindow::onReplayBuilt);
     connect(m_replayBuilder, &ReplayBuilder::failed, this,
             [this](std::shared_ptr<const rl::FrameTrace> frame, const QString& message) {
                 if (frame == m_inspection->frame()) m_inspection->setReplayError(message);
@@ -173,7 +165,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
     createDocks();
     createActions();
+    m_adoptTimer.setSingleShot(true);
+    m_adoptTimer.setInterval(kEditPauseMs);
+    connect(&m_adoptTimer, &QTimer::timeout, this, [this] {
+        if (m_waitingFrame) adoptFrame(*m_waitingFrame);
+    });
     connect(m_edit, &EditPanel::sceneEdited, this, [this] {
+        m_lastEdit.start();
         for (QAction* action : m_shadingGroup->actions())
             action->setChecked(action->data().toInt() ==
                                static_cast<int>(m_document.settings().shading));
@@ -598,7 +596,8 @@ void MainWindow::requestRender() {
 }
 
 bool MainWindow::isReadyToStep() const {
-    return m_inspection->canStep() && !m_controller->isBusy() && !m_replayBuilder->isBusy();
+    return m_inspection->canStep() && !m_controller->isBusy() && !m_replayBuilder->isBusy() &&
+           !m_waitingFrame;
 }
 
 void MainWindow::updateTimeLabel() {
@@ -618,6 +617,27 @@ void MainWindow::updateBusy() {
 }
 
 void MainWindow::onFrameReady(const RenderedFrame& frame) {
+    const bool dragging = m_lastEdit.isValid() && m_lastEdit.elapsed() < kEditPauseMs &&
+                          m_frame.trace && !m_animation->isPlaying();
+    if (!dragging) {
+        adoptFrame(frame);
+        return;
+    }
+    // The image now; its replay behind it; the docks when the edits pause.
+    m_waitingFrame = frame;
+    m_waitingReplay.reset();
+    m_view->setImage(frame.image);
+    m_replayBuilder->build(frame.trace);
+    m_adoptTimer.start();
+    updateTimeLabel();
+}
+
+void MainWindow::adoptFrame(const RenderedFrame& frame) {
+    const bool waited = m_waitingFrame && m_waitingFrame->trace == frame.trace;
+    std::shared_ptr<const rl::FrameReplay> built = waited ? m_waitingReplay : nullptr;
+    m_adoptTimer.stop();
+    m_waitingFrame.reset();
+    m_waitingReplay.reset();
     // A new frame of the scene being stepped through: stepping goes on at the same place.
     m_cursorToRestore.reset();
     if (m_inspection->canStep() && !m_inspection->atEnd())
@@ -629,14 +649,32 @@ void MainWindow::onFrameReady(const RenderedFrame& frame) {
     m_animation->showFrame(*frame.trace);
     // While the animation plays, a frame is replaced before anyone could step through it: its
     // replay is built once paused (onAnimationPlaying).
-    if (m_animation->isPlaying())
+    if (m_animation->isPlaying()) {
         m_replayBuilder->cancel();
-    else
-        m_replayBuilder->build(frame.trace);
+    } else if (built) {
+        onReplayBuilt(std::move(built));
+    } else if (!(waited && m_replayBuilder->isBusy())) {
+        m_replayBuilder->build(frame.trace);  // a waited frame's replay may still be on its way
+    }
     updateTimeLabel();
     refreshMessages();
     refreshSceneSummary();
     updateBehindBanner();
+}
+
+void MainWindow::onReplayBuilt(std::shared_ptr<const rl::FrameReplay> replay) {
+    if (m_waitingFrame && replay->tracePtr() == m_waitingFrame->trace) {
+        m_waitingReplay = std::move(replay);  // the docks take it with the frame
+        return;
+    }
+    std::optional<rl::ReplayCursor> at;
+    if (m_cursorToRestore) {
+        // Stepping goes on where it was (the same fragment, for a new frame of the same
+        // geometry: a light or material being edited).
+        at = replay->valid(*m_cursorToRestore) ? *m_cursorToRestore
+                                               : replay->atFragment(m_cursorToRestore->fragments);
+    }
+    m_inspection->setReplay(std::move(replay), at);
 }
 
 void MainWindow::onAnimationPlaying(bool playing) {

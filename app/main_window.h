@@ -15,6 +15,7 @@
 #include <QActionGroup>
 #include <QFileSystemWatcher>
 #include <QMainWindow>
+#include <QElapsedTimer>
 #include <QTimer>
 
 #include <memory>
@@ -103,6 +104,11 @@ public:
 
     const SceneDocument& document() const { return m_document; }
     std::shared_ptr<const rl::FrameTrace> currentFrame() const { return m_frame.trace; }
+    // The frame whose image is on screen: during a drag in the Edit dock, a newer one than
+    // currentFrame(), whose image is shown before the docks take it (adoptFrame).
+    std::shared_ptr<const rl::FrameTrace> shownFrame() const {
+        return m_waitingFrame ? m_waitingFrame->trace : m_frame.trace;
+    }
     const QImage& currentImage() const { return m_frame.image; }  // the frame's final image
     FrameImageView* imageView() const { return m_view; }
     QListWidget* messages() const { return m_messages; }
@@ -214,6 +220,9 @@ private:
     void updateTimeLabel();
     void updateBusy();
     void onFrameReady(const RenderedFrame& frame);
+    // Gives the frame to the inspection and every dock, and builds its replay.
+    void adoptFrame(const RenderedFrame& frame);
+    void onReplayBuilt(std::shared_ptr<const rl::FrameReplay> replay);
     void onRenderFailed(const QString& message);
     void onCursorChanged();
     void updateOverlay();
@@ -253,6 +262,13 @@ private:
     RenderedFrame m_frame;
     QString m_lastError;
     std::optional<rl::ReplayCursor> m_cursorToRestore;
+    // While a value is being dragged in the Edit dock, each new frame's image is shown at once
+    // and the docks take the newest frame when the edits pause (m_adoptTimer): the image
+    // follows the drag without waiting for every dock to recompute.
+    QElapsedTimer m_lastEdit;
+    QTimer m_adoptTimer;
+    std::optional<RenderedFrame> m_waitingFrame;
+    std::shared_ptr<const rl::FrameReplay> m_waitingReplay;  // the waiting frame's, if built
     QImage m_coverage;  // the frame's spans, tinted (scan conversion seen as a stage)
     std::weak_ptr<const rl::FrameTrace> m_coverageFrame;
 
