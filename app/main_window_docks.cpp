@@ -106,9 +106,9 @@ int MainWindow::tabBarWidth(const QList<QDockWidget*>& docks) const {
 }
 
 void MainWindow::fitDocks() {
-    // Each side as wide as its tabs need, and at least 30% (left: the pixel inspector's table)
-    // and a third (right)
-    // of the window; the image takes the rest. Each side's docks share its height.
+    // Each side as wide as its tabs need, and at least 30% (left: room for the pixel
+    // inspector's table) and a third (right) of the window; the image takes the rest. Each
+    // side's docks share its height.
     if (isFilled()) return;
     constexpr int kFrame = 20;  // the dock area's frame and margins around its tab bar
     const std::pair<Qt::DockWidgetArea, double> sides[] = {{Qt::LeftDockWidgetArea, 0.3},
