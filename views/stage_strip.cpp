@@ -152,11 +152,12 @@ void StageStrip::refresh() {
         QToolButton* button = m_buttons[i];
         const QString reason = frame ? skipReason(*frame, stage) : QString();
         const QString mode = frame ? modeName(*frame, stage) : QString();
-        QString text = QStringLiteral("%1 %2").arg(i + 1).arg(stageName(stage));
-        m_shortTexts[i] = QStringLiteral("%1 %2").arg(i + 1).arg(shortStageName(stage));
-        if (!reason.isEmpty()) text += QStringLiteral(" ") + tr("(skipped)");
-        if (!mode.isEmpty()) text += QStringLiteral(" \u00b7 ") + mode;
-        m_longTexts[i] = text;
+        // The short name keeps what the frame does with the stage: only the name shrinks.
+        QString state;
+        if (!reason.isEmpty()) state += QStringLiteral(" ") + tr("(skipped)");
+        if (!mode.isEmpty()) state += QStringLiteral(" \u00b7 ") + mode;
+        m_longTexts[i] = QStringLiteral("%1 %2").arg(i + 1).arg(stageName(stage)) + state;
+        m_shortTexts[i] = QStringLiteral("%1 %2").arg(i + 1).arg(shortStageName(stage)) + state;
         button->setToolTip(!reason.isEmpty() ? tr("%1 is skipped: %2").arg(stageName(stage), reason)
                            : !mode.isEmpty()
                                ? tr("%1: %2").arg(stageName(stage), modeDescription(*frame, stage))
