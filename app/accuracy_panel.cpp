@@ -69,6 +69,9 @@ AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent) {
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->verticalHeader()->setVisible(false);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // Eight columns of figures: more than a side dock holds, it scrolls sideways
+    // (tests/tst_legibility.cpp lets it; each column still fits its text).
+    m_table->setProperty("scrollsSideways", true);
     layout->addWidget(m_table, 2);
 
     m_plotLabel = new QLabel(this);
@@ -87,9 +90,9 @@ AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent) {
     m_heatLabel->setToolTip(tr("Click a pixel to compare the mode with the reference there"));
     m_heatLabel->installEventFilter(this);
     layout->addWidget(m_heatLabel, 3);
-    m_pick = new QLabel(this);
+    // Its minimum height its wrapped lines': the pictures above cannot squeeze it.
+    m_pick = new WrappedLabel(this);
     m_pick->setObjectName(QStringLiteral("accuracyPick"));
-    m_pick->setWordWrap(true);
     m_pick->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(m_pick);
 

@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "accuracy.h"
+#include "elided_label.h"
 
 class QComboBox;
 class QLabel;
@@ -78,7 +79,7 @@ private:
     QTableWidget* m_table = nullptr;
     QLabel* m_plotLabel = nullptr;
     QLabel* m_heatLabel = nullptr;
-    QLabel* m_pick = nullptr;
+    WrappedLabel* m_pick = nullptr;
 };
 
 }  // namespace rasterlab

@@ -19,6 +19,7 @@
 #include "animation.h"
 #include "frame_trace.h"
 #include "number_text.h"
+#include "wrapping_check_box.h"
 
 namespace rasterlab {
 
@@ -26,7 +27,7 @@ AnimationPanel::AnimationPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("animationPanel"));
     auto* layout = new QVBoxLayout(this);
 
-    m_enabled = new QCheckBox(tr("Animate: each draw moved by M(t)"), this);
+    m_enabled = new WrappingCheckBox(tr("Animate: each draw moved by M(t)"), this);
     m_enabled->setObjectName(QStringLiteral("animationEnabled"));
     layout->addWidget(m_enabled);
 
@@ -65,11 +66,13 @@ AnimationPanel::AnimationPanel(QWidget* parent) : QWidget(parent) {
     m_speed->setObjectName(QStringLiteral("animationSpeed"));
     m_speed->setSuffix(tr(" °/s"));
     form->addRow(tr("Turn:"), m_speed);
-    m_cameraUp = new QCheckBox(tr("Turn about the camera's up (a turntable)"), this);
+    m_cameraUp = new WrappingCheckBox(tr("Turn about the camera's up (a turntable)"), this);
     m_cameraUp->setObjectName(QStringLiteral("animationCameraUp"));
     m_cameraUp->setChecked(true);
-    form->addRow(m_cameraUp);
+    // Long rows (Portuguese, presentation mode) put their field below their label.
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     layout->addLayout(form);
+    layout->addWidget(m_cameraUp);  // outside the form, where its text can wrap
     // The three vectors in a grid, a column per world axis, narrow enough for a side dock.
     auto* grid = new QGridLayout;
     grid->setHorizontalSpacing(4);

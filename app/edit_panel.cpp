@@ -26,6 +26,7 @@
 #include "course_writers.h"
 #include "examples.h"
 #include "scene_edits.h"
+#include "wrapping_check_box.h"
 
 namespace rasterlab {
 
@@ -375,7 +376,7 @@ QWidget* EditPanel::buildContent() {
 
 void EditPanel::addCheck(QGridLayout* grid, int row, Field field, const QString& text,
                          const QString& tip) {
-    auto* check = new QCheckBox(text);
+    auto* check = new WrappingCheckBox(text);
     check->setObjectName(QStringLiteral("edit_check_") + QLatin1String(symbolOf(field)));
     check->setToolTip(tip);
     grid->addWidget(check, row, 0, 1, 5);

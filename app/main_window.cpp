@@ -110,6 +110,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_normalFont = QApplication::font();
     m_normalPalette = QApplication::palette();
     m_inspection = new Inspection(this);
+    m_inspection->setWindowScalesText(true);  // setPresentationMode enlarges every text
     // The image, below a bar that shows only when clipping has left nothing to draw.
     auto* central = new QWidget(this);
     auto* centralLayout = new QVBoxLayout(central);
@@ -221,9 +222,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 }
 
 QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWidget* widget,
-                                 Qt::DockWidgetArea area, bool scrolls) {
+                                 Qt::DockWidgetArea area, bool scrolls, const QString& fullTitle) {
     auto* dock = new QDockWidget(title, this);
     dock->setObjectName(name);
+    // A short title for its tab; the full one in the tab's and the title bar's tooltip.
+    m_fullTitles.insert(dock, fullTitle.isEmpty() ? title : fullTitle);
+    dock->installEventFilter(this);
     if (!scrolls) {
         dock->setWidget(widget);
     } else {
@@ -259,26 +263,33 @@ void MainWindow::createDocks() {
     QDockWidget* messagesDock = addDock(tr("Messages"), QStringLiteral("messagesDock"), m_messages,
                                         Qt::BottomDockWidgetArea);
 
+    m_summary = new QTextBrowser;
+    m_summary->setObjectName(QStringLiteral("sceneSummary"));
+    QDockWidget* sceneDock = addDock(tr("Scene"), QStringLiteral("sceneDock"), m_summary,
+                                     Qt::BottomDockWidgetArea);
+    tabifyDockWidget(messagesDock, sceneDock);
+    messagesDock->raise();
+
+    // On the left, what the scene's numbers are and what they make of a pixel: the panels
+    // tabbed above the pixel inspector. (A dock is split from another before either is
+    // tabbed: split from a tabbed dock, it would join its tabs.)
     m_edit = new EditPanel(&m_document);
     QDockWidget* editDock =
         addDock(tr("Edit"), QStringLiteral("editDock"), m_edit, Qt::LeftDockWidgetArea, true);
-    m_summary = new QTextBrowser;
-    m_summary->setObjectName(QStringLiteral("sceneSummary"));
-    QDockWidget* sceneDock =
-        addDock(tr("Scene"), QStringLiteral("sceneDock"), m_summary, Qt::LeftDockWidgetArea);
-    tabifyDockWidget(editDock, sceneDock);
+    m_inspector = new PixelInspector(m_inspection);
+    QDockWidget* inspectorDock =
+        addDock(tr("7 Pixel inspector"), QStringLiteral("pixelInspectorDock"), m_inspector,
+                Qt::LeftDockWidgetArea, true, tr("7 Pixel inspector (lighting)"));
+    splitDockWidget(editDock, inspectorDock, Qt::Vertical);
     m_breakpoints = new BreakpointsView(m_inspection);
-    QDockWidget* breakpointsDock = addDock(tr("Breakpoints"), QStringLiteral("breakpointsDock"),
-                                           m_breakpoints, Qt::LeftDockWidgetArea);
-    tabifyDockWidget(editDock, breakpointsDock);
+    tabifyDockWidget(editDock, addDock(tr("Breakpoints"), QStringLiteral("breakpointsDock"),
+                                       m_breakpoints, Qt::LeftDockWidgetArea));
     m_accuracy = new AccuracyPanel;
-    QDockWidget* accuracyDock =
-        addDock(tr("Accuracy"), QStringLiteral("accuracyDock"), m_accuracy, Qt::LeftDockWidgetArea);
-    tabifyDockWidget(editDock, accuracyDock);
+    tabifyDockWidget(editDock, addDock(tr("Accuracy"), QStringLiteral("accuracyDock"), m_accuracy,
+                                       Qt::LeftDockWidgetArea, true));
     m_animation = new AnimationPanel;
-    QDockWidget* animationDock = addDock(tr("Animation"), QStringLiteral("animationDock"),
-                                         m_animation, Qt::LeftDockWidgetArea, true);
-    tabifyDockWidget(editDock, animationDock);
+    tabifyDockWidget(editDock, addDock(tr("Animation"), QStringLiteral("animationDock"),
+                                       m_animation, Qt::LeftDockWidgetArea, true));
     connect(m_animation, &AnimationPanel::changed, this, [this] {
         m_document.setAnimation(m_animation->settings());
         requestRender();
@@ -286,54 +297,44 @@ void MainWindow::createDocks() {
     connect(m_animation, &AnimationPanel::playingChanged, this, &MainWindow::onAnimationPlaying);
     editDock->raise();
 
-    // The stage views, in the lecture's order, tabbed on the right; the pixel inspector below.
+    // On the right, the stage views in the lecture's order: the geometry above (stages 1 to
+    // 4, and seed 002's clipping), the pixels below (5 and 6, seed 002's trapezoids and seed
+    // 004's painter's algorithm). Two tab bars short enough to read on a small screen; each
+    // view scrolls when the screen is too low for it.
+    const auto stageDock = [this](const QString& title, const char* name, QWidget* view,
+                                  const QString& fullTitle = {}) {
+        return addDock(title, QLatin1String(name), view, Qt::RightDockWidgetArea, true, fullTitle);
+    };
     m_cameraBasis = new CameraBasisView(m_inspection);
-    QDockWidget* cameraDock = addDock(tr("1 Camera basis"), QStringLiteral("cameraBasisDock"),
-                                      m_cameraBasis, Qt::RightDockWidgetArea);
-    m_inspector = new PixelInspector(m_inspection);
-    QDockWidget* inspectorDock =
-        addDock(tr("7 Pixel inspector (lighting)"), QStringLiteral("pixelInspectorDock"),
-                m_inspector, Qt::RightDockWidgetArea, true);
-    splitDockWidget(cameraDock, inspectorDock, Qt::Vertical);
-    m_vertexTable = new VertexTableView(m_inspection);
-    QDockWidget* vertexDock =
-        addDock(tr("2 View coordinates (vertices)"), QStringLiteral("vertexTableDock"),
-                m_vertexTable, Qt::RightDockWidgetArea);
-    tabifyDockWidget(cameraDock, vertexDock);
-    m_normals = new NormalsView(m_inspection);
-    QDockWidget* normalsDock =
-        addDock(tr("3 Normals"), QStringLiteral("normalsDock"), m_normals, Qt::RightDockWidgetArea);
-    tabifyDockWidget(cameraDock, normalsDock);
-    m_projection = new ProjectionView(m_inspection);
-    QDockWidget* projectionDock = addDock(tr("4 Projection"), QStringLiteral("projectionDock"),
-                                          m_projection, Qt::RightDockWidgetArea);
-    tabifyDockWidget(cameraDock, projectionDock);
+    QDockWidget* cameraDock =
+        stageDock(tr("1 Camera"), "cameraBasisDock", m_cameraBasis, tr("1 Camera basis"));
     m_scanline = new ScanlineView(m_inspection);
-    QDockWidget* scanlineDock = addDock(tr("5 Scan conversion"), QStringLiteral("scanlineDock"),
-                                        m_scanline, Qt::RightDockWidgetArea);
-    tabifyDockWidget(cameraDock, scanlineDock);
-    // Seed 002's presentations of the same two steps: clipping one triangle step by step,
-    // and the scan as trapezoids.
-    QDockWidget* nearClipDock =
-        addDock(tr("4b Near-plane clipping"), QStringLiteral("nearClipDock"),
-                new NearClipView(m_inspection), Qt::RightDockWidgetArea);
-    tabifyDockWidget(cameraDock, nearClipDock);
-    QDockWidget* trapezoidDock = addDock(tr("5b Trapezoids"), QStringLiteral("trapezoidDock"),
-                                         new TrapezoidView(m_inspection), Qt::RightDockWidgetArea);
-    tabifyDockWidget(cameraDock, trapezoidDock);
+    QDockWidget* scanlineDock =
+        stageDock(tr("5 Scan"), "scanlineDock", m_scanline, tr("5 Scan conversion"));
+    splitDockWidget(cameraDock, scanlineDock, Qt::Vertical);
+    m_vertexTable = new VertexTableView(m_inspection);
+    tabifyDockWidget(cameraDock, stageDock(tr("2 View"), "vertexTableDock", m_vertexTable,
+                                           tr("2 View coordinates (vertices)")));
+    m_normals = new NormalsView(m_inspection);
+    tabifyDockWidget(cameraDock, stageDock(tr("3 Normals"), "normalsDock", m_normals));
+    m_projection = new ProjectionView(m_inspection);
+    tabifyDockWidget(cameraDock, stageDock(tr("4 Projection"), "projectionDock", m_projection));
+    // Seed 002's presentations of stages 4 and 5: clipping one triangle step by step, and
+    // the scan as trapezoids.
+    tabifyDockWidget(cameraDock, stageDock(tr("4b Clipping"), "nearClipDock",
+                                           new NearClipView(m_inspection),
+                                           tr("4b Near-plane clipping (seed 002)")));
+    tabifyDockWidget(scanlineDock, stageDock(tr("5b Trapezoids"), "trapezoidDock",
+                                             new TrapezoidView(m_inspection),
+                                             tr("5b Trapezoids: the scan of seed 002")));
     m_zbuffer = new ZBufferView;
-    QDockWidget* zbufferDock = addDock(tr("6 Z-buffer"), QStringLiteral("zbufferDock"), m_zbuffer,
-                                       Qt::RightDockWidgetArea);
-    tabifyDockWidget(cameraDock, zbufferDock);
+    tabifyDockWidget(scanlineDock, stageDock(tr("6 Z-buffer"), "zbufferDock", m_zbuffer));
     // Seed 004's painter's algorithm beside the z-buffer (renders only while shown).
     m_painter = new PainterView(m_inspection);
-    QDockWidget* painterDock = addDock(tr("Painter's algorithm"), QStringLiteral("painterDock"),
-                                       m_painter, Qt::RightDockWidgetArea);
-    tabifyDockWidget(cameraDock, painterDock);
+    tabifyDockWidget(scanlineDock, stageDock(tr("Painter"), "painterDock", m_painter,
+                                             tr("Painter's algorithm (seed 004)")));
+    cameraDock->raise();
     scanlineDock->raise();
-    resizeDocks({editDock}, {360}, Qt::Horizontal);
-    resizeDocks({cameraDock}, {520}, Qt::Horizontal);
-    resizeDocks({cameraDock, inspectorDock}, {420, 420}, Qt::Vertical);
     resizeDocks({messagesDock}, {110}, Qt::Vertical);
 }
 
@@ -364,6 +365,8 @@ void MainWindow::setPresentationMode(bool on) {
                                              "breakpointsDock", "accuracyDock"};
     if (on) {
         m_layoutBeforePresentation = saveState(kLayoutVersion);
+        m_fitDocksBeforePresentation = m_fitDocks;
+        m_fitDocks = true;  // the docks sized again for the larger text and the whole screen
         m_wasFullScreen = isFullScreen();
         for (const char* name : kSideDocks)
             if (auto* dock = findChild<QDockWidget*>(QLatin1String(name))) dock->hide();
@@ -371,6 +374,7 @@ void MainWindow::setPresentationMode(bool on) {
     } else {
         if (!m_wasFullScreen) showNormal();
         restoreState(m_layoutBeforePresentation, kLayoutVersion);
+        m_fitDocks = m_fitDocksBeforePresentation;
     }
     if (on) {
         QFont big = m_normalFont;
@@ -399,10 +403,19 @@ void MainWindow::setPresentationMode(bool on) {
     }
     m_inspection->setPresentation(on);
     updateClickerKeys();
+    if (on) QMetaObject::invokeMethod(this, &MainWindow::fitDocks, Qt::QueuedConnection);
 }
 
 void MainWindow::resetLayout() {
+    if (isFilled()) {
+        centralWidget()->show();
+        m_layoutBeforeFill.clear();
+        m_filledDock = nullptr;
+        m_fillAction->setChecked(false);
+    }
     restoreState(m_defaultLayout, kLayoutVersion);
+    m_fitDocks = true;
+    fitDocks();
 }
 
 void MainWindow::saveLayout() const {
@@ -418,7 +431,9 @@ void MainWindow::restoreLayout() {
     const QSettings settings;
     if (settings.value(QStringLiteral("layout/version")).toInt() != kLayoutVersion) return;
     restoreGeometry(settings.value(QStringLiteral("layout/geometry")).toByteArray());
-    restoreState(settings.value(QStringLiteral("layout/state")).toByteArray(), kLayoutVersion);
+    // The user's layout: kept as it was, not fitted to the window.
+    m_fitDocks = !restoreState(settings.value(QStringLiteral("layout/state")).toByteArray(),
+                               kLayoutVersion);
 }
 
 void MainWindow::adoptDocument(const SceneDocument& document) {
@@ -450,6 +465,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     m_steppingBar->setPlaying(false);
     m_animation->setPlaying(false);
     if (m_inspection->presentation()) setPresentationMode(false);
+    restoreFill();  // the layout kept is the one a dock filled
     saveLayout();
     QMainWindow::closeEvent(event);
 }
@@ -949,6 +965,8 @@ void MainWindow::showShortcuts() {
     row(tr("Click, arrows"), tr("pick a pixel, move it by one"));
     row(QStringLiteral("Esc"), tr("let go of the picked pixel (on the image)"));
     row(QStringLiteral("F5, Esc"), tr("presentation mode on / off"));
+    row(tr("F11, double-click on a panel's title"),
+        tr("fill the window with the panel (the image, from the image), and back"));
     row(QStringLiteral("Ctrl+O, Ctrl+E, Ctrl+Shift+E"),
         tr("open, export the image, export it as displayed"));
     row(QStringLiteral("Ctrl+S, Ctrl+Z, Ctrl+Shift+Z"), tr("save, undo, redo"));

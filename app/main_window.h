@@ -14,8 +14,10 @@
 
 #include <QActionGroup>
 #include <QFileSystemWatcher>
+#include <QHash>
 #include <QMainWindow>
 #include <QElapsedTimer>
+#include <QPointer>
 #include <QTimer>
 
 #include <memory>
@@ -26,6 +28,7 @@
 #include "scene_document.h"
 
 class QDir;
+class QDockWidget;
 class QLabel;
 class QMenu;
 class QListWidget;
@@ -141,6 +144,16 @@ public:
     bool handOver();
     // The docks as they are when the window opens (View > Reset Layout).
     void resetLayout();
+    // View > Fill the Window (F11, or a double-click on a dock's title bar): one dock over the
+    // whole window, the others and the image hidden (for a projector); with no dock, the
+    // image alone. Again, the layout as it was. Without a dock given, the dock holding the
+    // focus or under the mouse.
+    void toggleFill(QDockWidget* dock = nullptr);
+    bool isFilled() const;
+    QDockWidget* filledDock() const;
+    // The docks' widths and heights for the window's size (the default layout, presentation
+    // mode): each side as wide as its tab bars need, the image the rest.
+    void fitDocks();
 
     // ---- Lessons (main_window_lessons.cpp) -----------------------------------------------
     // Opens a lesson file (lesson_file.h): its scene, settings, stepping and window. A part
@@ -171,7 +184,7 @@ public:
     // The layout (geometry, docks) is kept in QSettings under layout/, with this version: a
     // layout saved by another version is not restored. Only when the application has an
     // organization name (the program sets one; tests choose theirs).
-    static constexpr int kLayoutVersion = 2;
+    static constexpr int kLayoutVersion = 3;
     static constexpr int kMaxRecentFiles = 10;
     static constexpr int kMaxRecentLessons = 10;
 
@@ -181,6 +194,10 @@ signals:
     void languageChangeRequested(const QString& language);
 
 protected:
+    bool event(QEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
+    void showEvent(QShowEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
     void closeEvent(QCloseEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
@@ -215,7 +232,14 @@ private:
     void leaveLesson();
     void createDocks();
     QDockWidget* addDock(const QString& title, const QString& name, QWidget* widget,
-                         Qt::DockWidgetArea area, bool scrolls = false);
+                         Qt::DockWidgetArea area, bool scrolls = false,
+                         const QString& fullTitle = {});
+    // Dock layout (main_window_docks.cpp).
+    void updateDockTabTips();
+    QList<QDockWidget*> shownDocks(Qt::DockWidgetArea area) const;
+    int tabBarWidth(const QList<QDockWidget*>& docks) const;
+    void restoreFill();
+    QDockWidget* fillTarget() const;
     void requestRender();
     void updateTimeLabel();
     void updateBusy();
@@ -321,6 +345,12 @@ private:
     QList<QAction*> m_clickerActions;  // arrows and space: stepping in front of a class
     QAction* m_presentationAction = nullptr;
     QByteArray m_layoutBeforePresentation;
+    QHash<const QDockWidget*, QString> m_fullTitles;  // for the tooltips of short titles
+    bool m_fitDocks = true;  // the layout is the program's, not the user's: fit it to the window
+    bool m_fitDocksBeforePresentation = true;
+    QByteArray m_layoutBeforeFill;  // empty unless a dock fills the window
+    QPointer<QDockWidget> m_filledDock;
+    QAction* m_fillAction = nullptr;
     bool m_wasFullScreen = false;
     bool m_handingOver = false;
     QFont m_normalFont;

@@ -176,6 +176,13 @@ void MainWindow::createViewMenu() {
     for (QToolBar* bar : findChildren<QToolBar*>()) panels->addAction(bar->toggleViewAction());
     QAction* reset = view->addAction(tr("Reset &Layout"), this, &MainWindow::resetLayout);
     reset->setObjectName(QStringLiteral("resetLayoutAction"));
+    m_fillAction = view->addAction(tr("Fill the &Window with a Panel"));
+    m_fillAction->setObjectName(QStringLiteral("fillWindowAction"));
+    m_fillAction->setCheckable(true);
+    m_fillAction->setShortcut(QKeySequence(Qt::Key_F11));
+    m_fillAction->setToolTip(tr("The panel with the focus or under the mouse (the image, from the "
+                                "image) over the whole window; again, the layout back"));
+    connect(m_fillAction, &QAction::triggered, this, [this] { toggleFill(); });
     view->addSeparator();
     // The images a command file names (its png commands): one is shown at a time.
     m_imageMenu = view->addMenu(tr("I&mage"));

@@ -142,17 +142,17 @@
         <translation>Errors in byte steps (1/255) over the pixels both images cover</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="87"/>
+        <location filename="../app/accuracy_panel.cpp" line="90"/>
         <source>Click a pixel to compare the mode with the reference there</source>
         <translation>Click a pixel to compare the mode with the reference there</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="120"/>
+        <location filename="../app/accuracy_panel.cpp" line="123"/>
         <source>The scene changed: measure again.</source>
         <translation>The scene changed: measure again.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/accuracy_panel.cpp" line="142"/>
+        <location filename="../app/accuracy_panel.cpp" line="145"/>
         <source>Measuring %n mode(s) against the exact reference...</source>
         <translation>
             <numerusform>Measuring %n mode against the exact reference...</numerusform>
@@ -160,37 +160,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="177"/>
+        <location filename="../app/accuracy_panel.cpp" line="180"/>
         <source>Cancelled.</source>
         <translation>Cancelled.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="178"/>
+        <location filename="../app/accuracy_panel.cpp" line="181"/>
         <source>The measurement failed: %1</source>
         <translation>The measurement failed: %1</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="184"/>
+        <location filename="../app/accuracy_panel.cpp" line="187"/>
         <source>%1 at %2x%3: %4 modes; the exact reference cast %5 rays in %6 ms.</source>
         <translation>%1 at %2x%3: %4 modes; the exact reference cast %5 rays in %6 ms.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="211"/>
+        <location filename="../app/accuracy_panel.cpp" line="214"/>
         <source>Error against run time: %1, %2x%3</source>
         <translation>Error against run time: %1, %2x%3</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="258"/>
+        <location filename="../app/accuracy_panel.cpp" line="261"/>
         <source>%1 (%2): coverage differs on %3 pixels (%4); the largest error, %5 byte steps, is at (%6, %7). Click the map to compare a pixel.</source>
         <translation>%1 (%2): coverage differs on %3 pixels (%4); the largest error, %5 byte steps, is at (%6, %7). Click the map to compare a pixel.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="277"/>
+        <location filename="../app/accuracy_panel.cpp" line="280"/>
         <source>Pixel (%1, %2), %3: mode %4, reference %5, difference %6 (byte steps).</source>
         <translation>Pixel (%1, %2), %3: mode %4, reference %5, difference %6 (byte steps).</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="283"/>
+        <location filename="../app/accuracy_panel.cpp" line="286"/>
         <source>Coverage differs: %1 of %2 samples covered by the mode, %3 by the reference.</source>
         <translation>Coverage differs: %1 of %2 samples covered by the mode, %3 by the reference.</translation>
     </message>
@@ -198,88 +198,88 @@
 <context>
     <name>rasterlab::AnimationPanel</name>
     <message>
-        <location filename="../app/animation_panel.cpp" line="29"/>
+        <location filename="../app/animation_panel.cpp" line="30"/>
         <source>Animate: each draw moved by M(t)</source>
         <translation>Animate: each draw moved by M(t)</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="34"/>
-        <location filename="../app/animation_panel.cpp" line="207"/>
+        <location filename="../app/animation_panel.cpp" line="35"/>
+        <location filename="../app/animation_panel.cpp" line="210"/>
         <source>Play</source>
         <translation>Play</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="39"/>
+        <location filename="../app/animation_panel.cpp" line="40"/>
         <source>Play or pause the animation; paused, every stage view inspects the frame shown</source>
         <translation>Play or pause the animation; paused, every stage view inspects the frame shown</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="60"/>
+        <location filename="../app/animation_panel.cpp" line="61"/>
         <source>Frames:</source>
         <translation>Frames:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="63"/>
+        <location filename="../app/animation_panel.cpp" line="64"/>
         <source>Frames a second:</source>
         <translation>Frames a second:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="66"/>
+        <location filename="../app/animation_panel.cpp" line="67"/>
         <source> °/s</source>
         <translation> °/s</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="67"/>
+        <location filename="../app/animation_panel.cpp" line="68"/>
         <source>Turn:</source>
         <translation>Turn:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="68"/>
+        <location filename="../app/animation_panel.cpp" line="69"/>
         <source>Turn about the camera&apos;s up (a turntable)</source>
         <translation>Turn about the camera&apos;s up (a turntable)</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="94"/>
+        <location filename="../app/animation_panel.cpp" line="97"/>
         <source>Axis:</source>
         <translation>Axis:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="96"/>
+        <location filename="../app/animation_panel.cpp" line="99"/>
         <source>Moves (units/s):</source>
         <translation>Moves (units/s):</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="97"/>
+        <location filename="../app/animation_panel.cpp" line="100"/>
         <source>Scale:</source>
         <translation>Scale:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="108"/>
+        <location filename="../app/animation_panel.cpp" line="111"/>
         <source>&lt;i&gt;The animation belongs to this session: course files have no such field, and saving the camera or lighting does not write it.&lt;/i&gt;</source>
         <translation>&lt;i&gt;The animation belongs to this session: course files have no such field, and saving the camera or lighting does not write it.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="207"/>
+        <location filename="../app/animation_panel.cpp" line="210"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="219"/>
+        <location filename="../app/animation_panel.cpp" line="222"/>
         <source>Frame %1 of %2, t = %3 / %4 = %5 s</source>
         <translation>Frame %1 of %2, t = %3 / %4 = %5 s</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="238"/>
+        <location filename="../app/animation_panel.cpp" line="241"/>
         <source>&lt;p&gt;M(t) = T(v t) · T(c) · R(axis, ω t) · S · T(−c): not applied (the animation is off, so M is the identity).&lt;/p&gt;</source>
         <translation>&lt;p&gt;M(t) = T(v t) · T(c) · R(axis, ω t) · S · T(−c): not applied (the animation is off, so M is the identity).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="254"/>
+        <location filename="../app/animation_panel.cpp" line="257"/>
         <source>&lt;p&gt;M(t) = T(v t) · T(c) · R(axis, ω t) · S · T(−c), at t = %1 s:&lt;br&gt;c = %2 (the centre of the bounding box), axis = %3,&lt;br&gt;ω t = %4 °/s · %1 s = %5°, v t = %6, S = diag%7&lt;/p&gt;</source>
         <translation>&lt;p&gt;M(t) = T(v t) · T(c) · R(axis, ω t) · S · T(−c), at t = %1 s:&lt;br&gt;c = %2 (the centre of the bounding box), axis = %3,&lt;br&gt;ω t = %4 °/s · %1 s = %5°, v t = %6, S = diag%7&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="262"/>
+        <location filename="../app/animation_panel.cpp" line="265"/>
         <source>&lt;p&gt;Normals are moved by the inverse transpose of M (stage 3).&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normals are moved by the inverse transpose of M (stage 3).&lt;/p&gt;</translation>
     </message>
@@ -454,117 +454,117 @@
         <translation>Next step</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="562"/>
+        <location filename="../views/camera_basis_view.cpp" line="561"/>
         <source>The camera was rejected: %1</source>
         <translation>The camera was rejected: %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="565"/>
+        <location filename="../views/camera_basis_view.cpp" line="564"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="567"/>
+        <location filename="../views/camera_basis_view.cpp" line="566"/>
         <source>This stage is skipped: %1.</source>
         <translation>This stage is skipped: %1.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="569"/>
+        <location filename="../views/camera_basis_view.cpp" line="568"/>
         <source>the frame has no camera basis</source>
         <translation>the frame has no camera basis</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="576"/>
+        <location filename="../views/camera_basis_view.cpp" line="575"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; From the course camera (C, N, V) Gram-Schmidt makes the orthonormal basis U, V, N of view space. A scene whose draws carry their own model/view matrices (HW2 command files) has no course camera: this stage does nothing for it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; From the course camera (C, N, V) Gram-Schmidt makes the orthonormal basis U, V, N of view space. A scene whose draws carry their own model/view matrices (HW2 command files) has no course camera: this stage does nothing for it.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="589"/>
+        <location filename="../views/camera_basis_view.cpp" line="588"/>
         <source>N and V are nearly parallel: |V − (V·N) N| / |V| = %1, below %2. The basis is ill-conditioned: a tiny change of N or V turns U and V a lot. Choose a V further from N.</source>
         <translation>N and V are nearly parallel: |V − (V·N) N| / |V| = %1, below %2. The basis is ill-conditioned: a tiny change of N or V turns U and V a lot. Choose a V further from N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="594"/>
+        <location filename="../views/camera_basis_view.cpp" line="593"/>
         <source>1. N := N / |N| = %1 / %2 = %3</source>
         <translation>1. N := N / |N| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="596"/>
+        <location filename="../views/camera_basis_view.cpp" line="595"/>
         <source>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</source>
         <translation>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="598"/>
+        <location filename="../views/camera_basis_view.cpp" line="597"/>
         <source>3. V := V / |V| = %1 / %2 = %3</source>
         <translation>3. V := V / |V| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="600"/>
+        <location filename="../views/camera_basis_view.cpp" line="599"/>
         <source>4. U := N × V = %1 × %2 = %3</source>
         <translation>4. U := N × V = %1 × %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="602"/>
+        <location filename="../views/camera_basis_view.cpp" line="601"/>
         <source>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; largest %7</source>
         <translation>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; largest %7</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="626"/>
+        <location filename="../views/camera_basis_view.cpp" line="625"/>
         <source>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): rows U, V, N, then (0 0 0 1); the last column is −U·C, −V·C, −N·C.</source>
         <translation>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): rows U, V, N, then (0 0 0 1); the last column is −U·C, −V·C, −N·C.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="638"/>
+        <location filename="../views/camera_basis_view.cpp" line="637"/>
         <source>&lt;p&gt;Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="641"/>
+        <location filename="../views/camera_basis_view.cpp" line="640"/>
         <source>, in front of the camera (z &gt; 0)</source>
         <translation>, in front of the camera (z &gt; 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="642"/>
+        <location filename="../views/camera_basis_view.cpp" line="641"/>
         <source>, behind the camera (z ≤ 0)</source>
         <translation>, behind the camera (z ≤ 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="645"/>
+        <location filename="../views/camera_basis_view.cpp" line="644"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; Gram-Schmidt keeps the direction of N (where the camera looks), removes from V its part along N so that up is perpendicular to the view direction, and completes the frame with U = N × V, the image&apos;s right. viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; Gram-Schmidt keeps the direction of N (where the camera looks), removes from V its part along N so that up is perpendicular to the view direction, and completes the frame with U = N × V, the image&apos;s right. viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="677"/>
+        <location filename="../views/camera_basis_view.cpp" line="676"/>
         <source>Step %1 of 4</source>
         <translation>Step %1 of 4</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="691"/>
+        <location filename="../views/camera_basis_view.cpp" line="690"/>
         <source>Step forward to normalise N.</source>
         <translation>Step forward to normalise N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="692"/>
+        <location filename="../views/camera_basis_view.cpp" line="691"/>
         <source>Step forward to remove from V its part along N.</source>
         <translation>Step forward to remove from V its part along N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="693"/>
+        <location filename="../views/camera_basis_view.cpp" line="692"/>
         <source>Step forward to normalise V.</source>
         <translation>Step forward to normalise V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="694"/>
+        <location filename="../views/camera_basis_view.cpp" line="693"/>
         <source>Step forward to make U = N × V.</source>
         <translation>Step forward to make U = N × V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="695"/>
+        <location filename="../views/camera_basis_view.cpp" line="694"/>
         <source>The basis is complete; the frustum is drawn with it.</source>
         <translation>The basis is complete; the frustum is drawn with it.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="708"/>
+        <location filename="../views/camera_basis_view.cpp" line="707"/>
         <source>&lt;b&gt;Orthonormality residuals&lt;/b&gt; (0 up to rounding): %1</source>
         <translation>&lt;b&gt;Orthonormality residuals&lt;/b&gt; (0 up to rounding): %1</translation>
     </message>
@@ -572,403 +572,403 @@
 <context>
     <name>rasterlab::EditPanel</name>
     <message>
-        <location filename="../app/edit_panel.cpp" line="215"/>
+        <location filename="../app/edit_panel.cpp" line="216"/>
         <source>One kd for the three channels (the UFPE files have one number): changing one changes all three</source>
         <translation>One kd for the three channels (the UFPE files have one number): changing one changes all three</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="256"/>
+        <location filename="../app/edit_panel.cpp" line="257"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="256"/>
+        <location filename="../app/edit_panel.cpp" line="257"/>
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="256"/>
+        <location filename="../app/edit_panel.cpp" line="257"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="259"/>
-        <location filename="../app/edit_panel.cpp" line="691"/>
+        <location filename="../app/edit_panel.cpp" line="260"/>
+        <location filename="../app/edit_panel.cpp" line="692"/>
         <source>Camera</source>
         <translation>Camera</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="261"/>
+        <location filename="../app/edit_panel.cpp" line="262"/>
         <source>C: the camera&apos;s position (world)</source>
         <translation>C: the camera&apos;s position (world)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="264"/>
+        <location filename="../app/edit_panel.cpp" line="265"/>
         <source>N: the view direction (normalised by the camera basis)</source>
         <translation>N: the view direction (normalised by the camera basis)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="266"/>
+        <location filename="../app/edit_panel.cpp" line="267"/>
         <source>V: the up vector (made orthogonal to N by Gram-Schmidt)</source>
         <translation>V: the up vector (made orthogonal to N by Gram-Schmidt)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="268"/>
+        <location filename="../app/edit_panel.cpp" line="269"/>
         <source>d: the distance from C to the projection plane</source>
         <translation>d: the distance from C to the projection plane</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="270"/>
+        <location filename="../app/edit_panel.cpp" line="271"/>
         <source>hx: half the width of the window on the projection plane</source>
         <translation>hx: half the width of the window on the projection plane</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="272"/>
+        <location filename="../app/edit_panel.cpp" line="273"/>
         <source>hy: half the height of the window on the projection plane</source>
         <translation>hy: half the height of the window on the projection plane</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="276"/>
+        <location filename="../app/edit_panel.cpp" line="277"/>
         <source>Light</source>
         <translation>Light</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="279"/>
+        <location filename="../app/edit_panel.cpp" line="280"/>
         <source>The light whose values are shown</source>
         <translation>The light whose values are shown</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="285"/>
+        <location filename="../app/edit_panel.cpp" line="286"/>
         <source>Add a light: a copy of the light shown</source>
         <translation>Add a light: a copy of the light shown</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="290"/>
+        <location filename="../app/edit_panel.cpp" line="291"/>
         <source>Remove the light shown (the scene keeps one light at least)</source>
         <translation>Remove the light shown (the scene keeps one light at least)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="299"/>
+        <location filename="../app/edit_panel.cpp" line="300"/>
         <source>Pl: the light&apos;s position (world), or the direction toward it for a directional light</source>
         <translation>Pl: the light&apos;s position (world), or the direction toward it for a directional light</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="302"/>
+        <location filename="../app/edit_panel.cpp" line="303"/>
         <source>Directional (w = 0)</source>
         <translation>Directional (w = 0)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="303"/>
+        <location filename="../app/edit_panel.cpp" line="304"/>
         <source>A directional light is infinitely far: L is the same everywhere and it is not attenuated</source>
         <translation>A directional light is infinitely far: L is the same everywhere and it is not attenuated</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="307"/>
+        <location filename="../app/edit_panel.cpp" line="308"/>
         <source>Il: the light&apos;s colour, 0 to 255 per channel</source>
         <translation>Il: the light&apos;s colour, 0 to 255 per channel</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="311"/>
+        <location filename="../app/edit_panel.cpp" line="312"/>
         <source>att</source>
         <translation>att</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="312"/>
+        <location filename="../app/edit_panel.cpp" line="313"/>
         <source>Attenuation: the light&apos;s diffuse and specular terms are divided by kc + kl d + kq d², d its distance to the point (1 0 0: none)</source>
         <translation>Attenuation: the light&apos;s diffuse and specular terms are divided by kc + kl d + kq d², d its distance to the point (1 0 0: none)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="315"/>
+        <location filename="../app/edit_panel.cpp" line="316"/>
         <source>Spot</source>
         <translation>Spot</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="316"/>
+        <location filename="../app/edit_panel.cpp" line="317"/>
         <source>A spot lights only the points within its cutoff angle of its direction</source>
         <translation>A spot lights only the points within its cutoff angle of its direction</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="319"/>
+        <location filename="../app/edit_panel.cpp" line="320"/>
         <source>D: the direction the spot points to (world)</source>
         <translation>D: the direction the spot points to (world)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="320"/>
+        <location filename="../app/edit_panel.cpp" line="321"/>
         <source>cut</source>
         <translation>cut</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="321"/>
+        <location filename="../app/edit_panel.cpp" line="322"/>
         <source>The spot&apos;s cutoff angle, 0 to 90 degrees</source>
         <translation>The spot&apos;s cutoff angle, 0 to 90 degrees</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="322"/>
+        <location filename="../app/edit_panel.cpp" line="323"/>
         <source>exp</source>
         <translation>exp</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="323"/>
+        <location filename="../app/edit_panel.cpp" line="324"/>
         <source>The spot&apos;s exponent: its light falls off as (-L.D)^exp toward the edge</source>
         <translation>The spot&apos;s exponent: its light falls off as (-L.D)^exp toward the edge</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="327"/>
+        <location filename="../app/edit_panel.cpp" line="328"/>
         <source>Ambient</source>
         <translation>Ambient</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="330"/>
+        <location filename="../app/edit_panel.cpp" line="331"/>
         <source>Ia: the ambient light&apos;s colour, 0 to 255 per channel</source>
         <translation>Ia: the ambient light&apos;s colour, 0 to 255 per channel</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="332"/>
+        <location filename="../app/edit_panel.cpp" line="333"/>
         <source>ka: the ambient coefficient, 0 to 1</source>
         <translation>ka: the ambient coefficient, 0 to 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="335"/>
+        <location filename="../app/edit_panel.cpp" line="336"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="338"/>
+        <location filename="../app/edit_panel.cpp" line="339"/>
         <source>kd: the diffuse coefficient of each channel, 0 to 1</source>
         <translation>kd: the diffuse coefficient of each channel, 0 to 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="341"/>
+        <location filename="../app/edit_panel.cpp" line="342"/>
         <source>Od: the object&apos;s diffuse colour, 0 to 1 per channel</source>
         <translation>Od: the object&apos;s diffuse colour, 0 to 1 per channel</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="343"/>
+        <location filename="../app/edit_panel.cpp" line="344"/>
         <source>Ke: the light the object gives off by itself, 0 to 255 per channel (added to every lit point)</source>
         <translation>Ke: the light the object gives off by itself, 0 to 255 per channel (added to every lit point)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="347"/>
+        <location filename="../app/edit_panel.cpp" line="348"/>
         <source>ks: the specular coefficient, 0 to 1</source>
         <translation>ks: the specular coefficient, 0 to 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="349"/>
+        <location filename="../app/edit_panel.cpp" line="350"/>
         <source>n: the specular exponent (larger: a smaller, sharper highlight)</source>
         <translation>n: the specular exponent (larger: a smaller, sharper highlight)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="353"/>
+        <location filename="../app/edit_panel.cpp" line="354"/>
         <source>Shading</source>
         <translation>Shading</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="356"/>
+        <location filename="../app/edit_panel.cpp" line="357"/>
         <source>Phong (per pixel)</source>
         <translation>Phong (per pixel)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="357"/>
+        <location filename="../app/edit_panel.cpp" line="358"/>
         <source>Gouraud (per vertex)</source>
         <translation>Gouraud (per vertex)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="358"/>
+        <location filename="../app/edit_panel.cpp" line="359"/>
         <source>Flat (per triangle)</source>
         <translation>Flat (per triangle)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="359"/>
+        <location filename="../app/edit_panel.cpp" line="360"/>
         <source>Painter&apos;s algorithm (flat, no depth test)</source>
         <translation>Painter&apos;s algorithm (flat, no depth test)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="363"/>
+        <location filename="../app/edit_panel.cpp" line="364"/>
         <source>Two-sided lighting</source>
         <translation>Two-sided lighting</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="364"/>
+        <location filename="../app/edit_panel.cpp" line="365"/>
         <source>On (the course&apos;s rule): where V.N &lt; 0 the normal is turned round, so the back of a surface is lit like its front. Off: one-sided, the back keeps a normal pointing away</source>
         <translation>On (the course&apos;s rule): where V.N &lt; 0 the normal is turned round, so the back of a surface is lit like its front. Off: one-sided, the back keeps a normal pointing away</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="367"/>
+        <location filename="../app/edit_panel.cpp" line="368"/>
         <source>Blinn-Phong highlight</source>
         <translation>Blinn-Phong highlight</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="368"/>
+        <location filename="../app/edit_panel.cpp" line="369"/>
         <source>The highlight with the half vector H = (L + V)/|L + V| instead of Phong&apos;s reflection R: (N.H)^n instead of (R.V)^n</source>
         <translation>The highlight with the half vector H = (L + V)/|L + V| instead of Phong&apos;s reflection R: (N.H)^n instead of (R.V)^n</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="432"/>
+        <location filename="../app/edit_panel.cpp" line="433"/>
         <source>Add light %1</source>
         <translation>Add light %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="439"/>
+        <location filename="../app/edit_panel.cpp" line="440"/>
         <source>Remove light %1</source>
         <translation>Remove light %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="464"/>
+        <location filename="../app/edit_panel.cpp" line="465"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="467"/>
+        <location filename="../app/edit_panel.cpp" line="468"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="471"/>
+        <location filename="../app/edit_panel.cpp" line="472"/>
         <source>&amp;Save Camera and Lighting</source>
         <translation>&amp;Save Camera and Lighting</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="474"/>
+        <location filename="../app/edit_panel.cpp" line="475"/>
         <source>Write the edited camera and lighting to their files</source>
         <translation>Write the edited camera and lighting to their files</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="480"/>
+        <location filename="../app/edit_panel.cpp" line="481"/>
         <source>&amp;Camera...</source>
         <translation>&amp;Camera...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="482"/>
+        <location filename="../app/edit_panel.cpp" line="483"/>
         <source>&amp;Lighting...</source>
         <translation>&amp;Lighting...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="485"/>
+        <location filename="../app/edit_panel.cpp" line="486"/>
         <source>Save &amp;As</source>
         <translation>Save &amp;As</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="527"/>
+        <location filename="../app/edit_panel.cpp" line="528"/>
         <source>Light %1 of %2</source>
         <translation>Light %1 of %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="608"/>
+        <location filename="../app/edit_panel.cpp" line="609"/>
         <source>Change %1</source>
         <translation>Change %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="677"/>
+        <location filename="../app/edit_panel.cpp" line="678"/>
         <source>A command file is shown: its scene is not edited here.</source>
         <translation>A command file is shown: its scene is not edited here.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="683"/>
+        <location filename="../app/edit_panel.cpp" line="684"/>
         <source>built-in scene</source>
         <translation>built-in scene</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="687"/>
+        <location filename="../app/edit_panel.cpp" line="688"/>
         <source>modified</source>
         <translation>modified</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="693"/>
+        <location filename="../app/edit_panel.cpp" line="694"/>
         <source>Lighting</source>
         <translation>Lighting</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="703"/>
+        <location filename="../app/edit_panel.cpp" line="704"/>
         <source>shading</source>
         <translation>shading</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="705"/>
+        <location filename="../app/edit_panel.cpp" line="706"/>
         <source>two-sided lighting</source>
         <translation>two-sided lighting</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="707"/>
+        <location filename="../app/edit_panel.cpp" line="708"/>
         <source>the highlight&apos;s model</source>
         <translation>the highlight&apos;s model</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="709"/>
+        <location filename="../app/edit_panel.cpp" line="710"/>
         <source>directional</source>
         <translation>directional</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="712"/>
+        <location filename="../app/edit_panel.cpp" line="713"/>
         <source>spot cutoff</source>
         <translation>spot cutoff</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="715"/>
+        <location filename="../app/edit_panel.cpp" line="716"/>
         <source>spot exponent</source>
         <translation>spot exponent</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="718"/>
+        <location filename="../app/edit_panel.cpp" line="719"/>
         <source>spot direction</source>
         <translation>spot direction</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="721"/>
+        <location filename="../app/edit_panel.cpp" line="722"/>
         <source>attenuation</source>
         <translation>attenuation</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="731"/>
+        <location filename="../app/edit_panel.cpp" line="732"/>
         <source>%1 of light %2</source>
         <translation>%1 of light %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="740"/>
+        <location filename="../app/edit_panel.cpp" line="741"/>
         <source>The camera was not saved.</source>
         <translation>The camera was not saved.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="740"/>
+        <location filename="../app/edit_panel.cpp" line="741"/>
         <source>The lighting was not saved.</source>
         <translation>The lighting was not saved.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="816"/>
+        <location filename="../app/edit_panel.cpp" line="817"/>
         <source>The camera has changes that are not saved (%1).</source>
         <translation>The camera has changes that are not saved (%1).</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="817"/>
+        <location filename="../app/edit_panel.cpp" line="818"/>
         <source>The lighting has changes that are not saved (%1).</source>
         <translation>The lighting has changes that are not saved (%1).</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="739"/>
+        <location filename="../app/edit_panel.cpp" line="740"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="795"/>
+        <location filename="../app/edit_panel.cpp" line="796"/>
         <source>Save Camera As</source>
         <translation>Save Camera As</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="795"/>
+        <location filename="../app/edit_panel.cpp" line="796"/>
         <source>Save Lighting As</source>
         <translation>Save Lighting As</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="813"/>
+        <location filename="../app/edit_panel.cpp" line="814"/>
         <source>the built-in scene</source>
         <translation>the built-in scene</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="815"/>
+        <location filename="../app/edit_panel.cpp" line="816"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="822"/>
+        <location filename="../app/edit_panel.cpp" line="823"/>
         <source>Save them?</source>
         <translation>Save them?</translation>
     </message>
@@ -1080,96 +1080,86 @@
         <translation>RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="168"/>
+        <location filename="../app/main_window.cpp" line="169"/>
         <source>Stopped at a breakpoint: %1</source>
         <translation>Stopped at a breakpoint: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="195"/>
+        <location filename="../app/main_window.cpp" line="196"/>
         <location filename="../app/main_window_export.cpp" line="81"/>
         <location filename="../app/main_window_export.cpp" line="118"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="196"/>
+        <location filename="../app/main_window.cpp" line="197"/>
         <source>Stop preparing the stepping of this frame</source>
         <translation>Stop preparing the stepping of this frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="200"/>
+        <location filename="../app/main_window.cpp" line="201"/>
         <source>cancelled</source>
         <translation>cancelled</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="249"/>
+        <location filename="../app/main_window.cpp" line="253"/>
         <source>Stepping</source>
         <translation>Stepping</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="263"/>
+        <location filename="../app/main_window.cpp" line="277"/>
         <source>Edit</source>
         <translation>Edit</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="270"/>
+        <location filename="../app/main_window.cpp" line="284"/>
         <source>Breakpoints</source>
         <translation>Breakpoints</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="278"/>
+        <location filename="../app/main_window.cpp" line="290"/>
         <source>Animation</source>
         <translation>Animation</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="290"/>
+        <location filename="../app/main_window.cpp" line="309"/>
         <source>1 Camera basis</source>
         <translation>1 Camera basis</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="294"/>
+        <location filename="../app/main_window.cpp" line="281"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Pixel inspector (lighting)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="299"/>
+        <location filename="../app/main_window.cpp" line="316"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 View coordinates (vertices)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="304"/>
+        <location filename="../app/main_window.cpp" line="318"/>
         <source>3 Normals</source>
         <translation>3 Normals</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="307"/>
+        <location filename="../app/main_window.cpp" line="320"/>
         <source>4 Projection</source>
         <translation>4 Projection</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="311"/>
+        <location filename="../app/main_window.cpp" line="312"/>
         <source>5 Scan conversion</source>
         <translation>5 Scan conversion</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="317"/>
-        <source>4b Near-plane clipping</source>
-        <translation>4b Near-plane clipping</translation>
-    </message>
-    <message>
-        <location filename="../app/main_window.cpp" line="320"/>
+        <location filename="../app/main_window.cpp" line="326"/>
         <source>5b Trapezoids</source>
         <translation>5b Trapezoids</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="324"/>
+        <location filename="../app/main_window.cpp" line="330"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
-    </message>
-    <message>
-        <location filename="../app/main_window.cpp" line="329"/>
-        <source>Painter&apos;s algorithm</source>
-        <translation>Painter&apos;s algorithm</translation>
     </message>
     <message>
         <location filename="../app/main_window_actions.cpp" line="43"/>
@@ -1182,37 +1172,37 @@
         <translation>&amp;Animation Frames...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="268"/>
+        <location filename="../app/main_window_actions.cpp" line="275"/>
         <source>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</source>
         <translation>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="890"/>
+        <location filename="../app/main_window.cpp" line="906"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>step forward, back (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="892"/>
+        <location filename="../app/main_window.cpp" line="908"/>
         <source>Space</source>
         <translation>Space</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="892"/>
+        <location filename="../app/main_window.cpp" line="908"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>play / pause (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="898"/>
+        <location filename="../app/main_window.cpp" line="914"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>let go of the picked pixel (on the image)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="899"/>
+        <location filename="../app/main_window.cpp" line="915"/>
         <source>presentation mode on / off</source>
         <translation>presentation mode on / off</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="902"/>
+        <location filename="../app/main_window.cpp" line="920"/>
         <source>save, undo, redo</source>
         <translation>save, undo, redo</translation>
     </message>
@@ -1222,7 +1212,7 @@
         <translation>Open &amp;Camera...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="122"/>
+        <location filename="../app/main_window.cpp" line="123"/>
         <source>Draw with the Plain Divide</source>
         <translation>Draw with the Plain Divide</translation>
     </message>
@@ -1377,177 +1367,197 @@
         <translation>Reset &amp;Layout</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="172"/>
+        <location filename="../app/main_window_actions.cpp" line="167"/>
+        <source>Fill the &amp;Window with a Panel</source>
+        <translation>Fill the &amp;Window with a Panel</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_actions.cpp" line="171"/>
+        <source>The panel with the focus or under the mouse (the image, from the image) over the whole window; again, the layout back</source>
+        <translation>The panel with the focus or under the mouse (the image, from the image) over the whole window; again, the layout back</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_actions.cpp" line="179"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Presentation Mode</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="177"/>
+        <location filename="../app/main_window_actions.cpp" line="184"/>
         <source>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</source>
         <translation>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="192"/>
+        <location filename="../app/main_window_actions.cpp" line="199"/>
         <source>The System&apos;s</source>
         <translation>The System&apos;s</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="211"/>
+        <location filename="../app/main_window_actions.cpp" line="218"/>
         <source>S&amp;tep</source>
         <translation>S&amp;tep</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="231"/>
+        <location filename="../app/main_window_actions.cpp" line="238"/>
         <source>Pick the Pixel Under the &amp;Mouse</source>
         <translation>Pick the Pixel Under the &amp;Mouse</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="232"/>
+        <location filename="../app/main_window_actions.cpp" line="239"/>
         <source>Ctrl+G</source>
         <translation>Ctrl+G</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="261"/>
+        <location filename="../app/main_window_actions.cpp" line="268"/>
         <source>&amp;Shading</source>
         <translation>&amp;Shading</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="265"/>
+        <location filename="../app/main_window_actions.cpp" line="272"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (per pixel)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="266"/>
+        <location filename="../app/main_window_actions.cpp" line="273"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (per vertex)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="267"/>
+        <location filename="../app/main_window_actions.cpp" line="274"/>
         <source>&amp;Flat (per triangle)</source>
         <translation>&amp;Flat (per triangle)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="309"/>
+        <location filename="../app/main_window_actions.cpp" line="316"/>
         <source>Pro&amp;jection</source>
         <translation>Pro&amp;jection</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="314"/>
+        <location filename="../app/main_window_actions.cpp" line="321"/>
         <source>&amp;Clip at the Near Plane (nothing behind the eye is divided)</source>
         <translation>&amp;Clip at the Near Plane (nothing behind the eye is divided)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="316"/>
+        <location filename="../app/main_window_actions.cpp" line="323"/>
         <source>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</source>
         <translation>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="318"/>
+        <location filename="../app/main_window_actions.cpp" line="325"/>
         <source>&amp;Same Side (clip only triangles that cross the eye plane)</source>
         <translation>&amp;Same Side (clip only triangles that cross the eye plane)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="578"/>
+        <location filename="../app/main_window.cpp" line="594"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="834"/>
+        <location filename="../app/main_window.cpp" line="850"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="887"/>
+        <location filename="../app/main_window.cpp" line="903"/>
         <source>step forward</source>
         <translation>step forward</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="888"/>
+        <location filename="../app/main_window.cpp" line="904"/>
         <source>step back</source>
         <translation>step back</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="891"/>
+        <location filename="../app/main_window.cpp" line="907"/>
         <source>play / pause</source>
         <translation>play / pause</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="893"/>
+        <location filename="../app/main_window.cpp" line="909"/>
         <source>jump to the start / the end of the frame</source>
         <translation>jump to the start / the end of the frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="894"/>
+        <location filename="../app/main_window.cpp" line="910"/>
         <source>continue to the next breakpoint</source>
         <translation>continue to the next breakpoint</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="895"/>
+        <location filename="../app/main_window.cpp" line="911"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>step by stage, triangle, scanline, span, pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="896"/>
+        <location filename="../app/main_window.cpp" line="912"/>
         <source>show a stage&apos;s view</source>
         <translation>show a stage&apos;s view</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="897"/>
+        <location filename="../app/main_window.cpp" line="913"/>
         <source>Click, arrows</source>
         <translation>Click, arrows</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="897"/>
+        <location filename="../app/main_window.cpp" line="913"/>
         <source>pick a pixel, move it by one</source>
         <translation>pick a pixel, move it by one</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="901"/>
+        <location filename="../app/main_window.cpp" line="916"/>
+        <source>F11, double-click on a panel&apos;s title</source>
+        <translation>F11, double-click on a panel&apos;s title</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="917"/>
+        <source>fill the window with the panel (the image, from the image), and back</source>
+        <translation>fill the window with the panel (the image, from the image), and back</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="919"/>
         <source>open, export the image, export it as displayed</source>
         <translation>open, export the image, export it as displayed</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="904"/>
+        <location filename="../app/main_window.cpp" line="922"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>fit, actual size, zoom in, zoom out</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="906"/>
+        <location filename="../app/main_window.cpp" line="924"/>
         <source>Keyboard Shortcuts</source>
         <translation>Keyboard Shortcuts</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="286"/>
+        <location filename="../app/main_window_actions.cpp" line="293"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Rasterization Rules</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="291"/>
+        <location filename="../app/main_window_actions.cpp" line="298"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="293"/>
+        <location filename="../app/main_window_actions.cpp" line="300"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="295"/>
+        <location filename="../app/main_window_actions.cpp" line="302"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (seed 001&apos;s reference images)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="332"/>
+        <location filename="../app/main_window_actions.cpp" line="339"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="335"/>
+        <location filename="../app/main_window_actions.cpp" line="342"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="258"/>
+        <location filename="../app/main_window.cpp" line="262"/>
         <source>Messages</source>
         <translation>Messages</translation>
     </message>
@@ -1557,12 +1567,12 @@
         <translation>Scene</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="275"/>
+        <location filename="../app/main_window.cpp" line="287"/>
         <source>Accuracy</source>
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="552"/>
+        <location filename="../app/main_window.cpp" line="568"/>
         <location filename="../app/main_window_export.cpp" line="33"/>
         <location filename="../app/main_window_export.cpp" line="92"/>
         <location filename="../app/main_window_export.cpp" line="134"/>
@@ -1581,18 +1591,18 @@
         <translation>Exported %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="604"/>
+        <location filename="../app/main_window.cpp" line="620"/>
         <source>rendering...</source>
         <translation>rendering...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="604"/>
+        <location filename="../app/main_window.cpp" line="620"/>
         <source>%1, rendering...</source>
         <translation>%1, rendering...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="602"/>
-        <location filename="../app/main_window.cpp" line="797"/>
+        <location filename="../app/main_window.cpp" line="618"/>
+        <location filename="../app/main_window.cpp" line="813"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -1627,168 +1637,213 @@
         <translation>Pa&amp;nels</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="169"/>
+        <location filename="../app/main_window_actions.cpp" line="176"/>
         <source>I&amp;mage</source>
         <translation>I&amp;mage</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="187"/>
+        <location filename="../app/main_window_actions.cpp" line="194"/>
         <source>Lan&amp;guage</source>
         <translation>Lan&amp;guage</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="220"/>
+        <location filename="../app/main_window_actions.cpp" line="227"/>
         <source>Step B&amp;y</source>
         <translation>Step B&amp;y</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="222"/>
+        <location filename="../app/main_window_actions.cpp" line="229"/>
         <source>S&amp;tage</source>
         <translation>S&amp;tage</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="333"/>
+        <location filename="../app/main_window_actions.cpp" line="340"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Keyboard Shortcuts</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="392"/>
+        <location filename="../app/main_window.cpp" line="396"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="535"/>
+        <location filename="../app/main_window.cpp" line="551"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="612"/>
+        <location filename="../app/main_window.cpp" line="628"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparing the stepping of this frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="612"/>
+        <location filename="../app/main_window.cpp" line="628"/>
         <source>Rendering</source>
         <translation>Rendering</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="748"/>
+        <location filename="../app/main_window.cpp" line="764"/>
         <source>Error: %1</source>
         <translation>Error: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="764"/>
+        <location filename="../app/main_window.cpp" line="780"/>
         <source>Files</source>
         <translation>Files</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="767"/>
+        <location filename="../app/main_window.cpp" line="783"/>
         <source>Command file</source>
         <translation>Command file</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="768"/>
+        <location filename="../app/main_window.cpp" line="784"/>
         <source>Image</source>
         <translation>Image</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="770"/>
+        <location filename="../app/main_window.cpp" line="786"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="780"/>
+        <location filename="../app/main_window.cpp" line="796"/>
         <source>Camera</source>
         <translation>Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="781"/>
+        <location filename="../app/main_window.cpp" line="797"/>
         <source>Lighting</source>
         <translation>Lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="782"/>
+        <location filename="../app/main_window.cpp" line="798"/>
         <source>Object</source>
         <translation>Object</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="784"/>
+        <location filename="../app/main_window.cpp" line="800"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="243"/>
-        <location filename="../app/main_window.cpp" line="791"/>
+        <location filename="../app/main_window.cpp" line="247"/>
+        <location filename="../app/main_window.cpp" line="807"/>
         <source>Stages</source>
         <translation>Stages</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="798"/>
+        <location filename="../app/main_window.cpp" line="280"/>
+        <source>7 Pixel inspector</source>
+        <translation>7 Pixel inspector</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="309"/>
+        <source>1 Camera</source>
+        <translation>1 Camera</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="312"/>
+        <source>5 Scan</source>
+        <translation>5 Scan</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="315"/>
+        <source>2 View</source>
+        <translation>2 View</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="323"/>
+        <source>4b Clipping</source>
+        <translation>4b Clipping</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="325"/>
+        <source>4b Near-plane clipping (seed 002)</source>
+        <translation>4b Near-plane clipping (seed 002)</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="328"/>
+        <source>5b Trapezoids: the scan of seed 002</source>
+        <translation>5b Trapezoids: the scan of seed 002</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="333"/>
+        <source>Painter</source>
+        <translation>Painter</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="334"/>
+        <source>Painter&apos;s algorithm (seed 004)</source>
+        <translation>Painter&apos;s algorithm (seed 004)</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="814"/>
         <source>skipped: %1</source>
         <translation>skipped: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="801"/>
+        <location filename="../app/main_window.cpp" line="817"/>
         <source>Counts</source>
         <translation>Counts</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="802"/>
+        <location filename="../app/main_window.cpp" line="818"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="805"/>
+        <location filename="../app/main_window.cpp" line="821"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="808"/>
+        <location filename="../app/main_window.cpp" line="824"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="812"/>
+        <location filename="../app/main_window.cpp" line="828"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="836"/>
+        <location filename="../app/main_window.cpp" line="852"/>
         <source>empty (+inf)</source>
         <translation>empty (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="837"/>
+        <location filename="../app/main_window.cpp" line="853"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   depth %6</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="853"/>
+        <location filename="../app/main_window.cpp" line="869"/>
         <source>Open Command File</source>
         <translation>Open Command File</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="854"/>
+        <location filename="../app/main_window.cpp" line="870"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Command files (*.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="860"/>
+        <location filename="../app/main_window.cpp" line="876"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="860"/>
+        <location filename="../app/main_window.cpp" line="876"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="870"/>
+        <location filename="../app/main_window.cpp" line="886"/>
         <source>Export PNG</source>
         <translation>Export PNG</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="870"/>
+        <location filename="../app/main_window.cpp" line="886"/>
         <location filename="../app/main_window_actions.cpp" line="133"/>
         <location filename="../app/main_window_export.cpp" line="157"/>
         <location filename="../app/main_window_export.cpp" line="165"/>
@@ -1796,12 +1851,12 @@
         <translation>PNG images (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="875"/>
+        <location filename="../app/main_window.cpp" line="891"/>
         <source>About RasterLab</source>
         <translation>About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="876"/>
+        <location filename="../app/main_window.cpp" line="892"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</translation>
     </message>
@@ -1916,276 +1971,286 @@
         <source>%1 changed on disk: read again</source>
         <translation>%1 changed on disk: read again</translation>
     </message>
+    <message>
+        <location filename="../app/main_window_docks.cpp" line="158"/>
+        <source>%1 fills the window: F11 or a double-click on its title gives the layout back</source>
+        <translation>%1 fills the window: F11 or a double-click on its title gives the layout back</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_docks.cpp" line="159"/>
+        <source>The image</source>
+        <translation>The image</translation>
+    </message>
 </context>
 <context>
     <name>rasterlab::NearClipView</name>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="73"/>
+        <location filename="../views/near_clip_view.cpp" line="76"/>
         <source>wholly in front</source>
         <translation>wholly in front</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="75"/>
+        <location filename="../views/near_clip_view.cpp" line="78"/>
         <source>clipped</source>
         <translation>clipped</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="77"/>
+        <location filename="../views/near_clip_view.cpp" line="80"/>
         <source>wholly behind</source>
         <translation>wholly behind</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="79"/>
+        <location filename="../views/near_clip_view.cpp" line="82"/>
         <source>outside a clip plane</source>
         <translation>outside a clip plane</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="81"/>
+        <location filename="../views/near_clip_view.cpp" line="84"/>
         <source>culled</source>
         <translation>culled</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="83"/>
+        <location filename="../views/near_clip_view.cpp" line="86"/>
         <source>hidden back face</source>
         <translation>hidden back face</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="85"/>
+        <location filename="../views/near_clip_view.cpp" line="88"/>
         <source>beyond the guard band</source>
         <translation>beyond the guard band</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="87"/>
+        <location filename="../views/near_clip_view.cpp" line="90"/>
         <source>not finite</source>
         <translation>not finite</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="179"/>
+        <location filename="../views/near_clip_view.cpp" line="181"/>
         <source>No triangle to show: select one, step into the frame, or choose one in the list.</source>
         <translation>No triangle to show: select one, step into the frame, or choose one in the list.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="354"/>
+        <location filename="../views/near_clip_view.cpp" line="240"/>
         <source>side view: w across (view z for the course camera), view %1 up</source>
         <translation>side view: w across (view z for the course camera), view %1 up</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="361"/>
+        <location filename="../views/near_clip_view.cpp" line="367"/>
         <source>w = near = %1</source>
         <translation>w = near = %1</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="364"/>
+        <location filename="../views/near_clip_view.cpp" line="370"/>
         <source>the plane w = near = %1 is far to the left, out of the picture</source>
         <translation>the plane w = near = %1 is far to the left, out of the picture</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="371"/>
+        <location filename="../views/near_clip_view.cpp" line="377"/>
         <source>eye</source>
         <translation>eye</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="375"/>
+        <location filename="../views/near_clip_view.cpp" line="381"/>
         <source>the eye (w = 0) is far to the left, out of the picture</source>
         <translation>the eye (w = 0) is far to the left, out of the picture</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="383"/>
+        <location filename="../views/near_clip_view.cpp" line="389"/>
         <source>on the screen (pixels)</source>
         <translation>on the screen (pixels)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="387"/>
+        <location filename="../views/near_clip_view.cpp" line="393"/>
         <source>The last step projects the triangles drawn.</source>
         <translation>The last step projects the triangles drawn.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="433"/>
+        <location filename="../views/near_clip_view.cpp" line="439"/>
         <source>zoomed: x %1 to %2, y %3 to %4</source>
         <translation>zoomed: x %1 to %2, y %3 to %4</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="466"/>
+        <location filename="../views/near_clip_view.cpp" line="472"/>
         <source>image %1 × %2</source>
         <translation>image %1 × %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="471"/>
+        <location filename="../views/near_clip_view.cpp" line="477"/>
         <source>Nothing drawn.</source>
         <translation>Nothing drawn.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="479"/>
+        <location filename="../views/near_clip_view.cpp" line="485"/>
         <source>The triangle shown: the one selected, or one the near plane cut</source>
         <translation>The triangle shown: the one selected, or one the near plane cut</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="482"/>
+        <location filename="../views/near_clip_view.cpp" line="488"/>
         <source>y up</source>
         <translation>y up</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="483"/>
+        <location filename="../views/near_clip_view.cpp" line="489"/>
         <source>x up</source>
         <translation>x up</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="484"/>
+        <location filename="../views/near_clip_view.cpp" line="490"/>
         <source>Which view axis the side view draws upward</source>
         <translation>Which view axis the side view draws upward</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="485"/>
+        <location filename="../views/near_clip_view.cpp" line="491"/>
         <source>Back</source>
         <translation>Back</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="487"/>
+        <location filename="../views/near_clip_view.cpp" line="493"/>
         <source>Next</source>
         <translation>Next</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="489"/>
+        <location filename="../views/near_clip_view.cpp" line="495"/>
         <source>All</source>
         <translation>All</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="555"/>
+        <location filename="../views/near_clip_view.cpp" line="561"/>
         <source>The triangle selected (or being drawn)</source>
         <translation>The triangle selected (or being drawn)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="563"/>
+        <location filename="../views/near_clip_view.cpp" line="569"/>
         <source>triangle %1: %2</source>
         <translation>triangle %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="657"/>
+        <location filename="../views/near_clip_view.cpp" line="663"/>
         <source>step %1 of %2</source>
         <translation>step %1 of %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="667"/>
+        <location filename="../views/near_clip_view.cpp" line="673"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="668"/>
+        <location filename="../views/near_clip_view.cpp" line="674"/>
         <source>No triangle to show: select one or step into the frame.</source>
         <translation>No triangle to show: select one or step into the frame.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="670"/>
+        <location filename="../views/near_clip_view.cpp" line="676"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2: %3</source>
         <translation>&lt;b&gt;Triangle %1&lt;/b&gt; of %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="697"/>
+        <location filename="../views/near_clip_view.cpp" line="703"/>
         <source>The seed clips each triangle against the plane z = &amp;minus;&amp;epsilon;, P = [0, 0, &amp;minus;1, &amp;epsilon;], before the perspective divide (OpenGL&apos;s camera looks along &amp;minus;z). The projection stage clips against w = near in clip space, here near = %1, so P = %2 and a point A is kept when dot(P, A) = w &amp;minus; near &amp;ge; 0.</source>
         <translation>The seed clips each triangle against the plane z = &amp;minus;&amp;epsilon;, P = [0, 0, &amp;minus;1, &amp;epsilon;], before the perspective divide (OpenGL&apos;s camera looks along &amp;minus;z). The projection stage clips against w = near in clip space, here near = %1, so P = %2 and a point A is kept when dot(P, A) = w &amp;minus; near &amp;ge; 0.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="704"/>
+        <location filename="../views/near_clip_view.cpp" line="710"/>
         <source>For the course camera w is the view z: the camera looks along +z, and the plane is z = near, P = [0, 0, 1, &amp;minus;near].</source>
         <translation>For the course camera w is the view z: the camera looks along +z, and the plane is z = near, P = [0, 0, 1, &amp;minus;near].</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="707"/>
+        <location filename="../views/near_clip_view.cpp" line="713"/>
         <source>(Written out, the seed&apos;s P keeps z &amp;le; &amp;epsilon;; the plane z = &amp;minus;&amp;epsilon; it names is P = [0, 0, &amp;minus;1, &amp;minus;&amp;epsilon;]. Either way the plane lies a little in front of the eye, so no vertex drawn is divided by w = 0.)</source>
         <translation>(Written out, the seed&apos;s P keeps z &amp;le; &amp;epsilon;; the plane z = &amp;minus;&amp;epsilon; it names is P = [0, 0, &amp;minus;1, &amp;minus;&amp;epsilon;]. Either way the plane lies a little in front of the eye, so no vertex drawn is divided by w = 0.)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="711"/>
+        <location filename="../views/near_clip_view.cpp" line="717"/>
         <source>A0 = %1, A1 = %2, A2 = %3 (view space).</source>
         <translation>A0 = %1, A1 = %2, A2 = %3 (view space).</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="715"/>
+        <location filename="../views/near_clip_view.cpp" line="721"/>
         <source>This scene does not clip against the near plane (the naive or same-side projection): the steps show what clipping would do.</source>
         <translation>This scene does not clip against the near plane (the naive or same-side projection): the steps show what clipping would do.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="720"/>
+        <location filename="../views/near_clip_view.cpp" line="726"/>
         <source>The draw&apos;s clip planes cut the triangle first; the polygon the stage drew may differ from the one here.</source>
         <translation>The draw&apos;s clip planes cut the triangle first; the polygon the stage drew may differ from the one here.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="727"/>
+        <location filename="../views/near_clip_view.cpp" line="733"/>
         <source>Vertex %1: dot(P, %1) = %2</source>
         <translation>Vertex %1: dot(P, %1) = %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="730"/>
+        <location filename="../views/near_clip_view.cpp" line="736"/>
         <source>kept, added to the output polygon as q%1.</source>
         <translation>kept, added to the output polygon as q%1.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="732"/>
+        <location filename="../views/near_clip_view.cpp" line="738"/>
         <source>behind the plane, left out.</source>
         <translation>behind the plane, left out.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="736"/>
+        <location filename="../views/near_clip_view.cpp" line="742"/>
         <source>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 have the same sign: the edge does not cross the plane.</source>
         <translation>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 have the same sign: the edge does not cross the plane.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="740"/>
+        <location filename="../views/near_clip_view.cpp" line="746"/>
         <source>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 differ in sign: t = (0 &amp;minus; %5) / (%6 &amp;minus; %5) = %7, C = lerp(t, %1, %2) = %8, added as q%9.</source>
         <translation>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 differ in sign: t = (0 &amp;minus; %5) / (%6 &amp;minus; %5) = %7, C = lerp(t, %1, %2) = %8, added as q%9.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="748"/>
+        <location filename="../views/near_clip_view.cpp" line="754"/>
         <source>(The stage computes the same point from %1, the end in front, with t&apos; = 1 &amp;minus; t = %2, so that the two triangles sharing the edge get it bit for bit.)</source>
         <translation>(The stage computes the same point from %1, the end in front, with t&apos; = 1 &amp;minus; t = %2, so that the two triangles sharing the edge get it bit for bit.)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="759"/>
+        <location filename="../views/near_clip_view.cpp" line="765"/>
         <source>Output polygon: empty. The triangle lies wholly behind the plane: nothing is drawn.</source>
         <translation>Output polygon: empty. The triangle lies wholly behind the plane: nothing is drawn.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="765"/>
+        <location filename="../views/near_clip_view.cpp" line="771"/>
         <source>Output polygon, %1 vertices: %2.</source>
         <translation>Output polygon, %1 vertices: %2.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="769"/>
+        <location filename="../views/near_clip_view.cpp" line="775"/>
         <source>The triangle is wholly in front: untouched.</source>
         <translation>The triangle is wholly in front: untouched.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="776"/>
+        <location filename="../views/near_clip_view.cpp" line="782"/>
         <source>Four vertices: split along the diagonal q0&amp;ndash;q2 into the triangles q0 q1 q2 and q0 q2 q3, rendered separately.</source>
         <translation>Four vertices: split along the diagonal q0&amp;ndash;q2 into the triangles q0 q1 q2 and q0 q2 q3, rendered separately.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="779"/>
+        <location filename="../views/near_clip_view.cpp" line="785"/>
         <source>Three vertices: one triangle, nothing to split.</source>
         <translation>Three vertices: one triangle, nothing to split.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="781"/>
+        <location filename="../views/near_clip_view.cpp" line="787"/>
         <source>Fewer than three vertices: no triangle.</source>
         <translation>Fewer than three vertices: no triangle.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="784"/>
+        <location filename="../views/near_clip_view.cpp" line="790"/>
         <source>Then each vertex is projected and taken to pixels.</source>
         <translation>Then each vertex is projected and taken to pixels.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="787"/>
+        <location filename="../views/near_clip_view.cpp" line="793"/>
         <source>Nothing was drawn from this triangle (%1).</source>
         <translation>Nothing was drawn from this triangle (%1).</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="791"/>
+        <location filename="../views/near_clip_view.cpp" line="797"/>
         <source>Triangle %1: %2, %3, %4 (pixels)</source>
         <translation>Triangle %1: %2, %3, %4 (pixels)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="798"/>
+        <location filename="../views/near_clip_view.cpp" line="804"/>
         <source>(%1 of the %2 triangles were drawn: %3.)</source>
         <translation>(%1 of the %2 triangles were drawn: %3.)</translation>
     </message>
@@ -2203,243 +2268,243 @@
         <translation>the interpolated normal is zero</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="31"/>
+        <location filename="../views/normals_view.cpp" line="33"/>
         <source>Triangle normals</source>
         <translation>Triangle normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="34"/>
+        <location filename="../views/normals_view.cpp" line="36"/>
         <source>Vertex normals</source>
         <translation>Vertex normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="37"/>
+        <location filename="../views/normals_view.cpp" line="39"/>
         <source>Only on triangles that are seen</source>
         <translation>Only on triangles that are seen</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="40"/>
+        <location filename="../views/normals_view.cpp" line="42"/>
         <source>Hairs only on the triangles that hold a pixel at the end of the frame, and on their corners</source>
         <translation>Hairs only on the triangles that hold a pixel at the end of the frame, and on their corners</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="43"/>
+        <location filename="../views/normals_view.cpp" line="45"/>
         <source>Normals by M (wrong)</source>
         <translation>Normals by M (wrong)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="46"/>
+        <location filename="../views/normals_view.cpp" line="48"/>
         <source>Beside each triangle normal, the model normal carried by viewFromModel itself instead of its inverse transpose: it leaves the surface under a non-uniform scale (set one in the Animation panel)</source>
         <translation>Beside each triangle normal, the model normal carried by viewFromModel itself instead of its inverse transpose: it leaves the surface under a non-uniform scale (set one in the Animation panel)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="78"/>
+        <location filename="../views/normals_view.cpp" line="74"/>
         <source>Per pixel at the stepping cursor, the unit normal shading uses there: the vertex normals interpolated with the pixel&apos;s barycentrics and normalised (the triangle&apos;s normal for flat shading), turned toward the viewer as the course does before lighting; shown as RGB = (n + 1) / 2. Red grows to the right, green upward, blue away from the camera: turned normals face the camera, so blue is mostly below 128. Black: no triangle.</source>
         <translation>Per pixel at the stepping cursor, the unit normal shading uses there: the vertex normals interpolated with the pixel&apos;s barycentrics and normalised (the triangle&apos;s normal for flat shading), turned toward the viewer as the course does before lighting; shown as RGB = (n + 1) / 2. Red grows to the right, green upward, blue away from the camera: turned normals face the camera, so blue is mostly below 128. Black: no triangle.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="92"/>
+        <location filename="../views/normals_view.cpp" line="88"/>
         <source>Mesh and normals</source>
         <translation>Mesh and normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="93"/>
+        <location filename="../views/normals_view.cpp" line="89"/>
         <source>Normal map</source>
         <translation>Normal map</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="242"/>
+        <location filename="../views/normals_view.cpp" line="238"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="248"/>
+        <location filename="../views/normals_view.cpp" line="244"/>
         <source>front faces %1</source>
         <translation>front faces %1</translation>
     </message>
     <message>
+        <location filename="../views/normals_view.cpp" line="246"/>
         <location filename="../views/normals_view.cpp" line="250"/>
-        <location filename="../views/normals_view.cpp" line="254"/>
         <source>(%1 hidden, left out by culling)</source>
         <translation>(%1 hidden, left out by culling)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="252"/>
+        <location filename="../views/normals_view.cpp" line="248"/>
         <source>back faces (n · pView &amp;gt; 0) %1</source>
         <translation>back faces (n · pView &amp;gt; 0) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="257"/>
+        <location filename="../views/normals_view.cpp" line="253"/>
         <source>inconsistent winding: %1 triangles, %2 edges run the same way by two triangles</source>
         <translation>inconsistent winding: %1 triangles, %2 edges run the same way by two triangles</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="264"/>
+        <location filename="../views/normals_view.cpp" line="260"/>
         <source>%1% of the pixels seen are back faces: the surface is closed and its normals point inward in view space (the course&apos;s [U; V; N] mirrors, so a file wound counter-clockwise seen from outside turns over). Shading turns every normal toward the viewer: the image does not change.</source>
         <translation>%1% of the pixels seen are back faces: the surface is closed and its normals point inward in view space (the course&apos;s [U; V; N] mirrors, so a file wound counter-clockwise seen from outside turns over). Shading turns every normal toward the viewer: the image does not change.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="271"/>
+        <location filename="../views/normals_view.cpp" line="267"/>
         <source>No normals: %1.</source>
         <translation>No normals: %1.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="276"/>
+        <location filename="../views/normals_view.cpp" line="272"/>
         <source>triangle normals</source>
         <translation>triangle normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="277"/>
+        <location filename="../views/normals_view.cpp" line="273"/>
         <source>vertex normals</source>
         <translation>vertex normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="279"/>
+        <location filename="../views/normals_view.cpp" line="275"/>
         <source>length L = %1 (%2% of the mesh&apos;s size)</source>
         <translation>length L = %1 (%2% of the mesh&apos;s size)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="284"/>
+        <location filename="../views/normals_view.cpp" line="280"/>
         <source>triangle normals carried by M itself (wrong)</source>
         <translation>triangle normals carried by M itself (wrong)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="287"/>
+        <location filename="../views/normals_view.cpp" line="283"/>
         <source>on the %1 triangles seen and their corners</source>
         <translation>on the %1 triangles seen and their corners</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="290"/>
+        <location filename="../views/normals_view.cpp" line="286"/>
         <source>Large mesh: one triangle normal in %1 and one vertex normal in %2 are drawn; the selected triangle&apos;s always.</source>
         <translation>Large mesh: one triangle normal in %1 and one vertex normal in %2 are drawn; the selected triangle&apos;s always.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="297"/>
+        <location filename="../views/normals_view.cpp" line="293"/>
         <source>One triangle in %1 of the wireframe is drawn.</source>
         <translation>One triangle in %1 of the wireframe is drawn.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="314"/>
+        <location filename="../views/normals_view.cpp" line="310"/>
         <source>&lt;p&gt;&lt;b&gt;Normals by M, right and wrong&lt;/b&gt;: A = viewFromModel = viewFromWorld · M(t) · worldFromModel (M: the animation matrix, the identity when the animation is off). The model-space normal n = %1, det A = %2; the carried edges, made unit: e1 = A (P2 − P1) / |…| = %3, e2 = A (P3 − P1) / |…| = %4.&lt;br&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Normals by M, right and wrong&lt;/b&gt;: A = viewFromModel = viewFromWorld · M(t) · worldFromModel (M: the animation matrix, the identity when the animation is off). The model-space normal n = %1, det A = %2; the carried edges, made unit: e1 = A (P2 − P1) / |…| = %3, e2 = A (P3 − P1) / |…| = %4.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="321"/>
+        <location filename="../views/normals_view.cpp" line="317"/>
         <source>Right: A&lt;sup&gt;−T&lt;/sup&gt; n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: perpendicular to the surface.&lt;br&gt;</source>
         <translation>Right: A&lt;sup&gt;−T&lt;/sup&gt; n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: perpendicular to the surface.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="325"/>
+        <location filename="../views/normals_view.cpp" line="321"/>
         <source>Wrong: A n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: %4° off the surface&apos;s normal.&lt;/p&gt;</source>
         <translation>Wrong: A n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: %4° off the surface&apos;s normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="331"/>
+        <location filename="../views/normals_view.cpp" line="327"/>
         <source>&lt;p&gt;Here both agree: A has no non-uniform scale. Set a scale such as (2, 1, 1) in the Animation panel to see them part.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Here both agree: A has no non-uniform scale. Set a scale such as (2, 1, 1) in the Animation panel to see them part.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="339"/>
+        <location filename="../views/normals_view.cpp" line="335"/>
         <source>&lt;p&gt;No frame yet.&lt;/p&gt;</source>
         <translation>&lt;p&gt;No frame yet.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="343"/>
+        <location filename="../views/normals_view.cpp" line="339"/>
         <source>&lt;p&gt;&lt;b&gt;Stage 3, normals&lt;/b&gt;, in view space: each triangle&apos;s normal n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, and each vertex&apos;s normal the normalised sum of the normals of the triangles around it. A triangle faces away from the camera (at the origin) when n · P1 &amp;gt; 0; the course turns such normals toward the viewer when it shades.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Stage 3, normals&lt;/b&gt;, in view space: each triangle&apos;s normal n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, and each vertex&apos;s normal the normalised sum of the normals of the triangles around it. A triangle faces away from the camera (at the origin) when n · P1 &amp;gt; 0; the course turns such normals toward the viewer when it shades.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="350"/>
+        <location filename="../views/normals_view.cpp" line="346"/>
         <source>&lt;p&gt;Skipped for this frame: %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Skipped for this frame: %1.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="365"/>
+        <location filename="../views/normals_view.cpp" line="361"/>
         <source>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (vertices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</source>
         <translation>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (vertices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="372"/>
+        <location filename="../views/normals_view.cpp" line="368"/>
         <source> = %1, length %2&lt;br&gt;</source>
         <translation> = %1, length %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="376"/>
+        <location filename="../views/normals_view.cpp" line="372"/>
         <source>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</source>
         <translation>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="378"/>
+        <location filename="../views/normals_view.cpp" line="374"/>
         <source>a back face, drawn in red</source>
         <translation>a back face, drawn in red</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="378"/>
+        <location filename="../views/normals_view.cpp" line="374"/>
         <source>a front face</source>
         <translation>a front face</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="380"/>
+        <location filename="../views/normals_view.cpp" line="376"/>
         <source>a degenerate triangle: no normal.&lt;/p&gt;</source>
         <translation>a degenerate triangle: no normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="384"/>
+        <location filename="../views/normals_view.cpp" line="380"/>
         <source>&lt;p&gt;It runs an edge in the same direction as a neighbour does: the two are wound inconsistently (magenta), and one of their normals points the wrong way.&lt;/p&gt;</source>
         <translation>&lt;p&gt;It runs an edge in the same direction as a neighbour does: the two are wound inconsistently (magenta), and one of their normals points the wrong way.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="391"/>
+        <location filename="../views/normals_view.cpp" line="387"/>
         <source>&lt;p&gt;Vertex normals: N1 = %1 (vertex %2), N2 = %3 (vertex %4), N3 = %5 (vertex %6)&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vertex normals: N1 = %1 (vertex %2), N2 = %3 (vertex %4), N3 = %5 (vertex %6)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="399"/>
+        <location filename="../views/normals_view.cpp" line="395"/>
         <source>&lt;p&gt;Pick a pixel (here or in any image) to select its triangle and see its normal worked out.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Pick a pixel (here or in any image) to select its triangle and see its normal worked out.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="409"/>
+        <location filename="../views/normals_view.cpp" line="405"/>
         <source>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </source>
         <translation>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="411"/>
+        <location filename="../views/normals_view.cpp" line="407"/>
         <source>no triangle holds it at the cursor (black in the normal map).&lt;/p&gt;</source>
         <translation>no triangle holds it at the cursor (black in the normal map).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="413"/>
+        <location filename="../views/normals_view.cpp" line="409"/>
         <source>no normal: %1 (grey in the normal map).&lt;/p&gt;</source>
         <translation>no normal: %1 (grey in the normal map).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="416"/>
+        <location filename="../views/normals_view.cpp" line="412"/>
         <source>the triangle&apos;s normal (flat) %1</source>
         <translation>the triangle&apos;s normal (flat) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="418"/>
+        <location filename="../views/normals_view.cpp" line="414"/>
         <source>N = α N1 + β N2 + γ N3 with (α, β, γ) = %1: %2, normalised %3</source>
         <translation>N = α N1 + β N2 + γ N3 with (α, β, γ) = %1: %2, normalised %3</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="422"/>
+        <location filename="../views/normals_view.cpp" line="418"/>
         <source>; V · N &amp;lt; 0, turned toward the viewer: &lt;b&gt;%1&lt;/b&gt;</source>
         <translation>; V · N &amp;lt; 0, turned toward the viewer: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="425"/>
+        <location filename="../views/normals_view.cpp" line="421"/>
         <source>. Colour (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</source>
         <translation>. Colour (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="444"/>
+        <location filename="../views/normals_view.cpp" line="440"/>
         <source>x %1, y %2: no triangle</source>
         <translation>x %1, y %2: no triangle</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="448"/>
+        <location filename="../views/normals_view.cpp" line="444"/>
         <source>x %1, y %2: triangle %3, N = %4, colour (%5, %6, %7)</source>
         <translation>x %1, y %2: triangle %3, N = %4, colour (%5, %6, %7)</translation>
     </message>
@@ -2447,67 +2512,67 @@
 <context>
     <name>rasterlab::PainterView</name>
     <message>
-        <location filename="../views/painter_view.cpp" line="69"/>
+        <location filename="../views/painter_view.cpp" line="70"/>
         <source>Painted</source>
         <translation>Painted</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="71"/>
+        <location filename="../views/painter_view.cpp" line="72"/>
         <source>Draw</source>
         <translation>Draw</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="73"/>
+        <location filename="../views/painter_view.cpp" line="74"/>
         <source>Triangle</source>
         <translation>Triangle</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="75"/>
+        <location filename="../views/painter_view.cpp" line="76"/>
         <source>|b| (distance)</source>
         <translation>|b| (distance)</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="77"/>
+        <location filename="../views/painter_view.cpp" line="78"/>
         <source>Hidden wrongly</source>
         <translation>Hidden wrongly</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="134"/>
+        <location filename="../views/painter_view.cpp" line="135"/>
         <source>The triangles in the order the painter paints them: farthest barycentre first. Click a row to select its triangle.</source>
         <translation>The triangles in the order the painter paints them: farthest barycentre first. Click a row to select its triangle.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="139"/>
+        <location filename="../views/painter_view.cpp" line="140"/>
         <source>Painter&apos;s image</source>
         <translation>Painter&apos;s image</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="140"/>
+        <location filename="../views/painter_view.cpp" line="141"/>
         <source>Painted order (first blue, last red)</source>
         <translation>Painted order (first blue, last red)</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="145"/>
+        <location filename="../views/painter_view.cpp" line="146"/>
         <source>Mark ties on shared edges</source>
         <translation>Mark ties on shared edges</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="148"/>
+        <location filename="../views/painter_view.cpp" line="149"/>
         <source>Pixels on an edge two triangles share, at the same depth: the z-buffer keeps the first drawn, the painter the last.</source>
         <translation>Pixels on an edge two triangles share, at the same depth: the z-buffer keeps the first drawn, the painter the last.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="329"/>
+        <location filename="../views/painter_view.cpp" line="330"/>
         <source>rank of the last triangle painted</source>
         <translation>rank of the last triangle painted</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="330"/>
+        <location filename="../views/painter_view.cpp" line="331"/>
         <source>painted far to near, no depth test</source>
         <translation>painted far to near, no depth test</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/painter_view.cpp" line="332"/>
+        <location filename="../views/painter_view.cpp" line="333"/>
         <source>Z-buffer (the same flat colours): %n pixel(s) differ</source>
         <translation>
             <numerusform>Z-buffer (the same flat colours): %n pixel differs</numerusform>
@@ -2515,17 +2580,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="372"/>
+        <location filename="../views/painter_view.cpp" line="373"/>
         <source>No frame.</source>
         <translation>No frame.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="373"/>
+        <location filename="../views/painter_view.cpp" line="374"/>
         <source>Not worked out yet.</source>
         <translation>Not worked out yet.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/painter_view.cpp" line="378"/>
+        <location filename="../views/painter_view.cpp" line="379"/>
         <source>&lt;b&gt;Painter&apos;s algorithm&lt;/b&gt; (seed 004): the %n triangle(s) are sorted by the distance |b| of their barycentre b (view space) to the camera, far to near, each lit once at b, and painted in that order &lt;i&gt;without a depth test&lt;/i&gt;: the last painted stays.</source>
         <translation>
             <numerusform>&lt;b&gt;Painter&apos;s algorithm&lt;/b&gt; (seed 004): the %n triangle is sorted by the distance |b| of its barycentre b (view space) to the camera, far to near, lit once at b, and painted in that order &lt;i&gt;without a depth test&lt;/i&gt;: the last painted stays.</numerusform>
@@ -2533,17 +2598,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="383"/>
+        <location filename="../views/painter_view.cpp" line="384"/>
         <source>The frame shown uses the z-buffer; this view renders the scene again as the painter would.</source>
         <translation>The frame shown uses the z-buffer; this view renders the scene again as the painter would.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="386"/>
+        <location filename="../views/painter_view.cpp" line="387"/>
         <source>Against the z-buffer with the same colours, %1 pixels differ: &lt;span style=&apos;color:#d00000&apos;&gt;%2 where a farther triangle was painted after a nearer one&lt;/span&gt; (the order of whole triangles is not the order of their pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 on edges two triangles share at the same depth&lt;/span&gt; (the z-buffer keeps the first drawn, the painter the last).</source>
         <translation>Against the z-buffer with the same colours, %1 pixels differ: &lt;span style=&apos;color:#d00000&apos;&gt;%2 where a farther triangle was painted after a nearer one&lt;/span&gt; (the order of whole triangles is not the order of their pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 on edges two triangles share at the same depth&lt;/span&gt; (the z-buffer keeps the first drawn, the painter the last).</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="401"/>
+        <location filename="../views/painter_view.cpp" line="402"/>
         <source>Triangle %1: b = %2, |b| = %3, painted %4 of %5. The z-buffer shows it at %6 pixels; a triangle painted after it covers %7 of them though it is farther there; it covers %8 pixels of nearer triangles painted before it.</source>
         <translation>Triangle %1: b = %2, |b| = %3, painted %4 of %5. The z-buffer shows it at %6 pixels; a triangle painted after it covers %7 of them though it is farther there; it covers %8 pixels of nearer triangles painted before it.</translation>
     </message>
@@ -2551,12 +2616,12 @@
 <context>
     <name>rasterlab::PixelInspector</name>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="118"/>
+        <location filename="../views/pixel_inspector.cpp" line="123"/>
         <source>%1 = byte 255</source>
         <translation>%1 = byte 255</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="172"/>
+        <location filename="../views/pixel_inspector.cpp" line="178"/>
         <source>no normal</source>
         <translation>no normal</translation>
     </message>
@@ -2566,37 +2631,37 @@
         <translation>in the plane of N and L</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="265"/>
+        <location filename="../views/pixel_inspector.cpp" line="280"/>
         <source>Step</source>
         <translation>Step</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="265"/>
+        <location filename="../views/pixel_inspector.cpp" line="280"/>
         <source>Triangle</source>
         <translation>Triangle</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="265"/>
+        <location filename="../views/pixel_inspector.cpp" line="280"/>
         <source>Depth test</source>
         <translation>Depth test</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="265"/>
+        <location filename="../views/pixel_inspector.cpp" line="280"/>
         <source>Before</source>
         <translation>Before</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="265"/>
+        <location filename="../views/pixel_inspector.cpp" line="280"/>
         <source>After</source>
         <translation>After</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="265"/>
+        <location filename="../views/pixel_inspector.cpp" line="280"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="275"/>
+        <location filename="../views/pixel_inspector.cpp" line="292"/>
         <source>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</source>
         <translation>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</translation>
     </message>
@@ -2966,98 +3031,98 @@
         <translation>Ke = %1: the material&apos;s own light</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="430"/>
+        <location filename="../views/pixel_inspector.cpp" line="447"/>
         <source>start</source>
         <translation>start</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="436"/>
-        <location filename="../views/pixel_inspector.cpp" line="524"/>
+        <location filename="../views/pixel_inspector.cpp" line="453"/>
+        <location filename="../views/pixel_inspector.cpp" line="595"/>
         <source>end</source>
         <translation>end</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="444"/>
+        <location filename="../views/pixel_inspector.cpp" line="461"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>holds the pixel at the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="445"/>
+        <location filename="../views/pixel_inspector.cpp" line="462"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>not reached yet by the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="460"/>
+        <location filename="../views/pixel_inspector.cpp" line="477"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="461"/>
+        <location filename="../views/pixel_inspector.cpp" line="478"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Without stepping, the colours of writes overwritten later are not kept.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="505"/>
+        <location filename="../views/pixel_inspector.cpp" line="576"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="508"/>
+        <location filename="../views/pixel_inspector.cpp" line="579"/>
         <source>The cleared pixel is not lit.</source>
         <translation>The cleared pixel is not lit.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="511"/>
+        <location filename="../views/pixel_inspector.cpp" line="582"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="523"/>
+        <location filename="../views/pixel_inspector.cpp" line="594"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Lighting of step %1, triangle %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="528"/>
+        <location filename="../views/pixel_inspector.cpp" line="599"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejected: this colour was never written)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="541"/>
+        <location filename="../views/pixel_inspector.cpp" line="612"/>
         <source>object colour</source>
         <translation>object colour</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="544"/>
+        <location filename="../views/pixel_inspector.cpp" line="615"/>
         <source>emission</source>
         <translation>emission</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="546"/>
+        <location filename="../views/pixel_inspector.cpp" line="617"/>
         <source>ambient</source>
         <translation>ambient</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="551"/>
+        <location filename="../views/pixel_inspector.cpp" line="622"/>
         <source>diffuse %1</source>
         <translation>diffuse %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="554"/>
+        <location filename="../views/pixel_inspector.cpp" line="625"/>
         <source>specular %1</source>
         <translation>specular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="558"/>
+        <location filename="../views/pixel_inspector.cpp" line="629"/>
         <source>diffuse</source>
         <translation>diffuse</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="560"/>
+        <location filename="../views/pixel_inspector.cpp" line="631"/>
         <source>specular</source>
         <translation>specular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="588"/>
+        <location filename="../views/pixel_inspector.cpp" line="659"/>
         <source>No special case: every term applies as written.</source>
         <translation>No special case: every term applies as written.</translation>
     </message>
@@ -3065,12 +3130,12 @@
 <context>
     <name>rasterlab::ProjectionCanvas</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="158"/>
+        <location filename="../views/projection_view.cpp" line="159"/>
         <source>Click a triangle to select it; wheel to zoom, drag to pan, double-click to fit.</source>
         <translation>Click a triangle to select it; wheel to zoom, drag to pan, double-click to fit.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="385"/>
+        <location filename="../views/projection_view.cpp" line="386"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
@@ -3078,37 +3143,37 @@
 <context>
     <name>rasterlab::ProjectionSideView</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="597"/>
+        <location filename="../views/projection_view.cpp" line="598"/>
         <source>view z (= w) →</source>
         <translation>view z (= w) →</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="597"/>
+        <location filename="../views/projection_view.cpp" line="598"/>
         <source>clip w →</source>
         <translation>clip w →</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="601"/>
+        <location filename="../views/projection_view.cpp" line="602"/>
         <source>y ↑</source>
         <translation>y ↑</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="612"/>
+        <location filename="../views/projection_view.cpp" line="613"/>
         <source>eye plane w = 0: the plain divide clips nothing</source>
         <translation>eye plane w = 0: the plain divide clips nothing</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="613"/>
+        <location filename="../views/projection_view.cpp" line="614"/>
         <source>near plane w = %1</source>
         <translation>near plane w = %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="616"/>
+        <location filename="../views/projection_view.cpp" line="617"/>
         <source>the object lies behind the eye (w &lt; 0): N points away from it</source>
         <translation>the object lies behind the eye (w &lt; 0): N points away from it</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="620"/>
+        <location filename="../views/projection_view.cpp" line="621"/>
         <source>● made by clipping: %1</source>
         <translation>● made by clipping: %1</translation>
     </message>
@@ -3116,32 +3181,32 @@
 <context>
     <name>rasterlab::ProjectionView</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="661"/>
+        <location filename="../views/projection_view.cpp" line="662"/>
         <source>NDC</source>
         <translation>NDC</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="662"/>
+        <location filename="../views/projection_view.cpp" line="663"/>
         <source>Show the vertices in normalised device coordinates, [-1, 1]</source>
         <translation>Show the vertices in normalised device coordinates, [-1, 1]</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="665"/>
+        <location filename="../views/projection_view.cpp" line="666"/>
         <source>Pixels</source>
         <translation>Pixels</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="667"/>
+        <location filename="../views/projection_view.cpp" line="668"/>
         <source>Show the vertices in pixels, snapped as scan conversion receives them</source>
         <translation>Show the vertices in pixels, snapped as scan conversion receives them</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="676"/>
+        <location filename="../views/projection_view.cpp" line="677"/>
         <source>Fit</source>
         <translation>Fit</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="677"/>
+        <location filename="../views/projection_view.cpp" line="678"/>
         <source>Show the whole window and its margin</source>
         <translation>Show the whole window and its margin</translation>
     </message>
@@ -3566,102 +3631,117 @@
 <context>
     <name>rasterlab::StageStrip</name>
     <message>
-        <location filename="../views/stage_strip.cpp" line="54"/>
+        <location filename="../views/stage_strip.cpp" line="57"/>
         <source>Camera basis</source>
         <translation>Camera basis</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="56"/>
+        <location filename="../views/stage_strip.cpp" line="59"/>
         <source>View coordinates</source>
         <translation>View coordinates</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="58"/>
+        <location filename="../views/stage_strip.cpp" line="61"/>
         <source>Normals</source>
         <translation>Normals</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="60"/>
+        <location filename="../views/stage_strip.cpp" line="63"/>
         <source>Projection</source>
         <translation>Projection</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="62"/>
+        <location filename="../views/stage_strip.cpp" line="65"/>
         <source>Scan conversion</source>
         <translation>Scan conversion</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="64"/>
+        <location filename="../views/stage_strip.cpp" line="67"/>
         <source>Z-buffer</source>
         <translation>Z-buffer</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="66"/>
+        <location filename="../views/stage_strip.cpp" line="69"/>
         <source>Lighting</source>
         <translation>Lighting</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="75"/>
+        <location filename="../views/stage_strip.cpp" line="77"/>
+        <source>Camera</source>
+        <translation>Camera</translation>
+    </message>
+    <message>
+        <location filename="../views/stage_strip.cpp" line="79"/>
+        <source>View</source>
+        <translation>View</translation>
+    </message>
+    <message>
+        <location filename="../views/stage_strip.cpp" line="81"/>
+        <source>Scan</source>
+        <translation>Scan</translation>
+    </message>
+    <message>
+        <location filename="../views/stage_strip.cpp" line="91"/>
         <source>no course camera: each draw brings its own view matrix</source>
         <translation>no course camera: each draw brings its own view matrix</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="79"/>
+        <location filename="../views/stage_strip.cpp" line="95"/>
         <source>nothing is lit: no light reads a normal</source>
         <translation>nothing is lit: no light reads a normal</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="87"/>
+        <location filename="../views/stage_strip.cpp" line="103"/>
         <source>nothing is lit: each pixel takes its object&apos;s own colour</source>
         <translation>nothing is lit: each pixel takes its object&apos;s own colour</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="100"/>
+        <location filename="../views/stage_strip.cpp" line="116"/>
         <source>near clip</source>
         <translation>near clip</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="102"/>
+        <location filename="../views/stage_strip.cpp" line="118"/>
         <source>plain divide</source>
         <translation>plain divide</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="104"/>
+        <location filename="../views/stage_strip.cpp" line="120"/>
         <source>same side</source>
         <translation>same side</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="113"/>
+        <location filename="../views/stage_strip.cpp" line="129"/>
         <source>triangles are clipped at the near plane before the divide, so nothing at or behind the eye is divided by its w (the course and GPU-like rules)</source>
         <translation>triangles are clipped at the near plane before the divide, so nothing at or behind the eye is divided by its w (the course and GPU-like rules)</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="117"/>
+        <location filename="../views/stage_strip.cpp" line="133"/>
         <source>every vertex is divided by its w without clipping, as seed 000 writes it and seed 001&apos;s HW2 does (&quot;we won&apos;t add it&quot;): a triangle behind the eye lands mirrored through the centre, one across the eye plane wraps through infinity</source>
         <translation>every vertex is divided by its w without clipping, as seed 000 writes it and seed 001&apos;s HW2 does (&quot;we won&apos;t add it&quot;): a triangle behind the eye lands mirrored through the centre, one across the eye plane wraps through infinity</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="123"/>
+        <location filename="../views/stage_strip.cpp" line="139"/>
         <source>triangles wholly in front of or wholly behind the eye are divided as they are; those across the eye plane are clipped at the near plane</source>
         <translation>triangles wholly in front of or wholly behind the eye are divided as they are; those across the eye plane are clipped at the near plane</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="140"/>
+        <location filename="../views/stage_strip.cpp" line="157"/>
         <source>(skipped)</source>
         <translation>(skipped)</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="143"/>
+        <location filename="../views/stage_strip.cpp" line="160"/>
         <source>%1 is skipped: %2</source>
         <translation>%1 is skipped: %2</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="145"/>
+        <location filename="../views/stage_strip.cpp" line="162"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="164"/>
+        <location filename="../views/stage_strip.cpp" line="211"/>
         <source>while stepping, stages 5-7 run together, fragment by fragment</source>
         <translation>while stepping, stages 5-7 run together, fragment by fragment</translation>
     </message>
@@ -3942,103 +4022,103 @@
 <context>
     <name>rasterlab::VertexTableModel</name>
     <message>
-        <location filename="../views/vertex_table.cpp" line="126"/>
+        <location filename="../views/vertex_table.cpp" line="127"/>
         <source>%1 made by clipping (edge %2-%3, t = %4)</source>
         <translation>%1 made by clipping (edge %2-%3, t = %4)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="133"/>
+        <location filename="../views/vertex_table.cpp" line="134"/>
         <source>pView = pView(%1) + t (pView(%2) - pView(%1)), on the plane that cut the edge</source>
         <translation>pView = pView(%1) + t (pView(%2) - pView(%1)), on the plane that cut the edge</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="146"/>
+        <location filename="../views/vertex_table.cpp" line="147"/>
         <source>At or behind the near plane: not projected; the triangles through it are clipped</source>
         <translation>At or behind the near plane: not projected; the triangles through it are clipped</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="149"/>
-        <location filename="../views/vertex_table.cpp" line="153"/>
+        <location filename="../views/vertex_table.cpp" line="150"/>
+        <location filename="../views/vertex_table.cpp" line="154"/>
         <source>behind</source>
         <translation>behind</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="155"/>
+        <location filename="../views/vertex_table.cpp" line="156"/>
         <source>Exact: %1</source>
         <translation>Exact: %1</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="166"/>
+        <location filename="../views/vertex_table.cpp" line="167"/>
         <source>Mixed along the edge it was made on, as shading does (normalised per pixel)</source>
         <translation>Mixed along the edge it was made on, as shading does (normalised per pixel)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="182"/>
+        <location filename="../views/vertex_table.cpp" line="183"/>
         <source>Draw</source>
         <translation>Draw</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="184"/>
+        <location filename="../views/vertex_table.cpp" line="185"/>
         <source>Vertex</source>
         <translation>Vertex</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="186"/>
+        <location filename="../views/vertex_table.cpp" line="187"/>
         <source>World (x, y, z)</source>
         <translation>World (x, y, z)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="188"/>
+        <location filename="../views/vertex_table.cpp" line="189"/>
         <source>View pView</source>
         <translation>View pView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="190"/>
+        <location filename="../views/vertex_table.cpp" line="191"/>
         <source>NDC pNdc</source>
         <translation>NDC pNdc</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="192"/>
+        <location filename="../views/vertex_table.cpp" line="193"/>
         <source>Screen pScreen</source>
         <translation>Screen pScreen</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="194"/>
+        <location filename="../views/vertex_table.cpp" line="195"/>
         <source>Normal nView</source>
         <translation>Normal nView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="202"/>
+        <location filename="../views/vertex_table.cpp" line="203"/>
         <source>The draw (object) the vertex belongs to</source>
         <translation>The draw (object) the vertex belongs to</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="204"/>
+        <location filename="../views/vertex_table.cpp" line="205"/>
         <source>The vertex number as in the file (1-based); vertices made by clipping come after the draw&apos;s own</source>
         <translation>The vertex number as in the file (1-based); vertices made by clipping come after the draw&apos;s own</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="208"/>
+        <location filename="../views/vertex_table.cpp" line="209"/>
         <source>P = worldFromModel · P_model</source>
         <translation>P = worldFromModel · P_model</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="210"/>
+        <location filename="../views/vertex_table.cpp" line="211"/>
         <source>pView = [U; V; N](P − C) for the course camera, or the draw&apos;s view matrix times P_model</source>
         <translation>pView = [U; V; N](P − C) for the course camera, or the draw&apos;s view matrix times P_model</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="214"/>
+        <location filename="../views/vertex_table.cpp" line="215"/>
         <source>pNdc = ((d/hx) x/z, (d/hy) y/z) for the course camera, or pClip.xy / pClip.w with pClip = clipFromView · pView</source>
         <translation>pNdc = ((d/hx) x/z, (d/hy) y/z) for the course camera, or pClip.xy / pClip.w with pClip = clipFromView · pView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="218"/>
+        <location filename="../views/vertex_table.cpp" line="219"/>
         <source>pScreen = ((x_ndc + 1) w/2, (1 − y_ndc) h/2), truncated (snapped to the rules&apos; grid); the tooltip holds the exact value</source>
         <translation>pScreen = ((x_ndc + 1) w/2, (1 − y_ndc) h/2), truncated (snapped to the rules&apos; grid); the tooltip holds the exact value</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="222"/>
+        <location filename="../views/vertex_table.cpp" line="223"/>
         <source>The view-space vertex normal: the normalised sum of the normals of the triangles around it (stage 3)</source>
         <translation>The view-space vertex normal: the normalised sum of the normals of the triangles around it (stage 3)</translation>
     </message>
@@ -4046,132 +4126,132 @@
 <context>
     <name>rasterlab::VertexTableView</name>
     <message>
-        <location filename="../views/vertex_table.cpp" line="254"/>
+        <location filename="../views/vertex_table.cpp" line="258"/>
         <source>Only the selected triangle&apos;s vertices</source>
         <translation>Only the selected triangle&apos;s vertices</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="312"/>
+        <location filename="../views/vertex_table.cpp" line="316"/>
         <source>%1 vertices, %2 of them made by clipping</source>
         <translation>%1 vertices, %2 of them made by clipping</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="313"/>
+        <location filename="../views/vertex_table.cpp" line="317"/>
         <source>%1 vertices</source>
         <translation>%1 vertices</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="407"/>
+        <location filename="../views/vertex_table.cpp" line="411"/>
         <source>&lt;p&gt;Select a row, or pick a pixel in the image: its triangle&apos;s three vertices are selected. The numbers of the selected vertex are worked through each formula here.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Select a row, or pick a pixel in the image: its triangle&apos;s three vertices are selected. The numbers of the selected vertex are worked through each formula here.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="410"/>
+        <location filename="../views/vertex_table.cpp" line="414"/>
         <source>&lt;p&gt;No frame yet.&lt;/p&gt;</source>
         <translation>&lt;p&gt;No frame yet.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="434"/>
+        <location filename="../views/vertex_table.cpp" line="438"/>
         <source>Vertex %1 of draw %2 (%3)</source>
         <translation>Vertex %1 of draw %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="435"/>
+        <location filename="../views/vertex_table.cpp" line="439"/>
         <source>Vertex %1 of %2</source>
         <translation>Vertex %1 of %2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="442"/>
+        <location filename="../views/vertex_table.cpp" line="446"/>
         <source>&lt;p&gt;Made by clipping the edge %1-%2 where it crosses a plane (the near plane or a clip plane), at t = %3:&lt;br&gt;pView = pView&lt;sub&gt;%1&lt;/sub&gt; + t (pView&lt;sub&gt;%2&lt;/sub&gt; − pView&lt;sub&gt;%1&lt;/sub&gt;) = %4 + %3 (%5 − %4) = &lt;b&gt;%6&lt;/b&gt;&lt;br&gt;World: P = %7 (the same interpolation).&lt;/p&gt;</source>
         <translation>&lt;p&gt;Made by clipping the edge %1-%2 where it crosses a plane (the near plane or a clip plane), at t = %3:&lt;br&gt;pView = pView&lt;sub&gt;%1&lt;/sub&gt; + t (pView&lt;sub&gt;%2&lt;/sub&gt; − pView&lt;sub&gt;%1&lt;/sub&gt;) = %4 + %3 (%5 − %4) = &lt;b&gt;%6&lt;/b&gt;&lt;br&gt;World: P = %7 (the same interpolation).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="453"/>
+        <location filename="../views/vertex_table.cpp" line="457"/>
         <source>&lt;p&gt;World: P = M(t) · worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt; (M: the animation matrix at t = %3 s)&lt;/p&gt;</source>
         <translation>&lt;p&gt;World: P = M(t) · worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt; (M: the animation matrix at t = %3 s)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="458"/>
+        <location filename="../views/vertex_table.cpp" line="462"/>
         <source>&lt;p&gt;World: P = P&lt;sub&gt;model&lt;/sub&gt; = &lt;b&gt;%1&lt;/b&gt; (worldFromModel is the identity)&lt;/p&gt;</source>
         <translation>&lt;p&gt;World: P = P&lt;sub&gt;model&lt;/sub&gt; = &lt;b&gt;%1&lt;/b&gt; (worldFromModel is the identity)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="462"/>
+        <location filename="../views/vertex_table.cpp" line="466"/>
         <source>&lt;p&gt;World: P = worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;World: P = worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="468"/>
+        <location filename="../views/vertex_table.cpp" line="472"/>
         <source>&lt;p&gt;View: pView = [U; V; N](P − C), with C = %1:&lt;br&gt;P − C = %2&lt;br&gt;x = U · (P − C) = %3 · %2 = %4&lt;br&gt;y = V · (P − C) = %5 · %2 = %6&lt;br&gt;z = N · (P − C) = %7 · %2 = %8&lt;br&gt;pView = &lt;b&gt;%9&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;View: pView = [U; V; N](P − C), with C = %1:&lt;br&gt;P − C = %2&lt;br&gt;x = U · (P − C) = %3 · %2 = %4&lt;br&gt;y = V · (P − C) = %5 · %2 = %6&lt;br&gt;z = N · (P − C) = %7 · %2 = %8&lt;br&gt;pView = &lt;b&gt;%9&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="476"/>
+        <location filename="../views/vertex_table.cpp" line="480"/>
         <source>&lt;p&gt;View: pView = viewFromModel · P&lt;sub&gt;model&lt;/sub&gt; (the draw&apos;s own view matrix) = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;View: pView = viewFromModel · P&lt;sub&gt;model&lt;/sub&gt; (the draw&apos;s own view matrix) = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="484"/>
+        <location filename="../views/vertex_table.cpp" line="488"/>
         <source>&lt;p&gt;z = %1 is not beyond the near plane (w = %2): the vertex is behind, not projected; the triangles through it are clipped there.&lt;/p&gt;</source>
         <translation>&lt;p&gt;z = %1 is not beyond the near plane (w = %2): the vertex is behind, not projected; the triangles through it are clipped there.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="492"/>
+        <location filename="../views/vertex_table.cpp" line="496"/>
         <source>&lt;p&gt;NDC: pNdc = ((d/hx) x/z, (d/hy) y/z) = ((%1/%2) · %3/%4, (%1/%5) · %6/%4) = &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;NDC: pNdc = ((d/hx) x/z, (d/hy) y/z) = ((%1/%2) · %3/%4, (%1/%5) · %6/%4) = &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="497"/>
+        <location filename="../views/vertex_table.cpp" line="501"/>
         <source>&lt;p&gt;Clip: pClip = clipFromView · pView = %1&lt;br&gt;NDC: pNdc = pClip.xy / pClip.w = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Clip: pClip = clipFromView · pView = %1&lt;br&gt;NDC: pNdc = pClip.xy / pClip.w = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="506"/>
+        <location filename="../views/vertex_table.cpp" line="510"/>
         <source>truncated, as C&apos;s (int) does</source>
         <translation>truncated, as C&apos;s (int) does</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="508"/>
+        <location filename="../views/vertex_table.cpp" line="512"/>
         <source>truncated to a grid of 1/%1 pixel</source>
         <translation>truncated to a grid of 1/%1 pixel</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="510"/>
+        <location filename="../views/vertex_table.cpp" line="514"/>
         <source>rounded to the nearest 1/%1 pixel</source>
         <translation>rounded to the nearest 1/%1 pixel</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="511"/>
+        <location filename="../views/vertex_table.cpp" line="515"/>
         <source>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</source>
         <translation>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="512"/>
+        <location filename="../views/vertex_table.cpp" line="516"/>
         <source>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</source>
         <translation>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="517"/>
+        <location filename="../views/vertex_table.cpp" line="521"/>
         <source>&lt;p&gt;Screen: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Screen: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="526"/>
+        <location filename="../views/vertex_table.cpp" line="530"/>
         <source>&lt;p&gt;Normal: mixed along the edge like pView, %1; shading normalises it per pixel.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: mixed along the edge like pView, %1; shading normalises it per pixel.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="530"/>
+        <location filename="../views/vertex_table.cpp" line="534"/>
         <source>&lt;p&gt;Normal: the file&apos;s normal carried to view space by the inverse transpose of viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: the file&apos;s normal carried to view space by the inverse transpose of viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="537"/>
+        <location filename="../views/vertex_table.cpp" line="541"/>
         <source>&lt;p&gt;Normal: the normalised sum of the normals of the %1 triangles around it: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: the normalised sum of the normals of the %1 triangles around it: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="543"/>
+        <location filename="../views/vertex_table.cpp" line="547"/>
         <source>&lt;p&gt;Normal: none, %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: none, %1.&lt;/p&gt;</translation>
     </message>
@@ -4179,87 +4259,87 @@
 <context>
     <name>rasterlab::ZBufferView</name>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="156"/>
+        <location filename="../views/zbuffer_view.cpp" line="157"/>
         <source>Automatic range (nearest to farthest drawn)</source>
         <translation>Automatic range (nearest to farthest drawn)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="172"/>
+        <location filename="../views/zbuffer_view.cpp" line="173"/>
         <source>Grey (near white)</source>
         <translation>Grey (near white)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="173"/>
+        <location filename="../views/zbuffer_view.cpp" line="174"/>
         <source>False colour (near red, far blue)</source>
         <translation>False colour (near red, far blue)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="184"/>
+        <location filename="../views/zbuffer_view.cpp" line="186"/>
         <source>Nearest (white / red):</source>
         <translation>Nearest (white / red):</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="185"/>
+        <location filename="../views/zbuffer_view.cpp" line="187"/>
         <source>Farthest (dark / blue):</source>
         <translation>Farthest (dark / blue):</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="186"/>
+        <location filename="../views/zbuffer_view.cpp" line="188"/>
         <source>Colours:</source>
         <translation>Colours:</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="249"/>
+        <location filename="../views/zbuffer_view.cpp" line="252"/>
         <source>+&amp;infin;</source>
         <translation>+&amp;infin;</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="253"/>
+        <location filename="../views/zbuffer_view.cpp" line="256"/>
         <source>the view-space z of P&apos;</source>
         <translation>the view-space z of P&apos;</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="253"/>
+        <location filename="../views/zbuffer_view.cpp" line="256"/>
         <source>the NDC z</source>
         <translation>the NDC z</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="261"/>
+        <location filename="../views/zbuffer_view.cpp" line="264"/>
         <source>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</source>
         <translation>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="316"/>
+        <location filename="../views/zbuffer_view.cpp" line="319"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="333"/>
+        <location filename="../views/zbuffer_view.cpp" line="336"/>
         <source>No pixel holds a triangle: the buffer is all clear value.</source>
         <translation>No pixel holds a triangle: the buffer is all clear value.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="336"/>
+        <location filename="../views/zbuffer_view.cpp" line="339"/>
         <source>Drawn depths from %1 to %2; shown from %3 to %4.</source>
         <translation>Drawn depths from %1 to %2; shown from %3 to %4.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="342"/>
+        <location filename="../views/zbuffer_view.cpp" line="345"/>
         <source>%1 pixels nearer and %2 farther than the range are drawn at its ends.</source>
         <translation>%1 pixels nearer and %2 farther than the range are drawn at its ends.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="356"/>
+        <location filename="../views/zbuffer_view.cpp" line="359"/>
         <source>+inf</source>
         <translation>+inf</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="357"/>
+        <location filename="../views/zbuffer_view.cpp" line="360"/>
         <source>x %1, y %2: no triangle; the depth stays at the clear value %3</source>
         <translation>x %1, y %2: no triangle; the depth stays at the clear value %3</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="362"/>
+        <location filename="../views/zbuffer_view.cpp" line="365"/>
         <source>x %1, y %2: depth %3, triangle %4</source>
         <translation>x %1, y %2: depth %3, triangle %4</translation>
     </message>

@@ -142,17 +142,17 @@
         <translation>Erros em passos de byte (1/255) nos pixels que as duas imagens cobrem</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="87"/>
+        <location filename="../app/accuracy_panel.cpp" line="90"/>
         <source>Click a pixel to compare the mode with the reference there</source>
         <translation>Clique num pixel para comparar ali o modo com a referência</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="120"/>
+        <location filename="../app/accuracy_panel.cpp" line="123"/>
         <source>The scene changed: measure again.</source>
         <translation>A cena mudou: meça de novo.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/accuracy_panel.cpp" line="142"/>
+        <location filename="../app/accuracy_panel.cpp" line="145"/>
         <source>Measuring %n mode(s) against the exact reference...</source>
         <translation>
             <numerusform>Medindo %n modo contra a referência exata...</numerusform>
@@ -160,37 +160,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="177"/>
+        <location filename="../app/accuracy_panel.cpp" line="180"/>
         <source>Cancelled.</source>
         <translation>Cancelado.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="178"/>
+        <location filename="../app/accuracy_panel.cpp" line="181"/>
         <source>The measurement failed: %1</source>
         <translation>A medição falhou: %1</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="184"/>
+        <location filename="../app/accuracy_panel.cpp" line="187"/>
         <source>%1 at %2x%3: %4 modes; the exact reference cast %5 rays in %6 ms.</source>
         <translation>%1 em %2x%3: %4 modos; a referência exata lançou %5 raios em %6 ms.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="211"/>
+        <location filename="../app/accuracy_panel.cpp" line="214"/>
         <source>Error against run time: %1, %2x%3</source>
         <translation>Erro contra tempo de execução: %1, %2x%3</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="258"/>
+        <location filename="../app/accuracy_panel.cpp" line="261"/>
         <source>%1 (%2): coverage differs on %3 pixels (%4); the largest error, %5 byte steps, is at (%6, %7). Click the map to compare a pixel.</source>
         <translation>%1 (%2): a cobertura difere em %3 pixels (%4); o maior erro, %5 passos de byte, está em (%6, %7). Clique no mapa para comparar um pixel.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="277"/>
+        <location filename="../app/accuracy_panel.cpp" line="280"/>
         <source>Pixel (%1, %2), %3: mode %4, reference %5, difference %6 (byte steps).</source>
         <translation>Pixel (%1, %2), %3: modo %4, referência %5, diferença %6 (passos de byte).</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="283"/>
+        <location filename="../app/accuracy_panel.cpp" line="286"/>
         <source>Coverage differs: %1 of %2 samples covered by the mode, %3 by the reference.</source>
         <translation>A cobertura difere: %1 de %2 amostras cobertas pelo modo, %3 pela referência.</translation>
     </message>
@@ -198,88 +198,88 @@
 <context>
     <name>rasterlab::AnimationPanel</name>
     <message>
-        <location filename="../app/animation_panel.cpp" line="29"/>
+        <location filename="../app/animation_panel.cpp" line="30"/>
         <source>Animate: each draw moved by M(t)</source>
         <translation>Animar: cada desenho movido por M(t)</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="34"/>
-        <location filename="../app/animation_panel.cpp" line="207"/>
+        <location filename="../app/animation_panel.cpp" line="35"/>
+        <location filename="../app/animation_panel.cpp" line="210"/>
         <source>Play</source>
         <translation>Reproduzir</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="39"/>
+        <location filename="../app/animation_panel.cpp" line="40"/>
         <source>Play or pause the animation; paused, every stage view inspects the frame shown</source>
         <translation>Reproduz ou pausa a animação; pausada, o painel de cada etapa inspeciona o quadro exibido</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="60"/>
+        <location filename="../app/animation_panel.cpp" line="61"/>
         <source>Frames:</source>
         <translation>Quadros:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="63"/>
+        <location filename="../app/animation_panel.cpp" line="64"/>
         <source>Frames a second:</source>
         <translation>Quadros por segundo:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="66"/>
+        <location filename="../app/animation_panel.cpp" line="67"/>
         <source> °/s</source>
         <translation> °/s</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="67"/>
+        <location filename="../app/animation_panel.cpp" line="68"/>
         <source>Turn:</source>
         <translation>Rotação:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="68"/>
+        <location filename="../app/animation_panel.cpp" line="69"/>
         <source>Turn about the camera&apos;s up (a turntable)</source>
         <translation>Girar em torno do vetor para cima da câmera (uma mesa giratória)</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="94"/>
+        <location filename="../app/animation_panel.cpp" line="97"/>
         <source>Axis:</source>
         <translation>Eixo:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="96"/>
+        <location filename="../app/animation_panel.cpp" line="99"/>
         <source>Moves (units/s):</source>
         <translation>Translação (unidades/s):</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="97"/>
+        <location filename="../app/animation_panel.cpp" line="100"/>
         <source>Scale:</source>
         <translation>Escala:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="108"/>
+        <location filename="../app/animation_panel.cpp" line="111"/>
         <source>&lt;i&gt;The animation belongs to this session: course files have no such field, and saving the camera or lighting does not write it.&lt;/i&gt;</source>
         <translation>&lt;i&gt;A animação pertence a esta sessão: os arquivos do curso não têm esse campo, e salvar a câmera ou a iluminação não a grava.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="207"/>
+        <location filename="../app/animation_panel.cpp" line="210"/>
         <source>Pause</source>
         <translation>Pausar</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="219"/>
+        <location filename="../app/animation_panel.cpp" line="222"/>
         <source>Frame %1 of %2, t = %3 / %4 = %5 s</source>
         <translation>Quadro %1 de %2, t = %3 / %4 = %5 s</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="238"/>
+        <location filename="../app/animation_panel.cpp" line="241"/>
         <source>&lt;p&gt;M(t) = T(v t) · T(c) · R(axis, ω t) · S · T(−c): not applied (the animation is off, so M is the identity).&lt;/p&gt;</source>
         <translation>&lt;p&gt;M(t) = T(v t) · T(c) · R(eixo, ω t) · S · T(−c): não aplicada (a animação está desligada, então M é a identidade).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="254"/>
+        <location filename="../app/animation_panel.cpp" line="257"/>
         <source>&lt;p&gt;M(t) = T(v t) · T(c) · R(axis, ω t) · S · T(−c), at t = %1 s:&lt;br&gt;c = %2 (the centre of the bounding box), axis = %3,&lt;br&gt;ω t = %4 °/s · %1 s = %5°, v t = %6, S = diag%7&lt;/p&gt;</source>
         <translation>&lt;p&gt;M(t) = T(v t) · T(c) · R(eixo, ω t) · S · T(−c), em t = %1 s:&lt;br&gt;c = %2 (o centro da caixa envolvente), eixo = %3,&lt;br&gt;ω t = %4 °/s · %1 s = %5°, v t = %6, S = diag%7&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="262"/>
+        <location filename="../app/animation_panel.cpp" line="265"/>
         <source>&lt;p&gt;Normals are moved by the inverse transpose of M (stage 3).&lt;/p&gt;</source>
         <translation>&lt;p&gt;As normais são levadas pela inversa transposta de M (etapa 3).&lt;/p&gt;</translation>
     </message>
@@ -454,117 +454,117 @@
         <translation>Próximo passo</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="562"/>
+        <location filename="../views/camera_basis_view.cpp" line="561"/>
         <source>The camera was rejected: %1</source>
         <translation>A câmera foi rejeitada: %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="565"/>
+        <location filename="../views/camera_basis_view.cpp" line="564"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="567"/>
+        <location filename="../views/camera_basis_view.cpp" line="566"/>
         <source>This stage is skipped: %1.</source>
         <translation>Esta etapa é omitida: %1.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="569"/>
+        <location filename="../views/camera_basis_view.cpp" line="568"/>
         <source>the frame has no camera basis</source>
         <translation>o quadro não tem base da câmera</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="576"/>
+        <location filename="../views/camera_basis_view.cpp" line="575"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; From the course camera (C, N, V) Gram-Schmidt makes the orthonormal basis U, V, N of view space. A scene whose draws carry their own model/view matrices (HW2 command files) has no course camera: this stage does nothing for it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Base da câmera.&lt;/b&gt; A partir da câmera do curso (C, N, V), Gram-Schmidt constrói a base ortonormal U, V, N do espaço de vista. Uma cena cujos desenhos trazem suas próprias matrizes de modelo/vista (arquivos de comandos HW2) não tem câmera do curso: esta etapa não faz nada para ela.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="589"/>
+        <location filename="../views/camera_basis_view.cpp" line="588"/>
         <source>N and V are nearly parallel: |V − (V·N) N| / |V| = %1, below %2. The basis is ill-conditioned: a tiny change of N or V turns U and V a lot. Choose a V further from N.</source>
         <translation>N e V são quase paralelos: |V − (V·N) N| / |V| = %1, abaixo de %2. A base é mal condicionada: uma mudança mínima de N ou V gira muito U e V. Escolha um V mais afastado de N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="594"/>
+        <location filename="../views/camera_basis_view.cpp" line="593"/>
         <source>1. N := N / |N| = %1 / %2 = %3</source>
         <translation>1. N := N / |N| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="596"/>
+        <location filename="../views/camera_basis_view.cpp" line="595"/>
         <source>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</source>
         <translation>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="598"/>
+        <location filename="../views/camera_basis_view.cpp" line="597"/>
         <source>3. V := V / |V| = %1 / %2 = %3</source>
         <translation>3. V := V / |V| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="600"/>
+        <location filename="../views/camera_basis_view.cpp" line="599"/>
         <source>4. U := N × V = %1 × %2 = %3</source>
         <translation>4. U := N × V = %1 × %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="602"/>
+        <location filename="../views/camera_basis_view.cpp" line="601"/>
         <source>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; largest %7</source>
         <translation>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; maior %7</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="626"/>
+        <location filename="../views/camera_basis_view.cpp" line="625"/>
         <source>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): rows U, V, N, then (0 0 0 1); the last column is −U·C, −V·C, −N·C.</source>
         <translation>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): linhas U, V, N e depois (0 0 0 1); a última coluna é −U·C, −V·C, −N·C.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="638"/>
+        <location filename="../views/camera_basis_view.cpp" line="637"/>
         <source>&lt;p&gt;Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vértice 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="641"/>
+        <location filename="../views/camera_basis_view.cpp" line="640"/>
         <source>, in front of the camera (z &gt; 0)</source>
         <translation>, à frente da câmera (z &gt; 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="642"/>
+        <location filename="../views/camera_basis_view.cpp" line="641"/>
         <source>, behind the camera (z ≤ 0)</source>
         <translation>, atrás da câmera (z ≤ 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="645"/>
+        <location filename="../views/camera_basis_view.cpp" line="644"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; Gram-Schmidt keeps the direction of N (where the camera looks), removes from V its part along N so that up is perpendicular to the view direction, and completes the frame with U = N × V, the image&apos;s right. viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Base da câmera.&lt;/b&gt; Gram-Schmidt mantém a direção de N (para onde a câmera olha), remove de V sua componente ao longo de N para que o &quot;para cima&quot; fique perpendicular à direção de visão, e completa o referencial com U = N × V, a direita da imagem. viewFromWorld = [U; V; N] (P − C) põe a câmera na origem olhando ao longo de +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="677"/>
+        <location filename="../views/camera_basis_view.cpp" line="676"/>
         <source>Step %1 of 4</source>
         <translation>Passo %1 de 4</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="691"/>
+        <location filename="../views/camera_basis_view.cpp" line="690"/>
         <source>Step forward to normalise N.</source>
         <translation>Avance um passo para normalizar N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="692"/>
+        <location filename="../views/camera_basis_view.cpp" line="691"/>
         <source>Step forward to remove from V its part along N.</source>
         <translation>Avance um passo para remover de V sua componente ao longo de N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="693"/>
+        <location filename="../views/camera_basis_view.cpp" line="692"/>
         <source>Step forward to normalise V.</source>
         <translation>Avance um passo para normalizar V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="694"/>
+        <location filename="../views/camera_basis_view.cpp" line="693"/>
         <source>Step forward to make U = N × V.</source>
         <translation>Avance um passo para obter U = N × V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="695"/>
+        <location filename="../views/camera_basis_view.cpp" line="694"/>
         <source>The basis is complete; the frustum is drawn with it.</source>
         <translation>A base está completa; o frustum é desenhado com ela.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="708"/>
+        <location filename="../views/camera_basis_view.cpp" line="707"/>
         <source>&lt;b&gt;Orthonormality residuals&lt;/b&gt; (0 up to rounding): %1</source>
         <translation>&lt;b&gt;Resíduos de ortonormalidade&lt;/b&gt; (0 a menos de arredondamento): %1</translation>
     </message>
@@ -572,403 +572,403 @@
 <context>
     <name>rasterlab::EditPanel</name>
     <message>
-        <location filename="../app/edit_panel.cpp" line="215"/>
+        <location filename="../app/edit_panel.cpp" line="216"/>
         <source>One kd for the three channels (the UFPE files have one number): changing one changes all three</source>
         <translation>Um só kd para os três canais (os arquivos da UFPE têm um só número): mudar um muda os três</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="256"/>
+        <location filename="../app/edit_panel.cpp" line="257"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="256"/>
+        <location filename="../app/edit_panel.cpp" line="257"/>
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="256"/>
+        <location filename="../app/edit_panel.cpp" line="257"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="259"/>
-        <location filename="../app/edit_panel.cpp" line="691"/>
+        <location filename="../app/edit_panel.cpp" line="260"/>
+        <location filename="../app/edit_panel.cpp" line="692"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="261"/>
+        <location filename="../app/edit_panel.cpp" line="262"/>
         <source>C: the camera&apos;s position (world)</source>
         <translation>C: a posição da câmera (mundo)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="264"/>
+        <location filename="../app/edit_panel.cpp" line="265"/>
         <source>N: the view direction (normalised by the camera basis)</source>
         <translation>N: a direção de visão (normalizada pela base da câmera)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="266"/>
+        <location filename="../app/edit_panel.cpp" line="267"/>
         <source>V: the up vector (made orthogonal to N by Gram-Schmidt)</source>
         <translation>V: o vetor para cima (tornado ortogonal a N por Gram-Schmidt)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="268"/>
+        <location filename="../app/edit_panel.cpp" line="269"/>
         <source>d: the distance from C to the projection plane</source>
         <translation>d: a distância de C ao plano de projeção</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="270"/>
+        <location filename="../app/edit_panel.cpp" line="271"/>
         <source>hx: half the width of the window on the projection plane</source>
         <translation>hx: metade da largura da janela no plano de projeção</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="272"/>
+        <location filename="../app/edit_panel.cpp" line="273"/>
         <source>hy: half the height of the window on the projection plane</source>
         <translation>hy: metade da altura da janela no plano de projeção</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="276"/>
+        <location filename="../app/edit_panel.cpp" line="277"/>
         <source>Light</source>
         <translation>Luz</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="279"/>
+        <location filename="../app/edit_panel.cpp" line="280"/>
         <source>The light whose values are shown</source>
         <translation>A luz cujos valores são mostrados</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="285"/>
+        <location filename="../app/edit_panel.cpp" line="286"/>
         <source>Add a light: a copy of the light shown</source>
         <translation>Adiciona uma luz: uma cópia da luz mostrada</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="290"/>
+        <location filename="../app/edit_panel.cpp" line="291"/>
         <source>Remove the light shown (the scene keeps one light at least)</source>
         <translation>Remove a luz mostrada (a cena mantém pelo menos uma luz)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="299"/>
+        <location filename="../app/edit_panel.cpp" line="300"/>
         <source>Pl: the light&apos;s position (world), or the direction toward it for a directional light</source>
         <translation>Pl: a posição da luz (mundo), ou a direção até ela, no caso de uma luz direcional</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="302"/>
+        <location filename="../app/edit_panel.cpp" line="303"/>
         <source>Directional (w = 0)</source>
         <translation>Direcional (w = 0)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="303"/>
+        <location filename="../app/edit_panel.cpp" line="304"/>
         <source>A directional light is infinitely far: L is the same everywhere and it is not attenuated</source>
         <translation>Uma luz direcional está infinitamente distante: L é o mesmo em todo lugar e ela não é atenuada</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="307"/>
+        <location filename="../app/edit_panel.cpp" line="308"/>
         <source>Il: the light&apos;s colour, 0 to 255 per channel</source>
         <translation>Il: a cor da luz, de 0 a 255 por canal</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="311"/>
+        <location filename="../app/edit_panel.cpp" line="312"/>
         <source>att</source>
         <translation>att</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="312"/>
+        <location filename="../app/edit_panel.cpp" line="313"/>
         <source>Attenuation: the light&apos;s diffuse and specular terms are divided by kc + kl d + kq d², d its distance to the point (1 0 0: none)</source>
         <translation>Atenuação: os termos difuso e especular da luz são divididos por kc + kl d + kq d², sendo d a sua distância ao ponto (1 0 0: nenhuma)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="315"/>
+        <location filename="../app/edit_panel.cpp" line="316"/>
         <source>Spot</source>
         <translation>Spot</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="316"/>
+        <location filename="../app/edit_panel.cpp" line="317"/>
         <source>A spot lights only the points within its cutoff angle of its direction</source>
         <translation>Um spot ilumina só os pontos que estão dentro do seu ângulo de corte em torno da sua direção</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="319"/>
+        <location filename="../app/edit_panel.cpp" line="320"/>
         <source>D: the direction the spot points to (world)</source>
         <translation>D: a direção para onde o spot aponta (mundo)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="320"/>
+        <location filename="../app/edit_panel.cpp" line="321"/>
         <source>cut</source>
         <translation>corte</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="321"/>
+        <location filename="../app/edit_panel.cpp" line="322"/>
         <source>The spot&apos;s cutoff angle, 0 to 90 degrees</source>
         <translation>O ângulo de corte do spot, de 0 a 90 graus</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="322"/>
+        <location filename="../app/edit_panel.cpp" line="323"/>
         <source>exp</source>
         <translation>exp</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="323"/>
+        <location filename="../app/edit_panel.cpp" line="324"/>
         <source>The spot&apos;s exponent: its light falls off as (-L.D)^exp toward the edge</source>
         <translation>O expoente do spot: sua luz diminui como (-L.D)^exp em direção à borda</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="327"/>
+        <location filename="../app/edit_panel.cpp" line="328"/>
         <source>Ambient</source>
         <translation>Ambiente</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="330"/>
+        <location filename="../app/edit_panel.cpp" line="331"/>
         <source>Ia: the ambient light&apos;s colour, 0 to 255 per channel</source>
         <translation>Ia: a cor da luz ambiente, de 0 a 255 por canal</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="332"/>
+        <location filename="../app/edit_panel.cpp" line="333"/>
         <source>ka: the ambient coefficient, 0 to 1</source>
         <translation>ka: o coeficiente ambiente, de 0 a 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="335"/>
+        <location filename="../app/edit_panel.cpp" line="336"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="338"/>
+        <location filename="../app/edit_panel.cpp" line="339"/>
         <source>kd: the diffuse coefficient of each channel, 0 to 1</source>
         <translation>kd: o coeficiente difuso de cada canal, de 0 a 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="341"/>
+        <location filename="../app/edit_panel.cpp" line="342"/>
         <source>Od: the object&apos;s diffuse colour, 0 to 1 per channel</source>
         <translation>Od: a cor difusa do objeto, de 0 a 1 por canal</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="343"/>
+        <location filename="../app/edit_panel.cpp" line="344"/>
         <source>Ke: the light the object gives off by itself, 0 to 255 per channel (added to every lit point)</source>
         <translation>Ke: a luz que o objeto emite por si mesmo, de 0 a 255 por canal (somada a todo ponto iluminado)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="347"/>
+        <location filename="../app/edit_panel.cpp" line="348"/>
         <source>ks: the specular coefficient, 0 to 1</source>
         <translation>ks: o coeficiente especular, de 0 a 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="349"/>
+        <location filename="../app/edit_panel.cpp" line="350"/>
         <source>n: the specular exponent (larger: a smaller, sharper highlight)</source>
         <translation>n: o expoente especular (maior: um brilho menor e mais nítido)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="353"/>
+        <location filename="../app/edit_panel.cpp" line="354"/>
         <source>Shading</source>
         <translation>Sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="356"/>
+        <location filename="../app/edit_panel.cpp" line="357"/>
         <source>Phong (per pixel)</source>
         <translation>Phong (por pixel)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="357"/>
+        <location filename="../app/edit_panel.cpp" line="358"/>
         <source>Gouraud (per vertex)</source>
         <translation>Gouraud (por vértice)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="358"/>
+        <location filename="../app/edit_panel.cpp" line="359"/>
         <source>Flat (per triangle)</source>
         <translation>Flat (por triângulo)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="359"/>
+        <location filename="../app/edit_panel.cpp" line="360"/>
         <source>Painter&apos;s algorithm (flat, no depth test)</source>
         <translation>Algoritmo do pintor (flat, sem teste de profundidade)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="363"/>
+        <location filename="../app/edit_panel.cpp" line="364"/>
         <source>Two-sided lighting</source>
         <translation>Iluminação dos dois lados</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="364"/>
+        <location filename="../app/edit_panel.cpp" line="365"/>
         <source>On (the course&apos;s rule): where V.N &lt; 0 the normal is turned round, so the back of a surface is lit like its front. Off: one-sided, the back keeps a normal pointing away</source>
         <translation>Ligada (a regra do curso): onde V.N &lt; 0 a normal é invertida, então o verso de uma superfície é iluminado como a frente. Desligada: um lado só, o verso mantém uma normal que aponta para longe</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="367"/>
+        <location filename="../app/edit_panel.cpp" line="368"/>
         <source>Blinn-Phong highlight</source>
         <translation>Brilho de Blinn-Phong</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="368"/>
+        <location filename="../app/edit_panel.cpp" line="369"/>
         <source>The highlight with the half vector H = (L + V)/|L + V| instead of Phong&apos;s reflection R: (N.H)^n instead of (R.V)^n</source>
         <translation>O brilho com o vetor médio H = (L + V)/|L + V| em vez da reflexão R de Phong: (N.H)^n em vez de (R.V)^n</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="432"/>
+        <location filename="../app/edit_panel.cpp" line="433"/>
         <source>Add light %1</source>
         <translation>adição da luz %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="439"/>
+        <location filename="../app/edit_panel.cpp" line="440"/>
         <source>Remove light %1</source>
         <translation>remoção da luz %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="464"/>
+        <location filename="../app/edit_panel.cpp" line="465"/>
         <source>&amp;Undo</source>
         <translation>&amp;Desfazer</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="467"/>
+        <location filename="../app/edit_panel.cpp" line="468"/>
         <source>&amp;Redo</source>
         <translation>&amp;Refazer</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="471"/>
+        <location filename="../app/edit_panel.cpp" line="472"/>
         <source>&amp;Save Camera and Lighting</source>
         <translation>&amp;Salvar câmera e iluminação</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="474"/>
+        <location filename="../app/edit_panel.cpp" line="475"/>
         <source>Write the edited camera and lighting to their files</source>
         <translation>Grava a câmera e a iluminação editadas nos seus arquivos</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="480"/>
+        <location filename="../app/edit_panel.cpp" line="481"/>
         <source>&amp;Camera...</source>
         <translation>&amp;Câmera...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="482"/>
+        <location filename="../app/edit_panel.cpp" line="483"/>
         <source>&amp;Lighting...</source>
         <translation>&amp;Iluminação...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="485"/>
+        <location filename="../app/edit_panel.cpp" line="486"/>
         <source>Save &amp;As</source>
         <translation>Sal&amp;var como</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="527"/>
+        <location filename="../app/edit_panel.cpp" line="528"/>
         <source>Light %1 of %2</source>
         <translation>Luz %1 de %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="608"/>
+        <location filename="../app/edit_panel.cpp" line="609"/>
         <source>Change %1</source>
         <translation>alteração de %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="677"/>
+        <location filename="../app/edit_panel.cpp" line="678"/>
         <source>A command file is shown: its scene is not edited here.</source>
         <translation>Um arquivo de comandos está aberto: sua cena não é editada aqui.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="683"/>
+        <location filename="../app/edit_panel.cpp" line="684"/>
         <source>built-in scene</source>
         <translation>cena embutida</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="687"/>
+        <location filename="../app/edit_panel.cpp" line="688"/>
         <source>modified</source>
         <translation>modificada</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="693"/>
+        <location filename="../app/edit_panel.cpp" line="694"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="703"/>
+        <location filename="../app/edit_panel.cpp" line="704"/>
         <source>shading</source>
         <translation>sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="705"/>
+        <location filename="../app/edit_panel.cpp" line="706"/>
         <source>two-sided lighting</source>
         <translation>iluminação dos dois lados</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="707"/>
+        <location filename="../app/edit_panel.cpp" line="708"/>
         <source>the highlight&apos;s model</source>
         <translation>modelo do brilho</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="709"/>
+        <location filename="../app/edit_panel.cpp" line="710"/>
         <source>directional</source>
         <translation>direcional</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="712"/>
+        <location filename="../app/edit_panel.cpp" line="713"/>
         <source>spot cutoff</source>
         <translation>corte do spot</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="715"/>
+        <location filename="../app/edit_panel.cpp" line="716"/>
         <source>spot exponent</source>
         <translation>expoente do spot</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="718"/>
+        <location filename="../app/edit_panel.cpp" line="719"/>
         <source>spot direction</source>
         <translation>direção do spot</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="721"/>
+        <location filename="../app/edit_panel.cpp" line="722"/>
         <source>attenuation</source>
         <translation>atenuação</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="731"/>
+        <location filename="../app/edit_panel.cpp" line="732"/>
         <source>%1 of light %2</source>
         <translation>%1 da luz %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="740"/>
+        <location filename="../app/edit_panel.cpp" line="741"/>
         <source>The camera was not saved.</source>
         <translation>A câmera não foi salva.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="740"/>
+        <location filename="../app/edit_panel.cpp" line="741"/>
         <source>The lighting was not saved.</source>
         <translation>A iluminação não foi salva.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="816"/>
+        <location filename="../app/edit_panel.cpp" line="817"/>
         <source>The camera has changes that are not saved (%1).</source>
         <translation>A câmera tem alterações não salvas (%1).</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="817"/>
+        <location filename="../app/edit_panel.cpp" line="818"/>
         <source>The lighting has changes that are not saved (%1).</source>
         <translation>A iluminação tem alterações não salvas (%1).</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="739"/>
+        <location filename="../app/edit_panel.cpp" line="740"/>
         <source>Save</source>
         <translation>Salvar</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="795"/>
+        <location filename="../app/edit_panel.cpp" line="796"/>
         <source>Save Camera As</source>
         <translation>Salvar câmera como</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="795"/>
+        <location filename="../app/edit_panel.cpp" line="796"/>
         <source>Save Lighting As</source>
         <translation>Salvar iluminação como</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="813"/>
+        <location filename="../app/edit_panel.cpp" line="814"/>
         <source>the built-in scene</source>
         <translation>a cena embutida</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="815"/>
+        <location filename="../app/edit_panel.cpp" line="816"/>
         <source>Unsaved changes</source>
         <translation>Alterações não salvas</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="822"/>
+        <location filename="../app/edit_panel.cpp" line="823"/>
         <source>Save them?</source>
         <translation>Salvá-las?</translation>
     </message>
@@ -1080,96 +1080,86 @@
         <translation>RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="168"/>
+        <location filename="../app/main_window.cpp" line="169"/>
         <source>Stopped at a breakpoint: %1</source>
         <translation>Parado num ponto de parada: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="195"/>
+        <location filename="../app/main_window.cpp" line="196"/>
         <location filename="../app/main_window_export.cpp" line="81"/>
         <location filename="../app/main_window_export.cpp" line="118"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="196"/>
+        <location filename="../app/main_window.cpp" line="197"/>
         <source>Stop preparing the stepping of this frame</source>
         <translation>Parar a preparação do passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="200"/>
+        <location filename="../app/main_window.cpp" line="201"/>
         <source>cancelled</source>
         <translation>cancelado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="249"/>
+        <location filename="../app/main_window.cpp" line="253"/>
         <source>Stepping</source>
         <translation>Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="263"/>
+        <location filename="../app/main_window.cpp" line="277"/>
         <source>Edit</source>
         <translation>Edição</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="270"/>
+        <location filename="../app/main_window.cpp" line="284"/>
         <source>Breakpoints</source>
         <translation>Pontos de parada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="278"/>
+        <location filename="../app/main_window.cpp" line="290"/>
         <source>Animation</source>
         <translation>Animação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="290"/>
+        <location filename="../app/main_window.cpp" line="309"/>
         <source>1 Camera basis</source>
         <translation>1 Base da câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="294"/>
+        <location filename="../app/main_window.cpp" line="281"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Inspetor de pixel (iluminação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="299"/>
+        <location filename="../app/main_window.cpp" line="316"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 Coordenadas de vista (vértices)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="304"/>
+        <location filename="../app/main_window.cpp" line="318"/>
         <source>3 Normals</source>
         <translation>3 Normais</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="307"/>
+        <location filename="../app/main_window.cpp" line="320"/>
         <source>4 Projection</source>
         <translation>4 Projeção</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="311"/>
+        <location filename="../app/main_window.cpp" line="312"/>
         <source>5 Scan conversion</source>
         <translation>5 Conversão por varredura</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="317"/>
-        <source>4b Near-plane clipping</source>
-        <translation>4b Recorte no plano próximo</translation>
-    </message>
-    <message>
-        <location filename="../app/main_window.cpp" line="320"/>
+        <location filename="../app/main_window.cpp" line="326"/>
         <source>5b Trapezoids</source>
         <translation>5b Trapézios</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="324"/>
+        <location filename="../app/main_window.cpp" line="330"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
-    </message>
-    <message>
-        <location filename="../app/main_window.cpp" line="329"/>
-        <source>Painter&apos;s algorithm</source>
-        <translation>Algoritmo do pintor</translation>
     </message>
     <message>
         <location filename="../app/main_window_actions.cpp" line="43"/>
@@ -1182,37 +1172,37 @@
         <translation>&amp;Quadros da animação...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="268"/>
+        <location filename="../app/main_window_actions.cpp" line="275"/>
         <source>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</source>
         <translation>&amp;Algoritmo do pintor (flat, do mais distante ao mais próximo, sem teste de profundidade)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="890"/>
+        <location filename="../app/main_window.cpp" line="906"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>avançar, voltar um passo (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="892"/>
+        <location filename="../app/main_window.cpp" line="908"/>
         <source>Space</source>
         <translation>Barra de espaço</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="892"/>
+        <location filename="../app/main_window.cpp" line="908"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>reproduzir / pausar (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="898"/>
+        <location filename="../app/main_window.cpp" line="914"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>soltar o pixel escolhido (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="899"/>
+        <location filename="../app/main_window.cpp" line="915"/>
         <source>presentation mode on / off</source>
         <translation>ligar / desligar o modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="902"/>
+        <location filename="../app/main_window.cpp" line="920"/>
         <source>save, undo, redo</source>
         <translation>salvar, desfazer, refazer</translation>
     </message>
@@ -1222,7 +1212,7 @@
         <translation>Abrir &amp;câmera...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="122"/>
+        <location filename="../app/main_window.cpp" line="123"/>
         <source>Draw with the Plain Divide</source>
         <translation>Desenhar com a divisão simples</translation>
     </message>
@@ -1377,177 +1367,197 @@
         <translation>Restaurar &amp;layout</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="172"/>
+        <location filename="../app/main_window_actions.cpp" line="167"/>
+        <source>Fill the &amp;Window with a Panel</source>
+        <translation>&amp;Preencher a janela com um painel</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_actions.cpp" line="171"/>
+        <source>The panel with the focus or under the mouse (the image, from the image) over the whole window; again, the layout back</source>
+        <translation>O painel com o foco ou sob o mouse (a imagem, a partir da imagem) sobre a janela inteira; de novo, o layout de volta</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_actions.cpp" line="179"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="177"/>
+        <location filename="../app/main_window_actions.cpp" line="184"/>
         <source>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</source>
         <translation>Texto maior, sobreposições mais grossas, alto contraste; as teclas do passador de slides avançam os passos (F5 ou Esc)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="192"/>
+        <location filename="../app/main_window_actions.cpp" line="199"/>
         <source>The System&apos;s</source>
         <translation>Do sistema</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="211"/>
+        <location filename="../app/main_window_actions.cpp" line="218"/>
         <source>S&amp;tep</source>
         <translation>&amp;Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="231"/>
+        <location filename="../app/main_window_actions.cpp" line="238"/>
         <source>Pick the Pixel Under the &amp;Mouse</source>
         <translation>Escolher o pixel sob o &amp;mouse</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="232"/>
+        <location filename="../app/main_window_actions.cpp" line="239"/>
         <source>Ctrl+G</source>
         <translation>Ctrl+G</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="261"/>
+        <location filename="../app/main_window_actions.cpp" line="268"/>
         <source>&amp;Shading</source>
         <translation>&amp;Sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="265"/>
+        <location filename="../app/main_window_actions.cpp" line="272"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (por pixel)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="266"/>
+        <location filename="../app/main_window_actions.cpp" line="273"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (por vértice)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="267"/>
+        <location filename="../app/main_window_actions.cpp" line="274"/>
         <source>&amp;Flat (per triangle)</source>
         <translation>&amp;Flat (por triângulo)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="309"/>
+        <location filename="../app/main_window_actions.cpp" line="316"/>
         <source>Pro&amp;jection</source>
         <translation>Pro&amp;jeção</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="314"/>
+        <location filename="../app/main_window_actions.cpp" line="321"/>
         <source>&amp;Clip at the Near Plane (nothing behind the eye is divided)</source>
         <translation>&amp;Recortar no plano próximo (nada atrás do olho é dividido)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="316"/>
+        <location filename="../app/main_window_actions.cpp" line="323"/>
         <source>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</source>
         <translation>&amp;Divisão simples, sem recorte (a seed 000 como escrita; o HW2 da seed 001)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="318"/>
+        <location filename="../app/main_window_actions.cpp" line="325"/>
         <source>&amp;Same Side (clip only triangles that cross the eye plane)</source>
         <translation>&amp;Mesmo lado (recortar só os triângulos que cruzam o plano do olho)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="578"/>
+        <location filename="../app/main_window.cpp" line="594"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Todos os triângulos estão atrás da câmera (N aponta para longe do objeto?), então o recorte no plano próximo não deixa nada para desenhar. A fórmula da seed 000 divide por z mesmo assim: desenharia %1 dos %2 triângulos como a reflexão do objeto pelo olho, girada meia volta na tela, e o z-buffer (que guarda o menor z) guardaria o lado mais distante da câmera. A vista lateral da projeção mostra o olho, N e o objeto.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="834"/>
+        <location filename="../app/main_window.cpp" line="850"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="887"/>
+        <location filename="../app/main_window.cpp" line="903"/>
         <source>step forward</source>
         <translation>avançar um passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="888"/>
+        <location filename="../app/main_window.cpp" line="904"/>
         <source>step back</source>
         <translation>voltar um passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="891"/>
+        <location filename="../app/main_window.cpp" line="907"/>
         <source>play / pause</source>
         <translation>reproduzir / pausar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="893"/>
+        <location filename="../app/main_window.cpp" line="909"/>
         <source>jump to the start / the end of the frame</source>
         <translation>ir ao início / ao fim do quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="894"/>
+        <location filename="../app/main_window.cpp" line="910"/>
         <source>continue to the next breakpoint</source>
         <translation>continuar até o próximo ponto de parada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="895"/>
+        <location filename="../app/main_window.cpp" line="911"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>avançar por etapa, triângulo, linha de varredura, segmento, pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="896"/>
+        <location filename="../app/main_window.cpp" line="912"/>
         <source>show a stage&apos;s view</source>
         <translation>mostrar o painel de uma etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="897"/>
+        <location filename="../app/main_window.cpp" line="913"/>
         <source>Click, arrows</source>
         <translation>Clique, setas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="897"/>
+        <location filename="../app/main_window.cpp" line="913"/>
         <source>pick a pixel, move it by one</source>
         <translation>escolher um pixel, movê-lo de um em um</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="901"/>
+        <location filename="../app/main_window.cpp" line="916"/>
+        <source>F11, double-click on a panel&apos;s title</source>
+        <translation>F11, duplo clique no título de um painel</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="917"/>
+        <source>fill the window with the panel (the image, from the image), and back</source>
+        <translation>preencher a janela com o painel (a imagem, a partir da imagem), e voltar</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="919"/>
         <source>open, export the image, export it as displayed</source>
         <translation>abrir, exportar a imagem, exportá-la como exibida</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="904"/>
+        <location filename="../app/main_window.cpp" line="922"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>ajustar, tamanho real, aumentar zoom, diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="906"/>
+        <location filename="../app/main_window.cpp" line="924"/>
         <source>Keyboard Shortcuts</source>
         <translation>Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="286"/>
+        <location filename="../app/main_window_actions.cpp" line="293"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Regras de rasterização</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="291"/>
+        <location filename="../app/main_window_actions.cpp" line="298"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Curso (semente 000: vértices em pixels inteiros, interpolação no espaço da tela)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="293"/>
+        <location filename="../app/main_window_actions.cpp" line="300"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>Como uma &amp;GPU (vértices em 1/256 de pixel, centros dos pixels, regra top-left, correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="295"/>
+        <location filename="../app/main_window_actions.cpp" line="302"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (as imagens de referência da semente 001)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="332"/>
+        <location filename="../app/main_window_actions.cpp" line="339"/>
         <source>&amp;Help</source>
         <translation>A&amp;juda</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="335"/>
+        <location filename="../app/main_window_actions.cpp" line="342"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="258"/>
+        <location filename="../app/main_window.cpp" line="262"/>
         <source>Messages</source>
         <translation>Mensagens</translation>
     </message>
@@ -1557,12 +1567,12 @@
         <translation>Cena</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="275"/>
+        <location filename="../app/main_window.cpp" line="287"/>
         <source>Accuracy</source>
         <translation>Exatidão</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="552"/>
+        <location filename="../app/main_window.cpp" line="568"/>
         <location filename="../app/main_window_export.cpp" line="33"/>
         <location filename="../app/main_window_export.cpp" line="92"/>
         <location filename="../app/main_window_export.cpp" line="134"/>
@@ -1581,18 +1591,18 @@
         <translation>Exportado %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="604"/>
+        <location filename="../app/main_window.cpp" line="620"/>
         <source>rendering...</source>
         <translation>renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="604"/>
+        <location filename="../app/main_window.cpp" line="620"/>
         <source>%1, rendering...</source>
         <translation>%1, renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="602"/>
-        <location filename="../app/main_window.cpp" line="797"/>
+        <location filename="../app/main_window.cpp" line="618"/>
+        <location filename="../app/main_window.cpp" line="813"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -1627,168 +1637,213 @@
         <translation>&amp;Painéis</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="169"/>
+        <location filename="../app/main_window_actions.cpp" line="176"/>
         <source>I&amp;mage</source>
         <translation>&amp;Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="187"/>
+        <location filename="../app/main_window_actions.cpp" line="194"/>
         <source>Lan&amp;guage</source>
         <translation>Idi&amp;oma</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="220"/>
+        <location filename="../app/main_window_actions.cpp" line="227"/>
         <source>Step B&amp;y</source>
         <translation>Avançar &amp;por</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="222"/>
+        <location filename="../app/main_window_actions.cpp" line="229"/>
         <source>S&amp;tage</source>
         <translation>&amp;Etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="333"/>
+        <location filename="../app/main_window_actions.cpp" line="340"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="392"/>
+        <location filename="../app/main_window.cpp" line="396"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Modo de apresentação: F5 ou Esc para sair; Page Down, seta para a direita e barra de espaço avançam e reproduzem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="535"/>
+        <location filename="../app/main_window.cpp" line="551"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="612"/>
+        <location filename="../app/main_window.cpp" line="628"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparando o passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="612"/>
+        <location filename="../app/main_window.cpp" line="628"/>
         <source>Rendering</source>
         <translation>Renderizando</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="748"/>
+        <location filename="../app/main_window.cpp" line="764"/>
         <source>Error: %1</source>
         <translation>Erro: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="764"/>
+        <location filename="../app/main_window.cpp" line="780"/>
         <source>Files</source>
         <translation>Arquivos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="767"/>
+        <location filename="../app/main_window.cpp" line="783"/>
         <source>Command file</source>
         <translation>Arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="768"/>
+        <location filename="../app/main_window.cpp" line="784"/>
         <source>Image</source>
         <translation>Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="770"/>
+        <location filename="../app/main_window.cpp" line="786"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vértices, %2 triângulos em %3 desenhos; %4 x %5 pixels; %6 luzes</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="780"/>
+        <location filename="../app/main_window.cpp" line="796"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="781"/>
+        <location filename="../app/main_window.cpp" line="797"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="782"/>
+        <location filename="../app/main_window.cpp" line="798"/>
         <source>Object</source>
         <translation>Objeto</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="784"/>
+        <location filename="../app/main_window.cpp" line="800"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vértices, %2 triângulos; %3 x %4 pixels, sombreamento %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="243"/>
-        <location filename="../app/main_window.cpp" line="791"/>
+        <location filename="../app/main_window.cpp" line="247"/>
+        <location filename="../app/main_window.cpp" line="807"/>
         <source>Stages</source>
         <translation>Etapas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="798"/>
+        <location filename="../app/main_window.cpp" line="280"/>
+        <source>7 Pixel inspector</source>
+        <translation>7 Inspetor de pixel</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="309"/>
+        <source>1 Camera</source>
+        <translation>1 Câmera</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="312"/>
+        <source>5 Scan</source>
+        <translation>5 Varredura</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="315"/>
+        <source>2 View</source>
+        <translation>2 Vista</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="323"/>
+        <source>4b Clipping</source>
+        <translation>4b Recorte</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="325"/>
+        <source>4b Near-plane clipping (seed 002)</source>
+        <translation>4b Recorte no plano próximo (semente 002)</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="328"/>
+        <source>5b Trapezoids: the scan of seed 002</source>
+        <translation>5b Trapézios: a varredura da semente 002</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="333"/>
+        <source>Painter</source>
+        <translation>Pintor</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="334"/>
+        <source>Painter&apos;s algorithm (seed 004)</source>
+        <translation>Algoritmo do pintor (semente 004)</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="814"/>
         <source>skipped: %1</source>
         <translation>omitida: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="801"/>
+        <location filename="../app/main_window.cpp" line="817"/>
         <source>Counts</source>
         <translation>Contagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="802"/>
+        <location filename="../app/main_window.cpp" line="818"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triângulos recortados no plano próximo: %1; atrás da câmera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="805"/>
+        <location filename="../app/main_window.cpp" line="821"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Triângulos de área zero: %1 no espaço de vista, %2 na tela&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="808"/>
+        <location filename="../app/main_window.cpp" line="824"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragmentos testados: %1; escritos: %2; rejeitados: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="812"/>
+        <location filename="../app/main_window.cpp" line="828"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels sombreados: %1; normais voltadas para o observador: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; limitados a 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="836"/>
+        <location filename="../app/main_window.cpp" line="852"/>
         <source>empty (+inf)</source>
         <translation>vazio (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="837"/>
+        <location filename="../app/main_window.cpp" line="853"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   profundidade %6</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="853"/>
+        <location filename="../app/main_window.cpp" line="869"/>
         <source>Open Command File</source>
         <translation>Abrir arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="854"/>
+        <location filename="../app/main_window.cpp" line="870"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Arquivos de comandos (*.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="860"/>
+        <location filename="../app/main_window.cpp" line="876"/>
         <source>Open</source>
         <translation>Abrir</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="860"/>
+        <location filename="../app/main_window.cpp" line="876"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Arquivos de cena (*.byu *.cfg *.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="870"/>
+        <location filename="../app/main_window.cpp" line="886"/>
         <source>Export PNG</source>
         <translation>Exportar PNG</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="870"/>
+        <location filename="../app/main_window.cpp" line="886"/>
         <location filename="../app/main_window_actions.cpp" line="133"/>
         <location filename="../app/main_window_export.cpp" line="157"/>
         <location filename="../app/main_window_export.cpp" line="165"/>
@@ -1796,12 +1851,12 @@
         <translation>Imagens PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="875"/>
+        <location filename="../app/main_window.cpp" line="891"/>
         <source>About RasterLab</source>
         <translation>Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="876"/>
+        <location filename="../app/main_window.cpp" line="892"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;O pipeline clássico de rasterização por software, etapa por etapa: base da câmera, coordenadas de vista, normais, projeção, conversão por varredura, teste de profundidade e sombreamento.&lt;/p&gt;</translation>
     </message>
@@ -1916,276 +1971,286 @@
         <source>%1 changed on disk: read again</source>
         <translation>%1 mudou no disco: lido de novo</translation>
     </message>
+    <message>
+        <location filename="../app/main_window_docks.cpp" line="158"/>
+        <source>%1 fills the window: F11 or a double-click on its title gives the layout back</source>
+        <translation>%1 preenche a janela: F11 ou um duplo clique no seu título devolve o layout</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_docks.cpp" line="159"/>
+        <source>The image</source>
+        <translation>A imagem</translation>
+    </message>
 </context>
 <context>
     <name>rasterlab::NearClipView</name>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="73"/>
+        <location filename="../views/near_clip_view.cpp" line="76"/>
         <source>wholly in front</source>
         <translation>inteiramente à frente</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="75"/>
+        <location filename="../views/near_clip_view.cpp" line="78"/>
         <source>clipped</source>
         <translation>recortado</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="77"/>
+        <location filename="../views/near_clip_view.cpp" line="80"/>
         <source>wholly behind</source>
         <translation>inteiramente atrás</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="79"/>
+        <location filename="../views/near_clip_view.cpp" line="82"/>
         <source>outside a clip plane</source>
         <translation>fora de um plano de recorte</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="81"/>
+        <location filename="../views/near_clip_view.cpp" line="84"/>
         <source>culled</source>
         <translation>descartado</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="83"/>
+        <location filename="../views/near_clip_view.cpp" line="86"/>
         <source>hidden back face</source>
         <translation>face traseira oculta</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="85"/>
+        <location filename="../views/near_clip_view.cpp" line="88"/>
         <source>beyond the guard band</source>
         <translation>além da banda de guarda</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="87"/>
+        <location filename="../views/near_clip_view.cpp" line="90"/>
         <source>not finite</source>
         <translation>não finito</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="179"/>
+        <location filename="../views/near_clip_view.cpp" line="181"/>
         <source>No triangle to show: select one, step into the frame, or choose one in the list.</source>
         <translation>Nenhum triângulo para mostrar: selecione um, avance pelo quadro ou escolha um na lista.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="354"/>
+        <location filename="../views/near_clip_view.cpp" line="240"/>
         <source>side view: w across (view z for the course camera), view %1 up</source>
         <translation>vista lateral: w na horizontal (o z de vista, para a câmera do curso), %1 de vista para cima</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="361"/>
+        <location filename="../views/near_clip_view.cpp" line="367"/>
         <source>w = near = %1</source>
         <translation>w = near = %1</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="364"/>
+        <location filename="../views/near_clip_view.cpp" line="370"/>
         <source>the plane w = near = %1 is far to the left, out of the picture</source>
         <translation>o plano w = near = %1 está bem à esquerda, fora da figura</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="371"/>
+        <location filename="../views/near_clip_view.cpp" line="377"/>
         <source>eye</source>
         <translation>olho</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="375"/>
+        <location filename="../views/near_clip_view.cpp" line="381"/>
         <source>the eye (w = 0) is far to the left, out of the picture</source>
         <translation>o olho (w = 0) está bem à esquerda, fora da figura</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="383"/>
+        <location filename="../views/near_clip_view.cpp" line="389"/>
         <source>on the screen (pixels)</source>
         <translation>na tela (pixels)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="387"/>
+        <location filename="../views/near_clip_view.cpp" line="393"/>
         <source>The last step projects the triangles drawn.</source>
         <translation>O último passo projeta os triângulos desenhados.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="433"/>
+        <location filename="../views/near_clip_view.cpp" line="439"/>
         <source>zoomed: x %1 to %2, y %3 to %4</source>
         <translation>ampliado: x de %1 a %2, y de %3 a %4</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="466"/>
+        <location filename="../views/near_clip_view.cpp" line="472"/>
         <source>image %1 × %2</source>
         <translation>imagem %1 × %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="471"/>
+        <location filename="../views/near_clip_view.cpp" line="477"/>
         <source>Nothing drawn.</source>
         <translation>Nada desenhado.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="479"/>
+        <location filename="../views/near_clip_view.cpp" line="485"/>
         <source>The triangle shown: the one selected, or one the near plane cut</source>
         <translation>O triângulo mostrado: o selecionado, ou um que o plano próximo cortou</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="482"/>
+        <location filename="../views/near_clip_view.cpp" line="488"/>
         <source>y up</source>
         <translation>y para cima</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="483"/>
+        <location filename="../views/near_clip_view.cpp" line="489"/>
         <source>x up</source>
         <translation>x para cima</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="484"/>
+        <location filename="../views/near_clip_view.cpp" line="490"/>
         <source>Which view axis the side view draws upward</source>
         <translation>Qual eixo de vista a vista lateral desenha para cima</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="485"/>
+        <location filename="../views/near_clip_view.cpp" line="491"/>
         <source>Back</source>
         <translation>Voltar</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="487"/>
+        <location filename="../views/near_clip_view.cpp" line="493"/>
         <source>Next</source>
         <translation>Avançar</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="489"/>
+        <location filename="../views/near_clip_view.cpp" line="495"/>
         <source>All</source>
         <translation>Todos</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="555"/>
+        <location filename="../views/near_clip_view.cpp" line="561"/>
         <source>The triangle selected (or being drawn)</source>
         <translation>O triângulo selecionado (ou em desenho)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="563"/>
+        <location filename="../views/near_clip_view.cpp" line="569"/>
         <source>triangle %1: %2</source>
         <translation>triângulo %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="657"/>
+        <location filename="../views/near_clip_view.cpp" line="663"/>
         <source>step %1 of %2</source>
         <translation>passo %1 de %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="667"/>
+        <location filename="../views/near_clip_view.cpp" line="673"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="668"/>
+        <location filename="../views/near_clip_view.cpp" line="674"/>
         <source>No triangle to show: select one or step into the frame.</source>
         <translation>Nenhum triângulo para mostrar: selecione um ou avance pelo quadro.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="670"/>
+        <location filename="../views/near_clip_view.cpp" line="676"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2: %3</source>
         <translation>&lt;b&gt;Triângulo %1&lt;/b&gt; de %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="697"/>
+        <location filename="../views/near_clip_view.cpp" line="703"/>
         <source>The seed clips each triangle against the plane z = &amp;minus;&amp;epsilon;, P = [0, 0, &amp;minus;1, &amp;epsilon;], before the perspective divide (OpenGL&apos;s camera looks along &amp;minus;z). The projection stage clips against w = near in clip space, here near = %1, so P = %2 and a point A is kept when dot(P, A) = w &amp;minus; near &amp;ge; 0.</source>
         <translation>A semente recorta cada triângulo contra o plano z = &amp;minus;&amp;epsilon;, P = [0, 0, &amp;minus;1, &amp;epsilon;], antes da divisão perspectiva (a câmera do OpenGL olha ao longo de &amp;minus;z). A etapa de projeção recorta contra w = near no espaço de recorte, aqui near = %1, então P = %2 e um ponto A é mantido quando dot(P, A) = w &amp;minus; near &amp;ge; 0.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="704"/>
+        <location filename="../views/near_clip_view.cpp" line="710"/>
         <source>For the course camera w is the view z: the camera looks along +z, and the plane is z = near, P = [0, 0, 1, &amp;minus;near].</source>
         <translation>Para a câmera do curso, w é o z de vista: a câmera olha ao longo de +z, e o plano é z = near, P = [0, 0, 1, &amp;minus;near].</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="707"/>
+        <location filename="../views/near_clip_view.cpp" line="713"/>
         <source>(Written out, the seed&apos;s P keeps z &amp;le; &amp;epsilon;; the plane z = &amp;minus;&amp;epsilon; it names is P = [0, 0, &amp;minus;1, &amp;minus;&amp;epsilon;]. Either way the plane lies a little in front of the eye, so no vertex drawn is divided by w = 0.)</source>
         <translation>(Fazendo as contas, o P da semente mantém z &amp;le; &amp;epsilon;; o plano z = &amp;minus;&amp;epsilon; que ela cita é P = [0, 0, &amp;minus;1, &amp;minus;&amp;epsilon;]. De todo modo, o plano fica um pouco à frente do olho, então nenhum vértice desenhado é dividido por w = 0.)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="711"/>
+        <location filename="../views/near_clip_view.cpp" line="717"/>
         <source>A0 = %1, A1 = %2, A2 = %3 (view space).</source>
         <translation>A0 = %1, A1 = %2, A2 = %3 (espaço de vista).</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="715"/>
+        <location filename="../views/near_clip_view.cpp" line="721"/>
         <source>This scene does not clip against the near plane (the naive or same-side projection): the steps show what clipping would do.</source>
         <translation>Esta cena não recorta contra o plano próximo (a projeção ingênua ou a do mesmo lado): os passos mostram o que o recorte faria.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="720"/>
+        <location filename="../views/near_clip_view.cpp" line="726"/>
         <source>The draw&apos;s clip planes cut the triangle first; the polygon the stage drew may differ from the one here.</source>
         <translation>Os planos de recorte do desenho cortam o triângulo primeiro; o polígono que a etapa desenhou pode diferir do mostrado aqui.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="727"/>
+        <location filename="../views/near_clip_view.cpp" line="733"/>
         <source>Vertex %1: dot(P, %1) = %2</source>
         <translation>Vértice %1: dot(P, %1) = %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="730"/>
+        <location filename="../views/near_clip_view.cpp" line="736"/>
         <source>kept, added to the output polygon as q%1.</source>
         <translation>mantido, acrescentado ao polígono de saída como q%1.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="732"/>
+        <location filename="../views/near_clip_view.cpp" line="738"/>
         <source>behind the plane, left out.</source>
         <translation>atrás do plano, deixado de fora.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="736"/>
+        <location filename="../views/near_clip_view.cpp" line="742"/>
         <source>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 have the same sign: the edge does not cross the plane.</source>
         <translation>Aresta %1&amp;ndash;%2: dot(P, %1) = %3 e dot(P, %2) = %4 têm o mesmo sinal: a aresta não cruza o plano.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="740"/>
+        <location filename="../views/near_clip_view.cpp" line="746"/>
         <source>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 differ in sign: t = (0 &amp;minus; %5) / (%6 &amp;minus; %5) = %7, C = lerp(t, %1, %2) = %8, added as q%9.</source>
         <translation>Aresta %1&amp;ndash;%2: dot(P, %1) = %3 e dot(P, %2) = %4 têm sinais opostos: t = (0 &amp;minus; %5) / (%6 &amp;minus; %5) = %7, C = lerp(t, %1, %2) = %8, acrescentado como q%9.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="748"/>
+        <location filename="../views/near_clip_view.cpp" line="754"/>
         <source>(The stage computes the same point from %1, the end in front, with t&apos; = 1 &amp;minus; t = %2, so that the two triangles sharing the edge get it bit for bit.)</source>
         <translation>(A etapa calcula o mesmo ponto a partir de %1, a ponta que está à frente, com t&apos; = 1 &amp;minus; t = %2, para que os dois triângulos que compartilham a aresta obtenham exatamente o mesmo ponto, bit a bit.)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="759"/>
+        <location filename="../views/near_clip_view.cpp" line="765"/>
         <source>Output polygon: empty. The triangle lies wholly behind the plane: nothing is drawn.</source>
         <translation>Polígono de saída: vazio. O triângulo fica inteiramente atrás do plano: nada é desenhado.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="765"/>
+        <location filename="../views/near_clip_view.cpp" line="771"/>
         <source>Output polygon, %1 vertices: %2.</source>
         <translation>Polígono de saída, %1 vértices: %2.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="769"/>
+        <location filename="../views/near_clip_view.cpp" line="775"/>
         <source>The triangle is wholly in front: untouched.</source>
         <translation>O triângulo está inteiramente à frente: fica intacto.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="776"/>
+        <location filename="../views/near_clip_view.cpp" line="782"/>
         <source>Four vertices: split along the diagonal q0&amp;ndash;q2 into the triangles q0 q1 q2 and q0 q2 q3, rendered separately.</source>
         <translation>Quatro vértices: dividido ao longo da diagonal q0&amp;ndash;q2 nos triângulos q0 q1 q2 e q0 q2 q3, renderizados separadamente.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="779"/>
+        <location filename="../views/near_clip_view.cpp" line="785"/>
         <source>Three vertices: one triangle, nothing to split.</source>
         <translation>Três vértices: um triângulo, nada a dividir.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="781"/>
+        <location filename="../views/near_clip_view.cpp" line="787"/>
         <source>Fewer than three vertices: no triangle.</source>
         <translation>Menos de três vértices: nenhum triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="784"/>
+        <location filename="../views/near_clip_view.cpp" line="790"/>
         <source>Then each vertex is projected and taken to pixels.</source>
         <translation>Depois, cada vértice é projetado e levado a pixels.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="787"/>
+        <location filename="../views/near_clip_view.cpp" line="793"/>
         <source>Nothing was drawn from this triangle (%1).</source>
         <translation>Nada foi desenhado deste triângulo (%1).</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="791"/>
+        <location filename="../views/near_clip_view.cpp" line="797"/>
         <source>Triangle %1: %2, %3, %4 (pixels)</source>
         <translation>Triângulo %1: %2, %3, %4 (pixels)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="798"/>
+        <location filename="../views/near_clip_view.cpp" line="804"/>
         <source>(%1 of the %2 triangles were drawn: %3.)</source>
         <translation>(%1 dos %2 triângulos foram desenhados: %3.)</translation>
     </message>
@@ -2203,243 +2268,243 @@
         <translation>a normal interpolada é nula</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="31"/>
+        <location filename="../views/normals_view.cpp" line="33"/>
         <source>Triangle normals</source>
         <translation>Normais dos triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="34"/>
+        <location filename="../views/normals_view.cpp" line="36"/>
         <source>Vertex normals</source>
         <translation>Normais dos vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="37"/>
+        <location filename="../views/normals_view.cpp" line="39"/>
         <source>Only on triangles that are seen</source>
         <translation>Só nos triângulos visíveis</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="40"/>
+        <location filename="../views/normals_view.cpp" line="42"/>
         <source>Hairs only on the triangles that hold a pixel at the end of the frame, and on their corners</source>
         <translation>Segmentos de normal só nos triângulos que ocupam um pixel no fim do quadro, e nos seus vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="43"/>
+        <location filename="../views/normals_view.cpp" line="45"/>
         <source>Normals by M (wrong)</source>
         <translation>Normais por M (erradas)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="46"/>
+        <location filename="../views/normals_view.cpp" line="48"/>
         <source>Beside each triangle normal, the model normal carried by viewFromModel itself instead of its inverse transpose: it leaves the surface under a non-uniform scale (set one in the Animation panel)</source>
         <translation>Ao lado de cada normal de triângulo, a normal do modelo levada pela própria viewFromModel em vez da sua inversa transposta: sob uma escala não uniforme, ela deixa de ser perpendicular à superfície (defina uma no painel Animação)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="78"/>
+        <location filename="../views/normals_view.cpp" line="74"/>
         <source>Per pixel at the stepping cursor, the unit normal shading uses there: the vertex normals interpolated with the pixel&apos;s barycentrics and normalised (the triangle&apos;s normal for flat shading), turned toward the viewer as the course does before lighting; shown as RGB = (n + 1) / 2. Red grows to the right, green upward, blue away from the camera: turned normals face the camera, so blue is mostly below 128. Black: no triangle.</source>
         <translation>Por pixel, no cursor de passo, a normal unitária que o sombreamento usa ali: as normais dos vértices interpoladas com as coordenadas baricêntricas do pixel e normalizadas (a normal do triângulo no sombreamento flat), voltadas para o observador como o curso faz antes da iluminação; mostrada como RGB = (n + 1) / 2. O vermelho cresce para a direita, o verde para cima, o azul para longe da câmera: as normais voltadas encaram a câmera, então o azul fica quase sempre abaixo de 128. Preto: nenhum triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="92"/>
+        <location filename="../views/normals_view.cpp" line="88"/>
         <source>Mesh and normals</source>
         <translation>Malha e normais</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="93"/>
+        <location filename="../views/normals_view.cpp" line="89"/>
         <source>Normal map</source>
         <translation>Mapa de normais</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="242"/>
+        <location filename="../views/normals_view.cpp" line="238"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="248"/>
+        <location filename="../views/normals_view.cpp" line="244"/>
         <source>front faces %1</source>
         <translation>faces frontais %1</translation>
     </message>
     <message>
+        <location filename="../views/normals_view.cpp" line="246"/>
         <location filename="../views/normals_view.cpp" line="250"/>
-        <location filename="../views/normals_view.cpp" line="254"/>
         <source>(%1 hidden, left out by culling)</source>
         <translation>(%1 ocultas, eliminadas pelo descarte)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="252"/>
+        <location filename="../views/normals_view.cpp" line="248"/>
         <source>back faces (n · pView &amp;gt; 0) %1</source>
         <translation>faces traseiras (n · pView &amp;gt; 0) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="257"/>
+        <location filename="../views/normals_view.cpp" line="253"/>
         <source>inconsistent winding: %1 triangles, %2 edges run the same way by two triangles</source>
         <translation>orientação inconsistente: %1 triângulos, %2 arestas percorridas no mesmo sentido por dois triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="264"/>
+        <location filename="../views/normals_view.cpp" line="260"/>
         <source>%1% of the pixels seen are back faces: the surface is closed and its normals point inward in view space (the course&apos;s [U; V; N] mirrors, so a file wound counter-clockwise seen from outside turns over). Shading turns every normal toward the viewer: the image does not change.</source>
         <translation>%1% dos pixels visíveis são faces traseiras: a superfície é fechada e suas normais apontam para dentro no espaço de vista (a matriz [U; V; N] do curso espelha, então um arquivo orientado no sentido anti-horário visto de fora fica invertido). O sombreamento volta toda normal para o observador: a imagem não muda.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="271"/>
+        <location filename="../views/normals_view.cpp" line="267"/>
         <source>No normals: %1.</source>
         <translation>Sem normais: %1.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="276"/>
+        <location filename="../views/normals_view.cpp" line="272"/>
         <source>triangle normals</source>
         <translation>normais dos triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="277"/>
+        <location filename="../views/normals_view.cpp" line="273"/>
         <source>vertex normals</source>
         <translation>normais dos vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="279"/>
+        <location filename="../views/normals_view.cpp" line="275"/>
         <source>length L = %1 (%2% of the mesh&apos;s size)</source>
         <translation>comprimento L = %1 (%2% do tamanho da malha)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="284"/>
+        <location filename="../views/normals_view.cpp" line="280"/>
         <source>triangle normals carried by M itself (wrong)</source>
         <translation>normais dos triângulos levadas pela própria M (errado)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="287"/>
+        <location filename="../views/normals_view.cpp" line="283"/>
         <source>on the %1 triangles seen and their corners</source>
         <translation>nos %1 triângulos visíveis e seus vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="290"/>
+        <location filename="../views/normals_view.cpp" line="286"/>
         <source>Large mesh: one triangle normal in %1 and one vertex normal in %2 are drawn; the selected triangle&apos;s always.</source>
         <translation>Malha grande: desenha-se uma normal de triângulo a cada %1 e uma normal de vértice a cada %2; as do triângulo selecionado, sempre.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="297"/>
+        <location filename="../views/normals_view.cpp" line="293"/>
         <source>One triangle in %1 of the wireframe is drawn.</source>
         <translation>Desenha-se um triângulo do aramado a cada %1.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="314"/>
+        <location filename="../views/normals_view.cpp" line="310"/>
         <source>&lt;p&gt;&lt;b&gt;Normals by M, right and wrong&lt;/b&gt;: A = viewFromModel = viewFromWorld · M(t) · worldFromModel (M: the animation matrix, the identity when the animation is off). The model-space normal n = %1, det A = %2; the carried edges, made unit: e1 = A (P2 − P1) / |…| = %3, e2 = A (P3 − P1) / |…| = %4.&lt;br&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Normais por M, certo e errado&lt;/b&gt;: A = viewFromModel = viewFromWorld · M(t) · worldFromModel (M: a matriz de animação, a identidade quando a animação está desligada). A normal no espaço do modelo é n = %1, det A = %2; as arestas levadas, tornadas unitárias: e1 = A (P2 − P1) / |…| = %3, e2 = A (P3 − P1) / |…| = %4.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="321"/>
+        <location filename="../views/normals_view.cpp" line="317"/>
         <source>Right: A&lt;sup&gt;−T&lt;/sup&gt; n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: perpendicular to the surface.&lt;br&gt;</source>
         <translation>Certo: A&lt;sup&gt;−T&lt;/sup&gt; n, normalizada = &lt;b&gt;%1&lt;/b&gt;; seus produtos escalares com e1 e e2 valem %2 e %3: perpendicular à superfície.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="325"/>
+        <location filename="../views/normals_view.cpp" line="321"/>
         <source>Wrong: A n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: %4° off the surface&apos;s normal.&lt;/p&gt;</source>
         <translation>Errado: A n, normalizada = &lt;b&gt;%1&lt;/b&gt;; seus produtos escalares com e1 e e2 valem %2 e %3: desviada %4° da normal da superfície.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="331"/>
+        <location filename="../views/normals_view.cpp" line="327"/>
         <source>&lt;p&gt;Here both agree: A has no non-uniform scale. Set a scale such as (2, 1, 1) in the Animation panel to see them part.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Aqui as duas coincidem: A não tem escala não uniforme. Defina uma escala como (2, 1, 1) no painel Animação para vê-las se separarem.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="339"/>
+        <location filename="../views/normals_view.cpp" line="335"/>
         <source>&lt;p&gt;No frame yet.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Nenhum quadro ainda.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="343"/>
+        <location filename="../views/normals_view.cpp" line="339"/>
         <source>&lt;p&gt;&lt;b&gt;Stage 3, normals&lt;/b&gt;, in view space: each triangle&apos;s normal n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, and each vertex&apos;s normal the normalised sum of the normals of the triangles around it. A triangle faces away from the camera (at the origin) when n · P1 &amp;gt; 0; the course turns such normals toward the viewer when it shades.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Etapa 3, normais&lt;/b&gt;, no espaço de vista: a normal de cada triângulo é n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, e a normal de cada vértice é a soma normalizada das normais dos triângulos ao seu redor. Um triângulo está de costas para a câmera (na origem) quando n · P1 &amp;gt; 0; o curso volta essas normais para o observador ao sombrear.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="350"/>
+        <location filename="../views/normals_view.cpp" line="346"/>
         <source>&lt;p&gt;Skipped for this frame: %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Omitida neste quadro: %1.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="365"/>
+        <location filename="../views/normals_view.cpp" line="361"/>
         <source>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (vertices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</source>
         <translation>&lt;p&gt;&lt;b&gt;Triângulo %1&lt;/b&gt; (vértices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="372"/>
+        <location filename="../views/normals_view.cpp" line="368"/>
         <source> = %1, length %2&lt;br&gt;</source>
         <translation> = %1, comprimento %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="376"/>
+        <location filename="../views/normals_view.cpp" line="372"/>
         <source>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</source>
         <translation>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="378"/>
+        <location filename="../views/normals_view.cpp" line="374"/>
         <source>a back face, drawn in red</source>
         <translation>uma face traseira, desenhada em vermelho</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="378"/>
+        <location filename="../views/normals_view.cpp" line="374"/>
         <source>a front face</source>
         <translation>uma face frontal</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="380"/>
+        <location filename="../views/normals_view.cpp" line="376"/>
         <source>a degenerate triangle: no normal.&lt;/p&gt;</source>
         <translation>um triângulo degenerado: sem normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="384"/>
+        <location filename="../views/normals_view.cpp" line="380"/>
         <source>&lt;p&gt;It runs an edge in the same direction as a neighbour does: the two are wound inconsistently (magenta), and one of their normals points the wrong way.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Ele percorre uma aresta no mesmo sentido que um vizinho: os dois têm orientações inconsistentes (magenta), e uma das suas normais aponta para o lado errado.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="391"/>
+        <location filename="../views/normals_view.cpp" line="387"/>
         <source>&lt;p&gt;Vertex normals: N1 = %1 (vertex %2), N2 = %3 (vertex %4), N3 = %5 (vertex %6)&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normais dos vértices: N1 = %1 (vértice %2), N2 = %3 (vértice %4), N3 = %5 (vértice %6)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="399"/>
+        <location filename="../views/normals_view.cpp" line="395"/>
         <source>&lt;p&gt;Pick a pixel (here or in any image) to select its triangle and see its normal worked out.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Escolha um pixel (aqui ou em qualquer imagem) para selecionar seu triângulo e ver o cálculo da sua normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="409"/>
+        <location filename="../views/normals_view.cpp" line="405"/>
         <source>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </source>
         <translation>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="411"/>
+        <location filename="../views/normals_view.cpp" line="407"/>
         <source>no triangle holds it at the cursor (black in the normal map).&lt;/p&gt;</source>
         <translation>nenhum triângulo o ocupa no cursor (preto no mapa de normais).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="413"/>
+        <location filename="../views/normals_view.cpp" line="409"/>
         <source>no normal: %1 (grey in the normal map).&lt;/p&gt;</source>
         <translation>sem normal: %1 (cinza no mapa de normais).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="416"/>
+        <location filename="../views/normals_view.cpp" line="412"/>
         <source>the triangle&apos;s normal (flat) %1</source>
         <translation>a normal do triângulo (flat) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="418"/>
+        <location filename="../views/normals_view.cpp" line="414"/>
         <source>N = α N1 + β N2 + γ N3 with (α, β, γ) = %1: %2, normalised %3</source>
         <translation>N = α N1 + β N2 + γ N3 com (α, β, γ) = %1: %2, normalizada %3</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="422"/>
+        <location filename="../views/normals_view.cpp" line="418"/>
         <source>; V · N &amp;lt; 0, turned toward the viewer: &lt;b&gt;%1&lt;/b&gt;</source>
         <translation>; V · N &amp;lt; 0, voltada para o observador: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="425"/>
+        <location filename="../views/normals_view.cpp" line="421"/>
         <source>. Colour (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</source>
         <translation>. Cor (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="444"/>
+        <location filename="../views/normals_view.cpp" line="440"/>
         <source>x %1, y %2: no triangle</source>
         <translation>x %1, y %2: nenhum triângulo</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="448"/>
+        <location filename="../views/normals_view.cpp" line="444"/>
         <source>x %1, y %2: triangle %3, N = %4, colour (%5, %6, %7)</source>
         <translation>x %1, y %2: triângulo %3, N = %4, cor (%5, %6, %7)</translation>
     </message>
@@ -2447,67 +2512,67 @@
 <context>
     <name>rasterlab::PainterView</name>
     <message>
-        <location filename="../views/painter_view.cpp" line="69"/>
+        <location filename="../views/painter_view.cpp" line="70"/>
         <source>Painted</source>
         <translation>Ordem</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="71"/>
+        <location filename="../views/painter_view.cpp" line="72"/>
         <source>Draw</source>
         <translation>Desenho</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="73"/>
+        <location filename="../views/painter_view.cpp" line="74"/>
         <source>Triangle</source>
         <translation>Triângulo</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="75"/>
+        <location filename="../views/painter_view.cpp" line="76"/>
         <source>|b| (distance)</source>
         <translation>|b| (distância)</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="77"/>
+        <location filename="../views/painter_view.cpp" line="78"/>
         <source>Hidden wrongly</source>
         <translation>Ocultos por engano</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="134"/>
+        <location filename="../views/painter_view.cpp" line="135"/>
         <source>The triangles in the order the painter paints them: farthest barycentre first. Click a row to select its triangle.</source>
         <translation>Os triângulos na ordem em que o pintor os pinta: o baricentro mais distante primeiro. Clique numa linha para selecionar seu triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="139"/>
+        <location filename="../views/painter_view.cpp" line="140"/>
         <source>Painter&apos;s image</source>
         <translation>Imagem do pintor</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="140"/>
+        <location filename="../views/painter_view.cpp" line="141"/>
         <source>Painted order (first blue, last red)</source>
         <translation>Ordem de pintura (primeiro azul, último vermelho)</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="145"/>
+        <location filename="../views/painter_view.cpp" line="146"/>
         <source>Mark ties on shared edges</source>
         <translation>Marcar empates nas arestas compartilhadas</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="148"/>
+        <location filename="../views/painter_view.cpp" line="149"/>
         <source>Pixels on an edge two triangles share, at the same depth: the z-buffer keeps the first drawn, the painter the last.</source>
         <translation>Pixels numa aresta que dois triângulos compartilham, na mesma profundidade: o z-buffer mantém o primeiro desenhado, o pintor o último.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="329"/>
+        <location filename="../views/painter_view.cpp" line="330"/>
         <source>rank of the last triangle painted</source>
         <translation>ordem do último triângulo pintado</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="330"/>
+        <location filename="../views/painter_view.cpp" line="331"/>
         <source>painted far to near, no depth test</source>
         <translation>pintado do mais distante ao mais próximo, sem teste de profundidade</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/painter_view.cpp" line="332"/>
+        <location filename="../views/painter_view.cpp" line="333"/>
         <source>Z-buffer (the same flat colours): %n pixel(s) differ</source>
         <translation>
             <numerusform>Z-buffer (as mesmas cores flat): %n pixel difere</numerusform>
@@ -2515,17 +2580,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="372"/>
+        <location filename="../views/painter_view.cpp" line="373"/>
         <source>No frame.</source>
         <translation>Nenhum quadro.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="373"/>
+        <location filename="../views/painter_view.cpp" line="374"/>
         <source>Not worked out yet.</source>
         <translation>Ainda não calculado.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/painter_view.cpp" line="378"/>
+        <location filename="../views/painter_view.cpp" line="379"/>
         <source>&lt;b&gt;Painter&apos;s algorithm&lt;/b&gt; (seed 004): the %n triangle(s) are sorted by the distance |b| of their barycentre b (view space) to the camera, far to near, each lit once at b, and painted in that order &lt;i&gt;without a depth test&lt;/i&gt;: the last painted stays.</source>
         <translation>
             <numerusform>&lt;b&gt;Algoritmo do pintor&lt;/b&gt; (semente 004): o %n triângulo é ordenado pela distância |b| do seu baricentro b (espaço de vista) à câmera, do mais distante ao mais próximo, iluminado uma vez em b e pintado nessa ordem &lt;i&gt;sem teste de profundidade&lt;/i&gt;: o último pintado prevalece.</numerusform>
@@ -2533,17 +2598,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="383"/>
+        <location filename="../views/painter_view.cpp" line="384"/>
         <source>The frame shown uses the z-buffer; this view renders the scene again as the painter would.</source>
         <translation>O quadro exibido usa o z-buffer; este painel renderiza a cena de novo como o pintor faria.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="386"/>
+        <location filename="../views/painter_view.cpp" line="387"/>
         <source>Against the z-buffer with the same colours, %1 pixels differ: &lt;span style=&apos;color:#d00000&apos;&gt;%2 where a farther triangle was painted after a nearer one&lt;/span&gt; (the order of whole triangles is not the order of their pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 on edges two triangles share at the same depth&lt;/span&gt; (the z-buffer keeps the first drawn, the painter the last).</source>
         <translation>Comparado ao z-buffer com as mesmas cores, %1 pixels diferem: &lt;span style=&apos;color:#d00000&apos;&gt;%2 onde um triângulo mais distante foi pintado depois de um mais próximo&lt;/span&gt; (a ordem dos triângulos inteiros não é a ordem dos seus pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 em arestas que dois triângulos compartilham na mesma profundidade&lt;/span&gt; (o z-buffer mantém o primeiro desenhado, o pintor o último).</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="401"/>
+        <location filename="../views/painter_view.cpp" line="402"/>
         <source>Triangle %1: b = %2, |b| = %3, painted %4 of %5. The z-buffer shows it at %6 pixels; a triangle painted after it covers %7 of them though it is farther there; it covers %8 pixels of nearer triangles painted before it.</source>
         <translation>Triângulo %1: b = %2, |b| = %3, pintado na posição %4 de %5. O z-buffer o mostra em %6 pixels; um triângulo pintado depois dele cobre %7 desses pixels, embora ali esteja mais distante; ele cobre %8 pixels de triângulos mais próximos pintados antes dele.</translation>
     </message>
@@ -2551,12 +2616,12 @@
 <context>
     <name>rasterlab::PixelInspector</name>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="118"/>
+        <location filename="../views/pixel_inspector.cpp" line="123"/>
         <source>%1 = byte 255</source>
         <translation>%1 = byte 255</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="172"/>
+        <location filename="../views/pixel_inspector.cpp" line="178"/>
         <source>no normal</source>
         <translation>sem normal</translation>
     </message>
@@ -2566,37 +2631,37 @@
         <translation>no plano de N e L</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="265"/>
+        <location filename="../views/pixel_inspector.cpp" line="280"/>
         <source>Step</source>
         <translation>Passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="265"/>
+        <location filename="../views/pixel_inspector.cpp" line="280"/>
         <source>Triangle</source>
         <translation>Triângulo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="265"/>
+        <location filename="../views/pixel_inspector.cpp" line="280"/>
         <source>Depth test</source>
         <translation>Teste de profundidade</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="265"/>
+        <location filename="../views/pixel_inspector.cpp" line="280"/>
         <source>Before</source>
         <translation>Antes</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="265"/>
+        <location filename="../views/pixel_inspector.cpp" line="280"/>
         <source>After</source>
         <translation>Depois</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="265"/>
+        <location filename="../views/pixel_inspector.cpp" line="280"/>
         <source>Result</source>
         <translation>Resultado</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="275"/>
+        <location filename="../views/pixel_inspector.cpp" line="292"/>
         <source>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</source>
         <translation>▶ ocupa o pixel no cursor de passo; as linhas cinza ainda não foram alcançadas. Selecione uma linha para ver sua iluminação.</translation>
     </message>
@@ -2966,98 +3031,98 @@
         <translation>Ke = %1: a luz própria do material</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="430"/>
+        <location filename="../views/pixel_inspector.cpp" line="447"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="436"/>
-        <location filename="../views/pixel_inspector.cpp" line="524"/>
+        <location filename="../views/pixel_inspector.cpp" line="453"/>
+        <location filename="../views/pixel_inspector.cpp" line="595"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="444"/>
+        <location filename="../views/pixel_inspector.cpp" line="461"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>ocupa o pixel no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="445"/>
+        <location filename="../views/pixel_inspector.cpp" line="462"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>ainda não alcançado pelo cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="460"/>
+        <location filename="../views/pixel_inspector.cpp" line="477"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="461"/>
+        <location filename="../views/pixel_inspector.cpp" line="478"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Sem o passo a passo, as cores das escritas sobrescritas depois não são guardadas.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="505"/>
+        <location filename="../views/pixel_inspector.cpp" line="576"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Sem o passo a passo, só a iluminação do fragmento que ocupa o pixel no fim é registrada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="508"/>
+        <location filename="../views/pixel_inspector.cpp" line="579"/>
         <source>The cleared pixel is not lit.</source>
         <translation>O pixel limpo não é iluminado.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="511"/>
+        <location filename="../views/pixel_inspector.cpp" line="582"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>Nenhum fragmento ocupa o pixel no cursor: selecione uma linha do histórico para ver sua iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="523"/>
+        <location filename="../views/pixel_inspector.cpp" line="594"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Iluminação do passo %1, triângulo %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="528"/>
+        <location filename="../views/pixel_inspector.cpp" line="599"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejeitado: esta cor nunca foi escrita)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="541"/>
+        <location filename="../views/pixel_inspector.cpp" line="612"/>
         <source>object colour</source>
         <translation>cor do objeto</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="544"/>
+        <location filename="../views/pixel_inspector.cpp" line="615"/>
         <source>emission</source>
         <translation>emissão</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="546"/>
+        <location filename="../views/pixel_inspector.cpp" line="617"/>
         <source>ambient</source>
         <translation>ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="551"/>
+        <location filename="../views/pixel_inspector.cpp" line="622"/>
         <source>diffuse %1</source>
         <translation>difusa %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="554"/>
+        <location filename="../views/pixel_inspector.cpp" line="625"/>
         <source>specular %1</source>
         <translation>especular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="558"/>
+        <location filename="../views/pixel_inspector.cpp" line="629"/>
         <source>diffuse</source>
         <translation>difusa</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="560"/>
+        <location filename="../views/pixel_inspector.cpp" line="631"/>
         <source>specular</source>
         <translation>especular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="588"/>
+        <location filename="../views/pixel_inspector.cpp" line="659"/>
         <source>No special case: every term applies as written.</source>
         <translation>Nenhum caso especial: todos os termos valem como escritos.</translation>
     </message>
@@ -3065,12 +3130,12 @@
 <context>
     <name>rasterlab::ProjectionCanvas</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="158"/>
+        <location filename="../views/projection_view.cpp" line="159"/>
         <source>Click a triangle to select it; wheel to zoom, drag to pan, double-click to fit.</source>
         <translation>Clique num triângulo para selecioná-lo; roda para o zoom, arraste para deslocar, clique duas vezes para ajustar.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="385"/>
+        <location filename="../views/projection_view.cpp" line="386"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
@@ -3078,37 +3143,37 @@
 <context>
     <name>rasterlab::ProjectionSideView</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="597"/>
+        <location filename="../views/projection_view.cpp" line="598"/>
         <source>view z (= w) →</source>
         <translation>z de vista (= w) →</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="597"/>
+        <location filename="../views/projection_view.cpp" line="598"/>
         <source>clip w →</source>
         <translation>w de recorte →</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="601"/>
+        <location filename="../views/projection_view.cpp" line="602"/>
         <source>y ↑</source>
         <translation>y ↑</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="612"/>
+        <location filename="../views/projection_view.cpp" line="613"/>
         <source>eye plane w = 0: the plain divide clips nothing</source>
         <translation>plano do olho w = 0: a divisão simples não recorta nada</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="613"/>
+        <location filename="../views/projection_view.cpp" line="614"/>
         <source>near plane w = %1</source>
         <translation>plano próximo w = %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="616"/>
+        <location filename="../views/projection_view.cpp" line="617"/>
         <source>the object lies behind the eye (w &lt; 0): N points away from it</source>
         <translation>o objeto está atrás do olho (w &lt; 0): N aponta para longe dele</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="620"/>
+        <location filename="../views/projection_view.cpp" line="621"/>
         <source>● made by clipping: %1</source>
         <translation>● criados pelo recorte: %1</translation>
     </message>
@@ -3116,32 +3181,32 @@
 <context>
     <name>rasterlab::ProjectionView</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="661"/>
+        <location filename="../views/projection_view.cpp" line="662"/>
         <source>NDC</source>
         <translation>NDC</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="662"/>
+        <location filename="../views/projection_view.cpp" line="663"/>
         <source>Show the vertices in normalised device coordinates, [-1, 1]</source>
         <translation>Mostra os vértices em coordenadas normalizadas de dispositivo, [-1, 1]</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="665"/>
+        <location filename="../views/projection_view.cpp" line="666"/>
         <source>Pixels</source>
         <translation>Pixels</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="667"/>
+        <location filename="../views/projection_view.cpp" line="668"/>
         <source>Show the vertices in pixels, snapped as scan conversion receives them</source>
         <translation>Mostra os vértices em pixels, ajustados à grade como a conversão por varredura os recebe</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="676"/>
+        <location filename="../views/projection_view.cpp" line="677"/>
         <source>Fit</source>
         <translation>Ajustar</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="677"/>
+        <location filename="../views/projection_view.cpp" line="678"/>
         <source>Show the whole window and its margin</source>
         <translation>Mostra a janela inteira e sua margem</translation>
     </message>
@@ -3566,102 +3631,117 @@
 <context>
     <name>rasterlab::StageStrip</name>
     <message>
-        <location filename="../views/stage_strip.cpp" line="54"/>
+        <location filename="../views/stage_strip.cpp" line="57"/>
         <source>Camera basis</source>
         <translation>Base da câmera</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="56"/>
+        <location filename="../views/stage_strip.cpp" line="59"/>
         <source>View coordinates</source>
         <translation>Coordenadas de vista</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="58"/>
+        <location filename="../views/stage_strip.cpp" line="61"/>
         <source>Normals</source>
         <translation>Normais</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="60"/>
+        <location filename="../views/stage_strip.cpp" line="63"/>
         <source>Projection</source>
         <translation>Projeção</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="62"/>
+        <location filename="../views/stage_strip.cpp" line="65"/>
         <source>Scan conversion</source>
         <translation>Conversão por varredura</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="64"/>
+        <location filename="../views/stage_strip.cpp" line="67"/>
         <source>Z-buffer</source>
         <translation>Z-buffer</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="66"/>
+        <location filename="../views/stage_strip.cpp" line="69"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="75"/>
+        <location filename="../views/stage_strip.cpp" line="77"/>
+        <source>Camera</source>
+        <translation>Câmera</translation>
+    </message>
+    <message>
+        <location filename="../views/stage_strip.cpp" line="79"/>
+        <source>View</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <location filename="../views/stage_strip.cpp" line="81"/>
+        <source>Scan</source>
+        <translation>Varredura</translation>
+    </message>
+    <message>
+        <location filename="../views/stage_strip.cpp" line="91"/>
         <source>no course camera: each draw brings its own view matrix</source>
         <translation>sem câmera do curso: cada desenho traz sua própria matriz de vista</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="79"/>
+        <location filename="../views/stage_strip.cpp" line="95"/>
         <source>nothing is lit: no light reads a normal</source>
         <translation>nada é iluminado: nenhuma luz lê uma normal</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="87"/>
+        <location filename="../views/stage_strip.cpp" line="103"/>
         <source>nothing is lit: each pixel takes its object&apos;s own colour</source>
         <translation>nada é iluminado: cada pixel recebe a cor do seu objeto</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="100"/>
+        <location filename="../views/stage_strip.cpp" line="116"/>
         <source>near clip</source>
         <translation>recorte próximo</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="102"/>
+        <location filename="../views/stage_strip.cpp" line="118"/>
         <source>plain divide</source>
         <translation>divisão simples</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="104"/>
+        <location filename="../views/stage_strip.cpp" line="120"/>
         <source>same side</source>
         <translation>mesmo lado</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="113"/>
+        <location filename="../views/stage_strip.cpp" line="129"/>
         <source>triangles are clipped at the near plane before the divide, so nothing at or behind the eye is divided by its w (the course and GPU-like rules)</source>
         <translation>os triângulos são recortados no plano próximo antes da divisão, então nada no olho ou atrás dele é dividido pelo seu w (as regras do curso e as de GPU)</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="117"/>
+        <location filename="../views/stage_strip.cpp" line="133"/>
         <source>every vertex is divided by its w without clipping, as seed 000 writes it and seed 001&apos;s HW2 does (&quot;we won&apos;t add it&quot;): a triangle behind the eye lands mirrored through the centre, one across the eye plane wraps through infinity</source>
         <translation>cada vértice é dividido pelo seu w sem recorte, como a seed 000 escreve e o HW2 da seed 001 faz (&quot;não vamos adicioná-lo&quot;): um triângulo atrás do olho cai espelhado pelo centro, um que atravessa o plano do olho dá a volta pelo infinito</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="123"/>
+        <location filename="../views/stage_strip.cpp" line="139"/>
         <source>triangles wholly in front of or wholly behind the eye are divided as they are; those across the eye plane are clipped at the near plane</source>
         <translation>os triângulos inteiramente à frente ou inteiramente atrás do olho são divididos como estão; os que atravessam o plano do olho são recortados no plano próximo</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="140"/>
+        <location filename="../views/stage_strip.cpp" line="157"/>
         <source>(skipped)</source>
         <translation>(omitida)</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="143"/>
+        <location filename="../views/stage_strip.cpp" line="160"/>
         <source>%1 is skipped: %2</source>
         <translation>Etapa omitida (%1): %2</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="145"/>
+        <location filename="../views/stage_strip.cpp" line="162"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="164"/>
+        <location filename="../views/stage_strip.cpp" line="211"/>
         <source>while stepping, stages 5-7 run together, fragment by fragment</source>
         <translation>no passo a passo, as etapas 5-7 rodam juntas, fragmento a fragmento</translation>
     </message>
@@ -3942,103 +4022,103 @@
 <context>
     <name>rasterlab::VertexTableModel</name>
     <message>
-        <location filename="../views/vertex_table.cpp" line="126"/>
+        <location filename="../views/vertex_table.cpp" line="127"/>
         <source>%1 made by clipping (edge %2-%3, t = %4)</source>
         <translation>%1 criado pelo recorte (aresta %2-%3, t = %4)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="133"/>
+        <location filename="../views/vertex_table.cpp" line="134"/>
         <source>pView = pView(%1) + t (pView(%2) - pView(%1)), on the plane that cut the edge</source>
         <translation>pView = pView(%1) + t (pView(%2) - pView(%1)), no plano que cortou a aresta</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="146"/>
+        <location filename="../views/vertex_table.cpp" line="147"/>
         <source>At or behind the near plane: not projected; the triangles through it are clipped</source>
         <translation>No plano próximo ou atrás dele: não é projetado; os triângulos que passam por ele são recortados</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="149"/>
-        <location filename="../views/vertex_table.cpp" line="153"/>
+        <location filename="../views/vertex_table.cpp" line="150"/>
+        <location filename="../views/vertex_table.cpp" line="154"/>
         <source>behind</source>
         <translation>atrás</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="155"/>
+        <location filename="../views/vertex_table.cpp" line="156"/>
         <source>Exact: %1</source>
         <translation>Exato: %1</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="166"/>
+        <location filename="../views/vertex_table.cpp" line="167"/>
         <source>Mixed along the edge it was made on, as shading does (normalised per pixel)</source>
         <translation>Misturada ao longo da aresta em que o vértice foi criado, como faz o sombreamento (normalizada por pixel)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="182"/>
+        <location filename="../views/vertex_table.cpp" line="183"/>
         <source>Draw</source>
         <translation>Desenho</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="184"/>
+        <location filename="../views/vertex_table.cpp" line="185"/>
         <source>Vertex</source>
         <translation>Vértice</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="186"/>
+        <location filename="../views/vertex_table.cpp" line="187"/>
         <source>World (x, y, z)</source>
         <translation>Mundo (x, y, z)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="188"/>
+        <location filename="../views/vertex_table.cpp" line="189"/>
         <source>View pView</source>
         <translation>Vista pView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="190"/>
+        <location filename="../views/vertex_table.cpp" line="191"/>
         <source>NDC pNdc</source>
         <translation>NDC pNdc</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="192"/>
+        <location filename="../views/vertex_table.cpp" line="193"/>
         <source>Screen pScreen</source>
         <translation>Tela pScreen</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="194"/>
+        <location filename="../views/vertex_table.cpp" line="195"/>
         <source>Normal nView</source>
         <translation>Normal nView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="202"/>
+        <location filename="../views/vertex_table.cpp" line="203"/>
         <source>The draw (object) the vertex belongs to</source>
         <translation>O desenho (objeto) ao qual o vértice pertence</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="204"/>
+        <location filename="../views/vertex_table.cpp" line="205"/>
         <source>The vertex number as in the file (1-based); vertices made by clipping come after the draw&apos;s own</source>
         <translation>O número do vértice como no arquivo (a partir de 1); os vértices criados pelo recorte vêm depois dos do próprio desenho</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="208"/>
+        <location filename="../views/vertex_table.cpp" line="209"/>
         <source>P = worldFromModel · P_model</source>
         <translation>P = worldFromModel · P_model</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="210"/>
+        <location filename="../views/vertex_table.cpp" line="211"/>
         <source>pView = [U; V; N](P − C) for the course camera, or the draw&apos;s view matrix times P_model</source>
         <translation>pView = [U; V; N](P − C) para a câmera do curso, ou a matriz de vista do desenho vezes P_model</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="214"/>
+        <location filename="../views/vertex_table.cpp" line="215"/>
         <source>pNdc = ((d/hx) x/z, (d/hy) y/z) for the course camera, or pClip.xy / pClip.w with pClip = clipFromView · pView</source>
         <translation>pNdc = ((d/hx) x/z, (d/hy) y/z) para a câmera do curso, ou pClip.xy / pClip.w com pClip = clipFromView · pView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="218"/>
+        <location filename="../views/vertex_table.cpp" line="219"/>
         <source>pScreen = ((x_ndc + 1) w/2, (1 − y_ndc) h/2), truncated (snapped to the rules&apos; grid); the tooltip holds the exact value</source>
         <translation>pScreen = ((x_ndc + 1) w/2, (1 − y_ndc) h/2), truncado (ajustado à grade das regras); a dica mostra o valor exato</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="222"/>
+        <location filename="../views/vertex_table.cpp" line="223"/>
         <source>The view-space vertex normal: the normalised sum of the normals of the triangles around it (stage 3)</source>
         <translation>A normal do vértice no espaço de vista: a soma normalizada das normais dos triângulos ao seu redor (etapa 3)</translation>
     </message>
@@ -4046,132 +4126,132 @@
 <context>
     <name>rasterlab::VertexTableView</name>
     <message>
-        <location filename="../views/vertex_table.cpp" line="254"/>
+        <location filename="../views/vertex_table.cpp" line="258"/>
         <source>Only the selected triangle&apos;s vertices</source>
         <translation>Só os vértices do triângulo selecionado</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="312"/>
+        <location filename="../views/vertex_table.cpp" line="316"/>
         <source>%1 vertices, %2 of them made by clipping</source>
         <translation>%1 vértices, %2 deles criados pelo recorte</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="313"/>
+        <location filename="../views/vertex_table.cpp" line="317"/>
         <source>%1 vertices</source>
         <translation>%1 vértices</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="407"/>
+        <location filename="../views/vertex_table.cpp" line="411"/>
         <source>&lt;p&gt;Select a row, or pick a pixel in the image: its triangle&apos;s three vertices are selected. The numbers of the selected vertex are worked through each formula here.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Selecione uma linha, ou escolha um pixel na imagem: os três vértices do seu triângulo são selecionados. Os números do vértice selecionado são calculados aqui, fórmula por fórmula.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="410"/>
+        <location filename="../views/vertex_table.cpp" line="414"/>
         <source>&lt;p&gt;No frame yet.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Nenhum quadro ainda.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="434"/>
+        <location filename="../views/vertex_table.cpp" line="438"/>
         <source>Vertex %1 of draw %2 (%3)</source>
         <translation>Vértice %1 do desenho %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="435"/>
+        <location filename="../views/vertex_table.cpp" line="439"/>
         <source>Vertex %1 of %2</source>
         <translation>Vértice %1 de %2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="442"/>
+        <location filename="../views/vertex_table.cpp" line="446"/>
         <source>&lt;p&gt;Made by clipping the edge %1-%2 where it crosses a plane (the near plane or a clip plane), at t = %3:&lt;br&gt;pView = pView&lt;sub&gt;%1&lt;/sub&gt; + t (pView&lt;sub&gt;%2&lt;/sub&gt; − pView&lt;sub&gt;%1&lt;/sub&gt;) = %4 + %3 (%5 − %4) = &lt;b&gt;%6&lt;/b&gt;&lt;br&gt;World: P = %7 (the same interpolation).&lt;/p&gt;</source>
         <translation>&lt;p&gt;Criado ao recortar a aresta %1-%2 onde ela cruza um plano (o plano próximo ou um plano de recorte), em t = %3:&lt;br&gt;pView = pView&lt;sub&gt;%1&lt;/sub&gt; + t (pView&lt;sub&gt;%2&lt;/sub&gt; − pView&lt;sub&gt;%1&lt;/sub&gt;) = %4 + %3 (%5 − %4) = &lt;b&gt;%6&lt;/b&gt;&lt;br&gt;Mundo: P = %7 (a mesma interpolação).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="453"/>
+        <location filename="../views/vertex_table.cpp" line="457"/>
         <source>&lt;p&gt;World: P = M(t) · worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt; (M: the animation matrix at t = %3 s)&lt;/p&gt;</source>
         <translation>&lt;p&gt;Mundo: P = M(t) · worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt; (M: a matriz de animação em t = %3 s)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="458"/>
+        <location filename="../views/vertex_table.cpp" line="462"/>
         <source>&lt;p&gt;World: P = P&lt;sub&gt;model&lt;/sub&gt; = &lt;b&gt;%1&lt;/b&gt; (worldFromModel is the identity)&lt;/p&gt;</source>
         <translation>&lt;p&gt;Mundo: P = P&lt;sub&gt;model&lt;/sub&gt; = &lt;b&gt;%1&lt;/b&gt; (worldFromModel é a identidade)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="462"/>
+        <location filename="../views/vertex_table.cpp" line="466"/>
         <source>&lt;p&gt;World: P = worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Mundo: P = worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="468"/>
+        <location filename="../views/vertex_table.cpp" line="472"/>
         <source>&lt;p&gt;View: pView = [U; V; N](P − C), with C = %1:&lt;br&gt;P − C = %2&lt;br&gt;x = U · (P − C) = %3 · %2 = %4&lt;br&gt;y = V · (P − C) = %5 · %2 = %6&lt;br&gt;z = N · (P − C) = %7 · %2 = %8&lt;br&gt;pView = &lt;b&gt;%9&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vista: pView = [U; V; N](P − C), com C = %1:&lt;br&gt;P − C = %2&lt;br&gt;x = U · (P − C) = %3 · %2 = %4&lt;br&gt;y = V · (P − C) = %5 · %2 = %6&lt;br&gt;z = N · (P − C) = %7 · %2 = %8&lt;br&gt;pView = &lt;b&gt;%9&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="476"/>
+        <location filename="../views/vertex_table.cpp" line="480"/>
         <source>&lt;p&gt;View: pView = viewFromModel · P&lt;sub&gt;model&lt;/sub&gt; (the draw&apos;s own view matrix) = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vista: pView = viewFromModel · P&lt;sub&gt;model&lt;/sub&gt; (a matriz de vista do próprio desenho) = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="484"/>
+        <location filename="../views/vertex_table.cpp" line="488"/>
         <source>&lt;p&gt;z = %1 is not beyond the near plane (w = %2): the vertex is behind, not projected; the triangles through it are clipped there.&lt;/p&gt;</source>
         <translation>&lt;p&gt;z = %1 não está além do plano próximo (w = %2): o vértice está atrás e não é projetado; os triângulos que passam por ele são recortados ali.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="492"/>
+        <location filename="../views/vertex_table.cpp" line="496"/>
         <source>&lt;p&gt;NDC: pNdc = ((d/hx) x/z, (d/hy) y/z) = ((%1/%2) · %3/%4, (%1/%5) · %6/%4) = &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;NDC: pNdc = ((d/hx) x/z, (d/hy) y/z) = ((%1/%2) · %3/%4, (%1/%5) · %6/%4) = &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="497"/>
+        <location filename="../views/vertex_table.cpp" line="501"/>
         <source>&lt;p&gt;Clip: pClip = clipFromView · pView = %1&lt;br&gt;NDC: pNdc = pClip.xy / pClip.w = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Recorte: pClip = clipFromView · pView = %1&lt;br&gt;NDC: pNdc = pClip.xy / pClip.w = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="506"/>
+        <location filename="../views/vertex_table.cpp" line="510"/>
         <source>truncated, as C&apos;s (int) does</source>
         <translation>truncado, como faz o (int) do C</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="508"/>
+        <location filename="../views/vertex_table.cpp" line="512"/>
         <source>truncated to a grid of 1/%1 pixel</source>
         <translation>truncado para uma grade de 1/%1 de pixel</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="510"/>
+        <location filename="../views/vertex_table.cpp" line="514"/>
         <source>rounded to the nearest 1/%1 pixel</source>
         <translation>arredondado para o 1/%1 de pixel mais próximo</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="511"/>
+        <location filename="../views/vertex_table.cpp" line="515"/>
         <source>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</source>
         <translation>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="512"/>
+        <location filename="../views/vertex_table.cpp" line="516"/>
         <source>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</source>
         <translation>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="517"/>
+        <location filename="../views/vertex_table.cpp" line="521"/>
         <source>&lt;p&gt;Screen: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Tela: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="526"/>
+        <location filename="../views/vertex_table.cpp" line="530"/>
         <source>&lt;p&gt;Normal: mixed along the edge like pView, %1; shading normalises it per pixel.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: misturada ao longo da aresta como pView, %1; o sombreamento a normaliza por pixel.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="530"/>
+        <location filename="../views/vertex_table.cpp" line="534"/>
         <source>&lt;p&gt;Normal: the file&apos;s normal carried to view space by the inverse transpose of viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: a normal do arquivo levada ao espaço de vista pela inversa transposta de viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="537"/>
+        <location filename="../views/vertex_table.cpp" line="541"/>
         <source>&lt;p&gt;Normal: the normalised sum of the normals of the %1 triangles around it: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: a soma normalizada das normais dos %1 triângulos ao seu redor: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="543"/>
+        <location filename="../views/vertex_table.cpp" line="547"/>
         <source>&lt;p&gt;Normal: none, %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: nenhuma, %1.&lt;/p&gt;</translation>
     </message>
@@ -4179,87 +4259,87 @@
 <context>
     <name>rasterlab::ZBufferView</name>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="156"/>
+        <location filename="../views/zbuffer_view.cpp" line="157"/>
         <source>Automatic range (nearest to farthest drawn)</source>
         <translation>Faixa automática (do mais próximo ao mais distante desenhado)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="172"/>
+        <location filename="../views/zbuffer_view.cpp" line="173"/>
         <source>Grey (near white)</source>
         <translation>Cinza (perto = branco)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="173"/>
+        <location filename="../views/zbuffer_view.cpp" line="174"/>
         <source>False colour (near red, far blue)</source>
         <translation>Cores falsas (perto vermelho, longe azul)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="184"/>
+        <location filename="../views/zbuffer_view.cpp" line="186"/>
         <source>Nearest (white / red):</source>
         <translation>Mais próximo (branco / vermelho):</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="185"/>
+        <location filename="../views/zbuffer_view.cpp" line="187"/>
         <source>Farthest (dark / blue):</source>
         <translation>Mais distante (escuro / azul):</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="186"/>
+        <location filename="../views/zbuffer_view.cpp" line="188"/>
         <source>Colours:</source>
         <translation>Cores:</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="249"/>
+        <location filename="../views/zbuffer_view.cpp" line="252"/>
         <source>+&amp;infin;</source>
         <translation>+&amp;infin;</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="253"/>
+        <location filename="../views/zbuffer_view.cpp" line="256"/>
         <source>the view-space z of P&apos;</source>
         <translation>o z de P&apos; no espaço de vista</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="253"/>
+        <location filename="../views/zbuffer_view.cpp" line="256"/>
         <source>the NDC z</source>
         <translation>o z em NDC</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="261"/>
+        <location filename="../views/zbuffer_view.cpp" line="264"/>
         <source>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</source>
         <translation>&lt;b&gt;Z-buffer.&lt;/b&gt; Todo pixel começa em %1. A profundidade de cada fragmento, %2 (%3), é comparada com a armazenada; ela é escrita, com sua cor, só quando %4. Até agora: %5 fragmentos testados, %6 escritos, %7 rejeitados.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="316"/>
+        <location filename="../views/zbuffer_view.cpp" line="319"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="333"/>
+        <location filename="../views/zbuffer_view.cpp" line="336"/>
         <source>No pixel holds a triangle: the buffer is all clear value.</source>
         <translation>Nenhum pixel contém um triângulo: o buffer inteiro está no valor de limpeza.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="336"/>
+        <location filename="../views/zbuffer_view.cpp" line="339"/>
         <source>Drawn depths from %1 to %2; shown from %3 to %4.</source>
         <translation>Profundidades desenhadas de %1 a %2; exibidas de %3 a %4.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="342"/>
+        <location filename="../views/zbuffer_view.cpp" line="345"/>
         <source>%1 pixels nearer and %2 farther than the range are drawn at its ends.</source>
         <translation>%1 pixels mais próximos e %2 mais distantes que a faixa aparecem nas suas extremidades.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="356"/>
+        <location filename="../views/zbuffer_view.cpp" line="359"/>
         <source>+inf</source>
         <translation>+inf</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="357"/>
+        <location filename="../views/zbuffer_view.cpp" line="360"/>
         <source>x %1, y %2: no triangle; the depth stays at the clear value %3</source>
         <translation>x %1, y %2: nenhum triângulo; a profundidade fica no valor de limpeza %3</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="362"/>
+        <location filename="../views/zbuffer_view.cpp" line="365"/>
         <source>x %1, y %2: depth %3, triangle %4</source>
         <translation>x %1, y %2: profundidade %3, triângulo %4</translation>
     </message>

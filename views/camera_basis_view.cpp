@@ -532,10 +532,9 @@ void CameraBasisView::resizeEvent(QResizeEvent* event) {
 }
 
 void CameraBasisView::applyPresentation() {
-    const bool on = m_inspection && m_inspection->presentation();
     m_canvas->setLineWidth(m_inspection ? m_inspection->lineWidth() : 1.5);
     QFont f = QWidget::font();
-    f.setPointSizeF(QFont().pointSizeF() * (on ? 1.35 : 1.0));
+    f.setPointSizeF(QFont().pointSizeF() * (m_inspection ? m_inspection->textScale(1.35) : 1.0));
     setFont(f);
 }
 

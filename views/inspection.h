@@ -109,6 +109,13 @@ public:
     void setPresentation(bool on);
     // The width of overlay lines in device-independent pixels (thicker when presenting).
     double lineWidth() const { return m_presentation ? 3.0 : 1.5; }
+    // How much a view enlarges its text when presenting: `factor` on its own, 1 in a window
+    // that enlarges the whole application's text itself (the main window: the two would
+    // multiply, and the views outgrow a small screen).
+    double textScale(double factor) const {
+        return m_presentation && !m_windowScalesText ? factor : 1.0;
+    }
+    void setWindowScalesText(bool on) { m_windowScalesText = on; }
 
 signals:
     void frameChanged();   // a new frame, without a replay yet (setReplay may follow)
@@ -141,6 +148,7 @@ private:
     std::optional<std::uint32_t> m_triangle;
     std::vector<VertexRef> m_vertices;
     bool m_presentation = false;
+    bool m_windowScalesText = false;
     QImage m_frameImage;  // the frame's image when there is no replay
     QString m_replayError;
 };

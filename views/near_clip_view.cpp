@@ -16,6 +16,7 @@
 
 #include "inspection.h"
 #include "number_text.h"
+#include "painted_labels.h"
 
 namespace rasterlab {
 
@@ -33,6 +34,8 @@ const std::array<QColor, 2> kFan{QColor(90, 170, 255, 110), QColor(255, 160, 60,
 
 // At most this many triangles in the list (a frame may clip thousands).
 constexpr int kMaxListed = 5000;
+// The canvas's two headers: wrapped to their half when it is narrow.
+constexpr int kHeaderFlags = Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap;
 
 int stepIndex(NearClipStep s) {
     return static_cast<int>(s);
@@ -110,7 +113,7 @@ NearClipModel nearClipModel(const rl::FrameTrace& frame, std::uint32_t draw, std
 }
 
 // The side view (w across, view y or x up) and the screen with the projected triangles.
-class NearClipCanvas : public QWidget {
+class NearClipCanvas : public QWidget, public PaintedLabels {
 public:
     explicit NearClipCanvas(QWidget* parent) : QWidget(parent) {
         setMinimumSize(260, 180);
@@ -142,7 +145,6 @@ private:
     int m_axis = 0;  // 0: view y up, 1: view x up
     double m_lineWidth = 1.5;
     bool m_presentation = false;
-    std::vector<QRectF> m_labels;  // where labels were put in this paint
 };
 
 void NearClipCanvas::label(QPainter& painter, QPointF at, const QString& text,
@@ -156,15 +158,15 @@ void NearClipCanvas::label(QPainter& painter, QPointF at, const QString& text,
     };
     for (bool moved = true; moved;) {
         moved = false;
-        for (const QRectF& used : m_labels) {
-            if (used.intersects(boxAt(at))) {
-                at.ry() = used.bottom() + metrics.ascent() + 2;
+        for (const QRect& used : labelRects()) {
+            if (QRectF(used).intersects(boxAt(at))) {
+                at.ry() = used.y() + used.height() + metrics.ascent() + 2;
                 moved = true;
             }
         }
     }
     const QRectF box = boxAt(at);
-    m_labels.push_back(box);
+    recordLabel(box);
     painter.fillRect(box, QColor(0, 0, 0, 170));
     painter.setPen(colour);
     painter.drawText(at, text);
@@ -184,7 +186,7 @@ void NearClipCanvas::paintEvent(QPaintEvent*) {
     QFont font = painter.font();
     font.setPointSizeF(m_presentation ? 12.0 : 8.5);
     painter.setFont(font);
-    m_labels.clear();
+    clearLabels();
     const double split = width() * 0.6;
     paintSide(painter, QRectF(0, 0, split, height()).adjusted(6, 6, -6, -6));
     painter.setPen(QPen(QColor(80, 80, 90), 1.0));
@@ -232,7 +234,14 @@ void NearClipCanvas::paintSide(QPainter& painter, const QRectF& area) {
     uMax += pad;
     vMin -= pad;
     vMax += pad;
-    const QRectF plot = area.adjusted(4, metrics.height() + 6, -4, -metrics.height() - 6);
+    // The header wrapped to the side's width (it ran over the screen's header in Portuguese),
+    // kept free of labels, drawn last over the picture.
+    const QString title =
+        NearClipView::tr("side view: w across (view z for the course camera), view %1 up")
+            .arg(m_axis == 0 ? QStringLiteral("y") : QStringLiteral("x"));
+    const QRectF header = painter.boundingRect(area, kHeaderFlags, title);
+    recordLabel(header);
+    const QRectF plot = area.adjusted(4, header.height() + 6, -4, -metrics.height() - 6);
     // One scale for both axes: the picture is not distorted.
     const double scale = std::min(plot.width() / (uMax - uMin), plot.height() / (vMax - vMin));
     const double u0 = (uMin + uMax) / 2, v0 = (vMin + vMax) / 2;
@@ -350,10 +359,7 @@ void NearClipCanvas::paintSide(QPainter& painter, const QRectF& area) {
 
     // The axes' names and the plane's.
     painter.setPen(kText);
-    painter.drawText(QPointF(area.left(), area.top() + metrics.ascent()),
-                     NearClipView::tr("side view: w across (view z for the course camera), view "
-                                      "%1 up")
-                         .arg(m_axis == 0 ? QStringLiteral("y") : QStringLiteral("x")));
+    painter.drawText(area, kHeaderFlags, title);
     if (planeShown)
         label(painter,
               QPointF(std::clamp(planeX + 4, area.left(), area.right() - 80),
@@ -379,8 +385,8 @@ void NearClipCanvas::paintScreen(QPainter& painter, const QRectF& area) {
     const NearClipModel& m = *m_model;
     const QFontMetrics metrics(painter.font());
     painter.setPen(kText);
-    painter.drawText(QPointF(area.left(), area.top() + metrics.ascent()),
-                     NearClipView::tr("on the screen (pixels)"));
+    const QRectF header =
+        drawLabel(painter, area, kHeaderFlags, NearClipView::tr("on the screen (pixels)"));
     if (m_step < stepIndex(NearClipStep::Projected)) {
         painter.setPen(QColor(150, 150, 160));
         painter.drawText(area, Qt::AlignCenter | Qt::TextWordWrap,
@@ -411,7 +417,7 @@ void NearClipCanvas::paintScreen(QPainter& painter, const QRectF& area) {
         const double grow = std::max({box.width(), box.height(), 8.0}) * 0.3;
         shown = box.adjusted(-grow, -grow, grow, grow);
     }
-    const QRectF plot = area.adjusted(0, metrics.height() + 6, 0, 0);
+    const QRectF plot = area.adjusted(0, header.height() + 6, 0, 0);
     const double scale = std::min(plot.width() / shown.width(), plot.height() / shown.height());
     const QPointF origin(plot.center().x() - shown.center().x() * scale,
                          plot.center().y() - shown.center().y() * scale);

@@ -14,9 +14,11 @@
 #include <numbers>
 
 #include "animation.h"
+#include "elided_label.h"
 #include "frame_image_view.h"
 #include "inspection.h"
 #include "number_text.h"
+#include "wrapping_check_box.h"
 
 namespace rasterlab {
 
@@ -28,25 +30,25 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
     m_canvas->setPicture(&m_model.picture());
     m_mapView = new FrameImageView(this);
     m_mapView->setObjectName(QStringLiteral("normalMapImage"));
-    m_triangleHairs = new QCheckBox(tr("Triangle normals"), this);
+    m_triangleHairs = new WrappingCheckBox(tr("Triangle normals"), this);
     m_triangleHairs->setObjectName(QStringLiteral("normalsTriangleHairs"));
     m_triangleHairs->setChecked(true);
-    m_vertexHairs = new QCheckBox(tr("Vertex normals"), this);
+    m_vertexHairs = new WrappingCheckBox(tr("Vertex normals"), this);
     m_vertexHairs->setObjectName(QStringLiteral("normalsVertexHairs"));
     m_vertexHairs->setChecked(false);
-    m_onlyVisible = new QCheckBox(tr("Only on triangles that are seen"), this);
+    m_onlyVisible = new WrappingCheckBox(tr("Only on triangles that are seen"), this);
     m_onlyVisible->setObjectName(QStringLiteral("normalsOnlyVisible"));
     m_onlyVisible->setToolTip(
         tr("Hairs only on the triangles that hold a pixel at the end of the frame, and on "
            "their corners"));
     m_onlyVisible->setChecked(true);
-    m_wrong = new QCheckBox(tr("Normals by M (wrong)"), this);
+    m_wrong = new WrappingCheckBox(tr("Normals by M (wrong)"), this);
     m_wrong->setObjectName(QStringLiteral("normalsWrong"));
     m_wrong->setToolTip(
         tr("Beside each triangle normal, the model normal carried by viewFromModel itself "
            "instead of its inverse transpose: it leaves the surface under a non-uniform scale "
            "(set one in the Animation panel)"));
-    m_legend = new QLabel(this);
+    m_legend = new WrappedLabel(this);
     m_legend->setObjectName(QStringLiteral("normalsLegend"));
     m_legend->setWordWrap(true);
     m_legend->setTextFormat(Qt::RichText);
@@ -57,19 +59,13 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
     m_explanation->setObjectName(QStringLiteral("normalsExplanation"));
 
     auto* meshPage = new QWidget(this);
-    auto* toggles = new QHBoxLayout;
-    toggles->addWidget(m_triangleHairs);
-    toggles->addWidget(m_vertexHairs);
-    toggles->addWidget(m_onlyVisible);
-    toggles->addStretch(1);
-    // On a line of its own: the dock keeps the width it had without it.
-    auto* wrongLine = new QHBoxLayout;
-    wrongLine->addWidget(m_wrong);
-    wrongLine->addStretch(1);
+    // A line each: side by side they made the dock wider than a small screen leaves it, and
+    // a tab page cannot grow for text that wraps.
     auto* meshLayout = new QVBoxLayout(meshPage);
     meshLayout->setContentsMargins(0, 0, 0, 0);
-    meshLayout->addLayout(toggles);
-    meshLayout->addLayout(wrongLine);
+    meshLayout->setSpacing(2);
+    for (QCheckBox* toggle : {m_triangleHairs, m_vertexHairs, m_onlyVisible, m_wrong})
+        meshLayout->addWidget(toggle);
     meshLayout->addWidget(m_canvas, 1);
     auto* mapPage = new QWidget(this);
     auto* mapLayout = new QVBoxLayout(mapPage);
@@ -144,10 +140,10 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
     connect(m_inspection, &Inspection::selectionChanged, this, [this] {
         if (isVisible() && !m_geometryDirty) refreshSelection();
     });
-    connect(m_inspection, &Inspection::presentationChanged, this, [this](bool on) {
+    connect(m_inspection, &Inspection::presentationChanged, this, [this] {
         m_canvas->setLineWidth(m_inspection->lineWidth());
         QFont f = QApplication::font(this);
-        if (on) f.setPointSizeF(f.pointSizeF() * 1.4);
+        f.setPointSizeF(f.pointSizeF() * m_inspection->textScale(1.4));
         m_explanation->setFont(f);
         m_legend->setFont(f);
     });

@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "elided_label.h"
 #include "frame_trace.h"
 #include "normals_canvas.h"
 #include "normals_model.h"
@@ -82,7 +83,7 @@ private:
     QCheckBox* m_vertexHairs = nullptr;
     QCheckBox* m_onlyVisible = nullptr;
     QCheckBox* m_wrong = nullptr;
-    QLabel* m_legend = nullptr;
+    WrappedLabel* m_legend = nullptr;
     QLabel* m_pixelValue = nullptr;
     QTextBrowser* m_explanation = nullptr;
 };

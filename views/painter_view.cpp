@@ -16,6 +16,7 @@
 #include "inspection.h"
 #include "number_text.h"
 #include "output_image.h"
+#include "wrapping_check_box.h"
 
 namespace rasterlab {
 
@@ -142,15 +143,15 @@ PainterView::PainterView(Inspection* inspection, QWidget* parent)
     // minimum (the captions and the choice shrink).
     m_leftChoice->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_leftChoice->setMinimumContentsLength(12);
-    m_marksTies = new QCheckBox(tr("Mark ties on shared edges"), this);
+    m_marksTies = new WrappingCheckBox(tr("Mark ties on shared edges"), this);
     m_marksTies->setObjectName(QStringLiteral("painterMarksTies"));
     m_marksTies->setToolTip(
         tr("Pixels on an edge two triangles share, at the same depth: the "
            "z-buffer keeps the first drawn, the painter the last."));
     m_painterCaption = new QLabel(this);
     m_zBufferCaption = new QLabel(this);
-    for (QLabel* caption : {m_painterCaption, m_zBufferCaption})
-        caption->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    // Under a narrow dock the captions wrap rather than widen it.
+    for (QLabel* caption : {m_painterCaption, m_zBufferCaption}) caption->setWordWrap(true);
     m_painterImage = new FrameImageView(this);
     m_painterImage->setObjectName(QStringLiteral("painterImage"));
     m_zBufferImage = new FrameImageView(this);
@@ -163,10 +164,8 @@ PainterView::PainterView(Inspection* inspection, QWidget* parent)
     auto* left = new QWidget(this);
     auto* leftLayout = new QVBoxLayout(left);
     leftLayout->setContentsMargins(0, 0, 0, 0);
-    auto* leftHeader = new QHBoxLayout;
-    leftHeader->addWidget(m_leftChoice);
-    leftHeader->addWidget(m_painterCaption, 1);
-    leftLayout->addLayout(leftHeader);
+    leftLayout->addWidget(m_leftChoice);
+    leftLayout->addWidget(m_painterCaption);
     leftLayout->addWidget(m_painterImage, 1);
     auto* right = new QWidget(this);
     auto* rightLayout = new QVBoxLayout(right);
@@ -181,7 +180,9 @@ PainterView::PainterView(Inspection* inspection, QWidget* parent)
     imagesLayout->setContentsMargins(0, 0, 0, 0);
     imagesLayout->addWidget(images, 1);
     imagesLayout->addWidget(m_marksTies);
-    auto* split = new QSplitter(Qt::Horizontal, this);
+    // The table above the images: beside them, a dock on a small screen left the table too
+    // narrow for its columns.
+    auto* split = new QSplitter(Qt::Vertical, this);
     m_split = split;
     split->addWidget(m_table);
     split->addWidget(imagesAndTies);
@@ -216,9 +217,9 @@ void PainterView::setLeftImage(int which) {
 
 void PainterView::showEvent(QShowEvent* event) {
     QWidget::showEvent(event);
-    if (!m_splitSet && width() > 0) {
-        // A third for the table, the rest for the two images, once the width is known.
-        m_split->setSizes({width() / 3, width() - width() / 3});
+    if (!m_splitSet && height() > 0) {
+        // A third for the table, the rest for the two images, once the height is known.
+        m_split->setSizes({height() / 3, height() - height() / 3});
         m_splitSet = true;
     }
     // A frame that came while hidden is another than the one compared.
@@ -418,7 +419,7 @@ QString PainterView::explanation() const {
 
 void PainterView::applyPresentation() {
     QFont font = QWidget::font();
-    if (m_inspection->presentation()) font.setPointSizeF(font.pointSizeF() * 1.5);
+    font.setPointSizeF(font.pointSizeF() * m_inspection->textScale(1.5));
     m_explanation->setFont(font);
     m_table->setFont(font);
     showSelection();

@@ -7,7 +7,9 @@
 #include <QLabel>
 #include <QPainter>
 #include <QPixmap>
+#include <QRegularExpression>
 #include <QSignalBlocker>
+#include <QStyle>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -15,9 +17,12 @@
 #include <QScrollBar>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
+#include <vector>
 
 #include "inspection.h"
+#include "painted_labels.h"
 #include "pixel_history.h"
 #include "pixel_text.h"
 
@@ -142,7 +147,7 @@ private:
 // of N and L, in which R lies too): N points up, the surface is the horizontal line, L and R
 // are at their true angles, and V is projected onto the page (dashed when it leaves it by
 // more than a little).
-class LightingVectors : public QWidget {
+class LightingVectors : public QWidget, public PaintedLabels {
 public:
     explicit LightingVectors(QWidget* parent) : QWidget(parent) { setFixedSize(180, 160); }
     void setVectors(std::optional<std::array<rl::vec3, 4>> vectors, QString reflectionName,
@@ -159,6 +164,7 @@ protected:
     void paintEvent(QPaintEvent*) override {
         QPainter painter(this);
         painter.fillRect(rect(), QColor(32, 32, 36));
+        clearLabels();
         if (!m_vectors) return;
         const auto& [n, l, v, r] = *m_vectors;
         QFont f = painter.font();
@@ -168,8 +174,8 @@ protected:
         painter.setRenderHint(QPainter::Antialiasing);
         if (!(glm::length(n) > 0.0f)) {
             painter.setPen(QColor(200, 200, 200));
-            painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap,
-                             PixelInspector::tr("no normal"));
+            drawLabel(painter, rect(), Qt::AlignCenter | Qt::TextWordWrap,
+                      PixelInspector::tr("no normal"));
             return;
         }
         // The page: up = N, right = the part of L (else of V) across N.
@@ -230,18 +236,27 @@ protected:
         arrow(l, QColor(255, 210, 60), QStringLiteral("L"));
         arrow(r, QColor(240, 120, 240), m_reflection);
         arrow(v, QColor(110, 200, 255), QStringLiteral("V"));
-        for (const Label& label : labels) {
-            painter.setPen(label.colour);
-            const double w = metrics.horizontalAdvance(label.text) + 4.0;
-            const double x = std::max(2.0, std::min(label.at.x() - w / 2.0, width() - w - 2.0));
-            painter.drawText(QRectF(x, label.at.y() - 9, w, 18), Qt::AlignCenter, label.text);
-        }
         painter.setPen(Qt::NoPen);
         painter.setBrush(Qt::white);
         painter.drawEllipse(centre, 2.5, 2.5);
         painter.setPen(QColor(170, 170, 180));
-        painter.drawText(QRectF(0, height() - metrics.height() - 4, width(), metrics.height()),
-                         Qt::AlignCenter, PixelInspector::tr("in the plane of N and L"));
+        drawLabel(painter, QRectF(0, height() - metrics.height() - 4, width(), metrics.height()),
+                  Qt::AlignCenter, PixelInspector::tr("in the plane of N and L"));
+        // Each label beside its arrow's tip, inside the picture; where it would cover one
+        // already drawn (tips close together: "R = V" by "N"), above, below or beside it.
+        for (const Label& label : labels) {
+            painter.setPen(label.colour);
+            const double w = metrics.horizontalAdvance(label.text) + 4.0;
+            const double h = metrics.height();
+            const QRectF box(std::clamp(label.at.x() - w / 2.0, 0.0, width() - w),
+                             std::clamp(label.at.y() - h / 2.0, 0.0, height() - h), w, h);
+            drawLabel(painter,
+                      freePlace(box, rect(),
+                                {QPointF(0, 0), QPointF(0, -h), QPointF(0, h), QPointF(w, 0),
+                                 QPointF(-w, 0), QPointF(w, -h), QPointF(-w, -h), QPointF(0, -2 * h),
+                                 QPointF(0, 2 * h)}),
+                      Qt::AlignCenter, label.text);
+        }
     }
 
 private:
@@ -267,9 +282,11 @@ PixelInspector::PixelInspector(Inspection* inspection, QWidget* parent)
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // The columns sized by fitColumns(): the sentences wrap when the dock is narrow.
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Fixed);
     m_table->horizontalHeader()->setStretchLastSection(true);
-    m_table->setWordWrap(false);
+    m_table->setWordWrap(true);
+    m_table->viewport()->installEventFilter(this);
     m_table->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
 
     m_legend = new QLabel(tr("▶ holds the pixel at the stepping cursor; grey rows are not "
@@ -339,7 +356,7 @@ void PixelInspector::applyPresentation() {
     // Larger text when presenting, for the whole inspector.
     m_presenting = m_inspection->presentation();
     QFont base = QApplication::font(this);
-    if (m_presenting) base.setPointSizeF(base.pointSizeF() * 1.4);
+    base.setPointSizeF(base.pointSizeF() * m_inspection->textScale(1.4));
     setFont(base);
     m_table->setFont(base);
     QFont bold = base;
@@ -347,7 +364,7 @@ void PixelInspector::applyPresentation() {
     m_verdictLabel->setFont(bold);
     m_breakdownTitle->setFont(bold);
     QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
-    if (m_presenting) mono.setPointSizeF(mono.pointSizeF() * 1.4);
+    mono.setPointSizeF(base.pointSizeF());
     m_formula->setFont(mono);
 }
 
@@ -464,15 +481,69 @@ void PixelInspector::fillTable() {
             }
             QTableWidgetItem* cell = item(column, bytesText(*bytes));
             cell->setIcon(QIcon(swatch(*bytes, swatchSize)));
+            // The bytes whole when a narrow column elides them.
+            cell->setToolTip(cell->toolTip().isEmpty()
+                                 ? cell->text()
+                                 : cell->text() + QLatin1Char('\n') + cell->toolTip());
         };
         colourCell(3, row.before);
         colourCell(4, row.after);
     }
     m_table->setIconSize(QSize(swatchSize, swatchSize));
-    m_table->resizeColumnsToContents();
+    fitColumns();
+    showBreakdown();
+}
+
+bool PixelInspector::eventFilter(QObject* watched, QEvent* event) {
+    // The columns follow the table's width (after the layout, which the inspector's own
+    // resize comes before).
+    if (watched == m_table->viewport() && event->type() == QEvent::Resize)
+        QMetaObject::invokeMethod(this, &PixelInspector::fitColumns, Qt::QueuedConnection);
+    return QWidget::eventFilter(watched, event);
+}
+
+void PixelInspector::fitColumns() {
+    // Each column as wide as its text when the table has the room; when not, the columns
+    // shrink in proportion to what wrapping can save, down to their longest word (a cell
+    // never wraps inside a word), and their rows grow.
+    const int columns = m_table->columnCount();
+    const QFontMetrics metrics(m_table->font());
+    const int margin = 2 * (style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, m_table) + 1);
+    static const QRegularExpression space(QStringLiteral("\\s+"));
+    std::vector<int> whole(columns), least(columns);
+    int wholeSum = 0, leastSum = 0;
+    for (int c = 0; c < columns; ++c) {
+        const QString title = m_table->horizontalHeaderItem(c)->text();
+        // The header's title on one line: a header does not wrap.
+        const QHeaderView* header = m_table->horizontalHeader();
+        whole[c] = header->fontMetrics().horizontalAdvance(title) +
+                   2 * style()->pixelMetric(QStyle::PM_HeaderMargin, nullptr, header) + 2;
+        least[c] = whole[c];
+        for (int r = 0; r < m_table->rowCount(); ++r) {
+            const QTableWidgetItem* item = m_table->item(r, c);
+            if (!item || item->text().isEmpty()) continue;
+            const QFontMetrics cell(item->font());
+            const int icon = item->icon().isNull() ? 0 : m_table->iconSize().width() + 4;
+            whole[c] = std::max(whole[c], cell.horizontalAdvance(item->text()) + margin + icon + 2);
+            // A colour may shrink to its swatch and a few digits (the bytes in its tooltip).
+            const int fewest =
+                icon ? cell.horizontalAdvance(QStringLiteral("(255\u2026")) + margin + icon + 2 : 0;
+            for (const QString& word : item->text().split(space, Qt::SkipEmptyParts))
+                least[c] = std::max(least[c], std::min(cell.horizontalAdvance(word) + margin +
+                                                           icon + 2,
+                                                       fewest ? fewest : INT_MAX));
+        }
+        wholeSum += whole[c];
+        leastSum += least[c];
+    }
+    const int room = m_table->viewport()->width();
+    const double shrink = wholeSum <= room      ? 0.0
+                          : leastSum >= room    ? 1.0
+                                                : double(wholeSum - room) / (wholeSum - leastSum);
+    for (int c = 0; c < columns; ++c)
+        m_table->setColumnWidth(c, whole[c] - int(std::ceil(shrink * (whole[c] - least[c]))));
     m_table->resizeRowsToContents();
     fitTableHeight();
-    showBreakdown();
 }
 
 void PixelInspector::fitTableHeight() {

@@ -58,12 +58,14 @@ public:
 protected:
     void showEvent(QShowEvent* event) override;
     void changeEvent(QEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void refresh();
     void applyPresentation();  // the fonts, larger when presenting
     void updateBreakdown();
     void fillTable();
+    void fitColumns();
     void fitTableHeight();
     void showBreakdown();
 

@@ -18,6 +18,7 @@
 #include <limits>
 #include <vector>
 
+#include "elided_label.h"
 #include "inspection.h"
 #include "number_text.h"
 
@@ -676,7 +677,7 @@ ProjectionView::ProjectionView(Inspection* inspection, QWidget* parent)
     fitButton->setText(tr("Fit"));
     fitButton->setToolTip(tr("Show the whole window and its margin"));
 
-    m_legend = new QLabel(this);
+    m_legend = new WrappedLabel(this);
     m_legend->setObjectName(QStringLiteral("projectionLegend"));
     m_legend->setWordWrap(true);
     m_legend->setTextFormat(Qt::RichText);
@@ -777,12 +778,11 @@ void ProjectionView::resizeEvent(QResizeEvent* event) {
 }
 
 void ProjectionView::applyPresentation() {
-    const bool on = m_inspection && m_inspection->presentation();
     const double width = m_inspection ? m_inspection->lineWidth() : 1.5;
     m_canvas->setLineWidth(width);
     m_side->setLineWidth(width);
     QFont f = QWidget::font();
-    f.setPointSizeF(QFont().pointSizeF() * (on ? 1.35 : 1.0));
+    f.setPointSizeF(QFont().pointSizeF() * (m_inspection ? m_inspection->textScale(1.35) : 1.0));
     setFont(f);
 }
 

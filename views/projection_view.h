@@ -18,6 +18,7 @@
 #include <memory>
 #include <optional>
 
+#include "elided_label.h"
 #include "frame_trace.h"
 #include "projection.h"
 #include "zoom_pan.h"
@@ -191,7 +192,7 @@ private:
     ProjectionSideView* m_side = nullptr;
     QToolButton* m_ndcButton = nullptr;
     QToolButton* m_pixelsButton = nullptr;
-    QLabel* m_legend = nullptr;
+    WrappedLabel* m_legend = nullptr;
     QTextBrowser* m_explanation = nullptr;
 };
 

@@ -35,10 +35,13 @@ StageStrip::StageStrip(Inspection* inspection, QWidget* parent)
         connect(button, &QToolButton::clicked, this,
                 [this, stage] { m_inspection->setStage(stage); });
     }
-    m_note = new QLabel(this);
+    m_note = new ElidedLabel(this);
     m_note->setObjectName(QStringLiteral("stageNote"));
     layout->addSpacing(8);
     layout->addWidget(m_note, 1);
+    // The strip chooses its texts for its width (fitTexts), so its layout must not hold it
+    // to the width of the long ones.
+    layout->setSizeConstraint(QLayout::SetNoConstraint);
     connect(inspection, &Inspection::frameChanged, this, &StageStrip::refresh);
     connect(inspection, &Inspection::stageChanged, this, &StageStrip::refresh);
     connect(inspection, &Inspection::presentationChanged, this, &StageStrip::refresh);
@@ -66,6 +69,19 @@ QString StageStrip::stageName(rl::StageId stage) {
             return tr("Lighting");
     }
     return {};
+}
+
+QString StageStrip::shortStageName(rl::StageId stage) {
+    switch (stage) {
+        case rl::StageId::CameraBasis:
+            return tr("Camera");
+        case rl::StageId::ViewTransform:
+            return tr("View");
+        case rl::StageId::ScanConversion:
+            return tr("Scan");
+        default:
+            return stageName(stage);
+    }
 }
 
 QString StageStrip::skipReason(const rl::FrameTrace& frame, rl::StageId stage) {
@@ -130,16 +146,18 @@ QString StageStrip::modeDescription(const rl::FrameTrace& frame, rl::StageId sta
 void StageStrip::refresh() {
     const auto& frame = m_inspection->frame();
     QFont font = this->font();
-    if (m_inspection->presentation()) font.setPointSizeF(font.pointSizeF() * 1.3);
+    font.setPointSizeF(font.pointSizeF() * m_inspection->textScale(1.3));
     for (rl::StageId stage : rl::kAllStages) {
         const auto i = static_cast<std::size_t>(stage);
         QToolButton* button = m_buttons[i];
         const QString reason = frame ? skipReason(*frame, stage) : QString();
         const QString mode = frame ? modeName(*frame, stage) : QString();
-        QString text = QStringLiteral("%1 %2").arg(i + 1).arg(stageName(stage));
-        if (!reason.isEmpty()) text += QStringLiteral(" ") + tr("(skipped)");
-        if (!mode.isEmpty()) text += QStringLiteral(" \u00b7 ") + mode;
-        button->setText(text);
+        // The short name keeps what the frame does with the stage: only the name shrinks.
+        QString state;
+        if (!reason.isEmpty()) state += QStringLiteral(" ") + tr("(skipped)");
+        if (!mode.isEmpty()) state += QStringLiteral(" \u00b7 ") + mode;
+        m_longTexts[i] = QStringLiteral("%1 %2").arg(i + 1).arg(stageName(stage)) + state;
+        m_shortTexts[i] = QStringLiteral("%1 %2").arg(i + 1).arg(shortStageName(stage)) + state;
         button->setToolTip(!reason.isEmpty() ? tr("%1 is skipped: %2").arg(stageName(stage), reason)
                            : !mode.isEmpty()
                                ? tr("%1: %2").arg(stageName(stage), modeDescription(*frame, stage))
@@ -155,14 +173,44 @@ void StageStrip::refresh() {
     }
     m_note->setFont(font);
     updateNote();
+    fitTexts();
+}
+
+int StageStrip::textsWidth(const std::array<QString, rl::kStageCount>& texts) const {
+    // The buttons (bold for the stage shown: measured bold), the arrows and the spacing.
+    int width = 0;
+    for (std::size_t i = 0; i < texts.size(); ++i) {
+        QFont bold = m_buttons[i]->font();
+        bold.setBold(true);
+        width += QFontMetrics(bold).horizontalAdvance(texts[i]) + 16;
+    }
+    const QFontMetrics metrics(m_note->font());
+    width += int(texts.size() - 1) * (metrics.horizontalAdvance(QStringLiteral("\u2192")) + 8);
+    return width + 8 + 8;  // the margins and the note's spacing
+}
+
+void StageStrip::fitTexts() {
+    const bool whole = width() >= textsWidth(m_longTexts) + m_note->minimumSizeHint().width();
+    for (std::size_t i = 0; i < m_buttons.size(); ++i)
+        m_buttons[i]->setText(whole ? m_longTexts[i] : m_shortTexts[i]);
+}
+
+QSize StageStrip::minimumSizeHint() const {
+    return {textsWidth(m_shortTexts) + m_note->minimumSizeHint().width(),
+            QWidget::minimumSizeHint().height()};
+}
+
+void StageStrip::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    fitTexts();
 }
 
 void StageStrip::updateNote() {
     const bool midFrame = m_inspection->canStep() && !m_inspection->atStart() &&
                           !m_inspection->atEnd() &&
                           m_inspection->granularity() != rl::StepGranularity::Stage;
-    m_note->setText(midFrame ? tr("while stepping, stages 5-7 run together, fragment by fragment")
-                             : QString());
+    m_note->setFullText(midFrame ? tr("while stepping, stages 5-7 run together, fragment by fragment")
+                                 : QString());
 }
 
 }  // namespace rasterlab

@@ -8,10 +8,10 @@
 
 #include <array>
 
+#include "elided_label.h"
 #include "inspection.h"
 #include "stage_id.h"
 
-class QLabel;
 class QToolButton;
 
 namespace rasterlab {
@@ -23,6 +23,8 @@ public:
 
     // The lecture's name of a stage, translated ("Camera basis").
     static QString stageName(rl::StageId stage);
+    // A shorter name, one word ("Camera"), for a narrow strip and a dock's tab.
+    static QString shortStageName(rl::StageId stage);
     // Why the frame shown does not use a stage, translated; empty when it does.
     static QString skipReason(const rl::FrameTrace& frame, rl::StageId stage);
     // How the frame shown runs a stage when it has a choice (the projection's handling of
@@ -34,13 +36,23 @@ public:
         return m_buttons[static_cast<std::size_t>(stage)];
     }
 
+    // Short enough for a small screen: the buttons' short names and a few letters of the note.
+    QSize minimumSizeHint() const override;
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
     void refresh();
     void updateNote();  // the note beside the strip, which follows the cursor
+    // The stages' names, whole or short (number and first word), whichever the width holds.
+    void fitTexts();
+    int textsWidth(const std::array<QString, rl::kStageCount>& texts) const;
 
     Inspection* m_inspection;
     std::array<QToolButton*, rl::kStageCount> m_buttons{};
-    QLabel* m_note = nullptr;
+    std::array<QString, rl::kStageCount> m_longTexts, m_shortTexts;
+    ElidedLabel* m_note = nullptr;
 };
 
 }  // namespace rasterlab

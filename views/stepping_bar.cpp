@@ -182,9 +182,9 @@ SteppingBar::SteppingBar(Inspection* inspection, QWidget* parent)
             m_inspection->seek(replay->atFragment(static_cast<std::uint32_t>(value)));
     });
     layout->addWidget(m_timeline, 1);
-    m_position = new QLabel(this);
+    // The position elided on a narrow screen, whole in its tooltip.
+    m_position = new ElidedLabel(this);
     m_position->setObjectName(QStringLiteral("positionLabel"));
-    m_position->setMinimumWidth(120);
     layout->addWidget(m_position, 2);
 
     m_timer.setInterval(100);
@@ -261,7 +261,7 @@ void SteppingBar::refresh() {
         text = m_inspection->replayError().isEmpty()
                    ? tr("stepping is being prepared")
                    : tr("no stepping: %1").arg(m_inspection->replayError());
-    m_position->setText(text);
+    m_position->setFullText(text);
 }
 
 }  // namespace rasterlab

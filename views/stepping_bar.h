@@ -8,6 +8,7 @@
 #include <QTimer>
 #include <QWidget>
 
+#include "elided_label.h"
 #include "inspection.h"
 
 class QAction;
@@ -36,7 +37,8 @@ public:
     void setPlaying(bool playing);
     void setSpeed(int stepsPerSecond);  // how many steps a second Play makes
     QSlider* timeline() const { return m_timeline; }
-    QLabel* positionLabel() const { return m_position; }
+    // The position, elided when narrow (ElidedLabel::fullText() whole).
+    ElidedLabel* positionLabel() const { return m_position; }
 
     static QString granularityName(rl::StepGranularity granularity);
 
@@ -60,7 +62,7 @@ private:
     QComboBox* m_granularity = nullptr;
     QSpinBox* m_speed = nullptr;
     QSlider* m_timeline = nullptr;
-    QLabel* m_position = nullptr;
+    ElidedLabel* m_position = nullptr;
 };
 
 }  // namespace rasterlab

@@ -18,6 +18,7 @@
 
 #include "number_text.h"
 #include "shading.h"
+#include "wrapping_check_box.h"
 
 namespace rasterlab {
 
@@ -250,8 +251,11 @@ VertexTableView::VertexTableView(Inspection* inspection, QWidget* parent)
     m_table->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
     m_table->horizontalHeader()->setResizeContentsPrecision(64);
     m_table->horizontalHeader()->setStretchLastSection(true);
+    // A column for each coordinate of each space: too many for a dock, it scrolls sideways
+    // (tests/tst_legibility.cpp lets it; each column still fits its text).
+    m_table->setProperty("scrollsSideways", true);
 
-    m_onlyTriangle = new QCheckBox(tr("Only the selected triangle's vertices"), this);
+    m_onlyTriangle = new WrappingCheckBox(tr("Only the selected triangle's vertices"), this);
     m_onlyTriangle->setObjectName(QStringLiteral("vertexTableOnlyTriangle"));
     m_summary = new QLabel(this);
     m_summary->setObjectName(QStringLiteral("vertexTableSummary"));
@@ -549,9 +553,8 @@ QString VertexTableView::explanationHtml(VertexRef ref) const {
 }
 
 void VertexTableView::applyPresentation() {
-    const bool on = m_inspection->presentation();
     QFont tableFont = QApplication::font(this);
-    if (on) tableFont.setPointSizeF(tableFont.pointSizeF() * 1.4);
+    tableFont.setPointSizeF(tableFont.pointSizeF() * m_inspection->textScale(1.4));
     m_table->setFont(tableFont);
     m_explanation->setFont(tableFont);
     m_table->verticalHeader()->setDefaultSectionSize(QFontMetrics(tableFont).height() + 6);

@@ -17,6 +17,7 @@
 #include <limits>
 
 #include "frame_image_view.h"
+#include "wrapping_check_box.h"
 
 namespace rasterlab {
 
@@ -156,7 +157,7 @@ ZBufferView::ZBufferView(QWidget* parent) : QWidget(parent) {
     m_view->setObjectName(QStringLiteral("zbufferImage"));
     m_histogramWidget = new DepthHistogramWidget(this);
     m_histogramWidget->setObjectName(QStringLiteral("zbufferHistogram"));
-    m_automatic = new QCheckBox(tr("Automatic range (nearest to farthest drawn)"), this);
+    m_automatic = new WrappingCheckBox(tr("Automatic range (nearest to farthest drawn)"), this);
     m_automatic->setObjectName(QStringLiteral("zbufferAutomatic"));
     m_automatic->setChecked(true);
     m_nearest = new QDoubleSpinBox(this);
@@ -183,7 +184,8 @@ ZBufferView::ZBufferView(QWidget* parent) : QWidget(parent) {
     m_valueLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
     auto* form = new QFormLayout;
-    form->addRow(m_automatic);
+    // Long rows (Portuguese, presentation mode) put their field below their label.
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     form->addRow(tr("Nearest (white / red):"), m_nearest);
     form->addRow(tr("Farthest (dark / blue):"), m_farthest);
     form->addRow(tr("Colours:"), m_paletteBox);
@@ -196,6 +198,7 @@ ZBufferView::ZBufferView(QWidget* parent) : QWidget(parent) {
     layout->addWidget(m_view, 1);
     layout->addWidget(m_histogramWidget);
     layout->addWidget(m_rangeLabel);
+    layout->addWidget(m_automatic);  // outside the form, where its text can wrap
     layout->addLayout(form);
     layout->addWidget(m_valueLabel);
 

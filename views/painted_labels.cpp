@@ -1,0 +1,48 @@
+#include "painted_labels.h"
+
+#include <QFontMetricsF>
+#include <QPainter>
+
+namespace rasterlab {
+
+QRectF textBox(const QPainter& painter, QPointF baseline, const QString& text) {
+    const QFontMetricsF metrics(painter.font());
+    return QRectF(baseline.x(), baseline.y() - metrics.ascent(), metrics.horizontalAdvance(text),
+                  metrics.ascent() + metrics.descent());
+}
+
+QRectF PaintedLabels::drawLabel(QPainter& painter, QPointF baseline, const QString& text) {
+    painter.drawText(baseline, text);
+    const QRectF box = textBox(painter, baseline, text);
+    recordLabel(box);
+    return box;
+}
+
+QRectF PaintedLabels::drawLabel(QPainter& painter, const QRectF& box, int flags,
+                                const QString& text) {
+    QRectF covered;
+    painter.drawText(box, flags, text, &covered);
+    recordLabel(covered);
+    return covered;
+}
+
+void PaintedLabels::recordLabel(const QRectF& rect) {
+    if (!rect.isEmpty()) m_rects.append(rect.toRect());
+}
+
+bool PaintedLabels::isFree(const QRectF& rect, const QRectF& bounds) const {
+    if (!bounds.contains(rect)) return false;
+    const QRect r = rect.toRect();
+    for (const QRect& used : m_rects)
+        if (used.intersects(r)) return false;
+    return true;
+}
+
+QRectF PaintedLabels::freePlace(const QRectF& rect, const QRectF& bounds,
+                                std::initializer_list<QPointF> offsets) const {
+    for (const QPointF& offset : offsets)
+        if (isFree(rect.translated(offset), bounds)) return rect.translated(offset);
+    return rect;
+}
+
+}  // namespace rasterlab
