@@ -5,6 +5,8 @@
 
 #include <exception>
 
+#include "pipeline_messages.h"
+
 namespace rasterlab {
 
 namespace {
@@ -59,7 +61,7 @@ void ReplayBuilder::build(std::shared_ptr<const rl::FrameTrace> frame) {
             } else if (replay) {
                 outcome.replay = replay.value();
             } else {
-                outcome.error = QString::fromStdString(replay.error().message);
+                outcome.error = translated(replay.error().translatable);
             }
         } catch (const std::exception& e) {
             outcome.error = QString::fromUtf8(e.what());
