@@ -15,6 +15,7 @@
 #include <exception>
 
 #include "accuracy_plot.h"
+#include "pipeline_messages.h"
 
 namespace rasterlab {
 
@@ -152,7 +153,7 @@ void AccuracyPanel::measure() {
         try {
             auto report = rl::measureAccuracy(*scene, options);
             if (!report)
-                outcome.error = QString::fromStdString(report.error().toString());
+                outcome.error = translated(report.error());
             else
                 outcome.report = std::make_shared<rl::AccuracyReport>(std::move(report.value()));
         } catch (const std::exception& e) {

@@ -10,14 +10,16 @@
 
 namespace rasterlab {
 
+using rl::operator""_msg;  // message templates, translated in the window (pipeline_messages.h)
+
 rl::Result<std::shared_ptr<const rl::Texture>> loadTexture(const QString& path,
                                                            const rl::SourceLocation& where) {
     QImageReader reader(path);
     const QImage read = reader.read();
     if (read.isNull())
         return rl::makeError(rl::ErrorCode::Io, where,
-                             "cannot read the texture " + path.toStdString() + ": " +
-                                 reader.errorString().toStdString());
+                             "cannot read the texture %1: %2"_msg(
+                                 path.toStdString(), reader.errorString().toStdString()));
     const QImage image = read.convertToFormat(QImage::Format_RGBA8888);
     auto texture = std::make_shared<rl::Texture>();
     texture->width = image.width();

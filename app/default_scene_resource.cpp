@@ -58,7 +58,7 @@ auto loadPart(const QString& path, rl::Diagnostics& diagnostics, Layout layout, 
                     rl::Diagnostics all;
                     auto part = read(text, fileName, all, detect(text).value_or(Layout::Ufpe));
                     for (const rl::Diagnostic& item : all.items())
-                        if (item.severity == rl::Severity::Warning) d.warn(item.where, item.message);
+                        if (item.severity == rl::Severity::Warning) d.warn(item.where, item.translatable);
                     return part;
                 });
 }

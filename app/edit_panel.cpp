@@ -25,6 +25,7 @@
 
 #include "course_writers.h"
 #include "examples.h"
+#include "pipeline_messages.h"
 #include "scene_edits.h"
 #include "wrapping_check_box.h"
 
@@ -755,7 +756,7 @@ bool EditPanel::save(Part part, QWidget* parent) {
     if (m_document->needsPath(part)) return saveAs(part, parent);
     const rl::Status status = m_document->save(part);
     ++m_session;  // the next edit is a step of its own
-    if (!status) return saveError(part, QString::fromStdString(status.error().toString()), parent);
+    if (!status) return saveError(part, translated(status.error()), parent);
     updateModified();
     emit saved(part);
     return true;
@@ -807,7 +808,7 @@ bool EditPanel::saveAs(Part part, QWidget* parent) {
             ? m_document->saveCameraAs(path, static_cast<rl::CameraLayout>(chosen))
             : m_document->saveLightingAs(path, static_cast<rl::LightingLayout>(chosen));
     ++m_session;
-    if (!status) return saveError(part, QString::fromStdString(status.error().toString()), parent);
+    if (!status) return saveError(part, translated(status.error()), parent);
     updateModified();
     emit saved(part);
     return true;

@@ -151,9 +151,10 @@ public:
         for (const QString& key : object.keys())
             if (!known.contains(key))
                 m_diagnostics.warn(m_locator.at(path + QStringList{key}),
-                                   lit("unknown key \"%1\" ignored (known here: %2)")
-                                       .arg(key, quoted(known))
-                                       .toStdString());
+                                   rl::Message::untranslated(
+                                       lit("unknown key \"%1\" ignored (known here: %2)")
+                                           .arg(key, quoted(known))
+                                           .toStdString()));
     }
 
     std::optional<double> number(const QJsonValue& value, const QStringList& path) {

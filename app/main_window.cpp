@@ -37,6 +37,7 @@
 #include "near_clip_view.h"
 #include "normals_view.h"
 #include "painter_view.h"
+#include "pipeline_messages.h"
 #include "pixel_inspector.h"
 #include "projection_view.h"
 #include "replay_builder.h"
@@ -216,8 +217,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(&m_watcher, &QFileSystemWatcher::fileChanged, this, &MainWindow::onWatchedFileChanged);
     connect(&m_reloadTimer, &QTimer::timeout, this, &MainWindow::reloadChangedFiles);
 
-    if (auto status = m_document.loadDefault(); !status)
-        showError(QString::fromStdString(status.error().toString()));
+    if (auto status = m_document.loadDefault(); !status) showError(translated(status.error()));
     documentChanged();
 }
 
@@ -478,7 +478,7 @@ bool MainWindow::openPart(SceneDocument::Part part, const QString& path) {
     if (!mayReplace(part)) return false;
     auto status = m_document.open(part, path);
     if (!status) {
-        showError(QString::fromStdString(status.error().toString()));
+        showError(translated(status.error()));
         return false;
     }
     if (part == SceneDocument::Part::Object || m_document.showsCommandFile()) leaveLesson();
@@ -492,7 +492,7 @@ bool MainWindow::setCameraLayout(rl::CameraLayout layout) {
     if (!mayReplace(SceneDocument::Part::Camera)) return false;
     auto status = m_document.setCameraLayout(layout);
     if (!status) {
-        showError(QString::fromStdString(status.error().toString()));
+        showError(translated(status.error()));
         return false;
     }
     m_lastError.clear();
@@ -504,7 +504,7 @@ bool MainWindow::setLightingLayout(rl::LightingLayout layout) {
     if (!mayReplace(SceneDocument::Part::Lighting)) return false;
     auto status = m_document.setLightingLayout(layout);
     if (!status) {
-        showError(QString::fromStdString(status.error().toString()));
+        showError(translated(status.error()));
         return false;
     }
     m_lastError.clear();
@@ -516,7 +516,7 @@ bool MainWindow::openCommandFile(const QString& path) {
     if (!m_edit->maybeSave(this)) return false;
     auto status = m_document.openCommandFile(path);
     if (!status) {
-        showError(QString::fromStdString(status.error().toString()));
+        showError(translated(status.error()));
         return false;
     }
     leaveLesson();
@@ -815,7 +815,7 @@ void MainWindow::refreshMessages() {
     rl::Diagnostics all = m_document.diagnostics();
     if (m_frame.trace) all.append(m_frame.trace->diagnostics);
     for (const auto& d : all.items()) {
-        auto* item = new QListWidgetItem(QString::fromStdString(d.toString()), m_messages);
+        auto* item = new QListWidgetItem(translated(d), m_messages);
         if (d.severity == rl::Severity::Warning) item->setForeground(QColor(170, 110, 0));
     }
 }

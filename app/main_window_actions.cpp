@@ -12,6 +12,7 @@
 #include "edit_panel.h"
 #include "frame_image_view.h"
 #include "main_window.h"
+#include "pipeline_messages.h"
 #include "stage_strip.h"
 #include "stepping_bar.h"
 
@@ -64,7 +65,7 @@ void MainWindow::createFileMenu() {
     file->addAction(tr("&Default Scene"), this, [this] {
         if (!m_edit->maybeSave(this)) return;
         if (auto status = m_document.loadDefault(); !status) {
-            showError(QString::fromStdString(status.error().toString()));
+            showError(translated(status.error()));
         } else {
             leaveLesson();
             m_lastError.clear();

@@ -16,6 +16,7 @@
 #include "image_io.h"
 #include "main_window.h"
 #include "output_image.h"
+#include "pipeline_messages.h"
 #include "renderer.h"
 
 namespace rasterlab {
@@ -50,7 +51,7 @@ bool MainWindow::exportNormalBuffer(const QString& path) {
         options.shading.keepNormals = true;
         auto frame = rl::renderFrame(m_frame.trace->scene, options);
         if (!frame) {
-            showError(failure.arg(path, QString::fromStdString(frame.error().toString())));
+            showError(failure.arg(path, translated(frame.error())));
             return false;
         }
         image = toQImage(rl::normalImage(frame->shading->normal, *frame->depth));
@@ -84,7 +85,7 @@ bool MainWindow::exportShadingSideBySide(const QString& path) {
         for (rl::Draw& draw : scene->draws) draw.shading = models[i];
         const auto frame = rl::renderFrame(scene);
         if (!frame) {
-            showError(failure.arg(path, QString::fromStdString(frame.error().toString())));
+            showError(failure.arg(path, translated(frame.error())));
             return false;
         }
         const QImage image =
@@ -179,8 +180,8 @@ int MainWindow::exportAnimationFrames(const QString& folder) {
             return !progress.wasCanceled();
         });
     if (!rendered)  // every frame before it was written
-        showError(tr("%1: cannot render the frame: %2")
-                      .arg(path(written), QString::fromStdString(rendered.error().toString())));
+        showError(
+            tr("%1: cannot render the frame: %2").arg(path(written), translated(rendered.error())));
     statusBar()->showMessage(tr("Exported %1 frames to %2").arg(written).arg(folder), 8000);
     return written;
 }

@@ -19,6 +19,7 @@
 #include "examples.h"
 #include "frame_image_view.h"
 #include "main_window.h"
+#include "pipeline_messages.h"
 
 namespace rasterlab {
 
@@ -163,7 +164,7 @@ SceneDocument MainWindow::lessonDocument(const Lesson& lesson, const QDir& base,
         if (path.isEmpty()) return;
         if (auto status = document.open(part, resolvedPath(base, path)); !status)
             problems << tr("the %1 was not restored, the one shown stays: %2")
-                            .arg(what, QString::fromStdString(status.error().toString()));
+                            .arg(what, translated(status.error()));
     };
     open(SceneDocument::Part::Camera, camera, tr("camera"));
     open(SceneDocument::Part::Lighting, lighting, tr("lighting"));
@@ -171,7 +172,7 @@ SceneDocument MainWindow::lessonDocument(const Lesson& lesson, const QDir& base,
     if (!lesson.commandFile.isEmpty()) {
         if (auto status = document.openCommandFile(resolvedPath(base, lesson.commandFile)); !status)
             problems << tr("the command file was not restored, the scene shown stays: %1")
-                            .arg(QString::fromStdString(status.error().toString()));
+                            .arg(translated(status.error()));
         else
             document.setImageIndex(lesson.commandImage);
     }
@@ -190,13 +191,13 @@ bool MainWindow::openLesson(const QString& path) {
     rl::Diagnostics warnings;
     auto lesson = readLesson(path, warnings);
     if (!lesson) {
-        showError(QString::fromStdString(lesson.error().toString()));
+        showError(translated(lesson.error()));
         return false;
     }
     if (!m_edit->maybeSave(this)) return false;
     const QDir base = QFileInfo(path).absoluteDir();
     QStringList problems;
-    for (const rl::Diagnostic& d : warnings.items()) problems << QString::fromStdString(d.toString());
+    for (const rl::Diagnostic& d : warnings.items()) problems << translated(d);
     SceneDocument document = lessonDocument(*lesson, base, problems);
     for (QString& problem : problems)
         if (!problem.startsWith(path)) problem = QStringLiteral("%1: %2").arg(path, problem);

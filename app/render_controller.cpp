@@ -7,6 +7,7 @@
 
 #include "image_io.h"
 #include "output_image.h"
+#include "pipeline_messages.h"
 
 namespace rasterlab {
 
@@ -27,7 +28,7 @@ Outcome renderOnWorker(quint64 generation, std::shared_ptr<const rl::Scene> scen
     try {
         auto trace = rl::renderFrame(scene, options);
         if (!trace) {
-            outcome.error = QString::fromStdString(trace.error().toString());
+            outcome.error = translated(trace.error());
             return outcome;
         }
         auto shared = std::make_shared<const rl::FrameTrace>(std::move(trace).value());

@@ -5,6 +5,8 @@
 
 #include <exception>
 
+#include "pipeline_messages.h"
+
 #ifdef Q_OS_LINUX
 #include <sys/resource.h>
 #include <sys/syscall.h>
@@ -78,7 +80,7 @@ void ReplayBuilder::build(std::shared_ptr<const rl::FrameTrace> frame) {
             } else if (replay) {
                 outcome.replay = replay.value();
             } else {
-                outcome.error = QString::fromStdString(replay.error().message);
+                outcome.error = translated(replay.error().translatable);
             }
         } catch (const std::exception& e) {
             outcome.error = QString::fromUtf8(e.what());

@@ -14,6 +14,8 @@
 
 namespace rasterlab {
 
+using rl::operator""_msg;  // message templates, translated in the window (pipeline_messages.h)
+
 rl::Status SceneDocument::loadDefault() {
     SceneDocument fresh;
     fresh.m_settings = m_settings;
@@ -54,7 +56,7 @@ auto guarded(const QString& path, Load load) -> decltype(load()) {
         return load();
     } catch (const std::bad_alloc&) {
         return rl::makeError(rl::ErrorCode::Range, rl::SourceLocation{path.toStdString(), 0, 0},
-                             "not enough memory to read this file");
+                             "not enough memory to read this file"_msg);
     }
 }
 
@@ -447,8 +449,8 @@ bool sameValues(const rl::CourseLighting& a, const rl::CourseLighting& b) {
     return true;
 }
 
-rl::Error saveError(const QString& path, rl::ErrorCode code, const std::string& message) {
-    return rl::makeError(code, rl::SourceLocation{path.toStdString(), 0, 0}, message);
+rl::Error saveError(const QString& path, rl::ErrorCode code, rl::Message message) {
+    return rl::makeError(code, rl::SourceLocation{path.toStdString(), 0, 0}, std::move(message));
 }
 
 }  // namespace
@@ -478,7 +480,7 @@ rl::Status SceneDocument::save(Part part) {
     if (needsPath(part))
         return saveError(source(part), rl::ErrorCode::Usage,
                          "the built-in scene's files cannot be written: save it to a file of "
-                         "your own (Save As)");
+                         "your own (Save As)"_msg);
     return writePart(part, source(part), m_cameraFileLayout, m_lightingFileLayout);
 }
 
@@ -504,16 +506,17 @@ bool SceneDocument::fileHoldsLastSave(Part part) const {
 rl::Status SceneDocument::writePart(Part part, const QString& path, rl::CameraLayout cameraLayout,
                                     rl::LightingLayout lightingLayout) {
     if (part == Part::Object)
-        return saveError(path, rl::ErrorCode::Usage, "the object is not edited, so not saved");
+        return saveError(path, rl::ErrorCode::Usage, "the object is not edited, so not saved"_msg);
     if (path.isEmpty() || isResource(path))
-        return saveError(path, rl::ErrorCode::Usage, "cannot write into the built-in resources");
+        return saveError(path, rl::ErrorCode::Usage,
+                         "cannot write into the built-in resources"_msg);
     const std::string fileName = path.toStdString();
     const bool camera = part == Part::Camera;
     if (camera) {
         if (auto error = basisError(m_parts.camera))
-            return saveError(
-                path, rl::ErrorCode::Degenerate,
-                "the camera was not saved, as it would not load again: " + error->message);
+            return saveError(path, rl::ErrorCode::Degenerate,
+                             "the camera was not saved, as it would not load again: %1"_msg(
+                                 error->translatable));
     }
 
     // The file's present text gives its line ending and, in a key = value file, the lines of
@@ -533,7 +536,7 @@ rl::Status SceneDocument::writePart(Part part, const QString& path, rl::CameraLa
     }
     auto text = camera ? rl::writeCameraFile(m_parts.camera, cameraLayout, viewOf(previous))
                        : rl::writeLightingFile(m_parts.lighting, lightingLayout, viewOf(previous));
-    if (!text) return saveError(path, text.error().code, text.error().message);
+    if (!text) return saveError(path, text.error().code, text.error().translatable);
 
     // Read back before writing: the file must give these values again.
     rl::Diagnostics diagnostics;
@@ -551,7 +554,7 @@ rl::Status SceneDocument::writePart(Part part, const QString& path, rl::CameraLa
     }
     if (!same)
         return saveError(path, rl::ErrorCode::Unsupported,
-                         "not saved: the text written does not read back as the same values");
+                         "not saved: the text written does not read back as the same values"_msg);
 
     const QByteArray bytes = QByteArray::fromStdString(*text);
     // Unbuffered, so that a short write is seen here: with a buffer, Qt 6.4's QSaveFile
@@ -560,21 +563,21 @@ rl::Status SceneDocument::writePart(Part part, const QString& path, rl::CameraLa
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered))
         return saveError(path, rl::ErrorCode::Io,
-                         "cannot write the file: " + file.errorString().toStdString());
+                         "cannot write the file: %1"_msg(file.errorString().toStdString()));
     const qint64 written = file.write(bytes);
     if (written != bytes.size()) {
         file.cancelWriting();
-        const std::string why = written < 0 ? file.errorString().toStdString()
-                                            : "only " + std::to_string(written) + " of " +
-                                                  std::to_string(bytes.size()) +
-                                                  " bytes could be written (is the disk full?)";
+        const rl::Message why =
+            written < 0 ? rl::Message::untranslated(file.errorString().toStdString())
+                        : "only %1 of %2 bytes could be written (is the disk full?)"_msg(
+                              written, bytes.size());
         return saveError(path, rl::ErrorCode::Io,
-                         "cannot write the file (it is left as it was): " + why);
+                         "cannot write the file (it is left as it was): %1"_msg(why));
     }
     if (!file.commit())
-        return saveError(
-            path, rl::ErrorCode::Io,
-            "cannot write the file (it is left as it was): " + file.errorString().toStdString());
+        return saveError(path, rl::ErrorCode::Io,
+                         "cannot write the file (it is left as it was): %1"_msg(
+                             file.errorString().toStdString()));
 
     // The part now comes from this file: its locations, warnings, layout and saved values.
     if (camera) {

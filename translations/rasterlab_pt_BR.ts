@@ -60,99 +60,1835 @@
     </message>
 </context>
 <context>
+    <name>Lessons</name>
+    <message>
+        <location filename="../app/examples.cpp" line="29"/>
+        <source>One triangle</source>
+        <translation>Um triângulo</translation>
+    </message>
+    <message>
+        <location filename="../app/examples.cpp" line="30"/>
+        <source>A single triangle in a 32 x 24 image, large enough to read from the back of the room. Step by pixel (Step menu, or the arrow keys) and watch the scanline fill from its left edge to its right; pick a pixel to see its barycentric coordinates, its interpolated P and N, and its Phong terms in the pixel inspector.</source>
+        <translation>Um único triângulo numa imagem de 32 x 24, grande o bastante para ser lido do fundo da sala. Avance por pixel (menu Passo a passo, ou as setas) e veja a linha de varredura se preencher da aresta esquerda até a direita; escolha um pixel para ver no inspetor de pixel as suas coordenadas baricêntricas, o P e o N interpolados e os termos de Phong.</translation>
+    </message>
+    <message>
+        <location filename="../app/examples.cpp" line="38"/>
+        <source>Two triangles that cross (the z-buffer)</source>
+        <translation>Dois triângulos que se cruzam (o z-buffer)</translation>
+    </message>
+    <message>
+        <location filename="../app/examples.cpp" line="39"/>
+        <source>Two triangles that pass through each other: each is nearer the camera over half of the other, so no order of whole triangles draws them right. It opens at the start of the frame with a breakpoint at the second triangle: Continue to Breakpoint (F8) draws the first, then step by scanline through the second and watch the z-buffer dock: its pixels are kept above the crossing line and rejected below it. Pick a pixel near the crossing to compare both depths.</source>
+        <translation>Dois triângulos que se atravessam: cada um está mais perto da câmera em metade do outro, então nenhuma ordem de triângulos inteiros os desenha certo. Abre no início do quadro com um ponto de parada no segundo triângulo: Continuar até o ponto de parada (F8) desenha o primeiro; depois avance por linha de varredura pelo segundo e observe o painel do z-buffer: os seus pixels ficam acima da linha de cruzamento e são rejeitados abaixo dela. Escolha um pixel perto do cruzamento para comparar as duas profundidades.</translation>
+    </message>
+    <message>
+        <location filename="../app/examples.cpp" line="50"/>
+        <source>A triangle through the near plane</source>
+        <translation>Um triângulo que atravessa o plano próximo</translation>
+    </message>
+    <message>
+        <location filename="../app/examples.cpp" line="51"/>
+        <source>A triangle on the floor whose far corner is behind the camera. The near-plane clipping dock shows it cut at the near plane into a quad, and the quad split into two triangles. Then choose Shading &gt; Projection &gt; Plain Divide: the corner behind the eye is divided by a negative z and lands above the horizon.</source>
+        <translation>Um triângulo no chão com um vértice atrás da câmera. O painel de recorte no plano próximo mostra-o cortado no plano próximo num quadrilátero, e o quadrilátero dividido em dois triângulos. Depois escolha Sombreamento &gt; Projeção &gt; Divisão simples: o vértice atrás do olho é dividido por um z negativo e vai parar acima do horizonte.</translation>
+    </message>
+    <message>
+        <location filename="../app/examples.cpp" line="59"/>
+        <source>A goblet turned from a profile</source>
+        <translation>Uma taça torneada a partir de um perfil</translation>
+    </message>
+    <message>
+        <location filename="../app/examples.cpp" line="60"/>
+        <source>A goblet made by turning a profile around the y axis (the course&apos;s chalice idea, 1,520 triangles of our own). Start at the camera basis dock, then follow the stages in order: view coordinates, normals, projection, scan conversion, z-buffer and lighting. Pick a pixel on the highlight of the bowl to see why it is bright.</source>
+        <translation>Uma taça feita girando um perfil em torno do eixo y (a ideia do cálice do curso, com 1.520 triângulos nossos). Comece pelo painel da base da câmera e siga as etapas em ordem: coordenadas de vista, normais, projeção, conversão por varredura, z-buffer e iluminação. Escolha um pixel no brilho do bojo para ver por que ele é claro.</translation>
+    </message>
+    <message>
+        <location filename="../app/examples.cpp" line="68"/>
+        <source>A low-polygon sphere: flat, Gouraud, Phong</source>
+        <translation>Uma esfera de poucos polígonos: flat, Gouraud, Phong</translation>
+    </message>
+    <message>
+        <location filename="../app/examples.cpp" line="69"/>
+        <source>A sphere of 168 triangles. It opens in flat shading, one colour per triangle; press the Shading menu&apos;s Gouraud and then Phong to compare (File &gt; Export More &gt; Shading Side by Side puts the three in one picture). Gouraud smooths the facets but blurs the highlight; Phong draws it round.</source>
+        <translation>Uma esfera de 168 triângulos. Abre em sombreamento flat, uma cor por triângulo; escolha Gouraud e depois Phong no menu Sombreamento para comparar (Arquivo &gt; Exportar mais &gt; Sombreamentos lado a lado põe os três numa só figura). Gouraud suaviza as faces mas borra o brilho; Phong o desenha redondo.</translation>
+    </message>
+    <message>
+        <location filename="../app/examples.cpp" line="77"/>
+        <source>Several lights: spot, directional, attenuated</source>
+        <translation>Várias luzes: spot, direcional, atenuada</translation>
+    </message>
+    <message>
+        <location filename="../app/examples.cpp" line="78"/>
+        <source>A floor and a ball under three lights of the lecture slides: a yellow spot (the bright disc, with a soft edge from its exponent), a dim blue directional light from the right, and a red positional light whose strength falls with distance. Pick pixels inside and outside the spot&apos;s cone and compare the pixel inspector&apos;s terms light by light; change the lights in the Edit dock.</source>
+        <translation>Um chão e uma bola sob três luzes dos slides da aula: um spot amarelo (o disco claro, com a borda suave do seu expoente), uma luz direcional azul e fraca vinda da direita e uma luz pontual vermelha cuja intensidade cai com a distância. Escolha pixels dentro e fora do cone do spot e compare os termos do inspetor de pixel luz a luz; mude as luzes no painel Edição.</translation>
+    </message>
+    <message>
+        <location filename="../app/examples.cpp" line="87"/>
+        <source>Three triangles in a cycle (the painter)</source>
+        <translation>Três triângulos em ciclo (o pintor)</translation>
+    </message>
+    <message>
+        <location filename="../app/examples.cpp" line="88"/>
+        <source>Three triangles that each lie in front of the next: no order of whole triangles can draw them right, so the painter&apos;s algorithm (far to near by barycentre) must fail somewhere. Step by triangle and see one painted over a nearer one; the painter&apos;s algorithm dock marks the pixels that differ from the z-buffer&apos;s image.</source>
+        <translation>Três triângulos, cada um à frente do seguinte: nenhuma ordem de triângulos inteiros consegue desenhá-los certo, então o algoritmo do pintor (do mais longe ao mais perto, pelo baricentro) tem de falhar em algum lugar. Avance por triângulo e veja um deles pintado sobre outro mais próximo; o painel do algoritmo do pintor marca os pixels que diferem da imagem do z-buffer.</translation>
+    </message>
+    <message>
+        <location filename="../app/examples.cpp" line="96"/>
+        <source>Gouraud&apos;s faults: Mach bands, a missed highlight</source>
+        <translation>Os defeitos de Gouraud: bandas de Mach, um brilho perdido</translation>
+    </message>
+    <message>
+        <location filename="../app/examples.cpp" line="97"/>
+        <source>Left, a coarse sphere in Gouraud shading: the brightness bends at every edge and the eye sees bands there (Mach bands). Right, a square of two triangles whose highlight falls between its corners: Gouraud lights only the corners and misses it. Switch to Phong shading and the highlight appears in the middle of the square.</source>
+        <translation>À esquerda, uma esfera grosseira em sombreamento Gouraud: o brilho muda de inclinação em cada aresta e o olho vê faixas ali (bandas de Mach). À direita, um quadrado de dois triângulos cujo brilho cai entre os vértices: Gouraud ilumina só os vértices e o perde. Mude para o sombreamento Phong e o brilho aparece no meio do quadrado.</translation>
+    </message>
+</context>
+<context>
+    <name>Messages</name>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="15"/>
+        <source>expected the degree %1 of the Bezier surface (an integer from 1 to %2), found %3</source>
+        <translation>esperava o grau %1 da superfície de Bézier (um inteiro de 1 a %2), encontrou %3</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="18"/>
+        <source>ignored %1 after the Bezier surface&apos;s two degrees</source>
+        <translation>ignorou %1 após os dois graus da superfície de Bézier</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="19"/>
+        <source>expected the number of evaluations per direction (an integer from 2 to %1), found %2</source>
+        <translation>esperava o número de avaliações por direção (um inteiro de 2 a %1), encontrou %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="22"/>
+        <source>the header declares a Bezier surface of degrees %1 x %2, so %3 control points (one a line), but only %4</source>
+        <translation>o cabeçalho declara uma superfície de Bézier de graus %1 x %2, portanto %3 pontos de controle (um por linha), mas só %4</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="25"/>
+        <source>%1 line follows</source>
+        <translation>%1 linha vem a seguir</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="26"/>
+        <source>%1 lines follow</source>
+        <translation>%1 linhas vêm a seguir</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="27"/>
+        <source>control point (%1, %2)</source>
+        <translation>ponto de controle (%1, %2)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="28"/>
+        <source>ignored %1 after the %2 control points of the Bezier surface</source>
+        <translation>ignorou %1 após os %2 pontos de controle da superfície de Bézier</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="30"/>
+        <source>the header &apos;vertices triangles&apos; (two integers)</source>
+        <translation>o cabeçalho &apos;vértices triângulos&apos; (dois inteiros)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="31"/>
+        <source>expected %1, found the end of the file</source>
+        <translation>esperava %1, encontrou o fim do arquivo</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="32"/>
+        <source>this is an original Movie.BYU file (header &apos;parts vertices polygons edges&apos;), not the course&apos;s .byu format (header &apos;vertices triangles&apos;)</source>
+        <translation>este é um arquivo Movie.BYU original (cabeçalho &apos;partes vértices polígonos arestas&apos;), não o formato .byu do curso (cabeçalho &apos;vértices triângulos&apos;)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="35"/>
+        <source>vertices</source>
+        <translation>vértices</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="36"/>
+        <source>expected the number of triangles after the number of vertices, found the end of the line</source>
+        <translation>esperava o número de triângulos após o número de vértices, encontrou o fim da linha</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="39"/>
+        <source>triangles</source>
+        <translation>triângulos</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="40"/>
+        <source>ignored %1 after the header&apos;s two counts</source>
+        <translation>ignorou %1 após as duas contagens do cabeçalho</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="41"/>
+        <source>this looks like a course Bezier surface (degrees %1 x %2, %3 evaluations per direction), not a triangle mesh</source>
+        <translation>isto parece uma superfície de Bézier do curso (graus %1 x %2, %3 avaliações por direção), não uma malha de triângulos</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="44"/>
+        <source>the header declares %1 and %2 (%3), but only %4</source>
+        <translation>o cabeçalho declara %1 e %2 (%3), mas só %4</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="45"/>
+        <source>%1 line</source>
+        <translation>%1 linha</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="46"/>
+        <source>%1 lines</source>
+        <translation>%1 linhas</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="47"/>
+        <source>vertex %1 of %2</source>
+        <translation>vértice %1 de %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="48"/>
+        <source>triangle %1 of %2 (three vertex indices)</source>
+        <translation>triângulo %1 de %2 (três índices de vértice)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="49"/>
+        <source>expected 3 vertex indices for triangle %1 of %2, found %3</source>
+        <translation>esperava 3 índices de vértice para o triângulo %1 de %2, encontrou %3</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="50"/>
+        <source>polygon %1 has %2 vertex indices, but only triangles (3 indices) are supported</source>
+        <translation>o polígono %1 tem %2 índices de vértice, mas só triângulos (3 índices) são aceitos</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="53"/>
+        <source>expected a vertex index (a positive integer) for triangle %1, found %2</source>
+        <translation>esperava um índice de vértice (um inteiro positivo) para o triângulo %1, encontrou %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="55"/>
+        <source>triangle %1 refers to vertex %2, but indices are 1-based (1 to %3)</source>
+        <translation>o triângulo %1 se refere ao vértice %2, mas os índices começam em 1 (de 1 a %3)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="57"/>
+        <source>triangle %1 refers to vertex %2, but the file declares only %3</source>
+        <translation>o triângulo %1 se refere ao vértice %2, mas o arquivo declara só %3</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="58"/>
+        <source>ignored %1 after the declared %2 and %3 (the header&apos;s counts may be wrong, or a second object follows)</source>
+        <translation>ignorou %1 após os %2 e %3 declarados (as contagens do cabeçalho podem estar erradas, ou um segundo objeto vem a seguir)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="62"/>
+        <source>the camera position</source>
+        <translation>a posição da câmera</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="63"/>
+        <source>the view direction</source>
+        <translation>a direção de visão</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="64"/>
+        <source>the up vector</source>
+        <translation>o vetor para cima</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="65"/>
+        <source>the projection distance and half-sizes</source>
+        <translation>a distância de projeção e as metades da largura e da altura da janela</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="66"/>
+        <source>the projection distance</source>
+        <translation>a distância de projeção</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="67"/>
+        <source>the horizontal half-size of the window</source>
+        <translation>a metade da largura da janela</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="68"/>
+        <source>the vertical half-size of the window</source>
+        <translation>a metade da altura da janela</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="69"/>
+        <source>the half-sizes of the window</source>
+        <translation>as metades da largura e da altura da janela</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="70"/>
+        <source>the light position</source>
+        <translation>a posição da luz</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="71"/>
+        <source>the ambient coefficient</source>
+        <translation>o coeficiente ambiente</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="72"/>
+        <source>the ambient light colour</source>
+        <translation>a cor da luz ambiente</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="73"/>
+        <source>the diffuse coefficient</source>
+        <translation>o coeficiente difuso</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="74"/>
+        <source>the diffuse colour of the object</source>
+        <translation>a cor difusa do objeto</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="75"/>
+        <source>the specular coefficient</source>
+        <translation>o coeficiente especular</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="76"/>
+        <source>the light colour</source>
+        <translation>a cor da luz</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="77"/>
+        <source>the specular exponent</source>
+        <translation>o expoente especular</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="78"/>
+        <source>the number of lights</source>
+        <translation>o número de luzes</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="79"/>
+        <source>the diffuse coefficient of each channel</source>
+        <translation>o coeficiente difuso de cada canal</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="80"/>
+        <source>the camera&apos;s %1</source>
+        <translation>a câmera (%1)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="81"/>
+        <source>the lighting&apos;s %1</source>
+        <translation>a iluminação (%1)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="82"/>
+        <source>UFPE (C; N; V; d hx hy)</source>
+        <translation>UFPE (C; N; V; d hx hy)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="83"/>
+        <source>UFRPE (N; V; d; hx; hy; C)</source>
+        <translation>UFRPE (N; V; d; hx; hy; C)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="84"/>
+        <source>UFRPE (C; N; V; hx hy; d)</source>
+        <translation>UFRPE (C; N; V; hx hy; d)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="85"/>
+        <source>key = value</source>
+        <translation>key = value</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="86"/>
+        <source>detected from the file</source>
+        <translation>detectado pelo arquivo</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="87"/>
+        <source>UFPE (Pl; ka; Ia; kd; Od; ks; Il; n)</source>
+        <translation>UFPE (Pl; ka; Ia; kd; Od; ks; Il; n)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="88"/>
+        <source>UFPE multi-light (ka; Ia; kd; Od; ks; n; L; L times Pl; Il)</source>
+        <translation>UFPE multi-light (ka; Ia; kd; Od; ks; n; L; L vezes Pl; Il)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="89"/>
+        <source>UFRPE (Iamb; Ka; Il; Pl; Kd; Od; Ks; n)</source>
+        <translation>UFRPE (Iamb; Ka; Il; Pl; Kd; Od; Ks; n)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="90"/>
+        <source>a UFPE camera, C; N; V; d hx hy</source>
+        <translation>uma câmera UFPE, C; N; V; d hx hy</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="91"/>
+        <source>a UFRPE camera, N; V; d; hx; hy; C</source>
+        <translation>uma câmera UFRPE, N; V; d; hx; hy; C</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="92"/>
+        <source>a UFRPE camera, C; N; V; hx hy; d</source>
+        <translation>uma câmera UFRPE, C; N; V; hx hy; d</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="93"/>
+        <source>a key = value camera</source>
+        <translation>uma câmera key = value</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="94"/>
+        <source>a camera</source>
+        <translation>uma câmera</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="95"/>
+        <source>a UFPE lighting file, Pl; ka; Ia; kd; Od; ks; Il; n</source>
+        <translation>um arquivo de iluminação UFPE, Pl; ka; Ia; kd; Od; ks; Il; n</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="96"/>
+        <source>a UFPE multi-light lighting file, ka; Ia; kd; Od; ks; n; L; L times Pl; Il</source>
+        <translation>um arquivo de iluminação UFPE multi-light, ka; Ia; kd; Od; ks; n; L; L vezes Pl; Il</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="98"/>
+        <source>a UFRPE lighting file, Iamb; Ka; Il; Pl; Kd; Od; Ks; n</source>
+        <translation>um arquivo de iluminação UFRPE, Iamb; Ka; Il; Pl; Kd; Od; Ks; n</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="99"/>
+        <source>a key = value lighting file</source>
+        <translation>um arquivo de iluminação key = value</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="100"/>
+        <source>a lighting file</source>
+        <translation>um arquivo de iluminação</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="101"/>
+        <source>the 1 line has %1</source>
+        <translation>a única linha tem %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="102"/>
+        <source>the %1 lines have %2 numbers</source>
+        <translation>as %1 linhas têm %2 números</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="103"/>
+        <source>line %1 has %2 where %3 needs %4</source>
+        <translation>a linha %1 tem %2 onde %3 precisa de %4</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="104"/>
+        <source>its last line, %1, is missing</source>
+        <translation>falta a sua última linha, %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="105"/>
+        <source>line %1 is one line more</source>
+        <translation>a linha %1 é uma linha a mais</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="106"/>
+        <source>no line contains &apos;=&apos; and %1</source>
+        <translation>nenhuma linha contém &apos;=&apos; e %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="107"/>
+        <source>%1: its first %2 lines fit this layout, and the rest is left over</source>
+        <translation>%1: as suas primeiras %2 linhas se encaixam neste formato, e o resto sobra</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="109"/>
+        <source>%1, as in that layout</source>
+        <translation>%1, como nesse formato</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="110"/>
+        <source>%1: no layout fits exactly, and this one is one line away (%2)</source>
+        <translation>%1: nenhum formato se encaixa exatamente, e este fica a uma linha de distância (%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="111"/>
+        <source>one line away from %1</source>
+        <translation>a uma linha de distância de %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="112"/>
+        <source>an empty file</source>
+        <translation>um arquivo vazio</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="113"/>
+        <source>only blank lines</source>
+        <translation>só linhas em branco</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="114"/>
+        <source>1 line with %1</source>
+        <translation>1 linha com %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="115"/>
+        <source>%1 lines with %2 numbers</source>
+        <translation>%1 linhas com %2 números</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="116"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="117"/>
+        <source>lines contain &apos;=&apos;</source>
+        <translation>há linhas com &apos;=&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="118"/>
+        <source>expected %1 or key = value, found %2 (if the layout is known, choose it by hand: --camera-format / --lighting-format, or File &gt; Course File Layouts)</source>
+        <translation>esperava %1 ou key = value, encontrou %2 (se o formato é conhecido, escolha-o à mão: --camera-format / --lighting-format, ou Arquivo &gt; Formatos dos arquivos do curso)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="122"/>
+        <source>a camera in one of the layouts UFPE (C; N; V; d hx hy), UFRPE (N; V; d; hx; hy; C), UFRPE (C; N; V; hx hy; d)</source>
+        <translation>uma câmera num dos formatos UFPE (C; N; V; d hx hy), UFRPE (N; V; d; hx; hy; C), UFRPE (C; N; V; hx hy; d)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="125"/>
+        <source>lighting in one of the layouts UFPE (Pl; ka; Ia; kd; Od; ks; Il; n), UFPE multi-light (ka; Ia; kd; Od; ks; n; L; L times Pl; Il), UFRPE (Iamb; Ka; Il; Pl; Kd; Od; Ks; n)</source>
+        <translation>uma iluminação num dos formatos UFPE (Pl; ka; Ia; kd; Od; ks; Il; n), UFPE multi-light (ka; Ia; kd; Od; ks; n; L; L vezes Pl; Il), UFRPE (Iamb; Ka; Il; Pl; Kd; Od; Ks; n)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="129"/>
+        <source>expected the number of lights L (a positive whole number), found %1</source>
+        <translation>esperava o número de luzes L (um número inteiro positivo), encontrou %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="131"/>
+        <source>L = %1 lights need twice as many lines after it (Pl and Il for each), but only %2</source>
+        <translation>L = %1 luzes precisam do dobro de linhas depois dele (Pl e Il para cada uma), mas só %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="134"/>
+        <source>L = %1 lights need %2 lines after it (Pl and Il for each), but only %3</source>
+        <translation>L = %1 luzes precisam de %2 linhas depois dele (Pl e Il para cada uma), mas só %3</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="136"/>
+        <source>%1; the layout was set to %2</source>
+        <translation>%1; o formato foi definido como %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="137"/>
+        <source>%1; the layout was set to %2, but the file looks like %3 (%4)</source>
+        <translation>%1; o formato foi definido como %2, mas o arquivo parece %3 (%4)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="138"/>
+        <source>the layout was chosen, not detected</source>
+        <translation>o formato foi escolhido, não detectado</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="139"/>
+        <source>read as %1 (%2)</source>
+        <translation>lido como %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="141"/>
+        <source>%1 or %2 numbers</source>
+        <translation>%1 ou %2 números</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="142"/>
+        <source>%1 value</source>
+        <translation>%1 valor</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="143"/>
+        <source>%1 values</source>
+        <translation>%1 valores</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="144"/>
+        <source>%1 vertex</source>
+        <translation>%1 vértice</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="145"/>
+        <source>%1 vertices</source>
+        <translation>%1 vértices</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="146"/>
+        <source>%1 triangle</source>
+        <translation>%1 triângulo</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="147"/>
+        <source>%1 triangles</source>
+        <translation>%1 triângulos</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="148"/>
+        <source>%1 number</source>
+        <translation>%1 número</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="149"/>
+        <source>%1 numbers</source>
+        <translation>%1 números</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="150"/>
+        <source>%1 of light %2</source>
+        <translation>%1 da luz %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="151"/>
+        <source>found %1 (separate the values with spaces, not commas)</source>
+        <translation>encontrou %1 (separe os valores com espaços, não com vírgulas)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="152"/>
+        <source>found %1 (the decimal separator is &apos;.&apos;)</source>
+        <translation>encontrou %1 (o separador decimal é &apos;.&apos;)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="153"/>
+        <source>found %1, which is out of range</source>
+        <translation>encontrou %1, que está fora do intervalo</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="154"/>
+        <source>found %1, which is not a finite number</source>
+        <translation>encontrou %1, que não é um número finito</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="155"/>
+        <source>found %1</source>
+        <translation>encontrou %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="156"/>
+        <source>%1 and %2</source>
+        <translation>%1 e %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="157"/>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="158"/>
+        <source>expected %1, %2 (%3), found the end of the file</source>
+        <translation>esperava %1, %2 (%3), encontrou o fim do arquivo</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="159"/>
+        <source>expected a number for %1, %2</source>
+        <translation>esperava um número para %1, %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="160"/>
+        <source>expected %1 for %2, found %3</source>
+        <translation>esperava %1 para %2, encontrou %3</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="161"/>
+        <source>ignored %1 after %2</source>
+        <translation>ignorou %1 após %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="162"/>
+        <source>%1 = %2 is outside %3, the range the course gives for it</source>
+        <translation>%1 = %2 está fora de %3, o intervalo que o curso dá para ele</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="163"/>
+        <source>%1 of light %2 = %3 is outside %4, the range the course gives for it</source>
+        <translation>%1 da luz %2 = %3 está fora de %4, o intervalo que o curso dá para ele</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="165"/>
+        <source>%1 = %2 is not positive: (R.V)^n then makes no highlight (it is 1 everywhere for n = 0 and grows without bound where R.V nears 0 for n &lt; 0, where the specular term is left out)</source>
+        <translation>%1 = %2 não é positivo: assim (R.V)^n não faz brilho (vale 1 em todo lugar para n = 0 e cresce sem limite onde R.V se aproxima de 0 para n &lt; 0, caso em que o termo especular é deixado de fora)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="169"/>
+        <source>expected the number of %1 (a non-negative integer), found %2</source>
+        <translation>esperava o número de %1 (um inteiro não negativo), encontrou %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="170"/>
+        <source>expected %1, found a comment (%2), but .byu files have no comments</source>
+        <translation>esperava %1, encontrou um comentário (%2), mas arquivos .byu não têm comentários</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="172"/>
+        <source>expected a number for the %1 coordinate of %2, %3</source>
+        <translation>esperava um número para a coordenada %1 do %2, %3</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="173"/>
+        <source>%1 (x y z)</source>
+        <translation>%1 (x y z)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="174"/>
+        <source>expected 3 coordinates for %1, found %2</source>
+        <translation>esperava 3 coordenadas para o %1, encontrou %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="175"/>
+        <source>ignored extra values at the end of %1 (the first is here)</source>
+        <translation>ignorou valores a mais no fim de %1 (o primeiro está aqui)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="176"/>
+        <source>%1 vertex of %2 is not used by any triangle</source>
+        <translation>%1 vértice de %2 não é usado por nenhum triângulo</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="177"/>
+        <source>%1 vertices of %2 are not used by any triangle</source>
+        <translation>%1 vértices de %2 não são usados por nenhum triângulo</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="178"/>
+        <source>the object has no triangles</source>
+        <translation>o objeto não tem triângulos</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="180"/>
+        <source>the light position (x y z, or x y z w: w = 0 for a directional light)</source>
+        <translation>a posição da luz (x y z, ou x y z w: w = 0 para uma luz direcional)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="182"/>
+        <source>the emission of the object</source>
+        <translation>a emissão do objeto</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="183"/>
+        <source>two-sided lighting, 1 or 0</source>
+        <translation>iluminação dos dois lados, 1 ou 0</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="184"/>
+        <source>Blinn-Phong highlights, 1 or 0</source>
+        <translation>brilhos de Blinn-Phong, 1 ou 0</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="185"/>
+        <source>the attenuation kc kl kq</source>
+        <translation>a atenuação kc kl kq</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="186"/>
+        <source>the spot direction</source>
+        <translation>a direção do spot</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="187"/>
+        <source>the spot cutoff angle in degrees</source>
+        <translation>o ângulo de corte do spot em graus</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="188"/>
+        <source>the spot exponent</source>
+        <translation>o expoente do spot</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="189"/>
+        <source>%1; optionally %2</source>
+        <translation>%1; opcionalmente %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="190"/>
+        <source>%1; optionally %2; Pl2, Il2 ... for lights 2 to %3</source>
+        <translation>%1; opcionalmente %2; Pl2, Il2 ... para as luzes 2 a %3</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="191"/>
+        <source>expected &apos;key = value&apos;, found a line without &apos;=&apos; (%1 ...)</source>
+        <translation>esperava &apos;key = value&apos;, encontrou uma linha sem &apos;=&apos; (%1 ...)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="192"/>
+        <source>expected &apos;key = value&apos;, found a line without &apos;=&apos; (%1)</source>
+        <translation>esperava &apos;key = value&apos;, encontrou uma linha sem &apos;=&apos; (%1)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="193"/>
+        <source>expected a key before &apos;=&apos;, found nothing</source>
+        <translation>esperava uma chave antes de &apos;=&apos;, não encontrou nada</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="194"/>
+        <source>expected one key before &apos;=&apos;, found %1</source>
+        <translation>esperava uma chave antes de &apos;=&apos;, encontrou %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="195"/>
+        <source>ignored %1: the camera&apos;s axes come from N and V</source>
+        <translation>ignorou %1: os eixos da câmera vêm de N e V</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="196"/>
+        <source>ignored the unknown key %1 (a camera has %2; a lighting file has %3)</source>
+        <translation>ignorou a chave desconhecida %1 (uma câmera tem %2; um arquivo de iluminação tem %3)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="198"/>
+        <source>ignored the unknown key %1 (a lighting file has %2; a camera has %3)</source>
+        <translation>ignorou a chave desconhecida %1 (um arquivo de iluminação tem %2; uma câmera tem %3)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="200"/>
+        <source>expected %1 for %2, found none</source>
+        <translation>esperava %1 para %2, não encontrou nenhum</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="201"/>
+        <source>expected the camera keys %1, found none of them (only lighting file keys)</source>
+        <translation>esperava as chaves de câmera %1, não encontrou nenhuma delas (só chaves de arquivo de iluminação)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="203"/>
+        <source>expected the camera keys %1, found none of them</source>
+        <translation>esperava as chaves de câmera %1, não encontrou nenhuma delas</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="204"/>
+        <source>expected the lighting file keys %1, found none of them (only camera keys)</source>
+        <translation>esperava as chaves de arquivo de iluminação %1, não encontrou nenhuma delas (só chaves de câmera)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="206"/>
+        <source>expected the lighting file keys %1, found none of them</source>
+        <translation>esperava as chaves de arquivo de iluminação %1, não encontrou nenhuma delas</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="207"/>
+        <source>expected a line &apos;%1 = ...&apos; (%2, %3), found no %1</source>
+        <translation>esperava uma linha &apos;%1 = ...&apos; (%2, %3), não encontrou %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="208"/>
+        <source>expected lines for %1 (a camera needs %2), found none</source>
+        <translation>esperava linhas para %1 (uma câmera precisa de %2), não encontrou nenhuma</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="209"/>
+        <source>expected lines for %1 (a lighting file needs %2), found none</source>
+        <translation>esperava linhas para %1 (um arquivo de iluminação precisa de %2), não encontrou nenhuma</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="210"/>
+        <source>expected each key once, found %1 again (first given on line %2)</source>
+        <translation>esperava cada chave uma só vez, encontrou %1 de novo (dada primeiro na linha %2)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="212"/>
+        <source>expected light %1 (%2, %3) before light %4, found %5 (lights are numbered without gaps)</source>
+        <translation>esperava a luz %1 (%2, %3) antes da luz %4, encontrou %5 (as luzes são numeradas sem lacunas)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="215"/>
+        <source>expected a line &apos;%1 = ...&apos; (%2 of light %3), found %4 without it</source>
+        <translation>esperava uma linha &apos;%1 = ...&apos; (%2 da luz %3), encontrou %4 sem ela</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="217"/>
+        <source>expected 1 or 0 for %1, found %2</source>
+        <translation>esperava 1 ou 0 para %1, encontrou %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="218"/>
+        <source>expected %1 coefficients of 0 or more (kc kl kq), found %2</source>
+        <translation>esperava em %1 coeficientes de 0 ou mais (kc kl kq), encontrou %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="219"/>
+        <source>expected %1 with a coefficient above 0, found 0 0 0 (1 / 0 light)</source>
+        <translation>esperava %1 com um coeficiente acima de 0, encontrou 0 0 0 (luz 1 / 0)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="221"/>
+        <source>%1 has no effect: a directional light (w = 0) is not attenuated</source>
+        <translation>%1 não tem efeito: uma luz direcional (w = 0) não é atenuada</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="223"/>
+        <source>expected a spot direction other than 0 0 0 for %1</source>
+        <translation>esperava uma direção do spot diferente de 0 0 0 para %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="224"/>
+        <source>expected %1 from 0 to 90 degrees, or 180 (not a spot), found %2</source>
+        <translation>esperava %1 de 0 a 90 graus, ou 180 (não é spot), encontrou %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="226"/>
+        <source>%1: no %2, the spot points along -z (OpenGL&apos;s default)</source>
+        <translation>%1: sem %2, o spot aponta ao longo de -z (o padrão do OpenGL)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="227"/>
+        <source>expected %1 from 0 to 128, found %2</source>
+        <translation>esperava %1 de 0 a 128, encontrou %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="228"/>
+        <source>light %1 is not a spot without %2 (0 to 90 degrees): its spot direction and exponent are unused</source>
+        <translation>a luz %1 não é um spot sem %2 (0 a 90 graus): a direção e o expoente do spot dela não são usados</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="232"/>
+        <source>read as an original Movie.BYU file (the header has four integers: parts, vertices, polygons, edges): %1, fan-triangulated into %2</source>
+        <translation>lido como um arquivo Movie.BYU original (o cabeçalho tem quatro inteiros: partes, vértices, polígonos, arestas): %1, triangulados em leque em %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="235"/>
+        <source>read as a course Bezier surface (the header &apos;m n&apos; is followed by a line of one number, the evaluations per direction): degrees %1 x %2, evaluated on a %3 x %3 grid into %4 and %5</source>
+        <translation>lido como uma superfície de Bézier do curso (o cabeçalho &apos;m n&apos; é seguido de uma linha com um número, as avaliações por direção): graus %1 x %2, avaliada numa grade de %3 x %3 em %4 e %5</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="240"/>
+        <source>cannot write the camera: its values must be finite numbers (a course file cannot hold nan or inf)</source>
+        <translation>não é possível gravar a câmera: seus valores devem ser números finitos (um arquivo do curso não comporta nan nem inf)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="243"/>
+        <source>cannot write a camera in the layout &apos;auto&apos;: choose UFPE, UFRPE or key = value</source>
+        <translation>não é possível gravar uma câmera no formato &apos;auto&apos;: escolha UFPE, UFRPE ou key = value</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="246"/>
+        <source>an emission (Ke)</source>
+        <translation>uma emissão (Ke)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="247"/>
+        <source>one-sided lighting</source>
+        <translation>iluminação de um lado só</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="248"/>
+        <source>Blinn-Phong highlights</source>
+        <translation>brilhos de Blinn-Phong</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="249"/>
+        <source>a directional light (w = 0)</source>
+        <translation>uma luz direcional (w = 0)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="250"/>
+        <source>an attenuated light</source>
+        <translation>uma luz atenuada</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="251"/>
+        <source>a spot light</source>
+        <translation>um spot</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="252"/>
+        <source>cannot write lighting in the layout &apos;auto&apos;: choose UFPE, UFPE multi-light, UFRPE or key = value</source>
+        <translation>não é possível gravar a iluminação no formato &apos;auto&apos;: escolha UFPE, UFPE multi-light, UFRPE ou key = value</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="255"/>
+        <source>cannot write %1 light in the layout %2, which holds exactly one: choose the UFPE multi-light layout or key = value</source>
+        <translation>não é possível gravar %1 luz no formato %2, que comporta exatamente uma: escolha o formato UFPE multi-light ou key = value</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="258"/>
+        <source>cannot write %1 lights in the layout %2, which holds exactly one: choose the UFPE multi-light layout or key = value</source>
+        <translation>não é possível gravar %1 luzes no formato %2, que comporta exatamente uma: escolha o formato UFPE multi-light ou key = value</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="261"/>
+        <source>cannot write lighting without lights: the UFPE multi-light and key = value layouts hold one light or more</source>
+        <translation>não é possível gravar uma iluminação sem luzes: os formatos UFPE multi-light e key = value comportam uma luz ou mais</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="264"/>
+        <source>cannot write %1 lights in a key = value file, which holds %2 at most (Pl to %3)</source>
+        <translation>não é possível gravar %1 luzes num arquivo key = value, que comporta no máximo %2 (Pl a %3)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="267"/>
+        <source>cannot write %1 in the layout %2, which holds the course&apos;s point lights only: choose key = value</source>
+        <translation>não é possível gravar %1 no formato %2, que só comporta as luzes pontuais do curso: escolha key = value</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="270"/>
+        <source>cannot write the lighting: its values must be finite numbers (a course file cannot hold nan or inf)</source>
+        <translation>não é possível gravar a iluminação: seus valores devem ser números finitos (um arquivo do curso não comporta nan nem inf)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="273"/>
+        <source>cannot write lighting in the layout &apos;auto&apos;</source>
+        <translation>não é possível gravar a iluminação no formato &apos;auto&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="275"/>
+        <source>%1 argument</source>
+        <translation>%1 argumento</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="276"/>
+        <source>%1 arguments</source>
+        <translation>%1 argumentos</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="277"/>
+        <source>skipped %1 line with the unknown command &apos;%2&apos;</source>
+        <translation>pulou %1 linha com o comando desconhecido &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="278"/>
+        <source>skipped %1 lines with the unknown command &apos;%2&apos;</source>
+        <translation>pulou %1 linhas com o comando desconhecido &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="279"/>
+        <source>expected a &apos;png width height file&apos; command, found none</source>
+        <translation>esperava um comando &apos;png width height file&apos;, não encontrou nenhum</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="280"/>
+        <source>expected %1 number after &apos;%2&apos; (%3), found %4</source>
+        <translation>esperava %1 número após &apos;%2&apos; (%3), encontrou %4</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="281"/>
+        <source>expected %1 numbers after &apos;%2&apos; (%3), found %4</source>
+        <translation>esperava %1 números após &apos;%2&apos; (%3), encontrou %4</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="282"/>
+        <source>expected a number in &apos;%1&apos; (%2), found %3</source>
+        <translation>esperava um número em &apos;%1&apos; (%2), encontrou %3</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="283"/>
+        <source>ignored %1 value after &apos;%2&apos;</source>
+        <translation>ignorou %1 valor após &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="284"/>
+        <source>ignored %1 values after &apos;%2&apos;</source>
+        <translation>ignorou %1 valores após &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="285"/>
+        <source>expected a vertex index in &apos;%1&apos;, found %2</source>
+        <translation>esperava um índice de vértice em &apos;%1&apos;, encontrou %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="286"/>
+        <source>&apos;%1&apos; refers to vertex %2, but indices start at 1 (or count back from -1, the last)</source>
+        <translation>&apos;%1&apos; se refere ao vértice %2, mas os índices começam em 1 (ou contam de trás para a frente a partir de -1, o último)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="289"/>
+        <source>&apos;%2&apos; refers to vertex %3, but only %1 vertex is defined so far</source>
+        <translation>&apos;%2&apos; se refere ao vértice %3, mas só %1 vértice foi definido até aqui</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="290"/>
+        <source>&apos;%2&apos; refers to vertex %3, but only %1 vertices are defined so far</source>
+        <translation>&apos;%2&apos; se refere ao vértice %3, mas só %1 vértices foram definidos até aqui</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="292"/>
+        <source>expected %1 vertex index in &apos;%2&apos; (%3), found %4</source>
+        <translation>esperava %1 índice de vértice em &apos;%2&apos; (%3), encontrou %4</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="293"/>
+        <source>expected %1 vertex indices in &apos;%2&apos; (%3), found %4</source>
+        <translation>esperava %1 índices de vértice em &apos;%2&apos; (%3), encontrou %4</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="294"/>
+        <source>expected the number of subdivisions after &apos;%1&apos;, found the end of the line</source>
+        <translation>esperava o número de subdivisões após &apos;%1&apos;, encontrou o fim da linha</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="296"/>
+        <source>expected the number of subdivisions (a whole number from 1 to 10) after &apos;%1&apos;, found %2</source>
+        <translation>esperava o número de subdivisões (um número inteiro de 1 a 10) após &apos;%1&apos;, encontrou %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="299"/>
+        <source>expected a &apos;png width height file&apos; command before &apos;%1&apos;</source>
+        <translation>esperava um comando &apos;png width height file&apos; antes de &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="300"/>
+        <source>this command would bring the file to %1 triangles, more than the limit of %2 a command file may draw</source>
+        <translation>este comando levaria o arquivo a %1 triângulos, mais que o limite de %2 que um arquivo de comandos pode desenhar</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="303"/>
+        <source>expected &apos;png width height file&apos;, found %1</source>
+        <translation>esperava &apos;png width height file&apos;, encontrou %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="304"/>
+        <source>expected the image width (a whole number from 1 to 65536), found %1</source>
+        <translation>esperava a largura da imagem (um número inteiro de 1 a 65536), encontrou %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="306"/>
+        <source>expected the image height (a whole number from 1 to 65536), found %1</source>
+        <translation>esperava a altura da imagem (um número inteiro de 1 a 65536), encontrou %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="308"/>
+        <source>expected an image file name after &apos;png width height&apos;, found %1</source>
+        <translation>esperava um nome de arquivo de imagem após &apos;png width height&apos;, encontrou %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="309"/>
+        <source>the image name %1 reaches into folders: it is written as %2 in the output folder</source>
+        <translation>o nome de imagem %1 entra em pastas: ela é gravada como %2 na pasta de saída</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="312"/>
+        <source>an earlier png command (line %1) names %2 too: this image replaces it</source>
+        <translation>um comando png anterior (linha %1) também nomeia %2: esta imagem a substitui</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="314"/>
+        <source>x y z w</source>
+        <translation>x y z w</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="315"/>
+        <source>x y z</source>
+        <translation>x y z</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="316"/>
+        <source>r g b</source>
+        <translation>r g b</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="317"/>
+        <source>s t</source>
+        <translation>s t</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="318"/>
+        <source>i1 i2 i3</source>
+        <translation>i1 i2 i3</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="319"/>
+        <source>&apos;trit&apos; needs a texture: expected a &apos;texture file.png&apos; command before it</source>
+        <translation>&apos;trit&apos; precisa de uma textura: esperava um comando &apos;texture file.png&apos; antes dele</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="321"/>
+        <source>subd i1 ... i16</source>
+        <translation>subd i1 ... i16</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="322"/>
+        <source>subd i1 ... i10</source>
+        <translation>subd i1 ... i10</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="323"/>
+        <source>a11 a12 ... a44, row by row</source>
+        <translation>a11 a12 ... a44, linha por linha</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="324"/>
+        <source>l r b t n f</source>
+        <translation>l r b t n f</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="325"/>
+        <source>&apos;%1&apos; needs l != r, b != t and n != f, found %2 %3 %4 %5 %6 %7</source>
+        <translation>&apos;%1&apos; precisa de l != r, b != t e n != f, encontrou %2 %3 %4 %5 %6 %7</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="326"/>
+        <source>dx dy dz</source>
+        <translation>dx dy dz</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="327"/>
+        <source>sx sy sz</source>
+        <translation>sx sy sz</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="328"/>
+        <source>degrees</source>
+        <translation>graus</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="329"/>
+        <source>degrees x y z</source>
+        <translation>graus x y z</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="330"/>
+        <source>&apos;rotate&apos; needs an axis, found the zero vector</source>
+        <translation>&apos;rotate&apos; precisa de um eixo, encontrou o vetor nulo</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="331"/>
+        <source>eye center upx upy upz</source>
+        <translation>eye center upx upy upz</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="332"/>
+        <source>expected &apos;lookat eye center upx upy upz&apos;, found %1</source>
+        <translation>esperava &apos;lookat eye center upx upy upz&apos;, encontrou %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="333"/>
+        <source>expected a number in &apos;lookat&apos; (eye center upx upy upz), found %1</source>
+        <translation>esperava um número em &apos;lookat&apos; (eye center upx upy upz), encontrou %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="335"/>
+        <source>&apos;lookat&apos; needs an eye apart from the center and an up that is not along the line of sight</source>
+        <translation>&apos;lookat&apos; precisa de um olho afastado do centro e de um vetor para cima que não esteja ao longo da linha de visão</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="338"/>
+        <source>p1 p2 p3 p4</source>
+        <translation>p1 p2 p3 p4</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="339"/>
+        <source>expected a file name after &apos;texture&apos;, found the end of the line</source>
+        <translation>esperava um nome de arquivo após &apos;texture&apos;, encontrou o fim da linha</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="341"/>
+        <source>lx ly lz</source>
+        <translation>lx ly lz</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="342"/>
+        <source>&apos;sunlight&apos; needs a direction, found the zero vector</source>
+        <translation>&apos;sunlight&apos; precisa de uma direção, encontrou o vetor nulo</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="343"/>
+        <source>i1</source>
+        <translation>i1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="344"/>
+        <source>alpha</source>
+        <translation>alpha</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="346"/>
+        <source>parts</source>
+        <translation>partes</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="347"/>
+        <source>polygons</source>
+        <translation>polígonos</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="348"/>
+        <source>polygon indices (edges)</source>
+        <translation>índices de polígono (arestas)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="349"/>
+        <source>%1 part</source>
+        <translation>%1 parte</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="350"/>
+        <source>%1 parts</source>
+        <translation>%1 partes</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="351"/>
+        <source>%1 polygon</source>
+        <translation>%1 polígono</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="352"/>
+        <source>%1 polygons</source>
+        <translation>%1 polígonos</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="353"/>
+        <source>%1 polygon index</source>
+        <translation>%1 índice de polígono</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="354"/>
+        <source>%1 polygon indices</source>
+        <translation>%1 índices de polígono</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="355"/>
+        <source>%1, %2 and %3</source>
+        <translation>%1, %2 e %3</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="356"/>
+        <source>the header declares %1 (%2: 2 a part, 3 a vertex, 1 an index), but only %3</source>
+        <translation>o cabeçalho declara %1 (%2: 2 por parte, 3 por vértice, 1 por índice), mas só %3</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="358"/>
+        <source>more numbers than a file can hold</source>
+        <translation>mais números do que um arquivo pode conter</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="359"/>
+        <source>%1 number follows</source>
+        <translation>%1 número vem a seguir</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="360"/>
+        <source>%1 numbers follow</source>
+        <translation>%1 números vêm a seguir</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="361"/>
+        <source>the header declares %1 but only %2, fewer than the 3 each polygon needs</source>
+        <translation>o cabeçalho declara %1, mas só %2, menos que os 3 de que cada polígono precisa</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="363"/>
+        <source>the first polygon of part %1</source>
+        <translation>o primeiro polígono da parte %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="364"/>
+        <source>the last polygon of part %1</source>
+        <translation>o último polígono da parte %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="365"/>
+        <source>expected %1 (a positive integer), found %2</source>
+        <translation>esperava %1 (um inteiro positivo), encontrou %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="366"/>
+        <source>expected the polygon range of part %1 within 1 to %2, first &lt;= last, found %3 to %4</source>
+        <translation>esperava o intervalo de polígonos da parte %1 dentro de 1 a %2, primeiro &lt;= último, encontrou %3 a %4</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="369"/>
+        <source>an index of polygon %1</source>
+        <translation>um índice do polígono %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="370"/>
+        <source>expected a vertex index (a non-zero integer, negated at the end of a polygon) for polygon %1, found %2</source>
+        <translation>esperava um índice de vértice (um inteiro diferente de zero, negativo no fim de um polígono) para o polígono %1, encontrou %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="373"/>
+        <source>polygon %1 starts here, but the header declares only %2</source>
+        <translation>o polígono %1 começa aqui, mas o cabeçalho declara só %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="374"/>
+        <source>polygon %1 refers to vertex 0, but indices are 1-based (1 to %2)</source>
+        <translation>o polígono %1 se refere ao vértice 0, mas os índices começam em 1 (de 1 a %2)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="376"/>
+        <source>polygon %1 refers to vertex %2, but the file declares only %3</source>
+        <translation>o polígono %1 se refere ao vértice %2, mas o arquivo declara só %3</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="377"/>
+        <source>polygon %1 has %2, but a polygon needs at least 3</source>
+        <translation>o polígono %1 tem %2, mas um polígono precisa de pelo menos 3</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="378"/>
+        <source>expected the last index of polygon %1 to be negative (it ends the polygon), found the end of the header&apos;s %2</source>
+        <translation>esperava que o último índice do polígono %1 fosse negativo (ele termina o polígono), encontrou o fim dos %2 do cabeçalho</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="381"/>
+        <source>the header declares %1, but its %2 end only %3</source>
+        <translation>o cabeçalho declara %1, mas os seus %2 terminam só %3</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="382"/>
+        <source>ignored %1 after the declared %2 (the header&apos;s counts may be wrong, or a second object follows)</source>
+        <translation>ignorou %1 após os %2 declarados (as contagens do cabeçalho podem estar erradas, ou um segundo objeto vem a seguir)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="386"/>
+        <source>the camera&apos;s C, N and V must be finite numbers</source>
+        <translation>C, N e V da câmera devem ser números finitos</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="387"/>
+        <source>N, the view direction, is the zero vector: it must point from the camera toward the scene</source>
+        <translation>N, a direção de visão, é o vetor nulo: ele deve apontar da câmera para a cena</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="390"/>
+        <source>V, the up vector, is the zero vector: it must say which way is up</source>
+        <translation>V, o vetor para cima, é o vetor nulo: ele deve dizer para que lado fica o alto</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="392"/>
+        <source>d, the distance to the projection plane, is 0: the projection (d/hx) x/z would squash every point to the centre</source>
+        <translation>d, a distância ao plano de projeção, é 0: a projeção (d/hx) x/z esmagaria todo ponto no centro</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="395"/>
+        <source>hx, the horizontal half-size of the window, is 0: the projection (d/hx) x/z divides by it</source>
+        <translation>hx, a metade da largura da janela, é 0: a projeção (d/hx) x/z divide por ele</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="398"/>
+        <source>hy, the vertical half-size of the window, is 0: the projection (d/hy) y/z divides by it</source>
+        <translation>hy, a metade da altura da janela, é 0: a projeção (d/hy) y/z divide por ele</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="401"/>
+        <source>V %1 is parallel to N %2: Gram-Schmidt leaves nothing of V, so &apos;up&apos; is undefined; choose a V that is not along N</source>
+        <translation>V %1 é paralelo a N %2: Gram-Schmidt não deixa nada de V, então o &quot;para cima&quot; fica indefinido; escolha um V que não esteja ao longo de N</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="404"/>
+        <source>hx is negative: the image is mirrored left to right</source>
+        <translation>hx é negativo: a imagem é espelhada da esquerda para a direita</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="405"/>
+        <source>hy is negative: the image is mirrored top to bottom</source>
+        <translation>hy é negativo: a imagem é espelhada de cima para baixo</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="406"/>
+        <source>d is negative: the image is turned upside down and mirrored</source>
+        <translation>d é negativo: a imagem fica de cabeça para baixo e espelhada</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="408"/>
+        <source>the near plane z = %1 and the clip planes</source>
+        <translation>o plano próximo z = %1 e os planos de recorte</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="409"/>
+        <source>the near plane z = %1</source>
+        <translation>o plano próximo z = %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="410"/>
+        <source>%1 lies wholly behind the near plane</source>
+        <translation>%1 inteiramente atrás do plano próximo</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="411"/>
+        <source>%1 lie wholly behind the near plane</source>
+        <translation>%1 inteiramente atrás do plano próximo</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="412"/>
+        <source>%1 and %2 wholly outside a clip plane</source>
+        <translation>%1 e %2 inteiramente fora de um plano de recorte</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="413"/>
+        <source>the clip planes or the guard band 2^28 pixels around the image</source>
+        <translation>os planos de recorte ou a banda de guarda de 2^28 pixels em torno da imagem</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="414"/>
+        <source>the guard band 2^28 pixels around the image</source>
+        <translation>a banda de guarda de 2^28 pixels em torno da imagem</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="415"/>
+        <source>%1 lie wholly outside a clip plane</source>
+        <translation>%1 inteiramente fora de um plano de recorte</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="416"/>
+        <source>%1 triangle was clipped against %2</source>
+        <translation>%1 triângulo foi recortado contra %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="417"/>
+        <source>%1 triangles were clipped against %2</source>
+        <translation>%1 triângulos foram recortados contra %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="418"/>
+        <source>%1; %2, not drawn</source>
+        <translation>%1; não desenhados: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="419"/>
+        <source>every triangle is behind the camera (is N pointing away from the object?): the image is empty</source>
+        <translation>todos os triângulos estão atrás da câmera (N aponta para longe do objeto?): a imagem está vazia</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="422"/>
+        <source>%1. The plain divide of seed 000, x/z and y/z with z &lt; 0, would draw it: the object&apos;s point reflection through the eye (turned half a turn on the screen), where the z-buffer, keeping the smallest z, keeps the side farthest from the camera</source>
+        <translation>%1. A divisão simples da seed 000, x/z e y/z com z &lt; 0, o desenharia: a reflexão do objeto pelo olho (girada meia volta na tela), em que o z-buffer, que guarda o menor z, guarda o lado mais distante da câmera</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="427"/>
+        <source>%1. The plain divide of seed 000, x/z and y/z with z &lt; 0, would draw all %2 of them: the object&apos;s point reflection through the eye (turned half a turn on the screen), where the z-buffer, keeping the smallest z, keeps the side farthest from the camera</source>
+        <translation>%1. A divisão simples da seed 000, x/z e y/z com z &lt; 0, desenharia todos os %2: a reflexão do objeto pelo olho (girada meia volta na tela), em que o z-buffer, que guarda o menor z, guarda o lado mais distante da câmera</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="432"/>
+        <source>%1. The plain divide of seed 000, x/z and y/z with z &lt; 0, would draw %2 of them: the object&apos;s point reflection through the eye (turned half a turn on the screen), where the z-buffer, keeping the smallest z, keeps the side farthest from the camera</source>
+        <translation>%1. A divisão simples da seed 000, x/z e y/z com z &lt; 0, desenharia %2 deles: a reflexão do objeto pelo olho (girada meia volta na tela), em que o z-buffer, que guarda o menor z, guarda o lado mais distante da câmera</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="437"/>
+        <source>plain divide: %1 triangle reaches from in front of the eye to at or behind it (w of different signs, or 0): divided by w without clipping, it wraps through infinity and is drawn wrong (clipping at the near plane draws its front part)</source>
+        <translation>divisão simples: %1 triângulo vai da frente do olho até o olho ou atrás dele (w de sinais diferentes, ou 0): dividido por w sem recorte, ele dá a volta pelo infinito e é desenhado errado (o recorte no plano próximo desenha a sua parte da frente)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="442"/>
+        <source>plain divide: %1 triangles reach from in front of the eye to at or behind it (w of different signs, or 0): divided by w without clipping, it wraps through infinity and is drawn wrong (clipping at the near plane draws its front part)</source>
+        <translation>divisão simples: %1 triângulos vão da frente do olho até o olho ou atrás dele (w de sinais diferentes, ou 0): divididos por w sem recorte, eles dão a volta pelo infinito e são desenhados errados (o recorte no plano próximo desenha a sua parte da frente)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="447"/>
+        <source>%1 vertices project more than 2^28 pixels from the image and were pulled in to that distance: triangles through them may be distorted on screen</source>
+        <translation>%1 vértices se projetam a mais de 2^28 pixels da imagem e foram trazidos para essa distância: os triângulos que passam por eles podem ficar distorcidos na tela</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="450"/>
+        <source>%1 triangles project to infinite or undefined coordinates and were not drawn</source>
+        <translation>%1 triângulos se projetam em coordenadas infinitas ou indefinidas e não foram desenhados</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="453"/>
+        <source>%1 triangle faces away from the camera on a closed surface seen from outside: hidden, so not drawn (back-face culling)</source>
+        <translation>%1 triângulo está de costas para a câmera numa superfície fechada vista de fora: oculto, portanto não desenhado (eliminação de faces traseiras)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="456"/>
+        <source>%1 triangles face away from the camera on a closed surface seen from outside: hidden, so not drawn (back-face culling)</source>
+        <translation>%1 triângulos estão de costas para a câmera numa superfície fechada vista de fora: ocultos, portanto não desenhados (eliminação de faces traseiras)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="459"/>
+        <source>%1 triangle is clockwise on screen and culled</source>
+        <translation>%1 triângulo está no sentido horário na tela e é descartado</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="460"/>
+        <source>%1 triangles are clockwise on screen and culled</source>
+        <translation>%1 triângulos estão no sentido horário na tela e são descartados</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="461"/>
+        <source>%1 triangle reaches from in front of the eye to at or behind it (w of different signs): only the part with w &gt;= %2 is drawn</source>
+        <translation>%1 triângulo vai da frente do olho até o olho ou atrás dele (w de sinais diferentes): só a parte com w &gt;= %2 é desenhada</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="464"/>
+        <source>%1 triangles reach from in front of the eye to at or behind it (w of different signs): only the part with w &gt;= %2 is drawn</source>
+        <translation>%1 triângulos vão da frente do olho até o olho ou atrás dele (w de sinais diferentes): só a parte com w &gt;= %2 é desenhada</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="467"/>
+        <source>plain divide: %1 triangle lies wholly behind the eye (w &lt; 0), drawn without clipping as the point reflection through the eye</source>
+        <translation>divisão simples: %1 triângulo está inteiramente atrás do olho (w &lt; 0) e é desenhado sem recorte como a reflexão pelo olho</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="470"/>
+        <source>plain divide: %1 triangles lie wholly behind the eye (w &lt; 0), drawn without clipping as the point reflection through the eye</source>
+        <translation>divisão simples: %1 triângulos estão inteiramente atrás do olho (w &lt; 0) e são desenhados sem recorte como a reflexão pelo olho</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="474"/>
+        <source>no scene to render</source>
+        <translation>não há cena para renderizar</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="475"/>
+        <source>the image size %1x%2 is empty</source>
+        <translation>o tamanho de imagem %1x%2 é vazio</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="476"/>
+        <source>no triangle covers a pixel: all %1 triangles in front of the camera project outside the image (check N, d, hx and hy)</source>
+        <translation>nenhum triângulo cobre um pixel: todos os %1 triângulos à frente da câmera se projetam fora da imagem (verifique N, d, hx e hy)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="479"/>
+        <source>%1 triangles have zero area and no normal</source>
+        <translation>%1 triângulos têm área zero e nenhuma normal</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="481"/>
+        <source>no frame to step through</source>
+        <translation>não há quadro para percorrer passo a passo</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="482"/>
+        <source>stepping keeps at most %1 fragments, and this frame has %2: the final image and the views still work</source>
+        <translation>o passo a passo guarda no máximo %1 fragmentos, e este quadro tem %2: a imagem final e as vistas continuam funcionando</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="485"/>
+        <source>cancelled</source>
+        <translation>cancelado</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="486"/>
+        <source>internal error: the rows hold %1 pixels and the depth test saw %2 fragments</source>
+        <translation>erro interno: as linhas contêm %1 pixels e o teste de profundidade viu %2 fragmentos</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="490"/>
+        <source>measurement cancelled</source>
+        <translation>medição cancelada</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="491"/>
+        <source>supersampling must be 1 to 16 samples per axis</source>
+        <translation>a superamostragem deve ser de 1 a 16 amostras por eixo</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="493"/>
+        <source>the exact reference handles course scenes (the course camera, view z as depth, the course&apos;s Phong lighting with the material&apos;s colour); %1</source>
+        <translation>a referência exata trata cenas do curso (a câmera do curso, o z de vista como profundidade, a iluminação de Phong do curso com a cor do material); %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="496"/>
+        <source>this scene has no course camera</source>
+        <translation>esta cena não tem câmera do curso</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="497"/>
+        <source>this scene&apos;s depth is NDC z</source>
+        <translation>a profundidade desta cena é o z em NDC</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="498"/>
+        <source>%1 has its own projection matrix</source>
+        <translation>%1 tem a sua própria matriz de projeção</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="499"/>
+        <source>%1 is not lit by the course&apos;s Phong model</source>
+        <translation>%1 não é iluminado pelo modelo de Phong do curso</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="500"/>
+        <source>%1 takes its colour from its vertices or a texture</source>
+        <translation>%1 tira a sua cor dos vértices ou de uma textura</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="501"/>
+        <source>%1 is lit with flat normals</source>
+        <translation>%1 é iluminado com normais flat</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="502"/>
+        <source>samples per axis must be 1 to 16</source>
+        <translation>as amostras por eixo devem ser de 1 a 16</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="504"/>
+        <source>cannot read the texture %1: %2</source>
+        <translation>não é possível ler a textura %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="506"/>
+        <source>cannot open: %1</source>
+        <translation>não é possível abrir: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="507"/>
+        <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
+        <translation>o arquivo tem %1 MiB, mais que os %2 MiB que um arquivo de entrada pode ter</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="509"/>
+        <source>the file has more than the %1 MiB an input file may have</source>
+        <translation>o arquivo tem mais que os %1 MiB que um arquivo de entrada pode ter</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="511"/>
+        <source>not enough memory to read this file</source>
+        <translation>não há memória suficiente para ler este arquivo</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="512"/>
+        <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
+        <translation>os arquivos da cena embutida não podem ser gravados: salve-a num arquivo seu (Salvar como)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="515"/>
+        <source>the object is not edited, so not saved</source>
+        <translation>o objeto não é editado, então não é salvo</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="516"/>
+        <source>cannot write into the built-in resources</source>
+        <translation>não é possível gravar nos recursos embutidos</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="517"/>
+        <source>the camera was not saved, as it would not load again: %1</source>
+        <translation>a câmera não foi salva, pois não carregaria de novo: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="518"/>
+        <source>not saved: the text written does not read back as the same values</source>
+        <translation>não salvo: o texto gravado não é lido de volta com os mesmos valores</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="520"/>
+        <source>cannot write the file: %1</source>
+        <translation>não é possível gravar o arquivo: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="521"/>
+        <source>only %1 of %2 bytes could be written (is the disk full?)</source>
+        <translation>só %1 de %2 bytes puderam ser gravados (o disco está cheio?)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="522"/>
+        <source>cannot write the file (it is left as it was): %1</source>
+        <translation>não é possível gravar o arquivo (ele fica como estava): %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="557"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="563"/>
+        <source>%1: warning: %2</source>
+        <translation>%1: aviso: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="564"/>
+        <source>%1: note: %2</source>
+        <translation>%1: nota: %2</translation>
+    </message>
+</context>
+<context>
     <name>rasterlab::AccuracyPanel</name>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="40"/>
+        <location filename="../app/accuracy_panel.cpp" line="41"/>
         <source>&amp;Measure</source>
         <translation>&amp;Medir</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="43"/>
+        <location filename="../app/accuracy_panel.cpp" line="44"/>
         <source>Render the scene in every mode and compare each with an exact ray-cast reference</source>
         <translation>Renderiza a cena em cada modo e compara cada um com uma referência exata por lançamento de raios</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="45"/>
+        <location filename="../app/accuracy_panel.cpp" line="46"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="50"/>
+        <location filename="../app/accuracy_panel.cpp" line="51"/>
         <source>1 sample a pixel</source>
         <translation>1 amostra por pixel</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="51"/>
+        <location filename="../app/accuracy_panel.cpp" line="52"/>
         <source>also 2x2 samples</source>
         <translation>também 2x2 amostras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="52"/>
+        <location filename="../app/accuracy_panel.cpp" line="53"/>
         <source>also 4x4 samples</source>
         <translation>também 4x4 amostras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="57"/>
+        <location filename="../app/accuracy_panel.cpp" line="58"/>
         <source>Measures the error of each mode against an exact reference.</source>
         <translation>Mede o erro de cada modo contra uma referência exata.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="64"/>
+        <location filename="../app/accuracy_panel.cpp" line="65"/>
         <source>Mode</source>
         <translation>Modo</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="64"/>
+        <location filename="../app/accuracy_panel.cpp" line="65"/>
         <source>Rules</source>
         <translation>Regras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="64"/>
+        <location filename="../app/accuracy_panel.cpp" line="65"/>
         <source>Precision</source>
         <translation>Precisão</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="64"/>
+        <location filename="../app/accuracy_panel.cpp" line="65"/>
         <source>Samples</source>
         <translation>Amostras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="65"/>
+        <location filename="../app/accuracy_panel.cpp" line="66"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="65"/>
+        <location filename="../app/accuracy_panel.cpp" line="66"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="65"/>
+        <location filename="../app/accuracy_panel.cpp" line="66"/>
         <source>Max error</source>
         <translation>Erro máximo</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="65"/>
+        <location filename="../app/accuracy_panel.cpp" line="66"/>
         <source>Within 1/255</source>
         <translation>Dentro de 1/255</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="66"/>
+        <location filename="../app/accuracy_panel.cpp" line="67"/>
         <source>Errors in byte steps (1/255) over the pixels both images cover</source>
         <translation>Erros em passos de byte (1/255) nos pixels que as duas imagens cobrem</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="90"/>
+        <location filename="../app/accuracy_panel.cpp" line="91"/>
         <source>Click a pixel to compare the mode with the reference there</source>
         <translation>Clique num pixel para comparar ali o modo com a referência</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="123"/>
+        <location filename="../app/accuracy_panel.cpp" line="124"/>
         <source>The scene changed: measure again.</source>
         <translation>A cena mudou: meça de novo.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/accuracy_panel.cpp" line="145"/>
+        <location filename="../app/accuracy_panel.cpp" line="146"/>
         <source>Measuring %n mode(s) against the exact reference...</source>
         <translation>
             <numerusform>Medindo %n modo contra a referência exata...</numerusform>
@@ -160,37 +1896,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="180"/>
+        <location filename="../app/accuracy_panel.cpp" line="181"/>
         <source>Cancelled.</source>
         <translation>Cancelado.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="181"/>
+        <location filename="../app/accuracy_panel.cpp" line="182"/>
         <source>The measurement failed: %1</source>
         <translation>A medição falhou: %1</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="187"/>
+        <location filename="../app/accuracy_panel.cpp" line="188"/>
         <source>%1 at %2x%3: %4 modes; the exact reference cast %5 rays in %6 ms.</source>
         <translation>%1 em %2x%3: %4 modos; a referência exata lançou %5 raios em %6 ms.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="214"/>
+        <location filename="../app/accuracy_panel.cpp" line="215"/>
         <source>Error against run time: %1, %2x%3</source>
         <translation>Erro contra tempo de execução: %1, %2x%3</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="261"/>
+        <location filename="../app/accuracy_panel.cpp" line="262"/>
         <source>%1 (%2): coverage differs on %3 pixels (%4); the largest error, %5 byte steps, is at (%6, %7). Click the map to compare a pixel.</source>
         <translation>%1 (%2): a cobertura difere em %3 pixels (%4); o maior erro, %5 passos de byte, está em (%6, %7). Clique no mapa para comparar um pixel.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="280"/>
+        <location filename="../app/accuracy_panel.cpp" line="281"/>
         <source>Pixel (%1, %2), %3: mode %4, reference %5, difference %6 (byte steps).</source>
         <translation>Pixel (%1, %2), %3: modo %4, referência %5, diferença %6 (passos de byte).</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="286"/>
+        <location filename="../app/accuracy_panel.cpp" line="287"/>
         <source>Coverage differs: %1 of %2 samples covered by the mode, %3 by the reference.</source>
         <translation>A cobertura difere: %1 de %2 amostras cobertas pelo modo, %3 pela referência.</translation>
     </message>
@@ -572,403 +2308,413 @@
 <context>
     <name>rasterlab::EditPanel</name>
     <message>
-        <location filename="../app/edit_panel.cpp" line="216"/>
+        <location filename="../app/edit_panel.cpp" line="218"/>
         <source>One kd for the three channels (the UFPE files have one number): changing one changes all three</source>
         <translation>Um só kd para os três canais (os arquivos da UFPE têm um só número): mudar um muda os três</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="257"/>
+        <location filename="../app/edit_panel.cpp" line="259"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="257"/>
+        <location filename="../app/edit_panel.cpp" line="259"/>
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="257"/>
+        <location filename="../app/edit_panel.cpp" line="259"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="260"/>
-        <location filename="../app/edit_panel.cpp" line="692"/>
+        <location filename="../app/edit_panel.cpp" line="262"/>
+        <location filename="../app/edit_panel.cpp" line="698"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="262"/>
+        <location filename="../app/edit_panel.cpp" line="264"/>
         <source>C: the camera&apos;s position (world)</source>
         <translation>C: a posição da câmera (mundo)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="265"/>
+        <location filename="../app/edit_panel.cpp" line="267"/>
         <source>N: the view direction (normalised by the camera basis)</source>
         <translation>N: a direção de visão (normalizada pela base da câmera)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="267"/>
+        <location filename="../app/edit_panel.cpp" line="269"/>
         <source>V: the up vector (made orthogonal to N by Gram-Schmidt)</source>
         <translation>V: o vetor para cima (tornado ortogonal a N por Gram-Schmidt)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="269"/>
+        <location filename="../app/edit_panel.cpp" line="271"/>
         <source>d: the distance from C to the projection plane</source>
         <translation>d: a distância de C ao plano de projeção</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="271"/>
+        <location filename="../app/edit_panel.cpp" line="273"/>
         <source>hx: half the width of the window on the projection plane</source>
         <translation>hx: metade da largura da janela no plano de projeção</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="273"/>
+        <location filename="../app/edit_panel.cpp" line="275"/>
         <source>hy: half the height of the window on the projection plane</source>
         <translation>hy: metade da altura da janela no plano de projeção</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="277"/>
+        <location filename="../app/edit_panel.cpp" line="279"/>
         <source>Light</source>
         <translation>Luz</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="280"/>
+        <location filename="../app/edit_panel.cpp" line="282"/>
         <source>The light whose values are shown</source>
         <translation>A luz cujos valores são mostrados</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="286"/>
+        <location filename="../app/edit_panel.cpp" line="288"/>
         <source>Add a light: a copy of the light shown</source>
         <translation>Adiciona uma luz: uma cópia da luz mostrada</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="291"/>
+        <location filename="../app/edit_panel.cpp" line="293"/>
         <source>Remove the light shown (the scene keeps one light at least)</source>
         <translation>Remove a luz mostrada (a cena mantém pelo menos uma luz)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="300"/>
+        <location filename="../app/edit_panel.cpp" line="302"/>
         <source>Pl: the light&apos;s position (world), or the direction toward it for a directional light</source>
         <translation>Pl: a posição da luz (mundo), ou a direção até ela, no caso de uma luz direcional</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="303"/>
+        <location filename="../app/edit_panel.cpp" line="305"/>
         <source>Directional (w = 0)</source>
         <translation>Direcional (w = 0)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="304"/>
+        <location filename="../app/edit_panel.cpp" line="306"/>
         <source>A directional light is infinitely far: L is the same everywhere and it is not attenuated</source>
         <translation>Uma luz direcional está infinitamente distante: L é o mesmo em todo lugar e ela não é atenuada</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="308"/>
+        <location filename="../app/edit_panel.cpp" line="310"/>
         <source>Il: the light&apos;s colour, 0 to 255 per channel</source>
         <translation>Il: a cor da luz, de 0 a 255 por canal</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="312"/>
+        <location filename="../app/edit_panel.cpp" line="314"/>
         <source>att</source>
         <translation>att</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="313"/>
+        <location filename="../app/edit_panel.cpp" line="315"/>
         <source>Attenuation: the light&apos;s diffuse and specular terms are divided by kc + kl d + kq d², d its distance to the point (1 0 0: none)</source>
         <translation>Atenuação: os termos difuso e especular da luz são divididos por kc + kl d + kq d², sendo d a sua distância ao ponto (1 0 0: nenhuma)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="316"/>
+        <location filename="../app/edit_panel.cpp" line="318"/>
         <source>Spot</source>
         <translation>Spot</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="317"/>
+        <location filename="../app/edit_panel.cpp" line="319"/>
         <source>A spot lights only the points within its cutoff angle of its direction</source>
         <translation>Um spot ilumina só os pontos que estão dentro do seu ângulo de corte em torno da sua direção</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="320"/>
+        <location filename="../app/edit_panel.cpp" line="322"/>
         <source>D: the direction the spot points to (world)</source>
         <translation>D: a direção para onde o spot aponta (mundo)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="321"/>
+        <location filename="../app/edit_panel.cpp" line="323"/>
         <source>cut</source>
         <translation>corte</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="322"/>
+        <location filename="../app/edit_panel.cpp" line="324"/>
         <source>The spot&apos;s cutoff angle, 0 to 90 degrees</source>
         <translation>O ângulo de corte do spot, de 0 a 90 graus</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="323"/>
+        <location filename="../app/edit_panel.cpp" line="325"/>
         <source>exp</source>
         <translation>exp</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="324"/>
+        <location filename="../app/edit_panel.cpp" line="326"/>
         <source>The spot&apos;s exponent: its light falls off as (-L.D)^exp toward the edge</source>
         <translation>O expoente do spot: sua luz diminui como (-L.D)^exp em direção à borda</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="328"/>
+        <location filename="../app/edit_panel.cpp" line="330"/>
         <source>Ambient</source>
         <translation>Ambiente</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="331"/>
+        <location filename="../app/edit_panel.cpp" line="333"/>
         <source>Ia: the ambient light&apos;s colour, 0 to 255 per channel</source>
         <translation>Ia: a cor da luz ambiente, de 0 a 255 por canal</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="333"/>
+        <location filename="../app/edit_panel.cpp" line="335"/>
         <source>ka: the ambient coefficient, 0 to 1</source>
         <translation>ka: o coeficiente ambiente, de 0 a 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="336"/>
+        <location filename="../app/edit_panel.cpp" line="338"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="339"/>
+        <location filename="../app/edit_panel.cpp" line="341"/>
         <source>kd: the diffuse coefficient of each channel, 0 to 1</source>
         <translation>kd: o coeficiente difuso de cada canal, de 0 a 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="342"/>
+        <location filename="../app/edit_panel.cpp" line="344"/>
         <source>Od: the object&apos;s diffuse colour, 0 to 1 per channel</source>
         <translation>Od: a cor difusa do objeto, de 0 a 1 por canal</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="344"/>
+        <location filename="../app/edit_panel.cpp" line="346"/>
         <source>Ke: the light the object gives off by itself, 0 to 255 per channel (added to every lit point)</source>
         <translation>Ke: a luz que o objeto emite por si mesmo, de 0 a 255 por canal (somada a todo ponto iluminado)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="348"/>
+        <location filename="../app/edit_panel.cpp" line="350"/>
         <source>ks: the specular coefficient, 0 to 1</source>
         <translation>ks: o coeficiente especular, de 0 a 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="350"/>
+        <location filename="../app/edit_panel.cpp" line="352"/>
         <source>n: the specular exponent (larger: a smaller, sharper highlight)</source>
         <translation>n: o expoente especular (maior: um brilho menor e mais nítido)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="354"/>
+        <location filename="../app/edit_panel.cpp" line="356"/>
         <source>Shading</source>
         <translation>Sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="357"/>
+        <location filename="../app/edit_panel.cpp" line="359"/>
         <source>Phong (per pixel)</source>
         <translation>Phong (por pixel)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="358"/>
+        <location filename="../app/edit_panel.cpp" line="360"/>
         <source>Gouraud (per vertex)</source>
         <translation>Gouraud (por vértice)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="359"/>
+        <location filename="../app/edit_panel.cpp" line="361"/>
         <source>Flat (per triangle)</source>
         <translation>Flat (por triângulo)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="360"/>
+        <location filename="../app/edit_panel.cpp" line="362"/>
         <source>Painter&apos;s algorithm (flat, no depth test)</source>
         <translation>Algoritmo do pintor (flat, sem teste de profundidade)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="364"/>
+        <location filename="../app/edit_panel.cpp" line="366"/>
         <source>Two-sided lighting</source>
         <translation>Iluminação dos dois lados</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="365"/>
+        <location filename="../app/edit_panel.cpp" line="367"/>
         <source>On (the course&apos;s rule): where V.N &lt; 0 the normal is turned round, so the back of a surface is lit like its front. Off: one-sided, the back keeps a normal pointing away</source>
         <translation>Ligada (a regra do curso): onde V.N &lt; 0 a normal é invertida, então o verso de uma superfície é iluminado como a frente. Desligada: um lado só, o verso mantém uma normal que aponta para longe</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="368"/>
+        <location filename="../app/edit_panel.cpp" line="370"/>
         <source>Blinn-Phong highlight</source>
         <translation>Brilho de Blinn-Phong</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="369"/>
+        <location filename="../app/edit_panel.cpp" line="371"/>
         <source>The highlight with the half vector H = (L + V)/|L + V| instead of Phong&apos;s reflection R: (N.H)^n instead of (R.V)^n</source>
         <translation>O brilho com o vetor médio H = (L + V)/|L + V| em vez da reflexão R de Phong: (N.H)^n em vez de (R.V)^n</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="433"/>
+        <location filename="../app/edit_panel.cpp" line="435"/>
         <source>Add light %1</source>
         <translation>adição da luz %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="440"/>
+        <location filename="../app/edit_panel.cpp" line="442"/>
         <source>Remove light %1</source>
         <translation>remoção da luz %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="465"/>
+        <location filename="../app/edit_panel.cpp" line="467"/>
         <source>&amp;Undo</source>
         <translation>&amp;Desfazer</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="468"/>
+        <location filename="../app/edit_panel.cpp" line="470"/>
         <source>&amp;Redo</source>
         <translation>&amp;Refazer</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="472"/>
+        <location filename="../app/edit_panel.cpp" line="474"/>
         <source>&amp;Save Camera and Lighting</source>
         <translation>&amp;Salvar câmera e iluminação</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="475"/>
+        <location filename="../app/edit_panel.cpp" line="477"/>
         <source>Write the edited camera and lighting to their files</source>
         <translation>Grava a câmera e a iluminação editadas nos seus arquivos</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="481"/>
+        <location filename="../app/edit_panel.cpp" line="483"/>
         <source>&amp;Camera...</source>
         <translation>&amp;Câmera...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="483"/>
+        <location filename="../app/edit_panel.cpp" line="485"/>
         <source>&amp;Lighting...</source>
         <translation>&amp;Iluminação...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="486"/>
+        <location filename="../app/edit_panel.cpp" line="488"/>
         <source>Save &amp;As</source>
         <translation>Sal&amp;var como</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="528"/>
+        <location filename="../app/edit_panel.cpp" line="530"/>
         <source>Light %1 of %2</source>
         <translation>Luz %1 de %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="609"/>
+        <location filename="../app/edit_panel.cpp" line="611"/>
         <source>Change %1</source>
         <translation>alteração de %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="678"/>
+        <location filename="../app/edit_panel.cpp" line="680"/>
         <source>A command file is shown: its scene is not edited here.</source>
         <translation>Um arquivo de comandos está aberto: sua cena não é editada aqui.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="684"/>
+        <location filename="../app/edit_panel.cpp" line="686"/>
+        <source>%1 of the %2 example</source>
+        <translation>%1 do exemplo %2</translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="690"/>
         <source>built-in scene</source>
         <translation>cena embutida</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="688"/>
+        <location filename="../app/edit_panel.cpp" line="694"/>
         <source>modified</source>
         <translation>modificada</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="694"/>
+        <location filename="../app/edit_panel.cpp" line="700"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="704"/>
+        <location filename="../app/edit_panel.cpp" line="710"/>
         <source>shading</source>
         <translation>sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="706"/>
+        <location filename="../app/edit_panel.cpp" line="712"/>
         <source>two-sided lighting</source>
         <translation>iluminação dos dois lados</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="708"/>
+        <location filename="../app/edit_panel.cpp" line="714"/>
         <source>the highlight&apos;s model</source>
         <translation>modelo do brilho</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="710"/>
+        <location filename="../app/edit_panel.cpp" line="716"/>
         <source>directional</source>
         <translation>direcional</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="713"/>
+        <location filename="../app/edit_panel.cpp" line="719"/>
         <source>spot cutoff</source>
         <translation>corte do spot</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="716"/>
+        <location filename="../app/edit_panel.cpp" line="722"/>
         <source>spot exponent</source>
         <translation>expoente do spot</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="719"/>
+        <location filename="../app/edit_panel.cpp" line="725"/>
         <source>spot direction</source>
         <translation>direção do spot</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="722"/>
+        <location filename="../app/edit_panel.cpp" line="728"/>
         <source>attenuation</source>
         <translation>atenuação</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="732"/>
+        <location filename="../app/edit_panel.cpp" line="738"/>
         <source>%1 of light %2</source>
         <translation>%1 da luz %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="741"/>
+        <location filename="../app/edit_panel.cpp" line="747"/>
         <source>The camera was not saved.</source>
         <translation>A câmera não foi salva.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="741"/>
+        <location filename="../app/edit_panel.cpp" line="747"/>
         <source>The lighting was not saved.</source>
         <translation>A iluminação não foi salva.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="817"/>
+        <location filename="../app/edit_panel.cpp" line="820"/>
+        <source>the %1 example</source>
+        <translation>o exemplo %1</translation>
+    </message>
+    <message>
+        <location filename="../app/edit_panel.cpp" line="825"/>
         <source>The camera has changes that are not saved (%1).</source>
         <translation>A câmera tem alterações não salvas (%1).</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="818"/>
+        <location filename="../app/edit_panel.cpp" line="826"/>
         <source>The lighting has changes that are not saved (%1).</source>
         <translation>A iluminação tem alterações não salvas (%1).</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="740"/>
+        <location filename="../app/edit_panel.cpp" line="746"/>
         <source>Save</source>
         <translation>Salvar</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="796"/>
+        <location filename="../app/edit_panel.cpp" line="802"/>
         <source>Save Camera As</source>
         <translation>Salvar câmera como</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="796"/>
+        <location filename="../app/edit_panel.cpp" line="802"/>
         <source>Save Lighting As</source>
         <translation>Salvar iluminação como</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="814"/>
+        <location filename="../app/edit_panel.cpp" line="822"/>
         <source>the built-in scene</source>
         <translation>a cena embutida</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="816"/>
+        <location filename="../app/edit_panel.cpp" line="824"/>
         <source>Unsaved changes</source>
         <translation>Alterações não salvas</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="823"/>
+        <location filename="../app/edit_panel.cpp" line="831"/>
         <source>Save them?</source>
         <translation>Salvá-las?</translation>
     </message>
@@ -1015,959 +2761,997 @@
 <context>
     <name>rasterlab::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="56"/>
+        <location filename="../app/main_window.cpp" line="61"/>
         <source>Open Camera</source>
         <translation>Abrir câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="58"/>
+        <location filename="../app/main_window.cpp" line="63"/>
         <source>Open Lighting</source>
         <translation>Abrir iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="60"/>
+        <location filename="../app/main_window.cpp" line="65"/>
         <source>Open Object</source>
         <translation>Abrir objeto</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="68"/>
+        <location filename="../app/main_window.cpp" line="73"/>
         <source>Camera files (*.cfg *.txt);;All files (*)</source>
         <translation>Arquivos de câmera (*.cfg *.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="70"/>
+        <location filename="../app/main_window.cpp" line="75"/>
         <source>Lighting files (*.txt *.lux);;All files (*)</source>
         <translation>Arquivos de iluminação (*.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="72"/>
+        <location filename="../app/main_window.cpp" line="77"/>
         <source>Objects (*.byu *.txt);;All files (*)</source>
         <translation>Objetos (*.byu *.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="26"/>
+        <location filename="../app/main_window_actions.cpp" line="27"/>
         <source>Detect from the file</source>
         <translation>Detectar pelo arquivo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="81"/>
+        <location filename="../app/main_window.cpp" line="86"/>
         <source>flat</source>
         <translation>flat</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="83"/>
+        <location filename="../app/main_window.cpp" line="88"/>
+        <location filename="../app/main_window_export.cpp" line="70"/>
         <source>Gouraud</source>
         <translation>Gouraud</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="85"/>
+        <location filename="../app/main_window.cpp" line="90"/>
+        <location filename="../app/main_window_export.cpp" line="70"/>
         <source>Phong</source>
         <translation>Phong</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="87"/>
+        <location filename="../app/main_window.cpp" line="92"/>
         <source>painter&apos;s-algorithm flat</source>
         <translation>flat do algoritmo do pintor</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="94"/>
+        <location filename="../app/main_window.cpp" line="101"/>
         <source>%1 (built in)</source>
         <translation>%1 (embutido)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="102"/>
+        <location filename="../app/main_window.cpp" line="109"/>
         <source>RasterLab</source>
         <translation>RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="169"/>
+        <location filename="../app/main_window.cpp" line="165"/>
         <source>Stopped at a breakpoint: %1</source>
         <translation>Parado num ponto de parada: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="196"/>
-        <location filename="../app/main_window_export.cpp" line="81"/>
-        <location filename="../app/main_window_export.cpp" line="118"/>
+        <location filename="../app/main_window.cpp" line="198"/>
+        <location filename="../app/main_window_export.cpp" line="122"/>
+        <location filename="../app/main_window_export.cpp" line="159"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="197"/>
+        <location filename="../app/main_window.cpp" line="199"/>
         <source>Stop preparing the stepping of this frame</source>
         <translation>Parar a preparação do passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="201"/>
+        <location filename="../app/main_window.cpp" line="203"/>
         <source>cancelled</source>
         <translation>cancelado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="253"/>
+        <location filename="../app/main_window.cpp" line="254"/>
         <source>Stepping</source>
         <translation>Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="277"/>
+        <location filename="../app/main_window.cpp" line="278"/>
         <source>Edit</source>
         <translation>Edição</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="284"/>
+        <location filename="../app/main_window.cpp" line="285"/>
         <source>Breakpoints</source>
         <translation>Pontos de parada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="290"/>
+        <location filename="../app/main_window.cpp" line="291"/>
         <source>Animation</source>
         <translation>Animação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="309"/>
+        <location filename="../app/main_window.cpp" line="310"/>
         <source>1 Camera basis</source>
         <translation>1 Base da câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="281"/>
+        <location filename="../app/main_window.cpp" line="282"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Inspetor de pixel (iluminação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="316"/>
+        <location filename="../app/main_window.cpp" line="317"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 Coordenadas de vista (vértices)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="318"/>
+        <location filename="../app/main_window.cpp" line="319"/>
         <source>3 Normals</source>
         <translation>3 Normais</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="320"/>
+        <location filename="../app/main_window.cpp" line="321"/>
         <source>4 Projection</source>
         <translation>4 Projeção</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="312"/>
+        <location filename="../app/main_window.cpp" line="313"/>
         <source>5 Scan conversion</source>
         <translation>5 Conversão por varredura</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="326"/>
+        <location filename="../app/main_window.cpp" line="327"/>
         <source>5b Trapezoids</source>
         <translation>5b Trapézios</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="330"/>
+        <location filename="../app/main_window.cpp" line="331"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="43"/>
+        <location filename="../app/main_window_actions.cpp" line="44"/>
         <source>&amp;File</source>
         <translation>&amp;Arquivo</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="139"/>
+        <location filename="../app/main_window_actions.cpp" line="152"/>
         <source>&amp;Animation Frames...</source>
         <translation>&amp;Quadros da animação...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="275"/>
+        <location filename="../app/main_window_actions.cpp" line="288"/>
         <source>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</source>
         <translation>&amp;Algoritmo do pintor (flat, do mais distante ao mais próximo, sem teste de profundidade)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="906"/>
+        <location filename="../app/main_window.cpp" line="958"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>avançar, voltar um passo (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="908"/>
+        <location filename="../app/main_window.cpp" line="960"/>
         <source>Space</source>
         <translation>Barra de espaço</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="908"/>
+        <location filename="../app/main_window.cpp" line="960"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>reproduzir / pausar (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="914"/>
+        <location filename="../app/main_window.cpp" line="966"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>soltar o pixel escolhido (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="915"/>
+        <location filename="../app/main_window.cpp" line="967"/>
         <source>presentation mode on / off</source>
         <translation>ligar / desligar o modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="920"/>
+        <location filename="../app/main_window.cpp" line="972"/>
         <source>save, undo, redo</source>
         <translation>salvar, desfazer, refazer</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="52"/>
+        <location filename="../app/main_window_actions.cpp" line="53"/>
         <source>Open &amp;Camera...</source>
         <translation>Abrir &amp;câmera...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="123"/>
+        <location filename="../app/main_window.cpp" line="130"/>
         <source>Draw with the Plain Divide</source>
         <translation>Desenhar com a divisão simples</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="54"/>
+        <location filename="../app/main_window_actions.cpp" line="55"/>
         <source>Ctrl+Shift+C</source>
         <translation>Ctrl+Shift+C</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="56"/>
+        <location filename="../app/main_window_actions.cpp" line="57"/>
         <source>Open &amp;Lighting...</source>
         <translation>Abrir &amp;iluminação...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="57"/>
+        <location filename="../app/main_window_actions.cpp" line="58"/>
         <source>Ctrl+Shift+L</source>
         <translation>Ctrl+Shift+L</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="59"/>
+        <location filename="../app/main_window_actions.cpp" line="60"/>
         <source>Open Command &amp;File...</source>
         <translation>Abrir arquivo de co&amp;mandos...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="60"/>
+        <location filename="../app/main_window_actions.cpp" line="61"/>
         <source>Ctrl+Shift+O</source>
         <translation>Ctrl+Shift+O</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="62"/>
+        <location filename="../app/main_window_actions.cpp" line="63"/>
         <source>Open &amp;Recent</source>
         <translation>Abrir recen&amp;tes</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="64"/>
+        <location filename="../app/main_window_actions.cpp" line="65"/>
         <source>&amp;Default Scene</source>
         <translation>Cena &amp;padrão</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="87"/>
+        <location filename="../app/main_window_actions.cpp" line="93"/>
         <source>&amp;Camera</source>
         <translation>&amp;Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="99"/>
+        <location filename="../app/main_window_actions.cpp" line="105"/>
         <source>&amp;Lighting</source>
         <translation>&amp;Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="115"/>
+        <location filename="../app/main_window_actions.cpp" line="121"/>
         <source>&amp;Export PNG...</source>
         <translation>&amp;Exportar PNG...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="116"/>
+        <location filename="../app/main_window_actions.cpp" line="122"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="118"/>
+        <location filename="../app/main_window_actions.cpp" line="124"/>
         <source>Export &amp;More</source>
         <translation>E&amp;xportar mais</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="121"/>
+        <location filename="../app/main_window_actions.cpp" line="127"/>
         <source>Image as &amp;Displayed...</source>
         <translation>Imagem como &amp;exibida...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="122"/>
+        <location filename="../app/main_window_actions.cpp" line="128"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="123"/>
+        <location filename="../app/main_window_actions.cpp" line="129"/>
         <source>&amp;Colour Buffer at the Cursor...</source>
         <translation>Buffer de &amp;cor no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="125"/>
+        <location filename="../app/main_window_actions.cpp" line="131"/>
         <source>D&amp;epth Buffer at the Cursor...</source>
         <translation>Buffer de pro&amp;fundidade no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="127"/>
+        <location filename="../app/main_window_actions.cpp" line="133"/>
         <source>&amp;Normal Buffer...</source>
         <translation>Buffer de &amp;normais...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="128"/>
+        <location filename="../app/main_window_actions.cpp" line="134"/>
         <source>A &amp;View as Displayed</source>
         <translation>Um &amp;painel como exibido</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="132"/>
+        <location filename="../app/main_window_actions.cpp" line="138"/>
         <source>Export View</source>
         <translation>Exportar painel</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="137"/>
+        <location filename="../app/main_window_actions.cpp" line="150"/>
         <source>&amp;Stepping Sequence...</source>
         <translation>&amp;Sequência de passos...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="79"/>
+        <location filename="../app/main_window_actions.cpp" line="85"/>
         <source>&amp;Quit</source>
         <translation>Sai&amp;r</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="144"/>
+        <location filename="../app/main_window_actions.cpp" line="143"/>
+        <source>Shading Side &amp;by Side...</source>
+        <translation>Sombreamentos &amp;lado a lado...</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_actions.cpp" line="145"/>
+        <source>Export Shading Side by Side</source>
+        <translation>Exportar os sombreamentos lado a lado</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_actions.cpp" line="157"/>
         <source>&amp;Edit</source>
         <translation>&amp;Editar</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="150"/>
+        <location filename="../app/main_window_actions.cpp" line="163"/>
         <source>&amp;View</source>
         <translation>E&amp;xibir</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="151"/>
+        <location filename="../app/main_window_actions.cpp" line="164"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Ajustar à janela</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="152"/>
+        <location filename="../app/main_window_actions.cpp" line="165"/>
         <source>Ctrl+0</source>
         <translation>Ctrl+0</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="154"/>
+        <location filename="../app/main_window_actions.cpp" line="167"/>
         <source>&amp;Actual Size</source>
         <translation>&amp;Tamanho real</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="155"/>
+        <location filename="../app/main_window_actions.cpp" line="168"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="156"/>
+        <location filename="../app/main_window_actions.cpp" line="169"/>
         <source>Zoom &amp;In</source>
         <translation>A&amp;umentar zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="158"/>
+        <location filename="../app/main_window_actions.cpp" line="171"/>
         <source>Zoom &amp;Out</source>
         <translation>&amp;Diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="165"/>
+        <location filename="../app/main_window_actions.cpp" line="178"/>
         <source>Reset &amp;Layout</source>
         <translation>Restaurar &amp;layout</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="167"/>
+        <location filename="../app/main_window_actions.cpp" line="180"/>
         <source>Fill the &amp;Window with a Panel</source>
         <translation>&amp;Preencher a janela com um painel</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="171"/>
+        <location filename="../app/main_window_actions.cpp" line="184"/>
         <source>The panel with the focus or under the mouse (the image, from the image) over the whole window; again, the layout back</source>
         <translation>O painel com o foco ou sob o mouse (a imagem, a partir da imagem) sobre a janela inteira; de novo, o layout de volta</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="179"/>
+        <location filename="../app/main_window_actions.cpp" line="192"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="184"/>
+        <location filename="../app/main_window_actions.cpp" line="197"/>
         <source>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</source>
         <translation>Texto maior, sobreposições mais grossas, alto contraste; as teclas do passador de slides avançam os passos (F5 ou Esc)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="199"/>
+        <location filename="../app/main_window_actions.cpp" line="212"/>
         <source>The System&apos;s</source>
         <translation>Do sistema</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="218"/>
+        <location filename="../app/main_window_actions.cpp" line="231"/>
         <source>S&amp;tep</source>
         <translation>&amp;Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="238"/>
+        <location filename="../app/main_window_actions.cpp" line="251"/>
         <source>Pick the Pixel Under the &amp;Mouse</source>
         <translation>Escolher o pixel sob o &amp;mouse</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="239"/>
+        <location filename="../app/main_window_actions.cpp" line="252"/>
         <source>Ctrl+G</source>
         <translation>Ctrl+G</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="268"/>
+        <location filename="../app/main_window_actions.cpp" line="281"/>
         <source>&amp;Shading</source>
         <translation>&amp;Sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="272"/>
+        <location filename="../app/main_window_actions.cpp" line="285"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (por pixel)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="273"/>
+        <location filename="../app/main_window_actions.cpp" line="286"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (por vértice)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="274"/>
+        <location filename="../app/main_window_actions.cpp" line="287"/>
         <source>&amp;Flat (per triangle)</source>
         <translation>&amp;Flat (por triângulo)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="316"/>
+        <location filename="../app/main_window_actions.cpp" line="329"/>
         <source>Pro&amp;jection</source>
         <translation>Pro&amp;jeção</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="321"/>
+        <location filename="../app/main_window_actions.cpp" line="334"/>
         <source>&amp;Clip at the Near Plane (nothing behind the eye is divided)</source>
         <translation>&amp;Recortar no plano próximo (nada atrás do olho é dividido)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="323"/>
+        <location filename="../app/main_window_actions.cpp" line="336"/>
         <source>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</source>
         <translation>&amp;Divisão simples, sem recorte (a seed 000 como escrita; o HW2 da seed 001)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="325"/>
+        <location filename="../app/main_window_actions.cpp" line="338"/>
         <source>&amp;Same Side (clip only triangles that cross the eye plane)</source>
         <translation>&amp;Mesmo lado (recortar só os triângulos que cruzam o plano do olho)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="594"/>
+        <location filename="../app/main_window.cpp" line="597"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Todos os triângulos estão atrás da câmera (N aponta para longe do objeto?), então o recorte no plano próximo não deixa nada para desenhar. A fórmula da seed 000 divide por z mesmo assim: desenharia %1 dos %2 triângulos como a reflexão do objeto pelo olho, girada meia volta na tela, e o z-buffer (que guarda o menor z) guardaria o lado mais distante da câmera. A vista lateral da projeção mostra o olho, N e o objeto.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="850"/>
+        <location filename="../app/main_window.cpp" line="902"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="903"/>
+        <location filename="../app/main_window.cpp" line="955"/>
         <source>step forward</source>
         <translation>avançar um passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="904"/>
+        <location filename="../app/main_window.cpp" line="956"/>
         <source>step back</source>
         <translation>voltar um passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="907"/>
+        <location filename="../app/main_window.cpp" line="959"/>
         <source>play / pause</source>
         <translation>reproduzir / pausar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="909"/>
+        <location filename="../app/main_window.cpp" line="961"/>
         <source>jump to the start / the end of the frame</source>
         <translation>ir ao início / ao fim do quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="910"/>
+        <location filename="../app/main_window.cpp" line="962"/>
         <source>continue to the next breakpoint</source>
         <translation>continuar até o próximo ponto de parada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="911"/>
+        <location filename="../app/main_window.cpp" line="963"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>avançar por etapa, triângulo, linha de varredura, segmento, pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="912"/>
+        <location filename="../app/main_window.cpp" line="964"/>
         <source>show a stage&apos;s view</source>
         <translation>mostrar o painel de uma etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="913"/>
+        <location filename="../app/main_window.cpp" line="965"/>
         <source>Click, arrows</source>
         <translation>Clique, setas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="913"/>
+        <location filename="../app/main_window.cpp" line="965"/>
         <source>pick a pixel, move it by one</source>
         <translation>escolher um pixel, movê-lo de um em um</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="916"/>
+        <location filename="../app/main_window.cpp" line="968"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, duplo clique no título de um painel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="917"/>
+        <location filename="../app/main_window.cpp" line="969"/>
         <source>fill the window with the panel (the image, from the image), and back</source>
         <translation>preencher a janela com o painel (a imagem, a partir da imagem), e voltar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="919"/>
+        <location filename="../app/main_window.cpp" line="971"/>
         <source>open, export the image, export it as displayed</source>
         <translation>abrir, exportar a imagem, exportá-la como exibida</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="922"/>
+        <location filename="../app/main_window.cpp" line="974"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>ajustar, tamanho real, aumentar zoom, diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="924"/>
+        <location filename="../app/main_window.cpp" line="976"/>
         <source>Keyboard Shortcuts</source>
         <translation>Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="293"/>
+        <location filename="../app/main_window_actions.cpp" line="306"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Regras de rasterização</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="298"/>
+        <location filename="../app/main_window_actions.cpp" line="311"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Curso (semente 000: vértices em pixels inteiros, interpolação no espaço da tela)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="300"/>
+        <location filename="../app/main_window_actions.cpp" line="313"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>Como uma &amp;GPU (vértices em 1/256 de pixel, centros dos pixels, regra top-left, correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="302"/>
+        <location filename="../app/main_window_actions.cpp" line="315"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (as imagens de referência da semente 001)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="339"/>
+        <location filename="../app/main_window_actions.cpp" line="352"/>
         <source>&amp;Help</source>
         <translation>A&amp;juda</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="342"/>
+        <location filename="../app/main_window_actions.cpp" line="355"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="262"/>
+        <location filename="../app/main_window.cpp" line="263"/>
         <source>Messages</source>
         <translation>Mensagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="267"/>
+        <location filename="../app/main_window.cpp" line="268"/>
         <source>Scene</source>
         <translation>Cena</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="287"/>
+        <location filename="../app/main_window.cpp" line="288"/>
         <source>Accuracy</source>
         <translation>Exatidão</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="568"/>
-        <location filename="../app/main_window_export.cpp" line="33"/>
-        <location filename="../app/main_window_export.cpp" line="92"/>
-        <location filename="../app/main_window_export.cpp" line="134"/>
-        <location filename="../app/main_window_export.cpp" line="168"/>
+        <location filename="../app/main_window.cpp" line="571"/>
+        <location filename="../app/main_window_export.cpp" line="35"/>
+        <location filename="../app/main_window_export.cpp" line="133"/>
+        <location filename="../app/main_window_export.cpp" line="175"/>
+        <location filename="../app/main_window_export.cpp" line="209"/>
         <source>%1: cannot export the image: %2</source>
         <translation>%1: não foi possível exportar a imagem: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="25"/>
+        <location filename="../app/main_window_export.cpp" line="27"/>
         <source>nothing has been rendered yet</source>
         <translation>nada foi renderizado ainda</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="28"/>
+        <location filename="../app/main_window_export.cpp" line="30"/>
         <source>Exported %1</source>
         <translation>Exportado %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="620"/>
+        <location filename="../app/main_window.cpp" line="624"/>
         <source>rendering...</source>
         <translation>renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="620"/>
+        <location filename="../app/main_window.cpp" line="624"/>
         <source>%1, rendering...</source>
         <translation>%1, renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="618"/>
-        <location filename="../app/main_window.cpp" line="813"/>
+        <location filename="../app/main_window.cpp" line="622"/>
+        <location filename="../app/main_window.cpp" line="865"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="44"/>
+        <location filename="../app/main_window_actions.cpp" line="45"/>
         <source>&amp;Open...</source>
         <translation>&amp;Abrir...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="47"/>
+        <location filename="../app/main_window_actions.cpp" line="48"/>
         <source>A course camera, lighting or object file, or a command file</source>
         <translation>Um arquivo de câmera, iluminação ou objeto do curso, ou um arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="48"/>
+        <location filename="../app/main_window_actions.cpp" line="49"/>
         <source>Open O&amp;bject...</source>
         <translation>Abrir &amp;objeto...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="50"/>
+        <location filename="../app/main_window_actions.cpp" line="51"/>
         <source>Ctrl+Shift+B</source>
         <translation>Ctrl+Shift+B</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="85"/>
+        <location filename="../app/main_window_actions.cpp" line="91"/>
         <source>Course File La&amp;youts</source>
         <translation>&amp;Formatos dos arquivos do curso</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="161"/>
+        <location filename="../app/main_window_actions.cpp" line="174"/>
         <source>Pa&amp;nels</source>
         <translation>&amp;Painéis</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="176"/>
+        <location filename="../app/main_window_actions.cpp" line="189"/>
         <source>I&amp;mage</source>
         <translation>&amp;Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="194"/>
+        <location filename="../app/main_window_actions.cpp" line="207"/>
         <source>Lan&amp;guage</source>
         <translation>Idi&amp;oma</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="227"/>
+        <location filename="../app/main_window_actions.cpp" line="240"/>
         <source>Step B&amp;y</source>
         <translation>Avançar &amp;por</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="229"/>
+        <location filename="../app/main_window_actions.cpp" line="242"/>
         <source>S&amp;tage</source>
         <translation>&amp;Etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="340"/>
+        <location filename="../app/main_window_actions.cpp" line="353"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="396"/>
+        <location filename="../app/main_window.cpp" line="397"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Modo de apresentação: F5 ou Esc para sair; Page Down, seta para a direita e barra de espaço avançam e reproduzem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="551"/>
+        <location filename="../app/main_window.cpp" line="554"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="628"/>
+        <location filename="../app/main_window.cpp" line="632"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparando o passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="628"/>
+        <location filename="../app/main_window.cpp" line="632"/>
         <source>Rendering</source>
         <translation>Renderizando</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="764"/>
+        <location filename="../app/main_window.cpp" line="808"/>
         <source>Error: %1</source>
         <translation>Erro: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="780"/>
+        <location filename="../app/main_window.cpp" line="832"/>
         <source>Files</source>
         <translation>Arquivos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="783"/>
+        <location filename="../app/main_window.cpp" line="835"/>
         <source>Command file</source>
         <translation>Arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="784"/>
+        <location filename="../app/main_window.cpp" line="836"/>
         <source>Image</source>
         <translation>Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="786"/>
+        <location filename="../app/main_window.cpp" line="838"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vértices, %2 triângulos em %3 desenhos; %4 x %5 pixels; %6 luzes</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="796"/>
+        <location filename="../app/main_window.cpp" line="848"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="797"/>
+        <location filename="../app/main_window.cpp" line="849"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="798"/>
+        <location filename="../app/main_window.cpp" line="850"/>
         <source>Object</source>
         <translation>Objeto</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="800"/>
+        <location filename="../app/main_window.cpp" line="852"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vértices, %2 triângulos; %3 x %4 pixels, sombreamento %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="247"/>
-        <location filename="../app/main_window.cpp" line="807"/>
+        <location filename="../app/main_window.cpp" line="248"/>
+        <location filename="../app/main_window.cpp" line="859"/>
         <source>Stages</source>
         <translation>Etapas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="280"/>
+        <location filename="../app/main_window.cpp" line="99"/>
+        <source>%1 (the %2 example)</source>
+        <translation>%1 (o exemplo %2)</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="281"/>
         <source>7 Pixel inspector</source>
         <translation>7 Inspetor de pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="309"/>
+        <location filename="../app/main_window.cpp" line="310"/>
         <source>1 Camera</source>
         <translation>1 Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="312"/>
+        <location filename="../app/main_window.cpp" line="313"/>
         <source>5 Scan</source>
         <translation>5 Varredura</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="315"/>
+        <location filename="../app/main_window.cpp" line="316"/>
         <source>2 View</source>
         <translation>2 Vista</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="323"/>
+        <location filename="../app/main_window.cpp" line="324"/>
         <source>4b Clipping</source>
         <translation>4b Recorte</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="325"/>
+        <location filename="../app/main_window.cpp" line="326"/>
         <source>4b Near-plane clipping (seed 002)</source>
         <translation>4b Recorte no plano próximo (semente 002)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="328"/>
+        <location filename="../app/main_window.cpp" line="329"/>
         <source>5b Trapezoids: the scan of seed 002</source>
         <translation>5b Trapézios: a varredura da semente 002</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="333"/>
+        <location filename="../app/main_window.cpp" line="334"/>
         <source>Painter</source>
         <translation>Pintor</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="334"/>
+        <location filename="../app/main_window.cpp" line="335"/>
         <source>Painter&apos;s algorithm (seed 004)</source>
         <translation>Algoritmo do pintor (semente 004)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="814"/>
+        <location filename="../app/main_window.cpp" line="830"/>
+        <source>Lesson: %1</source>
+        <translation>Aula: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="866"/>
         <source>skipped: %1</source>
         <translation>omitida: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="817"/>
+        <location filename="../app/main_window.cpp" line="869"/>
         <source>Counts</source>
         <translation>Contagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="818"/>
+        <location filename="../app/main_window.cpp" line="870"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triângulos recortados no plano próximo: %1; atrás da câmera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="821"/>
+        <location filename="../app/main_window.cpp" line="873"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Triângulos de área zero: %1 no espaço de vista, %2 na tela&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="824"/>
+        <location filename="../app/main_window.cpp" line="876"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragmentos testados: %1; escritos: %2; rejeitados: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="828"/>
+        <location filename="../app/main_window.cpp" line="880"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels sombreados: %1; normais voltadas para o observador: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; limitados a 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="852"/>
+        <location filename="../app/main_window.cpp" line="904"/>
         <source>empty (+inf)</source>
         <translation>vazio (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="853"/>
+        <location filename="../app/main_window.cpp" line="905"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   profundidade %6</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="869"/>
+        <location filename="../app/main_window.cpp" line="921"/>
         <source>Open Command File</source>
         <translation>Abrir arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="870"/>
+        <location filename="../app/main_window.cpp" line="922"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Arquivos de comandos (*.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="876"/>
+        <location filename="../app/main_window.cpp" line="928"/>
         <source>Open</source>
         <translation>Abrir</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="876"/>
+        <location filename="../app/main_window.cpp" line="928"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Arquivos de cena (*.byu *.cfg *.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="886"/>
+        <location filename="../app/main_window.cpp" line="938"/>
         <source>Export PNG</source>
         <translation>Exportar PNG</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="886"/>
-        <location filename="../app/main_window_actions.cpp" line="133"/>
-        <location filename="../app/main_window_export.cpp" line="157"/>
-        <location filename="../app/main_window_export.cpp" line="165"/>
+        <location filename="../app/main_window.cpp" line="938"/>
+        <location filename="../app/main_window_actions.cpp" line="139"/>
+        <location filename="../app/main_window_actions.cpp" line="146"/>
+        <location filename="../app/main_window_export.cpp" line="198"/>
+        <location filename="../app/main_window_export.cpp" line="206"/>
         <source>PNG images (*.png)</source>
         <translation>Imagens PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="891"/>
+        <location filename="../app/main_window.cpp" line="943"/>
         <source>About RasterLab</source>
         <translation>Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="892"/>
+        <location filename="../app/main_window.cpp" line="944"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;O pipeline clássico de rasterização por software, etapa por etapa: base da câmera, coordenadas de vista, normais, projeção, conversão por varredura, teste de profundidade e sombreamento.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="40"/>
+        <location filename="../app/main_window_export.cpp" line="42"/>
         <source>%1: cannot export the depth buffer: %2</source>
         <translation>%1: não foi possível exportar o buffer de profundidade: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="45"/>
+        <location filename="../app/main_window_export.cpp" line="47"/>
         <source>%1: cannot export the normal buffer: %2</source>
         <translation>%1: não foi possível exportar o buffer de normais: %2</translation>
     </message>
     <message>
         <location filename="../app/main_window_export.cpp" line="63"/>
+        <source>%1: cannot export the shadings side by side: %2</source>
+        <translation>%1: não é possível exportar os sombreamentos lado a lado: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_export.cpp" line="65"/>
+        <source>it needs a course scene</source>
+        <translation>é preciso uma cena do curso</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_export.cpp" line="70"/>
+        <source>Flat</source>
+        <translation>Flat</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_export.cpp" line="104"/>
         <source>%1: cannot export the view: there is no view %2</source>
         <translation>%1: não foi possível exportar o painel: não há painel %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="66"/>
+        <location filename="../app/main_window_export.cpp" line="107"/>
         <source>%1: cannot export the view: %2</source>
         <translation>%1: não foi possível exportar o painel: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="72"/>
+        <location filename="../app/main_window_export.cpp" line="113"/>
         <source>%1: cannot export the steps: the frame cannot be stepped through yet</source>
         <translation>%1: não foi possível exportar os passos: o quadro ainda não pode ser percorrido passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="76"/>
-        <location filename="../app/main_window_export.cpp" line="110"/>
+        <location filename="../app/main_window_export.cpp" line="117"/>
+        <location filename="../app/main_window_export.cpp" line="151"/>
         <source>%1: cannot create the folder</source>
         <translation>%1: não foi possível criar a pasta</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="81"/>
+        <location filename="../app/main_window_export.cpp" line="122"/>
         <source>Exporting the steps...</source>
         <translation>Exportando os passos...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="103"/>
+        <location filename="../app/main_window_export.cpp" line="144"/>
         <source>Exported %1 images to %2</source>
         <translation>%1 imagens exportadas para %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="118"/>
+        <location filename="../app/main_window_export.cpp" line="159"/>
         <source>Exporting the animation&apos;s frames...</source>
         <translation>Exportando os quadros da animação...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="142"/>
+        <location filename="../app/main_window_export.cpp" line="184"/>
         <source>%1: cannot render the frame: %2</source>
         <translation>%1: não foi possível renderizar o quadro: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="144"/>
+        <location filename="../app/main_window_export.cpp" line="185"/>
         <source>Exported %1 frames to %2</source>
         <translation>%1 quadros exportados para %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="150"/>
+        <location filename="../app/main_window_export.cpp" line="191"/>
         <source>Folder for the Animation&apos;s Frames</source>
         <translation>Pasta para os quadros da animação</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="155"/>
+        <location filename="../app/main_window_export.cpp" line="196"/>
         <source>Export the Image as Displayed</source>
         <translation>Exportar a imagem como exibida</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="164"/>
+        <location filename="../app/main_window_export.cpp" line="205"/>
         <source>Export a Buffer</source>
         <translation>Exportar um buffer</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="178"/>
+        <location filename="../app/main_window_export.cpp" line="219"/>
         <source>Folder for the Numbered Images</source>
         <translation>Pasta para as imagens numeradas</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="182"/>
+        <location filename="../app/main_window_export.cpp" line="223"/>
         <source>Stepping Sequence</source>
         <translation>Sequência de passos</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="183"/>
+        <location filename="../app/main_window_export.cpp" line="224"/>
         <source>At most how many images (one per step, at the current granularity)?</source>
         <translation>No máximo quantas imagens (uma por passo, na granularidade atual)?</translation>
     </message>
     <message>
-        <location filename="../app/main_window_files.cpp" line="116"/>
+        <location filename="../app/main_window_files.cpp" line="118"/>
         <source>%1: no course camera, lighting, object or command file in this folder</source>
         <translation>%1: nenhum arquivo de câmera, iluminação, objeto ou comandos do curso nesta pasta</translation>
     </message>
     <message>
-        <location filename="../app/main_window_files.cpp" line="120"/>
+        <location filename="../app/main_window_files.cpp" line="122"/>
         <source>%1: no such file</source>
         <translation>%1: arquivo inexistente</translation>
     </message>
     <message>
-        <location filename="../app/main_window_files.cpp" line="138"/>
+        <location filename="../app/main_window_files.cpp" line="140"/>
         <source>%1: not a course camera, lighting or object file, nor a command file (expected a .byu object, a camera or lighting in one of the course layouts, or png/xyz/tri commands)</source>
         <translation>%1: não é um arquivo de câmera, iluminação ou objeto do curso, nem um arquivo de comandos (esperava-se um objeto .byu, uma câmera ou iluminação num dos formatos do curso, ou comandos png/xyz/tri)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_files.cpp" line="178"/>
+        <location filename="../app/main_window_files.cpp" line="180"/>
         <source>&amp;Clear the List</source>
         <translation>&amp;Limpar a lista</translation>
     </message>
     <message>
-        <location filename="../app/main_window_files.cpp" line="249"/>
+        <location filename="../app/main_window_files.cpp" line="251"/>
         <source>%1 changed on disk: read again</source>
         <translation>%1 mudou no disco: lido de novo</translation>
     </message>
@@ -1980,6 +3764,107 @@
         <location filename="../app/main_window_docks.cpp" line="159"/>
         <source>The image</source>
         <translation>A imagem</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="78"/>
+        <source>E&amp;xamples</source>
+        <translation>E&amp;xemplos</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="88"/>
+        <source>Open Lesso&amp;n...</source>
+        <translation>Abrir a&amp;ula...</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="89"/>
+        <source>Ctrl+Alt+O</source>
+        <translation>Ctrl+Alt+O</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="91"/>
+        <source>A lesson file (.rasterlab): a scene with its stepping, picked pixel, breakpoints, zoom and docks</source>
+        <translation>Um arquivo de aula (.rasterlab): uma cena com o seu passo a passo, o pixel escolhido, os pontos de parada, o zoom e os painéis</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="93"/>
+        <source>Save Lesson &amp;As...</source>
+        <translation>Salvar aula c&amp;omo...</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="94"/>
+        <source>Ctrl+Alt+S</source>
+        <translation>Ctrl+Alt+S</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="96"/>
+        <source>Recent Lesso&amp;ns</source>
+        <translation>Aulas rece&amp;ntes</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="122"/>
+        <source>Open Lesson</source>
+        <translation>Abrir aula</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="123"/>
+        <source>Lessons (*.rasterlab);;All files (*)</source>
+        <translation>Aulas (*.rasterlab);;Todos os arquivos (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="128"/>
+        <source>Save Lesson</source>
+        <translation>Salvar aula</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="129"/>
+        <source>Lessons (*.rasterlab)</source>
+        <translation>Aulas (*.rasterlab)</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="132"/>
+        <source>Saved the lesson to %1</source>
+        <translation>A aula foi salva em %1</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="137"/>
+        <location filename="../app/main_window_lessons.cpp" line="150"/>
+        <source>there is no example named &apos;%1&apos; (examples: %2)</source>
+        <translation>não há exemplo chamado &apos;%1&apos; (exemplos: %2)</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="165"/>
+        <source>the %1 was not restored, the one shown stays: %2</source>
+        <translation>não foi possível restaurar %1, continua o que era mostrado: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="168"/>
+        <source>camera</source>
+        <translation>a câmera</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="169"/>
+        <source>lighting</source>
+        <translation>a iluminação</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="170"/>
+        <source>object</source>
+        <translation>o objeto</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="173"/>
+        <source>the command file was not restored, the scene shown stays: %1</source>
+        <translation>o arquivo de comandos não foi restaurado, a cena mostrada continua: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="221"/>
+        <source>The lesson opened, but not all of it: see the Messages dock</source>
+        <translation>A aula abriu, mas não inteira: veja o painel Mensagens</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_lessons.cpp" line="338"/>
+        <source>%1: cannot save the lesson: %2</source>
+        <translation>%1: não é possível salvar a aula: %2</translation>
     </message>
 </context>
 <context>
@@ -2512,67 +4397,67 @@
 <context>
     <name>rasterlab::PainterView</name>
     <message>
-        <location filename="../views/painter_view.cpp" line="70"/>
+        <location filename="../views/painter_view.cpp" line="71"/>
         <source>Painted</source>
         <translation>Ordem</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="72"/>
+        <location filename="../views/painter_view.cpp" line="73"/>
         <source>Draw</source>
         <translation>Desenho</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="74"/>
+        <location filename="../views/painter_view.cpp" line="75"/>
         <source>Triangle</source>
         <translation>Triângulo</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="76"/>
+        <location filename="../views/painter_view.cpp" line="77"/>
         <source>|b| (distance)</source>
         <translation>|b| (distância)</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="78"/>
+        <location filename="../views/painter_view.cpp" line="79"/>
         <source>Hidden wrongly</source>
         <translation>Ocultos por engano</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="135"/>
+        <location filename="../views/painter_view.cpp" line="136"/>
         <source>The triangles in the order the painter paints them: farthest barycentre first. Click a row to select its triangle.</source>
         <translation>Os triângulos na ordem em que o pintor os pinta: o baricentro mais distante primeiro. Clique numa linha para selecionar seu triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="140"/>
+        <location filename="../views/painter_view.cpp" line="141"/>
         <source>Painter&apos;s image</source>
         <translation>Imagem do pintor</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="141"/>
+        <location filename="../views/painter_view.cpp" line="142"/>
         <source>Painted order (first blue, last red)</source>
         <translation>Ordem de pintura (primeiro azul, último vermelho)</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="146"/>
+        <location filename="../views/painter_view.cpp" line="147"/>
         <source>Mark ties on shared edges</source>
         <translation>Marcar empates nas arestas compartilhadas</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="149"/>
+        <location filename="../views/painter_view.cpp" line="150"/>
         <source>Pixels on an edge two triangles share, at the same depth: the z-buffer keeps the first drawn, the painter the last.</source>
         <translation>Pixels numa aresta que dois triângulos compartilham, na mesma profundidade: o z-buffer mantém o primeiro desenhado, o pintor o último.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="330"/>
+        <location filename="../views/painter_view.cpp" line="331"/>
         <source>rank of the last triangle painted</source>
         <translation>ordem do último triângulo pintado</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="331"/>
+        <location filename="../views/painter_view.cpp" line="332"/>
         <source>painted far to near, no depth test</source>
         <translation>pintado do mais distante ao mais próximo, sem teste de profundidade</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/painter_view.cpp" line="333"/>
+        <location filename="../views/painter_view.cpp" line="334"/>
         <source>Z-buffer (the same flat colours): %n pixel(s) differ</source>
         <translation>
             <numerusform>Z-buffer (as mesmas cores flat): %n pixel difere</numerusform>
@@ -2580,17 +4465,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="373"/>
+        <location filename="../views/painter_view.cpp" line="374"/>
         <source>No frame.</source>
         <translation>Nenhum quadro.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="374"/>
+        <location filename="../views/painter_view.cpp" line="375"/>
         <source>Not worked out yet.</source>
         <translation>Ainda não calculado.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/painter_view.cpp" line="379"/>
+        <location filename="../views/painter_view.cpp" line="380"/>
         <source>&lt;b&gt;Painter&apos;s algorithm&lt;/b&gt; (seed 004): the %n triangle(s) are sorted by the distance |b| of their barycentre b (view space) to the camera, far to near, each lit once at b, and painted in that order &lt;i&gt;without a depth test&lt;/i&gt;: the last painted stays.</source>
         <translation>
             <numerusform>&lt;b&gt;Algoritmo do pintor&lt;/b&gt; (semente 004): o %n triângulo é ordenado pela distância |b| do seu baricentro b (espaço de vista) à câmera, do mais distante ao mais próximo, iluminado uma vez em b e pintado nessa ordem &lt;i&gt;sem teste de profundidade&lt;/i&gt;: o último pintado prevalece.</numerusform>
@@ -2598,17 +4483,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="384"/>
+        <location filename="../views/painter_view.cpp" line="385"/>
         <source>The frame shown uses the z-buffer; this view renders the scene again as the painter would.</source>
         <translation>O quadro exibido usa o z-buffer; este painel renderiza a cena de novo como o pintor faria.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="387"/>
+        <location filename="../views/painter_view.cpp" line="388"/>
         <source>Against the z-buffer with the same colours, %1 pixels differ: &lt;span style=&apos;color:#d00000&apos;&gt;%2 where a farther triangle was painted after a nearer one&lt;/span&gt; (the order of whole triangles is not the order of their pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 on edges two triangles share at the same depth&lt;/span&gt; (the z-buffer keeps the first drawn, the painter the last).</source>
         <translation>Comparado ao z-buffer com as mesmas cores, %1 pixels diferem: &lt;span style=&apos;color:#d00000&apos;&gt;%2 onde um triângulo mais distante foi pintado depois de um mais próximo&lt;/span&gt; (a ordem dos triângulos inteiros não é a ordem dos seus pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 em arestas que dois triângulos compartilham na mesma profundidade&lt;/span&gt; (o z-buffer mantém o primeiro desenhado, o pintor o último).</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="402"/>
+        <location filename="../views/painter_view.cpp" line="403"/>
         <source>Triangle %1: b = %2, |b| = %3, painted %4 of %5. The z-buffer shows it at %6 pixels; a triangle painted after it covers %7 of them though it is farther there; it covers %8 pixels of nearer triangles painted before it.</source>
         <translation>Triângulo %1: b = %2, |b| = %3, pintado na posição %4 de %5. O z-buffer o mostra em %6 pixels; um triângulo pintado depois dele cobre %7 desses pixels, embora ali esteja mais distante; ele cobre %8 pixels de triângulos mais próximos pintados antes dele.</translation>
     </message>
@@ -2666,167 +4551,167 @@
         <translation>▶ ocupa o pixel no cursor de passo; as linhas cinza ainda não foram alcançadas. Selecione uma linha para ver sua iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="126"/>
+        <location filename="../views/pixel_history.cpp" line="127"/>
         <source>Pick a pixel on the image to see its history.</source>
         <translation>Escolha um pixel na imagem para ver seu histórico.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="40"/>
+        <location filename="../views/pixel_history.cpp" line="41"/>
         <source>%1 over %2</source>
         <translation>%1 sobre %2</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="41"/>
+        <location filename="../views/pixel_history.cpp" line="42"/>
         <source>painted, no depth test</source>
         <translation>pintado, sem teste de profundidade</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="48"/>
+        <location filename="../views/pixel_history.cpp" line="49"/>
         <source>written</source>
         <translation>escrito</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="56"/>
+        <location filename="../views/pixel_history.cpp" line="57"/>
         <source>rejected: the depth is not a number</source>
         <translation>rejeitado: a profundidade não é um número</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="58"/>
+        <location filename="../views/pixel_history.cpp" line="59"/>
         <source>rejected: as far, the earlier keeps it</source>
         <translation>rejeitado: mesma distância, o anterior fica</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="60"/>
+        <location filename="../views/pixel_history.cpp" line="61"/>
         <source>rejected: farther</source>
         <translation>rejeitado: mais distante</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="63"/>
+        <location filename="../views/pixel_history.cpp" line="64"/>
         <source>%1 outside [0, 1]</source>
         <translation>%1 fora de [0, 1]</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="64"/>
+        <location filename="../views/pixel_history.cpp" line="65"/>
         <source>discarded: depth outside [0, 1]</source>
         <translation>descartado: profundidade fora de [0, 1]</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="85"/>
+        <location filename="../views/pixel_history.cpp" line="86"/>
         <source>cleared to %1</source>
         <translation>limpo com %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="86"/>
+        <location filename="../views/pixel_history.cpp" line="87"/>
         <source>the background</source>
         <translation>o fundo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="136"/>
+        <location filename="../views/pixel_history.cpp" line="137"/>
         <source>the final pixel</source>
         <translation>o pixel final</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="144"/>
+        <location filename="../views/pixel_history.cpp" line="145"/>
         <source>Preparing the stepping of this frame: the pixel&apos;s history follows.</source>
         <translation>Preparando o passo a passo deste quadro: o histórico do pixel vem a seguir.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="184"/>
+        <location filename="../views/pixel_history.cpp" line="185"/>
         <source>The frame could not be traced again: %1</source>
         <translation>Não foi possível rastrear o quadro de novo: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="226"/>
+        <location filename="../views/pixel_history.cpp" line="227"/>
         <source>depth %1</source>
         <translation>profundidade %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="228"/>
+        <location filename="../views/pixel_history.cpp" line="229"/>
         <source>none</source>
         <translation>nenhum</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="229"/>
+        <location filename="../views/pixel_history.cpp" line="230"/>
         <source>depth %1 (cleared)</source>
         <translation>profundidade %1 (valor de limpeza)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="248"/>
+        <location filename="../views/pixel_history.cpp" line="249"/>
         <source>Nothing drew here: the pixel keeps the background %1.</source>
         <translation>Nada foi desenhado aqui: o pixel mantém o fundo %1.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="257"/>
+        <location filename="../views/pixel_history.cpp" line="258"/>
         <source>The only fragment was rejected: the pixel keeps the background.</source>
         <translation>O único fragmento foi rejeitado: o pixel mantém o fundo.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="258"/>
+        <location filename="../views/pixel_history.cpp" line="259"/>
         <source>Every fragment was rejected (%1): the pixel keeps the background.</source>
         <translation>Todos os fragmentos foram rejeitados (%1): o pixel mantém o fundo.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="262"/>
+        <location filename="../views/pixel_history.cpp" line="263"/>
         <source>Written by triangle %1</source>
         <translation>Escrito pelo triângulo %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="264"/>
+        <location filename="../views/pixel_history.cpp" line="265"/>
         <source>over 1 earlier write</source>
         <translation>sobre 1 escrita anterior</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="266"/>
+        <location filename="../views/pixel_history.cpp" line="267"/>
         <source>over %1 earlier writes</source>
         <translation>sobre %1 escritas anteriores</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="268"/>
+        <location filename="../views/pixel_history.cpp" line="269"/>
         <source>1 fragment rejected</source>
         <translation>1 fragmento rejeitado</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="270"/>
+        <location filename="../views/pixel_history.cpp" line="271"/>
         <source>%1 fragments rejected</source>
         <translation>%1 fragmentos rejeitados</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="101"/>
+        <location filename="../views/pixel_history.cpp" line="102"/>
         <source>black: the vertex colours mixed here are black</source>
         <translation>preto: as cores dos vértices misturadas aqui são pretas</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="103"/>
+        <location filename="../views/pixel_history.cpp" line="104"/>
         <source>black: the object colour is black</source>
         <translation>preto: a cor do objeto é preta</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="104"/>
+        <location filename="../views/pixel_history.cpp" line="105"/>
         <source>black: the light takes away what the ambient term adds</source>
         <translation>preto: a luz tira o que o termo ambiente acrescenta</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="105"/>
+        <location filename="../views/pixel_history.cpp" line="106"/>
         <source>black: zero normal and no ambient</source>
         <translation>preto: normal nula e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="106"/>
+        <location filename="../views/pixel_history.cpp" line="107"/>
         <source>black: no light and no ambient</source>
         <translation>preto: sem luz e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="107"/>
+        <location filename="../views/pixel_history.cpp" line="108"/>
         <source>black: the light is at the point and no ambient</source>
         <translation>preto: a luz está no próprio ponto e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="108"/>
+        <location filename="../views/pixel_history.cpp" line="109"/>
         <source>black: N.L &lt; 0 and no ambient</source>
         <translation>preto: N.L &lt; 0 e sem ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_history.cpp" line="109"/>
+        <location filename="../views/pixel_history.cpp" line="110"/>
         <source>black: the diffuse and specular terms are 0 here and there is no ambient</source>
         <translation>preto: os termos difuso e especular valem 0 aqui e não há ambiente</translation>
     </message>
@@ -3731,17 +5616,17 @@
         <translation>(omitida)</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="160"/>
+        <location filename="../views/stage_strip.cpp" line="161"/>
         <source>%1 is skipped: %2</source>
         <translation>Etapa omitida (%1): %2</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="162"/>
+        <location filename="../views/stage_strip.cpp" line="163"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="211"/>
+        <location filename="../views/stage_strip.cpp" line="212"/>
         <source>while stepping, stages 5-7 run together, fragment by fragment</source>
         <translation>no passo a passo, as etapas 5-7 rodam juntas, fragmento a fragmento</translation>
     </message>
@@ -4259,87 +6144,87 @@
 <context>
     <name>rasterlab::ZBufferView</name>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="157"/>
+        <location filename="../views/zbuffer_view.cpp" line="160"/>
         <source>Automatic range (nearest to farthest drawn)</source>
         <translation>Faixa automática (do mais próximo ao mais distante desenhado)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="173"/>
+        <location filename="../views/zbuffer_view.cpp" line="176"/>
         <source>Grey (near white)</source>
         <translation>Cinza (perto = branco)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="174"/>
+        <location filename="../views/zbuffer_view.cpp" line="177"/>
         <source>False colour (near red, far blue)</source>
         <translation>Cores falsas (perto vermelho, longe azul)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="186"/>
+        <location filename="../views/zbuffer_view.cpp" line="189"/>
         <source>Nearest (white / red):</source>
         <translation>Mais próximo (branco / vermelho):</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="187"/>
+        <location filename="../views/zbuffer_view.cpp" line="190"/>
         <source>Farthest (dark / blue):</source>
         <translation>Mais distante (escuro / azul):</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="188"/>
+        <location filename="../views/zbuffer_view.cpp" line="191"/>
         <source>Colours:</source>
         <translation>Cores:</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="252"/>
+        <location filename="../views/zbuffer_view.cpp" line="255"/>
         <source>+&amp;infin;</source>
         <translation>+&amp;infin;</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="256"/>
+        <location filename="../views/zbuffer_view.cpp" line="259"/>
         <source>the view-space z of P&apos;</source>
         <translation>o z de P&apos; no espaço de vista</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="256"/>
+        <location filename="../views/zbuffer_view.cpp" line="259"/>
         <source>the NDC z</source>
         <translation>o z em NDC</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="264"/>
+        <location filename="../views/zbuffer_view.cpp" line="267"/>
         <source>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</source>
         <translation>&lt;b&gt;Z-buffer.&lt;/b&gt; Todo pixel começa em %1. A profundidade de cada fragmento, %2 (%3), é comparada com a armazenada; ela é escrita, com sua cor, só quando %4. Até agora: %5 fragmentos testados, %6 escritos, %7 rejeitados.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="319"/>
+        <location filename="../views/zbuffer_view.cpp" line="322"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="336"/>
+        <location filename="../views/zbuffer_view.cpp" line="339"/>
         <source>No pixel holds a triangle: the buffer is all clear value.</source>
         <translation>Nenhum pixel contém um triângulo: o buffer inteiro está no valor de limpeza.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="339"/>
+        <location filename="../views/zbuffer_view.cpp" line="342"/>
         <source>Drawn depths from %1 to %2; shown from %3 to %4.</source>
         <translation>Profundidades desenhadas de %1 a %2; exibidas de %3 a %4.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="345"/>
+        <location filename="../views/zbuffer_view.cpp" line="348"/>
         <source>%1 pixels nearer and %2 farther than the range are drawn at its ends.</source>
         <translation>%1 pixels mais próximos e %2 mais distantes que a faixa aparecem nas suas extremidades.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="359"/>
+        <location filename="../views/zbuffer_view.cpp" line="362"/>
         <source>+inf</source>
         <translation>+inf</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="360"/>
+        <location filename="../views/zbuffer_view.cpp" line="363"/>
         <source>x %1, y %2: no triangle; the depth stays at the clear value %3</source>
         <translation>x %1, y %2: nenhum triângulo; a profundidade fica no valor de limpeza %3</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="365"/>
+        <location filename="../views/zbuffer_view.cpp" line="368"/>
         <source>x %1, y %2: depth %3, triangle %4</source>
         <translation>x %1, y %2: profundidade %3, triângulo %4</translation>
     </message>

@@ -16,6 +16,7 @@
 #include "inspection.h"
 #include "number_text.h"
 #include "output_image.h"
+#include "pipeline_messages.h"
 #include "wrapping_check_box.h"
 
 namespace rasterlab {
@@ -245,7 +246,7 @@ void PainterView::recompute() {
         if (result)
             m_comparison = std::make_shared<const rl::PainterComparison>(std::move(result).value());
         else
-            m_error = QString::fromStdString(result.error().toString());
+            m_error = rasterlab::translated(result.error());
     }
     m_model->setComparison(m_comparison);
     m_table->setColumnHidden(1, !m_comparison || m_comparison->painter->scene->draws.size() < 2);

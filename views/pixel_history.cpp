@@ -5,6 +5,7 @@
 
 #include "inspection.h"
 #include "output_image.h"
+#include "pipeline_messages.h"
 #include "pixel_text.h"
 #include "renderer.h"
 
@@ -182,7 +183,7 @@ std::optional<std::uint32_t> PixelHistory::addTracedRows(const Source& source,
     const auto traced = rl::traceFrame(frame.scene, rl::RenderOptions{}, probe);
     if (!traced) {
         m_verdict = tr("The frame could not be traced again: %1")
-                        .arg(QString::fromStdString(traced.error().toString()));
+                        .arg(rasterlab::translated(traced.error()));
         return std::nullopt;
     }
     std::uint32_t finalWriterRow = 0;

@@ -296,10 +296,10 @@ Result<AccuracyReport> measureAccuracy(const Scene& scene, const AccuracyOptions
     std::vector<Cached> references;
     for (const AccuracyMode& mode : modes) {
         if (options.cancel && options.cancel->load())
-            return makeError(ErrorCode::Usage, {}, "measurement cancelled");
+            return makeError(ErrorCode::Usage, {}, "measurement cancelled"_msg);
         if (mode.supersample < 1 || mode.supersample > 16)
             return makeError(ErrorCode::Usage, {},
-                             "supersampling must be 1 to 16 samples per axis");
+                             "supersampling must be 1 to 16 samples per axis"_msg);
         auto modeScene = std::make_shared<Scene>(scene);
         modeScene->rules = rulesOf(mode.rules);
         modeScene->width = scene.width * mode.supersample;

@@ -102,14 +102,16 @@ Result<PainterComparison> compare(const Scene& scene, std::shared_ptr<const Fram
 Result<PainterComparison> compareWithZBuffer(const std::shared_ptr<const Scene>& scene,
                                              const RenderOptions& options) {
     if (!scene)
-        return makeError(ErrorCode::Usage, SourceLocation{"<scene>", 0, 0}, "no scene to render");
+        return makeError(ErrorCode::Usage, SourceLocation{"<scene>", 0, 0},
+                         "no scene to render"_msg);
     return compare(*scene, nullptr, nullptr, options);
 }
 
 Result<PainterComparison> compareWithZBuffer(const std::shared_ptr<const FrameTrace>& frame,
                                              const RenderOptions& options) {
     if (!frame || !frame->scene)
-        return makeError(ErrorCode::Usage, SourceLocation{"<scene>", 0, 0}, "no scene to render");
+        return makeError(ErrorCode::Usage, SourceLocation{"<scene>", 0, 0},
+                         "no scene to render"_msg);
     const Scene& scene = *frame->scene;
     return compare(scene, everyDraw(scene, ShadingModel::Painter) ? frame : nullptr,
                    everyDraw(scene, ShadingModel::Flat) ? frame : nullptr, options);

@@ -166,11 +166,11 @@ private:
     std::vector<Node> m_nodes;
 };
 
-Error unsupported(const std::string& what) {
-    return makeError(ErrorCode::Unsupported, {},
-                     "the exact reference handles course scenes (the course camera, view z as "
-                     "depth, the course's Phong lighting with the material's colour); " +
-                         what);
+Error unsupported(const Message& what) {
+    return makeError(
+        ErrorCode::Unsupported, {},
+        "the exact reference handles course scenes (the course camera, view z as "
+        "depth, the course's Phong lighting with the material's colour); %1"_msg(what));
 }
 
 }  // namespace
@@ -232,16 +232,17 @@ namespace {
 
 // Why the reference cannot render a scene, or nothing.
 std::optional<Error> whyNotSupported(const Scene& scene) {
-    if (!scene.camera) return unsupported("this scene has no course camera");
+    if (!scene.camera) return unsupported("this scene has no course camera"_msg);
     if (scene.conventions.depth != DepthSource::ViewZ)
-        return unsupported("this scene's depth is NDC z");
+        return unsupported("this scene's depth is NDC z"_msg);
     for (const Draw& draw : scene.draws) {
-        if (draw.clipFromView) return unsupported(draw.name + " has its own projection matrix");
+        if (draw.clipFromView)
+            return unsupported("%1 has its own projection matrix"_msg(draw.name));
         if (draw.lighting != LightingModel::CoursePhong)
-            return unsupported(draw.name + " is not lit by the course's Phong model");
+            return unsupported("%1 is not lit by the course's Phong model"_msg(draw.name));
         if (draw.colour != ColourSource::Material)
-            return unsupported(draw.name + " takes its colour from its vertices or a texture");
-        if (draw.flatNormals) return unsupported(draw.name + " is lit with flat normals");
+            return unsupported("%1 takes its colour from its vertices or a texture"_msg(draw.name));
+        if (draw.flatNormals) return unsupported("%1 is lit with flat normals"_msg(draw.name));
     }
     return std::nullopt;
 }
@@ -371,7 +372,7 @@ Result<ReferenceImage> renderReference(const Scene& scene, const ViewTransform& 
                                        const Normals& normals, const ReferenceOptions& options) {
     if (const std::optional<Error> why = whyNotSupported(scene)) return *why;
     if (options.samplesPerAxis < 1 || options.samplesPerAxis > 16)
-        return makeError(ErrorCode::Usage, {}, "samples per axis must be 1 to 16");
+        return makeError(ErrorCode::Usage, {}, "samples per axis must be 1 to 16"_msg);
 
     ReferenceImage out;
     out.samplesPerAxis = options.samplesPerAxis;

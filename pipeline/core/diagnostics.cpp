@@ -15,8 +15,9 @@ std::string Error::toString() const {
     return where.toString() + ": " + message;
 }
 
-Error makeError(ErrorCode code, SourceLocation where, std::string message) {
-    return Error{code, std::move(message), std::move(where)};
+Error makeError(ErrorCode code, SourceLocation where, Message message) {
+    std::string english = message.english();
+    return Error{code, std::move(english), std::move(where), std::move(message)};
 }
 
 std::string Diagnostic::toString() const {
@@ -24,12 +25,15 @@ std::string Diagnostic::toString() const {
     return where.toString() + ": " + kind + ": " + message;
 }
 
-void Diagnostics::warn(SourceLocation where, std::string message) {
-    m_items.push_back({Severity::Warning, std::move(message), std::move(where)});
+void Diagnostics::warn(SourceLocation where, Message message) {
+    std::string english = message.english();
+    m_items.push_back(
+        {Severity::Warning, std::move(english), std::move(where), std::move(message)});
 }
 
-void Diagnostics::note(SourceLocation where, std::string message) {
-    m_items.push_back({Severity::Note, std::move(message), std::move(where)});
+void Diagnostics::note(SourceLocation where, Message message) {
+    std::string english = message.english();
+    m_items.push_back({Severity::Note, std::move(english), std::move(where), std::move(message)});
 }
 
 void Diagnostics::append(const Diagnostics& other) {

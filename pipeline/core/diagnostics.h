@@ -1,13 +1,16 @@
 // Bad input is a value, not an exception: readers and stages return Result<T>, whose
 // error prints as "file:line:col: message" and names what was expected and what was found.
 // Warnings (trailing data, unused vertices, a mirrored image ...) are collected in
-// Diagnostics and shown beside the result; they never stop a render.
+// Diagnostics and shown beside the result; they never stop a render. Each message is kept in
+// English and as a template with its arguments (message.h), which the window translates.
 #pragma once
 
 #include <string>
 #include <utility>
 #include <variant>
 #include <vector>
+
+#include "message.h"
 
 namespace rl {
 
@@ -35,11 +38,19 @@ struct Error {
     ErrorCode code = ErrorCode::Syntax;
     std::string message;  // English; says what was expected and what was found
     SourceLocation where;
+    Message translatable;  // the same message as a template and its arguments
 
     std::string toString() const;  // "file:line:col: message"
 };
 
-Error makeError(ErrorCode code, SourceLocation where, std::string message);
+Error makeError(ErrorCode code, SourceLocation where, Message message);
+#ifndef RASTERLAB_PIPELINE
+// An error in plain English, for code outside the pipeline (tests, the app's own checks): the
+// window shows it as it is. Inside the pipeline every message is a template (message.h).
+inline Error makeError(ErrorCode code, SourceLocation where, std::string message) {
+    return makeError(code, std::move(where), Message::untranslated(std::move(message)));
+}
+#endif
 
 // Either a value or an Error. The pipeline never throws; it returns one of these.
 template <typename T>
@@ -75,8 +86,9 @@ enum class Severity { Note, Warning };
 
 struct Diagnostic {
     Severity severity = Severity::Warning;
-    std::string message;
+    std::string message;  // English
     SourceLocation where;
+    Message translatable;  // the same message as a template and its arguments
 
     std::string toString() const;  // "file:line:col: warning: message"
 };
@@ -84,8 +96,8 @@ struct Diagnostic {
 // An ordered list of notes and warnings, appended to by readers and stages.
 class Diagnostics {
 public:
-    void warn(SourceLocation where, std::string message);
-    void note(SourceLocation where, std::string message);
+    void warn(SourceLocation where, Message message);
+    void note(SourceLocation where, Message message);
     void append(const Diagnostics& other);
 
     const std::vector<Diagnostic>& items() const { return m_items; }

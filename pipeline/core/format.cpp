@@ -33,8 +33,4 @@ std::string formatVector(const dvec3& value) {
     return s;
 }
 
-std::string countOf(std::size_t count, const char* one, const char* many) {
-    return std::to_string(count) + ' ' + (count == 1 ? one : many);
-}
-
 }  // namespace rl

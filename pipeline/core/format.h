@@ -11,7 +11,5 @@ namespace rl {
 std::string formatNumber(double value);               // like "%g": "0.667", "1e-08", "300"
 std::string formatFixed(double value, int decimals);  // like "%.4f": "162.0000"
 std::string formatVector(const dvec3& value);         // "(0.667, 0.172, -1)"
-// "1 triangle was", "3 triangles were": the count, then the singular or the plural words.
-std::string countOf(std::size_t count, const char* one, const char* many);
 
 }  // namespace rl

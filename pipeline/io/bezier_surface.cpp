@@ -21,27 +21,23 @@ Result<BezierHeader> readBezierHeader(const LineScanner& scanner, const TextLine
         const Token& token = header.tokens[static_cast<std::size_t>(k)];
         const long long value = *parseInteger(token.text);  // an integer: detected so
         if (value < 1 || value > kMaxBezierDegree)
-            return makeError(ErrorCode::Range, scanner.at(token),
-                             std::string("expected the degree ") + (k == 0 ? "m" : "n") +
-                                 " of the Bezier surface (an integer from 1 to " +
-                                 std::to_string(kMaxBezierDegree) + "), found " +
-                                 quoted(token.text));
+            return makeError(
+                ErrorCode::Range, scanner.at(token),
+                "expected the degree %1 of the Bezier surface (an integer from 1 to "
+                "%2), found %3"_msg(k == 0 ? "m" : "n", kMaxBezierDegree, quoted(token.text)));
         degree[k] = static_cast<int>(value);
     }
     if (header.tokens.size() > 2)
-        diagnostics.warn(
-            scanner.at(header.tokens[2]),
-            "ignored " +
-                plural(static_cast<long long>(header.tokens.size() - 2), "value", "values") +
-                " after the Bezier surface's two degrees");
+        diagnostics.warn(scanner.at(header.tokens[2]),
+                         "ignored %1 after the Bezier surface's two degrees"_msg(
+                             valuesText(static_cast<long long>(header.tokens.size() - 2))));
     const Token& evaluationsToken = evaluationsLine.tokens[0];
     const long long evaluations = *parseInteger(evaluationsToken.text);
     if (evaluations < 2 || evaluations > kMaxBezierEvaluations)
-        return makeError(ErrorCode::Range, scanner.at(evaluationsToken),
-                         "expected the number of evaluations per direction (an integer from 2 "
-                         "to " +
-                             std::to_string(kMaxBezierEvaluations) + "), found " +
-                             quoted(evaluationsToken.text));
+        return makeError(
+            ErrorCode::Range, scanner.at(evaluationsToken),
+            "expected the number of evaluations per direction (an integer from 2 "
+            "to %1), found %2"_msg(kMaxBezierEvaluations, quoted(evaluationsToken.text)));
     return BezierHeader{degree[0], degree[1], evaluations};
 }
 
@@ -51,14 +47,13 @@ Result<std::vector<dvec3>> readControlPoints(LineScanner& scanner, const TextLin
                                              Diagnostics& diagnostics) {
     const int m = surface.m, n = surface.n;
     const long long pointCount = static_cast<long long>(m + 1) * (n + 1);
-    const std::string degrees = std::to_string(m) + " x " + std::to_string(n);
     const long long available = scanner.countRemainingLines();
     if (pointCount > available)
         return makeError(ErrorCode::Range, scanner.at(header.tokens[0]),
-                         "the header declares a Bezier surface of degrees " + degrees + ", so " +
-                             std::to_string(pointCount) +
-                             " control points (one a line), but only " +
-                             plural(available, "line follows", "lines follow"));
+                         "the header declares a Bezier surface of degrees %1 x %2, so %3 control "
+                         "points (one a line), but only %4"_msg(
+                             m, n, pointCount,
+                             counted(available, "%1 line follows"_msg, "%1 lines follow"_msg)));
 
     std::vector<dvec3> control;
     control.reserve(static_cast<std::size_t>(pointCount));
@@ -67,9 +62,7 @@ Result<std::vector<dvec3>> readControlPoints(LineScanner& scanner, const TextLin
     for (int i = 0; i <= m; ++i) {
         for (int j = 0; j <= n; ++j) {
             scanner.next(line);  // present: counted above
-            const std::string which =
-                "control point (" + std::to_string(i) + ", " + std::to_string(j) + ")";
-            auto p = readPointLine(scanner, line, which);
+            auto p = readPointLine(scanner, line, "control point (%1, %2)"_msg(i, j));
             if (!p) return p.error();
             extra.note(scanner, line);
             control.push_back(*p);
@@ -79,8 +72,8 @@ Result<std::vector<dvec3>> readControlPoints(LineScanner& scanner, const TextLin
     if (scanner.next(line)) {
         const int remaining = 1 + scanner.countRemainingLines();
         diagnostics.warn(scanner.at(line.number, 1),
-                         "ignored " + plural(remaining, "line", "lines") + " after the " +
-                             std::to_string(pointCount) + " control points of the Bezier surface");
+                         "ignored %1 after the %2 control points of the Bezier surface"_msg(
+                             linesText(remaining), pointCount));
     }
     return control;
 }

@@ -20,29 +20,28 @@ struct MeshHeader {
 // The header "vertices triangles"; a Movie.BYU header gets a message of its own.
 Result<MeshHeader> readMeshHeader(LineScanner& scanner, Diagnostics& diagnostics) {
     TextLine line;
-    const std::string header = "the header 'vertices triangles' (two integers)";
+    const Message header = "the header 'vertices triangles' (two integers)"_msg;
     if (!scanner.next(line))
         return makeError(ErrorCode::MissingData, scanner.endOfInput(),
-                         "expected " + header + ", found the end of the file");
+                         "expected %1, found the end of the file"_msg(header));
     if (isComment(line.tokens[0])) return commentError(scanner, line.tokens[0], header);
     if (isMovieByuHeader(line)) {
         return makeError(ErrorCode::Unsupported, scanner.at(line.tokens[0]),
                          "this is an original Movie.BYU file (header 'parts vertices polygons "
-                         "edges'), not the course's .byu format (header 'vertices triangles')");
+                         "edges'), not the course's .byu format (header 'vertices triangles')"_msg);
     }
-    auto vertexCount = readCount(scanner, line.tokens[0], "vertices");
+    auto vertexCount = readCount(scanner, line.tokens[0], "vertices"_msg);
     if (!vertexCount) return vertexCount.error();
     if (line.tokens.size() < 2)
         return makeError(ErrorCode::Syntax, scanner.afterLast(line),
                          "expected the number of triangles after the number of vertices, "
-                         "found the end of the line");
-    auto triangleCount = readCount(scanner, line.tokens[1], "triangles");
+                         "found the end of the line"_msg);
+    auto triangleCount = readCount(scanner, line.tokens[1], "triangles"_msg);
     if (!triangleCount) return triangleCount.error();
     if (line.tokens.size() > 2)
-        diagnostics.warn(
-            scanner.at(line.tokens[2]),
-            "ignored " + plural(static_cast<long long>(line.tokens.size() - 2), "value", "values") +
-                " after the header's two counts");
+        diagnostics.warn(scanner.at(line.tokens[2]),
+                         "ignored %1 after the header's two counts"_msg(
+                             valuesText(static_cast<long long>(line.tokens.size() - 2))));
     return MeshHeader{*vertexCount, *triangleCount, line};
 }
 
@@ -53,11 +52,9 @@ Status checkMeshFits(LineScanner& scanner, const MeshHeader& header) {
     if (scanner.next(line)) {
         if (line.tokens.size() == 1 && parseInteger(line.tokens[0].text)) {
             return makeError(ErrorCode::Unsupported, scanner.at(header.line.tokens[0]),
-                             "this looks like a course Bezier surface (degrees " +
-                                 std::to_string(header.vertices) + " x " +
-                                 std::to_string(header.triangles) + ", " +
-                                 std::string(line.tokens[0].text) +
-                                 " evaluations per direction), not a triangle mesh");
+                             "this looks like a course Bezier surface (degrees %1 x %2, %3 "
+                             "evaluations per direction), not a triangle mesh"_msg(
+                                 header.vertices, header.triangles, line.tokens[0].text));
         }
         scanner.unread();
     }
@@ -68,10 +65,10 @@ Status checkMeshFits(LineScanner& scanner, const MeshHeader& header) {
         const unsigned long long declared = static_cast<unsigned long long>(header.vertices) +
                                             static_cast<unsigned long long>(header.triangles);
         return makeError(ErrorCode::Range, scanner.at(header.line.tokens[0]),
-                         "the header declares " + plural(header.vertices, "vertex", "vertices") +
-                             " and " + plural(header.triangles, "triangle", "triangles") + " (" +
-                             std::to_string(declared) + (declared == 1 ? " line" : " lines") +
-                             "), but only " + plural(available, "line follows", "lines follow"));
+                         "the header declares %1 and %2 (%3), but only %4"_msg(
+                             verticesText(header.vertices), trianglesText(header.triangles),
+                             (declared == 1 ? "%1 line"_msg : "%1 lines"_msg)(declared),
+                             counted(available, "%1 line follows"_msg, "%1 lines follow"_msg)));
     }
     return success();
 }
@@ -81,9 +78,7 @@ Status readMeshVertices(LineScanner& scanner, const MeshHeader& header, Mesh& me
     TextLine line;
     for (long long i = 0; i < header.vertices; ++i) {
         scanner.next(line);  // present: counted by checkMeshFits
-        const std::string which =
-            "vertex " + std::to_string(i + 1) + " of " + std::to_string(header.vertices);
-        auto p = readPointLine(scanner, line, which);
+        auto p = readPointLine(scanner, line, "vertex %1 of %2"_msg(i + 1, header.vertices));
         if (!p) return p.error();
         extra.note(scanner, line);
         mesh.positions.emplace_back(*p, 1.0);
@@ -94,37 +89,35 @@ Status readMeshVertices(LineScanner& scanner, const MeshHeader& header, Mesh& me
 // Triangle i (0 the first): three 1-based indices, returned 0-based.
 Result<std::array<std::uint32_t, 3>> readTriangle(const LineScanner& scanner, const TextLine& line,
                                                   long long i, const MeshHeader& header) {
-    const std::string which = "triangle " + std::to_string(i + 1);
-    const std::string of = " of " + std::to_string(header.triangles);
+    const long long number = i + 1;
     if (isComment(line.tokens[0]))
-        return commentError(scanner, line.tokens[0], which + of + " (three vertex indices)");
+        return commentError(
+            scanner, line.tokens[0],
+            "triangle %1 of %2 (three vertex indices)"_msg(number, header.triangles));
     if (line.tokens.size() < 3)
         return makeError(ErrorCode::Syntax, scanner.afterLast(line),
-                         "expected 3 vertex indices for " + which + of + ", found " +
-                             std::to_string(line.tokens.size()));
+                         "expected 3 vertex indices for triangle %1 of %2, found %3"_msg(
+                             number, header.triangles, line.tokens.size()));
     if (line.tokens.size() > 3 && parseInteger(line.tokens[3].text))
         return makeError(ErrorCode::Unsupported, scanner.at(line.tokens[3]),
-                         "polygon " + std::to_string(i + 1) + " has " +
-                             std::to_string(line.tokens.size()) +
-                             " vertex indices, but only triangles (3 indices) are supported");
+                         "polygon %1 has %2 vertex indices, but only triangles (3 indices) are "
+                         "supported"_msg(number, line.tokens.size()));
     std::array<std::uint32_t, 3> tri{};
     for (std::size_t k = 0; k < 3; ++k) {
         const Token& token = line.tokens[k];
         const auto index = parseInteger(token.text);
         if (!index)
             return makeError(ErrorCode::Syntax, scanner.at(token),
-                             "expected a vertex index (a positive integer) for " + which +
-                                 ", found " + quoted(token.text));
+                             "expected a vertex index (a positive integer) for triangle %1, found "
+                             "%2"_msg(number, quoted(token.text)));
         if (*index < 1)
             return makeError(ErrorCode::Range, scanner.at(token),
-                             which + " refers to vertex " + std::to_string(*index) +
-                                 ", but indices are 1-based (1 to " +
-                                 std::to_string(header.vertices) + ")");
+                             "triangle %1 refers to vertex %2, but indices are 1-based (1 to "
+                             "%3)"_msg(number, *index, header.vertices));
         if (*index > header.vertices)
             return makeError(ErrorCode::Range, scanner.at(token),
-                             which + " refers to vertex " + std::to_string(*index) +
-                                 ", but the file declares only " +
-                                 plural(header.vertices, "vertex", "vertices"));
+                             "triangle %1 refers to vertex %2, but the file declares only %3"_msg(
+                                 number, *index, verticesText(header.vertices)));
         tri[k] = static_cast<std::uint32_t>(*index - 1);
     }
     return tri;
@@ -152,11 +145,11 @@ void warnTrailingMeshLines(LineScanner& scanner, const MeshHeader& header,
     TextLine line;
     if (!scanner.next(line)) return;
     const int remaining = 1 + scanner.countRemainingLines();
-    diagnostics.warn(scanner.at(line.number, 1),
-                     "ignored " + plural(remaining, "line", "lines") + " after the declared " +
-                         plural(header.vertices, "vertex", "vertices") + " and " +
-                         plural(header.triangles, "triangle", "triangles") +
-                         " (the header's counts may be wrong, or a second object follows)");
+    diagnostics.warn(
+        scanner.at(line.number, 1),
+        "ignored %1 after the declared %2 and %3 (the header's counts may be wrong, "
+        "or a second object follows)"_msg(linesText(remaining), verticesText(header.vertices),
+                                          trianglesText(header.triangles)));
 }
 
 }  // namespace

@@ -14,57 +14,57 @@ namespace {
 
 // The line layouts, shared by their readers and by the detection.
 constexpr FieldSpec kUfpeCamera[] = {
-    {"C", "the camera position", kThree},
-    {"N", "the view direction", kThree},
-    {"V", "the up vector", kThree},
-    {"d hx hy", "the projection distance and half-sizes", kThree},
+    {"C", "the camera position"_msg, kThree},
+    {"N", "the view direction"_msg, kThree},
+    {"V", "the up vector"_msg, kThree},
+    {"d hx hy", "the projection distance and half-sizes"_msg, kThree},
 };
 constexpr FieldSpec kUfrpeCamera6[] = {
-    {"N", "the view direction", kThree},
-    {"V", "the up vector", kThree},
-    {"d", "the projection distance", kOne},
-    {"hx", "the horizontal half-size of the window", kOne},
-    {"hy", "the vertical half-size of the window", kOne},
-    {"C", "the camera position", kThree},
+    {"N", "the view direction"_msg, kThree},
+    {"V", "the up vector"_msg, kThree},
+    {"d", "the projection distance"_msg, kOne},
+    {"hx", "the horizontal half-size of the window"_msg, kOne},
+    {"hy", "the vertical half-size of the window"_msg, kOne},
+    {"C", "the camera position"_msg, kThree},
 };
 constexpr FieldSpec kUfrpeCamera5[] = {
-    {"C", "the camera position", kThree},   {"N", "the view direction", kThree},
-    {"V", "the up vector", kThree},         {"hx hy", "the half-sizes of the window", kTwo},
-    {"d", "the projection distance", kOne},
+    {"C", "the camera position"_msg, kThree},   {"N", "the view direction"_msg, kThree},
+    {"V", "the up vector"_msg, kThree},         {"hx hy", "the half-sizes of the window"_msg, kTwo},
+    {"d", "the projection distance"_msg, kOne},
 };
 constexpr FieldSpec kUfpeLighting[] = {
-    {"Pl", "the light position", kThree},
-    {"ka", "the ambient coefficient", kOne},
-    {"Ia", "the ambient light colour", kThree},
-    {"kd", "the diffuse coefficient", kOne | kThree},
-    {"Od", "the diffuse colour of the object", kThree},
-    {"ks", "the specular coefficient", kOne},
-    {"Il", "the light colour", kThree},
-    {"n", "the specular exponent", kOne},
+    {"Pl", "the light position"_msg, kThree},
+    {"ka", "the ambient coefficient"_msg, kOne},
+    {"Ia", "the ambient light colour"_msg, kThree},
+    {"kd", "the diffuse coefficient"_msg, kOne | kThree},
+    {"Od", "the diffuse colour of the object"_msg, kThree},
+    {"ks", "the specular coefficient"_msg, kOne},
+    {"Il", "the light colour"_msg, kThree},
+    {"n", "the specular exponent"_msg, kOne},
 };
 // The multi-light file's first seven lines; then L pairs of kUfpeMultiLight.
 constexpr FieldSpec kUfpeMultiHead[] = {
-    {"ka", "the ambient coefficient", kOne},
-    {"Ia", "the ambient light colour", kThree},
-    {"kd", "the diffuse coefficient", kOne | kThree},
-    {"Od", "the diffuse colour of the object", kThree},
-    {"ks", "the specular coefficient", kOne},
-    {"n", "the specular exponent", kOne},
-    {"L", "the number of lights", kOne},
+    {"ka", "the ambient coefficient"_msg, kOne},
+    {"Ia", "the ambient light colour"_msg, kThree},
+    {"kd", "the diffuse coefficient"_msg, kOne | kThree},
+    {"Od", "the diffuse colour of the object"_msg, kThree},
+    {"ks", "the specular coefficient"_msg, kOne},
+    {"n", "the specular exponent"_msg, kOne},
+    {"L", "the number of lights"_msg, kOne},
 };
 constexpr FieldSpec kUfpeMultiLight[] = {
-    {"Pl", "the light position", kThree},
-    {"Il", "the light colour", kThree},
+    {"Pl", "the light position"_msg, kThree},
+    {"Il", "the light colour"_msg, kThree},
 };
 constexpr FieldSpec kUfrpeLighting[] = {
-    {"Iamb", "the ambient light colour", kThree},
-    {"Ka", "the ambient coefficient", kOne},
-    {"Il", "the light colour", kThree},
-    {"Pl", "the light position", kThree},
-    {"Kd", "the diffuse coefficient of each channel", kThree},
-    {"Od", "the diffuse colour of the object", kThree},
-    {"Ks", "the specular coefficient", kOne},
-    {"n", "the specular exponent", kOne},
+    {"Iamb", "the ambient light colour"_msg, kThree},
+    {"Ka", "the ambient coefficient"_msg, kOne},
+    {"Il", "the light colour"_msg, kThree},
+    {"Pl", "the light position"_msg, kThree},
+    {"Kd", "the diffuse coefficient of each channel"_msg, kThree},
+    {"Od", "the diffuse colour of the object"_msg, kThree},
+    {"Ks", "the specular coefficient"_msg, kOne},
+    {"n", "the specular exponent"_msg, kOne},
 };
 constexpr LightingNames kUfpeNames = {"ka", "Ia", "kd", "Od", "ks", "Il", "n"};
 constexpr LightingNames kUfrpeNames = {"Ka", "Iamb", "Kd", "Od", "Ks", "Il", "n"};
@@ -74,7 +74,7 @@ constexpr LightingNames kUfrpeNames = {"Ka", "Iamb", "Kd", "Od", "Ks", "Il", "n"
 Result<CourseCamera> readCourseCamera(std::string_view text, const std::string& fileName,
                                       Diagnostics& diagnostics) {
     LineScanner scanner(text, fileName);
-    auto fields = readFieldLines(scanner, kUfpeCamera, "camera", diagnostics);
+    auto fields = readFieldLines(scanner, kUfpeCamera, "the camera's %1"_msg, diagnostics);
     if (!fields) return fields.error();
     const auto& f = fields.value();
     return makeCamera(f[0], f[1], f[2], {&f[3], 0}, {&f[3], 1}, {&f[3], 2});
@@ -83,7 +83,7 @@ Result<CourseCamera> readCourseCamera(std::string_view text, const std::string& 
 Result<CourseLighting> readCourseLighting(std::string_view text, const std::string& fileName,
                                           Diagnostics& diagnostics) {
     LineScanner scanner(text, fileName);
-    auto fields = readFieldLines(scanner, kUfpeLighting, "lighting", diagnostics);
+    auto fields = readFieldLines(scanner, kUfpeLighting, "the lighting's %1"_msg, diagnostics);
     if (!fields) return fields.error();
     const auto& f = fields.value();
     LightingFields parts;
@@ -144,71 +144,80 @@ std::optional<LightingLayout> lightingLayoutFromName(std::string_view name) {
     return std::nullopt;
 }
 
-const char* cameraLayoutDescription(CameraLayout layout) {
+// The layouts for people, in menus (as text) and in messages (translated).
+MessageTemplate course_io::cameraLayoutText(CameraLayout layout) {
     switch (layout) {
-        case CameraLayout::Auto:
-            return "detected from the file";
         case CameraLayout::Ufpe:
-            return "UFPE (C; N; V; d hx hy)";
+            return "UFPE (C; N; V; d hx hy)"_msg;
         case CameraLayout::Ufrpe6:
-            return "UFRPE (N; V; d; hx; hy; C)";
+            return "UFRPE (N; V; d; hx; hy; C)"_msg;
         case CameraLayout::Ufrpe5:
-            return "UFRPE (C; N; V; hx hy; d)";
+            return "UFRPE (C; N; V; hx hy; d)"_msg;
         case CameraLayout::KeyValue:
-            return "key = value";
+            return "key = value"_msg;
+        case CameraLayout::Auto:
+            break;
     }
-    return "";
+    return "detected from the file"_msg;
+}
+
+MessageTemplate course_io::lightingLayoutText(LightingLayout layout) {
+    switch (layout) {
+        case LightingLayout::Ufpe:
+            return "UFPE (Pl; ka; Ia; kd; Od; ks; Il; n)"_msg;
+        case LightingLayout::UfpeMulti:
+            return "UFPE multi-light (ka; Ia; kd; Od; ks; n; L; L times Pl; Il)"_msg;
+        case LightingLayout::Ufrpe:
+            return "UFRPE (Iamb; Ka; Il; Pl; Kd; Od; Ks; n)"_msg;
+        case LightingLayout::KeyValue:
+            return "key = value"_msg;
+        case LightingLayout::Auto:
+            break;
+    }
+    return "detected from the file"_msg;
+}
+
+const char* cameraLayoutDescription(CameraLayout layout) {
+    return cameraLayoutText(layout).text();
 }
 
 const char* lightingLayoutDescription(LightingLayout layout) {
-    switch (layout) {
-        case LightingLayout::Auto:
-            return "detected from the file";
-        case LightingLayout::Ufpe:
-            return "UFPE (Pl; ka; Ia; kd; Od; ks; Il; n)";
-        case LightingLayout::UfpeMulti:
-            return "UFPE multi-light (ka; Ia; kd; Od; ks; n; L; L times Pl; Il)";
-        case LightingLayout::Ufrpe:
-            return "UFRPE (Iamb; Ka; Il; Pl; Kd; Od; Ks; n)";
-        case LightingLayout::KeyValue:
-            return "key = value";
-    }
-    return "";
+    return lightingLayoutText(layout).text();
 }
 
 namespace {
 
 // What the notes call each flavour.
-std::string cameraFlavour(CameraLayout layout) {
+Message cameraFlavour(CameraLayout layout) {
     switch (layout) {
         case CameraLayout::Ufpe:
-            return "a UFPE camera, C; N; V; d hx hy";
+            return "a UFPE camera, C; N; V; d hx hy"_msg;
         case CameraLayout::Ufrpe6:
-            return "a UFRPE camera, N; V; d; hx; hy; C";
+            return "a UFRPE camera, N; V; d; hx; hy; C"_msg;
         case CameraLayout::Ufrpe5:
-            return "a UFRPE camera, C; N; V; hx hy; d";
+            return "a UFRPE camera, C; N; V; hx hy; d"_msg;
         case CameraLayout::KeyValue:
-            return "a key = value camera";
+            return "a key = value camera"_msg;
         case CameraLayout::Auto:
             break;
     }
-    return "a camera";
+    return "a camera"_msg;
 }
 
-std::string lightingFlavour(LightingLayout layout) {
+Message lightingFlavour(LightingLayout layout) {
     switch (layout) {
         case LightingLayout::Ufpe:
-            return "a UFPE lighting file, Pl; ka; Ia; kd; Od; ks; Il; n";
+            return "a UFPE lighting file, Pl; ka; Ia; kd; Od; ks; Il; n"_msg;
         case LightingLayout::UfpeMulti:
-            return "a UFPE multi-light lighting file, ka; Ia; kd; Od; ks; n; L; L times Pl; Il";
+            return "a UFPE multi-light lighting file, ka; Ia; kd; Od; ks; n; L; L times Pl; Il"_msg;
         case LightingLayout::Ufrpe:
-            return "a UFRPE lighting file, Iamb; Ka; Il; Pl; Kd; Od; Ks; n";
+            return "a UFRPE lighting file, Iamb; Ka; Il; Pl; Kd; Od; Ks; n"_msg;
         case LightingLayout::KeyValue:
-            return "a key = value lighting file";
+            return "a key = value lighting file"_msg;
         case LightingLayout::Auto:
             break;
     }
-    return "a lighting file";
+    return "a lighting file"_msg;
 }
 
 // The shape detection looks at: for each non-blank line, how many numbers it starts with.
@@ -252,10 +261,10 @@ std::string countsText(const std::vector<int>& numbers) {
 }
 
 // "the 4 lines have 3, 3, 3, 3 numbers", "the 1 line has 1 number".
-std::string shapeText(const FileShape& shape) {
+Message shapeText(const FileShape& shape) {
     const std::size_t n = shape.numbers.size();
-    if (n == 1) return "the 1 line has " + plural(shape.numbers[0], "number", "numbers");
-    return "the " + std::to_string(n) + " lines have " + countsText(shape.numbers) + " numbers";
+    if (n == 1) return "the 1 line has %1"_msg(numbersText(shape.numbers[0]));
+    return "the %1 lines have %2 numbers"_msg(n, countsText(shape.numbers));
 }
 
 // One candidate layout for detection: the counts each of its lines accepts.
@@ -271,7 +280,7 @@ bool accepts(const FieldSpec& field, int count) {
 // How far a file is from a layout: lines with other counts, plus lines missing or extra.
 struct Distance {
     long long lines = 0;
-    std::string why;  // for a distance of 1: which line
+    Message why;  // for a distance of 1: which line
 };
 
 Distance distanceTo(const Profile& profile, const FileShape& shape) {
@@ -287,14 +296,13 @@ Distance distanceTo(const Profile& profile, const FileShape& shape) {
     if (distance.lines != 1) return distance;
     if (m == n) {
         const FieldSpec& field = *profile.fields[differing];
-        distance.why = "line " + std::to_string(shape.lines[differing]) + " has " +
-                       plural(shape.numbers[differing], "number", "numbers") + " where " +
-                       std::string(field.name) + " needs " + countText(field.counts);
+        distance.why = "line %1 has %2 where %3 needs %4"_msg(shape.lines[differing],
+                                                              numbersText(shape.numbers[differing]),
+                                                              field.name, countText(field.counts));
     } else if (m > n) {
-        distance.why =
-            "its last line, " + std::string(profile.fields[m - 1]->name) + ", is missing";
+        distance.why = "its last line, %1, is missing"_msg(profile.fields[m - 1]->name);
     } else {
-        distance.why = "line " + std::to_string(shape.lines[n - 1]) + " is one line more";
+        distance.why = "line %1 is one line more"_msg(shape.lines[n - 1]);
     }
     return distance;
 }
@@ -302,14 +310,14 @@ Distance distanceTo(const Profile& profile, const FileShape& shape) {
 // The detection's verdict: a layout (as an int) and why, or none.
 struct Detection {
     int layout = -1;
-    std::string why;
-    std::string ambiguity;  // when several layouts are one line away: their names
+    Message why;
+    Message ambiguity;  // when several layouts are one line away: their names
 };
 
 // Steps 2 and 3 of the rule in course_readers.h, over the candidate profiles (a layout may
 // have several, one per length). `describe` names a layout in messages.
 Detection chooseLayout(const std::vector<Profile>& profiles, const FileShape& shape,
-                       const char* (*describe)(int)) {
+                       MessageTemplate (*describe)(int)) {
     std::vector<std::pair<int, Distance>> best;  // the nearest profile of each layout
     for (const Profile& profile : profiles) {
         Distance d = distanceTo(profile, shape);
@@ -321,7 +329,7 @@ Detection chooseLayout(const std::vector<Profile>& profiles, const FileShape& sh
             it->second = std::move(d);
     }
     Detection detection;
-    const std::string shapeWhy = "no line contains '=' and " + shapeText(shape);
+    const Message shapeWhy = "no line contains '=' and %1"_msg(shapeText(shape));
     // A layout whose lines the file's first lines match exactly, with lines left over: the
     // known quirk of data after the counts (warned about when read). The longest such
     // layout wins, so that a stray line after a good file does not make it ambiguous.
@@ -338,8 +346,8 @@ Detection chooseLayout(const std::vector<Profile>& profiles, const FileShape& sh
         std::any_of(best.begin(), best.end(), [](const auto& b) { return b.second.lines == 0; });
     if (!exact && prefix) {
         detection.layout = prefix->layout;
-        detection.why = shapeWhy + ": its first " + std::to_string(prefix->fields.size()) +
-                        " lines fit this layout, and the rest is left over";
+        detection.why = "%1: its first %2 lines fit this layout, and the rest is left over"_msg(
+            shapeWhy, prefix->fields.size());
         return detection;
     }
     for (long long wanted : {0LL, 1LL}) {
@@ -348,26 +356,27 @@ Detection chooseLayout(const std::vector<Profile>& profiles, const FileShape& sh
             if (b.second.lines == wanted) at.push_back(&b);
         if (at.size() == 1) {
             detection.layout = at[0]->first;
-            detection.why = wanted == 0 ? shapeWhy + ", as in that layout"
-                                        : shapeWhy + ": no layout fits exactly, and this one is " +
-                                              "one line away (" + at[0]->second.why + ")";
+            detection.why =
+                wanted == 0 ? "%1, as in that layout"_msg(shapeWhy)
+                            : "%1: no layout fits exactly, and this one is one line away (%2)"_msg(
+                                  shapeWhy, at[0]->second.why);
             return detection;
         }
         if (at.size() > 1) {
-            std::vector<std::string> names;
+            std::vector<Message> names;
             for (const auto* b : at) names.emplace_back(describe(b->first));
-            detection.ambiguity = "one line away from " + listText(names);
+            detection.ambiguity = "one line away from %1"_msg(listText(names));
             return detection;
         }
     }
     return detection;
 }
 
-const char* describeCamera(int layout) {
-    return cameraLayoutDescription(static_cast<CameraLayout>(layout));
+MessageTemplate describeCamera(int layout) {
+    return cameraLayoutText(static_cast<CameraLayout>(layout));
 }
-const char* describeLighting(int layout) {
-    return lightingLayoutDescription(static_cast<LightingLayout>(layout));
+MessageTemplate describeLighting(int layout) {
+    return lightingLayoutText(static_cast<LightingLayout>(layout));
 }
 
 Profile profileOf(int layout, std::span<const FieldSpec> fields) {
@@ -410,53 +419,52 @@ SourceLocation startOf(std::string_view text, const std::string& fileName) {
 }
 
 // Runs the detection rule; on failure, the error naming the layouts tried.
+// What the file holds, for the error when no layout fits: "3 lines with 3, 3, 1 numbers".
+Message foundText(std::string_view text, const FileShape& shape, const Detection& detection) {
+    Message found;
+    if (shape.numbers.empty()) {
+        const bool empty = text.empty() || text == "\xEF\xBB\xBF";  // a BOM alone is empty
+        found = empty ? "an empty file"_msg : "only blank lines"_msg;
+    } else if (shape.numbers.size() == 1) {
+        found = "1 line with %1"_msg(numbersText(shape.numbers[0]));
+    } else {
+        found = "%1 lines with %2 numbers"_msg(shape.numbers.size(), countsText(shape.numbers));
+    }
+    if (detection.ambiguity.text().empty()) return found;
+    return "%1 (%2)"_msg(found, detection.ambiguity);
+}
+
 template <typename Layout>
-Result<std::pair<Layout, std::string>> detectLayout(std::string_view text,
-                                                    const std::string& fileName,
-                                                    const std::vector<Profile>& profiles,
-                                                    const char* (*describe)(int),
-                                                    const std::string& layoutsTried) {
+Result<std::pair<Layout, Message>> detectLayout(std::string_view text, const std::string& fileName,
+                                                const std::vector<Profile>& profiles,
+                                                MessageTemplate (*describe)(int),
+                                                const Message& layoutsTried) {
     const FileShape shape = shapeOf(text);
-    if (shape.hasEquals) return std::pair{Layout::KeyValue, std::string("lines contain '='")};
+    if (shape.hasEquals) return std::pair{Layout::KeyValue, Message("lines contain '='"_msg)};
     const Detection detection = chooseLayout(profiles, shape, describe);
     if (detection.layout >= 0)
         return std::pair{static_cast<Layout>(detection.layout), detection.why};
-    std::string found;
-    if (shape.numbers.empty()) {
-        const bool empty = text.empty() || text == "\xEF\xBB\xBF";  // a BOM alone is empty
-        found = empty ? "an empty file" : "only blank lines";
-    } else if (shape.numbers.size() == 1) {
-        found = "1 line with " + plural(shape.numbers[0], "number", "numbers");
-    } else {
-        found = std::to_string(shape.numbers.size()) + " lines with " + countsText(shape.numbers) +
-                " numbers";
-    }
-    if (!detection.ambiguity.empty()) found += " (" + detection.ambiguity + ")";
     return makeError(shape.numbers.empty() ? ErrorCode::MissingData : ErrorCode::Syntax,
                      startOf(text, fileName),
-                     "expected " + layoutsTried + " or key = value, found " + found +
-                         " (if the layout is known, choose it by hand: --camera-format / "
-                         "--lighting-format, or File > Course File Layouts)");
+                     "expected %1 or key = value, found %2 (if the layout is known, choose it by "
+                     "hand: --camera-format / --lighting-format, or File > Course File "
+                     "Layouts)"_msg(layoutsTried, foundText(text, shape, detection)));
 }
 
-const std::string kCamerasTried =
-    "a camera in one of the layouts UFPE (C; N; V; d hx hy), UFRPE (N; V; d; hx; hy; C), "
-    "UFRPE (C; N; V; hx hy; d)";
-const std::string kLightingsTried =
-    "lighting in one of the layouts UFPE (Pl; ka; Ia; kd; Od; ks; Il; n), UFPE multi-light (ka; "
-    "Ia; kd; Od; ks; n; L; L times Pl; Il), UFRPE (Iamb; Ka; Il; Pl; Kd; Od; Ks; n)";
+Result<std::pair<CameraLayout, Message>> detectCamera(std::string_view text,
+                                                      const std::string& fileName) {
+    return detectLayout<CameraLayout>(
+        text, fileName, cameraProfiles(), describeCamera,
+        "a camera in one of the layouts UFPE (C; N; V; d hx hy), UFRPE (N; V; d; hx; hy; C), "
+        "UFRPE (C; N; V; hx hy; d)"_msg);
+}
 
-Result<std::pair<CameraLayout, std::string>> detectCamera(std::string_view text,
+Result<std::pair<LightingLayout, Message>> detectLighting(std::string_view text,
                                                           const std::string& fileName) {
-    return detectLayout<CameraLayout>(text, fileName, cameraProfiles(), describeCamera,
-                                      kCamerasTried);
-}
-
-Result<std::pair<LightingLayout, std::string>> detectLighting(std::string_view text,
-                                                              const std::string& fileName) {
-    return detectLayout<LightingLayout>(text, fileName,
-                                        lightingProfiles(shapeOf(text).numbers.size()),
-                                        describeLighting, kLightingsTried);
+    return detectLayout<LightingLayout>(
+        text, fileName, lightingProfiles(shapeOf(text).numbers.size()), describeLighting,
+        "lighting in one of the layouts UFPE (Pl; ka; Ia; kd; Od; ks; Il; n), UFPE multi-light "
+        "(ka; Ia; kd; Od; ks; n; L; L times Pl; Il), UFRPE (Iamb; Ka; Il; Pl; Kd; Od; Ks; n)"_msg);
 }
 
 // ---- the readers of each layout
@@ -466,13 +474,13 @@ Result<CourseCamera> readCameraAs(std::string_view text, const std::string& file
     if (layout == CameraLayout::KeyValue) return readKeyValueCamera(text, fileName, diagnostics);
     LineScanner scanner(text, fileName);
     if (layout == CameraLayout::Ufrpe6) {  // N; V; d; hx; hy; C
-        auto f = readFieldLines(scanner, kUfrpeCamera6, "camera", diagnostics);
+        auto f = readFieldLines(scanner, kUfrpeCamera6, "the camera's %1"_msg, diagnostics);
         if (!f) return f.error();
         const auto& v = f.value();
         return makeCamera(v[5], v[0], v[1], {&v[2], 0}, {&v[3], 0}, {&v[4], 0});
     }
     if (layout == CameraLayout::Ufrpe5) {  // C; N; V; hx hy; d
-        auto f = readFieldLines(scanner, kUfrpeCamera5, "camera", diagnostics);
+        auto f = readFieldLines(scanner, kUfrpeCamera5, "the camera's %1"_msg, diagnostics);
         if (!f) return f.error();
         const auto& v = f.value();
         return makeCamera(v[0], v[1], v[2], {&v[4], 0}, {&v[3], 0}, {&v[3], 1});
@@ -491,33 +499,32 @@ Result<CourseLighting> readMultiLight(std::string_view text, const std::string& 
     const SourceLocation lAt = h[6].where[0];
     if (!(declared >= 1.0) || declared != std::floor(declared))
         return makeError(ErrorCode::Syntax, lAt,
-                         "expected the number of lights L (a positive whole number), found " +
-                             formatNumber(declared));
+                         "expected the number of lights L (a positive whole number), found %1"_msg(
+                             formatNumber(declared)));
     const long long available = scanner.countRemainingLines();
     if (declared > static_cast<double>(available / 2)) {
-        const std::string count = declared < 1e15 ? std::to_string(static_cast<long long>(declared))
-                                                  : formatNumber(declared);
-        return makeError(ErrorCode::Range, lAt,
-                         "L = " + count + " lights need " +
-                             (declared < 1e15 ? std::to_string(2 * static_cast<long long>(declared))
-                                              : "twice as many") +
-                             " lines after it (Pl and Il for each), but only " +
-                             plural(available, "line follows", "lines follow"));
+        const Message follow = counted(available, "%1 line follows"_msg, "%1 lines follow"_msg);
+        if (declared >= 1e15)
+            return makeError(ErrorCode::Range, lAt,
+                             "L = %1 lights need twice as many lines after it (Pl and Il for "
+                             "each), but only %2"_msg(formatNumber(declared), follow));
+        const auto count = static_cast<long long>(declared);
+        return makeError(
+            ErrorCode::Range, lAt,
+            "L = %1 lights need %2 lines after it (Pl and Il for each), but only %3"_msg(
+                count, 2 * count, follow));
     }
     const auto lightCount = static_cast<std::size_t>(declared);
     std::vector<FieldValue> pairs;
     pairs.reserve(2 * lightCount);
     for (std::size_t k = 0; k < lightCount; ++k) {
-        const std::string number = std::to_string(k + 1);
-        const std::string plName = "Pl of light " + number;
-        const std::string ilName = "Il of light " + number;
-        const FieldSpec pair[] = {{plName, kUfpeMultiLight[0].description, kThree},
-                                  {ilName, kUfpeMultiLight[1].description, kThree}};
+        const FieldSpec pair[] = {{"Pl", kUfpeMultiLight[0].description, kThree, k + 1},
+                                  {"Il", kUfpeMultiLight[1].description, kThree, k + 1}};
         auto fields = readFields(scanner, pair, diagnostics);
         if (!fields) return fields.error();
         for (FieldValue& f : fields.value()) pairs.push_back(std::move(f));
     }
-    warnTrailingLines(scanner, "lighting",
+    warnTrailingLines(scanner, "the lighting's %1"_msg,
                       static_cast<long long>(std::size(kUfpeMultiHead) + pairs.size()),
                       diagnostics);
     LightingFields parts;
@@ -543,7 +550,7 @@ Result<CourseLighting> readLightingAs(std::string_view text, const std::string& 
     if (layout == LightingLayout::UfpeMulti) return readMultiLight(text, fileName, diagnostics);
     if (layout == LightingLayout::Ufrpe) {  // Iamb; Ka; Il; Pl; Kd; Od; Ks; n
         LineScanner scanner(text, fileName);
-        auto f = readFieldLines(scanner, kUfrpeLighting, "lighting", diagnostics);
+        auto f = readFieldLines(scanner, kUfrpeLighting, "the lighting's %1"_msg, diagnostics);
         if (!f) return f.error();
         const auto& v = f.value();
         LightingFields parts;
@@ -559,16 +566,21 @@ Result<CourseLighting> readLightingAs(std::string_view text, const std::string& 
     return readCourseLighting(text, fileName, diagnostics);
 }
 
-// For an error under a layout the caller chose: what detection would have chosen instead.
+// An error under a layout the caller chose, followed by what detection would have chosen
+// instead.
 template <typename Layout>
-std::string forcedLayoutHint(Layout chosen, const char* chosenText,
-                             const Result<std::pair<Layout, std::string>>& detected,
-                             const char* (*describe)(int)) {
-    std::string hint = "; the layout was set to " + std::string(chosenText);
-    if (!detected) return hint;
-    if (detected->first == chosen) return {};
-    return hint + ", but the file looks like " + describe(static_cast<int>(detected->first)) +
-           " (" + detected->second + ")";
+Error withLayoutHint(const Error& error, Layout chosen,
+                     const Result<std::pair<Layout, Message>>& detected,
+                     MessageTemplate (*describe)(int)) {
+    const Message chosenText = describe(static_cast<int>(chosen));
+    if (!detected)
+        return makeError(error.code, error.where,
+                         "%1; the layout was set to %2"_msg(error.translatable, chosenText));
+    if (detected->first == chosen) return error;
+    return makeError(error.code, error.where,
+                     "%1; the layout was set to %2, but the file looks like %3 (%4)"_msg(
+                         error.translatable, chosenText,
+                         describe(static_cast<int>(detected->first)), detected->second));
 }
 
 }  // namespace
@@ -588,7 +600,7 @@ std::optional<LightingLayout> detectLightingLayout(std::string_view text) {
 Result<CourseCamera> readCameraFile(std::string_view text, const std::string& fileName,
                                     Diagnostics& diagnostics, CameraLayout layout) {
     CameraLayout chosen = layout;
-    std::string why = "the layout was chosen, not detected";
+    Message why = "the layout was chosen, not detected"_msg;
     if (layout == CameraLayout::Auto) {
         auto detected = detectCamera(text, fileName);
         if (!detected) return detected.error();
@@ -600,13 +612,10 @@ Result<CourseCamera> readCameraFile(std::string_view text, const std::string& fi
     if (!camera) {
         diagnostics.append(read);
         if (layout == CameraLayout::Auto) return camera.error();
-        Error error = camera.error();
-        error.message += forcedLayoutHint(chosen, cameraLayoutDescription(chosen),
-                                          detectCamera(text, fileName), describeCamera);
-        return error;
+        return withLayoutHint(camera.error(), chosen, detectCamera(text, fileName), describeCamera);
     }
     diagnostics.note(SourceLocation{fileName, 0, 0},
-                     "read as " + cameraFlavour(chosen) + " (" + why + ")");
+                     "read as %1 (%2)"_msg(cameraFlavour(chosen), why));
     diagnostics.append(read);
     return camera;
 }
@@ -614,7 +623,7 @@ Result<CourseCamera> readCameraFile(std::string_view text, const std::string& fi
 Result<CourseLighting> readLightingFile(std::string_view text, const std::string& fileName,
                                         Diagnostics& diagnostics, LightingLayout layout) {
     LightingLayout chosen = layout;
-    std::string why = "the layout was chosen, not detected";
+    Message why = "the layout was chosen, not detected"_msg;
     if (layout == LightingLayout::Auto) {
         auto detected = detectLighting(text, fileName);
         if (!detected) return detected.error();
@@ -626,13 +635,11 @@ Result<CourseLighting> readLightingFile(std::string_view text, const std::string
     if (!lighting) {
         diagnostics.append(read);
         if (layout == LightingLayout::Auto) return lighting.error();
-        Error error = lighting.error();
-        error.message += forcedLayoutHint(chosen, lightingLayoutDescription(chosen),
-                                          detectLighting(text, fileName), describeLighting);
-        return error;
+        return withLayoutHint(lighting.error(), chosen, detectLighting(text, fileName),
+                              describeLighting);
     }
     diagnostics.note(SourceLocation{fileName, 0, 0},
-                     "read as " + lightingFlavour(chosen) + " (" + why + ")");
+                     "read as %1 (%2)"_msg(lightingFlavour(chosen), why));
     diagnostics.append(read);
     return lighting;
 }

@@ -38,17 +38,15 @@ bool startsLikeNumber(std::string_view token) {
 
 }  // namespace
 
-std::string countText(unsigned counts) {
+Message countText(unsigned counts) {
     std::vector<int> accepted;
     for (int k = 0; k < 32; ++k)
         if (counts & (1u << k)) accepted.push_back(k);
-    std::string s;
-    for (std::size_t i = 0; i < accepted.size(); ++i) {
-        if (i > 0) s += i + 1 == accepted.size() ? " or " : ", ";
-        s += std::to_string(accepted[i]);
-    }
-    s += accepted.size() == 1 && accepted[0] == 1 ? " number" : " numbers";
-    return s;
+    if (accepted.size() == 1) return numbersText(accepted[0]);
+    std::string first;  // "1, 2" of "1, 2 or 3 numbers"
+    for (std::size_t i = 0; i + 1 < accepted.size(); ++i)
+        first += (i > 0 ? ", " : "") + std::to_string(accepted[i]);
+    return "%1 or %2 numbers"_msg(first, accepted.back());
 }
 
 int maxCount(unsigned counts) {
@@ -58,8 +56,29 @@ int maxCount(unsigned counts) {
     return m;
 }
 
-std::string plural(long long n, const char* one, const char* many) {
-    return std::to_string(n) + " " + (n == 1 ? one : many);
+Message linesText(long long n) {
+    return counted(n, "%1 line"_msg, "%1 lines"_msg);
+}
+
+Message valuesText(long long n) {
+    return counted(n, "%1 value"_msg, "%1 values"_msg);
+}
+
+Message verticesText(long long n) {
+    return counted(n, "%1 vertex"_msg, "%1 vertices"_msg);
+}
+
+Message trianglesText(long long n) {
+    return counted(n, "%1 triangle"_msg, "%1 triangles"_msg);
+}
+
+Message numbersText(long long n) {
+    return counted(n, "%1 number"_msg, "%1 numbers"_msg);
+}
+
+Message fieldName(const FieldSpec& field) {
+    if (field.light == 0) return Message::untranslated(std::string(field.name));
+    return "%1 of light %2"_msg(field.name, field.light);
 }
 
 // The token without one leading sign.
@@ -69,29 +88,31 @@ std::string_view withoutSign(std::string_view token) {
 }
 
 // Why a token is not a number, for the end of an error message.
-std::string whyNotNumber(std::string_view token) {
-    std::string s = "found " + quoted(token);
+Message whyNotNumber(std::string_view token) {
+    const std::string found = quoted(token);
     const bool hasDigit = token.find_first_of("0123456789") != std::string_view::npos;
-    if (token.size() > 1 && token.back() == ',' && parseReal(token.substr(0, token.size() - 1))) {
-        s += " (separate the values with spaces, not commas)";
-    } else if (token.find(',') != std::string_view::npos && hasDigit) {
-        s += " (the decimal separator is '.')";
-    } else if (isOutOfRange(token)) {
-        s += ", which is out of range";
-    } else if (isNotFinite(token)) {
-        s += ", which is not a finite number";
-    }
-    return s;
+    if (token.size() > 1 && token.back() == ',' && parseReal(token.substr(0, token.size() - 1)))
+        return "found %1 (separate the values with spaces, not commas)"_msg(found);
+    if (token.find(',') != std::string_view::npos && hasDigit)
+        return "found %1 (the decimal separator is '.')"_msg(found);
+    if (isOutOfRange(token)) return "found %1, which is out of range"_msg(found);
+    if (isNotFinite(token)) return "found %1, which is not a finite number"_msg(found);
+    return "found %1"_msg(found);
 }
 
 // "a, b and c".
-std::string listText(const std::vector<std::string>& items) {
-    std::string s;
-    for (std::size_t i = 0; i < items.size(); ++i) {
-        if (i > 0) s += i + 1 == items.size() ? " and " : ", ";
-        s += items[i];
-    }
-    return s;
+Message listText(const std::vector<Message>& items) {
+    if (items.empty()) return {};
+    Message list = items[0];
+    for (std::size_t i = 1; i < items.size(); ++i)
+        list = (i + 1 == items.size() ? "%1 and %2"_msg : "%1, %2"_msg)(list, items[i]);
+    return list;
+}
+
+Message listText(const std::vector<std::string>& names) {
+    std::vector<Message> items;
+    for (const std::string& name : names) items.push_back(Message::untranslated(name));
+    return listText(items);
 }
 
 // ---- field lines
@@ -103,12 +124,10 @@ Result<std::vector<FieldValue>> readFields(LineScanner& scanner, std::span<const
     result.reserve(fields.size());
     TextLine line;
     for (const FieldSpec& field : fields) {
-        const std::string expected = std::string(field.name) + ", " +
-                                     std::string(field.description) + " (" +
-                                     countText(field.counts) + ")";
         if (!scanner.next(line))
             return makeError(ErrorCode::MissingData, scanner.endOfInput(),
-                             "expected " + expected + ", found the end of the file");
+                             "expected %1, %2 (%3), found the end of the file"_msg(
+                                 fieldName(field), field.description, countText(field.counts)));
 
         FieldValue value;
         value.line = scanner.at(line.number, 1);
@@ -131,15 +150,14 @@ Result<std::vector<FieldValue>> readFields(LineScanner& scanner, std::span<const
             if (numeric < line.tokens.size() &&
                 (!accepted || startsLikeNumber(line.tokens[numeric].text))) {
                 const Token& bad = line.tokens[numeric];
-                return makeError(ErrorCode::Syntax, scanner.at(bad),
-                                 "expected a number for " + std::string(field.name) + ", " +
-                                     whyNotNumber(bad.text));
+                return makeError(
+                    ErrorCode::Syntax, scanner.at(bad),
+                    "expected a number for %1, %2"_msg(fieldName(field), whyNotNumber(bad.text)));
             }
             if (!(field.counts & (1u << available)))
                 return makeError(ErrorCode::Syntax, scanner.afterLast(line),
-                                 "expected " + countText(field.counts) + " for " +
-                                     std::string(field.name) + ", found " +
-                                     std::to_string(available));
+                                 "expected %1 for %2, found %3"_msg(countText(field.counts),
+                                                                    fieldName(field), available));
             taken = available;
         }
         for (int k = 0; k < taken; ++k) {
@@ -150,8 +168,8 @@ Result<std::vector<FieldValue>> readFields(LineScanner& scanner, std::span<const
         if (line.tokens.size() > static_cast<std::size_t>(taken)) {
             const std::size_t extra = line.tokens.size() - static_cast<std::size_t>(taken);
             diagnostics.warn(scanner.at(line.tokens[static_cast<std::size_t>(taken)]),
-                             "ignored " + plural(static_cast<long long>(extra), "value", "values") +
-                                 " after " + std::string(field.name));
+                             "ignored %1 after %2"_msg(valuesText(static_cast<long long>(extra)),
+                                                       fieldName(field)));
         }
         result.push_back(std::move(value));
     }
@@ -159,14 +177,13 @@ Result<std::vector<FieldValue>> readFields(LineScanner& scanner, std::span<const
 }
 
 // A warning for the lines after the `lineCount` lines of a layout, if any.
-void warnTrailingLines(LineScanner& scanner, std::string_view what, long long lineCount,
+void warnTrailingLines(LineScanner& scanner, MessageTemplate what, long long lineCount,
                        Diagnostics& diagnostics) {
     TextLine line;
     if (!scanner.next(line)) return;
     const int remaining = 1 + scanner.countRemainingLines();
-    diagnostics.warn(scanner.at(line.number, 1), "ignored " + plural(remaining, "line", "lines") +
-                                                     " after the " + std::string(what) + "'s " +
-                                                     plural(lineCount, "line", "lines"));
+    diagnostics.warn(scanner.at(line.number, 1),
+                     "ignored %1 after %2"_msg(linesText(remaining), what(linesText(lineCount))));
 }
 
 // ---- the camera and the lighting, from the fields of any layout
@@ -200,15 +217,19 @@ CourseCamera makeCamera(const FieldValue& c, const FieldValue& n, const FieldVal
 }
 
 // Values outside the ranges the course gives (seed 004) still render, with a warning.
-void checkRange(const FieldValue& field, const std::string& name, const std::string& suffix,
-                double low, double high, const char* range, Diagnostics& diagnostics) {
+void checkRange(const FieldValue& field, const std::string& name, std::size_t light, double low,
+                double high, const char* range, Diagnostics& diagnostics) {
     for (std::size_t i = 0; i < field.values.size(); ++i) {
         const double v = field.values[i];
         if (v >= low && v <= high) continue;
         std::string label = name;
         if (field.values.size() == 3) label += std::string(".") + "rgb"[i];
-        diagnostics.warn(field.where[i], label + suffix + " = " + formatNumber(v) + " is outside " +
-                                             range + ", the range the course gives for it");
+        diagnostics.warn(
+            field.where[i],
+            light == 0 ? "%1 = %2 is outside %3, the range the course gives for it"_msg(
+                             label, formatNumber(v), range)
+                       : "%1 of light %2 = %3 is outside %4, the range the course gives for it"_msg(
+                             label, light, formatNumber(v), range));
     }
 }
 
@@ -231,34 +252,32 @@ CourseLighting makeLighting(const LightingFields& f, const LightingNames& names,
     lighting.material.ks = static_cast<float>(f.ks->values[0]);
     lighting.material.shininess = static_cast<float>(f.n->values[0]);
 
-    checkRange(*f.ka, names.ka, "", 0.0, 1.0, "[0, 1]", diagnostics);
-    checkRange(*f.ia, names.ia, "", 0.0, 255.0, "[0, 255]", diagnostics);
-    checkRange(*f.kd, names.kd, "", 0.0, 1.0, "[0, 1]", diagnostics);
-    checkRange(*f.od, names.od, "", 0.0, 1.0, "[0, 1]", diagnostics);
-    checkRange(*f.ks, names.ks, "", 0.0, 1.0, "[0, 1]", diagnostics);
+    checkRange(*f.ka, names.ka, 0, 0.0, 1.0, "[0, 1]", diagnostics);
+    checkRange(*f.ia, names.ia, 0, 0.0, 255.0, "[0, 255]", diagnostics);
+    checkRange(*f.kd, names.kd, 0, 0.0, 1.0, "[0, 1]", diagnostics);
+    checkRange(*f.od, names.od, 0, 0.0, 1.0, "[0, 1]", diagnostics);
+    checkRange(*f.ks, names.ks, 0, 0.0, 1.0, "[0, 1]", diagnostics);
     for (std::size_t k = 0; k < f.lights.size(); ++k)
-        checkRange(*f.lights[k].second, names.il,
-                   numbered ? " of light " + std::to_string(k + 1) : std::string(), 0.0, 255.0,
-                   "[0, 255]", diagnostics);
+        checkRange(*f.lights[k].second, names.il, numbered ? k + 1 : 0, 0.0, 255.0, "[0, 255]",
+                   diagnostics);
     const double n = f.n->values[0];
     if (!(n > 0.0))
         diagnostics.warn(f.n->where[0],
-                         std::string(names.n) + " = " + formatNumber(n) +
-                             " is not positive: (R.V)^n then makes no highlight (it is 1 "
-                             "everywhere for n = 0 and grows without bound where R.V nears 0 "
-                             "for n < 0, where the specular term is left out)");
+                         "%1 = %2 is not positive: (R.V)^n then makes no highlight (it is 1 "
+                         "everywhere for n = 0 and grows without bound where R.V nears 0 for n "
+                         "< 0, where the specular term is left out)"_msg(names.n, formatNumber(n)));
     return lighting;
 }
 
 // ---- .byu tokens
 
 // Reads a header count: a non-negative integer.
-Result<long long> readCount(const LineScanner& scanner, const Token& token, const char* what) {
+Result<long long> readCount(const LineScanner& scanner, const Token& token, const Message& what) {
     const auto n = parseInteger(token.text);
     if (!n || *n < 0)
         return makeError(ErrorCode::Syntax, scanner.at(token),
-                         std::string("expected the number of ") + what +
-                             " (a non-negative integer), found " + quoted(token.text));
+                         "expected the number of %1 (a non-negative integer), found %2"_msg(
+                             what, quoted(token.text)));
     return *n;
 }
 
@@ -266,32 +285,32 @@ bool isComment(const Token& token) {
     return token.text.starts_with('#') || token.text.starts_with("//");
 }
 
-Error commentError(const LineScanner& scanner, const Token& token, const std::string& expected) {
+Error commentError(const LineScanner& scanner, const Token& token, const Message& expected) {
     return makeError(ErrorCode::Syntax, scanner.at(token),
-                     "expected " + expected + ", found a comment (" + quoted(token.text) +
-                         "), but .byu files have no comments");
+                     "expected %1, found a comment (%2), but .byu files have no comments"_msg(
+                         expected, quoted(token.text)));
 }
 
 Result<double> readCoordinate(const LineScanner& scanner, const Token& token, int axis,
-                              const std::string& which) {
+                              const Message& which) {
     static const char* const kAxis[] = {"x", "y", "z"};
     const auto value = parseReal(token.text);
     if (!value)
         return makeError(ErrorCode::Syntax, scanner.at(token),
-                         std::string("expected a number for the ") + kAxis[axis] +
-                             " coordinate of " + which + ", " + whyNotNumber(token.text));
+                         "expected a number for the %1 coordinate of %2, %3"_msg(
+                             kAxis[axis], which, whyNotNumber(token.text)));
     return *value;
 }
 
 Result<dvec3> readPointLine(const LineScanner& scanner, const TextLine& line,
-                            const std::string& which) {
-    if (isComment(line.tokens[0])) return commentError(scanner, line.tokens[0], which + " (x y z)");
+                            const Message& which) {
+    if (isComment(line.tokens[0]))
+        return commentError(scanner, line.tokens[0], "%1 (x y z)"_msg(which));
     dvec3 p(0.0);
     for (int k = 0; k < 3; ++k) {
         if (static_cast<std::size_t>(k) >= line.tokens.size())
-            return makeError(
-                ErrorCode::Syntax, scanner.afterLast(line),
-                "expected 3 coordinates for " + which + ", found " + std::to_string(k));
+            return makeError(ErrorCode::Syntax, scanner.afterLast(line),
+                             "expected 3 coordinates for %1, found %2"_msg(which, k));
         auto value = readCoordinate(scanner, line.tokens[static_cast<std::size_t>(k)], k, which);
         if (!value) return value.error();
         p[k] = *value;
@@ -305,8 +324,8 @@ void ExtraValues::note(const LineScanner& scanner, const TextLine& line) {
 
 void ExtraValues::warn(Diagnostics& diagnostics) const {
     if (lines > 0)
-        diagnostics.warn(first, "ignored extra values at the end of " +
-                                    plural(lines, "line", "lines") + " (the first is here)");
+        diagnostics.warn(first, "ignored extra values at the end of %1 (the first is here)"_msg(
+                                    linesText(lines)));
 }
 
 // "used by no triangle" and "no triangles" warnings, as for course meshes.
@@ -316,11 +335,12 @@ void warnUnusedVertices(const Mesh& mesh, const std::vector<unsigned char>& used
     for (unsigned char u : used) unused += u ? 0 : 1;
     const auto vertexCount = static_cast<long long>(mesh.positions.size());
     if (unused > 0 && !mesh.triangles.empty())
-        diagnostics.warn(mesh.source, plural(unused, "vertex", "vertices") + " of " +
-                                          std::to_string(vertexCount) +
-                                          (unused == 1 ? " is" : " are") +
-                                          " not used by any triangle");
-    if (mesh.triangles.empty()) diagnostics.warn(mesh.source, "the object has no triangles");
+        diagnostics.warn(
+            mesh.source,
+            unused == 1
+                ? "%1 vertex of %2 is not used by any triangle"_msg(unused, vertexCount)
+                : "%1 vertices of %2 are not used by any triangle"_msg(unused, vertexCount));
+    if (mesh.triangles.empty()) diagnostics.warn(mesh.source, "the object has no triangles"_msg);
 }
 
 }  // namespace rl::course_io
@@ -329,7 +349,7 @@ namespace rl {
 
 Result<std::vector<FieldValue>> readFieldLines(LineScanner& scanner,
                                                std::span<const FieldSpec> fields,
-                                               std::string_view what, Diagnostics& diagnostics) {
+                                               MessageTemplate what, Diagnostics& diagnostics) {
     auto result = course_io::readFields(scanner, fields, diagnostics);
     if (result)
         course_io::warnTrailingLines(scanner, what, static_cast<long long>(fields.size()),

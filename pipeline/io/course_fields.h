@@ -17,17 +17,24 @@ namespace rl::course_io {
 // ---- number tokens and their messages
 
 // The counts a field accepts, for messages: "3 numbers", "1 or 3 numbers".
-std::string countText(unsigned counts);
+Message countText(unsigned counts);
 // The largest count a field accepts.
 int maxCount(unsigned counts);
-// "1 vertex", "8 vertices".
-std::string plural(long long n, const char* one, const char* many);
+// "1 line", "8 lines"; "1 value", "8 values": pieces of many messages.
+Message linesText(long long n);
+Message valuesText(long long n);
+Message verticesText(long long n);
+Message trianglesText(long long n);
+Message numbersText(long long n);
+// A field's name in messages: "N", or "Pl of light 2" for a light's field.
+Message fieldName(const FieldSpec& field);
 // The token without one leading sign.
 std::string_view withoutSign(std::string_view token);
 // Why a token is not a number, for the end of an error message: "found 'x'" and a hint.
-std::string whyNotNumber(std::string_view token);
+Message whyNotNumber(std::string_view token);
 // "a, b and c".
-std::string listText(const std::vector<std::string>& items);
+Message listText(const std::vector<Message>& items);
+Message listText(const std::vector<std::string>& names);  // names shown as they are: "C", "hx"
 
 // The counts of a FieldSpec or a key: bit k set when k numbers are accepted.
 inline constexpr unsigned kOne = 1u << 1;
@@ -35,13 +42,18 @@ inline constexpr unsigned kTwo = 1u << 2;
 inline constexpr unsigned kThree = 1u << 3;
 inline constexpr unsigned kFour = 1u << 4;
 
+// The layouts' descriptions (cameraLayoutDescription ...) as message templates.
+MessageTemplate cameraLayoutText(CameraLayout layout);
+MessageTemplate lightingLayoutText(LightingLayout layout);
+
 // ---- field lines
 
 // The fields of readFieldLines, without the check for lines after the last one.
 Result<std::vector<FieldValue>> readFields(LineScanner& scanner, std::span<const FieldSpec> fields,
                                            Diagnostics& diagnostics);
-// A warning for the lines after the `lineCount` lines of a layout, if any.
-void warnTrailingLines(LineScanner& scanner, std::string_view what, long long lineCount,
+// A warning for the lines after the `lineCount` lines of a layout, if any. `what` names those
+// lines: "the camera's %1"_msg.
+void warnTrailingLines(LineScanner& scanner, MessageTemplate what, long long lineCount,
                        Diagnostics& diagnostics);
 
 // ---- the camera and the lighting, from the fields of any layout
@@ -79,9 +91,10 @@ struct LightingNames {
     const char* n;
 };
 
-// Values outside the ranges the course gives (seed 004) still render, with a warning.
-void checkRange(const FieldValue& field, const std::string& name, const std::string& suffix,
-                double low, double high, const char* range, Diagnostics& diagnostics);
+// Values outside the ranges the course gives (seed 004) still render, with a warning. `light`
+// numbers the light of an Il when the file has several (0 otherwise).
+void checkRange(const FieldValue& field, const std::string& name, std::size_t light, double low,
+                double high, const char* range, Diagnostics& diagnostics);
 
 // The lighting, with the course's range warnings, in the order ka, Ia, kd, Od, ks, Il, n.
 CourseLighting makeLighting(const LightingFields& f, const LightingNames& names,
@@ -89,17 +102,16 @@ CourseLighting makeLighting(const LightingFields& f, const LightingNames& names,
 
 // ---- .byu tokens
 
-// Reads a header count: a non-negative integer.
-Result<long long> readCount(const LineScanner& scanner, const Token& token, const char* what);
+// Reads a header count: a non-negative integer; `what` is "vertices"_msg ...
+Result<long long> readCount(const LineScanner& scanner, const Token& token, const Message& what);
 bool isComment(const Token& token);
-Error commentError(const LineScanner& scanner, const Token& token, const std::string& expected);
+Error commentError(const LineScanner& scanner, const Token& token, const Message& expected);
 
 // Coordinate `axis` (0 for x) of the point `which` ("vertex 3 of 8"): a number.
 Result<double> readCoordinate(const LineScanner& scanner, const Token& token, int axis,
-                              const std::string& which);
+                              const Message& which);
 // The x y z of a point on a line of its own (a vertex, a control point).
-Result<dvec3> readPointLine(const LineScanner& scanner, const TextLine& line,
-                            const std::string& which);
+Result<dvec3> readPointLine(const LineScanner& scanner, const TextLine& line, const Message& which);
 
 // The lines holding values after their first three (x y z, or a triangle's three indices),
 // for one warning after the last.
@@ -128,7 +140,7 @@ Result<CourseLighting> readKeyValueLighting(std::string_view text, const std::st
 bool isMovieByuHeader(const TextLine& line);
 // An original Movie.BYU file after its header, each polygon fan-triangulated
 // (movie_byu.cpp). `summary` receives "1 part, 8 vertices and 6 polygons" for the note.
-Result<Mesh> readMovieByu(LineScanner& scanner, const TextLine& header, std::string& summary,
+Result<Mesh> readMovieByu(LineScanner& scanner, const TextLine& header, Message& summary,
                           Diagnostics& diagnostics);
 // A course Bezier surface after its lines "m n" and E, evaluated on an E x E grid
 // (bezier_surface.cpp).

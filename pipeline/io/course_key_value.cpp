@@ -16,7 +16,7 @@ namespace {
 
 struct KeySpec {
     std::string_view key;  // as the course writes it; matched without regard to case
-    std::string_view description;
+    MessageTemplate description;
     unsigned counts;
     bool required = true;   // every file has it (for the first light, when perLight)
     bool perLight = false;  // one per light: "Pl" (or "Pl1") for the first, "Pl2" ...
@@ -25,31 +25,31 @@ struct KeySpec {
 constexpr int kMaxKeyLights = static_cast<int>(kMaxKeyValueLights);
 
 constexpr KeySpec kCameraKeys[] = {
-    {"C", "the camera position", kThree},
-    {"N", "the view direction", kThree},
-    {"V", "the up vector", kThree},
-    {"d", "the projection distance", kOne},
-    {"hx", "the horizontal half-size of the window", kOne},
-    {"hy", "the vertical half-size of the window", kOne},
+    {"C", "the camera position"_msg, kThree},
+    {"N", "the view direction"_msg, kThree},
+    {"V", "the up vector"_msg, kThree},
+    {"d", "the projection distance"_msg, kOne},
+    {"hx", "the horizontal half-size of the window"_msg, kOne},
+    {"hy", "the vertical half-size of the window"_msg, kOne},
 };
 constexpr KeySpec kLightingKeys[] = {
-    {"Iamb", "the ambient light colour", kThree},
-    {"Ka", "the ambient coefficient", kOne},
-    {"Il", "the light colour", kThree, true, true},
-    {"Pl", "the light position (x y z, or x y z w: w = 0 for a directional light)", kThree | kFour,
-     true, true},
-    {"Kd", "the diffuse coefficient of each channel", kThree},
-    {"Od", "the diffuse colour of the object", kThree},
-    {"Ks", "the specular coefficient", kOne},
-    {"eta", "the specular exponent", kOne},
+    {"Iamb", "the ambient light colour"_msg, kThree},
+    {"Ka", "the ambient coefficient"_msg, kOne},
+    {"Il", "the light colour"_msg, kThree, true, true},
+    {"Pl", "the light position (x y z, or x y z w: w = 0 for a directional light)"_msg,
+     kThree | kFour, true, true},
+    {"Kd", "the diffuse coefficient of each channel"_msg, kThree},
+    {"Od", "the diffuse colour of the object"_msg, kThree},
+    {"Ks", "the specular coefficient"_msg, kOne},
+    {"eta", "the specular exponent"_msg, kOne},
     // The lecture slides' lighting (seed 003), beyond the course's files.
-    {"Ke", "the emission of the object", kThree, false},
-    {"two_sided", "two-sided lighting, 1 or 0", kOne, false},
-    {"blinn", "Blinn-Phong highlights, 1 or 0", kOne, false},
-    {"atten", "the attenuation kc kl kq", kThree, false, true},
-    {"spot_dir", "the spot direction", kThree, false, true},
-    {"spot_cutoff", "the spot cutoff angle in degrees", kOne, false, true},
-    {"spot_exp", "the spot exponent", kOne, false, true},
+    {"Ke", "the emission of the object"_msg, kThree, false},
+    {"two_sided", "two-sided lighting, 1 or 0"_msg, kOne, false},
+    {"blinn", "Blinn-Phong highlights, 1 or 0"_msg, kOne, false},
+    {"atten", "the attenuation kc kl kq"_msg, kThree, false, true},
+    {"spot_dir", "the spot direction"_msg, kThree, false, true},
+    {"spot_cutoff", "the spot cutoff angle in degrees"_msg, kOne, false, true},
+    {"spot_exp", "the spot exponent"_msg, kOne, false, true},
 };
 // Index of each in kLightingKeys.
 enum LightingKey : std::size_t {
@@ -103,7 +103,7 @@ std::string keyName(const KeySpec& key, int light) {
 }
 
 // The keys every file has, "C, N, V, d, hx and hy".
-std::string keyList(std::span<const KeySpec> keys) {
+Message keyList(std::span<const KeySpec> keys) {
     std::vector<std::string> names;
     for (const KeySpec& key : keys)
         if (key.required) names.emplace_back(key.key);
@@ -112,7 +112,7 @@ std::string keyList(std::span<const KeySpec> keys) {
 
 // keyList, then the keys a file may have: "...; optionally Ke, ... (Pl2, Il2 ... for more
 // lights)".
-std::string keyListWithOptional(std::span<const KeySpec> keys) {
+Message keyListWithOptional(std::span<const KeySpec> keys) {
     std::vector<std::string> optional;
     bool perLight = false;
     for (const KeySpec& key : keys) {
@@ -120,19 +120,17 @@ std::string keyListWithOptional(std::span<const KeySpec> keys) {
         perLight = perLight || key.perLight;
     }
     if (optional.empty()) return keyList(keys);
-    return keyList(keys) + "; optionally " + listText(optional) +
-           (perLight ? "; Pl2, Il2 ... for lights 2 to " + std::to_string(kMaxKeyLights)
-                     : std::string());
+    if (!perLight) return "%1; optionally %2"_msg(keyList(keys), listText(optional));
+    return "%1; optionally %2; Pl2, Il2 ... for lights 2 to %3"_msg(
+        keyList(keys), listText(optional), kMaxKeyLights);
 }
 
 // The keys a reader reads (the camera's or the lighting's), and the other reader's, which
 // the same file may hold.
 struct KeyRoles {
-    const char* what;  // "camera", "lighting file"
     std::span<const KeySpec> keys;
-    const char* otherWhat;
     std::span<const KeySpec> otherKeys;
-    bool isCamera;
+    bool isCamera;  // the camera's reader; the lighting's otherwise
 };
 
 // A line "key = values", split at its first '=', which may touch the key or the values.
@@ -151,9 +149,10 @@ Result<KeyLine> splitKeyLine(const LineScanner& scanner, const TextLine& line) {
     }
     if (at == line.tokens.size())
         return makeError(ErrorCode::Syntax, scanner.at(line.tokens[0]),
-                         "expected 'key = value', found a line without '=' (" +
-                             quoted(line.tokens[0].text) +
-                             (line.tokens.size() > 1 ? " ...)" : ")"));
+                         (line.tokens.size() > 1
+                              ? "expected 'key = value', found a line without '=' (%1 ...)"_msg
+                              : "expected 'key = value', found a line without '=' (%1)"_msg)(
+                             quoted(line.tokens[0].text)));
     KeyLine result;
     std::size_t keyWords = 0;
     for (std::size_t k = 0; k <= at; ++k) {
@@ -166,10 +165,10 @@ Result<KeyLine> splitKeyLine(const LineScanner& scanner, const TextLine& line) {
     result.keyAt = scanner.at(line.tokens[0]);
     if (keyWords == 0)
         return makeError(ErrorCode::Syntax, result.keyAt,
-                         "expected a key before '=', found nothing");
+                         "expected a key before '=', found nothing"_msg);
     if (keyWords > 1)
         return makeError(ErrorCode::Syntax, result.keyAt,
-                         "expected one key before '=', found " + quoted(result.key));
+                         "expected one key before '=', found %1"_msg(quoted(result.key)));
     const Token& split = line.tokens[at];
     if (equals + 1 < split.text.size())
         result.values.push_back({split.text.substr(equals + 1), split.line,
@@ -187,13 +186,15 @@ bool skipKey(const KeyLine& line, const KeyRoles& roles, Diagnostics& diagnostic
     if (sameKey(line.key, kUnusedCameraKey)) {
         if (roles.isCamera)
             diagnostics.note(line.keyAt,
-                             "ignored " + line.key + ": the camera's axes come from N and V");
+                             "ignored %1: the camera's axes come from N and V"_msg(line.key));
     } else {
-        diagnostics.warn(line.keyAt, "ignored the unknown key " + quoted(line.key) + " (a " +
-                                         std::string(roles.what) + " has " +
-                                         keyListWithOptional(roles.keys) + "; a " +
-                                         roles.otherWhat + " has " +
-                                         keyListWithOptional(roles.otherKeys) + ")");
+        diagnostics.warn(
+            line.keyAt,
+            (roles.isCamera
+                 ? "ignored the unknown key %1 (a camera has %2; a lighting file has %3)"_msg
+                 : "ignored the unknown key %1 (a lighting file has %2; a camera has %3)"_msg)(
+                quoted(line.key), keyListWithOptional(roles.keys),
+                keyListWithOptional(roles.otherKeys)));
     }
     return false;
 }
@@ -207,7 +208,7 @@ Status readKeyNumbers(const LineScanner& scanner, const TextLine& line, const Ke
         const auto number = parseReal(token.text);
         if (!number)
             return makeError(ErrorCode::Syntax, scanner.at(token),
-                             "expected a number for " + name + ", " + whyNotNumber(token.text));
+                             "expected a number for %1, %2"_msg(name, whyNotNumber(token.text)));
         value.values.push_back(*number);
         value.where.push_back(scanner.at(token));
     }
@@ -215,12 +216,12 @@ Status readKeyNumbers(const LineScanner& scanner, const TextLine& line, const Ke
     const int most = maxCount(key.counts);
     if (count > most)
         return makeError(ErrorCode::Syntax, value.where[static_cast<std::size_t>(most)],
-                         "expected " + countText(key.counts) + " for " + name + ", found " +
-                             std::to_string(count));
+                         "expected %1 for %2, found %3"_msg(countText(key.counts), name, count));
     if (!(key.counts & (1u << count)))
-        return makeError(ErrorCode::Syntax, scanner.afterLast(line),
-                         "expected " + countText(key.counts) + " for " + name + ", found " +
-                             (count == 0 ? std::string("none") : std::to_string(count)));
+        return makeError(
+            ErrorCode::Syntax, scanner.afterLast(line),
+            count == 0 ? "expected %1 for %2, found none"_msg(countText(key.counts), name)
+                       : "expected %1 for %2, found %3"_msg(countText(key.counts), name, count));
     return success();
 }
 
@@ -236,19 +237,26 @@ std::optional<Error> missingKeys(const LineScanner& scanner, const KeyRoles& rol
         if (keys[i].required && givenOn[i] == 0) missing.emplace_back(keys[i].key);
     }
     if (missing.empty()) return std::nullopt;
-    std::string message;
-    if (missing.size() == required) {
+    Message message;
+    if (missing.size() == required && roles.isCamera) {
         message =
-            "expected the " + std::string(roles.what) + " keys " + keyList(keys) +
-            ", found none of them" +
-            (otherRoleSeen ? " (only " + std::string(roles.otherWhat) + " keys)" : std::string());
+            (otherRoleSeen
+                 ? "expected the camera keys %1, found none of them (only lighting file keys)"_msg
+                 : "expected the camera keys %1, found none of them"_msg)(keyList(keys));
+    } else if (missing.size() == required) {
+        message =
+            (otherRoleSeen
+                 ? "expected the lighting file keys %1, found none of them (only camera keys)"_msg
+                 : "expected the lighting file keys %1, found none of them"_msg)(keyList(keys));
     } else if (missing.size() == 1) {
         const KeySpec& key = keys[findKey(keys, missing[0])->index];
-        message = "expected a line '" + missing[0] + " = ...' (" + std::string(key.description) +
-                  ", " + countText(key.counts) + "), found no " + missing[0];
+        message = "expected a line '%1 = ...' (%2, %3), found no %1"_msg(
+            missing[0], key.description, countText(key.counts));
     } else {
-        message = "expected lines for " + listText(missing) + " (a " + std::string(roles.what) +
-                  " needs " + keyList(keys) + "), found none";
+        message =
+            (roles.isCamera ? "expected lines for %1 (a camera needs %2), found none"_msg
+                            : "expected lines for %1 (a lighting file needs %2), found none"_msg)(
+                listText(missing), keyList(keys));
     }
     return makeError(ErrorCode::MissingData, scanner.endOfInput(), message);
 }
@@ -277,9 +285,8 @@ Result<std::vector<FieldValue>> readKeyValues(std::string_view text, const std::
         const std::string name = keyName(key, match->light);
         if (givenOn[slot] != 0)
             return makeError(ErrorCode::Syntax, keyLine->keyAt,
-                             "expected each key once, found " + name +
-                                 " again (first given on line " + std::to_string(givenOn[slot]) +
-                                 ")");
+                             "expected each key once, found %1 again (first given on line %2)"_msg(
+                                 name, givenOn[slot]));
         givenOn[slot] = line.number;
         if (Status read = readKeyNumbers(scanner, line, *keyLine, key, name, values[slot]); !read)
             return read.error();
@@ -327,18 +334,17 @@ Result<LightingFields> courseFields(const LightingValues& v) {
         if (!first) continue;
         const int expected = static_cast<int>(parts.lights.size());
         if (k != expected)
-            return makeError(ErrorCode::Syntax, v.at(*first, k).line,
-                             "expected light " + std::to_string(expected + 1) + " (" +
-                                 v.name(kPl, expected) + ", " + v.name(kIl, expected) +
-                                 ") before light " + std::to_string(k + 1) + ", found " +
-                                 v.name(*first, k) + " (lights are numbered without gaps)");
+            return makeError(
+                ErrorCode::Syntax, v.at(*first, k).line,
+                "expected light %1 (%2, %3) before light %4, found %5 (lights are "
+                "numbered without gaps)"_msg(expected + 1, v.name(kPl, expected),
+                                             v.name(kIl, expected), k + 1, v.name(*first, k)));
         for (const std::size_t key : {std::size_t(kPl), std::size_t(kIl)})
             if (!v.given(key, k))
                 return makeError(ErrorCode::MissingData, v.at(*first, k).line,
-                                 "expected a line '" + v.name(key, k) + " = ...' (" +
-                                     std::string(kLightingKeys[key].description) + " of light " +
-                                     std::to_string(k + 1) + "), found " + v.name(*first, k) +
-                                     " without it");
+                                 "expected a line '%1 = ...' (%2 of light %3), found %4 without "
+                                 "it"_msg(v.name(key, k), kLightingKeys[key].description, k + 1,
+                                          v.name(*first, k)));
         parts.lights.emplace_back(&v.at(kPl, k), &v.at(kIl, k));
     }
     return parts;
@@ -351,7 +357,7 @@ Result<std::optional<bool>> readFlag(const LightingValues& v, std::size_t key) {
     if (value != 0.0 && value != 1.0)
         return makeError(
             ErrorCode::Range, v.at(key, 0).where[0],
-            "expected 1 or 0 for " + v.name(key, 0) + ", found " + formatNumber(value));
+            "expected 1 or 0 for %1, found %2"_msg(v.name(key, 0), formatNumber(value)));
     return std::optional<bool>(value == 1.0);
 }
 
@@ -366,7 +372,7 @@ Status readSlidesLighting(const LightingValues& v, CourseLighting& lighting,
     if (blinn.value() && *blinn.value()) lighting.specular = SpecularModel::BlinnPhong;
     if (v.given(kKe, 0)) {
         lighting.material.emission = rgbOf(v.at(kKe, 0));
-        checkRange(v.at(kKe, 0), "Ke", "", 0.0, 255.0, "[0, 255]", diagnostics);
+        checkRange(v.at(kKe, 0), "Ke", 0, 0.0, 255.0, "[0, 255]", diagnostics);
     }
     return success();
 }
@@ -379,17 +385,16 @@ Status readAttenuation(const LightingValues& v, int light, Light& l, Diagnostics
     for (std::size_t i = 0; i < 3; ++i)
         if (!(a.values[i] >= 0.0))
             return makeError(ErrorCode::Range, a.where[i],
-                             "expected " + name + " coefficients of 0 or more (kc kl kq), found " +
-                                 formatNumber(a.values[i]));
+                             "expected %1 coefficients of 0 or more (kc kl kq), found %2"_msg(
+                                 name, formatNumber(a.values[i])));
     if (a.values[0] == 0.0 && a.values[1] == 0.0 && a.values[2] == 0.0)
         return makeError(
             ErrorCode::Range, a.where[0],
-            "expected " + name + " with a coefficient above 0, found 0 0 0 (1 / 0 light)");
+            "expected %1 with a coefficient above 0, found 0 0 0 (1 / 0 light)"_msg(name));
     l.attenuation = rgbOf(a);
     if (l.pWorld.w == 0.0)
-        diagnostics.warn(a.line, name +
-                                     " has no effect: a directional light (w = 0) is "
-                                     "not attenuated");
+        diagnostics.warn(
+            a.line, "%1 has no effect: a directional light (w = 0) is not attenuated"_msg(name));
     return success();
 }
 
@@ -400,7 +405,7 @@ Status readSpot(const LightingValues& v, int light, Light& l, Diagnostics& diagn
         if (vec3Of(d) == dvec3(0.0))
             return makeError(
                 ErrorCode::Range, d.where[0],
-                "expected a spot direction other than 0 0 0 for " + v.name(kSpotDir, light));
+                "expected a spot direction other than 0 0 0 for %1"_msg(v.name(kSpotDir, light)));
         l.spotDirection = vec3Of(d);
     }
     if (v.given(kSpotCutoff, light)) {
@@ -408,28 +413,25 @@ Status readSpot(const LightingValues& v, int light, Light& l, Diagnostics& diagn
         const double cutoff = c.values[0];
         if (!((cutoff >= 0.0 && cutoff <= 90.0) || cutoff == 180.0))
             return makeError(ErrorCode::Range, c.where[0],
-                             "expected " + v.name(kSpotCutoff, light) +
-                                 " from 0 to 90 degrees, or 180 (not a spot), found " +
-                                 formatNumber(cutoff));
+                             "expected %1 from 0 to 90 degrees, or 180 (not a spot), found %2"_msg(
+                                 v.name(kSpotCutoff, light), formatNumber(cutoff)));
         l.spotCutoff = static_cast<float>(cutoff);
         if (l.spot() && !v.given(kSpotDir, light))
-            diagnostics.note(c.line, v.name(kSpotCutoff, light) + ": no " +
-                                         v.name(kSpotDir, light) +
-                                         ", the spot points along -z (OpenGL's default)");
+            diagnostics.note(c.line, "%1: no %2, the spot points along -z (OpenGL's default)"_msg(
+                                         v.name(kSpotCutoff, light), v.name(kSpotDir, light)));
     }
     if (v.given(kSpotExp, light)) {
         const FieldValue& e = v.at(kSpotExp, light);
         if (!(e.values[0] >= 0.0 && e.values[0] <= 128.0))
             return makeError(ErrorCode::Range, e.where[0],
-                             "expected " + v.name(kSpotExp, light) + " from 0 to 128, found " +
-                                 formatNumber(e.values[0]));
+                             "expected %1 from 0 to 128, found %2"_msg(v.name(kSpotExp, light),
+                                                                       formatNumber(e.values[0])));
         l.spotExponent = static_cast<float>(e.values[0]);
     }
     if (!l.spot() && (v.given(kSpotDir, light) || v.given(kSpotExp, light)))
         diagnostics.warn(v.at(v.given(kSpotDir, light) ? kSpotDir : kSpotExp, light).line,
-                         "light " + std::to_string(light + 1) + " is not a spot without " +
-                             v.name(kSpotCutoff, light) +
-                             " (0 to 90 degrees): its spot direction and exponent are unused");
+                         "light %1 is not a spot without %2 (0 to 90 degrees): its spot direction "
+                         "and exponent are unused"_msg(light + 1, v.name(kSpotCutoff, light)));
     return success();
 }
 
@@ -476,7 +478,7 @@ bool isLightingKey(std::string_view key) {
 Result<CourseCamera> course_io::readKeyValueCamera(std::string_view text,
                                                    const std::string& fileName,
                                                    Diagnostics& diagnostics) {
-    const KeyRoles roles{"camera", kCameraKeys, "lighting file", kLightingKeys, true};
+    const KeyRoles roles{kCameraKeys, kLightingKeys, true};
     auto f = readKeyValues(text, fileName, roles, diagnostics);
     if (!f) return f.error();
     const auto& v = f.value();
@@ -486,7 +488,7 @@ Result<CourseCamera> course_io::readKeyValueCamera(std::string_view text,
 Result<CourseLighting> course_io::readKeyValueLighting(std::string_view text,
                                                        const std::string& fileName,
                                                        Diagnostics& diagnostics) {
-    const KeyRoles roles{"lighting file", kLightingKeys, "camera", kCameraKeys, false};
+    const KeyRoles roles{kLightingKeys, kCameraKeys, false};
     auto f = readKeyValues(text, fileName, roles, diagnostics);
     if (!f) return f.error();
     return keyValueLighting(f.value(), diagnostics);

@@ -18,16 +18,14 @@ Result<Mesh> readAnyByuObject(std::string_view text, const std::string& fileName
     if (scanner.next(header)) {
         if (isMovieByuHeader(header)) {
             Diagnostics read;  // after the note
-            std::string summary;
+            Message summary;
             auto mesh = readMovieByu(scanner, header, summary, read);
             if (mesh)
                 diagnostics.note(
                     mesh->source,
                     "read as an original Movie.BYU file (the header has four integers: parts, "
-                    "vertices, polygons, edges): " +
-                        summary + ", fan-triangulated into " +
-                        plural(static_cast<long long>(mesh->triangles.size()), "triangle",
-                               "triangles"));
+                    "vertices, polygons, edges): %1, fan-triangulated into %2"_msg(
+                        summary, trianglesText(static_cast<long long>(mesh->triangles.size()))));
             diagnostics.append(read);
             return mesh;
         }
@@ -38,19 +36,15 @@ Result<Mesh> readAnyByuObject(std::string_view text, const std::string& fileName
             Diagnostics read;
             auto mesh = readBezierSurface(scanner, header, second, read);
             if (mesh) {
-                const std::string e = std::to_string(*parseInteger(second.tokens[0].text));
                 diagnostics.note(
                     mesh->source,
                     "read as a course Bezier surface (the header 'm n' is followed by a line of "
-                    "one number, the evaluations per direction): degrees " +
-                        std::to_string(*parseInteger(header.tokens[0].text)) + " x " +
-                        std::to_string(*parseInteger(header.tokens[1].text)) + ", evaluated on a " +
-                        e + " x " + e + " grid into " +
-                        plural(static_cast<long long>(mesh->positions.size()), "vertex",
-                               "vertices") +
-                        " and " +
-                        plural(static_cast<long long>(mesh->triangles.size()), "triangle",
-                               "triangles"));
+                    "one number, the evaluations per direction): degrees %1 x %2, evaluated on a "
+                    "%3 x %3 grid into %4 and %5"_msg(
+                        *parseInteger(header.tokens[0].text), *parseInteger(header.tokens[1].text),
+                        *parseInteger(second.tokens[0].text),
+                        verticesText(static_cast<long long>(mesh->positions.size())),
+                        trianglesText(static_cast<long long>(mesh->triangles.size()))));
             }
             diagnostics.append(read);
             return mesh;

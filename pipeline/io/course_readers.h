@@ -59,9 +59,10 @@ namespace rl {
 
 // One line of a line-oriented layout: a name for messages and how many numbers it holds.
 struct FieldSpec {
-    std::string_view name;         // "N", "d hx hy", "kd"
-    std::string_view description;  // "the view direction"
-    unsigned counts;               // bit k set: k numbers are accepted (1u << 3 | 1u << 1)
+    std::string_view name;        // "N", "d hx hy", "kd"
+    MessageTemplate description;  // "the view direction"_msg
+    unsigned counts;              // bit k set: k numbers are accepted (1u << 3 | 1u << 1)
+    std::size_t light = 0;        // a light's field in a multi-light file: "Pl of light 2"
 };
 
 struct FieldValue {
@@ -72,10 +73,11 @@ struct FieldValue {
 
 // Reads one field per non-blank line, in order. Extra numbers on a line and lines after
 // the last field are warnings; a missing line, a token that is not a number, or too few
-// numbers are errors. `what` names the file's role in messages ("camera").
+// numbers are errors. `what` names the layout's lines in messages: "the camera's %1"_msg, %1
+// being "4 lines".
 Result<std::vector<FieldValue>> readFieldLines(LineScanner& scanner,
                                                std::span<const FieldSpec> fields,
-                                               std::string_view what, Diagnostics& diagnostics);
+                                               MessageTemplate what, Diagnostics& diagnostics);
 
 // The lighting of a course scene: the material of the object, the ambient light and the
 // point lights.

@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "course_fields.h"
 #include "text_scanner.h"
 
 namespace rl {
@@ -138,7 +139,7 @@ std::string writeKeyValues(const std::vector<Entry>& entries, std::string_view p
     return text;
 }
 
-Error writeError(ErrorCode code, std::string message) {
+Error writeError(ErrorCode code, Message message) {
     return makeError(code, SourceLocation{}, std::move(message));
 }
 
@@ -150,7 +151,7 @@ Result<std::string> writeCameraFile(const CourseCamera& camera, CameraLayout lay
         !isFinite(dvec3(camera.d, camera.hx, camera.hy)))
         return writeError(ErrorCode::Range,
                           "cannot write the camera: its values must be finite numbers (a course "
-                          "file cannot hold nan or inf)");
+                          "file cannot hold nan or inf)"_msg);
     const std::string c = numbers(camera.c), n = numbers(camera.n), v = numbers(camera.v);
     const std::string d = formatExact(camera.d), hx = formatExact(camera.hx),
                       hy = formatExact(camera.hy);
@@ -170,26 +171,26 @@ Result<std::string> writeCameraFile(const CourseCamera& camera, CameraLayout lay
     }
     return writeError(ErrorCode::Usage,
                       "cannot write a camera in the layout 'auto': choose UFPE, UFRPE or key = "
-                      "value");
+                      "value"_msg);
 }
 
 namespace {
 
 // What only key = value files hold (the lecture slides' lighting, seed 003): the first such
-// feature the lighting uses, or "" when it uses none.
-std::string beyondCourse(const CourseLighting& lighting) {
-    std::string beyond;
-    const auto use = [&](bool used, const char* what) {
-        if (used && beyond.empty()) beyond = what;
+// feature the lighting uses, or nothing when it uses none.
+std::optional<MessageTemplate> beyondCourse(const CourseLighting& lighting) {
+    std::optional<MessageTemplate> beyond;
+    const auto use = [&](bool used, MessageTemplate what) {
+        if (used && !beyond) beyond = what;
     };
     const Material& m = lighting.material;
-    use(m.emission != vec3(0.0f), "an emission (Ke)");
-    use(!lighting.twoSided, "one-sided lighting");
-    use(lighting.specular != SpecularModel::Phong, "Blinn-Phong highlights");
+    use(m.emission != vec3(0.0f), "an emission (Ke)"_msg);
+    use(!lighting.twoSided, "one-sided lighting"_msg);
+    use(lighting.specular != SpecularModel::Phong, "Blinn-Phong highlights"_msg);
     for (const Light& light : lighting.lights) {
-        use(light.pWorld.w != 1.0, "a directional light (w = 0)");
-        use(light.attenuation != vec3(1.0f, 0.0f, 0.0f), "an attenuated light");
-        use(light.spot(), "a spot light");
+        use(light.pWorld.w != 1.0, "a directional light (w = 0)"_msg);
+        use(light.attenuation != vec3(1.0f, 0.0f, 0.0f), "an attenuated light"_msg);
+        use(light.spot(), "a spot light"_msg);
     }
     return beyond;
 }
@@ -211,36 +212,35 @@ std::optional<Error> unwritableLighting(const CourseLighting& lighting, Lighting
     if (layout == LightingLayout::Auto)
         return writeError(ErrorCode::Usage,
                           "cannot write lighting in the layout 'auto': choose UFPE, UFPE "
-                          "multi-light, UFRPE or key = value");
+                          "multi-light, UFRPE or key = value"_msg);
     const std::size_t count = lighting.lights.size();
     const bool keyValue = layout == LightingLayout::KeyValue;
     if (layout != LightingLayout::UfpeMulti && !(keyValue && count >= 1) && count != 1)
-        return writeError(ErrorCode::Unsupported,
-                          std::string("cannot write ") + std::to_string(count) +
-                              (count == 1 ? " light" : " lights") + " in the layout " +
-                              lightingLayoutDescription(layout) +
-                              ", which holds exactly one: choose the UFPE multi-light layout or "
-                              "key = value");
+        return writeError(
+            ErrorCode::Unsupported,
+            (count == 1 ? "cannot write %1 light in the layout %2, which holds exactly one: choose "
+                          "the UFPE multi-light layout or key = value"_msg
+                        : "cannot write %1 lights in the layout %2, which holds exactly one: "
+                          "choose the UFPE multi-light layout or key = value"_msg)(
+                count, course_io::lightingLayoutText(layout)));
     if (count == 0)
         return writeError(ErrorCode::Unsupported,
                           "cannot write lighting without lights: the UFPE multi-light and key = "
-                          "value layouts hold one light or more");
+                          "value layouts hold one light or more"_msg);
     if (keyValue && count > kMaxKeyValueLights)
         return writeError(ErrorCode::Unsupported,
-                          "cannot write " + std::to_string(count) +
-                              " lights in a key = value file, which holds " +
-                              std::to_string(kMaxKeyValueLights) + " at most (Pl to " +
-                              lightKeyName("Pl", kMaxKeyValueLights - 1) + ")");
-    const std::string beyond = beyondCourse(lighting);
-    if (!keyValue && !beyond.empty())
-        return writeError(ErrorCode::Unsupported,
-                          "cannot write " + beyond + " in the layout " +
-                              lightingLayoutDescription(layout) +
-                              ", which holds the course's point lights only: choose key = value");
+                          "cannot write %1 lights in a key = value file, which holds %2 at most "
+                          "(Pl to %3)"_msg(count, kMaxKeyValueLights,
+                                           lightKeyName("Pl", kMaxKeyValueLights - 1)));
+    if (const auto beyond = beyondCourse(lighting); !keyValue && beyond)
+        return writeError(
+            ErrorCode::Unsupported,
+            "cannot write %1 in the layout %2, which holds the course's point "
+            "lights only: choose key = value"_msg(*beyond, course_io::lightingLayoutText(layout)));
     if (!isFiniteLighting(lighting))
         return writeError(ErrorCode::Range,
                           "cannot write the lighting: its values must be finite numbers (a "
-                          "course file cannot hold nan or inf)");
+                          "course file cannot hold nan or inf)"_msg);
     return std::nullopt;
 }
 
@@ -311,7 +311,7 @@ Result<std::string> writeLightingFile(const CourseLighting& lighting, LightingLa
         case LightingLayout::Auto:
             break;
     }
-    return writeError(ErrorCode::Usage, "cannot write lighting in the layout 'auto'");
+    return writeError(ErrorCode::Usage, "cannot write lighting in the layout 'auto'"_msg);
 }
 
 }  // namespace rl

@@ -50,6 +50,11 @@ const char* const kKnownCommands[] = {
     "rectbezf", "rectbezg", "tribezf", "tribezg",   "texcoord",   "texture",   "decals",
     "normal",   "sunlight", "bulb",    "shininess", "flatnormals"};
 
+// "1 argument", "3 arguments".
+Message argumentsText(std::size_t n) {
+    return counted(static_cast<long long>(n), "%1 argument"_msg, "%1 arguments"_msg);
+}
+
 bool isKnown(std::string_view keyword) {
     return std::find(std::begin(kKnownCommands), std::end(kKnownCommands), keyword) !=
            std::end(kKnownCommands);
@@ -86,12 +91,13 @@ private:
     Status readTexture(const TextLine& line);
     Status readLight(const TextLine& line);
     Status readShininess(const TextLine& line);
-    Result<Args> numbers(const TextLine& line, std::size_t count, const char* names);
+    // `names` names the arguments in messages: "x y z"_msg.
+    Result<Args> numbers(const TextLine& line, std::size_t count, const Message& names);
     Result<std::uint32_t> vertexIndex(const Token& token, const std::string& command);
     // Vertex indices from token `first` on; tokens after them are warned about as extra
     // values unless the command has more arguments (warnExtraValues false).
     Result<std::vector<std::uint32_t>> indices(const TextLine& line, std::size_t first,
-                                               std::size_t count, const char* names,
+                                               std::size_t count, const Message& names,
                                                bool warnExtraValues = true);
     Result<int> subdivisions(const TextLine& line);
     Status requireImage(const TextLine& line);
@@ -151,12 +157,12 @@ Result<Hw2File> Hw2Reader::read() {
     }
     finishImage();
     for (const auto& [keyword, seen] : m_unknown)
-        m_diagnostics.note(seen.second, "skipped " +
-                                            countOf(std::size_t(seen.first), "line", "lines") +
-                                            " with the unknown command '" + keyword + "'");
+        m_diagnostics.note(seen.second,
+                           counted(seen.first, "skipped %1 line with the unknown command '%2'"_msg,
+                                   "skipped %1 lines with the unknown command '%2'"_msg, keyword));
     if (m_file.images.empty())
         return makeError(ErrorCode::MissingData, m_scanner.endOfInput(),
-                         "expected a 'png width height file' command, found none");
+                         "expected a 'png width height file' command, found none"_msg);
     return std::move(m_file);
 }
 
@@ -170,20 +176,21 @@ void Hw2Reader::finishImage() {
 }
 
 Result<Hw2Reader::Args> Hw2Reader::numbers(const TextLine& line, std::size_t count,
-                                           const char* names) {
+                                           const Message& names) {
     const std::string keyword(line.tokens[0].text);
     Args values;
     for (std::size_t k = 0; k < count; ++k) {
         if (k + 1 >= line.tokens.size())
-            return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
-                             "expected " + countOf(count, "number", "numbers") + " after '" +
-                                 keyword + "' (" + names + "), found " + std::to_string(k));
+            return makeError(
+                ErrorCode::Syntax, m_scanner.afterLast(line),
+                counted(count, "expected %1 number after '%2' (%3), found %4"_msg,
+                        "expected %1 numbers after '%2' (%3), found %4"_msg, keyword, names, k));
         const Token& token = line.tokens[k + 1];
         const auto value = parseReal(token.text);
         if (!value)
-            return makeError(ErrorCode::Syntax, m_scanner.at(token),
-                             "expected a number in '" + keyword + "' (" + names + "), found " +
-                                 quoted(token.text));
+            return makeError(
+                ErrorCode::Syntax, m_scanner.at(token),
+                "expected a number in '%1' (%2), found %3"_msg(keyword, names, quoted(token.text)));
         values.push_back(*value);
     }
     warnExtra(line, count + 1);
@@ -193,8 +200,8 @@ Result<Hw2Reader::Args> Hw2Reader::numbers(const TextLine& line, std::size_t cou
 void Hw2Reader::warnExtra(const TextLine& line, std::size_t used) {
     if (line.tokens.size() > used)
         m_diagnostics.warn(m_scanner.at(line.tokens[used]),
-                           "ignored " + countOf(line.tokens.size() - used, "value", "values") +
-                               " after '" + std::string(line.tokens[0].text) + "'");
+                           counted(line.tokens.size() - used, "ignored %1 value after '%2'"_msg,
+                                   "ignored %1 values after '%2'"_msg, line.tokens[0].text));
 }
 
 Result<std::uint32_t> Hw2Reader::vertexIndex(const Token& token, const std::string& command) {
@@ -202,33 +209,35 @@ Result<std::uint32_t> Hw2Reader::vertexIndex(const Token& token, const std::stri
     if (!index)
         return makeError(
             ErrorCode::Syntax, m_scanner.at(token),
-            "expected a vertex index in '" + command + "', found " + quoted(token.text));
+            "expected a vertex index in '%1', found %2"_msg(command, quoted(token.text)));
     const auto count = static_cast<long long>(m_vertices.size());
     // 1 is the first vertex defined, -1 the last one.
     const long long resolved = *index > 0 ? *index - 1 : count + *index;
-    if (*index == 0 || resolved < 0 || resolved >= count) {
-        std::string why = *index == 0
-                              ? "indices start at 1 (or count back from -1, the last)"
-                              : "only " + countOf(std::size_t(count), "vertex is", "vertices are") +
-                                    " defined so far";
+    if (*index == 0)
+        return makeError(ErrorCode::Range, m_scanner.at(token),
+                         "'%1' refers to vertex %2, but indices start at 1 (or count back from -1, "
+                         "the last)"_msg(command, token.text));
+    if (resolved < 0 || resolved >= count)
         return makeError(
             ErrorCode::Range, m_scanner.at(token),
-            "'" + command + "' refers to vertex " + std::string(token.text) + ", but " + why);
-    }
+            counted(count, "'%2' refers to vertex %3, but only %1 vertex is defined so far"_msg,
+                    "'%2' refers to vertex %3, but only %1 vertices are defined so "
+                    "far"_msg,
+                    command, token.text));
     return static_cast<std::uint32_t>(resolved);
 }
 
 Result<std::vector<std::uint32_t>> Hw2Reader::indices(const TextLine& line, std::size_t first,
-                                                      std::size_t count, const char* names,
+                                                      std::size_t count, const Message& names,
                                                       bool warnExtraValues) {
     const std::string keyword(line.tokens[0].text);
     std::vector<std::uint32_t> out;
     for (std::size_t k = 0; k < count; ++k) {
         if (first + k >= line.tokens.size())
             return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
-                             "expected " + countOf(count, "vertex index", "vertex indices") +
-                                 " in '" + keyword + "' (" + names + "), found " +
-                                 std::to_string(k));
+                             counted(count, "expected %1 vertex index in '%2' (%3), found %4"_msg,
+                                     "expected %1 vertex indices in '%2' (%3), found %4"_msg,
+                                     keyword, names, k));
         auto index = vertexIndex(line.tokens[first + k], keyword);
         if (!index) return index.error();
         out.push_back(index.value());
@@ -240,23 +249,23 @@ Result<std::vector<std::uint32_t>> Hw2Reader::indices(const TextLine& line, std:
 Result<int> Hw2Reader::subdivisions(const TextLine& line) {
     const std::string keyword(line.tokens[0].text);
     if (line.tokens.size() < 2)
-        return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
-                         "expected the number of subdivisions after '" + keyword +
-                             "', found the end of the line");
+        return makeError(
+            ErrorCode::Syntax, m_scanner.afterLast(line),
+            "expected the number of subdivisions after '%1', found the end of the line"_msg(
+                keyword));
     const auto n = parseInteger(line.tokens[1].text);
     if (!n || *n < 1 || *n > 10)
         return makeError(ErrorCode::Range, m_scanner.at(line.tokens[1]),
-                         "expected the number of subdivisions (a whole number from 1 to 10) "
-                         "after '" +
-                             keyword + "', found " + quoted(line.tokens[1].text));
+                         "expected the number of subdivisions (a whole number from 1 to 10) after "
+                         "'%1', found %2"_msg(keyword, quoted(line.tokens[1].text)));
     return static_cast<int>(*n);
 }
 
 Status Hw2Reader::requireImage(const TextLine& line) {
     if (m_image) return success();
-    return makeError(ErrorCode::MissingData, m_scanner.at(line.tokens[0]),
-                     "expected a 'png width height file' command before '" +
-                         std::string(line.tokens[0].text) + "'");
+    return makeError(
+        ErrorCode::MissingData, m_scanner.at(line.tokens[0]),
+        "expected a 'png width height file' command before '%1'"_msg(line.tokens[0].text));
 }
 
 DrawState Hw2Reader::stateFor(Fill fill, bool hasNormals, bool flatFill) const {
@@ -305,11 +314,10 @@ Draw& Hw2Reader::drawFor(const DrawState& state) {
 
 Status Hw2Reader::reserveTriangles(std::size_t count, const SourceLocation& where) {
     if (m_triangleCount + count > kMaxTriangles)
-        return makeError(ErrorCode::Range, where,
-                         "this command would bring the file to " +
-                             std::to_string(m_triangleCount + count) +
-                             " triangles, more than the limit of " + std::to_string(kMaxTriangles) +
-                             " a command file may draw");
+        return makeError(
+            ErrorCode::Range, where,
+            "this command would bring the file to %1 triangles, more than the limit "
+            "of %2 a command file may draw"_msg(m_triangleCount + count, kMaxTriangles));
     m_triangleCount += count;
     return success();
 }
@@ -383,16 +391,19 @@ Status Hw2Reader::readImage(const TextLine& line) {
     const SourceLocation where = m_scanner.at(line.tokens[0]);
     if (line.tokens.size() < 4)
         return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
-                         "expected 'png width height file', found " +
-                             countOf(line.tokens.size() - 1, "argument", "arguments"));
+                         "expected 'png width height file', found %1"_msg(
+                             argumentsText(line.tokens.size() - 1)));
     long long size[2] = {0, 0};
     for (int k = 0; k < 2; ++k) {
         const Token& token = line.tokens[std::size_t(k + 1)];
         const auto n = parseInteger(token.text);
         if (!n || *n < 1 || *n > 65536)
-            return makeError(ErrorCode::Syntax, m_scanner.at(token),
-                             std::string("expected the image ") + (k == 0 ? "width" : "height") +
-                                 " (a whole number from 1 to 65536), found " + quoted(token.text));
+            return makeError(
+                ErrorCode::Syntax, m_scanner.at(token),
+                (k == 0
+                     ? "expected the image width (a whole number from 1 to 65536), found %1"_msg
+                     : "expected the image height (a whole number from 1 to 65536), found %1"_msg)(
+                    quoted(token.text)));
         size[k] = *n;
     }
     warnExtra(line, 4);
@@ -404,21 +415,18 @@ Status Hw2Reader::readImage(const TextLine& line) {
     const std::size_t slash = asWritten.find_last_of("/\\");
     image.fileName = slash == std::string::npos ? asWritten : asWritten.substr(slash + 1);
     if (image.fileName.empty() || image.fileName == "." || image.fileName == "..")
-        return makeError(
-            ErrorCode::Syntax, m_scanner.at(line.tokens[3]),
-            "expected an image file name after 'png width height', found " + quoted(asWritten));
+        return makeError(ErrorCode::Syntax, m_scanner.at(line.tokens[3]),
+                         "expected an image file name after 'png width height', found %1"_msg(
+                             quoted(asWritten)));
     if (image.fileName != asWritten)
-        m_diagnostics.warn(m_scanner.at(line.tokens[3]), "the image name " + quoted(asWritten) +
-                                                             " reaches into folders: "
-                                                             "it is written as " +
-                                                             quoted(image.fileName) +
-                                                             " in the output folder");
+        m_diagnostics.warn(m_scanner.at(line.tokens[3]),
+                           "the image name %1 reaches into folders: it is written as %2 in the "
+                           "output folder"_msg(quoted(asWritten), quoted(image.fileName)));
     for (const Hw2Image& earlier : m_file.images)
         if (earlier.fileName == image.fileName)
             m_diagnostics.warn(m_scanner.at(line.tokens[3]),
-                               "an earlier png command (line " +
-                                   std::to_string(earlier.where.line) + ") names " +
-                                   quoted(image.fileName) + " too: this image replaces it");
+                               "an earlier png command (line %1) names %2 too: this image "
+                               "replaces it"_msg(earlier.where.line, quoted(image.fileName)));
     image.where = where;
     image.scene.name = image.fileName;
     image.scene.width = static_cast<int>(size[0]);
@@ -436,7 +444,7 @@ Status Hw2Reader::readImage(const TextLine& line) {
 Status Hw2Reader::readVertex(const TextLine& line) {
     const std::string keyword(line.tokens[0].text);
     const bool w = keyword == "xyzw";
-    auto v = numbers(line, w ? 4 : 3, w ? "x y z w" : "x y z");
+    auto v = numbers(line, w ? 4 : 3, w ? "x y z w"_msg : "x y z"_msg);
     if (!v) return v.error();
     Vertex vertex;
     vertex.p = dvec4(v->at(0), v->at(1), v->at(2), w ? v->at(3) : 1.0);
@@ -449,7 +457,7 @@ Status Hw2Reader::readVertex(const TextLine& line) {
 
 // color r g b: the current colour.
 Status Hw2Reader::readColour(const TextLine& line) {
-    auto v = numbers(line, 3, "r g b");
+    auto v = numbers(line, 3, "r g b"_msg);
     if (!v) return v.error();
     m_colour = vec3(float(v->at(0)), float(v->at(1)), float(v->at(2)));
     return success();
@@ -457,7 +465,7 @@ Status Hw2Reader::readColour(const TextLine& line) {
 
 // normal x y z: the current normal.
 Status Hw2Reader::readNormal(const TextLine& line) {
-    auto v = numbers(line, 3, "x y z");
+    auto v = numbers(line, 3, "x y z"_msg);
     if (!v) return v.error();
     m_normal = vec3(float(v->at(0)), float(v->at(1)), float(v->at(2)));
     return success();
@@ -465,7 +473,7 @@ Status Hw2Reader::readNormal(const TextLine& line) {
 
 // texcoord s t: the current texture coordinate.
 Status Hw2Reader::readTexcoord(const TextLine& line) {
-    auto v = numbers(line, 2, "s t");
+    auto v = numbers(line, 2, "s t"_msg);
     if (!v) return v.error();
     m_texcoord = vec2(float(v->at(0)), float(v->at(1)));
     return success();
@@ -476,14 +484,15 @@ Status Hw2Reader::readTriangle(const TextLine& line) {
     const std::string keyword(line.tokens[0].text);
     const SourceLocation where = m_scanner.at(line.tokens[0]);
     if (auto s = requireImage(line); !s) return s;
-    auto idx = indices(line, 1, 3, "i1 i2 i3");
+    auto idx = indices(line, 1, 3, "i1 i2 i3"_msg);
     if (!idx) return idx.error();
     const Fill fill = keyword == "trif"   ? Fill::Flat
                       : keyword == "trig" ? Fill::Gouraud
                                           : Fill::Textured;
     if (fill == Fill::Textured && !m_texture)
-        return makeError(ErrorCode::MissingData, where,
-                         "'trit' needs a texture: expected a 'texture file.png' command before it");
+        return makeError(
+            ErrorCode::MissingData, where,
+            "'trit' needs a texture: expected a 'texture file.png' command before it"_msg);
     const std::array<Vertex, 3> corners = {m_vertices[idx->at(0)], m_vertices[idx->at(1)],
                                            m_vertices[idx->at(2)]};
     const bool hasNormals = corners[0].normal && corners[1].normal && corners[2].normal;
@@ -501,7 +510,7 @@ Status Hw2Reader::readPatch(const TextLine& line) {
     if (!subd) return subd.error();
     const bool rect = keyword.starts_with("rect");
     const std::size_t count = rect ? 16 : 10;
-    auto idx = indices(line, 2, count, rect ? "subd i1 ... i16" : "subd i1 ... i10");
+    auto idx = indices(line, 2, count, rect ? "subd i1 ... i16"_msg : "subd i1 ... i10"_msg);
     if (!idx) return idx.error();
     const auto point = [&](std::uint32_t i) {
         const Vertex& v = m_vertices[i];
@@ -526,7 +535,7 @@ Status Hw2Reader::readPatch(const TextLine& line) {
 // loadmv, multmv, loadp a11 ... a44: a model/view or projection matrix, row by row.
 Status Hw2Reader::readMatrix(const TextLine& line) {
     const std::string keyword(line.tokens[0].text);
-    auto v = numbers(line, 16, "a11 a12 ... a44, row by row");
+    auto v = numbers(line, 16, "a11 a12 ... a44, row by row"_msg);
     if (!v) return v.error();
     double rows[16];
     std::copy(v->begin(), v->end(), rows);
@@ -544,15 +553,14 @@ Status Hw2Reader::readMatrix(const TextLine& line) {
 Status Hw2Reader::readProjection(const TextLine& line) {
     const std::string keyword(line.tokens[0].text);
     const SourceLocation where = m_scanner.at(line.tokens[0]);
-    auto v = numbers(line, 6, "l r b t n f");
+    auto v = numbers(line, 6, "l r b t n f"_msg);
     if (!v) return v.error();
     const Args& a = v.value();
     if (a[0] == a[1] || a[2] == a[3] || a[4] == a[5])
         return makeError(ErrorCode::Degenerate, where,
-                         "'" + keyword + "' needs l != r, b != t and n != f, found " +
-                             formatNumber(a[0]) + " " + formatNumber(a[1]) + " " +
-                             formatNumber(a[2]) + " " + formatNumber(a[3]) + " " +
-                             formatNumber(a[4]) + " " + formatNumber(a[5]));
+                         "'%1' needs l != r, b != t and n != f, found %2 %3 %4 %5 %6 %7"_msg(
+                             keyword, formatNumber(a[0]), formatNumber(a[1]), formatNumber(a[2]),
+                             formatNumber(a[3]), formatNumber(a[4]), formatNumber(a[5])));
     m_projection = keyword == "frustum" ? frustumMatrix(a[0], a[1], a[2], a[3], a[4], a[5])
                                         : orthoMatrix(a[0], a[1], a[2], a[3], a[4], a[5]);
     return success();
@@ -561,7 +569,7 @@ Status Hw2Reader::readProjection(const TextLine& line) {
 // translate dx dy dz, scale sx sy sz: added to the model/view.
 Status Hw2Reader::readTranslateOrScale(const TextLine& line) {
     const std::string keyword(line.tokens[0].text);
-    auto v = numbers(line, 3, keyword == "translate" ? "dx dy dz" : "sx sy sz");
+    auto v = numbers(line, 3, keyword == "translate" ? "dx dy dz"_msg : "sx sy sz"_msg);
     if (!v) return v.error();
     const dvec3 d(v->at(0), v->at(1), v->at(2));
     m_modelView = m_modelView * (keyword == "translate" ? translationMatrix(d) : scaleMatrix(d));
@@ -571,7 +579,7 @@ Status Hw2Reader::readTranslateOrScale(const TextLine& line) {
 // rotatex, rotatey, rotatez degrees: added to the model/view.
 Status Hw2Reader::readAxisRotation(const TextLine& line) {
     const std::string keyword(line.tokens[0].text);
-    auto v = numbers(line, 1, "degrees");
+    auto v = numbers(line, 1, "degrees"_msg);
     if (!v) return v.error();
     const dvec3 axis = keyword == "rotatex"   ? dvec3(1, 0, 0)
                        : keyword == "rotatey" ? dvec3(0, 1, 0)
@@ -582,12 +590,12 @@ Status Hw2Reader::readAxisRotation(const TextLine& line) {
 
 // rotate degrees x y z: added to the model/view.
 Status Hw2Reader::readRotation(const TextLine& line) {
-    auto v = numbers(line, 4, "degrees x y z");
+    auto v = numbers(line, 4, "degrees x y z"_msg);
     if (!v) return v.error();
     const dvec3 axis(v->at(1), v->at(2), v->at(3));
     if (axis == dvec3(0.0))
         return makeError(ErrorCode::Degenerate, m_scanner.at(line.tokens[2]),
-                         "'rotate' needs an axis, found the zero vector");
+                         "'rotate' needs an axis, found the zero vector"_msg);
     m_modelView = m_modelView * rotationMatrix(v->at(0), axis);
     return success();
 }
@@ -596,20 +604,20 @@ Status Hw2Reader::readRotation(const TextLine& line) {
 Status Hw2Reader::readLookAt(const TextLine& line) {
     const SourceLocation where = m_scanner.at(line.tokens[0]);
     // Two indices, then the up vector: only values after the up vector are extra.
-    auto idx = indices(line, 1, 2, "eye center upx upy upz", false);
+    auto idx = indices(line, 1, 2, "eye center upx upy upz"_msg, false);
     if (!idx) return idx.error();
     if (line.tokens.size() < 6)
         return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
-                         "expected 'lookat eye center upx upy upz', found " +
-                             countOf(line.tokens.size() - 1, "argument", "arguments"));
+                         "expected 'lookat eye center upx upy upz', found %1"_msg(
+                             argumentsText(line.tokens.size() - 1)));
     dvec3 up(0.0);
     for (int k = 0; k < 3; ++k) {
         const Token& token = line.tokens[std::size_t(3 + k)];
         const auto value = parseReal(token.text);
         if (!value)
             return makeError(ErrorCode::Syntax, m_scanner.at(token),
-                             "expected a number in 'lookat' (eye center upx upy upz), found " +
-                                 quoted(token.text));
+                             "expected a number in 'lookat' (eye center upx upy upz), found %1"_msg(
+                                 quoted(token.text)));
         up[k] = *value;
     }
     warnExtra(line, 6);
@@ -621,14 +629,14 @@ Status Hw2Reader::readLookAt(const TextLine& line) {
     if (eye == center || glm::length(glm::cross(center - eye, up)) == 0.0)
         return makeError(ErrorCode::Degenerate, where,
                          "'lookat' needs an eye apart from the center and an up that is "
-                         "not along the line of sight");
+                         "not along the line of sight"_msg);
     m_modelView = lookAtMatrix(eye, center, up);
     return success();
 }
 
 // clipplane p1 p2 p3 p4: a plane of eye coordinates for the draws that follow.
 Status Hw2Reader::readClipPlane(const TextLine& line) {
-    auto v = numbers(line, 4, "p1 p2 p3 p4");
+    auto v = numbers(line, 4, "p1 p2 p3 p4"_msg);
     if (!v) return v.error();
     // A plane of eye coordinates, kept as given (seed 001 applies it after the
     // model/view; the reference images do not carry it through the model/view).
@@ -649,7 +657,7 @@ Status Hw2Reader::readFlag(const TextLine& line) {
 Status Hw2Reader::readTexture(const TextLine& line) {
     if (line.tokens.size() < 2)
         return makeError(ErrorCode::Syntax, m_scanner.afterLast(line),
-                         "expected a file name after 'texture', found the end of the line");
+                         "expected a file name after 'texture', found the end of the line"_msg);
     warnExtra(line, 2);
     auto texture = m_loader(std::string(line.tokens[1].text), m_scanner.at(line.tokens[1]));
     if (!texture) return texture.error();
@@ -666,16 +674,16 @@ Status Hw2Reader::readLight(const TextLine& line) {
     light.intensity = m_colour;
     light.where = where;
     if (keyword == "sunlight") {
-        auto v = numbers(line, 3, "lx ly lz");
+        auto v = numbers(line, 3, "lx ly lz"_msg);
         if (!v) return v.error();
         const dvec3 direction(v->at(0), v->at(1), v->at(2));
         if (direction == dvec3(0.0))
             return makeError(ErrorCode::Degenerate, m_scanner.at(line.tokens[1]),
-                             "'sunlight' needs a direction, found the zero vector");
+                             "'sunlight' needs a direction, found the zero vector"_msg);
         // A direction, carried to eye coordinates like a normal, then made unit length.
         light.pWorld = dvec4(glm::normalize(normalMatrix(m_modelView) * direction), 0.0);
     } else {
-        auto idx = indices(line, 1, 1, "i1");
+        auto idx = indices(line, 1, 1, "i1"_msg);
         if (!idx) return idx.error();
         const dvec4 p = m_modelView * m_vertices[idx->at(0)].p;
         light.pWorld = dvec4(p.w != 0.0 ? dvec3(p) / p.w : dvec3(p), 1.0);
@@ -686,7 +694,7 @@ Status Hw2Reader::readLight(const TextLine& line) {
 
 // shininess alpha: the Blinn-Phong exponent of the lit draws that follow.
 Status Hw2Reader::readShininess(const TextLine& line) {
-    auto v = numbers(line, 1, "alpha");
+    auto v = numbers(line, 1, "alpha"_msg);
     if (!v) return v.error();
     m_shininess = static_cast<float>(v->at(0));
     return success();

@@ -48,22 +48,33 @@ struct MovieCounts {
 };
 
 Result<MovieCounts> readMovieCounts(const LineScanner& scanner, const TextLine& header) {
-    auto parts = readCount(scanner, header.tokens[0], "parts");
+    auto parts = readCount(scanner, header.tokens[0], "parts"_msg);
     if (!parts) return parts.error();
-    auto vertexCount = readCount(scanner, header.tokens[1], "vertices");
+    auto vertexCount = readCount(scanner, header.tokens[1], "vertices"_msg);
     if (!vertexCount) return vertexCount.error();
-    auto polygonCount = readCount(scanner, header.tokens[2], "polygons");
+    auto polygonCount = readCount(scanner, header.tokens[2], "polygons"_msg);
     if (!polygonCount) return polygonCount.error();
-    auto indexCount = readCount(scanner, header.tokens[3], "polygon indices (edges)");
+    auto indexCount = readCount(scanner, header.tokens[3], "polygon indices (edges)"_msg);
     if (!indexCount) return indexCount.error();
     return MovieCounts{*parts, *vertexCount, *polygonCount, *indexCount};
 }
 
+Message partsText(long long n) {
+    return counted(n, "%1 part"_msg, "%1 parts"_msg);
+}
+
+Message polygonsText(long long n) {
+    return counted(n, "%1 polygon"_msg, "%1 polygons"_msg);
+}
+
+Message indicesText(long long n) {
+    return counted(n, "%1 polygon index"_msg, "%1 polygon indices"_msg);
+}
+
 // "1 part, 4 vertices and 4 polygon indices": the numbers the header declares.
-std::string declaredText(const MovieCounts& counts) {
-    return plural(counts.parts, "part", "parts") + ", " +
-           plural(counts.vertices, "vertex", "vertices") + " and " +
-           plural(counts.indices, "polygon index", "polygon indices");
+Message declaredText(const MovieCounts& counts) {
+    return "%1, %2 and %3"_msg(partsText(counts.parts), verticesText(counts.vertices),
+                               indicesText(counts.indices));
 }
 
 // Reject counts the file cannot hold before allocating anything (compared without
@@ -85,18 +96,16 @@ Status checkMovieFits(const LineScanner& scanner, const TextLine& header, const 
             __builtin_add_overflow(total, static_cast<unsigned long long>(counts.indices), &total);
         return makeError(
             ErrorCode::Range, scanner.at(header.tokens[0]),
-            "the header declares " + declaredText(counts) + " (" +
-                (overflow ? std::string("more numbers than a file can hold")
-                          : plural(static_cast<long long>(total), "number", "numbers")) +
-                ": 2 a part, 3 a vertex, 1 an index), but only " +
-                plural(available, "number follows", "numbers follow"));
+            "the header declares %1 (%2: 2 a part, 3 a vertex, 1 an index), but only %3"_msg(
+                declaredText(counts),
+                overflow ? Message("more numbers than a file can hold"_msg)
+                         : numbersText(static_cast<long long>(total)),
+                counted(available, "%1 number follows"_msg, "%1 numbers follow"_msg)));
     }
     if (counts.polygons > counts.indices / 3)
         return makeError(ErrorCode::Range, scanner.at(header.tokens[2]),
-                         "the header declares " + plural(counts.polygons, "polygon", "polygons") +
-                             " but only " +
-                             plural(counts.indices, "polygon index", "polygon indices") +
-                             ", fewer than the 3 each polygon needs");
+                         "the header declares %1 but only %2, fewer than the 3 each polygon "
+                         "needs"_msg(polygonsText(counts.polygons), indicesText(counts.indices)));
     return success();
 }
 
@@ -109,22 +118,20 @@ Status readPartRanges(const LineScanner& scanner, TokenReader& tokens, const Mov
         for (int k = 0; k < 2; ++k) {
             tokens.next(token);  // present: counted by checkMovieFits
             if (k == 0) rangeAt = scanner.at(token);
-            const std::string what =
-                std::string(k == 0 ? "first" : "last") + " polygon of part " + std::to_string(p);
-            if (isComment(token)) return commentError(scanner, token, "the " + what);
+            const Message what = (k == 0 ? "the first polygon of part %1"_msg
+                                         : "the last polygon of part %1"_msg)(p);
+            if (isComment(token)) return commentError(scanner, token, what);
             const auto value = parseInteger(token.text);
             if (!value)
                 return makeError(
                     ErrorCode::Syntax, scanner.at(token),
-                    "expected the " + what + " (a positive integer), found " + quoted(token.text));
+                    "expected %1 (a positive integer), found %2"_msg(what, quoted(token.text)));
             range[k] = *value;
         }
         if (range[0] < 1 || range[1] < range[0] || range[1] > counts.polygons)
             return makeError(ErrorCode::Range, rangeAt,
-                             "expected the polygon range of part " + std::to_string(p) +
-                                 " within 1 to " + std::to_string(counts.polygons) +
-                                 ", first <= last, found " + std::to_string(range[0]) + " to " +
-                                 std::to_string(range[1]));
+                             "expected the polygon range of part %1 within 1 to %2, first <= last, "
+                             "found %3 to %4"_msg(p, counts.polygons, range[0], range[1]));
     }
     return success();
 }
@@ -135,12 +142,11 @@ Status readMovieVertices(const LineScanner& scanner, TokenReader& tokens, const 
     mesh.positions.reserve(static_cast<std::size_t>(counts.vertices));
     Token token;
     for (long long i = 0; i < counts.vertices; ++i) {
-        const std::string which =
-            "vertex " + std::to_string(i + 1) + " of " + std::to_string(counts.vertices);
+        const Message which = "vertex %1 of %2"_msg(i + 1, counts.vertices);
         dvec4 p(0.0, 0.0, 0.0, 1.0);
         for (int k = 0; k < 3; ++k) {
             tokens.next(token);
-            if (isComment(token)) return commentError(scanner, token, which + " (x y z)");
+            if (isComment(token)) return commentError(scanner, token, "%1 (x y z)"_msg(which));
             auto value = readCoordinate(scanner, token, k, which);
             if (!value) return value.error();
             p[k] = *value;
@@ -150,34 +156,33 @@ Status readMovieVertices(const LineScanner& scanner, TokenReader& tokens, const 
     return success();
 }
 
-// An index of polygon `which`, the polygons before it `completed`: a 1-based vertex,
-// negated when it ends the polygon.
+// An index of the polygon after the `completed` ones: a 1-based vertex, negated when it ends
+// the polygon.
 Result<long long> readPolygonIndex(const LineScanner& scanner, const Token& token,
-                                   const std::string& which, const MovieCounts& counts,
-                                   long long completed) {
-    if (isComment(token)) return commentError(scanner, token, "an index of " + which);
+                                   const MovieCounts& counts, long long completed) {
+    const long long polygon = completed + 1;
+    if (isComment(token))
+        return commentError(scanner, token, "an index of polygon %1"_msg(polygon));
     const auto index = parseInteger(token.text);
     if (!index)
         return makeError(ErrorCode::Syntax, scanner.at(token),
-                         "expected a vertex index (a non-zero integer, negated at the end of "
-                         "a polygon) for " +
-                             which + ", found " + quoted(token.text));
+                         "expected a vertex index (a non-zero integer, negated at the end of a "
+                         "polygon) for polygon %1, found %2"_msg(polygon, quoted(token.text)));
     if (completed == counts.polygons)
         return makeError(ErrorCode::Range, scanner.at(token),
-                         which + " starts here, but the header declares only " +
-                             plural(counts.polygons, "polygon", "polygons"));
+                         "polygon %1 starts here, but the header declares only %2"_msg(
+                             polygon, polygonsText(counts.polygons)));
     if (*index == 0)
         return makeError(ErrorCode::Range, scanner.at(token),
-                         which + " refers to vertex 0, but indices are 1-based (1 to " +
-                             std::to_string(counts.vertices) + ")");
+                         "polygon %1 refers to vertex 0, but indices are 1-based (1 to %2)"_msg(
+                             polygon, counts.vertices));
     // |index|, or 0 for the one value whose magnitude does not fit.
     const long long vertex =
         *index == std::numeric_limits<long long>::min() ? 0 : std::llabs(*index);
     if (vertex == 0 || vertex > counts.vertices)
         return makeError(ErrorCode::Range, scanner.at(token),
-                         which + " refers to vertex " + std::string(withoutSign(token.text)) +
-                             ", but the file declares only " +
-                             plural(counts.vertices, "vertex", "vertices"));
+                         "polygon %1 refers to vertex %2, but the file declares only %3"_msg(
+                             polygon, withoutSign(token.text), verticesText(counts.vertices)));
     return *index;
 }
 
@@ -187,15 +192,14 @@ struct OpenPolygon {
     int line = 0;
 };
 
-// Ends polygon `which` at `token`, its negated last index: fan-triangulated into `mesh`.
-Status endPolygon(const LineScanner& scanner, const Token& token, const std::string& which,
+// Ends polygon `number` at `token`, its negated last index: fan-triangulated into `mesh`.
+Status endPolygon(const LineScanner& scanner, const Token& token, long long number,
                   OpenPolygon& polygon, Mesh& mesh) {
     const std::vector<std::uint32_t>& v = polygon.vertices;
     if (v.size() < 3)
         return makeError(ErrorCode::Range, scanner.at(token),
-                         which + " has " +
-                             plural(static_cast<long long>(v.size()), "vertex", "vertices") +
-                             ", but a polygon needs at least 3");
+                         "polygon %1 has %2, but a polygon needs at least 3"_msg(
+                             number, verticesText(static_cast<long long>(v.size()))));
     for (std::size_t k = 1; k + 1 < v.size(); ++k) {
         mesh.triangles.push_back({v[0], v[k], v[k + 1]});
         mesh.triangleLines.push_back(polygon.line);
@@ -213,8 +217,7 @@ Status readPolygons(const LineScanner& scanner, const TextLine& header, TokenRea
     Token token;
     for (long long e = 0; e < counts.indices; ++e) {
         tokens.next(token);
-        const std::string which = "polygon " + std::to_string(completed + 1);
-        auto index = readPolygonIndex(scanner, token, which, counts, completed);
+        auto index = readPolygonIndex(scanner, token, counts, completed);
         if (!index) return index.error();
         const long long vertex = std::llabs(*index);  // checked by readPolygonIndex
         if (polygon.vertices.empty()) polygon.line = token.line;
@@ -222,22 +225,20 @@ Status readPolygons(const LineScanner& scanner, const TextLine& header, TokenRea
         used[static_cast<std::size_t>(vertex - 1)] = 1;
         lastIndex = scanner.at(token);
         if (*index > 0) continue;
-        if (Status ended = endPolygon(scanner, token, which, polygon, mesh); !ended)
+        if (Status ended = endPolygon(scanner, token, completed + 1, polygon, mesh); !ended)
             return ended.error();
         ++completed;
     }
     if (!polygon.vertices.empty())
         return makeError(ErrorCode::Syntax, lastIndex,
-                         "expected the last index of polygon " + std::to_string(completed + 1) +
-                             " to be negative (it ends the polygon), found the end of the "
-                             "header's " +
-                             plural(counts.indices, "polygon index", "polygon indices"));
+                         "expected the last index of polygon %1 to be negative (it ends the "
+                         "polygon), found the end of the header's %2"_msg(
+                             completed + 1, indicesText(counts.indices)));
     if (completed < counts.polygons)
-        return makeError(ErrorCode::Range, scanner.at(header.tokens[2]),
-                         "the header declares " + plural(counts.polygons, "polygon", "polygons") +
-                             ", but its " +
-                             plural(counts.indices, "polygon index", "polygon indices") +
-                             " end only " + std::to_string(completed));
+        return makeError(
+            ErrorCode::Range, scanner.at(header.tokens[2]),
+            "the header declares %1, but its %2 end only %3"_msg(
+                polygonsText(counts.polygons), indicesText(counts.indices), completed));
     return success();
 }
 
@@ -249,7 +250,7 @@ bool isMovieByuHeader(const TextLine& line) {
                        [](const Token& t) { return parseInteger(t.text).has_value(); });
 }
 
-Result<Mesh> readMovieByu(LineScanner& scanner, const TextLine& header, std::string& summary,
+Result<Mesh> readMovieByu(LineScanner& scanner, const TextLine& header, Message& summary,
                           Diagnostics& diagnostics) {
     auto counts = readMovieCounts(scanner, header);
     if (!counts) return counts.error();
@@ -267,15 +268,14 @@ Result<Mesh> readMovieByu(LineScanner& scanner, const TextLine& header, std::str
     Token token;
     if (tokens.next(token)) {
         const long long remaining = 1 + tokens.countRemaining();
-        diagnostics.warn(scanner.at(token),
-                         "ignored " + plural(remaining, "value", "values") +
-                             " after the declared " + declaredText(*counts) +
-                             " (the header's counts may be wrong, or a second object follows)");
+        diagnostics.warn(
+            scanner.at(token),
+            "ignored %1 after the declared %2 (the header's counts may be wrong, or "
+            "a second object follows)"_msg(valuesText(remaining), declaredText(*counts)));
     }
     warnUnusedVertices(mesh, used, diagnostics);
-    summary = plural(counts->parts, "part", "parts") + ", " +
-              plural(counts->vertices, "vertex", "vertices") + " and " +
-              plural(counts->polygons, "polygon", "polygons");
+    summary = "%1, %2 and %3"_msg(partsText(counts->parts), verticesText(counts->vertices),
+                                  polygonsText(counts->polygons));
     return mesh;
 }
 

@@ -136,12 +136,12 @@ template <typename Probe>
 Result<FrameTrace> run(std::shared_ptr<const Scene> scenePtr, const RenderOptions& options,
                        Probe& probe, RenderContext* context) {
     if (!scenePtr)
-        return makeError(ErrorCode::Usage, SourceLocation{"<scene>", 0, 0}, "no scene to render");
+        return makeError(ErrorCode::Usage, SourceLocation{"<scene>", 0, 0},
+                         "no scene to render"_msg);
     const Scene& scene = *scenePtr;
     if (scene.width <= 0 || scene.height <= 0)
         return makeError(ErrorCode::Usage, SourceLocation{scene.name, 0, 0},
-                         "the image size " + std::to_string(scene.width) + "x" +
-                             std::to_string(scene.height) + " is empty");
+                         "the image size %1x%2 is empty"_msg(scene.width, scene.height));
     FrameTrace trace;
     trace.scene = scenePtr;
     const int threads = Probe::enabled ? 1 : resolveThreads(options.threads);
@@ -163,16 +163,15 @@ Result<FrameTrace> run(std::shared_ptr<const Scene> scenePtr, const RenderOption
         runFastStages(trace, options, threads, context);
 
     if (trace.scan->spans.empty() && trace.scan->offscreen > 0) {
-        trace.diagnostics.warn(SourceLocation{scene.name, 0, 0},
-                               "no triangle covers a pixel: all " +
-                                   std::to_string(trace.scan->offscreen) +
-                                   " triangles in front of the camera project outside the "
-                                   "image (check N, d, hx and hy)");
+        trace.diagnostics.warn(
+            SourceLocation{scene.name, 0, 0},
+            "no triangle covers a pixel: all %1 triangles in front of the "
+            "camera project outside the image (check N, d, hx and hy)"_msg(trace.scan->offscreen));
     }
     if (trace.normals->degenerateTriangles > 0) {
-        trace.diagnostics.note(SourceLocation{scene.name, 0, 0},
-                               std::to_string(trace.normals->degenerateTriangles) +
-                                   " triangles have zero area and no normal");
+        trace.diagnostics.note(
+            SourceLocation{scene.name, 0, 0},
+            "%1 triangles have zero area and no normal"_msg(trace.normals->degenerateTriangles));
     }
     trace.totalMilliseconds = millisecondsSince(frameStart);
     return trace;

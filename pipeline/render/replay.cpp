@@ -48,14 +48,13 @@ Result<std::shared_ptr<const FrameReplay>> FrameReplay::build(
     const auto cancelled = [&] { return cancel && cancel->load(std::memory_order_relaxed); };
     const SourceLocation where{trace && trace->scene ? trace->scene->name : "<frame>", 0, 0};
     if (!trace || !trace->scene || !trace->projection || !trace->scan || !trace->depth)
-        return makeError(ErrorCode::Usage, where, "no frame to step through");
+        return makeError(ErrorCode::Usage, where, "no frame to step through"_msg);
     const Scene& scene = *trace->scene;
     if (trace->scan->pixels > limits.maxFragments)
-        return makeError(ErrorCode::Usage, where,
-                         "stepping keeps at most " + std::to_string(limits.maxFragments) +
-                             " fragments, and this frame has " +
-                             std::to_string(trace->scan->pixels) +
-                             ": the final image and the views still work");
+        return makeError(
+            ErrorCode::Usage, where,
+            "stepping keeps at most %1 fragments, and this frame has %2: the final "
+            "image and the views still work"_msg(limits.maxFragments, trace->scan->pixels));
 
     std::shared_ptr<FrameReplay> replay(new FrameReplay());
     replay->m_trace = trace;
@@ -63,9 +62,9 @@ Result<std::shared_ptr<const FrameReplay>> FrameReplay::build(
     ReplayProbe probe;
     probe.fragments.reserve(trace->scan->pixels);
     const ScanConversion scan = ScanConversionStage().run({scene, *trace->projection}, probe);
-    if (cancelled()) return makeError(ErrorCode::Usage, where, "cancelled");
+    if (cancelled()) return makeError(ErrorCode::Usage, where, "cancelled"_msg);
     DepthTestStage().run({scene, *trace->projection, scan}, probe);
-    if (cancelled()) return makeError(ErrorCode::Usage, where, "cancelled");
+    if (cancelled()) return makeError(ErrorCode::Usage, where, "cancelled"_msg);
     replay->m_fragments = std::move(probe.fragments);
     auto& fragments = replay->m_fragments;
 
@@ -88,9 +87,8 @@ Result<std::shared_ptr<const FrameReplay>> FrameReplay::build(
     }
     if (next != fragments.size())
         return makeError(ErrorCode::Usage, where,
-                         "internal error: the rows hold " + std::to_string(next) +
-                             " pixels and the depth test saw " + std::to_string(fragments.size()) +
-                             " fragments");
+                         "internal error: the rows hold %1 pixels and the depth test saw %2 "
+                         "fragments"_msg(next, fragments.size()));
     for (std::size_t t = 0; t < triangles; ++t) replay->m_rowStart[t + 1] += replay->m_rowStart[t];
 
     // Which fragment each written one replaced, how many times its pixel has been written
@@ -114,7 +112,7 @@ Result<std::shared_ptr<const FrameReplay>> FrameReplay::build(
         replay->m_writtenPrefix.back() = static_cast<std::uint32_t>(written.size());
     replay->m_finalWriter = std::move(writer);
     replay->m_written = written.size();
-    if (cancelled()) return makeError(ErrorCode::Usage, where, "cancelled");
+    if (cancelled()) return makeError(ErrorCode::Usage, where, "cancelled"_msg);
 
     // The colour each written fragment writes, by the frame's own shading stage.
     NullProbe none;

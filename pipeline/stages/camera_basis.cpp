@@ -27,27 +27,27 @@ Result<CameraBasis> CameraBasisStage::run(const Scene& scene, Diagnostics& diagn
     // Reject what makes the basis or the projection undefined.
     if (!isFinite(camera.c) || !isFinite(camera.n) || !isFinite(camera.v))
         return makeError(ErrorCode::Degenerate, camera.where.c,
-                         "the camera's C, N and V must be finite numbers");
+                         "the camera's C, N and V must be finite numbers"_msg);
     basis.nLength = glm::length(camera.n);
     if (basis.nLength == 0.0)
         return makeError(ErrorCode::Degenerate, camera.where.n,
                          "N, the view direction, is the zero vector: it must point from the "
-                         "camera toward the scene");
+                         "camera toward the scene"_msg);
     if (glm::length(camera.v) == 0.0)
         return makeError(ErrorCode::Degenerate, camera.where.v,
-                         "V, the up vector, is the zero vector: it must say which way is up");
+                         "V, the up vector, is the zero vector: it must say which way is up"_msg);
     if (camera.d == 0.0)
         return makeError(ErrorCode::Degenerate, camera.where.d,
                          "d, the distance to the projection plane, is 0: the projection "
-                         "(d/hx) x/z would squash every point to the centre");
+                         "(d/hx) x/z would squash every point to the centre"_msg);
     if (camera.hx == 0.0)
         return makeError(ErrorCode::Degenerate, camera.where.hx,
                          "hx, the horizontal half-size of the window, is 0: the projection "
-                         "(d/hx) x/z divides by it");
+                         "(d/hx) x/z divides by it"_msg);
     if (camera.hy == 0.0)
         return makeError(ErrorCode::Degenerate, camera.where.hy,
                          "hy, the vertical half-size of the window, is 0: the projection "
-                         "(d/hy) y/z divides by it");
+                         "(d/hy) y/z divides by it"_msg);
 
     // Gram-Schmidt: normalise N, remove from V its component along N, normalise V.
     basis.n = camera.n / basis.nLength;
@@ -57,10 +57,9 @@ Result<CameraBasis> CameraBasisStage::run(const Scene& scene, Diagnostics& diagn
     basis.vOrthogonalLength = glm::length(basis.vOrthogonal);
     if (!(basis.vOrthogonalLength > 1e-12 * glm::length(camera.v)))
         return makeError(ErrorCode::Degenerate, camera.where.v,
-                         "V " + formatVector(camera.v) + " is parallel to N " +
-                             formatVector(camera.n) +
-                             ": Gram-Schmidt leaves nothing of V, so 'up' is undefined; "
-                             "choose a V that is not along N");
+                         "V %1 is parallel to N %2: Gram-Schmidt leaves nothing of V, so 'up' is "
+                         "undefined; choose a V that is not along N"_msg(formatVector(camera.v),
+                                                                         formatVector(camera.n)));
     basis.v = basis.vOrthogonal / basis.vOrthogonalLength;
     basis.u = glm::cross(basis.n, basis.v);
 
@@ -83,12 +82,14 @@ Result<CameraBasis> CameraBasisStage::run(const Scene& scene, Diagnostics& diagn
     basis.viewFromWorld = rotation * translation;
 
     if (camera.hx < 0.0)
-        diagnostics.warn(camera.where.hx, "hx is negative: the image is mirrored left to right");
+        diagnostics.warn(camera.where.hx,
+                         "hx is negative: the image is mirrored left to right"_msg);
     if (camera.hy < 0.0)
-        diagnostics.warn(camera.where.hy, "hy is negative: the image is mirrored top to bottom");
+        diagnostics.warn(camera.where.hy,
+                         "hy is negative: the image is mirrored top to bottom"_msg);
     if (camera.d < 0.0)
         diagnostics.warn(camera.where.d,
-                         "d is negative: the image is turned upside down and mirrored");
+                         "d is negative: the image is turned upside down and mirrored"_msg);
     return basis;
 }
 

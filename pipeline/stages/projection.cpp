@@ -306,78 +306,117 @@ Projection ProjectionStage::run(const ProjectionInput& in, Diagnostics& diagnost
 
 // What the user is told -------------------------------------------------------------------
 
+namespace {
+
+// The note on the triangles clipped at the near plane (or the guard band) and those left out
+// wholly: "3 triangles were clipped against ...; 2 lie wholly behind the near plane, not drawn".
+Message clippingNote(const Scene& scene, const Projection& out) {
+    bool planes = false;
+    for (const Draw& draw : scene.draws) planes = planes || !draw.clipPlanes.empty();
+    Message against, left;  // where the triangles were clipped, and those left out wholly
+    if (out.mode == NearPlane::Mode::Clip) {
+        const std::string z = formatNumber(out.nearW);
+        against = planes ? "the near plane z = %1 and the clip planes"_msg(z)
+                         : "the near plane z = %1"_msg(z);
+        left = counted(out.behind, "%1 lies wholly behind the near plane"_msg,
+                       "%1 lie wholly behind the near plane"_msg);
+        if (out.clippedAway > 0)
+            left = "%1 and %2 wholly outside a clip plane"_msg(left, out.clippedAway);
+    } else {
+        against = planes ? "the clip planes or the guard band 2^28 pixels around the image"_msg
+                         : "the guard band 2^28 pixels around the image"_msg;
+        left = "%1 lie wholly outside a clip plane"_msg(out.clippedAway);
+    }
+    const Message clipped = counted(out.clipped, "%1 triangle was clipped against %2"_msg,
+                                    "%1 triangles were clipped against %2"_msg, against);
+    return "%1; %2, not drawn"_msg(clipped, left);
+}
+
+// The warning when nothing is in front of the camera, with what the plain divide would draw.
+Message everythingBehindWarning(const Scene& scene, const Projection& out) {
+    const Message behind =
+        "every triangle is behind the camera (is N pointing away from the object?): the image is "
+        "empty"_msg;
+    const std::size_t total = scene.triangleCount();
+    const std::size_t mirrored = trianglesBehindEye(out, scene);
+    if (mirrored == 0) return behind;
+    if (total == 1)
+        return "%1. The plain divide of seed 000, x/z and y/z with z < 0, would draw it: the "
+               "object's point reflection through the eye (turned half a turn on the screen), "
+               "where the z-buffer, keeping the smallest z, keeps the side farthest from the "
+               "camera"_msg(behind);
+    return (mirrored == total
+                ? "%1. The plain divide of seed 000, x/z and y/z with z < 0, would draw all %2 of "
+                  "them: the object's point reflection through the eye (turned half a turn on the "
+                  "screen), where the z-buffer, keeping the smallest z, keeps the side farthest "
+                  "from the camera"_msg
+                : "%1. The plain divide of seed 000, x/z and y/z with z < 0, would draw %2 of "
+                  "them: the object's point reflection through the eye (turned half a turn on the "
+                  "screen), where the z-buffer, keeping the smallest z, keeps the side farthest "
+                  "from the camera"_msg)(behind, mirrored);
+}
+
+// The warnings on triangles drawn wrong or distorted, or not drawn for want of coordinates.
+void warnDistorted(const Projection& out, const SourceLocation& where, Diagnostics& diagnostics) {
+    if (out.acrossEye > 0)
+        diagnostics.warn(where,
+                         counted(out.acrossEye,
+                                 "plain divide: %1 triangle reaches from in front of the eye to at "
+                                 "or behind it (w of different signs, or 0): divided by w without "
+                                 "clipping, it wraps through infinity and is drawn wrong (clipping "
+                                 "at the near plane draws its front part)"_msg,
+                                 "plain divide: %1 triangles reach from in front of the eye to at "
+                                 "or behind it (w of different signs, or 0): divided by w without "
+                                 "clipping, it wraps through infinity and is drawn wrong (clipping "
+                                 "at the near plane draws its front part)"_msg));
+    if (out.outsideGuardBand > 0)
+        diagnostics.warn(where,
+                         "%1 vertices project more than 2^28 pixels from the image and were "
+                         "pulled in to that distance: triangles through them may be distorted on "
+                         "screen"_msg(out.outsideGuardBand));
+    if (out.nonFinite > 0)
+        diagnostics.warn(where,
+                         "%1 triangles project to infinite or undefined coordinates and were not "
+                         "drawn"_msg(out.nonFinite));
+}
+
+}  // namespace
+
 void reportProjection(const Scene& scene, const Projection& out, Diagnostics& diagnostics) {
     const SourceLocation where{scene.name, 0, 0};
-    const std::size_t total = scene.triangleCount();
-    if (everyTriangleBehind(out, scene)) {
-        std::string text =
-            "every triangle is behind the camera (is N pointing away from the object?): the "
-            "image is empty";
-        if (const std::size_t mirrored = trianglesBehindEye(out, scene); mirrored > 0)
-            text += std::string(
-                        ". The plain divide of seed 000, x/z and y/z with z < 0, would "
-                        "draw ") +
-                    (total == 1          ? std::string("it")
-                     : mirrored == total ? "all " + std::to_string(mirrored) + " of them"
-                                         : std::to_string(mirrored) + " of them") +
-                    ": the object's point reflection through the eye (turned half a turn on "
-                    "the screen), where the z-buffer, keeping the smallest z, keeps the side "
-                    "farthest from the camera";
-        diagnostics.warn(where, text);
-    } else if (out.behind + out.clipped + out.clippedAway > 0) {
-        bool planes = false;
-        for (const Draw& draw : scene.draws) planes = planes || !draw.clipPlanes.empty();
-        std::string text =
-            countOf(out.clipped, "triangle was", "triangles were") + " clipped against ";
-        if (out.mode == NearPlane::Mode::Clip) {
-            text += "the near plane z = " + formatNumber(out.nearW) +
-                    (planes ? " and the clip planes" : "") + "; " +
-                    countOf(out.behind, "lies", "lie") + " wholly behind the near plane";
-            if (out.clippedAway > 0)
-                text += " and " + std::to_string(out.clippedAway) + " wholly outside a clip plane";
-        } else {
-            text += std::string(planes ? "the clip planes or " : "") +
-                    "the guard band 2^28 pixels around the image; " +
-                    std::to_string(out.clippedAway) + " lie wholly outside a clip plane";
-        }
-        diagnostics.note(where, text + ", not drawn");
-    }
+    if (everyTriangleBehind(out, scene))
+        diagnostics.warn(where, everythingBehindWarning(scene, out));
+    else if (out.behind + out.clipped + out.clippedAway > 0)
+        diagnostics.note(where, clippingNote(scene, out));
     if (out.backFaces > 0)
-        diagnostics.note(where, countOf(out.backFaces, "triangle faces", "triangles face") +
-                                    " away from the camera on a closed surface seen from "
-                                    "outside: hidden, so not drawn (back-face culling)");
+        diagnostics.note(where,
+                         counted(out.backFaces,
+                                 "%1 triangle faces away from the camera on a closed surface "
+                                 "seen from outside: hidden, so not drawn (back-face "
+                                 "culling)"_msg,
+                                 "%1 triangles face away from the camera on a closed surface "
+                                 "seen from outside: hidden, so not drawn (back-face "
+                                 "culling)"_msg));
     if (out.culled > 0)
-        diagnostics.note(where, countOf(out.culled, "triangle is", "triangles are") +
-                                    " clockwise on screen and culled");
-    if (out.acrossInfinity > 0) {
-        diagnostics.note(where, countOf(out.acrossInfinity, "triangle reaches", "triangles reach") +
-                                    " from in front of the eye to at or behind it (w of "
-                                    "different signs): only the part with w >= " +
-                                    formatNumber(out.nearW) + " is drawn");
-    }
+        diagnostics.note(where,
+                         counted(out.culled, "%1 triangle is clockwise on screen and culled"_msg,
+                                 "%1 triangles are clockwise on screen and culled"_msg));
+    if (out.acrossInfinity > 0)
+        diagnostics.note(where,
+                         counted(out.acrossInfinity,
+                                 "%1 triangle reaches from in front of the eye to at or behind it "
+                                 "(w of different signs): only the part with w >= %2 is drawn"_msg,
+                                 "%1 triangles reach from in front of the eye to at or behind it "
+                                 "(w of different signs): only the part with w >= %2 is drawn"_msg,
+                                 formatNumber(out.nearW)));
     if (out.behindEye > 0)
         diagnostics.note(
-            where, "plain divide: " + countOf(out.behindEye, "triangle lies", "triangles lie") +
-                       " wholly behind the eye (w < 0), drawn without clipping as "
-                       "the point reflection through the eye");
-    if (out.acrossEye > 0)
-        diagnostics.warn(where, "plain divide: " +
-                                    countOf(out.acrossEye, "triangle reaches", "triangles reach") +
-                                    " from in front of the eye to at or behind it (w of "
-                                    "different signs, or 0): divided by w without clipping, it "
-                                    "wraps through infinity and is drawn wrong (clipping at the "
-                                    "near plane draws its front part)");
-    if (out.outsideGuardBand > 0) {
-        diagnostics.warn(where, std::to_string(out.outsideGuardBand) +
-                                    " vertices project more than 2^28 pixels from the image and "
-                                    "were pulled in to that distance: triangles through them "
-                                    "may be distorted on screen");
-    }
-    if (out.nonFinite > 0) {
-        diagnostics.warn(where, std::to_string(out.nonFinite) +
-                                    " triangles project to infinite or undefined coordinates "
-                                    "and were not drawn");
-    }
+            where, counted(out.behindEye,
+                           "plain divide: %1 triangle lies wholly behind the eye (w < 0), "
+                           "drawn without clipping as the point reflection through the eye"_msg,
+                           "plain divide: %1 triangles lie wholly behind the eye (w < 0), "
+                           "drawn without clipping as the point reflection through the eye"_msg));
+    warnDistorted(out, where, diagnostics);
 }
 
 }  // namespace rl
