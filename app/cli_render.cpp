@@ -293,7 +293,8 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
                   parser.value(normalsOutput), out, err, lit("normals")))
         return ExitBadInput;
 
-    out << "  " << scene->triangleCount() << " triangles, "
+    out << "  " << scene->triangleCount()
+        << (scene->triangleCount() == 1 ? " triangle, " : " triangles, ")
         << rl::shadingModelName(settings.shading) << " shading, " << trace->depth->coveredPixels()
         << " pixels covered, " << QString::number(trace->totalMilliseconds, 'f', 1) << " ms\n";
     if (settings.shading == rl::ShadingModel::Painter) {

@@ -110,6 +110,7 @@ private slots:
     void badLessonFiles_data();
     void badLessonFiles();
     void unknownKeyWarns();
+    void documentedExampleReads();
     void examplesMenuOpensEveryLesson();
     void shadingSideBySide();
     void savedLessonReopensInAnotherProcess();
@@ -429,6 +430,28 @@ void TestLessons::unknownKeyWarns() {
     QVERIFY(QString::fromStdString(warnings.items().front().toString())
                 .startsWith(QStringLiteral("l.rasterlab:2:1: warning: unknown key \"colour\" "
                                            "ignored (known here: rasterlab_lesson, title, notes")));
+}
+
+void TestLessons::documentedExampleReads() {
+    // The example of docs/lesson-files.md is a valid lesson, read without a warning.
+    QFile doc(testing::sourceDir() + QStringLiteral("/docs/lesson-files.md"));
+    QVERIFY(doc.open(QIODevice::ReadOnly));
+    const QByteArray text = doc.readAll();
+    const qsizetype begin = text.indexOf("```json\n");
+    QVERIFY(begin >= 0);
+    const qsizetype end = text.indexOf("```", begin + 8);
+    rl::Diagnostics diagnostics;
+    const auto lesson = parseLesson(text.mid(begin + 8, end - begin - 8), QStringLiteral("doc"),
+                                    diagnostics);
+    QVERIFY2(lesson, lesson ? "" : lesson.error().toString().c_str());
+    QVERIFY(diagnostics.items().empty());
+    QCOMPARE(lesson->example, QStringLiteral("zbuffer"));
+    QCOMPARE(lesson->edits.size(), std::size_t(3));  // Ka, and the light's Pl and Il
+    QCOMPARE(lesson->lightCount, std::optional<std::size_t>(1));
+    QCOMPARE(lesson->breakpoints->size(), std::size_t(1));
+    QCOMPARE(lesson->cursor, std::optional<rl::ReplayCursor>(rl::ReplayCursor{0, 0}));
+    QCOMPARE(*lesson->zoom, 8.0);
+    QCOMPARE(lesson->presentation, std::optional<bool>(false));
 }
 
 void TestLessons::examplesMenuOpensEveryLesson() {
