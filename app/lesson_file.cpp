@@ -16,6 +16,7 @@ namespace rasterlab {
 namespace {
 
 using Field = SceneDocument::Field;
+using rl::operator""_msg;  // message templates, translated in the window (pipeline_messages.h)
 
 QString lit(const char* text) {
     return QString::fromLatin1(text);
@@ -116,17 +117,18 @@ private:
     QString m_file;
 };
 
-QString typeName(const QJsonValue& value) {
+// What a JSON value is, as an error message says it was found.
+rl::Message typeName(const QJsonValue& value) {
     switch (value.type()) {
-        case QJsonValue::Null: return lit("null");
-        case QJsonValue::Bool: return lit("true or false");
-        case QJsonValue::Double: return lit("a number");
-        case QJsonValue::String: return lit("the text '%1'").arg(value.toString());
-        case QJsonValue::Array: return lit("a list");
-        case QJsonValue::Object: return lit("an object");
+        case QJsonValue::Null: return "null"_msg;
+        case QJsonValue::Bool: return "true or false"_msg;
+        case QJsonValue::Double: return "a number"_msg;
+        case QJsonValue::String: return "the text '%1'"_msg(value.toString().toStdString());
+        case QJsonValue::Array: return "a list"_msg;
+        case QJsonValue::Object: return "an object"_msg;
         case QJsonValue::Undefined: break;
     }
-    return lit("nothing");
+    return "nothing"_msg;
 }
 
 // Reads one JSON object's keys, each checked, with errors at the key's place.
@@ -137,29 +139,27 @@ public:
 
     std::optional<rl::Error> error() const { return m_error; }
 
-    rl::Error fail(const QStringList& path, const QString& message) {
-        rl::Error e = rl::makeError(rl::ErrorCode::Syntax, m_locator.at(path), message.toStdString());
+    rl::Error fail(const QStringList& path, rl::Message message) {
+        rl::Error e = rl::makeError(rl::ErrorCode::Syntax, m_locator.at(path), std::move(message));
         if (!m_error) m_error = e;
         return e;
     }
-    QString expected(const QStringList& path, const QString& what, const QJsonValue& found) {
-        fail(path, lit("expected %1 for \"%2\", found %3").arg(what, path.last(), typeName(found)));
-        return {};
+    void expected(const QStringList& path, const rl::Message& what, const QJsonValue& found) {
+        fail(path, "expected %1 for \"%2\", found %3"_msg(what, path.last().toStdString(),
+                                                          typeName(found)));
     }
     // Keys of `object` that are not in `known`: a warning each, the rest of the file read.
     void warnUnknown(const QJsonObject& object, const QStringList& path, const QStringList& known) {
         for (const QString& key : object.keys())
             if (!known.contains(key))
                 m_diagnostics.warn(m_locator.at(path + QStringList{key}),
-                                   rl::Message::untranslated(
-                                       lit("unknown key \"%1\" ignored (known here: %2)")
-                                           .arg(key, quoted(known))
-                                           .toStdString()));
+                                   "unknown key \"%1\" ignored (known here: %2)"_msg(
+                                       key.toStdString(), quoted(known).toStdString()));
     }
 
     std::optional<double> number(const QJsonValue& value, const QStringList& path) {
         if (!value.isDouble()) {
-            expected(path, lit("a number"), value);
+            expected(path, "a number"_msg, value);
             return std::nullopt;
         }
         return value.toDouble();
@@ -167,7 +167,7 @@ public:
     std::optional<int> whole(const QJsonValue& value, const QStringList& path, int lowest) {
         const double v = value.toDouble(-1e300);
         if (!value.isDouble() || v != double(int(v)) || v < lowest || v > 1e9) {
-            expected(path, lowest == 0 ? lit("a whole number from 0") : lit("a whole number from %1").arg(lowest), value);
+            expected(path, "a whole number from %1"_msg(lowest), value);
             return std::nullopt;
         }
         return int(v);
@@ -182,21 +182,21 @@ public:
             out.push_back(v.toDouble());
         }
         if (!ok) {
-            expected(path, lit("a list of %1 numbers").arg(count), value);
+            expected(path, "a list of %1 numbers"_msg(count), value);
             return std::nullopt;
         }
         return out;
     }
     std::optional<QString> text(const QJsonValue& value, const QStringList& path) {
         if (!value.isString()) {
-            expected(path, lit("text in quotes"), value);
+            expected(path, "text in quotes"_msg, value);
             return std::nullopt;
         }
         return value.toString();
     }
     std::optional<bool> flag(const QJsonValue& value, const QStringList& path) {
         if (!value.isBool()) {
-            expected(path, lit("true or false"), value);
+            expected(path, "true or false"_msg, value);
             return std::nullopt;
         }
         return value.toBool();
@@ -209,7 +209,7 @@ public:
         for (const char* key : keys) names << lit(key);
         const qsizetype i = names.indexOf(value.toString());
         if (!value.isString() || i < 0) {
-            expected(path, lit("one of %1").arg(quoted(names)), value);
+            expected(path, "one of %1"_msg(quoted(names).toStdString()), value);
             return std::nullopt;
         }
         return values[std::size_t(i)];
@@ -263,7 +263,7 @@ void readEdits(Reader& r, const QJsonObject& edits, Lesson& lesson) {
     if (!lighting.contains(lit("lights"))) return;
     const QJsonValue lights = lighting.value(lit("lights"));
     if (!lights.isArray() || lights.toArray().isEmpty() || lights.toArray().size() > 8) {
-        r.expected(at + QStringList{lit("lights")}, lit("a list of 1 to 8 lights"), lights);
+        r.expected(at + QStringList{lit("lights")}, "a list of 1 to 8 lights"_msg, lights);
         return;
     }
     const QJsonArray list = lights.toArray();
@@ -297,7 +297,7 @@ void readScene(Reader& r, const QJsonObject& scene, Lesson& lesson) {
         if (auto layout = rl::cameraLayoutFromName(name.toStdString()))
             lesson.cameraLayout = *layout;
         else
-            r.expected(path("camera_layout"), lit("one of auto, ufpe, ufrpe6, ufrpe5, keyvalue"),
+            r.expected(path("camera_layout"), "one of %1"_msg("auto, ufpe, ufrpe6, ufrpe5, keyvalue"),
                        scene.value(lit("camera_layout")));
     }
     if (scene.contains(lit("lighting_layout"))) {
@@ -305,7 +305,7 @@ void readScene(Reader& r, const QJsonObject& scene, Lesson& lesson) {
         if (auto layout = rl::lightingLayoutFromName(name.toStdString()))
             lesson.lightingLayout = *layout;
         else
-            r.expected(path("lighting_layout"), lit("one of auto, ufpe, multi, ufrpe, keyvalue"),
+            r.expected(path("lighting_layout"), "one of %1"_msg("auto, ufpe, multi, ufrpe, keyvalue"),
                        scene.value(lit("lighting_layout")));
     }
 }
@@ -384,7 +384,7 @@ void readStepping(Reader& r, const QJsonObject& s, Lesson& lesson) {
         if (v && (*v)[0] >= 0 && (*v)[1] >= 0 && (*v)[0] < 4e9 && (*v)[1] < 4e9)
             lesson.cursor = rl::ReplayCursor{std::uint32_t((*v)[0]), std::uint32_t((*v)[1])};
         else if (v)
-            r.expected(at + QStringList{lit("cursor")}, lit("[rows, fragments], two whole numbers"),
+            r.expected(at + QStringList{lit("cursor")}, "[rows, fragments], two whole numbers"_msg,
                        s.value(lit("cursor")));
     }
     if (s.contains(lit("pixel"))) {
@@ -394,7 +394,7 @@ void readStepping(Reader& r, const QJsonObject& s, Lesson& lesson) {
     if (!s.contains(lit("breakpoints"))) return;
     const QJsonValue list = s.value(lit("breakpoints"));
     if (!list.isArray()) {
-        r.expected(at + QStringList{lit("breakpoints")}, lit("a list"), list);
+        r.expected(at + QStringList{lit("breakpoints")}, "a list"_msg, list);
         return;
     }
     std::vector<rl::Breakpoint> breakpoints;
@@ -409,12 +409,12 @@ void readStepping(Reader& r, const QJsonObject& s, Lesson& lesson) {
 QStringList stringList(Reader& r, const QJsonValue& value, const QStringList& path) {
     QStringList out;
     if (!value.isArray()) {
-        r.expected(path, lit("a list of dock names"), value);
+        r.expected(path, "a list of dock names"_msg, value);
         return out;
     }
     for (const QJsonValue& v : value.toArray()) {
         if (!v.isString()) {
-            r.expected(path, lit("a list of dock names"), value);
+            r.expected(path, "a list of dock names"_msg, value);
             return {};
         }
         out << v.toString();
@@ -432,7 +432,7 @@ void readWindow(Reader& r, const QJsonObject& w, Lesson& lesson) {
             if (zoom.isDouble() && zoom.toDouble() > 0.0)
                 lesson.zoom = zoom.toDouble();
             else
-                r.expected(at + QStringList{lit("zoom")}, lit("a positive number or \"fit\""), zoom);
+                r.expected(at + QStringList{lit("zoom")}, "a positive number or \"fit\""_msg, zoom);
         }
     }
     if (w.contains(lit("centre")))
@@ -455,13 +455,13 @@ void readRendering(Reader& r, const QJsonObject& top, Lesson& lesson) {
         const QString name = top.value(lit("shading")).toString();
         lesson.shading = rl::shadingModelFromName(name.toStdString());
         if (!lesson.shading)
-            r.expected({lit("shading")}, lit("one of phong, flat, gouraud, painter"),
+            r.expected({lit("shading")}, "one of %1"_msg("phong, flat, gouraud, painter"),
                        top.value(lit("shading")));
     }
     if (top.contains(lit("rules"))) {
         lesson.rules = rl::ruleSetFromName(top.value(lit("rules")).toString().toStdString());
         if (!lesson.rules)
-            r.expected({lit("rules")}, lit("one of course, gpu, hw2"), top.value(lit("rules")));
+            r.expected({lit("rules")}, "one of %1"_msg("course, gpu, hw2"), top.value(lit("rules")));
     }
     if (top.contains(lit("projection"))) {
         std::array<rl::NearPlane::Mode, kProjectionKeys.size()> modes{};
@@ -477,7 +477,7 @@ void readRendering(Reader& r, const QJsonObject& top, Lesson& lesson) {
         if (near.isDouble() && near.toDouble() > 0.0)
             lesson.nearW = near.toDouble();
         else if (near.toString() != lit("auto"))
-            r.expected({lit("near")}, lit("a positive number or \"auto\""), near);
+            r.expected({lit("near")}, "a positive number or \"auto\""_msg, near);
     }
     if (top.contains(lit("image_size"))) {
         const QJsonValue size = top.value(lit("image_size"));
@@ -486,7 +486,7 @@ void readRendering(Reader& r, const QJsonObject& top, Lesson& lesson) {
         if (size.isArray() && wh.size() == 2 && w >= 1 && h >= 1 && w <= 4096 && h <= 4096)
             lesson.imageSize = QSize(w, h);
         else
-            r.expected({lit("image_size")}, lit("[width, height], whole numbers from 1 to 4096"),
+            r.expected({lit("image_size")}, "[width, height], whole numbers from %1 to %2"_msg(1, 4096),
                        size);
     }
     if (top.contains(lit("animation")))
@@ -514,11 +514,12 @@ rl::Result<Lesson> parseLesson(const QByteArray& text, const QString& fileName,
     const QJsonDocument document = QJsonDocument::fromJson(text, &parseError);
     if (parseError.error != QJsonParseError::NoError)
         return rl::makeError(rl::ErrorCode::Syntax, locator.location(parseError.offset),
-                             "not a lesson file: " + parseError.errorString().toStdString());
+                             "not a lesson file: %1"_msg(parseError.errorString().toStdString()));
     const QJsonObject top = document.object();
     if (!document.isObject() || top.value(lit("rasterlab_lesson")).toInt(-1) != Lesson::kVersion)
         return rl::makeError(rl::ErrorCode::Unsupported, locator.location(0),
-                             "expected a lesson file: a JSON object with \"rasterlab_lesson\": 1");
+                             "expected a lesson file: a JSON object with \"rasterlab_lesson\": %1"_msg(
+                                 Lesson::kVersion));
     rl::Diagnostics warnings;
     Reader r(locator, warnings);
     r.warnUnknown(top, {},

@@ -520,6 +520,28 @@ const char* const kCatalogue[] = {
     QT_TRANSLATE_NOOP("Messages", "cannot write the file: %1"),
     QT_TRANSLATE_NOOP("Messages", "only %1 of %2 bytes could be written (is the disk full?)"),
     QT_TRANSLATE_NOOP("Messages", "cannot write the file (it is left as it was): %1"),
+    // app/lesson_file.cpp
+    QT_TRANSLATE_NOOP("Messages", "[rows, fragments], two whole numbers"),
+    QT_TRANSLATE_NOOP("Messages", "[width, height], whole numbers from %1 to %2"),
+    QT_TRANSLATE_NOOP("Messages", "a list"),
+    QT_TRANSLATE_NOOP("Messages", "a list of %1 numbers"),
+    QT_TRANSLATE_NOOP("Messages", "a list of 1 to 8 lights"),
+    QT_TRANSLATE_NOOP("Messages", "a list of dock names"),
+    QT_TRANSLATE_NOOP("Messages", "a number"),
+    QT_TRANSLATE_NOOP("Messages", "a positive number or \"auto\""),
+    QT_TRANSLATE_NOOP("Messages", "a positive number or \"fit\""),
+    QT_TRANSLATE_NOOP("Messages", "a whole number from %1"),
+    QT_TRANSLATE_NOOP("Messages", "an object"),
+    QT_TRANSLATE_NOOP("Messages", "expected %1 for \"%2\", found %3"),
+    QT_TRANSLATE_NOOP("Messages", "expected a lesson file: a JSON object with \"rasterlab_lesson\": %1"),
+    QT_TRANSLATE_NOOP("Messages", "not a lesson file: %1"),
+    QT_TRANSLATE_NOOP("Messages", "nothing"),
+    QT_TRANSLATE_NOOP("Messages", "null"),
+    QT_TRANSLATE_NOOP("Messages", "one of %1"),
+    QT_TRANSLATE_NOOP("Messages", "text in quotes"),
+    QT_TRANSLATE_NOOP("Messages", "the text '%1'"),
+    QT_TRANSLATE_NOOP("Messages", "true or false"),
+    QT_TRANSLATE_NOOP("Messages", "unknown key \"%1\" ignored (known here: %2)"),
 };
 
 // The template with its arguments in place of %1 ... %9, in one pass, as Message::english does:

@@ -649,7 +649,7 @@ void TestLessons::cliRendersALesson() {
     QCOMPARE(run.exitCode, 0);
     // The lesson's own size and shading; 205 pixels as triangleCoversItsPixels counts them.
     QVERIFY2(run.out.startsWith(QStringLiteral("rendering triangle\nwrote ")), qPrintable(run.out));
-    QVERIFY2(run.out.contains(QStringLiteral("(image, 32x24)\n  1 triangles, phong shading, ")),
+    QVERIFY2(run.out.contains(QStringLiteral("(image, 32x24)\n  1 triangle, phong shading, ")),
              qPrintable(run.out));
     QCOMPARE(QImage(dir.filePath(QStringLiteral("t.png"))).size(), QSize(32, 24));
 }

@@ -1780,17 +1780,122 @@
         <translation>cannot write the file (it is left as it was): %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="557"/>
+        <location filename="../app/pipeline_messages.cpp" line="524"/>
+        <source>[rows, fragments], two whole numbers</source>
+        <translation>[rows, fragments], two whole numbers</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="525"/>
+        <source>[width, height], whole numbers from %1 to %2</source>
+        <translation>[width, height], whole numbers from %1 to %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="526"/>
+        <source>a list</source>
+        <translation>a list</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="527"/>
+        <source>a list of %1 numbers</source>
+        <translation>a list of %1 numbers</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="528"/>
+        <source>a list of 1 to 8 lights</source>
+        <translation>a list of 1 to 8 lights</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="529"/>
+        <source>a list of dock names</source>
+        <translation>a list of dock names</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="530"/>
+        <source>a number</source>
+        <translation>a number</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="531"/>
+        <source>a positive number or &quot;auto&quot;</source>
+        <translation>a positive number or &quot;auto&quot;</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="532"/>
+        <source>a positive number or &quot;fit&quot;</source>
+        <translation>a positive number or &quot;fit&quot;</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="533"/>
+        <source>a whole number from %1</source>
+        <translation>a whole number from %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="534"/>
+        <source>an object</source>
+        <translation>an object</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="535"/>
+        <source>expected %1 for &quot;%2&quot;, found %3</source>
+        <translation>expected %1 for &quot;%2&quot;, found %3</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="536"/>
+        <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
+        <translation>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="537"/>
+        <source>not a lesson file: %1</source>
+        <translation>not a lesson file: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="538"/>
+        <source>nothing</source>
+        <translation>nothing</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="539"/>
+        <source>null</source>
+        <translation>null</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="540"/>
+        <source>one of %1</source>
+        <translation>one of %1</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="541"/>
+        <source>text in quotes</source>
+        <translation>text in quotes</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="542"/>
+        <source>the text &apos;%1&apos;</source>
+        <translation>the text &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="543"/>
+        <source>true or false</source>
+        <translation>true or false</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="544"/>
+        <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
+        <translation>unknown key &quot;%1&quot; ignored (known here: %2)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="579"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="563"/>
+        <location filename="../app/pipeline_messages.cpp" line="585"/>
         <source>%1: warning: %2</source>
         <translation>%1: warning: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="564"/>
+        <location filename="../app/pipeline_messages.cpp" line="586"/>
         <source>%1: note: %2</source>
         <translation>%1: note: %2</translation>
     </message>
@@ -3766,103 +3871,103 @@
         <translation>The image</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="78"/>
+        <location filename="../app/main_window_lessons.cpp" line="79"/>
         <source>E&amp;xamples</source>
         <translation>E&amp;xamples</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="88"/>
+        <location filename="../app/main_window_lessons.cpp" line="89"/>
         <source>Open Lesso&amp;n...</source>
         <translation>Open Lesso&amp;n...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="89"/>
+        <location filename="../app/main_window_lessons.cpp" line="90"/>
         <source>Ctrl+Alt+O</source>
         <translation>Ctrl+Alt+O</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="91"/>
+        <location filename="../app/main_window_lessons.cpp" line="92"/>
         <source>A lesson file (.rasterlab): a scene with its stepping, picked pixel, breakpoints, zoom and docks</source>
         <translation>A lesson file (.rasterlab): a scene with its stepping, picked pixel, breakpoints, zoom and docks</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="93"/>
+        <location filename="../app/main_window_lessons.cpp" line="94"/>
         <source>Save Lesson &amp;As...</source>
         <translation>Save Lesson &amp;As...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="94"/>
+        <location filename="../app/main_window_lessons.cpp" line="95"/>
         <source>Ctrl+Alt+S</source>
         <translation>Ctrl+Alt+S</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="96"/>
+        <location filename="../app/main_window_lessons.cpp" line="97"/>
         <source>Recent Lesso&amp;ns</source>
         <translation>Recent Lesso&amp;ns</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="122"/>
+        <location filename="../app/main_window_lessons.cpp" line="123"/>
         <source>Open Lesson</source>
         <translation>Open Lesson</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="123"/>
+        <location filename="../app/main_window_lessons.cpp" line="124"/>
         <source>Lessons (*.rasterlab);;All files (*)</source>
         <translation>Lessons (*.rasterlab);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="128"/>
+        <location filename="../app/main_window_lessons.cpp" line="129"/>
         <source>Save Lesson</source>
         <translation>Save Lesson</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="129"/>
+        <location filename="../app/main_window_lessons.cpp" line="130"/>
         <source>Lessons (*.rasterlab)</source>
         <translation>Lessons (*.rasterlab)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="132"/>
+        <location filename="../app/main_window_lessons.cpp" line="133"/>
         <source>Saved the lesson to %1</source>
         <translation>Saved the lesson to %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="137"/>
-        <location filename="../app/main_window_lessons.cpp" line="150"/>
+        <location filename="../app/main_window_lessons.cpp" line="138"/>
+        <location filename="../app/main_window_lessons.cpp" line="151"/>
         <source>there is no example named &apos;%1&apos; (examples: %2)</source>
         <translation>there is no example named &apos;%1&apos; (examples: %2)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="165"/>
+        <location filename="../app/main_window_lessons.cpp" line="166"/>
         <source>the %1 was not restored, the one shown stays: %2</source>
         <translation>the %1 was not restored, the one shown stays: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="168"/>
+        <location filename="../app/main_window_lessons.cpp" line="169"/>
         <source>camera</source>
         <translation>camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="169"/>
+        <location filename="../app/main_window_lessons.cpp" line="170"/>
         <source>lighting</source>
         <translation>lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="170"/>
+        <location filename="../app/main_window_lessons.cpp" line="171"/>
         <source>object</source>
         <translation>object</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="173"/>
+        <location filename="../app/main_window_lessons.cpp" line="174"/>
         <source>the command file was not restored, the scene shown stays: %1</source>
         <translation>the command file was not restored, the scene shown stays: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="221"/>
+        <location filename="../app/main_window_lessons.cpp" line="222"/>
         <source>The lesson opened, but not all of it: see the Messages dock</source>
         <translation>The lesson opened, but not all of it: see the Messages dock</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="338"/>
+        <location filename="../app/main_window_lessons.cpp" line="339"/>
         <source>%1: cannot save the lesson: %2</source>
         <translation>%1: cannot save the lesson: %2</translation>
     </message>
