@@ -161,7 +161,8 @@ Lesson exampleLesson(const QString& name) {
     lesson.imageSize = e->imageSize;
     lesson.granularity = e->granularity;
     lesson.pixel = e->pixel;
-    lesson.docksRaised = QStringList{QString::fromLatin1(e->raised)};
+    // The lesson's own dock, and the Scene dock, whose text says what to show with it.
+    lesson.docksRaised = QStringList{QString::fromLatin1(e->raised), QStringLiteral("sceneDock")};
     if (e->nearW > 0.0) lesson.nearW = e->nearW;
     if (e->fromStart) lesson.cursor = rl::ReplayCursor{0, 0};
     if (e->breakAtTriangle > 0) {
