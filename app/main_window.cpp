@@ -354,6 +354,12 @@ void MainWindow::updateClickerKeys() {
     m_view->setArrowsMovePick(!presenting);
 }
 
+// The status bar's hint on entering presentation mode.
+static QString presentationHint() {
+    return MainWindow::tr("Presentation mode: F5 or Esc to leave; Page Down, Right and "
+                          "Space step and play");
+}
+
 void MainWindow::setPresentationMode(bool on) {
     if (on == m_inspection->presentation()) return;
     {
@@ -394,10 +400,10 @@ void MainWindow::setPresentationMode(bool on) {
         p.setColor(QPalette::ToolTipBase, Qt::black);
         p.setColor(QPalette::ToolTipText, Qt::white);
         QApplication::setPalette(p);
-        statusBar()->showMessage(tr("Presentation mode: F5 or Esc to leave; Page Down, Right and "
-                                    "Space step and play"),
-                                 8000);
+        statusBar()->showMessage(presentationHint(), 8000);
     } else {
+        // The hint is about presentation mode: it leaves with it.
+        if (statusBar()->currentMessage() == presentationHint()) statusBar()->clearMessage();
         QApplication::setFont(m_normalFont);
         QApplication::setPalette(m_normalPalette);
     }

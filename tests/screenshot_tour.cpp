@@ -1,36 +1,62 @@
 // Screenshots the program makes of itself for the user guide (docs/guide.en.md,
-// docs/guide.pt_BR.md), in one language, each named <shot>-<language>.png:
+// docs/guide.pt_BR.md), in one language, each named <shot>-<language>.png, all on the lessons
+// the program ships (File > Examples) and the repository's docs/examples, so that whoever
+// clones RasterLab can make every picture of the guide again:
 //
-//   window            the window on calice2, stepped by scanline past the middle of the frame
+//   window            the goblet lesson stepped by scanline past the middle of the frame
 //   toolbars          the stage strip and the stepping bar, mid-frame
-//   menu-file, menu-export, menu-step   the File menu, File > Export More, the Step menu
-//   <dock name>       each stage view (cameraBasisDock ... pixelInspectorDock, nearClipDock,
-//                     trapezoidDock) and the Scene
-//   image-stepping    the image zoomed to the pixel grid, stepping pixel by pixel
-//   breakpoints       the Breakpoints dock after a breakpoint stopped the replay
+//   menu-file, menu-examples, menu-export, menu-step   the File menu, File > Examples,
+//                     File > Export More, the Step menu
+//   <dock name>       each stage view: cameraBasisDock ... pixelInspectorDock and the Scene
+//                     on the goblet, scanlineDock and trapezoidDock on the triangle lesson,
+//                     zbufferDock on the zbuffer lesson, nearClipDock on the near-plane lesson
+//   image-stepping    the triangle lesson zoomed to the pixel grid, stepping pixel by pixel
+//   breakpoints       the zbuffer lesson's Breakpoints dock after its breakpoint stopped it
 //   messages-error    the Messages dock after a bad object file (the scene kept)
-//   edit              the Edit dock after ka was set to 0
+//   edit              the Edit dock after ka was set to 0 on the goblet
 //   inspector-black   the pixel inspector explaining a black pixel (N.L < 0, no ambient)
 //   image-black       the image zoomed around that pixel, picked
-//   presentation      presentation mode
-//   strip-command-file  the stage strip of a command file (skipped stages)
+//   presentation      presentation mode on the goblet
+//   fill              View > Fill the Window: the z-buffer dock over the whole window
+//   window-lighting, inspector-lighting, edit-lights   the lights lesson: the window, the
+//                     pixel inspector light by light, the Edit dock's lights
+//   painter           the Painter's algorithm dock on the painter-cycle lesson
+//   shading-side-by-side   File > Export More > Shading Side by Side on the sphere lesson
+//   strip-command-file  the stage strip of docs/examples/crossing.txt (skipped stages)
 //   animation         the default trefoil's turntable paused mid-turn, stepped by scanline
 //   normals-wrong     the Normals dock under a scale (1, 0.5, 1): right and wrong normals
-//   window-lighting, inspector-lighting, edit-lights   calice2 under the lecture slides'
-//                     lighting (an attenuated spot, a directional light, Blinn-Phong): the
-//                     window, the pixel inspector light by light, the Edit dock's lights
-//   painter           the Painter's algorithm dock on that scene (seed 004)
 //
-//   screenshot_tour --out DIR [--language en|pt_BR] [--samples DIR]
-// (scripts/screenshots.sh runs it in both languages.) The settings are kept in a temporary
+// With --images DIR it also makes the pictures of the README and docs/accuracy.md:
+// zbuffer-dock.png (in Portuguese, the run with --language pt_BR) and accuracy-dock.png (the
+// run with --language en).
+//
+// Every shot is checked: no visible text (labels, buttons, list and table cells, the window
+// title, the status bar) may show a path of the machine it was made on (/tmp/, /home/,
+// /work/, /root/, the temporary folder), and no shot outside presentation mode may show
+// presentation mode's text. A shot that does is reported on stderr and the tour exits 1.
+//
+//   screenshot_tour --out DIR [--language en|pt_BR] [--docs DIR] [--images DIR]
+// (scripts/screenshots.sh runs it in both languages from the repository's root; --docs is
+// the repository's docs folder, default "docs".) The settings are kept in a temporary
 // folder, so no earlier run (recent files, layout, language) changes what is shown.
+#include <QAbstractButton>
+#include <QAbstractItemView>
 #include <QApplication>
+#include <QComboBox>
+#include <QGroupBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QStatusBar>
+#include <QTabBar>
+#include <QTextEdit>
 #include <QCheckBox>
 #include <QCommandLineParser>
 #include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QFileInfo>
 #include <QMenu>
 #include <QMenuBar>
 #include <QPolygonF>
@@ -47,6 +73,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "accuracy_panel.h"
 #include "animation_panel.h"
 #include "breakpoints_view.h"
 #include "edit_panel.h"
@@ -60,6 +87,7 @@
 #include "stepping_bar.h"
 #include "translators.h"
 #include "vertex_table.h"
+#include "zbuffer_view.h"
 
 using namespace rasterlab;
 
@@ -79,13 +107,96 @@ bool waitForNewFrame(MainWindow& window, const std::shared_ptr<const rl::FrameTr
     return waitForReplay(window);
 }
 
-// The widget (or the part `area` of it) as a PNG, compressed as much as PNG allows.
+// What a shot must not show: the machine's paths, and presentation mode's text outside it.
+struct ShotRules {
+    QStringList paths;         // machine paths, e.g. "/tmp/"
+    QString presentationText;  // the status bar's text on entering presentation mode
+};
+ShotRules g_rules;
+
+void addText(QStringList& texts, const QString& text) {
+    if (!text.isEmpty()) texts << text;
+}
+
+// The cells of a model (every role shown: display, and tooltips are not visible), children
+// of tree rows too, up to a limit that no view of the tour reaches.
+void addModelTexts(QStringList& texts, const QAbstractItemModel* model, const QModelIndex& parent,
+                   int& budget) {
+    if (!model) return;
+    for (int row = 0; row < model->rowCount(parent) && budget > 0; ++row)
+        for (int column = 0; column < model->columnCount(parent) && budget > 0; ++column) {
+            const QModelIndex index = model->index(row, column, parent);
+            addText(texts, model->data(index, Qt::DisplayRole).toString());
+            --budget;
+            if (column == 0 && model->hasChildren(index))
+                addModelTexts(texts, model, index, budget);
+        }
+    for (int section = 0; section < model->columnCount(parent); ++section)
+        addText(texts, model->headerData(section, Qt::Horizontal).toString());
+}
+
+// The texts a widget shows: its own, and those of its descendants visible with it, the
+// window's title and status bar.
+QStringList visibleTexts(QWidget* root) {
+    QStringList texts;
+    QWidget* top = root->window();
+    addText(texts, top->windowTitle());
+    if (auto* main = qobject_cast<QMainWindow*>(top); main && main == root)
+        addText(texts, main->statusBar()->currentMessage());
+    QList<QWidget*> widgets = root->findChildren<QWidget*>();
+    widgets.prepend(root);
+    for (QWidget* w : widgets) {
+        if (w != root && !w->isVisibleTo(root)) continue;
+        if (auto* label = qobject_cast<QLabel*>(w)) addText(texts, label->text());
+        if (auto* button = qobject_cast<QAbstractButton*>(w)) addText(texts, button->text());
+        if (auto* line = qobject_cast<QLineEdit*>(w)) addText(texts, line->text());
+        if (auto* edit = qobject_cast<QTextEdit*>(w)) addText(texts, edit->toPlainText());
+        if (auto* plain = qobject_cast<QPlainTextEdit*>(w)) addText(texts, plain->toPlainText());
+        if (auto* group = qobject_cast<QGroupBox*>(w)) addText(texts, group->title());
+        if (auto* combo = qobject_cast<QComboBox*>(w)) addText(texts, combo->currentText());
+        if (auto* dockWidget = qobject_cast<QDockWidget*>(w)) addText(texts, dockWidget->windowTitle());
+        if (auto* bar = qobject_cast<QStatusBar*>(w)) addText(texts, bar->currentMessage());
+        if (auto* tabs = qobject_cast<QTabBar*>(w))
+            for (int i = 0; i < tabs->count(); ++i) addText(texts, tabs->tabText(i));
+        if (auto* menu = qobject_cast<QMenu*>(w))
+            for (const QAction* action : menu->actions()) addText(texts, action->text());
+        if (auto* view = qobject_cast<QAbstractItemView*>(w)) {
+            int budget = 200000;
+            addModelTexts(texts, view->model(), view->rootIndex(), budget);
+        }
+    }
+    texts.removeDuplicates();
+    return texts;
+}
+
+// The reasons the shot of `widget` must not be published (empty: none).
+QStringList shotProblems(QWidget* widget) {
+    QStringList problems;
+    const auto* main = qobject_cast<const MainWindow*>(widget->window());
+    const bool presenting = main && main->presentationMode();
+    for (const QString& text : visibleTexts(widget)) {
+        for (const QString& path : g_rules.paths)
+            if (text.contains(path))
+                problems << QStringLiteral("shows the machine path '%1' in '%2'").arg(path, text);
+        if (!presenting && !g_rules.presentationText.isEmpty() &&
+            text.contains(g_rules.presentationText))
+            problems << QStringLiteral("shows presentation mode's text outside it: '%1'").arg(text);
+    }
+    return problems;
+}
+
+// The widget (or the part `area` of it) as a PNG, compressed as much as PNG allows; false,
+// with the reason on stderr, when it cannot be written or shows what it must not.
 bool save(QWidget* widget, const QString& path, const QRect& area = QRect()) {
     QCoreApplication::processEvents();
+    const QStringList problems = shotProblems(widget);
+    for (const QString& problem : problems)
+        std::fprintf(stderr, "FAILED: %s %s\n", qPrintable(path), qPrintable(problem));
     const bool ok = widget->grab(area.isNull() ? QRect(QPoint(0, 0), QSize(-1, -1)) : area)
                         .save(path, "PNG", 0);
-    std::printf("%s %s\n", ok ? "wrote" : "FAILED", qPrintable(path));
-    return ok;
+    if (!ok) std::fprintf(stderr, "FAILED: %s could not be written\n", qPrintable(path));
+    else std::printf("wrote %s\n", qPrintable(path));
+    return ok && problems.isEmpty();
 }
 
 QDockWidget* dock(MainWindow& window, const char* name) {
@@ -181,6 +292,54 @@ bool saveZoomed(FrameImageView* view, const QRectF& area, QSizeF room, double mi
     return ok;
 }
 
+// Opens a shipped lesson and waits for its frame, ready to step, with its view restored.
+bool openExample(MainWindow& window, const char* name) {
+    const auto old = window.inspection()->frame();
+    if (!window.openExample(QLatin1String(name))) {
+        std::fprintf(stderr, "FAILED: no lesson '%s'\n", name);
+        return false;
+    }
+    const bool ready = QTest::qWaitFor(
+        [&] {
+            return window.inspection()->frame() != old && !window.lessonViewPending() &&
+                   window.isReadyToStep();
+        },
+        kTimeoutMs);
+    if (!ready) std::fprintf(stderr, "FAILED: the lesson '%s' was not ready in 60 s\n", name);
+    // The status bar may still tell of the lesson before ("Stopped at a breakpoint ...").
+    window.statusBar()->clearMessage();
+    QTest::qWait(50);
+    return ready;
+}
+
+// The stepping bar's text: where the cursor is (quoted by the guide).
+QString position(MainWindow& window) {
+    return window.steppingBar()->positionLabel()->fullText();
+}
+
+// The steps of `granularity` from `from` to `to` (as many presses of Step Forward).
+int stepsBetween(const rl::FrameReplay* replay, rl::ReplayCursor from, rl::ReplayCursor to,
+                 rl::StepGranularity granularity) {
+    int steps = 0;
+    while (from < to) {
+        const rl::ReplayCursor next = replay->next(from, granularity);
+        if (!(from < next)) break;
+        from = next;
+        ++steps;
+    }
+    return steps;
+}
+
+// The pixels an object covers at the end of the frame.
+QRect coveredBox(Inspection* inspection) {
+    QRect box;
+    const rl::Image<std::uint32_t>& holder = inspection->frame()->depth->triangle;
+    for (int y = 0; y < holder.height(); ++y)
+        for (int x = 0; x < holder.width(); ++x)
+            if (holder.at(x, y) != rl::kNoTriangle) box |= QRect(x, y, 1, 1);
+    return box;
+}
+
 }  // namespace
 
 int main(int argc, char* argv[]) {
@@ -194,61 +353,56 @@ int main(int argc, char* argv[]) {
     parser.addOptions({{QStringLiteral("out"), QStringLiteral("folder"), QStringLiteral("DIR")},
                        {QStringLiteral("language"), QStringLiteral("en or pt_BR"),
                         QStringLiteral("L"), QStringLiteral("en")},
-                       {QStringLiteral("samples"), QStringLiteral("course samples"),
-                        QStringLiteral("DIR"), QStringLiteral("../shared/samples")}});
+                       {QStringLiteral("docs"), QStringLiteral("the repository's docs folder"),
+                        QStringLiteral("DIR"), QStringLiteral("docs")},
+                       {QStringLiteral("images"),
+                        QStringLiteral("where to write the README's and accuracy.md's pictures"),
+                        QStringLiteral("DIR")}});
     parser.process(app);
-    const QDir out(parser.value(QStringLiteral("out")));
+    // Absolute: the bad file's shot is made from another current folder.
+    const QDir out(QFileInfo(parser.value(QStringLiteral("out"))).absoluteFilePath());
     QDir().mkpath(out.path());
     const QString language = parser.value(QStringLiteral("language"));
     Translators translators;
     translators.install(language);
-    const QString samples = parser.value(QStringLiteral("samples"));
+    const QDir docs(QFileInfo(parser.value(QStringLiteral("docs"))).absoluteFilePath());
+    const QString images = parser.value(QStringLiteral("images")).isEmpty()
+                               ? QString()
+                               : QFileInfo(parser.value(QStringLiteral("images"))).absoluteFilePath();
     const QString suffix = QStringLiteral("-") + language + QStringLiteral(".png");
     auto file = [&](const QString& name) { return out.filePath(name + suffix); };
     int failures = 0;
     const auto check = [&](bool ok) { failures += ok ? 0 : 1; };
 
+    g_rules.paths = {QStringLiteral("/tmp/"), QStringLiteral("/home/"), QStringLiteral("/work/"),
+                     QStringLiteral("/root/"), QDir::tempPath(), settingsDir.path(),
+                     QDir::currentPath(), QDir::homePath() + QLatin1Char('/')};
+    g_rules.paths.removeDuplicates();
+    g_rules.paths.removeAll(QStringLiteral("/"));
+    g_rules.presentationText = QCoreApplication::translate(
+        "rasterlab::MainWindow",
+        "Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play");
+
     MainWindow window;
     window.resize(1500, 940);
     window.show();
-    const QString ufpe = samples + QStringLiteral("/course/ufpe/");
-    for (const char* name : {"calice2.cfg", "iluminacao.txt", "calice2.byu"})
-        if (!window.openPath(ufpe + QLatin1String(name))) return 1;
     if (!waitForReplay(window)) return 1;
+    if (!openExample(window, "goblet")) return 1;
     Inspection* inspection = window.inspection();
     const rl::FrameReplay* replay = inspection->replay();
+    const QPoint highlight(353, 157);  // the highlight on the bowl (clamped to 255)
+    const QRect gobletBox = coveredBox(inspection);
 
-    // The window: the brightest pixel of the image (the highlight) picked, stepped by
-    // scanline to past the middle of the frame.
-    const QImage final = window.currentImage();
-    QPoint brightest(0, 0);
-    int best = -1;
-    for (int y = 0; y < final.height(); ++y)
-        for (int x = 0; x < final.width(); ++x) {
-            const QColor c = final.pixelColor(x, y);
-            if (c.red() + c.green() + c.blue() > best) {
-                best = c.red() + c.green() + c.blue();
-                brightest = QPoint(x, y);
-            }
-        }
-    // The pixels the object covers.
-    QRect objectBox;
-    {
-        const rl::Image<std::uint32_t>& holder = inspection->frame()->depth->triangle;
-        for (int y = 0; y < holder.height(); ++y)
-            for (int x = 0; x < holder.width(); ++x)
-                if (holder.at(x, y) != rl::kNoTriangle) objectBox |= QRect(x, y, 1, 1);
-    }
-    inspection->pickPixel(brightest);
+    // The window: the goblet, its highlight picked, stepped by scanline to past the middle.
     inspection->setGranularity(rl::StepGranularity::Scanline);
     inspection->seek(replay->next(
         replay->atFragment(static_cast<std::uint32_t>(replay->fragments().size() * 6 / 10)),
         rl::StepGranularity::Scanline));
     {
-        // The object as large as the view allows.
         FrameImageView* view = window.imageView();
-        zoomTo(view, QRectF(objectBox), QSizeF(view->size()) * 0.92, 0.1);
+        zoomTo(view, QRectF(gobletBox), QSizeF(view->size()) * 0.92, 0.1);
     }
+    std::printf("window: %s\n", qPrintable(position(window)));
     check(save(&window, file(QStringLiteral("window"))));
     {
         const QRect strip = window.findChild<QToolBar*>(QStringLiteral("stageToolBar"))->geometry();
@@ -261,97 +415,26 @@ int main(int argc, char* argv[]) {
     QMenu* fileMenu =
         window.menuBar()->actions().value(0) ? window.menuBar()->actions()[0]->menu() : nullptr;
     check(saveMenu(window, fileMenu, file(QStringLiteral("menu-file"))));
+    check(saveMenu(window, window.findChild<QMenu*>(QStringLiteral("examplesMenu")),
+                   file(QStringLiteral("menu-examples"))));
     check(saveMenu(window, window.findChild<QMenu*>(QStringLiteral("exportMenu")),
                    file(QStringLiteral("menu-export"))));
     check(saveMenu(window, window.findChild<QMenu*>(QStringLiteral("stepMenu")),
                    file(QStringLiteral("menu-step"))));
-    const std::pair<const char*, QSize> docks[] = {
-        {"cameraBasisDock", {560, 640}},    {"vertexTableDock", {640, 560}},
-        {"normalsDock", {560, 660}},        {"projectionDock", {560, 660}},
-        {"scanlineDock", {560, 720}},       {"zbufferDock", {520, 760}},
-        {"pixelInspectorDock", {700, 600}}, {"sceneDock", {380, 450}},
-        {"nearClipDock", {620, 700}},       {"trapezoidDock", {560, 760}}};
-    window.vertexTableView()->setOnlySelectedTriangle(true);
-    for (const auto& [name, size] : docks)
-        check(saveDock(dock(window, name), file(QLatin1String(name)), size));
-    window.vertexTableView()->setOnlySelectedTriangle(false);
-    window.resetLayout();
 
-    // The image zoomed to the pixel grid, stepping pixel by pixel through the middle of a
-    // triangle drawn early (on the empty background) and not a sliver: the triangle, its
-    // scanline, span, edge crossings and samples drawn over.
-    {
-        std::uint32_t chosen = 0, most = 0;
-        const std::size_t early = std::max<std::size_t>(1, replay->triangleCount() / 10);
-        for (std::uint32_t t = 0; t < early; ++t) {
-            std::uint32_t fragments = 0, rows = 0, widest = 0;
-            for (std::uint32_t r = replay->firstRow(t); r < replay->endRow(t); ++r) {
-                const rl::ReplayRow& row = replay->rows()[r];
-                if (row.empty()) continue;
-                ++rows;
-                fragments += row.fragmentEnd - row.fragmentBegin;
-                widest = std::max<std::uint32_t>(widest, row.xEnd - row.xBegin);
-            }
-            const bool fat = rows >= 5 && widest >= 5 && fragments * 2 >= rows * widest;
-            if (fat && fragments > most) {
-                most = fragments;
-                chosen = t;
-            }
-        }
-        const std::uint32_t first = replay->rows()[replay->firstRow(chosen)].fragmentBegin;
-        const std::uint32_t middle = first + most / 2;
-        inspection->setGranularity(rl::StepGranularity::Pixel);
-        inspection->seek(replay->atFragment(middle + 1));
-        // A pixel of this triangle tested two rows before, picked.
-        for (std::uint32_t i = middle; i > first; --i) {
-            const rl::ReplayFragment& f = replay->fragments()[i];
-            if (f.y + 2 <= replay->fragments()[middle].y) {
-                inspection->pickPixel(QPoint(f.x, f.y));
-                break;
-            }
-        }
-        FrameImageView* view = window.imageView();
-        QRectF box;
-        if (const auto& t = view->overlay().currentTriangle)
-            box = QPolygonF(QList<QPointF>(t->begin(), t->end())).boundingRect();
-        box.adjust(-1.0, -1.0, 1.0, 1.0);
-        const QSize crop(620, 420);
-        check(saveZoomed(view, box, QSizeF(crop) * 0.85, 10.0, crop,
-                         file(QStringLiteral("image-stepping"))));
-    }
-
-    // A breakpoint: the first depth rejection at a pixel where a fragment is rejected.
-    inspection->setGranularity(rl::StepGranularity::Scanline);
-    for (const rl::ReplayFragment& f : replay->fragments())
-        if (f.verdict == rl::FragmentVerdict::Rejected) {
-            inspection->pickPixel(QPoint(f.x, f.y));
-            break;
-        }
-    window.breakpointsView()->add(rl::Breakpoint::Kind::Triangle, 2000);
-    window.breakpointsView()->add(rl::Breakpoint::Kind::DepthRejection, 0);
-    inspection->toStart();
-    inspection->continueToBreakpoint();
-    check(saveDock(dock(window, "breakpointsDock"), file(QStringLiteral("breakpoints")),
-                   QSize(380, 300)));
-    window.breakpointsView()->clear();
+    // The goblet's stage views at the end of the frame, its highlight picked.
     inspection->toEnd();
-
-    // A bad object file: the message names the place; the scene stays.
+    inspection->pickPixel(highlight);
     {
-        const QDir dir(QDir::temp().filePath(QStringLiteral("rasterlab-guide")));
-        dir.mkpath(QStringLiteral("."));
-        QFile original(ufpe + QStringLiteral("calice2.byu"));
-        QFile bad(dir.filePath(QStringLiteral("calice2.byu")));
-        if (!original.open(QIODevice::ReadOnly) || !bad.open(QIODevice::WriteOnly)) return 1;
-        QList<QByteArray> lines = original.readAll().split('\n');
-        if (lines.size() > 3) lines[3].replace(QByteArray("409.537"), QByteArray("4l09.537"));
-        bad.write(lines.join('\n'));
-        bad.close();
-        window.openPath(bad.fileName());
-        bad.remove();
-        QDir(dir).removeRecursively();
-        check(saveDock(dock(window, "messagesDock"), file(QStringLiteral("messages-error")),
-                       QSize(1240, 110)));
+        const std::pair<const char*, QSize> docks[] = {
+            {"cameraBasisDock", {560, 640}},    {"vertexTableDock", {640, 560}},
+            {"normalsDock", {560, 660}},        {"projectionDock", {560, 660}},
+            {"pixelInspectorDock", {700, 600}}, {"sceneDock", {380, 560}}};
+        window.vertexTableView()->setOnlySelectedTriangle(true);
+        for (const auto& [name, size] : docks)
+            check(saveDock(dock(window, name), file(QLatin1String(name)), size));
+        window.vertexTableView()->setOnlySelectedTriangle(false);
+        window.resetLayout();
     }
 
     // Live editing: ka = 0 takes the ambient term away; the pixels the light does not reach
@@ -360,6 +443,7 @@ int main(int argc, char* argv[]) {
     window.editPanel()->spinBox(SceneDocument::Field::Ka)->setValue(0.0);
     if (!waitForNewFrame(window, before)) return 1;
     replay = inspection->replay();
+    dock(window, "editDock")->raise();
     check(saveDock(dock(window, "editDock"), file(QStringLiteral("edit")), QSize(380, 700)));
     {
         const QImage image = window.currentImage();
@@ -404,27 +488,203 @@ int main(int argc, char* argv[]) {
                          QSizeF(crop), 4.0, crop, file(QStringLiteral("image-black"))));
     }
 
-    // In front of a class: ka back to 1 (Undo), the highlight picked, stepped by scanline to
-    // the middle of the frame.
+    // ka back (Undo).
     before = inspection->frame();
     window.editPanel()->undoStack()->undo();
     if (!waitForNewFrame(window, before)) return 1;
     replay = inspection->replay();
     window.resetLayout();
-    inspection->pickPixel(brightest);
+    // The README's and accuracy.md's pictures: the window filled (F11) by the z-buffer dock in
+    // false colour (in Portuguese), or by the Accuracy dock's measurement (in English).
+    if (!images.isEmpty()) {
+        QDir().mkpath(images);
+        inspection->toEnd();
+        window.imageView()->fitToWindow();
+        if (language == QLatin1String("pt_BR")) {
+            window.zbufferView()->setPalette(DepthPalette::FalseColour);
+            dock(window, "zbufferDock")->raise();
+            window.toggleFill(dock(window, "zbufferDock"));
+            QTest::qWait(100);
+            check(save(&window, QDir(images).filePath(QStringLiteral("zbuffer-dock.png"))));
+            window.toggleFill();
+            window.zbufferView()->setPalette(DepthPalette::Grey);
+        } else if (language == QLatin1String("en")) {
+            dock(window, "accuracyDock")->raise();
+            AccuracyPanel* accuracy = window.accuracyPanel();
+            accuracy->measure();
+            const bool measured = QTest::qWaitFor(
+                [&] { return !accuracy->isMeasuring() && accuracy->report(); }, 5 * kTimeoutMs);
+            if (!measured) std::fprintf(stderr, "FAILED: the accuracy measurement did not end\n");
+            check(measured);
+            window.toggleFill(dock(window, "accuracyDock"));
+            QTest::qWait(100);
+            check(save(&window, QDir(images).filePath(QStringLiteral("accuracy-dock.png"))));
+            window.toggleFill();
+        }
+        window.resetLayout();
+    }
+
+    // View > Fill the Window: the z-buffer dock alone, for a projector.
+    inspection->toEnd();
+    dock(window, "zbufferDock")->raise();
+    window.toggleFill(dock(window, "zbufferDock"));
+    QTest::qWait(100);
+    check(save(&window, file(QStringLiteral("fill"))));
+    window.toggleFill();
+    QTest::qWait(50);
+    window.resetLayout();
+
+    // In front of a class: the highlight picked, stepped by scanline to the middle of the
+    // frame, in presentation mode.
+    inspection->pickPixel(highlight);
     inspection->setGranularity(rl::StepGranularity::Scanline);
     inspection->seek(
         replay->next(replay->atFragment(static_cast<std::uint32_t>(replay->fragments().size() / 2)),
                      rl::StepGranularity::Scanline));
     window.setPresentationMode(true);
+    // Full screen is the offscreen platform's small screen: a projector's 1600 x 1000 instead.
+    window.setWindowState(Qt::WindowNoState);
+    window.resize(1600, 1000);
     QTest::qWait(50);
-    zoomTo(window.imageView(), QRectF(objectBox), QSizeF(window.imageView()->size()) * 0.92, 0.1);
+    window.fitDocks();
+    QTest::qWait(50);
+    zoomTo(window.imageView(), QRectF(gobletBox), QSizeF(window.imageView()->size()) * 0.92, 0.1);
     {
         QEvent leave(QEvent::Leave);  // the mouse gone: no pixel read out in the status bar
         QCoreApplication::sendEvent(window.imageView(), &leave);
     }
     check(save(&window, file(QStringLiteral("presentation"))));
     window.setPresentationMode(false);
+    window.resize(1500, 940);
+    QTest::qWait(50);
+
+    // A bad object file: the message names the place; the scene stays. The goblet's files
+    // copied to a folder (as a reader copies resources/lessons/goblet), opened from there by
+    // their names, then line 4 of the object broken: the letter O typed for a zero.
+    {
+        QTemporaryDir copy;
+        const QString home = QDir::currentPath();
+        for (const char* name : {"camera.cfg", "lighting.txt", "goblet.byu"})
+            QFile::copy(QStringLiteral(":/lessons/goblet/") + QLatin1String(name),
+                        copy.filePath(QLatin1String(name)));
+        QDir::setCurrent(copy.path());
+        for (const char* name : {"camera.cfg", "lighting.txt", "goblet.byu"})
+            QFile(QLatin1String(name)).setPermissions(QFile::ReadOwner | QFile::WriteOwner);
+        before = inspection->frame();
+        if (!window.openPath(QStringLiteral(".")) || !waitForNewFrame(window, before)) return 1;
+        QFile object(QStringLiteral("goblet.byu"));
+        if (!object.open(QIODevice::ReadOnly)) return 1;
+        QList<QByteArray> lines = object.readAll().split('\n');
+        object.close();
+        if (lines.size() > 3) lines[3].replace(QByteArray("1.5803"), QByteArray("1.58O3"));
+        QFile bad(QStringLiteral("goblet.byu"));
+        if (!bad.open(QIODevice::WriteOnly)) return 1;
+        bad.write(lines.join('\n'));
+        bad.close();
+        window.openPath(QStringLiteral("goblet.byu"));
+        QTest::qWait(100);
+        check(saveDock(dock(window, "messagesDock"), file(QStringLiteral("messages-error")),
+                       QSize(1240, 110)));
+        QDir::setCurrent(home);
+    }
+
+    // The triangle lesson: stepped pixel by pixel to the middle of its middle row.
+    if (!openExample(window, "triangle")) return 1;
+    replay = inspection->replay();
+    {
+        const QPoint picked(14, 12);  // the lesson's picked pixel
+        std::uint32_t target = 0;
+        for (std::uint32_t i = 0; i < replay->fragments().size(); ++i) {
+            const rl::ReplayFragment& f = replay->fragments()[i];
+            if (f.y == picked.y() && int(f.x) == picked.x() + 3) target = i;
+        }
+        const rl::ReplayCursor cursor = replay->atFragment(target + 1);
+        std::printf("triangle: %d pixel steps to '", stepsBetween(replay, replay->start(), cursor,
+                                                                rl::StepGranularity::Pixel));
+        inspection->seek(cursor);
+        std::printf("%s'\n", qPrintable(position(window)));
+        FrameImageView* view = window.imageView();
+        const QRectF box(QPointF(0, 0), QSizeF(window.currentImage().size()));
+        const QSize crop(700, 520);
+        check(saveZoomed(view, box, QSizeF(crop) * 0.95, 10.0, crop,
+                         file(QStringLiteral("image-stepping"))));
+        check(saveDock(dock(window, "scanlineDock"), file(QStringLiteral("scanlineDock")),
+                       QSize(560, 760)));
+        check(saveDock(dock(window, "trapezoidDock"), file(QStringLiteral("trapezoidDock")),
+                       QSize(560, 760)));
+    }
+
+    // The zbuffer lesson: Continue to Breakpoint stops at the second triangle; then stepped by
+    // scanline half-way through it.
+    if (!openExample(window, "zbuffer")) return 1;
+    replay = inspection->replay();
+    inspection->continueToBreakpoint();
+    std::printf("zbuffer: stopped at '%s'\n", qPrintable(position(window)));
+    check(saveDock(dock(window, "breakpointsDock"), file(QStringLiteral("breakpoints")),
+                  QSize(380, 300)));
+    {
+        const rl::ReplayCursor stop = inspection->cursor();
+        const std::uint32_t second = 1;  // 0-based
+        const std::uint32_t rows = replay->endRow(second) - replay->firstRow(second);
+        rl::ReplayCursor c = stop;
+        for (std::uint32_t i = 0; i < rows / 2; ++i)
+            c = replay->next(c, rl::StepGranularity::Scanline);
+        inspection->seek(c);
+        std::printf("zbuffer: %d scanline steps more to '%s'\n",
+                    stepsBetween(replay, stop, c, rl::StepGranularity::Scanline),
+                    qPrintable(position(window)));
+        check(saveDock(dock(window, "zbufferDock"), file(QStringLiteral("zbufferDock")),
+                       QSize(520, 760)));
+    }
+
+    // The near-plane lesson: the clipping dock on its one clipped triangle.
+    if (!openExample(window, "near-plane")) return 1;
+    check(saveDock(dock(window, "nearClipDock"), file(QStringLiteral("nearClipDock")),
+                   QSize(620, 760)));
+
+    // The lights lesson: a spot, a directional and an attenuated light; its pixel picked.
+    if (!openExample(window, "lights")) return 1;
+    window.resetLayout();
+    inspection->toEnd();
+    inspection->pickPixel(QPoint(330, 340));  // inside the spot's disc (the lesson's is outside)
+    QTest::qWait(50);
+    check(save(&window, file(QStringLiteral("window-lighting"))));
+    check(saveDock(dock(window, "pixelInspectorDock"), file(QStringLiteral("inspector-lighting")),
+                   QSize(760, 1000)));
+    check(saveDock(dock(window, "editDock"), file(QStringLiteral("edit-lights")),
+                   QSize(380, 1100)));
+
+    // The painter-cycle lesson: the painter against the z-buffer.
+    if (!openExample(window, "painter-cycle")) return 1;
+    inspection->toEnd();
+    {
+        auto* painter = window.findChild<PainterView*>();
+        dock(window, "painterDock")->raise();
+        QTest::qWait(50);
+        for (FrameImageView* view : {painter->painterImageView(), painter->zBufferImageView()})
+            view->fitToWindow();
+    }
+    check(saveDock(dock(window, "painterDock"), file(QStringLiteral("painter")),
+                   QSize(1200, 620)));
+
+    // The sphere lesson: flat, Gouraud and Phong side by side, as exported.
+    if (!openExample(window, "sphere")) return 1;
+    {
+        const QString path = file(QStringLiteral("shading-side-by-side"));
+        const bool ok = window.exportShadingSideBySide(path);
+        std::printf("%s %s\n", ok ? "wrote" : "FAILED", qPrintable(path));
+        check(ok);
+        window.statusBar()->clearMessage();  // "Exported <the path on this machine>"
+    }
+
+    // A command file of the repository: no course camera, nothing lit; three stages skipped.
+    if (!window.openPath(docs.filePath(QStringLiteral("examples/crossing.txt")))) return 1;
+    if (!waitForReplay(window)) return 1;
+    {
+        const QRect strip = window.findChild<QToolBar*>(QStringLiteral("stageToolBar"))->geometry();
+        check(save(&window, file(QStringLiteral("strip-command-file")),
+                   QRect(0, strip.top(), std::min(window.width(), 1100), strip.height())));
+    }
 
     // Seed 002's animation on the default trefoil: paused at frame 30 (t = 1.25 s, 45
     // degrees), a pixel picked, stepped by scanline to the middle of the frame.
@@ -470,67 +730,8 @@ int main(int argc, char* argv[]) {
         check(saveDock(dock(moving, "normalsDock"), file(QStringLiteral("normals-wrong")),
                        QSize(640, 1180)));
     }
-
-    // The lecture slides' lighting on calice2: an attenuated spot on the foot and a dim red
-    // directional light; Blinn-Phong highlights. The brightest pixel (in the spot) picked.
-    {
-        QTemporaryDir lights;
-        const QString path = lights.filePath(QStringLiteral("spot.txt"));
-        QFile text(path);
-        if (!text.open(QIODevice::WriteOnly)) return 1;
-        text.write(
-            "Iamb = 30 30 30\nKa = 0.5\nKd = 1 1 1\nOd = 0 0.8 0\nKs = 0.5\neta = 8\n"
-            "Il = 255 255 255\nPl = 0 250 800\natten = 1 0.0005 0\nspot_dir = 60 130 -800\n"
-            "spot_cutoff = 6\nspot_exp = 8\nPl2 = -1 0 0.3 0\nIl2 = 120 40 40\nblinn = 1\n");
-        text.close();
-        before = inspection->frame();
-        if (!window.openPath(path) || !waitForNewFrame(window, before)) return 1;
-        if (!waitForReplay(window)) return 1;
-        const QImage lit = window.currentImage();
-        QPoint spot(0, 0);
-        for (int y = 0, most = -1; y < lit.height(); ++y)
-            for (int x = 0; x < lit.width(); ++x) {
-                const QColor c = lit.pixelColor(x, y);
-                if (c.green() > most) {
-                    most = c.green();
-                    spot = QPoint(x, y);
-                }
-            }
-        inspection->pickPixel(spot);
-        inspection->seek(window.inspection()->replay()->end());
-        zoomTo(window.imageView(), QRectF(objectBox), QSizeF(window.imageView()->size()) * 0.92,
-               0.1);
-        check(save(&window, file(QStringLiteral("window-lighting"))));
-        check(saveDock(dock(window, "pixelInspectorDock"),
-                       file(QStringLiteral("inspector-lighting")), QSize(760, 900)));
-        check(saveDock(dock(window, "editDock"), file(QStringLiteral("edit-lights")),
-                       QSize(380, 1100)));
-
-        // Seed 004's painter's algorithm on the same scene, beside the z-buffer.
-        before = inspection->frame();
-        window.setShading(rl::ShadingModel::Painter);
-        if (!waitForNewFrame(window, before)) return 1;
-        {
-            auto* painter = window.findChild<PainterView*>();
-            dock(window, "painterDock")->raise();
-            QTest::qWait(50);
-            for (FrameImageView* view : {painter->painterImageView(), painter->zBufferImageView()})
-                zoomTo(view, QRectF(objectBox), QSizeF(view->size()) * 0.95, 0.1);
-        }
-        check(saveDock(dock(window, "painterDock"), file(QStringLiteral("painter")),
-                       QSize(1200, 620)));
-        before = inspection->frame();
-        window.setShading(rl::ShadingModel::Phong);
-        if (!waitForNewFrame(window, before)) return 1;
-    }
-
-    // A command file: no course camera, nothing lit; three stages skipped.
-    if (!window.openPath(samples + QStringLiteral("/hw2/hw2depth.txt"))) return 1;
-    if (!waitForReplay(window)) return 1;
-    {
-        const QRect strip = window.findChild<QToolBar*>(QStringLiteral("stageToolBar"))->geometry();
-        check(save(&window, file(QStringLiteral("strip-command-file")),
-                   QRect(0, strip.top(), std::min(window.width(), 1100), strip.height())));
-    }
+    if (failures > 0)
+        std::fprintf(stderr, "FAILED: %d shots could not be made or show what they must not\n",
+                     failures);
     return failures == 0 ? 0 : 1;
 }

@@ -1,9 +1,12 @@
 // The documents stay true to the source: every function the reading guide names with a file
-// and a line is defined on that line, and every link and image of the README and of docs/
-// points at a file that exists.
+// and a line is defined on that line, every link and image of the README and of docs/ points
+// at a file that exists, every picture in docs/images is shown by some document, and the
+// user guides need no file outside the repository (the course's own files are named only in
+// a paragraph marked as being about them).
 #include <QtTest>
 
 #include <QDir>
+#include <QDirIterator>
 #include <QFile>
 #include <QRegularExpression>
 
@@ -87,6 +90,62 @@ private slots:
             }
         }
         QVERIFY(checked > 50);
+    }
+
+    void everyPictureIsShown() {
+        // A picture in docs/images that no document shows is a leftover of an older build.
+        QString all;
+        for (const QString& file : markdownFiles()) all += read(file);
+        const QDir images(QDir(testing::sourceDir()).filePath(QStringLiteral("docs/images")));
+        int checked = 0;
+        QDirIterator it(images.path(), {QStringLiteral("*.png")}, QDir::Files,
+                        QDirIterator::Subdirectories);
+        while (it.hasNext()) {
+            const QString relative = images.relativeFilePath(it.next());
+            QVERIFY2(all.contains(QStringLiteral("images/") + relative),
+                     qPrintable(QStringLiteral("docs/images/%1 is shown by no document")
+                                    .arg(relative)));
+            ++checked;
+        }
+        QVERIFY(checked > 20);
+    }
+
+    void guidesNeedNoCourseFiles_data() {
+        QTest::addColumn<QString>("guide");
+        QTest::addColumn<QString>("marker");
+        QTest::newRow("en") << QStringLiteral("docs/guide.en.md")
+                            << QStringLiteral("> **Course files.**");
+        QTest::newRow("pt_BR") << QStringLiteral("docs/guide.pt_BR.md")
+                               << QStringLiteral("> **Arquivos do curso.**");
+    }
+
+    void guidesNeedNoCourseFiles() {
+        // The guides' examples use the shipped lessons and docs/examples, so a fresh clone can
+        // follow them. The course's files (calice2, iluminacao.txt, the HW2 samples in
+        // ../shared/samples) may be named only in a paragraph that starts with the marker,
+        // which says they are not in the repository.
+        QFETCH(QString, guide);
+        QFETCH(QString, marker);
+        const QString text = read(QDir(testing::sourceDir()).filePath(guide));
+        QVERIFY2(!text.isEmpty(), qPrintable(guide));
+        static const QRegularExpression course(
+            QStringLiteral("\\.\\./shared|/samples/|calice2|iluminacao|hw2[a-z0-9]+\\.txt"),
+            QRegularExpression::CaseInsensitiveOption);
+        static const QRegularExpression blank(QStringLiteral("\\n\\s*\\n"));
+        int marked = 0;
+        for (const QString& paragraph : text.split(blank)) {
+            const QRegularExpressionMatch m = course.match(paragraph);
+            if (!m.hasMatch()) continue;
+            QVERIFY2(paragraph.trimmed().startsWith(marker),
+                     qPrintable(QStringLiteral("%1 names the course's file '%2' outside a "
+                                               "paragraph starting with '%3': %4")
+                                    .arg(guide, m.captured(0), marker,
+                                         paragraph.trimmed().left(160))));
+            ++marked;
+        }
+        QVERIFY2(marked <= 1, qPrintable(QStringLiteral("%1: %2 marked paragraphs; one says it")
+                                             .arg(guide)
+                                             .arg(marked)));
     }
 };
 
