@@ -63,7 +63,7 @@ const std::vector<Example>& examples() {
                            "basis dock, then follow the stages in order: view coordinates, "
                            "normals, projection, scan conversion, z-buffer and lighting. Pick "
                            "a pixel on the highlight of the bowl to see why it is bright."),
-         rl::ShadingModel::Phong, QSize(800, 600), rl::StepGranularity::Stage, QPoint(352, 214),
+         rl::ShadingModel::Phong, QSize(800, 600), rl::StepGranularity::Stage, QPoint(353, 157),
          "cameraBasisDock"},
         {"sphere", QT_TRANSLATE_NOOP("Lessons", "A low-polygon sphere: flat, Gouraud, Phong"),
          QT_TRANSLATE_NOOP("Lessons",

@@ -214,6 +214,7 @@ bool MainWindow::openLesson(const QString& path) {
     }
     adoptDocument(document);
     m_lastError.clear();
+    statusBar()->clearMessage();  // the last lesson's ("Stopped at a breakpoint ...")
     m_lessonProblems = problems;
     restoreView(*lesson);
     refreshMessages();
