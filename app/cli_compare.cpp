@@ -164,7 +164,7 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
     parser.setApplicationDescription(
         lit("Compare an image of your own rasterizer with RasterLab's render of the same scene "
             "(render's scene options, or a command file): a summary, a difference image, and "
-            "the likely mistakes, ranked by the share of the differing pixels each explains."));
+            "the likely mistakes, ranked by the differing pixels each explains."));
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     const QCommandLineOption help({lit("h"), lit("help")}, lit("Show this help."));
     const SceneOptions sceneOptions;
@@ -182,8 +182,8 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
     parser.addOption(help);
     sceneOptions.addTo(parser);
     parser.addOptions({sceneName, image, diffOutput, format});
-    parser.addPositionalArgument(lit("FILE"),
-                                 lit("A command file: its png image is compared (optional)."));
+    parser.addPositionalArgument(
+        lit("FILE"), lit("A command file: its png image is compared (optional)."), lit("[FILE]"));
     if (!parser.parse(arguments)) return usageError(err, parser.errorText());
     if (parser.isSet(help)) {
         out << commandHelp(parser, lit("compare"));
