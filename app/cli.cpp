@@ -23,6 +23,9 @@ QString generalHelp() {
         "                           Without scene files, renders the embedded default scene.\n"
         "  run FILE                 Run a command file (seed 001's png, xyz, trif ...) and\n"
         "                           write the PNGs it names.\n"
+        "  compare                  Compare your rasterizer's image with ours (render's scene\n"
+        "                           options, or a command file): summary, difference image\n"
+        "                           and a ranked diagnosis of likely mistakes.\n"
         "  bench                    Time a scene's frames (median, min, max, per stage).\n"
         "  accuracy                 Error against run time of each mode, against an exact\n"
         "                           ray-cast reference (table, plot, heat maps).\n"
@@ -58,13 +61,16 @@ int runCli(const QStringList& arguments, QTextStream& out, QTextStream& err) {
             code = cli::runAccuracy(rest, out, err);
         else if (command == lit("run"))
             code = cli::runCommandFile(rest, out, err);
+        else if (command == lit("compare"))
+            code = cli::runCompare(rest, out, err);
         else if (command == lit("generate-default-scene"))
             code = cli::runGenerateDefaultScene(rest, out, err);
         else if (command == lit("generate-lessons"))
             code = cli::runGenerateLessons(rest, out, err);
         else
-            code = cli::usageError(err, lit("unknown command '%1' (commands: render, run, bench, "
-                                            "accuracy, generate-default-scene, generate-lessons)")
+            code = cli::usageError(err, lit("unknown command '%1' (commands: render, run, compare, "
+                                            "bench, accuracy, generate-default-scene, "
+                                            "generate-lessons)")
                                             .arg(command));
     } catch (const std::bad_alloc&) {
         // The only exception the pipeline can meet: a frame larger than the memory.

@@ -1,6 +1,7 @@
 // rasterlab-cli: the renderer without a window. Subcommands:
 //   render                  render a course scene (or the default scene) to PNG
 //   run                     run a command file (seed 001) and write the PNGs it names
+//   compare                 a student's image against ours, with a diagnosis of mistakes
 //   bench                   time a scene's frames, per stage, with the memory used
 //   accuracy                error against run time of each mode, against an exact reference
 //   generate-default-scene  write the default scene's three course files

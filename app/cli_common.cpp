@@ -79,6 +79,26 @@ bool writePng(const rl::Rgba8Image& image, const QString& path, QTextStream& out
     return true;
 }
 
+int readMaxPixels(const QCommandLineParser& parser, const QCommandLineOption& option,
+                  QTextStream& err, qint64& limit) {
+    bool ok = false;
+    limit = parser.value(option).toLongLong(&ok);
+    if (!ok || limit < 1)
+        return usageError(err, lit("--max-pixels expects a positive whole number, found '%1'")
+                                   .arg(parser.value(option)));
+    return ExitOk;
+}
+
+int checkPixelLimit(const rl::Hw2Image& image, qint64 limit, QTextStream& err) {
+    const rl::Scene& scene = image.scene;
+    if (qint64(scene.width) * scene.height <= limit) return ExitOk;
+    return inputError(
+        err, rl::makeError(rl::ErrorCode::Range, image.where,
+                           "the image " + std::to_string(scene.width) + "x" +
+                               std::to_string(scene.height) + " has more pixels than the limit of " +
+                               std::to_string(limit) + " (raise it with --max-pixels)"));
+}
+
 int SceneOptions::settings(const QCommandLineParser& parser, QTextStream& err,
                            rl::CourseSceneSettings& out) const {
     if (!parseSize(parser.value(size), out.width, out.height) || out.width < 1 || out.height < 1)
@@ -89,11 +109,8 @@ int SceneOptions::settings(const QCommandLineParser& parser, QTextStream& err,
         return usageError(err, lit("--size %1 is larger than the limit of %2 pixels a side")
                                    .arg(parser.value(size))
                                    .arg(kMaxImageSide));
-    bool maxOk = false;
-    const qint64 pixelLimit = parser.value(maxPixels).toLongLong(&maxOk);
-    if (!maxOk || pixelLimit < 1)
-        return usageError(err, lit("--max-pixels expects a positive whole number, found '%1'")
-                                   .arg(parser.value(maxPixels)));
+    qint64 pixelLimit = 0;
+    if (int code = readMaxPixels(parser, maxPixels, err, pixelLimit); code != ExitOk) return code;
     if (qint64(out.width) * out.height > pixelLimit)
         return usageError(err, lit("--size %1 has %2 pixels, more than the limit of %3 (raise "
                                    "it with --max-pixels if the memory is there)")

@@ -1,7 +1,7 @@
 // What rasterlab-cli's subcommands share: the limits, the messages for a wrong command line
 // or a bad input, the subcommand help, pixels and PNG output, and the options that choose and
 // set up a scene. Each subcommand has a file of its own (cli_render.cpp, cli_run.cpp,
-// cli_bench.cpp, cli_accuracy.cpp, cli_generate.cpp); cli.cpp dispatches to them.
+// cli_compare.cpp, cli_bench.cpp, cli_accuracy.cpp, cli_generate.cpp); cli.cpp dispatches to them.
 #pragma once
 
 #include <QCommandLineOption>
@@ -15,6 +15,7 @@
 #include "cli.h"
 #include "course_scene.h"
 #include "diagnostics.h"
+#include "hw2_reader.h"
 #include "output_image.h"
 #include "scene.h"
 
@@ -40,6 +41,13 @@ bool parsePixel(const QString& text, int& x, int& y);
 // err, when it cannot.
 bool writePng(const rl::Rgba8Image& image, const QString& path, QTextStream& out, QTextStream& err,
               const QString& what);
+
+// --max-pixels's value: ExitOk, or a usage error's code when it is not a positive whole number.
+int readMaxPixels(const QCommandLineParser& parser, const QCommandLineOption& option,
+                  QTextStream& err, qint64& limit);
+// ExitOk, or an input error's code (printed) when a command file's image has more pixels than
+// the limit.
+int checkPixelLimit(const rl::Hw2Image& image, qint64 limit, QTextStream& err);
 
 // The options that choose and set up a course scene, shared by render, bench and accuracy.
 struct SceneOptions {
@@ -140,6 +148,7 @@ struct SceneOptions {
 // The subcommands.
 int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err);
 int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& err);
+int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err);
 int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err);
 int runAccuracy(const QStringList& arguments, QTextStream& out, QTextStream& err);
 int runGenerateDefaultScene(const QStringList& arguments, QTextStream& out, QTextStream& err);

@@ -43,11 +43,8 @@ int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& 
         return usageError(err, files.isEmpty()
                                    ? lit("run needs a command file")
                                    : lit("run takes one command file, found %1").arg(files.size()));
-    bool maxOk = false;
-    const qint64 pixelLimit = parser.value(maxPixels).toLongLong(&maxOk);
-    if (!maxOk || pixelLimit < 1)
-        return usageError(err, lit("--max-pixels expects a positive whole number, found '%1'")
-                                   .arg(parser.value(maxPixels)));
+    qint64 pixelLimit = 0;
+    if (int code = readMaxPixels(parser, maxPixels, err, pixelLimit); code != ExitOk) return code;
 
     int explainX = -1, explainY = -1;
     if (parser.isSet(explain) && !parsePixel(parser.value(explain), explainX, explainY))
@@ -68,13 +65,7 @@ int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& 
     }
     for (const rl::Hw2Image& image : file->images) {
         const rl::Scene& scene = image.scene;
-        if (qint64(scene.width) * scene.height > pixelLimit)
-            return inputError(
-                err, rl::makeError(
-                         rl::ErrorCode::Range, image.where,
-                         "the image " + std::to_string(scene.width) + "x" +
-                             std::to_string(scene.height) + " has more pixels than the limit of " +
-                             std::to_string(pixelLimit) + " (raise it with --max-pixels)"));
+        if (int code = checkPixelLimit(image, pixelLimit, err); code != ExitOk) return code;
         const bool explainHere =
             parser.isSet(explain) && explainX < scene.width && explainY < scene.height;
         std::optional<rl::RecordingProbe> probe;

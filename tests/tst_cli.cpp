@@ -351,8 +351,9 @@ void TestCli::usageErrors_data() {
         << (QStringList({"render", "--explain-pixel", "800,10"}) + out)
         << "--explain-pixel 800,10 is outside the 800x600 image";
     QTest::newRow("unknown command") << QStringList({"paint", "--output", "out.png"})
-                                     << "unknown command 'paint' (commands: render, run, bench, "
-                                        "accuracy, generate-default-scene, generate-lessons)";
+                                     << "unknown command 'paint' (commands: render, run, compare, "
+                                        "bench, accuracy, generate-default-scene, "
+                                        "generate-lessons)";
     QTest::newRow("unknown option")
         << (QStringList({"render", "--bogus"}) + out) << "Unknown option 'bogus'.";
     QTest::newRow("stray argument")
