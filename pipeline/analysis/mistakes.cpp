@@ -424,6 +424,46 @@ Result<OurFrame> renderOurFrame(std::shared_ptr<const Scene> scene) {
     return frame;
 }
 
+namespace {
+
+// Our image mirrored, turned upside down or moved by `shift` (what leaves it, background).
+Rgba8Image movedImage(const Rgba8Image& image, Mistake mistake, ivec2 shift, const Bytes& background) {
+    const int w = image.width, h = image.height;
+    Rgba8Image out = image;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            int sx = x, sy = y;
+            if (mistake == Mistake::MirroredLeftRight) sx = w - 1 - x;
+            if (mistake == Mistake::UpsideDown) sy = h - 1 - y;
+            if (mistake == Mistake::Shifted) sx = x - shift.x, sy = y - shift.y;
+            const bool inside = sx >= 0 && sx < w && sy >= 0 && sy < h;
+            put(out, x, y, inside ? bytesAt(image, sx, sy) : background);
+        }
+    }
+    return out;
+}
+
+// The scene drawn in the painter's order: flat colours as the painter paints them, other
+// models shaded at the painter's triangles.
+Result<std::optional<Rgba8Image>> painterOrderImage(const Scene& scene) {
+    using Optional = std::optional<Rgba8Image>;
+    const auto painter = painterSceneOf(scene);
+    if (std::all_of(scene.draws.begin(), scene.draws.end(),
+                    [](const Draw& d) { return d.shading == ShadingModel::Flat; })) {
+        auto rendered = renderImage(painter);
+        if (!rendered) return rendered.error();
+        return Optional(std::move(rendered.value()));
+    }
+    // The painter's triangles at each pixel, shaded by the model asked: the lecture's
+    // stages keep every barycentric and normal (a probe on no pixel records nothing).
+    RecordingProbe nowhere = RecordingProbe::forPixel(-1, -1);
+    auto trace = traceFrame(painter, {}, nowhere);
+    if (!trace) return trace.error();
+    return Optional(reshade(trace.value(), scene, std::nullopt));
+}
+
+}  // namespace
+
 Result<std::optional<Rgba8Image>> imageWithMistake(const OurFrame& ours, Mistake mistake,
                                                    ivec2 shift, std::array<std::uint8_t, 4> value) {
     const FrameTrace& frame = *ours.trace;
@@ -463,20 +503,8 @@ Result<std::optional<Rgba8Image>> imageWithMistake(const OurFrame& ours, Mistake
         }
         case Mistake::MirroredLeftRight:
         case Mistake::UpsideDown:
-        case Mistake::Shifted: {
-            Rgba8Image out = image;
-            for (int y = 0; y < h; ++y) {
-                for (int x = 0; x < w; ++x) {
-                    int sx = x, sy = y;
-                    if (mistake == Mistake::MirroredLeftRight) sx = w - 1 - x;
-                    if (mistake == Mistake::UpsideDown) sy = h - 1 - y;
-                    if (mistake == Mistake::Shifted) sx = x - shift.x, sy = y - shift.y;
-                    const bool inside = sx >= 0 && sx < w && sy >= 0 && sy < h;
-                    put(out, x, y, inside ? bytesAt(image, sx, sy) : background);
-                }
-            }
-            return Optional(std::move(out));
-        }
+        case Mistake::Shifted:
+            return Optional(movedImage(image, mistake, shift, background));
         case Mistake::SampleOffset:
             return renderChanged(scene, [](Scene& s) {
                 s.rules.sampleOffset = s.rules.sampleOffset == 0.0 ? 0.5 : 0.0;
@@ -518,22 +546,9 @@ Result<std::optional<Rgba8Image>> imageWithMistake(const OurFrame& ours, Mistake
                     }
             return Optional(std::move(out));
         }
-        case Mistake::PainterOrder: {
+        case Mistake::PainterOrder:
             if (paintersAlgorithm(scene)) return Optional();
-            const auto painter = painterSceneOf(scene);
-            if (std::all_of(scene.draws.begin(), scene.draws.end(),
-                            [](const Draw& d) { return d.shading == ShadingModel::Flat; })) {
-                auto rendered = renderImage(painter);
-                if (!rendered) return rendered.error();
-                return Optional(std::move(rendered.value()));
-            }
-            // The painter's triangles at each pixel, shaded by the model asked: the lecture's
-            // stages keep every barycentric and normal (a probe on no pixel records nothing).
-            RecordingProbe nowhere = RecordingProbe::forPixel(-1, -1);
-            auto trace = traceFrame(painter, {}, nowhere);
-            if (!trace) return trace.error();
-            return Optional(reshade(trace.value(), scene, std::nullopt));
-        }
+            return painterOrderImage(scene);
         case Mistake::Background: {
             if (value == background) return Optional();
             Rgba8Image out = image;
