@@ -99,6 +99,7 @@ private slots:
     void exportImage();
     void exportToMissingFolder();
     void docks();
+    void presentationFontsComeBack();
     void layoutSavedAndReset();
     void newestRequestWins();
     void failedRenderKeepsTheLastImage();
@@ -522,6 +523,21 @@ void TestMainWindow::exportToMissingFolder() {
     QVERIFY2(text.startsWith(prefix) && text.size() > prefix.size(), qPrintable(text));
     QCOMPARE(window.statusBar()->currentMessage(), text.mid(int(qstrlen("Error: "))));
     QCOMPARE(window.currentFrame(), frameBefore);
+}
+
+void TestMainWindow::presentationFontsComeBack() {
+    MainWindow window;
+    window.show();
+    QSignalSpy spy(window.controller(), &RenderController::frameReady);
+    WAIT_FOR_FIRST_FRAME(spy);
+    QToolButton* button = window.stageStrip()->button(rl::StageId::Projection);
+    const qreal normal = button->font().pointSizeF();
+    window.setPresentationMode(true);
+    // The stage strip's buttons follow the larger application font, and come back with it
+    // (they stayed large until the next scene).
+    QTRY_COMPARE(button->font().pointSizeF(), normal * 1.5);
+    window.setPresentationMode(false);
+    QTRY_COMPARE(button->font().pointSizeF(), normal);
 }
 
 void TestMainWindow::docks() {

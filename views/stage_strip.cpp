@@ -1,5 +1,6 @@
 #include "stage_strip.h"
 
+#include <QEvent>
 #include <QButtonGroup>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -198,6 +199,11 @@ void StageStrip::fitTexts() {
 QSize StageStrip::minimumSizeHint() const {
     return {textsWidth(m_shortTexts) + m_note->minimumSizeHint().width(),
             QWidget::minimumSizeHint().height()};
+}
+
+void StageStrip::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange) refresh();
 }
 
 void StageStrip::resizeEvent(QResizeEvent* event) {

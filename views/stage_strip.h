@@ -41,6 +41,9 @@ public:
 
 protected:
     void resizeEvent(QResizeEvent* event) override;
+    // The buttons' fonts are made from the strip's: a new application font (presentation
+    // mode) reaches the strip after the mode's refresh, so it refreshes them again.
+    void changeEvent(QEvent* event) override;
 
 private:
     void refresh();
