@@ -502,6 +502,11 @@ const char* const kCatalogue[] = {
     QT_TRANSLATE_NOOP("Messages", "samples per axis must be 1 to 16"),
     // app/command_file.cpp
     QT_TRANSLATE_NOOP("Messages", "cannot read the texture %1: %2"),
+    // pipeline/stages/camera_basis.cpp: V close to N
+    QT_TRANSLATE_NOOP("Messages",
+                      "V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of "
+                      "V, and the basis is orthonormal only to %2, less than a float's "
+                      "precision; choose a V farther from N"),
     // app/input_file.cpp
     QT_TRANSLATE_NOOP("Messages", "cannot open: %1"),
     QT_TRANSLATE_NOOP("Messages",

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "camera_basis.h"
+#include "format.h"
 #include "test_support.h"
 
 using namespace rl;
@@ -167,6 +168,56 @@ private slots:
         QCOMPARE(QString::fromStdString(diagnostics.items()[2].toString()),
                  QStringLiteral("camera.cfg:4:1: warning: d is negative: the image is turned "
                                 "upside down and mirrored"));
+    }
+
+    // V close to N: the angle is reported, the residuals grow as 1e-16 / sin(angle), and
+    // under kWarnAngleDegrees (1e-6) the stage warns that they pass a float's precision.
+    void conditioningNearlyParallel_data() {
+        QTest::addColumn<double>("degrees");
+        QTest::addColumn<bool>("warns");
+        QTest::newRow("1 degree") << 1.0 << false;
+        QTest::newRow("1e-3 degrees") << 1e-3 << false;
+        QTest::newRow("1e-5 degrees") << 1e-5 << false;
+        QTest::newRow("2e-6 degrees") << 2e-6 << false;
+        QTest::newRow("5e-7 degrees") << 5e-7 << true;
+        QTest::newRow("1e-9 degrees") << 1e-9 << true;
+        QTest::newRow("180 - 1e-8 degrees") << 180.0 - 1e-8 << true;
+    }
+    void conditioningNearlyParallel() {
+        QFETCH(double, degrees);
+        QFETCH(bool, warns);
+        std::mt19937 rng(7);
+        std::normal_distribution<double> normal;
+        double worst = 0.0;
+        for (int i = 0; i < 200; ++i) {
+            // N along a random axis a, V at the angle from it toward a random perpendicular p.
+            const dvec3 a = glm::normalize(dvec3(normal(rng), normal(rng), normal(rng)));
+            const dvec3 p = glm::normalize(glm::cross(a, dvec3(normal(rng), normal(rng), normal(rng))));
+            const double t = glm::radians(degrees);
+            CourseCamera c = locatedSeedCamera();
+            c.n = 10.0 * a;
+            c.v = 3.0 * (std::cos(t) * a + std::sin(t) * p);
+            Diagnostics diagnostics;
+            auto basis = CameraBasisStage().run(sceneWith(c), diagnostics);
+            QVERIFY(basis.ok());
+            QVERIFY2(std::abs(basis->angleNV - degrees) <= 1e-6 * std::max(degrees, 1e-3),
+                     qPrintable(QString::number(basis->angleNV, 'g', 17)));
+            worst = std::max(worst, basis->maxResidual());
+            QCOMPARE(diagnostics.size(), std::size_t(warns ? 1 : 0));
+            if (warns) {
+                const QString text = QString::fromStdString(diagnostics.items()[0].toString());
+                const double fromAxis = std::min(degrees, 180.0 - degrees);
+                QVERIFY2(text.startsWith(QStringLiteral("camera.cfg:3:1: warning: V is %1 degrees "
+                                                        "from the line of N: ")
+                                             .arg(QString::fromStdString(formatNumber(basis->angleNV < 90 ? basis->angleNV : 180.0 - basis->angleNV)))),
+                         qPrintable(text));
+                QVERIFY(text.endsWith(QStringLiteral(", less than a float's precision; choose "
+                                                     "a V farther from N")));
+                QVERIFY(fromAxis < CameraBasisStage::kWarnAngleDegrees);
+            }
+        }
+        // Above the threshold the basis is orthonormal to within a float's precision.
+        if (!warns) QVERIFY2(worst < 6e-8, qPrintable(QString::number(worst)));
     }
 
     void sceneWithoutCameraSkips() {

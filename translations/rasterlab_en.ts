@@ -1721,181 +1721,186 @@
     </message>
     <message>
         <location filename="../app/pipeline_messages.cpp" line="506"/>
+        <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
+        <translation>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="511"/>
         <source>cannot open: %1</source>
         <translation>cannot open: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="507"/>
+        <location filename="../app/pipeline_messages.cpp" line="512"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>the file has %1 MiB, more than the %2 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="509"/>
+        <location filename="../app/pipeline_messages.cpp" line="514"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>the file has more than the %1 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="511"/>
+        <location filename="../app/pipeline_messages.cpp" line="516"/>
         <source>not enough memory to read this file</source>
         <translation>not enough memory to read this file</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="512"/>
+        <location filename="../app/pipeline_messages.cpp" line="517"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="515"/>
+        <location filename="../app/pipeline_messages.cpp" line="520"/>
         <source>the object is not edited, so not saved</source>
         <translation>the object is not edited, so not saved</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="516"/>
+        <location filename="../app/pipeline_messages.cpp" line="521"/>
         <source>cannot write into the built-in resources</source>
         <translation>cannot write into the built-in resources</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="517"/>
+        <location filename="../app/pipeline_messages.cpp" line="522"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>the camera was not saved, as it would not load again: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="518"/>
+        <location filename="../app/pipeline_messages.cpp" line="523"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>not saved: the text written does not read back as the same values</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="520"/>
+        <location filename="../app/pipeline_messages.cpp" line="525"/>
         <source>cannot write the file: %1</source>
         <translation>cannot write the file: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="521"/>
+        <location filename="../app/pipeline_messages.cpp" line="526"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>only %1 of %2 bytes could be written (is the disk full?)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="522"/>
+        <location filename="../app/pipeline_messages.cpp" line="527"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>cannot write the file (it is left as it was): %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="524"/>
+        <location filename="../app/pipeline_messages.cpp" line="529"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[rows, fragments], two whole numbers</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="525"/>
+        <location filename="../app/pipeline_messages.cpp" line="530"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[width, height], whole numbers from %1 to %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="526"/>
+        <location filename="../app/pipeline_messages.cpp" line="531"/>
         <source>a list</source>
         <translation>a list</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="527"/>
+        <location filename="../app/pipeline_messages.cpp" line="532"/>
         <source>a list of %1 numbers</source>
         <translation>a list of %1 numbers</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="528"/>
+        <location filename="../app/pipeline_messages.cpp" line="533"/>
         <source>a list of 1 to 8 lights</source>
         <translation>a list of 1 to 8 lights</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="529"/>
+        <location filename="../app/pipeline_messages.cpp" line="534"/>
         <source>a list of dock names</source>
         <translation>a list of dock names</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="530"/>
+        <location filename="../app/pipeline_messages.cpp" line="535"/>
         <source>a number</source>
         <translation>a number</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="531"/>
+        <location filename="../app/pipeline_messages.cpp" line="536"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>a positive number or &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="532"/>
+        <location filename="../app/pipeline_messages.cpp" line="537"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>a positive number or &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="533"/>
+        <location filename="../app/pipeline_messages.cpp" line="538"/>
         <source>a whole number from %1</source>
         <translation>a whole number from %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="534"/>
+        <location filename="../app/pipeline_messages.cpp" line="539"/>
         <source>an object</source>
         <translation>an object</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="535"/>
+        <location filename="../app/pipeline_messages.cpp" line="540"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>expected %1 for &quot;%2&quot;, found %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="536"/>
+        <location filename="../app/pipeline_messages.cpp" line="541"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="537"/>
+        <location filename="../app/pipeline_messages.cpp" line="542"/>
         <source>not a lesson file: %1</source>
         <translation>not a lesson file: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="538"/>
+        <location filename="../app/pipeline_messages.cpp" line="543"/>
         <source>nothing</source>
         <translation>nothing</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="539"/>
+        <location filename="../app/pipeline_messages.cpp" line="544"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="540"/>
+        <location filename="../app/pipeline_messages.cpp" line="545"/>
         <source>one of %1</source>
         <translation>one of %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="541"/>
+        <location filename="../app/pipeline_messages.cpp" line="546"/>
         <source>text in quotes</source>
         <translation>text in quotes</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="542"/>
+        <location filename="../app/pipeline_messages.cpp" line="547"/>
         <source>the text &apos;%1&apos;</source>
         <translation>the text &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="543"/>
+        <location filename="../app/pipeline_messages.cpp" line="548"/>
         <source>true or false</source>
         <translation>true or false</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="544"/>
+        <location filename="../app/pipeline_messages.cpp" line="549"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>unknown key &quot;%1&quot; ignored (known here: %2)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="579"/>
+        <location filename="../app/pipeline_messages.cpp" line="584"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="585"/>
+        <location filename="../app/pipeline_messages.cpp" line="590"/>
         <source>%1: warning: %2</source>
         <translation>%1: warning: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="586"/>
+        <location filename="../app/pipeline_messages.cpp" line="591"/>
         <source>%1: note: %2</source>
         <translation>%1: note: %2</translation>
     </message>
@@ -2350,62 +2355,67 @@
         <translation>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; largest %7</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="625"/>
+        <location filename="../views/camera_basis_view.cpp" line="608"/>
+        <source>N and V %1 degrees apart (under %2 degrees from the line of N, the residuals pass a float&apos;s precision)</source>
+        <translation>N and V %1 degrees apart (under %2 degrees from the line of N, the residuals pass a float&apos;s precision)</translation>
+    </message>
+    <message>
+        <location filename="../views/camera_basis_view.cpp" line="630"/>
         <source>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): rows U, V, N, then (0 0 0 1); the last column is −U·C, −V·C, −N·C.</source>
         <translation>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): rows U, V, N, then (0 0 0 1); the last column is −U·C, −V·C, −N·C.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="637"/>
+        <location filename="../views/camera_basis_view.cpp" line="642"/>
         <source>&lt;p&gt;Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="640"/>
+        <location filename="../views/camera_basis_view.cpp" line="645"/>
         <source>, in front of the camera (z &gt; 0)</source>
         <translation>, in front of the camera (z &gt; 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="641"/>
+        <location filename="../views/camera_basis_view.cpp" line="646"/>
         <source>, behind the camera (z ≤ 0)</source>
         <translation>, behind the camera (z ≤ 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="644"/>
+        <location filename="../views/camera_basis_view.cpp" line="649"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; Gram-Schmidt keeps the direction of N (where the camera looks), removes from V its part along N so that up is perpendicular to the view direction, and completes the frame with U = N × V, the image&apos;s right. viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; Gram-Schmidt keeps the direction of N (where the camera looks), removes from V its part along N so that up is perpendicular to the view direction, and completes the frame with U = N × V, the image&apos;s right. viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="676"/>
+        <location filename="../views/camera_basis_view.cpp" line="681"/>
         <source>Step %1 of 4</source>
         <translation>Step %1 of 4</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="690"/>
+        <location filename="../views/camera_basis_view.cpp" line="695"/>
         <source>Step forward to normalise N.</source>
         <translation>Step forward to normalise N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="691"/>
+        <location filename="../views/camera_basis_view.cpp" line="696"/>
         <source>Step forward to remove from V its part along N.</source>
         <translation>Step forward to remove from V its part along N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="692"/>
+        <location filename="../views/camera_basis_view.cpp" line="697"/>
         <source>Step forward to normalise V.</source>
         <translation>Step forward to normalise V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="693"/>
+        <location filename="../views/camera_basis_view.cpp" line="698"/>
         <source>Step forward to make U = N × V.</source>
         <translation>Step forward to make U = N × V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="694"/>
+        <location filename="../views/camera_basis_view.cpp" line="699"/>
         <source>The basis is complete; the frustum is drawn with it.</source>
         <translation>The basis is complete; the frustum is drawn with it.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="707"/>
+        <location filename="../views/camera_basis_view.cpp" line="712"/>
         <source>&lt;b&gt;Orthonormality residuals&lt;/b&gt; (0 up to rounding): %1</source>
         <translation>&lt;b&gt;Orthonormality residuals&lt;/b&gt; (0 up to rounding): %1</translation>
     </message>
@@ -3030,32 +3040,32 @@
         <translation>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="958"/>
+        <location filename="../app/main_window.cpp" line="964"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>step forward, back (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="960"/>
+        <location filename="../app/main_window.cpp" line="966"/>
         <source>Space</source>
         <translation>Space</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="960"/>
+        <location filename="../app/main_window.cpp" line="966"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>play / pause (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="966"/>
+        <location filename="../app/main_window.cpp" line="972"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>let go of the picked pixel (on the image)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="967"/>
+        <location filename="../app/main_window.cpp" line="973"/>
         <source>presentation mode on / off</source>
         <translation>presentation mode on / off</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="972"/>
+        <location filename="../app/main_window.cpp" line="978"/>
         <source>save, undo, redo</source>
         <translation>save, undo, redo</translation>
     </message>
@@ -3310,82 +3320,82 @@
         <translation>&amp;Same Side (clip only triangles that cross the eye plane)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="597"/>
+        <location filename="../app/main_window.cpp" line="603"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="902"/>
+        <location filename="../app/main_window.cpp" line="908"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="955"/>
+        <location filename="../app/main_window.cpp" line="961"/>
         <source>step forward</source>
         <translation>step forward</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="956"/>
+        <location filename="../app/main_window.cpp" line="962"/>
         <source>step back</source>
         <translation>step back</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="959"/>
+        <location filename="../app/main_window.cpp" line="965"/>
         <source>play / pause</source>
         <translation>play / pause</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="961"/>
+        <location filename="../app/main_window.cpp" line="967"/>
         <source>jump to the start / the end of the frame</source>
         <translation>jump to the start / the end of the frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="962"/>
+        <location filename="../app/main_window.cpp" line="968"/>
         <source>continue to the next breakpoint</source>
         <translation>continue to the next breakpoint</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="963"/>
+        <location filename="../app/main_window.cpp" line="969"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>step by stage, triangle, scanline, span, pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="964"/>
+        <location filename="../app/main_window.cpp" line="970"/>
         <source>show a stage&apos;s view</source>
         <translation>show a stage&apos;s view</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="965"/>
+        <location filename="../app/main_window.cpp" line="971"/>
         <source>Click, arrows</source>
         <translation>Click, arrows</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="965"/>
+        <location filename="../app/main_window.cpp" line="971"/>
         <source>pick a pixel, move it by one</source>
         <translation>pick a pixel, move it by one</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="968"/>
+        <location filename="../app/main_window.cpp" line="974"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, double-click on a panel&apos;s title</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="969"/>
+        <location filename="../app/main_window.cpp" line="975"/>
         <source>fill the window with the panel (the image, from the image), and back</source>
         <translation>fill the window with the panel (the image, from the image), and back</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="971"/>
+        <location filename="../app/main_window.cpp" line="977"/>
         <source>open, export the image, export it as displayed</source>
         <translation>open, export the image, export it as displayed</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="974"/>
+        <location filename="../app/main_window.cpp" line="980"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>fit, actual size, zoom in, zoom out</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="976"/>
+        <location filename="../app/main_window.cpp" line="982"/>
         <source>Keyboard Shortcuts</source>
         <translation>Keyboard Shortcuts</translation>
     </message>
@@ -3435,7 +3445,7 @@
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="571"/>
+        <location filename="../app/main_window.cpp" line="577"/>
         <location filename="../app/main_window_export.cpp" line="35"/>
         <location filename="../app/main_window_export.cpp" line="133"/>
         <location filename="../app/main_window_export.cpp" line="175"/>
@@ -3454,18 +3464,18 @@
         <translation>Exported %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="624"/>
+        <location filename="../app/main_window.cpp" line="630"/>
         <source>rendering...</source>
         <translation>rendering...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="624"/>
+        <location filename="../app/main_window.cpp" line="630"/>
         <source>%1, rendering...</source>
         <translation>%1, rendering...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="622"/>
-        <location filename="../app/main_window.cpp" line="865"/>
+        <location filename="../app/main_window.cpp" line="628"/>
+        <location filename="../app/main_window.cpp" line="871"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -3525,73 +3535,73 @@
         <translation>&amp;Keyboard Shortcuts</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="397"/>
+        <location filename="../app/main_window.cpp" line="359"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="554"/>
+        <location filename="../app/main_window.cpp" line="560"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="632"/>
+        <location filename="../app/main_window.cpp" line="638"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparing the stepping of this frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="632"/>
+        <location filename="../app/main_window.cpp" line="638"/>
         <source>Rendering</source>
         <translation>Rendering</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="808"/>
+        <location filename="../app/main_window.cpp" line="814"/>
         <source>Error: %1</source>
         <translation>Error: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="832"/>
+        <location filename="../app/main_window.cpp" line="838"/>
         <source>Files</source>
         <translation>Files</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="835"/>
+        <location filename="../app/main_window.cpp" line="841"/>
         <source>Command file</source>
         <translation>Command file</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="836"/>
+        <location filename="../app/main_window.cpp" line="842"/>
         <source>Image</source>
         <translation>Image</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="838"/>
+        <location filename="../app/main_window.cpp" line="844"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="848"/>
+        <location filename="../app/main_window.cpp" line="854"/>
         <source>Camera</source>
         <translation>Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="849"/>
+        <location filename="../app/main_window.cpp" line="855"/>
         <source>Lighting</source>
         <translation>Lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="850"/>
+        <location filename="../app/main_window.cpp" line="856"/>
         <source>Object</source>
         <translation>Object</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="852"/>
+        <location filename="../app/main_window.cpp" line="858"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="248"/>
-        <location filename="../app/main_window.cpp" line="859"/>
+        <location filename="../app/main_window.cpp" line="865"/>
         <source>Stages</source>
         <translation>Stages</translation>
     </message>
@@ -3646,77 +3656,77 @@
         <translation>Painter&apos;s algorithm (seed 004)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="830"/>
+        <location filename="../app/main_window.cpp" line="836"/>
         <source>Lesson: %1</source>
         <translation>Lesson: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="866"/>
+        <location filename="../app/main_window.cpp" line="872"/>
         <source>skipped: %1</source>
         <translation>skipped: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="869"/>
+        <location filename="../app/main_window.cpp" line="875"/>
         <source>Counts</source>
         <translation>Counts</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="870"/>
+        <location filename="../app/main_window.cpp" line="876"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="873"/>
+        <location filename="../app/main_window.cpp" line="879"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="876"/>
+        <location filename="../app/main_window.cpp" line="882"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="880"/>
+        <location filename="../app/main_window.cpp" line="886"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="904"/>
+        <location filename="../app/main_window.cpp" line="910"/>
         <source>empty (+inf)</source>
         <translation>empty (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="905"/>
+        <location filename="../app/main_window.cpp" line="911"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   depth %6</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="921"/>
+        <location filename="../app/main_window.cpp" line="927"/>
         <source>Open Command File</source>
         <translation>Open Command File</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="922"/>
+        <location filename="../app/main_window.cpp" line="928"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Command files (*.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="928"/>
+        <location filename="../app/main_window.cpp" line="934"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="928"/>
+        <location filename="../app/main_window.cpp" line="934"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="938"/>
+        <location filename="../app/main_window.cpp" line="944"/>
         <source>Export PNG</source>
         <translation>Export PNG</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="938"/>
+        <location filename="../app/main_window.cpp" line="944"/>
         <location filename="../app/main_window_actions.cpp" line="139"/>
         <location filename="../app/main_window_actions.cpp" line="146"/>
         <location filename="../app/main_window_export.cpp" line="198"/>
@@ -3725,12 +3735,12 @@
         <translation>PNG images (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="943"/>
+        <location filename="../app/main_window.cpp" line="949"/>
         <source>About RasterLab</source>
         <translation>About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="944"/>
+        <location filename="../app/main_window.cpp" line="950"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</translation>
     </message>
@@ -3962,12 +3972,12 @@
         <translation>the command file was not restored, the scene shown stays: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="222"/>
+        <location filename="../app/main_window_lessons.cpp" line="223"/>
         <source>The lesson opened, but not all of it: see the Messages dock</source>
         <translation>The lesson opened, but not all of it: see the Messages dock</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="339"/>
+        <location filename="../app/main_window_lessons.cpp" line="340"/>
         <source>%1: cannot save the lesson: %2</source>
         <translation>%1: cannot save the lesson: %2</translation>
     </message>
@@ -5621,117 +5631,117 @@
 <context>
     <name>rasterlab::StageStrip</name>
     <message>
-        <location filename="../views/stage_strip.cpp" line="57"/>
+        <location filename="../views/stage_strip.cpp" line="58"/>
         <source>Camera basis</source>
         <translation>Camera basis</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="59"/>
+        <location filename="../views/stage_strip.cpp" line="60"/>
         <source>View coordinates</source>
         <translation>View coordinates</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="61"/>
+        <location filename="../views/stage_strip.cpp" line="62"/>
         <source>Normals</source>
         <translation>Normals</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="63"/>
+        <location filename="../views/stage_strip.cpp" line="64"/>
         <source>Projection</source>
         <translation>Projection</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="65"/>
+        <location filename="../views/stage_strip.cpp" line="66"/>
         <source>Scan conversion</source>
         <translation>Scan conversion</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="67"/>
+        <location filename="../views/stage_strip.cpp" line="68"/>
         <source>Z-buffer</source>
         <translation>Z-buffer</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="69"/>
+        <location filename="../views/stage_strip.cpp" line="70"/>
         <source>Lighting</source>
         <translation>Lighting</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="77"/>
+        <location filename="../views/stage_strip.cpp" line="78"/>
         <source>Camera</source>
         <translation>Camera</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="79"/>
+        <location filename="../views/stage_strip.cpp" line="80"/>
         <source>View</source>
         <translation>View</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="81"/>
+        <location filename="../views/stage_strip.cpp" line="82"/>
         <source>Scan</source>
         <translation>Scan</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="91"/>
+        <location filename="../views/stage_strip.cpp" line="92"/>
         <source>no course camera: each draw brings its own view matrix</source>
         <translation>no course camera: each draw brings its own view matrix</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="95"/>
+        <location filename="../views/stage_strip.cpp" line="96"/>
         <source>nothing is lit: no light reads a normal</source>
         <translation>nothing is lit: no light reads a normal</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="103"/>
+        <location filename="../views/stage_strip.cpp" line="104"/>
         <source>nothing is lit: each pixel takes its object&apos;s own colour</source>
         <translation>nothing is lit: each pixel takes its object&apos;s own colour</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="116"/>
+        <location filename="../views/stage_strip.cpp" line="117"/>
         <source>near clip</source>
         <translation>near clip</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="118"/>
+        <location filename="../views/stage_strip.cpp" line="119"/>
         <source>plain divide</source>
         <translation>plain divide</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="120"/>
+        <location filename="../views/stage_strip.cpp" line="121"/>
         <source>same side</source>
         <translation>same side</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="129"/>
+        <location filename="../views/stage_strip.cpp" line="130"/>
         <source>triangles are clipped at the near plane before the divide, so nothing at or behind the eye is divided by its w (the course and GPU-like rules)</source>
         <translation>triangles are clipped at the near plane before the divide, so nothing at or behind the eye is divided by its w (the course and GPU-like rules)</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="133"/>
+        <location filename="../views/stage_strip.cpp" line="134"/>
         <source>every vertex is divided by its w without clipping, as seed 000 writes it and seed 001&apos;s HW2 does (&quot;we won&apos;t add it&quot;): a triangle behind the eye lands mirrored through the centre, one across the eye plane wraps through infinity</source>
         <translation>every vertex is divided by its w without clipping, as seed 000 writes it and seed 001&apos;s HW2 does (&quot;we won&apos;t add it&quot;): a triangle behind the eye lands mirrored through the centre, one across the eye plane wraps through infinity</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="139"/>
+        <location filename="../views/stage_strip.cpp" line="140"/>
         <source>triangles wholly in front of or wholly behind the eye are divided as they are; those across the eye plane are clipped at the near plane</source>
         <translation>triangles wholly in front of or wholly behind the eye are divided as they are; those across the eye plane are clipped at the near plane</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="157"/>
+        <location filename="../views/stage_strip.cpp" line="158"/>
         <source>(skipped)</source>
         <translation>(skipped)</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="161"/>
+        <location filename="../views/stage_strip.cpp" line="162"/>
         <source>%1 is skipped: %2</source>
         <translation>%1 is skipped: %2</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="163"/>
+        <location filename="../views/stage_strip.cpp" line="164"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="212"/>
+        <location filename="../views/stage_strip.cpp" line="218"/>
         <source>while stepping, stages 5-7 run together, fragment by fragment</source>
         <translation>while stepping, stages 5-7 run together, fragment by fragment</translation>
     </message>

@@ -603,6 +603,11 @@ void CameraBasisView::refresh() {
                          .arg(number(b.uDotV, 3), number(b.uDotN, 3), number(b.vDotNResidual, 3),
                               number(b.uLengthError, 3), number(b.vLengthError, 3),
                               number(b.nLengthError, 3), number(b.maxResidual(), 3));
+    // The conditioning: V - (V.N) N keeps sin(angle) of V, and the residuals grow as it shrinks.
+    m_residualText += QStringLiteral("; ") +
+                      tr("N and V %1 degrees apart (under %2 degrees from the line of N, the "
+                         "residuals pass a float's precision)")
+                          .arg(number(b.angleNV), number(rl::CameraBasisStage::kWarnAngleDegrees));
 
     // viewFromWorld is column-major: row r is m[0][r] .. m[3][r].
     QStringList rows;

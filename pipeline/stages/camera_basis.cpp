@@ -49,6 +49,10 @@ Result<CameraBasis> CameraBasisStage::run(const Scene& scene, Diagnostics& diagn
                          "hy, the vertical half-size of the window, is 0: the projection "
                          "(d/hy) y/z divides by it"_msg);
 
+    // How far V is from N (atan2 stays accurate where acos of the dot product does not).
+    basis.angleNV = glm::degrees(
+        std::atan2(glm::length(glm::cross(camera.n, camera.v)), glm::dot(camera.n, camera.v)));
+
     // Gram-Schmidt: normalise N, remove from V its component along N, normalise V.
     basis.n = camera.n / basis.nLength;
     basis.vDotN = glm::dot(camera.v, basis.n);
@@ -81,6 +85,13 @@ Result<CameraBasis> CameraBasisStage::run(const Scene& scene, Diagnostics& diagn
     translation[3] = dvec4(-camera.c, 1.0);
     basis.viewFromWorld = rotation * translation;
 
+    const double fromAxis = std::min(basis.angleNV, 180.0 - basis.angleNV);
+    if (fromAxis < CameraBasisStage::kWarnAngleDegrees)
+        diagnostics.warn(camera.where.v,
+                         "V is %1 degrees from the line of N: Gram-Schmidt keeps only that "
+                         "much of V, and the basis is orthonormal only to %2, less than a "
+                         "float's precision; choose a V farther from N"_msg(
+                             formatNumber(fromAxis), formatNumber(basis.maxResidual())));
     if (camera.hx < 0.0)
         diagnostics.warn(camera.where.hx,
                          "hx is negative: the image is mirrored left to right"_msg);

@@ -4,7 +4,9 @@
 // and the matrix viewFromWorld = [U; V; N] * translate(-C). Every intermediate vector and
 // the orthogonality residuals are kept, so the view can show the steps with numbers.
 // Degenerate cameras (a zero vector, N parallel to V, d = 0, hx = 0 or hy = 0) are errors
-// that name the values. A scene without a course camera (its draws carry their own view
+// that name the values. V close to N is ill-conditioned: V - (V.N) N keeps only sin(angle) of
+// V, so rounding grows as 1e-16 / sin(angle); under kWarnAngleDegrees the residuals pass a
+// float's precision and the stage warns, and under sin(angle) = 1e-12 it is an error. A scene without a course camera (its draws carry their own view
 // matrices) skips this stage.
 #pragma once
 
@@ -24,6 +26,9 @@ struct CameraBasis {
     dvec3 c = dvec3(0.0);
     dvec3 nGiven = dvec3(0.0);
     dvec3 vGiven = dvec3(0.0);
+
+    // The angle between the given N and V, in degrees: the basis's conditioning.
+    double angleNV = 90.0;
 
     // Gram-Schmidt, step by step.
     double nLength = 0.0;            // |N| before normalisation
@@ -45,6 +50,10 @@ struct CameraBasis {
 
 class CameraBasisStage {
 public:
+    // Below this angle between N and V the basis is orthonormal only to about 2e-8 or worse
+    // (the rounding of V - (V.N) N over sin(angle)): more than a float holds.
+    static constexpr double kWarnAngleDegrees = 1e-6;
+
     Result<CameraBasis> run(const Scene& scene, Diagnostics& diagnostics) const;
 };
 
