@@ -13,6 +13,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
@@ -208,7 +209,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     statusBar()->addPermanentWidget(m_busyBar);
     statusBar()->addPermanentWidget(m_cancelButton);
     statusBar()->addPermanentWidget(m_timeLabel);
-    resize(1560, 960);
+    fitToScreen(screen());
     m_defaultLayout = saveState(kLayoutVersion);
     restoreLayout();
 
@@ -404,6 +405,20 @@ void MainWindow::setPresentationMode(bool on) {
     m_inspection->setPresentation(on);
     updateClickerKeys();
     if (on) QMetaObject::invokeMethod(this, &MainWindow::fitDocks, Qt::QueuedConnection);
+}
+
+void MainWindow::fitToScreen(const QScreen* screen) {
+    // Without the bound, a window larger than a 1280x720 screen runs off its edge (a window
+    // manager does not always shrink it).
+    QSize size(1560, 960);
+    if (screen) {
+        const QRect free = screen->availableGeometry();
+        size = size.boundedTo(free.size() - QSize(16, 48)).expandedTo(minimumSizeHint());
+        QRect placed(QPoint(), size);
+        placed.moveCenter(free.center());
+        move(std::max(placed.left(), free.left()), std::max(placed.top(), free.top()));
+    }
+    resize(size);
 }
 
 void MainWindow::resetLayout() {

@@ -34,6 +34,7 @@ class QMenu;
 class QListWidget;
 class QProgressBar;
 class QPushButton;
+class QScreen;
 class QTextBrowser;
 class QToolButton;
 
@@ -144,6 +145,9 @@ public:
     bool handOver();
     // The docks as they are when the window opens (View > Reset Layout).
     void resetLayout();
+    // The window's opening size, 1560x960 or less, inside the screen's free area (room left
+    // for the title bar and frame) and centred on it.
+    void fitToScreen(const QScreen* screen);
     // View > Fill the Window (F11, or a double-click on a dock's title bar): one dock over the
     // whole window, the others and the image hidden (for a projector); with no dock, the
     // image alone. Again, the layout as it was. Without a dock given, the dock holding the

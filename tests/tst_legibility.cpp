@@ -7,7 +7,7 @@
 //     sideways to show its columns;
 //   - two sibling widgets overlap, or a toolbar hides items behind its extension button;
 //   - two labels a custom-painted view drew (PaintedLabels) meet, or one leaves the view;
-//   - the window cannot shrink to the screen.
+//   - the window cannot shrink to the screen, or opens larger than it.
 // The window then fills itself with one dock and gives the layout back (View > Fill the
 // Window).
 //
@@ -505,6 +505,7 @@ class TestLegibility : public QObject {
 private slots:
     void everyDock_data();
     void everyDock();
+    void opensInsideTheScreen();
     void fillWindowWithDock();
 
 private:
@@ -545,6 +546,12 @@ void TestLegibility::everyDock() {
     settle();
 
     Checker check(QStringLiteral("window"));
+    // The window's least size, not only the size it took: a window manager may not shrink it.
+    if (const QSize least = window.minimumSizeHint();
+        least.width() > size.width() || least.height() > size.height())
+        check.fail(
+            &window,
+            QStringLiteral("cannot be smaller than %1x%2").arg(least.width()).arg(least.height()));
     if (window.size() != size) {
         QStringList minima;
         for (const QWidget* w : window.findChildren<QWidget*>(Qt::FindDirectChildrenOnly))
@@ -588,6 +595,31 @@ void TestLegibility::everyDock() {
     });
     QVERIFY2(findings.isEmpty(), qPrintable(QStringLiteral("%1 problems, listed above")
                                                 .arg(findings.size())));
+}
+
+void TestLegibility::opensInsideTheScreen() {
+    // The size the window opens at (1560x960 at most), inside each screen's free area, with
+    // room for a frame: a window manager does not always shrink a window to its screen.
+    m_translators.install(QStringLiteral("en"));
+    for (const QSize size : {QSize(1280, 720), QSize(1366, 768), QSize(1920, 1080)}) {
+        QScreen* screen = screenOf(size);
+        QVERIFY(screen);
+        MainWindow window;
+        window.setScreen(screen);
+        window.fitToScreen(screen);
+        const QRect free = screen->availableGeometry();
+        QVERIFY2(free.contains(window.geometry()),
+                 qPrintable(QStringLiteral("%1x%2 at (%3, %4) on a screen of %5x%6")
+                                .arg(window.width())
+                                .arg(window.height())
+                                .arg(window.x())
+                                .arg(window.y())
+                                .arg(free.width())
+                                .arg(free.height())));
+        QVERIFY(window.width() <= 1560 && window.height() <= 960);
+        // Large screens: the default size whole.
+        if (size.width() >= 1920) QCOMPARE(window.size(), QSize(1560, 960));
+    }
 }
 
 void TestLegibility::fillWindowWithDock() {
