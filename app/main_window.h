@@ -156,7 +156,8 @@ public:
     bool isFilled() const;
     QDockWidget* filledDock() const;
     // The docks' widths and heights for the window's size (the default layout, presentation
-    // mode): each side as wide as its tab bars need, the image the rest.
+    // mode): each side as wide as its tab bars need (the left one, its docks' contents too),
+    // the image the rest.
     void fitDocks();
 
     // ---- Lessons (main_window_lessons.cpp) -----------------------------------------------
@@ -242,6 +243,7 @@ private:
     void updateDockTabTips();
     QList<QDockWidget*> shownDocks(Qt::DockWidgetArea area) const;
     int tabBarWidth(const QList<QDockWidget*>& docks) const;
+    int contentWidth(const QList<QDockWidget*>& docks) const;
     void restoreFill();
     QDockWidget* fillTarget() const;
     void requestRender();

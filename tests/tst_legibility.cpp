@@ -259,18 +259,35 @@ public:
         const QAbstractItemModel* model = header->model();
         if (!model) return;
         const int margin = header->style()->pixelMetric(QStyle::PM_HeaderMargin, nullptr, header);
+        QFont bold = header->font();
+        bold.setBold(true);
         for (int i = 0; i < header->count(); ++i) {
             if (header->isSectionHidden(i)) continue;
             const QString text = model->headerData(i, header->orientation()).toString();
             if (text.isEmpty()) continue;
-            const int need = header->orientation() == Qt::Horizontal
-                                 ? header->fontMetrics().horizontalAdvance(text) + 2 * margin
-                                 : header->fontMetrics().height();
+            // A section over a selected cell draws its title bold (highlightSections).
+            bool highlighted = false;
+            if (header->highlightSections() && header->selectionModel())
+                for (const QModelIndex& index : header->selectionModel()->selectedIndexes())
+                    highlighted = highlighted ||
+                                  (header->orientation() == Qt::Horizontal ? index.column() == i
+                                                                           : index.row() == i);
+            const QFontMetrics metrics(highlighted ? bold : header->font());
+            // A title on several lines (the pixel history's, in a narrow dock): each line across
+            // its section, all of them down the header.
+            const QSize lines = metrics.size(0, text);
+            const int need = header->orientation() == Qt::Horizontal ? lines.width() + 2 * margin
+                                                                     : lines.height();
             if (need > header->sectionSize(i) + kSlack)
                 fail(header, QStringLiteral("section \"%1\" needs %2 px, has %3")
                                  .arg(text)
                                  .arg(need)
                                  .arg(header->sectionSize(i)));
+            if (header->orientation() == Qt::Horizontal && lines.height() > header->height())
+                fail(header, QStringLiteral("section \"%1\" needs %2 px of height, has %3")
+                                 .arg(text)
+                                 .arg(lines.height())
+                                 .arg(header->height()));
         }
     }
 
