@@ -361,9 +361,11 @@ void MainWindow::setPresentationMode(bool on) {
         const QSignalBlocker block(m_presentationAction);
         m_presentationAction->setChecked(on);
     }
-    // In front of a class: the whole screen, the image and the stage views only.
-    static const char* const kSideDocks[] = {"messagesDock", "editDock", "sceneDock",
-                                             "breakpointsDock", "accuracyDock"};
+    // In front of a class: the whole screen, the image and the stage views only (the
+    // animation's controls too: above the pixel inspector, each had half the height, too
+    // little for either in large text).
+    static const char* const kSideDocks[] = {"messagesDock",    "editDock",     "sceneDock",
+                                             "breakpointsDock", "accuracyDock", "animationDock"};
     if (on) {
         m_layoutBeforePresentation = saveState(kLayoutVersion);
         m_fitDocksBeforePresentation = m_fitDocks;
