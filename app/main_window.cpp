@@ -240,6 +240,7 @@ QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWid
         scroll->setWidgetResizable(true);
         scroll->setWidget(widget);
         dock->setWidget(scroll);
+        widget->installEventFilter(this);  // its minimum width may widen the side (fitDocks)
     }
     addDockWidget(area, dock);
     return dock;

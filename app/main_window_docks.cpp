@@ -53,6 +53,20 @@ void MainWindow::resizeEvent(QResizeEvent* event) {
 }
 
 bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+    // A left dock's content grown wider than the dock (a pixel picked in large text): the
+    // side widened again, while the window fits its docks.
+    if (event->type() == QEvent::LayoutRequest && m_fitDocks && isVisible() && !isFilled() &&
+        !qobject_cast<QDockWidget*>(watched)) {
+        for (QObject* o = watched->parent(); o && o != this; o = o->parent()) {
+            auto* dock = qobject_cast<QDockWidget*>(o);
+            if (!dock) continue;
+            if (!dock->isFloating() && dockWidgetArea(dock) == Qt::LeftDockWidgetArea &&
+                dock->width() < int(0.45 * width()) && contentWidth({dock}) > dock->width())
+                QMetaObject::invokeMethod(this, &MainWindow::fitDocks, Qt::QueuedConnection);
+            break;
+        }
+        return QMainWindow::eventFilter(watched, event);
+    }
     auto* dock = qobject_cast<QDockWidget*>(watched);
     if (!dock || dock->isFloating()) return QMainWindow::eventFilter(watched, event);
     if (event->type() == QEvent::ToolTip) {
