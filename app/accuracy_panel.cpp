@@ -21,6 +21,15 @@ namespace rasterlab {
 
 namespace {
 
+// A picture that follows the room it is given: its size hint is its minimum, not its pixmap's
+// (a layout short of room then shares it out without laying one picture over the next).
+class PictureLabel : public QLabel {
+public:
+    using QLabel::QLabel;
+    QSize sizeHint() const override { return minimumSizeHint(); }
+    QSize minimumSizeHint() const override { return minimumSize(); }
+};
+
 QString percent(double share) {
     return QString::number(100.0 * share, 'f', 3) + QStringLiteral(" %");
 }
@@ -75,17 +84,17 @@ AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent) {
     m_table->setProperty("scrollsSideways", true);
     layout->addWidget(m_table, 2);
 
-    m_plotLabel = new QLabel(this);
+    m_plotLabel = new PictureLabel(this);
     m_plotLabel->setObjectName(QStringLiteral("accuracyPlot"));
     m_plotLabel->setMinimumHeight(120);
     // The pictures follow the dock's size, never the other way round.
-    m_plotLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Ignored);
+    m_plotLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Expanding);
     m_plotLabel->setAlignment(Qt::AlignCenter);
     layout->addWidget(m_plotLabel, 3);
-    m_heatLabel = new QLabel(this);
+    m_heatLabel = new PictureLabel(this);
     m_heatLabel->setObjectName(QStringLiteral("accuracyHeatMap"));
     m_heatLabel->setMinimumHeight(120);
-    m_heatLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Ignored);
+    m_heatLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Expanding);
     m_heatLabel->setAlignment(Qt::AlignLeft | Qt::AlignTop);
     m_heatLabel->setCursor(Qt::CrossCursor);
     m_heatLabel->setToolTip(tr("Click a pixel to compare the mode with the reference there"));

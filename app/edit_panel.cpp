@@ -361,6 +361,12 @@ QWidget* EditPanel::buildContent() {
     m_shading->addItem(tr("Flat (per triangle)"), int(rl::ShadingModel::Flat));
     m_shading->addItem(tr("Painter's algorithm (flat, no depth test)"),
                        int(rl::ShadingModel::Painter));
+    // As wide as the grid, not as the longest model's name (the painter's, in Portuguese
+    // wider than the dock): a longer name is elided, whole in the list and the tooltip.
+    m_shading->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_shading->setMinimumContentsLength(12);
+    for (int k = 0; k < m_shading->count(); ++k)
+        m_shading->setItemData(k, m_shading->itemText(k), Qt::ToolTipRole);
     shading->addWidget(m_shading, 0, 0, 1, 4);
     connect(m_shading, &QComboBox::currentIndexChanged, this, &EditPanel::onShadingChanged);
     addCheck(shading, 1, Field::TwoSided, tr("Two-sided lighting"),
@@ -553,6 +559,7 @@ void EditPanel::showBox(const Box& b) {
 void EditPanel::showShading() {
     const QSignalBlocker blocker(m_shading);
     m_shading->setCurrentIndex(m_shading->findData(int(m_document->settings().shading)));
+    m_shading->setToolTip(m_shading->currentText());
 }
 
 void EditPanel::showLight() {
@@ -588,6 +595,7 @@ void EditPanel::onBoxChanged(Field field, int component, double value) {
 }
 
 void EditPanel::onShadingChanged(int index) {
+    m_shading->setToolTip(m_shading->currentText());
     const SceneDocument::Numbers before = m_document->value(Field::Shading);
     const SceneDocument::Numbers after = {double(m_shading->itemData(index).toInt()), 0.0, 0.0};
     if (after != before) push(Field::Shading, 0, 0, before, after);

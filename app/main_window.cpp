@@ -13,6 +13,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
@@ -208,7 +209,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     statusBar()->addPermanentWidget(m_busyBar);
     statusBar()->addPermanentWidget(m_cancelButton);
     statusBar()->addPermanentWidget(m_timeLabel);
-    resize(1560, 960);
+    fitToScreen(screen());
     m_defaultLayout = saveState(kLayoutVersion);
     restoreLayout();
 
@@ -239,6 +240,7 @@ QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWid
         scroll->setWidgetResizable(true);
         scroll->setWidget(widget);
         dock->setWidget(scroll);
+        widget->installEventFilter(this);  // its minimum width may widen the side (fitDocks)
     }
     addDockWidget(area, dock);
     return dock;
@@ -366,9 +368,11 @@ void MainWindow::setPresentationMode(bool on) {
         const QSignalBlocker block(m_presentationAction);
         m_presentationAction->setChecked(on);
     }
-    // In front of a class: the whole screen, the image and the stage views only.
-    static const char* const kSideDocks[] = {"messagesDock", "editDock", "sceneDock",
-                                             "breakpointsDock", "accuracyDock"};
+    // In front of a class: the whole screen, the image and the stage views only (the
+    // animation's controls too: above the pixel inspector, each had half the height, too
+    // little for either in large text).
+    static const char* const kSideDocks[] = {"messagesDock",    "editDock",     "sceneDock",
+                                             "breakpointsDock", "accuracyDock", "animationDock"};
     if (on) {
         m_layoutBeforePresentation = saveState(kLayoutVersion);
         m_fitDocksBeforePresentation = m_fitDocks;
@@ -410,6 +414,20 @@ void MainWindow::setPresentationMode(bool on) {
     m_inspection->setPresentation(on);
     updateClickerKeys();
     if (on) QMetaObject::invokeMethod(this, &MainWindow::fitDocks, Qt::QueuedConnection);
+}
+
+void MainWindow::fitToScreen(const QScreen* screen) {
+    // Without the bound, a window larger than a 1280x720 screen runs off its edge (a window
+    // manager does not always shrink it).
+    QSize size(1560, 960);
+    if (screen) {
+        const QRect free = screen->availableGeometry();
+        size = size.boundedTo(free.size() - QSize(16, 48)).expandedTo(minimumSizeHint());
+        QRect placed(QPoint(), size);
+        placed.moveCenter(free.center());
+        move(std::max(placed.left(), free.left()), std::max(placed.top(), free.top()));
+    }
+    resize(size);
 }
 
 void MainWindow::resetLayout() {

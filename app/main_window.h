@@ -34,6 +34,7 @@ class QMenu;
 class QListWidget;
 class QProgressBar;
 class QPushButton;
+class QScreen;
 class QTextBrowser;
 class QToolButton;
 
@@ -144,6 +145,9 @@ public:
     bool handOver();
     // The docks as they are when the window opens (View > Reset Layout).
     void resetLayout();
+    // The window's opening size, 1560x960 or less, inside the screen's free area (room left
+    // for the title bar and frame) and centred on it.
+    void fitToScreen(const QScreen* screen);
     // View > Fill the Window (F11, or a double-click on a dock's title bar): one dock over the
     // whole window, the others and the image hidden (for a projector); with no dock, the
     // image alone. Again, the layout as it was. Without a dock given, the dock holding the
@@ -152,7 +156,8 @@ public:
     bool isFilled() const;
     QDockWidget* filledDock() const;
     // The docks' widths and heights for the window's size (the default layout, presentation
-    // mode): each side as wide as its tab bars need, the image the rest.
+    // mode): each side as wide as its tab bars need (the left one, its docks' contents too),
+    // the image the rest.
     void fitDocks();
 
     // ---- Lessons (main_window_lessons.cpp) -----------------------------------------------
@@ -238,6 +243,7 @@ private:
     void updateDockTabTips();
     QList<QDockWidget*> shownDocks(Qt::DockWidgetArea area) const;
     int tabBarWidth(const QList<QDockWidget*>& docks) const;
+    int contentWidth(const QList<QDockWidget*>& docks) const;
     void restoreFill();
     QDockWidget* fillTarget() const;
     void requestRender();

@@ -6,6 +6,8 @@
 #include <QEvent>
 #include <QHelpEvent>
 #include <QMouseEvent>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QStatusBar>
 #include <QStyle>
 #include <QTabBar>
@@ -51,6 +53,20 @@ void MainWindow::resizeEvent(QResizeEvent* event) {
 }
 
 bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+    // A left dock's content grown wider than the dock (a pixel picked in large text): the
+    // side widened again, while the window fits its docks.
+    if (event->type() == QEvent::LayoutRequest && m_fitDocks && isVisible() && !isFilled() &&
+        !qobject_cast<QDockWidget*>(watched)) {
+        for (QObject* o = watched->parent(); o && o != this; o = o->parent()) {
+            auto* dock = qobject_cast<QDockWidget*>(o);
+            if (!dock) continue;
+            if (!dock->isFloating() && dockWidgetArea(dock) == Qt::LeftDockWidgetArea &&
+                dock->width() < int(0.45 * width()) && contentWidth({dock}) > dock->width())
+                QMetaObject::invokeMethod(this, &MainWindow::fitDocks, Qt::QueuedConnection);
+            break;
+        }
+        return QMainWindow::eventFilter(watched, event);
+    }
     auto* dock = qobject_cast<QDockWidget*>(watched);
     if (!dock || dock->isFloating()) return QMainWindow::eventFilter(watched, event);
     if (event->type() == QEvent::ToolTip) {
@@ -105,18 +121,43 @@ int MainWindow::tabBarWidth(const QList<QDockWidget*>& docks) const {
     return widest;
 }
 
+int MainWindow::contentWidth(const QList<QDockWidget*>& docks) const {
+    // The widest minimum of a dock's scrolled content, with the dock's frame and a vertical
+    // scroll bar beside it.
+    int widest = 0;
+    for (QDockWidget* dock : docks) {
+        const auto* scroll = qobject_cast<const QScrollArea*>(dock->widget());
+        if (!scroll || !scroll->widget()) continue;
+        const QScrollBar* bar = scroll->verticalScrollBar();
+        const int frame = dock->width() - scroll->viewport()->width() +
+                          (bar->isVisible() ? 0 : bar->sizeHint().width());
+        widest = std::max(widest,
+                          scroll->widget()->minimumSizeHint().width() + std::clamp(frame, 0, 60));
+    }
+    return widest;
+}
+
 void MainWindow::fitDocks() {
     // Each side as wide as its tabs need, and at least 30% (left: room for the pixel
-    // inspector's table) and a third (right) of the window; the image takes the rest. Each
-    // side's docks share its height.
+    // inspector's table) and a third (right) of the window; the image takes the rest. The
+    // left side also as wide as its docks' contents need, up to 45% (the pixel inspector's
+    // table in presentation mode's large text); the stage views on the right scale their
+    // pictures instead. Each side's docks share its height.
     if (isFilled()) return;
     constexpr int kFrame = 20;  // the dock area's frame and margins around its tab bar
-    const std::pair<Qt::DockWidgetArea, double> sides[] = {{Qt::LeftDockWidgetArea, 0.3},
-                                                           {Qt::RightDockWidgetArea, 0.32}};
-    for (const auto& [area, share] : sides) {
+    struct Side {
+        Qt::DockWidgetArea area;
+        double share;
+        bool fitsContent;
+    };
+    const Side sides[] = {{Qt::LeftDockWidgetArea, 0.3, true},
+                          {Qt::RightDockWidgetArea, 0.32, false}};
+    for (const auto& [area, share, fitsContent] : sides) {
         const QList<QDockWidget*> docks = shownDocks(area);
         if (docks.isEmpty()) continue;
-        const int width = std::max(int(share * this->width()), tabBarWidth(docks) + kFrame);
+        int width = std::max(int(share * this->width()), tabBarWidth(docks) + kFrame);
+        if (fitsContent)
+            width = std::max(width, std::min(contentWidth(docks), int(0.45 * this->width())));
         resizeDocks({docks.front()}, {width}, Qt::Horizontal);
         // One dock per row: the first of each tab group.
         QList<QDockWidget*> rows;

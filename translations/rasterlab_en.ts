@@ -1908,97 +1908,97 @@
 <context>
     <name>rasterlab::AccuracyPanel</name>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="41"/>
+        <location filename="../app/accuracy_panel.cpp" line="50"/>
         <source>&amp;Measure</source>
         <translation>&amp;Measure</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="44"/>
+        <location filename="../app/accuracy_panel.cpp" line="53"/>
         <source>Render the scene in every mode and compare each with an exact ray-cast reference</source>
         <translation>Render the scene in every mode and compare each with an exact ray-cast reference</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="46"/>
+        <location filename="../app/accuracy_panel.cpp" line="55"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="51"/>
+        <location filename="../app/accuracy_panel.cpp" line="60"/>
         <source>1 sample a pixel</source>
         <translation>1 sample a pixel</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="52"/>
+        <location filename="../app/accuracy_panel.cpp" line="61"/>
         <source>also 2x2 samples</source>
         <translation>also 2x2 samples</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="53"/>
+        <location filename="../app/accuracy_panel.cpp" line="62"/>
         <source>also 4x4 samples</source>
         <translation>also 4x4 samples</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="58"/>
+        <location filename="../app/accuracy_panel.cpp" line="67"/>
         <source>Measures the error of each mode against an exact reference.</source>
         <translation>Measures the error of each mode against an exact reference.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="65"/>
+        <location filename="../app/accuracy_panel.cpp" line="74"/>
         <source>Mode</source>
         <translation>Mode</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="65"/>
+        <location filename="../app/accuracy_panel.cpp" line="74"/>
         <source>Rules</source>
         <translation>Rules</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="65"/>
+        <location filename="../app/accuracy_panel.cpp" line="74"/>
         <source>Precision</source>
         <translation>Precision</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="65"/>
+        <location filename="../app/accuracy_panel.cpp" line="74"/>
         <source>Samples</source>
         <translation>Samples</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="66"/>
+        <location filename="../app/accuracy_panel.cpp" line="75"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="66"/>
+        <location filename="../app/accuracy_panel.cpp" line="75"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="66"/>
+        <location filename="../app/accuracy_panel.cpp" line="75"/>
         <source>Max error</source>
         <translation>Max error</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="66"/>
+        <location filename="../app/accuracy_panel.cpp" line="75"/>
         <source>Within 1/255</source>
         <translation>Within 1/255</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="67"/>
+        <location filename="../app/accuracy_panel.cpp" line="76"/>
         <source>Errors in byte steps (1/255) over the pixels both images cover</source>
         <translation>Errors in byte steps (1/255) over the pixels both images cover</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="91"/>
+        <location filename="../app/accuracy_panel.cpp" line="100"/>
         <source>Click a pixel to compare the mode with the reference there</source>
         <translation>Click a pixel to compare the mode with the reference there</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="124"/>
+        <location filename="../app/accuracy_panel.cpp" line="133"/>
         <source>The scene changed: measure again.</source>
         <translation>The scene changed: measure again.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/accuracy_panel.cpp" line="146"/>
+        <location filename="../app/accuracy_panel.cpp" line="155"/>
         <source>Measuring %n mode(s) against the exact reference...</source>
         <translation>
             <numerusform>Measuring %n mode against the exact reference...</numerusform>
@@ -2006,37 +2006,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="181"/>
+        <location filename="../app/accuracy_panel.cpp" line="190"/>
         <source>Cancelled.</source>
         <translation>Cancelled.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="182"/>
+        <location filename="../app/accuracy_panel.cpp" line="191"/>
         <source>The measurement failed: %1</source>
         <translation>The measurement failed: %1</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="188"/>
+        <location filename="../app/accuracy_panel.cpp" line="197"/>
         <source>%1 at %2x%3: %4 modes; the exact reference cast %5 rays in %6 ms.</source>
         <translation>%1 at %2x%3: %4 modes; the exact reference cast %5 rays in %6 ms.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="215"/>
+        <location filename="../app/accuracy_panel.cpp" line="224"/>
         <source>Error against run time: %1, %2x%3</source>
         <translation>Error against run time: %1, %2x%3</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="262"/>
+        <location filename="../app/accuracy_panel.cpp" line="271"/>
         <source>%1 (%2): coverage differs on %3 pixels (%4); the largest error, %5 byte steps, is at (%6, %7). Click the map to compare a pixel.</source>
         <translation>%1 (%2): coverage differs on %3 pixels (%4); the largest error, %5 byte steps, is at (%6, %7). Click the map to compare a pixel.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="281"/>
+        <location filename="../app/accuracy_panel.cpp" line="290"/>
         <source>Pixel (%1, %2), %3: mode %4, reference %5, difference %6 (byte steps).</source>
         <translation>Pixel (%1, %2), %3: mode %4, reference %5, difference %6 (byte steps).</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="287"/>
+        <location filename="../app/accuracy_panel.cpp" line="296"/>
         <source>Coverage differs: %1 of %2 samples covered by the mode, %3 by the reference.</source>
         <translation>Coverage differs: %1 of %2 samples covered by the mode, %3 by the reference.</translation>
     </message>
@@ -2252,37 +2252,37 @@
 <context>
     <name>rasterlab::CameraBasisCanvas</name>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="173"/>
+        <location filename="../views/camera_basis_view.cpp" line="153"/>
         <source>Drag to turn the scene, wheel to zoom, double-click to reset.</source>
         <translation>Drag to turn the scene, wheel to zoom, double-click to reset.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="176"/>
+        <location filename="../views/camera_basis_view.cpp" line="156"/>
         <source>Reset view</source>
         <translation>Reset view</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="177"/>
+        <location filename="../views/camera_basis_view.cpp" line="157"/>
         <source>Turn the 3D drawing back to where it started</source>
         <translation>Turn the 3D drawing back to where it started</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="364"/>
+        <location filename="../views/camera_basis_view.cpp" line="390"/>
         <source>window (d = %1)</source>
         <translation>window (d = %1)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="368"/>
+        <location filename="../views/camera_basis_view.cpp" line="394"/>
         <source>frustum</source>
         <translation>frustum</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="381"/>
+        <location filename="../views/camera_basis_view.cpp" line="407"/>
         <source>N given, |N| = %1</source>
         <translation>N given, |N| = %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="384"/>
+        <location filename="../views/camera_basis_view.cpp" line="410"/>
         <source>V given, |V| = %1</source>
         <translation>V given, |V| = %1</translation>
     </message>
@@ -2290,132 +2290,132 @@
 <context>
     <name>rasterlab::CameraBasisView</name>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="446"/>
+        <location filename="../views/camera_basis_view.cpp" line="472"/>
         <source>Previous step</source>
         <translation>Previous step</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="450"/>
+        <location filename="../views/camera_basis_view.cpp" line="476"/>
         <source>Next step</source>
         <translation>Next step</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="561"/>
+        <location filename="../views/camera_basis_view.cpp" line="587"/>
         <source>The camera was rejected: %1</source>
         <translation>The camera was rejected: %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="564"/>
+        <location filename="../views/camera_basis_view.cpp" line="590"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="566"/>
+        <location filename="../views/camera_basis_view.cpp" line="592"/>
         <source>This stage is skipped: %1.</source>
         <translation>This stage is skipped: %1.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="568"/>
+        <location filename="../views/camera_basis_view.cpp" line="594"/>
         <source>the frame has no camera basis</source>
         <translation>the frame has no camera basis</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="575"/>
+        <location filename="../views/camera_basis_view.cpp" line="601"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; From the course camera (C, N, V) Gram-Schmidt makes the orthonormal basis U, V, N of view space. A scene whose draws carry their own model/view matrices (HW2 command files) has no course camera: this stage does nothing for it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; From the course camera (C, N, V) Gram-Schmidt makes the orthonormal basis U, V, N of view space. A scene whose draws carry their own model/view matrices (HW2 command files) has no course camera: this stage does nothing for it.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="588"/>
+        <location filename="../views/camera_basis_view.cpp" line="614"/>
         <source>N and V are nearly parallel: |V − (V·N) N| / |V| = %1, below %2. The basis is ill-conditioned: a tiny change of N or V turns U and V a lot. Choose a V further from N.</source>
         <translation>N and V are nearly parallel: |V − (V·N) N| / |V| = %1, below %2. The basis is ill-conditioned: a tiny change of N or V turns U and V a lot. Choose a V further from N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="593"/>
+        <location filename="../views/camera_basis_view.cpp" line="619"/>
         <source>1. N := N / |N| = %1 / %2 = %3</source>
         <translation>1. N := N / |N| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="595"/>
+        <location filename="../views/camera_basis_view.cpp" line="621"/>
         <source>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</source>
         <translation>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="597"/>
+        <location filename="../views/camera_basis_view.cpp" line="623"/>
         <source>3. V := V / |V| = %1 / %2 = %3</source>
         <translation>3. V := V / |V| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="599"/>
+        <location filename="../views/camera_basis_view.cpp" line="625"/>
         <source>4. U := N × V = %1 × %2 = %3</source>
         <translation>4. U := N × V = %1 × %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="601"/>
+        <location filename="../views/camera_basis_view.cpp" line="627"/>
         <source>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; largest %7</source>
         <translation>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; largest %7</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="608"/>
+        <location filename="../views/camera_basis_view.cpp" line="634"/>
         <source>N and V %1 degrees apart (under %2 degrees from the line of N, the residuals pass a float&apos;s precision)</source>
         <translation>N and V %1 degrees apart (under %2 degrees from the line of N, the residuals pass a float&apos;s precision)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="630"/>
+        <location filename="../views/camera_basis_view.cpp" line="656"/>
         <source>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): rows U, V, N, then (0 0 0 1); the last column is −U·C, −V·C, −N·C.</source>
         <translation>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): rows U, V, N, then (0 0 0 1); the last column is −U·C, −V·C, −N·C.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="642"/>
+        <location filename="../views/camera_basis_view.cpp" line="668"/>
         <source>&lt;p&gt;Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="645"/>
+        <location filename="../views/camera_basis_view.cpp" line="671"/>
         <source>, in front of the camera (z &gt; 0)</source>
         <translation>, in front of the camera (z &gt; 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="646"/>
+        <location filename="../views/camera_basis_view.cpp" line="672"/>
         <source>, behind the camera (z ≤ 0)</source>
         <translation>, behind the camera (z ≤ 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="649"/>
+        <location filename="../views/camera_basis_view.cpp" line="675"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; Gram-Schmidt keeps the direction of N (where the camera looks), removes from V its part along N so that up is perpendicular to the view direction, and completes the frame with U = N × V, the image&apos;s right. viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; Gram-Schmidt keeps the direction of N (where the camera looks), removes from V its part along N so that up is perpendicular to the view direction, and completes the frame with U = N × V, the image&apos;s right. viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="681"/>
+        <location filename="../views/camera_basis_view.cpp" line="707"/>
         <source>Step %1 of 4</source>
         <translation>Step %1 of 4</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="695"/>
+        <location filename="../views/camera_basis_view.cpp" line="721"/>
         <source>Step forward to normalise N.</source>
         <translation>Step forward to normalise N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="696"/>
+        <location filename="../views/camera_basis_view.cpp" line="722"/>
         <source>Step forward to remove from V its part along N.</source>
         <translation>Step forward to remove from V its part along N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="697"/>
+        <location filename="../views/camera_basis_view.cpp" line="723"/>
         <source>Step forward to normalise V.</source>
         <translation>Step forward to normalise V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="698"/>
+        <location filename="../views/camera_basis_view.cpp" line="724"/>
         <source>Step forward to make U = N × V.</source>
         <translation>Step forward to make U = N × V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="699"/>
+        <location filename="../views/camera_basis_view.cpp" line="725"/>
         <source>The basis is complete; the frustum is drawn with it.</source>
         <translation>The basis is complete; the frustum is drawn with it.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="712"/>
+        <location filename="../views/camera_basis_view.cpp" line="738"/>
         <source>&lt;b&gt;Orthonormality residuals&lt;/b&gt; (0 up to rounding): %1</source>
         <translation>&lt;b&gt;Orthonormality residuals&lt;/b&gt; (0 up to rounding): %1</translation>
     </message>
@@ -2444,7 +2444,7 @@
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="262"/>
-        <location filename="../app/edit_panel.cpp" line="698"/>
+        <location filename="../app/edit_panel.cpp" line="706"/>
         <source>Camera</source>
         <translation>Camera</translation>
     </message>
@@ -2634,202 +2634,202 @@
         <translation>Painter&apos;s algorithm (flat, no depth test)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="366"/>
+        <location filename="../app/edit_panel.cpp" line="372"/>
         <source>Two-sided lighting</source>
         <translation>Two-sided lighting</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="367"/>
+        <location filename="../app/edit_panel.cpp" line="373"/>
         <source>On (the course&apos;s rule): where V.N &lt; 0 the normal is turned round, so the back of a surface is lit like its front. Off: one-sided, the back keeps a normal pointing away</source>
         <translation>On (the course&apos;s rule): where V.N &lt; 0 the normal is turned round, so the back of a surface is lit like its front. Off: one-sided, the back keeps a normal pointing away</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="370"/>
+        <location filename="../app/edit_panel.cpp" line="376"/>
         <source>Blinn-Phong highlight</source>
         <translation>Blinn-Phong highlight</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="371"/>
+        <location filename="../app/edit_panel.cpp" line="377"/>
         <source>The highlight with the half vector H = (L + V)/|L + V| instead of Phong&apos;s reflection R: (N.H)^n instead of (R.V)^n</source>
         <translation>The highlight with the half vector H = (L + V)/|L + V| instead of Phong&apos;s reflection R: (N.H)^n instead of (R.V)^n</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="435"/>
+        <location filename="../app/edit_panel.cpp" line="441"/>
         <source>Add light %1</source>
         <translation>Add light %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="442"/>
+        <location filename="../app/edit_panel.cpp" line="448"/>
         <source>Remove light %1</source>
         <translation>Remove light %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="467"/>
+        <location filename="../app/edit_panel.cpp" line="473"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="470"/>
+        <location filename="../app/edit_panel.cpp" line="476"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="474"/>
+        <location filename="../app/edit_panel.cpp" line="480"/>
         <source>&amp;Save Camera and Lighting</source>
         <translation>&amp;Save Camera and Lighting</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="477"/>
+        <location filename="../app/edit_panel.cpp" line="483"/>
         <source>Write the edited camera and lighting to their files</source>
         <translation>Write the edited camera and lighting to their files</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="483"/>
+        <location filename="../app/edit_panel.cpp" line="489"/>
         <source>&amp;Camera...</source>
         <translation>&amp;Camera...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="485"/>
+        <location filename="../app/edit_panel.cpp" line="491"/>
         <source>&amp;Lighting...</source>
         <translation>&amp;Lighting...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="488"/>
+        <location filename="../app/edit_panel.cpp" line="494"/>
         <source>Save &amp;As</source>
         <translation>Save &amp;As</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="530"/>
+        <location filename="../app/edit_panel.cpp" line="536"/>
         <source>Light %1 of %2</source>
         <translation>Light %1 of %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="611"/>
+        <location filename="../app/edit_panel.cpp" line="619"/>
         <source>Change %1</source>
         <translation>Change %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="680"/>
+        <location filename="../app/edit_panel.cpp" line="688"/>
         <source>A command file is shown: its scene is not edited here.</source>
         <translation>A command file is shown: its scene is not edited here.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="686"/>
+        <location filename="../app/edit_panel.cpp" line="694"/>
         <source>%1 of the %2 example</source>
         <translation>%1 of the %2 example</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="690"/>
+        <location filename="../app/edit_panel.cpp" line="698"/>
         <source>built-in scene</source>
         <translation>built-in scene</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="694"/>
+        <location filename="../app/edit_panel.cpp" line="702"/>
         <source>modified</source>
         <translation>modified</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="700"/>
+        <location filename="../app/edit_panel.cpp" line="708"/>
         <source>Lighting</source>
         <translation>Lighting</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="710"/>
+        <location filename="../app/edit_panel.cpp" line="718"/>
         <source>shading</source>
         <translation>shading</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="712"/>
+        <location filename="../app/edit_panel.cpp" line="720"/>
         <source>two-sided lighting</source>
         <translation>two-sided lighting</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="714"/>
+        <location filename="../app/edit_panel.cpp" line="722"/>
         <source>the highlight&apos;s model</source>
         <translation>the highlight&apos;s model</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="716"/>
+        <location filename="../app/edit_panel.cpp" line="724"/>
         <source>directional</source>
         <translation>directional</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="719"/>
+        <location filename="../app/edit_panel.cpp" line="727"/>
         <source>spot cutoff</source>
         <translation>spot cutoff</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="722"/>
+        <location filename="../app/edit_panel.cpp" line="730"/>
         <source>spot exponent</source>
         <translation>spot exponent</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="725"/>
+        <location filename="../app/edit_panel.cpp" line="733"/>
         <source>spot direction</source>
         <translation>spot direction</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="728"/>
+        <location filename="../app/edit_panel.cpp" line="736"/>
         <source>attenuation</source>
         <translation>attenuation</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="738"/>
+        <location filename="../app/edit_panel.cpp" line="746"/>
         <source>%1 of light %2</source>
         <translation>%1 of light %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="747"/>
+        <location filename="../app/edit_panel.cpp" line="755"/>
         <source>The camera was not saved.</source>
         <translation>The camera was not saved.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="747"/>
+        <location filename="../app/edit_panel.cpp" line="755"/>
         <source>The lighting was not saved.</source>
         <translation>The lighting was not saved.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="820"/>
+        <location filename="../app/edit_panel.cpp" line="828"/>
         <source>the %1 example</source>
         <translation>the %1 example</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="825"/>
+        <location filename="../app/edit_panel.cpp" line="833"/>
         <source>The camera has changes that are not saved (%1).</source>
         <translation>The camera has changes that are not saved (%1).</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="826"/>
+        <location filename="../app/edit_panel.cpp" line="834"/>
         <source>The lighting has changes that are not saved (%1).</source>
         <translation>The lighting has changes that are not saved (%1).</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="746"/>
+        <location filename="../app/edit_panel.cpp" line="754"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="802"/>
+        <location filename="../app/edit_panel.cpp" line="810"/>
         <source>Save Camera As</source>
         <translation>Save Camera As</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="802"/>
+        <location filename="../app/edit_panel.cpp" line="810"/>
         <source>Save Lighting As</source>
         <translation>Save Lighting As</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="822"/>
+        <location filename="../app/edit_panel.cpp" line="830"/>
         <source>the built-in scene</source>
         <translation>the built-in scene</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="824"/>
+        <location filename="../app/edit_panel.cpp" line="832"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="831"/>
+        <location filename="../app/edit_panel.cpp" line="839"/>
         <source>Save them?</source>
         <translation>Save them?</translation>
     </message>
@@ -2876,32 +2876,32 @@
 <context>
     <name>rasterlab::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="61"/>
+        <location filename="../app/main_window.cpp" line="62"/>
         <source>Open Camera</source>
         <translation>Open Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="63"/>
+        <location filename="../app/main_window.cpp" line="64"/>
         <source>Open Lighting</source>
         <translation>Open Lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="65"/>
+        <location filename="../app/main_window.cpp" line="66"/>
         <source>Open Object</source>
         <translation>Open Object</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="73"/>
+        <location filename="../app/main_window.cpp" line="74"/>
         <source>Camera files (*.cfg *.txt);;All files (*)</source>
         <translation>Camera files (*.cfg *.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="75"/>
+        <location filename="../app/main_window.cpp" line="76"/>
         <source>Lighting files (*.txt *.lux);;All files (*)</source>
         <translation>Lighting files (*.txt *.lux);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="77"/>
+        <location filename="../app/main_window.cpp" line="78"/>
         <source>Objects (*.byu *.txt);;All files (*)</source>
         <translation>Objects (*.byu *.txt);;All files (*)</translation>
     </message>
@@ -2911,116 +2911,116 @@
         <translation>Detect from the file</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="86"/>
+        <location filename="../app/main_window.cpp" line="87"/>
         <source>flat</source>
         <translation>flat</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="88"/>
+        <location filename="../app/main_window.cpp" line="89"/>
         <location filename="../app/main_window_export.cpp" line="70"/>
         <source>Gouraud</source>
         <translation>Gouraud</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="90"/>
+        <location filename="../app/main_window.cpp" line="91"/>
         <location filename="../app/main_window_export.cpp" line="70"/>
         <source>Phong</source>
         <translation>Phong</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="92"/>
+        <location filename="../app/main_window.cpp" line="93"/>
         <source>painter&apos;s-algorithm flat</source>
         <translation>painter&apos;s-algorithm flat</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="101"/>
+        <location filename="../app/main_window.cpp" line="102"/>
         <source>%1 (built in)</source>
         <translation>%1 (built in)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="109"/>
+        <location filename="../app/main_window.cpp" line="110"/>
         <source>RasterLab</source>
         <translation>RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="165"/>
+        <location filename="../app/main_window.cpp" line="166"/>
         <source>Stopped at a breakpoint: %1</source>
         <translation>Stopped at a breakpoint: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="198"/>
+        <location filename="../app/main_window.cpp" line="199"/>
         <location filename="../app/main_window_export.cpp" line="122"/>
         <location filename="../app/main_window_export.cpp" line="159"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="199"/>
+        <location filename="../app/main_window.cpp" line="200"/>
         <source>Stop preparing the stepping of this frame</source>
         <translation>Stop preparing the stepping of this frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="203"/>
+        <location filename="../app/main_window.cpp" line="204"/>
         <source>cancelled</source>
         <translation>cancelled</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="254"/>
+        <location filename="../app/main_window.cpp" line="256"/>
         <source>Stepping</source>
         <translation>Stepping</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="278"/>
+        <location filename="../app/main_window.cpp" line="280"/>
         <source>Edit</source>
         <translation>Edit</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="285"/>
+        <location filename="../app/main_window.cpp" line="287"/>
         <source>Breakpoints</source>
         <translation>Breakpoints</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="291"/>
+        <location filename="../app/main_window.cpp" line="293"/>
         <source>Animation</source>
         <translation>Animation</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="310"/>
+        <location filename="../app/main_window.cpp" line="312"/>
         <source>1 Camera basis</source>
         <translation>1 Camera basis</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="282"/>
+        <location filename="../app/main_window.cpp" line="284"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Pixel inspector (lighting)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="317"/>
+        <location filename="../app/main_window.cpp" line="319"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 View coordinates (vertices)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="319"/>
+        <location filename="../app/main_window.cpp" line="321"/>
         <source>3 Normals</source>
         <translation>3 Normals</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="321"/>
+        <location filename="../app/main_window.cpp" line="323"/>
         <source>4 Projection</source>
         <translation>4 Projection</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="313"/>
+        <location filename="../app/main_window.cpp" line="315"/>
         <source>5 Scan conversion</source>
         <translation>5 Scan conversion</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="327"/>
+        <location filename="../app/main_window.cpp" line="329"/>
         <source>5b Trapezoids</source>
         <translation>5b Trapezoids</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="331"/>
+        <location filename="../app/main_window.cpp" line="333"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
     </message>
@@ -3040,32 +3040,32 @@
         <translation>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="964"/>
+        <location filename="../app/main_window.cpp" line="982"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>step forward, back (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="966"/>
+        <location filename="../app/main_window.cpp" line="984"/>
         <source>Space</source>
         <translation>Space</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="966"/>
+        <location filename="../app/main_window.cpp" line="984"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>play / pause (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="972"/>
+        <location filename="../app/main_window.cpp" line="990"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>let go of the picked pixel (on the image)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="973"/>
+        <location filename="../app/main_window.cpp" line="991"/>
         <source>presentation mode on / off</source>
         <translation>presentation mode on / off</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="978"/>
+        <location filename="../app/main_window.cpp" line="996"/>
         <source>save, undo, redo</source>
         <translation>save, undo, redo</translation>
     </message>
@@ -3075,7 +3075,7 @@
         <translation>Open &amp;Camera...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="130"/>
+        <location filename="../app/main_window.cpp" line="131"/>
         <source>Draw with the Plain Divide</source>
         <translation>Draw with the Plain Divide</translation>
     </message>
@@ -3320,82 +3320,82 @@
         <translation>&amp;Same Side (clip only triangles that cross the eye plane)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="603"/>
+        <location filename="../app/main_window.cpp" line="621"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="908"/>
+        <location filename="../app/main_window.cpp" line="926"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="961"/>
+        <location filename="../app/main_window.cpp" line="979"/>
         <source>step forward</source>
         <translation>step forward</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="962"/>
+        <location filename="../app/main_window.cpp" line="980"/>
         <source>step back</source>
         <translation>step back</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="965"/>
+        <location filename="../app/main_window.cpp" line="983"/>
         <source>play / pause</source>
         <translation>play / pause</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="967"/>
+        <location filename="../app/main_window.cpp" line="985"/>
         <source>jump to the start / the end of the frame</source>
         <translation>jump to the start / the end of the frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="968"/>
+        <location filename="../app/main_window.cpp" line="986"/>
         <source>continue to the next breakpoint</source>
         <translation>continue to the next breakpoint</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="969"/>
+        <location filename="../app/main_window.cpp" line="987"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>step by stage, triangle, scanline, span, pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="970"/>
+        <location filename="../app/main_window.cpp" line="988"/>
         <source>show a stage&apos;s view</source>
         <translation>show a stage&apos;s view</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="971"/>
+        <location filename="../app/main_window.cpp" line="989"/>
         <source>Click, arrows</source>
         <translation>Click, arrows</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="971"/>
+        <location filename="../app/main_window.cpp" line="989"/>
         <source>pick a pixel, move it by one</source>
         <translation>pick a pixel, move it by one</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="974"/>
+        <location filename="../app/main_window.cpp" line="992"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, double-click on a panel&apos;s title</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="975"/>
+        <location filename="../app/main_window.cpp" line="993"/>
         <source>fill the window with the panel (the image, from the image), and back</source>
         <translation>fill the window with the panel (the image, from the image), and back</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="977"/>
+        <location filename="../app/main_window.cpp" line="995"/>
         <source>open, export the image, export it as displayed</source>
         <translation>open, export the image, export it as displayed</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="980"/>
+        <location filename="../app/main_window.cpp" line="998"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>fit, actual size, zoom in, zoom out</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="982"/>
+        <location filename="../app/main_window.cpp" line="1000"/>
         <source>Keyboard Shortcuts</source>
         <translation>Keyboard Shortcuts</translation>
     </message>
@@ -3430,22 +3430,22 @@
         <translation>&amp;About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="263"/>
+        <location filename="../app/main_window.cpp" line="265"/>
         <source>Messages</source>
         <translation>Messages</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="268"/>
+        <location filename="../app/main_window.cpp" line="270"/>
         <source>Scene</source>
         <translation>Scene</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="288"/>
+        <location filename="../app/main_window.cpp" line="290"/>
         <source>Accuracy</source>
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="577"/>
+        <location filename="../app/main_window.cpp" line="595"/>
         <location filename="../app/main_window_export.cpp" line="35"/>
         <location filename="../app/main_window_export.cpp" line="133"/>
         <location filename="../app/main_window_export.cpp" line="175"/>
@@ -3464,18 +3464,18 @@
         <translation>Exported %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="630"/>
+        <location filename="../app/main_window.cpp" line="648"/>
         <source>rendering...</source>
         <translation>rendering...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="630"/>
+        <location filename="../app/main_window.cpp" line="648"/>
         <source>%1, rendering...</source>
         <translation>%1, rendering...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="628"/>
-        <location filename="../app/main_window.cpp" line="871"/>
+        <location filename="../app/main_window.cpp" line="646"/>
+        <location filename="../app/main_window.cpp" line="889"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -3535,198 +3535,198 @@
         <translation>&amp;Keyboard Shortcuts</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="359"/>
+        <location filename="../app/main_window.cpp" line="361"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="560"/>
+        <location filename="../app/main_window.cpp" line="578"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="638"/>
+        <location filename="../app/main_window.cpp" line="656"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparing the stepping of this frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="638"/>
+        <location filename="../app/main_window.cpp" line="656"/>
         <source>Rendering</source>
         <translation>Rendering</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="814"/>
+        <location filename="../app/main_window.cpp" line="832"/>
         <source>Error: %1</source>
         <translation>Error: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="838"/>
+        <location filename="../app/main_window.cpp" line="856"/>
         <source>Files</source>
         <translation>Files</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="841"/>
+        <location filename="../app/main_window.cpp" line="859"/>
         <source>Command file</source>
         <translation>Command file</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="842"/>
+        <location filename="../app/main_window.cpp" line="860"/>
         <source>Image</source>
         <translation>Image</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="844"/>
+        <location filename="../app/main_window.cpp" line="862"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="854"/>
+        <location filename="../app/main_window.cpp" line="872"/>
         <source>Camera</source>
         <translation>Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="855"/>
+        <location filename="../app/main_window.cpp" line="873"/>
         <source>Lighting</source>
         <translation>Lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="856"/>
+        <location filename="../app/main_window.cpp" line="874"/>
         <source>Object</source>
         <translation>Object</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="858"/>
+        <location filename="../app/main_window.cpp" line="876"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="248"/>
-        <location filename="../app/main_window.cpp" line="865"/>
+        <location filename="../app/main_window.cpp" line="250"/>
+        <location filename="../app/main_window.cpp" line="883"/>
         <source>Stages</source>
         <translation>Stages</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="99"/>
+        <location filename="../app/main_window.cpp" line="100"/>
         <source>%1 (the %2 example)</source>
         <translation>%1 (the %2 example)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="281"/>
+        <location filename="../app/main_window.cpp" line="283"/>
         <source>7 Pixel inspector</source>
         <translation>7 Pixel inspector</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="310"/>
+        <location filename="../app/main_window.cpp" line="312"/>
         <source>1 Camera</source>
         <translation>1 Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="313"/>
+        <location filename="../app/main_window.cpp" line="315"/>
         <source>5 Scan</source>
         <translation>5 Scan</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="316"/>
+        <location filename="../app/main_window.cpp" line="318"/>
         <source>2 View</source>
         <translation>2 View</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="324"/>
+        <location filename="../app/main_window.cpp" line="326"/>
         <source>4b Clipping</source>
         <translation>4b Clipping</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="326"/>
+        <location filename="../app/main_window.cpp" line="328"/>
         <source>4b Near-plane clipping (seed 002)</source>
         <translation>4b Near-plane clipping (seed 002)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="329"/>
+        <location filename="../app/main_window.cpp" line="331"/>
         <source>5b Trapezoids: the scan of seed 002</source>
         <translation>5b Trapezoids: the scan of seed 002</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="334"/>
+        <location filename="../app/main_window.cpp" line="336"/>
         <source>Painter</source>
         <translation>Painter</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="335"/>
+        <location filename="../app/main_window.cpp" line="337"/>
         <source>Painter&apos;s algorithm (seed 004)</source>
         <translation>Painter&apos;s algorithm (seed 004)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="836"/>
+        <location filename="../app/main_window.cpp" line="854"/>
         <source>Lesson: %1</source>
         <translation>Lesson: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="872"/>
+        <location filename="../app/main_window.cpp" line="890"/>
         <source>skipped: %1</source>
         <translation>skipped: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="875"/>
+        <location filename="../app/main_window.cpp" line="893"/>
         <source>Counts</source>
         <translation>Counts</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="876"/>
+        <location filename="../app/main_window.cpp" line="894"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="879"/>
+        <location filename="../app/main_window.cpp" line="897"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="882"/>
+        <location filename="../app/main_window.cpp" line="900"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="886"/>
+        <location filename="../app/main_window.cpp" line="904"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="910"/>
+        <location filename="../app/main_window.cpp" line="928"/>
         <source>empty (+inf)</source>
         <translation>empty (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="911"/>
+        <location filename="../app/main_window.cpp" line="929"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   depth %6</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="927"/>
+        <location filename="../app/main_window.cpp" line="945"/>
         <source>Open Command File</source>
         <translation>Open Command File</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="928"/>
+        <location filename="../app/main_window.cpp" line="946"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Command files (*.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="934"/>
+        <location filename="../app/main_window.cpp" line="952"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="934"/>
+        <location filename="../app/main_window.cpp" line="952"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="944"/>
+        <location filename="../app/main_window.cpp" line="962"/>
         <source>Export PNG</source>
         <translation>Export PNG</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="944"/>
+        <location filename="../app/main_window.cpp" line="962"/>
         <location filename="../app/main_window_actions.cpp" line="139"/>
         <location filename="../app/main_window_actions.cpp" line="146"/>
         <location filename="../app/main_window_export.cpp" line="198"/>
@@ -3735,12 +3735,12 @@
         <translation>PNG images (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="949"/>
+        <location filename="../app/main_window.cpp" line="967"/>
         <source>About RasterLab</source>
         <translation>About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="950"/>
+        <location filename="../app/main_window.cpp" line="968"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</translation>
     </message>
@@ -3871,12 +3871,12 @@
         <translation>%1 changed on disk: read again</translation>
     </message>
     <message>
-        <location filename="../app/main_window_docks.cpp" line="158"/>
+        <location filename="../app/main_window_docks.cpp" line="199"/>
         <source>%1 fills the window: F11 or a double-click on its title gives the layout back</source>
         <translation>%1 fills the window: F11 or a double-click on its title gives the layout back</translation>
     </message>
     <message>
-        <location filename="../app/main_window_docks.cpp" line="159"/>
+        <location filename="../app/main_window_docks.cpp" line="200"/>
         <source>The image</source>
         <translation>The image</translation>
     </message>
@@ -4616,52 +4616,52 @@
 <context>
     <name>rasterlab::PixelInspector</name>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="123"/>
+        <location filename="../views/pixel_inspector.cpp" line="128"/>
         <source>%1 = byte 255</source>
         <translation>%1 = byte 255</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="178"/>
+        <location filename="../views/pixel_inspector.cpp" line="217"/>
         <source>no normal</source>
         <translation>no normal</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="244"/>
+        <location filename="../views/pixel_inspector.cpp" line="283"/>
         <source>in the plane of N and L</source>
         <translation>in the plane of N and L</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="280"/>
+        <location filename="../views/pixel_inspector.cpp" line="318"/>
         <source>Step</source>
         <translation>Step</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="280"/>
+        <location filename="../views/pixel_inspector.cpp" line="318"/>
         <source>Triangle</source>
         <translation>Triangle</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="280"/>
+        <location filename="../views/pixel_inspector.cpp" line="318"/>
         <source>Depth test</source>
         <translation>Depth test</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="280"/>
+        <location filename="../views/pixel_inspector.cpp" line="319"/>
         <source>Before</source>
         <translation>Before</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="280"/>
+        <location filename="../views/pixel_inspector.cpp" line="319"/>
         <source>After</source>
         <translation>After</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="280"/>
+        <location filename="../views/pixel_inspector.cpp" line="319"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="292"/>
+        <location filename="../views/pixel_inspector.cpp" line="334"/>
         <source>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</source>
         <translation>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</translation>
     </message>
@@ -5031,98 +5031,103 @@
         <translation>Ke = %1: the material&apos;s own light</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="447"/>
+        <location filename="../views/pixel_inspector.cpp" line="489"/>
         <source>start</source>
         <translation>start</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="453"/>
-        <location filename="../views/pixel_inspector.cpp" line="595"/>
+        <location filename="../views/pixel_inspector.cpp" line="495"/>
+        <location filename="../views/pixel_inspector.cpp" line="696"/>
         <source>end</source>
         <translation>end</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="461"/>
+        <location filename="../views/pixel_inspector.cpp" line="503"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>holds the pixel at the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="462"/>
+        <location filename="../views/pixel_inspector.cpp" line="504"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>not reached yet by the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="477"/>
+        <location filename="../views/pixel_inspector.cpp" line="519"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="478"/>
+        <location filename="../views/pixel_inspector.cpp" line="520"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Without stepping, the colours of writes overwritten later are not kept.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="576"/>
+        <location filename="../views/pixel_inspector.cpp" line="637"/>
+        <source>Before: %1</source>
+        <translation>Before: %1</translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="677"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="579"/>
+        <location filename="../views/pixel_inspector.cpp" line="680"/>
         <source>The cleared pixel is not lit.</source>
         <translation>The cleared pixel is not lit.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="582"/>
+        <location filename="../views/pixel_inspector.cpp" line="683"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="594"/>
+        <location filename="../views/pixel_inspector.cpp" line="695"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Lighting of step %1, triangle %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="599"/>
+        <location filename="../views/pixel_inspector.cpp" line="700"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejected: this colour was never written)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="612"/>
+        <location filename="../views/pixel_inspector.cpp" line="713"/>
         <source>object colour</source>
         <translation>object colour</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="615"/>
+        <location filename="../views/pixel_inspector.cpp" line="716"/>
         <source>emission</source>
         <translation>emission</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="617"/>
+        <location filename="../views/pixel_inspector.cpp" line="718"/>
         <source>ambient</source>
         <translation>ambient</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="622"/>
+        <location filename="../views/pixel_inspector.cpp" line="723"/>
         <source>diffuse %1</source>
         <translation>diffuse %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="625"/>
+        <location filename="../views/pixel_inspector.cpp" line="726"/>
         <source>specular %1</source>
         <translation>specular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="629"/>
+        <location filename="../views/pixel_inspector.cpp" line="730"/>
         <source>diffuse</source>
         <translation>diffuse</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="631"/>
+        <location filename="../views/pixel_inspector.cpp" line="732"/>
         <source>specular</source>
         <translation>specular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="659"/>
+        <location filename="../views/pixel_inspector.cpp" line="760"/>
         <source>No special case: every term applies as written.</source>
         <translation>No special case: every term applies as written.</translation>
     </message>

@@ -1908,97 +1908,97 @@
 <context>
     <name>rasterlab::AccuracyPanel</name>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="41"/>
+        <location filename="../app/accuracy_panel.cpp" line="50"/>
         <source>&amp;Measure</source>
         <translation>&amp;Medir</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="44"/>
+        <location filename="../app/accuracy_panel.cpp" line="53"/>
         <source>Render the scene in every mode and compare each with an exact ray-cast reference</source>
         <translation>Renderiza a cena em cada modo e compara cada um com uma referência exata por lançamento de raios</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="46"/>
+        <location filename="../app/accuracy_panel.cpp" line="55"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="51"/>
+        <location filename="../app/accuracy_panel.cpp" line="60"/>
         <source>1 sample a pixel</source>
         <translation>1 amostra por pixel</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="52"/>
+        <location filename="../app/accuracy_panel.cpp" line="61"/>
         <source>also 2x2 samples</source>
         <translation>também 2x2 amostras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="53"/>
+        <location filename="../app/accuracy_panel.cpp" line="62"/>
         <source>also 4x4 samples</source>
         <translation>também 4x4 amostras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="58"/>
+        <location filename="../app/accuracy_panel.cpp" line="67"/>
         <source>Measures the error of each mode against an exact reference.</source>
         <translation>Mede o erro de cada modo contra uma referência exata.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="65"/>
+        <location filename="../app/accuracy_panel.cpp" line="74"/>
         <source>Mode</source>
         <translation>Modo</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="65"/>
+        <location filename="../app/accuracy_panel.cpp" line="74"/>
         <source>Rules</source>
         <translation>Regras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="65"/>
+        <location filename="../app/accuracy_panel.cpp" line="74"/>
         <source>Precision</source>
         <translation>Precisão</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="65"/>
+        <location filename="../app/accuracy_panel.cpp" line="74"/>
         <source>Samples</source>
         <translation>Amostras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="66"/>
+        <location filename="../app/accuracy_panel.cpp" line="75"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="66"/>
+        <location filename="../app/accuracy_panel.cpp" line="75"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="66"/>
+        <location filename="../app/accuracy_panel.cpp" line="75"/>
         <source>Max error</source>
         <translation>Erro máximo</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="66"/>
+        <location filename="../app/accuracy_panel.cpp" line="75"/>
         <source>Within 1/255</source>
         <translation>Dentro de 1/255</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="67"/>
+        <location filename="../app/accuracy_panel.cpp" line="76"/>
         <source>Errors in byte steps (1/255) over the pixels both images cover</source>
         <translation>Erros em passos de byte (1/255) nos pixels que as duas imagens cobrem</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="91"/>
+        <location filename="../app/accuracy_panel.cpp" line="100"/>
         <source>Click a pixel to compare the mode with the reference there</source>
         <translation>Clique num pixel para comparar ali o modo com a referência</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="124"/>
+        <location filename="../app/accuracy_panel.cpp" line="133"/>
         <source>The scene changed: measure again.</source>
         <translation>A cena mudou: meça de novo.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/accuracy_panel.cpp" line="146"/>
+        <location filename="../app/accuracy_panel.cpp" line="155"/>
         <source>Measuring %n mode(s) against the exact reference...</source>
         <translation>
             <numerusform>Medindo %n modo contra a referência exata...</numerusform>
@@ -2006,37 +2006,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="181"/>
+        <location filename="../app/accuracy_panel.cpp" line="190"/>
         <source>Cancelled.</source>
         <translation>Cancelado.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="182"/>
+        <location filename="../app/accuracy_panel.cpp" line="191"/>
         <source>The measurement failed: %1</source>
         <translation>A medição falhou: %1</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="188"/>
+        <location filename="../app/accuracy_panel.cpp" line="197"/>
         <source>%1 at %2x%3: %4 modes; the exact reference cast %5 rays in %6 ms.</source>
         <translation>%1 em %2x%3: %4 modos; a referência exata lançou %5 raios em %6 ms.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="215"/>
+        <location filename="../app/accuracy_panel.cpp" line="224"/>
         <source>Error against run time: %1, %2x%3</source>
         <translation>Erro contra tempo de execução: %1, %2x%3</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="262"/>
+        <location filename="../app/accuracy_panel.cpp" line="271"/>
         <source>%1 (%2): coverage differs on %3 pixels (%4); the largest error, %5 byte steps, is at (%6, %7). Click the map to compare a pixel.</source>
         <translation>%1 (%2): a cobertura difere em %3 pixels (%4); o maior erro, %5 passos de byte, está em (%6, %7). Clique no mapa para comparar um pixel.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="281"/>
+        <location filename="../app/accuracy_panel.cpp" line="290"/>
         <source>Pixel (%1, %2), %3: mode %4, reference %5, difference %6 (byte steps).</source>
         <translation>Pixel (%1, %2), %3: modo %4, referência %5, diferença %6 (passos de byte).</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="287"/>
+        <location filename="../app/accuracy_panel.cpp" line="296"/>
         <source>Coverage differs: %1 of %2 samples covered by the mode, %3 by the reference.</source>
         <translation>A cobertura difere: %1 de %2 amostras cobertas pelo modo, %3 pela referência.</translation>
     </message>
@@ -2252,37 +2252,37 @@
 <context>
     <name>rasterlab::CameraBasisCanvas</name>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="173"/>
+        <location filename="../views/camera_basis_view.cpp" line="153"/>
         <source>Drag to turn the scene, wheel to zoom, double-click to reset.</source>
         <translation>Arraste para girar a cena, use a roda para o zoom, clique duas vezes para restaurar.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="176"/>
+        <location filename="../views/camera_basis_view.cpp" line="156"/>
         <source>Reset view</source>
         <translation>Restaurar vista</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="177"/>
+        <location filename="../views/camera_basis_view.cpp" line="157"/>
         <source>Turn the 3D drawing back to where it started</source>
         <translation>Volta o desenho 3D à posição inicial</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="364"/>
+        <location filename="../views/camera_basis_view.cpp" line="390"/>
         <source>window (d = %1)</source>
         <translation>janela (d = %1)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="368"/>
+        <location filename="../views/camera_basis_view.cpp" line="394"/>
         <source>frustum</source>
         <translation>frustum</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="381"/>
+        <location filename="../views/camera_basis_view.cpp" line="407"/>
         <source>N given, |N| = %1</source>
         <translation>N dado, |N| = %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="384"/>
+        <location filename="../views/camera_basis_view.cpp" line="410"/>
         <source>V given, |V| = %1</source>
         <translation>V dado, |V| = %1</translation>
     </message>
@@ -2290,132 +2290,132 @@
 <context>
     <name>rasterlab::CameraBasisView</name>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="446"/>
+        <location filename="../views/camera_basis_view.cpp" line="472"/>
         <source>Previous step</source>
         <translation>Passo anterior</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="450"/>
+        <location filename="../views/camera_basis_view.cpp" line="476"/>
         <source>Next step</source>
         <translation>Próximo passo</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="561"/>
+        <location filename="../views/camera_basis_view.cpp" line="587"/>
         <source>The camera was rejected: %1</source>
         <translation>A câmera foi rejeitada: %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="564"/>
+        <location filename="../views/camera_basis_view.cpp" line="590"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="566"/>
+        <location filename="../views/camera_basis_view.cpp" line="592"/>
         <source>This stage is skipped: %1.</source>
         <translation>Esta etapa é omitida: %1.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="568"/>
+        <location filename="../views/camera_basis_view.cpp" line="594"/>
         <source>the frame has no camera basis</source>
         <translation>o quadro não tem base da câmera</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="575"/>
+        <location filename="../views/camera_basis_view.cpp" line="601"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; From the course camera (C, N, V) Gram-Schmidt makes the orthonormal basis U, V, N of view space. A scene whose draws carry their own model/view matrices (HW2 command files) has no course camera: this stage does nothing for it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Base da câmera.&lt;/b&gt; A partir da câmera do curso (C, N, V), Gram-Schmidt constrói a base ortonormal U, V, N do espaço de vista. Uma cena cujos desenhos trazem suas próprias matrizes de modelo/vista (arquivos de comandos HW2) não tem câmera do curso: esta etapa não faz nada para ela.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="588"/>
+        <location filename="../views/camera_basis_view.cpp" line="614"/>
         <source>N and V are nearly parallel: |V − (V·N) N| / |V| = %1, below %2. The basis is ill-conditioned: a tiny change of N or V turns U and V a lot. Choose a V further from N.</source>
         <translation>N e V são quase paralelos: |V − (V·N) N| / |V| = %1, abaixo de %2. A base é mal condicionada: uma mudança mínima de N ou V gira muito U e V. Escolha um V mais afastado de N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="593"/>
+        <location filename="../views/camera_basis_view.cpp" line="619"/>
         <source>1. N := N / |N| = %1 / %2 = %3</source>
         <translation>1. N := N / |N| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="595"/>
+        <location filename="../views/camera_basis_view.cpp" line="621"/>
         <source>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</source>
         <translation>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="597"/>
+        <location filename="../views/camera_basis_view.cpp" line="623"/>
         <source>3. V := V / |V| = %1 / %2 = %3</source>
         <translation>3. V := V / |V| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="599"/>
+        <location filename="../views/camera_basis_view.cpp" line="625"/>
         <source>4. U := N × V = %1 × %2 = %3</source>
         <translation>4. U := N × V = %1 × %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="601"/>
+        <location filename="../views/camera_basis_view.cpp" line="627"/>
         <source>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; largest %7</source>
         <translation>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; maior %7</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="608"/>
+        <location filename="../views/camera_basis_view.cpp" line="634"/>
         <source>N and V %1 degrees apart (under %2 degrees from the line of N, the residuals pass a float&apos;s precision)</source>
         <translation>N e V a %1 graus um do outro (a menos de %2 graus da reta de N, os resíduos passam a precisão de um float)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="630"/>
+        <location filename="../views/camera_basis_view.cpp" line="656"/>
         <source>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): rows U, V, N, then (0 0 0 1); the last column is −U·C, −V·C, −N·C.</source>
         <translation>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): linhas U, V, N e depois (0 0 0 1); a última coluna é −U·C, −V·C, −N·C.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="642"/>
+        <location filename="../views/camera_basis_view.cpp" line="668"/>
         <source>&lt;p&gt;Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vértice 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="645"/>
+        <location filename="../views/camera_basis_view.cpp" line="671"/>
         <source>, in front of the camera (z &gt; 0)</source>
         <translation>, à frente da câmera (z &gt; 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="646"/>
+        <location filename="../views/camera_basis_view.cpp" line="672"/>
         <source>, behind the camera (z ≤ 0)</source>
         <translation>, atrás da câmera (z ≤ 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="649"/>
+        <location filename="../views/camera_basis_view.cpp" line="675"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; Gram-Schmidt keeps the direction of N (where the camera looks), removes from V its part along N so that up is perpendicular to the view direction, and completes the frame with U = N × V, the image&apos;s right. viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Base da câmera.&lt;/b&gt; Gram-Schmidt mantém a direção de N (para onde a câmera olha), remove de V sua componente ao longo de N para que o &quot;para cima&quot; fique perpendicular à direção de visão, e completa o referencial com U = N × V, a direita da imagem. viewFromWorld = [U; V; N] (P − C) põe a câmera na origem olhando ao longo de +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="681"/>
+        <location filename="../views/camera_basis_view.cpp" line="707"/>
         <source>Step %1 of 4</source>
         <translation>Passo %1 de 4</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="695"/>
+        <location filename="../views/camera_basis_view.cpp" line="721"/>
         <source>Step forward to normalise N.</source>
         <translation>Avance um passo para normalizar N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="696"/>
+        <location filename="../views/camera_basis_view.cpp" line="722"/>
         <source>Step forward to remove from V its part along N.</source>
         <translation>Avance um passo para remover de V sua componente ao longo de N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="697"/>
+        <location filename="../views/camera_basis_view.cpp" line="723"/>
         <source>Step forward to normalise V.</source>
         <translation>Avance um passo para normalizar V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="698"/>
+        <location filename="../views/camera_basis_view.cpp" line="724"/>
         <source>Step forward to make U = N × V.</source>
         <translation>Avance um passo para obter U = N × V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="699"/>
+        <location filename="../views/camera_basis_view.cpp" line="725"/>
         <source>The basis is complete; the frustum is drawn with it.</source>
         <translation>A base está completa; o frustum é desenhado com ela.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="712"/>
+        <location filename="../views/camera_basis_view.cpp" line="738"/>
         <source>&lt;b&gt;Orthonormality residuals&lt;/b&gt; (0 up to rounding): %1</source>
         <translation>&lt;b&gt;Resíduos de ortonormalidade&lt;/b&gt; (0 a menos de arredondamento): %1</translation>
     </message>
@@ -2444,7 +2444,7 @@
     </message>
     <message>
         <location filename="../app/edit_panel.cpp" line="262"/>
-        <location filename="../app/edit_panel.cpp" line="698"/>
+        <location filename="../app/edit_panel.cpp" line="706"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
@@ -2634,202 +2634,202 @@
         <translation>Algoritmo do pintor (flat, sem teste de profundidade)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="366"/>
+        <location filename="../app/edit_panel.cpp" line="372"/>
         <source>Two-sided lighting</source>
         <translation>Iluminação dos dois lados</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="367"/>
+        <location filename="../app/edit_panel.cpp" line="373"/>
         <source>On (the course&apos;s rule): where V.N &lt; 0 the normal is turned round, so the back of a surface is lit like its front. Off: one-sided, the back keeps a normal pointing away</source>
         <translation>Ligada (a regra do curso): onde V.N &lt; 0 a normal é invertida, então o verso de uma superfície é iluminado como a frente. Desligada: um lado só, o verso mantém uma normal que aponta para longe</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="370"/>
+        <location filename="../app/edit_panel.cpp" line="376"/>
         <source>Blinn-Phong highlight</source>
         <translation>Brilho de Blinn-Phong</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="371"/>
+        <location filename="../app/edit_panel.cpp" line="377"/>
         <source>The highlight with the half vector H = (L + V)/|L + V| instead of Phong&apos;s reflection R: (N.H)^n instead of (R.V)^n</source>
         <translation>O brilho com o vetor médio H = (L + V)/|L + V| em vez da reflexão R de Phong: (N.H)^n em vez de (R.V)^n</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="435"/>
+        <location filename="../app/edit_panel.cpp" line="441"/>
         <source>Add light %1</source>
         <translation>adição da luz %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="442"/>
+        <location filename="../app/edit_panel.cpp" line="448"/>
         <source>Remove light %1</source>
         <translation>remoção da luz %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="467"/>
+        <location filename="../app/edit_panel.cpp" line="473"/>
         <source>&amp;Undo</source>
         <translation>&amp;Desfazer</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="470"/>
+        <location filename="../app/edit_panel.cpp" line="476"/>
         <source>&amp;Redo</source>
         <translation>&amp;Refazer</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="474"/>
+        <location filename="../app/edit_panel.cpp" line="480"/>
         <source>&amp;Save Camera and Lighting</source>
         <translation>&amp;Salvar câmera e iluminação</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="477"/>
+        <location filename="../app/edit_panel.cpp" line="483"/>
         <source>Write the edited camera and lighting to their files</source>
         <translation>Grava a câmera e a iluminação editadas nos seus arquivos</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="483"/>
+        <location filename="../app/edit_panel.cpp" line="489"/>
         <source>&amp;Camera...</source>
         <translation>&amp;Câmera...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="485"/>
+        <location filename="../app/edit_panel.cpp" line="491"/>
         <source>&amp;Lighting...</source>
         <translation>&amp;Iluminação...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="488"/>
+        <location filename="../app/edit_panel.cpp" line="494"/>
         <source>Save &amp;As</source>
         <translation>Sal&amp;var como</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="530"/>
+        <location filename="../app/edit_panel.cpp" line="536"/>
         <source>Light %1 of %2</source>
         <translation>Luz %1 de %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="611"/>
+        <location filename="../app/edit_panel.cpp" line="619"/>
         <source>Change %1</source>
         <translation>alteração de %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="680"/>
+        <location filename="../app/edit_panel.cpp" line="688"/>
         <source>A command file is shown: its scene is not edited here.</source>
         <translation>Um arquivo de comandos está aberto: sua cena não é editada aqui.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="686"/>
+        <location filename="../app/edit_panel.cpp" line="694"/>
         <source>%1 of the %2 example</source>
         <translation>%1 do exemplo %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="690"/>
+        <location filename="../app/edit_panel.cpp" line="698"/>
         <source>built-in scene</source>
         <translation>cena embutida</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="694"/>
+        <location filename="../app/edit_panel.cpp" line="702"/>
         <source>modified</source>
         <translation>modificada</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="700"/>
+        <location filename="../app/edit_panel.cpp" line="708"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="710"/>
+        <location filename="../app/edit_panel.cpp" line="718"/>
         <source>shading</source>
         <translation>sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="712"/>
+        <location filename="../app/edit_panel.cpp" line="720"/>
         <source>two-sided lighting</source>
         <translation>iluminação dos dois lados</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="714"/>
+        <location filename="../app/edit_panel.cpp" line="722"/>
         <source>the highlight&apos;s model</source>
         <translation>modelo do brilho</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="716"/>
+        <location filename="../app/edit_panel.cpp" line="724"/>
         <source>directional</source>
         <translation>direcional</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="719"/>
+        <location filename="../app/edit_panel.cpp" line="727"/>
         <source>spot cutoff</source>
         <translation>corte do spot</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="722"/>
+        <location filename="../app/edit_panel.cpp" line="730"/>
         <source>spot exponent</source>
         <translation>expoente do spot</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="725"/>
+        <location filename="../app/edit_panel.cpp" line="733"/>
         <source>spot direction</source>
         <translation>direção do spot</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="728"/>
+        <location filename="../app/edit_panel.cpp" line="736"/>
         <source>attenuation</source>
         <translation>atenuação</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="738"/>
+        <location filename="../app/edit_panel.cpp" line="746"/>
         <source>%1 of light %2</source>
         <translation>%1 da luz %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="747"/>
+        <location filename="../app/edit_panel.cpp" line="755"/>
         <source>The camera was not saved.</source>
         <translation>A câmera não foi salva.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="747"/>
+        <location filename="../app/edit_panel.cpp" line="755"/>
         <source>The lighting was not saved.</source>
         <translation>A iluminação não foi salva.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="820"/>
+        <location filename="../app/edit_panel.cpp" line="828"/>
         <source>the %1 example</source>
         <translation>o exemplo %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="825"/>
+        <location filename="../app/edit_panel.cpp" line="833"/>
         <source>The camera has changes that are not saved (%1).</source>
         <translation>A câmera tem alterações não salvas (%1).</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="826"/>
+        <location filename="../app/edit_panel.cpp" line="834"/>
         <source>The lighting has changes that are not saved (%1).</source>
         <translation>A iluminação tem alterações não salvas (%1).</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="746"/>
+        <location filename="../app/edit_panel.cpp" line="754"/>
         <source>Save</source>
         <translation>Salvar</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="802"/>
+        <location filename="../app/edit_panel.cpp" line="810"/>
         <source>Save Camera As</source>
         <translation>Salvar câmera como</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="802"/>
+        <location filename="../app/edit_panel.cpp" line="810"/>
         <source>Save Lighting As</source>
         <translation>Salvar iluminação como</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="822"/>
+        <location filename="../app/edit_panel.cpp" line="830"/>
         <source>the built-in scene</source>
         <translation>a cena embutida</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="824"/>
+        <location filename="../app/edit_panel.cpp" line="832"/>
         <source>Unsaved changes</source>
         <translation>Alterações não salvas</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="831"/>
+        <location filename="../app/edit_panel.cpp" line="839"/>
         <source>Save them?</source>
         <translation>Salvá-las?</translation>
     </message>
@@ -2876,32 +2876,32 @@
 <context>
     <name>rasterlab::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="61"/>
+        <location filename="../app/main_window.cpp" line="62"/>
         <source>Open Camera</source>
         <translation>Abrir câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="63"/>
+        <location filename="../app/main_window.cpp" line="64"/>
         <source>Open Lighting</source>
         <translation>Abrir iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="65"/>
+        <location filename="../app/main_window.cpp" line="66"/>
         <source>Open Object</source>
         <translation>Abrir objeto</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="73"/>
+        <location filename="../app/main_window.cpp" line="74"/>
         <source>Camera files (*.cfg *.txt);;All files (*)</source>
         <translation>Arquivos de câmera (*.cfg *.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="75"/>
+        <location filename="../app/main_window.cpp" line="76"/>
         <source>Lighting files (*.txt *.lux);;All files (*)</source>
         <translation>Arquivos de iluminação (*.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="77"/>
+        <location filename="../app/main_window.cpp" line="78"/>
         <source>Objects (*.byu *.txt);;All files (*)</source>
         <translation>Objetos (*.byu *.txt);;Todos os arquivos (*)</translation>
     </message>
@@ -2911,116 +2911,116 @@
         <translation>Detectar pelo arquivo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="86"/>
+        <location filename="../app/main_window.cpp" line="87"/>
         <source>flat</source>
         <translation>flat</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="88"/>
+        <location filename="../app/main_window.cpp" line="89"/>
         <location filename="../app/main_window_export.cpp" line="70"/>
         <source>Gouraud</source>
         <translation>Gouraud</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="90"/>
+        <location filename="../app/main_window.cpp" line="91"/>
         <location filename="../app/main_window_export.cpp" line="70"/>
         <source>Phong</source>
         <translation>Phong</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="92"/>
+        <location filename="../app/main_window.cpp" line="93"/>
         <source>painter&apos;s-algorithm flat</source>
         <translation>flat do algoritmo do pintor</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="101"/>
+        <location filename="../app/main_window.cpp" line="102"/>
         <source>%1 (built in)</source>
         <translation>%1 (embutido)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="109"/>
+        <location filename="../app/main_window.cpp" line="110"/>
         <source>RasterLab</source>
         <translation>RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="165"/>
+        <location filename="../app/main_window.cpp" line="166"/>
         <source>Stopped at a breakpoint: %1</source>
         <translation>Parado num ponto de parada: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="198"/>
+        <location filename="../app/main_window.cpp" line="199"/>
         <location filename="../app/main_window_export.cpp" line="122"/>
         <location filename="../app/main_window_export.cpp" line="159"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="199"/>
+        <location filename="../app/main_window.cpp" line="200"/>
         <source>Stop preparing the stepping of this frame</source>
         <translation>Parar a preparação do passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="203"/>
+        <location filename="../app/main_window.cpp" line="204"/>
         <source>cancelled</source>
         <translation>cancelado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="254"/>
+        <location filename="../app/main_window.cpp" line="256"/>
         <source>Stepping</source>
         <translation>Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="278"/>
+        <location filename="../app/main_window.cpp" line="280"/>
         <source>Edit</source>
         <translation>Edição</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="285"/>
+        <location filename="../app/main_window.cpp" line="287"/>
         <source>Breakpoints</source>
         <translation>Pontos de parada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="291"/>
+        <location filename="../app/main_window.cpp" line="293"/>
         <source>Animation</source>
         <translation>Animação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="310"/>
+        <location filename="../app/main_window.cpp" line="312"/>
         <source>1 Camera basis</source>
         <translation>1 Base da câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="282"/>
+        <location filename="../app/main_window.cpp" line="284"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Inspetor de pixel (iluminação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="317"/>
+        <location filename="../app/main_window.cpp" line="319"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 Coordenadas de vista (vértices)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="319"/>
+        <location filename="../app/main_window.cpp" line="321"/>
         <source>3 Normals</source>
         <translation>3 Normais</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="321"/>
+        <location filename="../app/main_window.cpp" line="323"/>
         <source>4 Projection</source>
         <translation>4 Projeção</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="313"/>
+        <location filename="../app/main_window.cpp" line="315"/>
         <source>5 Scan conversion</source>
         <translation>5 Conversão por varredura</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="327"/>
+        <location filename="../app/main_window.cpp" line="329"/>
         <source>5b Trapezoids</source>
         <translation>5b Trapézios</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="331"/>
+        <location filename="../app/main_window.cpp" line="333"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
     </message>
@@ -3040,32 +3040,32 @@
         <translation>&amp;Algoritmo do pintor (flat, do mais distante ao mais próximo, sem teste de profundidade)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="964"/>
+        <location filename="../app/main_window.cpp" line="982"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>avançar, voltar um passo (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="966"/>
+        <location filename="../app/main_window.cpp" line="984"/>
         <source>Space</source>
         <translation>Barra de espaço</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="966"/>
+        <location filename="../app/main_window.cpp" line="984"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>reproduzir / pausar (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="972"/>
+        <location filename="../app/main_window.cpp" line="990"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>soltar o pixel escolhido (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="973"/>
+        <location filename="../app/main_window.cpp" line="991"/>
         <source>presentation mode on / off</source>
         <translation>ligar / desligar o modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="978"/>
+        <location filename="../app/main_window.cpp" line="996"/>
         <source>save, undo, redo</source>
         <translation>salvar, desfazer, refazer</translation>
     </message>
@@ -3075,7 +3075,7 @@
         <translation>Abrir &amp;câmera...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="130"/>
+        <location filename="../app/main_window.cpp" line="131"/>
         <source>Draw with the Plain Divide</source>
         <translation>Desenhar com a divisão simples</translation>
     </message>
@@ -3320,82 +3320,82 @@
         <translation>&amp;Mesmo lado (recortar só os triângulos que cruzam o plano do olho)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="603"/>
+        <location filename="../app/main_window.cpp" line="621"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Todos os triângulos estão atrás da câmera (N aponta para longe do objeto?), então o recorte no plano próximo não deixa nada para desenhar. A fórmula da seed 000 divide por z mesmo assim: desenharia %1 dos %2 triângulos como a reflexão do objeto pelo olho, girada meia volta na tela, e o z-buffer (que guarda o menor z) guardaria o lado mais distante da câmera. A vista lateral da projeção mostra o olho, N e o objeto.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="908"/>
+        <location filename="../app/main_window.cpp" line="926"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="961"/>
+        <location filename="../app/main_window.cpp" line="979"/>
         <source>step forward</source>
         <translation>avançar um passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="962"/>
+        <location filename="../app/main_window.cpp" line="980"/>
         <source>step back</source>
         <translation>voltar um passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="965"/>
+        <location filename="../app/main_window.cpp" line="983"/>
         <source>play / pause</source>
         <translation>reproduzir / pausar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="967"/>
+        <location filename="../app/main_window.cpp" line="985"/>
         <source>jump to the start / the end of the frame</source>
         <translation>ir ao início / ao fim do quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="968"/>
+        <location filename="../app/main_window.cpp" line="986"/>
         <source>continue to the next breakpoint</source>
         <translation>continuar até o próximo ponto de parada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="969"/>
+        <location filename="../app/main_window.cpp" line="987"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>avançar por etapa, triângulo, linha de varredura, segmento, pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="970"/>
+        <location filename="../app/main_window.cpp" line="988"/>
         <source>show a stage&apos;s view</source>
         <translation>mostrar o painel de uma etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="971"/>
+        <location filename="../app/main_window.cpp" line="989"/>
         <source>Click, arrows</source>
         <translation>Clique, setas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="971"/>
+        <location filename="../app/main_window.cpp" line="989"/>
         <source>pick a pixel, move it by one</source>
         <translation>escolher um pixel, movê-lo de um em um</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="974"/>
+        <location filename="../app/main_window.cpp" line="992"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, duplo clique no título de um painel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="975"/>
+        <location filename="../app/main_window.cpp" line="993"/>
         <source>fill the window with the panel (the image, from the image), and back</source>
         <translation>preencher a janela com o painel (a imagem, a partir da imagem), e voltar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="977"/>
+        <location filename="../app/main_window.cpp" line="995"/>
         <source>open, export the image, export it as displayed</source>
         <translation>abrir, exportar a imagem, exportá-la como exibida</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="980"/>
+        <location filename="../app/main_window.cpp" line="998"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>ajustar, tamanho real, aumentar zoom, diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="982"/>
+        <location filename="../app/main_window.cpp" line="1000"/>
         <source>Keyboard Shortcuts</source>
         <translation>Atalhos de teclado</translation>
     </message>
@@ -3430,22 +3430,22 @@
         <translation>&amp;Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="263"/>
+        <location filename="../app/main_window.cpp" line="265"/>
         <source>Messages</source>
         <translation>Mensagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="268"/>
+        <location filename="../app/main_window.cpp" line="270"/>
         <source>Scene</source>
         <translation>Cena</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="288"/>
+        <location filename="../app/main_window.cpp" line="290"/>
         <source>Accuracy</source>
         <translation>Exatidão</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="577"/>
+        <location filename="../app/main_window.cpp" line="595"/>
         <location filename="../app/main_window_export.cpp" line="35"/>
         <location filename="../app/main_window_export.cpp" line="133"/>
         <location filename="../app/main_window_export.cpp" line="175"/>
@@ -3464,18 +3464,18 @@
         <translation>Exportado %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="630"/>
+        <location filename="../app/main_window.cpp" line="648"/>
         <source>rendering...</source>
         <translation>renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="630"/>
+        <location filename="../app/main_window.cpp" line="648"/>
         <source>%1, rendering...</source>
         <translation>%1, renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="628"/>
-        <location filename="../app/main_window.cpp" line="871"/>
+        <location filename="../app/main_window.cpp" line="646"/>
+        <location filename="../app/main_window.cpp" line="889"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -3535,198 +3535,198 @@
         <translation>&amp;Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="359"/>
+        <location filename="../app/main_window.cpp" line="361"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Modo de apresentação: F5 ou Esc para sair; Page Down, seta para a direita e barra de espaço avançam e reproduzem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="560"/>
+        <location filename="../app/main_window.cpp" line="578"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="638"/>
+        <location filename="../app/main_window.cpp" line="656"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparando o passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="638"/>
+        <location filename="../app/main_window.cpp" line="656"/>
         <source>Rendering</source>
         <translation>Renderizando</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="814"/>
+        <location filename="../app/main_window.cpp" line="832"/>
         <source>Error: %1</source>
         <translation>Erro: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="838"/>
+        <location filename="../app/main_window.cpp" line="856"/>
         <source>Files</source>
         <translation>Arquivos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="841"/>
+        <location filename="../app/main_window.cpp" line="859"/>
         <source>Command file</source>
         <translation>Arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="842"/>
+        <location filename="../app/main_window.cpp" line="860"/>
         <source>Image</source>
         <translation>Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="844"/>
+        <location filename="../app/main_window.cpp" line="862"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vértices, %2 triângulos em %3 desenhos; %4 x %5 pixels; %6 luzes</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="854"/>
+        <location filename="../app/main_window.cpp" line="872"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="855"/>
+        <location filename="../app/main_window.cpp" line="873"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="856"/>
+        <location filename="../app/main_window.cpp" line="874"/>
         <source>Object</source>
         <translation>Objeto</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="858"/>
+        <location filename="../app/main_window.cpp" line="876"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vértices, %2 triângulos; %3 x %4 pixels, sombreamento %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="248"/>
-        <location filename="../app/main_window.cpp" line="865"/>
+        <location filename="../app/main_window.cpp" line="250"/>
+        <location filename="../app/main_window.cpp" line="883"/>
         <source>Stages</source>
         <translation>Etapas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="99"/>
+        <location filename="../app/main_window.cpp" line="100"/>
         <source>%1 (the %2 example)</source>
         <translation>%1 (o exemplo %2)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="281"/>
+        <location filename="../app/main_window.cpp" line="283"/>
         <source>7 Pixel inspector</source>
         <translation>7 Inspetor de pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="310"/>
+        <location filename="../app/main_window.cpp" line="312"/>
         <source>1 Camera</source>
         <translation>1 Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="313"/>
+        <location filename="../app/main_window.cpp" line="315"/>
         <source>5 Scan</source>
         <translation>5 Varredura</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="316"/>
+        <location filename="../app/main_window.cpp" line="318"/>
         <source>2 View</source>
         <translation>2 Vista</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="324"/>
+        <location filename="../app/main_window.cpp" line="326"/>
         <source>4b Clipping</source>
         <translation>4b Recorte</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="326"/>
+        <location filename="../app/main_window.cpp" line="328"/>
         <source>4b Near-plane clipping (seed 002)</source>
         <translation>4b Recorte no plano próximo (semente 002)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="329"/>
+        <location filename="../app/main_window.cpp" line="331"/>
         <source>5b Trapezoids: the scan of seed 002</source>
         <translation>5b Trapézios: a varredura da semente 002</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="334"/>
+        <location filename="../app/main_window.cpp" line="336"/>
         <source>Painter</source>
         <translation>Pintor</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="335"/>
+        <location filename="../app/main_window.cpp" line="337"/>
         <source>Painter&apos;s algorithm (seed 004)</source>
         <translation>Algoritmo do pintor (semente 004)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="836"/>
+        <location filename="../app/main_window.cpp" line="854"/>
         <source>Lesson: %1</source>
         <translation>Aula: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="872"/>
+        <location filename="../app/main_window.cpp" line="890"/>
         <source>skipped: %1</source>
         <translation>omitida: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="875"/>
+        <location filename="../app/main_window.cpp" line="893"/>
         <source>Counts</source>
         <translation>Contagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="876"/>
+        <location filename="../app/main_window.cpp" line="894"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triângulos recortados no plano próximo: %1; atrás da câmera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="879"/>
+        <location filename="../app/main_window.cpp" line="897"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Triângulos de área zero: %1 no espaço de vista, %2 na tela&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="882"/>
+        <location filename="../app/main_window.cpp" line="900"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragmentos testados: %1; escritos: %2; rejeitados: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="886"/>
+        <location filename="../app/main_window.cpp" line="904"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels sombreados: %1; normais voltadas para o observador: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; limitados a 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="910"/>
+        <location filename="../app/main_window.cpp" line="928"/>
         <source>empty (+inf)</source>
         <translation>vazio (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="911"/>
+        <location filename="../app/main_window.cpp" line="929"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   profundidade %6</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="927"/>
+        <location filename="../app/main_window.cpp" line="945"/>
         <source>Open Command File</source>
         <translation>Abrir arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="928"/>
+        <location filename="../app/main_window.cpp" line="946"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Arquivos de comandos (*.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="934"/>
+        <location filename="../app/main_window.cpp" line="952"/>
         <source>Open</source>
         <translation>Abrir</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="934"/>
+        <location filename="../app/main_window.cpp" line="952"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Arquivos de cena (*.byu *.cfg *.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="944"/>
+        <location filename="../app/main_window.cpp" line="962"/>
         <source>Export PNG</source>
         <translation>Exportar PNG</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="944"/>
+        <location filename="../app/main_window.cpp" line="962"/>
         <location filename="../app/main_window_actions.cpp" line="139"/>
         <location filename="../app/main_window_actions.cpp" line="146"/>
         <location filename="../app/main_window_export.cpp" line="198"/>
@@ -3735,12 +3735,12 @@
         <translation>Imagens PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="949"/>
+        <location filename="../app/main_window.cpp" line="967"/>
         <source>About RasterLab</source>
         <translation>Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="950"/>
+        <location filename="../app/main_window.cpp" line="968"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;O pipeline clássico de rasterização por software, etapa por etapa: base da câmera, coordenadas de vista, normais, projeção, conversão por varredura, teste de profundidade e sombreamento.&lt;/p&gt;</translation>
     </message>
@@ -3871,12 +3871,12 @@
         <translation>%1 mudou no disco: lido de novo</translation>
     </message>
     <message>
-        <location filename="../app/main_window_docks.cpp" line="158"/>
+        <location filename="../app/main_window_docks.cpp" line="199"/>
         <source>%1 fills the window: F11 or a double-click on its title gives the layout back</source>
         <translation>%1 preenche a janela: F11 ou um duplo clique no seu título devolve o layout</translation>
     </message>
     <message>
-        <location filename="../app/main_window_docks.cpp" line="159"/>
+        <location filename="../app/main_window_docks.cpp" line="200"/>
         <source>The image</source>
         <translation>A imagem</translation>
     </message>
@@ -4616,52 +4616,52 @@
 <context>
     <name>rasterlab::PixelInspector</name>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="123"/>
+        <location filename="../views/pixel_inspector.cpp" line="128"/>
         <source>%1 = byte 255</source>
         <translation>%1 = byte 255</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="178"/>
+        <location filename="../views/pixel_inspector.cpp" line="217"/>
         <source>no normal</source>
         <translation>sem normal</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="244"/>
+        <location filename="../views/pixel_inspector.cpp" line="283"/>
         <source>in the plane of N and L</source>
         <translation>no plano de N e L</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="280"/>
+        <location filename="../views/pixel_inspector.cpp" line="318"/>
         <source>Step</source>
         <translation>Passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="280"/>
+        <location filename="../views/pixel_inspector.cpp" line="318"/>
         <source>Triangle</source>
         <translation>Triângulo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="280"/>
+        <location filename="../views/pixel_inspector.cpp" line="318"/>
         <source>Depth test</source>
         <translation>Teste de profundidade</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="280"/>
+        <location filename="../views/pixel_inspector.cpp" line="319"/>
         <source>Before</source>
         <translation>Antes</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="280"/>
+        <location filename="../views/pixel_inspector.cpp" line="319"/>
         <source>After</source>
         <translation>Depois</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="280"/>
+        <location filename="../views/pixel_inspector.cpp" line="319"/>
         <source>Result</source>
         <translation>Resultado</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="292"/>
+        <location filename="../views/pixel_inspector.cpp" line="334"/>
         <source>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</source>
         <translation>▶ ocupa o pixel no cursor de passo; as linhas cinza ainda não foram alcançadas. Selecione uma linha para ver sua iluminação.</translation>
     </message>
@@ -5031,98 +5031,103 @@
         <translation>Ke = %1: a luz própria do material</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="447"/>
+        <location filename="../views/pixel_inspector.cpp" line="489"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="453"/>
-        <location filename="../views/pixel_inspector.cpp" line="595"/>
+        <location filename="../views/pixel_inspector.cpp" line="495"/>
+        <location filename="../views/pixel_inspector.cpp" line="696"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="461"/>
+        <location filename="../views/pixel_inspector.cpp" line="503"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>ocupa o pixel no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="462"/>
+        <location filename="../views/pixel_inspector.cpp" line="504"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>ainda não alcançado pelo cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="477"/>
+        <location filename="../views/pixel_inspector.cpp" line="519"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="478"/>
+        <location filename="../views/pixel_inspector.cpp" line="520"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Sem o passo a passo, as cores das escritas sobrescritas depois não são guardadas.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="576"/>
+        <location filename="../views/pixel_inspector.cpp" line="637"/>
+        <source>Before: %1</source>
+        <translation>Antes: %1</translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="677"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Sem o passo a passo, só a iluminação do fragmento que ocupa o pixel no fim é registrada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="579"/>
+        <location filename="../views/pixel_inspector.cpp" line="680"/>
         <source>The cleared pixel is not lit.</source>
         <translation>O pixel limpo não é iluminado.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="582"/>
+        <location filename="../views/pixel_inspector.cpp" line="683"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>Nenhum fragmento ocupa o pixel no cursor: selecione uma linha do histórico para ver sua iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="594"/>
+        <location filename="../views/pixel_inspector.cpp" line="695"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Iluminação do passo %1, triângulo %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="599"/>
+        <location filename="../views/pixel_inspector.cpp" line="700"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejeitado: esta cor nunca foi escrita)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="612"/>
+        <location filename="../views/pixel_inspector.cpp" line="713"/>
         <source>object colour</source>
         <translation>cor do objeto</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="615"/>
+        <location filename="../views/pixel_inspector.cpp" line="716"/>
         <source>emission</source>
         <translation>emissão</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="617"/>
+        <location filename="../views/pixel_inspector.cpp" line="718"/>
         <source>ambient</source>
         <translation>ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="622"/>
+        <location filename="../views/pixel_inspector.cpp" line="723"/>
         <source>diffuse %1</source>
         <translation>difusa %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="625"/>
+        <location filename="../views/pixel_inspector.cpp" line="726"/>
         <source>specular %1</source>
         <translation>especular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="629"/>
+        <location filename="../views/pixel_inspector.cpp" line="730"/>
         <source>diffuse</source>
         <translation>difusa</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="631"/>
+        <location filename="../views/pixel_inspector.cpp" line="732"/>
         <source>specular</source>
         <translation>especular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="659"/>
+        <location filename="../views/pixel_inspector.cpp" line="760"/>
         <source>No special case: every term applies as written.</source>
         <translation>Nenhum caso especial: todos os termos valem como escritos.</translation>
     </message>

@@ -144,26 +144,6 @@ void drawArrow(QPainter& painter, const QPointF& from, const QPointF& to, const 
     painter.drawLine(to, to - head * u - 0.45 * head * side);
 }
 
-// A label beside a point, pushed away from where the arrow came from.
-void drawLabel(QPainter& painter, const QPointF& at, const QPointF& awayFrom, const QString& text,
-               const QColor& colour) {
-    QPointF d = at - awayFrom;
-    const double length = std::hypot(d.x(), d.y());
-    d = length > 0.0 ? d / length : QPointF(1.0, 0.0);
-    const QFontMetricsF metrics(painter.font());
-    const QSizeF size = metrics.size(0, text);
-    // The label's centre, beyond the tip in the arrow's direction.
-    const QPointF centre = at + d * (6.0 + 0.5 * std::hypot(size.width(), size.height()) * 0.8);
-    const QRectF box(centre - QPointF(size.width() / 2, size.height() / 2), size);
-    // A dark backing keeps the label readable over the point cloud and the lines.
-    painter.setPen(Qt::NoPen);
-    painter.setBrush(QColor(kBackground.red(), kBackground.green(), kBackground.blue(), 170));
-    painter.drawRoundedRect(box.adjusted(-3, -1, 3, 1), 3, 3);
-    painter.setBrush(Qt::NoBrush);
-    painter.setPen(colour);
-    painter.drawText(box, Qt::AlignCenter, text);
-}
-
 }  // namespace
 
 CameraBasisCanvas::CameraBasisCanvas(QWidget* parent) : QWidget(parent) {
@@ -269,11 +249,57 @@ QPointF CameraBasisCanvas::toWidget(const dvec3& pWorld) const {
     return projector()(pWorld);
 }
 
+void CameraBasisCanvas::placeLabel(QPainter& painter, const QPointF& at, const QPointF& awayFrom,
+                                   const QString& text, const QColor& colour) {
+    QPointF d = at - awayFrom;
+    const double length = std::hypot(d.x(), d.y());
+    d = length > 0.0 ? d / length : QPointF(1.0, 0.0);
+    const QFontMetricsF metrics(painter.font());
+    const QSizeF size = metrics.size(0, text);
+    // The label's centre, beyond the tip in the arrow's direction.
+    const QPointF centre = at + d * (6.0 + 0.5 * std::hypot(size.width(), size.height()) * 0.8);
+    const double w = size.width() + 6.0, h = size.height() + 2.0;  // with its backing
+    QRectF box(centre - QPointF(w / 2, h / 2), QSizeF(w, h));
+    box = freePlace(box, rect(),
+                    {QPointF(0, 0), QPointF(0, -h), QPointF(0, h), QPointF(w / 2 + 4, 0),
+                     QPointF(-w / 2 - 4, 0), QPointF(w, -h), QPointF(-w, -h), QPointF(w, h),
+                     QPointF(-w, h), QPointF(0, -2 * h), QPointF(0, 2 * h)});
+    // Inside the picture; still on another label (or the button), the nearest free place
+    // along the rows below and above.
+    box.moveLeft(std::clamp(box.left(), 0.0, std::max(0.0, width() - box.width())));
+    box.moveTop(std::clamp(box.top(), 0.0, std::max(0.0, height() - box.height())));
+    for (int k = 1; k < 40 && !isFree(box, rect()); ++k) {
+        const double dy = (k / 2) * h / 2 * (k % 2 ? 1.0 : -1.0);
+        bool found = false;
+        for (const double dx : {0.0, -w / 2, w / 2, -w, w, -1.5 * w, 1.5 * w}) {
+            QRectF moved = box.translated(dx, dy);
+            moved.moveLeft(std::clamp(moved.left(), 0.0, std::max(0.0, width() - w)));
+            if (isFree(moved, rect())) {
+                box = moved;
+                found = true;
+                break;
+            }
+        }
+        if (found) break;
+    }
+    // A dark backing keeps the label readable over the point cloud and the lines.
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(kBackground.red(), kBackground.green(), kBackground.blue(), 170));
+    painter.drawRoundedRect(box, 3, 3);
+    painter.setBrush(Qt::NoBrush);
+    painter.setPen(colour);
+    painter.drawText(box, Qt::AlignCenter, text);
+    recordLabel(box);
+}
+
 void CameraBasisCanvas::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     painter.fillRect(rect(), kBackground);
     painter.setRenderHint(QPainter::Antialiasing, true);
     m_drawn.clear();
+    clearLabels();
+    // The button's place is taken: no label under it.
+    if (m_reset->isVisible()) recordLabel(QRectF(m_reset->geometry()).adjusted(-2, -2, 2, 2));
     if (!m_message.isEmpty() || !m_picture.valid) {
         painter.setPen(kText);
         painter.drawText(rect().adjusted(16, 16, -16, -16), Qt::AlignCenter | Qt::TextWordWrap,
@@ -322,7 +348,7 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
             to = from + (longest > 0.0 ? tripod[k] * (28.0 / longest) : QPointF());
         }
         drawArrow(painter, from, to, axisColours[k], std::max(1.0, w - 0.5));
-        drawLabel(painter, to, from, axisNames[k], axisColours[k]);
+        placeLabel(painter, to, from, axisNames[k], axisColours[k]);
     }
     m_drawn << QStringLiteral("axes");
 
@@ -361,11 +387,11 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
         const QRectF windowBox = window.boundingRect();
         if (std::max(windowBox.width(), windowBox.height()) > 24.0) {
             const QPointF top = topmost(window);
-            drawLabel(painter, top, top + QPointF(0, 1), tr("window (d = %1)").arg(number(pic.d)),
-                      kFrustum);
+            placeLabel(painter, top, top + QPointF(0, 1), tr("window (d = %1)").arg(number(pic.d)),
+                       kFrustum);
         }
         const QPointF farTop = topmost(far);
-        drawLabel(painter, farTop, farTop + QPointF(0, 1), tr("frustum"), faint.lighter(150));
+        placeLabel(painter, farTop, farTop + QPointF(0, 1), tr("frustum"), faint.lighter(150));
     }
 
     // The vectors, from C; the given ones dashed (their scale: CameraBasisPicture).
@@ -373,7 +399,7 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
                      Qt::PenStyle style, const QString& item) {
         const QPointF tip = project(b.c + scale * v);
         drawArrow(painter, c, tip, colour, style == Qt::SolidLine ? w + 1.0 : w, style);
-        drawLabel(painter, tip, c, label, colour);
+        placeLabel(painter, tip, c, label, colour);
         m_drawn << item;
     };
     const double sn = pic.nGivenScale, sv = pic.vGivenScale;
@@ -404,7 +430,7 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
     painter.setPen(QPen(Qt::black, 1.0));
     painter.setBrush(kText);
     painter.drawEllipse(c, 3.0 + w, 3.0 + w);
-    drawLabel(painter, c, c + QPointF(1, -1), QStringLiteral("C"), kText);
+    placeLabel(painter, c, c + QPointF(1, -1), QStringLiteral("C"), kText);
     m_drawn << QStringLiteral("C");
 }
 

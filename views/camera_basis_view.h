@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "camera_basis.h"
+#include "painted_labels.h"
 
 class QLabel;
 class QSlider;
@@ -46,8 +47,8 @@ struct CameraBasisPicture {
 };
 
 // The world-space drawing with an orbit camera: drag to turn, wheel to zoom, double-click
-// to reset.
-class CameraBasisCanvas : public QWidget {
+// to reset. Its labels keep off one another and off the Reset view button.
+class CameraBasisCanvas : public QWidget, public PaintedLabels {
     Q_OBJECT
 public:
     explicit CameraBasisCanvas(QWidget* parent = nullptr);
@@ -98,6 +99,10 @@ private:
         QPointF operator()(const rl::dvec3& pWorld) const;
     };
     Projector projector() const;
+    // A label beside a point, pushed away from where the arrow came from, and moved to a
+    // free place nearby when the labels drawn before (or the button) are there.
+    void placeLabel(QPainter& painter, const QPointF& at, const QPointF& awayFrom,
+                    const QString& text, const QColor& colour);
 
     CameraBasisPicture m_picture;
     QToolButton* m_reset = nullptr;

@@ -47,7 +47,9 @@ QPixmap swatch(const std::array<std::uint8_t, 4>& b, int size) {
 
 // Three stacked bars, one per channel: the terms side by side from 0, the colour scale (the
 // value that becomes byte 255) marked by a line, the total written at the bar's end.
-class TermBars : public QWidget {
+// The legend's names wrap onto more lines when the bars are narrow (beside the vectors in a
+// narrow dock), the bars' height growing with them.
+class TermBars : public QWidget, public PaintedLabels {
 public:
     struct Segment {
         QString name;
@@ -56,7 +58,7 @@ public:
     };
 
     explicit TermBars(QWidget* parent) : QWidget(parent) {
-        setMinimumSize(220, 120);
+        setMinimumSize(140, 120);
         setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     }
     void setBars(std::vector<Segment> segments, rl::vec3 total, float scale, bool presentation) {
@@ -64,20 +66,23 @@ public:
         m_total = total;
         m_scale = scale;
         m_presentation = presentation;
-        QFont f = font();
-        f.setPointSizeF(presentation ? 12.0 : 8.0);
-        setFixedHeight(QFontMetrics(f).height() * 6 + 20);
+        fitHeight();
         update();
     }
     QSize sizeHint() const override { return {320, 130}; }
 
 protected:
+    void resizeEvent(QResizeEvent* event) override {
+        QWidget::resizeEvent(event);
+        fitHeight();
+    }
+
     void paintEvent(QPaintEvent*) override {
         QPainter painter(this);
         painter.fillRect(rect(), QColor(32, 32, 36));
+        clearLabels();
         if (m_segments.empty()) return;
-        QFont f = painter.font();
-        f.setPointSizeF(m_presentation ? 12.0 : 8.0);
+        const QFont f = barFont();
         painter.setFont(f);
         const QFontMetrics metrics(f);
         const double line = metrics.height();
@@ -97,8 +102,8 @@ protected:
         for (int c = 0; c < 3; ++c) {
             const double y = top + c * (barHeight + 6);
             painter.setPen(channelColours[static_cast<std::size_t>(c)]);
-            painter.drawText(QRectF(0, y, left - 4, barHeight), Qt::AlignRight | Qt::AlignVCenter,
-                             channelNames()[static_cast<std::size_t>(c)]);
+            drawLabel(painter, QRectF(0, y, left - 4, barHeight), Qt::AlignRight | Qt::AlignVCenter,
+                      channelNames()[static_cast<std::size_t>(c)]);
             double x = left;
             for (const Segment& s : m_segments) {
                 const double w = std::max(0.0f, s.value[c]) * unit;
@@ -109,8 +114,8 @@ protected:
                 x += w;
             }
             painter.setPen(QColor(230, 230, 230));
-            painter.drawText(QRectF(x + 4, y, width() - x - 4, barHeight), Qt::AlignVCenter,
-                             num(m_total[c], 4));
+            drawLabel(painter, QRectF(x + 4, y, width() - x - 4, barHeight), Qt::AlignVCenter,
+                      num(m_total[c], 4));
         }
         // The colour scale: what reaches it or goes beyond becomes byte 255.
         const double scaleX = left + double(m_scale) * unit;
@@ -121,22 +126,56 @@ protected:
         const QString scaleText = m_scale == 255.0f
                                       ? QStringLiteral("255")
                                       : PixelInspector::tr("%1 = byte 255").arg(num(m_scale));
-        painter.drawText(QPointF(std::min(scaleX - metrics.horizontalAdvance(scaleText) / 2.0,
-                                          width() - metrics.horizontalAdvance(scaleText) - 2.0),
-                                 metrics.ascent() + 2),
-                         scaleText);
-        // Legend.
-        double x = left;
+        drawLabel(painter,
+                  QPointF(std::clamp(scaleX - metrics.horizontalAdvance(scaleText) / 2.0, 0.0,
+                                     width() - metrics.horizontalAdvance(scaleText) - 2.0),
+                          metrics.ascent() + 2),
+                  scaleText);
+        // Legend, on as many lines as the width needs.
         const double y = bottom + 8;
-        for (const Segment& s : m_segments) {
-            painter.fillRect(QRectF(x, y + 2, 10, line - 4), s.colour);
+        for (const auto& [s, at] : legendPlaces(metrics, y)) {
+            painter.fillRect(QRectF(at.x(), at.y() + 2, 10, line - 4), s->colour);
             painter.setPen(QColor(220, 220, 220));
-            painter.drawText(QPointF(x + 14, y + metrics.ascent()), s.name);
-            x += 14 + metrics.horizontalAdvance(s.name) + 12;
+            drawLabel(painter, QPointF(at.x() + 14, at.y() + metrics.ascent()), s->name);
         }
     }
 
 private:
+    QFont barFont() const {
+        QFont f = font();
+        f.setPointSizeF(m_presentation ? 12.0 : 8.0);
+        return f;
+    }
+
+    // Each legend entry's top left: after the one before, or at the start of a new line.
+    std::vector<std::pair<const Segment*, QPointF>> legendPlaces(const QFontMetrics& metrics,
+                                                                 double top) const {
+        std::vector<std::pair<const Segment*, QPointF>> places;
+        const double left = metrics.horizontalAdvance(QStringLiteral("G")) + 10;
+        double x = left, y = top;
+        for (const Segment& s : m_segments) {
+            const double w = 14 + metrics.horizontalAdvance(s.name);
+            if (x > left && x + w > width() - 2) {
+                x = left;
+                y += metrics.height();
+            }
+            places.emplace_back(&s, QPointF(x, y));
+            x += w + 12;
+        }
+        return places;
+    }
+
+    // Room for the bars, and below them for the legend's lines at this width.
+    void fitHeight() {
+        const QFontMetrics metrics(barFont());
+        const double line = metrics.height();
+        const double legendTop = line + 6 + 3 * (line * 1.2 + 6) - 6 + 8;
+        const auto places = legendPlaces(metrics, legendTop);
+        const double bottom = places.empty() ? legendTop + line : places.back().second.y() + line;
+        const int height = std::max(int(std::ceil(bottom)) + 4, int(line * 6 + 20));
+        if (height != this->height() || minimumHeight() != height) setFixedHeight(height);
+    }
+
     std::vector<Segment> m_segments;
     rl::vec3 m_total = rl::vec3(0.0f);
     float m_scale = 255.0f;
@@ -276,8 +315,9 @@ PixelInspector::PixelInspector(Inspection* inspection, QWidget* parent)
 
     m_table = new QTableWidget(0, 6, this);
     m_table->setObjectName(QStringLiteral("pixelHistory"));
-    m_table->setHorizontalHeaderLabels(
-        {tr("Step"), tr("Triangle"), tr("Depth test"), tr("Before"), tr("After"), tr("Result")});
+    m_titles = {tr("Step"),   tr("Triangle"), tr("Depth test"),
+                tr("Before"), tr("After"),    tr("Result")};
+    m_table->setHorizontalHeaderLabels(m_titles);
     m_table->verticalHeader()->setVisible(false);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
@@ -285,6 +325,8 @@ PixelInspector::PixelInspector(Inspection* inspection, QWidget* parent)
     // The columns sized by fitColumns(): the sentences wrap when the dock is narrow.
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Fixed);
     m_table->horizontalHeader()->setStretchLastSection(true);
+    // Titles in the font they are measured in: not bold over the selected row's columns.
+    m_table->horizontalHeader()->setHighlightSections(false);
     m_table->setWordWrap(true);
     m_table->viewport()->installEventFilter(this);
     m_table->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
@@ -502,53 +544,112 @@ bool PixelInspector::eventFilter(QObject* watched, QEvent* event) {
     return QWidget::eventFilter(watched, event);
 }
 
+namespace {
+
+// The text on lines no wider than `width` where it has spaces to break at.
+QString wrapped(const QString& text, const QFontMetrics& metrics, int width) {
+    QStringList lines;
+    for (const QString& word : text.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+        const QString longer = lines.isEmpty() ? word : lines.back() + QLatin1Char(' ') + word;
+        if (!lines.isEmpty() && metrics.horizontalAdvance(longer) <= width)
+            lines.back() = longer;
+        else
+            lines << word;
+    }
+    return lines.join(QLatin1Char('\n'));
+}
+
+}  // namespace
+
 void PixelInspector::fitColumns() {
     // Each column as wide as its text when the table has the room; when not, the columns
     // shrink in proportion to what wrapping can save, down to their longest word (a cell
-    // never wraps inside a word), and their rows grow.
+    // never wraps inside a word, a title wraps onto two lines), and their rows grow. Short of
+    // even that, the Before column goes (each row's Before is the After of the row above,
+    // and the After cell's tooltip holds it), and a colour shrinks to its swatch.
+    constexpr int kBefore = 3, kAfter = 4;
     const int columns = m_table->columnCount();
-    const QFontMetrics metrics(m_table->font());
+    const QHeaderView* header = m_table->horizontalHeader();
+    const QFontMetrics titleMetrics = header->fontMetrics();
+    const int titleMargin = 2 * style()->pixelMetric(QStyle::PM_HeaderMargin, nullptr, header) + 2;
     const int margin = 2 * (style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, m_table) + 1);
     static const QRegularExpression space(QStringLiteral("\\s+"));
-    std::vector<int> whole(columns), least(columns);
-    int wholeSum = 0, leastSum = 0;
+    // least: a colour down to a few digits ("(255…"); fewest: down to its swatch.
+    std::vector<int> whole(columns), least(columns), fewest(columns);
     for (int c = 0; c < columns; ++c) {
-        const QString title = m_table->horizontalHeaderItem(c)->text();
-        // The header's title on one line: a header does not wrap.
-        const QHeaderView* header = m_table->horizontalHeader();
-        whole[c] = header->fontMetrics().horizontalAdvance(title) +
-                   2 * style()->pixelMetric(QStyle::PM_HeaderMargin, nullptr, header) + 2;
-        least[c] = whole[c];
+        const QString& title = m_titles[c];
+        whole[c] = titleMetrics.horizontalAdvance(title) + titleMargin;
+        least[c] = 0;
+        for (const QString& word : title.split(space, Qt::SkipEmptyParts))
+            least[c] = std::max(least[c], titleMetrics.horizontalAdvance(word) + titleMargin);
+        fewest[c] = least[c];
         for (int r = 0; r < m_table->rowCount(); ++r) {
             const QTableWidgetItem* item = m_table->item(r, c);
             if (!item || item->text().isEmpty()) continue;
             const QFontMetrics cell(item->font());
             const int icon = item->icon().isNull() ? 0 : m_table->iconSize().width() + 4;
-            whole[c] = std::max(whole[c], cell.horizontalAdvance(item->text()) + margin + icon + 2);
-            // A colour may shrink to its swatch and a few digits (the bytes in its tooltip).
-            const int fewest =
-                icon ? cell.horizontalAdvance(QStringLiteral("(255\u2026")) + margin + icon + 2 : 0;
+            const int all = cell.horizontalAdvance(item->text()) + margin + icon + 2;
+            whole[c] = std::max(whole[c], all);
+            if (icon) {  // the bytes whole in the cell's tooltip
+                least[c] = std::max(
+                    least[c], std::min(all, cell.horizontalAdvance(QStringLiteral("(255\u2026")) +
+                                                margin + icon + 2));
+                fewest[c] = std::max(fewest[c], margin + icon + 2);
+                continue;
+            }
             for (const QString& word : item->text().split(space, Qt::SkipEmptyParts))
-                least[c] = std::max(least[c], std::min(cell.horizontalAdvance(word) + margin +
-                                                           icon + 2,
-                                                       fewest ? fewest : INT_MAX));
+                least[c] = std::max(least[c], cell.horizontalAdvance(word) + margin + 2);
+            fewest[c] = least[c];
         }
-        wholeSum += whole[c];
-        leastSum += least[c];
     }
+    const auto sum = [&](const std::vector<int>& widths, bool before) {
+        int total = 0;
+        for (int c = 0; c < columns; ++c)
+            if (before || c != kBefore) total += widths[c];
+        return total;
+    };
     const int room = m_table->viewport()->width();
+    // The first that fits: every column; without Before; without Before, colours as swatches.
+    const bool before = sum(least, true) <= room;
+    if (!before && sum(least, false) > room) least = fewest;
+    m_table->setColumnHidden(kBefore, !before);
+    const int wholeSum = sum(whole, before), leastSum = sum(least, before);
     const double shrink = wholeSum <= room      ? 0.0
                           : leastSum >= room    ? 1.0
                                                 : double(wholeSum - room) / (wholeSum - leastSum);
-    for (int c = 0; c < columns; ++c)
-        m_table->setColumnWidth(c, whole[c] - int(std::ceil(shrink * (whole[c] - least[c]))));
+    for (int c = 0; c < columns; ++c) {
+        const int width = whole[c] - int(std::ceil(shrink * (whole[c] - least[c])));
+        m_table->setColumnWidth(c, width);
+        const QString title = wrapped(m_titles[c], titleMetrics, width - titleMargin);
+        if (m_table->horizontalHeaderItem(c)->text() != title)
+            m_table->horizontalHeaderItem(c)->setText(title);
+    }
+    // The Before column hidden: the After cells tell it.
+    for (int r = 0; r < m_table->rowCount(); ++r) {
+        QTableWidgetItem* was = m_table->item(r, kBefore);
+        QTableWidgetItem* now = m_table->item(r, kAfter);
+        if (!was || !now || was->text().isEmpty()) continue;
+        QString tip = now->data(Qt::UserRole).toString();
+        if (tip.isEmpty()) {
+            tip = now->toolTip();
+            now->setData(Qt::UserRole, tip);
+        }
+        if (!before) tip = tr("Before: %1").arg(was->text()) + QLatin1Char('\n') + tip;
+        now->setToolTip(tip);
+    }
+    // The table no narrower than its columns at their least: the dock scrolls, or the window
+    // gives it the room (MainWindow::fitDocks).
+    int tableLeast = sum(fewest, false) + 2 * m_table->frameWidth();
+    if (m_table->rowCount() > 10) tableLeast += m_table->verticalScrollBar()->sizeHint().width();
+    m_table->setMinimumWidth(tableLeast);
     m_table->resizeRowsToContents();
     fitTableHeight();
 }
 
 void PixelInspector::fitTableHeight() {
     // Tall enough for every row, up to ten; beyond, it scrolls.
-    int height = m_table->horizontalHeader()->height() + 2 * m_table->frameWidth();
+    // The header's hint: its titles may have just wrapped onto two lines.
+    int height = m_table->horizontalHeader()->sizeHint().height() + 2 * m_table->frameWidth();
     for (int r = 0; r < std::min(m_table->rowCount(), 10); ++r) height += m_table->rowHeight(r);
     if (m_table->horizontalScrollBar()->isVisible() ||
         m_table->horizontalHeader()->length() > m_table->viewport()->width())

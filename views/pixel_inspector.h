@@ -85,6 +85,7 @@ private:
 
     QLabel* m_verdictLabel = nullptr;
     QTableWidget* m_table = nullptr;
+    QStringList m_titles;  // the columns' titles, on one line (fitColumns may wrap them)
     QLabel* m_legend = nullptr;
     QLabel* m_breakdownTitle = nullptr;
     TermBars* m_bars = nullptr;
