@@ -13,6 +13,7 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QTemporaryDir>
 
 #include <algorithm>
@@ -45,6 +46,17 @@ bool waitFor(Done done, qint64 limitMs) {
 
 int main(int argc, char* argv[]) {
     rl::keepFrameMemory();
+    // Offscreen, a 1920x1080 screen, so that the window opens at its default size (the
+    // platform's own screen is 800x800, and the window fits itself to its screen).
+    QTemporaryDir screens;
+    if (qgetenv("QT_QPA_PLATFORM") == "offscreen") {
+        const QString config = screens.filePath(QStringLiteral("screens.json"));
+        QFile file(config);
+        if (!file.open(QIODevice::WriteOnly)) return 1;
+        file.write(R"({"screens": [{"name": "1080p", "x": 0, "y": 0, "width": 1920, "height": 1080}]})");
+        file.close();
+        qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
+    }
     QApplication app(argc, argv);
     QCommandLineParser parser;
     parser.addOptions(
