@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -37,6 +38,7 @@
 #include "image_io.h"
 #include "near_clip_view.h"
 #include "normals_view.h"
+#include "on_screen.h"
 #include "painter_view.h"
 #include "pipeline_messages.h"
 #include "pixel_inspector.h"
@@ -242,6 +244,12 @@ QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWid
         dock->setWidget(scroll);
         widget->installEventFilter(this);  // its minimum width may widen the side (fitDocks)
     }
+    // A tab brought to the front: its view refreshes if it left a step out while covered.
+    connect(dock, &QDockWidget::visibilityChanged, widget, [widget](bool visible) {
+        if (!visible) return;
+        QEvent raised(kRaisedEvent);
+        QCoreApplication::sendEvent(widget, &raised);
+    });
     addDockWidget(area, dock);
     return dock;
 }

@@ -24,6 +24,8 @@
 #include <set>
 
 #include "accuracy_panel.h"
+#include "explained_view.h"
+#include "inspection.h"
 #include "main_window.h"
 #include "render_controller.h"
 #include "scene_document.h"
@@ -100,6 +102,7 @@ private slots:
     void exportToMissingFolder();
     void docks();
     void presentationFontsComeBack();
+    void coveredViewsRefreshWhenRaised();
     void layoutSavedAndReset();
     void newestRequestWins();
     void failedRenderKeepsTheLastImage();
@@ -538,6 +541,33 @@ void TestMainWindow::presentationFontsComeBack() {
     QTRY_COMPARE(button->font().pointSizeF(), normal * 1.5);
     window.setPresentationMode(false);
     QTRY_COMPARE(button->font().pointSizeF(), normal);
+}
+
+void TestMainWindow::coveredViewsRefreshWhenRaised() {
+    // A view tabbed behind another is covered but visible to Qt: it leaves the steps out and
+    // catches up when its tab comes to the front.
+    MainWindow window;
+    window.resize(1600, 1000);
+    window.show();
+    QVERIFY(window.openExample(QStringLiteral("triangle")));
+    QTRY_VERIFY_WITH_TIMEOUT(window.isReadyToStep(), kFrameTimeoutMs);
+    auto* scanDock = window.findChild<QDockWidget*>(QStringLiteral("scanlineDock"));
+    auto* trapezoidDock = window.findChild<QDockWidget*>(QStringLiteral("trapezoidDock"));
+    auto* trapezoids = window.findChild<rasterlab::ExplainedView*>(QStringLiteral("trapezoidView"));
+    QVERIFY(scanDock && trapezoidDock && trapezoids);
+    scanDock->raise();
+    QTRY_VERIFY(trapezoids->visibleRegion().isEmpty());
+    QVERIFY(trapezoids->isVisible());
+    for (int i = 0; i < 6; ++i) window.inspection()->stepForward();
+    const QString covered = trapezoids->explanationText();
+    trapezoidDock->raise();
+    QTRY_VERIFY(!trapezoids->visibleRegion().isEmpty());
+    QTRY_VERIFY(trapezoids->explanationText() != covered);
+    // What it shows now is what it shows after one more refresh at the same cursor.
+    const QString raised = trapezoids->explanationText();
+    scanDock->raise();
+    trapezoidDock->raise();
+    QCOMPARE(trapezoids->explanationText(), raised);
 }
 
 void TestMainWindow::docks() {

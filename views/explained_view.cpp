@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "inspection.h"
+#include "on_screen.h"
 #include "scan_conversion.h"
 
 namespace rasterlab {
@@ -21,7 +22,8 @@ ExplainedView::ExplainedView(Inspection* inspection, const QString& name, QWidge
     m_text->setObjectName(name + QStringLiteral("Explanation"));
     m_text->setOpenLinks(false);
     const auto follow = [this] {
-        if (isVisible()) refresh();
+        m_stale = !onScreen(this);
+        if (!m_stale) refresh();
     };
     // A new frame: the view's own reset only. Inspection::setFrame emits cursorChanged and
     // selectionChanged after frameChanged (from nothing else), and those refresh.
@@ -42,12 +44,23 @@ QString ExplainedView::explanationText() const {
 }
 
 void ExplainedView::presentationChanged() {
-    if (isVisible()) refresh();
+    m_stale = !onScreen(this);
+    if (!m_stale) refresh();
 }
 
 void ExplainedView::showEvent(QShowEvent* event) {
     QWidget::showEvent(event);
+    m_stale = false;
     refresh();
+}
+
+bool ExplainedView::event(QEvent* event) {
+    if (event->type() == kRaisedEvent && m_stale) {
+        m_stale = false;
+        refresh();
+        return true;
+    }
+    return QWidget::event(event);
 }
 
 bool ExplainedView::setExplanation(QString html) {

@@ -39,6 +39,7 @@ protected:
     virtual void presentationChanged();
 
     void showEvent(QShowEvent* event) override;
+    bool event(QEvent* event) override;  // kRaisedEvent (on_screen.h)
 
     QLabel* title() const { return m_title; }
     QTextBrowser* explanation() const { return m_text; }
@@ -55,6 +56,7 @@ private:
     QLabel* m_title = nullptr;
     QTextBrowser* m_text = nullptr;
     QString m_html;  // what m_text shows
+    bool m_stale = false;  // a refresh was left out while the view was covered
 };
 
 // The scanline the views of one triangle's scan show (scan conversion, trapezoids): the

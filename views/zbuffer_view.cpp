@@ -17,6 +17,7 @@
 #include <limits>
 
 #include "frame_image_view.h"
+#include "on_screen.h"
 #include "wrapping_check_box.h"
 
 namespace rasterlab {
@@ -232,7 +233,7 @@ void ZBufferView::setBuffers(std::shared_ptr<const rl::DepthTest> buffers, std::
 }
 
 void ZBufferView::refreshWhenShown() {
-    if (isVisible())
+    if (onScreen(this))
         refresh();
     else
         m_stale = true;
@@ -241,6 +242,14 @@ void ZBufferView::refreshWhenShown() {
 void ZBufferView::showEvent(QShowEvent* event) {
     QWidget::showEvent(event);
     if (m_stale) refresh();
+}
+
+bool ZBufferView::event(QEvent* event) {
+    if (event->type() == kRaisedEvent) {
+        if (m_stale) refresh();
+        return true;
+    }
+    return QWidget::event(event);
 }
 
 const rl::DepthTest* ZBufferView::shown() const {

@@ -92,6 +92,7 @@ public:
 
 protected:
     void showEvent(QShowEvent* event) override;
+    bool event(QEvent* event) override;  // kRaisedEvent (on_screen.h)
 
 private:
     void refresh();
