@@ -11,6 +11,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QListWidget>
+#include <QPushButton>
 #include <QTemporaryDir>
 
 #include "compare_panel.h"
@@ -61,6 +62,7 @@ private slots:
     void pickedPixel();
     void badImages_data();
     void badImages();
+    void compareAgainAfterAChange();
 
 private:
     ComparePanel* panel() const { return m_window.comparePanel(); }
@@ -220,6 +222,25 @@ void TestCompareWindow::badImages() {
     QCOMPARE(m_window.lessonTitle(), title);
     QCOMPARE(panel()->comparison(), before);
     QCOMPARE(panel()->imagePath(), m_theirPath);
+}
+
+void TestCompareWindow::compareAgainAfterAChange() {
+    // Another shading model: the comparison is of the scene before, until compared again.
+    auto* again = panel()->findChild<QPushButton*>(QStringLiteral("compareAgainButton"));
+    QVERIFY(again && again->isHidden());
+    const auto before = m_window.currentFrame();
+    m_window.setShading(rl::ShadingModel::Flat);
+    QVERIFY(QTest::qWaitFor([&] { return m_window.currentFrame() != before && ready(m_window); },
+                            kTimeoutMs));
+    QVERIFY(panel()->isStale());
+    QVERIFY(!again->isHidden());
+    QVERIFY(panel()->summaryText().contains(QStringLiteral("The scene has changed")));
+    again->click();
+    QVERIFY(!panel()->isStale());
+    QVERIFY(again->isHidden());
+    // Flat shading against their Phong image differs by more than the ambient's 12 in blue.
+    const std::array<int, 4>& largest = panel()->comparison()->largest;
+    QVERIFY(*std::max_element(largest.begin(), largest.end()) > 12);
 }
 
 QTEST_MAIN(TestCompareWindow)
