@@ -2448,7 +2448,7 @@
         <translation>cannot read the PNG: %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_image.cpp" line="68"/>
+        <location filename="../app/compare_image.cpp" line="69"/>
         <source>the image is %1, ours is %2</source>
         <translation>the image is %1, ours is %2</translation>
     </message>
@@ -2467,94 +2467,94 @@
         <translation>R %1, G %2, B %3, A %4</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="143"/>
+        <location filename="../app/compare_panel.cpp" line="144"/>
         <source>red</source>
         <translation>red</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="144"/>
+        <location filename="../app/compare_panel.cpp" line="146"/>
         <source>green</source>
         <translation>green</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="145"/>
+        <location filename="../app/compare_panel.cpp" line="148"/>
         <source>blue</source>
         <translation>blue</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="146"/>
+        <location filename="../app/compare_panel.cpp" line="150"/>
         <source>alpha</source>
         <translation>alpha</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="153"/>
+        <location filename="../app/compare_panel.cpp" line="157"/>
         <source>%1 and %2</source>
         <translation>%1 and %2</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="169"/>
+        <location filename="../app/compare_panel.cpp" line="173"/>
         <source>Side by side</source>
         <translation>Side by side</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="170"/>
+        <location filename="../app/compare_panel.cpp" line="174"/>
         <source>Flicker</source>
         <translation>Flicker</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="171"/>
+        <location filename="../app/compare_panel.cpp" line="175"/>
         <source>Difference</source>
         <translation>Difference</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="172"/>
+        <location filename="../app/compare_panel.cpp" line="177"/>
         <source>Theirs beside ours, one after the other twice a second, or the pixels that differ</source>
         <translation>Theirs beside ours, one after the other twice a second, or the pixels that differ</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="175"/>
+        <location filename="../app/compare_panel.cpp" line="180"/>
         <source>Differ by more than</source>
         <translation>Differ by more than</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="180"/>
+        <location filename="../app/compare_panel.cpp" line="186"/>
         <source>The difference view shows the pixels where some channel differs by more than this (0: every difference)</source>
         <translation>The difference view shows the pixels where some channel differs by more than this (0: every difference)</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="185"/>
+        <location filename="../app/compare_panel.cpp" line="191"/>
         <source>Compare Again</source>
         <translation>Compare Again</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="187"/>
+        <location filename="../app/compare_panel.cpp" line="194"/>
         <source>The scene changed since the comparison: compare their image with the scene shown now</source>
         <translation>The scene changed since the comparison: compare their image with the scene shown now</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="210"/>
+        <location filename="../app/compare_panel.cpp" line="218"/>
         <source>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</source>
         <translation>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="248"/>
+        <location filename="../app/compare_panel.cpp" line="256"/>
         <source>There is no render to compare with yet.</source>
         <translation>There is no render to compare with yet.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="335"/>
-        <location filename="../app/compare_panel.cpp" line="338"/>
+        <location filename="../app/compare_panel.cpp" line="343"/>
+        <location filename="../app/compare_panel.cpp" line="346"/>
         <source>Theirs</source>
         <translation>Theirs</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="335"/>
-        <location filename="../app/compare_panel.cpp" line="338"/>
+        <location filename="../app/compare_panel.cpp" line="343"/>
+        <location filename="../app/compare_panel.cpp" line="346"/>
         <source>Ours</source>
         <translation>Ours</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/compare_panel.cpp" line="342"/>
+        <location filename="../app/compare_panel.cpp" line="351"/>
         <source>%n pixel(s) differ by more than %1</source>
         <translation>
             <numerusform>%n pixel differs by more than %1</numerusform>
@@ -2562,167 +2562,167 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="369"/>
+        <location filename="../app/compare_panel.cpp" line="377"/>
         <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
         <translation>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="377"/>
+        <location filename="../app/compare_panel.cpp" line="385"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Largest difference per channel: %1.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="378"/>
+        <location filename="../app/compare_panel.cpp" line="386"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Mean difference per channel, over the differing pixels: %1.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="380"/>
+        <location filename="../app/compare_panel.cpp" line="388"/>
         <source>Pixels only one side covers: %1 only ours (our depth buffer), %2 only theirs (not the background).</source>
         <translation>Pixels only one side covers: %1 only ours (our depth buffer), %2 only theirs (not the background).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="386"/>
+        <location filename="../app/compare_panel.cpp" line="394"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="392"/>
+        <location filename="../app/compare_panel.cpp" line="401"/>
         <source>The images are the same.</source>
         <translation>The images are the same.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="394"/>
+        <location filename="../app/compare_panel.cpp" line="403"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnosis: none of the mistakes RasterLab knows explains these differences.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="397"/>
+        <location filename="../app/compare_panel.cpp" line="406"/>
         <source>Diagnosis, most likely first:</source>
         <translation>Diagnosis, most likely first:</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="403"/>
+        <location filename="../app/compare_panel.cpp" line="413"/>
         <source>Explains %1% of the differing pixels (%2 of %3).</source>
         <translation>Explains %1% of the differing pixels (%2 of %3).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="408"/>
+        <location filename="../app/compare_panel.cpp" line="418"/>
         <source>Evidence: %1</source>
         <translation>Evidence: %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="411"/>
+        <location filename="../app/compare_panel.cpp" line="419"/>
         <source>Check: %1</source>
         <translation>Check: %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="413"/>
+        <location filename="../app/compare_panel.cpp" line="421"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>At (%1, %2): ours %3, theirs %4</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="429"/>
+        <location filename="../app/compare_panel.cpp" line="437"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Pick a pixel (here or on the image) to see their colour beside ours.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="437"/>
+        <location filename="../app/compare_panel.cpp" line="445"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): theirs %3, ours %4.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="444"/>
+        <location filename="../app/compare_panel.cpp" line="452"/>
         <source>minus %1 in %2</source>
         <translation>minus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="445"/>
+        <location filename="../app/compare_panel.cpp" line="453"/>
         <source>plus %1 in %2</source>
         <translation>plus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="448"/>
+        <location filename="../app/compare_panel.cpp" line="456"/>
         <source>Their colour is ours.</source>
         <translation>Their colour is ours.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="452"/>
+        <location filename="../app/compare_panel.cpp" line="460"/>
         <source>Their colour is ours %1.</source>
         <translation>Their colour is ours %1.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="454"/>
+        <location filename="../app/compare_panel.cpp" line="462"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>The scene has changed since the comparison: the lighting shown now is not the one compared.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="465"/>
+        <location filename="../app/compare_panel.cpp" line="474"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>No triangle of ours covers this pixel: it is the background.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="469"/>
+        <location filename="../app/compare_panel.cpp" line="478"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>The lighting of this pixel is not known.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="472"/>
+        <location filename="../app/compare_panel.cpp" line="481"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="501"/>
+        <location filename="../app/compare_panel.cpp" line="511"/>
         <source>the ambient term Ia·ka</source>
         <translation>the ambient term Ia·ka</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="502"/>
+        <location filename="../app/compare_panel.cpp" line="512"/>
         <source>the diffuse term Il·Od·kd·(N·L)</source>
         <translation>the diffuse term Il·Od·kd·(N·L)</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="503"/>
+        <location filename="../app/compare_panel.cpp" line="513"/>
         <source>the specular term Il·ks·(R·V)^n</source>
         <translation>the specular term Il·ks·(R·V)^n</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="519"/>
+        <location filename="../app/compare_panel.cpp" line="529"/>
         <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
         <translation>• %1 is 0 in %2 here: changing it alone cannot give their colour.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="524"/>
+        <location filename="../app/compare_panel.cpp" line="534"/>
         <source>• %1 would have to be below 0 in %2: not this term alone.</source>
         <translation>• %1 would have to be below 0 in %2: not this term alone.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="541"/>
+        <location filename="../app/compare_panel.cpp" line="551"/>
         <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
         <translation>• %1 would have to be %2 instead of %3, × %4 per channel</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="544"/>
+        <location filename="../app/compare_panel.cpp" line="554"/>
         <source>: the term left out</source>
         <translation>: the term left out</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="547"/>
+        <location filename="../app/compare_panel.cpp" line="557"/>
         <source>: that is the term times Od %1</source>
         <translation>: that is the term times Od %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="550"/>
+        <location filename="../app/compare_panel.cpp" line="560"/>
         <source>: that is the term without Od %1</source>
         <translation>: that is the term without Od %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="556"/>
+        <location filename="../app/compare_panel.cpp" line="566"/>
         <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
         <translation>(%1: 255 in both images, clamped; any value at least as high gives it.)</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="559"/>
+        <location filename="../app/compare_panel.cpp" line="569"/>
         <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
         <translation>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</translation>
     </message>
@@ -3347,32 +3347,32 @@
         <translation>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1006"/>
+        <location filename="../app/main_window.cpp" line="1007"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>step forward, back (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1008"/>
+        <location filename="../app/main_window.cpp" line="1009"/>
         <source>Space</source>
         <translation>Space</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1008"/>
+        <location filename="../app/main_window.cpp" line="1009"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>play / pause (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1014"/>
+        <location filename="../app/main_window.cpp" line="1015"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>let go of the picked pixel (on the image)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1015"/>
+        <location filename="../app/main_window.cpp" line="1016"/>
         <source>presentation mode on / off</source>
         <translation>presentation mode on / off</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1020"/>
+        <location filename="../app/main_window.cpp" line="1021"/>
         <source>save, undo, redo</source>
         <translation>save, undo, redo</translation>
     </message>
@@ -3647,72 +3647,72 @@
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1003"/>
+        <location filename="../app/main_window.cpp" line="1004"/>
         <source>step forward</source>
         <translation>step forward</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1004"/>
+        <location filename="../app/main_window.cpp" line="1005"/>
         <source>step back</source>
         <translation>step back</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1007"/>
+        <location filename="../app/main_window.cpp" line="1008"/>
         <source>play / pause</source>
         <translation>play / pause</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1009"/>
+        <location filename="../app/main_window.cpp" line="1010"/>
         <source>jump to the start / the end of the frame</source>
         <translation>jump to the start / the end of the frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1010"/>
+        <location filename="../app/main_window.cpp" line="1011"/>
         <source>continue to the next breakpoint</source>
         <translation>continue to the next breakpoint</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1011"/>
+        <location filename="../app/main_window.cpp" line="1012"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>step by stage, triangle, scanline, span, pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1012"/>
+        <location filename="../app/main_window.cpp" line="1013"/>
         <source>show a stage&apos;s view</source>
         <translation>show a stage&apos;s view</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1013"/>
+        <location filename="../app/main_window.cpp" line="1014"/>
         <source>Click, arrows</source>
         <translation>Click, arrows</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1013"/>
+        <location filename="../app/main_window.cpp" line="1014"/>
         <source>pick a pixel, move it by one</source>
         <translation>pick a pixel, move it by one</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1016"/>
+        <location filename="../app/main_window.cpp" line="1017"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, double-click on a panel&apos;s title</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1017"/>
+        <location filename="../app/main_window.cpp" line="1018"/>
         <source>fill the window with the panel (the image, from the image), and back</source>
         <translation>fill the window with the panel (the image, from the image), and back</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1019"/>
+        <location filename="../app/main_window.cpp" line="1020"/>
         <source>open, export the image, export it as displayed</source>
         <translation>open, export the image, export it as displayed</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1022"/>
+        <location filename="../app/main_window.cpp" line="1023"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>fit, actual size, zoom in, zoom out</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1024"/>
+        <location filename="../app/main_window.cpp" line="1025"/>
         <source>Keyboard Shortcuts</source>
         <translation>Keyboard Shortcuts</translation>
     </message>
@@ -4072,7 +4072,7 @@
         <translation>PNG images (*.png);;All files (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/main_window.cpp" line="983"/>
+        <location filename="../app/main_window.cpp" line="984"/>
         <source>Compared %1 with our render: %n pixel(s) differ</source>
         <translation>
             <numerusform>Compared %1 with our render: %n pixel differs</numerusform>
@@ -4080,12 +4080,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="991"/>
+        <location filename="../app/main_window.cpp" line="992"/>
         <source>About RasterLab</source>
         <translation>About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="992"/>
+        <location filename="../app/main_window.cpp" line="993"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</translation>
     </message>

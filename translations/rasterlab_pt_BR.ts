@@ -2448,7 +2448,7 @@
         <translation>não foi possível ler o PNG: %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_image.cpp" line="68"/>
+        <location filename="../app/compare_image.cpp" line="69"/>
         <source>the image is %1, ours is %2</source>
         <translation>a imagem tem %1, a nossa tem %2</translation>
     </message>
@@ -2467,94 +2467,94 @@
         <translation>R %1, G %2, B %3, A %4</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="143"/>
+        <location filename="../app/compare_panel.cpp" line="144"/>
         <source>red</source>
         <translation>vermelho</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="144"/>
+        <location filename="../app/compare_panel.cpp" line="146"/>
         <source>green</source>
         <translation>verde</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="145"/>
+        <location filename="../app/compare_panel.cpp" line="148"/>
         <source>blue</source>
         <translation>azul</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="146"/>
+        <location filename="../app/compare_panel.cpp" line="150"/>
         <source>alpha</source>
         <translation>alfa</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="153"/>
+        <location filename="../app/compare_panel.cpp" line="157"/>
         <source>%1 and %2</source>
         <translation>%1 e %2</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="169"/>
+        <location filename="../app/compare_panel.cpp" line="173"/>
         <source>Side by side</source>
         <translation>Lado a lado</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="170"/>
+        <location filename="../app/compare_panel.cpp" line="174"/>
         <source>Flicker</source>
         <translation>Alternar</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="171"/>
+        <location filename="../app/compare_panel.cpp" line="175"/>
         <source>Difference</source>
         <translation>Diferença</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="172"/>
+        <location filename="../app/compare_panel.cpp" line="177"/>
         <source>Theirs beside ours, one after the other twice a second, or the pixels that differ</source>
         <translation>A deles ao lado da nossa, uma depois da outra duas vezes por segundo, ou os pixels que diferem</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="175"/>
+        <location filename="../app/compare_panel.cpp" line="180"/>
         <source>Differ by more than</source>
         <translation>Diferem em mais de</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="180"/>
+        <location filename="../app/compare_panel.cpp" line="186"/>
         <source>The difference view shows the pixels where some channel differs by more than this (0: every difference)</source>
         <translation>A vista da diferença mostra os pixels em que algum canal difere em mais do que isto (0: toda diferença)</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="185"/>
+        <location filename="../app/compare_panel.cpp" line="191"/>
         <source>Compare Again</source>
         <translation>Comparar de novo</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="187"/>
+        <location filename="../app/compare_panel.cpp" line="194"/>
         <source>The scene changed since the comparison: compare their image with the scene shown now</source>
         <translation>A cena mudou desde a comparação: comparar a imagem deles com a cena mostrada agora</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="210"/>
+        <location filename="../app/compare_panel.cpp" line="218"/>
         <source>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</source>
         <translation>Arquivo &gt; Comparar com imagem... compara um PNG do seu próprio renderizador com a renderização desta cena.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="248"/>
+        <location filename="../app/compare_panel.cpp" line="256"/>
         <source>There is no render to compare with yet.</source>
         <translation>Ainda não há renderização com que comparar.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="335"/>
-        <location filename="../app/compare_panel.cpp" line="338"/>
+        <location filename="../app/compare_panel.cpp" line="343"/>
+        <location filename="../app/compare_panel.cpp" line="346"/>
         <source>Theirs</source>
         <translation>Deles</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="335"/>
-        <location filename="../app/compare_panel.cpp" line="338"/>
+        <location filename="../app/compare_panel.cpp" line="343"/>
+        <location filename="../app/compare_panel.cpp" line="346"/>
         <source>Ours</source>
         <translation>Nossa</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/compare_panel.cpp" line="342"/>
+        <location filename="../app/compare_panel.cpp" line="351"/>
         <source>%n pixel(s) differ by more than %1</source>
         <translation>
             <numerusform>%n pixel difere em mais de %1</numerusform>
@@ -2562,167 +2562,167 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="369"/>
+        <location filename="../app/compare_panel.cpp" line="377"/>
         <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
         <translation>%1 contra a nossa renderização (%2x%3): %4 pixels comparados, %5 diferem (%6%).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="377"/>
+        <location filename="../app/compare_panel.cpp" line="385"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Maior diferença por canal: %1.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="378"/>
+        <location filename="../app/compare_panel.cpp" line="386"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Diferença média por canal, nos pixels que diferem: %1.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="380"/>
+        <location filename="../app/compare_panel.cpp" line="388"/>
         <source>Pixels only one side covers: %1 only ours (our depth buffer), %2 only theirs (not the background).</source>
         <translation>Pixels que só um lado cobre: %1 só nossos (o nosso buffer de profundidade), %2 só deles (não são o fundo).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="386"/>
+        <location filename="../app/compare_panel.cpp" line="394"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>A cena mudou desde esta comparação: Comparar de novo compara a imagem deles com a cena mostrada agora.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="392"/>
+        <location filename="../app/compare_panel.cpp" line="401"/>
         <source>The images are the same.</source>
         <translation>As imagens são iguais.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="394"/>
+        <location filename="../app/compare_panel.cpp" line="403"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnóstico: nenhum dos erros que o RasterLab conhece explica estas diferenças.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="397"/>
+        <location filename="../app/compare_panel.cpp" line="406"/>
         <source>Diagnosis, most likely first:</source>
         <translation>Diagnóstico, o mais provável primeiro:</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="403"/>
+        <location filename="../app/compare_panel.cpp" line="413"/>
         <source>Explains %1% of the differing pixels (%2 of %3).</source>
         <translation>Explica %1% dos pixels que diferem (%2 de %3).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="408"/>
+        <location filename="../app/compare_panel.cpp" line="418"/>
         <source>Evidence: %1</source>
         <translation>Evidência: %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="411"/>
+        <location filename="../app/compare_panel.cpp" line="419"/>
         <source>Check: %1</source>
         <translation>Verifique: %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="413"/>
+        <location filename="../app/compare_panel.cpp" line="421"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>Em (%1, %2): nossa %3, deles %4</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="429"/>
+        <location filename="../app/compare_panel.cpp" line="437"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Escolha um pixel (aqui ou na imagem) para ver a cor deles ao lado da nossa.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="437"/>
+        <location filename="../app/compare_panel.cpp" line="445"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): deles %3, nossa %4.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="444"/>
+        <location filename="../app/compare_panel.cpp" line="452"/>
         <source>minus %1 in %2</source>
         <translation>menos %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="445"/>
+        <location filename="../app/compare_panel.cpp" line="453"/>
         <source>plus %1 in %2</source>
         <translation>mais %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="448"/>
+        <location filename="../app/compare_panel.cpp" line="456"/>
         <source>Their colour is ours.</source>
         <translation>A cor deles é a nossa.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="452"/>
+        <location filename="../app/compare_panel.cpp" line="460"/>
         <source>Their colour is ours %1.</source>
         <translation>A cor deles é a nossa %1.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="454"/>
+        <location filename="../app/compare_panel.cpp" line="462"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>A cena mudou desde a comparação: a iluminação mostrada agora não é a comparada.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="465"/>
+        <location filename="../app/compare_panel.cpp" line="474"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>Nenhum triângulo nosso cobre este pixel: é o fundo.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="469"/>
+        <location filename="../app/compare_panel.cpp" line="478"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>A iluminação deste pixel não é conhecida.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="472"/>
+        <location filename="../app/compare_panel.cpp" line="481"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>Os termos que teriam de mudar são calculados para o modelo de iluminação do curso em sombreamento flat ou Phong; este pixel é sombreado de outro modo (o inspetor de pixel mostra como).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="501"/>
+        <location filename="../app/compare_panel.cpp" line="511"/>
         <source>the ambient term Ia·ka</source>
         <translation>o termo ambiente Ia·ka</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="502"/>
+        <location filename="../app/compare_panel.cpp" line="512"/>
         <source>the diffuse term Il·Od·kd·(N·L)</source>
         <translation>o termo difuso Il·Od·kd·(N·L)</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="503"/>
+        <location filename="../app/compare_panel.cpp" line="513"/>
         <source>the specular term Il·ks·(R·V)^n</source>
         <translation>o termo especular Il·ks·(R·V)^n</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="519"/>
+        <location filename="../app/compare_panel.cpp" line="529"/>
         <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
         <translation>• %1 é 0 no %2 aqui: mudá-lo sozinho não dá a cor deles.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="524"/>
+        <location filename="../app/compare_panel.cpp" line="534"/>
         <source>• %1 would have to be below 0 in %2: not this term alone.</source>
         <translation>• %1 teria de ser menor que 0 no %2: não é este termo sozinho.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="541"/>
+        <location filename="../app/compare_panel.cpp" line="551"/>
         <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
         <translation>• %1 teria de ser %2 em vez de %3, × %4 por canal</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="544"/>
+        <location filename="../app/compare_panel.cpp" line="554"/>
         <source>: the term left out</source>
         <translation>: o termo omitido</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="547"/>
+        <location filename="../app/compare_panel.cpp" line="557"/>
         <source>: that is the term times Od %1</source>
         <translation>: isto é, o termo vezes Od %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="550"/>
+        <location filename="../app/compare_panel.cpp" line="560"/>
         <source>: that is the term without Od %1</source>
         <translation>: isto é, o termo sem Od %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="556"/>
+        <location filename="../app/compare_panel.cpp" line="566"/>
         <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
         <translation>(%1: 255 nas duas imagens, limitado; qualquer valor pelo menos tão alto o dá.)</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="559"/>
+        <location filename="../app/compare_panel.cpp" line="569"/>
         <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
         <translation>Nenhum termo mudado por um fator simples (omitido, vezes Od, sem Od) dá a cor deles: olhe vários termos, ou o que diz o diagnóstico.</translation>
     </message>
@@ -3347,32 +3347,32 @@
         <translation>&amp;Algoritmo do pintor (flat, do mais distante ao mais próximo, sem teste de profundidade)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1006"/>
+        <location filename="../app/main_window.cpp" line="1007"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>avançar, voltar um passo (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1008"/>
+        <location filename="../app/main_window.cpp" line="1009"/>
         <source>Space</source>
         <translation>Barra de espaço</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1008"/>
+        <location filename="../app/main_window.cpp" line="1009"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>reproduzir / pausar (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1014"/>
+        <location filename="../app/main_window.cpp" line="1015"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>soltar o pixel escolhido (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1015"/>
+        <location filename="../app/main_window.cpp" line="1016"/>
         <source>presentation mode on / off</source>
         <translation>ligar / desligar o modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1020"/>
+        <location filename="../app/main_window.cpp" line="1021"/>
         <source>save, undo, redo</source>
         <translation>salvar, desfazer, refazer</translation>
     </message>
@@ -3647,72 +3647,72 @@
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1003"/>
+        <location filename="../app/main_window.cpp" line="1004"/>
         <source>step forward</source>
         <translation>avançar um passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1004"/>
+        <location filename="../app/main_window.cpp" line="1005"/>
         <source>step back</source>
         <translation>voltar um passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1007"/>
+        <location filename="../app/main_window.cpp" line="1008"/>
         <source>play / pause</source>
         <translation>reproduzir / pausar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1009"/>
+        <location filename="../app/main_window.cpp" line="1010"/>
         <source>jump to the start / the end of the frame</source>
         <translation>ir ao início / ao fim do quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1010"/>
+        <location filename="../app/main_window.cpp" line="1011"/>
         <source>continue to the next breakpoint</source>
         <translation>continuar até o próximo ponto de parada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1011"/>
+        <location filename="../app/main_window.cpp" line="1012"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>avançar por etapa, triângulo, linha de varredura, segmento, pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1012"/>
+        <location filename="../app/main_window.cpp" line="1013"/>
         <source>show a stage&apos;s view</source>
         <translation>mostrar o painel de uma etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1013"/>
+        <location filename="../app/main_window.cpp" line="1014"/>
         <source>Click, arrows</source>
         <translation>Clique, setas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1013"/>
+        <location filename="../app/main_window.cpp" line="1014"/>
         <source>pick a pixel, move it by one</source>
         <translation>escolher um pixel, movê-lo de um em um</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1016"/>
+        <location filename="../app/main_window.cpp" line="1017"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, duplo clique no título de um painel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1017"/>
+        <location filename="../app/main_window.cpp" line="1018"/>
         <source>fill the window with the panel (the image, from the image), and back</source>
         <translation>preencher a janela com o painel (a imagem, a partir da imagem), e voltar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1019"/>
+        <location filename="../app/main_window.cpp" line="1020"/>
         <source>open, export the image, export it as displayed</source>
         <translation>abrir, exportar a imagem, exportá-la como exibida</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1022"/>
+        <location filename="../app/main_window.cpp" line="1023"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>ajustar, tamanho real, aumentar zoom, diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1024"/>
+        <location filename="../app/main_window.cpp" line="1025"/>
         <source>Keyboard Shortcuts</source>
         <translation>Atalhos de teclado</translation>
     </message>
@@ -4072,7 +4072,7 @@
         <translation>Imagens PNG (*.png);;Todos os arquivos (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/main_window.cpp" line="983"/>
+        <location filename="../app/main_window.cpp" line="984"/>
         <source>Compared %1 with our render: %n pixel(s) differ</source>
         <translation>
             <numerusform>%1 comparada com a nossa renderização: %n pixel difere</numerusform>
@@ -4080,12 +4080,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="991"/>
+        <location filename="../app/main_window.cpp" line="992"/>
         <source>About RasterLab</source>
         <translation>Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="992"/>
+        <location filename="../app/main_window.cpp" line="993"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;O pipeline clássico de rasterização por software, etapa por etapa: base da câmera, coordenadas de vista, normais, projeção, conversão por varredura, teste de profundidade e sombreamento.&lt;/p&gt;</translation>
     </message>
