@@ -3,17 +3,13 @@
 // mistakes (pipeline/analysis/mistakes.h) ranked by how many differing pixels each explains.
 #include "cli_common.h"
 
-#include <QFile>
 #include <QFileInfo>
-#include <QImage>
-#include <QImageReader>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 
-#include <cstring>
-
 #include "command_file.h"
+#include "compare_image.h"
 #include "mistakes.h"
 
 namespace rasterlab::cli {
@@ -22,51 +18,6 @@ namespace {
 
 QString sizeText(int width, int height) {
     return lit("%1x%2").arg(width).arg(height);
-}
-
-// Their PNG as RGBA bytes; false with the one-line message printed when it is not one.
-bool readTheirs(const QString& path, rl::Rgba8Image& image, QTextStream& err) {
-    const QFileInfo info(path);
-    QString problem;
-    if (!info.exists())
-        problem = lit("no such file");
-    else if (info.isDir())
-        problem = lit("a folder, not a PNG image");
-    else if (info.size() == 0)
-        problem = lit("the file is empty");
-    if (problem.isEmpty()) {
-        QImageReader reader(path);
-        reader.setDecideFormatFromContent(true);
-        const QByteArray format = reader.format();
-        // A PNG ends with its IEND chunk; libpng would complain of a cut one on stderr.
-        QFile file(path);
-        const bool complete = file.open(QIODevice::ReadOnly) && file.seek(file.size() - 8) &&
-                              file.read(8) == QByteArray("IEND\xAE\x42\x60\x82", 8);
-        if (format != "png") {
-            problem = format.isEmpty()
-                          ? lit("not a PNG image")
-                          : lit("not a PNG image (a %1 image)").arg(QString::fromLatin1(format));
-        } else if (!complete) {
-            problem = lit("the PNG is cut short (it does not end with its IEND chunk)");
-        } else {
-            const QImage read = reader.read();
-            if (read.isNull() || read.width() == 0 || read.height() == 0) {
-                problem = lit("cannot read the PNG: %1").arg(reader.errorString());
-            } else {
-                const QImage rgba = read.convertToFormat(QImage::Format_RGBA8888);
-                image.width = rgba.width();
-                image.height = rgba.height();
-                image.rgba.resize(std::size_t(image.width) * image.height * 4);
-                for (int y = 0; y < image.height; ++y)
-                    std::memcpy(image.rgba.data() + std::size_t(y) * image.width * 4,
-                                rgba.constScanLine(y), std::size_t(image.width) * 4);
-            }
-        }
-    }
-    if (problem.isEmpty()) return true;
-    err << path << ": " << problem << '\n';
-    err.flush();
-    return false;
 }
 
 QJsonArray bytesJson(const std::array<std::uint8_t, 4>& b) {
@@ -248,25 +199,27 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
 
     rl::Rgba8Image theirs;
     const QString imagePath = parser.value(image);
-    if (!readTheirs(imagePath, theirs, err)) return ExitBadInput;
+    if (const QString problem = CompareImage::read(imagePath, theirs); !problem.isEmpty()) {
+        err << problem << '\n';
+        err.flush();
+        return ExitBadInput;
+    }
 
     auto ours = rl::renderOurFrame(scene);
     if (!ours) return inputError(err, ours.error());
     printDiagnostics(ours->trace->diagnostics, err);
     const rl::Rgba8Image& ourImage = ours->image;
-    if (theirs.width != ourImage.width || theirs.height != ourImage.height) {
-        err << imagePath << ": the image is " << sizeText(theirs.width, theirs.height)
-            << ", ours is " << sizeText(ourImage.width, ourImage.height);
-        if (const auto at = rl::findEmbedded(ourImage, theirs))
-            err << "; it holds ours at (" << at->x << ", " << at->y
-                << "), as a screenshot with a window border would: crop it to "
-                << sizeText(ourImage.width, ourImage.height) << " from there\n";
-        else
+    bool embedded = false;
+    if (const QString mismatch = CompareImage::sizeMismatch(imagePath, theirs, ourImage, embedded);
+        !mismatch.isEmpty()) {
+        err << mismatch;
+        if (!embedded)
             err << " ("
                 << (files.isEmpty() ? lit("--size %1 renders ours at their size")
                                           .arg(sizeText(theirs.width, theirs.height))
                                     : lit("its png command sets the size"))
-                << ")\n";
+                << ")";
+        err << '\n';
         err.flush();
         return ExitBadInput;
     }

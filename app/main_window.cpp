@@ -32,6 +32,7 @@
 #include "breakpoints_view.h"
 #include "camera_basis.h"
 #include "camera_basis_view.h"
+#include "compare_panel.h"
 #include "edit_panel.h"
 #include "examples.h"
 #include "frame_image_view.h"
@@ -343,6 +344,13 @@ void MainWindow::createDocks() {
     m_painter = new PainterView(m_inspection);
     tabifyDockWidget(scanlineDock, stageDock(tr("Painter"), "painterDock", m_painter,
                                              tr("Painter's algorithm (seed 004)")));
+    // A student's image against ours (File > Compare with Image...): hidden until then, and
+    // beside the geometry views, the taller of the two groups on the right.
+    m_compare = new ComparePanel(m_inspection);
+    m_compareDock = stageDock(tr("Compare"), "compareDock", m_compare,
+                              tr("Compare with their image"));
+    tabifyDockWidget(cameraDock, m_compareDock);
+    m_compareDock->hide();
     cameraDock->raise();
     scanlineDock->raise();
     resizeDocks({messagesDock}, {110}, Qt::Vertical);
@@ -969,6 +977,41 @@ void MainWindow::exportDialog() {
     const QString path =
         QFileDialog::getSaveFileName(this, tr("Export PNG"), name, tr("PNG images (*.png)"));
     if (!path.isEmpty()) exportImage(path);
+}
+
+void MainWindow::compareDialog() {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Compare with Image"), QString(),
+                                                      tr("PNG images (*.png);;All files (*)"));
+    if (!path.isEmpty()) compareWithImage(path);
+}
+
+bool MainWindow::compareWithImage(const QString& path) {
+    const QString problem = m_compare->compare(path);
+    if (!problem.isEmpty()) {
+        showError(problem);
+        return false;
+    }
+    // The first time, a window of its own over this one, large enough for two images and the
+    // diagnosis (the right-hand group is too small for them); it can be docked like the others.
+    if (!m_compareShown) {
+        m_compareShown = true;
+        if (m_compareDock->isHidden()) {
+            m_compareDock->setFloating(true);
+            const QRect area = geometry();
+            const QSize size(std::min(1000, area.width() * 3 / 4),
+                             std::min(860, area.height() * 9 / 10));
+            m_compareDock->setGeometry(
+                QRect(area.center() - QPoint(size.width(), size.height()) / 2, size));
+        }
+    }
+    m_compareDock->show();
+    m_compareDock->raise();
+    statusBar()->showMessage(
+        tr("Compared %1 with our render: %n pixel(s) differ", "",
+           int(m_compare->comparison()->differing))
+            .arg(QFileInfo(path).fileName()),
+        8000);
+    return true;
 }
 
 void MainWindow::about() {

@@ -44,6 +44,7 @@ class AccuracyPanel;
 class AnimationPanel;
 class BreakpointsView;
 class CameraBasisView;
+class ComparePanel;
 class EditPanel;
 class NormalsView;
 class PixelInspector;
@@ -105,6 +106,10 @@ public:
     // frame 0) as frame_0000.png ... in folder, with a progress dialog that can cancel; the
     // number written (0 with the error shown when a file cannot be written).
     int exportAnimationFrames(const QString& folder);
+    // File > Compare with Image...: their PNG against our render of the frame shown, in the
+    // Compare dock (shown and raised); false with the error shown (as the command line words
+    // it) and the dock as it was when the image cannot be compared.
+    bool compareWithImage(const QString& path);
 
     const SceneDocument& document() const { return m_document; }
     std::shared_ptr<const rl::FrameTrace> currentFrame() const { return m_frame.trace; }
@@ -131,6 +136,7 @@ public:
     PixelInspector* pixelInspector() const { return m_inspector; }
     EditPanel* editPanel() const { return m_edit; }
     AnimationPanel* animationPanel() const { return m_animation; }
+    ComparePanel* comparePanel() const { return m_compare; }
     QStringList recentFiles() const;
     QStringList watchedFiles() const { return m_watcher.files(); }
     // The files the scene shown was read from (built-in parts left out).
@@ -280,6 +286,7 @@ private:
     void exportBufferDialog(int which);
     void exportSequenceDialog();
     void exportAnimationDialog();
+    void compareDialog();
     void onAnimationPlaying(bool playing);
     void about();
     void showShortcuts();
@@ -314,6 +321,9 @@ private:
     PixelInspector* m_inspector = nullptr;
     EditPanel* m_edit = nullptr;
     AnimationPanel* m_animation = nullptr;
+    ComparePanel* m_compare = nullptr;
+    QDockWidget* m_compareDock = nullptr;
+    bool m_compareShown = false;  // the Compare dock was shown once (floated the first time)
     QListWidget* m_messages = nullptr;
     QTextBrowser* m_summary = nullptr;
     QLabel* m_pixelLabel = nullptr;

@@ -573,7 +573,7 @@ void TestMainWindow::coveredViewsRefreshWhenRaised() {
 void TestMainWindow::docks() {
     MainWindow window;
     const QList<QDockWidget*> docks = window.findChildren<QDockWidget*>();
-    QCOMPARE(docks.size(), 16);
+    QCOMPARE(docks.size(), 17);
     std::set<QString> names;
     for (const QDockWidget* dock : docks) {
         QVERIFY2(!dock->objectName().isEmpty(), qPrintable(dock->windowTitle()));
@@ -588,7 +588,8 @@ void TestMainWindow::docks() {
         QStringLiteral("scanlineDock"),    QStringLiteral("pixelInspectorDock"),
         QStringLiteral("vertexTableDock"), QStringLiteral("normalsDock"),
         QStringLiteral("animationDock"),   QStringLiteral("nearClipDock"),
-        QStringLiteral("trapezoidDock"),   QStringLiteral("painterDock")};
+        QStringLiteral("trapezoidDock"),   QStringLiteral("painterDock"),
+        QStringLiteral("compareDock")};
     QCOMPARE(names, expected);
     const auto* messagesDock = window.findChild<QDockWidget*>(QStringLiteral("messagesDock"));
     QVERIFY(messagesDock);

@@ -2421,6 +2421,323 @@
     </message>
 </context>
 <context>
+    <name>rasterlab::CompareImage</name>
+    <message>
+        <location filename="../app/compare_image.cpp" line="26"/>
+        <source>no such file</source>
+        <translation>no such file</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_image.cpp" line="28"/>
+        <source>a folder, not a PNG image</source>
+        <translation>a folder, not a PNG image</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_image.cpp" line="30"/>
+        <source>the file is empty</source>
+        <translation>the file is empty</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_image.cpp" line="41"/>
+        <source>not a PNG image</source>
+        <translation>not a PNG image</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_image.cpp" line="42"/>
+        <source>not a PNG image (a %1 image)</source>
+        <translation>not a PNG image (a %1 image)</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_image.cpp" line="44"/>
+        <source>the PNG is cut short (it does not end with its IEND chunk)</source>
+        <translation>the PNG is cut short (it does not end with its IEND chunk)</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_image.cpp" line="48"/>
+        <source>cannot read the PNG: %1</source>
+        <translation>cannot read the PNG: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_image.cpp" line="69"/>
+        <source>the image is %1, ours is %2</source>
+        <translation>the image is %1, ours is %2</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_image.cpp" line="73"/>
+        <source>; it holds ours at (%1, %2), as a screenshot with a window border would: crop it to %3 from there</source>
+        <translation>; it holds ours at (%1, %2), as a screenshot with a window border would: crop it to %3 from there</translation>
+    </message>
+</context>
+<context>
+    <name>rasterlab::ComparePanel</name>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="130"/>
+        <location filename="../app/compare_panel.cpp" line="134"/>
+        <source>R %1, G %2, B %3, A %4</source>
+        <translation>R %1, G %2, B %3, A %4</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="144"/>
+        <source>red</source>
+        <translation>red</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="146"/>
+        <source>green</source>
+        <translation>green</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="148"/>
+        <source>blue</source>
+        <translation>blue</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="150"/>
+        <source>alpha</source>
+        <translation>alpha</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="157"/>
+        <source>%1 and %2</source>
+        <translation>%1 and %2</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="173"/>
+        <source>Side by side</source>
+        <translation>Side by side</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="174"/>
+        <source>Flicker</source>
+        <translation>Flicker</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="175"/>
+        <source>Difference</source>
+        <translation>Difference</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="177"/>
+        <source>Theirs beside ours, one after the other twice a second, or the pixels that differ</source>
+        <translation>Theirs beside ours, one after the other twice a second, or the pixels that differ</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="180"/>
+        <source>Differ by more than</source>
+        <translation>Differ by more than</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="186"/>
+        <source>The difference view shows the pixels where some channel differs by more than this (0: every difference)</source>
+        <translation>The difference view shows the pixels where some channel differs by more than this (0: every difference)</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="191"/>
+        <source>Compare Again</source>
+        <translation>Compare Again</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="194"/>
+        <source>The scene changed since the comparison: compare their image with the scene shown now</source>
+        <translation>The scene changed since the comparison: compare their image with the scene shown now</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="218"/>
+        <source>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</source>
+        <translation>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="256"/>
+        <source>There is no render to compare with yet.</source>
+        <translation>There is no render to compare with yet.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="343"/>
+        <location filename="../app/compare_panel.cpp" line="346"/>
+        <source>Theirs</source>
+        <translation>Theirs</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="343"/>
+        <location filename="../app/compare_panel.cpp" line="346"/>
+        <source>Ours</source>
+        <translation>Ours</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/compare_panel.cpp" line="351"/>
+        <source>%n pixel(s) differ by more than %1</source>
+        <translation>
+            <numerusform>%n pixel differs by more than %1</numerusform>
+            <numerusform>%n pixels differ by more than %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="377"/>
+        <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
+        <translation>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="385"/>
+        <source>Largest difference per channel: %1.</source>
+        <translation>Largest difference per channel: %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="386"/>
+        <source>Mean difference per channel, over the differing pixels: %1.</source>
+        <translation>Mean difference per channel, over the differing pixels: %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="388"/>
+        <source>Pixels only one side covers: %1 only ours (our depth buffer), %2 only theirs (not the background).</source>
+        <translation>Pixels only one side covers: %1 only ours (our depth buffer), %2 only theirs (not the background).</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="394"/>
+        <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
+        <translation>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="401"/>
+        <source>The images are the same.</source>
+        <translation>The images are the same.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="403"/>
+        <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
+        <translation>Diagnosis: none of the mistakes RasterLab knows explains these differences.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="406"/>
+        <source>Diagnosis, most likely first:</source>
+        <translation>Diagnosis, most likely first:</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="413"/>
+        <source>Explains %1% of the differing pixels (%2 of %3).</source>
+        <translation>Explains %1% of the differing pixels (%2 of %3).</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="418"/>
+        <source>Evidence: %1</source>
+        <translation>Evidence: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="419"/>
+        <source>Check: %1</source>
+        <translation>Check: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="421"/>
+        <source>At (%1, %2): ours %3, theirs %4</source>
+        <translation>At (%1, %2): ours %3, theirs %4</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="437"/>
+        <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
+        <translation>Pick a pixel (here or on the image) to see their colour beside ours.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="445"/>
+        <source>Pixel (%1, %2): theirs %3, ours %4.</source>
+        <translation>Pixel (%1, %2): theirs %3, ours %4.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="452"/>
+        <source>minus %1 in %2</source>
+        <translation>minus %1 in %2</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="453"/>
+        <source>plus %1 in %2</source>
+        <translation>plus %1 in %2</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="456"/>
+        <source>Their colour is ours.</source>
+        <translation>Their colour is ours.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="460"/>
+        <source>Their colour is ours %1.</source>
+        <translation>Their colour is ours %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="462"/>
+        <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
+        <translation>The scene has changed since the comparison: the lighting shown now is not the one compared.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="474"/>
+        <source>No triangle of ours covers this pixel: it is the background.</source>
+        <translation>No triangle of ours covers this pixel: it is the background.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="478"/>
+        <source>The lighting of this pixel is not known.</source>
+        <translation>The lighting of this pixel is not known.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="481"/>
+        <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
+        <translation>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="511"/>
+        <source>the ambient term Ia·ka</source>
+        <translation>the ambient term Ia·ka</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="512"/>
+        <source>the diffuse term Il·Od·kd·(N·L)</source>
+        <translation>the diffuse term Il·Od·kd·(N·L)</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="513"/>
+        <source>the specular term Il·ks·(R·V)^n</source>
+        <translation>the specular term Il·ks·(R·V)^n</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="529"/>
+        <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
+        <translation>• %1 is 0 in %2 here: changing it alone cannot give their colour.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="534"/>
+        <source>• %1 would have to be below 0 in %2: not this term alone.</source>
+        <translation>• %1 would have to be below 0 in %2: not this term alone.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="551"/>
+        <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
+        <translation>• %1 would have to be %2 instead of %3, × %4 per channel</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="554"/>
+        <source>: the term left out</source>
+        <translation>: the term left out</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="557"/>
+        <source>: that is the term times Od %1</source>
+        <translation>: that is the term times Od %1</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="560"/>
+        <source>: that is the term without Od %1</source>
+        <translation>: that is the term without Od %1</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="566"/>
+        <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
+        <translation>(%1: 255 in both images, clamped; any value at least as high gives it.)</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="569"/>
+        <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
+        <translation>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</translation>
+    </message>
+</context>
+<context>
     <name>rasterlab::EditPanel</name>
     <message>
         <location filename="../app/edit_panel.cpp" line="218"/>
@@ -2876,32 +3193,32 @@
 <context>
     <name>rasterlab::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="62"/>
+        <location filename="../app/main_window.cpp" line="65"/>
         <source>Open Camera</source>
         <translation>Open Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="64"/>
+        <location filename="../app/main_window.cpp" line="67"/>
         <source>Open Lighting</source>
         <translation>Open Lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="66"/>
+        <location filename="../app/main_window.cpp" line="69"/>
         <source>Open Object</source>
         <translation>Open Object</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="74"/>
+        <location filename="../app/main_window.cpp" line="77"/>
         <source>Camera files (*.cfg *.txt);;All files (*)</source>
         <translation>Camera files (*.cfg *.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="76"/>
+        <location filename="../app/main_window.cpp" line="79"/>
         <source>Lighting files (*.txt *.lux);;All files (*)</source>
         <translation>Lighting files (*.txt *.lux);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="78"/>
+        <location filename="../app/main_window.cpp" line="81"/>
         <source>Objects (*.byu *.txt);;All files (*)</source>
         <translation>Objects (*.byu *.txt);;All files (*)</translation>
     </message>
@@ -2911,116 +3228,116 @@
         <translation>Detect from the file</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="87"/>
+        <location filename="../app/main_window.cpp" line="90"/>
         <source>flat</source>
         <translation>flat</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="89"/>
+        <location filename="../app/main_window.cpp" line="92"/>
         <location filename="../app/main_window_export.cpp" line="70"/>
         <source>Gouraud</source>
         <translation>Gouraud</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="91"/>
+        <location filename="../app/main_window.cpp" line="94"/>
         <location filename="../app/main_window_export.cpp" line="70"/>
         <source>Phong</source>
         <translation>Phong</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="93"/>
+        <location filename="../app/main_window.cpp" line="96"/>
         <source>painter&apos;s-algorithm flat</source>
         <translation>painter&apos;s-algorithm flat</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="102"/>
+        <location filename="../app/main_window.cpp" line="105"/>
         <source>%1 (built in)</source>
         <translation>%1 (built in)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="110"/>
+        <location filename="../app/main_window.cpp" line="113"/>
         <source>RasterLab</source>
         <translation>RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="166"/>
+        <location filename="../app/main_window.cpp" line="169"/>
         <source>Stopped at a breakpoint: %1</source>
         <translation>Stopped at a breakpoint: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="199"/>
+        <location filename="../app/main_window.cpp" line="202"/>
         <location filename="../app/main_window_export.cpp" line="122"/>
         <location filename="../app/main_window_export.cpp" line="159"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="200"/>
+        <location filename="../app/main_window.cpp" line="203"/>
         <source>Stop preparing the stepping of this frame</source>
         <translation>Stop preparing the stepping of this frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="204"/>
+        <location filename="../app/main_window.cpp" line="207"/>
         <source>cancelled</source>
         <translation>cancelled</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="256"/>
+        <location filename="../app/main_window.cpp" line="265"/>
         <source>Stepping</source>
         <translation>Stepping</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="280"/>
+        <location filename="../app/main_window.cpp" line="289"/>
         <source>Edit</source>
         <translation>Edit</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="287"/>
+        <location filename="../app/main_window.cpp" line="296"/>
         <source>Breakpoints</source>
         <translation>Breakpoints</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="293"/>
+        <location filename="../app/main_window.cpp" line="302"/>
         <source>Animation</source>
         <translation>Animation</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="312"/>
+        <location filename="../app/main_window.cpp" line="321"/>
         <source>1 Camera basis</source>
         <translation>1 Camera basis</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="284"/>
+        <location filename="../app/main_window.cpp" line="293"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Pixel inspector (lighting)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="319"/>
+        <location filename="../app/main_window.cpp" line="328"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 View coordinates (vertices)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="321"/>
+        <location filename="../app/main_window.cpp" line="330"/>
         <source>3 Normals</source>
         <translation>3 Normals</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="323"/>
+        <location filename="../app/main_window.cpp" line="332"/>
         <source>4 Projection</source>
         <translation>4 Projection</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="315"/>
+        <location filename="../app/main_window.cpp" line="324"/>
         <source>5 Scan conversion</source>
         <translation>5 Scan conversion</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="329"/>
+        <location filename="../app/main_window.cpp" line="338"/>
         <source>5b Trapezoids</source>
         <translation>5b Trapezoids</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="333"/>
+        <location filename="../app/main_window.cpp" line="342"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
     </message>
@@ -3030,42 +3347,42 @@
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="152"/>
+        <location filename="../app/main_window_actions.cpp" line="157"/>
         <source>&amp;Animation Frames...</source>
         <translation>&amp;Animation Frames...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="288"/>
+        <location filename="../app/main_window_actions.cpp" line="293"/>
         <source>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</source>
         <translation>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="982"/>
+        <location filename="../app/main_window.cpp" line="1033"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>step forward, back (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="984"/>
+        <location filename="../app/main_window.cpp" line="1035"/>
         <source>Space</source>
         <translation>Space</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="984"/>
+        <location filename="../app/main_window.cpp" line="1035"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>play / pause (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="990"/>
+        <location filename="../app/main_window.cpp" line="1041"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>let go of the picked pixel (on the image)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="991"/>
+        <location filename="../app/main_window.cpp" line="1042"/>
         <source>presentation mode on / off</source>
         <translation>presentation mode on / off</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="996"/>
+        <location filename="../app/main_window.cpp" line="1047"/>
         <source>save, undo, redo</source>
         <translation>save, undo, redo</translation>
     </message>
@@ -3075,7 +3392,7 @@
         <translation>Open &amp;Camera...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="131"/>
+        <location filename="../app/main_window.cpp" line="134"/>
         <source>Draw with the Plain Divide</source>
         <translation>Draw with the Plain Divide</translation>
     </message>
@@ -3115,337 +3432,347 @@
         <translation>&amp;Default Scene</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="93"/>
+        <location filename="../app/main_window_actions.cpp" line="98"/>
         <source>&amp;Camera</source>
         <translation>&amp;Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="105"/>
+        <location filename="../app/main_window_actions.cpp" line="110"/>
         <source>&amp;Lighting</source>
         <translation>&amp;Lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="121"/>
+        <location filename="../app/main_window_actions.cpp" line="126"/>
         <source>&amp;Export PNG...</source>
         <translation>&amp;Export PNG...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="122"/>
+        <location filename="../app/main_window_actions.cpp" line="127"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="124"/>
+        <location filename="../app/main_window_actions.cpp" line="129"/>
         <source>Export &amp;More</source>
         <translation>Export &amp;More</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="127"/>
+        <location filename="../app/main_window_actions.cpp" line="132"/>
         <source>Image as &amp;Displayed...</source>
         <translation>Image as &amp;Displayed...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="128"/>
+        <location filename="../app/main_window_actions.cpp" line="133"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="129"/>
+        <location filename="../app/main_window_actions.cpp" line="134"/>
         <source>&amp;Colour Buffer at the Cursor...</source>
         <translation>&amp;Colour Buffer at the Cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="131"/>
+        <location filename="../app/main_window_actions.cpp" line="136"/>
         <source>D&amp;epth Buffer at the Cursor...</source>
         <translation>D&amp;epth Buffer at the Cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="133"/>
+        <location filename="../app/main_window_actions.cpp" line="138"/>
         <source>&amp;Normal Buffer...</source>
         <translation>&amp;Normal Buffer...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="134"/>
+        <location filename="../app/main_window_actions.cpp" line="139"/>
         <source>A &amp;View as Displayed</source>
         <translation>A &amp;View as Displayed</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="138"/>
+        <location filename="../app/main_window_actions.cpp" line="143"/>
         <source>Export View</source>
         <translation>Export View</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="150"/>
+        <location filename="../app/main_window_actions.cpp" line="155"/>
         <source>&amp;Stepping Sequence...</source>
         <translation>&amp;Stepping Sequence...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="85"/>
+        <location filename="../app/main_window_actions.cpp" line="90"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="143"/>
+        <location filename="../app/main_window_actions.cpp" line="85"/>
+        <source>Compare with &amp;Image...</source>
+        <translation>Compare with &amp;Image...</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_actions.cpp" line="87"/>
+        <source>A PNG of your own renderer against this scene&apos;s render, with the likely mistakes</source>
+        <translation>A PNG of your own renderer against this scene&apos;s render, with the likely mistakes</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_actions.cpp" line="148"/>
         <source>Shading Side &amp;by Side...</source>
         <translation>Shading Side &amp;by Side...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="145"/>
+        <location filename="../app/main_window_actions.cpp" line="150"/>
         <source>Export Shading Side by Side</source>
         <translation>Export Shading Side by Side</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="157"/>
+        <location filename="../app/main_window_actions.cpp" line="162"/>
         <source>&amp;Edit</source>
         <translation>&amp;Edit</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="163"/>
+        <location filename="../app/main_window_actions.cpp" line="168"/>
         <source>&amp;View</source>
         <translation>&amp;View</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="164"/>
+        <location filename="../app/main_window_actions.cpp" line="169"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Fit to Window</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="165"/>
+        <location filename="../app/main_window_actions.cpp" line="170"/>
         <source>Ctrl+0</source>
         <translation>Ctrl+0</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="167"/>
+        <location filename="../app/main_window_actions.cpp" line="172"/>
         <source>&amp;Actual Size</source>
         <translation>&amp;Actual Size</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="168"/>
+        <location filename="../app/main_window_actions.cpp" line="173"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="169"/>
+        <location filename="../app/main_window_actions.cpp" line="174"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;In</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="171"/>
+        <location filename="../app/main_window_actions.cpp" line="176"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom &amp;Out</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="178"/>
+        <location filename="../app/main_window_actions.cpp" line="183"/>
         <source>Reset &amp;Layout</source>
         <translation>Reset &amp;Layout</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="180"/>
+        <location filename="../app/main_window_actions.cpp" line="185"/>
         <source>Fill the &amp;Window with a Panel</source>
         <translation>Fill the &amp;Window with a Panel</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="184"/>
+        <location filename="../app/main_window_actions.cpp" line="189"/>
         <source>The panel with the focus or under the mouse (the image, from the image) over the whole window; again, the layout back</source>
         <translation>The panel with the focus or under the mouse (the image, from the image) over the whole window; again, the layout back</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="192"/>
+        <location filename="../app/main_window_actions.cpp" line="197"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Presentation Mode</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="197"/>
+        <location filename="../app/main_window_actions.cpp" line="202"/>
         <source>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</source>
         <translation>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="212"/>
+        <location filename="../app/main_window_actions.cpp" line="217"/>
         <source>The System&apos;s</source>
         <translation>The System&apos;s</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="231"/>
+        <location filename="../app/main_window_actions.cpp" line="236"/>
         <source>S&amp;tep</source>
         <translation>S&amp;tep</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="251"/>
+        <location filename="../app/main_window_actions.cpp" line="256"/>
         <source>Pick the Pixel Under the &amp;Mouse</source>
         <translation>Pick the Pixel Under the &amp;Mouse</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="252"/>
+        <location filename="../app/main_window_actions.cpp" line="257"/>
         <source>Ctrl+G</source>
         <translation>Ctrl+G</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="281"/>
+        <location filename="../app/main_window_actions.cpp" line="286"/>
         <source>&amp;Shading</source>
         <translation>&amp;Shading</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="285"/>
+        <location filename="../app/main_window_actions.cpp" line="290"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (per pixel)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="286"/>
+        <location filename="../app/main_window_actions.cpp" line="291"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (per vertex)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="287"/>
+        <location filename="../app/main_window_actions.cpp" line="292"/>
         <source>&amp;Flat (per triangle)</source>
         <translation>&amp;Flat (per triangle)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="329"/>
+        <location filename="../app/main_window_actions.cpp" line="334"/>
         <source>Pro&amp;jection</source>
         <translation>Pro&amp;jection</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="334"/>
+        <location filename="../app/main_window_actions.cpp" line="339"/>
         <source>&amp;Clip at the Near Plane (nothing behind the eye is divided)</source>
         <translation>&amp;Clip at the Near Plane (nothing behind the eye is divided)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="336"/>
+        <location filename="../app/main_window_actions.cpp" line="341"/>
         <source>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</source>
         <translation>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="338"/>
+        <location filename="../app/main_window_actions.cpp" line="343"/>
         <source>&amp;Same Side (clip only triangles that cross the eye plane)</source>
         <translation>&amp;Same Side (clip only triangles that cross the eye plane)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="621"/>
+        <location filename="../app/main_window.cpp" line="637"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="926"/>
+        <location filename="../app/main_window.cpp" line="942"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="979"/>
+        <location filename="../app/main_window.cpp" line="1030"/>
         <source>step forward</source>
         <translation>step forward</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="980"/>
+        <location filename="../app/main_window.cpp" line="1031"/>
         <source>step back</source>
         <translation>step back</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="983"/>
+        <location filename="../app/main_window.cpp" line="1034"/>
         <source>play / pause</source>
         <translation>play / pause</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="985"/>
+        <location filename="../app/main_window.cpp" line="1036"/>
         <source>jump to the start / the end of the frame</source>
         <translation>jump to the start / the end of the frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="986"/>
+        <location filename="../app/main_window.cpp" line="1037"/>
         <source>continue to the next breakpoint</source>
         <translation>continue to the next breakpoint</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="987"/>
+        <location filename="../app/main_window.cpp" line="1038"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>step by stage, triangle, scanline, span, pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="988"/>
+        <location filename="../app/main_window.cpp" line="1039"/>
         <source>show a stage&apos;s view</source>
         <translation>show a stage&apos;s view</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="989"/>
+        <location filename="../app/main_window.cpp" line="1040"/>
         <source>Click, arrows</source>
         <translation>Click, arrows</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="989"/>
+        <location filename="../app/main_window.cpp" line="1040"/>
         <source>pick a pixel, move it by one</source>
         <translation>pick a pixel, move it by one</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="992"/>
+        <location filename="../app/main_window.cpp" line="1043"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, double-click on a panel&apos;s title</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="993"/>
+        <location filename="../app/main_window.cpp" line="1044"/>
         <source>fill the window with the panel (the image, from the image), and back</source>
         <translation>fill the window with the panel (the image, from the image), and back</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="995"/>
+        <location filename="../app/main_window.cpp" line="1046"/>
         <source>open, export the image, export it as displayed</source>
         <translation>open, export the image, export it as displayed</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="998"/>
+        <location filename="../app/main_window.cpp" line="1049"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>fit, actual size, zoom in, zoom out</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1000"/>
+        <location filename="../app/main_window.cpp" line="1051"/>
         <source>Keyboard Shortcuts</source>
         <translation>Keyboard Shortcuts</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="306"/>
+        <location filename="../app/main_window_actions.cpp" line="311"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Rasterization Rules</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="311"/>
+        <location filename="../app/main_window_actions.cpp" line="316"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="313"/>
+        <location filename="../app/main_window_actions.cpp" line="318"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="315"/>
+        <location filename="../app/main_window_actions.cpp" line="320"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (seed 001&apos;s reference images)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="352"/>
+        <location filename="../app/main_window_actions.cpp" line="357"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="355"/>
+        <location filename="../app/main_window_actions.cpp" line="360"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="265"/>
+        <location filename="../app/main_window.cpp" line="274"/>
         <source>Messages</source>
         <translation>Messages</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="270"/>
+        <location filename="../app/main_window.cpp" line="279"/>
         <source>Scene</source>
         <translation>Scene</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="290"/>
+        <location filename="../app/main_window.cpp" line="299"/>
         <source>Accuracy</source>
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="595"/>
+        <location filename="../app/main_window.cpp" line="611"/>
         <location filename="../app/main_window_export.cpp" line="35"/>
         <location filename="../app/main_window_export.cpp" line="133"/>
         <location filename="../app/main_window_export.cpp" line="175"/>
@@ -3464,18 +3791,18 @@
         <translation>Exported %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="648"/>
+        <location filename="../app/main_window.cpp" line="664"/>
         <source>rendering...</source>
         <translation>rendering...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="648"/>
+        <location filename="../app/main_window.cpp" line="664"/>
         <source>%1, rendering...</source>
         <translation>%1, rendering...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="646"/>
-        <location filename="../app/main_window.cpp" line="889"/>
+        <location filename="../app/main_window.cpp" line="662"/>
+        <location filename="../app/main_window.cpp" line="905"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -3500,247 +3827,275 @@
         <translation>Ctrl+Shift+B</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="91"/>
+        <location filename="../app/main_window_actions.cpp" line="96"/>
         <source>Course File La&amp;youts</source>
         <translation>Course File La&amp;youts</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="174"/>
+        <location filename="../app/main_window_actions.cpp" line="179"/>
         <source>Pa&amp;nels</source>
         <translation>Pa&amp;nels</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="189"/>
+        <location filename="../app/main_window_actions.cpp" line="194"/>
         <source>I&amp;mage</source>
         <translation>I&amp;mage</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="207"/>
+        <location filename="../app/main_window_actions.cpp" line="212"/>
         <source>Lan&amp;guage</source>
         <translation>Lan&amp;guage</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="240"/>
+        <location filename="../app/main_window_actions.cpp" line="245"/>
         <source>Step B&amp;y</source>
         <translation>Step B&amp;y</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="242"/>
+        <location filename="../app/main_window_actions.cpp" line="247"/>
         <source>S&amp;tage</source>
         <translation>S&amp;tage</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="353"/>
+        <location filename="../app/main_window_actions.cpp" line="358"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Keyboard Shortcuts</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="361"/>
+        <location filename="../app/main_window.cpp" line="377"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="578"/>
+        <location filename="../app/main_window.cpp" line="594"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="656"/>
+        <location filename="../app/main_window.cpp" line="672"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparing the stepping of this frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="656"/>
+        <location filename="../app/main_window.cpp" line="672"/>
         <source>Rendering</source>
         <translation>Rendering</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="832"/>
+        <location filename="../app/main_window.cpp" line="848"/>
         <source>Error: %1</source>
         <translation>Error: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="856"/>
+        <location filename="../app/main_window.cpp" line="872"/>
         <source>Files</source>
         <translation>Files</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="859"/>
+        <location filename="../app/main_window.cpp" line="875"/>
         <source>Command file</source>
         <translation>Command file</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="860"/>
+        <location filename="../app/main_window.cpp" line="876"/>
         <source>Image</source>
         <translation>Image</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="862"/>
+        <location filename="../app/main_window.cpp" line="878"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="872"/>
+        <location filename="../app/main_window.cpp" line="888"/>
         <source>Camera</source>
         <translation>Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="873"/>
+        <location filename="../app/main_window.cpp" line="889"/>
         <source>Lighting</source>
         <translation>Lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="874"/>
+        <location filename="../app/main_window.cpp" line="890"/>
         <source>Object</source>
         <translation>Object</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="876"/>
+        <location filename="../app/main_window.cpp" line="892"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="250"/>
-        <location filename="../app/main_window.cpp" line="883"/>
+        <location filename="../app/main_window.cpp" line="259"/>
+        <location filename="../app/main_window.cpp" line="899"/>
         <source>Stages</source>
         <translation>Stages</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="100"/>
+        <location filename="../app/main_window.cpp" line="103"/>
         <source>%1 (the %2 example)</source>
         <translation>%1 (the %2 example)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="283"/>
+        <location filename="../app/main_window.cpp" line="292"/>
         <source>7 Pixel inspector</source>
         <translation>7 Pixel inspector</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="312"/>
+        <location filename="../app/main_window.cpp" line="321"/>
         <source>1 Camera</source>
         <translation>1 Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="315"/>
+        <location filename="../app/main_window.cpp" line="324"/>
         <source>5 Scan</source>
         <translation>5 Scan</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="318"/>
+        <location filename="../app/main_window.cpp" line="327"/>
         <source>2 View</source>
         <translation>2 View</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="326"/>
+        <location filename="../app/main_window.cpp" line="335"/>
         <source>4b Clipping</source>
         <translation>4b Clipping</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="328"/>
+        <location filename="../app/main_window.cpp" line="337"/>
         <source>4b Near-plane clipping (seed 002)</source>
         <translation>4b Near-plane clipping (seed 002)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="331"/>
+        <location filename="../app/main_window.cpp" line="340"/>
         <source>5b Trapezoids: the scan of seed 002</source>
         <translation>5b Trapezoids: the scan of seed 002</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="336"/>
+        <location filename="../app/main_window.cpp" line="345"/>
         <source>Painter</source>
         <translation>Painter</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="337"/>
+        <location filename="../app/main_window.cpp" line="346"/>
         <source>Painter&apos;s algorithm (seed 004)</source>
         <translation>Painter&apos;s algorithm (seed 004)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="854"/>
+        <location filename="../app/main_window.cpp" line="350"/>
+        <source>Compare</source>
+        <translation>Compare</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="351"/>
+        <source>Compare with their image</source>
+        <translation>Compare with their image</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="870"/>
         <source>Lesson: %1</source>
         <translation>Lesson: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="890"/>
+        <location filename="../app/main_window.cpp" line="906"/>
         <source>skipped: %1</source>
         <translation>skipped: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="893"/>
+        <location filename="../app/main_window.cpp" line="909"/>
         <source>Counts</source>
         <translation>Counts</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="894"/>
+        <location filename="../app/main_window.cpp" line="910"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="897"/>
+        <location filename="../app/main_window.cpp" line="913"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="900"/>
+        <location filename="../app/main_window.cpp" line="916"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="904"/>
+        <location filename="../app/main_window.cpp" line="920"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="928"/>
+        <location filename="../app/main_window.cpp" line="944"/>
         <source>empty (+inf)</source>
         <translation>empty (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="929"/>
+        <location filename="../app/main_window.cpp" line="945"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   depth %6</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="945"/>
+        <location filename="../app/main_window.cpp" line="961"/>
         <source>Open Command File</source>
         <translation>Open Command File</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="946"/>
+        <location filename="../app/main_window.cpp" line="962"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Command files (*.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="952"/>
+        <location filename="../app/main_window.cpp" line="968"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="952"/>
+        <location filename="../app/main_window.cpp" line="968"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="962"/>
+        <location filename="../app/main_window.cpp" line="978"/>
         <source>Export PNG</source>
         <translation>Export PNG</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="962"/>
-        <location filename="../app/main_window_actions.cpp" line="139"/>
-        <location filename="../app/main_window_actions.cpp" line="146"/>
+        <location filename="../app/main_window.cpp" line="978"/>
+        <location filename="../app/main_window_actions.cpp" line="144"/>
+        <location filename="../app/main_window_actions.cpp" line="151"/>
         <location filename="../app/main_window_export.cpp" line="198"/>
         <location filename="../app/main_window_export.cpp" line="206"/>
         <source>PNG images (*.png)</source>
         <translation>PNG images (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="967"/>
+        <location filename="../app/main_window.cpp" line="983"/>
+        <source>Compare with Image</source>
+        <translation>Compare with Image</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="984"/>
+        <source>PNG images (*.png);;All files (*)</source>
+        <translation>PNG images (*.png);;All files (*)</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/main_window.cpp" line="1010"/>
+        <source>Compared %1 with our render: %n pixel(s) differ</source>
+        <translation>
+            <numerusform>Compared %1 with our render: %n pixel differs</numerusform>
+            <numerusform>Compared %1 with our render: %n pixels differ</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="1018"/>
         <source>About RasterLab</source>
         <translation>About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="968"/>
+        <location filename="../app/main_window.cpp" line="1019"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</translation>
     </message>
@@ -4831,303 +5186,303 @@
         <translation>black: the diffuse and specular terms are 0 here and there is no ambient</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="388"/>
+        <location filename="../views/lighting_breakdown.cpp" line="389"/>
         <source>Light %1, directional toward %2 (view), Il = %3</source>
         <translation>Light %1, directional toward %2 (view), Il = %3</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="389"/>
+        <location filename="../views/lighting_breakdown.cpp" line="390"/>
         <source>Light %1 at %2 (view), Il = %3</source>
         <translation>Light %1 at %2 (view), Il = %3</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="392"/>
+        <location filename="../views/lighting_breakdown.cpp" line="393"/>
         <source>  at the point itself (L = 0): nothing</source>
         <translation>  at the point itself (L = 0): nothing</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="397"/>
+        <location filename="../views/lighting_breakdown.cpp" line="398"/>
         <source>att = 1 / (%1 + %2 × %3 + %4 × %3²) = %5</source>
         <translation>att = 1 / (%1 + %2 × %3 + %4 × %3²) = %5</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="401"/>
+        <location filename="../views/lighting_breakdown.cpp" line="402"/>
         <source>d = %1, not attenuated</source>
         <translation>d = %1, not attenuated</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="403"/>
+        <location filename="../views/lighting_breakdown.cpp" line="404"/>
         <source>spot: −L.D = %1 &lt; cos %2° = %3, outside the cone: 0</source>
         <translation>spot: −L.D = %1 &lt; cos %2° = %3, outside the cone: 0</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="406"/>
+        <location filename="../views/lighting_breakdown.cpp" line="407"/>
         <source>spot: −L.D = %1 ≥ cos %2° = %3, %1^%4 = %5</source>
         <translation>spot: −L.D = %1 ≥ cos %2° = %3, %1^%4 = %5</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="414"/>
+        <location filename="../views/lighting_breakdown.cpp" line="415"/>
         <source>  N.L = %1 &lt; 0: behind the surface, nothing</source>
         <translation>  N.L = %1 &lt; 0: behind the surface, nothing</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="416"/>
+        <location filename="../views/lighting_breakdown.cpp" line="417"/>
         <source>  N.L = %1, %2 = %3: diffuse %4, specular %5</source>
         <translation>  N.L = %1, %2 = %3: diffuse %4, specular %5</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="132"/>
+        <location filename="../views/lighting_breakdown.cpp" line="133"/>
         <source>N flipped toward the viewer: V.N &lt; 0, so N := −N before lighting.</source>
         <translation>N flipped toward the viewer: V.N &lt; 0, so N := −N before lighting.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="135"/>
+        <location filename="../views/lighting_breakdown.cpp" line="136"/>
         <source>Zero normal: only degenerate triangles meet here, or the vertex normals cancel out; ambient only.</source>
         <translation>Zero normal: only degenerate triangles meet here, or the vertex normals cancel out; ambient only.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="139"/>
+        <location filename="../views/lighting_breakdown.cpp" line="140"/>
         <source>The light is at the point itself (L = 0): it adds nothing.</source>
         <translation>The light is at the point itself (L = 0): it adds nothing.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="142"/>
+        <location filename="../views/lighting_breakdown.cpp" line="143"/>
         <source>N.L &lt; 0: the light is behind the surface; no diffuse, no specular.</source>
         <translation>N.L &lt; 0: the light is behind the surface; no diffuse, no specular.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="145"/>
+        <location filename="../views/lighting_breakdown.cpp" line="146"/>
         <source>R.V &lt; 0: the reflected ray points away from the viewer; no specular.</source>
         <translation>R.V &lt; 0: the reflected ray points away from the viewer; no specular.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="162"/>
+        <location filename="../views/lighting_breakdown.cpp" line="163"/>
         <source>Outside the cone of light %1: −L.D = %2 is below cos %3° = %4; it adds nothing here.</source>
         <translation>Outside the cone of light %1: −L.D = %2 is below cos %3° = %4; it adds nothing here.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="170"/>
+        <location filename="../views/lighting_breakdown.cpp" line="171"/>
         <source>One-sided lighting: the back of the surface is seen (V.N &lt; 0) and N is not turned toward the viewer.</source>
         <translation>One-sided lighting: the back of the surface is seen (V.N &lt; 0) and N is not turned toward the viewer.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="180"/>
+        <location filename="../views/lighting_breakdown.cpp" line="181"/>
         <source>Texture at (s, t) = (%1, %2): texel %3.</source>
         <translation>Texture at (s, t) = (%1, %2): texel %3.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="185"/>
+        <location filename="../views/lighting_breakdown.cpp" line="186"/>
         <source>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1; the images&apos; (int)(s w + 0.5) mod w gives %2, which these rules follow.</source>
         <translation>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1; the images&apos; (int)(s w + 0.5) mod w gives %2, which these rules follow.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="189"/>
+        <location filename="../views/lighting_breakdown.cpp" line="190"/>
         <source>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1, which these rules follow; the images&apos; (int)(s w + 0.5) mod w gives %2.</source>
         <translation>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1, which these rules follow; the images&apos; (int)(s w + 0.5) mod w gives %2.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="206"/>
+        <location filename="../views/lighting_breakdown.cpp" line="207"/>
         <source>Clamped: %1 above the colour scale %2, written as byte 255.</source>
         <translation>Clamped: %1 above the colour scale %2, written as byte 255.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="215"/>
+        <location filename="../views/lighting_breakdown.cpp" line="216"/>
         <source>%1 (clamped)</source>
         <translation>%1 (clamped)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="220"/>
+        <location filename="../views/lighting_breakdown.cpp" line="221"/>
         <source>Gouraud shading, the vertices&apos; colours mixed</source>
         <translation>Gouraud shading, the vertices&apos; colours mixed</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="221"/>
+        <location filename="../views/lighting_breakdown.cpp" line="222"/>
         <source>C = α C1 + β C2 + γ C3</source>
         <translation>C = α C1 + β C2 + γ C3</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="237"/>
+        <location filename="../views/lighting_breakdown.cpp" line="238"/>
         <source>not lit, the object colour as it is</source>
         <translation>not lit, the object colour as it is</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="238"/>
+        <location filename="../views/lighting_breakdown.cpp" line="239"/>
         <source>I = O (the object colour)</source>
         <translation>I = O (the object colour)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="247"/>
+        <location filename="../views/lighting_breakdown.cpp" line="248"/>
         <source>the course&apos;s Phong lighting model</source>
         <translation>the course&apos;s Phong lighting model</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="248"/>
+        <location filename="../views/lighting_breakdown.cpp" line="249"/>
         <source>Lambert with Blinn-Phong highlights (command files)</source>
         <translation>Lambert with Blinn-Phong highlights (command files)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="250"/>
+        <location filename="../views/lighting_breakdown.cpp" line="251"/>
         <source>Painter&apos;s algorithm: lit as flat shading, once at the triangle&apos;s barycentre; the triangles are painted far to near without a depth test.</source>
         <translation>Painter&apos;s algorithm: lit as flat shading, once at the triangle&apos;s barycentre; the triangles are painted far to near without a depth test.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="255"/>
+        <location filename="../views/lighting_breakdown.cpp" line="256"/>
         <source>Flat shading: evaluated once, at the triangle&apos;s barycentre with the triangle&apos;s normal; every pixel of the triangle gets this colour.</source>
         <translation>Flat shading: evaluated once, at the triangle&apos;s barycentre with the triangle&apos;s normal; every pixel of the triangle gets this colour.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="259"/>
+        <location filename="../views/lighting_breakdown.cpp" line="260"/>
         <source>%1 lights: the diffuse and specular terms are sums over them; the numbers filled in are the first light&apos;s.</source>
         <translation>%1 lights: the diffuse and specular terms are sums over them; the numbers filled in are the first light&apos;s.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="278"/>
+        <location filename="../views/lighting_breakdown.cpp" line="279"/>
         <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)</source>
         <translation>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="279"/>
+        <location filename="../views/lighting_breakdown.cpp" line="280"/>
         <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)</source>
         <translation>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="280"/>
+        <location filename="../views/lighting_breakdown.cpp" line="281"/>
         <source>att = 1 / (kc + kl d + kq d²) for a positional light, 1 for a directional one; spot = (−L.D)^exp inside the cone, 0 outside, 1 for a light that is no spot.</source>
         <translation>att = 1 / (kc + kl d + kq d²) for a positional light, 1 for a directional one; spot = (−L.D)^exp inside the cone, 0 outside, 1 for a light that is no spot.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="285"/>
+        <location filename="../views/lighting_breakdown.cpp" line="286"/>
         <source>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</source>
         <translation>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="292"/>
+        <location filename="../views/lighting_breakdown.cpp" line="293"/>
         <source>I = Σ Il O (N.L) + Il (H.N)^s, over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L) + Il (H.N)^s, over the lights with N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="294"/>
+        <location filename="../views/lighting_breakdown.cpp" line="295"/>
         <source>I = Σ Il O (N.L), over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L), over the lights with N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="351"/>
+        <location filename="../views/lighting_breakdown.cpp" line="352"/>
         <source>%1 (the other lights)</source>
         <translation>%1 (the other lights)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="370"/>
+        <location filename="../views/lighting_breakdown.cpp" line="371"/>
         <source>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</source>
         <translation>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="374"/>
+        <location filename="../views/lighting_breakdown.cpp" line="375"/>
         <source>Il = %1, O = %2</source>
         <translation>Il = %1, O = %2</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="377"/>
+        <location filename="../views/lighting_breakdown.cpp" line="378"/>
         <source>Ke = %1: the material&apos;s own light</source>
         <translation>Ke = %1: the material&apos;s own light</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="489"/>
+        <location filename="../views/pixel_inspector.cpp" line="476"/>
         <source>start</source>
         <translation>start</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="495"/>
-        <location filename="../views/pixel_inspector.cpp" line="696"/>
+        <location filename="../views/pixel_inspector.cpp" line="482"/>
+        <location filename="../views/pixel_inspector.cpp" line="683"/>
         <source>end</source>
         <translation>end</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="503"/>
+        <location filename="../views/pixel_inspector.cpp" line="490"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>holds the pixel at the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="504"/>
+        <location filename="../views/pixel_inspector.cpp" line="491"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>not reached yet by the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="519"/>
+        <location filename="../views/pixel_inspector.cpp" line="506"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="520"/>
+        <location filename="../views/pixel_inspector.cpp" line="507"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Without stepping, the colours of writes overwritten later are not kept.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="637"/>
+        <location filename="../views/pixel_inspector.cpp" line="624"/>
         <source>Before: %1</source>
         <translation>Before: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="677"/>
+        <location filename="../views/pixel_inspector.cpp" line="664"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="680"/>
+        <location filename="../views/pixel_inspector.cpp" line="667"/>
         <source>The cleared pixel is not lit.</source>
         <translation>The cleared pixel is not lit.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="683"/>
+        <location filename="../views/pixel_inspector.cpp" line="670"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="695"/>
+        <location filename="../views/pixel_inspector.cpp" line="682"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Lighting of step %1, triangle %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="700"/>
+        <location filename="../views/pixel_inspector.cpp" line="687"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejected: this colour was never written)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="713"/>
+        <location filename="../views/pixel_inspector.cpp" line="700"/>
         <source>object colour</source>
         <translation>object colour</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="716"/>
+        <location filename="../views/pixel_inspector.cpp" line="703"/>
         <source>emission</source>
         <translation>emission</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="718"/>
+        <location filename="../views/pixel_inspector.cpp" line="705"/>
         <source>ambient</source>
         <translation>ambient</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="723"/>
+        <location filename="../views/pixel_inspector.cpp" line="710"/>
         <source>diffuse %1</source>
         <translation>diffuse %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="726"/>
+        <location filename="../views/pixel_inspector.cpp" line="713"/>
         <source>specular %1</source>
         <translation>specular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="730"/>
+        <location filename="../views/pixel_inspector.cpp" line="717"/>
         <source>diffuse</source>
         <translation>diffuse</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="732"/>
+        <location filename="../views/pixel_inspector.cpp" line="719"/>
         <source>specular</source>
         <translation>specular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="760"/>
+        <location filename="../views/pixel_inspector.cpp" line="747"/>
         <source>No special case: every term applies as written.</source>
         <translation>No special case: every term applies as written.</translation>
     </message>
@@ -6264,87 +6619,87 @@
 <context>
     <name>rasterlab::ZBufferView</name>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="160"/>
+        <location filename="../views/zbuffer_view.cpp" line="161"/>
         <source>Automatic range (nearest to farthest drawn)</source>
         <translation>Automatic range (nearest to farthest drawn)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="176"/>
+        <location filename="../views/zbuffer_view.cpp" line="177"/>
         <source>Grey (near white)</source>
         <translation>Grey (near white)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="177"/>
+        <location filename="../views/zbuffer_view.cpp" line="178"/>
         <source>False colour (near red, far blue)</source>
         <translation>False colour (near red, far blue)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="189"/>
+        <location filename="../views/zbuffer_view.cpp" line="190"/>
         <source>Nearest (white / red):</source>
         <translation>Nearest (white / red):</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="190"/>
+        <location filename="../views/zbuffer_view.cpp" line="191"/>
         <source>Farthest (dark / blue):</source>
         <translation>Farthest (dark / blue):</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="191"/>
+        <location filename="../views/zbuffer_view.cpp" line="192"/>
         <source>Colours:</source>
         <translation>Colours:</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="255"/>
+        <location filename="../views/zbuffer_view.cpp" line="264"/>
         <source>+&amp;infin;</source>
         <translation>+&amp;infin;</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="259"/>
+        <location filename="../views/zbuffer_view.cpp" line="268"/>
         <source>the view-space z of P&apos;</source>
         <translation>the view-space z of P&apos;</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="259"/>
+        <location filename="../views/zbuffer_view.cpp" line="268"/>
         <source>the NDC z</source>
         <translation>the NDC z</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="267"/>
+        <location filename="../views/zbuffer_view.cpp" line="276"/>
         <source>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</source>
         <translation>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="322"/>
+        <location filename="../views/zbuffer_view.cpp" line="331"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="339"/>
+        <location filename="../views/zbuffer_view.cpp" line="348"/>
         <source>No pixel holds a triangle: the buffer is all clear value.</source>
         <translation>No pixel holds a triangle: the buffer is all clear value.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="342"/>
+        <location filename="../views/zbuffer_view.cpp" line="351"/>
         <source>Drawn depths from %1 to %2; shown from %3 to %4.</source>
         <translation>Drawn depths from %1 to %2; shown from %3 to %4.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="348"/>
+        <location filename="../views/zbuffer_view.cpp" line="357"/>
         <source>%1 pixels nearer and %2 farther than the range are drawn at its ends.</source>
         <translation>%1 pixels nearer and %2 farther than the range are drawn at its ends.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="362"/>
+        <location filename="../views/zbuffer_view.cpp" line="371"/>
         <source>+inf</source>
         <translation>+inf</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="363"/>
+        <location filename="../views/zbuffer_view.cpp" line="372"/>
         <source>x %1, y %2: no triangle; the depth stays at the clear value %3</source>
         <translation>x %1, y %2: no triangle; the depth stays at the clear value %3</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="368"/>
+        <location filename="../views/zbuffer_view.cpp" line="377"/>
         <source>x %1, y %2: depth %3, triangle %4</source>
         <translation>x %1, y %2: depth %3, triangle %4</translation>
     </message>

@@ -2421,6 +2421,323 @@
     </message>
 </context>
 <context>
+    <name>rasterlab::CompareImage</name>
+    <message>
+        <location filename="../app/compare_image.cpp" line="26"/>
+        <source>no such file</source>
+        <translation>o arquivo não existe</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_image.cpp" line="28"/>
+        <source>a folder, not a PNG image</source>
+        <translation>uma pasta, não uma imagem PNG</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_image.cpp" line="30"/>
+        <source>the file is empty</source>
+        <translation>o arquivo está vazio</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_image.cpp" line="41"/>
+        <source>not a PNG image</source>
+        <translation>não é uma imagem PNG</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_image.cpp" line="42"/>
+        <source>not a PNG image (a %1 image)</source>
+        <translation>não é uma imagem PNG (é uma imagem %1)</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_image.cpp" line="44"/>
+        <source>the PNG is cut short (it does not end with its IEND chunk)</source>
+        <translation>o PNG está cortado (não termina com o seu bloco IEND)</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_image.cpp" line="48"/>
+        <source>cannot read the PNG: %1</source>
+        <translation>não foi possível ler o PNG: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_image.cpp" line="69"/>
+        <source>the image is %1, ours is %2</source>
+        <translation>a imagem tem %1, a nossa tem %2</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_image.cpp" line="73"/>
+        <source>; it holds ours at (%1, %2), as a screenshot with a window border would: crop it to %3 from there</source>
+        <translation>; ela contém a nossa em (%1, %2), como uma captura de tela com a borda da janela: recorte-a em %3 a partir dali</translation>
+    </message>
+</context>
+<context>
+    <name>rasterlab::ComparePanel</name>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="130"/>
+        <location filename="../app/compare_panel.cpp" line="134"/>
+        <source>R %1, G %2, B %3, A %4</source>
+        <translation>R %1, G %2, B %3, A %4</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="144"/>
+        <source>red</source>
+        <translation>vermelho</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="146"/>
+        <source>green</source>
+        <translation>verde</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="148"/>
+        <source>blue</source>
+        <translation>azul</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="150"/>
+        <source>alpha</source>
+        <translation>alfa</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="157"/>
+        <source>%1 and %2</source>
+        <translation>%1 e %2</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="173"/>
+        <source>Side by side</source>
+        <translation>Lado a lado</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="174"/>
+        <source>Flicker</source>
+        <translation>Alternar</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="175"/>
+        <source>Difference</source>
+        <translation>Diferença</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="177"/>
+        <source>Theirs beside ours, one after the other twice a second, or the pixels that differ</source>
+        <translation>A deles ao lado da nossa, uma depois da outra duas vezes por segundo, ou os pixels que diferem</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="180"/>
+        <source>Differ by more than</source>
+        <translation>Diferem em mais de</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="186"/>
+        <source>The difference view shows the pixels where some channel differs by more than this (0: every difference)</source>
+        <translation>A vista da diferença mostra os pixels em que algum canal difere em mais do que isto (0: toda diferença)</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="191"/>
+        <source>Compare Again</source>
+        <translation>Comparar de novo</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="194"/>
+        <source>The scene changed since the comparison: compare their image with the scene shown now</source>
+        <translation>A cena mudou desde a comparação: comparar a imagem deles com a cena mostrada agora</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="218"/>
+        <source>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</source>
+        <translation>Arquivo &gt; Comparar com imagem... compara um PNG do seu próprio renderizador com a renderização desta cena.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="256"/>
+        <source>There is no render to compare with yet.</source>
+        <translation>Ainda não há renderização com que comparar.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="343"/>
+        <location filename="../app/compare_panel.cpp" line="346"/>
+        <source>Theirs</source>
+        <translation>Deles</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="343"/>
+        <location filename="../app/compare_panel.cpp" line="346"/>
+        <source>Ours</source>
+        <translation>Nossa</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/compare_panel.cpp" line="351"/>
+        <source>%n pixel(s) differ by more than %1</source>
+        <translation>
+            <numerusform>%n pixel difere em mais de %1</numerusform>
+            <numerusform>%n pixels diferem em mais de %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="377"/>
+        <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
+        <translation>%1 contra a nossa renderização (%2x%3): %4 pixels comparados, %5 diferem (%6%).</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="385"/>
+        <source>Largest difference per channel: %1.</source>
+        <translation>Maior diferença por canal: %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="386"/>
+        <source>Mean difference per channel, over the differing pixels: %1.</source>
+        <translation>Diferença média por canal, nos pixels que diferem: %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="388"/>
+        <source>Pixels only one side covers: %1 only ours (our depth buffer), %2 only theirs (not the background).</source>
+        <translation>Pixels que só um lado cobre: %1 só nossos (o nosso buffer de profundidade), %2 só deles (não são o fundo).</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="394"/>
+        <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
+        <translation>A cena mudou desde esta comparação: Comparar de novo compara a imagem deles com a cena mostrada agora.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="401"/>
+        <source>The images are the same.</source>
+        <translation>As imagens são iguais.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="403"/>
+        <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
+        <translation>Diagnóstico: nenhum dos erros que o RasterLab conhece explica estas diferenças.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="406"/>
+        <source>Diagnosis, most likely first:</source>
+        <translation>Diagnóstico, o mais provável primeiro:</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="413"/>
+        <source>Explains %1% of the differing pixels (%2 of %3).</source>
+        <translation>Explica %1% dos pixels que diferem (%2 de %3).</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="418"/>
+        <source>Evidence: %1</source>
+        <translation>Evidência: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="419"/>
+        <source>Check: %1</source>
+        <translation>Verifique: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="421"/>
+        <source>At (%1, %2): ours %3, theirs %4</source>
+        <translation>Em (%1, %2): nossa %3, deles %4</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="437"/>
+        <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
+        <translation>Escolha um pixel (aqui ou na imagem) para ver a cor deles ao lado da nossa.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="445"/>
+        <source>Pixel (%1, %2): theirs %3, ours %4.</source>
+        <translation>Pixel (%1, %2): deles %3, nossa %4.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="452"/>
+        <source>minus %1 in %2</source>
+        <translation>menos %1 no %2</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="453"/>
+        <source>plus %1 in %2</source>
+        <translation>mais %1 no %2</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="456"/>
+        <source>Their colour is ours.</source>
+        <translation>A cor deles é a nossa.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="460"/>
+        <source>Their colour is ours %1.</source>
+        <translation>A cor deles é a nossa %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="462"/>
+        <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
+        <translation>A cena mudou desde a comparação: a iluminação mostrada agora não é a comparada.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="474"/>
+        <source>No triangle of ours covers this pixel: it is the background.</source>
+        <translation>Nenhum triângulo nosso cobre este pixel: é o fundo.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="478"/>
+        <source>The lighting of this pixel is not known.</source>
+        <translation>A iluminação deste pixel não é conhecida.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="481"/>
+        <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
+        <translation>Os termos que teriam de mudar são calculados para o modelo de iluminação do curso em sombreamento flat ou Phong; este pixel é sombreado de outro modo (o inspetor de pixel mostra como).</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="511"/>
+        <source>the ambient term Ia·ka</source>
+        <translation>o termo ambiente Ia·ka</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="512"/>
+        <source>the diffuse term Il·Od·kd·(N·L)</source>
+        <translation>o termo difuso Il·Od·kd·(N·L)</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="513"/>
+        <source>the specular term Il·ks·(R·V)^n</source>
+        <translation>o termo especular Il·ks·(R·V)^n</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="529"/>
+        <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
+        <translation>• %1 é 0 no %2 aqui: mudá-lo sozinho não dá a cor deles.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="534"/>
+        <source>• %1 would have to be below 0 in %2: not this term alone.</source>
+        <translation>• %1 teria de ser menor que 0 no %2: não é este termo sozinho.</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="551"/>
+        <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
+        <translation>• %1 teria de ser %2 em vez de %3, × %4 por canal</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="554"/>
+        <source>: the term left out</source>
+        <translation>: o termo omitido</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="557"/>
+        <source>: that is the term times Od %1</source>
+        <translation>: isto é, o termo vezes Od %1</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="560"/>
+        <source>: that is the term without Od %1</source>
+        <translation>: isto é, o termo sem Od %1</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="566"/>
+        <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
+        <translation>(%1: 255 nas duas imagens, limitado; qualquer valor pelo menos tão alto o dá.)</translation>
+    </message>
+    <message>
+        <location filename="../app/compare_panel.cpp" line="569"/>
+        <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
+        <translation>Nenhum termo mudado por um fator simples (omitido, vezes Od, sem Od) dá a cor deles: olhe vários termos, ou o que diz o diagnóstico.</translation>
+    </message>
+</context>
+<context>
     <name>rasterlab::EditPanel</name>
     <message>
         <location filename="../app/edit_panel.cpp" line="218"/>
@@ -2876,32 +3193,32 @@
 <context>
     <name>rasterlab::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="62"/>
+        <location filename="../app/main_window.cpp" line="65"/>
         <source>Open Camera</source>
         <translation>Abrir câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="64"/>
+        <location filename="../app/main_window.cpp" line="67"/>
         <source>Open Lighting</source>
         <translation>Abrir iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="66"/>
+        <location filename="../app/main_window.cpp" line="69"/>
         <source>Open Object</source>
         <translation>Abrir objeto</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="74"/>
+        <location filename="../app/main_window.cpp" line="77"/>
         <source>Camera files (*.cfg *.txt);;All files (*)</source>
         <translation>Arquivos de câmera (*.cfg *.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="76"/>
+        <location filename="../app/main_window.cpp" line="79"/>
         <source>Lighting files (*.txt *.lux);;All files (*)</source>
         <translation>Arquivos de iluminação (*.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="78"/>
+        <location filename="../app/main_window.cpp" line="81"/>
         <source>Objects (*.byu *.txt);;All files (*)</source>
         <translation>Objetos (*.byu *.txt);;Todos os arquivos (*)</translation>
     </message>
@@ -2911,116 +3228,116 @@
         <translation>Detectar pelo arquivo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="87"/>
+        <location filename="../app/main_window.cpp" line="90"/>
         <source>flat</source>
         <translation>flat</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="89"/>
+        <location filename="../app/main_window.cpp" line="92"/>
         <location filename="../app/main_window_export.cpp" line="70"/>
         <source>Gouraud</source>
         <translation>Gouraud</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="91"/>
+        <location filename="../app/main_window.cpp" line="94"/>
         <location filename="../app/main_window_export.cpp" line="70"/>
         <source>Phong</source>
         <translation>Phong</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="93"/>
+        <location filename="../app/main_window.cpp" line="96"/>
         <source>painter&apos;s-algorithm flat</source>
         <translation>flat do algoritmo do pintor</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="102"/>
+        <location filename="../app/main_window.cpp" line="105"/>
         <source>%1 (built in)</source>
         <translation>%1 (embutido)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="110"/>
+        <location filename="../app/main_window.cpp" line="113"/>
         <source>RasterLab</source>
         <translation>RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="166"/>
+        <location filename="../app/main_window.cpp" line="169"/>
         <source>Stopped at a breakpoint: %1</source>
         <translation>Parado num ponto de parada: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="199"/>
+        <location filename="../app/main_window.cpp" line="202"/>
         <location filename="../app/main_window_export.cpp" line="122"/>
         <location filename="../app/main_window_export.cpp" line="159"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="200"/>
+        <location filename="../app/main_window.cpp" line="203"/>
         <source>Stop preparing the stepping of this frame</source>
         <translation>Parar a preparação do passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="204"/>
+        <location filename="../app/main_window.cpp" line="207"/>
         <source>cancelled</source>
         <translation>cancelado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="256"/>
+        <location filename="../app/main_window.cpp" line="265"/>
         <source>Stepping</source>
         <translation>Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="280"/>
+        <location filename="../app/main_window.cpp" line="289"/>
         <source>Edit</source>
         <translation>Edição</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="287"/>
+        <location filename="../app/main_window.cpp" line="296"/>
         <source>Breakpoints</source>
         <translation>Pontos de parada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="293"/>
+        <location filename="../app/main_window.cpp" line="302"/>
         <source>Animation</source>
         <translation>Animação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="312"/>
+        <location filename="../app/main_window.cpp" line="321"/>
         <source>1 Camera basis</source>
         <translation>1 Base da câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="284"/>
+        <location filename="../app/main_window.cpp" line="293"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Inspetor de pixel (iluminação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="319"/>
+        <location filename="../app/main_window.cpp" line="328"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 Coordenadas de vista (vértices)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="321"/>
+        <location filename="../app/main_window.cpp" line="330"/>
         <source>3 Normals</source>
         <translation>3 Normais</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="323"/>
+        <location filename="../app/main_window.cpp" line="332"/>
         <source>4 Projection</source>
         <translation>4 Projeção</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="315"/>
+        <location filename="../app/main_window.cpp" line="324"/>
         <source>5 Scan conversion</source>
         <translation>5 Conversão por varredura</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="329"/>
+        <location filename="../app/main_window.cpp" line="338"/>
         <source>5b Trapezoids</source>
         <translation>5b Trapézios</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="333"/>
+        <location filename="../app/main_window.cpp" line="342"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
     </message>
@@ -3030,42 +3347,42 @@
         <translation>&amp;Arquivo</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="152"/>
+        <location filename="../app/main_window_actions.cpp" line="157"/>
         <source>&amp;Animation Frames...</source>
         <translation>&amp;Quadros da animação...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="288"/>
+        <location filename="../app/main_window_actions.cpp" line="293"/>
         <source>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</source>
         <translation>&amp;Algoritmo do pintor (flat, do mais distante ao mais próximo, sem teste de profundidade)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="982"/>
+        <location filename="../app/main_window.cpp" line="1033"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>avançar, voltar um passo (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="984"/>
+        <location filename="../app/main_window.cpp" line="1035"/>
         <source>Space</source>
         <translation>Barra de espaço</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="984"/>
+        <location filename="../app/main_window.cpp" line="1035"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>reproduzir / pausar (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="990"/>
+        <location filename="../app/main_window.cpp" line="1041"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>soltar o pixel escolhido (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="991"/>
+        <location filename="../app/main_window.cpp" line="1042"/>
         <source>presentation mode on / off</source>
         <translation>ligar / desligar o modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="996"/>
+        <location filename="../app/main_window.cpp" line="1047"/>
         <source>save, undo, redo</source>
         <translation>salvar, desfazer, refazer</translation>
     </message>
@@ -3075,7 +3392,7 @@
         <translation>Abrir &amp;câmera...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="131"/>
+        <location filename="../app/main_window.cpp" line="134"/>
         <source>Draw with the Plain Divide</source>
         <translation>Desenhar com a divisão simples</translation>
     </message>
@@ -3115,337 +3432,347 @@
         <translation>Cena &amp;padrão</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="93"/>
+        <location filename="../app/main_window_actions.cpp" line="98"/>
         <source>&amp;Camera</source>
         <translation>&amp;Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="105"/>
+        <location filename="../app/main_window_actions.cpp" line="110"/>
         <source>&amp;Lighting</source>
         <translation>&amp;Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="121"/>
+        <location filename="../app/main_window_actions.cpp" line="126"/>
         <source>&amp;Export PNG...</source>
         <translation>&amp;Exportar PNG...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="122"/>
+        <location filename="../app/main_window_actions.cpp" line="127"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="124"/>
+        <location filename="../app/main_window_actions.cpp" line="129"/>
         <source>Export &amp;More</source>
         <translation>E&amp;xportar mais</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="127"/>
+        <location filename="../app/main_window_actions.cpp" line="132"/>
         <source>Image as &amp;Displayed...</source>
         <translation>Imagem como &amp;exibida...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="128"/>
+        <location filename="../app/main_window_actions.cpp" line="133"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="129"/>
+        <location filename="../app/main_window_actions.cpp" line="134"/>
         <source>&amp;Colour Buffer at the Cursor...</source>
         <translation>Buffer de &amp;cor no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="131"/>
+        <location filename="../app/main_window_actions.cpp" line="136"/>
         <source>D&amp;epth Buffer at the Cursor...</source>
         <translation>Buffer de pro&amp;fundidade no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="133"/>
+        <location filename="../app/main_window_actions.cpp" line="138"/>
         <source>&amp;Normal Buffer...</source>
         <translation>Buffer de &amp;normais...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="134"/>
+        <location filename="../app/main_window_actions.cpp" line="139"/>
         <source>A &amp;View as Displayed</source>
         <translation>Um &amp;painel como exibido</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="138"/>
+        <location filename="../app/main_window_actions.cpp" line="143"/>
         <source>Export View</source>
         <translation>Exportar painel</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="150"/>
+        <location filename="../app/main_window_actions.cpp" line="155"/>
         <source>&amp;Stepping Sequence...</source>
         <translation>&amp;Sequência de passos...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="85"/>
+        <location filename="../app/main_window_actions.cpp" line="90"/>
         <source>&amp;Quit</source>
         <translation>Sai&amp;r</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="143"/>
+        <location filename="../app/main_window_actions.cpp" line="85"/>
+        <source>Compare with &amp;Image...</source>
+        <translation>Comparar com &amp;imagem...</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_actions.cpp" line="87"/>
+        <source>A PNG of your own renderer against this scene&apos;s render, with the likely mistakes</source>
+        <translation>Um PNG do seu próprio renderizador contra a renderização desta cena, com os erros prováveis</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_actions.cpp" line="148"/>
         <source>Shading Side &amp;by Side...</source>
         <translation>Sombreamentos &amp;lado a lado...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="145"/>
+        <location filename="../app/main_window_actions.cpp" line="150"/>
         <source>Export Shading Side by Side</source>
         <translation>Exportar os sombreamentos lado a lado</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="157"/>
+        <location filename="../app/main_window_actions.cpp" line="162"/>
         <source>&amp;Edit</source>
         <translation>&amp;Editar</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="163"/>
+        <location filename="../app/main_window_actions.cpp" line="168"/>
         <source>&amp;View</source>
         <translation>E&amp;xibir</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="164"/>
+        <location filename="../app/main_window_actions.cpp" line="169"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Ajustar à janela</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="165"/>
+        <location filename="../app/main_window_actions.cpp" line="170"/>
         <source>Ctrl+0</source>
         <translation>Ctrl+0</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="167"/>
+        <location filename="../app/main_window_actions.cpp" line="172"/>
         <source>&amp;Actual Size</source>
         <translation>&amp;Tamanho real</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="168"/>
+        <location filename="../app/main_window_actions.cpp" line="173"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="169"/>
+        <location filename="../app/main_window_actions.cpp" line="174"/>
         <source>Zoom &amp;In</source>
         <translation>A&amp;umentar zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="171"/>
+        <location filename="../app/main_window_actions.cpp" line="176"/>
         <source>Zoom &amp;Out</source>
         <translation>&amp;Diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="178"/>
+        <location filename="../app/main_window_actions.cpp" line="183"/>
         <source>Reset &amp;Layout</source>
         <translation>Restaurar &amp;layout</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="180"/>
+        <location filename="../app/main_window_actions.cpp" line="185"/>
         <source>Fill the &amp;Window with a Panel</source>
         <translation>&amp;Preencher a janela com um painel</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="184"/>
+        <location filename="../app/main_window_actions.cpp" line="189"/>
         <source>The panel with the focus or under the mouse (the image, from the image) over the whole window; again, the layout back</source>
         <translation>O painel com o foco ou sob o mouse (a imagem, a partir da imagem) sobre a janela inteira; de novo, o layout de volta</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="192"/>
+        <location filename="../app/main_window_actions.cpp" line="197"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="197"/>
+        <location filename="../app/main_window_actions.cpp" line="202"/>
         <source>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</source>
         <translation>Texto maior, sobreposições mais grossas, alto contraste; as teclas do passador de slides avançam os passos (F5 ou Esc)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="212"/>
+        <location filename="../app/main_window_actions.cpp" line="217"/>
         <source>The System&apos;s</source>
         <translation>Do sistema</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="231"/>
+        <location filename="../app/main_window_actions.cpp" line="236"/>
         <source>S&amp;tep</source>
         <translation>&amp;Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="251"/>
+        <location filename="../app/main_window_actions.cpp" line="256"/>
         <source>Pick the Pixel Under the &amp;Mouse</source>
         <translation>Escolher o pixel sob o &amp;mouse</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="252"/>
+        <location filename="../app/main_window_actions.cpp" line="257"/>
         <source>Ctrl+G</source>
         <translation>Ctrl+G</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="281"/>
+        <location filename="../app/main_window_actions.cpp" line="286"/>
         <source>&amp;Shading</source>
         <translation>&amp;Sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="285"/>
+        <location filename="../app/main_window_actions.cpp" line="290"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (por pixel)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="286"/>
+        <location filename="../app/main_window_actions.cpp" line="291"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (por vértice)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="287"/>
+        <location filename="../app/main_window_actions.cpp" line="292"/>
         <source>&amp;Flat (per triangle)</source>
         <translation>&amp;Flat (por triângulo)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="329"/>
+        <location filename="../app/main_window_actions.cpp" line="334"/>
         <source>Pro&amp;jection</source>
         <translation>Pro&amp;jeção</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="334"/>
+        <location filename="../app/main_window_actions.cpp" line="339"/>
         <source>&amp;Clip at the Near Plane (nothing behind the eye is divided)</source>
         <translation>&amp;Recortar no plano próximo (nada atrás do olho é dividido)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="336"/>
+        <location filename="../app/main_window_actions.cpp" line="341"/>
         <source>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</source>
         <translation>&amp;Divisão simples, sem recorte (a seed 000 como escrita; o HW2 da seed 001)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="338"/>
+        <location filename="../app/main_window_actions.cpp" line="343"/>
         <source>&amp;Same Side (clip only triangles that cross the eye plane)</source>
         <translation>&amp;Mesmo lado (recortar só os triângulos que cruzam o plano do olho)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="621"/>
+        <location filename="../app/main_window.cpp" line="637"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Todos os triângulos estão atrás da câmera (N aponta para longe do objeto?), então o recorte no plano próximo não deixa nada para desenhar. A fórmula da seed 000 divide por z mesmo assim: desenharia %1 dos %2 triângulos como a reflexão do objeto pelo olho, girada meia volta na tela, e o z-buffer (que guarda o menor z) guardaria o lado mais distante da câmera. A vista lateral da projeção mostra o olho, N e o objeto.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="926"/>
+        <location filename="../app/main_window.cpp" line="942"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="979"/>
+        <location filename="../app/main_window.cpp" line="1030"/>
         <source>step forward</source>
         <translation>avançar um passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="980"/>
+        <location filename="../app/main_window.cpp" line="1031"/>
         <source>step back</source>
         <translation>voltar um passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="983"/>
+        <location filename="../app/main_window.cpp" line="1034"/>
         <source>play / pause</source>
         <translation>reproduzir / pausar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="985"/>
+        <location filename="../app/main_window.cpp" line="1036"/>
         <source>jump to the start / the end of the frame</source>
         <translation>ir ao início / ao fim do quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="986"/>
+        <location filename="../app/main_window.cpp" line="1037"/>
         <source>continue to the next breakpoint</source>
         <translation>continuar até o próximo ponto de parada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="987"/>
+        <location filename="../app/main_window.cpp" line="1038"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>avançar por etapa, triângulo, linha de varredura, segmento, pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="988"/>
+        <location filename="../app/main_window.cpp" line="1039"/>
         <source>show a stage&apos;s view</source>
         <translation>mostrar o painel de uma etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="989"/>
+        <location filename="../app/main_window.cpp" line="1040"/>
         <source>Click, arrows</source>
         <translation>Clique, setas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="989"/>
+        <location filename="../app/main_window.cpp" line="1040"/>
         <source>pick a pixel, move it by one</source>
         <translation>escolher um pixel, movê-lo de um em um</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="992"/>
+        <location filename="../app/main_window.cpp" line="1043"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, duplo clique no título de um painel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="993"/>
+        <location filename="../app/main_window.cpp" line="1044"/>
         <source>fill the window with the panel (the image, from the image), and back</source>
         <translation>preencher a janela com o painel (a imagem, a partir da imagem), e voltar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="995"/>
+        <location filename="../app/main_window.cpp" line="1046"/>
         <source>open, export the image, export it as displayed</source>
         <translation>abrir, exportar a imagem, exportá-la como exibida</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="998"/>
+        <location filename="../app/main_window.cpp" line="1049"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>ajustar, tamanho real, aumentar zoom, diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1000"/>
+        <location filename="../app/main_window.cpp" line="1051"/>
         <source>Keyboard Shortcuts</source>
         <translation>Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="306"/>
+        <location filename="../app/main_window_actions.cpp" line="311"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Regras de rasterização</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="311"/>
+        <location filename="../app/main_window_actions.cpp" line="316"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Curso (semente 000: vértices em pixels inteiros, interpolação no espaço da tela)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="313"/>
+        <location filename="../app/main_window_actions.cpp" line="318"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>Como uma &amp;GPU (vértices em 1/256 de pixel, centros dos pixels, regra top-left, correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="315"/>
+        <location filename="../app/main_window_actions.cpp" line="320"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (as imagens de referência da semente 001)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="352"/>
+        <location filename="../app/main_window_actions.cpp" line="357"/>
         <source>&amp;Help</source>
         <translation>A&amp;juda</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="355"/>
+        <location filename="../app/main_window_actions.cpp" line="360"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="265"/>
+        <location filename="../app/main_window.cpp" line="274"/>
         <source>Messages</source>
         <translation>Mensagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="270"/>
+        <location filename="../app/main_window.cpp" line="279"/>
         <source>Scene</source>
         <translation>Cena</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="290"/>
+        <location filename="../app/main_window.cpp" line="299"/>
         <source>Accuracy</source>
         <translation>Exatidão</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="595"/>
+        <location filename="../app/main_window.cpp" line="611"/>
         <location filename="../app/main_window_export.cpp" line="35"/>
         <location filename="../app/main_window_export.cpp" line="133"/>
         <location filename="../app/main_window_export.cpp" line="175"/>
@@ -3464,18 +3791,18 @@
         <translation>Exportado %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="648"/>
+        <location filename="../app/main_window.cpp" line="664"/>
         <source>rendering...</source>
         <translation>renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="648"/>
+        <location filename="../app/main_window.cpp" line="664"/>
         <source>%1, rendering...</source>
         <translation>%1, renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="646"/>
-        <location filename="../app/main_window.cpp" line="889"/>
+        <location filename="../app/main_window.cpp" line="662"/>
+        <location filename="../app/main_window.cpp" line="905"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -3500,247 +3827,275 @@
         <translation>Ctrl+Shift+B</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="91"/>
+        <location filename="../app/main_window_actions.cpp" line="96"/>
         <source>Course File La&amp;youts</source>
         <translation>&amp;Formatos dos arquivos do curso</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="174"/>
+        <location filename="../app/main_window_actions.cpp" line="179"/>
         <source>Pa&amp;nels</source>
         <translation>&amp;Painéis</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="189"/>
+        <location filename="../app/main_window_actions.cpp" line="194"/>
         <source>I&amp;mage</source>
         <translation>&amp;Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="207"/>
+        <location filename="../app/main_window_actions.cpp" line="212"/>
         <source>Lan&amp;guage</source>
         <translation>Idi&amp;oma</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="240"/>
+        <location filename="../app/main_window_actions.cpp" line="245"/>
         <source>Step B&amp;y</source>
         <translation>Avançar &amp;por</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="242"/>
+        <location filename="../app/main_window_actions.cpp" line="247"/>
         <source>S&amp;tage</source>
         <translation>&amp;Etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="353"/>
+        <location filename="../app/main_window_actions.cpp" line="358"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="361"/>
+        <location filename="../app/main_window.cpp" line="377"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Modo de apresentação: F5 ou Esc para sair; Page Down, seta para a direita e barra de espaço avançam e reproduzem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="578"/>
+        <location filename="../app/main_window.cpp" line="594"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="656"/>
+        <location filename="../app/main_window.cpp" line="672"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparando o passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="656"/>
+        <location filename="../app/main_window.cpp" line="672"/>
         <source>Rendering</source>
         <translation>Renderizando</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="832"/>
+        <location filename="../app/main_window.cpp" line="848"/>
         <source>Error: %1</source>
         <translation>Erro: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="856"/>
+        <location filename="../app/main_window.cpp" line="872"/>
         <source>Files</source>
         <translation>Arquivos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="859"/>
+        <location filename="../app/main_window.cpp" line="875"/>
         <source>Command file</source>
         <translation>Arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="860"/>
+        <location filename="../app/main_window.cpp" line="876"/>
         <source>Image</source>
         <translation>Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="862"/>
+        <location filename="../app/main_window.cpp" line="878"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vértices, %2 triângulos em %3 desenhos; %4 x %5 pixels; %6 luzes</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="872"/>
+        <location filename="../app/main_window.cpp" line="888"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="873"/>
+        <location filename="../app/main_window.cpp" line="889"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="874"/>
+        <location filename="../app/main_window.cpp" line="890"/>
         <source>Object</source>
         <translation>Objeto</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="876"/>
+        <location filename="../app/main_window.cpp" line="892"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vértices, %2 triângulos; %3 x %4 pixels, sombreamento %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="250"/>
-        <location filename="../app/main_window.cpp" line="883"/>
+        <location filename="../app/main_window.cpp" line="259"/>
+        <location filename="../app/main_window.cpp" line="899"/>
         <source>Stages</source>
         <translation>Etapas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="100"/>
+        <location filename="../app/main_window.cpp" line="103"/>
         <source>%1 (the %2 example)</source>
         <translation>%1 (o exemplo %2)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="283"/>
+        <location filename="../app/main_window.cpp" line="292"/>
         <source>7 Pixel inspector</source>
         <translation>7 Inspetor de pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="312"/>
+        <location filename="../app/main_window.cpp" line="321"/>
         <source>1 Camera</source>
         <translation>1 Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="315"/>
+        <location filename="../app/main_window.cpp" line="324"/>
         <source>5 Scan</source>
         <translation>5 Varredura</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="318"/>
+        <location filename="../app/main_window.cpp" line="327"/>
         <source>2 View</source>
         <translation>2 Vista</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="326"/>
+        <location filename="../app/main_window.cpp" line="335"/>
         <source>4b Clipping</source>
         <translation>4b Recorte</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="328"/>
+        <location filename="../app/main_window.cpp" line="337"/>
         <source>4b Near-plane clipping (seed 002)</source>
         <translation>4b Recorte no plano próximo (semente 002)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="331"/>
+        <location filename="../app/main_window.cpp" line="340"/>
         <source>5b Trapezoids: the scan of seed 002</source>
         <translation>5b Trapézios: a varredura da semente 002</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="336"/>
+        <location filename="../app/main_window.cpp" line="345"/>
         <source>Painter</source>
         <translation>Pintor</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="337"/>
+        <location filename="../app/main_window.cpp" line="346"/>
         <source>Painter&apos;s algorithm (seed 004)</source>
         <translation>Algoritmo do pintor (semente 004)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="854"/>
+        <location filename="../app/main_window.cpp" line="350"/>
+        <source>Compare</source>
+        <translation>Comparar</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="351"/>
+        <source>Compare with their image</source>
+        <translation>Comparar com a imagem deles</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="870"/>
         <source>Lesson: %1</source>
         <translation>Aula: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="890"/>
+        <location filename="../app/main_window.cpp" line="906"/>
         <source>skipped: %1</source>
         <translation>omitida: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="893"/>
+        <location filename="../app/main_window.cpp" line="909"/>
         <source>Counts</source>
         <translation>Contagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="894"/>
+        <location filename="../app/main_window.cpp" line="910"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triângulos recortados no plano próximo: %1; atrás da câmera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="897"/>
+        <location filename="../app/main_window.cpp" line="913"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Triângulos de área zero: %1 no espaço de vista, %2 na tela&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="900"/>
+        <location filename="../app/main_window.cpp" line="916"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragmentos testados: %1; escritos: %2; rejeitados: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="904"/>
+        <location filename="../app/main_window.cpp" line="920"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels sombreados: %1; normais voltadas para o observador: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; limitados a 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="928"/>
+        <location filename="../app/main_window.cpp" line="944"/>
         <source>empty (+inf)</source>
         <translation>vazio (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="929"/>
+        <location filename="../app/main_window.cpp" line="945"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   profundidade %6</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="945"/>
+        <location filename="../app/main_window.cpp" line="961"/>
         <source>Open Command File</source>
         <translation>Abrir arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="946"/>
+        <location filename="../app/main_window.cpp" line="962"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Arquivos de comandos (*.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="952"/>
+        <location filename="../app/main_window.cpp" line="968"/>
         <source>Open</source>
         <translation>Abrir</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="952"/>
+        <location filename="../app/main_window.cpp" line="968"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Arquivos de cena (*.byu *.cfg *.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="962"/>
+        <location filename="../app/main_window.cpp" line="978"/>
         <source>Export PNG</source>
         <translation>Exportar PNG</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="962"/>
-        <location filename="../app/main_window_actions.cpp" line="139"/>
-        <location filename="../app/main_window_actions.cpp" line="146"/>
+        <location filename="../app/main_window.cpp" line="978"/>
+        <location filename="../app/main_window_actions.cpp" line="144"/>
+        <location filename="../app/main_window_actions.cpp" line="151"/>
         <location filename="../app/main_window_export.cpp" line="198"/>
         <location filename="../app/main_window_export.cpp" line="206"/>
         <source>PNG images (*.png)</source>
         <translation>Imagens PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="967"/>
+        <location filename="../app/main_window.cpp" line="983"/>
+        <source>Compare with Image</source>
+        <translation>Comparar com imagem</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="984"/>
+        <source>PNG images (*.png);;All files (*)</source>
+        <translation>Imagens PNG (*.png);;Todos os arquivos (*)</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/main_window.cpp" line="1010"/>
+        <source>Compared %1 with our render: %n pixel(s) differ</source>
+        <translation>
+            <numerusform>%1 comparada com a nossa renderização: %n pixel difere</numerusform>
+            <numerusform>%1 comparada com a nossa renderização: %n pixels diferem</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="1018"/>
         <source>About RasterLab</source>
         <translation>Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="968"/>
+        <location filename="../app/main_window.cpp" line="1019"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;O pipeline clássico de rasterização por software, etapa por etapa: base da câmera, coordenadas de vista, normais, projeção, conversão por varredura, teste de profundidade e sombreamento.&lt;/p&gt;</translation>
     </message>
@@ -4831,303 +5186,303 @@
         <translation>preto: os termos difuso e especular valem 0 aqui e não há ambiente</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="388"/>
+        <location filename="../views/lighting_breakdown.cpp" line="389"/>
         <source>Light %1, directional toward %2 (view), Il = %3</source>
         <translation>Luz %1, direcional, na direção %2 (vista), Il = %3</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="389"/>
+        <location filename="../views/lighting_breakdown.cpp" line="390"/>
         <source>Light %1 at %2 (view), Il = %3</source>
         <translation>Luz %1 em %2 (vista), Il = %3</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="392"/>
+        <location filename="../views/lighting_breakdown.cpp" line="393"/>
         <source>  at the point itself (L = 0): nothing</source>
         <translation>  no próprio ponto (L = 0): nada</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="397"/>
+        <location filename="../views/lighting_breakdown.cpp" line="398"/>
         <source>att = 1 / (%1 + %2 × %3 + %4 × %3²) = %5</source>
         <translation>att = 1 / (%1 + %2 × %3 + %4 × %3²) = %5</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="401"/>
+        <location filename="../views/lighting_breakdown.cpp" line="402"/>
         <source>d = %1, not attenuated</source>
         <translation>d = %1, sem atenuação</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="403"/>
+        <location filename="../views/lighting_breakdown.cpp" line="404"/>
         <source>spot: −L.D = %1 &lt; cos %2° = %3, outside the cone: 0</source>
         <translation>spot: −L.D = %1 &lt; cos %2° = %3, fora do cone: 0</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="406"/>
+        <location filename="../views/lighting_breakdown.cpp" line="407"/>
         <source>spot: −L.D = %1 ≥ cos %2° = %3, %1^%4 = %5</source>
         <translation>spot: −L.D = %1 ≥ cos %2° = %3, %1^%4 = %5</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="414"/>
+        <location filename="../views/lighting_breakdown.cpp" line="415"/>
         <source>  N.L = %1 &lt; 0: behind the surface, nothing</source>
         <translation>  N.L = %1 &lt; 0: atrás da superfície, nada</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="416"/>
+        <location filename="../views/lighting_breakdown.cpp" line="417"/>
         <source>  N.L = %1, %2 = %3: diffuse %4, specular %5</source>
         <translation>  N.L = %1, %2 = %3: difusa %4, especular %5</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="132"/>
+        <location filename="../views/lighting_breakdown.cpp" line="133"/>
         <source>N flipped toward the viewer: V.N &lt; 0, so N := −N before lighting.</source>
         <translation>N invertida para o observador: V.N &lt; 0, então N := −N antes da iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="135"/>
+        <location filename="../views/lighting_breakdown.cpp" line="136"/>
         <source>Zero normal: only degenerate triangles meet here, or the vertex normals cancel out; ambient only.</source>
         <translation>Normal nula: só triângulos degenerados se encontram aqui, ou as normais dos vértices se anulam; só ambiente.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="139"/>
+        <location filename="../views/lighting_breakdown.cpp" line="140"/>
         <source>The light is at the point itself (L = 0): it adds nothing.</source>
         <translation>A luz está no próprio ponto (L = 0): não acrescenta nada.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="142"/>
+        <location filename="../views/lighting_breakdown.cpp" line="143"/>
         <source>N.L &lt; 0: the light is behind the surface; no diffuse, no specular.</source>
         <translation>N.L &lt; 0: a luz está atrás da superfície; sem difusa, sem especular.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="145"/>
+        <location filename="../views/lighting_breakdown.cpp" line="146"/>
         <source>R.V &lt; 0: the reflected ray points away from the viewer; no specular.</source>
         <translation>R.V &lt; 0: o raio refletido aponta para longe do observador; sem especular.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="162"/>
+        <location filename="../views/lighting_breakdown.cpp" line="163"/>
         <source>Outside the cone of light %1: −L.D = %2 is below cos %3° = %4; it adds nothing here.</source>
         <translation>Fora do cone da luz %1: −L.D = %2 está abaixo de cos %3° = %4; ela não acrescenta nada aqui.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="170"/>
+        <location filename="../views/lighting_breakdown.cpp" line="171"/>
         <source>One-sided lighting: the back of the surface is seen (V.N &lt; 0) and N is not turned toward the viewer.</source>
         <translation>Iluminação de um lado só: vê-se o verso da superfície (V.N &lt; 0) e N não é voltada para o observador.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="180"/>
+        <location filename="../views/lighting_breakdown.cpp" line="181"/>
         <source>Texture at (s, t) = (%1, %2): texel %3.</source>
         <translation>Textura em (s, t) = (%1, %2): texel %3.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="185"/>
+        <location filename="../views/lighting_breakdown.cpp" line="186"/>
         <source>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1; the images&apos; (int)(s w + 0.5) mod w gives %2, which these rules follow.</source>
         <translation>O texto da seed 001 e as suas imagens de referência discordam aqui: o texel mais próximo de (s w, t h) depois de as coordenadas darem a volta é %1; o (int)(s w + 0.5) mod w das imagens dá %2, que estas regras seguem.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="189"/>
+        <location filename="../views/lighting_breakdown.cpp" line="190"/>
         <source>Seed 001&apos;s text and its reference images disagree here: the texel nearest to (s w, t h) once the coordinates wrap is %1, which these rules follow; the images&apos; (int)(s w + 0.5) mod w gives %2.</source>
         <translation>O texto da seed 001 e as suas imagens de referência discordam aqui: o texel mais próximo de (s w, t h) depois de as coordenadas darem a volta é %1, que estas regras seguem; o (int)(s w + 0.5) mod w das imagens dá %2.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="206"/>
+        <location filename="../views/lighting_breakdown.cpp" line="207"/>
         <source>Clamped: %1 above the colour scale %2, written as byte 255.</source>
         <translation>Limitado: %1 acima da escala de cor %2, escrito como byte 255.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="215"/>
+        <location filename="../views/lighting_breakdown.cpp" line="216"/>
         <source>%1 (clamped)</source>
         <translation>%1 (limitado)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="220"/>
+        <location filename="../views/lighting_breakdown.cpp" line="221"/>
         <source>Gouraud shading, the vertices&apos; colours mixed</source>
         <translation>sombreamento de Gouraud, as cores dos vértices misturadas</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="221"/>
+        <location filename="../views/lighting_breakdown.cpp" line="222"/>
         <source>C = α C1 + β C2 + γ C3</source>
         <translation>C = α C1 + β C2 + γ C3</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="237"/>
+        <location filename="../views/lighting_breakdown.cpp" line="238"/>
         <source>not lit, the object colour as it is</source>
         <translation>sem iluminação, a cor do objeto tal como é</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="238"/>
+        <location filename="../views/lighting_breakdown.cpp" line="239"/>
         <source>I = O (the object colour)</source>
         <translation>I = O (a cor do objeto)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="247"/>
+        <location filename="../views/lighting_breakdown.cpp" line="248"/>
         <source>the course&apos;s Phong lighting model</source>
         <translation>o modelo de iluminação de Phong do curso</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="248"/>
+        <location filename="../views/lighting_breakdown.cpp" line="249"/>
         <source>Lambert with Blinn-Phong highlights (command files)</source>
         <translation>Lambert com brilhos de Blinn-Phong (arquivos de comandos)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="250"/>
+        <location filename="../views/lighting_breakdown.cpp" line="251"/>
         <source>Painter&apos;s algorithm: lit as flat shading, once at the triangle&apos;s barycentre; the triangles are painted far to near without a depth test.</source>
         <translation>Algoritmo do pintor: iluminado como no sombreamento flat, uma vez no baricentro do triângulo; os triângulos são pintados do mais distante ao mais próximo, sem teste de profundidade.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="255"/>
+        <location filename="../views/lighting_breakdown.cpp" line="256"/>
         <source>Flat shading: evaluated once, at the triangle&apos;s barycentre with the triangle&apos;s normal; every pixel of the triangle gets this colour.</source>
         <translation>Sombreamento flat: avaliado uma vez, no baricentro do triângulo, com a normal do triângulo; todo pixel do triângulo recebe esta cor.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="259"/>
+        <location filename="../views/lighting_breakdown.cpp" line="260"/>
         <source>%1 lights: the diffuse and specular terms are sums over them; the numbers filled in are the first light&apos;s.</source>
         <translation>%1 luzes: os termos difuso e especular são somas sobre elas; os números preenchidos são os da primeira luz.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="278"/>
+        <location filename="../views/lighting_breakdown.cpp" line="279"/>
         <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)</source>
         <translation>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (N.H)^n)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="279"/>
+        <location filename="../views/lighting_breakdown.cpp" line="280"/>
         <source>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)</source>
         <translation>I = Ke + Ia ka + Σ att spot (Il Od kd (N.L) + Il ks (R.V)^n)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="280"/>
+        <location filename="../views/lighting_breakdown.cpp" line="281"/>
         <source>att = 1 / (kc + kl d + kq d²) for a positional light, 1 for a directional one; spot = (−L.D)^exp inside the cone, 0 outside, 1 for a light that is no spot.</source>
         <translation>att = 1 / (kc + kl d + kq d²) para uma luz posicional, 1 para uma direcional; spot = (−L.D)^exp dentro do cone, 0 fora dele, 1 para uma luz que não é spot.</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="285"/>
+        <location filename="../views/lighting_breakdown.cpp" line="286"/>
         <source>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</source>
         <translation>I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="292"/>
+        <location filename="../views/lighting_breakdown.cpp" line="293"/>
         <source>I = Σ Il O (N.L) + Il (H.N)^s, over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L) + Il (H.N)^s, sobre as luzes com N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="294"/>
+        <location filename="../views/lighting_breakdown.cpp" line="295"/>
         <source>I = Σ Il O (N.L), over the lights with N.L ≥ 0</source>
         <translation>I = Σ Il O (N.L), sobre as luzes com N.L ≥ 0</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="351"/>
+        <location filename="../views/lighting_breakdown.cpp" line="352"/>
         <source>%1 (the other lights)</source>
         <translation>%1 (as outras luzes)</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="370"/>
+        <location filename="../views/lighting_breakdown.cpp" line="371"/>
         <source>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</source>
         <translation>Ia = %1, ka = %2, Il = %3, Od = %4, kd = %5, ks = %6</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="374"/>
+        <location filename="../views/lighting_breakdown.cpp" line="375"/>
         <source>Il = %1, O = %2</source>
         <translation>Il = %1, O = %2</translation>
     </message>
     <message>
-        <location filename="../views/lighting_breakdown.cpp" line="377"/>
+        <location filename="../views/lighting_breakdown.cpp" line="378"/>
         <source>Ke = %1: the material&apos;s own light</source>
         <translation>Ke = %1: a luz própria do material</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="489"/>
+        <location filename="../views/pixel_inspector.cpp" line="476"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="495"/>
-        <location filename="../views/pixel_inspector.cpp" line="696"/>
+        <location filename="../views/pixel_inspector.cpp" line="482"/>
+        <location filename="../views/pixel_inspector.cpp" line="683"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="503"/>
+        <location filename="../views/pixel_inspector.cpp" line="490"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>ocupa o pixel no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="504"/>
+        <location filename="../views/pixel_inspector.cpp" line="491"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>ainda não alcançado pelo cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="519"/>
+        <location filename="../views/pixel_inspector.cpp" line="506"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="520"/>
+        <location filename="../views/pixel_inspector.cpp" line="507"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Sem o passo a passo, as cores das escritas sobrescritas depois não são guardadas.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="637"/>
+        <location filename="../views/pixel_inspector.cpp" line="624"/>
         <source>Before: %1</source>
         <translation>Antes: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="677"/>
+        <location filename="../views/pixel_inspector.cpp" line="664"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Sem o passo a passo, só a iluminação do fragmento que ocupa o pixel no fim é registrada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="680"/>
+        <location filename="../views/pixel_inspector.cpp" line="667"/>
         <source>The cleared pixel is not lit.</source>
         <translation>O pixel limpo não é iluminado.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="683"/>
+        <location filename="../views/pixel_inspector.cpp" line="670"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>Nenhum fragmento ocupa o pixel no cursor: selecione uma linha do histórico para ver sua iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="695"/>
+        <location filename="../views/pixel_inspector.cpp" line="682"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Iluminação do passo %1, triângulo %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="700"/>
+        <location filename="../views/pixel_inspector.cpp" line="687"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejeitado: esta cor nunca foi escrita)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="713"/>
+        <location filename="../views/pixel_inspector.cpp" line="700"/>
         <source>object colour</source>
         <translation>cor do objeto</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="716"/>
+        <location filename="../views/pixel_inspector.cpp" line="703"/>
         <source>emission</source>
         <translation>emissão</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="718"/>
+        <location filename="../views/pixel_inspector.cpp" line="705"/>
         <source>ambient</source>
         <translation>ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="723"/>
+        <location filename="../views/pixel_inspector.cpp" line="710"/>
         <source>diffuse %1</source>
         <translation>difusa %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="726"/>
+        <location filename="../views/pixel_inspector.cpp" line="713"/>
         <source>specular %1</source>
         <translation>especular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="730"/>
+        <location filename="../views/pixel_inspector.cpp" line="717"/>
         <source>diffuse</source>
         <translation>difusa</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="732"/>
+        <location filename="../views/pixel_inspector.cpp" line="719"/>
         <source>specular</source>
         <translation>especular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="760"/>
+        <location filename="../views/pixel_inspector.cpp" line="747"/>
         <source>No special case: every term applies as written.</source>
         <translation>Nenhum caso especial: todos os termos valem como escritos.</translation>
     </message>
@@ -6264,87 +6619,87 @@
 <context>
     <name>rasterlab::ZBufferView</name>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="160"/>
+        <location filename="../views/zbuffer_view.cpp" line="161"/>
         <source>Automatic range (nearest to farthest drawn)</source>
         <translation>Faixa automática (do mais próximo ao mais distante desenhado)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="176"/>
+        <location filename="../views/zbuffer_view.cpp" line="177"/>
         <source>Grey (near white)</source>
         <translation>Cinza (perto = branco)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="177"/>
+        <location filename="../views/zbuffer_view.cpp" line="178"/>
         <source>False colour (near red, far blue)</source>
         <translation>Cores falsas (perto vermelho, longe azul)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="189"/>
+        <location filename="../views/zbuffer_view.cpp" line="190"/>
         <source>Nearest (white / red):</source>
         <translation>Mais próximo (branco / vermelho):</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="190"/>
+        <location filename="../views/zbuffer_view.cpp" line="191"/>
         <source>Farthest (dark / blue):</source>
         <translation>Mais distante (escuro / azul):</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="191"/>
+        <location filename="../views/zbuffer_view.cpp" line="192"/>
         <source>Colours:</source>
         <translation>Cores:</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="255"/>
+        <location filename="../views/zbuffer_view.cpp" line="264"/>
         <source>+&amp;infin;</source>
         <translation>+&amp;infin;</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="259"/>
+        <location filename="../views/zbuffer_view.cpp" line="268"/>
         <source>the view-space z of P&apos;</source>
         <translation>o z de P&apos; no espaço de vista</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="259"/>
+        <location filename="../views/zbuffer_view.cpp" line="268"/>
         <source>the NDC z</source>
         <translation>o z em NDC</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="267"/>
+        <location filename="../views/zbuffer_view.cpp" line="276"/>
         <source>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</source>
         <translation>&lt;b&gt;Z-buffer.&lt;/b&gt; Todo pixel começa em %1. A profundidade de cada fragmento, %2 (%3), é comparada com a armazenada; ela é escrita, com sua cor, só quando %4. Até agora: %5 fragmentos testados, %6 escritos, %7 rejeitados.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="322"/>
+        <location filename="../views/zbuffer_view.cpp" line="331"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="339"/>
+        <location filename="../views/zbuffer_view.cpp" line="348"/>
         <source>No pixel holds a triangle: the buffer is all clear value.</source>
         <translation>Nenhum pixel contém um triângulo: o buffer inteiro está no valor de limpeza.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="342"/>
+        <location filename="../views/zbuffer_view.cpp" line="351"/>
         <source>Drawn depths from %1 to %2; shown from %3 to %4.</source>
         <translation>Profundidades desenhadas de %1 a %2; exibidas de %3 a %4.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="348"/>
+        <location filename="../views/zbuffer_view.cpp" line="357"/>
         <source>%1 pixels nearer and %2 farther than the range are drawn at its ends.</source>
         <translation>%1 pixels mais próximos e %2 mais distantes que a faixa aparecem nas suas extremidades.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="362"/>
+        <location filename="../views/zbuffer_view.cpp" line="371"/>
         <source>+inf</source>
         <translation>+inf</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="363"/>
+        <location filename="../views/zbuffer_view.cpp" line="372"/>
         <source>x %1, y %2: no triangle; the depth stays at the clear value %3</source>
         <translation>x %1, y %2: nenhum triângulo; a profundidade fica no valor de limpeza %3</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="368"/>
+        <location filename="../views/zbuffer_view.cpp" line="377"/>
         <source>x %1, y %2: depth %3, triangle %4</source>
         <translation>x %1, y %2: profundidade %3, triângulo %4</translation>
     </message>

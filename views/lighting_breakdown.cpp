@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "inspection.h"
 #include "output_image.h"
 #include "pixel_text.h"
 #include "shading.h"
@@ -444,6 +445,24 @@ LightingBreakdown lightingBreakdown(const rl::FrameTrace& frame, const PixelHist
                              scene.conventions.colourScale,
                              {}};
     return builder.build(historyRow);
+}
+
+std::optional<LightingBreakdown> rowBreakdown(const Inspection& inspection,
+                                              const PixelHistory& history, int row) {
+    const std::vector<PixelHistoryRow>& rows = history.rows();
+    const std::shared_ptr<const rl::FrameTrace>& frame = inspection.frame();
+    if (!frame || row < 0 || row >= static_cast<int>(rows.size())) return std::nullopt;
+    // The final row shows the lighting of the fragment that wrote it.
+    const PixelHistoryRow& r = rows[row];
+    if (r.kind == PixelHistoryRow::Kind::Initial || r.fragment == rl::kNoFragment)
+        return std::nullopt;
+    std::optional<rl::ShadeEvent> event;
+    if (const rl::FrameReplay* replay = inspection.replay(); replay && !history.traced())
+        event = replay->shade({r.fragment}).front();
+    else if (history.tracedShade() && r.fragment == rows.back().fragment)
+        event = history.tracedShade();  // the fragment that holds the pixel at the end
+    if (!event) return std::nullopt;
+    return lightingBreakdown(*frame, r, row, *event);
 }
 
 }  // namespace rasterlab

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "frame_trace.h"
@@ -64,5 +65,12 @@ struct LightingBreakdown {
 // records it in the frame.
 LightingBreakdown lightingBreakdown(const rl::FrameTrace& frame, const PixelHistoryRow& row,
                                     int historyRow, const rl::ShadeEvent& event);
+
+class Inspection;
+// The breakdown of history row `row` of the inspection's frame, from the replay's shading of
+// its fragment (or, traced again without a replay, the fragment holding the pixel at the end);
+// none for a row without a fragment, or when its shading is not known.
+std::optional<LightingBreakdown> rowBreakdown(const Inspection& inspection,
+                                              const PixelHistory& history, int row);
 
 }  // namespace rasterlab

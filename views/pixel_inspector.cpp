@@ -448,28 +448,15 @@ QString PixelInspector::formulaText() const {
 }
 
 void PixelInspector::updateBreakdown() {
-    const std::shared_ptr<const rl::FrameTrace>& frame = m_inspection->frame();
     const PixelHistoryRow* row =
         m_selected >= 0 && m_selected < static_cast<int>(m_history.rows().size())
             ? &m_history.rows()[m_selected]
             : nullptr;
-    // The final row shows the lighting of the fragment that wrote it.
-    const bool hasFragment =
-        row && row->kind != PixelHistoryRow::Kind::Initial && row->fragment != rl::kNoFragment;
-    if (m_breakdown && hasFragment && m_breakdown->historyRow == m_selected &&
+    if (m_breakdown && row && row->kind != PixelHistoryRow::Kind::Initial &&
+        row->fragment != rl::kNoFragment && m_breakdown->historyRow == m_selected &&
         m_breakdown->fragment == row->fragment)
         return;  // already shown
-    m_breakdown.reset();
-    if (!frame || !hasFragment) return;
-    std::optional<rl::ShadeEvent> event;
-    if (const rl::FrameReplay* replay = m_inspection->replay(); replay && !m_history.traced()) {
-        event = replay->shade({row->fragment}).front();
-    } else if (m_history.tracedShade() && row->fragment == m_history.rows().back().fragment) {
-        event = m_history.tracedShade();  // the fragment that holds the pixel at the end
-    }
-    if (!event) return;
-
-    m_breakdown = lightingBreakdown(*frame, *row, m_selected, *event);
+    m_breakdown = rowBreakdown(*m_inspection, m_history, m_selected);
 }
 
 void PixelInspector::fillTable() {

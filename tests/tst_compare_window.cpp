@@ -1,0 +1,247 @@
+// File > Compare with Image... in the window (offscreen): on the shipped goblet lesson, "their"
+// image is ours with the ambient multiplied by Od (pipeline/analysis/mistakes.h); the Compare
+// dock must rank that mistake first, count the differing pixels as rasterlab-cli compare does,
+// show their colour at the pixel picked and the Phong term that would have to change; flicker
+// and the threshold work; and a bad image gives the command line's message and keeps the scene.
+#include <QtTest>
+
+#include <QDockWidget>
+#include <QFile>
+#include <QImage>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QListWidget>
+#include <QPushButton>
+#include <QTemporaryDir>
+
+#include "compare_panel.h"
+#include "main_window.h"
+#include "mistakes.h"
+#include "test_support.h"
+
+using rasterlab::ComparePanel;
+using rasterlab::MainWindow;
+
+namespace {
+
+constexpr int kTimeoutMs = 60000;
+
+bool savePng(const rl::Rgba8Image& image, const QString& path) {
+    return QImage(image.rgba.data(), image.width, image.height, image.width * 4,
+                  QImage::Format_RGBA8888)
+        .save(path, "PNG");
+}
+
+bool ready(const MainWindow& window) {
+    return window.isReadyToStep() && !window.lessonViewPending();
+}
+
+}  // namespace
+
+class TestCompareWindow : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() {
+        QVERIFY(m_dir.isValid());
+        QVERIFY(m_window.openExample(QStringLiteral("goblet")));
+        QVERIFY(QTest::qWaitFor([&] { return ready(m_window); }, kTimeoutMs));
+        auto ours = rl::renderOurFrame(m_window.currentFrame()->scene);
+        QVERIFY(ours);
+        m_ours = ours->image;
+        auto theirs = rl::imageWithMistake(ours.value(), rl::Mistake::AmbientTimesOd);
+        QVERIFY(theirs && theirs->has_value());
+        m_theirs = **theirs;
+        m_theirPath = m_dir.filePath(QStringLiteral("theirs.png"));
+        QVERIFY(savePng(m_theirs, m_theirPath));
+    }
+
+    void ranksTheMistakeFirst();
+    void countsAsTheCommandLine();
+    void thresholdAndFlicker();
+    void pickedPixel();
+    void badImages_data();
+    void badImages();
+    void compareAgainAfterAChange();
+
+private:
+    ComparePanel* panel() const { return m_window.comparePanel(); }
+    QString cliError(const QString& image);
+
+    QTemporaryDir m_dir;
+    MainWindow m_window;
+    rl::Rgba8Image m_ours, m_theirs;
+    QString m_theirPath;
+};
+
+void TestCompareWindow::ranksTheMistakeFirst() {
+    QAction* action = m_window.findChild<QAction*>(QStringLiteral("compareImageAction"));
+    QVERIFY(action);
+    QVERIFY(m_window.compareWithImage(m_theirPath));
+    auto* dock = m_window.findChild<QDockWidget*>(QStringLiteral("compareDock"));
+    QVERIFY(dock && !dock->isHidden());
+    const rl::ImageComparison* c = panel()->comparison();
+    QVERIFY(c && !c->diagnosis.empty());
+    QCOMPARE(c->diagnosis.front().mistake, rl::Mistake::AmbientTimesOd);
+    // The dock lists it first, in the command line's words.
+    const QString text = panel()->diagnosisText();
+    const QString first =
+        QStringLiteral("1. ") + QString::fromStdString(c->diagnosis.front().title);
+    QVERIFY2(text.contains(first), qPrintable(text));
+    QVERIFY(text.indexOf(first) < text.indexOf(QStringLiteral("2. ")) ||
+            !text.contains(QStringLiteral("2. ")));
+    QVERIFY2(panel()->summaryText().contains(QStringLiteral("%1 differ").arg(c->differing)),
+             qPrintable(panel()->summaryText()));
+}
+
+void TestCompareWindow::countsAsTheCommandLine() {
+    QVERIFY(panel()->comparison());
+    testing::CliRun run;
+    QVERIFY2(testing::runCli({QStringLiteral("compare"), QStringLiteral("--scene"),
+                              QStringLiteral("goblet"), QStringLiteral("--image"), m_theirPath,
+                              QStringLiteral("--format"), QStringLiteral("json")},
+                             m_dir.path(), run),
+             qPrintable(run.problem));
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject cli = QJsonDocument::fromJson(run.out.toUtf8()).object();
+    panel()->setThreshold(0);
+    QCOMPARE(qint64(panel()->differingAboveThreshold()),
+             cli.value(QStringLiteral("differing")).toInteger());
+    QVERIFY(panel()->differingAboveThreshold() > 0);
+    QCOMPARE(cli.value(QStringLiteral("diagnosis"))[0][QStringLiteral("mistake")].toString(),
+             QStringLiteral("ambient-times-od"));
+}
+
+void TestCompareWindow::thresholdAndFlicker() {
+    QVERIFY(panel()->comparison());
+    // Above a threshold, the pixels that differ by more are coloured, the others ours
+    // darkened. Their blue differs by 12 wherever the goblet is (Ia·ka·Od = 4, not 16).
+    panel()->setMode(ComparePanel::Mode::Difference);
+    panel()->setThreshold(0);
+    const std::size_t all = panel()->differingAboveThreshold();
+    for (int threshold : {11, 12}) {
+        panel()->setThreshold(threshold);
+        std::size_t counted = 0;
+        const QImage& difference = panel()->differenceImage();
+        for (int y = 0; y < m_ours.height; ++y)
+            for (int x = 0; x < m_ours.width; ++x) {
+                const std::uint8_t* a = m_ours.pixel(x, y);
+                const std::uint8_t* b = m_theirs.pixel(x, y);
+                int d = 0;
+                for (int k = 0; k < 4; ++k) d = std::max(d, std::abs(int(a[k]) - int(b[k])));
+                const QRgb shown = difference.pixel(x, y);
+                if (d > threshold) {
+                    ++counted;
+                    QCOMPARE(qRed(shown), 255);  // yellow to red
+                } else {
+                    QCOMPARE(qRed(shown), a[0] / 3);
+                }
+            }
+        QCOMPARE(panel()->differingAboveThreshold(), counted);
+        QCOMPARE(counted, threshold == 11 ? all : 0);
+    }
+    panel()->setThreshold(0);
+    // Flicker: theirs, then ours half a second later.
+    panel()->setMode(ComparePanel::Mode::Flicker);
+    QVERIFY(panel()->flickerShowsTheirs());
+    QVERIFY(QTest::qWaitFor([&] { return !panel()->flickerShowsTheirs(); }, 2000));
+    QVERIFY(QTest::qWaitFor([&] { return panel()->flickerShowsTheirs(); }, 2000));
+    panel()->setMode(ComparePanel::Mode::SideBySide);
+}
+
+void TestCompareWindow::pickedPixel() {
+    const rl::ImageComparison* c = panel()->comparison();
+    QVERIFY(c && !c->diagnosis.front().examples.empty());
+    const rl::PixelExample& e = c->diagnosis.front().examples.front();
+    m_window.inspection()->pickPixel(QPoint(e.x, e.y));
+    QVERIFY(QTest::qWaitFor([&] { return ready(m_window); }, kTimeoutMs));
+    const QString text = panel()->pixelText();
+    const auto bytes = [](const std::array<std::uint8_t, 4>& b) {
+        return QStringLiteral("(%1, %2, %3, %4)").arg(b[0]).arg(b[1]).arg(b[2]).arg(b[3]);
+    };
+    QVERIFY2(text.contains(QStringLiteral("Pixel (%1, %2): theirs %3, ours %4.")
+                               .arg(e.x)
+                               .arg(e.y)
+                               .arg(bytes(e.theirs), bytes(e.ours))),
+             qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("Their colour is ours minus ")), qPrintable(text));
+    // The ambient term, times Od, gives their colour; the specular term cannot.
+    QVERIFY2(text.contains(QRegularExpression(
+                 QStringLiteral("the ambient term Ia·ka would have to be .* instead of "
+                                "\\(14, 14, 16\\).*: that is the term times Od"))),
+             qPrintable(text));
+    QVERIFY2(!text.contains(QRegularExpression(
+                 QStringLiteral("the specular term [^\n]*that is the term times Od"))),
+             qPrintable(text));
+}
+
+QString TestCompareWindow::cliError(const QString& image) {
+    testing::CliRun run;
+    if (!testing::runCli({QStringLiteral("compare"), QStringLiteral("--scene"),
+                          QStringLiteral("goblet"), QStringLiteral("--image"), image},
+                         m_dir.path(), run))
+        return run.problem;
+    return run.err.trimmed();
+}
+
+void TestCompareWindow::badImages_data() {
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QByteArray>("content");  // empty: a 640x480 PNG
+    QTest::addColumn<QString>("message");     // empty: the command line's
+    QTest::newRow("other size") << "small.png" << QByteArray()
+                                << "small.png: the image is 640x480, ours is 800x600";
+    QTest::newRow("not a PNG") << "notes.png" << QByteArray("my notes\n") << QString();
+    QTest::newRow("empty file") << "empty.png" << QByteArray("") << QString();
+}
+
+void TestCompareWindow::badImages() {
+    QFETCH(QString, name);
+    QFETCH(QByteArray, content);
+    QFETCH(QString, message);
+    const QString path = m_dir.filePath(name);
+    if (name == QLatin1String("small.png")) {
+        QImage small(640, 480, QImage::Format_RGBA8888);
+        small.fill(Qt::black);
+        QVERIFY(small.save(path, "PNG"));
+    } else {
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(content);
+    }
+    if (message.isEmpty()) message = cliError(name);
+    QVERIFY(!message.isEmpty());
+    const auto frame = m_window.currentFrame();
+    const QString title = m_window.lessonTitle();
+    const rl::ImageComparison* before = panel()->comparison();
+    QVERIFY(!m_window.compareWithImage(path));
+    QVERIFY(m_window.messages()->count() > 0);
+    QCOMPARE(m_window.messages()->item(0)->text(),
+             QStringLiteral("Error: ") + m_dir.filePath(message));
+    // The scene, its frame and the comparison shown stay.
+    QCOMPARE(m_window.currentFrame(), frame);
+    QCOMPARE(m_window.lessonTitle(), title);
+    QCOMPARE(panel()->comparison(), before);
+    QCOMPARE(panel()->imagePath(), m_theirPath);
+}
+
+void TestCompareWindow::compareAgainAfterAChange() {
+    // Another shading model: the comparison is of the scene before, until compared again.
+    auto* again = panel()->findChild<QPushButton*>(QStringLiteral("compareAgainButton"));
+    QVERIFY(again && again->isHidden());
+    const auto before = m_window.currentFrame();
+    m_window.setShading(rl::ShadingModel::Flat);
+    QVERIFY(QTest::qWaitFor([&] { return m_window.currentFrame() != before && ready(m_window); },
+                            kTimeoutMs));
+    QVERIFY(panel()->isStale());
+    QVERIFY(!again->isHidden());
+    QVERIFY(panel()->summaryText().contains(QStringLiteral("The scene has changed")));
+    again->click();
+    QVERIFY(!panel()->isStale());
+    QVERIFY(again->isHidden());
+    // Flat shading against their Phong image differs by more than the ambient's 12 in blue.
+    const std::array<int, 4>& largest = panel()->comparison()->largest;
+    QVERIFY(*std::max_element(largest.begin(), largest.end()) > 12);
+}
+
+QTEST_MAIN(TestCompareWindow)
+#include "tst_compare_window.moc"
