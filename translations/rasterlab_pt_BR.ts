@@ -3864,7 +3864,7 @@
     <message>
         <location filename="../app/main_window.cpp" line="377"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
-        <translation>Modo de apresentação: F5 ou Esc para sair; Page Down, seta para a direita e barra de espaço avançam e reproduzem</translation>
+        <translation>Apresentação: F5 ou Esc sai; Page Down, → e Espaço avançam e reproduzem</translation>
     </message>
     <message>
         <location filename="../app/main_window.cpp" line="594"/>
