@@ -27,6 +27,7 @@
 #include "explained_view.h"
 #include "inspection.h"
 #include "main_window.h"
+#include "painter_view.h"
 #include "render_controller.h"
 #include "scene_document.h"
 #include "stage_strip.h"
@@ -568,6 +569,23 @@ void TestMainWindow::coveredViewsRefreshWhenRaised() {
     scanDock->raise();
     trapezoidDock->raise();
     QCOMPARE(trapezoids->explanationText(), raised);
+
+    // The painter's comparison (a second render) is made for a new frame only when its dock
+    // is on top.
+    auto* painterDock = window.findChild<QDockWidget*>(QStringLiteral("painterDock"));
+    rasterlab::PainterView* painter = window.painterView();
+    QVERIFY(painterDock && painter);
+    scanDock->raise();
+    QTRY_VERIFY(painter->visibleRegion().isEmpty());
+    const rl::PainterComparison* before = painter->comparison();
+    window.setShading(rl::ShadingModel::Flat);
+    QTRY_VERIFY_WITH_TIMEOUT(window.isReadyToStep() && window.currentFrame() &&
+                                 window.currentFrame()->scene->draws.front().shading ==
+                                     rl::ShadingModel::Flat,
+                             kFrameTimeoutMs);
+    QCOMPARE(painter->comparison(), before);  // not worked out while covered
+    painterDock->raise();
+    QTRY_VERIFY(painter->comparison() != before);
 }
 
 void TestMainWindow::docks() {

@@ -15,6 +15,7 @@
 #include "frame_image_view.h"
 #include "inspection.h"
 #include "number_text.h"
+#include "on_screen.h"
 #include "output_image.h"
 #include "pipeline_messages.h"
 #include "wrapping_check_box.h"
@@ -228,7 +229,15 @@ void PainterView::showEvent(QShowEvent* event) {
 }
 
 void PainterView::refreshWhenShown() {
-    if (isVisible()) recompute();
+    if (onScreen(this)) recompute();
+}
+
+bool PainterView::event(QEvent* event) {
+    if (event->type() == kRaisedEvent) {
+        if (m_comparedFrame.lock() != m_inspection->frame()) recompute();
+        return true;
+    }
+    return QWidget::event(event);
 }
 
 void PainterView::recompute() {
