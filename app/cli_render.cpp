@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "animation.h"
+#include "course_fields.h"
 #include "explain.h"
 #include "painter.h"
 #include "renderer.h"
@@ -293,9 +294,8 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
                   parser.value(normalsOutput), out, err, lit("normals")))
         return ExitBadInput;
 
-    out << "  " << scene->triangleCount()
-        << (scene->triangleCount() == 1 ? " triangle, " : " triangles, ")
-        << rl::shadingModelName(settings.shading) << " shading, " << trace->depth->coveredPixels()
+    out << "  " << QString::fromStdString(rl::course_io::trianglesText(scene->triangleCount()).english())
+        << ", " << rl::shadingModelName(settings.shading) << " shading, " << trace->depth->coveredPixels()
         << " pixels covered, " << QString::number(trace->totalMilliseconds, 'f', 1) << " ms\n";
     if (settings.shading == rl::ShadingModel::Painter) {
         // One more render, with the z-buffer, to show what the order got wrong (the painter's

@@ -583,6 +583,33 @@ Error withLayoutHint(const Error& error, Layout chosen,
                          describe(static_cast<int>(detected->first)), detected->second));
 }
 
+// Reads a camera or lighting file in the layout chosen, or in the one detected (Auto), with a
+// note saying which and why; an error under a chosen layout says what detection would choose.
+template <typename Layout, typename Detect, typename ReadAs, typename Flavour>
+auto readInLayout(std::string_view text, const std::string& fileName, Diagnostics& diagnostics,
+                  Layout layout, Detect detect, ReadAs readAs, Flavour flavour,
+                  MessageTemplate (*describe)(int)) {
+    using Part = decltype(readAs(text, fileName, layout, diagnostics));  // Result<...>
+    Layout chosen = layout;
+    Message why = "the layout was chosen, not detected"_msg;
+    if (layout == Layout::Auto) {
+        auto detected = detect(text, fileName);
+        if (!detected) return Part(detected.error());
+        chosen = detected->first;
+        why = detected->second;
+    }
+    Diagnostics read;  // after the note
+    auto part = readAs(text, fileName, chosen, read);
+    if (!part) {
+        diagnostics.append(read);
+        if (layout == Layout::Auto) return part;
+        return Part(withLayoutHint(part.error(), chosen, detect(text, fileName), describe));
+    }
+    diagnostics.note(SourceLocation{fileName, 0, 0}, "read as %1 (%2)"_msg(flavour(chosen), why));
+    diagnostics.append(read);
+    return part;
+}
+
 }  // namespace
 
 std::optional<CameraLayout> detectCameraLayout(std::string_view text) {
@@ -599,49 +626,14 @@ std::optional<LightingLayout> detectLightingLayout(std::string_view text) {
 
 Result<CourseCamera> readCameraFile(std::string_view text, const std::string& fileName,
                                     Diagnostics& diagnostics, CameraLayout layout) {
-    CameraLayout chosen = layout;
-    Message why = "the layout was chosen, not detected"_msg;
-    if (layout == CameraLayout::Auto) {
-        auto detected = detectCamera(text, fileName);
-        if (!detected) return detected.error();
-        chosen = detected->first;
-        why = detected->second;
-    }
-    Diagnostics read;  // after the note
-    auto camera = readCameraAs(text, fileName, chosen, read);
-    if (!camera) {
-        diagnostics.append(read);
-        if (layout == CameraLayout::Auto) return camera.error();
-        return withLayoutHint(camera.error(), chosen, detectCamera(text, fileName), describeCamera);
-    }
-    diagnostics.note(SourceLocation{fileName, 0, 0},
-                     "read as %1 (%2)"_msg(cameraFlavour(chosen), why));
-    diagnostics.append(read);
-    return camera;
+    return readInLayout(text, fileName, diagnostics, layout, detectCamera, readCameraAs,
+                        cameraFlavour, describeCamera);
 }
 
 Result<CourseLighting> readLightingFile(std::string_view text, const std::string& fileName,
                                         Diagnostics& diagnostics, LightingLayout layout) {
-    LightingLayout chosen = layout;
-    Message why = "the layout was chosen, not detected"_msg;
-    if (layout == LightingLayout::Auto) {
-        auto detected = detectLighting(text, fileName);
-        if (!detected) return detected.error();
-        chosen = detected->first;
-        why = detected->second;
-    }
-    Diagnostics read;  // after the note
-    auto lighting = readLightingAs(text, fileName, chosen, read);
-    if (!lighting) {
-        diagnostics.append(read);
-        if (layout == LightingLayout::Auto) return lighting.error();
-        return withLayoutHint(lighting.error(), chosen, detectLighting(text, fileName),
-                              describeLighting);
-    }
-    diagnostics.note(SourceLocation{fileName, 0, 0},
-                     "read as %1 (%2)"_msg(lightingFlavour(chosen), why));
-    diagnostics.append(read);
-    return lighting;
+    return readInLayout(text, fileName, diagnostics, layout, detectLighting, readLightingAs,
+                        lightingFlavour, describeLighting);
 }
 
 }  // namespace rl
