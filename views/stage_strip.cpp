@@ -203,7 +203,7 @@ QSize StageStrip::minimumSizeHint() const {
 
 void StageStrip::changeEvent(QEvent* event) {
     QWidget::changeEvent(event);
-    if (event->type() == QEvent::FontChange) refresh();
+    if (event->type() == QEvent::FontChange && m_inspection) refresh();
 }
 
 void StageStrip::resizeEvent(QResizeEvent* event) {

@@ -4,6 +4,7 @@
 // (scan conversion, depth test, shading) run together, one fragment at a time: the strip says so.
 #pragma once
 
+#include <QPointer>
 #include <QWidget>
 
 #include <array>
@@ -52,7 +53,9 @@ private:
     void fitTexts();
     int textsWidth(const std::array<QString, rl::kStageCount>& texts) const;
 
-    Inspection* m_inspection;
+    // Guarded: the main window deletes its Inspection before the toolbar that releases
+    // this strip, and the release sends a font change.
+    QPointer<Inspection> m_inspection;
     std::array<QToolButton*, rl::kStageCount> m_buttons{};
     std::array<QString, rl::kStageCount> m_longTexts, m_shortTexts;
     ElidedLabel* m_note = nullptr;
