@@ -49,7 +49,8 @@ QPainterPath marker(rl::RuleSet rules, QPointF centre, double radius) {
     return path;
 }
 
-// Decades covering [lo, hi] (both > 0).
+}  // namespace
+
 void decades(double lo, double hi, double& first, double& last) {
     first = std::floor(std::log10(lo));
     last = std::ceil(std::log10(hi));
@@ -62,8 +63,6 @@ QString decadeLabel(double exponent) {
     if (exponent < 0 && exponent > -4) return QString::number(v, 'f', int(-exponent));
     return lit("1e%1").arg(int(exponent));
 }
-
-}  // namespace
 
 QImage accuracyPlot(const rl::AccuracyReport& report, const QString& title, QSize size) {
     QImage image(size, QImage::Format_RGB32);

@@ -21,6 +21,11 @@ QImage accuracyPlot(const rl::AccuracyReport& report, const QString& title,
 // magenta where only one does; a colour bar with its values on the right.
 QImage errorHeatMap(const rl::Image<float>& error, float maxError);
 
+// The whole decades covering [lo, hi] (both > 0), as exponents of 10; at least one decade.
+void decades(double lo, double hi, double& first, double& last);
+// 10^exponent as a log axis writes it: 0.01, 1, 1000, 1e6.
+QString decadeLabel(double exponent);
+
 // The colour of an error on the heat map's scale (t = error / maxError, clamped to [0, 1]).
 QRgb heatColour(float t);
 

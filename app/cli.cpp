@@ -29,6 +29,9 @@ QString generalHelp() {
         "  bench                    Time a scene's frames (median, min, max, per stage).\n"
         "  accuracy                 Error against run time of each mode, against an exact\n"
         "                           ray-cast reference (table, plot, heat maps).\n"
+        "  stability                Error of float and double as a scene grows stiff (moved,\n"
+        "                           scaled, near the eye, slivers, shininess, V along N, a\n"
+        "                           light on the surface), against the exact reference.\n"
         "  generate-default-scene   Write the default scene's three course files.\n"
         "  generate-lessons         Write the shipped lessons' course and lesson files.\n"
         "\n"
@@ -59,6 +62,8 @@ int runCli(const QStringList& arguments, QTextStream& out, QTextStream& err) {
             code = cli::runBench(rest, out, err);
         else if (command == lit("accuracy"))
             code = cli::runAccuracy(rest, out, err);
+        else if (command == lit("stability"))
+            code = cli::runStability(rest, out, err);
         else if (command == lit("run"))
             code = cli::runCommandFile(rest, out, err);
         else if (command == lit("compare"))
@@ -69,7 +74,7 @@ int runCli(const QStringList& arguments, QTextStream& out, QTextStream& err) {
             code = cli::runGenerateLessons(rest, out, err);
         else
             code = cli::usageError(err, lit("unknown command '%1' (commands: render, run, compare, "
-                                            "bench, accuracy, generate-default-scene, "
+                                            "bench, accuracy, stability, generate-default-scene, "
                                             "generate-lessons)")
                                             .arg(command));
     } catch (const std::bad_alloc&) {

@@ -151,6 +151,7 @@ int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& 
 int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err);
 int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err);
 int runAccuracy(const QStringList& arguments, QTextStream& out, QTextStream& err);
+int runStability(const QStringList& arguments, QTextStream& out, QTextStream& err);
 int runGenerateDefaultScene(const QStringList& arguments, QTextStream& out, QTextStream& err);
 int runGenerateLessons(const QStringList& arguments, QTextStream& out, QTextStream& err);
 

@@ -489,6 +489,9 @@ const char* const kCatalogue[] = {
     // pipeline/analysis/accuracy.cpp
     QT_TRANSLATE_NOOP("Messages", "measurement cancelled"),
     QT_TRANSLATE_NOOP("Messages", "supersampling must be 1 to 16 samples per axis"),
+    // pipeline/analysis/stability.cpp
+    QT_TRANSLATE_NOOP("Messages", "the scene has no light to move"),
+    QT_TRANSLATE_NOOP("Messages", "no triangle is in front of the camera"),
     // pipeline/analysis/reference.cpp
     QT_TRANSLATE_NOOP("Messages",
                       "the exact reference handles course scenes (the course camera, view z as "

@@ -352,7 +352,7 @@ void TestCli::usageErrors_data() {
         << "--explain-pixel 800,10 is outside the 800x600 image";
     QTest::newRow("unknown command") << QStringList({"paint", "--output", "out.png"})
                                      << "unknown command 'paint' (commands: render, run, compare, "
-                                        "bench, accuracy, generate-default-scene, "
+                                        "bench, accuracy, stability, generate-default-scene, "
                                         "generate-lessons)";
     QTest::newRow("unknown option")
         << (QStringList({"render", "--bogus"}) + out) << "Unknown option 'bogus'.";

@@ -4,57 +4,57 @@
 <context>
     <name>AccuracyPlot</name>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="127"/>
+        <location filename="../app/accuracy_plot.cpp" line="126"/>
         <source>median time per frame (ms, log scale)</source>
         <translation>median time per frame (ms, log scale)</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="133"/>
+        <location filename="../app/accuracy_plot.cpp" line="132"/>
         <source>colour RMSE against the exact reference (byte steps, log scale)</source>
         <translation>colour RMSE against the exact reference (byte steps, log scale)</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="187"/>
+        <location filename="../app/accuracy_plot.cpp" line="186"/>
         <source>colour: shading</source>
         <translation>colour: shading</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="196"/>
+        <location filename="../app/accuracy_plot.cpp" line="195"/>
         <source>shape: rules</source>
         <translation>shape: rules</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="205"/>
+        <location filename="../app/accuracy_plot.cpp" line="204"/>
         <source>filled: float; hollow: double</source>
         <translation>filled: float; hollow: double</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="208"/>
+        <location filename="../app/accuracy_plot.cpp" line="207"/>
         <source>size: samples per pixel</source>
         <translation>size: samples per pixel</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="210"/>
+        <location filename="../app/accuracy_plot.cpp" line="209"/>
         <source>exact reference:</source>
         <translation>exact reference:</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="212"/>
+        <location filename="../app/accuracy_plot.cpp" line="211"/>
         <source>%1 ms, %2 rays</source>
         <translation>%1 ms, %2 rays</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="217"/>
+        <location filename="../app/accuracy_plot.cpp" line="216"/>
         <source>an RMSE of 0 sits on the floor</source>
         <translation>an RMSE of 0 sits on the floor</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="262"/>
+        <location filename="../app/accuracy_plot.cpp" line="261"/>
         <source>byte steps</source>
         <translation>byte steps</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="265"/>
+        <location filename="../app/accuracy_plot.cpp" line="264"/>
         <source>coverage</source>
         <translation>coverage</translation>
     </message>
@@ -1676,233 +1676,281 @@
     </message>
     <message>
         <location filename="../app/pipeline_messages.cpp" line="493"/>
+        <source>the scene has no light to move</source>
+        <translation>the scene has no light to move</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="494"/>
+        <source>no triangle is in front of the camera</source>
+        <translation>no triangle is in front of the camera</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="496"/>
         <source>the exact reference handles course scenes (the course camera, view z as depth, the course&apos;s Phong lighting with the material&apos;s colour); %1</source>
         <translation>the exact reference handles course scenes (the course camera, view z as depth, the course&apos;s Phong lighting with the material&apos;s colour); %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="496"/>
+        <location filename="../app/pipeline_messages.cpp" line="499"/>
         <source>this scene has no course camera</source>
         <translation>this scene has no course camera</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="497"/>
+        <location filename="../app/pipeline_messages.cpp" line="500"/>
         <source>this scene&apos;s depth is NDC z</source>
         <translation>this scene&apos;s depth is NDC z</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="498"/>
+        <location filename="../app/pipeline_messages.cpp" line="501"/>
         <source>%1 has its own projection matrix</source>
         <translation>%1 has its own projection matrix</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="499"/>
+        <location filename="../app/pipeline_messages.cpp" line="502"/>
         <source>%1 is not lit by the course&apos;s Phong model</source>
         <translation>%1 is not lit by the course&apos;s Phong model</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="500"/>
+        <location filename="../app/pipeline_messages.cpp" line="503"/>
         <source>%1 takes its colour from its vertices or a texture</source>
         <translation>%1 takes its colour from its vertices or a texture</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="501"/>
+        <location filename="../app/pipeline_messages.cpp" line="504"/>
         <source>%1 is lit with flat normals</source>
         <translation>%1 is lit with flat normals</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="502"/>
+        <location filename="../app/pipeline_messages.cpp" line="505"/>
         <source>samples per axis must be 1 to 16</source>
         <translation>samples per axis must be 1 to 16</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="504"/>
+        <location filename="../app/pipeline_messages.cpp" line="507"/>
         <source>cannot read the texture %1: %2</source>
         <translation>cannot read the texture %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="506"/>
+        <location filename="../app/pipeline_messages.cpp" line="509"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="511"/>
+        <location filename="../app/pipeline_messages.cpp" line="514"/>
         <source>cannot open: %1</source>
         <translation>cannot open: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="512"/>
+        <location filename="../app/pipeline_messages.cpp" line="515"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>the file has %1 MiB, more than the %2 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="514"/>
+        <location filename="../app/pipeline_messages.cpp" line="517"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>the file has more than the %1 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="516"/>
+        <location filename="../app/pipeline_messages.cpp" line="519"/>
         <source>not enough memory to read this file</source>
         <translation>not enough memory to read this file</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="517"/>
+        <location filename="../app/pipeline_messages.cpp" line="520"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="520"/>
+        <location filename="../app/pipeline_messages.cpp" line="523"/>
         <source>the object is not edited, so not saved</source>
         <translation>the object is not edited, so not saved</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="521"/>
+        <location filename="../app/pipeline_messages.cpp" line="524"/>
         <source>cannot write into the built-in resources</source>
         <translation>cannot write into the built-in resources</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="522"/>
+        <location filename="../app/pipeline_messages.cpp" line="525"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>the camera was not saved, as it would not load again: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="523"/>
+        <location filename="../app/pipeline_messages.cpp" line="526"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>not saved: the text written does not read back as the same values</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="525"/>
+        <location filename="../app/pipeline_messages.cpp" line="528"/>
         <source>cannot write the file: %1</source>
         <translation>cannot write the file: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="526"/>
+        <location filename="../app/pipeline_messages.cpp" line="529"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>only %1 of %2 bytes could be written (is the disk full?)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="527"/>
+        <location filename="../app/pipeline_messages.cpp" line="530"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>cannot write the file (it is left as it was): %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="529"/>
+        <location filename="../app/pipeline_messages.cpp" line="532"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[rows, fragments], two whole numbers</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="530"/>
+        <location filename="../app/pipeline_messages.cpp" line="533"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[width, height], whole numbers from %1 to %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="531"/>
+        <location filename="../app/pipeline_messages.cpp" line="534"/>
         <source>a list</source>
         <translation>a list</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="532"/>
+        <location filename="../app/pipeline_messages.cpp" line="535"/>
         <source>a list of %1 numbers</source>
         <translation>a list of %1 numbers</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="533"/>
+        <location filename="../app/pipeline_messages.cpp" line="536"/>
         <source>a list of 1 to 8 lights</source>
         <translation>a list of 1 to 8 lights</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="534"/>
+        <location filename="../app/pipeline_messages.cpp" line="537"/>
         <source>a list of dock names</source>
         <translation>a list of dock names</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="535"/>
+        <location filename="../app/pipeline_messages.cpp" line="538"/>
         <source>a number</source>
         <translation>a number</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="536"/>
+        <location filename="../app/pipeline_messages.cpp" line="539"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>a positive number or &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="537"/>
+        <location filename="../app/pipeline_messages.cpp" line="540"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>a positive number or &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="538"/>
+        <location filename="../app/pipeline_messages.cpp" line="541"/>
         <source>a whole number from %1</source>
         <translation>a whole number from %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="539"/>
+        <location filename="../app/pipeline_messages.cpp" line="542"/>
         <source>an object</source>
         <translation>an object</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="540"/>
+        <location filename="../app/pipeline_messages.cpp" line="543"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>expected %1 for &quot;%2&quot;, found %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="541"/>
+        <location filename="../app/pipeline_messages.cpp" line="544"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="542"/>
+        <location filename="../app/pipeline_messages.cpp" line="545"/>
         <source>not a lesson file: %1</source>
         <translation>not a lesson file: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="543"/>
+        <location filename="../app/pipeline_messages.cpp" line="546"/>
         <source>nothing</source>
         <translation>nothing</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="544"/>
+        <location filename="../app/pipeline_messages.cpp" line="547"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="545"/>
+        <location filename="../app/pipeline_messages.cpp" line="548"/>
         <source>one of %1</source>
         <translation>one of %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="546"/>
+        <location filename="../app/pipeline_messages.cpp" line="549"/>
         <source>text in quotes</source>
         <translation>text in quotes</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="547"/>
+        <location filename="../app/pipeline_messages.cpp" line="550"/>
         <source>the text &apos;%1&apos;</source>
         <translation>the text &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="548"/>
+        <location filename="../app/pipeline_messages.cpp" line="551"/>
         <source>true or false</source>
         <translation>true or false</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="549"/>
+        <location filename="../app/pipeline_messages.cpp" line="552"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>unknown key &quot;%1&quot; ignored (known here: %2)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="584"/>
+        <location filename="../app/pipeline_messages.cpp" line="587"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="590"/>
+        <location filename="../app/pipeline_messages.cpp" line="593"/>
         <source>%1: warning: %2</source>
         <translation>%1: warning: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="591"/>
+        <location filename="../app/pipeline_messages.cpp" line="594"/>
         <source>%1: note: %2</source>
         <translation>%1: note: %2</translation>
+    </message>
+</context>
+<context>
+    <name>StabilityPlot</name>
+    <message>
+        <location filename="../app/stability_plot.cpp" line="155"/>
+        <source>every point: error against time</source>
+        <translation>every point: error against time</translation>
+    </message>
+    <message>
+        <location filename="../app/stability_plot.cpp" line="156"/>
+        <source>time per frame (ms, log scale)</source>
+        <translation>time per frame (ms, log scale)</translation>
+    </message>
+    <message>
+        <location filename="../app/stability_plot.cpp" line="171"/>
+        <source>float</source>
+        <translation>float</translation>
+    </message>
+    <message>
+        <location filename="../app/stability_plot.cpp" line="172"/>
+        <source>double</source>
+        <translation>double</translation>
+    </message>
+    <message>
+        <location filename="../app/stability_plot.cpp" line="188"/>
+        <source>float against double, largest difference</source>
+        <translation>float against double, largest difference</translation>
+    </message>
+    <message>
+        <location filename="../app/stability_plot.cpp" line="193"/>
+        <source>y: colour error in byte steps (log; RMSE against the exact reference, or the largest float-double difference); x: stiffer to the right; a cross: the scene could not be rendered</source>
+        <translation>y: colour error in byte steps (log; RMSE against the exact reference, or the largest float-double difference); x: stiffer to the right; a cross: the scene could not be rendered</translation>
+    </message>
+    <message>
+        <location filename="../app/stability_plot.cpp" line="238"/>
+        <source>%1 (%2, log scale)</source>
+        <translation>%1 (%2, log scale)</translation>
     </message>
 </context>
 <context>
@@ -4867,67 +4915,67 @@
 <context>
     <name>rasterlab::PainterView</name>
     <message>
-        <location filename="../views/painter_view.cpp" line="71"/>
+        <location filename="../views/painter_view.cpp" line="72"/>
         <source>Painted</source>
         <translation>Painted</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="73"/>
+        <location filename="../views/painter_view.cpp" line="74"/>
         <source>Draw</source>
         <translation>Draw</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="75"/>
+        <location filename="../views/painter_view.cpp" line="76"/>
         <source>Triangle</source>
         <translation>Triangle</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="77"/>
+        <location filename="../views/painter_view.cpp" line="78"/>
         <source>|b| (distance)</source>
         <translation>|b| (distance)</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="79"/>
+        <location filename="../views/painter_view.cpp" line="80"/>
         <source>Hidden wrongly</source>
         <translation>Hidden wrongly</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="136"/>
+        <location filename="../views/painter_view.cpp" line="137"/>
         <source>The triangles in the order the painter paints them: farthest barycentre first. Click a row to select its triangle.</source>
         <translation>The triangles in the order the painter paints them: farthest barycentre first. Click a row to select its triangle.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="141"/>
+        <location filename="../views/painter_view.cpp" line="142"/>
         <source>Painter&apos;s image</source>
         <translation>Painter&apos;s image</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="142"/>
+        <location filename="../views/painter_view.cpp" line="143"/>
         <source>Painted order (first blue, last red)</source>
         <translation>Painted order (first blue, last red)</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="147"/>
+        <location filename="../views/painter_view.cpp" line="148"/>
         <source>Mark ties on shared edges</source>
         <translation>Mark ties on shared edges</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="150"/>
+        <location filename="../views/painter_view.cpp" line="151"/>
         <source>Pixels on an edge two triangles share, at the same depth: the z-buffer keeps the first drawn, the painter the last.</source>
         <translation>Pixels on an edge two triangles share, at the same depth: the z-buffer keeps the first drawn, the painter the last.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="331"/>
+        <location filename="../views/painter_view.cpp" line="340"/>
         <source>rank of the last triangle painted</source>
         <translation>rank of the last triangle painted</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="332"/>
+        <location filename="../views/painter_view.cpp" line="341"/>
         <source>painted far to near, no depth test</source>
         <translation>painted far to near, no depth test</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/painter_view.cpp" line="334"/>
+        <location filename="../views/painter_view.cpp" line="343"/>
         <source>Z-buffer (the same flat colours): %n pixel(s) differ</source>
         <translation>
             <numerusform>Z-buffer (the same flat colours): %n pixel differs</numerusform>
@@ -4935,17 +4983,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="374"/>
+        <location filename="../views/painter_view.cpp" line="383"/>
         <source>No frame.</source>
         <translation>No frame.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="375"/>
+        <location filename="../views/painter_view.cpp" line="384"/>
         <source>Not worked out yet.</source>
         <translation>Not worked out yet.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/painter_view.cpp" line="380"/>
+        <location filename="../views/painter_view.cpp" line="389"/>
         <source>&lt;b&gt;Painter&apos;s algorithm&lt;/b&gt; (seed 004): the %n triangle(s) are sorted by the distance |b| of their barycentre b (view space) to the camera, far to near, each lit once at b, and painted in that order &lt;i&gt;without a depth test&lt;/i&gt;: the last painted stays.</source>
         <translation>
             <numerusform>&lt;b&gt;Painter&apos;s algorithm&lt;/b&gt; (seed 004): the %n triangle is sorted by the distance |b| of its barycentre b (view space) to the camera, far to near, lit once at b, and painted in that order &lt;i&gt;without a depth test&lt;/i&gt;: the last painted stays.</numerusform>
@@ -4953,17 +5001,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="385"/>
+        <location filename="../views/painter_view.cpp" line="394"/>
         <source>The frame shown uses the z-buffer; this view renders the scene again as the painter would.</source>
         <translation>The frame shown uses the z-buffer; this view renders the scene again as the painter would.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="388"/>
+        <location filename="../views/painter_view.cpp" line="397"/>
         <source>Against the z-buffer with the same colours, %1 pixels differ: &lt;span style=&apos;color:#d00000&apos;&gt;%2 where a farther triangle was painted after a nearer one&lt;/span&gt; (the order of whole triangles is not the order of their pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 on edges two triangles share at the same depth&lt;/span&gt; (the z-buffer keeps the first drawn, the painter the last).</source>
         <translation>Against the z-buffer with the same colours, %1 pixels differ: &lt;span style=&apos;color:#d00000&apos;&gt;%2 where a farther triangle was painted after a nearer one&lt;/span&gt; (the order of whole triangles is not the order of their pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 on edges two triangles share at the same depth&lt;/span&gt; (the z-buffer keeps the first drawn, the painter the last).</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="403"/>
+        <location filename="../views/painter_view.cpp" line="412"/>
         <source>Triangle %1: b = %2, |b| = %3, painted %4 of %5. The z-buffer shows it at %6 pixels; a triangle painted after it covers %7 of them though it is farther there; it covers %8 pixels of nearer triangles painted before it.</source>
         <translation>Triangle %1: b = %2, |b| = %3, painted %4 of %5. The z-buffer shows it at %6 pixels; a triangle painted after it covers %7 of them though it is farther there; it covers %8 pixels of nearer triangles painted before it.</translation>
     </message>

@@ -4,57 +4,57 @@
 <context>
     <name>AccuracyPlot</name>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="127"/>
+        <location filename="../app/accuracy_plot.cpp" line="126"/>
         <source>median time per frame (ms, log scale)</source>
         <translation>tempo mediano por quadro (ms, escala logarítmica)</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="133"/>
+        <location filename="../app/accuracy_plot.cpp" line="132"/>
         <source>colour RMSE against the exact reference (byte steps, log scale)</source>
         <translation>RMSE da cor contra a referência exata (passos de byte, escala logarítmica)</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="187"/>
+        <location filename="../app/accuracy_plot.cpp" line="186"/>
         <source>colour: shading</source>
         <translation>cor: sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="196"/>
+        <location filename="../app/accuracy_plot.cpp" line="195"/>
         <source>shape: rules</source>
         <translation>forma: regras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="205"/>
+        <location filename="../app/accuracy_plot.cpp" line="204"/>
         <source>filled: float; hollow: double</source>
         <translation>cheio: float; vazado: double</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="208"/>
+        <location filename="../app/accuracy_plot.cpp" line="207"/>
         <source>size: samples per pixel</source>
         <translation>tamanho: amostras por pixel</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="210"/>
+        <location filename="../app/accuracy_plot.cpp" line="209"/>
         <source>exact reference:</source>
         <translation>referência exata:</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="212"/>
+        <location filename="../app/accuracy_plot.cpp" line="211"/>
         <source>%1 ms, %2 rays</source>
         <translation>%1 ms, %2 raios</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="217"/>
+        <location filename="../app/accuracy_plot.cpp" line="216"/>
         <source>an RMSE of 0 sits on the floor</source>
         <translation>RMSE 0: no piso do gráfico</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="262"/>
+        <location filename="../app/accuracy_plot.cpp" line="261"/>
         <source>byte steps</source>
         <translation>passos de byte</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="265"/>
+        <location filename="../app/accuracy_plot.cpp" line="264"/>
         <source>coverage</source>
         <translation>cobertura</translation>
     </message>
@@ -1676,233 +1676,281 @@
     </message>
     <message>
         <location filename="../app/pipeline_messages.cpp" line="493"/>
+        <source>the scene has no light to move</source>
+        <translation>a cena não tem luz para mover</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="494"/>
+        <source>no triangle is in front of the camera</source>
+        <translation>nenhum triângulo está à frente da câmera</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="496"/>
         <source>the exact reference handles course scenes (the course camera, view z as depth, the course&apos;s Phong lighting with the material&apos;s colour); %1</source>
         <translation>a referência exata trata cenas do curso (a câmera do curso, o z de vista como profundidade, a iluminação de Phong do curso com a cor do material); %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="496"/>
+        <location filename="../app/pipeline_messages.cpp" line="499"/>
         <source>this scene has no course camera</source>
         <translation>esta cena não tem câmera do curso</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="497"/>
+        <location filename="../app/pipeline_messages.cpp" line="500"/>
         <source>this scene&apos;s depth is NDC z</source>
         <translation>a profundidade desta cena é o z em NDC</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="498"/>
+        <location filename="../app/pipeline_messages.cpp" line="501"/>
         <source>%1 has its own projection matrix</source>
         <translation>%1 tem a sua própria matriz de projeção</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="499"/>
+        <location filename="../app/pipeline_messages.cpp" line="502"/>
         <source>%1 is not lit by the course&apos;s Phong model</source>
         <translation>%1 não é iluminado pelo modelo de Phong do curso</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="500"/>
+        <location filename="../app/pipeline_messages.cpp" line="503"/>
         <source>%1 takes its colour from its vertices or a texture</source>
         <translation>%1 tira a sua cor dos vértices ou de uma textura</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="501"/>
+        <location filename="../app/pipeline_messages.cpp" line="504"/>
         <source>%1 is lit with flat normals</source>
         <translation>%1 é iluminado com normais flat</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="502"/>
+        <location filename="../app/pipeline_messages.cpp" line="505"/>
         <source>samples per axis must be 1 to 16</source>
         <translation>as amostras por eixo devem ser de 1 a 16</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="504"/>
+        <location filename="../app/pipeline_messages.cpp" line="507"/>
         <source>cannot read the texture %1: %2</source>
         <translation>não é possível ler a textura %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="506"/>
+        <location filename="../app/pipeline_messages.cpp" line="509"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V está a %1 graus da reta de N: Gram-Schmidt guarda só isso de V, e a base é ortonormal só até %2, menos que a precisão de um float; escolha um V mais longe de N</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="511"/>
+        <location filename="../app/pipeline_messages.cpp" line="514"/>
         <source>cannot open: %1</source>
         <translation>não é possível abrir: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="512"/>
+        <location filename="../app/pipeline_messages.cpp" line="515"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>o arquivo tem %1 MiB, mais que os %2 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="514"/>
+        <location filename="../app/pipeline_messages.cpp" line="517"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>o arquivo tem mais que os %1 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="516"/>
+        <location filename="../app/pipeline_messages.cpp" line="519"/>
         <source>not enough memory to read this file</source>
         <translation>não há memória suficiente para ler este arquivo</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="517"/>
+        <location filename="../app/pipeline_messages.cpp" line="520"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>os arquivos da cena embutida não podem ser gravados: salve-a num arquivo seu (Salvar como)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="520"/>
+        <location filename="../app/pipeline_messages.cpp" line="523"/>
         <source>the object is not edited, so not saved</source>
         <translation>o objeto não é editado, então não é salvo</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="521"/>
+        <location filename="../app/pipeline_messages.cpp" line="524"/>
         <source>cannot write into the built-in resources</source>
         <translation>não é possível gravar nos recursos embutidos</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="522"/>
+        <location filename="../app/pipeline_messages.cpp" line="525"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>a câmera não foi salva, pois não carregaria de novo: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="523"/>
+        <location filename="../app/pipeline_messages.cpp" line="526"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>não salvo: o texto gravado não é lido de volta com os mesmos valores</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="525"/>
+        <location filename="../app/pipeline_messages.cpp" line="528"/>
         <source>cannot write the file: %1</source>
         <translation>não é possível gravar o arquivo: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="526"/>
+        <location filename="../app/pipeline_messages.cpp" line="529"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>só %1 de %2 bytes puderam ser gravados (o disco está cheio?)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="527"/>
+        <location filename="../app/pipeline_messages.cpp" line="530"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>não é possível gravar o arquivo (ele fica como estava): %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="529"/>
+        <location filename="../app/pipeline_messages.cpp" line="532"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[linhas, fragmentos], dois números inteiros</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="530"/>
+        <location filename="../app/pipeline_messages.cpp" line="533"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[largura, altura], números inteiros de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="531"/>
+        <location filename="../app/pipeline_messages.cpp" line="534"/>
         <source>a list</source>
         <translation>uma lista</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="532"/>
+        <location filename="../app/pipeline_messages.cpp" line="535"/>
         <source>a list of %1 numbers</source>
         <translation>uma lista de %1 números</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="533"/>
+        <location filename="../app/pipeline_messages.cpp" line="536"/>
         <source>a list of 1 to 8 lights</source>
         <translation>uma lista de 1 a 8 luzes</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="534"/>
+        <location filename="../app/pipeline_messages.cpp" line="537"/>
         <source>a list of dock names</source>
         <translation>uma lista de nomes de painéis</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="535"/>
+        <location filename="../app/pipeline_messages.cpp" line="538"/>
         <source>a number</source>
         <translation>um número</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="536"/>
+        <location filename="../app/pipeline_messages.cpp" line="539"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>um número positivo ou &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="537"/>
+        <location filename="../app/pipeline_messages.cpp" line="540"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>um número positivo ou &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="538"/>
+        <location filename="../app/pipeline_messages.cpp" line="541"/>
         <source>a whole number from %1</source>
         <translation>um número inteiro a partir de %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="539"/>
+        <location filename="../app/pipeline_messages.cpp" line="542"/>
         <source>an object</source>
         <translation>um objeto</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="540"/>
+        <location filename="../app/pipeline_messages.cpp" line="543"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>esperava %1 para &quot;%2&quot;, encontrou %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="541"/>
+        <location filename="../app/pipeline_messages.cpp" line="544"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>esperava um arquivo de aula: um objeto JSON com &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="542"/>
+        <location filename="../app/pipeline_messages.cpp" line="545"/>
         <source>not a lesson file: %1</source>
         <translation>não é um arquivo de aula: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="543"/>
+        <location filename="../app/pipeline_messages.cpp" line="546"/>
         <source>nothing</source>
         <translation>nada</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="544"/>
+        <location filename="../app/pipeline_messages.cpp" line="547"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="545"/>
+        <location filename="../app/pipeline_messages.cpp" line="548"/>
         <source>one of %1</source>
         <translation>um de %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="546"/>
+        <location filename="../app/pipeline_messages.cpp" line="549"/>
         <source>text in quotes</source>
         <translation>um texto entre aspas</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="547"/>
+        <location filename="../app/pipeline_messages.cpp" line="550"/>
         <source>the text &apos;%1&apos;</source>
         <translation>o texto &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="548"/>
+        <location filename="../app/pipeline_messages.cpp" line="551"/>
         <source>true or false</source>
         <translation>true ou false</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="549"/>
+        <location filename="../app/pipeline_messages.cpp" line="552"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>ignorou a chave desconhecida &quot;%1&quot; (as conhecidas aqui: %2)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="584"/>
+        <location filename="../app/pipeline_messages.cpp" line="587"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="590"/>
+        <location filename="../app/pipeline_messages.cpp" line="593"/>
         <source>%1: warning: %2</source>
         <translation>%1: aviso: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="591"/>
+        <location filename="../app/pipeline_messages.cpp" line="594"/>
         <source>%1: note: %2</source>
         <translation>%1: nota: %2</translation>
+    </message>
+</context>
+<context>
+    <name>StabilityPlot</name>
+    <message>
+        <location filename="../app/stability_plot.cpp" line="155"/>
+        <source>every point: error against time</source>
+        <translation>todos os pontos: erro contra tempo</translation>
+    </message>
+    <message>
+        <location filename="../app/stability_plot.cpp" line="156"/>
+        <source>time per frame (ms, log scale)</source>
+        <translation>tempo por quadro (ms, escala log)</translation>
+    </message>
+    <message>
+        <location filename="../app/stability_plot.cpp" line="171"/>
+        <source>float</source>
+        <translation>float</translation>
+    </message>
+    <message>
+        <location filename="../app/stability_plot.cpp" line="172"/>
+        <source>double</source>
+        <translation>double</translation>
+    </message>
+    <message>
+        <location filename="../app/stability_plot.cpp" line="188"/>
+        <source>float against double, largest difference</source>
+        <translation>float contra double, maior diferença</translation>
+    </message>
+    <message>
+        <location filename="../app/stability_plot.cpp" line="193"/>
+        <source>y: colour error in byte steps (log; RMSE against the exact reference, or the largest float-double difference); x: stiffer to the right; a cross: the scene could not be rendered</source>
+        <translation>y: erro de cor em passos de byte (log; RMSE contra a referência exata, ou a maior diferença float-double); x: mais rígido à direita; um x: a cena não pôde ser renderizada</translation>
+    </message>
+    <message>
+        <location filename="../app/stability_plot.cpp" line="238"/>
+        <source>%1 (%2, log scale)</source>
+        <translation>%1 (%2, escala log)</translation>
     </message>
 </context>
 <context>
@@ -4867,67 +4915,67 @@
 <context>
     <name>rasterlab::PainterView</name>
     <message>
-        <location filename="../views/painter_view.cpp" line="71"/>
+        <location filename="../views/painter_view.cpp" line="72"/>
         <source>Painted</source>
         <translation>Ordem</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="73"/>
+        <location filename="../views/painter_view.cpp" line="74"/>
         <source>Draw</source>
         <translation>Desenho</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="75"/>
+        <location filename="../views/painter_view.cpp" line="76"/>
         <source>Triangle</source>
         <translation>Triângulo</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="77"/>
+        <location filename="../views/painter_view.cpp" line="78"/>
         <source>|b| (distance)</source>
         <translation>|b| (distância)</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="79"/>
+        <location filename="../views/painter_view.cpp" line="80"/>
         <source>Hidden wrongly</source>
         <translation>Ocultos por engano</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="136"/>
+        <location filename="../views/painter_view.cpp" line="137"/>
         <source>The triangles in the order the painter paints them: farthest barycentre first. Click a row to select its triangle.</source>
         <translation>Os triângulos na ordem em que o pintor os pinta: o baricentro mais distante primeiro. Clique numa linha para selecionar seu triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="141"/>
+        <location filename="../views/painter_view.cpp" line="142"/>
         <source>Painter&apos;s image</source>
         <translation>Imagem do pintor</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="142"/>
+        <location filename="../views/painter_view.cpp" line="143"/>
         <source>Painted order (first blue, last red)</source>
         <translation>Ordem de pintura (primeiro azul, último vermelho)</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="147"/>
+        <location filename="../views/painter_view.cpp" line="148"/>
         <source>Mark ties on shared edges</source>
         <translation>Marcar empates nas arestas compartilhadas</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="150"/>
+        <location filename="../views/painter_view.cpp" line="151"/>
         <source>Pixels on an edge two triangles share, at the same depth: the z-buffer keeps the first drawn, the painter the last.</source>
         <translation>Pixels numa aresta que dois triângulos compartilham, na mesma profundidade: o z-buffer mantém o primeiro desenhado, o pintor o último.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="331"/>
+        <location filename="../views/painter_view.cpp" line="340"/>
         <source>rank of the last triangle painted</source>
         <translation>ordem do último triângulo pintado</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="332"/>
+        <location filename="../views/painter_view.cpp" line="341"/>
         <source>painted far to near, no depth test</source>
         <translation>pintado do mais distante ao mais próximo, sem teste de profundidade</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/painter_view.cpp" line="334"/>
+        <location filename="../views/painter_view.cpp" line="343"/>
         <source>Z-buffer (the same flat colours): %n pixel(s) differ</source>
         <translation>
             <numerusform>Z-buffer (as mesmas cores flat): %n pixel difere</numerusform>
@@ -4935,17 +4983,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="374"/>
+        <location filename="../views/painter_view.cpp" line="383"/>
         <source>No frame.</source>
         <translation>Nenhum quadro.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="375"/>
+        <location filename="../views/painter_view.cpp" line="384"/>
         <source>Not worked out yet.</source>
         <translation>Ainda não calculado.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/painter_view.cpp" line="380"/>
+        <location filename="../views/painter_view.cpp" line="389"/>
         <source>&lt;b&gt;Painter&apos;s algorithm&lt;/b&gt; (seed 004): the %n triangle(s) are sorted by the distance |b| of their barycentre b (view space) to the camera, far to near, each lit once at b, and painted in that order &lt;i&gt;without a depth test&lt;/i&gt;: the last painted stays.</source>
         <translation>
             <numerusform>&lt;b&gt;Algoritmo do pintor&lt;/b&gt; (semente 004): o %n triângulo é ordenado pela distância |b| do seu baricentro b (espaço de vista) à câmera, do mais distante ao mais próximo, iluminado uma vez em b e pintado nessa ordem &lt;i&gt;sem teste de profundidade&lt;/i&gt;: o último pintado prevalece.</numerusform>
@@ -4953,17 +5001,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="385"/>
+        <location filename="../views/painter_view.cpp" line="394"/>
         <source>The frame shown uses the z-buffer; this view renders the scene again as the painter would.</source>
         <translation>O quadro exibido usa o z-buffer; este painel renderiza a cena de novo como o pintor faria.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="388"/>
+        <location filename="../views/painter_view.cpp" line="397"/>
         <source>Against the z-buffer with the same colours, %1 pixels differ: &lt;span style=&apos;color:#d00000&apos;&gt;%2 where a farther triangle was painted after a nearer one&lt;/span&gt; (the order of whole triangles is not the order of their pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 on edges two triangles share at the same depth&lt;/span&gt; (the z-buffer keeps the first drawn, the painter the last).</source>
         <translation>Comparado ao z-buffer com as mesmas cores, %1 pixels diferem: &lt;span style=&apos;color:#d00000&apos;&gt;%2 onde um triângulo mais distante foi pintado depois de um mais próximo&lt;/span&gt; (a ordem dos triângulos inteiros não é a ordem dos seus pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 em arestas que dois triângulos compartilham na mesma profundidade&lt;/span&gt; (o z-buffer mantém o primeiro desenhado, o pintor o último).</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="403"/>
+        <location filename="../views/painter_view.cpp" line="412"/>
         <source>Triangle %1: b = %2, |b| = %3, painted %4 of %5. The z-buffer shows it at %6 pixels; a triangle painted after it covers %7 of them though it is farther there; it covers %8 pixels of nearer triangles painted before it.</source>
         <translation>Triângulo %1: b = %2, |b| = %3, pintado na posição %4 de %5. O z-buffer o mostra em %6 pixels; um triângulo pintado depois dele cobre %7 desses pixels, embora ali esteja mais distante; ele cobre %8 pixels de triângulos mais próximos pintados antes dele.</translation>
     </message>

@@ -280,6 +280,98 @@ std::vector<AccuracyMode> defaultAccuracyModes(const std::vector<ShadingModel>& 
     return modes;
 }
 
+std::shared_ptr<const Scene> sceneForMode(const Scene& scene, const AccuracyMode& mode) {
+    auto modeScene = std::make_shared<Scene>(scene);
+    modeScene->rules = rulesOf(mode.rules);
+    modeScene->width = scene.width * mode.supersample;
+    modeScene->height = scene.height * mode.supersample;
+    for (Draw& draw : modeScene->draws) draw.shading = mode.shading;
+    return modeScene;
+}
+
+Result<TimedFrame> renderTimed(const std::shared_ptr<const Scene>& modeScene, int supersample,
+                               int repeats, int warmup, int threads) {
+    RenderOptions renderOptions;
+    renderOptions.threads = threads;
+    RenderContext context;
+    std::vector<double> times, shadingTimes;
+    std::optional<FrameTrace> last;
+    TimedFrame timed;
+    for (int r = 0; r < std::max(1, repeats) + warmup; ++r) {
+        last.reset();  // so that the context's buffers are free to be reused
+        const auto started = Clock::now();
+        auto trace = renderFrame(modeScene, renderOptions, &context);
+        if (!trace) return trace.error();
+        if (supersample > 1) timed.sampled = sampleFrame(trace.value(), supersample);
+        const double ms = millisecondsSince(started);
+        if (r >= warmup) {
+            times.push_back(ms);
+            shadingTimes.push_back(
+                trace->stageMilliseconds[static_cast<std::size_t>(StageId::Shading)]);
+        }
+        last = std::move(trace.value());
+    }
+    if (supersample == 1) timed.sampled = sampleFrame(*last, 1);
+    timed.trace = std::make_shared<const FrameTrace>(std::move(*last));
+    timed.milliseconds = median(times);
+    timed.shadingMilliseconds = median(shadingTimes);
+    return timed;
+}
+
+Result<ReferenceImage> referenceForFrame(const Scene& modeScene, const TimedFrame& frame,
+                                         int supersample, int threads) {
+    // The reference sees the scene at the output size, with the mode's shading.
+    Scene referenceScene = modeScene;
+    referenceScene.width = modeScene.width / supersample;
+    referenceScene.height = modeScene.height / supersample;
+    ReferenceOptions options;
+    options.samplesPerAxis = supersample;
+    options.threads = threads;
+    options.nearZ = frame.trace->projection->nearW;
+    return renderReference(referenceScene, *frame.trace->view, *frame.trace->normals, options);
+}
+
+AccuracyRow floatRow(const AccuracyMode& mode, const TimedFrame& frame,
+                     const std::shared_ptr<const ReferenceImage>& reference,
+                     const AccuracyOptions& options) {
+    AccuracyRow row;
+    row.mode = mode;
+    row.milliseconds = frame.milliseconds;
+    row.metrics = compareWithReference(frame.sampled, *reference);
+    if (options.keepErrorMaps) row.errorMap = errorMap(frame.sampled, *reference);
+    if (options.keepImages) {
+        row.image = std::make_shared<const SampledImage>(frame.sampled);
+        row.reference = reference;
+    }
+    return row;
+}
+
+AccuracyRow doubleRow(const AccuracyMode& mode, const TimedFrame& frame,
+                      const std::shared_ptr<const ReferenceImage>& reference,
+                      const AccuracyOptions& options) {
+    // The float frame's time with its shading stage swapped for the double one (the median of
+    // as many runs).
+    std::vector<double> shadingTimes;
+    SampledImage inDouble;
+    for (int r = 0; r < std::max(1, options.repeats); ++r) {
+        double ms = 0.0;
+        inDouble = shadeFrameInDouble(*frame.trace, mode.supersample, ms);
+        shadingTimes.push_back(ms);
+    }
+    AccuracyRow row;
+    row.mode = mode;
+    row.precision = "double";
+    row.milliseconds =
+        std::max(0.0, frame.milliseconds - frame.shadingMilliseconds) + median(shadingTimes);
+    row.metrics = compareWithReference(inDouble, *reference);
+    if (options.keepErrorMaps) row.errorMap = errorMap(inDouble, *reference);
+    if (options.keepImages) {
+        row.image = std::make_shared<const SampledImage>(std::move(inDouble));
+        row.reference = reference;
+    }
+    return row;
+}
+
 Result<AccuracyReport> measureAccuracy(const Scene& scene, const AccuracyOptions& options) {
     std::vector<AccuracyMode> modes = options.modes;
     if (modes.empty())
@@ -300,52 +392,19 @@ Result<AccuracyReport> measureAccuracy(const Scene& scene, const AccuracyOptions
         if (mode.supersample < 1 || mode.supersample > 16)
             return makeError(ErrorCode::Usage, {},
                              "supersampling must be 1 to 16 samples per axis"_msg);
-        auto modeScene = std::make_shared<Scene>(scene);
-        modeScene->rules = rulesOf(mode.rules);
-        modeScene->width = scene.width * mode.supersample;
-        modeScene->height = scene.height * mode.supersample;
-        for (Draw& draw : modeScene->draws) draw.shading = mode.shading;
-        const std::shared_ptr<const Scene> shared = modeScene;
-
-        RenderOptions renderOptions;
-        renderOptions.threads = options.threads;
-        RenderContext context;
-        std::vector<double> times, floatShadingTimes;
-        std::optional<FrameTrace> last;
-        SampledImage sampled;
+        const auto modeScene = sceneForMode(scene, mode);
         // Untimed frames first: one per mode for its buffers, a few more for the first mode,
         // whose frames also wake the threads and the caches up.
         const int warmup = &mode == &modes.front() ? 4 : 1;
-        for (int r = 0; r < std::max(1, options.repeats) + warmup; ++r) {
-            last.reset();  // so that the context's buffers are free to be reused
-            const auto started = Clock::now();
-            auto trace = renderFrame(shared, renderOptions, &context);
-            if (!trace) return trace.error();
-            if (mode.supersample > 1) sampled = sampleFrame(trace.value(), mode.supersample);
-            const double ms = millisecondsSince(started);
-            if (r >= warmup) {
-                times.push_back(ms);
-                floatShadingTimes.push_back(
-                    trace->stageMilliseconds[static_cast<std::size_t>(StageId::Shading)]);
-            }
-            last = std::move(trace.value());
-        }
-        if (mode.supersample == 1) sampled = sampleFrame(*last, 1);
+        auto frame =
+            renderTimed(modeScene, mode.supersample, options.repeats, warmup, options.threads);
+        if (!frame) return frame.error();
 
         std::shared_ptr<const ReferenceImage> reference;
         for (const Cached& c : references)
             if (c.shading == mode.shading && c.k == mode.supersample) reference = c.image;
         if (!reference) {
-            // The reference sees the scene at the output size, with the mode's shading.
-            auto referenceScene = *modeScene;
-            referenceScene.width = scene.width;
-            referenceScene.height = scene.height;
-            ReferenceOptions referenceOptions;
-            referenceOptions.samplesPerAxis = mode.supersample;
-            referenceOptions.threads = options.threads;
-            referenceOptions.nearZ = last->projection->nearW;
-            auto made =
-                renderReference(referenceScene, *last->view, *last->normals, referenceOptions);
+            auto made = referenceForFrame(*modeScene, *frame, mode.supersample, options.threads);
             if (!made) return made.error();
             if (mode.supersample == 1) {
                 report.referenceMilliseconds += made->buildMilliseconds + made->castMilliseconds;
@@ -354,39 +413,8 @@ Result<AccuracyReport> measureAccuracy(const Scene& scene, const AccuracyOptions
             reference = std::make_shared<const ReferenceImage>(std::move(made.value()));
             references.push_back({mode.shading, mode.supersample, reference});
         }
-        AccuracyRow row;
-        row.mode = mode;
-        row.milliseconds = median(times);
-        row.metrics = compareWithReference(sampled, *reference);
-        if (options.keepErrorMaps) row.errorMap = errorMap(sampled, *reference);
-        if (options.keepImages) {
-            row.image = std::make_shared<const SampledImage>(sampled);
-            row.reference = reference;
-        }
-        report.rows.push_back(row);
-        if (options.withDouble) {
-            // The float frame's time with its shading stage swapped for the double one
-            // (the median of as many runs).
-            std::vector<double> shadingTimes;
-            SampledImage inDouble;
-            for (int r = 0; r < std::max(1, options.repeats); ++r) {
-                double ms = 0.0;
-                inDouble = shadeFrameInDouble(*last, mode.supersample, ms);
-                shadingTimes.push_back(ms);
-            }
-            AccuracyRow d;
-            d.mode = mode;
-            d.precision = "double";
-            const double floatShading = median(floatShadingTimes);
-            d.milliseconds = std::max(0.0, row.milliseconds - floatShading) + median(shadingTimes);
-            d.metrics = compareWithReference(inDouble, *reference);
-            if (options.keepErrorMaps) d.errorMap = errorMap(inDouble, *reference);
-            if (options.keepImages) {
-                d.image = std::make_shared<const SampledImage>(std::move(inDouble));
-                d.reference = reference;
-            }
-            report.rows.push_back(std::move(d));
-        }
+        report.rows.push_back(floatRow(mode, *frame, reference, options));
+        if (options.withDouble) report.rows.push_back(doubleRow(mode, *frame, reference, options));
     }
     return report;
 }

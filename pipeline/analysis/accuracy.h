@@ -119,6 +119,30 @@ std::vector<AccuracyMode> defaultAccuracyModes(const std::vector<ShadingModel>& 
                                                const std::vector<RuleSet>& rules,
                                                const std::vector<int>& supersample);
 
+// The steps of measureAccuracy, for sweeps that bring their own reference (stability.h).
+// The scene with the mode's rules and shading, at k times the size.
+std::shared_ptr<const Scene> sceneForMode(const Scene& scene, const AccuracyMode& mode);
+
+struct TimedFrame {
+    std::shared_ptr<const FrameTrace> trace;  // the last frame rendered
+    SampledImage sampled;                     // in the reference's terms
+    double milliseconds = 0.0;                // median per frame, with the k x k averaging
+    double shadingMilliseconds = 0.0;         // median of the shading stage alone
+};
+// Renders warmup untimed frames, then repeats timed ones.
+Result<TimedFrame> renderTimed(const std::shared_ptr<const Scene>& modeScene, int supersample,
+                               int repeats, int warmup, int threads);
+// The exact reference of the frame's scene, from its view-space geometry.
+Result<ReferenceImage> referenceForFrame(const Scene& modeScene, const TimedFrame& frame,
+                                         int supersample, int threads);
+// The frame as rendered (float), and re-shaded in double, against the reference.
+AccuracyRow floatRow(const AccuracyMode& mode, const TimedFrame& frame,
+                     const std::shared_ptr<const ReferenceImage>& reference,
+                     const AccuracyOptions& options);
+AccuracyRow doubleRow(const AccuracyMode& mode, const TimedFrame& frame,
+                      const std::shared_ptr<const ReferenceImage>& reference,
+                      const AccuracyOptions& options);
+
 // Renders every mode of the scene (its own shading and rules are replaced by the mode's) and
 // compares each with the reference.
 Result<AccuracyReport> measureAccuracy(const Scene& scene, const AccuracyOptions& options);

@@ -28,6 +28,20 @@
 
 namespace rl {
 
+// Above this n, (R.V)^n is worked out in double (specularPower): float's rounding of R.V,
+// about 6e-8, is multiplied by n in the power and would pass a tenth of a byte step.
+inline constexpr float kPreciseShininess = 1000.0f;
+
+// (R.V)^n, with 0^0 = 1 as in C's pow. Up to kPreciseShininess from the float R.V
+// (fast_pow.h); above it from the cosine of R and V in double.
+inline float specularPower(const vec3& r, const vec3& v, float rDotV, float n) {
+    if (!(n > kPreciseShininess)) return fastPow(rDotV, n);
+    const dvec3 rd(r), vd(v);
+    const double lengths = glm::length(rd) * glm::length(vd);
+    const double cosine = lengths > 0.0 ? std::clamp(glm::dot(rd, vd) / lengths, 0.0, 1.0) : 0.0;
+    return static_cast<float>(std::pow(cosine, double(n)));
+}
+
 struct PhongSample {
     vec3 ambient = vec3(0.0f);   // Ia ka
     vec3 diffuse = vec3(0.0f);   // sum of Il Od kd (N.L)
@@ -178,10 +192,13 @@ inline void addLight(const Material& m, const vec3& od, const ViewLight& light, 
         const vec3 il = plain ? light.intensity : light.intensity * f.value;
         diffuse = il * od * m.kd * nDotL;
         if (rDotV >= 0.0f && m.ks != 0.0f) {
-            // (R.V)^n (fast_pow.h), with 0^0 = 1 as in C's pow. A negative n (outside the
-            // course's range, and warned about when read) is not a highlight: its huge or
-            // infinite values are left out rather than turned into NaN.
-            const float power = fastPow(rDotV, m.shininess);
+            // (R.V)^n, or (N.H)^n. A negative n (outside the course's range, and warned about
+            // when read) is not a highlight: its huge or infinite values are left out rather
+            // than turned into NaN.
+            const float power =
+                specularModel == SpecularModel::BlinnPhong
+                    ? specularPower(nUnit, r, rDotV, m.shininess)
+                    : specularPower(r, sample.v, rDotV, m.shininess);
             if (std::isfinite(power)) specular = il * m.ks * power;
         }
         sample.diffuse += diffuse;
@@ -246,7 +263,8 @@ inline PhongSample lambert(const vec3& objectColour, float shininess, const View
                 if (length > 0.0f) {
                     h = sum / length;
                     hDotN = std::max(glm::dot(h, s.n), 0.0f);
-                    s.specular += lights[i].intensity * fastPow(hDotN, shininess);
+                    s.specular +=
+                        lights[i].intensity * specularPower(h, s.n, hDotN, shininess);
                 }
             }
         }

@@ -1,0 +1,18 @@
+// The picture of the stability sweep (stability.h), shared by the window and the command line:
+// one log-log panel per axis, colour RMSE against the stiffness, one curve per rule set and
+// precision (float solid, double dashed), the stiffer end on the right; points whose scene
+// could not be rendered are crosses at the top. A last panel puts every point's error against
+// its time per frame. Drawing text needs a QGuiApplication.
+#pragma once
+
+#include <QImage>
+#include <QString>
+
+#include "stability.h"
+
+namespace rasterlab {
+
+QImage stabilityPlot(const rl::StabilityReport& report, const QString& title,
+                     QSize size = {1500, 900});
+
+}  // namespace rasterlab
