@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Checks what `cmake --install` and the Debian package deliver, from the build in build/
-# (scripts/test.sh runs it after the test suites; about a minute):
+# (scripts/test.sh runs it after the test suites; under a minute):
 #   - installs into a staging folder (DESTDIR) and looks for every file a desktop needs;
 #   - runs the staged rasterlab-cli (--version, and render: a non-empty PNG) and the staged
 #     window offscreen on a staged lesson, with the desktop entry's own Exec command;
