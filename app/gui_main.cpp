@@ -4,8 +4,10 @@
 #include <QCommandLineParser>
 #include <QDir>
 #include <QSettings>
+#include <QTimer>
 
 #include <cstdio>
+#include <cstring>
 
 #include <functional>
 #include <memory>
@@ -17,6 +19,14 @@
 
 int main(int argc, char* argv[]) {
     rl::keepFrameMemory();
+    // The version needs no display: answered before QApplication connects to one (as
+    // QCommandLineParser's --version would print it).
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--version") == 0 || std::strcmp(argv[i], "-v") == 0) {
+            printf("RasterLab %s\n", RASTERLAB_VERSION);
+            return 0;
+        }
+    }
     QApplication app(argc, argv);
     QCoreApplication::setOrganizationName(QStringLiteral("RasterLab"));
     QCoreApplication::setApplicationName(QStringLiteral("RasterLab"));
@@ -36,11 +46,26 @@ int main(int argc, char* argv[]) {
         QStringLiteral("Open a shipped lesson: %1.").arg(rasterlab::exampleNames().join(QStringLiteral(", "))),
         QStringLiteral("NAME"));
     parser.addOption(scene);
+    // For scripts that check an installation (scripts/check-package.sh): open the files, then
+    // close after MS milliseconds, with status 1 if one of them could not be opened.
+    const QCommandLineOption quitAfter(
+        QStringLiteral("quit-after"),
+        QStringLiteral("Close the window MS milliseconds after opening the files; exit status 1 "
+                       "if one of them could not be opened."),
+        QStringLiteral("MS"));
+    parser.addOption(quitAfter);
     parser.process(app);
     if (parser.isSet(scene) && !rasterlab::isExample(parser.value(scene))) {
         fprintf(stderr, "rasterlab: --scene expects one of %s, found '%s'\n",
                 qPrintable(rasterlab::exampleNames().join(QStringLiteral(", "))),
                 qPrintable(parser.value(scene)));
+        return 2;
+    }
+    bool quitAfterIsNumber = false;
+    const int quitAfterMs = parser.value(quitAfter).toInt(&quitAfterIsNumber);
+    if (parser.isSet(quitAfter) && (!quitAfterIsNumber || quitAfterMs < 0)) {
+        fprintf(stderr, "rasterlab: --quit-after expects milliseconds, found '%s'\n",
+                qPrintable(parser.value(quitAfter)));
         return 2;
     }
 
@@ -75,8 +100,15 @@ int main(int argc, char* argv[]) {
             window = std::move(fresh);
         };
     build(nullptr);
-    if (parser.isSet(scene)) window->openExample(parser.value(scene));
-    for (const QString& file : parser.positionalArguments())
-        if (!window->openPath(file)) break;
+    bool opened = true;
+    if (parser.isSet(scene)) opened = window->openExample(parser.value(scene));
+    for (const QString& file : parser.positionalArguments()) {
+        if (!window->openPath(file)) {
+            opened = false;
+            break;
+        }
+    }
+    if (parser.isSet(quitAfter))
+        QTimer::singleShot(quitAfterMs, &app, [&app, opened] { app.exit(opened ? 0 : 1); });
     return app.exec();
 }

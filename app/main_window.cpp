@@ -3,6 +3,7 @@
 
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -37,6 +38,7 @@
 #include "examples.h"
 #include "frame_image_view.h"
 #include "image_io.h"
+#include "install_paths.h"
 #include "near_clip_view.h"
 #include "normals_view.h"
 #include "on_screen.h"
@@ -1015,11 +1017,27 @@ bool MainWindow::compareWithImage(const QString& path) {
 }
 
 void MainWindow::about() {
-    QMessageBox::about(this, tr("About RasterLab"),
-                       tr("<h3>RasterLab %1</h3><p>The classic software rasterization pipeline, "
-                          "stage by stage: camera basis, view transform, normals, projection, "
-                          "scan conversion, depth test and shading.</p>")
-                           .arg(QStringLiteral(RASTERLAB_VERSION)));
+    QMessageBox::about(this, tr("About RasterLab"), aboutText());
+}
+
+QString MainWindow::aboutText() {
+    const QString copyright = QDir(docDir()).filePath(QStringLiteral("copyright"));
+    const QString licence =
+        QFileInfo(copyright).isFile()
+            ? tr("Released under the MIT License, whose text is in %1.")
+                  .arg(QDir::toNativeSeparators(copyright).toHtmlEscaped())
+            : tr("Released under the MIT License.");
+    return tr("<h3>RasterLab %1</h3><p>The classic software rasterization pipeline, "
+              "stage by stage: camera basis, view transform, normals, projection, "
+              "scan conversion, depth test and shading.</p>")
+               .arg(QStringLiteral(RASTERLAB_VERSION)) +
+           tr("<p>It follows the courses it was made for: the computer graphics course "
+              "projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading "
+              "variant with the painter's algorithm), the assignment “HW2: 3D "
+              "Rasterizer”, the per-frame rendering pipeline of an animation course, and "
+              "Prof. Jonh Edson R. de Carvalho's lecture slides on illumination models "
+              "(“Modelos de Iluminação”).</p>") +
+           QStringLiteral("<p>Copyright © 2026 The RasterLab developers. %1</p>").arg(licence);
 }
 
 void MainWindow::showShortcuts() {

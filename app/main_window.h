@@ -174,6 +174,8 @@ public:
     bool openLesson(const QString& path);
     // A shipped lesson (File > Examples); false for an unknown name.
     bool openExample(const QString& name);
+    // The About box's text: the version, the courses followed, the licence.
+    static QString aboutText();
     // The setup on screen as a lesson file; false with the error shown when it cannot be
     // written.
     bool saveLesson(const QString& path);

@@ -2,15 +2,19 @@
 // the keys a presentation clicker sends.
 #include <QActionGroup>
 #include <QCoreApplication>
+#include <QDesktopServices>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QMenuBar>
 #include <QSettings>
 #include <QToolBar>
+#include <QUrl>
 
 #include "course_readers.h"
 #include "edit_panel.h"
 #include "frame_image_view.h"
+#include "install_paths.h"
 #include "main_window.h"
 #include "pipeline_messages.h"
 #include "stage_strip.h"
@@ -357,6 +361,17 @@ void MainWindow::createHelpMenu() {
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     QAction* keys = help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts);
     keys->setShortcut(QKeySequence::HelpContents);
+    // The user guide in the interface's language, where the program's files are
+    // (install_paths.h): disabled, saying why, when it is not there.
+    const QString guide = userGuide(QLocale().name());
+    QAction* guideAction = help->addAction(tr("&User Guide"), this, [guide] {
+        QDesktopServices::openUrl(QUrl::fromLocalFile(guide));
+    });
+    guideAction->setObjectName(QStringLiteral("userGuideAction"));
+    guideAction->setData(guide);
+    guideAction->setEnabled(!guide.isEmpty());
+    guideAction->setStatusTip(guide.isEmpty() ? tr("The user guide is not installed")
+                                              : QDir::toNativeSeparators(guide));
     help->addAction(tr("&About RasterLab"), this, &MainWindow::about);
 }
 

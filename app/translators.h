@@ -1,12 +1,15 @@
-// The interface in one language: our strings (":/i18n", embedded in the window's library) and
-// Qt's own (its dialogs and buttons), for "" (the system's language), "en" or "pt_BR". Installed
-// again when the user picks another language.
+// The interface in one language: our strings (the installed .qm files, or else the copies
+// embedded in the window's library under ":/i18n": install_paths.h) and Qt's own (its dialogs
+// and buttons), for "" (the system's language), "en" or "pt_BR". Installed again when the user
+// picks another language.
 #pragma once
 
 #include <QCoreApplication>
 #include <QLibraryInfo>
 #include <QLocale>
 #include <QTranslator>
+
+#include "install_paths.h"
 
 namespace rasterlab {
 
@@ -21,7 +24,7 @@ public:
                       QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
             QCoreApplication::installTranslator(&m_qt);
         if (m_ours.load(locale, QStringLiteral("rasterlab"), QStringLiteral("_"),
-                        QStringLiteral(":/i18n")))
+                        translationsDir()))
             QCoreApplication::installTranslator(&m_ours);
     }
 

@@ -14,6 +14,13 @@ packages=(
     fonts-dejavu-core                  # a font for the window and the offscreen tests
     locales                            # locale data: a test runs the CLI in pt_BR
     clang libclang-rt-14-dev           # Clang and its ThreadSanitizer (scripts/sanitizers.sh)
+    librsvg2-bin                       # rsvg-convert: the PNG icons, from the SVG
+    dpkg-dev                           # the Debian package: dpkg-shlibdeps finds its dependencies
+    lintian                            # and checks it (scripts/check-package.sh)
+    desktop-file-utils                 # desktop-file-validate: the menu entry
+    appstream                          # appstreamcli: the AppStream metadata
+    shared-mime-info                   # update-mime-database: the file types
+    file                               # the PNG icons' sizes, checked
 )
 
 missing=()

@@ -1,4 +1,5 @@
-// The documents stay true to the source: every function the reading guide names with a file
+// The documents stay true to the source: the README is at most 200 lines and names the package
+// of the project's version, every function the reading guide names with a file
 // and a line is defined on that line, every link and image of the README and of docs/ points
 // at a file that exists, every picture in docs/images is shown by some document, and the
 // user guides need no file outside the repository (the course's own files are named only in
@@ -36,6 +37,28 @@ class TestDocs : public QObject {
     Q_OBJECT
 
 private slots:
+    // The README is for users and stays short: detail goes to docs/.
+    void readmeIsShort() {
+        const QString text = read(QDir(testing::sourceDir()).filePath(QStringLiteral("README.md")));
+        const qsizetype lines = text.count(QLatin1Char('\n'));
+        QVERIFY2(lines > 50 && lines <= 200, qPrintable(QString::number(lines)));
+    }
+
+    // The package the README says to install is the one scripts/package.sh builds: named with
+    // the project's version (CMakeLists.txt).
+    void readmeNamesThePackageOfThisVersion() {
+        const QDir root(testing::sourceDir());
+        static const QRegularExpression version(QStringLiteral("project\\(RasterLab\\s+VERSION\\s+(\\S+)"));
+        const auto project = version.match(read(root.filePath(QStringLiteral("CMakeLists.txt"))));
+        QVERIFY(project.hasMatch());
+        static const QRegularExpression deb(QStringLiteral("rasterlab_([^_\\s]+)_amd64\\.deb"));
+        const QString readme = read(root.filePath(QStringLiteral("README.md")));
+        int named = 0;
+        for (auto it = deb.globalMatch(readme); it.hasNext(); ++named)
+            QCOMPARE(it.next().captured(1), project.captured(1));
+        QVERIFY(named >= 1);
+    }
+
     void readingGuideNamesTheRightLines_data() {
         QTest::addColumn<QString>("guide");
         QTest::newRow("en") << QStringLiteral("docs/reading-order.md");

@@ -3241,586 +3241,601 @@
 <context>
     <name>rasterlab::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="65"/>
+        <location filename="../app/main_window.cpp" line="67"/>
         <source>Open Camera</source>
         <translation>Open Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="67"/>
+        <location filename="../app/main_window.cpp" line="69"/>
         <source>Open Lighting</source>
         <translation>Open Lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="69"/>
+        <location filename="../app/main_window.cpp" line="71"/>
         <source>Open Object</source>
         <translation>Open Object</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="77"/>
+        <location filename="../app/main_window.cpp" line="79"/>
         <source>Camera files (*.cfg *.txt);;All files (*)</source>
         <translation>Camera files (*.cfg *.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="79"/>
+        <location filename="../app/main_window.cpp" line="81"/>
         <source>Lighting files (*.txt *.lux);;All files (*)</source>
         <translation>Lighting files (*.txt *.lux);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="81"/>
+        <location filename="../app/main_window.cpp" line="83"/>
         <source>Objects (*.byu *.txt);;All files (*)</source>
         <translation>Objects (*.byu *.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="27"/>
+        <location filename="../app/main_window_actions.cpp" line="31"/>
         <source>Detect from the file</source>
         <translation>Detect from the file</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="90"/>
+        <location filename="../app/main_window.cpp" line="92"/>
         <source>flat</source>
         <translation>flat</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="92"/>
+        <location filename="../app/main_window.cpp" line="94"/>
         <location filename="../app/main_window_export.cpp" line="70"/>
         <source>Gouraud</source>
         <translation>Gouraud</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="94"/>
+        <location filename="../app/main_window.cpp" line="96"/>
         <location filename="../app/main_window_export.cpp" line="70"/>
         <source>Phong</source>
         <translation>Phong</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="96"/>
+        <location filename="../app/main_window.cpp" line="98"/>
         <source>painter&apos;s-algorithm flat</source>
         <translation>painter&apos;s-algorithm flat</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="105"/>
+        <location filename="../app/main_window.cpp" line="107"/>
         <source>%1 (built in)</source>
         <translation>%1 (built in)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="113"/>
+        <location filename="../app/main_window.cpp" line="115"/>
         <source>RasterLab</source>
         <translation>RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="169"/>
+        <location filename="../app/main_window.cpp" line="171"/>
         <source>Stopped at a breakpoint: %1</source>
         <translation>Stopped at a breakpoint: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="202"/>
+        <location filename="../app/main_window.cpp" line="204"/>
         <location filename="../app/main_window_export.cpp" line="122"/>
         <location filename="../app/main_window_export.cpp" line="159"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="203"/>
+        <location filename="../app/main_window.cpp" line="205"/>
         <source>Stop preparing the stepping of this frame</source>
         <translation>Stop preparing the stepping of this frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="207"/>
+        <location filename="../app/main_window.cpp" line="209"/>
         <source>cancelled</source>
         <translation>cancelled</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="265"/>
+        <location filename="../app/main_window.cpp" line="267"/>
         <source>Stepping</source>
         <translation>Stepping</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="289"/>
+        <location filename="../app/main_window.cpp" line="291"/>
         <source>Edit</source>
         <translation>Edit</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="296"/>
+        <location filename="../app/main_window.cpp" line="298"/>
         <source>Breakpoints</source>
         <translation>Breakpoints</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="302"/>
+        <location filename="../app/main_window.cpp" line="304"/>
         <source>Animation</source>
         <translation>Animation</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="321"/>
+        <location filename="../app/main_window.cpp" line="323"/>
         <source>1 Camera basis</source>
         <translation>1 Camera basis</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="293"/>
+        <location filename="../app/main_window.cpp" line="295"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Pixel inspector (lighting)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="328"/>
+        <location filename="../app/main_window.cpp" line="330"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 View coordinates (vertices)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="330"/>
+        <location filename="../app/main_window.cpp" line="332"/>
         <source>3 Normals</source>
         <translation>3 Normals</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="332"/>
+        <location filename="../app/main_window.cpp" line="334"/>
         <source>4 Projection</source>
         <translation>4 Projection</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="324"/>
+        <location filename="../app/main_window.cpp" line="326"/>
         <source>5 Scan conversion</source>
         <translation>5 Scan conversion</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="338"/>
+        <location filename="../app/main_window.cpp" line="340"/>
         <source>5b Trapezoids</source>
         <translation>5b Trapezoids</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="342"/>
+        <location filename="../app/main_window.cpp" line="344"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="44"/>
+        <location filename="../app/main_window_actions.cpp" line="48"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="157"/>
+        <location filename="../app/main_window_actions.cpp" line="161"/>
         <source>&amp;Animation Frames...</source>
         <translation>&amp;Animation Frames...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="293"/>
+        <location filename="../app/main_window_actions.cpp" line="297"/>
         <source>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</source>
         <translation>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1033"/>
+        <location filename="../app/main_window.cpp" line="1051"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>step forward, back (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1035"/>
+        <location filename="../app/main_window.cpp" line="1053"/>
         <source>Space</source>
         <translation>Space</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1035"/>
+        <location filename="../app/main_window.cpp" line="1053"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>play / pause (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1041"/>
+        <location filename="../app/main_window.cpp" line="1059"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>let go of the picked pixel (on the image)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1042"/>
+        <location filename="../app/main_window.cpp" line="1060"/>
         <source>presentation mode on / off</source>
         <translation>presentation mode on / off</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1047"/>
+        <location filename="../app/main_window.cpp" line="1065"/>
         <source>save, undo, redo</source>
         <translation>save, undo, redo</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="53"/>
+        <location filename="../app/main_window_actions.cpp" line="57"/>
         <source>Open &amp;Camera...</source>
         <translation>Open &amp;Camera...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="134"/>
+        <location filename="../app/main_window.cpp" line="136"/>
         <source>Draw with the Plain Divide</source>
         <translation>Draw with the Plain Divide</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="55"/>
+        <location filename="../app/main_window_actions.cpp" line="59"/>
         <source>Ctrl+Shift+C</source>
         <translation>Ctrl+Shift+C</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="57"/>
+        <location filename="../app/main_window_actions.cpp" line="61"/>
         <source>Open &amp;Lighting...</source>
         <translation>Open &amp;Lighting...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="58"/>
+        <location filename="../app/main_window_actions.cpp" line="62"/>
         <source>Ctrl+Shift+L</source>
         <translation>Ctrl+Shift+L</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="60"/>
+        <location filename="../app/main_window_actions.cpp" line="64"/>
         <source>Open Command &amp;File...</source>
         <translation>Open Command &amp;File...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="61"/>
+        <location filename="../app/main_window_actions.cpp" line="65"/>
         <source>Ctrl+Shift+O</source>
         <translation>Ctrl+Shift+O</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="63"/>
+        <location filename="../app/main_window_actions.cpp" line="67"/>
         <source>Open &amp;Recent</source>
         <translation>Open &amp;Recent</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="65"/>
+        <location filename="../app/main_window_actions.cpp" line="69"/>
         <source>&amp;Default Scene</source>
         <translation>&amp;Default Scene</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="98"/>
+        <location filename="../app/main_window_actions.cpp" line="102"/>
         <source>&amp;Camera</source>
         <translation>&amp;Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="110"/>
+        <location filename="../app/main_window_actions.cpp" line="114"/>
         <source>&amp;Lighting</source>
         <translation>&amp;Lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="126"/>
+        <location filename="../app/main_window_actions.cpp" line="130"/>
         <source>&amp;Export PNG...</source>
         <translation>&amp;Export PNG...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="127"/>
+        <location filename="../app/main_window_actions.cpp" line="131"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="129"/>
+        <location filename="../app/main_window_actions.cpp" line="133"/>
         <source>Export &amp;More</source>
         <translation>Export &amp;More</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="132"/>
+        <location filename="../app/main_window_actions.cpp" line="136"/>
         <source>Image as &amp;Displayed...</source>
         <translation>Image as &amp;Displayed...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="133"/>
+        <location filename="../app/main_window_actions.cpp" line="137"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="134"/>
+        <location filename="../app/main_window_actions.cpp" line="138"/>
         <source>&amp;Colour Buffer at the Cursor...</source>
         <translation>&amp;Colour Buffer at the Cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="136"/>
+        <location filename="../app/main_window_actions.cpp" line="140"/>
         <source>D&amp;epth Buffer at the Cursor...</source>
         <translation>D&amp;epth Buffer at the Cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="138"/>
+        <location filename="../app/main_window_actions.cpp" line="142"/>
         <source>&amp;Normal Buffer...</source>
         <translation>&amp;Normal Buffer...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="139"/>
+        <location filename="../app/main_window_actions.cpp" line="143"/>
         <source>A &amp;View as Displayed</source>
         <translation>A &amp;View as Displayed</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="143"/>
+        <location filename="../app/main_window_actions.cpp" line="147"/>
         <source>Export View</source>
         <translation>Export View</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="155"/>
+        <location filename="../app/main_window_actions.cpp" line="159"/>
         <source>&amp;Stepping Sequence...</source>
         <translation>&amp;Stepping Sequence...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="90"/>
+        <location filename="../app/main_window_actions.cpp" line="94"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="85"/>
+        <location filename="../app/main_window_actions.cpp" line="89"/>
         <source>Compare with &amp;Image...</source>
         <translation>Compare with &amp;Image...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="87"/>
+        <location filename="../app/main_window_actions.cpp" line="91"/>
         <source>A PNG of your own renderer against this scene&apos;s render, with the likely mistakes</source>
         <translation>A PNG of your own renderer against this scene&apos;s render, with the likely mistakes</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="148"/>
+        <location filename="../app/main_window_actions.cpp" line="152"/>
         <source>Shading Side &amp;by Side...</source>
         <translation>Shading Side &amp;by Side...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="150"/>
+        <location filename="../app/main_window_actions.cpp" line="154"/>
         <source>Export Shading Side by Side</source>
         <translation>Export Shading Side by Side</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="162"/>
+        <location filename="../app/main_window_actions.cpp" line="166"/>
         <source>&amp;Edit</source>
         <translation>&amp;Edit</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="168"/>
+        <location filename="../app/main_window_actions.cpp" line="172"/>
         <source>&amp;View</source>
         <translation>&amp;View</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="169"/>
+        <location filename="../app/main_window_actions.cpp" line="173"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Fit to Window</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="170"/>
+        <location filename="../app/main_window_actions.cpp" line="174"/>
         <source>Ctrl+0</source>
         <translation>Ctrl+0</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="172"/>
+        <location filename="../app/main_window_actions.cpp" line="176"/>
         <source>&amp;Actual Size</source>
         <translation>&amp;Actual Size</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="173"/>
+        <location filename="../app/main_window_actions.cpp" line="177"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="174"/>
+        <location filename="../app/main_window_actions.cpp" line="178"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;In</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="176"/>
+        <location filename="../app/main_window_actions.cpp" line="180"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom &amp;Out</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="183"/>
+        <location filename="../app/main_window_actions.cpp" line="187"/>
         <source>Reset &amp;Layout</source>
         <translation>Reset &amp;Layout</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="185"/>
+        <location filename="../app/main_window_actions.cpp" line="189"/>
         <source>Fill the &amp;Window with a Panel</source>
         <translation>Fill the &amp;Window with a Panel</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="189"/>
+        <location filename="../app/main_window_actions.cpp" line="193"/>
         <source>The panel with the focus or under the mouse (the image, from the image) over the whole window; again, the layout back</source>
         <translation>The panel with the focus or under the mouse (the image, from the image) over the whole window; again, the layout back</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="197"/>
+        <location filename="../app/main_window_actions.cpp" line="201"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Presentation Mode</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="202"/>
+        <location filename="../app/main_window_actions.cpp" line="206"/>
         <source>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</source>
         <translation>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="217"/>
+        <location filename="../app/main_window_actions.cpp" line="221"/>
         <source>The System&apos;s</source>
         <translation>The System&apos;s</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="236"/>
+        <location filename="../app/main_window_actions.cpp" line="240"/>
         <source>S&amp;tep</source>
         <translation>S&amp;tep</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="256"/>
+        <location filename="../app/main_window_actions.cpp" line="260"/>
         <source>Pick the Pixel Under the &amp;Mouse</source>
         <translation>Pick the Pixel Under the &amp;Mouse</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="257"/>
+        <location filename="../app/main_window_actions.cpp" line="261"/>
         <source>Ctrl+G</source>
         <translation>Ctrl+G</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="286"/>
+        <location filename="../app/main_window_actions.cpp" line="290"/>
         <source>&amp;Shading</source>
         <translation>&amp;Shading</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="290"/>
+        <location filename="../app/main_window_actions.cpp" line="294"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (per pixel)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="291"/>
+        <location filename="../app/main_window_actions.cpp" line="295"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (per vertex)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="292"/>
+        <location filename="../app/main_window_actions.cpp" line="296"/>
         <source>&amp;Flat (per triangle)</source>
         <translation>&amp;Flat (per triangle)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="334"/>
+        <location filename="../app/main_window_actions.cpp" line="338"/>
         <source>Pro&amp;jection</source>
         <translation>Pro&amp;jection</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="339"/>
+        <location filename="../app/main_window_actions.cpp" line="343"/>
         <source>&amp;Clip at the Near Plane (nothing behind the eye is divided)</source>
         <translation>&amp;Clip at the Near Plane (nothing behind the eye is divided)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="341"/>
+        <location filename="../app/main_window_actions.cpp" line="345"/>
         <source>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</source>
         <translation>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="343"/>
+        <location filename="../app/main_window_actions.cpp" line="347"/>
         <source>&amp;Same Side (clip only triangles that cross the eye plane)</source>
         <translation>&amp;Same Side (clip only triangles that cross the eye plane)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="637"/>
+        <location filename="../app/main_window.cpp" line="639"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="942"/>
+        <location filename="../app/main_window.cpp" line="944"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1030"/>
+        <location filename="../app/main_window.cpp" line="1034"/>
+        <source>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</source>
+        <translation>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="1048"/>
         <source>step forward</source>
         <translation>step forward</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1031"/>
+        <location filename="../app/main_window.cpp" line="1049"/>
         <source>step back</source>
         <translation>step back</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1034"/>
+        <location filename="../app/main_window.cpp" line="1052"/>
         <source>play / pause</source>
         <translation>play / pause</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1036"/>
+        <location filename="../app/main_window.cpp" line="1054"/>
         <source>jump to the start / the end of the frame</source>
         <translation>jump to the start / the end of the frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1037"/>
+        <location filename="../app/main_window.cpp" line="1055"/>
         <source>continue to the next breakpoint</source>
         <translation>continue to the next breakpoint</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1038"/>
+        <location filename="../app/main_window.cpp" line="1056"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>step by stage, triangle, scanline, span, pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1039"/>
+        <location filename="../app/main_window.cpp" line="1057"/>
         <source>show a stage&apos;s view</source>
         <translation>show a stage&apos;s view</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1040"/>
+        <location filename="../app/main_window.cpp" line="1058"/>
         <source>Click, arrows</source>
         <translation>Click, arrows</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1040"/>
+        <location filename="../app/main_window.cpp" line="1058"/>
         <source>pick a pixel, move it by one</source>
         <translation>pick a pixel, move it by one</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1043"/>
+        <location filename="../app/main_window.cpp" line="1061"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, double-click on a panel&apos;s title</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1044"/>
+        <location filename="../app/main_window.cpp" line="1062"/>
         <source>fill the window with the panel (the image, from the image), and back</source>
         <translation>fill the window with the panel (the image, from the image), and back</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1046"/>
+        <location filename="../app/main_window.cpp" line="1064"/>
         <source>open, export the image, export it as displayed</source>
         <translation>open, export the image, export it as displayed</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1049"/>
+        <location filename="../app/main_window.cpp" line="1067"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>fit, actual size, zoom in, zoom out</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1051"/>
+        <location filename="../app/main_window.cpp" line="1069"/>
         <source>Keyboard Shortcuts</source>
         <translation>Keyboard Shortcuts</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="311"/>
+        <location filename="../app/main_window_actions.cpp" line="315"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Rasterization Rules</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="316"/>
+        <location filename="../app/main_window_actions.cpp" line="320"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="318"/>
+        <location filename="../app/main_window_actions.cpp" line="322"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="320"/>
+        <location filename="../app/main_window_actions.cpp" line="324"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (seed 001&apos;s reference images)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="357"/>
+        <location filename="../app/main_window_actions.cpp" line="361"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="360"/>
+        <location filename="../app/main_window_actions.cpp" line="367"/>
+        <source>&amp;User Guide</source>
+        <translation>&amp;User Guide</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_actions.cpp" line="373"/>
+        <source>The user guide is not installed</source>
+        <translation>The user guide is not installed</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window_actions.cpp" line="375"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="274"/>
+        <location filename="../app/main_window.cpp" line="276"/>
         <source>Messages</source>
         <translation>Messages</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="279"/>
+        <location filename="../app/main_window.cpp" line="281"/>
         <source>Scene</source>
         <translation>Scene</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="299"/>
+        <location filename="../app/main_window.cpp" line="301"/>
         <source>Accuracy</source>
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="611"/>
+        <location filename="../app/main_window.cpp" line="613"/>
         <location filename="../app/main_window_export.cpp" line="35"/>
         <location filename="../app/main_window_export.cpp" line="133"/>
         <location filename="../app/main_window_export.cpp" line="175"/>
@@ -3839,298 +3854,298 @@
         <translation>Exported %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="664"/>
+        <location filename="../app/main_window.cpp" line="666"/>
         <source>rendering...</source>
         <translation>rendering...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="664"/>
+        <location filename="../app/main_window.cpp" line="666"/>
         <source>%1, rendering...</source>
         <translation>%1, rendering...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="662"/>
-        <location filename="../app/main_window.cpp" line="905"/>
+        <location filename="../app/main_window.cpp" line="664"/>
+        <location filename="../app/main_window.cpp" line="907"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="45"/>
+        <location filename="../app/main_window_actions.cpp" line="49"/>
         <source>&amp;Open...</source>
         <translation>&amp;Open...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="48"/>
+        <location filename="../app/main_window_actions.cpp" line="52"/>
         <source>A course camera, lighting or object file, or a command file</source>
         <translation>A course camera, lighting or object file, or a command file</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="49"/>
+        <location filename="../app/main_window_actions.cpp" line="53"/>
         <source>Open O&amp;bject...</source>
         <translation>Open O&amp;bject...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="51"/>
+        <location filename="../app/main_window_actions.cpp" line="55"/>
         <source>Ctrl+Shift+B</source>
         <translation>Ctrl+Shift+B</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="96"/>
+        <location filename="../app/main_window_actions.cpp" line="100"/>
         <source>Course File La&amp;youts</source>
         <translation>Course File La&amp;youts</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="179"/>
+        <location filename="../app/main_window_actions.cpp" line="183"/>
         <source>Pa&amp;nels</source>
         <translation>Pa&amp;nels</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="194"/>
+        <location filename="../app/main_window_actions.cpp" line="198"/>
         <source>I&amp;mage</source>
         <translation>I&amp;mage</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="212"/>
+        <location filename="../app/main_window_actions.cpp" line="216"/>
         <source>Lan&amp;guage</source>
         <translation>Lan&amp;guage</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="245"/>
+        <location filename="../app/main_window_actions.cpp" line="249"/>
         <source>Step B&amp;y</source>
         <translation>Step B&amp;y</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="247"/>
+        <location filename="../app/main_window_actions.cpp" line="251"/>
         <source>S&amp;tage</source>
         <translation>S&amp;tage</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="358"/>
+        <location filename="../app/main_window_actions.cpp" line="362"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Keyboard Shortcuts</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="377"/>
+        <location filename="../app/main_window.cpp" line="379"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="594"/>
+        <location filename="../app/main_window.cpp" line="596"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="672"/>
+        <location filename="../app/main_window.cpp" line="674"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparing the stepping of this frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="672"/>
+        <location filename="../app/main_window.cpp" line="674"/>
         <source>Rendering</source>
         <translation>Rendering</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="848"/>
+        <location filename="../app/main_window.cpp" line="850"/>
         <source>Error: %1</source>
         <translation>Error: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="872"/>
+        <location filename="../app/main_window.cpp" line="874"/>
         <source>Files</source>
         <translation>Files</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="875"/>
+        <location filename="../app/main_window.cpp" line="877"/>
         <source>Command file</source>
         <translation>Command file</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="876"/>
+        <location filename="../app/main_window.cpp" line="878"/>
         <source>Image</source>
         <translation>Image</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="878"/>
+        <location filename="../app/main_window.cpp" line="880"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="888"/>
+        <location filename="../app/main_window.cpp" line="890"/>
         <source>Camera</source>
         <translation>Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="889"/>
+        <location filename="../app/main_window.cpp" line="891"/>
         <source>Lighting</source>
         <translation>Lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="890"/>
+        <location filename="../app/main_window.cpp" line="892"/>
         <source>Object</source>
         <translation>Object</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="892"/>
+        <location filename="../app/main_window.cpp" line="894"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="259"/>
-        <location filename="../app/main_window.cpp" line="899"/>
+        <location filename="../app/main_window.cpp" line="261"/>
+        <location filename="../app/main_window.cpp" line="901"/>
         <source>Stages</source>
         <translation>Stages</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="103"/>
+        <location filename="../app/main_window.cpp" line="105"/>
         <source>%1 (the %2 example)</source>
         <translation>%1 (the %2 example)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="292"/>
+        <location filename="../app/main_window.cpp" line="294"/>
         <source>7 Pixel inspector</source>
         <translation>7 Pixel inspector</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="321"/>
+        <location filename="../app/main_window.cpp" line="323"/>
         <source>1 Camera</source>
         <translation>1 Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="324"/>
+        <location filename="../app/main_window.cpp" line="326"/>
         <source>5 Scan</source>
         <translation>5 Scan</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="327"/>
+        <location filename="../app/main_window.cpp" line="329"/>
         <source>2 View</source>
         <translation>2 View</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="335"/>
+        <location filename="../app/main_window.cpp" line="337"/>
         <source>4b Clipping</source>
         <translation>4b Clipping</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="337"/>
+        <location filename="../app/main_window.cpp" line="339"/>
         <source>4b Near-plane clipping (seed 002)</source>
         <translation>4b Near-plane clipping (seed 002)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="340"/>
+        <location filename="../app/main_window.cpp" line="342"/>
         <source>5b Trapezoids: the scan of seed 002</source>
         <translation>5b Trapezoids: the scan of seed 002</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="345"/>
+        <location filename="../app/main_window.cpp" line="347"/>
         <source>Painter</source>
         <translation>Painter</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="346"/>
+        <location filename="../app/main_window.cpp" line="348"/>
         <source>Painter&apos;s algorithm (seed 004)</source>
         <translation>Painter&apos;s algorithm (seed 004)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="350"/>
+        <location filename="../app/main_window.cpp" line="352"/>
         <source>Compare</source>
         <translation>Compare</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="351"/>
+        <location filename="../app/main_window.cpp" line="353"/>
         <source>Compare with their image</source>
         <translation>Compare with their image</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="870"/>
+        <location filename="../app/main_window.cpp" line="872"/>
         <source>Lesson: %1</source>
         <translation>Lesson: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="906"/>
+        <location filename="../app/main_window.cpp" line="908"/>
         <source>skipped: %1</source>
         <translation>skipped: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="909"/>
+        <location filename="../app/main_window.cpp" line="911"/>
         <source>Counts</source>
         <translation>Counts</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="910"/>
+        <location filename="../app/main_window.cpp" line="912"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="913"/>
+        <location filename="../app/main_window.cpp" line="915"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="916"/>
+        <location filename="../app/main_window.cpp" line="918"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="920"/>
+        <location filename="../app/main_window.cpp" line="922"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="944"/>
+        <location filename="../app/main_window.cpp" line="946"/>
         <source>empty (+inf)</source>
         <translation>empty (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="945"/>
+        <location filename="../app/main_window.cpp" line="947"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   depth %6</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="961"/>
+        <location filename="../app/main_window.cpp" line="963"/>
         <source>Open Command File</source>
         <translation>Open Command File</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="962"/>
+        <location filename="../app/main_window.cpp" line="964"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Command files (*.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="968"/>
+        <location filename="../app/main_window.cpp" line="970"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="968"/>
+        <location filename="../app/main_window.cpp" line="970"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="978"/>
+        <location filename="../app/main_window.cpp" line="980"/>
         <source>Export PNG</source>
         <translation>Export PNG</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="978"/>
-        <location filename="../app/main_window_actions.cpp" line="144"/>
-        <location filename="../app/main_window_actions.cpp" line="151"/>
+        <location filename="../app/main_window.cpp" line="980"/>
+        <location filename="../app/main_window_actions.cpp" line="148"/>
+        <location filename="../app/main_window_actions.cpp" line="155"/>
         <location filename="../app/main_window_export.cpp" line="198"/>
         <location filename="../app/main_window_export.cpp" line="206"/>
         <source>PNG images (*.png)</source>
         <translation>PNG images (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="983"/>
+        <location filename="../app/main_window.cpp" line="985"/>
         <source>Compare with Image</source>
         <translation>Compare with Image</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="984"/>
+        <location filename="../app/main_window.cpp" line="986"/>
         <source>PNG images (*.png);;All files (*)</source>
         <translation>PNG images (*.png);;All files (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/main_window.cpp" line="1010"/>
+        <location filename="../app/main_window.cpp" line="1012"/>
         <source>Compared %1 with our render: %n pixel(s) differ</source>
         <translation>
             <numerusform>Compared %1 with our render: %n pixel differs</numerusform>
@@ -4138,12 +4153,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1018"/>
+        <location filename="../app/main_window.cpp" line="1020"/>
         <source>About RasterLab</source>
         <translation>About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1019"/>
+        <location filename="../app/main_window.cpp" line="1027"/>
+        <source>Released under the MIT License, whose text is in %1.</source>
+        <translation>Released under the MIT License, whose text is in %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="1029"/>
+        <source>Released under the MIT License.</source>
+        <translation>Released under the MIT License.</translation>
+    </message>
+    <message>
+        <location filename="../app/main_window.cpp" line="1030"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</translation>
     </message>
