@@ -486,6 +486,10 @@ const char* const kCatalogue[] = {
     QT_TRANSLATE_NOOP("Messages",
                       "internal error: the rows hold %1 pixels and the depth test saw %2 "
                       "fragments"),
+    // pipeline/render/renderer.cpp (lightOnSurface)
+    QT_TRANSLATE_NOOP("Messages",
+                      "light %1 is %2 above triangle %3 of %4, nearer than float can resolve "
+                      "points there (%5): the pixels under it may be lit from the wrong side"),
     // pipeline/analysis/accuracy.cpp
     QT_TRANSLATE_NOOP("Messages", "measurement cancelled"),
     QT_TRANSLATE_NOOP("Messages", "supersampling must be 1 to 16 samples per axis"),

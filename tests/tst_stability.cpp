@@ -8,6 +8,8 @@
 #include <cmath>
 
 #include "benchmark_scenes.h"
+#include "frame_trace.h"
+#include "renderer.h"
 #include "stability.h"
 
 using namespace rl;
@@ -89,6 +91,25 @@ private slots:
         QVERIFY2(std::abs(nearest - expected) < 1e-6 * expected,
                  qPrintable(QStringLiteral("%1 against %2").arg(nearest).arg(expected)));
         QVERIFY(!stiffenScene(Scene{}, StiffnessAxis::Offset, 1.0));  // no course camera
+    }
+
+    void lightOnTheSurfaceIsWarnedAbout() {
+        // Under kLightSurfaceRatio (1e-5) times the light's distance from the eye the renderer
+        // warns; the sphere's light at 1e-7 x its size is well under, at 1e-3 well over.
+        const Scene scene = sphere();
+        for (double height : {1e-3, 1e-7}) {
+            auto stiff = stiffenScene(scene, StiffnessAxis::LightOnSurface, height);
+            QVERIFY(stiff);
+            auto trace = renderFrame(std::make_shared<const Scene>(stiff->scene));
+            QVERIFY(trace);
+            QString warned;
+            for (const Diagnostic& d : trace->diagnostics.items())
+                if (d.message.find("nearer than float can resolve") != std::string::npos)
+                    warned = QString::fromStdString(d.message);
+            QCOMPARE(!warned.isEmpty(), height < 1e-5);
+            if (height < 1e-5)
+                QVERIFY2(warned.startsWith(QStringLiteral("light 1 is 3.4")), qPrintable(warned));
+        }
     }
 
     void movedScaledAndNearScenesStayOnTheFloor() {

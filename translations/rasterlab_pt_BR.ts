@@ -1666,251 +1666,256 @@
     </message>
     <message>
         <location filename="../app/pipeline_messages.cpp" line="490"/>
+        <source>light %1 is %2 above triangle %3 of %4, nearer than float can resolve points there (%5): the pixels under it may be lit from the wrong side</source>
+        <translation>a luz %1 está %2 acima do triângulo %3 de %4, mais perto do que o float consegue distinguir pontos ali (%5): os pixels abaixo dela podem ser iluminados pelo lado errado</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="494"/>
         <source>measurement cancelled</source>
         <translation>medição cancelada</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="491"/>
+        <location filename="../app/pipeline_messages.cpp" line="495"/>
         <source>supersampling must be 1 to 16 samples per axis</source>
         <translation>a superamostragem deve ser de 1 a 16 amostras por eixo</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="493"/>
+        <location filename="../app/pipeline_messages.cpp" line="497"/>
         <source>the scene has no light to move</source>
         <translation>a cena não tem luz para mover</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="494"/>
+        <location filename="../app/pipeline_messages.cpp" line="498"/>
         <source>no triangle is in front of the camera</source>
         <translation>nenhum triângulo está à frente da câmera</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="496"/>
+        <location filename="../app/pipeline_messages.cpp" line="500"/>
         <source>the exact reference handles course scenes (the course camera, view z as depth, the course&apos;s Phong lighting with the material&apos;s colour); %1</source>
         <translation>a referência exata trata cenas do curso (a câmera do curso, o z de vista como profundidade, a iluminação de Phong do curso com a cor do material); %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="499"/>
+        <location filename="../app/pipeline_messages.cpp" line="503"/>
         <source>this scene has no course camera</source>
         <translation>esta cena não tem câmera do curso</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="500"/>
+        <location filename="../app/pipeline_messages.cpp" line="504"/>
         <source>this scene&apos;s depth is NDC z</source>
         <translation>a profundidade desta cena é o z em NDC</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="501"/>
+        <location filename="../app/pipeline_messages.cpp" line="505"/>
         <source>%1 has its own projection matrix</source>
         <translation>%1 tem a sua própria matriz de projeção</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="502"/>
+        <location filename="../app/pipeline_messages.cpp" line="506"/>
         <source>%1 is not lit by the course&apos;s Phong model</source>
         <translation>%1 não é iluminado pelo modelo de Phong do curso</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="503"/>
+        <location filename="../app/pipeline_messages.cpp" line="507"/>
         <source>%1 takes its colour from its vertices or a texture</source>
         <translation>%1 tira a sua cor dos vértices ou de uma textura</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="504"/>
+        <location filename="../app/pipeline_messages.cpp" line="508"/>
         <source>%1 is lit with flat normals</source>
         <translation>%1 é iluminado com normais flat</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="505"/>
+        <location filename="../app/pipeline_messages.cpp" line="509"/>
         <source>samples per axis must be 1 to 16</source>
         <translation>as amostras por eixo devem ser de 1 a 16</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="507"/>
+        <location filename="../app/pipeline_messages.cpp" line="511"/>
         <source>cannot read the texture %1: %2</source>
         <translation>não é possível ler a textura %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="509"/>
+        <location filename="../app/pipeline_messages.cpp" line="513"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V está a %1 graus da reta de N: Gram-Schmidt guarda só isso de V, e a base é ortonormal só até %2, menos que a precisão de um float; escolha um V mais longe de N</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="514"/>
+        <location filename="../app/pipeline_messages.cpp" line="518"/>
         <source>cannot open: %1</source>
         <translation>não é possível abrir: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="515"/>
+        <location filename="../app/pipeline_messages.cpp" line="519"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>o arquivo tem %1 MiB, mais que os %2 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="517"/>
+        <location filename="../app/pipeline_messages.cpp" line="521"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>o arquivo tem mais que os %1 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="519"/>
+        <location filename="../app/pipeline_messages.cpp" line="523"/>
         <source>not enough memory to read this file</source>
         <translation>não há memória suficiente para ler este arquivo</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="520"/>
+        <location filename="../app/pipeline_messages.cpp" line="524"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>os arquivos da cena embutida não podem ser gravados: salve-a num arquivo seu (Salvar como)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="523"/>
+        <location filename="../app/pipeline_messages.cpp" line="527"/>
         <source>the object is not edited, so not saved</source>
         <translation>o objeto não é editado, então não é salvo</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="524"/>
+        <location filename="../app/pipeline_messages.cpp" line="528"/>
         <source>cannot write into the built-in resources</source>
         <translation>não é possível gravar nos recursos embutidos</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="525"/>
+        <location filename="../app/pipeline_messages.cpp" line="529"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>a câmera não foi salva, pois não carregaria de novo: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="526"/>
+        <location filename="../app/pipeline_messages.cpp" line="530"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>não salvo: o texto gravado não é lido de volta com os mesmos valores</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="528"/>
+        <location filename="../app/pipeline_messages.cpp" line="532"/>
         <source>cannot write the file: %1</source>
         <translation>não é possível gravar o arquivo: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="529"/>
+        <location filename="../app/pipeline_messages.cpp" line="533"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>só %1 de %2 bytes puderam ser gravados (o disco está cheio?)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="530"/>
+        <location filename="../app/pipeline_messages.cpp" line="534"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>não é possível gravar o arquivo (ele fica como estava): %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="532"/>
+        <location filename="../app/pipeline_messages.cpp" line="536"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[linhas, fragmentos], dois números inteiros</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="533"/>
+        <location filename="../app/pipeline_messages.cpp" line="537"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[largura, altura], números inteiros de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="534"/>
+        <location filename="../app/pipeline_messages.cpp" line="538"/>
         <source>a list</source>
         <translation>uma lista</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="535"/>
+        <location filename="../app/pipeline_messages.cpp" line="539"/>
         <source>a list of %1 numbers</source>
         <translation>uma lista de %1 números</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="536"/>
+        <location filename="../app/pipeline_messages.cpp" line="540"/>
         <source>a list of 1 to 8 lights</source>
         <translation>uma lista de 1 a 8 luzes</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="537"/>
+        <location filename="../app/pipeline_messages.cpp" line="541"/>
         <source>a list of dock names</source>
         <translation>uma lista de nomes de painéis</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="538"/>
+        <location filename="../app/pipeline_messages.cpp" line="542"/>
         <source>a number</source>
         <translation>um número</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="539"/>
+        <location filename="../app/pipeline_messages.cpp" line="543"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>um número positivo ou &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="540"/>
+        <location filename="../app/pipeline_messages.cpp" line="544"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>um número positivo ou &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="541"/>
+        <location filename="../app/pipeline_messages.cpp" line="545"/>
         <source>a whole number from %1</source>
         <translation>um número inteiro a partir de %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="542"/>
+        <location filename="../app/pipeline_messages.cpp" line="546"/>
         <source>an object</source>
         <translation>um objeto</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="543"/>
+        <location filename="../app/pipeline_messages.cpp" line="547"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>esperava %1 para &quot;%2&quot;, encontrou %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="544"/>
+        <location filename="../app/pipeline_messages.cpp" line="548"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>esperava um arquivo de aula: um objeto JSON com &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="545"/>
+        <location filename="../app/pipeline_messages.cpp" line="549"/>
         <source>not a lesson file: %1</source>
         <translation>não é um arquivo de aula: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="546"/>
+        <location filename="../app/pipeline_messages.cpp" line="550"/>
         <source>nothing</source>
         <translation>nada</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="547"/>
+        <location filename="../app/pipeline_messages.cpp" line="551"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="548"/>
+        <location filename="../app/pipeline_messages.cpp" line="552"/>
         <source>one of %1</source>
         <translation>um de %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="549"/>
+        <location filename="../app/pipeline_messages.cpp" line="553"/>
         <source>text in quotes</source>
         <translation>um texto entre aspas</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="550"/>
+        <location filename="../app/pipeline_messages.cpp" line="554"/>
         <source>the text &apos;%1&apos;</source>
         <translation>o texto &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="551"/>
+        <location filename="../app/pipeline_messages.cpp" line="555"/>
         <source>true or false</source>
         <translation>true ou false</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="552"/>
+        <location filename="../app/pipeline_messages.cpp" line="556"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>ignorou a chave desconhecida &quot;%1&quot; (as conhecidas aqui: %2)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="587"/>
+        <location filename="../app/pipeline_messages.cpp" line="591"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="593"/>
+        <location filename="../app/pipeline_messages.cpp" line="597"/>
         <source>%1: warning: %2</source>
         <translation>%1: aviso: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="594"/>
+        <location filename="../app/pipeline_messages.cpp" line="598"/>
         <source>%1: note: %2</source>
         <translation>%1: nota: %2</translation>
     </message>

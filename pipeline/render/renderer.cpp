@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "depth_test_fast.h"
+#include "format.h"
 #include "normals_fast.h"
 #include "parallel.h"
 #include "projection_fast.h"
@@ -28,6 +29,31 @@ using Clock = std::chrono::steady_clock;
 
 double millisecondsSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// A light so near a surface that float cannot tell its side there (view_transform.h): a
+// warning, worked out once per scene when a context remembers it.
+void warnOfLightsOnSurfaces(FrameTrace& trace, const std::shared_ptr<const Scene>& scenePtr,
+                            RenderContext* context) {
+    if (context && context->lightsChecked.lock() == scenePtr) {
+        trace.diagnostics.append(context->lightWarnings);
+        return;
+    }
+    const Scene& scene = *scenePtr;
+    Diagnostics found;
+    for (std::size_t i = 0; i < trace.view->lights.size(); ++i)
+        if (const auto near = lightOnSurface(scene, *trace.view, i))
+            found.warn(
+                i < scene.lights.size() ? scene.lights[i].where : SourceLocation{scene.name, 0, 0},
+                "light %1 is %2 above triangle %3 of %4, nearer than float can resolve points "
+                "there (%5): the pixels under it may be lit from the wrong side"_msg(
+                    i + 1, formatNumber(near->height), near->triangle + 1,
+                    scene.draws[near->draw].name, formatNumber(near->limit)));
+    trace.diagnostics.append(found);
+    if (context) {
+        context->lightsChecked = scenePtr;
+        context->lightWarnings = std::move(found);
+    }
 }
 
 // A buffer of the context that no earlier trace still holds, to be recycled.
@@ -157,6 +183,7 @@ Result<FrameTrace> run(std::shared_ptr<const Scene> scenePtr, const RenderOption
         trace.view = std::make_shared<const ViewTransform>(
             ViewTransformStage().run(scene, *trace.cameraBasis));
     });
+    warnOfLightsOnSurfaces(trace, scenePtr, context);
     if constexpr (Probe::enabled)
         runLectureStages(trace, probe);
     else

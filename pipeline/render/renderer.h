@@ -52,6 +52,10 @@ struct RenderOptions {
 struct RenderContext {
     std::shared_ptr<DepthTest> depth;
     std::shared_ptr<Shading> shading;
+    // The scene whose lights were last checked against its surfaces (lightOnSurface) and the
+    // warnings found: the same scene rendered again is not checked again.
+    std::weak_ptr<const Scene> lightsChecked;
+    Diagnostics lightWarnings;
 };
 
 Result<FrameTrace> renderFrame(std::shared_ptr<const Scene> scene,

@@ -5,6 +5,7 @@
 // animation is first moved by its M at the scene's time (animation.h, seed 002).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "animation_matrix.h"
@@ -38,6 +39,21 @@ struct ViewTransform {
     std::size_t verticesInFront = 0;  // z > 0
     std::size_t verticesBehind = 0;   // z <= 0: at or behind the camera's plane
 };
+
+// Float keeps a view-space point to about 1.2e-7 of its distance from the eye, so the shading
+// cannot tell on which side of a surface a light nearer to it than about that lies. Below
+// kLightSurfaceRatio times the light's distance from the eye, the sweep of docs/accuracy.md
+// measures float and double apart by a byte step or more, and the renderer warns.
+inline constexpr double kLightSurfaceRatio = 1e-5;
+
+struct LightOnSurface {
+    std::size_t draw = 0, triangle = 0;
+    double height = 0.0;  // from the triangle's plane, above the triangle itself
+    double limit = 0.0;   // kLightSurfaceRatio times the light's distance from the eye
+};
+// The triangle the positional light `light` is nearest, when it is within the limit of it.
+std::optional<LightOnSurface> lightOnSurface(const Scene& scene, const ViewTransform& view,
+                                             std::size_t light);
 
 class ViewTransformStage {
 public:
