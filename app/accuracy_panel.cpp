@@ -13,6 +13,9 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
+#include <array>
+#include <utility>
+#include <vector>
 #include <cmath>
 #include <exception>
 
@@ -92,7 +95,8 @@ QString summaryOf(const rl::StabilityReport& report) {
         axis = report.points[first].axis;
         std::size_t end = first;
         while (end < report.points.size() && report.points[end].axis == *axis) ++end;
-        double worstDiff = -1.0, worstAt = 0.0, floatRmse = 0.0, doubleRmse = 0.0;
+        double worstDiff = -1.0, worstAt = 0.0;
+        std::vector<std::pair<rl::RuleSet, std::array<double, 2>>> rmse;  // float, double
         int refused = 0;
         const rl::StabilityPoint* firstRefused = nullptr;
         for (std::size_t i = first; i < end; ++i) {
@@ -106,21 +110,30 @@ QString summaryOf(const rl::StabilityReport& report) {
                 worstDiff = p.floatDoubleMax;
                 worstAt = p.value;
             }
-            double& rmse = p.row.precision == "double" ? doubleRmse : floatRmse;
-            if (std::isfinite(p.row.metrics.rmse)) rmse = std::max(rmse, p.row.metrics.rmse);
+            auto rules = std::find_if(rmse.begin(), rmse.end(),
+                                      [&](const auto& r) { return r.first == p.row.mode.rules; });
+            if (rules == rmse.end()) rules = rmse.insert(rmse.end(), {p.row.mode.rules, {0.0, 0.0}});
+            double& worst = rules->second[p.row.precision == "double" ? 1 : 0];
+            if (std::isfinite(p.row.metrics.rmse)) worst = std::max(worst, p.row.metrics.rmse);
         }
+        QStringList perRules;
+        for (const auto& [rules, worst] : rmse)
+            perRules << QStringLiteral("%1 %2 / %3")
+                            .arg(QString::fromLatin1(rl::ruleSetName(rules)),
+                                 scientific(worst[0] * 255.0), scientific(worst[1] * 255.0));
         QString line = QString::fromLatin1(rl::axisInfo(*axis).name) + QStringLiteral(": ");
         if (worstDiff >= 0.0)
             line += AccuracyPanel::tr("float and double differ by up to %1 byte steps (at %2); "
-                                      "largest RMSE %3 in float, %4 in double.")
+                                      "largest RMSE, float / double: %3.")
                         .arg(scientific(worstDiff * 255.0), scientific(worstAt),
-                             scientific(floatRmse * 255.0), scientific(doubleRmse * 255.0));
+                             perRules.join(QStringLiteral(", ")));
         if (firstRefused) {
             if (worstDiff >= 0.0) line += QLatin1Char(' ');
             line += AccuracyPanel::tr("%1 of %2 points not rendered (the first at %3): %4")
                         .arg(refused)
                         .arg(int(end - first))
-                        .arg(scientific(firstRefused->value), translated(*firstRefused->error));
+                        .arg(scientific(firstRefused->value),
+                             translated(firstRefused->error->translatable));
         }
         lines << line;
         first = end;
@@ -248,10 +261,14 @@ QWidget* AccuracyPanel::makeStabilityPage() {
     m_stabilityLabel->setMinimumHeight(120);
     m_stabilityLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Expanding);
     m_stabilityLabel->setAlignment(Qt::AlignCenter);
+    // Drawn again at its own size: inside the tabs, it is resized after the panel.
+    m_stabilityLabel->installEventFilter(this);
     layout->addWidget(m_stabilityLabel, 1);
-    m_summary = new WrappedLabel(page);
+    m_summary = new QLabel(page);
+    m_summary->setWordWrap(true);
     m_summary->setObjectName(QStringLiteral("stabilitySummary"));
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_summary->setAlignment(Qt::AlignLeft | Qt::AlignTop);
     m_summary->setText(
         tr("The sweep makes the scene stiffer along each axis: where a curve leaves the floor, "
            "the arithmetic loses accuracy."));
@@ -573,6 +590,11 @@ QString AccuracyPanel::pickText() const {
 }
 
 bool AccuracyPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == m_stabilityLabel && event->type() == QEvent::Resize &&
+        !m_stabilityPlot.isNull())
+        m_stabilityLabel->setPixmap(QPixmap::fromImage(m_stabilityPlot)
+                                        .scaled(m_stabilityLabel->size(), Qt::KeepAspectRatio,
+                                                Qt::SmoothTransformation));
     if (watched == m_heatLabel && event->type() == QEvent::MouseButtonPress && m_report &&
         m_selected >= 0) {
         const auto* mouse = static_cast<QMouseEvent*>(event);

@@ -122,7 +122,7 @@ private:
     QProgressBar* m_progress = nullptr;
     QTabWidget* m_results = nullptr;
     QLabel* m_stabilityLabel = nullptr;
-    WrappedLabel* m_summary = nullptr;
+    QLabel* m_summary = nullptr;
 };
 
 }  // namespace rasterlab

@@ -498,6 +498,8 @@ void TestMainWindow::stabilitySweep() {
                  QStringLiteral("shininess: float and double differ by up to ")),
              qPrintable(panel.stabilitySummary()));
     QVERIFY(!panel.stabilitySummary().contains(QStringLiteral("offset")));
+    QVERIFY(panel.stabilitySummary().contains(QStringLiteral("course ")) &&
+            panel.stabilitySummary().contains(QStringLiteral("gpu ")));
     QVERIFY2(panel.statusText().contains(QStringLiteral("28 points")),
              qPrintable(panel.statusText()));
 
