@@ -5,17 +5,23 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QMouseEvent>
+#include <QProgressBar>
 #include <QPushButton>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
+#include <array>
+#include <utility>
+#include <vector>
 #include <cmath>
 #include <exception>
 
 #include "accuracy_plot.h"
 #include "pipeline_messages.h"
+#include "stability_plot.h"
 
 namespace rasterlab {
 
@@ -41,6 +47,100 @@ QString bytes(const rl::dvec3& c) {
         .arg(c.b * 255.0, 0, 'f', 2);
 }
 
+bool isCancelled(const rl::Error& error) {
+    return error.message == "measurement cancelled";
+}
+
+QString scientific(double v) {
+    return QString::number(v, 'g', 3);
+}
+
+// What the axis does to the scene, from its mildest to its stiffest value.
+QString axisDescription(const rl::StiffnessAxisInfo& info) {
+    QString text;
+    switch (info.axis) {
+    case rl::StiffnessAxis::Offset:
+        text = AccuracyPanel::tr("The scene, camera and lights moved %1 to %2 units from the "
+                                 "origin");
+        break;
+    case rl::StiffnessAxis::Scale:
+        text = AccuracyPanel::tr("Everything scaled by %1 to %2 about the origin");
+        break;
+    case rl::StiffnessAxis::Distance:
+        text = AccuracyPanel::tr("Everything scaled by %1 to %2 about the eye: the object nearer");
+        break;
+    case rl::StiffnessAxis::Sliver:
+        text = AccuracyPanel::tr("Each triangle cut around a sliver of %1 to %2 degrees");
+        break;
+    case rl::StiffnessAxis::Shininess:
+        text = AccuracyPanel::tr("Every material's shininess n set to %1 to %2");
+        break;
+    case rl::StiffnessAxis::Grazing:
+        text = AccuracyPanel::tr("The camera's V %1 to %2 degrees from N");
+        break;
+    case rl::StiffnessAxis::LightOnSurface:
+        text = AccuracyPanel::tr("The first light %1 to %2 times the scene's size above its "
+                                 "surface");
+        break;
+    }
+    return text.arg(scientific(info.values.front()), scientific(info.values.back()));
+}
+
+// A line per axis: the largest float-double difference and where, the largest RMSE of each
+// precision, and the points that could not be rendered, with the first one's reason.
+QString summaryOf(const rl::StabilityReport& report) {
+    QStringList lines;
+    std::optional<rl::StiffnessAxis> axis;
+    for (std::size_t first = 0; first < report.points.size();) {
+        axis = report.points[first].axis;
+        std::size_t end = first;
+        while (end < report.points.size() && report.points[end].axis == *axis) ++end;
+        double worstDiff = -1.0, worstAt = 0.0;
+        std::vector<std::pair<rl::RuleSet, std::array<double, 2>>> rmse;  // float, double
+        int refused = 0;
+        const rl::StabilityPoint* firstRefused = nullptr;
+        for (std::size_t i = first; i < end; ++i) {
+            const rl::StabilityPoint& p = report.points[i];
+            if (p.error) {
+                ++refused;
+                if (!firstRefused) firstRefused = &p;
+                continue;
+            }
+            if (!std::isnan(p.floatDoubleMax) && p.floatDoubleMax > worstDiff) {
+                worstDiff = p.floatDoubleMax;
+                worstAt = p.value;
+            }
+            auto rules = std::find_if(rmse.begin(), rmse.end(),
+                                      [&](const auto& r) { return r.first == p.row.mode.rules; });
+            if (rules == rmse.end()) rules = rmse.insert(rmse.end(), {p.row.mode.rules, {0.0, 0.0}});
+            double& worst = rules->second[p.row.precision == "double" ? 1 : 0];
+            if (std::isfinite(p.row.metrics.rmse)) worst = std::max(worst, p.row.metrics.rmse);
+        }
+        QStringList perRules;
+        for (const auto& [rules, worst] : rmse)
+            perRules << QStringLiteral("%1 %2 / %3")
+                            .arg(QString::fromLatin1(rl::ruleSetName(rules)),
+                                 scientific(worst[0] * 255.0), scientific(worst[1] * 255.0));
+        QString line = QString::fromLatin1(rl::axisInfo(*axis).name) + QStringLiteral(": ");
+        if (worstDiff >= 0.0)
+            line += AccuracyPanel::tr("float and double differ by up to %1 byte steps (at %2); "
+                                      "largest RMSE, float / double: %3.")
+                        .arg(scientific(worstDiff * 255.0), scientific(worstAt),
+                             perRules.join(QStringLiteral(", ")));
+        if (firstRefused) {
+            if (worstDiff >= 0.0) line += QLatin1Char(' ');
+            line += AccuracyPanel::tr("%1 of %2 points not rendered (the first at %3): %4")
+                        .arg(refused)
+                        .arg(int(end - first))
+                        .arg(scientific(firstRefused->value),
+                             translated(firstRefused->error->translatable));
+        }
+        lines << line;
+        first = end;
+    }
+    return lines.join(QLatin1Char('\n'));
+}
+
 }  // namespace
 
 AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent) {
@@ -64,12 +164,56 @@ AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent) {
     controls->addWidget(m_cancelButton);
     controls->addWidget(m_samples, 1);
     layout->addLayout(controls);
+
+    auto* sweepControls = new QHBoxLayout;
+    m_sweep = new QPushButton(tr("&Stability sweep"), this);
+    m_sweep->setObjectName(QStringLiteral("stabilitySweep"));
+    m_sweep->setToolTip(
+        tr("Make the scene stiffer step by step and measure float and double under the course "
+           "and gpu rules against the exact reference at each step"));
+    m_axes = new QComboBox(this);
+    m_axes->setObjectName(QStringLiteral("stabilityAxes"));
+    m_axes->addItem(tr("every axis"), -1);
+    for (const rl::StiffnessAxisInfo& info : rl::stiffnessAxes()) {
+        m_axes->addItem(QString::fromLatin1(info.name), int(info.axis));
+        m_axes->setItemData(m_axes->count() - 1, axisDescription(info), Qt::ToolTipRole);
+    }
+    m_axes->setToolTip(tr("The axes of stiffness to sweep"));
+    sweepControls->addWidget(m_sweep);
+    sweepControls->addWidget(m_axes, 1);
+    layout->addLayout(sweepControls);
+    m_progress = new QProgressBar(this);
+    m_progress->setObjectName(QStringLiteral("stabilityProgress"));
+    m_progress->setFormat(tr("%v of %m points"));
+    m_progress->setVisible(false);
+    layout->addWidget(m_progress);
+
     m_status = new QLabel(tr("Measures the error of each mode against an exact reference."), this);
     m_status->setObjectName(QStringLiteral("accuracyStatus"));
     m_status->setWordWrap(true);
     layout->addWidget(m_status);
+    m_results = new QTabWidget(this);
+    m_results->setObjectName(QStringLiteral("accuracyResults"));
+    m_results->setDocumentMode(true);
+    m_results->addTab(makeModesPage(), tr("Modes"));
+    m_results->addTab(makeStabilityPage(), tr("Stability"));
+    layout->addWidget(m_results, 1);
 
-    m_table = new QTableWidget(0, 8, this);
+    connect(m_measure, &QPushButton::clicked, this, &AccuracyPanel::measure);
+    connect(m_sweep, &QPushButton::clicked, this, &AccuracyPanel::sweep);
+    connect(m_cancelButton, &QPushButton::clicked, this, &AccuracyPanel::cancel);
+    connect(&m_watcher, &QFutureWatcher<Outcome>::finished, this, &AccuracyPanel::onFinished);
+    connect(&m_sweepWatcher, &QFutureWatcher<SweepOutcome>::finished, this,
+            &AccuracyPanel::onSweepFinished);
+    connect(m_table, &QTableWidget::currentCellChanged, this, [this](int row) { selectRow(row); });
+    connect(m_results, &QTabWidget::currentChanged, this, [this] { refreshImages(); });
+}
+
+QWidget* AccuracyPanel::makeModesPage() {
+    auto* page = new QWidget(this);
+    auto* layout = new QVBoxLayout(page);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_table = new QTableWidget(0, 8, page);
     m_table->setObjectName(QStringLiteral("accuracyTable"));
     m_table->setHorizontalHeaderLabels({tr("Mode"), tr("Rules"), tr("Precision"), tr("Samples"),
                                         tr("ms"), tr("RMSE"), tr("Max error"), tr("Within 1/255")});
@@ -84,14 +228,14 @@ AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent) {
     m_table->setProperty("scrollsSideways", true);
     layout->addWidget(m_table, 2);
 
-    m_plotLabel = new PictureLabel(this);
+    m_plotLabel = new PictureLabel(page);
     m_plotLabel->setObjectName(QStringLiteral("accuracyPlot"));
     m_plotLabel->setMinimumHeight(120);
     // The pictures follow the dock's size, never the other way round.
     m_plotLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Expanding);
     m_plotLabel->setAlignment(Qt::AlignCenter);
     layout->addWidget(m_plotLabel, 3);
-    m_heatLabel = new PictureLabel(this);
+    m_heatLabel = new PictureLabel(page);
     m_heatLabel->setObjectName(QStringLiteral("accuracyHeatMap"));
     m_heatLabel->setMinimumHeight(120);
     m_heatLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Expanding);
@@ -101,40 +245,69 @@ AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent) {
     m_heatLabel->installEventFilter(this);
     layout->addWidget(m_heatLabel, 3);
     // Its minimum height its wrapped lines': the pictures above cannot squeeze it.
-    m_pick = new WrappedLabel(this);
+    m_pick = new WrappedLabel(page);
     m_pick->setObjectName(QStringLiteral("accuracyPick"));
     m_pick->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(m_pick);
+    return page;
+}
 
-    connect(m_measure, &QPushButton::clicked, this, &AccuracyPanel::measure);
-    connect(m_cancelButton, &QPushButton::clicked, this, &AccuracyPanel::cancel);
-    connect(&m_watcher, &QFutureWatcher<Outcome>::finished, this, &AccuracyPanel::onFinished);
-    connect(m_table, &QTableWidget::currentCellChanged, this, [this](int row) { selectRow(row); });
+QWidget* AccuracyPanel::makeStabilityPage() {
+    auto* page = new QWidget(this);
+    auto* layout = new QVBoxLayout(page);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_stabilityLabel = new PictureLabel(page);
+    m_stabilityLabel->setObjectName(QStringLiteral("stabilityPlot"));
+    m_stabilityLabel->setMinimumHeight(120);
+    m_stabilityLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Expanding);
+    m_stabilityLabel->setAlignment(Qt::AlignCenter);
+    // Drawn again at its own size: inside the tabs, it is resized after the panel.
+    m_stabilityLabel->installEventFilter(this);
+    layout->addWidget(m_stabilityLabel, 1);
+    m_summary = new QLabel(page);
+    m_summary->setWordWrap(true);
+    m_summary->setObjectName(QStringLiteral("stabilitySummary"));
+    m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_summary->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    m_summary->setText(
+        tr("The sweep makes the scene stiffer along each axis: where a curve leaves the floor, "
+           "the arithmetic loses accuracy."));
+    layout->addWidget(m_summary);
+    return page;
 }
 
 AccuracyPanel::~AccuracyPanel() {
     if (m_cancel) m_cancel->store(true);
+    if (m_sweepCancel) m_sweepCancel->store(true);
     m_watcher.waitForFinished();
+    m_sweepWatcher.waitForFinished();
 }
 
 void AccuracyPanel::setScene(std::shared_ptr<const rl::Scene> scene) {
     if (scene == m_scene) return;
     m_scene = std::move(scene);
     if (m_running && m_cancel) m_cancel->store(true);
+    if (m_sweeping && m_sweepCancel) m_sweepCancel->store(true);
     ++m_generation;  // a result on its way is for the old scene
-    const bool hadResults = m_report != nullptr;
+    ++m_sweepGeneration;
+    const bool hadResults = m_report != nullptr || m_stability != nullptr;
     m_report.reset();
+    m_stability.reset();
+    m_stabilityPlot = QImage();
+    m_stabilityLabel->clear();
+    m_summary->clear();
+    m_progress->setVisible(false);
     m_selected = -1;
     m_table->setRowCount(0);
     m_plot = m_heatMap = QImage();
     m_plotLabel->clear();
     m_heatLabel->clear();
     m_pick->clear();
-    if (hadResults || m_running) m_status->setText(tr("The scene changed: measure again."));
+    if (hadResults || m_running || m_sweeping) m_status->setText(tr("The scene changed: measure again."));
 }
 
 void AccuracyPanel::measure() {
-    if (!m_scene) return;
+    if (!m_scene || m_sweeping) return;
     if (m_running && m_cancel) m_cancel->store(true);
     m_watcher.waitForFinished();
     const quint64 generation = ++m_generation;
@@ -150,8 +323,8 @@ void AccuracyPanel::measure() {
     options.keepImages = true;
     options.cancel = m_cancel.get();
     m_running = true;
-    m_measure->setEnabled(false);
-    m_cancelButton->setEnabled(true);
+    setBusy(true);
+    m_results->setCurrentIndex(0);
     m_status->setText(tr("Measuring %n mode(s) against the exact reference...", nullptr,
                          int(options.modes.size())));
     // The cancel flag lives as long as the worker holds its pointer.
@@ -162,7 +335,8 @@ void AccuracyPanel::measure() {
         try {
             auto report = rl::measureAccuracy(*scene, options);
             if (!report)
-                outcome.error = translated(report.error());
+                outcome.error = isCancelled(report.error()) ? QString()
+                                                            : translated(report.error());
             else
                 outcome.report = std::make_shared<rl::AccuracyReport>(std::move(report.value()));
         } catch (const std::exception& e) {
@@ -174,19 +348,20 @@ void AccuracyPanel::measure() {
 
 void AccuracyPanel::cancel() {
     if (m_running && m_cancel) m_cancel->store(true);
+    if (m_sweeping && m_sweepCancel) m_sweepCancel->store(true);
 }
 
 void AccuracyPanel::onFinished() {
     const Outcome outcome = m_watcher.result();
     m_running = false;
-    m_measure->setEnabled(true);
-    m_cancelButton->setEnabled(false);
+    setBusy(false);
     if (outcome.generation != m_generation) {
         emit finished();
         return;  // for a scene no longer shown, or a measurement replaced
     }
     if (!outcome.report) {
-        m_status->setText(outcome.error == QStringLiteral("measurement cancelled")
+        // An empty error: cancelled (the message is translated, the test is on the English).
+        m_status->setText(outcome.error.isEmpty()
                               ? tr("Cancelled.")
                               : tr("The measurement failed: %1").arg(outcome.error));
         emit finished();
@@ -236,6 +411,115 @@ void AccuracyPanel::onFinished() {
     m_table->setCurrentCell(first, 0);
     selectRow(first);
     emit finished();
+}
+
+void AccuracyPanel::setSweepAxis(std::optional<rl::StiffnessAxis> axis) {
+    const int index = m_axes->findData(axis ? int(*axis) : -1);
+    if (index >= 0) m_axes->setCurrentIndex(index);
+}
+
+void AccuracyPanel::sweep() {
+    if (!m_scene || m_running) return;
+    if (m_sweeping && m_sweepCancel) m_sweepCancel->store(true);
+    m_sweepWatcher.waitForFinished();
+    const quint64 generation = ++m_sweepGeneration;
+    m_sweepCancel = std::make_shared<std::atomic<bool>>(false);
+    rl::StabilityOptions options;
+    if (const int axis = m_axes->currentData().toInt(); axis >= 0)
+        options.axes = {rl::StiffnessAxis(axis)};
+    options.cancel = m_sweepCancel.get();
+    // Called on the worker thread: the numbers go to the panel's thread as an event (dropped
+    // with the panel, which waits for the worker before it goes).
+    options.progress = [this, generation](int done, int total) {
+        QMetaObject::invokeMethod(
+            this, [this, generation, done, total] { onSweepProgress(generation, done, total); },
+            Qt::QueuedConnection);
+    };
+    m_sweeping = true;
+    setBusy(true);
+    m_progress->setRange(0, 0);  // busy until the first point: the references come first
+    m_progress->setVisible(true);
+    m_results->setCurrentIndex(1);
+    m_status->setText(tr("Sweeping %1 along %2...")
+                          .arg(QString::fromStdString(m_scene->name), m_axes->currentText()));
+    m_sweepWatcher.setFuture(QtConcurrent::run([generation, scene = m_scene, options,
+                                                flag = m_sweepCancel]() -> SweepOutcome {
+        SweepOutcome outcome;
+        outcome.generation = generation;
+        try {
+            auto report = rl::measureStability(*scene, options);
+            if (!report) {
+                outcome.cancelled = isCancelled(report.error());
+                outcome.error = translated(report.error());
+            } else {
+                outcome.report = std::make_shared<rl::StabilityReport>(std::move(report.value()));
+            }
+        } catch (const std::exception& e) {
+            outcome.error = QString::fromUtf8(e.what());
+        }
+        return outcome;
+    }));
+}
+
+void AccuracyPanel::onSweepProgress(quint64 generation, int done, int total) {
+    if (!m_sweeping || generation != m_sweepGeneration) return;
+    m_progress->setRange(0, total);
+    m_progress->setValue(done);
+}
+
+void AccuracyPanel::onSweepFinished() {
+    const SweepOutcome outcome = m_sweepWatcher.result();
+    m_sweeping = false;
+    setBusy(false);
+    m_progress->setVisible(false);
+    if (outcome.generation != m_sweepGeneration) {
+        emit sweepFinished();
+        return;  // for a scene no longer shown, or a sweep replaced
+    }
+    if (!outcome.report) {
+        m_status->setText(outcome.cancelled
+                              ? tr("Sweep cancelled.")
+                              : tr("The sweep failed: %1").arg(outcome.error));
+        emit sweepFinished();
+        return;
+    }
+    m_stability = outcome.report;
+    int axes = 0;
+    std::optional<rl::StiffnessAxis> last;
+    for (const rl::StabilityPoint& p : m_stability->points)
+        if (p.axis != last) ++axes, last = p.axis;
+    m_stabilityPlot = rasterlab::stabilityPlot(
+        *m_stability,
+        tr("Error against stiffness: %1, %2x%3, %4 triangles")
+            .arg(QString::fromStdString(m_scene->name))
+            .arg(m_scene->width)
+            .arg(m_scene->height)
+            .arg(m_scene->triangleCount()),
+        stabilityPlotSize(axes));
+    m_status->setText(tr("%1 at %2x%3: %4 points in %5 s.")
+                          .arg(QString::fromStdString(m_scene->name))
+                          .arg(m_scene->width)
+                          .arg(m_scene->height)
+                          .arg(m_stability->points.size())
+                          .arg(m_stability->milliseconds / 1000.0, 0, 'f', 1));
+    m_summary->setText(summaryOf(*m_stability));
+    m_results->setCurrentIndex(1);
+    refreshImages();
+    emit sweepFinished();
+}
+
+QString AccuracyPanel::stabilitySummary() const {
+    return m_summary->text();
+}
+
+QString AccuracyPanel::statusText() const {
+    return m_status->text();
+}
+
+void AccuracyPanel::setBusy(bool busy) {
+    m_measure->setEnabled(!busy);
+    m_sweep->setEnabled(!busy);
+    m_cancelButton->setEnabled(busy);
 }
 
 void AccuracyPanel::selectRow(int row) {
@@ -306,6 +590,11 @@ QString AccuracyPanel::pickText() const {
 }
 
 bool AccuracyPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == m_stabilityLabel && event->type() == QEvent::Resize &&
+        !m_stabilityPlot.isNull())
+        m_stabilityLabel->setPixmap(QPixmap::fromImage(m_stabilityPlot)
+                                        .scaled(m_stabilityLabel->size(), Qt::KeepAspectRatio,
+                                                Qt::SmoothTransformation));
     if (watched == m_heatLabel && event->type() == QEvent::MouseButtonPress && m_report &&
         m_selected >= 0) {
         const auto* mouse = static_cast<QMouseEvent*>(event);
@@ -337,6 +626,7 @@ void AccuracyPanel::refreshImages() {
                                                           Qt::SmoothTransformation));
     };
     fit(m_plotLabel, m_plot);
+    fit(m_stabilityLabel, m_stabilityPlot);
     // The heat map keeps its pixels sharp when enlarged.
     if (!m_heatMap.isNull())
         m_heatLabel->setPixmap(QPixmap::fromImage(m_heatMap).scaled(

@@ -2,6 +2,10 @@
 // (accuracy.h) on a worker thread, and shows the table, the plot of error against time, and
 // the error heat map of the selected mode, with a colour bar. Clicking the heat map picks a
 // pixel: its value in the mode, in the reference, and the difference.
+//
+// It also runs the stability sweep (stability.h) of the scene, along every axis or one, on a
+// worker thread with a progress bar, and shows its plot (stability_plot.h) and, per axis, the
+// largest float-double difference and the points that could not be rendered.
 #pragma once
 
 #include <QFutureWatcher>
@@ -10,14 +14,18 @@
 
 #include <atomic>
 #include <memory>
+#include <optional>
 
 #include "accuracy.h"
 #include "elided_label.h"
+#include "stability.h"
 
 class QComboBox;
 class QLabel;
+class QProgressBar;
 class QPushButton;
 class QTableWidget;
+class QTabWidget;
 
 namespace rasterlab {
 
@@ -31,12 +39,22 @@ public:
     // measurement's result dropped).
     void setScene(std::shared_ptr<const rl::Scene> scene);
     void measure();
+    // The stability sweep along the axis chosen (or every axis) with the course and gpu rules.
+    void sweep();
+    // Stops the measurement or the sweep that runs; it ends "cancelled".
     void cancel();
     // The row whose heat map is shown; picks the pixel (x, y) of it.
     void selectRow(int row);
     void pickPixel(int x, int y);
 
     bool isMeasuring() const { return m_running; }
+    bool isSweeping() const { return m_sweeping; }
+    // The axes chooser: none for every axis.
+    void setSweepAxis(std::optional<rl::StiffnessAxis> axis);
+    const rl::StabilityReport* stabilityReport() const { return m_stability.get(); }
+    const QImage& stabilityPlot() const { return m_stabilityPlot; }
+    QString stabilitySummary() const;
+    QString statusText() const;
     const rl::AccuracyReport* report() const { return m_report.get(); }
     int selectedRow() const { return m_selected; }
     QString pickText() const;
@@ -48,6 +66,7 @@ public:
 
 signals:
     void finished();
+    void sweepFinished();
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -59,7 +78,18 @@ private:
         std::shared_ptr<rl::AccuracyReport> report;
         QString error;
     };
+    struct SweepOutcome {
+        quint64 generation = 0;
+        std::shared_ptr<rl::StabilityReport> report;
+        QString error;
+        bool cancelled = false;
+    };
+    QWidget* makeModesPage();
+    QWidget* makeStabilityPage();
     void onFinished();
+    void onSweepProgress(quint64 generation, int done, int total);
+    void onSweepFinished();
+    void setBusy(bool busy);
     void refreshImages();
 
     std::shared_ptr<const rl::Scene> m_scene;
@@ -72,6 +102,13 @@ private:
     QImage m_plot, m_heatMap;
     QPoint m_heatOrigin;  // the image pixel at the heat map's top left
 
+    std::shared_ptr<rl::StabilityReport> m_stability;
+    QFutureWatcher<SweepOutcome> m_sweepWatcher;
+    std::shared_ptr<std::atomic<bool>> m_sweepCancel;
+    quint64 m_sweepGeneration = 0;
+    bool m_sweeping = false;
+    QImage m_stabilityPlot;
+
     QPushButton* m_measure = nullptr;
     QPushButton* m_cancelButton = nullptr;
     QComboBox* m_samples = nullptr;
@@ -80,6 +117,12 @@ private:
     QLabel* m_plotLabel = nullptr;
     QLabel* m_heatLabel = nullptr;
     WrappedLabel* m_pick = nullptr;
+    QPushButton* m_sweep = nullptr;
+    QComboBox* m_axes = nullptr;
+    QProgressBar* m_progress = nullptr;
+    QTabWidget* m_results = nullptr;
+    QLabel* m_stabilityLabel = nullptr;
+    QLabel* m_summary = nullptr;
 };
 
 }  // namespace rasterlab

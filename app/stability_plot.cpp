@@ -199,6 +199,12 @@ void drawLegend(QPainter& p, QPointF at) {
 
 }  // namespace
 
+QSize stabilityPlotSize(int axes) {
+    const int panels = std::max(1, axes + 1);
+    const int columns = std::min(4, panels), rows = std::min(2, (panels + columns - 1) / columns);
+    return {20 + 370 * columns, 84 + 408 * rows};
+}
+
 QImage stabilityPlot(const rl::StabilityReport& report, const QString& title, QSize size) {
     QImage image(size, QImage::Format_RGB32);
     image.fill(Qt::white);
@@ -219,7 +225,9 @@ QImage stabilityPlot(const rl::StabilityReport& report, const QString& title, QS
     for (const rl::StabilityPoint& point : report.points)
         if (std::find(axes.begin(), axes.end(), point.axis) == axes.end())
             axes.push_back(point.axis);
-    const int columns = 4, rows = 2;
+    // Four panels a row at most: every axis and the time panel make 4 x 2, one axis 2 x 1.
+    const int panels = int(axes.size()) + 1;
+    const int columns = std::min(4, panels), rows = std::min(2, (panels + columns - 1) / columns);
     const double top = 84, cellW = (size.width() - 20.0) / columns,
                  cellH = (size.height() - top) / rows;
     for (std::size_t i = 0; i <= axes.size() && i < std::size_t(columns * rows); ++i) {

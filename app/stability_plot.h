@@ -12,6 +12,10 @@
 
 namespace rasterlab {
 
+// The size that gives each panel the room it has in the default 1500 x 900 picture of every
+// axis, for a plot of `axes` axes (and the time panel).
+QSize stabilityPlotSize(int axes);
+
 QImage stabilityPlot(const rl::StabilityReport& report, const QString& title,
                      QSize size = {1500, 900});
 

@@ -27,8 +27,8 @@
 //   normals-wrong     the Normals dock under a scale (1, 0.5, 1): right and wrong normals
 //
 // With --images DIR it also makes the pictures of the README and docs/accuracy.md:
-// zbuffer-dock.png (in Portuguese, the run with --language pt_BR) and accuracy-dock.png (the
-// run with --language en).
+// zbuffer-dock.png (in Portuguese, the run with --language pt_BR), accuracy-dock.png and
+// stability-dock.png (the run with --language en).
 //
 // Every shot is checked: no visible text (labels, buttons, list and table cells, the window
 // title, the status bar) may show a path of the machine it was made on (/tmp/, /home/,
@@ -519,6 +519,18 @@ int main(int argc, char* argv[]) {
             window.toggleFill(dock(window, "accuracyDock"));
             QTest::qWait(100);
             check(save(&window, QDir(images).filePath(QStringLiteral("accuracy-dock.png"))));
+            window.toggleFill();
+            // The stability sweep of the same scene along every axis, its plot and summary.
+            accuracy->setSweepAxis(std::nullopt);
+            accuracy->sweep();
+            const bool swept = QTest::qWaitFor(
+                [&] { return !accuracy->isSweeping() && accuracy->stabilityReport(); },
+                10 * kTimeoutMs);
+            if (!swept) std::fprintf(stderr, "FAILED: the stability sweep did not end\n");
+            check(swept);
+            window.toggleFill(dock(window, "accuracyDock"));
+            QTest::qWait(100);
+            check(save(&window, QDir(images).filePath(QStringLiteral("stability-dock.png"))));
             window.toggleFill();
         }
         window.resetLayout();

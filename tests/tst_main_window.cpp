@@ -7,6 +7,7 @@
 #include <QToolButton>
 
 #include <QMenu>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QThreadPool>
@@ -24,12 +25,14 @@
 #include <set>
 
 #include "accuracy_panel.h"
+#include "benchmark_scenes.h"
 #include "explained_view.h"
 #include "inspection.h"
 #include "main_window.h"
 #include "painter_view.h"
 #include "render_controller.h"
 #include "scene_document.h"
+#include "stability_plot.h"
 #include "stage_strip.h"
 #include "test_support.h"
 
@@ -98,6 +101,7 @@ private slots:
     void plainDivideForAnObjectBehind();
     void commandFileProjection();
     void accuracyDock();
+    void stabilitySweep();
     void lastShadingWins();
     void exportImage();
     void exportToMissingFolder();
@@ -441,6 +445,104 @@ void TestMainWindow::accuracyDock() {
     window.setShading(rl::ShadingModel::Flat);
     QVERIFY(!panel->report());
     QCOMPARE(table->rowCount(), 0);
+}
+
+void TestMainWindow::stabilitySweep() {
+    AccuracyPanel panel;
+    panel.resize(520, 900);
+    panel.show();
+    auto scene = std::make_shared<const rl::Scene>(
+        *rl::makeBenchmarkScene("sphere-1k", 160, 120, rl::ShadingModel::Phong));
+    panel.setScene(scene);
+    auto* sweep = panel.findChild<QPushButton*>(QStringLiteral("stabilitySweep"));
+    auto* measure = panel.findChild<QPushButton*>(QStringLiteral("measureAccuracy"));
+    auto* progress = panel.findChild<QProgressBar*>(QStringLiteral("stabilityProgress"));
+    auto* picture = panel.findChild<QLabel*>(QStringLiteral("stabilityPlot"));
+    QVERIFY(sweep && measure && progress && picture);
+    QSignalSpy done(&panel, &AccuracyPanel::sweepFinished);
+    int highest = 0;
+    connect(progress, &QProgressBar::valueChanged, this,
+            [&](int value) { highest = std::max(highest, value); });
+
+    // One axis to the end: every point counted, the plot two panels wide, a line for the axis.
+    panel.setSweepAxis(rl::StiffnessAxis::Shininess);
+    sweep->click();
+    QVERIFY(panel.isSweeping());
+    QVERIFY(!measure->isEnabled() && !sweep->isEnabled());
+    QVERIFY(progress->isVisible());
+    QVERIFY(done.wait(120000));
+    QVERIFY(!panel.isSweeping());
+    QVERIFY(measure->isEnabled() && sweep->isEnabled());
+    QVERIFY(!progress->isVisible());
+    const rl::StabilityReport* report = panel.stabilityReport();
+    QVERIFY(report);
+    const int points = int(rl::axisInfo(rl::StiffnessAxis::Shininess).values.size()) * 2;
+    QCOMPARE(int(report->points.size()), 2 * points);  // float and double at each
+    QCOMPARE(progress->maximum(), points);
+    QCOMPARE(highest, points);
+    QCOMPARE(panel.stabilityPlot().size(), rasterlab::stabilityPlotSize(1));
+    QVERIFY(panel.stabilityPlot().width() > panel.stabilityPlot().height());
+    QVERIFY(!picture->pixmap().isNull());
+    // Scaled to the dock: as wide as the label, or as high, with the plot's proportions.
+    const QSize shown = picture->pixmap().size();
+    QVERIFY2(shown.width() == picture->width() || shown.height() == picture->height(),
+             qPrintable(QStringLiteral("%1x%2 in %3x%4")
+                            .arg(shown.width())
+                            .arg(shown.height())
+                            .arg(picture->width())
+                            .arg(picture->height())));
+    QVERIFY(std::abs(double(shown.width()) / shown.height() -
+                     double(rasterlab::stabilityPlotSize(1).width()) /
+                         rasterlab::stabilityPlotSize(1).height()) < 0.02);
+    QVERIFY2(panel.stabilitySummary().startsWith(
+                 QStringLiteral("shininess: float and double differ by up to ")),
+             qPrintable(panel.stabilitySummary()));
+    QVERIFY(!panel.stabilitySummary().contains(QStringLiteral("offset")));
+    QVERIFY(panel.stabilitySummary().contains(QStringLiteral("course ")) &&
+            panel.stabilitySummary().contains(QStringLiteral("gpu ")));
+    QVERIFY2(panel.statusText().contains(QStringLiteral("28 points")),
+             qPrintable(panel.statusText()));
+
+    // Every axis, cancelled after its first point: idle again, and it says so.
+    panel.setSweepAxis(std::nullopt);
+    highest = 0;
+    done.clear();
+    sweep->click();
+    QVERIFY(QTest::qWaitFor([&] { return highest >= 1; }, 60000));
+    panel.findChild<QPushButton*>(QStringLiteral("cancelAccuracy"))->click();
+    QVERIFY(done.wait(60000));
+    QVERIFY(!panel.isSweeping());
+    QVERIFY(sweep->isEnabled());
+    QCOMPARE(panel.statusText(), QStringLiteral("Sweep cancelled."));
+    QVERIFY(highest < progress->maximum());
+
+    // A new scene while it sweeps: the result is dropped, and the old one cleared.
+    highest = 0;
+    done.clear();
+    sweep->click();
+    QVERIFY(QTest::qWaitFor([&] { return highest >= 1; }, 60000));
+    auto other = std::make_shared<rl::Scene>(*scene);
+    other->name = "other";
+    panel.setScene(other);
+    QVERIFY(!panel.stabilityReport());
+    QVERIFY(panel.stabilityPlot().isNull());
+    QVERIFY(done.wait(60000));
+    QVERIFY(!panel.isSweeping());
+    QVERIFY(!panel.stabilityReport());
+    QCOMPARE(panel.statusText(), QStringLiteral("The scene changed: measure again."));
+
+    // No course camera: the sweep says why, and nothing breaks.
+    auto cameraless = std::make_shared<rl::Scene>(*scene);
+    cameraless->camera.reset();
+    panel.setScene(cameraless);
+    done.clear();
+    sweep->click();
+    QVERIFY(done.wait(60000));
+    QVERIFY(!panel.stabilityReport());
+    QVERIFY2(panel.statusText().startsWith(QStringLiteral("The sweep failed: ")) &&
+                 panel.statusText().contains(QStringLiteral("no course camera")),
+             qPrintable(panel.statusText()));
+    QVERIFY(sweep->isEnabled());
 }
 
 void TestMainWindow::flatShading() {

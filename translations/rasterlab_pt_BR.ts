@@ -1953,7 +1953,7 @@
         <translation>y: erro de cor em passos de byte (log; RMSE contra a referência exata, ou a maior diferença float-double); x: mais rígido à direita; um x: a cena não pôde ser renderizada</translation>
     </message>
     <message>
-        <location filename="../app/stability_plot.cpp" line="238"/>
+        <location filename="../app/stability_plot.cpp" line="246"/>
         <source>%1 (%2, log scale)</source>
         <translation>%1 (%2, escala log)</translation>
     </message>
@@ -1961,97 +1961,182 @@
 <context>
     <name>rasterlab::AccuracyPanel</name>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="50"/>
+        <location filename="../app/accuracy_panel.cpp" line="63"/>
+        <source>The scene, camera and lights moved %1 to %2 units from the origin</source>
+        <translation>A cena, a câmera e as luzes deslocadas de %1 a %2 unidades da origem</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="67"/>
+        <source>Everything scaled by %1 to %2 about the origin</source>
+        <translation>Tudo escalado por %1 a %2 em torno da origem</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="70"/>
+        <source>Everything scaled by %1 to %2 about the eye: the object nearer</source>
+        <translation>Tudo escalado por %1 a %2 em torno do olho: o objeto mais perto</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="73"/>
+        <source>Each triangle cut around a sliver of %1 to %2 degrees</source>
+        <translation>Cada triângulo cortado em torno de uma lasca de %1 a %2 graus</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="76"/>
+        <source>Every material&apos;s shininess n set to %1 to %2</source>
+        <translation>O brilho n de cada material posto de %1 a %2</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="79"/>
+        <source>The camera&apos;s V %1 to %2 degrees from N</source>
+        <translation>O V da câmera a %1 até %2 graus de N</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="82"/>
+        <source>The first light %1 to %2 times the scene&apos;s size above its surface</source>
+        <translation>A primeira luz a %1 até %2 vezes o tamanho da cena acima da sua superfície</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="126"/>
+        <source>float and double differ by up to %1 byte steps (at %2); largest RMSE, float / double: %3.</source>
+        <translation>float e double diferem em até %1 passos de byte (em %2); maior RMSE, float / double: %3.</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="132"/>
+        <source>%1 of %2 points not rendered (the first at %3): %4</source>
+        <translation>%1 de %2 pontos não renderizados (o primeiro em %3): %4</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="150"/>
         <source>&amp;Measure</source>
         <translation>&amp;Medir</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="53"/>
+        <location filename="../app/accuracy_panel.cpp" line="153"/>
         <source>Render the scene in every mode and compare each with an exact ray-cast reference</source>
         <translation>Renderiza a cena em cada modo e compara cada um com uma referência exata por lançamento de raios</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="55"/>
+        <location filename="../app/accuracy_panel.cpp" line="155"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="60"/>
+        <location filename="../app/accuracy_panel.cpp" line="160"/>
         <source>1 sample a pixel</source>
         <translation>1 amostra por pixel</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="61"/>
+        <location filename="../app/accuracy_panel.cpp" line="161"/>
         <source>also 2x2 samples</source>
         <translation>também 2x2 amostras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="62"/>
+        <location filename="../app/accuracy_panel.cpp" line="162"/>
         <source>also 4x4 samples</source>
         <translation>também 4x4 amostras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="67"/>
+        <location filename="../app/accuracy_panel.cpp" line="169"/>
+        <source>&amp;Stability sweep</source>
+        <translation>&amp;Varredura de estabilidade</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="172"/>
+        <source>Make the scene stiffer step by step and measure float and double under the course and gpu rules against the exact reference at each step</source>
+        <translation>Torna a cena mais rígida passo a passo e mede float e double sob as regras course e gpu contra a referência exata a cada passo</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="176"/>
+        <source>every axis</source>
+        <translation>todos os eixos</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="181"/>
+        <source>The axes of stiffness to sweep</source>
+        <translation>Os eixos de rigidez a varrer</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="187"/>
+        <source>%v of %m points</source>
+        <translation>%v de %m pontos</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="191"/>
         <source>Measures the error of each mode against an exact reference.</source>
         <translation>Mede o erro de cada modo contra uma referência exata.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="74"/>
+        <location filename="../app/accuracy_panel.cpp" line="198"/>
+        <source>Modes</source>
+        <translation>Modos</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="199"/>
+        <source>Stability</source>
+        <translation>Estabilidade</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="218"/>
         <source>Mode</source>
         <translation>Modo</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="74"/>
+        <location filename="../app/accuracy_panel.cpp" line="218"/>
         <source>Rules</source>
         <translation>Regras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="74"/>
+        <location filename="../app/accuracy_panel.cpp" line="218"/>
         <source>Precision</source>
         <translation>Precisão</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="74"/>
+        <location filename="../app/accuracy_panel.cpp" line="218"/>
         <source>Samples</source>
         <translation>Amostras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="75"/>
+        <location filename="../app/accuracy_panel.cpp" line="219"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="75"/>
+        <location filename="../app/accuracy_panel.cpp" line="219"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="75"/>
+        <location filename="../app/accuracy_panel.cpp" line="219"/>
         <source>Max error</source>
         <translation>Erro máximo</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="75"/>
+        <location filename="../app/accuracy_panel.cpp" line="219"/>
         <source>Within 1/255</source>
         <translation>Dentro de 1/255</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="76"/>
+        <location filename="../app/accuracy_panel.cpp" line="220"/>
         <source>Errors in byte steps (1/255) over the pixels both images cover</source>
         <translation>Erros em passos de byte (1/255) nos pixels que as duas imagens cobrem</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="100"/>
+        <location filename="../app/accuracy_panel.cpp" line="244"/>
         <source>Click a pixel to compare the mode with the reference there</source>
         <translation>Clique num pixel para comparar ali o modo com a referência</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="133"/>
+        <location filename="../app/accuracy_panel.cpp" line="272"/>
+        <source>The sweep makes the scene stiffer along each axis: where a curve leaves the floor, the arithmetic loses accuracy.</source>
+        <translation>A varredura torna a cena mais rígida ao longo de cada eixo: onde uma curva sai do piso, a aritmética perde exatidão.</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="305"/>
         <source>The scene changed: measure again.</source>
         <translation>A cena mudou: meça de novo.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/accuracy_panel.cpp" line="155"/>
+        <location filename="../app/accuracy_panel.cpp" line="327"/>
         <source>Measuring %n mode(s) against the exact reference...</source>
         <translation>
             <numerusform>Medindo %n modo contra a referência exata...</numerusform>
@@ -2059,37 +2144,62 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="190"/>
+        <location filename="../app/accuracy_panel.cpp" line="364"/>
         <source>Cancelled.</source>
         <translation>Cancelado.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="191"/>
+        <location filename="../app/accuracy_panel.cpp" line="365"/>
         <source>The measurement failed: %1</source>
         <translation>A medição falhou: %1</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="197"/>
+        <location filename="../app/accuracy_panel.cpp" line="371"/>
         <source>%1 at %2x%3: %4 modes; the exact reference cast %5 rays in %6 ms.</source>
         <translation>%1 em %2x%3: %4 modos; a referência exata lançou %5 raios em %6 ms.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="224"/>
+        <location filename="../app/accuracy_panel.cpp" line="398"/>
         <source>Error against run time: %1, %2x%3</source>
         <translation>Erro contra tempo de execução: %1, %2x%3</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="271"/>
+        <location filename="../app/accuracy_panel.cpp" line="442"/>
+        <source>Sweeping %1 along %2...</source>
+        <translation>Varrendo %1 ao longo de %2...</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="480"/>
+        <source>Sweep cancelled.</source>
+        <translation>Varredura cancelada.</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="481"/>
+        <source>The sweep failed: %1</source>
+        <translation>A varredura falhou: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="492"/>
+        <source>Error against stiffness: %1, %2x%3, %4 triangles</source>
+        <translation>Erro contra rigidez: %1, %2x%3, %4 triângulos</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="498"/>
+        <source>%1 at %2x%3: %4 points in %5 s.</source>
+        <translation>%1 em %2x%3: %4 pontos em %5 s.</translation>
+    </message>
+    <message>
+        <location filename="../app/accuracy_panel.cpp" line="554"/>
         <source>%1 (%2): coverage differs on %3 pixels (%4); the largest error, %5 byte steps, is at (%6, %7). Click the map to compare a pixel.</source>
         <translation>%1 (%2): a cobertura difere em %3 pixels (%4); o maior erro, %5 passos de byte, está em (%6, %7). Clique no mapa para comparar um pixel.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="290"/>
+        <location filename="../app/accuracy_panel.cpp" line="573"/>
         <source>Pixel (%1, %2), %3: mode %4, reference %5, difference %6 (byte steps).</source>
         <translation>Pixel (%1, %2), %3: modo %4, referência %5, diferença %6 (passos de byte).</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="296"/>
+        <location filename="../app/accuracy_panel.cpp" line="579"/>
         <source>Coverage differs: %1 of %2 samples covered by the mode, %3 by the reference.</source>
         <translation>A cobertura difere: %1 de %2 amostras cobertas pelo modo, %3 pela referência.</translation>
     </message>
