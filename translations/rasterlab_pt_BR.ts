@@ -2126,17 +2126,17 @@
         <translation>Clique num pixel para comparar ali o modo com a referência</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="272"/>
+        <location filename="../app/accuracy_panel.cpp" line="273"/>
         <source>The sweep makes the scene stiffer along each axis: where a curve leaves the floor, the arithmetic loses accuracy.</source>
         <translation>A varredura torna a cena mais rígida ao longo de cada eixo: onde uma curva sai do piso, a aritmética perde exatidão.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="305"/>
+        <location filename="../app/accuracy_panel.cpp" line="306"/>
         <source>The scene changed: measure again.</source>
         <translation>A cena mudou: meça de novo.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/accuracy_panel.cpp" line="327"/>
+        <location filename="../app/accuracy_panel.cpp" line="328"/>
         <source>Measuring %n mode(s) against the exact reference...</source>
         <translation>
             <numerusform>Medindo %n modo contra a referência exata...</numerusform>
@@ -2144,62 +2144,62 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="364"/>
+        <location filename="../app/accuracy_panel.cpp" line="365"/>
         <source>Cancelled.</source>
         <translation>Cancelado.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="365"/>
+        <location filename="../app/accuracy_panel.cpp" line="366"/>
         <source>The measurement failed: %1</source>
         <translation>A medição falhou: %1</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="371"/>
+        <location filename="../app/accuracy_panel.cpp" line="372"/>
         <source>%1 at %2x%3: %4 modes; the exact reference cast %5 rays in %6 ms.</source>
         <translation>%1 em %2x%3: %4 modos; a referência exata lançou %5 raios em %6 ms.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="398"/>
+        <location filename="../app/accuracy_panel.cpp" line="399"/>
         <source>Error against run time: %1, %2x%3</source>
         <translation>Erro contra tempo de execução: %1, %2x%3</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="442"/>
+        <location filename="../app/accuracy_panel.cpp" line="443"/>
         <source>Sweeping %1 along %2...</source>
         <translation>Varrendo %1 ao longo de %2...</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="480"/>
+        <location filename="../app/accuracy_panel.cpp" line="481"/>
         <source>Sweep cancelled.</source>
         <translation>Varredura cancelada.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="481"/>
+        <location filename="../app/accuracy_panel.cpp" line="482"/>
         <source>The sweep failed: %1</source>
         <translation>A varredura falhou: %1</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="492"/>
+        <location filename="../app/accuracy_panel.cpp" line="493"/>
         <source>Error against stiffness: %1, %2x%3, %4 triangles</source>
         <translation>Erro contra rigidez: %1, %2x%3, %4 triângulos</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="498"/>
+        <location filename="../app/accuracy_panel.cpp" line="499"/>
         <source>%1 at %2x%3: %4 points in %5 s.</source>
         <translation>%1 em %2x%3: %4 pontos em %5 s.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="554"/>
+        <location filename="../app/accuracy_panel.cpp" line="555"/>
         <source>%1 (%2): coverage differs on %3 pixels (%4); the largest error, %5 byte steps, is at (%6, %7). Click the map to compare a pixel.</source>
         <translation>%1 (%2): a cobertura difere em %3 pixels (%4); o maior erro, %5 passos de byte, está em (%6, %7). Clique no mapa para comparar um pixel.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="573"/>
+        <location filename="../app/accuracy_panel.cpp" line="574"/>
         <source>Pixel (%1, %2), %3: mode %4, reference %5, difference %6 (byte steps).</source>
         <translation>Pixel (%1, %2), %3: modo %4, referência %5, diferença %6 (passos de byte).</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="579"/>
+        <location filename="../app/accuracy_panel.cpp" line="580"/>
         <source>Coverage differs: %1 of %2 samples covered by the mode, %3 by the reference.</source>
         <translation>A cobertura difere: %1 de %2 amostras cobertas pelo modo, %3 pela referência.</translation>
     </message>
