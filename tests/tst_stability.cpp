@@ -140,6 +140,20 @@ private slots:
         }
     }
 
+    void sliversStayOnTheFloor() {
+        // A sliver of 1e-12 degrees holds no pixel centre; the two triangles beside it carry
+        // the surface as the whole one did: the error is that of the 0.1 degree cut.
+        const auto report = sweep(sphere(), StiffnessAxis::Sliver, {1e-1, 1e-12});
+        const StabilityPoint &mild = floatPoint(report, 1e-1), &stiff = floatPoint(report, 1e-12);
+        QVERIFY(!mild.error && !stiff.error);
+        QVERIFY2(std::abs(stiff.row.metrics.rmse - mild.row.metrics.rmse) * 255.0 < 0.01,
+                 qPrintable(QStringLiteral("%1 against %2")
+                                .arg(stiff.row.metrics.rmse * 255.0)
+                                .arg(mild.row.metrics.rmse * 255.0)));
+        QCOMPARE(stiff.row.metrics.coverageMismatch, std::size_t(0));
+        QVERIFY(stiff.floatDoubleMax * 255.0 < 0.05);
+    }
+
     void sharpHighlightsAreWorkedOutInDouble() {
         // Float's rounding of R.V (6e-8) times n = 1e4 made float and double differ by 0.11
         // byte steps on this sphere (2.8 at n = 1e5 on the default scene); above
