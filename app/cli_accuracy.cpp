@@ -192,21 +192,12 @@ int runAccuracy(const QStringList& arguments, QTextStream& out, QTextStream& err
     parser.addOption(help);
     sceneOptions.addTo(parser);
     parser.addOptions({sceneName, format, plot, heatmaps, repeats, supersample, threads});
-    if (!parser.parse(arguments)) return usageError(err, parser.errorText());
-    if (parser.isSet(help)) {
-        out << commandHelp(parser, lit("accuracy"));
-        return ExitOk;
-    }
-    if (!parser.positionalArguments().isEmpty())
-        return usageError(
-            err, lit("unexpected argument '%1'").arg(parser.positionalArguments().first()));
     rl::CourseSceneSettings settings;
-    if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
-    sceneOptions.lessonSettings(parser, sceneName, settings);
+    if (auto code = parseSceneCommand(parser, arguments, help, lit("accuracy"), sceneOptions,
+                                      sceneName, settings, out, err))
+        return *code;
     const QString outputFormat = parser.value(format);
-    if (outputFormat != lit("md") && outputFormat != lit("csv") && outputFormat != lit("json"))
-        return usageError(err,
-                          lit("--format expects md, csv or json, found '%1'").arg(outputFormat));
+    if (auto code = checkTableFormat(outputFormat, err)) return *code;
     std::vector<int> repeatList, samples;
     if (!parseList(parser.value(repeats), 1, 1000, repeatList) || repeatList.size() != 1)
         return usageError(err, lit("--repeats expects a whole number from 1 to 1000, found '%1'")
@@ -216,14 +207,7 @@ int runAccuracy(const QStringList& arguments, QTextStream& out, QTextStream& err
                                    "by commas, such as 1,2,4, found '%1'")
                                    .arg(parser.value(supersample)));
     int threadCount = 0;
-    if (parser.isSet(threads)) {
-        bool ok = false;
-        threadCount = parser.value(threads).toInt(&ok);
-        if (!ok || threadCount < 1 || threadCount > rl::kMaxThreads)
-            return usageError(err, lit("--threads expects a whole number from 1 to %1, found '%2'")
-                                       .arg(rl::kMaxThreads)
-                                       .arg(parser.value(threads)));
-    }
+    if (auto code = readThreads(parser, threads, threadCount, err)) return *code;
     if (parser.isSet(plot) && !qobject_cast<QGuiApplication*>(QCoreApplication::instance()))
         return usageError(err, lit("--plot needs the program's own start-up (run rasterlab-cli)"));
 

@@ -175,17 +175,10 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     parser.addOption(help);
     sceneOptions.addTo(parser);
     parser.addOptions({sceneName, frames, warmup, threads, format, keepDepth});
-    if (!parser.parse(arguments)) return usageError(err, parser.errorText());
-    if (parser.isSet(help)) {
-        out << commandHelp(parser, lit("bench"));
-        return ExitOk;
-    }
-    if (!parser.positionalArguments().isEmpty())
-        return usageError(
-            err, lit("unexpected argument '%1'").arg(parser.positionalArguments().first()));
     rl::CourseSceneSettings settings;
-    if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
-    sceneOptions.lessonSettings(parser, sceneName, settings);
+    if (auto code = parseSceneCommand(parser, arguments, help, lit("bench"), sceneOptions,
+                                      sceneName, settings, out, err))
+        return *code;
     const auto count = [&](const QCommandLineOption& option, int least, int& value) {
         bool ok = false;
         value = parser.value(option).toInt(&ok);

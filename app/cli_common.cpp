@@ -7,6 +7,7 @@
 #include "default_scene_resource.h"
 #include "examples.h"
 #include "image_io.h"
+#include "parallel.h"
 
 namespace rasterlab::cli {
 
@@ -56,6 +57,41 @@ QString commandHelp(const QCommandLineParser& parser, const QString& command) {
     if (text.startsWith(prefix) && end > 0 && (lineEnd < 0 || end < lineEnd))
         text.replace(0, end, prefix + lit("rasterlab-cli ") + command);
     return text;
+}
+
+std::optional<int> parseSceneCommand(QCommandLineParser& parser, const QStringList& arguments,
+                                     const QCommandLineOption& help, const QString& command,
+                                     const SceneOptions& sceneOptions,
+                                     const QCommandLineOption& sceneName,
+                                     rl::CourseSceneSettings& settings, QTextStream& out,
+                                     QTextStream& err) {
+    if (!parser.parse(arguments)) return usageError(err, parser.errorText());
+    if (parser.isSet(help)) {
+        out << commandHelp(parser, command);
+        return ExitOk;
+    }
+    if (!parser.positionalArguments().isEmpty())
+        return usageError(
+            err, lit("unexpected argument '%1'").arg(parser.positionalArguments().first()));
+    if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
+    sceneOptions.lessonSettings(parser, sceneName, settings);
+    return std::nullopt;
+}
+
+std::optional<int> checkTableFormat(const QString& format, QTextStream& err) {
+    if (format == lit("md") || format == lit("csv") || format == lit("json")) return std::nullopt;
+    return usageError(err, lit("--format expects md, csv or json, found '%1'").arg(format));
+}
+
+std::optional<int> readThreads(const QCommandLineParser& parser, const QCommandLineOption& option,
+                               int& threads, QTextStream& err) {
+    if (!parser.isSet(option)) return std::nullopt;
+    bool ok = false;
+    threads = parser.value(option).toInt(&ok);
+    if (ok && threads >= 1 && threads <= rl::kMaxThreads) return std::nullopt;
+    return usageError(err, lit("--threads expects a whole number from 1 to %1, found '%2'")
+                               .arg(rl::kMaxThreads)
+                               .arg(parser.value(option)));
 }
 
 bool parsePixel(const QString& text, int& x, int& y) {

@@ -4,6 +4,8 @@
 // cli_compare.cpp, cli_bench.cpp, cli_accuracy.cpp, cli_generate.cpp); cli.cpp dispatches to them.
 #pragma once
 
+#include <optional>
+
 #include <QCommandLineOption>
 #include <QCommandLineParser>
 #include <QString>
@@ -144,6 +146,21 @@ struct SceneOptions {
                 rl::Diagnostics& diagnostics, std::shared_ptr<const rl::Scene>& scene,
                 QString& sceneLabel) const;
 };
+
+// The steps every scene command (render, bench, accuracy, stability) takes first: parse the
+// arguments, answer --help, refuse file names, read the scene options into settings (and a
+// lesson's own). Each returns nullopt to go on, or the exit code to return, already printed.
+std::optional<int> parseSceneCommand(QCommandLineParser& parser, const QStringList& arguments,
+                                     const QCommandLineOption& help, const QString& command,
+                                     const SceneOptions& sceneOptions,
+                                     const QCommandLineOption& sceneName,
+                                     rl::CourseSceneSettings& settings, QTextStream& out,
+                                     QTextStream& err);
+// --format: md, csv or json.
+std::optional<int> checkTableFormat(const QString& format, QTextStream& err);
+// --threads N, from 1 to rl::kMaxThreads, when given (threads stays 0 otherwise).
+std::optional<int> readThreads(const QCommandLineParser& parser, const QCommandLineOption& option,
+                               int& threads, QTextStream& err);
 
 // The subcommands.
 int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err);

@@ -195,18 +195,10 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
     sceneOptions.addTo(parser);
     parser.addOptions({sceneName, output, depthOutput, normalsOutput, explain, painterDiff});
     animationOptions.addTo(parser);
-    if (!parser.parse(arguments)) return usageError(err, parser.errorText());
-    if (parser.isSet(help)) {
-        out << commandHelp(parser, lit("render"));
-        return ExitOk;
-    }
-    if (!parser.positionalArguments().isEmpty())
-        return usageError(
-            err, lit("unexpected argument '%1'").arg(parser.positionalArguments().first()));
-
     rl::CourseSceneSettings settings;
-    if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
-    sceneOptions.lessonSettings(parser, sceneName, settings);
+    if (auto code = parseSceneCommand(parser, arguments, help, lit("render"), sceneOptions,
+                                      sceneName, settings, out, err))
+        return *code;
     if (!parser.isSet(output)) return usageError(err, lit("render needs --output FILE.png"));
     if (parser.isSet(painterDiff) && settings.shading != rl::ShadingModel::Painter)
         return usageError(err, lit("--painter-diff needs --shading painter"));

@@ -162,21 +162,12 @@ int runStability(const QStringList& arguments, QTextStream& out, QTextStream& er
     parser.addOption(help);
     sceneOptions.addTo(parser);
     parser.addOptions({sceneName, axesOption, format, plot, repeats, threads});
-    if (!parser.parse(arguments)) return usageError(err, parser.errorText());
-    if (parser.isSet(help)) {
-        out << commandHelp(parser, lit("stability"));
-        return ExitOk;
-    }
-    if (!parser.positionalArguments().isEmpty())
-        return usageError(
-            err, lit("unexpected argument '%1'").arg(parser.positionalArguments().first()));
     rl::CourseSceneSettings settings;
-    if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
-    sceneOptions.lessonSettings(parser, sceneName, settings);
+    if (auto code = parseSceneCommand(parser, arguments, help, lit("stability"), sceneOptions,
+                                      sceneName, settings, out, err))
+        return *code;
     const QString outputFormat = parser.value(format);
-    if (outputFormat != lit("md") && outputFormat != lit("csv") && outputFormat != lit("json"))
-        return usageError(err,
-                          lit("--format expects md, csv or json, found '%1'").arg(outputFormat));
+    if (auto code = checkTableFormat(outputFormat, err)) return *code;
     rl::StabilityOptions options;
     if (parser.isSet(axesOption) && !parseAxes(parser.value(axesOption), options.axes))
         return usageError(err, lit("--axes expects names among %1, separated by commas, found '%2'")
@@ -186,13 +177,7 @@ int runStability(const QStringList& arguments, QTextStream& out, QTextStream& er
     if (!ok || options.repeats < 1 || options.repeats > 1000)
         return usageError(err, lit("--repeats expects a whole number from 1 to 1000, found '%1'")
                                    .arg(parser.value(repeats)));
-    if (parser.isSet(threads)) {
-        options.threads = parser.value(threads).toInt(&ok);
-        if (!ok || options.threads < 1 || options.threads > rl::kMaxThreads)
-            return usageError(err, lit("--threads expects a whole number from 1 to %1, found '%2'")
-                                       .arg(rl::kMaxThreads)
-                                       .arg(parser.value(threads)));
-    }
+    if (auto code = readThreads(parser, threads, options.threads, err)) return *code;
     if (parser.isSet(plot) && !qobject_cast<QGuiApplication*>(QCoreApplication::instance()))
         return usageError(err, lit("--plot needs the program's own start-up (run rasterlab-cli)"));
     if (parser.isSet(sceneOptions.shading)) options.shading = settings.shading;
