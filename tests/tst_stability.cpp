@@ -128,7 +128,8 @@ private slots:
                         {StiffnessAxis::Scale, 1e6},
                         {StiffnessAxis::Distance, 1e-9}};
         for (const auto& e : extremes) {
-            const StabilityPoint& p = floatPoint(sweep(scene, e.axis, {e.value}), e.value);
+            const StabilityReport report = sweep(scene, e.axis, {e.value});
+            const StabilityPoint& p = floatPoint(report, e.value);
             QVERIFY2(!p.error, axisInfo(e.axis).name);
             QVERIFY2(std::abs(p.row.metrics.rmse * 255.0 - floor) < 1e-3,
                      qPrintable(QStringLiteral("%1 %2: %3 against %4")
