@@ -14,10 +14,10 @@
 
 #include <algorithm>
 #include <array>
-#include <utility>
-#include <vector>
 #include <cmath>
 #include <exception>
+#include <utility>
+#include <vector>
 
 #include "accuracy_plot.h"
 #include "pipeline_messages.h"
@@ -36,6 +36,13 @@ public:
     QSize minimumSizeHint() const override { return minimumSize(); }
 };
 
+// A plot scaled smoothly into its label, keeping its proportions.
+void fitPicture(QLabel* label, const QImage& image) {
+    if (image.isNull()) return;
+    label->setPixmap(QPixmap::fromImage(image).scaled(label->size(), Qt::KeepAspectRatio,
+                                                      Qt::SmoothTransformation));
+}
+
 QString percent(double share) {
     return QString::number(100.0 * share, 'f', 3) + QStringLiteral(" %");
 }
@@ -47,8 +54,23 @@ QString bytes(const rl::dvec3& c) {
         .arg(c.b * 255.0, 0, 'f', 2);
 }
 
-bool isCancelled(const rl::Error& error) {
-    return error.message == "measurement cancelled";
+// Runs a measurement on the worker: its report, or whether it was cancelled (its flag is
+// set, as ReplayBuilder tells), or its error in the user's language.
+template <typename Outcome, typename Measure>
+Outcome runJob(quint64 generation, const std::atomic<bool>& cancel, Measure measure) {
+    Outcome outcome;
+    outcome.generation = generation;
+    try {
+        auto report = measure();
+        if (report)
+            outcome.report = std::make_shared<typename decltype(outcome.report)::element_type>(
+                std::move(report.value()));
+        else if (!(outcome.cancelled = cancel.load()))
+            outcome.error = translated(report.error());
+    } catch (const std::exception& e) {
+        outcome.error = QString::fromUtf8(e.what());
+    }
+    return outcome;
 }
 
 QString scientific(double v) {
@@ -328,22 +350,11 @@ void AccuracyPanel::measure() {
     m_status->setText(tr("Measuring %n mode(s) against the exact reference...", nullptr,
                          int(options.modes.size())));
     // The cancel flag lives as long as the worker holds its pointer.
-    m_watcher.setFuture(QtConcurrent::run([generation, scene = m_scene, options,
-                                           flag = m_cancel]() -> Outcome {
-        Outcome outcome;
-        outcome.generation = generation;
-        try {
-            auto report = rl::measureAccuracy(*scene, options);
-            if (!report)
-                outcome.error = isCancelled(report.error()) ? QString()
-                                                            : translated(report.error());
-            else
-                outcome.report = std::make_shared<rl::AccuracyReport>(std::move(report.value()));
-        } catch (const std::exception& e) {
-            outcome.error = QString::fromUtf8(e.what());
-        }
-        return outcome;
-    }));
+    m_watcher.setFuture(
+        QtConcurrent::run([generation, scene = m_scene, options, flag = m_cancel] {
+            return runJob<Outcome>(generation, *flag,
+                                   [&] { return rl::measureAccuracy(*scene, options); });
+        }));
 }
 
 void AccuracyPanel::cancel() {
@@ -360,8 +371,7 @@ void AccuracyPanel::onFinished() {
         return;  // for a scene no longer shown, or a measurement replaced
     }
     if (!outcome.report) {
-        // An empty error: cancelled (the message is translated, the test is on the English).
-        m_status->setText(outcome.error.isEmpty()
+        m_status->setText(outcome.cancelled
                               ? tr("Cancelled.")
                               : tr("The measurement failed: %1").arg(outcome.error));
         emit finished();
@@ -442,23 +452,11 @@ void AccuracyPanel::sweep() {
     m_results->setCurrentIndex(1);
     m_status->setText(tr("Sweeping %1 along %2...")
                           .arg(QString::fromStdString(m_scene->name), m_axes->currentText()));
-    m_sweepWatcher.setFuture(QtConcurrent::run([generation, scene = m_scene, options,
-                                                flag = m_sweepCancel]() -> SweepOutcome {
-        SweepOutcome outcome;
-        outcome.generation = generation;
-        try {
-            auto report = rl::measureStability(*scene, options);
-            if (!report) {
-                outcome.cancelled = isCancelled(report.error());
-                outcome.error = translated(report.error());
-            } else {
-                outcome.report = std::make_shared<rl::StabilityReport>(std::move(report.value()));
-            }
-        } catch (const std::exception& e) {
-            outcome.error = QString::fromUtf8(e.what());
-        }
-        return outcome;
-    }));
+    m_sweepWatcher.setFuture(
+        QtConcurrent::run([generation, scene = m_scene, options, flag = m_sweepCancel] {
+            return runJob<SweepOutcome>(generation, *flag,
+                                        [&] { return rl::measureStability(*scene, options); });
+        }));
 }
 
 void AccuracyPanel::onSweepProgress(quint64 generation, int done, int total) {
@@ -484,10 +482,6 @@ void AccuracyPanel::onSweepFinished() {
         return;
     }
     m_stability = outcome.report;
-    int axes = 0;
-    std::optional<rl::StiffnessAxis> last;
-    for (const rl::StabilityPoint& p : m_stability->points)
-        if (p.axis != last) ++axes, last = p.axis;
     m_stabilityPlot = rasterlab::stabilityPlot(
         *m_stability,
         tr("Error against stiffness: %1, %2x%3, %4 triangles")
@@ -495,7 +489,7 @@ void AccuracyPanel::onSweepFinished() {
             .arg(m_scene->width)
             .arg(m_scene->height)
             .arg(m_scene->triangleCount()),
-        stabilityPlotSize(axes));
+        stabilityPlotSize(*m_stability));
     m_status->setText(tr("%1 at %2x%3: %4 points in %5 s.")
                           .arg(QString::fromStdString(m_scene->name))
                           .arg(m_scene->width)
@@ -590,11 +584,8 @@ QString AccuracyPanel::pickText() const {
 }
 
 bool AccuracyPanel::eventFilter(QObject* watched, QEvent* event) {
-    if (watched == m_stabilityLabel && event->type() == QEvent::Resize &&
-        !m_stabilityPlot.isNull())
-        m_stabilityLabel->setPixmap(QPixmap::fromImage(m_stabilityPlot)
-                                        .scaled(m_stabilityLabel->size(), Qt::KeepAspectRatio,
-                                                Qt::SmoothTransformation));
+    if (watched == m_stabilityLabel && event->type() == QEvent::Resize)
+        fitPicture(m_stabilityLabel, m_stabilityPlot);
     if (watched == m_heatLabel && event->type() == QEvent::MouseButtonPress && m_report &&
         m_selected >= 0) {
         const auto* mouse = static_cast<QMouseEvent*>(event);
@@ -620,13 +611,8 @@ void AccuracyPanel::resizeEvent(QResizeEvent* event) {
 }
 
 void AccuracyPanel::refreshImages() {
-    const auto fit = [](QLabel* label, const QImage& image) {
-        if (image.isNull()) return;
-        label->setPixmap(QPixmap::fromImage(image).scaled(label->size(), Qt::KeepAspectRatio,
-                                                          Qt::SmoothTransformation));
-    };
-    fit(m_plotLabel, m_plot);
-    fit(m_stabilityLabel, m_stabilityPlot);
+    fitPicture(m_plotLabel, m_plot);
+    fitPicture(m_stabilityLabel, m_stabilityPlot);
     // The heat map keeps its pixels sharp when enlarged.
     if (!m_heatMap.isNull())
         m_heatLabel->setPixmap(QPixmap::fromImage(m_heatMap).scaled(

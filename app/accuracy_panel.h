@@ -73,17 +73,16 @@ protected:
     void resizeEvent(QResizeEvent* event) override;
 
 private:
-    struct Outcome {
+    // What a worker hands back: its report, or why there is none (cancelled, or an error).
+    template <typename Report>
+    struct JobOutcome {
         quint64 generation = 0;
-        std::shared_ptr<rl::AccuracyReport> report;
-        QString error;
-    };
-    struct SweepOutcome {
-        quint64 generation = 0;
-        std::shared_ptr<rl::StabilityReport> report;
+        std::shared_ptr<Report> report;
         QString error;
         bool cancelled = false;
     };
+    using Outcome = JobOutcome<rl::AccuracyReport>;
+    using SweepOutcome = JobOutcome<rl::StabilityReport>;
     QWidget* makeModesPage();
     QWidget* makeStabilityPage();
     void onFinished();

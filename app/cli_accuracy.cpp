@@ -30,15 +30,6 @@ bool parseList(const QString& text, int least, int most, std::vector<int>& value
     return !values.empty();
 }
 
-QString jsonNumber(double v, int decimals) {
-    return std::isfinite(v) ? QString::number(v, 'f', decimals) : lit("null");
-}
-
-// A number with a fixed count of decimals.
-QString number(double v, int decimals) {
-    return QString::number(v, 'f', decimals);
-}
-
 // The report in the format --format names: JSON, CSV, or a Markdown table (md) under a line
 // about the scene and the reference.
 void printJson(const rl::AccuracyReport& report, QTextStream& out) {

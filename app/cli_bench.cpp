@@ -86,11 +86,6 @@ int timeFrames(const std::shared_ptr<const rl::Scene>& scene, const rl::RenderOp
     return ExitOk;
 }
 
-// A number with a fixed count of decimals.
-QString number(double v, int decimals) {
-    return QString::number(v, 'f', decimals);
-}
-
 // The result as one JSON object.
 void printJson(const BenchResult& r, const rl::Scene& scene, const QString& sceneLabel,
                const QString& shadingName, int frameCount, bool keepDepth, QTextStream& out) {

@@ -3,6 +3,8 @@
 #include <QFileInfo>
 #include <QRegularExpression>
 
+#include <cmath>
+
 #include "benchmark_scenes.h"
 #include "default_scene_resource.h"
 #include "examples.h"
@@ -47,6 +49,14 @@ int inputError(QTextStream& err, const rl::Error& error) {
     err << QString::fromStdString(error.toString()) << '\n';
     err.flush();
     return ExitBadInput;
+}
+
+QString number(double v, int decimals) {
+    return QString::number(v, 'f', decimals);
+}
+
+QString jsonNumber(double v, int decimals) {
+    return std::isfinite(v) ? number(v, decimals) : lit("null");
 }
 
 QString commandHelp(const QCommandLineParser& parser, const QString& command) {

@@ -37,6 +37,10 @@ int inputError(QTextStream& err, const rl::Error& error);
 // A subcommand's help. QCommandLineParser names the running executable in its usage line
 // (from QCoreApplication::arguments(), not from the list it parsed): name the command.
 QString commandHelp(const QCommandLineParser& parser, const QString& command);
+
+// A number with a fixed count of decimals; in JSON, null when it is not finite.
+QString number(double v, int decimals);
+QString jsonNumber(double v, int decimals);
 // "X,Y" such as 400,300.
 bool parsePixel(const QString& text, int& x, int& y);
 // Writes the image and says so on out ("wrote PATH (WHAT, WxH)"); false, with the error on

@@ -16,10 +16,6 @@ namespace rasterlab::cli {
 
 namespace {
 
-QString number(double v, int decimals) {
-    return std::isfinite(v) ? QString::number(v, 'f', decimals) : lit("null");
-}
-
 QString scientific(double v) {
     return QString::number(v, 'g', 3);
 }
@@ -42,13 +38,13 @@ void printJson(const rl::StabilityReport& report, QTextStream& out) {
             message.replace(QLatin1Char('\\'), lit("\\\\")).replace(QLatin1Char('"'), lit("\\\""));
             out << ", \"error\": \"" << message << "\"}";
         } else {
-            out << ", \"ms\": " << number(p.row.milliseconds, 3)
-                << ", \"rmse\": " << number(m.rmse, 9) << ", \"max_error\": " << number(m.maxError, 9)
-                << ", \"coverage_mismatch\": " << number(m.coverageMismatchShare(), 6)
-                << ", \"depth_error_mean\": " << number(m.depthMeanRelative, 12)
-                << ", \"depth_error_max\": " << number(m.depthMaxRelative, 12)
-                << ", \"float_vs_double_max\": " << number(p.floatDoubleMax, 9)
-                << ", \"float_vs_double_mean\": " << number(p.floatDoubleMean, 12) << "}";
+            out << ", \"ms\": " << jsonNumber(p.row.milliseconds, 3)
+                << ", \"rmse\": " << jsonNumber(m.rmse, 9) << ", \"max_error\": " << jsonNumber(m.maxError, 9)
+                << ", \"coverage_mismatch\": " << jsonNumber(m.coverageMismatchShare(), 6)
+                << ", \"depth_error_mean\": " << jsonNumber(m.depthMeanRelative, 12)
+                << ", \"depth_error_max\": " << jsonNumber(m.depthMaxRelative, 12)
+                << ", \"float_vs_double_max\": " << jsonNumber(p.floatDoubleMax, 9)
+                << ", \"float_vs_double_mean\": " << jsonNumber(p.floatDoubleMean, 12) << "}";
         }
         first = false;
     }
@@ -66,8 +62,8 @@ void printCsv(const rl::StabilityReport& report, QTextStream& out) {
             out << ",,,,,,,,,\"" << errorText(p).replace(QLatin1Char('"'), lit("\"\"")) << "\"\n";
             continue;
         }
-        out << "," << number(p.row.milliseconds, 3) << "," << number(m.rmse, 9) << ","
-            << number(m.maxError, 9) << "," << number(m.coverageMismatchShare(), 6) << ","
+        out << "," << jsonNumber(p.row.milliseconds, 3) << "," << jsonNumber(m.rmse, 9) << ","
+            << jsonNumber(m.maxError, 9) << "," << jsonNumber(m.coverageMismatchShare(), 6) << ","
             << scientific(m.depthMeanRelative) << "," << scientific(m.depthMaxRelative) << ","
             << scientific(p.floatDoubleMax) << "," << scientific(p.floatDoubleMean) << ",\n";
     }
@@ -76,7 +72,7 @@ void printCsv(const rl::StabilityReport& report, QTextStream& out) {
 void printTable(const rl::StabilityReport& report, const rl::Scene& scene,
                 const QString& sceneLabel, QTextStream& out) {
     out << "Stability of " << sceneLabel << " at " << scene.width << "x" << scene.height << " ("
-        << scene.triangleCount() << " triangles), " << number(report.milliseconds / 1000.0, 1)
+        << scene.triangleCount() << " triangles), " << jsonNumber(report.milliseconds / 1000.0, 1)
         << " s. Colour errors in byte steps (1/255) against the exact reference; time is the "
            "median per frame.\n";
     std::optional<rl::StiffnessAxis> axis;
@@ -96,9 +92,9 @@ void printTable(const rl::StabilityReport& report, const rl::Scene& scene,
             continue;
         }
         const rl::AccuracyMetrics& m = p.row.metrics;
-        out << number(p.row.milliseconds, 2) << " | " << scientific(m.rmse * 255.0) << " | "
+        out << jsonNumber(p.row.milliseconds, 2) << " | " << scientific(m.rmse * 255.0) << " | "
             << scientific(m.maxError * 255.0) << " | "
-            << number(100.0 * m.coverageMismatchShare(), 3) << " % | "
+            << jsonNumber(100.0 * m.coverageMismatchShare(), 3) << " % | "
             << (std::isnan(m.depthMaxRelative) ? lit("-") : scientific(m.depthMaxRelative))
             << " | "
             << (std::isnan(p.floatDoubleMax) ? lit("-")

@@ -486,7 +486,7 @@ const char* const kCatalogue[] = {
     QT_TRANSLATE_NOOP("Messages",
                       "internal error: the rows hold %1 pixels and the depth test saw %2 "
                       "fragments"),
-    // pipeline/render/renderer.cpp (lightOnSurface)
+    // pipeline/render/renderer.cpp (lightsOnSurfaces)
     QT_TRANSLATE_NOOP("Messages",
                       "light %1 is %2 above triangle %3 of %4, nearer than float can resolve "
                       "points there (%5): the pixels under it may be lit from the wrong side"),

@@ -197,12 +197,34 @@ void drawLegend(QPainter& p, QPointF at) {
                    "cross: the scene could not be rendered"));
 }
 
+// The axes of the report, in sweep order.
+std::vector<rl::StiffnessAxis> sweptAxes(const rl::StabilityReport& report) {
+    std::vector<rl::StiffnessAxis> axes;
+    for (const rl::StabilityPoint& point : report.points)
+        if (std::find(axes.begin(), axes.end(), point.axis) == axes.end())
+            axes.push_back(point.axis);
+    return axes;
+}
+
+// Four panels a row at most: every axis and the time panel make 4 x 2, one axis 2 x 1.
+struct Grid {
+    int columns, rows;
+};
+Grid gridFor(int axes) {
+    const int panels = std::max(1, axes + 1);
+    const int columns = std::min(4, panels);
+    return {columns, std::min(2, (panels + columns - 1) / columns)};
+}
+
 }  // namespace
 
 QSize stabilityPlotSize(int axes) {
-    const int panels = std::max(1, axes + 1);
-    const int columns = std::min(4, panels), rows = std::min(2, (panels + columns - 1) / columns);
-    return {20 + 370 * columns, 84 + 408 * rows};
+    const Grid grid = gridFor(axes);
+    return {20 + 370 * grid.columns, 84 + 408 * grid.rows};
+}
+
+QSize stabilityPlotSize(const rl::StabilityReport& report) {
+    return stabilityPlotSize(int(sweptAxes(report).size()));
 }
 
 QImage stabilityPlot(const rl::StabilityReport& report, const QString& title, QSize size) {
@@ -221,13 +243,8 @@ QImage stabilityPlot(const rl::StabilityReport& report, const QString& title, QS
     p.setFont(font);
     drawLegend(p, QPointF(16, 44));
 
-    std::vector<rl::StiffnessAxis> axes;
-    for (const rl::StabilityPoint& point : report.points)
-        if (std::find(axes.begin(), axes.end(), point.axis) == axes.end())
-            axes.push_back(point.axis);
-    // Four panels a row at most: every axis and the time panel make 4 x 2, one axis 2 x 1.
-    const int panels = int(axes.size()) + 1;
-    const int columns = std::min(4, panels), rows = std::min(2, (panels + columns - 1) / columns);
+    const std::vector<rl::StiffnessAxis> axes = sweptAxes(report);
+    const auto [columns, rows] = gridFor(int(axes.size()));
     const double top = 84, cellW = (size.width() - 20.0) / columns,
                  cellH = (size.height() - top) / rows;
     for (std::size_t i = 0; i <= axes.size() && i < std::size_t(columns * rows); ++i) {
@@ -243,8 +260,8 @@ QImage stabilityPlot(const rl::StabilityReport& report, const QString& title, QS
                     info.values.front() > info.values.back()};
         decades(*lo, *hi, panel.x0, panel.x1);
         drawFrame(p, panel, QString::fromLatin1(info.name),
-                  QCoreApplication::translate("StabilityPlot", "%1 (%2, log scale)").arg(QString::fromLatin1(info.name),
-                                              QString::fromLatin1(info.unit)));
+                  QCoreApplication::translate("StabilityPlot", "%1 (%2, log scale)")
+                      .arg(QString::fromLatin1(info.name), QString::fromLatin1(info.unit)));
         drawAxis(p, panel, report, axes[i]);
     }
     return image;

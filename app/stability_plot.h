@@ -15,6 +15,8 @@ namespace rasterlab {
 // The size that gives each panel the room it has in the default 1500 x 900 picture of every
 // axis, for a plot of `axes` axes (and the time panel).
 QSize stabilityPlotSize(int axes);
+// The same for the axes the report holds.
+QSize stabilityPlotSize(const rl::StabilityReport& report);
 
 QImage stabilityPlot(const rl::StabilityReport& report, const QString& title,
                      QSize size = {1500, 900});

@@ -1953,7 +1953,7 @@
         <translation>y: erro de cor em passos de byte (log; RMSE contra a referência exata, ou a maior diferença float-double); x: mais rígido à direita; um x: a cena não pôde ser renderizada</translation>
     </message>
     <message>
-        <location filename="../app/stability_plot.cpp" line="246"/>
+        <location filename="../app/stability_plot.cpp" line="263"/>
         <source>%1 (%2, log scale)</source>
         <translation>%1 (%2, escala log)</translation>
     </message>
@@ -1961,182 +1961,182 @@
 <context>
     <name>rasterlab::AccuracyPanel</name>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="63"/>
+        <location filename="../app/accuracy_panel.cpp" line="85"/>
         <source>The scene, camera and lights moved %1 to %2 units from the origin</source>
         <translation>A cena, a câmera e as luzes deslocadas de %1 a %2 unidades da origem</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="67"/>
+        <location filename="../app/accuracy_panel.cpp" line="89"/>
         <source>Everything scaled by %1 to %2 about the origin</source>
         <translation>Tudo escalado por %1 a %2 em torno da origem</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="70"/>
+        <location filename="../app/accuracy_panel.cpp" line="92"/>
         <source>Everything scaled by %1 to %2 about the eye: the object nearer</source>
         <translation>Tudo escalado por %1 a %2 em torno do olho: o objeto mais perto</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="73"/>
+        <location filename="../app/accuracy_panel.cpp" line="95"/>
         <source>Each triangle cut around a sliver of %1 to %2 degrees</source>
         <translation>Cada triângulo cortado em torno de uma lasca de %1 a %2 graus</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="76"/>
+        <location filename="../app/accuracy_panel.cpp" line="98"/>
         <source>Every material&apos;s shininess n set to %1 to %2</source>
         <translation>O brilho n de cada material posto de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="79"/>
+        <location filename="../app/accuracy_panel.cpp" line="101"/>
         <source>The camera&apos;s V %1 to %2 degrees from N</source>
         <translation>O V da câmera a %1 até %2 graus de N</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="82"/>
+        <location filename="../app/accuracy_panel.cpp" line="104"/>
         <source>The first light %1 to %2 times the scene&apos;s size above its surface</source>
         <translation>A primeira luz a %1 até %2 vezes o tamanho da cena acima da sua superfície</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="126"/>
+        <location filename="../app/accuracy_panel.cpp" line="148"/>
         <source>float and double differ by up to %1 byte steps (at %2); largest RMSE, float / double: %3.</source>
         <translation>float e double diferem em até %1 passos de byte (em %2); maior RMSE, float / double: %3.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="132"/>
+        <location filename="../app/accuracy_panel.cpp" line="154"/>
         <source>%1 of %2 points not rendered (the first at %3): %4</source>
         <translation>%1 de %2 pontos não renderizados (o primeiro em %3): %4</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="150"/>
+        <location filename="../app/accuracy_panel.cpp" line="172"/>
         <source>&amp;Measure</source>
         <translation>&amp;Medir</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="153"/>
+        <location filename="../app/accuracy_panel.cpp" line="175"/>
         <source>Render the scene in every mode and compare each with an exact ray-cast reference</source>
         <translation>Renderiza a cena em cada modo e compara cada um com uma referência exata por lançamento de raios</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="155"/>
+        <location filename="../app/accuracy_panel.cpp" line="177"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="160"/>
+        <location filename="../app/accuracy_panel.cpp" line="182"/>
         <source>1 sample a pixel</source>
         <translation>1 amostra por pixel</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="161"/>
+        <location filename="../app/accuracy_panel.cpp" line="183"/>
         <source>also 2x2 samples</source>
         <translation>também 2x2 amostras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="162"/>
+        <location filename="../app/accuracy_panel.cpp" line="184"/>
         <source>also 4x4 samples</source>
         <translation>também 4x4 amostras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="169"/>
+        <location filename="../app/accuracy_panel.cpp" line="191"/>
         <source>&amp;Stability sweep</source>
         <translation>&amp;Varredura de estabilidade</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="172"/>
+        <location filename="../app/accuracy_panel.cpp" line="194"/>
         <source>Make the scene stiffer step by step and measure float and double under the course and gpu rules against the exact reference at each step</source>
         <translation>Torna a cena mais rígida passo a passo e mede float e double sob as regras course e gpu contra a referência exata a cada passo</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="176"/>
+        <location filename="../app/accuracy_panel.cpp" line="198"/>
         <source>every axis</source>
         <translation>todos os eixos</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="181"/>
+        <location filename="../app/accuracy_panel.cpp" line="203"/>
         <source>The axes of stiffness to sweep</source>
         <translation>Os eixos de rigidez a varrer</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="187"/>
+        <location filename="../app/accuracy_panel.cpp" line="209"/>
         <source>%v of %m points</source>
         <translation>%v de %m pontos</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="191"/>
+        <location filename="../app/accuracy_panel.cpp" line="213"/>
         <source>Measures the error of each mode against an exact reference.</source>
         <translation>Mede o erro de cada modo contra uma referência exata.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="198"/>
+        <location filename="../app/accuracy_panel.cpp" line="220"/>
         <source>Modes</source>
         <translation>Modos</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="199"/>
+        <location filename="../app/accuracy_panel.cpp" line="221"/>
         <source>Stability</source>
         <translation>Estabilidade</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="218"/>
+        <location filename="../app/accuracy_panel.cpp" line="240"/>
         <source>Mode</source>
         <translation>Modo</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="218"/>
+        <location filename="../app/accuracy_panel.cpp" line="240"/>
         <source>Rules</source>
         <translation>Regras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="218"/>
+        <location filename="../app/accuracy_panel.cpp" line="240"/>
         <source>Precision</source>
         <translation>Precisão</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="218"/>
+        <location filename="../app/accuracy_panel.cpp" line="240"/>
         <source>Samples</source>
         <translation>Amostras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="219"/>
+        <location filename="../app/accuracy_panel.cpp" line="241"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="219"/>
+        <location filename="../app/accuracy_panel.cpp" line="241"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="219"/>
+        <location filename="../app/accuracy_panel.cpp" line="241"/>
         <source>Max error</source>
         <translation>Erro máximo</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="219"/>
+        <location filename="../app/accuracy_panel.cpp" line="241"/>
         <source>Within 1/255</source>
         <translation>Dentro de 1/255</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="220"/>
+        <location filename="../app/accuracy_panel.cpp" line="242"/>
         <source>Errors in byte steps (1/255) over the pixels both images cover</source>
         <translation>Erros em passos de byte (1/255) nos pixels que as duas imagens cobrem</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="244"/>
+        <location filename="../app/accuracy_panel.cpp" line="266"/>
         <source>Click a pixel to compare the mode with the reference there</source>
         <translation>Clique num pixel para comparar ali o modo com a referência</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="273"/>
+        <location filename="../app/accuracy_panel.cpp" line="295"/>
         <source>The sweep makes the scene stiffer along each axis: where a curve leaves the floor, the arithmetic loses accuracy.</source>
         <translation>A varredura torna a cena mais rígida ao longo de cada eixo: onde uma curva sai do piso, a aritmética perde exatidão.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="306"/>
+        <location filename="../app/accuracy_panel.cpp" line="328"/>
         <source>The scene changed: measure again.</source>
         <translation>A cena mudou: meça de novo.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/accuracy_panel.cpp" line="328"/>
+        <location filename="../app/accuracy_panel.cpp" line="350"/>
         <source>Measuring %n mode(s) against the exact reference...</source>
         <translation>
             <numerusform>Medindo %n modo contra a referência exata...</numerusform>
@@ -2144,62 +2144,62 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="365"/>
+        <location filename="../app/accuracy_panel.cpp" line="375"/>
         <source>Cancelled.</source>
         <translation>Cancelado.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="366"/>
+        <location filename="../app/accuracy_panel.cpp" line="376"/>
         <source>The measurement failed: %1</source>
         <translation>A medição falhou: %1</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="372"/>
+        <location filename="../app/accuracy_panel.cpp" line="382"/>
         <source>%1 at %2x%3: %4 modes; the exact reference cast %5 rays in %6 ms.</source>
         <translation>%1 em %2x%3: %4 modos; a referência exata lançou %5 raios em %6 ms.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="399"/>
+        <location filename="../app/accuracy_panel.cpp" line="409"/>
         <source>Error against run time: %1, %2x%3</source>
         <translation>Erro contra tempo de execução: %1, %2x%3</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="443"/>
+        <location filename="../app/accuracy_panel.cpp" line="453"/>
         <source>Sweeping %1 along %2...</source>
         <translation>Varrendo %1 ao longo de %2...</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="481"/>
+        <location filename="../app/accuracy_panel.cpp" line="479"/>
         <source>Sweep cancelled.</source>
         <translation>Varredura cancelada.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="482"/>
+        <location filename="../app/accuracy_panel.cpp" line="480"/>
         <source>The sweep failed: %1</source>
         <translation>A varredura falhou: %1</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="493"/>
+        <location filename="../app/accuracy_panel.cpp" line="487"/>
         <source>Error against stiffness: %1, %2x%3, %4 triangles</source>
         <translation>Erro contra rigidez: %1, %2x%3, %4 triângulos</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="499"/>
+        <location filename="../app/accuracy_panel.cpp" line="493"/>
         <source>%1 at %2x%3: %4 points in %5 s.</source>
         <translation>%1 em %2x%3: %4 pontos em %5 s.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="555"/>
+        <location filename="../app/accuracy_panel.cpp" line="549"/>
         <source>%1 (%2): coverage differs on %3 pixels (%4); the largest error, %5 byte steps, is at (%6, %7). Click the map to compare a pixel.</source>
         <translation>%1 (%2): a cobertura difere em %3 pixels (%4); o maior erro, %5 passos de byte, está em (%6, %7). Clique no mapa para comparar um pixel.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="574"/>
+        <location filename="../app/accuracy_panel.cpp" line="568"/>
         <source>Pixel (%1, %2), %3: mode %4, reference %5, difference %6 (byte steps).</source>
         <translation>Pixel (%1, %2), %3: modo %4, referência %5, diferença %6 (passos de byte).</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="580"/>
+        <location filename="../app/accuracy_panel.cpp" line="574"/>
         <source>Coverage differs: %1 of %2 samples covered by the mode, %3 by the reference.</source>
         <translation>A cobertura difere: %1 de %2 amostras cobertas pelo modo, %3 pela referência.</translation>
     </message>

@@ -7,12 +7,11 @@
 #include <memory>
 
 #include "frame_trace.h"
+#include "normals.h"
 
 namespace rl {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::vector<double> decadesFrom(int firstExponent, int lastExponent) {
     std::vector<double> values;
@@ -47,25 +46,8 @@ void moveScene(Scene& scene, double s, const dvec3& t) {
 void tiltUpHint(CourseCamera& camera, double degrees) {
     const dvec3 n = glm::normalize(camera.n);
     const dvec3 across = glm::normalize(camera.v - glm::dot(camera.v, n) * n);
-    const double angle = degrees * kPi / 180.0;
+    const double angle = glm::radians(degrees);
     camera.v = std::cos(angle) * n + std::sin(angle) * across;
-}
-
-// Model-space vertex normals as the normals stage makes them: the unit normals of the
-// triangles around each vertex added up, normalised.
-std::vector<vec3> vertexNormals(const Mesh& mesh) {
-    std::vector<dvec3> sum(mesh.positions.size(), dvec3(0.0));
-    for (const auto& t : mesh.triangles) {
-        const dvec3 a(mesh.positions[t[0]]), b(mesh.positions[t[1]]), c(mesh.positions[t[2]]);
-        const dvec3 n = glm::cross(b - a, c - a);
-        const double length = glm::length(n);
-        if (length == 0.0) continue;
-        for (std::uint32_t v : t) sum[v] += n / length;
-    }
-    std::vector<vec3> normals(sum.size(), vec3(0.0f));
-    for (std::size_t v = 0; v < sum.size(); ++v)
-        if (glm::length(sum[v]) > 0.0) normals[v] = vec3(glm::normalize(sum[v]));
-    return normals;
 }
 
 template <glm::length_t L>
@@ -85,11 +67,12 @@ void appendBlend(std::vector<glm::vec<L, float>>& values, const std::array<std::
 // the uncut mesh) so that the cuts do not change the shading.
 std::shared_ptr<Mesh> sliverMesh(const Mesh& mesh, double degrees) {
     auto cut = std::make_shared<Mesh>(mesh);
-    if (cut->normals.empty()) cut->normals = vertexNormals(mesh);
+    // Model-space vertex normals as the normals stage makes them.
+    if (cut->normals.empty()) cut->normals = drawNormals(mesh, mesh.positions, dmat3(1.0)).vertex;
     for (vec3& n : cut->normals) n = glm::length(n) > 0.0f ? glm::normalize(n) : n;
     cut->triangles.clear();
     cut->triangleLines.clear();
-    const double slope = std::tan(degrees * kPi / 180.0);
+    const double slope = std::tan(glm::radians(degrees));
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
         auto abc = mesh.triangles[i];
         const int line = mesh.triangleLines.empty() ? 0 : mesh.triangleLines[i];
@@ -147,7 +130,7 @@ void forEachWorldTriangle(const Scene& scene, F&& f) {
 
 // The first light moved to `height` x the scene's size above the middle of the triangle
 // nearest the eye (in front of it), on the side the eye sees.
-Result<Scene> lightOnSurface(Scene scene, double height) {
+Result<Scene> withLightAboveSurface(Scene scene, double height) {
     if (scene.lights.empty())
         return makeError(ErrorCode::Unsupported, {}, "the scene has no light to move"_msg);
     const CourseCamera& camera = *scene.camera;
@@ -234,7 +217,7 @@ Result<StiffScene> stiffenScene(const Scene& scene, StiffnessAxis axis, double v
             tiltUpHint(*s.camera, value);
             break;
         case StiffnessAxis::LightOnSurface: {
-            auto lit = lightOnSurface(std::move(s), value);
+            auto lit = withLightAboveSurface(std::move(s), value);
             if (!lit) return lit.error();
             stiff.scene = std::move(lit.value());
             break;
@@ -244,6 +227,10 @@ Result<StiffScene> stiffenScene(const Scene& scene, StiffnessAxis axis, double v
 }
 
 namespace {
+
+const std::vector<double>& sweptValues(StiffnessAxis axis, const StabilityOptions& options) {
+    return options.values.empty() ? axisInfo(axis).values : options.values;
+}
 
 struct PointContext {
     const StabilityOptions& options;
@@ -310,14 +297,14 @@ void measurePoint(const PointContext& context, StiffnessAxis axis, double value,
     }
     AccuracyOptions rowOptions;
     rowOptions.repeats = options.repeats;
-    rowOptions.keepImages = options.withDouble;
     StabilityPoint inFloat = pointAt(axis, value, floatRow(mode, *frame, reference, rowOptions));
     if (!options.withDouble) return context.report.points.push_back(std::move(inFloat));
+    rowOptions.keepImages = true;  // the double image, to set beside the frame's own
     StabilityPoint inDouble =
         pointAt(axis, value, doubleRow(mode, *frame, reference, rowOptions));
-    compareFloatWithDouble(inFloat, *inFloat.row.image, *inDouble.row.image);
-    for (StabilityPoint* point : {&inFloat, &inDouble}) point->row.image.reset();
-    for (StabilityPoint* point : {&inFloat, &inDouble}) point->row.reference.reset();
+    compareFloatWithDouble(inFloat, frame->sampled, *inDouble.row.image);
+    inDouble.row.image.reset();
+    inDouble.row.reference.reset();
     context.report.points.push_back(std::move(inFloat));
     context.report.points.push_back(std::move(inDouble));
 }
@@ -331,9 +318,14 @@ Result<StabilityReport> measureStability(const Scene& scene, const StabilityOpti
     std::vector<StiffnessAxis> axes = options.axes;
     if (axes.empty())
         for (const StiffnessAxisInfo& info : stiffnessAxes()) axes.push_back(info.axis);
-    // The original scene's references, one per rule set, for the axes that keep its picture.
+    // The original scene's references, one per rule set, for the axes that keep its picture
+    // (made only when such an axis is swept).
+    const bool movable = looksTheSameWhenMoved(scene);
+    const bool keepsPicture =
+        movable && std::any_of(axes.begin(), axes.end(),
+                               [](StiffnessAxis axis) { return axisInfo(axis).invariant; });
     std::vector<std::shared_ptr<const ReferenceImage>> original;
-    for (RuleSet rules : options.rules) {
+    for (RuleSet rules : keepsPicture ? options.rules : std::vector<RuleSet>{}) {
         const auto modeScene = sceneForMode(scene, {options.shading, rules, 1});
         auto frame = renderTimed(modeScene, 1, 1, 0, options.threads);
         if (!frame) return frame.error();
@@ -343,15 +335,12 @@ Result<StabilityReport> measureStability(const Scene& scene, const StabilityOpti
     }
     int total = 0, done = 0;
     for (StiffnessAxis axis : axes)
-        total += static_cast<int>(
-            (options.values.empty() ? axisInfo(axis).values.size() : options.values.size()) *
-            options.rules.size());
+        total += static_cast<int>(sweptValues(axis, options).size() * options.rules.size());
     StabilityReport report;
     const PointContext context{options, original, report};
-    const bool movable = looksTheSameWhenMoved(scene);
     for (StiffnessAxis axis : axes) {
         const StiffnessAxisInfo& info = axisInfo(axis);
-        for (double value : options.values.empty() ? info.values : options.values) {
+        for (double value : sweptValues(axis, options)) {
             const auto stiff = stiffenScene(scene, axis, value);
             for (std::size_t r = 0; r < options.rules.size(); ++r) {
                 if (options.cancel && options.cancel->load())

@@ -41,14 +41,13 @@ void warnOfLightsOnSurfaces(FrameTrace& trace, const std::shared_ptr<const Scene
     }
     const Scene& scene = *scenePtr;
     Diagnostics found;
-    for (std::size_t i = 0; i < trace.view->lights.size(); ++i)
-        if (const auto near = lightOnSurface(scene, *trace.view, i))
-            found.warn(
-                i < scene.lights.size() ? scene.lights[i].where : SourceLocation{scene.name, 0, 0},
-                "light %1 is %2 above triangle %3 of %4, nearer than float can resolve points "
-                "there (%5): the pixels under it may be lit from the wrong side"_msg(
-                    i + 1, formatNumber(near->height), near->triangle + 1,
-                    scene.draws[near->draw].name, formatNumber(near->limit)));
+    for (const LightOnSurface& near : lightsOnSurfaces(scene, *trace.view))
+        found.warn(near.light < scene.lights.size() ? scene.lights[near.light].where
+                                                    : SourceLocation{scene.name, 0, 0},
+                   "light %1 is %2 above triangle %3 of %4, nearer than float can resolve "
+                   "points there (%5): the pixels under it may be lit from the wrong side"_msg(
+                       near.light + 1, formatNumber(near.height), near.triangle + 1,
+                       scene.draws[near.draw].name, formatNumber(near.limit)));
     trace.diagnostics.append(found);
     if (context) {
         context->lightsChecked = scenePtr;

@@ -52,7 +52,7 @@ struct RenderOptions {
 struct RenderContext {
     std::shared_ptr<DepthTest> depth;
     std::shared_ptr<Shading> shading;
-    // The scene whose lights were last checked against its surfaces (lightOnSurface) and the
+    // The scene whose lights were last checked against its surfaces (lightsOnSurfaces) and the
     // warnings found: the same scene rendered again is not checked again.
     std::weak_ptr<const Scene> lightsChecked;
     Diagnostics lightWarnings;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "animation_matrix.h"
 
@@ -25,7 +26,6 @@ ViewTransform ViewTransformStage::run(const Scene& scene, const CameraBasis& bas
             for (const dvec4& pModel : draw.mesh->positions) {
                 const dvec4 p = viewFromModel * pModel;
                 (p.z > 0.0 ? out.verticesInFront : out.verticesBehind) += 1;
-
                 pView.push_back(p);
             }
         }
@@ -51,17 +51,11 @@ ViewTransform ViewTransformStage::run(const Scene& scene, const CameraBasis& bas
     return out;
 }
 
-std::optional<LightOnSurface> lightOnSurface(const Scene& scene, const ViewTransform& view,
-                                             std::size_t light) {
-    const dvec4 pLight = view.lights[light].pView;
-    if (pLight.w == 0.0) return std::nullopt;  // a direction
-    const dvec3 l = dvec3(pLight) / pLight.w;
-    const double limit = kLightSurfaceRatio * glm::length(l);
-    dvec3 low(std::numeric_limits<double>::infinity()), high(-low);
-    for (const auto& pView : view.pView)
-        for (const dvec4& p : pView) low = glm::min(low, dvec3(p)), high = glm::max(high, dvec3(p));
-    if (glm::any(glm::lessThan(l, low - limit)) || glm::any(glm::greaterThan(l, high + limit)))
-        return std::nullopt;  // outside the box around every vertex: the common case
+namespace {
+
+// The triangle nearest the point l of those it lies above (its foot inside them), within limit.
+std::optional<LightOnSurface> nearestTriangleBelow(const Scene& scene, const ViewTransform& view,
+                                                   const dvec3& l, double limit) {
     std::optional<LightOnSurface> nearest;
     for (std::size_t d = 0; d < scene.draws.size(); ++d) {
         if (!scene.draws[d].mesh) continue;
@@ -82,10 +76,34 @@ std::optional<LightOnSurface> lightOnSurface(const Scene& scene, const ViewTrans
             const bool inside = glm::dot(glm::cross(b - a, foot - a), n) >= 0.0 &&
                                 glm::dot(glm::cross(c - b, foot - b), n) >= 0.0 &&
                                 glm::dot(glm::cross(a - c, foot - c), n) >= 0.0;
-            if (inside) nearest = LightOnSurface{d, t, height, limit};
+            if (inside) nearest = LightOnSurface{0, d, t, height, limit};
         }
     }
     return nearest;
+}
+
+}  // namespace
+
+std::vector<LightOnSurface> lightsOnSurfaces(const Scene& scene, const ViewTransform& view) {
+    std::vector<LightOnSurface> found;
+    // The box around every vertex, once for all lights: a light outside it (the common case)
+    // is near no triangle.
+    dvec3 low(std::numeric_limits<double>::infinity()), high(-low);
+    for (const auto& pView : view.pView)
+        for (const dvec4& p : pView) low = glm::min(low, dvec3(p)), high = glm::max(high, dvec3(p));
+    for (std::size_t i = 0; i < view.lights.size(); ++i) {
+        const dvec4 pLight = view.lights[i].pView;
+        if (pLight.w == 0.0) continue;  // a direction
+        const dvec3 l = dvec3(pLight) / pLight.w;
+        const double limit = kLightSurfaceRatio * glm::length(l);
+        if (glm::any(glm::lessThan(l, low - limit)) || glm::any(glm::greaterThan(l, high + limit)))
+            continue;
+        if (auto nearest = nearestTriangleBelow(scene, view, l, limit)) {
+            nearest->light = i;
+            found.push_back(*nearest);
+        }
+    }
+    return found;
 }
 
 }  // namespace rl

@@ -5,7 +5,6 @@
 // animation is first moved by its M at the scene's time (animation.h, seed 002).
 #pragma once
 
-#include <optional>
 #include <vector>
 
 #include "animation_matrix.h"
@@ -47,13 +46,13 @@ struct ViewTransform {
 inline constexpr double kLightSurfaceRatio = 1e-5;
 
 struct LightOnSurface {
+    std::size_t light = 0;  // in ViewTransform::lights
     std::size_t draw = 0, triangle = 0;
     double height = 0.0;  // from the triangle's plane, above the triangle itself
     double limit = 0.0;   // kLightSurfaceRatio times the light's distance from the eye
 };
-// The triangle the positional light `light` is nearest, when it is within the limit of it.
-std::optional<LightOnSurface> lightOnSurface(const Scene& scene, const ViewTransform& view,
-                                             std::size_t light);
+// Each positional light within its limit of a triangle it lies above, with the nearest such.
+std::vector<LightOnSurface> lightsOnSurfaces(const Scene& scene, const ViewTransform& view);
 
 class ViewTransformStage {
 public:
