@@ -81,29 +81,32 @@ QString scientific(double v) {
 QString axisDescription(const rl::StiffnessAxisInfo& info) {
     QString text;
     switch (info.axis) {
-    case rl::StiffnessAxis::Offset:
-        text = AccuracyPanel::tr("The scene, camera and lights moved %1 to %2 units from the "
-                                 "origin");
-        break;
-    case rl::StiffnessAxis::Scale:
-        text = AccuracyPanel::tr("Everything scaled by %1 to %2 about the origin");
-        break;
-    case rl::StiffnessAxis::Distance:
-        text = AccuracyPanel::tr("Everything scaled by %1 to %2 about the eye: the object nearer");
-        break;
-    case rl::StiffnessAxis::Sliver:
-        text = AccuracyPanel::tr("Each triangle cut around a sliver of %1 to %2 degrees");
-        break;
-    case rl::StiffnessAxis::Shininess:
-        text = AccuracyPanel::tr("Every material's shininess n set to %1 to %2");
-        break;
-    case rl::StiffnessAxis::Grazing:
-        text = AccuracyPanel::tr("The camera's V %1 to %2 degrees from N");
-        break;
-    case rl::StiffnessAxis::LightOnSurface:
-        text = AccuracyPanel::tr("The first light %1 to %2 times the scene's size above its "
-                                 "surface");
-        break;
+        case rl::StiffnessAxis::Offset:
+            text = AccuracyPanel::tr(
+                "The scene, camera and lights moved %1 to %2 units from the "
+                "origin");
+            break;
+        case rl::StiffnessAxis::Scale:
+            text = AccuracyPanel::tr("Everything scaled by %1 to %2 about the origin");
+            break;
+        case rl::StiffnessAxis::Distance:
+            text =
+                AccuracyPanel::tr("Everything scaled by %1 to %2 about the eye: the object nearer");
+            break;
+        case rl::StiffnessAxis::Sliver:
+            text = AccuracyPanel::tr("Each triangle cut around a sliver of %1 to %2 degrees");
+            break;
+        case rl::StiffnessAxis::Shininess:
+            text = AccuracyPanel::tr("Every material's shininess n set to %1 to %2");
+            break;
+        case rl::StiffnessAxis::Grazing:
+            text = AccuracyPanel::tr("The camera's V %1 to %2 degrees from N");
+            break;
+        case rl::StiffnessAxis::LightOnSurface:
+            text = AccuracyPanel::tr(
+                "The first light %1 to %2 times the scene's size above its "
+                "surface");
+            break;
     }
     return text.arg(scientific(info.values.front()), scientific(info.values.back()));
 }
@@ -134,7 +137,8 @@ QString summaryOf(const rl::StabilityReport& report) {
             }
             auto rules = std::find_if(rmse.begin(), rmse.end(),
                                       [&](const auto& r) { return r.first == p.row.mode.rules; });
-            if (rules == rmse.end()) rules = rmse.insert(rmse.end(), {p.row.mode.rules, {0.0, 0.0}});
+            if (rules == rmse.end())
+                rules = rmse.insert(rmse.end(), {p.row.mode.rules, {0.0, 0.0}});
             double& worst = rules->second[p.row.precision == "double" ? 1 : 0];
             if (std::isfinite(p.row.metrics.rmse)) worst = std::max(worst, p.row.metrics.rmse);
         }
@@ -145,8 +149,9 @@ QString summaryOf(const rl::StabilityReport& report) {
                                  scientific(worst[0] * 255.0), scientific(worst[1] * 255.0));
         QString line = QString::fromLatin1(rl::axisInfo(*axis).name) + QStringLiteral(": ");
         if (worstDiff >= 0.0)
-            line += AccuracyPanel::tr("float and double differ by up to %1 byte steps (at %2); "
-                                      "largest RMSE, float / double: %3.")
+            line += AccuracyPanel::tr(
+                        "float and double differ by up to %1 byte steps (at %2); "
+                        "largest RMSE, float / double: %3.")
                         .arg(scientific(worstDiff * 255.0), scientific(worstAt),
                              perRules.join(QStringLiteral(", ")));
         if (firstRefused) {
@@ -325,7 +330,8 @@ void AccuracyPanel::setScene(std::shared_ptr<const rl::Scene> scene) {
     m_plotLabel->clear();
     m_heatLabel->clear();
     m_pick->clear();
-    if (hadResults || m_running || m_sweeping) m_status->setText(tr("The scene changed: measure again."));
+    if (hadResults || m_running || m_sweeping)
+        m_status->setText(tr("The scene changed: measure again."));
 }
 
 void AccuracyPanel::measure() {
@@ -350,11 +356,10 @@ void AccuracyPanel::measure() {
     m_status->setText(tr("Measuring %n mode(s) against the exact reference...", nullptr,
                          int(options.modes.size())));
     // The cancel flag lives as long as the worker holds its pointer.
-    m_watcher.setFuture(
-        QtConcurrent::run([generation, scene = m_scene, options, flag = m_cancel] {
-            return runJob<Outcome>(generation, *flag,
-                                   [&] { return rl::measureAccuracy(*scene, options); });
-        }));
+    m_watcher.setFuture(QtConcurrent::run([generation, scene = m_scene, options, flag = m_cancel] {
+        return runJob<Outcome>(generation, *flag,
+                               [&] { return rl::measureAccuracy(*scene, options); });
+    }));
 }
 
 void AccuracyPanel::cancel() {
@@ -371,9 +376,8 @@ void AccuracyPanel::onFinished() {
         return;  // for a scene no longer shown, or a measurement replaced
     }
     if (!outcome.report) {
-        m_status->setText(outcome.cancelled
-                              ? tr("Cancelled.")
-                              : tr("The measurement failed: %1").arg(outcome.error));
+        m_status->setText(outcome.cancelled ? tr("Cancelled.")
+                                            : tr("The measurement failed: %1").arg(outcome.error));
         emit finished();
         return;
     }
@@ -475,21 +479,20 @@ void AccuracyPanel::onSweepFinished() {
         return;  // for a scene no longer shown, or a sweep replaced
     }
     if (!outcome.report) {
-        m_status->setText(outcome.cancelled
-                              ? tr("Sweep cancelled.")
-                              : tr("The sweep failed: %1").arg(outcome.error));
+        m_status->setText(outcome.cancelled ? tr("Sweep cancelled.")
+                                            : tr("The sweep failed: %1").arg(outcome.error));
         emit sweepFinished();
         return;
     }
     m_stability = outcome.report;
-    m_stabilityPlot = rasterlab::stabilityPlot(
-        *m_stability,
-        tr("Error against stiffness: %1, %2x%3, %4 triangles")
-            .arg(QString::fromStdString(m_scene->name))
-            .arg(m_scene->width)
-            .arg(m_scene->height)
-            .arg(m_scene->triangleCount()),
-        stabilityPlotSize(*m_stability));
+    m_stabilityPlot =
+        rasterlab::stabilityPlot(*m_stability,
+                                 tr("Error against stiffness: %1, %2x%3, %4 triangles")
+                                     .arg(QString::fromStdString(m_scene->name))
+                                     .arg(m_scene->width)
+                                     .arg(m_scene->height)
+                                     .arg(m_scene->triangleCount()),
+                                 stabilityPlotSize(*m_stability));
     m_status->setText(tr("%1 at %2x%3: %4 points in %5 s.")
                           .arg(QString::fromStdString(m_scene->name))
                           .arg(m_scene->width)

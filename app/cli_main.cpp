@@ -19,10 +19,11 @@
 
 int main(int argc, char* argv[]) {
     rl::keepFrameMemory();
-    // `accuracy` and `stability` draw their plots and heat maps with text, which needs a GUI application: on the
-    // offscreen platform unless one is asked for, so that no display is needed.
+    // `accuracy` and `stability` draw their plots and heat maps with text, which needs a GUI
+    // application: on the offscreen platform unless one is asked for, so that no display is needed.
     std::unique_ptr<QCoreApplication> app;
-    if (argc > 1 && (std::strcmp(argv[1], "accuracy") == 0 || std::strcmp(argv[1], "stability") == 0)) {
+    if (argc > 1 &&
+        (std::strcmp(argv[1], "accuracy") == 0 || std::strcmp(argv[1], "stability") == 0)) {
         if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
             qputenv("QT_QPA_PLATFORM", QByteArrayLiteral("offscreen"));
         // Without a session (a terminal over ssh, CI) Qt would warn that it has no runtime

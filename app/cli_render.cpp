@@ -286,9 +286,11 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err) 
                   parser.value(normalsOutput), out, err, lit("normals")))
         return ExitBadInput;
 
-    out << "  " << QString::fromStdString(rl::course_io::trianglesText(scene->triangleCount()).english())
-        << ", " << rl::shadingModelName(settings.shading) << " shading, " << trace->depth->coveredPixels()
-        << " pixels covered, " << QString::number(trace->totalMilliseconds, 'f', 1) << " ms\n";
+    out << "  "
+        << QString::fromStdString(rl::course_io::trianglesText(scene->triangleCount()).english())
+        << ", " << rl::shadingModelName(settings.shading) << " shading, "
+        << trace->depth->coveredPixels() << " pixels covered, "
+        << QString::number(trace->totalMilliseconds, 'f', 1) << " ms\n";
     if (settings.shading == rl::ShadingModel::Painter) {
         // One more render, with the z-buffer, to show what the order got wrong (the painter's
         // is this one).

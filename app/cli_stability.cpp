@@ -39,7 +39,8 @@ void printJson(const rl::StabilityReport& report, QTextStream& out) {
             out << ", \"error\": \"" << message << "\"}";
         } else {
             out << ", \"ms\": " << jsonNumber(p.row.milliseconds, 3)
-                << ", \"rmse\": " << jsonNumber(m.rmse, 9) << ", \"max_error\": " << jsonNumber(m.maxError, 9)
+                << ", \"rmse\": " << jsonNumber(m.rmse, 9)
+                << ", \"max_error\": " << jsonNumber(m.maxError, 9)
                 << ", \"coverage_mismatch\": " << jsonNumber(m.coverageMismatchShare(), 6)
                 << ", \"depth_error_mean\": " << jsonNumber(m.depthMeanRelative, 12)
                 << ", \"depth_error_max\": " << jsonNumber(m.depthMaxRelative, 12)
@@ -95,8 +96,7 @@ void printTable(const rl::StabilityReport& report, const rl::Scene& scene,
         out << jsonNumber(p.row.milliseconds, 2) << " | " << scientific(m.rmse * 255.0) << " | "
             << scientific(m.maxError * 255.0) << " | "
             << jsonNumber(100.0 * m.coverageMismatchShare(), 3) << " % | "
-            << (std::isnan(m.depthMaxRelative) ? lit("-") : scientific(m.depthMaxRelative))
-            << " | "
+            << (std::isnan(m.depthMaxRelative) ? lit("-") : scientific(m.depthMaxRelative)) << " | "
             << (std::isnan(p.floatDoubleMax) ? lit("-")
                                              : scientific(p.floatDoubleMax * 255.0) + lit(" / ") +
                                                    scientific(p.floatDoubleMean * 255.0))
@@ -153,8 +153,8 @@ int runStability(const QStringList& arguments, QTextStream& out, QTextStream& er
                                      lit("Frames timed per point; the median is reported "
                                          "(default 3)."),
                                      lit("N"), lit("3"));
-    const QCommandLineOption threads(lit("threads"),
-                                     lit("Threads to render with (default: every core)."), lit("N"));
+    const QCommandLineOption threads(
+        lit("threads"), lit("Threads to render with (default: every core)."), lit("N"));
     parser.addOption(help);
     sceneOptions.addTo(parser);
     parser.addOptions({sceneName, axesOption, format, plot, repeats, threads});

@@ -1,6 +1,5 @@
 #include "main_window.h"
 
-
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
@@ -349,8 +348,8 @@ void MainWindow::createDocks() {
     // A student's image against ours (File > Compare with Image...): hidden until then, and
     // beside the geometry views, the taller of the two groups on the right.
     m_compare = new ComparePanel(m_inspection);
-    m_compareDock = stageDock(tr("Compare"), "compareDock", m_compare,
-                              tr("Compare with their image"));
+    m_compareDock =
+        stageDock(tr("Compare"), "compareDock", m_compare, tr("Compare with their image"));
     tabifyDockWidget(cameraDock, m_compareDock);
     m_compareDock->hide();
     cameraDock->raise();
@@ -1008,11 +1007,10 @@ bool MainWindow::compareWithImage(const QString& path) {
     }
     m_compareDock->show();
     m_compareDock->raise();
-    statusBar()->showMessage(
-        tr("Compared %1 with our render: %n pixel(s) differ", "",
-           int(m_compare->comparison()->differing))
-            .arg(QFileInfo(path).fileName()),
-        8000);
+    statusBar()->showMessage(tr("Compared %1 with our render: %n pixel(s) differ", "",
+                                int(m_compare->comparison()->differing))
+                                 .arg(QFileInfo(path).fileName()),
+                             8000);
     return true;
 }
 
@@ -1022,11 +1020,10 @@ void MainWindow::about() {
 
 QString MainWindow::aboutText() {
     const QString copyright = QDir(docDir()).filePath(QStringLiteral("copyright"));
-    const QString licence =
-        QFileInfo(copyright).isFile()
-            ? tr("Released under the MIT License, whose text is in %1.")
-                  .arg(QDir::toNativeSeparators(copyright).toHtmlEscaped())
-            : tr("Released under the MIT License.");
+    const QString licence = QFileInfo(copyright).isFile()
+                                ? tr("Released under the MIT License, whose text is in %1.")
+                                      .arg(QDir::toNativeSeparators(copyright).toHtmlEscaped())
+                                : tr("Released under the MIT License.");
     return tr("<h3>RasterLab %1</h3><p>The classic software rasterization pipeline, "
               "stage by stage: camera basis, view transform, normals, projection, "
               "scan conversion, depth test and shading.</p>")

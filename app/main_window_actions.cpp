@@ -88,8 +88,9 @@ void MainWindow::createFileMenu() {
     QAction* compare =
         file->addAction(tr("Compare with &Image..."), this, &MainWindow::compareDialog);
     compare->setObjectName(QStringLiteral("compareImageAction"));
-    compare->setToolTip(tr("A PNG of your own renderer against this scene's render, with the "
-                           "likely mistakes"));
+    compare->setToolTip(
+        tr("A PNG of your own renderer against this scene's render, with the "
+           "likely mistakes"));
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);

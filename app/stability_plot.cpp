@@ -69,8 +69,8 @@ void drawFrame(QPainter& p, const Panel& panel, const QString& title, const QStr
     }
     for (double d = panel.y0; d <= panel.y1; d += 2) {
         const double y = panel.mapY(std::pow(10.0, d));
-        p.drawText(QRectF(panel.rect.left() - 48, y - 8, 44, 16),
-                   Qt::AlignRight | Qt::AlignVCenter, decadeLabel(d));
+        p.drawText(QRectF(panel.rect.left() - 48, y - 8, 44, 16), Qt::AlignRight | Qt::AlignVCenter,
+                   decadeLabel(d));
     }
     p.drawText(QRectF(panel.rect.left(), panel.rect.bottom() + 19, panel.rect.width(), 16),
                Qt::AlignCenter, xLabel);
@@ -152,7 +152,8 @@ void drawTimePanel(QPainter& p, const QRectF& rect, const rl::StabilityReport& r
     if (hi == 0) lo = 1, hi = 10;
     Panel panel{rect, 0, 0, std::log10(kFloor), std::log10(kCeiling), false};
     decades(lo, hi, panel.x0, panel.x1);
-    drawFrame(p, panel, QCoreApplication::translate("StabilityPlot", "every point: error against time"),
+    drawFrame(p, panel,
+              QCoreApplication::translate("StabilityPlot", "every point: error against time"),
               QCoreApplication::translate("StabilityPlot", "time per frame (ms, log scale)"));
     for (const rl::StabilityPoint& point : report.points) {
         if (point.error) continue;
@@ -175,8 +176,8 @@ void drawLegend(QPainter& p, QPointF at) {
             p.setPen(pen);
             p.drawLine(QPointF(x, at.y()), QPointF(x + 30, at.y()));
             p.setPen(Qt::black);
-            const QString label =
-                QString::fromLatin1(rl::ruleSetName(rules)) + QLatin1Char(' ') + translated(precision);
+            const QString label = QString::fromLatin1(rl::ruleSetName(rules)) + QLatin1Char(' ') +
+                                  translated(precision);
             p.drawText(QPointF(x + 36, at.y() + 5), label);
             x += 60 + p.fontMetrics().horizontalAdvance(label);
         }
@@ -185,8 +186,8 @@ void drawLegend(QPainter& p, QPointF at) {
     p.setPen(dotted);
     p.drawLine(QPointF(x, at.y()), QPointF(x + 30, at.y()));
     p.setPen(Qt::black);
-    const QString floatDouble = QCoreApplication::translate(
-        "StabilityPlot", "float against double, largest difference");
+    const QString floatDouble =
+        QCoreApplication::translate("StabilityPlot", "float against double, largest difference");
     p.drawText(QPointF(x + 36, at.y() + 5), floatDouble);
     x += 60 + p.fontMetrics().horizontalAdvance(floatDouble);
     p.drawText(QPointF(16, at.y() + 24),
@@ -256,7 +257,11 @@ QImage stabilityPlot(const rl::StabilityReport& report, const QString& title, QS
         }
         const rl::StiffnessAxisInfo& info = rl::axisInfo(axes[i]);
         const auto [lo, hi] = std::minmax_element(info.values.begin(), info.values.end());
-        Panel panel{rect, 0, 0, std::log10(kFloor), std::log10(kCeiling),
+        Panel panel{rect,
+                    0,
+                    0,
+                    std::log10(kFloor),
+                    std::log10(kCeiling),
                     info.values.front() > info.values.back()};
         decades(*lo, *hi, panel.x0, panel.x1);
         drawFrame(p, panel, QString::fromLatin1(info.name),

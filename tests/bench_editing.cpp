@@ -70,7 +70,8 @@ int main(int argc, char* argv[]) {
         const QString config = screens.filePath(QStringLiteral("screens.json"));
         QFile file(config);
         if (!file.open(QIODevice::WriteOnly)) return 1;
-        file.write(R"({"screens": [{"name": "1080p", "x": 0, "y": 0, "width": 1920, "height": 1080}]})");
+        file.write(
+            R"({"screens": [{"name": "1080p", "x": 0, "y": 0, "width": 1920, "height": 1080}]})");
         file.close();
         qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
     }
@@ -159,10 +160,11 @@ int main(int argc, char* argv[]) {
                 "%.1f ms, p90 %.1f ms, worst %.1f ms\n",
                 ms.size(), behind, bench::percentile(ms, 0.5), bench::percentile(ms, 0.9),
                 *std::max_element(ms.begin(), ms.end()));
-    std::printf("of which the new frame arrived after median %.1f ms, p90 %.1f ms (its render "
-                "median %.1f ms)\n",
-                bench::percentile(arrived, 0.5), bench::percentile(arrived, 0.9),
-                bench::percentile(render, 0.5));
+    std::printf(
+        "of which the new frame arrived after median %.1f ms, p90 %.1f ms (its render "
+        "median %.1f ms)\n",
+        bench::percentile(arrived, 0.5), bench::percentile(arrived, 0.9),
+        bench::percentile(render, 0.5));
     std::printf("after the last move, the docks and the replay were ready %.1f ms later\n",
                 settleMs);
     return 0;

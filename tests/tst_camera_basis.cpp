@@ -192,7 +192,8 @@ private slots:
         for (int i = 0; i < 200; ++i) {
             // N along a random axis a, V at the angle from it toward a random perpendicular p.
             const dvec3 a = glm::normalize(dvec3(normal(rng), normal(rng), normal(rng)));
-            const dvec3 p = glm::normalize(glm::cross(a, dvec3(normal(rng), normal(rng), normal(rng))));
+            const dvec3 p =
+                glm::normalize(glm::cross(a, dvec3(normal(rng), normal(rng), normal(rng))));
             const double t = glm::radians(degrees);
             CourseCamera c = locatedSeedCamera();
             c.n = 10.0 * a;
@@ -209,10 +210,13 @@ private slots:
                 const double fromAxis = std::min(degrees, 180.0 - degrees);
                 QVERIFY2(text.startsWith(QStringLiteral("camera.cfg:3:1: warning: V is %1 degrees "
                                                         "from the line of N: ")
-                                             .arg(QString::fromStdString(formatNumber(basis->angleNV < 90 ? basis->angleNV : 180.0 - basis->angleNV)))),
+                                             .arg(QString::fromStdString(formatNumber(
+                                                 basis->angleNV < 90 ? basis->angleNV
+                                                                     : 180.0 - basis->angleNV)))),
                          qPrintable(text));
-                QVERIFY(text.endsWith(QStringLiteral(", less than a float's precision; choose "
-                                                     "a V farther from N")));
+                QVERIFY(
+                    text.endsWith(QStringLiteral(", less than a float's precision; choose "
+                                                 "a V farther from N")));
                 QVERIFY(fromAxis < CameraBasisStage::kWarnAngleDegrees);
             }
         }

@@ -48,7 +48,8 @@ private slots:
     // the project's version (CMakeLists.txt).
     void readmeNamesThePackageOfThisVersion() {
         const QDir root(testing::sourceDir());
-        static const QRegularExpression version(QStringLiteral("project\\(RasterLab\\s+VERSION\\s+(\\S+)"));
+        static const QRegularExpression version(
+            QStringLiteral("project\\(RasterLab\\s+VERSION\\s+(\\S+)"));
         const auto project = version.match(read(root.filePath(QStringLiteral("CMakeLists.txt"))));
         QVERIFY(project.hasMatch());
         static const QRegularExpression deb(QStringLiteral("rasterlab_([^_\\s]+)_amd64\\.deb"));

@@ -86,13 +86,19 @@ private slots:
         QCOMPARE(rasterlab::dataDir(bin), prefix.filePath(QStringLiteral("usr/share/rasterlab")));
         QCOMPARE(rasterlab::docDir(bin), doc);
         // No Portuguese guide yet: English for every language.
-        QCOMPARE(rasterlab::userGuide(QStringLiteral("pt_BR"), bin), doc + QStringLiteral("/guide.en.md"));
+        QCOMPARE(rasterlab::userGuide(QStringLiteral("pt_BR"), bin),
+                 doc + QStringLiteral("/guide.en.md"));
         touch(doc + QStringLiteral("/guide.pt_BR.md"));
-        QCOMPARE(rasterlab::userGuide(QStringLiteral("pt_BR"), bin), doc + QStringLiteral("/guide.pt_BR.md"));
-        QCOMPARE(rasterlab::userGuide(QStringLiteral("pt_BR.UTF-8"), bin), doc + QStringLiteral("/guide.pt_BR.md"));
-        QCOMPARE(rasterlab::userGuide(QStringLiteral("pt-PT"), bin), doc + QStringLiteral("/guide.pt_BR.md"));
-        QCOMPARE(rasterlab::userGuide(QStringLiteral("de_DE"), bin), doc + QStringLiteral("/guide.en.md"));
-        QCOMPARE(rasterlab::userGuide(QStringLiteral("en_GB"), bin), doc + QStringLiteral("/guide.en.md"));
+        QCOMPARE(rasterlab::userGuide(QStringLiteral("pt_BR"), bin),
+                 doc + QStringLiteral("/guide.pt_BR.md"));
+        QCOMPARE(rasterlab::userGuide(QStringLiteral("pt_BR.UTF-8"), bin),
+                 doc + QStringLiteral("/guide.pt_BR.md"));
+        QCOMPARE(rasterlab::userGuide(QStringLiteral("pt-PT"), bin),
+                 doc + QStringLiteral("/guide.pt_BR.md"));
+        QCOMPARE(rasterlab::userGuide(QStringLiteral("de_DE"), bin),
+                 doc + QStringLiteral("/guide.en.md"));
+        QCOMPARE(rasterlab::userGuide(QStringLiteral("en_GB"), bin),
+                 doc + QStringLiteral("/guide.en.md"));
 
         // Installed translations are preferred to the embedded ones.
         QVERIFY(QDir().mkpath(prefix.filePath(QStringLiteral("usr/share/rasterlab/translations"))));
@@ -151,13 +157,16 @@ private slots:
     void windowOpensFileArguments() {
         QFETCH(QString, file);
         QFETCH(int, exitCode);
-        const GuiRun run = runGui({QStringLiteral("--quit-after"), QStringLiteral("300"), file}, m_dir.path());
+        const GuiRun run =
+            runGui({QStringLiteral("--quit-after"), QStringLiteral("300"), file}, m_dir.path());
         QVERIFY2(run.exitCode == exitCode,
                  qPrintable(QStringLiteral("exit %1, stderr: %2").arg(run.exitCode).arg(run.err)));
     }
 
     void windowRejectsABadQuitAfter() {
-        QCOMPARE(runGui({QStringLiteral("--quit-after"), QStringLiteral("soon")}, m_dir.path()).exitCode, 2);
+        QCOMPARE(
+            runGui({QStringLiteral("--quit-after"), QStringLiteral("soon")}, m_dir.path()).exitCode,
+            2);
     }
 
     void aboutNamesVersionLicenceAndCourses() {

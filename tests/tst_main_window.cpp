@@ -681,10 +681,10 @@ void TestMainWindow::coveredViewsRefreshWhenRaised() {
     QTRY_VERIFY(painter->visibleRegion().isEmpty());
     const rl::PainterComparison* before = painter->comparison();
     window.setShading(rl::ShadingModel::Flat);
-    QTRY_VERIFY_WITH_TIMEOUT(window.isReadyToStep() && window.currentFrame() &&
-                                 window.currentFrame()->scene->draws.front().shading ==
-                                     rl::ShadingModel::Flat,
-                             kFrameTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        window.isReadyToStep() && window.currentFrame() &&
+            window.currentFrame()->scene->draws.front().shading == rl::ShadingModel::Flat,
+        kFrameTimeoutMs);
     QCOMPARE(painter->comparison(), before);  // not worked out while covered
     painterDock->raise();
     QTRY_VERIFY(painter->comparison() != before);

@@ -79,7 +79,8 @@ private slots:
         // triangle: the nearest middle is that far, and the light is outside the sphere.
         const Mesh& mesh = *scene.draws[0].mesh;
         dvec3 lo(1e300), hi(-1e300);
-        for (const dvec4& p : mesh.positions) lo = glm::min(lo, dvec3(p)), hi = glm::max(hi, dvec3(p));
+        for (const dvec4& p : mesh.positions)
+            lo = glm::min(lo, dvec3(p)), hi = glm::max(hi, dvec3(p));
         const dvec3 light(stiff->scene.lights[0].pWorld);
         double nearest = 1e300;
         for (const auto& t : mesh.triangles) {
@@ -163,10 +164,10 @@ private slots:
         const auto report = sweep(scene, StiffnessAxis::Shininess, {1e4});
         for (double n : {1e4}) {
             const StabilityPoint& p = floatPoint(report, n);
-            QVERIFY2(p.floatDoubleMax * 255.0 < 0.02,
-                     qPrintable(QStringLiteral("n = %1: %2 byte steps")
-                                    .arg(n)
-                                    .arg(p.floatDoubleMax * 255.0)));
+            QVERIFY2(
+                p.floatDoubleMax * 255.0 < 0.02,
+                qPrintable(
+                    QStringLiteral("n = %1: %2 byte steps").arg(n).arg(p.floatDoubleMax * 255.0)));
         }
     }
 

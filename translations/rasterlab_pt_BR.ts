@@ -1865,57 +1865,57 @@
         <translation>esperava um arquivo de aula: um objeto JSON com &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="549"/>
+        <location filename="../app/pipeline_messages.cpp" line="550"/>
         <source>not a lesson file: %1</source>
         <translation>não é um arquivo de aula: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="550"/>
+        <location filename="../app/pipeline_messages.cpp" line="551"/>
         <source>nothing</source>
         <translation>nada</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="551"/>
+        <location filename="../app/pipeline_messages.cpp" line="552"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="552"/>
+        <location filename="../app/pipeline_messages.cpp" line="553"/>
         <source>one of %1</source>
         <translation>um de %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="553"/>
+        <location filename="../app/pipeline_messages.cpp" line="554"/>
         <source>text in quotes</source>
         <translation>um texto entre aspas</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="554"/>
+        <location filename="../app/pipeline_messages.cpp" line="555"/>
         <source>the text &apos;%1&apos;</source>
         <translation>o texto &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="555"/>
+        <location filename="../app/pipeline_messages.cpp" line="556"/>
         <source>true or false</source>
         <translation>true ou false</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="556"/>
+        <location filename="../app/pipeline_messages.cpp" line="557"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>ignorou a chave desconhecida &quot;%1&quot; (as conhecidas aqui: %2)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="591"/>
+        <location filename="../app/pipeline_messages.cpp" line="592"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="597"/>
+        <location filename="../app/pipeline_messages.cpp" line="598"/>
         <source>%1: warning: %2</source>
         <translation>%1: aviso: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="598"/>
+        <location filename="../app/pipeline_messages.cpp" line="599"/>
         <source>%1: note: %2</source>
         <translation>%1: nota: %2</translation>
     </message>
@@ -1923,37 +1923,37 @@
 <context>
     <name>StabilityPlot</name>
     <message>
-        <location filename="../app/stability_plot.cpp" line="155"/>
+        <location filename="../app/stability_plot.cpp" line="156"/>
         <source>every point: error against time</source>
         <translation>todos os pontos: erro contra tempo</translation>
     </message>
     <message>
-        <location filename="../app/stability_plot.cpp" line="156"/>
+        <location filename="../app/stability_plot.cpp" line="157"/>
         <source>time per frame (ms, log scale)</source>
         <translation>tempo por quadro (ms, escala log)</translation>
     </message>
     <message>
-        <location filename="../app/stability_plot.cpp" line="171"/>
+        <location filename="../app/stability_plot.cpp" line="172"/>
         <source>float</source>
         <translation>float</translation>
     </message>
     <message>
-        <location filename="../app/stability_plot.cpp" line="172"/>
+        <location filename="../app/stability_plot.cpp" line="173"/>
         <source>double</source>
         <translation>double</translation>
     </message>
     <message>
-        <location filename="../app/stability_plot.cpp" line="188"/>
+        <location filename="../app/stability_plot.cpp" line="190"/>
         <source>float against double, largest difference</source>
         <translation>float contra double, maior diferença</translation>
     </message>
     <message>
-        <location filename="../app/stability_plot.cpp" line="193"/>
+        <location filename="../app/stability_plot.cpp" line="194"/>
         <source>y: colour error in byte steps (log; RMSE against the exact reference, or the largest float-double difference); x: stiffer to the right; a cross: the scene could not be rendered</source>
         <translation>y: erro de cor em passos de byte (log; RMSE contra a referência exata, ou a maior diferença float-double); x: mais rígido à direita; um x: a cena não pôde ser renderizada</translation>
     </message>
     <message>
-        <location filename="../app/stability_plot.cpp" line="263"/>
+        <location filename="../app/stability_plot.cpp" line="268"/>
         <source>%1 (%2, log scale)</source>
         <translation>%1 (%2, escala log)</translation>
     </message>
@@ -1966,177 +1966,177 @@
         <translation>A cena, a câmera e as luzes deslocadas de %1 a %2 unidades da origem</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="89"/>
+        <location filename="../app/accuracy_panel.cpp" line="90"/>
         <source>Everything scaled by %1 to %2 about the origin</source>
         <translation>Tudo escalado por %1 a %2 em torno da origem</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="92"/>
+        <location filename="../app/accuracy_panel.cpp" line="94"/>
         <source>Everything scaled by %1 to %2 about the eye: the object nearer</source>
         <translation>Tudo escalado por %1 a %2 em torno do olho: o objeto mais perto</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="95"/>
+        <location filename="../app/accuracy_panel.cpp" line="97"/>
         <source>Each triangle cut around a sliver of %1 to %2 degrees</source>
         <translation>Cada triângulo cortado em torno de uma lasca de %1 a %2 graus</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="98"/>
+        <location filename="../app/accuracy_panel.cpp" line="100"/>
         <source>Every material&apos;s shininess n set to %1 to %2</source>
         <translation>O brilho n de cada material posto de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="101"/>
+        <location filename="../app/accuracy_panel.cpp" line="103"/>
         <source>The camera&apos;s V %1 to %2 degrees from N</source>
         <translation>O V da câmera a %1 até %2 graus de N</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="104"/>
+        <location filename="../app/accuracy_panel.cpp" line="106"/>
         <source>The first light %1 to %2 times the scene&apos;s size above its surface</source>
         <translation>A primeira luz a %1 até %2 vezes o tamanho da cena acima da sua superfície</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="148"/>
+        <location filename="../app/accuracy_panel.cpp" line="152"/>
         <source>float and double differ by up to %1 byte steps (at %2); largest RMSE, float / double: %3.</source>
         <translation>float e double diferem em até %1 passos de byte (em %2); maior RMSE, float / double: %3.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="154"/>
+        <location filename="../app/accuracy_panel.cpp" line="159"/>
         <source>%1 of %2 points not rendered (the first at %3): %4</source>
         <translation>%1 de %2 pontos não renderizados (o primeiro em %3): %4</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="172"/>
+        <location filename="../app/accuracy_panel.cpp" line="177"/>
         <source>&amp;Measure</source>
         <translation>&amp;Medir</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="175"/>
+        <location filename="../app/accuracy_panel.cpp" line="180"/>
         <source>Render the scene in every mode and compare each with an exact ray-cast reference</source>
         <translation>Renderiza a cena em cada modo e compara cada um com uma referência exata por lançamento de raios</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="177"/>
+        <location filename="../app/accuracy_panel.cpp" line="182"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="182"/>
+        <location filename="../app/accuracy_panel.cpp" line="187"/>
         <source>1 sample a pixel</source>
         <translation>1 amostra por pixel</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="183"/>
+        <location filename="../app/accuracy_panel.cpp" line="188"/>
         <source>also 2x2 samples</source>
         <translation>também 2x2 amostras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="184"/>
+        <location filename="../app/accuracy_panel.cpp" line="189"/>
         <source>also 4x4 samples</source>
         <translation>também 4x4 amostras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="191"/>
+        <location filename="../app/accuracy_panel.cpp" line="196"/>
         <source>&amp;Stability sweep</source>
         <translation>&amp;Varredura de estabilidade</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="194"/>
+        <location filename="../app/accuracy_panel.cpp" line="199"/>
         <source>Make the scene stiffer step by step and measure float and double under the course and gpu rules against the exact reference at each step</source>
         <translation>Torna a cena mais rígida passo a passo e mede float e double sob as regras course e gpu contra a referência exata a cada passo</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="198"/>
+        <location filename="../app/accuracy_panel.cpp" line="203"/>
         <source>every axis</source>
         <translation>todos os eixos</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="203"/>
+        <location filename="../app/accuracy_panel.cpp" line="208"/>
         <source>The axes of stiffness to sweep</source>
         <translation>Os eixos de rigidez a varrer</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="209"/>
+        <location filename="../app/accuracy_panel.cpp" line="214"/>
         <source>%v of %m points</source>
         <translation>%v de %m pontos</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="213"/>
+        <location filename="../app/accuracy_panel.cpp" line="218"/>
         <source>Measures the error of each mode against an exact reference.</source>
         <translation>Mede o erro de cada modo contra uma referência exata.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="220"/>
+        <location filename="../app/accuracy_panel.cpp" line="225"/>
         <source>Modes</source>
         <translation>Modos</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="221"/>
+        <location filename="../app/accuracy_panel.cpp" line="226"/>
         <source>Stability</source>
         <translation>Estabilidade</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="240"/>
+        <location filename="../app/accuracy_panel.cpp" line="245"/>
         <source>Mode</source>
         <translation>Modo</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="240"/>
+        <location filename="../app/accuracy_panel.cpp" line="245"/>
         <source>Rules</source>
         <translation>Regras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="240"/>
+        <location filename="../app/accuracy_panel.cpp" line="245"/>
         <source>Precision</source>
         <translation>Precisão</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="240"/>
+        <location filename="../app/accuracy_panel.cpp" line="245"/>
         <source>Samples</source>
         <translation>Amostras</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="241"/>
+        <location filename="../app/accuracy_panel.cpp" line="246"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="241"/>
+        <location filename="../app/accuracy_panel.cpp" line="246"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="241"/>
+        <location filename="../app/accuracy_panel.cpp" line="246"/>
         <source>Max error</source>
         <translation>Erro máximo</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="241"/>
+        <location filename="../app/accuracy_panel.cpp" line="246"/>
         <source>Within 1/255</source>
         <translation>Dentro de 1/255</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="242"/>
+        <location filename="../app/accuracy_panel.cpp" line="247"/>
         <source>Errors in byte steps (1/255) over the pixels both images cover</source>
         <translation>Erros em passos de byte (1/255) nos pixels que as duas imagens cobrem</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="266"/>
+        <location filename="../app/accuracy_panel.cpp" line="271"/>
         <source>Click a pixel to compare the mode with the reference there</source>
         <translation>Clique num pixel para comparar ali o modo com a referência</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="295"/>
+        <location filename="../app/accuracy_panel.cpp" line="300"/>
         <source>The sweep makes the scene stiffer along each axis: where a curve leaves the floor, the arithmetic loses accuracy.</source>
         <translation>A varredura torna a cena mais rígida ao longo de cada eixo: onde uma curva sai do piso, a aritmética perde exatidão.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="328"/>
+        <location filename="../app/accuracy_panel.cpp" line="334"/>
         <source>The scene changed: measure again.</source>
         <translation>A cena mudou: meça de novo.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/accuracy_panel.cpp" line="350"/>
+        <location filename="../app/accuracy_panel.cpp" line="356"/>
         <source>Measuring %n mode(s) against the exact reference...</source>
         <translation>
             <numerusform>Medindo %n modo contra a referência exata...</numerusform>
@@ -2144,62 +2144,62 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="375"/>
+        <location filename="../app/accuracy_panel.cpp" line="379"/>
         <source>Cancelled.</source>
         <translation>Cancelado.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="376"/>
+        <location filename="../app/accuracy_panel.cpp" line="380"/>
         <source>The measurement failed: %1</source>
         <translation>A medição falhou: %1</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="382"/>
+        <location filename="../app/accuracy_panel.cpp" line="386"/>
         <source>%1 at %2x%3: %4 modes; the exact reference cast %5 rays in %6 ms.</source>
         <translation>%1 em %2x%3: %4 modos; a referência exata lançou %5 raios em %6 ms.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="409"/>
+        <location filename="../app/accuracy_panel.cpp" line="413"/>
         <source>Error against run time: %1, %2x%3</source>
         <translation>Erro contra tempo de execução: %1, %2x%3</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="453"/>
+        <location filename="../app/accuracy_panel.cpp" line="457"/>
         <source>Sweeping %1 along %2...</source>
         <translation>Varrendo %1 ao longo de %2...</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="479"/>
+        <location filename="../app/accuracy_panel.cpp" line="482"/>
         <source>Sweep cancelled.</source>
         <translation>Varredura cancelada.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="480"/>
+        <location filename="../app/accuracy_panel.cpp" line="483"/>
         <source>The sweep failed: %1</source>
         <translation>A varredura falhou: %1</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="487"/>
+        <location filename="../app/accuracy_panel.cpp" line="490"/>
         <source>Error against stiffness: %1, %2x%3, %4 triangles</source>
         <translation>Erro contra rigidez: %1, %2x%3, %4 triângulos</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="493"/>
+        <location filename="../app/accuracy_panel.cpp" line="496"/>
         <source>%1 at %2x%3: %4 points in %5 s.</source>
         <translation>%1 em %2x%3: %4 pontos em %5 s.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="549"/>
+        <location filename="../app/accuracy_panel.cpp" line="552"/>
         <source>%1 (%2): coverage differs on %3 pixels (%4); the largest error, %5 byte steps, is at (%6, %7). Click the map to compare a pixel.</source>
         <translation>%1 (%2): a cobertura difere em %3 pixels (%4); o maior erro, %5 passos de byte, está em (%6, %7). Clique no mapa para comparar um pixel.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="568"/>
+        <location filename="../app/accuracy_panel.cpp" line="571"/>
         <source>Pixel (%1, %2), %3: mode %4, reference %5, difference %6 (byte steps).</source>
         <translation>Pixel (%1, %2), %3: modo %4, referência %5, diferença %6 (passos de byte).</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="574"/>
+        <location filename="../app/accuracy_panel.cpp" line="577"/>
         <source>Coverage differs: %1 of %2 samples covered by the mode, %3 by the reference.</source>
         <translation>A cobertura difere: %1 de %2 amostras cobertas pelo modo, %3 pela referência.</translation>
     </message>
@@ -3356,32 +3356,32 @@
 <context>
     <name>rasterlab::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="67"/>
+        <location filename="../app/main_window.cpp" line="66"/>
         <source>Open Camera</source>
         <translation>Abrir câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="69"/>
+        <location filename="../app/main_window.cpp" line="68"/>
         <source>Open Lighting</source>
         <translation>Abrir iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="71"/>
+        <location filename="../app/main_window.cpp" line="70"/>
         <source>Open Object</source>
         <translation>Abrir objeto</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="79"/>
+        <location filename="../app/main_window.cpp" line="78"/>
         <source>Camera files (*.cfg *.txt);;All files (*)</source>
         <translation>Arquivos de câmera (*.cfg *.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="81"/>
+        <location filename="../app/main_window.cpp" line="80"/>
         <source>Lighting files (*.txt *.lux);;All files (*)</source>
         <translation>Arquivos de iluminação (*.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="83"/>
+        <location filename="../app/main_window.cpp" line="82"/>
         <source>Objects (*.byu *.txt);;All files (*)</source>
         <translation>Objetos (*.byu *.txt);;Todos os arquivos (*)</translation>
     </message>
@@ -3391,116 +3391,116 @@
         <translation>Detectar pelo arquivo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="92"/>
+        <location filename="../app/main_window.cpp" line="91"/>
         <source>flat</source>
         <translation>flat</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="94"/>
+        <location filename="../app/main_window.cpp" line="93"/>
         <location filename="../app/main_window_export.cpp" line="70"/>
         <source>Gouraud</source>
         <translation>Gouraud</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="96"/>
+        <location filename="../app/main_window.cpp" line="95"/>
         <location filename="../app/main_window_export.cpp" line="70"/>
         <source>Phong</source>
         <translation>Phong</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="98"/>
+        <location filename="../app/main_window.cpp" line="97"/>
         <source>painter&apos;s-algorithm flat</source>
         <translation>flat do algoritmo do pintor</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="107"/>
+        <location filename="../app/main_window.cpp" line="106"/>
         <source>%1 (built in)</source>
         <translation>%1 (embutido)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="115"/>
+        <location filename="../app/main_window.cpp" line="114"/>
         <source>RasterLab</source>
         <translation>RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="171"/>
+        <location filename="../app/main_window.cpp" line="170"/>
         <source>Stopped at a breakpoint: %1</source>
         <translation>Parado num ponto de parada: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="204"/>
+        <location filename="../app/main_window.cpp" line="203"/>
         <location filename="../app/main_window_export.cpp" line="122"/>
         <location filename="../app/main_window_export.cpp" line="159"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="205"/>
+        <location filename="../app/main_window.cpp" line="204"/>
         <source>Stop preparing the stepping of this frame</source>
         <translation>Parar a preparação do passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="209"/>
+        <location filename="../app/main_window.cpp" line="208"/>
         <source>cancelled</source>
         <translation>cancelado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="267"/>
+        <location filename="../app/main_window.cpp" line="266"/>
         <source>Stepping</source>
         <translation>Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="291"/>
+        <location filename="../app/main_window.cpp" line="290"/>
         <source>Edit</source>
         <translation>Edição</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="298"/>
+        <location filename="../app/main_window.cpp" line="297"/>
         <source>Breakpoints</source>
         <translation>Pontos de parada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="304"/>
+        <location filename="../app/main_window.cpp" line="303"/>
         <source>Animation</source>
         <translation>Animação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="323"/>
+        <location filename="../app/main_window.cpp" line="322"/>
         <source>1 Camera basis</source>
         <translation>1 Base da câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="295"/>
+        <location filename="../app/main_window.cpp" line="294"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Inspetor de pixel (iluminação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="330"/>
+        <location filename="../app/main_window.cpp" line="329"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 Coordenadas de vista (vértices)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="332"/>
+        <location filename="../app/main_window.cpp" line="331"/>
         <source>3 Normals</source>
         <translation>3 Normais</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="334"/>
+        <location filename="../app/main_window.cpp" line="333"/>
         <source>4 Projection</source>
         <translation>4 Projeção</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="326"/>
+        <location filename="../app/main_window.cpp" line="325"/>
         <source>5 Scan conversion</source>
         <translation>5 Conversão por varredura</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="340"/>
+        <location filename="../app/main_window.cpp" line="339"/>
         <source>5b Trapezoids</source>
         <translation>5b Trapézios</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="344"/>
+        <location filename="../app/main_window.cpp" line="343"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
     </message>
@@ -3510,42 +3510,42 @@
         <translation>&amp;Arquivo</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="161"/>
+        <location filename="../app/main_window_actions.cpp" line="162"/>
         <source>&amp;Animation Frames...</source>
         <translation>&amp;Quadros da animação...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="297"/>
+        <location filename="../app/main_window_actions.cpp" line="298"/>
         <source>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</source>
         <translation>&amp;Algoritmo do pintor (flat, do mais distante ao mais próximo, sem teste de profundidade)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1051"/>
+        <location filename="../app/main_window.cpp" line="1048"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>avançar, voltar um passo (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1053"/>
+        <location filename="../app/main_window.cpp" line="1050"/>
         <source>Space</source>
         <translation>Barra de espaço</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1053"/>
+        <location filename="../app/main_window.cpp" line="1050"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>reproduzir / pausar (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1059"/>
+        <location filename="../app/main_window.cpp" line="1056"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>soltar o pixel escolhido (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1060"/>
+        <location filename="../app/main_window.cpp" line="1057"/>
         <source>presentation mode on / off</source>
         <translation>ligar / desligar o modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1065"/>
+        <location filename="../app/main_window.cpp" line="1062"/>
         <source>save, undo, redo</source>
         <translation>salvar, desfazer, refazer</translation>
     </message>
@@ -3555,7 +3555,7 @@
         <translation>Abrir &amp;câmera...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="136"/>
+        <location filename="../app/main_window.cpp" line="135"/>
         <source>Draw with the Plain Divide</source>
         <translation>Desenhar com a divisão simples</translation>
     </message>
@@ -3595,72 +3595,72 @@
         <translation>Cena &amp;padrão</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="102"/>
+        <location filename="../app/main_window_actions.cpp" line="103"/>
         <source>&amp;Camera</source>
         <translation>&amp;Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="114"/>
+        <location filename="../app/main_window_actions.cpp" line="115"/>
         <source>&amp;Lighting</source>
         <translation>&amp;Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="130"/>
+        <location filename="../app/main_window_actions.cpp" line="131"/>
         <source>&amp;Export PNG...</source>
         <translation>&amp;Exportar PNG...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="131"/>
+        <location filename="../app/main_window_actions.cpp" line="132"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="133"/>
+        <location filename="../app/main_window_actions.cpp" line="134"/>
         <source>Export &amp;More</source>
         <translation>E&amp;xportar mais</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="136"/>
+        <location filename="../app/main_window_actions.cpp" line="137"/>
         <source>Image as &amp;Displayed...</source>
         <translation>Imagem como &amp;exibida...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="137"/>
+        <location filename="../app/main_window_actions.cpp" line="138"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="138"/>
+        <location filename="../app/main_window_actions.cpp" line="139"/>
         <source>&amp;Colour Buffer at the Cursor...</source>
         <translation>Buffer de &amp;cor no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="140"/>
+        <location filename="../app/main_window_actions.cpp" line="141"/>
         <source>D&amp;epth Buffer at the Cursor...</source>
         <translation>Buffer de pro&amp;fundidade no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="142"/>
+        <location filename="../app/main_window_actions.cpp" line="143"/>
         <source>&amp;Normal Buffer...</source>
         <translation>Buffer de &amp;normais...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="143"/>
+        <location filename="../app/main_window_actions.cpp" line="144"/>
         <source>A &amp;View as Displayed</source>
         <translation>Um &amp;painel como exibido</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="147"/>
+        <location filename="../app/main_window_actions.cpp" line="148"/>
         <source>Export View</source>
         <translation>Exportar painel</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="159"/>
+        <location filename="../app/main_window_actions.cpp" line="160"/>
         <source>&amp;Stepping Sequence...</source>
         <translation>&amp;Sequência de passos...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="94"/>
+        <location filename="../app/main_window_actions.cpp" line="95"/>
         <source>&amp;Quit</source>
         <translation>Sai&amp;r</translation>
     </message>
@@ -3670,287 +3670,287 @@
         <translation>Comparar com &amp;imagem...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="91"/>
+        <location filename="../app/main_window_actions.cpp" line="92"/>
         <source>A PNG of your own renderer against this scene&apos;s render, with the likely mistakes</source>
         <translation>Um PNG do seu próprio renderizador contra a renderização desta cena, com os erros prováveis</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="152"/>
+        <location filename="../app/main_window_actions.cpp" line="153"/>
         <source>Shading Side &amp;by Side...</source>
         <translation>Sombreamentos &amp;lado a lado...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="154"/>
+        <location filename="../app/main_window_actions.cpp" line="155"/>
         <source>Export Shading Side by Side</source>
         <translation>Exportar os sombreamentos lado a lado</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="166"/>
+        <location filename="../app/main_window_actions.cpp" line="167"/>
         <source>&amp;Edit</source>
         <translation>&amp;Editar</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="172"/>
+        <location filename="../app/main_window_actions.cpp" line="173"/>
         <source>&amp;View</source>
         <translation>E&amp;xibir</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="173"/>
+        <location filename="../app/main_window_actions.cpp" line="174"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Ajustar à janela</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="174"/>
+        <location filename="../app/main_window_actions.cpp" line="175"/>
         <source>Ctrl+0</source>
         <translation>Ctrl+0</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="176"/>
+        <location filename="../app/main_window_actions.cpp" line="177"/>
         <source>&amp;Actual Size</source>
         <translation>&amp;Tamanho real</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="177"/>
+        <location filename="../app/main_window_actions.cpp" line="178"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="178"/>
+        <location filename="../app/main_window_actions.cpp" line="179"/>
         <source>Zoom &amp;In</source>
         <translation>A&amp;umentar zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="180"/>
+        <location filename="../app/main_window_actions.cpp" line="181"/>
         <source>Zoom &amp;Out</source>
         <translation>&amp;Diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="187"/>
+        <location filename="../app/main_window_actions.cpp" line="188"/>
         <source>Reset &amp;Layout</source>
         <translation>Restaurar &amp;layout</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="189"/>
+        <location filename="../app/main_window_actions.cpp" line="190"/>
         <source>Fill the &amp;Window with a Panel</source>
         <translation>&amp;Preencher a janela com um painel</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="193"/>
+        <location filename="../app/main_window_actions.cpp" line="194"/>
         <source>The panel with the focus or under the mouse (the image, from the image) over the whole window; again, the layout back</source>
         <translation>O painel com o foco ou sob o mouse (a imagem, a partir da imagem) sobre a janela inteira; de novo, o layout de volta</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="201"/>
+        <location filename="../app/main_window_actions.cpp" line="202"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="206"/>
+        <location filename="../app/main_window_actions.cpp" line="207"/>
         <source>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</source>
         <translation>Texto maior, sobreposições mais grossas, alto contraste; as teclas do passador de slides avançam os passos (F5 ou Esc)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="221"/>
+        <location filename="../app/main_window_actions.cpp" line="222"/>
         <source>The System&apos;s</source>
         <translation>Do sistema</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="240"/>
+        <location filename="../app/main_window_actions.cpp" line="241"/>
         <source>S&amp;tep</source>
         <translation>&amp;Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="260"/>
+        <location filename="../app/main_window_actions.cpp" line="261"/>
         <source>Pick the Pixel Under the &amp;Mouse</source>
         <translation>Escolher o pixel sob o &amp;mouse</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="261"/>
+        <location filename="../app/main_window_actions.cpp" line="262"/>
         <source>Ctrl+G</source>
         <translation>Ctrl+G</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="290"/>
+        <location filename="../app/main_window_actions.cpp" line="291"/>
         <source>&amp;Shading</source>
         <translation>&amp;Sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="294"/>
+        <location filename="../app/main_window_actions.cpp" line="295"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (por pixel)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="295"/>
+        <location filename="../app/main_window_actions.cpp" line="296"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (por vértice)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="296"/>
+        <location filename="../app/main_window_actions.cpp" line="297"/>
         <source>&amp;Flat (per triangle)</source>
         <translation>&amp;Flat (por triângulo)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="338"/>
+        <location filename="../app/main_window_actions.cpp" line="339"/>
         <source>Pro&amp;jection</source>
         <translation>Pro&amp;jeção</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="343"/>
+        <location filename="../app/main_window_actions.cpp" line="344"/>
         <source>&amp;Clip at the Near Plane (nothing behind the eye is divided)</source>
         <translation>&amp;Recortar no plano próximo (nada atrás do olho é dividido)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="345"/>
+        <location filename="../app/main_window_actions.cpp" line="346"/>
         <source>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</source>
         <translation>&amp;Divisão simples, sem recorte (a seed 000 como escrita; o HW2 da seed 001)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="347"/>
+        <location filename="../app/main_window_actions.cpp" line="348"/>
         <source>&amp;Same Side (clip only triangles that cross the eye plane)</source>
         <translation>&amp;Mesmo lado (recortar só os triângulos que cruzam o plano do olho)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="639"/>
+        <location filename="../app/main_window.cpp" line="638"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Todos os triângulos estão atrás da câmera (N aponta para longe do objeto?), então o recorte no plano próximo não deixa nada para desenhar. A fórmula da seed 000 divide por z mesmo assim: desenharia %1 dos %2 triângulos como a reflexão do objeto pelo olho, girada meia volta na tela, e o z-buffer (que guarda o menor z) guardaria o lado mais distante da câmera. A vista lateral da projeção mostra o olho, N e o objeto.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="944"/>
+        <location filename="../app/main_window.cpp" line="943"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1034"/>
+        <location filename="../app/main_window.cpp" line="1031"/>
         <source>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</source>
         <translation>&lt;p&gt;Segue as disciplinas para as quais foi feito: os projetos da disciplina de computação gráfica da UFPE e da UFRPE (sombreamento de Phong com z-buffer, e sua variante com sombreamento flat e o algoritmo do pintor), o trabalho “HW2: 3D Rasterizer”, o pipeline de renderização por quadro de uma disciplina de animação, e os slides da aula do Prof. Jonh Edson R. de Carvalho sobre modelos de iluminação (“Modelos de Iluminação”).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1048"/>
+        <location filename="../app/main_window.cpp" line="1045"/>
         <source>step forward</source>
         <translation>avançar um passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1049"/>
+        <location filename="../app/main_window.cpp" line="1046"/>
         <source>step back</source>
         <translation>voltar um passo</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1052"/>
+        <location filename="../app/main_window.cpp" line="1049"/>
         <source>play / pause</source>
         <translation>reproduzir / pausar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1054"/>
+        <location filename="../app/main_window.cpp" line="1051"/>
         <source>jump to the start / the end of the frame</source>
         <translation>ir ao início / ao fim do quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1055"/>
+        <location filename="../app/main_window.cpp" line="1052"/>
         <source>continue to the next breakpoint</source>
         <translation>continuar até o próximo ponto de parada</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1056"/>
+        <location filename="../app/main_window.cpp" line="1053"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>avançar por etapa, triângulo, linha de varredura, segmento, pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1057"/>
+        <location filename="../app/main_window.cpp" line="1054"/>
         <source>show a stage&apos;s view</source>
         <translation>mostrar o painel de uma etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1058"/>
+        <location filename="../app/main_window.cpp" line="1055"/>
         <source>Click, arrows</source>
         <translation>Clique, setas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1058"/>
+        <location filename="../app/main_window.cpp" line="1055"/>
         <source>pick a pixel, move it by one</source>
         <translation>escolher um pixel, movê-lo de um em um</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1061"/>
+        <location filename="../app/main_window.cpp" line="1058"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, duplo clique no título de um painel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1062"/>
+        <location filename="../app/main_window.cpp" line="1059"/>
         <source>fill the window with the panel (the image, from the image), and back</source>
         <translation>preencher a janela com o painel (a imagem, a partir da imagem), e voltar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1064"/>
+        <location filename="../app/main_window.cpp" line="1061"/>
         <source>open, export the image, export it as displayed</source>
         <translation>abrir, exportar a imagem, exportá-la como exibida</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1067"/>
+        <location filename="../app/main_window.cpp" line="1064"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>ajustar, tamanho real, aumentar zoom, diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1069"/>
+        <location filename="../app/main_window.cpp" line="1066"/>
         <source>Keyboard Shortcuts</source>
         <translation>Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="315"/>
+        <location filename="../app/main_window_actions.cpp" line="316"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Regras de rasterização</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="320"/>
+        <location filename="../app/main_window_actions.cpp" line="321"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Curso (semente 000: vértices em pixels inteiros, interpolação no espaço da tela)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="322"/>
+        <location filename="../app/main_window_actions.cpp" line="323"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>Como uma &amp;GPU (vértices em 1/256 de pixel, centros dos pixels, regra top-left, correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="324"/>
+        <location filename="../app/main_window_actions.cpp" line="325"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (as imagens de referência da semente 001)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="361"/>
+        <location filename="../app/main_window_actions.cpp" line="362"/>
         <source>&amp;Help</source>
         <translation>A&amp;juda</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="367"/>
+        <location filename="../app/main_window_actions.cpp" line="368"/>
         <source>&amp;User Guide</source>
         <translation>&amp;Guia do usuário</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="373"/>
+        <location filename="../app/main_window_actions.cpp" line="374"/>
         <source>The user guide is not installed</source>
         <translation>O guia do usuário não está instalado</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="375"/>
+        <location filename="../app/main_window_actions.cpp" line="376"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="276"/>
+        <location filename="../app/main_window.cpp" line="275"/>
         <source>Messages</source>
         <translation>Mensagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="281"/>
+        <location filename="../app/main_window.cpp" line="280"/>
         <source>Scene</source>
         <translation>Cena</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="301"/>
+        <location filename="../app/main_window.cpp" line="300"/>
         <source>Accuracy</source>
         <translation>Exatidão</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="613"/>
+        <location filename="../app/main_window.cpp" line="612"/>
         <location filename="../app/main_window_export.cpp" line="35"/>
         <location filename="../app/main_window_export.cpp" line="133"/>
         <location filename="../app/main_window_export.cpp" line="175"/>
@@ -3969,18 +3969,18 @@
         <translation>Exportado %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="666"/>
+        <location filename="../app/main_window.cpp" line="665"/>
         <source>rendering...</source>
         <translation>renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="666"/>
+        <location filename="../app/main_window.cpp" line="665"/>
         <source>%1, rendering...</source>
         <translation>%1, renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="664"/>
-        <location filename="../app/main_window.cpp" line="907"/>
+        <location filename="../app/main_window.cpp" line="663"/>
+        <location filename="../app/main_window.cpp" line="906"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -4005,158 +4005,158 @@
         <translation>Ctrl+Shift+B</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="100"/>
+        <location filename="../app/main_window_actions.cpp" line="101"/>
         <source>Course File La&amp;youts</source>
         <translation>&amp;Formatos dos arquivos do curso</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="183"/>
+        <location filename="../app/main_window_actions.cpp" line="184"/>
         <source>Pa&amp;nels</source>
         <translation>&amp;Painéis</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="198"/>
+        <location filename="../app/main_window_actions.cpp" line="199"/>
         <source>I&amp;mage</source>
         <translation>&amp;Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="216"/>
+        <location filename="../app/main_window_actions.cpp" line="217"/>
         <source>Lan&amp;guage</source>
         <translation>Idi&amp;oma</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="249"/>
+        <location filename="../app/main_window_actions.cpp" line="250"/>
         <source>Step B&amp;y</source>
         <translation>Avançar &amp;por</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="251"/>
+        <location filename="../app/main_window_actions.cpp" line="252"/>
         <source>S&amp;tage</source>
         <translation>&amp;Etapa</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="362"/>
+        <location filename="../app/main_window_actions.cpp" line="363"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="379"/>
+        <location filename="../app/main_window.cpp" line="378"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Apresentação: F5 ou Esc sai; Page Down, → e Espaço avançam e reproduzem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="596"/>
+        <location filename="../app/main_window.cpp" line="595"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="674"/>
+        <location filename="../app/main_window.cpp" line="673"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparando o passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="674"/>
+        <location filename="../app/main_window.cpp" line="673"/>
         <source>Rendering</source>
         <translation>Renderizando</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="850"/>
+        <location filename="../app/main_window.cpp" line="849"/>
         <source>Error: %1</source>
         <translation>Erro: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="874"/>
+        <location filename="../app/main_window.cpp" line="873"/>
         <source>Files</source>
         <translation>Arquivos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="877"/>
+        <location filename="../app/main_window.cpp" line="876"/>
         <source>Command file</source>
         <translation>Arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="878"/>
+        <location filename="../app/main_window.cpp" line="877"/>
         <source>Image</source>
         <translation>Imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="880"/>
+        <location filename="../app/main_window.cpp" line="879"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vértices, %2 triângulos em %3 desenhos; %4 x %5 pixels; %6 luzes</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="890"/>
+        <location filename="../app/main_window.cpp" line="889"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="891"/>
+        <location filename="../app/main_window.cpp" line="890"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="892"/>
+        <location filename="../app/main_window.cpp" line="891"/>
         <source>Object</source>
         <translation>Objeto</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="894"/>
+        <location filename="../app/main_window.cpp" line="893"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vértices, %2 triângulos; %3 x %4 pixels, sombreamento %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="261"/>
-        <location filename="../app/main_window.cpp" line="901"/>
+        <location filename="../app/main_window.cpp" line="260"/>
+        <location filename="../app/main_window.cpp" line="900"/>
         <source>Stages</source>
         <translation>Etapas</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="105"/>
+        <location filename="../app/main_window.cpp" line="104"/>
         <source>%1 (the %2 example)</source>
         <translation>%1 (o exemplo %2)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="294"/>
+        <location filename="../app/main_window.cpp" line="293"/>
         <source>7 Pixel inspector</source>
         <translation>7 Inspetor de pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="323"/>
+        <location filename="../app/main_window.cpp" line="322"/>
         <source>1 Camera</source>
         <translation>1 Câmera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="326"/>
+        <location filename="../app/main_window.cpp" line="325"/>
         <source>5 Scan</source>
         <translation>5 Varredura</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="329"/>
+        <location filename="../app/main_window.cpp" line="328"/>
         <source>2 View</source>
         <translation>2 Vista</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="337"/>
+        <location filename="../app/main_window.cpp" line="336"/>
         <source>4b Clipping</source>
         <translation>4b Recorte</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="339"/>
+        <location filename="../app/main_window.cpp" line="338"/>
         <source>4b Near-plane clipping (seed 002)</source>
         <translation>4b Recorte no plano próximo (semente 002)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="342"/>
+        <location filename="../app/main_window.cpp" line="341"/>
         <source>5b Trapezoids: the scan of seed 002</source>
         <translation>5b Trapézios: a varredura da semente 002</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="347"/>
+        <location filename="../app/main_window.cpp" line="346"/>
         <source>Painter</source>
         <translation>Pintor</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="348"/>
+        <location filename="../app/main_window.cpp" line="347"/>
         <source>Painter&apos;s algorithm (seed 004)</source>
         <translation>Algoritmo do pintor (semente 004)</translation>
     </message>
@@ -4166,101 +4166,101 @@
         <translation>Comparar</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="353"/>
+        <location filename="../app/main_window.cpp" line="352"/>
         <source>Compare with their image</source>
         <translation>Comparar com a imagem deles</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="872"/>
+        <location filename="../app/main_window.cpp" line="871"/>
         <source>Lesson: %1</source>
         <translation>Aula: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="908"/>
+        <location filename="../app/main_window.cpp" line="907"/>
         <source>skipped: %1</source>
         <translation>omitida: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="911"/>
+        <location filename="../app/main_window.cpp" line="910"/>
         <source>Counts</source>
         <translation>Contagens</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="912"/>
+        <location filename="../app/main_window.cpp" line="911"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triângulos recortados no plano próximo: %1; atrás da câmera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="915"/>
+        <location filename="../app/main_window.cpp" line="914"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Triângulos de área zero: %1 no espaço de vista, %2 na tela&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="918"/>
+        <location filename="../app/main_window.cpp" line="917"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragmentos testados: %1; escritos: %2; rejeitados: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="922"/>
+        <location filename="../app/main_window.cpp" line="921"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels sombreados: %1; normais voltadas para o observador: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; limitados a 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="946"/>
+        <location filename="../app/main_window.cpp" line="945"/>
         <source>empty (+inf)</source>
         <translation>vazio (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="947"/>
+        <location filename="../app/main_window.cpp" line="946"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   profundidade %6</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="963"/>
+        <location filename="../app/main_window.cpp" line="962"/>
         <source>Open Command File</source>
         <translation>Abrir arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="964"/>
+        <location filename="../app/main_window.cpp" line="963"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Arquivos de comandos (*.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="970"/>
+        <location filename="../app/main_window.cpp" line="969"/>
         <source>Open</source>
         <translation>Abrir</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="970"/>
+        <location filename="../app/main_window.cpp" line="969"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Arquivos de cena (*.byu *.cfg *.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="980"/>
+        <location filename="../app/main_window.cpp" line="979"/>
         <source>Export PNG</source>
         <translation>Exportar PNG</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="980"/>
-        <location filename="../app/main_window_actions.cpp" line="148"/>
-        <location filename="../app/main_window_actions.cpp" line="155"/>
+        <location filename="../app/main_window.cpp" line="979"/>
+        <location filename="../app/main_window_actions.cpp" line="149"/>
+        <location filename="../app/main_window_actions.cpp" line="156"/>
         <location filename="../app/main_window_export.cpp" line="198"/>
         <location filename="../app/main_window_export.cpp" line="206"/>
         <source>PNG images (*.png)</source>
         <translation>Imagens PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="985"/>
+        <location filename="../app/main_window.cpp" line="984"/>
         <source>Compare with Image</source>
         <translation>Comparar com imagem</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="986"/>
+        <location filename="../app/main_window.cpp" line="985"/>
         <source>PNG images (*.png);;All files (*)</source>
         <translation>Imagens PNG (*.png);;Todos os arquivos (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/main_window.cpp" line="1012"/>
+        <location filename="../app/main_window.cpp" line="1010"/>
         <source>Compared %1 with our render: %n pixel(s) differ</source>
         <translation>
             <numerusform>%1 comparada com a nossa renderização: %n pixel difere</numerusform>
@@ -4268,22 +4268,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1020"/>
+        <location filename="../app/main_window.cpp" line="1018"/>
         <source>About RasterLab</source>
         <translation>Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1027"/>
+        <location filename="../app/main_window.cpp" line="1024"/>
         <source>Released under the MIT License, whose text is in %1.</source>
         <translation>Distribuído sob a Licença MIT, cujo texto está em %1.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1029"/>
+        <location filename="../app/main_window.cpp" line="1026"/>
         <source>Released under the MIT License.</source>
         <translation>Distribuído sob a Licença MIT.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1030"/>
+        <location filename="../app/main_window.cpp" line="1027"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;O pipeline clássico de rasterização por software, etapa por etapa: base da câmera, coordenadas de vista, normais, projeção, conversão por varredura, teste de profundidade e sombreamento.&lt;/p&gt;</translation>
     </message>

@@ -85,8 +85,7 @@ std::shared_ptr<Mesh> sliverMesh(const Mesh& mesh, double degrees) {
         for (int k = 1; k < 3; ++k)
             if (edge(k) > edge(longest)) longest = k;
         std::rotate(abc.begin(), abc.begin() + longest, abc.end());
-        const dvec3 a(mesh.positions[abc[0]]), b(mesh.positions[abc[1]]),
-            c(mesh.positions[abc[2]]);
+        const dvec3 a(mesh.positions[abc[0]]), b(mesh.positions[abc[1]]), c(mesh.positions[abc[2]]);
         const double base = glm::length(c - b);
         const double height = base > 0.0 ? glm::length(glm::cross(c - b, a - b)) / base : 0.0;
         const double weightA = height > 0.0 ? slope * base / 2.0 / height : 1.0;
@@ -107,7 +106,8 @@ std::shared_ptr<Mesh> sliverMesh(const Mesh& mesh, double degrees) {
         cut->triangles.push_back({abc[0], abc[1], p});
         cut->triangles.push_back({abc[1], abc[2], p});
         cut->triangles.push_back({abc[2], abc[0], p});
-        if (!mesh.triangleLines.empty()) cut->triangleLines.insert(cut->triangleLines.end(), 3, line);
+        if (!mesh.triangleLines.empty())
+            cut->triangleLines.insert(cut->triangleLines.end(), 3, line);
     }
     return cut;
 }
@@ -300,8 +300,7 @@ void measurePoint(const PointContext& context, StiffnessAxis axis, double value,
     StabilityPoint inFloat = pointAt(axis, value, floatRow(mode, *frame, reference, rowOptions));
     if (!options.withDouble) return context.report.points.push_back(std::move(inFloat));
     rowOptions.keepImages = true;  // the double image, to set beside the frame's own
-    StabilityPoint inDouble =
-        pointAt(axis, value, doubleRow(mode, *frame, reference, rowOptions));
+    StabilityPoint inDouble = pointAt(axis, value, doubleRow(mode, *frame, reference, rowOptions));
     compareFloatWithDouble(inFloat, frame->sampled, *inDouble.row.image);
     inDouble.row.image.reset();
     inDouble.row.reference.reset();

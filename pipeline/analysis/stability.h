@@ -35,8 +35,8 @@ enum class StiffnessAxis : std::uint8_t {
 
 struct StiffnessAxisInfo {
     StiffnessAxis axis;
-    const char* name;  // "offset", as the command line and the tables write it
-    const char* unit;  // of the value: "units", "x", "degrees" ...
+    const char* name;            // "offset", as the command line and the tables write it
+    const char* unit;            // of the value: "units", "x", "degrees" ...
     std::vector<double> values;  // the default sweep, from the mildest to the stiffest
     bool invariant;              // the stiff scene shows the original's picture
 };
@@ -80,7 +80,7 @@ struct StabilityOptions {
     bool withDouble = true;
     int repeats = 3;  // timed frames per point (the median is reported)
     int threads = 0;
-    const std::atomic<bool>* cancel = nullptr;      // checked between points
+    const std::atomic<bool>* cancel = nullptr;          // checked between points
     std::function<void(int done, int total)> progress;  // after each point
 };
 

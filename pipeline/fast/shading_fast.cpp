@@ -14,9 +14,9 @@ namespace {
 
 // Per draw, whether its lighting is what the many-point kernels know (phong_kernel.h): the
 // course's common case, the course's Phong with the material's colour, one plain light, R.V
-// highlights up to kPreciseShininess and no emission. Its pixels go through the kernel when it is Phong shaded with
-// interpolated normals, screen-affine; its vertices when Gouraud, its triangles' barycentres
-// when flat. runs[d] holds the draw's constants (its material under the one light).
+// highlights up to kPreciseShininess and no emission. Its pixels go through the kernel when it is
+// Phong shaded with interpolated normals, screen-affine; its vertices when Gouraud, its triangles'
+// barycentres when flat. runs[d] holds the draw's constants (its material under the one light).
 struct Kernels {
     std::vector<std::uint8_t> pixels, points;
     std::vector<CoursePhongRun> runs;
@@ -35,8 +35,7 @@ Kernels kernelsFor(const FrameLighting& lighting) {
             draw.lighting == LightingModel::CoursePhong && draw.colour == ColourSource::Material &&
             !lighting.normals().skipped && std::min(draw.lightCount, view.lights.size()) == 1 &&
             view.lights[0].plain() && draw.specular == SpecularModel::Phong &&
-            draw.material.emission == vec3(0.0f) &&
-            !(draw.material.shininess > kPreciseShininess);
+            draw.material.emission == vec3(0.0f) && !(draw.material.shininess > kPreciseShininess);
         if (!kernelLighting) continue;
         k.pixels[d] =
             draw.shading == ShadingModel::Phong && !draw.flatNormals && !lighting.perspective();

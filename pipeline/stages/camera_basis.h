@@ -6,8 +6,8 @@
 // Degenerate cameras (a zero vector, N parallel to V, d = 0, hx = 0 or hy = 0) are errors
 // that name the values. V close to N is ill-conditioned: V - (V.N) N keeps only sin(angle) of
 // V, so rounding grows as 1e-16 / sin(angle); under kWarnAngleDegrees the residuals pass a
-// float's precision and the stage warns, and under sin(angle) = 1e-12 it is an error. A scene without a course camera (its draws carry their own view
-// matrices) skips this stage.
+// float's precision and the stage warns, and under sin(angle) = 1e-12 it is an error. A scene
+// without a course camera (its draws carry their own view matrices) skips this stage.
 #pragma once
 
 #include <string>

@@ -195,10 +195,9 @@ inline void addLight(const Material& m, const vec3& od, const ViewLight& light, 
             // (R.V)^n, or (N.H)^n. A negative n (outside the course's range, and warned about
             // when read) is not a highlight: its huge or infinite values are left out rather
             // than turned into NaN.
-            const float power =
-                specularModel == SpecularModel::BlinnPhong
-                    ? specularPower(nUnit, r, rDotV, m.shininess)
-                    : specularPower(r, sample.v, rDotV, m.shininess);
+            const float power = specularModel == SpecularModel::BlinnPhong
+                                    ? specularPower(nUnit, r, rDotV, m.shininess)
+                                    : specularPower(r, sample.v, rDotV, m.shininess);
             if (std::isfinite(power)) specular = il * m.ks * power;
         }
         sample.diffuse += diffuse;
@@ -263,8 +262,7 @@ inline PhongSample lambert(const vec3& objectColour, float shininess, const View
                 if (length > 0.0f) {
                     h = sum / length;
                     hDotN = std::max(glm::dot(h, s.n), 0.0f);
-                    s.specular +=
-                        lights[i].intensity * specularPower(h, s.n, hDotN, shininess);
+                    s.specular += lights[i].intensity * specularPower(h, s.n, hDotN, shininess);
                 }
             }
         }
