@@ -61,11 +61,11 @@ void printText(const rl::ImageComparison& c, const QString& image, const QString
     out << "diagnosis, most likely first:\n";
     int rank = 0;
     for (const rl::Finding& f : c.diagnosis) {
-        out << "  " << ++rank << ". " << QString::fromStdString(f.title) << '\n';
+        out << "  " << ++rank << ". " << QString::fromStdString(f.title.english()) << '\n';
         out << "     explains " << QString::number(100.0 * f.share, 'f', 1) << "% of the differing "
             << "pixels (" << f.explained << " of " << c.differing << ")\n";
-        out << "     evidence: " << QString::fromStdString(f.evidence) << '\n';
-        out << "     check: " << QString::fromStdString(f.advice) << '\n';
+        out << "     evidence: " << QString::fromStdString(f.evidence.english()) << '\n';
+        out << "     check: " << QString::fromStdString(f.advice.english()) << '\n';
         for (const rl::PixelExample& e : f.examples)
             out << "     at (" << e.x << ", " << e.y << ") ours " << bytesText(e.ours)
                 << ", theirs " << bytesText(e.theirs) << '\n';
@@ -89,9 +89,9 @@ QJsonObject toJson(const rl::ImageComparison& c, const QString& image, const QSt
     for (const rl::Finding& f : c.diagnosis) {
         QJsonObject d;
         d[lit("mistake")] = QString::fromLatin1(rl::mistakeId(f.mistake));
-        d[lit("title")] = QString::fromStdString(f.title);
-        d[lit("evidence")] = QString::fromStdString(f.evidence);
-        d[lit("advice")] = QString::fromStdString(f.advice);
+        d[lit("title")] = QString::fromStdString(f.title.english());
+        d[lit("evidence")] = QString::fromStdString(f.evidence.english());
+        d[lit("advice")] = QString::fromStdString(f.advice.english());
         d[lit("explained")] = qint64(f.explained);
         d[lit("share")] = f.share;
         d[lit("spoiled")] = qint64(f.spoiled);

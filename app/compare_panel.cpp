@@ -19,6 +19,7 @@
 #include "compare_image.h"
 #include "inspection.h"
 #include "number_text.h"
+#include "pipeline_messages.h"
 #include "pixel_history.h"
 
 namespace rasterlab {
@@ -406,17 +407,16 @@ void ComparePanel::refreshTexts() {
         html = QStringLiteral("<p><b>%1</b></p>").arg(tr("Diagnosis, most likely first:"));
         int rank = 0;
         for (const rl::Finding& f : c.diagnosis) {
-            html +=
-                QStringLiteral("<p><b>%1. %2</b><br>%3<br>%4<br>%5")
-                    .arg(++rank)
-                    .arg(QString::fromStdString(f.title).toHtmlEscaped(),
-                         tr("Explains %1% of the differing pixels (%2 of %3).")
-                             .arg(100.0 * f.share, 0, 'f', 1)
-                             .arg(f.explained)
-                             .arg(c.differing)
-                             .toHtmlEscaped(),
-                         tr("Evidence: %1").arg(QString::fromStdString(f.evidence)).toHtmlEscaped(),
-                         tr("Check: %1").arg(QString::fromStdString(f.advice)).toHtmlEscaped());
+            html += QStringLiteral("<p><b>%1. %2</b><br>%3<br>%4<br>%5")
+                        .arg(++rank)
+                        .arg(translated(f.title).toHtmlEscaped(),
+                             tr("Explains %1% of the differing pixels (%2 of %3).")
+                                 .arg(100.0 * f.share, 0, 'f', 1)
+                                 .arg(f.explained)
+                                 .arg(c.differing)
+                                 .toHtmlEscaped(),
+                             tr("Evidence: %1").arg(translated(f.evidence)).toHtmlEscaped(),
+                             tr("Check: %1").arg(translated(f.advice)).toHtmlEscaped());
             for (const rl::PixelExample& e : f.examples)
                 html += QStringLiteral("<br>") + tr("At (%1, %2): ours %3, theirs %4")
                                                      .arg(e.x)

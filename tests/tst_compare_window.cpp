@@ -18,6 +18,7 @@
 #include "main_window.h"
 #include "mistakes.h"
 #include "test_support.h"
+#include "translators.h"
 
 using rasterlab::ComparePanel;
 using rasterlab::MainWindow;
@@ -63,6 +64,7 @@ private slots:
     void badImages_data();
     void badImages();
     void compareAgainAfterAChange();
+    void diagnosisInPortuguese();
 
 private:
     ComparePanel* panel() const { return m_window.comparePanel(); }
@@ -86,7 +88,7 @@ void TestCompareWindow::ranksTheMistakeFirst() {
     // The dock lists it first, in the command line's words.
     const QString text = panel()->diagnosisText();
     const QString first =
-        QStringLiteral("1. ") + QString::fromStdString(c->diagnosis.front().title);
+        QStringLiteral("1. ") + QString::fromStdString(c->diagnosis.front().title.english());
     QVERIFY2(text.contains(first), qPrintable(text));
     QVERIFY(text.indexOf(first) < text.indexOf(QStringLiteral("2. ")) ||
             !text.contains(QStringLiteral("2. ")));
@@ -241,6 +243,28 @@ void TestCompareWindow::compareAgainAfterAChange() {
     // Flat shading against their Phong image differs by more than the ambient's 12 in blue.
     const std::array<int, 4>& largest = panel()->comparison()->largest;
     QVERIFY(*std::max_element(largest.begin(), largest.end()) > 12);
+}
+
+// In a Portuguese window the diagnosis is Portuguese: its titles, evidence and advice are
+// message templates (pipeline/core/message.h), translated as the readers' errors are.
+void TestCompareWindow::diagnosisInPortuguese() {
+    rasterlab::Translators translators;
+    translators.install(QStringLiteral("pt_BR"));
+    MainWindow window;
+    QVERIFY(window.openExample(QStringLiteral("goblet")));
+    QVERIFY(QTest::qWaitFor([&] { return ready(window); }, kTimeoutMs));
+    QVERIFY(window.compareWithImage(m_theirPath));
+    const QString text = window.comparePanel()->diagnosisText();
+    translators.install(QStringLiteral("en"));
+    QVERIFY2(text.contains(QStringLiteral("1. o termo ambiente multiplicado pela cor do objeto: "
+                                          "Ia*ka*Od em vez de Ia*ka")),
+             qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("nossos pixels iluminados de novo com essa fórmula")),
+             qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("o termo ambiente da seed 000 é Ia*ka, sem a cor do "
+                                          "objeto Od")),
+             qPrintable(text));
+    QVERIFY2(!text.contains(QStringLiteral("multiplied")), qPrintable(text));
 }
 
 QTEST_MAIN(TestCompareWindow)

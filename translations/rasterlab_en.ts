@@ -1731,191 +1731,471 @@
     </message>
     <message>
         <location filename="../app/pipeline_messages.cpp" line="511"/>
+        <source>(%1, %2, %3, %4)</source>
+        <translation>(%1, %2, %3, %4)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="512"/>
+        <source>the ambient term multiplied by the object colour: Ia*ka*Od instead of Ia*ka</source>
+        <translation>the ambient term multiplied by the object colour: Ia*ka*Od instead of Ia*ka</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="515"/>
+        <source>the normal not turned toward the viewer where V.N &lt; 0</source>
+        <translation>the normal not turned toward the viewer where V.N &lt; 0</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="516"/>
+        <source>specular added where R.V &lt; 0 (no check before (R.V)^n)</source>
+        <translation>specular added where R.V &lt; 0 (no check before (R.V)^n)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="517"/>
+        <source>diffuse and specular computed where N.L &lt; 0 (the light is behind the surface)</source>
+        <translation>diffuse and specular computed where N.L &lt; 0 (the light is behind the surface)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="520"/>
+        <source>the interpolated normal not normalised</source>
+        <translation>the interpolated normal not normalised</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="521"/>
+        <source>%1 shading where another model was asked</source>
+        <translation>%1 shading where another model was asked</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="522"/>
+        <source>%1 shading where %2 was asked</source>
+        <translation>%1 shading where %2 was asked</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="523"/>
+        <source>the image mirrored left-right (x runs the other way)</source>
+        <translation>the image mirrored left-right (x runs the other way)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="524"/>
+        <source>the image upside down (row 0 at the bottom: y not flipped)</source>
+        <translation>the image upside down (row 0 at the bottom: y not flipped)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="525"/>
+        <source>the image shifted by one pixel: (%1, %2)</source>
+        <translation>the image shifted by one pixel: (%1, %2)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="526"/>
+        <source>pixels sampled at their centres (x + 0.5) instead of their corners</source>
+        <translation>pixels sampled at their centres (x + 0.5) instead of their corners</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="528"/>
+        <source>pixels sampled at their corners instead of their centres (x + 0.5)</source>
+        <translation>pixels sampled at their corners instead of their centres (x + 0.5)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="530"/>
+        <source>vertex positions rounded instead of truncated to whole pixels</source>
+        <translation>vertex positions rounded instead of truncated to whole pixels</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="531"/>
+        <source>vertex positions truncated instead of rounded to whole pixels</source>
+        <translation>vertex positions truncated instead of rounded to whole pixels</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="532"/>
+        <source>vertex positions rounded instead of truncated to the sub-pixel grid</source>
+        <translation>vertex positions rounded instead of truncated to the sub-pixel grid</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="534"/>
+        <source>vertex positions truncated instead of rounded to the sub-pixel grid</source>
+        <translation>vertex positions truncated instead of rounded to the sub-pixel grid</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="536"/>
+        <source>the top-left fill rule where edges are inclusive</source>
+        <translation>the top-left fill rule where edges are inclusive</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="537"/>
+        <source>inclusive edges where the fill rule is top-left</source>
+        <translation>inclusive edges where the fill rule is top-left</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="538"/>
+        <source>colour bytes rounded instead of truncated (off by one)</source>
+        <translation>colour bytes rounded instead of truncated (off by one)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="539"/>
+        <source>colour bytes truncated instead of rounded (off by one)</source>
+        <translation>colour bytes truncated instead of rounded (off by one)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="540"/>
+        <source>colours above 255 wrap around instead of clamping</source>
+        <translation>colours above 255 wrap around instead of clamping</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="541"/>
+        <source>the painter&apos;s order (far to near, no depth test) instead of the z-buffer</source>
+        <translation>the painter&apos;s order (far to near, no depth test) instead of the z-buffer</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="543"/>
+        <source>z &lt; stored instead of z &lt;= stored in the depth test (ties keep the earlier triangle)</source>
+        <translation>z &lt; stored instead of z &lt;= stored in the depth test (ties keep the earlier triangle)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="546"/>
+        <source>z &lt;= stored instead of z &lt; stored in the depth test (ties go to the later triangle)</source>
+        <translation>z &lt;= stored instead of z &lt; stored in the depth test (ties go to the later triangle)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="549"/>
+        <source>a different background: %1 where the scene&apos;s is %2</source>
+        <translation>a different background: %1 where the scene&apos;s is %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="550"/>
+        <source>alpha %1 on covered pixels instead of 255</source>
+        <translation>alpha %1 on covered pixels instead of 255</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="551"/>
+        <source>our pixels lit again with that formula (the same triangles, barycentrics, P&apos;, N, lights and material) give theirs</source>
+        <translation>our pixels lit again with that formula (the same triangles, barycentrics, P&apos;, N, lights and material) give theirs</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="554"/>
+        <source>the scene rendered again in that shading model gives their pixels</source>
+        <translation>the scene rendered again in that shading model gives their pixels</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="556"/>
+        <source>our image moved that way gives their pixels</source>
+        <translation>our image moved that way gives their pixels</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="557"/>
+        <source>the scene rendered again with that rule gives their pixels</source>
+        <translation>the scene rendered again with that rule gives their pixels</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="558"/>
+        <source>our float colours made bytes that way give their pixels</source>
+        <translation>our float colours made bytes that way give their pixels</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="559"/>
+        <source>the scene painted far to near without a depth test gives their pixels</source>
+        <translation>the scene painted far to near without a depth test gives their pixels</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="561"/>
+        <source>their pixels where no triangle of ours is take that colour</source>
+        <translation>their pixels where no triangle of ours is take that colour</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="562"/>
+        <source>their pixels where a triangle of ours is take that alpha</source>
+        <translation>their pixels where a triangle of ours is take that alpha</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="563"/>
+        <source>seed 000&apos;s ambient term is Ia*ka, without the object colour Od</source>
+        <translation>seed 000&apos;s ambient term is Ia*ka, without the object colour Od</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="564"/>
+        <source>seed 000: if V.N &lt; 0, N := -N before the lighting</source>
+        <translation>seed 000: if V.N &lt; 0, N := -N before the lighting</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="565"/>
+        <source>seed 000: if R.V &lt; 0, no specular term</source>
+        <translation>seed 000: if R.V &lt; 0, no specular term</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="566"/>
+        <source>seed 000: if N.L &lt; 0, neither diffuse nor specular</source>
+        <translation>seed 000: if N.L &lt; 0, neither diffuse nor specular</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="567"/>
+        <source>the interpolated N is shorter than 1: normalise it before N.L and R</source>
+        <translation>the interpolated N is shorter than 1: normalise it before N.L and R</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="569"/>
+        <source>check where the lighting is evaluated: per pixel, per vertex or per triangle</source>
+        <translation>check where the lighting is evaluated: per pixel, per vertex or per triangle</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="572"/>
+        <source>check the sign of x in the projection or the screen mapping</source>
+        <translation>check the sign of x in the projection or the screen mapping</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="573"/>
+        <source>screen row 0 is the top: y = (1 - y_ndc) * height / 2</source>
+        <translation>screen row 0 is the top: y = (1 - y_ndc) * height / 2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="574"/>
+        <source>check the screen mapping&apos;s offsets and the first pixel of each span</source>
+        <translation>check the screen mapping&apos;s offsets and the first pixel of each span</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="576"/>
+        <source>where a pixel is sampled decides which pixels an edge covers (--rules)</source>
+        <translation>where a pixel is sampled decides which pixels an edge covers (--rules)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="578"/>
+        <source>check how screen coordinates become whole pixels ((int) truncates)</source>
+        <translation>check how screen coordinates become whole pixels ((int) truncates)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="580"/>
+        <source>the pixels exactly on an edge: which triangle (or both) covers them</source>
+        <translation>the pixels exactly on an edge: which triangle (or both) covers them</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="582"/>
+        <source>check how the colour becomes a byte: (int) truncates, + 0.5 rounds</source>
+        <translation>check how the colour becomes a byte: (int) truncates, + 0.5 rounds</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="584"/>
+        <source>clamp each channel to 255 before writing it as a byte</source>
+        <translation>clamp each channel to 255 before writing it as a byte</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="585"/>
+        <source>keep a depth buffer and write a pixel only when the fragment is nearer</source>
+        <translation>keep a depth buffer and write a pixel only when the fragment is nearer</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="587"/>
+        <source>the comparison of the depth test: &lt; keeps the first of two equal depths</source>
+        <translation>the comparison of the depth test: &lt; keeps the first of two equal depths</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="589"/>
+        <source>the colour (and alpha) of the pixels no triangle covers</source>
+        <translation>the colour (and alpha) of the pixels no triangle covers</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="590"/>
+        <source>the alpha written with each shaded pixel</source>
+        <translation>the alpha written with each shaded pixel</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="591"/>
+        <source>%1; no pixel that matches now would change</source>
+        <translation>%1; no pixel that matches now would change</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="592"/>
+        <source>%2; %1 pixel that matches now would differ</source>
+        <translation>%2; %1 pixel that matches now would differ</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="593"/>
+        <source>%2; %1 pixels that match now would differ</source>
+        <translation>%2; %1 pixels that match now would differ</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="595"/>
         <source>cannot read the texture %1: %2</source>
         <translation>cannot read the texture %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="513"/>
+        <location filename="../app/pipeline_messages.cpp" line="597"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="518"/>
+        <location filename="../app/pipeline_messages.cpp" line="602"/>
         <source>cannot open: %1</source>
         <translation>cannot open: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="519"/>
+        <location filename="../app/pipeline_messages.cpp" line="603"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>the file has %1 MiB, more than the %2 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="521"/>
+        <location filename="../app/pipeline_messages.cpp" line="605"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>the file has more than the %1 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="523"/>
+        <location filename="../app/pipeline_messages.cpp" line="607"/>
         <source>not enough memory to read this file</source>
         <translation>not enough memory to read this file</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="524"/>
+        <location filename="../app/pipeline_messages.cpp" line="608"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="527"/>
+        <location filename="../app/pipeline_messages.cpp" line="611"/>
         <source>the object is not edited, so not saved</source>
         <translation>the object is not edited, so not saved</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="528"/>
+        <location filename="../app/pipeline_messages.cpp" line="612"/>
         <source>cannot write into the built-in resources</source>
         <translation>cannot write into the built-in resources</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="529"/>
+        <location filename="../app/pipeline_messages.cpp" line="613"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>the camera was not saved, as it would not load again: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="530"/>
+        <location filename="../app/pipeline_messages.cpp" line="614"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>not saved: the text written does not read back as the same values</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="532"/>
+        <location filename="../app/pipeline_messages.cpp" line="616"/>
         <source>cannot write the file: %1</source>
         <translation>cannot write the file: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="533"/>
+        <location filename="../app/pipeline_messages.cpp" line="617"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>only %1 of %2 bytes could be written (is the disk full?)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="534"/>
+        <location filename="../app/pipeline_messages.cpp" line="618"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>cannot write the file (it is left as it was): %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="536"/>
+        <location filename="../app/pipeline_messages.cpp" line="620"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[rows, fragments], two whole numbers</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="537"/>
+        <location filename="../app/pipeline_messages.cpp" line="621"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[width, height], whole numbers from %1 to %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="538"/>
+        <location filename="../app/pipeline_messages.cpp" line="622"/>
         <source>a list</source>
         <translation>a list</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="539"/>
+        <location filename="../app/pipeline_messages.cpp" line="623"/>
         <source>a list of %1 numbers</source>
         <translation>a list of %1 numbers</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="540"/>
+        <location filename="../app/pipeline_messages.cpp" line="624"/>
         <source>a list of 1 to 8 lights</source>
         <translation>a list of 1 to 8 lights</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="541"/>
+        <location filename="../app/pipeline_messages.cpp" line="625"/>
         <source>a list of dock names</source>
         <translation>a list of dock names</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="542"/>
+        <location filename="../app/pipeline_messages.cpp" line="626"/>
         <source>a number</source>
         <translation>a number</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="543"/>
+        <location filename="../app/pipeline_messages.cpp" line="627"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>a positive number or &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="544"/>
+        <location filename="../app/pipeline_messages.cpp" line="628"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>a positive number or &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="545"/>
+        <location filename="../app/pipeline_messages.cpp" line="629"/>
         <source>a whole number from %1</source>
         <translation>a whole number from %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="546"/>
+        <location filename="../app/pipeline_messages.cpp" line="630"/>
         <source>an object</source>
         <translation>an object</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="547"/>
+        <location filename="../app/pipeline_messages.cpp" line="631"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>expected %1 for &quot;%2&quot;, found %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="548"/>
+        <location filename="../app/pipeline_messages.cpp" line="632"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="550"/>
+        <location filename="../app/pipeline_messages.cpp" line="634"/>
         <source>not a lesson file: %1</source>
         <translation>not a lesson file: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="551"/>
+        <location filename="../app/pipeline_messages.cpp" line="635"/>
         <source>nothing</source>
         <translation>nothing</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="552"/>
+        <location filename="../app/pipeline_messages.cpp" line="636"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="553"/>
+        <location filename="../app/pipeline_messages.cpp" line="637"/>
         <source>one of %1</source>
         <translation>one of %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="554"/>
+        <location filename="../app/pipeline_messages.cpp" line="638"/>
         <source>text in quotes</source>
         <translation>text in quotes</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="555"/>
+        <location filename="../app/pipeline_messages.cpp" line="639"/>
         <source>the text &apos;%1&apos;</source>
         <translation>the text &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="556"/>
+        <location filename="../app/pipeline_messages.cpp" line="640"/>
         <source>true or false</source>
         <translation>true or false</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="557"/>
+        <location filename="../app/pipeline_messages.cpp" line="641"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>unknown key &quot;%1&quot; ignored (known here: %2)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="592"/>
+        <location filename="../app/pipeline_messages.cpp" line="676"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="598"/>
+        <location filename="../app/pipeline_messages.cpp" line="682"/>
         <source>%1: warning: %2</source>
         <translation>%1: warning: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="599"/>
+        <location filename="../app/pipeline_messages.cpp" line="683"/>
         <source>%1: note: %2</source>
         <translation>%1: note: %2</translation>
     </message>
@@ -2634,100 +2914,100 @@
 <context>
     <name>rasterlab::ComparePanel</name>
     <message>
-        <location filename="../app/compare_panel.cpp" line="130"/>
-        <location filename="../app/compare_panel.cpp" line="134"/>
+        <location filename="../app/compare_panel.cpp" line="131"/>
+        <location filename="../app/compare_panel.cpp" line="135"/>
         <source>R %1, G %2, B %3, A %4</source>
         <translation>R %1, G %2, B %3, A %4</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="144"/>
+        <location filename="../app/compare_panel.cpp" line="145"/>
         <source>red</source>
         <translation>red</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="146"/>
+        <location filename="../app/compare_panel.cpp" line="147"/>
         <source>green</source>
         <translation>green</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="148"/>
+        <location filename="../app/compare_panel.cpp" line="149"/>
         <source>blue</source>
         <translation>blue</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="150"/>
+        <location filename="../app/compare_panel.cpp" line="151"/>
         <source>alpha</source>
         <translation>alpha</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="157"/>
+        <location filename="../app/compare_panel.cpp" line="158"/>
         <source>%1 and %2</source>
         <translation>%1 and %2</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="173"/>
+        <location filename="../app/compare_panel.cpp" line="174"/>
         <source>Side by side</source>
         <translation>Side by side</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="174"/>
+        <location filename="../app/compare_panel.cpp" line="175"/>
         <source>Flicker</source>
         <translation>Flicker</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="175"/>
+        <location filename="../app/compare_panel.cpp" line="176"/>
         <source>Difference</source>
         <translation>Difference</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="177"/>
+        <location filename="../app/compare_panel.cpp" line="178"/>
         <source>Theirs beside ours, one after the other twice a second, or the pixels that differ</source>
         <translation>Theirs beside ours, one after the other twice a second, or the pixels that differ</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="180"/>
+        <location filename="../app/compare_panel.cpp" line="181"/>
         <source>Differ by more than</source>
         <translation>Differ by more than</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="186"/>
+        <location filename="../app/compare_panel.cpp" line="187"/>
         <source>The difference view shows the pixels where some channel differs by more than this (0: every difference)</source>
         <translation>The difference view shows the pixels where some channel differs by more than this (0: every difference)</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="191"/>
+        <location filename="../app/compare_panel.cpp" line="192"/>
         <source>Compare Again</source>
         <translation>Compare Again</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="194"/>
+        <location filename="../app/compare_panel.cpp" line="195"/>
         <source>The scene changed since the comparison: compare their image with the scene shown now</source>
         <translation>The scene changed since the comparison: compare their image with the scene shown now</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="218"/>
+        <location filename="../app/compare_panel.cpp" line="219"/>
         <source>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</source>
         <translation>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="256"/>
+        <location filename="../app/compare_panel.cpp" line="257"/>
         <source>There is no render to compare with yet.</source>
         <translation>There is no render to compare with yet.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="343"/>
-        <location filename="../app/compare_panel.cpp" line="346"/>
+        <location filename="../app/compare_panel.cpp" line="344"/>
+        <location filename="../app/compare_panel.cpp" line="347"/>
         <source>Theirs</source>
         <translation>Theirs</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="343"/>
-        <location filename="../app/compare_panel.cpp" line="346"/>
+        <location filename="../app/compare_panel.cpp" line="344"/>
+        <location filename="../app/compare_panel.cpp" line="347"/>
         <source>Ours</source>
         <translation>Ours</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/compare_panel.cpp" line="351"/>
+        <location filename="../app/compare_panel.cpp" line="352"/>
         <source>%n pixel(s) differ by more than %1</source>
         <translation>
             <numerusform>%n pixel differs by more than %1</numerusform>
@@ -2735,167 +3015,167 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="377"/>
+        <location filename="../app/compare_panel.cpp" line="378"/>
         <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
         <translation>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="385"/>
+        <location filename="../app/compare_panel.cpp" line="386"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Largest difference per channel: %1.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="386"/>
+        <location filename="../app/compare_panel.cpp" line="387"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Mean difference per channel, over the differing pixels: %1.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="388"/>
+        <location filename="../app/compare_panel.cpp" line="389"/>
         <source>Pixels only one side covers: %1 only ours (our depth buffer), %2 only theirs (not the background).</source>
         <translation>Pixels only one side covers: %1 only ours (our depth buffer), %2 only theirs (not the background).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="394"/>
+        <location filename="../app/compare_panel.cpp" line="395"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="401"/>
+        <location filename="../app/compare_panel.cpp" line="402"/>
         <source>The images are the same.</source>
         <translation>The images are the same.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="403"/>
+        <location filename="../app/compare_panel.cpp" line="404"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnosis: none of the mistakes RasterLab knows explains these differences.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="406"/>
+        <location filename="../app/compare_panel.cpp" line="407"/>
         <source>Diagnosis, most likely first:</source>
         <translation>Diagnosis, most likely first:</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="413"/>
+        <location filename="../app/compare_panel.cpp" line="414"/>
         <source>Explains %1% of the differing pixels (%2 of %3).</source>
         <translation>Explains %1% of the differing pixels (%2 of %3).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="418"/>
+        <location filename="../app/compare_panel.cpp" line="419"/>
         <source>Evidence: %1</source>
         <translation>Evidence: %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="419"/>
+        <location filename="../app/compare_panel.cpp" line="420"/>
         <source>Check: %1</source>
         <translation>Check: %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="421"/>
+        <location filename="../app/compare_panel.cpp" line="422"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>At (%1, %2): ours %3, theirs %4</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="437"/>
+        <location filename="../app/compare_panel.cpp" line="438"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Pick a pixel (here or on the image) to see their colour beside ours.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="445"/>
+        <location filename="../app/compare_panel.cpp" line="446"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): theirs %3, ours %4.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="452"/>
+        <location filename="../app/compare_panel.cpp" line="453"/>
         <source>minus %1 in %2</source>
         <translation>minus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="453"/>
+        <location filename="../app/compare_panel.cpp" line="454"/>
         <source>plus %1 in %2</source>
         <translation>plus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="456"/>
+        <location filename="../app/compare_panel.cpp" line="457"/>
         <source>Their colour is ours.</source>
         <translation>Their colour is ours.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="460"/>
+        <location filename="../app/compare_panel.cpp" line="461"/>
         <source>Their colour is ours %1.</source>
         <translation>Their colour is ours %1.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="462"/>
+        <location filename="../app/compare_panel.cpp" line="463"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>The scene has changed since the comparison: the lighting shown now is not the one compared.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="474"/>
+        <location filename="../app/compare_panel.cpp" line="475"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>No triangle of ours covers this pixel: it is the background.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="478"/>
+        <location filename="../app/compare_panel.cpp" line="479"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>The lighting of this pixel is not known.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="481"/>
+        <location filename="../app/compare_panel.cpp" line="482"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="511"/>
+        <location filename="../app/compare_panel.cpp" line="512"/>
         <source>the ambient term Ia·ka</source>
         <translation>the ambient term Ia·ka</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="512"/>
+        <location filename="../app/compare_panel.cpp" line="513"/>
         <source>the diffuse term Il·Od·kd·(N·L)</source>
         <translation>the diffuse term Il·Od·kd·(N·L)</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="513"/>
+        <location filename="../app/compare_panel.cpp" line="514"/>
         <source>the specular term Il·ks·(R·V)^n</source>
         <translation>the specular term Il·ks·(R·V)^n</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="529"/>
+        <location filename="../app/compare_panel.cpp" line="530"/>
         <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
         <translation>• %1 is 0 in %2 here: changing it alone cannot give their colour.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="534"/>
+        <location filename="../app/compare_panel.cpp" line="535"/>
         <source>• %1 would have to be below 0 in %2: not this term alone.</source>
         <translation>• %1 would have to be below 0 in %2: not this term alone.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="551"/>
+        <location filename="../app/compare_panel.cpp" line="552"/>
         <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
         <translation>• %1 would have to be %2 instead of %3, × %4 per channel</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="554"/>
+        <location filename="../app/compare_panel.cpp" line="555"/>
         <source>: the term left out</source>
         <translation>: the term left out</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="557"/>
+        <location filename="../app/compare_panel.cpp" line="558"/>
         <source>: that is the term times Od %1</source>
         <translation>: that is the term times Od %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="560"/>
+        <location filename="../app/compare_panel.cpp" line="561"/>
         <source>: that is the term without Od %1</source>
         <translation>: that is the term without Od %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="566"/>
+        <location filename="../app/compare_panel.cpp" line="567"/>
         <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
         <translation>(%1: 255 in both images, clamped; any value at least as high gives it.)</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="569"/>
+        <location filename="../app/compare_panel.cpp" line="570"/>
         <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
         <translation>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</translation>
     </message>

@@ -1731,191 +1731,471 @@
     </message>
     <message>
         <location filename="../app/pipeline_messages.cpp" line="511"/>
+        <source>(%1, %2, %3, %4)</source>
+        <translation>(%1, %2, %3, %4)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="512"/>
+        <source>the ambient term multiplied by the object colour: Ia*ka*Od instead of Ia*ka</source>
+        <translation>o termo ambiente multiplicado pela cor do objeto: Ia*ka*Od em vez de Ia*ka</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="515"/>
+        <source>the normal not turned toward the viewer where V.N &lt; 0</source>
+        <translation>a normal não virada para o observador onde V.N &lt; 0</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="516"/>
+        <source>specular added where R.V &lt; 0 (no check before (R.V)^n)</source>
+        <translation>especular somado onde R.V &lt; 0 (sem teste antes de (R.V)^n)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="517"/>
+        <source>diffuse and specular computed where N.L &lt; 0 (the light is behind the surface)</source>
+        <translation>difusa e especular calculadas onde N.L &lt; 0 (a luz está atrás da superfície)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="520"/>
+        <source>the interpolated normal not normalised</source>
+        <translation>a normal interpolada não normalizada</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="521"/>
+        <source>%1 shading where another model was asked</source>
+        <translation>sombreamento %1 onde outro modelo foi pedido</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="522"/>
+        <source>%1 shading where %2 was asked</source>
+        <translation>sombreamento %1 onde %2 foi pedido</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="523"/>
+        <source>the image mirrored left-right (x runs the other way)</source>
+        <translation>a imagem espelhada da esquerda para a direita (x corre ao contrário)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="524"/>
+        <source>the image upside down (row 0 at the bottom: y not flipped)</source>
+        <translation>a imagem de cabeça para baixo (linha 0 embaixo: y não invertido)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="525"/>
+        <source>the image shifted by one pixel: (%1, %2)</source>
+        <translation>a imagem deslocada de um pixel: (%1, %2)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="526"/>
+        <source>pixels sampled at their centres (x + 0.5) instead of their corners</source>
+        <translation>pixels amostrados nos centros (x + 0,5) em vez dos cantos</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="528"/>
+        <source>pixels sampled at their corners instead of their centres (x + 0.5)</source>
+        <translation>pixels amostrados nos cantos em vez dos centros (x + 0,5)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="530"/>
+        <source>vertex positions rounded instead of truncated to whole pixels</source>
+        <translation>posições dos vértices arredondadas em vez de truncadas para pixels inteiros</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="531"/>
+        <source>vertex positions truncated instead of rounded to whole pixels</source>
+        <translation>posições dos vértices truncadas em vez de arredondadas para pixels inteiros</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="532"/>
+        <source>vertex positions rounded instead of truncated to the sub-pixel grid</source>
+        <translation>posições dos vértices arredondadas em vez de truncadas para a grade de subpixels</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="534"/>
+        <source>vertex positions truncated instead of rounded to the sub-pixel grid</source>
+        <translation>posições dos vértices truncadas em vez de arredondadas para a grade de subpixels</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="536"/>
+        <source>the top-left fill rule where edges are inclusive</source>
+        <translation>a regra de preenchimento superior-esquerda onde as arestas são inclusivas</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="537"/>
+        <source>inclusive edges where the fill rule is top-left</source>
+        <translation>arestas inclusivas onde a regra de preenchimento é superior-esquerda</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="538"/>
+        <source>colour bytes rounded instead of truncated (off by one)</source>
+        <translation>bytes de cor arredondados em vez de truncados (diferença de um)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="539"/>
+        <source>colour bytes truncated instead of rounded (off by one)</source>
+        <translation>bytes de cor truncados em vez de arredondados (diferença de um)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="540"/>
+        <source>colours above 255 wrap around instead of clamping</source>
+        <translation>cores acima de 255 dão a volta em vez de saturar</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="541"/>
+        <source>the painter&apos;s order (far to near, no depth test) instead of the z-buffer</source>
+        <translation>a ordem do pintor (do longe para o perto, sem teste de profundidade) em vez do z-buffer</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="543"/>
+        <source>z &lt; stored instead of z &lt;= stored in the depth test (ties keep the earlier triangle)</source>
+        <translation>z &lt; guardado em vez de z &lt;= guardado no teste de profundidade (empates ficam com o triângulo anterior)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="546"/>
+        <source>z &lt;= stored instead of z &lt; stored in the depth test (ties go to the later triangle)</source>
+        <translation>z &lt;= guardado em vez de z &lt; guardado no teste de profundidade (empates vão para o triângulo posterior)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="549"/>
+        <source>a different background: %1 where the scene&apos;s is %2</source>
+        <translation>um fundo diferente: %1 onde o da cena é %2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="550"/>
+        <source>alpha %1 on covered pixels instead of 255</source>
+        <translation>alfa %1 nos pixels cobertos em vez de 255</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="551"/>
+        <source>our pixels lit again with that formula (the same triangles, barycentrics, P&apos;, N, lights and material) give theirs</source>
+        <translation>nossos pixels iluminados de novo com essa fórmula (os mesmos triângulos, baricêntricas, P&apos;, N, luzes e material) dão os deles</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="554"/>
+        <source>the scene rendered again in that shading model gives their pixels</source>
+        <translation>a cena renderizada de novo nesse modelo de sombreamento dá os pixels deles</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="556"/>
+        <source>our image moved that way gives their pixels</source>
+        <translation>nossa imagem movida assim dá os pixels deles</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="557"/>
+        <source>the scene rendered again with that rule gives their pixels</source>
+        <translation>a cena renderizada de novo com essa regra dá os pixels deles</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="558"/>
+        <source>our float colours made bytes that way give their pixels</source>
+        <translation>nossas cores float convertidas em bytes desse jeito dão os pixels deles</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="559"/>
+        <source>the scene painted far to near without a depth test gives their pixels</source>
+        <translation>a cena pintada do longe para o perto sem teste de profundidade dá os pixels deles</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="561"/>
+        <source>their pixels where no triangle of ours is take that colour</source>
+        <translation>os pixels deles onde não há triângulo nosso têm essa cor</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="562"/>
+        <source>their pixels where a triangle of ours is take that alpha</source>
+        <translation>os pixels deles onde há um triângulo nosso têm esse alfa</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="563"/>
+        <source>seed 000&apos;s ambient term is Ia*ka, without the object colour Od</source>
+        <translation>o termo ambiente da seed 000 é Ia*ka, sem a cor do objeto Od</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="564"/>
+        <source>seed 000: if V.N &lt; 0, N := -N before the lighting</source>
+        <translation>seed 000: se V.N &lt; 0, N := -N antes da iluminação</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="565"/>
+        <source>seed 000: if R.V &lt; 0, no specular term</source>
+        <translation>seed 000: se R.V &lt; 0, sem termo especular</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="566"/>
+        <source>seed 000: if N.L &lt; 0, neither diffuse nor specular</source>
+        <translation>seed 000: se N.L &lt; 0, nem difusa nem especular</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="567"/>
+        <source>the interpolated N is shorter than 1: normalise it before N.L and R</source>
+        <translation>a N interpolada é mais curta que 1: normalize-a antes de N.L e R</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="569"/>
+        <source>check where the lighting is evaluated: per pixel, per vertex or per triangle</source>
+        <translation>verifique onde a iluminação é avaliada: por pixel, por vértice ou por triângulo</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="572"/>
+        <source>check the sign of x in the projection or the screen mapping</source>
+        <translation>verifique o sinal de x na projeção ou no mapeamento para a tela</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="573"/>
+        <source>screen row 0 is the top: y = (1 - y_ndc) * height / 2</source>
+        <translation>a linha 0 da tela é a de cima: y = (1 - y_ndc) * altura / 2</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="574"/>
+        <source>check the screen mapping&apos;s offsets and the first pixel of each span</source>
+        <translation>verifique os deslocamentos do mapeamento para a tela e o primeiro pixel de cada trecho</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="576"/>
+        <source>where a pixel is sampled decides which pixels an edge covers (--rules)</source>
+        <translation>onde um pixel é amostrado decide quais pixels uma aresta cobre (--rules)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="578"/>
+        <source>check how screen coordinates become whole pixels ((int) truncates)</source>
+        <translation>verifique como as coordenadas de tela viram pixels inteiros ((int) trunca)</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="580"/>
+        <source>the pixels exactly on an edge: which triangle (or both) covers them</source>
+        <translation>os pixels exatamente sobre uma aresta: qual triângulo (ou ambos) os cobre</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="582"/>
+        <source>check how the colour becomes a byte: (int) truncates, + 0.5 rounds</source>
+        <translation>verifique como a cor vira um byte: (int) trunca, + 0.5 arredonda</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="584"/>
+        <source>clamp each channel to 255 before writing it as a byte</source>
+        <translation>limite cada canal a 255 antes de escrevê-lo como byte</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="585"/>
+        <source>keep a depth buffer and write a pixel only when the fragment is nearer</source>
+        <translation>mantenha um buffer de profundidade e escreva um pixel só quando o fragmento estiver mais perto</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="587"/>
+        <source>the comparison of the depth test: &lt; keeps the first of two equal depths</source>
+        <translation>a comparação do teste de profundidade: &lt; fica com o primeiro de duas profundidades iguais</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="589"/>
+        <source>the colour (and alpha) of the pixels no triangle covers</source>
+        <translation>a cor (e o alfa) dos pixels que nenhum triângulo cobre</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="590"/>
+        <source>the alpha written with each shaded pixel</source>
+        <translation>o alfa escrito com cada pixel sombreado</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="591"/>
+        <source>%1; no pixel that matches now would change</source>
+        <translation>%1; nenhum pixel que coincide agora mudaria</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="592"/>
+        <source>%2; %1 pixel that matches now would differ</source>
+        <translation>%2; %1 pixel que coincide agora passaria a diferir</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="593"/>
+        <source>%2; %1 pixels that match now would differ</source>
+        <translation>%2; %1 pixels que coincidem agora passariam a diferir</translation>
+    </message>
+    <message>
+        <location filename="../app/pipeline_messages.cpp" line="595"/>
         <source>cannot read the texture %1: %2</source>
         <translation>não é possível ler a textura %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="513"/>
+        <location filename="../app/pipeline_messages.cpp" line="597"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V está a %1 graus da reta de N: Gram-Schmidt guarda só isso de V, e a base é ortonormal só até %2, menos que a precisão de um float; escolha um V mais longe de N</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="518"/>
+        <location filename="../app/pipeline_messages.cpp" line="602"/>
         <source>cannot open: %1</source>
         <translation>não é possível abrir: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="519"/>
+        <location filename="../app/pipeline_messages.cpp" line="603"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>o arquivo tem %1 MiB, mais que os %2 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="521"/>
+        <location filename="../app/pipeline_messages.cpp" line="605"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>o arquivo tem mais que os %1 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="523"/>
+        <location filename="../app/pipeline_messages.cpp" line="607"/>
         <source>not enough memory to read this file</source>
         <translation>não há memória suficiente para ler este arquivo</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="524"/>
+        <location filename="../app/pipeline_messages.cpp" line="608"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>os arquivos da cena embutida não podem ser gravados: salve-a num arquivo seu (Salvar como)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="527"/>
+        <location filename="../app/pipeline_messages.cpp" line="611"/>
         <source>the object is not edited, so not saved</source>
         <translation>o objeto não é editado, então não é salvo</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="528"/>
+        <location filename="../app/pipeline_messages.cpp" line="612"/>
         <source>cannot write into the built-in resources</source>
         <translation>não é possível gravar nos recursos embutidos</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="529"/>
+        <location filename="../app/pipeline_messages.cpp" line="613"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>a câmera não foi salva, pois não carregaria de novo: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="530"/>
+        <location filename="../app/pipeline_messages.cpp" line="614"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>não salvo: o texto gravado não é lido de volta com os mesmos valores</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="532"/>
+        <location filename="../app/pipeline_messages.cpp" line="616"/>
         <source>cannot write the file: %1</source>
         <translation>não é possível gravar o arquivo: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="533"/>
+        <location filename="../app/pipeline_messages.cpp" line="617"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>só %1 de %2 bytes puderam ser gravados (o disco está cheio?)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="534"/>
+        <location filename="../app/pipeline_messages.cpp" line="618"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>não é possível gravar o arquivo (ele fica como estava): %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="536"/>
+        <location filename="../app/pipeline_messages.cpp" line="620"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[linhas, fragmentos], dois números inteiros</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="537"/>
+        <location filename="../app/pipeline_messages.cpp" line="621"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[largura, altura], números inteiros de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="538"/>
+        <location filename="../app/pipeline_messages.cpp" line="622"/>
         <source>a list</source>
         <translation>uma lista</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="539"/>
+        <location filename="../app/pipeline_messages.cpp" line="623"/>
         <source>a list of %1 numbers</source>
         <translation>uma lista de %1 números</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="540"/>
+        <location filename="../app/pipeline_messages.cpp" line="624"/>
         <source>a list of 1 to 8 lights</source>
         <translation>uma lista de 1 a 8 luzes</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="541"/>
+        <location filename="../app/pipeline_messages.cpp" line="625"/>
         <source>a list of dock names</source>
         <translation>uma lista de nomes de painéis</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="542"/>
+        <location filename="../app/pipeline_messages.cpp" line="626"/>
         <source>a number</source>
         <translation>um número</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="543"/>
+        <location filename="../app/pipeline_messages.cpp" line="627"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>um número positivo ou &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="544"/>
+        <location filename="../app/pipeline_messages.cpp" line="628"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>um número positivo ou &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="545"/>
+        <location filename="../app/pipeline_messages.cpp" line="629"/>
         <source>a whole number from %1</source>
         <translation>um número inteiro a partir de %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="546"/>
+        <location filename="../app/pipeline_messages.cpp" line="630"/>
         <source>an object</source>
         <translation>um objeto</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="547"/>
+        <location filename="../app/pipeline_messages.cpp" line="631"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>esperava %1 para &quot;%2&quot;, encontrou %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="548"/>
+        <location filename="../app/pipeline_messages.cpp" line="632"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>esperava um arquivo de aula: um objeto JSON com &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="550"/>
+        <location filename="../app/pipeline_messages.cpp" line="634"/>
         <source>not a lesson file: %1</source>
         <translation>não é um arquivo de aula: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="551"/>
+        <location filename="../app/pipeline_messages.cpp" line="635"/>
         <source>nothing</source>
         <translation>nada</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="552"/>
+        <location filename="../app/pipeline_messages.cpp" line="636"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="553"/>
+        <location filename="../app/pipeline_messages.cpp" line="637"/>
         <source>one of %1</source>
         <translation>um de %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="554"/>
+        <location filename="../app/pipeline_messages.cpp" line="638"/>
         <source>text in quotes</source>
         <translation>um texto entre aspas</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="555"/>
+        <location filename="../app/pipeline_messages.cpp" line="639"/>
         <source>the text &apos;%1&apos;</source>
         <translation>o texto &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="556"/>
+        <location filename="../app/pipeline_messages.cpp" line="640"/>
         <source>true or false</source>
         <translation>true ou false</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="557"/>
+        <location filename="../app/pipeline_messages.cpp" line="641"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>ignorou a chave desconhecida &quot;%1&quot; (as conhecidas aqui: %2)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="592"/>
+        <location filename="../app/pipeline_messages.cpp" line="676"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="598"/>
+        <location filename="../app/pipeline_messages.cpp" line="682"/>
         <source>%1: warning: %2</source>
         <translation>%1: aviso: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="599"/>
+        <location filename="../app/pipeline_messages.cpp" line="683"/>
         <source>%1: note: %2</source>
         <translation>%1: nota: %2</translation>
     </message>
@@ -2634,100 +2914,100 @@
 <context>
     <name>rasterlab::ComparePanel</name>
     <message>
-        <location filename="../app/compare_panel.cpp" line="130"/>
-        <location filename="../app/compare_panel.cpp" line="134"/>
+        <location filename="../app/compare_panel.cpp" line="131"/>
+        <location filename="../app/compare_panel.cpp" line="135"/>
         <source>R %1, G %2, B %3, A %4</source>
         <translation>R %1, G %2, B %3, A %4</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="144"/>
+        <location filename="../app/compare_panel.cpp" line="145"/>
         <source>red</source>
         <translation>vermelho</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="146"/>
+        <location filename="../app/compare_panel.cpp" line="147"/>
         <source>green</source>
         <translation>verde</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="148"/>
+        <location filename="../app/compare_panel.cpp" line="149"/>
         <source>blue</source>
         <translation>azul</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="150"/>
+        <location filename="../app/compare_panel.cpp" line="151"/>
         <source>alpha</source>
         <translation>alfa</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="157"/>
+        <location filename="../app/compare_panel.cpp" line="158"/>
         <source>%1 and %2</source>
         <translation>%1 e %2</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="173"/>
+        <location filename="../app/compare_panel.cpp" line="174"/>
         <source>Side by side</source>
         <translation>Lado a lado</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="174"/>
+        <location filename="../app/compare_panel.cpp" line="175"/>
         <source>Flicker</source>
         <translation>Alternar</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="175"/>
+        <location filename="../app/compare_panel.cpp" line="176"/>
         <source>Difference</source>
         <translation>Diferença</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="177"/>
+        <location filename="../app/compare_panel.cpp" line="178"/>
         <source>Theirs beside ours, one after the other twice a second, or the pixels that differ</source>
         <translation>A deles ao lado da nossa, uma depois da outra duas vezes por segundo, ou os pixels que diferem</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="180"/>
+        <location filename="../app/compare_panel.cpp" line="181"/>
         <source>Differ by more than</source>
         <translation>Diferem em mais de</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="186"/>
+        <location filename="../app/compare_panel.cpp" line="187"/>
         <source>The difference view shows the pixels where some channel differs by more than this (0: every difference)</source>
         <translation>A vista da diferença mostra os pixels em que algum canal difere em mais do que isto (0: toda diferença)</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="191"/>
+        <location filename="../app/compare_panel.cpp" line="192"/>
         <source>Compare Again</source>
         <translation>Comparar de novo</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="194"/>
+        <location filename="../app/compare_panel.cpp" line="195"/>
         <source>The scene changed since the comparison: compare their image with the scene shown now</source>
         <translation>A cena mudou desde a comparação: comparar a imagem deles com a cena mostrada agora</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="218"/>
+        <location filename="../app/compare_panel.cpp" line="219"/>
         <source>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</source>
         <translation>Arquivo &gt; Comparar com imagem... compara um PNG do seu próprio renderizador com a renderização desta cena.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="256"/>
+        <location filename="../app/compare_panel.cpp" line="257"/>
         <source>There is no render to compare with yet.</source>
         <translation>Ainda não há renderização com que comparar.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="343"/>
-        <location filename="../app/compare_panel.cpp" line="346"/>
+        <location filename="../app/compare_panel.cpp" line="344"/>
+        <location filename="../app/compare_panel.cpp" line="347"/>
         <source>Theirs</source>
         <translation>Deles</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="343"/>
-        <location filename="../app/compare_panel.cpp" line="346"/>
+        <location filename="../app/compare_panel.cpp" line="344"/>
+        <location filename="../app/compare_panel.cpp" line="347"/>
         <source>Ours</source>
         <translation>Nossa</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/compare_panel.cpp" line="351"/>
+        <location filename="../app/compare_panel.cpp" line="352"/>
         <source>%n pixel(s) differ by more than %1</source>
         <translation>
             <numerusform>%n pixel difere em mais de %1</numerusform>
@@ -2735,167 +3015,167 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="377"/>
+        <location filename="../app/compare_panel.cpp" line="378"/>
         <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
         <translation>%1 contra a nossa renderização (%2x%3): %4 pixels comparados, %5 diferem (%6%).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="385"/>
+        <location filename="../app/compare_panel.cpp" line="386"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Maior diferença por canal: %1.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="386"/>
+        <location filename="../app/compare_panel.cpp" line="387"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Diferença média por canal, nos pixels que diferem: %1.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="388"/>
+        <location filename="../app/compare_panel.cpp" line="389"/>
         <source>Pixels only one side covers: %1 only ours (our depth buffer), %2 only theirs (not the background).</source>
         <translation>Pixels que só um lado cobre: %1 só nossos (o nosso buffer de profundidade), %2 só deles (não são o fundo).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="394"/>
+        <location filename="../app/compare_panel.cpp" line="395"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>A cena mudou desde esta comparação: Comparar de novo compara a imagem deles com a cena mostrada agora.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="401"/>
+        <location filename="../app/compare_panel.cpp" line="402"/>
         <source>The images are the same.</source>
         <translation>As imagens são iguais.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="403"/>
+        <location filename="../app/compare_panel.cpp" line="404"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnóstico: nenhum dos erros que o RasterLab conhece explica estas diferenças.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="406"/>
+        <location filename="../app/compare_panel.cpp" line="407"/>
         <source>Diagnosis, most likely first:</source>
         <translation>Diagnóstico, o mais provável primeiro:</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="413"/>
+        <location filename="../app/compare_panel.cpp" line="414"/>
         <source>Explains %1% of the differing pixels (%2 of %3).</source>
         <translation>Explica %1% dos pixels que diferem (%2 de %3).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="418"/>
+        <location filename="../app/compare_panel.cpp" line="419"/>
         <source>Evidence: %1</source>
         <translation>Evidência: %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="419"/>
+        <location filename="../app/compare_panel.cpp" line="420"/>
         <source>Check: %1</source>
         <translation>Verifique: %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="421"/>
+        <location filename="../app/compare_panel.cpp" line="422"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>Em (%1, %2): nossa %3, deles %4</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="437"/>
+        <location filename="../app/compare_panel.cpp" line="438"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Escolha um pixel (aqui ou na imagem) para ver a cor deles ao lado da nossa.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="445"/>
+        <location filename="../app/compare_panel.cpp" line="446"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): deles %3, nossa %4.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="452"/>
+        <location filename="../app/compare_panel.cpp" line="453"/>
         <source>minus %1 in %2</source>
         <translation>menos %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="453"/>
+        <location filename="../app/compare_panel.cpp" line="454"/>
         <source>plus %1 in %2</source>
         <translation>mais %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="456"/>
+        <location filename="../app/compare_panel.cpp" line="457"/>
         <source>Their colour is ours.</source>
         <translation>A cor deles é a nossa.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="460"/>
+        <location filename="../app/compare_panel.cpp" line="461"/>
         <source>Their colour is ours %1.</source>
         <translation>A cor deles é a nossa %1.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="462"/>
+        <location filename="../app/compare_panel.cpp" line="463"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>A cena mudou desde a comparação: a iluminação mostrada agora não é a comparada.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="474"/>
+        <location filename="../app/compare_panel.cpp" line="475"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>Nenhum triângulo nosso cobre este pixel: é o fundo.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="478"/>
+        <location filename="../app/compare_panel.cpp" line="479"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>A iluminação deste pixel não é conhecida.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="481"/>
+        <location filename="../app/compare_panel.cpp" line="482"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>Os termos que teriam de mudar são calculados para o modelo de iluminação do curso em sombreamento flat ou Phong; este pixel é sombreado de outro modo (o inspetor de pixel mostra como).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="511"/>
+        <location filename="../app/compare_panel.cpp" line="512"/>
         <source>the ambient term Ia·ka</source>
         <translation>o termo ambiente Ia·ka</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="512"/>
+        <location filename="../app/compare_panel.cpp" line="513"/>
         <source>the diffuse term Il·Od·kd·(N·L)</source>
         <translation>o termo difuso Il·Od·kd·(N·L)</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="513"/>
+        <location filename="../app/compare_panel.cpp" line="514"/>
         <source>the specular term Il·ks·(R·V)^n</source>
         <translation>o termo especular Il·ks·(R·V)^n</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="529"/>
+        <location filename="../app/compare_panel.cpp" line="530"/>
         <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
         <translation>• %1 é 0 no %2 aqui: mudá-lo sozinho não dá a cor deles.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="534"/>
+        <location filename="../app/compare_panel.cpp" line="535"/>
         <source>• %1 would have to be below 0 in %2: not this term alone.</source>
         <translation>• %1 teria de ser menor que 0 no %2: não é este termo sozinho.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="551"/>
+        <location filename="../app/compare_panel.cpp" line="552"/>
         <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
         <translation>• %1 teria de ser %2 em vez de %3, × %4 por canal</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="554"/>
+        <location filename="../app/compare_panel.cpp" line="555"/>
         <source>: the term left out</source>
         <translation>: o termo omitido</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="557"/>
+        <location filename="../app/compare_panel.cpp" line="558"/>
         <source>: that is the term times Od %1</source>
         <translation>: isto é, o termo vezes Od %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="560"/>
+        <location filename="../app/compare_panel.cpp" line="561"/>
         <source>: that is the term without Od %1</source>
         <translation>: isto é, o termo sem Od %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="566"/>
+        <location filename="../app/compare_panel.cpp" line="567"/>
         <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
         <translation>(%1: 255 nas duas imagens, limitado; qualquer valor pelo menos tão alto o dá.)</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="569"/>
+        <location filename="../app/compare_panel.cpp" line="570"/>
         <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
         <translation>Nenhum termo mudado por um fator simples (omitido, vezes Od, sem Od) dá a cor deles: olhe vários termos, ou o que diz o diagnóstico.</translation>
     </message>

@@ -57,12 +57,6 @@ int distance(const Bytes& a, const Bytes& b) {
     return d;
 }
 
-std::string bytesText(const Bytes& b) {
-    std::string text(1, '(');
-    for (int c = 0; c < 4; ++c) text += std::to_string(b[c]) + (c < 3 ? ", " : ")");
-    return text;
-}
-
 Result<Rgba8Image> renderImage(std::shared_ptr<const Scene> scene) {
     auto trace = renderFrame(scene);
     if (!trace) return trace.error();
@@ -249,80 +243,85 @@ std::optional<ShadingModel> sceneModel(const Scene& scene) {
     return same ? std::optional(first) : std::nullopt;
 }
 
-std::string askedModelName(const Scene& scene) {
-    const auto model = sceneModel(scene);
-    return model ? shadingModelName(*model) : "another model";
+Message bytesMessage(const Bytes& b) {
+    return "(%1, %2, %3, %4)"_msg(int(b[0]), int(b[1]), int(b[2]), int(b[3]));
 }
 
-std::string titleOf(const OurFrame& ours, Mistake mistake, ivec2 shift, const Bytes& value) {
+Message titleOf(const OurFrame& ours, Mistake mistake, ivec2 shift, const Bytes& value) {
     const Scene& scene = *ours.trace->scene;
     const RasterRules& rules = scene.rules;
+    const bool truncated = rules.snap == RasterRules::VertexSnap::Truncate;
     switch (mistake) {
         case Mistake::AmbientTimesOd:
-            return "the ambient term multiplied by the object colour: Ia*ka*Od instead of Ia*ka";
+            return "the ambient term multiplied by the object colour: Ia*ka*Od instead of Ia*ka"_msg;
         case Mistake::NormalNotFlipped:
-            return "the normal not turned toward the viewer where V.N < 0";
+            return "the normal not turned toward the viewer where V.N < 0"_msg;
         case Mistake::SpecularWhereRvNegative:
-            return "specular added where R.V < 0 (no check before (R.V)^n)";
+            return "specular added where R.V < 0 (no check before (R.V)^n)"_msg;
         case Mistake::LightBehindNotSkipped:
             return "diffuse and specular computed where N.L < 0 (the light is behind the "
-                   "surface)";
+                   "surface)"_msg;
         case Mistake::NormalNotNormalised:
-            return "the interpolated normal not normalised";
+            return "the interpolated normal not normalised"_msg;
         case Mistake::Gouraud:
         case Mistake::Flat:
         case Mistake::Phong: {
             const char* model = mistake == Mistake::Gouraud ? "gouraud"
                                 : mistake == Mistake::Flat  ? "flat"
                                                             : "phong";
-            return std::string(model) + " shading where " + askedModelName(scene) + " was asked";
+            const auto asked = sceneModel(scene);
+            if (!asked) return "%1 shading where another model was asked"_msg(model);
+            return "%1 shading where %2 was asked"_msg(model, shadingModelName(*asked));
         }
         case Mistake::MirroredLeftRight:
-            return "the image mirrored left-right (x runs the other way)";
+            return "the image mirrored left-right (x runs the other way)"_msg;
         case Mistake::UpsideDown:
-            return "the image upside down (row 0 at the bottom: y not flipped)";
+            return "the image upside down (row 0 at the bottom: y not flipped)"_msg;
         case Mistake::Shifted:
-            return "the image shifted by one pixel: (" + std::to_string(shift.x) + ", " +
-                   std::to_string(shift.y) + ")";
+            return "the image shifted by one pixel: (%1, %2)"_msg(shift.x, shift.y);
         case Mistake::SampleOffset:
             return rules.sampleOffset == 0.0
-                       ? "pixels sampled at their centres (x + 0.5) instead of their corners"
-                       : "pixels sampled at their corners instead of their centres (x + 0.5)";
+                       ? "pixels sampled at their centres (x + 0.5) instead of their corners"_msg
+                       : "pixels sampled at their corners instead of their centres (x + 0.5)"_msg;
         case Mistake::VertexSnap:
-            return std::string("vertex positions ") +
-                   (rules.snap == RasterRules::VertexSnap::Truncate
-                        ? "rounded instead of truncated"
-                        : "truncated instead of rounded") +
-                   (rules.subpixelBits == 0 ? " to whole pixels" : " to the sub-pixel grid");
+            if (rules.subpixelBits == 0)
+                return truncated ? "vertex positions rounded instead of truncated to whole "
+                                   "pixels"_msg
+                                 : "vertex positions truncated instead of rounded to whole "
+                                   "pixels"_msg;
+            return truncated ? "vertex positions rounded instead of truncated to the sub-pixel "
+                               "grid"_msg
+                             : "vertex positions truncated instead of rounded to the sub-pixel "
+                               "grid"_msg;
         case Mistake::FillRule:
             return rules.fill == RasterRules::FillRule::Inclusive
-                       ? "the top-left fill rule where edges are inclusive"
-                       : "inclusive edges where the fill rule is top-left";
+                       ? "the top-left fill rule where edges are inclusive"_msg
+                       : "inclusive edges where the fill rule is top-left"_msg;
         case Mistake::ByteRounding:
             return scene.conventions.rounding == ByteRounding::Truncate
-                       ? "colour bytes rounded instead of truncated (off by one)"
-                       : "colour bytes truncated instead of rounded (off by one)";
+                       ? "colour bytes rounded instead of truncated (off by one)"_msg
+                       : "colour bytes truncated instead of rounded (off by one)"_msg;
         case Mistake::ColourWrap:
-            return "colours above 255 wrap around instead of clamping";
+            return "colours above 255 wrap around instead of clamping"_msg;
         case Mistake::PainterOrder:
-            return "the painter's order (far to near, no depth test) instead of the z-buffer";
+            return "the painter's order (far to near, no depth test) instead of the z-buffer"_msg;
         case Mistake::DepthTies:
             return scene.conventions.depthWinsOnTie
                        ? "z < stored instead of z <= stored in the depth test (ties keep the "
-                         "earlier triangle)"
+                         "earlier triangle)"_msg
                        : "z <= stored instead of z < stored in the depth test (ties go to the "
-                         "later triangle)";
+                         "later triangle)"_msg;
         case Mistake::Background:
-            return "a different background: " + bytesText(value) + " where the scene's is " +
-                   bytesText(backgroundBytes(scene.conventions));
+            return "a different background: %1 where the scene's is %2"_msg(
+                bytesMessage(value), bytesMessage(backgroundBytes(scene.conventions)));
         case Mistake::Alpha:
-            return "alpha " + std::to_string(value[3]) + " on covered pixels instead of 255";
+            return "alpha %1 on covered pixels instead of 255"_msg(int(value[3]));
     }
-    return kIds[static_cast<std::size_t>(mistake)];
+    return {};
 }
 
 // How the hypothesis made its image.
-const char* mechanismOf(Mistake mistake) {
+Message mechanismOf(Mistake mistake) {
     switch (mistake) {
         case Mistake::AmbientTimesOd:
         case Mistake::NormalNotFlipped:
@@ -330,76 +329,77 @@ const char* mechanismOf(Mistake mistake) {
         case Mistake::LightBehindNotSkipped:
         case Mistake::NormalNotNormalised:
             return "our pixels lit again with that formula (the same triangles, barycentrics, "
-                   "P', N, lights and material) give theirs";
+                   "P', N, lights and material) give theirs"_msg;
         case Mistake::Gouraud:
         case Mistake::Flat:
         case Mistake::Phong:
-            return "the scene rendered again in that shading model gives their pixels";
+            return "the scene rendered again in that shading model gives their pixels"_msg;
         case Mistake::MirroredLeftRight:
         case Mistake::UpsideDown:
         case Mistake::Shifted:
-            return "our image moved that way gives their pixels";
+            return "our image moved that way gives their pixels"_msg;
         case Mistake::SampleOffset:
         case Mistake::VertexSnap:
         case Mistake::FillRule:
         case Mistake::DepthTies:
-            return "the scene rendered again with that rule gives their pixels";
+            return "the scene rendered again with that rule gives their pixels"_msg;
         case Mistake::ByteRounding:
         case Mistake::ColourWrap:
-            return "our float colours made bytes that way give their pixels";
+            return "our float colours made bytes that way give their pixels"_msg;
         case Mistake::PainterOrder:
-            return "the scene painted far to near without a depth test gives their pixels";
+            return "the scene painted far to near without a depth test gives their pixels"_msg;
         case Mistake::Background:
-            return "their pixels where no triangle of ours is take that colour";
+            return "their pixels where no triangle of ours is take that colour"_msg;
         case Mistake::Alpha:
-            return "their pixels where a triangle of ours is take that alpha";
+            return "their pixels where a triangle of ours is take that alpha"_msg;
     }
-    return "";
+    return {};
 }
 
 // What to look at in one's code for each mistake.
-const char* hintOf(Mistake mistake) {
+Message hintOf(Mistake mistake) {
     switch (mistake) {
         case Mistake::AmbientTimesOd:
-            return "seed 000's ambient term is Ia*ka, without the object colour Od";
+            return "seed 000's ambient term is Ia*ka, without the object colour Od"_msg;
         case Mistake::NormalNotFlipped:
-            return "seed 000: if V.N < 0, N := -N before the lighting";
+            return "seed 000: if V.N < 0, N := -N before the lighting"_msg;
         case Mistake::SpecularWhereRvNegative:
-            return "seed 000: if R.V < 0, no specular term";
+            return "seed 000: if R.V < 0, no specular term"_msg;
         case Mistake::LightBehindNotSkipped:
-            return "seed 000: if N.L < 0, neither diffuse nor specular";
+            return "seed 000: if N.L < 0, neither diffuse nor specular"_msg;
         case Mistake::NormalNotNormalised:
-            return "the interpolated N is shorter than 1: normalise it before N.L and R";
+            return "the interpolated N is shorter than 1: normalise it before N.L and R"_msg;
         case Mistake::Gouraud:
         case Mistake::Flat:
         case Mistake::Phong:
-            return "check where the lighting is evaluated: per pixel, per vertex or per triangle";
+            return "check where the lighting is evaluated: per pixel, per vertex or per "
+                   "triangle"_msg;
         case Mistake::MirroredLeftRight:
-            return "check the sign of x in the projection or the screen mapping";
+            return "check the sign of x in the projection or the screen mapping"_msg;
         case Mistake::UpsideDown:
-            return "screen row 0 is the top: y = (1 - y_ndc) * height / 2";
+            return "screen row 0 is the top: y = (1 - y_ndc) * height / 2"_msg;
         case Mistake::Shifted:
-            return "check the screen mapping's offsets and the first pixel of each span";
+            return "check the screen mapping's offsets and the first pixel of each span"_msg;
         case Mistake::SampleOffset:
-            return "where a pixel is sampled decides which pixels an edge covers (--rules)";
+            return "where a pixel is sampled decides which pixels an edge covers (--rules)"_msg;
         case Mistake::VertexSnap:
-            return "check how screen coordinates become whole pixels ((int) truncates)";
+            return "check how screen coordinates become whole pixels ((int) truncates)"_msg;
         case Mistake::FillRule:
-            return "the pixels exactly on an edge: which triangle (or both) covers them";
+            return "the pixels exactly on an edge: which triangle (or both) covers them"_msg;
         case Mistake::ByteRounding:
-            return "check how the colour becomes a byte: (int) truncates, + 0.5 rounds";
+            return "check how the colour becomes a byte: (int) truncates, + 0.5 rounds"_msg;
         case Mistake::ColourWrap:
-            return "clamp each channel to 255 before writing it as a byte";
+            return "clamp each channel to 255 before writing it as a byte"_msg;
         case Mistake::PainterOrder:
-            return "keep a depth buffer and write a pixel only when the fragment is nearer";
+            return "keep a depth buffer and write a pixel only when the fragment is nearer"_msg;
         case Mistake::DepthTies:
-            return "the comparison of the depth test: < keeps the first of two equal depths";
+            return "the comparison of the depth test: < keeps the first of two equal depths"_msg;
         case Mistake::Background:
-            return "the colour (and alpha) of the pixels no triangle covers";
+            return "the colour (and alpha) of the pixels no triangle covers"_msg;
         case Mistake::Alpha:
-            return "the alpha written with each shaded pixel";
+            return "the alpha written with each shaded pixel"_msg;
     }
-    return "";
+    return {};
 }
 
 }  // namespace
@@ -693,11 +693,12 @@ Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& 
         }
         if (!best || best->explained <= best->spoiled || best->share < kLeastShare) continue;
         best->mistake = mistake;
-        best->evidence = mechanismOf(mistake);
-        best->evidence +=
+        best->evidence =
             best->spoiled == 0
-                ? std::string("; no pixel that matches now would change")
-                : "; " + std::to_string(best->spoiled) + " pixels that match now would differ";
+                ? "%1; no pixel that matches now would change"_msg(mechanismOf(mistake))
+                : counted(static_cast<long long>(best->spoiled),
+                          "%2; %1 pixel that matches now would differ"_msg,
+                          "%2; %1 pixels that match now would differ"_msg, mechanismOf(mistake));
         best->advice = hintOf(mistake);
         out.diagnosis.push_back(std::move(*best));
     }

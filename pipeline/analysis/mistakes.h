@@ -20,6 +20,7 @@
 #include "diagnostics.h"
 #include "frame_trace.h"
 #include "math.h"
+#include "message.h"
 #include "output_image.h"
 #include "scene.h"
 
@@ -78,9 +79,10 @@ struct PixelExample {
 
 struct Finding {
     Mistake mistake{};
-    std::string title;          // "the ambient term is Ia*ka*Od instead of Ia*ka"
-    std::string evidence;       // how the hypothesis made their pixels, and what it would spoil
-    std::string advice;         // what to look at in one's code
+    // Messages (pipeline/core/message.h), so that the window shows them translated.
+    Message title;              // "the ambient term multiplied by the object colour: ..."
+    Message evidence;           // how the hypothesis made their pixels, and what it would spoil
+    Message advice;             // what to look at in one's code
     std::size_t explained = 0;  // differing pixels it makes match
     double share = 0.0;         // explained / differing
     std::size_t spoiled = 0;    // pixels that match now and would not with the mistake
