@@ -21,6 +21,7 @@
 #include "frame_image_view.h"
 #include "inspection.h"
 #include "main_window.h"
+#include "painted_labels.h"
 #include "pixel_inspector.h"
 #include "replay_builder.h"
 #include "stage_strip.h"
@@ -307,6 +308,36 @@ private slots:
         QVERIFY2(inspector->formulaText().contains(QStringLiteral("70.71")),
                  qPrintable(inspector->formulaText()));
         QCOMPARE(window.currentImage().pixelColor(pixel), QColor(108, 73, 55));
+    }
+
+    // The bars' dashed colour scale (white) never crosses a total's digits: on the goblet's
+    // highlight the red total, 237.4, ends its bar just short of the scale at 255.
+    void inspectorTotalsStayClearOfTheScale() {
+        MainWindow window;
+        window.resize(1400, 900);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openExample(QStringLiteral("goblet")));
+        QVERIFY(waitForReplay(window));
+        window.inspection()->pickPixel(QPoint(352, 148));
+        PixelInspector* inspector = window.pixelInspector();
+        inspector->show();
+        QTRY_VERIFY_WITH_TIMEOUT(inspector->breakdown().has_value(), kTimeoutMs);
+        QCOMPARE(inspector->breakdown()->bytes[0], std::uint8_t(237));
+        auto* bars = inspector->findChild<QWidget*>(QStringLiteral("pixelTermBars"));
+        auto* labels = dynamic_cast<rasterlab::PaintedLabels*>(bars);
+        QVERIFY(bars && labels);
+        int crossedAt = -1;
+        for (int width = 240; width <= 640 && crossedAt < 0; width += 10) {
+            bars->resize(width, bars->height());
+            const QImage image = bars->grab().toImage();
+            for (const QRect& r : labels->labelRects())
+                for (int y = r.top(); y <= r.bottom(); ++y)
+                    for (int x = r.left(); x <= r.right(); ++x)
+                        if (image.rect().contains(x, y) && image.pixelColor(x, y) == Qt::white)
+                            crossedAt = width;
+        }
+        QCOMPARE(crossedAt, -1);
     }
 
     void languageChoiceIsKept() {

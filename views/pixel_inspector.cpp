@@ -1,5 +1,6 @@
 #include "pixel_inspector.h"
 
+#include <QAbstractItemDelegate>
 #include <QApplication>
 #include <QFontDatabase>
 #include <QHBoxLayout>
@@ -10,6 +11,7 @@
 #include <QRegularExpression>
 #include <QSignalBlocker>
 #include <QStyle>
+#include <QStyleOptionViewItem>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -79,7 +81,7 @@ protected:
 
     void paintEvent(QPaintEvent*) override {
         QPainter painter(this);
-        painter.fillRect(rect(), QColor(32, 32, 36));
+        painter.fillRect(rect(), kBackground);
         clearLabels();
         if (m_segments.empty()) return;
         const QFont f = barFont();
@@ -99,6 +101,7 @@ protected:
         const double top = line + 6;
         const std::array<QColor, 3> channelColours{QColor(255, 110, 110), QColor(110, 220, 110),
                                                    QColor(120, 160, 255)};
+        std::array<QPointF, 3> totalsAt;  // where each channel's total is written
         for (int c = 0; c < 3; ++c) {
             const double y = top + c * (barHeight + 6);
             painter.setPen(channelColours[static_cast<std::size_t>(c)]);
@@ -113,16 +116,24 @@ protected:
                 painter.drawLine(QPointF(x + w, y), QPointF(x + w, y + barHeight));
                 x += w;
             }
-            painter.setPen(QColor(230, 230, 230));
-            drawLabel(painter, QRectF(x + 4, y, width() - x - 4, barHeight), Qt::AlignVCenter,
-                      num(m_total[c], 4));
+            totalsAt[static_cast<std::size_t>(c)] = QPointF(x + 4, y);
         }
-        // The colour scale: what reaches it or goes beyond becomes byte 255.
+        // The colour scale: what reaches it or goes beyond becomes byte 255. The totals go
+        // over it on the background's colour, so that the line never crosses their digits.
         const double scaleX = left + double(m_scale) * unit;
         const double bottom = top + 3 * (barHeight + 6) - 6;
         painter.setPen(QPen(QColor(255, 255, 255), 1.0, Qt::DashLine));
         painter.drawLine(QPointF(scaleX, top - 3), QPointF(scaleX, bottom + 3));
         painter.setPen(QColor(230, 230, 230));
+        for (int c = 0; c < 3; ++c) {
+            const QString total = num(m_total[c], 4);
+            const QPointF at = totalsAt[static_cast<std::size_t>(c)];
+            painter.fillRect(
+                QRectF(at.x() - 2, at.y(), metrics.horizontalAdvance(total) + 4, barHeight),
+                kBackground);
+            drawLabel(painter, QRectF(at.x(), at.y(), width() - at.x(), barHeight),
+                      Qt::AlignVCenter, total);
+        }
         const QString scaleText = m_scale == 255.0f
                                       ? QStringLiteral("255")
                                       : PixelInspector::tr("%1 = byte 255").arg(num(m_scale));
@@ -141,6 +152,8 @@ protected:
     }
 
 private:
+    static constexpr QColor kBackground{32, 32, 36};
+
     QFont barFont() const {
         QFont f = font();
         f.setPointSizeF(m_presentation ? 12.0 : 8.0);
@@ -563,6 +576,9 @@ void PixelInspector::fitColumns() {
     static const QRegularExpression space(QStringLiteral("\\s+"));
     // least: a colour down to a few digits ("(255…"); fewest: down to its swatch.
     std::vector<int> whole(columns), least(columns), fewest(columns);
+    QStyleOptionViewItem cellOption;
+    cellOption.initFrom(m_table->viewport());
+    cellOption.decorationSize = m_table->iconSize();
     for (int c = 0; c < columns; ++c) {
         const QString& title = m_titles[c];
         whole[c] = titleMetrics.horizontalAdvance(title) + titleMargin;
@@ -575,7 +591,12 @@ void PixelInspector::fitColumns() {
             if (!item || item->text().isEmpty()) continue;
             const QFontMetrics cell(item->font());
             const int icon = item->icon().isNull() ? 0 : m_table->iconSize().width() + 4;
-            const int all = cell.horizontalAdvance(item->text()) + margin + icon + 2;
+            // The delegate's own measure, which knows the style's margins and icon spacing.
+            const int all = std::max(cell.horizontalAdvance(item->text()) + margin + icon,
+                                     m_table->itemDelegate()
+                                         ->sizeHint(cellOption, m_table->model()->index(r, c))
+                                         .width()) +
+                            2;
             whole[c] = std::max(whole[c], all);
             if (icon) {  // the bytes whole in the cell's tooltip
                 least[c] = std::max(
