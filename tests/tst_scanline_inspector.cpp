@@ -18,6 +18,7 @@
 #include "image_io.h"
 #include "inspection.h"
 #include "output_image.h"
+#include "painted_labels.h"
 #include "pixel_inspector.h"
 #include "renderer.h"
 #include "replay.h"
@@ -157,6 +158,7 @@ private slots:
     void blackExplained();
     void fallbackWithoutReplay();
     void imageAtTheCursorIsReadOnly();
+    void labelsOnATallThinTriangle();
     void screenshots();
 };
 
@@ -809,6 +811,49 @@ void TestScanlineInspector::screenshots() {
             QCoreApplication::processEvents();
             scan.grab().save(dir + QStringLiteral("/scanline-%1-presenting.png").arg(name));
             pixel.grab().save(dir + QStringLiteral("/pixel-%1-presenting.png").arg(name));
+        }
+    }
+}
+
+// In presentation mode (12-point numbers) on a triangle about 20 pixels wide and 540 tall the
+// cells are small: the column numbers keep a space between them, the row numbers do not
+// meet, and the crossings' values are whole inside the canvas (not cut at the grid's edge).
+void TestScanlineInspector::labelsOnATallThinTriangle() {
+    // The axis camera at 800x600: screen x = (1 - x/z) 400, y = (1 - y/z) 300.
+    rl::Scene scene = testing::makeScene(
+        testing::axisCamera(),
+        testing::makeMesh({{0.0, 0.9, 1.0}, {0.03, -0.9, 1.0}, {-0.02, 0.5, 1.0}}, {{0, 1, 2}}),
+        800, 600);
+    Inspection inspection;
+    inspection.setPresentation(true);
+    ScanlineView view(&inspection);
+    view.show();
+    show(inspection, render(std::make_shared<const rl::Scene>(std::move(scene))));
+    inspection.pickPixel(QPoint(399, 300));
+    auto* canvas = view.findChild<QWidget*>(QStringLiteral("scanlineCanvas"));
+    auto* labels = dynamic_cast<const rasterlab::PaintedLabels*>(canvas);
+    QVERIFY(canvas && labels);
+    for (const QSize size : {QSize(360, 420), QSize(520, 640), QSize(700, 500)}) {
+        view.resize(size);
+        QVERIFY(view.model() && view.model()->row);
+        canvas->grab();  // paints it
+        const QList<QRect> rects = labels->labelRects();
+        QVERIFY2(rects.size() >= 6, qPrintable(QString::number(rects.size())));  // numbers,
+        // both crossings and the legend
+        const int space = canvas->fontMetrics().horizontalAdvance(u' ');
+        for (qsizetype i = 0; i < rects.size(); ++i) {
+            QVERIFY2(canvas->rect().contains(rects[i]),
+                     qPrintable(QStringLiteral("%1x%2: label %3 leaves the canvas")
+                                    .arg(size.width())
+                                    .arg(size.height())
+                                    .arg(i)));
+            for (qsizetype j = i + 1; j < rects.size(); ++j)
+                QVERIFY2(!rects[i].adjusted(-space / 2, 0, space / 2, 0).intersects(rects[j]),
+                         qPrintable(QStringLiteral("%1x%2: labels %3 and %4 meet")
+                                        .arg(size.width())
+                                        .arg(size.height())
+                                        .arg(i)
+                                        .arg(j)));
         }
     }
 }

@@ -15,6 +15,7 @@
 #include "depth_test.h"
 #include "inspection.h"
 #include "number_text.h"
+#include "painted_labels.h"
 #include "shading.h"
 
 namespace rasterlab {
@@ -172,7 +173,7 @@ ScanlineModel scanlineModel(const rl::FrameTrace& frame, std::uint32_t triangle,
 // The triangle on the pixel grid around the scanline: the pixels written so far in their
 // colour, the span's pixels, the sample points, the three edges, the scanline and its
 // crossings. Each square is a pixel, drawn around its sample point.
-class ScanlineCanvas : public QWidget {
+class ScanlineCanvas : public QWidget, public PaintedLabels {
 public:
     explicit ScanlineCanvas(QWidget* parent) : QWidget(parent) {
         setMinimumSize(220, 170);
@@ -203,10 +204,17 @@ private:
     // (clipped to the grid); the row and column numbers; the legend.
     void paintPixels(QPainter& painter, const Grid& grid) const;
     void paintTriangle(QPainter& painter, const Grid& grid) const;
-    void paintScanline(QPainter& painter, const Grid& grid, const QFontMetrics& metrics) const;
+    void paintScanline(QPainter& painter, const Grid& grid) const;
+    // The crossings' values, unclipped, between the row numbers and the right edge.
+    void paintCrossings(QPainter& painter, const Grid& grid, double marginLeft,
+                        const QFontMetrics& metrics);
     void paintNumbers(QPainter& painter, const Grid& grid, double marginLeft,
-                      const QFontMetrics& metrics) const;
-    void paintLegend(QPainter& painter, const Grid& grid, const QFontMetrics& metrics) const;
+                      const QFontMetrics& metrics);
+    // The legend's entries from `top`, on as many lines as the width needs: their left x and
+    // line; the lines taken.
+    std::vector<std::pair<double, int>> legendPlaces(const QFontMetrics& metrics,
+                                                     int* lines = nullptr) const;
+    void paintLegend(QPainter& painter, const Grid& grid, const QFontMetrics& metrics);
 
     std::optional<ScanlineModel> m_model;
     QRect m_window;
@@ -243,6 +251,7 @@ struct ScanlineCanvas::Grid {
 void ScanlineCanvas::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     painter.fillRect(rect(), QColor(32, 32, 36));
+    clearLabels();
     if (!m_model || m_window.isEmpty()) {
         painter.setPen(QColor(200, 200, 200));
         painter.drawText(
@@ -260,7 +269,9 @@ void ScanlineCanvas::paintEvent(QPaintEvent*) {
     // Room for the row numbers on the left, the column numbers on top, the legend below.
     const double marginLeft = metrics.horizontalAdvance(QStringLiteral("0000")) + 6;
     const double marginTop = metrics.height() + 4;
-    const double marginBottom = metrics.height() + 8;
+    int legendLines = 1;
+    legendPlaces(metrics, &legendLines);
+    const double marginBottom = metrics.height() * legendLines + 8;
     Grid grid;
     grid.cell = std::max(2.0, std::min((width() - marginLeft - 6) / cols,
                                        (height() - marginTop - marginBottom) / rows));
@@ -276,9 +287,10 @@ void ScanlineCanvas::paintEvent(QPaintEvent*) {
     painter.save();
     painter.setClipRect(grid.rect);
     paintTriangle(painter, grid);
-    if (m_model->row) paintScanline(painter, grid, metrics);
+    if (m_model->row) paintScanline(painter, grid);
     painter.restore();
     paintNumbers(painter, grid, marginLeft, metrics);
+    if (m_model->row) paintCrossings(painter, grid, marginLeft, metrics);
     paintLegend(painter, grid, metrics);
 }
 
@@ -363,10 +375,8 @@ void ScanlineCanvas::paintTriangle(QPainter& painter, const Grid& grid) const {
 }
 
 // The scanline through the samples of row y and its crossings with the two edges.
-void ScanlineCanvas::paintScanline(QPainter& painter, const Grid& grid,
-                                   const QFontMetrics& metrics) const {
+void ScanlineCanvas::paintScanline(QPainter& painter, const Grid& grid) const {
     const ScanlineModel& m = *m_model;
-    const QRectF& gridRect = grid.rect;
     const double v = m.row->y + m_offset;
     painter.setPen(QPen(kSpanColour, m_lineWidth, Qt::DashLine));
     painter.drawLine(grid.at(grid.u0, v), grid.at(grid.u0 + m_window.width(), v));
@@ -386,75 +396,130 @@ void ScanlineCanvas::paintScanline(QPainter& painter, const Grid& grid,
         painter.setBrush(colour);
         painter.drawPolygon(diamond);
     }
-    // The crossings' values, above the line, kept inside the grid.
+}
+
+void ScanlineCanvas::paintCrossings(QPainter& painter, const Grid& grid, double marginLeft,
+                                    const QFontMetrics& metrics) {
+    const ScanlineModel& m = *m_model;
+    const double v = m.row->y + m_offset;
+    const double d = m_lineWidth * 2.6;
     painter.setPen(Qt::white);
     const QString leftText = QStringLiteral("x_left %1").arg(num(m.row->xLeft, 4));
     const QString rightText = QStringLiteral("x_right %1").arg(num(m.row->xRight, 4));
-    const double above = grid.at(0, v).y() - d - 3;
+    // Beside its crossing, kept right of the row numbers and inside the canvas.
+    const auto place = [&](double x, const QString& text) {
+        const double w = metrics.horizontalAdvance(text);
+        return std::max(marginLeft + 2, std::min(x, width() - w - 4));
+    };
+    const double line = grid.at(0, v).y();
     const double leftX =
-        std::clamp(grid.at(m.row->xLeft, v).x() - metrics.horizontalAdvance(leftText) - d,
-                   gridRect.left() + 2, gridRect.right() - metrics.horizontalAdvance(leftText) - 2);
-    const double rightX = std::clamp(grid.at(m.row->xRight, v).x() + d, gridRect.left() + 2,
-                                     gridRect.right() - metrics.horizontalAdvance(rightText) - 2);
+        place(grid.at(m.row->xLeft, v).x() - metrics.horizontalAdvance(leftText) - d, leftText);
+    const double rightX = place(grid.at(m.row->xRight, v).x() + d, rightText);
     const auto label = [&](double x, double y, const QString& text) {
         const QRectF box(x - 2, y - metrics.ascent() - 1, metrics.horizontalAdvance(text) + 4,
                          metrics.height() + 2);
         painter.fillRect(box, QColor(0, 0, 0, 170));
-        painter.drawText(QPointF(x, y), text);
+        drawLabel(painter, QPointF(x, y), text);
     };
-    label(leftX, above, leftText);
+    label(leftX, line - d - 3 - metrics.descent(), leftText);
     // Too close to the left one: below the line.
-    const bool fits = rightX > leftX + metrics.horizontalAdvance(leftText) + 4;
-    label(rightX, fits ? above : grid.at(0, v).y() + d + metrics.ascent() + 3, rightText);
+    const bool fits = rightX > leftX + metrics.horizontalAdvance(leftText) + 6;
+    label(rightX, fits ? line - d - 3 - metrics.descent() : line + d + 3 + metrics.ascent(),
+          rightText);
 }
 
-// Row and column numbers: every one when there is room, else every fifth.
+namespace {
+
+// The first of 1, 2, 5, 10, 20, 50 ... whose multiples of `cell` leave `room` between numbers.
+int numberStep(double cell, double room) {
+    for (int step = 1;; step *= 10)
+        for (const int k : {1, 2, 5})
+            if (step * k * cell >= room || step * k >= 100000) return step * k;
+}
+
+}  // namespace
+
+// Row and column numbers, as many as fit without meeting; the current row's always.
 void ScanlineCanvas::paintNumbers(QPainter& painter, const Grid& grid, double marginLeft,
-                                  const QFontMetrics& metrics) const {
+                                  const QFontMetrics& metrics) {
     const ScanlineModel& m = *m_model;
     const bool hasRow = m.row.has_value();
-    painter.setPen(QColor(190, 190, 200));
-    const int every = grid.cell >= metrics.horizontalAdvance(QStringLiteral("0000")) ? 1 : 5;
+    const int every = numberStep(grid.cell, metrics.height() + 2);
     for (int r = 0; r < m_window.height(); ++r) {
         const int y = m_window.top() + r;
         const bool current = hasRow && y == m.row->y;
-        // Every fifth row, but not beside the current one (whose number is always there).
-        if (!current && (y % every != 0 || (hasRow && every > 1 && std::abs(y - m.row->y) < 2)))
+        // Not beside the current row, whose number would meet it.
+        if (!current && (y % every != 0 ||
+                         (hasRow && std::abs(y - m.row->y) * grid.cell < metrics.height() + 2)))
             continue;
-        const QRectF box(0, grid.originY + r * grid.cell, marginLeft - 4, grid.cell);
-        if (hasRow && y == m.row->y) painter.setPen(kSpanColour);
-        painter.drawText(box, Qt::AlignRight | Qt::AlignVCenter | Qt::TextDontClip,
-                         QString::number(y));
-        painter.setPen(QColor(190, 190, 200));
+        // Centred on its row, but above the legend (the current row's moved up to fit).
+        const double h = std::max(grid.cell, double(metrics.height()));
+        double top = grid.originY + (r + 0.5) * grid.cell - h / 2;
+        if (top + h > grid.rect.bottom() + 2) {
+            if (!current) continue;
+            top = grid.rect.bottom() + 2 - h;
+        }
+        const QRectF box(0, top, marginLeft - 4, h);
+        painter.setPen(current ? kSpanColour : QColor(190, 190, 200));
+        drawLabel(painter, box, Qt::AlignRight | Qt::AlignVCenter | Qt::TextDontClip,
+                  QString::number(y));
     }
+    painter.setPen(QColor(190, 190, 200));
+    const QString widest =
+        QString::number(std::max(std::abs(m_window.left()), std::abs(m_window.right())));
     const int everyColumn =
-        grid.cell >= metrics.horizontalAdvance(QStringLiteral("000")) + 2 ? 1 : 5;
+        numberStep(grid.cell, metrics.horizontalAdvance(widest) + metrics.horizontalAdvance(u' '));
     for (int c = 0; c < m_window.width(); ++c) {
         const int x = m_window.left() + c;
         if (x % everyColumn != 0) continue;
         const QString label = QString::number(x);
-        painter.drawText(
+        drawLabel(
+            painter,
             QPointF(grid.originX + (c + 0.5) * grid.cell - metrics.horizontalAdvance(label) / 2.0,
                     grid.originY - metrics.descent() - 3),
             label);
     }
 }
 
-// The legend: which colour is which edge.
-void ScanlineCanvas::paintLegend(QPainter& painter, const Grid& grid,
-                                 const QFontMetrics& metrics) const {
+namespace {
+
+std::array<QString, 3> edgeNames() {
+    return {ScanlineView::tr("long edge"), ScanlineView::tr("upper edge"),
+            ScanlineView::tr("lower edge")};
+}
+
+}  // namespace
+
+std::vector<std::pair<double, int>> ScanlineCanvas::legendPlaces(const QFontMetrics& metrics,
+                                                                 int* lines) const {
+    std::vector<std::pair<double, int>> places;
     double x = 8.0;
-    const double y = grid.rect.bottom() + 4;
-    const std::array<QString, 3> names{ScanlineView::tr("long edge"),
-                                       ScanlineView::tr("upper edge"),
-                                       ScanlineView::tr("lower edge")};
+    int line = 0;
+    for (const QString& name : edgeNames()) {
+        const double w = 18 + metrics.horizontalAdvance(name);
+        if (x > 8.0 && x + w > width() - 4) {
+            x = 8.0;
+            ++line;
+        }
+        places.emplace_back(x, line);
+        x += w + 12;
+    }
+    if (lines) *lines = line + 1;
+    return places;
+}
+
+// The legend: which colour is which edge.
+void ScanlineCanvas::paintLegend(QPainter& painter, const Grid& grid, const QFontMetrics& metrics) {
+    const std::array<QString, 3> names = edgeNames();
+    const auto places = legendPlaces(metrics);
     for (std::size_t k = 0; k < 3; ++k) {
+        const double x = places[k].first;
+        const double y = grid.rect.bottom() + 4 + places[k].second * metrics.height();
         painter.setPen(QPen(kEdgeColours[k], m_lineWidth * 1.4));
         painter.drawLine(QPointF(x, y + metrics.height() / 2.0),
                          QPointF(x + 14, y + metrics.height() / 2.0));
         painter.setPen(QColor(220, 220, 220));
-        painter.drawText(QPointF(x + 18, y + metrics.ascent()), names[k]);
-        x += 18 + metrics.horizontalAdvance(names[k]) + 12;
+        drawLabel(painter, QPointF(x + 18, y + metrics.ascent()), names[k]);
     }
 }
 
