@@ -80,6 +80,7 @@
 #include "frame_image_view.h"
 #include "inspection.h"
 #include "main_window.h"
+#include "mistakes.h"
 #include "normals_view.h"
 #include "painter_view.h"
 #include "pixel_inspector.h"
@@ -687,6 +688,31 @@ int main(int argc, char* argv[]) {
         std::printf("%s %s\n", ok ? "wrote" : "FAILED", qPrintable(path));
         check(ok);
         window.statusBar()->clearMessage();  // "Exported <the path on this machine>"
+    }
+
+    // Compare with Image on the goblet: "their" image is ours with the ambient times Od (the
+    // guide's worked example), their pixel (435, 140) picked.
+    if (!openExample(window, "goblet")) return 1;
+    {
+        QTemporaryDir theirDir;
+        const QString theirs = theirDir.filePath(QStringLiteral("theirs.png"));
+        auto ours = rl::renderOurFrame(window.currentFrame()->scene);
+        if (!ours) return 1;
+        auto mistake = rl::imageWithMistake(ours.value(), rl::Mistake::AmbientTimesOd);
+        if (!mistake || !mistake->has_value()) return 1;
+        const rl::Rgba8Image& image = **mistake;
+        if (!QImage(image.rgba.data(), image.width, image.height, image.width * 4,
+                    QImage::Format_RGBA8888)
+                 .save(theirs, "PNG")) {
+            std::fprintf(stderr, "FAILED: could not write %s\n", qPrintable(theirs));
+            return 1;
+        }
+        if (!window.compareWithImage(theirs)) return 1;
+        inspection->pickPixel(QPoint(435, 140));
+        QTest::qWait(50);
+        check(saveDock(dock(window, "compareDock"), file(QStringLiteral("compare")),
+                       QSize(900, 700)));
+        dock(window, "compareDock")->close();
     }
 
     // A command file of the repository: no course camera, nothing lit; three stages skipped.
