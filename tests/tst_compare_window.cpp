@@ -3,6 +3,8 @@
 // dock must rank that mistake first, count the differing pixels as rasterlab-cli compare does,
 // show their colour at the pixel picked and the Phong term that would have to change; flicker
 // and the threshold work; and a bad image gives the command line's message and keeps the scene.
+// Every mistake the diagnosis knows is ranked first in the dock, and in Portuguese the
+// diagnosis is Portuguese.
 #include <QtTest>
 
 #include <QDockWidget>
@@ -65,6 +67,8 @@ private slots:
     void badImages();
     void compareAgainAfterAChange();
     void diagnosisInPortuguese();
+    void everyMistakeInTheDock_data();
+    void everyMistakeInTheDock();
 
 private:
     ComparePanel* panel() const { return m_window.comparePanel(); }
@@ -265,6 +269,52 @@ void TestCompareWindow::diagnosisInPortuguese() {
                                           "objeto Od")),
              qPrintable(text));
     QVERIFY2(!text.contains(QStringLiteral("multiplied")), qPrintable(text));
+}
+
+void TestCompareWindow::everyMistakeInTheDock_data() {
+    QTest::addColumn<int>("mistake");
+    QTest::addColumn<QString>("lesson");
+    for (std::size_t m = 0; m < rl::kMistakeCount; ++m) {
+        const auto kind = static_cast<rl::Mistake>(m);
+        // The goblet is lit per pixel and has no two triangles at one depth: Phong and depth
+        // ties show on the sphere lesson (flat shading, shared edges at equal depths).
+        const bool sphere = kind == rl::Mistake::Phong || kind == rl::Mistake::DepthTies;
+        const QString lesson = QString::fromLatin1(sphere ? "sphere" : "goblet");
+        QTest::newRow(qPrintable(QStringLiteral("%1 on %2").arg(rl::mistakeId(kind), lesson)))
+            << int(m) << lesson;
+    }
+}
+
+// Each mistake the diagnosis knows, made by the diagnosis's own hypothesis on a shipped
+// lesson: the dock ranks it first, explaining every differing pixel, and lists it first in
+// its text.
+void TestCompareWindow::everyMistakeInTheDock() {
+    QFETCH(int, mistake);
+    QFETCH(QString, lesson);
+    const auto kind = static_cast<rl::Mistake>(mistake);
+    QVERIFY(m_window.openExample(lesson));
+    QVERIFY(QTest::qWaitFor([&] { return ready(m_window); }, kTimeoutMs));
+    auto ours = rl::renderOurFrame(m_window.currentFrame()->scene);
+    QVERIFY(ours);
+    const std::array<std::uint8_t, 4> value = kind == rl::Mistake::Alpha
+                                                  ? std::array<std::uint8_t, 4>{0, 0, 0, 128}
+                                                  : std::array<std::uint8_t, 4>{40, 40, 40, 255};
+    auto theirs = rl::imageWithMistake(ours.value(), kind, rl::ivec2(0, 1), value);
+    QVERIFY(theirs);
+    QVERIFY2(theirs->has_value() && **theirs != ours->image, "the mistake changes nothing");
+    const QString path = m_dir.filePath(QStringLiteral("mistake.png"));
+    QVERIFY(savePng(**theirs, path));
+    QVERIFY(m_window.compareWithImage(path));
+    const rl::ImageComparison* c = panel()->comparison();
+    QVERIFY(c && !c->diagnosis.empty());
+    QString ranking;
+    for (const rl::Finding& f : c->diagnosis)
+        ranking += QStringLiteral("%1 %2; ").arg(rl::mistakeId(f.mistake)).arg(f.share, 0, 'f', 4);
+    QVERIFY2(c->diagnosis.front().mistake == kind, qPrintable(ranking));
+    QCOMPARE(c->diagnosis.front().share, 1.0);
+    const QString first =
+        QStringLiteral("1. ") + QString::fromStdString(c->diagnosis.front().title.english());
+    QVERIFY2(panel()->diagnosisText().contains(first), qPrintable(panel()->diagnosisText()));
 }
 
 QTEST_MAIN(TestCompareWindow)
