@@ -42,6 +42,7 @@
 #include "frame_image_view.h"
 #include "inspection.h"
 #include "main_window.h"
+#include "mistakes.h"
 #include "painted_labels.h"
 #include "render_controller.h"
 #include "translators.h"
@@ -459,8 +460,10 @@ bool waitForReplay(MainWindow& window) {
 }
 
 // The pixel on the knot's lower band picked, stepped by scanline to past the middle of the
-// frame: every view has something to show.
-void giveViewsContent(MainWindow& window) {
+// frame, and the frame compared with itself with the ambient times Od (the Compare dock,
+// hidden until then): every view has something to show.
+void giveViewsContent(MainWindow& window, const QString& theirs) {
+    QVERIFY(window.compareWithImage(theirs));
     rasterlab::Inspection* inspection = window.inspection();
     inspection->pickPixel(QPoint(400, 350));
     inspection->setGranularity(rl::StepGranularity::Scanline);
@@ -542,8 +545,21 @@ void TestLegibility::everyDock() {
         window.setPresentationMode(true);
         settle();
     }
-    giveViewsContent(window);
+    const QTemporaryDir dir;
+    const QString theirs = dir.filePath(QStringLiteral("theirs.png"));
+    {
+        auto ours = rl::renderOurFrame(window.currentFrame()->scene);
+        QVERIFY(ours);
+        auto image = rl::imageWithMistake(ours.value(), rl::Mistake::AmbientTimesOd);
+        QVERIFY(image && image->has_value());
+        const rl::Rgba8Image& i = **image;
+        QVERIFY(QImage(i.rgba.data(), i.width, i.height, i.width * 4, QImage::Format_RGBA8888)
+                    .save(theirs, "PNG"));
+    }
+    giveViewsContent(window, theirs);
     settle();
+    QVERIFY(
+        shownDocks(window).contains(window.findChild<QDockWidget*>(QStringLiteral("compareDock"))));
 
     Checker check(QStringLiteral("window"));
     // The window's least size, not only the size it took: a window manager may not shrink it.
