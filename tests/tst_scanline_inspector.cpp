@@ -158,7 +158,8 @@ private slots:
     void blackExplained();
     void fallbackWithoutReplay();
     void imageAtTheCursorIsReadOnly();
-    void labelsOnATallThinTriangle();
+    void labelsStayApartAndWhole_data();
+    void labelsStayApartAndWhole();
     void screenshots();
 };
 
@@ -815,45 +816,70 @@ void TestScanlineInspector::screenshots() {
     }
 }
 
-// In presentation mode (12-point numbers) on a triangle about 20 pixels wide and 540 tall the
-// cells are small: the column numbers keep a space between them, the row numbers do not
-// meet, and the crossings' values are whole inside the canvas (not cut at the grid's edge).
-void TestScanlineInspector::labelsOnATallThinTriangle() {
+// In presentation mode (12-point numbers) the numbers keep a space between them, the row
+// numbers stay off the legend, and the crossings' values are whole inside the canvas (not cut
+// at the grid's edge) and meet nothing: on a triangle about 20 pixels wide and 540 tall
+// (small cells) and on one 600 wide, on its first, middle and last scanline, at three sizes.
+void TestScanlineInspector::labelsStayApartAndWhole_data() {
+    QTest::addColumn<QList<rl::dvec3>>("corners");
+    QTest::addColumn<int>("row");  // 0 first, 1 middle, 2 last covered row
     // The axis camera at 800x600: screen x = (1 - x/z) 400, y = (1 - y/z) 300.
+    const QList<rl::dvec3> tall = {{0.0, 0.9, 1.0}, {0.03, -0.9, 1.0}, {-0.02, 0.5, 1.0}};
+    const QList<rl::dvec3> wide = {{0.75, 0.6, 1.0}, {-0.75, 0.5, 1.0}, {0.0, -0.7, 1.0}};
+    for (int row = 0; row < 3; ++row) {
+        const char* where = row == 0 ? "first" : row == 1 ? "middle" : "last";
+        QTest::addRow("tall, %s row", where) << tall << row;
+        QTest::addRow("wide, %s row", where) << wide << row;
+    }
+}
+
+void TestScanlineInspector::labelsStayApartAndWhole() {
+    QFETCH(QList<rl::dvec3>, corners);
+    QFETCH(int, row);
     rl::Scene scene = testing::makeScene(
-        testing::axisCamera(),
-        testing::makeMesh({{0.0, 0.9, 1.0}, {0.03, -0.9, 1.0}, {-0.02, 0.5, 1.0}}, {{0, 1, 2}}),
+        testing::axisCamera(), testing::makeMesh({corners[0], corners[1], corners[2]}, {{0, 1, 2}}),
         800, 600);
     Inspection inspection;
     inspection.setPresentation(true);
     ScanlineView view(&inspection);
     view.show();
-    show(inspection, render(std::make_shared<const rl::Scene>(std::move(scene))));
-    inspection.pickPixel(QPoint(399, 300));
+    const auto frame = render(std::make_shared<const rl::Scene>(std::move(scene)));
+    show(inspection, frame);
+    // The covered rows, and the middle pixel of the one asked.
+    const rl::Image<std::uint32_t>& ids = frame->depth->triangle;
+    std::vector<int> rows;
+    for (int y = 0; y < ids.height(); ++y)
+        for (int x = 0; x < ids.width(); ++x)
+            if (ids.at(x, y) != rl::kNoTriangle) {
+                rows.push_back(y);
+                break;
+            }
+    QVERIFY(rows.size() > 100);
+    const int y = row == 0 ? rows.front() : row == 1 ? rows[rows.size() / 2] : rows.back();
+    std::vector<int> xs;
+    for (int x = 0; x < ids.width(); ++x)
+        if (ids.at(x, y) != rl::kNoTriangle) xs.push_back(x);
+    inspection.pickPixel(QPoint(xs[xs.size() / 2], y));
     auto* canvas = view.findChild<QWidget*>(QStringLiteral("scanlineCanvas"));
     auto* labels = dynamic_cast<const rasterlab::PaintedLabels*>(canvas);
     QVERIFY(canvas && labels);
     for (const QSize size : {QSize(360, 420), QSize(520, 640), QSize(700, 500)}) {
         view.resize(size);
         QVERIFY(view.model() && view.model()->row);
+        QCOMPARE(view.model()->row->y, y);
         canvas->grab();  // paints it
         const QList<QRect> rects = labels->labelRects();
-        QVERIFY2(rects.size() >= 6, qPrintable(QString::number(rects.size())));  // numbers,
-        // both crossings and the legend
+        // Row and column numbers, both crossings and the three legend entries.
+        QVERIFY2(rects.size() >= 7, qPrintable(QString::number(rects.size())));
         const int space = canvas->fontMetrics().horizontalAdvance(u' ');
+        const QString at = QStringLiteral("%1x%2").arg(size.width()).arg(size.height());
         for (qsizetype i = 0; i < rects.size(); ++i) {
             QVERIFY2(canvas->rect().contains(rects[i]),
-                     qPrintable(QStringLiteral("%1x%2: label %3 leaves the canvas")
-                                    .arg(size.width())
-                                    .arg(size.height())
-                                    .arg(i)));
+                     qPrintable(QStringLiteral("%1: label %2 leaves the canvas").arg(at).arg(i)));
             for (qsizetype j = i + 1; j < rects.size(); ++j)
-                QVERIFY2(!rects[i].adjusted(-space / 2, 0, space / 2, 0).intersects(rects[j]),
-                         qPrintable(QStringLiteral("%1x%2: labels %3 and %4 meet")
-                                        .arg(size.width())
-                                        .arg(size.height())
-                                        .arg(i)
-                                        .arg(j)));
+                QVERIFY2(
+                    !rects[i].adjusted(-space / 2, 0, space / 2, 0).intersects(rects[j]),
+                    qPrintable(QStringLiteral("%1: labels %2 and %3 meet").arg(at).arg(i).arg(j)));
         }
     }
 }

@@ -205,13 +205,14 @@ private:
     void paintPixels(QPainter& painter, const Grid& grid) const;
     void paintTriangle(QPainter& painter, const Grid& grid) const;
     void paintScanline(QPainter& painter, const Grid& grid) const;
-    // The crossings' values, unclipped, between the row numbers and the right edge.
+    // The crossings' values, unclipped, between the row numbers and the right edge, above the
+    // legend; drawn before the numbers, which give way to them.
     void paintCrossings(QPainter& painter, const Grid& grid, double marginLeft,
                         const QFontMetrics& metrics);
     void paintNumbers(QPainter& painter, const Grid& grid, double marginLeft,
                       const QFontMetrics& metrics);
-    // The legend's entries from `top`, on as many lines as the width needs: their left x and
-    // line; the lines taken.
+    // Each legend entry's left x and line, on as many lines as the width needs; `*lines`
+    // gets the number of lines.
     std::vector<std::pair<double, int>> legendPlaces(const QFontMetrics& metrics,
                                                      int* lines = nullptr) const;
     void paintLegend(QPainter& painter, const Grid& grid, const QFontMetrics& metrics);
@@ -289,8 +290,8 @@ void ScanlineCanvas::paintEvent(QPaintEvent*) {
     paintTriangle(painter, grid);
     if (m_model->row) paintScanline(painter, grid);
     painter.restore();
-    paintNumbers(painter, grid, marginLeft, metrics);
     if (m_model->row) paintCrossings(painter, grid, marginLeft, metrics);
+    paintNumbers(painter, grid, marginLeft, metrics);
     paintLegend(painter, grid, metrics);
 }
 
@@ -403,29 +404,37 @@ void ScanlineCanvas::paintCrossings(QPainter& painter, const Grid& grid, double 
     const ScanlineModel& m = *m_model;
     const double v = m.row->y + m_offset;
     const double d = m_lineWidth * 2.6;
-    painter.setPen(Qt::white);
-    const QString leftText = QStringLiteral("x_left %1").arg(num(m.row->xLeft, 4));
-    const QString rightText = QStringLiteral("x_right %1").arg(num(m.row->xRight, 4));
-    // Beside its crossing, kept right of the row numbers and inside the canvas.
-    const auto place = [&](double x, const QString& text) {
-        const double w = metrics.horizontalAdvance(text);
-        return std::max(marginLeft + 2, std::min(x, width() - w - 4));
-    };
     const double line = grid.at(0, v).y();
-    const double leftX =
-        place(grid.at(m.row->xLeft, v).x() - metrics.horizontalAdvance(leftText) - d, leftText);
-    const double rightX = place(grid.at(m.row->xRight, v).x() + d, rightText);
-    const auto label = [&](double x, double y, const QString& text) {
-        const QRectF box(x - 2, y - metrics.ascent() - 1, metrics.horizontalAdvance(text) + 4,
-                         metrics.height() + 2);
+    const QRectF bounds(marginLeft, 0, width() - marginLeft, grid.rect.bottom() + 2);
+    painter.setPen(Qt::white);
+    // Beside its crossing, above the line or else below it (or a line further out), the
+    // first place that meets nothing drawn; inside `bounds`.
+    const auto label = [&](double crossing, bool left, const QString& text) {
+        const double w = metrics.horizontalAdvance(text) + 4, h = metrics.height() + 2;
+        const double x =
+            std::max(bounds.left() + 2,
+                     std::min(left ? crossing - d - w : crossing + d, bounds.right() - w - 2));
+        const auto inside = [&](double top) {  // a pixel inside, for the gap around it
+            return std::clamp(top, bounds.top() + 1,
+                              std::max(bounds.top() + 1, bounds.bottom() - h - 1));
+        };
+        const double above = line - d - 2 - h, below = line + d + 2;
+        QRectF box(x, inside(above), w, h);
+        for (const double top : {above, below, above - h, below + h}) {
+            const QRectF candidate(x, inside(top), w, h);
+            if (isFree(candidate.adjusted(-1, -1, 1, 1), bounds)) {
+                box = candidate;
+                break;
+            }
+        }
         painter.fillRect(box, QColor(0, 0, 0, 170));
-        drawLabel(painter, QPointF(x, y), text);
+        recordLabel(box);
+        painter.drawText(QPointF(box.left() + 2, box.top() + 1 + metrics.ascent()), text);
     };
-    label(leftX, line - d - 3 - metrics.descent(), leftText);
-    // Too close to the left one: below the line.
-    const bool fits = rightX > leftX + metrics.horizontalAdvance(leftText) + 6;
-    label(rightX, fits ? line - d - 3 - metrics.descent() : line + d + 3 + metrics.ascent(),
-          rightText);
+    label(grid.at(m.row->xLeft, v).x(), true,
+          QStringLiteral("x_left %1").arg(num(m.row->xLeft, 4)));
+    label(grid.at(m.row->xRight, v).x(), false,
+          QStringLiteral("x_right %1").arg(num(m.row->xRight, 4)));
 }
 
 namespace {
@@ -439,45 +448,43 @@ int numberStep(double cell, double room) {
 
 }  // namespace
 
-// Row and column numbers, as many as fit without meeting; the current row's always.
+// Row and column numbers, as many as fit without meeting each other or the crossings'
+// values; the current row's always.
 void ScanlineCanvas::paintNumbers(QPainter& painter, const Grid& grid, double marginLeft,
                                   const QFontMetrics& metrics) {
     const ScanlineModel& m = *m_model;
     const bool hasRow = m.row.has_value();
-    const int every = numberStep(grid.cell, metrics.height() + 2);
-    for (int r = 0; r < m_window.height(); ++r) {
-        const int y = m_window.top() + r;
-        const bool current = hasRow && y == m.row->y;
-        // Not beside the current row, whose number would meet it.
-        if (!current && (y % every != 0 ||
-                         (hasRow && std::abs(y - m.row->y) * grid.cell < metrics.height() + 2)))
-            continue;
-        // Centred on its row, but above the legend (the current row's moved up to fit).
-        const double h = std::max(grid.cell, double(metrics.height()));
-        double top = grid.originY + (r + 0.5) * grid.cell - h / 2;
-        if (top + h > grid.rect.bottom() + 2) {
-            if (!current) continue;
-            top = grid.rect.bottom() + 2 - h;
-        }
-        const QRectF box(0, top, marginLeft - 4, h);
-        painter.setPen(current ? kSpanColour : QColor(190, 190, 200));
-        drawLabel(painter, box, Qt::AlignRight | Qt::AlignVCenter | Qt::TextDontClip,
-                  QString::number(y));
+    const double h = metrics.height();
+    // Row numbers: right-aligned left of the grid, centred on their row, above the legend.
+    const QRectF rowBounds(0, 0, marginLeft, grid.rect.bottom() + 2);
+    const auto rowBox = [&](int y) {
+        const double centre = grid.originY + (y - m_window.top() + 0.5) * grid.cell;
+        return QRectF(0, std::min(centre - h / 2, rowBounds.bottom() - h - 1), marginLeft - 4, h);
+    };
+    const auto rowNumber = [&](int y, const QColor& colour) {
+        painter.setPen(colour);
+        drawLabel(painter, rowBox(y), Qt::AlignRight | Qt::AlignVCenter, QString::number(y));
+    };
+    if (hasRow && m_window.contains(m_window.left(), m.row->y)) rowNumber(m.row->y, kSpanColour);
+    const int every = numberStep(grid.cell, h + 2);
+    for (int y = m_window.top(); y <= m_window.bottom(); ++y) {
+        if (y % every != 0 || (hasRow && y == m.row->y)) continue;
+        if (isFree(rowBox(y).adjusted(0, -1, 0, 1), rowBounds)) rowNumber(y, QColor(190, 190, 200));
     }
+    // Column numbers, centred above their column, inside the canvas.
     painter.setPen(QColor(190, 190, 200));
     const QString widest =
         QString::number(std::max(std::abs(m_window.left()), std::abs(m_window.right())));
     const int everyColumn =
         numberStep(grid.cell, metrics.horizontalAdvance(widest) + metrics.horizontalAdvance(u' '));
-    for (int c = 0; c < m_window.width(); ++c) {
-        const int x = m_window.left() + c;
+    for (int x = m_window.left(); x <= m_window.right(); ++x) {
         if (x % everyColumn != 0) continue;
         const QString label = QString::number(x);
-        drawLabel(
-            painter,
-            QPointF(grid.originX + (c + 0.5) * grid.cell - metrics.horizontalAdvance(label) / 2.0,
-                    grid.originY - metrics.descent() - 3),
-            label);
+        const QPointF baseline(grid.originX + (x - m_window.left() + 0.5) * grid.cell -
+                                   metrics.horizontalAdvance(label) / 2.0,
+                               grid.originY - metrics.descent() - 3);
+        if (isFree(textBox(painter, baseline, label).adjusted(-1, 0, 1, 0), rect()))
+            drawLabel(painter, baseline, label);
     }
 }
 
