@@ -254,12 +254,12 @@ void TestCompareWindow::compareAgainAfterAChange() {
 void TestCompareWindow::diagnosisInPortuguese() {
     rasterlab::Translators translators;
     translators.install(QStringLiteral("pt_BR"));
+    const auto english = qScopeGuard([&] { translators.install(QStringLiteral("en")); });
     MainWindow window;
     QVERIFY(window.openExample(QStringLiteral("goblet")));
     QVERIFY(QTest::qWaitFor([&] { return ready(window); }, kTimeoutMs));
     QVERIFY(window.compareWithImage(m_theirPath));
     const QString text = window.comparePanel()->diagnosisText();
-    translators.install(QStringLiteral("en"));
     QVERIFY2(text.contains(QStringLiteral("1. o termo ambiente multiplicado pela cor do objeto: "
                                           "Ia*ka*Od em vez de Ia*ka")),
              qPrintable(text));

@@ -1752,7 +1752,7 @@
     <message>
         <location filename="../app/pipeline_messages.cpp" line="517"/>
         <source>diffuse and specular computed where N.L &lt; 0 (the light is behind the surface)</source>
-        <translation>difusa e especular calculadas onde N.L &lt; 0 (a luz está atrás da superfície)</translation>
+        <translation>termos difuso e especular calculados onde N.L &lt; 0 (a luz está atrás da superfície)</translation>
     </message>
     <message>
         <location filename="../app/pipeline_messages.cpp" line="520"/>
@@ -1787,12 +1787,12 @@
     <message>
         <location filename="../app/pipeline_messages.cpp" line="526"/>
         <source>pixels sampled at their centres (x + 0.5) instead of their corners</source>
-        <translation>pixels amostrados nos centros (x + 0,5) em vez dos cantos</translation>
+        <translation>pixels amostrados nos centros (x + 0.5) em vez dos cantos</translation>
     </message>
     <message>
         <location filename="../app/pipeline_messages.cpp" line="528"/>
         <source>pixels sampled at their corners instead of their centres (x + 0.5)</source>
-        <translation>pixels amostrados nos cantos em vez dos centros (x + 0,5)</translation>
+        <translation>pixels amostrados nos cantos em vez dos centros (x + 0.5)</translation>
     </message>
     <message>
         <location filename="../app/pipeline_messages.cpp" line="530"/>
@@ -1817,12 +1817,12 @@
     <message>
         <location filename="../app/pipeline_messages.cpp" line="536"/>
         <source>the top-left fill rule where edges are inclusive</source>
-        <translation>a regra de preenchimento superior-esquerda onde as arestas são inclusivas</translation>
+        <translation>a regra de preenchimento top-left onde as arestas são inclusivas</translation>
     </message>
     <message>
         <location filename="../app/pipeline_messages.cpp" line="537"/>
         <source>inclusive edges where the fill rule is top-left</source>
-        <translation>arestas inclusivas onde a regra de preenchimento é superior-esquerda</translation>
+        <translation>arestas inclusivas onde a regra de preenchimento é top-left</translation>
     </message>
     <message>
         <location filename="../app/pipeline_messages.cpp" line="538"/>
@@ -1837,12 +1837,12 @@
     <message>
         <location filename="../app/pipeline_messages.cpp" line="540"/>
         <source>colours above 255 wrap around instead of clamping</source>
-        <translation>cores acima de 255 dão a volta em vez de saturar</translation>
+        <translation>cores acima de 255 dão a volta em vez de serem limitadas a 255</translation>
     </message>
     <message>
         <location filename="../app/pipeline_messages.cpp" line="541"/>
         <source>the painter&apos;s order (far to near, no depth test) instead of the z-buffer</source>
-        <translation>a ordem do pintor (do longe para o perto, sem teste de profundidade) em vez do z-buffer</translation>
+        <translation>a ordem do pintor (do mais distante ao mais próximo, sem teste de profundidade) em vez do z-buffer</translation>
     </message>
     <message>
         <location filename="../app/pipeline_messages.cpp" line="543"/>
@@ -1892,7 +1892,7 @@
     <message>
         <location filename="../app/pipeline_messages.cpp" line="559"/>
         <source>the scene painted far to near without a depth test gives their pixels</source>
-        <translation>a cena pintada do longe para o perto sem teste de profundidade dá os pixels deles</translation>
+        <translation>a cena pintada do mais distante ao mais próximo, sem teste de profundidade, dá os pixels deles</translation>
     </message>
     <message>
         <location filename="../app/pipeline_messages.cpp" line="561"/>
@@ -1922,7 +1922,7 @@
     <message>
         <location filename="../app/pipeline_messages.cpp" line="566"/>
         <source>seed 000: if N.L &lt; 0, neither diffuse nor specular</source>
-        <translation>seed 000: se N.L &lt; 0, nem difusa nem especular</translation>
+        <translation>seed 000: se N.L &lt; 0, nem termo difuso nem especular</translation>
     </message>
     <message>
         <location filename="../app/pipeline_messages.cpp" line="567"/>
@@ -1947,7 +1947,7 @@
     <message>
         <location filename="../app/pipeline_messages.cpp" line="574"/>
         <source>check the screen mapping&apos;s offsets and the first pixel of each span</source>
-        <translation>verifique os deslocamentos do mapeamento para a tela e o primeiro pixel de cada trecho</translation>
+        <translation>verifique os deslocamentos do mapeamento para a tela e o primeiro pixel de cada segmento</translation>
     </message>
     <message>
         <location filename="../app/pipeline_messages.cpp" line="576"/>
