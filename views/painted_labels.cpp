@@ -45,4 +45,20 @@ QRectF PaintedLabels::freePlace(const QRectF& rect, const QRectF& bounds,
     return rect;
 }
 
+std::vector<FlowPlace> flowPlaces(std::span<const double> widths, double left, double right,
+                                  double gap) {
+    std::vector<FlowPlace> places;
+    double x = left;
+    int line = 0;
+    for (const double w : widths) {
+        if (x > left && x + w > right) {
+            x = left;
+            ++line;
+        }
+        places.push_back({x, line});
+        x += w + gap;
+    }
+    return places;
+}
+
 }  // namespace rasterlab

@@ -12,6 +12,8 @@
 #include <QString>
 
 #include <initializer_list>
+#include <span>
+#include <vector>
 
 class QPainter;
 
@@ -42,6 +44,16 @@ protected:
 private:
     QList<QRect> m_rects;
 };
+
+// Items of the given widths laid out from `left`, `gap` apart, on a new line wherever the
+// next would pass `right` (a legend on as many lines as the width needs): each one's left x
+// and line, from 0.
+struct FlowPlace {
+    double x = 0.0;
+    int line = 0;
+};
+std::vector<FlowPlace> flowPlaces(std::span<const double> widths, double left, double right,
+                                  double gap = 12.0);
 
 // The rectangle a text covers when drawn with its baseline at `baseline`.
 QRectF textBox(const QPainter& painter, QPointF baseline, const QString& text);

@@ -163,18 +163,15 @@ private:
     // Each legend entry's top left: after the one before, or at the start of a new line.
     std::vector<std::pair<const Segment*, QPointF>> legendPlaces(const QFontMetrics& metrics,
                                                                  double top) const {
+        std::vector<double> widths;
+        for (const Segment& s : m_segments)
+            widths.push_back(14 + metrics.horizontalAdvance(s.name));
+        const auto flow =
+            flowPlaces(widths, metrics.horizontalAdvance(QStringLiteral("G")) + 10, width() - 2);
         std::vector<std::pair<const Segment*, QPointF>> places;
-        const double left = metrics.horizontalAdvance(QStringLiteral("G")) + 10;
-        double x = left, y = top;
-        for (const Segment& s : m_segments) {
-            const double w = 14 + metrics.horizontalAdvance(s.name);
-            if (x > left && x + w > width() - 2) {
-                x = left;
-                y += metrics.height();
-            }
-            places.emplace_back(&s, QPointF(x, y));
-            x += w + 12;
-        }
+        for (std::size_t i = 0; i < flow.size(); ++i)
+            places.emplace_back(&m_segments[i],
+                                QPointF(flow[i].x, top + flow[i].line * metrics.height()));
         return places;
     }
 

@@ -211,11 +211,9 @@ private:
                         const QFontMetrics& metrics);
     void paintNumbers(QPainter& painter, const Grid& grid, double marginLeft,
                       const QFontMetrics& metrics);
-    // Each legend entry's left x and line, on as many lines as the width needs; `*lines`
-    // gets the number of lines.
-    std::vector<std::pair<double, int>> legendPlaces(const QFontMetrics& metrics,
-                                                     int* lines = nullptr) const;
-    void paintLegend(QPainter& painter, const Grid& grid, const QFontMetrics& metrics);
+    // The legend's entries at `places` (flowPlaces) below the grid.
+    void paintLegend(QPainter& painter, const Grid& grid, const QFontMetrics& metrics,
+                     const std::vector<FlowPlace>& places);
 
     std::optional<ScanlineModel> m_model;
     QRect m_window;
@@ -233,6 +231,18 @@ const QColor kUpperColour(90, 200, 255);
 const QColor kLowerColour(235, 100, 235);
 const QColor kSpanColour(255, 221, 51);
 const std::array<QColor, 3> kEdgeColours{kLongColour, kUpperColour, kLowerColour};
+
+std::array<QString, 3> edgeNames() {
+    return {ScanlineView::tr("long edge"), ScanlineView::tr("upper edge"),
+            ScanlineView::tr("lower edge")};
+}
+
+// Each legend entry's width: its line, then its name.
+std::vector<double> legendWidths(const QFontMetrics& metrics) {
+    std::vector<double> widths;
+    for (const QString& name : edgeNames()) widths.push_back(18 + metrics.horizontalAdvance(name));
+    return widths;
+}
 
 }  // namespace
 
@@ -270,9 +280,8 @@ void ScanlineCanvas::paintEvent(QPaintEvent*) {
     // Room for the row numbers on the left, the column numbers on top, the legend below.
     const double marginLeft = metrics.horizontalAdvance(QStringLiteral("0000")) + 6;
     const double marginTop = metrics.height() + 4;
-    int legendLines = 1;
-    legendPlaces(metrics, &legendLines);
-    const double marginBottom = metrics.height() * legendLines + 8;
+    const std::vector<FlowPlace> legend = flowPlaces(legendWidths(metrics), 8.0, width() - 4);
+    const double marginBottom = metrics.height() * (legend.back().line + 1) + 8;
     Grid grid;
     grid.cell = std::max(2.0, std::min((width() - marginLeft - 6) / cols,
                                        (height() - marginTop - marginBottom) / rows));
@@ -292,7 +301,7 @@ void ScanlineCanvas::paintEvent(QPaintEvent*) {
     painter.restore();
     if (m_model->row) paintCrossings(painter, grid, marginLeft, metrics);
     paintNumbers(painter, grid, marginLeft, metrics);
-    paintLegend(painter, grid, metrics);
+    paintLegend(painter, grid, metrics, legend);
 }
 
 // The pixels as they are at the cursor, the span, the pixel at the cursor and the samples.
@@ -488,40 +497,13 @@ void ScanlineCanvas::paintNumbers(QPainter& painter, const Grid& grid, double ma
     }
 }
 
-namespace {
-
-std::array<QString, 3> edgeNames() {
-    return {ScanlineView::tr("long edge"), ScanlineView::tr("upper edge"),
-            ScanlineView::tr("lower edge")};
-}
-
-}  // namespace
-
-std::vector<std::pair<double, int>> ScanlineCanvas::legendPlaces(const QFontMetrics& metrics,
-                                                                 int* lines) const {
-    std::vector<std::pair<double, int>> places;
-    double x = 8.0;
-    int line = 0;
-    for (const QString& name : edgeNames()) {
-        const double w = 18 + metrics.horizontalAdvance(name);
-        if (x > 8.0 && x + w > width() - 4) {
-            x = 8.0;
-            ++line;
-        }
-        places.emplace_back(x, line);
-        x += w + 12;
-    }
-    if (lines) *lines = line + 1;
-    return places;
-}
-
 // The legend: which colour is which edge.
-void ScanlineCanvas::paintLegend(QPainter& painter, const Grid& grid, const QFontMetrics& metrics) {
+void ScanlineCanvas::paintLegend(QPainter& painter, const Grid& grid, const QFontMetrics& metrics,
+                                 const std::vector<FlowPlace>& places) {
     const std::array<QString, 3> names = edgeNames();
-    const auto places = legendPlaces(metrics);
     for (std::size_t k = 0; k < 3; ++k) {
-        const double x = places[k].first;
-        const double y = grid.rect.bottom() + 4 + places[k].second * metrics.height();
+        const double x = places[k].x;
+        const double y = grid.rect.bottom() + 4 + places[k].line * metrics.height();
         painter.setPen(QPen(kEdgeColours[k], m_lineWidth * 1.4));
         painter.drawLine(QPointF(x, y + metrics.height() / 2.0),
                          QPointF(x + 14, y + metrics.height() / 2.0));

@@ -234,6 +234,13 @@ Result<std::optional<Rgba8Image>> renderChanged(const Scene& scene, Change chang
     return std::optional<Rgba8Image>(std::move(image.value()));
 }
 
+// The shading model a Gouraud, Flat or Phong mistake renders with.
+ShadingModel modelOf(Mistake mistake) {
+    return mistake == Mistake::Gouraud ? ShadingModel::Gouraud
+           : mistake == Mistake::Flat  ? ShadingModel::Flat
+                                       : ShadingModel::Phong;
+}
+
 // The one shading model every draw uses, if they agree.
 std::optional<ShadingModel> sceneModel(const Scene& scene) {
     if (scene.draws.empty()) return std::nullopt;
@@ -266,9 +273,7 @@ Message titleOf(const OurFrame& ours, Mistake mistake, ivec2 shift, const Bytes&
         case Mistake::Gouraud:
         case Mistake::Flat:
         case Mistake::Phong: {
-            const char* model = mistake == Mistake::Gouraud ? "gouraud"
-                                : mistake == Mistake::Flat  ? "flat"
-                                                            : "phong";
+            const char* model = shadingModelName(modelOf(mistake));
             const auto asked = sceneModel(scene);
             if (!asked) return "%1 shading where another model was asked"_msg(model);
             return "%1 shading where %2 was asked"_msg(model, shadingModelName(*asked));
@@ -492,9 +497,7 @@ Result<std::optional<Rgba8Image>> imageWithMistake(const OurFrame& ours, Mistake
         case Mistake::Gouraud:
         case Mistake::Flat:
         case Mistake::Phong: {
-            const ShadingModel model = mistake == Mistake::Gouraud ? ShadingModel::Gouraud
-                                       : mistake == Mistake::Flat  ? ShadingModel::Flat
-                                                                   : ShadingModel::Phong;
+            const ShadingModel model = modelOf(mistake);
             if (!scene.lit() || paintersAlgorithm(scene) || sceneModel(scene) == model)
                 return Optional();
             auto rendered = renderImage(withModel(scene, model));

@@ -53,9 +53,11 @@ ViewTransform ViewTransformStage::run(const Scene& scene, const CameraBasis& bas
 
 namespace {
 
-// The triangle nearest the point l of those it lies above (its foot inside them), within limit.
+// The triangle nearest light's point l of those it lies above (its foot inside them), within
+// limit.
 std::optional<LightOnSurface> nearestTriangleBelow(const Scene& scene, const ViewTransform& view,
-                                                   const dvec3& l, double limit) {
+                                                   std::size_t light, const dvec3& l,
+                                                   double limit) {
     std::optional<LightOnSurface> nearest;
     for (std::size_t d = 0; d < scene.draws.size(); ++d) {
         if (!scene.draws[d].mesh) continue;
@@ -76,7 +78,7 @@ std::optional<LightOnSurface> nearestTriangleBelow(const Scene& scene, const Vie
             const bool inside = glm::dot(glm::cross(b - a, foot - a), n) >= 0.0 &&
                                 glm::dot(glm::cross(c - b, foot - b), n) >= 0.0 &&
                                 glm::dot(glm::cross(a - c, foot - c), n) >= 0.0;
-            if (inside) nearest = LightOnSurface{0, d, t, height, limit};
+            if (inside) nearest = LightOnSurface{light, d, t, height, limit};
         }
     }
     return nearest;
@@ -98,10 +100,8 @@ std::vector<LightOnSurface> lightsOnSurfaces(const Scene& scene, const ViewTrans
         const double limit = kLightSurfaceRatio * glm::length(l);
         if (glm::any(glm::lessThan(l, low - limit)) || glm::any(glm::greaterThan(l, high + limit)))
             continue;
-        if (auto nearest = nearestTriangleBelow(scene, view, l, limit)) {
-            nearest->light = i;
+        if (auto nearest = nearestTriangleBelow(scene, view, i, l, limit))
             found.push_back(*nearest);
-        }
     }
     return found;
 }
