@@ -144,6 +144,7 @@ private slots:
     void gramSchmidtStepsByHand();
     void stepsRevealTheDrawing();
     void orbitCamera();
+    void labelsKeepToTheirVectors();
     void nearlyParallelIsIllConditioned();
     void rejectedCameraShowsUntilNextFrame();
     void hw2SceneSkipsTheStage();
@@ -260,6 +261,46 @@ void TestGeometryViews::orbitCamera() {
     QCOMPARE(canvas->yaw(), yaw);
     QCOMPARE(canvas->pitch(), pitch);
     QCOMPARE(canvas->zoom(), 1.0);
+}
+
+void TestGeometryViews::labelsKeepToTheirVectors() {
+    // The default scene's camera (|N| = 503.3, the trefoil filling the frustum) in the dock's
+    // sizes at 1280x720 and 1920x1080, and the canvas's own.
+    const auto frame = defaultFrame();
+    for (const QSize size : {QSize(262, 172), QSize(300, 320), QSize(520, 420)}) {
+        Shown<CameraBasisView> shown(kBasisSize);
+        auto& [inspection, view] = shown;
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        inspection.setFrame(frame, QImage());
+        rasterlab::CameraBasisCanvas* canvas = view.canvas();
+        canvas->resize(size);
+        canvas->repaint();
+        const auto placed = canvas->placedLabels();
+        QStringList texts;
+        for (const auto& label : placed) texts << label.text;
+        for (const char* text : {"C", "N", "V", "U", "N given, |N| = 503.3", "V given, |V| = 1",
+                                 "X", "Y", "Z", "frustum"})
+            QVERIFY2(texts.contains(QLatin1String(text)), text);
+        for (qsizetype i = 0; i < placed.size(); ++i) {
+            const auto& label = placed[i];
+            const QString where =
+                QStringLiteral("%1 at %2x%3").arg(label.text).arg(size.width()).arg(size.height());
+            QVERIFY2(QRectF(canvas->rect()).contains(label.box), qPrintable(where));
+            for (qsizetype j = 0; j < i; ++j)
+                QVERIFY2(!label.box.intersects(placed[j].box),
+                         qPrintable(where + QStringLiteral(" meets ") + placed[j].text));
+            // The camera and the basis the step made are labelled first, at their tips; a
+            // label pushed further away is joined to its point.
+            const QPointF nearest(
+                std::clamp(label.anchor.x(), label.box.left(), label.box.right()),
+                std::clamp(label.anchor.y(), label.box.top(), label.box.bottom()));
+            const double away =
+                std::hypot(nearest.x() - label.anchor.x(), nearest.y() - label.anchor.y());
+            if (label.text.size() == 1 && QStringLiteral("CNVU").contains(label.text))
+                QVERIFY2(away <= 12.0, qPrintable(where));
+            QCOMPARE(label.leader, away > 12.0);
+        }
+    }
 }
 
 void TestGeometryViews::nearlyParallelIsIllConditioned() {

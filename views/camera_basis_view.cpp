@@ -249,9 +249,15 @@ QPointF CameraBasisCanvas::toWidget(const dvec3& pWorld) const {
     return projector()(pWorld);
 }
 
-void CameraBasisCanvas::placeLabel(QPainter& painter, const QPointF& at, const QPointF& awayFrom,
-                                   const QString& text, const QColor& colour) {
-    QPointF d = at - awayFrom;
+void CameraBasisCanvas::queueLabel(const QPointF& at, const QPointF& awayFrom, const QString& text,
+                                   const QColor& colour, LabelRank rank) {
+    m_pending.push_back({at, awayFrom, text, colour, rank});
+}
+
+void CameraBasisCanvas::placeLabel(QPainter& painter, const PendingLabel& label) {
+    const QPointF& at = label.at;
+    const QString& text = label.text;
+    QPointF d = at - label.awayFrom;
     const double length = std::hypot(d.x(), d.y());
     d = length > 0.0 ? d / length : QPointF(1.0, 0.0);
     const QFontMetricsF metrics(painter.font());
@@ -282,14 +288,25 @@ void CameraBasisCanvas::placeLabel(QPainter& painter, const QPointF& at, const Q
         }
         if (found) break;
     }
+    // Pushed away from its point: a thin line from the point to the label's nearest edge.
+    const QPointF nearest(std::clamp(at.x(), box.left(), box.right()),
+                          std::clamp(at.y(), box.top(), box.bottom()));
+    const bool leader = std::hypot(nearest.x() - at.x(), nearest.y() - at.y()) > 12.0;
+    if (leader) {
+        QColor line = label.colour;
+        line.setAlpha(170);
+        painter.setPen(QPen(line, 1.0, Qt::DotLine));
+        painter.drawLine(at, nearest);
+    }
     // A dark backing keeps the label readable over the point cloud and the lines.
     painter.setPen(Qt::NoPen);
-    painter.setBrush(QColor(kBackground.red(), kBackground.green(), kBackground.blue(), 170));
+    painter.setBrush(QColor(kBackground.red(), kBackground.green(), kBackground.blue(), 215));
     painter.drawRoundedRect(box, 3, 3);
     painter.setBrush(Qt::NoBrush);
-    painter.setPen(colour);
+    painter.setPen(label.colour);
     painter.drawText(box, Qt::AlignCenter, text);
     recordLabel(box);
+    m_placed.append({text, at, box, leader});
 }
 
 void CameraBasisCanvas::paintEvent(QPaintEvent*) {
@@ -297,6 +314,8 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
     painter.fillRect(rect(), kBackground);
     painter.setRenderHint(QPainter::Antialiasing, true);
     m_drawn.clear();
+    m_pending.clear();
+    m_placed.clear();
     clearLabels();
     // The button's place is taken: no label under it.
     if (m_reset->isVisible()) recordLabel(QRectF(m_reset->geometry()).adjusted(-2, -2, 2, 2));
@@ -348,7 +367,7 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
             to = from + (longest > 0.0 ? tripod[k] * (28.0 / longest) : QPointF());
         }
         drawArrow(painter, from, to, axisColours[k], std::max(1.0, w - 0.5));
-        placeLabel(painter, to, from, axisNames[k], axisColours[k]);
+        queueLabel(to, from, axisNames[k], axisColours[k], LabelRank::Axes);
     }
     m_drawn << QStringLiteral("axes");
 
@@ -387,11 +406,12 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
         const QRectF windowBox = window.boundingRect();
         if (std::max(windowBox.width(), windowBox.height()) > 24.0) {
             const QPointF top = topmost(window);
-            placeLabel(painter, top, top + QPointF(0, 1), tr("window (d = %1)").arg(number(pic.d)),
-                       kFrustum);
+            queueLabel(top, top + QPointF(0, 1), tr("window (d = %1)").arg(number(pic.d)), kFrustum,
+                       LabelRank::Frustum);
         }
         const QPointF farTop = topmost(far);
-        placeLabel(painter, farTop, farTop + QPointF(0, 1), tr("frustum"), faint.lighter(150));
+        queueLabel(farTop, farTop + QPointF(0, 1), tr("frustum"), faint.lighter(150),
+                   LabelRank::Frustum);
     }
 
     // The vectors, from C; the given ones dashed (their scale: CameraBasisPicture).
@@ -399,7 +419,8 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
                      Qt::PenStyle style, const QString& item) {
         const QPointF tip = project(b.c + scale * v);
         drawArrow(painter, c, tip, colour, style == Qt::SolidLine ? w + 1.0 : w, style);
-        placeLabel(painter, tip, c, label, colour);
+        queueLabel(tip, c, label, colour,
+                   style == Qt::DashLine ? LabelRank::Given : LabelRank::Basis);
         m_drawn << item;
     };
     const double sn = pic.nGivenScale, sv = pic.vGivenScale;
@@ -430,8 +451,12 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
     painter.setPen(QPen(Qt::black, 1.0));
     painter.setBrush(kText);
     painter.drawEllipse(c, 3.0 + w, 3.0 + w);
-    placeLabel(painter, c, c + QPointF(1, -1), QStringLiteral("C"), kText);
+    queueLabel(c, c + QPointF(1, -1), QStringLiteral("C"), kText, LabelRank::Camera);
     m_drawn << QStringLiteral("C");
+
+    std::stable_sort(m_pending.begin(), m_pending.end(),
+                     [](const PendingLabel& x, const PendingLabel& y) { return x.rank < y.rank; });
+    for (const PendingLabel& label : m_pending) placeLabel(painter, label);
 }
 
 void CameraBasisCanvas::mousePressEvent(QMouseEvent* event) {

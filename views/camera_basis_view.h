@@ -65,6 +65,15 @@ public:
     // "(V.N) N", "V'", "V", "U", "window", "frustum", "cloud"), in drawing order.
     const QStringList& drawnItems() const { return m_drawn; }
     int cloudPointCount() const { return static_cast<int>(m_picture.cloud.size()); }
+    // Each label of the last paint: the point it names, where it went, and whether a
+    // leader line joins them (it was pushed away from the point by the labels before it).
+    struct PlacedLabel {
+        QString text;
+        QPointF anchor;
+        QRectF box;
+        bool leader = false;
+    };
+    const QList<PlacedLabel>& placedLabels() const { return m_placed; }
 
     double yaw() const { return m_yaw; }
     double pitch() const { return m_pitch; }
@@ -99,15 +108,28 @@ private:
         QPointF operator()(const rl::dvec3& pWorld) const;
     };
     Projector projector() const;
+    // Labels are placed after everything is drawn, the lowest rank first, so that the
+    // vectors of the step shown keep the places at their tips and no line crosses a label.
+    enum class LabelRank { Camera, Basis, Given, Frustum, Axes };
+    struct PendingLabel {
+        QPointF at, awayFrom;
+        QString text;
+        QColor colour;
+        LabelRank rank;
+    };
+    void queueLabel(const QPointF& at, const QPointF& awayFrom, const QString& text,
+                    const QColor& colour, LabelRank rank);
     // A label beside a point, pushed away from where the arrow came from, and moved to a
-    // free place nearby when the labels drawn before (or the button) are there.
-    void placeLabel(QPainter& painter, const QPointF& at, const QPointF& awayFrom,
-                    const QString& text, const QColor& colour);
+    // free place nearby when the labels placed before (or the button) are there; a leader
+    // line then joins it to its point.
+    void placeLabel(QPainter& painter, const PendingLabel& label);
 
     CameraBasisPicture m_picture;
     QToolButton* m_reset = nullptr;
     QString m_message;
     QStringList m_drawn;
+    std::vector<PendingLabel> m_pending;
+    QList<PlacedLabel> m_placed;
     double m_lineWidth = 1.5;
     double m_yaw = 0.0, m_pitch = 0.0, m_zoom = 1.0;
     bool m_dragging = false;
