@@ -138,6 +138,10 @@ private:
     void paintSide(QPainter& painter, const QRectF& area);
     void paintScreen(QPainter& painter, const QRectF& area);
     void label(QPainter& painter, QPointF at, const QString& text, const QColor& colour);
+    // A sentence wrapped to the area's width, its last line at `bottom`, moved up off the
+    // labels already drawn.
+    void note(QPainter& painter, const QRectF& area, double bottom, const QString& text,
+              const QColor& colour);
 
     std::optional<NearClipModel> m_model;
     std::shared_ptr<const rl::FrameTrace> m_frame;
@@ -170,6 +174,26 @@ void NearClipCanvas::label(QPainter& painter, QPointF at, const QString& text,
     painter.fillRect(box, QColor(0, 0, 0, 170));
     painter.setPen(colour);
     painter.drawText(at, text);
+}
+
+void NearClipCanvas::note(QPainter& painter, const QRectF& area, double bottom, const QString& text,
+                          const QColor& colour) {
+    const int flags = Qt::AlignLeft | Qt::TextWordWrap;
+    const QRectF lines = painter.boundingRect(
+        QRectF(area.left() + 4, area.top(), area.width() - 8, area.height()), flags, text);
+    QRectF box(area.left() + 2, bottom - lines.height() - 1, lines.width() + 4, lines.height() + 2);
+    for (bool moved = true; moved && box.top() > area.top();) {
+        moved = false;
+        for (const QRect& used : labelRects())
+            if (QRectF(used).intersects(box)) {
+                box.moveBottom(used.y() - 2);
+                moved = true;
+            }
+    }
+    recordLabel(box);
+    painter.fillRect(box, QColor(0, 0, 0, 170));
+    painter.setPen(colour);
+    painter.drawText(box.adjusted(2, 1, -2, -1), flags, text);
 }
 
 void NearClipCanvas::paintEvent(QPaintEvent*) {
@@ -366,19 +390,18 @@ void NearClipCanvas::paintSide(QPainter& painter, const QRectF& area) {
                       area.bottom() - metrics.descent() - 2),
               NearClipView::tr("w = near = %1").arg(number(r.nearW, 4)), kPlane);
     else
-        label(painter, QPointF(area.left() + 4, area.bottom() - metrics.descent() - 2),
-              NearClipView::tr("the plane w = near = %1 is far to the left, out of the picture")
-                  .arg(number(r.nearW, 4)),
-              kPlane);
+        note(painter, area, area.bottom(),
+             NearClipView::tr("the plane w = near = %1 is far to the left, out of the picture")
+                 .arg(number(r.nearW, 4)),
+             kPlane);
     if (eyeShown)
         label(painter,
               QPointF(std::clamp(eye.x() - 12, area.left(), area.right() - 20),
                       eye.y() + metrics.ascent() + 8),
               NearClipView::tr("eye"), kText);
     else if (planeShown)
-        label(painter,
-              QPointF(area.left() + 4, area.bottom() - metrics.height() - metrics.descent() - 6),
-              NearClipView::tr("the eye (w = 0) is far to the left, out of the picture"), kText);
+        note(painter, area, area.bottom() - metrics.height() - 4,
+             NearClipView::tr("the eye (w = 0) is far to the left, out of the picture"), kText);
 }
 
 void NearClipCanvas::paintScreen(QPainter& painter, const QRectF& area) {
