@@ -373,6 +373,10 @@ void MainWindow::updateClickerKeys() {
     m_view->setArrowsMovePick(!presenting);
 }
 
+double presentationTextScale(int screenHeight) {
+    return std::clamp(1.5 * screenHeight / 1080.0, 1.25, 1.5);
+}
+
 // The status bar's hint on entering presentation mode.
 static QString presentationHint() {
     return MainWindow::tr("Presentation mode: F5 or Esc to leave; Page Down, Right and "
@@ -397,6 +401,8 @@ void MainWindow::setPresentationMode(bool on) {
         m_wasFullScreen = isFullScreen();
         for (const char* name : kSideDocks)
             if (auto* dock = findChild<QDockWidget*>(QLatin1String(name))) dock->hide();
+        const QScreen* shown = screen();
+        if (shown && shown->size().width() < kSidesBesideImageWidth) movePixelInspectorRight();
         showFullScreen();
     } else {
         if (!m_wasFullScreen) showNormal();
@@ -405,7 +411,9 @@ void MainWindow::setPresentationMode(bool on) {
     }
     if (on) {
         QFont big = m_normalFont;
-        big.setPointSizeF(m_normalFont.pointSizeF() * 1.5);
+        const QScreen* shown = screen();
+        big.setPointSizeF(m_normalFont.pointSizeF() *
+                          presentationTextScale(shown ? shown->size().height() : 1080));
         QApplication::setFont(big);
         // High contrast: white on black, yellow selection.
         QPalette p;
@@ -431,6 +439,22 @@ void MainWindow::setPresentationMode(bool on) {
     m_inspection->setPresentation(on);
     updateClickerKeys();
     if (on) QMetaObject::invokeMethod(this, &MainWindow::fitDocks, Qt::QueuedConnection);
+}
+
+void MainWindow::movePixelInspectorRight() {
+    auto* inspectorDock = findChild<QDockWidget*>(QStringLiteral("pixelInspectorDock"));
+    auto* scanDock = findChild<QDockWidget*>(QStringLiteral("scanlineDock"));
+    // Only from its own place: a lesson's or a teacher's other arrangement stays.
+    if (!inspectorDock || !scanDock || inspectorDock->isFloating() || scanDock->isFloating() ||
+        dockWidgetArea(inspectorDock) != Qt::LeftDockWidgetArea ||
+        dockWidgetArea(scanDock) != Qt::RightDockWidgetArea)
+        return;
+    // The tab in front stays in front.
+    QDockWidget* front = scanDock;
+    for (QDockWidget* dock : tabifiedDockWidgets(scanDock))
+        if (!dock->visibleRegion().isEmpty()) front = dock;
+    tabifyDockWidget(scanDock, inspectorDock);
+    front->raise();
 }
 
 void MainWindow::fitToScreen(const QScreen* screen) {

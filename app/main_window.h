@@ -63,6 +63,11 @@ class PainterView;
 enum class FileKind { Camera, Lighting, CameraAndLighting, Object, CommandFile, Unknown };
 FileKind detectFileKind(const QString& path);
 
+// Presentation mode's text scale on a screen this many pixels tall: 1.5 from 1080 up, less
+// below, to no less than 1.25 (a projector shows a 720-pixel screen as large as a 1080-pixel
+// one, so its text is already half as large again on the wall).
+double presentationTextScale(int screenHeight);
+
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
@@ -142,7 +147,11 @@ public:
     // The files the scene shown was read from (built-in parts left out).
     QStringList shownFiles() const;
     bool presentationMode() const { return m_inspection->presentation(); }
+    // Presentation mode; on a screen narrower than kSidesBesideImageWidth the pixel
+    // inspector joins the pixel views' tabs on the right, so that the image is not left a
+    // strip between the two sides (it goes back to the left afterwards).
     void setPresentationMode(bool on);
+    static constexpr int kSidesBesideImageWidth = 1600;
     // The document of another window (its files, values edited and not saved, shading, rules
     // and layouts), shown here.
     void adoptDocument(const SceneDocument& document);
@@ -216,6 +225,9 @@ protected:
     void dropEvent(QDropEvent* event) override;
 
 private:
+    // The pixel inspector from the left side into the tabs of the scan view (presentation
+    // mode on a narrow screen), when both are where the window put them.
+    void movePixelInspectorRight();
     void saveLayout() const;
     void restoreLayout();
     // The menus, one function each (main_window_actions.cpp), and their submenus.

@@ -507,6 +507,7 @@ private slots:
     void everyDock_data();
     void everyDock();
     void opensInsideTheScreen();
+    void presentationLeavesTheImageRoom();
     void fillWindowWithDock();
 
 private:
@@ -630,6 +631,44 @@ void TestLegibility::opensInsideTheScreen() {
         QVERIFY(window.width() <= 1560 && window.height() <= 960);
         // Large screens: the default size whole.
         if (size.width() >= 1920) QCOMPARE(window.size(), QSize(1560, 960));
+    }
+}
+
+void TestLegibility::presentationLeavesTheImageRoom() {
+    // Below 1600 pixels wide, the pixel inspector joins the scan view's tabs while presenting,
+    // so that the image has at least half the width; it comes back to the left afterwards.
+    m_translators.install(QStringLiteral("en"));
+    for (const QSize size : {QSize(1280, 720), QSize(1366, 768), QSize(1920, 1080)}) {
+        QScreen* screen = screenOf(size);
+        QVERIFY(screen);
+        MainWindow window;
+        window.setScreen(screen);
+        window.move(screen->geometry().topLeft());
+        window.resize(size);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        settle();
+        auto* inspector = window.findChild<QDockWidget*>(QStringLiteral("pixelInspectorDock"));
+        auto* scan = window.findChild<QDockWidget*>(QStringLiteral("scanlineDock"));
+        QVERIFY(inspector && scan);
+        const auto leave = qScopeGuard([&] { window.setPresentationMode(false); });
+        window.setPresentationMode(true);
+        settle();
+        const QString where = QStringLiteral("%1x%2").arg(size.width()).arg(size.height());
+        const bool narrow = size.width() < MainWindow::kSidesBesideImageWidth;
+        QCOMPARE(window.dockWidgetArea(inspector),
+                 narrow ? Qt::RightDockWidgetArea : Qt::LeftDockWidgetArea);
+        QCOMPARE(window.tabifiedDockWidgets(scan).contains(inspector), narrow);
+        QVERIFY2(!scan->visibleRegion().isEmpty(), qPrintable(where));  // still in front
+        const int image = window.centralWidget()->width();
+        if (narrow)
+            QVERIFY2(image >= window.width() / 2,
+                     qPrintable(QStringLiteral("%1: the image %2 px wide").arg(where).arg(image)));
+        window.setPresentationMode(false);
+        settle();
+        QCOMPARE(window.dockWidgetArea(inspector), Qt::LeftDockWidgetArea);
+        QVERIFY(!window.tabifiedDockWidgets(scan).contains(inspector));
+        QVERIFY(inspector->isVisible() && !inspector->visibleRegion().isEmpty());
     }
 }
 

@@ -638,10 +638,18 @@ void TestMainWindow::presentationFontsComeBack() {
     WAIT_FOR_FIRST_FRAME(spy);
     QToolButton* button = window.stageStrip()->button(rl::StageId::Projection);
     const qreal normal = button->font().pointSizeF();
+    // Half as large again on a 1080-pixel screen, and no less than a quarter larger on
+    // smaller ones (this platform's screen is 800 pixels tall).
+    QCOMPARE(rasterlab::presentationTextScale(1080), 1.5);
+    QCOMPARE(rasterlab::presentationTextScale(2160), 1.5);
+    QCOMPARE(rasterlab::presentationTextScale(900), 1.25);
+    QCOMPARE(rasterlab::presentationTextScale(720), 1.25);
+    QCOMPARE(rasterlab::presentationTextScale(1000), 1.5 * 1000 / 1080);
+    QCOMPARE(window.screen()->size().height(), 800);
     window.setPresentationMode(true);
     // The stage strip's buttons follow the larger application font, and come back with it
     // (they stayed large until the next scene).
-    QTRY_COMPARE(button->font().pointSizeF(), normal * 1.5);
+    QTRY_COMPARE(button->font().pointSizeF(), normal * 1.25);
     window.setPresentationMode(false);
     QTRY_COMPARE(button->font().pointSizeF(), normal);
 }
