@@ -399,8 +399,13 @@ void MainWindow::setPresentationMode(bool on) {
         m_fitDocksBeforePresentation = m_fitDocks;
         m_fitDocks = true;  // the docks sized again for the larger text and the whole screen
         m_wasFullScreen = isFullScreen();
+        m_hiddenByPresentation.clear();
         for (const char* name : kSideDocks)
-            if (auto* dock = findChild<QDockWidget*>(QLatin1String(name))) dock->hide();
+            if (auto* dock = findChild<QDockWidget*>(QLatin1String(name));
+                dock && !dock->isHidden()) {
+                m_hiddenByPresentation << dock->objectName();
+                dock->hide();
+            }
         const QScreen* shown = screen();
         if (shown && shown->size().width() < kSidesBesideImageWidth) movePixelInspectorRight();
         showFullScreen();
@@ -408,6 +413,7 @@ void MainWindow::setPresentationMode(bool on) {
         if (!m_wasFullScreen) showNormal();
         restoreState(m_layoutBeforePresentation, kLayoutVersion);
         m_fitDocks = m_fitDocksBeforePresentation;
+        m_hiddenByPresentation.clear();
     }
     if (on) {
         QFont big = m_normalFont;

@@ -375,6 +375,7 @@ private:
     QList<QAction*> m_clickerActions;  // arrows and space: stepping in front of a class
     QAction* m_presentationAction = nullptr;
     QByteArray m_layoutBeforePresentation;
+    QStringList m_hiddenByPresentation;               // the side docks it put away, to come back
     QHash<const QDockWidget*, QString> m_fullTitles;  // for the tooltips of short titles
     bool m_fitDocks = true;  // the layout is the program's, not the user's: fit it to the window
     bool m_fitDocksBeforePresentation = true;

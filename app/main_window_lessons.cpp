@@ -315,10 +315,15 @@ Lesson MainWindow::currentLesson(const QDir& base) const {
         if (!tabifiedDockWidgets(dock).isEmpty() && !dock->visibleRegion().isEmpty())
             lesson.docksRaised << dock->objectName();
     }
+    // Presenting: the layout to come back to when presentation mode is left, with the docks
+    // it put away (it puts them away again when the lesson opens).
+    const bool presenting = m_inspection->presentation();
+    if (presenting) lesson.docksShown << m_hiddenByPresentation;
     lesson.docksShown.sort();
+    lesson.docksShown.removeDuplicates();
     lesson.docksRaised.sort();
-    lesson.dockState = saveState(kLayoutVersion);
-    lesson.presentation = m_inspection->presentation();
+    lesson.dockState = presenting ? m_layoutBeforePresentation : saveState(kLayoutVersion);
+    lesson.presentation = presenting;
     return lesson;
 }
 

@@ -114,6 +114,7 @@ private slots:
     void examplesMenuOpensEveryLesson();
     void shadingSideBySide();
     void savedLessonReopensInAnotherProcess();
+    void lessonSavedPresentingGivesTheLayoutBack();
     void missingFileOpensTheRest();
     void languageSwitchKeepsTheView();
     void cliRendersALesson();
@@ -588,6 +589,42 @@ void TestLessons::savedLessonReopensInAnotherProcess() {
     QVERIFY(!second->docksShown.contains(QStringLiteral("accuracyDock")));
     QCOMPARE(second->docksRaised, first->docksRaised);
     QCOMPARE(second->imageSize, std::optional<QSize>(QSize(64, 48)));
+}
+
+void TestLessons::lessonSavedPresentingGivesTheLayoutBack() {
+    // Saved in presentation mode, opened again: presenting, and leaving it gives back the
+    // docks presentation mode put away, where they were.
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString saved = dir.filePath(QStringLiteral("presenting.rasterlab"));
+    const QStringList sideDocks = {QStringLiteral("editDock"), QStringLiteral("messagesDock")};
+    {
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(window.openExample(QStringLiteral("triangle")));
+        QVERIFY(waitUntilReady(window));
+        window.setPresentationMode(true);
+        for (const QString& name : sideDocks)
+            QVERIFY(window.findChild<QDockWidget*>(name)->isHidden());
+        QVERIFY(window.saveLesson(saved));
+        window.setPresentationMode(false);
+    }
+    MainWindow window;
+    window.resize(1600, 1000);
+    window.show();
+    QVERIFY(window.openLesson(saved));
+    QVERIFY(waitUntilReady(window));
+    QVERIFY(window.presentationMode());
+    for (const QString& name : sideDocks)
+        QVERIFY2(window.findChild<QDockWidget*>(name)->isHidden(), qPrintable(name));
+    window.setPresentationMode(false);
+    for (const QString& name : sideDocks)
+        QVERIFY2(!window.findChild<QDockWidget*>(name)->isHidden(), qPrintable(name));
+    auto* inspector = window.findChild<QDockWidget*>(QStringLiteral("pixelInspectorDock"));
+    QCOMPARE(window.dockWidgetArea(inspector), Qt::LeftDockWidgetArea);
+    QCOMPARE(window.dockWidgetArea(window.findChild<QDockWidget*>(QStringLiteral("editDock"))),
+             Qt::LeftDockWidgetArea);
 }
 
 void TestLessons::missingFileOpensTheRest() {
