@@ -578,7 +578,8 @@ int main(int argc, char* argv[]) {
         replay->next(replay->atFragment(static_cast<std::uint32_t>(replay->fragments().size() / 2)),
                      rl::StepGranularity::Scanline));
     window.setPresentationMode(true);
-    // Full screen is the offscreen platform's small screen: a projector's 1600 x 1000 instead.
+    // The offscreen platform does not make a window full screen: a projector's 1600 x 1000,
+    // the screen scripts/screenshots.sh gives it.
     window.setWindowState(Qt::WindowNoState);
     window.resize(1600, 1000);
     QTest::qWait(50);
