@@ -456,6 +456,20 @@ QScreen* screenOf(QSize size) {
     return nullptr;
 }
 
+// The sizes checked: a projector's, a small laptop's and a full-HD screen.
+const QSize kScreenSizes[] = {QSize(1280, 720), QSize(1366, 768), QSize(1920, 1080)};
+
+// The window shown on the screen of that size, filling it.
+bool showOnScreen(MainWindow& window, QSize size) {
+    QScreen* screen = screenOf(size);
+    if (!screen) return false;
+    window.setScreen(screen);
+    window.move(screen->geometry().topLeft());
+    window.resize(size);
+    window.show();
+    return QTest::qWaitForWindowExposed(&window);
+}
+
 bool waitForReplay(MainWindow& window) {
     return QTest::qWaitFor([&] { return window.isReadyToStep(); }, kTimeoutMs);
 }
@@ -518,7 +532,7 @@ void TestLegibility::everyDock_data() {
     QTest::addColumn<QSize>("size");
     QTest::addColumn<QString>("language");
     QTest::addColumn<bool>("presenting");
-    for (const QSize size : {QSize(1280, 720), QSize(1366, 768), QSize(1920, 1080)})
+    for (const QSize size : kScreenSizes)
         for (const char* language : {"en", "pt_BR"})
             for (const bool presenting : {false, true})
                 QTest::addRow("%dx%d %s %s", size.width(), size.height(), language,
@@ -530,15 +544,10 @@ void TestLegibility::everyDock() {
     QFETCH(QSize, size);
     QFETCH(QString, language);
     QFETCH(bool, presenting);
-    QScreen* screen = screenOf(size);
-    QVERIFY2(screen, "no screen of that size: the offscreen platform's configuration");
     m_translators.install(language);
     MainWindow window;
-    window.setScreen(screen);
-    window.move(screen->geometry().topLeft());
-    window.resize(size);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY2(showOnScreen(window, size),
+             "no screen of that size (the offscreen platform's configuration), or not shown");
     QVERIFY2(waitForReplay(window), "the default scene was not ready to step through");
     // Presentation mode changes the application's font and palette: put back whatever
     // happens.
@@ -613,7 +622,7 @@ void TestLegibility::opensInsideTheScreen() {
     // The size the window opens at (1560x960 at most), inside each screen's free area, with
     // room for a frame: a window manager does not always shrink a window to its screen.
     m_translators.install(QStringLiteral("en"));
-    for (const QSize size : {QSize(1280, 720), QSize(1366, 768), QSize(1920, 1080)}) {
+    for (const QSize size : kScreenSizes) {
         QScreen* screen = screenOf(size);
         QVERIFY(screen);
         MainWindow window;
@@ -638,15 +647,9 @@ void TestLegibility::presentationLeavesTheImageRoom() {
     // Below 1600 pixels wide, the pixel inspector joins the scan view's tabs while presenting,
     // so that the image has at least half the width; it comes back to the left afterwards.
     m_translators.install(QStringLiteral("en"));
-    for (const QSize size : {QSize(1280, 720), QSize(1366, 768), QSize(1920, 1080)}) {
-        QScreen* screen = screenOf(size);
-        QVERIFY(screen);
+    for (const QSize size : kScreenSizes) {
         MainWindow window;
-        window.setScreen(screen);
-        window.move(screen->geometry().topLeft());
-        window.resize(size);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(showOnScreen(window, size));
         settle();
         auto* inspector = window.findChild<QDockWidget*>(QStringLiteral("pixelInspectorDock"));
         auto* scan = window.findChild<QDockWidget*>(QStringLiteral("scanlineDock"));
@@ -675,15 +678,9 @@ void TestLegibility::presentationLeavesTheImageRoom() {
 void TestLegibility::fillWindowWithDock() {
     // F11 (View > Fill the Window) and a double-click on a dock's title: the dock alone over
     // the whole window; again, the docks and the image as they were.
-    QScreen* screen = screenOf(QSize(1280, 720));
-    QVERIFY(screen);
     m_translators.install(QStringLiteral("en"));
     MainWindow window;
-    window.setScreen(screen);
-    window.move(screen->geometry().topLeft());
-    window.resize(screen->geometry().size());
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(showOnScreen(window, QSize(1280, 720)));
     settle();
     auto* action = window.findChild<QAction*>(QStringLiteral("fillWindowAction"));
     QVERIFY(action);
