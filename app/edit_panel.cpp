@@ -525,7 +525,14 @@ void EditPanel::refresh() {
         const rl::vec3 kd = m_document->parts().lighting.material.kd;
         m_kdLink->setChecked(kd.r == kd.g && kd.g == kd.b);
     }
-    m_content->setEnabled(isEditable());
+    // A command file's scene has no course camera or lighting: the last course scene's
+    // values would read as this one's. The label saying so stays, readable.
+    const bool commandFile = m_document->showsCommandFile();
+    m_content->setEnabled(isEditable() || commandFile);
+    for (QGroupBox* box : m_content->findChildren<QGroupBox*>(Qt::FindDirectChildrenOnly)) {
+        box->setHidden(commandFile);
+        box->setEnabled(isEditable());
+    }
 
     const std::size_t lights = m_document->parts().lighting.lights.size();
     const std::size_t shown = std::min(currentLight(), lights > 0 ? lights - 1 : 0);

@@ -15,6 +15,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QSignalSpy>
@@ -838,6 +839,17 @@ void TestEditPanel::commandFileDisablesThePanel() {
     panel.refresh();
     QVERIFY(!panel.spinBox(Field::C, 0)->isEnabled());
     QVERIFY(!panel.saveAsAction()->isEnabled());
+    // The default scene's camera is not shown as if it were the command file's; the label
+    // says why.
+    QVERIFY(!panel.spinBox(Field::C, 0)->isVisibleTo(&panel));
+    auto* files = panel.findChild<QLabel*>(QStringLiteral("editFiles"));
+    QVERIFY(files && files->isVisibleTo(&panel));
+    QCOMPARE(files->text(),
+             QStringLiteral("A command file is shown: its scene is not edited here."));
+    QVERIFY(document.loadDefault());
+    panel.refresh();
+    QVERIFY(panel.spinBox(Field::C, 0)->isEnabled());
+    QVERIFY(panel.spinBox(Field::C, 0)->isVisibleTo(&panel));
 }
 
 void TestEditPanel::screenshots() {
