@@ -385,6 +385,7 @@ static QString presentationHint() {
 
 void MainWindow::setPresentationMode(bool on) {
     if (on == m_inspection->presentation()) return;
+    restoreFill();  // the layout saved and given back is the whole one
     {
         const QSignalBlocker block(m_presentationAction);
         m_presentationAction->setChecked(on);

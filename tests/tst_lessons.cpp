@@ -613,18 +613,25 @@ void TestLessons::lessonSavedPresentingGivesTheLayoutBack() {
     MainWindow window;
     window.resize(1600, 1000);
     window.show();
-    QVERIFY(window.openLesson(saved));
-    QVERIFY(waitUntilReady(window));
-    QVERIFY(window.presentationMode());
-    for (const QString& name : sideDocks)
-        QVERIFY2(window.findChild<QDockWidget*>(name)->isHidden(), qPrintable(name));
-    window.setPresentationMode(false);
-    for (const QString& name : sideDocks)
-        QVERIFY2(!window.findChild<QDockWidget*>(name)->isHidden(), qPrintable(name));
-    auto* inspector = window.findChild<QDockWidget*>(QStringLiteral("pixelInspectorDock"));
-    QCOMPARE(window.dockWidgetArea(inspector), Qt::LeftDockWidgetArea);
-    QCOMPARE(window.dockWidgetArea(window.findChild<QDockWidget*>(QStringLiteral("editDock"))),
-             Qt::LeftDockWidgetArea);
+    // Opened outside presentation mode, then again while presenting: presenting, the docks
+    // put away; after it, back on the left.
+    for (const bool alreadyPresenting : {false, true}) {
+        window.setPresentationMode(alreadyPresenting);
+        QVERIFY(window.openLesson(saved));
+        QVERIFY(waitUntilReady(window));
+        QVERIFY(window.presentationMode());
+        for (const QString& name : sideDocks)
+            QVERIFY2(window.findChild<QDockWidget*>(name)->isHidden(), qPrintable(name));
+        window.setPresentationMode(false);
+        for (const QString& name : sideDocks) {
+            auto* dock = window.findChild<QDockWidget*>(name);
+            QVERIFY2(!dock->isHidden(), qPrintable(name));
+            if (name == QStringLiteral("editDock"))
+                QCOMPARE(window.dockWidgetArea(dock), Qt::LeftDockWidgetArea);
+        }
+        auto* inspector = window.findChild<QDockWidget*>(QStringLiteral("pixelInspectorDock"));
+        QCOMPARE(window.dockWidgetArea(inspector), Qt::LeftDockWidgetArea);
+    }
 }
 
 void TestLessons::missingFileOpensTheRest() {

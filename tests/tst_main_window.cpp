@@ -107,6 +107,7 @@ private slots:
     void exportToMissingFolder();
     void docks();
     void presentationFontsComeBack();
+    void presentationAfterFillGivesTheLayoutBack();
     void coveredViewsRefreshWhenRaised();
     void layoutSavedAndReset();
     void newestRequestWins();
@@ -639,19 +640,45 @@ void TestMainWindow::presentationFontsComeBack() {
     QToolButton* button = window.stageStrip()->button(rl::StageId::Projection);
     const qreal normal = button->font().pointSizeF();
     // Half as large again on a 1080-pixel screen, and no less than a quarter larger on
-    // smaller ones (this platform's screen is 800 pixels tall).
+    // smaller ones.
     QCOMPARE(rasterlab::presentationTextScale(1080), 1.5);
     QCOMPARE(rasterlab::presentationTextScale(2160), 1.5);
     QCOMPARE(rasterlab::presentationTextScale(900), 1.25);
     QCOMPARE(rasterlab::presentationTextScale(720), 1.25);
     QCOMPARE(rasterlab::presentationTextScale(1000), 1.5 * 1000 / 1080);
-    QCOMPARE(window.screen()->size().height(), 800);
     window.setPresentationMode(true);
     // The stage strip's buttons follow the larger application font, and come back with it
     // (they stayed large until the next scene).
-    QTRY_COMPARE(button->font().pointSizeF(), normal * 1.25);
+    QTRY_COMPARE(button->font().pointSizeF(),
+                 normal * rasterlab::presentationTextScale(window.screen()->size().height()));
     window.setPresentationMode(false);
     QTRY_COMPARE(button->font().pointSizeF(), normal);
+}
+
+void TestMainWindow::presentationAfterFillGivesTheLayoutBack() {
+    // A dock fills the window (F11), then presentation mode: the docks come back first, and
+    // all of them again after presentation mode, with the image.
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    const auto shown = [&] {
+        QStringList names;
+        for (const QDockWidget* dock : window.findChildren<QDockWidget*>())
+            if (!dock->isHidden()) names << dock->objectName();
+        names.sort();
+        return names;
+    };
+    const QStringList before = shown();
+    auto* normals = window.findChild<QDockWidget*>(QStringLiteral("normalsDock"));
+    QVERIFY(normals);
+    window.toggleFill(normals);
+    QVERIFY(window.isFilled());
+    window.setPresentationMode(true);
+    QVERIFY(!window.isFilled());
+    QVERIFY(!window.centralWidget()->isHidden());
+    window.setPresentationMode(false);
+    QCOMPARE(shown(), before);
+    QVERIFY(!window.centralWidget()->isHidden());
 }
 
 void TestMainWindow::coveredViewsRefreshWhenRaised() {
