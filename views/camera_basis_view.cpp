@@ -254,13 +254,12 @@ void CameraBasisCanvas::queueLabel(const QPointF& at, const QPointF& awayFrom, c
     m_pending.push_back({at, awayFrom, text, colour, rank});
 }
 
-void CameraBasisCanvas::placeLabel(QPainter& painter, const PendingLabel& label) {
+void CameraBasisCanvas::placeLabel(const QFontMetricsF& metrics, const PendingLabel& label) {
     const QPointF& at = label.at;
     const QString& text = label.text;
     QPointF d = at - label.awayFrom;
     const double length = std::hypot(d.x(), d.y());
     d = length > 0.0 ? d / length : QPointF(1.0, 0.0);
-    const QFontMetricsF metrics(painter.font());
     const QSizeF size = metrics.size(0, text);
     // The label's centre, beyond the tip in the arrow's direction.
     const QPointF centre = at + d * (6.0 + 0.5 * std::hypot(size.width(), size.height()) * 0.8);
@@ -288,25 +287,34 @@ void CameraBasisCanvas::placeLabel(QPainter& painter, const PendingLabel& label)
         }
         if (found) break;
     }
-    // Pushed away from its point: a thin line from the point to the label's nearest edge.
+    // Pushed away from its point: a leader line from the point to the label's nearest edge.
     const QPointF nearest(std::clamp(at.x(), box.left(), box.right()),
                           std::clamp(at.y(), box.top(), box.bottom()));
     const bool leader = std::hypot(nearest.x() - at.x(), nearest.y() - at.y()) > 12.0;
-    if (leader) {
+    recordLabel(box);
+    m_placed.append({text, at, box, leader, label.colour});
+}
+
+void CameraBasisCanvas::drawLabels(QPainter& painter) const {
+    for (const PlacedLabel& label : m_placed) {
+        if (!label.leader) continue;
         QColor line = label.colour;
         line.setAlpha(170);
         painter.setPen(QPen(line, 1.0, Qt::DotLine));
-        painter.drawLine(at, nearest);
+        painter.drawLine(
+            label.anchor,
+            QPointF(std::clamp(label.anchor.x(), label.box.left(), label.box.right()),
+                    std::clamp(label.anchor.y(), label.box.top(), label.box.bottom())));
     }
-    // A dark backing keeps the label readable over the point cloud and the lines.
-    painter.setPen(Qt::NoPen);
-    painter.setBrush(QColor(kBackground.red(), kBackground.green(), kBackground.blue(), 215));
-    painter.drawRoundedRect(box, 3, 3);
-    painter.setBrush(Qt::NoBrush);
-    painter.setPen(label.colour);
-    painter.drawText(box, Qt::AlignCenter, text);
-    recordLabel(box);
-    m_placed.append({text, at, box, leader});
+    // A dark backing keeps each label readable over the point cloud and the lines.
+    for (const PlacedLabel& label : m_placed) {
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(QColor(kBackground.red(), kBackground.green(), kBackground.blue(), 215));
+        painter.drawRoundedRect(label.box, 3, 3);
+        painter.setBrush(Qt::NoBrush);
+        painter.setPen(label.colour);
+        painter.drawText(label.box, Qt::AlignCenter, label.text);
+    }
 }
 
 void CameraBasisCanvas::paintEvent(QPaintEvent*) {
@@ -456,7 +464,9 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
 
     std::stable_sort(m_pending.begin(), m_pending.end(),
                      [](const PendingLabel& x, const PendingLabel& y) { return x.rank < y.rank; });
-    for (const PendingLabel& label : m_pending) placeLabel(painter, label);
+    const QFontMetricsF metrics(painter.font());
+    for (const PendingLabel& label : m_pending) placeLabel(metrics, label);
+    drawLabels(painter);
 }
 
 void CameraBasisCanvas::mousePressEvent(QMouseEvent* event) {

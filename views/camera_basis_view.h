@@ -6,6 +6,7 @@
 // parallel to V, a camera rejected with an error).
 #pragma once
 
+#include <QColor>
 #include <QString>
 #include <QStringList>
 #include <QWidget>
@@ -15,6 +16,7 @@
 #include "camera_basis.h"
 #include "painted_labels.h"
 
+class QFontMetricsF;
 class QLabel;
 class QSlider;
 class QSplitter;
@@ -72,6 +74,7 @@ public:
         QPointF anchor;
         QRectF box;
         bool leader = false;
+        QColor colour;
     };
     const QList<PlacedLabel>& placedLabels() const { return m_placed; }
 
@@ -121,8 +124,10 @@ private:
                     const QColor& colour, LabelRank rank);
     // A label beside a point, pushed away from where the arrow came from, and moved to a
     // free place nearby when the labels placed before (or the button) are there; a leader
-    // line then joins it to its point.
-    void placeLabel(QPainter& painter, const PendingLabel& label);
+    // line then joins it to its point. Placed only: drawLabels() draws them all, every
+    // leader line first, so that none crosses a label.
+    void placeLabel(const QFontMetricsF& metrics, const PendingLabel& label);
+    void drawLabels(QPainter& painter) const;
 
     CameraBasisPicture m_picture;
     QToolButton* m_reset = nullptr;

@@ -190,6 +190,7 @@ void NearClipCanvas::note(QPainter& painter, const QRectF& area, double bottom, 
                 moved = true;
             }
     }
+    if (box.top() < area.top()) box.moveTop(area.top());  // a short view: over the picture
     recordLabel(box);
     painter.fillRect(box, QColor(0, 0, 0, 170));
     painter.setPen(colour);
