@@ -27,6 +27,7 @@
 #include "frame_image_view.h"
 #include "frame_memory.h"
 #include "main_window.h"
+#include "offscreen_screens.h"
 #include "replay_builder.h"
 
 using namespace rasterlab;
@@ -63,18 +64,9 @@ public:
 
 int main(int argc, char* argv[]) {
     rl::keepFrameMemory();
-    // Offscreen, a 1920x1080 screen, so that the window opens at its default size (the
-    // platform's own screen is 800x800, and the window fits itself to its screen).
+    // Offscreen, a 1920x1080 screen, so that the window opens at its default size.
     QTemporaryDir screens;
-    if (qgetenv("QT_QPA_PLATFORM") == "offscreen") {
-        const QString config = screens.filePath(QStringLiteral("screens.json"));
-        QFile file(config);
-        if (!file.open(QIODevice::WriteOnly)) return 1;
-        file.write(
-            R"({"screens": [{"name": "1080p", "x": 0, "y": 0, "width": 1920, "height": 1080}]})");
-        file.close();
-        qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
-    }
+    if (!useOffscreenScreens(screens, {QSize(1920, 1080)})) return 1;
     QApplication app(argc, argv);
     QCommandLineParser parser;
     parser.addOptions(

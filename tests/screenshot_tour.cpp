@@ -83,6 +83,7 @@
 #include "main_window.h"
 #include "mistakes.h"
 #include "normals_view.h"
+#include "offscreen_screens.h"
 #include "painter_view.h"
 #include "pixel_inspector.h"
 #include "replay_builder.h"
@@ -367,6 +368,10 @@ bool saveCompare(MainWindow& window, const QString& path) {
 }
 
 int main(int argc, char* argv[]) {
+    // Offscreen, a projector's 1600x1000 screen: presentation mode sizes its text and places
+    // its docks by the screen, and the window fits itself to it.
+    QTemporaryDir screens;
+    if (!useOffscreenScreens(screens, {QSize(1600, 1000)})) return 1;
     QApplication app(argc, argv);
     // Settings of this run only: no recent files, layout or language of an earlier one.
     QTemporaryDir settingsDir;
@@ -577,11 +582,7 @@ int main(int argc, char* argv[]) {
     inspection->seek(
         replay->next(replay->atFragment(static_cast<std::uint32_t>(replay->fragments().size() / 2)),
                      rl::StepGranularity::Scanline));
-    window.setPresentationMode(true);
-    // The offscreen platform does not make a window full screen: a projector's 1600 x 1000,
-    // the screen scripts/screenshots.sh gives it.
-    window.setWindowState(Qt::WindowNoState);
-    window.resize(1600, 1000);
+    window.setPresentationMode(true);  // full screen: the projector's 1600x1000
     QTest::qWait(50);
     window.fitDocks();
     QTest::qWait(50);

@@ -44,6 +44,7 @@
 #include "inspection.h"
 #include "main_window.h"
 #include "mistakes.h"
+#include "offscreen_screens.h"
 #include "painted_labels.h"
 #include "render_controller.h"
 #include "translators.h"
@@ -456,7 +457,7 @@ QScreen* screenOf(QSize size) {
     return nullptr;
 }
 
-// The sizes checked: a projector's, a small laptop's and a full-HD screen.
+// The sizes checked: many projectors', small laptops' and full HD.
 const QSize kScreenSizes[] = {QSize(1280, 720), QSize(1366, 768), QSize(1920, 1080)};
 
 // The window shown on the screen of that size, filling it.
@@ -743,18 +744,11 @@ void TestLegibility::fillWindowWithDock() {
 }
 
 int main(int argc, char* argv[]) {
-    // Three screens of the sizes checked, side by side, for the offscreen platform.
+    // The three screens of the sizes checked, side by side.
     QTemporaryDir dir;
-    const QString config = dir.filePath(QStringLiteral("screens.json"));
-    {
-        QFile file(config);
-        if (!file.open(QIODevice::WriteOnly)) return 1;
-        file.write(R"({"screens": [
-            {"name": "720p", "x": 0, "y": 0, "width": 1280, "height": 720},
-            {"name": "768p", "x": 1280, "y": 0, "width": 1366, "height": 768},
-            {"name": "1080p", "x": 2646, "y": 0, "width": 1920, "height": 1080}]})");
-    }
-    qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    if (!useOffscreenScreens(dir, {QSize(1280, 720), QSize(1366, 768), QSize(1920, 1080)}))
+        return 1;
     QApplication app(argc, argv);
     TestLegibility test;
     QTEST_SET_MAIN_SOURCE_PATH
