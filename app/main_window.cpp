@@ -390,31 +390,16 @@ void MainWindow::setPresentationMode(bool on) {
         const QSignalBlocker block(m_presentationAction);
         m_presentationAction->setChecked(on);
     }
-    // In front of a class: the whole screen, the image and the stage views only (the
-    // animation's controls too: above the pixel inspector, each had half the height, too
-    // little for either in large text).
-    static const char* const kSideDocks[] = {"messagesDock",    "editDock",     "sceneDock",
-                                             "breakpointsDock", "accuracyDock", "animationDock"};
     if (on) {
-        m_layoutBeforePresentation = saveState(kLayoutVersion);
         m_fitDocksBeforePresentation = m_fitDocks;
         m_fitDocks = true;  // the docks sized again for the larger text and the whole screen
         m_wasFullScreen = isFullScreen();
-        m_hiddenByPresentation.clear();
-        for (const char* name : kSideDocks)
-            if (auto* dock = findChild<QDockWidget*>(QLatin1String(name));
-                dock && !dock->isHidden()) {
-                m_hiddenByPresentation << dock->objectName();
-                dock->hide();
-            }
-        const QScreen* shown = screen();
-        if (shown && shown->size().width() < kSidesBesideImageWidth) movePixelInspectorRight();
+        enterPresentationLayout();
         showFullScreen();
     } else {
         if (!m_wasFullScreen) showNormal();
-        restoreState(m_layoutBeforePresentation, kLayoutVersion);
+        leavePresentationLayout();
         m_fitDocks = m_fitDocksBeforePresentation;
-        m_hiddenByPresentation.clear();
     }
     if (on) {
         QFont big = m_normalFont;
@@ -446,6 +431,28 @@ void MainWindow::setPresentationMode(bool on) {
     m_inspection->setPresentation(on);
     updateClickerKeys();
     if (on) QMetaObject::invokeMethod(this, &MainWindow::fitDocks, Qt::QueuedConnection);
+}
+
+void MainWindow::enterPresentationLayout() {
+    // In front of a class: the whole screen, the image and the stage views only (the
+    // animation's controls too: above the pixel inspector, each had half the height, too
+    // little for either in large text).
+    static const char* const kSideDocks[] = {"messagesDock",    "editDock",     "sceneDock",
+                                             "breakpointsDock", "accuracyDock", "animationDock"};
+    m_layoutBeforePresentation = saveState(kLayoutVersion);
+    m_hiddenByPresentation.clear();
+    for (const char* name : kSideDocks)
+        if (auto* dock = findChild<QDockWidget*>(QLatin1String(name)); dock && !dock->isHidden()) {
+            m_hiddenByPresentation << dock->objectName();
+            dock->hide();
+        }
+    if (const QScreen* shown = screen(); shown && shown->size().width() < kSidesBesideImageWidth)
+        movePixelInspectorRight();
+}
+
+void MainWindow::leavePresentationLayout() {
+    restoreState(m_layoutBeforePresentation, kLayoutVersion);
+    m_hiddenByPresentation.clear();
 }
 
 void MainWindow::movePixelInspectorRight() {

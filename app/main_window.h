@@ -225,6 +225,11 @@ protected:
     void dropEvent(QDropEvent* event) override;
 
 private:
+    // Presentation mode's docks: the layout kept to come back to, the side docks put away,
+    // and on a narrow screen the pixel inspector among the scan view's tabs; and back. The
+    // font, palette and full screen are setPresentationMode's.
+    void enterPresentationLayout();
+    void leavePresentationLayout();
     // The pixel inspector from the left side into the tabs of the scan view (presentation
     // mode on a narrow screen), when both are where the window put them.
     void movePixelInspectorRight();

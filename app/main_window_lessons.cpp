@@ -231,19 +231,20 @@ void MainWindow::restoreView(const Lesson& lesson) {
     const bool example = isExample(lesson.example);
     m_lessonTitle = example && lesson.title.isEmpty() ? exampleTitle(lesson.example) : lesson.title;
     m_lessonNotes = example && lesson.notes.isEmpty() ? exampleNotes(lesson.example) : lesson.notes;
-    // The lesson's layout is the one outside presentation mode: presentation mode is left
-    // first (else it would put its own earlier layout back over the lesson's, or the
-    // lesson's would bring back the docks it puts away) and entered again after.
-    const bool presenting = lesson.presentation.value_or(m_inspection->presentation());
-    setPresentationMode(false);
+    // The lesson's layout is the one outside presentation mode. While presenting, it takes
+    // the place of the layout presentation mode gives back, and its side docks are put away
+    // again (else leaving would put the window's earlier layout back over the lesson's).
+    const bool wasPresenting = m_inspection->presentation();
     restoreFill();
+    if (wasPresenting) leavePresentationLayout();
     if (!lesson.dockState.isEmpty()) restoreState(lesson.dockState, kLayoutVersion);
     const QList<QDockWidget*> docks = findChildren<QDockWidget*>();
     if (!lesson.docksShown.isEmpty())
         for (QDockWidget* dock : docks) dock->setVisible(lesson.docksShown.contains(dock->objectName()));
     for (QDockWidget* dock : docks)
         if (lesson.docksRaised.contains(dock->objectName())) dock->show();
-    setPresentationMode(presenting);
+    if (wasPresenting) enterPresentationLayout();
+    setPresentationMode(lesson.presentation.value_or(wasPresenting));
     // Raised last: entering presentation mode may move the pixel inspector among the tabs.
     for (QDockWidget* dock : docks)
         if (lesson.docksRaised.contains(dock->objectName()) && !dock->isHidden()) dock->raise();

@@ -249,10 +249,14 @@ QPointF CameraBasisCanvas::toWidget(const dvec3& pWorld) const {
     return projector()(pWorld);
 }
 
-void CameraBasisCanvas::queueLabel(const QPointF& at, const QPointF& awayFrom, const QString& text,
-                                   const QColor& colour, LabelRank rank) {
-    m_pending.push_back({at, awayFrom, text, colour, rank});
+namespace {
+
+// The point of `box` nearest `p`: where a leader line from p meets the label.
+QPointF nearestOn(const QRectF& box, const QPointF& p) {
+    return {std::clamp(p.x(), box.left(), box.right()), std::clamp(p.y(), box.top(), box.bottom())};
 }
+
+}  // namespace
 
 void CameraBasisCanvas::placeLabel(const QFontMetricsF& metrics, const PendingLabel& label) {
     const QPointF& at = label.at;
@@ -287,24 +291,19 @@ void CameraBasisCanvas::placeLabel(const QFontMetricsF& metrics, const PendingLa
         }
         if (found) break;
     }
-    // Pushed away from its point: a leader line from the point to the label's nearest edge.
-    const QPointF nearest(std::clamp(at.x(), box.left(), box.right()),
-                          std::clamp(at.y(), box.top(), box.bottom()));
-    const bool leader = std::hypot(nearest.x() - at.x(), nearest.y() - at.y()) > 12.0;
     recordLabel(box);
-    m_placed.append({text, at, box, leader, label.colour});
+    m_placed.append({text, at, box, label.colour});
 }
 
 void CameraBasisCanvas::drawLabels(QPainter& painter) const {
+    // Pushed more than 12 px from its point: a leader line to the label's nearest edge.
     for (const PlacedLabel& label : m_placed) {
-        if (!label.leader) continue;
+        const QPointF end = nearestOn(label.box, label.anchor);
+        if (QLineF(label.anchor, end).length() <= 12.0) continue;
         QColor line = label.colour;
         line.setAlpha(170);
         painter.setPen(QPen(line, 1.0, Qt::DotLine));
-        painter.drawLine(
-            label.anchor,
-            QPointF(std::clamp(label.anchor.x(), label.box.left(), label.box.right()),
-                    std::clamp(label.anchor.y(), label.box.top(), label.box.bottom())));
+        painter.drawLine(label.anchor, end);
     }
     // A dark backing keeps each label readable over the point cloud and the lines.
     for (const PlacedLabel& label : m_placed) {
@@ -322,7 +321,6 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
     painter.fillRect(rect(), kBackground);
     painter.setRenderHint(QPainter::Antialiasing, true);
     m_drawn.clear();
-    m_pending.clear();
     m_placed.clear();
     clearLabels();
     // The button's place is taken: no label under it.
@@ -335,6 +333,11 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
     }
     const CameraBasisPicture& pic = m_picture;
     const Projector project = projector();  // once for every point drawn
+    std::vector<PendingLabel> pending;      // placed once everything is drawn
+    const auto queueLabel = [&pending](const QPointF& at, const QPointF& awayFrom,
+                                       const QString& text, const QColor& colour, LabelRank rank) {
+        pending.push_back({at, awayFrom, text, colour, rank});
+    };
     const rl::CameraBasis& b = pic.basis;
     const double w = m_lineWidth;
     const double s = pic.vectorScale;
@@ -462,10 +465,10 @@ void CameraBasisCanvas::paintEvent(QPaintEvent*) {
     queueLabel(c, c + QPointF(1, -1), QStringLiteral("C"), kText, LabelRank::Camera);
     m_drawn << QStringLiteral("C");
 
-    std::stable_sort(m_pending.begin(), m_pending.end(),
+    std::stable_sort(pending.begin(), pending.end(),
                      [](const PendingLabel& x, const PendingLabel& y) { return x.rank < y.rank; });
     const QFontMetricsF metrics(painter.font());
-    for (const PendingLabel& label : m_pending) placeLabel(metrics, label);
+    for (const PendingLabel& label : pending) placeLabel(metrics, label);
     drawLabels(painter);
 }
 

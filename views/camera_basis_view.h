@@ -67,13 +67,12 @@ public:
     // "(V.N) N", "V'", "V", "U", "window", "frustum", "cloud"), in drawing order.
     const QStringList& drawnItems() const { return m_drawn; }
     int cloudPointCount() const { return static_cast<int>(m_picture.cloud.size()); }
-    // Each label of the last paint: the point it names, where it went, and whether a
-    // leader line joins them (it was pushed away from the point by the labels before it).
+    // Each label of the last paint: the point it names and where it went (a leader line
+    // joins them when the labels before pushed it more than 12 px away).
     struct PlacedLabel {
         QString text;
         QPointF anchor;
         QRectF box;
-        bool leader = false;
         QColor colour;
     };
     const QList<PlacedLabel>& placedLabels() const { return m_placed; }
@@ -120,8 +119,6 @@ private:
         QColor colour;
         LabelRank rank;
     };
-    void queueLabel(const QPointF& at, const QPointF& awayFrom, const QString& text,
-                    const QColor& colour, LabelRank rank);
     // A label beside a point, pushed away from where the arrow came from, and moved to a
     // free place nearby when the labels placed before (or the button) are there; a leader
     // line then joins it to its point. Placed only: drawLabels() draws them all, every
@@ -133,7 +130,6 @@ private:
     QToolButton* m_reset = nullptr;
     QString m_message;
     QStringList m_drawn;
-    std::vector<PendingLabel> m_pending;
     QList<PlacedLabel> m_placed;
     double m_lineWidth = 1.5;
     double m_yaw = 0.0, m_pitch = 0.0, m_zoom = 1.0;
