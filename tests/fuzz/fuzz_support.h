@@ -3,12 +3,16 @@
 // readers; huge, tiny, zero and negative values are not).
 #pragma once
 
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <string_view>
 
 #include "course_readers.h"
 #include "course_scene.h"
+#include "probe.h"
 #include "renderer.h"
 
 namespace rl::fuzz {
@@ -50,20 +54,45 @@ inline CourseObject fixedObject() {
     return {"square", mesh};
 }
 
-// Renders the parts small, in each shading model, on one thread; the result is not
-// checked here (the sanitizers check the way there), only that a frame comes back or a
-// value-error does.
+template <typename T>
+bool sameBits(const Image<T>& a, const Image<T>& b) {
+    return a.width() == b.width() && a.height() == b.height() &&
+           std::memcmp(a.pixels().data(), b.pixels().data(), a.pixels().size() * sizeof(T)) == 0;
+}
+
+// The lecture's stages (traceFrame) and the fast paths (renderFrame: one and two threads,
+// keeping every buffer and keeping only the image) must give the same bits, as tst_fast_paths
+// holds them on chosen scenes. A difference aborts, so that libFuzzer keeps the input.
+inline void renderBothWays(const std::shared_ptr<const Scene>& scene) {
+    RenderOptions options;
+    auto probe = RecordingProbe::forPixel(-1, -1);
+    const auto plain = traceFrame(scene, options, probe);
+    for (int threads : {1, 2}) {
+        for (bool keep : {true, false}) {
+            options.threads = threads;
+            options.keepDepth = options.keepFragments = options.keepForViews = keep;
+            const auto fast = renderFrame(scene, options);
+            bool same = plain.ok() == fast.ok();
+            if (same && plain.ok())
+                same = sameBits(plain->shading->colour, fast->shading->colour) &&
+                       (!keep || sameBits(plain->depth->depth, fast->depth->depth));
+            if (!same) {
+                std::fprintf(stderr, "fast path (%d thread(s), %s) differs from the lecture's\n",
+                             threads, keep ? "every buffer" : "image only");
+                std::abort();
+            }
+        }
+    }
+}
+
+// Renders the parts small, in each shading model, both ways (renderBothWays).
 inline void renderSmall(const CourseSceneParts& parts) {
     for (ShadingModel shading : {ShadingModel::Phong, ShadingModel::Gouraud, ShadingModel::Flat}) {
         CourseSceneSettings settings;
         settings.width = 32;
         settings.height = 24;
         settings.shading = shading;
-        auto scene = std::make_shared<const Scene>(makeCourseScene(parts, settings));
-        RenderOptions options;
-        options.threads = 1;
-        auto frame = renderFrame(scene, options);
-        (void)frame;
+        renderBothWays(std::make_shared<const Scene>(makeCourseScene(parts, settings)));
     }
 }
 
