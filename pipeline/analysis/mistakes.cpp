@@ -76,7 +76,7 @@ vec3 lightWith(const FrameLighting& lighting, const Draw& draw, const vec3& od, 
     const bool flip = scene.conventions.flipNormalsTowardViewer;
     if (!formula) return lighting.light(draw, od, p, n).colour();
     if (draw.lighting == LightingModel::Lambert && *formula == Formula::NoFlip)
-        return lambert(od, draw.material.shininess, lights.data(), count, p, n, false).colour();
+        return hw2Lighting(od, draw.material.shininess, lights.data(), count, p, n, false).colour();
     if (draw.lighting != LightingModel::CoursePhong) return lighting.light(draw, od, p, n).colour();
     const Material& m = draw.material;
     const vec3& ia = scene.ambientIntensity;

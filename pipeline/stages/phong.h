@@ -10,7 +10,7 @@
 // by its attenuation 1 / (kc + kl d + kq d^2) and its spot factor (lightFactor), the
 // highlight may be Blinn-Phong's Il ks (N.H)^n, and the material's emission Ke is added:
 //     I = Ke + Ia ka + sum over lights of  att spot (Il Od kd (N.L) + Il ks (R.V)^n).
-// The command files' (seed 001), lambert():
+// The command files' (seed 001), hw2Lighting():
 //     I = sum over lights with N.L >= 0 of  Il O (N.L)  +  Il (H.N)^s  (the second only
 //     when the shininess s > 0; H = (L + E)/|L + E| with E = -P'/|P'|, Blinn-Phong).
 // Clamping to the colour scale happens once, when the image becomes bytes. Every term and
@@ -178,7 +178,7 @@ inline void addLight(const Material& m, const vec3& od, const ViewLight& light, 
     vec3 diffuse(0.0f), specular(0.0f);
     if (nDotL >= 0.0f) {
         if (specularModel == SpecularModel::BlinnPhong) {
-            // H = (L + V) times 1/|L + V|, normalised the course's way (not lambert()'s
+            // H = (L + V) times 1/|L + V|, normalised the course's way (not hw2Lighting()'s
             // division); zero when the light is straight behind the viewer's line.
             const vec3 sum = l + sample.v;
             const float length = glm::length(sum);
@@ -244,9 +244,9 @@ inline PhongSample phong(const Material& m, const vec3& od, const vec3& ambientI
 // The command files' model: Lambert for each light in front of the surface, plus
 // Blinn-Phong highlights when the shininess is positive. The object colour does not tint
 // the highlight.
-inline PhongSample lambert(const vec3& objectColour, float shininess, const ViewLight* lights,
-                           std::size_t lightCount, const vec3& pView, const vec3& nView,
-                           bool flipTowardViewer) {
+inline PhongSample hw2Lighting(const vec3& objectColour, float shininess, const ViewLight* lights,
+                               std::size_t lightCount, const vec3& pView, const vec3& nView,
+                               bool flipTowardViewer) {
     PhongSample s;
     if (!orientNormal(s, pView, nView, flipTowardViewer)) return s;
     for (std::size_t i = 0; i < lightCount; ++i) {

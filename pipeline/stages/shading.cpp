@@ -128,8 +128,8 @@ PhongSample FrameLighting::light(const Draw& draw, const vec3& objectColour, con
             return phong(draw.material, objectColour, m_scene.ambientIntensity,
                          m_view.lights.data(), lightCount, p, n, m_flip, draw.specular);
         case LightingModel::Lambert:
-            return lambert(objectColour, draw.material.shininess, m_view.lights.data(), lightCount,
-                           p, n, m_flip);
+            return hw2Lighting(objectColour, draw.material.shininess, m_view.lights.data(),
+                               lightCount, p, n, m_flip);
         case LightingModel::Unlit:
             break;
     }
