@@ -4,6 +4,7 @@
 
 #include "depth_test_fast.h"
 #include "format.h"
+#include "lights_on_surfaces.h"
 #include "normals_fast.h"
 #include "parallel.h"
 #include "projection_fast.h"

@@ -108,7 +108,8 @@ enum class ShadingModel : std::uint8_t {
     Gouraud,  // lighting at the vertices, colours interpolated
     Phong,    // lighting per pixel with interpolated P' and N (seed 000)
     // Seed 004's painter's algorithm: lit as Flat, but the frame's triangles are painted far
-    // to near by the distance of their barycentres, without a depth test (painter.h).
+    // to near by the distance of their barycentres, without a depth test
+    // (painters_algorithm.h).
     Painter,
 };
 
@@ -289,8 +290,9 @@ struct Scene {
     std::size_t vertexCount() const;
 };
 
-// Whether the frame is painted by the painter's algorithm (painter.h): some draw's shading is
-// ShadingModel::Painter. Then every draw's triangles take part in the one far-to-near order.
+// Whether the frame is painted by the painter's algorithm (painters_algorithm.h): some draw's
+// shading is ShadingModel::Painter. Then every draw's triangles take part in the one far-to-near
+// order.
 bool paintersAlgorithm(const Scene& scene);
 
 }  // namespace rl

@@ -94,9 +94,11 @@ struct FragmentDepth {
 // What the depth test of one triangle's spans needs, worked out once per triangle: the
 // screen barycentrics of a sample s, from s = P1 + beta (P2 - P1) + gamma (P3 - P1),
 // beta = (s - P1) x (P3 - P1) / A and gamma = (P2 - P1) x (s - P1) / A, A = (P2 - P1) x
-// (P3 - P1); both are linear in x along a scanline. With reciprocal, the plane interpolated
-// is that of 1/z, and a fragment's depth is one over it (view z is not linear on the screen,
-// 1/z is: perspective-correct depth).
+// (P3 - P1); both are linear in x along a scanline. The fragment's depth is
+// z = z1 + beta (z2 - z1) + gamma (z3 - z1), the lecture's alpha z1 + beta z2 + gamma z3 with
+// alpha = 1 - beta - gamma, written so that equal depths give exactly themselves. With
+// reciprocal, the plane interpolated is that of 1/z, and a fragment's depth is one over it
+// (view z is not linear on the screen, 1/z is: perspective-correct depth).
 struct TrianglePlane {
     dvec2 p0, e1, e2;
     double area = 0.0, betaDx = 0.0, gammaDx = 0.0;

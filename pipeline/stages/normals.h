@@ -25,7 +25,8 @@ struct DrawNormals {
     std::vector<vec3> triangle;
     std::vector<vec3> vertex;
     std::size_t degenerateTriangles = 0;
-    // Used by no triangle, or only by degenerate ones (0 when the vertex normals are left out).
+    // Vertices whose normal is zero: used by no triangle or only by degenerate ones, or given
+    // as zero by the file (0 when the vertex normals are left out).
     std::size_t verticesWithoutNormal = 0;
 };
 

@@ -231,15 +231,16 @@ void DrawProjector::clipTriangle(std::size_t t) {
             });
         m_polygon.swap(m_clipped);
     }
-    m_proj.fate[t] = TriangleFate::Clipped;
+    // The fan; a piece culled or not finite writes that fate, which stands when no piece is
+    // drawn.
     bool any = false;
     for (std::size_t k = 1; k + 1 < m_polygon.size(); ++k)
         any = emitTriangle(t, {m_polygon[0], m_polygon[k], m_polygon[k + 1]}) || any;
-    if (any) m_proj.fate[t] = TriangleFate::Clipped;
     if (m_polygon.size() < 3) {
         m_proj.fate[t] = TriangleFate::ClippedAway;  // only an edge or a point was left
         ++m_out.clippedAway;
     } else if (any) {
+        m_proj.fate[t] = TriangleFate::Clipped;
         ++m_out.clipped;
     } else {
         ++tally(m_out, m_proj.fate[t]);

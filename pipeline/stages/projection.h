@@ -2,16 +2,17 @@
 //  1. every vertex to clip space, pClip = clipFromView * pView; for the course camera
 //     pClip = ((d/hx) x, (d/hy) y, z, z), so w is the view z;
 //  2. each triangle is clipped against the draw's clip planes (view space, seed 001's
-//     clipplane) and against the near plane w = near (Sutherland-Hodgman, one plane after
-//     the other); the polygon left is cut into a fan of triangles, so nothing is ever
-//     divided by a w at or behind the camera;
+//     clipplane), the near plane w = near and the guard band's four planes (step 4),
+//     Sutherland-Hodgman, one plane after the other; the polygon left is cut into a fan of
+//     triangles, so nothing is ever divided by a w at or behind the camera;
 //  3. every vertex in front is projected to [-1, 1], pNdc = pClip.xy / pClip.w: for the
 //     course, ((d/hx) x/z, (d/hy) y/z);
 //  4. then to pixels, as the seed writes it:
 //     x = (int)((pNdc.x + 1) * width / 2),  y = (int)((1 - pNdc.y) * height / 2),
-//     snapped to the rules' sub-pixel grid and kept within a guard band of +-2^28 pixels
-//     so that scan conversion's integer arithmetic is exact (a vertex beyond it is pulled
-//     in, and a warning says so);
+//     snapped to the rules' sub-pixel grid; clipping keeps every vertex within a guard band
+//     of +-2^28 pixels, so that scan conversion's integer arithmetic is exact (under the
+//     plain divide, which does not clip, a vertex beyond it is pulled in, and a warning
+//     says so);
 //  5. with cull set, triangles that are clockwise on screen are dropped;
 //  6. back faces of a closed surface (Mesh::closedWinding) are left out before any of this
 //     when the scene allows it (Scene::cullHiddenBackFaces): the draw uses the course
@@ -78,7 +79,7 @@ struct DrawProjection {
     std::vector<dvec2> pScreenExact;    // pixels, before snapping
                                         // (these two are empty unless kept: run's keepExact)
     Buffer<dvec2> pScreen;              // pixels, after snapping (what is rasterized)
-    Buffer<float> depth;                // what the depth buffer compares (view z)
+    Buffer<float> depth;                // what the depth buffer compares (view z, or NDC z)
     Buffer<std::uint8_t> inFront;       // 1 when the vertex was projected
     std::vector<ClipVertex> generated;  // vertex originalVertexCount + i comes from generated[i]
     std::vector<TriangleFate> fate;     // per mesh triangle
