@@ -126,7 +126,7 @@ vec3 lightWith(const FrameLighting& lighting, const Draw& draw, const vec3& od, 
             if (!(glm::length(n) > 0.0f)) return s.colour();
             s.n = flip && glm::dot(s.v, n) < 0.0f ? -n : n;
             for (std::size_t i = 0; i < count; ++i)
-                addLight(m, od, lights[i], p, i == 0, s, draw.specular);
+                addLight(lightTerms(m, od, lights[i], p, s.n, s.v, draw.specular), i == 0, s);
             return s.colour();
         }
     }

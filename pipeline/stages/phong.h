@@ -155,73 +155,67 @@ inline LightFactor lightFactor(const ViewLight& light, const vec3& pView, const 
     return f;
 }
 
-// One light's terms of the course's model, added to sample; the first light's vectors are
-// kept for display, and all of this light's in terms when given.
-inline void addLight(const Material& m, const vec3& od, const ViewLight& light, const vec3& pView,
-                     bool first, PhongSample& sample,
-                     SpecularModel specularModel = SpecularModel::Phong,
-                     LightTerms* terms = nullptr) {
-    const vec3 l = towardLight(light, pView);
-    if (l == vec3(0.0f)) {
-        if (first) sample.lightAtPoint = true;
-        if (terms) terms->atPoint = true;
+// What one light gives the point pView under the course's model: n is the unit normal (already
+// turned toward the viewer), v the unit vector toward the viewer.
+inline LightTerms lightTerms(const Material& m, const vec3& od, const ViewLight& light,
+                             const vec3& pView, const vec3& n, const vec3& v,
+                             SpecularModel specularModel = SpecularModel::Phong) {
+    LightTerms t;
+    t.l = towardLight(light, pView);
+    if (t.l == vec3(0.0f)) {
+        t.atPoint = true;
+        return t;
+    }
+    // The course's own lights are neither attenuated nor spots: their factor is 1.
+    const LightFactor f = light.plain() ? LightFactor{} : lightFactor(light, pView, t.l, &t);
+    t.nDotL = glm::dot(n, t.l);
+    t.behind = t.nDotL < 0.0f;
+    if (!(t.nDotL >= 0.0f)) return t;  // behind (or NaN): no diffuse, no specular
+    if (specularModel == SpecularModel::BlinnPhong) {
+        // H = (L + V) times 1/|L + V|, normalised the course's way (not hw2Lighting()'s
+        // division); zero when the light is straight behind the viewer's line.
+        const vec3 sum = t.l + v;
+        const float length = glm::length(sum);
+        if (length > 0.0f) t.r = sum * (1.0f / length);
+        t.rDotV = glm::dot(n, t.r);
+    } else {
+        // |R| = 1, since N and L are unit vectors: not normalised again.
+        t.r = 2.0f * t.nDotL * n - t.l;
+        t.rDotV = glm::dot(t.r, v);
+    }
+    t.noSpecular = t.rDotV < 0.0f;
+    const vec3 il = light.intensity * f.value;
+    t.diffuse = il * od * m.kd * t.nDotL;
+    if (!t.noSpecular && m.ks != 0.0f) {
+        // (R.V)^n, or (N.H)^n. A negative n (outside the course's range, and warned about
+        // when read) is not a highlight: its huge or infinite values are left out rather
+        // than turned into NaN.
+        const float power = specularModel == SpecularModel::BlinnPhong
+                                ? specularPower(n, t.r, t.rDotV, m.shininess)
+                                : specularPower(t.r, v, t.rDotV, m.shininess);
+        if (std::isfinite(power)) t.specular = il * m.ks * power;
+    }
+    return t;
+}
+
+// One light's terms added to sample; the first light's vectors are kept for display.
+inline void addLight(const LightTerms& t, bool first, PhongSample& sample) {
+    if (!t.atPoint && t.nDotL >= 0.0f) {
+        sample.diffuse += t.diffuse;
+        if (t.specular != vec3(0.0f)) sample.specular += t.specular;
+    }
+    if (!first) return;
+    if (t.atPoint) {
+        sample.lightAtPoint = true;
         return;
     }
-    // The course's own lights (not attenuated, not spots) keep the expressions below
-    // unchanged, so their colours are the same bits as the many-pixel kernel's.
-    const bool plain = light.plain();
-    const LightFactor f = plain ? LightFactor{} : lightFactor(light, pView, l, terms);
-    const vec3& nUnit = sample.n;
-    const float nDotL = glm::dot(nUnit, l);
-    vec3 r(0.0f);
-    float rDotV = 0.0f;
-    vec3 diffuse(0.0f), specular(0.0f);
-    if (nDotL >= 0.0f) {
-        if (specularModel == SpecularModel::BlinnPhong) {
-            // H = (L + V) times 1/|L + V|, normalised the course's way (not hw2Lighting()'s
-            // division); zero when the light is straight behind the viewer's line.
-            const vec3 sum = l + sample.v;
-            const float length = glm::length(sum);
-            if (length > 0.0f) r = sum * (1.0f / length);
-            rDotV = glm::dot(nUnit, r);
-        } else {
-            // |R| = 1, since N and L are unit vectors: not normalised again.
-            r = 2.0f * nDotL * nUnit - l;
-            rDotV = glm::dot(r, sample.v);
-        }
-        const vec3 il = plain ? light.intensity : light.intensity * f.value;
-        diffuse = il * od * m.kd * nDotL;
-        if (rDotV >= 0.0f && m.ks != 0.0f) {
-            // (R.V)^n, or (N.H)^n. A negative n (outside the course's range, and warned about
-            // when read) is not a highlight: its huge or infinite values are left out rather
-            // than turned into NaN.
-            const float power = specularModel == SpecularModel::BlinnPhong
-                                    ? specularPower(nUnit, r, rDotV, m.shininess)
-                                    : specularPower(r, sample.v, rDotV, m.shininess);
-            if (std::isfinite(power)) specular = il * m.ks * power;
-        }
-        sample.diffuse += diffuse;
-        if (specular != vec3(0.0f)) sample.specular += specular;
-    }
-    if (first) {
-        sample.l = l;
-        sample.r = r;
-        sample.nDotL = nDotL;
-        sample.rDotV = rDotV;
-        sample.lightBehind = nDotL < 0.0f;
-        sample.noSpecular = nDotL >= 0.0f && rDotV < 0.0f;
-        sample.outsideCone = f.outsideCone && !(nDotL < 0.0f);
-    }
-    if (terms) {
-        terms->diffuse = diffuse;
-        terms->specular = specular;
-        terms->l = l;
-        terms->r = r;
-        terms->nDotL = nDotL;
-        terms->rDotV = rDotV;
-        terms->behind = nDotL < 0.0f;
-        terms->noSpecular = nDotL >= 0.0f && rDotV < 0.0f;
-    }
+    sample.l = t.l;
+    sample.r = t.r;
+    sample.nDotL = t.nDotL;
+    sample.rDotV = t.rDotV;
+    sample.lightBehind = t.behind;
+    sample.noSpecular = t.noSpecular;
+    sample.outsideCone = t.outsideCone && !t.behind;
 }
 
 // The course's model; od is the object colour (the material's Od, or a per-vertex one).
@@ -235,9 +229,11 @@ inline PhongSample phong(const Material& m, const vec3& od, const vec3& ambientI
     s.ambient = ambientIntensity * m.ka;
     s.emission = m.emission;
     if (!orientNormal(s, pView, nView, flipTowardViewer)) return s;
-    for (std::size_t i = 0; i < lightCount; ++i)
-        addLight(m, od, lights[i], pView, i == 0, s, specularModel,
-                 perLight ? perLight + i : nullptr);
+    for (std::size_t i = 0; i < lightCount; ++i) {
+        const LightTerms t = lightTerms(m, od, lights[i], pView, s.n, s.v, specularModel);
+        addLight(t, i == 0, s);
+        if (perLight) perLight[i] = t;
+    }
     return s;
 }
 
