@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 
+#include "multiversion.h"
 #include "parallel.h"
 #include "renderer.h"
 
@@ -103,7 +104,8 @@ void printJson(const BenchResult& r, const rl::Scene& scene, const QString& scen
         << ", \"triangles_per_s\": " << number(r.triangles, 0)
         << ", \"peak_rss_mib\": " << number(r.peakRss, 1)
         << ", \"rss_first_frame_mib\": " << number(r.firstRss, 1)
-        << ", \"rss_last_frame_mib\": " << number(r.lastRss, 1) << ", \"stages_ms\": {";
+        << ", \"rss_last_frame_mib\": " << number(r.lastRss, 1) << ", \"kernels\": \""
+        << rl::kernelLevel() << "\", \"stages_ms\": {";
     for (std::size_t k = 0; k < r.stageMedian.size(); ++k)
         out << (k ? ", " : "") << "\"" << rl::stageName(rl::kAllStages[k])
             << "\": " << number(r.stageMedian[k], 3);
@@ -135,7 +137,7 @@ void printTable(const BenchResult& r, const rl::Scene& scene, const QString& sce
                       .arg(r.triangleNormalsLeftOut)
                       .arg(r.vertexNormalsLeftOut)
                 : QString())
-        << "\n\n"
+        << " Kernels: " << rl::kernelLevel() << ".\n\n"
         << "| stage | median ms |\n|---|---|\n";
     for (std::size_t k = 0; k < r.stageMedian.size(); ++k)
         out << "| " << rl::stageName(rl::kAllStages[k]) << " | " << number(r.stageMedian[k], 3)

@@ -16,6 +16,7 @@
 #include <QTemporaryDir>
 
 #include "course_scenes.h"
+#include "multiversion.h"
 #include "painter.h"
 #include "test_support.h"
 
@@ -1167,6 +1168,12 @@ void TestCli::bench() {
     double sum = 0.0;
     for (const QJsonValue& v : stages) sum += v.toDouble();
     QVERIFY(sum > 0.0);
+    // The kernels this processor runs (multiversion.h), one of the three builds.
+    const QString kernels = o.value(QStringLiteral("kernels")).toString();
+    QVERIFY2(QStringList({"x86-64-v4 (AVX-512)", "x86-64-v3 (AVX2)", "x86-64", "baseline"})
+                 .contains(kernels),
+             qPrintable(kernels));
+    QCOMPARE(kernels, QString::fromLatin1(rl::kernelLevel()));
     // The Markdown table carries the same scene.
     CliRun md;
     RUN_CLI(md, QStringList({"bench", "--frames", "1"}) + arguments, dir.path());
@@ -1175,6 +1182,7 @@ void TestCli::bench() {
     QVERIFY(md.out.contains(QStringLiteral("| ") + size + QStringLiteral(" |")));
     QVERIFY(md.out.contains(QStringLiteral("| scan conversion | ")));
     QVERIFY(md.out.contains(QStringLiteral("Memory: peak ")));
+    QVERIFY(md.out.contains(QStringLiteral(" Kernels: %1.\n").arg(kernels)));
     QVERIFY(md.out.contains(QStringLiteral(" Normals: only those the shading reads (left out: "
                                            "the triangles' of %1 draw(s), the vertices' of %2).")
                                 .arg(withoutTriangleNormals)

@@ -18,3 +18,12 @@
 #define RL_MULTIVERSION \
     __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
 #endif
+
+namespace rl {
+
+// The kernels this processor runs, as RL_MULTIVERSION picks them: "x86-64-v4 (AVX-512)",
+// "x86-64-v3 (AVX2)" or "x86-64" (and "baseline" where the kernels are built once). The
+// bench prints it, so that figures from two machines say which kernels they timed.
+const char* kernelLevel();
+
+}  // namespace rl

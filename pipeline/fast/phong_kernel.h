@@ -1,8 +1,8 @@
 // The course's Phong model (phong.h) for a run of pixels that one triangle won, written
 // for several lanes at once: the hot loop of a course render. The same operations in the
 // same order as phong(), so the colours are the same bits as the one-pixel path's (which a
-// recording probe uses); built twice, for the baseline x86-64 and for x86-64-v3 (AVX2), the
-// better one chosen when the program starts.
+// recording probe uses); built for the baseline x86-64, x86-64-v3 (AVX2) and x86-64-v4
+// (AVX-512), the best one chosen when the program starts (multiversion.h).
 #pragma once
 
 #include <cstddef>
