@@ -21,6 +21,7 @@ packages=(
     appstream                          # appstreamcli: the AppStream metadata
     shared-mime-info                   # update-mime-database: the file types
     file                               # the PNG icons' sizes, checked
+    qemu-user                          # other processors' kernels (scripts/other-cpus.sh)
 )
 
 missing=()

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# The fast paths' kernels are built three times (pipeline/core/multiversion.h) and the
+# machine running the tests picks one. This runs the suites that hold the fast paths to the
+# lecture's stages bit for bit (tst_kernels, tst_fast_paths) under qemu-user as two other
+# processors: Haswell (AVX2, no AVX-512: the x86-64-v3 kernels) and Nehalem (the baseline
+# kernels), after checking with the bench that each picks the kernels expected.
+# Usage: scripts/other-cpus.sh [BUILD_DIR] (default build). Expects setup.sh's packages and
+# a build with the tests.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build="${1:-build}"
+if [[ "$(uname -m)" != x86_64 ]]; then
+    echo "other-cpus: not an x86-64 machine, nothing to check"
+    exit 0
+fi
+declare -A expected=([Haswell]="x86-64-v3 (AVX2)" [Nehalem]="x86-64")
+for cpu in Haswell Nehalem; do
+    # qemu warns of host features it does not emulate: those lines are left out.
+    as_cpu() { qemu-x86_64 -cpu "$cpu" "$@" 2> >(grep -v "TCG doesn't support" >&2); }
+    kernels=$(as_cpu "$build/bin/rasterlab-cli" bench --scene sphere-1k --size 64x48 \
+        --frames 1 --format json | grep -o '"kernels": "[^"]*"')
+    if [[ "$kernels" != "\"kernels\": \"${expected[$cpu]}\"" ]]; then
+        echo "other-cpus: $cpu runs $kernels, expected ${expected[$cpu]}" >&2
+        exit 1
+    fi
+    for suite in tst_kernels tst_fast_paths; do
+        if ! QT_QPA_PLATFORM=offscreen as_cpu "$build/tests/$suite" -silent; then
+            echo "other-cpus: $suite failed on $cpu" >&2
+            exit 1
+        fi
+    done
+    echo "other-cpus: $cpu (${expected[$cpu]} kernels): tst_kernels and tst_fast_paths pass"
+done
