@@ -18,7 +18,7 @@ for cpu in Haswell Nehalem; do
     # qemu warns of host features it does not emulate: those lines are left out.
     as_cpu() { qemu-x86_64 -cpu "$cpu" "$@" 2> >(grep -v "TCG doesn't support" >&2); }
     kernels=$(as_cpu "$build/bin/rasterlab-cli" bench --scene sphere-1k --size 64x48 \
-        --frames 1 --format json | grep -o '"kernels": "[^"]*"')
+        --frames 1 --format json | grep -o '"kernels": "[^"]*"' || true)
     if [[ "$kernels" != "\"kernels\": \"${expected[$cpu]}\"" ]]; then
         echo "other-cpus: $cpu runs $kernels, expected ${expected[$cpu]}" >&2
         exit 1
