@@ -155,14 +155,16 @@ inline LightFactor lightFactor(const ViewLight& light, const vec3& pView, const 
     return f;
 }
 
-// What one light gives the point pView under the course's model: n is the unit normal (already
-// turned toward the viewer), v the unit vector toward the viewer.
+// What one light gives the point pView under the course's model: n is the normal (unit, and
+// turned toward the viewer, except in the mistakes of mistakes.h), v the unit vector toward
+// the viewer.
 inline LightTerms lightTerms(const Material& m, const vec3& od, const ViewLight& light,
                              const vec3& pView, const vec3& n, const vec3& v,
                              SpecularModel specularModel = SpecularModel::Phong) {
     LightTerms t;
     t.l = towardLight(light, pView);
     if (t.l == vec3(0.0f)) {
+        t.l = vec3(0.0f);  // not -0: a length that overflowed leaves signed zeros
         t.atPoint = true;
         return t;
     }
@@ -186,7 +188,7 @@ inline LightTerms lightTerms(const Material& m, const vec3& od, const ViewLight&
     t.noSpecular = t.rDotV < 0.0f;
     const vec3 il = light.intensity * f.value;
     t.diffuse = il * od * m.kd * t.nDotL;
-    if (!t.noSpecular && m.ks != 0.0f) {
+    if (t.rDotV >= 0.0f && m.ks != 0.0f) {  // not when R.V is NaN either
         // (R.V)^n, or (N.H)^n. A negative n (outside the course's range, and warned about
         // when read) is not a highlight: its huge or infinite values are left out rather
         // than turned into NaN.
