@@ -2,24 +2,33 @@
 
 namespace rl {
 
-const char* kernelLevel() {
 #if defined(RL_THREAD_SANITIZER) || !defined(__x86_64__)
+const char* kernelLevel() {
     return "baseline";
-#else
-    __builtin_cpu_init();
-#if defined(__clang__)
-    // Clang 14 names the features, not the levels: those that set each level apart.
-    const bool v4 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
-                    __builtin_cpu_supports("avx512cd") && __builtin_cpu_supports("avx512dq") &&
-                    __builtin_cpu_supports("avx512vl");
-    const bool v3 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
-                    __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2");
-#else
-    const bool v4 = __builtin_cpu_supports("x86-64-v4");
-    const bool v3 = __builtin_cpu_supports("x86-64-v3");
-#endif
-    return v4 ? "x86-64-v4 (AVX-512)" : v3 ? "x86-64-v3 (AVX2)" : "x86-64";
-#endif
 }
+#elif defined(__clang__)
+// Clang 14 builds the x86-64-v3 and v4 clones, but its resolver does not know those names
+// and always picks the default.
+const char* kernelLevel() {
+    return "x86-64";
+}
+#else
+namespace {
+// Versions of one function, picked by the same resolver as RL_MULTIVERSION's clones.
+__attribute__((target("default"))) const char* level() {
+    return "x86-64";
+}
+__attribute__((target("arch=x86-64-v3"))) const char* level() {
+    return "x86-64-v3 (AVX2)";
+}
+__attribute__((target("arch=x86-64-v4"))) const char* level() {
+    return "x86-64-v4 (AVX-512)";
+}
+}  // namespace
+
+const char* kernelLevel() {
+    return level();
+}
+#endif
 
 }  // namespace rl

@@ -1,7 +1,8 @@
 // RL_MULTIVERSION: a hot kernel built three times, for the baseline x86-64, x86-64-v3 (AVX2)
-// and x86-64-v4 (AVX-512), the best one picked when the program starts (GCC and Clang's
-// target_clones, an ifunc). Under ThreadSanitizer the picking function would run, instrumented,
-// before the sanitizer is set up, and crash: there the kernel is built once, for the baseline.
+// and x86-64-v4 (AVX-512), the best one picked when the program starts (GCC's target_clones,
+// an ifunc; Clang 14 builds the three but always picks the baseline). Under ThreadSanitizer
+// the picking function would run, instrumented, before the sanitizer is set up, and crash:
+// there the kernel is built once, for the baseline.
 #pragma once
 
 #if defined(__SANITIZE_THREAD__)
@@ -22,8 +23,9 @@
 namespace rl {
 
 // The kernels this processor runs, as RL_MULTIVERSION picks them: "x86-64-v4 (AVX-512)",
-// "x86-64-v3 (AVX2)" or "x86-64" (and "baseline" where the kernels are built once). The
-// bench prints it, so that figures from two machines say which kernels they timed.
+// "x86-64-v3 (AVX2)" or "x86-64" (always "x86-64" when built by Clang 14, whose resolver picks
+// the default; "baseline" where the kernels are built once). The bench prints it, so that
+// figures from two machines say which kernels they timed.
 const char* kernelLevel();
 
 }  // namespace rl
