@@ -41,7 +41,7 @@ private:
 };
 
 // A material and one plain light, at random; sometimes no highlight (ks = 0), a shininess
-// below 1, a directional light, or the light on the far side.
+// below 1, a directional light, a light 1e25 away, or the light on the far side.
 struct LitSetup {
     Material material;
     ViewLight light;
@@ -60,6 +60,8 @@ LitSetup randomSetup(Random& r) {
     s.light.intensity = r.vector(0.0f, 300.0f);
     s.light.pView = r.chance(0.3) ? dvec4(dvec3(r.vector(-1.0f, 1.0f)), 0.0)
                                   : dvec4(dvec3(r.vector(-200.0f, 200.0f)), 1.0);
+    // Sometimes so far that the square of its distance overflows float (towardLight).
+    if (r.chance(0.1)) s.light.pView = dvec4(dvec3(r.vector(-1.0f, 1.0f)) * 1e25, 1.0);
     s.flip = r.chance(0.7);
     return s;
 }

@@ -217,6 +217,17 @@ private slots:
                                           vec3(0, 0, 10), vec3(0, 0, -1), true);
         QVERIFY(atPoint.lightAtPoint);
         RL_COMPARE_VEC(atPoint.colour(), vec3(5.0f), 0.0);
+        // A light 1e25 away, straight in front of the surface: the square of its distance
+        // overflows float, but it is not at the point. L = (0, 0, -1) = N, so N.L = 1: the
+        // whole diffuse term (100) over the ambient (5); V = L, so R.V = 1 and the highlight
+        // is whole too (100).
+        const ViewLight far{dvec4(0.0, 0.0, -1e25, 1.0), vec3(100.0f)};
+        const PhongSample lit = phong(unitMaterial(), vec3(1.0f), vec3(50.0f), &far, 1,
+                                      vec3(0, 0, 10), vec3(0, 0, -1), true);
+        QVERIFY(!lit.lightAtPoint);
+        RL_COMPARE_VEC(lit.l, vec3(0, 0, -1), 1e-6);
+        RL_COMPARE_NEAR(lit.nDotL, 1.0, 1e-6);
+        RL_COMPARE_VEC(lit.colour(), vec3(205.0f), 1e-3);
     }
 
     void exponentZeroAndSeveralLights() {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 #include "fast_pow.h"
 #include "multiversion.h"
@@ -56,6 +57,14 @@ RL_LANES Floats squareRoot(const Floats& v) {
     Floats r;
     for (int i = 0; i < kLanes; ++i) r[i] = __builtin_sqrtf(v[i]);  // correctly rounded
     return r;
+}
+
+// |v| lane by lane (the sign bit cleared, as std::abs), and std::max(a, b): a < b ? b : a.
+RL_LANES Floats magnitude(const Floats& v) {
+    return reinterpret_cast<Floats>(reinterpret_cast<Ints>(v) & splat(0x7fffffff));
+}
+RL_LANES Floats larger(const Floats& a, const Floats& b) {
+    return select(a < b, b, a);
 }
 
 // Whether any lane of a mask is set.
@@ -138,10 +147,21 @@ RL_LANES LitLanes lightLanes(const CoursePhongRun& run, const Floats& px, const 
     ny = select(turn, -ny, ny);
     nz = select(turn, -nz, nz);
     // L toward the light.
-    const Floats tx = select(directional, splat(run.light.x), run.light.x - px);
-    const Floats ty = select(directional, splat(run.light.y), run.light.y - py);
-    const Floats tz = select(directional, splat(run.light.z), run.light.z - pz);
-    const Floats lLength = squareRoot((tx * tx + ty * ty) + tz * tz);
+    Floats tx = select(directional, splat(run.light.x), run.light.x - px);
+    Floats ty = select(directional, splat(run.light.y), run.light.y - py);
+    Floats tz = select(directional, splat(run.light.z), run.light.z - pz);
+    Floats lLength = squareRoot((tx * tx + ty * ty) + tz * tz);
+    // A light so far that the square of its distance overflows: brought nearer along the
+    // same line, as towardLight does.
+    const Ints overflowed = lLength == std::numeric_limits<float>::infinity();
+    if (anyLane(overflowed)) {
+        const Floats largest = larger(larger(magnitude(tx), magnitude(ty)), magnitude(tz));
+        const Floats shrink = 1.0f / largest;
+        tx = select(overflowed, tx * shrink, tx);
+        ty = select(overflowed, ty * shrink, ty);
+        tz = select(overflowed, tz * shrink, tz);
+        lLength = select(overflowed, squareRoot((tx * tx + ty * ty) + tz * tz), lLength);
+    }
     const Ints hasL = lLength > 0.0f;
     const Floats lInverse = 1.0f / select(hasL, lLength, splat(1.0f));
     const Floats lx = tx * lInverse, ly = ty * lInverse, lz = tz * lInverse;

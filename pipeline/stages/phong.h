@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 #include "fast_pow.h"
 #include "math.h"
@@ -65,10 +66,19 @@ struct PhongSample {
     vec3 colour() const { return ambient + diffuse + specular + unlit + emission; }
 };
 
-// The unit vector from pView toward a light, or zero when the light sits on the point.
+// The unit vector from pView toward a light, or zero when the light sits on the point. A
+// light so far that the square of its distance overflows float is first brought nearer
+// along the same line (divided by its largest coordinate), rather than taken for one at the
+// point.
 inline vec3 towardLight(const ViewLight& light, const vec3& pView) {
-    const vec3 toLight = light.pView.w == 0.0 ? vec3(light.pView) : vec3(light.pView) - pView;
-    const float length = glm::length(toLight);
+    vec3 toLight = light.pView.w == 0.0 ? vec3(light.pView) : vec3(light.pView) - pView;
+    float length = glm::length(toLight);
+    if (length == std::numeric_limits<float>::infinity()) {
+        const float largest =
+            std::max(std::max(std::abs(toLight.x), std::abs(toLight.y)), std::abs(toLight.z));
+        toLight = toLight * (1.0f / largest);
+        length = glm::length(toLight);
+    }
     return length > 0.0f ? toLight * (1.0f / length) : vec3(0.0f);
 }
 
