@@ -244,7 +244,11 @@ private slots:
         QTest::newRow("directional, no specular") << std::make_shared<const Scene>(Scene(*matte));
         matte->draws[0].material.ks = 0.8f;
         matte->draws[0].material.shininess = 0.5f;
-        QTest::newRow("directional, n = 0.5") << std::make_shared<const Scene>(std::move(*matte));
+        QTest::newRow("directional, n = 0.5") << std::make_shared<const Scene>(Scene(*matte));
+        // A light so far that the square of its distance overflows float (towardLight).
+        matte->lights[0].pWorld = dvec4(-220.0, -1.7e25, 0.0, 1.0);
+        matte->draws[0].material.shininess = 0.0f;
+        QTest::newRow("a light 1.7e25 away") << std::make_shared<const Scene>(std::move(*matte));
         // The lecture slides' lighting: an attenuated spot and a directional light, emission,
         // Blinn-Phong, one-sided (the kernel takes none of these; flat and Gouraud light
         // their triangles and vertices with it too).
