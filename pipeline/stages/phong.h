@@ -174,7 +174,6 @@ inline LightTerms lightTerms(const Material& m, const vec3& od, const ViewLight&
     LightTerms t;
     t.l = towardLight(light, pView);
     if (t.l == vec3(0.0f)) {
-        t.l = vec3(0.0f);  // not -0: a length that overflowed leaves signed zeros
         t.atPoint = true;
         return t;
     }
