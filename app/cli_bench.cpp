@@ -34,6 +34,7 @@ double memoryMiB(const char* key) {
 struct BenchResult {
     std::size_t covered = 0, fragments = 0;
     bool inBands = false;  // depth test and shading run together (RenderOptions::keepFragments)
+    int bandRows = 0;      // the rows of their bands (FrameTrace::bandRows)
     std::size_t triangleNormalsLeftOut = 0, vertexNormalsLeftOut = 0;  // draws (normalsRead)
     int usedThreads = 0;
     double firstRss = -1.0;  // resident memory after the first timed frame, MiB
@@ -62,6 +63,7 @@ int timeFrames(const std::shared_ptr<const rl::Scene>& scene, const rl::RenderOp
         // would bring it into the cache for the next one.
         if (i + 1 == warmupCount + frameCount) result.covered = trace->depth->coveredPixels();
         result.inBands = !trace->depth->fragmentsKept;
+        result.bandRows = trace->bandRows;
         result.triangleNormalsLeftOut = trace->normals->triangleNormalsLeftOut;
         result.vertexNormalsLeftOut = trace->normals->vertexNormalsLeftOut;
         result.fragments = trace->depth->fragments;
@@ -96,6 +98,8 @@ void printJson(const BenchResult& r, const rl::Scene& scene, const QString& scen
         << ", \"frames\": " << frameCount
         << ", \"z_buffer_kept\": " << (keepDepth ? "true" : "false")
         << ", \"shaded_in_bands\": " << (r.inBands ? "true" : "false")
+        << ", \"band_rows\": " << r.bandRows
+        << ", \"l2_cache_per_thread_kib\": " << rl::l2CachePerThread(r.usedThreads) / 1024
         << ", \"draws_without_triangle_normals\": " << r.triangleNormalsLeftOut
         << ", \"draws_without_vertex_normals\": " << r.vertexNormalsLeftOut
         << ", \"median_ms\": " << number(r.medianMs, 3) << ", \"min_ms\": " << number(r.minMs, 3)
@@ -127,10 +131,12 @@ void printTable(const BenchResult& r, const rl::Scene& scene, const QString& sce
         << " MiB after the last. Z-buffer: "
         << (keepDepth ? "kept whole (--keep-depth)" : "a band of rows per thread, in the cache")
         << "."
-        << (r.inBands ? " Depth test and shading: together, each chunk of rows shaded by the "
-                        "thread that tested it, from its band (the two stages' times are "
-                        "their sum split as the threads spent it)."
-                      : "")
+        << (r.inBands ? lit(" Depth test and shading: together, each band of %1 row(s) shaded by "
+                            "the thread that tested it (the two stages' times are their sum "
+                            "split as the threads spent it; L2 cache: %2 KiB a thread).")
+                            .arg(r.bandRows)
+                            .arg(rl::l2CachePerThread(r.usedThreads) / 1024)
+                      : QString())
         << (r.triangleNormalsLeftOut + r.vertexNormalsLeftOut > 0
                 ? lit(" Normals: only those the shading reads (left out: the triangles' of "
                       "%1 draw(s), the vertices' of %2).")
@@ -164,6 +170,12 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
         lit("threads"), lit("Threads to render with (default: every core)."), lit("N"));
     const QCommandLineOption format(lit("format"), lit("md (default) or json."), lit("FORMAT"),
                                     lit("md"));
+    const QCommandLineOption bandRows(
+        lit("band-rows"),
+        lit("Rows of the bands the depth test and shading run in together, 1 to %1 (default "
+            "%1): fewer take less of the L2 cache a thread has.")
+            .arg(rl::kRowChunk),
+        lit("N"));
     const QCommandLineOption keepDepth(
         lit("keep-depth"),
         lit("Keep the whole z-buffer and the winning fragments in memory, as the window does "
@@ -171,7 +183,7 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
             "is tested when that pays, as render does without --depth-output)."));
     parser.addOption(help);
     sceneOptions.addTo(parser);
-    parser.addOptions({sceneName, frames, warmup, threads, format, keepDepth});
+    parser.addOptions({sceneName, frames, warmup, threads, format, bandRows, keepDepth});
     rl::CourseSceneSettings settings;
     if (auto code = parseSceneCommand(parser, arguments, help, lit("bench"), sceneOptions,
                                       sceneName, settings, out, err))
@@ -181,7 +193,7 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
         value = parser.value(option).toInt(&ok);
         return ok && value >= least;
     };
-    int frameCount = 0, warmupCount = 0, threadCount = 0;
+    int frameCount = 0, warmupCount = 0, threadCount = 0, rowCount = 0;
     if (!count(frames, 1, frameCount))
         return usageError(err, lit("--frames expects a whole number of at least 1, found '%1'")
                                    .arg(parser.value(frames)));
@@ -192,6 +204,10 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
         return usageError(err, lit("--threads expects a whole number from 1 to %1, found '%2'")
                                    .arg(rl::kMaxThreads)
                                    .arg(parser.value(threads)));
+    if (parser.isSet(bandRows) && (!count(bandRows, 1, rowCount) || rowCount > rl::kRowChunk))
+        return usageError(err, lit("--band-rows expects a whole number from 1 to %1, found '%2'")
+                                   .arg(rl::kRowChunk)
+                                   .arg(parser.value(bandRows)));
     const QString outputFormat = parser.value(format);
     if (outputFormat != lit("md") && outputFormat != lit("json"))
         return usageError(err, lit("--format expects md or json, found '%1'").arg(outputFormat));
@@ -210,6 +226,7 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     options.keepDepth = parser.isSet(keepDepth);
     options.keepFragments = options.keepDepth;
     options.keepForViews = false;
+    options.bandRows = rowCount;  // 0: from the cache
     BenchResult result;
     if (int code = timeFrames(scene, options, warmupCount, frameCount, err, result); code != ExitOk)
         return code;

@@ -18,6 +18,7 @@
 #include "course_scenes.h"
 #include "multiversion.h"
 #include "painter.h"
+#include "parallel.h"
 #include "test_support.h"
 
 using testing::CliRun;
@@ -399,6 +400,12 @@ void TestCli::usageErrors_data() {
     QTest::newRow("bench, too many threads")
         << QStringList({"bench", "--threads", "100000"})
         << "--threads expects a whole number from 1 to 256, found '100000'";
+    QTest::newRow("bench, no band rows")
+        << QStringList({"bench", "--band-rows", "0"})
+        << "--band-rows expects a whole number from 1 to 8, found '0'";
+    QTest::newRow("bench, bands taller than a chunk")
+        << QStringList({"bench", "--band-rows", "9"})
+        << "--band-rows expects a whole number from 1 to 8, found '9'";
     QTest::newRow("bench, unknown format")
         << QStringList({"bench", "--format", "csv"}) << "--format expects md or json, found 'csv'";
     QTest::newRow("bench, unknown scene")
@@ -1118,6 +1125,10 @@ void TestCli::bench_data() {
         << QStringList({"--scene", "sphere-1k", "--size", "160x120", "--shading", "gouraud",
                         "--threads", "1", "--keep-depth"})
         << 1000 << 1 << true << 1 << 0;
+    QTest::newRow("sphere, gouraud, 2 threads, bands of 3 rows")
+        << QStringList({"--scene", "sphere-1k", "--size", "160x120", "--shading", "gouraud",
+                        "--threads", "2", "--band-rows", "3"})
+        << 1000 << 2 << false << 1 << 0;
     QTest::newRow("torus, flat, 2 threads")
         << QStringList(
                {"--scene", "torus-1k", "--size", "160x120", "--shading", "flat", "--threads", "2"})
@@ -1174,6 +1185,14 @@ void TestCli::bench() {
                  .contains(kernels),
              qPrintable(kernels));
     QCOMPARE(kernels, QString::fromLatin1(rl::kernelLevel()));
+    // The bands' rows: as asked, or a chunk's (8); and the L2 cache a thread has.
+    const bool inBands = o.value(QStringLiteral("shaded_in_bands")).toBool();
+    const qsizetype asked = arguments.indexOf(QStringLiteral("--band-rows"));
+    const std::size_t l2 = rl::l2CachePerThread(threads);
+    const int rows = !inBands ? 0 : asked >= 0 ? arguments.at(asked + 1).toInt() : rl::kRowChunk;
+    QCOMPARE(inBands, !zBufferKept);
+    QCOMPARE(o.value(QStringLiteral("band_rows")).toInt(-1), rows);
+    QCOMPARE(o.value(QStringLiteral("l2_cache_per_thread_kib")).toInteger(-1), qint64(l2 / 1024));
     // The Markdown table carries the same scene.
     CliRun md;
     RUN_CLI(md, QStringList({"bench", "--frames", "1"}) + arguments, dir.path());
@@ -1183,6 +1202,10 @@ void TestCli::bench() {
     QVERIFY(md.out.contains(QStringLiteral("| scan conversion | ")));
     QVERIFY(md.out.contains(QStringLiteral("Memory: peak ")));
     QVERIFY(md.out.contains(QStringLiteral(" Kernels: %1.\n").arg(kernels)));
+    if (inBands)
+        QVERIFY(md.out.contains(QStringLiteral("each band of %1 row(s) shaded by the thread that "
+                                               "tested it")
+                                    .arg(rows)));
     QVERIFY(md.out.contains(QStringLiteral(" Normals: only those the shading reads (left out: "
                                            "the triangles' of %1 draw(s), the vertices' of %2).")
                                 .arg(withoutTriangleNormals)

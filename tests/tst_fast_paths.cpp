@@ -28,6 +28,7 @@
 #include "frame_memory.h"
 #include "mesh_topology.h"
 #include "output_image.h"
+#include "parallel.h"
 #include "renderer.h"
 #include "shading_fast.h"
 #include "test_support.h"
@@ -315,10 +316,13 @@ private slots:
         // In bands where that pays (shadeInBands), through the same context and back: a
         // frame that keeps nothing per pixel after one that kept everything, and the other
         // way round. It keeps only the normals its shading reads, as the bench's frames do.
+        // Bands of a chunk's 8 rows (0), and of 4, 1 and 3 (a chunk tested in three bands,
+        // the last of 2).
         const bool bands = fast::shadeInBands(*scene, *plain->projection, *plain->scan);
         const FrameTrace plainAsRead = withNormalsAsRead(*plain);
-        for (int threads : {1, 2, 3, 5}) {
+        for (auto [threads, rows] : {std::pair{1, 0}, {2, 4}, {3, 1}, {5, 3}}) {
             options.threads = threads;
+            options.bandRows = rows;
             {
                 options.keepDepth = false;
                 options.keepFragments = false;
@@ -327,11 +331,13 @@ private slots:
                 options.keepForViews = true;
                 QVERIFY(banded.ok());
                 QCOMPARE(banded->depth->fragmentsKept, !bands);
+                QCOMPARE(banded->bandRows, !bands ? 0 : rows > 0 ? rows : kRowChunk);
                 const QString diff = bands ? differenceInBands(plainAsRead, *banded)
                                            : differenceWithoutZBuffer(plainAsRead, *banded);
                 QVERIFY2(diff.isEmpty(),
-                         qPrintable(QStringLiteral("%1 thread(s), in bands: %2 differ")
+                         qPrintable(QStringLiteral("%1 thread(s), bands of %2 rows: %3 differ")
                                         .arg(threads)
+                                        .arg(rows)
                                         .arg(diff)));
             }
             options.keepDepth = true;

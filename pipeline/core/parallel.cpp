@@ -4,6 +4,9 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <fstream>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #if defined(__x86_64__) || defined(__i386__)
@@ -11,6 +14,7 @@
 #endif
 #if defined(__linux__)
 #include <sched.h>
+#include <unistd.h>
 #endif
 
 namespace rl {
@@ -186,7 +190,73 @@ private:
     std::vector<std::thread> m_threads;
 };
 
+// The first line of a file, empty when it cannot be read.
+std::string firstLine(const std::string& path) {
+    std::ifstream file(path);
+    std::string line;
+    std::getline(file, line);
+    return line;
+}
+
+// The processors in a list such as "0-1,4" (sysfs' shared_cpu_list); throws when it is not one.
+int processorsIn(const std::string& list) {
+    int count = 0;
+    std::size_t at = 0;
+    while (at < list.size()) {
+        std::size_t read = 0;
+        const int first = std::stoi(list.substr(at), &read);
+        at += read;
+        int last = first;
+        if (at < list.size() && list[at] == '-') {
+            last = std::stoi(list.substr(at + 1), &read);
+            at += 1 + read;
+        }
+        count += last - first + 1;
+        ++at;  // the comma
+    }
+    return count;
+}
+
+// The first processor's L2 cache: its size in bytes (0 when not known) and how many
+// processors share it.
+struct L2Cache {
+    std::size_t bytes = 0;
+    int sharedBy = 1;
+};
+
+L2Cache firstL2() {
+    L2Cache l2;
+#if defined(__linux__)
+    const std::string base = "/sys/devices/system/cpu/cpu0/cache/index";
+    for (int k = 0; k < 8; ++k) {
+        const std::string dir = base + std::to_string(k) + "/";
+        if (firstLine(dir + "level") != "2" || firstLine(dir + "type") == "Instruction") continue;
+        try {
+            const std::string size = firstLine(dir + "size");  // "512K"
+            std::size_t unit = 0;
+            l2.bytes = std::stoul(size, &unit);
+            if (unit < size.size() && size[unit] == 'K') l2.bytes *= 1024;
+            if (unit < size.size() && size[unit] == 'M') l2.bytes *= 1024 * 1024;
+            l2.sharedBy = std::max(1, processorsIn(firstLine(dir + "shared_cpu_list")));
+        } catch (const std::exception&) {
+            l2 = L2Cache{};
+        }
+        break;
+    }
+#if defined(_SC_LEVEL2_CACHE_SIZE)
+    if (l2.bytes == 0)
+        l2.bytes = static_cast<std::size_t>(std::max(0L, sysconf(_SC_LEVEL2_CACHE_SIZE)));
+#endif
+#endif
+    return l2;
+}
+
 }  // namespace
+
+std::size_t l2CachePerThread(int threads) {
+    static const L2Cache l2 = firstL2();
+    return l2.bytes / static_cast<std::size_t>(std::clamp(threads, 1, l2.sharedBy));
+}
 
 void runPartsOnWorkers(int parts, void (*fn)(const void* context, int part), const void* context) {
     static Workers* const workers = new Workers;  // kept for the program's life

@@ -22,6 +22,11 @@ inline int resolveThreads(int requested) {
 
 inline constexpr int kRowChunk = 8;
 
+// The bytes of L2 cache each of `threads` threads has: the first processor's L2, divided
+// between the processors that share it (hardware threads of one core) when the threads are
+// as many. 0 when not known.
+std::size_t l2CachePerThread(int threads);
+
 // Whether row y belongs to thread `part` of `parts`.
 inline bool ownsRow(int y, int part, int parts) {
     return (y / kRowChunk) % parts == part;

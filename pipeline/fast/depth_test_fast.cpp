@@ -197,25 +197,86 @@ SpansByChunk sortByChunk(const ScanConversion& scan, int chunks, int threads) {
     return out;
 }
 
+// Row dy of the rows from `first` on, width apart.
+DepthRows rowOf(const DepthRows& first, int dy, std::size_t width) {
+    const std::size_t offset = static_cast<std::size_t>(dy) * width;
+    return DepthRows{first.depth + offset, first.ids + offset,
+                     first.bary ? first.bary + offset : nullptr};
+}
+
+// Clears `rows` rows from `first` on: depths to `clear` in depthDirty's columns, ids to none
+// in idDirty's (and barycentrics to 0 there when zeroBary).
+void clearRows(const DepthRows& first, int rows, std::size_t width, ColumnRange depthDirty,
+               ColumnRange idDirty, float clear, bool zeroBary) {
+    for (int dy = 0; dy < rows; ++dy) {
+        const DepthRows row = rowOf(first, dy, width);
+        if (depthDirty.begin < depthDirty.end)
+            fillFloats(row.depth + depthDirty.begin,
+                       static_cast<std::size_t>(depthDirty.end - depthDirty.begin), clear);
+        if (idDirty.begin >= idDirty.end) continue;
+        const auto n = static_cast<std::size_t>(idDirty.end - idDirty.begin);
+        static_assert(kNoTriangle == ~std::uint32_t{0}, "cleared byte by byte");
+        std::memset(row.ids + idDirty.begin, 0xff, n * sizeof(std::uint32_t));
+        // Barycentrics are read only where a triangle won, so any value does; but zeroing
+        // the frame's brings their lines into the cache ahead of the spans' stores.
+        if (zeroBary)
+            std::memset(static_cast<void*>(row.bary + idDirty.begin), 0, n * sizeof(vec2));
+    }
+}
+
+// The spans among [begin, end) (a chunk's, in triangle order) whose row is in [y0, y1),
+// tested into the rows from `first` (row y0) on.
+void testRows(const Scene& scene, const Projection& projection, const Entry* begin,
+              const Entry* end, int y0, int y1, const DepthRows& first, std::size_t width,
+              bool painted, DepthCounts& counts) {
+    std::uint32_t current = kNoTriangle;
+    std::optional<TrianglePlane> plane;
+    for (const Entry* entry = begin; entry != end; ++entry) {
+        const int y = entry->span.y;
+        if (y < y0 || y >= y1) continue;
+        if (entry->triangle != current) {
+            current = entry->triangle;
+            plane.emplace(projection, current, perspectiveDepth(scene));
+        }
+        testSpanOnLanes(scene, *plane, current, entry->span, rowOf(first, y - y0, width), painted,
+                        counts);
+    }
+}
+
+// Marks the triangles that kept a pixel of rows [y0, y1), a run of one id at a time. Two
+// threads may mark the same triangle: relaxed atomic stores of the same value.
+void markVisible(DepthTest& out, int y0, int y1, ColumnRange touched) {
+    for (int y = y0; y < y1; ++y) {
+        const std::uint32_t* ids = out.triangle.row(y);
+        for (int x = touched.begin; x < touched.end;) {
+            const std::uint32_t t = ids[x];
+            if (t != kNoTriangle)
+                std::atomic_ref<std::uint8_t>(out.visible[t]).store(1, std::memory_order_relaxed);
+            x = runEnd(ids, x + 1, touched.end, t);
+        }
+    }
+}
+
 // The rows one thread owns, chunk by chunk (parallel.h): the chunk's buffers are cleared,
 // then its spans tested in triangle order, so that each chunk's pixels stay in the cache
 // while its triangles are drawn. Every pixel sees the same fragments in the same order as
 // in the stage, so the buffers are the same bits. When the z-buffer is not kept
 // (DepthTest::depthKept), the chunk's depths are a band of kRowChunk rows of the thread's
 // own (61 KB at 1920 pixels wide), cleared where the chunk's spans fall: it stays in L2.
-// With a sink (depthTestInBands) the ids and barycentrics are in the band too, and
-// each chunk is handed to the sink once tested, before the next one overwrites it.
+// With a sink (depthTestInBands) the ids and barycentrics are in the band too, of bandRows
+// rows: each chunk is tested a band at a time, each band handed to the sink once tested,
+// before the next one overwrites it.
 DepthCounts testChunks(const Scene& scene, const Projection& projection, const SpansByChunk& sorted,
                        DepthTest& out, int part, int parts,
-                       const std::vector<ColumnRange>& previous, const BandSink* sink,
+                       const std::vector<ColumnRange>& previous, const BandSink* sink, int bandRows,
                        std::atomic<int>& nextChunk) {
     DepthCounts counts;
     const int chunks = (scene.height + kRowChunk - 1) / kRowChunk;
-    const std::vector<Entry>& entries = sorted.entries;
+    const Entry* entries = sorted.entries.data();
     const std::vector<std::uint32_t>& start = sorted.first;
-    const float clear = scene.conventions.depthClear;
     const auto width = static_cast<std::size_t>(scene.width);
-    const std::size_t bandPixels = static_cast<std::size_t>(kRowChunk) * width;
+    const int rows = sink ? bandRows : kRowChunk;
+    const std::size_t bandPixels = static_cast<std::size_t>(rows) * width;
     // The thread's band, cleared below where it is used.
     std::unique_ptr<float[]> depthBand;
     std::unique_ptr<std::uint32_t[]> idBand;
@@ -225,20 +286,15 @@ DepthCounts testChunks(const Scene& scene, const Projection& projection, const S
         idBand = std::make_unique_for_overwrite<std::uint32_t[]>(bandPixels);
         if (out.barycentricsKept) baryBand = std::make_unique_for_overwrite<vec2[]>(bandPixels);
     }
-    // The first row of chunk rows from y0 on, in each buffer; the rows follow it, width apart.
-    const auto chunkRows = [&](int y0) {
-        DepthRows rows;
-        rows.depth = out.depthKept ? out.depth.row(y0) : depthBand.get();
-        rows.ids = sink ? idBand.get() : out.triangle.row(y0);
-        rows.bary = !out.barycentricsKept ? nullptr
-                    : sink                ? baryBand.get()
-                                          : out.barycentric.row(y0);
-        return rows;
-    };
-    const auto rowOf = [width](const DepthRows& first, int dy) {
-        const std::size_t offset = static_cast<std::size_t>(dy) * width;
-        return DepthRows{first.depth + offset, first.ids + offset,
-                         first.bary ? first.bary + offset : nullptr};
+    // The first of the rows from y0 on, in each buffer; the rows follow it, width apart.
+    const auto firstRow = [&](int y0) {
+        DepthRows first;
+        first.depth = out.depthKept ? out.depth.row(y0) : depthBand.get();
+        first.ids = sink ? idBand.get() : out.triangle.row(y0);
+        first.bary = !out.barycentricsKept ? nullptr
+                     : sink                ? baryBand.get()
+                                           : out.barycentric.row(y0);
+        return first;
     };
     // In bands, each chunk goes to the next thread free to take it (nextChunk): a thread that
     // starts late (a virtual machine's core can take milliseconds to wake) holds nothing up,
@@ -250,66 +306,29 @@ DepthCounts testChunks(const Scene& scene, const Projection& projection, const S
     for (int c = sink ? nextOf(0) : part; c < chunks; c = nextOf(c)) {
         const int y0 = c * kRowChunk;
         const int y1 = std::min(scene.height, y0 + kRowChunk);
-        const DepthRows first = chunkRows(y0);
         ColumnRange touched{scene.width, 0};
         for (std::uint32_t e = start[c]; e < start[c + 1]; ++e) {
-            const Span& span = entries[e].span;
-            touched.begin = std::min(touched.begin, span.xBegin);
-            touched.end = std::max(touched.end, span.xEnd);
+            touched.begin = std::min(touched.begin, entries[e].span.xBegin);
+            touched.end = std::max(touched.end, entries[e].span.xEnd);
         }
+        if (touched.begin >= touched.end) touched = ColumnRange{};
+        out.touched[static_cast<std::size_t>(c)] = touched;
         // Clear what the previous frame wrote (everything when that is not known); a band,
         // where this chunk's spans fall.
         const ColumnRange dirty =
             previous.empty() ? ColumnRange{0, scene.width} : previous[static_cast<std::size_t>(c)];
         const ColumnRange depthDirty = out.depthKept ? dirty : touched;
         const ColumnRange idDirty = sink ? touched : dirty;
-        for (int y = y0; y < y1; ++y) {
-            const DepthRows rows = rowOf(first, y - y0);
-            if (depthDirty.begin < depthDirty.end)
-                fillFloats(rows.depth + depthDirty.begin,
-                           static_cast<std::size_t>(depthDirty.end - depthDirty.begin), clear);
-            if (idDirty.begin >= idDirty.end) continue;
-            const auto n = static_cast<std::size_t>(idDirty.end - idDirty.begin);
-            static_assert(kNoTriangle == ~std::uint32_t{0}, "cleared byte by byte");
-            std::memset(rows.ids + idDirty.begin, 0xff, n * sizeof(std::uint32_t));
-            // Barycentrics are read only where a triangle won, so any value does; but
-            // zeroing the frame's brings their lines into the cache ahead of the spans'
-            // stores. A band's are in the cache already.
-            if (rows.bary && !sink)
-                std::memset(static_cast<void*>(rows.bary + idDirty.begin), 0, n * sizeof(vec2));
+        for (int b0 = y0; b0 < y1; b0 += rows) {
+            const int b1 = std::min(y1, b0 + rows);
+            const DepthRows first = firstRow(b0);
+            clearRows(first, b1 - b0, width, depthDirty, idDirty, scene.conventions.depthClear,
+                      first.bary && !sink);
+            testRows(scene, projection, entries + start[c], entries + start[c + 1], b0, b1, first,
+                     width, out.painted, counts);
+            if (sink) (*sink)(TestedBand{part, b0, b1, touched, first.ids, first.bary, width});
         }
-        out.touched[static_cast<std::size_t>(c)] =
-            touched.begin < touched.end ? touched : ColumnRange{};
-        std::uint32_t current = kNoTriangle;
-        std::optional<TrianglePlane> plane;
-        for (std::uint32_t e = start[c]; e < start[c + 1]; ++e) {
-            const Entry& entry = entries[e];
-            if (entry.triangle != current) {
-                current = entry.triangle;
-                plane.emplace(projection, current, perspectiveDepth(scene));
-            }
-            testSpanOnLanes(scene, *plane, current, entry.span, rowOf(first, entry.span.y - y0),
-                         out.painted, counts);
-        }
-        if (sink) {
-            (*sink)(TestedBand{part, y0, y1, out.touched[static_cast<std::size_t>(c)], first.ids,
-                               first.bary, width});
-            continue;
-        }
-        if (!out.visible.empty() && touched.begin < touched.end) {
-            // The triangles that kept a pixel of this chunk, a run of one id at a time. Two
-            // threads may mark the same triangle: relaxed atomic stores of the same value.
-            for (int y = y0; y < y1; ++y) {
-                const std::uint32_t* ids = out.triangle.row(y);
-                for (int x = touched.begin; x < touched.end;) {
-                    const std::uint32_t t = ids[x];
-                    if (t != kNoTriangle)
-                        std::atomic_ref<std::uint8_t>(out.visible[t])
-                            .store(1, std::memory_order_relaxed);
-                    x = runEnd(ids, x + 1, touched.end, t);
-                }
-            }
-        }
+        if (!sink && !out.visible.empty()) markVisible(out, y0, y1, touched);
     }
     return counts;
 }
@@ -342,10 +361,18 @@ RL_MULTIVERSION int runEnd(const std::uint32_t* ids, int from, int limit, std::u
 
 namespace {
 
+// Whether a draw reads barycentrics: flat shading does not (one colour per triangle), and
+// when every draw is flat they are not written.
+bool barycentricsRead(const Scene& scene) {
+    bool read = scene.draws.empty();
+    for (const Draw& draw : scene.draws) read = read || !litPerTriangle(draw.shading);
+    return read;
+}
+
 // The depth test chunk by chunk on `threads` threads (testChunks), each chunk handed to sink
 // when one is given.
 DepthTest test(const DepthTestInput& in, int threads, DepthTest* recycled, bool keepDepth,
-               const BandSink* sink) {
+               const BandSink* sink, int bandRows) {
     const Scene& scene = in.scene;
     DepthTest out;
     const float clear = scene.conventions.depthClear;
@@ -368,14 +395,10 @@ DepthTest test(const DepthTestInput& in, int threads, DepthTest* recycled, bool 
     }
     out.clearedTo = clear;
     out.painted = paintersAlgorithm(scene);
-    // Flat shading reads no barycentrics (one colour per triangle): when every draw is flat
-    // they are not written.
-    out.barycentricsKept = scene.draws.empty();
+    out.barycentricsKept = barycentricsRead(scene);
     bool perTriangle = false;
-    for (const Draw& draw : scene.draws) {
-        out.barycentricsKept = out.barycentricsKept || !litPerTriangle(draw.shading);
+    for (const Draw& draw : scene.draws)
         perTriangle = perTriangle || draw.shading != ShadingModel::Phong;
-    }
     // Each thread clears its own rows (testChunks).
     if (out.depthKept) out.depth.resize(scene.width, scene.height);
     if (out.fragmentsKept) {
@@ -393,7 +416,8 @@ DepthTest test(const DepthTestInput& in, int threads, DepthTest* recycled, bool 
     std::atomic<int> nextChunk{0};
     runParts(parts, [&](int part) {
         counts[static_cast<std::size_t>(part)] =
-            testChunks(scene, in.projection, sorted, out, part, parts, previous, sink, nextChunk);
+            testChunks(scene, in.projection, sorted, out, part, parts, previous, sink,
+                       std::clamp(bandRows, 1, kRowChunk), nextChunk);
     });
     for (const DepthCounts& c : counts) {
         out.fragments += c.fragments;
@@ -412,11 +436,12 @@ void testSpan(const Scene& scene, const TrianglePlane& plane, std::uint32_t id, 
 }
 
 DepthTest depthTest(const DepthTestInput& in, int threads, DepthTest* recycled, bool keepDepth) {
-    return test(in, threads, recycled, keepDepth, nullptr);
+    return test(in, threads, recycled, keepDepth, nullptr, kRowChunk);
 }
 
-DepthTest depthTestInBands(const DepthTestInput& in, int threads, const BandSink& sink) {
-    return test(in, threads, nullptr, false, &sink);
+DepthTest depthTestInBands(const DepthTestInput& in, int threads, int bandRows,
+                           const BandSink& sink) {
+    return test(in, threads, nullptr, false, &sink, bandRows);
 }
 
 }  // namespace rl::fast

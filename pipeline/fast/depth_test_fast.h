@@ -10,10 +10,10 @@
 
 namespace rl::fast {
 
-// One chunk of rows (parallel.h) just depth-tested by thread `part` in a band of its own
-// (depthTestInBands): row y's winning ids are ids + (y - y0) * stride, its
+// Rows [y0, y1) of a chunk (parallel.h) just depth-tested by thread `part` in a band of its
+// own (depthTestInBands): row y's winning ids are ids + (y - y0) * stride, its
 // barycentrics bary + (y - y0) * stride (null when none are kept). Valid until the thread's
-// next chunk; only columns holds ids (the columns the chunk's spans fell in).
+// next band; only columns holds ids (the columns the chunk's spans fell in).
 struct TestedBand {
     int part = 0;
     int y0 = 0, y1 = 0;
@@ -39,10 +39,12 @@ void testSpan(const Scene& scene, const TrianglePlane& plane, std::uint32_t id, 
 // the columns it touched are cleared). keepDepth: false leaves DepthTest::depth empty.
 DepthTest depthTest(const DepthTestInput& in, int threads, DepthTest* recycled, bool keepDepth);
 // The same test with nothing kept per pixel: each thread tests its chunks of rows in a band
-// of its own (depths, ids and barycentrics: 184 KB at 1920 pixels wide, in its L2 cache) and
-// hands each chunk to sink, on the same thread, before testing the next. The result has the
-// counts and touched, no z-buffer, ids or barycentrics (fragmentsKept false), and covered
-// left for the sink's owner to count.
-DepthTest depthTestInBands(const DepthTestInput& in, int threads, const BandSink& sink);
+// of its own (depths, ids and barycentrics: 16 bytes a pixel, 240 KB for 8 rows at 1920
+// pixels wide, in its L2 cache) of bandRows rows (1 to kRowChunk: a chunk a band at a time)
+// and hands each band to sink, on the same thread, before testing the next. The result has the
+// counts and touched, no z-buffer, ids or barycentrics (fragmentsKept false), and covered left for
+// the sink's owner to count.
+DepthTest depthTestInBands(const DepthTestInput& in, int threads, int bandRows,
+                           const BandSink& sink);
 
 }  // namespace rl::fast

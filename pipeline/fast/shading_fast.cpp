@@ -307,6 +307,7 @@ std::vector<ColumnRange> recycle(const Scene& scene, Shading& out, Shading* recy
 // (bandsScan given; the depth test is then returned in bandsDepth).
 struct InBands {
     const ScanConversion& scan;
+    int rows = kRowChunk;  // of each band (depthTestInBands)
     DepthTest depth;
     double depthShare = 0.0;  // of the threads' time, spent testing (the rest shading)
 };
@@ -344,7 +345,8 @@ void shadeBands(const RowShader& shader, const FrameLighting& lighting, InBands&
     std::vector<PartTime> times(static_cast<std::size_t>(parts));
     for (PartTime& t : times) t.last = Clock::now();
     bands.depth = depthTestInBands(
-        {lighting.scene(), lighting.projection(), bands.scan}, parts, [&](const TestedBand& band) {
+        {lighting.scene(), lighting.projection(), bands.scan}, parts, bands.rows,
+        [&](const TestedBand& band) {
             const auto part = static_cast<std::size_t>(band.part);
             const Clock::time_point start = Clock::now();
             times[part].testing += start - times[part].last;
@@ -430,8 +432,9 @@ Shading shading(const ShadingInput& in, const ShadingExecution& execution) {
 
 std::pair<DepthTest, Shading> depthTestAndShading(const FrameLighting& lighting,
                                                   const ScanConversion& scan, int threads,
-                                                  Shading* recycled, double& depthShare) {
-    InBands bands{scan, DepthTest{}, 0.0};
+                                                  int bandRows, Shading* recycled,
+                                                  double& depthShare) {
+    InBands bands{scan, bandRows, DepthTest{}, 0.0};
     Shading shading = shade(lighting, nullptr, &bands, {threads, false, recycled});
     depthShare = bands.depthShare;
     return {std::move(bands.depth), std::move(shading)};

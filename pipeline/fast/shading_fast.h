@@ -25,10 +25,12 @@ Shading shading(const ShadingInput& in, const ShadingExecution& execution);
 // colours (and covered) go to memory. The image is the same bits as the stages' one after the
 // other; the depth test keeps no per-pixel buffer. Flat and Gouraud colours are worked out
 // first, for every triangle with a fragment (shadeInBands: when they are few next to the
-// pixels). depthShare: of the threads' time, the part spent testing.
+// pixels). bandRows: each band's rows (depthTestInBands). depthShare: of the
+// threads' time, the part spent testing.
 std::pair<DepthTest, Shading> depthTestAndShading(const FrameLighting& lighting,
                                                   const ScanConversion& scan, int threads,
-                                                  Shading* recycled, double& depthShare);
+                                                  int bandRows, Shading* recycled,
+                                                  double& depthShare);
 
 // Whether shading in bands pays: the points its flat and Gouraud draws light before the
 // depth test (those of every triangle with a fragment, not only those that keep a pixel) are

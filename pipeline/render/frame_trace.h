@@ -33,6 +33,9 @@ struct FrameTrace {
     std::array<double, kStageCount> stageMilliseconds{};
     double totalMilliseconds = 0.0;
     int threads = 1;  // the stages that share out their work ran on this many threads
+    // The rows of each band when the depth test and shading ran together band by band
+    // (fast::depthTestAndShading), 0 when they ran one after the other.
+    int bandRows = 0;
 
     // Whether a stage did nothing for this scene, and why ("" when it ran).
     std::string skipReason(StageId stage) const;

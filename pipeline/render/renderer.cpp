@@ -98,13 +98,15 @@ void runLectureStages(FrameTrace& trace, Probe& probe) {
 
 // The depth test and shading together (fast::depthTestAndShading): their time is the pair's,
 // split in the proportion the threads spent on each.
-void runDepthTestAndShadingInBands(FrameTrace& trace, int threads, RenderContext* context) {
+void runDepthTestAndShadingInBands(FrameTrace& trace, int threads, int bandRows,
+                                   RenderContext* context) {
     const auto start = Clock::now();
+    trace.bandRows = bandRows > 0 ? std::min(bandRows, kRowChunk) : kRowChunk;
     Shading* recycled = context ? recyclable(context->shading) : nullptr;
     double depthShare = 0.0;
     const FrameLighting lighting(*trace.scene, *trace.view, *trace.normals, *trace.projection);
-    auto [depth, shading] =
-        fast::depthTestAndShading(lighting, *trace.scan, threads, recycled, depthShare);
+    auto [depth, shading] = fast::depthTestAndShading(lighting, *trace.scan, threads,
+                                                      trace.bandRows, recycled, depthShare);
     const double both = millisecondsSince(start);
     trace.stageMilliseconds[static_cast<std::size_t>(StageId::DepthTest)] = both * depthShare;
     trace.stageMilliseconds[static_cast<std::size_t>(StageId::Shading)] = both * (1.0 - depthShare);
@@ -138,7 +140,7 @@ void runFastStages(FrameTrace& trace, const RenderOptions& options, int threads,
     });
     if (!options.keepDepth && !options.keepFragments && !options.shading.keepNormals &&
         fast::shadeInBands(scene, *trace.projection, *trace.scan)) {
-        runDepthTestAndShadingInBands(trace, threads, context);
+        runDepthTestAndShadingInBands(trace, threads, options.bandRows, context);
         return;
     }
     timed(trace, StageId::DepthTest, [&] {
