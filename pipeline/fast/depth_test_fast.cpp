@@ -341,7 +341,6 @@ RL_MULTIVERSION int runEnd(const std::uint32_t* ids, int from, int limit, std::u
     typedef std::uint32_t Ids __attribute__((vector_size(64)));
     typedef std::uint64_t Words __attribute__((vector_size(64)));
     typedef std::uint64_t Words4 __attribute__((vector_size(32)));
-    typedef std::uint64_t Words2 __attribute__((vector_size(16)));
     const Ids same = Ids{} + t;
     int end = from;
     while (end + 16 <= limit) {
