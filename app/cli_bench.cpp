@@ -226,7 +226,7 @@ int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     options.keepDepth = parser.isSet(keepDepth);
     options.keepFragments = options.keepDepth;
     options.keepForViews = false;
-    options.bandRows = rowCount;  // 0: from the cache
+    options.bandRows = rowCount;  // 0: a chunk's (kRowChunk)
     BenchResult result;
     if (int code = timeFrames(scene, options, warmupCount, frameCount, err, result); code != ExitOk)
         return code;

@@ -1205,7 +1205,8 @@ void TestCli::bench() {
     if (inBands)
         QVERIFY(md.out.contains(QStringLiteral("each band of %1 row(s) shaded by the thread that "
                                                "tested it")
-                                    .arg(rows)));
+                                    .arg(rows)) &&
+                md.out.contains(QStringLiteral("L2 cache: %1 KiB a thread).").arg(l2 / 1024)));
     QVERIFY(md.out.contains(QStringLiteral(" Normals: only those the shading reads (left out: "
                                            "the triangles' of %1 draw(s), the vertices' of %2).")
                                 .arg(withoutTriangleNormals)

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "depth_test_fast.h"
+#include "parallel.h"
 #include "phong.h"
 #include "phong_kernel.h"
 #include "renderer.h"
@@ -276,11 +277,29 @@ private slots:
         }
     }
 
+    void cacheDescriptionsRead() {
+        // sysfs' shared_cpu_list and size (l2CachePerThread); anything else is not known.
+        QCOMPARE(processorsInList("0"), 1);
+        QCOMPARE(processorsInList("0-1"), 2);
+        QCOMPARE(processorsInList("0-1,4"), 3);
+        QCOMPARE(processorsInList("0,2,4-7"), 6);
+        for (const char* bad : {"", "3-1", "0;1", "0 1", "0-", "0,", "-1", "a", "0-99999999"})
+            QVERIFY2(processorsInList(bad) == 0, bad);
+        QCOMPARE(cacheBytes("512K"), std::size_t(512 * 1024));
+        QCOMPARE(cacheBytes("1M"), std::size_t(1 << 20));
+        QCOMPARE(cacheBytes("65536"), std::size_t(65536));
+        for (const char* bad : {"", "K", "-512K", "512KB", "512 K", "1G", "99999999999999M"})
+            QVERIFY2(cacheBytes(bad) == 0, bad);
+        // Two threads have the L2 of one each, or half of it where they share one core's.
+        const std::size_t one = l2CachePerThread(1), two = l2CachePerThread(2);
+        QVERIFY(two == one || two == one / 2);
+    }
+
     void bandShadingEqualsTheStages() {
         // The depth test and shading in bands (fast::depthTestAndShading) against the two
         // stages one after the other, on random soups of triangles in front of the axis camera
         // (overlapping, crossing, some edge-on), in every shading model, on 1 to 3 threads,
-        // in bands of 8, 4, 3 and 1 rows.
+        // in bands of 8, 4, 3 and 1 rows, 120 and 117 rows high (the last chunk of 5 rows).
         Random r(31);
         for (int trial = 0; trial < 24; ++trial) {
             std::vector<dvec3> positions;
@@ -295,9 +314,10 @@ private slots:
             }
             const ShadingModel model = std::array{ShadingModel::Phong, ShadingModel::Gouraud,
                                                   ShadingModel::Flat}[std::size_t(trial % 3)];
-            auto scene = std::make_shared<Scene>(testing::makeScene(
-                testing::axisCamera(),
-                testing::makeMesh(std::move(positions), std::move(triangles)), 160, 120, model));
+            auto scene = std::make_shared<Scene>(
+                testing::makeScene(testing::axisCamera(),
+                                   testing::makeMesh(std::move(positions), std::move(triangles)),
+                                   160, trial % 2 ? 117 : 120, model));
             scene->lights.push_back({dvec4(dvec3(r.vector(-20.0f, 20.0f)), 1.0), vec3(180.0f), {}});
             const auto stages = testing::renderTrace(scene, RenderOptions{});  // a first frame
             auto probe = RecordingProbe::forPixel(-1, -1);

@@ -2,11 +2,12 @@
 
 #include <array>
 #include <atomic>
+#include <charconv>
 #include <chrono>
 #include <cstdint>
 #include <fstream>
-#include <stdexcept>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #if defined(__x86_64__) || defined(__i386__)
@@ -198,25 +199,6 @@ std::string firstLine(const std::string& path) {
     return line;
 }
 
-// The processors in a list such as "0-1,4" (sysfs' shared_cpu_list); throws when it is not one.
-int processorsIn(const std::string& list) {
-    int count = 0;
-    std::size_t at = 0;
-    while (at < list.size()) {
-        std::size_t read = 0;
-        const int first = std::stoi(list.substr(at), &read);
-        at += read;
-        int last = first;
-        if (at < list.size() && list[at] == '-') {
-            last = std::stoi(list.substr(at + 1), &read);
-            at += 1 + read;
-        }
-        count += last - first + 1;
-        ++at;  // the comma
-    }
-    return count;
-}
-
 // The first processor's L2 cache: its size in bytes (0 when not known) and how many
 // processors share it.
 struct L2Cache {
@@ -231,16 +213,8 @@ L2Cache firstL2() {
     for (int k = 0; k < 8; ++k) {
         const std::string dir = base + std::to_string(k) + "/";
         if (firstLine(dir + "level") != "2" || firstLine(dir + "type") == "Instruction") continue;
-        try {
-            const std::string size = firstLine(dir + "size");  // "512K"
-            std::size_t unit = 0;
-            l2.bytes = std::stoul(size, &unit);
-            if (unit < size.size() && size[unit] == 'K') l2.bytes *= 1024;
-            if (unit < size.size() && size[unit] == 'M') l2.bytes *= 1024 * 1024;
-            l2.sharedBy = std::max(1, processorsIn(firstLine(dir + "shared_cpu_list")));
-        } catch (const std::exception&) {
-            l2 = L2Cache{};
-        }
+        l2.bytes = cacheBytes(firstLine(dir + "size"));
+        l2.sharedBy = std::max(1, processorsInList(firstLine(dir + "shared_cpu_list")));
         break;
     }
 #if defined(_SC_LEVEL2_CACHE_SIZE)
@@ -252,6 +226,41 @@ L2Cache firstL2() {
 }
 
 }  // namespace
+
+int processorsInList(std::string_view list) {
+    // Ranges "a" or "a-b" (a <= b), separated by commas.
+    long count = 0;
+    const char* at = list.data();
+    const char* const end = list.data() + list.size();
+    while (at < end) {
+        long first = 0, last = 0;
+        std::from_chars_result read = std::from_chars(at, end, first);
+        if (read.ec != std::errc() || first < 0) return 0;
+        last = first;
+        if (read.ptr < end && *read.ptr == '-') {
+            read = std::from_chars(read.ptr + 1, end, last);
+            if (read.ec != std::errc() || last < first) return 0;
+        }
+        count += last - first + 1;
+        if (count > 1 << 20) return 0;
+        if (read.ptr == end) break;
+        if (*read.ptr != ',' || read.ptr + 1 == end) return 0;
+        at = read.ptr + 1;
+    }
+    return static_cast<int>(count);
+}
+
+std::size_t cacheBytes(std::string_view size) {
+    // A whole number, then K, M or nothing.
+    std::size_t bytes = 0;
+    const char* const end = size.data() + size.size();
+    const auto [next, error] = std::from_chars(size.data(), end, bytes);
+    if (error != std::errc()) return 0;
+    const std::string_view unit(next, static_cast<std::size_t>(end - next));
+    const std::size_t scale = unit.empty() ? 1 : unit == "K" ? 1024 : unit == "M" ? 1 << 20 : 0;
+    if (scale == 0 || bytes > (std::size_t(1) << 40) / scale) return 0;
+    return bytes * scale;
+}
 
 std::size_t l2CachePerThread(int threads) {
     static const L2Cache l2 = firstL2();

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <string_view>
 #include <thread>
 
 namespace rl {
@@ -22,10 +23,15 @@ inline int resolveThreads(int requested) {
 
 inline constexpr int kRowChunk = 8;
 
-// The bytes of L2 cache each of `threads` threads has: the first processor's L2, divided
-// between the processors that share it (hardware threads of one core) when the threads are
-// as many. 0 when not known.
+// The bytes of L2 cache each of `threads` threads has, at worst: the first processor's L2
+// (from sysfs), divided by the threads that can share it, min(threads, the processors that
+// share it). A virtual machine may not say that its processors share one core. 0 when not
+// known.
 std::size_t l2CachePerThread(int threads);
+// What sysfs says of a cache, read: the processors in a list such as "0-1,4" (0 when it is
+// not one), and a size such as "512K" in bytes (0 when it is not one).
+int processorsInList(std::string_view list);
+std::size_t cacheBytes(std::string_view size);
 
 // Whether row y belongs to thread `part` of `parts`.
 inline bool ownsRow(int y, int part, int parts) {

@@ -261,11 +261,11 @@ void markVisible(DepthTest& out, int y0, int y1, ColumnRange touched) {
 // then its spans tested in triangle order, so that each chunk's pixels stay in the cache
 // while its triangles are drawn. Every pixel sees the same fragments in the same order as
 // in the stage, so the buffers are the same bits. When the z-buffer is not kept
-// (DepthTest::depthKept), the chunk's depths are a band of kRowChunk rows of the thread's
-// own (61 KB at 1920 pixels wide), cleared where the chunk's spans fall: it stays in L2.
-// With a sink (depthTestInBands) the ids and barycentrics are in the band too, of bandRows
-// rows: each chunk is tested a band at a time, each band handed to the sink once tested,
-// before the next one overwrites it.
+// (DepthTest::depthKept), the depths are in a band of the thread's own, cleared where the
+// chunk's spans fall: kRowChunk rows (61 KB at 1920 pixels wide), in L2. With a sink
+// (depthTestInBands) the ids and barycentrics are in the band too, of bandRows rows: each
+// chunk is tested a band at a time, each band handed to the sink once tested, before the
+// next one overwrites it.
 DepthCounts testChunks(const Scene& scene, const Projection& projection, const SpansByChunk& sorted,
                        DepthTest& out, int part, int parts,
                        const std::vector<ColumnRange>& previous, const BandSink* sink, int bandRows,
@@ -368,8 +368,8 @@ bool barycentricsRead(const Scene& scene) {
     return read;
 }
 
-// The depth test chunk by chunk on `threads` threads (testChunks), each chunk handed to sink
-// when one is given.
+// The depth test chunk by chunk on `threads` threads (testChunks); when a sink is given,
+// each band of bandRows rows (0: kRowChunk) is handed to it.
 DepthTest test(const DepthTestInput& in, int threads, DepthTest* recycled, bool keepDepth,
                const BandSink* sink, int bandRows) {
     const Scene& scene = in.scene;
@@ -416,7 +416,7 @@ DepthTest test(const DepthTestInput& in, int threads, DepthTest* recycled, bool 
     runParts(parts, [&](int part) {
         counts[static_cast<std::size_t>(part)] =
             testChunks(scene, in.projection, sorted, out, part, parts, previous, sink,
-                       std::clamp(bandRows, 1, kRowChunk), nextChunk);
+                       bandRows > 0 ? std::min(bandRows, kRowChunk) : kRowChunk, nextChunk);
     });
     for (const DepthCounts& c : counts) {
         out.fragments += c.fragments;

@@ -38,10 +38,11 @@ void testSpan(const Scene& scene, const TrianglePlane& plane, std::uint32_t id, 
 // depend on their number. recycled: an earlier frame's buffers, whose memory is reused (only
 // the columns it touched are cleared). keepDepth: false leaves DepthTest::depth empty.
 DepthTest depthTest(const DepthTestInput& in, int threads, DepthTest* recycled, bool keepDepth);
-// The same test with nothing kept per pixel: each thread tests its chunks of rows in a band
-// of its own (depths, ids and barycentrics: 16 bytes a pixel, 240 KB for 8 rows at 1920
-// pixels wide, in its L2 cache) of bandRows rows (1 to kRowChunk: a chunk a band at a time)
-// and hands each band to sink, on the same thread, before testing the next. The result has the
+// The same test with nothing kept per pixel: each thread tests its chunks of rows a band of
+// bandRows rows at a time (1 to kRowChunk; 0: kRowChunk), in a band of its own (a depth, an
+// id and, unless every draw is flat, two barycentrics a pixel: 240 KB for 8 rows at 1920
+// pixels wide, in its L2 cache), and hands each band to sink, on the same thread, before
+// testing the next. The result has the
 // counts and touched, no z-buffer, ids or barycentrics (fragmentsKept false), and covered left for
 // the sink's owner to count.
 DepthTest depthTestInBands(const DepthTestInput& in, int threads, int bandRows,

@@ -303,8 +303,8 @@ std::vector<ColumnRange> recycle(const Scene& scene, Shading& out, Shading* recy
     return previous;
 }
 
-// The shading of a frame: after the depth test (depth), or chunk by chunk while it runs
-// (bandsScan given; the depth test is then returned in bandsDepth).
+// The shading of a frame: after the depth test (depth), or band by band while it runs
+// (bands given; the depth test is then returned in bands->depth).
 struct InBands {
     const ScanConversion& scan;
     int rows = kRowChunk;  // of each band (depthTestInBands)
@@ -331,9 +331,9 @@ void shadeRows(const RowShader& shader, const DepthTest& depth, const Scene& sce
     });
 }
 
-// Each chunk as soon as the thread that tested it hands it over, from its band (in that
-// thread's cache); the time each thread spends testing and shading is summed, each thread's
-// counts and times on cache lines of their own.
+// Each band as soon as the thread that tested it hands it over (in that thread's cache); the time
+// each thread spends testing and shading is summed, each thread's counts and times on cache lines
+// of their own.
 void shadeBands(const RowShader& shader, const FrameLighting& lighting, InBands& bands, int parts,
                 std::vector<Shading>& partCounts) {
     using Clock = std::chrono::steady_clock;

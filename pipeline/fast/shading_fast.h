@@ -20,13 +20,12 @@ struct ShadingExecution {
 Shading shading(const ShadingInput& in, const ShadingExecution& execution);
 
 // The depth test and shading together, for a frame that keeps its image alone: each thread
-// shades a chunk of rows as soon as it has tested it, from the band it tested it in
-// (depthTestInBands), so that the ids and barycentrics never leave its cache; only the
-// colours (and covered) go to memory. The image is the same bits as the stages' one after the
-// other; the depth test keeps no per-pixel buffer. Flat and Gouraud colours are worked out
-// first, for every triangle with a fragment (shadeInBands: when they are few next to the
-// pixels). bandRows: each band's rows (depthTestInBands). depthShare: of the
-// threads' time, the part spent testing.
+// shades a band of rows as soon as it has tested it there (depthTestInBands), so that the ids and
+// barycentrics never leave its cache; only the colours (and covered) go to memory. The image is the
+// same bits as the stages' one after the other; the depth test keeps no per-pixel buffer. Flat and
+// Gouraud colours are worked out first, for every triangle with a fragment (shadeInBands: when they
+// are few next to the pixels). bandRows: each band's rows, 1 to kRowChunk (0: kRowChunk).
+// depthShare: of the threads' time, the part spent testing.
 std::pair<DepthTest, Shading> depthTestAndShading(const FrameLighting& lighting,
                                                   const ScanConversion& scan, int threads,
                                                   int bandRows, Shading* recycled,
