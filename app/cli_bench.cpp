@@ -35,6 +35,7 @@ struct BenchResult {
     std::size_t covered = 0, fragments = 0;
     bool inBands = false;  // depth test and shading run together (RenderOptions::keepFragments)
     int bandRows = 0;      // the rows of their bands (FrameTrace::bandRows)
+    qint64 l2Kib = 0;      // the L2 cache a thread has (l2CachePerThread), 0: not known
     std::size_t triangleNormalsLeftOut = 0, vertexNormalsLeftOut = 0;  // draws (normalsRead)
     int usedThreads = 0;
     double firstRss = -1.0;  // resident memory after the first timed frame, MiB
@@ -68,6 +69,7 @@ int timeFrames(const std::shared_ptr<const rl::Scene>& scene, const rl::RenderOp
         result.vertexNormalsLeftOut = trace->normals->vertexNormalsLeftOut;
         result.fragments = trace->depth->fragments;
         result.usedThreads = trace->threads;
+        result.l2Kib = qint64(rl::l2CachePerThread(trace->threads) / 1024);
         if (i == warmupCount) result.firstRss = memoryMiB("VmRSS:");
     }
     result.lastRss = memoryMiB("VmRSS:");
@@ -98,8 +100,8 @@ void printJson(const BenchResult& r, const rl::Scene& scene, const QString& scen
         << ", \"frames\": " << frameCount
         << ", \"z_buffer_kept\": " << (keepDepth ? "true" : "false")
         << ", \"shaded_in_bands\": " << (r.inBands ? "true" : "false")
-        << ", \"band_rows\": " << r.bandRows
-        << ", \"l2_cache_per_thread_kib\": " << rl::l2CachePerThread(r.usedThreads) / 1024
+        << ", \"band_rows\": " << r.bandRows << ", \"l2_cache_per_thread_kib\": "
+        << (r.l2Kib > 0 ? QString::number(r.l2Kib) : lit("null"))
         << ", \"draws_without_triangle_normals\": " << r.triangleNormalsLeftOut
         << ", \"draws_without_vertex_normals\": " << r.vertexNormalsLeftOut
         << ", \"median_ms\": " << number(r.medianMs, 3) << ", \"min_ms\": " << number(r.minMs, 3)
@@ -131,12 +133,13 @@ void printTable(const BenchResult& r, const rl::Scene& scene, const QString& sce
         << " MiB after the last. Z-buffer: "
         << (keepDepth ? "kept whole (--keep-depth)" : "a band of rows per thread, in the cache")
         << "."
-        << (r.inBands ? lit(" Depth test and shading: together, each band of %1 row(s) shaded by "
-                            "the thread that tested it (the two stages' times are their sum "
-                            "split as the threads spent it; L2 cache: %2 KiB a thread).")
-                            .arg(r.bandRows)
-                            .arg(rl::l2CachePerThread(r.usedThreads) / 1024)
-                      : QString())
+        << (r.inBands
+                ? lit(" Depth test and shading: together, each band of %1 row(s) shaded by "
+                      "the thread that tested it (the two stages' times are their sum "
+                      "split as the threads spent it; L2 cache: %2).")
+                      .arg(r.bandRows)
+                      .arg(r.l2Kib > 0 ? lit("%1 KiB a thread").arg(r.l2Kib) : lit("not known"))
+                : QString())
         << (r.triangleNormalsLeftOut + r.vertexNormalsLeftOut > 0
                 ? lit(" Normals: only those the shading reads (left out: the triangles' of "
                       "%1 draw(s), the vertices' of %2).")
