@@ -116,10 +116,7 @@ bool parsePixel(const QString& text, int& x, int& y) {
 bool writePng(const rl::Rgba8Image& image, const QString& path, QTextStream& out, QTextStream& err,
               const QString& what) {
     QString error;
-    // The bytes as they are (read only, no copy): they outlive the write.
-    const QImage wrapped(image.rgba.data(), image.width, image.height, image.width * 4,
-                         QImage::Format_RGBA8888);
-    if (!savePng(wrapped, path, &error)) {
+    if (!savePng(viewOf(image), path, &error)) {  // the image outlives the write
         err << path << ": cannot write the " << what << ": " << error << '\n';
         return false;
     }

@@ -17,6 +17,7 @@
 #include <functional>
 
 #include "compare_image.h"
+#include "image_io.h"
 #include "inspection.h"
 #include "number_text.h"
 #include "pipeline_messages.h"
@@ -111,12 +112,6 @@ private:
 };
 
 namespace {
-
-QImage toQImage(const rl::Rgba8Image& image) {
-    return QImage(image.rgba.data(), image.width, image.height, image.width * 4,
-                  QImage::Format_RGBA8888)
-        .copy();
-}
 
 std::array<std::uint8_t, 4> bytesAt(const rl::Rgba8Image& image, int x, int y) {
     const std::uint8_t* p = image.pixel(x, y);

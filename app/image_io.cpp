@@ -4,10 +4,13 @@
 
 namespace rasterlab {
 
+QImage viewOf(const rl::Rgba8Image& image) {
+    return QImage(image.rgba.data(), image.width, image.height, image.width * 4,
+                  QImage::Format_RGBA8888);
+}
+
 QImage toQImage(const rl::Rgba8Image& image) {
-    QImage wrapped(image.rgba.data(), image.width, image.height, image.width * 4,
-                   QImage::Format_RGBA8888);
-    return wrapped.copy();
+    return viewOf(image).copy();
 }
 
 bool savePng(const QImage& image, const QString& path, QString* error) {

@@ -9,7 +9,10 @@
 
 namespace rasterlab {
 
-QImage toQImage(const rl::Rgba8Image& image);  // a deep copy, Format_RGBA8888
+// The image as a QImage (Format_RGBA8888): a read-only view of its bytes, valid while it
+// lives, or a deep copy.
+QImage viewOf(const rl::Rgba8Image& image);
+QImage toQImage(const rl::Rgba8Image& image);
 bool savePng(const QImage& image, const QString& path, QString* error);
 
 }  // namespace rasterlab
