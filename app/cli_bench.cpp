@@ -69,10 +69,10 @@ int timeFrames(const std::shared_ptr<const rl::Scene>& scene, const rl::RenderOp
         result.vertexNormalsLeftOut = trace->normals->vertexNormalsLeftOut;
         result.fragments = trace->depth->fragments;
         result.usedThreads = trace->threads;
-        result.l2Kib = qint64(rl::l2CachePerThread(trace->threads) / 1024);
         if (i == warmupCount) result.firstRss = memoryMiB("VmRSS:");
     }
     result.lastRss = memoryMiB("VmRSS:");
+    result.l2Kib = qint64(rl::l2CachePerThread(result.usedThreads) / 1024);
     result.peakRss = memoryMiB("VmHWM:");
     const auto median = [](std::vector<double> v) {
         std::sort(v.begin(), v.end());

@@ -23,6 +23,12 @@ inline int resolveThreads(int requested) {
 
 inline constexpr int kRowChunk = 8;
 
+// The rows of the bands a chunk is tested and shaded in (fast::depthTestInBands) for a
+// request of `requested`: 1 to kRowChunk, and kRowChunk for 0 or less.
+inline int bandRowsFor(int requested) {
+    return requested > 0 ? std::min(requested, kRowChunk) : kRowChunk;
+}
+
 // The bytes of L2 cache each of `threads` threads has, at worst: the first processor's L2
 // (from sysfs), divided by the threads that can share it, min(threads, the processors that
 // share it). A virtual machine may not say that its processors share one core. 0 when not

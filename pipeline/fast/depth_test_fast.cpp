@@ -360,16 +360,8 @@ RL_MULTIVERSION int runEnd(const std::uint32_t* ids, int from, int limit, std::u
 
 namespace {
 
-// Whether a draw reads barycentrics: flat shading does not (one colour per triangle), and
-// when every draw is flat they are not written.
-bool barycentricsRead(const Scene& scene) {
-    bool read = scene.draws.empty();
-    for (const Draw& draw : scene.draws) read = read || !litPerTriangle(draw.shading);
-    return read;
-}
-
 // The depth test chunk by chunk on `threads` threads (testChunks); when a sink is given,
-// each band of bandRows rows (0: kRowChunk) is handed to it.
+// each band of bandRowsFor(bandRows) rows is handed to it.
 DepthTest test(const DepthTestInput& in, int threads, DepthTest* recycled, bool keepDepth,
                const BandSink* sink, int bandRows) {
     const Scene& scene = in.scene;
@@ -394,10 +386,14 @@ DepthTest test(const DepthTestInput& in, int threads, DepthTest* recycled, bool 
     }
     out.clearedTo = clear;
     out.painted = paintersAlgorithm(scene);
-    out.barycentricsKept = barycentricsRead(scene);
+    // Flat shading reads no barycentrics (one colour per triangle): when every draw is flat
+    // they are not written.
+    out.barycentricsKept = scene.draws.empty();
     bool perTriangle = false;
-    for (const Draw& draw : scene.draws)
+    for (const Draw& draw : scene.draws) {
+        out.barycentricsKept = out.barycentricsKept || !litPerTriangle(draw.shading);
         perTriangle = perTriangle || draw.shading != ShadingModel::Phong;
+    }
     // Each thread clears its own rows (testChunks).
     if (out.depthKept) out.depth.resize(scene.width, scene.height);
     if (out.fragmentsKept) {
@@ -416,7 +412,7 @@ DepthTest test(const DepthTestInput& in, int threads, DepthTest* recycled, bool 
     runParts(parts, [&](int part) {
         counts[static_cast<std::size_t>(part)] =
             testChunks(scene, in.projection, sorted, out, part, parts, previous, sink,
-                       bandRows > 0 ? std::min(bandRows, kRowChunk) : kRowChunk, nextChunk);
+                       bandRowsFor(bandRows), nextChunk);
     });
     for (const DepthCounts& c : counts) {
         out.fragments += c.fragments;

@@ -38,13 +38,12 @@ void testSpan(const Scene& scene, const TrianglePlane& plane, std::uint32_t id, 
 // depend on their number. recycled: an earlier frame's buffers, whose memory is reused (only
 // the columns it touched are cleared). keepDepth: false leaves DepthTest::depth empty.
 DepthTest depthTest(const DepthTestInput& in, int threads, DepthTest* recycled, bool keepDepth);
-// The same test with nothing kept per pixel: each thread tests its chunks of rows a band of
-// bandRows rows at a time (1 to kRowChunk; 0: kRowChunk), in a band of its own (a depth, an
-// id and, unless every draw is flat, two barycentrics a pixel: 240 KB for 8 rows at 1920
-// pixels wide, in its L2 cache), and hands each band to sink, on the same thread, before
-// testing the next. The result has the
-// counts and touched, no z-buffer, ids or barycentrics (fragmentsKept false), and covered left for
-// the sink's owner to count.
+// The same test with nothing kept per pixel: each thread tests its chunks of rows
+// bandRowsFor(bandRows) rows at a time (parallel.h), in a band of its own (a depth, an id
+// and, unless every draw is flat, two barycentrics a pixel: 240 KB for 8 rows at 1920 pixels
+// wide, in its L2 cache), and hands each band to sink, on the same thread, before testing
+// the next. The result has the counts and touched, no z-buffer, ids or barycentrics
+// (fragmentsKept false), and covered left for the sink's owner to count.
 DepthTest depthTestInBands(const DepthTestInput& in, int threads, int bandRows,
                            const BandSink& sink);
 

@@ -331,9 +331,9 @@ void shadeRows(const RowShader& shader, const DepthTest& depth, const Scene& sce
     });
 }
 
-// Each band as soon as the thread that tested it hands it over (in that thread's cache); the time
-// each thread spends testing and shading is summed, each thread's counts and times on cache lines
-// of their own.
+// Each band as soon as the thread that tested it hands it over (in that thread's cache);
+// the time each thread spends testing and shading is summed, each thread's counts and times
+// on cache lines of their own.
 void shadeBands(const RowShader& shader, const FrameLighting& lighting, InBands& bands, int parts,
                 std::vector<Shading>& partCounts) {
     using Clock = std::chrono::steady_clock;

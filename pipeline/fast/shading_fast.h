@@ -24,7 +24,7 @@ Shading shading(const ShadingInput& in, const ShadingExecution& execution);
 // barycentrics never leave its cache; only the colours (and covered) go to memory. The image is the
 // same bits as the stages' one after the other; the depth test keeps no per-pixel buffer. Flat and
 // Gouraud colours are worked out first, for every triangle with a fragment (shadeInBands: when they
-// are few next to the pixels). bandRows: each band's rows, 1 to kRowChunk (0: kRowChunk).
+// are few next to the pixels). bandRows: each band's rows (bandRowsFor).
 // depthShare: of the threads' time, the part spent testing.
 std::pair<DepthTest, Shading> depthTestAndShading(const FrameLighting& lighting,
                                                   const ScanConversion& scan, int threads,

@@ -101,7 +101,7 @@ void runLectureStages(FrameTrace& trace, Probe& probe) {
 void runDepthTestAndShadingInBands(FrameTrace& trace, int threads, int bandRows,
                                    RenderContext* context) {
     const auto start = Clock::now();
-    trace.bandRows = bandRows > 0 ? std::min(bandRows, kRowChunk) : kRowChunk;
+    trace.bandRows = bandRowsFor(bandRows);
     Shading* recycled = context ? recyclable(context->shading) : nullptr;
     double depthShare = 0.0;
     const FrameLighting lighting(*trace.scene, *trace.view, *trace.normals, *trace.projection);

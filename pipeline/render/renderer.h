@@ -36,8 +36,8 @@ struct RenderOptions {
     // chunk (fast::depthTestAndShading) and the frame keeps the image and which pixels a
     // triangle covered. The image is the same.
     bool keepFragments = true;
-    // The rows of the bands a chunk is then tested and shaded in: 1 to kRowChunk (parallel.h),
-    // 0 for kRowChunk. Fewer rows take less of the cache a thread has. The image is the same.
+    // The rows of the bands a chunk is then tested and shaded in (bandRowsFor, parallel.h: 0
+    // for kRowChunk). Fewer rows take less of the cache a thread has. The image is the same.
     int bandRows = 0;
     // Whether the frame keeps what only the window's views read: every triangle's and every
     // vertex's normal (the normals view's hairs), and each vertex's NDC and unsnapped screen
