@@ -21,9 +21,11 @@ __attribute__((target("default"))) const char* level() {
 __attribute__((target("arch=x86-64-v3"))) const char* level() {
     return "x86-64-v3 (AVX2)";
 }
+#if !defined(RL_NO_AVX512_KERNELS)
 __attribute__((target("arch=x86-64-v4"))) const char* level() {
     return "x86-64-v4 (AVX-512)";
 }
+#endif
 }  // namespace
 
 const char* kernelLevel() {

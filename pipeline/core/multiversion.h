@@ -15,6 +15,10 @@
 
 #if defined(RL_THREAD_SANITIZER) || !defined(__x86_64__)
 #define RL_MULTIVERSION
+#elif defined(RL_NO_AVX512_KERNELS)
+// Built with RASTERLAB_AVX512_KERNELS=OFF: an AVX-512 machine runs the AVX2 kernels, so that
+// it can time what an AVX2 machine runs.
+#define RL_MULTIVERSION __attribute__((target_clones("default", "arch=x86-64-v3")))
 #else
 #define RL_MULTIVERSION \
     __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
