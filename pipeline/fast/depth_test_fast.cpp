@@ -335,23 +335,19 @@ DepthCounts testChunks(const Scene& scene, const Projection& projection, const S
 
 }  // namespace
 
-// Sixteen ids at a time (their differences from t ORed together: one AVX-512 operation, two
-// AVX2 or four SSE ones), then one at a time within the first sixteen that differ.
+// Sixteen ids at a time (their differences from t ORed together, in four vectors of four:
+// GCC's AVX2 and baseline kernels took one vector of sixteen through the stack), then one at
+// a time within the first sixteen that differ.
 RL_MULTIVERSION int runEnd(const std::uint32_t* ids, int from, int limit, std::uint32_t t) {
-    typedef std::uint32_t Ids __attribute__((vector_size(64)));
-    typedef std::uint64_t Words __attribute__((vector_size(64)));
-    typedef std::uint64_t Words4 __attribute__((vector_size(32)));
+    typedef std::uint32_t Ids __attribute__((vector_size(16)));
     const Ids same = Ids{} + t;
     int end = from;
     while (end + 16 <= limit) {
-        Ids v;
-        std::memcpy(&v, ids + end, sizeof v);
-        const Words differ = reinterpret_cast<Words>(v ^ same);
-        const Words4 half = __builtin_shufflevector(differ, differ, 0, 1, 2, 3) |
-                            __builtin_shufflevector(differ, differ, 4, 5, 6, 7);
-        const Words2 quarter =
-            __builtin_shufflevector(half, half, 0, 1) | __builtin_shufflevector(half, half, 2, 3);
-        if (quarter[0] | quarter[1]) break;
+        Ids v[4];
+        std::memcpy(v, ids + end, sizeof v);
+        const Words2 differ = reinterpret_cast<Words2>(((v[0] ^ same) | (v[1] ^ same)) |
+                                                       ((v[2] ^ same) | (v[3] ^ same)));
+        if (differ[0] | differ[1]) break;
         end += 16;
     }
     while (end < limit && ids[end] == t) ++end;
