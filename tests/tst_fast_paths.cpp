@@ -27,6 +27,7 @@
 #include "default_scene_resource.h"
 #include "frame_memory.h"
 #include "mesh_topology.h"
+#include "multiversion.h"
 #include "output_image.h"
 #include "parallel.h"
 #include "renderer.h"
@@ -186,6 +187,19 @@ class TestFastPaths : public QObject {
     Q_OBJECT
 
 private slots:
+    // Every test at both kernel widths (multiversion.h): eight lanes, and the baseline's four.
+    void initTestCase_data() {
+        QTest::addColumn<int>("lanes");
+        QTest::newRow("8 lanes") << 8;
+        QTest::newRow("4 lanes") << 4;
+    }
+    void init() {
+        QFETCH_GLOBAL(int, lanes);
+        rl::setKernelLanes(lanes);
+        QCOMPARE(rl::kernelLanes(), lanes);
+    }
+    void cleanupTestCase() { rl::setKernelLanes(0); }
+
     void frameMemoryIsKept() {
 #if defined(RL_OWN_ALLOCATOR)
         QSKIP("a sanitizer's allocator replaces the C library's");

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "depth_test_fast.h"
+#include "multiversion.h"
 #include "parallel.h"
 #include "phong.h"
 #include "phong_kernel.h"
@@ -78,6 +79,19 @@ class TestKernels : public QObject {
     Q_OBJECT
 
 private slots:
+    // Every test at both kernel widths (multiversion.h): eight lanes, and the baseline's four.
+    void initTestCase_data() {
+        QTest::addColumn<int>("lanes");
+        QTest::newRow("8 lanes") << 8;
+        QTest::newRow("4 lanes") << 4;
+    }
+    void init() {
+        QFETCH_GLOBAL(int, lanes);
+        rl::setKernelLanes(lanes);
+        QCOMPARE(rl::kernelLanes(), lanes);
+    }
+    void cleanupTestCase() { rl::setKernelLanes(0); }
+
     void phongLanesEqualPhong() {
         // shadeCoursePhongRun (fast/phong_kernel.h) against phong() (stages/phong.h) at the
         // same interpolated point and normal, for runs of 1 to 40 pixels (whole groups of

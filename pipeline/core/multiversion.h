@@ -32,4 +32,15 @@ namespace rl {
 // figures from two machines say which kernels they timed.
 const char* kernelLevel();
 
+// How many pixels the kernels take at a time: eight where the kernel level has 32-byte
+// registers (AVX2, AVX-512), four with the baseline's 16-byte ones, where GCC would build
+// each shuffle of eight lanes one lane at a time, through the stack. Every clone holds both
+// widths, which give the same bits; setKernelLanes lets the tests run the other one.
+extern int g_kernelLanes;
+inline int kernelLanes() {
+    return g_kernelLanes;
+}
+// 4 or 8; anything else: the kernel level's own.
+void setKernelLanes(int lanes);
+
 }  // namespace rl

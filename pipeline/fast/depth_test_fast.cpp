@@ -18,90 +18,136 @@ namespace rl::fast {
 
 namespace {
 
-// testSpanPixels (stages/depth_test.h) for a span when no depth range clips, eight pixels at
-// a time with the compiler's vector extensions (GCC and Clang). A group of eight that passes
-// whole is written without reading what was stored (barycentrics only when baryRow is
-// given), one that fails whole is not written, and a mixed one is blended lane by lane and
-// stored back whole. The operations are TrianglePlane::fragment's, lane by lane, so the bits
-// are the same. Built for each of RL_MULTIVERSION's machines, the best one chosen when the
-// program starts. Returns the number of fragments that passed.
-typedef double Doubles8 __attribute__((vector_size(64)));
-typedef float Floats8 __attribute__((vector_size(32)));
-typedef std::int32_t Ints8 __attribute__((vector_size(32)));
+// testSpanPixels (stages/depth_test.h) for a span when no depth range clips, N pixels at a
+// time (kernelLanes: eight or four) with the compiler's vector extensions (GCC and Clang). A
+// group that passes whole is written without reading what was stored (barycentrics only when
+// baryRow is given), one that fails whole is not written, and a mixed one is blended lane by
+// lane and stored back whole. The operations are TrianglePlane::fragment's, lane by lane, so
+// the bits are the same. Built for each of RL_MULTIVERSION's machines, the best one chosen
+// when the program starts. Returns the number of fragments that passed.
+template <int N>
+struct SpanLanes;
+template <>
+struct SpanLanes<8> {
+    typedef double Doubles __attribute__((vector_size(64)));
+    typedef float Floats __attribute__((vector_size(32)));
+    typedef std::int32_t Ints __attribute__((vector_size(32)));
+};
+template <>
+struct SpanLanes<4> {
+    typedef double Doubles __attribute__((vector_size(32)));
+    typedef float Floats __attribute__((vector_size(16)));
+    typedef std::int32_t Ints __attribute__((vector_size(16)));
+};
 typedef std::int32_t Ints4 __attribute__((vector_size(16)));
 typedef std::uint64_t Words2 __attribute__((vector_size(16)));
 
-// Lanes where mask is set take a, the others b. Always inlined into testSpan's builds, so no
-// vector is passed between functions (the AVX calling-convention warning does not apply).
-inline __attribute__((always_inline)) Floats8 blend(const Ints8& mask, const Floats8& a,
-                                                    const Floats8& b) {
-    return reinterpret_cast<Floats8>((mask & reinterpret_cast<Ints8>(a)) |
-                                     (~mask & reinterpret_cast<Ints8>(b)));
+#define RL_SPAN_LANES inline __attribute__((always_inline))
+
+// Lanes where mask is set take a, the others b.
+template <class Floats, class Ints>
+RL_SPAN_LANES Floats blend(const Ints& mask, const Floats& a, const Floats& b) {
+    return reinterpret_cast<Floats>((mask & reinterpret_cast<Ints>(a)) |
+                                    (~mask & reinterpret_cast<Ints>(b)));
 }
 
-RL_MULTIVERSION std::size_t spanKernel(float* depthRow, std::uint32_t* idRow, float* baryRow,
-                                     std::int32_t n, const TrianglePlane& plane, double beta0,
-                                     double gamma0, std::uint32_t id, bool winsOnTie,
-                                     bool painted) {
+// The pass mask folded into two 64-bit words, ANDed (both) and ORed (either): whether every
+// lane passes, or none.
+RL_SPAN_LANES void foldPasses(const SpanLanes<8>::Ints& pass, Words2& both, Words2& either) {
+    const Ints4 low = __builtin_shufflevector(pass, pass, 0, 1, 2, 3);
+    const Ints4 high = __builtin_shufflevector(pass, pass, 4, 5, 6, 7);
+    both = reinterpret_cast<Words2>(low & high);
+    either = reinterpret_cast<Words2>(low | high);
+}
+RL_SPAN_LANES void foldPasses(const SpanLanes<4>::Ints& pass, Words2& both, Words2& either) {
+    both = either = reinterpret_cast<Words2>(pass);
+}
+
+// (beta, gamma) pairs of the first and the second half of the lanes, and each lane's pass
+// mask twice, for the same pairs.
+RL_SPAN_LANES void pairs(const SpanLanes<8>::Floats& beta, const SpanLanes<8>::Floats& gamma,
+                         SpanLanes<8>::Floats& first, SpanLanes<8>::Floats& second) {
+    first = __builtin_shufflevector(beta, gamma, 0, 8, 1, 9, 2, 10, 3, 11);
+    second = __builtin_shufflevector(beta, gamma, 4, 12, 5, 13, 6, 14, 7, 15);
+}
+RL_SPAN_LANES void pairs(const SpanLanes<4>::Floats& beta, const SpanLanes<4>::Floats& gamma,
+                         SpanLanes<4>::Floats& first, SpanLanes<4>::Floats& second) {
+    first = __builtin_shufflevector(beta, gamma, 0, 4, 1, 5);
+    second = __builtin_shufflevector(beta, gamma, 2, 6, 3, 7);
+}
+RL_SPAN_LANES void pairMasks(const SpanLanes<8>::Ints& pass, SpanLanes<8>::Ints& first,
+                             SpanLanes<8>::Ints& second) {
+    first = __builtin_shufflevector(pass, pass, 0, 0, 1, 1, 2, 2, 3, 3);
+    second = __builtin_shufflevector(pass, pass, 4, 4, 5, 5, 6, 6, 7, 7);
+}
+RL_SPAN_LANES void pairMasks(const SpanLanes<4>::Ints& pass, SpanLanes<4>::Ints& first,
+                             SpanLanes<4>::Ints& second) {
+    first = __builtin_shufflevector(pass, pass, 0, 0, 1, 1);
+    second = __builtin_shufflevector(pass, pass, 2, 2, 3, 3);
+}
+
+template <int N>
+RL_SPAN_LANES std::size_t spanLanes(float* depthRow, std::uint32_t* idRow, float* baryRow,
+                                    std::int32_t n, const TrianglePlane& plane, double beta0,
+                                    double gamma0, std::uint32_t id, bool winsOnTie, bool painted) {
+    using Doubles = typename SpanLanes<N>::Doubles;
+    using Floats = typename SpanLanes<N>::Floats;
+    using Ints = typename SpanLanes<N>::Ints;
     const double betaDx = plane.betaDx, gammaDx = plane.gammaDx;
     const float z0 = plane.z0, dz1 = plane.dz1, dz2 = plane.dz2;
     const bool reciprocal = plane.reciprocal;
     std::int32_t i = 0;
-    const Ints8 tie = winsOnTie ? Ints8{} - 1 : Ints8{};
-    const Ints8 always = painted ? Ints8{} - 1 : Ints8{};  // the painter's: no depth test
+    const Ints tie = winsOnTie ? Ints{} - 1 : Ints{};
+    const Ints always = painted ? Ints{} - 1 : Ints{};  // the painter's: no depth test
     const auto ids = static_cast<std::int32_t>(id);
-    const Doubles8 step = {0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0};
-    Ints8 passes = {};  // minus the number of passes, per lane
-    for (; i + 8 <= n; i += 8) {
-        // One vector of eight doubles: two AVX operations, or one AVX-512 operation.
-        const Doubles8 index = double(i) + step;
-        const Floats8 beta = __builtin_convertvector(beta0 + index * betaDx, Floats8);
-        const Floats8 gamma = __builtin_convertvector(gamma0 + index * gammaDx, Floats8);
-        Floats8 z = (z0 + beta * dz1) + gamma * dz2;
+    Doubles step;
+    for (int lane = 0; lane < N; ++lane) step[lane] = lane;
+    Ints passes = {};  // minus the number of passes, per lane
+    for (; i + N <= n; i += N) {
+        const Doubles index = double(i) + step;
+        const Floats beta = __builtin_convertvector(beta0 + index * betaDx, Floats);
+        const Floats gamma = __builtin_convertvector(gamma0 + index * gammaDx, Floats);
+        Floats z = (z0 + beta * dz1) + gamma * dz2;
         if (reciprocal) z = 1.0f / z;
-        Floats8 stored;
+        Floats stored;
         std::memcpy(&stored, depthRow + i, sizeof stored);
-        const Ints8 pass = (z < stored) | (tie & (z == stored)) | always;
+        const Ints pass = (z < stored) | (tie & (z == stored)) | always;
         passes += pass;
-        const Floats8 interleaved0 = __builtin_shufflevector(beta, gamma, 0, 8, 1, 9, 2, 10, 3, 11);
-        const Floats8 interleaved1 =
-            __builtin_shufflevector(beta, gamma, 4, 12, 5, 13, 6, 14, 7, 15);
-        // Whether every lane passes, or none: the halves folded into two 64-bit words.
-        const Ints4 passLow = __builtin_shufflevector(pass, pass, 0, 1, 2, 3);
-        const Ints4 passHigh = __builtin_shufflevector(pass, pass, 4, 5, 6, 7);
-        const Words2 both = reinterpret_cast<Words2>(passLow & passHigh);
-        const Words2 either = reinterpret_cast<Words2>(passLow | passHigh);
+        Floats interleaved0, interleaved1;
+        pairs(beta, gamma, interleaved0, interleaved1);
+        Words2 both, either;
+        foldPasses(pass, both, either);
         if ((both[0] & both[1]) == ~std::uint64_t{0}) {
             // Every lane passes (no overdraw here): the stored values are not needed.
-            const Ints8 triangle = Ints8{} + ids;
+            const Ints triangle = Ints{} + ids;
             std::memcpy(depthRow + i, &z, sizeof z);
             std::memcpy(idRow + i, &triangle, sizeof triangle);
             if (baryRow) {
                 std::memcpy(baryRow + 2 * i, &interleaved0, sizeof interleaved0);
-                std::memcpy(baryRow + 2 * i + 8, &interleaved1, sizeof interleaved1);
+                std::memcpy(baryRow + 2 * i + N, &interleaved1, sizeof interleaved1);
             }
             continue;
         }
         if ((either[0] | either[1]) == 0) continue;  // nothing to write
-        Ints8 storedId;
+        Ints storedId;
         std::memcpy(&storedId, idRow + i, sizeof storedId);
-        const Floats8 depth = blend(pass, z, stored);
-        const Ints8 triangle = (pass & ids) | (~pass & storedId);
+        const Floats depth = blend(pass, z, stored);
+        const Ints triangle = (pass & ids) | (~pass & storedId);
         std::memcpy(depthRow + i, &depth, sizeof depth);
         std::memcpy(idRow + i, &triangle, sizeof triangle);
         if (!baryRow) continue;
-        Floats8 stored0, stored1;
+        Floats stored0, stored1;
         std::memcpy(&stored0, baryRow + 2 * i, sizeof stored0);
-        std::memcpy(&stored1, baryRow + 2 * i + 8, sizeof stored1);
-        const Floats8 bary0 = blend(__builtin_shufflevector(pass, pass, 0, 0, 1, 1, 2, 2, 3, 3),
-                                    interleaved0, stored0);
-        const Floats8 bary1 = blend(__builtin_shufflevector(pass, pass, 4, 4, 5, 5, 6, 6, 7, 7),
-                                    interleaved1, stored1);
+        std::memcpy(&stored1, baryRow + 2 * i + N, sizeof stored1);
+        Ints mask0, mask1;
+        pairMasks(pass, mask0, mask1);
+        const Floats bary0 = blend(mask0, interleaved0, stored0);
+        const Floats bary1 = blend(mask1, interleaved1, stored1);
         std::memcpy(baryRow + 2 * i, &bary0, sizeof bary0);
-        std::memcpy(baryRow + 2 * i + 8, &bary1, sizeof bary1);
+        std::memcpy(baryRow + 2 * i + N, &bary1, sizeof bary1);
     }
     std::size_t passed = 0;
-    for (int lane = 0; lane < 8; ++lane) passed += static_cast<std::size_t>(-passes[lane]);
+    for (int lane = 0; lane < N; ++lane) passed += static_cast<std::size_t>(-passes[lane]);
     for (; i < n; ++i) {  // the last pixels, one at a time as the stage tests them
         const FragmentDepth f = plane.fragment(beta0, gamma0, i);
         if (painted || f.depth < depthRow[i] || (winsOnTie && f.depth == depthRow[i])) {
@@ -115,6 +161,16 @@ RL_MULTIVERSION std::size_t spanKernel(float* depthRow, std::uint32_t* idRow, fl
         }
     }
     return passed;
+}
+
+RL_MULTIVERSION std::size_t spanKernel(float* depthRow, std::uint32_t* idRow, float* baryRow,
+                                       std::int32_t n, const TrianglePlane& plane, double beta0,
+                                       double gamma0, std::uint32_t id, bool winsOnTie,
+                                       bool painted) {
+    if (kernelLanes() == 8)
+        return spanLanes<8>(depthRow, idRow, baryRow, n, plane, beta0, gamma0, id, winsOnTie,
+                            painted);
+    return spanLanes<4>(depthRow, idRow, baryRow, n, plane, beta0, gamma0, id, winsOnTie, painted);
 }
 
 // n copies of value from row on: the clear of a row's depths, with the widest stores the

@@ -57,7 +57,8 @@ void shadeCoursePhongPoints(const CoursePhongRun& run, const vec3* p, const vec3
 std::size_t shadeGouraudRun(const vec3& c0, const vec3& d1, const vec3& d2, const vec2* bary,
                             int count, vec3* colour, float clampScale);
 
-// out[i] = colour for i < count (a flat run, or the background), eight pixels a store.
+// out[i] = colour for i < count (a flat run, or the background), eight or four pixels a
+// store (kernelLanes).
 void fillColourRun(const vec3& colour, int count, vec3* out);
 
 }  // namespace rl
