@@ -4,7 +4,21 @@
 #include <QFile>
 #include <QProcess>
 
+#include "multiversion.h"
+
 namespace testing {
+
+void kernelLaneRows() {
+    QTest::addColumn<int>("lanes");
+    QTest::newRow("8 lanes") << 8;
+    QTest::newRow("4 lanes") << 4;
+}
+
+void useKernelLanesOfRow() {
+    QFETCH_GLOBAL(int, lanes);
+    rl::setKernelLanes(lanes);
+    QCOMPARE(rl::kernelLanes(), lanes);
+}
 
 std::shared_ptr<const rl::FrameTrace> renderTrace(std::shared_ptr<const rl::Scene> scene,
                                                   const rl::RenderOptions& options) {

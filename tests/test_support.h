@@ -30,6 +30,12 @@ std::shared_ptr<const rl::FrameTrace> renderTrace(std::shared_ptr<const rl::Scen
                                                   const rl::RenderOptions& options = {});
 std::shared_ptr<const rl::FrameReplay> replayOf(const std::shared_ptr<const rl::FrameTrace>& trace);
 
+// Global test data for running every test of a suite at both kernel widths
+// (core/multiversion.h): kernelLaneRows() in initTestCase_data(), useKernelLanesOfRow() in
+// init(), and setKernelLanes(0) in cleanupTestCase() to go back to the machine's own.
+void kernelLaneRows();
+void useKernelLanesOfRow();
+
 // The course sample folder (../shared/samples or $RASTERLAB_SAMPLES), or an empty string.
 QString samplesDir();
 QString sourceDir();  // the repository's root

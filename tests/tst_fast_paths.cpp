@@ -187,17 +187,9 @@ class TestFastPaths : public QObject {
     Q_OBJECT
 
 private slots:
-    // Every test at both kernel widths (multiversion.h): eight lanes, and the baseline's four.
-    void initTestCase_data() {
-        QTest::addColumn<int>("lanes");
-        QTest::newRow("8 lanes") << 8;
-        QTest::newRow("4 lanes") << 4;
-    }
-    void init() {
-        QFETCH_GLOBAL(int, lanes);
-        rl::setKernelLanes(lanes);
-        QCOMPARE(rl::kernelLanes(), lanes);
-    }
+    // Every test at both kernel widths: eight lanes, and the baseline's four.
+    void initTestCase_data() { testing::kernelLaneRows(); }
+    void init() { testing::useKernelLanesOfRow(); }
     void cleanupTestCase() { rl::setKernelLanes(0); }
 
     void frameMemoryIsKept() {
