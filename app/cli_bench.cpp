@@ -111,7 +111,8 @@ void printJson(const BenchResult& r, const rl::Scene& scene, const QString& scen
         << ", \"peak_rss_mib\": " << number(r.peakRss, 1)
         << ", \"rss_first_frame_mib\": " << number(r.firstRss, 1)
         << ", \"rss_last_frame_mib\": " << number(r.lastRss, 1) << ", \"kernels\": \""
-        << rl::kernelLevel() << "\", \"stages_ms\": {";
+        << rl::kernelLevel() << "\", \"kernel_lanes\": " << rl::kernelLanes()
+        << ", \"stages_ms\": {";
     for (std::size_t k = 0; k < r.stageMedian.size(); ++k)
         out << (k ? ", " : "") << "\"" << rl::stageName(rl::kAllStages[k])
             << "\": " << number(r.stageMedian[k], 3);
@@ -146,7 +147,8 @@ void printTable(const BenchResult& r, const rl::Scene& scene, const QString& sce
                       .arg(r.triangleNormalsLeftOut)
                       .arg(r.vertexNormalsLeftOut)
                 : QString())
-        << " Kernels: " << rl::kernelLevel() << ".\n\n"
+        << " Kernels: " << rl::kernelLevel() << ", " << rl::kernelLanes()
+        << " pixels at a time.\n\n"
         << "| stage | median ms |\n|---|---|\n";
     for (std::size_t k = 0; k < r.stageMedian.size(); ++k)
         out << "| " << rl::stageName(rl::kAllStages[k]) << " | " << number(r.stageMedian[k], 3)

@@ -1185,6 +1185,12 @@ void TestCli::bench() {
                  .contains(kernels),
              qPrintable(kernels));
     QCOMPARE(kernels, QString::fromLatin1(rl::kernelLevel()));
+    // Their width: eight lanes with AVX2 and AVX-512, four with the baseline clone.
+    QCOMPARE(o.value(QStringLiteral("kernel_lanes")).toInt(), rl::kernelLanes());
+    if (kernels.startsWith(QLatin1String("x86-64-v")))
+        QCOMPARE(rl::kernelLanes(), 8);
+    else if (kernels == QLatin1String("x86-64"))
+        QCOMPARE(rl::kernelLanes(), 4);
     // The bands' rows: as asked, or a chunk's (8); and the L2 cache a thread has.
     const bool inBands = o.value(QStringLiteral("shaded_in_bands")).toBool();
     const qsizetype asked = arguments.indexOf(QStringLiteral("--band-rows"));
@@ -1203,7 +1209,9 @@ void TestCli::bench() {
     QVERIFY(md.out.contains(QStringLiteral("| ") + size + QStringLiteral(" |")));
     QVERIFY(md.out.contains(QStringLiteral("| scan conversion | ")));
     QVERIFY(md.out.contains(QStringLiteral("Memory: peak ")));
-    QVERIFY(md.out.contains(QStringLiteral(" Kernels: %1.\n").arg(kernels)));
+    QVERIFY(md.out.contains(QStringLiteral(" Kernels: %1, %2 pixels at a time.\n")
+                                .arg(kernels)
+                                .arg(rl::kernelLanes())));
     if (inBands)
         QVERIFY(md.out.contains(QStringLiteral("each band of %1 row(s) shaded by the thread that "
                                                "tested it")
