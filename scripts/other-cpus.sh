@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # The fast paths' kernels are built three times (pipeline/core/multiversion.h) and the
-# machine running the tests picks one. This runs the suites that hold the fast paths to the
-# lecture's stages bit for bit (tst_kernels, tst_fast_paths) under qemu-user as two other
-# processors: Haswell (AVX2, no AVX-512: the x86-64-v3 kernels) and Nehalem (the baseline
-# kernels), after checking with the bench that each picks the kernels expected.
+# machine running the tests picks one; the suites test it at both of the kernels' widths. This
+# runs the suites that hold the fast paths to the lecture's stages bit for bit (tst_kernels,
+# tst_fast_paths) under qemu-user as two other processors: Haswell (AVX2, no AVX-512: the
+# x86-64-v3 kernels) and Nehalem (the baseline kernels), after checking with the bench that
+# each picks the kernels expected, and their width (eight pixels at a time with AVX2, four with
+# the baseline).
 # Usage: scripts/other-cpus.sh [BUILD_DIR] (default build). Expects setup.sh's packages and
 # a build with the tests.
 set -euo pipefail
@@ -25,14 +27,16 @@ as_cpu() {
 }
 
 declare -A expected=([Haswell]="x86-64-v3 (AVX2)" [Nehalem]="x86-64")
+declare -A lanes=([Haswell]=8 [Nehalem]=4)
 for cpu in Haswell Nehalem; do
     status=0
     bench=$(as_cpu "$cpu" "$build/bin/rasterlab-cli" bench --scene sphere-1k --size 64x48 \
         --frames 1 --format json) || status=$?
-    kernels=$(grep -o '"kernels": "[^"]*"' <<<"$bench" || true)
-    if ((status != 0)) || [[ "$kernels" != "\"kernels\": \"${expected[$cpu]}\"" ]]; then
+    kernels=$(grep -o '"kernels": "[^"]*", "kernel_lanes": [0-9]*' <<<"$bench" || true)
+    want="\"kernels\": \"${expected[$cpu]}\", \"kernel_lanes\": ${lanes[$cpu]}"
+    if ((status != 0)) || [[ "$kernels" != "$want" ]]; then
         echo "other-cpus: the bench as $cpu (exit $status) printed ${kernels:-no kernels}," \
-            "expected ${expected[$cpu]}" >&2
+            "expected $want" >&2
         exit 1
     fi
     for suite in tst_kernels tst_fast_paths; do

@@ -202,8 +202,8 @@ private slots:
     }
 
     void spanDepthTestEqualsPixelLoop() {
-        // fast::testSpan (eight pixels a lane group) against testSpanPixels (the stage's loop)
-        // on random triangles and spans, over rows holding random depths, some of them the
+        // fast::testSpan (eight or four pixels a lane group) against testSpanPixels (the stage's
+        // loop) on random triangles and spans, over rows holding random depths, some of them the
         // very depths the span computes (ties), under both tie rules, with and without
         // barycentrics, painted or tested, with and without the depth range clip.
         Random r(99);

@@ -2,30 +2,17 @@
 
 namespace rl {
 
-#if defined(RL_THREAD_SANITIZER) || !defined(__x86_64__)
+#if defined(RL_KERNELS_BUILT_ONCE)
 const char* kernelLevel() {
     return "baseline";
 }
 namespace {
-// Built once: for x86-64's baseline under ThreadSanitizer; elsewhere eight, as before (not
-// measured on other processors).
 int lanesOfLevel() {
 #if defined(__x86_64__)
-    return 4;
-#else
-    return 8;
-#endif
-}
-}  // namespace
-#elif defined(__clang__)
-// Clang 14 builds the x86-64-v3 and v4 clones, but its resolver does not know those names
-// and always picks the default.
-const char* kernelLevel() {
-    return "x86-64";
-}
-namespace {
-int lanesOfLevel() {
     return 4;  // the baseline's
+#else
+    return 8;  // as before (not measured)
+#endif
 }
 }  // namespace
 #else
@@ -43,7 +30,7 @@ __attribute__((target("arch=x86-64-v3"))) int lanesOfLevel() {
 __attribute__((target("arch=x86-64-v3"))) const char* level() {
     return "x86-64-v3 (AVX2)";
 }
-#if !defined(RL_NO_AVX512_KERNELS)
+#if !defined(RL_KERNELS_UP_TO_V3)
 __attribute__((target("arch=x86-64-v4"))) const char* level() {
     return "x86-64-v4 (AVX-512)";
 }
@@ -58,10 +45,11 @@ const char* kernelLevel() {
 }
 #endif
 
-int g_kernelLanes = lanesOfLevel();
+std::atomic<int> g_kernelLanes{lanesOfLevel()};
 
 void setKernelLanes(int lanes) {
-    g_kernelLanes = lanes == 4 || lanes == 8 ? lanes : lanesOfLevel();
+    g_kernelLanes.store(lanes == 4 || lanes == 8 ? lanes : lanesOfLevel(),
+                        std::memory_order_relaxed);
 }
 
 }  // namespace rl

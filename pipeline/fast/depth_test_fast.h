@@ -1,4 +1,5 @@
-// The depth test on several threads, chunk of rows by chunk, eight pixels at a time. It must
+// The depth test on several threads, chunk of rows by chunk, eight or four pixels at a time
+// (kernelLanes). It must
 // equal DepthTestStage::run (stages/depth_test.h) bit for bit: the same depths, winning
 // triangles, barycentrics and counts.
 #pragma once
@@ -29,8 +30,8 @@ using BandSink = std::function<void(const TestedBand&)>;
 // visible triangles walk every row this way (multiversioned, like the kernels).
 int runEnd(const std::uint32_t* ids, int from, int limit, std::uint32_t t);
 
-// testSpanPixels (stages/depth_test.h) for one span, eight pixels at a time where no depth
-// range clips; the same bits and counts.
+// testSpanPixels (stages/depth_test.h) for one span, eight or four pixels at a time
+// (kernelLanes) where no depth range clips; the same bits and counts.
 void testSpan(const Scene& scene, const TrianglePlane& plane, std::uint32_t id, const Span& span,
               const DepthRows& rows, bool painted, DepthCounts& counts);
 

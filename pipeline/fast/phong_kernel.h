@@ -2,7 +2,8 @@
 // for several lanes at once: the hot loop of a course render. The same operations in the
 // same order as phong(), so the colours are the same bits as the one-pixel path's (which a
 // recording probe uses); built for the baseline x86-64, x86-64-v3 (AVX2) and x86-64-v4
-// (AVX-512), the best one chosen when the program starts (multiversion.h).
+// (AVX-512, unless RASTERLAB_KERNELS leaves it out), the best one chosen when the program
+// starts (multiversion.h).
 #pragma once
 
 #include <cstddef>

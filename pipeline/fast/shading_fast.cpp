@@ -55,9 +55,9 @@ void addKernelCounts(Shading& counts, const CoursePhongCounts& c, std::size_t ev
     counts.noNormal += c.noNormal;
 }
 
-// lightEntry for the entries [first, last) of draw d that are needed, eight at a time through
-// the kernel: Gouraud's vertices, or flat's triangles, each lit at its barycentre with its
-// normal as FrameLighting::flatSample lights it.
+// lightEntry for the entries [first, last) of draw d that are needed, eight or four at a time
+// (kernelLanes) through the kernel: Gouraud's vertices, or flat's triangles, each lit at its
+// barycentre with its normal as FrameLighting::flatSample lights it.
 void lightEntriesByKernel(const FrameLighting& lighting, const CoursePhongRun& run,
                           ColourTables& tables, std::size_t d, std::size_t first, std::size_t last,
                           Shading& counts) {
