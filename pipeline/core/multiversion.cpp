@@ -2,53 +2,47 @@
 
 namespace rl {
 
-#if defined(RL_KERNELS_BUILT_ONCE)
-const char* kernelLevel() {
-    return "baseline";
-}
 namespace {
-int lanesOfLevel() {
+
+// A kernel level's name and its width (kernelLanes).
+struct Level {
+    const char* name;
+    int lanes;
+};
+
+#if defined(RL_KERNELS_BUILT_ONCE)
+Level level() {
 #if defined(__x86_64__)
-    return 4;  // the baseline's
+    return {"baseline", 4};
 #else
-    return 8;  // as before (not measured)
+    return {"baseline", 8};  // as before (not measured)
 #endif
 }
-}  // namespace
 #else
-namespace {
 // Versions of one function, picked by the same resolver as RL_MULTIVERSION's clones.
-__attribute__((target("default"))) const char* level() {
-    return "x86-64";
+__attribute__((target("default"))) Level level() {
+    return {"x86-64", 4};
 }
-__attribute__((target("default"))) int lanesOfLevel() {
-    return 4;
-}
-__attribute__((target("arch=x86-64-v3"))) int lanesOfLevel() {
-    return 8;
-}
-__attribute__((target("arch=x86-64-v3"))) const char* level() {
-    return "x86-64-v3 (AVX2)";
+__attribute__((target("arch=x86-64-v3"))) Level level() {
+    return {"x86-64-v3 (AVX2)", 8};
 }
 #if !defined(RL_KERNELS_UP_TO_V3)
-__attribute__((target("arch=x86-64-v4"))) const char* level() {
-    return "x86-64-v4 (AVX-512)";
-}
-__attribute__((target("arch=x86-64-v4"))) int lanesOfLevel() {
-    return 8;
+__attribute__((target("arch=x86-64-v4"))) Level level() {
+    return {"x86-64-v4 (AVX-512)", 8};
 }
 #endif
+#endif
+
 }  // namespace
 
 const char* kernelLevel() {
-    return level();
+    return level().name;
 }
-#endif
 
-std::atomic<int> g_kernelLanes{lanesOfLevel()};
+std::atomic<int> g_kernelLanes{level().lanes};
 
 void setKernelLanes(int lanes) {
-    g_kernelLanes.store(lanes == 4 || lanes == 8 ? lanes : lanesOfLevel(),
+    g_kernelLanes.store(lanes == 4 || lanes == 8 ? lanes : level().lanes,
                         std::memory_order_relaxed);
 }
 

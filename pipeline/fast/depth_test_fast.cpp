@@ -6,17 +6,39 @@
 #include <memory>
 #include <optional>
 
+#include "lanes.h"
 #include "multiversion.h"
 #include "parallel.h"
 #include "probe.h"
 
-// The vector helpers are always inlined into the kernels' builds, so no vector is passed
-// between functions: the warning about the AVX calling convention does not apply.
-#pragma GCC diagnostic ignored "-Wpsabi"
-
 namespace rl::fast {
 
 namespace {
+
+using namespace lanes;
+
+// (beta, gamma) pairs of the first and the second half of the lanes, and each lane's pass
+// mask twice, for the same pairs.
+RL_LANES void pairs(const LaneTypes<8>::Floats& beta, const LaneTypes<8>::Floats& gamma,
+                    LaneTypes<8>::Floats& first, LaneTypes<8>::Floats& second) {
+    first = __builtin_shufflevector(beta, gamma, 0, 8, 1, 9, 2, 10, 3, 11);
+    second = __builtin_shufflevector(beta, gamma, 4, 12, 5, 13, 6, 14, 7, 15);
+}
+RL_LANES void pairs(const LaneTypes<4>::Floats& beta, const LaneTypes<4>::Floats& gamma,
+                    LaneTypes<4>::Floats& first, LaneTypes<4>::Floats& second) {
+    first = __builtin_shufflevector(beta, gamma, 0, 4, 1, 5);
+    second = __builtin_shufflevector(beta, gamma, 2, 6, 3, 7);
+}
+RL_LANES void pairMasks(const LaneTypes<8>::Ints& pass, LaneTypes<8>::Ints& first,
+                        LaneTypes<8>::Ints& second) {
+    first = __builtin_shufflevector(pass, pass, 0, 0, 1, 1, 2, 2, 3, 3);
+    second = __builtin_shufflevector(pass, pass, 4, 4, 5, 5, 6, 6, 7, 7);
+}
+RL_LANES void pairMasks(const LaneTypes<4>::Ints& pass, LaneTypes<4>::Ints& first,
+                        LaneTypes<4>::Ints& second) {
+    first = __builtin_shufflevector(pass, pass, 0, 0, 1, 1);
+    second = __builtin_shufflevector(pass, pass, 2, 2, 3, 3);
+}
 
 // testSpanPixels (stages/depth_test.h) for a span when no depth range clips, N pixels at a
 // time (kernelLanes: eight or four) with the compiler's vector extensions (GCC and Clang). A
@@ -26,73 +48,12 @@ namespace {
 // the bits are the same. Built for each of RL_MULTIVERSION's machines, the best one chosen
 // when the program starts. Returns the number of fragments that passed.
 template <int N>
-struct SpanLanes;
-template <>
-struct SpanLanes<8> {
-    typedef double Doubles __attribute__((vector_size(64)));
-    typedef float Floats __attribute__((vector_size(32)));
-    typedef std::int32_t Ints __attribute__((vector_size(32)));
-};
-template <>
-struct SpanLanes<4> {
-    typedef double Doubles __attribute__((vector_size(32)));
-    typedef float Floats __attribute__((vector_size(16)));
-    typedef std::int32_t Ints __attribute__((vector_size(16)));
-};
-typedef std::int32_t Ints4 __attribute__((vector_size(16)));
-typedef std::uint64_t Words2 __attribute__((vector_size(16)));
-
-#define RL_SPAN_LANES inline __attribute__((always_inline))
-
-// Lanes where mask is set take a, the others b.
-template <class Floats, class Ints>
-RL_SPAN_LANES Floats blend(const Ints& mask, const Floats& a, const Floats& b) {
-    return reinterpret_cast<Floats>((mask & reinterpret_cast<Ints>(a)) |
-                                    (~mask & reinterpret_cast<Ints>(b)));
-}
-
-// The pass mask folded into two 64-bit words, ANDed (both) and ORed (either): whether every
-// lane passes, or none.
-RL_SPAN_LANES void foldPasses(const SpanLanes<8>::Ints& pass, Words2& both, Words2& either) {
-    const Ints4 low = __builtin_shufflevector(pass, pass, 0, 1, 2, 3);
-    const Ints4 high = __builtin_shufflevector(pass, pass, 4, 5, 6, 7);
-    both = reinterpret_cast<Words2>(low & high);
-    either = reinterpret_cast<Words2>(low | high);
-}
-RL_SPAN_LANES void foldPasses(const SpanLanes<4>::Ints& pass, Words2& both, Words2& either) {
-    both = either = reinterpret_cast<Words2>(pass);
-}
-
-// (beta, gamma) pairs of the first and the second half of the lanes, and each lane's pass
-// mask twice, for the same pairs.
-RL_SPAN_LANES void pairs(const SpanLanes<8>::Floats& beta, const SpanLanes<8>::Floats& gamma,
-                         SpanLanes<8>::Floats& first, SpanLanes<8>::Floats& second) {
-    first = __builtin_shufflevector(beta, gamma, 0, 8, 1, 9, 2, 10, 3, 11);
-    second = __builtin_shufflevector(beta, gamma, 4, 12, 5, 13, 6, 14, 7, 15);
-}
-RL_SPAN_LANES void pairs(const SpanLanes<4>::Floats& beta, const SpanLanes<4>::Floats& gamma,
-                         SpanLanes<4>::Floats& first, SpanLanes<4>::Floats& second) {
-    first = __builtin_shufflevector(beta, gamma, 0, 4, 1, 5);
-    second = __builtin_shufflevector(beta, gamma, 2, 6, 3, 7);
-}
-RL_SPAN_LANES void pairMasks(const SpanLanes<8>::Ints& pass, SpanLanes<8>::Ints& first,
-                             SpanLanes<8>::Ints& second) {
-    first = __builtin_shufflevector(pass, pass, 0, 0, 1, 1, 2, 2, 3, 3);
-    second = __builtin_shufflevector(pass, pass, 4, 4, 5, 5, 6, 6, 7, 7);
-}
-RL_SPAN_LANES void pairMasks(const SpanLanes<4>::Ints& pass, SpanLanes<4>::Ints& first,
-                             SpanLanes<4>::Ints& second) {
-    first = __builtin_shufflevector(pass, pass, 0, 0, 1, 1);
-    second = __builtin_shufflevector(pass, pass, 2, 2, 3, 3);
-}
-
-template <int N>
-RL_SPAN_LANES std::size_t spanLanes(float* depthRow, std::uint32_t* idRow, float* baryRow,
-                                    std::int32_t n, const TrianglePlane& plane, double beta0,
-                                    double gamma0, std::uint32_t id, bool winsOnTie, bool painted) {
-    using Doubles = typename SpanLanes<N>::Doubles;
-    using Floats = typename SpanLanes<N>::Floats;
-    using Ints = typename SpanLanes<N>::Ints;
+RL_LANES std::size_t spanLanes(float* depthRow, std::uint32_t* idRow, float* baryRow,
+                               std::int32_t n, const TrianglePlane& plane, double beta0,
+                               double gamma0, std::uint32_t id, bool winsOnTie, bool painted) {
+    using Doubles = typename LaneTypes<N>::Doubles;
+    using Floats = typename LaneTypes<N>::Floats;
+    using Ints = typename LaneTypes<N>::Ints;
     const double betaDx = plane.betaDx, gammaDx = plane.gammaDx;
     const float z0 = plane.z0, dz1 = plane.dz1, dz2 = plane.dz2;
     const bool reciprocal = plane.reciprocal;
@@ -116,7 +77,7 @@ RL_SPAN_LANES std::size_t spanLanes(float* depthRow, std::uint32_t* idRow, float
         Floats interleaved0, interleaved1;
         pairs(beta, gamma, interleaved0, interleaved1);
         Words2 both, either;
-        foldPasses(pass, both, either);
+        foldMask(pass, both, either);
         if ((both[0] & both[1]) == ~std::uint64_t{0}) {
             // Every lane passes (no overdraw here): the stored values are not needed.
             const Ints triangle = Ints{} + ids;
@@ -131,7 +92,7 @@ RL_SPAN_LANES std::size_t spanLanes(float* depthRow, std::uint32_t* idRow, float
         if ((either[0] | either[1]) == 0) continue;  // nothing to write
         Ints storedId;
         std::memcpy(&storedId, idRow + i, sizeof storedId);
-        const Floats depth = blend(pass, z, stored);
+        const Floats depth = select(pass, z, stored);
         const Ints triangle = (pass & ids) | (~pass & storedId);
         std::memcpy(depthRow + i, &depth, sizeof depth);
         std::memcpy(idRow + i, &triangle, sizeof triangle);
@@ -141,8 +102,8 @@ RL_SPAN_LANES std::size_t spanLanes(float* depthRow, std::uint32_t* idRow, float
         std::memcpy(&stored1, baryRow + 2 * i + N, sizeof stored1);
         Ints mask0, mask1;
         pairMasks(pass, mask0, mask1);
-        const Floats bary0 = blend(mask0, interleaved0, stored0);
-        const Floats bary1 = blend(mask1, interleaved1, stored1);
+        const Floats bary0 = select(mask0, interleaved0, stored0);
+        const Floats bary1 = select(mask1, interleaved1, stored1);
         std::memcpy(baryRow + 2 * i, &bary0, sizeof bary0);
         std::memcpy(baryRow + 2 * i + N, &bary1, sizeof bary1);
     }

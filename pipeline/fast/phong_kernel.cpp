@@ -1,6 +1,5 @@
-// The helpers below (and fast_pow.h's polynomials) are always inlined into the kernels'
-// builds, so no vector is ever passed between functions: the warning about the AVX calling
-// convention does not apply.
+// fast_pow.h's polynomials, included before lanes.h, are always inlined like its helpers: the
+// AVX calling-convention warning does not apply to them either.
 #pragma GCC diagnostic ignored "-Wpsabi"
 
 #include "phong_kernel.h"
@@ -11,9 +10,8 @@
 #include <limits>
 
 #include "fast_pow.h"
+#include "lanes.h"
 #include "multiversion.h"
-
-#define RL_LANES inline __attribute__((always_inline))
 
 namespace rl {
 
@@ -33,24 +31,11 @@ CoursePhongRun coursePhongRun(const Material& m, const ViewLight& light,
 
 namespace {
 
-// N lanes (kernelLanes: eight, or four on the baseline), written with the compiler's
-// vector extensions (GCC and Clang): each operation below is the scalar one of phong()
-// applied to N pixels, so the results are the same bits at either width.
-template <int N>
-struct LaneTypes;
-template <>
-struct LaneTypes<8> {
-    typedef float Floats __attribute__((vector_size(32)));
-    typedef std::int32_t Ints __attribute__((vector_size(32)));
-};
-template <>
-struct LaneTypes<4> {
-    typedef float Floats __attribute__((vector_size(16)));
-    typedef std::int32_t Ints __attribute__((vector_size(16)));
-};
-typedef std::uint64_t Words2 __attribute__((vector_size(16)));
+using namespace lanes;
 
-// The helpers and kernels of one width.
+// The helpers and kernels of one width, N lanes (lanes.h): each operation below is the
+// scalar one of phong() applied to N pixels, so the results are the same bits at either
+// width.
 template <int N>
 struct Lanes {
     static constexpr int kLanes = N;
@@ -77,12 +62,6 @@ struct Lanes {
             return Ints{0, 1, 2, 3};
     }
 
-    // Lanes where mask is set take a, the others b (mask lanes are all ones or zero).
-    static RL_LANES Floats select(const Ints& mask, const Floats& a, const Floats& b) {
-        return reinterpret_cast<Floats>((mask & reinterpret_cast<Ints>(a)) |
-                                        (~mask & reinterpret_cast<Ints>(b)));
-    }
-
     static RL_LANES Floats squareRoot(const Floats& v) {
         Floats r;
         for (int i = 0; i < kLanes; ++i) r[i] = __builtin_sqrtf(v[i]);  // correctly rounded
@@ -97,12 +76,8 @@ struct Lanes {
 
     // Whether any lane of a mask is set.
     static RL_LANES bool anyLane(const Ints& mask) {
-        Words2 either;
-        if constexpr (N == 8)
-            either = reinterpret_cast<Words2>(__builtin_shufflevector(mask, mask, 0, 1, 2, 3) |
-                                              __builtin_shufflevector(mask, mask, 4, 5, 6, 7));
-        else
-            either = reinterpret_cast<Words2>(mask);
+        Words2 both, either;
+        foldMask(mask, both, either);
         return (either[0] | either[1]) != 0;
     }
 
