@@ -5,7 +5,7 @@
 #include <QImage>
 #include <QString>
 
-#include "output_image.h"
+#include "pipeline/render/output_image.h"
 
 namespace rasterlab {
 

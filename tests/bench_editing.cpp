@@ -22,13 +22,13 @@
 #include <cstdio>
 #include <vector>
 
-#include "bench_support.h"
-#include "edit_panel.h"
-#include "frame_image_view.h"
-#include "frame_memory.h"
-#include "main_window.h"
-#include "offscreen_screens.h"
-#include "replay_builder.h"
+#include "app/window/edit_panel.h"
+#include "app/window/main_window.h"
+#include "app/window/replay_builder.h"
+#include "pipeline/core/frame_memory.h"
+#include "tests/bench_support.h"
+#include "tests/offscreen_screens.h"
+#include "views/frame_image_view.h"
 
 using namespace rasterlab;
 

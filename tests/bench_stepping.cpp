@@ -18,11 +18,11 @@
 #include <cstdio>
 #include <vector>
 
-#include "bench_support.h"
-#include "frame_memory.h"
-#include "inspection.h"
-#include "main_window.h"
-#include "replay_builder.h"
+#include "app/window/main_window.h"
+#include "app/window/replay_builder.h"
+#include "pipeline/core/frame_memory.h"
+#include "tests/bench_support.h"
+#include "views/inspection.h"
 
 using namespace rasterlab;
 

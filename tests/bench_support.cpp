@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "benchmark_scenes.h"
-#include "course_writers.h"
+#include "pipeline/io/course_writers.h"
+#include "pipeline/scene/benchmark_scenes.h"
 
 namespace rasterlab::bench {
 

@@ -9,10 +9,10 @@
 #include <memory>
 #include <optional>
 
-#include "command_file.h"
-#include "course_scene.h"
-#include "default_scene_resource.h"
-#include "test_support.h"
+#include "app/documents/command_file.h"
+#include "app/documents/default_scene_resource.h"
+#include "pipeline/io/course_scene.h"
+#include "tests/test_support.h"
 
 namespace testing {
 

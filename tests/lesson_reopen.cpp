@@ -9,7 +9,7 @@
 
 #include <cstdio>
 
-#include "main_window.h"
+#include "app/window/main_window.h"
 
 int main(int argc, char* argv[]) {
     QApplication app(argc, argv);

@@ -4,7 +4,7 @@
 #include <QFile>
 #include <QProcess>
 
-#include "multiversion.h"
+#include "pipeline/core/multiversion.h"
 
 namespace testing {
 

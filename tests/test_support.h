@@ -14,13 +14,13 @@
 #include <optional>
 #include <string_view>
 
-#include "depth_test.h"
-#include "diagnostics.h"
-#include "math.h"
-#include "projection.h"
-#include "renderer.h"
-#include "replay.h"
-#include "scene.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/core/math.h"
+#include "pipeline/render/renderer.h"
+#include "pipeline/render/replay.h"
+#include "pipeline/scene/scene.h"
+#include "pipeline/stages/depth_test.h"
+#include "pipeline/stages/projection.h"
 
 namespace testing {
 

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <set>
 
-#include "accuracy.h"
-#include "benchmark_scenes.h"
-#include "reference.h"
-#include "renderer.h"
-#include "test_support.h"
+#include "pipeline/analysis/accuracy.h"
+#include "pipeline/analysis/reference.h"
+#include "pipeline/render/renderer.h"
+#include "pipeline/scene/benchmark_scenes.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 

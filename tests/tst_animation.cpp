@@ -20,17 +20,17 @@
 #include <cmath>
 #include <numbers>
 
-#include "animation.h"
-#include "animation_panel.h"
-#include "course_scenes.h"
-#include "image_io.h"
-#include "inspection.h"
-#include "main_window.h"
-#include "normals_view.h"
-#include "output_image.h"
-#include "replay_builder.h"
-#include "test_support.h"
-#include "vertex_table.h"
+#include "app/image_io.h"
+#include "app/window/animation_panel.h"
+#include "app/window/main_window.h"
+#include "app/window/replay_builder.h"
+#include "pipeline/render/animation.h"
+#include "pipeline/render/output_image.h"
+#include "tests/course_scenes.h"
+#include "tests/test_support.h"
+#include "views/inspection.h"
+#include "views/normals_view.h"
+#include "views/vertex_table.h"
 
 using namespace rl;
 using rasterlab::AnimationPanel;

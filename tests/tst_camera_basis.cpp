@@ -4,9 +4,9 @@
 
 #include <random>
 
-#include "camera_basis.h"
-#include "format.h"
-#include "test_support.h"
+#include "pipeline/core/format.h"
+#include "pipeline/stages/camera_basis.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 

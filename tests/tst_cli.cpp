@@ -15,11 +15,11 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 
-#include "course_scenes.h"
-#include "multiversion.h"
-#include "painter.h"
-#include "parallel.h"
-#include "test_support.h"
+#include "pipeline/analysis/painter.h"
+#include "pipeline/core/multiversion.h"
+#include "pipeline/core/parallel.h"
+#include "tests/course_scenes.h"
+#include "tests/test_support.h"
 
 using testing::CliRun;
 using testing::runCli;

@@ -11,15 +11,15 @@
 
 #include <cmath>
 
-#include "course_scenes.h"
-#include "depth_test.h"
-#include "inspection.h"
-#include "near_clip.h"
-#include "near_clip_view.h"
-#include "scan_conversion.h"
-#include "test_support.h"
-#include "trapezoid_view.h"
-#include "trapezoids.h"
+#include "pipeline/stages/depth_test.h"
+#include "pipeline/stages/near_clip.h"
+#include "pipeline/stages/scan_conversion.h"
+#include "pipeline/stages/trapezoids.h"
+#include "tests/course_scenes.h"
+#include "tests/test_support.h"
+#include "views/inspection.h"
+#include "views/near_clip_view.h"
+#include "views/trapezoid_view.h"
 
 using namespace rl;
 using rasterlab::Inspection;

@@ -18,13 +18,13 @@
 #include <cstring>
 #include <functional>
 
-#include "cli_common.h"
-#include "command_file.h"
-#include "image_io.h"
-#include "mistakes.h"
-#include "output_image.h"
-#include "renderer.h"
-#include "test_support.h"
+#include "app/cli/cli_common.h"
+#include "app/documents/command_file.h"
+#include "app/image_io.h"
+#include "pipeline/analysis/mistakes.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/render/renderer.h"
+#include "tests/test_support.h"
 
 using testing::CliRun;
 using testing::runCli;

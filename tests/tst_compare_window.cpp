@@ -16,11 +16,11 @@
 #include <QPushButton>
 #include <QTemporaryDir>
 
-#include "compare_panel.h"
-#include "main_window.h"
-#include "mistakes.h"
-#include "test_support.h"
-#include "translators.h"
+#include "app/window/compare_panel.h"
+#include "app/window/main_window.h"
+#include "app/window/translators.h"
+#include "pipeline/analysis/mistakes.h"
+#include "tests/test_support.h"
 
 using rasterlab::ComparePanel;
 using rasterlab::MainWindow;

@@ -5,9 +5,9 @@
 
 #include <string_view>
 
-#include "course_readers.h"
-#include "course_scene.h"
-#include "test_support.h"
+#include "pipeline/io/course_readers.h"
+#include "pipeline/io/course_scene.h"
+#include "tests/test_support.h"
 
 namespace {
 

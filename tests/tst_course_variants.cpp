@@ -7,11 +7,11 @@
 
 #include <string_view>
 
-#include "bezier.h"
-#include "course_readers.h"
-#include "course_scene.h"
-#include "renderer.h"
-#include "test_support.h"
+#include "pipeline/io/course_readers.h"
+#include "pipeline/io/course_scene.h"
+#include "pipeline/render/renderer.h"
+#include "pipeline/scene/bezier.h"
+#include "tests/test_support.h"
 
 namespace {
 

@@ -11,9 +11,9 @@
 #include <limits>
 #include <random>
 
-#include "course_readers.h"
-#include "course_writers.h"
-#include "test_support.h"
+#include "pipeline/io/course_readers.h"
+#include "pipeline/io/course_writers.h"
+#include "tests/test_support.h"
 
 namespace {
 

@@ -2,11 +2,11 @@
 // the earlier triangle, and depths at vertices and inside are those of P' by hand.
 #include <QtTest>
 
-#include "depth_test.h"
-#include "depth_test_fast.h"
-#include "probe.h"
-#include "scan_conversion.h"
-#include "test_support.h"
+#include "pipeline/fast/depth_test_fast.h"
+#include "pipeline/stages/depth_test.h"
+#include "pipeline/stages/probe.h"
+#include "pipeline/stages/scan_conversion.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 

@@ -11,7 +11,7 @@
 #include <QFile>
 #include <QRegularExpression>
 
-#include "test_support.h"
+#include "tests/test_support.h"
 
 namespace {
 

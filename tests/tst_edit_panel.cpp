@@ -28,10 +28,10 @@
 #include <csignal>
 #include <functional>
 
-#include "course_readers.h"
-#include "edit_panel.h"
-#include "scene_document.h"
-#include "test_support.h"
+#include "app/documents/scene_document.h"
+#include "app/window/edit_panel.h"
+#include "pipeline/io/course_readers.h"
+#include "tests/test_support.h"
 
 using rasterlab::EditPanel;
 using rasterlab::SceneDocument;

@@ -10,11 +10,11 @@
 
 #include <cmath>
 
-#include "course_readers.h"
-#include "course_scene.h"
-#include "hw2_reader.h"
-#include "renderer.h"
-#include "test_support.h"
+#include "pipeline/io/course_readers.h"
+#include "pipeline/io/course_scene.h"
+#include "pipeline/io/hw2_reader.h"
+#include "pipeline/render/renderer.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 

@@ -21,18 +21,18 @@
 #endif
 #endif
 
-#include "benchmark_scenes.h"
-#include "course_scene.h"
-#include "course_scenes.h"
-#include "default_scene_resource.h"
-#include "frame_memory.h"
-#include "mesh_topology.h"
-#include "multiversion.h"
-#include "output_image.h"
-#include "parallel.h"
-#include "renderer.h"
-#include "shading_fast.h"
-#include "test_support.h"
+#include "app/documents/default_scene_resource.h"
+#include "pipeline/core/frame_memory.h"
+#include "pipeline/core/multiversion.h"
+#include "pipeline/core/parallel.h"
+#include "pipeline/fast/shading_fast.h"
+#include "pipeline/io/course_scene.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/render/renderer.h"
+#include "pipeline/scene/benchmark_scenes.h"
+#include "pipeline/scene/mesh_topology.h"
+#include "tests/course_scenes.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 

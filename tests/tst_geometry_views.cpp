@@ -12,17 +12,17 @@
 
 #include <algorithm>
 
-#include "benchmark_scenes.h"
-#include "camera_basis_view.h"
-#include "command_file.h"
-#include "course_scene.h"
-#include "course_scenes.h"
-#include "default_scene_resource.h"
-#include "inspection.h"
-#include "projection_view.h"
-#include "renderer.h"
-#include "replay.h"
-#include "test_support.h"
+#include "app/documents/command_file.h"
+#include "app/documents/default_scene_resource.h"
+#include "pipeline/io/course_scene.h"
+#include "pipeline/render/renderer.h"
+#include "pipeline/render/replay.h"
+#include "pipeline/scene/benchmark_scenes.h"
+#include "tests/course_scenes.h"
+#include "tests/test_support.h"
+#include "views/camera_basis_view.h"
+#include "views/inspection.h"
+#include "views/projection_view.h"
 
 using rasterlab::CameraBasisView;
 using rasterlab::Inspection;

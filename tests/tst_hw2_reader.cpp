@@ -8,8 +8,8 @@
 
 #include <functional>
 
-#include "hw2_reader.h"
-#include "test_support.h"
+#include "pipeline/io/hw2_reader.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 

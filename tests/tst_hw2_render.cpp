@@ -16,10 +16,10 @@
 #include <cmath>
 #include <optional>
 
-#include "command_file.h"
-#include "output_image.h"
-#include "renderer.h"
-#include "test_support.h"
+#include "app/documents/command_file.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/render/renderer.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 

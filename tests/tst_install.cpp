@@ -8,9 +8,9 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
-#include "install_paths.h"
-#include "main_window.h"
-#include "test_support.h"
+#include "app/install_paths.h"
+#include "app/window/main_window.h"
+#include "tests/test_support.h"
 
 using rasterlab::MainWindow;
 

@@ -8,15 +8,15 @@
 #include <cstring>
 #include <random>
 
-#include "depth_test_fast.h"
-#include "multiversion.h"
-#include "parallel.h"
-#include "phong.h"
-#include "phong_kernel.h"
-#include "renderer.h"
-#include "shading.h"
-#include "shading_fast.h"
-#include "test_support.h"
+#include "pipeline/core/multiversion.h"
+#include "pipeline/core/parallel.h"
+#include "pipeline/fast/depth_test_fast.h"
+#include "pipeline/fast/phong_kernel.h"
+#include "pipeline/fast/shading_fast.h"
+#include "pipeline/render/renderer.h"
+#include "pipeline/stages/phong.h"
+#include "pipeline/stages/shading.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 

@@ -39,15 +39,15 @@
 #include <QToolBar>
 #include <QToolButton>
 
-#include "frame_image_view.h"
-#include "image_io.h"
-#include "inspection.h"
-#include "main_window.h"
-#include "mistakes.h"
-#include "offscreen_screens.h"
-#include "painted_labels.h"
-#include "render_controller.h"
-#include "translators.h"
+#include "app/image_io.h"
+#include "app/window/main_window.h"
+#include "app/window/render_controller.h"
+#include "app/window/translators.h"
+#include "pipeline/analysis/mistakes.h"
+#include "tests/offscreen_screens.h"
+#include "views/frame_image_view.h"
+#include "views/inspection.h"
+#include "views/painted_labels.h"
 
 using rasterlab::MainWindow;
 

@@ -1,6 +1,6 @@
-// The lessons that ship (pipeline/scene/lessons.h, app/examples.h): their files are the
+// The lessons that ship (pipeline/scene/lessons.h, app/documents/examples.h): their files are the
 // generator's output, each scene shows what its text promises, and lesson files
-// (app/lesson_file.h) keep a teacher's setup, also across processes and language switches.
+// (app/documents/lesson_file.h) keep a teacher's setup, also across processes and language switches.
 #include <QAction>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
@@ -12,21 +12,21 @@
 
 #include <cmath>
 
-#include "breakpoints_view.h"
-#include "course_scene.h"
-#include "default_scene_resource.h"
-#include "edit_panel.h"
-#include "examples.h"
-#include "frame_image_view.h"
-#include "image_io.h"
-#include "input_file.h"
-#include "lesson_file.h"
-#include "lessons.h"
-#include "main_window.h"
-#include "mesh_topology.h"
-#include "output_image.h"
-#include "painter.h"
-#include "test_support.h"
+#include "app/documents/default_scene_resource.h"
+#include "app/documents/examples.h"
+#include "app/documents/input_file.h"
+#include "app/documents/lesson_file.h"
+#include "app/image_io.h"
+#include "app/window/edit_panel.h"
+#include "app/window/main_window.h"
+#include "pipeline/analysis/painter.h"
+#include "pipeline/io/course_scene.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/scene/lessons.h"
+#include "pipeline/scene/mesh_topology.h"
+#include "tests/test_support.h"
+#include "views/breakpoints_view.h"
+#include "views/frame_image_view.h"
 
 using namespace rasterlab;
 using testing::CliRun;

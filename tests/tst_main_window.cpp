@@ -24,17 +24,17 @@
 
 #include <set>
 
-#include "accuracy_panel.h"
-#include "benchmark_scenes.h"
-#include "explained_view.h"
-#include "inspection.h"
-#include "main_window.h"
-#include "painter_view.h"
-#include "render_controller.h"
-#include "scene_document.h"
-#include "stability_plot.h"
-#include "stage_strip.h"
-#include "test_support.h"
+#include "app/documents/scene_document.h"
+#include "app/plots/stability_plot.h"
+#include "app/window/accuracy_panel.h"
+#include "app/window/main_window.h"
+#include "app/window/render_controller.h"
+#include "pipeline/scene/benchmark_scenes.h"
+#include "tests/test_support.h"
+#include "views/explained_view.h"
+#include "views/inspection.h"
+#include "views/painter_view.h"
+#include "views/stage_strip.h"
 
 using rasterlab::AccuracyPanel;
 using rasterlab::MainWindow;

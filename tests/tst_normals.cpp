@@ -2,12 +2,12 @@
 // degenerate triangles counted and left out.
 #include <QtTest>
 
-#include "benchmark_scenes.h"
-#include "camera_basis.h"
-#include "normals.h"
-#include "normals_fast.h"
-#include "test_support.h"
-#include "view_transform.h"
+#include "pipeline/fast/normals_fast.h"
+#include "pipeline/scene/benchmark_scenes.h"
+#include "pipeline/stages/camera_basis.h"
+#include "pipeline/stages/normals.h"
+#include "pipeline/stages/view_transform.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 

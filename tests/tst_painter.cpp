@@ -6,12 +6,12 @@
 
 #include <cmath>
 
-#include "explain.h"
-#include "output_image.h"
-#include "painter.h"
-#include "renderer.h"
-#include "replay.h"
-#include "test_support.h"
+#include "pipeline/analysis/painter.h"
+#include "pipeline/render/explain.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/render/renderer.h"
+#include "pipeline/render/replay.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 using testing::renderTrace;

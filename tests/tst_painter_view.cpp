@@ -10,13 +10,13 @@
 #include <QDockWidget>
 #include <QTableView>
 
-#include "course_scenes.h"
-#include "frame_image_view.h"
-#include "inspection.h"
-#include "main_window.h"
-#include "output_image.h"
-#include "painter_view.h"
-#include "test_support.h"
+#include "app/window/main_window.h"
+#include "pipeline/render/output_image.h"
+#include "tests/course_scenes.h"
+#include "tests/test_support.h"
+#include "views/frame_image_view.h"
+#include "views/inspection.h"
+#include "views/painter_view.h"
 
 using namespace rl;
 using rasterlab::Inspection;

@@ -2,12 +2,12 @@
 // against the near plane (a quad splits in two, nothing behind the camera is divided).
 #include <QtTest>
 
-#include "benchmark_scenes.h"
-#include "camera_basis.h"
-#include "projection.h"
-#include "projection_fast.h"
-#include "test_support.h"
-#include "view_transform.h"
+#include "pipeline/fast/projection_fast.h"
+#include "pipeline/scene/benchmark_scenes.h"
+#include "pipeline/stages/camera_basis.h"
+#include "pipeline/stages/projection.h"
+#include "pipeline/stages/view_transform.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 

@@ -2,12 +2,12 @@
 // buffers, and the course's real files rendered with no holes, no NaN and a highlight.
 #include <QtTest>
 
-#include "course_scene.h"
-#include "default_scene_resource.h"
-#include "output_image.h"
-#include "phong.h"
-#include "renderer.h"
-#include "test_support.h"
+#include "app/documents/default_scene_resource.h"
+#include "pipeline/io/course_scene.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/render/renderer.h"
+#include "pipeline/stages/phong.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 

@@ -5,12 +5,12 @@
 
 #include <random>
 
-#include "benchmark_scenes.h"
-#include "course_scenes.h"
-#include "output_image.h"
-#include "renderer.h"
-#include "replay.h"
-#include "test_support.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/render/renderer.h"
+#include "pipeline/render/replay.h"
+#include "pipeline/scene/benchmark_scenes.h"
+#include "tests/course_scenes.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 

@@ -8,9 +8,9 @@
 #include <random>
 #include <set>
 
-#include "probe.h"
-#include "scan_conversion.h"
-#include "test_support.h"
+#include "pipeline/stages/probe.h"
+#include "pipeline/stages/scan_conversion.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 

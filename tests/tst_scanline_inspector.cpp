@@ -13,17 +13,17 @@
 
 #include <cmath>
 
-#include "command_file.h"
-#include "course_scenes.h"
-#include "image_io.h"
-#include "inspection.h"
-#include "output_image.h"
-#include "painted_labels.h"
-#include "pixel_inspector.h"
-#include "renderer.h"
-#include "replay.h"
-#include "scanline_view.h"
-#include "test_support.h"
+#include "app/documents/command_file.h"
+#include "app/image_io.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/render/renderer.h"
+#include "pipeline/render/replay.h"
+#include "tests/course_scenes.h"
+#include "tests/test_support.h"
+#include "views/inspection.h"
+#include "views/painted_labels.h"
+#include "views/pixel_inspector.h"
+#include "views/scanline_view.h"
 
 using namespace rl;
 using rasterlab::Inspection;

@@ -5,12 +5,12 @@
 
 #include <cmath>
 
-#include "fast_pow.h"
+#include "pipeline/core/fast_pow.h"
 
-#include "output_image.h"
-#include "phong.h"
-#include "renderer.h"
-#include "test_support.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/render/renderer.h"
+#include "pipeline/stages/phong.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 

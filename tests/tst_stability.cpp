@@ -7,10 +7,10 @@
 
 #include <cmath>
 
-#include "benchmark_scenes.h"
-#include "frame_trace.h"
-#include "renderer.h"
-#include "stability.h"
+#include "pipeline/analysis/stability.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/render/renderer.h"
+#include "pipeline/scene/benchmark_scenes.h"
 
 using namespace rl;
 

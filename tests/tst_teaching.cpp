@@ -17,16 +17,16 @@
 #include <QTemporaryDir>
 #include <QToolButton>
 
-#include "breakpoints_view.h"
-#include "frame_image_view.h"
-#include "inspection.h"
-#include "main_window.h"
-#include "painted_labels.h"
-#include "pixel_inspector.h"
-#include "replay_builder.h"
-#include "stage_strip.h"
-#include "stepping_bar.h"
-#include "test_support.h"
+#include "app/window/main_window.h"
+#include "app/window/replay_builder.h"
+#include "tests/test_support.h"
+#include "views/breakpoints_view.h"
+#include "views/frame_image_view.h"
+#include "views/inspection.h"
+#include "views/painted_labels.h"
+#include "views/pixel_inspector.h"
+#include "views/stage_strip.h"
+#include "views/stepping_bar.h"
 
 using namespace rasterlab;
 

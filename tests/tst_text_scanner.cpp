@@ -7,7 +7,7 @@
 #include <limits>
 #include <string_view>
 
-#include "text_scanner.h"
+#include "pipeline/io/text_scanner.h"
 
 namespace {
 

@@ -11,9 +11,9 @@
 
 #include <glm/gtc/matrix_access.hpp>
 
-#include "bezier.h"
-#include "test_support.h"
-#include "transforms.h"
+#include "pipeline/scene/bezier.h"
+#include "pipeline/scene/transforms.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 

@@ -10,7 +10,7 @@
 
 #include <set>
 
-#include "test_support.h"
+#include "tests/test_support.h"
 
 namespace {
 

@@ -13,17 +13,17 @@
 
 #include <cmath>
 
-#include "course_scenes.h"
-#include "frame_image_view.h"
-#include "image_io.h"
-#include "inspection.h"
-#include "mesh_topology.h"
-#include "normals_view.h"
-#include "output_image.h"
-#include "renderer.h"
-#include "replay.h"
-#include "test_support.h"
-#include "vertex_table.h"
+#include "app/image_io.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/render/renderer.h"
+#include "pipeline/render/replay.h"
+#include "pipeline/scene/mesh_topology.h"
+#include "tests/course_scenes.h"
+#include "tests/test_support.h"
+#include "views/frame_image_view.h"
+#include "views/inspection.h"
+#include "views/normals_view.h"
+#include "views/vertex_table.h"
 
 using rasterlab::Inspection;
 using rasterlab::NormalsView;

@@ -1,9 +1,9 @@
 // Stage 2, view transform: seed 000's triangle and light in view coordinates, by hand.
 #include <QtTest>
 
-#include "camera_basis.h"
-#include "test_support.h"
-#include "view_transform.h"
+#include "pipeline/stages/camera_basis.h"
+#include "pipeline/stages/view_transform.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 

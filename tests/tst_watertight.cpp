@@ -8,8 +8,8 @@
 
 #include <random>
 
-#include "scan_conversion.h"
-#include "test_support.h"
+#include "pipeline/stages/scan_conversion.h"
+#include "tests/test_support.h"
 
 using namespace rl;
 

@@ -10,9 +10,9 @@
 #include <cmath>
 #include <limits>
 
-#include "main_window.h"
-#include "render_controller.h"
-#include "zbuffer_view.h"
+#include "app/window/main_window.h"
+#include "app/window/render_controller.h"
+#include "views/zbuffer_view.h"
 
 using rasterlab::DepthPalette;
 using rasterlab::DepthRange;

@@ -4,57 +4,57 @@
 <context>
     <name>AccuracyPlot</name>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="126"/>
+        <location filename="../app/plots/accuracy_plot.cpp" line="126"/>
         <source>median time per frame (ms, log scale)</source>
         <translation>median time per frame (ms, log scale)</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="132"/>
+        <location filename="../app/plots/accuracy_plot.cpp" line="132"/>
         <source>colour RMSE against the exact reference (byte steps, log scale)</source>
         <translation>colour RMSE against the exact reference (byte steps, log scale)</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="186"/>
+        <location filename="../app/plots/accuracy_plot.cpp" line="186"/>
         <source>colour: shading</source>
         <translation>colour: shading</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="195"/>
+        <location filename="../app/plots/accuracy_plot.cpp" line="195"/>
         <source>shape: rules</source>
         <translation>shape: rules</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="204"/>
+        <location filename="../app/plots/accuracy_plot.cpp" line="204"/>
         <source>filled: float; hollow: double</source>
         <translation>filled: float; hollow: double</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="207"/>
+        <location filename="../app/plots/accuracy_plot.cpp" line="207"/>
         <source>size: samples per pixel</source>
         <translation>size: samples per pixel</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="209"/>
+        <location filename="../app/plots/accuracy_plot.cpp" line="209"/>
         <source>exact reference:</source>
         <translation>exact reference:</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="211"/>
+        <location filename="../app/plots/accuracy_plot.cpp" line="211"/>
         <source>%1 ms, %2 rays</source>
         <translation>%1 ms, %2 rays</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="216"/>
+        <location filename="../app/plots/accuracy_plot.cpp" line="216"/>
         <source>an RMSE of 0 sits on the floor</source>
         <translation>an RMSE of 0 sits on the floor</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="261"/>
+        <location filename="../app/plots/accuracy_plot.cpp" line="261"/>
         <source>byte steps</source>
         <translation>byte steps</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_plot.cpp" line="264"/>
+        <location filename="../app/plots/accuracy_plot.cpp" line="264"/>
         <source>coverage</source>
         <translation>coverage</translation>
     </message>
@@ -62,82 +62,82 @@
 <context>
     <name>Lessons</name>
     <message>
-        <location filename="../app/examples.cpp" line="29"/>
+        <location filename="../app/documents/examples.cpp" line="29"/>
         <source>One triangle</source>
         <translation>One triangle</translation>
     </message>
     <message>
-        <location filename="../app/examples.cpp" line="30"/>
+        <location filename="../app/documents/examples.cpp" line="30"/>
         <source>A single triangle in a 32 x 24 image, large enough to read from the back of the room. Step by pixel (Step menu, or the arrow keys) and watch the scanline fill from its left edge to its right; pick a pixel to see its barycentric coordinates, its interpolated P and N, and its Phong terms in the pixel inspector.</source>
         <translation>A single triangle in a 32 x 24 image, large enough to read from the back of the room. Step by pixel (Step menu, or the arrow keys) and watch the scanline fill from its left edge to its right; pick a pixel to see its barycentric coordinates, its interpolated P and N, and its Phong terms in the pixel inspector.</translation>
     </message>
     <message>
-        <location filename="../app/examples.cpp" line="38"/>
+        <location filename="../app/documents/examples.cpp" line="38"/>
         <source>Two triangles that cross (the z-buffer)</source>
         <translation>Two triangles that cross (the z-buffer)</translation>
     </message>
     <message>
-        <location filename="../app/examples.cpp" line="39"/>
+        <location filename="../app/documents/examples.cpp" line="39"/>
         <source>Two triangles that pass through each other: each is nearer the camera over half of the other, so no order of whole triangles draws them right. It opens at the start of the frame with a breakpoint at the second triangle: Continue to Breakpoint (F8) draws the first, then step by scanline through the second and watch the z-buffer dock: its pixels are kept above the crossing line and rejected below it. Pick a pixel near the crossing to compare both depths.</source>
         <translation>Two triangles that pass through each other: each is nearer the camera over half of the other, so no order of whole triangles draws them right. It opens at the start of the frame with a breakpoint at the second triangle: Continue to Breakpoint (F8) draws the first, then step by scanline through the second and watch the z-buffer dock: its pixels are kept above the crossing line and rejected below it. Pick a pixel near the crossing to compare both depths.</translation>
     </message>
     <message>
-        <location filename="../app/examples.cpp" line="50"/>
+        <location filename="../app/documents/examples.cpp" line="50"/>
         <source>A triangle through the near plane</source>
         <translation>A triangle through the near plane</translation>
     </message>
     <message>
-        <location filename="../app/examples.cpp" line="51"/>
+        <location filename="../app/documents/examples.cpp" line="51"/>
         <source>A triangle on the floor whose far corner is behind the camera. The near-plane clipping dock shows it cut at the near plane into a quad, and the quad split into two triangles. Then choose Shading &gt; Projection &gt; Plain Divide: the corner behind the eye is divided by a negative z and lands above the horizon.</source>
         <translation>A triangle on the floor whose far corner is behind the camera. The near-plane clipping dock shows it cut at the near plane into a quad, and the quad split into two triangles. Then choose Shading &gt; Projection &gt; Plain Divide: the corner behind the eye is divided by a negative z and lands above the horizon.</translation>
     </message>
     <message>
-        <location filename="../app/examples.cpp" line="59"/>
+        <location filename="../app/documents/examples.cpp" line="59"/>
         <source>A goblet turned from a profile</source>
         <translation>A goblet turned from a profile</translation>
     </message>
     <message>
-        <location filename="../app/examples.cpp" line="60"/>
+        <location filename="../app/documents/examples.cpp" line="60"/>
         <source>A goblet made by turning a profile around the y axis (the course&apos;s chalice idea, 1,520 triangles of our own). Start at the camera basis dock, then follow the stages in order: view coordinates, normals, projection, scan conversion, z-buffer and lighting. Pick a pixel on the highlight of the bowl to see why it is bright.</source>
         <translation>A goblet made by turning a profile around the y axis (the course&apos;s chalice idea, 1,520 triangles of our own). Start at the camera basis dock, then follow the stages in order: view coordinates, normals, projection, scan conversion, z-buffer and lighting. Pick a pixel on the highlight of the bowl to see why it is bright.</translation>
     </message>
     <message>
-        <location filename="../app/examples.cpp" line="68"/>
+        <location filename="../app/documents/examples.cpp" line="68"/>
         <source>A low-polygon sphere: flat, Gouraud, Phong</source>
         <translation>A low-polygon sphere: flat, Gouraud, Phong</translation>
     </message>
     <message>
-        <location filename="../app/examples.cpp" line="69"/>
+        <location filename="../app/documents/examples.cpp" line="69"/>
         <source>A sphere of 168 triangles. It opens in flat shading, one colour per triangle; press the Shading menu&apos;s Gouraud and then Phong to compare (File &gt; Export More &gt; Shading Side by Side puts the three in one picture). Gouraud smooths the facets but blurs the highlight; Phong draws it round.</source>
         <translation>A sphere of 168 triangles. It opens in flat shading, one colour per triangle; press the Shading menu&apos;s Gouraud and then Phong to compare (File &gt; Export More &gt; Shading Side by Side puts the three in one picture). Gouraud smooths the facets but blurs the highlight; Phong draws it round.</translation>
     </message>
     <message>
-        <location filename="../app/examples.cpp" line="77"/>
+        <location filename="../app/documents/examples.cpp" line="77"/>
         <source>Several lights: spot, directional, attenuated</source>
         <translation>Several lights: spot, directional, attenuated</translation>
     </message>
     <message>
-        <location filename="../app/examples.cpp" line="78"/>
+        <location filename="../app/documents/examples.cpp" line="78"/>
         <source>A floor and a ball under three lights of the lecture slides: a yellow spot (the bright disc, with a soft edge from its exponent), a dim blue directional light from the right, and a red positional light whose strength falls with distance. Pick pixels inside and outside the spot&apos;s cone and compare the pixel inspector&apos;s terms light by light; change the lights in the Edit dock.</source>
         <translation>A floor and a ball under three lights of the lecture slides: a yellow spot (the bright disc, with a soft edge from its exponent), a dim blue directional light from the right, and a red positional light whose strength falls with distance. Pick pixels inside and outside the spot&apos;s cone and compare the pixel inspector&apos;s terms light by light; change the lights in the Edit dock.</translation>
     </message>
     <message>
-        <location filename="../app/examples.cpp" line="87"/>
+        <location filename="../app/documents/examples.cpp" line="87"/>
         <source>Three triangles in a cycle (the painter)</source>
         <translation>Three triangles in a cycle (the painter)</translation>
     </message>
     <message>
-        <location filename="../app/examples.cpp" line="88"/>
+        <location filename="../app/documents/examples.cpp" line="88"/>
         <source>Three triangles that each lie in front of the next: no order of whole triangles can draw them right, so the painter&apos;s algorithm (far to near by barycentre) must fail somewhere. Step by triangle and see one painted over a nearer one; the painter&apos;s algorithm dock marks the pixels that differ from the z-buffer&apos;s image.</source>
         <translation>Three triangles that each lie in front of the next: no order of whole triangles can draw them right, so the painter&apos;s algorithm (far to near by barycentre) must fail somewhere. Step by triangle and see one painted over a nearer one; the painter&apos;s algorithm dock marks the pixels that differ from the z-buffer&apos;s image.</translation>
     </message>
     <message>
-        <location filename="../app/examples.cpp" line="96"/>
+        <location filename="../app/documents/examples.cpp" line="96"/>
         <source>Gouraud&apos;s faults: Mach bands, a missed highlight</source>
         <translation>Gouraud&apos;s faults: Mach bands, a missed highlight</translation>
     </message>
     <message>
-        <location filename="../app/examples.cpp" line="97"/>
+        <location filename="../app/documents/examples.cpp" line="97"/>
         <source>Left, a coarse sphere in Gouraud shading: the brightness bends at every edge and the eye sees bands there (Mach bands). Right, a square of two triangles whose highlight falls between its corners: Gouraud lights only the corners and misses it. Switch to Phong shading and the highlight appears in the middle of the square.</source>
         <translation>Left, a coarse sphere in Gouraud shading: the brightness bends at every edge and the eye sees bands there (Mach bands). Right, a square of two triangles whose highlight falls between its corners: Gouraud lights only the corners and misses it. Switch to Phong shading and the highlight appears in the middle of the square.</translation>
     </message>
@@ -145,2057 +145,2057 @@
 <context>
     <name>Messages</name>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="15"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="15"/>
         <source>expected the degree %1 of the Bezier surface (an integer from 1 to %2), found %3</source>
         <translation>expected the degree %1 of the Bezier surface (an integer from 1 to %2), found %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="18"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="18"/>
         <source>ignored %1 after the Bezier surface&apos;s two degrees</source>
         <translation>ignored %1 after the Bezier surface&apos;s two degrees</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="19"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="19"/>
         <source>expected the number of evaluations per direction (an integer from 2 to %1), found %2</source>
         <translation>expected the number of evaluations per direction (an integer from 2 to %1), found %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="22"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="22"/>
         <source>the header declares a Bezier surface of degrees %1 x %2, so %3 control points (one a line), but only %4</source>
         <translation>the header declares a Bezier surface of degrees %1 x %2, so %3 control points (one a line), but only %4</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="25"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="25"/>
         <source>%1 line follows</source>
         <translation>%1 line follows</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="26"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="26"/>
         <source>%1 lines follow</source>
         <translation>%1 lines follow</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="27"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="27"/>
         <source>control point (%1, %2)</source>
         <translation>control point (%1, %2)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="28"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="28"/>
         <source>ignored %1 after the %2 control points of the Bezier surface</source>
         <translation>ignored %1 after the %2 control points of the Bezier surface</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="30"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="30"/>
         <source>the header &apos;vertices triangles&apos; (two integers)</source>
         <translation>the header &apos;vertices triangles&apos; (two integers)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="31"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="31"/>
         <source>expected %1, found the end of the file</source>
         <translation>expected %1, found the end of the file</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="32"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="32"/>
         <source>this is an original Movie.BYU file (header &apos;parts vertices polygons edges&apos;), not the course&apos;s .byu format (header &apos;vertices triangles&apos;)</source>
         <translation>this is an original Movie.BYU file (header &apos;parts vertices polygons edges&apos;), not the course&apos;s .byu format (header &apos;vertices triangles&apos;)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="35"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="35"/>
         <source>vertices</source>
         <translation>vertices</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="36"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="36"/>
         <source>expected the number of triangles after the number of vertices, found the end of the line</source>
         <translation>expected the number of triangles after the number of vertices, found the end of the line</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="39"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="39"/>
         <source>triangles</source>
         <translation>triangles</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="40"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="40"/>
         <source>ignored %1 after the header&apos;s two counts</source>
         <translation>ignored %1 after the header&apos;s two counts</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="41"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="41"/>
         <source>this looks like a course Bezier surface (degrees %1 x %2, %3 evaluations per direction), not a triangle mesh</source>
         <translation>this looks like a course Bezier surface (degrees %1 x %2, %3 evaluations per direction), not a triangle mesh</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="44"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="44"/>
         <source>the header declares %1 and %2 (%3), but only %4</source>
         <translation>the header declares %1 and %2 (%3), but only %4</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="45"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="45"/>
         <source>%1 line</source>
         <translation>%1 line</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="46"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="46"/>
         <source>%1 lines</source>
         <translation>%1 lines</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="47"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="47"/>
         <source>vertex %1 of %2</source>
         <translation>vertex %1 of %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="48"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="48"/>
         <source>triangle %1 of %2 (three vertex indices)</source>
         <translation>triangle %1 of %2 (three vertex indices)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="49"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="49"/>
         <source>expected 3 vertex indices for triangle %1 of %2, found %3</source>
         <translation>expected 3 vertex indices for triangle %1 of %2, found %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="50"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="50"/>
         <source>polygon %1 has %2 vertex indices, but only triangles (3 indices) are supported</source>
         <translation>polygon %1 has %2 vertex indices, but only triangles (3 indices) are supported</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="53"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="53"/>
         <source>expected a vertex index (a positive integer) for triangle %1, found %2</source>
         <translation>expected a vertex index (a positive integer) for triangle %1, found %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="55"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="55"/>
         <source>triangle %1 refers to vertex %2, but indices are 1-based (1 to %3)</source>
         <translation>triangle %1 refers to vertex %2, but indices are 1-based (1 to %3)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="57"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="57"/>
         <source>triangle %1 refers to vertex %2, but the file declares only %3</source>
         <translation>triangle %1 refers to vertex %2, but the file declares only %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="58"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="58"/>
         <source>ignored %1 after the declared %2 and %3 (the header&apos;s counts may be wrong, or a second object follows)</source>
         <translation>ignored %1 after the declared %2 and %3 (the header&apos;s counts may be wrong, or a second object follows)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="62"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="62"/>
         <source>the camera position</source>
         <translation>the camera position</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="63"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="63"/>
         <source>the view direction</source>
         <translation>the view direction</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="64"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="64"/>
         <source>the up vector</source>
         <translation>the up vector</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="65"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="65"/>
         <source>the projection distance and half-sizes</source>
         <translation>the projection distance and half-sizes</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="66"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="66"/>
         <source>the projection distance</source>
         <translation>the projection distance</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="67"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="67"/>
         <source>the horizontal half-size of the window</source>
         <translation>the horizontal half-size of the window</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="68"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="68"/>
         <source>the vertical half-size of the window</source>
         <translation>the vertical half-size of the window</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="69"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="69"/>
         <source>the half-sizes of the window</source>
         <translation>the half-sizes of the window</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="70"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="70"/>
         <source>the light position</source>
         <translation>the light position</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="71"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="71"/>
         <source>the ambient coefficient</source>
         <translation>the ambient coefficient</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="72"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="72"/>
         <source>the ambient light colour</source>
         <translation>the ambient light colour</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="73"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="73"/>
         <source>the diffuse coefficient</source>
         <translation>the diffuse coefficient</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="74"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="74"/>
         <source>the diffuse colour of the object</source>
         <translation>the diffuse colour of the object</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="75"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="75"/>
         <source>the specular coefficient</source>
         <translation>the specular coefficient</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="76"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="76"/>
         <source>the light colour</source>
         <translation>the light colour</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="77"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="77"/>
         <source>the specular exponent</source>
         <translation>the specular exponent</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="78"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="78"/>
         <source>the number of lights</source>
         <translation>the number of lights</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="79"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="79"/>
         <source>the diffuse coefficient of each channel</source>
         <translation>the diffuse coefficient of each channel</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="80"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="80"/>
         <source>the camera&apos;s %1</source>
         <translation>the camera&apos;s %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="81"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="81"/>
         <source>the lighting&apos;s %1</source>
         <translation>the lighting&apos;s %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="82"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="82"/>
         <source>UFPE (C; N; V; d hx hy)</source>
         <translation>UFPE (C; N; V; d hx hy)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="83"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="83"/>
         <source>UFRPE (N; V; d; hx; hy; C)</source>
         <translation>UFRPE (N; V; d; hx; hy; C)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="84"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="84"/>
         <source>UFRPE (C; N; V; hx hy; d)</source>
         <translation>UFRPE (C; N; V; hx hy; d)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="85"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="85"/>
         <source>key = value</source>
         <translation>key = value</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="86"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="86"/>
         <source>detected from the file</source>
         <translation>detected from the file</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="87"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="87"/>
         <source>UFPE (Pl; ka; Ia; kd; Od; ks; Il; n)</source>
         <translation>UFPE (Pl; ka; Ia; kd; Od; ks; Il; n)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="88"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="88"/>
         <source>UFPE multi-light (ka; Ia; kd; Od; ks; n; L; L times Pl; Il)</source>
         <translation>UFPE multi-light (ka; Ia; kd; Od; ks; n; L; L times Pl; Il)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="89"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="89"/>
         <source>UFRPE (Iamb; Ka; Il; Pl; Kd; Od; Ks; n)</source>
         <translation>UFRPE (Iamb; Ka; Il; Pl; Kd; Od; Ks; n)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="90"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="90"/>
         <source>a UFPE camera, C; N; V; d hx hy</source>
         <translation>a UFPE camera, C; N; V; d hx hy</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="91"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="91"/>
         <source>a UFRPE camera, N; V; d; hx; hy; C</source>
         <translation>a UFRPE camera, N; V; d; hx; hy; C</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="92"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="92"/>
         <source>a UFRPE camera, C; N; V; hx hy; d</source>
         <translation>a UFRPE camera, C; N; V; hx hy; d</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="93"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="93"/>
         <source>a key = value camera</source>
         <translation>a key = value camera</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="94"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="94"/>
         <source>a camera</source>
         <translation>a camera</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="95"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="95"/>
         <source>a UFPE lighting file, Pl; ka; Ia; kd; Od; ks; Il; n</source>
         <translation>a UFPE lighting file, Pl; ka; Ia; kd; Od; ks; Il; n</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="96"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="96"/>
         <source>a UFPE multi-light lighting file, ka; Ia; kd; Od; ks; n; L; L times Pl; Il</source>
         <translation>a UFPE multi-light lighting file, ka; Ia; kd; Od; ks; n; L; L times Pl; Il</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="98"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="98"/>
         <source>a UFRPE lighting file, Iamb; Ka; Il; Pl; Kd; Od; Ks; n</source>
         <translation>a UFRPE lighting file, Iamb; Ka; Il; Pl; Kd; Od; Ks; n</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="99"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="99"/>
         <source>a key = value lighting file</source>
         <translation>a key = value lighting file</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="100"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="100"/>
         <source>a lighting file</source>
         <translation>a lighting file</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="101"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="101"/>
         <source>the 1 line has %1</source>
         <translation>the 1 line has %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="102"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="102"/>
         <source>the %1 lines have %2 numbers</source>
         <translation>the %1 lines have %2 numbers</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="103"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="103"/>
         <source>line %1 has %2 where %3 needs %4</source>
         <translation>line %1 has %2 where %3 needs %4</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="104"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="104"/>
         <source>its last line, %1, is missing</source>
         <translation>its last line, %1, is missing</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="105"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="105"/>
         <source>line %1 is one line more</source>
         <translation>line %1 is one line more</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="106"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="106"/>
         <source>no line contains &apos;=&apos; and %1</source>
         <translation>no line contains &apos;=&apos; and %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="107"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="107"/>
         <source>%1: its first %2 lines fit this layout, and the rest is left over</source>
         <translation>%1: its first %2 lines fit this layout, and the rest is left over</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="109"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="109"/>
         <source>%1, as in that layout</source>
         <translation>%1, as in that layout</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="110"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="110"/>
         <source>%1: no layout fits exactly, and this one is one line away (%2)</source>
         <translation>%1: no layout fits exactly, and this one is one line away (%2)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="111"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="111"/>
         <source>one line away from %1</source>
         <translation>one line away from %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="112"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="112"/>
         <source>an empty file</source>
         <translation>an empty file</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="113"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="113"/>
         <source>only blank lines</source>
         <translation>only blank lines</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="114"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="114"/>
         <source>1 line with %1</source>
         <translation>1 line with %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="115"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="115"/>
         <source>%1 lines with %2 numbers</source>
         <translation>%1 lines with %2 numbers</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="116"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="116"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="117"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="117"/>
         <source>lines contain &apos;=&apos;</source>
         <translation>lines contain &apos;=&apos;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="118"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="118"/>
         <source>expected %1 or key = value, found %2 (if the layout is known, choose it by hand: --camera-format / --lighting-format, or File &gt; Course File Layouts)</source>
         <translation>expected %1 or key = value, found %2 (if the layout is known, choose it by hand: --camera-format / --lighting-format, or File &gt; Course File Layouts)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="122"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="122"/>
         <source>a camera in one of the layouts UFPE (C; N; V; d hx hy), UFRPE (N; V; d; hx; hy; C), UFRPE (C; N; V; hx hy; d)</source>
         <translation>a camera in one of the layouts UFPE (C; N; V; d hx hy), UFRPE (N; V; d; hx; hy; C), UFRPE (C; N; V; hx hy; d)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="125"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="125"/>
         <source>lighting in one of the layouts UFPE (Pl; ka; Ia; kd; Od; ks; Il; n), UFPE multi-light (ka; Ia; kd; Od; ks; n; L; L times Pl; Il), UFRPE (Iamb; Ka; Il; Pl; Kd; Od; Ks; n)</source>
         <translation>lighting in one of the layouts UFPE (Pl; ka; Ia; kd; Od; ks; Il; n), UFPE multi-light (ka; Ia; kd; Od; ks; n; L; L times Pl; Il), UFRPE (Iamb; Ka; Il; Pl; Kd; Od; Ks; n)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="129"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="129"/>
         <source>expected the number of lights L (a positive whole number), found %1</source>
         <translation>expected the number of lights L (a positive whole number), found %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="131"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="131"/>
         <source>L = %1 lights need twice as many lines after it (Pl and Il for each), but only %2</source>
         <translation>L = %1 lights need twice as many lines after it (Pl and Il for each), but only %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="134"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="134"/>
         <source>L = %1 lights need %2 lines after it (Pl and Il for each), but only %3</source>
         <translation>L = %1 lights need %2 lines after it (Pl and Il for each), but only %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="136"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="136"/>
         <source>%1; the layout was set to %2</source>
         <translation>%1; the layout was set to %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="137"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="137"/>
         <source>%1; the layout was set to %2, but the file looks like %3 (%4)</source>
         <translation>%1; the layout was set to %2, but the file looks like %3 (%4)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="138"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="138"/>
         <source>the layout was chosen, not detected</source>
         <translation>the layout was chosen, not detected</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="139"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="139"/>
         <source>read as %1 (%2)</source>
         <translation>read as %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="141"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="141"/>
         <source>%1 or %2 numbers</source>
         <translation>%1 or %2 numbers</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="142"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="142"/>
         <source>%1 value</source>
         <translation>%1 value</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="143"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="143"/>
         <source>%1 values</source>
         <translation>%1 values</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="144"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="144"/>
         <source>%1 vertex</source>
         <translation>%1 vertex</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="145"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="145"/>
         <source>%1 vertices</source>
         <translation>%1 vertices</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="146"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="146"/>
         <source>%1 triangle</source>
         <translation>%1 triangle</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="147"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="147"/>
         <source>%1 triangles</source>
         <translation>%1 triangles</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="148"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="148"/>
         <source>%1 number</source>
         <translation>%1 number</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="149"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="149"/>
         <source>%1 numbers</source>
         <translation>%1 numbers</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="150"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="150"/>
         <source>%1 of light %2</source>
         <translation>%1 of light %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="151"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="151"/>
         <source>found %1 (separate the values with spaces, not commas)</source>
         <translation>found %1 (separate the values with spaces, not commas)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="152"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="152"/>
         <source>found %1 (the decimal separator is &apos;.&apos;)</source>
         <translation>found %1 (the decimal separator is &apos;.&apos;)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="153"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="153"/>
         <source>found %1, which is out of range</source>
         <translation>found %1, which is out of range</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="154"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="154"/>
         <source>found %1, which is not a finite number</source>
         <translation>found %1, which is not a finite number</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="155"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="155"/>
         <source>found %1</source>
         <translation>found %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="156"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="156"/>
         <source>%1 and %2</source>
         <translation>%1 and %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="157"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="157"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="158"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="158"/>
         <source>expected %1, %2 (%3), found the end of the file</source>
         <translation>expected %1, %2 (%3), found the end of the file</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="159"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="159"/>
         <source>expected a number for %1, %2</source>
         <translation>expected a number for %1, %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="160"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="160"/>
         <source>expected %1 for %2, found %3</source>
         <translation>expected %1 for %2, found %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="161"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="161"/>
         <source>ignored %1 after %2</source>
         <translation>ignored %1 after %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="162"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="162"/>
         <source>%1 = %2 is outside %3, the range the course gives for it</source>
         <translation>%1 = %2 is outside %3, the range the course gives for it</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="163"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="163"/>
         <source>%1 of light %2 = %3 is outside %4, the range the course gives for it</source>
         <translation>%1 of light %2 = %3 is outside %4, the range the course gives for it</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="165"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="165"/>
         <source>%1 = %2 is not positive: (R.V)^n then makes no highlight (it is 1 everywhere for n = 0 and grows without bound where R.V nears 0 for n &lt; 0, where the specular term is left out)</source>
         <translation>%1 = %2 is not positive: (R.V)^n then makes no highlight (it is 1 everywhere for n = 0 and grows without bound where R.V nears 0 for n &lt; 0, where the specular term is left out)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="169"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="169"/>
         <source>expected the number of %1 (a non-negative integer), found %2</source>
         <translation>expected the number of %1 (a non-negative integer), found %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="170"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="170"/>
         <source>expected %1, found a comment (%2), but .byu files have no comments</source>
         <translation>expected %1, found a comment (%2), but .byu files have no comments</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="172"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="172"/>
         <source>expected a number for the %1 coordinate of %2, %3</source>
         <translation>expected a number for the %1 coordinate of %2, %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="173"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="173"/>
         <source>%1 (x y z)</source>
         <translation>%1 (x y z)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="174"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="174"/>
         <source>expected 3 coordinates for %1, found %2</source>
         <translation>expected 3 coordinates for %1, found %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="175"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="175"/>
         <source>ignored extra values at the end of %1 (the first is here)</source>
         <translation>ignored extra values at the end of %1 (the first is here)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="176"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="176"/>
         <source>%1 vertex of %2 is not used by any triangle</source>
         <translation>%1 vertex of %2 is not used by any triangle</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="177"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="177"/>
         <source>%1 vertices of %2 are not used by any triangle</source>
         <translation>%1 vertices of %2 are not used by any triangle</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="178"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="178"/>
         <source>the object has no triangles</source>
         <translation>the object has no triangles</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="180"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="180"/>
         <source>the light position (x y z, or x y z w: w = 0 for a directional light)</source>
         <translation>the light position (x y z, or x y z w: w = 0 for a directional light)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="182"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="182"/>
         <source>the emission of the object</source>
         <translation>the emission of the object</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="183"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="183"/>
         <source>two-sided lighting, 1 or 0</source>
         <translation>two-sided lighting, 1 or 0</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="184"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="184"/>
         <source>Blinn-Phong highlights, 1 or 0</source>
         <translation>Blinn-Phong highlights, 1 or 0</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="185"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="185"/>
         <source>the attenuation kc kl kq</source>
         <translation>the attenuation kc kl kq</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="186"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="186"/>
         <source>the spot direction</source>
         <translation>the spot direction</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="187"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="187"/>
         <source>the spot cutoff angle in degrees</source>
         <translation>the spot cutoff angle in degrees</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="188"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="188"/>
         <source>the spot exponent</source>
         <translation>the spot exponent</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="189"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="189"/>
         <source>%1; optionally %2</source>
         <translation>%1; optionally %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="190"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="190"/>
         <source>%1; optionally %2; Pl2, Il2 ... for lights 2 to %3</source>
         <translation>%1; optionally %2; Pl2, Il2 ... for lights 2 to %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="191"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="191"/>
         <source>expected &apos;key = value&apos;, found a line without &apos;=&apos; (%1 ...)</source>
         <translation>expected &apos;key = value&apos;, found a line without &apos;=&apos; (%1 ...)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="192"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="192"/>
         <source>expected &apos;key = value&apos;, found a line without &apos;=&apos; (%1)</source>
         <translation>expected &apos;key = value&apos;, found a line without &apos;=&apos; (%1)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="193"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="193"/>
         <source>expected a key before &apos;=&apos;, found nothing</source>
         <translation>expected a key before &apos;=&apos;, found nothing</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="194"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="194"/>
         <source>expected one key before &apos;=&apos;, found %1</source>
         <translation>expected one key before &apos;=&apos;, found %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="195"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="195"/>
         <source>ignored %1: the camera&apos;s axes come from N and V</source>
         <translation>ignored %1: the camera&apos;s axes come from N and V</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="196"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="196"/>
         <source>ignored the unknown key %1 (a camera has %2; a lighting file has %3)</source>
         <translation>ignored the unknown key %1 (a camera has %2; a lighting file has %3)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="198"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="198"/>
         <source>ignored the unknown key %1 (a lighting file has %2; a camera has %3)</source>
         <translation>ignored the unknown key %1 (a lighting file has %2; a camera has %3)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="200"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="200"/>
         <source>expected %1 for %2, found none</source>
         <translation>expected %1 for %2, found none</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="201"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="201"/>
         <source>expected the camera keys %1, found none of them (only lighting file keys)</source>
         <translation>expected the camera keys %1, found none of them (only lighting file keys)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="203"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="203"/>
         <source>expected the camera keys %1, found none of them</source>
         <translation>expected the camera keys %1, found none of them</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="204"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="204"/>
         <source>expected the lighting file keys %1, found none of them (only camera keys)</source>
         <translation>expected the lighting file keys %1, found none of them (only camera keys)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="206"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="206"/>
         <source>expected the lighting file keys %1, found none of them</source>
         <translation>expected the lighting file keys %1, found none of them</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="207"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="207"/>
         <source>expected a line &apos;%1 = ...&apos; (%2, %3), found no %1</source>
         <translation>expected a line &apos;%1 = ...&apos; (%2, %3), found no %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="208"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="208"/>
         <source>expected lines for %1 (a camera needs %2), found none</source>
         <translation>expected lines for %1 (a camera needs %2), found none</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="209"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="209"/>
         <source>expected lines for %1 (a lighting file needs %2), found none</source>
         <translation>expected lines for %1 (a lighting file needs %2), found none</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="210"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="210"/>
         <source>expected each key once, found %1 again (first given on line %2)</source>
         <translation>expected each key once, found %1 again (first given on line %2)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="212"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="212"/>
         <source>expected light %1 (%2, %3) before light %4, found %5 (lights are numbered without gaps)</source>
         <translation>expected light %1 (%2, %3) before light %4, found %5 (lights are numbered without gaps)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="215"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="215"/>
         <source>expected a line &apos;%1 = ...&apos; (%2 of light %3), found %4 without it</source>
         <translation>expected a line &apos;%1 = ...&apos; (%2 of light %3), found %4 without it</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="217"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="217"/>
         <source>expected 1 or 0 for %1, found %2</source>
         <translation>expected 1 or 0 for %1, found %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="218"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="218"/>
         <source>expected %1 coefficients of 0 or more (kc kl kq), found %2</source>
         <translation>expected %1 coefficients of 0 or more (kc kl kq), found %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="219"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="219"/>
         <source>expected %1 with a coefficient above 0, found 0 0 0 (1 / 0 light)</source>
         <translation>expected %1 with a coefficient above 0, found 0 0 0 (1 / 0 light)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="221"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="221"/>
         <source>%1 has no effect: a directional light (w = 0) is not attenuated</source>
         <translation>%1 has no effect: a directional light (w = 0) is not attenuated</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="223"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="223"/>
         <source>expected a spot direction other than 0 0 0 for %1</source>
         <translation>expected a spot direction other than 0 0 0 for %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="224"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="224"/>
         <source>expected %1 from 0 to 90 degrees, or 180 (not a spot), found %2</source>
         <translation>expected %1 from 0 to 90 degrees, or 180 (not a spot), found %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="226"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="226"/>
         <source>%1: no %2, the spot points along -z (OpenGL&apos;s default)</source>
         <translation>%1: no %2, the spot points along -z (OpenGL&apos;s default)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="227"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="227"/>
         <source>expected %1 from 0 to 128, found %2</source>
         <translation>expected %1 from 0 to 128, found %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="228"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="228"/>
         <source>light %1 is not a spot without %2 (0 to 90 degrees): its spot direction and exponent are unused</source>
         <translation>light %1 is not a spot without %2 (0 to 90 degrees): its spot direction and exponent are unused</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="232"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="232"/>
         <source>read as an original Movie.BYU file (the header has four integers: parts, vertices, polygons, edges): %1, fan-triangulated into %2</source>
         <translation>read as an original Movie.BYU file (the header has four integers: parts, vertices, polygons, edges): %1, fan-triangulated into %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="235"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="235"/>
         <source>read as a course Bezier surface (the header &apos;m n&apos; is followed by a line of one number, the evaluations per direction): degrees %1 x %2, evaluated on a %3 x %3 grid into %4 and %5</source>
         <translation>read as a course Bezier surface (the header &apos;m n&apos; is followed by a line of one number, the evaluations per direction): degrees %1 x %2, evaluated on a %3 x %3 grid into %4 and %5</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="240"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="240"/>
         <source>cannot write the camera: its values must be finite numbers (a course file cannot hold nan or inf)</source>
         <translation>cannot write the camera: its values must be finite numbers (a course file cannot hold nan or inf)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="243"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="243"/>
         <source>cannot write a camera in the layout &apos;auto&apos;: choose UFPE, UFRPE or key = value</source>
         <translation>cannot write a camera in the layout &apos;auto&apos;: choose UFPE, UFRPE or key = value</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="246"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="246"/>
         <source>an emission (Ke)</source>
         <translation>an emission (Ke)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="247"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="247"/>
         <source>one-sided lighting</source>
         <translation>one-sided lighting</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="248"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="248"/>
         <source>Blinn-Phong highlights</source>
         <translation>Blinn-Phong highlights</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="249"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="249"/>
         <source>a directional light (w = 0)</source>
         <translation>a directional light (w = 0)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="250"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="250"/>
         <source>an attenuated light</source>
         <translation>an attenuated light</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="251"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="251"/>
         <source>a spot light</source>
         <translation>a spot light</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="252"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="252"/>
         <source>cannot write lighting in the layout &apos;auto&apos;: choose UFPE, UFPE multi-light, UFRPE or key = value</source>
         <translation>cannot write lighting in the layout &apos;auto&apos;: choose UFPE, UFPE multi-light, UFRPE or key = value</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="255"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="255"/>
         <source>cannot write %1 light in the layout %2, which holds exactly one: choose the UFPE multi-light layout or key = value</source>
         <translation>cannot write %1 light in the layout %2, which holds exactly one: choose the UFPE multi-light layout or key = value</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="258"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="258"/>
         <source>cannot write %1 lights in the layout %2, which holds exactly one: choose the UFPE multi-light layout or key = value</source>
         <translation>cannot write %1 lights in the layout %2, which holds exactly one: choose the UFPE multi-light layout or key = value</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="261"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="261"/>
         <source>cannot write lighting without lights: the UFPE multi-light and key = value layouts hold one light or more</source>
         <translation>cannot write lighting without lights: the UFPE multi-light and key = value layouts hold one light or more</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="264"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="264"/>
         <source>cannot write %1 lights in a key = value file, which holds %2 at most (Pl to %3)</source>
         <translation>cannot write %1 lights in a key = value file, which holds %2 at most (Pl to %3)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="267"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="267"/>
         <source>cannot write %1 in the layout %2, which holds the course&apos;s point lights only: choose key = value</source>
         <translation>cannot write %1 in the layout %2, which holds the course&apos;s point lights only: choose key = value</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="270"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="270"/>
         <source>cannot write the lighting: its values must be finite numbers (a course file cannot hold nan or inf)</source>
         <translation>cannot write the lighting: its values must be finite numbers (a course file cannot hold nan or inf)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="273"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="273"/>
         <source>cannot write lighting in the layout &apos;auto&apos;</source>
         <translation>cannot write lighting in the layout &apos;auto&apos;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="275"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="275"/>
         <source>%1 argument</source>
         <translation>%1 argument</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="276"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="276"/>
         <source>%1 arguments</source>
         <translation>%1 arguments</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="277"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="277"/>
         <source>skipped %1 line with the unknown command &apos;%2&apos;</source>
         <translation>skipped %1 line with the unknown command &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="278"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="278"/>
         <source>skipped %1 lines with the unknown command &apos;%2&apos;</source>
         <translation>skipped %1 lines with the unknown command &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="279"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="279"/>
         <source>expected a &apos;png width height file&apos; command, found none</source>
         <translation>expected a &apos;png width height file&apos; command, found none</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="280"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="280"/>
         <source>expected %1 number after &apos;%2&apos; (%3), found %4</source>
         <translation>expected %1 number after &apos;%2&apos; (%3), found %4</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="281"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="281"/>
         <source>expected %1 numbers after &apos;%2&apos; (%3), found %4</source>
         <translation>expected %1 numbers after &apos;%2&apos; (%3), found %4</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="282"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="282"/>
         <source>expected a number in &apos;%1&apos; (%2), found %3</source>
         <translation>expected a number in &apos;%1&apos; (%2), found %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="283"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="283"/>
         <source>ignored %1 value after &apos;%2&apos;</source>
         <translation>ignored %1 value after &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="284"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="284"/>
         <source>ignored %1 values after &apos;%2&apos;</source>
         <translation>ignored %1 values after &apos;%2&apos;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="285"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="285"/>
         <source>expected a vertex index in &apos;%1&apos;, found %2</source>
         <translation>expected a vertex index in &apos;%1&apos;, found %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="286"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="286"/>
         <source>&apos;%1&apos; refers to vertex %2, but indices start at 1 (or count back from -1, the last)</source>
         <translation>&apos;%1&apos; refers to vertex %2, but indices start at 1 (or count back from -1, the last)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="289"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="289"/>
         <source>&apos;%2&apos; refers to vertex %3, but only %1 vertex is defined so far</source>
         <translation>&apos;%2&apos; refers to vertex %3, but only %1 vertex is defined so far</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="290"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="290"/>
         <source>&apos;%2&apos; refers to vertex %3, but only %1 vertices are defined so far</source>
         <translation>&apos;%2&apos; refers to vertex %3, but only %1 vertices are defined so far</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="292"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="292"/>
         <source>expected %1 vertex index in &apos;%2&apos; (%3), found %4</source>
         <translation>expected %1 vertex index in &apos;%2&apos; (%3), found %4</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="293"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="293"/>
         <source>expected %1 vertex indices in &apos;%2&apos; (%3), found %4</source>
         <translation>expected %1 vertex indices in &apos;%2&apos; (%3), found %4</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="294"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="294"/>
         <source>expected the number of subdivisions after &apos;%1&apos;, found the end of the line</source>
         <translation>expected the number of subdivisions after &apos;%1&apos;, found the end of the line</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="296"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="296"/>
         <source>expected the number of subdivisions (a whole number from 1 to 10) after &apos;%1&apos;, found %2</source>
         <translation>expected the number of subdivisions (a whole number from 1 to 10) after &apos;%1&apos;, found %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="299"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="299"/>
         <source>expected a &apos;png width height file&apos; command before &apos;%1&apos;</source>
         <translation>expected a &apos;png width height file&apos; command before &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="300"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="300"/>
         <source>this command would bring the file to %1 triangles, more than the limit of %2 a command file may draw</source>
         <translation>this command would bring the file to %1 triangles, more than the limit of %2 a command file may draw</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="303"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="303"/>
         <source>expected &apos;png width height file&apos;, found %1</source>
         <translation>expected &apos;png width height file&apos;, found %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="304"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="304"/>
         <source>expected the image width (a whole number from 1 to 65536), found %1</source>
         <translation>expected the image width (a whole number from 1 to 65536), found %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="306"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="306"/>
         <source>expected the image height (a whole number from 1 to 65536), found %1</source>
         <translation>expected the image height (a whole number from 1 to 65536), found %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="308"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="308"/>
         <source>expected an image file name after &apos;png width height&apos;, found %1</source>
         <translation>expected an image file name after &apos;png width height&apos;, found %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="309"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="309"/>
         <source>the image name %1 reaches into folders: it is written as %2 in the output folder</source>
         <translation>the image name %1 reaches into folders: it is written as %2 in the output folder</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="312"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="312"/>
         <source>an earlier png command (line %1) names %2 too: this image replaces it</source>
         <translation>an earlier png command (line %1) names %2 too: this image replaces it</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="314"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="314"/>
         <source>x y z w</source>
         <translation>x y z w</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="315"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="315"/>
         <source>x y z</source>
         <translation>x y z</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="316"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="316"/>
         <source>r g b</source>
         <translation>r g b</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="317"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="317"/>
         <source>s t</source>
         <translation>s t</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="318"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="318"/>
         <source>i1 i2 i3</source>
         <translation>i1 i2 i3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="319"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="319"/>
         <source>&apos;trit&apos; needs a texture: expected a &apos;texture file.png&apos; command before it</source>
         <translation>&apos;trit&apos; needs a texture: expected a &apos;texture file.png&apos; command before it</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="321"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="321"/>
         <source>subd i1 ... i16</source>
         <translation>subd i1 ... i16</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="322"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="322"/>
         <source>subd i1 ... i10</source>
         <translation>subd i1 ... i10</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="323"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="323"/>
         <source>a11 a12 ... a44, row by row</source>
         <translation>a11 a12 ... a44, row by row</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="324"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="324"/>
         <source>l r b t n f</source>
         <translation>l r b t n f</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="325"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="325"/>
         <source>&apos;%1&apos; needs l != r, b != t and n != f, found %2 %3 %4 %5 %6 %7</source>
         <translation>&apos;%1&apos; needs l != r, b != t and n != f, found %2 %3 %4 %5 %6 %7</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="326"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="326"/>
         <source>dx dy dz</source>
         <translation>dx dy dz</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="327"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="327"/>
         <source>sx sy sz</source>
         <translation>sx sy sz</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="328"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="328"/>
         <source>degrees</source>
         <translation>degrees</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="329"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="329"/>
         <source>degrees x y z</source>
         <translation>degrees x y z</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="330"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="330"/>
         <source>&apos;rotate&apos; needs an axis, found the zero vector</source>
         <translation>&apos;rotate&apos; needs an axis, found the zero vector</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="331"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="331"/>
         <source>eye center upx upy upz</source>
         <translation>eye center upx upy upz</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="332"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="332"/>
         <source>expected &apos;lookat eye center upx upy upz&apos;, found %1</source>
         <translation>expected &apos;lookat eye center upx upy upz&apos;, found %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="333"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="333"/>
         <source>expected a number in &apos;lookat&apos; (eye center upx upy upz), found %1</source>
         <translation>expected a number in &apos;lookat&apos; (eye center upx upy upz), found %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="335"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="335"/>
         <source>&apos;lookat&apos; needs an eye apart from the center and an up that is not along the line of sight</source>
         <translation>&apos;lookat&apos; needs an eye apart from the center and an up that is not along the line of sight</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="338"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="338"/>
         <source>p1 p2 p3 p4</source>
         <translation>p1 p2 p3 p4</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="339"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="339"/>
         <source>expected a file name after &apos;texture&apos;, found the end of the line</source>
         <translation>expected a file name after &apos;texture&apos;, found the end of the line</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="341"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="341"/>
         <source>lx ly lz</source>
         <translation>lx ly lz</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="342"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="342"/>
         <source>&apos;sunlight&apos; needs a direction, found the zero vector</source>
         <translation>&apos;sunlight&apos; needs a direction, found the zero vector</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="343"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="343"/>
         <source>i1</source>
         <translation>i1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="344"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="344"/>
         <source>alpha</source>
         <translation>alpha</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="346"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="346"/>
         <source>parts</source>
         <translation>parts</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="347"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="347"/>
         <source>polygons</source>
         <translation>polygons</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="348"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="348"/>
         <source>polygon indices (edges)</source>
         <translation>polygon indices (edges)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="349"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="349"/>
         <source>%1 part</source>
         <translation>%1 part</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="350"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="350"/>
         <source>%1 parts</source>
         <translation>%1 parts</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="351"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="351"/>
         <source>%1 polygon</source>
         <translation>%1 polygon</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="352"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="352"/>
         <source>%1 polygons</source>
         <translation>%1 polygons</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="353"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="353"/>
         <source>%1 polygon index</source>
         <translation>%1 polygon index</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="354"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="354"/>
         <source>%1 polygon indices</source>
         <translation>%1 polygon indices</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="355"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="355"/>
         <source>%1, %2 and %3</source>
         <translation>%1, %2 and %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="356"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="356"/>
         <source>the header declares %1 (%2: 2 a part, 3 a vertex, 1 an index), but only %3</source>
         <translation>the header declares %1 (%2: 2 a part, 3 a vertex, 1 an index), but only %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="358"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="358"/>
         <source>more numbers than a file can hold</source>
         <translation>more numbers than a file can hold</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="359"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="359"/>
         <source>%1 number follows</source>
         <translation>%1 number follows</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="360"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="360"/>
         <source>%1 numbers follow</source>
         <translation>%1 numbers follow</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="361"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="361"/>
         <source>the header declares %1 but only %2, fewer than the 3 each polygon needs</source>
         <translation>the header declares %1 but only %2, fewer than the 3 each polygon needs</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="363"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="363"/>
         <source>the first polygon of part %1</source>
         <translation>the first polygon of part %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="364"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="364"/>
         <source>the last polygon of part %1</source>
         <translation>the last polygon of part %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="365"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="365"/>
         <source>expected %1 (a positive integer), found %2</source>
         <translation>expected %1 (a positive integer), found %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="366"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="366"/>
         <source>expected the polygon range of part %1 within 1 to %2, first &lt;= last, found %3 to %4</source>
         <translation>expected the polygon range of part %1 within 1 to %2, first &lt;= last, found %3 to %4</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="369"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="369"/>
         <source>an index of polygon %1</source>
         <translation>an index of polygon %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="370"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="370"/>
         <source>expected a vertex index (a non-zero integer, negated at the end of a polygon) for polygon %1, found %2</source>
         <translation>expected a vertex index (a non-zero integer, negated at the end of a polygon) for polygon %1, found %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="373"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="373"/>
         <source>polygon %1 starts here, but the header declares only %2</source>
         <translation>polygon %1 starts here, but the header declares only %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="374"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="374"/>
         <source>polygon %1 refers to vertex 0, but indices are 1-based (1 to %2)</source>
         <translation>polygon %1 refers to vertex 0, but indices are 1-based (1 to %2)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="376"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="376"/>
         <source>polygon %1 refers to vertex %2, but the file declares only %3</source>
         <translation>polygon %1 refers to vertex %2, but the file declares only %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="377"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="377"/>
         <source>polygon %1 has %2, but a polygon needs at least 3</source>
         <translation>polygon %1 has %2, but a polygon needs at least 3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="378"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="378"/>
         <source>expected the last index of polygon %1 to be negative (it ends the polygon), found the end of the header&apos;s %2</source>
         <translation>expected the last index of polygon %1 to be negative (it ends the polygon), found the end of the header&apos;s %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="381"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="381"/>
         <source>the header declares %1, but its %2 end only %3</source>
         <translation>the header declares %1, but its %2 end only %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="382"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="382"/>
         <source>ignored %1 after the declared %2 (the header&apos;s counts may be wrong, or a second object follows)</source>
         <translation>ignored %1 after the declared %2 (the header&apos;s counts may be wrong, or a second object follows)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="386"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="386"/>
         <source>the camera&apos;s C, N and V must be finite numbers</source>
         <translation>the camera&apos;s C, N and V must be finite numbers</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="387"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="387"/>
         <source>N, the view direction, is the zero vector: it must point from the camera toward the scene</source>
         <translation>N, the view direction, is the zero vector: it must point from the camera toward the scene</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="390"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="390"/>
         <source>V, the up vector, is the zero vector: it must say which way is up</source>
         <translation>V, the up vector, is the zero vector: it must say which way is up</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="392"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="392"/>
         <source>d, the distance to the projection plane, is 0: the projection (d/hx) x/z would squash every point to the centre</source>
         <translation>d, the distance to the projection plane, is 0: the projection (d/hx) x/z would squash every point to the centre</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="395"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="395"/>
         <source>hx, the horizontal half-size of the window, is 0: the projection (d/hx) x/z divides by it</source>
         <translation>hx, the horizontal half-size of the window, is 0: the projection (d/hx) x/z divides by it</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="398"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="398"/>
         <source>hy, the vertical half-size of the window, is 0: the projection (d/hy) y/z divides by it</source>
         <translation>hy, the vertical half-size of the window, is 0: the projection (d/hy) y/z divides by it</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="401"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="401"/>
         <source>V %1 is parallel to N %2: Gram-Schmidt leaves nothing of V, so &apos;up&apos; is undefined; choose a V that is not along N</source>
         <translation>V %1 is parallel to N %2: Gram-Schmidt leaves nothing of V, so &apos;up&apos; is undefined; choose a V that is not along N</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="404"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="404"/>
         <source>hx is negative: the image is mirrored left to right</source>
         <translation>hx is negative: the image is mirrored left to right</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="405"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="405"/>
         <source>hy is negative: the image is mirrored top to bottom</source>
         <translation>hy is negative: the image is mirrored top to bottom</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="406"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="406"/>
         <source>d is negative: the image is turned upside down and mirrored</source>
         <translation>d is negative: the image is turned upside down and mirrored</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="408"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="408"/>
         <source>the near plane z = %1 and the clip planes</source>
         <translation>the near plane z = %1 and the clip planes</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="409"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="409"/>
         <source>the near plane z = %1</source>
         <translation>the near plane z = %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="410"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="410"/>
         <source>%1 lies wholly behind the near plane</source>
         <translation>%1 lies wholly behind the near plane</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="411"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="411"/>
         <source>%1 lie wholly behind the near plane</source>
         <translation>%1 lie wholly behind the near plane</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="412"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="412"/>
         <source>%1 and %2 wholly outside a clip plane</source>
         <translation>%1 and %2 wholly outside a clip plane</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="413"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="413"/>
         <source>the clip planes or the guard band 2^28 pixels around the image</source>
         <translation>the clip planes or the guard band 2^28 pixels around the image</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="414"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="414"/>
         <source>the guard band 2^28 pixels around the image</source>
         <translation>the guard band 2^28 pixels around the image</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="415"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="415"/>
         <source>%1 lie wholly outside a clip plane</source>
         <translation>%1 lie wholly outside a clip plane</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="416"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="416"/>
         <source>%1 triangle was clipped against %2</source>
         <translation>%1 triangle was clipped against %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="417"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="417"/>
         <source>%1 triangles were clipped against %2</source>
         <translation>%1 triangles were clipped against %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="418"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="418"/>
         <source>%1; %2, not drawn</source>
         <translation>%1; %2, not drawn</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="419"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="419"/>
         <source>every triangle is behind the camera (is N pointing away from the object?): the image is empty</source>
         <translation>every triangle is behind the camera (is N pointing away from the object?): the image is empty</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="422"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="422"/>
         <source>%1. The plain divide of seed 000, x/z and y/z with z &lt; 0, would draw it: the object&apos;s point reflection through the eye (turned half a turn on the screen), where the z-buffer, keeping the smallest z, keeps the side farthest from the camera</source>
         <translation>%1. The plain divide of seed 000, x/z and y/z with z &lt; 0, would draw it: the object&apos;s point reflection through the eye (turned half a turn on the screen), where the z-buffer, keeping the smallest z, keeps the side farthest from the camera</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="427"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="427"/>
         <source>%1. The plain divide of seed 000, x/z and y/z with z &lt; 0, would draw all %2 of them: the object&apos;s point reflection through the eye (turned half a turn on the screen), where the z-buffer, keeping the smallest z, keeps the side farthest from the camera</source>
         <translation>%1. The plain divide of seed 000, x/z and y/z with z &lt; 0, would draw all %2 of them: the object&apos;s point reflection through the eye (turned half a turn on the screen), where the z-buffer, keeping the smallest z, keeps the side farthest from the camera</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="432"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="432"/>
         <source>%1. The plain divide of seed 000, x/z and y/z with z &lt; 0, would draw %2 of them: the object&apos;s point reflection through the eye (turned half a turn on the screen), where the z-buffer, keeping the smallest z, keeps the side farthest from the camera</source>
         <translation>%1. The plain divide of seed 000, x/z and y/z with z &lt; 0, would draw %2 of them: the object&apos;s point reflection through the eye (turned half a turn on the screen), where the z-buffer, keeping the smallest z, keeps the side farthest from the camera</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="437"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="437"/>
         <source>plain divide: %1 triangle reaches from in front of the eye to at or behind it (w of different signs, or 0): divided by w without clipping, it wraps through infinity and is drawn wrong (clipping at the near plane draws its front part)</source>
         <translation>plain divide: %1 triangle reaches from in front of the eye to at or behind it (w of different signs, or 0): divided by w without clipping, it wraps through infinity and is drawn wrong (clipping at the near plane draws its front part)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="442"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="442"/>
         <source>plain divide: %1 triangles reach from in front of the eye to at or behind it (w of different signs, or 0): divided by w without clipping, it wraps through infinity and is drawn wrong (clipping at the near plane draws its front part)</source>
         <translation>plain divide: %1 triangles reach from in front of the eye to at or behind it (w of different signs, or 0): divided by w without clipping, it wraps through infinity and is drawn wrong (clipping at the near plane draws its front part)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="447"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="447"/>
         <source>%1 vertices project more than 2^28 pixels from the image and were pulled in to that distance: triangles through them may be distorted on screen</source>
         <translation>%1 vertices project more than 2^28 pixels from the image and were pulled in to that distance: triangles through them may be distorted on screen</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="450"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="450"/>
         <source>%1 triangles project to infinite or undefined coordinates and were not drawn</source>
         <translation>%1 triangles project to infinite or undefined coordinates and were not drawn</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="453"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="453"/>
         <source>%1 triangle faces away from the camera on a closed surface seen from outside: hidden, so not drawn (back-face culling)</source>
         <translation>%1 triangle faces away from the camera on a closed surface seen from outside: hidden, so not drawn (back-face culling)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="456"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="456"/>
         <source>%1 triangles face away from the camera on a closed surface seen from outside: hidden, so not drawn (back-face culling)</source>
         <translation>%1 triangles face away from the camera on a closed surface seen from outside: hidden, so not drawn (back-face culling)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="459"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="459"/>
         <source>%1 triangle is clockwise on screen and culled</source>
         <translation>%1 triangle is clockwise on screen and culled</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="460"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="460"/>
         <source>%1 triangles are clockwise on screen and culled</source>
         <translation>%1 triangles are clockwise on screen and culled</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="461"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="461"/>
         <source>%1 triangle reaches from in front of the eye to at or behind it (w of different signs): only the part with w &gt;= %2 is drawn</source>
         <translation>%1 triangle reaches from in front of the eye to at or behind it (w of different signs): only the part with w &gt;= %2 is drawn</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="464"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="464"/>
         <source>%1 triangles reach from in front of the eye to at or behind it (w of different signs): only the part with w &gt;= %2 is drawn</source>
         <translation>%1 triangles reach from in front of the eye to at or behind it (w of different signs): only the part with w &gt;= %2 is drawn</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="467"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="467"/>
         <source>plain divide: %1 triangle lies wholly behind the eye (w &lt; 0), drawn without clipping as the point reflection through the eye</source>
         <translation>plain divide: %1 triangle lies wholly behind the eye (w &lt; 0), drawn without clipping as the point reflection through the eye</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="470"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="470"/>
         <source>plain divide: %1 triangles lie wholly behind the eye (w &lt; 0), drawn without clipping as the point reflection through the eye</source>
         <translation>plain divide: %1 triangles lie wholly behind the eye (w &lt; 0), drawn without clipping as the point reflection through the eye</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="474"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="474"/>
         <source>no scene to render</source>
         <translation>no scene to render</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="475"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="475"/>
         <source>the image size %1x%2 is empty</source>
         <translation>the image size %1x%2 is empty</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="476"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="476"/>
         <source>no triangle covers a pixel: all %1 triangles in front of the camera project outside the image (check N, d, hx and hy)</source>
         <translation>no triangle covers a pixel: all %1 triangles in front of the camera project outside the image (check N, d, hx and hy)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="479"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="479"/>
         <source>%1 triangles have zero area and no normal</source>
         <translation>%1 triangles have zero area and no normal</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="481"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="481"/>
         <source>no frame to step through</source>
         <translation>no frame to step through</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="482"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="482"/>
         <source>stepping keeps at most %1 fragments, and this frame has %2: the final image and the views still work</source>
         <translation>stepping keeps at most %1 fragments, and this frame has %2: the final image and the views still work</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="485"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="485"/>
         <source>cancelled</source>
         <translation>cancelled</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="486"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="486"/>
         <source>internal error: the rows hold %1 pixels and the depth test saw %2 fragments</source>
         <translation>internal error: the rows hold %1 pixels and the depth test saw %2 fragments</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="490"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="490"/>
         <source>light %1 is %2 above triangle %3 of %4, nearer than float can resolve points there (%5): the pixels under it may be lit from the wrong side</source>
         <translation>light %1 is %2 above triangle %3 of %4, nearer than float can resolve points there (%5): the pixels under it may be lit from the wrong side</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="494"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="494"/>
         <source>measurement cancelled</source>
         <translation>measurement cancelled</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="495"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="495"/>
         <source>supersampling must be 1 to 16 samples per axis</source>
         <translation>supersampling must be 1 to 16 samples per axis</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="497"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="497"/>
         <source>the scene has no light to move</source>
         <translation>the scene has no light to move</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="498"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="498"/>
         <source>no triangle is in front of the camera</source>
         <translation>no triangle is in front of the camera</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="500"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="500"/>
         <source>the exact reference handles course scenes (the course camera, view z as depth, the course&apos;s Phong lighting with the material&apos;s colour); %1</source>
         <translation>the exact reference handles course scenes (the course camera, view z as depth, the course&apos;s Phong lighting with the material&apos;s colour); %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="503"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="503"/>
         <source>this scene has no course camera</source>
         <translation>this scene has no course camera</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="504"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="504"/>
         <source>this scene&apos;s depth is NDC z</source>
         <translation>this scene&apos;s depth is NDC z</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="505"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="505"/>
         <source>%1 has its own projection matrix</source>
         <translation>%1 has its own projection matrix</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="506"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="506"/>
         <source>%1 is not lit by the course&apos;s Phong model</source>
         <translation>%1 is not lit by the course&apos;s Phong model</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="507"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="507"/>
         <source>%1 takes its colour from its vertices or a texture</source>
         <translation>%1 takes its colour from its vertices or a texture</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="508"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="508"/>
         <source>%1 is lit with flat normals</source>
         <translation>%1 is lit with flat normals</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="509"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="509"/>
         <source>samples per axis must be 1 to 16</source>
         <translation>samples per axis must be 1 to 16</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="511"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="511"/>
         <source>(%1, %2, %3, %4)</source>
         <translation>(%1, %2, %3, %4)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="512"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="512"/>
         <source>the ambient term multiplied by the object colour: Ia*ka*Od instead of Ia*ka</source>
         <translation>the ambient term multiplied by the object colour: Ia*ka*Od instead of Ia*ka</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="515"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="515"/>
         <source>the normal not turned toward the viewer where V.N &lt; 0</source>
         <translation>the normal not turned toward the viewer where V.N &lt; 0</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="516"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="516"/>
         <source>specular added where R.V &lt; 0 (no check before (R.V)^n)</source>
         <translation>specular added where R.V &lt; 0 (no check before (R.V)^n)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="517"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="517"/>
         <source>diffuse and specular computed where N.L &lt; 0 (the light is behind the surface)</source>
         <translation>diffuse and specular computed where N.L &lt; 0 (the light is behind the surface)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="520"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="520"/>
         <source>the interpolated normal not normalised</source>
         <translation>the interpolated normal not normalised</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="521"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="521"/>
         <source>%1 shading where another model was asked</source>
         <translation>%1 shading where another model was asked</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="522"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="522"/>
         <source>%1 shading where %2 was asked</source>
         <translation>%1 shading where %2 was asked</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="523"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="523"/>
         <source>the image mirrored left-right (x runs the other way)</source>
         <translation>the image mirrored left-right (x runs the other way)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="524"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="524"/>
         <source>the image upside down (row 0 at the bottom: y not flipped)</source>
         <translation>the image upside down (row 0 at the bottom: y not flipped)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="525"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="525"/>
         <source>the image shifted by one pixel: (%1, %2)</source>
         <translation>the image shifted by one pixel: (%1, %2)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="526"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="526"/>
         <source>pixels sampled at their centres (x + 0.5) instead of their corners</source>
         <translation>pixels sampled at their centres (x + 0.5) instead of their corners</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="528"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="528"/>
         <source>pixels sampled at their corners instead of their centres (x + 0.5)</source>
         <translation>pixels sampled at their corners instead of their centres (x + 0.5)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="530"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="530"/>
         <source>vertex positions rounded instead of truncated to whole pixels</source>
         <translation>vertex positions rounded instead of truncated to whole pixels</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="531"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="531"/>
         <source>vertex positions truncated instead of rounded to whole pixels</source>
         <translation>vertex positions truncated instead of rounded to whole pixels</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="532"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="532"/>
         <source>vertex positions rounded instead of truncated to the sub-pixel grid</source>
         <translation>vertex positions rounded instead of truncated to the sub-pixel grid</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="534"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="534"/>
         <source>vertex positions truncated instead of rounded to the sub-pixel grid</source>
         <translation>vertex positions truncated instead of rounded to the sub-pixel grid</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="536"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="536"/>
         <source>the top-left fill rule where edges are inclusive</source>
         <translation>the top-left fill rule where edges are inclusive</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="537"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="537"/>
         <source>inclusive edges where the fill rule is top-left</source>
         <translation>inclusive edges where the fill rule is top-left</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="538"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="538"/>
         <source>colour bytes rounded instead of truncated (off by one)</source>
         <translation>colour bytes rounded instead of truncated (off by one)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="539"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="539"/>
         <source>colour bytes truncated instead of rounded (off by one)</source>
         <translation>colour bytes truncated instead of rounded (off by one)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="540"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="540"/>
         <source>colours above 255 wrap around instead of clamping</source>
         <translation>colours above 255 wrap around instead of clamping</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="541"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="541"/>
         <source>the painter&apos;s order (far to near, no depth test) instead of the z-buffer</source>
         <translation>the painter&apos;s order (far to near, no depth test) instead of the z-buffer</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="543"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="543"/>
         <source>z &lt; stored instead of z &lt;= stored in the depth test (ties keep the earlier triangle)</source>
         <translation>z &lt; stored instead of z &lt;= stored in the depth test (ties keep the earlier triangle)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="546"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="546"/>
         <source>z &lt;= stored instead of z &lt; stored in the depth test (ties go to the later triangle)</source>
         <translation>z &lt;= stored instead of z &lt; stored in the depth test (ties go to the later triangle)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="549"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="549"/>
         <source>a different background: %1 where the scene&apos;s is %2</source>
         <translation>a different background: %1 where the scene&apos;s is %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="550"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="550"/>
         <source>alpha %1 on covered pixels instead of 255</source>
         <translation>alpha %1 on covered pixels instead of 255</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="551"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="551"/>
         <source>our pixels lit again with that formula (the same triangles, barycentrics, P&apos;, N, lights and material) give theirs</source>
         <translation>our pixels lit again with that formula (the same triangles, barycentrics, P&apos;, N, lights and material) give theirs</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="554"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="554"/>
         <source>the scene rendered again in that shading model gives their pixels</source>
         <translation>the scene rendered again in that shading model gives their pixels</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="556"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="556"/>
         <source>our image moved that way gives their pixels</source>
         <translation>our image moved that way gives their pixels</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="557"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="557"/>
         <source>the scene rendered again with that rule gives their pixels</source>
         <translation>the scene rendered again with that rule gives their pixels</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="558"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="558"/>
         <source>our float colours made bytes that way give their pixels</source>
         <translation>our float colours made bytes that way give their pixels</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="559"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="559"/>
         <source>the scene painted far to near without a depth test gives their pixels</source>
         <translation>the scene painted far to near without a depth test gives their pixels</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="561"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="561"/>
         <source>their pixels where no triangle of ours is take that colour</source>
         <translation>their pixels where no triangle of ours is take that colour</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="562"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="562"/>
         <source>their pixels where a triangle of ours is take that alpha</source>
         <translation>their pixels where a triangle of ours is take that alpha</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="563"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="563"/>
         <source>seed 000&apos;s ambient term is Ia*ka, without the object colour Od</source>
         <translation>seed 000&apos;s ambient term is Ia*ka, without the object colour Od</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="564"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="564"/>
         <source>seed 000: if V.N &lt; 0, N := -N before the lighting</source>
         <translation>seed 000: if V.N &lt; 0, N := -N before the lighting</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="565"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="565"/>
         <source>seed 000: if R.V &lt; 0, no specular term</source>
         <translation>seed 000: if R.V &lt; 0, no specular term</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="566"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="566"/>
         <source>seed 000: if N.L &lt; 0, neither diffuse nor specular</source>
         <translation>seed 000: if N.L &lt; 0, neither diffuse nor specular</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="567"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="567"/>
         <source>the interpolated N is shorter than 1: normalise it before N.L and R</source>
         <translation>the interpolated N is shorter than 1: normalise it before N.L and R</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="569"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="569"/>
         <source>check where the lighting is evaluated: per pixel, per vertex or per triangle</source>
         <translation>check where the lighting is evaluated: per pixel, per vertex or per triangle</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="572"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="572"/>
         <source>check the sign of x in the projection or the screen mapping</source>
         <translation>check the sign of x in the projection or the screen mapping</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="573"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="573"/>
         <source>screen row 0 is the top: y = (1 - y_ndc) * height / 2</source>
         <translation>screen row 0 is the top: y = (1 - y_ndc) * height / 2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="574"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="574"/>
         <source>check the screen mapping&apos;s offsets and the first pixel of each span</source>
         <translation>check the screen mapping&apos;s offsets and the first pixel of each span</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="576"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="576"/>
         <source>where a pixel is sampled decides which pixels an edge covers (--rules)</source>
         <translation>where a pixel is sampled decides which pixels an edge covers (--rules)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="578"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="578"/>
         <source>check how screen coordinates become whole pixels ((int) truncates)</source>
         <translation>check how screen coordinates become whole pixels ((int) truncates)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="580"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="580"/>
         <source>the pixels exactly on an edge: which triangle (or both) covers them</source>
         <translation>the pixels exactly on an edge: which triangle (or both) covers them</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="582"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="582"/>
         <source>check how the colour becomes a byte: (int) truncates, + 0.5 rounds</source>
         <translation>check how the colour becomes a byte: (int) truncates, + 0.5 rounds</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="584"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="584"/>
         <source>clamp each channel to 255 before writing it as a byte</source>
         <translation>clamp each channel to 255 before writing it as a byte</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="585"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="585"/>
         <source>keep a depth buffer and write a pixel only when the fragment is nearer</source>
         <translation>keep a depth buffer and write a pixel only when the fragment is nearer</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="587"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="587"/>
         <source>the comparison of the depth test: &lt; keeps the first of two equal depths</source>
         <translation>the comparison of the depth test: &lt; keeps the first of two equal depths</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="589"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="589"/>
         <source>the colour (and alpha) of the pixels no triangle covers</source>
         <translation>the colour (and alpha) of the pixels no triangle covers</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="590"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="590"/>
         <source>the alpha written with each shaded pixel</source>
         <translation>the alpha written with each shaded pixel</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="591"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="591"/>
         <source>%1; no pixel that matches now would change</source>
         <translation>%1; no pixel that matches now would change</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="592"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="592"/>
         <source>%2; %1 pixel that matches now would differ</source>
         <translation>%2; %1 pixel that matches now would differ</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="593"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="593"/>
         <source>%2; %1 pixels that match now would differ</source>
         <translation>%2; %1 pixels that match now would differ</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="595"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="595"/>
         <source>cannot read the texture %1: %2</source>
         <translation>cannot read the texture %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="597"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="597"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="602"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
         <source>cannot open: %1</source>
         <translation>cannot open: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="603"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="603"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>the file has %1 MiB, more than the %2 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="605"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>the file has more than the %1 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="607"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
         <source>not enough memory to read this file</source>
         <translation>not enough memory to read this file</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="608"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="611"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
         <source>the object is not edited, so not saved</source>
         <translation>the object is not edited, so not saved</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="612"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
         <source>cannot write into the built-in resources</source>
         <translation>cannot write into the built-in resources</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="613"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>the camera was not saved, as it would not load again: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="614"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>not saved: the text written does not read back as the same values</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="616"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
         <source>cannot write the file: %1</source>
         <translation>cannot write the file: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="617"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>only %1 of %2 bytes could be written (is the disk full?)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="618"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>cannot write the file (it is left as it was): %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="620"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[rows, fragments], two whole numbers</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="621"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[width, height], whole numbers from %1 to %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="622"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
         <source>a list</source>
         <translation>a list</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="623"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
         <source>a list of %1 numbers</source>
         <translation>a list of %1 numbers</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="624"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
         <source>a list of 1 to 8 lights</source>
         <translation>a list of 1 to 8 lights</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="625"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
         <source>a list of dock names</source>
         <translation>a list of dock names</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="626"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
         <source>a number</source>
         <translation>a number</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="627"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>a positive number or &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="628"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>a positive number or &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="629"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
         <source>a whole number from %1</source>
         <translation>a whole number from %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="630"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
         <source>an object</source>
         <translation>an object</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="631"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>expected %1 for &quot;%2&quot;, found %3</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="632"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="634"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
         <source>not a lesson file: %1</source>
         <translation>not a lesson file: %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="635"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
         <source>nothing</source>
         <translation>nothing</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="636"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="637"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
         <source>one of %1</source>
         <translation>one of %1</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="638"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
         <source>text in quotes</source>
         <translation>text in quotes</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="639"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
         <source>the text &apos;%1&apos;</source>
         <translation>the text &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="640"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
         <source>true or false</source>
         <translation>true or false</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="641"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>unknown key &quot;%1&quot; ignored (known here: %2)</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="676"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="676"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="682"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="682"/>
         <source>%1: warning: %2</source>
         <translation>%1: warning: %2</translation>
     </message>
     <message>
-        <location filename="../app/pipeline_messages.cpp" line="683"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="683"/>
         <source>%1: note: %2</source>
         <translation>%1: note: %2</translation>
     </message>
@@ -2203,37 +2203,37 @@
 <context>
     <name>StabilityPlot</name>
     <message>
-        <location filename="../app/stability_plot.cpp" line="156"/>
+        <location filename="../app/plots/stability_plot.cpp" line="156"/>
         <source>every point: error against time</source>
         <translation>every point: error against time</translation>
     </message>
     <message>
-        <location filename="../app/stability_plot.cpp" line="157"/>
+        <location filename="../app/plots/stability_plot.cpp" line="157"/>
         <source>time per frame (ms, log scale)</source>
         <translation>time per frame (ms, log scale)</translation>
     </message>
     <message>
-        <location filename="../app/stability_plot.cpp" line="172"/>
+        <location filename="../app/plots/stability_plot.cpp" line="172"/>
         <source>float</source>
         <translation>float</translation>
     </message>
     <message>
-        <location filename="../app/stability_plot.cpp" line="173"/>
+        <location filename="../app/plots/stability_plot.cpp" line="173"/>
         <source>double</source>
         <translation>double</translation>
     </message>
     <message>
-        <location filename="../app/stability_plot.cpp" line="190"/>
+        <location filename="../app/plots/stability_plot.cpp" line="190"/>
         <source>float against double, largest difference</source>
         <translation>float against double, largest difference</translation>
     </message>
     <message>
-        <location filename="../app/stability_plot.cpp" line="194"/>
+        <location filename="../app/plots/stability_plot.cpp" line="194"/>
         <source>y: colour error in byte steps (log; RMSE against the exact reference, or the largest float-double difference); x: stiffer to the right; a cross: the scene could not be rendered</source>
         <translation>y: colour error in byte steps (log; RMSE against the exact reference, or the largest float-double difference); x: stiffer to the right; a cross: the scene could not be rendered</translation>
     </message>
     <message>
-        <location filename="../app/stability_plot.cpp" line="268"/>
+        <location filename="../app/plots/stability_plot.cpp" line="268"/>
         <source>%1 (%2, log scale)</source>
         <translation>%1 (%2, log scale)</translation>
     </message>
@@ -2241,182 +2241,182 @@
 <context>
     <name>rasterlab::AccuracyPanel</name>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="85"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="85"/>
         <source>The scene, camera and lights moved %1 to %2 units from the origin</source>
         <translation>The scene, camera and lights moved %1 to %2 units from the origin</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="90"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="90"/>
         <source>Everything scaled by %1 to %2 about the origin</source>
         <translation>Everything scaled by %1 to %2 about the origin</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="94"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="94"/>
         <source>Everything scaled by %1 to %2 about the eye: the object nearer</source>
         <translation>Everything scaled by %1 to %2 about the eye: the object nearer</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="97"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="97"/>
         <source>Each triangle cut around a sliver of %1 to %2 degrees</source>
         <translation>Each triangle cut around a sliver of %1 to %2 degrees</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="100"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="100"/>
         <source>Every material&apos;s shininess n set to %1 to %2</source>
         <translation>Every material&apos;s shininess n set to %1 to %2</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="103"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="103"/>
         <source>The camera&apos;s V %1 to %2 degrees from N</source>
         <translation>The camera&apos;s V %1 to %2 degrees from N</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="106"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="106"/>
         <source>The first light %1 to %2 times the scene&apos;s size above its surface</source>
         <translation>The first light %1 to %2 times the scene&apos;s size above its surface</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="152"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="152"/>
         <source>float and double differ by up to %1 byte steps (at %2); largest RMSE, float / double: %3.</source>
         <translation>float and double differ by up to %1 byte steps (at %2); largest RMSE, float / double: %3.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="159"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="159"/>
         <source>%1 of %2 points not rendered (the first at %3): %4</source>
         <translation>%1 of %2 points not rendered (the first at %3): %4</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="177"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="177"/>
         <source>&amp;Measure</source>
         <translation>&amp;Measure</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="180"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="180"/>
         <source>Render the scene in every mode and compare each with an exact ray-cast reference</source>
         <translation>Render the scene in every mode and compare each with an exact ray-cast reference</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="182"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="182"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="187"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="187"/>
         <source>1 sample a pixel</source>
         <translation>1 sample a pixel</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="188"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="188"/>
         <source>also 2x2 samples</source>
         <translation>also 2x2 samples</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="189"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="189"/>
         <source>also 4x4 samples</source>
         <translation>also 4x4 samples</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="196"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="196"/>
         <source>&amp;Stability sweep</source>
         <translation>&amp;Stability sweep</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="199"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="199"/>
         <source>Make the scene stiffer step by step and measure float and double under the course and gpu rules against the exact reference at each step</source>
         <translation>Make the scene stiffer step by step and measure float and double under the course and gpu rules against the exact reference at each step</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="203"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="203"/>
         <source>every axis</source>
         <translation>every axis</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="208"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="208"/>
         <source>The axes of stiffness to sweep</source>
         <translation>The axes of stiffness to sweep</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="214"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="214"/>
         <source>%v of %m points</source>
         <translation>%v of %m points</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="218"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="218"/>
         <source>Measures the error of each mode against an exact reference.</source>
         <translation>Measures the error of each mode against an exact reference.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="225"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="225"/>
         <source>Modes</source>
         <translation>Modes</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="226"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="226"/>
         <source>Stability</source>
         <translation>Stability</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="245"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="245"/>
         <source>Mode</source>
         <translation>Mode</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="245"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="245"/>
         <source>Rules</source>
         <translation>Rules</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="245"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="245"/>
         <source>Precision</source>
         <translation>Precision</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="245"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="245"/>
         <source>Samples</source>
         <translation>Samples</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="246"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="246"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="246"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="246"/>
         <source>RMSE</source>
         <translation>RMSE</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="246"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="246"/>
         <source>Max error</source>
         <translation>Max error</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="246"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="246"/>
         <source>Within 1/255</source>
         <translation>Within 1/255</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="247"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="247"/>
         <source>Errors in byte steps (1/255) over the pixels both images cover</source>
         <translation>Errors in byte steps (1/255) over the pixels both images cover</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="271"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="271"/>
         <source>Click a pixel to compare the mode with the reference there</source>
         <translation>Click a pixel to compare the mode with the reference there</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="300"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="300"/>
         <source>The sweep makes the scene stiffer along each axis: where a curve leaves the floor, the arithmetic loses accuracy.</source>
         <translation>The sweep makes the scene stiffer along each axis: where a curve leaves the floor, the arithmetic loses accuracy.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="334"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="334"/>
         <source>The scene changed: measure again.</source>
         <translation>The scene changed: measure again.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/accuracy_panel.cpp" line="356"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="356"/>
         <source>Measuring %n mode(s) against the exact reference...</source>
         <translation>
             <numerusform>Measuring %n mode against the exact reference...</numerusform>
@@ -2424,62 +2424,62 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="379"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="379"/>
         <source>Cancelled.</source>
         <translation>Cancelled.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="380"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="380"/>
         <source>The measurement failed: %1</source>
         <translation>The measurement failed: %1</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="386"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="386"/>
         <source>%1 at %2x%3: %4 modes; the exact reference cast %5 rays in %6 ms.</source>
         <translation>%1 at %2x%3: %4 modes; the exact reference cast %5 rays in %6 ms.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="413"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="413"/>
         <source>Error against run time: %1, %2x%3</source>
         <translation>Error against run time: %1, %2x%3</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="457"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="457"/>
         <source>Sweeping %1 along %2...</source>
         <translation>Sweeping %1 along %2...</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="482"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="482"/>
         <source>Sweep cancelled.</source>
         <translation>Sweep cancelled.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="483"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="483"/>
         <source>The sweep failed: %1</source>
         <translation>The sweep failed: %1</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="490"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="490"/>
         <source>Error against stiffness: %1, %2x%3, %4 triangles</source>
         <translation>Error against stiffness: %1, %2x%3, %4 triangles</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="496"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="496"/>
         <source>%1 at %2x%3: %4 points in %5 s.</source>
         <translation>%1 at %2x%3: %4 points in %5 s.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="552"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="552"/>
         <source>%1 (%2): coverage differs on %3 pixels (%4); the largest error, %5 byte steps, is at (%6, %7). Click the map to compare a pixel.</source>
         <translation>%1 (%2): coverage differs on %3 pixels (%4); the largest error, %5 byte steps, is at (%6, %7). Click the map to compare a pixel.</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="571"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="571"/>
         <source>Pixel (%1, %2), %3: mode %4, reference %5, difference %6 (byte steps).</source>
         <translation>Pixel (%1, %2), %3: mode %4, reference %5, difference %6 (byte steps).</translation>
     </message>
     <message>
-        <location filename="../app/accuracy_panel.cpp" line="577"/>
+        <location filename="../app/window/accuracy_panel.cpp" line="577"/>
         <source>Coverage differs: %1 of %2 samples covered by the mode, %3 by the reference.</source>
         <translation>Coverage differs: %1 of %2 samples covered by the mode, %3 by the reference.</translation>
     </message>
@@ -2487,88 +2487,88 @@
 <context>
     <name>rasterlab::AnimationPanel</name>
     <message>
-        <location filename="../app/animation_panel.cpp" line="30"/>
+        <location filename="../app/window/animation_panel.cpp" line="30"/>
         <source>Animate: each draw moved by M(t)</source>
         <translation>Animate: each draw moved by M(t)</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="35"/>
-        <location filename="../app/animation_panel.cpp" line="210"/>
+        <location filename="../app/window/animation_panel.cpp" line="35"/>
+        <location filename="../app/window/animation_panel.cpp" line="210"/>
         <source>Play</source>
         <translation>Play</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="40"/>
+        <location filename="../app/window/animation_panel.cpp" line="40"/>
         <source>Play or pause the animation; paused, every stage view inspects the frame shown</source>
         <translation>Play or pause the animation; paused, every stage view inspects the frame shown</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="61"/>
+        <location filename="../app/window/animation_panel.cpp" line="61"/>
         <source>Frames:</source>
         <translation>Frames:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="64"/>
+        <location filename="../app/window/animation_panel.cpp" line="64"/>
         <source>Frames a second:</source>
         <translation>Frames a second:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="67"/>
+        <location filename="../app/window/animation_panel.cpp" line="67"/>
         <source> °/s</source>
         <translation> °/s</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="68"/>
+        <location filename="../app/window/animation_panel.cpp" line="68"/>
         <source>Turn:</source>
         <translation>Turn:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="69"/>
+        <location filename="../app/window/animation_panel.cpp" line="69"/>
         <source>Turn about the camera&apos;s up (a turntable)</source>
         <translation>Turn about the camera&apos;s up (a turntable)</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="97"/>
+        <location filename="../app/window/animation_panel.cpp" line="97"/>
         <source>Axis:</source>
         <translation>Axis:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="99"/>
+        <location filename="../app/window/animation_panel.cpp" line="99"/>
         <source>Moves (units/s):</source>
         <translation>Moves (units/s):</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="100"/>
+        <location filename="../app/window/animation_panel.cpp" line="100"/>
         <source>Scale:</source>
         <translation>Scale:</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="111"/>
+        <location filename="../app/window/animation_panel.cpp" line="111"/>
         <source>&lt;i&gt;The animation belongs to this session: course files have no such field, and saving the camera or lighting does not write it.&lt;/i&gt;</source>
         <translation>&lt;i&gt;The animation belongs to this session: course files have no such field, and saving the camera or lighting does not write it.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="210"/>
+        <location filename="../app/window/animation_panel.cpp" line="210"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="222"/>
+        <location filename="../app/window/animation_panel.cpp" line="222"/>
         <source>Frame %1 of %2, t = %3 / %4 = %5 s</source>
         <translation>Frame %1 of %2, t = %3 / %4 = %5 s</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="241"/>
+        <location filename="../app/window/animation_panel.cpp" line="241"/>
         <source>&lt;p&gt;M(t) = T(v t) · T(c) · R(axis, ω t) · S · T(−c): not applied (the animation is off, so M is the identity).&lt;/p&gt;</source>
         <translation>&lt;p&gt;M(t) = T(v t) · T(c) · R(axis, ω t) · S · T(−c): not applied (the animation is off, so M is the identity).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="257"/>
+        <location filename="../app/window/animation_panel.cpp" line="257"/>
         <source>&lt;p&gt;M(t) = T(v t) · T(c) · R(axis, ω t) · S · T(−c), at t = %1 s:&lt;br&gt;c = %2 (the centre of the bounding box), axis = %3,&lt;br&gt;ω t = %4 °/s · %1 s = %5°, v t = %6, S = diag%7&lt;/p&gt;</source>
         <translation>&lt;p&gt;M(t) = T(v t) · T(c) · R(axis, ω t) · S · T(−c), at t = %1 s:&lt;br&gt;c = %2 (the centre of the bounding box), axis = %3,&lt;br&gt;ω t = %4 °/s · %1 s = %5°, v t = %6, S = diag%7&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/animation_panel.cpp" line="265"/>
+        <location filename="../app/window/animation_panel.cpp" line="265"/>
         <source>&lt;p&gt;Normals are moved by the inverse transpose of M (stage 3).&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normals are moved by the inverse transpose of M (stage 3).&lt;/p&gt;</translation>
     </message>
@@ -2710,22 +2710,22 @@
         <translation>Turn the 3D drawing back to where it started</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="390"/>
+        <location filename="../views/camera_basis_view.cpp" line="420"/>
         <source>window (d = %1)</source>
         <translation>window (d = %1)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="394"/>
+        <location filename="../views/camera_basis_view.cpp" line="424"/>
         <source>frustum</source>
         <translation>frustum</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="407"/>
+        <location filename="../views/camera_basis_view.cpp" line="439"/>
         <source>N given, |N| = %1</source>
         <translation>N given, |N| = %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="410"/>
+        <location filename="../views/camera_basis_view.cpp" line="442"/>
         <source>V given, |V| = %1</source>
         <translation>V given, |V| = %1</translation>
     </message>
@@ -2733,132 +2733,132 @@
 <context>
     <name>rasterlab::CameraBasisView</name>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="472"/>
+        <location filename="../views/camera_basis_view.cpp" line="510"/>
         <source>Previous step</source>
         <translation>Previous step</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="476"/>
+        <location filename="../views/camera_basis_view.cpp" line="514"/>
         <source>Next step</source>
         <translation>Next step</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="587"/>
+        <location filename="../views/camera_basis_view.cpp" line="625"/>
         <source>The camera was rejected: %1</source>
         <translation>The camera was rejected: %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="590"/>
+        <location filename="../views/camera_basis_view.cpp" line="628"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="592"/>
+        <location filename="../views/camera_basis_view.cpp" line="630"/>
         <source>This stage is skipped: %1.</source>
         <translation>This stage is skipped: %1.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="594"/>
+        <location filename="../views/camera_basis_view.cpp" line="632"/>
         <source>the frame has no camera basis</source>
         <translation>the frame has no camera basis</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="601"/>
+        <location filename="../views/camera_basis_view.cpp" line="639"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; From the course camera (C, N, V) Gram-Schmidt makes the orthonormal basis U, V, N of view space. A scene whose draws carry their own model/view matrices (HW2 command files) has no course camera: this stage does nothing for it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; From the course camera (C, N, V) Gram-Schmidt makes the orthonormal basis U, V, N of view space. A scene whose draws carry their own model/view matrices (HW2 command files) has no course camera: this stage does nothing for it.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="614"/>
+        <location filename="../views/camera_basis_view.cpp" line="652"/>
         <source>N and V are nearly parallel: |V − (V·N) N| / |V| = %1, below %2. The basis is ill-conditioned: a tiny change of N or V turns U and V a lot. Choose a V further from N.</source>
         <translation>N and V are nearly parallel: |V − (V·N) N| / |V| = %1, below %2. The basis is ill-conditioned: a tiny change of N or V turns U and V a lot. Choose a V further from N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="619"/>
+        <location filename="../views/camera_basis_view.cpp" line="657"/>
         <source>1. N := N / |N| = %1 / %2 = %3</source>
         <translation>1. N := N / |N| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="621"/>
+        <location filename="../views/camera_basis_view.cpp" line="659"/>
         <source>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</source>
         <translation>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="623"/>
+        <location filename="../views/camera_basis_view.cpp" line="661"/>
         <source>3. V := V / |V| = %1 / %2 = %3</source>
         <translation>3. V := V / |V| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="625"/>
+        <location filename="../views/camera_basis_view.cpp" line="663"/>
         <source>4. U := N × V = %1 × %2 = %3</source>
         <translation>4. U := N × V = %1 × %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="627"/>
+        <location filename="../views/camera_basis_view.cpp" line="665"/>
         <source>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; largest %7</source>
         <translation>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; largest %7</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="634"/>
+        <location filename="../views/camera_basis_view.cpp" line="672"/>
         <source>N and V %1 degrees apart (under %2 degrees from the line of N, the residuals pass a float&apos;s precision)</source>
         <translation>N and V %1 degrees apart (under %2 degrees from the line of N, the residuals pass a float&apos;s precision)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="656"/>
+        <location filename="../views/camera_basis_view.cpp" line="694"/>
         <source>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): rows U, V, N, then (0 0 0 1); the last column is −U·C, −V·C, −N·C.</source>
         <translation>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): rows U, V, N, then (0 0 0 1); the last column is −U·C, −V·C, −N·C.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="668"/>
+        <location filename="../views/camera_basis_view.cpp" line="706"/>
         <source>&lt;p&gt;Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="671"/>
+        <location filename="../views/camera_basis_view.cpp" line="709"/>
         <source>, in front of the camera (z &gt; 0)</source>
         <translation>, in front of the camera (z &gt; 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="672"/>
+        <location filename="../views/camera_basis_view.cpp" line="710"/>
         <source>, behind the camera (z ≤ 0)</source>
         <translation>, behind the camera (z ≤ 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="675"/>
+        <location filename="../views/camera_basis_view.cpp" line="713"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; Gram-Schmidt keeps the direction of N (where the camera looks), removes from V its part along N so that up is perpendicular to the view direction, and completes the frame with U = N × V, the image&apos;s right. viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; Gram-Schmidt keeps the direction of N (where the camera looks), removes from V its part along N so that up is perpendicular to the view direction, and completes the frame with U = N × V, the image&apos;s right. viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="707"/>
+        <location filename="../views/camera_basis_view.cpp" line="745"/>
         <source>Step %1 of 4</source>
         <translation>Step %1 of 4</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="721"/>
+        <location filename="../views/camera_basis_view.cpp" line="759"/>
         <source>Step forward to normalise N.</source>
         <translation>Step forward to normalise N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="722"/>
+        <location filename="../views/camera_basis_view.cpp" line="760"/>
         <source>Step forward to remove from V its part along N.</source>
         <translation>Step forward to remove from V its part along N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="723"/>
+        <location filename="../views/camera_basis_view.cpp" line="761"/>
         <source>Step forward to normalise V.</source>
         <translation>Step forward to normalise V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="724"/>
+        <location filename="../views/camera_basis_view.cpp" line="762"/>
         <source>Step forward to make U = N × V.</source>
         <translation>Step forward to make U = N × V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="725"/>
+        <location filename="../views/camera_basis_view.cpp" line="763"/>
         <source>The basis is complete; the frustum is drawn with it.</source>
         <translation>The basis is complete; the frustum is drawn with it.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="738"/>
+        <location filename="../views/camera_basis_view.cpp" line="776"/>
         <source>&lt;b&gt;Orthonormality residuals&lt;/b&gt; (0 up to rounding): %1</source>
         <translation>&lt;b&gt;Orthonormality residuals&lt;/b&gt; (0 up to rounding): %1</translation>
     </message>
@@ -2866,47 +2866,47 @@
 <context>
     <name>rasterlab::CompareImage</name>
     <message>
-        <location filename="../app/compare_image.cpp" line="26"/>
+        <location filename="../app/compare/compare_image.cpp" line="26"/>
         <source>no such file</source>
         <translation>no such file</translation>
     </message>
     <message>
-        <location filename="../app/compare_image.cpp" line="28"/>
+        <location filename="../app/compare/compare_image.cpp" line="28"/>
         <source>a folder, not a PNG image</source>
         <translation>a folder, not a PNG image</translation>
     </message>
     <message>
-        <location filename="../app/compare_image.cpp" line="30"/>
+        <location filename="../app/compare/compare_image.cpp" line="30"/>
         <source>the file is empty</source>
         <translation>the file is empty</translation>
     </message>
     <message>
-        <location filename="../app/compare_image.cpp" line="41"/>
+        <location filename="../app/compare/compare_image.cpp" line="41"/>
         <source>not a PNG image</source>
         <translation>not a PNG image</translation>
     </message>
     <message>
-        <location filename="../app/compare_image.cpp" line="42"/>
+        <location filename="../app/compare/compare_image.cpp" line="42"/>
         <source>not a PNG image (a %1 image)</source>
         <translation>not a PNG image (a %1 image)</translation>
     </message>
     <message>
-        <location filename="../app/compare_image.cpp" line="44"/>
+        <location filename="../app/compare/compare_image.cpp" line="44"/>
         <source>the PNG is cut short (it does not end with its IEND chunk)</source>
         <translation>the PNG is cut short (it does not end with its IEND chunk)</translation>
     </message>
     <message>
-        <location filename="../app/compare_image.cpp" line="48"/>
+        <location filename="../app/compare/compare_image.cpp" line="48"/>
         <source>cannot read the PNG: %1</source>
         <translation>cannot read the PNG: %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_image.cpp" line="69"/>
+        <location filename="../app/compare/compare_image.cpp" line="69"/>
         <source>the image is %1, ours is %2</source>
         <translation>the image is %1, ours is %2</translation>
     </message>
     <message>
-        <location filename="../app/compare_image.cpp" line="73"/>
+        <location filename="../app/compare/compare_image.cpp" line="73"/>
         <source>; it holds ours at (%1, %2), as a screenshot with a window border would: crop it to %3 from there</source>
         <translation>; it holds ours at (%1, %2), as a screenshot with a window border would: crop it to %3 from there</translation>
     </message>
@@ -2914,100 +2914,100 @@
 <context>
     <name>rasterlab::ComparePanel</name>
     <message>
-        <location filename="../app/compare_panel.cpp" line="131"/>
-        <location filename="../app/compare_panel.cpp" line="135"/>
+        <location filename="../app/window/compare_panel.cpp" line="126"/>
+        <location filename="../app/window/compare_panel.cpp" line="130"/>
         <source>R %1, G %2, B %3, A %4</source>
         <translation>R %1, G %2, B %3, A %4</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="145"/>
+        <location filename="../app/window/compare_panel.cpp" line="140"/>
         <source>red</source>
         <translation>red</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="147"/>
+        <location filename="../app/window/compare_panel.cpp" line="142"/>
         <source>green</source>
         <translation>green</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="149"/>
+        <location filename="../app/window/compare_panel.cpp" line="144"/>
         <source>blue</source>
         <translation>blue</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="151"/>
+        <location filename="../app/window/compare_panel.cpp" line="146"/>
         <source>alpha</source>
         <translation>alpha</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="158"/>
+        <location filename="../app/window/compare_panel.cpp" line="153"/>
         <source>%1 and %2</source>
         <translation>%1 and %2</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="174"/>
+        <location filename="../app/window/compare_panel.cpp" line="169"/>
         <source>Side by side</source>
         <translation>Side by side</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="175"/>
+        <location filename="../app/window/compare_panel.cpp" line="170"/>
         <source>Flicker</source>
         <translation>Flicker</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="176"/>
+        <location filename="../app/window/compare_panel.cpp" line="171"/>
         <source>Difference</source>
         <translation>Difference</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="178"/>
+        <location filename="../app/window/compare_panel.cpp" line="173"/>
         <source>Theirs beside ours, one after the other twice a second, or the pixels that differ</source>
         <translation>Theirs beside ours, one after the other twice a second, or the pixels that differ</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="181"/>
+        <location filename="../app/window/compare_panel.cpp" line="176"/>
         <source>Differ by more than</source>
         <translation>Differ by more than</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="187"/>
+        <location filename="../app/window/compare_panel.cpp" line="182"/>
         <source>The difference view shows the pixels where some channel differs by more than this (0: every difference)</source>
         <translation>The difference view shows the pixels where some channel differs by more than this (0: every difference)</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="192"/>
+        <location filename="../app/window/compare_panel.cpp" line="187"/>
         <source>Compare Again</source>
         <translation>Compare Again</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="195"/>
+        <location filename="../app/window/compare_panel.cpp" line="190"/>
         <source>The scene changed since the comparison: compare their image with the scene shown now</source>
         <translation>The scene changed since the comparison: compare their image with the scene shown now</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="219"/>
+        <location filename="../app/window/compare_panel.cpp" line="214"/>
         <source>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</source>
         <translation>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="257"/>
+        <location filename="../app/window/compare_panel.cpp" line="252"/>
         <source>There is no render to compare with yet.</source>
         <translation>There is no render to compare with yet.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="344"/>
-        <location filename="../app/compare_panel.cpp" line="347"/>
+        <location filename="../app/window/compare_panel.cpp" line="339"/>
+        <location filename="../app/window/compare_panel.cpp" line="342"/>
         <source>Theirs</source>
         <translation>Theirs</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="344"/>
-        <location filename="../app/compare_panel.cpp" line="347"/>
+        <location filename="../app/window/compare_panel.cpp" line="339"/>
+        <location filename="../app/window/compare_panel.cpp" line="342"/>
         <source>Ours</source>
         <translation>Ours</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/compare_panel.cpp" line="352"/>
+        <location filename="../app/window/compare_panel.cpp" line="347"/>
         <source>%n pixel(s) differ by more than %1</source>
         <translation>
             <numerusform>%n pixel differs by more than %1</numerusform>
@@ -3015,167 +3015,167 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="378"/>
+        <location filename="../app/window/compare_panel.cpp" line="373"/>
         <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
         <translation>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="386"/>
+        <location filename="../app/window/compare_panel.cpp" line="381"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Largest difference per channel: %1.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="387"/>
+        <location filename="../app/window/compare_panel.cpp" line="382"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Mean difference per channel, over the differing pixels: %1.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="389"/>
+        <location filename="../app/window/compare_panel.cpp" line="384"/>
         <source>Pixels only one side covers: %1 only ours (our depth buffer), %2 only theirs (not the background).</source>
         <translation>Pixels only one side covers: %1 only ours (our depth buffer), %2 only theirs (not the background).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="395"/>
+        <location filename="../app/window/compare_panel.cpp" line="390"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="402"/>
+        <location filename="../app/window/compare_panel.cpp" line="397"/>
         <source>The images are the same.</source>
         <translation>The images are the same.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="404"/>
+        <location filename="../app/window/compare_panel.cpp" line="399"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnosis: none of the mistakes RasterLab knows explains these differences.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="407"/>
+        <location filename="../app/window/compare_panel.cpp" line="402"/>
         <source>Diagnosis, most likely first:</source>
         <translation>Diagnosis, most likely first:</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="414"/>
+        <location filename="../app/window/compare_panel.cpp" line="408"/>
         <source>Explains %1% of the differing pixels (%2 of %3).</source>
         <translation>Explains %1% of the differing pixels (%2 of %3).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="419"/>
+        <location filename="../app/window/compare_panel.cpp" line="413"/>
         <source>Evidence: %1</source>
         <translation>Evidence: %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="420"/>
+        <location filename="../app/window/compare_panel.cpp" line="414"/>
         <source>Check: %1</source>
         <translation>Check: %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="422"/>
+        <location filename="../app/window/compare_panel.cpp" line="416"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>At (%1, %2): ours %3, theirs %4</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="438"/>
+        <location filename="../app/window/compare_panel.cpp" line="432"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Pick a pixel (here or on the image) to see their colour beside ours.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="446"/>
+        <location filename="../app/window/compare_panel.cpp" line="440"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): theirs %3, ours %4.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="453"/>
+        <location filename="../app/window/compare_panel.cpp" line="447"/>
         <source>minus %1 in %2</source>
         <translation>minus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="454"/>
+        <location filename="../app/window/compare_panel.cpp" line="448"/>
         <source>plus %1 in %2</source>
         <translation>plus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="457"/>
+        <location filename="../app/window/compare_panel.cpp" line="451"/>
         <source>Their colour is ours.</source>
         <translation>Their colour is ours.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="461"/>
+        <location filename="../app/window/compare_panel.cpp" line="455"/>
         <source>Their colour is ours %1.</source>
         <translation>Their colour is ours %1.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="463"/>
+        <location filename="../app/window/compare_panel.cpp" line="457"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>The scene has changed since the comparison: the lighting shown now is not the one compared.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="475"/>
+        <location filename="../app/window/compare_panel.cpp" line="469"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>No triangle of ours covers this pixel: it is the background.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="479"/>
+        <location filename="../app/window/compare_panel.cpp" line="473"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>The lighting of this pixel is not known.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="482"/>
+        <location filename="../app/window/compare_panel.cpp" line="476"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="512"/>
+        <location filename="../app/window/compare_panel.cpp" line="506"/>
         <source>the ambient term Ia·ka</source>
         <translation>the ambient term Ia·ka</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="513"/>
+        <location filename="../app/window/compare_panel.cpp" line="507"/>
         <source>the diffuse term Il·Od·kd·(N·L)</source>
         <translation>the diffuse term Il·Od·kd·(N·L)</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="514"/>
+        <location filename="../app/window/compare_panel.cpp" line="508"/>
         <source>the specular term Il·ks·(R·V)^n</source>
         <translation>the specular term Il·ks·(R·V)^n</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="530"/>
+        <location filename="../app/window/compare_panel.cpp" line="524"/>
         <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
         <translation>• %1 is 0 in %2 here: changing it alone cannot give their colour.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="535"/>
+        <location filename="../app/window/compare_panel.cpp" line="529"/>
         <source>• %1 would have to be below 0 in %2: not this term alone.</source>
         <translation>• %1 would have to be below 0 in %2: not this term alone.</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="552"/>
+        <location filename="../app/window/compare_panel.cpp" line="546"/>
         <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
         <translation>• %1 would have to be %2 instead of %3, × %4 per channel</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="555"/>
+        <location filename="../app/window/compare_panel.cpp" line="549"/>
         <source>: the term left out</source>
         <translation>: the term left out</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="558"/>
+        <location filename="../app/window/compare_panel.cpp" line="552"/>
         <source>: that is the term times Od %1</source>
         <translation>: that is the term times Od %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="561"/>
+        <location filename="../app/window/compare_panel.cpp" line="555"/>
         <source>: that is the term without Od %1</source>
         <translation>: that is the term without Od %1</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="567"/>
+        <location filename="../app/window/compare_panel.cpp" line="561"/>
         <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
         <translation>(%1: 255 in both images, clamped; any value at least as high gives it.)</translation>
     </message>
     <message>
-        <location filename="../app/compare_panel.cpp" line="570"/>
+        <location filename="../app/window/compare_panel.cpp" line="564"/>
         <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
         <translation>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</translation>
     </message>
@@ -3183,413 +3183,413 @@
 <context>
     <name>rasterlab::EditPanel</name>
     <message>
-        <location filename="../app/edit_panel.cpp" line="218"/>
+        <location filename="../app/window/edit_panel.cpp" line="218"/>
         <source>One kd for the three channels (the UFPE files have one number): changing one changes all three</source>
         <translation>One kd for the three channels (the UFPE files have one number): changing one changes all three</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="259"/>
+        <location filename="../app/window/edit_panel.cpp" line="259"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="259"/>
+        <location filename="../app/window/edit_panel.cpp" line="259"/>
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="259"/>
+        <location filename="../app/window/edit_panel.cpp" line="259"/>
         <source>B</source>
         <translation>B</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="262"/>
-        <location filename="../app/edit_panel.cpp" line="706"/>
+        <location filename="../app/window/edit_panel.cpp" line="262"/>
+        <location filename="../app/window/edit_panel.cpp" line="713"/>
         <source>Camera</source>
         <translation>Camera</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="264"/>
+        <location filename="../app/window/edit_panel.cpp" line="264"/>
         <source>C: the camera&apos;s position (world)</source>
         <translation>C: the camera&apos;s position (world)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="267"/>
+        <location filename="../app/window/edit_panel.cpp" line="267"/>
         <source>N: the view direction (normalised by the camera basis)</source>
         <translation>N: the view direction (normalised by the camera basis)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="269"/>
+        <location filename="../app/window/edit_panel.cpp" line="269"/>
         <source>V: the up vector (made orthogonal to N by Gram-Schmidt)</source>
         <translation>V: the up vector (made orthogonal to N by Gram-Schmidt)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="271"/>
+        <location filename="../app/window/edit_panel.cpp" line="271"/>
         <source>d: the distance from C to the projection plane</source>
         <translation>d: the distance from C to the projection plane</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="273"/>
+        <location filename="../app/window/edit_panel.cpp" line="273"/>
         <source>hx: half the width of the window on the projection plane</source>
         <translation>hx: half the width of the window on the projection plane</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="275"/>
+        <location filename="../app/window/edit_panel.cpp" line="275"/>
         <source>hy: half the height of the window on the projection plane</source>
         <translation>hy: half the height of the window on the projection plane</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="279"/>
+        <location filename="../app/window/edit_panel.cpp" line="279"/>
         <source>Light</source>
         <translation>Light</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="282"/>
+        <location filename="../app/window/edit_panel.cpp" line="282"/>
         <source>The light whose values are shown</source>
         <translation>The light whose values are shown</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="288"/>
+        <location filename="../app/window/edit_panel.cpp" line="288"/>
         <source>Add a light: a copy of the light shown</source>
         <translation>Add a light: a copy of the light shown</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="293"/>
+        <location filename="../app/window/edit_panel.cpp" line="293"/>
         <source>Remove the light shown (the scene keeps one light at least)</source>
         <translation>Remove the light shown (the scene keeps one light at least)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="302"/>
+        <location filename="../app/window/edit_panel.cpp" line="302"/>
         <source>Pl: the light&apos;s position (world), or the direction toward it for a directional light</source>
         <translation>Pl: the light&apos;s position (world), or the direction toward it for a directional light</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="305"/>
+        <location filename="../app/window/edit_panel.cpp" line="305"/>
         <source>Directional (w = 0)</source>
         <translation>Directional (w = 0)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="306"/>
+        <location filename="../app/window/edit_panel.cpp" line="306"/>
         <source>A directional light is infinitely far: L is the same everywhere and it is not attenuated</source>
         <translation>A directional light is infinitely far: L is the same everywhere and it is not attenuated</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="310"/>
+        <location filename="../app/window/edit_panel.cpp" line="310"/>
         <source>Il: the light&apos;s colour, 0 to 255 per channel</source>
         <translation>Il: the light&apos;s colour, 0 to 255 per channel</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="314"/>
+        <location filename="../app/window/edit_panel.cpp" line="314"/>
         <source>att</source>
         <translation>att</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="315"/>
+        <location filename="../app/window/edit_panel.cpp" line="315"/>
         <source>Attenuation: the light&apos;s diffuse and specular terms are divided by kc + kl d + kq d², d its distance to the point (1 0 0: none)</source>
         <translation>Attenuation: the light&apos;s diffuse and specular terms are divided by kc + kl d + kq d², d its distance to the point (1 0 0: none)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="318"/>
+        <location filename="../app/window/edit_panel.cpp" line="318"/>
         <source>Spot</source>
         <translation>Spot</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="319"/>
+        <location filename="../app/window/edit_panel.cpp" line="319"/>
         <source>A spot lights only the points within its cutoff angle of its direction</source>
         <translation>A spot lights only the points within its cutoff angle of its direction</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="322"/>
+        <location filename="../app/window/edit_panel.cpp" line="322"/>
         <source>D: the direction the spot points to (world)</source>
         <translation>D: the direction the spot points to (world)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="323"/>
+        <location filename="../app/window/edit_panel.cpp" line="323"/>
         <source>cut</source>
         <translation>cut</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="324"/>
+        <location filename="../app/window/edit_panel.cpp" line="324"/>
         <source>The spot&apos;s cutoff angle, 0 to 90 degrees</source>
         <translation>The spot&apos;s cutoff angle, 0 to 90 degrees</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="325"/>
+        <location filename="../app/window/edit_panel.cpp" line="325"/>
         <source>exp</source>
         <translation>exp</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="326"/>
+        <location filename="../app/window/edit_panel.cpp" line="326"/>
         <source>The spot&apos;s exponent: its light falls off as (-L.D)^exp toward the edge</source>
         <translation>The spot&apos;s exponent: its light falls off as (-L.D)^exp toward the edge</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="330"/>
+        <location filename="../app/window/edit_panel.cpp" line="330"/>
         <source>Ambient</source>
         <translation>Ambient</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="333"/>
+        <location filename="../app/window/edit_panel.cpp" line="333"/>
         <source>Ia: the ambient light&apos;s colour, 0 to 255 per channel</source>
         <translation>Ia: the ambient light&apos;s colour, 0 to 255 per channel</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="335"/>
+        <location filename="../app/window/edit_panel.cpp" line="335"/>
         <source>ka: the ambient coefficient, 0 to 1</source>
         <translation>ka: the ambient coefficient, 0 to 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="338"/>
+        <location filename="../app/window/edit_panel.cpp" line="338"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="341"/>
+        <location filename="../app/window/edit_panel.cpp" line="341"/>
         <source>kd: the diffuse coefficient of each channel, 0 to 1</source>
         <translation>kd: the diffuse coefficient of each channel, 0 to 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="344"/>
+        <location filename="../app/window/edit_panel.cpp" line="344"/>
         <source>Od: the object&apos;s diffuse colour, 0 to 1 per channel</source>
         <translation>Od: the object&apos;s diffuse colour, 0 to 1 per channel</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="346"/>
+        <location filename="../app/window/edit_panel.cpp" line="346"/>
         <source>Ke: the light the object gives off by itself, 0 to 255 per channel (added to every lit point)</source>
         <translation>Ke: the light the object gives off by itself, 0 to 255 per channel (added to every lit point)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="350"/>
+        <location filename="../app/window/edit_panel.cpp" line="350"/>
         <source>ks: the specular coefficient, 0 to 1</source>
         <translation>ks: the specular coefficient, 0 to 1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="352"/>
+        <location filename="../app/window/edit_panel.cpp" line="352"/>
         <source>n: the specular exponent (larger: a smaller, sharper highlight)</source>
         <translation>n: the specular exponent (larger: a smaller, sharper highlight)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="356"/>
+        <location filename="../app/window/edit_panel.cpp" line="356"/>
         <source>Shading</source>
         <translation>Shading</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="359"/>
+        <location filename="../app/window/edit_panel.cpp" line="359"/>
         <source>Phong (per pixel)</source>
         <translation>Phong (per pixel)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="360"/>
+        <location filename="../app/window/edit_panel.cpp" line="360"/>
         <source>Gouraud (per vertex)</source>
         <translation>Gouraud (per vertex)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="361"/>
+        <location filename="../app/window/edit_panel.cpp" line="361"/>
         <source>Flat (per triangle)</source>
         <translation>Flat (per triangle)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="362"/>
+        <location filename="../app/window/edit_panel.cpp" line="362"/>
         <source>Painter&apos;s algorithm (flat, no depth test)</source>
         <translation>Painter&apos;s algorithm (flat, no depth test)</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="372"/>
+        <location filename="../app/window/edit_panel.cpp" line="372"/>
         <source>Two-sided lighting</source>
         <translation>Two-sided lighting</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="373"/>
+        <location filename="../app/window/edit_panel.cpp" line="373"/>
         <source>On (the course&apos;s rule): where V.N &lt; 0 the normal is turned round, so the back of a surface is lit like its front. Off: one-sided, the back keeps a normal pointing away</source>
         <translation>On (the course&apos;s rule): where V.N &lt; 0 the normal is turned round, so the back of a surface is lit like its front. Off: one-sided, the back keeps a normal pointing away</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="376"/>
+        <location filename="../app/window/edit_panel.cpp" line="376"/>
         <source>Blinn-Phong highlight</source>
         <translation>Blinn-Phong highlight</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="377"/>
+        <location filename="../app/window/edit_panel.cpp" line="377"/>
         <source>The highlight with the half vector H = (L + V)/|L + V| instead of Phong&apos;s reflection R: (N.H)^n instead of (R.V)^n</source>
         <translation>The highlight with the half vector H = (L + V)/|L + V| instead of Phong&apos;s reflection R: (N.H)^n instead of (R.V)^n</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="441"/>
+        <location filename="../app/window/edit_panel.cpp" line="441"/>
         <source>Add light %1</source>
         <translation>Add light %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="448"/>
+        <location filename="../app/window/edit_panel.cpp" line="448"/>
         <source>Remove light %1</source>
         <translation>Remove light %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="473"/>
+        <location filename="../app/window/edit_panel.cpp" line="473"/>
         <source>&amp;Undo</source>
         <translation>&amp;Undo</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="476"/>
+        <location filename="../app/window/edit_panel.cpp" line="476"/>
         <source>&amp;Redo</source>
         <translation>&amp;Redo</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="480"/>
+        <location filename="../app/window/edit_panel.cpp" line="480"/>
         <source>&amp;Save Camera and Lighting</source>
         <translation>&amp;Save Camera and Lighting</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="483"/>
+        <location filename="../app/window/edit_panel.cpp" line="483"/>
         <source>Write the edited camera and lighting to their files</source>
         <translation>Write the edited camera and lighting to their files</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="489"/>
+        <location filename="../app/window/edit_panel.cpp" line="489"/>
         <source>&amp;Camera...</source>
         <translation>&amp;Camera...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="491"/>
+        <location filename="../app/window/edit_panel.cpp" line="491"/>
         <source>&amp;Lighting...</source>
         <translation>&amp;Lighting...</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="494"/>
+        <location filename="../app/window/edit_panel.cpp" line="494"/>
         <source>Save &amp;As</source>
         <translation>Save &amp;As</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="536"/>
+        <location filename="../app/window/edit_panel.cpp" line="543"/>
         <source>Light %1 of %2</source>
         <translation>Light %1 of %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="619"/>
+        <location filename="../app/window/edit_panel.cpp" line="626"/>
         <source>Change %1</source>
         <translation>Change %1</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="688"/>
+        <location filename="../app/window/edit_panel.cpp" line="695"/>
         <source>A command file is shown: its scene is not edited here.</source>
         <translation>A command file is shown: its scene is not edited here.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="694"/>
+        <location filename="../app/window/edit_panel.cpp" line="701"/>
         <source>%1 of the %2 example</source>
         <translation>%1 of the %2 example</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="698"/>
+        <location filename="../app/window/edit_panel.cpp" line="705"/>
         <source>built-in scene</source>
         <translation>built-in scene</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="702"/>
+        <location filename="../app/window/edit_panel.cpp" line="709"/>
         <source>modified</source>
         <translation>modified</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="708"/>
+        <location filename="../app/window/edit_panel.cpp" line="715"/>
         <source>Lighting</source>
         <translation>Lighting</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="718"/>
+        <location filename="../app/window/edit_panel.cpp" line="725"/>
         <source>shading</source>
         <translation>shading</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="720"/>
+        <location filename="../app/window/edit_panel.cpp" line="727"/>
         <source>two-sided lighting</source>
         <translation>two-sided lighting</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="722"/>
+        <location filename="../app/window/edit_panel.cpp" line="729"/>
         <source>the highlight&apos;s model</source>
         <translation>the highlight&apos;s model</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="724"/>
+        <location filename="../app/window/edit_panel.cpp" line="731"/>
         <source>directional</source>
         <translation>directional</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="727"/>
+        <location filename="../app/window/edit_panel.cpp" line="734"/>
         <source>spot cutoff</source>
         <translation>spot cutoff</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="730"/>
+        <location filename="../app/window/edit_panel.cpp" line="737"/>
         <source>spot exponent</source>
         <translation>spot exponent</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="733"/>
+        <location filename="../app/window/edit_panel.cpp" line="740"/>
         <source>spot direction</source>
         <translation>spot direction</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="736"/>
+        <location filename="../app/window/edit_panel.cpp" line="743"/>
         <source>attenuation</source>
         <translation>attenuation</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="746"/>
+        <location filename="../app/window/edit_panel.cpp" line="753"/>
         <source>%1 of light %2</source>
         <translation>%1 of light %2</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="755"/>
+        <location filename="../app/window/edit_panel.cpp" line="762"/>
         <source>The camera was not saved.</source>
         <translation>The camera was not saved.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="755"/>
+        <location filename="../app/window/edit_panel.cpp" line="762"/>
         <source>The lighting was not saved.</source>
         <translation>The lighting was not saved.</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="828"/>
+        <location filename="../app/window/edit_panel.cpp" line="835"/>
         <source>the %1 example</source>
         <translation>the %1 example</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="833"/>
+        <location filename="../app/window/edit_panel.cpp" line="840"/>
         <source>The camera has changes that are not saved (%1).</source>
         <translation>The camera has changes that are not saved (%1).</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="834"/>
+        <location filename="../app/window/edit_panel.cpp" line="841"/>
         <source>The lighting has changes that are not saved (%1).</source>
         <translation>The lighting has changes that are not saved (%1).</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="754"/>
+        <location filename="../app/window/edit_panel.cpp" line="761"/>
         <source>Save</source>
         <translation>Save</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="810"/>
+        <location filename="../app/window/edit_panel.cpp" line="817"/>
         <source>Save Camera As</source>
         <translation>Save Camera As</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="810"/>
+        <location filename="../app/window/edit_panel.cpp" line="817"/>
         <source>Save Lighting As</source>
         <translation>Save Lighting As</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="830"/>
+        <location filename="../app/window/edit_panel.cpp" line="837"/>
         <source>the built-in scene</source>
         <translation>the built-in scene</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="832"/>
+        <location filename="../app/window/edit_panel.cpp" line="839"/>
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
     <message>
-        <location filename="../app/edit_panel.cpp" line="839"/>
+        <location filename="../app/window/edit_panel.cpp" line="846"/>
         <source>Save them?</source>
         <translation>Save them?</translation>
     </message>
@@ -3636,911 +3636,911 @@
 <context>
     <name>rasterlab::MainWindow</name>
     <message>
-        <location filename="../app/main_window.cpp" line="66"/>
+        <location filename="../app/window/main_window.cpp" line="66"/>
         <source>Open Camera</source>
         <translation>Open Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="68"/>
+        <location filename="../app/window/main_window.cpp" line="68"/>
         <source>Open Lighting</source>
         <translation>Open Lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="70"/>
+        <location filename="../app/window/main_window.cpp" line="70"/>
         <source>Open Object</source>
         <translation>Open Object</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="78"/>
+        <location filename="../app/window/main_window.cpp" line="78"/>
         <source>Camera files (*.cfg *.txt);;All files (*)</source>
         <translation>Camera files (*.cfg *.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="80"/>
+        <location filename="../app/window/main_window.cpp" line="80"/>
         <source>Lighting files (*.txt *.lux);;All files (*)</source>
         <translation>Lighting files (*.txt *.lux);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="82"/>
+        <location filename="../app/window/main_window.cpp" line="82"/>
         <source>Objects (*.byu *.txt);;All files (*)</source>
         <translation>Objects (*.byu *.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="31"/>
+        <location filename="../app/window/main_window_actions.cpp" line="31"/>
         <source>Detect from the file</source>
         <translation>Detect from the file</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="91"/>
+        <location filename="../app/window/main_window.cpp" line="91"/>
         <source>flat</source>
         <translation>flat</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="93"/>
-        <location filename="../app/main_window_export.cpp" line="70"/>
+        <location filename="../app/window/main_window.cpp" line="93"/>
+        <location filename="../app/window/main_window_export.cpp" line="70"/>
         <source>Gouraud</source>
         <translation>Gouraud</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="95"/>
-        <location filename="../app/main_window_export.cpp" line="70"/>
+        <location filename="../app/window/main_window.cpp" line="95"/>
+        <location filename="../app/window/main_window_export.cpp" line="70"/>
         <source>Phong</source>
         <translation>Phong</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="97"/>
+        <location filename="../app/window/main_window.cpp" line="97"/>
         <source>painter&apos;s-algorithm flat</source>
         <translation>painter&apos;s-algorithm flat</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="106"/>
+        <location filename="../app/window/main_window.cpp" line="106"/>
         <source>%1 (built in)</source>
         <translation>%1 (built in)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="114"/>
+        <location filename="../app/window/main_window.cpp" line="114"/>
         <source>RasterLab</source>
         <translation>RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="170"/>
+        <location filename="../app/window/main_window.cpp" line="170"/>
         <source>Stopped at a breakpoint: %1</source>
         <translation>Stopped at a breakpoint: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="203"/>
-        <location filename="../app/main_window_export.cpp" line="122"/>
-        <location filename="../app/main_window_export.cpp" line="159"/>
+        <location filename="../app/window/main_window.cpp" line="203"/>
+        <location filename="../app/window/main_window_export.cpp" line="122"/>
+        <location filename="../app/window/main_window_export.cpp" line="159"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="204"/>
+        <location filename="../app/window/main_window.cpp" line="204"/>
         <source>Stop preparing the stepping of this frame</source>
         <translation>Stop preparing the stepping of this frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="208"/>
+        <location filename="../app/window/main_window.cpp" line="208"/>
         <source>cancelled</source>
         <translation>cancelled</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="266"/>
+        <location filename="../app/window/main_window.cpp" line="266"/>
         <source>Stepping</source>
         <translation>Stepping</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="290"/>
+        <location filename="../app/window/main_window.cpp" line="290"/>
         <source>Edit</source>
         <translation>Edit</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="297"/>
+        <location filename="../app/window/main_window.cpp" line="297"/>
         <source>Breakpoints</source>
         <translation>Breakpoints</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="303"/>
+        <location filename="../app/window/main_window.cpp" line="303"/>
         <source>Animation</source>
         <translation>Animation</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="322"/>
+        <location filename="../app/window/main_window.cpp" line="322"/>
         <source>1 Camera basis</source>
         <translation>1 Camera basis</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="294"/>
+        <location filename="../app/window/main_window.cpp" line="294"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Pixel inspector (lighting)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="329"/>
+        <location filename="../app/window/main_window.cpp" line="329"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 View coordinates (vertices)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="331"/>
+        <location filename="../app/window/main_window.cpp" line="331"/>
         <source>3 Normals</source>
         <translation>3 Normals</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="333"/>
+        <location filename="../app/window/main_window.cpp" line="333"/>
         <source>4 Projection</source>
         <translation>4 Projection</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="325"/>
+        <location filename="../app/window/main_window.cpp" line="325"/>
         <source>5 Scan conversion</source>
         <translation>5 Scan conversion</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="339"/>
+        <location filename="../app/window/main_window.cpp" line="339"/>
         <source>5b Trapezoids</source>
         <translation>5b Trapezoids</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="343"/>
+        <location filename="../app/window/main_window.cpp" line="343"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="48"/>
+        <location filename="../app/window/main_window_actions.cpp" line="48"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="162"/>
+        <location filename="../app/window/main_window_actions.cpp" line="162"/>
         <source>&amp;Animation Frames...</source>
         <translation>&amp;Animation Frames...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="298"/>
+        <location filename="../app/window/main_window_actions.cpp" line="298"/>
         <source>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</source>
         <translation>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1048"/>
+        <location filename="../app/window/main_window.cpp" line="1086"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>step forward, back (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1050"/>
+        <location filename="../app/window/main_window.cpp" line="1088"/>
         <source>Space</source>
         <translation>Space</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1050"/>
+        <location filename="../app/window/main_window.cpp" line="1088"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>play / pause (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1056"/>
+        <location filename="../app/window/main_window.cpp" line="1094"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>let go of the picked pixel (on the image)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1057"/>
+        <location filename="../app/window/main_window.cpp" line="1095"/>
         <source>presentation mode on / off</source>
         <translation>presentation mode on / off</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1062"/>
+        <location filename="../app/window/main_window.cpp" line="1100"/>
         <source>save, undo, redo</source>
         <translation>save, undo, redo</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="57"/>
+        <location filename="../app/window/main_window_actions.cpp" line="57"/>
         <source>Open &amp;Camera...</source>
         <translation>Open &amp;Camera...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="135"/>
+        <location filename="../app/window/main_window.cpp" line="135"/>
         <source>Draw with the Plain Divide</source>
         <translation>Draw with the Plain Divide</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="59"/>
+        <location filename="../app/window/main_window_actions.cpp" line="59"/>
         <source>Ctrl+Shift+C</source>
         <translation>Ctrl+Shift+C</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="61"/>
+        <location filename="../app/window/main_window_actions.cpp" line="61"/>
         <source>Open &amp;Lighting...</source>
         <translation>Open &amp;Lighting...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="62"/>
+        <location filename="../app/window/main_window_actions.cpp" line="62"/>
         <source>Ctrl+Shift+L</source>
         <translation>Ctrl+Shift+L</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="64"/>
+        <location filename="../app/window/main_window_actions.cpp" line="64"/>
         <source>Open Command &amp;File...</source>
         <translation>Open Command &amp;File...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="65"/>
+        <location filename="../app/window/main_window_actions.cpp" line="65"/>
         <source>Ctrl+Shift+O</source>
         <translation>Ctrl+Shift+O</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="67"/>
+        <location filename="../app/window/main_window_actions.cpp" line="67"/>
         <source>Open &amp;Recent</source>
         <translation>Open &amp;Recent</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="69"/>
+        <location filename="../app/window/main_window_actions.cpp" line="69"/>
         <source>&amp;Default Scene</source>
         <translation>&amp;Default Scene</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="103"/>
+        <location filename="../app/window/main_window_actions.cpp" line="103"/>
         <source>&amp;Camera</source>
         <translation>&amp;Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="115"/>
+        <location filename="../app/window/main_window_actions.cpp" line="115"/>
         <source>&amp;Lighting</source>
         <translation>&amp;Lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="131"/>
+        <location filename="../app/window/main_window_actions.cpp" line="131"/>
         <source>&amp;Export PNG...</source>
         <translation>&amp;Export PNG...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="132"/>
+        <location filename="../app/window/main_window_actions.cpp" line="132"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="134"/>
+        <location filename="../app/window/main_window_actions.cpp" line="134"/>
         <source>Export &amp;More</source>
         <translation>Export &amp;More</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="137"/>
+        <location filename="../app/window/main_window_actions.cpp" line="137"/>
         <source>Image as &amp;Displayed...</source>
         <translation>Image as &amp;Displayed...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="138"/>
+        <location filename="../app/window/main_window_actions.cpp" line="138"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="139"/>
+        <location filename="../app/window/main_window_actions.cpp" line="139"/>
         <source>&amp;Colour Buffer at the Cursor...</source>
         <translation>&amp;Colour Buffer at the Cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="141"/>
+        <location filename="../app/window/main_window_actions.cpp" line="141"/>
         <source>D&amp;epth Buffer at the Cursor...</source>
         <translation>D&amp;epth Buffer at the Cursor...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="143"/>
+        <location filename="../app/window/main_window_actions.cpp" line="143"/>
         <source>&amp;Normal Buffer...</source>
         <translation>&amp;Normal Buffer...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="144"/>
+        <location filename="../app/window/main_window_actions.cpp" line="144"/>
         <source>A &amp;View as Displayed</source>
         <translation>A &amp;View as Displayed</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="148"/>
+        <location filename="../app/window/main_window_actions.cpp" line="148"/>
         <source>Export View</source>
         <translation>Export View</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="160"/>
+        <location filename="../app/window/main_window_actions.cpp" line="160"/>
         <source>&amp;Stepping Sequence...</source>
         <translation>&amp;Stepping Sequence...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="95"/>
+        <location filename="../app/window/main_window_actions.cpp" line="95"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="89"/>
+        <location filename="../app/window/main_window_actions.cpp" line="89"/>
         <source>Compare with &amp;Image...</source>
         <translation>Compare with &amp;Image...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="92"/>
+        <location filename="../app/window/main_window_actions.cpp" line="92"/>
         <source>A PNG of your own renderer against this scene&apos;s render, with the likely mistakes</source>
         <translation>A PNG of your own renderer against this scene&apos;s render, with the likely mistakes</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="153"/>
+        <location filename="../app/window/main_window_actions.cpp" line="153"/>
         <source>Shading Side &amp;by Side...</source>
         <translation>Shading Side &amp;by Side...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="155"/>
+        <location filename="../app/window/main_window_actions.cpp" line="155"/>
         <source>Export Shading Side by Side</source>
         <translation>Export Shading Side by Side</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="167"/>
+        <location filename="../app/window/main_window_actions.cpp" line="167"/>
         <source>&amp;Edit</source>
         <translation>&amp;Edit</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="173"/>
+        <location filename="../app/window/main_window_actions.cpp" line="173"/>
         <source>&amp;View</source>
         <translation>&amp;View</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="174"/>
+        <location filename="../app/window/main_window_actions.cpp" line="174"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Fit to Window</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="175"/>
+        <location filename="../app/window/main_window_actions.cpp" line="175"/>
         <source>Ctrl+0</source>
         <translation>Ctrl+0</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="177"/>
+        <location filename="../app/window/main_window_actions.cpp" line="177"/>
         <source>&amp;Actual Size</source>
         <translation>&amp;Actual Size</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="178"/>
+        <location filename="../app/window/main_window_actions.cpp" line="178"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="179"/>
+        <location filename="../app/window/main_window_actions.cpp" line="179"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;In</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="181"/>
+        <location filename="../app/window/main_window_actions.cpp" line="181"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom &amp;Out</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="188"/>
+        <location filename="../app/window/main_window_actions.cpp" line="188"/>
         <source>Reset &amp;Layout</source>
         <translation>Reset &amp;Layout</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="190"/>
+        <location filename="../app/window/main_window_actions.cpp" line="190"/>
         <source>Fill the &amp;Window with a Panel</source>
         <translation>Fill the &amp;Window with a Panel</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="194"/>
+        <location filename="../app/window/main_window_actions.cpp" line="194"/>
         <source>The panel with the focus or under the mouse (the image, from the image) over the whole window; again, the layout back</source>
         <translation>The panel with the focus or under the mouse (the image, from the image) over the whole window; again, the layout back</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="202"/>
+        <location filename="../app/window/main_window_actions.cpp" line="202"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Presentation Mode</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="207"/>
+        <location filename="../app/window/main_window_actions.cpp" line="207"/>
         <source>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</source>
         <translation>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="222"/>
+        <location filename="../app/window/main_window_actions.cpp" line="222"/>
         <source>The System&apos;s</source>
         <translation>The System&apos;s</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="241"/>
+        <location filename="../app/window/main_window_actions.cpp" line="241"/>
         <source>S&amp;tep</source>
         <translation>S&amp;tep</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="261"/>
+        <location filename="../app/window/main_window_actions.cpp" line="261"/>
         <source>Pick the Pixel Under the &amp;Mouse</source>
         <translation>Pick the Pixel Under the &amp;Mouse</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="262"/>
+        <location filename="../app/window/main_window_actions.cpp" line="262"/>
         <source>Ctrl+G</source>
         <translation>Ctrl+G</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="291"/>
+        <location filename="../app/window/main_window_actions.cpp" line="291"/>
         <source>&amp;Shading</source>
         <translation>&amp;Shading</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="295"/>
+        <location filename="../app/window/main_window_actions.cpp" line="295"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (per pixel)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="296"/>
+        <location filename="../app/window/main_window_actions.cpp" line="296"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (per vertex)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="297"/>
+        <location filename="../app/window/main_window_actions.cpp" line="297"/>
         <source>&amp;Flat (per triangle)</source>
         <translation>&amp;Flat (per triangle)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="339"/>
+        <location filename="../app/window/main_window_actions.cpp" line="339"/>
         <source>Pro&amp;jection</source>
         <translation>Pro&amp;jection</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="344"/>
+        <location filename="../app/window/main_window_actions.cpp" line="344"/>
         <source>&amp;Clip at the Near Plane (nothing behind the eye is divided)</source>
         <translation>&amp;Clip at the Near Plane (nothing behind the eye is divided)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="346"/>
+        <location filename="../app/window/main_window_actions.cpp" line="346"/>
         <source>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</source>
         <translation>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="348"/>
+        <location filename="../app/window/main_window_actions.cpp" line="348"/>
         <source>&amp;Same Side (clip only triangles that cross the eye plane)</source>
         <translation>&amp;Same Side (clip only triangles that cross the eye plane)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="638"/>
+        <location filename="../app/window/main_window.cpp" line="676"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="943"/>
+        <location filename="../app/window/main_window.cpp" line="981"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1031"/>
+        <location filename="../app/window/main_window.cpp" line="1069"/>
         <source>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</source>
         <translation>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1045"/>
+        <location filename="../app/window/main_window.cpp" line="1083"/>
         <source>step forward</source>
         <translation>step forward</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1046"/>
+        <location filename="../app/window/main_window.cpp" line="1084"/>
         <source>step back</source>
         <translation>step back</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1049"/>
+        <location filename="../app/window/main_window.cpp" line="1087"/>
         <source>play / pause</source>
         <translation>play / pause</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1051"/>
+        <location filename="../app/window/main_window.cpp" line="1089"/>
         <source>jump to the start / the end of the frame</source>
         <translation>jump to the start / the end of the frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1052"/>
+        <location filename="../app/window/main_window.cpp" line="1090"/>
         <source>continue to the next breakpoint</source>
         <translation>continue to the next breakpoint</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1053"/>
+        <location filename="../app/window/main_window.cpp" line="1091"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>step by stage, triangle, scanline, span, pixel</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1054"/>
+        <location filename="../app/window/main_window.cpp" line="1092"/>
         <source>show a stage&apos;s view</source>
         <translation>show a stage&apos;s view</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1055"/>
+        <location filename="../app/window/main_window.cpp" line="1093"/>
         <source>Click, arrows</source>
         <translation>Click, arrows</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1055"/>
+        <location filename="../app/window/main_window.cpp" line="1093"/>
         <source>pick a pixel, move it by one</source>
         <translation>pick a pixel, move it by one</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1058"/>
+        <location filename="../app/window/main_window.cpp" line="1096"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, double-click on a panel&apos;s title</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1059"/>
+        <location filename="../app/window/main_window.cpp" line="1097"/>
         <source>fill the window with the panel (the image, from the image), and back</source>
         <translation>fill the window with the panel (the image, from the image), and back</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1061"/>
+        <location filename="../app/window/main_window.cpp" line="1099"/>
         <source>open, export the image, export it as displayed</source>
         <translation>open, export the image, export it as displayed</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1064"/>
+        <location filename="../app/window/main_window.cpp" line="1102"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>fit, actual size, zoom in, zoom out</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1066"/>
+        <location filename="../app/window/main_window.cpp" line="1104"/>
         <source>Keyboard Shortcuts</source>
         <translation>Keyboard Shortcuts</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="316"/>
+        <location filename="../app/window/main_window_actions.cpp" line="316"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Rasterization Rules</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="321"/>
+        <location filename="../app/window/main_window_actions.cpp" line="321"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="323"/>
+        <location filename="../app/window/main_window_actions.cpp" line="323"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="325"/>
+        <location filename="../app/window/main_window_actions.cpp" line="325"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (seed 001&apos;s reference images)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="362"/>
+        <location filename="../app/window/main_window_actions.cpp" line="362"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="368"/>
+        <location filename="../app/window/main_window_actions.cpp" line="368"/>
         <source>&amp;User Guide</source>
         <translation>&amp;User Guide</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="374"/>
+        <location filename="../app/window/main_window_actions.cpp" line="374"/>
         <source>The user guide is not installed</source>
         <translation>The user guide is not installed</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="376"/>
+        <location filename="../app/window/main_window_actions.cpp" line="376"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="275"/>
+        <location filename="../app/window/main_window.cpp" line="275"/>
         <source>Messages</source>
         <translation>Messages</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="280"/>
+        <location filename="../app/window/main_window.cpp" line="280"/>
         <source>Scene</source>
         <translation>Scene</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="300"/>
+        <location filename="../app/window/main_window.cpp" line="300"/>
         <source>Accuracy</source>
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="612"/>
-        <location filename="../app/main_window_export.cpp" line="35"/>
-        <location filename="../app/main_window_export.cpp" line="133"/>
-        <location filename="../app/main_window_export.cpp" line="175"/>
-        <location filename="../app/main_window_export.cpp" line="209"/>
+        <location filename="../app/window/main_window.cpp" line="650"/>
+        <location filename="../app/window/main_window_export.cpp" line="35"/>
+        <location filename="../app/window/main_window_export.cpp" line="133"/>
+        <location filename="../app/window/main_window_export.cpp" line="175"/>
+        <location filename="../app/window/main_window_export.cpp" line="209"/>
         <source>%1: cannot export the image: %2</source>
         <translation>%1: cannot export the image: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="27"/>
+        <location filename="../app/window/main_window_export.cpp" line="27"/>
         <source>nothing has been rendered yet</source>
         <translation>nothing has been rendered yet</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="30"/>
+        <location filename="../app/window/main_window_export.cpp" line="30"/>
         <source>Exported %1</source>
         <translation>Exported %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="665"/>
+        <location filename="../app/window/main_window.cpp" line="703"/>
         <source>rendering...</source>
         <translation>rendering...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="665"/>
+        <location filename="../app/window/main_window.cpp" line="703"/>
         <source>%1, rendering...</source>
         <translation>%1, rendering...</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="663"/>
-        <location filename="../app/main_window.cpp" line="906"/>
+        <location filename="../app/window/main_window.cpp" line="701"/>
+        <location filename="../app/window/main_window.cpp" line="944"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="49"/>
+        <location filename="../app/window/main_window_actions.cpp" line="49"/>
         <source>&amp;Open...</source>
         <translation>&amp;Open...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="52"/>
+        <location filename="../app/window/main_window_actions.cpp" line="52"/>
         <source>A course camera, lighting or object file, or a command file</source>
         <translation>A course camera, lighting or object file, or a command file</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="53"/>
+        <location filename="../app/window/main_window_actions.cpp" line="53"/>
         <source>Open O&amp;bject...</source>
         <translation>Open O&amp;bject...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="55"/>
+        <location filename="../app/window/main_window_actions.cpp" line="55"/>
         <source>Ctrl+Shift+B</source>
         <translation>Ctrl+Shift+B</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="101"/>
+        <location filename="../app/window/main_window_actions.cpp" line="101"/>
         <source>Course File La&amp;youts</source>
         <translation>Course File La&amp;youts</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="184"/>
+        <location filename="../app/window/main_window_actions.cpp" line="184"/>
         <source>Pa&amp;nels</source>
         <translation>Pa&amp;nels</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="199"/>
+        <location filename="../app/window/main_window_actions.cpp" line="199"/>
         <source>I&amp;mage</source>
         <translation>I&amp;mage</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="217"/>
+        <location filename="../app/window/main_window_actions.cpp" line="217"/>
         <source>Lan&amp;guage</source>
         <translation>Lan&amp;guage</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="250"/>
+        <location filename="../app/window/main_window_actions.cpp" line="250"/>
         <source>Step B&amp;y</source>
         <translation>Step B&amp;y</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="252"/>
+        <location filename="../app/window/main_window_actions.cpp" line="252"/>
         <source>S&amp;tage</source>
         <translation>S&amp;tage</translation>
     </message>
     <message>
-        <location filename="../app/main_window_actions.cpp" line="363"/>
+        <location filename="../app/window/main_window_actions.cpp" line="363"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Keyboard Shortcuts</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="378"/>
+        <location filename="../app/window/main_window.cpp" line="382"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="595"/>
+        <location filename="../app/window/main_window.cpp" line="633"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="673"/>
+        <location filename="../app/window/main_window.cpp" line="711"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparing the stepping of this frame</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="673"/>
+        <location filename="../app/window/main_window.cpp" line="711"/>
         <source>Rendering</source>
         <translation>Rendering</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="849"/>
+        <location filename="../app/window/main_window.cpp" line="887"/>
         <source>Error: %1</source>
         <translation>Error: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="873"/>
+        <location filename="../app/window/main_window.cpp" line="911"/>
         <source>Files</source>
         <translation>Files</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="876"/>
+        <location filename="../app/window/main_window.cpp" line="914"/>
         <source>Command file</source>
         <translation>Command file</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="877"/>
+        <location filename="../app/window/main_window.cpp" line="915"/>
         <source>Image</source>
         <translation>Image</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="879"/>
+        <location filename="../app/window/main_window.cpp" line="917"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="889"/>
+        <location filename="../app/window/main_window.cpp" line="927"/>
         <source>Camera</source>
         <translation>Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="890"/>
+        <location filename="../app/window/main_window.cpp" line="928"/>
         <source>Lighting</source>
         <translation>Lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="891"/>
+        <location filename="../app/window/main_window.cpp" line="929"/>
         <source>Object</source>
         <translation>Object</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="893"/>
+        <location filename="../app/window/main_window.cpp" line="931"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="260"/>
-        <location filename="../app/main_window.cpp" line="900"/>
+        <location filename="../app/window/main_window.cpp" line="260"/>
+        <location filename="../app/window/main_window.cpp" line="938"/>
         <source>Stages</source>
         <translation>Stages</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="104"/>
+        <location filename="../app/window/main_window.cpp" line="104"/>
         <source>%1 (the %2 example)</source>
         <translation>%1 (the %2 example)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="293"/>
+        <location filename="../app/window/main_window.cpp" line="293"/>
         <source>7 Pixel inspector</source>
         <translation>7 Pixel inspector</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="322"/>
+        <location filename="../app/window/main_window.cpp" line="322"/>
         <source>1 Camera</source>
         <translation>1 Camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="325"/>
+        <location filename="../app/window/main_window.cpp" line="325"/>
         <source>5 Scan</source>
         <translation>5 Scan</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="328"/>
+        <location filename="../app/window/main_window.cpp" line="328"/>
         <source>2 View</source>
         <translation>2 View</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="336"/>
+        <location filename="../app/window/main_window.cpp" line="336"/>
         <source>4b Clipping</source>
         <translation>4b Clipping</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="338"/>
+        <location filename="../app/window/main_window.cpp" line="338"/>
         <source>4b Near-plane clipping (seed 002)</source>
         <translation>4b Near-plane clipping (seed 002)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="341"/>
+        <location filename="../app/window/main_window.cpp" line="341"/>
         <source>5b Trapezoids: the scan of seed 002</source>
         <translation>5b Trapezoids: the scan of seed 002</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="346"/>
+        <location filename="../app/window/main_window.cpp" line="346"/>
         <source>Painter</source>
         <translation>Painter</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="347"/>
+        <location filename="../app/window/main_window.cpp" line="347"/>
         <source>Painter&apos;s algorithm (seed 004)</source>
         <translation>Painter&apos;s algorithm (seed 004)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="352"/>
+        <location filename="../app/window/main_window.cpp" line="352"/>
         <source>Compare</source>
         <translation>Compare</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="352"/>
+        <location filename="../app/window/main_window.cpp" line="352"/>
         <source>Compare with their image</source>
         <translation>Compare with their image</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="871"/>
+        <location filename="../app/window/main_window.cpp" line="909"/>
         <source>Lesson: %1</source>
         <translation>Lesson: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="907"/>
+        <location filename="../app/window/main_window.cpp" line="945"/>
         <source>skipped: %1</source>
         <translation>skipped: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="910"/>
+        <location filename="../app/window/main_window.cpp" line="948"/>
         <source>Counts</source>
         <translation>Counts</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="911"/>
+        <location filename="../app/window/main_window.cpp" line="949"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="914"/>
+        <location filename="../app/window/main_window.cpp" line="952"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="917"/>
+        <location filename="../app/window/main_window.cpp" line="955"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="921"/>
+        <location filename="../app/window/main_window.cpp" line="959"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="945"/>
+        <location filename="../app/window/main_window.cpp" line="983"/>
         <source>empty (+inf)</source>
         <translation>empty (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="946"/>
+        <location filename="../app/window/main_window.cpp" line="984"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   depth %6</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="962"/>
+        <location filename="../app/window/main_window.cpp" line="1000"/>
         <source>Open Command File</source>
         <translation>Open Command File</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="963"/>
+        <location filename="../app/window/main_window.cpp" line="1001"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Command files (*.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="969"/>
+        <location filename="../app/window/main_window.cpp" line="1007"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="969"/>
+        <location filename="../app/window/main_window.cpp" line="1007"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="979"/>
+        <location filename="../app/window/main_window.cpp" line="1017"/>
         <source>Export PNG</source>
         <translation>Export PNG</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="979"/>
-        <location filename="../app/main_window_actions.cpp" line="149"/>
-        <location filename="../app/main_window_actions.cpp" line="156"/>
-        <location filename="../app/main_window_export.cpp" line="198"/>
-        <location filename="../app/main_window_export.cpp" line="206"/>
+        <location filename="../app/window/main_window.cpp" line="1017"/>
+        <location filename="../app/window/main_window_actions.cpp" line="149"/>
+        <location filename="../app/window/main_window_actions.cpp" line="156"/>
+        <location filename="../app/window/main_window_export.cpp" line="198"/>
+        <location filename="../app/window/main_window_export.cpp" line="206"/>
         <source>PNG images (*.png)</source>
         <translation>PNG images (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="984"/>
+        <location filename="../app/window/main_window.cpp" line="1022"/>
         <source>Compare with Image</source>
         <translation>Compare with Image</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="985"/>
+        <location filename="../app/window/main_window.cpp" line="1023"/>
         <source>PNG images (*.png);;All files (*)</source>
         <translation>PNG images (*.png);;All files (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/main_window.cpp" line="1010"/>
+        <location filename="../app/window/main_window.cpp" line="1048"/>
         <source>Compared %1 with our render: %n pixel(s) differ</source>
         <translation>
             <numerusform>Compared %1 with our render: %n pixel differs</numerusform>
@@ -4548,259 +4548,259 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1018"/>
+        <location filename="../app/window/main_window.cpp" line="1056"/>
         <source>About RasterLab</source>
         <translation>About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1024"/>
+        <location filename="../app/window/main_window.cpp" line="1062"/>
         <source>Released under the MIT License, whose text is in %1.</source>
         <translation>Released under the MIT License, whose text is in %1.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1026"/>
+        <location filename="../app/window/main_window.cpp" line="1064"/>
         <source>Released under the MIT License.</source>
         <translation>Released under the MIT License.</translation>
     </message>
     <message>
-        <location filename="../app/main_window.cpp" line="1027"/>
+        <location filename="../app/window/main_window.cpp" line="1065"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="42"/>
+        <location filename="../app/window/main_window_export.cpp" line="42"/>
         <source>%1: cannot export the depth buffer: %2</source>
         <translation>%1: cannot export the depth buffer: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="47"/>
+        <location filename="../app/window/main_window_export.cpp" line="47"/>
         <source>%1: cannot export the normal buffer: %2</source>
         <translation>%1: cannot export the normal buffer: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="63"/>
+        <location filename="../app/window/main_window_export.cpp" line="63"/>
         <source>%1: cannot export the shadings side by side: %2</source>
         <translation>%1: cannot export the shadings side by side: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="65"/>
+        <location filename="../app/window/main_window_export.cpp" line="65"/>
         <source>it needs a course scene</source>
         <translation>it needs a course scene</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="70"/>
+        <location filename="../app/window/main_window_export.cpp" line="70"/>
         <source>Flat</source>
         <translation>Flat</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="104"/>
+        <location filename="../app/window/main_window_export.cpp" line="104"/>
         <source>%1: cannot export the view: there is no view %2</source>
         <translation>%1: cannot export the view: there is no view %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="107"/>
+        <location filename="../app/window/main_window_export.cpp" line="107"/>
         <source>%1: cannot export the view: %2</source>
         <translation>%1: cannot export the view: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="113"/>
+        <location filename="../app/window/main_window_export.cpp" line="113"/>
         <source>%1: cannot export the steps: the frame cannot be stepped through yet</source>
         <translation>%1: cannot export the steps: the frame cannot be stepped through yet</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="117"/>
-        <location filename="../app/main_window_export.cpp" line="151"/>
+        <location filename="../app/window/main_window_export.cpp" line="117"/>
+        <location filename="../app/window/main_window_export.cpp" line="151"/>
         <source>%1: cannot create the folder</source>
         <translation>%1: cannot create the folder</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="122"/>
+        <location filename="../app/window/main_window_export.cpp" line="122"/>
         <source>Exporting the steps...</source>
         <translation>Exporting the steps...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="144"/>
+        <location filename="../app/window/main_window_export.cpp" line="144"/>
         <source>Exported %1 images to %2</source>
         <translation>Exported %1 images to %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="159"/>
+        <location filename="../app/window/main_window_export.cpp" line="159"/>
         <source>Exporting the animation&apos;s frames...</source>
         <translation>Exporting the animation&apos;s frames...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="184"/>
+        <location filename="../app/window/main_window_export.cpp" line="184"/>
         <source>%1: cannot render the frame: %2</source>
         <translation>%1: cannot render the frame: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="185"/>
+        <location filename="../app/window/main_window_export.cpp" line="185"/>
         <source>Exported %1 frames to %2</source>
         <translation>Exported %1 frames to %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="191"/>
+        <location filename="../app/window/main_window_export.cpp" line="191"/>
         <source>Folder for the Animation&apos;s Frames</source>
         <translation>Folder for the Animation&apos;s Frames</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="196"/>
+        <location filename="../app/window/main_window_export.cpp" line="196"/>
         <source>Export the Image as Displayed</source>
         <translation>Export the Image as Displayed</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="205"/>
+        <location filename="../app/window/main_window_export.cpp" line="205"/>
         <source>Export a Buffer</source>
         <translation>Export a Buffer</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="219"/>
+        <location filename="../app/window/main_window_export.cpp" line="219"/>
         <source>Folder for the Numbered Images</source>
         <translation>Folder for the Numbered Images</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="223"/>
+        <location filename="../app/window/main_window_export.cpp" line="223"/>
         <source>Stepping Sequence</source>
         <translation>Stepping Sequence</translation>
     </message>
     <message>
-        <location filename="../app/main_window_export.cpp" line="224"/>
+        <location filename="../app/window/main_window_export.cpp" line="224"/>
         <source>At most how many images (one per step, at the current granularity)?</source>
         <translation>At most how many images (one per step, at the current granularity)?</translation>
     </message>
     <message>
-        <location filename="../app/main_window_files.cpp" line="118"/>
+        <location filename="../app/window/main_window_files.cpp" line="118"/>
         <source>%1: no course camera, lighting, object or command file in this folder</source>
         <translation>%1: no course camera, lighting, object or command file in this folder</translation>
     </message>
     <message>
-        <location filename="../app/main_window_files.cpp" line="122"/>
+        <location filename="../app/window/main_window_files.cpp" line="122"/>
         <source>%1: no such file</source>
         <translation>%1: no such file</translation>
     </message>
     <message>
-        <location filename="../app/main_window_files.cpp" line="140"/>
+        <location filename="../app/window/main_window_files.cpp" line="140"/>
         <source>%1: not a course camera, lighting or object file, nor a command file (expected a .byu object, a camera or lighting in one of the course layouts, or png/xyz/tri commands)</source>
         <translation>%1: not a course camera, lighting or object file, nor a command file (expected a .byu object, a camera or lighting in one of the course layouts, or png/xyz/tri commands)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_files.cpp" line="180"/>
+        <location filename="../app/window/main_window_files.cpp" line="180"/>
         <source>&amp;Clear the List</source>
         <translation>&amp;Clear the List</translation>
     </message>
     <message>
-        <location filename="../app/main_window_files.cpp" line="251"/>
+        <location filename="../app/window/main_window_files.cpp" line="251"/>
         <source>%1 changed on disk: read again</source>
         <translation>%1 changed on disk: read again</translation>
     </message>
     <message>
-        <location filename="../app/main_window_docks.cpp" line="199"/>
+        <location filename="../app/window/main_window_docks.cpp" line="199"/>
         <source>%1 fills the window: F11 or a double-click on its title gives the layout back</source>
         <translation>%1 fills the window: F11 or a double-click on its title gives the layout back</translation>
     </message>
     <message>
-        <location filename="../app/main_window_docks.cpp" line="200"/>
+        <location filename="../app/window/main_window_docks.cpp" line="200"/>
         <source>The image</source>
         <translation>The image</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="79"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="79"/>
         <source>E&amp;xamples</source>
         <translation>E&amp;xamples</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="89"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="89"/>
         <source>Open Lesso&amp;n...</source>
         <translation>Open Lesso&amp;n...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="90"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="90"/>
         <source>Ctrl+Alt+O</source>
         <translation>Ctrl+Alt+O</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="92"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="92"/>
         <source>A lesson file (.rasterlab): a scene with its stepping, picked pixel, breakpoints, zoom and docks</source>
         <translation>A lesson file (.rasterlab): a scene with its stepping, picked pixel, breakpoints, zoom and docks</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="94"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="94"/>
         <source>Save Lesson &amp;As...</source>
         <translation>Save Lesson &amp;As...</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="95"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="95"/>
         <source>Ctrl+Alt+S</source>
         <translation>Ctrl+Alt+S</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="97"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="97"/>
         <source>Recent Lesso&amp;ns</source>
         <translation>Recent Lesso&amp;ns</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="123"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="123"/>
         <source>Open Lesson</source>
         <translation>Open Lesson</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="124"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="124"/>
         <source>Lessons (*.rasterlab);;All files (*)</source>
         <translation>Lessons (*.rasterlab);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="129"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="129"/>
         <source>Save Lesson</source>
         <translation>Save Lesson</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="130"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="130"/>
         <source>Lessons (*.rasterlab)</source>
         <translation>Lessons (*.rasterlab)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="133"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="133"/>
         <source>Saved the lesson to %1</source>
         <translation>Saved the lesson to %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="138"/>
-        <location filename="../app/main_window_lessons.cpp" line="151"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="138"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="151"/>
         <source>there is no example named &apos;%1&apos; (examples: %2)</source>
         <translation>there is no example named &apos;%1&apos; (examples: %2)</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="166"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="166"/>
         <source>the %1 was not restored, the one shown stays: %2</source>
         <translation>the %1 was not restored, the one shown stays: %2</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="169"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="169"/>
         <source>camera</source>
         <translation>camera</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="170"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="170"/>
         <source>lighting</source>
         <translation>lighting</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="171"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="171"/>
         <source>object</source>
         <translation>object</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="174"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="174"/>
         <source>the command file was not restored, the scene shown stays: %1</source>
         <translation>the command file was not restored, the scene shown stays: %1</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="223"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="223"/>
         <source>The lesson opened, but not all of it: see the Messages dock</source>
         <translation>The lesson opened, but not all of it: see the Messages dock</translation>
     </message>
     <message>
-        <location filename="../app/main_window_lessons.cpp" line="340"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="352"/>
         <source>%1: cannot save the lesson: %2</source>
         <translation>%1: cannot save the lesson: %2</translation>
     </message>
@@ -4848,232 +4848,232 @@
         <translation>not finite</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="181"/>
+        <location filename="../views/near_clip_view.cpp" line="206"/>
         <source>No triangle to show: select one, step into the frame, or choose one in the list.</source>
         <translation>No triangle to show: select one, step into the frame, or choose one in the list.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="240"/>
+        <location filename="../views/near_clip_view.cpp" line="265"/>
         <source>side view: w across (view z for the course camera), view %1 up</source>
         <translation>side view: w across (view z for the course camera), view %1 up</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="367"/>
+        <location filename="../views/near_clip_view.cpp" line="392"/>
         <source>w = near = %1</source>
         <translation>w = near = %1</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="370"/>
+        <location filename="../views/near_clip_view.cpp" line="395"/>
         <source>the plane w = near = %1 is far to the left, out of the picture</source>
         <translation>the plane w = near = %1 is far to the left, out of the picture</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="377"/>
+        <location filename="../views/near_clip_view.cpp" line="402"/>
         <source>eye</source>
         <translation>eye</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="381"/>
+        <location filename="../views/near_clip_view.cpp" line="405"/>
         <source>the eye (w = 0) is far to the left, out of the picture</source>
         <translation>the eye (w = 0) is far to the left, out of the picture</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="389"/>
+        <location filename="../views/near_clip_view.cpp" line="413"/>
         <source>on the screen (pixels)</source>
         <translation>on the screen (pixels)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="393"/>
+        <location filename="../views/near_clip_view.cpp" line="417"/>
         <source>The last step projects the triangles drawn.</source>
         <translation>The last step projects the triangles drawn.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="439"/>
+        <location filename="../views/near_clip_view.cpp" line="463"/>
         <source>zoomed: x %1 to %2, y %3 to %4</source>
         <translation>zoomed: x %1 to %2, y %3 to %4</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="472"/>
+        <location filename="../views/near_clip_view.cpp" line="496"/>
         <source>image %1 × %2</source>
         <translation>image %1 × %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="477"/>
+        <location filename="../views/near_clip_view.cpp" line="501"/>
         <source>Nothing drawn.</source>
         <translation>Nothing drawn.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="485"/>
+        <location filename="../views/near_clip_view.cpp" line="509"/>
         <source>The triangle shown: the one selected, or one the near plane cut</source>
         <translation>The triangle shown: the one selected, or one the near plane cut</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="488"/>
+        <location filename="../views/near_clip_view.cpp" line="512"/>
         <source>y up</source>
         <translation>y up</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="489"/>
+        <location filename="../views/near_clip_view.cpp" line="513"/>
         <source>x up</source>
         <translation>x up</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="490"/>
+        <location filename="../views/near_clip_view.cpp" line="514"/>
         <source>Which view axis the side view draws upward</source>
         <translation>Which view axis the side view draws upward</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="491"/>
+        <location filename="../views/near_clip_view.cpp" line="515"/>
         <source>Back</source>
         <translation>Back</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="493"/>
+        <location filename="../views/near_clip_view.cpp" line="517"/>
         <source>Next</source>
         <translation>Next</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="495"/>
+        <location filename="../views/near_clip_view.cpp" line="519"/>
         <source>All</source>
         <translation>All</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="561"/>
+        <location filename="../views/near_clip_view.cpp" line="585"/>
         <source>The triangle selected (or being drawn)</source>
         <translation>The triangle selected (or being drawn)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="569"/>
+        <location filename="../views/near_clip_view.cpp" line="593"/>
         <source>triangle %1: %2</source>
         <translation>triangle %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="663"/>
+        <location filename="../views/near_clip_view.cpp" line="687"/>
         <source>step %1 of %2</source>
         <translation>step %1 of %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="673"/>
+        <location filename="../views/near_clip_view.cpp" line="697"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="674"/>
+        <location filename="../views/near_clip_view.cpp" line="698"/>
         <source>No triangle to show: select one or step into the frame.</source>
         <translation>No triangle to show: select one or step into the frame.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="676"/>
+        <location filename="../views/near_clip_view.cpp" line="700"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2: %3</source>
         <translation>&lt;b&gt;Triangle %1&lt;/b&gt; of %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="703"/>
+        <location filename="../views/near_clip_view.cpp" line="727"/>
         <source>The seed clips each triangle against the plane z = &amp;minus;&amp;epsilon;, P = [0, 0, &amp;minus;1, &amp;epsilon;], before the perspective divide (OpenGL&apos;s camera looks along &amp;minus;z). The projection stage clips against w = near in clip space, here near = %1, so P = %2 and a point A is kept when dot(P, A) = w &amp;minus; near &amp;ge; 0.</source>
         <translation>The seed clips each triangle against the plane z = &amp;minus;&amp;epsilon;, P = [0, 0, &amp;minus;1, &amp;epsilon;], before the perspective divide (OpenGL&apos;s camera looks along &amp;minus;z). The projection stage clips against w = near in clip space, here near = %1, so P = %2 and a point A is kept when dot(P, A) = w &amp;minus; near &amp;ge; 0.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="710"/>
+        <location filename="../views/near_clip_view.cpp" line="734"/>
         <source>For the course camera w is the view z: the camera looks along +z, and the plane is z = near, P = [0, 0, 1, &amp;minus;near].</source>
         <translation>For the course camera w is the view z: the camera looks along +z, and the plane is z = near, P = [0, 0, 1, &amp;minus;near].</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="713"/>
+        <location filename="../views/near_clip_view.cpp" line="737"/>
         <source>(Written out, the seed&apos;s P keeps z &amp;le; &amp;epsilon;; the plane z = &amp;minus;&amp;epsilon; it names is P = [0, 0, &amp;minus;1, &amp;minus;&amp;epsilon;]. Either way the plane lies a little in front of the eye, so no vertex drawn is divided by w = 0.)</source>
         <translation>(Written out, the seed&apos;s P keeps z &amp;le; &amp;epsilon;; the plane z = &amp;minus;&amp;epsilon; it names is P = [0, 0, &amp;minus;1, &amp;minus;&amp;epsilon;]. Either way the plane lies a little in front of the eye, so no vertex drawn is divided by w = 0.)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="717"/>
+        <location filename="../views/near_clip_view.cpp" line="741"/>
         <source>A0 = %1, A1 = %2, A2 = %3 (view space).</source>
         <translation>A0 = %1, A1 = %2, A2 = %3 (view space).</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="721"/>
+        <location filename="../views/near_clip_view.cpp" line="745"/>
         <source>This scene does not clip against the near plane (the naive or same-side projection): the steps show what clipping would do.</source>
         <translation>This scene does not clip against the near plane (the naive or same-side projection): the steps show what clipping would do.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="726"/>
+        <location filename="../views/near_clip_view.cpp" line="750"/>
         <source>The draw&apos;s clip planes cut the triangle first; the polygon the stage drew may differ from the one here.</source>
         <translation>The draw&apos;s clip planes cut the triangle first; the polygon the stage drew may differ from the one here.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="733"/>
+        <location filename="../views/near_clip_view.cpp" line="757"/>
         <source>Vertex %1: dot(P, %1) = %2</source>
         <translation>Vertex %1: dot(P, %1) = %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="736"/>
+        <location filename="../views/near_clip_view.cpp" line="760"/>
         <source>kept, added to the output polygon as q%1.</source>
         <translation>kept, added to the output polygon as q%1.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="738"/>
+        <location filename="../views/near_clip_view.cpp" line="762"/>
         <source>behind the plane, left out.</source>
         <translation>behind the plane, left out.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="742"/>
+        <location filename="../views/near_clip_view.cpp" line="766"/>
         <source>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 have the same sign: the edge does not cross the plane.</source>
         <translation>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 have the same sign: the edge does not cross the plane.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="746"/>
+        <location filename="../views/near_clip_view.cpp" line="770"/>
         <source>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 differ in sign: t = (0 &amp;minus; %5) / (%6 &amp;minus; %5) = %7, C = lerp(t, %1, %2) = %8, added as q%9.</source>
         <translation>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 differ in sign: t = (0 &amp;minus; %5) / (%6 &amp;minus; %5) = %7, C = lerp(t, %1, %2) = %8, added as q%9.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="754"/>
+        <location filename="../views/near_clip_view.cpp" line="778"/>
         <source>(The stage computes the same point from %1, the end in front, with t&apos; = 1 &amp;minus; t = %2, so that the two triangles sharing the edge get it bit for bit.)</source>
         <translation>(The stage computes the same point from %1, the end in front, with t&apos; = 1 &amp;minus; t = %2, so that the two triangles sharing the edge get it bit for bit.)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="765"/>
+        <location filename="../views/near_clip_view.cpp" line="789"/>
         <source>Output polygon: empty. The triangle lies wholly behind the plane: nothing is drawn.</source>
         <translation>Output polygon: empty. The triangle lies wholly behind the plane: nothing is drawn.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="771"/>
+        <location filename="../views/near_clip_view.cpp" line="795"/>
         <source>Output polygon, %1 vertices: %2.</source>
         <translation>Output polygon, %1 vertices: %2.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="775"/>
+        <location filename="../views/near_clip_view.cpp" line="799"/>
         <source>The triangle is wholly in front: untouched.</source>
         <translation>The triangle is wholly in front: untouched.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="782"/>
+        <location filename="../views/near_clip_view.cpp" line="806"/>
         <source>Four vertices: split along the diagonal q0&amp;ndash;q2 into the triangles q0 q1 q2 and q0 q2 q3, rendered separately.</source>
         <translation>Four vertices: split along the diagonal q0&amp;ndash;q2 into the triangles q0 q1 q2 and q0 q2 q3, rendered separately.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="785"/>
+        <location filename="../views/near_clip_view.cpp" line="809"/>
         <source>Three vertices: one triangle, nothing to split.</source>
         <translation>Three vertices: one triangle, nothing to split.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="787"/>
+        <location filename="../views/near_clip_view.cpp" line="811"/>
         <source>Fewer than three vertices: no triangle.</source>
         <translation>Fewer than three vertices: no triangle.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="790"/>
+        <location filename="../views/near_clip_view.cpp" line="814"/>
         <source>Then each vertex is projected and taken to pixels.</source>
         <translation>Then each vertex is projected and taken to pixels.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="793"/>
+        <location filename="../views/near_clip_view.cpp" line="817"/>
         <source>Nothing was drawn from this triangle (%1).</source>
         <translation>Nothing was drawn from this triangle (%1).</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="797"/>
+        <location filename="../views/near_clip_view.cpp" line="821"/>
         <source>Triangle %1: %2, %3, %4 (pixels)</source>
         <translation>Triangle %1: %2, %3, %4 (pixels)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="804"/>
+        <location filename="../views/near_clip_view.cpp" line="828"/>
         <source>(%1 of the %2 triangles were drawn: %3.)</source>
         <translation>(%1 of the %2 triangles were drawn: %3.)</translation>
     </message>
@@ -5439,52 +5439,52 @@
 <context>
     <name>rasterlab::PixelInspector</name>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="128"/>
+        <location filename="../views/pixel_inspector.cpp" line="139"/>
         <source>%1 = byte 255</source>
         <translation>%1 = byte 255</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="217"/>
+        <location filename="../views/pixel_inspector.cpp" line="227"/>
         <source>no normal</source>
         <translation>no normal</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="283"/>
+        <location filename="../views/pixel_inspector.cpp" line="293"/>
         <source>in the plane of N and L</source>
         <translation>in the plane of N and L</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="318"/>
+        <location filename="../views/pixel_inspector.cpp" line="328"/>
         <source>Step</source>
         <translation>Step</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="318"/>
+        <location filename="../views/pixel_inspector.cpp" line="328"/>
         <source>Triangle</source>
         <translation>Triangle</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="318"/>
+        <location filename="../views/pixel_inspector.cpp" line="328"/>
         <source>Depth test</source>
         <translation>Depth test</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="319"/>
+        <location filename="../views/pixel_inspector.cpp" line="329"/>
         <source>Before</source>
         <translation>Before</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="319"/>
+        <location filename="../views/pixel_inspector.cpp" line="329"/>
         <source>After</source>
         <translation>After</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="319"/>
+        <location filename="../views/pixel_inspector.cpp" line="329"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="334"/>
+        <location filename="../views/pixel_inspector.cpp" line="344"/>
         <source>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</source>
         <translation>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</translation>
     </message>
@@ -5854,103 +5854,103 @@
         <translation>Ke = %1: the material&apos;s own light</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="476"/>
+        <location filename="../views/pixel_inspector.cpp" line="486"/>
         <source>start</source>
         <translation>start</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="482"/>
-        <location filename="../views/pixel_inspector.cpp" line="683"/>
+        <location filename="../views/pixel_inspector.cpp" line="492"/>
+        <location filename="../views/pixel_inspector.cpp" line="701"/>
         <source>end</source>
         <translation>end</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="490"/>
+        <location filename="../views/pixel_inspector.cpp" line="500"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>holds the pixel at the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="491"/>
+        <location filename="../views/pixel_inspector.cpp" line="501"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>not reached yet by the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="506"/>
+        <location filename="../views/pixel_inspector.cpp" line="516"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="507"/>
+        <location filename="../views/pixel_inspector.cpp" line="517"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Without stepping, the colours of writes overwritten later are not kept.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="624"/>
+        <location filename="../views/pixel_inspector.cpp" line="642"/>
         <source>Before: %1</source>
         <translation>Before: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="664"/>
+        <location filename="../views/pixel_inspector.cpp" line="682"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="667"/>
+        <location filename="../views/pixel_inspector.cpp" line="685"/>
         <source>The cleared pixel is not lit.</source>
         <translation>The cleared pixel is not lit.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="670"/>
+        <location filename="../views/pixel_inspector.cpp" line="688"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="682"/>
+        <location filename="../views/pixel_inspector.cpp" line="700"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Lighting of step %1, triangle %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="687"/>
+        <location filename="../views/pixel_inspector.cpp" line="705"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejected: this colour was never written)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="700"/>
+        <location filename="../views/pixel_inspector.cpp" line="718"/>
         <source>object colour</source>
         <translation>object colour</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="703"/>
+        <location filename="../views/pixel_inspector.cpp" line="721"/>
         <source>emission</source>
         <translation>emission</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="705"/>
+        <location filename="../views/pixel_inspector.cpp" line="723"/>
         <source>ambient</source>
         <translation>ambient</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="710"/>
+        <location filename="../views/pixel_inspector.cpp" line="728"/>
         <source>diffuse %1</source>
         <translation>diffuse %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="713"/>
+        <location filename="../views/pixel_inspector.cpp" line="731"/>
         <source>specular %1</source>
         <translation>specular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="717"/>
+        <location filename="../views/pixel_inspector.cpp" line="735"/>
         <source>diffuse</source>
         <translation>diffuse</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="719"/>
+        <location filename="../views/pixel_inspector.cpp" line="737"/>
         <source>specular</source>
         <translation>specular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="747"/>
+        <location filename="../views/pixel_inspector.cpp" line="765"/>
         <source>No special case: every term applies as written.</source>
         <translation>No special case: every term applies as written.</translation>
     </message>
@@ -6162,296 +6162,296 @@
 <context>
     <name>rasterlab::ScanlineView</name>
     <message>
-        <location filename="../views/scanline_view.cpp" line="250"/>
+        <location filename="../views/scanline_view.cpp" line="270"/>
         <source>No triangle to show: step into the frame or pick a pixel.</source>
         <translation>No triangle to show: step into the frame or pick a pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="448"/>
+        <location filename="../views/scanline_view.cpp" line="236"/>
         <source>long edge</source>
         <translation>long edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="449"/>
+        <location filename="../views/scanline_view.cpp" line="236"/>
         <source>upper edge</source>
         <translation>upper edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="450"/>
+        <location filename="../views/scanline_view.cpp" line="237"/>
         <source>lower edge</source>
         <translation>lower edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="520"/>
+        <location filename="../views/scanline_view.cpp" line="574"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="523"/>
+        <location filename="../views/scanline_view.cpp" line="577"/>
         <source>Start of the frame: step forward to walk the first triangle, or pick a pixel to see the triangle holding it.</source>
         <translation>Start of the frame: step forward to walk the first triangle, or pick a pixel to see the triangle holding it.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="526"/>
+        <location filename="../views/scanline_view.cpp" line="580"/>
         <source>Pick a pixel, or step through the frame, to see a triangle scan converted.</source>
         <translation>Pick a pixel, or step through the frame, to see a triangle scan converted.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="531"/>
+        <location filename="../views/scanline_view.cpp" line="585"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</source>
         <translation>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="534"/>
+        <location filename="../views/scanline_view.cpp" line="588"/>
         <source>scanline %1</source>
         <translation>scanline %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="536"/>
+        <location filename="../views/scanline_view.cpp" line="590"/>
         <source>pixel %1</source>
         <translation>pixel %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="539"/>
+        <location filename="../views/scanline_view.cpp" line="593"/>
         <source>at the stepping cursor</source>
         <translation>at the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="540"/>
+        <location filename="../views/scanline_view.cpp" line="594"/>
         <source>the triangle selected (the cursor is at the %1 of the frame)</source>
         <translation>the triangle selected (the cursor is at the %1 of the frame)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="541"/>
+        <location filename="../views/scanline_view.cpp" line="595"/>
         <source>start</source>
         <translation>start</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="542"/>
+        <location filename="../views/scanline_view.cpp" line="596"/>
         <source>end</source>
         <translation>end</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="570"/>
+        <location filename="../views/scanline_view.cpp" line="624"/>
         <source>Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the top to the bottom; the two short edges meet at the middle vertex.</source>
         <translation>Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the top to the bottom; the two short edges meet at the middle vertex.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="575"/>
+        <location filename="../views/scanline_view.cpp" line="629"/>
         <source>Its area on the screen is zero: it has no inside and is not scanned.</source>
         <translation>Its area on the screen is zero: it has no inside and is not scanned.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="580"/>
+        <location filename="../views/scanline_view.cpp" line="634"/>
         <source>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, so the middle vertex is %2 of the long edge: the long edge bounds the spans on the %3.</source>
         <translation>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, so the middle vertex is %2 of the long edge: the long edge bounds the spans on the %3.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="583"/>
-        <location filename="../views/scanline_view.cpp" line="584"/>
-        <location filename="../views/scanline_view.cpp" line="639"/>
+        <location filename="../views/scanline_view.cpp" line="637"/>
+        <location filename="../views/scanline_view.cpp" line="638"/>
+        <location filename="../views/scanline_view.cpp" line="693"/>
         <source>right</source>
         <translation>right</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="583"/>
-        <location filename="../views/scanline_view.cpp" line="584"/>
-        <location filename="../views/scanline_view.cpp" line="639"/>
+        <location filename="../views/scanline_view.cpp" line="637"/>
+        <location filename="../views/scanline_view.cpp" line="638"/>
+        <location filename="../views/scanline_view.cpp" line="693"/>
         <source>left</source>
         <translation>left</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="558"/>
+        <location filename="../views/scanline_view.cpp" line="612"/>
         <source>long</source>
         <translation>long</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="558"/>
+        <location filename="../views/scanline_view.cpp" line="612"/>
         <source>upper</source>
         <translation>upper</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="558"/>
+        <location filename="../views/scanline_view.cpp" line="612"/>
         <source>lower</source>
         <translation>lower</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="626"/>
+        <location filename="../views/scanline_view.cpp" line="680"/>
         <source>from</source>
         <translation>from</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="627"/>
+        <location filename="../views/scanline_view.cpp" line="681"/>
         <source>to</source>
         <translation>to</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="628"/>
+        <location filename="../views/scanline_view.cpp" line="682"/>
         <source>x on its first row</source>
         <translation>x on its first row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="631"/>
+        <location filename="../views/scanline_view.cpp" line="685"/>
         <source>dx/dy</source>
         <translation>dx/dy</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="632"/>
+        <location filename="../views/scanline_view.cpp" line="686"/>
         <source>horizontal</source>
         <translation>horizontal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="634"/>
+        <location filename="../views/scanline_view.cpp" line="688"/>
         <source>rows</source>
         <translation>rows</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="636"/>
+        <location filename="../views/scanline_view.cpp" line="690"/>
         <source>none</source>
         <translation>none</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="639"/>
+        <location filename="../views/scanline_view.cpp" line="693"/>
         <source>side</source>
         <translation>side</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="643"/>
+        <location filename="../views/scanline_view.cpp" line="697"/>
         <source>Only rows %1 to %2 are on the screen: the walk starts and stops there.</source>
         <translation>Only rows %1 to %2 are on the screen: the walk starts and stops there.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="590"/>
+        <location filename="../views/scanline_view.cpp" line="644"/>
         <source>No row of this triangle is on the screen.</source>
         <translation>No row of this triangle is on the screen.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="665"/>
+        <location filename="../views/scanline_view.cpp" line="719"/>
         <source>%1(%2) = %3, where the %4 edge crosses its first row</source>
         <translation>%1(%2) = %3, where the %4 edge crosses its first row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="671"/>
+        <location filename="../views/scanline_view.cpp" line="725"/>
         <source>%1(%2) = %3, where the %4 edge crosses the first row on the screen</source>
         <translation>%1(%2) = %3, where the %4 edge crosses the first row on the screen</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="676"/>
+        <location filename="../views/scanline_view.cpp" line="730"/>
         <source>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</source>
         <translation>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="690"/>
+        <location filename="../views/scanline_view.cpp" line="744"/>
         <source>Scanline y = %1</source>
         <translation>Scanline y = %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="692"/>
+        <location filename="../views/scanline_view.cpp" line="746"/>
         <source>(sampled at y = %1)</source>
         <translation>(sampled at y = %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="704"/>
+        <location filename="../views/scanline_view.cpp" line="758"/>
         <source>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="711"/>
+        <location filename="../views/scanline_view.cpp" line="765"/>
         <source>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</source>
         <translation>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="719"/>
+        <location filename="../views/scanline_view.cpp" line="773"/>
         <source>No pixel on this row</source>
         <translation>No pixel on this row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="720"/>
+        <location filename="../views/scanline_view.cpp" line="774"/>
         <source>the edges cross it between two samples.</source>
         <translation>the edges cross it between two samples.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="721"/>
+        <location filename="../views/scanline_view.cpp" line="775"/>
         <source>they are all off the screen.</source>
         <translation>they are all off the screen.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="724"/>
+        <location filename="../views/scanline_view.cpp" line="778"/>
         <source>Span [%1, %2): 1 pixel.</source>
         <translation>Span [%1, %2): 1 pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="725"/>
+        <location filename="../views/scanline_view.cpp" line="779"/>
         <source>Span [%1, %2): %3 pixels.</source>
         <translation>Span [%1, %2): %3 pixels.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="728"/>
+        <location filename="../views/scanline_view.cpp" line="782"/>
         <source>(cut to the screen&apos;s columns 0 to %1)</source>
         <translation>(cut to the screen&apos;s columns 0 to %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="731"/>
+        <location filename="../views/scanline_view.cpp" line="785"/>
         <source>The pixel at the cursor is x = %1.</source>
         <translation>The pixel at the cursor is x = %1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="748"/>
+        <location filename="../views/scanline_view.cpp" line="802"/>
         <source>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</source>
         <translation>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="753"/>
+        <location filename="../views/scanline_view.cpp" line="807"/>
         <source>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</source>
         <translation>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="755"/>
+        <location filename="../views/scanline_view.cpp" line="809"/>
         <source>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</source>
         <translation>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="760"/>
+        <location filename="../views/scanline_view.cpp" line="814"/>
         <source>depth</source>
         <translation>depth</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="760"/>
+        <location filename="../views/scanline_view.cpp" line="814"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="766"/>
+        <location filename="../views/scanline_view.cpp" line="820"/>
         <source>not computed (nothing is lit)</source>
         <translation>not computed (nothing is lit)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="767"/>
+        <location filename="../views/scanline_view.cpp" line="821"/>
         <source>zero</source>
         <translation>zero</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="784"/>
+        <location filename="../views/scanline_view.cpp" line="838"/>
         <source>Pixel (x, y) is sampled at the point (x, y) itself.</source>
         <translation>Pixel (x, y) is sampled at the point (x, y) itself.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="785"/>
+        <location filename="../views/scanline_view.cpp" line="839"/>
         <source>Pixel (x, y) is sampled at (x + %1, y + %1).</source>
         <translation>Pixel (x, y) is sampled at (x + %1, y + %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="788"/>
+        <location filename="../views/scanline_view.cpp" line="842"/>
         <source>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</source>
         <translation>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="791"/>
+        <location filename="../views/scanline_view.cpp" line="845"/>
         <source>, with the barycentrics weighted by 1/w (perspective-correct)</source>
         <translation>, with the barycentrics weighted by 1/w (perspective-correct)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="598"/>
+        <location filename="../views/scanline_view.cpp" line="652"/>
         <source>Edge walking: from one scanline to the next, each edge&apos;s x changes by its constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. The span between the two crossings is filled; the long edge bounds every row, the upper edge the rows above the middle vertex, the lower edge the rest.</source>
         <translation>Edge walking: from one scanline to the next, each edge&apos;s x changes by its constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. The span between the two crossings is filled; the long edge bounds every row, the upper edge the rows above the middle vertex, the lower edge the rest.</translation>
     </message>

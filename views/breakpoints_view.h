@@ -6,7 +6,7 @@
 
 #include <QWidget>
 
-#include "inspection.h"
+#include "views/inspection.h"
 
 class QComboBox;
 class QLabel;

@@ -16,9 +16,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "frame_trace.h"
-#include "inspection.h"
-#include "number_text.h"
+#include "pipeline/render/frame_trace.h"
+#include "views/inspection.h"
+#include "views/number_text.h"
 
 namespace rasterlab {
 

@@ -13,8 +13,8 @@
 
 #include <vector>
 
-#include "camera_basis.h"
-#include "painted_labels.h"
+#include "pipeline/stages/camera_basis.h"
+#include "views/painted_labels.h"
 
 class QFontMetricsF;
 class QLabel;

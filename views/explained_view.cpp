@@ -5,9 +5,9 @@
 
 #include <algorithm>
 
-#include "inspection.h"
-#include "on_screen.h"
-#include "scan_conversion.h"
+#include "pipeline/stages/scan_conversion.h"
+#include "views/inspection.h"
+#include "views/on_screen.h"
 
 namespace rasterlab {
 

@@ -16,9 +16,9 @@
 #include <optional>
 #include <vector>
 
-#include "frame_trace.h"
-#include "replay.h"
-#include "stage_id.h"
+#include "pipeline/core/stage_id.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/render/replay.h"
 
 namespace rasterlab {
 

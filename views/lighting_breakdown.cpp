@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "inspection.h"
-#include "output_image.h"
-#include "pixel_text.h"
-#include "shading.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/stages/shading.h"
+#include "views/inspection.h"
+#include "views/pixel_text.h"
 
 namespace rasterlab {
 

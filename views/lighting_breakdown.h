@@ -12,10 +12,10 @@
 #include <optional>
 #include <vector>
 
-#include "frame_trace.h"
-#include "pixel_history.h"
-#include "probe.h"
-#include "replay.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/render/replay.h"
+#include "pipeline/stages/probe.h"
+#include "views/pixel_history.h"
 
 namespace rasterlab {
 

@@ -14,9 +14,9 @@
 #include <array>
 #include <cmath>
 
-#include "inspection.h"
-#include "number_text.h"
-#include "painted_labels.h"
+#include "views/inspection.h"
+#include "views/number_text.h"
+#include "views/painted_labels.h"
 
 namespace rasterlab {
 

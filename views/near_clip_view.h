@@ -19,9 +19,9 @@
 #include <utility>
 #include <vector>
 
-#include "explained_view.h"
-#include "frame_trace.h"
-#include "near_clip.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/stages/near_clip.h"
+#include "views/explained_view.h"
 
 class QComboBox;
 class QLabel;

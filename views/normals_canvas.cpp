@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "normals_model.h"
+#include "views/normals_model.h"
 
 namespace rasterlab {
 

@@ -6,7 +6,7 @@
 #include <QPoint>
 #include <QWidget>
 
-#include "zoom_pan.h"
+#include "views/zoom_pan.h"
 
 namespace rasterlab {
 

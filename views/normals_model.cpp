@@ -6,11 +6,11 @@
 #include <cmath>
 #include <limits>
 
-#include "animation.h"
-#include "mesh_topology.h"
-#include "output_image.h"
-#include "painter.h"
-#include "shading.h"
+#include "pipeline/analysis/painter.h"
+#include "pipeline/render/animation.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/scene/mesh_topology.h"
+#include "pipeline/stages/shading.h"
 
 namespace rasterlab {
 

@@ -19,8 +19,8 @@
 #include <span>
 #include <vector>
 
-#include "depth_test.h"
-#include "frame_trace.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/stages/depth_test.h"
 
 namespace rasterlab {
 

@@ -13,12 +13,12 @@
 #include <cmath>
 #include <numbers>
 
-#include "animation.h"
-#include "elided_label.h"
-#include "frame_image_view.h"
-#include "inspection.h"
-#include "number_text.h"
-#include "wrapping_check_box.h"
+#include "pipeline/render/animation.h"
+#include "views/elided_label.h"
+#include "views/frame_image_view.h"
+#include "views/inspection.h"
+#include "views/number_text.h"
+#include "views/wrapping_check_box.h"
 
 namespace rasterlab {
 

@@ -19,10 +19,10 @@
 #include <cstdint>
 #include <memory>
 
-#include "elided_label.h"
-#include "frame_trace.h"
-#include "normals_canvas.h"
-#include "normals_model.h"
+#include "pipeline/render/frame_trace.h"
+#include "views/elided_label.h"
+#include "views/normals_canvas.h"
+#include "views/normals_model.h"
 
 class QCheckBox;
 class QLabel;

@@ -12,13 +12,13 @@
 
 #include <vector>
 
-#include "frame_image_view.h"
-#include "inspection.h"
-#include "number_text.h"
-#include "on_screen.h"
-#include "output_image.h"
-#include "pipeline_messages.h"
-#include "wrapping_check_box.h"
+#include "pipeline/render/output_image.h"
+#include "views/frame_image_view.h"
+#include "views/inspection.h"
+#include "views/messages/pipeline_messages.h"
+#include "views/number_text.h"
+#include "views/on_screen.h"
+#include "views/wrapping_check_box.h"
 
 namespace rasterlab {
 

@@ -18,7 +18,7 @@
 #include <memory>
 #include <optional>
 
-#include "painter.h"
+#include "pipeline/analysis/painter.h"
 
 class QCheckBox;
 class QComboBox;

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "inspection.h"
-#include "output_image.h"
-#include "pipeline_messages.h"
-#include "pixel_text.h"
-#include "renderer.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/render/renderer.h"
+#include "views/inspection.h"
+#include "views/messages/pipeline_messages.h"
+#include "views/pixel_text.h"
 
 namespace rasterlab {
 

@@ -14,8 +14,8 @@
 #include <optional>
 #include <vector>
 
-#include "probe.h"
-#include "replay.h"
+#include "pipeline/render/replay.h"
+#include "pipeline/stages/probe.h"
 
 namespace rasterlab {
 

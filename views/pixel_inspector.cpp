@@ -23,10 +23,10 @@
 #include <cmath>
 #include <vector>
 
-#include "inspection.h"
-#include "painted_labels.h"
-#include "pixel_history.h"
-#include "pixel_text.h"
+#include "views/inspection.h"
+#include "views/painted_labels.h"
+#include "views/pixel_history.h"
+#include "views/pixel_text.h"
 
 namespace rasterlab {
 

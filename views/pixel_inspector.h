@@ -21,10 +21,10 @@
 #include <optional>
 #include <vector>
 
-#include "lighting_breakdown.h"
-#include "pixel_history.h"
-#include "probe.h"
-#include "replay.h"
+#include "pipeline/render/replay.h"
+#include "pipeline/stages/probe.h"
+#include "views/lighting_breakdown.h"
+#include "views/pixel_history.h"
 
 class QLabel;
 class QTableWidget;

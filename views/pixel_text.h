@@ -7,8 +7,8 @@
 #include <array>
 #include <cmath>
 
-#include "math.h"
-#include "number_text.h"
+#include "pipeline/core/math.h"
+#include "views/number_text.h"
 
 namespace rasterlab {
 

@@ -18,9 +18,9 @@
 #include <limits>
 #include <vector>
 
-#include "elided_label.h"
-#include "inspection.h"
-#include "number_text.h"
+#include "views/elided_label.h"
+#include "views/inspection.h"
+#include "views/number_text.h"
 
 namespace rasterlab {
 

@@ -18,10 +18,10 @@
 #include <memory>
 #include <optional>
 
-#include "elided_label.h"
-#include "frame_trace.h"
-#include "projection.h"
-#include "zoom_pan.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/stages/projection.h"
+#include "views/elided_label.h"
+#include "views/zoom_pan.h"
 
 class QLabel;
 class QSplitter;

@@ -12,11 +12,11 @@
 #include <tuple>
 #include <vector>
 
-#include "depth_test.h"
-#include "inspection.h"
-#include "number_text.h"
-#include "painted_labels.h"
-#include "shading.h"
+#include "pipeline/stages/depth_test.h"
+#include "pipeline/stages/shading.h"
+#include "views/inspection.h"
+#include "views/number_text.h"
+#include "views/painted_labels.h"
 
 namespace rasterlab {
 

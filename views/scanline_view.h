@@ -14,9 +14,9 @@
 #include <cstdint>
 #include <optional>
 
-#include "explained_view.h"
-#include "frame_trace.h"
-#include "scan_conversion.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/stages/scan_conversion.h"
+#include "views/explained_view.h"
 
 namespace rasterlab {
 

@@ -9,9 +9,9 @@
 
 #include <array>
 
-#include "elided_label.h"
-#include "inspection.h"
-#include "stage_id.h"
+#include "pipeline/core/stage_id.h"
+#include "views/elided_label.h"
+#include "views/inspection.h"
 
 class QToolButton;
 

@@ -8,8 +8,8 @@
 #include <QTimer>
 #include <QWidget>
 
-#include "elided_label.h"
-#include "inspection.h"
+#include "views/elided_label.h"
+#include "views/inspection.h"
 
 class QAction;
 class QComboBox;

@@ -8,10 +8,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "depth_test.h"
-#include "inspection.h"
-#include "near_clip_view.h"
-#include "number_text.h"
+#include "pipeline/stages/depth_test.h"
+#include "views/inspection.h"
+#include "views/near_clip_view.h"
+#include "views/number_text.h"
 
 namespace rasterlab {
 

@@ -16,9 +16,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "number_text.h"
-#include "shading.h"
-#include "wrapping_check_box.h"
+#include "pipeline/stages/shading.h"
+#include "views/number_text.h"
+#include "views/wrapping_check_box.h"
 
 namespace rasterlab {
 

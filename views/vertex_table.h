@@ -14,8 +14,8 @@
 #include <optional>
 #include <vector>
 
-#include "frame_trace.h"
-#include "inspection.h"
+#include "pipeline/render/frame_trace.h"
+#include "views/inspection.h"
 
 class QCheckBox;
 class QLabel;

@@ -16,9 +16,9 @@
 #include <cmath>
 #include <limits>
 
-#include "frame_image_view.h"
-#include "on_screen.h"
-#include "wrapping_check_box.h"
+#include "views/frame_image_view.h"
+#include "views/on_screen.h"
+#include "views/wrapping_check_box.h"
 
 namespace rasterlab {
 

@@ -12,8 +12,8 @@
 #include <memory>
 #include <vector>
 
-#include "depth_test.h"
-#include "frame_trace.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/stages/depth_test.h"
 
 class QCheckBox;
 class QComboBox;

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <memory>
 
-#include "frame_trace.h"
-#include "renderer.h"
-#include "scan_conversion.h"
-#include "stage_id.h"
+#include "pipeline/core/stage_id.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/render/renderer.h"
+#include "pipeline/stages/scan_conversion.h"
 
 namespace rl {
 

@@ -24,10 +24,10 @@
 #include <string>
 #include <vector>
 
-#include "diagnostics.h"
-#include "image.h"
-#include "reference.h"
-#include "scene.h"
+#include "pipeline/analysis/reference.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/core/image.h"
+#include "pipeline/scene/scene.h"
 
 namespace rl {
 

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <map>
 
-#include "painter.h"
-#include "phong.h"
-#include "probe.h"
-#include "renderer.h"
-#include "shading.h"
+#include "pipeline/analysis/painter.h"
+#include "pipeline/render/renderer.h"
+#include "pipeline/stages/phong.h"
+#include "pipeline/stages/probe.h"
+#include "pipeline/stages/shading.h"
 
 namespace rl {
 

@@ -17,12 +17,12 @@
 #include <string_view>
 #include <vector>
 
-#include "diagnostics.h"
-#include "frame_trace.h"
-#include "math.h"
-#include "message.h"
-#include "output_image.h"
-#include "scene.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/core/math.h"
+#include "pipeline/core/message.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/scene/scene.h"
 
 namespace rl {
 

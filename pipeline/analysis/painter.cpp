@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "output_image.h"
+#include "pipeline/render/output_image.h"
 
 namespace rl {
 

@@ -7,15 +7,15 @@
 #include <memory>
 #include <vector>
 
-#include "diagnostics.h"
-#include "frame_trace.h"
-#include "image.h"
-#include "math.h"
-#include "output_image.h"
-#include "painters_algorithm.h"
-#include "projection.h"
-#include "renderer.h"
-#include "scene.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/core/image.h"
+#include "pipeline/core/math.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/render/renderer.h"
+#include "pipeline/scene/scene.h"
+#include "pipeline/stages/painters_algorithm.h"
+#include "pipeline/stages/projection.h"
 
 namespace rl {
 

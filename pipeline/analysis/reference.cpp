@@ -5,7 +5,7 @@
 #include <cmath>
 #include <optional>
 
-#include "parallel.h"
+#include "pipeline/core/parallel.h"
 
 namespace rl {
 

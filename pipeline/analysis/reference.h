@@ -16,12 +16,12 @@
 #include <cstdint>
 #include <limits>
 
-#include "diagnostics.h"
-#include "image.h"
-#include "math.h"
-#include "normals.h"
-#include "scene.h"
-#include "view_transform.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/core/image.h"
+#include "pipeline/core/math.h"
+#include "pipeline/scene/scene.h"
+#include "pipeline/stages/normals.h"
+#include "pipeline/stages/view_transform.h"
 
 namespace rl {
 

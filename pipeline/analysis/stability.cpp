@@ -6,8 +6,8 @@
 #include <limits>
 #include <memory>
 
-#include "frame_trace.h"
-#include "normals.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/stages/normals.h"
 
 namespace rl {
 

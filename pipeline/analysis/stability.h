@@ -17,9 +17,9 @@
 #include <string>
 #include <vector>
 
-#include "accuracy.h"
-#include "diagnostics.h"
-#include "scene.h"
+#include "pipeline/analysis/accuracy.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/scene/scene.h"
 
 namespace rl {
 

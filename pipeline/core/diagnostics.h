@@ -10,7 +10,7 @@
 #include <variant>
 #include <vector>
 
-#include "message.h"
+#include "pipeline/core/message.h"
 
 namespace rl {
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "math.h"
+#include "pipeline/core/math.h"
 
 namespace rl {
 

@@ -5,7 +5,7 @@
 //     makeError(ErrorCode::Syntax, where, "expected a number for %1, %2"_msg(name, why));
 //
 // The template is also the key of its translation. The pipeline has no Qt, so Qt's lupdate
-// cannot see it: app/pipeline_messages.cpp lists every template for lupdate, and
+// cannot see it: views/messages/pipeline_messages.cpp lists every template for lupdate, and
 // tests/tst_pipeline_messages.cpp fails when a template written here is missing there.
 //
 // An argument is either text shown as it is in every language (a number, a key such as "hx",

@@ -6,10 +6,10 @@
 #include <memory>
 #include <optional>
 
-#include "lanes.h"
-#include "multiversion.h"
-#include "parallel.h"
-#include "probe.h"
+#include "pipeline/core/multiversion.h"
+#include "pipeline/core/parallel.h"
+#include "pipeline/fast/lanes.h"
+#include "pipeline/stages/probe.h"
 
 namespace rl::fast {
 

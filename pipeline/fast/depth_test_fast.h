@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <functional>
 
-#include "depth_test.h"
+#include "pipeline/stages/depth_test.h"
 
 namespace rl::fast {
 

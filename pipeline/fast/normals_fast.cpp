@@ -1,10 +1,10 @@
-#include "normals.h"
+#include "normals_fast.h"
 
 #include <algorithm>
 #include <limits>
 
-#include "normals_fast.h"
-#include "parallel.h"
+#include "pipeline/core/parallel.h"
+#include "pipeline/stages/normals.h"
 
 namespace rl::fast {
 

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "normals.h"
+#include "pipeline/stages/normals.h"
 
 namespace rl::fast {
 

@@ -9,9 +9,9 @@
 #include <cstring>
 #include <limits>
 
-#include "fast_pow.h"
-#include "lanes.h"
-#include "multiversion.h"
+#include "pipeline/core/fast_pow.h"
+#include "pipeline/core/multiversion.h"
+#include "pipeline/fast/lanes.h"
 
 namespace rl {
 

@@ -9,9 +9,9 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "math.h"
-#include "scene.h"
-#include "view_transform.h"
+#include "pipeline/core/math.h"
+#include "pipeline/scene/scene.h"
+#include "pipeline/stages/view_transform.h"
 
 namespace rl {
 

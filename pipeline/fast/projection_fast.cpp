@@ -4,9 +4,9 @@
 #include <bit>
 #include <cmath>
 
-#include "buffer.h"
-#include "painters_algorithm.h"
-#include "parallel.h"
+#include "pipeline/core/buffer.h"
+#include "pipeline/core/parallel.h"
+#include "pipeline/stages/painters_algorithm.h"
 
 namespace rl::fast {
 

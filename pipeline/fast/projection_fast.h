@@ -3,7 +3,7 @@
 // the same order, and the same messages.
 #pragma once
 
-#include "projection.h"
+#include "pipeline/stages/projection.h"
 
 namespace rl::fast {
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "parallel.h"
-#include "probe.h"
+#include "pipeline/core/parallel.h"
+#include "pipeline/stages/probe.h"
 
 namespace rl::fast {
 

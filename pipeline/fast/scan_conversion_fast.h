@@ -2,7 +2,7 @@
 // (stages/scan_conversion.h) bit for bit: every span, in triangle order, and every count.
 #pragma once
 
-#include "scan_conversion.h"
+#include "pipeline/stages/scan_conversion.h"
 
 namespace rl::fast {
 

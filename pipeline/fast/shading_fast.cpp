@@ -4,9 +4,9 @@
 #include <chrono>
 #include <cstring>
 
-#include "parallel.h"
-#include "phong_kernel.h"
-#include "probe.h"
+#include "pipeline/core/parallel.h"
+#include "pipeline/fast/phong_kernel.h"
+#include "pipeline/stages/probe.h"
 
 namespace rl::fast {
 

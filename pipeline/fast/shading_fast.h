@@ -5,8 +5,8 @@
 
 #include <utility>
 
-#include "depth_test_fast.h"
-#include "shading.h"
+#include "pipeline/fast/depth_test_fast.h"
+#include "pipeline/stages/shading.h"
 
 namespace rl::fast {
 

@@ -1,7 +1,7 @@
 // The course's Bezier surface, shipped as .byu: "m n", the evaluations per direction E, then
 // the (m+1)(n+1) control points row by row, evaluated on an E x E grid.
-#include "bezier.h"
-#include "course_fields.h"
+#include "pipeline/io/course_fields.h"
+#include "pipeline/scene/bezier.h"
 
 namespace rl::course_io {
 

@@ -2,7 +2,7 @@
 // triangles (three 1-based indices), one a line.
 #include <array>
 
-#include "course_fields.h"
+#include "pipeline/io/course_fields.h"
 
 namespace rl {
 

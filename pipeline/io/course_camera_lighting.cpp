@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "course_fields.h"
-#include "format.h"
+#include "pipeline/core/format.h"
+#include "pipeline/io/course_fields.h"
 
 namespace rl {
 

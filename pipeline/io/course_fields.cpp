@@ -5,7 +5,7 @@
 #include <cctype>
 #include <charconv>
 
-#include "format.h"
+#include "pipeline/core/format.h"
 
 namespace rl::course_io {
 

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "course_readers.h"
+#include "pipeline/io/course_readers.h"
 
 namespace rl::course_io {
 

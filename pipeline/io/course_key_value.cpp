@@ -5,8 +5,8 @@
 #include <optional>
 #include <span>
 
-#include "course_fields.h"
-#include "format.h"
+#include "pipeline/core/format.h"
+#include "pipeline/io/course_fields.h"
 
 namespace rl {
 

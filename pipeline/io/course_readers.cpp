@@ -2,8 +2,8 @@
 // reader (byu_mesh.cpp, bezier_surface.cpp, movie_byu.cpp).
 #include "course_readers.h"
 
-#include "course_fields.h"
-#include "mesh_topology.h"
+#include "pipeline/io/course_fields.h"
+#include "pipeline/scene/mesh_topology.h"
 
 namespace rl {
 

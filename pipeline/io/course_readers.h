@@ -51,9 +51,9 @@
 #include <string_view>
 #include <vector>
 
-#include "diagnostics.h"
-#include "scene.h"
-#include "text_scanner.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/io/text_scanner.h"
+#include "pipeline/scene/scene.h"
 
 namespace rl {
 

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "mesh_topology.h"
+#include "pipeline/scene/mesh_topology.h"
 
 namespace rl {
 

@@ -6,9 +6,9 @@
 #include <memory>
 #include <string>
 
-#include "course_readers.h"
-#include "diagnostics.h"
-#include "scene.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/io/course_readers.h"
+#include "pipeline/scene/scene.h"
 
 namespace rl {
 

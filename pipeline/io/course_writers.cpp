@@ -9,8 +9,8 @@
 #include <optional>
 #include <vector>
 
-#include "course_fields.h"
-#include "text_scanner.h"
+#include "pipeline/io/course_fields.h"
+#include "pipeline/io/text_scanner.h"
 
 namespace rl {
 

@@ -24,9 +24,9 @@
 #include <string>
 #include <string_view>
 
-#include "course_readers.h"
-#include "diagnostics.h"
-#include "scene.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/io/course_readers.h"
+#include "pipeline/scene/scene.h"
 
 namespace rl {
 

@@ -5,10 +5,10 @@
 #include <map>
 #include <optional>
 
-#include "bezier.h"
-#include "format.h"
-#include "text_scanner.h"
-#include "transforms.h"
+#include "pipeline/core/format.h"
+#include "pipeline/io/text_scanner.h"
+#include "pipeline/scene/bezier.h"
+#include "pipeline/scene/transforms.h"
 
 namespace rl {
 

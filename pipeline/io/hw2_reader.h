@@ -14,8 +14,8 @@
 #include <string_view>
 #include <vector>
 
-#include "diagnostics.h"
-#include "scene.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/scene/scene.h"
 
 namespace rl {
 

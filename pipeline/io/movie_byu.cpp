@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <limits>
 
-#include "course_fields.h"
+#include "pipeline/io/course_fields.h"
 
 namespace rl::course_io {
 

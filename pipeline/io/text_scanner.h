@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "diagnostics.h"
+#include "pipeline/core/diagnostics.h"
 
 namespace rl {
 

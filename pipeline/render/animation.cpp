@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <memory>
 
-#include "renderer.h"
+#include "pipeline/render/renderer.h"
 
 namespace rl {
 

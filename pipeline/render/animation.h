@@ -5,10 +5,10 @@
 #include <functional>
 #include <string>
 
-#include "animation_matrix.h"
-#include "diagnostics.h"
-#include "frame_trace.h"
-#include "scene.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/scene/animation_matrix.h"
+#include "pipeline/scene/scene.h"
 
 namespace rl {
 

@@ -2,9 +2,9 @@
 
 #include <cstdio>
 
-#include "format.h"
-#include "output_image.h"
-#include "shading.h"
+#include "pipeline/core/format.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/stages/shading.h"
 
 namespace rl {
 

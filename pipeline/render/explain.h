@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "frame_trace.h"
-#include "probe.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/stages/probe.h"
 
 namespace rl {
 

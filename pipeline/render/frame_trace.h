@@ -6,16 +6,16 @@
 #include <array>
 #include <memory>
 
-#include "camera_basis.h"
-#include "depth_test.h"
-#include "diagnostics.h"
-#include "normals.h"
-#include "projection.h"
-#include "scan_conversion.h"
-#include "scene.h"
-#include "shading.h"
-#include "stage_id.h"
-#include "view_transform.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/core/stage_id.h"
+#include "pipeline/scene/scene.h"
+#include "pipeline/stages/camera_basis.h"
+#include "pipeline/stages/depth_test.h"
+#include "pipeline/stages/normals.h"
+#include "pipeline/stages/projection.h"
+#include "pipeline/stages/scan_conversion.h"
+#include "pipeline/stages/shading.h"
+#include "pipeline/stages/view_transform.h"
 
 namespace rl {
 

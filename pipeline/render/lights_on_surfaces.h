@@ -6,8 +6,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "scene.h"
-#include "view_transform.h"
+#include "pipeline/scene/scene.h"
+#include "pipeline/stages/view_transform.h"
 
 namespace rl {
 

@@ -7,11 +7,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "depth_test.h"
-#include "image.h"
-#include "math.h"
-#include "scene.h"
-#include "shading.h"
+#include "pipeline/core/image.h"
+#include "pipeline/core/math.h"
+#include "pipeline/scene/scene.h"
+#include "pipeline/stages/depth_test.h"
+#include "pipeline/stages/shading.h"
 
 namespace rl {
 

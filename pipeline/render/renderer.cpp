@@ -2,14 +2,14 @@
 
 #include <chrono>
 
-#include "depth_test_fast.h"
-#include "format.h"
-#include "lights_on_surfaces.h"
-#include "normals_fast.h"
-#include "parallel.h"
-#include "projection_fast.h"
-#include "scan_conversion_fast.h"
-#include "shading_fast.h"
+#include "pipeline/core/format.h"
+#include "pipeline/core/parallel.h"
+#include "pipeline/fast/depth_test_fast.h"
+#include "pipeline/fast/normals_fast.h"
+#include "pipeline/fast/projection_fast.h"
+#include "pipeline/fast/scan_conversion_fast.h"
+#include "pipeline/fast/shading_fast.h"
+#include "pipeline/render/lights_on_surfaces.h"
 
 namespace rl {
 

@@ -8,11 +8,11 @@
 
 #include <memory>
 
-#include "diagnostics.h"
-#include "frame_trace.h"
-#include "probe.h"
-#include "scene.h"
-#include "shading.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/scene/scene.h"
+#include "pipeline/stages/probe.h"
+#include "pipeline/stages/shading.h"
 
 namespace rl {
 

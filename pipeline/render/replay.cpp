@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <string>
 
-#include "depth_test.h"
-#include "scan_conversion.h"
-#include "shading.h"
+#include "pipeline/stages/depth_test.h"
+#include "pipeline/stages/scan_conversion.h"
+#include "pipeline/stages/shading.h"
 
 namespace rl {
 

@@ -27,12 +27,12 @@
 #include <optional>
 #include <vector>
 
-#include "depth_test.h"
-#include "diagnostics.h"
-#include "frame_trace.h"
-#include "image.h"
-#include "output_image.h"
-#include "probe.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/core/image.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/stages/depth_test.h"
+#include "pipeline/stages/probe.h"
 
 namespace rl {
 

@@ -18,9 +18,9 @@
 #include <array>
 #include <optional>
 
-#include "diagnostics.h"
-#include "math.h"
-#include "scene.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/core/math.h"
+#include "pipeline/scene/scene.h"
 
 namespace rl {
 

@@ -1,6 +1,6 @@
 #include "benchmark_scenes.h"
 
-#include "mesh_topology.h"
+#include "pipeline/scene/mesh_topology.h"
 
 #include <algorithm>
 #include <cmath>

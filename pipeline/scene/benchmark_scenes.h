@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "scene.h"
+#include "pipeline/scene/scene.h"
 
 namespace rl {
 

@@ -10,7 +10,7 @@
 #include <span>
 #include <vector>
 
-#include "math.h"
+#include "pipeline/core/math.h"
 
 namespace rl {
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <vector>
 
-#include "format.h"
-#include "math.h"
+#include "pipeline/core/format.h"
+#include "pipeline/core/math.h"
 
 namespace rl {
 

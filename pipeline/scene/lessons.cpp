@@ -4,9 +4,9 @@
 #include <cmath>
 #include <initializer_list>
 
-#include "benchmark_scenes.h"
-#include "format.h"
-#include "math.h"
+#include "pipeline/core/format.h"
+#include "pipeline/core/math.h"
+#include "pipeline/scene/benchmark_scenes.h"
 
 namespace rl {
 

@@ -2,7 +2,7 @@
 // lecture, written as the course's three files (a UFPE camera, a lighting file and a .byu
 // object). The files in resources/lessons/NAME/ are this generator's output (`rasterlab-cli
 // generate-lessons`), and a test keeps them identical to it. How each lesson opens (its
-// shading, image size, stepping) is the application's: app/lessons.h.
+// shading, image size, stepping) is the application's: app/documents/examples.h.
 #pragma once
 
 #include <optional>
@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "default_scene.h"
+#include "pipeline/scene/default_scene.h"
 
 namespace rl {
 

@@ -2,7 +2,7 @@
 // back-face culling needs to know to leave out triangles without changing the picture.
 #pragma once
 
-#include "scene.h"
+#include "pipeline/scene/scene.h"
 
 namespace rl {
 

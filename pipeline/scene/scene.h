@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "diagnostics.h"
-#include "math.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/core/math.h"
 
 namespace rl {
 

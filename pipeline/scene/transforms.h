@@ -2,7 +2,7 @@
 // return column-major GLM matrices; angles are in degrees where the commands give degrees.
 #pragma once
 
-#include "math.h"
+#include "pipeline/core/math.h"
 
 namespace rl {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "format.h"
+#include "pipeline/core/format.h"
 
 namespace rl {
 

@@ -12,9 +12,9 @@
 
 #include <string>
 
-#include "diagnostics.h"
-#include "math.h"
-#include "scene.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/core/math.h"
+#include "pipeline/scene/scene.h"
 
 namespace rl {
 

@@ -1,6 +1,6 @@
 #include "depth_test.h"
 
-#include "probe.h"
+#include "pipeline/stages/probe.h"
 
 namespace rl {
 

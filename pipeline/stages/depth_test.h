@@ -19,11 +19,11 @@
 #include <cstdint>
 #include <limits>
 
-#include "image.h"
-#include "math.h"
-#include "projection.h"
-#include "scan_conversion.h"
-#include "scene.h"
+#include "pipeline/core/image.h"
+#include "pipeline/core/math.h"
+#include "pipeline/scene/scene.h"
+#include "pipeline/stages/projection.h"
+#include "pipeline/stages/scan_conversion.h"
 
 namespace rl {
 

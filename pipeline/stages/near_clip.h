@@ -24,8 +24,8 @@
 #include <optional>
 #include <vector>
 
-#include "math.h"
-#include "projection.h"
+#include "pipeline/core/math.h"
+#include "pipeline/stages/projection.h"
 
 namespace rl {
 

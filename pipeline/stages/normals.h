@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "math.h"
-#include "scene.h"
-#include "view_transform.h"
+#include "pipeline/core/math.h"
+#include "pipeline/scene/scene.h"
+#include "pipeline/stages/view_transform.h"
 
 namespace rl {
 

@@ -22,9 +22,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "math.h"
-#include "projection.h"
-#include "scene.h"
+#include "pipeline/core/math.h"
+#include "pipeline/scene/scene.h"
+#include "pipeline/stages/projection.h"
 
 namespace rl {
 

@@ -22,10 +22,10 @@
 #include <cstddef>
 #include <limits>
 
-#include "fast_pow.h"
-#include "math.h"
-#include "scene.h"
-#include "view_transform.h"
+#include "pipeline/core/fast_pow.h"
+#include "pipeline/core/math.h"
+#include "pipeline/scene/scene.h"
+#include "pipeline/stages/view_transform.h"
 
 namespace rl {
 

@@ -12,10 +12,10 @@
 #include <variant>
 #include <vector>
 
-#include "math.h"
-#include "phong.h"
-#include "scan_conversion.h"
-#include "scene.h"
+#include "pipeline/core/math.h"
+#include "pipeline/scene/scene.h"
+#include "pipeline/stages/phong.h"
+#include "pipeline/stages/scan_conversion.h"
 
 namespace rl {
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include "format.h"
-#include "painters_algorithm.h"
+#include "pipeline/core/format.h"
+#include "pipeline/stages/painters_algorithm.h"
 
 namespace rl {
 

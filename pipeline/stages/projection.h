@@ -35,11 +35,11 @@
 #include <string>
 #include <vector>
 
-#include "buffer.h"
-#include "diagnostics.h"
-#include "math.h"
-#include "scene.h"
-#include "view_transform.h"
+#include "pipeline/core/buffer.h"
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/core/math.h"
+#include "pipeline/scene/scene.h"
+#include "pipeline/stages/view_transform.h"
 
 namespace rl {
 

@@ -5,7 +5,7 @@
 #include <tuple>
 #include <utility>
 
-#include "probe.h"
+#include "pipeline/stages/probe.h"
 
 namespace rl {
 

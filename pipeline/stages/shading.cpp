@@ -1,6 +1,6 @@
 #include "shading.h"
 
-#include "probe.h"
+#include "pipeline/stages/probe.h"
 
 namespace rl {
 

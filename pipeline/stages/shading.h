@@ -17,14 +17,14 @@
 #include <utility>
 #include <vector>
 
-#include "depth_test.h"
-#include "image.h"
-#include "math.h"
-#include "normals.h"
-#include "phong.h"
-#include "projection.h"
-#include "scene.h"
-#include "view_transform.h"
+#include "pipeline/core/image.h"
+#include "pipeline/core/math.h"
+#include "pipeline/scene/scene.h"
+#include "pipeline/stages/depth_test.h"
+#include "pipeline/stages/normals.h"
+#include "pipeline/stages/phong.h"
+#include "pipeline/stages/projection.h"
+#include "pipeline/stages/view_transform.h"
 
 namespace rl {
 

@@ -27,9 +27,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "math.h"
-#include "scan_conversion.h"
-#include "scene.h"
+#include "pipeline/core/math.h"
+#include "pipeline/scene/scene.h"
+#include "pipeline/stages/scan_conversion.h"
 
 namespace rl {
 

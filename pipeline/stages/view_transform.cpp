@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "animation_matrix.h"
+#include "pipeline/scene/animation_matrix.h"
 
 namespace rl {
 

@@ -7,10 +7,10 @@
 
 #include <vector>
 
-#include "animation_matrix.h"
-#include "camera_basis.h"
-#include "math.h"
-#include "scene.h"
+#include "pipeline/core/math.h"
+#include "pipeline/scene/animation_matrix.h"
+#include "pipeline/scene/scene.h"
+#include "pipeline/stages/camera_basis.h"
 
 namespace rl {
 

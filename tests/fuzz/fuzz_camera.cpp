@@ -1,6 +1,6 @@
 // libFuzzer target: the camera reader in every layout (detected, UFPE, UFRPE six and five
 // lines, key = value), and a small render with each camera it accepts.
-#include "fuzz_support.h"
+#include "tests/fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     for (rl::CameraLayout layout : rl::kCameraLayouts) {

@@ -1,6 +1,6 @@
 // libFuzzer target: the .byu object reader (triangle mesh, course Bezier surface, Movie.BYU),
 // and a small render of what it accepts.
-#include "fuzz_support.h"
+#include "tests/fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     rl::Diagnostics diagnostics;

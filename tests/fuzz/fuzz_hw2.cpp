@@ -1,8 +1,8 @@
 // libFuzzer target: the command-file reader (seed 001's language), and a render of each image
 // it names when the image is small (up to 64 x 64 here; the reader's own limits apply to the
 // rest), by the lecture's stages and by the fast paths, which must agree bit for bit.
-#include "fuzz_support.h"
-#include "hw2_reader.h"
+#include "pipeline/io/hw2_reader.h"
+#include "tests/fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     // Every texture is a 2 x 2 checker, whatever its name.

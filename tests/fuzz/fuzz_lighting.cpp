@@ -1,6 +1,6 @@
 // libFuzzer target: the lighting reader in every layout (detected, UFPE, UFPE with several
 // lights, UFRPE, key = value), and a small render with each lighting it accepts.
-#include "fuzz_support.h"
+#include "tests/fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     for (rl::LightingLayout layout : rl::kLightingLayouts) {

@@ -10,10 +10,10 @@
 #include <string>
 #include <string_view>
 
-#include "course_readers.h"
-#include "course_scene.h"
-#include "probe.h"
-#include "renderer.h"
+#include "pipeline/io/course_readers.h"
+#include "pipeline/io/course_scene.h"
+#include "pipeline/render/renderer.h"
+#include "pipeline/stages/probe.h"
 
 namespace rl::fuzz {
 

@@ -1,0 +1,249 @@
+// rasterlab-cli compare: a student's image against ours, of a course scene (render's options)
+// or of a command file's png, with a summary, a difference image and a diagnosis: the
+// mistakes (pipeline/analysis/mistakes.h) ranked by how many differing pixels each explains.
+#include "app/cli/cli_common.h"
+
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include "app/compare/compare_image.h"
+#include "app/documents/command_file.h"
+#include "pipeline/analysis/mistakes.h"
+
+namespace rasterlab::cli {
+
+namespace {
+
+QString sizeText(int width, int height) {
+    return lit("%1x%2").arg(width).arg(height);
+}
+
+QJsonArray bytesJson(const std::array<std::uint8_t, 4>& b) {
+    return {int(b[0]), int(b[1]), int(b[2]), int(b[3])};
+}
+
+QString bytesText(const std::array<std::uint8_t, 4>& b) {
+    return lit("(%1, %2, %3, %4)").arg(b[0]).arg(b[1]).arg(b[2]).arg(b[3]);
+}
+
+QString channels(const std::array<int, 4>& v) {
+    return lit("R %1, G %2, B %3, A %4").arg(v[0]).arg(v[1]).arg(v[2]).arg(v[3]);
+}
+
+QString channels(const std::array<double, 4>& v) {
+    return lit("R %1, G %2, B %3, A %4")
+        .arg(v[0], 0, 'f', 1)
+        .arg(v[1], 0, 'f', 1)
+        .arg(v[2], 0, 'f', 1)
+        .arg(v[3], 0, 'f', 1);
+}
+
+void printText(const rl::ImageComparison& c, const QString& image, const QString& label,
+               QTextStream& out) {
+    out << "comparing " << image << " with our render of " << label << " ("
+        << sizeText(c.width, c.height) << ")\n";
+    out << "  " << c.compared << " pixels compared, " << c.differing << " differ ("
+        << QString::number(100.0 * double(c.differing) / double(c.compared), 'f', 1) << "%)\n";
+    if (c.differing == 0) {
+        out << "  the images are the same\n";
+        return;
+    }
+    out << "  largest difference per channel: " << channels(c.largest) << '\n';
+    out << "  mean difference per channel, over the differing pixels: " << channels(c.mean) << '\n';
+    out << "  pixels only one side covers: " << c.onlyOurs << " only ours (our depth buffer), "
+        << c.onlyTheirs << " only theirs (not the background)\n";
+    if (c.diagnosis.empty()) {
+        out << "diagnosis: none of the mistakes RasterLab knows explains these differences\n";
+        return;
+    }
+    out << "diagnosis, most likely first:\n";
+    int rank = 0;
+    for (const rl::Finding& f : c.diagnosis) {
+        out << "  " << ++rank << ". " << QString::fromStdString(f.title.english()) << '\n';
+        out << "     explains " << QString::number(100.0 * f.share, 'f', 1) << "% of the differing "
+            << "pixels (" << f.explained << " of " << c.differing << ")\n";
+        out << "     evidence: " << QString::fromStdString(f.evidence.english()) << '\n';
+        out << "     check: " << QString::fromStdString(f.advice.english()) << '\n';
+        for (const rl::PixelExample& e : f.examples)
+            out << "     at (" << e.x << ", " << e.y << ") ours " << bytesText(e.ours)
+                << ", theirs " << bytesText(e.theirs) << '\n';
+    }
+}
+
+QJsonObject toJson(const rl::ImageComparison& c, const QString& image, const QString& label) {
+    QJsonObject o;
+    o[lit("image")] = image;
+    o[lit("scene")] = label;
+    o[lit("width")] = c.width;
+    o[lit("height")] = c.height;
+    o[lit("compared")] = qint64(c.compared);
+    o[lit("differing")] = qint64(c.differing);
+    o[lit("largestDifference")] =
+        QJsonArray{c.largest[0], c.largest[1], c.largest[2], c.largest[3]};
+    o[lit("meanDifference")] = QJsonArray{c.mean[0], c.mean[1], c.mean[2], c.mean[3]};
+    o[lit("onlyOurs")] = qint64(c.onlyOurs);
+    o[lit("onlyTheirs")] = qint64(c.onlyTheirs);
+    QJsonArray diagnosis;
+    for (const rl::Finding& f : c.diagnosis) {
+        QJsonObject d;
+        d[lit("mistake")] = QString::fromLatin1(rl::mistakeId(f.mistake));
+        d[lit("title")] = QString::fromStdString(f.title.english());
+        d[lit("evidence")] = QString::fromStdString(f.evidence.english());
+        d[lit("advice")] = QString::fromStdString(f.advice.english());
+        d[lit("explained")] = qint64(f.explained);
+        d[lit("share")] = f.share;
+        d[lit("spoiled")] = qint64(f.spoiled);
+        QJsonArray examples;
+        for (const rl::PixelExample& e : f.examples)
+            examples.append(QJsonObject{{lit("x"), e.x},
+                                        {lit("y"), e.y},
+                                        {lit("ours"), bytesJson(e.ours)},
+                                        {lit("theirs"), bytesJson(e.theirs)}});
+        d[lit("examples")] = examples;
+        diagnosis.append(d);
+    }
+    o[lit("diagnosis")] = diagnosis;
+    return o;
+}
+
+}  // namespace
+
+int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        lit("Compare an image of your own rasterizer with RasterLab's render of the same scene "
+            "(render's scene options, or a command file): a summary, a difference image, and "
+            "the likely mistakes, ranked by the differing pixels each explains."));
+    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    const QCommandLineOption help({lit("h"), lit("help")}, lit("Show this help."));
+    const SceneOptions sceneOptions;
+    const QCommandLineOption sceneName = SceneOptions::generatedSceneOption();
+    const QCommandLineOption image(lit("image"), lit("Your image (required): a PNG of our size."),
+                                   lit("THEIRS.png"));
+    const QCommandLineOption diffOutput(
+        lit("diff-output"),
+        lit("Write the difference image: ours darkened, differing pixels from yellow (off by "
+            "little) to red (by 64 or more), magenta where only we cover a pixel, cyan where "
+            "only you do."),
+        lit("FILE.png"));
+    const QCommandLineOption format(lit("format"), lit("text (default) or json."), lit("FORMAT"),
+                                    lit("text"));
+    parser.addOption(help);
+    sceneOptions.addTo(parser);
+    parser.addOptions({sceneName, image, diffOutput, format});
+    parser.addPositionalArgument(
+        lit("FILE"), lit("A command file: its png image is compared (optional)."), lit("[FILE]"));
+    if (!parser.parse(arguments)) return usageError(err, parser.errorText());
+    if (parser.isSet(help)) {
+        out << commandHelp(parser, lit("compare"));
+        return ExitOk;
+    }
+    const QStringList files = parser.positionalArguments();
+    if (files.size() > 1)
+        return usageError(err, lit("compare takes one command file, found %1").arg(files.size()));
+    if (!parser.isSet(image)) return usageError(err, lit("compare needs --image THEIRS.png"));
+    const bool json = parser.value(format) == lit("json");
+    if (!json && parser.value(format) != lit("text"))
+        return usageError(
+            err, lit("--format expects text or json, found '%1'").arg(parser.value(format)));
+
+    rl::Diagnostics diagnostics;
+    std::shared_ptr<const rl::Scene> scene;
+    QString sceneLabel;
+    if (!files.isEmpty()) {
+        for (const QCommandLineOption* o :
+             {&sceneOptions.camera, &sceneOptions.lighting, &sceneOptions.object, &sceneName,
+              &sceneOptions.size, &sceneOptions.shading, &sceneOptions.rules, &sceneOptions.near,
+              &sceneOptions.naive, &sceneOptions.backFaces})
+            if (parser.isSet(*o))
+                return usageError(err, lit("--%1 does not apply to a command file, which sets "
+                                           "its own scene")
+                                           .arg(o->names().first()));
+        qint64 pixelLimit = 0;
+        if (int code = readMaxPixels(parser, sceneOptions.maxPixels, err, pixelLimit);
+            code != ExitOk)
+            return code;
+        auto file = loadCommandFile(files.first(), diagnostics);
+        if (!file) {
+            printDiagnostics(diagnostics, err);
+            return inputError(err, file.error());
+        }
+        if (file->images.empty()) {
+            err << files.first() << ": the command file has no png command\n";
+            return ExitBadInput;
+        }
+        // The png named like their image, else the first.
+        const std::string theirName = QFileInfo(parser.value(image)).fileName().toStdString();
+        const rl::Hw2Image* chosen = &file->images.front();
+        for (const rl::Hw2Image& i : file->images)
+            if (i.fileName == theirName) chosen = &i;
+        if (file->images.size() > 1 && chosen->fileName != theirName)
+            err << "note: " << files.first() << " names " << file->images.size()
+                << " images; comparing the first, " << QString::fromStdString(chosen->fileName)
+                << '\n';
+        if (int code = checkPixelLimit(*chosen, pixelLimit, err); code != ExitOk) return code;
+        scene = std::make_shared<const rl::Scene>(chosen->scene);
+        sceneLabel = QString::fromStdString(chosen->fileName);
+    } else {
+        rl::CourseSceneSettings settings;
+        if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
+        sceneOptions.lessonSettings(parser, sceneName, settings);
+        if (int code = sceneOptions.loadAny(parser, sceneName, settings, err, diagnostics, scene,
+                                            sceneLabel);
+            code != ExitOk)
+            return code;
+    }
+    printDiagnostics(diagnostics, err);
+
+    rl::Rgba8Image theirs;
+    const QString imagePath = parser.value(image);
+    if (const QString problem = CompareImage::read(imagePath, theirs); !problem.isEmpty()) {
+        err << problem << '\n';
+        err.flush();
+        return ExitBadInput;
+    }
+
+    auto ours = rl::renderOurFrame(scene);
+    if (!ours) return inputError(err, ours.error());
+    printDiagnostics(ours->trace->diagnostics, err);
+    const rl::Rgba8Image& ourImage = ours->image;
+    bool embedded = false;
+    if (const QString mismatch = CompareImage::sizeMismatch(imagePath, theirs, ourImage, embedded);
+        !mismatch.isEmpty()) {
+        err << mismatch;
+        if (!embedded)
+            err << " ("
+                << (files.isEmpty() ? lit("--size %1 renders ours at their size")
+                                          .arg(sizeText(theirs.width, theirs.height))
+                                    : lit("its png command sets the size"))
+                << ")";
+        err << '\n';
+        err.flush();
+        return ExitBadInput;
+    }
+
+    const auto comparison = rl::compareWithOurs(ours.value(), theirs);
+    if (!comparison) return inputError(err, comparison.error());
+    QString sink;
+    QTextStream quiet(&sink);  // JSON keeps stdout to itself
+    if (json) {
+        if (parser.isSet(diffOutput) && !writePng(comparison->difference, parser.value(diffOutput),
+                                                  quiet, err, lit("difference")))
+            return ExitBadInput;
+        QJsonObject o = toJson(comparison.value(), imagePath, sceneLabel);
+        if (parser.isSet(diffOutput))
+            o[lit("differenceImage")] = QFileInfo(parser.value(diffOutput)).absoluteFilePath();
+        out << QJsonDocument(o).toJson(QJsonDocument::Indented);
+    } else {
+        printText(comparison.value(), imagePath, sceneLabel, out);
+        if (parser.isSet(diffOutput) && !writePng(comparison->difference, parser.value(diffOutput),
+                                                  out, err, lit("difference")))
+            return ExitBadInput;
+    }
+    out.flush();
+    return ExitOk;
+}
+
+}  // namespace rasterlab::cli

@@ -1,0 +1,21 @@
+// Command files (seed 001) read from disk: the text through rl::readHw2, and the textures
+// they name through QImage, relative to the command file's folder.
+#pragma once
+
+#include <QString>
+
+#include <memory>
+
+#include "pipeline/core/diagnostics.h"
+#include "pipeline/io/hw2_reader.h"
+#include "pipeline/scene/scene.h"
+
+namespace rasterlab {
+
+// A PNG (or any image Qt reads) as a texture: RGBA, 0..1, row 0 at the top.
+rl::Result<std::shared_ptr<const rl::Texture>> loadTexture(const QString& path,
+                                                           const rl::SourceLocation& where);
+
+rl::Result<rl::Hw2File> loadCommandFile(const QString& path, rl::Diagnostics& diagnostics);
+
+}  // namespace rasterlab

@@ -1,0 +1,570 @@
+#include "compare_panel.h"
+
+#include <QApplication>
+#include <QComboBox>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTextDocument>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "app/compare/compare_image.h"
+#include "app/image_io.h"
+#include "views/inspection.h"
+#include "views/messages/pipeline_messages.h"
+#include "views/number_text.h"
+#include "views/pixel_history.h"
+
+namespace rasterlab {
+
+// The images side by side, each under its caption, scaled to fit without smoothing (a pixel
+// stays a square); a click picks the pixel under it, marked on every image.
+class CompareCanvas : public QWidget {
+public:
+    explicit CompareCanvas(QWidget* parent = nullptr) : QWidget(parent) {
+        setObjectName(QStringLiteral("compareImages"));
+        setMinimumSize(240, 160);
+        QSizePolicy policy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+        policy.setHeightForWidth(true);
+        setSizePolicy(policy);
+        setCursor(Qt::CrossCursor);
+    }
+    void setImages(QList<QPair<QString, QImage>> images) {
+        m_images = std::move(images);
+        update();
+    }
+    void setPicked(QPoint pixel) {
+        m_picked = pixel;
+        update();
+    }
+    std::function<void(QPoint)> picked;
+    QSize sizeHint() const override { return {520, heightForWidth(520)}; }
+    // As tall as two images side by side need, whatever the mode: the texts below stay put.
+    bool hasHeightForWidth() const override { return true; }
+    int heightForWidth(int width) const override {
+        const QSize image = m_images.isEmpty() || m_images.front().second.isNull()
+                                ? QSize(4, 3)
+                                : m_images.front().second.size();
+        return fontMetrics().height() + 4 + (width - kGap) / 2 * image.height() / image.width();
+    }
+    static constexpr int kGap = 8;
+
+protected:
+    void paintEvent(QPaintEvent*) override {
+        QPainter p(this);
+        m_rects.clear();
+        const int n = int(m_images.size());
+        if (n == 0) return;
+        const int gap = kGap, caption = fontMetrics().height() + 4;
+        const int slot = (width() - gap * (n - 1)) / n;
+        for (int i = 0; i < n; ++i) {
+            const QImage& image = m_images[i].second;
+            const QRect area(i * (slot + gap), caption, slot, height() - caption);
+            p.setPen(palette().color(QPalette::WindowText));
+            p.drawText(QRect(area.left(), 0, slot, caption), Qt::AlignCenter, m_images[i].first);
+            if (image.isNull() || area.width() <= 0 || area.height() <= 0) continue;
+            QSize size = image.size().scaled(area.size(), Qt::KeepAspectRatio);
+            QRect target(QPoint(0, 0), size);
+            target.moveCenter(area.center());
+            target.moveTop(area.top());
+            p.drawImage(target, image);
+            m_rects.append(target);
+            if (m_picked.x() >= 0 && m_picked.x() < image.width() &&
+                m_picked.y() < image.height()) {
+                const double sx = double(target.width()) / image.width();
+                const double sy = double(target.height()) / image.height();
+                const QPointF c(target.left() + (m_picked.x() + 0.5) * sx,
+                                target.top() + (m_picked.y() + 0.5) * sy);
+                const double r = std::max(4.0, sx);
+                p.setPen(QPen(Qt::black, 3));
+                p.drawRect(QRectF(c.x() - r, c.y() - r, 2 * r, 2 * r));
+                p.setPen(QPen(Qt::white, 1.5));
+                p.drawRect(QRectF(c.x() - r, c.y() - r, 2 * r, 2 * r));
+            }
+        }
+    }
+    void mousePressEvent(QMouseEvent* event) override {
+        for (int i = 0; i < m_rects.size() && i < m_images.size(); ++i) {
+            const QRect& r = m_rects[i];
+            if (!r.contains(event->position().toPoint())) continue;
+            const QSize s = m_images[i].second.size();
+            const QPointF at = event->position() - r.topLeft();
+            const QPoint pixel(
+                std::clamp(int(at.x() * s.width() / r.width()), 0, s.width() - 1),
+                std::clamp(int(at.y() * s.height() / r.height()), 0, s.height() - 1));
+            if (picked) picked(pixel);
+            return;
+        }
+    }
+
+private:
+    QList<QPair<QString, QImage>> m_images;
+    QList<QRect> m_rects;
+    QPoint m_picked{-1, -1};
+};
+
+namespace {
+
+std::array<std::uint8_t, 4> bytesAt(const rl::Rgba8Image& image, int x, int y) {
+    const std::uint8_t* p = image.pixel(x, y);
+    return {p[0], p[1], p[2], p[3]};
+}
+
+QString bytesText(const std::array<std::uint8_t, 4>& b) {
+    return QStringLiteral("(%1, %2, %3, %4)").arg(b[0]).arg(b[1]).arg(b[2]).arg(b[3]);
+}
+
+QString channels(const std::array<int, 4>& v) {
+    return ComparePanel::tr("R %1, G %2, B %3, A %4").arg(v[0]).arg(v[1]).arg(v[2]).arg(v[3]);
+}
+
+QString channels(const std::array<double, 4>& v) {
+    return ComparePanel::tr("R %1, G %2, B %3, A %4")
+        .arg(v[0], 0, 'f', 1)
+        .arg(v[1], 0, 'f', 1)
+        .arg(v[2], 0, 'f', 1)
+        .arg(v[3], 0, 'f', 1);
+}
+
+QString channelName(int c) {
+    switch (c) {
+        case 0:
+            return ComparePanel::tr("red");
+        case 1:
+            return ComparePanel::tr("green");
+        case 2:
+            return ComparePanel::tr("blue");
+        default:
+            return ComparePanel::tr("alpha");
+    }
+}
+
+// "a, b and c" in the language shown.
+QString listText(const QStringList& parts) {
+    if (parts.size() < 2) return parts.value(0);
+    return ComparePanel::tr("%1 and %2")
+        .arg(parts.mid(0, parts.size() - 1).join(QStringLiteral(", ")), parts.last());
+}
+
+QString vec(const rl::vec3& v) {
+    return vector(v, 'g', 3);
+}
+
+}  // namespace
+
+ComparePanel::ComparePanel(Inspection* inspection, QWidget* parent)
+    : QWidget(parent), m_inspection(inspection) {
+    auto* layout = new QVBoxLayout(this);
+    auto* bar = new QHBoxLayout;
+    m_mode = new QComboBox;
+    m_mode->setObjectName(QStringLiteral("compareMode"));
+    m_mode->addItem(tr("Side by side"));
+    m_mode->addItem(tr("Flicker"));
+    m_mode->addItem(tr("Difference"));
+    m_mode->setToolTip(
+        tr("Theirs beside ours, one after the other twice a second, or the "
+           "pixels that differ"));
+    bar->addWidget(m_mode);
+    auto* thresholdLabel = new QLabel(tr("Differ by more than"));
+    bar->addWidget(thresholdLabel);
+    m_threshold = new QSpinBox;
+    m_threshold->setObjectName(QStringLiteral("compareThreshold"));
+    m_threshold->setRange(0, 255);
+    m_threshold->setToolTip(
+        tr("The difference view shows the pixels where some channel differs "
+           "by more than this (0: every difference)"));
+    thresholdLabel->setBuddy(m_threshold);
+    bar->addWidget(m_threshold);
+    bar->addStretch();
+    m_again = new QPushButton(tr("Compare Again"));
+    m_again->setObjectName(QStringLiteral("compareAgainButton"));
+    m_again->setToolTip(
+        tr("The scene changed since the comparison: compare their image with "
+           "the scene shown now"));
+    m_again->setVisible(false);
+    bar->addWidget(m_again);
+    layout->addLayout(bar);
+
+    m_canvas = new CompareCanvas;
+    m_canvas->picked = [this](QPoint pixel) { m_inspection->pickPixel(pixel); };
+    layout->addWidget(m_canvas);
+
+    const auto textLabel = [layout](const char* name, Qt::TextFormat format) {
+        auto* label = new QLabel;
+        label->setObjectName(QLatin1String(name));
+        label->setWordWrap(true);
+        label->setTextFormat(format);
+        label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        layout->addWidget(label);
+        return label;
+    };
+    m_summary = textLabel("compareSummary", Qt::PlainText);
+    m_pixel = textLabel("comparePixel", Qt::PlainText);
+    m_diagnosis = textLabel("compareDiagnosis", Qt::RichText);
+    layout->addStretch(1);
+    m_summary->setText(
+        tr("File > Compare with Image... compares a PNG of your own renderer "
+           "with this scene's render."));
+
+    m_flicker.setInterval(kFlickerMs);
+    connect(&m_flicker, &QTimer::timeout, this, [this] {
+        m_flickerTheirs = !m_flickerTheirs;
+        showImages();
+    });
+    connect(m_mode, &QComboBox::currentIndexChanged, this, [this] {
+        m_flickerTheirs = true;
+        if (mode() == Mode::Flicker)
+            m_flicker.start();
+        else
+            m_flicker.stop();
+        showImages();
+    });
+    connect(m_threshold, &QSpinBox::valueChanged, this, [this] {
+        refreshDifference();
+        showImages();
+        refreshTexts();
+    });
+    connect(m_again, &QPushButton::clicked, this, [this] {
+        const QString problem = compare(m_path);
+        if (!problem.isEmpty()) m_summary->setText(problem);
+    });
+    connect(m_inspection, &Inspection::pixelPicked, this, [this](QPoint pixel) {
+        m_canvas->setPicked(pixel);
+        refreshPixel();
+    });
+    connect(m_inspection, &Inspection::frameChanged, this, [this] {
+        refreshTexts();
+        refreshPixel();
+    });
+    connect(m_inspection, &Inspection::replayChanged, this, &ComparePanel::refreshPixel);
+}
+
+QString ComparePanel::compare(const QString& path) {
+    const std::shared_ptr<const rl::FrameTrace>& frame = m_inspection->frame();
+    if (!frame || !frame->scene) return tr("There is no render to compare with yet.");
+    rl::Rgba8Image theirs;
+    if (QString problem = CompareImage::read(path, theirs); !problem.isEmpty()) return problem;
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    auto ours = rl::renderOurFrame(frame->scene);
+    QString problem;
+    bool embedded = false;
+    if (!ours) {
+        problem = QString::fromStdString(ours.error().message);
+    } else if (problem = CompareImage::sizeMismatch(path, theirs, ours->image, embedded);
+               problem.isEmpty()) {
+        auto comparison = rl::compareWithOurs(ours.value(), theirs);
+        if (!comparison) {
+            problem = QString::fromStdString(comparison.error().message);
+        } else {
+            m_path = path;
+            m_scene = frame->scene;
+            m_ours = std::make_unique<rl::OurFrame>(std::move(ours.value()));
+            m_theirs = std::move(theirs);
+            m_comparison = std::make_unique<rl::ImageComparison>(std::move(comparison.value()));
+            m_theirImage = toQImage(m_theirs);
+            m_ourImage = toQImage(m_ours->image);
+        }
+    }
+    QApplication::restoreOverrideCursor();
+    if (!problem.isEmpty()) return problem;
+    refreshDifference();
+    showImages();
+    refreshTexts();
+    m_canvas->setPicked(m_inspection->pickedPixel());
+    refreshPixel();
+    emit compared();
+    return {};
+}
+
+bool ComparePanel::isStale() const {
+    return m_comparison && (!m_inspection->frame() || m_inspection->frame()->scene != m_scene);
+}
+
+ComparePanel::Mode ComparePanel::mode() const {
+    return static_cast<Mode>(m_mode->currentIndex());
+}
+
+void ComparePanel::setMode(Mode mode) {
+    m_mode->setCurrentIndex(static_cast<int>(mode));
+}
+
+int ComparePanel::threshold() const {
+    return m_threshold->value();
+}
+
+void ComparePanel::setThreshold(int threshold) {
+    m_threshold->setValue(threshold);
+}
+
+void ComparePanel::refreshDifference() {
+    m_aboveThreshold = 0;
+    if (!m_comparison) return;
+    // The comparison's own difference image where a pixel differs by more than the threshold,
+    // ours darkened as it darkens the others.
+    rl::Rgba8Image shown = m_comparison->difference;
+    const int limit = threshold();
+    for (int y = 0; y < shown.height; ++y) {
+        for (int x = 0; x < shown.width; ++x) {
+            const auto a = bytesAt(m_ours->image, x, y), b = bytesAt(m_theirs, x, y);
+            int d = 0;
+            for (int c = 0; c < 4; ++c) d = std::max(d, std::abs(int(a[c]) - int(b[c])));
+            if (d > limit) {
+                ++m_aboveThreshold;
+            } else {
+                std::uint8_t* p =
+                    shown.rgba.data() + (std::size_t(y) * std::size_t(shown.width) + x) * 4;
+                for (int c = 0; c < 3; ++c) p[c] = std::uint8_t(a[c] / 3);
+                p[3] = 255;
+            }
+        }
+    }
+    m_difference = toQImage(shown);
+}
+
+void ComparePanel::showImages() {
+    if (!m_comparison) {
+        m_canvas->setImages({});
+        return;
+    }
+    switch (mode()) {
+        case Mode::SideBySide:
+            m_canvas->setImages({{tr("Theirs"), m_theirImage}, {tr("Ours"), m_ourImage}});
+            break;
+        case Mode::Flicker:
+            m_canvas->setImages({{m_flickerTheirs ? tr("Theirs") : tr("Ours"),
+                                  m_flickerTheirs ? m_theirImage : m_ourImage}});
+            break;
+        case Mode::Difference:
+            m_canvas->setImages(
+                {{tr("%n pixel(s) differ by more than %1", "", int(m_aboveThreshold))
+                      .arg(threshold()),
+                  m_difference}});
+            break;
+    }
+}
+
+QString ComparePanel::summaryText() const {
+    return m_summary->text();
+}
+
+QString ComparePanel::diagnosisText() const {
+    QTextDocument doc;
+    doc.setHtml(m_diagnosis->text());
+    return doc.toPlainText();
+}
+
+QString ComparePanel::pixelText() const {
+    return m_pixel->text();
+}
+
+void ComparePanel::refreshTexts() {
+    m_again->setVisible(isStale());
+    if (!m_comparison) return;
+    const rl::ImageComparison& c = *m_comparison;
+    QStringList summary;
+    summary << tr("%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).")
+                   .arg(QFileInfo(m_path).fileName())
+                   .arg(c.width)
+                   .arg(c.height)
+                   .arg(c.compared)
+                   .arg(c.differing)
+                   .arg(100.0 * double(c.differing) / double(c.compared), 0, 'f', 1);
+    if (c.differing > 0) {
+        summary << tr("Largest difference per channel: %1.").arg(channels(c.largest));
+        summary << tr("Mean difference per channel, over the differing pixels: %1.")
+                       .arg(channels(c.mean));
+        summary << tr("Pixels only one side covers: %1 only ours (our depth buffer), %2 only "
+                      "theirs (not the background).")
+                       .arg(c.onlyOurs)
+                       .arg(c.onlyTheirs);
+    }
+    if (isStale())
+        summary << tr(
+            "The scene has changed since this comparison: Compare Again compares "
+            "their image with the scene shown now.");
+    m_summary->setText(summary.join(QLatin1Char('\n')));
+
+    QString html;
+    if (c.differing == 0) {
+        html = tr("The images are the same.").toHtmlEscaped();
+    } else if (c.diagnosis.empty()) {
+        html = tr("Diagnosis: none of the mistakes RasterLab knows explains these differences.")
+                   .toHtmlEscaped();
+    } else {
+        html = QStringLiteral("<p><b>%1</b></p>").arg(tr("Diagnosis, most likely first:"));
+        int rank = 0;
+        for (const rl::Finding& f : c.diagnosis) {
+            html += QStringLiteral("<p><b>%1. %2</b><br>%3<br>%4<br>%5")
+                        .arg(++rank)
+                        .arg(translated(f.title).toHtmlEscaped(),
+                             tr("Explains %1% of the differing pixels (%2 of %3).")
+                                 .arg(100.0 * f.share, 0, 'f', 1)
+                                 .arg(f.explained)
+                                 .arg(c.differing)
+                                 .toHtmlEscaped(),
+                             tr("Evidence: %1").arg(translated(f.evidence)).toHtmlEscaped(),
+                             tr("Check: %1").arg(translated(f.advice)).toHtmlEscaped());
+            for (const rl::PixelExample& e : f.examples)
+                html += QStringLiteral("<br>") + tr("At (%1, %2): ours %3, theirs %4")
+                                                     .arg(e.x)
+                                                     .arg(e.y)
+                                                     .arg(bytesText(e.ours), bytesText(e.theirs))
+                                                     .toHtmlEscaped();
+            html += QStringLiteral("</p>");
+        }
+    }
+    m_diagnosis->setText(html);
+    showImages();
+}
+
+void ComparePanel::refreshPixel() {
+    const QPoint p = m_inspection->pickedPixel();
+    if (!m_comparison || p.x() < 0 || p.x() >= m_theirs.width || p.y() < 0 ||
+        p.y() >= m_theirs.height) {
+        m_pixel->setText(m_comparison ? tr("Pick a pixel (here or on the image) to see their "
+                                           "colour beside ours.")
+                                      : QString());
+        return;
+    }
+    const auto ours = bytesAt(m_ours->image, p.x(), p.y());
+    const auto theirs = bytesAt(m_theirs, p.x(), p.y());
+    QStringList lines;
+    lines << tr("Pixel (%1, %2): theirs %3, ours %4.")
+                 .arg(p.x())
+                 .arg(p.y())
+                 .arg(bytesText(theirs), bytesText(ours));
+    QStringList changes;
+    for (int c = 0; c < 4; ++c) {
+        const int d = int(theirs[c]) - int(ours[c]);
+        if (d < 0) changes << tr("minus %1 in %2").arg(-d).arg(channelName(c));
+        if (d > 0) changes << tr("plus %1 in %2").arg(d).arg(channelName(c));
+    }
+    if (changes.isEmpty()) {
+        lines << tr("Their colour is ours.");
+        m_pixel->setText(lines.join(QLatin1Char('\n')));
+        return;
+    }
+    lines << tr("Their colour is ours %1.").arg(listText(changes));
+    if (isStale()) {
+        lines << tr(
+            "The scene has changed since the comparison: the lighting shown now is not "
+            "the one compared.");
+        m_pixel->setText(lines.join(QLatin1Char('\n')));
+        return;
+    }
+    // The lighting of the fragment that holds the pixel at the end of the frame.
+    PixelHistory history;
+    history.rebuild(*m_inspection);
+    if (history.rows().empty()) {
+        lines << history.verdict();
+    } else if (!m_ours->covered(p.x(), p.y())) {
+        lines << tr("No triangle of ours covers this pixel: it is the background.");
+    } else if (const auto b = rowBreakdown(*m_inspection, history,
+                                           static_cast<int>(history.rows().size()) - 1);
+               !b) {
+        lines << tr("The lighting of this pixel is not known.");
+    } else if (b->lighting != rl::LightingModel::CoursePhong || b->slides ||
+               b->event.model == rl::ShadingModel::Gouraud) {
+        lines << tr(
+            "The terms that would have to change are worked out for the course's "
+            "lighting model in flat or Phong shading; this pixel is shaded otherwise "
+            "(the pixel inspector shows how).");
+    } else {
+        lines << termLines(*b, theirs);
+    }
+    m_pixel->setText(lines.join(QLatin1Char('\n')));
+}
+
+QStringList ComparePanel::termLines(const LightingBreakdown& b,
+                                    const std::array<std::uint8_t, 4>& theirs) const {
+    const float scale = m_scene->conventions.colourScale;
+    const float byte = scale / 255.0f;  // one byte in the colour scale: the rounding's margin
+    // What the colour (before clamping) would have to change by, per channel, to give their
+    // byte. Where we clamp to 255 and so do they, any colour at least as high gives it: the
+    // change is then at least delta (and is shown as none).
+    rl::vec3 delta(0.0f);
+    std::array<bool, 3> atLeast{};
+    QStringList clamped;
+    for (int c = 0; c < 3; ++c) {
+        atLeast[c] = theirs[c] == 255 && b.colour[c] >= scale;
+        delta[c] = (atLeast[c] ? scale : float(theirs[c]) * byte) - b.colour[c];
+        if (atLeast[c]) clamped << channelName(c);
+    }
+    const rl::vec3& od = b.objectColour;
+    struct Term {
+        QString name;
+        rl::vec3 value;
+    };
+    const Term terms[] = {{tr("the ambient term Ia·ka"), b.ambient},
+                          {tr("the diffuse term Il·Od·kd·(N·L)"), b.diffuse},
+                          {tr("the specular term Il·ks·(R·V)^n"), b.specular}};
+    QStringList lines;
+    bool explained = false;  // a term changed by a simple factor gives their colour
+    for (const Term& t : terms) {
+        const rl::vec3 needed = t.value + delta;
+        rl::vec3 shown = needed;  // a clamped channel as it is
+        QStringList zero, negative;
+        for (int c = 0; c < 3; ++c) {
+            if (atLeast[c]) {
+                shown[c] = t.value[c];
+                continue;
+            }
+            if (std::abs(delta[c]) > byte && t.value[c] <= byte) zero << channelName(c);
+            if (needed[c] < -byte) negative << channelName(c);
+        }
+        if (!zero.isEmpty()) {
+            lines << tr("• %1 is 0 in %2 here: changing it alone cannot give their colour.")
+                         .arg(t.name, listText(zero));
+            continue;
+        }
+        if (!negative.isEmpty()) {
+            lines << tr("• %1 would have to be below 0 in %2: not this term alone.")
+                         .arg(t.name, listText(negative));
+            continue;
+        }
+        // The factor per channel, and whether a simple one fits every channel to within the
+        // rounding of a byte: 0 (the term left out), Od (multiplied by Od), 1/Od (without Od).
+        rl::vec3 factor(1.0f);
+        const auto fits = [&](const rl::vec3& f) {
+            for (int c = 0; c < 3; ++c) {
+                if (t.value[c] <= byte) continue;
+                if (f[c] < (needed[c] - byte) / t.value[c]) return false;
+                if (!atLeast[c] && f[c] > (needed[c] + byte) / t.value[c]) return false;
+            }
+            return true;
+        };
+        for (int c = 0; c < 3; ++c)
+            if (t.value[c] > byte) factor[c] = shown[c] / t.value[c];
+        QString line = tr("• %1 would have to be %2 instead of %3, × %4 per channel")
+                           .arg(t.name, vec(shown), vec(t.value), vec(factor));
+        if (fits(rl::vec3(0.0f))) {
+            line += tr(": the term left out");
+            explained = true;
+        } else if (fits(od)) {
+            line += tr(": that is the term times Od %1").arg(vec(od));
+            explained = true;
+        } else if (od.x > 0.0f && od.y > 0.0f && od.z > 0.0f && fits(1.0f / od)) {
+            line += tr(": that is the term without Od %1").arg(vec(od));
+            explained = true;
+        }
+        lines << line + QLatin1Char('.');
+    }
+    if (!clamped.isEmpty())
+        lines << tr("(%1: 255 in both images, clamped; any value at least as high gives it.)")
+                     .arg(listText(clamped));
+    if (!explained)
+        lines << tr(
+            "No term changed by a simple factor (left out, times Od, without Od) gives "
+            "their colour: look at several terms, or at what the diagnosis says.");
+    return lines;
+}
+
+}  // namespace rasterlab

@@ -1,0 +1,93 @@
+// The Compare dock (File > Compare with Image...): a student's image and ours side by side,
+// flickering one into the other, or their difference above a threshold; the summary and the
+// ranked diagnosis of `rasterlab-cli compare` (the same functions: mistakes.h); and, for the
+// pixel picked, their colour beside ours and which Phong term of ours (ambient, diffuse,
+// specular) would have to change, and by how much, to give theirs.
+#pragma once
+
+#include <QImage>
+#include <QTimer>
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+
+#include "pipeline/analysis/mistakes.h"
+#include "views/lighting_breakdown.h"
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QSpinBox;
+
+namespace rasterlab {
+
+class Inspection;
+class CompareCanvas;
+
+class ComparePanel : public QWidget {
+    Q_OBJECT
+public:
+    enum class Mode { SideBySide, Flicker, Difference };
+    static constexpr int kFlickerMs = 500;  // each image half a second: two changes a second
+
+    explicit ComparePanel(Inspection* inspection, QWidget* parent = nullptr);
+
+    // Compares the PNG at `path` with our render of the frame shown: an empty string, or the
+    // message saying why it cannot be (the panel then keeps what it showed).
+    QString compare(const QString& path);
+    const rl::ImageComparison* comparison() const { return m_comparison.get(); }
+    QString imagePath() const { return m_path; }
+    // The scene shown is no longer the one compared (a file or value changed since).
+    bool isStale() const;
+
+    Mode mode() const;
+    void setMode(Mode mode);
+    bool flickerShowsTheirs() const { return m_flickerTheirs; }
+    int threshold() const;
+    void setThreshold(int threshold);
+    // The pixels that differ by more than the threshold in some channel (RGBA), and the
+    // difference view: theirs against ours from yellow (a little) to red, magenta where only
+    // we cover a pixel, cyan where only they do, the other pixels ours darkened.
+    std::size_t differingAboveThreshold() const { return m_aboveThreshold; }
+    const QImage& differenceImage() const { return m_difference; }
+    const QImage& theirImage() const { return m_theirImage; }
+    const QImage& ourImage() const { return m_ourImage; }
+
+    QString summaryText() const;
+    QString diagnosisText() const;  // plain text
+    QString pixelText() const;
+
+signals:
+    void compared();
+
+private:
+    void showImages();
+    void refreshDifference();
+    void refreshTexts();
+    void refreshPixel();
+    // What each Phong term would have to be for our colour to become theirs at the pixel.
+    QStringList termLines(const LightingBreakdown& b,
+                          const std::array<std::uint8_t, 4>& theirs) const;
+
+    Inspection* m_inspection = nullptr;
+    QString m_path;
+    std::shared_ptr<const rl::Scene> m_scene;  // the scene compared
+    std::unique_ptr<rl::OurFrame> m_ours;
+    rl::Rgba8Image m_theirs;
+    std::unique_ptr<rl::ImageComparison> m_comparison;
+    QImage m_theirImage, m_ourImage, m_difference;
+    std::size_t m_aboveThreshold = 0;
+    bool m_flickerTheirs = true;
+    QTimer m_flicker;
+
+    QComboBox* m_mode = nullptr;
+    QSpinBox* m_threshold = nullptr;
+    QPushButton* m_again = nullptr;
+    CompareCanvas* m_canvas = nullptr;
+    QLabel* m_summary = nullptr;
+    QLabel* m_diagnosis = nullptr;
+    QLabel* m_pixel = nullptr;
+};
+
+}  // namespace rasterlab
