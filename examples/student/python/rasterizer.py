@@ -217,13 +217,15 @@ def project(P, camera, width, height, opts):
 
     The seed's formulas: ((d/hx) x/z, (d/hy) y/z) in [-1, 1], then
     x = (int)((x + 1) * width / 2), y = (int)((1 - y) * height / 2).
-    --mirror-x writes (1 - x) for x; --flip-y writes (y + 1) for (1 - y).
+    --flip-y writes (y + 1) for (1 - y).  (A mirror of x in this formula
+    would give exactly --u-v-cross-n's image, so --mirror-x mirrors the
+    finished image instead: see mirror_columns.)
     """
     if P[2] == 0.0:
         return None
     sx = (camera["d"] / camera["hx"]) * (P[0] / P[2])
     sy = (camera["d"] / camera["hy"]) * (P[1] / P[2])
-    fx = (1 - sx) if opts.mirror_x else (sx + 1)
+    fx = sx + 1
     fy = (sy + 1) if opts.flip_y else (1 - sy)
     return (to_int(fx * width / 2, opts), to_int(fy * height / 2, opts))
 
@@ -427,7 +429,22 @@ def render(camera, light, points, triangles, width, height, opts):
             [vertex_colors[i] for i in tri]
         draw_triangle(frame, s, [view[i] for i in tri],
                       [normals[i] for i in tri], colors, light, Pl)
+    if opts.mirror_x:
+        mirror_columns(frame)
     return frame
+
+
+def mirror_columns(frame):
+    """--mirror-x: the image written with its columns in reverse order
+    (x -> width - 1 - x), as when a row is stored from its end."""
+    w = frame.width
+    for y in range(frame.height):
+        row = frame.zbuffer[y * w:(y + 1) * w]
+        frame.zbuffer[y * w:(y + 1) * w] = row[::-1]
+        for x in range(w // 2):
+            a, b = 3 * (y * w + x), 3 * (y * w + w - 1 - x)
+            frame.pixels[a:a + 3], frame.pixels[b:b + 3] = \
+                frame.pixels[b:b + 3], frame.pixels[a:a + 3]
 
 
 # ---------------------------------------------------------------------------
@@ -480,7 +497,8 @@ MISTAKES = [
     ("--depth-reversed", "z-buffer from -infinity, the farther fragment"
      " wins"),
     ("--round-vertices", "screen vertices rounded instead of truncated"),
-    ("--mirror-x", "screen x = (int)((1 - x) * width / 2)"),
+    ("--mirror-x", "the finished image mirrored left-right (columns"
+     " written in reverse)"),
     ("--flip-y", "screen y = (int)((y + 1) * height / 2): y grows upward"),
     ("--no-flip-normal", "N not turned toward the viewer where V.N < 0"),
     ("--ambient-ia-only", "ambient term Ia instead of Ia*ka (changes the"

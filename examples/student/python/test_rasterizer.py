@@ -210,6 +210,14 @@ class Switches(unittest.TestCase):
                                      "--color-offset", "5"])[2]
         self.assertEqual(len({bytes(one), bytes(two), bytes(three)}), 3)
 
+    def test_mirror_x_mirrors_the_plain_image(self):
+        w, h, plain = self.plain["main"]
+        _, _, mirrored = self.render("main", ["--mirror-x"])
+        for y in range(h):
+            for x in range(w):
+                a, b = 3 * (y * w + x), 3 * (y * w + w - 1 - x)
+                self.assertEqual(mirrored[a:a + 3], plain[b:b + 3])
+
     def test_data_after_the_counts_is_ignored(self):
         camera, light, obj = self.scenes["eps"]
         longer = obj + "_long.byu"
