@@ -217,9 +217,12 @@ def project(P, camera, width, height, opts):
 
     The seed's formulas: ((d/hx) x/z, (d/hy) y/z) in [-1, 1], then
     x = (int)((x + 1) * width / 2), y = (int)((1 - y) * height / 2).
-    --flip-y writes (y + 1) for (1 - y).  (A mirror of x in this formula
+    --flip-y writes (y + 1) for (1 - y).  A mirror of x in this formula
     would give exactly --u-v-cross-n's image, so --mirror-x mirrors the
-    finished image instead: see mirror_columns.)
+    finished image instead (mirror_columns).  Both are the same image but
+    where (x + 1) * width / 2 is a whole number: (int)(width - a) is
+    width - 1 - (int)a for a positive a that is not whole, and the integer
+    sample points mirror onto integer sample points.
     """
     if P[2] == 0.0:
         return None
