@@ -219,10 +219,11 @@ def project(P, camera, width, height, opts):
     x = (int)((x + 1) * width / 2), y = (int)((1 - y) * height / 2).
     --flip-y writes (y + 1) for (1 - y).  A mirror of x in this formula
     would give exactly --u-v-cross-n's image, so --mirror-x mirrors the
-    finished image instead (mirror_columns).  Both are the same image but
-    where (x + 1) * width / 2 is a whole number: (int)(width - a) is
-    width - 1 - (int)a for a positive a that is not whole, and the integer
-    sample points mirror onto integer sample points.
+    finished image instead (mirror_columns).  The two give one image while
+    every a = (x + 1) * width / 2 lies in (0, width) and is not whole:
+    (int)(width - a) is then width - 1 - (int)a, and the integer sample
+    points mirror onto integer sample points.  Vertices left of the screen
+    (a < 0, truncated toward zero) or at whole a make them differ.
     """
     if P[2] == 0.0:
         return None
@@ -243,6 +244,9 @@ def phong_terms(P, N, light, Pl, opts):
     Follows the seed: V = -P', L = Pl - P'; normalise N, V, L; flip N when
     V.N < 0; no diffuse nor specular when N.L < 0; R = 2(N.L)N - L,
     normalised; no specular when R.V < 0.
+
+    --v-equals-p and --l-reversed give the same image: with -V the flip
+    turns N to -N, so N.L and R.V change sign exactly as with -L.
     """
     eps = 1e-3 if opts.epsilon_special_cases else 0.0
     V = P if opts.v_equals_p else (-P[0], -P[1], -P[2])

@@ -218,6 +218,10 @@ class Switches(unittest.TestCase):
                 a, b = 3 * (y * w + x), 3 * (y * w + w - 1 - x)
                 self.assertEqual(mirrored[a:a + 3], plain[b:b + 3])
 
+    def test_v_equals_p_gives_the_l_reversed_image(self):
+        self.assertEqual(self.render("main", ["--v-equals-p"])[2],
+                         self.render("main", ["--l-reversed"])[2])
+
     def test_data_after_the_counts_is_ignored(self):
         camera, light, obj = self.scenes["eps"]
         longer = obj + "_long.byu"
