@@ -22,6 +22,7 @@ packages=(
     shared-mime-info                   # update-mime-database: the file types
     file                               # the PNG icons' sizes, checked
     qemu-user                          # other processors' kernels (scripts/other-cpus.sh)
+    python3                            # the student renderer of examples/student, and its tests
 )
 
 missing=()
