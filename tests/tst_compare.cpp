@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <utility>
 
 #include "app/cli/cli_common.h"
 #include "app/documents/command_file.h"
@@ -144,6 +145,9 @@ private slots:
     void badInputs_data();
     void badInputs();
     void screenshotWithBorder();
+    void theirSizeByDefault();
+    void theirFormats_data();
+    void theirFormats();
 };
 
 void TestCompare::ranksTheMistakeFirst_data() {
@@ -351,10 +355,12 @@ void TestCompare::textOutputAndDifferenceImage() {
     QCOMPARE(run.exitCode, 0);
     const QStringList lines = run.out.split(QLatin1Char('\n'));
     QCOMPARE(lines.value(0),
-             QStringLiteral("comparing theirs.png with our render of goblet (800x600)"));
-    QVERIFY2(lines.value(5).startsWith(QStringLiteral("diagnosis, most likely first:")),
+             QStringLiteral("comparing theirs.png with our render of goblet (800x600, the scene's "
+                            "size)"));
+    QCOMPARE(lines.value(1), QStringLiteral("  your image: a PNG image"));
+    QVERIFY2(lines.value(6).startsWith(QStringLiteral("diagnosis, most likely first:")),
              qPrintable(run.out));
-    QCOMPARE(lines.value(6), QStringLiteral("  1. the ambient term multiplied by the object "
+    QCOMPARE(lines.value(7), QStringLiteral("  1. the ambient term multiplied by the object "
                                             "colour: Ia*ka*Od instead of Ia*ka"));
     QVERIFY2(run.out.contains(QStringLiteral("(difference, 800x600)")), qPrintable(run.out));
     // The difference image: differing pixels bright (red channel 255), the others darkened.
@@ -381,14 +387,22 @@ void TestCompare::badInputs_data() {
     QTest::addColumn<int>("exitCode");
     QTest::addColumn<QString>("message");
     const QStringList goblet = {"compare", "--scene", "goblet", "--image"};
-    QTest::newRow("other size")
-        << (goblet + QStringList{"small.png"}) << 1
-        << "small.png: the image is 640x480, ours is 800x600 (--size 640x480 "
-           "renders ours at their size)";
-    QTest::newRow("not a PNG") << (goblet + QStringList{"notes.png"}) << 1
-                               << "notes.png: not a PNG image";
-    QTest::newRow("a JPEG") << (goblet + QStringList{"photo.jpg"}) << 1
-                            << "photo.jpg: not a PNG image (a jpeg image)";
+    QTest::newRow("other size than --size")
+        << (goblet + QStringList{"small.png", "--size", "800x600"}) << 1
+        << "small.png: the image is 640x480, ours is 800x600 (no frame of ours found inside it "
+           "at --size 800x600)";
+    QTest::newRow("not an image") << (goblet + QStringList{"notes.png"}) << 1
+                                  << "notes.png: not an image RasterLab reads (PNG, PPM, BMP, "
+                                     "TGA or JPEG)";
+    QTest::newRow("a GIF") << (goblet + QStringList{"anim.gif"}) << 1
+                           << "anim.gif: not an image RasterLab reads (PNG, PPM, BMP, TGA or "
+                              "JPEG): a gif image";
+    QTest::newRow("TGA cut short") << (goblet + QStringList{"cut.tga"}) << 1
+                                   << "cut.tga: the TGA image is cut short";
+    QTest::newRow("colour-mapped TGA")
+        << (goblet + QStringList{"mapped.tga"}) << 1
+        << "mapped.tga: a TGA image of a kind RasterLab does not read (only 8-bit grey and 24- or "
+           "32-bit colour, plain or run-length encoded)";
     QTest::newRow("empty file") << (goblet + QStringList{"empty.png"}) << 1
                                 << "empty.png: the file is empty";
     QTest::newRow("missing file") << (goblet + QStringList{"missing.png"}) << 1
@@ -416,7 +430,21 @@ void TestCompare::badInputs() {
     QImage small(640, 480, QImage::Format_RGBA8888);
     small.fill(Qt::black);
     QVERIFY(small.save(dir.filePath(QStringLiteral("small.png"))));
-    QVERIFY(small.save(dir.filePath(QStringLiteral("photo.jpg")), "JPEG"));
+    // A TGA header for 320x240 pixels of 24 bits, followed by ten bytes; one colour-mapped.
+    for (const auto& [name, type] :
+         {std::pair{QStringLiteral("cut.tga"), 2}, std::pair{QStringLiteral("mapped.tga"), 1}}) {
+        QByteArray tga = QByteArray::fromHex("0000020000000000000000004001f0001820");
+        tga[2] = char(type);
+        if (type == 1) tga[1] = 1;
+        QFile file(dir.filePath(name));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(tga + QByteArray(10, 'x'));
+    }
+    QFile gif(dir.filePath(QStringLiteral("anim.gif")));  // one white pixel
+    QVERIFY(gif.open(QIODevice::WriteOnly));
+    gif.write(QByteArray::fromHex("47494638396101000100800000ffffff00000021f90401000000002c00000000"
+                                  "010001000002024401003b"));
+    gif.close();
     QFile notes(dir.filePath(QStringLiteral("notes.png")));
     QVERIFY(notes.open(QIODevice::WriteOnly));
     notes.write("not an image\n");
@@ -454,10 +482,110 @@ void TestCompare::screenshotWithBorder() {
         for (int x = 0; x < ours.width(); ++x) shot.setPixel(x + 7, y + 31, ours.pixel(x, y));
     QVERIFY(shot.save(dir.filePath(QStringLiteral("shot.png"))));
     RUN_CLI(run, (QStringList{"compare", "--scene", "goblet", "--image", "shot.png"}), dir.path());
+    QCOMPARE(run.exitCode, 0);
+    const QStringList lines = run.out.split(QLatin1Char('\n'));
+    QCOMPARE(lines.value(0),
+             QStringLiteral("comparing shot.png with our render of goblet (800x600, the scene's "
+                            "size)"));
+    QCOMPARE(lines.value(2), QStringLiteral("  cropped to 800x600 at (7, 31) from 820x640, the "
+                                            "frame found inside your image"));
+    QVERIFY2(run.out.contains(QStringLiteral("the images are the same")), qPrintable(run.out));
+}
+
+// Without --size, ours is rendered at their image's size, and the summary says so.
+void TestCompare::theirSizeByDefault() {
+    QTemporaryDir dir;
+    CliRun run;
+    RUN_CLI(run, (QStringList{"render", "--scene", "goblet", "--size", "600x600", "--output",
+                              "theirs.png"}),
+            dir.path());
+    QCOMPARE(run.exitCode, 0);
+    RUN_CLI(run, (QStringList{"compare", "--scene", "goblet", "--image", "theirs.png"}),
+            dir.path());
+    QCOMPARE(run.exitCode, 0);
+    QCOMPARE(run.out.split(QLatin1Char('\n')).value(0),
+             QStringLiteral("comparing theirs.png with our render of goblet (600x600, your "
+                            "image's size; --size overrides)"));
+    QVERIFY2(run.out.contains(QStringLiteral("360000 pixels compared, 0 differ")),
+             qPrintable(run.out));
+    RUN_CLI(run, (QStringList{"compare", "--scene", "goblet", "--image", "theirs.png", "--size",
+                              "800x600"}),
+            dir.path());
     QCOMPARE(run.exitCode, 1);
-    QCOMPARE(run.err, QStringLiteral("shot.png: the image is 820x640, ours is 800x600; it holds "
-                                     "ours at (7, 31), as a screenshot with a window border "
-                                     "would: crop it to 800x600 from there\n"));
+}
+
+// The formats student renderers write: the same pixels as PNG, PPM (P3 and P6), BMP and TGA
+// compare equal; a JPEG, with the tolerance the summary states.
+void TestCompare::theirFormats_data() {
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<QString>("described");
+    QTest::addColumn<int>("tolerance");
+    const QString noAlpha = QStringLiteral(", without alpha: colours compared, alpha taken as ours");
+    QTest::newRow("PNG") << "theirs.png" << "a PNG image" << 0;
+    QTest::newRow("PPM P6") << "theirs.ppm" << QStringLiteral("a PPM image") + noAlpha << 0;
+    QTest::newRow("PPM P3") << "plain.ppm" << QStringLiteral("a PPM image") + noAlpha << 0;
+    QTest::newRow("BMP") << "theirs.bmp" << QStringLiteral("a BMP image") + noAlpha << 0;
+    QTest::newRow("TGA") << "theirs.tga" << QStringLiteral("a TGA image") + noAlpha << 0;
+    QTest::newRow("JPEG") << "theirs.jpg"
+                          << QStringLiteral("a JPEG image, lossy: compared with a tolerance of 8 "
+                                            "per channel") + noAlpha
+                          << 8;
+}
+
+void TestCompare::theirFormats() {
+    QFETCH(QString, file);
+    QFETCH(QString, described);
+    QFETCH(int, tolerance);
+    QTemporaryDir dir;
+    CliRun run;
+    RUN_CLI(run, (QStringList{"render", "--scene", "goblet", "--size", "320x240", "--output",
+                              "theirs.png"}),
+            dir.path());
+    QCOMPARE(run.exitCode, 0);
+    const QImage png(dir.filePath(QStringLiteral("theirs.png")));
+    const QImage rgb = png.convertToFormat(QImage::Format_RGB888);
+    QVERIFY(rgb.save(dir.filePath(QStringLiteral("theirs.ppm")), "PPM"));
+    QVERIFY(rgb.save(dir.filePath(QStringLiteral("theirs.bmp")), "BMP"));
+    QVERIFY(rgb.save(dir.filePath(QStringLiteral("theirs.jpg")), "JPEG", 95));
+    // P3 and TGA written byte by byte, as a student's program would.
+    QByteArray plain = "P3\n# a comment\n320 240\n255\n";
+    QByteArray tga(18, '\0');
+    tga[2] = 2;  // uncompressed true colour
+    tga[12] = char(320 & 0xff);
+    tga[13] = char(320 >> 8);
+    tga[14] = char(240 & 0xff);
+    tga[15] = char(240 >> 8);
+    tga[16] = 24;
+    tga[17] = 0x20;  // the top row first
+    for (int y = 0; y < 240; ++y)
+        for (int x = 0; x < 320; ++x) {
+            const QRgb p = rgb.pixel(x, y);
+            plain += QByteArray::number(qRed(p)) + ' ' + QByteArray::number(qGreen(p)) + ' ' +
+                     QByteArray::number(qBlue(p)) + '\n';
+            tga += char(qBlue(p));
+            tga += char(qGreen(p));
+            tga += char(qRed(p));
+        }
+    for (const auto& [name, bytes] :
+         {std::pair{QStringLiteral("plain.ppm"), plain}, std::pair{QStringLiteral("theirs.tga"), tga}}) {
+        QFile out(dir.filePath(name));
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(bytes);
+    }
+    RUN_CLI(run, (QStringList{"compare", "--scene", "goblet", "--size", "320x240", "--image", file,
+                              "--format", "json"}),
+            dir.path());
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject o = QJsonDocument::fromJson(run.out.toUtf8()).object();
+    QCOMPARE(o.value(QStringLiteral("imageFormat")).toString(), described);
+    QCOMPARE(o.value(QStringLiteral("tolerance")).toInt(), tolerance);
+    const int differing = o.value(QStringLiteral("differing")).toInt();
+    if (tolerance == 0) {
+        QCOMPARE(differing, 0);
+    } else {
+        // JPEG at quality 95: only edge pixels stay beyond the tolerance.
+        QVERIFY2(differing < 320 * 240 / 50, qPrintable(QString::number(differing)));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestCompare)

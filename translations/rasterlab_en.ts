@@ -2866,47 +2866,83 @@
 <context>
     <name>rasterlab::CompareImage</name>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="26"/>
+        <location filename="../app/compare/compare_image.cpp" line="100"/>
         <source>no such file</source>
         <translation>no such file</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="28"/>
-        <source>a folder, not a PNG image</source>
-        <translation>a folder, not a PNG image</translation>
-    </message>
-    <message>
-        <location filename="../app/compare/compare_image.cpp" line="30"/>
+        <location filename="../app/compare/compare_image.cpp" line="104"/>
         <source>the file is empty</source>
         <translation>the file is empty</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="41"/>
-        <source>not a PNG image</source>
-        <translation>not a PNG image</translation>
-    </message>
-    <message>
-        <location filename="../app/compare/compare_image.cpp" line="42"/>
-        <source>not a PNG image (a %1 image)</source>
-        <translation>not a PNG image (a %1 image)</translation>
-    </message>
-    <message>
-        <location filename="../app/compare/compare_image.cpp" line="44"/>
+        <location filename="../app/compare/compare_image.cpp" line="128"/>
         <source>the PNG is cut short (it does not end with its IEND chunk)</source>
         <translation>the PNG is cut short (it does not end with its IEND chunk)</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="48"/>
-        <source>cannot read the PNG: %1</source>
-        <translation>cannot read the PNG: %1</translation>
+        <location filename="../app/compare/compare_image.cpp" line="102"/>
+        <source>a folder, not an image</source>
+        <translation>a folder, not an image</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="69"/>
+        <location filename="../app/compare/compare_image.cpp" line="27"/>
+        <source>the TGA header is cut short</source>
+        <translation>the TGA header is cut short</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="35"/>
+        <source>a TGA image of a kind RasterLab does not read (only 8-bit grey and 24- or 32-bit colour, plain or run-length encoded)</source>
+        <translation>a TGA image of a kind RasterLab does not read (only 8-bit grey and 24- or 32-bit colour, plain or run-length encoded)</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="47"/>
+        <location filename="../app/compare/compare_image.cpp" line="73"/>
+        <source>the TGA image is cut short</source>
+        <translation>the TGA image is cut short</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="51"/>
+        <source>the TGA image is %1x%2, larger than RasterLab reads</source>
+        <translation>the TGA image is %1x%2, larger than RasterLab reads</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="123"/>
+        <source>not an image RasterLab reads (PNG, PPM, BMP, TGA or JPEG)</source>
+        <translation>not an image RasterLab reads (PNG, PPM, BMP, TGA or JPEG)</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="124"/>
+        <source>not an image RasterLab reads (PNG, PPM, BMP, TGA or JPEG): a %1 image</source>
+        <translation>not an image RasterLab reads (PNG, PPM, BMP, TGA or JPEG): a %1 image</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="142"/>
+        <source>cannot read the %1 image: %2</source>
+        <translation>cannot read the %1 image: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="170"/>
+        <source>a %1 image</source>
+        <translation>a %1 image</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="172"/>
+        <source>, lossy: compared with a tolerance of %1 per channel</source>
+        <translation>, lossy: compared with a tolerance of %1 per channel</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="173"/>
+        <source>, without alpha: colours compared, alpha taken as ours</source>
+        <translation>, without alpha: colours compared, alpha taken as ours</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="201"/>
         <source>the image is %1, ours is %2</source>
         <translation>the image is %1, ours is %2</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="73"/>
+        <location filename="../app/compare/compare_image.cpp" line="205"/>
         <source>; it holds ours at (%1, %2), as a screenshot with a window border would: crop it to %3 from there</source>
         <translation>; it holds ours at (%1, %2), as a screenshot with a window border would: crop it to %3 from there</translation>
     </message>
@@ -2995,19 +3031,29 @@
         <translation>There is no render to compare with yet.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="339"/>
-        <location filename="../app/window/compare_panel.cpp" line="342"/>
+        <location filename="../app/window/compare_panel.cpp" line="261"/>
+        <source>Their image: %1.</source>
+        <translation>Their image: %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="267"/>
+        <source>Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.</source>
+        <translation>Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="360"/>
+        <location filename="../app/window/compare_panel.cpp" line="363"/>
         <source>Theirs</source>
         <translation>Theirs</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="339"/>
-        <location filename="../app/window/compare_panel.cpp" line="342"/>
+        <location filename="../app/window/compare_panel.cpp" line="360"/>
+        <location filename="../app/window/compare_panel.cpp" line="363"/>
         <source>Ours</source>
         <translation>Ours</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/compare_panel.cpp" line="347"/>
+        <location filename="../app/window/compare_panel.cpp" line="368"/>
         <source>%n pixel(s) differ by more than %1</source>
         <translation>
             <numerusform>%n pixel differs by more than %1</numerusform>
@@ -3015,167 +3061,167 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="373"/>
+        <location filename="../app/window/compare_panel.cpp" line="394"/>
         <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
         <translation>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="381"/>
+        <location filename="../app/window/compare_panel.cpp" line="403"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Largest difference per channel: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="382"/>
+        <location filename="../app/window/compare_panel.cpp" line="404"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Mean difference per channel, over the differing pixels: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="384"/>
+        <location filename="../app/window/compare_panel.cpp" line="406"/>
         <source>Pixels only one side covers: %1 only ours (our depth buffer), %2 only theirs (not the background).</source>
         <translation>Pixels only one side covers: %1 only ours (our depth buffer), %2 only theirs (not the background).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="390"/>
+        <location filename="../app/window/compare_panel.cpp" line="412"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="397"/>
+        <location filename="../app/window/compare_panel.cpp" line="419"/>
         <source>The images are the same.</source>
         <translation>The images are the same.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="399"/>
+        <location filename="../app/window/compare_panel.cpp" line="421"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnosis: none of the mistakes RasterLab knows explains these differences.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="402"/>
+        <location filename="../app/window/compare_panel.cpp" line="424"/>
         <source>Diagnosis, most likely first:</source>
         <translation>Diagnosis, most likely first:</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="408"/>
+        <location filename="../app/window/compare_panel.cpp" line="430"/>
         <source>Explains %1% of the differing pixels (%2 of %3).</source>
         <translation>Explains %1% of the differing pixels (%2 of %3).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="413"/>
+        <location filename="../app/window/compare_panel.cpp" line="435"/>
         <source>Evidence: %1</source>
         <translation>Evidence: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="414"/>
+        <location filename="../app/window/compare_panel.cpp" line="436"/>
         <source>Check: %1</source>
         <translation>Check: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="416"/>
+        <location filename="../app/window/compare_panel.cpp" line="438"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>At (%1, %2): ours %3, theirs %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="432"/>
+        <location filename="../app/window/compare_panel.cpp" line="454"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Pick a pixel (here or on the image) to see their colour beside ours.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="440"/>
+        <location filename="../app/window/compare_panel.cpp" line="462"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): theirs %3, ours %4.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="447"/>
+        <location filename="../app/window/compare_panel.cpp" line="469"/>
         <source>minus %1 in %2</source>
         <translation>minus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="448"/>
+        <location filename="../app/window/compare_panel.cpp" line="470"/>
         <source>plus %1 in %2</source>
         <translation>plus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="451"/>
+        <location filename="../app/window/compare_panel.cpp" line="473"/>
         <source>Their colour is ours.</source>
         <translation>Their colour is ours.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="455"/>
+        <location filename="../app/window/compare_panel.cpp" line="477"/>
         <source>Their colour is ours %1.</source>
         <translation>Their colour is ours %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="457"/>
+        <location filename="../app/window/compare_panel.cpp" line="479"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>The scene has changed since the comparison: the lighting shown now is not the one compared.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="469"/>
+        <location filename="../app/window/compare_panel.cpp" line="491"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>No triangle of ours covers this pixel: it is the background.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="473"/>
+        <location filename="../app/window/compare_panel.cpp" line="495"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>The lighting of this pixel is not known.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="476"/>
+        <location filename="../app/window/compare_panel.cpp" line="498"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="506"/>
+        <location filename="../app/window/compare_panel.cpp" line="528"/>
         <source>the ambient term Ia·ka</source>
         <translation>the ambient term Ia·ka</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="507"/>
+        <location filename="../app/window/compare_panel.cpp" line="529"/>
         <source>the diffuse term Il·Od·kd·(N·L)</source>
         <translation>the diffuse term Il·Od·kd·(N·L)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="508"/>
+        <location filename="../app/window/compare_panel.cpp" line="530"/>
         <source>the specular term Il·ks·(R·V)^n</source>
         <translation>the specular term Il·ks·(R·V)^n</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="524"/>
+        <location filename="../app/window/compare_panel.cpp" line="546"/>
         <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
         <translation>• %1 is 0 in %2 here: changing it alone cannot give their colour.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="529"/>
+        <location filename="../app/window/compare_panel.cpp" line="551"/>
         <source>• %1 would have to be below 0 in %2: not this term alone.</source>
         <translation>• %1 would have to be below 0 in %2: not this term alone.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="546"/>
+        <location filename="../app/window/compare_panel.cpp" line="568"/>
         <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
         <translation>• %1 would have to be %2 instead of %3, × %4 per channel</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="549"/>
+        <location filename="../app/window/compare_panel.cpp" line="571"/>
         <source>: the term left out</source>
         <translation>: the term left out</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="552"/>
+        <location filename="../app/window/compare_panel.cpp" line="574"/>
         <source>: that is the term times Od %1</source>
         <translation>: that is the term times Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="555"/>
+        <location filename="../app/window/compare_panel.cpp" line="577"/>
         <source>: that is the term without Od %1</source>
         <translation>: that is the term without Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="561"/>
+        <location filename="../app/window/compare_panel.cpp" line="583"/>
         <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
         <translation>(%1: 255 in both images, clamped; any value at least as high gives it.)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="564"/>
+        <location filename="../app/window/compare_panel.cpp" line="586"/>
         <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
         <translation>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</translation>
     </message>

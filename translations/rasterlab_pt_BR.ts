@@ -2866,47 +2866,83 @@
 <context>
     <name>rasterlab::CompareImage</name>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="26"/>
+        <location filename="../app/compare/compare_image.cpp" line="100"/>
         <source>no such file</source>
         <translation>o arquivo não existe</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="28"/>
-        <source>a folder, not a PNG image</source>
-        <translation>uma pasta, não uma imagem PNG</translation>
-    </message>
-    <message>
-        <location filename="../app/compare/compare_image.cpp" line="30"/>
+        <location filename="../app/compare/compare_image.cpp" line="104"/>
         <source>the file is empty</source>
         <translation>o arquivo está vazio</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="41"/>
-        <source>not a PNG image</source>
-        <translation>não é uma imagem PNG</translation>
-    </message>
-    <message>
-        <location filename="../app/compare/compare_image.cpp" line="42"/>
-        <source>not a PNG image (a %1 image)</source>
-        <translation>não é uma imagem PNG (é uma imagem %1)</translation>
-    </message>
-    <message>
-        <location filename="../app/compare/compare_image.cpp" line="44"/>
+        <location filename="../app/compare/compare_image.cpp" line="128"/>
         <source>the PNG is cut short (it does not end with its IEND chunk)</source>
         <translation>o PNG está cortado (não termina com o seu bloco IEND)</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="48"/>
-        <source>cannot read the PNG: %1</source>
-        <translation>não foi possível ler o PNG: %1</translation>
+        <location filename="../app/compare/compare_image.cpp" line="102"/>
+        <source>a folder, not an image</source>
+        <translation>uma pasta, não uma imagem</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="69"/>
+        <location filename="../app/compare/compare_image.cpp" line="27"/>
+        <source>the TGA header is cut short</source>
+        <translation>o cabeçalho do TGA está cortado</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="35"/>
+        <source>a TGA image of a kind RasterLab does not read (only 8-bit grey and 24- or 32-bit colour, plain or run-length encoded)</source>
+        <translation>uma imagem TGA de um tipo que o RasterLab não lê (só cinza de 8 bits e cor de 24 ou 32 bits, simples ou com codificação por carreiras)</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="47"/>
+        <location filename="../app/compare/compare_image.cpp" line="73"/>
+        <source>the TGA image is cut short</source>
+        <translation>a imagem TGA está cortada</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="51"/>
+        <source>the TGA image is %1x%2, larger than RasterLab reads</source>
+        <translation>a imagem TGA tem %1x%2, maior do que o RasterLab lê</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="123"/>
+        <source>not an image RasterLab reads (PNG, PPM, BMP, TGA or JPEG)</source>
+        <translation>não é uma imagem que o RasterLab lê (PNG, PPM, BMP, TGA ou JPEG)</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="124"/>
+        <source>not an image RasterLab reads (PNG, PPM, BMP, TGA or JPEG): a %1 image</source>
+        <translation>não é uma imagem que o RasterLab lê (PNG, PPM, BMP, TGA ou JPEG): é uma imagem %1</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="142"/>
+        <source>cannot read the %1 image: %2</source>
+        <translation>não é possível ler a imagem %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="170"/>
+        <source>a %1 image</source>
+        <translation>uma imagem %1</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="172"/>
+        <source>, lossy: compared with a tolerance of %1 per channel</source>
+        <translation>, com perdas: comparada com uma tolerância de %1 por canal</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="173"/>
+        <source>, without alpha: colours compared, alpha taken as ours</source>
+        <translation>, sem alfa: cores comparadas, alfa tomado como o nosso</translation>
+    </message>
+    <message>
+        <location filename="../app/compare/compare_image.cpp" line="201"/>
         <source>the image is %1, ours is %2</source>
         <translation>a imagem tem %1, a nossa tem %2</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="73"/>
+        <location filename="../app/compare/compare_image.cpp" line="205"/>
         <source>; it holds ours at (%1, %2), as a screenshot with a window border would: crop it to %3 from there</source>
         <translation>; ela contém a nossa em (%1, %2), como uma captura de tela com a borda da janela: recorte-a em %3 a partir dali</translation>
     </message>
@@ -2995,19 +3031,29 @@
         <translation>Ainda não há renderização com que comparar.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="339"/>
-        <location filename="../app/window/compare_panel.cpp" line="342"/>
+        <location filename="../app/window/compare_panel.cpp" line="261"/>
+        <source>Their image: %1.</source>
+        <translation>A imagem deles: %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="267"/>
+        <source>Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.</source>
+        <translation>Recortada para %1x%2 em (%3, %4) a partir de %5x%6: o quadro encontrado dentro dela.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="360"/>
+        <location filename="../app/window/compare_panel.cpp" line="363"/>
         <source>Theirs</source>
         <translation>Deles</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="339"/>
-        <location filename="../app/window/compare_panel.cpp" line="342"/>
+        <location filename="../app/window/compare_panel.cpp" line="360"/>
+        <location filename="../app/window/compare_panel.cpp" line="363"/>
         <source>Ours</source>
         <translation>Nossa</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/compare_panel.cpp" line="347"/>
+        <location filename="../app/window/compare_panel.cpp" line="368"/>
         <source>%n pixel(s) differ by more than %1</source>
         <translation>
             <numerusform>%n pixel difere em mais de %1</numerusform>
@@ -3015,167 +3061,167 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="373"/>
+        <location filename="../app/window/compare_panel.cpp" line="394"/>
         <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
         <translation>%1 contra a nossa renderização (%2x%3): %4 pixels comparados, %5 diferem (%6%).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="381"/>
+        <location filename="../app/window/compare_panel.cpp" line="403"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Maior diferença por canal: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="382"/>
+        <location filename="../app/window/compare_panel.cpp" line="404"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Diferença média por canal, nos pixels que diferem: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="384"/>
+        <location filename="../app/window/compare_panel.cpp" line="406"/>
         <source>Pixels only one side covers: %1 only ours (our depth buffer), %2 only theirs (not the background).</source>
         <translation>Pixels que só um lado cobre: %1 só nossos (o nosso buffer de profundidade), %2 só deles (não são o fundo).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="390"/>
+        <location filename="../app/window/compare_panel.cpp" line="412"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>A cena mudou desde esta comparação: Comparar de novo compara a imagem deles com a cena mostrada agora.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="397"/>
+        <location filename="../app/window/compare_panel.cpp" line="419"/>
         <source>The images are the same.</source>
         <translation>As imagens são iguais.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="399"/>
+        <location filename="../app/window/compare_panel.cpp" line="421"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnóstico: nenhum dos erros que o RasterLab conhece explica estas diferenças.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="402"/>
+        <location filename="../app/window/compare_panel.cpp" line="424"/>
         <source>Diagnosis, most likely first:</source>
         <translation>Diagnóstico, o mais provável primeiro:</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="408"/>
+        <location filename="../app/window/compare_panel.cpp" line="430"/>
         <source>Explains %1% of the differing pixels (%2 of %3).</source>
         <translation>Explica %1% dos pixels que diferem (%2 de %3).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="413"/>
+        <location filename="../app/window/compare_panel.cpp" line="435"/>
         <source>Evidence: %1</source>
         <translation>Evidência: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="414"/>
+        <location filename="../app/window/compare_panel.cpp" line="436"/>
         <source>Check: %1</source>
         <translation>Verifique: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="416"/>
+        <location filename="../app/window/compare_panel.cpp" line="438"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>Em (%1, %2): nossa %3, deles %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="432"/>
+        <location filename="../app/window/compare_panel.cpp" line="454"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Escolha um pixel (aqui ou na imagem) para ver a cor deles ao lado da nossa.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="440"/>
+        <location filename="../app/window/compare_panel.cpp" line="462"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): deles %3, nossa %4.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="447"/>
+        <location filename="../app/window/compare_panel.cpp" line="469"/>
         <source>minus %1 in %2</source>
         <translation>menos %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="448"/>
+        <location filename="../app/window/compare_panel.cpp" line="470"/>
         <source>plus %1 in %2</source>
         <translation>mais %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="451"/>
+        <location filename="../app/window/compare_panel.cpp" line="473"/>
         <source>Their colour is ours.</source>
         <translation>A cor deles é a nossa.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="455"/>
+        <location filename="../app/window/compare_panel.cpp" line="477"/>
         <source>Their colour is ours %1.</source>
         <translation>A cor deles é a nossa %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="457"/>
+        <location filename="../app/window/compare_panel.cpp" line="479"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>A cena mudou desde a comparação: a iluminação mostrada agora não é a comparada.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="469"/>
+        <location filename="../app/window/compare_panel.cpp" line="491"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>Nenhum triângulo nosso cobre este pixel: é o fundo.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="473"/>
+        <location filename="../app/window/compare_panel.cpp" line="495"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>A iluminação deste pixel não é conhecida.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="476"/>
+        <location filename="../app/window/compare_panel.cpp" line="498"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>Os termos que teriam de mudar são calculados para o modelo de iluminação do curso em sombreamento flat ou Phong; este pixel é sombreado de outro modo (o inspetor de pixel mostra como).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="506"/>
+        <location filename="../app/window/compare_panel.cpp" line="528"/>
         <source>the ambient term Ia·ka</source>
         <translation>o termo ambiente Ia·ka</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="507"/>
+        <location filename="../app/window/compare_panel.cpp" line="529"/>
         <source>the diffuse term Il·Od·kd·(N·L)</source>
         <translation>o termo difuso Il·Od·kd·(N·L)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="508"/>
+        <location filename="../app/window/compare_panel.cpp" line="530"/>
         <source>the specular term Il·ks·(R·V)^n</source>
         <translation>o termo especular Il·ks·(R·V)^n</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="524"/>
+        <location filename="../app/window/compare_panel.cpp" line="546"/>
         <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
         <translation>• %1 é 0 no %2 aqui: mudá-lo sozinho não dá a cor deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="529"/>
+        <location filename="../app/window/compare_panel.cpp" line="551"/>
         <source>• %1 would have to be below 0 in %2: not this term alone.</source>
         <translation>• %1 teria de ser menor que 0 no %2: não é este termo sozinho.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="546"/>
+        <location filename="../app/window/compare_panel.cpp" line="568"/>
         <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
         <translation>• %1 teria de ser %2 em vez de %3, × %4 por canal</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="549"/>
+        <location filename="../app/window/compare_panel.cpp" line="571"/>
         <source>: the term left out</source>
         <translation>: o termo omitido</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="552"/>
+        <location filename="../app/window/compare_panel.cpp" line="574"/>
         <source>: that is the term times Od %1</source>
         <translation>: isto é, o termo vezes Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="555"/>
+        <location filename="../app/window/compare_panel.cpp" line="577"/>
         <source>: that is the term without Od %1</source>
         <translation>: isto é, o termo sem Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="561"/>
+        <location filename="../app/window/compare_panel.cpp" line="583"/>
         <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
         <translation>(%1: 255 nas duas imagens, limitado; qualquer valor pelo menos tão alto o dá.)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="564"/>
+        <location filename="../app/window/compare_panel.cpp" line="586"/>
         <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
         <translation>Nenhum termo mudado por um fator simples (omitido, vezes Od, sem Od) dá a cor deles: olhe vários termos, ou o que diz o diagnóstico.</translation>
     </message>

@@ -40,10 +40,19 @@ QString channels(const std::array<double, 4>& v) {
         .arg(v[3], 0, 'f', 1);
 }
 
+// What their image was, where our size came from, and what was cropped.
+struct Provenance {
+    QString format;    // "a PPM image, without alpha: ..."
+    QString sizeFrom;  // "your image's size; --size overrides", "--size" ...
+    QString cropped;   // empty, or "cropped to 800x600 at (10, 30) from 820x640 ..."
+};
+
 void printText(const rl::ImageComparison& c, const QString& image, const QString& label,
-               QTextStream& out) {
+               const Provenance& p, QTextStream& out) {
     out << "comparing " << image << " with our render of " << label << " ("
-        << sizeText(c.width, c.height) << ")\n";
+        << sizeText(c.width, c.height) << ", " << p.sizeFrom << ")\n";
+    out << "  your image: " << p.format << '\n';
+    if (!p.cropped.isEmpty()) out << "  " << p.cropped << '\n';
     out << "  " << c.compared << " pixels compared, " << c.differing << " differ ("
         << QString::number(100.0 * double(c.differing) / double(c.compared), 'f', 1) << "%)\n";
     if (c.differing == 0) {
@@ -72,12 +81,17 @@ void printText(const rl::ImageComparison& c, const QString& image, const QString
     }
 }
 
-QJsonObject toJson(const rl::ImageComparison& c, const QString& image, const QString& label) {
+QJsonObject toJson(const rl::ImageComparison& c, const QString& image, const QString& label,
+                   const Provenance& p) {
     QJsonObject o;
     o[lit("image")] = image;
     o[lit("scene")] = label;
     o[lit("width")] = c.width;
     o[lit("height")] = c.height;
+    o[lit("sizeFrom")] = p.sizeFrom;
+    o[lit("imageFormat")] = p.format;
+    o[lit("tolerance")] = c.tolerance;
+    if (!p.cropped.isEmpty()) o[lit("cropped")] = p.cropped;
     o[lit("compared")] = qint64(c.compared);
     o[lit("differing")] = qint64(c.differing);
     o[lit("largestDifference")] =
@@ -120,8 +134,12 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
     const QCommandLineOption help({lit("h"), lit("help")}, lit("Show this help."));
     const SceneOptions sceneOptions;
     const QCommandLineOption sceneName = SceneOptions::generatedSceneOption();
-    const QCommandLineOption image(lit("image"), lit("Your image (required): a PNG of our size."),
-                                   lit("THEIRS.png"));
+    const QCommandLineOption image(
+        lit("image"),
+        lit("Your image (required): PNG, PPM (P3 or P6), BMP, TGA or JPEG (compared with a "
+            "tolerance). Without --size, ours is rendered at its size; a screenshot that holds "
+            "our frame is cropped to it."),
+        lit("THEIRS.png"));
     const QCommandLineOption diffOutput(
         lit("diff-output"),
         lit("Write the difference image: ours darkened, differing pixels from yellow (off by "
@@ -152,6 +170,10 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
     rl::Diagnostics diagnostics;
     std::shared_ptr<const rl::Scene> scene;
     QString sceneLabel;
+    // Where our size came from: the options, the lesson, the command file, or their image.
+    QString sizeFrom = files.isEmpty() ? (parser.isSet(sceneOptions.size) ? lit("--size")
+                                                                          : lit("the scene's size"))
+                                       : lit("the command file's png command");
     if (!files.isEmpty()) {
         for (const QCommandLineOption* o :
              {&sceneOptions.camera, &sceneOptions.lighting, &sceneOptions.object, &sceneName,
@@ -186,7 +208,19 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
         if (int code = checkPixelLimit(*chosen, pixelLimit, err); code != ExitOk) return code;
         scene = std::make_shared<const rl::Scene>(chosen->scene);
         sceneLabel = QString::fromStdString(chosen->fileName);
-    } else {
+    }
+
+    rl::Rgba8Image theirs;
+    CompareImage::Format theirFormat;
+    const QString imagePath = parser.value(image);
+    if (files.isEmpty()) {
+        // Their image first: without --size, ours is rendered at its size.
+        if (const QString problem = CompareImage::read(imagePath, theirs, &theirFormat);
+            !problem.isEmpty()) {
+            err << problem << '\n';
+            err.flush();
+            return ExitBadInput;
+        }
         rl::CourseSceneSettings settings;
         if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
         sceneOptions.lessonSettings(parser, sceneName, settings);
@@ -194,37 +228,74 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
                                             sceneLabel);
             code != ExitOk)
             return code;
+        if (!parser.isSet(sceneOptions.size) &&
+            (theirs.width != settings.width || theirs.height != settings.height)) {
+            // A screenshot that holds ours at the scene's own size is cropped below; any other
+            // size is the size they rendered at.
+            auto atOwnSize = rl::renderOurFrame(scene);
+            if (!atOwnSize) return inputError(err, atOwnSize.error());
+            if (!rl::findEmbedded(atOwnSize->image, theirs)) {
+                qint64 pixelLimit = 0;
+                if (int code = readMaxPixels(parser, sceneOptions.maxPixels, err, pixelLimit);
+                    code != ExitOk)
+                    return code;
+                if (qint64(theirs.width) * theirs.height > pixelLimit) {
+                    err << imagePath << ": the image is " << sizeText(theirs.width, theirs.height)
+                        << ", more pixels than the limit of " << pixelLimit
+                        << " (raise it with --max-pixels)\n";
+                    err.flush();
+                    return ExitBadInput;
+                }
+                settings.width = theirs.width;
+                settings.height = theirs.height;
+                diagnostics = {};
+                if (int code = sceneOptions.loadAny(parser, sceneName, settings, err, diagnostics,
+                                                    scene, sceneLabel);
+                    code != ExitOk)
+                    return code;
+                sizeFrom = lit("your image's size; --size overrides");
+            }
+        }
     }
     printDiagnostics(diagnostics, err);
-
-    rl::Rgba8Image theirs;
-    const QString imagePath = parser.value(image);
-    if (const QString problem = CompareImage::read(imagePath, theirs); !problem.isEmpty()) {
-        err << problem << '\n';
-        err.flush();
-        return ExitBadInput;
+    if (!files.isEmpty()) {
+        if (const QString problem = CompareImage::read(imagePath, theirs, &theirFormat);
+            !problem.isEmpty()) {
+            err << problem << '\n';
+            err.flush();
+            return ExitBadInput;
+        }
     }
 
     auto ours = rl::renderOurFrame(scene);
     if (!ours) return inputError(err, ours.error());
     printDiagnostics(ours->trace->diagnostics, err);
     const rl::Rgba8Image& ourImage = ours->image;
-    bool embedded = false;
-    if (const QString mismatch = CompareImage::sizeMismatch(imagePath, theirs, ourImage, embedded);
-        !mismatch.isEmpty()) {
-        err << mismatch;
-        if (!embedded)
-            err << " ("
-                << (files.isEmpty() ? lit("--size %1 renders ours at their size")
-                                          .arg(sizeText(theirs.width, theirs.height))
+    QString cropped;
+    if (theirs.width != ourImage.width || theirs.height != ourImage.height) {
+        // A screenshot with a window border or a cursor: the frame found inside it.
+        if (const auto at = rl::findEmbedded(ourImage, theirs)) {
+            cropped = lit("cropped to %1 at (%2, %3) from %4, the frame found inside your image")
+                          .arg(sizeText(ourImage.width, ourImage.height))
+                          .arg(at->x)
+                          .arg(at->y)
+                          .arg(sizeText(theirs.width, theirs.height));
+            theirs = CompareImage::cropped(theirs, at->x, at->y, ourImage.width, ourImage.height);
+        } else {
+            bool embedded = false;
+            err << CompareImage::sizeMismatch(imagePath, theirs, ourImage, embedded) << " ("
+                << (files.isEmpty() ? lit("no frame of ours found inside it at --size %1")
+                                          .arg(sizeText(ourImage.width, ourImage.height))
                                     : lit("its png command sets the size"))
-                << ")";
-        err << '\n';
-        err.flush();
-        return ExitBadInput;
+                << ")\n";
+            err.flush();
+            return ExitBadInput;
+        }
     }
+    if (!theirFormat.alpha) CompareImage::takeAlpha(ourImage, theirs);
+    const Provenance provenance{theirFormat.describe(), sizeFrom, cropped};
 
-    const auto comparison = rl::compareWithOurs(ours.value(), theirs);
+    const auto comparison = rl::compareWithOurs(ours.value(), theirs, theirFormat.tolerance());
     if (!comparison) return inputError(err, comparison.error());
     QString sink;
     QTextStream quiet(&sink);  // JSON keeps stdout to itself
@@ -232,12 +303,12 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
         if (parser.isSet(diffOutput) && !writePng(comparison->difference, parser.value(diffOutput),
                                                   quiet, err, lit("difference")))
             return ExitBadInput;
-        QJsonObject o = toJson(comparison.value(), imagePath, sceneLabel);
+        QJsonObject o = toJson(comparison.value(), imagePath, sceneLabel, provenance);
         if (parser.isSet(diffOutput))
             o[lit("differenceImage")] = QFileInfo(parser.value(diffOutput)).absoluteFilePath();
         out << QJsonDocument(o).toJson(QJsonDocument::Indented);
     } else {
-        printText(comparison.value(), imagePath, sceneLabel, out);
+        printText(comparison.value(), imagePath, sceneLabel, provenance, out);
         if (parser.isSet(diffOutput) && !writePng(comparison->difference, parser.value(diffOutput),
                                                   out, err, lit("difference")))
             return ExitBadInput;

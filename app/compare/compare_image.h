@@ -1,6 +1,7 @@
 // Their image for a comparison (rasterlab-cli compare, File > Compare with Image...): read as
-// RGBA bytes, and the messages for a file that is not a PNG of our size. The command line and
-// the window say the same (the window in the user's language).
+// RGBA bytes from what student renderers write (PNG, PPM P3 and P6, BMP, TGA, JPEG), and the
+// messages for a file that is none of them or not of our size. The command line and the
+// window say the same (the window in the user's language).
 #pragma once
 
 #include <QCoreApplication>
@@ -14,9 +15,23 @@ struct CompareImage {
     Q_DECLARE_TR_FUNCTIONS(rasterlab::CompareImage)
 
 public:
-    // Reads their PNG into `image`: an empty string, or "PATH: why not" (no such file, a
-    // folder, empty, not a PNG, cut short, unreadable).
-    static QString read(const QString& path, rl::Rgba8Image& image);
+    struct Format {
+        QByteArray name;    // "png", "ppm", "bmp", "tga", "jpeg" ...
+        bool alpha = true;  // false: a format or file without alpha (PPM, JPEG, a 24-bit BMP)
+        // A lossy format (JPEG) changes every pixel a little: the largest difference per
+        // channel that still counts as the same, 0 for the others.
+        int tolerance() const;
+        QString describe() const;  // "a JPEG image, compared with a tolerance of 8 ..."
+    };
+    // Reads their image into `image`, and what it was into `format` when given: an empty
+    // string, or "PATH: why not" (no such file, a folder, empty, not an image of those
+    // formats, a PNG cut short, unreadable).
+    static QString read(const QString& path, rl::Rgba8Image& image, Format* format = nullptr);
+    // The width x height pixels of `image` from (x, y), which lie inside it.
+    static rl::Rgba8Image cropped(const rl::Rgba8Image& image, int x, int y, int width,
+                                  int height);
+    // Their image without alpha takes ours, so that only the colours are compared.
+    static void takeAlpha(const rl::Rgba8Image& ours, rl::Rgba8Image& theirs);
     // Empty when the sizes agree; else "PATH: the image is 640x480, ours is 800x600", and
     // where it holds ours when it does (a screenshot with a window border), `embedded` then
     // set.

@@ -251,20 +251,41 @@ QString ComparePanel::compare(const QString& path) {
     const std::shared_ptr<const rl::FrameTrace>& frame = m_inspection->frame();
     if (!frame || !frame->scene) return tr("There is no render to compare with yet.");
     rl::Rgba8Image theirs;
-    if (QString problem = CompareImage::read(path, theirs); !problem.isEmpty()) return problem;
+    CompareImage::Format format;
+    if (QString problem = CompareImage::read(path, theirs, &format); !problem.isEmpty())
+        return problem;
     QApplication::setOverrideCursor(Qt::WaitCursor);
     auto ours = rl::renderOurFrame(frame->scene);
     QString problem;
     bool embedded = false;
+    QString provenance = tr("Their image: %1.").arg(format.describe());
+    if (ours) {
+        // A screenshot with a window border: the frame found inside it is compared.
+        if (const auto at = rl::findEmbedded(ours->image, theirs);
+            at && (theirs.width != ours->image.width || theirs.height != ours->image.height)) {
+            provenance += QLatin1Char(' ') +
+                          tr("Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.")
+                              .arg(ours->image.width)
+                              .arg(ours->image.height)
+                              .arg(at->x)
+                              .arg(at->y)
+                              .arg(theirs.width)
+                              .arg(theirs.height);
+            theirs = CompareImage::cropped(theirs, at->x, at->y, ours->image.width,
+                                           ours->image.height);
+        }
+        if (!format.alpha) CompareImage::takeAlpha(ours->image, theirs);
+    }
     if (!ours) {
         problem = QString::fromStdString(ours.error().message);
     } else if (problem = CompareImage::sizeMismatch(path, theirs, ours->image, embedded);
                problem.isEmpty()) {
-        auto comparison = rl::compareWithOurs(ours.value(), theirs);
+        auto comparison = rl::compareWithOurs(ours.value(), theirs, format.tolerance());
         if (!comparison) {
             problem = QString::fromStdString(comparison.error().message);
         } else {
             m_path = path;
+            m_provenance = provenance;
             m_scene = frame->scene;
             m_ours = std::make_unique<rl::OurFrame>(std::move(ours.value()));
             m_theirs = std::move(theirs);
@@ -377,6 +398,7 @@ void ComparePanel::refreshTexts() {
                    .arg(c.compared)
                    .arg(c.differing)
                    .arg(100.0 * double(c.differing) / double(c.compared), 0, 'f', 1);
+    summary << m_provenance;
     if (c.differing > 0) {
         summary << tr("Largest difference per channel: %1.").arg(channels(c.largest));
         summary << tr("Mean difference per channel, over the differing pixels: %1.")

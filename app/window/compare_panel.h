@@ -72,6 +72,7 @@ private:
 
     Inspection* m_inspection = nullptr;
     QString m_path;
+    QString m_provenance;  // their image's format, and what was cropped
     std::shared_ptr<const rl::Scene> m_scene;  // the scene compared
     std::unique_ptr<rl::OurFrame> m_ours;
     rl::Rgba8Image m_theirs;

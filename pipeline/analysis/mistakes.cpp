@@ -577,18 +577,19 @@ namespace {
 
 // How far a hypothesis's image takes ours toward theirs.
 Finding judge(const OurFrame& ours, const Rgba8Image& theirs, const Rgba8Image& candidate,
-              std::size_t differing) {
+              std::size_t differing, int tolerance) {
     Finding f;
     const int w = theirs.width, h = theirs.height;
     const auto explains = [&](int x, int y, int before) {
         const int after = distance(bytesAt(candidate, x, y), bytesAt(theirs, x, y));
-        return after < before && after <= 1;
+        return after < before && after <= std::max(1, tolerance);
     };
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             const int before = distance(bytesAt(ours.image, x, y), bytesAt(theirs, x, y));
-            if (before == 0) {
-                if (bytesAt(candidate, x, y) != bytesAt(theirs, x, y)) ++f.spoiled;
+            if (before <= tolerance) {
+                if (distance(bytesAt(candidate, x, y), bytesAt(theirs, x, y)) > tolerance)
+                    ++f.spoiled;
             } else if (explains(x, y, before)) {
                 ++f.explained;
             }
@@ -602,7 +603,7 @@ Finding judge(const OurFrame& ours, const Rgba8Image& theirs, const Rgba8Image& 
     for (int y = 0; y < h && f.explained > 0; ++y) {
         for (int x = 0; x < w; ++x) {
             const int before = distance(bytesAt(ours.image, x, y), bytesAt(theirs, x, y));
-            if (before == 0 || !explains(x, y, before)) continue;
+            if (before <= tolerance || !explains(x, y, before)) continue;
             if (std::find(wanted.begin(), wanted.end(), k) != wanted.end() &&
                 (f.examples.empty() || f.examples.back().x != x || f.examples.back().y != y))
                 f.examples.push_back({x, y, bytesAt(ours.image, x, y), bytesAt(theirs, x, y)});
@@ -627,25 +628,27 @@ std::optional<Bytes> mostCommon(const Rgba8Image& theirs, Where where) {
 
 }  // namespace
 
-Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& theirs) {
+Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& theirs,
+                                        int tolerance) {
     const Scene& scene = *ours.trace->scene;
     const Bytes background = backgroundBytes(scene.conventions);
     ImageComparison out;
     out.width = theirs.width;
     out.height = theirs.height;
+    out.tolerance = std::max(0, tolerance);
     out.compared = static_cast<std::size_t>(theirs.width) * theirs.height;
     std::array<double, 4> sum{};
     out.difference = ours.image;
     for (int y = 0; y < theirs.height; ++y) {
         for (int x = 0; x < theirs.width; ++x) {
             const Bytes a = bytesAt(ours.image, x, y), b = bytesAt(theirs, x, y);
-            const bool weCover = ours.covered(x, y), theyCover = b != background;
+            const bool weCover = ours.covered(x, y), theyCover = distance(b, background) > out.tolerance;
             out.onlyOurs += weCover && !theyCover ? 1 : 0;
             out.onlyTheirs += !weCover && theyCover ? 1 : 0;
             const int d = distance(a, b);
             Bytes shown = {std::uint8_t(a[0] / 3), std::uint8_t(a[1] / 3), std::uint8_t(a[2] / 3),
                            255};
-            if (d > 0) {
+            if (d > out.tolerance) {
                 ++out.differing;
                 for (int c = 0; c < 4; ++c) {
                     const int dc = std::abs(int(a[c]) - int(b[c]));
@@ -688,7 +691,7 @@ Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& 
             auto candidate = imageWithMistake(ours, mistake, s, value);
             if (!candidate) return candidate.error();
             if (!candidate.value()) continue;
-            Finding f = judge(ours, theirs, *candidate.value(), out.differing);
+            Finding f = judge(ours, theirs, *candidate.value(), out.differing, out.tolerance);
             if (!best || f.explained > best->explained) {
                 f.title = titleOf(ours, mistake, s, value);
                 best = std::move(f);

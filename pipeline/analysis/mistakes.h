@@ -96,8 +96,9 @@ inline constexpr double kLeastShare = 0.001;
 struct ImageComparison {
     int width = 0;
     int height = 0;
+    int tolerance = 0;  // a difference of at most this in every channel counts as the same
     std::size_t compared = 0;
-    std::size_t differing = 0;     // any channel differs
+    std::size_t differing = 0;     // some channel differs by more than the tolerance
     std::array<int, 4> largest{};  // largest difference per channel, RGBA
     std::array<double, 4> mean{};  // mean difference per channel over the differing pixels
     std::size_t onlyOurs = 0;      // covered in our depth buffer, their pixel the background
@@ -110,8 +111,10 @@ struct ImageComparison {
     Rgba8Image difference;
 };
 
-// Compares their image (our size) with our frame and ranks the mistakes.
-Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& theirs);
+// Compares their image (our size) with our frame and ranks the mistakes. A lossy image (JPEG)
+// is compared with a tolerance: channels that differ by at most that much count as the same.
+Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& theirs,
+                                        int tolerance = 0);
 
 // Where their larger image holds ours exactly (a screenshot with a window border): the
 // offset of our top-left pixel in theirs; none when no offset matches 95% of ours.
