@@ -231,6 +231,15 @@ private slots:
                     << std::make_shared<const Scene>(std::move(*scene));
             }
         }
+        // Seed 001's DDA (the hw2 rules) on scenes with more than 1,024 triangles, so that
+        // scan conversion runs on several threads.
+        for (const char* bench : {"sphere-100k", "torus-100k"}) {
+            auto dda = makeBenchmarkScene(bench, 160, 120, ShadingModel::Phong);
+            QVERIFY(dda);
+            dda->rules = RasterRules::hw2();
+            QTest::newRow((std::string(bench) + ", hw2 rules").c_str())
+                << std::make_shared<const Scene>(std::move(*dda));
+        }
         // The camera inside the torus: near-plane clipping, no culling, many flipped normals.
         auto inside = makeBenchmarkScene("torus-1k", 320, 240, ShadingModel::Phong);
         QVERIFY(inside);

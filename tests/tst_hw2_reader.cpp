@@ -171,11 +171,13 @@ void TestHw2Reader::png() {
     QCOMPARE(c.colourScale, 1.0f);
     QCOMPARE(c.rounding, ByteRounding::Truncate);
     QCOMPARE(c.background, vec4(0.0f));
-    // Rules: 1/65536-pixel vertices, integer sample points, top-left rule, perspective-correct.
+    // Rules: seed 001's DDA on unsnapped vertices, integer sample points, half-open rows and
+    // spans, perspective-correct.
     const RasterRules& r = scene.rules;
     QCOMPARE(r.subpixelBits, 16);
     QCOMPARE(r.sampleOffset, 0.0);
-    QCOMPARE(r.snap, RasterRules::VertexSnap::Nearest);
+    QCOMPARE(r.snap, RasterRules::VertexSnap::None);
+    QCOMPARE(r.scan, RasterRules::Scan::Dda);
     QCOMPARE(r.fill, RasterRules::FillRule::TopLeft);
     QCOMPARE(r.interpolation, RasterRules::Interpolation::PerspectiveCorrect);
     QCOMPARE(r.texel, RasterRules::TexelRounding::Truncate);

@@ -243,6 +243,7 @@ private slots:
     void acrossTheEyePlane();
     void tinyWGivesNoNaN();
 
+    void orthoGridLineRows();
     void referenceSamples_data();
     void referenceSamples();
     void referenceTexture();
@@ -911,6 +912,87 @@ void TestHw2Render::bezierColours() {
     {
         RENDER(frame, text + "rectbezf 2 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16\n");
         QCOMPARE(count(frame, kGreen), 144);
+    }
+}
+
+void TestHw2Render::orthoGridLineRows() {
+    // The ortho checkerboard of the held-out check: a 7x8 grid of unit squares, (i, j) drawn
+    // when i + j is even, tilted by the model-view and mirrored by l > r. Its grid lines j =
+    // -1 and j = 0 are horizontal on the screen and lie, in exact arithmetic, on rows 16 and
+    // 64; in double they land a hair below them (y = 16.000000000000036 and
+    // 64.00000000000001). The DDA (seed 001: rows ceil(y_top) <= y < y_bottom, in double)
+    // gives both rows to the squares above the line; the exact walk on snapped vertices gave
+    // them to the squares below.
+    QByteArray text =
+        "png 120 120 ortho.png\ncolor 0 0.5 0\n"
+        "loadmv 1 0.1 0 0  0 0.6 0.8 -1.2  0 0.8 -0.6 4.5  0 0 0 1\n"
+        "ortho 2 -2.5 -2 -0.5 -5.5 -2.5\n";
+    for (int j = -4; j <= 3; ++j)
+        for (int i = -3; i <= 3; ++i)
+            text += "xyz " + QByteArray::number(i) + " " + QByteArray::number(j) + " 0\n";
+    const auto index = [](int i, int j) { return QByteArray::number((j + 4) * 7 + (i + 3) + 1); };
+    const auto drawn = [](int i, int j) {
+        return i >= -3 && i < 3 && j >= -4 && j < 3 && (i + j) % 2 == 0;
+    };
+    for (int j = -4; j < 3; ++j)
+        for (int i = -3; i < 3; ++i)
+            if (drawn(i, j))
+                text += "trif " + index(i, j) + " " + index(i + 1, j) + " " + index(i + 1, j + 1) +
+                        "\ntrif " + index(i, j) + " " + index(i + 1, j + 1) + " " +
+                        index(i, j + 1) + "\n";
+    RENDER(frame, text);
+    // The premise, worked out here as the lecture does it: v_eye = MV v, v_clip = P v_eye,
+    // y_ndc = y_clip / w, y = y_ndc H/2 + H/2 (P's row for y: 2/(t - b), -(t + b)/(t - b)).
+    const double t = -0.5, b = -2.0;
+    for (const auto& [j, row] : {std::pair{-1, 16}, std::pair{0, 64}}) {
+        const double yEye = 0.6 * j + (-1.2);
+        const double yNdc = 2.0 / (t - b) * yEye + (-(t + b) / (t - b));
+        const double y = yNdc * 60.0 + 60.0;
+        QVERIFY2(y > double(row) && y < double(row) + 1e-12,
+                 qPrintable(QString::number(y, 'g', 17)));
+    }
+    // Row 16 belongs to the squares j = -2 (above the line j = -1), row 64 to j = -1. Along
+    // the row, pixel x lies in the square i = floor(x_eye - 0.1 j) of the line's j, with
+    // x_eye = ((r - l) x_ndc + (r + l)) / 2, x_ndc = x/60 - 1 (exactly, as l, r are given).
+    const double l = 2.0, r = -2.5;
+    int checked = 0;
+    for (const auto& [lineJ, row] : {std::pair{-1, 16}, std::pair{0, 64}}) {
+        for (int x = 0; x < 120; ++x) {
+            const double xNdc = x / 60.0 - 1.0;
+            const double iReal = ((r - l) * xNdc + (r + l)) / 2.0 - 0.1 * lineJ;
+            if (std::abs(iReal - std::round(iReal)) < 1e-6) continue;  // on a line of i
+            const int i = int(std::floor(iReal));
+            const bool above = drawn(i, lineJ - 1), below = drawn(i, lineJ);
+            const bool covered = frame.trace->depth->triangle.at(x, row) != kNoTriangle;
+            QVERIFY2(covered == above,
+                     qPrintable(QStringLiteral("pixel (%1, %2): square (%3, %4) above is %5, the "
+                                               "one below %6, the pixel %7")
+                                    .arg(x)
+                                    .arg(row)
+                                    .arg(i)
+                                    .arg(lineJ - 1)
+                                    .arg(above ? "drawn" : "empty", below ? "drawn" : "empty",
+                                         covered ? "covered" : "empty")));
+            ++checked;
+        }
+    }
+    QVERIFY2(checked > 230, qPrintable(QString::number(checked)));
+    // The exact walk on the vertices snapped to 1/65536 pixel (the hw2 rules before seed
+    // 001's DDA) hands both rows to the squares below: every pixel of them differs.
+    Scene snapped = *frame.scene;
+    snapped.rules.snap = RasterRules::VertexSnap::Nearest;
+    snapped.rules.scan = RasterRules::Scan::ExactWalk;
+    auto walk = renderFrame(std::make_shared<const Scene>(snapped));
+    QVERIFY(walk);
+    for (int row : {16, 64}) {
+        int differing = 0;
+        for (int x = 0; x < 120; ++x)
+            differing += (walk->depth->triangle.at(x, row) != kNoTriangle) !=
+                                 (frame.trace->depth->triangle.at(x, row) != kNoTriangle)
+                             ? 1
+                             : 0;
+        QVERIFY2(differing >= 119,
+                 qPrintable(QStringLiteral("row %1: %2").arg(row).arg(differing)));
     }
 }
 

@@ -90,6 +90,21 @@ std::set<std::pair<int, int>> insideByRule(const std::array<dvec2, 3>& p, const 
     return inside;
 }
 
+// Whether the point q lies inside the triangle by more than 1e-9 pixel from each edge.
+bool clearlyInside(const std::array<dvec2, 3>& p, const dvec2& q) {
+    const auto side = [](const dvec2& a, const dvec2& b, const dvec2& c) {
+        return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    };
+    const double area = side(p[0], p[1], p[2]);
+    if (area == 0.0) return false;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const dvec2& a = p[k];
+        const dvec2& b = p[(k + 1) % 3];
+        if (side(a, b, q) * (area > 0 ? 1.0 : -1.0) / glm::length(b - a) <= 1e-9) return false;
+    }
+    return true;
+}
+
 // The rules of the current row of subPixelRulesMatchBruteForce_data.
 RasterRules rulesOfRow() {
     QFETCH(int, bits);
@@ -278,8 +293,11 @@ private slots:
         // Fans around a centre under the top-left rule: every pixel of the fan is covered
         // exactly once, shared edges and shared vertices included. The spokes are less than
         // half a turn apart, so the triangles tile the fan without overlapping.
+        // The exact walk on a grid of 1/16 pixel, samples at integer points.
         RasterRules rules = RasterRules::hw2();
         rules.subpixelBits = 4;
+        rules.snap = RasterRules::VertexSnap::Nearest;
+        rules.scan = RasterRules::Scan::ExactWalk;
         std::mt19937 rng(5);
         std::uniform_real_distribution<double> jitter(0.0, 0.4);
         std::uniform_int_distribution<int> spokes(3, 12);
@@ -410,6 +428,162 @@ private slots:
         }
         QVERIFY(rows > 1000);
         QVERIFY(empty > 0);
+    }
+
+    void ddaTriangleByHand() {
+        // Seed 001's DDA (hw2 rules). Top (2.5, 0.5), middle (8.5, 3.5), bottom (0.5, 4.5).
+        // Long edge: dx/dy = -2/4 = -0.5, rows ceil(0.5) = 1 to 4 (y < 4.5), x = 2.5 + 0.5 *
+        // (-0.5) = 2.25 on row 1, then 1.75, 1.25, 0.75. Upper edge: dx/dy = 6/3 = 2, rows 1
+        // to 3, x = 2.5 + 0.5 * 2 = 3.5, then 5.5, 7.5. Lower edge: dx/dy = -8/1, row 4 only,
+        // x = 8.5 + 0.5 * (-8) = 4.5. Pixels ceil(x_left) <= x < x_right: row 1 [3, 4), row 2
+        // [2, 6), row 3 [2, 8), row 4 [1, 5). Every number is exact in binary.
+        const Projection pr = screenTriangles({{2.5, 0.5}, {8.5, 3.5}, {0.5, 4.5}}, {{0, 1, 2}});
+        auto probe = RecordingProbe::forTriangle(0);
+        const ScanConversion scan =
+            ScanConversionStage().run({screenWith(10, 10, RasterRules::hw2()), pr}, probe);
+        const std::vector<Span> expected = {{1, 3, 4}, {2, 2, 6}, {3, 2, 8}, {4, 1, 5}};
+        QCOMPARE(spansOf(scan, 0), expected);
+        QCOMPARE(scan.pixels, std::size_t(1 + 4 + 6 + 4));
+        // The probe hears the accumulated crossings.
+        const std::vector<std::pair<double, double>> crossings = {
+            {2.25, 3.5}, {1.75, 5.5}, {1.25, 7.5}, {0.75, 4.5}};
+        std::size_t k = 0;
+        for (const ProbeEvent& e : probe.events()) {
+            if (!std::holds_alternative<SpanEvent>(e)) continue;
+            const auto& span = std::get<SpanEvent>(e);
+            QVERIFY(k < crossings.size());
+            QCOMPARE(span.xLeft, crossings[k].first);
+            QCOMPARE(span.xRight, crossings[k].second);
+            ++k;
+        }
+        QCOMPARE(k, crossings.size());
+        // A row worked out on its own is the walk's.
+        const TriangleSetup s =
+            setupTriangle({dvec2(2.5, 0.5), dvec2(8.5, 3.5), dvec2(0.5, 4.5)}, RasterRules::hw2());
+        QCOMPARE(s.yFirst, 1);
+        QCOMPARE(s.yLast, 4);
+        QCOMPARE(lastUpperRow(s, RasterRules::hw2()), 3);
+        const ScanRow row3 = scanRow(s, RasterRules::hw2(), 3, 10);
+        QCOMPARE(row3.xLeft, 1.25);
+        QCOMPARE(row3.xRight, 7.5);
+        QCOMPARE(row3.xBegin, 2);
+        QCOMPARE(row3.xEnd, 8);
+        QVERIFY(row3.upperPart);
+    }
+
+    void ddaHalfOpenByHand() {
+        // (0, 0), (4, 0), (0, 4) under the DDA: rows 0 to 3 (y < 4); the lower edge's x = 4,
+        // 3, 2, 1; pixels 0 <= x < x_right. The bottom vertex's row and the right edge's
+        // samples belong to the neighbours.
+        const Projection pr = screenTriangles({{0, 0}, {4, 0}, {0, 4}}, {{0, 1, 2}});
+        const ScanConversion scan =
+            ScanConversionStage().run({screenWith(10, 10, RasterRules::hw2()), pr});
+        const std::vector<Span> expected = {{0, 0, 4}, {1, 0, 3}, {2, 0, 2}, {3, 0, 1}};
+        QCOMPARE(spansOf(scan, 0), expected);
+    }
+
+    void ddaScreenClippingStartsOnTheScreen() {
+        // Top (3, -2.5), bottom (-1, 5.5), middle (7, 1.5). Long edge: dx/dy = -4/8 = -0.5;
+        // its first row on the screen is 0, x = 3 + (0 - (-2.5)) * (-0.5) = 1.75, then 1.25,
+        // 0.75, 0.25, -0.25, -0.75 (rows 0 to 5). Upper edge: dx/dy = 4/4 = 1, rows 0 and 1,
+        // x = 3 + 2.5 = 5.5, 6.5. Lower edge: dx/dy = -8/4 = -2, rows 2 to 5, x = 7 + 0.5 *
+        // (-2) = 6, 4, 2, 0. Pixels from ceil(x_left), at least 0, while x < x_right.
+        const Projection pr = screenTriangles({{3, -2.5}, {-1, 5.5}, {7, 1.5}}, {{0, 1, 2}});
+        const ScanConversion scan =
+            ScanConversionStage().run({screenWith(10, 10, RasterRules::hw2()), pr});
+        const std::vector<Span> expected = {{0, 2, 6}, {1, 2, 7}, {2, 1, 6}, {3, 1, 4}, {4, 0, 2}};
+        QCOMPARE(spansOf(scan, 0), expected);  // row 5: [0, 0), no pixel
+    }
+
+    void ddaAndExactWalkDifferByATie() {
+        // The left edge from (0, 0) to (2, 18) crosses row 9 at exactly x = 1. The exact walk
+        // sees the sample (1, 9) on a left edge: inside. The DDA adds dx/dy = 1/9 (rounded)
+        // nine times and reaches 1.0000000000000002: ceil gives 2, and pixel (1, 9) is left
+        // out. Every other row is the same under both.
+        const std::vector<dvec2> points = {{0, 0}, {2, 18}, {6, 18}};
+        const Projection pr = screenTriangles(points, {{0, 1, 2}});
+        RasterRules exact = RasterRules::hw2();
+        exact.snap = RasterRules::VertexSnap::Nearest;
+        exact.scan = RasterRules::Scan::ExactWalk;
+        auto probe = RecordingProbe::forTriangle(0);
+        const std::vector<Span> dda = spansOf(
+            ScanConversionStage().run({screenWith(8, 20, RasterRules::hw2()), pr}, probe), 0);
+        const std::vector<Span> walk =
+            spansOf(ScanConversionStage().run({screenWith(8, 20, exact), pr}), 0);
+        QCOMPARE(dda.size(), walk.size());
+        int differing = 0;
+        for (std::size_t k = 0; k < dda.size(); ++k) {
+            QCOMPARE(dda[k].y, walk[k].y);
+            QCOMPARE(dda[k].xEnd, walk[k].xEnd);
+            if (dda[k].xBegin == walk[k].xBegin) continue;
+            ++differing;
+            QCOMPARE(dda[k].y, 9);
+            QCOMPARE(dda[k].xBegin, 2);
+            QCOMPARE(walk[k].xBegin, 1);
+        }
+        QCOMPARE(differing, 1);
+        // The x the DDA accumulated on row 9, which the stepper shows.
+        double x = 0.0;
+        for (int k = 0; k < 9; ++k) x += 2.0 / 18.0;
+        QVERIFY(x > 1.0);
+        bool seen = false;
+        for (const ProbeEvent& e : probe.events())
+            if (const auto* span = std::get_if<SpanEvent>(&e); span && span->span.y == 9) {
+                QCOMPARE(span->xLeft, x);
+                seen = true;
+            }
+        QVERIFY(seen);
+        const TriangleSetup s =
+            setupTriangle({points[0], points[1], points[2]}, RasterRules::hw2());
+        QCOMPARE(scanRow(s, RasterRules::hw2(), 9, 8).xLeft, x);
+    }
+
+    void ddaCoversEachPixelOnce() {
+        // Fans of unsnapped triangles under the DDA: a shared edge is walked from the same
+        // top with the same dx/dy by both its triangles, so they split every row at the same
+        // x and no pixel is covered twice; every pixel whose sample is clearly inside (by
+        // 1e-9 pixel) is covered.
+        const RasterRules rules = RasterRules::hw2();
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<double> jitter(0.0, 0.4);
+        std::uniform_int_distribution<int> spokes(3, 12);
+        std::uniform_real_distribution<double> radius(2.0, 300.0);
+        std::uniform_real_distribution<double> centre(0.0, 63.0);
+        for (int f = 0; f < 1000; ++f) {
+            const int n = spokes(rng);
+            std::vector<dvec2> points = {{centre(rng), centre(rng)}};
+            for (int k = 0; k < n; ++k) {
+                const double a = 6.283185307179586 * (double(k) + jitter(rng)) / n;
+                const double r = radius(rng);
+                points.push_back({points[0].x + r * std::cos(a), points[0].y + r * std::sin(a)});
+            }
+            std::vector<std::array<std::uint32_t, 3>> fan;
+            for (int k = 1; k <= n; ++k)
+                fan.push_back(
+                    {0, static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(k % n + 1)});
+            const ScanConversion scan = ScanConversionStage().run(
+                {screenWith(64, 64, rules), screenTriangles(points, fan)});
+            std::map<std::pair<int, int>, int> hits;
+            for (std::size_t t = 0; t < fan.size(); ++t)
+                for (const auto& px : pixelsOf(spansOf(scan, t))) ++hits[px];
+            for (const auto& [px, count] : hits)
+                if (count != 1)
+                    QFAIL(qPrintable(QStringLiteral("fan %1: pixel (%2, %3) covered %4 times")
+                                         .arg(f)
+                                         .arg(px.first)
+                                         .arg(px.second)
+                                         .arg(count)));
+            for (const auto& tri : fan) {
+                const std::array<dvec2, 3> p = {points[tri[0]], points[tri[1]], points[tri[2]]};
+                for (int y = 0; y < 64; ++y)
+                    for (int x = 0; x < 64; ++x)
+                        if (clearlyInside(p, dvec2(x, y)) && !hits.count({x, y}))
+                            QFAIL(qPrintable(QStringLiteral("fan %1: pixel (%2, %3) missed")
+                                                 .arg(f)
+                                                 .arg(x)
+                                                 .arg(y)));
+            }
+        }
     }
 
     void recordingProbeLogsTriangleAndSpans() {

@@ -945,7 +945,9 @@ QString ProjectionView::vertexExplanation(std::uint32_t triangle) const {
     // How the exact position becomes the one scan conversion receives.
     const rl::RasterRules& rules = scene.rules;
     QString rounding;
-    if (rules.subpixelBits == 0)
+    if (rules.snap == rl::RasterRules::VertexSnap::None)
+        rounding = tr("not snapped");
+    else if (rules.subpixelBits == 0)
         rounding =
             rules.snap == rl::RasterRules::VertexSnap::Truncate ? tr("truncated") : tr("rounded");
     else

@@ -506,7 +506,9 @@ QString VertexTableView::explanationHtml(VertexRef ref) const {
         const rl::dvec2 snapped = proj.pScreen[v];
         const rl::RasterRules& rules = scene.rules;
         QString rounding;
-        if (rules.subpixelBits == 0 && rules.snap == rl::RasterRules::VertexSnap::Truncate)
+        if (rules.snap == rl::RasterRules::VertexSnap::None)
+            rounding = tr("not snapped");
+        else if (rules.subpixelBits == 0 && rules.snap == rl::RasterRules::VertexSnap::Truncate)
             rounding = tr("truncated, as C's (int) does");
         else if (rules.snap == rl::RasterRules::VertexSnap::Truncate)
             rounding = tr("truncated to a grid of 1/%1 pixel").arg(1 << rules.subpixelBits);

@@ -111,8 +111,9 @@ struct SceneOptions {
         lit("Rasterization rules: course (default: seed 000 as written, vertices truncated to "
             "whole pixels, samples at pixel corners, screen-space interpolation), gpu (vertices "
             "on a 1/256-pixel grid, samples at pixel centres, top-left fill rule, "
-            "perspective-correct interpolation and depth) or hw2 (seed 001's: 1/65536-pixel "
-            "grid, samples at pixel corners, top-left, perspective-correct)."),
+            "perspective-correct interpolation and depth) or hw2 (seed 001's DDA in double on "
+            "unsnapped vertices, samples at pixel corners, half-open rows and spans, "
+            "perspective-correct)."),
         lit("RULES"), lit("course")};
     QCommandLineOption maxPixels{lit("max-pixels"),
                                  lit("Refuse images with more pixels than this (default "

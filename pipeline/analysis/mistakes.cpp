@@ -289,6 +289,9 @@ Message titleOf(const OurFrame& ours, Mistake mistake, ivec2 shift, const Bytes&
                        ? "pixels sampled at their centres (x + 0.5) instead of their corners"_msg
                        : "pixels sampled at their corners instead of their centres (x + 0.5)"_msg;
         case Mistake::VertexSnap:
+            if (rules.snap == RasterRules::VertexSnap::None)
+                return "vertex positions truncated to the sub-pixel grid instead of kept as "
+                       "computed"_msg;
             if (rules.subpixelBits == 0)
                 return truncated ? "vertex positions rounded instead of truncated to whole "
                                    "pixels"_msg
@@ -432,7 +435,8 @@ Result<OurFrame> renderOurFrame(std::shared_ptr<const Scene> scene) {
 namespace {
 
 // Our image mirrored, turned upside down or moved by `shift` (what leaves it, background).
-Rgba8Image movedImage(const Rgba8Image& image, Mistake mistake, ivec2 shift, const Bytes& background) {
+Rgba8Image movedImage(const Rgba8Image& image, Mistake mistake, ivec2 shift,
+                      const Bytes& background) {
     const int w = image.width, h = image.height;
     Rgba8Image out = image;
     for (int y = 0; y < h; ++y) {

@@ -36,10 +36,11 @@ RasterRules RasterRules::course() {
 
 RasterRules RasterRules::hw2() {
     RasterRules rules;
-    rules.subpixelBits = 16;
+    rules.subpixelBits = 16;  // only the grid the views show the edges on
     rules.sampleOffset = 0.0;
-    rules.snap = VertexSnap::Nearest;
+    rules.snap = VertexSnap::None;
     rules.fill = FillRule::TopLeft;
+    rules.scan = Scan::Dda;
     rules.interpolation = Interpolation::PerspectiveCorrect;
     rules.texel = TexelRounding::Truncate;
     return rules;

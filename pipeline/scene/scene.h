@@ -205,10 +205,16 @@ struct RasterRules {
     enum class VertexSnap : std::uint8_t {
         Truncate,  // toward zero, onto the sub-pixel grid: C's (int) when subpixelBits = 0
         Nearest,   // to the nearest point of the sub-pixel grid
+        None,      // kept as computed, in double (seed 001's DDA)
     };
     enum class FillRule : std::uint8_t {
         Inclusive,  // a sample exactly on an edge is inside: shared edges are covered twice
         TopLeft,    // on an edge, inside only on a left or a horizontal top edge: once
+    };
+    // How a triangle becomes spans (stage 5).
+    enum class Scan : std::uint8_t {
+        ExactWalk,  // the edge walk on the snapped vertices, in exact integer arithmetic
+        Dda,        // seed 001's DDA in double: x stepped by dx/dy row by row (dda.h)
     };
     enum class Interpolation : std::uint8_t {
         ScreenAffine,        // screen barycentrics applied to view-space P and N (seed 000)
@@ -225,11 +231,14 @@ struct RasterRules {
     double sampleOffset = 0.0;  // pixel (x, y) is sampled at (x + offset, y + offset)
     VertexSnap snap = VertexSnap::Truncate;
     FillRule fill = FillRule::Inclusive;
+    Scan scan = Scan::ExactWalk;
     Interpolation interpolation = Interpolation::ScreenAffine;
     TexelRounding texel = TexelRounding::Nearest;
 
     static RasterRules course();  // seed 000 as written: integer vertices, inclusive edges
-    static RasterRules hw2();     // seed 001's DDA: samples at integer points, half-open spans
+    // Seed 001's DDA as its lecture writes it: unsnapped vertices, samples at integer points,
+    // half-open rows and spans, x stepped in double.
+    static RasterRules hw2();
     // What a GPU does: vertices on a 1/256-pixel grid (nearest), samples at pixel centres
     // (+0.5), the top-left fill rule, perspective-correct attributes (and depth).
     static RasterRules gpu();

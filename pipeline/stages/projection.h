@@ -153,7 +153,8 @@ inline double crossingFraction(double dIn, double dOut) {
 // Snapped screen coordinates are kept within +-kGuardBand pixels.
 inline constexpr double kGuardBand = double(1 << 28);
 
-// A screen coordinate on the rules' sub-pixel grid.
+// A screen coordinate on the rules' sub-pixel grid (or as computed, when the rules do not
+// snap).
 // grid = 2^subpixelBits and cell = 1 / grid, worked out once by the caller: both are powers
 // of two, so multiplying by cell gives the very bits dividing by grid would, without a
 // division.
@@ -163,6 +164,8 @@ inline double snap(double coordinate, const RasterRules& rules, double grid, dou
             return std::trunc(coordinate * grid) * cell;
         case RasterRules::VertexSnap::Nearest:
             return std::floor(coordinate * grid + 0.5) * cell;
+        case RasterRules::VertexSnap::None:
+            return coordinate;
     }
     return coordinate;
 }

@@ -5,6 +5,7 @@
 #include <tuple>
 #include <utility>
 
+#include "pipeline/stages/dda.h"
 #include "pipeline/stages/probe.h"
 
 namespace rl {
@@ -130,14 +131,6 @@ std::pair<std::int32_t, std::int32_t> recordedPixels(const RowPixels& p, std::in
     return {xBegin, static_cast<std::int32_t>(std::clamp<std::int64_t>(p.end, xBegin, width))};
 }
 
-// Tells the probe of a row walked, with its crossings and its pixels as recorded.
-template <typename Probe>
-void reportRow(Probe& probe, std::uint32_t triangle, std::int32_t y, const EdgeWalker& left,
-               const EdgeWalker& right, const RowPixels& pixels, std::int64_t width) {
-    const auto [xBegin, xEnd] = recordedPixels(pixels, width);
-    probe.onRow(triangle, y, left.exactX(), right.exactX(), xBegin, xEnd);
-}
-
 // Rows sampled above the middle vertex are bounded by the upper edge (every row when the
 // bottom is flat), the others by the lower edge.
 std::int32_t lastUpperRow(const TriangleSetup& s, const Grid& g) {
@@ -146,14 +139,39 @@ std::int32_t lastUpperRow(const TriangleSetup& s, const Grid& g) {
     return std::min(s.yLast, toRow(g.firstAtOrAfter(yMiddle) - 1));
 }
 
+// The DDA's rows: the upper edge covers ceil(yTop) <= y < yMiddle, the lower edge the rest.
+std::int32_t lastUpperDdaRow(const TriangleSetup& s) {
+    return std::min(s.yLast, toRow(static_cast<std::int64_t>(std::ceil(s.sorted[1].y)) - 1));
+}
+
+// Row y of the DDA, the long edge and the short one stepped from their first rows on the
+// screen: the very x the walk accumulates (views only; the walk steps once a row).
+ScanRow ddaRow(const TriangleSetup& s, std::int32_t y, std::int32_t width) {
+    ScanRow row;
+    row.y = y;
+    row.upperPart = y <= lastUpperDdaRow(s);
+    DdaEdge longEdge = ddaEdge(s.sorted[0], s.sorted[2]);
+    DdaEdge shortEdge =
+        row.upperPart ? ddaEdge(s.sorted[0], s.sorted[1]) : ddaEdge(s.sorted[1], s.sorted[2]);
+    while (longEdge.y < y) longEdge.nextRow();
+    while (shortEdge.y < y) shortEdge.nextRow();
+    row.xLeft = std::min(longEdge.x, shortEdge.x);
+    row.xRight = std::max(longEdge.x, shortEdge.x);
+    const DdaPixels p = ddaPixels(longEdge.x, shortEdge.x, width);
+    std::tie(row.xBegin, row.xEnd) = recordedPixels({p.begin, p.end}, width);
+    return row;
+}
+
 }  // namespace
 
 std::int32_t lastUpperRow(const TriangleSetup& s, const RasterRules& rules) {
+    if (rules.scan == RasterRules::Scan::Dda) return lastUpperDdaRow(s);
     return lastUpperRow(s, gridOf(rules));
 }
 
 ScanRow scanRow(const TriangleSetup& s, const RasterRules& rules, std::int32_t y,
                 std::int32_t width) {
+    if (rules.scan == RasterRules::Scan::Dda) return ddaRow(s, y, width);
     const Grid g = gridOf(rules);
     ScanRow row;
     row.y = y;
@@ -189,6 +207,31 @@ Int128 crossOf(const ScanEdge& upper, const ScanEdge& longEdge) {
            Int128(upper.yBottom - upper.yTop) * (longEdge.xBottom - longEdge.xTop);
 }
 
+// A triangle's orientation and the rows it samples, before screen clipping.
+struct Rows {
+    int orientation = 0;
+    std::int32_t yFirst = 0, yLast = -1;
+};
+
+// The edge walk's: the exact sign of (s1 - s0) x (s2 - s0) on the grid; rows sampled top <=
+// sample <= bottom (inclusive) or top <= sample < bottom (top-left).
+Rows exactRows(const ScanEdge& upper, const ScanEdge& longEdge, const RasterRules& rules) {
+    const Int128 area = crossOf(upper, longEdge);
+    const Grid g = gridOf(rules);
+    return {.orientation = area > 0 ? 1 : (area < 0 ? -1 : 0),
+            .yFirst = toRow(g.firstAtOrAfter(longEdge.yTop)),
+            .yLast = toRow(g.topLeft ? g.firstAtOrAfter(longEdge.yBottom) - 1
+                                     : g.lastAtOrBefore(longEdge.yBottom))};
+}
+
+// The DDA's: the sign of (s1 - s0) x (s2 - s0) in double; rows ceil(yTop) <= y < yBottom.
+Rows ddaRows(const std::array<dvec2, 3>& sorted) {
+    const double area = screenArea(sorted[0], sorted[1], sorted[2]);
+    return {.orientation = area > 0.0 ? 1 : (area < 0.0 ? -1 : 0),
+            .yFirst = toRow(static_cast<std::int64_t>(std::ceil(sorted[0].y))),
+            .yLast = toRow(static_cast<std::int64_t>(std::ceil(sorted[2].y)) - 1)};
+}
+
 }  // namespace
 
 double TriangleSetup::doubleArea() const {
@@ -214,24 +257,67 @@ TriangleSetup setupTriangle(const std::array<dvec2, 3>& p, const RasterRules& ru
     const int bits = rules.subpixelBits;
     const ScanEdge l = makeEdge(sorted[0], sorted[2], bits);
     const ScanEdge u = makeEdge(sorted[0], sorted[1], bits);
-    const Int128 area = crossOf(u, l);
-    // Rows sampled: top <= sample <= bottom (inclusive) or top <= sample < bottom (top-left).
-    const Grid g = gridOf(rules);
-    const std::int32_t yFirst = toRow(g.firstAtOrAfter(l.yTop));
-    const std::int32_t yLast =
-        toRow(g.topLeft ? g.firstAtOrAfter(l.yBottom) - 1 : g.lastAtOrBefore(l.yBottom));
+    const Rows rows =
+        rules.scan == RasterRules::Scan::Dda ? ddaRows(sorted) : exactRows(u, l, rules);
     // Every member given, so that none is zeroed first only to be written again.
     return TriangleSetup{.sorted = sorted,
                          .order = order,
-                         .orientation = area > 0 ? 1 : (area < 0 ? -1 : 0),
+                         .orientation = rows.orientation,
                          .longEdge = l,
                          .upperEdge = u,
                          .lowerEdge = makeEdge(sorted[1], sorted[2], bits),
                          // The middle vertex is right of the long edge when the area is positive.
-                         .longEdgeOnLeft = area > 0,
-                         .yFirst = yFirst,
-                         .yLast = yLast};
+                         .longEdgeOnLeft = rows.orientation > 0,
+                         .yFirst = rows.yFirst,
+                         .yLast = rows.yLast};
 }
+
+namespace {
+
+// Adds row y's span, if it has pixels, and tells the probe of the row with its crossings
+// (crossings() gives x_left and x_right; worked out only for a probe that records).
+template <typename Probe, typename Crossings>
+void addRow(ScanConversion& out, Probe& probe, [[maybe_unused]] std::uint32_t triangle,
+            std::int32_t y, const RowPixels& pixels, [[maybe_unused]] const Crossings& crossings,
+            [[maybe_unused]] std::int64_t width) {
+    if (pixels.begin < pixels.end) {
+        const Span span{y, static_cast<std::int32_t>(pixels.begin),
+                        static_cast<std::int32_t>(pixels.end)};
+        out.spans.push_back(span);
+        out.pixels += static_cast<std::size_t>(span.xEnd - span.xBegin);
+        RL_PROBE_HOOK(([&] {
+            const auto [xLeft, xRight] = crossings();
+            probe.onSpan(triangle, span, xLeft, xRight);
+        }()));
+    }
+    // Every row walked, empty ones included (the stepper's scanlines).
+    RL_PROBE_HOOK(([&] {
+        const auto [xLeft, xRight] = crossings();
+        const auto [xBegin, xEnd] = recordedPixels(pixels, width);
+        probe.onRow(triangle, y, xLeft, xRight, xBegin, xEnd);
+    }()));
+}
+
+// Seed 001's DDA (dda.h) on rows [first, last] of the screen: the long edge in lock-step
+// with the upper edge, then with the lower one, each x stepped by its dx/dy.
+template <typename Probe>
+void walkDda(const TriangleSetup& s, std::int32_t first, std::int32_t last, std::int64_t width,
+             std::uint32_t triangle, ScanConversion& out, Probe& probe) {
+    DdaEdge longEdge = ddaEdge(s.sorted[0], s.sorted[2]);
+    DdaEdge upper = ddaEdge(s.sorted[0], s.sorted[1]);
+    DdaEdge lower = ddaEdge(s.sorted[1], s.sorted[2]);
+    for (std::int32_t y = first; y <= last; ++y) {
+        DdaEdge& shortEdge = upper.done() ? lower : upper;
+        const DdaPixels p = ddaPixels(longEdge.x, shortEdge.x, width);
+        addRow(
+            out, probe, triangle, y, {p.begin, p.end},
+            [&] { return std::minmax(longEdge.x, shortEdge.x); }, width);
+        longEdge.nextRow();
+        shortEdge.nextRow();
+    }
+}
+
+}  // namespace
 
 template <typename Probe>
 void scanTriangles(const ScanConversionInput& in, std::size_t firstTriangle,
@@ -261,6 +347,11 @@ void scanTriangles(const ScanConversionInput& in, std::size_t firstTriangle,
             continue;
         }
         const std::size_t spansBefore = out.spans.size();
+        if (scene.rules.scan == RasterRules::Scan::Dda) {
+            walkDda(s, rowBegin, rowEnd, width, triangle, out, probe);
+            if (out.spans.size() == spansBefore) ++out.offscreen;
+            continue;
+        }
 
         // Fill rows [first, last] between the long edge and one short edge.
         EdgeWalker longWalker(s.longEdge, g, rowBegin);
@@ -269,16 +360,9 @@ void scanTriangles(const ScanConversionInput& in, std::size_t firstTriangle,
             const EdgeWalker& left = s.longEdgeOnLeft ? longWalker : shortWalker;
             const EdgeWalker& right = s.longEdgeOnLeft ? shortWalker : longWalker;
             for (std::int32_t y = first; y <= last; ++y) {
-                const RowPixels pixels = rowPixels(left, right, g, width);
-                if (pixels.begin < pixels.end) {
-                    const Span span{y, static_cast<std::int32_t>(pixels.begin),
-                                    static_cast<std::int32_t>(pixels.end)};
-                    out.spans.push_back(span);
-                    out.pixels += static_cast<std::size_t>(span.xEnd - span.xBegin);
-                    RL_PROBE_HOOK(probe.onSpan(triangle, span, left.exactX(), right.exactX()));
-                }
-                // Every row walked, empty ones included (the stepper's scanlines).
-                RL_PROBE_HOOK(reportRow(probe, triangle, y, left, right, pixels, width));
+                addRow(
+                    out, probe, triangle, y, rowPixels(left, right, g, width),
+                    [&] { return std::pair(left.exactX(), right.exactX()); }, width);
                 longWalker.nextRow();
                 shortWalker.nextRow();
             }

@@ -8,11 +8,14 @@
 // course: integers), so each edge's x on a scanline is a whole number of grid steps plus a
 // remainder r/D, and both are stepped by constants per scanline (Bresenham's idea). No
 // rounding error can open a crack between two triangles or drop a pixel at a shared vertex.
+// The course and gpu rules walk this way. The hw2 rules (RasterRules::Scan::Dda) walk as
+// seed 001's lecture does instead, in double on unsnapped vertices (dda.h): the same rows
+// and spans but where the doubles' rounding decides a tie.
 //
 // Rules (RasterRules): pixel (x, y) is sampled at (x + offset, y + offset). Under the
 // course's inclusive rule a sample exactly on an edge belongs to the triangle, so shared
 // edges are covered by both triangles (no cracks, some pixels twice); under the top-left
-// rule (seed 001's half-open DDA: rows top <= y < bottom, pixels left <= x < right) it
+// rule (rows top <= y < bottom, pixels left <= x < right, as seed 001's DDA has them) it
 // belongs to exactly one. Scanlines and spans are clipped to the screen before walking,
 // so a triangle a thousand times the screen costs no more than the pixels it covers.
 // Triangles of zero area on screen have no interior and are counted, not scanned.

@@ -533,6 +533,8 @@ const char* const kCatalogue[] = {
                       "vertex positions rounded instead of truncated to the sub-pixel grid"),
     QT_TRANSLATE_NOOP("Messages",
                       "vertex positions truncated instead of rounded to the sub-pixel grid"),
+    QT_TRANSLATE_NOOP(
+        "Messages", "vertex positions truncated to the sub-pixel grid instead of kept as computed"),
     QT_TRANSLATE_NOOP("Messages", "the top-left fill rule where edges are inclusive"),
     QT_TRANSLATE_NOOP("Messages", "inclusive edges where the fill rule is top-left"),
     QT_TRANSLATE_NOOP("Messages", "colour bytes rounded instead of truncated (off by one)"),

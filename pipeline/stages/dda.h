@@ -1,0 +1,54 @@
+// Seed 001's DDA (digital differential analyser), the scan conversion its lecture teaches and
+// the hw2 rules use (RasterRules::Scan::Dda). Everything is in double, as the lecture writes
+// it, with no snapping:
+//  - the vertices are sorted by y; the long edge runs from the top vertex to the bottom one,
+//    the two short edges meet at the middle vertex;
+//  - an edge from (xTop, yTop) to (xBottom, yBottom) covers the rows ceil(yTop) <= y <
+//    yBottom. Its increment is dx/dy = (xBottom - xTop) / (yBottom - yTop); on its first row
+//    x = xTop + (ceil(yTop) - yTop) dx/dy, and from one row to the next x += dx/dy, the
+//    rounding of every addition carried along;
+//  - the long edge is walked in lock-step with the upper short edge, then with the lower one;
+//  - in each row the pixels are x = ceil(x_left), x_left + 1, ... while x < x_right, the two
+//    crossings taken in increasing order.
+// Pixels are sampled at integer coordinates. A row or a pixel whose sample lies exactly on an
+// edge is drawn by one triangle only (the half-open ranges above), but only where the doubles
+// put it: an edge that lands a hair below row 16 in double leaves row 16 to the triangle
+// above, where the exact edge walk (scan_conversion.h) would see the edge through the row.
+//
+// Efficient screen clipping (seed 001): the first step on each edge goes not to ceil(yTop)
+// but to the first such row on the screen, max(ceil(yTop), 0), by the same formula; rows and
+// pixels stop at the screen's bottom and right.
+#pragma once
+
+#include <cstdint>
+
+#include "pipeline/core/math.h"
+
+namespace rl {
+
+// One edge of the DDA, on row y.
+struct DdaEdge {
+    std::int32_t y = 0;     // the row x belongs to
+    std::int32_t yEnd = 0;  // the first row past the edge: ceil(yBottom)
+    double x = 0.0;         // the edge's x on row y, accumulated
+    double dxdy = 0.0;      // the increment per row (0 for a horizontal edge)
+
+    bool done() const { return y >= yEnd; }
+    void nextRow() {
+        x += dxdy;
+        ++y;
+    }
+};
+
+// The edge from top to bottom (top.y <= bottom.y), on its first row on the screen. A
+// horizontal edge covers no row (done() from the start).
+DdaEdge ddaEdge(const dvec2& top, const dvec2& bottom);
+
+// The pixels between two crossings xa and xb of a row, in either order: ceil(min) <= x <
+// max, clipped to the screen's columns [0, width). Empty when begin >= end.
+struct DdaPixels {
+    std::int64_t begin = 0, end = 0;
+};
+DdaPixels ddaPixels(double xa, double xb, std::int64_t width);
+
+}  // namespace rl
