@@ -15,6 +15,7 @@
 
 #include "app/documents/command_file.h"
 #include "app/image_io.h"
+#include "pipeline/io/hw2_reader.h"
 #include "pipeline/render/output_image.h"
 #include "pipeline/render/renderer.h"
 #include "pipeline/render/replay.h"
@@ -144,6 +145,7 @@ private slots:
     void rowWithNoPixel();
     void flatTopTriangle();
     void selectedTriangleAtTheEnd();
+    void ddaStepsACommandFile();
     void walkAndDepthMatchTheReplay_data();
     void walkAndDepthMatchTheReplay();
     void historyOfAPixel();
@@ -362,6 +364,61 @@ void TestScanlineInspector::walkAndDepthMatchTheReplay_data() {
         << testing::defaultCourseScene(ShadingModel::Phong, RuleSet::Course, 160, 120);
     QTest::newRow("trefoil, gpu rules")
         << testing::defaultCourseScene(ShadingModel::Phong, RuleSet::Gpu, 160, 120);
+    QTest::newRow("trefoil, hw2 rules (seed 001's DDA)")
+        << testing::defaultCourseScene(ShadingModel::Phong, RuleSet::Hw2, 160, 120);
+}
+
+void TestScanlineInspector::ddaStepsACommandFile() {
+    // A command file, stepped under the hw2 rules: the triangle (0, 0), (2, 18), (6, 18) on an
+    // 8x32 image (NDC (-1, -1), (-0.5, 0.125), (0.5, 0.125), every coordinate exact). Its
+    // left edge has dx/dy = 2/18, which the DDA adds row by row: on row 9 it has reached
+    // 1.0000000000000002, not 1, so pixel (1, 9) is left out. The view shows the sums.
+    const std::string text =
+        "png 8 32 tie.png\nxyz -1 -1 0\nxyz -0.5 0.125 0\n"
+        "xyz 0.5 0.125 0\ntrif 1 2 3\n";
+    Diagnostics diagnostics;
+    const TextureLoader noTextures =
+        [](const std::string&,
+           const SourceLocation& where) -> Result<std::shared_ptr<const Texture>> {
+        return makeError(ErrorCode::Io, where, "no textures here");
+    };
+    auto file = readHw2(text, "tie.txt", noTextures, diagnostics);
+    QVERIFY(file);
+    QCOMPARE(file->images.at(0).scene.rules, RasterRules::hw2());
+    Inspection inspection;
+    ScanlineView view(&inspection);
+    view.resize(520, 640);
+    view.show();
+    show(inspection, render(std::make_shared<const Scene>(file->images.at(0).scene)));
+    const FrameReplay& replay = *inspection.replay();
+    QCOMPARE(replay.endRow(0) - replay.firstRow(0), 18u);  // rows 0 to 17
+    const std::uint32_t k = replay.firstRow(0) + 9;
+    QCOMPARE(replay.rows()[k].y, 9);
+    // Stepping by row, then by pixel: the row's first fragment is pixel 2.
+    inspection.seek(replay.atRowStart(k));
+    QVERIFY(view.model() && view.model()->row);
+    double x = 0.0;
+    for (int i = 0; i < 9; ++i) x += 2.0 / 18.0;
+    const rasterlab::ScanRowInfo& row = *view.model()->row;
+    QCOMPARE(row.xLeft, x);
+    QCOMPARE(row.xBegin, 2);
+    QCOMPARE(row.xEnd, 3);
+    // Sorted by y, ties in file order: top (0, 0), middle (2, 18), bottom (6, 18). The flat
+    // bottom leaves every row to the upper edge, on the left; the long edge is on the right.
+    const auto& upperEdge = view.model()->edges[1];
+    QCOMPARE(upperEdge.dxdy, 2.0 / 18.0);
+    QCOMPARE(upperEdge.xFirstRow, 0.0);
+    QVERIFY(upperEdge.onLeft);
+    QCOMPARE(view.model()->edges[0].dxdy, 6.0 / 18.0);
+    const QString explanation = view.explanationText();
+    QVERIFY2(explanation.contains(QStringLiteral("x_left(9) = x_left(8) + dx/dy = "
+                                                 "0.88888888888888906 + 0.1111111111111111 = "
+                                                 "1.0000000000000002 along the upper edge")),
+             qPrintable(explanation));
+    QVERIFY(explanation.contains(QStringLiteral("Seed 001's DDA")));
+    QVERIFY(explanation.contains(QStringLiteral("Span [2, 3): 1 pixel.")));
+    inspection.seek(replay.atFragment(replay.rows()[k].fragmentBegin));
+    QCOMPARE(view.model()->currentPixel, std::optional<int>(2));
 }
 
 void TestScanlineInspector::walkAndDepthMatchTheReplay() {

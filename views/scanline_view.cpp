@@ -12,6 +12,7 @@
 #include <tuple>
 #include <vector>
 
+#include "pipeline/stages/dda.h"
 #include "pipeline/stages/depth_test.h"
 #include "pipeline/stages/shading.h"
 #include "views/inspection.h"
@@ -127,6 +128,7 @@ ScanlineModel scanlineModel(const rl::FrameTrace& frame, std::uint32_t triangle,
         rl::screenVertices(*frame.projection, frame.projection->triangles[triangle]), rules);
     const rl::TriangleSetup& s = m.setup;
     const int upperLast = rl::lastUpperRow(s, rules);
+    const bool dda = rules.scan == rl::RasterRules::Scan::Dda;
     // The edges' ends as the walk sees them: the vertices sorted by y.
     const std::array<const rl::ScanEdge*, 3> edges{&s.longEdge, &s.upperEdge, &s.lowerEdge};
     const std::array<std::pair<std::size_t, std::size_t>, 3> ends{
@@ -137,7 +139,7 @@ ScanlineModel scanlineModel(const rl::FrameTrace& frame, std::uint32_t triangle,
         entry.top = s.sorted[ends[k].first];
         entry.bottom = s.sorted[ends[k].second];
         entry.dxdy = e.dxdy();
-        entry.horizontal = e.yTop == e.yBottom;
+        entry.horizontal = dda ? !(entry.top.y < entry.bottom.y) : e.yTop == e.yBottom;
         entry.onLeft = (k == 0) == s.longEdgeOnLeft;
         if (s.degenerate()) continue;  // not walked
         switch (k) {
@@ -155,7 +157,17 @@ ScanlineModel scanlineModel(const rl::FrameTrace& frame, std::uint32_t triangle,
                 break;
         }
         if (entry.horizontal) entry.lastRow = entry.firstRow - 1;
-        entry.xFirstRow = entry.walked() ? rl::edgeCrossing(e, rules, entry.firstRow) : entry.top.x;
+        if (dda) {
+            // Seed 001's DDA: the edge's own dx/dy in double, and its x on its first row on
+            // the screen, where the walk starts.
+            const rl::DdaEdge d = rl::ddaEdge(entry.top, entry.bottom);
+            entry.dxdy = d.dxdy;
+            entry.firstRow = std::max(entry.firstRow, d.y);
+            entry.xFirstRow = entry.walked() ? d.x : entry.top.x;
+        } else {
+            entry.xFirstRow =
+                entry.walked() ? rl::edgeCrossing(e, rules, entry.firstRow) : entry.top.x;
+        }
     }
     m.rows = screenRows(s, scene.height);
     if (!y || !m.rows.contains(*y)) return m;
@@ -235,6 +247,14 @@ const std::array<QColor, 3> kEdgeColours{kLongColour, kUpperColour, kLowerColour
 std::array<QString, 3> edgeNames() {
     return {ScanlineView::tr("long edge"), ScanlineView::tr("upper edge"),
             ScanlineView::tr("lower edge")};
+}
+
+// The x seed 001's DDA has accumulated on an edge at row y (y at or after its first row):
+// the additions of dx/dy the walk makes, made again.
+double ddaX(const ScanEdgeEntry& e, int y) {
+    rl::DdaEdge dda = rl::ddaEdge(e.top, e.bottom);
+    while (dda.y < y) dda.nextRow();
+    return dda.x;
 }
 
 // Each legend entry's width: its line, then its name.
@@ -652,8 +672,13 @@ QString ScanlineView::explanationHtml() const {
             tr("Edge walking: from one scanline to the next, each edge's x changes by its "
                "constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. "
                "The span between the two crossings is filled; the long edge bounds every row, the "
-               "upper edge the rows above the middle vertex, the lower edge the rest.") +
-            QStringLiteral("</i></p>");
+               "upper edge the rows above the middle vertex, the lower edge the rest.");
+    if (frame.scene->rules.scan == rl::RasterRules::Scan::Dda)
+        html += QLatin1Char(' ') +
+                tr("Here the additions are seed 001's DDA, in double: an edge that lands a hair "
+                   "below a row in double leaves that row to the triangle above, where an exact "
+                   "walk would find the edge through the row's samples.");
+    html += QStringLiteral("</i></p>");
     return html;
 }
 
@@ -708,6 +733,7 @@ QString ScanlineView::scanlineHtml(const ScanlineModel& m, const rl::Scene& scen
     const double offset = rules.sampleOffset;
     const std::array<QString, 3> names = edgeNames();
     const std::array<QString, 3>& colours = edgeColours();
+    const bool dda = rules.scan == rl::RasterRules::Scan::Dda;
     const ScanRowInfo& row = *m.row;
     const std::size_t shortIndex = row.upperPart ? 1 : 2;
     const ScanEdgeEntry& longEdge = m.edges[0];
@@ -726,6 +752,15 @@ QString ScanlineView::scanlineHtml(const ScanlineModel& m, const rl::Scene& scen
                 .arg(name)
                 .arg(row.y)
                 .arg(num(x))
+                .arg(which);
+        if (dda)  // the sums as the doubles hold them, every digit
+            return tr("%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge")
+                .arg(name)
+                .arg(row.y)
+                .arg(row.y - 1)
+                .arg(num(ddaX(e, row.y - 1), 17))
+                .arg(e.dxdy < 0.0 ? QStringLiteral("(%1)").arg(num(e.dxdy, 17)) : num(e.dxdy, 17))
+                .arg(num(x, 17))
                 .arg(which);
         return tr("%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge")
             .arg(name)
@@ -754,7 +789,14 @@ QString ScanlineView::scanlineHtml(const ScanlineModel& m, const rl::Scene& scen
     const long long first = static_cast<long long>(std::ceil(leftSample));
     const long long last = topLeft ? static_cast<long long>(std::ceil(rightSample)) - 1
                                    : static_cast<long long>(std::floor(rightSample));
-    if (topLeft) {
+    if (dda) {
+        html += tr("Seed 001's DDA: x_left and x_right are sums in double, one addition of dx/dy "
+                   "a row, the rounding of each carried along (no snapping). Pixels x = "
+                   "ceil(x_left) = %1 while x &lt; x_right: up to ceil(x_right) &minus; 1 = %2 (a "
+                   "sample exactly on the right edge belongs to the next triangle).")
+                    .arg(first)
+                    .arg(last);
+    } else if (topLeft) {
         html += tr("Top-left rule: the samples with x_left &le; x%1 &lt; x_right, pixels "
                    "ceil(x_left%2) = %3 to ceil(x_right%2) &minus; 1 = %4 (a sample exactly on "
                    "the right edge belongs to the next triangle).")
