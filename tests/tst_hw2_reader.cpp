@@ -163,6 +163,7 @@ void TestHw2Reader::png() {
     // depths outside [0, 1] dropped, colours 0..1 truncated to bytes, transparent black.
     const Conventions& c = scene.conventions;
     QCOMPARE(c.ndcYUp, false);
+    QCOMPARE(c.viewport, ViewportFormula::ScaleThenShift);
     QCOMPARE(c.depth, DepthSource::NdcZ);
     QCOMPARE(c.depthClear, 1.0f);
     QCOMPARE(c.depthWinsOnTie, true);

@@ -32,7 +32,7 @@ std::optional<QLineF> hairLine(const rl::Scene& scene, const rl::Projection& pro
         const rl::dvec4 c = proj.clipFromView * rl::dvec4(p, 1.0);
         if (!(c.w > projection.nearW) || !rl::isFinite(rl::dvec3(c))) return std::nullopt;
         const rl::dvec2 s = rl::screenFromNdc(rl::dvec2(c) / c.w, scene.width, scene.height,
-                                              scene.conventions.ndcYUp);
+                                              scene.conventions);
         return QPointF(s.x, s.y);
     };
     const auto a = toScreen(foot);

@@ -196,8 +196,8 @@ QPointF ProjectionCanvas::spacePoint(std::uint32_t draw, std::uint32_t vertex) c
 QPointF ProjectionCanvas::layoutPoint(const QPointF& p) const {
     if (m_space == ProjectionSpace::Pixels || !m_frame) return p;
     const rl::Scene& scene = *m_frame->scene;
-    const rl::dvec2 s = rl::screenFromNdc(rl::dvec2(p.x(), p.y()), scene.width, scene.height,
-                                          scene.conventions.ndcYUp);
+    const rl::dvec2 s =
+        rl::screenFromNdc(rl::dvec2(p.x(), p.y()), scene.width, scene.height, scene.conventions);
     return {s.x, s.y};
 }
 
@@ -955,6 +955,14 @@ QString ProjectionView::vertexExplanation(std::uint32_t triangle) const {
             (rules.snap == rl::RasterRules::VertexSnap::Truncate ? tr("truncated to 1/%1 pixel")
                                                                  : tr("rounded to 1/%1 pixel"))
                 .arg(1 << rules.subpixelBits);
+    if (scene.conventions.viewport == rl::ViewportFormula::ScaleThenShift) {
+        // Seed 001's formula (its y points down the screen).
+        html += QStringLiteral("<br>x = x_ndc W/2 + W/2 = %1 · %2/2 + %2/2 = %3 → %4 (%5)")
+                    .arg(operand(pNdc.x), number(w), number(exact.x), number(pScreen.x), rounding);
+        html += QStringLiteral("<br>y = y_ndc H/2 + H/2 = %1 · %2/2 + %2/2 = %3 → %4 (%5)")
+                    .arg(operand(pNdc.y), number(h), number(exact.y), number(pScreen.y), rounding);
+        return html + QStringLiteral("</p>");
+    }
     html += QStringLiteral("<br>x = (x_ndc + 1) W/2 = (%1 + 1) · %2/2 = %3 → %4 (%5)")
                 .arg(operand(pNdc.x), number(w), number(exact.x), number(pScreen.x), rounding);
     if (scene.conventions.ndcYUp)

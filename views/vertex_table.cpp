@@ -520,10 +520,17 @@ QString VertexTableView::explanationHtml(VertexRef ref) const {
             scene.conventions.ndcYUp
                 ? QStringLiteral("(1 − %1) · %2").arg(operand(ndc.y), number(scene.height / 2.0))
                 : QStringLiteral("(%1 + 1) · %2").arg(number(ndc.y), number(scene.height / 2.0));
-        html += tr("<p>Screen: pScreen = ((x<sub>ndc</sub> + 1) w/2, %1) = ((%2 + 1) · %3, %4) "
-                   "= %5, %6: <b>%7</b></p>")
-                    .arg(yFormula, number(ndc.x), number(scene.width / 2.0), ySubstituted,
-                         vector(exact, 'g', 10), rounding, vector(snapped, 'g', 10));
+        if (scene.conventions.viewport == rl::ViewportFormula::ScaleThenShift)
+            html += tr("<p>Screen: pScreen = (x<sub>ndc</sub> w/2 + w/2, y<sub>ndc</sub> h/2 + "
+                       "h/2) = (%1 · %2 + %2, %3 · %4 + %4) = %5, %6: <b>%7</b></p>")
+                        .arg(number(ndc.x), number(scene.width / 2.0), number(ndc.y),
+                             number(scene.height / 2.0), vector(exact, 'g', 10), rounding,
+                             vector(snapped, 'g', 10));
+        else
+            html += tr("<p>Screen: pScreen = ((x<sub>ndc</sub> + 1) w/2, %1) = ((%2 + 1) · %3, "
+                       "%4) = %5, %6: <b>%7</b></p>")
+                        .arg(yFormula, number(ndc.x), number(scene.width / 2.0), ySubstituted,
+                             vector(exact, 'g', 10), rounding, vector(snapped, 'g', 10));
     }
 
     // Normal.

@@ -100,6 +100,7 @@ Conventions Conventions::course() {
 Conventions Conventions::hw2() {
     Conventions c;
     c.ndcYUp = false;  // (-1, -1) is the top-left corner
+    c.viewport = ViewportFormula::ScaleThenShift;
     c.depth = DepthSource::NdcZ;
     c.depthClear = 1.0f;
     c.depthWinsOnTie = true;

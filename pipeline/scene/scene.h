@@ -181,8 +181,16 @@ enum class ByteRounding : std::uint8_t {
     Nearest,   // round half up
 };
 
+// How NDC becomes pixels: the same in exact arithmetic, not always in double (x_ndc = -0.7
+// on 120 pixels: 18.000000000000004 and 18).
+enum class ViewportFormula : std::uint8_t {
+    ShiftThenScale,  // (x_ndc + 1) W/2 (seed 000)
+    ScaleThenShift,  // x_ndc W/2 + W/2 (seed 001)
+};
+
 struct Conventions {
     bool ndcYUp = true;  // NDC y = +1 is the top row (the course flips y)
+    ViewportFormula viewport = ViewportFormula::ShiftThenScale;
     DepthSource depth = DepthSource::ViewZ;
     float depthClear = std::numeric_limits<float>::infinity();  // the empty depth buffer
     bool depthWinsOnTie = false;  // z <= stored writes (seed 001); otherwise z < stored

@@ -116,10 +116,14 @@ inline bool everyTriangleBehind(const Projection& projection, const Scene& scene
 }
 
 // Pixels from NDC, before snapping: x = (x_ndc + 1) W/2, and y = (1 - y_ndc) H/2 when NDC's
-// y points up (the course's convention), (y_ndc + 1) H/2 otherwise.
-inline dvec2 screenFromNdc(const dvec2& pNdc, double width, double height, bool ndcYUp) {
-    const double yFromTop = ndcYUp ? 1.0 - pNdc.y : pNdc.y + 1.0;
-    return {(pNdc.x + 1.0) * width / 2.0, yFromTop * height / 2.0};
+// y points up (the course's convention), (y_ndc + 1) H/2 otherwise; or, by seed 001's
+// formula, x = x_ndc W/2 + W/2 and y = y_ndc H/2 + H/2.
+inline dvec2 screenFromNdc(const dvec2& pNdc, double width, double height,
+                           const Conventions& conventions) {
+    const double yDown = conventions.ndcYUp ? -pNdc.y : pNdc.y;  // NDC y down the screen
+    if (conventions.viewport == ViewportFormula::ScaleThenShift)
+        return {pNdc.x * width / 2.0 + width / 2.0, yDown * height / 2.0 + height / 2.0};
+    return {(pNdc.x + 1.0) * width / 2.0, (yDown + 1.0) * height / 2.0};
 }
 
 // One plane of Sutherland-Hodgman clipping (step 2): walks the polygon's edges A-B in order,
@@ -277,8 +281,7 @@ private:
 inline void DrawProjector::projectVertex(std::uint32_t i) {
     const dvec4& pClip = m_proj.pClip[i];
     const dvec2 pNdc = dvec2(pClip) / pClip.w;
-    const dvec2 exact =
-        screenFromNdc(pNdc, m_scene.width, m_scene.height, m_scene.conventions.ndcYUp);
+    const dvec2 exact = screenFromNdc(pNdc, m_scene.width, m_scene.height, m_scene.conventions);
     if (m_keepExact) {
         m_proj.pNdc[i] = pNdc;
         m_proj.pScreenExact[i] = exact;
