@@ -219,7 +219,9 @@ struct RasterRules {
         Inclusive,  // a sample exactly on an edge is inside: shared edges are covered twice
         TopLeft,    // on an edge, inside only on a left or a horizontal top edge: once
     };
-    // How a triangle becomes spans (stage 5).
+    // How a triangle becomes spans (stage 5). The DDA has seed 001's sampling and fill rule
+    // built in (samples at integer points, half-open rows and spans), whatever sampleOffset
+    // and fill say; the hw2 preset says the same.
     enum class Scan : std::uint8_t {
         ExactWalk,  // the edge walk on the snapped vertices, in exact integer arithmetic
         Dda,        // seed 001's DDA in double: x stepped by dx/dy row by row (dda.h)
