@@ -1816,386 +1816,391 @@
     </message>
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="536"/>
+        <source>vertex positions truncated to the sub-pixel grid instead of kept as computed</source>
+        <translation>vertex positions truncated to the sub-pixel grid instead of kept as computed</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="538"/>
         <source>the top-left fill rule where edges are inclusive</source>
         <translation>the top-left fill rule where edges are inclusive</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="537"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="539"/>
         <source>inclusive edges where the fill rule is top-left</source>
         <translation>inclusive edges where the fill rule is top-left</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="538"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="540"/>
         <source>colour bytes rounded instead of truncated (off by one)</source>
         <translation>colour bytes rounded instead of truncated (off by one)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="539"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="541"/>
         <source>colour bytes truncated instead of rounded (off by one)</source>
         <translation>colour bytes truncated instead of rounded (off by one)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="540"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="542"/>
         <source>colours above 255 wrap around instead of clamping</source>
         <translation>colours above 255 wrap around instead of clamping</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="541"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="543"/>
         <source>the painter&apos;s order (far to near, no depth test) instead of the z-buffer</source>
         <translation>the painter&apos;s order (far to near, no depth test) instead of the z-buffer</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="543"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="545"/>
         <source>z &lt; stored instead of z &lt;= stored in the depth test (ties keep the earlier triangle)</source>
         <translation>z &lt; stored instead of z &lt;= stored in the depth test (ties keep the earlier triangle)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="546"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="548"/>
         <source>z &lt;= stored instead of z &lt; stored in the depth test (ties go to the later triangle)</source>
         <translation>z &lt;= stored instead of z &lt; stored in the depth test (ties go to the later triangle)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="549"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="551"/>
         <source>a different background: %1 where the scene&apos;s is %2</source>
         <translation>a different background: %1 where the scene&apos;s is %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="550"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="552"/>
         <source>alpha %1 on covered pixels instead of 255</source>
         <translation>alpha %1 on covered pixels instead of 255</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="551"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="553"/>
         <source>our pixels lit again with that formula (the same triangles, barycentrics, P&apos;, N, lights and material) give theirs</source>
         <translation>our pixels lit again with that formula (the same triangles, barycentrics, P&apos;, N, lights and material) give theirs</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="554"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="556"/>
         <source>the scene rendered again in that shading model gives their pixels</source>
         <translation>the scene rendered again in that shading model gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="556"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="558"/>
         <source>our image moved that way gives their pixels</source>
         <translation>our image moved that way gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="557"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="559"/>
         <source>the scene rendered again with that rule gives their pixels</source>
         <translation>the scene rendered again with that rule gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="558"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="560"/>
         <source>our float colours made bytes that way give their pixels</source>
         <translation>our float colours made bytes that way give their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="559"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="561"/>
         <source>the scene painted far to near without a depth test gives their pixels</source>
         <translation>the scene painted far to near without a depth test gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="561"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="563"/>
         <source>their pixels where no triangle of ours is take that colour</source>
         <translation>their pixels where no triangle of ours is take that colour</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="562"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="564"/>
         <source>their pixels where a triangle of ours is take that alpha</source>
         <translation>their pixels where a triangle of ours is take that alpha</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="563"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="565"/>
         <source>seed 000&apos;s ambient term is Ia*ka, without the object colour Od</source>
         <translation>seed 000&apos;s ambient term is Ia*ka, without the object colour Od</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="564"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="566"/>
         <source>seed 000: if V.N &lt; 0, N := -N before the lighting</source>
         <translation>seed 000: if V.N &lt; 0, N := -N before the lighting</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="565"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="567"/>
         <source>seed 000: if R.V &lt; 0, no specular term</source>
         <translation>seed 000: if R.V &lt; 0, no specular term</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="566"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="568"/>
         <source>seed 000: if N.L &lt; 0, neither diffuse nor specular</source>
         <translation>seed 000: if N.L &lt; 0, neither diffuse nor specular</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="567"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="569"/>
         <source>the interpolated N is shorter than 1: normalise it before N.L and R</source>
         <translation>the interpolated N is shorter than 1: normalise it before N.L and R</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="569"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="571"/>
         <source>check where the lighting is evaluated: per pixel, per vertex or per triangle</source>
         <translation>check where the lighting is evaluated: per pixel, per vertex or per triangle</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="572"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="574"/>
         <source>check the sign of x in the projection or the screen mapping</source>
         <translation>check the sign of x in the projection or the screen mapping</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="573"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="575"/>
         <source>screen row 0 is the top: y = (1 - y_ndc) * height / 2</source>
         <translation>screen row 0 is the top: y = (1 - y_ndc) * height / 2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="574"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="576"/>
         <source>check the screen mapping&apos;s offsets and the first pixel of each span</source>
         <translation>check the screen mapping&apos;s offsets and the first pixel of each span</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="576"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="578"/>
         <source>where a pixel is sampled decides which pixels an edge covers (--rules)</source>
         <translation>where a pixel is sampled decides which pixels an edge covers (--rules)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="578"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="580"/>
         <source>check how screen coordinates become whole pixels ((int) truncates)</source>
         <translation>check how screen coordinates become whole pixels ((int) truncates)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="580"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="582"/>
         <source>the pixels exactly on an edge: which triangle (or both) covers them</source>
         <translation>the pixels exactly on an edge: which triangle (or both) covers them</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="582"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="584"/>
         <source>check how the colour becomes a byte: (int) truncates, + 0.5 rounds</source>
         <translation>check how the colour becomes a byte: (int) truncates, + 0.5 rounds</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="584"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="586"/>
         <source>clamp each channel to 255 before writing it as a byte</source>
         <translation>clamp each channel to 255 before writing it as a byte</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="585"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="587"/>
         <source>keep a depth buffer and write a pixel only when the fragment is nearer</source>
         <translation>keep a depth buffer and write a pixel only when the fragment is nearer</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="587"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="589"/>
         <source>the comparison of the depth test: &lt; keeps the first of two equal depths</source>
         <translation>the comparison of the depth test: &lt; keeps the first of two equal depths</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="589"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="591"/>
         <source>the colour (and alpha) of the pixels no triangle covers</source>
         <translation>the colour (and alpha) of the pixels no triangle covers</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="590"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="592"/>
         <source>the alpha written with each shaded pixel</source>
         <translation>the alpha written with each shaded pixel</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="591"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="593"/>
         <source>%1; no pixel that matches now would change</source>
         <translation>%1; no pixel that matches now would change</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="592"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="594"/>
         <source>%2; %1 pixel that matches now would differ</source>
         <translation>%2; %1 pixel that matches now would differ</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="593"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="595"/>
         <source>%2; %1 pixels that match now would differ</source>
         <translation>%2; %1 pixels that match now would differ</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="595"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="597"/>
         <source>cannot read the texture %1: %2</source>
         <translation>cannot read the texture %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="597"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="599"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
         <source>cannot open: %1</source>
         <translation>cannot open: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="603"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>the file has %1 MiB, more than the %2 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>the file has more than the %1 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
         <source>not enough memory to read this file</source>
         <translation>not enough memory to read this file</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="610"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
         <source>the object is not edited, so not saved</source>
         <translation>the object is not edited, so not saved</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
         <source>cannot write into the built-in resources</source>
         <translation>cannot write into the built-in resources</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>the camera was not saved, as it would not load again: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>not saved: the text written does not read back as the same values</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
         <source>cannot write the file: %1</source>
         <translation>cannot write the file: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>only %1 of %2 bytes could be written (is the disk full?)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>cannot write the file (it is left as it was): %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[rows, fragments], two whole numbers</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[width, height], whole numbers from %1 to %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
         <source>a list</source>
         <translation>a list</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
         <source>a list of %1 numbers</source>
         <translation>a list of %1 numbers</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
         <source>a list of 1 to 8 lights</source>
         <translation>a list of 1 to 8 lights</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
         <source>a list of dock names</source>
         <translation>a list of dock names</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
         <source>a number</source>
         <translation>a number</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>a positive number or &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>a positive number or &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
         <source>a whole number from %1</source>
         <translation>a whole number from %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
         <source>an object</source>
         <translation>an object</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="633"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>expected %1 for &quot;%2&quot;, found %3</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
         <source>not a lesson file: %1</source>
         <translation>not a lesson file: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
         <source>nothing</source>
         <translation>nothing</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
         <source>one of %1</source>
         <translation>one of %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
         <source>text in quotes</source>
         <translation>text in quotes</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
         <source>the text &apos;%1&apos;</source>
         <translation>the text &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
         <source>true or false</source>
         <translation>true or false</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="643"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>unknown key &quot;%1&quot; ignored (known here: %2)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="676"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="678"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="682"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
         <source>%1: warning: %2</source>
         <translation>%1: warning: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="683"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
         <source>%1: note: %2</source>
         <translation>%1: note: %2</translation>
     </message>
@@ -6185,22 +6190,27 @@
         <translation>made by clipping, on the edge from vertex %1 to vertex %2 at t = %3</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="950"/>
+        <location filename="../views/projection_view.cpp" line="949"/>
+        <source>not snapped</source>
+        <translation>not snapped</translation>
+    </message>
+    <message>
+        <location filename="../views/projection_view.cpp" line="952"/>
         <source>truncated</source>
         <translation>truncated</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="950"/>
+        <location filename="../views/projection_view.cpp" line="952"/>
         <source>rounded</source>
         <translation>rounded</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="953"/>
+        <location filename="../views/projection_view.cpp" line="955"/>
         <source>truncated to 1/%1 pixel</source>
         <translation>truncated to 1/%1 pixel</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="954"/>
+        <location filename="../views/projection_view.cpp" line="956"/>
         <source>rounded to 1/%1 pixel</source>
         <translation>rounded to 1/%1 pixel</translation>
     </message>
@@ -6208,296 +6218,307 @@
 <context>
     <name>rasterlab::ScanlineView</name>
     <message>
-        <location filename="../views/scanline_view.cpp" line="270"/>
+        <location filename="../views/scanline_view.cpp" line="290"/>
         <source>No triangle to show: step into the frame or pick a pixel.</source>
         <translation>No triangle to show: step into the frame or pick a pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="236"/>
+        <location filename="../views/scanline_view.cpp" line="248"/>
         <source>long edge</source>
         <translation>long edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="236"/>
+        <location filename="../views/scanline_view.cpp" line="248"/>
         <source>upper edge</source>
         <translation>upper edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="237"/>
+        <location filename="../views/scanline_view.cpp" line="249"/>
         <source>lower edge</source>
         <translation>lower edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="574"/>
+        <location filename="../views/scanline_view.cpp" line="594"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="577"/>
+        <location filename="../views/scanline_view.cpp" line="597"/>
         <source>Start of the frame: step forward to walk the first triangle, or pick a pixel to see the triangle holding it.</source>
         <translation>Start of the frame: step forward to walk the first triangle, or pick a pixel to see the triangle holding it.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="580"/>
+        <location filename="../views/scanline_view.cpp" line="600"/>
         <source>Pick a pixel, or step through the frame, to see a triangle scan converted.</source>
         <translation>Pick a pixel, or step through the frame, to see a triangle scan converted.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="585"/>
+        <location filename="../views/scanline_view.cpp" line="605"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</source>
         <translation>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="588"/>
+        <location filename="../views/scanline_view.cpp" line="608"/>
         <source>scanline %1</source>
         <translation>scanline %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="590"/>
+        <location filename="../views/scanline_view.cpp" line="610"/>
         <source>pixel %1</source>
         <translation>pixel %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="593"/>
+        <location filename="../views/scanline_view.cpp" line="613"/>
         <source>at the stepping cursor</source>
         <translation>at the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="594"/>
+        <location filename="../views/scanline_view.cpp" line="614"/>
         <source>the triangle selected (the cursor is at the %1 of the frame)</source>
         <translation>the triangle selected (the cursor is at the %1 of the frame)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="595"/>
+        <location filename="../views/scanline_view.cpp" line="615"/>
         <source>start</source>
         <translation>start</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="596"/>
+        <location filename="../views/scanline_view.cpp" line="616"/>
         <source>end</source>
         <translation>end</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="624"/>
+        <location filename="../views/scanline_view.cpp" line="644"/>
         <source>Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the top to the bottom; the two short edges meet at the middle vertex.</source>
         <translation>Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the top to the bottom; the two short edges meet at the middle vertex.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="629"/>
+        <location filename="../views/scanline_view.cpp" line="649"/>
         <source>Its area on the screen is zero: it has no inside and is not scanned.</source>
         <translation>Its area on the screen is zero: it has no inside and is not scanned.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="634"/>
+        <location filename="../views/scanline_view.cpp" line="654"/>
         <source>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, so the middle vertex is %2 of the long edge: the long edge bounds the spans on the %3.</source>
         <translation>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, so the middle vertex is %2 of the long edge: the long edge bounds the spans on the %3.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="637"/>
-        <location filename="../views/scanline_view.cpp" line="638"/>
-        <location filename="../views/scanline_view.cpp" line="693"/>
+        <location filename="../views/scanline_view.cpp" line="657"/>
+        <location filename="../views/scanline_view.cpp" line="658"/>
+        <location filename="../views/scanline_view.cpp" line="718"/>
         <source>right</source>
         <translation>right</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="637"/>
-        <location filename="../views/scanline_view.cpp" line="638"/>
-        <location filename="../views/scanline_view.cpp" line="693"/>
+        <location filename="../views/scanline_view.cpp" line="657"/>
+        <location filename="../views/scanline_view.cpp" line="658"/>
+        <location filename="../views/scanline_view.cpp" line="718"/>
         <source>left</source>
         <translation>left</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="612"/>
+        <location filename="../views/scanline_view.cpp" line="632"/>
         <source>long</source>
         <translation>long</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="612"/>
+        <location filename="../views/scanline_view.cpp" line="632"/>
         <source>upper</source>
         <translation>upper</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="612"/>
+        <location filename="../views/scanline_view.cpp" line="632"/>
         <source>lower</source>
         <translation>lower</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="680"/>
+        <location filename="../views/scanline_view.cpp" line="705"/>
         <source>from</source>
         <translation>from</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="681"/>
+        <location filename="../views/scanline_view.cpp" line="706"/>
         <source>to</source>
         <translation>to</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="682"/>
+        <location filename="../views/scanline_view.cpp" line="707"/>
         <source>x on its first row</source>
         <translation>x on its first row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="685"/>
+        <location filename="../views/scanline_view.cpp" line="710"/>
         <source>dx/dy</source>
         <translation>dx/dy</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="686"/>
+        <location filename="../views/scanline_view.cpp" line="711"/>
         <source>horizontal</source>
         <translation>horizontal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="688"/>
+        <location filename="../views/scanline_view.cpp" line="713"/>
         <source>rows</source>
         <translation>rows</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="690"/>
+        <location filename="../views/scanline_view.cpp" line="715"/>
         <source>none</source>
         <translation>none</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="693"/>
+        <location filename="../views/scanline_view.cpp" line="718"/>
         <source>side</source>
         <translation>side</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="697"/>
+        <location filename="../views/scanline_view.cpp" line="722"/>
         <source>Only rows %1 to %2 are on the screen: the walk starts and stops there.</source>
         <translation>Only rows %1 to %2 are on the screen: the walk starts and stops there.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="644"/>
+        <location filename="../views/scanline_view.cpp" line="664"/>
         <source>No row of this triangle is on the screen.</source>
         <translation>No row of this triangle is on the screen.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="719"/>
+        <location filename="../views/scanline_view.cpp" line="678"/>
+        <source>Here the additions are seed 001&apos;s DDA, in double: an edge that lands a hair below a row in double leaves that row to the triangle above, where an exact walk would find the edge through the row&apos;s samples.</source>
+        <translation>Here the additions are seed 001&apos;s DDA, in double: an edge that lands a hair below a row in double leaves that row to the triangle above, where an exact walk would find the edge through the row&apos;s samples.</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="745"/>
         <source>%1(%2) = %3, where the %4 edge crosses its first row</source>
         <translation>%1(%2) = %3, where the %4 edge crosses its first row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="725"/>
+        <location filename="../views/scanline_view.cpp" line="751"/>
         <source>%1(%2) = %3, where the %4 edge crosses the first row on the screen</source>
         <translation>%1(%2) = %3, where the %4 edge crosses the first row on the screen</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="730"/>
+        <location filename="../views/scanline_view.cpp" line="757"/>
+        <location filename="../views/scanline_view.cpp" line="765"/>
         <source>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</source>
         <translation>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="744"/>
+        <location filename="../views/scanline_view.cpp" line="779"/>
         <source>Scanline y = %1</source>
         <translation>Scanline y = %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="746"/>
+        <location filename="../views/scanline_view.cpp" line="781"/>
         <source>(sampled at y = %1)</source>
         <translation>(sampled at y = %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="758"/>
+        <location filename="../views/scanline_view.cpp" line="793"/>
+        <source>Seed 001&apos;s DDA: x_left and x_right are sums in double, one addition of dx/dy a row, the rounding of each carried along (no snapping). Pixels x = ceil(x_left) = %1 while x &amp;lt; x_right: up to ceil(x_right) &amp;minus; 1 = %2 (a sample exactly on the right edge belongs to the next triangle).</source>
+        <translation>Seed 001&apos;s DDA: x_left and x_right are sums in double, one addition of dx/dy a row, the rounding of each carried along (no snapping). Pixels x = ceil(x_left) = %1 while x &amp;lt; x_right: up to ceil(x_right) &amp;minus; 1 = %2 (a sample exactly on the right edge belongs to the next triangle).</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="800"/>
         <source>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="765"/>
+        <location filename="../views/scanline_view.cpp" line="807"/>
         <source>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</source>
         <translation>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="773"/>
+        <location filename="../views/scanline_view.cpp" line="815"/>
         <source>No pixel on this row</source>
         <translation>No pixel on this row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="774"/>
+        <location filename="../views/scanline_view.cpp" line="816"/>
         <source>the edges cross it between two samples.</source>
         <translation>the edges cross it between two samples.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="775"/>
+        <location filename="../views/scanline_view.cpp" line="817"/>
         <source>they are all off the screen.</source>
         <translation>they are all off the screen.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="778"/>
+        <location filename="../views/scanline_view.cpp" line="820"/>
         <source>Span [%1, %2): 1 pixel.</source>
         <translation>Span [%1, %2): 1 pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="779"/>
+        <location filename="../views/scanline_view.cpp" line="821"/>
         <source>Span [%1, %2): %3 pixels.</source>
         <translation>Span [%1, %2): %3 pixels.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="782"/>
+        <location filename="../views/scanline_view.cpp" line="824"/>
         <source>(cut to the screen&apos;s columns 0 to %1)</source>
         <translation>(cut to the screen&apos;s columns 0 to %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="785"/>
+        <location filename="../views/scanline_view.cpp" line="827"/>
         <source>The pixel at the cursor is x = %1.</source>
         <translation>The pixel at the cursor is x = %1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="802"/>
+        <location filename="../views/scanline_view.cpp" line="844"/>
         <source>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</source>
         <translation>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="807"/>
+        <location filename="../views/scanline_view.cpp" line="849"/>
         <source>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</source>
         <translation>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="809"/>
+        <location filename="../views/scanline_view.cpp" line="851"/>
         <source>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</source>
         <translation>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="814"/>
+        <location filename="../views/scanline_view.cpp" line="856"/>
         <source>depth</source>
         <translation>depth</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="814"/>
+        <location filename="../views/scanline_view.cpp" line="856"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="820"/>
+        <location filename="../views/scanline_view.cpp" line="862"/>
         <source>not computed (nothing is lit)</source>
         <translation>not computed (nothing is lit)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="821"/>
+        <location filename="../views/scanline_view.cpp" line="863"/>
         <source>zero</source>
         <translation>zero</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="838"/>
+        <location filename="../views/scanline_view.cpp" line="880"/>
         <source>Pixel (x, y) is sampled at the point (x, y) itself.</source>
         <translation>Pixel (x, y) is sampled at the point (x, y) itself.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="839"/>
+        <location filename="../views/scanline_view.cpp" line="881"/>
         <source>Pixel (x, y) is sampled at (x + %1, y + %1).</source>
         <translation>Pixel (x, y) is sampled at (x + %1, y + %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="842"/>
+        <location filename="../views/scanline_view.cpp" line="884"/>
         <source>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</source>
         <translation>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="845"/>
+        <location filename="../views/scanline_view.cpp" line="887"/>
         <source>, with the barycentrics weighted by 1/w (perspective-correct)</source>
         <translation>, with the barycentrics weighted by 1/w (perspective-correct)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="652"/>
+        <location filename="../views/scanline_view.cpp" line="672"/>
         <source>Edge walking: from one scanline to the next, each edge&apos;s x changes by its constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. The span between the two crossings is filled; the long edge bounds every row, the upper edge the rows above the middle vertex, the lower edge the rest.</source>
         <translation>Edge walking: from one scanline to the next, each edge&apos;s x changes by its constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. The span between the two crossings is filled; the long edge bounds every row, the upper edge the rows above the middle vertex, the lower edge the rest.</translation>
     </message>
@@ -7081,51 +7102,61 @@
     </message>
     <message>
         <location filename="../views/vertex_table.cpp" line="510"/>
+        <source>not snapped</source>
+        <translation>not snapped</translation>
+    </message>
+    <message>
+        <location filename="../views/vertex_table.cpp" line="512"/>
         <source>truncated, as C&apos;s (int) does</source>
         <translation>truncated, as C&apos;s (int) does</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="512"/>
+        <location filename="../views/vertex_table.cpp" line="514"/>
         <source>truncated to a grid of 1/%1 pixel</source>
         <translation>truncated to a grid of 1/%1 pixel</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="514"/>
+        <location filename="../views/vertex_table.cpp" line="516"/>
         <source>rounded to the nearest 1/%1 pixel</source>
         <translation>rounded to the nearest 1/%1 pixel</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="515"/>
+        <location filename="../views/vertex_table.cpp" line="517"/>
         <source>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</source>
         <translation>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="516"/>
+        <location filename="../views/vertex_table.cpp" line="518"/>
         <source>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</source>
         <translation>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="521"/>
+        <location filename="../views/vertex_table.cpp" line="524"/>
+        <source>&lt;p&gt;Screen: pScreen = (x&lt;sub&gt;ndc&lt;/sub&gt; w/2 + w/2, y&lt;sub&gt;ndc&lt;/sub&gt; h/2 + h/2) = (%1 · %2 + %2, %3 · %4 + %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Screen: pScreen = (x&lt;sub&gt;ndc&lt;/sub&gt; w/2 + w/2, y&lt;sub&gt;ndc&lt;/sub&gt; h/2 + h/2) = (%1 · %2 + %2, %3 · %4 + %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../views/vertex_table.cpp" line="530"/>
         <source>&lt;p&gt;Screen: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Screen: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="530"/>
+        <location filename="../views/vertex_table.cpp" line="539"/>
         <source>&lt;p&gt;Normal: mixed along the edge like pView, %1; shading normalises it per pixel.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: mixed along the edge like pView, %1; shading normalises it per pixel.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="534"/>
+        <location filename="../views/vertex_table.cpp" line="543"/>
         <source>&lt;p&gt;Normal: the file&apos;s normal carried to view space by the inverse transpose of viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: the file&apos;s normal carried to view space by the inverse transpose of viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="541"/>
+        <location filename="../views/vertex_table.cpp" line="550"/>
         <source>&lt;p&gt;Normal: the normalised sum of the normals of the %1 triangles around it: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: the normalised sum of the normals of the %1 triangles around it: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="547"/>
+        <location filename="../views/vertex_table.cpp" line="556"/>
         <source>&lt;p&gt;Normal: none, %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: none, %1.&lt;/p&gt;</translation>
     </message>

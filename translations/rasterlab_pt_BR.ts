@@ -1816,386 +1816,391 @@
     </message>
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="536"/>
+        <source>vertex positions truncated to the sub-pixel grid instead of kept as computed</source>
+        <translation>posições dos vértices truncadas para a grade de subpixels em vez de mantidas como calculadas</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="538"/>
         <source>the top-left fill rule where edges are inclusive</source>
         <translation>a regra de preenchimento top-left onde as arestas são inclusivas</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="537"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="539"/>
         <source>inclusive edges where the fill rule is top-left</source>
         <translation>arestas inclusivas onde a regra de preenchimento é top-left</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="538"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="540"/>
         <source>colour bytes rounded instead of truncated (off by one)</source>
         <translation>bytes de cor arredondados em vez de truncados (diferença de um)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="539"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="541"/>
         <source>colour bytes truncated instead of rounded (off by one)</source>
         <translation>bytes de cor truncados em vez de arredondados (diferença de um)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="540"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="542"/>
         <source>colours above 255 wrap around instead of clamping</source>
         <translation>cores acima de 255 dão a volta em vez de serem limitadas a 255</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="541"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="543"/>
         <source>the painter&apos;s order (far to near, no depth test) instead of the z-buffer</source>
         <translation>a ordem do pintor (do mais distante ao mais próximo, sem teste de profundidade) em vez do z-buffer</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="543"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="545"/>
         <source>z &lt; stored instead of z &lt;= stored in the depth test (ties keep the earlier triangle)</source>
         <translation>z &lt; guardado em vez de z &lt;= guardado no teste de profundidade (empates ficam com o triângulo anterior)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="546"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="548"/>
         <source>z &lt;= stored instead of z &lt; stored in the depth test (ties go to the later triangle)</source>
         <translation>z &lt;= guardado em vez de z &lt; guardado no teste de profundidade (empates vão para o triângulo posterior)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="549"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="551"/>
         <source>a different background: %1 where the scene&apos;s is %2</source>
         <translation>um fundo diferente: %1 onde o da cena é %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="550"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="552"/>
         <source>alpha %1 on covered pixels instead of 255</source>
         <translation>alfa %1 nos pixels cobertos em vez de 255</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="551"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="553"/>
         <source>our pixels lit again with that formula (the same triangles, barycentrics, P&apos;, N, lights and material) give theirs</source>
         <translation>nossos pixels iluminados de novo com essa fórmula (os mesmos triângulos, baricêntricas, P&apos;, N, luzes e material) dão os deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="554"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="556"/>
         <source>the scene rendered again in that shading model gives their pixels</source>
         <translation>a cena renderizada de novo nesse modelo de sombreamento dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="556"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="558"/>
         <source>our image moved that way gives their pixels</source>
         <translation>nossa imagem movida assim dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="557"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="559"/>
         <source>the scene rendered again with that rule gives their pixels</source>
         <translation>a cena renderizada de novo com essa regra dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="558"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="560"/>
         <source>our float colours made bytes that way give their pixels</source>
         <translation>nossas cores float convertidas em bytes desse jeito dão os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="559"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="561"/>
         <source>the scene painted far to near without a depth test gives their pixels</source>
         <translation>a cena pintada do mais distante ao mais próximo, sem teste de profundidade, dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="561"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="563"/>
         <source>their pixels where no triangle of ours is take that colour</source>
         <translation>os pixels deles onde não há triângulo nosso têm essa cor</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="562"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="564"/>
         <source>their pixels where a triangle of ours is take that alpha</source>
         <translation>os pixels deles onde há um triângulo nosso têm esse alfa</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="563"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="565"/>
         <source>seed 000&apos;s ambient term is Ia*ka, without the object colour Od</source>
         <translation>o termo ambiente da seed 000 é Ia*ka, sem a cor do objeto Od</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="564"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="566"/>
         <source>seed 000: if V.N &lt; 0, N := -N before the lighting</source>
         <translation>seed 000: se V.N &lt; 0, N := -N antes da iluminação</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="565"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="567"/>
         <source>seed 000: if R.V &lt; 0, no specular term</source>
         <translation>seed 000: se R.V &lt; 0, sem termo especular</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="566"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="568"/>
         <source>seed 000: if N.L &lt; 0, neither diffuse nor specular</source>
         <translation>seed 000: se N.L &lt; 0, nem termo difuso nem especular</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="567"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="569"/>
         <source>the interpolated N is shorter than 1: normalise it before N.L and R</source>
         <translation>a N interpolada é mais curta que 1: normalize-a antes de N.L e R</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="569"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="571"/>
         <source>check where the lighting is evaluated: per pixel, per vertex or per triangle</source>
         <translation>verifique onde a iluminação é avaliada: por pixel, por vértice ou por triângulo</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="572"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="574"/>
         <source>check the sign of x in the projection or the screen mapping</source>
         <translation>verifique o sinal de x na projeção ou no mapeamento para a tela</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="573"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="575"/>
         <source>screen row 0 is the top: y = (1 - y_ndc) * height / 2</source>
         <translation>a linha 0 da tela é a de cima: y = (1 - y_ndc) * altura / 2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="574"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="576"/>
         <source>check the screen mapping&apos;s offsets and the first pixel of each span</source>
         <translation>verifique os deslocamentos do mapeamento para a tela e o primeiro pixel de cada segmento</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="576"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="578"/>
         <source>where a pixel is sampled decides which pixels an edge covers (--rules)</source>
         <translation>onde um pixel é amostrado decide quais pixels uma aresta cobre (--rules)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="578"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="580"/>
         <source>check how screen coordinates become whole pixels ((int) truncates)</source>
         <translation>verifique como as coordenadas de tela viram pixels inteiros ((int) trunca)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="580"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="582"/>
         <source>the pixels exactly on an edge: which triangle (or both) covers them</source>
         <translation>os pixels exatamente sobre uma aresta: qual triângulo (ou ambos) os cobre</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="582"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="584"/>
         <source>check how the colour becomes a byte: (int) truncates, + 0.5 rounds</source>
         <translation>verifique como a cor vira um byte: (int) trunca, + 0.5 arredonda</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="584"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="586"/>
         <source>clamp each channel to 255 before writing it as a byte</source>
         <translation>limite cada canal a 255 antes de escrevê-lo como byte</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="585"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="587"/>
         <source>keep a depth buffer and write a pixel only when the fragment is nearer</source>
         <translation>mantenha um buffer de profundidade e escreva um pixel só quando o fragmento estiver mais perto</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="587"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="589"/>
         <source>the comparison of the depth test: &lt; keeps the first of two equal depths</source>
         <translation>a comparação do teste de profundidade: &lt; fica com o primeiro de duas profundidades iguais</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="589"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="591"/>
         <source>the colour (and alpha) of the pixels no triangle covers</source>
         <translation>a cor (e o alfa) dos pixels que nenhum triângulo cobre</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="590"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="592"/>
         <source>the alpha written with each shaded pixel</source>
         <translation>o alfa escrito com cada pixel sombreado</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="591"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="593"/>
         <source>%1; no pixel that matches now would change</source>
         <translation>%1; nenhum pixel que coincide agora mudaria</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="592"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="594"/>
         <source>%2; %1 pixel that matches now would differ</source>
         <translation>%2; %1 pixel que coincide agora passaria a diferir</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="593"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="595"/>
         <source>%2; %1 pixels that match now would differ</source>
         <translation>%2; %1 pixels que coincidem agora passariam a diferir</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="595"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="597"/>
         <source>cannot read the texture %1: %2</source>
         <translation>não é possível ler a textura %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="597"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="599"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V está a %1 graus da reta de N: Gram-Schmidt guarda só isso de V, e a base é ortonormal só até %2, menos que a precisão de um float; escolha um V mais longe de N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
         <source>cannot open: %1</source>
         <translation>não é possível abrir: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="603"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>o arquivo tem %1 MiB, mais que os %2 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>o arquivo tem mais que os %1 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
         <source>not enough memory to read this file</source>
         <translation>não há memória suficiente para ler este arquivo</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="610"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>os arquivos da cena embutida não podem ser gravados: salve-a num arquivo seu (Salvar como)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
         <source>the object is not edited, so not saved</source>
         <translation>o objeto não é editado, então não é salvo</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
         <source>cannot write into the built-in resources</source>
         <translation>não é possível gravar nos recursos embutidos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>a câmera não foi salva, pois não carregaria de novo: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>não salvo: o texto gravado não é lido de volta com os mesmos valores</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
         <source>cannot write the file: %1</source>
         <translation>não é possível gravar o arquivo: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>só %1 de %2 bytes puderam ser gravados (o disco está cheio?)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>não é possível gravar o arquivo (ele fica como estava): %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[linhas, fragmentos], dois números inteiros</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[largura, altura], números inteiros de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
         <source>a list</source>
         <translation>uma lista</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
         <source>a list of %1 numbers</source>
         <translation>uma lista de %1 números</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
         <source>a list of 1 to 8 lights</source>
         <translation>uma lista de 1 a 8 luzes</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
         <source>a list of dock names</source>
         <translation>uma lista de nomes de painéis</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
         <source>a number</source>
         <translation>um número</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>um número positivo ou &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>um número positivo ou &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
         <source>a whole number from %1</source>
         <translation>um número inteiro a partir de %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
         <source>an object</source>
         <translation>um objeto</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="633"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>esperava %1 para &quot;%2&quot;, encontrou %3</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>esperava um arquivo de aula: um objeto JSON com &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
         <source>not a lesson file: %1</source>
         <translation>não é um arquivo de aula: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
         <source>nothing</source>
         <translation>nada</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
         <source>one of %1</source>
         <translation>um de %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
         <source>text in quotes</source>
         <translation>um texto entre aspas</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
         <source>the text &apos;%1&apos;</source>
         <translation>o texto &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
         <source>true or false</source>
         <translation>true ou false</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="643"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>ignorou a chave desconhecida &quot;%1&quot; (as conhecidas aqui: %2)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="676"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="678"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="682"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
         <source>%1: warning: %2</source>
         <translation>%1: aviso: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="683"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
         <source>%1: note: %2</source>
         <translation>%1: nota: %2</translation>
     </message>
@@ -6185,22 +6190,27 @@
         <translation>criado pelo recorte, na aresta do vértice %1 ao vértice %2, em t = %3</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="950"/>
+        <location filename="../views/projection_view.cpp" line="949"/>
+        <source>not snapped</source>
+        <translation>sem arredondamento para a grade</translation>
+    </message>
+    <message>
+        <location filename="../views/projection_view.cpp" line="952"/>
         <source>truncated</source>
         <translation>truncado</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="950"/>
+        <location filename="../views/projection_view.cpp" line="952"/>
         <source>rounded</source>
         <translation>arredondado</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="953"/>
+        <location filename="../views/projection_view.cpp" line="955"/>
         <source>truncated to 1/%1 pixel</source>
         <translation>truncado para 1/%1 de pixel</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="954"/>
+        <location filename="../views/projection_view.cpp" line="956"/>
         <source>rounded to 1/%1 pixel</source>
         <translation>arredondado para 1/%1 de pixel</translation>
     </message>
@@ -6208,296 +6218,307 @@
 <context>
     <name>rasterlab::ScanlineView</name>
     <message>
-        <location filename="../views/scanline_view.cpp" line="270"/>
+        <location filename="../views/scanline_view.cpp" line="290"/>
         <source>No triangle to show: step into the frame or pick a pixel.</source>
         <translation>Nenhum triângulo para mostrar: avance pelo quadro ou escolha um pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="236"/>
+        <location filename="../views/scanline_view.cpp" line="248"/>
         <source>long edge</source>
         <translation>aresta longa</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="236"/>
+        <location filename="../views/scanline_view.cpp" line="248"/>
         <source>upper edge</source>
         <translation>aresta superior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="237"/>
+        <location filename="../views/scanline_view.cpp" line="249"/>
         <source>lower edge</source>
         <translation>aresta inferior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="574"/>
+        <location filename="../views/scanline_view.cpp" line="594"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="577"/>
+        <location filename="../views/scanline_view.cpp" line="597"/>
         <source>Start of the frame: step forward to walk the first triangle, or pick a pixel to see the triangle holding it.</source>
         <translation>Início do quadro: avance para percorrer o primeiro triângulo, ou escolha um pixel para ver o triângulo que o ocupa.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="580"/>
+        <location filename="../views/scanline_view.cpp" line="600"/>
         <source>Pick a pixel, or step through the frame, to see a triangle scan converted.</source>
         <translation>Escolha um pixel, ou avance pelo quadro, para ver a conversão por varredura de um triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="585"/>
+        <location filename="../views/scanline_view.cpp" line="605"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</source>
         <translation>&lt;b&gt;Triângulo %1&lt;/b&gt; de %2</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="588"/>
+        <location filename="../views/scanline_view.cpp" line="608"/>
         <source>scanline %1</source>
         <translation>linha de varredura %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="590"/>
+        <location filename="../views/scanline_view.cpp" line="610"/>
         <source>pixel %1</source>
         <translation>pixel %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="593"/>
+        <location filename="../views/scanline_view.cpp" line="613"/>
         <source>at the stepping cursor</source>
         <translation>no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="594"/>
+        <location filename="../views/scanline_view.cpp" line="614"/>
         <source>the triangle selected (the cursor is at the %1 of the frame)</source>
         <translation>o triângulo selecionado (o cursor está no %1 do quadro)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="595"/>
+        <location filename="../views/scanline_view.cpp" line="615"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="596"/>
+        <location filename="../views/scanline_view.cpp" line="616"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="624"/>
+        <location filename="../views/scanline_view.cpp" line="644"/>
         <source>Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the top to the bottom; the two short edges meet at the middle vertex.</source>
         <translation>Vértices ordenados por y: topo %1, meio %2, base %3. A aresta longa vai do topo à base; as duas arestas curtas se encontram no vértice do meio.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="629"/>
+        <location filename="../views/scanline_view.cpp" line="649"/>
         <source>Its area on the screen is zero: it has no inside and is not scanned.</source>
         <translation>Sua área na tela é zero: ele não tem interior e não é varrido.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="634"/>
+        <location filename="../views/scanline_view.cpp" line="654"/>
         <source>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, so the middle vertex is %2 of the long edge: the long edge bounds the spans on the %3.</source>
         <translation>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, então o vértice do meio fica à %2 da aresta longa: a aresta longa limita os segmentos à %3.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="637"/>
-        <location filename="../views/scanline_view.cpp" line="638"/>
-        <location filename="../views/scanline_view.cpp" line="693"/>
+        <location filename="../views/scanline_view.cpp" line="657"/>
+        <location filename="../views/scanline_view.cpp" line="658"/>
+        <location filename="../views/scanline_view.cpp" line="718"/>
         <source>right</source>
         <translation>direita</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="637"/>
-        <location filename="../views/scanline_view.cpp" line="638"/>
-        <location filename="../views/scanline_view.cpp" line="693"/>
+        <location filename="../views/scanline_view.cpp" line="657"/>
+        <location filename="../views/scanline_view.cpp" line="658"/>
+        <location filename="../views/scanline_view.cpp" line="718"/>
         <source>left</source>
         <translation>esquerda</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="612"/>
+        <location filename="../views/scanline_view.cpp" line="632"/>
         <source>long</source>
         <translation>longa</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="612"/>
+        <location filename="../views/scanline_view.cpp" line="632"/>
         <source>upper</source>
         <translation>superior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="612"/>
+        <location filename="../views/scanline_view.cpp" line="632"/>
         <source>lower</source>
         <translation>inferior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="680"/>
+        <location filename="../views/scanline_view.cpp" line="705"/>
         <source>from</source>
         <translation>de</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="681"/>
+        <location filename="../views/scanline_view.cpp" line="706"/>
         <source>to</source>
         <translation>até</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="682"/>
+        <location filename="../views/scanline_view.cpp" line="707"/>
         <source>x on its first row</source>
         <translation>x na sua primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="685"/>
+        <location filename="../views/scanline_view.cpp" line="710"/>
         <source>dx/dy</source>
         <translation>dx/dy</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="686"/>
+        <location filename="../views/scanline_view.cpp" line="711"/>
         <source>horizontal</source>
         <translation>horizontal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="688"/>
+        <location filename="../views/scanline_view.cpp" line="713"/>
         <source>rows</source>
         <translation>linhas</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="690"/>
+        <location filename="../views/scanline_view.cpp" line="715"/>
         <source>none</source>
         <translation>nenhuma</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="693"/>
+        <location filename="../views/scanline_view.cpp" line="718"/>
         <source>side</source>
         <translation>lado</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="697"/>
+        <location filename="../views/scanline_view.cpp" line="722"/>
         <source>Only rows %1 to %2 are on the screen: the walk starts and stops there.</source>
         <translation>Só as linhas %1 a %2 estão na tela: o percurso começa e termina ali.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="644"/>
+        <location filename="../views/scanline_view.cpp" line="664"/>
         <source>No row of this triangle is on the screen.</source>
         <translation>Nenhuma linha deste triângulo está na tela.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="719"/>
+        <location filename="../views/scanline_view.cpp" line="678"/>
+        <source>Here the additions are seed 001&apos;s DDA, in double: an edge that lands a hair below a row in double leaves that row to the triangle above, where an exact walk would find the edge through the row&apos;s samples.</source>
+        <translation>Aqui as somas são o DDA da semente 001, em double: uma aresta que fica um fio abaixo de uma linha em double deixa essa linha para o triângulo de cima, onde um percurso exato acharia a aresta passando pelas amostras da linha.</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="745"/>
         <source>%1(%2) = %3, where the %4 edge crosses its first row</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza sua primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="725"/>
+        <location filename="../views/scanline_view.cpp" line="751"/>
         <source>%1(%2) = %3, where the %4 edge crosses the first row on the screen</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza a primeira linha na tela</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="730"/>
+        <location filename="../views/scanline_view.cpp" line="757"/>
+        <location filename="../views/scanline_view.cpp" line="765"/>
         <source>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</source>
         <translation>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 ao longo da aresta %7</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="744"/>
+        <location filename="../views/scanline_view.cpp" line="779"/>
         <source>Scanline y = %1</source>
         <translation>Linha de varredura y = %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="746"/>
+        <location filename="../views/scanline_view.cpp" line="781"/>
         <source>(sampled at y = %1)</source>
         <translation>(amostrada em y = %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="758"/>
+        <location filename="../views/scanline_view.cpp" line="793"/>
+        <source>Seed 001&apos;s DDA: x_left and x_right are sums in double, one addition of dx/dy a row, the rounding of each carried along (no snapping). Pixels x = ceil(x_left) = %1 while x &amp;lt; x_right: up to ceil(x_right) &amp;minus; 1 = %2 (a sample exactly on the right edge belongs to the next triangle).</source>
+        <translation>DDA da semente 001: x_left e x_right são somas em double, uma soma de dx/dy por linha, o arredondamento de cada uma levado adiante (sem arredondar os vértices para a grade). Pixels x = ceil(x_left) = %1 enquanto x &amp;lt; x_right: até ceil(x_right) &amp;minus; 1 = %2 (uma amostra exatamente na aresta direita pertence ao triângulo seguinte).</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="800"/>
         <source>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Regra top-left: as amostras com x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 a ceil(x_right%2) &amp;minus; 1 = %4 (uma amostra exatamente na aresta direita pertence ao triângulo seguinte).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="765"/>
+        <location filename="../views/scanline_view.cpp" line="807"/>
         <source>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</source>
         <translation>Regra inclusiva: os pixels de ceil(x_left%1) = %2 a floor(x_right%1) = %3, as duas pontas incluídas (uma amostra exatamente sobre uma aresta está dentro).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="773"/>
+        <location filename="../views/scanline_view.cpp" line="815"/>
         <source>No pixel on this row</source>
         <translation>Nenhum pixel nesta linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="774"/>
+        <location filename="../views/scanline_view.cpp" line="816"/>
         <source>the edges cross it between two samples.</source>
         <translation>as arestas a cruzam entre duas amostras.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="775"/>
+        <location filename="../views/scanline_view.cpp" line="817"/>
         <source>they are all off the screen.</source>
         <translation>estão todos fora da tela.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="778"/>
+        <location filename="../views/scanline_view.cpp" line="820"/>
         <source>Span [%1, %2): 1 pixel.</source>
         <translation>Segmento [%1, %2): 1 pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="779"/>
+        <location filename="../views/scanline_view.cpp" line="821"/>
         <source>Span [%1, %2): %3 pixels.</source>
         <translation>Segmento [%1, %2): %3 pixels.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="782"/>
+        <location filename="../views/scanline_view.cpp" line="824"/>
         <source>(cut to the screen&apos;s columns 0 to %1)</source>
         <translation>(cortado às colunas 0 a %1 da tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="785"/>
+        <location filename="../views/scanline_view.cpp" line="827"/>
         <source>The pixel at the cursor is x = %1.</source>
         <translation>O pixel no cursor é x = %1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="802"/>
+        <location filename="../views/scanline_view.cpp" line="844"/>
         <source>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</source>
         <translation>Nas pontas do segmento, as coordenadas baricêntricas (&amp;alpha;, &amp;beta;, &amp;gamma;) da amostra em relação ao triângulo de tela P1 %1, P2 %2, P3 %3 dão a profundidade, a partir dos z dos vértices, z1 = %4, z2 = %5, z3 = %6:</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="807"/>
+        <location filename="../views/scanline_view.cpp" line="849"/>
         <source>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</source>
         <translation>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (com correção de perspectiva: 1/z é linear na tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="809"/>
+        <location filename="../views/scanline_view.cpp" line="851"/>
         <source>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</source>
         <translation>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="814"/>
+        <location filename="../views/scanline_view.cpp" line="856"/>
         <source>depth</source>
         <translation>profundidade</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="814"/>
+        <location filename="../views/scanline_view.cpp" line="856"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="820"/>
+        <location filename="../views/scanline_view.cpp" line="862"/>
         <source>not computed (nothing is lit)</source>
         <translation>não calculada (nada é iluminado)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="821"/>
+        <location filename="../views/scanline_view.cpp" line="863"/>
         <source>zero</source>
         <translation>nula</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="838"/>
+        <location filename="../views/scanline_view.cpp" line="880"/>
         <source>Pixel (x, y) is sampled at the point (x, y) itself.</source>
         <translation>O pixel (x, y) é amostrado no próprio ponto (x, y).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="839"/>
+        <location filename="../views/scanline_view.cpp" line="881"/>
         <source>Pixel (x, y) is sampled at (x + %1, y + %1).</source>
         <translation>O pixel (x, y) é amostrado em (x + %1, y + %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="842"/>
+        <location filename="../views/scanline_view.cpp" line="884"/>
         <source>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</source>
         <translation>A normal é N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1), a partir das normais dos vértices, normalizada%1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="845"/>
+        <location filename="../views/scanline_view.cpp" line="887"/>
         <source>, with the barycentrics weighted by 1/w (perspective-correct)</source>
         <translation>, com as coordenadas baricêntricas ponderadas por 1/w (correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="652"/>
+        <location filename="../views/scanline_view.cpp" line="672"/>
         <source>Edge walking: from one scanline to the next, each edge&apos;s x changes by its constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. The span between the two crossings is filled; the long edge bounds every row, the upper edge the rows above the middle vertex, the lower edge the rest.</source>
         <translation>Percurso das arestas: de uma linha de varredura à seguinte, o x de cada aresta muda pelo seu dx/dy constante, uma adição por aresta e por linha: x_left(y+1) = x_left(y) + dx/dy. O segmento entre os dois cruzamentos é preenchido; a aresta longa limita todas as linhas, a aresta superior as linhas acima do vértice do meio, a aresta inferior as demais.</translation>
     </message>
@@ -7081,51 +7102,61 @@
     </message>
     <message>
         <location filename="../views/vertex_table.cpp" line="510"/>
+        <source>not snapped</source>
+        <translation>sem arredondamento para a grade</translation>
+    </message>
+    <message>
+        <location filename="../views/vertex_table.cpp" line="512"/>
         <source>truncated, as C&apos;s (int) does</source>
         <translation>truncado, como faz o (int) do C</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="512"/>
+        <location filename="../views/vertex_table.cpp" line="514"/>
         <source>truncated to a grid of 1/%1 pixel</source>
         <translation>truncado para uma grade de 1/%1 de pixel</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="514"/>
+        <location filename="../views/vertex_table.cpp" line="516"/>
         <source>rounded to the nearest 1/%1 pixel</source>
         <translation>arredondado para o 1/%1 de pixel mais próximo</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="515"/>
+        <location filename="../views/vertex_table.cpp" line="517"/>
         <source>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</source>
         <translation>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="516"/>
+        <location filename="../views/vertex_table.cpp" line="518"/>
         <source>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</source>
         <translation>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="521"/>
+        <location filename="../views/vertex_table.cpp" line="524"/>
+        <source>&lt;p&gt;Screen: pScreen = (x&lt;sub&gt;ndc&lt;/sub&gt; w/2 + w/2, y&lt;sub&gt;ndc&lt;/sub&gt; h/2 + h/2) = (%1 · %2 + %2, %3 · %4 + %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Tela: pScreen = (x&lt;sub&gt;ndc&lt;/sub&gt; w/2 + w/2, y&lt;sub&gt;ndc&lt;/sub&gt; h/2 + h/2) = (%1 · %2 + %2, %3 · %4 + %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../views/vertex_table.cpp" line="530"/>
         <source>&lt;p&gt;Screen: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Tela: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="530"/>
+        <location filename="../views/vertex_table.cpp" line="539"/>
         <source>&lt;p&gt;Normal: mixed along the edge like pView, %1; shading normalises it per pixel.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: misturada ao longo da aresta como pView, %1; o sombreamento a normaliza por pixel.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="534"/>
+        <location filename="../views/vertex_table.cpp" line="543"/>
         <source>&lt;p&gt;Normal: the file&apos;s normal carried to view space by the inverse transpose of viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: a normal do arquivo levada ao espaço de vista pela inversa transposta de viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="541"/>
+        <location filename="../views/vertex_table.cpp" line="550"/>
         <source>&lt;p&gt;Normal: the normalised sum of the normals of the %1 triangles around it: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: a soma normalizada das normais dos %1 triângulos ao seu redor: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="547"/>
+        <location filename="../views/vertex_table.cpp" line="556"/>
         <source>&lt;p&gt;Normal: none, %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: nenhuma, %1.&lt;/p&gt;</translation>
     </message>
