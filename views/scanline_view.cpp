@@ -249,14 +249,6 @@ std::array<QString, 3> edgeNames() {
             ScanlineView::tr("lower edge")};
 }
 
-// The x seed 001's DDA has accumulated on an edge at row y (y at or after its first row):
-// the additions of dx/dy the walk makes, made again.
-double ddaX(const ScanEdgeEntry& e, int y) {
-    rl::DdaEdge dda = rl::ddaEdge(e.top, e.bottom);
-    while (dda.y < y) dda.nextRow();
-    return dda.x;
-}
-
 // Each legend entry's width: its line, then its name.
 std::vector<double> legendWidths(const QFontMetrics& metrics) {
     std::vector<double> widths;
@@ -753,22 +745,18 @@ QString ScanlineView::scanlineHtml(const ScanlineModel& m, const rl::Scene& scen
                 .arg(row.y)
                 .arg(num(x))
                 .arg(which);
-        if (dda)  // the sums as the doubles hold them, every digit
-            return tr("%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge")
-                .arg(name)
-                .arg(row.y)
-                .arg(row.y - 1)
-                .arg(num(ddaX(e, row.y - 1), 17))
-                .arg(e.dxdy < 0.0 ? QStringLiteral("(%1)").arg(num(e.dxdy, 17)) : num(e.dxdy, 17))
-                .arg(num(x, 17))
-                .arg(which);
+        // Under the DDA, the sums as the doubles hold them, every digit.
+        const int digits = dda ? 17 : 6;
+        const double previous =
+            dda ? rl::ddaEdgeAtRow(e.top, e.bottom, row.y - 1).x : x - e.dxdy;
         return tr("%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge")
             .arg(name)
             .arg(row.y)
             .arg(row.y - 1)
-            .arg(num(x - e.dxdy))
-            .arg(e.dxdy < 0.0 ? QStringLiteral("(%1)").arg(num(e.dxdy)) : num(e.dxdy))
-            .arg(num(x))
+            .arg(num(previous, digits))
+            .arg(e.dxdy < 0.0 ? QStringLiteral("(%1)").arg(num(e.dxdy, digits))
+                              : num(e.dxdy, digits))
+            .arg(num(x, digits))
             .arg(which);
     };
     const ScanEdgeEntry& leftEdge = longEdge.onLeft ? longEdge : shortEdge;

@@ -29,6 +29,12 @@ DdaEdge ddaEdge(const dvec2& top, const dvec2& bottom) {
     return e;
 }
 
+DdaEdge ddaEdgeAtRow(const dvec2& top, const dvec2& bottom, std::int32_t y) {
+    DdaEdge e = ddaEdge(top, bottom);
+    while (e.y < y) e.nextRow();
+    return e;
+}
+
 DdaPixels ddaPixels(double xa, double xb, std::int64_t width) {
     const double left = std::min(xa, xb), right = std::max(xa, xb);
     return {std::max<std::int64_t>(index(std::ceil(left)), 0),

@@ -43,6 +43,9 @@ struct DdaEdge {
 // The edge from top to bottom (top.y <= bottom.y), on its first row on the screen. A
 // horizontal edge covers no row (done() from the start).
 DdaEdge ddaEdge(const dvec2& top, const dvec2& bottom);
+// The same edge stepped on to row y (at or after its first row), one addition of dx/dy a row:
+// the very x the walk has accumulated there (the views show it).
+DdaEdge ddaEdgeAtRow(const dvec2& top, const dvec2& bottom, std::int32_t y);
 
 // The pixels between two crossings xa and xb of a row, in either order: ceil(min) <= x <
 // max, clipped to the screen's columns [0, width). Empty when begin >= end.

@@ -150,11 +150,9 @@ ScanRow ddaRow(const TriangleSetup& s, std::int32_t y, std::int32_t width) {
     ScanRow row;
     row.y = y;
     row.upperPart = y <= lastUpperDdaRow(s);
-    DdaEdge longEdge = ddaEdge(s.sorted[0], s.sorted[2]);
-    DdaEdge shortEdge =
-        row.upperPart ? ddaEdge(s.sorted[0], s.sorted[1]) : ddaEdge(s.sorted[1], s.sorted[2]);
-    while (longEdge.y < y) longEdge.nextRow();
-    while (shortEdge.y < y) shortEdge.nextRow();
+    const DdaEdge longEdge = ddaEdgeAtRow(s.sorted[0], s.sorted[2], y);
+    const DdaEdge shortEdge = row.upperPart ? ddaEdgeAtRow(s.sorted[0], s.sorted[1], y)
+                                            : ddaEdgeAtRow(s.sorted[1], s.sorted[2], y);
     row.xLeft = std::min(longEdge.x, shortEdge.x);
     row.xRight = std::max(longEdge.x, shortEdge.x);
     const DdaPixels p = ddaPixels(longEdge.x, shortEdge.x, width);
