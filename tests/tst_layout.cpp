@@ -21,7 +21,7 @@ struct Include {
     QString target;  // as written between the quotes
 };
 
-QList<Include> projectIncludes() {
+QList<Include> scanIncludes() {
     const QDir root(testing::sourceDir());
     static const QRegularExpression quoted(QStringLiteral("^\\s*#\\s*include\\s+\"([^\"]+)\""));
     QList<Include> includes;
@@ -42,6 +42,12 @@ QList<Include> projectIncludes() {
             }
         }
     }
+    return includes;
+}
+
+// The tree is read once for all the tests.
+const QList<Include>& projectIncludes() {
+    static const QList<Include> includes = scanIncludes();
     return includes;
 }
 

@@ -2871,85 +2871,80 @@
 <context>
     <name>rasterlab::CompareImage</name>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="100"/>
+        <location filename="../app/compare/compare_image.cpp" line="101"/>
         <source>no such file</source>
         <translation>no such file</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="104"/>
+        <location filename="../app/compare/compare_image.cpp" line="105"/>
         <source>the file is empty</source>
         <translation>the file is empty</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="128"/>
+        <location filename="../app/compare/compare_image.cpp" line="129"/>
         <source>the PNG is cut short (it does not end with its IEND chunk)</source>
         <translation>the PNG is cut short (it does not end with its IEND chunk)</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="102"/>
+        <location filename="../app/compare/compare_image.cpp" line="103"/>
         <source>a folder, not an image</source>
         <translation>a folder, not an image</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="27"/>
+        <location filename="../app/compare/compare_image.cpp" line="28"/>
         <source>the TGA header is cut short</source>
         <translation>the TGA header is cut short</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="35"/>
+        <location filename="../app/compare/compare_image.cpp" line="36"/>
         <source>a TGA image of a kind RasterLab does not read (only 8-bit grey and 24- or 32-bit colour, plain or run-length encoded)</source>
         <translation>a TGA image of a kind RasterLab does not read (only 8-bit grey and 24- or 32-bit colour, plain or run-length encoded)</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="47"/>
-        <location filename="../app/compare/compare_image.cpp" line="73"/>
+        <location filename="../app/compare/compare_image.cpp" line="48"/>
+        <location filename="../app/compare/compare_image.cpp" line="74"/>
         <source>the TGA image is cut short</source>
         <translation>the TGA image is cut short</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="51"/>
+        <location filename="../app/compare/compare_image.cpp" line="52"/>
         <source>the TGA image is %1x%2, larger than RasterLab reads</source>
         <translation>the TGA image is %1x%2, larger than RasterLab reads</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="123"/>
+        <location filename="../app/compare/compare_image.cpp" line="124"/>
         <source>not an image RasterLab reads (PNG, PPM, BMP, TGA or JPEG)</source>
         <translation>not an image RasterLab reads (PNG, PPM, BMP, TGA or JPEG)</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="124"/>
+        <location filename="../app/compare/compare_image.cpp" line="125"/>
         <source>not an image RasterLab reads (PNG, PPM, BMP, TGA or JPEG): a %1 image</source>
         <translation>not an image RasterLab reads (PNG, PPM, BMP, TGA or JPEG): a %1 image</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="142"/>
+        <location filename="../app/compare/compare_image.cpp" line="143"/>
         <source>cannot read the %1 image: %2</source>
         <translation>cannot read the %1 image: %2</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="170"/>
+        <location filename="../app/compare/compare_image.cpp" line="171"/>
         <source>a %1 image</source>
         <translation>a %1 image</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="172"/>
+        <location filename="../app/compare/compare_image.cpp" line="173"/>
         <source>, lossy: compared with a tolerance of %1 per channel</source>
         <translation>, lossy: compared with a tolerance of %1 per channel</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="173"/>
+        <location filename="../app/compare/compare_image.cpp" line="174"/>
         <source>, without alpha: colours compared, alpha taken as ours</source>
         <translation>, without alpha: colours compared, alpha taken as ours</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="201"/>
+        <location filename="../app/compare/compare_image.cpp" line="204"/>
         <source>the image is %1, ours is %2</source>
         <translation>the image is %1, ours is %2</translation>
-    </message>
-    <message>
-        <location filename="../app/compare/compare_image.cpp" line="205"/>
-        <source>; it holds ours at (%1, %2), as a screenshot with a window border would: crop it to %3 from there</source>
-        <translation>; it holds ours at (%1, %2), as a screenshot with a window border would: crop it to %3 from there</translation>
     </message>
 </context>
 <context>
@@ -3036,29 +3031,29 @@
         <translation>There is no render to compare with yet.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="261"/>
+        <location filename="../app/window/compare_panel.cpp" line="260"/>
         <source>Their image: %1.</source>
         <translation>Their image: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="267"/>
+        <location filename="../app/window/compare_panel.cpp" line="266"/>
         <source>Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.</source>
         <translation>Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="360"/>
-        <location filename="../app/window/compare_panel.cpp" line="363"/>
+        <location filename="../app/window/compare_panel.cpp" line="356"/>
+        <location filename="../app/window/compare_panel.cpp" line="359"/>
         <source>Theirs</source>
         <translation>Theirs</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="360"/>
-        <location filename="../app/window/compare_panel.cpp" line="363"/>
+        <location filename="../app/window/compare_panel.cpp" line="356"/>
+        <location filename="../app/window/compare_panel.cpp" line="359"/>
         <source>Ours</source>
         <translation>Ours</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/compare_panel.cpp" line="368"/>
+        <location filename="../app/window/compare_panel.cpp" line="364"/>
         <source>%n pixel(s) differ by more than %1</source>
         <translation>
             <numerusform>%n pixel differs by more than %1</numerusform>
@@ -3066,167 +3061,167 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="394"/>
+        <location filename="../app/window/compare_panel.cpp" line="390"/>
         <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
         <translation>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="403"/>
+        <location filename="../app/window/compare_panel.cpp" line="399"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Largest difference per channel: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="404"/>
+        <location filename="../app/window/compare_panel.cpp" line="400"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Mean difference per channel, over the differing pixels: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="406"/>
+        <location filename="../app/window/compare_panel.cpp" line="402"/>
         <source>Pixels only one side covers: %1 only ours (our depth buffer), %2 only theirs (not the background).</source>
         <translation>Pixels only one side covers: %1 only ours (our depth buffer), %2 only theirs (not the background).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="412"/>
+        <location filename="../app/window/compare_panel.cpp" line="408"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="419"/>
+        <location filename="../app/window/compare_panel.cpp" line="415"/>
         <source>The images are the same.</source>
         <translation>The images are the same.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="421"/>
+        <location filename="../app/window/compare_panel.cpp" line="417"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnosis: none of the mistakes RasterLab knows explains these differences.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="424"/>
+        <location filename="../app/window/compare_panel.cpp" line="420"/>
         <source>Diagnosis, most likely first:</source>
         <translation>Diagnosis, most likely first:</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="430"/>
+        <location filename="../app/window/compare_panel.cpp" line="426"/>
         <source>Explains %1% of the differing pixels (%2 of %3).</source>
         <translation>Explains %1% of the differing pixels (%2 of %3).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="435"/>
+        <location filename="../app/window/compare_panel.cpp" line="431"/>
         <source>Evidence: %1</source>
         <translation>Evidence: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="436"/>
+        <location filename="../app/window/compare_panel.cpp" line="432"/>
         <source>Check: %1</source>
         <translation>Check: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="438"/>
+        <location filename="../app/window/compare_panel.cpp" line="434"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>At (%1, %2): ours %3, theirs %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="454"/>
+        <location filename="../app/window/compare_panel.cpp" line="450"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Pick a pixel (here or on the image) to see their colour beside ours.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="462"/>
+        <location filename="../app/window/compare_panel.cpp" line="458"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): theirs %3, ours %4.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="469"/>
+        <location filename="../app/window/compare_panel.cpp" line="465"/>
         <source>minus %1 in %2</source>
         <translation>minus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="470"/>
+        <location filename="../app/window/compare_panel.cpp" line="466"/>
         <source>plus %1 in %2</source>
         <translation>plus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="473"/>
+        <location filename="../app/window/compare_panel.cpp" line="469"/>
         <source>Their colour is ours.</source>
         <translation>Their colour is ours.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="477"/>
+        <location filename="../app/window/compare_panel.cpp" line="473"/>
         <source>Their colour is ours %1.</source>
         <translation>Their colour is ours %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="479"/>
+        <location filename="../app/window/compare_panel.cpp" line="475"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>The scene has changed since the comparison: the lighting shown now is not the one compared.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="491"/>
+        <location filename="../app/window/compare_panel.cpp" line="487"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>No triangle of ours covers this pixel: it is the background.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="495"/>
+        <location filename="../app/window/compare_panel.cpp" line="491"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>The lighting of this pixel is not known.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="498"/>
+        <location filename="../app/window/compare_panel.cpp" line="494"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="528"/>
+        <location filename="../app/window/compare_panel.cpp" line="524"/>
         <source>the ambient term Ia·ka</source>
         <translation>the ambient term Ia·ka</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="529"/>
+        <location filename="../app/window/compare_panel.cpp" line="525"/>
         <source>the diffuse term Il·Od·kd·(N·L)</source>
         <translation>the diffuse term Il·Od·kd·(N·L)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="530"/>
+        <location filename="../app/window/compare_panel.cpp" line="526"/>
         <source>the specular term Il·ks·(R·V)^n</source>
         <translation>the specular term Il·ks·(R·V)^n</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="546"/>
+        <location filename="../app/window/compare_panel.cpp" line="542"/>
         <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
         <translation>• %1 is 0 in %2 here: changing it alone cannot give their colour.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="551"/>
+        <location filename="../app/window/compare_panel.cpp" line="547"/>
         <source>• %1 would have to be below 0 in %2: not this term alone.</source>
         <translation>• %1 would have to be below 0 in %2: not this term alone.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="568"/>
+        <location filename="../app/window/compare_panel.cpp" line="564"/>
         <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
         <translation>• %1 would have to be %2 instead of %3, × %4 per channel</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="571"/>
+        <location filename="../app/window/compare_panel.cpp" line="567"/>
         <source>: the term left out</source>
         <translation>: the term left out</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="574"/>
+        <location filename="../app/window/compare_panel.cpp" line="570"/>
         <source>: that is the term times Od %1</source>
         <translation>: that is the term times Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="577"/>
+        <location filename="../app/window/compare_panel.cpp" line="573"/>
         <source>: that is the term without Od %1</source>
         <translation>: that is the term without Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="583"/>
+        <location filename="../app/window/compare_panel.cpp" line="579"/>
         <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
         <translation>(%1: 255 in both images, clamped; any value at least as high gives it.)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="586"/>
+        <location filename="../app/window/compare_panel.cpp" line="582"/>
         <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
         <translation>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</translation>
     </message>
@@ -6218,7 +6213,7 @@
 <context>
     <name>rasterlab::ScanlineView</name>
     <message>
-        <location filename="../views/scanline_view.cpp" line="290"/>
+        <location filename="../views/scanline_view.cpp" line="282"/>
         <source>No triangle to show: step into the frame or pick a pixel.</source>
         <translation>No triangle to show: step into the frame or pick a pixel.</translation>
     </message>
@@ -6238,287 +6233,286 @@
         <translation>lower edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="594"/>
+        <location filename="../views/scanline_view.cpp" line="586"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="597"/>
+        <location filename="../views/scanline_view.cpp" line="589"/>
         <source>Start of the frame: step forward to walk the first triangle, or pick a pixel to see the triangle holding it.</source>
         <translation>Start of the frame: step forward to walk the first triangle, or pick a pixel to see the triangle holding it.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="600"/>
+        <location filename="../views/scanline_view.cpp" line="592"/>
         <source>Pick a pixel, or step through the frame, to see a triangle scan converted.</source>
         <translation>Pick a pixel, or step through the frame, to see a triangle scan converted.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="605"/>
+        <location filename="../views/scanline_view.cpp" line="597"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</source>
         <translation>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="608"/>
+        <location filename="../views/scanline_view.cpp" line="600"/>
         <source>scanline %1</source>
         <translation>scanline %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="610"/>
+        <location filename="../views/scanline_view.cpp" line="602"/>
         <source>pixel %1</source>
         <translation>pixel %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="613"/>
+        <location filename="../views/scanline_view.cpp" line="605"/>
         <source>at the stepping cursor</source>
         <translation>at the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="614"/>
+        <location filename="../views/scanline_view.cpp" line="606"/>
         <source>the triangle selected (the cursor is at the %1 of the frame)</source>
         <translation>the triangle selected (the cursor is at the %1 of the frame)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="615"/>
+        <location filename="../views/scanline_view.cpp" line="607"/>
         <source>start</source>
         <translation>start</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="616"/>
+        <location filename="../views/scanline_view.cpp" line="608"/>
         <source>end</source>
         <translation>end</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="644"/>
+        <location filename="../views/scanline_view.cpp" line="636"/>
         <source>Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the top to the bottom; the two short edges meet at the middle vertex.</source>
         <translation>Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the top to the bottom; the two short edges meet at the middle vertex.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="649"/>
+        <location filename="../views/scanline_view.cpp" line="641"/>
         <source>Its area on the screen is zero: it has no inside and is not scanned.</source>
         <translation>Its area on the screen is zero: it has no inside and is not scanned.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="654"/>
+        <location filename="../views/scanline_view.cpp" line="646"/>
         <source>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, so the middle vertex is %2 of the long edge: the long edge bounds the spans on the %3.</source>
         <translation>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, so the middle vertex is %2 of the long edge: the long edge bounds the spans on the %3.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="657"/>
-        <location filename="../views/scanline_view.cpp" line="658"/>
-        <location filename="../views/scanline_view.cpp" line="718"/>
+        <location filename="../views/scanline_view.cpp" line="649"/>
+        <location filename="../views/scanline_view.cpp" line="650"/>
+        <location filename="../views/scanline_view.cpp" line="710"/>
         <source>right</source>
         <translation>right</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="657"/>
-        <location filename="../views/scanline_view.cpp" line="658"/>
-        <location filename="../views/scanline_view.cpp" line="718"/>
+        <location filename="../views/scanline_view.cpp" line="649"/>
+        <location filename="../views/scanline_view.cpp" line="650"/>
+        <location filename="../views/scanline_view.cpp" line="710"/>
         <source>left</source>
         <translation>left</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="632"/>
+        <location filename="../views/scanline_view.cpp" line="624"/>
         <source>long</source>
         <translation>long</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="632"/>
+        <location filename="../views/scanline_view.cpp" line="624"/>
         <source>upper</source>
         <translation>upper</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="632"/>
+        <location filename="../views/scanline_view.cpp" line="624"/>
         <source>lower</source>
         <translation>lower</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="705"/>
+        <location filename="../views/scanline_view.cpp" line="697"/>
         <source>from</source>
         <translation>from</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="706"/>
+        <location filename="../views/scanline_view.cpp" line="698"/>
         <source>to</source>
         <translation>to</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="707"/>
+        <location filename="../views/scanline_view.cpp" line="699"/>
         <source>x on its first row</source>
         <translation>x on its first row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="710"/>
+        <location filename="../views/scanline_view.cpp" line="702"/>
         <source>dx/dy</source>
         <translation>dx/dy</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="711"/>
+        <location filename="../views/scanline_view.cpp" line="703"/>
         <source>horizontal</source>
         <translation>horizontal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="713"/>
+        <location filename="../views/scanline_view.cpp" line="705"/>
         <source>rows</source>
         <translation>rows</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="715"/>
+        <location filename="../views/scanline_view.cpp" line="707"/>
         <source>none</source>
         <translation>none</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="718"/>
+        <location filename="../views/scanline_view.cpp" line="710"/>
         <source>side</source>
         <translation>side</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="722"/>
+        <location filename="../views/scanline_view.cpp" line="714"/>
         <source>Only rows %1 to %2 are on the screen: the walk starts and stops there.</source>
         <translation>Only rows %1 to %2 are on the screen: the walk starts and stops there.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="664"/>
+        <location filename="../views/scanline_view.cpp" line="656"/>
         <source>No row of this triangle is on the screen.</source>
         <translation>No row of this triangle is on the screen.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="678"/>
+        <location filename="../views/scanline_view.cpp" line="670"/>
         <source>Here the additions are seed 001&apos;s DDA, in double: an edge that lands a hair below a row in double leaves that row to the triangle above, where an exact walk would find the edge through the row&apos;s samples.</source>
         <translation>Here the additions are seed 001&apos;s DDA, in double: an edge that lands a hair below a row in double leaves that row to the triangle above, where an exact walk would find the edge through the row&apos;s samples.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="745"/>
+        <location filename="../views/scanline_view.cpp" line="737"/>
         <source>%1(%2) = %3, where the %4 edge crosses its first row</source>
         <translation>%1(%2) = %3, where the %4 edge crosses its first row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="751"/>
+        <location filename="../views/scanline_view.cpp" line="743"/>
         <source>%1(%2) = %3, where the %4 edge crosses the first row on the screen</source>
         <translation>%1(%2) = %3, where the %4 edge crosses the first row on the screen</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="757"/>
-        <location filename="../views/scanline_view.cpp" line="765"/>
+        <location filename="../views/scanline_view.cpp" line="752"/>
         <source>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</source>
         <translation>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="779"/>
+        <location filename="../views/scanline_view.cpp" line="767"/>
         <source>Scanline y = %1</source>
         <translation>Scanline y = %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="781"/>
+        <location filename="../views/scanline_view.cpp" line="769"/>
         <source>(sampled at y = %1)</source>
         <translation>(sampled at y = %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="793"/>
+        <location filename="../views/scanline_view.cpp" line="781"/>
         <source>Seed 001&apos;s DDA: x_left and x_right are sums in double, one addition of dx/dy a row, the rounding of each carried along (no snapping). Pixels x = ceil(x_left) = %1 while x &amp;lt; x_right: up to ceil(x_right) &amp;minus; 1 = %2 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Seed 001&apos;s DDA: x_left and x_right are sums in double, one addition of dx/dy a row, the rounding of each carried along (no snapping). Pixels x = ceil(x_left) = %1 while x &amp;lt; x_right: up to ceil(x_right) &amp;minus; 1 = %2 (a sample exactly on the right edge belongs to the next triangle).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="800"/>
+        <location filename="../views/scanline_view.cpp" line="788"/>
         <source>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="807"/>
+        <location filename="../views/scanline_view.cpp" line="795"/>
         <source>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</source>
         <translation>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="815"/>
+        <location filename="../views/scanline_view.cpp" line="803"/>
         <source>No pixel on this row</source>
         <translation>No pixel on this row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="816"/>
+        <location filename="../views/scanline_view.cpp" line="804"/>
         <source>the edges cross it between two samples.</source>
         <translation>the edges cross it between two samples.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="817"/>
+        <location filename="../views/scanline_view.cpp" line="805"/>
         <source>they are all off the screen.</source>
         <translation>they are all off the screen.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="820"/>
+        <location filename="../views/scanline_view.cpp" line="808"/>
         <source>Span [%1, %2): 1 pixel.</source>
         <translation>Span [%1, %2): 1 pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="821"/>
+        <location filename="../views/scanline_view.cpp" line="809"/>
         <source>Span [%1, %2): %3 pixels.</source>
         <translation>Span [%1, %2): %3 pixels.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="824"/>
+        <location filename="../views/scanline_view.cpp" line="812"/>
         <source>(cut to the screen&apos;s columns 0 to %1)</source>
         <translation>(cut to the screen&apos;s columns 0 to %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="827"/>
+        <location filename="../views/scanline_view.cpp" line="815"/>
         <source>The pixel at the cursor is x = %1.</source>
         <translation>The pixel at the cursor is x = %1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="844"/>
+        <location filename="../views/scanline_view.cpp" line="832"/>
         <source>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</source>
         <translation>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="849"/>
+        <location filename="../views/scanline_view.cpp" line="837"/>
         <source>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</source>
         <translation>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="851"/>
+        <location filename="../views/scanline_view.cpp" line="839"/>
         <source>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</source>
         <translation>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="856"/>
+        <location filename="../views/scanline_view.cpp" line="844"/>
         <source>depth</source>
         <translation>depth</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="856"/>
+        <location filename="../views/scanline_view.cpp" line="844"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="862"/>
+        <location filename="../views/scanline_view.cpp" line="850"/>
         <source>not computed (nothing is lit)</source>
         <translation>not computed (nothing is lit)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="863"/>
+        <location filename="../views/scanline_view.cpp" line="851"/>
         <source>zero</source>
         <translation>zero</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="880"/>
+        <location filename="../views/scanline_view.cpp" line="868"/>
         <source>Pixel (x, y) is sampled at the point (x, y) itself.</source>
         <translation>Pixel (x, y) is sampled at the point (x, y) itself.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="881"/>
+        <location filename="../views/scanline_view.cpp" line="869"/>
         <source>Pixel (x, y) is sampled at (x + %1, y + %1).</source>
         <translation>Pixel (x, y) is sampled at (x + %1, y + %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="884"/>
+        <location filename="../views/scanline_view.cpp" line="872"/>
         <source>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</source>
         <translation>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="887"/>
+        <location filename="../views/scanline_view.cpp" line="875"/>
         <source>, with the barycentrics weighted by 1/w (perspective-correct)</source>
         <translation>, with the barycentrics weighted by 1/w (perspective-correct)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="672"/>
+        <location filename="../views/scanline_view.cpp" line="664"/>
         <source>Edge walking: from one scanline to the next, each edge&apos;s x changes by its constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. The span between the two crossings is filled; the long edge bounds every row, the upper edge the rows above the middle vertex, the lower edge the rest.</source>
         <translation>Edge walking: from one scanline to the next, each edge&apos;s x changes by its constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. The span between the two crossings is filled; the long edge bounds every row, the upper edge the rows above the middle vertex, the lower edge the rest.</translation>
     </message>

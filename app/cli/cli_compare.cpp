@@ -8,6 +8,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <optional>
+
 #include "app/compare/compare_image.h"
 #include "app/documents/command_file.h"
 #include "pipeline/analysis/mistakes.h"
@@ -213,14 +215,22 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
     rl::Rgba8Image theirs;
     CompareImage::Format theirFormat;
     const QString imagePath = parser.value(image);
-    if (files.isEmpty()) {
-        // Their image first: without --size, ours is rendered at its size.
-        if (const QString problem = CompareImage::read(imagePath, theirs, &theirFormat);
-            !problem.isEmpty()) {
+    const auto readTheirs = [&] {
+        const QString problem = CompareImage::read(imagePath, theirs, &theirFormat);
+        if (!problem.isEmpty()) {
             err << problem << '\n';
             err.flush();
-            return ExitBadInput;
         }
+        return problem.isEmpty();
+    };
+    std::optional<rl::OurFrame> ours;
+    std::optional<rl::ivec2> croppedAt;  // where their screenshot held our frame
+    int theirWidth = 0, theirHeight = 0;  // before any crop
+    if (files.isEmpty()) {
+        // Their image first: without --size, ours is rendered at its size.
+        if (!readTheirs()) return ExitBadInput;
+        theirWidth = theirs.width;
+        theirHeight = theirs.height;
         rl::CourseSceneSettings settings;
         if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
         sceneOptions.lessonSettings(parser, sceneName, settings);
@@ -230,11 +240,14 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
             return code;
         if (!parser.isSet(sceneOptions.size) &&
             (theirs.width != settings.width || theirs.height != settings.height)) {
-            // A screenshot that holds ours at the scene's own size is cropped below; any other
+            // A screenshot that holds ours at the scene's own size is cropped to it; any other
             // size is the size they rendered at.
             auto atOwnSize = rl::renderOurFrame(scene);
             if (!atOwnSize) return inputError(err, atOwnSize.error());
-            if (!rl::findEmbedded(atOwnSize->image, theirs)) {
+            croppedAt = CompareImage::cropToFrame(atOwnSize->image, theirs);
+            if (croppedAt) {
+                ours = std::move(atOwnSize.value());
+            } else {
                 qint64 pixelLimit = 0;
                 if (int code = readMaxPixels(parser, sceneOptions.maxPixels, err, pixelLimit);
                     code != ExitOk)
@@ -259,43 +272,40 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
     }
     printDiagnostics(diagnostics, err);
     if (!files.isEmpty()) {
-        if (const QString problem = CompareImage::read(imagePath, theirs, &theirFormat);
-            !problem.isEmpty()) {
-            err << problem << '\n';
-            err.flush();
-            return ExitBadInput;
-        }
+        if (!readTheirs()) return ExitBadInput;
+        theirWidth = theirs.width;
+        theirHeight = theirs.height;
     }
 
-    auto ours = rl::renderOurFrame(scene);
-    if (!ours) return inputError(err, ours.error());
+    if (!ours) {
+        auto rendered = rl::renderOurFrame(scene);
+        if (!rendered) return inputError(err, rendered.error());
+        ours = std::move(rendered.value());
+    }
     printDiagnostics(ours->trace->diagnostics, err);
     const rl::Rgba8Image& ourImage = ours->image;
-    QString cropped;
-    if (theirs.width != ourImage.width || theirs.height != ourImage.height) {
-        // A screenshot with a window border or a cursor: the frame found inside it.
-        if (const auto at = rl::findEmbedded(ourImage, theirs)) {
-            cropped = lit("cropped to %1 at (%2, %3) from %4, the frame found inside your image")
-                          .arg(sizeText(ourImage.width, ourImage.height))
-                          .arg(at->x)
-                          .arg(at->y)
-                          .arg(sizeText(theirs.width, theirs.height));
-            theirs = CompareImage::cropped(theirs, at->x, at->y, ourImage.width, ourImage.height);
-        } else {
-            bool embedded = false;
-            err << CompareImage::sizeMismatch(imagePath, theirs, ourImage, embedded) << " ("
-                << (files.isEmpty() ? lit("no frame of ours found inside it at --size %1")
-                                          .arg(sizeText(ourImage.width, ourImage.height))
-                                    : lit("its png command sets the size"))
-                << ")\n";
-            err.flush();
-            return ExitBadInput;
-        }
+    if (!croppedAt) croppedAt = CompareImage::cropToFrame(ourImage, theirs);
+    if (const QString mismatch = CompareImage::sizeMismatch(imagePath, theirs, ourImage);
+        !mismatch.isEmpty()) {
+        err << mismatch << " ("
+            << (files.isEmpty() ? lit("no frame of ours found inside it at --size %1")
+                                      .arg(sizeText(ourImage.width, ourImage.height))
+                                : lit("its png command sets the size"))
+            << ")\n";
+        err.flush();
+        return ExitBadInput;
     }
+    QString cropped;
+    if (croppedAt)
+        cropped = lit("cropped to %1 at (%2, %3) from %4, the frame found inside your image")
+                      .arg(sizeText(ourImage.width, ourImage.height))
+                      .arg(croppedAt->x)
+                      .arg(croppedAt->y)
+                      .arg(sizeText(theirWidth, theirHeight));
     if (!theirFormat.alpha) CompareImage::takeAlpha(ourImage, theirs);
     const Provenance provenance{theirFormat.describe(), sizeFrom, cropped};
 
-    const auto comparison = rl::compareWithOurs(ours.value(), theirs, theirFormat.tolerance());
+    const auto comparison = rl::compareWithOurs(*ours, theirs, theirFormat.tolerance());
     if (!comparison) return inputError(err, comparison.error());
     QString sink;
     QTextStream quiet(&sink);  // JSON keeps stdout to itself

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <utility>
 
 #include "pipeline/analysis/mistakes.h"
 
@@ -174,17 +175,21 @@ QString CompareImage::Format::describe() const {
     return text;
 }
 
-rl::Rgba8Image CompareImage::cropped(const rl::Rgba8Image& image, int x, int y, int width,
-                                    int height) {
-    rl::Rgba8Image out;
-    out.width = width;
-    out.height = height;
-    out.rgba.resize(std::size_t(width) * height * 4);
-    for (int row = 0; row < height; ++row)
-        std::memcpy(out.rgba.data() + std::size_t(row) * width * 4,
-                    image.rgba.data() + (std::size_t(y + row) * image.width + x) * 4,
-                    std::size_t(width) * 4);
-    return out;
+std::optional<rl::ivec2> CompareImage::cropToFrame(const rl::Rgba8Image& ours,
+                                                   rl::Rgba8Image& theirs) {
+    if (theirs.width == ours.width && theirs.height == ours.height) return std::nullopt;
+    const auto at = rl::findEmbedded(ours, theirs);
+    if (!at) return std::nullopt;
+    rl::Rgba8Image frame;
+    frame.width = ours.width;
+    frame.height = ours.height;
+    frame.rgba.resize(std::size_t(frame.width) * frame.height * 4);
+    for (int row = 0; row < frame.height; ++row)
+        std::memcpy(frame.rgba.data() + std::size_t(row) * frame.width * 4,
+                    theirs.rgba.data() + (std::size_t(at->y + row) * theirs.width + at->x) * 4,
+                    std::size_t(frame.width) * 4);
+    theirs = std::move(frame);
+    return at;
 }
 
 void CompareImage::takeAlpha(const rl::Rgba8Image& ours, rl::Rgba8Image& theirs) {
@@ -193,22 +198,11 @@ void CompareImage::takeAlpha(const rl::Rgba8Image& ours, rl::Rgba8Image& theirs)
 }
 
 QString CompareImage::sizeMismatch(const QString& path, const rl::Rgba8Image& theirs,
-                                   const rl::Rgba8Image& ours, bool& embedded) {
-    embedded = false;
+                                   const rl::Rgba8Image& ours) {
     if (theirs.width == ours.width && theirs.height == ours.height) return {};
-    QString text =
-        path + QStringLiteral(": ") +
-        tr("the image is %1, ours is %2")
-            .arg(sizeText(theirs.width, theirs.height), sizeText(ours.width, ours.height));
-    if (const auto at = rl::findEmbedded(ours, theirs)) {
-        embedded = true;
-        text += tr("; it holds ours at (%1, %2), as a screenshot with a window border would: "
-                   "crop it to %3 from there")
-                    .arg(at->x)
-                    .arg(at->y)
-                    .arg(sizeText(ours.width, ours.height));
-    }
-    return text;
+    return path + QStringLiteral(": ") +
+           tr("the image is %1, ours is %2")
+               .arg(sizeText(theirs.width, theirs.height), sizeText(ours.width, ours.height));
 }
 
 }  // namespace rasterlab

@@ -7,6 +7,9 @@
 #include <QCoreApplication>
 #include <QString>
 
+#include <optional>
+
+#include "pipeline/core/math.h"
 #include "pipeline/render/output_image.h"
 
 namespace rasterlab {
@@ -27,16 +30,14 @@ public:
     // string, or "PATH: why not" (no such file, a folder, empty, not an image of those
     // formats, a PNG cut short, unreadable).
     static QString read(const QString& path, rl::Rgba8Image& image, Format* format = nullptr);
-    // The width x height pixels of `image` from (x, y), which lie inside it.
-    static rl::Rgba8Image cropped(const rl::Rgba8Image& image, int x, int y, int width,
-                                  int height);
     // Their image without alpha takes ours, so that only the colours are compared.
     static void takeAlpha(const rl::Rgba8Image& ours, rl::Rgba8Image& theirs);
-    // Empty when the sizes agree; else "PATH: the image is 640x480, ours is 800x600", and
-    // where it holds ours when it does (a screenshot with a window border), `embedded` then
-    // set.
+    // Empty when the sizes agree; else "PATH: the image is 640x480, ours is 800x600".
     static QString sizeMismatch(const QString& path, const rl::Rgba8Image& theirs,
-                                const rl::Rgba8Image& ours, bool& embedded);
+                                const rl::Rgba8Image& ours);
+    // A screenshot with a window border or a cursor: when their larger image holds ours, it is
+    // cropped to that frame, and where it was is returned.
+    static std::optional<rl::ivec2> cropToFrame(const rl::Rgba8Image& ours, rl::Rgba8Image& theirs);
 };
 
 }  // namespace rasterlab

@@ -257,28 +257,24 @@ QString ComparePanel::compare(const QString& path) {
     QApplication::setOverrideCursor(Qt::WaitCursor);
     auto ours = rl::renderOurFrame(frame->scene);
     QString problem;
-    bool embedded = false;
     QString provenance = tr("Their image: %1.").arg(format.describe());
     if (ours) {
         // A screenshot with a window border: the frame found inside it is compared.
-        if (const auto at = rl::findEmbedded(ours->image, theirs);
-            at && (theirs.width != ours->image.width || theirs.height != ours->image.height)) {
+        const int theirWidth = theirs.width, theirHeight = theirs.height;
+        if (const auto at = CompareImage::cropToFrame(ours->image, theirs))
             provenance += QLatin1Char(' ') +
                           tr("Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.")
                               .arg(ours->image.width)
                               .arg(ours->image.height)
                               .arg(at->x)
                               .arg(at->y)
-                              .arg(theirs.width)
-                              .arg(theirs.height);
-            theirs = CompareImage::cropped(theirs, at->x, at->y, ours->image.width,
-                                           ours->image.height);
-        }
+                              .arg(theirWidth)
+                              .arg(theirHeight);
         if (!format.alpha) CompareImage::takeAlpha(ours->image, theirs);
     }
     if (!ours) {
         problem = QString::fromStdString(ours.error().message);
-    } else if (problem = CompareImage::sizeMismatch(path, theirs, ours->image, embedded);
+    } else if (problem = CompareImage::sizeMismatch(path, theirs, ours->image);
                problem.isEmpty()) {
         auto comparison = rl::compareWithOurs(ours.value(), theirs, format.tolerance());
         if (!comparison) {
