@@ -358,10 +358,17 @@ void TestCompare::textOutputAndDifferenceImage() {
              QStringLiteral("comparing theirs.png with our render of goblet (800x600, the scene's "
                             "size)"));
     QCOMPARE(lines.value(1), QStringLiteral("  your image: a PNG image"));
-    QVERIFY2(lines.value(6).startsWith(QStringLiteral("diagnosis, most likely first:")),
-             qPrintable(run.out));
-    QCOMPARE(lines.value(7), QStringLiteral("  1. the ambient term multiplied by the object "
+    QVERIFY2(lines.value(6).startsWith(QStringLiteral("  total difference: ")), qPrintable(run.out));
+    QCOMPARE(lines.value(7),
+             QStringLiteral("diagnosis, each mistake applied before the next is ranked:"));
+    QCOMPARE(lines.value(8), QStringLiteral("  1. the ambient term multiplied by the object "
                                             "colour: Ia*ka*Od instead of Ia*ka"));
+    QVERIFY2(lines.value(9).startsWith(QStringLiteral("     removes 100.0% of the difference; ")),
+             qPrintable(run.out));
+    QVERIFY2(run.out.contains(QStringLiteral(
+                 "unexplained: 0.0% of the difference; pixels that still differ with every "
+                 "mistake above applied: 0\n")),
+             qPrintable(run.out));
     QVERIFY2(run.out.contains(QStringLiteral("(difference, 800x600)")), qPrintable(run.out));
     // The difference image: differing pixels bright (red channel 255), the others darkened.
     const QImage diff(dir.filePath(QStringLiteral("diff.png")));

@@ -2001,206 +2001,316 @@
     </message>
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="593"/>
+        <source>the light not taken to view coordinates: its world position used as Pl_view</source>
+        <translation>a luz não levada a coordenadas de vista: sua posição no mundo usada como Pl_vista</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="594"/>
+        <source>the light taken to view coordinates without subtracting C: [I] Pl instead of [I](Pl - C)</source>
+        <translation>a luz levada a coordenadas de vista sem subtrair C: [I] Pl em vez de [I](Pl - C)</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="595"/>
+        <source>V = P&apos; instead of -P&apos; (L = P&apos; - Pl gives the same image)</source>
+        <translation>V = P' em vez de -P' (L = P' - Pl dá a mesma imagem)</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="596"/>
+        <source>the ambient term Ia instead of Ia*ka</source>
+        <translation>o termo ambiente Ia em vez de Ia*ka</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="597"/>
+        <source>each Phong term truncated to a whole byte before the sum</source>
+        <translation>cada termo de Phong truncado para um byte inteiro antes da soma</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="598"/>
+        <source>V.N, N.L and R.V tested against %1 instead of 0</source>
+        <translation>V.N, N.L e R.V testados contra %1 em vez de 0</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="599"/>
+        <source>the depth test reversed: the farther fragment wins (&gt; against a buffer cleared to -infinity, or to 0)</source>
+        <translation>o teste de profundidade invertido: o fragmento mais distante vence (&gt; contra um buffer iniciado com -infinito, ou com 0)</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="600"/>
+        <source>every covered pixel&apos;s colour off by %1 (a constant offset)</source>
+        <translation>a cor de cada pixel coberto deslocada de %1 (um deslocamento constante)</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="601"/>
+        <source>every colour multiplied by %1 (a constant scale)</source>
+        <translation>cada cor multiplicada por %1 (uma escala constante)</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
+        <source>the scene rendered again with the light where that transform puts it gives their pixels</source>
+        <translation>a cena renderizada de novo com a luz onde essa transformação a coloca dá os pixels deles</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="603"/>
+        <source>the scene rendered again with the farther fragment winning gives their pixels</source>
+        <translation>a cena renderizada de novo com o fragmento mais distante vencendo dá os pixels deles</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
+        <source>our bytes moved by that constant give their pixels</source>
+        <translation>os nossos bytes deslocados dessa constante dão os pixels deles</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
+        <source>our colours multiplied by that constant give their pixels</source>
+        <translation>as nossas cores multiplicadas por essa constante dão os pixels deles</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
+        <source>seed 000: the light goes to view coordinates as the vertices do, Pl_view = [I](Pl - C)</source>
+        <translation>semente 000: a luz vai para coordenadas de vista como os vértices, Pl_vista = [I](Pl - C)</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
+        <source>seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis</source>
+        <translation>semente 000: Pl_vista = [I](Pl - C): subtraia C antes da mudança de base</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
+        <source>V points from the surface to the camera: V = -P&apos; in view coordinates, and L = Pl - P&apos;</source>
+        <translation>V aponta da superfície para a câmera: V = -P' em coordenadas de vista, e L = Pl - P'</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
+        <source>seed 000&apos;s ambient term is Ia*ka</source>
+        <translation>o termo ambiente da semente 000 é Ia*ka</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="610"/>
+        <source>add the terms as real numbers and make a byte once, at the end</source>
+        <translation>some os termos como números reais e faça um byte uma vez, no fim</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
+        <source>seed 000&apos;s special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</source>
+        <translation>os casos especiais da semente 000 testam contra 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
+        <source>the z-buffer starts at +infinity and a fragment is written when its z is smaller</source>
+        <translation>o z-buffer começa em +infinito e um fragmento é escrito quando seu z é menor</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
+        <source>look for a constant added to every colour, or bytes made with an offset</source>
+        <translation>procure uma constante somada a cada cor, ou bytes feitos com um deslocamento</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
+        <source>look for a factor on every colour: an intensity scaled, or another colour scale</source>
+        <translation>procure um fator em cada cor: uma intensidade escalada, ou outra escala de cor</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
         <source>%1; no pixel that matches now would change</source>
         <translation>%1; nenhum pixel que coincide agora mudaria</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="594"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
         <source>%2; %1 pixel that matches now would differ</source>
         <translation>%2; %1 pixel que coincide agora passaria a diferir</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="595"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
         <source>%2; %1 pixels that match now would differ</source>
         <translation>%2; %1 pixels que coincidem agora passariam a diferir</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="597"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
         <source>cannot read the texture %1: %2</source>
         <translation>não é possível ler a textura %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="599"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V está a %1 graus da reta de N: Gram-Schmidt guarda só isso de V, e a base é ortonormal só até %2, menos que a precisão de um float; escolha um V mais longe de N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
         <source>cannot open: %1</source>
         <translation>não é possível abrir: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>o arquivo tem %1 MiB, mais que os %2 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>o arquivo tem mais que os %1 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
         <source>not enough memory to read this file</source>
         <translation>não há memória suficiente para ler este arquivo</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="610"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>os arquivos da cena embutida não podem ser gravados: salve-a num arquivo seu (Salvar como)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
         <source>the object is not edited, so not saved</source>
         <translation>o objeto não é editado, então não é salvo</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
         <source>cannot write into the built-in resources</source>
         <translation>não é possível gravar nos recursos embutidos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>a câmera não foi salva, pois não carregaria de novo: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>não salvo: o texto gravado não é lido de volta com os mesmos valores</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
         <source>cannot write the file: %1</source>
         <translation>não é possível gravar o arquivo: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>só %1 de %2 bytes puderam ser gravados (o disco está cheio?)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>não é possível gravar o arquivo (ele fica como estava): %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[linhas, fragmentos], dois números inteiros</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[largura, altura], números inteiros de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
         <source>a list</source>
         <translation>uma lista</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
         <source>a list of %1 numbers</source>
         <translation>uma lista de %1 números</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="648"/>
         <source>a list of 1 to 8 lights</source>
         <translation>uma lista de 1 a 8 luzes</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
         <source>a list of dock names</source>
         <translation>uma lista de nomes de painéis</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
         <source>a number</source>
         <translation>um número</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="651"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>um número positivo ou &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="652"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>um número positivo ou &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="653"/>
         <source>a whole number from %1</source>
         <translation>um número inteiro a partir de %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="654"/>
         <source>an object</source>
         <translation>um objeto</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="633"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="655"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>esperava %1 para &quot;%2&quot;, encontrou %3</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="656"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>esperava um arquivo de aula: um objeto JSON com &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="658"/>
         <source>not a lesson file: %1</source>
         <translation>não é um arquivo de aula: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="659"/>
         <source>nothing</source>
         <translation>nada</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="661"/>
         <source>one of %1</source>
         <translation>um de %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="662"/>
         <source>text in quotes</source>
         <translation>um texto entre aspas</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="663"/>
         <source>the text &apos;%1&apos;</source>
         <translation>o texto &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="664"/>
         <source>true or false</source>
         <translation>true ou false</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="643"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>ignorou a chave desconhecida &quot;%1&quot; (as conhecidas aqui: %2)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="678"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="700"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="706"/>
         <source>%1: warning: %2</source>
         <translation>%1: aviso: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="707"/>
         <source>%1: note: %2</source>
         <translation>%1: nota: %2</translation>
     </message>
@@ -3067,161 +3177,176 @@
     </message>
     <message>
         <location filename="../app/window/compare_panel.cpp" line="399"/>
+        <source>Their image is unlit: one colour %1 wherever it covers. Only coverage is compared (our covered pixels in that colour), and only projection and scan conversion mistakes are tried.</source>
+        <translation>A imagem deles não é iluminada: uma só cor %1 onde ela cobre. Só a cobertura é comparada (os nossos pixels cobertos nessa cor), e só erros de projeção e de conversão por varredura são tentados.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="404"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Maior diferença por canal: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="400"/>
+        <location filename="../app/window/compare_panel.cpp" line="405"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Diferença média por canal, nos pixels que diferem: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="402"/>
-        <source>Pixels only one side covers: %1 only ours (our depth buffer), %2 only theirs (not the background).</source>
-        <translation>Pixels que só um lado cobre: %1 só nossos (o nosso buffer de profundidade), %2 só deles (não são o fundo).</translation>
+        <location filename="../app/window/compare_panel.cpp" line="407"/>
+        <source>Pixels covered: %1 by both, %2 only by ours (our depth buffer), %3 only by theirs (not the background).</source>
+        <translation>Pixels cobertos: %1 por ambas, %2 só pela nossa (o nosso buffer de profundidade), %3 só pela deles (não o fundo).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="408"/>
+        <location filename="../app/window/compare_panel.cpp" line="427"/>
+        <source>Diagnosis, each mistake applied before the next is ranked:</source>
+        <translation>Diagnóstico, cada erro aplicado antes de classificar o seguinte:</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="433"/>
+        <source>Removes %1% of the difference; makes %2 differing pixels match.</source>
+        <translation>Remove %1% da diferença; faz %2 pixels diferentes coincidirem.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="414"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>A cena mudou desde esta comparação: Comparar de novo compara a imagem deles com a cena mostrada agora.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="415"/>
+        <location filename="../app/window/compare_panel.cpp" line="421"/>
         <source>The images are the same.</source>
         <translation>As imagens são iguais.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="417"/>
+        <location filename="../app/window/compare_panel.cpp" line="423"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnóstico: nenhum dos erros que o RasterLab conhece explica estas diferenças.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="420"/>
-        <source>Diagnosis, most likely first:</source>
-        <translation>Diagnóstico, o mais provável primeiro:</translation>
-    </message>
-    <message>
-        <location filename="../app/window/compare_panel.cpp" line="426"/>
-        <source>Explains %1% of the differing pixels (%2 of %3).</source>
-        <translation>Explica %1% dos pixels que diferem (%2 de %3).</translation>
-    </message>
-    <message>
-        <location filename="../app/window/compare_panel.cpp" line="431"/>
+        <location filename="../app/window/compare_panel.cpp" line="438"/>
         <source>Evidence: %1</source>
         <translation>Evidência: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="432"/>
+        <location filename="../app/window/compare_panel.cpp" line="439"/>
         <source>Check: %1</source>
         <translation>Verifique: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="434"/>
+        <location filename="../app/window/compare_panel.cpp" line="441"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>Em (%1, %2): nossa %3, deles %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="450"/>
+        <location filename="../app/window/compare_panel.cpp" line="451"/>
+        <source>Unexplained: %1% of the difference; %2 pixels still differ with every mistake above applied.</source>
+        <translation>Sem explicação: %1% da diferença; %2 pixels ainda diferem com todos os erros acima aplicados.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="458"/>
+        <source>None of the known mistakes explains most of this difference.</source>
+        <translation>Nenhum dos erros conhecidos explica a maior parte desta diferença.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="470"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Escolha um pixel (aqui ou na imagem) para ver a cor deles ao lado da nossa.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="458"/>
+        <location filename="../app/window/compare_panel.cpp" line="478"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): deles %3, nossa %4.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="465"/>
+        <location filename="../app/window/compare_panel.cpp" line="485"/>
         <source>minus %1 in %2</source>
         <translation>menos %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="466"/>
+        <location filename="../app/window/compare_panel.cpp" line="486"/>
         <source>plus %1 in %2</source>
         <translation>mais %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="469"/>
+        <location filename="../app/window/compare_panel.cpp" line="489"/>
         <source>Their colour is ours.</source>
         <translation>A cor deles é a nossa.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="473"/>
+        <location filename="../app/window/compare_panel.cpp" line="493"/>
         <source>Their colour is ours %1.</source>
         <translation>A cor deles é a nossa %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="475"/>
+        <location filename="../app/window/compare_panel.cpp" line="495"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>A cena mudou desde a comparação: a iluminação mostrada agora não é a comparada.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="487"/>
+        <location filename="../app/window/compare_panel.cpp" line="507"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>Nenhum triângulo nosso cobre este pixel: é o fundo.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="491"/>
+        <location filename="../app/window/compare_panel.cpp" line="511"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>A iluminação deste pixel não é conhecida.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="494"/>
+        <location filename="../app/window/compare_panel.cpp" line="514"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>Os termos que teriam de mudar são calculados para o modelo de iluminação do curso em sombreamento flat ou Phong; este pixel é sombreado de outro modo (o inspetor de pixel mostra como).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="524"/>
+        <location filename="../app/window/compare_panel.cpp" line="544"/>
         <source>the ambient term Ia·ka</source>
         <translation>o termo ambiente Ia·ka</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="525"/>
+        <location filename="../app/window/compare_panel.cpp" line="545"/>
         <source>the diffuse term Il·Od·kd·(N·L)</source>
         <translation>o termo difuso Il·Od·kd·(N·L)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="526"/>
+        <location filename="../app/window/compare_panel.cpp" line="546"/>
         <source>the specular term Il·ks·(R·V)^n</source>
         <translation>o termo especular Il·ks·(R·V)^n</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="542"/>
+        <location filename="../app/window/compare_panel.cpp" line="562"/>
         <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
         <translation>• %1 é 0 no %2 aqui: mudá-lo sozinho não dá a cor deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="547"/>
+        <location filename="../app/window/compare_panel.cpp" line="567"/>
         <source>• %1 would have to be below 0 in %2: not this term alone.</source>
         <translation>• %1 teria de ser menor que 0 no %2: não é este termo sozinho.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="564"/>
+        <location filename="../app/window/compare_panel.cpp" line="584"/>
         <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
         <translation>• %1 teria de ser %2 em vez de %3, × %4 por canal</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="567"/>
+        <location filename="../app/window/compare_panel.cpp" line="587"/>
         <source>: the term left out</source>
         <translation>: o termo omitido</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="570"/>
+        <location filename="../app/window/compare_panel.cpp" line="590"/>
         <source>: that is the term times Od %1</source>
         <translation>: isto é, o termo vezes Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="573"/>
+        <location filename="../app/window/compare_panel.cpp" line="593"/>
         <source>: that is the term without Od %1</source>
         <translation>: isto é, o termo sem Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="579"/>
+        <location filename="../app/window/compare_panel.cpp" line="599"/>
         <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
         <translation>(%1: 255 nas duas imagens, limitado; qualquer valor pelo menos tão alto o dá.)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="582"/>
+        <location filename="../app/window/compare_panel.cpp" line="602"/>
         <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
         <translation>Nenhum termo mudado por um fator simples (omitido, vezes Od, sem Od) dá a cor deles: olhe vários termos, ou o que diz o diagnóstico.</translation>
     </message>

@@ -1,6 +1,7 @@
 // rasterlab-cli compare: a student's image against ours, of a course scene (render's options)
 // or of a command file's png, with a summary, a difference image and a diagnosis: the
-// mistakes (pipeline/analysis/mistakes.h) ranked by how many differing pixels each explains.
+// mistakes (pipeline/analysis/mistakes.h) composed greedily by the difference each removes,
+// and what stays unexplained.
 #include "app/cli/cli_common.h"
 
 #include <QFileInfo>
@@ -49,12 +50,20 @@ struct Provenance {
     QString cropped;   // empty, or "cropped to 800x600 at (10, 30) from 820x640 ..."
 };
 
+QString percent(double share) {
+    return QString::number(100.0 * share, 'f', 1) + QLatin1Char('%');
+}
+
 void printText(const rl::ImageComparison& c, const QString& image, const QString& label,
                const Provenance& p, QTextStream& out) {
     out << "comparing " << image << " with our render of " << label << " ("
         << sizeText(c.width, c.height) << ", " << p.sizeFrom << ")\n";
     out << "  your image: " << p.format << '\n';
     if (!p.cropped.isEmpty()) out << "  " << p.cropped << '\n';
+    if (c.unlit)
+        out << "  your image is unlit: one colour " << bytesText(c.unlitColour)
+            << " wherever it covers; only coverage is compared (our covered pixels in that "
+               "colour), and only projection and scan conversion mistakes are tried\n";
     out << "  " << c.compared << " pixels compared, " << c.differing << " differ ("
         << QString::number(100.0 * double(c.differing) / double(c.compared), 'f', 1) << "%)\n";
     if (c.differing == 0) {
@@ -63,24 +72,31 @@ void printText(const rl::ImageComparison& c, const QString& image, const QString
     }
     out << "  largest difference per channel: " << channels(c.largest) << '\n';
     out << "  mean difference per channel, over the differing pixels: " << channels(c.mean) << '\n';
-    out << "  pixels only one side covers: " << c.onlyOurs << " only ours (our depth buffer), "
-        << c.onlyTheirs << " only theirs (not the background)\n";
+    out << "  pixels covered: " << c.coveredByBoth << " by both, " << c.onlyOurs
+        << " only by ours (our depth buffer), " << c.onlyTheirs
+        << " only by theirs (not the background)\n";
+    out << "  total difference: " << c.difference
+        << " (the sum over pixels and channels of |ours - theirs|)\n";
     if (c.diagnosis.empty()) {
         out << "diagnosis: none of the mistakes RasterLab knows explains these differences\n";
-        return;
+    } else {
+        out << "diagnosis, each mistake applied before the next is ranked:\n";
+        int rank = 0;
+        for (const rl::Finding& f : c.diagnosis) {
+            out << "  " << ++rank << ". " << QString::fromStdString(f.title.english()) << '\n';
+            out << "     removes " << percent(f.share) << " of the difference; makes " << f.explained
+                << " differing pixels match\n";
+            out << "     evidence: " << QString::fromStdString(f.evidence.english()) << '\n';
+            out << "     check: " << QString::fromStdString(f.advice.english()) << '\n';
+            for (const rl::PixelExample& e : f.examples)
+                out << "     at (" << e.x << ", " << e.y << ") ours " << bytesText(e.ours)
+                    << ", theirs " << bytesText(e.theirs) << '\n';
+        }
     }
-    out << "diagnosis, most likely first:\n";
-    int rank = 0;
-    for (const rl::Finding& f : c.diagnosis) {
-        out << "  " << ++rank << ". " << QString::fromStdString(f.title.english()) << '\n';
-        out << "     explains " << QString::number(100.0 * f.share, 'f', 1) << "% of the differing "
-            << "pixels (" << f.explained << " of " << c.differing << ")\n";
-        out << "     evidence: " << QString::fromStdString(f.evidence.english()) << '\n';
-        out << "     check: " << QString::fromStdString(f.advice.english()) << '\n';
-        for (const rl::PixelExample& e : f.examples)
-            out << "     at (" << e.x << ", " << e.y << ") ours " << bytesText(e.ours)
-                << ", theirs " << bytesText(e.theirs) << '\n';
-    }
+    out << "unexplained: " << percent(c.unexplained) << " of the difference; "
+        << "pixels that still differ with every mistake above applied: " << c.unexplainedPixels << "\n";
+    if (c.unexplained > 0.5)
+        out << "  none of the known mistakes explains most of this difference\n";
 }
 
 QJsonObject toJson(const rl::ImageComparison& c, const QString& image, const QString& label,
@@ -101,6 +117,11 @@ QJsonObject toJson(const rl::ImageComparison& c, const QString& image, const QSt
     o[lit("meanDifference")] = QJsonArray{c.mean[0], c.mean[1], c.mean[2], c.mean[3]};
     o[lit("onlyOurs")] = qint64(c.onlyOurs);
     o[lit("onlyTheirs")] = qint64(c.onlyTheirs);
+    o[lit("coveredByBoth")] = qint64(c.coveredByBoth);
+    o[lit("totalDifference")] = qint64(c.difference);
+    if (c.unlit)
+        o[lit("unlit")] = QJsonObject{{lit("colour"), bytesJson(c.unlitColour)},
+                                      {lit("comparedAs"), lit("coverage")}};
     QJsonArray diagnosis;
     for (const rl::Finding& f : c.diagnosis) {
         QJsonObject d;
@@ -110,7 +131,12 @@ QJsonObject toJson(const rl::ImageComparison& c, const QString& image, const QSt
         d[lit("advice")] = QString::fromStdString(f.advice.english());
         d[lit("explained")] = qint64(f.explained);
         d[lit("share")] = f.share;
+        d[lit("removed")] = qint64(f.removed);
         d[lit("spoiled")] = qint64(f.spoiled);
+        if (f.mistake == rl::Mistake::Shifted)
+            d[lit("shift")] = QJsonArray{f.slip.shift.x, f.slip.shift.y};
+        if (f.mistake == rl::Mistake::ColourOffset || f.mistake == rl::Mistake::ColourScale)
+            d[lit("amount")] = f.slip.amount;
         QJsonArray examples;
         for (const rl::PixelExample& e : f.examples)
             examples.append(QJsonObject{{lit("x"), e.x},
@@ -121,6 +147,8 @@ QJsonObject toJson(const rl::ImageComparison& c, const QString& image, const QSt
         diagnosis.append(d);
     }
     o[lit("diagnosis")] = diagnosis;
+    o[lit("unexplained")] = QJsonObject{{lit("share"), c.unexplained},
+                                        {lit("pixels"), qint64(c.unexplainedPixels)}};
     return o;
 }
 
@@ -131,7 +159,8 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
     parser.setApplicationDescription(
         lit("Compare an image of your own rasterizer with RasterLab's render of the same scene "
             "(render's scene options, or a command file): a summary, a difference image, and "
-            "the likely mistakes, ranked by the differing pixels each explains."));
+            "the likely mistakes, each applied before the next is ranked by the difference it removes, "
+            "and what stays unexplained."));
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     const QCommandLineOption help({lit("h"), lit("help")}, lit("Show this help."));
     const SceneOptions sceneOptions;
@@ -310,7 +339,7 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
     QString sink;
     QTextStream quiet(&sink);  // JSON keeps stdout to itself
     if (json) {
-        if (parser.isSet(diffOutput) && !writePng(comparison->difference, parser.value(diffOutput),
+        if (parser.isSet(diffOutput) && !writePng(comparison->differenceImage, parser.value(diffOutput),
                                                   quiet, err, lit("difference")))
             return ExitBadInput;
         QJsonObject o = toJson(comparison.value(), imagePath, sceneLabel, provenance);
@@ -319,7 +348,7 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
         out << QJsonDocument(o).toJson(QJsonDocument::Indented);
     } else {
         printText(comparison.value(), imagePath, sceneLabel, provenance, out);
-        if (parser.isSet(diffOutput) && !writePng(comparison->difference, parser.value(diffOutput),
+        if (parser.isSet(diffOutput) && !writePng(comparison->differenceImage, parser.value(diffOutput),
                                                   out, err, lit("difference")))
             return ExitBadInput;
     }

@@ -326,7 +326,7 @@ void ComparePanel::refreshDifference() {
     if (!m_comparison) return;
     // The comparison's own difference image where a pixel differs by more than the threshold,
     // ours darkened as it darkens the others.
-    rl::Rgba8Image shown = m_comparison->difference;
+    rl::Rgba8Image shown = m_comparison->differenceImage;
     const int limit = threshold();
     for (int y = 0; y < shown.height; ++y) {
         for (int x = 0; x < shown.width; ++x) {
@@ -395,12 +395,18 @@ void ComparePanel::refreshTexts() {
                    .arg(c.differing)
                    .arg(100.0 * double(c.differing) / double(c.compared), 0, 'f', 1);
     summary << m_provenance;
+    if (c.unlit)
+        summary << tr("Their image is unlit: one colour %1 wherever it covers. Only coverage is "
+                      "compared (our covered pixels in that colour), and only projection and "
+                      "scan conversion mistakes are tried.")
+                       .arg(bytesText(c.unlitColour));
     if (c.differing > 0) {
         summary << tr("Largest difference per channel: %1.").arg(channels(c.largest));
         summary << tr("Mean difference per channel, over the differing pixels: %1.")
                        .arg(channels(c.mean));
-        summary << tr("Pixels only one side covers: %1 only ours (our depth buffer), %2 only "
-                      "theirs (not the background).")
+        summary << tr("Pixels covered: %1 by both, %2 only by ours (our depth buffer), %3 only "
+                      "by theirs (not the background).")
+                       .arg(c.coveredByBoth)
                        .arg(c.onlyOurs)
                        .arg(c.onlyTheirs);
     }
@@ -417,16 +423,17 @@ void ComparePanel::refreshTexts() {
         html = tr("Diagnosis: none of the mistakes RasterLab knows explains these differences.")
                    .toHtmlEscaped();
     } else {
-        html = QStringLiteral("<p><b>%1</b></p>").arg(tr("Diagnosis, most likely first:"));
+        html = QStringLiteral("<p><b>%1</b></p>")
+                   .arg(tr("Diagnosis, each mistake applied before the next is ranked:"));
         int rank = 0;
         for (const rl::Finding& f : c.diagnosis) {
             html += QStringLiteral("<p><b>%1. %2</b><br>%3<br>%4<br>%5")
                         .arg(++rank)
                         .arg(translated(f.title).toHtmlEscaped(),
-                             tr("Explains %1% of the differing pixels (%2 of %3).")
+                             tr("Removes %1% of the difference; makes %2 differing pixels "
+                                "match.")
                                  .arg(100.0 * f.share, 0, 'f', 1)
                                  .arg(f.explained)
-                                 .arg(c.differing)
                                  .toHtmlEscaped(),
                              tr("Evidence: %1").arg(translated(f.evidence)).toHtmlEscaped(),
                              tr("Check: %1").arg(translated(f.advice)).toHtmlEscaped());
@@ -438,6 +445,19 @@ void ComparePanel::refreshTexts() {
                                                      .toHtmlEscaped();
             html += QStringLiteral("</p>");
         }
+    }
+    if (c.differing > 0) {
+        html += QStringLiteral("<p><b>%1</b>")
+                    .arg(tr("Unexplained: %1% of the difference; %2 pixels still differ with "
+                            "every mistake above applied.")
+                             .arg(100.0 * c.unexplained, 0, 'f', 1)
+                             .arg(c.unexplainedPixels)
+                             .toHtmlEscaped());
+        if (c.unexplained > 0.5)
+            html += QStringLiteral("<br>") +
+                    tr("None of the known mistakes explains most of this difference.")
+                        .toHtmlEscaped();
+        html += QStringLiteral("</p>");
     }
     m_diagnosis->setText(html);
     showImages();

@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
+#include <set>
 
-#include "pipeline/analysis/painter.h"
+#include "pipeline/analysis/mistake_images.h"
 #include "pipeline/render/renderer.h"
-#include "pipeline/stages/phong.h"
-#include "pipeline/stages/probe.h"
-#include "pipeline/stages/shading.h"
 
 namespace rl {
 
@@ -38,6 +37,15 @@ constexpr std::array<const char*, kMistakeCount> kIds = {
     "depth-ties",
     "background",
     "alpha",
+    "light-in-world",
+    "light-without-c",
+    "view-vector-reversed",
+    "ambient-ia-only",
+    "terms-truncated",
+    "epsilon-special-cases",
+    "depth-reversed",
+    "colour-offset",
+    "colour-scale",
 };
 
 Bytes bytesAt(const Rgba8Image& image, int x, int y) {
@@ -57,204 +65,27 @@ int distance(const Bytes& a, const Bytes& b) {
     return d;
 }
 
-Result<Rgba8Image> renderImage(std::shared_ptr<const Scene> scene) {
-    auto trace = renderFrame(scene);
-    if (!trace) return trace.error();
-    return colourImage(*trace->shading, *trace->depth, scene->conventions);
+const char* modelName(Mistake mistake) {
+    return shadingModelName(mistake == Mistake::Gouraud ? ShadingModel::Gouraud
+                            : mistake == Mistake::Flat  ? ShadingModel::Flat
+                                                        : ShadingModel::Phong);
 }
 
-// The changed lighting formulas of the what-if shading.
-enum class Formula : std::uint8_t { AmbientTimesOd, NoFlip, SpecularRv, LightBehind, Unnormalised };
-
-// The colour of point p with interpolated normal n lit by the formula (the scene's own when
-// none): phong.h's functions, with the one step the mistake changes.
-vec3 lightWith(const FrameLighting& lighting, const Draw& draw, const vec3& od, const vec3& p,
-               const vec3& n, std::optional<Formula> formula) {
-    const Scene& scene = lighting.scene();
-    const std::vector<ViewLight>& lights = lighting.view().lights;
-    const std::size_t count = std::min(draw.lightCount, lights.size());
-    const bool flip = scene.conventions.flipNormalsTowardViewer;
-    if (!formula) return lighting.light(draw, od, p, n).colour();
-    if (draw.lighting == LightingModel::Lambert && *formula == Formula::NoFlip)
-        return hw2Lighting(od, draw.material.shininess, lights.data(), count, p, n, false).colour();
-    if (draw.lighting != LightingModel::CoursePhong) return lighting.light(draw, od, p, n).colour();
-    const Material& m = draw.material;
-    const vec3& ia = scene.ambientIntensity;
-    switch (*formula) {
-        case Formula::NoFlip:
-            return phong(m, od, ia, lights.data(), count, p, n, false, draw.specular).colour();
-        case Formula::AmbientTimesOd: {
-            PhongSample s = phong(m, od, ia, lights.data(), count, p, n, flip, draw.specular);
-            s.ambient = ia * m.ka * od;
-            return s.colour();
-        }
-        case Formula::SpecularRv:
-        case Formula::LightBehind: {
-            // The scene's sample plus the terms the missing check lets through.
-            const PhongSample s = phong(m, od, ia, lights.data(), count, p, n, flip, draw.specular);
-            if (s.noNormal) return s.colour();
-            vec3 extra(0.0f);
-            for (std::size_t i = 0; i < count; ++i) {
-                const vec3 l = towardLight(lights[i], p);
-                if (l == vec3(0.0f)) continue;
-                const float nDotL = glm::dot(s.n, l);
-                const bool behind = nDotL < 0.0f;
-                if (behind != (*formula == Formula::LightBehind)) continue;
-                const float factor =
-                    lights[i].plain() ? 1.0f : lightFactor(lights[i], p, l, nullptr).value;
-                const vec3 il = lights[i].intensity * factor;
-                // With the light behind: a negative diffuse term, as N.L is.
-                if (behind) extra += il * od * m.kd * nDotL;
-                if (m.ks == 0.0f || draw.specular != SpecularModel::Phong) continue;
-                const vec3 r = 2.0f * nDotL * s.n - l;
-                const float rDotV = glm::dot(r, s.v);
-                // Without the R.V check (C's pow: a negative base to a whole exponent keeps a
-                // sign, to any other it is NaN); with the light behind, R.V still checked.
-                if (behind ? rDotV < 0.0f : rDotV >= 0.0f) continue;
-                const float power = std::pow(rDotV, m.shininess);
-                if (std::isfinite(power)) extra += il * m.ks * power;
-            }
-            return s.colour() + extra;
-        }
-        case Formula::Unnormalised: {
-            // phong() with N as interpolated: its length below 1 scales N.L and R.
-            PhongSample s;
-            s.ambient = ia * m.ka;
-            s.emission = m.emission;
-            const float vLength = glm::length(p);
-            s.v = vLength > 0.0f ? -p * (1.0f / vLength) : vec3(0.0f);
-            if (!(glm::length(n) > 0.0f)) return s.colour();
-            s.n = flip && glm::dot(s.v, n) < 0.0f ? -n : n;
-            for (std::size_t i = 0; i < count; ++i)
-                addLight(lightTerms(m, od, lights[i], p, s.n, s.v, draw.specular), i == 0, s);
-            return s.colour();
-        }
-    }
-    return lighting.light(draw, od, p, n).colour();
-}
-
-// A frame shaded again, pixel by pixel, from its triangles and barycentrics: each draw by the
-// model `asked` gives it (the frame's own scene, or the scene asked for when the frame is the
-// painter's), lit by the formula.
-Rgba8Image reshade(const FrameTrace& frame, const Scene& asked, std::optional<Formula> formula) {
-    const Scene& scene = *frame.scene;
-    const FrameLighting lighting(scene, *frame.view, *frame.normals, *frame.projection);
-    const DepthTest& depth = *frame.depth;
-    const Conventions& conv = scene.conventions;
-    Rgba8Image out;
-    out.width = scene.width;
-    out.height = scene.height;
-    out.rgba.resize(static_cast<std::size_t>(out.width) * out.height * 4);
-    const Bytes background = backgroundBytes(conv);
-    const float third = 1.0f / 3.0f;
-    for (int y = 0; y < out.height; ++y) {
-        for (int x = 0; x < out.width; ++x) {
-            const std::uint32_t t = depth.triangle.at(x, y);
-            if (t == kNoTriangle) {
-                put(out, x, y, background);
-                continue;
-            }
-            const ScreenTriangle& tri = frame.projection->triangles[t];
-            const Draw& draw = scene.draws[tri.draw];
-            const vec2 b = depth.barycentricsKept ? depth.barycentric.at(x, y) : vec2(0.0f);
-            float beta = b.x, gamma = b.y;
-            lighting.attributeWeights(tri, beta, gamma);
-            const DrawVertices& dv = lighting.vertices(tri.draw);
-            vec3 colour(0.0f);
-            switch (asked.draws[tri.draw].shading) {
-                case ShadingModel::Phong: {
-                    const vec3 p =
-                        dv.pView.empty() ? vec3(0.0f) : interpolate(dv.pView, tri.v, beta, gamma);
-                    colour = lightWith(lighting, draw, lighting.colourAt(tri, beta, gamma), p,
-                                       lighting.normalAt(tri, beta, gamma), formula);
-                    break;
-                }
-                case ShadingModel::Flat:
-                case ShadingModel::Painter: {
-                    vec3 p(0.0f), n(0.0f);
-                    lighting.flatSample(tri, &p, &n);
-                    const ScreenTriangle whole{tri.draw, tri.source,
-                                               draw.mesh->triangles[tri.source]};
-                    colour = lightWith(lighting, draw, lighting.colourAt(whole, third, third), p, n,
-                                       formula);
-                    break;
-                }
-                case ShadingModel::Gouraud: {
-                    std::array<vec3, 3> c;
-                    for (int k = 0; k < 3; ++k) {
-                        const std::uint32_t v = tri.v[k];
-                        const ScreenTriangle at{tri.draw, 0, {v, v, v}};
-                        c[k] = lightWith(lighting, draw, lighting.colourAt(at, 0.0f, 0.0f),
-                                         dv.pView.empty() ? vec3(0.0f) : dv.pView[v],
-                                         dv.nView.empty() ? vec3(0.0f) : dv.nView[v], formula);
-                    }
-                    colour = c[0] + beta * (c[1] - c[0]) + gamma * (c[2] - c[0]);
-                    break;
-                }
-            }
-            put(out, x, y, colourBytes(colour, conv));
-        }
-    }
-    return out;
-}
-
-std::shared_ptr<const Scene> withModel(const Scene& scene, ShadingModel model) {
-    auto copy = std::make_shared<Scene>(scene);
-    for (Draw& draw : copy->draws) draw.shading = model;
-    return copy;
-}
-
-bool anyDraw(const Scene& scene, ShadingModel model) {
-    return std::any_of(scene.draws.begin(), scene.draws.end(),
-                       [model](const Draw& d) { return d.shading == model; });
-}
-
-bool anyLit(const Scene& scene, LightingModel model) {
-    return std::any_of(scene.draws.begin(), scene.draws.end(),
-                       [model](const Draw& d) { return d.lighting == model; });
-}
-
-// A channel as a C program that skips the clamp writes it: (unsigned char)(int) of the value
-// in 0..255, wrapping modulo 256.
-std::uint8_t wrappedByte(float value, const Conventions& conv) {
-    const float scaled = value * (255.0f / conv.colourScale);
-    if (!std::isfinite(scaled) || std::abs(scaled) > 1e9f) return 0;
-    const float rounded =
-        conv.rounding == ByteRounding::Nearest ? std::floor(scaled + 0.5f) : std::trunc(scaled);
-    return static_cast<std::uint8_t>(static_cast<long long>(rounded) & 0xFF);
-}
-
-// The scene with other rules or conventions, when the change makes a difference.
-template <typename Change>
-Result<std::optional<Rgba8Image>> renderChanged(const Scene& scene, Change change) {
-    auto copy = std::make_shared<Scene>(scene);
-    change(*copy);
-    auto image = renderImage(copy);
-    if (!image) return image.error();
-    return std::optional<Rgba8Image>(std::move(image.value()));
-}
-
-// The shading model a Gouraud, Flat or Phong mistake renders with.
-ShadingModel modelOf(Mistake mistake) {
-    return mistake == Mistake::Gouraud ? ShadingModel::Gouraud
-           : mistake == Mistake::Flat  ? ShadingModel::Flat
-                                       : ShadingModel::Phong;
-}
-
-// The one shading model every draw uses, if they agree.
-std::optional<ShadingModel> sceneModel(const Scene& scene) {
-    if (scene.draws.empty()) return std::nullopt;
-    const ShadingModel first = scene.draws.front().shading;
-    const bool same = std::all_of(scene.draws.begin(), scene.draws.end(),
-                                  [first](const Draw& d) { return d.shading == first; });
-    return same ? std::optional(first) : std::nullopt;
+// A number with three significant digits, as a message argument.
+std::string decimal(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", value);
+    return text;
 }
 
 Message bytesMessage(const Bytes& b) {
     return "(%1, %2, %3, %4)"_msg(int(b[0]), int(b[1]), int(b[2]), int(b[3]));
 }
 
-Message titleOf(const OurFrame& ours, Mistake mistake, ivec2 shift, const Bytes& value) {
+Message titleOf(const OurFrame& ours, const Slip& slip) {
+    const Mistake mistake = slip.mistake;
+    const ivec2 shift = slip.shift;
+    const Bytes& value = slip.value;
     const Scene& scene = *ours.trace->scene;
     const RasterRules& rules = scene.rules;
     const bool truncated = rules.snap == RasterRules::VertexSnap::Truncate;
@@ -273,7 +104,7 @@ Message titleOf(const OurFrame& ours, Mistake mistake, ivec2 shift, const Bytes&
         case Mistake::Gouraud:
         case Mistake::Flat:
         case Mistake::Phong: {
-            const char* model = shadingModelName(modelOf(mistake));
+            const char* model = modelName(mistake);
             const auto asked = sceneModel(scene);
             if (!asked) return "%1 shading where another model was asked"_msg(model);
             return "%1 shading where %2 was asked"_msg(model, shadingModelName(*asked));
@@ -324,6 +155,29 @@ Message titleOf(const OurFrame& ours, Mistake mistake, ivec2 shift, const Bytes&
                 bytesMessage(value), bytesMessage(backgroundBytes(scene.conventions)));
         case Mistake::Alpha:
             return "alpha %1 on covered pixels instead of 255"_msg(int(value[3]));
+        case Mistake::LightInWorld:
+            return "the light not taken to view coordinates: its world position used as "
+                   "Pl_view"_msg;
+        case Mistake::LightWithoutC:
+            return "the light taken to view coordinates without subtracting C: [I] Pl instead "
+                   "of [I](Pl - C)"_msg;
+        case Mistake::ViewVectorReversed:
+            return "V = P' instead of -P' (L = P' - Pl gives the same image)"_msg;
+        case Mistake::AmbientIaOnly:
+            return "the ambient term Ia instead of Ia*ka"_msg;
+        case Mistake::TermsTruncated:
+            return "each Phong term truncated to a whole byte before the sum"_msg;
+        case Mistake::EpsilonSpecialCases:
+            return "V.N, N.L and R.V tested against %1 instead of 0"_msg(
+                decimal(kSpecialCaseEpsilon));
+        case Mistake::DepthReversed:
+            return "the depth test reversed: the farther fragment wins (> against a buffer "
+                   "cleared to -infinity, or to 0)"_msg;
+        case Mistake::ColourOffset:
+            return "every covered pixel's colour off by %1 (a constant offset)"_msg(
+                static_cast<int>(std::lround(slip.amount)));
+        case Mistake::ColourScale:
+            return "every colour multiplied by %1 (a constant scale)"_msg(decimal(slip.amount));
     }
     return {};
 }
@@ -336,6 +190,10 @@ Message mechanismOf(Mistake mistake) {
         case Mistake::SpecularWhereRvNegative:
         case Mistake::LightBehindNotSkipped:
         case Mistake::NormalNotNormalised:
+        case Mistake::ViewVectorReversed:
+        case Mistake::AmbientIaOnly:
+        case Mistake::TermsTruncated:
+        case Mistake::EpsilonSpecialCases:
             return "our pixels lit again with that formula (the same triangles, barycentrics, "
                    "P', N, lights and material) give theirs"_msg;
         case Mistake::Gouraud:
@@ -360,6 +218,17 @@ Message mechanismOf(Mistake mistake) {
             return "their pixels where no triangle of ours is take that colour"_msg;
         case Mistake::Alpha:
             return "their pixels where a triangle of ours is take that alpha"_msg;
+        case Mistake::LightInWorld:
+        case Mistake::LightWithoutC:
+            return "the scene rendered again with the light where that transform puts it gives "
+                   "their pixels"_msg;
+        case Mistake::DepthReversed:
+            return "the scene rendered again with the farther fragment winning gives their "
+                   "pixels"_msg;
+        case Mistake::ColourOffset:
+            return "our bytes moved by that constant give their pixels"_msg;
+        case Mistake::ColourScale:
+            return "our colours multiplied by that constant give their pixels"_msg;
     }
     return {};
 }
@@ -406,6 +275,28 @@ Message hintOf(Mistake mistake) {
             return "the colour (and alpha) of the pixels no triangle covers"_msg;
         case Mistake::Alpha:
             return "the alpha written with each shaded pixel"_msg;
+        case Mistake::LightInWorld:
+            return "seed 000: the light goes to view coordinates as the vertices do, Pl_view = "
+                   "[I](Pl - C)"_msg;
+        case Mistake::LightWithoutC:
+            return "seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis"_msg;
+        case Mistake::ViewVectorReversed:
+            return "V points from the surface to the camera: V = -P' in view coordinates, and "
+                   "L = Pl - P'"_msg;
+        case Mistake::AmbientIaOnly:
+            return "seed 000's ambient term is Ia*ka"_msg;
+        case Mistake::TermsTruncated:
+            return "add the terms as real numbers and make a byte once, at the end"_msg;
+        case Mistake::EpsilonSpecialCases:
+            return "seed 000's special cases test against 0: V.N < 0, N.L < 0, R.V < 0"_msg;
+        case Mistake::DepthReversed:
+            return "the z-buffer starts at +infinity and a fragment is written when its z is "
+                   "smaller"_msg;
+        case Mistake::ColourOffset:
+            return "look for a constant added to every colour, or bytes made with an offset"_msg;
+        case Mistake::ColourScale:
+            return "look for a factor on every colour: an intensity scaled, or another colour "
+                   "scale"_msg;
     }
     return {};
 }
@@ -434,224 +325,253 @@ Result<OurFrame> renderOurFrame(std::shared_ptr<const Scene> scene) {
 
 namespace {
 
-// Our image mirrored, turned upside down or moved by `shift` (what leaves it, background).
-Rgba8Image movedImage(const Rgba8Image& image, Mistake mistake, ivec2 shift,
-                      const Bytes& background) {
-    const int w = image.width, h = image.height;
-    Rgba8Image out = image;
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            int sx = x, sy = y;
-            if (mistake == Mistake::MirroredLeftRight) sx = w - 1 - x;
-            if (mistake == Mistake::UpsideDown) sy = h - 1 - y;
-            if (mistake == Mistake::Shifted) sx = x - shift.x, sy = y - shift.y;
-            const bool inside = sx >= 0 && sx < w && sy >= 0 && sy < h;
-            put(out, x, y, inside ? bytesAt(image, sx, sy) : background);
-        }
-    }
-    return out;
-}
-
-// The scene drawn in the painter's order: flat colours as the painter paints them, other
-// models shaded at the painter's triangles.
-Result<std::optional<Rgba8Image>> painterOrderImage(const Scene& scene) {
-    using Optional = std::optional<Rgba8Image>;
-    const auto painter = painterSceneOf(scene);
-    if (std::all_of(scene.draws.begin(), scene.draws.end(),
-                    [](const Draw& d) { return d.shading == ShadingModel::Flat; })) {
-        auto rendered = renderImage(painter);
-        if (!rendered) return rendered.error();
-        return Optional(std::move(rendered.value()));
-    }
-    // The painter's triangles at each pixel, shaded by the model asked: the lecture's
-    // stages keep every barycentric and normal (a probe on no pixel records nothing).
-    RecordingProbe nowhere = RecordingProbe::forPixel(-1, -1);
-    auto trace = traceFrame(painter, {}, nowhere);
-    if (!trace) return trace.error();
-    return Optional(reshade(trace.value(), scene, std::nullopt));
-}
-
-}  // namespace
-
-Result<std::optional<Rgba8Image>> imageWithMistake(const OurFrame& ours, Mistake mistake,
-                                                   ivec2 shift, std::array<std::uint8_t, 4> value) {
-    const FrameTrace& frame = *ours.trace;
-    const Scene& scene = *frame.scene;
-    const Rgba8Image& image = ours.image;
-    const int w = image.width, h = image.height;
-    const Bytes background = backgroundBytes(scene.conventions);
-    using Optional = std::optional<Rgba8Image>;
-    const auto shaded = [&](Formula formula) -> Optional { return reshade(frame, scene, formula); };
-    switch (mistake) {
-        case Mistake::AmbientTimesOd:
-            if (!anyLit(scene, LightingModel::CoursePhong)) return Optional();
-            return shaded(Formula::AmbientTimesOd);
-        case Mistake::NormalNotFlipped:
-            if (!scene.conventions.flipNormalsTowardViewer) return Optional();
-            return shaded(Formula::NoFlip);
-        case Mistake::SpecularWhereRvNegative:
-            if (!anyLit(scene, LightingModel::CoursePhong)) return Optional();
-            return shaded(Formula::SpecularRv);
-        case Mistake::LightBehindNotSkipped:
-            if (!anyLit(scene, LightingModel::CoursePhong)) return Optional();
-            return shaded(Formula::LightBehind);
-        case Mistake::NormalNotNormalised:
-            if (!anyDraw(scene, ShadingModel::Phong)) return Optional();
-            return shaded(Formula::Unnormalised);
-        case Mistake::Gouraud:
-        case Mistake::Flat:
-        case Mistake::Phong: {
-            const ShadingModel model = modelOf(mistake);
-            if (!scene.lit() || paintersAlgorithm(scene) || sceneModel(scene) == model)
-                return Optional();
-            auto rendered = renderImage(withModel(scene, model));
-            if (!rendered) return rendered.error();
-            return Optional(std::move(rendered.value()));
-        }
-        case Mistake::MirroredLeftRight:
-        case Mistake::UpsideDown:
-        case Mistake::Shifted:
-            return Optional(movedImage(image, mistake, shift, background));
-        case Mistake::SampleOffset:
-            return renderChanged(scene, [](Scene& s) {
-                s.rules.sampleOffset = s.rules.sampleOffset == 0.0 ? 0.5 : 0.0;
-            });
-        case Mistake::VertexSnap:
-            return renderChanged(scene, [](Scene& s) {
-                s.rules.snap = s.rules.snap == RasterRules::VertexSnap::Truncate
-                                   ? RasterRules::VertexSnap::Nearest
-                                   : RasterRules::VertexSnap::Truncate;
-            });
-        case Mistake::FillRule:
-            return renderChanged(scene, [](Scene& s) {
-                s.rules.fill = s.rules.fill == RasterRules::FillRule::Inclusive
-                                   ? RasterRules::FillRule::TopLeft
-                                   : RasterRules::FillRule::Inclusive;
-            });
-        case Mistake::DepthTies:
-            if (paintersAlgorithm(scene)) return Optional();
-            return renderChanged(scene, [](Scene& s) {
-                s.conventions.depthWinsOnTie = !s.conventions.depthWinsOnTie;
-            });
-        case Mistake::ByteRounding: {
-            Conventions other = scene.conventions;
-            other.rounding = other.rounding == ByteRounding::Truncate ? ByteRounding::Nearest
-                                                                      : ByteRounding::Truncate;
-            return Optional(colourImage(*frame.shading, *frame.depth, other));
-        }
-        case Mistake::ColourWrap: {
-            if (frame.shading->clampedPixels == 0) return Optional();
-            Rgba8Image out = image;
-            for (int y = 0; y < h; ++y)
-                for (int x = 0; x < w; ++x)
-                    if (ours.covered(x, y)) {
-                        const vec3 c = frame.shading->colour.at(x, y);
-                        put(out, x, y,
-                            {wrappedByte(c.r, scene.conventions),
-                             wrappedByte(c.g, scene.conventions),
-                             wrappedByte(c.b, scene.conventions), 255});
-                    }
-            return Optional(std::move(out));
-        }
-        case Mistake::PainterOrder:
-            if (paintersAlgorithm(scene)) return Optional();
-            return painterOrderImage(scene);
-        case Mistake::Background: {
-            if (value == background) return Optional();
-            Rgba8Image out = image;
-            for (int y = 0; y < h; ++y)
-                for (int x = 0; x < w; ++x)
-                    if (!ours.covered(x, y)) put(out, x, y, value);
-            return Optional(std::move(out));
-        }
-        case Mistake::Alpha: {
-            if (value[3] == 255) return Optional();
-            Rgba8Image out = image;
-            for (int y = 0; y < h; ++y)
-                for (int x = 0; x < w; ++x)
-                    if (ours.covered(x, y))
-                        out.rgba[(static_cast<std::size_t>(y) * w + x) * 4 + 3] = value[3];
-            return Optional(std::move(out));
-        }
-    }
-    return Optional();
-}
-
-namespace {
-
-// How far a hypothesis's image takes ours toward theirs.
-Finding judge(const OurFrame& ours, const Rgba8Image& theirs, const Rgba8Image& candidate,
-              std::size_t differing, int tolerance) {
-    Finding f;
-    const int w = theirs.width, h = theirs.height;
-    const auto explains = [&](int x, int y, int before) {
-        const int after = distance(bytesAt(candidate, x, y), bytesAt(theirs, x, y));
-        return after < before && after <= std::max(1, tolerance);
-    };
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            const int before = distance(bytesAt(ours.image, x, y), bytesAt(theirs, x, y));
-            if (before <= tolerance) {
-                if (distance(bytesAt(candidate, x, y), bytesAt(theirs, x, y)) > tolerance)
-                    ++f.spoiled;
-            } else if (explains(x, y, before)) {
-                ++f.explained;
-            }
-        }
-    }
-    f.share = differing > 0 ? double(f.explained) / double(differing) : 0.0;
-    // Three examples spread over the pixels explained, in reading order.
-    const std::array<std::size_t, 3> wanted = {f.explained / 6, f.explained / 2,
-                                               f.explained * 5 / 6};
-    std::size_t k = 0;
-    for (int y = 0; y < h && f.explained > 0; ++y) {
-        for (int x = 0; x < w; ++x) {
-            const int before = distance(bytesAt(ours.image, x, y), bytesAt(theirs, x, y));
-            if (before <= tolerance || !explains(x, y, before)) continue;
-            if (std::find(wanted.begin(), wanted.end(), k) != wanted.end() &&
-                (f.examples.empty() || f.examples.back().x != x || f.examples.back().y != y))
-                f.examples.push_back({x, y, bytesAt(ours.image, x, y), bytesAt(theirs, x, y)});
-            ++k;
-        }
-    }
-    return f;
+// The sum over pixels and channels of |a - b|.
+std::uint64_t differenceOf(const Rgba8Image& a, const Rgba8Image& b) {
+    std::uint64_t sum = 0;
+    for (std::size_t i = 0; i < a.rgba.size(); ++i)
+        sum += static_cast<std::uint64_t>(std::abs(int(a.rgba[i]) - int(b.rgba[i])));
+    return sum;
 }
 
 // The colour most of their pixels take where `where` holds.
 template <typename Where>
-std::optional<Bytes> mostCommon(const Rgba8Image& theirs, Where where) {
+std::optional<Bytes> mostCommon(const Rgba8Image& theirs, Where where, std::size_t* count = nullptr,
+                                std::size_t* total = nullptr) {
     std::map<Bytes, std::size_t> counts;
+    std::size_t all = 0;
     for (int y = 0; y < theirs.height; ++y)
         for (int x = 0; x < theirs.width; ++x)
-            if (where(x, y)) ++counts[bytesAt(theirs, x, y)];
+            if (where(x, y)) ++counts[bytesAt(theirs, x, y)], ++all;
     if (counts.empty()) return std::nullopt;
-    return std::max_element(counts.begin(), counts.end(),
-                            [](const auto& a, const auto& b) { return a.second < b.second; })
-        ->first;
+    const auto best = std::max_element(
+        counts.begin(), counts.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+    if (count) *count = best->second;
+    if (total) *total = all;
+    return best->first;
 }
 
-}  // namespace
+// The mistakes that change only which pixels are covered: all an unlit image can show.
+bool changesCoverage(Mistake mistake) {
+    switch (mistake) {
+        case Mistake::MirroredLeftRight:
+        case Mistake::UpsideDown:
+        case Mistake::Shifted:
+        case Mistake::SampleOffset:
+        case Mistake::VertexSnap:
+        case Mistake::FillRule:
+            return true;
+        default:
+            return false;
+    }
+}
 
-Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& theirs,
-                                        int tolerance) {
-    const Scene& scene = *ours.trace->scene;
-    const Bytes background = backgroundBytes(scene.conventions);
-    ImageComparison out;
-    out.width = theirs.width;
-    out.height = theirs.height;
-    out.tolerance = std::max(0, tolerance);
-    out.compared = static_cast<std::size_t>(theirs.width) * theirs.height;
-    std::array<double, 4> sum{};
-    out.difference = ours.image;
+// A hypothesis's mistakes, in any order, with what each needs.
+std::string keyOf(std::vector<Slip> slips) {
+    std::sort(slips.begin(), slips.end(),
+              [](const Slip& a, const Slip& b) { return a.mistake < b.mistake; });
+    std::string key;
+    for (const Slip& s : slips) {
+        char text[96];
+        std::snprintf(text, sizeof text, "%s %d %d %d %d %d %d %g;", mistakeId(s.mistake), s.shift.x,
+                      s.shift.y, s.value[0], s.value[1], s.value[2], s.value[3], s.amount);
+        key += text;
+    }
+    return key;
+}
+
+// The search: hypotheses composed on the frames their render-changing mistakes make
+// (each frame rendered once), their images scored by the difference to theirs.
+class Search {
+public:
+    Search(const OurFrame& ours, const Rgba8Image& theirs, int tolerance)
+        : m_ours(ours), m_theirs(theirs), m_tolerance(tolerance) {}
+
+    // Compare coverage only: an image's covered pixels in `colour`, the rest `background`.
+    void coverageOnly(const Bytes& colour, const Bytes& background) {
+        m_flat = std::pair(colour, background);
+    }
+
+    Rgba8Image flattened(Rgba8Image image) const {
+        if (!m_flat) return image;
+        const Bytes ourBackground = backgroundBytes(m_ours.trace->scene->conventions);
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x)
+                put(image, x, y, bytesAt(image, x, y) == ourBackground ? m_flat->second : m_flat->first);
+        return image;
+    }
+
+    Result<std::optional<Rgba8Image>> image(const std::vector<Slip>& slips) {
+        std::string key;
+        std::vector<Slip> rendering;
+        for (const Slip& slip : slips)
+            if (changesTheRender(slip.mistake)) {
+                key += mistakeId(slip.mistake) + std::string(";");
+                rendering.push_back(slip);
+            }
+        auto found = m_frames.find(key);
+        if (found == m_frames.end()) {
+            auto frame = frameWithMistakes(m_ours, rendering);
+            if (!frame) return frame.error();
+            found = m_frames.emplace(key, std::move(frame.value())).first;
+        }
+        if (!found->second) return std::optional<Rgba8Image>();
+        auto image = imageOnFrame(m_ours, *found->second, slips);
+        if (!image) return image.error();
+        if (image.value()) *image.value() = flattened(std::move(*image.value()));
+        return image;
+    }
+
+    // The variants of a mistake worth trying against their image, `current` the image with
+    // the findings so far: each shift, the background and alpha they use, the constant
+    // offset or scale their bytes show.
+    std::vector<Slip> variants(Mistake mistake, const Rgba8Image& current) const {
+        Slip slip{mistake};
+        switch (mistake) {
+            case Mistake::Shifted: {
+                std::vector<Slip> out;
+                for (ivec2 s : {ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1), ivec2(1, 1),
+                                ivec2(-1, -1), ivec2(1, -1), ivec2(-1, 1)})
+                    out.push_back({mistake, s});
+                return out;
+            }
+            case Mistake::Background:
+            case Mistake::Alpha: {
+                const bool covered = mistake == Mistake::Alpha;
+                const auto common = mostCommon(
+                    m_theirs, [&](int x, int y) { return m_ours.covered(x, y) == covered; });
+                if (!common) return {};
+                slip.value = *common;
+                return {slip};
+            }
+            case Mistake::ColourOffset: {
+                // The most common non-zero difference of a covered channel, when at least half
+                // the channels that differ differ by it: a constant, not a mistake whose
+                // differences vary from pixel to pixel.
+                std::map<int, std::size_t> counts;
+                std::size_t differing = 0;
+                forCoveredChannels(current, [&](int ours, int theirs) {
+                    if (theirs != ours && ours > 0 && ours < 255) ++counts[theirs - ours], ++differing;
+                });
+                if (counts.empty()) return {};
+                const auto mode = std::max_element(
+                    counts.begin(), counts.end(), [](auto& a, auto& b) { return a.second < b.second; });
+                if (mode->second * 2 < differing) return {};
+                slip.amount = mode->first;
+                return {slip};
+            }
+            case Mistake::ColourScale: {
+                // Least squares over the channels neither side clamps, theirs = s ours, on
+                // the values the bytes stand for (a truncated byte b for b + 0.5); then the
+                // estimate and its neighbours a thousandth apart, for the difference to decide.
+                const bool truncated =
+                    m_ours.trace->scene->conventions.rounding == ByteRounding::Truncate;
+                const double half = truncated ? 0.5 : 0.0;
+                double oursTheirs = 0.0, oursSquared = 0.0;
+                forCoveredChannels(current, [&](int ours, int theirs) {
+                    if (ours < 8 || ours > 247 || theirs == 0 || theirs == 255) return;
+                    oursTheirs += (ours + half) * (theirs + half);
+                    oursSquared += (ours + half) * (ours + half);
+                });
+                if (oursSquared == 0.0) return {};
+                const double estimate = std::round(oursTheirs / oursSquared * 1000.0) / 1000.0;
+                if (std::abs(estimate - 1.0) < 0.004) return {};
+                // A scale when at least half those channels are within 2 of it.
+                std::size_t near = 0, all = 0;
+                forCoveredChannels(current, [&](int ours, int theirs) {
+                    if (ours < 8 || ours > 247 || theirs == 0 || theirs == 255) return;
+                    ++all;
+                    near += std::abs(theirs - ours * estimate) <= 2.0 ? 1 : 0;
+                });
+                if (near * 2 < all) return {};
+                std::vector<Slip> out;
+                for (double step : {0.0, -0.001, 0.001}) {
+                    slip.amount = estimate + step;
+                    out.push_back(slip);
+                }
+                return out;
+            }
+            default:
+                return {slip};
+        }
+    }
+
+private:
+    template <typename Visit>
+    void forCoveredChannels(const Rgba8Image& current, Visit visit) const {
+        for (int y = 0; y < current.height; ++y)
+            for (int x = 0; x < current.width; ++x)
+                if (m_ours.covered(x, y))
+                    for (int c = 0; c < 3; ++c)
+                        visit(int(current.pixel(x, y)[c]), int(m_theirs.pixel(x, y)[c]));
+    }
+
+    const OurFrame& m_ours;
+    const Rgba8Image& m_theirs;
+    int m_tolerance = 0;
+    std::optional<std::pair<Bytes, Bytes>> m_flat;
+    std::map<std::string, std::optional<MistakeFrame>> m_frames;
+};
+
+// What a finding changes, from the image before it to the image with it: the differing
+// pixels it makes match, those it spoils, and three examples spread over the first.
+void countPixels(const Rgba8Image& before, const Rgba8Image& after, const Rgba8Image& theirs,
+                 int tolerance, Finding& f) {
+    std::vector<ivec2> made;
     for (int y = 0; y < theirs.height; ++y) {
         for (int x = 0; x < theirs.width; ++x) {
-            const Bytes a = bytesAt(ours.image, x, y), b = bytesAt(theirs, x, y);
-            const bool weCover = ours.covered(x, y), theyCover = distance(b, background) > out.tolerance;
+            const Bytes t = bytesAt(theirs, x, y);
+            const bool matched = distance(bytesAt(before, x, y), t) <= tolerance;
+            const bool matches = distance(bytesAt(after, x, y), t) <= tolerance;
+            if (!matched && matches) made.push_back({x, y});
+            if (matched && !matches) ++f.spoiled;
+        }
+    }
+    f.explained = made.size();
+    for (std::size_t k : {made.size() / 6, made.size() / 2, made.size() * 5 / 6}) {
+        if (k >= made.size()) continue;
+        const ivec2 p = made[k];
+        if (!f.examples.empty() && f.examples.back().x == p.x && f.examples.back().y == p.y)
+            continue;
+        f.examples.push_back({p.x, p.y, bytesAt(before, p.x, p.y), bytesAt(theirs, p.x, p.y)});
+    }
+}
+
+// Their image unlit: one colour (99% of the pixels at least) wherever it is not their
+// background, while ours has several. Their background is what they show most where we
+// cover nothing.
+std::optional<std::pair<Bytes, Bytes>> unlitColours(const OurFrame& ours, const Rgba8Image& theirs,
+                                                    int tolerance) {
+    auto background = mostCommon(theirs, [&](int x, int y) { return !ours.covered(x, y); });
+    if (!background) return std::nullopt;
+    std::size_t count = 0, total = 0;
+    const auto colour = mostCommon(
+        theirs, [&](int x, int y) { return distance(bytesAt(theirs, x, y), *background) > tolerance; },
+        &count, &total);
+    if (!colour || count * 100 < total * 99) return std::nullopt;
+    std::size_t ourCount = 0, ourTotal = 0;
+    mostCommon(ours.image, [&](int x, int y) { return ours.covered(x, y); }, &ourCount, &ourTotal);
+    if (ourCount * 100 >= ourTotal * 99) return std::nullopt;
+    return std::pair(*colour, *background);
+}
+
+// The summary of their image against ours (or our coverage): the pixels that differ, by how
+// much, and the difference image.
+void summarise(const OurFrame& ours, const Rgba8Image& oursShown, const Rgba8Image& theirs,
+               const Bytes& theirBackground, ImageComparison& out) {
+    std::array<double, 4> sum{};
+    out.differenceImage = ours.image;
+    for (int y = 0; y < theirs.height; ++y) {
+        for (int x = 0; x < theirs.width; ++x) {
+            const Bytes a = bytesAt(oursShown, x, y), b = bytesAt(theirs, x, y);
+            const bool weCover = ours.covered(x, y),
+                       theyCover = distance(b, theirBackground) > out.tolerance;
             out.onlyOurs += weCover && !theyCover ? 1 : 0;
             out.onlyTheirs += !weCover && theyCover ? 1 : 0;
+            out.coveredByBoth += weCover && theyCover ? 1 : 0;
             const int d = distance(a, b);
-            Bytes shown = {std::uint8_t(a[0] / 3), std::uint8_t(a[1] / 3), std::uint8_t(a[2] / 3),
-                           255};
+            const Bytes dim = bytesAt(ours.image, x, y);
+            Bytes shown = {std::uint8_t(dim[0] / 3), std::uint8_t(dim[1] / 3),
+                           std::uint8_t(dim[2] / 3), 255};
             if (d > out.tolerance) {
                 ++out.differing;
                 for (int c = 0; c < 4; ++c) {
@@ -664,60 +584,145 @@ Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& 
                         : !weCover && theyCover ? Bytes{0, 255, 255, 255}
                                                 : Bytes{255, std::uint8_t(255 - t), 0, 255};
             }
-            put(out.difference, x, y, shown);
+            put(out.differenceImage, x, y, shown);
         }
     }
     for (int c = 0; c < 4; ++c)
         out.mean[c] = out.differing > 0 ? sum[c] / double(out.differing) : 0.0;
+    out.difference = differenceOf(oursShown, theirs);
+}
+
+}  // namespace
+
+Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& theirs,
+                                        int tolerance) {
+    ImageComparison out;
+    out.width = theirs.width;
+    out.height = theirs.height;
+    out.tolerance = std::max(0, tolerance);
+    out.compared = static_cast<std::size_t>(theirs.width) * theirs.height;
+    Search search(ours, theirs, out.tolerance);
+    Bytes theirBackground = backgroundBytes(ours.trace->scene->conventions);
+    if (const auto unlit = unlitColours(ours, theirs, out.tolerance)) {
+        out.unlit = true;
+        out.unlitColour = unlit->first;
+        theirBackground = unlit->second;
+        search.coverageOnly(unlit->first, unlit->second);
+    }
+    Rgba8Image current = search.flattened(ours.image);
+    summarise(ours, current, theirs, theirBackground, out);
+    out.unexplainedPixels = out.differing;
+    out.unexplained = out.differing > 0 ? 1.0 : 0.0;
     if (out.differing == 0) return out;
 
-    for (std::size_t i = 0; i < kMistakeCount; ++i) {
-        const Mistake mistake = static_cast<Mistake>(i);
-        ivec2 shift(1, 0);
-        Bytes value{};
-        std::optional<Finding> best;
-        std::vector<ivec2> shifts = {shift};
-        if (mistake == Mistake::Shifted)
-            shifts = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {-1, -1}, {1, -1}, {-1, 1}};
-        if (mistake == Mistake::Background) {
-            const auto common =
-                mostCommon(theirs, [&](int x, int y) { return !ours.covered(x, y); });
-            if (!common) continue;
-            value = *common;
-        }
-        if (mistake == Mistake::Alpha) {
-            const auto common =
-                mostCommon(theirs, [&](int x, int y) { return ours.covered(x, y); });
-            if (!common) continue;
-            value = *common;
-        }
-        for (const ivec2& s : shifts) {
-            auto candidate = imageWithMistake(ours, mistake, s, value);
-            if (!candidate) return candidate.error();
-            if (!candidate.value()) continue;
-            Finding f = judge(ours, theirs, *candidate.value(), out.differing, out.tolerance);
-            if (!best || f.explained > best->explained) {
-                f.title = titleOf(ours, mistake, s, value);
-                best = std::move(f);
+    // Greedy, as matching pursuit is, but keeping the kBeamWidth best hypotheses of each
+    // round rather than one (a beam search): a mistake that imitates another (V reversed for
+    // the far faces drawn) must not hide the pair that really made their image. A hypothesis
+    // grows by a mistake only when that removes at least kLeastShare of the difference; the
+    // best is the one with the least difference, each mistake counted as kLeastShare more.
+    struct Hypothesis {
+        std::vector<Slip> slips;
+        Rgba8Image image;
+        std::uint64_t difference = 0;
+    };
+    const double least = kLeastShare * double(out.difference);
+    const auto cost = [&](const Hypothesis& h) {
+        return double(h.difference) + least * double(h.slips.size());
+    };
+    std::vector<Hypothesis> beam{{{}, current, out.difference}};
+    Hypothesis chosen = beam.front();
+    for (std::size_t round = 0; round < kMostFindings && !beam.empty(); ++round) {
+        std::vector<Hypothesis> next;  // the best few, least difference first
+        std::set<std::string> seen;
+        for (const Hypothesis& parent : beam) {
+            for (std::size_t i = 0; i < kMistakeCount; ++i) {
+                const Mistake mistake = static_cast<Mistake>(i);
+                if (out.unlit && !changesCoverage(mistake)) continue;
+                if (std::any_of(parent.slips.begin(), parent.slips.end(),
+                                [&](const Slip& s) { return s.mistake == mistake; }))
+                    continue;
+                for (const Slip& slip : search.variants(mistake, parent.image)) {
+                    std::vector<Slip> trial = parent.slips;
+                    trial.push_back(slip);
+                    if (!seen.insert(keyOf(trial)).second) continue;
+                    auto candidate = search.image(trial);
+                    if (!candidate) return candidate.error();
+                    if (!candidate.value()) continue;
+                    const std::uint64_t d = differenceOf(*candidate.value(), theirs);
+                    if (d >= parent.difference || double(parent.difference - d) < least) continue;
+                    if (next.size() == kBeamWidth && d >= next.back().difference) continue;
+                    Hypothesis h{std::move(trial), std::move(*candidate.value()), d};
+                    next.insert(std::upper_bound(next.begin(), next.end(), h,
+                                                 [](const Hypothesis& a, const Hypothesis& b) {
+                                                     return a.difference < b.difference;
+                                                 }),
+                                std::move(h));
+                    if (next.size() > kBeamWidth) next.pop_back();
+                }
             }
         }
-        if (!best || best->explained <= best->spoiled || best->share < kLeastShare) continue;
-        best->mistake = mistake;
-        best->evidence =
-            best->spoiled == 0
-                ? "%1; no pixel that matches now would change"_msg(mechanismOf(mistake))
-                : counted(static_cast<long long>(best->spoiled),
-                          "%2; %1 pixel that matches now would differ"_msg,
-                          "%2; %1 pixels that match now would differ"_msg, mechanismOf(mistake));
-        best->advice = hintOf(mistake);
-        out.diagnosis.push_back(std::move(*best));
+        if (!next.empty() && cost(next.front()) < cost(chosen)) chosen = next.front();
+        beam = std::move(next);
     }
-    // A mistake that spoils pixels that match now is less likely than one that spoils none.
-    const auto net = [](const Finding& f) {
-        return static_cast<long long>(f.explained) - static_cast<long long>(f.spoiled);
-    };
-    std::stable_sort(out.diagnosis.begin(), out.diagnosis.end(),
-                     [&](const Finding& a, const Finding& b) { return net(a) > net(b); });
+    std::vector<Slip> applied = std::move(chosen.slips);
+    current = std::move(chosen.image);
+    std::uint64_t remaining = chosen.difference;
+    // An offset or scale was measured before the mistakes found after it: measured again with
+    // all the others applied.
+    for (Slip& slip : applied) {
+        if (slip.mistake != Mistake::ColourOffset && slip.mistake != Mistake::ColourScale) continue;
+        std::vector<Slip> others;
+        for (const Slip& s : applied)
+            if (s.mistake != slip.mistake) others.push_back(s);
+        auto without = search.image(others);
+        if (!without) return without.error();
+        if (!without.value()) continue;
+        for (const Slip& again : search.variants(slip.mistake, *without.value())) {
+            const Slip kept = slip;
+            slip = again;
+            auto image = search.image(applied);
+            if (!image) return image.error();
+            if (image.value() && differenceOf(*image.value(), theirs) < remaining) {
+                remaining = differenceOf(*image.value(), theirs);
+                current = std::move(*image.value());
+            } else {
+                slip = kept;
+            }
+        }
+    }
+    // Each finding's share, given those above it.
+    Rgba8Image before = search.flattened(ours.image);
+    std::uint64_t left = out.difference;
+    for (std::size_t k = 0; k < applied.size(); ++k) {
+        const std::vector<Slip> upTo(applied.begin(), applied.begin() + std::ptrdiff_t(k) + 1);
+        auto image = search.image(upTo);
+        if (!image) return image.error();
+        Rgba8Image after = image.value() ? std::move(*image.value()) : before;
+        const std::uint64_t d = differenceOf(after, theirs);
+        Finding f;
+        f.mistake = applied[k].mistake;
+        f.slip = applied[k];
+        f.removed = left > d ? left - d : 0;
+        f.share = double(f.removed) / double(out.difference);
+        countPixels(before, after, theirs, out.tolerance, f);
+        f.title = titleOf(ours, f.slip);
+        f.evidence = f.spoiled == 0
+                         ? "%1; no pixel that matches now would change"_msg(mechanismOf(f.mistake))
+                         : counted(static_cast<long long>(f.spoiled),
+                                   "%2; %1 pixel that matches now would differ"_msg,
+                                   "%2; %1 pixels that match now would differ"_msg,
+                                   mechanismOf(f.mistake));
+        f.advice = hintOf(f.mistake);
+        out.diagnosis.push_back(std::move(f));
+        before = std::move(after);
+        left = d;
+    }
+    out.unexplained = double(remaining) / double(out.difference);
+    out.unexplainedPixels = 0;
+    for (int y = 0; y < theirs.height; ++y)
+        for (int x = 0; x < theirs.width; ++x)
+            out.unexplainedPixels +=
+                distance(bytesAt(current, x, y), bytesAt(theirs, x, y)) > out.tolerance ? 1 : 0;
     return out;
 }
 

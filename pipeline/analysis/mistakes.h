@@ -1,12 +1,15 @@
 // A student's image against ours, and the mistakes that would explain the difference
 // (`rasterlab-cli compare`). Each mistake is a hypothesis: our image transformed (mirrored,
 // shifted, its bytes made another way), the scene rendered again with other rules (fill
-// rule, sample offset, shading model, depth ties ...), or our frame shaded again with the
-// lighting formula changed ("what-if" shading, from the frame's triangles, barycentrics,
-// interpolated P' and N, lights and material, with phong.h's own functions). A hypothesis
-// explains a differing pixel when its image comes nearer to theirs there (to within one
-// unit); its share is the fraction of the differing pixels it explains. The lecture's stages
-// know nothing of these mistakes.
+// rule, sample offset, shading model, depth ties, the light moved where a transform mistake
+// puts it ...), or our frame shaded again with the lighting formula changed ("what-if"
+// shading, from the frame's triangles, barycentrics, interpolated P' and N, lights and
+// material, with phong.h's own functions). Mistakes compose: the image of several at once is
+// rendered with all of them. The diagnosis is greedy, as matching pursuit is: the mistake that
+// removes most of the difference (the sum over pixels and channels of |ours - theirs|) is
+// applied first, the rest ranked again on what remains (a few hypotheses kept at each step,
+// so that one mistake imitating another does not hide the right pair), and what no mistake
+// removes is said as unexplained. The lecture's stages know nothing of these mistakes.
 #pragma once
 
 #include <array>
@@ -48,9 +51,22 @@ enum class Mistake : std::uint8_t {
     DepthTies,     // <= against < in the depth test
     Background,    // another colour (or alpha) where no triangle is
     Alpha,         // another alpha where a triangle is
+    // The transform stages and the rest of seed 000's lighting.
+    LightInWorld,           // the light's world position used as its view position
+    LightWithoutC,          // the light taken to view coordinates without - C
+    ViewVectorReversed,     // V = P' instead of -P' (or L = P' - Pl: the same image)
+    AmbientIaOnly,          // ambient Ia instead of Ia ka
+    TermsTruncated,         // each Phong term truncated to a whole byte before the sum
+    EpsilonSpecialCases,    // V.N, N.L and R.V tested against kSpecialCaseEpsilon, not 0
+    DepthReversed,          // the farther fragment wins the depth test
+    ColourOffset,           // every covered byte off by a constant (Slip::amount)
+    ColourScale,            // every colour multiplied by a constant (Slip::amount)
 };
 
-inline constexpr std::size_t kMistakeCount = 20;
+inline constexpr std::size_t kMistakeCount = 29;
+
+// The small number a student tests the special cases against (EpsilonSpecialCases).
+inline constexpr float kSpecialCaseEpsilon = 1e-3f;
 
 const char* mistakeId(Mistake mistake);  // "ambient-times-od", "mirrored-left-right" ...
 std::optional<Mistake> mistakeFromId(std::string_view id);
@@ -64,12 +80,25 @@ struct OurFrame {
 };
 Result<OurFrame> renderOurFrame(std::shared_ptr<const Scene> scene);
 
-// Our image as it would be with the mistake; none when the mistake cannot happen in this
-// scene (no Phong draw to shade Gouraud, no colour above the scale to wrap ...). Shifted moves
-// the image by shift; Background and Alpha take the colour or alpha from `value`.
+// One mistake with what it needs: Shifted its shift, Background and Alpha the colour or
+// alpha of `value`, ColourOffset (bytes) and ColourScale their amount.
+struct Slip {
+    Mistake mistake{};
+    ivec2 shift = ivec2(1, 0);
+    std::array<std::uint8_t, 4> value{};
+    double amount = 0.0;
+};
+
+// Our image as it would be with all these mistakes at once; none when one of them cannot
+// happen in this scene (no Phong draw to shade Gouraud, no colour above the scale to wrap
+// ...) or two cannot go together (Gouraud and Flat).
+Result<std::optional<Rgba8Image>> imageWithMistakes(const OurFrame& ours,
+                                                    const std::vector<Slip>& slips);
+// The same for one mistake.
 Result<std::optional<Rgba8Image>> imageWithMistake(const OurFrame& ours, Mistake mistake,
                                                    ivec2 shift = ivec2(1, 0),
-                                                   std::array<std::uint8_t, 4> value = {});
+                                                   std::array<std::uint8_t, 4> value = {},
+                                                   double amount = 0.0);
 
 struct PixelExample {
     int x = 0;
@@ -79,19 +108,28 @@ struct PixelExample {
 
 struct Finding {
     Mistake mistake{};
+    Slip slip;  // the mistake with its shift, colour or amount
     // Messages (pipeline/core/message.h), so that the window shows them translated.
     Message title;              // "the ambient term multiplied by the object colour: ..."
     Message evidence;           // how the hypothesis made their pixels, and what it would spoil
     Message advice;             // what to look at in one's code
-    std::size_t explained = 0;  // differing pixels it makes match
-    double share = 0.0;         // explained / differing
-    std::size_t spoiled = 0;    // pixels that match now and would not with the mistake
+    // With the findings above it applied: the differing pixels it makes match, the pixels
+    // that matched and would not, and the difference it removes (of the sum over pixels and
+    // channels of |ours - theirs|), as a share of the whole difference.
+    std::size_t explained = 0;
+    std::size_t spoiled = 0;
+    std::uint64_t removed = 0;
+    double share = 0.0;
     std::vector<PixelExample> examples;
 };
 
-// Below this share a match is chance: a highlight's pixel or two that another rule happens to
-// give (2 of the 76,508 pixels the goblet's ambient mistake changes match sampling at centres).
-inline constexpr double kLeastShare = 0.001;
+// A mistake that removes less than this share of the difference is not reported: chance, or
+// a rounding that another mistake's bytes happen to share.
+inline constexpr double kLeastShare = 0.005;
+// The diagnosis composes at most this many mistakes, and keeps this many hypotheses at each
+// step of its search.
+inline constexpr std::size_t kMostFindings = 6;
+inline constexpr std::size_t kBeamWidth = 3;
 
 struct ImageComparison {
     int width = 0;
@@ -103,12 +141,23 @@ struct ImageComparison {
     std::array<double, 4> mean{};  // mean difference per channel over the differing pixels
     std::size_t onlyOurs = 0;      // covered in our depth buffer, their pixel the background
     std::size_t onlyTheirs = 0;    // not covered by us, their pixel not the background
-    // Ranked by the pixels explained less those spoiled; a mistake that spoils as many as it
-    // explains, or explains less than kLeastShare of the differing pixels, is left out.
+    std::uint64_t difference = 0;  // the sum over pixels and channels of |ours - theirs|
+    // The mistakes in the order the greedy search applied them, each removing what it removes
+    // given those above it.
     std::vector<Finding> diagnosis;
+    // What stays with every finding applied: the share of the difference, and the pixels that
+    // still differ.
+    double unexplained = 0.0;
+    std::size_t unexplainedPixels = 0;
+    // Their image unlit: one colour wherever it is not their background. Then only coverage
+    // is compared (our covered pixels in their colour), with the projection and scan
+    // conversion mistakes alone.
+    bool unlit = false;
+    std::array<std::uint8_t, 4> unlitColour{};
+    std::size_t coveredByBoth = 0;
     // Our image darkened, differing pixels from yellow (a small difference) to red (large),
     // magenta where only we cover a pixel, cyan where only they do.
-    Rgba8Image difference;
+    Rgba8Image differenceImage;
 };
 
 // Compares their image (our size) with our frame and ranks the mistakes. A lossy image (JPEG)

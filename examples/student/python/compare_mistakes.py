@@ -6,8 +6,9 @@
         --camera C.cfg --lighting L.txt --object O.byu [--size 800x600] \\
         [--outdir DIR] [--only --flip-y ...]
 
-Prints one line a case: the switches, the differing pixels and the
-mistakes compare lists (name, share of the differing pixels).  Runs one
+Prints one line a case: the switches, the differing pixels, the
+mistakes compare lists (name, share of the difference it removes, in the
+order compare applied them) and the share left unexplained.  Runs one
 render at a time, to keep the machine free.
 """
 
@@ -44,8 +45,10 @@ def run_case(args, switches, index):
     found = ", ".join(f"{d['mistake']} {100 * d['share']:.0f}%"
                       for d in report.get("diagnosis", [])) or "-"
     largest = max(report["largestDifference"][:3])
+    unexplained = 100 * report["unexplained"]["share"]
+    unlit = "unlit, coverage: " if "unlit" in report else ""
     return name, (f"{report['differing']} differ (largest {largest}): "
-                  f"{found}")
+                  f"{unlit}{found}; unexplained {unexplained:.0f}%")
 
 
 def main():
