@@ -2001,316 +2001,361 @@
     </message>
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="593"/>
+        <source>the camera&apos;s N not normalised before V - (V.N)N, nor after</source>
+        <translation>the camera's N not normalised before V - (V.N)N, nor after</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="594"/>
+        <source>the camera&apos;s U = V x N instead of N x V (x runs the other way)</source>
+        <translation>the camera's U = V x N instead of N x V (x runs the other way)</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="595"/>
+        <source>the scene rendered again in view coordinates made with that basis gives their pixels</source>
+        <translation>the scene rendered again in view coordinates made with that basis gives their pixels</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="596"/>
+        <source>seed 000&apos;s Gram-Schmidt: normalise N first, then V - (V.N)N is V&apos;s part across N</source>
+        <translation>seed 000's Gram-Schmidt: normalise N first, then V - (V.N)N is V's part across N</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="597"/>
+        <source>seed 000: U = N x V, so that U, V, N is right-handed</source>
+        <translation>seed 000: U = N x V, so that U, V, N is right-handed</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="598"/>
+        <source>the vertex normals left at the length of their sums (not normalised)</source>
+        <translation>the vertex normals left at the length of their sums (not normalised)</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="599"/>
+        <source>the triangle normals summed at their length (area-weighted) instead of normalised first</source>
+        <translation>the triangle normals summed at their length (area-weighted) instead of normalised first</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="600"/>
+        <source>seed 000: each vertex normal is the normalised sum of its triangles&apos; normals</source>
+        <translation>seed 000: each vertex normal is the normalised sum of its triangles' normals</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="601"/>
+        <source>normalise each triangle&apos;s normal before adding it to its vertices</source>
+        <translation>normalise each triangle's normal before adding it to its vertices</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
         <source>the light not taken to view coordinates: its world position used as Pl_view</source>
         <translation>the light not taken to view coordinates: its world position used as Pl_view</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="594"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="603"/>
         <source>the light taken to view coordinates without subtracting C: [I] Pl instead of [I](Pl - C)</source>
         <translation>the light taken to view coordinates without subtracting C: [I] Pl instead of [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="595"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
         <source>V = P&apos; instead of -P&apos; (L = P&apos; - Pl gives the same image)</source>
-        <translation>V = P' instead of -P' (L = P' - Pl gives the same image)</translation>
+        <translation>V = P&apos; instead of -P&apos; (L = P&apos; - Pl gives the same image)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="596"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
         <source>the ambient term Ia instead of Ia*ka</source>
         <translation>the ambient term Ia instead of Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="597"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
         <source>each Phong term truncated to a whole byte before the sum</source>
         <translation>each Phong term truncated to a whole byte before the sum</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="598"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
         <source>V.N, N.L and R.V tested against %1 instead of 0</source>
         <translation>V.N, N.L and R.V tested against %1 instead of 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="599"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
         <source>the depth test reversed: the farther fragment wins (&gt; against a buffer cleared to -infinity, or to 0)</source>
         <translation>the depth test reversed: the farther fragment wins (&gt; against a buffer cleared to -infinity, or to 0)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="600"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
         <source>every covered pixel&apos;s colour off by %1 (a constant offset)</source>
-        <translation>every covered pixel's colour off by %1 (a constant offset)</translation>
+        <translation>every covered pixel&apos;s colour off by %1 (a constant offset)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="601"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="610"/>
         <source>every colour multiplied by %1 (a constant scale)</source>
         <translation>every colour multiplied by %1 (a constant scale)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
         <source>the scene rendered again with the light where that transform puts it gives their pixels</source>
         <translation>the scene rendered again with the light where that transform puts it gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="603"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
         <source>the scene rendered again with the farther fragment winning gives their pixels</source>
         <translation>the scene rendered again with the farther fragment winning gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
         <source>our bytes moved by that constant give their pixels</source>
         <translation>our bytes moved by that constant give their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
         <source>our colours multiplied by that constant give their pixels</source>
         <translation>our colours multiplied by that constant give their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
         <source>seed 000: the light goes to view coordinates as the vertices do, Pl_view = [I](Pl - C)</source>
         <translation>seed 000: the light goes to view coordinates as the vertices do, Pl_view = [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
         <source>seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis</source>
         <translation>seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
         <source>V points from the surface to the camera: V = -P&apos; in view coordinates, and L = Pl - P&apos;</source>
-        <translation>V points from the surface to the camera: V = -P' in view coordinates, and L = Pl - P'</translation>
+        <translation>V points from the surface to the camera: V = -P&apos; in view coordinates, and L = Pl - P&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
         <source>seed 000&apos;s ambient term is Ia*ka</source>
-        <translation>seed 000's ambient term is Ia*ka</translation>
+        <translation>seed 000&apos;s ambient term is Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="610"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
         <source>add the terms as real numbers and make a byte once, at the end</source>
         <translation>add the terms as real numbers and make a byte once, at the end</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
         <source>seed 000&apos;s special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</source>
-        <translation>seed 000's special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</translation>
+        <translation>seed 000&apos;s special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
         <source>the z-buffer starts at +infinity and a fragment is written when its z is smaller</source>
         <translation>the z-buffer starts at +infinity and a fragment is written when its z is smaller</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
         <source>look for a constant added to every colour, or bytes made with an offset</source>
         <translation>look for a constant added to every colour, or bytes made with an offset</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
         <source>look for a factor on every colour: an intensity scaled, or another colour scale</source>
         <translation>look for a factor on every colour: an intensity scaled, or another colour scale</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
         <source>%1; no pixel that matches now would change</source>
         <translation>%1; no pixel that matches now would change</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
         <source>%2; %1 pixel that matches now would differ</source>
         <translation>%2; %1 pixel that matches now would differ</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
         <source>%2; %1 pixels that match now would differ</source>
         <translation>%2; %1 pixels that match now would differ</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
         <source>cannot read the texture %1: %2</source>
         <translation>cannot read the texture %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
         <source>cannot open: %1</source>
         <translation>cannot open: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>the file has %1 MiB, more than the %2 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>the file has more than the %1 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
         <source>not enough memory to read this file</source>
         <translation>not enough memory to read this file</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
         <source>the object is not edited, so not saved</source>
         <translation>the object is not edited, so not saved</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
         <source>cannot write into the built-in resources</source>
         <translation>cannot write into the built-in resources</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>the camera was not saved, as it would not load again: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>not saved: the text written does not read back as the same values</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
         <source>cannot write the file: %1</source>
         <translation>cannot write the file: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>only %1 of %2 bytes could be written (is the disk full?)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="651"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>cannot write the file (it is left as it was): %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="653"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[rows, fragments], two whole numbers</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="654"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[width, height], whole numbers from %1 to %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="655"/>
         <source>a list</source>
         <translation>a list</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="656"/>
         <source>a list of %1 numbers</source>
         <translation>a list of %1 numbers</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="648"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="657"/>
         <source>a list of 1 to 8 lights</source>
         <translation>a list of 1 to 8 lights</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="658"/>
         <source>a list of dock names</source>
         <translation>a list of dock names</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="659"/>
         <source>a number</source>
         <translation>a number</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="651"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>a positive number or &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="652"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="661"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>a positive number or &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="653"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="662"/>
         <source>a whole number from %1</source>
         <translation>a whole number from %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="654"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="663"/>
         <source>an object</source>
         <translation>an object</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="655"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="664"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>expected %1 for &quot;%2&quot;, found %3</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="656"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="658"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="667"/>
         <source>not a lesson file: %1</source>
         <translation>not a lesson file: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="659"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="668"/>
         <source>nothing</source>
         <translation>nothing</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="669"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="661"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="670"/>
         <source>one of %1</source>
         <translation>one of %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="662"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
         <source>text in quotes</source>
         <translation>text in quotes</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="663"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="672"/>
         <source>the text &apos;%1&apos;</source>
         <translation>the text &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="664"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="673"/>
         <source>true or false</source>
         <translation>true or false</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="674"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>unknown key &quot;%1&quot; ignored (known here: %2)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="700"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="709"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="706"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="715"/>
         <source>%1: warning: %2</source>
         <translation>%1: warning: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="707"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="716"/>
         <source>%1: note: %2</source>
         <translation>%1: note: %2</translation>
     </message>

@@ -95,7 +95,7 @@ void printText(const rl::ImageComparison& c, const QString& image, const QString
     }
     out << "unexplained: " << percent(c.unexplained) << " of the difference; "
         << "pixels that still differ with every mistake above applied: " << c.unexplainedPixels << "\n";
-    if (c.unexplained > 0.5)
+    if (c.mostlyUnexplained())
         out << "  none of the known mistakes explains most of this difference\n";
 }
 
@@ -148,7 +148,8 @@ QJsonObject toJson(const rl::ImageComparison& c, const QString& image, const QSt
     }
     o[lit("diagnosis")] = diagnosis;
     o[lit("unexplained")] = QJsonObject{{lit("share"), c.unexplained},
-                                        {lit("pixels"), qint64(c.unexplainedPixels)}};
+                                        {lit("pixels"), qint64(c.unexplainedPixels)},
+                                        {lit("most"), c.mostlyUnexplained()}};
     return o;
 }
 

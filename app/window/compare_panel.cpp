@@ -453,7 +453,7 @@ void ComparePanel::refreshTexts() {
                              .arg(100.0 * c.unexplained, 0, 'f', 1)
                              .arg(c.unexplainedPixels)
                              .toHtmlEscaped());
-        if (c.unexplained > 0.5)
+        if (c.mostlyUnexplained())
             html += QStringLiteral("<br>") +
                     tr("None of the known mistakes explains most of this difference.")
                         .toHtmlEscaped();

@@ -59,11 +59,42 @@ struct Formulas {
     bool vReversed = false;       // V = P' / |P'|
     bool truncated = false;       // each term truncated to a whole byte
     bool epsilon = false;         // the special cases against kSpecialCaseEpsilon
+    // Vertex normals made another way (per draw, per vertex of the mesh); empty: the frame's.
+    std::vector<std::vector<vec3>> vertexNormals;
     bool any() const {
         return ambientTimesOd || ambientIaOnly || noFlip || specularRv || lightBehind ||
-               unnormalised || vReversed || truncated || epsilon;
+               unnormalised || vReversed || truncated || epsilon || !vertexNormals.empty();
     }
 };
+
+// Each draw's vertex normals as a student's normals stage may make them: the triangle
+// normals (P2 - P1) x (P3 - P1) summed at their length (area-weighted) or normalised, and
+// the sums left at their length or normalised. Draws whose file gives normals keep none.
+std::vector<std::vector<vec3>> studentVertexNormals(const Scene& scene, const ViewTransform& view,
+                                                    bool areaWeighted, bool leftUnnormalised) {
+    std::vector<std::vector<vec3>> out(scene.draws.size());
+    for (std::size_t d = 0; d < scene.draws.size(); ++d) {
+        const Mesh* mesh = scene.draws[d].mesh.get();
+        if (!mesh || !mesh->normals.empty()) continue;
+        const std::vector<dvec4>& p = view.pView[d];
+        std::vector<dvec3> sum(p.size(), dvec3(0.0));
+        for (const auto& tri : mesh->triangles) {
+            const dvec3 a = dvec3(p[tri[0]]) / p[tri[0]].w, b = dvec3(p[tri[1]]) / p[tri[1]].w,
+                        c = dvec3(p[tri[2]]) / p[tri[2]].w;
+            dvec3 n = glm::cross(b - a, c - a);
+            const double length = glm::length(n);
+            if (!(length > 0.0)) continue;
+            if (!areaWeighted) n /= length;
+            for (std::uint32_t v : tri) sum[v] += n;
+        }
+        out[d].resize(p.size());
+        for (std::size_t v = 0; v < p.size(); ++v) {
+            const double length = glm::length(sum[v]);
+            out[d][v] = vec3(leftUnnormalised || !(length > 0.0) ? sum[v] : sum[v] / length);
+        }
+    }
+    return out;
+}
 
 // The colour of point p with interpolated normal n lit with the formulas changed: phong.h's
 // own steps (orientNormal, lightTerms), with what each change alters. No change: the scene's
@@ -139,13 +170,23 @@ Image<vec3> reshade(const FrameTrace& frame, const Scene& asked, const Formulas&
             float beta = b.x, gamma = b.y;
             lighting.attributeWeights(tri, beta, gamma);
             const DrawVertices& dv = lighting.vertices(tri.draw);
+            // The student's vertex normals, where the triangle's vertices are the mesh's own
+            // (not made by clipping).
+            const std::vector<vec3>* own =
+                formulas.vertexNormals.empty() ? nullptr : &formulas.vertexNormals[tri.draw];
+            if (own && (own->empty() || draw.flatNormals ||
+                        std::any_of(tri.v.begin(), tri.v.end(),
+                                    [&](std::uint32_t v) { return v >= own->size(); })))
+                own = nullptr;
             vec3& colour = out.at(x, y);
             switch (asked.draws[tri.draw].shading) {
                 case ShadingModel::Phong: {
                     const vec3 p =
                         dv.pView.empty() ? vec3(0.0f) : interpolate(dv.pView, tri.v, beta, gamma);
-                    colour = lightWith(lighting, draw, lighting.colourAt(tri, beta, gamma), p,
-                                       lighting.normalAt(tri, beta, gamma), formulas);
+                    const vec3 n = own ? interpolate(*own, tri.v, beta, gamma)
+                                       : lighting.normalAt(tri, beta, gamma);
+                    colour = lightWith(lighting, draw, lighting.colourAt(tri, beta, gamma), p, n,
+                                       formulas);
                     break;
                 }
                 case ShadingModel::Flat:
@@ -165,7 +206,10 @@ Image<vec3> reshade(const FrameTrace& frame, const Scene& asked, const Formulas&
                         const ScreenTriangle at{tri.draw, 0, {v, v, v}};
                         c[k] = lightWith(lighting, draw, lighting.colourAt(at, 0.0f, 0.0f),
                                          dv.pView.empty() ? vec3(0.0f) : dv.pView[v],
-                                         dv.nView.empty() ? vec3(0.0f) : dv.nView[v], formulas);
+                                         own              ? (*own)[v]
+                                         : dv.nView.empty() ? vec3(0.0f)
+                                                            : dv.nView[v],
+                                         formulas);
                     }
                     colour = c[0] + beta * (c[1] - c[0]) + gamma * (c[2] - c[0]);
                     break;
@@ -233,6 +277,36 @@ bool moveLights(Scene& scene, const CameraBasis& basis, Mistake mistake) {
     return moved;
 }
 
+// The world moved so that our camera sees, in view coordinates, what a student's basis I'
+// sees: W(P) = C + I^T I' (P - C), I the lecture's orthonormal basis. Their basis keeps N at
+// its given length (BasisNNotNormalised) or takes U = V x N (BasisUReversed). False when
+// theirs is ours.
+bool moveToTheirBasis(Scene& scene, const CameraBasis& basis, Mistake mistake) {
+    dvec3 u = basis.u, v = basis.v, n = basis.n;
+    if (mistake == Mistake::BasisNNotNormalised) {
+        if (std::abs(basis.nLength - 1.0) < 1e-9) return false;
+        n = basis.nGiven;
+        const dvec3 w = basis.vGiven - glm::dot(basis.vGiven, n) * n;
+        if (!(glm::length(w) > 0.0)) return false;
+        v = glm::normalize(w);
+        u = glm::cross(n, v);
+    } else {
+        u = glm::cross(basis.v, basis.n);
+    }
+    // Columns u, v, n of I^T (ours), rows of I' (theirs).
+    const dmat3 a = dmat3(basis.u, basis.v, basis.n) * glm::transpose(dmat3(u, v, n));
+    dmat4 w(a);
+    w[3] = dvec4(basis.c - a * basis.c, 1.0);
+    for (Draw& draw : scene.draws) draw.worldFromModel = w * draw.worldFromModel;
+    for (Light& light : scene.lights) {
+        light.pWorld = w * light.pWorld;
+        light.spotDirection = a * light.spotDirection;
+    }
+    // A mirror turns a closed surface's winding: the hidden back faces are no longer known.
+    scene.cullHiddenBackFaces = false;
+    return true;
+}
+
 // Our image mirrored, turned upside down or moved by `shift` (what leaves it, `fill`).
 Rgba8Image movedImage(const Rgba8Image& image, Mistake mistake, ivec2 shift, const Bytes& fill) {
     const int w = image.width, h = image.height;
@@ -274,6 +348,8 @@ bool changesTheRender(Mistake mistake) {
         case Mistake::DepthReversed:
         case Mistake::LightInWorld:
         case Mistake::LightWithoutC:
+        case Mistake::BasisNNotNormalised:
+        case Mistake::BasisUReversed:
             return true;
         default:
             return false;
@@ -288,6 +364,15 @@ Result<std::optional<MistakeFrame>> frameWithMistakes(const OurFrame& ours,
     MistakeFrame out{ours.trace, frame.scene, false};
     auto changed = std::make_shared<Scene>(scene);
     bool any = false, model = false, painter = false, farthest = false, lights = false;
+    const bool courseCamera = frame.cameraBasis && !frame.cameraBasis->skipped;
+    // The basis first: a light mistake then puts the light where it says, in our view.
+    for (const Slip& slip : slips) {
+        if (slip.mistake != Mistake::BasisNNotNormalised && slip.mistake != Mistake::BasisUReversed)
+            continue;
+        if (!courseCamera || !moveToTheirBasis(*changed, *frame.cameraBasis, slip.mistake))
+            return Optional();
+        any = true;
+    }
     for (const Slip& slip : slips) {
         if (!changesTheRender(slip.mistake)) continue;
         any = true;
@@ -326,7 +411,7 @@ Result<std::optional<MistakeFrame>> frameWithMistakes(const OurFrame& ours,
                 break;
             case Mistake::LightInWorld:
             case Mistake::LightWithoutC:
-                if (lights || !frame.cameraBasis || frame.cameraBasis->skipped ||
+                if (lights || !courseCamera ||
                     !anyLit(scene, LightingModel::CoursePhong) ||
                     !moveLights(*changed, *frame.cameraBasis, slip.mistake))
                     return Optional();
@@ -392,6 +477,11 @@ Result<std::optional<Rgba8Image>> imageOnFrame(const OurFrame& ours, const Mista
                 if (!anyDraw(scene, ShadingModel::Phong)) return Optional();
                 f.unnormalised = true;
                 break;
+            case Mistake::VertexNormalsUnnormalised:
+            case Mistake::AreaWeightedNormals:
+                if (!anyDraw(scene, ShadingModel::Phong) && !anyDraw(scene, ShadingModel::Gouraud))
+                    return Optional();
+                break;
             case Mistake::ByteRounding:
                 conv.rounding = conv.rounding == ByteRounding::Truncate ? ByteRounding::Nearest
                                                                         : ByteRounding::Truncate;
@@ -416,6 +506,11 @@ Result<std::optional<Rgba8Image>> imageOnFrame(const OurFrame& ours, const Mista
                 break;
         }
     }
+    const bool unnormalisedSums = slipOf(slips, Mistake::VertexNormalsUnnormalised) != nullptr;
+    const bool areaWeighted = slipOf(slips, Mistake::AreaWeightedNormals) != nullptr;
+    if ((unnormalisedSums || areaWeighted) && frame.view && !frame.normals->skipped)
+        f.vertexNormals =
+            studentVertexNormals(*frame.scene, *frame.view, areaWeighted, unnormalisedSums);
     const Bytes background = backgroundBytes(scene.conventions);
     const DepthTest& depth = *frame.depth;
     const bool reshaded = f.any() || mframe.painted;

@@ -46,6 +46,10 @@ constexpr std::array<const char*, kMistakeCount> kIds = {
     "depth-reversed",
     "colour-offset",
     "colour-scale",
+    "vertex-normals-unnormalised",
+    "area-weighted-normals",
+    "basis-n-not-normalised",
+    "basis-u-reversed",
 };
 
 Bytes bytesAt(const Rgba8Image& image, int x, int y) {
@@ -178,6 +182,15 @@ Message titleOf(const OurFrame& ours, const Slip& slip) {
                 static_cast<int>(std::lround(slip.amount)));
         case Mistake::ColourScale:
             return "every colour multiplied by %1 (a constant scale)"_msg(decimal(slip.amount));
+        case Mistake::VertexNormalsUnnormalised:
+            return "the vertex normals left at the length of their sums (not normalised)"_msg;
+        case Mistake::AreaWeightedNormals:
+            return "the triangle normals summed at their length (area-weighted) instead of "
+                   "normalised first"_msg;
+        case Mistake::BasisNNotNormalised:
+            return "the camera's N not normalised before V - (V.N)N, nor after"_msg;
+        case Mistake::BasisUReversed:
+            return "the camera's U = V x N instead of N x V (x runs the other way)"_msg;
     }
     return {};
 }
@@ -194,6 +207,8 @@ Message mechanismOf(Mistake mistake) {
         case Mistake::AmbientIaOnly:
         case Mistake::TermsTruncated:
         case Mistake::EpsilonSpecialCases:
+        case Mistake::VertexNormalsUnnormalised:
+        case Mistake::AreaWeightedNormals:
             return "our pixels lit again with that formula (the same triangles, barycentrics, "
                    "P', N, lights and material) give theirs"_msg;
         case Mistake::Gouraud:
@@ -225,6 +240,10 @@ Message mechanismOf(Mistake mistake) {
         case Mistake::DepthReversed:
             return "the scene rendered again with the farther fragment winning gives their "
                    "pixels"_msg;
+        case Mistake::BasisNNotNormalised:
+        case Mistake::BasisUReversed:
+            return "the scene rendered again in view coordinates made with that basis gives "
+                   "their pixels"_msg;
         case Mistake::ColourOffset:
             return "our bytes moved by that constant give their pixels"_msg;
         case Mistake::ColourScale:
@@ -297,6 +316,16 @@ Message hintOf(Mistake mistake) {
         case Mistake::ColourScale:
             return "look for a factor on every colour: an intensity scaled, or another colour "
                    "scale"_msg;
+        case Mistake::VertexNormalsUnnormalised:
+            return "seed 000: each vertex normal is the normalised sum of its triangles' "
+                   "normals"_msg;
+        case Mistake::AreaWeightedNormals:
+            return "normalise each triangle's normal before adding it to its vertices"_msg;
+        case Mistake::BasisNNotNormalised:
+            return "seed 000's Gram-Schmidt: normalise N first, then V - (V.N)N is V's part "
+                   "across N"_msg;
+        case Mistake::BasisUReversed:
+            return "seed 000: U = N x V, so that U, V, N is right-handed"_msg;
     }
     return {};
 }
@@ -537,7 +566,7 @@ void countPixels(const Rgba8Image& before, const Rgba8Image& after, const Rgba8I
 }
 
 // Their image unlit: one colour (99% of the pixels at least) wherever it is not their
-// background, while ours has several. Their background is what they show most where we
+// background, while ours has several and covers at most ten times as many pixels. Their background is what they show most where we
 // cover nothing.
 std::optional<std::pair<Bytes, Bytes>> unlitColours(const OurFrame& ours, const Rgba8Image& theirs,
                                                     int tolerance) {
@@ -550,7 +579,9 @@ std::optional<std::pair<Bytes, Bytes>> unlitColours(const OurFrame& ours, const 
     if (!colour || count * 100 < total * 99) return std::nullopt;
     std::size_t ourCount = 0, ourTotal = 0;
     mostCommon(ours.image, [&](int x, int y) { return ours.covered(x, y); }, &ourCount, &ourTotal);
-    if (ourCount * 100 >= ourTotal * 99) return std::nullopt;
+    // Ours lit, and theirs covering a tenth of what ours does at least: a few dark pixels
+    // (a scene drawn far too small) are not an unlit drawing.
+    if (ourCount * 100 >= ourTotal * 99 || total * 10 < ourTotal) return std::nullopt;
     return std::pair(*colour, *background);
 }
 
@@ -688,6 +719,24 @@ Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& 
             } else {
                 slip = kept;
             }
+        }
+    }
+    // A finding the others make redundant, whose leaving out costs less than kLeastShare of
+    // the difference, is left out.
+    for (bool dropped = true; dropped && applied.size() > 1;) {
+        dropped = false;
+        for (std::size_t k = 0; k < applied.size() && !dropped; ++k) {
+            std::vector<Slip> others = applied;
+            others.erase(others.begin() + std::ptrdiff_t(k));
+            auto image = search.image(others);
+            if (!image) return image.error();
+            if (!image.value()) continue;
+            const std::uint64_t d = differenceOf(*image.value(), theirs);
+            if (double(d) >= double(remaining) + least) continue;
+            applied = std::move(others);
+            current = std::move(*image.value());
+            remaining = d;
+            dropped = true;
         }
     }
     // Each finding's share, given those above it.

@@ -61,9 +61,13 @@ enum class Mistake : std::uint8_t {
     DepthReversed,          // the farther fragment wins the depth test
     ColourOffset,           // every covered byte off by a constant (Slip::amount)
     ColourScale,            // every colour multiplied by a constant (Slip::amount)
+    VertexNormalsUnnormalised,  // the sums of the triangle normals left at their length
+    AreaWeightedNormals,        // triangle normals summed before they are normalised
+    BasisNNotNormalised,        // N not normalised before V - (V.N) N, nor after
+    BasisUReversed,             // U = V x N instead of N x V
 };
 
-inline constexpr std::size_t kMistakeCount = 29;
+inline constexpr std::size_t kMistakeCount = 33;
 
 // The small number a student tests the special cases against (EpsilonSpecialCases).
 inline constexpr float kSpecialCaseEpsilon = 1e-3f;
@@ -149,6 +153,8 @@ struct ImageComparison {
     // still differ.
     double unexplained = 0.0;
     std::size_t unexplainedPixels = 0;
+    // Most of the difference, or most of the differing pixels, stays unexplained.
+    bool mostlyUnexplained() const { return unexplained > 0.5 || unexplainedPixels * 2 > differing; }
     // Their image unlit: one colour wherever it is not their background. Then only coverage
     // is compared (our covered pixels in their colour), with the projection and scan
     // conversion mistakes alone.
