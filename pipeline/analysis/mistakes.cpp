@@ -693,6 +693,7 @@ Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& 
             }
         }
         if (!next.empty() && cost(next.front()) < cost(chosen)) chosen = next.front();
+        if (chosen.difference == 0) break;  // their image made exactly: nothing left to find
         beam = std::move(next);
     }
     std::vector<Slip> applied = std::move(chosen.slips);
