@@ -25,6 +25,7 @@
 #include "pipeline/analysis/mistakes.h"
 #include "pipeline/render/output_image.h"
 #include "pipeline/render/renderer.h"
+#include "pipeline/scene/transforms.h"
 #include "tests/test_support.h"
 
 using testing::CliRun;
@@ -148,6 +149,8 @@ private slots:
     void theirSizeByDefault();
     void theirFormats_data();
     void theirFormats();
+    void findsTheMisreadCommand_data();
+    void findsTheMisreadCommand();
 };
 
 void TestCompare::ranksTheMistakeFirst_data() {
@@ -593,6 +596,113 @@ void TestCompare::theirFormats() {
         // JPEG at quality 95: only edge pixels stay beyond the tolerance.
         QVERIFY2(differing < 320 * 240 / 50, qPrintable(QString::number(differing)));
     }
+}
+
+
+namespace {
+
+// A small command file whose transforms each matter: lookat (line 8, |f x up| = 2), rotatez
+// (line 9) and translate (line 10).
+const QString kTransforms = QStringLiteral(
+    "png 64 64 mine.png\n"
+    "xyz -0.5 -0.4 0\nxyz 0.5 -0.4 0\nxyz 0.1 0.5 0\nxyz 0 0 3\nxyz 0 0 0\n"
+    "frustum -0.3 0.3 -0.3 0.3 1 10\n"
+    "lookat 4 5 0 2 0\n"
+    "rotatez 20\n"
+    "translate 0.3 0 0\n"
+    "color 1 0.5 0\n"
+    "trif 1 2 3\n");
+
+// Lines 8 to 10 replaced by one loadmv of m, written row by row.
+QString withModelView(const rl::dmat4& m) {
+    QStringList lines = kTransforms.split(QLatin1Char('\n'));
+    QString rows = QStringLiteral("loadmv");
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) rows += QLatin1Char(' ') + QString::number(m[c][r], 'g', 17);
+    lines[7] = rows;
+    lines[8] = lines[9] = QString();
+    return lines.join(QLatin1Char('\n'));
+}
+
+rl::dmat4 lookAtOfTransforms() {
+    return rl::lookAtMatrix(rl::dvec3(0, 0, 3), rl::dvec3(0, 0, 0), rl::dvec3(0, 2, 0));
+}
+
+}  // namespace
+
+void TestCompare::findsTheMisreadCommand_data() {
+    QTest::addColumn<QString>("ours");    // the command file as given
+    QTest::addColumn<QString>("theirs");  // the command file their program in effect ran
+    QTest::addColumn<int>("line");
+    QTest::addColumn<QString>("variant");
+    const rl::dmat4 rz = rl::rotationMatrix(20.0, rl::dvec3(0, 0, 1));
+    const rl::dmat4 t = rl::translationMatrix(rl::dvec3(0.3, 0, 0));
+    QString radians = kTransforms;
+    radians.replace(QStringLiteral("rotatez 20"), QStringLiteral("rotatez 1145.9155902616465"));
+    QTest::newRow("rotatez in radians") << kTransforms << radians << 9 << "radians";
+    QString ignored = kTransforms;
+    ignored.replace(QStringLiteral("translate 0.3 0 0"), QString());
+    QTest::newRow("translate ignored") << kTransforms << ignored << 10 << "ignored";
+    QTest::newRow("translate on the left")
+        << kTransforms << withModelView(t * lookAtOfTransforms() * rz) << 10 << "other-side";
+    // s = f x up = (0, 0, -1) x (0, 2, 0) = (2, 0, 0) left at length 2: x doubled.
+    QTest::newRow("lookat's s not normalised")
+        << kTransforms
+        << withModelView(rl::scaleMatrix(rl::dvec3(2, 1, 1)) * lookAtOfTransforms() * rz * t) << 8
+        << "unnormalised-side";
+    const QString samples = testing::samplesDir();
+    if (samples.isEmpty()) return;
+    const auto sample = [&](const char* name) {
+        QFile file(samples + QStringLiteral("/hw2/") + QLatin1String(name));
+        return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
+    };
+    // The shared samples: the translate of hw2clipplane left out, hw2loadmv's matrix
+    // transposed (the sixteen numbers written column by column).
+    const QString clip = sample("hw2clipplane.txt");
+    QString clipIgnored = clip;
+    clipIgnored.replace(QStringLiteral("translate -0.25 0.1 -0.2"), QString());
+    QTest::newRow("hw2clipplane translate ignored") << clip << clipIgnored << 8 << "ignored";
+    const QString loadmv = sample("hw2loadmv.txt");
+    QStringList lines = loadmv.split(QLatin1Char('\n'));
+    const QStringList numbers = lines[6].split(QLatin1Char(' '), Qt::SkipEmptyParts).mid(1);
+    QStringList transposed{QStringLiteral("loadmv")};
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) transposed += numbers.value(c * 4 + r);
+    lines[6] = transposed.join(QLatin1Char(' '));
+    QTest::newRow("hw2loadmv transposed") << loadmv << lines.join(QLatin1Char('\n')) << 7
+                                          << "transposed";
+}
+
+// Their image made by our renderer from the command file their program in effect ran (its
+// text edited here); compare with the file as given names the line and the misreading, and
+// leaves nothing unexplained.
+void TestCompare::findsTheMisreadCommand() {
+    QFETCH(QString, ours);
+    QFETCH(QString, theirs);
+    QFETCH(int, line);
+    QFETCH(QString, variant);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const auto write = [&](const QString& name, const QString& text) {
+        QFile file(dir.filePath(name));
+        return file.open(QIODevice::WriteOnly) && file.write(text.toUtf8()) == text.toUtf8().size();
+    };
+    QVERIFY(write(QStringLiteral("ours.txt"), ours) && write(QStringLiteral("theirs.txt"), theirs));
+    CliRun made;
+    RUN_CLI(made, (QStringList{"run", "theirs.txt"}), dir.path());
+    QCOMPARE(made.exitCode, 0);
+    const QString png = ours.section(QLatin1Char('\n'), 0, 0).section(QLatin1Char(' '), 3, 3);
+    CliRun run;
+    const QJsonObject result = compareJson(dir, {QStringLiteral("ours.txt"), "--image", png}, run);
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    const QJsonArray diagnosis = result[QStringLiteral("diagnosis")].toArray();
+    QVERIFY2(!diagnosis.isEmpty(), qPrintable(run.out));
+    const QJsonObject first = diagnosis.first().toObject();
+    QCOMPARE(first[QStringLiteral("mistake")].toString(), QStringLiteral("command-misread"));
+    QCOMPARE(first[QStringLiteral("line")].toInt(), line);
+    QCOMPARE(first[QStringLiteral("variant")].toString(), variant);
+    QVERIFY2(result[QStringLiteral("unexplained")][QStringLiteral("share")].toDouble() <= 0.01,
+             qPrintable(run.out));
 }
 
 QTEST_GUILESS_MAIN(TestCompare)

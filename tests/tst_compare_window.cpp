@@ -69,6 +69,7 @@ private slots:
     void diagnosisInPortuguese();
     void everyMistakeInTheDock_data();
     void everyMistakeInTheDock();
+    void commandFileFindsTheMisreadCommand();
 
 private:
     ComparePanel* panel() const { return m_window.comparePanel(); }
@@ -316,6 +317,41 @@ void TestCompareWindow::everyMistakeInTheDock() {
     const QString first =
         QStringLiteral("1. ") + QString::fromStdString(c->diagnosis.front().title.english());
     QVERIFY2(panel()->diagnosisText().contains(first), qPrintable(panel()->diagnosisText()));
+}
+
+
+// A command file shown: their image made from it with a translate left out (the text
+// edited here, drawn by the command line) is diagnosed as that line ignored.
+void TestCompareWindow::commandFileFindsTheMisreadCommand() {
+    const QString ours = QStringLiteral(
+        "png 64 64 mine.png\n"
+        "xyz -0.5 -0.4 0\nxyz 0.5 -0.4 0\nxyz 0.1 0.5 0\n"
+        "frustum -0.3 0.3 -0.3 0.3 1 10\n"
+        "translate 0 0 -3\n"
+        "translate 0.2 0 0\n"
+        "color 1 0.5 0\n"
+        "trif 1 2 3\n");
+    QString theirs = ours;
+    theirs.replace(QStringLiteral("translate 0.2 0 0"), QString());
+    const auto write = [&](const QString& name, const QString& text) {
+        QFile file(m_dir.filePath(name));
+        return file.open(QIODevice::WriteOnly) && file.write(text.toUtf8()) == text.toUtf8().size();
+    };
+    QVERIFY(write(QStringLiteral("ours.txt"), ours) && write(QStringLiteral("theirs.txt"), theirs));
+    testing::CliRun run;
+    QVERIFY2(testing::runCli({QStringLiteral("run"), QStringLiteral("theirs.txt")}, m_dir.path(),
+                             run),
+             qPrintable(run.problem));
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY(m_window.openCommandFile(m_dir.filePath(QStringLiteral("ours.txt"))));
+    QVERIFY(QTest::qWaitFor([&] { return ready(m_window); }, kTimeoutMs));
+    QVERIFY(m_window.compareWithImage(m_dir.filePath(QStringLiteral("mine.png"))));
+    const rl::ImageComparison* c = panel()->comparison();
+    QVERIFY(c && !c->diagnosis.empty());
+    QCOMPARE(c->diagnosis.front().mistake, rl::Mistake::CommandMisread);
+    QCOMPARE(c->diagnosis.front().command.line, 7);
+    QVERIFY2(panel()->diagnosisText().contains(QStringLiteral("1. line 7: 'translate' ignored")),
+             qPrintable(panel()->diagnosisText()));
 }
 
 QTEST_MAIN(TestCompareWindow)

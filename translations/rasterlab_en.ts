@@ -2001,361 +2001,416 @@
     </message>
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="593"/>
-        <source>the camera&apos;s N not normalised before V - (V.N)N, nor after</source>
-        <translation>the camera's N not normalised before V - (V.N)N, nor after</translation>
+        <source>the command file read again with that command so gives their pixels</source>
+        <translation>the command file read again with that command so gives their pixels</translation>
     </message>
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="594"/>
-        <source>the camera&apos;s U = V x N instead of N x V (x runs the other way)</source>
-        <translation>the camera's U = V x N instead of N x V (x runs the other way)</translation>
+        <source>line %1: &apos;%2&apos; ignored</source>
+        <translation>line %1: '%2' ignored</translation>
     </message>
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="595"/>
+        <source>line %1: &apos;%2&apos; multiplied on the other side (M = A M instead of M A)</source>
+        <translation>line %1: '%2' multiplied on the other side (M = A M instead of M A)</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="596"/>
+        <source>line %1: &apos;%2&apos; read column by column (the matrix transposed)</source>
+        <translation>line %1: '%2' read column by column (the matrix transposed)</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="597"/>
+        <source>line %1: &apos;%2&apos; with its angle taken as radians</source>
+        <translation>line %1: '%2' with its angle taken as radians</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="598"/>
+        <source>line %1: &apos;%2&apos; with s = f x up not normalised (the image stretched across)</source>
+        <translation>line %1: '%2' with s = f x up not normalised (the image stretched across)</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="599"/>
+        <source>check that your program reads &apos;%1&apos; and applies it</source>
+        <translation>check that your program reads '%1' and applies it</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="600"/>
+        <source>seed 001: a transform multiplies the model/view on the right, M = M A</source>
+        <translation>seed 001: a transform multiplies the model/view on the right, M = M A</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="601"/>
+        <source>seed 001 writes a matrix row by row: the first four numbers are its first row</source>
+        <translation>seed 001 writes a matrix row by row: the first four numbers are its first row</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
+        <source>seed 001&apos;s angles are in degrees: convert them before sin and cos</source>
+        <translation>seed 001's angles are in degrees: convert them before sin and cos</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="603"/>
+        <source>lookat: normalise s = f x up before it goes into the matrix</source>
+        <translation>lookat: normalise s = f x up before it goes into the matrix</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
+        <source>the camera&apos;s N not normalised before V - (V.N)N, nor after</source>
+        <translation>the camera&apos;s N not normalised before V - (V.N)N, nor after</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
+        <source>the camera&apos;s U = V x N instead of N x V (x runs the other way)</source>
+        <translation>the camera&apos;s U = V x N instead of N x V (x runs the other way)</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
         <source>the scene rendered again in view coordinates made with that basis gives their pixels</source>
         <translation>the scene rendered again in view coordinates made with that basis gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="596"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
         <source>seed 000&apos;s Gram-Schmidt: normalise N first, then V - (V.N)N is V&apos;s part across N</source>
-        <translation>seed 000's Gram-Schmidt: normalise N first, then V - (V.N)N is V's part across N</translation>
+        <translation>seed 000&apos;s Gram-Schmidt: normalise N first, then V - (V.N)N is V&apos;s part across N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="597"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
         <source>seed 000: U = N x V, so that U, V, N is right-handed</source>
         <translation>seed 000: U = N x V, so that U, V, N is right-handed</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="598"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
         <source>the vertex normals left at the length of their sums (not normalised)</source>
         <translation>the vertex normals left at the length of their sums (not normalised)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="599"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="610"/>
         <source>the triangle normals summed at their length (area-weighted) instead of normalised first</source>
         <translation>the triangle normals summed at their length (area-weighted) instead of normalised first</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="600"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
         <source>seed 000: each vertex normal is the normalised sum of its triangles&apos; normals</source>
-        <translation>seed 000: each vertex normal is the normalised sum of its triangles' normals</translation>
+        <translation>seed 000: each vertex normal is the normalised sum of its triangles&apos; normals</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="601"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
         <source>normalise each triangle&apos;s normal before adding it to its vertices</source>
-        <translation>normalise each triangle's normal before adding it to its vertices</translation>
+        <translation>normalise each triangle&apos;s normal before adding it to its vertices</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
         <source>the light not taken to view coordinates: its world position used as Pl_view</source>
         <translation>the light not taken to view coordinates: its world position used as Pl_view</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="603"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
         <source>the light taken to view coordinates without subtracting C: [I] Pl instead of [I](Pl - C)</source>
         <translation>the light taken to view coordinates without subtracting C: [I] Pl instead of [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
         <source>V = P&apos; instead of -P&apos; (L = P&apos; - Pl gives the same image)</source>
         <translation>V = P&apos; instead of -P&apos; (L = P&apos; - Pl gives the same image)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
         <source>the ambient term Ia instead of Ia*ka</source>
         <translation>the ambient term Ia instead of Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
         <source>each Phong term truncated to a whole byte before the sum</source>
         <translation>each Phong term truncated to a whole byte before the sum</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
         <source>V.N, N.L and R.V tested against %1 instead of 0</source>
         <translation>V.N, N.L and R.V tested against %1 instead of 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
         <source>the depth test reversed: the farther fragment wins (&gt; against a buffer cleared to -infinity, or to 0)</source>
         <translation>the depth test reversed: the farther fragment wins (&gt; against a buffer cleared to -infinity, or to 0)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
         <source>every covered pixel&apos;s colour off by %1 (a constant offset)</source>
         <translation>every covered pixel&apos;s colour off by %1 (a constant offset)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="610"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
         <source>every colour multiplied by %1 (a constant scale)</source>
         <translation>every colour multiplied by %1 (a constant scale)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
         <source>the scene rendered again with the light where that transform puts it gives their pixels</source>
         <translation>the scene rendered again with the light where that transform puts it gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
         <source>the scene rendered again with the farther fragment winning gives their pixels</source>
         <translation>the scene rendered again with the farther fragment winning gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
         <source>our bytes moved by that constant give their pixels</source>
         <translation>our bytes moved by that constant give their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
         <source>our colours multiplied by that constant give their pixels</source>
         <translation>our colours multiplied by that constant give their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
         <source>seed 000: the light goes to view coordinates as the vertices do, Pl_view = [I](Pl - C)</source>
         <translation>seed 000: the light goes to view coordinates as the vertices do, Pl_view = [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
         <source>seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis</source>
         <translation>seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
         <source>V points from the surface to the camera: V = -P&apos; in view coordinates, and L = Pl - P&apos;</source>
         <translation>V points from the surface to the camera: V = -P&apos; in view coordinates, and L = Pl - P&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
         <source>seed 000&apos;s ambient term is Ia*ka</source>
         <translation>seed 000&apos;s ambient term is Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
         <source>add the terms as real numbers and make a byte once, at the end</source>
         <translation>add the terms as real numbers and make a byte once, at the end</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
         <source>seed 000&apos;s special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</source>
         <translation>seed 000&apos;s special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
         <source>the z-buffer starts at +infinity and a fragment is written when its z is smaller</source>
         <translation>the z-buffer starts at +infinity and a fragment is written when its z is smaller</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="633"/>
         <source>look for a constant added to every colour, or bytes made with an offset</source>
         <translation>look for a constant added to every colour, or bytes made with an offset</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
         <source>look for a factor on every colour: an intensity scaled, or another colour scale</source>
         <translation>look for a factor on every colour: an intensity scaled, or another colour scale</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
         <source>%1; no pixel that matches now would change</source>
         <translation>%1; no pixel that matches now would change</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
         <source>%2; %1 pixel that matches now would differ</source>
         <translation>%2; %1 pixel that matches now would differ</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
         <source>%2; %1 pixels that match now would differ</source>
         <translation>%2; %1 pixels that match now would differ</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
         <source>cannot read the texture %1: %2</source>
         <translation>cannot read the texture %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
         <source>cannot open: %1</source>
         <translation>cannot open: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>the file has %1 MiB, more than the %2 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>the file has more than the %1 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="651"/>
         <source>not enough memory to read this file</source>
         <translation>not enough memory to read this file</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="652"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="655"/>
         <source>the object is not edited, so not saved</source>
         <translation>the object is not edited, so not saved</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="656"/>
         <source>cannot write into the built-in resources</source>
         <translation>cannot write into the built-in resources</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="657"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>the camera was not saved, as it would not load again: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="658"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>not saved: the text written does not read back as the same values</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
         <source>cannot write the file: %1</source>
         <translation>cannot write the file: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="661"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>only %1 of %2 bytes could be written (is the disk full?)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="651"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="662"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>cannot write the file (it is left as it was): %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="653"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="664"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[rows, fragments], two whole numbers</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="654"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[width, height], whole numbers from %1 to %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="655"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="666"/>
         <source>a list</source>
         <translation>a list</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="656"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="667"/>
         <source>a list of %1 numbers</source>
         <translation>a list of %1 numbers</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="657"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="668"/>
         <source>a list of 1 to 8 lights</source>
         <translation>a list of 1 to 8 lights</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="658"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="669"/>
         <source>a list of dock names</source>
         <translation>a list of dock names</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="659"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="670"/>
         <source>a number</source>
         <translation>a number</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>a positive number or &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="661"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="672"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>a positive number or &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="662"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="673"/>
         <source>a whole number from %1</source>
         <translation>a whole number from %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="663"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="674"/>
         <source>an object</source>
         <translation>an object</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="664"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="675"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>expected %1 for &quot;%2&quot;, found %3</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="676"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="667"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="678"/>
         <source>not a lesson file: %1</source>
         <translation>not a lesson file: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="668"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="679"/>
         <source>nothing</source>
         <translation>nothing</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="669"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="680"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="670"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="681"/>
         <source>one of %1</source>
         <translation>one of %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="682"/>
         <source>text in quotes</source>
         <translation>text in quotes</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="672"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="683"/>
         <source>the text &apos;%1&apos;</source>
         <translation>the text &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="673"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
         <source>true or false</source>
         <translation>true or false</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="674"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>unknown key &quot;%1&quot; ignored (known here: %2)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="709"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="720"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="715"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="726"/>
         <source>%1: warning: %2</source>
         <translation>%1: warning: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="716"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="727"/>
         <source>%1: note: %2</source>
         <translation>%1: note: %2</translation>
     </message>
@@ -3105,110 +3160,110 @@
 <context>
     <name>rasterlab::ComparePanel</name>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="126"/>
-        <location filename="../app/window/compare_panel.cpp" line="130"/>
+        <location filename="../app/window/compare_panel.cpp" line="127"/>
+        <location filename="../app/window/compare_panel.cpp" line="131"/>
         <source>R %1, G %2, B %3, A %4</source>
         <translation>R %1, G %2, B %3, A %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="140"/>
+        <location filename="../app/window/compare_panel.cpp" line="141"/>
         <source>red</source>
         <translation>red</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="142"/>
+        <location filename="../app/window/compare_panel.cpp" line="143"/>
         <source>green</source>
         <translation>green</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="144"/>
+        <location filename="../app/window/compare_panel.cpp" line="145"/>
         <source>blue</source>
         <translation>blue</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="146"/>
+        <location filename="../app/window/compare_panel.cpp" line="147"/>
         <source>alpha</source>
         <translation>alpha</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="153"/>
+        <location filename="../app/window/compare_panel.cpp" line="154"/>
         <source>%1 and %2</source>
         <translation>%1 and %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="169"/>
+        <location filename="../app/window/compare_panel.cpp" line="170"/>
         <source>Side by side</source>
         <translation>Side by side</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="170"/>
+        <location filename="../app/window/compare_panel.cpp" line="171"/>
         <source>Flicker</source>
         <translation>Flicker</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="171"/>
+        <location filename="../app/window/compare_panel.cpp" line="172"/>
         <source>Difference</source>
         <translation>Difference</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="173"/>
+        <location filename="../app/window/compare_panel.cpp" line="174"/>
         <source>Theirs beside ours, one after the other twice a second, or the pixels that differ</source>
         <translation>Theirs beside ours, one after the other twice a second, or the pixels that differ</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="176"/>
+        <location filename="../app/window/compare_panel.cpp" line="177"/>
         <source>Differ by more than</source>
         <translation>Differ by more than</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="182"/>
+        <location filename="../app/window/compare_panel.cpp" line="183"/>
         <source>The difference view shows the pixels where some channel differs by more than this (0: every difference)</source>
         <translation>The difference view shows the pixels where some channel differs by more than this (0: every difference)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="187"/>
+        <location filename="../app/window/compare_panel.cpp" line="188"/>
         <source>Compare Again</source>
         <translation>Compare Again</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="190"/>
+        <location filename="../app/window/compare_panel.cpp" line="191"/>
         <source>The scene changed since the comparison: compare their image with the scene shown now</source>
         <translation>The scene changed since the comparison: compare their image with the scene shown now</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="214"/>
+        <location filename="../app/window/compare_panel.cpp" line="215"/>
         <source>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</source>
         <translation>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="252"/>
+        <location filename="../app/window/compare_panel.cpp" line="253"/>
         <source>There is no render to compare with yet.</source>
         <translation>There is no render to compare with yet.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="260"/>
+        <location filename="../app/window/compare_panel.cpp" line="261"/>
         <source>Their image: %1.</source>
         <translation>Their image: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="266"/>
+        <location filename="../app/window/compare_panel.cpp" line="267"/>
         <source>Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.</source>
         <translation>Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="356"/>
-        <location filename="../app/window/compare_panel.cpp" line="359"/>
+        <location filename="../app/window/compare_panel.cpp" line="366"/>
+        <location filename="../app/window/compare_panel.cpp" line="369"/>
         <source>Theirs</source>
         <translation>Theirs</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="356"/>
-        <location filename="../app/window/compare_panel.cpp" line="359"/>
+        <location filename="../app/window/compare_panel.cpp" line="366"/>
+        <location filename="../app/window/compare_panel.cpp" line="369"/>
         <source>Ours</source>
         <translation>Ours</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/compare_panel.cpp" line="364"/>
+        <location filename="../app/window/compare_panel.cpp" line="374"/>
         <source>%n pixel(s) differ by more than %1</source>
         <translation>
             <numerusform>%n pixel differs by more than %1</numerusform>
@@ -3216,182 +3271,182 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="390"/>
+        <location filename="../app/window/compare_panel.cpp" line="400"/>
         <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
         <translation>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="399"/>
+        <location filename="../app/window/compare_panel.cpp" line="409"/>
         <source>Their image is unlit: one colour %1 wherever it covers. Only coverage is compared (our covered pixels in that colour), and only projection and scan conversion mistakes are tried.</source>
         <translation>Their image is unlit: one colour %1 wherever it covers. Only coverage is compared (our covered pixels in that colour), and only projection and scan conversion mistakes are tried.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="404"/>
+        <location filename="../app/window/compare_panel.cpp" line="414"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Largest difference per channel: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="405"/>
+        <location filename="../app/window/compare_panel.cpp" line="415"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Mean difference per channel, over the differing pixels: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="407"/>
+        <location filename="../app/window/compare_panel.cpp" line="417"/>
         <source>Pixels covered: %1 by both, %2 only by ours (our depth buffer), %3 only by theirs (not the background).</source>
         <translation>Pixels covered: %1 by both, %2 only by ours (our depth buffer), %3 only by theirs (not the background).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="427"/>
+        <location filename="../app/window/compare_panel.cpp" line="437"/>
         <source>Diagnosis, each mistake applied before the next is ranked:</source>
         <translation>Diagnosis, each mistake applied before the next is ranked:</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="433"/>
+        <location filename="../app/window/compare_panel.cpp" line="443"/>
         <source>Removes %1% of the difference; makes %2 differing pixels match.</source>
         <translation>Removes %1% of the difference; makes %2 differing pixels match.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="414"/>
+        <location filename="../app/window/compare_panel.cpp" line="424"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="421"/>
+        <location filename="../app/window/compare_panel.cpp" line="431"/>
         <source>The images are the same.</source>
         <translation>The images are the same.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="423"/>
+        <location filename="../app/window/compare_panel.cpp" line="433"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnosis: none of the mistakes RasterLab knows explains these differences.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="438"/>
+        <location filename="../app/window/compare_panel.cpp" line="448"/>
         <source>Evidence: %1</source>
         <translation>Evidence: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="439"/>
+        <location filename="../app/window/compare_panel.cpp" line="449"/>
         <source>Check: %1</source>
         <translation>Check: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="441"/>
+        <location filename="../app/window/compare_panel.cpp" line="451"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>At (%1, %2): ours %3, theirs %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="451"/>
+        <location filename="../app/window/compare_panel.cpp" line="461"/>
         <source>Unexplained: %1% of the difference; %2 pixels still differ with every mistake above applied.</source>
         <translation>Unexplained: %1% of the difference; %2 pixels still differ with every mistake above applied.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="458"/>
+        <location filename="../app/window/compare_panel.cpp" line="468"/>
         <source>None of the known mistakes explains most of this difference.</source>
         <translation>None of the known mistakes explains most of this difference.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="470"/>
+        <location filename="../app/window/compare_panel.cpp" line="480"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Pick a pixel (here or on the image) to see their colour beside ours.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="478"/>
+        <location filename="../app/window/compare_panel.cpp" line="488"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): theirs %3, ours %4.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="485"/>
+        <location filename="../app/window/compare_panel.cpp" line="495"/>
         <source>minus %1 in %2</source>
         <translation>minus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="486"/>
+        <location filename="../app/window/compare_panel.cpp" line="496"/>
         <source>plus %1 in %2</source>
         <translation>plus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="489"/>
+        <location filename="../app/window/compare_panel.cpp" line="499"/>
         <source>Their colour is ours.</source>
         <translation>Their colour is ours.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="493"/>
+        <location filename="../app/window/compare_panel.cpp" line="503"/>
         <source>Their colour is ours %1.</source>
         <translation>Their colour is ours %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="495"/>
+        <location filename="../app/window/compare_panel.cpp" line="505"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>The scene has changed since the comparison: the lighting shown now is not the one compared.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="507"/>
+        <location filename="../app/window/compare_panel.cpp" line="517"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>No triangle of ours covers this pixel: it is the background.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="511"/>
+        <location filename="../app/window/compare_panel.cpp" line="521"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>The lighting of this pixel is not known.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="514"/>
+        <location filename="../app/window/compare_panel.cpp" line="524"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="544"/>
+        <location filename="../app/window/compare_panel.cpp" line="554"/>
         <source>the ambient term Ia·ka</source>
         <translation>the ambient term Ia·ka</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="545"/>
+        <location filename="../app/window/compare_panel.cpp" line="555"/>
         <source>the diffuse term Il·Od·kd·(N·L)</source>
         <translation>the diffuse term Il·Od·kd·(N·L)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="546"/>
+        <location filename="../app/window/compare_panel.cpp" line="556"/>
         <source>the specular term Il·ks·(R·V)^n</source>
         <translation>the specular term Il·ks·(R·V)^n</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="562"/>
+        <location filename="../app/window/compare_panel.cpp" line="572"/>
         <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
         <translation>• %1 is 0 in %2 here: changing it alone cannot give their colour.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="567"/>
+        <location filename="../app/window/compare_panel.cpp" line="577"/>
         <source>• %1 would have to be below 0 in %2: not this term alone.</source>
         <translation>• %1 would have to be below 0 in %2: not this term alone.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="584"/>
+        <location filename="../app/window/compare_panel.cpp" line="594"/>
         <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
         <translation>• %1 would have to be %2 instead of %3, × %4 per channel</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="587"/>
+        <location filename="../app/window/compare_panel.cpp" line="597"/>
         <source>: the term left out</source>
         <translation>: the term left out</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="590"/>
+        <location filename="../app/window/compare_panel.cpp" line="600"/>
         <source>: that is the term times Od %1</source>
         <translation>: that is the term times Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="593"/>
+        <location filename="../app/window/compare_panel.cpp" line="603"/>
         <source>: that is the term without Od %1</source>
         <translation>: that is the term without Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="599"/>
+        <location filename="../app/window/compare_panel.cpp" line="609"/>
         <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
         <translation>(%1: 255 in both images, clamped; any value at least as high gives it.)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="602"/>
+        <location filename="../app/window/compare_panel.cpp" line="612"/>
         <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
         <translation>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</translation>
     </message>
@@ -4016,32 +4071,32 @@
         <translation>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1086"/>
+        <location filename="../app/window/main_window.cpp" line="1091"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>step forward, back (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1088"/>
+        <location filename="../app/window/main_window.cpp" line="1093"/>
         <source>Space</source>
         <translation>Space</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1088"/>
+        <location filename="../app/window/main_window.cpp" line="1093"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>play / pause (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1094"/>
+        <location filename="../app/window/main_window.cpp" line="1099"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>let go of the picked pixel (on the image)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1095"/>
+        <location filename="../app/window/main_window.cpp" line="1100"/>
         <source>presentation mode on / off</source>
         <translation>presentation mode on / off</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1100"/>
+        <location filename="../app/window/main_window.cpp" line="1105"/>
         <source>save, undo, redo</source>
         <translation>save, undo, redo</translation>
     </message>
@@ -4306,87 +4361,87 @@
         <translation>&amp;Same Side (clip only triangles that cross the eye plane)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="676"/>
+        <location filename="../app/window/main_window.cpp" line="681"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="981"/>
+        <location filename="../app/window/main_window.cpp" line="986"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1069"/>
+        <location filename="../app/window/main_window.cpp" line="1074"/>
         <source>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</source>
         <translation>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1083"/>
+        <location filename="../app/window/main_window.cpp" line="1088"/>
         <source>step forward</source>
         <translation>step forward</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1084"/>
+        <location filename="../app/window/main_window.cpp" line="1089"/>
         <source>step back</source>
         <translation>step back</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1087"/>
+        <location filename="../app/window/main_window.cpp" line="1092"/>
         <source>play / pause</source>
         <translation>play / pause</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1089"/>
+        <location filename="../app/window/main_window.cpp" line="1094"/>
         <source>jump to the start / the end of the frame</source>
         <translation>jump to the start / the end of the frame</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1090"/>
+        <location filename="../app/window/main_window.cpp" line="1095"/>
         <source>continue to the next breakpoint</source>
         <translation>continue to the next breakpoint</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1091"/>
+        <location filename="../app/window/main_window.cpp" line="1096"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>step by stage, triangle, scanline, span, pixel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1092"/>
+        <location filename="../app/window/main_window.cpp" line="1097"/>
         <source>show a stage&apos;s view</source>
         <translation>show a stage&apos;s view</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1093"/>
+        <location filename="../app/window/main_window.cpp" line="1098"/>
         <source>Click, arrows</source>
         <translation>Click, arrows</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1093"/>
+        <location filename="../app/window/main_window.cpp" line="1098"/>
         <source>pick a pixel, move it by one</source>
         <translation>pick a pixel, move it by one</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1096"/>
+        <location filename="../app/window/main_window.cpp" line="1101"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, double-click on a panel&apos;s title</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1097"/>
+        <location filename="../app/window/main_window.cpp" line="1102"/>
         <source>fill the window with the panel (the image, from the image), and back</source>
         <translation>fill the window with the panel (the image, from the image), and back</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1099"/>
+        <location filename="../app/window/main_window.cpp" line="1104"/>
         <source>open, export the image, export it as displayed</source>
         <translation>open, export the image, export it as displayed</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1102"/>
+        <location filename="../app/window/main_window.cpp" line="1107"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>fit, actual size, zoom in, zoom out</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1104"/>
+        <location filename="../app/window/main_window.cpp" line="1109"/>
         <source>Keyboard Shortcuts</source>
         <translation>Keyboard Shortcuts</translation>
     </message>
@@ -4446,7 +4501,7 @@
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="650"/>
+        <location filename="../app/window/main_window.cpp" line="655"/>
         <location filename="../app/window/main_window_export.cpp" line="35"/>
         <location filename="../app/window/main_window_export.cpp" line="133"/>
         <location filename="../app/window/main_window_export.cpp" line="175"/>
@@ -4465,18 +4520,18 @@
         <translation>Exported %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="703"/>
+        <location filename="../app/window/main_window.cpp" line="708"/>
         <source>rendering...</source>
         <translation>rendering...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="703"/>
+        <location filename="../app/window/main_window.cpp" line="708"/>
         <source>%1, rendering...</source>
         <translation>%1, rendering...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="701"/>
-        <location filename="../app/window/main_window.cpp" line="944"/>
+        <location filename="../app/window/main_window.cpp" line="706"/>
+        <location filename="../app/window/main_window.cpp" line="949"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -4536,73 +4591,73 @@
         <translation>&amp;Keyboard Shortcuts</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="382"/>
+        <location filename="../app/window/main_window.cpp" line="387"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="633"/>
+        <location filename="../app/window/main_window.cpp" line="638"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="711"/>
+        <location filename="../app/window/main_window.cpp" line="716"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparing the stepping of this frame</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="711"/>
+        <location filename="../app/window/main_window.cpp" line="716"/>
         <source>Rendering</source>
         <translation>Rendering</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="887"/>
+        <location filename="../app/window/main_window.cpp" line="892"/>
         <source>Error: %1</source>
         <translation>Error: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="911"/>
+        <location filename="../app/window/main_window.cpp" line="916"/>
         <source>Files</source>
         <translation>Files</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="914"/>
+        <location filename="../app/window/main_window.cpp" line="919"/>
         <source>Command file</source>
         <translation>Command file</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="915"/>
+        <location filename="../app/window/main_window.cpp" line="920"/>
         <source>Image</source>
         <translation>Image</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="917"/>
+        <location filename="../app/window/main_window.cpp" line="922"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="927"/>
+        <location filename="../app/window/main_window.cpp" line="932"/>
         <source>Camera</source>
         <translation>Camera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="928"/>
+        <location filename="../app/window/main_window.cpp" line="933"/>
         <source>Lighting</source>
         <translation>Lighting</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="929"/>
+        <location filename="../app/window/main_window.cpp" line="934"/>
         <source>Object</source>
         <translation>Object</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="931"/>
+        <location filename="../app/window/main_window.cpp" line="936"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</translation>
     </message>
     <message>
         <location filename="../app/window/main_window.cpp" line="260"/>
-        <location filename="../app/window/main_window.cpp" line="938"/>
+        <location filename="../app/window/main_window.cpp" line="943"/>
         <source>Stages</source>
         <translation>Stages</translation>
     </message>
@@ -4657,87 +4712,87 @@
         <translation>Painter&apos;s algorithm (seed 004)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="352"/>
+        <location filename="../app/window/main_window.cpp" line="357"/>
         <source>Compare</source>
         <translation>Compare</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="352"/>
+        <location filename="../app/window/main_window.cpp" line="357"/>
         <source>Compare with their image</source>
         <translation>Compare with their image</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="909"/>
+        <location filename="../app/window/main_window.cpp" line="914"/>
         <source>Lesson: %1</source>
         <translation>Lesson: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="945"/>
+        <location filename="../app/window/main_window.cpp" line="950"/>
         <source>skipped: %1</source>
         <translation>skipped: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="948"/>
+        <location filename="../app/window/main_window.cpp" line="953"/>
         <source>Counts</source>
         <translation>Counts</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="949"/>
+        <location filename="../app/window/main_window.cpp" line="954"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="952"/>
+        <location filename="../app/window/main_window.cpp" line="957"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="955"/>
+        <location filename="../app/window/main_window.cpp" line="960"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="959"/>
+        <location filename="../app/window/main_window.cpp" line="964"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="983"/>
+        <location filename="../app/window/main_window.cpp" line="988"/>
         <source>empty (+inf)</source>
         <translation>empty (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="984"/>
+        <location filename="../app/window/main_window.cpp" line="989"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   depth %6</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1000"/>
+        <location filename="../app/window/main_window.cpp" line="1005"/>
         <source>Open Command File</source>
         <translation>Open Command File</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1001"/>
+        <location filename="../app/window/main_window.cpp" line="1006"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Command files (*.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1007"/>
+        <location filename="../app/window/main_window.cpp" line="1012"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1007"/>
+        <location filename="../app/window/main_window.cpp" line="1012"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1017"/>
+        <location filename="../app/window/main_window.cpp" line="1022"/>
         <source>Export PNG</source>
         <translation>Export PNG</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1017"/>
+        <location filename="../app/window/main_window.cpp" line="1022"/>
         <location filename="../app/window/main_window_actions.cpp" line="149"/>
         <location filename="../app/window/main_window_actions.cpp" line="156"/>
         <location filename="../app/window/main_window_export.cpp" line="198"/>
@@ -4746,17 +4801,17 @@
         <translation>PNG images (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1022"/>
+        <location filename="../app/window/main_window.cpp" line="1027"/>
         <source>Compare with Image</source>
         <translation>Compare with Image</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1023"/>
+        <location filename="../app/window/main_window.cpp" line="1028"/>
         <source>PNG images (*.png);;All files (*)</source>
         <translation>PNG images (*.png);;All files (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/main_window.cpp" line="1048"/>
+        <location filename="../app/window/main_window.cpp" line="1053"/>
         <source>Compared %1 with our render: %n pixel(s) differ</source>
         <translation>
             <numerusform>Compared %1 with our render: %n pixel differs</numerusform>
@@ -4764,22 +4819,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1056"/>
+        <location filename="../app/window/main_window.cpp" line="1061"/>
         <source>About RasterLab</source>
         <translation>About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1062"/>
+        <location filename="../app/window/main_window.cpp" line="1067"/>
         <source>Released under the MIT License, whose text is in %1.</source>
         <translation>Released under the MIT License, whose text is in %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1064"/>
+        <location filename="../app/window/main_window.cpp" line="1069"/>
         <source>Released under the MIT License.</source>
         <translation>Released under the MIT License.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1065"/>
+        <location filename="../app/window/main_window.cpp" line="1070"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</translation>
     </message>

@@ -137,6 +137,13 @@ QJsonObject toJson(const rl::ImageComparison& c, const QString& image, const QSt
             d[lit("shift")] = QJsonArray{f.slip.shift.x, f.slip.shift.y};
         if (f.mistake == rl::Mistake::ColourOffset || f.mistake == rl::Mistake::ColourScale)
             d[lit("amount")] = f.slip.amount;
+        if (f.mistake == rl::Mistake::CommandMisread) {
+            static const char* const kinds[] = {"ignored", "other-side", "transposed", "radians",
+                                                "unnormalised-side"};
+            d[lit("line")] = f.command.line;
+            d[lit("command")] = QString::fromStdString(f.command.keyword);
+            d[lit("variant")] = QString::fromLatin1(kinds[int(f.command.kind)]);
+        }
         QJsonArray examples;
         for (const rl::PixelExample& e : f.examples)
             examples.append(QJsonObject{{lit("x"), e.x},
@@ -201,6 +208,7 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
 
     rl::Diagnostics diagnostics;
     std::shared_ptr<const rl::Scene> scene;
+    std::size_t imageIndex = 0;  // of a command file's images
     QString sceneLabel;
     // Where our size came from: the options, the lesson, the command file, or their image.
     QString sizeFrom = files.isEmpty() ? (parser.isSet(sceneOptions.size) ? lit("--size")
@@ -238,6 +246,7 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
                 << " images; comparing the first, " << QString::fromStdString(chosen->fileName)
                 << '\n';
         if (int code = checkPixelLimit(*chosen, pixelLimit, err); code != ExitOk) return code;
+        imageIndex = static_cast<std::size_t>(chosen - file->images.data());
         scene = std::make_shared<const rl::Scene>(chosen->scene);
         sceneLabel = QString::fromStdString(chosen->fileName);
     }
@@ -335,7 +344,18 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
     if (!theirFormat.alpha) CompareImage::takeAlpha(ourImage, theirs);
     const Provenance provenance{theirFormat.describe(), sizeFrom, cropped};
 
-    const auto comparison = rl::compareWithOurs(*ours, theirs, theirFormat.tolerance());
+    // A command file: one of its commands misread may be what made their image.
+    std::optional<CommandFileText> commandText;
+    if (!files.isEmpty()) {
+        auto text = readCommandFileText(files.first());
+        if (!text) return inputError(err, text.error());
+        commandText = std::move(text.value());
+    }
+    const auto comparison =
+        commandText ? rl::compareCommandFile(*ours, theirs, theirFormat.tolerance(),
+                                             commandText->text(), commandText->fileName,
+                                             commandText->loader, imageIndex, !theirFormat.alpha)
+                    : rl::compareWithOurs(*ours, theirs, theirFormat.tolerance());
     if (!comparison) return inputError(err, comparison.error());
     QString sink;
     QTextStream quiet(&sink);  // JSON keeps stdout to itself

@@ -38,17 +38,23 @@ rl::Result<std::shared_ptr<const rl::Texture>> loadTexture(const QString& path,
     return std::shared_ptr<const rl::Texture>(std::move(texture));
 }
 
-rl::Result<rl::Hw2File> loadCommandFile(const QString& path, rl::Diagnostics& diagnostics) {
+rl::Result<CommandFileText> readCommandFileText(const QString& path) {
     auto read = readInputFile(path);
     if (!read) return read.error();
-    const QByteArray& bytes = read.value();
     const QDir folder = QFileInfo(path).absoluteDir();
-    const rl::TextureLoader loader = [&folder](const std::string& name,
-                                               const rl::SourceLocation& where) {
+    CommandFileText out;
+    out.bytes = std::move(read.value());
+    out.fileName = path.toStdString();
+    out.loader = [folder](const std::string& name, const rl::SourceLocation& where) {
         return loadTexture(folder.filePath(QString::fromStdString(name)), where);
     };
-    return rl::readHw2(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())),
-                       path.toStdString(), loader, diagnostics);
+    return out;
+}
+
+rl::Result<rl::Hw2File> loadCommandFile(const QString& path, rl::Diagnostics& diagnostics) {
+    auto file = readCommandFileText(path);
+    if (!file) return file.error();
+    return rl::readHw2(file->text(), file->fileName, file->loader, diagnostics);
 }
 
 }  // namespace rasterlab

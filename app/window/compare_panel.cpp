@@ -17,6 +17,7 @@
 #include <functional>
 
 #include "app/compare/compare_image.h"
+#include "app/documents/command_file.h"
 #include "app/image_io.h"
 #include "views/inspection.h"
 #include "views/messages/pipeline_messages.h"
@@ -276,7 +277,16 @@ QString ComparePanel::compare(const QString& path) {
         problem = QString::fromStdString(ours.error().message);
     } else if (problem = CompareImage::sizeMismatch(path, theirs, ours->image);
                problem.isEmpty()) {
-        auto comparison = rl::compareWithOurs(ours.value(), theirs, format.tolerance());
+        const auto [commandFile, imageIndex] =
+            m_commandFile ? m_commandFile() : std::pair<QString, int>();
+        std::optional<CommandFileText> text;
+        if (!commandFile.isEmpty())
+            if (auto read = readCommandFileText(commandFile)) text = std::move(read.value());
+        auto comparison =
+            text ? rl::compareCommandFile(ours.value(), theirs, format.tolerance(), text->text(),
+                                          text->fileName, text->loader,
+                                          static_cast<std::size_t>(imageIndex), !format.alpha)
+                 : rl::compareWithOurs(ours.value(), theirs, format.tolerance());
         if (!comparison) {
             problem = QString::fromStdString(comparison.error().message);
         } else {

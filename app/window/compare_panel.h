@@ -9,8 +9,10 @@
 #include <QTimer>
 #include <QWidget>
 
+#include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "pipeline/analysis/mistakes.h"
 #include "views/lighting_breakdown.h"
@@ -32,6 +34,11 @@ public:
     static constexpr int kFlickerMs = 500;  // each image half a second: two changes a second
 
     explicit ComparePanel(Inspection* inspection, QWidget* parent = nullptr);
+
+    // The command file shown and the index of its image, or an empty path for course files:
+    // a command file's comparison also looks for a misread command (mistakes.h).
+    using CommandFileSource = std::function<std::pair<QString, int>()>;
+    void setCommandFileSource(CommandFileSource source) { m_commandFile = std::move(source); }
 
     // Compares the PNG at `path` with our render of the frame shown: an empty string, or the
     // message saying why it cannot be (the panel then keeps what it showed).
@@ -62,6 +69,7 @@ signals:
     void compared();
 
 private:
+    CommandFileSource m_commandFile;
     void showImages();
     void refreshDifference();
     void refreshTexts();

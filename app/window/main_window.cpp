@@ -348,6 +348,11 @@ void MainWindow::createDocks() {
     // A student's image against ours (File > Compare with Image...): hidden until then, and
     // beside the geometry views, the taller of the two groups on the right.
     m_compare = new ComparePanel(m_inspection);
+    m_compare->setCommandFileSource([this] {
+        return m_document.showsCommandFile()
+                   ? std::pair(m_document.commandFilePath(), m_document.imageIndex())
+                   : std::pair(QString(), 0);
+    });
     m_compareDock =
         stageDock(tr("Compare"), "compareDock", m_compare, tr("Compare with their image"));
     tabifyDockWidget(cameraDock, m_compareDock);

@@ -16,7 +16,7 @@ namespace {
 using Bytes = std::array<std::uint8_t, 4>;
 
 // The names of the mistakes, in the order of the enum.
-constexpr std::array<const char*, kMistakeCount> kIds = {
+constexpr std::array<const char*, kMistakeCount + 1> kIds = {
     "ambient-times-od",
     "normal-not-flipped",
     "specular-where-rv-negative",
@@ -50,6 +50,7 @@ constexpr std::array<const char*, kMistakeCount> kIds = {
     "area-weighted-normals",
     "basis-n-not-normalised",
     "basis-u-reversed",
+    "command-misread",
 };
 
 Bytes bytesAt(const Rgba8Image& image, int x, int y) {
@@ -191,6 +192,8 @@ Message titleOf(const OurFrame& ours, const Slip& slip) {
             return "the camera's N not normalised before V - (V.N)N, nor after"_msg;
         case Mistake::BasisUReversed:
             return "the camera's U = V x N instead of N x V (x runs the other way)"_msg;
+        case Mistake::CommandMisread:
+            return {};  // compareCommandFile titles it, from the misreading
     }
     return {};
 }
@@ -244,6 +247,8 @@ Message mechanismOf(Mistake mistake) {
         case Mistake::BasisUReversed:
             return "the scene rendered again in view coordinates made with that basis gives "
                    "their pixels"_msg;
+        case Mistake::CommandMisread:
+            return "the command file read again with that command so gives their pixels"_msg;
         case Mistake::ColourOffset:
             return "our bytes moved by that constant give their pixels"_msg;
         case Mistake::ColourScale:
@@ -326,6 +331,8 @@ Message hintOf(Mistake mistake) {
                    "across N"_msg;
         case Mistake::BasisUReversed:
             return "seed 000: U = N x V, so that U, V, N is right-handed"_msg;
+        case Mistake::CommandMisread:
+            return {};  // commandHint: it depends on how the command was misread
     }
     return {};
 }
@@ -540,6 +547,13 @@ private:
     std::optional<std::pair<Bytes, Bytes>> m_flat;
     std::map<std::string, std::optional<MistakeFrame>> m_frames;
 };
+
+// How the finding's hypothesis made their pixels, and what it would spoil.
+Message evidenceOf(const Finding& f) {
+    if (f.spoiled == 0) return "%1; no pixel that matches now would change"_msg(mechanismOf(f.mistake));
+    return counted(static_cast<long long>(f.spoiled), "%2; %1 pixel that matches now would differ"_msg,
+                   "%2; %1 pixels that match now would differ"_msg, mechanismOf(f.mistake));
+}
 
 // What a finding changes, from the image before it to the image with it: the differing
 // pixels it makes match, those it spoils, and three examples spread over the first.
@@ -756,12 +770,7 @@ Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& 
         f.share = double(f.removed) / double(out.difference);
         countPixels(before, after, theirs, out.tolerance, f);
         f.title = titleOf(ours, f.slip);
-        f.evidence = f.spoiled == 0
-                         ? "%1; no pixel that matches now would change"_msg(mechanismOf(f.mistake))
-                         : counted(static_cast<long long>(f.spoiled),
-                                   "%2; %1 pixel that matches now would differ"_msg,
-                                   "%2; %1 pixels that match now would differ"_msg,
-                                   mechanismOf(f.mistake));
+        f.evidence = evidenceOf(f);
         f.advice = hintOf(f.mistake);
         out.diagnosis.push_back(std::move(f));
         before = std::move(after);
@@ -773,6 +782,120 @@ Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& 
         for (int x = 0; x < theirs.width; ++x)
             out.unexplainedPixels +=
                 distance(bytesAt(current, x, y), bytesAt(theirs, x, y)) > out.tolerance ? 1 : 0;
+    return out;
+}
+
+namespace {
+
+// How a command was misread, for the finding's title and advice.
+Message misreadingTitle(const Hw2Misreading& m) {
+    using Kind = Hw2Misreading::Kind;
+    switch (m.kind) {
+        case Kind::Ignored:
+            return "line %1: '%2' ignored"_msg(m.line, m.keyword);
+        case Kind::OtherSide:
+            return "line %1: '%2' multiplied on the other side (M = A M instead of M A)"_msg(
+                m.line, m.keyword);
+        case Kind::Transposed:
+            return "line %1: '%2' read column by column (the matrix transposed)"_msg(m.line,
+                                                                                   m.keyword);
+        case Kind::Radians:
+            return "line %1: '%2' with its angle taken as radians"_msg(m.line, m.keyword);
+        case Kind::UnnormalisedSide:
+            return "line %1: '%2' with s = f x up not normalised (the image stretched "
+                   "across)"_msg(m.line, m.keyword);
+    }
+    return {};
+}
+
+Message misreadingHint(const Hw2Misreading& m) {
+    using Kind = Hw2Misreading::Kind;
+    switch (m.kind) {
+        case Kind::Ignored:
+            return "check that your program reads '%1' and applies it"_msg(m.keyword);
+        case Kind::OtherSide:
+            return "seed 001: a transform multiplies the model/view on the right, M = M A"_msg;
+        case Kind::Transposed:
+            return "seed 001 writes a matrix row by row: the first four numbers are its first "
+                   "row"_msg;
+        case Kind::Radians:
+            return "seed 001's angles are in degrees: convert them before sin and cos"_msg;
+        case Kind::UnnormalisedSide:
+            return "lookat: normalise s = f x up before it goes into the matrix"_msg;
+    }
+    return {};
+}
+
+}  // namespace
+
+Result<ImageComparison> compareCommandFile(const OurFrame& ours, const Rgba8Image& theirs,
+                                           int tolerance, std::string_view text,
+                                           const std::string& fileName,
+                                           const TextureLoader& loadTexture, std::size_t index,
+                                           bool colourOnly) {
+    auto base = compareWithOurs(ours, theirs, tolerance);
+    if (!base || base->differing == 0 || base->unlit) return base;
+    const double whole = double(base->difference);
+    // The misreadings whose frames come nearest theirs; of the three nearest, the one that
+    // leaves least with the catalogue's mistakes on top.
+    struct Candidate {
+        Hw2Misreading misreading;
+        OurFrame frame;
+        std::uint64_t difference = 0;
+    };
+    std::vector<Candidate> candidates;
+    for (const Hw2Misreading& misreading : possibleMisreadings(text)) {
+        Diagnostics quiet;
+        auto file = readHw2(text, fileName, loadTexture, quiet, &misreading);
+        if (!file || index >= file->images.size()) continue;
+        auto frame = renderOurFrame(std::make_shared<const Scene>(file->images[index].scene));
+        if (!frame || frame->image.width != theirs.width || frame->image.height != theirs.height)
+            continue;
+        // Their format has no alpha: theirs was given ours (compare_image.h), and colours
+        // alone are compared.
+        if (colourOnly)
+            for (std::size_t i = 3; i < frame->image.rgba.size(); i += 4)
+                frame->image.rgba[i] = theirs.rgba[i];
+        const std::uint64_t d = differenceOf(frame->image, theirs);
+        if (double(base->difference) - double(d) >= kLeastShare * whole)
+            candidates.push_back({misreading, std::move(frame.value()), d});
+    }
+    std::sort(candidates.begin(), candidates.end(),
+              [](const Candidate& a, const Candidate& b) { return a.difference < b.difference; });
+    if (candidates.size() > kBeamWidth) candidates.resize(kBeamWidth);
+    const Candidate* best = nullptr;
+    std::optional<ImageComparison> onIt;
+    double left = base->unexplained * whole - kLeastShare * whole;  // one finding's worth less
+    for (const Candidate& c : candidates) {
+        auto composed = compareWithOurs(c.frame, theirs, tolerance);
+        if (!composed) return composed.error();
+        const double remains = composed->unexplained * double(composed->difference);
+        if (remains < left) {
+            left = remains;
+            best = &c;
+            onIt = std::move(composed.value());
+        }
+    }
+    if (!best) return base;
+    ImageComparison out = std::move(base.value());
+    Finding f;
+    f.mistake = Mistake::CommandMisread;
+    f.command = best->misreading;
+    f.slip.mistake = Mistake::CommandMisread;
+    f.removed = out.difference - best->difference;
+    f.share = double(f.removed) / whole;
+    countPixels(ours.image, best->frame.image, theirs, out.tolerance, f);
+    f.title = misreadingTitle(best->misreading);
+    f.evidence = evidenceOf(f);
+    f.advice = misreadingHint(best->misreading);
+    out.diagnosis.clear();
+    out.diagnosis.push_back(std::move(f));
+    for (Finding& g : onIt->diagnosis) {
+        g.share = double(g.removed) / whole;
+        out.diagnosis.push_back(std::move(g));
+    }
+    out.unexplained = left / whole;
+    out.unexplainedPixels = onIt->unexplainedPixels;
     return out;
 }
 

@@ -23,6 +23,7 @@
 #include "pipeline/core/diagnostics.h"
 #include "pipeline/core/math.h"
 #include "pipeline/core/message.h"
+#include "pipeline/io/hw2_reader.h"
 #include "pipeline/render/frame_trace.h"
 #include "pipeline/render/output_image.h"
 #include "pipeline/scene/scene.h"
@@ -65,8 +66,10 @@ enum class Mistake : std::uint8_t {
     AreaWeightedNormals,        // triangle normals summed before they are normalised
     BasisNNotNormalised,        // N not normalised before V - (V.N) N, nor after
     BasisUReversed,             // U = V x N instead of N x V
+    CommandMisread,  // a command file's command misread (compareCommandFile; Finding::command)
 };
 
+// The mistakes the search composes (CommandMisread is found by compareCommandFile alone).
 inline constexpr std::size_t kMistakeCount = 33;
 
 // The small number a student tests the special cases against (EpsilonSpecialCases).
@@ -125,6 +128,7 @@ struct Finding {
     std::uint64_t removed = 0;
     double share = 0.0;
     std::vector<PixelExample> examples;
+    Hw2Misreading command;  // CommandMisread: the line and how it was misread
 };
 
 // A mistake that removes less than this share of the difference is not reported: chance, or
@@ -170,6 +174,18 @@ struct ImageComparison {
 // is compared with a tolerance: channels that differ by at most that much count as the same.
 Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& theirs,
                                         int tolerance = 0);
+
+// A command file's image (image `index` of the text): the comparison as compareWithOurs
+// makes it, unless one command misread (each of possibleMisreadings in turn: ignored,
+// multiplied on the other side, transposed, its angle in radians, lookat's side vector
+// unnormalised) leaves less unexplained with the catalogue's mistakes on top. Then that
+// command is the first finding, "line 12: 'multmv' ignored", and the rest are ranked on it.
+// colourOnly: their format has no alpha, so theirs holds ours and only colours count.
+Result<ImageComparison> compareCommandFile(const OurFrame& ours, const Rgba8Image& theirs,
+                                           int tolerance, std::string_view text,
+                                           const std::string& fileName,
+                                           const TextureLoader& loadTexture, std::size_t index,
+                                           bool colourOnly);
 
 // Where their larger image holds ours exactly (a screenshot with a window border): the
 // offset of our top-left pixel in theirs; none when no offset matches 95% of ours.

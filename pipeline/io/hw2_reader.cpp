@@ -60,11 +60,24 @@ bool isKnown(std::string_view keyword) {
            std::end(kKnownCommands);
 }
 
+// gluLookAt with s = f x up left at its length: the image stretched across by |f x up|.
+dmat4 lookAtWithUnnormalisedSide(const dvec3& eye, const dvec3& center, const dvec3& up) {
+    const double length = glm::length(glm::cross(glm::normalize(center - eye), up));
+    // Row 0 is s (and its part of the translation by -eye): scaled by |s|.
+    dmat4 out = lookAtMatrix(eye, center, up);
+    for (int column = 0; column < 4; ++column) out[column][0] *= length;
+    return out;
+}
+
 class Hw2Reader {
 public:
     Hw2Reader(std::string_view text, const std::string& fileName, const TextureLoader& loader,
-              Diagnostics& diagnostics)
-        : m_text(text), m_scanner(text, fileName), m_loader(loader), m_diagnostics(diagnostics) {}
+              Diagnostics& diagnostics, const Hw2Misreading* misreading)
+        : m_text(text),
+          m_scanner(text, fileName),
+          m_loader(loader),
+          m_diagnostics(diagnostics),
+          m_misreading(misreading) {}
 
     Result<Hw2File> read();
 
@@ -116,6 +129,21 @@ private:
     LineScanner m_scanner;
     const TextureLoader& m_loader;
     Diagnostics& m_diagnostics;
+    const Hw2Misreading* m_misreading = nullptr;
+    // Whether the command on this line is misread that way.
+    bool misread(const TextLine& line, Hw2Misreading::Kind kind) const {
+        return m_misreading && m_misreading->line == line.number && m_misreading->kind == kind;
+    }
+    // An angle in degrees, or misread as radians (the number used as radians is that many
+    // times 180/pi degrees).
+    double degreesRead(const TextLine& line, double degrees) const {
+        return misread(line, Hw2Misreading::Kind::Radians) ? glm::degrees(degrees) : degrees;
+    }
+    // The model/view with a transform added: on the right, or misread on the left.
+    void addToModelView(const TextLine& line, const dmat4& a) {
+        m_modelView = misread(line, Hw2Misreading::Kind::OtherSide) ? a * m_modelView
+                                                                      : m_modelView * a;
+    }
 
     Hw2File m_file;
     std::optional<Hw2Image> m_image;
@@ -362,6 +390,7 @@ Status Hw2Reader::command(const TextLine& line) {
         if (seen.first++ == 0) seen.second = where;
         return success();
     }
+    if (misread(line, Hw2Misreading::Kind::Ignored)) return success();
     if (keyword == "png") return readImage(line);
     if (keyword == "xyz" || keyword == "xyzw") return readVertex(line);
     if (keyword == "color") return readColour(line);
@@ -539,11 +568,12 @@ Status Hw2Reader::readMatrix(const TextLine& line) {
     if (!v) return v.error();
     double rows[16];
     std::copy(v->begin(), v->end(), rows);
-    const dmat4 m = matrixFromRows(rows);
+    dmat4 m = matrixFromRows(rows);
+    if (misread(line, Hw2Misreading::Kind::Transposed)) m = glm::transpose(m);
     if (keyword == "loadmv")
         m_modelView = m;
     else if (keyword == "multmv")
-        m_modelView = m_modelView * m;
+        addToModelView(line, m);
     else
         m_projection = m;
     return success();
@@ -572,7 +602,7 @@ Status Hw2Reader::readTranslateOrScale(const TextLine& line) {
     auto v = numbers(line, 3, keyword == "translate" ? "dx dy dz"_msg : "sx sy sz"_msg);
     if (!v) return v.error();
     const dvec3 d(v->at(0), v->at(1), v->at(2));
-    m_modelView = m_modelView * (keyword == "translate" ? translationMatrix(d) : scaleMatrix(d));
+    addToModelView(line, keyword == "translate" ? translationMatrix(d) : scaleMatrix(d));
     return success();
 }
 
@@ -584,7 +614,7 @@ Status Hw2Reader::readAxisRotation(const TextLine& line) {
     const dvec3 axis = keyword == "rotatex"   ? dvec3(1, 0, 0)
                        : keyword == "rotatey" ? dvec3(0, 1, 0)
                                               : dvec3(0, 0, 1);
-    m_modelView = m_modelView * rotationMatrix(v->at(0), axis);
+    addToModelView(line, rotationMatrix(degreesRead(line, v->at(0)), axis));
     return success();
 }
 
@@ -596,7 +626,7 @@ Status Hw2Reader::readRotation(const TextLine& line) {
     if (axis == dvec3(0.0))
         return makeError(ErrorCode::Degenerate, m_scanner.at(line.tokens[2]),
                          "'rotate' needs an axis, found the zero vector"_msg);
-    m_modelView = m_modelView * rotationMatrix(v->at(0), axis);
+    addToModelView(line, rotationMatrix(degreesRead(line, v->at(0)), axis));
     return success();
 }
 
@@ -630,7 +660,9 @@ Status Hw2Reader::readLookAt(const TextLine& line) {
         return makeError(ErrorCode::Degenerate, where,
                          "'lookat' needs an eye apart from the center and an up that is "
                          "not along the line of sight"_msg);
-    m_modelView = lookAtMatrix(eye, center, up);
+    m_modelView = misread(line, Hw2Misreading::Kind::UnnormalisedSide)
+                      ? lookAtWithUnnormalisedSide(eye, center, up)
+                      : lookAtMatrix(eye, center, up);
     return success();
 }
 
@@ -702,9 +734,34 @@ Status Hw2Reader::readShininess(const TextLine& line) {
 }  // namespace
 
 Result<Hw2File> readHw2(std::string_view text, const std::string& fileName,
-                        const TextureLoader& loadTexture, Diagnostics& diagnostics) {
-    Hw2Reader reader(text, fileName, loadTexture, diagnostics);
+                        const TextureLoader& loadTexture, Diagnostics& diagnostics,
+                        const Hw2Misreading* misreading) {
+    Hw2Reader reader(text, fileName, loadTexture, diagnostics, misreading);
     return reader.read();
+}
+
+std::vector<Hw2Misreading> possibleMisreadings(std::string_view text) {
+    using Kind = Hw2Misreading::Kind;
+    std::vector<Hw2Misreading> out;
+    LineScanner scanner(text, "");
+    TextLine line;
+    while (scanner.next(line)) {
+        const std::string keyword(line.tokens[0].text);
+        const auto add = [&](Kind kind) { out.push_back({line.number, kind, keyword}); };
+        const bool transform = keyword == "translate" || keyword == "scale" ||
+                               keyword == "rotate" || keyword.starts_with("rotate") ||
+                               keyword == "multmv";
+        const bool matrix = keyword == "loadmv" || keyword == "multmv" || keyword == "loadp";
+        if (!transform && !matrix && keyword != "lookat" && keyword != "frustum" &&
+            keyword != "ortho")
+            continue;
+        add(Kind::Ignored);
+        if (transform) add(Kind::OtherSide);
+        if (matrix) add(Kind::Transposed);
+        if (keyword.starts_with("rotate")) add(Kind::Radians);
+        if (keyword == "lookat") add(Kind::UnnormalisedSide);
+    }
+    return out;
 }
 
 bool looksLikeHw2(std::string_view text) {

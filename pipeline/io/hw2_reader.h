@@ -8,6 +8,7 @@
 // file:line:col.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -35,8 +36,24 @@ struct Hw2File {
 using TextureLoader = std::function<Result<std::shared_ptr<const Texture>>(
     const std::string& name, const SourceLocation& where)>;
 
+// One command read the way a student's program may get it wrong, for compare's search for
+// the command behind their image: the command on `line` ignored; its matrix multiplied on
+// the other side (M = A M instead of M A); its sixteen numbers taken column by column; its
+// angle taken as radians; or lookat's side vector s = f x up left unnormalised.
+struct Hw2Misreading {
+    enum class Kind : std::uint8_t { Ignored, OtherSide, Transposed, Radians, UnnormalisedSide };
+    int line = 0;
+    Kind kind = Kind::Ignored;
+    std::string keyword;  // the command on that line
+};
+
+// Reads the text; with a misreading, that one command as it says.
 Result<Hw2File> readHw2(std::string_view text, const std::string& fileName,
-                        const TextureLoader& loadTexture, Diagnostics& diagnostics);
+                        const TextureLoader& loadTexture, Diagnostics& diagnostics,
+                        const Hw2Misreading* misreading = nullptr);
+
+// Every misreading that changes a matrix command of the text, in line order.
+std::vector<Hw2Misreading> possibleMisreadings(std::string_view text);
 
 // Whether a text looks like a command file: its first command line starts with a known
 // keyword (png, xyz, ...). Used to tell command files from course files.
