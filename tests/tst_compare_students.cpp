@@ -1,19 +1,23 @@
 // rasterlab-cli compare on images no RasterLab code made: examples/student/python's
 // rasterizer, written from the seed alone, with one, two or three of its mistakes switched
 // on. Each switched-on mistake must be found (the dominant one first when there is one), and
-// what stays unexplained must be small; an unlit image is compared as coverage; an image
-// no mistake of the catalogue made (their light elsewhere) is said to be mostly unexplained.
+// what stays unexplained must be small; an unlit image is compared as coverage; their light
+// elsewhere is found by fitting the lighting to their colours; an image no mistake of the
+// catalogue made (gamma-encoded bytes) is said to be mostly unexplained.
 #include <QtTest>
 
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QFile>
+#include <QImage>
 #include <QJsonObject>
+#include <QMap>
 #include <QProcess>
 #include <QRandomGenerator>
 #include <QTemporaryDir>
 
 #include <algorithm>
+#include <cmath>
 
 #include "tests/test_support.h"
 
@@ -142,6 +146,8 @@ private slots:
     void severalMistakes();
     void unlitImageComparesCoverage();
     void unknownMistakeIsUnexplained();
+    void fittedLightingComposes();
+    void fitsWhatTheirLightingUsed();
 };
 
 void TestCompareStudents::oneMistake_data() {
@@ -267,24 +273,44 @@ void TestCompareStudents::unlitImageComparesCoverage() {
                  result[QStringLiteral("onlyTheirs")].toInteger());
 }
 
-void TestCompareStudents::unknownMistakeIsUnexplained() {
-    // Their light somewhere else: a value, not a mistake of the catalogue. Whatever the search
-    // finds, most of the differing pixels stay, and compare says so.
-    QTemporaryDir dir;
-    QVERIFY(dir.isValid());
+namespace {
+
+// Their goblet with its light somewhere else, written in the course's lighting file.
+QString movedLightImage(const QTemporaryDir& dir, const QStringList& switches, QString& problem) {
     CourseScene theirScene = lesson(QStringLiteral("goblet"));
     QFile lighting(theirScene.lighting);
-    QVERIFY(lighting.open(QIODevice::ReadOnly));
+    if (!lighting.open(QIODevice::ReadOnly)) return {};
     QStringList lines = QString::fromUtf8(lighting.readAll()).split(QLatin1Char('\n'));
-    lines[0] = QStringLiteral("-300 -100 50");  // Pl
+    lines[0] = QStringLiteral("-300 -100 50");  // Pl, world
     theirScene.lighting = dir.filePath(QStringLiteral("moved.txt"));
     QFile moved(theirScene.lighting);
-    QVERIFY(moved.open(QIODevice::WriteOnly));
+    if (!moved.open(QIODevice::WriteOnly)) return {};
     moved.write(lines.join(QLatin1Char('\n')).toUtf8());
     moved.close();
+    return studentImage(dir, theirScene, switches, problem);
+}
+
+}  // namespace
+
+void TestCompareStudents::unknownMistakeIsUnexplained() {
+    // Their bytes gamma-encoded (255 (c / 255)^(1 / 2.2)): no mistake of the catalogue, and
+    // no lighting, makes that curve. Whatever the search finds, most of the differing pixels
+    // stay, and compare says so.
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
     QString problem;
-    const QString image = studentImage(dir, theirScene, {}, problem);
+    const QString image = studentImage(dir, lesson("goblet"), {}, problem);
     QVERIFY2(!image.isEmpty(), qPrintable(problem));
+    QImage encoded(image);
+    QVERIFY(!encoded.isNull());
+    encoded = encoded.convertToFormat(QImage::Format_RGB32);
+    const auto gamma = [](int c) { return int(std::lround(255.0 * std::pow(c / 255.0, 1.0 / 2.2))); };
+    for (int y = 0; y < encoded.height(); ++y)
+        for (int x = 0; x < encoded.width(); ++x) {
+            const QRgb p = encoded.pixel(x, y);
+            encoded.setPixel(x, y, qRgb(gamma(qRed(p)), gamma(qGreen(p)), gamma(qBlue(p))));
+        }
+    QVERIFY(encoded.save(image));
     CliRun run;
     QVERIFY2(runCli(QStringList{QStringLiteral("compare")} + lesson("goblet").options() +
                         QStringList{QStringLiteral("--image"), image},
@@ -302,6 +328,87 @@ void TestCompareStudents::unknownMistakeIsUnexplained() {
     QVERIFY2(unexplained[QStringLiteral("pixels")].toInteger() * 2 >
                  result[QStringLiteral("differing")].toInteger(),
              qPrintable(ranking(result)));
+}
+
+// Their light elsewhere (a value, not a catalogued mistake) and their vertices rounded: ours
+// rendered with the lighting fitted to their colours comes first, the rounding after it. The
+// moved light is far (view (-300, -113.29, -0.73)), so its distance is loosely fitted, and
+// its direction closely: within 5 degrees.
+void TestCompareStudents::fittedLightingComposes() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QString problem;
+    const QString image = movedLightImage(dir, {"--round-vertices"}, problem);
+    QVERIFY2(!image.isEmpty(), qPrintable(problem));
+    CliRun run;
+    const QJsonObject result = compareJson(dir, lesson("goblet"), image, run);
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    QStringList found;
+    for (const auto& d : result[QStringLiteral("diagnosis")].toArray())
+        found += d[QStringLiteral("mistake")].toString();
+    QCOMPARE(found.value(0), QStringLiteral("fitted-lighting"));
+    QVERIFY2(found.contains(QStringLiteral("vertex-snap")), qPrintable(ranking(result)));
+    QVERIFY2(result[QStringLiteral("unexplained")][QStringLiteral("share")].toDouble() <= 0.03,
+             qPrintable(ranking(result)));
+    const double expected[] = {-300.0, -113.29, -0.73};
+    const QJsonArray values = result[QStringLiteral("lightingFit")][QStringLiteral("values")].toArray();
+    double dot = 0.0, fitted = 0.0, moved = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const double v = values[k][QStringLiteral("theirs")].toDouble();
+        dot += v * expected[k];
+        fitted += v * v;
+        moved += expected[k] * expected[k];
+    }
+    const double degrees = std::acos(std::min(1.0, dot / std::sqrt(fitted * moved))) * 180.0 / M_PI;
+    QVERIFY2(degrees < 5.0, qPrintable(QString::number(degrees)));
+}
+
+// The lighting fitted to their colours: where their light effectively was, and their ambient
+// term, against what the student's program was given.
+void TestCompareStudents::fitsWhatTheirLightingUsed() {
+    const auto fitOf = [](const QJsonObject& result) {
+        QMap<QString, QJsonObject> values;
+        for (const auto& v : result[QStringLiteral("lightingFit")][QStringLiteral("values")].toArray())
+            values[v[QStringLiteral("name")].toString()] = v.toObject();
+        return values;
+    };
+    {
+        // The light left in world coordinates: fitted at the world position (-6, 9, 8).
+        COMPARE_STUDENT(result, QStringLiteral("goblet"), QStringList{"--light-in-world"});
+        const QJsonObject fit = result[QStringLiteral("lightingFit")].toObject();
+        QVERIFY2(fit[QStringLiteral("fitted")].toBool(), qPrintable(run.out));
+        QCOMPARE(fit[QStringLiteral("matches")].toString(), QStringLiteral("light-in-world"));
+        const auto values = fitOf(result);
+        QVERIFY(std::abs(values["light x (view)"]["theirs"].toDouble() - -6.0) < 0.1);
+        QVERIFY(std::abs(values["light y (view)"]["theirs"].toDouble() - 9.0) < 0.1);
+        QVERIFY(std::abs(values["light z (view)"]["theirs"].toDouble() - 8.0) < 0.1);
+        QVERIFY(fit[QStringLiteral("rmsFitted")].toDouble() < 1.0);
+        QVERIFY(fit[QStringLiteral("rmsOurs")].toDouble() > 10.0);
+    }
+    {
+        // Ia ka Od: the fitted ambient is (14, 14, 16) times Od (0.85, 0.65, 0.25), and the
+        // light is where ours is.
+        COMPARE_STUDENT(result, QStringLiteral("goblet"), QStringList{"--ambient-times-od"});
+        const auto values = fitOf(result);
+        const double expected[] = {14 * 0.85, 14 * 0.65, 16 * 0.25};
+        const char* names[] = {"ambient Ia*ka R", "ambient Ia*ka G", "ambient Ia*ka B"};
+        for (int c = 0; c < 3; ++c) {
+            const QJsonObject v = values[QString::fromLatin1(names[c])];
+            QVERIFY2(std::abs(v["theirs"].toDouble() - expected[c]) < 0.6, names[c]);
+            QVERIFY(v["differs"].toBool());
+        }
+        QVERIFY(!values["light x (view)"]["differs"].toBool());
+        QVERIFY(!values["n"]["differs"].toBool());
+    }
+    {
+        // Their own image (one pixel one unit off, where double and float round apart): the
+        // fit finds every value as ours.
+        COMPARE_STUDENT(result, QStringLiteral("goblet"), QStringList{});
+        QCOMPARE(result[QStringLiteral("differing")].toInteger(), 1);
+        QCOMPARE(fitOf(result).size(), 13);  // the light's x, y, z, n, and A, D, S per channel
+        for (const QJsonObject& v : fitOf(result))
+            QVERIFY2(!v["differs"].toBool(), qPrintable(v["name"].toString()));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestCompareStudents)

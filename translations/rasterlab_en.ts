@@ -2000,417 +2000,467 @@
         <translation>the alpha written with each shaded pixel</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="593"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="594"/>
+        <source>the scene rendered again with the fitted lighting gives their pixels</source>
+        <translation>the scene rendered again with the fitted lighting gives their pixels</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="595"/>
+        <source>compare the light&apos;s position, the intensities and the coefficients your program uses with the fitted ones</source>
+        <translation>compare the light's position, the intensities and the coefficients your program uses with the fitted ones</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="596"/>
+        <source>their lighting, fitted to their colours: %1</source>
+        <translation>their lighting, fitted to their colours: %1</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="597"/>
+        <source>the lighting is fitted for a course camera and one positional light of the course&apos;s model</source>
+        <translation>the lighting is fitted for a course camera and one positional light of the course&apos;s model</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="598"/>
+        <source>the lighting is fitted for Phong-shaded draws of one material</source>
+        <translation>the lighting is fitted for Phong-shaded draws of one material</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="599"/>
+        <source>too few unclamped pixels inside triangles to fit the lighting</source>
+        <translation>too few unclamped pixels inside triangles to fit the lighting</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="600"/>
+        <source>the fitted light is at the light&apos;s world position: it was not taken to view coordinates</source>
+        <translation>the fitted light is at the light&apos;s world position: it was not taken to view coordinates</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="601"/>
+        <source>the fitted light is at [I] Pl: C was not subtracted</source>
+        <translation>the fitted light is at [I] Pl: C was not subtracted</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
+        <source>the fitted light is ours with %1 negated</source>
+        <translation>the fitted light is ours with %1 negated</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="603"/>
+        <source>the fitted n is half of ours: n halved</source>
+        <translation>the fitted n is half of ours: n halved</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
         <source>the command file read again with that command so gives their pixels</source>
         <translation>the command file read again with that command so gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="594"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
         <source>line %1: &apos;%2&apos; ignored</source>
-        <translation>line %1: '%2' ignored</translation>
+        <translation>line %1: &apos;%2&apos; ignored</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="595"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
         <source>line %1: &apos;%2&apos; multiplied on the other side (M = A M instead of M A)</source>
-        <translation>line %1: '%2' multiplied on the other side (M = A M instead of M A)</translation>
+        <translation>line %1: &apos;%2&apos; multiplied on the other side (M = A M instead of M A)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="596"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
         <source>line %1: &apos;%2&apos; read column by column (the matrix transposed)</source>
-        <translation>line %1: '%2' read column by column (the matrix transposed)</translation>
+        <translation>line %1: &apos;%2&apos; read column by column (the matrix transposed)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="597"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
         <source>line %1: &apos;%2&apos; with its angle taken as radians</source>
-        <translation>line %1: '%2' with its angle taken as radians</translation>
+        <translation>line %1: &apos;%2&apos; with its angle taken as radians</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="598"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
         <source>line %1: &apos;%2&apos; with s = f x up not normalised (the image stretched across)</source>
-        <translation>line %1: '%2' with s = f x up not normalised (the image stretched across)</translation>
+        <translation>line %1: &apos;%2&apos; with s = f x up not normalised (the image stretched across)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="599"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="610"/>
         <source>check that your program reads &apos;%1&apos; and applies it</source>
-        <translation>check that your program reads '%1' and applies it</translation>
+        <translation>check that your program reads &apos;%1&apos; and applies it</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="600"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
         <source>seed 001: a transform multiplies the model/view on the right, M = M A</source>
         <translation>seed 001: a transform multiplies the model/view on the right, M = M A</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="601"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
         <source>seed 001 writes a matrix row by row: the first four numbers are its first row</source>
         <translation>seed 001 writes a matrix row by row: the first four numbers are its first row</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
         <source>seed 001&apos;s angles are in degrees: convert them before sin and cos</source>
-        <translation>seed 001's angles are in degrees: convert them before sin and cos</translation>
+        <translation>seed 001&apos;s angles are in degrees: convert them before sin and cos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="603"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
         <source>lookat: normalise s = f x up before it goes into the matrix</source>
         <translation>lookat: normalise s = f x up before it goes into the matrix</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
         <source>the camera&apos;s N not normalised before V - (V.N)N, nor after</source>
         <translation>the camera&apos;s N not normalised before V - (V.N)N, nor after</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
         <source>the camera&apos;s U = V x N instead of N x V (x runs the other way)</source>
         <translation>the camera&apos;s U = V x N instead of N x V (x runs the other way)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
         <source>the scene rendered again in view coordinates made with that basis gives their pixels</source>
         <translation>the scene rendered again in view coordinates made with that basis gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
         <source>seed 000&apos;s Gram-Schmidt: normalise N first, then V - (V.N)N is V&apos;s part across N</source>
         <translation>seed 000&apos;s Gram-Schmidt: normalise N first, then V - (V.N)N is V&apos;s part across N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
         <source>seed 000: U = N x V, so that U, V, N is right-handed</source>
         <translation>seed 000: U = N x V, so that U, V, N is right-handed</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
         <source>the vertex normals left at the length of their sums (not normalised)</source>
         <translation>the vertex normals left at the length of their sums (not normalised)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="610"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
         <source>the triangle normals summed at their length (area-weighted) instead of normalised first</source>
         <translation>the triangle normals summed at their length (area-weighted) instead of normalised first</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
         <source>seed 000: each vertex normal is the normalised sum of its triangles&apos; normals</source>
         <translation>seed 000: each vertex normal is the normalised sum of its triangles&apos; normals</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
         <source>normalise each triangle&apos;s normal before adding it to its vertices</source>
         <translation>normalise each triangle&apos;s normal before adding it to its vertices</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
         <source>the light not taken to view coordinates: its world position used as Pl_view</source>
         <translation>the light not taken to view coordinates: its world position used as Pl_view</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
         <source>the light taken to view coordinates without subtracting C: [I] Pl instead of [I](Pl - C)</source>
         <translation>the light taken to view coordinates without subtracting C: [I] Pl instead of [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
         <source>V = P&apos; instead of -P&apos; (L = P&apos; - Pl gives the same image)</source>
         <translation>V = P&apos; instead of -P&apos; (L = P&apos; - Pl gives the same image)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
         <source>the ambient term Ia instead of Ia*ka</source>
         <translation>the ambient term Ia instead of Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
         <source>each Phong term truncated to a whole byte before the sum</source>
         <translation>each Phong term truncated to a whole byte before the sum</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
         <source>V.N, N.L and R.V tested against %1 instead of 0</source>
         <translation>V.N, N.L and R.V tested against %1 instead of 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
         <source>the depth test reversed: the farther fragment wins (&gt; against a buffer cleared to -infinity, or to 0)</source>
         <translation>the depth test reversed: the farther fragment wins (&gt; against a buffer cleared to -infinity, or to 0)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
         <source>every covered pixel&apos;s colour off by %1 (a constant offset)</source>
         <translation>every covered pixel&apos;s colour off by %1 (a constant offset)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
         <source>every colour multiplied by %1 (a constant scale)</source>
         <translation>every colour multiplied by %1 (a constant scale)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="633"/>
         <source>the scene rendered again with the light where that transform puts it gives their pixels</source>
         <translation>the scene rendered again with the light where that transform puts it gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
         <source>the scene rendered again with the farther fragment winning gives their pixels</source>
         <translation>the scene rendered again with the farther fragment winning gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
         <source>our bytes moved by that constant give their pixels</source>
         <translation>our bytes moved by that constant give their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
         <source>our colours multiplied by that constant give their pixels</source>
         <translation>our colours multiplied by that constant give their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
         <source>seed 000: the light goes to view coordinates as the vertices do, Pl_view = [I](Pl - C)</source>
         <translation>seed 000: the light goes to view coordinates as the vertices do, Pl_view = [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
         <source>seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis</source>
         <translation>seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
         <source>V points from the surface to the camera: V = -P&apos; in view coordinates, and L = Pl - P&apos;</source>
         <translation>V points from the surface to the camera: V = -P&apos; in view coordinates, and L = Pl - P&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
         <source>seed 000&apos;s ambient term is Ia*ka</source>
         <translation>seed 000&apos;s ambient term is Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
         <source>add the terms as real numbers and make a byte once, at the end</source>
         <translation>add the terms as real numbers and make a byte once, at the end</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
         <source>seed 000&apos;s special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</source>
         <translation>seed 000&apos;s special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="643"/>
         <source>the z-buffer starts at +infinity and a fragment is written when its z is smaller</source>
         <translation>the z-buffer starts at +infinity and a fragment is written when its z is smaller</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="633"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
         <source>look for a constant added to every colour, or bytes made with an offset</source>
         <translation>look for a constant added to every colour, or bytes made with an offset</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
         <source>look for a factor on every colour: an intensity scaled, or another colour scale</source>
         <translation>look for a factor on every colour: an intensity scaled, or another colour scale</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
         <source>%1; no pixel that matches now would change</source>
         <translation>%1; no pixel that matches now would change</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
         <source>%2; %1 pixel that matches now would differ</source>
         <translation>%2; %1 pixel that matches now would differ</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="648"/>
         <source>%2; %1 pixels that match now would differ</source>
         <translation>%2; %1 pixels that match now would differ</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
         <source>cannot read the texture %1: %2</source>
         <translation>cannot read the texture %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="652"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="657"/>
         <source>cannot open: %1</source>
         <translation>cannot open: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="658"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>the file has %1 MiB, more than the %2 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>the file has more than the %1 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="651"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="662"/>
         <source>not enough memory to read this file</source>
         <translation>not enough memory to read this file</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="652"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="663"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="655"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="666"/>
         <source>the object is not edited, so not saved</source>
         <translation>the object is not edited, so not saved</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="656"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="667"/>
         <source>cannot write into the built-in resources</source>
         <translation>cannot write into the built-in resources</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="657"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="668"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>the camera was not saved, as it would not load again: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="658"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="669"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>not saved: the text written does not read back as the same values</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
         <source>cannot write the file: %1</source>
         <translation>cannot write the file: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="661"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="672"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>only %1 of %2 bytes could be written (is the disk full?)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="662"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="673"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>cannot write the file (it is left as it was): %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="664"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="675"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[rows, fragments], two whole numbers</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="676"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[width, height], whole numbers from %1 to %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="666"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="677"/>
         <source>a list</source>
         <translation>a list</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="667"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="678"/>
         <source>a list of %1 numbers</source>
         <translation>a list of %1 numbers</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="668"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="679"/>
         <source>a list of 1 to 8 lights</source>
         <translation>a list of 1 to 8 lights</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="669"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="680"/>
         <source>a list of dock names</source>
         <translation>a list of dock names</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="670"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="681"/>
         <source>a number</source>
         <translation>a number</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="682"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>a positive number or &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="672"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="683"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>a positive number or &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="673"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
         <source>a whole number from %1</source>
         <translation>a whole number from %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="674"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
         <source>an object</source>
         <translation>an object</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="675"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="686"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>expected %1 for &quot;%2&quot;, found %3</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="676"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="687"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="678"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="689"/>
         <source>not a lesson file: %1</source>
         <translation>not a lesson file: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="679"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="690"/>
         <source>nothing</source>
         <translation>nothing</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="680"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="691"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="681"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="692"/>
         <source>one of %1</source>
         <translation>one of %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="682"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="693"/>
         <source>text in quotes</source>
         <translation>text in quotes</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="683"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="694"/>
         <source>the text &apos;%1&apos;</source>
         <translation>the text &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="695"/>
         <source>true or false</source>
         <translation>true or false</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="696"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>unknown key &quot;%1&quot; ignored (known here: %2)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="720"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="731"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="726"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="737"/>
         <source>%1: warning: %2</source>
         <translation>%1: warning: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="727"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="738"/>
         <source>%1: note: %2</source>
         <translation>%1: note: %2</translation>
     </message>
@@ -3081,78 +3131,78 @@
 <context>
     <name>rasterlab::CompareImage</name>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="101"/>
+        <location filename="../app/compare/compare_image.cpp" line="102"/>
         <source>no such file</source>
         <translation>no such file</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="105"/>
+        <location filename="../app/compare/compare_image.cpp" line="106"/>
         <source>the file is empty</source>
         <translation>the file is empty</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="129"/>
+        <location filename="../app/compare/compare_image.cpp" line="130"/>
         <source>the PNG is cut short (it does not end with its IEND chunk)</source>
         <translation>the PNG is cut short (it does not end with its IEND chunk)</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="103"/>
+        <location filename="../app/compare/compare_image.cpp" line="104"/>
         <source>a folder, not an image</source>
         <translation>a folder, not an image</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="28"/>
+        <location filename="../app/compare/compare_image.cpp" line="29"/>
         <source>the TGA header is cut short</source>
         <translation>the TGA header is cut short</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="36"/>
+        <location filename="../app/compare/compare_image.cpp" line="37"/>
         <source>a TGA image of a kind RasterLab does not read (only 8-bit grey and 24- or 32-bit colour, plain or run-length encoded)</source>
         <translation>a TGA image of a kind RasterLab does not read (only 8-bit grey and 24- or 32-bit colour, plain or run-length encoded)</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="48"/>
-        <location filename="../app/compare/compare_image.cpp" line="74"/>
+        <location filename="../app/compare/compare_image.cpp" line="49"/>
+        <location filename="../app/compare/compare_image.cpp" line="75"/>
         <source>the TGA image is cut short</source>
         <translation>the TGA image is cut short</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="52"/>
+        <location filename="../app/compare/compare_image.cpp" line="53"/>
         <source>the TGA image is %1x%2, larger than RasterLab reads</source>
         <translation>the TGA image is %1x%2, larger than RasterLab reads</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="124"/>
+        <location filename="../app/compare/compare_image.cpp" line="125"/>
         <source>not an image RasterLab reads (PNG, PPM, BMP, TGA or JPEG)</source>
         <translation>not an image RasterLab reads (PNG, PPM, BMP, TGA or JPEG)</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="125"/>
+        <location filename="../app/compare/compare_image.cpp" line="126"/>
         <source>not an image RasterLab reads (PNG, PPM, BMP, TGA or JPEG): a %1 image</source>
         <translation>not an image RasterLab reads (PNG, PPM, BMP, TGA or JPEG): a %1 image</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="143"/>
+        <location filename="../app/compare/compare_image.cpp" line="144"/>
         <source>cannot read the %1 image: %2</source>
         <translation>cannot read the %1 image: %2</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="171"/>
+        <location filename="../app/compare/compare_image.cpp" line="172"/>
         <source>a %1 image</source>
         <translation>a %1 image</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="173"/>
+        <location filename="../app/compare/compare_image.cpp" line="174"/>
         <source>, lossy: compared with a tolerance of %1 per channel</source>
         <translation>, lossy: compared with a tolerance of %1 per channel</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="174"/>
+        <location filename="../app/compare/compare_image.cpp" line="175"/>
         <source>, without alpha: colours compared, alpha taken as ours</source>
         <translation>, without alpha: colours compared, alpha taken as ours</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="204"/>
+        <location filename="../app/compare/compare_image.cpp" line="205"/>
         <source>the image is %1, ours is %2</source>
         <translation>the image is %1, ours is %2</translation>
     </message>
@@ -3160,110 +3210,110 @@
 <context>
     <name>rasterlab::ComparePanel</name>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="127"/>
-        <location filename="../app/window/compare_panel.cpp" line="131"/>
+        <location filename="../app/window/compare_panel.cpp" line="126"/>
+        <location filename="../app/window/compare_panel.cpp" line="130"/>
         <source>R %1, G %2, B %3, A %4</source>
         <translation>R %1, G %2, B %3, A %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="141"/>
+        <location filename="../app/window/compare_panel.cpp" line="140"/>
         <source>red</source>
         <translation>red</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="143"/>
+        <location filename="../app/window/compare_panel.cpp" line="142"/>
         <source>green</source>
         <translation>green</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="145"/>
+        <location filename="../app/window/compare_panel.cpp" line="144"/>
         <source>blue</source>
         <translation>blue</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="147"/>
+        <location filename="../app/window/compare_panel.cpp" line="146"/>
         <source>alpha</source>
         <translation>alpha</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="154"/>
+        <location filename="../app/window/compare_panel.cpp" line="153"/>
         <source>%1 and %2</source>
         <translation>%1 and %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="170"/>
+        <location filename="../app/window/compare_panel.cpp" line="169"/>
         <source>Side by side</source>
         <translation>Side by side</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="171"/>
+        <location filename="../app/window/compare_panel.cpp" line="170"/>
         <source>Flicker</source>
         <translation>Flicker</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="172"/>
+        <location filename="../app/window/compare_panel.cpp" line="171"/>
         <source>Difference</source>
         <translation>Difference</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="174"/>
+        <location filename="../app/window/compare_panel.cpp" line="173"/>
         <source>Theirs beside ours, one after the other twice a second, or the pixels that differ</source>
         <translation>Theirs beside ours, one after the other twice a second, or the pixels that differ</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="177"/>
+        <location filename="../app/window/compare_panel.cpp" line="176"/>
         <source>Differ by more than</source>
         <translation>Differ by more than</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="183"/>
+        <location filename="../app/window/compare_panel.cpp" line="182"/>
         <source>The difference view shows the pixels where some channel differs by more than this (0: every difference)</source>
         <translation>The difference view shows the pixels where some channel differs by more than this (0: every difference)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="188"/>
+        <location filename="../app/window/compare_panel.cpp" line="187"/>
         <source>Compare Again</source>
         <translation>Compare Again</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="191"/>
+        <location filename="../app/window/compare_panel.cpp" line="190"/>
         <source>The scene changed since the comparison: compare their image with the scene shown now</source>
         <translation>The scene changed since the comparison: compare their image with the scene shown now</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="215"/>
+        <location filename="../app/window/compare_panel.cpp" line="214"/>
         <source>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</source>
         <translation>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="253"/>
+        <location filename="../app/window/compare_panel.cpp" line="252"/>
         <source>There is no render to compare with yet.</source>
         <translation>There is no render to compare with yet.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="261"/>
+        <location filename="../app/window/compare_panel.cpp" line="260"/>
         <source>Their image: %1.</source>
         <translation>Their image: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="267"/>
+        <location filename="../app/window/compare_panel.cpp" line="266"/>
         <source>Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.</source>
         <translation>Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="366"/>
-        <location filename="../app/window/compare_panel.cpp" line="369"/>
+        <location filename="../app/window/compare_panel.cpp" line="361"/>
+        <location filename="../app/window/compare_panel.cpp" line="364"/>
         <source>Theirs</source>
         <translation>Theirs</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="366"/>
-        <location filename="../app/window/compare_panel.cpp" line="369"/>
+        <location filename="../app/window/compare_panel.cpp" line="361"/>
+        <location filename="../app/window/compare_panel.cpp" line="364"/>
         <source>Ours</source>
         <translation>Ours</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/compare_panel.cpp" line="374"/>
+        <location filename="../app/window/compare_panel.cpp" line="369"/>
         <source>%n pixel(s) differ by more than %1</source>
         <translation>
             <numerusform>%n pixel differs by more than %1</numerusform>
@@ -3271,182 +3321,197 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="400"/>
+        <location filename="../app/window/compare_panel.cpp" line="395"/>
         <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
         <translation>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="409"/>
+        <location filename="../app/window/compare_panel.cpp" line="404"/>
         <source>Their image is unlit: one colour %1 wherever it covers. Only coverage is compared (our covered pixels in that colour), and only projection and scan conversion mistakes are tried.</source>
         <translation>Their image is unlit: one colour %1 wherever it covers. Only coverage is compared (our covered pixels in that colour), and only projection and scan conversion mistakes are tried.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="414"/>
+        <location filename="../app/window/compare_panel.cpp" line="409"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Largest difference per channel: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="415"/>
+        <location filename="../app/window/compare_panel.cpp" line="410"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Mean difference per channel, over the differing pixels: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="417"/>
+        <location filename="../app/window/compare_panel.cpp" line="412"/>
         <source>Pixels covered: %1 by both, %2 only by ours (our depth buffer), %3 only by theirs (not the background).</source>
         <translation>Pixels covered: %1 by both, %2 only by ours (our depth buffer), %3 only by theirs (not the background).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="437"/>
+        <location filename="../app/window/compare_panel.cpp" line="432"/>
         <source>Diagnosis, each mistake applied before the next is ranked:</source>
         <translation>Diagnosis, each mistake applied before the next is ranked:</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="443"/>
+        <location filename="../app/window/compare_panel.cpp" line="438"/>
         <source>Removes %1% of the difference; makes %2 differing pixels match.</source>
         <translation>Removes %1% of the difference; makes %2 differing pixels match.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="424"/>
+        <location filename="../app/window/compare_panel.cpp" line="419"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="431"/>
+        <location filename="../app/window/compare_panel.cpp" line="426"/>
         <source>The images are the same.</source>
         <translation>The images are the same.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="433"/>
+        <location filename="../app/window/compare_panel.cpp" line="428"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnosis: none of the mistakes RasterLab knows explains these differences.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="448"/>
+        <location filename="../app/window/compare_panel.cpp" line="443"/>
         <source>Evidence: %1</source>
         <translation>Evidence: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="449"/>
+        <location filename="../app/window/compare_panel.cpp" line="444"/>
         <source>Check: %1</source>
         <translation>Check: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="451"/>
+        <location filename="../app/window/compare_panel.cpp" line="446"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>At (%1, %2): ours %3, theirs %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="461"/>
+        <location filename="../app/window/compare_panel.cpp" line="456"/>
         <source>Unexplained: %1% of the difference; %2 pixels still differ with every mistake above applied.</source>
         <translation>Unexplained: %1% of the difference; %2 pixels still differ with every mistake above applied.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="468"/>
+        <location filename="../app/window/compare_panel.cpp" line="463"/>
         <source>None of the known mistakes explains most of this difference.</source>
         <translation>None of the known mistakes explains most of this difference.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="480"/>
+        <location filename="../app/window/compare_panel.cpp" line="469"/>
+        <source>Lighting fitted to their colours</source>
+        <translation>Lighting fitted to their colours</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="470"/>
+        <source>%1 pixels inside triangles: rms %2 with ours, %3 fitted.</source>
+        <translation>%1 pixels inside triangles: rms %2 with ours, %3 fitted.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="478"/>
+        <source>%1: theirs %2 ± %3, ours %4</source>
+        <translation>%1: theirs %2 ± %3, ours %4</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="496"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Pick a pixel (here or on the image) to see their colour beside ours.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="488"/>
+        <location filename="../app/window/compare_panel.cpp" line="504"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): theirs %3, ours %4.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="495"/>
+        <location filename="../app/window/compare_panel.cpp" line="511"/>
         <source>minus %1 in %2</source>
         <translation>minus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="496"/>
+        <location filename="../app/window/compare_panel.cpp" line="512"/>
         <source>plus %1 in %2</source>
         <translation>plus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="499"/>
+        <location filename="../app/window/compare_panel.cpp" line="515"/>
         <source>Their colour is ours.</source>
         <translation>Their colour is ours.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="503"/>
+        <location filename="../app/window/compare_panel.cpp" line="519"/>
         <source>Their colour is ours %1.</source>
         <translation>Their colour is ours %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="505"/>
+        <location filename="../app/window/compare_panel.cpp" line="521"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>The scene has changed since the comparison: the lighting shown now is not the one compared.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="517"/>
+        <location filename="../app/window/compare_panel.cpp" line="533"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>No triangle of ours covers this pixel: it is the background.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="521"/>
+        <location filename="../app/window/compare_panel.cpp" line="537"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>The lighting of this pixel is not known.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="524"/>
+        <location filename="../app/window/compare_panel.cpp" line="540"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="554"/>
+        <location filename="../app/window/compare_panel.cpp" line="570"/>
         <source>the ambient term Ia·ka</source>
         <translation>the ambient term Ia·ka</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="555"/>
+        <location filename="../app/window/compare_panel.cpp" line="571"/>
         <source>the diffuse term Il·Od·kd·(N·L)</source>
         <translation>the diffuse term Il·Od·kd·(N·L)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="556"/>
+        <location filename="../app/window/compare_panel.cpp" line="572"/>
         <source>the specular term Il·ks·(R·V)^n</source>
         <translation>the specular term Il·ks·(R·V)^n</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="572"/>
+        <location filename="../app/window/compare_panel.cpp" line="588"/>
         <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
         <translation>• %1 is 0 in %2 here: changing it alone cannot give their colour.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="577"/>
+        <location filename="../app/window/compare_panel.cpp" line="593"/>
         <source>• %1 would have to be below 0 in %2: not this term alone.</source>
         <translation>• %1 would have to be below 0 in %2: not this term alone.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="594"/>
+        <location filename="../app/window/compare_panel.cpp" line="610"/>
         <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
         <translation>• %1 would have to be %2 instead of %3, × %4 per channel</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="597"/>
+        <location filename="../app/window/compare_panel.cpp" line="613"/>
         <source>: the term left out</source>
         <translation>: the term left out</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="600"/>
+        <location filename="../app/window/compare_panel.cpp" line="616"/>
         <source>: that is the term times Od %1</source>
         <translation>: that is the term times Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="603"/>
+        <location filename="../app/window/compare_panel.cpp" line="619"/>
         <source>: that is the term without Od %1</source>
         <translation>: that is the term without Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="609"/>
+        <location filename="../app/window/compare_panel.cpp" line="625"/>
         <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
         <translation>(%1: 255 in both images, clamped; any value at least as high gives it.)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="612"/>
+        <location filename="../app/window/compare_panel.cpp" line="628"/>
         <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
         <translation>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</translation>
     </message>

@@ -2000,417 +2000,467 @@
         <translation>o alfa escrito com cada pixel sombreado</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="593"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="594"/>
+        <source>the scene rendered again with the fitted lighting gives their pixels</source>
+        <translation>a cena renderizada de novo com a iluminação ajustada dá os pixels deles</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="595"/>
+        <source>compare the light&apos;s position, the intensities and the coefficients your program uses with the fitted ones</source>
+        <translation>compare a posição da luz, as intensidades e os coeficientes que o seu programa usa com os ajustados</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="596"/>
+        <source>their lighting, fitted to their colours: %1</source>
+        <translation>a iluminação deles, ajustada às cores deles: %1</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="597"/>
+        <source>the lighting is fitted for a course camera and one positional light of the course&apos;s model</source>
+        <translation>a iluminação é ajustada para uma câmera do curso e uma luz pontual do modelo do curso</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="598"/>
+        <source>the lighting is fitted for Phong-shaded draws of one material</source>
+        <translation>a iluminação é ajustada para desenhos com sombreamento de Phong de um só material</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="599"/>
+        <source>too few unclamped pixels inside triangles to fit the lighting</source>
+        <translation>pixels não saturados dentro de triângulos poucos demais para ajustar a iluminação</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="600"/>
+        <source>the fitted light is at the light&apos;s world position: it was not taken to view coordinates</source>
+        <translation>a luz ajustada está na posição da luz no mundo: ela não foi levada a coordenadas de vista</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="601"/>
+        <source>the fitted light is at [I] Pl: C was not subtracted</source>
+        <translation>a luz ajustada está em [I] Pl: C não foi subtraído</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
+        <source>the fitted light is ours with %1 negated</source>
+        <translation>a luz ajustada é a nossa com %1 negado</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="603"/>
+        <source>the fitted n is half of ours: n halved</source>
+        <translation>o n ajustado é metade do nosso: n pela metade</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
         <source>the command file read again with that command so gives their pixels</source>
         <translation>o arquivo de comandos lido de novo com esse comando assim dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="594"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
         <source>line %1: &apos;%2&apos; ignored</source>
-        <translation>linha %1: '%2' ignorado</translation>
+        <translation>linha %1: &apos;%2&apos; ignorado</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="595"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
         <source>line %1: &apos;%2&apos; multiplied on the other side (M = A M instead of M A)</source>
-        <translation>linha %1: '%2' multiplicado do outro lado (M = A M em vez de M A)</translation>
+        <translation>linha %1: &apos;%2&apos; multiplicado do outro lado (M = A M em vez de M A)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="596"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
         <source>line %1: &apos;%2&apos; read column by column (the matrix transposed)</source>
-        <translation>linha %1: '%2' lido coluna por coluna (a matriz transposta)</translation>
+        <translation>linha %1: &apos;%2&apos; lido coluna por coluna (a matriz transposta)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="597"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
         <source>line %1: &apos;%2&apos; with its angle taken as radians</source>
-        <translation>linha %1: '%2' com o ângulo tomado em radianos</translation>
+        <translation>linha %1: &apos;%2&apos; com o ângulo tomado em radianos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="598"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
         <source>line %1: &apos;%2&apos; with s = f x up not normalised (the image stretched across)</source>
-        <translation>linha %1: '%2' com s = f x up não normalizado (a imagem esticada na horizontal)</translation>
+        <translation>linha %1: &apos;%2&apos; com s = f x up não normalizado (a imagem esticada na horizontal)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="599"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="610"/>
         <source>check that your program reads &apos;%1&apos; and applies it</source>
-        <translation>verifique se o seu programa lê '%1' e o aplica</translation>
+        <translation>verifique se o seu programa lê &apos;%1&apos; e o aplica</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="600"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
         <source>seed 001: a transform multiplies the model/view on the right, M = M A</source>
         <translation>semente 001: uma transformação multiplica a model/view pela direita, M = M A</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="601"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
         <source>seed 001 writes a matrix row by row: the first four numbers are its first row</source>
         <translation>a semente 001 escreve uma matriz linha por linha: os quatro primeiros números são a primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
         <source>seed 001&apos;s angles are in degrees: convert them before sin and cos</source>
         <translation>os ângulos da semente 001 estão em graus: converta-os antes de sin e cos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="603"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
         <source>lookat: normalise s = f x up before it goes into the matrix</source>
         <translation>lookat: normalize s = f x up antes de pô-lo na matriz</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
         <source>the camera&apos;s N not normalised before V - (V.N)N, nor after</source>
         <translation>o N da câmera não normalizado antes de V - (V.N)N, nem depois</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
         <source>the camera&apos;s U = V x N instead of N x V (x runs the other way)</source>
         <translation>o U da câmera = V x N em vez de N x V (x corre no outro sentido)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
         <source>the scene rendered again in view coordinates made with that basis gives their pixels</source>
         <translation>a cena renderizada de novo em coordenadas de vista feitas com essa base dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
         <source>seed 000&apos;s Gram-Schmidt: normalise N first, then V - (V.N)N is V&apos;s part across N</source>
         <translation>o Gram-Schmidt da semente 000: normalize N primeiro, então V - (V.N)N é a parte de V transversal a N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
         <source>seed 000: U = N x V, so that U, V, N is right-handed</source>
         <translation>semente 000: U = N x V, para que U, V, N seja uma base dextrógira</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
         <source>the vertex normals left at the length of their sums (not normalised)</source>
         <translation>as normais dos vértices deixadas com o comprimento das suas somas (não normalizadas)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="610"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
         <source>the triangle normals summed at their length (area-weighted) instead of normalised first</source>
         <translation>as normais dos triângulos somadas com o seu comprimento (pesadas pela área) em vez de normalizadas antes</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
         <source>seed 000: each vertex normal is the normalised sum of its triangles&apos; normals</source>
         <translation>semente 000: a normal de cada vértice é a soma normalizada das normais dos seus triângulos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
         <source>normalise each triangle&apos;s normal before adding it to its vertices</source>
         <translation>normalize a normal de cada triângulo antes de somá-la aos seus vértices</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
         <source>the light not taken to view coordinates: its world position used as Pl_view</source>
         <translation>a luz não levada a coordenadas de vista: sua posição no mundo usada como Pl_vista</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
         <source>the light taken to view coordinates without subtracting C: [I] Pl instead of [I](Pl - C)</source>
         <translation>a luz levada a coordenadas de vista sem subtrair C: [I] Pl em vez de [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
         <source>V = P&apos; instead of -P&apos; (L = P&apos; - Pl gives the same image)</source>
         <translation>V = P&apos; em vez de -P&apos; (L = P&apos; - Pl dá a mesma imagem)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
         <source>the ambient term Ia instead of Ia*ka</source>
         <translation>o termo ambiente Ia em vez de Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
         <source>each Phong term truncated to a whole byte before the sum</source>
         <translation>cada termo de Phong truncado para um byte inteiro antes da soma</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
         <source>V.N, N.L and R.V tested against %1 instead of 0</source>
         <translation>V.N, N.L e R.V testados contra %1 em vez de 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
         <source>the depth test reversed: the farther fragment wins (&gt; against a buffer cleared to -infinity, or to 0)</source>
         <translation>o teste de profundidade invertido: o fragmento mais distante vence (&gt; contra um buffer iniciado com -infinito, ou com 0)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
         <source>every covered pixel&apos;s colour off by %1 (a constant offset)</source>
         <translation>a cor de cada pixel coberto deslocada de %1 (um deslocamento constante)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
         <source>every colour multiplied by %1 (a constant scale)</source>
         <translation>cada cor multiplicada por %1 (uma escala constante)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="633"/>
         <source>the scene rendered again with the light where that transform puts it gives their pixels</source>
         <translation>a cena renderizada de novo com a luz onde essa transformação a coloca dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
         <source>the scene rendered again with the farther fragment winning gives their pixels</source>
         <translation>a cena renderizada de novo com o fragmento mais distante vencendo dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
         <source>our bytes moved by that constant give their pixels</source>
         <translation>os nossos bytes deslocados dessa constante dão os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
         <source>our colours multiplied by that constant give their pixels</source>
         <translation>as nossas cores multiplicadas por essa constante dão os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
         <source>seed 000: the light goes to view coordinates as the vertices do, Pl_view = [I](Pl - C)</source>
         <translation>semente 000: a luz vai para coordenadas de vista como os vértices, Pl_vista = [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
         <source>seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis</source>
         <translation>semente 000: Pl_vista = [I](Pl - C): subtraia C antes da mudança de base</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
         <source>V points from the surface to the camera: V = -P&apos; in view coordinates, and L = Pl - P&apos;</source>
         <translation>V aponta da superfície para a câmera: V = -P&apos; em coordenadas de vista, e L = Pl - P&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
         <source>seed 000&apos;s ambient term is Ia*ka</source>
         <translation>o termo ambiente da semente 000 é Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
         <source>add the terms as real numbers and make a byte once, at the end</source>
         <translation>some os termos como números reais e faça um byte uma vez, no fim</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
         <source>seed 000&apos;s special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</source>
         <translation>os casos especiais da semente 000 testam contra 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="643"/>
         <source>the z-buffer starts at +infinity and a fragment is written when its z is smaller</source>
         <translation>o z-buffer começa em +infinito e um fragmento é escrito quando seu z é menor</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="633"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
         <source>look for a constant added to every colour, or bytes made with an offset</source>
         <translation>procure uma constante somada a cada cor, ou bytes feitos com um deslocamento</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
         <source>look for a factor on every colour: an intensity scaled, or another colour scale</source>
         <translation>procure um fator em cada cor: uma intensidade escalada, ou outra escala de cor</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
         <source>%1; no pixel that matches now would change</source>
         <translation>%1; nenhum pixel que coincide agora mudaria</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
         <source>%2; %1 pixel that matches now would differ</source>
         <translation>%2; %1 pixel que coincide agora passaria a diferir</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="648"/>
         <source>%2; %1 pixels that match now would differ</source>
         <translation>%2; %1 pixels que coincidem agora passariam a diferir</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
         <source>cannot read the texture %1: %2</source>
         <translation>não é possível ler a textura %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="652"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V está a %1 graus da reta de N: Gram-Schmidt guarda só isso de V, e a base é ortonormal só até %2, menos que a precisão de um float; escolha um V mais longe de N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="657"/>
         <source>cannot open: %1</source>
         <translation>não é possível abrir: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="658"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>o arquivo tem %1 MiB, mais que os %2 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>o arquivo tem mais que os %1 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="651"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="662"/>
         <source>not enough memory to read this file</source>
         <translation>não há memória suficiente para ler este arquivo</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="652"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="663"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>os arquivos da cena embutida não podem ser gravados: salve-a num arquivo seu (Salvar como)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="655"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="666"/>
         <source>the object is not edited, so not saved</source>
         <translation>o objeto não é editado, então não é salvo</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="656"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="667"/>
         <source>cannot write into the built-in resources</source>
         <translation>não é possível gravar nos recursos embutidos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="657"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="668"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>a câmera não foi salva, pois não carregaria de novo: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="658"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="669"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>não salvo: o texto gravado não é lido de volta com os mesmos valores</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
         <source>cannot write the file: %1</source>
         <translation>não é possível gravar o arquivo: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="661"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="672"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>só %1 de %2 bytes puderam ser gravados (o disco está cheio?)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="662"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="673"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>não é possível gravar o arquivo (ele fica como estava): %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="664"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="675"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[linhas, fragmentos], dois números inteiros</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="676"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[largura, altura], números inteiros de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="666"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="677"/>
         <source>a list</source>
         <translation>uma lista</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="667"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="678"/>
         <source>a list of %1 numbers</source>
         <translation>uma lista de %1 números</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="668"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="679"/>
         <source>a list of 1 to 8 lights</source>
         <translation>uma lista de 1 a 8 luzes</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="669"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="680"/>
         <source>a list of dock names</source>
         <translation>uma lista de nomes de painéis</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="670"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="681"/>
         <source>a number</source>
         <translation>um número</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="682"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>um número positivo ou &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="672"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="683"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>um número positivo ou &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="673"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
         <source>a whole number from %1</source>
         <translation>um número inteiro a partir de %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="674"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
         <source>an object</source>
         <translation>um objeto</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="675"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="686"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>esperava %1 para &quot;%2&quot;, encontrou %3</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="676"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="687"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>esperava um arquivo de aula: um objeto JSON com &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="678"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="689"/>
         <source>not a lesson file: %1</source>
         <translation>não é um arquivo de aula: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="679"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="690"/>
         <source>nothing</source>
         <translation>nada</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="680"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="691"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="681"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="692"/>
         <source>one of %1</source>
         <translation>um de %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="682"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="693"/>
         <source>text in quotes</source>
         <translation>um texto entre aspas</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="683"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="694"/>
         <source>the text &apos;%1&apos;</source>
         <translation>o texto &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="695"/>
         <source>true or false</source>
         <translation>true ou false</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="696"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>ignorou a chave desconhecida &quot;%1&quot; (as conhecidas aqui: %2)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="720"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="731"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="726"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="737"/>
         <source>%1: warning: %2</source>
         <translation>%1: aviso: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="727"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="738"/>
         <source>%1: note: %2</source>
         <translation>%1: nota: %2</translation>
     </message>
@@ -3081,78 +3131,78 @@
 <context>
     <name>rasterlab::CompareImage</name>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="101"/>
+        <location filename="../app/compare/compare_image.cpp" line="102"/>
         <source>no such file</source>
         <translation>o arquivo não existe</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="105"/>
+        <location filename="../app/compare/compare_image.cpp" line="106"/>
         <source>the file is empty</source>
         <translation>o arquivo está vazio</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="129"/>
+        <location filename="../app/compare/compare_image.cpp" line="130"/>
         <source>the PNG is cut short (it does not end with its IEND chunk)</source>
         <translation>o PNG está cortado (não termina com o seu bloco IEND)</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="103"/>
+        <location filename="../app/compare/compare_image.cpp" line="104"/>
         <source>a folder, not an image</source>
         <translation>uma pasta, não uma imagem</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="28"/>
+        <location filename="../app/compare/compare_image.cpp" line="29"/>
         <source>the TGA header is cut short</source>
         <translation>o cabeçalho do TGA está cortado</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="36"/>
+        <location filename="../app/compare/compare_image.cpp" line="37"/>
         <source>a TGA image of a kind RasterLab does not read (only 8-bit grey and 24- or 32-bit colour, plain or run-length encoded)</source>
         <translation>uma imagem TGA de um tipo que o RasterLab não lê (só cinza de 8 bits e cor de 24 ou 32 bits, simples ou com codificação por carreiras)</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="48"/>
-        <location filename="../app/compare/compare_image.cpp" line="74"/>
+        <location filename="../app/compare/compare_image.cpp" line="49"/>
+        <location filename="../app/compare/compare_image.cpp" line="75"/>
         <source>the TGA image is cut short</source>
         <translation>a imagem TGA está cortada</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="52"/>
+        <location filename="../app/compare/compare_image.cpp" line="53"/>
         <source>the TGA image is %1x%2, larger than RasterLab reads</source>
         <translation>a imagem TGA tem %1x%2, maior do que o RasterLab lê</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="124"/>
+        <location filename="../app/compare/compare_image.cpp" line="125"/>
         <source>not an image RasterLab reads (PNG, PPM, BMP, TGA or JPEG)</source>
         <translation>não é uma imagem que o RasterLab lê (PNG, PPM, BMP, TGA ou JPEG)</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="125"/>
+        <location filename="../app/compare/compare_image.cpp" line="126"/>
         <source>not an image RasterLab reads (PNG, PPM, BMP, TGA or JPEG): a %1 image</source>
         <translation>não é uma imagem que o RasterLab lê (PNG, PPM, BMP, TGA ou JPEG): é uma imagem %1</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="143"/>
+        <location filename="../app/compare/compare_image.cpp" line="144"/>
         <source>cannot read the %1 image: %2</source>
         <translation>não é possível ler a imagem %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="171"/>
+        <location filename="../app/compare/compare_image.cpp" line="172"/>
         <source>a %1 image</source>
         <translation>uma imagem %1</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="173"/>
+        <location filename="../app/compare/compare_image.cpp" line="174"/>
         <source>, lossy: compared with a tolerance of %1 per channel</source>
         <translation>, com perdas: comparada com uma tolerância de %1 por canal</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="174"/>
+        <location filename="../app/compare/compare_image.cpp" line="175"/>
         <source>, without alpha: colours compared, alpha taken as ours</source>
         <translation>, sem alfa: cores comparadas, alfa tomado como o nosso</translation>
     </message>
     <message>
-        <location filename="../app/compare/compare_image.cpp" line="204"/>
+        <location filename="../app/compare/compare_image.cpp" line="205"/>
         <source>the image is %1, ours is %2</source>
         <translation>a imagem tem %1, a nossa tem %2</translation>
     </message>
@@ -3160,110 +3210,110 @@
 <context>
     <name>rasterlab::ComparePanel</name>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="127"/>
-        <location filename="../app/window/compare_panel.cpp" line="131"/>
+        <location filename="../app/window/compare_panel.cpp" line="126"/>
+        <location filename="../app/window/compare_panel.cpp" line="130"/>
         <source>R %1, G %2, B %3, A %4</source>
         <translation>R %1, G %2, B %3, A %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="141"/>
+        <location filename="../app/window/compare_panel.cpp" line="140"/>
         <source>red</source>
         <translation>vermelho</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="143"/>
+        <location filename="../app/window/compare_panel.cpp" line="142"/>
         <source>green</source>
         <translation>verde</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="145"/>
+        <location filename="../app/window/compare_panel.cpp" line="144"/>
         <source>blue</source>
         <translation>azul</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="147"/>
+        <location filename="../app/window/compare_panel.cpp" line="146"/>
         <source>alpha</source>
         <translation>alfa</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="154"/>
+        <location filename="../app/window/compare_panel.cpp" line="153"/>
         <source>%1 and %2</source>
         <translation>%1 e %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="170"/>
+        <location filename="../app/window/compare_panel.cpp" line="169"/>
         <source>Side by side</source>
         <translation>Lado a lado</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="171"/>
+        <location filename="../app/window/compare_panel.cpp" line="170"/>
         <source>Flicker</source>
         <translation>Alternar</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="172"/>
+        <location filename="../app/window/compare_panel.cpp" line="171"/>
         <source>Difference</source>
         <translation>Diferença</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="174"/>
+        <location filename="../app/window/compare_panel.cpp" line="173"/>
         <source>Theirs beside ours, one after the other twice a second, or the pixels that differ</source>
         <translation>A deles ao lado da nossa, uma depois da outra duas vezes por segundo, ou os pixels que diferem</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="177"/>
+        <location filename="../app/window/compare_panel.cpp" line="176"/>
         <source>Differ by more than</source>
         <translation>Diferem em mais de</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="183"/>
+        <location filename="../app/window/compare_panel.cpp" line="182"/>
         <source>The difference view shows the pixels where some channel differs by more than this (0: every difference)</source>
         <translation>A vista da diferença mostra os pixels em que algum canal difere em mais do que isto (0: toda diferença)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="188"/>
+        <location filename="../app/window/compare_panel.cpp" line="187"/>
         <source>Compare Again</source>
         <translation>Comparar de novo</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="191"/>
+        <location filename="../app/window/compare_panel.cpp" line="190"/>
         <source>The scene changed since the comparison: compare their image with the scene shown now</source>
         <translation>A cena mudou desde a comparação: comparar a imagem deles com a cena mostrada agora</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="215"/>
+        <location filename="../app/window/compare_panel.cpp" line="214"/>
         <source>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</source>
         <translation>Arquivo &gt; Comparar com imagem... compara um PNG do seu próprio renderizador com a renderização desta cena.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="253"/>
+        <location filename="../app/window/compare_panel.cpp" line="252"/>
         <source>There is no render to compare with yet.</source>
         <translation>Ainda não há renderização com que comparar.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="261"/>
+        <location filename="../app/window/compare_panel.cpp" line="260"/>
         <source>Their image: %1.</source>
         <translation>A imagem deles: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="267"/>
+        <location filename="../app/window/compare_panel.cpp" line="266"/>
         <source>Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.</source>
         <translation>Recortada para %1x%2 em (%3, %4) a partir de %5x%6: o quadro encontrado dentro dela.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="366"/>
-        <location filename="../app/window/compare_panel.cpp" line="369"/>
+        <location filename="../app/window/compare_panel.cpp" line="361"/>
+        <location filename="../app/window/compare_panel.cpp" line="364"/>
         <source>Theirs</source>
         <translation>Deles</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="366"/>
-        <location filename="../app/window/compare_panel.cpp" line="369"/>
+        <location filename="../app/window/compare_panel.cpp" line="361"/>
+        <location filename="../app/window/compare_panel.cpp" line="364"/>
         <source>Ours</source>
         <translation>Nossa</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/compare_panel.cpp" line="374"/>
+        <location filename="../app/window/compare_panel.cpp" line="369"/>
         <source>%n pixel(s) differ by more than %1</source>
         <translation>
             <numerusform>%n pixel difere em mais de %1</numerusform>
@@ -3271,182 +3321,197 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="400"/>
+        <location filename="../app/window/compare_panel.cpp" line="395"/>
         <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
         <translation>%1 contra a nossa renderização (%2x%3): %4 pixels comparados, %5 diferem (%6%).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="409"/>
+        <location filename="../app/window/compare_panel.cpp" line="404"/>
         <source>Their image is unlit: one colour %1 wherever it covers. Only coverage is compared (our covered pixels in that colour), and only projection and scan conversion mistakes are tried.</source>
         <translation>A imagem deles não é iluminada: uma só cor %1 onde ela cobre. Só a cobertura é comparada (os nossos pixels cobertos nessa cor), e só erros de projeção e de conversão por varredura são tentados.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="414"/>
+        <location filename="../app/window/compare_panel.cpp" line="409"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Maior diferença por canal: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="415"/>
+        <location filename="../app/window/compare_panel.cpp" line="410"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Diferença média por canal, nos pixels que diferem: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="417"/>
+        <location filename="../app/window/compare_panel.cpp" line="412"/>
         <source>Pixels covered: %1 by both, %2 only by ours (our depth buffer), %3 only by theirs (not the background).</source>
         <translation>Pixels cobertos: %1 por ambas, %2 só pela nossa (o nosso buffer de profundidade), %3 só pela deles (não o fundo).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="437"/>
+        <location filename="../app/window/compare_panel.cpp" line="432"/>
         <source>Diagnosis, each mistake applied before the next is ranked:</source>
         <translation>Diagnóstico, cada erro aplicado antes de classificar o seguinte:</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="443"/>
+        <location filename="../app/window/compare_panel.cpp" line="438"/>
         <source>Removes %1% of the difference; makes %2 differing pixels match.</source>
         <translation>Remove %1% da diferença; faz %2 pixels diferentes coincidirem.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="424"/>
+        <location filename="../app/window/compare_panel.cpp" line="419"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>A cena mudou desde esta comparação: Comparar de novo compara a imagem deles com a cena mostrada agora.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="431"/>
+        <location filename="../app/window/compare_panel.cpp" line="426"/>
         <source>The images are the same.</source>
         <translation>As imagens são iguais.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="433"/>
+        <location filename="../app/window/compare_panel.cpp" line="428"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnóstico: nenhum dos erros que o RasterLab conhece explica estas diferenças.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="448"/>
+        <location filename="../app/window/compare_panel.cpp" line="443"/>
         <source>Evidence: %1</source>
         <translation>Evidência: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="449"/>
+        <location filename="../app/window/compare_panel.cpp" line="444"/>
         <source>Check: %1</source>
         <translation>Verifique: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="451"/>
+        <location filename="../app/window/compare_panel.cpp" line="446"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>Em (%1, %2): nossa %3, deles %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="461"/>
+        <location filename="../app/window/compare_panel.cpp" line="456"/>
         <source>Unexplained: %1% of the difference; %2 pixels still differ with every mistake above applied.</source>
         <translation>Sem explicação: %1% da diferença; %2 pixels ainda diferem com todos os erros acima aplicados.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="468"/>
+        <location filename="../app/window/compare_panel.cpp" line="463"/>
         <source>None of the known mistakes explains most of this difference.</source>
         <translation>Nenhum dos erros conhecidos explica a maior parte desta diferença.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="480"/>
+        <location filename="../app/window/compare_panel.cpp" line="469"/>
+        <source>Lighting fitted to their colours</source>
+        <translation>Iluminação ajustada às cores deles</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="470"/>
+        <source>%1 pixels inside triangles: rms %2 with ours, %3 fitted.</source>
+        <translation>%1 pixels dentro de triângulos: rms %2 com a nossa, %3 ajustada.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="478"/>
+        <source>%1: theirs %2 ± %3, ours %4</source>
+        <translation>%1: deles %2 ± %3, nosso %4</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="496"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Escolha um pixel (aqui ou na imagem) para ver a cor deles ao lado da nossa.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="488"/>
+        <location filename="../app/window/compare_panel.cpp" line="504"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): deles %3, nossa %4.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="495"/>
+        <location filename="../app/window/compare_panel.cpp" line="511"/>
         <source>minus %1 in %2</source>
         <translation>menos %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="496"/>
+        <location filename="../app/window/compare_panel.cpp" line="512"/>
         <source>plus %1 in %2</source>
         <translation>mais %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="499"/>
+        <location filename="../app/window/compare_panel.cpp" line="515"/>
         <source>Their colour is ours.</source>
         <translation>A cor deles é a nossa.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="503"/>
+        <location filename="../app/window/compare_panel.cpp" line="519"/>
         <source>Their colour is ours %1.</source>
         <translation>A cor deles é a nossa %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="505"/>
+        <location filename="../app/window/compare_panel.cpp" line="521"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>A cena mudou desde a comparação: a iluminação mostrada agora não é a comparada.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="517"/>
+        <location filename="../app/window/compare_panel.cpp" line="533"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>Nenhum triângulo nosso cobre este pixel: é o fundo.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="521"/>
+        <location filename="../app/window/compare_panel.cpp" line="537"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>A iluminação deste pixel não é conhecida.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="524"/>
+        <location filename="../app/window/compare_panel.cpp" line="540"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>Os termos que teriam de mudar são calculados para o modelo de iluminação do curso em sombreamento flat ou Phong; este pixel é sombreado de outro modo (o inspetor de pixel mostra como).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="554"/>
+        <location filename="../app/window/compare_panel.cpp" line="570"/>
         <source>the ambient term Ia·ka</source>
         <translation>o termo ambiente Ia·ka</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="555"/>
+        <location filename="../app/window/compare_panel.cpp" line="571"/>
         <source>the diffuse term Il·Od·kd·(N·L)</source>
         <translation>o termo difuso Il·Od·kd·(N·L)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="556"/>
+        <location filename="../app/window/compare_panel.cpp" line="572"/>
         <source>the specular term Il·ks·(R·V)^n</source>
         <translation>o termo especular Il·ks·(R·V)^n</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="572"/>
+        <location filename="../app/window/compare_panel.cpp" line="588"/>
         <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
         <translation>• %1 é 0 no %2 aqui: mudá-lo sozinho não dá a cor deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="577"/>
+        <location filename="../app/window/compare_panel.cpp" line="593"/>
         <source>• %1 would have to be below 0 in %2: not this term alone.</source>
         <translation>• %1 teria de ser menor que 0 no %2: não é este termo sozinho.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="594"/>
+        <location filename="../app/window/compare_panel.cpp" line="610"/>
         <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
         <translation>• %1 teria de ser %2 em vez de %3, × %4 por canal</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="597"/>
+        <location filename="../app/window/compare_panel.cpp" line="613"/>
         <source>: the term left out</source>
         <translation>: o termo omitido</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="600"/>
+        <location filename="../app/window/compare_panel.cpp" line="616"/>
         <source>: that is the term times Od %1</source>
         <translation>: isto é, o termo vezes Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="603"/>
+        <location filename="../app/window/compare_panel.cpp" line="619"/>
         <source>: that is the term without Od %1</source>
         <translation>: isto é, o termo sem Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="609"/>
+        <location filename="../app/window/compare_panel.cpp" line="625"/>
         <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
         <translation>(%1: 255 nas duas imagens, limitado; qualquer valor pelo menos tão alto o dá.)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="612"/>
+        <location filename="../app/window/compare_panel.cpp" line="628"/>
         <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
         <translation>Nenhum termo mudado por um fator simples (omitido, vezes Od, sem Od) dá a cor deles: olhe vários termos, ou o que diz o diagnóstico.</translation>
     </message>

@@ -13,6 +13,7 @@
 
 #include "app/compare/compare_image.h"
 #include "app/documents/command_file.h"
+#include "pipeline/analysis/lighting_fit.h"
 #include "pipeline/analysis/mistakes.h"
 
 namespace rasterlab::cli {
@@ -52,6 +53,47 @@ struct Provenance {
 
 QString percent(double share) {
     return QString::number(100.0 * share, 'f', 1) + QLatin1Char('%');
+}
+
+void printFit(const rl::LightingFit& fit, QTextStream& out) {
+    if (!fit.fitted) return;
+    out << "lighting fitted to their colours (" << fit.samples << " pixels inside triangles): "
+        << "rms " << QString::number(fit.rmsOurs, 'f', 1) << " with ours, "
+        << QString::number(fit.rmsFitted, 'f', 1) << " fitted\n";
+    for (const rl::FittedValue& v : fit.values)
+        if (v.apart)
+            out << "  " << QString::fromStdString(v.name) << ": theirs "
+                << QString::number(v.theirs, 'g', 4) << " +- "
+                << QString::number(v.uncertainty, 'g', 2) << ", ours "
+                << QString::number(v.ours, 'g', 4) << '\n';
+    for (const rl::Message& m : fit.findings)
+        out << "  " << QString::fromStdString(m.english()) << '\n';
+}
+
+QJsonObject fitJson(const rl::LightingFit& fit) {
+    QJsonObject o;
+    o[lit("fitted")] = fit.fitted;
+    if (!fit.fitted) {
+        o[lit("reason")] = QString::fromStdString(fit.reason.english());
+        return o;
+    }
+    o[lit("samples")] = qint64(fit.samples);
+    o[lit("rmsOurs")] = fit.rmsOurs;
+    o[lit("rmsFitted")] = fit.rmsFitted;
+    QJsonArray values;
+    for (const rl::FittedValue& v : fit.values)
+        values.append(QJsonObject{{lit("name"), QString::fromStdString(v.name)},
+                                  {lit("ours"), v.ours},
+                                  {lit("theirs"), v.theirs},
+                                  {lit("uncertainty"), v.uncertainty},
+                                  {lit("apart"), v.apart},
+                                  {lit("differs"), v.differs}});
+    o[lit("values")] = values;
+    if (fit.matches) o[lit("matches")] = QString::fromLatin1(rl::mistakeId(*fit.matches));
+    QJsonArray findings;
+    for (const rl::Message& m : fit.findings) findings.append(QString::fromStdString(m.english()));
+    o[lit("findings")] = findings;
+    return o;
 }
 
 void printText(const rl::ImageComparison& c, const QString& image, const QString& label,
@@ -344,31 +386,26 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
     if (!theirFormat.alpha) CompareImage::takeAlpha(ourImage, theirs);
     const Provenance provenance{theirFormat.describe(), sizeFrom, cropped};
 
-    // A command file: one of its commands misread may be what made their image.
-    std::optional<CommandFileText> commandText;
-    if (!files.isEmpty()) {
-        auto text = readCommandFileText(files.first());
-        if (!text) return inputError(err, text.error());
-        commandText = std::move(text.value());
-    }
-    const auto comparison =
-        commandText ? rl::compareCommandFile(*ours, theirs, theirFormat.tolerance(),
-                                             commandText->text(), commandText->fileName,
-                                             commandText->loader, imageIndex, !theirFormat.alpha)
-                    : rl::compareWithOurs(*ours, theirs, theirFormat.tolerance());
-    if (!comparison) return inputError(err, comparison.error());
+    // A command file's misread command, the catalogue, the lighting fitted to their colours.
+    auto diagnosis = CompareImage::diagnose(*ours, theirs, theirFormat,
+                                            files.isEmpty() ? QString() : files.first(), imageIndex);
+    if (!diagnosis) return inputError(err, diagnosis.error());
+    const rl::ImageComparison* comparison = &diagnosis->comparison;
+    const rl::LightingFit& fit = diagnosis->fit;
     QString sink;
     QTextStream quiet(&sink);  // JSON keeps stdout to itself
     if (json) {
         if (parser.isSet(diffOutput) && !writePng(comparison->differenceImage, parser.value(diffOutput),
                                                   quiet, err, lit("difference")))
             return ExitBadInput;
-        QJsonObject o = toJson(comparison.value(), imagePath, sceneLabel, provenance);
+        QJsonObject o = toJson(*comparison, imagePath, sceneLabel, provenance);
+        if (comparison->differing > 0 && !comparison->unlit) o[lit("lightingFit")] = fitJson(fit);
         if (parser.isSet(diffOutput))
             o[lit("differenceImage")] = QFileInfo(parser.value(diffOutput)).absoluteFilePath();
         out << QJsonDocument(o).toJson(QJsonDocument::Indented);
     } else {
-        printText(comparison.value(), imagePath, sceneLabel, provenance, out);
+        printText(*comparison, imagePath, sceneLabel, provenance, out);
+        printFit(fit, out);
         if (parser.isSet(diffOutput) && !writePng(comparison->differenceImage, parser.value(diffOutput),
                                                   out, err, lit("difference")))
             return ExitBadInput;

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <utility>
 
+#include "app/documents/command_file.h"
 #include "pipeline/analysis/mistakes.h"
 
 namespace rasterlab {
@@ -203,6 +204,31 @@ QString CompareImage::sizeMismatch(const QString& path, const rl::Rgba8Image& th
     return path + QStringLiteral(": ") +
            tr("the image is %1, ours is %2")
                .arg(sizeText(theirs.width, theirs.height), sizeText(ours.width, ours.height));
+}
+
+rl::Result<CompareImage::Diagnosis> CompareImage::diagnose(const rl::OurFrame& ours,
+                                                          const rl::Rgba8Image& theirs,
+                                                          const Format& format,
+                                                          const QString& commandFile,
+                                                          std::size_t imageIndex) {
+    std::optional<CommandFileText> text;
+    if (!commandFile.isEmpty()) {
+        auto read = readCommandFileText(commandFile);
+        if (!read) return read.error();
+        text = std::move(read.value());
+    }
+    auto comparison = text ? rl::compareCommandFile(ours, theirs, format.tolerance(), text->text(),
+                                                    text->fileName, text->loader, imageIndex,
+                                                    !format.alpha)
+                           : rl::compareWithOurs(ours, theirs, format.tolerance());
+    if (!comparison) return comparison.error();
+    Diagnosis out;
+    if (comparison->differing > 0 && !comparison->unlit) out.fit = rl::fitLighting(ours, theirs);
+    auto withFit = rl::withFittedLighting(std::move(comparison.value()), ours, theirs,
+                                          format.tolerance(), out.fit);
+    if (!withFit) return withFit.error();
+    out.comparison = std::move(withFit.value());
+    return out;
 }
 
 }  // namespace rasterlab

@@ -9,6 +9,8 @@
 
 #include <optional>
 
+#include "pipeline/analysis/lighting_fit.h"
+#include "pipeline/analysis/mistakes.h"
 #include "pipeline/core/math.h"
 #include "pipeline/render/output_image.h"
 
@@ -38,6 +40,18 @@ public:
     // A screenshot with a window border or a cursor: when their larger image holds ours, it is
     // cropped to that frame, and where it was is returned.
     static std::optional<rl::ivec2> cropToFrame(const rl::Rgba8Image& ours, rl::Rgba8Image& theirs);
+
+    // The whole diagnosis of their image (our size, alpha taken where theirs has none): for a
+    // command file (its path and the index of the image shown, else an empty path), the
+    // command misread first when one is; the lighting fitted to their colours, and ours
+    // rendered with it first when that explains more.
+    struct Diagnosis {
+        rl::ImageComparison comparison;
+        rl::LightingFit fit;
+    };
+    static rl::Result<Diagnosis> diagnose(const rl::OurFrame& ours, const rl::Rgba8Image& theirs,
+                                          const Format& format, const QString& commandFile,
+                                          std::size_t imageIndex);
 };
 
 }  // namespace rasterlab

@@ -17,7 +17,6 @@
 #include <functional>
 
 #include "app/compare/compare_image.h"
-#include "app/documents/command_file.h"
 #include "app/image_io.h"
 #include "views/inspection.h"
 #include "views/messages/pipeline_messages.h"
@@ -279,14 +278,8 @@ QString ComparePanel::compare(const QString& path) {
                problem.isEmpty()) {
         const auto [commandFile, imageIndex] =
             m_commandFile ? m_commandFile() : std::pair<QString, int>();
-        std::optional<CommandFileText> text;
-        if (!commandFile.isEmpty())
-            if (auto read = readCommandFileText(commandFile)) text = std::move(read.value());
-        auto comparison =
-            text ? rl::compareCommandFile(ours.value(), theirs, format.tolerance(), text->text(),
-                                          text->fileName, text->loader,
-                                          static_cast<std::size_t>(imageIndex), !format.alpha)
-                 : rl::compareWithOurs(ours.value(), theirs, format.tolerance());
+        auto comparison = CompareImage::diagnose(ours.value(), theirs, format, commandFile,
+                                                 static_cast<std::size_t>(imageIndex));
         if (!comparison) {
             problem = QString::fromStdString(comparison.error().message);
         } else {
@@ -295,7 +288,9 @@ QString ComparePanel::compare(const QString& path) {
             m_scene = frame->scene;
             m_ours = std::make_unique<rl::OurFrame>(std::move(ours.value()));
             m_theirs = std::move(theirs);
-            m_comparison = std::make_unique<rl::ImageComparison>(std::move(comparison.value()));
+            m_comparison =
+                std::make_unique<rl::ImageComparison>(std::move(comparison->comparison));
+            m_fit = std::move(comparison->fit);
             m_theirImage = toQImage(m_theirs);
             m_ourImage = toQImage(m_ours->image);
         }
@@ -467,6 +462,27 @@ void ComparePanel::refreshTexts() {
             html += QStringLiteral("<br>") +
                     tr("None of the known mistakes explains most of this difference.")
                         .toHtmlEscaped();
+        html += QStringLiteral("</p>");
+    }
+    if (m_fit.fitted) {
+        html += QStringLiteral("<p><b>%1</b><br>%2")
+                    .arg(tr("Lighting fitted to their colours").toHtmlEscaped(),
+                         tr("%1 pixels inside triangles: rms %2 with ours, %3 fitted.")
+                             .arg(m_fit.samples)
+                             .arg(m_fit.rmsOurs, 0, 'f', 1)
+                             .arg(m_fit.rmsFitted, 0, 'f', 1)
+                             .toHtmlEscaped());
+        for (const rl::FittedValue& v : m_fit.values)
+            if (v.apart)
+                html += QStringLiteral("<br>") +
+                        tr("%1: theirs %2 ± %3, ours %4")
+                            .arg(QString::fromStdString(v.name))
+                            .arg(v.theirs, 0, 'g', 4)
+                            .arg(v.uncertainty, 0, 'g', 2)
+                            .arg(v.ours, 0, 'g', 4)
+                            .toHtmlEscaped();
+        for (const rl::Message& m : m_fit.findings)
+            html += QStringLiteral("<br>") + translated(m).toHtmlEscaped();
         html += QStringLiteral("</p>");
     }
     m_diagnosis->setText(html);

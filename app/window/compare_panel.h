@@ -14,6 +14,7 @@
 #include <optional>
 #include <utility>
 
+#include "pipeline/analysis/lighting_fit.h"
 #include "pipeline/analysis/mistakes.h"
 #include "views/lighting_breakdown.h"
 
@@ -85,6 +86,7 @@ private:
     std::unique_ptr<rl::OurFrame> m_ours;
     rl::Rgba8Image m_theirs;
     std::unique_ptr<rl::ImageComparison> m_comparison;
+    rl::LightingFit m_fit;
     QImage m_theirImage, m_ourImage, m_difference;
     std::size_t m_aboveThreshold = 0;
     bool m_flickerTheirs = true;

@@ -16,7 +16,7 @@ namespace {
 using Bytes = std::array<std::uint8_t, 4>;
 
 // The names of the mistakes, in the order of the enum.
-constexpr std::array<const char*, kMistakeCount + 1> kIds = {
+constexpr std::array<const char*, kMistakeCount + 2> kIds = {
     "ambient-times-od",
     "normal-not-flipped",
     "specular-where-rv-negative",
@@ -51,6 +51,7 @@ constexpr std::array<const char*, kMistakeCount + 1> kIds = {
     "basis-n-not-normalised",
     "basis-u-reversed",
     "command-misread",
+    "fitted-lighting",
 };
 
 Bytes bytesAt(const Rgba8Image& image, int x, int y) {
@@ -76,10 +77,10 @@ const char* modelName(Mistake mistake) {
                                                         : ShadingModel::Phong);
 }
 
-// A number with three significant digits, as a message argument.
+// A number with four significant digits, as a message argument.
 std::string decimal(double value) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.3g", value);
+    std::snprintf(text, sizeof text, "%.4g", value);
     return text;
 }
 
@@ -193,7 +194,8 @@ Message titleOf(const OurFrame& ours, const Slip& slip) {
         case Mistake::BasisUReversed:
             return "the camera's U = V x N instead of N x V (x runs the other way)"_msg;
         case Mistake::CommandMisread:
-            return {};  // compareCommandFile titles it, from the misreading
+        case Mistake::FittedLighting:
+            return {};  // titled where found, from the misreading or the fitted values
     }
     return {};
 }
@@ -249,6 +251,8 @@ Message mechanismOf(Mistake mistake) {
                    "their pixels"_msg;
         case Mistake::CommandMisread:
             return "the command file read again with that command so gives their pixels"_msg;
+        case Mistake::FittedLighting:
+            return "the scene rendered again with the fitted lighting gives their pixels"_msg;
         case Mistake::ColourOffset:
             return "our bytes moved by that constant give their pixels"_msg;
         case Mistake::ColourScale:
@@ -332,7 +336,10 @@ Message hintOf(Mistake mistake) {
         case Mistake::BasisUReversed:
             return "seed 000: U = N x V, so that U, V, N is right-handed"_msg;
         case Mistake::CommandMisread:
-            return {};  // commandHint: it depends on how the command was misread
+            return {};  // misreadingHint: it depends on how the command was misread
+        case Mistake::FittedLighting:
+            return "compare the light's position, the intensities and the coefficients your "
+                   "program uses with the fitted ones"_msg;
     }
     return {};
 }
@@ -877,26 +884,32 @@ Result<ImageComparison> compareCommandFile(const OurFrame& ours, const Rgba8Imag
         }
     }
     if (!best) return base;
-    ImageComparison out = std::move(base.value());
     Finding f;
-    f.mistake = Mistake::CommandMisread;
+    f.mistake = f.slip.mistake = Mistake::CommandMisread;
     f.command = best->misreading;
-    f.slip.mistake = Mistake::CommandMisread;
-    f.removed = out.difference - best->difference;
-    f.share = double(f.removed) / whole;
-    countPixels(ours.image, best->frame.image, theirs, out.tolerance, f);
     f.title = misreadingTitle(best->misreading);
-    f.evidence = evidenceOf(f);
     f.advice = misreadingHint(best->misreading);
-    out.diagnosis.clear();
-    out.diagnosis.push_back(std::move(f));
-    for (Finding& g : onIt->diagnosis) {
+    return firstFinding(std::move(base.value()), ours, best->frame.image, std::move(f),
+                        std::move(*onIt), theirs);
+}
+
+ImageComparison firstFinding(ImageComparison base, const OurFrame& ours,
+                             const Rgba8Image& alternative, Finding first,
+                             ImageComparison onAlternative, const Rgba8Image& theirs) {
+    const double whole = double(base.difference);
+    first.removed = base.difference - std::min(base.difference, differenceOf(alternative, theirs));
+    first.share = double(first.removed) / whole;
+    countPixels(ours.image, alternative, theirs, base.tolerance, first);
+    first.evidence = evidenceOf(first);
+    base.diagnosis.clear();
+    base.diagnosis.push_back(std::move(first));
+    for (Finding& g : onAlternative.diagnosis) {
         g.share = double(g.removed) / whole;
-        out.diagnosis.push_back(std::move(g));
+        base.diagnosis.push_back(std::move(g));
     }
-    out.unexplained = left / whole;
-    out.unexplainedPixels = onIt->unexplainedPixels;
-    return out;
+    base.unexplained = onAlternative.unexplained * double(onAlternative.difference) / whole;
+    base.unexplainedPixels = onAlternative.unexplainedPixels;
+    return base;
 }
 
 std::optional<ivec2> findEmbedded(const Rgba8Image& ours, const Rgba8Image& theirs) {

@@ -67,6 +67,7 @@ enum class Mistake : std::uint8_t {
     BasisNNotNormalised,        // N not normalised before V - (V.N) N, nor after
     BasisUReversed,             // U = V x N instead of N x V
     CommandMisread,  // a command file's command misread (compareCommandFile; Finding::command)
+    FittedLighting,  // the lighting their colours say they used (lighting_fit.h)
 };
 
 // The mistakes the search composes (CommandMisread is found by compareCommandFile alone).
@@ -186,6 +187,14 @@ Result<ImageComparison> compareCommandFile(const OurFrame& ours, const Rgba8Imag
                                            const std::string& fileName,
                                            const TextureLoader& loadTexture, std::size_t index,
                                            bool colourOnly);
+
+// A comparison with `first` put first: base (ours against theirs) gives the summary, the
+// alternative image (ours with the first finding) its share, and onAlternative (compared on
+// that image's frame) the findings after it; shares and what stays unexplained are of the
+// whole difference.
+ImageComparison firstFinding(ImageComparison base, const OurFrame& ours,
+                             const Rgba8Image& alternative, Finding first,
+                             ImageComparison onAlternative, const Rgba8Image& theirs);
 
 // Where their larger image holds ours exactly (a screenshot with a window border): the
 // offset of our top-left pixel in theirs; none when no offset matches 95% of ours.
