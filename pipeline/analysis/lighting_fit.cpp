@@ -361,6 +361,8 @@ Result<ImageComparison> withFittedLighting(ImageComparison base, const OurFrame&
                                            const LightingFit& fit) {
     if (!fit.explainsBetter() || fit.matches || base.differing == 0 || base.unlit) return base;
     const double whole = double(base.difference);
+    // The catalogue explains all but what a finding must remove at least: nothing to gain.
+    if (base.unexplained * whole <= kLeastShare * whole) return base;
     auto frame = renderOurFrame(sceneWithFit(*ours.trace->scene, *ours.trace->cameraBasis, fit));
     if (!frame) return frame.error();
     auto onIt = compareWithOurs(frame.value(), theirs, tolerance);

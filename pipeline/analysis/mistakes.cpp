@@ -843,6 +843,8 @@ Result<ImageComparison> compareCommandFile(const OurFrame& ours, const Rgba8Imag
     auto base = compareWithOurs(ours, theirs, tolerance);
     if (!base || base->differing == 0 || base->unlit) return base;
     const double whole = double(base->difference);
+    // The catalogue explains all but what a finding must remove at least: nothing to gain.
+    if (base->unexplained * whole <= kLeastShare * whole) return base;
     // The misreadings whose frames come nearest theirs; of the three nearest, the one that
     // leaves least with the catalogue's mistakes on top.
     struct Candidate {
