@@ -209,6 +209,15 @@ void TestCompareStudents::oneMistake() {
     QVERIFY2(result[QStringLiteral("unexplained")][QStringLiteral("share")].toDouble() <= 0.02,
              qPrintable(ranking(result)));
     QCOMPARE(result[QStringLiteral("width")].toInt(), 240);  // ours drawn at their size
+    // A constant's evidence is the histogram of theirs - ours.
+    const QString evidence = diagnosis.first()[QStringLiteral("evidence")].toString();
+    if (expected == QLatin1String("colour-offset"))
+        QVERIFY2(evidence.startsWith(QStringLiteral("theirs - ours is %1 in ")
+                                         .arg(switches.value(1).toInt())),
+                 qPrintable(evidence));
+    if (expected == QLatin1String("colour-scale"))
+        QVERIFY2(evidence.startsWith(QStringLiteral("theirs is within 2 of 0.85 times ours in ")),
+                 qPrintable(evidence));
 }
 
 void TestCompareStudents::severalMistakes_data() {

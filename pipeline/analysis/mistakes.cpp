@@ -562,6 +562,31 @@ Message evidenceOf(const Finding& f) {
                    "%2; %1 pixels that match now would differ"_msg, mechanismOf(f.mistake));
 }
 
+// An offset's or a scale's evidence, from the histogram of theirs - ours over the covered
+// channels that differ (before the finding): how many are the offset itself, or within 2 of
+// the scale times ours.
+Message constantEvidence(const OurFrame& ours, const Rgba8Image& before, const Rgba8Image& theirs,
+                         const Finding& f) {
+    long long differing = 0, agreeing = 0;
+    for (int y = 0; y < theirs.height; ++y)
+        for (int x = 0; x < theirs.width; ++x) {
+            if (!ours.covered(x, y)) continue;
+            for (int c = 0; c < 3; ++c) {
+                const int o = before.pixel(x, y)[c], t = theirs.pixel(x, y)[c];
+                if (o == t) continue;
+                ++differing;
+                agreeing += f.mistake == Mistake::ColourOffset
+                                ? (t - o == static_cast<int>(std::lround(f.slip.amount)) ? 1 : 0)
+                                : (std::abs(t - o * f.slip.amount) <= 2.0 ? 1 : 0);
+            }
+        }
+    if (f.mistake == Mistake::ColourOffset)
+        return "theirs - ours is %1 in %2 of the %3 covered channels that differ"_msg(
+            static_cast<int>(std::lround(f.slip.amount)), agreeing, differing);
+    return "theirs is within 2 of %1 times ours in %2 of the %3 covered channels that differ"_msg(
+        decimal(f.slip.amount), agreeing, differing);
+}
+
 // What a finding changes, from the image before it to the image with it: the differing
 // pixels it makes match, those it spoils, and three examples spread over the first.
 void countPixels(const Rgba8Image& before, const Rgba8Image& after, const Rgba8Image& theirs,
@@ -778,6 +803,8 @@ Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& 
         countPixels(before, after, theirs, out.tolerance, f);
         f.title = titleOf(ours, f.slip);
         f.evidence = evidenceOf(f);
+        if (f.mistake == Mistake::ColourOffset || f.mistake == Mistake::ColourScale)
+            f.evidence = constantEvidence(ours, before, theirs, f);
         f.advice = hintOf(f.mistake);
         out.diagnosis.push_back(std::move(f));
         before = std::move(after);

@@ -590,6 +590,8 @@ const char* const kCatalogue[] = {
                       "the comparison of the depth test: < keeps the first of two equal depths"),
     QT_TRANSLATE_NOOP("Messages", "the colour (and alpha) of the pixels no triangle covers"),
     QT_TRANSLATE_NOOP("Messages", "the alpha written with each shaded pixel"),
+    QT_TRANSLATE_NOOP("Messages", "theirs - ours is %1 in %2 of the %3 covered channels that differ"),
+    QT_TRANSLATE_NOOP("Messages", "theirs is within 2 of %1 times ours in %2 of the %3 covered channels that differ"),
     // pipeline/analysis/lighting_fit.cpp
     QT_TRANSLATE_NOOP("Messages", "the scene rendered again with the fitted lighting gives their pixels"),
     QT_TRANSLATE_NOOP("Messages", "compare the light's position, the intensities and the coefficients your program uses with the fitted ones"),
