@@ -3291,39 +3291,39 @@
         <translation>A cena mudou desde a comparação: comparar a imagem deles com a cena mostrada agora</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="214"/>
+        <location filename="../app/window/compare_panel.cpp" line="223"/>
         <source>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</source>
         <translation>Arquivo &gt; Comparar com imagem... compara um PNG do seu próprio renderizador com a renderização desta cena.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="252"/>
+        <location filename="../app/window/compare_panel.cpp" line="261"/>
         <source>There is no render to compare with yet.</source>
         <translation>Ainda não há renderização com que comparar.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="260"/>
+        <location filename="../app/window/compare_panel.cpp" line="269"/>
         <source>Their image: %1.</source>
         <translation>A imagem deles: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="266"/>
+        <location filename="../app/window/compare_panel.cpp" line="275"/>
         <source>Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.</source>
         <translation>Recortada para %1x%2 em (%3, %4) a partir de %5x%6: o quadro encontrado dentro dela.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="361"/>
-        <location filename="../app/window/compare_panel.cpp" line="364"/>
+        <location filename="../app/window/compare_panel.cpp" line="370"/>
+        <location filename="../app/window/compare_panel.cpp" line="373"/>
         <source>Theirs</source>
         <translation>Deles</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="361"/>
-        <location filename="../app/window/compare_panel.cpp" line="364"/>
+        <location filename="../app/window/compare_panel.cpp" line="370"/>
+        <location filename="../app/window/compare_panel.cpp" line="373"/>
         <source>Ours</source>
         <translation>Nossa</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/compare_panel.cpp" line="369"/>
+        <location filename="../app/window/compare_panel.cpp" line="378"/>
         <source>%n pixel(s) differ by more than %1</source>
         <translation>
             <numerusform>%n pixel difere em mais de %1</numerusform>
@@ -3331,197 +3331,207 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="395"/>
+        <location filename="../app/window/compare_panel.cpp" line="426"/>
         <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
         <translation>%1 contra a nossa renderização (%2x%3): %4 pixels comparados, %5 diferem (%6%).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="404"/>
+        <location filename="../app/window/compare_panel.cpp" line="435"/>
         <source>Their image is unlit: one colour %1 wherever it covers. Only coverage is compared (our covered pixels in that colour), and only projection and scan conversion mistakes are tried.</source>
         <translation>A imagem deles não é iluminada: uma só cor %1 onde ela cobre. Só a cobertura é comparada (os nossos pixels cobertos nessa cor), e só erros de projeção e de conversão por varredura são tentados.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="409"/>
+        <location filename="../app/window/compare_panel.cpp" line="440"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Maior diferença por canal: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="410"/>
+        <location filename="../app/window/compare_panel.cpp" line="441"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Diferença média por canal, nos pixels que diferem: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="412"/>
+        <location filename="../app/window/compare_panel.cpp" line="443"/>
         <source>Pixels covered: %1 by both, %2 only by ours (our depth buffer), %3 only by theirs (not the background).</source>
         <translation>Pixels cobertos: %1 por ambas, %2 só pela nossa (o nosso buffer de profundidade), %3 só pela deles (não o fundo).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="432"/>
+        <location filename="../app/window/compare_panel.cpp" line="463"/>
         <source>Diagnosis, each mistake applied before the next is ranked:</source>
         <translation>Diagnóstico, cada erro aplicado antes de classificar o seguinte:</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="438"/>
+        <location filename="../app/window/compare_panel.cpp" line="469"/>
         <source>Removes %1% of the difference; makes %2 differing pixels match.</source>
         <translation>Remove %1% da diferença; faz %2 pixels diferentes coincidirem.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="419"/>
+        <location filename="../app/window/compare_panel.cpp" line="450"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>A cena mudou desde esta comparação: Comparar de novo compara a imagem deles com a cena mostrada agora.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="426"/>
+        <location filename="../app/window/compare_panel.cpp" line="194"/>
+        <source>Render Ours with the Fitted Lighting</source>
+        <translation>Renderizar a Nossa com a Iluminação Ajustada</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="197"/>
+        <source>Set the light&apos;s position, Ia, Il, kd, ks and n to the values fitted to their colours (one edit, undoable), and render ours with them</source>
+        <translation>Pôr a posição da luz, Ia, Il, kd, ks e n nos valores ajustados às cores deles (uma edição, que pode ser desfeita), e renderizar a nossa com eles</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="457"/>
         <source>The images are the same.</source>
         <translation>As imagens são iguais.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="428"/>
+        <location filename="../app/window/compare_panel.cpp" line="459"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnóstico: nenhum dos erros que o RasterLab conhece explica estas diferenças.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="443"/>
+        <location filename="../app/window/compare_panel.cpp" line="474"/>
         <source>Evidence: %1</source>
         <translation>Evidência: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="444"/>
+        <location filename="../app/window/compare_panel.cpp" line="475"/>
         <source>Check: %1</source>
         <translation>Verifique: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="446"/>
+        <location filename="../app/window/compare_panel.cpp" line="477"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>Em (%1, %2): nossa %3, deles %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="456"/>
+        <location filename="../app/window/compare_panel.cpp" line="487"/>
         <source>Unexplained: %1% of the difference; %2 pixels still differ with every mistake above applied.</source>
         <translation>Sem explicação: %1% da diferença; %2 pixels ainda diferem com todos os erros acima aplicados.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="463"/>
+        <location filename="../app/window/compare_panel.cpp" line="494"/>
         <source>None of the known mistakes explains most of this difference.</source>
         <translation>Nenhum dos erros conhecidos explica a maior parte desta diferença.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="469"/>
+        <location filename="../app/window/compare_panel.cpp" line="500"/>
         <source>Lighting fitted to their colours</source>
         <translation>Iluminação ajustada às cores deles</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="470"/>
+        <location filename="../app/window/compare_panel.cpp" line="501"/>
         <source>%1 pixels inside triangles: rms %2 with ours, %3 fitted.</source>
         <translation>%1 pixels dentro de triângulos: rms %2 com a nossa, %3 ajustada.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="478"/>
+        <location filename="../app/window/compare_panel.cpp" line="509"/>
         <source>%1: theirs %2 ± %3, ours %4</source>
         <translation>%1: deles %2 ± %3, nosso %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="496"/>
+        <location filename="../app/window/compare_panel.cpp" line="527"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Escolha um pixel (aqui ou na imagem) para ver a cor deles ao lado da nossa.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="504"/>
+        <location filename="../app/window/compare_panel.cpp" line="535"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): deles %3, nossa %4.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="511"/>
+        <location filename="../app/window/compare_panel.cpp" line="542"/>
         <source>minus %1 in %2</source>
         <translation>menos %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="512"/>
+        <location filename="../app/window/compare_panel.cpp" line="543"/>
         <source>plus %1 in %2</source>
         <translation>mais %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="515"/>
+        <location filename="../app/window/compare_panel.cpp" line="546"/>
         <source>Their colour is ours.</source>
         <translation>A cor deles é a nossa.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="519"/>
+        <location filename="../app/window/compare_panel.cpp" line="550"/>
         <source>Their colour is ours %1.</source>
         <translation>A cor deles é a nossa %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="521"/>
+        <location filename="../app/window/compare_panel.cpp" line="552"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>A cena mudou desde a comparação: a iluminação mostrada agora não é a comparada.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="533"/>
+        <location filename="../app/window/compare_panel.cpp" line="564"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>Nenhum triângulo nosso cobre este pixel: é o fundo.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="537"/>
+        <location filename="../app/window/compare_panel.cpp" line="568"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>A iluminação deste pixel não é conhecida.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="540"/>
+        <location filename="../app/window/compare_panel.cpp" line="571"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>Os termos que teriam de mudar são calculados para o modelo de iluminação do curso em sombreamento flat ou Phong; este pixel é sombreado de outro modo (o inspetor de pixel mostra como).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="570"/>
+        <location filename="../app/window/compare_panel.cpp" line="601"/>
         <source>the ambient term Ia·ka</source>
         <translation>o termo ambiente Ia·ka</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="571"/>
+        <location filename="../app/window/compare_panel.cpp" line="602"/>
         <source>the diffuse term Il·Od·kd·(N·L)</source>
         <translation>o termo difuso Il·Od·kd·(N·L)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="572"/>
+        <location filename="../app/window/compare_panel.cpp" line="603"/>
         <source>the specular term Il·ks·(R·V)^n</source>
         <translation>o termo especular Il·ks·(R·V)^n</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="588"/>
+        <location filename="../app/window/compare_panel.cpp" line="619"/>
         <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
         <translation>• %1 é 0 no %2 aqui: mudá-lo sozinho não dá a cor deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="593"/>
+        <location filename="../app/window/compare_panel.cpp" line="624"/>
         <source>• %1 would have to be below 0 in %2: not this term alone.</source>
         <translation>• %1 teria de ser menor que 0 no %2: não é este termo sozinho.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="610"/>
+        <location filename="../app/window/compare_panel.cpp" line="641"/>
         <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
         <translation>• %1 teria de ser %2 em vez de %3, × %4 por canal</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="613"/>
+        <location filename="../app/window/compare_panel.cpp" line="644"/>
         <source>: the term left out</source>
         <translation>: o termo omitido</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="616"/>
+        <location filename="../app/window/compare_panel.cpp" line="647"/>
         <source>: that is the term times Od %1</source>
         <translation>: isto é, o termo vezes Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="619"/>
+        <location filename="../app/window/compare_panel.cpp" line="650"/>
         <source>: that is the term without Od %1</source>
         <translation>: isto é, o termo sem Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="625"/>
+        <location filename="../app/window/compare_panel.cpp" line="656"/>
         <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
         <translation>(%1: 255 nas duas imagens, limitado; qualquer valor pelo menos tão alto o dá.)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="628"/>
+        <location filename="../app/window/compare_panel.cpp" line="659"/>
         <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
         <translation>Nenhum termo mudado por um fator simples (omitido, vezes Od, sem Od) dá a cor deles: olhe vários termos, ou o que diz o diagnóstico.</translation>
     </message>
@@ -3550,7 +3560,7 @@
     </message>
     <message>
         <location filename="../app/window/edit_panel.cpp" line="262"/>
-        <location filename="../app/window/edit_panel.cpp" line="713"/>
+        <location filename="../app/window/edit_panel.cpp" line="725"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
@@ -3815,127 +3825,127 @@
         <translation>alteração de %1</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="695"/>
+        <location filename="../app/window/edit_panel.cpp" line="707"/>
         <source>A command file is shown: its scene is not edited here.</source>
         <translation>Um arquivo de comandos está aberto: sua cena não é editada aqui.</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="701"/>
+        <location filename="../app/window/edit_panel.cpp" line="713"/>
         <source>%1 of the %2 example</source>
         <translation>%1 do exemplo %2</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="705"/>
+        <location filename="../app/window/edit_panel.cpp" line="717"/>
         <source>built-in scene</source>
         <translation>cena embutida</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="709"/>
+        <location filename="../app/window/edit_panel.cpp" line="721"/>
         <source>modified</source>
         <translation>modificada</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="715"/>
+        <location filename="../app/window/edit_panel.cpp" line="727"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="725"/>
+        <location filename="../app/window/edit_panel.cpp" line="737"/>
         <source>shading</source>
         <translation>sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="727"/>
+        <location filename="../app/window/edit_panel.cpp" line="739"/>
         <source>two-sided lighting</source>
         <translation>iluminação dos dois lados</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="729"/>
+        <location filename="../app/window/edit_panel.cpp" line="741"/>
         <source>the highlight&apos;s model</source>
         <translation>modelo do brilho</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="731"/>
+        <location filename="../app/window/edit_panel.cpp" line="743"/>
         <source>directional</source>
         <translation>direcional</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="734"/>
+        <location filename="../app/window/edit_panel.cpp" line="746"/>
         <source>spot cutoff</source>
         <translation>corte do spot</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="737"/>
+        <location filename="../app/window/edit_panel.cpp" line="749"/>
         <source>spot exponent</source>
         <translation>expoente do spot</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="740"/>
+        <location filename="../app/window/edit_panel.cpp" line="752"/>
         <source>spot direction</source>
         <translation>direção do spot</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="743"/>
+        <location filename="../app/window/edit_panel.cpp" line="755"/>
         <source>attenuation</source>
         <translation>atenuação</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="753"/>
+        <location filename="../app/window/edit_panel.cpp" line="765"/>
         <source>%1 of light %2</source>
         <translation>%1 da luz %2</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="762"/>
+        <location filename="../app/window/edit_panel.cpp" line="774"/>
         <source>The camera was not saved.</source>
         <translation>A câmera não foi salva.</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="762"/>
+        <location filename="../app/window/edit_panel.cpp" line="774"/>
         <source>The lighting was not saved.</source>
         <translation>A iluminação não foi salva.</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="835"/>
+        <location filename="../app/window/edit_panel.cpp" line="847"/>
         <source>the %1 example</source>
         <translation>o exemplo %1</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="840"/>
+        <location filename="../app/window/edit_panel.cpp" line="852"/>
         <source>The camera has changes that are not saved (%1).</source>
         <translation>A câmera tem alterações não salvas (%1).</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="841"/>
+        <location filename="../app/window/edit_panel.cpp" line="853"/>
         <source>The lighting has changes that are not saved (%1).</source>
         <translation>A iluminação tem alterações não salvas (%1).</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="761"/>
+        <location filename="../app/window/edit_panel.cpp" line="773"/>
         <source>Save</source>
         <translation>Salvar</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="817"/>
+        <location filename="../app/window/edit_panel.cpp" line="829"/>
         <source>Save Camera As</source>
         <translation>Salvar câmera como</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="817"/>
+        <location filename="../app/window/edit_panel.cpp" line="829"/>
         <source>Save Lighting As</source>
         <translation>Salvar iluminação como</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="837"/>
+        <location filename="../app/window/edit_panel.cpp" line="849"/>
         <source>the built-in scene</source>
         <translation>a cena embutida</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="839"/>
+        <location filename="../app/window/edit_panel.cpp" line="851"/>
         <source>Unsaved changes</source>
         <translation>Alterações não salvas</translation>
     </message>
     <message>
-        <location filename="../app/window/edit_panel.cpp" line="846"/>
+        <location filename="../app/window/edit_panel.cpp" line="858"/>
         <source>Save them?</source>
         <translation>Salvá-las?</translation>
     </message>
@@ -4146,32 +4156,32 @@
         <translation>&amp;Algoritmo do pintor (flat, do mais distante ao mais próximo, sem teste de profundidade)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1091"/>
+        <location filename="../app/window/main_window.cpp" line="1097"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>avançar, voltar um passo (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1093"/>
+        <location filename="../app/window/main_window.cpp" line="1099"/>
         <source>Space</source>
         <translation>Barra de espaço</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1093"/>
+        <location filename="../app/window/main_window.cpp" line="1099"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>reproduzir / pausar (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1099"/>
+        <location filename="../app/window/main_window.cpp" line="1105"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>soltar o pixel escolhido (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1100"/>
+        <location filename="../app/window/main_window.cpp" line="1106"/>
         <source>presentation mode on / off</source>
         <translation>ligar / desligar o modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1105"/>
+        <location filename="../app/window/main_window.cpp" line="1111"/>
         <source>save, undo, redo</source>
         <translation>salvar, desfazer, refazer</translation>
     </message>
@@ -4436,87 +4446,87 @@
         <translation>&amp;Mesmo lado (recortar só os triângulos que cruzam o plano do olho)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="681"/>
+        <location filename="../app/window/main_window.cpp" line="687"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Todos os triângulos estão atrás da câmera (N aponta para longe do objeto?), então o recorte no plano próximo não deixa nada para desenhar. A fórmula da seed 000 divide por z mesmo assim: desenharia %1 dos %2 triângulos como a reflexão do objeto pelo olho, girada meia volta na tela, e o z-buffer (que guarda o menor z) guardaria o lado mais distante da câmera. A vista lateral da projeção mostra o olho, N e o objeto.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="986"/>
+        <location filename="../app/window/main_window.cpp" line="992"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1074"/>
+        <location filename="../app/window/main_window.cpp" line="1080"/>
         <source>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</source>
         <translation>&lt;p&gt;Segue as disciplinas para as quais foi feito: os projetos da disciplina de computação gráfica da UFPE e da UFRPE (sombreamento de Phong com z-buffer, e sua variante com sombreamento flat e o algoritmo do pintor), o trabalho “HW2: 3D Rasterizer”, o pipeline de renderização por quadro de uma disciplina de animação, e os slides da aula do Prof. Jonh Edson R. de Carvalho sobre modelos de iluminação (“Modelos de Iluminação”).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1088"/>
+        <location filename="../app/window/main_window.cpp" line="1094"/>
         <source>step forward</source>
         <translation>avançar um passo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1089"/>
+        <location filename="../app/window/main_window.cpp" line="1095"/>
         <source>step back</source>
         <translation>voltar um passo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1092"/>
+        <location filename="../app/window/main_window.cpp" line="1098"/>
         <source>play / pause</source>
         <translation>reproduzir / pausar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1094"/>
+        <location filename="../app/window/main_window.cpp" line="1100"/>
         <source>jump to the start / the end of the frame</source>
         <translation>ir ao início / ao fim do quadro</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1095"/>
+        <location filename="../app/window/main_window.cpp" line="1101"/>
         <source>continue to the next breakpoint</source>
         <translation>continuar até o próximo ponto de parada</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1096"/>
+        <location filename="../app/window/main_window.cpp" line="1102"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>avançar por etapa, triângulo, linha de varredura, segmento, pixel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1097"/>
+        <location filename="../app/window/main_window.cpp" line="1103"/>
         <source>show a stage&apos;s view</source>
         <translation>mostrar o painel de uma etapa</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1098"/>
+        <location filename="../app/window/main_window.cpp" line="1104"/>
         <source>Click, arrows</source>
         <translation>Clique, setas</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1098"/>
+        <location filename="../app/window/main_window.cpp" line="1104"/>
         <source>pick a pixel, move it by one</source>
         <translation>escolher um pixel, movê-lo de um em um</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1101"/>
+        <location filename="../app/window/main_window.cpp" line="1107"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, duplo clique no título de um painel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1102"/>
+        <location filename="../app/window/main_window.cpp" line="1108"/>
         <source>fill the window with the panel (the image, from the image), and back</source>
         <translation>preencher a janela com o painel (a imagem, a partir da imagem), e voltar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1104"/>
+        <location filename="../app/window/main_window.cpp" line="1110"/>
         <source>open, export the image, export it as displayed</source>
         <translation>abrir, exportar a imagem, exportá-la como exibida</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1107"/>
+        <location filename="../app/window/main_window.cpp" line="1113"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>ajustar, tamanho real, aumentar zoom, diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1109"/>
+        <location filename="../app/window/main_window.cpp" line="1115"/>
         <source>Keyboard Shortcuts</source>
         <translation>Atalhos de teclado</translation>
     </message>
@@ -4576,7 +4586,7 @@
         <translation>Exatidão</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="655"/>
+        <location filename="../app/window/main_window.cpp" line="661"/>
         <location filename="../app/window/main_window_export.cpp" line="35"/>
         <location filename="../app/window/main_window_export.cpp" line="133"/>
         <location filename="../app/window/main_window_export.cpp" line="175"/>
@@ -4595,18 +4605,18 @@
         <translation>Exportado %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="708"/>
+        <location filename="../app/window/main_window.cpp" line="714"/>
         <source>rendering...</source>
         <translation>renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="708"/>
+        <location filename="../app/window/main_window.cpp" line="714"/>
         <source>%1, rendering...</source>
         <translation>%1, renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="706"/>
-        <location filename="../app/window/main_window.cpp" line="949"/>
+        <location filename="../app/window/main_window.cpp" line="712"/>
+        <location filename="../app/window/main_window.cpp" line="955"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -4666,73 +4676,73 @@
         <translation>&amp;Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="387"/>
+        <location filename="../app/window/main_window.cpp" line="393"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Apresentação: F5 ou Esc sai; Page Down, → e Espaço avançam e reproduzem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="638"/>
+        <location filename="../app/window/main_window.cpp" line="644"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="716"/>
+        <location filename="../app/window/main_window.cpp" line="722"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparando o passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="716"/>
+        <location filename="../app/window/main_window.cpp" line="722"/>
         <source>Rendering</source>
         <translation>Renderizando</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="892"/>
+        <location filename="../app/window/main_window.cpp" line="898"/>
         <source>Error: %1</source>
         <translation>Erro: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="916"/>
+        <location filename="../app/window/main_window.cpp" line="922"/>
         <source>Files</source>
         <translation>Arquivos</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="919"/>
+        <location filename="../app/window/main_window.cpp" line="925"/>
         <source>Command file</source>
         <translation>Arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="920"/>
+        <location filename="../app/window/main_window.cpp" line="926"/>
         <source>Image</source>
         <translation>Imagem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="922"/>
+        <location filename="../app/window/main_window.cpp" line="928"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vértices, %2 triângulos em %3 desenhos; %4 x %5 pixels; %6 luzes</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="932"/>
+        <location filename="../app/window/main_window.cpp" line="938"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="933"/>
+        <location filename="../app/window/main_window.cpp" line="939"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="934"/>
+        <location filename="../app/window/main_window.cpp" line="940"/>
         <source>Object</source>
         <translation>Objeto</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="936"/>
+        <location filename="../app/window/main_window.cpp" line="942"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vértices, %2 triângulos; %3 x %4 pixels, sombreamento %5</translation>
     </message>
     <message>
         <location filename="../app/window/main_window.cpp" line="260"/>
-        <location filename="../app/window/main_window.cpp" line="943"/>
+        <location filename="../app/window/main_window.cpp" line="949"/>
         <source>Stages</source>
         <translation>Etapas</translation>
     </message>
@@ -4787,87 +4797,92 @@
         <translation>Algoritmo do pintor (semente 004)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="357"/>
+        <location filename="../app/window/main_window.cpp" line="355"/>
+        <source>Use the Fitted Lighting</source>
+        <translation>Usar a Iluminação Ajustada</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window.cpp" line="363"/>
         <source>Compare</source>
         <translation>Comparar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="357"/>
+        <location filename="../app/window/main_window.cpp" line="363"/>
         <source>Compare with their image</source>
         <translation>Comparar com a imagem deles</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="914"/>
+        <location filename="../app/window/main_window.cpp" line="920"/>
         <source>Lesson: %1</source>
         <translation>Aula: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="950"/>
+        <location filename="../app/window/main_window.cpp" line="956"/>
         <source>skipped: %1</source>
         <translation>omitida: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="953"/>
+        <location filename="../app/window/main_window.cpp" line="959"/>
         <source>Counts</source>
         <translation>Contagens</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="954"/>
+        <location filename="../app/window/main_window.cpp" line="960"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triângulos recortados no plano próximo: %1; atrás da câmera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="957"/>
+        <location filename="../app/window/main_window.cpp" line="963"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Triângulos de área zero: %1 no espaço de vista, %2 na tela&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="960"/>
+        <location filename="../app/window/main_window.cpp" line="966"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragmentos testados: %1; escritos: %2; rejeitados: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="964"/>
+        <location filename="../app/window/main_window.cpp" line="970"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels sombreados: %1; normais voltadas para o observador: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; limitados a 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="988"/>
+        <location filename="../app/window/main_window.cpp" line="994"/>
         <source>empty (+inf)</source>
         <translation>vazio (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="989"/>
+        <location filename="../app/window/main_window.cpp" line="995"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   profundidade %6</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1005"/>
+        <location filename="../app/window/main_window.cpp" line="1011"/>
         <source>Open Command File</source>
         <translation>Abrir arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1006"/>
+        <location filename="../app/window/main_window.cpp" line="1012"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Arquivos de comandos (*.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1012"/>
+        <location filename="../app/window/main_window.cpp" line="1018"/>
         <source>Open</source>
         <translation>Abrir</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1012"/>
+        <location filename="../app/window/main_window.cpp" line="1018"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Arquivos de cena (*.byu *.cfg *.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1022"/>
+        <location filename="../app/window/main_window.cpp" line="1028"/>
         <source>Export PNG</source>
         <translation>Exportar PNG</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1022"/>
+        <location filename="../app/window/main_window.cpp" line="1028"/>
         <location filename="../app/window/main_window_actions.cpp" line="149"/>
         <location filename="../app/window/main_window_actions.cpp" line="156"/>
         <location filename="../app/window/main_window_export.cpp" line="198"/>
@@ -4876,17 +4891,17 @@
         <translation>Imagens PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1027"/>
+        <location filename="../app/window/main_window.cpp" line="1033"/>
         <source>Compare with Image</source>
         <translation>Comparar com imagem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1028"/>
+        <location filename="../app/window/main_window.cpp" line="1034"/>
         <source>PNG images (*.png);;All files (*)</source>
         <translation>Imagens PNG (*.png);;Todos os arquivos (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/main_window.cpp" line="1053"/>
+        <location filename="../app/window/main_window.cpp" line="1059"/>
         <source>Compared %1 with our render: %n pixel(s) differ</source>
         <translation>
             <numerusform>%1 comparada com a nossa renderização: %n pixel difere</numerusform>
@@ -4894,22 +4909,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1061"/>
+        <location filename="../app/window/main_window.cpp" line="1067"/>
         <source>About RasterLab</source>
         <translation>Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1067"/>
+        <location filename="../app/window/main_window.cpp" line="1073"/>
         <source>Released under the MIT License, whose text is in %1.</source>
         <translation>Distribuído sob a Licença MIT, cujo texto está em %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1069"/>
+        <location filename="../app/window/main_window.cpp" line="1075"/>
         <source>Released under the MIT License.</source>
         <translation>Distribuído sob a Licença MIT.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1070"/>
+        <location filename="../app/window/main_window.cpp" line="1076"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;O pipeline clássico de rasterização por software, etapa por etapa: base da câmera, coordenadas de vista, normais, projeção, conversão por varredura, teste de profundidade e sombreamento.&lt;/p&gt;</translation>
     </message>

@@ -191,6 +191,15 @@ ComparePanel::ComparePanel(Inspection* inspection, QWidget* parent)
            "the scene shown now"));
     m_again->setVisible(false);
     bar->addWidget(m_again);
+    m_useFit = new QPushButton(tr("Render Ours with the Fitted Lighting"));
+    m_useFit->setObjectName(QStringLiteral("compareUseFitButton"));
+    m_useFit->setToolTip(
+        tr("Set the light's position, Ia, Il, kd, ks and n to the values fitted to their "
+           "colours (one edit, undoable), and render ours with them"));
+    m_useFit->setVisible(false);
+    bar->addWidget(m_useFit);
+    connect(m_useFit, &QPushButton::clicked, this,
+            [this] { emit useFittedLighting(fittedSettings()); });
     layout->addLayout(bar);
 
     m_canvas = new CompareCanvas;
@@ -383,12 +392,34 @@ QString ComparePanel::diagnosisText() const {
     return doc.toPlainText();
 }
 
+std::vector<ComparePanel::FittedSetting> ComparePanel::fittedSettings() const {
+    if (!m_ours || !m_fit.fitted || !m_ours->trace->cameraBasis) return {};
+    const auto fitted = rl::sceneWithFit(*m_ours->trace->scene, *m_ours->trace->cameraBasis, m_fit);
+    const rl::Light& light = fitted->lights.front();
+    const auto draw = std::find_if(fitted->draws.begin(), fitted->draws.end(), [](const rl::Draw& d) {
+        return d.lighting == rl::LightingModel::CoursePhong;
+    });
+    if (draw == fitted->draws.end()) return {};
+    const rl::Material& m = draw->material;
+    const auto triple = [](const auto& v) { return SceneDocument::Numbers{v[0], v[1], v[2]}; };
+    using Field = SceneDocument::Field;
+    return {{Field::LightPosition, 0, triple(rl::dvec3(light.pWorld) / light.pWorld.w)},
+            {Field::LightIntensity, 0, triple(light.intensity)},
+            {Field::Ambient, 0, triple(fitted->ambientIntensity)},
+            {Field::Kd, 0, triple(m.kd)},
+            {Field::Ks, 0, {m.ks, 0.0, 0.0}},
+            {Field::Shininess, 0, {m.shininess, 0.0, 0.0}},
+            {Field::Emission, 0, triple(m.emission)}};
+}
+
 QString ComparePanel::pixelText() const {
     return m_pixel->text();
 }
 
 void ComparePanel::refreshTexts() {
     m_again->setVisible(isStale());
+    m_useFit->setVisible(m_comparison && m_fit.explainsBetter() && !isStale() &&
+                         !(m_commandFile && !m_commandFile().first.isEmpty()));
     if (!m_comparison) return;
     const rl::ImageComparison& c = *m_comparison;
     QStringList summary;

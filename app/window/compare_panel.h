@@ -13,7 +13,9 @@
 #include <memory>
 #include <optional>
 #include <utility>
+#include <vector>
 
+#include "app/documents/scene_document.h"
 #include "pipeline/analysis/lighting_fit.h"
 #include "pipeline/analysis/mistakes.h"
 #include "views/lighting_breakdown.h"
@@ -66,8 +68,20 @@ public:
     QString diagnosisText() const;  // plain text
     QString pixelText() const;
 
+    // The scene's values that give the fitted lighting (the Render Ours with the Fitted
+    // Lighting button's): the first light's position and Il, Ia, kd, ks, n and Ke.
+    struct FittedSetting {
+        SceneDocument::Field field;
+        std::size_t light = 0;
+        SceneDocument::Numbers value{};
+    };
+    std::vector<FittedSetting> fittedSettings() const;
+    QPushButton* useFitButton() const { return m_useFit; }
+
 signals:
     void compared();
+    // Render Ours with the Fitted Lighting: set these values in the scene, as one edit.
+    void useFittedLighting(const std::vector<ComparePanel::FittedSetting>& settings);
 
 private:
     CommandFileSource m_commandFile;
@@ -95,6 +109,7 @@ private:
     QComboBox* m_mode = nullptr;
     QSpinBox* m_threshold = nullptr;
     QPushButton* m_again = nullptr;
+    QPushButton* m_useFit = nullptr;
     CompareCanvas* m_canvas = nullptr;
     QLabel* m_summary = nullptr;
     QLabel* m_diagnosis = nullptr;

@@ -627,6 +627,18 @@ void EditPanel::push(Field field, std::size_t light, int source,
     m_pushing = false;
 }
 
+void EditPanel::setValues(const std::vector<Setting>& settings, const QString& text) {
+    ++m_session;  // merges with no edit before or after
+    m_stack->beginMacro(text);
+    for (const Setting& s : settings) {
+        const SceneDocument::Numbers before = m_document->value(s.field, s.light);
+        const SceneDocument::Numbers after = storedAs(s.field, s.value);
+        if (after != before) push(s.field, s.light, -1, before, after);
+    }
+    m_stack->endMacro();
+    ++m_session;
+}
+
 void EditPanel::apply(Field field, std::size_t light, const SceneDocument::Numbers& value) {
     // An undo or redo ends the merging: the next edit is a step of its own.
     if (!m_pushing) ++m_session;

@@ -85,6 +85,14 @@ public:
     std::size_t currentLight() const;
     void setCurrentLight(std::size_t light);
 
+    // Sets several fields at once as one undo step named `text` (Compare's fitted lighting).
+    struct Setting {
+        Field field;
+        std::size_t light = 0;
+        SceneDocument::Numbers value{};
+    };
+    void setValues(const std::vector<Setting>& settings, const QString& text);
+
     // The longest pause (ms) between two changes of one spin box that still merge them.
     qint64 mergeInterval() const { return m_mergeIntervalMs; }
     void setMergeInterval(qint64 ms) { m_mergeIntervalMs = ms; }

@@ -348,6 +348,12 @@ void MainWindow::createDocks() {
     // A student's image against ours (File > Compare with Image...): hidden until then, and
     // beside the geometry views, the taller of the two groups on the right.
     m_compare = new ComparePanel(m_inspection);
+    connect(m_compare, &ComparePanel::useFittedLighting, this,
+            [this](const std::vector<ComparePanel::FittedSetting>& fitted) {
+                std::vector<EditPanel::Setting> settings;
+                for (const auto& f : fitted) settings.push_back({f.field, f.light, f.value});
+                m_edit->setValues(settings, tr("Use the Fitted Lighting"));
+            });
     m_compare->setCommandFileSource([this] {
         return m_document.showsCommandFile()
                    ? std::pair(m_document.commandFilePath(), m_document.imageIndex())
