@@ -3331,42 +3331,42 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="426"/>
+        <location filename="../app/window/compare_panel.cpp" line="442"/>
         <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
         <translation>%1 contra a nossa renderização (%2x%3): %4 pixels comparados, %5 diferem (%6%).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="435"/>
+        <location filename="../app/window/compare_panel.cpp" line="451"/>
         <source>Their image is unlit: one colour %1 wherever it covers. Only coverage is compared (our covered pixels in that colour), and only projection and scan conversion mistakes are tried.</source>
         <translation>A imagem deles não é iluminada: uma só cor %1 onde ela cobre. Só a cobertura é comparada (os nossos pixels cobertos nessa cor), e só erros de projeção e de conversão por varredura são tentados.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="440"/>
+        <location filename="../app/window/compare_panel.cpp" line="456"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Maior diferença por canal: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="441"/>
+        <location filename="../app/window/compare_panel.cpp" line="457"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Diferença média por canal, nos pixels que diferem: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="443"/>
+        <location filename="../app/window/compare_panel.cpp" line="459"/>
         <source>Pixels covered: %1 by both, %2 only by ours (our depth buffer), %3 only by theirs (not the background).</source>
         <translation>Pixels cobertos: %1 por ambas, %2 só pela nossa (o nosso buffer de profundidade), %3 só pela deles (não o fundo).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="463"/>
+        <location filename="../app/window/compare_panel.cpp" line="479"/>
         <source>Diagnosis, each mistake applied before the next is ranked:</source>
         <translation>Diagnóstico, cada erro aplicado antes de classificar o seguinte:</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="469"/>
+        <location filename="../app/window/compare_panel.cpp" line="485"/>
         <source>Removes %1% of the difference; makes %2 differing pixels match.</source>
         <translation>Remove %1% da diferença; faz %2 pixels diferentes coincidirem.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="450"/>
+        <location filename="../app/window/compare_panel.cpp" line="466"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>A cena mudou desde esta comparação: Comparar de novo compara a imagem deles com a cena mostrada agora.</translation>
     </message>
@@ -3381,157 +3381,222 @@
         <translation>Pôr a posição da luz, Ia, Il, kd, ks e n nos valores ajustados às cores deles (uma edição, que pode ser desfeita), e renderizar a nossa com eles</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="457"/>
+        <location filename="../app/window/compare_panel.cpp" line="398"/>
+        <source>light x (view)</source>
+        <translation>luz x (vista)</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="398"/>
+        <source>light y (view)</source>
+        <translation>luz y (vista)</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="399"/>
+        <source>light z (view)</source>
+        <translation>luz z (vista)</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="399"/>
+        <source>n</source>
+        <translation>n</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="400"/>
+        <source>ambient Ia*ka R</source>
+        <translation>ambiente Ia*ka R</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="400"/>
+        <source>ambient Ia*ka G</source>
+        <translation>ambiente Ia*ka G</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="401"/>
+        <source>ambient Ia*ka B</source>
+        <translation>ambiente Ia*ka B</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="401"/>
+        <source>diffuse Il*Od*kd R</source>
+        <translation>difuso Il*Od*kd R</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="402"/>
+        <source>diffuse Il*Od*kd G</source>
+        <translation>difuso Il*Od*kd G</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="402"/>
+        <source>diffuse Il*Od*kd B</source>
+        <translation>difuso Il*Od*kd B</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="403"/>
+        <source>specular Il*ks R</source>
+        <translation>especular Il*ks R</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="403"/>
+        <source>specular Il*ks G</source>
+        <translation>especular Il*ks G</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="404"/>
+        <source>specular Il*ks B</source>
+        <translation>especular Il*ks B</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="473"/>
         <source>The images are the same.</source>
         <translation>As imagens são iguais.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="459"/>
+        <location filename="../app/window/compare_panel.cpp" line="475"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnóstico: nenhum dos erros que o RasterLab conhece explica estas diferenças.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="474"/>
+        <location filename="../app/window/compare_panel.cpp" line="490"/>
         <source>Evidence: %1</source>
         <translation>Evidência: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="475"/>
+        <location filename="../app/window/compare_panel.cpp" line="491"/>
         <source>Check: %1</source>
         <translation>Verifique: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="477"/>
+        <location filename="../app/window/compare_panel.cpp" line="493"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>Em (%1, %2): nossa %3, deles %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="487"/>
+        <location filename="../app/window/compare_panel.cpp" line="503"/>
         <source>Unexplained: %1% of the difference; %2 pixels still differ with every mistake above applied.</source>
         <translation>Sem explicação: %1% da diferença; %2 pixels ainda diferem com todos os erros acima aplicados.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="494"/>
+        <location filename="../app/window/compare_panel.cpp" line="510"/>
         <source>None of the known mistakes explains most of this difference.</source>
         <translation>Nenhum dos erros conhecidos explica a maior parte desta diferença.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="500"/>
+        <location filename="../app/window/compare_panel.cpp" line="516"/>
         <source>Lighting fitted to their colours</source>
         <translation>Iluminação ajustada às cores deles</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="501"/>
+        <location filename="../app/window/compare_panel.cpp" line="517"/>
         <source>%1 pixels inside triangles: rms %2 with ours, %3 fitted.</source>
         <translation>%1 pixels dentro de triângulos: rms %2 com a nossa, %3 ajustada.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="509"/>
+        <location filename="../app/window/compare_panel.cpp" line="525"/>
         <source>%1: theirs %2 ± %3, ours %4</source>
         <translation>%1: deles %2 ± %3, nosso %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="527"/>
+        <location filename="../app/window/compare_panel.cpp" line="543"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Escolha um pixel (aqui ou na imagem) para ver a cor deles ao lado da nossa.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="535"/>
+        <location filename="../app/window/compare_panel.cpp" line="551"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): deles %3, nossa %4.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="542"/>
+        <location filename="../app/window/compare_panel.cpp" line="558"/>
         <source>minus %1 in %2</source>
         <translation>menos %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="543"/>
+        <location filename="../app/window/compare_panel.cpp" line="559"/>
         <source>plus %1 in %2</source>
         <translation>mais %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="546"/>
+        <location filename="../app/window/compare_panel.cpp" line="562"/>
         <source>Their colour is ours.</source>
         <translation>A cor deles é a nossa.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="550"/>
+        <location filename="../app/window/compare_panel.cpp" line="566"/>
         <source>Their colour is ours %1.</source>
         <translation>A cor deles é a nossa %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="552"/>
+        <location filename="../app/window/compare_panel.cpp" line="568"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>A cena mudou desde a comparação: a iluminação mostrada agora não é a comparada.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="564"/>
+        <location filename="../app/window/compare_panel.cpp" line="580"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>Nenhum triângulo nosso cobre este pixel: é o fundo.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="568"/>
+        <location filename="../app/window/compare_panel.cpp" line="584"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>A iluminação deste pixel não é conhecida.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="571"/>
+        <location filename="../app/window/compare_panel.cpp" line="587"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>Os termos que teriam de mudar são calculados para o modelo de iluminação do curso em sombreamento flat ou Phong; este pixel é sombreado de outro modo (o inspetor de pixel mostra como).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="601"/>
+        <location filename="../app/window/compare_panel.cpp" line="617"/>
         <source>the ambient term Ia·ka</source>
         <translation>o termo ambiente Ia·ka</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="602"/>
+        <location filename="../app/window/compare_panel.cpp" line="618"/>
         <source>the diffuse term Il·Od·kd·(N·L)</source>
         <translation>o termo difuso Il·Od·kd·(N·L)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="603"/>
+        <location filename="../app/window/compare_panel.cpp" line="619"/>
         <source>the specular term Il·ks·(R·V)^n</source>
         <translation>o termo especular Il·ks·(R·V)^n</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="619"/>
+        <location filename="../app/window/compare_panel.cpp" line="635"/>
         <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
         <translation>• %1 é 0 no %2 aqui: mudá-lo sozinho não dá a cor deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="624"/>
+        <location filename="../app/window/compare_panel.cpp" line="640"/>
         <source>• %1 would have to be below 0 in %2: not this term alone.</source>
         <translation>• %1 teria de ser menor que 0 no %2: não é este termo sozinho.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="641"/>
+        <location filename="../app/window/compare_panel.cpp" line="657"/>
         <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
         <translation>• %1 teria de ser %2 em vez de %3, × %4 por canal</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="644"/>
+        <location filename="../app/window/compare_panel.cpp" line="660"/>
         <source>: the term left out</source>
         <translation>: o termo omitido</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="647"/>
+        <location filename="../app/window/compare_panel.cpp" line="663"/>
         <source>: that is the term times Od %1</source>
         <translation>: isto é, o termo vezes Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="650"/>
+        <location filename="../app/window/compare_panel.cpp" line="666"/>
         <source>: that is the term without Od %1</source>
         <translation>: isto é, o termo sem Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="656"/>
+        <location filename="../app/window/compare_panel.cpp" line="672"/>
         <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
         <translation>(%1: 255 nas duas imagens, limitado; qualquer valor pelo menos tão alto o dá.)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="659"/>
+        <location filename="../app/window/compare_panel.cpp" line="675"/>
         <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
         <translation>Nenhum termo mudado por um fator simples (omitido, vezes Od, sem Od) dá a cor deles: olhe vários termos, ou o que diz o diagnóstico.</translation>
     </message>

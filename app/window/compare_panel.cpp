@@ -392,6 +392,22 @@ QString ComparePanel::diagnosisText() const {
     return doc.toPlainText();
 }
 
+QString ComparePanel::fittedName(const std::string& name) {
+    // The fit's value names (lighting_fit.cpp), in the user's language.
+    static const char* const names[] = {
+        QT_TR_NOOP("light x (view)"),        QT_TR_NOOP("light y (view)"),
+        QT_TR_NOOP("light z (view)"),        QT_TR_NOOP("n"),
+        QT_TR_NOOP("ambient Ia*ka R"),       QT_TR_NOOP("ambient Ia*ka G"),
+        QT_TR_NOOP("ambient Ia*ka B"),       QT_TR_NOOP("diffuse Il*Od*kd R"),
+        QT_TR_NOOP("diffuse Il*Od*kd G"),    QT_TR_NOOP("diffuse Il*Od*kd B"),
+        QT_TR_NOOP("specular Il*ks R"),      QT_TR_NOOP("specular Il*ks G"),
+        QT_TR_NOOP("specular Il*ks B"),
+    };
+    for (const char* known : names)
+        if (name == known) return tr(known);
+    return QString::fromStdString(name);
+}
+
 std::vector<ComparePanel::FittedSetting> ComparePanel::fittedSettings() const {
     if (!m_ours || !m_fit.fitted || !m_ours->trace->cameraBasis) return {};
     const auto fitted = rl::sceneWithFit(*m_ours->trace->scene, *m_ours->trace->cameraBasis, m_fit);
@@ -507,7 +523,7 @@ void ComparePanel::refreshTexts() {
             if (v.apart)
                 html += QStringLiteral("<br>") +
                         tr("%1: theirs %2 ± %3, ours %4")
-                            .arg(QString::fromStdString(v.name))
+                            .arg(fittedName(v.name))
                             .arg(v.theirs, 0, 'g', 4)
                             .arg(v.uncertainty, 0, 'g', 2)
                             .arg(v.ours, 0, 'g', 4)

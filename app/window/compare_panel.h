@@ -12,6 +12,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -77,6 +78,8 @@ public:
     };
     std::vector<FittedSetting> fittedSettings() const;
     QPushButton* useFitButton() const { return m_useFit; }
+    // A fitted value's name (lighting_fit.h's), translated.
+    static QString fittedName(const std::string& name);
 
 signals:
     void compared();
