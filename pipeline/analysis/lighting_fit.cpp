@@ -130,55 +130,66 @@ Point minimise(const std::function<double(const Point&)>& cost, const Point& sta
 
 }  // namespace
 
-LightingFit fitLighting(const OurFrame& ours, const Rgba8Image& theirs) {
-    LightingFit out;
-    const FrameTrace& frame = *ours.trace;
+namespace {
+
+bool litByCourse(const Draw& d) { return d.lighting == LightingModel::CoursePhong; }
+
+// The material of the draws the fit applies to; none, with the reason, when the scene has no
+// course camera and one positional light, or its lit draws are not all Phong-shaded in one
+// material.
+const Material* fittableMaterial(const FrameTrace& frame, Message& reason) {
     const Scene& scene = *frame.scene;
-    const auto lit = [](const Draw& d) { return d.lighting == LightingModel::CoursePhong; };
-    const auto firstLit = std::find_if(scene.draws.begin(), scene.draws.end(), lit);
+    const auto firstLit = std::find_if(scene.draws.begin(), scene.draws.end(), litByCourse);
     if (scene.lights.size() != 1 || scene.lights[0].pWorld.w == 0.0 ||
         firstLit == scene.draws.end() || !frame.cameraBasis || frame.cameraBasis->skipped ||
         frame.normals->skipped) {
-        out.reason = "the lighting is fitted for a course camera and one positional light of the "
-                     "course's model"_msg;
-        return out;
+        reason = "the lighting is fitted for a course camera and one positional light of the "
+                 "course's model"_msg;
+        return nullptr;
     }
-    const Material material = firstLit->material;
+    const Material& m = firstLit->material;
     for (const Draw& d : scene.draws)
-        if (lit(d) && (d.material.od != material.od || d.material.kd != material.kd ||
-                       d.material.ka != material.ka || d.material.ks != material.ks ||
-                       d.material.shininess != material.shininess ||
-                       d.colour != ColourSource::Material || d.shading != ShadingModel::Phong)) {
-            out.reason = "the lighting is fitted for Phong-shaded draws of one material"_msg;
-            return out;
+        if (litByCourse(d) && (d.material.od != m.od || d.material.kd != m.kd ||
+                               d.material.ka != m.ka || d.material.ks != m.ks ||
+                               d.material.shininess != m.shininess ||
+                               d.colour != ColourSource::Material ||
+                               d.shading != ShadingModel::Phong)) {
+            reason = "the lighting is fitted for Phong-shaded draws of one material"_msg;
+            return nullptr;
         }
-    // The samples: a grid over the covered pixels inside a triangle.
+    return &m;
+}
+
+// A grid of about 3,000 of our covered pixels inside a triangle (its four neighbours on the
+// same one) of a course-lit draw, where none of their channels is clamped.
+std::vector<Sample> samplesOf(const OurFrame& ours, const Rgba8Image& theirs) {
+    const FrameTrace& frame = *ours.trace;
+    const Scene& scene = *frame.scene;
     const FrameLighting lighting(scene, *frame.view, *frame.normals, *frame.projection);
     const DepthTest& depth = *frame.depth;
     const bool truncated = scene.conventions.rounding == ByteRounding::Truncate;
-    const double toByte = 255.0 / scene.conventions.colourScale;
     std::size_t covered = 0;
     for (int y = 0; y < theirs.height; ++y)
         for (int x = 0; x < theirs.width; ++x) covered += ours.covered(x, y) ? 1 : 0;
     const int stride = std::max(1, int(std::sqrt(double(covered) / 3000.0)));
     std::vector<Sample> samples;
+    if (!depth.barycentricsKept) return samples;
     for (int y = 1; y + 1 < theirs.height; y += stride) {
         for (int x = 1; x + 1 < theirs.width; x += stride) {
             const std::uint32_t t = depth.triangle.at(x, y);
             if (t == kNoTriangle || depth.triangle.at(x - 1, y) != t ||
                 depth.triangle.at(x + 1, y) != t || depth.triangle.at(x, y - 1) != t ||
-                depth.triangle.at(x, y + 1) != t || !depth.barycentricsKept)
+                depth.triangle.at(x, y + 1) != t)
                 continue;
             const ScreenTriangle& tri = frame.projection->triangles[t];
-            if (!lit(scene.draws[tri.draw])) continue;
+            if (!litByCourse(scene.draws[tri.draw])) continue;
             const std::uint8_t* b = theirs.pixel(x, y);
             if (std::any_of(b, b + 3, [](std::uint8_t v) { return v == 0 || v == 255; })) continue;
             const vec2 w = depth.barycentric.at(x, y);
             float beta = w.x, gamma = w.y;
             lighting.attributeWeights(tri, beta, gamma);
-            const DrawVertices& dv = lighting.vertices(tri.draw);
             Sample s;
-            s.p = dvec3(interpolate(dv.pView, tri.v, beta, gamma));
+            s.p = dvec3(interpolate(lighting.vertices(tri.draw).pView, tri.v, beta, gamma));
             const dvec3 n = dvec3(lighting.normalAt(tri, beta, gamma));
             if (!(glm::length(n) > 0.0) || !(glm::length(s.p) > 0.0)) continue;
             s.v = -glm::normalize(s.p);
@@ -188,27 +199,27 @@ LightingFit fitLighting(const OurFrame& ours, const Rgba8Image& theirs) {
             samples.push_back(s);
         }
     }
-    if (samples.size() < 50) {
-        out.reason = "too few unclamped pixels inside triangles to fit the lighting"_msg;
-        return out;
+    return samples;
+}
+
+// The squared difference of a sample's three channels from the model with this light, n and
+// (A, D, S) per channel; clamped to the bytes' range when asked (our own parameters).
+double squaredError(const Sample& s, const dvec3& light, double n,
+                    const std::array<dvec3, 3>& ads, bool clamped) {
+    double f1, f2, sum = 0.0;
+    factors(s, light, n, f1, f2);
+    for (std::size_t c = 0; c < 3; ++c) {
+        const double model = ads[c].x + ads[c].y * f1 + ads[c].z * f2;
+        const double e = (clamped ? std::clamp(model, 0.0, 255.0) : model) - s.theirs[c];
+        sum += e * e;
     }
-    // Ours, and the starts: our light, where the transform mistakes put it, each coordinate
-    // of ours negated.
-    const CameraBasis& basis = *frame.cameraBasis;
-    const dvec3 world = dvec3(scene.lights[0].pWorld) / scene.lights[0].pWorld.w;
-    out.lightOurs = dvec3(frame.view->lights[0].pView);
-    const dvec3 inWorld = world;
-    const dvec3 withoutC = dvec3(basis.viewFromWorld * dvec4(world, 0.0));
-    std::vector<dvec3> starts = {out.lightOurs, inWorld, withoutC};
-    for (int k = 0; k < 3; ++k) {
-        dvec3 negated = out.lightOurs;
-        negated[k] = -negated[k];
-        starts.push_back(negated);
-    }
-    const double scale = std::max(1.0, glm::length(out.lightOurs));
-    const Point step = {0.1 * scale, 0.1 * scale, 0.1 * scale, 0.3};
-    const double logN = std::log(std::max(1.0f, material.shininess));
-    std::vector<Sample> used = samples;
+    return sum;
+}
+
+// The best light and log n from each start; then the worst tenth of the samples left out of
+// `used`, and the fit again from there.
+Point fitBest(std::vector<Sample>& used, const std::vector<dvec3>& starts, double logN,
+              const Point& step) {
     const auto cost = [&](const Point& x) { return solve(used, x).sse; };
     Point best{};
     double bestCost = std::numeric_limits<double>::infinity();
@@ -217,63 +228,31 @@ LightingFit fitLighting(const OurFrame& ours, const Rgba8Image& theirs) {
         const double c = cost(x);
         if (c < bestCost) bestCost = c, best = x;
     }
-    // The worst tenth left out, and the fit again from there.
-    {
-        const Solved solved = solve(used, best);
-        std::vector<std::pair<double, std::size_t>> residual;
-        const dvec3 light(best[0], best[1], best[2]);
-        for (std::size_t i = 0; i < used.size(); ++i) {
-            double f1, f2, r = 0.0;
-            factors(used[i], light, std::exp(best[3]), f1, f2);
-            for (int c = 0; c < 3; ++c) {
-                const dvec3& k = solved.ads[std::size_t(c)];
-                const double e = k.x + k.y * f1 + k.z * f2 - used[i].theirs[std::size_t(c)];
-                r += e * e;
-            }
-            residual.push_back({r, i});
-        }
-        std::sort(residual.begin(), residual.end());
-        std::vector<Sample> kept;
-        for (std::size_t k = 0; k < residual.size() * 9 / 10; ++k) kept.push_back(used[residual[k].second]);
-        used = std::move(kept);
-        best = minimise(cost, best, step, 150);
-    }
-    const Solved fitted = solve(used, best);
-    out.fitted = true;
-    out.samples = used.size();
-    out.lightTheirs = dvec3(best[0], best[1], best[2]);
-    out.rmsFitted = std::sqrt(fitted.sse / (3.0 * double(used.size())));
-    // Our own parameters on the same samples.
-    std::array<dvec3, 3> oursAds{};
-    for (int c = 0; c < 3; ++c) {
-        const double il = scene.lights[0].intensity[c];
-        oursAds[std::size_t(c)] = dvec3(scene.ambientIntensity[c] * material.ka * toByte,
-                                        il * material.od[c] * material.kd[c] * toByte,
-                                        il * material.ks * toByte);
-    }
-    {
-        double sse = 0.0;
-        for (const Sample& s : used) {
-            double f1, f2;
-            factors(s, out.lightOurs, material.shininess, f1, f2);
-            for (int c = 0; c < 3; ++c) {
-                const dvec3& k = oursAds[std::size_t(c)];
-                const double e = std::clamp(k.x + k.y * f1 + k.z * f2, 0.0, 255.0) -
-                                 s.theirs[std::size_t(c)];
-                sse += e * e;
-            }
-        }
-        out.rmsOurs = std::sqrt(sse / (3.0 * double(used.size())));
-    }
-    // The spread of four fits on halves of the samples.
+    const Solved solved = solve(used, best);
+    std::vector<std::pair<double, std::size_t>> residual;
+    for (std::size_t i = 0; i < used.size(); ++i)
+        residual.push_back({squaredError(used[i], dvec3(best[0], best[1], best[2]),
+                                         std::exp(best[3]), solved.ads, false),
+                            i});
+    std::sort(residual.begin(), residual.end());
+    std::vector<Sample> kept;
+    for (std::size_t k = 0; k < residual.size() * 9 / 10; ++k)
+        kept.push_back(used[residual[k].second]);
+    used = std::move(kept);
+    return minimise(cost, best, step, 150);
+}
+
+// Each value, ours and theirs, with the spread of four fits on halves of the samples as its
+// uncertainty.
+void addValues(LightingFit& out, const std::vector<Sample>& used, const Point& best,
+               const Point& step, const Solved& fitted, const std::array<dvec3, 3>& oursAds,
+               double oursN, double scale, double toByte) {
     std::array<Point, 4> halves{};
     std::array<Solved, 4> halfSolved{};
     for (std::size_t h = 0; h < 4; ++h) {
         std::vector<Sample> half;
-        for (std::size_t i = 0; i < used.size(); ++i) {
-            const bool take = h < 2 ? i % 2 == h : (i < used.size() / 2) == (h == 2);
-            if (take) half.push_back(used[i]);
-        }
+        for (std::size_t i = 0; i < used.size(); ++i)
+            if (h < 2 ? i % 2 == h : (i < used.size() / 2) == (h == 2)) half.push_back(used[i]);
         const auto halfCost = [&](const Point& x) { return solve(half, x).sse; };
         halves[h] = minimise(halfCost, best, step, 100);
         halfSolved[h] = solve(half, halves[h]);
@@ -292,8 +271,8 @@ LightingFit fitLighting(const OurFrame& ours, const Rgba8Image& theirs) {
     for (std::size_t k = 0; k < 3; ++k)
         add(std::string("light ") + axes[k] + " (view)", out.lightOurs[int(k)], best[k],
             spread([&](std::size_t h) { return halves[h][k]; }), 0.02 * scale);
-    add("n", material.shininess, std::exp(best[3]),
-        spread([&](std::size_t h) { return std::exp(halves[h][3]); }), 0.05 * material.shininess);
+    add("n", oursN, std::exp(best[3]),
+        spread([&](std::size_t h) { return std::exp(halves[h][3]); }), 0.05 * oursN);
     const char* channels = "RGB";
     const char* terms[] = {"ambient Ia*ka", "diffuse Il*Od*kd", "specular Il*ks"};
     for (int term = 0; term < 3; ++term)
@@ -302,7 +281,11 @@ LightingFit fitLighting(const OurFrame& ours, const Rgba8Image& theirs) {
                 fitted.ads[c][term] / toByte,
                 spread([&](std::size_t h) { return halfSolved[h].ads[c][term] / toByte; }),
                 2.0 / toByte);
-    // What the fitted light matches.
+}
+
+// What the fitted light and n match: the light at its world position, at [I] Pl, ours with a
+// coordinate negated; n halved.
+void nameMatches(LightingFit& out, const dvec3& inWorld, const dvec3& withoutC, double scale) {
     const double near = std::max(3.0 * out.values[0].uncertainty, 0.05 * scale);
     if (glm::distance(out.lightTheirs, out.lightOurs) > near) {
         if (glm::distance(out.lightTheirs, inWorld) <= near) {
@@ -318,13 +301,64 @@ LightingFit fitLighting(const OurFrame& ours, const Rgba8Image& theirs) {
                 negated[k] = -negated[k];
                 if (glm::distance(out.lightTheirs, negated) <= near)
                     out.findings.push_back("the fitted light is ours with %1 negated"_msg(
-                        std::string(1, axes[k])));
+                        std::string(1, "xyz"[k])));
             }
         }
     }
     const FittedValue& n = out.values[3];
     if (n.differs && std::abs(n.theirs - 0.5 * n.ours) <= std::max(3.0 * n.uncertainty, 0.05 * n.ours))
         out.findings.push_back("the fitted n is half of ours: n halved"_msg);
+}
+
+}  // namespace
+
+LightingFit fitLighting(const OurFrame& ours, const Rgba8Image& theirs) {
+    LightingFit out;
+    const FrameTrace& frame = *ours.trace;
+    const Scene& scene = *frame.scene;
+    const Material* material = fittableMaterial(frame, out.reason);
+    if (!material) return out;
+    std::vector<Sample> used = samplesOf(ours, theirs);
+    if (used.size() < 50) {
+        out.reason = "too few unclamped pixels inside triangles to fit the lighting"_msg;
+        return out;
+    }
+    // The starts: our light, where the transform mistakes put it, each coordinate of ours
+    // negated.
+    const dvec3 world = dvec3(scene.lights[0].pWorld) / scene.lights[0].pWorld.w;
+    out.lightOurs = dvec3(frame.view->lights[0].pView);
+    const dvec3 withoutC = dvec3(frame.cameraBasis->viewFromWorld * dvec4(world, 0.0));
+    std::vector<dvec3> starts = {out.lightOurs, world, withoutC};
+    for (int k = 0; k < 3; ++k) {
+        dvec3 negated = out.lightOurs;
+        negated[k] = -negated[k];
+        starts.push_back(negated);
+    }
+    const double scale = std::max(1.0, glm::length(out.lightOurs));
+    const Point step = {0.1 * scale, 0.1 * scale, 0.1 * scale, 0.3};
+    const Point best =
+        fitBest(used, starts, std::log(std::max(1.0f, material->shininess)), step);
+    const Solved fitted = solve(used, best);
+    out.fitted = true;
+    out.samples = used.size();
+    out.lightTheirs = dvec3(best[0], best[1], best[2]);
+    out.rmsFitted = std::sqrt(fitted.sse / (3.0 * double(used.size())));
+    // Our own parameters, in byte units, on the same samples.
+    const double toByte = 255.0 / scene.conventions.colourScale;
+    std::array<dvec3, 3> oursAds{};
+    for (int c = 0; c < 3; ++c) {
+        const double il = scene.lights[0].intensity[c];
+        oursAds[std::size_t(c)] = dvec3(scene.ambientIntensity[c] * material->ka,
+                                        il * material->od[c] * material->kd[c],
+                                        il * material->ks) *
+                                  toByte;
+    }
+    double sse = 0.0;
+    for (const Sample& s : used)
+        sse += squaredError(s, out.lightOurs, material->shininess, oursAds, true);
+    out.rmsOurs = std::sqrt(sse / (3.0 * double(used.size())));
+    addValues(out, used, best, step, fitted, oursAds, material->shininess, scale, toByte);
+    nameMatches(out, world, withoutC, scale);
     return out;
 }
 

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "pipeline/analysis/mistake_images.h"
+#include "pipeline/core/format.h"
 #include "pipeline/render/renderer.h"
 
 namespace rl {
@@ -75,13 +76,6 @@ const char* modelName(Mistake mistake) {
     return shadingModelName(mistake == Mistake::Gouraud ? ShadingModel::Gouraud
                             : mistake == Mistake::Flat  ? ShadingModel::Flat
                                                         : ShadingModel::Phong);
-}
-
-// A number with four significant digits, as a message argument.
-std::string decimal(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4g", value);
-    return text;
 }
 
 Message bytesMessage(const Bytes& b) {
@@ -175,7 +169,7 @@ Message titleOf(const OurFrame& ours, const Slip& slip) {
             return "each Phong term truncated to a whole byte before the sum"_msg;
         case Mistake::EpsilonSpecialCases:
             return "V.N, N.L and R.V tested against %1 instead of 0"_msg(
-                decimal(kSpecialCaseEpsilon));
+                formatNumber(kSpecialCaseEpsilon));
         case Mistake::DepthReversed:
             return "the depth test reversed: the farther fragment wins (> against a buffer "
                    "cleared to -infinity, or to 0)"_msg;
@@ -183,7 +177,7 @@ Message titleOf(const OurFrame& ours, const Slip& slip) {
             return "every covered pixel's colour off by %1 (a constant offset)"_msg(
                 static_cast<int>(std::lround(slip.amount)));
         case Mistake::ColourScale:
-            return "every colour multiplied by %1 (a constant scale)"_msg(decimal(slip.amount));
+            return "every colour multiplied by %1 (a constant scale)"_msg(formatNumber(slip.amount));
         case Mistake::VertexNormalsUnnormalised:
             return "the vertex normals left at the length of their sums (not normalised)"_msg;
         case Mistake::AreaWeightedNormals:
@@ -426,8 +420,7 @@ std::string keyOf(std::vector<Slip> slips) {
 // (each frame rendered once), their images scored by the difference to theirs.
 class Search {
 public:
-    Search(const OurFrame& ours, const Rgba8Image& theirs, int tolerance)
-        : m_ours(ours), m_theirs(theirs), m_tolerance(tolerance) {}
+    Search(const OurFrame& ours, const Rgba8Image& theirs) : m_ours(ours), m_theirs(theirs) {}
 
     // Compare coverage only: an image's covered pixels in `colour`, the rest `background`.
     void coverageOnly(const Bytes& colour, const Bytes& background) {
@@ -538,6 +531,9 @@ public:
         }
     }
 
+    std::uint64_t differenceTo(const Rgba8Image& image) const { return differenceOf(image, m_theirs); }
+    const Rgba8Image& theirs() const { return m_theirs; }
+
 private:
     template <typename Visit>
     void forCoveredChannels(const Rgba8Image& current, Visit visit) const {
@@ -550,7 +546,6 @@ private:
 
     const OurFrame& m_ours;
     const Rgba8Image& m_theirs;
-    int m_tolerance = 0;
     std::optional<std::pair<Bytes, Bytes>> m_flat;
     std::map<std::string, std::optional<MistakeFrame>> m_frames;
 };
@@ -584,7 +579,7 @@ Message constantEvidence(const OurFrame& ours, const Rgba8Image& before, const R
         return "theirs - ours is %1 in %2 of the %3 covered channels that differ"_msg(
             static_cast<int>(std::lround(f.slip.amount)), agreeing, differing);
     return "theirs is within 2 of %1 times ours in %2 of the %3 covered channels that differ"_msg(
-        decimal(f.slip.amount), agreeing, differing);
+        formatNumber(f.slip.amount), agreeing, differing);
 }
 
 // What a finding changes, from the image before it to the image with it: the differing
@@ -669,53 +664,35 @@ void summarise(const OurFrame& ours, const Rgba8Image& oursShown, const Rgba8Ima
     out.difference = differenceOf(oursShown, theirs);
 }
 
-}  // namespace
+// A set of mistakes, the image they make and its difference to theirs.
+struct Hypothesis {
+    std::vector<Slip> slips;
+    Rgba8Image image;
+    std::uint64_t difference = 0;
+};
 
-Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& theirs,
-                                        int tolerance) {
-    ImageComparison out;
-    out.width = theirs.width;
-    out.height = theirs.height;
-    out.tolerance = std::max(0, tolerance);
-    out.compared = static_cast<std::size_t>(theirs.width) * theirs.height;
-    Search search(ours, theirs, out.tolerance);
-    Bytes theirBackground = backgroundBytes(ours.trace->scene->conventions);
-    if (const auto unlit = unlitColours(ours, theirs, out.tolerance)) {
-        out.unlit = true;
-        out.unlitColour = unlit->first;
-        theirBackground = unlit->second;
-        search.coverageOnly(unlit->first, unlit->second);
-    }
-    Rgba8Image current = search.flattened(ours.image);
-    summarise(ours, current, theirs, theirBackground, out);
-    out.unexplainedPixels = out.differing;
-    out.unexplained = out.differing > 0 ? 1.0 : 0.0;
-    if (out.differing == 0) return out;
-
-    // Greedy, as matching pursuit is, but keeping the kBeamWidth best hypotheses of each
-    // round rather than one (a beam search): a mistake that imitates another (V reversed for
-    // the far faces drawn) must not hide the pair that really made their image. A hypothesis
-    // grows by a mistake only when that removes at least kLeastShare of the difference; the
-    // best is the one with the least difference, each mistake counted as kLeastShare more.
-    struct Hypothesis {
-        std::vector<Slip> slips;
-        Rgba8Image image;
-        std::uint64_t difference = 0;
-    };
-    const double least = kLeastShare * double(out.difference);
+// Greedy, as matching pursuit is, but keeping the kBeamWidth best hypotheses of each round
+// rather than one (a beam search): a mistake that imitates another (V reversed for the far
+// faces drawn) must not hide the pair that really made their image. A hypothesis grows by a
+// mistake only when that removes at least `least`; the best is the one with the least
+// difference, each mistake counted as `least` more.
+Result<Hypothesis> beamSearch(Search& search, Hypothesis start, double least, bool unlit) {
     const auto cost = [&](const Hypothesis& h) {
         return double(h.difference) + least * double(h.slips.size());
     };
-    std::vector<Hypothesis> beam{{{}, current, out.difference}};
-    Hypothesis chosen = beam.front();
+    const auto nearer = [](const Hypothesis& a, const Hypothesis& b) {
+        return a.difference < b.difference;
+    };
+    std::vector<Hypothesis> beam{start};
+    Hypothesis chosen = std::move(start);
     for (std::size_t round = 0; round < kMostFindings && !beam.empty(); ++round) {
         std::vector<Hypothesis> next;  // the best few, least difference first
         std::set<std::string> seen;
         for (const Hypothesis& parent : beam) {
             for (std::size_t i = 0; i < kMistakeCount; ++i) {
                 const Mistake mistake = static_cast<Mistake>(i);
-                if (out.unlit && !changesCoverage(mistake)) continue;
-                if (std::any_of(parent.slips.begin(), parent.slips.end(),
+                if ((unlit && !changesCoverage(mistake)) ||
+                    std::any_of(parent.slips.begin(), parent.slips.end(),
                                 [&](const Slip& s) { return s.mistake == mistake; }))
                     continue;
                 for (const Slip& slip : search.variants(mistake, parent.image)) {
@@ -725,15 +702,11 @@ Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& 
                     auto candidate = search.image(trial);
                     if (!candidate) return candidate.error();
                     if (!candidate.value()) continue;
-                    const std::uint64_t d = differenceOf(*candidate.value(), theirs);
+                    const std::uint64_t d = search.differenceTo(*candidate.value());
                     if (d >= parent.difference || double(parent.difference - d) < least) continue;
                     if (next.size() == kBeamWidth && d >= next.back().difference) continue;
                     Hypothesis h{std::move(trial), std::move(*candidate.value()), d};
-                    next.insert(std::upper_bound(next.begin(), next.end(), h,
-                                                 [](const Hypothesis& a, const Hypothesis& b) {
-                                                     return a.difference < b.difference;
-                                                 }),
-                                std::move(h));
+                    next.insert(std::upper_bound(next.begin(), next.end(), h, nearer), std::move(h));
                     if (next.size() > kBeamWidth) next.pop_back();
                 }
             }
@@ -742,15 +715,16 @@ Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& 
         if (chosen.difference == 0) break;  // their image made exactly: nothing left to find
         beam = std::move(next);
     }
-    std::vector<Slip> applied = std::move(chosen.slips);
-    current = std::move(chosen.image);
-    std::uint64_t remaining = chosen.difference;
-    // An offset or scale was measured before the mistakes found after it: measured again with
-    // all the others applied.
-    for (Slip& slip : applied) {
+    return chosen;
+}
+
+// An offset or scale was measured before the mistakes found after it: measured again with
+// all the others applied, kept when that brings ours nearer theirs.
+Status remeasureConstants(Search& search, Hypothesis& h) {
+    for (Slip& slip : h.slips) {
         if (slip.mistake != Mistake::ColourOffset && slip.mistake != Mistake::ColourScale) continue;
         std::vector<Slip> others;
-        for (const Slip& s : applied)
+        for (const Slip& s : h.slips)
             if (s.mistake != slip.mistake) others.push_back(s);
         auto without = search.image(others);
         if (!without) return without.error();
@@ -758,36 +732,48 @@ Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& 
         for (const Slip& again : search.variants(slip.mistake, *without.value())) {
             const Slip kept = slip;
             slip = again;
-            auto image = search.image(applied);
+            auto image = search.image(h.slips);
             if (!image) return image.error();
-            if (image.value() && differenceOf(*image.value(), theirs) < remaining) {
-                remaining = differenceOf(*image.value(), theirs);
-                current = std::move(*image.value());
+            const std::uint64_t d = image.value() ? search.differenceTo(*image.value()) : 0;
+            if (image.value() && d < h.difference) {
+                h.difference = d;
+                h.image = std::move(*image.value());
             } else {
                 slip = kept;
             }
         }
     }
-    // A finding the others make redundant, whose leaving out costs less than kLeastShare of
-    // the difference, is left out.
-    for (bool dropped = true; dropped && applied.size() > 1;) {
+    return success();
+}
+
+// A finding the others make redundant, whose leaving out costs less than `least`, is left
+// out.
+Status dropRedundant(Search& search, Hypothesis& h, double least) {
+    for (bool dropped = true; dropped && h.slips.size() > 1;) {
         dropped = false;
-        for (std::size_t k = 0; k < applied.size() && !dropped; ++k) {
-            std::vector<Slip> others = applied;
+        for (std::size_t k = 0; k < h.slips.size() && !dropped; ++k) {
+            std::vector<Slip> others = h.slips;
             others.erase(others.begin() + std::ptrdiff_t(k));
             auto image = search.image(others);
             if (!image) return image.error();
             if (!image.value()) continue;
-            const std::uint64_t d = differenceOf(*image.value(), theirs);
-            if (double(d) >= double(remaining) + least) continue;
-            applied = std::move(others);
-            current = std::move(*image.value());
-            remaining = d;
+            const std::uint64_t d = search.differenceTo(*image.value());
+            if (double(d) >= double(h.difference) + least) continue;
+            h = {std::move(others), std::move(*image.value()), d};
             dropped = true;
         }
     }
-    // Each finding's share, given those above it.
-    Rgba8Image before = search.flattened(ours.image);
+    return success();
+}
+
+// The findings of the mistakes applied in order, each with the share it removes given those
+// above it.
+// `before` is our image as compared (flattened for an unlit image).
+Result<std::vector<Finding>> findingsInOrder(Search& search, const OurFrame& ours,
+                                             Rgba8Image before, const std::vector<Slip>& applied,
+                                             const ImageComparison& out) {
+    const Rgba8Image& theirs = search.theirs();
+    std::vector<Finding> findings;
     std::uint64_t left = out.difference;
     for (std::size_t k = 0; k < applied.size(); ++k) {
         const std::vector<Slip> upTo(applied.begin(), applied.begin() + std::ptrdiff_t(k) + 1);
@@ -802,20 +788,55 @@ Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& 
         f.share = double(f.removed) / double(out.difference);
         countPixels(before, after, theirs, out.tolerance, f);
         f.title = titleOf(ours, f.slip);
-        f.evidence = evidenceOf(f);
-        if (f.mistake == Mistake::ColourOffset || f.mistake == Mistake::ColourScale)
-            f.evidence = constantEvidence(ours, before, theirs, f);
+        f.evidence = f.mistake == Mistake::ColourOffset || f.mistake == Mistake::ColourScale
+                         ? constantEvidence(ours, before, theirs, f)
+                         : evidenceOf(f);
         f.advice = hintOf(f.mistake);
-        out.diagnosis.push_back(std::move(f));
+        findings.push_back(std::move(f));
         before = std::move(after);
         left = d;
     }
-    out.unexplained = double(remaining) / double(out.difference);
+    return findings;
+}
+
+}  // namespace
+
+Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& theirs,
+                                        int tolerance) {
+    ImageComparison out;
+    out.width = theirs.width;
+    out.height = theirs.height;
+    out.tolerance = std::max(0, tolerance);
+    out.compared = static_cast<std::size_t>(theirs.width) * theirs.height;
+    Search search(ours, theirs);
+    Bytes theirBackground = backgroundBytes(ours.trace->scene->conventions);
+    if (const auto unlit = unlitColours(ours, theirs, out.tolerance)) {
+        out.unlit = true;
+        out.unlitColour = unlit->first;
+        theirBackground = unlit->second;
+        search.coverageOnly(unlit->first, unlit->second);
+    }
+    const Rgba8Image start = search.flattened(ours.image);
+    summarise(ours, start, theirs, theirBackground, out);
+    out.unexplainedPixels = out.differing;
+    out.unexplained = out.differing > 0 ? 1.0 : 0.0;
+    if (out.differing == 0) return out;
+
+    const double least = kLeastShare * double(out.difference);
+    auto found = beamSearch(search, {{}, start, out.difference}, least, out.unlit);
+    if (!found) return found.error();
+    Hypothesis chosen = std::move(found.value());
+    if (Status s = remeasureConstants(search, chosen); !s) return s.error();
+    if (Status s = dropRedundant(search, chosen, least); !s) return s.error();
+    auto findings = findingsInOrder(search, ours, start, chosen.slips, out);
+    if (!findings) return findings.error();
+    out.diagnosis = std::move(findings.value());
+    out.unexplained = double(chosen.difference) / double(out.difference);
     out.unexplainedPixels = 0;
     for (int y = 0; y < theirs.height; ++y)
         for (int x = 0; x < theirs.width; ++x)
             out.unexplainedPixels +=
-                distance(bytesAt(current, x, y), bytesAt(theirs, x, y)) > out.tolerance ? 1 : 0;
+                distance(bytesAt(chosen.image, x, y), bytesAt(theirs, x, y)) > out.tolerance ? 1 : 0;
     return out;
 }
 
