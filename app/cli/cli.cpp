@@ -26,6 +26,8 @@ QString generalHelp() {
         "  compare                  Compare your rasterizer's image with ours (render's scene\n"
         "                           options, or a command file): summary, difference image\n"
         "                           and a ranked diagnosis of likely mistakes.\n"
+        "  check                    Check your rasterizer stage by stage: your program answers\n"
+        "                           each stage over the stage protocol, held to the lecture's.\n"
         "  bench                    Time a scene's frames (median, min, max, per stage).\n"
         "  accuracy                 Error against run time of each mode, against an exact\n"
         "                           ray-cast reference (table, plot, heat maps).\n"
@@ -68,13 +70,15 @@ int runCli(const QStringList& arguments, QTextStream& out, QTextStream& err) {
             code = cli::runCommandFile(rest, out, err);
         else if (command == lit("compare"))
             code = cli::runCompare(rest, out, err);
+        else if (command == lit("check"))
+            code = cli::runCheck(rest, out, err);
         else if (command == lit("generate-default-scene"))
             code = cli::runGenerateDefaultScene(rest, out, err);
         else if (command == lit("generate-lessons"))
             code = cli::runGenerateLessons(rest, out, err);
         else
             code = cli::usageError(err, lit("unknown command '%1' (commands: render, run, compare, "
-                                            "bench, accuracy, stability, generate-default-scene, "
+                                            "check, bench, accuracy, stability, generate-default-scene, "
                                             "generate-lessons)")
                                             .arg(command));
     } catch (const std::bad_alloc&) {

@@ -175,7 +175,10 @@ def light_in_view(I, Pl, C, opts):
 
 
 def triangle_normal(A, B, C, opts):
-    n = cross(sub(B, A), sub(C, A))
+    if opts.triangle_normal_reversed:
+        n = cross(sub(C, A), sub(B, A))
+    else:
+        n = cross(sub(B, A), sub(C, A))
     return n if opts.sum_unnormalized_triangle_normals else normalize(n)
 
 
@@ -354,6 +357,8 @@ class Frame:
         """The seed's test P'.z < z-buffer; --depth-reversed: farther wins."""
         if self.opts.depth_reversed:
             return z > self.zbuffer[index]
+        if self.opts.zbuffer_ties_later:
+            return z <= self.zbuffer[index]
         return z < self.zbuffer[index]
 
     def paint(self, index, color):
@@ -362,23 +367,39 @@ class Frame:
             to_byte(c, o) for c in color)
 
 
-def draw_triangle(frame, screen, view, normals, colors, light, Pl):
-    """Scanline conversion of one triangle with per-pixel barycentrics.
+def triangle_spans(screen, width, height, opts):
+    """The pixels of a triangle on the screen, as (y, x_first, x_last) rows.
 
     Pixel P = (x, y) is sampled at its integer coordinates, the same space
     as the truncated vertices; alfa, beta, gama >= 0 (edges inclusive).
+    --span-end-exclusive stops each row one pixel early (range(x0, x1)).
+    Yields nothing for a triangle whose vertices are collinear.
     """
     found = edge_functions(*screen)
     if found is None:
         return
     den, edges = found
     ys = [p[1] for p in screen]
-    y_first, y_last = max(min(ys), 0), min(max(ys), frame.height - 1)
+    y_first, y_last = max(min(ys), 0), min(max(ys), height - 1)
     for y in range(y_first, y_last + 1):
         xs = span(edges, y)
         if xs is None:
             continue
-        x0, x1 = max(xs[0], 0), min(xs[1], frame.width - 1)
+        x0, x1 = max(xs[0], 0), min(xs[1], width - 1)
+        if opts.span_end_exclusive:
+            x1 -= 1
+        if x0 <= x1:
+            yield y, x0, x1
+
+
+def draw_triangle(frame, screen, view, normals, colors, light, Pl):
+    """Scanline conversion of one triangle with per-pixel barycentrics."""
+    found = edge_functions(*screen)
+    if found is None:
+        return
+    den, edges = found
+    for y, x0, x1 in triangle_spans(screen, frame.width, frame.height,
+                                    frame.opts):
         for x in range(x0, x1 + 1):
             bary = [(A * x + B0 + By * y) / den for A, B0, By in edges]
             shade_pixel(frame, x, y, bary, view, normals, colors, light, Pl)
@@ -514,6 +535,11 @@ MISTAKES = [
     ("--gouraud", "Phong lighting at the vertices, colours interpolated"),
     ("--no-clamp", "channels above 255 wrap modulo 256 instead of"
      " clamping"),
+    ("--triangle-normal-reversed", "triangle normal (P3 - P1) x (P2 - P1):"
+     " the cross product in the other order"),
+    ("--span-end-exclusive", "each span stops one pixel early (x < x_last)"),
+    ("--zbuffer-ties-later", "z-buffer test z <= stored: on a tie the later"
+     " fragment wins"),
 ]
 
 
@@ -548,6 +574,12 @@ def make_parser():
     p.add_argument("--output", required=True, help="PNG to write")
     p.add_argument("--timing", action="store_true",
                    help="print the time the render took to stderr")
+    add_mistakes(p)
+    return p
+
+
+def add_mistakes(p):
+    """The mistake switches, shared with stages.py."""
     m = p.add_argument_group("mistakes (combinable)")
     for flag, text in MISTAKES:
         m.add_argument(flag, action="store_true", help=text)
@@ -558,7 +590,6 @@ def make_parser():
                    help="every intensity multiplied by S before clamping")
     m.add_argument("--flat-color", type=parse_rgb, default=None,
                    metavar="R,G,B", help="unlit: every covered pixel R,G,B")
-    return p
 
 
 def main(argv=None):

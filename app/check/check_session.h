@@ -1,0 +1,69 @@
+// `rasterlab-cli check` and Check My Renderer...: a student's program asked for every stage
+// of each scene over the stage protocol, each answer judged (stage_check.h), and the report
+// as text, Markdown or JSON. The program runs under the limits of student_program.h; when it
+// breaks in a stage (a bad answer, a timeout, a crash) that stage says so, with what was read
+// last, and the program is started again for the next one.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/check/stage_check.h"
+#include "app/check/student_program.h"
+
+namespace rasterlab::check {
+
+struct CheckScene {
+    std::string name;  // "triangle", "calice2.byu"
+    std::shared_ptr<const rl::Scene> scene;
+};
+
+struct SceneReport {
+    std::string name;
+    int width = 0, height = 0;
+    std::string error;  // the protocol cannot carry this scene: why (no stages then)
+    std::vector<StageResult> stages;
+};
+
+struct CheckReport {
+    std::string command;
+    std::string folder;
+    int version = 0;  // the version the program speaks (0: it never said)
+    std::vector<std::string> protections, missing;
+    std::vector<SceneReport> scenes;
+    std::string failure;  // why the program could not be checked at all, or empty
+    bool cancelled = false;
+    double seconds = 0.0;
+    int restarts = 0;
+
+    // Every stage of every scene passed (or unsupported: then not passed).
+    bool passed() const;
+    // The worst verdict of a stage over the scenes (Passed when it never ran).
+    Verdict stageVerdict(Stage stage) const;
+    bool anyBroken() const;
+};
+
+// Progress: the number of requests answered, of all, and what is being asked; false cancels.
+using CheckProgress = std::function<bool(int done, int total, const std::string& what)>;
+
+struct CheckOptions {
+    std::vector<Stage> stages{kStages.begin(), kStages.end()};
+    Limits limits;
+    int maxRestarts = 3;
+};
+
+CheckReport runCheck(const std::string& command, const std::string& folder,
+                     const std::vector<CheckScene>& scenes, const CheckOptions& options,
+                     const CheckProgress& progress = {});
+
+// The default scenes: the shipped lessons the protocol carries (not near-plane, whose vertices
+// lie behind the camera, nor lights and gouraud, lit by more than one light), and the default
+// scene, each at 160x120 so that a student's check takes seconds.
+std::vector<CheckScene> defaultCheckScenes();
+
+// The report, as the command line prints it (format "text", "md" or "json").
+std::string formatReport(const CheckReport& report, const std::string& format);
+
+}  // namespace rasterlab::check

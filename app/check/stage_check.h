@@ -1,0 +1,79 @@
+// A student's stages checked against the lecture's (docs/stage-protocol.md). For one course
+// scene, each stage's request carries its input as RasterLab's own stages computed it, and
+// their answer is held to what the lecture's stage gives for it, element by element: the
+// first element that departs with both values and the formula with its numbers, how many
+// depart, the largest error, and the likely cause when their answer is what a known mistake
+// of that stage gives (the cross product's order, normals not normalised, rounding against
+// truncation, y not flipped, a span's end, the z-buffer's comparison, a Phong special case).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/check/stage_protocol.h"
+#include "pipeline/render/output_image.h"
+#include "pipeline/scene/scene.h"
+
+namespace rasterlab::check {
+
+enum class Verdict { Passed, Failed, Unsupported, Broken };
+std::string_view verdictName(Verdict verdict);  // "passed", "failed", ...
+
+struct Divergence {
+    std::string element;  // "vertex 3", "pixel (41, 17)", "U"
+    std::string theirs;
+    std::string ours;
+    std::string formula;  // the lecture's formula with this element's numbers
+};
+
+struct StageResult {
+    Stage stage = Stage::Basis;
+    Verdict verdict = Verdict::Passed;
+    std::size_t elements = 0;   // compared
+    std::size_t differing = 0;  // beyond the tolerance
+    double largestError = 0.0;
+    std::string tolerance;  // how close counts as equal, in words
+    std::optional<Divergence> first;
+    std::string likelyCause;  // empty when no known mistake gives their answer
+    std::string problem;      // Broken: what went wrong (a bad answer, a timeout ...)
+};
+
+// The lecture's stages run over one course scene, and what the protocol asks of them.
+class StageCheck {
+public:
+    // The scene must be one the protocol carries: seed 000's (a course camera, one draw, one
+    // positional light, a scalar kd, the course's rasterization rules). Otherwise an error
+    // says why.
+    static rl::Result<std::shared_ptr<const StageCheck>> make(
+        std::shared_ptr<const rl::Scene> scene);
+
+    Request request(Stage stage) const;
+    // Their answer (records as parsed) held to ours.
+    StageResult judge(Stage stage, const std::vector<Record>& answer) const;
+    // Our image of the scene (the frame stage's answer), and theirs from a frame answer.
+    const rl::Rgba8Image& ourImage() const;
+    static rl::Rgba8Image theirImage(const std::vector<Record>& answer);
+    const rl::Scene& scene() const;
+
+    struct Data;
+    explicit StageCheck(std::unique_ptr<Data> data);
+    ~StageCheck();
+
+private:
+    StageResult judgeBasis(const std::vector<Record>& answer) const;
+    StageResult judgeView(const std::vector<Record>& answer) const;
+    StageResult judgeNormals(const std::vector<Record>& answer) const;
+    StageResult judgeProjection(const std::vector<Record>& answer) const;
+    StageResult judgeScan(const std::vector<Record>& answer) const;
+    StageResult judgeZBuffer(const std::vector<Record>& answer) const;
+    StageResult judgeLighting(const std::vector<Record>& answer) const;
+    StageResult judgeFrame(const std::vector<Record>& answer) const;
+
+    std::unique_ptr<Data> m_data;
+};
+
+}  // namespace rasterlab::check

@@ -1,0 +1,469 @@
+#include "app/check/student_program.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <mutex>
+
+extern char** environ;
+
+namespace rasterlab::check {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string findInPath(const char* program) {
+    const char* path = std::getenv("PATH");
+    std::string dirs = path ? path : "/usr/bin:/bin";
+    std::size_t start = 0;
+    while (start <= dirs.size()) {
+        const std::size_t end = std::min(dirs.find(':', start), dirs.size());
+        const std::string candidate = dirs.substr(start, end - start) + "/" + program;
+        if (end > start && access(candidate.c_str(), X_OK) == 0) return candidate;
+        start = end + 1;
+    }
+    return {};
+}
+
+// The processes this user runs now: RLIMIT_NPROC counts them all, so the limit is on top.
+int processesOfThisUser() {
+    int count = 0;
+    const uid_t uid = getuid();
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator("/proc", ec)) {
+        const std::string name = entry.path().filename().string();
+        if (name.empty() || !std::all_of(name.begin(), name.end(), ::isdigit)) continue;
+        struct stat info {};
+        if (stat(entry.path().c_str(), &info) == 0 && info.st_uid == uid) ++count;
+    }
+    return count;
+}
+
+std::string shownText(const std::string& text) {
+    std::string s;
+    for (char c : text.substr(0, 80)) s += (c >= 0x20 && c < 0x7f) ? c : '?';
+    if (text.size() > 80) s += "...";
+    return "'" + s + "'";
+}
+
+std::string seconds(double s) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g s", s);
+    return buffer;
+}
+
+// The first byte of a line that is not text: a control character other than tab and CR.
+std::optional<std::size_t> binaryByte(const std::string& line) {
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const auto c = static_cast<unsigned char>(line[i]);
+        if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) return i;
+    }
+    return std::nullopt;
+}
+
+void setLimit(int resource, rlim_t soft, rlim_t hard) {
+    const struct rlimit limit { soft, hard };
+    setrlimit(resource, &limit);
+}
+
+}  // namespace
+
+bool sandboxUsable(std::string* reason) {
+    static std::once_flag once;
+    static bool usable = false;
+    static std::string why;
+    std::call_once(once, [] {
+        const std::string bwrap = findInPath("bwrap");
+        if (bwrap.empty()) {
+            why = "bubblewrap (bwrap) is not installed";
+            return;
+        }
+        const std::string probe = "'" + bwrap +
+                                  "' --ro-bind / / --unshare-net --unshare-pid --die-with-parent "
+                                  "-- /bin/true >/dev/null 2>&1";
+        usable = std::system(probe.c_str()) == 0;
+        if (!usable)
+            why =
+                "bubblewrap is installed but cannot make a sandbox here (user namespaces refused)";
+    });
+    if (reason) *reason = why;
+    return usable;
+}
+
+StudentProgram::StudentProgram(const std::string& command, const std::string& folder,
+                               const Limits& limits)
+    : m_limits(limits) {
+    static std::once_flag ignorePipe;
+    std::call_once(ignorePipe, [] { signal(SIGPIPE, SIG_IGN); });
+    m_started = Clock::now();
+    m_totalDeadline = m_started + std::chrono::duration_cast<Clock::duration>(
+                                      std::chrono::duration<double>(limits.totalSeconds));
+    m_requestDeadline = m_totalDeadline;
+    startProcess(command, folder);
+}
+
+StudentProgram::~StudentProgram() {
+    if (m_pid > 0 && !m_reaped) {
+        kill(-m_pid, SIGKILL);
+        kill(m_pid, SIGKILL);
+        reap(true);
+    }
+    if (m_stdin >= 0) close(m_stdin);
+    if (m_stdout >= 0) close(m_stdout);
+    std::error_code ec;
+    if (!m_tempFolder.empty()) std::filesystem::remove_all(m_tempFolder, ec);
+}
+
+void StudentProgram::startProcess(const std::string& command, const std::string& folder) {
+    const char* tmp = std::getenv("TMPDIR");
+    std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/rasterlab-check-XXXXXX";
+    if (!mkdtemp(pattern.data())) {
+        fail(std::string("cannot make a temporary folder: ") + std::strerror(errno));
+        return;
+    }
+    m_tempFolder = pattern;
+    const std::string errorFile = m_tempFolder + "/stderr.txt";
+
+    std::string why;
+    const bool sandbox = m_limits.sandbox && sandboxUsable(&why);
+    std::vector<std::string> args;
+    if (sandbox) {
+        args = {findInPath("bwrap"),
+                "--ro-bind",
+                "/",
+                "/",
+                "--dev",
+                "/dev",
+                "--proc",
+                "/proc",
+                "--bind",
+                m_tempFolder,
+                m_tempFolder,
+                "--unshare-net",
+                "--unshare-pid",
+                "--unshare-ipc",
+                "--die-with-parent",
+                "--new-session",
+                "--chdir",
+                folder,
+                "--"};
+        m_protections.push_back(
+            "bubblewrap: no network, the file system read-only but for a temporary folder, "
+            "processes of its own");
+    } else {
+        m_missing.push_back(m_limits.sandbox ? "no sandbox: " + why
+                                             : "no sandbox: turned off (--no-sandbox)");
+    }
+    args.insert(args.end(), {"/bin/sh", "-c", command});
+    m_protections.push_back("wall clock: " + seconds(m_limits.requestSeconds) + " per request, " +
+                            seconds(m_limits.totalSeconds) + " in all");
+    m_protections.push_back("CPU time: " + seconds(m_limits.cpuSeconds));
+    m_protections.push_back("memory: " + std::to_string(m_limits.memoryBytes >> 20) +
+                            " MiB of address space");
+    m_protections.push_back("files written: " + std::to_string(m_limits.fileBytes >> 20) +
+                            " MiB each; answers: " + std::to_string(m_limits.answerBytes >> 20) +
+                            " MiB, lines " + std::to_string(m_limits.lineBytes >> 10) + " KiB");
+    m_protections.push_back("temporary folder for TMPDIR and HOME, removed afterwards");
+    const bool root = geteuid() == 0;
+    const int nproc = processesOfThisUser() + m_limits.processes;
+    (root ? m_missing : m_protections)
+        .push_back("processes: " + std::to_string(m_limits.processes) +
+                   (root ? " (not enforced: RasterLab runs as root)" : " more than now"));
+
+    // Everything the child needs is made before fork: after it only system calls.
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    std::vector<std::string> env;
+    for (char** e = environ; *e; ++e)
+        if (std::strncmp(*e, "TMPDIR=", 7) != 0 && std::strncmp(*e, "HOME=", 5) != 0)
+            env.emplace_back(*e);
+    env.push_back("TMPDIR=" + m_tempFolder);
+    env.push_back("HOME=" + m_tempFolder);
+    std::vector<char*> envp;
+    for (std::string& e : env) envp.push_back(e.data());
+    envp.push_back(nullptr);
+
+    int in[2], out[2];
+    if (pipe2(in, O_CLOEXEC) != 0 || pipe2(out, O_CLOEXEC) != 0) {
+        fail(std::string("cannot make pipes: ") + std::strerror(errno));
+        return;
+    }
+    const int err = open(errorFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        setsid();
+        dup2(in[0], 0);
+        dup2(out[1], 1);
+        if (err >= 0) dup2(err, 2);
+        const auto cpu = rlim_t(m_limits.cpuSeconds);
+        setLimit(RLIMIT_CPU, cpu, cpu + 2);
+        setLimit(RLIMIT_AS, rlim_t(m_limits.memoryBytes), rlim_t(m_limits.memoryBytes));
+        setLimit(RLIMIT_FSIZE, rlim_t(m_limits.fileBytes), rlim_t(m_limits.fileBytes));
+        setLimit(RLIMIT_NPROC, rlim_t(nproc), rlim_t(nproc));
+        setLimit(RLIMIT_CORE, 0, 0);
+        if (chdir(folder.c_str()) != 0) _exit(126);
+        execve(argv[0], argv.data(), envp.data());
+        _exit(127);
+    }
+    close(in[0]);
+    close(out[1]);
+    if (err >= 0) close(err);
+    if (pid < 0) {
+        close(in[1]);
+        close(out[0]);
+        fail(std::string("cannot start the program: ") + std::strerror(errno));
+        return;
+    }
+    m_pid = pid;
+    m_stdin = in[1];
+    m_stdout = out[0];
+    fcntl(m_stdin, F_SETFL, fcntl(m_stdin, F_GETFL) | O_NONBLOCK);
+    fcntl(m_stdout, F_SETFL, fcntl(m_stdout, F_GETFL) | O_NONBLOCK);
+}
+
+bool StudentProgram::fail(const std::string& message) {
+    if (!m_error.empty()) return false;
+    m_error = message;
+    if (m_pid > 0) {
+        m_error += m_lastLine.empty() ? "; nothing had been read before"
+                                      : "; the last line read was " + shownText(m_lastLine);
+        const std::string tail = errorTail();
+        if (!tail.empty()) m_error += "; its standard error ends with " + shownText(tail);
+    }
+    return false;
+}
+
+void StudentProgram::beginRequest() {
+    m_answerBytes = 0;
+    m_answerLines = 0;
+    m_requestDeadline =
+        std::min(m_totalDeadline,
+                 Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                    std::chrono::duration<double>(m_limits.requestSeconds)));
+}
+
+bool StudentProgram::fillBuffer(Clock::time_point deadline) {
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+    struct pollfd fd {
+        m_stdout, POLLIN, 0
+    };
+    const int ready = poll(&fd, 1, int(std::max<long long>(0, left.count())));
+    if (ready < 0 && errno != EINTR) return fail(std::string("poll: ") + std::strerror(errno));
+    if (ready <= 0) return true;  // the caller looks at the clock
+    char chunk[65536];
+    const ssize_t n = read(m_stdout, chunk, sizeof chunk);
+    if (n > 0) {
+        m_buffer.append(chunk, std::size_t(n));
+        m_answerBytes += n;
+        if (m_answerBytes > m_limits.answerBytes)
+            return fail("the answer passed " + std::to_string(m_limits.answerBytes >> 20) +
+                        " MiB without its 'end' (the output limit)");
+        return true;
+    }
+    if (n < 0 && (errno == EAGAIN || errno == EINTR)) return true;
+    reap(false);
+    if (!m_reaped) {
+        // Output closed: give the program a moment to end, so that its status can be told.
+        for (int i = 0; i < 50 && !m_reaped; ++i) {
+            usleep(20000);
+            reap(false);
+        }
+    }
+    const std::string how = m_reaped ? ending() : "closed its output";
+    return fail(
+        "the program ended (" + how + ") before it finished answering" +
+        (m_buffer.size() == m_bufferStart
+             ? std::string()
+             : ", in the middle of the line " + shownText(m_buffer.substr(m_bufferStart, 80))));
+}
+
+std::optional<std::string> StudentProgram::readLine() {
+    if (!m_error.empty()) return std::nullopt;
+    if (m_pid <= 0) {
+        fail("the program was not started");
+        return std::nullopt;
+    }
+    while (true) {
+        const std::size_t end = m_buffer.find('\n', m_bufferStart);
+        if (end != std::string::npos) {
+            std::string line = m_buffer.substr(m_bufferStart, end - m_bufferStart);
+            m_bufferStart = end + 1;
+            // Lines are taken from the front; the buffer is cut only now and then, so that a
+            // flood of short lines costs no more than reading them.
+            if (m_bufferStart > 65536 || m_bufferStart == m_buffer.size()) {
+                m_buffer.erase(0, m_bufferStart);
+                m_bufferStart = 0;
+            }
+            if (!line.empty() && line.back() == '\r') line.pop_back();
+            if (const auto at = binaryByte(line)) {
+                char code[8];
+                std::snprintf(code, sizeof code, "0x%02x",
+                              unsigned(static_cast<unsigned char>(line[*at])));
+                fail("the answer is not text: byte " + std::string(code) + " at column " +
+                     std::to_string(*at + 1) + " of its line");
+                return std::nullopt;
+            }
+            if (line.size() > std::size_t(m_limits.lineBytes)) {
+                fail("a line of " + std::to_string(line.size()) + " bytes (the limit is " +
+                     std::to_string(m_limits.lineBytes) + ")");
+                return std::nullopt;
+            }
+            if (++m_answerLines > m_limits.answerLines) {
+                fail("the answer passed " + std::to_string(m_limits.answerLines) +
+                     " lines without its 'end' (the output limit)");
+                return std::nullopt;
+            }
+            m_lastLine = line;
+            return line;
+        }
+        if (m_buffer.size() - m_bufferStart > std::size_t(m_limits.lineBytes)) {
+            fail("more than " + std::to_string(m_limits.lineBytes) +
+                 " bytes without the end of a line ('\\n'); the line begins " +
+                 shownText(m_buffer.substr(m_bufferStart, 80)));
+            return std::nullopt;
+        }
+        const Clock::time_point deadline = std::min(m_requestDeadline, m_totalDeadline);
+        if (Clock::now() >= deadline) {
+            const bool total = m_totalDeadline <= m_requestDeadline;
+            fail("no answer within " +
+                 seconds(total ? m_limits.totalSeconds : m_limits.requestSeconds) +
+                 (total ? " (the limit for the whole run)" : " (the limit per request)") +
+                 (m_buffer.size() == m_bufferStart
+                      ? std::string()
+                      : "; an unfinished line had begun: " +
+                            shownText(m_buffer.substr(m_bufferStart, 80))));
+            return std::nullopt;
+        }
+        if (!fillBuffer(deadline)) return std::nullopt;
+    }
+}
+
+bool StudentProgram::send(const std::string& text) {
+    if (!m_error.empty()) return false;
+    if (m_pid <= 0) return fail("the program was not started");
+    std::size_t sent = 0;
+    while (sent < text.size()) {
+        const Clock::time_point deadline = std::min(m_requestDeadline, m_totalDeadline);
+        const auto left =
+            std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+        if (left.count() <= 0)
+            return fail("the program did not read its request within " +
+                        seconds(m_limits.requestSeconds));
+        // Read what it writes meanwhile, so that neither side waits on a full pipe.
+        struct pollfd fds[2] = {{m_stdin, POLLOUT, 0}, {m_stdout, POLLIN, 0}};
+        if (poll(fds, 2, int(left.count())) < 0 && errno != EINTR)
+            return fail(std::string("poll: ") + std::strerror(errno));
+        if (fds[1].revents & (POLLIN | POLLHUP)) {
+            char chunk[65536];
+            const ssize_t n = read(m_stdout, chunk, sizeof chunk);
+            if (n > 0) {
+                m_buffer.append(chunk, std::size_t(n));
+                if (m_buffer.size() > std::size_t(m_limits.answerBytes))
+                    return fail("the program wrote more than " +
+                                std::to_string(m_limits.answerBytes >> 20) +
+                                " MiB while it was being asked");
+            }
+        }
+        if (fds[0].revents & (POLLERR | POLLHUP)) {
+            reap(false);
+            return fail("the program stopped reading its input (" +
+                        (m_reaped ? ending() : std::string("input closed")) + ")");
+        }
+        if (!(fds[0].revents & POLLOUT)) continue;
+        const ssize_t n = write(m_stdin, text.data() + sent, text.size() - sent);
+        if (n > 0) {
+            sent += std::size_t(n);
+        } else if (n < 0 && errno != EAGAIN && errno != EINTR) {
+            reap(false);
+            return fail("the program stopped reading its input (" +
+                        (m_reaped ? ending() : std::string(std::strerror(errno))) + ")");
+        }
+    }
+    return true;
+}
+
+void StudentProgram::stop() {
+    if (m_pid <= 0 || m_reaped) return;
+    if (m_stdin >= 0) {
+        close(m_stdin);
+        m_stdin = -1;
+    }
+    for (int i = 0; i < 25 && !m_reaped; ++i) {  // half a second to end by itself
+        reap(false);
+        if (!m_reaped) usleep(20000);
+    }
+    if (!m_reaped) {
+        kill(-m_pid, SIGKILL);
+        kill(m_pid, SIGKILL);
+        reap(true);
+    }
+}
+
+void StudentProgram::reap(bool wait) {
+    if (m_pid <= 0 || m_reaped) return;
+    int status = 0;
+    const pid_t r = waitpid(m_pid, &status, wait ? 0 : WNOHANG);
+    if (r == m_pid) {
+        m_reaped = true;
+        m_status = status;
+        kill(-m_pid, SIGKILL);  // whatever it left behind in its group
+    }
+}
+
+std::string StudentProgram::ending() {
+    reap(false);
+    if (!m_reaped) return {};
+    if (WIFEXITED(m_status)) {
+        const int code = WEXITSTATUS(m_status);
+        if (code == 127) return "exit status 127: the command was not found";
+        // A shell, or bubblewrap, reports a child killed by signal s as 128 + s.
+        if (code > 128 && code < 128 + 65)
+            return "exit status " + std::to_string(code) + ": killed by signal " +
+                   std::to_string(code - 128) + " (" + strsignal(code - 128) + ")";
+        return "exit status " + std::to_string(code);
+    }
+    if (WIFSIGNALED(m_status)) {
+        const int sig = WTERMSIG(m_status);
+        return "killed by signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
+    }
+    return "ended";
+}
+
+std::string StudentProgram::errorTail() const {
+    if (m_tempFolder.empty()) return {};
+    FILE* f = std::fopen((m_tempFolder + "/stderr.txt").c_str(), "rb");
+    if (!f) return {};
+    std::fseek(f, 0, SEEK_END);
+    const long size = std::ftell(f);
+    const long from = std::max(0L, size - 300);
+    std::fseek(f, from, SEEK_SET);
+    std::string tail(std::size_t(size - from), '\0');
+    tail.resize(std::fread(tail.data(), 1, tail.size(), f));
+    std::fclose(f);
+    while (!tail.empty() && (tail.back() == '\n' || tail.back() == '\r')) tail.pop_back();
+    const std::size_t cut = tail.rfind('\n', tail.size() > 200 ? tail.size() - 200 : 0);
+    if (from > 0 && cut != std::string::npos) tail.erase(0, cut + 1);
+    for (char& c : tail)
+        if (c == '\n') c = ' ';
+    return tail;
+}
+
+double StudentProgram::secondsUsed() const {
+    return std::chrono::duration<double>(Clock::now() - m_started).count();
+}
+
+}  // namespace rasterlab::check

@@ -1,0 +1,361 @@
+// rasterlab-cli check: the stage protocol's answers read with exact messages, the protocol
+// document's own examples, the student's Python renderer (written without RasterLab's code)
+// passing every stage, one mutant of it per known stage mistake caught at the right stage and
+// element with its cause, and hostile programs stopped with a message.
+#include <QElapsedTimer>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include "app/check/check_session.h"
+#include "app/check/stage_mistakes.h"
+#include "pipeline/stages/camera_basis.h"
+#include "pipeline/stages/projection.h"
+#include "pipeline/stages/scan_conversion.h"
+#include "pipeline/stages/view_transform.h"
+#include "tests/test_support.h"
+
+using namespace rasterlab::check;
+
+namespace {
+
+QString pythonFolder() {
+    return testing::sourceDir() + "/examples/student/python";
+}
+
+QString python() {
+    return QStringLiteral(RASTERLAB_PYTHON);
+}
+
+const std::vector<CheckScene>& scenes() {
+    static const std::vector<CheckScene> all = defaultCheckScenes();
+    return all;
+}
+
+CheckReport checkPython(const QStringList& switches, std::vector<Stage> stages = {}) {
+    CheckOptions options;
+    if (!stages.empty()) options.stages = std::move(stages);
+    const QString command = python() + " stages.py " + switches.join(' ');
+    return runCheck(command.toStdString(), pythonFolder().toStdString(), scenes(), options);
+}
+
+// The first stage of the pipeline that did not pass, in the first scene where it did not.
+const StageResult* firstDeparture(const CheckReport& report, std::string* scene = nullptr) {
+    const StageResult* first = nullptr;
+    for (const SceneReport& s : report.scenes)
+        for (const StageResult& r : s.stages)
+            if (r.verdict != Verdict::Passed && (!first || int(r.stage) < int(first->stage))) {
+                first = &r;
+                if (scene) *scene = s.name;
+            }
+    return first;
+}
+
+// The fenced blocks of the protocol document that follow "```" + language.
+QStringList fencedBlocks(const QString& language) {
+    const QString text =
+        QString::fromUtf8(testing::readFile(testing::sourceDir() + "/docs/stage-protocol.md"));
+    QStringList blocks;
+    const QRegularExpression fence("```" + language + "\\n(.*?)```",
+                                   QRegularExpression::DotMatchesEverythingOption);
+    for (auto it = fence.globalMatch(text); it.hasNext();) blocks << it.next().captured(1);
+    return blocks;
+}
+
+}  // namespace
+
+class TestCheck : public QObject {
+    Q_OBJECT
+
+private slots:
+    void badAnswersGetExactMessages_data() {
+        QTest::addColumn<int>("stage");
+        QTest::addColumn<QStringList>("lines");
+        QTest::addColumn<QString>("message");
+        const int basis = int(Stage::Basis), view = int(Stage::View), frame = int(Stage::Frame);
+        QTest::newRow("too few numbers")
+            << basis << QStringList{"U 1 0 0", "V 0 1"}
+            << "their answer:2:6: expected 3 numbers after 'V', found 2";
+        QTest::newRow("too many numbers")
+            << basis << QStringList{"U 1 0 0 4"}
+            << "their answer:1:9: expected 3 numbers after 'U', found 4";
+        QTest::newRow("not a number")
+            << basis << QStringList{"U 1 0 x"}
+            << "their answer:1:7: expected a finite number ('.' as the decimal point), found 'x'";
+        QTest::newRow("nan") << basis << QStringList{"U nan 0 0"}
+                             << "their answer:1:3: expected a finite number ('.' as the "
+                                "decimal point), found 'nan'";
+        QTest::newRow("decimal comma")
+            << basis << QStringList{"U 1,5 0 0"}
+            << "their answer:1:3: expected a finite number ('.' as the decimal point), found "
+               "'1,5'";
+        QTest::newRow("another record")
+            << basis << QStringList{"X 1 0 0"} << "their answer:1:1: expected 'U', found 'X'";
+        QTest::newRow("empty line")
+            << basis << QStringList{""} << "their answer:1:1: expected 'U', found an empty line";
+        QTest::newRow("nothing") << basis << QStringList{}
+                                 << "their answer:1:1: expected 'U', the answer ended ('end')";
+        QTest::newRow("a line after the last record")
+            << basis << QStringList{"U 1 0 0", "V 0 1 0", "N 0 0 1", "extra"}
+            << "their answer:4:1: expected 'end', found 'extra'";
+        QTest::newRow("rows missing")
+            << view << QStringList{"light 0 0 0", "vertices 3", "1 2 3"}
+            << "their answer:2:10: expected 3 rows after 'vertices', the answer has 1 lines "
+               "before 'end'";
+        QTest::newRow("negative count")
+            << view << QStringList{"light 0 0 0", "vertices -1"}
+            << "their answer:2:10: expected a whole number of rows, not negative, after "
+               "'vertices'";
+        QTest::newRow("short image row")
+            << frame << QStringList{"image 2 1", "1 2 3 4 5"}
+            << "their answer:2:10: expected 6 numbers in a row of 'image', found 5";
+    }
+
+    void badAnswersGetExactMessages() {
+        QFETCH(int, stage);
+        QFETCH(QStringList, lines);
+        QFETCH(QString, message);
+        std::vector<std::string> text;
+        for (const QString& line : lines) text.push_back(line.toStdString());
+        const auto parsed = parseAnswer(Stage(stage), text, "their answer");
+        QVERIFY(!parsed);
+        QCOMPARE(QString::fromStdString(parsed.error().toString()), message);
+    }
+
+    // The session in the document: its answer reads, and is the lecture's basis of its camera.
+    void documentSessionIsTheLecturesBasis() {
+        const QStringList blocks = fencedBlocks("");
+        QVERIFY(!blocks.isEmpty());
+        std::vector<std::string> answer;
+        rl::CourseCamera camera;
+        for (const QString& line : blocks.first().split('\n', Qt::SkipEmptyParts)) {
+            const QStringList f = line.mid(2).split(' ');
+            if (line.startsWith(QStringLiteral("← ")) && f.first() != "speaks" &&
+                f.first() != "end")
+                answer.push_back(line.mid(2).toStdString());
+            if (line.startsWith(QStringLiteral("→ ")) && f.size() == 4) {
+                const rl::dvec3 v(f[1].toDouble(), f[2].toDouble(), f[3].toDouble());
+                (f[0] == "C" ? camera.c : f[0] == "N" ? camera.n : camera.v) = v;
+            }
+        }
+        const auto records = parseAnswer(Stage::Basis, answer, "the document");
+        QVERIFY2(records, records ? "" : records.error().toString().c_str());
+        rl::Scene scene;
+        scene.camera = camera;
+        rl::Diagnostics diagnostics;
+        const auto basis = rl::CameraBasisStage().run(scene, diagnostics);
+        QVERIFY(basis);
+        const rl::dvec3 ours[3] = {basis->u, basis->v, basis->n};
+        for (int i = 0; i < 3; ++i)
+            for (int k = 0; k < 3; ++k)
+                QVERIFY2(std::abs(records->at(std::size_t(i)).numbers[std::size_t(k)] -
+                                  ours[i][k]) < 1e-15,
+                         qPrintable(QStringLiteral("%1[%2]").arg(i).arg(k)));
+    }
+
+    // The document's whole program has the basis alone: it passes it, the rest unsupported.
+    void documentProgramPassesTheBasis() {
+        const QStringList programs = fencedBlocks("python");
+        QCOMPARE(programs.size(), 1);
+        QTemporaryDir dir;
+        QFile file(dir.filePath("basis.py"));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(programs.first().toUtf8());
+        file.close();
+        const CheckReport report = runCheck((python() + " basis.py").toStdString(),
+                                            dir.path().toStdString(), {scenes().front()}, {});
+        QVERIFY2(report.failure.empty(), report.failure.c_str());
+        QCOMPARE(report.scenes.front().stages.size(), kStages.size());
+        for (const StageResult& r : report.scenes.front().stages)
+            QCOMPARE(int(r.verdict),
+                     int(r.stage == Stage::Basis ? Verdict::Passed : Verdict::Unsupported));
+        QVERIFY(!report.passed());
+    }
+
+    // The brute-force test of each pixel against the three edges (stage_mistakes.h), written
+    // apart from the lecture, gives the lecture's spans on every default scene.
+    void edgeFunctionsGiveTheLecturesSpans() {
+        for (const CheckScene& s : scenes()) {
+            rl::Diagnostics diagnostics;
+            const auto basis = rl::CameraBasisStage().run(*s.scene, diagnostics);
+            QVERIFY(basis);
+            const auto view = rl::ViewTransformStage().run(*s.scene, basis.value());
+            const auto projection = rl::ProjectionStage().run({*s.scene, view}, diagnostics);
+            const auto scan = rl::ScanConversionStage().run({*s.scene, projection});
+            std::vector<Row> triangles, ours;
+            for (const rl::ScreenTriangle& t : projection.triangles) {
+                const auto p = rl::screenVertices(projection, t);
+                triangles.push_back({p[0].x, p[0].y, p[1].x, p[1].y, p[2].x, p[2].y});
+            }
+            for (std::uint32_t t = 0; t < scan.triangleCount(); ++t)
+                for (std::uint32_t k = scan.spanStart[t]; k < scan.spanStart[t + 1]; ++k)
+                    ours.push_back({double(t), double(scan.spans[k].y),
+                                    double(scan.spans[k].xBegin), double(scan.spans[k].xEnd - 1)});
+            std::vector<Row> brute = scanSpans(triangles, s.scene->width, s.scene->height, false);
+            std::sort(brute.begin(), brute.end());
+            std::sort(ours.begin(), ours.end());
+            QVERIFY2(brute == ours, s.name.c_str());
+            QVERIFY(ours.size() > 20);
+        }
+    }
+
+    void pythonExamplePassesEveryStage() {
+        const CheckReport report = checkPython({});
+        std::string scene;
+        const StageResult* departure = firstDeparture(report, &scene);
+        QVERIFY2(!departure,
+                 departure ? (scene + ": " + formatReport(report, "text")).c_str() : "");
+        QVERIFY(report.passed());
+        QCOMPARE(report.scenes.size(), std::size_t(6));
+        qInfo("the Python example's check over the default scenes: %.2f s", report.seconds);
+    }
+
+    // The second student's renderer, in C++, written apart from RasterLab and from the Python
+    // one: every stage passes too.
+    void cppExamplePassesEveryStage() {
+        const CheckReport report =
+            runCheck(STUDENT_CPP " --stages",
+                     (testing::sourceDir() + "/examples/student/cpp").toStdString(), scenes(), {});
+        QVERIFY2(report.passed(), formatReport(report, "text").c_str());
+        qInfo("the C++ example's check over the default scenes: %.2f s", report.seconds);
+    }
+
+    // Scenes the protocol cannot carry are reported as not checked, with the reason.
+    void scenesBeyondTheSeedAreNotChecked() {
+        testing::CliRun run;
+        QVERIFY(
+            testing::runCli({"check", "--program", python() + " stages.py", "--scene", "lights"},
+                            pythonFolder(), run));
+        QVERIFY2(run.out.contains("not checked: the protocol carries one light, the scene has 3"),
+                 qPrintable(run.out));
+        QCOMPARE(run.exitCode, 3);
+        QVERIFY(testing::runCli(
+            {"check", "--program", python() + " stages.py", "--scene", "near-plane"},
+            pythonFolder(), run));
+        QVERIFY2(run.out.contains("not checked: a triangle is clipped, behind the camera"),
+                 qPrintable(run.out));
+    }
+
+    // One mutant of the Python example per known mistake: the stage and element where check
+    // stops it, and the cause it names.
+    void mutantsAreCaughtWhereTheyAre_data() {
+        QTest::addColumn<QString>("switches");
+        QTest::addColumn<int>("stage");
+        QTest::addColumn<QString>("element");
+        QTest::addColumn<QString>("cause");
+        const auto row = [](const char* switches, Stage stage, const char* element,
+                            const char* cause) {
+            QTest::newRow(switches)
+                << QString(switches) << int(stage) << QString(element) << QString(cause);
+        };
+        row("--u-v-cross-n", Stage::Basis, "U", "U = V x N: the cross product in the other order");
+        row("--no-normalize-n-before-gram-schmidt", Stage::Basis, "U",
+            "N not normalised before V - (V.N)N, nor after");
+        row("--light-in-world", Stage::View, "the light", "the light left in world coordinates");
+        row("--light-no-minus-c", Stage::View, "the light",
+            "the light taken to view coordinates without subtracting C: [U; V; N] Pl");
+        row("--triangle-normal-reversed", Stage::Normals, "triangle 0",
+            "the cross product in the other order: (Pc - Pa) x (Pb - Pa)");
+        row("--sum-unnormalized-triangle-normals", Stage::Normals, "triangle 0",
+            "the triangle normals not normalised (and summed at their length)");
+        row("--vertex-normals-unnormalized", Stage::Normals, "vertex 0",
+            "the vertex normals not normalised: the sum left at its length");
+        row("--round-vertices", Stage::Projection, "vertex 0",
+            "rounded to the nearest pixel instead of truncated by (int)");
+        row("--flip-y", Stage::Projection, "vertex 0",
+            "y not flipped: (int)((d/hy y/z + 1) height/2), y growing upward");
+        row("--span-end-exclusive", Stage::Scan, "pixel (72, 10) of triangle 0",
+            "each span's last pixel left out (x < last instead of x <= last)");
+        row("--depth-reversed", Stage::ZBuffer, "pixel (68, 25)",
+            "the farther fragment wins (z > stored, the buffer starting at -infinity)");
+        row("--zbuffer-ties-later", Stage::ZBuffer, "pixel (66, 17)",
+            "on a tie the later fragment wins (z <= stored instead of z < stored)");
+        row("--no-flip-normal", Stage::Lighting, "sample 0",
+            "N not turned toward the viewer where V.N < 0");
+        row("--v-equals-p", Stage::Lighting, "sample 0",
+            "V = P' instead of -P' (or L = P' - Pl: the same colours)");
+        row("--l-reversed", Stage::Lighting, "sample 0",
+            "V = P' instead of -P' (or L = P' - Pl: the same colours)");
+        row("--epsilon-special-cases", Stage::Lighting, "sample 6",
+            "V.N, N.L and R.V compared with 1e-3 instead of 0");
+        row("--truncate-terms", Stage::Lighting, "sample 0",
+            "each term truncated to a whole number before the sum");
+        row("--ambient-ia-only", Stage::Lighting, "sample 0",
+            "the ambient term Ia instead of Ia ka");
+        row("--ambient-times-od", Stage::Lighting, "sample 0",
+            "the ambient term Ia ka Od instead of Ia ka");
+        row("--no-clamp", Stage::Lighting, "sample 0", "no clamp: channels above 255 kept");
+        row("--gouraud", Stage::Frame, "pixel (72, 11)",
+            "compare: gouraud shading where phong was asked");
+        row("--mirror-x", Stage::Frame, "pixel (72, 10)",
+            "compare: the image mirrored left-right (x runs the other way)");
+    }
+
+    void mutantsAreCaughtWhereTheyAre() {
+        QFETCH(QString, switches);
+        QFETCH(int, stage);
+        QFETCH(QString, element);
+        QFETCH(QString, cause);
+        const CheckReport report = checkPython(switches.split(' '));
+        QVERIFY2(report.failure.empty(), report.failure.c_str());
+        std::string scene;
+        const StageResult* r = firstDeparture(report, &scene);
+        QVERIFY(r);
+        qInfo("%s: %s, %s (%s)", qPrintable(switches), std::string(stageName(r->stage)).c_str(),
+              r->first ? r->first->element.c_str() : "", scene.c_str());
+        QCOMPARE(int(r->stage), stage);
+        QCOMPARE(int(r->verdict), int(Verdict::Failed));
+        QVERIFY(r->first);
+        QCOMPARE(QString::fromStdString(r->first->element), element);
+        QCOMPARE(QString::fromStdString(r->likelyCause), cause);
+        QVERIFY(r->differing > 0 && r->differing <= r->elements);
+    }
+
+    // Programs that misbehave end within 120 s, with a status below 128 and a message that
+    // names what happened.
+    void hostileProgramsAreStopped_data() {
+        QTest::addColumn<QString>("command");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("sleeps") << "sleep 100"
+                                << "no answer within 2 s (the limit per request)";
+        QTest::newRow("floods") << "yes"
+                                << "expected 'speaks 1' as its first line, found 'y'";
+        QTest::newRow("floods after the handshake") << "echo speaks 1; yes"
+                                                    << "without its 'end' (the output limit)";
+        QTest::newRow("exits at once")
+            << "true"
+            << "the program ended (exit status 0) before it finished answering";
+        QTest::newRow("writes binary")
+            << "printf 'speaks 1\\n\\001\\002\\n'"
+            << "the answer is not text: byte 0x01 at column 1 of its line";
+        QTest::newRow("never ends a line") << "echo speaks 1; yes | tr -d '\\n'"
+                                           << "bytes without the end of a line";
+        QTest::newRow("crashes") << "echo speaks 1; kill -SEGV $$"
+                                 << "killed by signal 11 (Segmentation fault)";
+        QTest::newRow("answers another stage")
+            << "echo speaks 1; cat"
+            << "their answer to view:1:1: expected 'light', found 'view'";
+        QTest::newRow("not found") << "./no-such-program"
+                                   << "exit status 127: the command was not found";
+    }
+
+    void hostileProgramsAreStopped() {
+        QFETCH(QString, command);
+        QFETCH(QString, message);
+        QElapsedTimer clock;
+        clock.start();
+        testing::CliRun run;
+        QVERIFY2(testing::runCli({"check", "--program", command, "--scene", "triangle",
+                                  "--request-timeout", "2", "--timeout", "30"},
+                                 QDir::tempPath(), run),
+                 qPrintable(run.problem));
+        qInfo("%s: %.1f s", qPrintable(command), clock.elapsed() / 1000.0);
+        QVERIFY(clock.elapsed() < 120000);
+        QVERIFY2(run.out.contains(message), qPrintable(run.out));
+        QVERIFY(run.exitCode > 0 && run.exitCode < 128);
+        QCOMPARE(run.exitCode, 4);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCheck)
+#include "tst_check.moc"
