@@ -311,6 +311,62 @@ private slots:
         QVERIFY(r->differing > 0 && r->differing <= r->elements);
     }
 
+    // A class of three: the example, one that hangs and one that floods; each gets its row,
+    // and the two that misbehave cost their time limit and nothing more.
+    void gradeWritesARowForEachSubmission() {
+        QTemporaryDir dir;
+        const QDir root(dir.path());
+        const auto submit = [&](const char* name, const QString& run) {
+            QVERIFY(root.mkpath(QString("class/") + name));
+            QFile file(root.filePath(QString("class/") + name + "/run"));
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            file.write(run.toUtf8() + "\n");
+        };
+        submit("example", python() + " " + pythonFolder() + "/stages.py");
+        submit("hangs", "sleep 1000");
+        submit("floods", "yes");
+        QVERIFY(root.mkpath("class/empty"));
+        QElapsedTimer clock;
+        clock.start();
+        testing::CliRun run;
+        QVERIFY2(
+            testing::runCli({"grade", "--submissions", root.filePath("class"), "--output",
+                             root.filePath("grades"), "--request-timeout", "3", "--timeout", "20"},
+                            dir.path(), run),
+            qPrintable(run.problem));
+        qInfo("grade of four submissions: %.1f s", clock.elapsed() / 1000.0);
+        QVERIFY(clock.elapsed() < 600000);
+        QCOMPARE(run.exitCode, 0);
+        const QStringList rows = run.out.split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(rows.size(), 6);
+        QCOMPARE(rows[0],
+                 "| submission | basis | view | normals | projection | scan | zbuffer | lighting "
+                 "| frame | passed | note |");
+        QVERIFY2(
+            rows[2].startsWith("| empty | not run |") && rows[2].endsWith("| no | no 'run' file |"),
+            qPrintable(rows[2]));
+        QVERIFY2(
+            rows[3].startsWith("| example | passed | passed | passed | passed | passed | passed "
+                               "| passed | passed | yes | every stage passed;"),
+            qPrintable(rows[3]));
+        QVERIFY2(rows[4].startsWith("| floods | not run |") &&
+                     rows[4].contains("expected 'speaks 1' as its first line, found 'y'"),
+                 qPrintable(rows[4]));
+        QVERIFY2(rows[5].startsWith("| hangs | not run |") &&
+                     rows[5].contains("no answer within 3 s (the limit per request)"),
+                 qPrintable(rows[5]));
+        const QString csv =
+            QString::fromUtf8(testing::readFile(root.filePath("grades/grades.csv")));
+        QVERIFY(csv.startsWith(
+            "submission,basis,view,normals,projection,scan,zbuffer,lighting,frame,passed,note\n"));
+        QVERIFY(
+            csv.contains("\nexample,passed,passed,passed,passed,passed,passed,passed,passed,yes,"));
+        QVERIFY(QFile::exists(root.filePath("grades/grades.md")));
+        QVERIFY(testing::readFile(root.filePath("grades/reports/example.md"))
+                    .contains("Every stage passed"));
+        QVERIFY(QFile::exists(root.filePath("grades/reports/hangs.json")));
+    }
+
     // Programs that misbehave end within 120 s, with a status below 128 and a message that
     // names what happened.
     void hostileProgramsAreStopped_data() {

@@ -353,7 +353,7 @@ void TestCli::usageErrors_data() {
         << (QStringList({"render", "--explain-pixel", "800,10"}) + out)
         << "--explain-pixel 800,10 is outside the 800x600 image";
     QTest::newRow("unknown command") << QStringList({"paint", "--output", "out.png"})
-                                     << "unknown command 'paint' (commands: render, run, compare, check, "
+                                     << "unknown command 'paint' (commands: render, run, compare, check, grade, "
                                         "bench, accuracy, stability, generate-default-scene, "
                                         "generate-lessons)";
     QTest::newRow("unknown option")

@@ -28,6 +28,8 @@ QString generalHelp() {
         "                           and a ranked diagnosis of likely mistakes.\n"
         "  check                    Check your rasterizer stage by stage: your program answers\n"
         "                           each stage over the stage protocol, held to the lecture's.\n"
+        "  grade                    Check every submission of a class: a table of\n"
+        "                           submissions x stages, and each one's report.\n"
         "  bench                    Time a scene's frames (median, min, max, per stage).\n"
         "  accuracy                 Error against run time of each mode, against an exact\n"
         "                           ray-cast reference (table, plot, heat maps).\n"
@@ -72,13 +74,15 @@ int runCli(const QStringList& arguments, QTextStream& out, QTextStream& err) {
             code = cli::runCompare(rest, out, err);
         else if (command == lit("check"))
             code = cli::runCheck(rest, out, err);
+        else if (command == lit("grade"))
+            code = cli::runGrade(rest, out, err);
         else if (command == lit("generate-default-scene"))
             code = cli::runGenerateDefaultScene(rest, out, err);
         else if (command == lit("generate-lessons"))
             code = cli::runGenerateLessons(rest, out, err);
         else
             code = cli::usageError(err, lit("unknown command '%1' (commands: render, run, compare, "
-                                            "check, bench, accuracy, stability, generate-default-scene, "
+                                            "check, grade, bench, accuracy, stability, generate-default-scene, "
                                             "generate-lessons)")
                                             .arg(command));
     } catch (const std::bad_alloc&) {

@@ -8,6 +8,7 @@
 #include <QFileInfo>
 
 #include "app/check/check_session.h"
+#include "app/check/grade.h"
 
 namespace rasterlab::cli {
 
@@ -85,6 +86,38 @@ int exitCodeOf(const check::CheckReport& report) {
     return report.anyBroken() ? ExitProgramBroke : ExitStageFailed;
 }
 
+// The scene the options name, or the default scenes when they name none.
+int chooseScenes(const QCommandLineParser& parser, const SceneOptions& sceneOptions,
+                 const QCommandLineOption& sceneName, const rl::CourseSceneSettings& settings,
+                 QTextStream& err, std::vector<check::CheckScene>& scenes) {
+    if (!sceneOptions.anyFile(parser) && !parser.isSet(sceneName)) {
+        scenes = check::defaultCheckScenes();
+        return ExitOk;
+    }
+    rl::Diagnostics diagnostics;
+    std::shared_ptr<const rl::Scene> scene;
+    QString label;
+    if (int code =
+            sceneOptions.loadAny(parser, sceneName, settings, err, diagnostics, scene, label);
+        code != ExitOk)
+        return code;
+    printDiagnostics(diagnostics, err);
+    // The seed draws every triangle: the generated scenes' saving is left out.
+    auto drawn = std::make_shared<rl::Scene>(*scene);
+    drawn->cullHiddenBackFaces = false;
+    scenes.push_back({label.toStdString(), drawn});
+    return ExitOk;
+}
+
+bool writeText(const QString& path, const std::string& text, QTextStream& err) {
+    QFile file(path);
+    if (file.open(QIODevice::WriteOnly | QIODevice::Truncate) &&
+        file.write(text.data(), qint64(text.size())) == qint64(text.size()))
+        return true;
+    err << "rasterlab-cli: cannot write " << path << ": " << file.errorString() << '\n';
+    return false;
+}
+
 }  // namespace
 
 int runCheck(const QStringList& arguments, QTextStream& out, QTextStream& err) {
@@ -137,27 +170,102 @@ int runCheck(const QStringList& arguments, QTextStream& out, QTextStream& err) {
         return usageError(err, lit("--folder: '%1' is not a folder").arg(dir));
 
     std::vector<check::CheckScene> scenes;
-    if (sceneOptions.anyFile(parser) || parser.isSet(sceneName)) {
-        rl::Diagnostics diagnostics;
-        std::shared_ptr<const rl::Scene> scene;
-        QString label;
-        if (int code =
-                sceneOptions.loadAny(parser, sceneName, settings, err, diagnostics, scene, label);
-            code != ExitOk)
-            return code;
-        printDiagnostics(diagnostics, err);
-        // The seed draws every triangle: the generated scenes' saving is left out.
-        auto drawn = std::make_shared<rl::Scene>(*scene);
-        drawn->cullHiddenBackFaces = false;
-        scenes.push_back({label.toStdString(), drawn});
-    } else {
-        scenes = check::defaultCheckScenes();
-    }
+    if (int code = chooseScenes(parser, sceneOptions, sceneName, settings, err, scenes);
+        code != ExitOk)
+        return code;
     const check::CheckReport report =
         check::runCheck(parser.value(program).toStdString(),
                         QFileInfo(dir).absoluteFilePath().toStdString(), scenes, options);
     out << QString::fromStdString(check::formatReport(report, formatName.toStdString()));
     return exitCodeOf(report);
+}
+
+int runGrade(const QStringList& arguments, QTextStream& out, QTextStream& err) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        lit("Grade a class: every subfolder of --submissions holding a one-line 'run' file (the "
+            "command that starts its program, run in that folder) goes through check, two at a "
+            "time. Prints the table of submissions x stages; --output also writes it as CSV and "
+            "Markdown with each submission's report. Exit status 0 once every submission has "
+            "its row."));
+    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    const QCommandLineOption help({lit("h"), lit("help")}, lit("Show this help."));
+    const QCommandLineOption submissions(lit("submissions"),
+                                         lit("The folder of submissions (required)."), lit("DIR"));
+    const QCommandLineOption output(lit("output"),
+                                    lit("Write grades.csv, grades.md and reports/NAME.md and "
+                                        ".json into this folder (made if missing)."),
+                                    lit("DIR"));
+    const QCommandLineOption format(lit("format"), lit("The table printed: md (default) or csv."),
+                                    lit("FORMAT"), lit("md"));
+    const QCommandLineOption jobs(
+        lit("jobs"), lit("Submissions checked at once (default 2; 1 to 16)."), lit("N"), lit("2"));
+    const QCommandLineOption stagesOption(lit("stages"),
+                                          lit("Only these stages, comma-separated (default: "
+                                              "all eight)."),
+                                          lit("LIST"));
+    const SceneOptions sceneOptions;
+    const LimitOptions limitOptions;
+    const QCommandLineOption sceneName = SceneOptions::generatedSceneOption();
+    parser.addOption(help);
+    sceneOptions.addTo(parser);
+    limitOptions.addTo(parser);
+    parser.addOptions({sceneName, submissions, output, format, jobs, stagesOption});
+    rl::CourseSceneSettings settings;
+    if (auto code = parseSceneCommand(parser, arguments, help, lit("grade"), sceneOptions,
+                                      sceneName, settings, out, err))
+        return *code;
+    if (!parser.isSet(submissions)) return usageError(err, lit("grade needs --submissions DIR"));
+    const QString formatName = parser.value(format);
+    if (formatName != lit("md") && formatName != lit("csv"))
+        return usageError(err, lit("--format expects md or csv, found '%1'").arg(formatName));
+    bool ok = false;
+    const int jobCount = parser.value(jobs).toInt(&ok);
+    if (!ok || jobCount < 1 || jobCount > 16)
+        return usageError(
+            err,
+            lit("--jobs expects a whole number from 1 to 16, found '%1'").arg(parser.value(jobs)));
+    check::CheckOptions options;
+    if (auto code = limitOptions.read(parser, options.limits, err)) return *code;
+    if (parser.isSet(stagesOption))
+        if (auto code = readStages(parser.value(stagesOption), options.stages, err)) return *code;
+    const auto found = check::findSubmissions(parser.value(submissions).toStdString());
+    if (!found) return inputError(err, found.error());
+    if (found->empty())
+        return usageError(
+            err, lit("--submissions: '%1' holds no folder").arg(parser.value(submissions)));
+    std::vector<check::CheckScene> scenes;
+    if (int code = chooseScenes(parser, sceneOptions, sceneName, settings, err, scenes);
+        code != ExitOk)
+        return code;
+
+    const auto rows = check::gradeSubmissions(found.value(), scenes, options, jobCount,
+                                              [&err](int done, int total, const std::string& name) {
+                                                  err << "graded " << done << "/" << total << ": "
+                                                      << QString::fromStdString(name) << '\n';
+                                                  err.flush();
+                                              });
+    out << QString::fromStdString(check::gradeTable(rows, formatName.toStdString()));
+    if (!parser.isSet(output)) return ExitOk;
+    const QDir dir(parser.value(output));
+    if (!dir.mkpath(lit("reports")))
+        return usageError(err, lit("--output: cannot make the folder '%1'").arg(dir.path()));
+    bool written =
+        writeText(dir.filePath(lit("grades.csv")), check::gradeTable(rows, "csv"), err) &&
+        writeText(dir.filePath(lit("grades.md")), check::gradeTable(rows, "md"), err);
+    for (const check::GradeRow& row : rows) {
+        const QString base =
+            dir.filePath(lit("reports/") + QString::fromStdString(row.submission.name));
+        const std::string text =
+            row.submission.problem.empty()
+                ? check::formatReport(row.report, "md")
+                : "# " + row.submission.name + "\n\n" + row.submission.problem + "\n";
+        written = written && writeText(base + lit(".md"), text, err);
+        if (row.submission.problem.empty())
+            written = written &&
+                      writeText(base + lit(".json"), check::formatReport(row.report, "json"), err);
+    }
+    return written ? ExitOk : ExitBadInput;
 }
 
 }  // namespace rasterlab::cli

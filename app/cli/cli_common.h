@@ -173,6 +173,7 @@ int runRender(const QStringList& arguments, QTextStream& out, QTextStream& err);
 int runCommandFile(const QStringList& arguments, QTextStream& out, QTextStream& err);
 int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err);
 int runCheck(const QStringList& arguments, QTextStream& out, QTextStream& err);
+int runGrade(const QStringList& arguments, QTextStream& out, QTextStream& err);
 int runBench(const QStringList& arguments, QTextStream& out, QTextStream& err);
 int runAccuracy(const QStringList& arguments, QTextStream& out, QTextStream& err);
 int runStability(const QStringList& arguments, QTextStream& out, QTextStream& err);
