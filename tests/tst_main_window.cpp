@@ -728,7 +728,7 @@ void TestMainWindow::coveredViewsRefreshWhenRaised() {
 void TestMainWindow::docks() {
     MainWindow window;
     const QList<QDockWidget*> docks = window.findChildren<QDockWidget*>();
-    QCOMPARE(docks.size(), 17);
+    QCOMPARE(docks.size(), 18);
     std::set<QString> names;
     for (const QDockWidget* dock : docks) {
         QVERIFY2(!dock->objectName().isEmpty(), qPrintable(dock->windowTitle()));
@@ -744,7 +744,7 @@ void TestMainWindow::docks() {
         QStringLiteral("vertexTableDock"), QStringLiteral("normalsDock"),
         QStringLiteral("animationDock"),   QStringLiteral("nearClipDock"),
         QStringLiteral("trapezoidDock"),   QStringLiteral("painterDock"),
-        QStringLiteral("compareDock")};
+        QStringLiteral("compareDock"),     QStringLiteral("checkDock")};
     QCOMPARE(names, expected);
     const auto* messagesDock = window.findChild<QDockWidget*>(QStringLiteral("messagesDock"));
     QVERIFY(messagesDock);

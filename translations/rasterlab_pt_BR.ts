@@ -3139,6 +3139,209 @@
     </message>
 </context>
 <context>
+    <name>rasterlab::CheckPanel</name>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="52"/>
+        <source>python3 stages.py</source>
+        <translation>python3 stages.py</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="54"/>
+        <source>The command that starts your program, run by /bin/sh in the folder below; it answers the stage protocol on its standard input and output (docs/stage-protocol.md).</source>
+        <translation>O comando que inicia o seu programa, executado pelo /bin/sh na pasta abaixo; ele responde ao protocolo de etapas na sua entrada e saída padrão (docs/stage-protocol.md).</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="57"/>
+        <source>Command:</source>
+        <translation>Comando:</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="61"/>
+        <source>Browse...</source>
+        <translation>Procurar...</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="64"/>
+        <source>Folder:</source>
+        <translation>Pasta:</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="68"/>
+        <source>Check</source>
+        <translation>Verificar</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="70"/>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="72"/>
+        <source>Stop at the First Departure</source>
+        <translation>Parar no Primeiro Desvio</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="74"/>
+        <source>Step the frame to where the selected stage first departs from the lecture&apos;s</source>
+        <translation>Avança o quadro até onde a etapa selecionada se desvia pela primeira vez da etapa da aula</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="93"/>
+        <source>Stage</source>
+        <translation>Etapa</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="93"/>
+        <source>Verdict</source>
+        <translation>Veredito</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="93"/>
+        <source>Elements</source>
+        <translation>Elementos</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="93"/>
+        <source>Likely cause</source>
+        <translation>Causa provável</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="127"/>
+        <source>Your Program&apos;s Folder</source>
+        <translation>A Pasta do Seu Programa</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="170"/>
+        <source>A check is running.</source>
+        <translation>Uma verificação está em andamento.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="172"/>
+        <source>Give the command that starts your program.</source>
+        <translation>Informe o comando que inicia o seu programa.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="175"/>
+        <source>The folder %1 does not exist.</source>
+        <translation>A pasta %1 não existe.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="177"/>
+        <source>There is no frame to check against.</source>
+        <translation>Não há quadro com que comparar.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="198"/>
+        <source>Checking %1...</source>
+        <translation>Verificando %1...</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="216"/>
+        <source>cancelled</source>
+        <translation>cancelada</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="216"/>
+        <source>done</source>
+        <translation>concluída</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="225"/>
+        <source>Over our image: each vertex that departs, ours a green dot, theirs a red cross, joined by a line.</source>
+        <translation>Sobre a nossa imagem: cada vértice que se desvia, o nosso um ponto verde, o deles uma cruz vermelha, unidos por uma linha.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="229"/>
+        <source>Over our image: magenta, pixels only we cover; cyan, pixels only they cover.</source>
+        <translation>Sobre a nossa imagem: magenta, pixels que só nós cobrimos; ciano, pixels que só eles cobrem.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="233"/>
+        <source>Over our image: red, pixels another triangle wins (or at another depth); magenta, only ours keeps one; cyan, only theirs.</source>
+        <translation>Sobre a nossa imagem: vermelho, pixels que outro triângulo ganha (ou com outra profundidade); magenta, só o nosso guarda um; ciano, só o deles.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="237"/>
+        <source>Over our image: red, pixels whose colour differs by more than 1.</source>
+        <translation>Sobre a nossa imagem: vermelho, pixels cuja cor difere em mais de 1.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="246"/>
+        <source>passed</source>
+        <translation>passou</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="248"/>
+        <source>failed</source>
+        <translation>falhou</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="250"/>
+        <source>unsupported</source>
+        <translation>não suportada</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="252"/>
+        <source>broken</source>
+        <translation>quebrou</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="295"/>
+        <source>not applied: %1</source>
+        <translation>não aplicado: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="304"/>
+        <source>Protected by: %1.</source>
+        <translation>Protegido por: %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="305"/>
+        <source>Protected by: %1. Not applied: %2.</source>
+        <translation>Protegido por: %1. Não aplicado: %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="309"/>
+        <source>Not checked: %1</source>
+        <translation>Não verificada: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="315"/>
+        <source>%1 of %2 differ</source>
+        <translation>%1 de %2 diferem</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="331"/>
+        <source>Every stage passed (%1 s).</source>
+        <translation>Todas as etapas passaram (%1 s).</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="368"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="372"/>
+        <source>First departure: %1: theirs %2, ours %3</source>
+        <translation>Primeiro desvio: %1: o deles %2, o nosso %3</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="376"/>
+        <source>Likely cause: %1</source>
+        <translation>Causa provável: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="378"/>
+        <source>No known mistake of this stage gives their answer.</source>
+        <translation>Nenhum erro conhecido desta etapa dá a resposta deles.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="379"/>
+        <source>Tolerance: %1</source>
+        <translation>Tolerância: %1</translation>
+    </message>
+</context>
+<context>
     <name>rasterlab::CompareImage</name>
     <message>
         <location filename="../app/compare/compare_image.cpp" line="102"/>
@@ -4211,42 +4414,42 @@
         <translation>&amp;Arquivo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="162"/>
+        <location filename="../app/window/main_window_actions.cpp" line="166"/>
         <source>&amp;Animation Frames...</source>
         <translation>&amp;Quadros da animação...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="298"/>
+        <location filename="../app/window/main_window_actions.cpp" line="302"/>
         <source>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</source>
         <translation>&amp;Algoritmo do pintor (flat, do mais distante ao mais próximo, sem teste de profundidade)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1097"/>
+        <location filename="../app/window/main_window.cpp" line="1098"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>avançar, voltar um passo (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1099"/>
+        <location filename="../app/window/main_window.cpp" line="1100"/>
         <source>Space</source>
         <translation>Barra de espaço</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1099"/>
+        <location filename="../app/window/main_window.cpp" line="1100"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>reproduzir / pausar (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1105"/>
+        <location filename="../app/window/main_window.cpp" line="1106"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>soltar o pixel escolhido (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1106"/>
+        <location filename="../app/window/main_window.cpp" line="1107"/>
         <source>presentation mode on / off</source>
         <translation>ligar / desligar o modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1111"/>
+        <location filename="../app/window/main_window.cpp" line="1112"/>
         <source>save, undo, redo</source>
         <translation>salvar, desfazer, refazer</translation>
     </message>
@@ -4296,72 +4499,72 @@
         <translation>Cena &amp;padrão</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="103"/>
+        <location filename="../app/window/main_window_actions.cpp" line="107"/>
         <source>&amp;Camera</source>
         <translation>&amp;Câmera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="115"/>
+        <location filename="../app/window/main_window_actions.cpp" line="119"/>
         <source>&amp;Lighting</source>
         <translation>&amp;Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="131"/>
+        <location filename="../app/window/main_window_actions.cpp" line="135"/>
         <source>&amp;Export PNG...</source>
         <translation>&amp;Exportar PNG...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="132"/>
+        <location filename="../app/window/main_window_actions.cpp" line="136"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="134"/>
+        <location filename="../app/window/main_window_actions.cpp" line="138"/>
         <source>Export &amp;More</source>
         <translation>E&amp;xportar mais</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="137"/>
+        <location filename="../app/window/main_window_actions.cpp" line="141"/>
         <source>Image as &amp;Displayed...</source>
         <translation>Imagem como &amp;exibida...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="138"/>
+        <location filename="../app/window/main_window_actions.cpp" line="142"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="139"/>
+        <location filename="../app/window/main_window_actions.cpp" line="143"/>
         <source>&amp;Colour Buffer at the Cursor...</source>
         <translation>Buffer de &amp;cor no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="141"/>
+        <location filename="../app/window/main_window_actions.cpp" line="145"/>
         <source>D&amp;epth Buffer at the Cursor...</source>
         <translation>Buffer de pro&amp;fundidade no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="143"/>
+        <location filename="../app/window/main_window_actions.cpp" line="147"/>
         <source>&amp;Normal Buffer...</source>
         <translation>Buffer de &amp;normais...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="144"/>
+        <location filename="../app/window/main_window_actions.cpp" line="148"/>
         <source>A &amp;View as Displayed</source>
         <translation>Um &amp;painel como exibido</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="148"/>
+        <location filename="../app/window/main_window_actions.cpp" line="152"/>
         <source>Export View</source>
         <translation>Exportar painel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="160"/>
+        <location filename="../app/window/main_window_actions.cpp" line="164"/>
         <source>&amp;Stepping Sequence...</source>
         <translation>&amp;Sequência de passos...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="95"/>
+        <location filename="../app/window/main_window_actions.cpp" line="99"/>
         <source>&amp;Quit</source>
         <translation>Sai&amp;r</translation>
     </message>
@@ -4376,262 +4579,272 @@
         <translation>Um PNG do seu próprio renderizador contra a renderização desta cena, com os erros prováveis</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="153"/>
+        <location filename="../app/window/main_window_actions.cpp" line="94"/>
+        <source>Check My &amp;Renderer...</source>
+        <translation>Verificar Meu &amp;Renderizador...</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="96"/>
+        <source>Your own renderer&apos;s stages, each held to the lecture&apos;s over the stage protocol</source>
+        <translation>As etapas do seu próprio renderizador, cada uma comparada à da aula pelo protocolo de etapas</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="157"/>
         <source>Shading Side &amp;by Side...</source>
         <translation>Sombreamentos &amp;lado a lado...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="155"/>
+        <location filename="../app/window/main_window_actions.cpp" line="159"/>
         <source>Export Shading Side by Side</source>
         <translation>Exportar os sombreamentos lado a lado</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="167"/>
+        <location filename="../app/window/main_window_actions.cpp" line="171"/>
         <source>&amp;Edit</source>
         <translation>&amp;Editar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="173"/>
+        <location filename="../app/window/main_window_actions.cpp" line="177"/>
         <source>&amp;View</source>
         <translation>E&amp;xibir</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="174"/>
+        <location filename="../app/window/main_window_actions.cpp" line="178"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Ajustar à janela</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="175"/>
+        <location filename="../app/window/main_window_actions.cpp" line="179"/>
         <source>Ctrl+0</source>
         <translation>Ctrl+0</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="177"/>
+        <location filename="../app/window/main_window_actions.cpp" line="181"/>
         <source>&amp;Actual Size</source>
         <translation>&amp;Tamanho real</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="178"/>
+        <location filename="../app/window/main_window_actions.cpp" line="182"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="179"/>
+        <location filename="../app/window/main_window_actions.cpp" line="183"/>
         <source>Zoom &amp;In</source>
         <translation>A&amp;umentar zoom</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="181"/>
+        <location filename="../app/window/main_window_actions.cpp" line="185"/>
         <source>Zoom &amp;Out</source>
         <translation>&amp;Diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="188"/>
+        <location filename="../app/window/main_window_actions.cpp" line="192"/>
         <source>Reset &amp;Layout</source>
         <translation>Restaurar &amp;layout</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="190"/>
+        <location filename="../app/window/main_window_actions.cpp" line="194"/>
         <source>Fill the &amp;Window with a Panel</source>
         <translation>&amp;Preencher a janela com um painel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="194"/>
+        <location filename="../app/window/main_window_actions.cpp" line="198"/>
         <source>The panel with the focus or under the mouse (the image, from the image) over the whole window; again, the layout back</source>
         <translation>O painel com o foco ou sob o mouse (a imagem, a partir da imagem) sobre a janela inteira; de novo, o layout de volta</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="202"/>
+        <location filename="../app/window/main_window_actions.cpp" line="206"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="207"/>
+        <location filename="../app/window/main_window_actions.cpp" line="211"/>
         <source>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</source>
         <translation>Texto maior, sobreposições mais grossas, alto contraste; as teclas do passador de slides avançam os passos (F5 ou Esc)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="222"/>
+        <location filename="../app/window/main_window_actions.cpp" line="226"/>
         <source>The System&apos;s</source>
         <translation>Do sistema</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="241"/>
+        <location filename="../app/window/main_window_actions.cpp" line="245"/>
         <source>S&amp;tep</source>
         <translation>&amp;Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="261"/>
+        <location filename="../app/window/main_window_actions.cpp" line="265"/>
         <source>Pick the Pixel Under the &amp;Mouse</source>
         <translation>Escolher o pixel sob o &amp;mouse</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="262"/>
+        <location filename="../app/window/main_window_actions.cpp" line="266"/>
         <source>Ctrl+G</source>
         <translation>Ctrl+G</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="291"/>
+        <location filename="../app/window/main_window_actions.cpp" line="295"/>
         <source>&amp;Shading</source>
         <translation>&amp;Sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="295"/>
+        <location filename="../app/window/main_window_actions.cpp" line="299"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (por pixel)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="296"/>
+        <location filename="../app/window/main_window_actions.cpp" line="300"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (por vértice)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="297"/>
+        <location filename="../app/window/main_window_actions.cpp" line="301"/>
         <source>&amp;Flat (per triangle)</source>
         <translation>&amp;Flat (por triângulo)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="339"/>
+        <location filename="../app/window/main_window_actions.cpp" line="343"/>
         <source>Pro&amp;jection</source>
         <translation>Pro&amp;jeção</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="344"/>
+        <location filename="../app/window/main_window_actions.cpp" line="348"/>
         <source>&amp;Clip at the Near Plane (nothing behind the eye is divided)</source>
         <translation>&amp;Recortar no plano próximo (nada atrás do olho é dividido)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="346"/>
+        <location filename="../app/window/main_window_actions.cpp" line="350"/>
         <source>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</source>
         <translation>&amp;Divisão simples, sem recorte (a seed 000 como escrita; o HW2 da seed 001)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="348"/>
+        <location filename="../app/window/main_window_actions.cpp" line="352"/>
         <source>&amp;Same Side (clip only triangles that cross the eye plane)</source>
         <translation>&amp;Mesmo lado (recortar só os triângulos que cruzam o plano do olho)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="687"/>
+        <location filename="../app/window/main_window.cpp" line="688"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Todos os triângulos estão atrás da câmera (N aponta para longe do objeto?), então o recorte no plano próximo não deixa nada para desenhar. A fórmula da seed 000 divide por z mesmo assim: desenharia %1 dos %2 triângulos como a reflexão do objeto pelo olho, girada meia volta na tela, e o z-buffer (que guarda o menor z) guardaria o lado mais distante da câmera. A vista lateral da projeção mostra o olho, N e o objeto.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="992"/>
+        <location filename="../app/window/main_window.cpp" line="993"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1080"/>
+        <location filename="../app/window/main_window.cpp" line="1081"/>
         <source>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</source>
         <translation>&lt;p&gt;Segue as disciplinas para as quais foi feito: os projetos da disciplina de computação gráfica da UFPE e da UFRPE (sombreamento de Phong com z-buffer, e sua variante com sombreamento flat e o algoritmo do pintor), o trabalho “HW2: 3D Rasterizer”, o pipeline de renderização por quadro de uma disciplina de animação, e os slides da aula do Prof. Jonh Edson R. de Carvalho sobre modelos de iluminação (“Modelos de Iluminação”).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1094"/>
+        <location filename="../app/window/main_window.cpp" line="1095"/>
         <source>step forward</source>
         <translation>avançar um passo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1095"/>
+        <location filename="../app/window/main_window.cpp" line="1096"/>
         <source>step back</source>
         <translation>voltar um passo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1098"/>
+        <location filename="../app/window/main_window.cpp" line="1099"/>
         <source>play / pause</source>
         <translation>reproduzir / pausar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1100"/>
+        <location filename="../app/window/main_window.cpp" line="1101"/>
         <source>jump to the start / the end of the frame</source>
         <translation>ir ao início / ao fim do quadro</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1101"/>
+        <location filename="../app/window/main_window.cpp" line="1102"/>
         <source>continue to the next breakpoint</source>
         <translation>continuar até o próximo ponto de parada</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1102"/>
+        <location filename="../app/window/main_window.cpp" line="1103"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>avançar por etapa, triângulo, linha de varredura, segmento, pixel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1103"/>
+        <location filename="../app/window/main_window.cpp" line="1104"/>
         <source>show a stage&apos;s view</source>
         <translation>mostrar o painel de uma etapa</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1104"/>
+        <location filename="../app/window/main_window.cpp" line="1105"/>
         <source>Click, arrows</source>
         <translation>Clique, setas</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1104"/>
+        <location filename="../app/window/main_window.cpp" line="1105"/>
         <source>pick a pixel, move it by one</source>
         <translation>escolher um pixel, movê-lo de um em um</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1107"/>
+        <location filename="../app/window/main_window.cpp" line="1108"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, duplo clique no título de um painel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1108"/>
+        <location filename="../app/window/main_window.cpp" line="1109"/>
         <source>fill the window with the panel (the image, from the image), and back</source>
         <translation>preencher a janela com o painel (a imagem, a partir da imagem), e voltar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1110"/>
+        <location filename="../app/window/main_window.cpp" line="1111"/>
         <source>open, export the image, export it as displayed</source>
         <translation>abrir, exportar a imagem, exportá-la como exibida</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1113"/>
+        <location filename="../app/window/main_window.cpp" line="1114"/>
         <source>fit, actual size, zoom in, zoom out</source>
         <translation>ajustar, tamanho real, aumentar zoom, diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1115"/>
+        <location filename="../app/window/main_window.cpp" line="1116"/>
         <source>Keyboard Shortcuts</source>
         <translation>Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="316"/>
+        <location filename="../app/window/main_window_actions.cpp" line="320"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Regras de rasterização</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="321"/>
+        <location filename="../app/window/main_window_actions.cpp" line="325"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Curso (semente 000: vértices em pixels inteiros, interpolação no espaço da tela)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="323"/>
+        <location filename="../app/window/main_window_actions.cpp" line="327"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>Como uma &amp;GPU (vértices em 1/256 de pixel, centros dos pixels, regra top-left, correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="325"/>
+        <location filename="../app/window/main_window_actions.cpp" line="329"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (as imagens de referência da semente 001)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="362"/>
+        <location filename="../app/window/main_window_actions.cpp" line="366"/>
         <source>&amp;Help</source>
         <translation>A&amp;juda</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="368"/>
+        <location filename="../app/window/main_window_actions.cpp" line="372"/>
         <source>&amp;User Guide</source>
         <translation>&amp;Guia do usuário</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="374"/>
+        <location filename="../app/window/main_window_actions.cpp" line="378"/>
         <source>The user guide is not installed</source>
         <translation>O guia do usuário não está instalado</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="376"/>
+        <location filename="../app/window/main_window_actions.cpp" line="380"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;Sobre o RasterLab</translation>
     </message>
@@ -4651,7 +4864,7 @@
         <translation>Exatidão</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="661"/>
+        <location filename="../app/window/main_window.cpp" line="662"/>
         <location filename="../app/window/main_window_export.cpp" line="35"/>
         <location filename="../app/window/main_window_export.cpp" line="133"/>
         <location filename="../app/window/main_window_export.cpp" line="175"/>
@@ -4670,18 +4883,18 @@
         <translation>Exportado %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="714"/>
+        <location filename="../app/window/main_window.cpp" line="715"/>
         <source>rendering...</source>
         <translation>renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="714"/>
+        <location filename="../app/window/main_window.cpp" line="715"/>
         <source>%1, rendering...</source>
         <translation>%1, renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="712"/>
-        <location filename="../app/window/main_window.cpp" line="955"/>
+        <location filename="../app/window/main_window.cpp" line="713"/>
+        <location filename="../app/window/main_window.cpp" line="956"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -4706,108 +4919,108 @@
         <translation>Ctrl+Shift+B</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="101"/>
+        <location filename="../app/window/main_window_actions.cpp" line="105"/>
         <source>Course File La&amp;youts</source>
         <translation>&amp;Formatos dos arquivos do curso</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="184"/>
+        <location filename="../app/window/main_window_actions.cpp" line="188"/>
         <source>Pa&amp;nels</source>
         <translation>&amp;Painéis</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="199"/>
+        <location filename="../app/window/main_window_actions.cpp" line="203"/>
         <source>I&amp;mage</source>
         <translation>&amp;Imagem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="217"/>
+        <location filename="../app/window/main_window_actions.cpp" line="221"/>
         <source>Lan&amp;guage</source>
         <translation>Idi&amp;oma</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="250"/>
+        <location filename="../app/window/main_window_actions.cpp" line="254"/>
         <source>Step B&amp;y</source>
         <translation>Avançar &amp;por</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="252"/>
+        <location filename="../app/window/main_window_actions.cpp" line="256"/>
         <source>S&amp;tage</source>
         <translation>&amp;Etapa</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="363"/>
+        <location filename="../app/window/main_window_actions.cpp" line="367"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="393"/>
+        <location filename="../app/window/main_window.cpp" line="394"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Apresentação: F5 ou Esc sai; Page Down, → e Espaço avançam e reproduzem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="644"/>
+        <location filename="../app/window/main_window.cpp" line="645"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="722"/>
+        <location filename="../app/window/main_window.cpp" line="723"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparando o passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="722"/>
+        <location filename="../app/window/main_window.cpp" line="723"/>
         <source>Rendering</source>
         <translation>Renderizando</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="898"/>
+        <location filename="../app/window/main_window.cpp" line="899"/>
         <source>Error: %1</source>
         <translation>Erro: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="922"/>
+        <location filename="../app/window/main_window.cpp" line="923"/>
         <source>Files</source>
         <translation>Arquivos</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="925"/>
+        <location filename="../app/window/main_window.cpp" line="926"/>
         <source>Command file</source>
         <translation>Arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="926"/>
+        <location filename="../app/window/main_window.cpp" line="927"/>
         <source>Image</source>
         <translation>Imagem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="928"/>
+        <location filename="../app/window/main_window.cpp" line="929"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vértices, %2 triângulos em %3 desenhos; %4 x %5 pixels; %6 luzes</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="938"/>
+        <location filename="../app/window/main_window.cpp" line="939"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="939"/>
+        <location filename="../app/window/main_window.cpp" line="940"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="940"/>
+        <location filename="../app/window/main_window.cpp" line="941"/>
         <source>Object</source>
         <translation>Objeto</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="942"/>
+        <location filename="../app/window/main_window.cpp" line="943"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vértices, %2 triângulos; %3 x %4 pixels, sombreamento %5</translation>
     </message>
     <message>
         <location filename="../app/window/main_window.cpp" line="260"/>
-        <location filename="../app/window/main_window.cpp" line="949"/>
+        <location filename="../app/window/main_window.cpp" line="950"/>
         <source>Stages</source>
         <translation>Etapas</translation>
     </message>
@@ -4877,96 +5090,96 @@
         <translation>Comparar com a imagem deles</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="920"/>
+        <location filename="../app/window/main_window.cpp" line="921"/>
         <source>Lesson: %1</source>
         <translation>Aula: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="956"/>
+        <location filename="../app/window/main_window.cpp" line="957"/>
         <source>skipped: %1</source>
         <translation>omitida: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="959"/>
+        <location filename="../app/window/main_window.cpp" line="960"/>
         <source>Counts</source>
         <translation>Contagens</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="960"/>
+        <location filename="../app/window/main_window.cpp" line="961"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triângulos recortados no plano próximo: %1; atrás da câmera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="963"/>
+        <location filename="../app/window/main_window.cpp" line="964"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Triângulos de área zero: %1 no espaço de vista, %2 na tela&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="966"/>
+        <location filename="../app/window/main_window.cpp" line="967"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragmentos testados: %1; escritos: %2; rejeitados: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="970"/>
+        <location filename="../app/window/main_window.cpp" line="971"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels sombreados: %1; normais voltadas para o observador: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; limitados a 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="994"/>
+        <location filename="../app/window/main_window.cpp" line="995"/>
         <source>empty (+inf)</source>
         <translation>vazio (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="995"/>
+        <location filename="../app/window/main_window.cpp" line="996"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   profundidade %6</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1011"/>
+        <location filename="../app/window/main_window.cpp" line="1012"/>
         <source>Open Command File</source>
         <translation>Abrir arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1012"/>
+        <location filename="../app/window/main_window.cpp" line="1013"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Arquivos de comandos (*.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1018"/>
+        <location filename="../app/window/main_window.cpp" line="1019"/>
         <source>Open</source>
         <translation>Abrir</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1018"/>
+        <location filename="../app/window/main_window.cpp" line="1019"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Arquivos de cena (*.byu *.cfg *.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1028"/>
+        <location filename="../app/window/main_window.cpp" line="1029"/>
         <source>Export PNG</source>
         <translation>Exportar PNG</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1028"/>
-        <location filename="../app/window/main_window_actions.cpp" line="149"/>
-        <location filename="../app/window/main_window_actions.cpp" line="156"/>
+        <location filename="../app/window/main_window.cpp" line="1029"/>
+        <location filename="../app/window/main_window_actions.cpp" line="153"/>
+        <location filename="../app/window/main_window_actions.cpp" line="160"/>
         <location filename="../app/window/main_window_export.cpp" line="198"/>
         <location filename="../app/window/main_window_export.cpp" line="206"/>
         <source>PNG images (*.png)</source>
         <translation>Imagens PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1033"/>
+        <location filename="../app/window/main_window.cpp" line="1034"/>
         <source>Compare with Image</source>
         <translation>Comparar com imagem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1034"/>
+        <location filename="../app/window/main_window.cpp" line="1035"/>
         <source>PNG images (*.png);;All files (*)</source>
         <translation>Imagens PNG (*.png);;Todos os arquivos (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/main_window.cpp" line="1059"/>
+        <location filename="../app/window/main_window.cpp" line="1060"/>
         <source>Compared %1 with our render: %n pixel(s) differ</source>
         <translation>
             <numerusform>%1 comparada com a nossa renderização: %n pixel difere</numerusform>
@@ -4974,22 +5187,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1067"/>
+        <location filename="../app/window/main_window.cpp" line="1068"/>
         <source>About RasterLab</source>
         <translation>Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1073"/>
+        <location filename="../app/window/main_window.cpp" line="1074"/>
         <source>Released under the MIT License, whose text is in %1.</source>
         <translation>Distribuído sob a Licença MIT, cujo texto está em %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1075"/>
+        <location filename="../app/window/main_window.cpp" line="1076"/>
         <source>Released under the MIT License.</source>
         <translation>Distribuído sob a Licença MIT.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1076"/>
+        <location filename="../app/window/main_window.cpp" line="1077"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;O pipeline clássico de rasterização por software, etapa por etapa: base da câmera, coordenadas de vista, normais, projeção, conversão por varredura, teste de profundidade e sombreamento.&lt;/p&gt;</translation>
     </message>
@@ -5130,105 +5343,115 @@
         <translation>A imagem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="79"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="80"/>
         <source>E&amp;xamples</source>
         <translation>E&amp;xemplos</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="89"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="90"/>
         <source>Open Lesso&amp;n...</source>
         <translation>Abrir a&amp;ula...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="90"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="91"/>
         <source>Ctrl+Alt+O</source>
         <translation>Ctrl+Alt+O</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="92"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="93"/>
         <source>A lesson file (.rasterlab): a scene with its stepping, picked pixel, breakpoints, zoom and docks</source>
         <translation>Um arquivo de aula (.rasterlab): uma cena com o seu passo a passo, o pixel escolhido, os pontos de parada, o zoom e os painéis</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="94"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="95"/>
         <source>Save Lesson &amp;As...</source>
         <translation>Salvar aula c&amp;omo...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="95"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="96"/>
         <source>Ctrl+Alt+S</source>
         <translation>Ctrl+Alt+S</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="97"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="98"/>
         <source>Recent Lesso&amp;ns</source>
         <translation>Aulas rece&amp;ntes</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="123"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="124"/>
         <source>Open Lesson</source>
         <translation>Abrir aula</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="124"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="125"/>
         <source>Lessons (*.rasterlab);;All files (*)</source>
         <translation>Aulas (*.rasterlab);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="129"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="130"/>
         <source>Save Lesson</source>
         <translation>Salvar aula</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="130"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="131"/>
         <source>Lessons (*.rasterlab)</source>
         <translation>Aulas (*.rasterlab)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="133"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="134"/>
         <source>Saved the lesson to %1</source>
         <translation>A aula foi salva em %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="138"/>
-        <location filename="../app/window/main_window_lessons.cpp" line="151"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="139"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="152"/>
         <source>there is no example named &apos;%1&apos; (examples: %2)</source>
         <translation>não há exemplo chamado &apos;%1&apos; (exemplos: %2)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="166"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="167"/>
         <source>the %1 was not restored, the one shown stays: %2</source>
         <translation>não foi possível restaurar %1, continua o que era mostrado: %2</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="169"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="170"/>
         <source>camera</source>
         <translation>a câmera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="170"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="171"/>
         <source>lighting</source>
         <translation>a iluminação</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="171"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="172"/>
         <source>object</source>
         <translation>o objeto</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="174"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="175"/>
         <source>the command file was not restored, the scene shown stays: %1</source>
         <translation>o arquivo de comandos não foi restaurado, a cena mostrada continua: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="223"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="224"/>
         <source>The lesson opened, but not all of it: see the Messages dock</source>
         <translation>A aula abriu, mas não inteira: veja o painel Mensagens</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="352"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="359"/>
         <source>%1: cannot save the lesson: %2</source>
         <translation>%1: não é possível salvar a aula: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_check.cpp" line="17"/>
+        <source>Check</source>
+        <translation>Verificar</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_check.cpp" line="18"/>
+        <source>Check your renderer</source>
+        <translation>Verifique o seu renderizador</translation>
     </message>
 </context>
 <context>
@@ -6389,7 +6612,7 @@
         <translation>Clique num triângulo para selecioná-lo; roda para o zoom, arraste para deslocar, clique duas vezes para ajustar.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="386"/>
+        <location filename="../views/projection_view.cpp" line="387"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
@@ -6397,37 +6620,37 @@
 <context>
     <name>rasterlab::ProjectionSideView</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="598"/>
+        <location filename="../views/projection_view.cpp" line="613"/>
         <source>view z (= w) →</source>
         <translation>z de vista (= w) →</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="598"/>
+        <location filename="../views/projection_view.cpp" line="613"/>
         <source>clip w →</source>
         <translation>w de recorte →</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="602"/>
+        <location filename="../views/projection_view.cpp" line="617"/>
         <source>y ↑</source>
         <translation>y ↑</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="613"/>
+        <location filename="../views/projection_view.cpp" line="628"/>
         <source>eye plane w = 0: the plain divide clips nothing</source>
         <translation>plano do olho w = 0: a divisão simples não recorta nada</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="614"/>
+        <location filename="../views/projection_view.cpp" line="629"/>
         <source>near plane w = %1</source>
         <translation>plano próximo w = %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="617"/>
+        <location filename="../views/projection_view.cpp" line="632"/>
         <source>the object lies behind the eye (w &lt; 0): N points away from it</source>
         <translation>o objeto está atrás do olho (w &lt; 0): N aponta para longe dele</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="621"/>
+        <location filename="../views/projection_view.cpp" line="636"/>
         <source>● made by clipping: %1</source>
         <translation>● criados pelo recorte: %1</translation>
     </message>
@@ -6435,157 +6658,157 @@
 <context>
     <name>rasterlab::ProjectionView</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="662"/>
+        <location filename="../views/projection_view.cpp" line="677"/>
         <source>NDC</source>
         <translation>NDC</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="663"/>
+        <location filename="../views/projection_view.cpp" line="678"/>
         <source>Show the vertices in normalised device coordinates, [-1, 1]</source>
         <translation>Mostra os vértices em coordenadas normalizadas de dispositivo, [-1, 1]</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="666"/>
+        <location filename="../views/projection_view.cpp" line="681"/>
         <source>Pixels</source>
         <translation>Pixels</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="668"/>
+        <location filename="../views/projection_view.cpp" line="683"/>
         <source>Show the vertices in pixels, snapped as scan conversion receives them</source>
         <translation>Mostra os vértices em pixels, ajustados à grade como a conversão por varredura os recebe</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="677"/>
+        <location filename="../views/projection_view.cpp" line="692"/>
         <source>Fit</source>
         <translation>Ajustar</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="678"/>
+        <location filename="../views/projection_view.cpp" line="693"/>
         <source>Show the whole window and its margin</source>
         <translation>Mostra a janela inteira e sua margem</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="802"/>
+        <location filename="../views/projection_view.cpp" line="817"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="807"/>
+        <location filename="../views/projection_view.cpp" line="822"/>
         <source>inside %1, clipped %2 (%3 on screen), culled %4, back faces %5; behind %6, clipped away %7</source>
         <translation>dentro %1, recortados %2 (%3 na tela), descartados %4, faces traseiras %5; atrás %6, eliminados no recorte %7</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="818"/>
+        <location filename="../views/projection_view.cpp" line="833"/>
         <source>beyond the guard band %1</source>
         <translation>além da banda de guarda %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="820"/>
+        <location filename="../views/projection_view.cpp" line="835"/>
         <source>not finite %1</source>
         <translation>não finitos %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="822"/>
+        <location filename="../views/projection_view.cpp" line="837"/>
         <source>%1 drawn whole (inside): %2&lt;br&gt;</source>
         <translation>%1 desenhados inteiros (dentro): %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="823"/>
+        <location filename="../views/projection_view.cpp" line="838"/>
         <source>%1 clipped: %2, drawn as %3 fan triangles&lt;br&gt;</source>
         <translation>%1 recortados: %2, desenhados como %3 triângulos em leque&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="827"/>
+        <location filename="../views/projection_view.cpp" line="842"/>
         <source>%1 culled (clockwise on screen): %2; hidden back faces: %3&lt;br&gt;</source>
         <translation>%1 descartados (sentido horário na tela): %2; faces traseiras ocultas: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="831"/>
+        <location filename="../views/projection_view.cpp" line="846"/>
         <source>Nothing on screen: behind the near plane %1; outside a clip plane %2</source>
         <translation>Nada na tela: atrás do plano próximo %1; fora de um plano de recorte %2</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="834"/>
+        <location filename="../views/projection_view.cpp" line="849"/>
         <source>; beyond the guard band %1</source>
         <translation>; além da banda de guarda %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="835"/>
+        <location filename="../views/projection_view.cpp" line="850"/>
         <source>; not finite %1</source>
         <translation>; não finitos %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="839"/>
+        <location filename="../views/projection_view.cpp" line="854"/>
         <source>%1 screen triangles go to scan conversion. The plain divide clips nothing (seed 000 as written; seed 001&apos;s HW2): %2 wholly behind the eye, drawn mirrored through the centre; %3 across the eye plane, drawn wrong.</source>
         <translation>%1 triângulos de tela vão para a conversão por varredura. A divisão simples não recorta nada (a seed 000 como escrita; o HW2 da seed 001): %2 inteiramente atrás do olho, desenhados espelhados pelo centro; %3 atravessando o plano do olho, desenhados errados.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="847"/>
+        <location filename="../views/projection_view.cpp" line="862"/>
         <source>%1 screen triangles go to scan conversion; the near plane is w = %2.</source>
         <translation>%1 triângulos de tela vão para a conversão por varredura; o plano próximo é w = %2.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="852"/>
+        <location filename="../views/projection_view.cpp" line="867"/>
         <source>%1 selected, %2 being drawn</source>
         <translation>%1 selecionado, %2 em desenho</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="874"/>
+        <location filename="../views/projection_view.cpp" line="889"/>
         <source>&lt;p&gt;&lt;b&gt;Projection.&lt;/b&gt; Every vertex goes to clip space, pClip = clipFromView · pView, and is divided by its w without any clipping, as seed 000 writes the formula and seed 001&apos;s HW2 does (&quot;frustum clipping happens here in OpenGL, but we won&apos;t add it&quot;): pNdc = pClip.xy / w. A vertex behind the eye (w &amp;lt; 0) lands mirrored through the centre; a triangle across the eye plane wraps through infinity. Clipping at the near plane (Shading &amp;gt; Projection) draws only what lies in front.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Projeção.&lt;/b&gt; Cada vértice vai para o espaço de recorte, pClip = clipFromView · pView, e é dividido pelo seu w sem recorte algum, como a seed 000 escreve a fórmula e o HW2 da seed 001 faz (&quot;o recorte pelo frustum acontece aqui no OpenGL, mas não vamos adicioná-lo&quot;): pNdc = pClip.xy / w. Um vértice atrás do olho (w &amp;lt; 0) cai espelhado pelo centro; um triângulo que atravessa o plano do olho dá a volta pelo infinito. O recorte no plano próximo (Sombreamento &amp;gt; Projeção) desenha só o que está à frente.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="881"/>
+        <location filename="../views/projection_view.cpp" line="896"/>
         <source>&lt;p&gt;&lt;b&gt;Projection.&lt;/b&gt; Every vertex goes to clip space, pClip = clipFromView · pView. A triangle crossing the near plane w = near is clipped (Sutherland-Hodgman) and its polygon cut into a fan, so nothing is divided by a w at or behind the camera. Then pNdc = pClip.xy / w, and the pixels are x = (x_ndc + 1) W/2, y = (1 − y_ndc) H/2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Projeção.&lt;/b&gt; Todo vértice vai para o espaço de recorte, pClip = clipFromView · pView. Um triângulo que cruza o plano próximo w = near é recortado (Sutherland-Hodgman) e seu polígono é dividido em leque, de modo que nada é dividido por um w na câmera ou atrás dela. Depois pNdc = pClip.xy / w, e os pixels são x = (x_ndc + 1) W/2, y = (1 − y_ndc) H/2.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="888"/>
+        <location filename="../views/projection_view.cpp" line="903"/>
         <source>&lt;p&gt;For the course camera pClip = ((d/hx) x, (d/hy) y, z, z): x_ndc = (d/hx) x/z, y_ndc = (d/hy) y/z, and the pixel coordinates are truncated.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Para a câmera do curso, pClip = ((d/hx) x, (d/hy) y, z, z): x_ndc = (d/hx) x/z, y_ndc = (d/hy) y/z, e as coordenadas de pixel são truncadas.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="896"/>
+        <location filename="../views/projection_view.cpp" line="911"/>
         <source>&lt;p&gt;Click a triangle to see the numbers of its first vertex.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Clique num triângulo para ver os números do seu primeiro vértice.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="916"/>
+        <location filename="../views/projection_view.cpp" line="931"/>
         <source>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (mesh triangle %2%3), its first vertex, vertex %4:</source>
         <translation>&lt;p&gt;&lt;b&gt;Triângulo %1&lt;/b&gt; (triângulo %2 da malha%3), seu primeiro vértice, o vértice %4:</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="919"/>
+        <location filename="../views/projection_view.cpp" line="934"/>
         <source>, clipped</source>
         <translation>, recortado</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="924"/>
+        <location filename="../views/projection_view.cpp" line="939"/>
         <source>made by clipping, on the edge from vertex %1 to vertex %2 at t = %3</source>
         <translation>criado pelo recorte, na aresta do vértice %1 ao vértice %2, em t = %3</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="949"/>
+        <location filename="../views/projection_view.cpp" line="964"/>
         <source>not snapped</source>
         <translation>sem arredondamento para a grade</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="952"/>
+        <location filename="../views/projection_view.cpp" line="967"/>
         <source>truncated</source>
         <translation>truncado</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="952"/>
+        <location filename="../views/projection_view.cpp" line="967"/>
         <source>rounded</source>
         <translation>arredondado</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="955"/>
+        <location filename="../views/projection_view.cpp" line="970"/>
         <source>truncated to 1/%1 pixel</source>
         <translation>truncado para 1/%1 de pixel</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="956"/>
+        <location filename="../views/projection_view.cpp" line="971"/>
         <source>rounded to 1/%1 pixel</source>
         <translation>arredondado para 1/%1 de pixel</translation>
     </message>
@@ -7000,17 +7223,27 @@
         <translation>(omitida)</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="162"/>
+        <location filename="../views/stage_strip.cpp" line="166"/>
         <source>%1 is skipped: %2</source>
         <translation>Etapa omitida (%1): %2</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="164"/>
+        <location filename="../views/stage_strip.cpp" line="168"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/stage_strip.cpp" line="218"/>
+        <location filename="../views/stage_strip.cpp" line="173"/>
+        <source>Your renderer&apos;s stage passed the check.</source>
+        <translation>A etapa do seu renderizador passou na verificação.</translation>
+    </message>
+    <message>
+        <location filename="../views/stage_strip.cpp" line="174"/>
+        <source>Your renderer&apos;s stage departs from the lecture&apos;s: see the Check dock.</source>
+        <translation>A etapa do seu renderizador se desvia da etapa da aula: veja o painel Verificar.</translation>
+    </message>
+    <message>
+        <location filename="../views/stage_strip.cpp" line="236"/>
         <source>while stepping, stages 5-7 run together, fragment by fragment</source>
         <translation>no passo a passo, as etapas 5-7 rodam juntas, fragmento a fragmento</translation>
     </message>
@@ -7568,57 +7801,57 @@
         <translation>Cores:</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="264"/>
+        <location filename="../views/zbuffer_view.cpp" line="279"/>
         <source>+&amp;infin;</source>
         <translation>+&amp;infin;</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="268"/>
+        <location filename="../views/zbuffer_view.cpp" line="283"/>
         <source>the view-space z of P&apos;</source>
         <translation>o z de P&apos; no espaço de vista</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="268"/>
+        <location filename="../views/zbuffer_view.cpp" line="283"/>
         <source>the NDC z</source>
         <translation>o z em NDC</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="276"/>
+        <location filename="../views/zbuffer_view.cpp" line="291"/>
         <source>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</source>
         <translation>&lt;b&gt;Z-buffer.&lt;/b&gt; Todo pixel começa em %1. A profundidade de cada fragmento, %2 (%3), é comparada com a armazenada; ela é escrita, com sua cor, só quando %4. Até agora: %5 fragmentos testados, %6 escritos, %7 rejeitados.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="331"/>
+        <location filename="../views/zbuffer_view.cpp" line="346"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="348"/>
+        <location filename="../views/zbuffer_view.cpp" line="363"/>
         <source>No pixel holds a triangle: the buffer is all clear value.</source>
         <translation>Nenhum pixel contém um triângulo: o buffer inteiro está no valor de limpeza.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="351"/>
+        <location filename="../views/zbuffer_view.cpp" line="366"/>
         <source>Drawn depths from %1 to %2; shown from %3 to %4.</source>
         <translation>Profundidades desenhadas de %1 a %2; exibidas de %3 a %4.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="357"/>
+        <location filename="../views/zbuffer_view.cpp" line="372"/>
         <source>%1 pixels nearer and %2 farther than the range are drawn at its ends.</source>
         <translation>%1 pixels mais próximos e %2 mais distantes que a faixa aparecem nas suas extremidades.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="371"/>
+        <location filename="../views/zbuffer_view.cpp" line="386"/>
         <source>+inf</source>
         <translation>+inf</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="372"/>
+        <location filename="../views/zbuffer_view.cpp" line="387"/>
         <source>x %1, y %2: no triangle; the depth stays at the clear value %3</source>
         <translation>x %1, y %2: nenhum triângulo; a profundidade fica no valor de limpeza %3</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="377"/>
+        <location filename="../views/zbuffer_view.cpp" line="392"/>
         <source>x %1, y %2: depth %3, triangle %4</source>
         <translation>x %1, y %2: profundidade %3, triângulo %4</translation>
     </message>

@@ -89,6 +89,8 @@ public:
     // The image shares the buffer it shows: it changes as the cursor moves. It is read-only:
     // drawing on it draws on a copy.
     QImage image() const;
+    // The whole frame, as rendered (whatever the cursor).
+    const QImage& frameImage() const { return m_frameImage; }
     const rl::DepthTest* buffers() const;
     // The same, held as long as the caller keeps it (a view that draws them later).
     std::shared_ptr<const rl::DepthTest> sharedBuffers() const;

@@ -163,6 +163,7 @@ ProjectionCanvas::ProjectionCanvas(QWidget* parent) : QWidget(parent) {
 
 void ProjectionCanvas::setFrame(std::shared_ptr<const rl::FrameTrace> frame,
                                 ProjectionSpace space) {
+    if (frame != m_frame) m_theirs.clear();
     const bool sizeChanged = !m_frame || !frame || m_frame->scene->width != frame->scene->width ||
                              m_frame->scene->height != frame->scene->height;
     m_frame = std::move(frame);
@@ -389,6 +390,20 @@ void ProjectionCanvas::paintEvent(QPaintEvent*) {
     painter.setRenderHint(QPainter::Antialiasing, true);
     if (m_selected) drawTriangle(painter, *m_selected, kSelectedColour, true);
     if (m_current) drawTriangle(painter, *m_current, kCurrentColour, false);
+    // The student's vertices: layout coordinates are pixels, whatever the space shown.
+    for (const auto& [ours, theirs] : m_theirs) {
+        const QPointF a = m_view.toWidget(ours), b = m_view.toWidget(theirs);
+        painter.setPen(QPen(QColor(255, 255, 255, 150), 1));
+        painter.drawLine(a, b);
+        painter.setPen(QPen(QColor(230, 30, 30), 2));
+        painter.drawLine(b + QPointF(-4, -4), b + QPointF(4, 4));
+        painter.drawLine(b + QPointF(-4, 4), b + QPointF(4, -4));
+    }
+}
+
+void ProjectionCanvas::setTheirVertices(std::vector<VertexPair> pairs) {
+    m_theirs = std::move(pairs);
+    update();
 }
 
 void ProjectionCanvas::resizeEvent(QResizeEvent*) {

@@ -17,6 +17,8 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "pipeline/render/frame_trace.h"
 #include "pipeline/stages/projection.h"
@@ -60,6 +62,12 @@ public:
     void setFrame(std::shared_ptr<const rl::FrameTrace> frame, ProjectionSpace space);
     void setHighlights(std::optional<std::uint32_t> current, std::optional<std::uint32_t> selected);
     void setLineWidth(double width);
+    // A student's vertices where they depart from ours (Check My Renderer...): each pair ours
+    // and theirs, in pixels; drawn as a red cross joined to ours until set again or the frame
+    // changes.
+    using VertexPair = std::pair<QPointF, QPointF>;
+    void setTheirVertices(std::vector<VertexPair> pairs);
+    const std::vector<VertexPair>& theirVertices() const { return m_theirs; }
 
     // Triangles drawn in each group: Hidden counts the culled triangles and the back faces,
     // Drawn the inside ones, Clipped the fan triangles of the clipped ones.
@@ -105,6 +113,7 @@ private:
                       bool fill) const;
 
     std::shared_ptr<const rl::FrameTrace> m_frame;
+    std::vector<VertexPair> m_theirs;
     ProjectionSpace m_space = ProjectionSpace::Ndc;
     std::array<QVector<QLineF>, GroupCount> m_lines;  // layout coordinates
     std::array<std::size_t, GroupCount> m_triangles{};

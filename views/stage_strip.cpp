@@ -1,7 +1,7 @@
 #include "stage_strip.h"
 
-#include <QEvent>
 #include <QButtonGroup>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QToolButton>
@@ -157,24 +157,41 @@ void StageStrip::refresh() {
         QString state;
         if (!reason.isEmpty()) state += QStringLiteral(" ") + tr("(skipped)");
         if (!mode.isEmpty()) state += QStringLiteral(" \u00b7 ") + mode;
+        // A tick or a cross: what the check of the student's renderer said of the stage.
+        if (m_marks[i] != CheckMark::None)
+            state += m_marks[i] == CheckMark::Passed ? QStringLiteral(" \u2713")
+                                                     : QStringLiteral(" \u2717");
         m_longTexts[i] = QStringLiteral("%1 %2").arg(i + 1).arg(stageName(stage)) + state;
         m_shortTexts[i] = QStringLiteral("%1 %2").arg(i + 1).arg(shortStageName(stage)) + state;
-        button->setToolTip(!reason.isEmpty() ? tr("%1 is skipped: %2").arg(stageName(stage), reason)
-                           : !mode.isEmpty()
-                               ? tr("%1: %2").arg(stageName(stage), modeDescription(*frame, stage))
-                               : stageName(stage));
+        QString tip = !reason.isEmpty() ? tr("%1 is skipped: %2").arg(stageName(stage), reason)
+                      : !mode.isEmpty()
+                          ? tr("%1: %2").arg(stageName(stage), modeDescription(*frame, stage))
+                          : stageName(stage);
+        if (m_marks[i] != CheckMark::None)
+            tip +=
+                QLatin1Char('\n') + (m_marks[i] == CheckMark::Passed
+                                         ? tr("Your renderer's stage passed the check.")
+                                         : tr("Your renderer's stage departs from the lecture's: "
+                                              "see the Check dock."));
+        button->setToolTip(tip);
         QFont f = font;
         f.setItalic(!reason.isEmpty());
         f.setBold(stage == m_inspection->stage());
         button->setFont(f);
         QPalette p = palette();
         if (!reason.isEmpty()) p.setColor(QPalette::ButtonText, QColor(140, 140, 140));
+        if (m_marks[i] == CheckMark::Failed) p.setColor(QPalette::ButtonText, QColor(200, 30, 30));
         button->setPalette(p);
         button->setChecked(stage == m_inspection->stage());
     }
     m_note->setFont(font);
     updateNote();
     fitTexts();
+}
+
+void StageStrip::setCheckMarks(const std::array<CheckMark, rl::kStageCount>& marks) {
+    m_marks = marks;
+    refresh();
 }
 
 int StageStrip::textsWidth(const std::array<QString, rl::kStageCount>& texts) const {
@@ -215,8 +232,8 @@ void StageStrip::updateNote() {
     const bool midFrame = m_inspection->canStep() && !m_inspection->atStart() &&
                           !m_inspection->atEnd() &&
                           m_inspection->granularity() != rl::StepGranularity::Stage;
-    m_note->setFullText(midFrame ? tr("while stepping, stages 5-7 run together, fragment by fragment")
-                                 : QString());
+    m_note->setFullText(
+        midFrame ? tr("while stepping, stages 5-7 run together, fragment by fragment") : QString());
 }
 
 }  // namespace rasterlab

@@ -33,6 +33,14 @@ public:
     static QString modeName(const rl::FrameTrace& frame, rl::StageId stage);
     static QString modeDescription(const rl::FrameTrace& frame, rl::StageId stage);
 
+    // What a check of a student's renderer (Check My Renderer...) said of each stage, shown
+    // beside its name until the next check or the next scene.
+    enum class CheckMark { None, Passed, Failed };
+    void setCheckMarks(const std::array<CheckMark, rl::kStageCount>& marks);
+    CheckMark checkMark(rl::StageId stage) const {
+        return m_marks[static_cast<std::size_t>(stage)];
+    }
+
     QToolButton* button(rl::StageId stage) const {
         return m_buttons[static_cast<std::size_t>(stage)];
     }
@@ -58,6 +66,7 @@ private:
     QPointer<Inspection> m_inspection;
     std::array<QToolButton*, rl::kStageCount> m_buttons{};
     std::array<QString, rl::kStageCount> m_longTexts, m_shortTexts;
+    std::array<CheckMark, rl::kStageCount> m_marks{};
     ElidedLabel* m_note = nullptr;
 };
 

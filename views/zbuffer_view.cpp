@@ -217,11 +217,26 @@ ZBufferView::ZBufferView(QWidget* parent) : QWidget(parent) {
 }
 
 void ZBufferView::setFrame(std::shared_ptr<const rl::FrameTrace> frame) {
+    if (frame != m_frame) m_view->setOverlay({});  // marks belong to the frame they were made on
     m_frame = std::move(frame);
     m_buffers.reset();
     m_tested = m_frame && m_frame->depth ? m_frame->depth->fragments : 0;
     m_written = m_frame && m_frame->depth ? m_frame->depth->passed : 0;
     refreshWhenShown();
+}
+
+void ZBufferView::markPixels(const std::vector<QPoint>& pixels) {
+    ImageOverlay overlay;
+    overlay.sampleOffset = m_frame ? m_frame->scene->rules.sampleOffset : 0.5;
+    if (!pixels.empty() && m_frame) {
+        QImage mask(m_frame->scene->width, m_frame->scene->height, QImage::Format_ARGB32);
+        mask.fill(Qt::transparent);
+        for (const QPoint& p : pixels)
+            if (mask.rect().contains(p)) mask.setPixelColor(p, QColor(255, 30, 30, 220));
+        overlay.coverage = mask;
+    }
+    m_marked = pixels.size();
+    m_view->setOverlay(std::move(overlay));
 }
 
 void ZBufferView::setBuffers(std::shared_ptr<const rl::DepthTest> buffers, std::size_t tested,

@@ -89,6 +89,10 @@ public:
     // What the pixel holds: its depth and triangle, or that no triangle covers it.
     QString valueText(QPoint pixel) const;
     FrameImageView* imageView() const { return m_view; }
+    // Pixels marked red over the buffer until the next frame: where a student's z-buffer keeps
+    // another triangle than ours (Check My Renderer...).
+    void markPixels(const std::vector<QPoint>& pixels);
+    std::size_t markedPixels() const { return m_marked; }
 
 protected:
     void showEvent(QShowEvent* event) override;
@@ -103,6 +107,7 @@ private:
     std::shared_ptr<const rl::FrameTrace> m_frame;
     std::shared_ptr<const rl::DepthTest> m_buffers;
     std::size_t m_tested = 0, m_written = 0;
+    std::size_t m_marked = 0;
     bool m_stale = false;
     QLabel* m_explanation = nullptr;
     DepthRange m_range;

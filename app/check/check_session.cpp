@@ -216,14 +216,22 @@ CheckReport runCheck(const std::string& command, const std::string& folder,
             continue;
         }
         for (Stage stage : options.stages) {
-            if (progress &&
-                !progress(done, total, scene.name + ": " + std::string(stageName(stage)))) {
+            const auto stopped = [&] {
+                return options.limits.cancel && options.limits.cancel->load();
+            };
+            if (stopped() ||
+                (progress &&
+                 !progress(done, total, scene.name + ": " + std::string(stageName(stage))))) {
                 report.cancelled = true;
                 break;
             }
             ++done;
             std::string problem;
             const auto lines = session.ask((*check)->request(stage), problem);
+            if (stopped()) {
+                report.cancelled = true;
+                break;
+            }
             StageResult result;
             result.stage = stage;
             if (!lines) {

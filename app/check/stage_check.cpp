@@ -554,13 +554,14 @@ StageResult StageCheck::judgeProjection(const std::vector<Record>& answer) const
     j.formula = [cam, w, h, view](std::size_t i) {
         const Row& p = view[i];
         const auto e = projectionExact(cam.d, cam.hx, cam.hy, w, h, p);
-        return "x = (int)((d/hx x/z + 1) width/2) = (int)((" + number(cam.d) + "/" +
-               number(cam.hx) + " " + number(p[0]) + "/" + number(p[2]) + " + 1) " +
+        return "x = (int)((d/hx * x/z + 1) * width/2) = (int)((" + number(cam.d) + "/" +
+               number(cam.hx) + " * " + number(p[0]) + "/" + number(p[2]) + " + 1) * " +
                std::to_string(w) + "/2) = (int)(" + number(e[0]) +
                ") = " + number(std::trunc(e[0])) +
-               "; y = (int)((1 - d/hy y/z) height/2) = (int)((1 - " + number(cam.d) + "/" +
-               number(cam.hy) + " " + number(p[1]) + "/" + number(p[2]) + ") " + std::to_string(h) +
-               "/2) = (int)(" + number(e[1]) + ") = " + number(std::trunc(e[1]));
+               "; y = (int)((1 - d/hy * y/z) * height/2) = (int)((1 - " + number(cam.d) + "/" +
+               number(cam.hy) + " * " + number(p[1]) + "/" + number(p[2]) + ") * " +
+               std::to_string(h) + "/2) = (int)(" + number(e[1]) +
+               ") = " + number(std::trunc(e[1]));
     };
     // Whole pixels: equal, or the other side of a whole number the exact value all but reaches.
     j.equal = [cam, w, h, view](std::size_t i, const Row& a, const Row& b, double& error) {
@@ -580,7 +581,15 @@ StageResult StageCheck::judgeProjection(const std::vector<Record>& answer) const
     j.mistakes = [cam, w, h, view] {
         return projectionMistakes(cam.d, cam.hx, cam.hy, w, h, view);
     };
-    return judgeRows(j, answer[0].rows);
+    StageResult result = judgeRows(j, answer[0].rows);
+    for (std::size_t i = 0; i < j.ours.size() && result.departures.size() < kMostDepartures; ++i) {
+        double error = 0.0;
+        const Row& theirs = answer[0].rows[i];
+        if (!j.equal(i, theirs, j.ours[i], error))
+            result.departures.push_back(
+                {Departure::Kind::Vertex, {j.ours[i][0], j.ours[i][1]}, {theirs[0], theirs[1]}});
+    }
+    return result;
 }
 
 StageResult StageCheck::judgeLighting(const std::vector<Record>& answer) const {
@@ -698,6 +707,12 @@ StageResult StageCheck::judgeScan(const std::vector<Record>& answer) const {
     result.differing = differ.size();
     if (differ.empty()) return result;
     result.verdict = Verdict::Failed;
+    for (const Pixel& p : differ) {
+        if (result.departures.size() >= kMostDepartures) break;
+        const rl::dvec2 at(std::get<2>(p), std::get<1>(p));
+        result.departures.push_back(
+            {ours.count(p) ? Departure::Kind::OnlyOurs : Departure::Kind::OnlyTheirs, at, at});
+    }
     const auto [t, y, x] = differ.front();
     const Row& r = triangles[t];
     const double area = (r[2] - r[0]) * (r[5] - r[1]) - (r[3] - r[1]) * (r[4] - r[0]);
@@ -753,6 +768,13 @@ StageResult StageCheck::judgeZBuffer(const std::vector<Record>& answer) const {
         if (a != theirs.end() && b != ours.end() && sameWinner(a->second, b->second, error)) {
             result.largestError = std::max(result.largestError, error);
             continue;
+        }
+        if (result.departures.size() < kMostDepartures) {
+            const rl::dvec2 at(k.second, k.first);
+            const auto kind = a == theirs.end() ? Departure::Kind::OnlyOurs
+                              : b == ours.end() ? Departure::Kind::OnlyTheirs
+                                                : Departure::Kind::Different;
+            result.departures.push_back({kind, at, at});
         }
         if (result.differing++ > 0) continue;
         std::string order;
@@ -825,7 +847,11 @@ StageResult StageCheck::judgeFrame(const std::vector<Record>& answer) const {
             int error = 0;
             for (int k = 0; k < 3; ++k) error = std::max(error, std::abs(int(a[k]) - int(b[k])));
             result.largestError = std::max(result.largestError, double(error));
-            if (error <= 1 || result.differing++ > 0) continue;
+            if (error <= 1) continue;
+            if (result.departures.size() < kMostDepartures)
+                result.departures.push_back(
+                    {Departure::Kind::Different, rl::dvec2(x, y), rl::dvec2(x, y)});
+            if (result.differing++ > 0) continue;
             const auto rgb = [](const std::uint8_t* p) {
                 return std::to_string(p[0]) + " " + std::to_string(p[1]) + " " +
                        std::to_string(p[2]);

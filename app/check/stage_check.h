@@ -30,6 +30,16 @@ struct Divergence {
     std::string formula;  // the lecture's formula with this element's numbers
 };
 
+// Where a stage departs on the screen, for the window to draw over our image: a vertex at
+// both its positions, or a pixel covered or won by one side only, or differently.
+struct Departure {
+    enum class Kind { Vertex, OnlyOurs, OnlyTheirs, Different };
+    Kind kind = Kind::Different;
+    rl::dvec2 ours = rl::dvec2(0.0);    // pixels
+    rl::dvec2 theirs = rl::dvec2(0.0);  // pixels; a pixel's own position but for a vertex
+};
+inline constexpr std::size_t kMostDepartures = 100000;
+
 struct StageResult {
     Stage stage = Stage::Basis;
     Verdict verdict = Verdict::Passed;
@@ -40,6 +50,8 @@ struct StageResult {
     std::optional<Divergence> first;
     std::string likelyCause;  // empty when no known mistake gives their answer
     std::string problem;      // Broken: what went wrong (a bad answer, a timeout ...)
+    // Projection, scan, z-buffer and frame: where they depart (the first kMostDepartures).
+    std::vector<Departure> departures;
 };
 
 // The lecture's stages run over one course scene, and what the protocol asks of them.

@@ -133,10 +133,11 @@ std::vector<Alternative> projectionMistakes(double d, double hx, double hy, int 
                                             const std::vector<Row>& vertices) {
     std::vector<Alternative> out(5);
     out[0].cause = "rounded to the nearest pixel instead of truncated by (int)";
-    out[1].cause = "y not flipped: (int)((d/hy y/z + 1) height/2), y growing upward";
+    out[1].cause = "y not flipped: (int)((d/hy * y/z + 1) * height/2), y growing upward";
     out[2].cause = "hx and hy swapped";
     out[3].cause = "floor instead of (int): pixels left of or above the screen one lower";
-    out[4].cause = "without the + 1: (int)(d/hx x/z width/2), the screen's centre at its corner";
+    out[4].cause =
+        "without the + 1: (int)(d/hx * x/z * width/2), the screen's centre at its corner";
     for (const Row& p : vertices) {
         const auto e = projectionExact(d, hx, hy, width, height, p);
         const double yUp = (d / hy * (p[1] / p[2]) + 1.0) * height / 2.0;

@@ -170,12 +170,15 @@ void StudentProgram::startProcess(const std::string& command, const std::string&
     m_protections.push_back("wall clock: " + seconds(m_limits.requestSeconds) + " per request, " +
                             seconds(m_limits.totalSeconds) + " in all");
     m_protections.push_back("CPU time: " + seconds(m_limits.cpuSeconds));
-    m_protections.push_back("memory: " + std::to_string(m_limits.memoryBytes >> 20) +
-                            " MiB of address space");
+    (m_limits.memoryBytes > 0 ? m_protections : m_missing)
+        .push_back(m_limits.memoryBytes > 0
+                       ? "memory: " + std::to_string(m_limits.memoryBytes >> 20) +
+                             " MiB of address space"
+                       : std::string("memory: not limited"));
     m_protections.push_back("files written: " + std::to_string(m_limits.fileBytes >> 20) +
                             " MiB each; answers: " + std::to_string(m_limits.answerBytes >> 20) +
                             " MiB, lines " + std::to_string(m_limits.lineBytes >> 10) + " KiB");
-    m_protections.push_back("temporary folder for TMPDIR and HOME, removed afterwards");
+    m_protections.push_back("temporary folder: TMPDIR and HOME, removed afterwards");
     const bool root = geteuid() == 0;
     const int nproc = processesOfThisUser() + m_limits.processes;
     (root ? m_missing : m_protections)
@@ -210,7 +213,8 @@ void StudentProgram::startProcess(const std::string& command, const std::string&
         if (err >= 0) dup2(err, 2);
         const auto cpu = rlim_t(m_limits.cpuSeconds);
         setLimit(RLIMIT_CPU, cpu, cpu + 2);
-        setLimit(RLIMIT_AS, rlim_t(m_limits.memoryBytes), rlim_t(m_limits.memoryBytes));
+        if (m_limits.memoryBytes > 0)
+            setLimit(RLIMIT_AS, rlim_t(m_limits.memoryBytes), rlim_t(m_limits.memoryBytes));
         setLimit(RLIMIT_FSIZE, rlim_t(m_limits.fileBytes), rlim_t(m_limits.fileBytes));
         setLimit(RLIMIT_NPROC, rlim_t(nproc), rlim_t(nproc));
         setLimit(RLIMIT_CORE, 0, 0);
@@ -255,13 +259,18 @@ void StudentProgram::beginRequest() {
                                     std::chrono::duration<double>(m_limits.requestSeconds)));
 }
 
-bool StudentProgram::fillBuffer(Clock::time_point deadline) {
+int StudentProgram::pollMilliseconds(Clock::time_point deadline) const {
     const auto left =
         std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+    return int(std::clamp<long long>(left.count(), 0, 100));
+}
+
+bool StudentProgram::fillBuffer(Clock::time_point deadline) {
     struct pollfd fd {
         m_stdout, POLLIN, 0
     };
-    const int ready = poll(&fd, 1, int(std::max<long long>(0, left.count())));
+    const int ready = poll(&fd, 1, pollMilliseconds(deadline));
+    if (cancelled()) return fail("cancelled");
     if (ready < 0 && errno != EINTR) return fail(std::string("poll: ") + std::strerror(errno));
     if (ready <= 0) return true;  // the caller looks at the clock
     char chunk[65536];
@@ -358,15 +367,14 @@ bool StudentProgram::send(const std::string& text) {
     std::size_t sent = 0;
     while (sent < text.size()) {
         const Clock::time_point deadline = std::min(m_requestDeadline, m_totalDeadline);
-        const auto left =
-            std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
-        if (left.count() <= 0)
+        if (Clock::now() >= deadline)
             return fail("the program did not read its request within " +
                         seconds(m_limits.requestSeconds));
         // Read what it writes meanwhile, so that neither side waits on a full pipe.
         struct pollfd fds[2] = {{m_stdin, POLLOUT, 0}, {m_stdout, POLLIN, 0}};
-        if (poll(fds, 2, int(left.count())) < 0 && errno != EINTR)
+        if (poll(fds, 2, pollMilliseconds(deadline)) < 0 && errno != EINTR)
             return fail(std::string("poll: ") + std::strerror(errno));
+        if (cancelled()) return fail("cancelled");
         if (fds[1].revents & (POLLIN | POLLHUP)) {
             char chunk[65536];
             const ssize_t n = read(m_stdout, chunk, sizeof chunk);

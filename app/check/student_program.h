@@ -7,6 +7,7 @@
 // never end a line, exit, crash) becomes a message that says what was read last.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <memory>
 #include <optional>
@@ -19,13 +20,16 @@ struct Limits {
     double requestSeconds = 20.0;  // wall clock, for one request's answer
     double totalSeconds = 120.0;   // wall clock, for the whole run
     int cpuSeconds = 100;
-    long long memoryBytes = 2LL << 30;   // address space
+    long long memoryBytes = 2LL << 30;   // address space; 0: not limited
     long long fileBytes = 64LL << 20;    // any file it writes, its standard error included
     long long answerBytes = 64LL << 20;  // the bytes of one answer
     long long answerLines = 4LL << 20;   // its lines
     int lineBytes = 1 << 20;             // the longest line of an answer
     int processes = 64;
     bool sandbox = true;  // bubblewrap, where installed
+    // Set from another thread (the window's Cancel): the program is stopped within a tenth of
+    // a second, and the read or write that waited says "cancelled".
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 class StudentProgram {
@@ -61,6 +65,9 @@ public:
 private:
     bool fail(const std::string& message);
     bool fillBuffer(std::chrono::steady_clock::time_point deadline);
+    // Milliseconds to wait in one poll: until the deadline, at most a tenth of a second.
+    int pollMilliseconds(std::chrono::steady_clock::time_point deadline) const;
+    bool cancelled() const { return m_limits.cancel && m_limits.cancel->load(); }
     void startProcess(const std::string& command, const std::string& folder);
     void reap(bool wait);
 

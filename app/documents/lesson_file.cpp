@@ -450,6 +450,16 @@ void readWindow(Reader& r, const QJsonObject& w, Lesson& lesson) {
         lesson.presentation = r.flag(w.value(lit("presentation")), at + QStringList{lit("presentation")});
 }
 
+// Check My Renderer's command and folder.
+void readCheck(Reader& r, const QJsonObject& c, Lesson& lesson) {
+    const QStringList at{lit("check")};
+    r.warnUnknown(c, at, {lit("command"), lit("folder")});
+    if (c.contains(lit("command")))
+        lesson.checkCommand = r.text(c.value(lit("command")), at + QStringList{lit("command")}).value_or(QString());
+    if (c.contains(lit("folder")))
+        lesson.checkFolder = r.text(c.value(lit("folder")), at + QStringList{lit("folder")}).value_or(QString());
+}
+
 void readRendering(Reader& r, const QJsonObject& top, Lesson& lesson) {
     if (top.contains(lit("shading"))) {
         const QString name = top.value(lit("shading")).toString();
@@ -525,7 +535,7 @@ rl::Result<Lesson> parseLesson(const QByteArray& text, const QString& fileName,
     r.warnUnknown(top, {},
                   {lit("rasterlab_lesson"), lit("title"), lit("notes"), lit("scene"), lit("edits"),
                    lit("shading"), lit("rules"), lit("projection"), lit("near"), lit("image_size"),
-                   lit("animation"), lit("stepping"), lit("window")});
+                   lit("animation"), lit("stepping"), lit("window"), lit("check")});
     Lesson lesson;
     if (top.contains(lit("title"))) lesson.title = r.text(top.value(lit("title")), {lit("title")}).value_or(QString());
     if (top.contains(lit("notes"))) lesson.notes = r.text(top.value(lit("notes")), {lit("notes")}).value_or(QString());
@@ -534,6 +544,7 @@ rl::Result<Lesson> parseLesson(const QByteArray& text, const QString& fileName,
     readRendering(r, top, lesson);
     readStepping(r, top.value(lit("stepping")).toObject(), lesson);
     readWindow(r, top.value(lit("window")).toObject(), lesson);
+    readCheck(r, top.value(lit("check")).toObject(), lesson);
     if (r.error()) return *r.error();
     diagnostics.append(warnings);
     return lesson;
@@ -680,7 +691,7 @@ int keyRank(const QString& key) {
         lit("example"),          lit("camera"),   lit("lighting"),   lit("object"),
         lit("edits"),            lit("shading"),  lit("rules"),      lit("projection"),
         lit("near"),             lit("image_size"), lit("animation"), lit("stepping"),
-        lit("window")};
+        lit("window"),           lit("check")};
     const qsizetype i = order.indexOf(key);
     return i < 0 ? int(order.size()) : int(i);
 }
@@ -749,6 +760,9 @@ QByteArray lessonJson(const Lesson& lesson) {
     if (lesson.animation) top[lit("animation")] = animationJson(*lesson.animation);
     if (const QJsonObject s = steppingJson(lesson); !s.isEmpty()) top[lit("stepping")] = s;
     top[lit("window")] = windowJson(lesson);
+    if (!lesson.checkCommand.isEmpty() || !lesson.checkFolder.isEmpty())
+        top[lit("check")] = QJsonObject{{lit("command"), lesson.checkCommand},
+                                        {lit("folder"), lesson.checkFolder}};
     QByteArray out;
     writeJson(top, 0, out);
     return out + '\n';

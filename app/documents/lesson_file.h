@@ -72,6 +72,9 @@ struct Lesson {
     QByteArray dockState;           // QMainWindow::saveState, when saved by the program
     std::optional<bool> presentation;
 
+    // ---- Check My Renderer: the student's program and its folder ----------------------
+    QString checkCommand, checkFolder;
+
     bool operator==(const Lesson&) const = default;
 };
 

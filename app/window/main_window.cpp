@@ -363,6 +363,7 @@ void MainWindow::createDocks() {
         stageDock(tr("Compare"), "compareDock", m_compare, tr("Compare with their image"));
     tabifyDockWidget(cameraDock, m_compareDock);
     m_compareDock->hide();
+    setUpCheckDock(editDock);
     cameraDock->raise();
     scanlineDock->raise();
     resizeDocks({messagesDock}, {110}, Qt::Vertical);

@@ -45,6 +45,7 @@ class AnimationPanel;
 class BreakpointsView;
 class CameraBasisView;
 class ComparePanel;
+class CheckPanel;
 class EditPanel;
 class NormalsView;
 class PixelInspector;
@@ -115,6 +116,8 @@ public:
     // Compare dock (shown and raised); false with the error shown (as the command line words
     // it) and the dock as it was when the image cannot be compared.
     bool compareWithImage(const QString& path);
+    // File > Check My Renderer...: the Check dock shown and raised, its command field focused.
+    void showCheckDock();
 
     const SceneDocument& document() const { return m_document; }
     std::shared_ptr<const rl::FrameTrace> currentFrame() const { return m_frame.trace; }
@@ -133,6 +136,7 @@ public:
     bool isReadyToStep() const;
     AccuracyPanel* accuracyPanel() const { return m_accuracy; }
     ZBufferView* zbufferView() const { return m_zbuffer; }
+    ProjectionView* projectionView() const { return m_projection; }
     PainterView* painterView() const { return m_painter; }
     StageStrip* stageStrip() const { return m_stageStrip; }
     SteppingBar* steppingBar() const { return m_steppingBar; }
@@ -142,6 +146,7 @@ public:
     EditPanel* editPanel() const { return m_edit; }
     AnimationPanel* animationPanel() const { return m_animation; }
     ComparePanel* comparePanel() const { return m_compare; }
+    CheckPanel* checkPanel() const { return m_check; }
     QStringList recentFiles() const;
     QStringList watchedFiles() const { return m_watcher.files(); }
     // The files the scene shown was read from (built-in parts left out).
@@ -306,6 +311,9 @@ private:
     void exportSequenceDialog();
     void exportAnimationDialog();
     void compareDialog();
+    // The Check dock, hidden until File > Check My Renderer..., beside `beside`.
+    void setUpCheckDock(QDockWidget* beside);
+    void showCheckMarks();
     void onAnimationPlaying(bool playing);
     void about();
     void showShortcuts();
@@ -343,6 +351,9 @@ private:
     ComparePanel* m_compare = nullptr;
     QDockWidget* m_compareDock = nullptr;
     bool m_compareShown = false;  // the Compare dock was shown once (floated the first time)
+    CheckPanel* m_check = nullptr;
+    QDockWidget* m_checkDock = nullptr;
+    bool m_checkShown = false;  // the Check dock was shown once (floated the first time)
     QListWidget* m_messages = nullptr;
     QTextBrowser* m_summary = nullptr;
     QLabel* m_pixelLabel = nullptr;

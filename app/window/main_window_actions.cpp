@@ -91,6 +91,10 @@ void MainWindow::createFileMenu() {
     compare->setToolTip(
         tr("A PNG of your own renderer against this scene's render, with the "
            "likely mistakes"));
+    QAction* check = file->addAction(tr("Check My &Renderer..."), this, &MainWindow::showCheckDock);
+    check->setObjectName(QStringLiteral("checkRendererAction"));
+    check->setToolTip(tr("Your own renderer's stages, each held to the lecture's over the "
+                         "stage protocol"));
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);

@@ -16,6 +16,7 @@
 #include "app/documents/examples.h"
 #include "app/window/animation_panel.h"
 #include "app/window/edit_panel.h"
+#include "app/window/check_panel.h"
 #include "app/window/main_window.h"
 #include "views/breakpoints_view.h"
 #include "views/frame_image_view.h"
@@ -231,6 +232,10 @@ void MainWindow::restoreView(const Lesson& lesson) {
     const bool example = isExample(lesson.example);
     m_lessonTitle = example && lesson.title.isEmpty() ? exampleTitle(lesson.example) : lesson.title;
     m_lessonNotes = example && lesson.notes.isEmpty() ? exampleNotes(lesson.example) : lesson.notes;
+    if (!lesson.checkCommand.isEmpty() || !lesson.checkFolder.isEmpty()) {
+        m_check->setCommand(lesson.checkCommand);
+        m_check->setFolder(lesson.checkFolder);
+    }
     // The lesson's layout is the one outside presentation mode. While presenting, it takes
     // the place of the layout presentation mode gives back, and its side docks are put away
     // again (else leaving would put the window's earlier layout back over the lesson's).
@@ -331,6 +336,8 @@ Lesson MainWindow::currentLesson(const QDir& base) const {
     lesson.docksRaised.sort();
     lesson.dockState = presenting ? m_layoutBeforePresentation : saveState(kLayoutVersion);
     lesson.presentation = presenting;
+    lesson.checkCommand = m_check->command();
+    lesson.checkFolder = m_check->folder();
     return lesson;
 }
 

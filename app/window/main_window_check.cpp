@@ -1,0 +1,81 @@
+// MainWindow's Check dock (File > Check My Renderer...): a student's program checked stage by
+// stage on a worker (check_panel.h), and the stage strip's marks.
+#include <QDockWidget>
+
+#include <algorithm>
+
+#include "app/window/check_panel.h"
+#include "app/window/main_window.h"
+#include "views/projection_view.h"
+#include "views/stage_strip.h"
+#include "views/zbuffer_view.h"
+
+namespace rasterlab {
+
+void MainWindow::setUpCheckDock(QDockWidget* beside) {
+    m_check = new CheckPanel(m_inspection);
+    m_checkDock = addDock(tr("Check"), QStringLiteral("checkDock"), m_check, Qt::LeftDockWidgetArea,
+                          true, tr("Check your renderer"));
+    tabifyDockWidget(beside, m_checkDock);
+    m_checkDock->hide();
+    connect(m_check, &CheckPanel::finished, this, &MainWindow::showCheckMarks);
+    // The marks belong to the scene checked: a new scene drops them.
+    connect(m_inspection, &Inspection::frameChanged, this, [this] {
+        const auto* report = m_check->report();
+        const auto& frame = m_inspection->frame();
+        if (!report || report->scenes.empty() || !frame || !frame->scene) return;
+        if (frame->scene->name != report->scenes.front().name ||
+            frame->scene->width != report->scenes.front().width ||
+            frame->scene->height != report->scenes.front().height)
+            m_stageStrip->setCheckMarks({});
+    });
+}
+
+void MainWindow::showCheckMarks() {
+    std::array<StageStrip::CheckMark, rl::kStageCount> marks{};
+    for (rl::StageId stage : rl::kAllStages)
+        if (const auto verdict = m_check->verdict(stage))
+            marks[std::size_t(stage)] = *verdict == check::Verdict::Passed
+                                            ? StageStrip::CheckMark::Passed
+                                            : StageStrip::CheckMark::Failed;
+    m_stageStrip->setCheckMarks(marks);
+    // The projection view draws their vertices over ours.
+    std::vector<ProjectionCanvas::VertexPair> pairs;
+    if (const check::CheckReport* report = m_check->report())
+        for (const check::SceneReport& scene : report->scenes)
+            for (const check::StageResult& r : scene.stages)
+                if (r.stage == check::Stage::Projection)
+                    for (const check::Departure& d : r.departures)
+                        pairs.emplace_back(QPointF(d.ours.x, d.ours.y),
+                                           QPointF(d.theirs.x, d.theirs.y));
+    m_projection->canvas()->setTheirVertices(std::move(pairs));
+    // The z-buffer view marks the pixels whose winner differs.
+    std::vector<QPoint> pixels;
+    if (const check::CheckReport* report = m_check->report())
+        for (const check::SceneReport& scene : report->scenes)
+            for (const check::StageResult& r : scene.stages)
+                if (r.stage == check::Stage::ZBuffer)
+                    for (const check::Departure& d : r.departures)
+                        pixels.emplace_back(int(d.ours.x), int(d.ours.y));
+    m_zbuffer->markPixels(pixels);
+    if (!m_checkDock->isHidden()) m_checkDock->raise();
+}
+
+void MainWindow::showCheckDock() {
+    // The first time, a window of its own over the left of this one, tall enough for the list,
+    // the words and the picture; it can be docked like the others.
+    if (!m_checkShown && m_checkDock->isHidden()) {
+        m_checkShown = true;
+        m_checkDock->setFloating(true);
+        const QRect area = geometry();
+        const QSize size(std::min(620, area.width() / 2), std::min(640, area.height() * 9 / 10));
+        m_checkDock->setGeometry(
+            QRect(area.topLeft() + QPoint(8, (area.height() - size.height()) / 2), size));
+    }
+    m_checkDock->show();
+    m_checkDock->raise();
+    if (m_check->command().isEmpty())
+        m_check->findChild<QWidget*>(QStringLiteral("checkCommand"))->setFocus();
+}
+
+}  // namespace rasterlab

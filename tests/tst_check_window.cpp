@@ -1,0 +1,213 @@
+// File > Check My Renderer... in the window (offscreen), on the shipped goblet lesson: the
+// student's Python renderer with y not flipped fails the projection alone; the Check dock says
+// where and why, draws their vertices beside ours, the stage strip marks each stage, and Stop
+// at the First Departure selects the vertex. The window stays responsive while a program
+// hangs, and Cancel ends the check; the command and folder are kept in lesson files.
+#include <QtTest>
+
+#include <QDockWidget>
+#include <QElapsedTimer>
+#include <QLineEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScreen>
+#include <QTemporaryDir>
+#include <QToolButton>
+#include <QTreeWidget>
+
+#include "app/window/check_panel.h"
+#include "app/window/main_window.h"
+#include "app/window/translators.h"
+#include "tests/test_support.h"
+#include "views/frame_image_view.h"
+#include "views/projection_view.h"
+#include "views/stage_strip.h"
+#include "views/zbuffer_view.h"
+
+using rasterlab::CheckPanel;
+using rasterlab::MainWindow;
+using rasterlab::StageStrip;
+namespace check = rasterlab::check;
+
+namespace {
+
+constexpr int kTimeoutMs = 120000;
+
+bool ready(const MainWindow& window) {
+    return window.isReadyToStep() && !window.lessonViewPending();
+}
+
+QString pythonFolder() {
+    return testing::sourceDir() + "/examples/student/python";
+}
+
+}  // namespace
+
+class TestCheckWindow : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() {
+        m_window.resize(1280, 720);
+        m_window.show();
+        QVERIFY(m_window.openExample(QStringLiteral("goblet")));
+        QVERIFY(QTest::qWaitFor([&] { return ready(m_window); }, kTimeoutMs));
+    }
+
+    void checkShowsWhereTheStagesDepart() {
+        m_window.showCheckDock();
+        CheckPanel* panel = m_window.checkPanel();
+        QVERIFY(panel->parentWidget()->isVisible() || panel->isVisibleTo(&m_window));
+        panel->setCommand(QStringLiteral(RASTERLAB_PYTHON " stages.py --flip-y"));
+        panel->setFolder(pythonFolder());
+        QSignalSpy finished(panel, &CheckPanel::finished);
+        QTest::mouseClick(panel->checkButton(), Qt::LeftButton);
+        QVERIFY(!panel->checkButton()->isEnabled());
+        QVERIFY(finished.wait(kTimeoutMs));
+        QVERIFY(panel->report());
+        QCOMPARE(panel->stageList()->topLevelItemCount(), 8);
+        // The first stage that departs is the one selected.
+        QCOMPARE(int(*panel->selectedStage()), int(check::Stage::Projection));
+        const check::StageResult* r = panel->selectedResult();
+        QVERIFY(r);
+        QCOMPARE(int(r->verdict), int(check::Verdict::Failed));
+        QVERIFY2(panel->detailsText().contains("Likely cause: y not flipped: (int)((d/hy * y/z + "
+                                               "1) * height/2), y growing upward"),
+                 qPrintable(panel->detailsText()));
+        QVERIFY(panel->detailsText().contains("x = (int)((d/hx * x/z + 1) * width/2)"));
+        // Their vertices beside ours, one departure a vertex.
+        QVERIFY(!panel->canvas()->departures().empty());
+        QCOMPARE(int(panel->canvas()->departures().front().kind),
+                 int(check::Departure::Kind::Vertex));
+        QCOMPARE(panel->canvas()->departures().size(), r->differing);
+        // The projection view draws them too, each pair ours and theirs.
+        const auto& pairs = m_window.projectionView()->canvas()->theirVertices();
+        QCOMPARE(pairs.size(), r->differing);
+        QCOMPARE(pairs.front().first,
+                 QPointF(r->departures.front().ours.x, r->departures.front().ours.y));
+        QCOMPARE(pairs.front().second,
+                 QPointF(r->departures.front().theirs.x, r->departures.front().theirs.y));
+        // The strip: the projection departs; the stages before it pass.
+        StageStrip* strip = m_window.stageStrip();
+        QCOMPARE(strip->checkMark(rl::StageId::Projection), StageStrip::CheckMark::Failed);
+        QCOMPARE(strip->checkMark(rl::StageId::CameraBasis), StageStrip::CheckMark::Passed);
+        QCOMPARE(strip->checkMark(rl::StageId::Normals), StageStrip::CheckMark::Passed);
+        // Their lighting passes: the frame, which fails, is no stage's.
+        QCOMPARE(strip->checkMark(rl::StageId::Shading), StageStrip::CheckMark::Passed);
+        QVERIFY(strip->button(rl::StageId::Projection)->text().endsWith(QStringLiteral("\u2717")));
+        // Stop at the First Departure: the projection's stage, its first vertex selected.
+        QVERIFY(panel->stopButton()->isEnabled());
+        QTest::mouseClick(panel->stopButton(), Qt::LeftButton);
+        QCOMPARE(m_window.inspection()->stage(), rl::StageId::Projection);
+        QCOMPARE(m_window.inspection()->selectedVertices().size(), std::size_t(1));
+        QCOMPARE(
+            QString::fromStdString(r->first->element),
+            QStringLiteral("vertex %1").arg(m_window.inspection()->selectedVertices()[0].vertex));
+    }
+
+    // A departure at a pixel: the frame is stepped to the first fragment written there.
+    void stopsAtThePixel() {
+        CheckPanel* panel = m_window.checkPanel();
+        panel->setCommand(QStringLiteral(RASTERLAB_PYTHON " stages.py --span-end-exclusive"));
+        QSignalSpy finished(panel, &CheckPanel::finished);
+        QVERIFY(panel->start().isEmpty());
+        QVERIFY(finished.wait(kTimeoutMs));
+        QCOMPARE(int(*panel->selectedStage()), int(check::Stage::Scan));
+        const check::StageResult* r = panel->selectedResult();
+        QVERIFY(r && !r->departures.empty());
+        QVERIFY(panel->stopAtFirstDeparture());
+        const QPoint pixel(int(r->departures.front().ours.x), int(r->departures.front().ours.y));
+        QCOMPARE(m_window.inspection()->pickedPixel(), pixel);
+        QVERIFY(!m_window.inspection()->atEnd());
+        QVERIFY(m_window.inspection()->breakpoints().empty());  // the user's, put back
+    }
+
+    // The z-buffer view marks the pixels whose winner differs.
+    void zbufferViewMarksThePixels() {
+        CheckPanel* panel = m_window.checkPanel();
+        panel->setCommand(QStringLiteral(RASTERLAB_PYTHON " stages.py --depth-reversed"));
+        QSignalSpy finished(panel, &CheckPanel::finished);
+        QVERIFY(panel->start().isEmpty());
+        QVERIFY(finished.wait(kTimeoutMs));
+        QCOMPARE(int(*panel->selectedStage()), int(check::Stage::ZBuffer));
+        const check::StageResult* r = panel->selectedResult();
+        QVERIFY(r && r->differing > 100);
+        QCOMPARE(m_window.zbufferView()->markedPixels(), r->departures.size());
+        const QImage& mask = m_window.zbufferView()->imageView()->overlay().coverage;
+        const check::Departure& d = r->departures.front();
+        QCOMPARE(mask.pixelColor(int(d.ours.x), int(d.ours.y)).red(), 255);
+        QCOMPARE(mask.pixelColor(0, 0).alpha(), 0);
+    }
+
+    // A program that hangs never blocks the window, and Cancel ends the check at once.
+    void cancelEndsAHangingProgram() {
+        CheckPanel* panel = m_window.checkPanel();
+        panel->setCommand(QStringLiteral("sleep 100"));
+        QSignalSpy finished(panel, &CheckPanel::finished);
+        QVERIFY(panel->start().isEmpty());
+        QVERIFY(panel->cancelButton()->isEnabled());
+        QElapsedTimer clock;
+        clock.start();
+        QTest::qWait(300);  // the event loop runs: the window answers
+        QTest::mouseClick(panel->cancelButton(), Qt::LeftButton);
+        QVERIFY(finished.wait(5000));
+        QVERIFY(clock.elapsed() < 5000);
+        QVERIFY(panel->report()->cancelled);
+        QCOMPARE(panel->progressBar()->format(), QStringLiteral("cancelled"));
+    }
+
+    void keptInLessonFiles() {
+        CheckPanel* panel = m_window.checkPanel();
+        panel->setCommand(QStringLiteral("python3 stages.py"));
+        panel->setFolder(pythonFolder());
+        QTemporaryDir dir;
+        const QString path = dir.filePath("check.rasterlab");
+        QVERIFY(m_window.saveLesson(path));
+        const QByteArray text = testing::readFile(path);
+        QVERIFY2(text.contains("\"check\""), text.constData());
+        panel->setCommand(QString());
+        panel->setFolder(QString());
+        QVERIFY(m_window.openLesson(path));
+        QVERIFY(QTest::qWaitFor([&] { return ready(m_window); }, kTimeoutMs));
+        QCOMPARE(panel->command(), QStringLiteral("python3 stages.py"));
+        QCOMPARE(panel->folder(), pythonFolder());
+    }
+
+    // The guides' pictures (docs/images/check-en.png, check-pt_BR.png): made when
+    // RASTERLAB_SCREENSHOTS names a folder, under a real display (xvfb-run at 1280x720), since
+    // the Check dock is a window of its own the first time.
+    void screenshots() {
+        const QString dir = qEnvironmentVariable("RASTERLAB_SCREENSHOTS");
+        if (dir.isEmpty()) QSKIP("RASTERLAB_SCREENSHOTS names no folder");
+        m_window.hide();
+        for (const QString& language : {QStringLiteral("en"), QStringLiteral("pt_BR")}) {
+            rasterlab::Translators translators;
+            translators.install(language);
+            MainWindow window;
+            window.resize(1280, 720);
+            window.show();
+            QVERIFY(window.openExample(QStringLiteral("goblet")));
+            QVERIFY(QTest::qWaitFor([&] { return ready(window); }, kTimeoutMs));
+            window.showCheckDock();
+            CheckPanel* panel = window.checkPanel();
+            panel->setCommand(QStringLiteral("python3 stages.py --flip-y"));
+            panel->setFolder(pythonFolder());
+            QSignalSpy finished(panel, &CheckPanel::finished);
+            QVERIFY(panel->start().isEmpty());
+            QVERIFY(finished.wait(kTimeoutMs));
+            QVERIFY(panel->stopAtFirstDeparture());
+            QVERIFY(QTest::qWaitFor([&] { return ready(window); }, kTimeoutMs));
+            QTest::qWait(1000);
+            const QPixmap screen = QGuiApplication::primaryScreen()->grabWindow(0);
+            QVERIFY(screen.save(QDir(dir).filePath("check-" + language + ".png")));
+            translators.install(QStringLiteral("en"));
+        }
+        m_window.show();
+    }
+
+private:
+    MainWindow m_window;
+};
+
+QTEST_MAIN(TestCheckWindow)
+#include "tst_check_window.moc"
