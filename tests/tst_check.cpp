@@ -210,6 +210,36 @@ private slots:
         qInfo("the Python example's check over the default scenes: %.2f s", report.seconds);
     }
 
+    // Chained, each stage given the program's own earlier answers: the example still passes,
+    // and one mistake in the basis now reaches every stage after it, where run apart it
+    // reaches none but the frame.
+    void chainedErrorsAddUp() {
+        const auto run = [&](const QString& switches, bool chain) {
+            CheckOptions o;
+            o.chain = chain;
+            return runCheck((python() + " stages.py " + switches).toStdString(),
+                            pythonFolder().toStdString(), {scenes()[2]}, o);
+        };
+        const CheckReport plain = run({}, true);
+        QVERIFY2(plain.passed(), formatReport(plain, "text").c_str());
+        QVERIFY(plain.chained);
+        const auto failing = [](const CheckReport& r) {
+            QStringList out;
+            for (const StageResult& st : r.scenes.front().stages)
+                if (st.verdict != Verdict::Passed)
+                    out << QString::fromStdString(std::string(stageName(st.stage)));
+            return out.join(',');
+        };
+        QCOMPARE(failing(run("--u-v-cross-n", false)), QStringLiteral("basis,frame"));
+        QCOMPARE(failing(run("--u-v-cross-n", true)),
+                 QStringLiteral("basis,view,normals,projection,scan,zbuffer,lighting,frame"));
+        QCOMPARE(failing(run("--round-vertices", true)),
+                 QStringLiteral("projection,scan,zbuffer,frame"));
+        QVERIFY(formatReport(run("--flip-y", true), "text")
+                    .find(", chained: each stage given the program's own earlier answers") !=
+                std::string::npos);
+    }
+
     // The second student's renderer, in C++, written apart from RasterLab and from the Python
     // one: every stage passes too.
     void cppExamplePassesEveryStage() {

@@ -5,6 +5,7 @@
 // hangs, and Cancel ends the check; the command and folder are kept in lesson files.
 #include <QtTest>
 
+#include <QCheckBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QLineEdit>
@@ -120,6 +121,20 @@ private slots:
         QCOMPARE(m_window.inspection()->pickedPixel(), pixel);
         QVERIFY(!m_window.inspection()->atEnd());
         QVERIFY(m_window.inspection()->breakpoints().empty());  // the user's, put back
+    }
+
+    // Chained, the basis's mistake reaches every stage after it.
+    void chainedFromTheWindow() {
+        CheckPanel* panel = m_window.checkPanel();
+        panel->setCommand(QStringLiteral(RASTERLAB_PYTHON " stages.py --u-v-cross-n"));
+        panel->chainBox()->setChecked(true);
+        QSignalSpy finished(panel, &CheckPanel::finished);
+        QVERIFY(panel->start().isEmpty());
+        QVERIFY(finished.wait(kTimeoutMs));
+        panel->chainBox()->setChecked(false);
+        QVERIFY(panel->report()->chained);
+        for (rl::StageId stage : rl::kAllStages)
+            QCOMPARE(m_window.stageStrip()->checkMark(stage), StageStrip::CheckMark::Failed);
     }
 
     // The z-buffer view marks the pixels whose winner differs.

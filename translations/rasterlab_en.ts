@@ -3141,202 +3141,212 @@
 <context>
     <name>rasterlab::CheckPanel</name>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="52"/>
+        <location filename="../app/window/check_panel.cpp" line="53"/>
         <source>python3 stages.py</source>
         <translation>python3 stages.py</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="54"/>
+        <location filename="../app/window/check_panel.cpp" line="55"/>
         <source>The command that starts your program, run by /bin/sh in the folder below; it answers the stage protocol on its standard input and output (docs/stage-protocol.md).</source>
         <translation>The command that starts your program, run by /bin/sh in the folder below; it answers the stage protocol on its standard input and output (docs/stage-protocol.md).</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="57"/>
+        <location filename="../app/window/check_panel.cpp" line="58"/>
         <source>Command:</source>
         <translation>Command:</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="61"/>
+        <location filename="../app/window/check_panel.cpp" line="62"/>
         <source>Browse...</source>
         <translation>Browse...</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="64"/>
+        <location filename="../app/window/check_panel.cpp" line="65"/>
         <source>Folder:</source>
         <translation>Folder:</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="68"/>
+        <location filename="../app/window/check_panel.cpp" line="69"/>
         <source>Check</source>
         <translation>Check</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="70"/>
+        <location filename="../app/window/check_panel.cpp" line="71"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="72"/>
+        <location filename="../app/window/check_panel.cpp" line="73"/>
         <source>Stop at the First Departure</source>
         <translation>Stop at the First Departure</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="74"/>
+        <location filename="../app/window/check_panel.cpp" line="75"/>
         <source>Step the frame to where the selected stage first departs from the lecture&apos;s</source>
         <translation>Step the frame to where the selected stage first departs from the lecture&apos;s</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="93"/>
+        <location filename="../app/window/check_panel.cpp" line="81"/>
+        <source>Chained</source>
+        <translation>Chained</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="82"/>
+        <source>Give each stage your program&apos;s own earlier answers as its input, to see how errors add up (unticked, each stage gets RasterLab&apos;s, so no mistake hides another)</source>
+        <translation>Give each stage your program's own earlier answers as its input, to see how errors add up (unticked, each stage gets RasterLab's, so no mistake hides another)</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="99"/>
         <source>Stage</source>
         <translation>Stage</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="93"/>
+        <location filename="../app/window/check_panel.cpp" line="99"/>
         <source>Verdict</source>
         <translation>Verdict</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="93"/>
+        <location filename="../app/window/check_panel.cpp" line="99"/>
         <source>Elements</source>
         <translation>Elements</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="93"/>
+        <location filename="../app/window/check_panel.cpp" line="99"/>
         <source>Likely cause</source>
         <translation>Likely cause</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="127"/>
+        <location filename="../app/window/check_panel.cpp" line="133"/>
         <source>Your Program&apos;s Folder</source>
         <translation>Your Program&apos;s Folder</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="170"/>
+        <location filename="../app/window/check_panel.cpp" line="176"/>
         <source>A check is running.</source>
         <translation>A check is running.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="172"/>
+        <location filename="../app/window/check_panel.cpp" line="178"/>
         <source>Give the command that starts your program.</source>
         <translation>Give the command that starts your program.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="175"/>
+        <location filename="../app/window/check_panel.cpp" line="181"/>
         <source>The folder %1 does not exist.</source>
         <translation>The folder %1 does not exist.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="177"/>
+        <location filename="../app/window/check_panel.cpp" line="183"/>
         <source>There is no frame to check against.</source>
         <translation>There is no frame to check against.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="198"/>
+        <location filename="../app/window/check_panel.cpp" line="205"/>
         <source>Checking %1...</source>
         <translation>Checking %1...</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="216"/>
+        <location filename="../app/window/check_panel.cpp" line="223"/>
         <source>cancelled</source>
         <translation>cancelled</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="216"/>
+        <location filename="../app/window/check_panel.cpp" line="223"/>
         <source>done</source>
         <translation>done</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="225"/>
+        <location filename="../app/window/check_panel.cpp" line="232"/>
         <source>Over our image: each vertex that departs, ours a green dot, theirs a red cross, joined by a line.</source>
         <translation>Over our image: each vertex that departs, ours a green dot, theirs a red cross, joined by a line.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="229"/>
+        <location filename="../app/window/check_panel.cpp" line="236"/>
         <source>Over our image: magenta, pixels only we cover; cyan, pixels only they cover.</source>
         <translation>Over our image: magenta, pixels only we cover; cyan, pixels only they cover.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="233"/>
+        <location filename="../app/window/check_panel.cpp" line="240"/>
         <source>Over our image: red, pixels another triangle wins (or at another depth); magenta, only ours keeps one; cyan, only theirs.</source>
         <translation>Over our image: red, pixels another triangle wins (or at another depth); magenta, only ours keeps one; cyan, only theirs.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="237"/>
+        <location filename="../app/window/check_panel.cpp" line="244"/>
         <source>Over our image: red, pixels whose colour differs by more than 1.</source>
         <translation>Over our image: red, pixels whose colour differs by more than 1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="246"/>
+        <location filename="../app/window/check_panel.cpp" line="253"/>
         <source>passed</source>
         <translation>passed</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="248"/>
+        <location filename="../app/window/check_panel.cpp" line="255"/>
         <source>failed</source>
         <translation>failed</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="250"/>
+        <location filename="../app/window/check_panel.cpp" line="257"/>
         <source>unsupported</source>
         <translation>unsupported</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="252"/>
+        <location filename="../app/window/check_panel.cpp" line="259"/>
         <source>broken</source>
         <translation>broken</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="295"/>
+        <location filename="../app/window/check_panel.cpp" line="302"/>
         <source>not applied: %1</source>
         <translation>not applied: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="304"/>
+        <location filename="../app/window/check_panel.cpp" line="311"/>
         <source>Protected by: %1.</source>
         <translation>Protected by: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="305"/>
+        <location filename="../app/window/check_panel.cpp" line="312"/>
         <source>Protected by: %1. Not applied: %2.</source>
         <translation>Protected by: %1. Not applied: %2.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="309"/>
+        <location filename="../app/window/check_panel.cpp" line="316"/>
         <source>Not checked: %1</source>
         <translation>Not checked: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="315"/>
+        <location filename="../app/window/check_panel.cpp" line="322"/>
         <source>%1 of %2 differ</source>
         <translation>%1 of %2 differ</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="331"/>
+        <location filename="../app/window/check_panel.cpp" line="338"/>
         <source>Every stage passed (%1 s).</source>
         <translation>Every stage passed (%1 s).</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="368"/>
+        <location filename="../app/window/check_panel.cpp" line="375"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="372"/>
+        <location filename="../app/window/check_panel.cpp" line="379"/>
         <source>First departure: %1: theirs %2, ours %3</source>
         <translation>First departure: %1: theirs %2, ours %3</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="376"/>
+        <location filename="../app/window/check_panel.cpp" line="383"/>
         <source>Likely cause: %1</source>
         <translation>Likely cause: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="378"/>
+        <location filename="../app/window/check_panel.cpp" line="385"/>
         <source>No known mistake of this stage gives their answer.</source>
         <translation>No known mistake of this stage gives their answer.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="379"/>
+        <location filename="../app/window/check_panel.cpp" line="386"/>
         <source>Tolerance: %1</source>
         <translation>Tolerance: %1</translation>
     </message>

@@ -3141,202 +3141,212 @@
 <context>
     <name>rasterlab::CheckPanel</name>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="52"/>
+        <location filename="../app/window/check_panel.cpp" line="53"/>
         <source>python3 stages.py</source>
         <translation>python3 stages.py</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="54"/>
+        <location filename="../app/window/check_panel.cpp" line="55"/>
         <source>The command that starts your program, run by /bin/sh in the folder below; it answers the stage protocol on its standard input and output (docs/stage-protocol.md).</source>
         <translation>O comando que inicia o seu programa, executado pelo /bin/sh na pasta abaixo; ele responde ao protocolo de etapas na sua entrada e saída padrão (docs/stage-protocol.md).</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="57"/>
+        <location filename="../app/window/check_panel.cpp" line="58"/>
         <source>Command:</source>
         <translation>Comando:</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="61"/>
+        <location filename="../app/window/check_panel.cpp" line="62"/>
         <source>Browse...</source>
         <translation>Procurar...</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="64"/>
+        <location filename="../app/window/check_panel.cpp" line="65"/>
         <source>Folder:</source>
         <translation>Pasta:</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="68"/>
+        <location filename="../app/window/check_panel.cpp" line="69"/>
         <source>Check</source>
         <translation>Verificar</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="70"/>
+        <location filename="../app/window/check_panel.cpp" line="71"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="72"/>
+        <location filename="../app/window/check_panel.cpp" line="73"/>
         <source>Stop at the First Departure</source>
         <translation>Parar no Primeiro Desvio</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="74"/>
+        <location filename="../app/window/check_panel.cpp" line="75"/>
         <source>Step the frame to where the selected stage first departs from the lecture&apos;s</source>
         <translation>Avança o quadro até onde a etapa selecionada se desvia pela primeira vez da etapa da aula</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="93"/>
+        <location filename="../app/window/check_panel.cpp" line="81"/>
+        <source>Chained</source>
+        <translation>Encadeada</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="82"/>
+        <source>Give each stage your program&apos;s own earlier answers as its input, to see how errors add up (unticked, each stage gets RasterLab&apos;s, so no mistake hides another)</source>
+        <translation>Dá a cada etapa as respostas anteriores do seu próprio programa como entrada, para ver como os erros se somam (desmarcada, cada etapa recebe as do RasterLab, e nenhum erro esconde outro)</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="99"/>
         <source>Stage</source>
         <translation>Etapa</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="93"/>
+        <location filename="../app/window/check_panel.cpp" line="99"/>
         <source>Verdict</source>
         <translation>Veredito</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="93"/>
+        <location filename="../app/window/check_panel.cpp" line="99"/>
         <source>Elements</source>
         <translation>Elementos</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="93"/>
+        <location filename="../app/window/check_panel.cpp" line="99"/>
         <source>Likely cause</source>
         <translation>Causa provável</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="127"/>
+        <location filename="../app/window/check_panel.cpp" line="133"/>
         <source>Your Program&apos;s Folder</source>
         <translation>A Pasta do Seu Programa</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="170"/>
+        <location filename="../app/window/check_panel.cpp" line="176"/>
         <source>A check is running.</source>
         <translation>Uma verificação está em andamento.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="172"/>
+        <location filename="../app/window/check_panel.cpp" line="178"/>
         <source>Give the command that starts your program.</source>
         <translation>Informe o comando que inicia o seu programa.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="175"/>
+        <location filename="../app/window/check_panel.cpp" line="181"/>
         <source>The folder %1 does not exist.</source>
         <translation>A pasta %1 não existe.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="177"/>
+        <location filename="../app/window/check_panel.cpp" line="183"/>
         <source>There is no frame to check against.</source>
         <translation>Não há quadro com que comparar.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="198"/>
+        <location filename="../app/window/check_panel.cpp" line="205"/>
         <source>Checking %1...</source>
         <translation>Verificando %1...</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="216"/>
+        <location filename="../app/window/check_panel.cpp" line="223"/>
         <source>cancelled</source>
         <translation>cancelada</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="216"/>
+        <location filename="../app/window/check_panel.cpp" line="223"/>
         <source>done</source>
         <translation>concluída</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="225"/>
+        <location filename="../app/window/check_panel.cpp" line="232"/>
         <source>Over our image: each vertex that departs, ours a green dot, theirs a red cross, joined by a line.</source>
         <translation>Sobre a nossa imagem: cada vértice que se desvia, o nosso um ponto verde, o deles uma cruz vermelha, unidos por uma linha.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="229"/>
+        <location filename="../app/window/check_panel.cpp" line="236"/>
         <source>Over our image: magenta, pixels only we cover; cyan, pixels only they cover.</source>
         <translation>Sobre a nossa imagem: magenta, pixels que só nós cobrimos; ciano, pixels que só eles cobrem.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="233"/>
+        <location filename="../app/window/check_panel.cpp" line="240"/>
         <source>Over our image: red, pixels another triangle wins (or at another depth); magenta, only ours keeps one; cyan, only theirs.</source>
         <translation>Sobre a nossa imagem: vermelho, pixels que outro triângulo ganha (ou com outra profundidade); magenta, só o nosso guarda um; ciano, só o deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="237"/>
+        <location filename="../app/window/check_panel.cpp" line="244"/>
         <source>Over our image: red, pixels whose colour differs by more than 1.</source>
         <translation>Sobre a nossa imagem: vermelho, pixels cuja cor difere em mais de 1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="246"/>
+        <location filename="../app/window/check_panel.cpp" line="253"/>
         <source>passed</source>
         <translation>passou</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="248"/>
+        <location filename="../app/window/check_panel.cpp" line="255"/>
         <source>failed</source>
         <translation>falhou</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="250"/>
+        <location filename="../app/window/check_panel.cpp" line="257"/>
         <source>unsupported</source>
         <translation>não suportada</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="252"/>
+        <location filename="../app/window/check_panel.cpp" line="259"/>
         <source>broken</source>
         <translation>quebrou</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="295"/>
+        <location filename="../app/window/check_panel.cpp" line="302"/>
         <source>not applied: %1</source>
         <translation>não aplicado: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="304"/>
+        <location filename="../app/window/check_panel.cpp" line="311"/>
         <source>Protected by: %1.</source>
         <translation>Protegido por: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="305"/>
+        <location filename="../app/window/check_panel.cpp" line="312"/>
         <source>Protected by: %1. Not applied: %2.</source>
         <translation>Protegido por: %1. Não aplicado: %2.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="309"/>
+        <location filename="../app/window/check_panel.cpp" line="316"/>
         <source>Not checked: %1</source>
         <translation>Não verificada: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="315"/>
+        <location filename="../app/window/check_panel.cpp" line="322"/>
         <source>%1 of %2 differ</source>
         <translation>%1 de %2 diferem</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="331"/>
+        <location filename="../app/window/check_panel.cpp" line="338"/>
         <source>Every stage passed (%1 s).</source>
         <translation>Todas as etapas passaram (%1 s).</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="368"/>
+        <location filename="../app/window/check_panel.cpp" line="375"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="372"/>
+        <location filename="../app/window/check_panel.cpp" line="379"/>
         <source>First departure: %1: theirs %2, ours %3</source>
         <translation>Primeiro desvio: %1: o deles %2, o nosso %3</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="376"/>
+        <location filename="../app/window/check_panel.cpp" line="383"/>
         <source>Likely cause: %1</source>
         <translation>Causa provável: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="378"/>
+        <location filename="../app/window/check_panel.cpp" line="385"/>
         <source>No known mistake of this stage gives their answer.</source>
         <translation>Nenhum erro conhecido desta etapa dá a resposta deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="379"/>
+        <location filename="../app/window/check_panel.cpp" line="386"/>
         <source>Tolerance: %1</source>
         <translation>Tolerância: %1</translation>
     </message>

@@ -56,6 +56,7 @@ std::vector<std::string> details(const StageResult& r) {
 std::string header(const CheckReport& r) {
     std::string s = "Check of `" + r.command + "` in " + r.folder;
     s += r.version ? " (stage protocol " + std::to_string(r.version) + ")" : "";
+    if (r.chained) s += ", chained: each stage given the program's own earlier answers";
     return s;
 }
 
@@ -167,6 +168,7 @@ std::string json(const CheckReport& r) {
     o[QStringLiteral("command")] = q(r.command);
     o[QStringLiteral("folder")] = q(r.folder);
     o[QStringLiteral("protocolVersion")] = r.version;
+    o[QStringLiteral("chained")] = r.chained;
     QJsonArray protections, missing, scenes;
     for (const std::string& p : r.protections) protections.append(q(p));
     for (const std::string& p : r.missing) missing.append(q(p));

@@ -200,6 +200,7 @@ CheckReport runCheck(const std::string& command, const std::string& folder,
     CheckReport report;
     report.command = command;
     report.folder = folder;
+    report.chained = options.chain;
     const auto started = std::chrono::steady_clock::now();
     Session session(command, folder, options, report);
     const int total = int(scenes.size() * options.stages.size());
@@ -215,6 +216,7 @@ CheckReport runCheck(const std::string& command, const std::string& folder,
             done += int(options.stages.size());
             continue;
         }
+        StageCheck::Answers answers;  // theirs, for a chained run's next requests
         for (Stage stage : options.stages) {
             const auto stopped = [&] {
                 return options.limits.cancel && options.limits.cancel->load();
@@ -227,7 +229,9 @@ CheckReport runCheck(const std::string& command, const std::string& folder,
             }
             ++done;
             std::string problem;
-            const auto lines = session.ask((*check)->request(stage), problem);
+            const auto lines = session.ask(
+                options.chain ? (*check)->chainedRequest(stage, answers) : (*check)->request(stage),
+                problem);
             if (stopped()) {
                 report.cancelled = true;
                 break;
@@ -247,6 +251,7 @@ CheckReport runCheck(const std::string& command, const std::string& folder,
                     result.problem = records.error().toString();
                 } else {
                     result = (*check)->judge(stage, records.value());
+                    answers[stage] = std::move(records.value());
                 }
             }
             sr.stages.push_back(std::move(result));

@@ -33,6 +33,7 @@ struct CheckReport {
     int version = 0;  // the version the program speaks (0: it never said)
     std::vector<std::string> protections, missing;
     std::vector<SceneReport> scenes;
+    bool chained = false;
     std::string failure;  // why the program could not be checked at all, or empty
     bool cancelled = false;
     double seconds = 0.0;
@@ -50,6 +51,9 @@ using CheckProgress = std::function<bool(int done, int total, const std::string&
 
 struct CheckOptions {
     std::vector<Stage> stages{kStages.begin(), kStages.end()};
+    // Chained: each stage is given the program's own earlier answers as its input (where it
+    // gave them), to show how errors add up; otherwise RasterLab's, so none hides another.
+    bool chain = false;
     Limits limits;
     int maxRestarts = 3;
 };

@@ -136,8 +136,8 @@ void addGrazingSamples(StageCheck::Data& data) {
     const dvec3 l = glm::normalize(dvec3(data.view.lights[0].pView) - p);
     constexpr double e = 5e-4;
     dvec3 n;
-    if (leaning(v, l, e, n)) data.samples.push_back({vec3(p), vec3(n)});
-    if (leaning(l, v, e, n)) data.samples.push_back({vec3(p), vec3(n)});
+    if (leaning(v, l, e, n)) data.samples.push_back({vec3(p), vec3(n), std::nullopt, false});
+    if (leaning(l, v, e, n)) data.samples.push_back({vec3(p), vec3(n), std::nullopt, false});
 }
 
 void computeSamples(StageCheck::Data& data) {
@@ -147,8 +147,8 @@ void computeSamples(StageCheck::Data& data) {
     for (std::size_t i = 0; i < count; i += step) {
         const vec3 n = data.normals.vertex[i];
         if (n == vec3(0.0f)) continue;
-        data.samples.push_back({vec3(rl::cartesian(pView[i])), n});
-        data.samples.push_back({vec3(rl::cartesian(pView[i])), -n});
+        data.samples.push_back({vec3(rl::cartesian(pView[i])), n, std::uint32_t(i), false});
+        data.samples.push_back({vec3(rl::cartesian(pView[i])), -n, std::uint32_t(i), true});
     }
     addGrazingSamples(data);
     const rl::Material& m = data.draw->material;
@@ -231,7 +231,125 @@ rl::Result<std::shared_ptr<const StageCheck>> StageCheck::make(
     return std::shared_ptr<const StageCheck>(std::make_shared<StageCheck>(std::move(data)));
 }
 
+// The inputs the requests carry: ours, or in a chained run the student's own earlier answers
+// wherever they gave one of the right size.
+struct StageCheck::Inputs {
+    std::array<dvec3, 3> uvn;
+    dvec3 light;              // in view coordinates
+    std::vector<Row> view;    // every vertex, in view coordinates
+    std::vector<Row> screen;  // every projected vertex of the draw, in pixels (x, y)
+    std::vector<Fragment> fragments;
+    std::vector<Sample> samples;
+};
+
+StageCheck::Inputs StageCheck::ourInputs() const {
+    const Data& d = *m_data;
+    Inputs in;
+    in.uvn = {d.basis.u, d.basis.v, d.basis.n};
+    in.light = dvec3(d.view.lights[0].pView);
+    for (const rl::dvec4& p : d.view.pView[0]) in.view.push_back(rowOf(dvec3(p)));
+    for (std::size_t v = 0; v < d.projection.draws[0].pScreen.size(); ++v)
+        in.screen.push_back(
+            {d.projection.draws[0].pScreen[v].x, d.projection.draws[0].pScreen[v].y});
+    in.fragments = d.fragments;
+    in.samples = d.samples;
+    return in;
+}
+
+namespace {
+
+// The fragments of spans t y first last, in drawing order. A triangle whose screen vertices
+// and view z are ours gets the lecture's own depths (depth_test.h's, bit for bit); another
+// gets the view z of its vertices interpolated with the screen barycentrics of each sample.
+std::vector<Fragment> fragmentsOfSpans(std::vector<Row> spans, const rl::Scene& scene,
+                                       const rl::Projection& projection,
+                                       const std::vector<Row>& screen, const std::vector<Row>& view,
+                                       const std::vector<bool>& oursToo) {
+    std::sort(spans.begin(), spans.end());
+    std::vector<Fragment> out;
+    for (const Row& s : spans) {
+        if (s[0] < 0 || s[0] >= double(projection.triangles.size()) || s[3] - s[2] > 1e6) continue;
+        const auto t = std::uint32_t(s[0]);
+        const auto& v = projection.triangles[t].v;
+        const Row &a = screen[v[0]], &b = screen[v[1]], &c = screen[v[2]];
+        const double area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        if (area == 0.0) continue;
+        for (double x = s[2]; x <= s[3]; ++x) {
+            float z = 0.0f;
+            if (oursToo[t]) {
+                z = rl::fragmentDepth(scene, projection, t, std::int32_t(s[1]), std::int32_t(s[2]),
+                                      std::int32_t(x))
+                        .depth;
+            } else {
+                const double beta =
+                    ((x - a[0]) * (c[1] - a[1]) - (s[1] - a[1]) * (c[0] - a[0])) / area;
+                const double gamma =
+                    ((b[0] - a[0]) * (s[1] - a[1]) - (b[1] - a[1]) * (x - a[0])) / area;
+                z = float((1.0 - beta - gamma) * view[v[0]][2] + beta * view[v[1]][2] +
+                          gamma * view[v[2]][2]);
+            }
+            out.push_back({t, std::int32_t(x), std::int32_t(s[1]), z});
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+StageCheck::Inputs StageCheck::chainedInputs(const Answers& theirs) const {
+    const Data& d = *m_data;
+    Inputs in = ourInputs();
+    const auto answer = [&](Stage stage) -> const std::vector<Record>* {
+        const auto it = theirs.find(stage);
+        return it == theirs.end() ? nullptr : &it->second;
+    };
+    if (const auto* a = answer(Stage::Basis))
+        for (std::size_t k = 0; k < 3; ++k)
+            in.uvn[k] = dvec3((*a)[k].numbers[0], (*a)[k].numbers[1], (*a)[k].numbers[2]);
+    if (const auto* a = answer(Stage::View); a && (*a)[1].rows.size() == in.view.size()) {
+        in.light = dvec3((*a)[0].numbers[0], (*a)[0].numbers[1], (*a)[0].numbers[2]);
+        in.view = (*a)[1].rows;
+    }
+    if (const auto* a = answer(Stage::Projection); a && (*a)[0].rows.size() == d.projected.size())
+        for (std::size_t k = 0; k < d.projected.size(); ++k)
+            in.screen[d.projected[k]] = (*a)[0].rows[k];
+    if (const auto* a = answer(Stage::Scan)) {
+        const Inputs ours = ourInputs();
+        std::vector<bool> oursToo;
+        for (const rl::ScreenTriangle& t : d.projection.triangles) {
+            bool same = true;
+            for (std::uint32_t v : t.v)
+                same = same && in.screen[v] == ours.screen[v] &&
+                       std::abs(in.view[v][2] - ours.view[v][2]) <=
+                           1e-9 * std::max(1.0, std::abs(ours.view[v][2]));
+            oursToo.push_back(same);
+        }
+        in.fragments =
+            fragmentsOfSpans((*a)[0].rows, *d.scene, d.projection, in.screen, in.view, oursToo);
+    }
+    const auto* normals = answer(Stage::Normals);
+    const bool theirNormals = normals && (*normals)[1].rows.size() == in.view.size();
+    for (Sample& s : in.samples) {
+        if (!s.vertex) continue;
+        const Row& p = in.view[*s.vertex];
+        s.p = vec3(float(p[0]), float(p[1]), float(p[2]));
+        if (theirNormals) {
+            const Row& n = (*normals)[1].rows[*s.vertex];
+            s.n = (s.reversed ? -1.0f : 1.0f) * vec3(float(n[0]), float(n[1]), float(n[2]));
+        }
+    }
+    return in;
+}
+
 Request StageCheck::request(Stage stage) const {
+    return request(stage, ourInputs());
+}
+
+Request StageCheck::chainedRequest(Stage stage, const Answers& theirs) const {
+    return request(stage, chainedInputs(theirs));
+}
+
+Request StageCheck::request(Stage stage, const Inputs& in) const {
     const Data& d = *m_data;
     const rl::CourseCamera& camera = d.camera();
     const rl::Scene& scene = *d.scene;
@@ -248,6 +366,12 @@ Request StageCheck::request(Stage stage) const {
         r.add("ks", {l.ks});
         r.add("n", {l.n});
     };
+    const auto addTriangles = [&] {
+        std::vector<Row> rows;
+        for (const auto& t : d.mesh().triangles)
+            rows.push_back({double(t[0]), double(t[1]), double(t[2])});
+        r.addList("triangles", rows);
+    };
     std::vector<Row> rows;
     switch (stage) {
         case Stage::Basis:
@@ -257,44 +381,40 @@ Request StageCheck::request(Stage stage) const {
             break;
         case Stage::View:
             add3("C", camera.c);
-            add3("U", d.basis.u);
-            add3("V", d.basis.v);
-            add3("N", d.basis.n);
+            add3("U", in.uvn[0]);
+            add3("V", in.uvn[1]);
+            add3("N", in.uvn[2]);
             add3("light", dvec3(scene.lights[0].pWorld));
             for (const rl::dvec4& p : d.mesh().positions) rows.push_back(rowOf(dvec3(p)));
             r.addList("vertices", rows);
             break;
         case Stage::Normals:
-            for (const rl::dvec4& p : d.view.pView[0]) rows.push_back(rowOf(dvec3(p)));
-            r.addList("vertices", rows);
-            rows.clear();
-            for (const auto& t : d.mesh().triangles)
-                rows.push_back({double(t[0]), double(t[1]), double(t[2])});
-            r.addList("triangles", rows);
+            r.addList("vertices", in.view);
+            addTriangles();
             break;
         case Stage::Projection:
             r.add("camera", {camera.d, camera.hx, camera.hy});
             r.add("size", {double(scene.width), double(scene.height)});
-            for (std::uint32_t i : d.projected) rows.push_back(rowOf(dvec3(d.view.pView[0][i])));
+            for (std::uint32_t i : d.projected) rows.push_back(in.view[i]);
             r.addList("vertices", rows);
             break;
         case Stage::Scan:
             r.add("size", {double(scene.width), double(scene.height)});
             for (const rl::ScreenTriangle& t : d.projection.triangles) {
-                const auto p = rl::screenVertices(d.projection, t);
-                rows.push_back({p[0].x, p[0].y, p[1].x, p[1].y, p[2].x, p[2].y});
+                const Row &a = in.screen[t.v[0]], &b = in.screen[t.v[1]], &c = in.screen[t.v[2]];
+                rows.push_back({a[0], a[1], b[0], b[1], c[0], c[1]});
             }
             r.addList("triangles", rows);
             break;
         case Stage::ZBuffer:
             r.add("size", {double(scene.width), double(scene.height)});
-            for (const Fragment& f : d.fragments)
+            for (const Fragment& f : in.fragments)
                 rows.push_back({double(f.t), double(f.x), double(f.y), double(f.z)});
             r.addList("fragments", rows);
             break;
         case Stage::Lighting:
-            addLighting(d.lighting.light);
-            for (const Sample& s : d.samples)
+            addLighting(in.light);
+            for (const Sample& s : in.samples)
                 rows.push_back({s.p.x, s.p.y, s.p.z, s.n.x, s.n.y, s.n.z});
             r.addList("samples", rows);
             break;
@@ -307,10 +427,7 @@ Request StageCheck::request(Stage stage) const {
             addLighting(dvec3(scene.lights[0].pWorld));
             for (const rl::dvec4& p : d.mesh().positions) rows.push_back(rowOf(dvec3(p)));
             r.addList("vertices", rows);
-            rows.clear();
-            for (const auto& t : d.mesh().triangles)
-                rows.push_back({double(t[0]), double(t[1]), double(t[2])});
-            r.addList("triangles", rows);
+            addTriangles();
             break;
     }
     return r;

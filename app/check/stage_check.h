@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -64,6 +65,12 @@ public:
         std::shared_ptr<const rl::Scene> scene);
 
     Request request(Stage stage) const;
+    // A chained run's request: the stage's input made from the student's own earlier answers
+    // (their basis for the view, their view coordinates for the normals and the projection,
+    // their screen vertices for the scan, their spans for the z-buffer's fragments, their
+    // positions and normals for the lighting's samples), ours where they gave none.
+    using Answers = std::map<Stage, std::vector<Record>>;
+    Request chainedRequest(Stage stage, const Answers& theirs) const;
     // Their answer (records as parsed) held to ours.
     StageResult judge(Stage stage, const std::vector<Record>& answer) const;
     // Our image of the scene (the frame stage's answer), and theirs from a frame answer.
@@ -76,6 +83,10 @@ public:
     ~StageCheck();
 
 private:
+    struct Inputs;
+    Inputs ourInputs() const;
+    Inputs chainedInputs(const Answers& theirs) const;
+    Request request(Stage stage, const Inputs& in) const;
     StageResult judgeBasis(const std::vector<Record>& answer) const;
     StageResult judgeView(const std::vector<Record>& answer) const;
     StageResult judgeNormals(const std::vector<Record>& answer) const;

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,10 @@ struct Fragment {
 struct Sample {
     rl::vec3 p = rl::vec3(0.0f);  // P' in view coordinates
     rl::vec3 n = rl::vec3(0.0f);  // its unit normal, not yet turned toward the viewer
+    // The vertex it was taken at and whether its normal was turned around (for a chained
+    // run, which takes both from the student's answers); none for a made-up sample.
+    std::optional<std::uint32_t> vertex;
+    bool reversed = false;
 };
 
 // The course's lighting, the light in view coordinates.

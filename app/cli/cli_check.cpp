@@ -26,7 +26,8 @@ struct LimitOptions {
         lit("timeout"), lit("Seconds the program has in all (default 120)."), lit("S"), lit("120")};
     QCommandLineOption memory{lit("memory"),
                               lit("Megabytes of address space the program may use (default "
-                                  "2048)."),
+                                  "2048; 0: no limit, for a program built with "
+                                  "AddressSanitizer)."),
                               lit("MB"), lit("2048")};
     QCommandLineOption noSandbox{
         lit("no-sandbox"),
@@ -56,11 +57,13 @@ struct LimitOptions {
                                        .arg(parser.value(totalSeconds)));
         limits.totalSeconds = v;
         limits.cpuSeconds = int(std::ceil(v));
-        if (!positive(memory, 1 << 20, v) || v < 16)
-            return usageError(
-                err,
-                lit("--memory expects megabytes from 16, found '%1'").arg(parser.value(memory)));
-        limits.memoryBytes = static_cast<long long>(v) << 20;
+        bool whole = false;
+        const long long megabytes = parser.value(memory).toLongLong(&whole);
+        if (!whole || (megabytes != 0 && (megabytes < 16 || megabytes > (1 << 20))))
+            return usageError(err,
+                              lit("--memory expects megabytes from 16 (or 0: no limit), found '%1'")
+                                  .arg(parser.value(memory)));
+        limits.memoryBytes = megabytes << 20;
         limits.sandbox = !parser.isSet(noSandbox);
         return std::nullopt;
     }
@@ -144,13 +147,17 @@ int runCheck(const QStringList& arguments, QTextStream& out, QTextStream& err) {
                                           lit("Only these stages, comma-separated (default: "
                                               "all eight)."),
                                           lit("LIST"));
+    const QCommandLineOption chain(lit("chain"),
+                                   lit("Give each stage the program's own earlier answers as "
+                                       "its input, to see how errors add up (by default each "
+                                       "stage gets RasterLab's, so no mistake hides another)."));
     const SceneOptions sceneOptions;
     const LimitOptions limitOptions;
     const QCommandLineOption sceneName = SceneOptions::generatedSceneOption();
     parser.addOption(help);
     sceneOptions.addTo(parser);
     limitOptions.addTo(parser);
-    parser.addOptions({sceneName, program, folder, format, stagesOption});
+    parser.addOptions({sceneName, program, folder, format, stagesOption, chain});
     rl::CourseSceneSettings settings;
     if (auto code = parseSceneCommand(parser, arguments, help, lit("check"), sceneOptions,
                                       sceneName, settings, out, err))
@@ -165,6 +172,7 @@ int runCheck(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     if (auto code = limitOptions.read(parser, options.limits, err)) return *code;
     if (parser.isSet(stagesOption))
         if (auto code = readStages(parser.value(stagesOption), options.stages, err)) return *code;
+    options.chain = parser.isSet(chain);
     const QString dir = parser.isSet(folder) ? parser.value(folder) : QDir::currentPath();
     if (!QFileInfo(dir).isDir())
         return usageError(err, lit("--folder: '%1' is not a folder").arg(dir));

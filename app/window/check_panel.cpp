@@ -1,5 +1,6 @@
 #include "app/window/check_panel.h"
 
+#include <QCheckBox>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -77,7 +78,13 @@ CheckPanel::CheckPanel(Inspection* inspection, QWidget* parent)
     m_progress = new QProgressBar;
     m_progress->setTextVisible(true);
     m_progress->setFormat(QString());
+    m_chain = new QCheckBox(tr("Chained"));
+    m_chain->setToolTip(
+        tr("Give each stage your program's own earlier answers as its input, to "
+           "see how errors add up (unticked, each stage gets RasterLab's, so no "
+           "mistake hides another)"));
     buttons->addWidget(m_run);
+    buttons->addWidget(m_chain);
     buttons->addWidget(m_cancel);
     buttons->addWidget(m_progress, 1);
     buttons->addWidget(m_stop);
@@ -179,6 +186,7 @@ QString CheckPanel::start() {
     m_cancelled = false;
     check::CheckOptions options;
     options.limits.cancel = &m_cancelled;
+    options.chain = m_chain->isChecked();
     const std::vector<check::CheckScene> scenes{{frame->scene->name, frame->scene}};
     const std::string cmd = command.toStdString();
     const std::string dir = QFileInfo(folder).absoluteFilePath().toStdString();

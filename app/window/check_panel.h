@@ -18,6 +18,7 @@
 #include "app/check/check_session.h"
 #include "pipeline/core/stage_id.h"
 
+class QCheckBox;
 class QLabel;
 class QLineEdit;
 class QProgressBar;
@@ -62,6 +63,7 @@ public:
     bool stopAtFirstDeparture();
 
     QPushButton* checkButton() const { return m_run; }
+    QCheckBox* chainBox() const { return m_chain; }
     QPushButton* cancelButton() const { return m_cancel; }
     QPushButton* stopButton() const { return m_stop; }
     QProgressBar* progressBar() const { return m_progress; }
@@ -88,6 +90,7 @@ private:
     QLineEdit* m_folder = nullptr;
     QPushButton* m_browse = nullptr;
     QPushButton* m_run = nullptr;
+    QCheckBox* m_chain = nullptr;
     QPushButton* m_cancel = nullptr;
     QPushButton* m_stop = nullptr;
     QProgressBar* m_progress = nullptr;
