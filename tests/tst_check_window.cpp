@@ -13,20 +13,24 @@
 #include <QPushButton>
 #include <QScreen>
 #include <QTemporaryDir>
+#include <QTextBrowser>
 #include <QToolButton>
 #include <QTreeWidget>
 
 #include "app/window/check_panel.h"
+#include "app/window/compare_panel.h"
 #include "app/window/main_window.h"
 #include "app/window/translators.h"
 #include "tests/test_support.h"
 #include "views/frame_image_view.h"
 #include "views/projection_view.h"
+#include "views/scanline_view.h"
 #include "views/stage_strip.h"
 #include "views/zbuffer_view.h"
 
 using rasterlab::CheckPanel;
 using rasterlab::MainWindow;
+using rasterlab::ScanlineView;
 using rasterlab::StageStrip;
 namespace check = rasterlab::check;
 
@@ -106,6 +110,21 @@ private slots:
             QStringLiteral("vertex %1").arg(m_window.inspection()->selectedVertices()[0].vertex));
     }
 
+    // Their frame goes to the Compare dock, whose diagnosis names the mistake.
+    void comparesTheirFrame() {
+        CheckPanel* panel = m_window.checkPanel();
+        panel->setCommand(QStringLiteral(RASTERLAB_PYTHON " stages.py --ambient-times-od"));
+        QSignalSpy finished(panel, &CheckPanel::finished);
+        QVERIFY(panel->start().isEmpty());
+        QVERIFY(finished.wait(kTimeoutMs));
+        QVERIFY(panel->compareButton()->isEnabled());
+        QTest::mouseClick(panel->compareButton(), Qt::LeftButton);
+        const rl::ImageComparison* comparison = m_window.comparePanel()->comparison();
+        QVERIFY(comparison);
+        QVERIFY(!comparison->diagnosis.empty());
+        QCOMPARE(comparison->diagnosis.front().mistake, rl::Mistake::AmbientTimesOd);
+    }
+
     // A departure at a pixel: the frame is stepped to the first fragment written there.
     void stopsAtThePixel() {
         CheckPanel* panel = m_window.checkPanel();
@@ -119,6 +138,17 @@ private slots:
         QVERIFY(panel->stopAtFirstDeparture());
         const QPoint pixel(int(r->departures.front().ours.x), int(r->departures.front().ours.y));
         QCOMPARE(m_window.inspection()->pickedPixel(), pixel);
+        // The scan view, at the pixel's row, puts their span beside ours: one pixel shorter.
+        ScanlineView* scan = m_window.findChild<ScanlineView*>();
+        QVERIFY(scan && scan->model() && scan->model()->row);
+        const auto& row = *scan->model()->row;
+        const QString html =
+            m_window.findChild<QTextBrowser*>(QStringLiteral("scanlineExplanation"))->toHtml();
+        QVERIFY2(html.contains(QStringLiteral("Your renderer: pixels %1 to %2 (ours: %1 to %3).")
+                                   .arg(row.xBegin)
+                                   .arg(row.xEnd - 2)
+                                   .arg(row.xEnd - 1)),
+                 qPrintable(html));
         QVERIFY(!m_window.inspection()->atEnd());
         QVERIFY(m_window.inspection()->breakpoints().empty());  // the user's, put back
     }

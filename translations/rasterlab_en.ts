@@ -3191,162 +3191,172 @@
         <translation>Chained</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="82"/>
+        <location filename="../app/window/check_panel.cpp" line="83"/>
         <source>Give each stage your program&apos;s own earlier answers as its input, to see how errors add up (unticked, each stage gets RasterLab&apos;s, so no mistake hides another)</source>
-        <translation>Give each stage your program's own earlier answers as its input, to see how errors add up (unticked, each stage gets RasterLab's, so no mistake hides another)</translation>
+        <translation>Give each stage your program&apos;s own earlier answers as its input, to see how errors add up (unticked, each stage gets RasterLab&apos;s, so no mistake hides another)</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="99"/>
+        <location filename="../app/window/check_panel.cpp" line="91"/>
+        <source>Compare Their Frame</source>
+        <translation>Compare Their Frame</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="92"/>
+        <source>Their whole frame in the Compare dock: each pixel&apos;s colour beside ours, and the Phong term that would have to change</source>
+        <translation>Their whole frame in the Compare dock: each pixel's colour beside ours, and the Phong term that would have to change</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="105"/>
         <source>Stage</source>
         <translation>Stage</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="99"/>
+        <location filename="../app/window/check_panel.cpp" line="105"/>
         <source>Verdict</source>
         <translation>Verdict</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="99"/>
+        <location filename="../app/window/check_panel.cpp" line="105"/>
         <source>Elements</source>
         <translation>Elements</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="99"/>
+        <location filename="../app/window/check_panel.cpp" line="105"/>
         <source>Likely cause</source>
         <translation>Likely cause</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="133"/>
+        <location filename="../app/window/check_panel.cpp" line="147"/>
         <source>Your Program&apos;s Folder</source>
         <translation>Your Program&apos;s Folder</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="176"/>
+        <location filename="../app/window/check_panel.cpp" line="190"/>
         <source>A check is running.</source>
         <translation>A check is running.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="178"/>
+        <location filename="../app/window/check_panel.cpp" line="192"/>
         <source>Give the command that starts your program.</source>
         <translation>Give the command that starts your program.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="181"/>
+        <location filename="../app/window/check_panel.cpp" line="195"/>
         <source>The folder %1 does not exist.</source>
         <translation>The folder %1 does not exist.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="183"/>
+        <location filename="../app/window/check_panel.cpp" line="197"/>
         <source>There is no frame to check against.</source>
         <translation>There is no frame to check against.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="205"/>
+        <location filename="../app/window/check_panel.cpp" line="221"/>
         <source>Checking %1...</source>
         <translation>Checking %1...</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="223"/>
+        <location filename="../app/window/check_panel.cpp" line="239"/>
         <source>cancelled</source>
         <translation>cancelled</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="223"/>
+        <location filename="../app/window/check_panel.cpp" line="239"/>
         <source>done</source>
         <translation>done</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="232"/>
+        <location filename="../app/window/check_panel.cpp" line="249"/>
         <source>Over our image: each vertex that departs, ours a green dot, theirs a red cross, joined by a line.</source>
         <translation>Over our image: each vertex that departs, ours a green dot, theirs a red cross, joined by a line.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="236"/>
+        <location filename="../app/window/check_panel.cpp" line="253"/>
         <source>Over our image: magenta, pixels only we cover; cyan, pixels only they cover.</source>
         <translation>Over our image: magenta, pixels only we cover; cyan, pixels only they cover.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="240"/>
+        <location filename="../app/window/check_panel.cpp" line="257"/>
         <source>Over our image: red, pixels another triangle wins (or at another depth); magenta, only ours keeps one; cyan, only theirs.</source>
         <translation>Over our image: red, pixels another triangle wins (or at another depth); magenta, only ours keeps one; cyan, only theirs.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="244"/>
+        <location filename="../app/window/check_panel.cpp" line="261"/>
         <source>Over our image: red, pixels whose colour differs by more than 1.</source>
         <translation>Over our image: red, pixels whose colour differs by more than 1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="253"/>
+        <location filename="../app/window/check_panel.cpp" line="270"/>
         <source>passed</source>
         <translation>passed</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="255"/>
+        <location filename="../app/window/check_panel.cpp" line="272"/>
         <source>failed</source>
         <translation>failed</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="257"/>
+        <location filename="../app/window/check_panel.cpp" line="274"/>
         <source>unsupported</source>
         <translation>unsupported</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="259"/>
+        <location filename="../app/window/check_panel.cpp" line="276"/>
         <source>broken</source>
         <translation>broken</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="302"/>
+        <location filename="../app/window/check_panel.cpp" line="319"/>
         <source>not applied: %1</source>
         <translation>not applied: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="311"/>
+        <location filename="../app/window/check_panel.cpp" line="328"/>
         <source>Protected by: %1.</source>
         <translation>Protected by: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="312"/>
+        <location filename="../app/window/check_panel.cpp" line="329"/>
         <source>Protected by: %1. Not applied: %2.</source>
         <translation>Protected by: %1. Not applied: %2.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="316"/>
+        <location filename="../app/window/check_panel.cpp" line="333"/>
         <source>Not checked: %1</source>
         <translation>Not checked: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="322"/>
+        <location filename="../app/window/check_panel.cpp" line="339"/>
         <source>%1 of %2 differ</source>
         <translation>%1 of %2 differ</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="338"/>
+        <location filename="../app/window/check_panel.cpp" line="355"/>
         <source>Every stage passed (%1 s).</source>
         <translation>Every stage passed (%1 s).</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="375"/>
+        <location filename="../app/window/check_panel.cpp" line="392"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="379"/>
+        <location filename="../app/window/check_panel.cpp" line="396"/>
         <source>First departure: %1: theirs %2, ours %3</source>
         <translation>First departure: %1: theirs %2, ours %3</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="383"/>
+        <location filename="../app/window/check_panel.cpp" line="400"/>
         <source>Likely cause: %1</source>
         <translation>Likely cause: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="385"/>
+        <location filename="../app/window/check_panel.cpp" line="402"/>
         <source>No known mistake of this stage gives their answer.</source>
         <translation>No known mistake of this stage gives their answer.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="386"/>
+        <location filename="../app/window/check_panel.cpp" line="403"/>
         <source>Tolerance: %1</source>
         <translation>Tolerance: %1</translation>
     </message>
@@ -5454,14 +5464,19 @@
         <translation>%1: cannot save the lesson: %2</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_check.cpp" line="17"/>
+        <location filename="../app/window/main_window_check.cpp" line="19"/>
         <source>Check</source>
         <translation>Check</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_check.cpp" line="18"/>
+        <location filename="../app/window/main_window_check.cpp" line="20"/>
         <source>Check your renderer</source>
         <translation>Check your renderer</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_check.cpp" line="28"/>
+        <source>Cannot write their frame to %1</source>
+        <translation>Cannot write their frame to %1</translation>
     </message>
 </context>
 <context>
@@ -6971,6 +6986,7 @@
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="707"/>
+        <location filename="../views/scanline_view.cpp" line="733"/>
         <source>none</source>
         <translation>none</translation>
     </message>
@@ -6995,132 +7011,147 @@
         <translation>Here the additions are seed 001&apos;s DDA, in double: an edge that lands a hair below a row in double leaves that row to the triangle above, where an exact walk would find the edge through the row&apos;s samples.</translation>
     </message>
     <message>
+        <location filename="../views/scanline_view.cpp" line="733"/>
+        <source>%1 to %2</source>
+        <translation>%1 to %2</translation>
+    </message>
+    <message>
         <location filename="../views/scanline_view.cpp" line="737"/>
+        <source>Your renderer: no pixel on this row (ours: %1).</source>
+        <translation>Your renderer: no pixel on this row (ours: %1).</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="741"/>
+        <source>Your renderer: pixels %1 to %2 (ours: %3).</source>
+        <translation>Your renderer: pixels %1 to %2 (ours: %3).</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="761"/>
         <source>%1(%2) = %3, where the %4 edge crosses its first row</source>
         <translation>%1(%2) = %3, where the %4 edge crosses its first row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="743"/>
+        <location filename="../views/scanline_view.cpp" line="767"/>
         <source>%1(%2) = %3, where the %4 edge crosses the first row on the screen</source>
         <translation>%1(%2) = %3, where the %4 edge crosses the first row on the screen</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="752"/>
+        <location filename="../views/scanline_view.cpp" line="776"/>
         <source>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</source>
         <translation>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="767"/>
+        <location filename="../views/scanline_view.cpp" line="791"/>
         <source>Scanline y = %1</source>
         <translation>Scanline y = %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="769"/>
+        <location filename="../views/scanline_view.cpp" line="793"/>
         <source>(sampled at y = %1)</source>
         <translation>(sampled at y = %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="781"/>
+        <location filename="../views/scanline_view.cpp" line="805"/>
         <source>Seed 001&apos;s DDA: x_left and x_right are sums in double, one addition of dx/dy a row, the rounding of each carried along (no snapping). Pixels x = ceil(x_left) = %1 while x &amp;lt; x_right: up to ceil(x_right) &amp;minus; 1 = %2 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Seed 001&apos;s DDA: x_left and x_right are sums in double, one addition of dx/dy a row, the rounding of each carried along (no snapping). Pixels x = ceil(x_left) = %1 while x &amp;lt; x_right: up to ceil(x_right) &amp;minus; 1 = %2 (a sample exactly on the right edge belongs to the next triangle).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="788"/>
+        <location filename="../views/scanline_view.cpp" line="812"/>
         <source>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="795"/>
+        <location filename="../views/scanline_view.cpp" line="819"/>
         <source>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</source>
         <translation>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="803"/>
+        <location filename="../views/scanline_view.cpp" line="827"/>
         <source>No pixel on this row</source>
         <translation>No pixel on this row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="804"/>
+        <location filename="../views/scanline_view.cpp" line="828"/>
         <source>the edges cross it between two samples.</source>
         <translation>the edges cross it between two samples.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="805"/>
+        <location filename="../views/scanline_view.cpp" line="829"/>
         <source>they are all off the screen.</source>
         <translation>they are all off the screen.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="808"/>
+        <location filename="../views/scanline_view.cpp" line="832"/>
         <source>Span [%1, %2): 1 pixel.</source>
         <translation>Span [%1, %2): 1 pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="809"/>
+        <location filename="../views/scanline_view.cpp" line="833"/>
         <source>Span [%1, %2): %3 pixels.</source>
         <translation>Span [%1, %2): %3 pixels.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="812"/>
+        <location filename="../views/scanline_view.cpp" line="836"/>
         <source>(cut to the screen&apos;s columns 0 to %1)</source>
         <translation>(cut to the screen&apos;s columns 0 to %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="815"/>
+        <location filename="../views/scanline_view.cpp" line="839"/>
         <source>The pixel at the cursor is x = %1.</source>
         <translation>The pixel at the cursor is x = %1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="832"/>
+        <location filename="../views/scanline_view.cpp" line="857"/>
         <source>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</source>
         <translation>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="837"/>
+        <location filename="../views/scanline_view.cpp" line="862"/>
         <source>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</source>
         <translation>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="839"/>
+        <location filename="../views/scanline_view.cpp" line="864"/>
         <source>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</source>
         <translation>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="844"/>
+        <location filename="../views/scanline_view.cpp" line="869"/>
         <source>depth</source>
         <translation>depth</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="844"/>
+        <location filename="../views/scanline_view.cpp" line="869"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="850"/>
+        <location filename="../views/scanline_view.cpp" line="875"/>
         <source>not computed (nothing is lit)</source>
         <translation>not computed (nothing is lit)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="851"/>
+        <location filename="../views/scanline_view.cpp" line="876"/>
         <source>zero</source>
         <translation>zero</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="868"/>
+        <location filename="../views/scanline_view.cpp" line="893"/>
         <source>Pixel (x, y) is sampled at the point (x, y) itself.</source>
         <translation>Pixel (x, y) is sampled at the point (x, y) itself.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="869"/>
+        <location filename="../views/scanline_view.cpp" line="894"/>
         <source>Pixel (x, y) is sampled at (x + %1, y + %1).</source>
         <translation>Pixel (x, y) is sampled at (x + %1, y + %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="872"/>
+        <location filename="../views/scanline_view.cpp" line="897"/>
         <source>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</source>
         <translation>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="875"/>
+        <location filename="../views/scanline_view.cpp" line="900"/>
         <source>, with the barycentrics weighted by 1/w (perspective-correct)</source>
         <translation>, with the barycentrics weighted by 1/w (perspective-correct)</translation>
     </message>

@@ -3191,162 +3191,172 @@
         <translation>Encadeada</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="82"/>
+        <location filename="../app/window/check_panel.cpp" line="83"/>
         <source>Give each stage your program&apos;s own earlier answers as its input, to see how errors add up (unticked, each stage gets RasterLab&apos;s, so no mistake hides another)</source>
         <translation>Dá a cada etapa as respostas anteriores do seu próprio programa como entrada, para ver como os erros se somam (desmarcada, cada etapa recebe as do RasterLab, e nenhum erro esconde outro)</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="99"/>
+        <location filename="../app/window/check_panel.cpp" line="91"/>
+        <source>Compare Their Frame</source>
+        <translation>Comparar o Quadro Deles</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="92"/>
+        <source>Their whole frame in the Compare dock: each pixel&apos;s colour beside ours, and the Phong term that would have to change</source>
+        <translation>O quadro inteiro deles no painel Comparar: a cor de cada pixel ao lado da nossa, e o termo de Phong que teria de mudar</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="105"/>
         <source>Stage</source>
         <translation>Etapa</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="99"/>
+        <location filename="../app/window/check_panel.cpp" line="105"/>
         <source>Verdict</source>
         <translation>Veredito</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="99"/>
+        <location filename="../app/window/check_panel.cpp" line="105"/>
         <source>Elements</source>
         <translation>Elementos</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="99"/>
+        <location filename="../app/window/check_panel.cpp" line="105"/>
         <source>Likely cause</source>
         <translation>Causa provável</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="133"/>
+        <location filename="../app/window/check_panel.cpp" line="147"/>
         <source>Your Program&apos;s Folder</source>
         <translation>A Pasta do Seu Programa</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="176"/>
+        <location filename="../app/window/check_panel.cpp" line="190"/>
         <source>A check is running.</source>
         <translation>Uma verificação está em andamento.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="178"/>
+        <location filename="../app/window/check_panel.cpp" line="192"/>
         <source>Give the command that starts your program.</source>
         <translation>Informe o comando que inicia o seu programa.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="181"/>
+        <location filename="../app/window/check_panel.cpp" line="195"/>
         <source>The folder %1 does not exist.</source>
         <translation>A pasta %1 não existe.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="183"/>
+        <location filename="../app/window/check_panel.cpp" line="197"/>
         <source>There is no frame to check against.</source>
         <translation>Não há quadro com que comparar.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="205"/>
+        <location filename="../app/window/check_panel.cpp" line="221"/>
         <source>Checking %1...</source>
         <translation>Verificando %1...</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="223"/>
+        <location filename="../app/window/check_panel.cpp" line="239"/>
         <source>cancelled</source>
         <translation>cancelada</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="223"/>
+        <location filename="../app/window/check_panel.cpp" line="239"/>
         <source>done</source>
         <translation>concluída</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="232"/>
+        <location filename="../app/window/check_panel.cpp" line="249"/>
         <source>Over our image: each vertex that departs, ours a green dot, theirs a red cross, joined by a line.</source>
         <translation>Sobre a nossa imagem: cada vértice que se desvia, o nosso um ponto verde, o deles uma cruz vermelha, unidos por uma linha.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="236"/>
+        <location filename="../app/window/check_panel.cpp" line="253"/>
         <source>Over our image: magenta, pixels only we cover; cyan, pixels only they cover.</source>
         <translation>Sobre a nossa imagem: magenta, pixels que só nós cobrimos; ciano, pixels que só eles cobrem.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="240"/>
+        <location filename="../app/window/check_panel.cpp" line="257"/>
         <source>Over our image: red, pixels another triangle wins (or at another depth); magenta, only ours keeps one; cyan, only theirs.</source>
         <translation>Sobre a nossa imagem: vermelho, pixels que outro triângulo ganha (ou com outra profundidade); magenta, só o nosso guarda um; ciano, só o deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="244"/>
+        <location filename="../app/window/check_panel.cpp" line="261"/>
         <source>Over our image: red, pixels whose colour differs by more than 1.</source>
         <translation>Sobre a nossa imagem: vermelho, pixels cuja cor difere em mais de 1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="253"/>
+        <location filename="../app/window/check_panel.cpp" line="270"/>
         <source>passed</source>
         <translation>passou</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="255"/>
+        <location filename="../app/window/check_panel.cpp" line="272"/>
         <source>failed</source>
         <translation>falhou</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="257"/>
+        <location filename="../app/window/check_panel.cpp" line="274"/>
         <source>unsupported</source>
         <translation>não suportada</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="259"/>
+        <location filename="../app/window/check_panel.cpp" line="276"/>
         <source>broken</source>
         <translation>quebrou</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="302"/>
+        <location filename="../app/window/check_panel.cpp" line="319"/>
         <source>not applied: %1</source>
         <translation>não aplicado: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="311"/>
+        <location filename="../app/window/check_panel.cpp" line="328"/>
         <source>Protected by: %1.</source>
         <translation>Protegido por: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="312"/>
+        <location filename="../app/window/check_panel.cpp" line="329"/>
         <source>Protected by: %1. Not applied: %2.</source>
         <translation>Protegido por: %1. Não aplicado: %2.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="316"/>
+        <location filename="../app/window/check_panel.cpp" line="333"/>
         <source>Not checked: %1</source>
         <translation>Não verificada: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="322"/>
+        <location filename="../app/window/check_panel.cpp" line="339"/>
         <source>%1 of %2 differ</source>
         <translation>%1 de %2 diferem</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="338"/>
+        <location filename="../app/window/check_panel.cpp" line="355"/>
         <source>Every stage passed (%1 s).</source>
         <translation>Todas as etapas passaram (%1 s).</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="375"/>
+        <location filename="../app/window/check_panel.cpp" line="392"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="379"/>
+        <location filename="../app/window/check_panel.cpp" line="396"/>
         <source>First departure: %1: theirs %2, ours %3</source>
         <translation>Primeiro desvio: %1: o deles %2, o nosso %3</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="383"/>
+        <location filename="../app/window/check_panel.cpp" line="400"/>
         <source>Likely cause: %1</source>
         <translation>Causa provável: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="385"/>
+        <location filename="../app/window/check_panel.cpp" line="402"/>
         <source>No known mistake of this stage gives their answer.</source>
         <translation>Nenhum erro conhecido desta etapa dá a resposta deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="386"/>
+        <location filename="../app/window/check_panel.cpp" line="403"/>
         <source>Tolerance: %1</source>
         <translation>Tolerância: %1</translation>
     </message>
@@ -5454,14 +5464,19 @@
         <translation>%1: não é possível salvar a aula: %2</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_check.cpp" line="17"/>
+        <location filename="../app/window/main_window_check.cpp" line="19"/>
         <source>Check</source>
         <translation>Verificar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_check.cpp" line="18"/>
+        <location filename="../app/window/main_window_check.cpp" line="20"/>
         <source>Check your renderer</source>
         <translation>Verifique o seu renderizador</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_check.cpp" line="28"/>
+        <source>Cannot write their frame to %1</source>
+        <translation>Não é possível gravar o quadro deles em %1</translation>
     </message>
 </context>
 <context>
@@ -6971,6 +6986,7 @@
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="707"/>
+        <location filename="../views/scanline_view.cpp" line="733"/>
         <source>none</source>
         <translation>nenhuma</translation>
     </message>
@@ -6995,132 +7011,147 @@
         <translation>Aqui as somas são o DDA da semente 001, em double: uma aresta que fica um fio abaixo de uma linha em double deixa essa linha para o triângulo de cima, onde um percurso exato acharia a aresta passando pelas amostras da linha.</translation>
     </message>
     <message>
+        <location filename="../views/scanline_view.cpp" line="733"/>
+        <source>%1 to %2</source>
+        <translation>%1 a %2</translation>
+    </message>
+    <message>
         <location filename="../views/scanline_view.cpp" line="737"/>
+        <source>Your renderer: no pixel on this row (ours: %1).</source>
+        <translation>O seu renderizador: nenhum pixel nesta linha (o nosso: %1).</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="741"/>
+        <source>Your renderer: pixels %1 to %2 (ours: %3).</source>
+        <translation>O seu renderizador: pixels %1 a %2 (o nosso: %3).</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="761"/>
         <source>%1(%2) = %3, where the %4 edge crosses its first row</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza sua primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="743"/>
+        <location filename="../views/scanline_view.cpp" line="767"/>
         <source>%1(%2) = %3, where the %4 edge crosses the first row on the screen</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza a primeira linha na tela</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="752"/>
+        <location filename="../views/scanline_view.cpp" line="776"/>
         <source>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</source>
         <translation>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 ao longo da aresta %7</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="767"/>
+        <location filename="../views/scanline_view.cpp" line="791"/>
         <source>Scanline y = %1</source>
         <translation>Linha de varredura y = %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="769"/>
+        <location filename="../views/scanline_view.cpp" line="793"/>
         <source>(sampled at y = %1)</source>
         <translation>(amostrada em y = %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="781"/>
+        <location filename="../views/scanline_view.cpp" line="805"/>
         <source>Seed 001&apos;s DDA: x_left and x_right are sums in double, one addition of dx/dy a row, the rounding of each carried along (no snapping). Pixels x = ceil(x_left) = %1 while x &amp;lt; x_right: up to ceil(x_right) &amp;minus; 1 = %2 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>DDA da semente 001: x_left e x_right são somas em double, uma soma de dx/dy por linha, o arredondamento de cada uma levado adiante (sem arredondar os vértices para a grade). Pixels x = ceil(x_left) = %1 enquanto x &amp;lt; x_right: até ceil(x_right) &amp;minus; 1 = %2 (uma amostra exatamente na aresta direita pertence ao triângulo seguinte).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="788"/>
+        <location filename="../views/scanline_view.cpp" line="812"/>
         <source>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Regra top-left: as amostras com x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 a ceil(x_right%2) &amp;minus; 1 = %4 (uma amostra exatamente na aresta direita pertence ao triângulo seguinte).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="795"/>
+        <location filename="../views/scanline_view.cpp" line="819"/>
         <source>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</source>
         <translation>Regra inclusiva: os pixels de ceil(x_left%1) = %2 a floor(x_right%1) = %3, as duas pontas incluídas (uma amostra exatamente sobre uma aresta está dentro).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="803"/>
+        <location filename="../views/scanline_view.cpp" line="827"/>
         <source>No pixel on this row</source>
         <translation>Nenhum pixel nesta linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="804"/>
+        <location filename="../views/scanline_view.cpp" line="828"/>
         <source>the edges cross it between two samples.</source>
         <translation>as arestas a cruzam entre duas amostras.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="805"/>
+        <location filename="../views/scanline_view.cpp" line="829"/>
         <source>they are all off the screen.</source>
         <translation>estão todos fora da tela.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="808"/>
+        <location filename="../views/scanline_view.cpp" line="832"/>
         <source>Span [%1, %2): 1 pixel.</source>
         <translation>Segmento [%1, %2): 1 pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="809"/>
+        <location filename="../views/scanline_view.cpp" line="833"/>
         <source>Span [%1, %2): %3 pixels.</source>
         <translation>Segmento [%1, %2): %3 pixels.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="812"/>
+        <location filename="../views/scanline_view.cpp" line="836"/>
         <source>(cut to the screen&apos;s columns 0 to %1)</source>
         <translation>(cortado às colunas 0 a %1 da tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="815"/>
+        <location filename="../views/scanline_view.cpp" line="839"/>
         <source>The pixel at the cursor is x = %1.</source>
         <translation>O pixel no cursor é x = %1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="832"/>
+        <location filename="../views/scanline_view.cpp" line="857"/>
         <source>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</source>
         <translation>Nas pontas do segmento, as coordenadas baricêntricas (&amp;alpha;, &amp;beta;, &amp;gamma;) da amostra em relação ao triângulo de tela P1 %1, P2 %2, P3 %3 dão a profundidade, a partir dos z dos vértices, z1 = %4, z2 = %5, z3 = %6:</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="837"/>
+        <location filename="../views/scanline_view.cpp" line="862"/>
         <source>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</source>
         <translation>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (com correção de perspectiva: 1/z é linear na tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="839"/>
+        <location filename="../views/scanline_view.cpp" line="864"/>
         <source>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</source>
         <translation>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="844"/>
+        <location filename="../views/scanline_view.cpp" line="869"/>
         <source>depth</source>
         <translation>profundidade</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="844"/>
+        <location filename="../views/scanline_view.cpp" line="869"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="850"/>
+        <location filename="../views/scanline_view.cpp" line="875"/>
         <source>not computed (nothing is lit)</source>
         <translation>não calculada (nada é iluminado)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="851"/>
+        <location filename="../views/scanline_view.cpp" line="876"/>
         <source>zero</source>
         <translation>nula</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="868"/>
+        <location filename="../views/scanline_view.cpp" line="893"/>
         <source>Pixel (x, y) is sampled at the point (x, y) itself.</source>
         <translation>O pixel (x, y) é amostrado no próprio ponto (x, y).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="869"/>
+        <location filename="../views/scanline_view.cpp" line="894"/>
         <source>Pixel (x, y) is sampled at (x + %1, y + %1).</source>
         <translation>O pixel (x, y) é amostrado em (x + %1, y + %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="872"/>
+        <location filename="../views/scanline_view.cpp" line="897"/>
         <source>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</source>
         <translation>A normal é N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1), a partir das normais dos vértices, normalizada%1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="875"/>
+        <location filename="../views/scanline_view.cpp" line="900"/>
         <source>, with the barycentrics weighted by 1/w (perspective-correct)</source>
         <translation>, com as coordenadas baricêntricas ponderadas por 1/w (correção de perspectiva)</translation>
     </message>

@@ -719,6 +719,33 @@ QString ScanlineView::edgeTableHtml(const ScanlineModel& m) const {
 }
 
 // The scanline shown: its edges' crossings stepped by dx/dy, the fill rule and the span.
+void ScanlineView::setTheirSpans(std::shared_ptr<const rl::FrameTrace> frame, TheirSpans spans) {
+    m_theirFrame = frame;
+    m_theirSpans = std::move(spans);
+    refresh();
+}
+
+QString ScanlineView::theirSpanHtml(const ScanlineModel& m) const {
+    const auto checked = m_theirFrame.lock();
+    if (!checked || checked != m_inspection->frame() || m_theirSpans.empty() || !m.row) return {};
+    const ScanRowInfo& row = *m.row;
+    const auto it = m_theirSpans.find({m.triangle, row.y});
+    const QString ours =
+        row.empty() ? tr("none") : tr("%1 to %2").arg(row.xBegin).arg(row.xEnd - 1);
+    if (it == m_theirSpans.end())
+        return row.empty() ? QString()
+                           : QStringLiteral(" <font color='#c81e1e'><b>") +
+                                 tr("Your renderer: no pixel on this row (ours: %1).").arg(ours) +
+                                 QStringLiteral("</b></font>");
+    const auto [first, last] = it->second;
+    const bool same = !row.empty() && first == row.xBegin && last == row.xEnd - 1;
+    const QString text =
+        tr("Your renderer: pixels %1 to %2 (ours: %3).").arg(first).arg(last).arg(ours);
+    return same ? QStringLiteral(" <font color='#148c28'>") + text + QStringLiteral("</font>")
+                : QStringLiteral(" <font color='#c81e1e'><b>") + text +
+                      QStringLiteral("</b></font>");
+}
+
 QString ScanlineView::scanlineHtml(const ScanlineModel& m, const rl::Scene& scene) const {
     const rl::RasterRules& rules = scene.rules;
     const bool topLeft = rules.fill == rl::RasterRules::FillRule::TopLeft;
@@ -747,8 +774,7 @@ QString ScanlineView::scanlineHtml(const ScanlineModel& m, const rl::Scene& scen
                 .arg(which);
         // Under the DDA, the sums as the doubles hold them, every digit.
         const int digits = dda ? 17 : 6;
-        const double previous =
-            dda ? rl::ddaEdgeAtRow(e.top, e.bottom, row.y - 1).x : x - e.dxdy;
+        const double previous = dda ? rl::ddaEdgeAtRow(e.top, e.bottom, row.y - 1).x : x - e.dxdy;
         return tr("%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge")
             .arg(name)
             .arg(row.y)
@@ -813,6 +839,7 @@ QString ScanlineView::scanlineHtml(const ScanlineModel& m, const rl::Scene& scen
     }
     if (m.currentPixel)
         html += QLatin1Char(' ') + tr("The pixel at the cursor is x = %1.").arg(*m.currentPixel);
+    html += theirSpanHtml(m);
     html += QStringLiteral("</p>");
     return html;
 }

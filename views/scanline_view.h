@@ -7,6 +7,10 @@
 // on the pixel grid around the scanline, and the lecture's explanation with these numbers.
 #pragma once
 
+#include <map>
+#include <memory>
+#include <utility>
+
 #include <QRect>
 #include <QString>
 
@@ -82,6 +86,10 @@ public:
     // selected (at the start or the end of the frame, or without a replay).
     bool followsCursor() const { return m_followsCursor; }
     QString titleText() const;
+    // A student's spans (Check My Renderer...), for the frame they were checked on: each
+    // (triangle, row) to its first and last pixel; the explanation puts them beside ours.
+    using TheirSpans = std::map<std::pair<std::uint32_t, int>, std::pair<int, int>>;
+    void setTheirSpans(std::shared_ptr<const rl::FrameTrace> frame, TheirSpans spans);
     // The window of pixels drawn: [left, left + width) x [top, top + height).
     QRect drawnWindow() const;
 
@@ -91,6 +99,10 @@ protected:
 
 private:
     void refresh() override;
+    // Their span of the row shown beside ours, or nothing when no check gave spans.
+    QString theirSpanHtml(const ScanlineModel& m) const;
+    std::weak_ptr<const rl::FrameTrace> m_theirFrame;
+    TheirSpans m_theirSpans;
     // The lecture's explanation with this triangle's numbers, section by section.
     QString explanationHtml() const;
     QString edgeTableHtml(const ScanlineModel& m) const;

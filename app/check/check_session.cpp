@@ -251,6 +251,10 @@ CheckReport runCheck(const std::string& command, const std::string& folder,
                     result.problem = records.error().toString();
                 } else {
                     result = (*check)->judge(stage, records.value());
+                    if (stage == Stage::Frame && result.verdict != Verdict::Broken)
+                        sr.theirFrame = StageCheck::theirImage(records.value());
+                    if (stage == Stage::Scan && result.verdict != Verdict::Broken)
+                        sr.theirSpans = records.value()[0].rows;
                     answers[stage] = std::move(records.value());
                 }
             }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/check/stage_check.h"
+#include "app/check/stage_mistakes.h"
 #include "app/check/student_program.h"
 
 namespace rasterlab::check {
@@ -25,6 +26,8 @@ struct SceneReport {
     int width = 0, height = 0;
     std::string error;  // the protocol cannot carry this scene: why (no stages then)
     std::vector<StageResult> stages;
+    rl::Rgba8Image theirFrame;    // the frame stage's answer, when it gave one that reads
+    std::vector<Row> theirSpans;  // the scan stage's answer (t y first last), likewise
 };
 
 struct CheckReport {

@@ -88,6 +88,12 @@ CheckPanel::CheckPanel(Inspection* inspection, QWidget* parent)
     buttons->addWidget(m_cancel);
     buttons->addWidget(m_progress, 1);
     buttons->addWidget(m_stop);
+    m_compare = new QPushButton(tr("Compare Their Frame"));
+    m_compare->setToolTip(
+        tr("Their whole frame in the Compare dock: each pixel's colour beside "
+           "ours, and the Phong term that would have to change"));
+    m_compare->setEnabled(false);
+    buttons->addWidget(m_compare);
     layout->addLayout(buttons);
 
     m_protections = new QLabel;
@@ -129,6 +135,13 @@ CheckPanel::CheckPanel(Inspection* inspection, QWidget* parent)
     });
     connect(m_cancel, &QPushButton::clicked, this, &CheckPanel::cancel);
     connect(m_stop, &QPushButton::clicked, this, &CheckPanel::stopAtFirstDeparture);
+    connect(m_compare, &QPushButton::clicked, this, [this] {
+        if (!m_report || m_report->scenes.empty()) return;
+        const rl::Rgba8Image& f = m_report->scenes.front().theirFrame;
+        if (f.rgba.empty()) return;
+        emit compareFrame(
+            QImage(f.rgba.data(), f.width, f.height, f.width * 4, QImage::Format_RGBA8888).copy());
+    });
     connect(m_browse, &QPushButton::clicked, this, [this] {
         const QString dir =
             QFileDialog::getExistingDirectory(this, tr("Your Program's Folder"), m_folder->text());
@@ -183,6 +196,7 @@ QString CheckPanel::start() {
     const auto& frame = m_inspection->frame();
     if (!frame || !frame->scene) return tr("There is no frame to check against.");
     m_image = m_inspection->frameImage();
+    m_frame = frame;
     m_cancelled = false;
     check::CheckOptions options;
     options.limits.cancel = &m_cancelled;
@@ -200,6 +214,7 @@ QString CheckPanel::start() {
         QtConcurrent::run([=] { return check::runCheck(cmd, dir, scenes, options, progress); }));
     m_run->setEnabled(false);
     m_cancel->setEnabled(true);
+    m_compare->setEnabled(false);
     m_stop->setEnabled(false);
     m_progress->setRange(0, int(check::kStages.size()));
     m_progress->setValue(0);
@@ -222,6 +237,8 @@ void CheckPanel::onFinished() {
     m_run->setEnabled(true);
     m_cancel->setEnabled(false);
     m_progress->setFormat(m_report->cancelled ? tr("cancelled") : tr("done"));
+    m_compare->setEnabled(!m_report->scenes.empty() &&
+                          !m_report->scenes.front().theirFrame.rgba.empty());
     showReport();
     emit finished();
 }

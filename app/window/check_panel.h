@@ -17,6 +17,7 @@
 
 #include "app/check/check_session.h"
 #include "pipeline/core/stage_id.h"
+#include "pipeline/render/frame_trace.h"
 
 class QCheckBox;
 class QLabel;
@@ -46,6 +47,8 @@ public:
     void cancel();
     bool isRunning() const { return m_watcher.isRunning(); }
     const check::CheckReport* report() const { return m_report ? &*m_report : nullptr; }
+    // The frame the last check ran on.
+    const std::shared_ptr<const rl::FrameTrace>& checkedFrame() const { return m_frame; }
 
     // The lecture's stage a protocol stage belongs to (the frame: shading, its last).
     static rl::StageId lectureStage(check::Stage stage);
@@ -75,8 +78,13 @@ public:
     // What the picture shows of a stage's departures (empty when there are none).
     static QString legend(check::Stage stage, bool any);
 
+    QPushButton* compareButton() const { return m_compare; }
+
 signals:
     void finished();  // a check ended, or was cancelled: the verdicts changed
+    // Compare Their Frame: their frame's image, for the Compare dock (its pixels' colours
+    // beside ours and the Phong term that would have to change).
+    void compareFrame(const QImage& theirs);
     void settingsChanged();
 
 private:
@@ -93,6 +101,7 @@ private:
     QCheckBox* m_chain = nullptr;
     QPushButton* m_cancel = nullptr;
     QPushButton* m_stop = nullptr;
+    QPushButton* m_compare = nullptr;
     QProgressBar* m_progress = nullptr;
     QLabel* m_protections = nullptr;
     QTreeWidget* m_stages = nullptr;
@@ -104,6 +113,7 @@ private:
     QFutureWatcher<check::CheckReport> m_watcher;
     std::optional<check::CheckReport> m_report;
     QImage m_image;  // our frame when the check started
+    std::shared_ptr<const rl::FrameTrace> m_frame;
 };
 
 // Our image with a stage's departures over it.

@@ -18,6 +18,7 @@
 #include <QMainWindow>
 #include <QElapsedTimer>
 #include <QPointer>
+#include <QTemporaryDir>
 #include <QTimer>
 
 #include <memory>
@@ -354,6 +355,7 @@ private:
     CheckPanel* m_check = nullptr;
     QDockWidget* m_checkDock = nullptr;
     bool m_checkShown = false;  // the Check dock was shown once (floated the first time)
+    QTemporaryDir m_checkFrames;  // their frame, written for the Compare dock
     QListWidget* m_messages = nullptr;
     QTextBrowser* m_summary = nullptr;
     QLabel* m_pixelLabel = nullptr;

@@ -1,5 +1,6 @@
 // MainWindow's Check dock (File > Check My Renderer...): a student's program checked stage by
 // stage on a worker (check_panel.h), and the stage strip's marks.
+#include <QDir>
 #include <QDockWidget>
 
 #include <algorithm>
@@ -7,6 +8,7 @@
 #include "app/window/check_panel.h"
 #include "app/window/main_window.h"
 #include "views/projection_view.h"
+#include "views/scanline_view.h"
 #include "views/stage_strip.h"
 #include "views/zbuffer_view.h"
 
@@ -19,6 +21,15 @@ void MainWindow::setUpCheckDock(QDockWidget* beside) {
     tabifyDockWidget(beside, m_checkDock);
     m_checkDock->hide();
     connect(m_check, &CheckPanel::finished, this, &MainWindow::showCheckMarks);
+    // Their frame in the Compare dock, through a PNG of its own as any image compared.
+    connect(m_check, &CheckPanel::compareFrame, this, [this](const QImage& theirs) {
+        const QString path = QDir(m_checkFrames.path()).filePath(QStringLiteral("their-frame.png"));
+        if (!theirs.save(path, "PNG")) {
+            showError(tr("Cannot write their frame to %1").arg(path));
+            return;
+        }
+        compareWithImage(path);
+    });
     // The marks belong to the scene checked: a new scene drops them.
     connect(m_inspection, &Inspection::frameChanged, this, [this] {
         const auto* report = m_check->report();
@@ -58,6 +69,17 @@ void MainWindow::showCheckMarks() {
                     for (const check::Departure& d : r.departures)
                         pixels.emplace_back(int(d.ours.x), int(d.ours.y));
     m_zbuffer->markPixels(pixels);
+    // The scan view puts their span of the row shown beside ours.
+    ScanlineView::TheirSpans spans;
+    if (const check::CheckReport* report = m_check->report(); report && !report->scenes.empty())
+        for (const check::Row& r : report->scenes.front().theirSpans) {
+            const auto key = std::make_pair(std::uint32_t(r[0]), int(r[1]));
+            const auto it = spans.find(key);
+            spans[key] = it == spans.end() ? std::make_pair(int(r[2]), int(r[3]))
+                                           : std::make_pair(std::min(it->second.first, int(r[2])),
+                                                            std::max(it->second.second, int(r[3])));
+        }
+    m_scanline->setTheirSpans(m_check->checkedFrame(), std::move(spans));
     if (!m_checkDock->isHidden()) m_checkDock->raise();
 }
 
