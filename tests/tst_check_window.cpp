@@ -46,6 +46,14 @@ QString pythonFolder() {
     return testing::sourceDir() + "/examples/student/python";
 }
 
+// Checks the example student's renderer with these switches in the panel, and waits for the
+// check to end; false when it does not start or end.
+bool checkWith(CheckPanel* panel, const char* switches) {
+    panel->setCommand(QStringLiteral(RASTERLAB_PYTHON " stages.py ") + QLatin1String(switches));
+    QSignalSpy finished(panel, &CheckPanel::finished);
+    return panel->start().isEmpty() && finished.wait(kTimeoutMs);
+}
+
 }  // namespace
 
 class TestCheckWindow : public QObject {
@@ -113,10 +121,7 @@ private slots:
     // Their frame goes to the Compare dock, whose diagnosis names the mistake.
     void comparesTheirFrame() {
         CheckPanel* panel = m_window.checkPanel();
-        panel->setCommand(QStringLiteral(RASTERLAB_PYTHON " stages.py --ambient-times-od"));
-        QSignalSpy finished(panel, &CheckPanel::finished);
-        QVERIFY(panel->start().isEmpty());
-        QVERIFY(finished.wait(kTimeoutMs));
+        QVERIFY(checkWith(panel, "--ambient-times-od"));
         QVERIFY(panel->compareButton()->isEnabled());
         QTest::mouseClick(panel->compareButton(), Qt::LeftButton);
         const rl::ImageComparison* comparison = m_window.comparePanel()->comparison();
@@ -128,10 +133,7 @@ private slots:
     // A departure at a pixel: the frame is stepped to the first fragment written there.
     void stopsAtThePixel() {
         CheckPanel* panel = m_window.checkPanel();
-        panel->setCommand(QStringLiteral(RASTERLAB_PYTHON " stages.py --span-end-exclusive"));
-        QSignalSpy finished(panel, &CheckPanel::finished);
-        QVERIFY(panel->start().isEmpty());
-        QVERIFY(finished.wait(kTimeoutMs));
+        QVERIFY(checkWith(panel, "--span-end-exclusive"));
         QCOMPARE(int(*panel->selectedStage()), int(check::Stage::Scan));
         const check::StageResult* r = panel->selectedResult();
         QVERIFY(r && !r->departures.empty());
@@ -156,11 +158,8 @@ private slots:
     // Chained, the basis's mistake reaches every stage after it.
     void chainedFromTheWindow() {
         CheckPanel* panel = m_window.checkPanel();
-        panel->setCommand(QStringLiteral(RASTERLAB_PYTHON " stages.py --u-v-cross-n"));
         panel->chainBox()->setChecked(true);
-        QSignalSpy finished(panel, &CheckPanel::finished);
-        QVERIFY(panel->start().isEmpty());
-        QVERIFY(finished.wait(kTimeoutMs));
+        QVERIFY(checkWith(panel, "--u-v-cross-n"));
         panel->chainBox()->setChecked(false);
         QVERIFY(panel->report()->chained);
         for (rl::StageId stage : rl::kAllStages)
@@ -170,10 +169,7 @@ private slots:
     // The z-buffer view marks the pixels whose winner differs.
     void zbufferViewMarksThePixels() {
         CheckPanel* panel = m_window.checkPanel();
-        panel->setCommand(QStringLiteral(RASTERLAB_PYTHON " stages.py --depth-reversed"));
-        QSignalSpy finished(panel, &CheckPanel::finished);
-        QVERIFY(panel->start().isEmpty());
-        QVERIFY(finished.wait(kTimeoutMs));
+        QVERIFY(checkWith(panel, "--depth-reversed"));
         QCOMPARE(int(*panel->selectedStage()), int(check::Stage::ZBuffer));
         const check::StageResult* r = panel->selectedResult();
         QVERIFY(r && r->differing > 100);
