@@ -403,6 +403,55 @@ private slots:
         QVERIFY(QFile::exists(root.filePath("grades/reports/hangs.json")));
     }
 
+    // HW2 submissions: each program run on a command file in a copy of its folder, the PNG
+    // it names compared with ours. RasterLab's own `run` stands for a right program (this
+    // tests the grading, not a diagnosis); one writes a black image, one hangs.
+    void gradeRunsHw2Programs() {
+        QTemporaryDir dir;
+        const QDir root(dir.path());
+        const auto write = [&](const QString& name, const QByteArray& text) {
+            QVERIFY(root.mkpath(QFileInfo(root.filePath(name)).path()));
+            QFile file(root.filePath(name));
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            file.write(text);
+        };
+        write("mine.txt",
+              "png 64 64 mine.png\nxyz -0.5 -0.4 0\nxyz 0.5 -0.4 0\nxyz 0.1 0.5 0\n"
+              "frustum -0.3 0.3 -0.3 0.3 1 10\ntranslate 0 0 -3\ncolor 1 0.5 0\n"
+              "trif 1 2 3\n");
+        write("class/right/run", testing::cliPath().toUtf8() + " run\n");
+        write("class/black/black.py",
+              "import struct, zlib\n"
+              "def chunk(k, d): return struct.pack('>I', len(d)) + k + d + "
+              "struct.pack('>I', zlib.crc32(k + d))\n"
+              "raw = b''.join(b'\\0' + b'\\0\\0\\0' * 64 for _ in range(64))\n"
+              "open('mine.png', 'wb').write(b'\\x89PNG\\r\\n\\x1a\\n' + chunk(b'IHDR', "
+              "struct.pack('>IIBBBBB', 64, 64, 8, 2, 0, 0, 0)) + chunk(b'IDAT', "
+              "zlib.compress(raw)) + "
+              "chunk(b'IEND', b''))\n");
+        write("class/black/run", python().toUtf8() + " black.py\n");
+        write("class/hangs/run", "sleep 1000; true\n");
+        QElapsedTimer clock;
+        clock.start();
+        testing::CliRun run;
+        QVERIFY2(testing::runCli({"grade", "--submissions", root.filePath("class"), "--hw2",
+                                  root.filePath("mine.txt"), "--timeout", "3", "--format", "csv"},
+                                 dir.path(), run),
+                 qPrintable(run.problem));
+        QVERIFY(clock.elapsed() < 60000);
+        QCOMPARE(run.exitCode, 0);
+        const QStringList rows = run.out.split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(rows.size(), 4);
+        QCOMPARE(rows[0], QStringLiteral("submission,mine.png,passed,note"));
+        QVERIFY2(rows[1].startsWith("black,failed (") && rows[1].endsWith(",no,"),
+                 qPrintable(rows[1]));
+        QVERIFY2(
+            rows[2].startsWith("hangs,not compared,no,the program broke on mine.txt: it did not "
+                               "end within 3 s (the limit for the whole run)"),
+            qPrintable(rows[2]));
+        QCOMPARE(rows[3], QStringLiteral("right,passed (0.00% off),yes,"));
+    }
+
     // Programs that misbehave end within 120 s, with a status below 128 and a message that
     // names what happened.
     void hostileProgramsAreStopped_data() {

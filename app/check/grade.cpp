@@ -91,31 +91,43 @@ rl::Result<std::vector<Submission>> findSubmissions(const std::string& dir) {
     return out;
 }
 
+void forEachInParallel(std::size_t count, int jobs, const std::function<void(std::size_t)>& work,
+                       const std::function<void(std::size_t, int)>& done) {
+    std::atomic<std::size_t> next{0};
+    std::atomic<int> finished{0};
+    std::mutex doneLock;
+    const auto run = [&] {
+        for (std::size_t i = next++; i < count; i = next++) {
+            work(i);
+            const int n = ++finished;
+            if (done) {
+                const std::lock_guard<std::mutex> lock(doneLock);
+                done(i, n);
+            }
+        }
+    };
+    std::vector<std::thread> threads;
+    for (int t = 1; t < std::max(1, jobs); ++t) threads.emplace_back(run);
+    run();
+    for (std::thread& t : threads) t.join();
+}
+
 std::vector<GradeRow> gradeSubmissions(
     const std::vector<Submission>& submissions, const std::vector<CheckScene>& scenes,
     const CheckOptions& options, int jobs,
     const std::function<void(int, int, const std::string&)>& progress) {
     std::vector<GradeRow> rows(submissions.size());
-    std::atomic<std::size_t> next{0};
-    std::atomic<int> done{0};
-    std::mutex report;
-    const auto work = [&] {
-        for (std::size_t i = next++; i < submissions.size(); i = next++) {
+    forEachInParallel(
+        submissions.size(), jobs,
+        [&](std::size_t i) {
             rows[i].submission = submissions[i];
             if (submissions[i].problem.empty())
                 rows[i].report =
                     runCheck(submissions[i].command, submissions[i].folder, scenes, options);
-            const int finished = ++done;
-            if (progress) {
-                const std::lock_guard<std::mutex> lock(report);
-                progress(finished, int(submissions.size()), submissions[i].name);
-            }
-        }
-    };
-    std::vector<std::thread> threads;
-    for (int t = 1; t < std::max(1, jobs); ++t) threads.emplace_back(work);
-    work();
-    for (std::thread& t : threads) t.join();
+        },
+        [&](std::size_t i, int finished) {
+            if (progress) progress(finished, int(submissions.size()), submissions[i].name);
+        });
     return rows;
 }
 

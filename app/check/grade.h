@@ -27,6 +27,11 @@ struct GradeRow {
     CheckReport report;
 };
 
+// Runs work(i) for i = 0 .. count - 1, `jobs` at a time (the calling thread one of them);
+// done(finished) after each, one at a time.
+void forEachInParallel(std::size_t count, int jobs, const std::function<void(std::size_t)>& work,
+                       const std::function<void(std::size_t, int)>& done = {});
+
 // Checks every submission over the scenes, `jobs` at a time; progress hears of each
 // submission as it ends (how many have, of all, and its name).
 std::vector<GradeRow> gradeSubmissions(

@@ -103,7 +103,7 @@ bool sandboxUsable(std::string* reason) {
 }
 
 StudentProgram::StudentProgram(const std::string& command, const std::string& folder,
-                               const Limits& limits)
+                               const Limits& limits, bool inTemporaryFolder)
     : m_limits(limits) {
     static std::once_flag ignorePipe;
     std::call_once(ignorePipe, [] { signal(SIGPIPE, SIG_IGN); });
@@ -111,7 +111,7 @@ StudentProgram::StudentProgram(const std::string& command, const std::string& fo
     m_totalDeadline = m_started + std::chrono::duration_cast<Clock::duration>(
                                       std::chrono::duration<double>(limits.totalSeconds));
     m_requestDeadline = m_totalDeadline;
-    startProcess(command, folder);
+    startProcess(command, folder, inTemporaryFolder);
 }
 
 StudentProgram::~StudentProgram() {
@@ -126,7 +126,9 @@ StudentProgram::~StudentProgram() {
     if (!m_tempFolder.empty()) std::filesystem::remove_all(m_tempFolder, ec);
 }
 
-void StudentProgram::startProcess(const std::string& command, const std::string& folder) {
+void StudentProgram::startProcess(const std::string& command, const std::string& given,
+                                  bool inTemporaryFolder) {
+    std::string folder = given;
     const char* tmp = std::getenv("TMPDIR");
     std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/rasterlab-check-XXXXXX";
     if (!mkdtemp(pattern.data())) {
@@ -135,6 +137,19 @@ void StudentProgram::startProcess(const std::string& command, const std::string&
     }
     m_tempFolder = pattern;
     const std::string errorFile = m_tempFolder + "/stderr.txt";
+    if (inTemporaryFolder) {
+        // A copy of the folder to run in, symbolic links left as links (not followed out).
+        std::error_code ec;
+        folder = m_tempFolder + "/work";
+        std::filesystem::copy(
+            given, folder,
+            std::filesystem::copy_options::recursive | std::filesystem::copy_options::copy_symlinks,
+            ec);
+        if (ec) {
+            fail("cannot copy " + given + " to run in: " + ec.message());
+            return;
+        }
+    }
 
     std::string why;
     const bool sandbox = m_limits.sandbox && sandboxUsable(&why);
@@ -242,8 +257,9 @@ bool StudentProgram::fail(const std::string& message) {
     if (!m_error.empty()) return false;
     m_error = message;
     if (m_pid > 0) {
-        m_error += m_lastLine.empty() ? "; nothing had been read before"
-                                      : "; the last line read was " + shownText(m_lastLine);
+        if (m_talked)  // a program run on a file, not asked over the protocol, reads nothing
+            m_error += m_lastLine.empty() ? "; nothing had been read before"
+                                          : "; the last line read was " + shownText(m_lastLine);
         const std::string tail = errorTail();
         if (!tail.empty()) m_error += "; its standard error ends with " + shownText(tail);
     }
@@ -362,6 +378,7 @@ std::optional<std::string> StudentProgram::readLine() {
 }
 
 bool StudentProgram::send(const std::string& text) {
+    m_talked = true;
     if (!m_error.empty()) return false;
     if (m_pid <= 0) return fail("the program was not started");
     std::size_t sent = 0;
@@ -401,6 +418,42 @@ bool StudentProgram::send(const std::string& text) {
                         (m_reaped ? ending() : std::string(std::strerror(errno))) + ")");
         }
     }
+    return true;
+}
+
+bool StudentProgram::waitForExit() {
+    if (!m_error.empty()) return false;
+    if (m_pid <= 0) return fail("the program was not started");
+    if (m_stdin >= 0) {
+        close(m_stdin);
+        m_stdin = -1;
+    }
+    long long dropped = 0;
+    while (!m_reaped) {
+        if (Clock::now() >= m_totalDeadline) {
+            kill(-m_pid, SIGKILL);
+            kill(m_pid, SIGKILL);
+            reap(true);
+            return fail("it did not end within " + seconds(m_limits.totalSeconds) +
+                        " (the limit for the whole run)");
+        }
+        struct pollfd fd {
+            m_stdout, POLLIN, 0
+        };
+        if (poll(&fd, 1, pollMilliseconds(m_totalDeadline)) > 0) {
+            char chunk[65536];
+            const ssize_t n = read(m_stdout, chunk, sizeof chunk);
+            if (n > 0) dropped += n;
+            if (n == 0) usleep(20000);  // output closed: the program is ending
+        }
+        if (cancelled()) return fail("cancelled");
+        if (dropped > m_limits.answerBytes)
+            return fail("it wrote more than " + std::to_string(m_limits.answerBytes >> 20) +
+                        " MiB on its standard output (the output limit)");
+        reap(false);
+    }
+    const std::string how = ending();
+    if (how != "exit status 0") return fail("it ended with " + how);
     return true;
 }
 

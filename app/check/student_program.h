@@ -35,8 +35,11 @@ struct Limits {
 class StudentProgram {
 public:
     // Starts `command` with /bin/sh in `folder`. Nothing is thrown: a program that cannot be
-    // started gives a process that has ended, whose reads say why.
-    StudentProgram(const std::string& command, const std::string& folder, const Limits& limits);
+    // started gives a process that has ended, whose reads say why. With inTemporaryFolder the
+    // folder is first copied into the temporary folder and the program runs in the copy, where
+    // it may write (an HW2 renderer writes its PNG images beside itself).
+    StudentProgram(const std::string& command, const std::string& folder, const Limits& limits,
+                   bool inTemporaryFolder = false);
     ~StudentProgram();  // kills the program's whole process group
     StudentProgram(const StudentProgram&) = delete;
     StudentProgram& operator=(const StudentProgram&) = delete;
@@ -57,6 +60,13 @@ public:
     std::string errorTail() const;
     // Ends the program: closes its input, waits a moment, then kills its group.
     void stop();
+    // A program that is not asked over the protocol (an HW2 renderer run on a command file):
+    // its input closed, its output read and dropped, until it ends or the whole run's time is
+    // up (then it is killed). False, and error() says why, unless it ended with status 0.
+    bool waitForExit();
+    // The temporary folder (TMPDIR and HOME, writable inside the sandbox); removed with the
+    // program.
+    const std::string& temporaryFolder() const { return m_tempFolder; }
     // How the program ended, as words: "exit status 1", "killed by signal 11 (segmentation
     // fault)"; empty while it runs.
     std::string ending();
@@ -68,7 +78,8 @@ private:
     // Milliseconds to wait in one poll: until the deadline, at most a tenth of a second.
     int pollMilliseconds(std::chrono::steady_clock::time_point deadline) const;
     bool cancelled() const { return m_limits.cancel && m_limits.cancel->load(); }
-    void startProcess(const std::string& command, const std::string& folder);
+    void startProcess(const std::string& command, const std::string& folder,
+                      bool inTemporaryFolder);
     void reap(bool wait);
 
     Limits m_limits;
@@ -79,7 +90,8 @@ private:
     int m_stdin = -1, m_stdout = -1;
     int m_status = -1;  // waitpid's, once reaped
     bool m_reaped = false;
-    std::string m_buffer;  // read; lines from m_bufferStart on not yet returned
+    bool m_talked = false;  // asked over the protocol (send was called)
+    std::string m_buffer;   // read; lines from m_bufferStart on not yet returned
     std::size_t m_bufferStart = 0;
     std::string m_lastLine;
     long long m_answerBytes = 0, m_answerLines = 0;

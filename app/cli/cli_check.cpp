@@ -9,6 +9,7 @@
 
 #include "app/check/check_session.h"
 #include "app/check/grade.h"
+#include "app/check/hw2_grade.h"
 
 namespace rasterlab::cli {
 
@@ -121,6 +122,40 @@ bool writeText(const QString& path, const std::string& text, QTextStream& err) {
     return false;
 }
 
+// grade --hw2: every submission's program run on each command file.
+int gradeHw2(const QCommandLineParser& parser, const QCommandLineOption& hw2,
+             const QCommandLineOption& output, const QString& format, int jobs,
+             const check::CheckOptions& options, const std::vector<check::Submission>& submissions,
+             QTextStream& out, QTextStream& err) {
+    std::vector<check::Hw2Case> cases;
+    for (const QString& path : parser.values(hw2)) {
+        auto c = check::loadHw2Case(path.toStdString());
+        if (!c) return inputError(err, c.error());
+        cases.push_back(std::move(c.value()));
+    }
+    std::vector<std::vector<check::Hw2Verdict>> verdicts(submissions.size());
+    check::forEachInParallel(
+        submissions.size(), jobs,
+        [&](std::size_t i) {
+            verdicts[i] = check::gradeHw2(submissions[i], cases, options.limits);
+        },
+        [&](std::size_t i, int done) {
+            err << "graded " << done << "/" << submissions.size() << ": "
+                << QString::fromStdString(submissions[i].name) << '\n';
+            err.flush();
+        });
+    out << QString::fromStdString(check::hw2Table(submissions, verdicts, format.toStdString()));
+    if (!parser.isSet(output)) return ExitOk;
+    const QDir dir(parser.value(output));
+    if (!dir.mkpath(lit(".")))
+        return usageError(err, lit("--output: cannot make the folder '%1'").arg(dir.path()));
+    const bool written = writeText(dir.filePath(lit("grades.csv")),
+                                   check::hw2Table(submissions, verdicts, "csv"), err) &&
+                         writeText(dir.filePath(lit("grades.md")),
+                                   check::hw2Table(submissions, verdicts, "md"), err);
+    return written ? ExitOk : ExitBadInput;
+}
+
 }  // namespace
 
 int runCheck(const QStringList& arguments, QTextStream& out, QTextStream& err) {
@@ -218,7 +253,12 @@ int runGrade(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     parser.addOption(help);
     sceneOptions.addTo(parser);
     limitOptions.addTo(parser);
-    parser.addOptions({sceneName, submissions, output, format, jobs, stagesOption});
+    const QCommandLineOption hw2(lit("hw2"),
+                                 lit("HW2 submissions: run each program on this command file (the "
+                                     "file's name after its command, in a copy of its folder) and "
+                                     "compare the PNGs it names with ours; repeat for each file."),
+                                 lit("FILE"));
+    parser.addOptions({sceneName, submissions, output, format, jobs, stagesOption, hw2});
     rl::CourseSceneSettings settings;
     if (auto code = parseSceneCommand(parser, arguments, help, lit("grade"), sceneOptions,
                                       sceneName, settings, out, err))
@@ -242,6 +282,9 @@ int runGrade(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     if (found->empty())
         return usageError(
             err, lit("--submissions: '%1' holds no folder").arg(parser.value(submissions)));
+    if (parser.isSet(hw2))
+        return gradeHw2(parser, hw2, output, formatName, jobCount, options, found.value(), out,
+                        err);
     std::vector<check::CheckScene> scenes;
     if (int code = chooseScenes(parser, sceneOptions, sceneName, settings, err, scenes);
         code != ExitOk)
