@@ -126,31 +126,10 @@ StudentProgram::~StudentProgram() {
     if (!m_tempFolder.empty()) std::filesystem::remove_all(m_tempFolder, ec);
 }
 
-void StudentProgram::startProcess(const std::string& command, const std::string& given,
-                                  bool inTemporaryFolder) {
-    std::string folder = given;
-    const char* tmp = std::getenv("TMPDIR");
-    std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/rasterlab-check-XXXXXX";
-    if (!mkdtemp(pattern.data())) {
-        fail(std::string("cannot make a temporary folder: ") + std::strerror(errno));
-        return;
-    }
-    m_tempFolder = pattern;
-    const std::string errorFile = m_tempFolder + "/stderr.txt";
-    if (inTemporaryFolder) {
-        // A copy of the folder to run in, symbolic links left as links (not followed out).
-        std::error_code ec;
-        folder = m_tempFolder + "/work";
-        std::filesystem::copy(
-            given, folder,
-            std::filesystem::copy_options::recursive | std::filesystem::copy_options::copy_symlinks,
-            ec);
-        if (ec) {
-            fail("cannot copy " + given + " to run in: " + ec.message());
-            return;
-        }
-    }
-
+// The command line to exec (bubblewrap's, where it works, around /bin/sh -c), and the
+// protections it brings, said in m_protections and m_missing.
+std::vector<std::string> StudentProgram::arguments(const std::string& command,
+                                                   const std::string& folder) {
     std::string why;
     const bool sandbox = m_limits.sandbox && sandboxUsable(&why);
     std::vector<std::string> args;
@@ -194,6 +173,35 @@ void StudentProgram::startProcess(const std::string& command, const std::string&
                             " MiB each; answers: " + std::to_string(m_limits.answerBytes >> 20) +
                             " MiB, lines " + std::to_string(m_limits.lineBytes >> 10) + " KiB");
     m_protections.push_back("temporary folder: TMPDIR and HOME, removed afterwards");
+    return args;
+}
+
+void StudentProgram::startProcess(const std::string& command, const std::string& given,
+                                  bool inTemporaryFolder) {
+    std::string folder = given;
+    const char* tmp = std::getenv("TMPDIR");
+    std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/rasterlab-check-XXXXXX";
+    if (!mkdtemp(pattern.data())) {
+        fail(std::string("cannot make a temporary folder: ") + std::strerror(errno));
+        return;
+    }
+    m_tempFolder = pattern;
+    const std::string errorFile = m_tempFolder + "/stderr.txt";
+    if (inTemporaryFolder) {
+        // A copy of the folder to run in, symbolic links left as links (not followed out).
+        std::error_code ec;
+        folder = m_tempFolder + "/work";
+        std::filesystem::copy(
+            given, folder,
+            std::filesystem::copy_options::recursive | std::filesystem::copy_options::copy_symlinks,
+            ec);
+        if (ec) {
+            fail("cannot copy " + given + " to run in: " + ec.message());
+            return;
+        }
+    }
+
+    std::vector<std::string> args = arguments(command, folder);
     const bool root = geteuid() == 0;
     const int nproc = processesOfThisUser() + m_limits.processes;
     (root ? m_missing : m_protections)

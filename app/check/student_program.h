@@ -80,6 +80,7 @@ private:
     bool cancelled() const { return m_limits.cancel && m_limits.cancel->load(); }
     void startProcess(const std::string& command, const std::string& folder,
                       bool inTemporaryFolder);
+    std::vector<std::string> arguments(const std::string& command, const std::string& folder);
     void reap(bool wait);
 
     Limits m_limits;
