@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <set>
 #include <tuple>
@@ -258,6 +259,12 @@ StageCheck::Inputs StageCheck::ourInputs() const {
 
 namespace {
 
+// A student's number as a float: clamped to float's range (a double beyond it has no float).
+float toFloat(double v) {
+    constexpr double largest = std::numeric_limits<float>::max();
+    return std::isnan(v) ? 0.0f : float(std::clamp(v, -largest, largest));
+}
+
 // The fragments of spans t y first last, in drawing order. A triangle whose screen vertices
 // and view z are ours gets the lecture's own depths (depth_test.h's, bit for bit); another
 // gets the view z of its vertices interpolated with the screen barycentrics of each sample.
@@ -268,7 +275,12 @@ std::vector<Fragment> fragmentsOfSpans(std::vector<Row> spans, const rl::Scene& 
     std::sort(spans.begin(), spans.end());
     std::vector<Fragment> out;
     for (const Row& s : spans) {
-        if (s[0] < 0 || s[0] >= double(projection.triangles.size()) || s[3] - s[2] > 1e6) continue;
+        // Spans that are not whole pixels on a screen of sensible size are theirs to explain
+        // (the scan stage's judge does); no fragment is made of them.
+        const auto whole = [](double v) { return v == std::floor(v) && std::abs(v) <= 1e9; };
+        if (!(s[0] >= 0 && s[0] < double(projection.triangles.size())) || !whole(s[1]) ||
+            !whole(s[2]) || !whole(s[3]) || s[3] - s[2] > 1e6)
+            continue;
         const auto t = std::uint32_t(s[0]);
         const auto& v = projection.triangles[t].v;
         const Row &a = screen[v[0]], &b = screen[v[1]], &c = screen[v[2]];
@@ -285,8 +297,8 @@ std::vector<Fragment> fragmentsOfSpans(std::vector<Row> spans, const rl::Scene& 
                     ((x - a[0]) * (c[1] - a[1]) - (s[1] - a[1]) * (c[0] - a[0])) / area;
                 const double gamma =
                     ((b[0] - a[0]) * (s[1] - a[1]) - (b[1] - a[1]) * (x - a[0])) / area;
-                z = float((1.0 - beta - gamma) * view[v[0]][2] + beta * view[v[1]][2] +
-                          gamma * view[v[2]][2]);
+                z = toFloat((1.0 - beta - gamma) * view[v[0]][2] + beta * view[v[1]][2] +
+                            gamma * view[v[2]][2]);
             }
             out.push_back({t, std::int32_t(x), std::int32_t(s[1]), z});
         }
@@ -332,10 +344,10 @@ StageCheck::Inputs StageCheck::chainedInputs(const Answers& theirs) const {
     for (Sample& s : in.samples) {
         if (!s.vertex) continue;
         const Row& p = in.view[*s.vertex];
-        s.p = vec3(float(p[0]), float(p[1]), float(p[2]));
+        s.p = vec3(toFloat(p[0]), toFloat(p[1]), toFloat(p[2]));
         if (theirNormals) {
             const Row& n = (*normals)[1].rows[*s.vertex];
-            s.n = (s.reversed ? -1.0f : 1.0f) * vec3(float(n[0]), float(n[1]), float(n[2]));
+            s.n = (s.reversed ? -1.0f : 1.0f) * vec3(toFloat(n[0]), toFloat(n[1]), toFloat(n[2]));
         }
     }
     return in;
