@@ -23,6 +23,7 @@
 #include "app/window/translators.h"
 #include "tests/test_support.h"
 #include "views/frame_image_view.h"
+#include "views/pixel_inspector.h"
 #include "views/projection_view.h"
 #include "views/scanline_view.h"
 #include "views/stage_strip.h"
@@ -122,6 +123,18 @@ private slots:
     void comparesTheirFrame() {
         CheckPanel* panel = m_window.checkPanel();
         QVERIFY(checkWith(panel, "--ambient-times-od"));
+        // The pixel inspector gives their colour beside ours at the pixel picked.
+        const check::StageResult* frame = nullptr;
+        for (const check::StageResult& st : panel->report()->scenes.front().stages)
+            if (st.stage == check::Stage::Frame) frame = &st;
+        QVERIFY(frame && !frame->departures.empty());
+        const QPoint pixel(int(frame->departures.front().ours.x),
+                           int(frame->departures.front().ours.y));
+        m_window.inspection()->pickPixel(pixel);
+        const QString their = m_window.pixelInspector()->theirColourText();
+        QVERIFY2(their.startsWith(QStringLiteral("Your renderer's colour here: (")) &&
+                     their.endsWith(QStringLiteral("tells which Phong term would have to change.")),
+                 qPrintable(their));
         QVERIFY(panel->compareButton()->isEnabled());
         QTest::mouseClick(panel->compareButton(), Qt::LeftButton);
         const rl::ImageComparison* comparison = m_window.comparePanel()->comparison();

@@ -3201,27 +3201,27 @@
         <translation>Comparar o Quadro Deles</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="92"/>
+        <location filename="../app/window/check_panel.cpp" line="93"/>
         <source>Their whole frame in the Compare dock: each pixel&apos;s colour beside ours, and the Phong term that would have to change</source>
         <translation>O quadro inteiro deles no painel Comparar: a cor de cada pixel ao lado da nossa, e o termo de Phong que teria de mudar</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="105"/>
+        <location filename="../app/window/check_panel.cpp" line="106"/>
         <source>Stage</source>
         <translation>Etapa</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="105"/>
+        <location filename="../app/window/check_panel.cpp" line="106"/>
         <source>Verdict</source>
         <translation>Veredito</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="105"/>
+        <location filename="../app/window/check_panel.cpp" line="106"/>
         <source>Elements</source>
         <translation>Elementos</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="105"/>
+        <location filename="../app/window/check_panel.cpp" line="106"/>
         <source>Likely cause</source>
         <translation>Causa provável</translation>
     </message>
@@ -3266,97 +3266,97 @@
         <translation>concluída</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="249"/>
+        <location filename="../app/window/check_panel.cpp" line="250"/>
         <source>Over our image: each vertex that departs, ours a green dot, theirs a red cross, joined by a line.</source>
         <translation>Sobre a nossa imagem: cada vértice que se desvia, o nosso um ponto verde, o deles uma cruz vermelha, unidos por uma linha.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="253"/>
+        <location filename="../app/window/check_panel.cpp" line="254"/>
         <source>Over our image: magenta, pixels only we cover; cyan, pixels only they cover.</source>
         <translation>Sobre a nossa imagem: magenta, pixels que só nós cobrimos; ciano, pixels que só eles cobrem.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="257"/>
+        <location filename="../app/window/check_panel.cpp" line="258"/>
         <source>Over our image: red, pixels another triangle wins (or at another depth); magenta, only ours keeps one; cyan, only theirs.</source>
         <translation>Sobre a nossa imagem: vermelho, pixels que outro triângulo ganha (ou com outra profundidade); magenta, só o nosso guarda um; ciano, só o deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="261"/>
+        <location filename="../app/window/check_panel.cpp" line="262"/>
         <source>Over our image: red, pixels whose colour differs by more than 1.</source>
         <translation>Sobre a nossa imagem: vermelho, pixels cuja cor difere em mais de 1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="270"/>
+        <location filename="../app/window/check_panel.cpp" line="271"/>
         <source>passed</source>
         <translation>passou</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="272"/>
+        <location filename="../app/window/check_panel.cpp" line="273"/>
         <source>failed</source>
         <translation>falhou</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="274"/>
+        <location filename="../app/window/check_panel.cpp" line="275"/>
         <source>unsupported</source>
         <translation>não suportada</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="276"/>
+        <location filename="../app/window/check_panel.cpp" line="277"/>
         <source>broken</source>
         <translation>quebrou</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="319"/>
+        <location filename="../app/window/check_panel.cpp" line="320"/>
         <source>not applied: %1</source>
         <translation>não aplicado: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="328"/>
+        <location filename="../app/window/check_panel.cpp" line="329"/>
         <source>Protected by: %1.</source>
         <translation>Protegido por: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="329"/>
+        <location filename="../app/window/check_panel.cpp" line="330"/>
         <source>Protected by: %1. Not applied: %2.</source>
         <translation>Protegido por: %1. Não aplicado: %2.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="333"/>
+        <location filename="../app/window/check_panel.cpp" line="334"/>
         <source>Not checked: %1</source>
         <translation>Não verificada: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="339"/>
+        <location filename="../app/window/check_panel.cpp" line="340"/>
         <source>%1 of %2 differ</source>
         <translation>%1 de %2 diferem</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="355"/>
+        <location filename="../app/window/check_panel.cpp" line="356"/>
         <source>Every stage passed (%1 s).</source>
         <translation>Todas as etapas passaram (%1 s).</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="392"/>
+        <location filename="../app/window/check_panel.cpp" line="393"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="396"/>
+        <location filename="../app/window/check_panel.cpp" line="397"/>
         <source>First departure: %1: theirs %2, ours %3</source>
         <translation>Primeiro desvio: %1: o deles %2, o nosso %3</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="400"/>
+        <location filename="../app/window/check_panel.cpp" line="401"/>
         <source>Likely cause: %1</source>
         <translation>Causa provável: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="402"/>
+        <location filename="../app/window/check_panel.cpp" line="403"/>
         <source>No known mistake of this stage gives their answer.</source>
         <translation>Nenhum erro conhecido desta etapa dá a resposta deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="403"/>
+        <location filename="../app/window/check_panel.cpp" line="404"/>
         <source>Tolerance: %1</source>
         <translation>Tolerância: %1</translation>
     </message>
@@ -5464,17 +5464,17 @@
         <translation>%1: não é possível salvar a aula: %2</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_check.cpp" line="19"/>
+        <location filename="../app/window/main_window_check.cpp" line="20"/>
         <source>Check</source>
         <translation>Verificar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_check.cpp" line="20"/>
+        <location filename="../app/window/main_window_check.cpp" line="21"/>
         <source>Check your renderer</source>
         <translation>Verifique o seu renderizador</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_check.cpp" line="28"/>
+        <location filename="../app/window/main_window_check.cpp" line="29"/>
         <source>Cannot write their frame to %1</source>
         <translation>Não é possível gravar o quadro deles em %1</translation>
     </message>
@@ -6528,103 +6528,113 @@
         <translation>Ke = %1: a luz própria do material</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="486"/>
+        <location filename="../views/pixel_inspector.cpp" line="464"/>
+        <source>Your renderer&apos;s colour here: (%1, %2, %3); ours (%4, %5, %6).</source>
+        <translation>A cor do seu renderizador aqui: (%1, %2, %3); a nossa (%4, %5, %6).</translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="472"/>
+        <source>Compare Their Frame, in the Check dock, tells which Phong term would have to change.</source>
+        <translation>Comparar o Quadro Deles, no painel Verificar, diz qual termo de Phong teria de mudar.</translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="516"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="492"/>
-        <location filename="../views/pixel_inspector.cpp" line="701"/>
+        <location filename="../views/pixel_inspector.cpp" line="522"/>
+        <location filename="../views/pixel_inspector.cpp" line="731"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="500"/>
+        <location filename="../views/pixel_inspector.cpp" line="530"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>ocupa o pixel no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="501"/>
+        <location filename="../views/pixel_inspector.cpp" line="531"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>ainda não alcançado pelo cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="516"/>
+        <location filename="../views/pixel_inspector.cpp" line="546"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="517"/>
+        <location filename="../views/pixel_inspector.cpp" line="547"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Sem o passo a passo, as cores das escritas sobrescritas depois não são guardadas.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="642"/>
+        <location filename="../views/pixel_inspector.cpp" line="672"/>
         <source>Before: %1</source>
         <translation>Antes: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="682"/>
+        <location filename="../views/pixel_inspector.cpp" line="712"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Sem o passo a passo, só a iluminação do fragmento que ocupa o pixel no fim é registrada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="685"/>
+        <location filename="../views/pixel_inspector.cpp" line="715"/>
         <source>The cleared pixel is not lit.</source>
         <translation>O pixel limpo não é iluminado.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="688"/>
+        <location filename="../views/pixel_inspector.cpp" line="718"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>Nenhum fragmento ocupa o pixel no cursor: selecione uma linha do histórico para ver sua iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="700"/>
+        <location filename="../views/pixel_inspector.cpp" line="730"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Iluminação do passo %1, triângulo %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="705"/>
+        <location filename="../views/pixel_inspector.cpp" line="735"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejeitado: esta cor nunca foi escrita)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="718"/>
+        <location filename="../views/pixel_inspector.cpp" line="748"/>
         <source>object colour</source>
         <translation>cor do objeto</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="721"/>
+        <location filename="../views/pixel_inspector.cpp" line="751"/>
         <source>emission</source>
         <translation>emissão</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="723"/>
+        <location filename="../views/pixel_inspector.cpp" line="753"/>
         <source>ambient</source>
         <translation>ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="728"/>
+        <location filename="../views/pixel_inspector.cpp" line="758"/>
         <source>diffuse %1</source>
         <translation>difusa %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="731"/>
+        <location filename="../views/pixel_inspector.cpp" line="761"/>
         <source>specular %1</source>
         <translation>especular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="735"/>
+        <location filename="../views/pixel_inspector.cpp" line="765"/>
         <source>diffuse</source>
         <translation>difusa</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="737"/>
+        <location filename="../views/pixel_inspector.cpp" line="767"/>
         <source>specular</source>
         <translation>especular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="765"/>
+        <location filename="../views/pixel_inspector.cpp" line="795"/>
         <source>No special case: every term applies as written.</source>
         <translation>Nenhum caso especial: todos os termos valem como escritos.</translation>
     </message>
@@ -6986,7 +6996,7 @@
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="707"/>
-        <location filename="../views/scanline_view.cpp" line="733"/>
+        <location filename="../views/scanline_view.cpp" line="734"/>
         <source>none</source>
         <translation>nenhuma</translation>
     </message>
@@ -7011,147 +7021,147 @@
         <translation>Aqui as somas são o DDA da semente 001, em double: uma aresta que fica um fio abaixo de uma linha em double deixa essa linha para o triângulo de cima, onde um percurso exato acharia a aresta passando pelas amostras da linha.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="733"/>
+        <location filename="../views/scanline_view.cpp" line="734"/>
         <source>%1 to %2</source>
         <translation>%1 a %2</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="737"/>
+        <location filename="../views/scanline_view.cpp" line="738"/>
         <source>Your renderer: no pixel on this row (ours: %1).</source>
         <translation>O seu renderizador: nenhum pixel nesta linha (o nosso: %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="741"/>
+        <location filename="../views/scanline_view.cpp" line="743"/>
         <source>Your renderer: pixels %1 to %2 (ours: %3).</source>
         <translation>O seu renderizador: pixels %1 a %2 (o nosso: %3).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="761"/>
+        <location filename="../views/scanline_view.cpp" line="764"/>
         <source>%1(%2) = %3, where the %4 edge crosses its first row</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza sua primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="767"/>
+        <location filename="../views/scanline_view.cpp" line="770"/>
         <source>%1(%2) = %3, where the %4 edge crosses the first row on the screen</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza a primeira linha na tela</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="776"/>
+        <location filename="../views/scanline_view.cpp" line="778"/>
         <source>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</source>
         <translation>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 ao longo da aresta %7</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="791"/>
+        <location filename="../views/scanline_view.cpp" line="793"/>
         <source>Scanline y = %1</source>
         <translation>Linha de varredura y = %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="793"/>
+        <location filename="../views/scanline_view.cpp" line="795"/>
         <source>(sampled at y = %1)</source>
         <translation>(amostrada em y = %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="805"/>
+        <location filename="../views/scanline_view.cpp" line="807"/>
         <source>Seed 001&apos;s DDA: x_left and x_right are sums in double, one addition of dx/dy a row, the rounding of each carried along (no snapping). Pixels x = ceil(x_left) = %1 while x &amp;lt; x_right: up to ceil(x_right) &amp;minus; 1 = %2 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>DDA da semente 001: x_left e x_right são somas em double, uma soma de dx/dy por linha, o arredondamento de cada uma levado adiante (sem arredondar os vértices para a grade). Pixels x = ceil(x_left) = %1 enquanto x &amp;lt; x_right: até ceil(x_right) &amp;minus; 1 = %2 (uma amostra exatamente na aresta direita pertence ao triângulo seguinte).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="812"/>
+        <location filename="../views/scanline_view.cpp" line="814"/>
         <source>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Regra top-left: as amostras com x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 a ceil(x_right%2) &amp;minus; 1 = %4 (uma amostra exatamente na aresta direita pertence ao triângulo seguinte).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="819"/>
+        <location filename="../views/scanline_view.cpp" line="821"/>
         <source>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</source>
         <translation>Regra inclusiva: os pixels de ceil(x_left%1) = %2 a floor(x_right%1) = %3, as duas pontas incluídas (uma amostra exatamente sobre uma aresta está dentro).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="827"/>
+        <location filename="../views/scanline_view.cpp" line="829"/>
         <source>No pixel on this row</source>
         <translation>Nenhum pixel nesta linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="828"/>
+        <location filename="../views/scanline_view.cpp" line="830"/>
         <source>the edges cross it between two samples.</source>
         <translation>as arestas a cruzam entre duas amostras.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="829"/>
+        <location filename="../views/scanline_view.cpp" line="831"/>
         <source>they are all off the screen.</source>
         <translation>estão todos fora da tela.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="832"/>
+        <location filename="../views/scanline_view.cpp" line="834"/>
         <source>Span [%1, %2): 1 pixel.</source>
         <translation>Segmento [%1, %2): 1 pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="833"/>
+        <location filename="../views/scanline_view.cpp" line="835"/>
         <source>Span [%1, %2): %3 pixels.</source>
         <translation>Segmento [%1, %2): %3 pixels.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="836"/>
+        <location filename="../views/scanline_view.cpp" line="838"/>
         <source>(cut to the screen&apos;s columns 0 to %1)</source>
         <translation>(cortado às colunas 0 a %1 da tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="839"/>
+        <location filename="../views/scanline_view.cpp" line="841"/>
         <source>The pixel at the cursor is x = %1.</source>
         <translation>O pixel no cursor é x = %1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="857"/>
+        <location filename="../views/scanline_view.cpp" line="859"/>
         <source>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</source>
         <translation>Nas pontas do segmento, as coordenadas baricêntricas (&amp;alpha;, &amp;beta;, &amp;gamma;) da amostra em relação ao triângulo de tela P1 %1, P2 %2, P3 %3 dão a profundidade, a partir dos z dos vértices, z1 = %4, z2 = %5, z3 = %6:</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="862"/>
+        <location filename="../views/scanline_view.cpp" line="864"/>
         <source>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</source>
         <translation>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (com correção de perspectiva: 1/z é linear na tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="864"/>
+        <location filename="../views/scanline_view.cpp" line="866"/>
         <source>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</source>
         <translation>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="869"/>
+        <location filename="../views/scanline_view.cpp" line="871"/>
         <source>depth</source>
         <translation>profundidade</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="869"/>
+        <location filename="../views/scanline_view.cpp" line="871"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="875"/>
+        <location filename="../views/scanline_view.cpp" line="877"/>
         <source>not computed (nothing is lit)</source>
         <translation>não calculada (nada é iluminado)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="876"/>
+        <location filename="../views/scanline_view.cpp" line="878"/>
         <source>zero</source>
         <translation>nula</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="893"/>
+        <location filename="../views/scanline_view.cpp" line="895"/>
         <source>Pixel (x, y) is sampled at the point (x, y) itself.</source>
         <translation>O pixel (x, y) é amostrado no próprio ponto (x, y).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="894"/>
+        <location filename="../views/scanline_view.cpp" line="896"/>
         <source>Pixel (x, y) is sampled at (x + %1, y + %1).</source>
         <translation>O pixel (x, y) é amostrado em (x + %1, y + %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="897"/>
+        <location filename="../views/scanline_view.cpp" line="899"/>
         <source>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</source>
         <translation>A normal é N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1), a partir das normais dos vértices, normalizada%1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="900"/>
+        <location filename="../views/scanline_view.cpp" line="902"/>
         <source>, with the barycentrics weighted by 1/w (perspective-correct)</source>
         <translation>, com as coordenadas baricêntricas ponderadas por 1/w (correção de perspectiva)</translation>
     </message>

@@ -302,8 +302,8 @@ protected:
             drawLabel(painter,
                       freePlace(box, rect(),
                                 {QPointF(0, 0), QPointF(0, -h), QPointF(0, h), QPointF(w, 0),
-                                 QPointF(-w, 0), QPointF(w, -h), QPointF(-w, -h), QPointF(0, -2 * h),
-                                 QPointF(0, 2 * h)}),
+                                 QPointF(-w, 0), QPointF(w, -h), QPointF(-w, -h),
+                                 QPointF(0, -2 * h), QPointF(0, 2 * h)}),
                       Qt::AlignCenter, label.text);
         }
     }
@@ -446,6 +446,34 @@ void PixelInspector::refresh() {
     fillTable();
 }
 
+void PixelInspector::setTheirFrame(std::shared_ptr<const rl::FrameTrace> frame, QImage theirs) {
+    m_theirFrame = frame;
+    m_theirs = std::move(theirs);
+    m_builtFrame.reset();  // the table and the verdict are made again
+    refresh();
+}
+
+QString PixelInspector::theirColourText() const {
+    const auto checked = m_theirFrame.lock();
+    const QPoint p = m_inspection->pickedPixel();
+    const QImage& ours = m_inspection->frameImage();
+    if (!checked || checked != m_inspection->frame() || m_theirs.isNull() ||
+        !m_theirs.rect().contains(p) || !ours.rect().contains(p))
+        return {};
+    const QColor a = m_theirs.pixelColor(p), b = ours.pixelColor(p);
+    QString text = tr("Your renderer's colour here: (%1, %2, %3); ours (%4, %5, %6).")
+                       .arg(a.red())
+                       .arg(a.green())
+                       .arg(a.blue())
+                       .arg(b.red())
+                       .arg(b.green())
+                       .arg(b.blue());
+    if (a.rgb() != b.rgb())
+        text += QLatin1Char(' ') + tr("Compare Their Frame, in the Check dock, tells which Phong "
+                                      "term would have to change.");
+    return text;
+}
+
 void PixelInspector::selectRow(int row) {
     m_userSelected = true;
     m_selected = row >= 0 && row < static_cast<int>(m_history.rows().size()) ? row : -1;
@@ -473,7 +501,9 @@ void PixelInspector::fillTable() {
     const QSignalBlocker block(m_table);
     QFont bold = m_table->font();
     bold.setBold(true);
-    m_verdictLabel->setText(m_history.verdict());
+    const QString theirs = theirColourText();
+    m_verdictLabel->setText(theirs.isEmpty() ? m_history.verdict()
+                                             : m_history.verdict() + QLatin1Char('\n') + theirs);
     const std::vector<PixelHistoryRow>& rows = m_history.rows();
     m_table->setRowCount(static_cast<int>(rows.size()));
     const int swatchSize = m_presenting ? 20 : 12;
@@ -569,7 +599,8 @@ void PixelInspector::fitColumns() {
     const QHeaderView* header = m_table->horizontalHeader();
     const QFontMetrics titleMetrics = header->fontMetrics();
     const int titleMargin = 2 * style()->pixelMetric(QStyle::PM_HeaderMargin, nullptr, header) + 2;
-    const int margin = 2 * (style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, m_table) + 1);
+    const int margin =
+        2 * (style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, m_table) + 1);
     static const QRegularExpression space(QStringLiteral("\\s+"));
     // least: a colour down to a few digits ("(255…"); fewest: down to its swatch.
     std::vector<int> whole(columns), least(columns), fewest(columns);
@@ -619,9 +650,9 @@ void PixelInspector::fitColumns() {
     if (!before && sum(least, false) > room) least = fewest;
     m_table->setColumnHidden(kBefore, !before);
     const int wholeSum = sum(whole, before), leastSum = sum(least, before);
-    const double shrink = wholeSum <= room      ? 0.0
-                          : leastSum >= room    ? 1.0
-                                                : double(wholeSum - room) / (wholeSum - leastSum);
+    const double shrink = wholeSum <= room   ? 0.0
+                          : leastSum >= room ? 1.0
+                                             : double(wholeSum - room) / (wholeSum - leastSum);
     for (int c = 0; c < columns; ++c) {
         const int width = whole[c] - int(std::ceil(shrink * (whole[c] - least[c])));
         m_table->setColumnWidth(c, width);

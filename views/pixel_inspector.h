@@ -11,6 +11,7 @@
 // traced again for the pixel (renderer.h, traceFrame with a RecordingProbe).
 #pragma once
 
+#include <QImage>
 #include <QString>
 #include <QStringList>
 #include <QWidget>
@@ -51,6 +52,11 @@ public:
     void selectRow(int row);
     const std::optional<LightingBreakdown>& breakdown() const { return m_breakdown; }
     QString formulaText() const;  // the formula lines, joined by newlines
+    // A student's frame (Check My Renderer...), for the frame it was checked on: the verdict
+    // then gives their colour at the pixel beside ours, until another frame is shown.
+    void setTheirFrame(std::shared_ptr<const rl::FrameTrace> frame, QImage theirs);
+    // "Your renderer's colour here: ...", or empty without their frame for the frame shown.
+    QString theirColourText() const;
     // True when the history comes from tracing the frame again (no replay).
     bool traced() const { return m_history.traced(); }
     QTableWidget* historyTable() const { return m_table; }
@@ -82,6 +88,8 @@ private:
     int m_selected = -1;
     bool m_userSelected = false;  // a row the user chose stays until the pixel changes
     std::optional<LightingBreakdown> m_breakdown;
+    std::weak_ptr<const rl::FrameTrace> m_theirFrame;
+    QImage m_theirs;
 
     QLabel* m_verdictLabel = nullptr;
     QTableWidget* m_table = nullptr;

@@ -7,6 +7,7 @@
 
 #include "app/window/check_panel.h"
 #include "app/window/main_window.h"
+#include "views/pixel_inspector.h"
 #include "views/projection_view.h"
 #include "views/scanline_view.h"
 #include "views/stage_strip.h"
@@ -80,6 +81,15 @@ void MainWindow::showCheckMarks() {
                                                             std::max(it->second.second, int(r[3])));
         }
     m_scanline->setTheirSpans(m_check->checkedFrame(), std::move(spans));
+    // The pixel inspector gives their colour at the pixel picked beside ours.
+    QImage theirs;
+    if (const check::CheckReport* report = m_check->report(); report && !report->scenes.empty()) {
+        const rl::Rgba8Image& f = report->scenes.front().theirFrame;
+        if (!f.rgba.empty())
+            theirs = QImage(f.rgba.data(), f.width, f.height, f.width * 4, QImage::Format_RGBA8888)
+                         .copy();
+    }
+    m_inspector->setTheirFrame(m_check->checkedFrame(), std::move(theirs));
     if (!m_checkDock->isHidden()) m_checkDock->raise();
 }
 
