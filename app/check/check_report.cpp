@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "app/check/check_session.h"
+#include "pipeline/core/format.h"
 
 namespace rasterlab::check {
 
@@ -16,26 +17,20 @@ QString q(const std::string& s) {
     return QString::fromStdString(s);
 }
 
-std::string number(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.6g", v);
-    return buffer;
-}
-
 // "passed (3 elements)", "failed: 2 of 9 elements differ ...", in one line.
 std::string summary(const StageResult& r) {
     switch (r.verdict) {
         case Verdict::Passed:
             return "passed (" + std::to_string(r.elements) + " elements, largest error " +
-                   number(r.largestError) + "; tolerance " + r.tolerance + ")";
+                   rl::formatNumber(r.largestError) + "; tolerance " + r.tolerance + ")";
         case Verdict::Unsupported:
             return "unsupported (the program answered 'unsupported')";
         case Verdict::Broken:
             return "broken: " + r.problem;
         case Verdict::Failed:
             return "failed: " + std::to_string(r.differing) + " of " + std::to_string(r.elements) +
-                   " elements differ, largest error " + number(r.largestError) + " (tolerance " +
-                   r.tolerance + ")";
+                   " elements differ, largest error " + rl::formatNumber(r.largestError) +
+                   " (tolerance " + r.tolerance + ")";
     }
     return {};
 }
@@ -94,13 +89,7 @@ std::string text(const CheckReport& r) {
     if (r.restarts)
         out += "; the program was started again " + std::to_string(r.restarts) + " times";
     if (r.cancelled) out += "; cancelled";
-    out += " (" + number(r.seconds) + " s)\n";
-    return out;
-}
-
-std::string escapeCell(std::string s) {
-    std::string out;
-    for (char c : s) out += c == '|' ? std::string("\\|") : std::string(1, c);
+    out += " (" + rl::formatNumber(r.seconds) + " s)\n";
     return out;
 }
 
@@ -119,7 +108,7 @@ std::string markdown(const CheckReport& r) {
     }
     out += "\n" + rule + "\n";
     for (const SceneReport& s : r.scenes) {
-        out += "| " + escapeCell(s.name) + " |";
+        out += "| " + markdownCell(s.name) + " |";
         for (Stage stage : kStages) {
             std::string cell = s.error.empty() ? "" : "not checked";
             for (const StageResult& st : s.stages)
@@ -138,7 +127,7 @@ std::string markdown(const CheckReport& r) {
         }
     out += '\n';
     out += r.passed() ? "Every stage passed" : "Not every stage passed";
-    out += " (" + number(r.seconds) + " s).\n";
+    out += " (" + rl::formatNumber(r.seconds) + " s).\n";
     return out;
 }
 
@@ -200,6 +189,29 @@ std::string json(const CheckReport& r) {
 }
 
 }  // namespace
+
+std::string csvCell(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"')
+            out += "\"\"";
+        else
+            out += c == '\n' ? ' ' : c;
+    }
+    return out + "\"";
+}
+
+std::string markdownCell(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        if (c == '|')
+            out += "\\|";
+        else
+            out += c == '\n' ? ' ' : c;
+    }
+    return out;
+}
 
 std::string formatReport(const CheckReport& report, const std::string& format) {
     if (format == "json") return json(report);

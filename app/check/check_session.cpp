@@ -194,6 +194,13 @@ bool CheckReport::anyBroken() const {
     return false;
 }
 
+const StageResult* CheckReport::result(Stage stage) const {
+    if (scenes.empty()) return nullptr;
+    for (const StageResult& r : scenes.front().stages)
+        if (r.stage == stage) return &r;
+    return nullptr;
+}
+
 CheckReport runCheck(const std::string& command, const std::string& folder,
                      const std::vector<CheckScene>& scenes, const CheckOptions& options,
                      const CheckProgress& progress) {

@@ -47,6 +47,8 @@ struct CheckReport {
     // The worst verdict of a stage over the scenes (Passed when it never ran).
     Verdict stageVerdict(Stage stage) const;
     bool anyBroken() const;
+    // A stage's result in the first scene checked (the window checks one), or null.
+    const StageResult* result(Stage stage) const;
 };
 
 // Progress: the number of requests answered, of all, and what is being asked; false cancels.
@@ -69,6 +71,10 @@ CheckReport runCheck(const std::string& command, const std::string& folder,
 // lie behind the camera, nor lights and gouraud, lit by more than one light), and the default
 // scene, each at 160x120 so that a student's check takes seconds.
 std::vector<CheckScene> defaultCheckScenes();
+
+// A table's cell: quoted as CSV needs it, or with Markdown's '|' escaped; a line end a space.
+std::string csvCell(const std::string& s);
+std::string markdownCell(const std::string& s);
 
 // The report, as the command line prints it (format "text", "md" or "json").
 std::string formatReport(const CheckReport& report, const std::string& format);

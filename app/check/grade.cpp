@@ -38,24 +38,6 @@ std::string readRun(const fs::path& folder, std::string& problem) {
     return {};
 }
 
-std::string csvCell(const std::string& s) {
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
-    std::string out = "\"";
-    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
-    return out + "\"";
-}
-
-std::string mdCell(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        if (c == '|')
-            out += "\\|";
-        else
-            out += c == '\n' ? ' ' : c;
-    }
-    return out;
-}
-
 // The row's last column: what went wrong for the whole submission, or how it went.
 std::string note(const GradeRow& row) {
     if (!row.submission.problem.empty()) return row.submission.problem;
@@ -145,7 +127,7 @@ std::string gradeTable(const std::vector<GradeRow>& rows, const std::string& for
     for (const GradeRow& row : rows) {
         const CheckReport& r = row.report;
         const bool ran = row.submission.problem.empty() && r.failure.empty();
-        out += csv ? csvCell(row.submission.name) : "| " + mdCell(row.submission.name) + " |";
+        out += csv ? csvCell(row.submission.name) : "| " + markdownCell(row.submission.name) + " |";
         for (Stage stage : kStages) {
             std::string cell = ran ? std::string(verdictName(r.stageVerdict(stage))) : "not run";
             bool asked = false;
@@ -156,7 +138,7 @@ std::string gradeTable(const std::vector<GradeRow>& rows, const std::string& for
         }
         const std::string passed = ran && r.passed() ? "yes" : "no";
         out += csv ? "," + passed + "," + csvCell(note(row)) + "\n"
-                   : " " + passed + " | " + mdCell(note(row)) + " |\n";
+                   : " " + passed + " | " + markdownCell(note(row)) + " |\n";
     }
     return out;
 }

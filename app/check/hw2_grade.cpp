@@ -131,19 +131,17 @@ std::string hw2Table(const std::vector<Submission>& submissions,
         bool all = true;
         std::string note;
         if (!csv) out += "| ";
-        out += submissions[s].name;
+        out += csv ? csvCell(submissions[s].name) : markdownCell(submissions[s].name);
         for (const Hw2Verdict& v : verdicts[s]) {
             out += separator;
             out += cell(v);
             all = all && v.passed;
             if (note.empty()) note = v.problem;
         }
-        for (char& c : note)
-            if (c == ',' || c == '|' || c == '\n') c = ' ';
         out += separator;
         out += all ? "yes" : "no";
         out += separator;
-        out += note;
+        out += csv ? csvCell(note) : markdownCell(note);
         out += csv ? "\n" : " |\n";
     }
     return out;

@@ -12,6 +12,7 @@
 
 #include "app/check/stage_mistakes.h"
 #include "pipeline/analysis/mistakes.h"
+#include "pipeline/core/format.h"
 #include "pipeline/stages/camera_basis.h"
 #include "pipeline/stages/depth_test.h"
 #include "pipeline/stages/normals.h"
@@ -25,6 +26,17 @@ namespace rasterlab::check {
 using rl::dvec3;
 using rl::vec3;
 
+// The inputs the requests carry: ours, or in a chained run the student's own earlier answers
+// wherever they gave one of the right size.
+struct StageCheck::Inputs {
+    std::array<dvec3, 3> uvn;
+    dvec3 light;              // in view coordinates
+    std::vector<Row> view;    // every vertex, in view coordinates
+    std::vector<Row> screen;  // every projected vertex of the draw, in pixels (x, y)
+    std::vector<Fragment> fragments;
+    std::vector<Sample> samples;
+};
+
 struct StageCheck::Data {
     std::shared_ptr<const rl::Scene> scene;
     const rl::Draw* draw = nullptr;
@@ -35,11 +47,12 @@ struct StageCheck::Data {
     rl::ScanConversion scan;
     rl::DepthTest depth;
     std::vector<std::uint32_t> projected;  // the projection request's vertex k is this vertex
-    std::vector<Fragment> fragments;       // the z-buffer request, in drawing order
-    std::vector<Sample> samples;           // the lighting request
-    std::vector<Row> colours;              // ours for the samples, clamped
-    rl::OurFrame frame;                    // our render, for the frame stage and compare
-    Lighting lighting;                     // the scene's, in view coordinates
+    // Our inputs of every request, made once: the z-buffer's fragments in drawing order, the
+    // lighting's samples, the basis, view coordinates and screen vertices.
+    Inputs ours;
+    std::vector<Row> colours;  // ours for the samples, clamped
+    rl::OurFrame frame;        // our render, for the frame stage and compare
+    Lighting lighting;         // the scene's, in view coordinates
 
     const rl::Mesh& mesh() const { return *draw->mesh; }
     const rl::CourseCamera& camera() const { return *scene->camera; }
@@ -49,18 +62,15 @@ namespace {
 
 constexpr std::size_t kMostSamples = 400;  // vertices lit by the lighting request, each twice
 
-std::string number(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.6g", v);
-    return buffer;
-}
+// The project's number and vector texts, '.' as the decimal point whatever the locale.
+using rl::formatNumber;
 
 std::string vector3(const Row& r) {
-    return "(" + number(r[0]) + ", " + number(r[1]) + ", " + number(r[2]) + ")";
+    return rl::formatVector(dvec3(r[0], r[1], r[2]));
 }
 
 std::string vector3(const dvec3& v) {
-    return vector3(Row{v.x, v.y, v.z});
+    return rl::formatVector(v);
 }
 
 Row rowOf(const dvec3& v) {
@@ -75,7 +85,7 @@ std::string rowText(const Row& r) {
     std::string s;
     for (std::size_t i = 0; i < r.size(); ++i) {
         if (i) s += ' ';
-        s += number(r[i]);
+        s += formatNumber(r[i]);
     }
     return s;
 }
@@ -113,7 +123,7 @@ void computeFragments(StageCheck::Data& data) {
         for (std::uint32_t s = data.scan.spanStart[t]; s < data.scan.spanStart[t + 1]; ++s) {
             const rl::Span& span = data.scan.spans[s];
             for (std::int32_t x = span.xBegin; x < span.xEnd; ++x)
-                data.fragments.push_back(
+                data.ours.fragments.push_back(
                     {t, x, span.y,
                      rl::fragmentDepth(scene, data.projection, t, span.y, span.xBegin, x).depth});
         }
@@ -137,8 +147,8 @@ void addGrazingSamples(StageCheck::Data& data) {
     const dvec3 l = glm::normalize(dvec3(data.view.lights[0].pView) - p);
     constexpr double e = 5e-4;
     dvec3 n;
-    if (leaning(v, l, e, n)) data.samples.push_back({vec3(p), vec3(n), std::nullopt, false});
-    if (leaning(l, v, e, n)) data.samples.push_back({vec3(p), vec3(n), std::nullopt, false});
+    if (leaning(v, l, e, n)) data.ours.samples.push_back({vec3(p), vec3(n), std::nullopt, false});
+    if (leaning(l, v, e, n)) data.ours.samples.push_back({vec3(p), vec3(n), std::nullopt, false});
 }
 
 void computeSamples(StageCheck::Data& data) {
@@ -148,17 +158,27 @@ void computeSamples(StageCheck::Data& data) {
     for (std::size_t i = 0; i < count; i += step) {
         const vec3 n = data.normals.vertex[i];
         if (n == vec3(0.0f)) continue;
-        data.samples.push_back({vec3(rl::cartesian(pView[i])), n, std::uint32_t(i), false});
-        data.samples.push_back({vec3(rl::cartesian(pView[i])), -n, std::uint32_t(i), true});
+        data.ours.samples.push_back({vec3(rl::cartesian(pView[i])), n, std::uint32_t(i), false});
+        data.ours.samples.push_back({vec3(rl::cartesian(pView[i])), -n, std::uint32_t(i), true});
     }
     addGrazingSamples(data);
     const rl::Material& m = data.draw->material;
-    for (const Sample& s : data.samples) {
+    for (const Sample& s : data.ours.samples) {
         const rl::PhongSample p = rl::phong(m, m.od, data.scene->ambientIntensity,
                                             data.view.lights.data(), 1, s.p, s.n, true);
         const vec3 c = glm::min(p.colour(), vec3(255.0f));
         data.colours.push_back(rowOf(c));
     }
+}
+
+// The basis, view coordinates and screen vertices of our inputs (the fragments and samples
+// are made with them, by computeFragments and computeSamples).
+void addOurGeometry(StageCheck::Data& d) {
+    StageCheck::Inputs& in = d.ours;
+    in.uvn = {d.basis.u, d.basis.v, d.basis.n};
+    in.light = dvec3(d.view.lights[0].pView);
+    for (const rl::dvec4& p : d.view.pView[0]) in.view.push_back(rowOf(dvec3(p)));
+    for (const rl::dvec2& p : d.projection.draws[0].pScreen) in.screen.push_back({p.x, p.y});
 }
 
 }  // namespace
@@ -182,10 +202,6 @@ StageCheck::~StageCheck() = default;
 
 const rl::Rgba8Image& StageCheck::ourImage() const {
     return m_data->frame.image;
-}
-
-const rl::Scene& StageCheck::scene() const {
-    return *m_data->scene;
 }
 
 rl::Result<std::shared_ptr<const StageCheck>> StageCheck::make(
@@ -215,6 +231,7 @@ rl::Result<std::shared_ptr<const StageCheck>> StageCheck::make(
     const auto& pView = data->view.pView[0];
     for (std::uint32_t i = 0; i < pView.size(); ++i)
         if (pView[i].z > 0.0) data->projected.push_back(i);
+    addOurGeometry(*data);
     computeFragments(*data);
     const rl::Material& m = data->draw->material;
     data->lighting = {dvec3(data->view.lights[0].pView),
@@ -230,31 +247,6 @@ rl::Result<std::shared_ptr<const StageCheck>> StageCheck::make(
     if (!frame) return frame.error();
     data->frame = std::move(frame.value());
     return std::shared_ptr<const StageCheck>(std::make_shared<StageCheck>(std::move(data)));
-}
-
-// The inputs the requests carry: ours, or in a chained run the student's own earlier answers
-// wherever they gave one of the right size.
-struct StageCheck::Inputs {
-    std::array<dvec3, 3> uvn;
-    dvec3 light;              // in view coordinates
-    std::vector<Row> view;    // every vertex, in view coordinates
-    std::vector<Row> screen;  // every projected vertex of the draw, in pixels (x, y)
-    std::vector<Fragment> fragments;
-    std::vector<Sample> samples;
-};
-
-StageCheck::Inputs StageCheck::ourInputs() const {
-    const Data& d = *m_data;
-    Inputs in;
-    in.uvn = {d.basis.u, d.basis.v, d.basis.n};
-    in.light = dvec3(d.view.lights[0].pView);
-    for (const rl::dvec4& p : d.view.pView[0]) in.view.push_back(rowOf(dvec3(p)));
-    for (std::size_t v = 0; v < d.projection.draws[0].pScreen.size(); ++v)
-        in.screen.push_back(
-            {d.projection.draws[0].pScreen[v].x, d.projection.draws[0].pScreen[v].y});
-    in.fragments = d.fragments;
-    in.samples = d.samples;
-    return in;
 }
 
 namespace {
@@ -310,7 +302,7 @@ std::vector<Fragment> fragmentsOfSpans(std::vector<Row> spans, const rl::Scene& 
 
 StageCheck::Inputs StageCheck::chainedInputs(const Answers& theirs) const {
     const Data& d = *m_data;
-    Inputs in = ourInputs();
+    Inputs in = d.ours;
     const auto answer = [&](Stage stage) -> const std::vector<Record>* {
         const auto it = theirs.find(stage);
         return it == theirs.end() ? nullptr : &it->second;
@@ -326,7 +318,7 @@ StageCheck::Inputs StageCheck::chainedInputs(const Answers& theirs) const {
         for (std::size_t k = 0; k < d.projected.size(); ++k)
             in.screen[d.projected[k]] = (*a)[0].rows[k];
     if (const auto* a = answer(Stage::Scan)) {
-        const Inputs ours = ourInputs();
+        const Inputs& ours = d.ours;
         std::vector<bool> oursToo;
         for (const rl::ScreenTriangle& t : d.projection.triangles) {
             bool same = true;
@@ -354,7 +346,7 @@ StageCheck::Inputs StageCheck::chainedInputs(const Answers& theirs) const {
 }
 
 Request StageCheck::request(Stage stage) const {
-    return request(stage, ourInputs());
+    return request(stage, m_data->ours);
 }
 
 Request StageCheck::chainedRequest(Stage stage, const Answers& theirs) const {
@@ -461,6 +453,8 @@ struct RowsJudge {
     std::function<bool(std::size_t, const Row&, const Row&, double&)> equal;
     std::string tolerance;
     std::function<std::vector<Alternative>()> mistakes;
+    // Where an element that departs is on the screen, when it is (the projection's vertices).
+    std::function<Departure(std::size_t, const Row& theirs)> departure;
 };
 
 std::string rowShown(const Row& r) {
@@ -477,6 +471,8 @@ StageResult judgeRows(const RowsJudge& j, const std::vector<Row>& theirs) {
         const bool same = j.equal(i, theirs[i], j.ours[i], error);
         result.largestError = std::max(result.largestError, error);
         if (same) continue;
+        if (j.departure && result.departures.size() < kMostDepartures)
+            result.departures.push_back(j.departure(i, theirs[i]));
         if (result.differing++ == 0)
             result.first =
                 Divergence{j.element(i), rowShown(theirs[i]), rowShown(j.ours[i]), j.formula(i)};
@@ -571,9 +567,9 @@ StageResult StageCheck::judgeBasis(const std::vector<Record>& answer) const {
             return "U = N x V = " + vector3(b.n) + " x " + vector3(b.v) + " = " + vector3(b.u);
         if (i == 1)
             return "V = (V - (V.N) N) / |V - (V.N) N| = (" + vector3(b.vGiven) + " - " +
-                   number(b.vDotN) + " " + vector3(b.n) + ") / " + number(b.vOrthogonalLength) +
-                   " = " + vector3(b.v);
-        return "N = N / |N| = " + vector3(b.nGiven) + " / " + number(b.nLength) + " = " +
+                   formatNumber(b.vDotN) + " " + vector3(b.n) + ") / " +
+                   formatNumber(b.vOrthogonalLength) + " = " + vector3(b.v);
+        return "N = N / |N| = " + vector3(b.nGiven) + " / " + formatNumber(b.nLength) + " = " +
                vector3(b.n);
     };
     j.equal = absoluteWithin(1e-6);
@@ -643,7 +639,7 @@ StageResult StageCheck::judgeNormals(const std::vector<Record>& answer) const {
             return "n = (P" + std::to_string(t[1]) + " - P" + std::to_string(t[0]) + ") x (P" +
                    std::to_string(t[2]) + " - P" + std::to_string(t[0]) +
                    ") / |...| = " + vector3(e1) + " x " + vector3(e2) + " / " +
-                   number(glm::length(c)) + " = " +
+                   formatNumber(glm::length(c)) + " = " +
                    vector3(glm::length(c) > 0.0 ? c / glm::length(c) : dvec3(0.0));
         }
         const std::size_t v = i - m;
@@ -683,14 +679,14 @@ StageResult StageCheck::judgeProjection(const std::vector<Record>& answer) const
     j.formula = [cam, w, h, view](std::size_t i) {
         const Row& p = view[i];
         const auto e = projectionExact(cam.d, cam.hx, cam.hy, w, h, p);
-        return "x = (int)((d/hx * x/z + 1) * width/2) = (int)((" + number(cam.d) + "/" +
-               number(cam.hx) + " * " + number(p[0]) + "/" + number(p[2]) + " + 1) * " +
-               std::to_string(w) + "/2) = (int)(" + number(e[0]) +
-               ") = " + number(std::trunc(e[0])) +
-               "; y = (int)((1 - d/hy * y/z) * height/2) = (int)((1 - " + number(cam.d) + "/" +
-               number(cam.hy) + " * " + number(p[1]) + "/" + number(p[2]) + ") * " +
-               std::to_string(h) + "/2) = (int)(" + number(e[1]) +
-               ") = " + number(std::trunc(e[1]));
+        return "x = (int)((d/hx * x/z + 1) * width/2) = (int)((" + formatNumber(cam.d) + "/" +
+               formatNumber(cam.hx) + " * " + formatNumber(p[0]) + "/" + formatNumber(p[2]) +
+               " + 1) * " + std::to_string(w) + "/2) = (int)(" + formatNumber(e[0]) +
+               ") = " + formatNumber(std::trunc(e[0])) +
+               "; y = (int)((1 - d/hy * y/z) * height/2) = (int)((1 - " + formatNumber(cam.d) +
+               "/" + formatNumber(cam.hy) + " * " + formatNumber(p[1]) + "/" + formatNumber(p[2]) +
+               ") * " + std::to_string(h) + "/2) = (int)(" + formatNumber(e[1]) +
+               ") = " + formatNumber(std::trunc(e[1]));
     };
     // Whole pixels: equal, or the other side of a whole number the exact value all but reaches.
     j.equal = [cam, w, h, view](std::size_t i, const Row& a, const Row& b, double& error) {
@@ -710,34 +706,30 @@ StageResult StageCheck::judgeProjection(const std::vector<Record>& answer) const
     j.mistakes = [cam, w, h, view] {
         return projectionMistakes(cam.d, cam.hx, cam.hy, w, h, view);
     };
-    StageResult result = judgeRows(j, answer[0].rows);
-    for (std::size_t i = 0; i < j.ours.size() && result.departures.size() < kMostDepartures; ++i) {
-        double error = 0.0;
-        const Row& theirs = answer[0].rows[i];
-        if (!j.equal(i, theirs, j.ours[i], error))
-            result.departures.push_back(
-                {Departure::Kind::Vertex, {j.ours[i][0], j.ours[i][1]}, {theirs[0], theirs[1]}});
-    }
-    return result;
+    j.departure = [&j](std::size_t i, const Row& theirs) {
+        return Departure{
+            Departure::Kind::Vertex, {j.ours[i][0], j.ours[i][1]}, {theirs[0], theirs[1]}};
+    };
+    return judgeRows(j, answer[0].rows);
 }
 
 StageResult StageCheck::judgeLighting(const std::vector<Record>& answer) const {
     const Data& d = *m_data;
-    if (auto bad = countMismatch(Stage::Lighting, answer[0], d.samples.size(), "samples"))
+    if (auto bad = countMismatch(Stage::Lighting, answer[0], d.ours.samples.size(), "samples"))
         return *bad;
     RowsJudge j;
     j.stage = Stage::Lighting;
     j.ours = d.colours;
     j.element = [](std::size_t i) { return "sample " + std::to_string(i); };
     j.formula = [&d](std::size_t i) {
-        const Sample& s = d.samples[i];
+        const Sample& s = d.ours.samples[i];
         const rl::Material& m = d.draw->material;
         const rl::PhongSample p =
             rl::phong(m, m.od, d.scene->ambientIntensity, d.view.lights.data(), 1, s.p, s.n, true);
         std::string text =
             "I = Ia ka + Il Od kd (N.L) + Il ks (R.V)^n = " + vector3(rowOf(p.ambient)) + " + " +
             vector3(rowOf(p.diffuse)) + " + " + vector3(rowOf(p.specular)) +
-            " with N.L = " + number(p.nDotL) + ", R.V = " + number(p.rDotV);
+            " with N.L = " + formatNumber(p.nDotL) + ", R.V = " + formatNumber(p.rDotV);
         if (p.flipped) text += "; V.N < 0: N turned toward the viewer";
         if (p.lightBehind)
             text += "; N.L < 0: no diffuse, no specular";
@@ -747,7 +739,7 @@ StageResult StageCheck::judgeLighting(const std::vector<Record>& answer) const {
     };
     j.equal = absoluteWithin(0.01);
     j.tolerance = "0.01 in each channel (0..255)";
-    j.mistakes = [&d] { return lightingMistakes(d.lighting, d.samples); };
+    j.mistakes = [&d] { return lightingMistakes(d.lighting, d.ours.samples); };
     return judgeRows(j, answer[0].rows);
 }
 
@@ -778,8 +770,8 @@ std::optional<std::string> pixelsOf(const std::vector<Row>& spans, std::size_t t
         for (double x = s[2]; x <= s[3]; ++x)
             if (!pixels.insert({std::uint32_t(s[0]), std::int32_t(s[1]), std::int32_t(x)}).second)
                 return "span " + std::to_string(k) + " (" + rowText(s) + ") lists pixel (" +
-                       number(x) + ", " + number(s[1]) + ") of triangle " + number(s[0]) +
-                       " a second time";
+                       formatNumber(x) + ", " + formatNumber(s[1]) + ") of triangle " +
+                       formatNumber(s[0]) + " a second time";
     }
     (void)height;
     return std::nullopt;
@@ -796,7 +788,7 @@ std::optional<std::string> winnersOf(const std::vector<Row>& rows, Winners& out)
         if (!out.emplace(std::make_pair(std::int32_t(r[1]), std::int32_t(r[0])),
                          std::make_pair(std::uint32_t(r[2]), r[3]))
                  .second)
-            return "pixel (" + number(r[0]) + ", " + number(r[1]) + ") is listed twice";
+            return "pixel (" + formatNumber(r[0]) + ", " + formatNumber(r[1]) + ") is listed twice";
     }
     return std::nullopt;
 }
@@ -851,7 +843,7 @@ StageResult StageCheck::judgeScan(const std::vector<Record>& answer) const {
         const double e = (area > 0 ? 1 : -1) * ((r[2 * j] - r[2 * k]) * (y - r[2 * k + 1]) -
                                                 (r[2 * j + 1] - r[2 * k + 1]) * (x - r[2 * k]));
         if (k) edges += ", ";
-        edges += "e" + std::to_string(k) + std::to_string(j) + " = " + number(e);
+        edges += "e" + std::to_string(k) + std::to_string(j) + " = " + formatNumber(e);
     }
     const bool covered = ours.count(differ.front()) > 0;
     result.first = Divergence{
@@ -889,7 +881,7 @@ StageResult StageCheck::judgeZBuffer(const std::vector<Record>& answer) const {
         const auto it = w.find(k);
         return it == w.end() ? std::string("no fragment kept")
                              : "triangle " + std::to_string(it->second.first) +
-                                   ", z = " + number(it->second.second);
+                                   ", z = " + formatNumber(it->second.second);
     };
     for (const auto& k : keys) {
         const auto a = theirs.find(k), b = ours.find(k);
@@ -907,10 +899,10 @@ StageResult StageCheck::judgeZBuffer(const std::vector<Record>& answer) const {
         }
         if (result.differing++ > 0) continue;
         std::string order;
-        for (const Fragment& f : d.fragments)
+        for (const Fragment& f : d.ours.fragments)
             if (f.x == k.second && f.y == k.first) {
                 if (!order.empty()) order += ", ";
-                order += "triangle " + std::to_string(f.t) + " z = " + number(f.z);
+                order += "triangle " + std::to_string(f.t) + " z = " + formatNumber(f.z);
             }
         result.first =
             Divergence{"pixel (" + std::to_string(k.second) + ", " + std::to_string(k.first) + ")",
@@ -920,7 +912,7 @@ StageResult StageCheck::judgeZBuffer(const std::vector<Record>& answer) const {
     }
     if (result.differing == 0) return result;
     result.verdict = Verdict::Failed;
-    for (const Alternative& a : zbufferMistakes(d.fragments)) {
+    for (const Alternative& a : zbufferMistakes(d.ours.fragments)) {
         Winners w;
         if (winnersOf(a.rows, w) || w.size() != theirs.size()) continue;
         bool all = true;
@@ -952,15 +944,15 @@ StageResult StageCheck::judgeFrame(const std::vector<Record>& answer) const {
     const rl::Rgba8Image& ours = m_data->frame.image;
     const Record& image = answer[0];
     if (image.numbers[0] != ours.width || image.numbers[1] != ours.height)
-        return broken(Stage::Frame, "their image is " + number(image.numbers[0]) + "x" +
-                                        number(image.numbers[1]) + ", the request asked for " +
-                                        std::to_string(ours.width) + "x" +
-                                        std::to_string(ours.height));
+        return broken(Stage::Frame, "their image is " + formatNumber(image.numbers[0]) + "x" +
+                                        formatNumber(image.numbers[1]) +
+                                        ", the request asked for " + std::to_string(ours.width) +
+                                        "x" + std::to_string(ours.height));
     for (std::size_t y = 0; y < image.rows.size(); ++y)
         for (std::size_t i = 0; i < image.rows[y].size(); ++i)
             if (!whole(image.rows[y][i], 0, 255))
                 return broken(Stage::Frame, "row " + std::to_string(y) + " of their image holds " +
-                                                number(image.rows[y][i]) + " (number " +
+                                                formatNumber(image.rows[y][i]) + " (number " +
                                                 std::to_string(i + 1) + "), not a whole 0..255");
     const rl::Rgba8Image theirs = theirImage(answer);
     StageResult result;

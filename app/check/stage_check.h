@@ -76,15 +76,13 @@ public:
     // Our image of the scene (the frame stage's answer), and theirs from a frame answer.
     const rl::Rgba8Image& ourImage() const;
     static rl::Rgba8Image theirImage(const std::vector<Record>& answer);
-    const rl::Scene& scene() const;
 
+    struct Inputs;  // what the requests carry: ours, or a chained run's
     struct Data;
     explicit StageCheck(std::unique_ptr<Data> data);
     ~StageCheck();
 
 private:
-    struct Inputs;
-    Inputs ourInputs() const;
     Inputs chainedInputs(const Answers& theirs) const;
     Request request(Stage stage, const Inputs& in) const;
     StageResult judgeBasis(const std::vector<Record>& answer) const;

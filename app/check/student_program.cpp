@@ -1,5 +1,8 @@
 #include "app/check/student_program.h"
 
+#include <QStandardPaths>
+#include <QString>
+
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -16,6 +19,8 @@
 #include <filesystem>
 #include <mutex>
 
+#include "pipeline/core/format.h"
+
 extern char** environ;
 
 namespace rasterlab::check {
@@ -25,16 +30,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 std::string findInPath(const char* program) {
-    const char* path = std::getenv("PATH");
-    std::string dirs = path ? path : "/usr/bin:/bin";
-    std::size_t start = 0;
-    while (start <= dirs.size()) {
-        const std::size_t end = std::min(dirs.find(':', start), dirs.size());
-        const std::string candidate = dirs.substr(start, end - start) + "/" + program;
-        if (end > start && access(candidate.c_str(), X_OK) == 0) return candidate;
-        start = end + 1;
-    }
-    return {};
+    return QStandardPaths::findExecutable(QString::fromLatin1(program)).toStdString();
 }
 
 // The processes this user runs now: RLIMIT_NPROC counts them all, so the limit is on top.
@@ -59,9 +55,7 @@ std::string shownText(const std::string& text) {
 }
 
 std::string seconds(double s) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%g s", s);
-    return buffer;
+    return rl::formatNumber(s) + " s";
 }
 
 // The first byte of a line that is not text: a control character other than tab and CR.

@@ -19,7 +19,11 @@ namespace {
 constexpr int ExitStageFailed = 3;
 constexpr int ExitProgramBroke = 4;
 
-struct LimitOptions {
+// What check and grade share: the stages asked, and the limits the program runs under.
+struct CheckOptionSet {
+    QCommandLineOption stages{lit("stages"),
+                              lit("Only these stages, comma-separated (default: all eight)."),
+                              lit("LIST")};
     QCommandLineOption requestSeconds{lit("request-timeout"),
                                       lit("Seconds the program has for one answer (default 20)."),
                                       lit("S"), lit("20")};
@@ -36,11 +40,13 @@ struct LimitOptions {
             "stay).")};
 
     void addTo(QCommandLineParser& parser) const {
-        parser.addOptions({requestSeconds, totalSeconds, memory, noSandbox});
+        parser.addOptions({requestSeconds, totalSeconds, memory, noSandbox, stages});
     }
 
-    std::optional<int> read(const QCommandLineParser& parser, check::Limits& limits,
-                            QTextStream& err) const {
+    std::optional<int> read(const QCommandLineParser& parser, check::CheckOptions& options,
+                            QTextStream& err) const;
+    std::optional<int> readLimits(const QCommandLineParser& parser, check::Limits& limits,
+                                  QTextStream& err) const {
         const auto positive = [&](const QCommandLineOption& option, double high,
                                   double& value) -> bool {
             bool ok = false;
@@ -85,6 +91,13 @@ std::optional<int> readStages(const QString& text, std::vector<check::Stage>& st
     return std::nullopt;
 }
 
+std::optional<int> CheckOptionSet::read(const QCommandLineParser& parser,
+                                        check::CheckOptions& options, QTextStream& err) const {
+    if (auto code = readLimits(parser, options.limits, err)) return code;
+    if (parser.isSet(stages)) return readStages(parser.value(stages), options.stages, err);
+    return std::nullopt;
+}
+
 int exitCodeOf(const check::CheckReport& report) {
     if (report.passed()) return ExitOk;
     return report.anyBroken() ? ExitProgramBroke : ExitStageFailed;
@@ -111,6 +124,14 @@ int chooseScenes(const QCommandLineParser& parser, const SceneOptions& sceneOpti
     drawn->cullHiddenBackFaces = false;
     scenes.push_back({label.toStdString(), drawn});
     return ExitOk;
+}
+
+bool writeText(const QString& path, const std::string& text, QTextStream& err);
+
+// A grade table as grades.csv and grades.md in dir.
+bool writeTables(const QDir& dir, const std::string& csv, const std::string& md, QTextStream& err) {
+    return writeText(dir.filePath(lit("grades.csv")), csv, err) &&
+           writeText(dir.filePath(lit("grades.md")), md, err);
 }
 
 bool writeText(const QString& path, const std::string& text, QTextStream& err) {
@@ -149,11 +170,10 @@ int gradeHw2(const QCommandLineParser& parser, const QCommandLineOption& hw2,
     const QDir dir(parser.value(output));
     if (!dir.mkpath(lit(".")))
         return usageError(err, lit("--output: cannot make the folder '%1'").arg(dir.path()));
-    const bool written = writeText(dir.filePath(lit("grades.csv")),
-                                   check::hw2Table(submissions, verdicts, "csv"), err) &&
-                         writeText(dir.filePath(lit("grades.md")),
-                                   check::hw2Table(submissions, verdicts, "md"), err);
-    return written ? ExitOk : ExitBadInput;
+    return writeTables(dir, check::hw2Table(submissions, verdicts, "csv"),
+                       check::hw2Table(submissions, verdicts, "md"), err)
+               ? ExitOk
+               : ExitBadInput;
 }
 
 }  // namespace
@@ -178,21 +198,17 @@ int runCheck(const QStringList& arguments, QTextStream& out, QTextStream& err) {
                                     lit("DIR"));
     const QCommandLineOption format(lit("format"), lit("text (default), md or json."),
                                     lit("FORMAT"), lit("text"));
-    const QCommandLineOption stagesOption(lit("stages"),
-                                          lit("Only these stages, comma-separated (default: "
-                                              "all eight)."),
-                                          lit("LIST"));
     const QCommandLineOption chain(lit("chain"),
                                    lit("Give each stage the program's own earlier answers as "
                                        "its input, to see how errors add up (by default each "
                                        "stage gets RasterLab's, so no mistake hides another)."));
     const SceneOptions sceneOptions;
-    const LimitOptions limitOptions;
+    const CheckOptionSet checkOptions;
     const QCommandLineOption sceneName = SceneOptions::generatedSceneOption();
     parser.addOption(help);
     sceneOptions.addTo(parser);
-    limitOptions.addTo(parser);
-    parser.addOptions({sceneName, program, folder, format, stagesOption, chain});
+    checkOptions.addTo(parser);
+    parser.addOptions({sceneName, program, folder, format, chain});
     rl::CourseSceneSettings settings;
     if (auto code = parseSceneCommand(parser, arguments, help, lit("check"), sceneOptions,
                                       sceneName, settings, out, err))
@@ -204,9 +220,7 @@ int runCheck(const QStringList& arguments, QTextStream& out, QTextStream& err) {
         return usageError(err,
                           lit("--format expects text, md or json, found '%1'").arg(formatName));
     check::CheckOptions options;
-    if (auto code = limitOptions.read(parser, options.limits, err)) return *code;
-    if (parser.isSet(stagesOption))
-        if (auto code = readStages(parser.value(stagesOption), options.stages, err)) return *code;
+    if (auto code = checkOptions.read(parser, options, err)) return *code;
     options.chain = parser.isSet(chain);
     const QString dir = parser.isSet(folder) ? parser.value(folder) : QDir::currentPath();
     if (!QFileInfo(dir).isDir())
@@ -243,22 +257,18 @@ int runGrade(const QStringList& arguments, QTextStream& out, QTextStream& err) {
                                     lit("FORMAT"), lit("md"));
     const QCommandLineOption jobs(
         lit("jobs"), lit("Submissions checked at once (default 2; 1 to 16)."), lit("N"), lit("2"));
-    const QCommandLineOption stagesOption(lit("stages"),
-                                          lit("Only these stages, comma-separated (default: "
-                                              "all eight)."),
-                                          lit("LIST"));
     const SceneOptions sceneOptions;
-    const LimitOptions limitOptions;
+    const CheckOptionSet checkOptions;
     const QCommandLineOption sceneName = SceneOptions::generatedSceneOption();
     parser.addOption(help);
     sceneOptions.addTo(parser);
-    limitOptions.addTo(parser);
+    checkOptions.addTo(parser);
     const QCommandLineOption hw2(lit("hw2"),
                                  lit("HW2 submissions: run each program on this command file (the "
                                      "file's name after its command, in a copy of its folder) and "
                                      "compare the PNGs it names with ours; repeat for each file."),
                                  lit("FILE"));
-    parser.addOptions({sceneName, submissions, output, format, jobs, stagesOption, hw2});
+    parser.addOptions({sceneName, submissions, output, format, jobs, hw2});
     rl::CourseSceneSettings settings;
     if (auto code = parseSceneCommand(parser, arguments, help, lit("grade"), sceneOptions,
                                       sceneName, settings, out, err))
@@ -274,9 +284,7 @@ int runGrade(const QStringList& arguments, QTextStream& out, QTextStream& err) {
             err,
             lit("--jobs expects a whole number from 1 to 16, found '%1'").arg(parser.value(jobs)));
     check::CheckOptions options;
-    if (auto code = limitOptions.read(parser, options.limits, err)) return *code;
-    if (parser.isSet(stagesOption))
-        if (auto code = readStages(parser.value(stagesOption), options.stages, err)) return *code;
+    if (auto code = checkOptions.read(parser, options, err)) return *code;
     const auto found = check::findSubmissions(parser.value(submissions).toStdString());
     if (!found) return inputError(err, found.error());
     if (found->empty())
@@ -302,8 +310,7 @@ int runGrade(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     if (!dir.mkpath(lit("reports")))
         return usageError(err, lit("--output: cannot make the folder '%1'").arg(dir.path()));
     bool written =
-        writeText(dir.filePath(lit("grades.csv")), check::gradeTable(rows, "csv"), err) &&
-        writeText(dir.filePath(lit("grades.md")), check::gradeTable(rows, "md"), err);
+        writeTables(dir, check::gradeTable(rows, "csv"), check::gradeTable(rows, "md"), err);
     for (const check::GradeRow& row : rows) {
         const QString base =
             dir.filePath(lit("reports/") + QString::fromStdString(row.submission.name));

@@ -136,11 +136,7 @@ CheckPanel::CheckPanel(Inspection* inspection, QWidget* parent)
     connect(m_cancel, &QPushButton::clicked, this, &CheckPanel::cancel);
     connect(m_stop, &QPushButton::clicked, this, &CheckPanel::stopAtFirstDeparture);
     connect(m_compare, &QPushButton::clicked, this, [this] {
-        if (!m_report || m_report->scenes.empty()) return;
-        const rl::Rgba8Image& f = m_report->scenes.front().theirFrame;
-        if (f.rgba.empty()) return;
-        emit compareFrame(
-            QImage(f.rgba.data(), f.width, f.height, f.width * 4, QImage::Format_RGBA8888).copy());
+        if (const QImage theirs = theirFrame(); !theirs.isNull()) emit compareFrame(theirs);
     });
     connect(m_browse, &QPushButton::clicked, this, [this] {
         const QString dir =
@@ -237,8 +233,7 @@ void CheckPanel::onFinished() {
     m_run->setEnabled(true);
     m_cancel->setEnabled(false);
     m_progress->setFormat(m_report->cancelled ? tr("cancelled") : tr("done"));
-    m_compare->setEnabled(!m_report->scenes.empty() &&
-                          !m_report->scenes.front().theirFrame.rgba.empty());
+    m_compare->setEnabled(!theirFrame().isNull());
     showReport();
     emit finished();
 }
@@ -362,19 +357,16 @@ std::optional<check::Stage> CheckPanel::selectedStage() const {
     return check::Stage(item->data(0, Qt::UserRole).toInt());
 }
 
-void CheckPanel::selectStage(check::Stage stage) {
-    for (int i = 0; i < m_stages->topLevelItemCount(); ++i)
-        if (m_stages->topLevelItem(i)->data(0, Qt::UserRole).toInt() == int(stage))
-            m_stages->setCurrentItem(m_stages->topLevelItem(i));
-}
-
 const check::StageResult* CheckPanel::selectedResult() const {
     const auto stage = selectedStage();
-    if (!stage || !m_report) return nullptr;
-    for (const check::SceneReport& s : m_report->scenes)
-        for (const check::StageResult& r : s.stages)
-            if (r.stage == *stage) return &r;
-    return nullptr;
+    return stage && m_report ? m_report->result(*stage) : nullptr;
+}
+
+QImage CheckPanel::theirFrame() const {
+    if (!m_report || m_report->scenes.empty()) return {};
+    const rl::Rgba8Image& f = m_report->scenes.front().theirFrame;
+    if (f.rgba.empty()) return {};
+    return QImage(f.rgba.data(), f.width, f.height, f.width * 4, QImage::Format_RGBA8888).copy();
 }
 
 QString CheckPanel::detailsText() const {

@@ -58,8 +58,9 @@ public:
 
     // The stage selected in the list, and what is said of it.
     std::optional<check::Stage> selectedStage() const;
-    void selectStage(check::Stage stage);
     const check::StageResult* selectedResult() const;
+    // Their frame as the last check read it (null when its frame stage gave none).
+    QImage theirFrame() const;
     QString detailsText() const;
     // Steps the frame to the selected stage's first departure: the pixel picked and the
     // frame stepped to its first fragment, or the triangle selected. False when it has none.

@@ -51,28 +51,24 @@ void MainWindow::showCheckMarks() {
                                             ? StageStrip::CheckMark::Passed
                                             : StageStrip::CheckMark::Failed;
     m_stageStrip->setCheckMarks(marks);
+    const check::CheckReport* report = m_check->report();
+    const auto departures = [report](check::Stage stage) {
+        const check::StageResult* r = report ? report->result(stage) : nullptr;
+        return r ? r->departures : std::vector<check::Departure>();
+    };
     // The projection view draws their vertices over ours.
     std::vector<ProjectionCanvas::VertexPair> pairs;
-    if (const check::CheckReport* report = m_check->report())
-        for (const check::SceneReport& scene : report->scenes)
-            for (const check::StageResult& r : scene.stages)
-                if (r.stage == check::Stage::Projection)
-                    for (const check::Departure& d : r.departures)
-                        pairs.emplace_back(QPointF(d.ours.x, d.ours.y),
-                                           QPointF(d.theirs.x, d.theirs.y));
+    for (const check::Departure& d : departures(check::Stage::Projection))
+        pairs.emplace_back(QPointF(d.ours.x, d.ours.y), QPointF(d.theirs.x, d.theirs.y));
     m_projection->canvas()->setTheirVertices(std::move(pairs));
     // The z-buffer view marks the pixels whose winner differs.
     std::vector<QPoint> pixels;
-    if (const check::CheckReport* report = m_check->report())
-        for (const check::SceneReport& scene : report->scenes)
-            for (const check::StageResult& r : scene.stages)
-                if (r.stage == check::Stage::ZBuffer)
-                    for (const check::Departure& d : r.departures)
-                        pixels.emplace_back(int(d.ours.x), int(d.ours.y));
+    for (const check::Departure& d : departures(check::Stage::ZBuffer))
+        pixels.emplace_back(int(d.ours.x), int(d.ours.y));
     m_zbuffer->markPixels(pixels);
     // The scan view puts their span of the row shown beside ours.
     ScanlineView::TheirSpans spans;
-    if (const check::CheckReport* report = m_check->report(); report && !report->scenes.empty())
+    if (report && !report->scenes.empty())
         for (const check::Row& r : report->scenes.front().theirSpans) {
             const auto key = std::make_pair(std::uint32_t(r[0]), int(r[1]));
             const auto it = spans.find(key);
@@ -82,14 +78,7 @@ void MainWindow::showCheckMarks() {
         }
     m_scanline->setTheirSpans(m_check->checkedFrame(), std::move(spans));
     // The pixel inspector gives their colour at the pixel picked beside ours.
-    QImage theirs;
-    if (const check::CheckReport* report = m_check->report(); report && !report->scenes.empty()) {
-        const rl::Rgba8Image& f = report->scenes.front().theirFrame;
-        if (!f.rgba.empty())
-            theirs = QImage(f.rgba.data(), f.width, f.height, f.width * 4, QImage::Format_RGBA8888)
-                         .copy();
-    }
-    m_inspector->setTheirFrame(m_check->checkedFrame(), std::move(theirs));
+    m_inspector->setTheirFrame(m_check->checkedFrame(), m_check->theirFrame());
     if (!m_checkDock->isHidden()) m_checkDock->raise();
 }
 
