@@ -116,6 +116,7 @@ private slots:
     void savedLessonReopensInAnotherProcess();
     void lessonSavedPresentingGivesTheLayoutBack();
     void missingFileOpensTheRest();
+    void inputFilesReadWithinTheLimit();
     void languageSwitchKeepsTheView();
     void cliRendersALesson();
 };
@@ -654,6 +655,29 @@ void TestLessons::missingFileOpensTheRest() {
                                                "stays: ") +
                          QString::fromStdString(missing.error().toString())});
     QCOMPARE(window.messages()->item(0)->text(), window.lessonProblems().front());
+}
+
+// An input file is read whole up to the limit, across the chunks it is read in; one byte
+// more, from a file or from a device with no size, is refused.
+void TestLessons::inputFilesReadWithinTheLimit() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QByteArray text((5 << 20) / 2, 'a');
+    for (qsizetype i = 0; i < text.size(); i += 4099) text[i] = char('0' + i % 10);
+    const QString path = writeText(dir, QStringLiteral("big.txt"), text);
+    const auto whole = readInputFile(path, text.size());
+    QVERIFY(whole);
+    QVERIFY(whole.value() == text);
+    QVERIFY(!readInputFile(path, text.size() - 1));
+    const auto over = readInputFile(path, qint64(2) << 20);
+    QVERIFY(!over);
+    QCOMPARE(QString::fromStdString(over.error().toString()),
+             path + QStringLiteral(": the file has 3 MiB, more than the 2 MiB an input file "
+                                   "may have"));
+    const auto device = readInputFile(QStringLiteral("/dev/zero"), qint64(3) << 20);
+    QVERIFY(!device);
+    QCOMPARE(QString::fromStdString(device.error().toString()),
+             QStringLiteral("/dev/zero: the file has more than the 3 MiB an input file may have"));
 }
 
 // What gui_main does when the language changes: the new window adopts the document and

@@ -2,6 +2,7 @@
 
 #include <QFile>
 
+#include <algorithm>
 #include <string>
 
 namespace rasterlab {
@@ -20,7 +21,15 @@ rl::Result<QByteArray> readInputFile(const QString& path, qint64 maxBytes) {
         return rl::makeError(rl::ErrorCode::Range, where,
                              "the file has %1 MiB, more than the %2 MiB an input file may have"_msg(
                                  mib(file.size()), mib(maxBytes)));
-    QByteArray bytes = file.read(maxBytes + 1);
+    // Read in chunks: asking read() for the whole limit would reserve all of it at once.
+    QByteArray bytes;
+    if (!file.isSequential()) bytes.reserve(file.size());
+    constexpr qint64 kChunk = qint64(1) << 20;
+    while (bytes.size() <= maxBytes) {
+        const QByteArray chunk = file.read(std::min(kChunk, maxBytes + 1 - bytes.size()));
+        if (chunk.isEmpty()) break;
+        bytes += chunk;
+    }
     if (bytes.size() > maxBytes)
         return rl::makeError(
             rl::ErrorCode::Range, where,
