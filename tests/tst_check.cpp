@@ -7,8 +7,11 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <signal.h>
+
 #include "app/check/check_session.h"
 #include "app/check/stage_mistakes.h"
+#include "app/check/student_program.h"
 #include "pipeline/stages/camera_basis.h"
 #include "pipeline/stages/projection.h"
 #include "pipeline/stages/scan_conversion.h"
@@ -466,6 +469,63 @@ private slots:
 
     // Programs that misbehave end within 120 s, with a status below 128 and a message that
     // names what happened.
+    // A program that forks as much as it can gets no more than its limit of processes, as
+    // root too (a pids cgroup then), and what it started, even out of its process group, is
+    // gone once the run ends.
+    void processesAreBounded_data() {
+        QTest::addColumn<bool>("sandbox");
+        QTest::newRow("bubblewrap") << true;
+        QTest::newRow("no sandbox") << false;
+    }
+
+    void processesAreBounded() {
+        QFETCH(bool, sandbox);
+        QTemporaryDir dir;
+        QFile file(dir.filePath("forks.py"));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(
+            "import os, time\n"
+            "started = []\n"
+            "for i in range(40):\n"
+            "    try:\n"
+            "        pid = os.fork()\n"
+            "    except OSError:\n"
+            "        break\n"
+            "    if pid == 0:\n"
+            "        os.setsid()\n"
+            "        time.sleep(60)\n"
+            "        os._exit(0)\n"
+            "    started.append(pid)\n"
+            "print(len(started), flush=True)\n"
+            "print(os.getpid() if len(started) == 0 else started[0], flush=True)\n"
+            "time.sleep(60)\n");
+        file.close();
+        Limits limits;
+        limits.processes = 16;
+        limits.sandbox = sandbox;
+        pid_t escaped = 0;
+        {
+            StudentProgram program(python().toStdString() + " forks.py", dir.path().toStdString(),
+                                   limits);
+            bool bounded = false;
+            for (const auto& p : program.protections())
+                bounded = bounded || p.rfind("processes: 16", 0) == 0;
+            if (!bounded)
+                QSKIP(qPrintable(QString::fromStdString(program.missingProtections().back())));
+            program.beginRequest();
+            const auto count = program.readLine();
+            QVERIFY2(count, program.error().c_str());
+            qInfo("forks that succeeded: %s (limit 16 processes)", count->c_str());
+            QVERIFY(std::stoi(*count) > 0);
+            QVERIFY(std::stoi(*count) < 16);
+            const auto first = program.readLine();
+            QVERIFY2(first, program.error().c_str());
+            escaped = pid_t(std::stol(*first));
+        }
+        if (sandbox) return;  // the first fork's pid is inside bubblewrap's own pid namespace
+        QTRY_VERIFY_WITH_TIMEOUT(kill(escaped, 0) != 0, 2000);
+    }
+
     void hostileProgramsAreStopped_data() {
         QTest::addColumn<QString>("command");
         QTest::addColumn<QString>("message");

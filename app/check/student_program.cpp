@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <mutex>
 
+#include "app/check/pids_cgroup.h"
 #include "pipeline/core/format.h"
 
 extern char** environ;
@@ -114,6 +115,7 @@ StudentProgram::~StudentProgram() {
         kill(m_pid, SIGKILL);
         reap(true);
     }
+    m_cgroup.reset();  // kills what escaped the group, then removes the cgroup
     if (m_stdin >= 0) close(m_stdin);
     if (m_stdout >= 0) close(m_stdout);
     std::error_code ec;
@@ -196,11 +198,21 @@ void StudentProgram::startProcess(const std::string& command, const std::string&
     }
 
     std::vector<std::string> args = arguments(command, folder);
+    // RLIMIT_NPROC counts this user's processes but never binds root: there a pids cgroup
+    // holds the limit, where one can be made.
     const bool root = geteuid() == 0;
     const int nproc = processesOfThisUser() + m_limits.processes;
-    (root ? m_missing : m_protections)
-        .push_back("processes: " + std::to_string(m_limits.processes) +
-                   (root ? " (not enforced: RasterLab runs as root)" : " more than now"));
+    const std::string processes = "processes: " + std::to_string(m_limits.processes);
+    std::string noCgroup;
+    if (root) m_cgroup = PidsCgroup::make(m_limits.processes, &noCgroup);
+    if (!root)
+        m_protections.push_back(processes + " more than now");
+    else if (m_cgroup)
+        m_protections.push_back(processes + " (a pids cgroup)");
+    else
+        m_missing.push_back(processes + " (not enforced: RasterLab runs as root, and " + noCgroup +
+                            ")");
+    const PidsCgroup* cgroup = m_cgroup.get();
 
     // Everything the child needs is made before fork: after it only system calls.
     std::vector<char*> argv;
@@ -224,6 +236,7 @@ void StudentProgram::startProcess(const std::string& command, const std::string&
     const int err = open(errorFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
     const pid_t pid = fork();
     if (pid == 0) {
+        if (cgroup && !cgroup->enter()) _exit(126);
         setsid();
         dup2(in[0], 0);
         dup2(out[1], 1);
@@ -483,7 +496,8 @@ void StudentProgram::reap(bool wait) {
     if (r == m_pid) {
         m_reaped = true;
         m_status = status;
-        kill(-m_pid, SIGKILL);  // whatever it left behind in its group
+        kill(-m_pid, SIGKILL);              // whatever it left behind in its group
+        if (m_cgroup) m_cgroup->killAll();  // and out of it
     }
 }
 

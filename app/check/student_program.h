@@ -16,6 +16,8 @@
 
 namespace rasterlab::check {
 
+class PidsCgroup;
+
 struct Limits {
     double requestSeconds = 20.0;  // wall clock, for one request's answer
     double totalSeconds = 120.0;   // wall clock, for the whole run
@@ -84,6 +86,7 @@ private:
     void reap(bool wait);
 
     Limits m_limits;
+    std::unique_ptr<PidsCgroup> m_cgroup;  // bounds the processes where RLIMIT_NPROC does not
     std::vector<std::string> m_protections, m_missing;
     std::string m_error;
     std::string m_tempFolder;
