@@ -469,6 +469,33 @@ private slots:
 
     // Programs that misbehave end within 120 s, with a status below 128 and a message that
     // names what happened.
+    // HW2 grading on images no RasterLab code made: examples/student/hw2's rasterizer passes
+    // as written, and fails with multmv ignored (2368 of 7680 pixels off).
+    void gradeHw2WithAnIndependentRenderer() {
+        QTemporaryDir dir;
+        const QDir root(dir.path());
+        const QString hw2 = testing::sourceDir() + "/examples/student/hw2/";
+        const QByteArray run = python().toUtf8() + " '" + hw2.toUtf8() + "rasterizer.py'";
+        for (const auto& [name, command] :
+             {std::pair{QStringLiteral("as-written"), run},
+              std::pair{QStringLiteral("forgets-multmv"), run + " --ignore-multmv"}}) {
+            QVERIFY(root.mkpath("class/" + name));
+            QFile file(root.filePath("class/" + name + "/run"));
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            file.write(command + "\n");
+        }
+        testing::CliRun grade;
+        QVERIFY2(testing::runCli({"grade", "--submissions", root.filePath("class"), "--hw2",
+                                  hw2 + "scene.txt", "--format", "csv"},
+                                 dir.path(), grade),
+                 qPrintable(grade.problem));
+        QCOMPARE(grade.exitCode, 0);
+        QCOMPARE(
+            grade.out.split('\n', Qt::SkipEmptyParts),
+            QStringList({"submission,scene.png,passed,note", "as-written,passed (0.00% off),yes,",
+                         "forgets-multmv,failed (30.83% off),no,"}));
+    }
+
     // A program that forks as much as it can gets no more than its limit of processes, as
     // root too (a pids cgroup then), and what it started, even out of its process group, is
     // gone once the run ends.

@@ -148,6 +148,8 @@ private slots:
     void unknownMistakeIsUnexplained();
     void fittedLightingComposes();
     void fitsWhatTheirLightingUsed();
+    void commandFileOfAnIndependentRenderer_data();
+    void commandFileOfAnIndependentRenderer();
 };
 
 void TestCompareStudents::oneMistake_data() {
@@ -418,6 +420,50 @@ void TestCompareStudents::fitsWhatTheirLightingUsed() {
         for (const QJsonObject& v : fitOf(result))
             QVERIFY2(!v["differs"].toBool(), qPrintable(v["name"].toString()));
     }
+}
+
+// An HW2 command file drawn by examples/student/hw2's rasterizer, written from seed 001
+// alone: as written, it is our image to the byte; with multmv ignored, compare names the line
+// and the misreading, and leaves nothing unexplained.
+void TestCompareStudents::commandFileOfAnIndependentRenderer_data() {
+    QTest::addColumn<QStringList>("switches");
+    QTest::addColumn<int>("differing");
+    QTest::newRow("as written") << QStringList{} << 0;
+    QTest::newRow("--ignore-multmv") << QStringList{QStringLiteral("--ignore-multmv")} << 2368;
+}
+
+void TestCompareStudents::commandFileOfAnIndependentRenderer() {
+    QFETCH(QStringList, switches);
+    QFETCH(int, differing);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString hw2 = testing::sourceDir() + QStringLiteral("/examples/student/hw2/");
+    QVERIFY(QFile::copy(hw2 + QStringLiteral("scene.txt"),
+                        dir.filePath(QStringLiteral("scene.txt"))));
+    QProcess python;
+    python.setWorkingDirectory(dir.path());
+    python.start(QStringLiteral(RASTERLAB_PYTHON),
+                 QStringList{hw2 + QStringLiteral("rasterizer.py"), QStringLiteral("scene.txt")} +
+                     switches);
+    QVERIFY(python.waitForFinished(120000));
+    QVERIFY2(python.exitCode() == 0, python.readAllStandardError().constData());
+    CliRun run;
+    QVERIFY(runCli({"compare", "scene.txt", "--image", "scene.png", "--format", "json"}, dir.path(),
+                   run));
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    const QJsonObject result = QJsonDocument::fromJson(run.out.toUtf8()).object();
+    QCOMPARE(result[QStringLiteral("differing")].toInt(), differing);
+    const QJsonArray diagnosis = result[QStringLiteral("diagnosis")].toArray();
+    if (differing == 0) {
+        QVERIFY(diagnosis.isEmpty());
+        return;
+    }
+    QVERIFY2(!diagnosis.isEmpty(), qPrintable(run.out));
+    const QJsonObject first = diagnosis.first().toObject();
+    QCOMPARE(first[QStringLiteral("mistake")].toString(), QStringLiteral("command-misread"));
+    QCOMPARE(first[QStringLiteral("line")].toInt(), 17);
+    QCOMPARE(first[QStringLiteral("variant")].toString(), QStringLiteral("ignored"));
+    QCOMPARE(result[QStringLiteral("unexplained")][QStringLiteral("share")].toDouble(), 0.0);
 }
 
 QTEST_GUILESS_MAIN(TestCompareStudents)
