@@ -17,10 +17,14 @@
 #include <QToolButton>
 #include <QTreeWidget>
 
+#include <algorithm>
+
 #include "app/window/check_panel.h"
 #include "app/window/compare_panel.h"
 #include "app/window/main_window.h"
 #include "app/window/translators.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/stages/scan_conversion.h"
 #include "tests/test_support.h"
 #include "views/frame_image_view.h"
 #include "views/pixel_inspector.h"
@@ -123,7 +127,8 @@ private slots:
     void comparesTheirFrame() {
         CheckPanel* panel = m_window.checkPanel();
         QVERIFY(checkWith(panel, "--ambient-times-od"));
-        // The pixel inspector gives their colour beside ours at the pixel picked.
+        // The pixel inspector gives their colour beside ours at the pixel picked, and the
+        // Phong term that departs: the ambient term, times Od.
         const check::StageResult* frame = nullptr;
         for (const check::StageResult& st : panel->report()->scenes.front().stages)
             if (st.stage == check::Stage::Frame) frame = &st;
@@ -132,9 +137,12 @@ private slots:
                            int(frame->departures.front().ours.y));
         m_window.inspection()->pickPixel(pixel);
         const QString their = m_window.pixelInspector()->theirColourText();
-        QVERIFY2(their.startsWith(QStringLiteral("Your renderer's colour here: (")) &&
-                     their.endsWith(QStringLiteral("tells which Phong term would have to change.")),
-                 qPrintable(their));
+        QVERIFY2(
+            their.startsWith(QStringLiteral("Your renderer's colour here: (")) &&
+                their.contains(QStringLiteral("\nFor your colour, each term alone:\n• the ambient "
+                                              "term Ia·ka would have to be ")) &&
+                their.contains(QStringLiteral(": that is the term times Od (")),
+            qPrintable(their));
         QVERIFY(panel->compareButton()->isEnabled());
         QTest::mouseClick(panel->compareButton(), Qt::LeftButton);
         const rl::ImageComparison* comparison = m_window.comparePanel()->comparison();
@@ -164,6 +172,21 @@ private slots:
                                    .arg(row.xEnd - 2)
                                    .arg(row.xEnd - 1)),
                  qPrintable(html));
+        // Its grid outlines their span and crosses out the pixel only ours covers, on every
+        // row of the triangle in the window.
+        QVERIFY(scan->theirCoverage());
+        const ScanlineView::TheirCoverage& theirs = *scan->theirCoverage();
+        QCOMPARE(theirs.rowSpan, std::make_optional(std::make_pair(row.xBegin, row.xEnd - 2)));
+        QVERIFY(theirs.onlyTheirs.empty());
+        QVERIFY(std::find(theirs.onlyOurs.begin(), theirs.onlyOurs.end(),
+                          QPoint(row.xEnd - 1, row.y)) != theirs.onlyOurs.end());
+        const rl::ScanConversion& ours = *m_window.inspection()->frame()->scan;
+        const std::uint32_t t = scan->model()->triangle;
+        const QRect window = scan->drawnWindow();
+        qsizetype rows = 0;
+        for (std::uint32_t i = ours.spanStart[t]; i < ours.spanStart[t + 1]; ++i)
+            rows += window.contains(ours.spans[i].xEnd - 1, ours.spans[i].y);
+        QCOMPARE(theirs.onlyOurs.size(), rows);
         QVERIFY(!m_window.inspection()->atEnd());
         QVERIFY(m_window.inspection()->breakpoints().empty());  // the user's, put back
     }
@@ -254,6 +277,16 @@ private slots:
             QTest::qWait(1000);
             const QPixmap screen = QGuiApplication::primaryScreen()->grabWindow(0);
             QVERIFY(screen.save(QDir(dir).filePath("check-" + language + ".png")));
+            // The scan view at a span that ends one pixel early.
+            panel->setCommand(QStringLiteral("python3 stages.py --span-end-exclusive"));
+            QVERIFY(panel->start().isEmpty());
+            QVERIFY(finished.wait(kTimeoutMs));
+            QVERIFY(panel->stopAtFirstDeparture());
+            QVERIFY(QTest::qWaitFor([&] { return ready(window); }, kTimeoutMs));
+            QTest::qWait(500);
+            ScanlineView* scan = window.findChild<ScanlineView*>();
+            QVERIFY(scan && scan->theirCoverage());
+            QVERIFY(scan->grab().save(QDir(dir).filePath("check-scan-" + language + ".png")));
             translators.install(QStringLiteral("en"));
         }
         m_window.show();

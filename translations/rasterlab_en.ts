@@ -3226,137 +3226,137 @@
         <translation>Likely cause</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="147"/>
+        <location filename="../app/window/check_panel.cpp" line="143"/>
         <source>Your Program&apos;s Folder</source>
         <translation>Your Program&apos;s Folder</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="190"/>
+        <location filename="../app/window/check_panel.cpp" line="186"/>
         <source>A check is running.</source>
         <translation>A check is running.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="192"/>
+        <location filename="../app/window/check_panel.cpp" line="188"/>
         <source>Give the command that starts your program.</source>
         <translation>Give the command that starts your program.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="195"/>
+        <location filename="../app/window/check_panel.cpp" line="191"/>
         <source>The folder %1 does not exist.</source>
         <translation>The folder %1 does not exist.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="197"/>
+        <location filename="../app/window/check_panel.cpp" line="193"/>
         <source>There is no frame to check against.</source>
         <translation>There is no frame to check against.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="221"/>
+        <location filename="../app/window/check_panel.cpp" line="217"/>
         <source>Checking %1...</source>
         <translation>Checking %1...</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="239"/>
+        <location filename="../app/window/check_panel.cpp" line="235"/>
         <source>cancelled</source>
         <translation>cancelled</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="239"/>
+        <location filename="../app/window/check_panel.cpp" line="235"/>
         <source>done</source>
         <translation>done</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="250"/>
+        <location filename="../app/window/check_panel.cpp" line="245"/>
         <source>Over our image: each vertex that departs, ours a green dot, theirs a red cross, joined by a line.</source>
         <translation>Over our image: each vertex that departs, ours a green dot, theirs a red cross, joined by a line.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="254"/>
+        <location filename="../app/window/check_panel.cpp" line="249"/>
         <source>Over our image: magenta, pixels only we cover; cyan, pixels only they cover.</source>
         <translation>Over our image: magenta, pixels only we cover; cyan, pixels only they cover.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="258"/>
+        <location filename="../app/window/check_panel.cpp" line="253"/>
         <source>Over our image: red, pixels another triangle wins (or at another depth); magenta, only ours keeps one; cyan, only theirs.</source>
         <translation>Over our image: red, pixels another triangle wins (or at another depth); magenta, only ours keeps one; cyan, only theirs.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="262"/>
+        <location filename="../app/window/check_panel.cpp" line="257"/>
         <source>Over our image: red, pixels whose colour differs by more than 1.</source>
         <translation>Over our image: red, pixels whose colour differs by more than 1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="271"/>
+        <location filename="../app/window/check_panel.cpp" line="266"/>
         <source>passed</source>
         <translation>passed</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="273"/>
+        <location filename="../app/window/check_panel.cpp" line="268"/>
         <source>failed</source>
         <translation>failed</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="275"/>
+        <location filename="../app/window/check_panel.cpp" line="270"/>
         <source>unsupported</source>
         <translation>unsupported</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="277"/>
+        <location filename="../app/window/check_panel.cpp" line="272"/>
         <source>broken</source>
         <translation>broken</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="320"/>
+        <location filename="../app/window/check_panel.cpp" line="315"/>
         <source>not applied: %1</source>
         <translation>not applied: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="329"/>
+        <location filename="../app/window/check_panel.cpp" line="324"/>
         <source>Protected by: %1.</source>
         <translation>Protected by: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="330"/>
+        <location filename="../app/window/check_panel.cpp" line="325"/>
         <source>Protected by: %1. Not applied: %2.</source>
         <translation>Protected by: %1. Not applied: %2.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="334"/>
+        <location filename="../app/window/check_panel.cpp" line="329"/>
         <source>Not checked: %1</source>
         <translation>Not checked: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="340"/>
+        <location filename="../app/window/check_panel.cpp" line="335"/>
         <source>%1 of %2 differ</source>
         <translation>%1 of %2 differ</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="356"/>
+        <location filename="../app/window/check_panel.cpp" line="351"/>
         <source>Every stage passed (%1 s).</source>
         <translation>Every stage passed (%1 s).</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="393"/>
+        <location filename="../app/window/check_panel.cpp" line="385"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="397"/>
+        <location filename="../app/window/check_panel.cpp" line="389"/>
         <source>First departure: %1: theirs %2, ours %3</source>
         <translation>First departure: %1: theirs %2, ours %3</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="401"/>
+        <location filename="../app/window/check_panel.cpp" line="393"/>
         <source>Likely cause: %1</source>
         <translation>Likely cause: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="403"/>
+        <location filename="../app/window/check_panel.cpp" line="395"/>
         <source>No known mistake of this stage gives their answer.</source>
         <translation>No known mistake of this stage gives their answer.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="404"/>
+        <location filename="../app/window/check_panel.cpp" line="396"/>
         <source>Tolerance: %1</source>
         <translation>Tolerance: %1</translation>
     </message>
@@ -3443,110 +3443,110 @@
 <context>
     <name>rasterlab::ComparePanel</name>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="126"/>
-        <location filename="../app/window/compare_panel.cpp" line="130"/>
+        <location filename="../app/window/compare_panel.cpp" line="127"/>
+        <location filename="../app/window/compare_panel.cpp" line="131"/>
         <source>R %1, G %2, B %3, A %4</source>
         <translation>R %1, G %2, B %3, A %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="140"/>
+        <location filename="../views/their_colour.cpp" line="25"/>
         <source>red</source>
         <translation>red</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="142"/>
+        <location filename="../views/their_colour.cpp" line="27"/>
         <source>green</source>
         <translation>green</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="144"/>
+        <location filename="../views/their_colour.cpp" line="29"/>
         <source>blue</source>
         <translation>blue</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="146"/>
+        <location filename="../views/their_colour.cpp" line="31"/>
         <source>alpha</source>
         <translation>alpha</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="153"/>
+        <location filename="../views/their_colour.cpp" line="38"/>
         <source>%1 and %2</source>
         <translation>%1 and %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="169"/>
+        <location filename="../app/window/compare_panel.cpp" line="146"/>
         <source>Side by side</source>
         <translation>Side by side</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="170"/>
+        <location filename="../app/window/compare_panel.cpp" line="147"/>
         <source>Flicker</source>
         <translation>Flicker</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="171"/>
+        <location filename="../app/window/compare_panel.cpp" line="148"/>
         <source>Difference</source>
         <translation>Difference</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="173"/>
+        <location filename="../app/window/compare_panel.cpp" line="150"/>
         <source>Theirs beside ours, one after the other twice a second, or the pixels that differ</source>
         <translation>Theirs beside ours, one after the other twice a second, or the pixels that differ</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="176"/>
+        <location filename="../app/window/compare_panel.cpp" line="153"/>
         <source>Differ by more than</source>
         <translation>Differ by more than</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="182"/>
+        <location filename="../app/window/compare_panel.cpp" line="159"/>
         <source>The difference view shows the pixels where some channel differs by more than this (0: every difference)</source>
         <translation>The difference view shows the pixels where some channel differs by more than this (0: every difference)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="187"/>
+        <location filename="../app/window/compare_panel.cpp" line="164"/>
         <source>Compare Again</source>
         <translation>Compare Again</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="190"/>
+        <location filename="../app/window/compare_panel.cpp" line="167"/>
         <source>The scene changed since the comparison: compare their image with the scene shown now</source>
         <translation>The scene changed since the comparison: compare their image with the scene shown now</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="223"/>
+        <location filename="../app/window/compare_panel.cpp" line="200"/>
         <source>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</source>
         <translation>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="261"/>
+        <location filename="../app/window/compare_panel.cpp" line="238"/>
         <source>There is no render to compare with yet.</source>
         <translation>There is no render to compare with yet.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="269"/>
+        <location filename="../app/window/compare_panel.cpp" line="246"/>
         <source>Their image: %1.</source>
         <translation>Their image: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="275"/>
+        <location filename="../app/window/compare_panel.cpp" line="252"/>
         <source>Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.</source>
         <translation>Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="370"/>
-        <location filename="../app/window/compare_panel.cpp" line="373"/>
+        <location filename="../app/window/compare_panel.cpp" line="345"/>
+        <location filename="../app/window/compare_panel.cpp" line="348"/>
         <source>Theirs</source>
         <translation>Theirs</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="370"/>
-        <location filename="../app/window/compare_panel.cpp" line="373"/>
+        <location filename="../app/window/compare_panel.cpp" line="345"/>
+        <location filename="../app/window/compare_panel.cpp" line="348"/>
         <source>Ours</source>
         <translation>Ours</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/compare_panel.cpp" line="378"/>
+        <location filename="../app/window/compare_panel.cpp" line="353"/>
         <source>%n pixel(s) differ by more than %1</source>
         <translation>
             <numerusform>%n pixel differs by more than %1</numerusform>
@@ -3554,272 +3554,272 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="442"/>
+        <location filename="../app/window/compare_panel.cpp" line="417"/>
         <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
         <translation>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="451"/>
+        <location filename="../app/window/compare_panel.cpp" line="426"/>
         <source>Their image is unlit: one colour %1 wherever it covers. Only coverage is compared (our covered pixels in that colour), and only projection and scan conversion mistakes are tried.</source>
         <translation>Their image is unlit: one colour %1 wherever it covers. Only coverage is compared (our covered pixels in that colour), and only projection and scan conversion mistakes are tried.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="456"/>
+        <location filename="../app/window/compare_panel.cpp" line="431"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Largest difference per channel: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="457"/>
+        <location filename="../app/window/compare_panel.cpp" line="432"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Mean difference per channel, over the differing pixels: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="459"/>
+        <location filename="../app/window/compare_panel.cpp" line="434"/>
         <source>Pixels covered: %1 by both, %2 only by ours (our depth buffer), %3 only by theirs (not the background).</source>
         <translation>Pixels covered: %1 by both, %2 only by ours (our depth buffer), %3 only by theirs (not the background).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="479"/>
+        <location filename="../app/window/compare_panel.cpp" line="454"/>
         <source>Diagnosis, each mistake applied before the next is ranked:</source>
         <translation>Diagnosis, each mistake applied before the next is ranked:</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="485"/>
+        <location filename="../app/window/compare_panel.cpp" line="460"/>
         <source>Removes %1% of the difference; makes %2 differing pixels match.</source>
         <translation>Removes %1% of the difference; makes %2 differing pixels match.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="466"/>
+        <location filename="../app/window/compare_panel.cpp" line="441"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="194"/>
+        <location filename="../app/window/compare_panel.cpp" line="171"/>
         <source>Render Ours with the Fitted Lighting</source>
         <translation>Render Ours with the Fitted Lighting</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="197"/>
+        <location filename="../app/window/compare_panel.cpp" line="174"/>
         <source>Set the light&apos;s position, Ia, Il, kd, ks and n to the values fitted to their colours (one edit, undoable), and render ours with them</source>
         <translation>Set the light&apos;s position, Ia, Il, kd, ks and n to the values fitted to their colours (one edit, undoable), and render ours with them</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="398"/>
+        <location filename="../app/window/compare_panel.cpp" line="373"/>
         <source>light x (view)</source>
         <translation>light x (view)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="398"/>
+        <location filename="../app/window/compare_panel.cpp" line="373"/>
         <source>light y (view)</source>
         <translation>light y (view)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="399"/>
+        <location filename="../app/window/compare_panel.cpp" line="374"/>
         <source>light z (view)</source>
         <translation>light z (view)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="399"/>
+        <location filename="../app/window/compare_panel.cpp" line="374"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="400"/>
+        <location filename="../app/window/compare_panel.cpp" line="375"/>
         <source>ambient Ia*ka R</source>
         <translation>ambient Ia*ka R</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="400"/>
+        <location filename="../app/window/compare_panel.cpp" line="375"/>
         <source>ambient Ia*ka G</source>
         <translation>ambient Ia*ka G</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="401"/>
+        <location filename="../app/window/compare_panel.cpp" line="376"/>
         <source>ambient Ia*ka B</source>
         <translation>ambient Ia*ka B</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="401"/>
+        <location filename="../app/window/compare_panel.cpp" line="376"/>
         <source>diffuse Il*Od*kd R</source>
         <translation>diffuse Il*Od*kd R</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="402"/>
+        <location filename="../app/window/compare_panel.cpp" line="377"/>
         <source>diffuse Il*Od*kd G</source>
         <translation>diffuse Il*Od*kd G</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="402"/>
+        <location filename="../app/window/compare_panel.cpp" line="377"/>
         <source>diffuse Il*Od*kd B</source>
         <translation>diffuse Il*Od*kd B</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="403"/>
+        <location filename="../app/window/compare_panel.cpp" line="378"/>
         <source>specular Il*ks R</source>
         <translation>specular Il*ks R</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="403"/>
+        <location filename="../app/window/compare_panel.cpp" line="378"/>
         <source>specular Il*ks G</source>
         <translation>specular Il*ks G</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="404"/>
+        <location filename="../app/window/compare_panel.cpp" line="379"/>
         <source>specular Il*ks B</source>
         <translation>specular Il*ks B</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="473"/>
+        <location filename="../app/window/compare_panel.cpp" line="448"/>
         <source>The images are the same.</source>
         <translation>The images are the same.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="475"/>
+        <location filename="../app/window/compare_panel.cpp" line="450"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnosis: none of the mistakes RasterLab knows explains these differences.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="490"/>
+        <location filename="../app/window/compare_panel.cpp" line="465"/>
         <source>Evidence: %1</source>
         <translation>Evidence: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="491"/>
+        <location filename="../app/window/compare_panel.cpp" line="466"/>
         <source>Check: %1</source>
         <translation>Check: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="493"/>
+        <location filename="../app/window/compare_panel.cpp" line="468"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>At (%1, %2): ours %3, theirs %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="503"/>
+        <location filename="../app/window/compare_panel.cpp" line="478"/>
         <source>Unexplained: %1% of the difference; %2 pixels still differ with every mistake above applied.</source>
         <translation>Unexplained: %1% of the difference; %2 pixels still differ with every mistake above applied.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="510"/>
+        <location filename="../app/window/compare_panel.cpp" line="486"/>
         <source>None of the known mistakes explains most of this difference.</source>
         <translation>None of the known mistakes explains most of this difference.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="516"/>
+        <location filename="../app/window/compare_panel.cpp" line="491"/>
         <source>Lighting fitted to their colours</source>
         <translation>Lighting fitted to their colours</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="517"/>
+        <location filename="../app/window/compare_panel.cpp" line="492"/>
         <source>%1 pixels inside triangles: rms %2 with ours, %3 fitted.</source>
         <translation>%1 pixels inside triangles: rms %2 with ours, %3 fitted.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="525"/>
+        <location filename="../app/window/compare_panel.cpp" line="499"/>
         <source>%1: theirs %2 ± %3, ours %4</source>
         <translation>%1: theirs %2 ± %3, ours %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="543"/>
+        <location filename="../app/window/compare_panel.cpp" line="517"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Pick a pixel (here or on the image) to see their colour beside ours.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="551"/>
+        <location filename="../app/window/compare_panel.cpp" line="525"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): theirs %3, ours %4.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="558"/>
+        <location filename="../app/window/compare_panel.cpp" line="532"/>
         <source>minus %1 in %2</source>
         <translation>minus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="559"/>
+        <location filename="../app/window/compare_panel.cpp" line="533"/>
         <source>plus %1 in %2</source>
         <translation>plus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="562"/>
+        <location filename="../app/window/compare_panel.cpp" line="536"/>
         <source>Their colour is ours.</source>
         <translation>Their colour is ours.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="566"/>
+        <location filename="../app/window/compare_panel.cpp" line="540"/>
         <source>Their colour is ours %1.</source>
         <translation>Their colour is ours %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="568"/>
+        <location filename="../app/window/compare_panel.cpp" line="542"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>The scene has changed since the comparison: the lighting shown now is not the one compared.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="580"/>
+        <location filename="../app/window/compare_panel.cpp" line="554"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>No triangle of ours covers this pixel: it is the background.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="584"/>
+        <location filename="../app/window/compare_panel.cpp" line="558"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>The lighting of this pixel is not known.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="587"/>
+        <location filename="../app/window/compare_panel.cpp" line="560"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="617"/>
+        <location filename="../views/their_colour.cpp" line="62"/>
         <source>the ambient term Ia·ka</source>
         <translation>the ambient term Ia·ka</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="618"/>
+        <location filename="../views/their_colour.cpp" line="63"/>
         <source>the diffuse term Il·Od·kd·(N·L)</source>
         <translation>the diffuse term Il·Od·kd·(N·L)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="619"/>
+        <location filename="../views/their_colour.cpp" line="64"/>
         <source>the specular term Il·ks·(R·V)^n</source>
         <translation>the specular term Il·ks·(R·V)^n</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="635"/>
+        <location filename="../views/their_colour.cpp" line="80"/>
         <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
         <translation>• %1 is 0 in %2 here: changing it alone cannot give their colour.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="640"/>
+        <location filename="../views/their_colour.cpp" line="85"/>
         <source>• %1 would have to be below 0 in %2: not this term alone.</source>
         <translation>• %1 would have to be below 0 in %2: not this term alone.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="657"/>
+        <location filename="../views/their_colour.cpp" line="102"/>
         <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
         <translation>• %1 would have to be %2 instead of %3, × %4 per channel</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="660"/>
+        <location filename="../views/their_colour.cpp" line="105"/>
         <source>: the term left out</source>
         <translation>: the term left out</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="663"/>
+        <location filename="../views/their_colour.cpp" line="108"/>
         <source>: that is the term times Od %1</source>
         <translation>: that is the term times Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="666"/>
+        <location filename="../views/their_colour.cpp" line="111"/>
         <source>: that is the term without Od %1</source>
         <translation>: that is the term without Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="672"/>
+        <location filename="../views/their_colour.cpp" line="117"/>
         <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
         <translation>(%1: 255 in both images, clamped; any value at least as high gives it.)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="675"/>
+        <location filename="../views/their_colour.cpp" line="120"/>
         <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
         <translation>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</translation>
     </message>
@@ -6113,52 +6113,52 @@
 <context>
     <name>rasterlab::PixelInspector</name>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="139"/>
+        <location filename="../views/pixel_inspector.cpp" line="140"/>
         <source>%1 = byte 255</source>
         <translation>%1 = byte 255</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="227"/>
+        <location filename="../views/pixel_inspector.cpp" line="228"/>
         <source>no normal</source>
         <translation>no normal</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="293"/>
+        <location filename="../views/pixel_inspector.cpp" line="294"/>
         <source>in the plane of N and L</source>
         <translation>in the plane of N and L</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="328"/>
+        <location filename="../views/pixel_inspector.cpp" line="329"/>
         <source>Step</source>
         <translation>Step</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="328"/>
+        <location filename="../views/pixel_inspector.cpp" line="329"/>
         <source>Triangle</source>
         <translation>Triangle</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="328"/>
+        <location filename="../views/pixel_inspector.cpp" line="329"/>
         <source>Depth test</source>
         <translation>Depth test</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="329"/>
+        <location filename="../views/pixel_inspector.cpp" line="330"/>
         <source>Before</source>
         <translation>Before</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="329"/>
+        <location filename="../views/pixel_inspector.cpp" line="330"/>
         <source>After</source>
         <translation>After</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="329"/>
+        <location filename="../views/pixel_inspector.cpp" line="330"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="344"/>
+        <location filename="../views/pixel_inspector.cpp" line="345"/>
         <source>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</source>
         <translation>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</translation>
     </message>
@@ -6528,113 +6528,123 @@
         <translation>Ke = %1: the material&apos;s own light</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="464"/>
+        <location filename="../views/pixel_inspector.cpp" line="465"/>
         <source>Your renderer&apos;s colour here: (%1, %2, %3); ours (%4, %5, %6).</source>
-        <translation>Your renderer's colour here: (%1, %2, %3); ours (%4, %5, %6).</translation>
+        <translation>Your renderer&apos;s colour here: (%1, %2, %3); ours (%4, %5, %6).</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="472"/>
-        <source>Compare Their Frame, in the Check dock, tells which Phong term would have to change.</source>
-        <translation>Compare Their Frame, in the Check dock, tells which Phong term would have to change.</translation>
+        <location filename="../views/pixel_inspector.cpp" line="478"/>
+        <source>No triangle of ours holds this pixel.</source>
+        <translation>No triangle of ours holds this pixel.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="516"/>
+        <location filename="../views/pixel_inspector.cpp" line="481"/>
+        <source>The terms are worked out for the course&apos;s lighting in flat or Phong shading only.</source>
+        <translation>The terms are worked out for the course&apos;s lighting in flat or Phong shading only.</translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="486"/>
+        <source>For your colour, each term alone:</source>
+        <translation>For your colour, each term alone:</translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="532"/>
         <source>start</source>
         <translation>start</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="522"/>
-        <location filename="../views/pixel_inspector.cpp" line="731"/>
+        <location filename="../views/pixel_inspector.cpp" line="538"/>
+        <location filename="../views/pixel_inspector.cpp" line="748"/>
         <source>end</source>
         <translation>end</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="530"/>
+        <location filename="../views/pixel_inspector.cpp" line="546"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>holds the pixel at the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="531"/>
+        <location filename="../views/pixel_inspector.cpp" line="547"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>not reached yet by the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="546"/>
+        <location filename="../views/pixel_inspector.cpp" line="562"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="547"/>
+        <location filename="../views/pixel_inspector.cpp" line="563"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Without stepping, the colours of writes overwritten later are not kept.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="672"/>
+        <location filename="../views/pixel_inspector.cpp" line="689"/>
         <source>Before: %1</source>
         <translation>Before: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="712"/>
+        <location filename="../views/pixel_inspector.cpp" line="729"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="715"/>
+        <location filename="../views/pixel_inspector.cpp" line="732"/>
         <source>The cleared pixel is not lit.</source>
         <translation>The cleared pixel is not lit.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="718"/>
+        <location filename="../views/pixel_inspector.cpp" line="735"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="730"/>
+        <location filename="../views/pixel_inspector.cpp" line="747"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Lighting of step %1, triangle %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="735"/>
+        <location filename="../views/pixel_inspector.cpp" line="752"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejected: this colour was never written)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="748"/>
+        <location filename="../views/pixel_inspector.cpp" line="765"/>
         <source>object colour</source>
         <translation>object colour</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="751"/>
+        <location filename="../views/pixel_inspector.cpp" line="768"/>
         <source>emission</source>
         <translation>emission</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="753"/>
+        <location filename="../views/pixel_inspector.cpp" line="770"/>
         <source>ambient</source>
         <translation>ambient</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="758"/>
+        <location filename="../views/pixel_inspector.cpp" line="775"/>
         <source>diffuse %1</source>
         <translation>diffuse %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="761"/>
+        <location filename="../views/pixel_inspector.cpp" line="778"/>
         <source>specular %1</source>
         <translation>specular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="765"/>
+        <location filename="../views/pixel_inspector.cpp" line="782"/>
         <source>diffuse</source>
         <translation>diffuse</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="767"/>
+        <location filename="../views/pixel_inspector.cpp" line="784"/>
         <source>specular</source>
         <translation>specular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="795"/>
+        <location filename="../views/pixel_inspector.cpp" line="812"/>
         <source>No special case: every term applies as written.</source>
         <translation>No special case: every term applies as written.</translation>
     </message>
@@ -6851,322 +6861,337 @@
 <context>
     <name>rasterlab::ScanlineView</name>
     <message>
-        <location filename="../views/scanline_view.cpp" line="282"/>
+        <location filename="../views/scanline_view.cpp" line="304"/>
         <source>No triangle to show: step into the frame or pick a pixel.</source>
         <translation>No triangle to show: step into the frame or pick a pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="248"/>
+        <location filename="../views/scanline_view.cpp" line="257"/>
         <source>long edge</source>
         <translation>long edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="248"/>
+        <location filename="../views/scanline_view.cpp" line="257"/>
         <source>upper edge</source>
         <translation>upper edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="249"/>
+        <location filename="../views/scanline_view.cpp" line="258"/>
         <source>lower edge</source>
         <translation>lower edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="586"/>
+        <location filename="../views/scanline_view.cpp" line="652"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="589"/>
+        <location filename="../views/scanline_view.cpp" line="655"/>
         <source>Start of the frame: step forward to walk the first triangle, or pick a pixel to see the triangle holding it.</source>
         <translation>Start of the frame: step forward to walk the first triangle, or pick a pixel to see the triangle holding it.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="592"/>
+        <location filename="../views/scanline_view.cpp" line="658"/>
         <source>Pick a pixel, or step through the frame, to see a triangle scan converted.</source>
         <translation>Pick a pixel, or step through the frame, to see a triangle scan converted.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="597"/>
+        <location filename="../views/scanline_view.cpp" line="663"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</source>
         <translation>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="600"/>
+        <location filename="../views/scanline_view.cpp" line="666"/>
         <source>scanline %1</source>
         <translation>scanline %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="602"/>
+        <location filename="../views/scanline_view.cpp" line="668"/>
         <source>pixel %1</source>
         <translation>pixel %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="605"/>
+        <location filename="../views/scanline_view.cpp" line="671"/>
         <source>at the stepping cursor</source>
         <translation>at the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="606"/>
+        <location filename="../views/scanline_view.cpp" line="672"/>
         <source>the triangle selected (the cursor is at the %1 of the frame)</source>
         <translation>the triangle selected (the cursor is at the %1 of the frame)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="607"/>
+        <location filename="../views/scanline_view.cpp" line="673"/>
         <source>start</source>
         <translation>start</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="608"/>
+        <location filename="../views/scanline_view.cpp" line="674"/>
         <source>end</source>
         <translation>end</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="636"/>
+        <location filename="../views/scanline_view.cpp" line="702"/>
         <source>Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the top to the bottom; the two short edges meet at the middle vertex.</source>
         <translation>Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the top to the bottom; the two short edges meet at the middle vertex.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="641"/>
+        <location filename="../views/scanline_view.cpp" line="707"/>
         <source>Its area on the screen is zero: it has no inside and is not scanned.</source>
         <translation>Its area on the screen is zero: it has no inside and is not scanned.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="646"/>
+        <location filename="../views/scanline_view.cpp" line="712"/>
         <source>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, so the middle vertex is %2 of the long edge: the long edge bounds the spans on the %3.</source>
         <translation>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, so the middle vertex is %2 of the long edge: the long edge bounds the spans on the %3.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="649"/>
-        <location filename="../views/scanline_view.cpp" line="650"/>
-        <location filename="../views/scanline_view.cpp" line="710"/>
+        <location filename="../views/scanline_view.cpp" line="715"/>
+        <location filename="../views/scanline_view.cpp" line="716"/>
+        <location filename="../views/scanline_view.cpp" line="776"/>
         <source>right</source>
         <translation>right</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="649"/>
-        <location filename="../views/scanline_view.cpp" line="650"/>
-        <location filename="../views/scanline_view.cpp" line="710"/>
+        <location filename="../views/scanline_view.cpp" line="715"/>
+        <location filename="../views/scanline_view.cpp" line="716"/>
+        <location filename="../views/scanline_view.cpp" line="776"/>
         <source>left</source>
         <translation>left</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="624"/>
+        <location filename="../views/scanline_view.cpp" line="690"/>
         <source>long</source>
         <translation>long</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="624"/>
+        <location filename="../views/scanline_view.cpp" line="690"/>
         <source>upper</source>
         <translation>upper</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="624"/>
+        <location filename="../views/scanline_view.cpp" line="690"/>
         <source>lower</source>
         <translation>lower</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="697"/>
+        <location filename="../views/scanline_view.cpp" line="763"/>
         <source>from</source>
         <translation>from</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="698"/>
+        <location filename="../views/scanline_view.cpp" line="764"/>
         <source>to</source>
         <translation>to</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="699"/>
+        <location filename="../views/scanline_view.cpp" line="765"/>
         <source>x on its first row</source>
         <translation>x on its first row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="702"/>
+        <location filename="../views/scanline_view.cpp" line="768"/>
         <source>dx/dy</source>
         <translation>dx/dy</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="703"/>
+        <location filename="../views/scanline_view.cpp" line="769"/>
         <source>horizontal</source>
         <translation>horizontal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="705"/>
+        <location filename="../views/scanline_view.cpp" line="771"/>
         <source>rows</source>
         <translation>rows</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="707"/>
-        <location filename="../views/scanline_view.cpp" line="734"/>
+        <location filename="../views/scanline_view.cpp" line="773"/>
+        <location filename="../views/scanline_view.cpp" line="828"/>
         <source>none</source>
         <translation>none</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="710"/>
+        <location filename="../views/scanline_view.cpp" line="776"/>
         <source>side</source>
         <translation>side</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="714"/>
+        <location filename="../views/scanline_view.cpp" line="780"/>
         <source>Only rows %1 to %2 are on the screen: the walk starts and stops there.</source>
         <translation>Only rows %1 to %2 are on the screen: the walk starts and stops there.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="656"/>
+        <location filename="../views/scanline_view.cpp" line="722"/>
         <source>No row of this triangle is on the screen.</source>
         <translation>No row of this triangle is on the screen.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="670"/>
+        <location filename="../views/scanline_view.cpp" line="266"/>
+        <source>your span</source>
+        <translation>your span</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="267"/>
+        <source>only yours</source>
+        <translation>only yours</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="268"/>
+        <source>only ours</source>
+        <translation>only ours</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="736"/>
         <source>Here the additions are seed 001&apos;s DDA, in double: an edge that lands a hair below a row in double leaves that row to the triangle above, where an exact walk would find the edge through the row&apos;s samples.</source>
         <translation>Here the additions are seed 001&apos;s DDA, in double: an edge that lands a hair below a row in double leaves that row to the triangle above, where an exact walk would find the edge through the row&apos;s samples.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="734"/>
+        <location filename="../views/scanline_view.cpp" line="828"/>
         <source>%1 to %2</source>
         <translation>%1 to %2</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="738"/>
+        <location filename="../views/scanline_view.cpp" line="832"/>
         <source>Your renderer: no pixel on this row (ours: %1).</source>
         <translation>Your renderer: no pixel on this row (ours: %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="743"/>
+        <location filename="../views/scanline_view.cpp" line="837"/>
         <source>Your renderer: pixels %1 to %2 (ours: %3).</source>
         <translation>Your renderer: pixels %1 to %2 (ours: %3).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="764"/>
+        <location filename="../views/scanline_view.cpp" line="858"/>
         <source>%1(%2) = %3, where the %4 edge crosses its first row</source>
         <translation>%1(%2) = %3, where the %4 edge crosses its first row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="770"/>
+        <location filename="../views/scanline_view.cpp" line="864"/>
         <source>%1(%2) = %3, where the %4 edge crosses the first row on the screen</source>
         <translation>%1(%2) = %3, where the %4 edge crosses the first row on the screen</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="778"/>
+        <location filename="../views/scanline_view.cpp" line="872"/>
         <source>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</source>
         <translation>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="793"/>
+        <location filename="../views/scanline_view.cpp" line="887"/>
         <source>Scanline y = %1</source>
         <translation>Scanline y = %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="795"/>
+        <location filename="../views/scanline_view.cpp" line="889"/>
         <source>(sampled at y = %1)</source>
         <translation>(sampled at y = %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="807"/>
+        <location filename="../views/scanline_view.cpp" line="901"/>
         <source>Seed 001&apos;s DDA: x_left and x_right are sums in double, one addition of dx/dy a row, the rounding of each carried along (no snapping). Pixels x = ceil(x_left) = %1 while x &amp;lt; x_right: up to ceil(x_right) &amp;minus; 1 = %2 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Seed 001&apos;s DDA: x_left and x_right are sums in double, one addition of dx/dy a row, the rounding of each carried along (no snapping). Pixels x = ceil(x_left) = %1 while x &amp;lt; x_right: up to ceil(x_right) &amp;minus; 1 = %2 (a sample exactly on the right edge belongs to the next triangle).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="814"/>
+        <location filename="../views/scanline_view.cpp" line="908"/>
         <source>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="821"/>
+        <location filename="../views/scanline_view.cpp" line="915"/>
         <source>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</source>
         <translation>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="829"/>
+        <location filename="../views/scanline_view.cpp" line="923"/>
         <source>No pixel on this row</source>
         <translation>No pixel on this row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="830"/>
+        <location filename="../views/scanline_view.cpp" line="924"/>
         <source>the edges cross it between two samples.</source>
         <translation>the edges cross it between two samples.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="831"/>
+        <location filename="../views/scanline_view.cpp" line="925"/>
         <source>they are all off the screen.</source>
         <translation>they are all off the screen.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="834"/>
+        <location filename="../views/scanline_view.cpp" line="928"/>
         <source>Span [%1, %2): 1 pixel.</source>
         <translation>Span [%1, %2): 1 pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="835"/>
+        <location filename="../views/scanline_view.cpp" line="929"/>
         <source>Span [%1, %2): %3 pixels.</source>
         <translation>Span [%1, %2): %3 pixels.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="838"/>
+        <location filename="../views/scanline_view.cpp" line="932"/>
         <source>(cut to the screen&apos;s columns 0 to %1)</source>
         <translation>(cut to the screen&apos;s columns 0 to %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="841"/>
+        <location filename="../views/scanline_view.cpp" line="935"/>
         <source>The pixel at the cursor is x = %1.</source>
         <translation>The pixel at the cursor is x = %1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="859"/>
+        <location filename="../views/scanline_view.cpp" line="953"/>
         <source>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</source>
         <translation>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="864"/>
+        <location filename="../views/scanline_view.cpp" line="958"/>
         <source>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</source>
         <translation>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="866"/>
+        <location filename="../views/scanline_view.cpp" line="960"/>
         <source>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</source>
         <translation>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="871"/>
+        <location filename="../views/scanline_view.cpp" line="965"/>
         <source>depth</source>
         <translation>depth</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="871"/>
+        <location filename="../views/scanline_view.cpp" line="965"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="877"/>
+        <location filename="../views/scanline_view.cpp" line="971"/>
         <source>not computed (nothing is lit)</source>
         <translation>not computed (nothing is lit)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="878"/>
+        <location filename="../views/scanline_view.cpp" line="972"/>
         <source>zero</source>
         <translation>zero</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="895"/>
+        <location filename="../views/scanline_view.cpp" line="989"/>
         <source>Pixel (x, y) is sampled at the point (x, y) itself.</source>
         <translation>Pixel (x, y) is sampled at the point (x, y) itself.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="896"/>
+        <location filename="../views/scanline_view.cpp" line="990"/>
         <source>Pixel (x, y) is sampled at (x + %1, y + %1).</source>
         <translation>Pixel (x, y) is sampled at (x + %1, y + %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="899"/>
+        <location filename="../views/scanline_view.cpp" line="993"/>
         <source>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</source>
         <translation>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="902"/>
+        <location filename="../views/scanline_view.cpp" line="996"/>
         <source>, with the barycentrics weighted by 1/w (perspective-correct)</source>
         <translation>, with the barycentrics weighted by 1/w (perspective-correct)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="664"/>
+        <location filename="../views/scanline_view.cpp" line="730"/>
         <source>Edge walking: from one scanline to the next, each edge&apos;s x changes by its constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. The span between the two crossings is filled; the long edge bounds every row, the upper edge the rows above the middle vertex, the lower edge the rest.</source>
         <translation>Edge walking: from one scanline to the next, each edge&apos;s x changes by its constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. The span between the two crossings is filled; the long edge bounds every row, the upper edge the rows above the middle vertex, the lower edge the rest.</translation>
     </message>

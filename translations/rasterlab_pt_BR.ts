@@ -3226,137 +3226,137 @@
         <translation>Causa provável</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="147"/>
+        <location filename="../app/window/check_panel.cpp" line="143"/>
         <source>Your Program&apos;s Folder</source>
         <translation>A Pasta do Seu Programa</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="190"/>
+        <location filename="../app/window/check_panel.cpp" line="186"/>
         <source>A check is running.</source>
         <translation>Uma verificação está em andamento.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="192"/>
+        <location filename="../app/window/check_panel.cpp" line="188"/>
         <source>Give the command that starts your program.</source>
         <translation>Informe o comando que inicia o seu programa.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="195"/>
+        <location filename="../app/window/check_panel.cpp" line="191"/>
         <source>The folder %1 does not exist.</source>
         <translation>A pasta %1 não existe.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="197"/>
+        <location filename="../app/window/check_panel.cpp" line="193"/>
         <source>There is no frame to check against.</source>
         <translation>Não há quadro com que comparar.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="221"/>
+        <location filename="../app/window/check_panel.cpp" line="217"/>
         <source>Checking %1...</source>
         <translation>Verificando %1...</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="239"/>
+        <location filename="../app/window/check_panel.cpp" line="235"/>
         <source>cancelled</source>
         <translation>cancelada</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="239"/>
+        <location filename="../app/window/check_panel.cpp" line="235"/>
         <source>done</source>
         <translation>concluída</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="250"/>
+        <location filename="../app/window/check_panel.cpp" line="245"/>
         <source>Over our image: each vertex that departs, ours a green dot, theirs a red cross, joined by a line.</source>
         <translation>Sobre a nossa imagem: cada vértice que se desvia, o nosso um ponto verde, o deles uma cruz vermelha, unidos por uma linha.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="254"/>
+        <location filename="../app/window/check_panel.cpp" line="249"/>
         <source>Over our image: magenta, pixels only we cover; cyan, pixels only they cover.</source>
         <translation>Sobre a nossa imagem: magenta, pixels que só nós cobrimos; ciano, pixels que só eles cobrem.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="258"/>
+        <location filename="../app/window/check_panel.cpp" line="253"/>
         <source>Over our image: red, pixels another triangle wins (or at another depth); magenta, only ours keeps one; cyan, only theirs.</source>
         <translation>Sobre a nossa imagem: vermelho, pixels que outro triângulo ganha (ou com outra profundidade); magenta, só o nosso guarda um; ciano, só o deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="262"/>
+        <location filename="../app/window/check_panel.cpp" line="257"/>
         <source>Over our image: red, pixels whose colour differs by more than 1.</source>
         <translation>Sobre a nossa imagem: vermelho, pixels cuja cor difere em mais de 1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="271"/>
+        <location filename="../app/window/check_panel.cpp" line="266"/>
         <source>passed</source>
         <translation>passou</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="273"/>
+        <location filename="../app/window/check_panel.cpp" line="268"/>
         <source>failed</source>
         <translation>falhou</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="275"/>
+        <location filename="../app/window/check_panel.cpp" line="270"/>
         <source>unsupported</source>
         <translation>não suportada</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="277"/>
+        <location filename="../app/window/check_panel.cpp" line="272"/>
         <source>broken</source>
         <translation>quebrou</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="320"/>
+        <location filename="../app/window/check_panel.cpp" line="315"/>
         <source>not applied: %1</source>
         <translation>não aplicado: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="329"/>
+        <location filename="../app/window/check_panel.cpp" line="324"/>
         <source>Protected by: %1.</source>
         <translation>Protegido por: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="330"/>
+        <location filename="../app/window/check_panel.cpp" line="325"/>
         <source>Protected by: %1. Not applied: %2.</source>
         <translation>Protegido por: %1. Não aplicado: %2.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="334"/>
+        <location filename="../app/window/check_panel.cpp" line="329"/>
         <source>Not checked: %1</source>
         <translation>Não verificada: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="340"/>
+        <location filename="../app/window/check_panel.cpp" line="335"/>
         <source>%1 of %2 differ</source>
         <translation>%1 de %2 diferem</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="356"/>
+        <location filename="../app/window/check_panel.cpp" line="351"/>
         <source>Every stage passed (%1 s).</source>
         <translation>Todas as etapas passaram (%1 s).</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="393"/>
+        <location filename="../app/window/check_panel.cpp" line="385"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="397"/>
+        <location filename="../app/window/check_panel.cpp" line="389"/>
         <source>First departure: %1: theirs %2, ours %3</source>
         <translation>Primeiro desvio: %1: o deles %2, o nosso %3</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="401"/>
+        <location filename="../app/window/check_panel.cpp" line="393"/>
         <source>Likely cause: %1</source>
         <translation>Causa provável: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="403"/>
+        <location filename="../app/window/check_panel.cpp" line="395"/>
         <source>No known mistake of this stage gives their answer.</source>
         <translation>Nenhum erro conhecido desta etapa dá a resposta deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="404"/>
+        <location filename="../app/window/check_panel.cpp" line="396"/>
         <source>Tolerance: %1</source>
         <translation>Tolerância: %1</translation>
     </message>
@@ -3443,110 +3443,110 @@
 <context>
     <name>rasterlab::ComparePanel</name>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="126"/>
-        <location filename="../app/window/compare_panel.cpp" line="130"/>
+        <location filename="../app/window/compare_panel.cpp" line="127"/>
+        <location filename="../app/window/compare_panel.cpp" line="131"/>
         <source>R %1, G %2, B %3, A %4</source>
         <translation>R %1, G %2, B %3, A %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="140"/>
+        <location filename="../views/their_colour.cpp" line="25"/>
         <source>red</source>
         <translation>vermelho</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="142"/>
+        <location filename="../views/their_colour.cpp" line="27"/>
         <source>green</source>
         <translation>verde</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="144"/>
+        <location filename="../views/their_colour.cpp" line="29"/>
         <source>blue</source>
         <translation>azul</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="146"/>
+        <location filename="../views/their_colour.cpp" line="31"/>
         <source>alpha</source>
         <translation>alfa</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="153"/>
+        <location filename="../views/their_colour.cpp" line="38"/>
         <source>%1 and %2</source>
         <translation>%1 e %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="169"/>
+        <location filename="../app/window/compare_panel.cpp" line="146"/>
         <source>Side by side</source>
         <translation>Lado a lado</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="170"/>
+        <location filename="../app/window/compare_panel.cpp" line="147"/>
         <source>Flicker</source>
         <translation>Alternar</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="171"/>
+        <location filename="../app/window/compare_panel.cpp" line="148"/>
         <source>Difference</source>
         <translation>Diferença</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="173"/>
+        <location filename="../app/window/compare_panel.cpp" line="150"/>
         <source>Theirs beside ours, one after the other twice a second, or the pixels that differ</source>
         <translation>A deles ao lado da nossa, uma depois da outra duas vezes por segundo, ou os pixels que diferem</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="176"/>
+        <location filename="../app/window/compare_panel.cpp" line="153"/>
         <source>Differ by more than</source>
         <translation>Diferem em mais de</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="182"/>
+        <location filename="../app/window/compare_panel.cpp" line="159"/>
         <source>The difference view shows the pixels where some channel differs by more than this (0: every difference)</source>
         <translation>A vista da diferença mostra os pixels em que algum canal difere em mais do que isto (0: toda diferença)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="187"/>
+        <location filename="../app/window/compare_panel.cpp" line="164"/>
         <source>Compare Again</source>
         <translation>Comparar de novo</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="190"/>
+        <location filename="../app/window/compare_panel.cpp" line="167"/>
         <source>The scene changed since the comparison: compare their image with the scene shown now</source>
         <translation>A cena mudou desde a comparação: comparar a imagem deles com a cena mostrada agora</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="223"/>
+        <location filename="../app/window/compare_panel.cpp" line="200"/>
         <source>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</source>
         <translation>Arquivo &gt; Comparar com imagem... compara um PNG do seu próprio renderizador com a renderização desta cena.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="261"/>
+        <location filename="../app/window/compare_panel.cpp" line="238"/>
         <source>There is no render to compare with yet.</source>
         <translation>Ainda não há renderização com que comparar.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="269"/>
+        <location filename="../app/window/compare_panel.cpp" line="246"/>
         <source>Their image: %1.</source>
         <translation>A imagem deles: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="275"/>
+        <location filename="../app/window/compare_panel.cpp" line="252"/>
         <source>Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.</source>
         <translation>Recortada para %1x%2 em (%3, %4) a partir de %5x%6: o quadro encontrado dentro dela.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="370"/>
-        <location filename="../app/window/compare_panel.cpp" line="373"/>
+        <location filename="../app/window/compare_panel.cpp" line="345"/>
+        <location filename="../app/window/compare_panel.cpp" line="348"/>
         <source>Theirs</source>
         <translation>Deles</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="370"/>
-        <location filename="../app/window/compare_panel.cpp" line="373"/>
+        <location filename="../app/window/compare_panel.cpp" line="345"/>
+        <location filename="../app/window/compare_panel.cpp" line="348"/>
         <source>Ours</source>
         <translation>Nossa</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/compare_panel.cpp" line="378"/>
+        <location filename="../app/window/compare_panel.cpp" line="353"/>
         <source>%n pixel(s) differ by more than %1</source>
         <translation>
             <numerusform>%n pixel difere em mais de %1</numerusform>
@@ -3554,272 +3554,272 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="442"/>
+        <location filename="../app/window/compare_panel.cpp" line="417"/>
         <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
         <translation>%1 contra a nossa renderização (%2x%3): %4 pixels comparados, %5 diferem (%6%).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="451"/>
+        <location filename="../app/window/compare_panel.cpp" line="426"/>
         <source>Their image is unlit: one colour %1 wherever it covers. Only coverage is compared (our covered pixels in that colour), and only projection and scan conversion mistakes are tried.</source>
         <translation>A imagem deles não é iluminada: uma só cor %1 onde ela cobre. Só a cobertura é comparada (os nossos pixels cobertos nessa cor), e só erros de projeção e de conversão por varredura são tentados.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="456"/>
+        <location filename="../app/window/compare_panel.cpp" line="431"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Maior diferença por canal: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="457"/>
+        <location filename="../app/window/compare_panel.cpp" line="432"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Diferença média por canal, nos pixels que diferem: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="459"/>
+        <location filename="../app/window/compare_panel.cpp" line="434"/>
         <source>Pixels covered: %1 by both, %2 only by ours (our depth buffer), %3 only by theirs (not the background).</source>
         <translation>Pixels cobertos: %1 por ambas, %2 só pela nossa (o nosso buffer de profundidade), %3 só pela deles (não o fundo).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="479"/>
+        <location filename="../app/window/compare_panel.cpp" line="454"/>
         <source>Diagnosis, each mistake applied before the next is ranked:</source>
         <translation>Diagnóstico, cada erro aplicado antes de classificar o seguinte:</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="485"/>
+        <location filename="../app/window/compare_panel.cpp" line="460"/>
         <source>Removes %1% of the difference; makes %2 differing pixels match.</source>
         <translation>Remove %1% da diferença; faz %2 pixels diferentes coincidirem.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="466"/>
+        <location filename="../app/window/compare_panel.cpp" line="441"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>A cena mudou desde esta comparação: Comparar de novo compara a imagem deles com a cena mostrada agora.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="194"/>
+        <location filename="../app/window/compare_panel.cpp" line="171"/>
         <source>Render Ours with the Fitted Lighting</source>
         <translation>Renderizar a Nossa com a Iluminação Ajustada</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="197"/>
+        <location filename="../app/window/compare_panel.cpp" line="174"/>
         <source>Set the light&apos;s position, Ia, Il, kd, ks and n to the values fitted to their colours (one edit, undoable), and render ours with them</source>
         <translation>Pôr a posição da luz, Ia, Il, kd, ks e n nos valores ajustados às cores deles (uma edição, que pode ser desfeita), e renderizar a nossa com eles</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="398"/>
+        <location filename="../app/window/compare_panel.cpp" line="373"/>
         <source>light x (view)</source>
         <translation>luz x (vista)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="398"/>
+        <location filename="../app/window/compare_panel.cpp" line="373"/>
         <source>light y (view)</source>
         <translation>luz y (vista)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="399"/>
+        <location filename="../app/window/compare_panel.cpp" line="374"/>
         <source>light z (view)</source>
         <translation>luz z (vista)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="399"/>
+        <location filename="../app/window/compare_panel.cpp" line="374"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="400"/>
+        <location filename="../app/window/compare_panel.cpp" line="375"/>
         <source>ambient Ia*ka R</source>
         <translation>ambiente Ia*ka R</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="400"/>
+        <location filename="../app/window/compare_panel.cpp" line="375"/>
         <source>ambient Ia*ka G</source>
         <translation>ambiente Ia*ka G</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="401"/>
+        <location filename="../app/window/compare_panel.cpp" line="376"/>
         <source>ambient Ia*ka B</source>
         <translation>ambiente Ia*ka B</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="401"/>
+        <location filename="../app/window/compare_panel.cpp" line="376"/>
         <source>diffuse Il*Od*kd R</source>
         <translation>difuso Il*Od*kd R</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="402"/>
+        <location filename="../app/window/compare_panel.cpp" line="377"/>
         <source>diffuse Il*Od*kd G</source>
         <translation>difuso Il*Od*kd G</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="402"/>
+        <location filename="../app/window/compare_panel.cpp" line="377"/>
         <source>diffuse Il*Od*kd B</source>
         <translation>difuso Il*Od*kd B</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="403"/>
+        <location filename="../app/window/compare_panel.cpp" line="378"/>
         <source>specular Il*ks R</source>
         <translation>especular Il*ks R</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="403"/>
+        <location filename="../app/window/compare_panel.cpp" line="378"/>
         <source>specular Il*ks G</source>
         <translation>especular Il*ks G</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="404"/>
+        <location filename="../app/window/compare_panel.cpp" line="379"/>
         <source>specular Il*ks B</source>
         <translation>especular Il*ks B</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="473"/>
+        <location filename="../app/window/compare_panel.cpp" line="448"/>
         <source>The images are the same.</source>
         <translation>As imagens são iguais.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="475"/>
+        <location filename="../app/window/compare_panel.cpp" line="450"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnóstico: nenhum dos erros que o RasterLab conhece explica estas diferenças.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="490"/>
+        <location filename="../app/window/compare_panel.cpp" line="465"/>
         <source>Evidence: %1</source>
         <translation>Evidência: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="491"/>
+        <location filename="../app/window/compare_panel.cpp" line="466"/>
         <source>Check: %1</source>
         <translation>Verifique: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="493"/>
+        <location filename="../app/window/compare_panel.cpp" line="468"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>Em (%1, %2): nossa %3, deles %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="503"/>
+        <location filename="../app/window/compare_panel.cpp" line="478"/>
         <source>Unexplained: %1% of the difference; %2 pixels still differ with every mistake above applied.</source>
         <translation>Sem explicação: %1% da diferença; %2 pixels ainda diferem com todos os erros acima aplicados.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="510"/>
+        <location filename="../app/window/compare_panel.cpp" line="486"/>
         <source>None of the known mistakes explains most of this difference.</source>
         <translation>Nenhum dos erros conhecidos explica a maior parte desta diferença.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="516"/>
+        <location filename="../app/window/compare_panel.cpp" line="491"/>
         <source>Lighting fitted to their colours</source>
         <translation>Iluminação ajustada às cores deles</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="517"/>
+        <location filename="../app/window/compare_panel.cpp" line="492"/>
         <source>%1 pixels inside triangles: rms %2 with ours, %3 fitted.</source>
         <translation>%1 pixels dentro de triângulos: rms %2 com a nossa, %3 ajustada.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="525"/>
+        <location filename="../app/window/compare_panel.cpp" line="499"/>
         <source>%1: theirs %2 ± %3, ours %4</source>
         <translation>%1: deles %2 ± %3, nosso %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="543"/>
+        <location filename="../app/window/compare_panel.cpp" line="517"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Escolha um pixel (aqui ou na imagem) para ver a cor deles ao lado da nossa.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="551"/>
+        <location filename="../app/window/compare_panel.cpp" line="525"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): deles %3, nossa %4.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="558"/>
+        <location filename="../app/window/compare_panel.cpp" line="532"/>
         <source>minus %1 in %2</source>
         <translation>menos %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="559"/>
+        <location filename="../app/window/compare_panel.cpp" line="533"/>
         <source>plus %1 in %2</source>
         <translation>mais %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="562"/>
+        <location filename="../app/window/compare_panel.cpp" line="536"/>
         <source>Their colour is ours.</source>
         <translation>A cor deles é a nossa.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="566"/>
+        <location filename="../app/window/compare_panel.cpp" line="540"/>
         <source>Their colour is ours %1.</source>
         <translation>A cor deles é a nossa %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="568"/>
+        <location filename="../app/window/compare_panel.cpp" line="542"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>A cena mudou desde a comparação: a iluminação mostrada agora não é a comparada.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="580"/>
+        <location filename="../app/window/compare_panel.cpp" line="554"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>Nenhum triângulo nosso cobre este pixel: é o fundo.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="584"/>
+        <location filename="../app/window/compare_panel.cpp" line="558"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>A iluminação deste pixel não é conhecida.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="587"/>
+        <location filename="../app/window/compare_panel.cpp" line="560"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>Os termos que teriam de mudar são calculados para o modelo de iluminação do curso em sombreamento flat ou Phong; este pixel é sombreado de outro modo (o inspetor de pixel mostra como).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="617"/>
+        <location filename="../views/their_colour.cpp" line="62"/>
         <source>the ambient term Ia·ka</source>
         <translation>o termo ambiente Ia·ka</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="618"/>
+        <location filename="../views/their_colour.cpp" line="63"/>
         <source>the diffuse term Il·Od·kd·(N·L)</source>
         <translation>o termo difuso Il·Od·kd·(N·L)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="619"/>
+        <location filename="../views/their_colour.cpp" line="64"/>
         <source>the specular term Il·ks·(R·V)^n</source>
         <translation>o termo especular Il·ks·(R·V)^n</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="635"/>
+        <location filename="../views/their_colour.cpp" line="80"/>
         <source>• %1 is 0 in %2 here: changing it alone cannot give their colour.</source>
         <translation>• %1 é 0 no %2 aqui: mudá-lo sozinho não dá a cor deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="640"/>
+        <location filename="../views/their_colour.cpp" line="85"/>
         <source>• %1 would have to be below 0 in %2: not this term alone.</source>
         <translation>• %1 teria de ser menor que 0 no %2: não é este termo sozinho.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="657"/>
+        <location filename="../views/their_colour.cpp" line="102"/>
         <source>• %1 would have to be %2 instead of %3, × %4 per channel</source>
         <translation>• %1 teria de ser %2 em vez de %3, × %4 por canal</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="660"/>
+        <location filename="../views/their_colour.cpp" line="105"/>
         <source>: the term left out</source>
         <translation>: o termo omitido</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="663"/>
+        <location filename="../views/their_colour.cpp" line="108"/>
         <source>: that is the term times Od %1</source>
         <translation>: isto é, o termo vezes Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="666"/>
+        <location filename="../views/their_colour.cpp" line="111"/>
         <source>: that is the term without Od %1</source>
         <translation>: isto é, o termo sem Od %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="672"/>
+        <location filename="../views/their_colour.cpp" line="117"/>
         <source>(%1: 255 in both images, clamped; any value at least as high gives it.)</source>
         <translation>(%1: 255 nas duas imagens, limitado; qualquer valor pelo menos tão alto o dá.)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="675"/>
+        <location filename="../views/their_colour.cpp" line="120"/>
         <source>No term changed by a simple factor (left out, times Od, without Od) gives their colour: look at several terms, or at what the diagnosis says.</source>
         <translation>Nenhum termo mudado por um fator simples (omitido, vezes Od, sem Od) dá a cor deles: olhe vários termos, ou o que diz o diagnóstico.</translation>
     </message>
@@ -6113,52 +6113,52 @@
 <context>
     <name>rasterlab::PixelInspector</name>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="139"/>
+        <location filename="../views/pixel_inspector.cpp" line="140"/>
         <source>%1 = byte 255</source>
         <translation>%1 = byte 255</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="227"/>
+        <location filename="../views/pixel_inspector.cpp" line="228"/>
         <source>no normal</source>
         <translation>sem normal</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="293"/>
+        <location filename="../views/pixel_inspector.cpp" line="294"/>
         <source>in the plane of N and L</source>
         <translation>no plano de N e L</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="328"/>
+        <location filename="../views/pixel_inspector.cpp" line="329"/>
         <source>Step</source>
         <translation>Passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="328"/>
+        <location filename="../views/pixel_inspector.cpp" line="329"/>
         <source>Triangle</source>
         <translation>Triângulo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="328"/>
+        <location filename="../views/pixel_inspector.cpp" line="329"/>
         <source>Depth test</source>
         <translation>Teste de profundidade</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="329"/>
+        <location filename="../views/pixel_inspector.cpp" line="330"/>
         <source>Before</source>
         <translation>Antes</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="329"/>
+        <location filename="../views/pixel_inspector.cpp" line="330"/>
         <source>After</source>
         <translation>Depois</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="329"/>
+        <location filename="../views/pixel_inspector.cpp" line="330"/>
         <source>Result</source>
         <translation>Resultado</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="344"/>
+        <location filename="../views/pixel_inspector.cpp" line="345"/>
         <source>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</source>
         <translation>▶ ocupa o pixel no cursor de passo; as linhas cinza ainda não foram alcançadas. Selecione uma linha para ver sua iluminação.</translation>
     </message>
@@ -6528,113 +6528,123 @@
         <translation>Ke = %1: a luz própria do material</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="464"/>
+        <location filename="../views/pixel_inspector.cpp" line="465"/>
         <source>Your renderer&apos;s colour here: (%1, %2, %3); ours (%4, %5, %6).</source>
         <translation>A cor do seu renderizador aqui: (%1, %2, %3); a nossa (%4, %5, %6).</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="472"/>
-        <source>Compare Their Frame, in the Check dock, tells which Phong term would have to change.</source>
-        <translation>Comparar o Quadro Deles, no painel Verificar, diz qual termo de Phong teria de mudar.</translation>
+        <location filename="../views/pixel_inspector.cpp" line="478"/>
+        <source>No triangle of ours holds this pixel.</source>
+        <translation>Nenhum triângulo nosso ocupa este pixel.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="516"/>
+        <location filename="../views/pixel_inspector.cpp" line="481"/>
+        <source>The terms are worked out for the course&apos;s lighting in flat or Phong shading only.</source>
+        <translation>Os termos são calculados só para a iluminação do curso em sombreamento flat ou Phong.</translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="486"/>
+        <source>For your colour, each term alone:</source>
+        <translation>Para a sua cor, cada termo sozinho:</translation>
+    </message>
+    <message>
+        <location filename="../views/pixel_inspector.cpp" line="532"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="522"/>
-        <location filename="../views/pixel_inspector.cpp" line="731"/>
+        <location filename="../views/pixel_inspector.cpp" line="538"/>
+        <location filename="../views/pixel_inspector.cpp" line="748"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="530"/>
+        <location filename="../views/pixel_inspector.cpp" line="546"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>ocupa o pixel no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="531"/>
+        <location filename="../views/pixel_inspector.cpp" line="547"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>ainda não alcançado pelo cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="546"/>
+        <location filename="../views/pixel_inspector.cpp" line="562"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="547"/>
+        <location filename="../views/pixel_inspector.cpp" line="563"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Sem o passo a passo, as cores das escritas sobrescritas depois não são guardadas.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="672"/>
+        <location filename="../views/pixel_inspector.cpp" line="689"/>
         <source>Before: %1</source>
         <translation>Antes: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="712"/>
+        <location filename="../views/pixel_inspector.cpp" line="729"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Sem o passo a passo, só a iluminação do fragmento que ocupa o pixel no fim é registrada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="715"/>
+        <location filename="../views/pixel_inspector.cpp" line="732"/>
         <source>The cleared pixel is not lit.</source>
         <translation>O pixel limpo não é iluminado.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="718"/>
+        <location filename="../views/pixel_inspector.cpp" line="735"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>Nenhum fragmento ocupa o pixel no cursor: selecione uma linha do histórico para ver sua iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="730"/>
+        <location filename="../views/pixel_inspector.cpp" line="747"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Iluminação do passo %1, triângulo %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="735"/>
+        <location filename="../views/pixel_inspector.cpp" line="752"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejeitado: esta cor nunca foi escrita)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="748"/>
+        <location filename="../views/pixel_inspector.cpp" line="765"/>
         <source>object colour</source>
         <translation>cor do objeto</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="751"/>
+        <location filename="../views/pixel_inspector.cpp" line="768"/>
         <source>emission</source>
         <translation>emissão</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="753"/>
+        <location filename="../views/pixel_inspector.cpp" line="770"/>
         <source>ambient</source>
         <translation>ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="758"/>
+        <location filename="../views/pixel_inspector.cpp" line="775"/>
         <source>diffuse %1</source>
         <translation>difusa %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="761"/>
+        <location filename="../views/pixel_inspector.cpp" line="778"/>
         <source>specular %1</source>
         <translation>especular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="765"/>
+        <location filename="../views/pixel_inspector.cpp" line="782"/>
         <source>diffuse</source>
         <translation>difusa</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="767"/>
+        <location filename="../views/pixel_inspector.cpp" line="784"/>
         <source>specular</source>
         <translation>especular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="795"/>
+        <location filename="../views/pixel_inspector.cpp" line="812"/>
         <source>No special case: every term applies as written.</source>
         <translation>Nenhum caso especial: todos os termos valem como escritos.</translation>
     </message>
@@ -6851,322 +6861,337 @@
 <context>
     <name>rasterlab::ScanlineView</name>
     <message>
-        <location filename="../views/scanline_view.cpp" line="282"/>
+        <location filename="../views/scanline_view.cpp" line="304"/>
         <source>No triangle to show: step into the frame or pick a pixel.</source>
         <translation>Nenhum triângulo para mostrar: avance pelo quadro ou escolha um pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="248"/>
+        <location filename="../views/scanline_view.cpp" line="257"/>
         <source>long edge</source>
         <translation>aresta longa</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="248"/>
+        <location filename="../views/scanline_view.cpp" line="257"/>
         <source>upper edge</source>
         <translation>aresta superior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="249"/>
+        <location filename="../views/scanline_view.cpp" line="258"/>
         <source>lower edge</source>
         <translation>aresta inferior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="586"/>
+        <location filename="../views/scanline_view.cpp" line="652"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="589"/>
+        <location filename="../views/scanline_view.cpp" line="655"/>
         <source>Start of the frame: step forward to walk the first triangle, or pick a pixel to see the triangle holding it.</source>
         <translation>Início do quadro: avance para percorrer o primeiro triângulo, ou escolha um pixel para ver o triângulo que o ocupa.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="592"/>
+        <location filename="../views/scanline_view.cpp" line="658"/>
         <source>Pick a pixel, or step through the frame, to see a triangle scan converted.</source>
         <translation>Escolha um pixel, ou avance pelo quadro, para ver a conversão por varredura de um triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="597"/>
+        <location filename="../views/scanline_view.cpp" line="663"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</source>
         <translation>&lt;b&gt;Triângulo %1&lt;/b&gt; de %2</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="600"/>
+        <location filename="../views/scanline_view.cpp" line="666"/>
         <source>scanline %1</source>
         <translation>linha de varredura %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="602"/>
+        <location filename="../views/scanline_view.cpp" line="668"/>
         <source>pixel %1</source>
         <translation>pixel %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="605"/>
+        <location filename="../views/scanline_view.cpp" line="671"/>
         <source>at the stepping cursor</source>
         <translation>no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="606"/>
+        <location filename="../views/scanline_view.cpp" line="672"/>
         <source>the triangle selected (the cursor is at the %1 of the frame)</source>
         <translation>o triângulo selecionado (o cursor está no %1 do quadro)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="607"/>
+        <location filename="../views/scanline_view.cpp" line="673"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="608"/>
+        <location filename="../views/scanline_view.cpp" line="674"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="636"/>
+        <location filename="../views/scanline_view.cpp" line="702"/>
         <source>Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the top to the bottom; the two short edges meet at the middle vertex.</source>
         <translation>Vértices ordenados por y: topo %1, meio %2, base %3. A aresta longa vai do topo à base; as duas arestas curtas se encontram no vértice do meio.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="641"/>
+        <location filename="../views/scanline_view.cpp" line="707"/>
         <source>Its area on the screen is zero: it has no inside and is not scanned.</source>
         <translation>Sua área na tela é zero: ele não tem interior e não é varrido.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="646"/>
+        <location filename="../views/scanline_view.cpp" line="712"/>
         <source>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, so the middle vertex is %2 of the long edge: the long edge bounds the spans on the %3.</source>
         <translation>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, então o vértice do meio fica à %2 da aresta longa: a aresta longa limita os segmentos à %3.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="649"/>
-        <location filename="../views/scanline_view.cpp" line="650"/>
-        <location filename="../views/scanline_view.cpp" line="710"/>
+        <location filename="../views/scanline_view.cpp" line="715"/>
+        <location filename="../views/scanline_view.cpp" line="716"/>
+        <location filename="../views/scanline_view.cpp" line="776"/>
         <source>right</source>
         <translation>direita</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="649"/>
-        <location filename="../views/scanline_view.cpp" line="650"/>
-        <location filename="../views/scanline_view.cpp" line="710"/>
+        <location filename="../views/scanline_view.cpp" line="715"/>
+        <location filename="../views/scanline_view.cpp" line="716"/>
+        <location filename="../views/scanline_view.cpp" line="776"/>
         <source>left</source>
         <translation>esquerda</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="624"/>
+        <location filename="../views/scanline_view.cpp" line="690"/>
         <source>long</source>
         <translation>longa</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="624"/>
+        <location filename="../views/scanline_view.cpp" line="690"/>
         <source>upper</source>
         <translation>superior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="624"/>
+        <location filename="../views/scanline_view.cpp" line="690"/>
         <source>lower</source>
         <translation>inferior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="697"/>
+        <location filename="../views/scanline_view.cpp" line="763"/>
         <source>from</source>
         <translation>de</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="698"/>
+        <location filename="../views/scanline_view.cpp" line="764"/>
         <source>to</source>
         <translation>até</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="699"/>
+        <location filename="../views/scanline_view.cpp" line="765"/>
         <source>x on its first row</source>
         <translation>x na sua primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="702"/>
+        <location filename="../views/scanline_view.cpp" line="768"/>
         <source>dx/dy</source>
         <translation>dx/dy</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="703"/>
+        <location filename="../views/scanline_view.cpp" line="769"/>
         <source>horizontal</source>
         <translation>horizontal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="705"/>
+        <location filename="../views/scanline_view.cpp" line="771"/>
         <source>rows</source>
         <translation>linhas</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="707"/>
-        <location filename="../views/scanline_view.cpp" line="734"/>
+        <location filename="../views/scanline_view.cpp" line="773"/>
+        <location filename="../views/scanline_view.cpp" line="828"/>
         <source>none</source>
         <translation>nenhuma</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="710"/>
+        <location filename="../views/scanline_view.cpp" line="776"/>
         <source>side</source>
         <translation>lado</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="714"/>
+        <location filename="../views/scanline_view.cpp" line="780"/>
         <source>Only rows %1 to %2 are on the screen: the walk starts and stops there.</source>
         <translation>Só as linhas %1 a %2 estão na tela: o percurso começa e termina ali.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="656"/>
+        <location filename="../views/scanline_view.cpp" line="722"/>
         <source>No row of this triangle is on the screen.</source>
         <translation>Nenhuma linha deste triângulo está na tela.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="670"/>
+        <location filename="../views/scanline_view.cpp" line="266"/>
+        <source>your span</source>
+        <translation>seu segmento</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="267"/>
+        <source>only yours</source>
+        <translation>só seus</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="268"/>
+        <source>only ours</source>
+        <translation>só nossos</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="736"/>
         <source>Here the additions are seed 001&apos;s DDA, in double: an edge that lands a hair below a row in double leaves that row to the triangle above, where an exact walk would find the edge through the row&apos;s samples.</source>
         <translation>Aqui as somas são o DDA da semente 001, em double: uma aresta que fica um fio abaixo de uma linha em double deixa essa linha para o triângulo de cima, onde um percurso exato acharia a aresta passando pelas amostras da linha.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="734"/>
+        <location filename="../views/scanline_view.cpp" line="828"/>
         <source>%1 to %2</source>
         <translation>%1 a %2</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="738"/>
+        <location filename="../views/scanline_view.cpp" line="832"/>
         <source>Your renderer: no pixel on this row (ours: %1).</source>
         <translation>O seu renderizador: nenhum pixel nesta linha (o nosso: %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="743"/>
+        <location filename="../views/scanline_view.cpp" line="837"/>
         <source>Your renderer: pixels %1 to %2 (ours: %3).</source>
         <translation>O seu renderizador: pixels %1 a %2 (o nosso: %3).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="764"/>
+        <location filename="../views/scanline_view.cpp" line="858"/>
         <source>%1(%2) = %3, where the %4 edge crosses its first row</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza sua primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="770"/>
+        <location filename="../views/scanline_view.cpp" line="864"/>
         <source>%1(%2) = %3, where the %4 edge crosses the first row on the screen</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza a primeira linha na tela</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="778"/>
+        <location filename="../views/scanline_view.cpp" line="872"/>
         <source>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</source>
         <translation>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 ao longo da aresta %7</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="793"/>
+        <location filename="../views/scanline_view.cpp" line="887"/>
         <source>Scanline y = %1</source>
         <translation>Linha de varredura y = %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="795"/>
+        <location filename="../views/scanline_view.cpp" line="889"/>
         <source>(sampled at y = %1)</source>
         <translation>(amostrada em y = %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="807"/>
+        <location filename="../views/scanline_view.cpp" line="901"/>
         <source>Seed 001&apos;s DDA: x_left and x_right are sums in double, one addition of dx/dy a row, the rounding of each carried along (no snapping). Pixels x = ceil(x_left) = %1 while x &amp;lt; x_right: up to ceil(x_right) &amp;minus; 1 = %2 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>DDA da semente 001: x_left e x_right são somas em double, uma soma de dx/dy por linha, o arredondamento de cada uma levado adiante (sem arredondar os vértices para a grade). Pixels x = ceil(x_left) = %1 enquanto x &amp;lt; x_right: até ceil(x_right) &amp;minus; 1 = %2 (uma amostra exatamente na aresta direita pertence ao triângulo seguinte).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="814"/>
+        <location filename="../views/scanline_view.cpp" line="908"/>
         <source>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Regra top-left: as amostras com x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 a ceil(x_right%2) &amp;minus; 1 = %4 (uma amostra exatamente na aresta direita pertence ao triângulo seguinte).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="821"/>
+        <location filename="../views/scanline_view.cpp" line="915"/>
         <source>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</source>
         <translation>Regra inclusiva: os pixels de ceil(x_left%1) = %2 a floor(x_right%1) = %3, as duas pontas incluídas (uma amostra exatamente sobre uma aresta está dentro).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="829"/>
+        <location filename="../views/scanline_view.cpp" line="923"/>
         <source>No pixel on this row</source>
         <translation>Nenhum pixel nesta linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="830"/>
+        <location filename="../views/scanline_view.cpp" line="924"/>
         <source>the edges cross it between two samples.</source>
         <translation>as arestas a cruzam entre duas amostras.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="831"/>
+        <location filename="../views/scanline_view.cpp" line="925"/>
         <source>they are all off the screen.</source>
         <translation>estão todos fora da tela.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="834"/>
+        <location filename="../views/scanline_view.cpp" line="928"/>
         <source>Span [%1, %2): 1 pixel.</source>
         <translation>Segmento [%1, %2): 1 pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="835"/>
+        <location filename="../views/scanline_view.cpp" line="929"/>
         <source>Span [%1, %2): %3 pixels.</source>
         <translation>Segmento [%1, %2): %3 pixels.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="838"/>
+        <location filename="../views/scanline_view.cpp" line="932"/>
         <source>(cut to the screen&apos;s columns 0 to %1)</source>
         <translation>(cortado às colunas 0 a %1 da tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="841"/>
+        <location filename="../views/scanline_view.cpp" line="935"/>
         <source>The pixel at the cursor is x = %1.</source>
         <translation>O pixel no cursor é x = %1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="859"/>
+        <location filename="../views/scanline_view.cpp" line="953"/>
         <source>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</source>
         <translation>Nas pontas do segmento, as coordenadas baricêntricas (&amp;alpha;, &amp;beta;, &amp;gamma;) da amostra em relação ao triângulo de tela P1 %1, P2 %2, P3 %3 dão a profundidade, a partir dos z dos vértices, z1 = %4, z2 = %5, z3 = %6:</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="864"/>
+        <location filename="../views/scanline_view.cpp" line="958"/>
         <source>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</source>
         <translation>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (com correção de perspectiva: 1/z é linear na tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="866"/>
+        <location filename="../views/scanline_view.cpp" line="960"/>
         <source>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</source>
         <translation>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="871"/>
+        <location filename="../views/scanline_view.cpp" line="965"/>
         <source>depth</source>
         <translation>profundidade</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="871"/>
+        <location filename="../views/scanline_view.cpp" line="965"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="877"/>
+        <location filename="../views/scanline_view.cpp" line="971"/>
         <source>not computed (nothing is lit)</source>
         <translation>não calculada (nada é iluminado)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="878"/>
+        <location filename="../views/scanline_view.cpp" line="972"/>
         <source>zero</source>
         <translation>nula</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="895"/>
+        <location filename="../views/scanline_view.cpp" line="989"/>
         <source>Pixel (x, y) is sampled at the point (x, y) itself.</source>
         <translation>O pixel (x, y) é amostrado no próprio ponto (x, y).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="896"/>
+        <location filename="../views/scanline_view.cpp" line="990"/>
         <source>Pixel (x, y) is sampled at (x + %1, y + %1).</source>
         <translation>O pixel (x, y) é amostrado em (x + %1, y + %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="899"/>
+        <location filename="../views/scanline_view.cpp" line="993"/>
         <source>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</source>
         <translation>A normal é N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1), a partir das normais dos vértices, normalizada%1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="902"/>
+        <location filename="../views/scanline_view.cpp" line="996"/>
         <source>, with the barycentrics weighted by 1/w (perspective-correct)</source>
         <translation>, com as coordenadas baricêntricas ponderadas por 1/w (correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="664"/>
+        <location filename="../views/scanline_view.cpp" line="730"/>
         <source>Edge walking: from one scanline to the next, each edge&apos;s x changes by its constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. The span between the two crossings is filled; the long edge bounds every row, the upper edge the rows above the middle vertex, the lower edge the rest.</source>
         <translation>Percurso das arestas: de uma linha de varredura à seguinte, o x de cada aresta muda pelo seu dx/dy constante, uma adição por aresta e por linha: x_left(y+1) = x_left(y) + dx/dy. O segmento entre os dois cruzamentos é preenchido; a aresta longa limita todas as linhas, a aresta superior as linhas acima do vértice do meio, a aresta inferior as demais.</translation>
     </message>

@@ -27,6 +27,7 @@
 #include "views/painted_labels.h"
 #include "views/pixel_history.h"
 #include "views/pixel_text.h"
+#include "views/their_colour.h"
 
 namespace rasterlab {
 
@@ -468,9 +469,24 @@ QString PixelInspector::theirColourText() const {
                        .arg(b.red())
                        .arg(b.green())
                        .arg(b.blue());
-    if (a.rgb() != b.rgb())
-        text += QLatin1Char(' ') + tr("Compare Their Frame, in the Check dock, tells which Phong "
-                                      "term would have to change.");
+    if (a.rgb() == b.rgb()) return text;
+    // The fragment that holds the pixel at the end of the frame: which of its Phong terms,
+    // changed alone, would give their colour.
+    const int last = static_cast<int>(m_history.rows().size()) - 1;
+    const auto breakdown = last >= 0 ? rowBreakdown(*m_inspection, m_history, last) : std::nullopt;
+    if (!breakdown) {
+        text += QLatin1Char(' ') + tr("No triangle of ours holds this pixel.");
+    } else if (!TheirColourTerms::workedOutFor(*breakdown)) {
+        text += QLatin1Char(' ') +
+                tr("The terms are worked out for the course's lighting in flat or Phong "
+                   "shading only.");
+    } else {
+        const std::array<std::uint8_t, 4> theirs{std::uint8_t(a.red()), std::uint8_t(a.green()),
+                                                 std::uint8_t(a.blue()), std::uint8_t(a.alpha())};
+        text += QLatin1Char('\n') + tr("For your colour, each term alone:") + QLatin1Char('\n') +
+                TheirColourTerms::lines(*breakdown, theirs, checked->scene->conventions.colourScale)
+                    .join(QLatin1Char('\n'));
+    }
     return text;
 }
 

@@ -9,11 +9,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <tuple>
 #include <vector>
 
 #include "pipeline/stages/dda.h"
 #include "pipeline/stages/depth_test.h"
+#include "pipeline/stages/scan_conversion.h"
 #include "pipeline/stages/shading.h"
 #include "views/inspection.h"
 #include "views/number_text.h"
@@ -194,7 +196,9 @@ public:
 
     void setContent(std::optional<ScanlineModel> model, QRect window, double offset,
                     std::vector<QRgb> colours, std::vector<std::uint8_t> written, double lineWidth,
-                    bool presentation) {
+                    bool presentation,
+                    std::optional<ScanlineView::TheirCoverage> theirs = std::nullopt) {
+        m_theirs = std::move(theirs);
         m_model = std::move(model);
         m_window = window;
         m_offset = offset;
@@ -217,6 +221,9 @@ private:
     void paintPixels(QPainter& painter, const Grid& grid) const;
     void paintTriangle(QPainter& painter, const Grid& grid) const;
     void paintScanline(QPainter& painter, const Grid& grid) const;
+    // Their span of the row, outlined in red; the pixels where their coverage departs from
+    // ours: a red square where only they cover, a red cross where only we do.
+    void paintTheirs(QPainter& painter, const Grid& grid) const;
     // The crossings' values, unclipped, between the row numbers and the right edge, above the
     // legend; drawn before the numbers, which give way to them.
     void paintCrossings(QPainter& painter, const Grid& grid, double marginLeft,
@@ -234,6 +241,7 @@ private:
     std::vector<std::uint8_t> m_written;
     double m_lineWidth = 1.5;
     bool m_presentation = false;
+    std::optional<ScanlineView::TheirCoverage> m_theirs;
 };
 
 namespace {
@@ -242,6 +250,7 @@ const QColor kLongColour(255, 150, 40);
 const QColor kUpperColour(90, 200, 255);
 const QColor kLowerColour(235, 100, 235);
 const QColor kSpanColour(255, 221, 51);
+const QColor kTheirColour(255, 70, 70);
 const std::array<QColor, 3> kEdgeColours{kLongColour, kUpperColour, kLowerColour};
 
 std::array<QString, 3> edgeNames() {
@@ -249,10 +258,23 @@ std::array<QString, 3> edgeNames() {
             ScanlineView::tr("lower edge")};
 }
 
-// Each legend entry's width: its line, then its name.
-std::vector<double> legendWidths(const QFontMetrics& metrics) {
+// The legend's names: the edges, and after a check what their marks mean.
+std::vector<QString> legendNames(bool theirs) {
+    const std::array<QString, 3> edges = edgeNames();
+    std::vector<QString> names(edges.begin(), edges.end());
+    if (theirs) {
+        names.push_back(ScanlineView::tr("your span"));
+        names.push_back(ScanlineView::tr("only yours"));
+        names.push_back(ScanlineView::tr("only ours"));
+    }
+    return names;
+}
+
+// Each legend entry's width: its mark, then its name.
+std::vector<double> legendWidths(const QFontMetrics& metrics, bool theirs) {
     std::vector<double> widths;
-    for (const QString& name : edgeNames()) widths.push_back(18 + metrics.horizontalAdvance(name));
+    for (const QString& name : legendNames(theirs))
+        widths.push_back(18 + metrics.horizontalAdvance(name));
     return widths;
 }
 
@@ -292,7 +314,8 @@ void ScanlineCanvas::paintEvent(QPaintEvent*) {
     // Room for the row numbers on the left, the column numbers on top, the legend below.
     const double marginLeft = metrics.horizontalAdvance(QStringLiteral("0000")) + 6;
     const double marginTop = metrics.height() + 4;
-    const std::vector<FlowPlace> legend = flowPlaces(legendWidths(metrics), 8.0, width() - 4);
+    const std::vector<FlowPlace> legend =
+        flowPlaces(legendWidths(metrics, m_theirs.has_value()), 8.0, width() - 4);
     const double marginBottom = metrics.height() * (legend.back().line + 1) + 8;
     Grid grid;
     grid.cell = std::max(2.0, std::min((width() - marginLeft - 6) / cols,
@@ -310,6 +333,7 @@ void ScanlineCanvas::paintEvent(QPaintEvent*) {
     painter.setClipRect(grid.rect);
     paintTriangle(painter, grid);
     if (m_model->row) paintScanline(painter, grid);
+    if (m_theirs) paintTheirs(painter, grid);
     painter.restore();
     if (m_model->row) paintCrossings(painter, grid, marginLeft, metrics);
     paintNumbers(painter, grid, marginLeft, metrics);
@@ -420,6 +444,31 @@ void ScanlineCanvas::paintScanline(QPainter& painter, const Grid& grid) const {
     }
 }
 
+void ScanlineCanvas::paintTheirs(QPainter& painter, const Grid& grid) const {
+    const ScanlineView::TheirCoverage& theirs = *m_theirs;
+    const double inset = std::min(3.0, grid.cell / 6.0);
+    painter.setBrush(Qt::NoBrush);
+    painter.setPen(QPen(kTheirColour, m_lineWidth));
+    for (const QPoint& p : theirs.onlyTheirs) {
+        const QRectF square = grid.square(p.x(), p.y()).adjusted(inset, inset, -inset, -inset);
+        painter.fillRect(square, QColor(255, 70, 70, 110));
+        painter.drawRect(square);
+    }
+    for (const QPoint& p : theirs.onlyOurs) {
+        const QRectF square = grid.square(p.x(), p.y()).adjusted(inset, inset, -inset, -inset);
+        painter.drawLine(square.topLeft(), square.bottomRight());
+        painter.drawLine(square.topRight(), square.bottomLeft());
+    }
+    if (theirs.rowSpan && m_model->row) {
+        const auto [first, last] = *theirs.rowSpan;
+        const int y = m_model->row->y;
+        painter.setPen(QPen(kTheirColour, m_lineWidth * 1.4, Qt::DashLine));
+        painter.drawRect(grid.square(first, y)
+                             .united(grid.square(last, y))
+                             .adjusted(inset, inset, -inset, -inset));
+    }
+}
+
 void ScanlineCanvas::paintCrossings(QPainter& painter, const Grid& grid, double marginLeft,
                                     const QFontMetrics& metrics) {
     const ScanlineModel& m = *m_model;
@@ -512,13 +561,28 @@ void ScanlineCanvas::paintNumbers(QPainter& painter, const Grid& grid, double ma
 // The legend: which colour is which edge.
 void ScanlineCanvas::paintLegend(QPainter& painter, const Grid& grid, const QFontMetrics& metrics,
                                  const std::vector<FlowPlace>& places) {
-    const std::array<QString, 3> names = edgeNames();
-    for (std::size_t k = 0; k < 3; ++k) {
+    const std::vector<QString> names = legendNames(m_theirs.has_value());
+    for (std::size_t k = 0; k < names.size(); ++k) {
         const double x = places[k].x;
         const double y = grid.rect.bottom() + 4 + places[k].line * metrics.height();
-        painter.setPen(QPen(kEdgeColours[k], m_lineWidth * 1.4));
-        painter.drawLine(QPointF(x, y + metrics.height() / 2.0),
-                         QPointF(x + 14, y + metrics.height() / 2.0));
+        const double middle = y + metrics.height() / 2.0;
+        const QRectF mark(x + 2, middle - 5, 10, 10);
+        painter.setBrush(Qt::NoBrush);
+        if (k < 3) {
+            painter.setPen(QPen(kEdgeColours[k], m_lineWidth * 1.4));
+            painter.drawLine(QPointF(x, middle), QPointF(x + 14, middle));
+        } else if (k == 3) {
+            painter.setPen(QPen(kTheirColour, m_lineWidth * 1.4, Qt::DashLine));
+            painter.drawRect(QRectF(x, middle - 4, 14, 8));
+        } else if (k == 4) {
+            painter.setPen(QPen(kTheirColour, m_lineWidth));
+            painter.fillRect(mark, QColor(255, 70, 70, 110));
+            painter.drawRect(mark);
+        } else {
+            painter.setPen(QPen(kTheirColour, m_lineWidth));
+            painter.drawLine(mark.topLeft(), mark.bottomRight());
+            painter.drawLine(mark.topRight(), mark.bottomLeft());
+        }
         painter.setPen(QColor(220, 220, 220));
         drawLabel(painter, QPointF(x + 18, y + metrics.ascent()), names[k]);
     }
@@ -571,10 +635,12 @@ void ScanlineView::refresh() {
                 if (image.valid(x, y)) colours[i] = image.pixel(x, y);
             }
         }
+        m_theirCoverage = theirCoverageIn(window);
         m_canvas->setContent(m_model, window, scene.rules.sampleOffset, std::move(colours),
                              std::move(written), m_inspection->lineWidth(),
-                             m_inspection->presentation());
+                             m_inspection->presentation(), m_theirCoverage);
     } else {
+        m_theirCoverage.reset();
         m_canvas->setContent(std::nullopt, QRect(), 0.0, {}, {}, 1.5, false);
     }
     title()->setText(titleText());
@@ -723,6 +789,34 @@ void ScanlineView::setTheirSpans(std::shared_ptr<const rl::FrameTrace> frame, Th
     m_theirFrame = frame;
     m_theirSpans = std::move(spans);
     refresh();
+}
+
+std::optional<ScanlineView::TheirCoverage> ScanlineView::theirCoverageIn(
+    const QRect& window) const {
+    const auto checked = m_theirFrame.lock();
+    if (!checked || checked != m_inspection->frame() || m_theirSpans.empty() || !m_model)
+        return std::nullopt;
+    const rl::ScanConversion& scan = *checked->scan;
+    const std::uint32_t t = m_model->triangle;
+    std::map<int, std::pair<int, int>> ours;  // row to [xBegin, xEnd)
+    for (std::uint32_t i = scan.spanStart[t]; i < scan.spanStart[t + 1]; ++i)
+        ours[scan.spans[i].y] = {scan.spans[i].xBegin, scan.spans[i].xEnd};
+    TheirCoverage coverage;
+    for (int y = window.top(); y <= window.bottom(); ++y) {
+        const auto o = ours.find(y);
+        const auto th = m_theirSpans.find({t, y});
+        for (int x = window.left(); x <= window.right(); ++x) {
+            const bool inOurs = o != ours.end() && x >= o->second.first && x < o->second.second;
+            const bool inTheirs =
+                th != m_theirSpans.end() && x >= th->second.first && x <= th->second.second;
+            if (inOurs != inTheirs)
+                (inOurs ? coverage.onlyOurs : coverage.onlyTheirs).push_back({x, y});
+        }
+    }
+    if (m_model->row)
+        if (const auto th = m_theirSpans.find({t, m_model->row->y}); th != m_theirSpans.end())
+            coverage.rowSpan = th->second;
+    return coverage;
 }
 
 QString ScanlineView::theirSpanHtml(const ScanlineModel& m) const {

@@ -90,6 +90,13 @@ public:
     // (triangle, row) to its first and last pixel; the explanation puts them beside ours.
     using TheirSpans = std::map<std::pair<std::uint32_t, int>, std::pair<int, int>>;
     void setTheirSpans(std::shared_ptr<const rl::FrameTrace> frame, TheirSpans spans);
+    // Where their spans of the triangle shown depart from ours, in the window drawn: the grid
+    // marks these pixels, and outlines their span of the row shown.
+    struct TheirCoverage {
+        std::vector<QPoint> onlyOurs, onlyTheirs;
+        std::optional<std::pair<int, int>> rowSpan;  // first and last pixel, both included
+    };
+    const std::optional<TheirCoverage>& theirCoverage() const { return m_theirCoverage; }
     // The window of pixels drawn: [left, left + width) x [top, top + height).
     QRect drawnWindow() const;
 
@@ -101,8 +108,11 @@ private:
     void refresh() override;
     // Their span of the row shown beside ours, or nothing when no check gave spans.
     QString theirSpanHtml(const ScanlineModel& m) const;
+    // Their coverage of the model's triangle in the window, when a check gave spans.
+    std::optional<TheirCoverage> theirCoverageIn(const QRect& window) const;
     std::weak_ptr<const rl::FrameTrace> m_theirFrame;
     TheirSpans m_theirSpans;
+    std::optional<TheirCoverage> m_theirCoverage;
     // The lecture's explanation with this triangle's numbers, section by section.
     QString explanationHtml() const;
     QString edgeTableHtml(const ScanlineModel& m) const;

@@ -22,6 +22,7 @@
 #include "views/messages/pipeline_messages.h"
 #include "views/number_text.h"
 #include "views/pixel_history.h"
+#include "views/their_colour.h"
 
 namespace rasterlab {
 
@@ -132,30 +133,6 @@ QString channels(const std::array<double, 4>& v) {
         .arg(v[1], 0, 'f', 1)
         .arg(v[2], 0, 'f', 1)
         .arg(v[3], 0, 'f', 1);
-}
-
-QString channelName(int c) {
-    switch (c) {
-        case 0:
-            return ComparePanel::tr("red");
-        case 1:
-            return ComparePanel::tr("green");
-        case 2:
-            return ComparePanel::tr("blue");
-        default:
-            return ComparePanel::tr("alpha");
-    }
-}
-
-// "a, b and c" in the language shown.
-QString listText(const QStringList& parts) {
-    if (parts.size() < 2) return parts.value(0);
-    return ComparePanel::tr("%1 and %2")
-        .arg(parts.mid(0, parts.size() - 1).join(QStringLiteral(", ")), parts.last());
-}
-
-QString vec(const rl::vec3& v) {
-    return vector(v, 'g', 3);
 }
 
 }  // namespace
@@ -283,8 +260,7 @@ QString ComparePanel::compare(const QString& path) {
     }
     if (!ours) {
         problem = QString::fromStdString(ours.error().message);
-    } else if (problem = CompareImage::sizeMismatch(path, theirs, ours->image);
-               problem.isEmpty()) {
+    } else if (problem = CompareImage::sizeMismatch(path, theirs, ours->image); problem.isEmpty()) {
         const auto [commandFile, imageIndex] =
             m_commandFile ? m_commandFile() : std::pair<QString, int>();
         auto comparison = CompareImage::diagnose(ours.value(), theirs, format, commandFile,
@@ -297,8 +273,7 @@ QString ComparePanel::compare(const QString& path) {
             m_scene = frame->scene;
             m_ours = std::make_unique<rl::OurFrame>(std::move(ours.value()));
             m_theirs = std::move(theirs);
-            m_comparison =
-                std::make_unique<rl::ImageComparison>(std::move(comparison->comparison));
+            m_comparison = std::make_unique<rl::ImageComparison>(std::move(comparison->comparison));
             m_fit = std::move(comparison->fit);
             m_theirImage = toQImage(m_theirs);
             m_ourImage = toQImage(m_ours->image);
@@ -395,12 +370,12 @@ QString ComparePanel::diagnosisText() const {
 QString ComparePanel::fittedName(const std::string& name) {
     // The fit's value names (lighting_fit.cpp), in the user's language.
     static const char* const names[] = {
-        QT_TR_NOOP("light x (view)"),        QT_TR_NOOP("light y (view)"),
-        QT_TR_NOOP("light z (view)"),        QT_TR_NOOP("n"),
-        QT_TR_NOOP("ambient Ia*ka R"),       QT_TR_NOOP("ambient Ia*ka G"),
-        QT_TR_NOOP("ambient Ia*ka B"),       QT_TR_NOOP("diffuse Il*Od*kd R"),
-        QT_TR_NOOP("diffuse Il*Od*kd G"),    QT_TR_NOOP("diffuse Il*Od*kd B"),
-        QT_TR_NOOP("specular Il*ks R"),      QT_TR_NOOP("specular Il*ks G"),
+        QT_TR_NOOP("light x (view)"),     QT_TR_NOOP("light y (view)"),
+        QT_TR_NOOP("light z (view)"),     QT_TR_NOOP("n"),
+        QT_TR_NOOP("ambient Ia*ka R"),    QT_TR_NOOP("ambient Ia*ka G"),
+        QT_TR_NOOP("ambient Ia*ka B"),    QT_TR_NOOP("diffuse Il*Od*kd R"),
+        QT_TR_NOOP("diffuse Il*Od*kd G"), QT_TR_NOOP("diffuse Il*Od*kd B"),
+        QT_TR_NOOP("specular Il*ks R"),   QT_TR_NOOP("specular Il*ks G"),
         QT_TR_NOOP("specular Il*ks B"),
     };
     for (const char* known : names)
@@ -412,9 +387,9 @@ std::vector<ComparePanel::FittedSetting> ComparePanel::fittedSettings() const {
     if (!m_ours || !m_fit.fitted || !m_ours->trace->cameraBasis) return {};
     const auto fitted = rl::sceneWithFit(*m_ours->trace->scene, *m_ours->trace->cameraBasis, m_fit);
     const rl::Light& light = fitted->lights.front();
-    const auto draw = std::find_if(fitted->draws.begin(), fitted->draws.end(), [](const rl::Draw& d) {
-        return d.lighting == rl::LightingModel::CoursePhong;
-    });
+    const auto draw = std::find_if(
+        fitted->draws.begin(), fitted->draws.end(),
+        [](const rl::Draw& d) { return d.lighting == rl::LightingModel::CoursePhong; });
     if (draw == fitted->draws.end()) return {};
     const rl::Material& m = draw->material;
     const auto triple = [](const auto& v) { return SceneDocument::Numbers{v[0], v[1], v[2]}; };
@@ -506,9 +481,9 @@ void ComparePanel::refreshTexts() {
                              .arg(c.unexplainedPixels)
                              .toHtmlEscaped());
         if (c.mostlyUnexplained())
-            html += QStringLiteral("<br>") +
-                    tr("None of the known mistakes explains most of this difference.")
-                        .toHtmlEscaped();
+            html +=
+                QStringLiteral("<br>") +
+                tr("None of the known mistakes explains most of this difference.").toHtmlEscaped();
         html += QStringLiteral("</p>");
     }
     if (m_fit.fitted) {
@@ -521,13 +496,12 @@ void ComparePanel::refreshTexts() {
                              .toHtmlEscaped());
         for (const rl::FittedValue& v : m_fit.values)
             if (v.apart)
-                html += QStringLiteral("<br>") +
-                        tr("%1: theirs %2 ± %3, ours %4")
-                            .arg(fittedName(v.name))
-                            .arg(v.theirs, 0, 'g', 4)
-                            .arg(v.uncertainty, 0, 'g', 2)
-                            .arg(v.ours, 0, 'g', 4)
-                            .toHtmlEscaped();
+                html += QStringLiteral("<br>") + tr("%1: theirs %2 ± %3, ours %4")
+                                                     .arg(fittedName(v.name))
+                                                     .arg(v.theirs, 0, 'g', 4)
+                                                     .arg(v.uncertainty, 0, 'g', 2)
+                                                     .arg(v.ours, 0, 'g', 4)
+                                                     .toHtmlEscaped();
         for (const rl::Message& m : m_fit.findings)
             html += QStringLiteral("<br>") + translated(m).toHtmlEscaped();
         html += QStringLiteral("</p>");
@@ -555,15 +529,15 @@ void ComparePanel::refreshPixel() {
     QStringList changes;
     for (int c = 0; c < 4; ++c) {
         const int d = int(theirs[c]) - int(ours[c]);
-        if (d < 0) changes << tr("minus %1 in %2").arg(-d).arg(channelName(c));
-        if (d > 0) changes << tr("plus %1 in %2").arg(d).arg(channelName(c));
+        if (d < 0) changes << tr("minus %1 in %2").arg(-d).arg(TheirColourTerms::channelName(c));
+        if (d > 0) changes << tr("plus %1 in %2").arg(d).arg(TheirColourTerms::channelName(c));
     }
     if (changes.isEmpty()) {
         lines << tr("Their colour is ours.");
         m_pixel->setText(lines.join(QLatin1Char('\n')));
         return;
     }
-    lines << tr("Their colour is ours %1.").arg(listText(changes));
+    lines << tr("Their colour is ours %1.").arg(TheirColourTerms::listText(changes));
     if (isStale()) {
         lines << tr(
             "The scene has changed since the comparison: the lighting shown now is not "
@@ -582,100 +556,15 @@ void ComparePanel::refreshPixel() {
                                            static_cast<int>(history.rows().size()) - 1);
                !b) {
         lines << tr("The lighting of this pixel is not known.");
-    } else if (b->lighting != rl::LightingModel::CoursePhong || b->slides ||
-               b->event.model == rl::ShadingModel::Gouraud) {
+    } else if (!TheirColourTerms::workedOutFor(*b)) {
         lines << tr(
             "The terms that would have to change are worked out for the course's "
             "lighting model in flat or Phong shading; this pixel is shaded otherwise "
             "(the pixel inspector shows how).");
     } else {
-        lines << termLines(*b, theirs);
+        lines << TheirColourTerms::lines(*b, theirs, m_scene->conventions.colourScale);
     }
     m_pixel->setText(lines.join(QLatin1Char('\n')));
-}
-
-QStringList ComparePanel::termLines(const LightingBreakdown& b,
-                                    const std::array<std::uint8_t, 4>& theirs) const {
-    const float scale = m_scene->conventions.colourScale;
-    const float byte = scale / 255.0f;  // one byte in the colour scale: the rounding's margin
-    // What the colour (before clamping) would have to change by, per channel, to give their
-    // byte. Where we clamp to 255 and so do they, any colour at least as high gives it: the
-    // change is then at least delta (and is shown as none).
-    rl::vec3 delta(0.0f);
-    std::array<bool, 3> atLeast{};
-    QStringList clamped;
-    for (int c = 0; c < 3; ++c) {
-        atLeast[c] = theirs[c] == 255 && b.colour[c] >= scale;
-        delta[c] = (atLeast[c] ? scale : float(theirs[c]) * byte) - b.colour[c];
-        if (atLeast[c]) clamped << channelName(c);
-    }
-    const rl::vec3& od = b.objectColour;
-    struct Term {
-        QString name;
-        rl::vec3 value;
-    };
-    const Term terms[] = {{tr("the ambient term Ia·ka"), b.ambient},
-                          {tr("the diffuse term Il·Od·kd·(N·L)"), b.diffuse},
-                          {tr("the specular term Il·ks·(R·V)^n"), b.specular}};
-    QStringList lines;
-    bool explained = false;  // a term changed by a simple factor gives their colour
-    for (const Term& t : terms) {
-        const rl::vec3 needed = t.value + delta;
-        rl::vec3 shown = needed;  // a clamped channel as it is
-        QStringList zero, negative;
-        for (int c = 0; c < 3; ++c) {
-            if (atLeast[c]) {
-                shown[c] = t.value[c];
-                continue;
-            }
-            if (std::abs(delta[c]) > byte && t.value[c] <= byte) zero << channelName(c);
-            if (needed[c] < -byte) negative << channelName(c);
-        }
-        if (!zero.isEmpty()) {
-            lines << tr("• %1 is 0 in %2 here: changing it alone cannot give their colour.")
-                         .arg(t.name, listText(zero));
-            continue;
-        }
-        if (!negative.isEmpty()) {
-            lines << tr("• %1 would have to be below 0 in %2: not this term alone.")
-                         .arg(t.name, listText(negative));
-            continue;
-        }
-        // The factor per channel, and whether a simple one fits every channel to within the
-        // rounding of a byte: 0 (the term left out), Od (multiplied by Od), 1/Od (without Od).
-        rl::vec3 factor(1.0f);
-        const auto fits = [&](const rl::vec3& f) {
-            for (int c = 0; c < 3; ++c) {
-                if (t.value[c] <= byte) continue;
-                if (f[c] < (needed[c] - byte) / t.value[c]) return false;
-                if (!atLeast[c] && f[c] > (needed[c] + byte) / t.value[c]) return false;
-            }
-            return true;
-        };
-        for (int c = 0; c < 3; ++c)
-            if (t.value[c] > byte) factor[c] = shown[c] / t.value[c];
-        QString line = tr("• %1 would have to be %2 instead of %3, × %4 per channel")
-                           .arg(t.name, vec(shown), vec(t.value), vec(factor));
-        if (fits(rl::vec3(0.0f))) {
-            line += tr(": the term left out");
-            explained = true;
-        } else if (fits(od)) {
-            line += tr(": that is the term times Od %1").arg(vec(od));
-            explained = true;
-        } else if (od.x > 0.0f && od.y > 0.0f && od.z > 0.0f && fits(1.0f / od)) {
-            line += tr(": that is the term without Od %1").arg(vec(od));
-            explained = true;
-        }
-        lines << line + QLatin1Char('.');
-    }
-    if (!clamped.isEmpty())
-        lines << tr("(%1: 255 in both images, clamped; any value at least as high gives it.)")
-                     .arg(listText(clamped));
-    if (!explained)
-        lines << tr(
-            "No term changed by a simple factor (left out, times Od, without Od) gives "
-            "their colour: look at several terms, or at what the diagnosis says.");
-    return lines;
 }
 
 }  // namespace rasterlab

@@ -19,7 +19,6 @@
 #include "app/documents/scene_document.h"
 #include "pipeline/analysis/lighting_fit.h"
 #include "pipeline/analysis/mistakes.h"
-#include "views/lighting_breakdown.h"
 
 class QComboBox;
 class QLabel;
@@ -92,13 +91,10 @@ private:
     void refreshDifference();
     void refreshTexts();
     void refreshPixel();
-    // What each Phong term would have to be for our colour to become theirs at the pixel.
-    QStringList termLines(const LightingBreakdown& b,
-                          const std::array<std::uint8_t, 4>& theirs) const;
 
     Inspection* m_inspection = nullptr;
     QString m_path;
-    QString m_provenance;  // their image's format, and what was cropped
+    QString m_provenance;                      // their image's format, and what was cropped
     std::shared_ptr<const rl::Scene> m_scene;  // the scene compared
     std::unique_ptr<rl::OurFrame> m_ours;
     rl::Rgba8Image m_theirs;
