@@ -8,6 +8,7 @@
 #include <QtTest>
 
 #include <QDockWidget>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QImage>
 #include <QJsonDocument>
@@ -15,6 +16,7 @@
 #include <QListWidget>
 #include <QPushButton>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QUndoStack>
 
 #include "app/window/compare_panel.h"
@@ -62,6 +64,7 @@ private slots:
     }
 
     void ranksTheMistakeFirst();
+    void windowGoesOnDuringACompare();
     void countsAsTheCommandLine();
     void thresholdAndFlicker();
     void pickedPixel();
@@ -102,6 +105,24 @@ void TestCompareWindow::ranksTheMistakeFirst() {
             !text.contains(QStringLiteral("2. ")));
     QVERIFY2(panel()->summaryText().contains(QStringLiteral("%1 differ").arg(c->differing)),
              qPrintable(panel()->summaryText()));
+}
+
+// Our render and the diagnosis run on a worker: the window's events (its painting, its
+// timers) go on while a compare runs.
+void TestCompareWindow::windowGoesOnDuringACompare() {
+    int ticks = 0;
+    QTimer timer;
+    timer.setInterval(5);
+    connect(&timer, &QTimer::timeout, this, [&] { ++ticks; });
+    timer.start();
+    QElapsedTimer clock;
+    clock.start();
+    QVERIFY(m_window.compareWithImage(m_theirPath));
+    timer.stop();
+    qInfo("the compare took %lld ms; a 5 ms timer fired %d times meanwhile", clock.elapsed(),
+          ticks);
+    QVERIFY(ticks > 0);
+    QVERIFY(panel()->comparison());
 }
 
 void TestCompareWindow::countsAsTheCommandLine() {

@@ -3443,8 +3443,8 @@
 <context>
     <name>rasterlab::ComparePanel</name>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="127"/>
         <location filename="../app/window/compare_panel.cpp" line="131"/>
+        <location filename="../app/window/compare_panel.cpp" line="135"/>
         <source>R %1, G %2, B %3, A %4</source>
         <translation>R %1, G %2, B %3, A %4</translation>
     </message>
@@ -3474,79 +3474,79 @@
         <translation>%1 e %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="146"/>
+        <location filename="../app/window/compare_panel.cpp" line="150"/>
         <source>Side by side</source>
         <translation>Lado a lado</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="147"/>
+        <location filename="../app/window/compare_panel.cpp" line="151"/>
         <source>Flicker</source>
         <translation>Alternar</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="148"/>
+        <location filename="../app/window/compare_panel.cpp" line="152"/>
         <source>Difference</source>
         <translation>Diferença</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="150"/>
+        <location filename="../app/window/compare_panel.cpp" line="154"/>
         <source>Theirs beside ours, one after the other twice a second, or the pixels that differ</source>
         <translation>A deles ao lado da nossa, uma depois da outra duas vezes por segundo, ou os pixels que diferem</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="153"/>
+        <location filename="../app/window/compare_panel.cpp" line="157"/>
         <source>Differ by more than</source>
         <translation>Diferem em mais de</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="159"/>
+        <location filename="../app/window/compare_panel.cpp" line="163"/>
         <source>The difference view shows the pixels where some channel differs by more than this (0: every difference)</source>
         <translation>A vista da diferença mostra os pixels em que algum canal difere em mais do que isto (0: toda diferença)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="164"/>
+        <location filename="../app/window/compare_panel.cpp" line="168"/>
         <source>Compare Again</source>
         <translation>Comparar de novo</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="167"/>
+        <location filename="../app/window/compare_panel.cpp" line="171"/>
         <source>The scene changed since the comparison: compare their image with the scene shown now</source>
         <translation>A cena mudou desde a comparação: comparar a imagem deles com a cena mostrada agora</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="200"/>
+        <location filename="../app/window/compare_panel.cpp" line="204"/>
         <source>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</source>
         <translation>Arquivo &gt; Comparar com imagem... compara um PNG do seu próprio renderizador com a renderização desta cena.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="238"/>
+        <location filename="../app/window/compare_panel.cpp" line="292"/>
         <source>There is no render to compare with yet.</source>
         <translation>Ainda não há renderização com que comparar.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="246"/>
+        <location filename="../app/window/compare_panel.cpp" line="255"/>
         <source>Their image: %1.</source>
         <translation>A imagem deles: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="252"/>
+        <location filename="../app/window/compare_panel.cpp" line="266"/>
         <source>Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.</source>
         <translation>Recortada para %1x%2 em (%3, %4) a partir de %5x%6: o quadro encontrado dentro dela.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="345"/>
-        <location filename="../app/window/compare_panel.cpp" line="348"/>
+        <location filename="../app/window/compare_panel.cpp" line="384"/>
+        <location filename="../app/window/compare_panel.cpp" line="387"/>
         <source>Theirs</source>
         <translation>Deles</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="345"/>
-        <location filename="../app/window/compare_panel.cpp" line="348"/>
+        <location filename="../app/window/compare_panel.cpp" line="384"/>
+        <location filename="../app/window/compare_panel.cpp" line="387"/>
         <source>Ours</source>
         <translation>Nossa</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/compare_panel.cpp" line="353"/>
+        <location filename="../app/window/compare_panel.cpp" line="392"/>
         <source>%n pixel(s) differ by more than %1</source>
         <translation>
             <numerusform>%n pixel difere em mais de %1</numerusform>
@@ -3554,217 +3554,217 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="417"/>
+        <location filename="../app/window/compare_panel.cpp" line="456"/>
         <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
         <translation>%1 contra a nossa renderização (%2x%3): %4 pixels comparados, %5 diferem (%6%).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="426"/>
+        <location filename="../app/window/compare_panel.cpp" line="465"/>
         <source>Their image is unlit: one colour %1 wherever it covers. Only coverage is compared (our covered pixels in that colour), and only projection and scan conversion mistakes are tried.</source>
         <translation>A imagem deles não é iluminada: uma só cor %1 onde ela cobre. Só a cobertura é comparada (os nossos pixels cobertos nessa cor), e só erros de projeção e de conversão por varredura são tentados.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="431"/>
+        <location filename="../app/window/compare_panel.cpp" line="470"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Maior diferença por canal: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="432"/>
+        <location filename="../app/window/compare_panel.cpp" line="471"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Diferença média por canal, nos pixels que diferem: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="434"/>
+        <location filename="../app/window/compare_panel.cpp" line="473"/>
         <source>Pixels covered: %1 by both, %2 only by ours (our depth buffer), %3 only by theirs (not the background).</source>
         <translation>Pixels cobertos: %1 por ambas, %2 só pela nossa (o nosso buffer de profundidade), %3 só pela deles (não o fundo).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="454"/>
+        <location filename="../app/window/compare_panel.cpp" line="493"/>
         <source>Diagnosis, each mistake applied before the next is ranked:</source>
         <translation>Diagnóstico, cada erro aplicado antes de classificar o seguinte:</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="460"/>
+        <location filename="../app/window/compare_panel.cpp" line="499"/>
         <source>Removes %1% of the difference; makes %2 differing pixels match.</source>
         <translation>Remove %1% da diferença; faz %2 pixels diferentes coincidirem.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="441"/>
+        <location filename="../app/window/compare_panel.cpp" line="480"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>A cena mudou desde esta comparação: Comparar de novo compara a imagem deles com a cena mostrada agora.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="171"/>
+        <location filename="../app/window/compare_panel.cpp" line="175"/>
         <source>Render Ours with the Fitted Lighting</source>
         <translation>Renderizar a Nossa com a Iluminação Ajustada</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="174"/>
+        <location filename="../app/window/compare_panel.cpp" line="178"/>
         <source>Set the light&apos;s position, Ia, Il, kd, ks and n to the values fitted to their colours (one edit, undoable), and render ours with them</source>
         <translation>Pôr a posição da luz, Ia, Il, kd, ks e n nos valores ajustados às cores deles (uma edição, que pode ser desfeita), e renderizar a nossa com eles</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="373"/>
+        <location filename="../app/window/compare_panel.cpp" line="412"/>
         <source>light x (view)</source>
         <translation>luz x (vista)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="373"/>
+        <location filename="../app/window/compare_panel.cpp" line="412"/>
         <source>light y (view)</source>
         <translation>luz y (vista)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="374"/>
+        <location filename="../app/window/compare_panel.cpp" line="413"/>
         <source>light z (view)</source>
         <translation>luz z (vista)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="374"/>
+        <location filename="../app/window/compare_panel.cpp" line="413"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="375"/>
+        <location filename="../app/window/compare_panel.cpp" line="414"/>
         <source>ambient Ia*ka R</source>
         <translation>ambiente Ia*ka R</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="375"/>
+        <location filename="../app/window/compare_panel.cpp" line="414"/>
         <source>ambient Ia*ka G</source>
         <translation>ambiente Ia*ka G</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="376"/>
+        <location filename="../app/window/compare_panel.cpp" line="415"/>
         <source>ambient Ia*ka B</source>
         <translation>ambiente Ia*ka B</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="376"/>
+        <location filename="../app/window/compare_panel.cpp" line="415"/>
         <source>diffuse Il*Od*kd R</source>
         <translation>difuso Il*Od*kd R</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="377"/>
+        <location filename="../app/window/compare_panel.cpp" line="416"/>
         <source>diffuse Il*Od*kd G</source>
         <translation>difuso Il*Od*kd G</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="377"/>
+        <location filename="../app/window/compare_panel.cpp" line="416"/>
         <source>diffuse Il*Od*kd B</source>
         <translation>difuso Il*Od*kd B</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="378"/>
+        <location filename="../app/window/compare_panel.cpp" line="417"/>
         <source>specular Il*ks R</source>
         <translation>especular Il*ks R</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="378"/>
+        <location filename="../app/window/compare_panel.cpp" line="417"/>
         <source>specular Il*ks G</source>
         <translation>especular Il*ks G</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="379"/>
+        <location filename="../app/window/compare_panel.cpp" line="418"/>
         <source>specular Il*ks B</source>
         <translation>especular Il*ks B</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="448"/>
+        <location filename="../app/window/compare_panel.cpp" line="487"/>
         <source>The images are the same.</source>
         <translation>As imagens são iguais.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="450"/>
+        <location filename="../app/window/compare_panel.cpp" line="489"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnóstico: nenhum dos erros que o RasterLab conhece explica estas diferenças.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="465"/>
+        <location filename="../app/window/compare_panel.cpp" line="504"/>
         <source>Evidence: %1</source>
         <translation>Evidência: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="466"/>
+        <location filename="../app/window/compare_panel.cpp" line="505"/>
         <source>Check: %1</source>
         <translation>Verifique: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="468"/>
+        <location filename="../app/window/compare_panel.cpp" line="507"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>Em (%1, %2): nossa %3, deles %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="478"/>
+        <location filename="../app/window/compare_panel.cpp" line="517"/>
         <source>Unexplained: %1% of the difference; %2 pixels still differ with every mistake above applied.</source>
         <translation>Sem explicação: %1% da diferença; %2 pixels ainda diferem com todos os erros acima aplicados.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="486"/>
+        <location filename="../app/window/compare_panel.cpp" line="525"/>
         <source>None of the known mistakes explains most of this difference.</source>
         <translation>Nenhum dos erros conhecidos explica a maior parte desta diferença.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="491"/>
+        <location filename="../app/window/compare_panel.cpp" line="530"/>
         <source>Lighting fitted to their colours</source>
         <translation>Iluminação ajustada às cores deles</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="492"/>
+        <location filename="../app/window/compare_panel.cpp" line="531"/>
         <source>%1 pixels inside triangles: rms %2 with ours, %3 fitted.</source>
         <translation>%1 pixels dentro de triângulos: rms %2 com a nossa, %3 ajustada.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="499"/>
+        <location filename="../app/window/compare_panel.cpp" line="538"/>
         <source>%1: theirs %2 ± %3, ours %4</source>
         <translation>%1: deles %2 ± %3, nosso %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="517"/>
+        <location filename="../app/window/compare_panel.cpp" line="556"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Escolha um pixel (aqui ou na imagem) para ver a cor deles ao lado da nossa.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="525"/>
+        <location filename="../app/window/compare_panel.cpp" line="564"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): deles %3, nossa %4.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="532"/>
+        <location filename="../app/window/compare_panel.cpp" line="571"/>
         <source>minus %1 in %2</source>
         <translation>menos %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="533"/>
+        <location filename="../app/window/compare_panel.cpp" line="572"/>
         <source>plus %1 in %2</source>
         <translation>mais %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="536"/>
+        <location filename="../app/window/compare_panel.cpp" line="575"/>
         <source>Their colour is ours.</source>
         <translation>A cor deles é a nossa.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="540"/>
+        <location filename="../app/window/compare_panel.cpp" line="579"/>
         <source>Their colour is ours %1.</source>
         <translation>A cor deles é a nossa %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="542"/>
+        <location filename="../app/window/compare_panel.cpp" line="581"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>A cena mudou desde a comparação: a iluminação mostrada agora não é a comparada.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="554"/>
+        <location filename="../app/window/compare_panel.cpp" line="593"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>Nenhum triângulo nosso cobre este pixel: é o fundo.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="558"/>
+        <location filename="../app/window/compare_panel.cpp" line="597"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>A iluminação deste pixel não é conhecida.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="560"/>
+        <location filename="../app/window/compare_panel.cpp" line="599"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>Os termos que teriam de mudar são calculados para o modelo de iluminação do curso em sombreamento flat ou Phong; este pixel é sombreado de outro modo (o inspetor de pixel mostra como).</translation>
     </message>

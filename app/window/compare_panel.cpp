@@ -2,7 +2,9 @@
 
 #include <QApplication>
 #include <QComboBox>
+#include <QEventLoop>
 #include <QFileInfo>
+#include <QFutureWatcher>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMouseEvent>
@@ -11,10 +13,12 @@
 #include <QSpinBox>
 #include <QTextDocument>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 
 #include "app/compare/compare_image.h"
 #include "app/image_io.h"
@@ -233,6 +237,56 @@ ComparePanel::ComparePanel(Inspection* inspection, QWidget* parent)
     connect(m_inspection, &Inspection::replayChanged, this, &ComparePanel::refreshPixel);
 }
 
+namespace {
+
+// What the worker hands back: our frame, their image as compared, and the diagnosis; or the
+// problem that stopped it.
+struct CompareOutcome {
+    QString problem, provenance;
+    std::optional<rl::OurFrame> ours;
+    rl::Rgba8Image theirs;
+    std::optional<CompareImage::Diagnosis> diagnosis;
+};
+
+CompareOutcome compareOnWorker(const std::shared_ptr<const rl::Scene>& scene, const QString& path,
+                               rl::Rgba8Image theirs, const CompareImage::Format& format,
+                               const QString& commandFile, int imageIndex) {
+    CompareOutcome out;
+    out.provenance = ComparePanel::tr("Their image: %1.").arg(format.describe());
+    auto ours = rl::renderOurFrame(scene);
+    if (!ours) {
+        out.problem = QString::fromStdString(ours.error().message);
+        return out;
+    }
+    // A screenshot with a window border: the frame found inside it is compared.
+    const int theirWidth = theirs.width, theirHeight = theirs.height;
+    if (const auto at = CompareImage::cropToFrame(ours->image, theirs))
+        out.provenance +=
+            QLatin1Char(' ') +
+            ComparePanel::tr("Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.")
+                .arg(ours->image.width)
+                .arg(ours->image.height)
+                .arg(at->x)
+                .arg(at->y)
+                .arg(theirWidth)
+                .arg(theirHeight);
+    if (!format.alpha) CompareImage::takeAlpha(ours->image, theirs);
+    out.problem = CompareImage::sizeMismatch(path, theirs, ours->image);
+    if (!out.problem.isEmpty()) return out;
+    auto diagnosis = CompareImage::diagnose(ours.value(), theirs, format, commandFile,
+                                            static_cast<std::size_t>(imageIndex));
+    if (!diagnosis) {
+        out.problem = QString::fromStdString(diagnosis.error().message);
+        return out;
+    }
+    out.ours = std::move(ours.value());
+    out.theirs = std::move(theirs);
+    out.diagnosis = std::move(diagnosis.value());
+    return out;
+}
+
+}  // namespace
+
 QString ComparePanel::compare(const QString& path) {
     const std::shared_ptr<const rl::FrameTrace>& frame = m_inspection->frame();
     if (!frame || !frame->scene) return tr("There is no render to compare with yet.");
@@ -240,47 +294,32 @@ QString ComparePanel::compare(const QString& path) {
     CompareImage::Format format;
     if (QString problem = CompareImage::read(path, theirs, &format); !problem.isEmpty())
         return problem;
+    const auto [commandFile, imageIndex] =
+        m_commandFile ? m_commandFile() : std::pair<QString, int>();
+    const std::shared_ptr<const rl::Scene> scene = frame->scene;
+    // Our render and the diagnosis take seconds on a large image: they run on a worker, and
+    // the window keeps painting meanwhile; its input waits until they end.
     QApplication::setOverrideCursor(Qt::WaitCursor);
-    auto ours = rl::renderOurFrame(frame->scene);
-    QString problem;
-    QString provenance = tr("Their image: %1.").arg(format.describe());
-    if (ours) {
-        // A screenshot with a window border: the frame found inside it is compared.
-        const int theirWidth = theirs.width, theirHeight = theirs.height;
-        if (const auto at = CompareImage::cropToFrame(ours->image, theirs))
-            provenance += QLatin1Char(' ') +
-                          tr("Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.")
-                              .arg(ours->image.width)
-                              .arg(ours->image.height)
-                              .arg(at->x)
-                              .arg(at->y)
-                              .arg(theirWidth)
-                              .arg(theirHeight);
-        if (!format.alpha) CompareImage::takeAlpha(ours->image, theirs);
-    }
-    if (!ours) {
-        problem = QString::fromStdString(ours.error().message);
-    } else if (problem = CompareImage::sizeMismatch(path, theirs, ours->image); problem.isEmpty()) {
-        const auto [commandFile, imageIndex] =
-            m_commandFile ? m_commandFile() : std::pair<QString, int>();
-        auto comparison = CompareImage::diagnose(ours.value(), theirs, format, commandFile,
-                                                 static_cast<std::size_t>(imageIndex));
-        if (!comparison) {
-            problem = QString::fromStdString(comparison.error().message);
-        } else {
-            m_path = path;
-            m_provenance = provenance;
-            m_scene = frame->scene;
-            m_ours = std::make_unique<rl::OurFrame>(std::move(ours.value()));
-            m_theirs = std::move(theirs);
-            m_comparison = std::make_unique<rl::ImageComparison>(std::move(comparison->comparison));
-            m_fit = std::move(comparison->fit);
-            m_theirImage = toQImage(m_theirs);
-            m_ourImage = toQImage(m_ours->image);
-        }
-    }
+    QFutureWatcher<CompareOutcome> watcher;
+    QEventLoop wait;
+    connect(&watcher, &QFutureWatcherBase::finished, &wait, &QEventLoop::quit);
+    watcher.setFuture(QtConcurrent::run(
+        [scene, path, theirs = std::move(theirs), format, commandFile, imageIndex]() mutable {
+            return compareOnWorker(scene, path, std::move(theirs), format, commandFile, imageIndex);
+        }));
+    if (!watcher.isFinished()) wait.exec(QEventLoop::ExcludeUserInputEvents);
+    CompareOutcome outcome = watcher.future().takeResult();
     QApplication::restoreOverrideCursor();
-    if (!problem.isEmpty()) return problem;
+    if (!outcome.problem.isEmpty()) return outcome.problem;
+    m_path = path;
+    m_provenance = outcome.provenance;
+    m_scene = scene;
+    m_ours = std::make_unique<rl::OurFrame>(std::move(*outcome.ours));
+    m_theirs = std::move(outcome.theirs);
+    m_comparison = std::make_unique<rl::ImageComparison>(std::move(outcome.diagnosis->comparison));
+    m_fit = std::move(outcome.diagnosis->fit);
+    m_theirImage = toQImage(m_theirs);
+    m_ourImage = toQImage(m_ours->image);
     refreshDifference();
     showImages();
     refreshTexts();
