@@ -412,6 +412,27 @@ void TestCompareStudents::fitsWhatTheirLightingUsed() {
         QVERIFY(!values["n"]["differs"].toBool());
     }
     {
+        // Their light's view x and y swapped: fitted at (3.508, -6, ...), ours (-6, 3.508).
+        COMPARE_STUDENT(result, QStringLiteral("goblet"), QStringList{"--light-swap-xy"});
+        const QJsonObject fit = result[QStringLiteral("lightingFit")].toObject();
+        QVERIFY2(fit[QStringLiteral("fitted")].toBool(), qPrintable(run.out));
+        QVERIFY(fit[QStringLiteral("matches")].isUndefined() ||
+                fit[QStringLiteral("matches")].isNull());
+        QVERIFY2(fit[QStringLiteral("findings")].toArray().contains(
+                     QStringLiteral("the fitted light is ours with x and y swapped")),
+                 qPrintable(run.out));
+        const auto values = fitOf(result);
+        QVERIFY(std::abs(values["light x (view)"]["theirs"].toDouble() -
+                         values["light y (view)"]["ours"].toDouble()) < 0.1);
+        QVERIFY(std::abs(values["light y (view)"]["theirs"].toDouble() -
+                         values["light x (view)"]["ours"].toDouble()) < 0.1);
+        const QJsonArray diagnosis = result[QStringLiteral("diagnosis")].toArray();
+        QVERIFY(!diagnosis.isEmpty());
+        QCOMPARE(diagnosis.first()[QStringLiteral("mistake")].toString(),
+                 QStringLiteral("fitted-lighting"));
+        QVERIFY(result[QStringLiteral("unexplained")][QStringLiteral("share")].toDouble() < 0.01);
+    }
+    {
         // Their own image (one pixel one unit off, where double and float round apart): the
         // fit finds every value as ours.
         COMPARE_STUDENT(result, QStringLiteral("goblet"), QStringList{});

@@ -2056,421 +2056,426 @@
     </message>
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
+        <source>the fitted light is ours with %1 and %2 swapped</source>
+        <translation>the fitted light is ours with %1 and %2 swapped</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
         <source>the fitted n is half of ours: n halved</source>
         <translation>the fitted n is half of ours: n halved</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
         <source>the command file read again with that command so gives their pixels</source>
         <translation>the command file read again with that command so gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
         <source>line %1: &apos;%2&apos; ignored</source>
         <translation>line %1: &apos;%2&apos; ignored</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
         <source>line %1: &apos;%2&apos; multiplied on the other side (M = A M instead of M A)</source>
         <translation>line %1: &apos;%2&apos; multiplied on the other side (M = A M instead of M A)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="610"/>
         <source>line %1: &apos;%2&apos; read column by column (the matrix transposed)</source>
         <translation>line %1: &apos;%2&apos; read column by column (the matrix transposed)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="610"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
         <source>line %1: &apos;%2&apos; with its angle taken as radians</source>
         <translation>line %1: &apos;%2&apos; with its angle taken as radians</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
         <source>line %1: &apos;%2&apos; with s = f x up not normalised (the image stretched across)</source>
         <translation>line %1: &apos;%2&apos; with s = f x up not normalised (the image stretched across)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
         <source>check that your program reads &apos;%1&apos; and applies it</source>
         <translation>check that your program reads &apos;%1&apos; and applies it</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
         <source>seed 001: a transform multiplies the model/view on the right, M = M A</source>
         <translation>seed 001: a transform multiplies the model/view on the right, M = M A</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
         <source>seed 001 writes a matrix row by row: the first four numbers are its first row</source>
         <translation>seed 001 writes a matrix row by row: the first four numbers are its first row</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
         <source>seed 001&apos;s angles are in degrees: convert them before sin and cos</source>
         <translation>seed 001&apos;s angles are in degrees: convert them before sin and cos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
         <source>lookat: normalise s = f x up before it goes into the matrix</source>
         <translation>lookat: normalise s = f x up before it goes into the matrix</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
         <source>the camera&apos;s N not normalised before V - (V.N)N, nor after</source>
         <translation>the camera&apos;s N not normalised before V - (V.N)N, nor after</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
         <source>the camera&apos;s U = V x N instead of N x V (x runs the other way)</source>
         <translation>the camera&apos;s U = V x N instead of N x V (x runs the other way)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
         <source>the scene rendered again in view coordinates made with that basis gives their pixels</source>
         <translation>the scene rendered again in view coordinates made with that basis gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
         <source>seed 000&apos;s Gram-Schmidt: normalise N first, then V - (V.N)N is V&apos;s part across N</source>
         <translation>seed 000&apos;s Gram-Schmidt: normalise N first, then V - (V.N)N is V&apos;s part across N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
         <source>seed 000: U = N x V, so that U, V, N is right-handed</source>
         <translation>seed 000: U = N x V, so that U, V, N is right-handed</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
         <source>the vertex normals left at the length of their sums (not normalised)</source>
         <translation>the vertex normals left at the length of their sums (not normalised)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
         <source>the triangle normals summed at their length (area-weighted) instead of normalised first</source>
         <translation>the triangle normals summed at their length (area-weighted) instead of normalised first</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
         <source>seed 000: each vertex normal is the normalised sum of its triangles&apos; normals</source>
         <translation>seed 000: each vertex normal is the normalised sum of its triangles&apos; normals</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
         <source>normalise each triangle&apos;s normal before adding it to its vertices</source>
         <translation>normalise each triangle&apos;s normal before adding it to its vertices</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
         <source>the light not taken to view coordinates: its world position used as Pl_view</source>
         <translation>the light not taken to view coordinates: its world position used as Pl_view</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
         <source>the light taken to view coordinates without subtracting C: [I] Pl instead of [I](Pl - C)</source>
         <translation>the light taken to view coordinates without subtracting C: [I] Pl instead of [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
         <source>V = P&apos; instead of -P&apos; (L = P&apos; - Pl gives the same image)</source>
         <translation>V = P&apos; instead of -P&apos; (L = P&apos; - Pl gives the same image)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
         <source>the ambient term Ia instead of Ia*ka</source>
         <translation>the ambient term Ia instead of Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
         <source>each Phong term truncated to a whole byte before the sum</source>
         <translation>each Phong term truncated to a whole byte before the sum</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
         <source>V.N, N.L and R.V tested against %1 instead of 0</source>
         <translation>V.N, N.L and R.V tested against %1 instead of 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="633"/>
         <source>the depth test reversed: the farther fragment wins (&gt; against a buffer cleared to -infinity, or to 0)</source>
         <translation>the depth test reversed: the farther fragment wins (&gt; against a buffer cleared to -infinity, or to 0)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="633"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
         <source>every covered pixel&apos;s colour off by %1 (a constant offset)</source>
         <translation>every covered pixel&apos;s colour off by %1 (a constant offset)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
         <source>every colour multiplied by %1 (a constant scale)</source>
         <translation>every colour multiplied by %1 (a constant scale)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
         <source>the scene rendered again with the light where that transform puts it gives their pixels</source>
         <translation>the scene rendered again with the light where that transform puts it gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
         <source>the scene rendered again with the farther fragment winning gives their pixels</source>
         <translation>the scene rendered again with the farther fragment winning gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
         <source>our bytes moved by that constant give their pixels</source>
         <translation>our bytes moved by that constant give their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
         <source>our colours multiplied by that constant give their pixels</source>
         <translation>our colours multiplied by that constant give their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
         <source>seed 000: the light goes to view coordinates as the vertices do, Pl_view = [I](Pl - C)</source>
         <translation>seed 000: the light goes to view coordinates as the vertices do, Pl_view = [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
         <source>seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis</source>
         <translation>seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
         <source>V points from the surface to the camera: V = -P&apos; in view coordinates, and L = Pl - P&apos;</source>
         <translation>V points from the surface to the camera: V = -P&apos; in view coordinates, and L = Pl - P&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="643"/>
         <source>seed 000&apos;s ambient term is Ia*ka</source>
         <translation>seed 000&apos;s ambient term is Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="643"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
         <source>add the terms as real numbers and make a byte once, at the end</source>
         <translation>add the terms as real numbers and make a byte once, at the end</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
         <source>seed 000&apos;s special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</source>
         <translation>seed 000&apos;s special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
         <source>the z-buffer starts at +infinity and a fragment is written when its z is smaller</source>
         <translation>the z-buffer starts at +infinity and a fragment is written when its z is smaller</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
         <source>look for a constant added to every colour, or bytes made with an offset</source>
         <translation>look for a constant added to every colour, or bytes made with an offset</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="648"/>
         <source>look for a factor on every colour: an intensity scaled, or another colour scale</source>
         <translation>look for a factor on every colour: an intensity scaled, or another colour scale</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="648"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
         <source>%1; no pixel that matches now would change</source>
         <translation>%1; no pixel that matches now would change</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
         <source>%2; %1 pixel that matches now would differ</source>
         <translation>%2; %1 pixel that matches now would differ</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="651"/>
         <source>%2; %1 pixels that match now would differ</source>
         <translation>%2; %1 pixels that match now would differ</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="652"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="653"/>
         <source>cannot read the texture %1: %2</source>
         <translation>cannot read the texture %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="654"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="655"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="659"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
         <source>cannot open: %1</source>
         <translation>cannot open: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="661"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>the file has %1 MiB, more than the %2 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="662"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="663"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>the file has more than the %1 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="664"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
         <source>not enough memory to read this file</source>
         <translation>not enough memory to read this file</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="666"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="668"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="669"/>
         <source>the object is not edited, so not saved</source>
         <translation>the object is not edited, so not saved</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="669"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="670"/>
         <source>cannot write into the built-in resources</source>
         <translation>cannot write into the built-in resources</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="670"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>the camera was not saved, as it would not load again: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="672"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>not saved: the text written does not read back as the same values</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="673"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="674"/>
         <source>cannot write the file: %1</source>
         <translation>cannot write the file: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="674"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="675"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>only %1 of %2 bytes could be written (is the disk full?)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="675"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="676"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>cannot write the file (it is left as it was): %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="677"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="678"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[rows, fragments], two whole numbers</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="678"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="679"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[width, height], whole numbers from %1 to %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="679"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="680"/>
         <source>a list</source>
         <translation>a list</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="680"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="681"/>
         <source>a list of %1 numbers</source>
         <translation>a list of %1 numbers</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="681"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="682"/>
         <source>a list of 1 to 8 lights</source>
         <translation>a list of 1 to 8 lights</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="682"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="683"/>
         <source>a list of dock names</source>
         <translation>a list of dock names</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="683"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
         <source>a number</source>
         <translation>a number</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>a positive number or &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="686"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>a positive number or &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="686"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="687"/>
         <source>a whole number from %1</source>
         <translation>a whole number from %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="687"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="688"/>
         <source>an object</source>
         <translation>an object</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="688"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="689"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>expected %1 for &quot;%2&quot;, found %3</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="689"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="690"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="691"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="692"/>
         <source>not a lesson file: %1</source>
         <translation>not a lesson file: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="692"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="693"/>
         <source>nothing</source>
         <translation>nothing</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="693"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="694"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="694"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="695"/>
         <source>one of %1</source>
         <translation>one of %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="695"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="696"/>
         <source>text in quotes</source>
         <translation>text in quotes</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="696"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="697"/>
         <source>the text &apos;%1&apos;</source>
         <translation>the text &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="697"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="698"/>
         <source>true or false</source>
         <translation>true or false</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="698"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="699"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>unknown key &quot;%1&quot; ignored (known here: %2)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="733"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="734"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="739"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="740"/>
         <source>%1: warning: %2</source>
         <translation>%1: warning: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="740"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="741"/>
         <source>%1: note: %2</source>
         <translation>%1: note: %2</translation>
     </message>

@@ -2056,421 +2056,426 @@
     </message>
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
+        <source>the fitted light is ours with %1 and %2 swapped</source>
+        <translation>a luz ajustada é a nossa com %1 e %2 trocados</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
         <source>the fitted n is half of ours: n halved</source>
         <translation>o n ajustado é metade do nosso: n pela metade</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
         <source>the command file read again with that command so gives their pixels</source>
         <translation>o arquivo de comandos lido de novo com esse comando assim dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
         <source>line %1: &apos;%2&apos; ignored</source>
         <translation>linha %1: &apos;%2&apos; ignorado</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
         <source>line %1: &apos;%2&apos; multiplied on the other side (M = A M instead of M A)</source>
         <translation>linha %1: &apos;%2&apos; multiplicado do outro lado (M = A M em vez de M A)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="610"/>
         <source>line %1: &apos;%2&apos; read column by column (the matrix transposed)</source>
         <translation>linha %1: &apos;%2&apos; lido coluna por coluna (a matriz transposta)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="610"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
         <source>line %1: &apos;%2&apos; with its angle taken as radians</source>
         <translation>linha %1: &apos;%2&apos; com o ângulo tomado em radianos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
         <source>line %1: &apos;%2&apos; with s = f x up not normalised (the image stretched across)</source>
         <translation>linha %1: &apos;%2&apos; com s = f x up não normalizado (a imagem esticada na horizontal)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
         <source>check that your program reads &apos;%1&apos; and applies it</source>
         <translation>verifique se o seu programa lê &apos;%1&apos; e o aplica</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
         <source>seed 001: a transform multiplies the model/view on the right, M = M A</source>
         <translation>semente 001: uma transformação multiplica a model/view pela direita, M = M A</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
         <source>seed 001 writes a matrix row by row: the first four numbers are its first row</source>
         <translation>a semente 001 escreve uma matriz linha por linha: os quatro primeiros números são a primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
         <source>seed 001&apos;s angles are in degrees: convert them before sin and cos</source>
         <translation>os ângulos da semente 001 estão em graus: converta-os antes de sin e cos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
         <source>lookat: normalise s = f x up before it goes into the matrix</source>
         <translation>lookat: normalize s = f x up antes de pô-lo na matriz</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
         <source>the camera&apos;s N not normalised before V - (V.N)N, nor after</source>
         <translation>o N da câmera não normalizado antes de V - (V.N)N, nem depois</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
         <source>the camera&apos;s U = V x N instead of N x V (x runs the other way)</source>
         <translation>o U da câmera = V x N em vez de N x V (x corre no outro sentido)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
         <source>the scene rendered again in view coordinates made with that basis gives their pixels</source>
         <translation>a cena renderizada de novo em coordenadas de vista feitas com essa base dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
         <source>seed 000&apos;s Gram-Schmidt: normalise N first, then V - (V.N)N is V&apos;s part across N</source>
         <translation>o Gram-Schmidt da semente 000: normalize N primeiro, então V - (V.N)N é a parte de V transversal a N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
         <source>seed 000: U = N x V, so that U, V, N is right-handed</source>
         <translation>semente 000: U = N x V, para que U, V, N seja uma base dextrógira</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
         <source>the vertex normals left at the length of their sums (not normalised)</source>
         <translation>as normais dos vértices deixadas com o comprimento das suas somas (não normalizadas)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
         <source>the triangle normals summed at their length (area-weighted) instead of normalised first</source>
         <translation>as normais dos triângulos somadas com o seu comprimento (pesadas pela área) em vez de normalizadas antes</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
         <source>seed 000: each vertex normal is the normalised sum of its triangles&apos; normals</source>
         <translation>semente 000: a normal de cada vértice é a soma normalizada das normais dos seus triângulos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
         <source>normalise each triangle&apos;s normal before adding it to its vertices</source>
         <translation>normalize a normal de cada triângulo antes de somá-la aos seus vértices</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
         <source>the light not taken to view coordinates: its world position used as Pl_view</source>
         <translation>a luz não levada a coordenadas de vista: sua posição no mundo usada como Pl_vista</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
         <source>the light taken to view coordinates without subtracting C: [I] Pl instead of [I](Pl - C)</source>
         <translation>a luz levada a coordenadas de vista sem subtrair C: [I] Pl em vez de [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
         <source>V = P&apos; instead of -P&apos; (L = P&apos; - Pl gives the same image)</source>
         <translation>V = P&apos; em vez de -P&apos; (L = P&apos; - Pl dá a mesma imagem)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
         <source>the ambient term Ia instead of Ia*ka</source>
         <translation>o termo ambiente Ia em vez de Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
         <source>each Phong term truncated to a whole byte before the sum</source>
         <translation>cada termo de Phong truncado para um byte inteiro antes da soma</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
         <source>V.N, N.L and R.V tested against %1 instead of 0</source>
         <translation>V.N, N.L e R.V testados contra %1 em vez de 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="633"/>
         <source>the depth test reversed: the farther fragment wins (&gt; against a buffer cleared to -infinity, or to 0)</source>
         <translation>o teste de profundidade invertido: o fragmento mais distante vence (&gt; contra um buffer iniciado com -infinito, ou com 0)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="633"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
         <source>every covered pixel&apos;s colour off by %1 (a constant offset)</source>
         <translation>a cor de cada pixel coberto deslocada de %1 (um deslocamento constante)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
         <source>every colour multiplied by %1 (a constant scale)</source>
         <translation>cada cor multiplicada por %1 (uma escala constante)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
         <source>the scene rendered again with the light where that transform puts it gives their pixels</source>
         <translation>a cena renderizada de novo com a luz onde essa transformação a coloca dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
         <source>the scene rendered again with the farther fragment winning gives their pixels</source>
         <translation>a cena renderizada de novo com o fragmento mais distante vencendo dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
         <source>our bytes moved by that constant give their pixels</source>
         <translation>os nossos bytes deslocados dessa constante dão os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
         <source>our colours multiplied by that constant give their pixels</source>
         <translation>as nossas cores multiplicadas por essa constante dão os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
         <source>seed 000: the light goes to view coordinates as the vertices do, Pl_view = [I](Pl - C)</source>
         <translation>semente 000: a luz vai para coordenadas de vista como os vértices, Pl_vista = [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
         <source>seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis</source>
         <translation>semente 000: Pl_vista = [I](Pl - C): subtraia C antes da mudança de base</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
         <source>V points from the surface to the camera: V = -P&apos; in view coordinates, and L = Pl - P&apos;</source>
         <translation>V aponta da superfície para a câmera: V = -P&apos; em coordenadas de vista, e L = Pl - P&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="643"/>
         <source>seed 000&apos;s ambient term is Ia*ka</source>
         <translation>o termo ambiente da semente 000 é Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="643"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
         <source>add the terms as real numbers and make a byte once, at the end</source>
         <translation>some os termos como números reais e faça um byte uma vez, no fim</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
         <source>seed 000&apos;s special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</source>
         <translation>os casos especiais da semente 000 testam contra 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
         <source>the z-buffer starts at +infinity and a fragment is written when its z is smaller</source>
         <translation>o z-buffer começa em +infinito e um fragmento é escrito quando seu z é menor</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
         <source>look for a constant added to every colour, or bytes made with an offset</source>
         <translation>procure uma constante somada a cada cor, ou bytes feitos com um deslocamento</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="648"/>
         <source>look for a factor on every colour: an intensity scaled, or another colour scale</source>
         <translation>procure um fator em cada cor: uma intensidade escalada, ou outra escala de cor</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="648"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
         <source>%1; no pixel that matches now would change</source>
         <translation>%1; nenhum pixel que coincide agora mudaria</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
         <source>%2; %1 pixel that matches now would differ</source>
         <translation>%2; %1 pixel que coincide agora passaria a diferir</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="651"/>
         <source>%2; %1 pixels that match now would differ</source>
         <translation>%2; %1 pixels que coincidem agora passariam a diferir</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="652"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="653"/>
         <source>cannot read the texture %1: %2</source>
         <translation>não é possível ler a textura %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="654"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="655"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V está a %1 graus da reta de N: Gram-Schmidt guarda só isso de V, e a base é ortonormal só até %2, menos que a precisão de um float; escolha um V mais longe de N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="659"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
         <source>cannot open: %1</source>
         <translation>não é possível abrir: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="661"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>o arquivo tem %1 MiB, mais que os %2 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="662"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="663"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>o arquivo tem mais que os %1 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="664"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
         <source>not enough memory to read this file</source>
         <translation>não há memória suficiente para ler este arquivo</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="666"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>os arquivos da cena embutida não podem ser gravados: salve-a num arquivo seu (Salvar como)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="668"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="669"/>
         <source>the object is not edited, so not saved</source>
         <translation>o objeto não é editado, então não é salvo</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="669"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="670"/>
         <source>cannot write into the built-in resources</source>
         <translation>não é possível gravar nos recursos embutidos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="670"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>a câmera não foi salva, pois não carregaria de novo: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="672"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>não salvo: o texto gravado não é lido de volta com os mesmos valores</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="673"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="674"/>
         <source>cannot write the file: %1</source>
         <translation>não é possível gravar o arquivo: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="674"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="675"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>só %1 de %2 bytes puderam ser gravados (o disco está cheio?)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="675"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="676"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>não é possível gravar o arquivo (ele fica como estava): %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="677"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="678"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[linhas, fragmentos], dois números inteiros</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="678"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="679"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[largura, altura], números inteiros de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="679"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="680"/>
         <source>a list</source>
         <translation>uma lista</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="680"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="681"/>
         <source>a list of %1 numbers</source>
         <translation>uma lista de %1 números</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="681"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="682"/>
         <source>a list of 1 to 8 lights</source>
         <translation>uma lista de 1 a 8 luzes</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="682"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="683"/>
         <source>a list of dock names</source>
         <translation>uma lista de nomes de painéis</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="683"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
         <source>a number</source>
         <translation>um número</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>um número positivo ou &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="686"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>um número positivo ou &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="686"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="687"/>
         <source>a whole number from %1</source>
         <translation>um número inteiro a partir de %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="687"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="688"/>
         <source>an object</source>
         <translation>um objeto</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="688"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="689"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>esperava %1 para &quot;%2&quot;, encontrou %3</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="689"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="690"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>esperava um arquivo de aula: um objeto JSON com &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="691"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="692"/>
         <source>not a lesson file: %1</source>
         <translation>não é um arquivo de aula: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="692"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="693"/>
         <source>nothing</source>
         <translation>nada</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="693"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="694"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="694"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="695"/>
         <source>one of %1</source>
         <translation>um de %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="695"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="696"/>
         <source>text in quotes</source>
         <translation>um texto entre aspas</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="696"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="697"/>
         <source>the text &apos;%1&apos;</source>
         <translation>o texto &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="697"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="698"/>
         <source>true or false</source>
         <translation>true ou false</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="698"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="699"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>ignorou a chave desconhecida &quot;%1&quot; (as conhecidas aqui: %2)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="733"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="734"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="739"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="740"/>
         <source>%1: warning: %2</source>
         <translation>%1: aviso: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="740"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="741"/>
         <source>%1: note: %2</source>
         <translation>%1: nota: %2</translation>
     </message>

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <utility>
 
 #include "pipeline/stages/camera_basis.h"
 #include "pipeline/stages/shading.h"
@@ -283,8 +284,11 @@ void addValues(LightingFit& out, const std::vector<Sample>& used, const Point& b
                 2.0 / toByte);
 }
 
+// The pairs of coordinates a light read in the wrong order may have swapped.
+constexpr std::array<std::pair<int, int>, 3> kSwaps{{{0, 1}, {0, 2}, {1, 2}}};
+
 // What the fitted light and n match: the light at its world position, at [I] Pl, ours with a
-// coordinate negated; n halved.
+// coordinate negated or two swapped; n halved.
 void nameMatches(LightingFit& out, const dvec3& inWorld, const dvec3& withoutC, double scale) {
     const double near = std::max(3.0 * out.values[0].uncertainty, 0.05 * scale);
     if (glm::distance(out.lightTheirs, out.lightOurs) > near) {
@@ -302,6 +306,13 @@ void nameMatches(LightingFit& out, const dvec3& inWorld, const dvec3& withoutC, 
                 if (glm::distance(out.lightTheirs, negated) <= near)
                     out.findings.push_back("the fitted light is ours with %1 negated"_msg(
                         std::string(1, "xyz"[k])));
+            }
+            for (const auto& [a, b] : kSwaps) {
+                dvec3 swapped = out.lightOurs;
+                std::swap(swapped[a], swapped[b]);
+                if (glm::distance(out.lightTheirs, swapped) <= near)
+                    out.findings.push_back("the fitted light is ours with %1 and %2 swapped"_msg(
+                        std::string(1, "xyz"[a]), std::string(1, "xyz"[b])));
             }
         }
     }

@@ -602,6 +602,7 @@ const char* const kCatalogue[] = {
     QT_TRANSLATE_NOOP("Messages", "the fitted light is at the light's world position: it was not taken to view coordinates"),
     QT_TRANSLATE_NOOP("Messages", "the fitted light is at [I] Pl: C was not subtracted"),
     QT_TRANSLATE_NOOP("Messages", "the fitted light is ours with %1 negated"),
+    QT_TRANSLATE_NOOP("Messages", "the fitted light is ours with %1 and %2 swapped"),
     QT_TRANSLATE_NOOP("Messages", "the fitted n is half of ours: n halved"),
     QT_TRANSLATE_NOOP("Messages", "the command file read again with that command so gives their pixels"),
     QT_TRANSLATE_NOOP("Messages", "line %1: '%2' ignored"),

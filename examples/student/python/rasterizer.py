@@ -167,7 +167,8 @@ def light_in_view(I, Pl, C, opts):
         return Pl
     if opts.light_no_minus_c:
         return (dot(I[0], Pl), dot(I[1], Pl), dot(I[2], Pl))
-    return to_view(I, Pl, C)
+    x, y, z = to_view(I, Pl, C)
+    return (y, x, z) if opts.light_swap_xy else (x, y, z)
 
 
 # ---------------------------------------------------------------------------
@@ -507,6 +508,7 @@ MISTAKES = [
     ("--light-in-world", "the light's Pl used as it is, not taken to view"
      " coordinates"),
     ("--light-no-minus-c", "Pl_vista = [I]*Pl, without subtracting C"),
+    ("--light-swap-xy", "Pl_vista's x and y swapped (read in the wrong order)"),
     ("--v-equals-p", "V = P' instead of -P'"),
     ("--l-reversed", "L = P' - Pl instead of Pl - P'"),
     ("--no-normalize-n-before-gram-schmidt", "N not normalised before"
