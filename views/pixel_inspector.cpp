@@ -473,7 +473,13 @@ QString PixelInspector::theirColourText() const {
     // The fragment that holds the pixel at the end of the frame: which of its Phong terms,
     // changed alone, would give their colour.
     const int last = static_cast<int>(m_history.rows().size()) - 1;
-    const auto breakdown = last >= 0 ? rowBreakdown(*m_inspection, m_history, last) : std::nullopt;
+    // The breakdown shown is that fragment's when its row is selected: no second trace.
+    const bool shown = last >= 0 && m_breakdown && m_breakdown->historyRow == last &&
+                       m_breakdown->fragment == m_history.rows()[last].fragment &&
+                       m_breakdown->fragment != rl::kNoFragment;
+    const auto breakdown = shown       ? m_breakdown
+                           : last >= 0 ? rowBreakdown(*m_inspection, m_history, last)
+                                       : std::nullopt;
     if (!breakdown) {
         text += QLatin1Char(' ') + tr("No triangle of ours holds this pixel.");
     } else if (!TheirColourTerms::workedOutFor(*breakdown)) {

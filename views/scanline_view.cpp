@@ -820,18 +820,17 @@ std::optional<ScanlineView::TheirCoverage> ScanlineView::theirCoverageIn(
 }
 
 QString ScanlineView::theirSpanHtml(const ScanlineModel& m) const {
-    const auto checked = m_theirFrame.lock();
-    if (!checked || checked != m_inspection->frame() || m_theirSpans.empty() || !m.row) return {};
+    // Their coverage was worked out with the model (refresh), their span of this row with it.
+    if (!m_theirCoverage || !m.row) return {};
     const ScanRowInfo& row = *m.row;
-    const auto it = m_theirSpans.find({m.triangle, row.y});
     const QString ours =
         row.empty() ? tr("none") : tr("%1 to %2").arg(row.xBegin).arg(row.xEnd - 1);
-    if (it == m_theirSpans.end())
+    if (!m_theirCoverage->rowSpan)
         return row.empty() ? QString()
                            : QStringLiteral(" <font color='#c81e1e'><b>") +
                                  tr("Your renderer: no pixel on this row (ours: %1).").arg(ours) +
                                  QStringLiteral("</b></font>");
-    const auto [first, last] = it->second;
+    const auto [first, last] = *m_theirCoverage->rowSpan;
     const bool same = !row.empty() && first == row.xBegin && last == row.xEnd - 1;
     const QString text =
         tr("Your renderer: pixels %1 to %2 (ours: %3).").arg(first).arg(last).arg(ours);

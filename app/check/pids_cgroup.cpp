@@ -32,9 +32,7 @@ bool writeText(const std::string& path, const std::string& text) {
 // Where a child cgroup with a pids controller can be made: cgroup v1's pids hierarchy, else
 // our own cgroup v2 when it hands pids to its children.
 std::string pidsParent() {
-    if (!readText("/sys/fs/cgroup/pids/pids.max").empty() ||
-        access("/sys/fs/cgroup/pids/cgroup.procs", F_OK) == 0)
-        return "/sys/fs/cgroup/pids";
+    if (access("/sys/fs/cgroup/pids/cgroup.procs", F_OK) == 0) return "/sys/fs/cgroup/pids";
     std::istringstream lines(readText("/proc/self/cgroup"));
     for (std::string line; std::getline(lines, line);) {
         if (line.rfind("0::", 0) != 0) continue;
