@@ -91,6 +91,50 @@ private slots:
         QCOMPARE(d.coveredPixels(), std::size_t(45));
     }
 
+    void ddaDepthIsTheSteppedSum() {
+        // Under the hw2 rules the depth test reads the weights and the depth the DDA stepped
+        // (tst_scan_conversion works them out by hand for this triangle): at pixel (7, 3),
+        // five additions of the row's increments from pixel 2. The z-buffer and the
+        // barycentrics hold those sums rounded to float, in the stage and the fast path alike.
+        Scene scene = screen(10, 10);
+        scene.rules = RasterRules::hw2();
+        scene.conventions = Conventions::hw2();
+        const Projection pr =
+            screenTriangles({{2.5, 0.5}, {8.5, 3.5}, {0.5, 4.5}}, {{0, 1, 2}}, {0.25f, 1.0f, 0.5f});
+        const ScanConversion scan = ScanConversionStage().run({scene, pr});
+        const DepthTest d = DepthTestStage().run({scene, pr, scan});
+        DdaSpan row3 = ddaSpanAt(scene, pr, 0, 3, 2);
+        for (int x = 2; x < 7; ++x) row3.next();
+        QCOMPARE(d.depth.at(7, 3), static_cast<float>(row3.values.z));
+        QCOMPARE(d.barycentric.at(7, 3),
+                 vec2(static_cast<float>(row3.values.beta), static_cast<float>(row3.values.gamma)));
+        RL_COMPARE_NEAR(d.depth.at(7, 3), 0.25 + 0.75 * (23.0 / 30) + 0.25 * (1.5 / 30), 1e-7);
+        QCOMPARE(fragmentDepth(scene, pr, 0, 3, 2, 7).depth, d.depth.at(7, 3));
+        QCOMPARE(d.coveredPixels(), std::size_t(15));
+        // Pixel (3, 1), worked out by hand in tst_scan_conversion: z = 0.28125 + 0.75 *
+        // 0.075 = 0.3375 in double, then rounded to float. The plane's direct evaluation (the
+        // exact walk's depth test, in float) rounds differently there and at five other pixels.
+        QCOMPARE(d.depth.at(3, 1), 0.3375f);
+        const TrianglePlane plane(pr, 0, false);
+        int otherBits = 0;
+        for (const Span& span : scan.spans) {
+            double beta0 = 0.0, gamma0 = 0.0;
+            plane.spanStart(span.xBegin, span.y, 0.0, beta0, gamma0);
+            for (int x = span.xBegin; x < span.xEnd; ++x) {
+                const float z = plane.fragment(beta0, gamma0, x - span.xBegin).depth;
+                RL_COMPARE_NEAR(z, d.depth.at(x, span.y), 1e-7);
+                otherBits += z != d.depth.at(x, span.y) ? 1 : 0;
+            }
+        }
+        QCOMPARE(otherBits, 6);
+        for (int threads : {1, 2}) {
+            const DepthTest f = fast::depthTest({scene, pr, scan}, threads, nullptr, true);
+            QCOMPARE(f.depth, d.depth);
+            QCOMPARE(f.triangle, d.triangle);
+            QVERIFY(testing::sameCoveredBarycentrics(f, d));
+        }
+    }
+
     void depthAlongARowIsMonotonic() {
         // A slanted triangle: depth grows with x on every row.
         const DepthTest d = depthOf(

@@ -471,6 +471,63 @@ private slots:
         QVERIFY(row3.upperPart);
     }
 
+    void ddaStepsTheAttributesByHand() {
+        // The triangle of ddaTriangleByHand with depths 0.25 (top, vertex 1), 1 (middle,
+        // vertex 2) and 0.5 (bottom, vertex 3), under the hw2 conventions (NDC z). Weights
+        // (beta, gamma, z) at the vertices: (0, 0, 0.25), (1, 0, 1), (0, 1, 0.5).
+        // Long edge, 4 rows high: per row (0, 1/4, 1/16); on row 1, half a row down,
+        // (0, 0.125, 0.28125); on row 3 (0, 0.625, 0.40625). Upper edge, 3 rows high: per row
+        // (1/3, 0, 1/4) with 1/3 rounded; on row 1 (1/6, 0, 0.375), on row 3 two additions on.
+        Scene scene = screenWith(10, 10, RasterRules::hw2());
+        scene.conventions = Conventions::hw2();
+        const Projection pr =
+            screenTriangles({{2.5, 0.5}, {8.5, 3.5}, {0.5, 4.5}}, {{0, 1, 2}}, {0.25f, 1.0f, 0.5f});
+        const ScanConversion scan = ScanConversionStage().run({scene, pr});
+        QCOMPARE(scan.ddaSpans.size(), scan.spans.size());
+        const double third = 1.0 / 3.0;
+        double upperBeta = 0.5 * third;
+        upperBeta += third;
+        upperBeta += third;  // 0.8333333333333333, one step below 2.5 / 3
+        QVERIFY(upperBeta < 2.5 / 3.0);
+        // Row 1: from x_left 2.25 (long edge) to x_right 3.5 (upper edge), 1.25 apart;
+        // per pixel ((1/6) / 1.25, -0.125 / 1.25, 0.09375 / 1.25); pixel 3 is 0.75 on.
+        const DdaSpan& row1 = scan.ddaSpans[0];
+        QCOMPARE(scan.spans[0], (Span{1, 3, 4}));
+        QVERIFY(row1.perPixel.beta == 0.5 * third / 1.25);
+        QVERIFY(row1.perPixel.gamma == -0.1);
+        QVERIFY(row1.perPixel.z == 0.075);
+        QVERIFY(row1.values.beta == 0.75 * (0.5 * third / 1.25));
+        QVERIFY(row1.values.gamma == 0.125 + 0.75 * -0.1);
+        QVERIFY(row1.values.z == 0.28125 + 0.75 * 0.075);
+        // Row 3: from x_left 1.25 to x_right 7.5; pixel 2 is 0.75 on; then one addition of
+        // the increment a pixel up to pixel 7. Each stays within 1e-15 of the exact plane (at
+        // pixel (x, 3): beta = (4x - 5) / 30, gamma = (22.5 - 3x) / 30), but the sums are not
+        // the plane's bits: gamma reaches 0.0500000000000001 at pixel 7, not 0.05.
+        const DdaSpan& row3 = scan.ddaSpans[2];
+        QCOMPARE(scan.spans[2], (Span{3, 2, 8}));
+        const DdaValues left{0.0, 0.625, 0.40625}, right{upperBeta, 0.0, 0.875};
+        QVERIFY(row3.perPixel.beta == (right.beta - left.beta) / 6.25);
+        QVERIFY(row3.perPixel.gamma == -0.625 / 6.25);
+        QVERIFY(row3.perPixel.z == (0.875 - 0.40625) / 6.25);
+        DdaSpan stepped = row3;
+        DdaValues v;
+        for (int x = 2; x < 8; ++x) {
+            v = stepped.next();
+            RL_COMPARE_NEAR(v.beta, (4.0 * x - 5.0) / 30.0, 1e-15);
+            RL_COMPARE_NEAR(v.gamma, (22.5 - 3.0 * x) / 30.0, 1e-15);
+            RL_COMPARE_NEAR(v.z, 0.25 + 0.75 * v.beta + 0.25 * v.gamma, 1e-15);
+        }
+        QVERIFY(v.gamma != 0.05 && std::abs(v.gamma - 0.05) < 1e-15);
+        // The span worked out on its own, as the views do, is the walk's.
+        const DdaSpan again = ddaSpanAt(scene, pr, 0, 3, 2);
+        QVERIFY(again.values.beta == row3.values.beta && again.values.z == row3.values.z &&
+                again.perPixel.gamma == row3.perPixel.gamma);
+        // The exact walk keeps no attributes.
+        QVERIFY(ScanConversionStage()
+                    .run({screenWith(10, 10, RasterRules::gpu()), pr})
+                    .ddaSpans.empty());
+    }
+
     void ddaHalfOpenByHand() {
         // (0, 0), (4, 0), (0, 4) under the DDA: rows 0 to 3 (y < 4); the lower edge's x = 4,
         // 3, 2, 1; pixels 0 <= x < x_right. The bottom vertex's row and the right edge's

@@ -374,8 +374,8 @@ void TestScanlineInspector::ddaStepsACommandFile() {
     // left edge has dx/dy = 2/18, which the DDA adds row by row: on row 9 it has reached
     // 1.0000000000000002, not 1, so pixel (1, 9) is left out. The view shows the sums.
     const std::string text =
-        "png 8 32 tie.png\nxyz -1 -1 0\nxyz -0.5 0.125 0\n"
-        "xyz 0.5 0.125 0\ntrif 1 2 3\n";
+        "png 8 32 tie.png\nxyz -1 -1 0\nxyz -0.5 0.125 0.5\n"
+        "xyz 0.5 0.125 0.25\ntrif 1 2 3\n";
     Diagnostics diagnostics;
     const TextureLoader noTextures =
         [](const std::string&,
@@ -417,6 +417,25 @@ void TestScanlineInspector::ddaStepsACommandFile() {
              qPrintable(explanation));
     QVERIFY(explanation.contains(QStringLiteral("Seed 001's DDA")));
     QVERIFY(explanation.contains(QStringLiteral("Span [2, 3): 1 pixel.")));
+    // The depth is stepped the same way, from z = 0 at the top: by 0.5/18 a row down the upper
+    // edge (to z = 0.5 at (2, 18)) and by 0.25/18 down the long edge (to 0.25 at (6, 18)),
+    // then along the row from x_left by (z_right - z_left) / (x_right - x_left).
+    double zLeft = 0.0, zRight = 0.0;
+    for (int i = 0; i < 9; ++i) {
+        zLeft += 0.5 / 18.0;
+        zRight += 0.25 / 18.0;
+    }
+    const double dzdx = (zRight - zLeft) / (3.0 - x);
+    const double z = zLeft + (2.0 - x) * dzdx;
+    const auto digits = [](double v) { return QString::number(v, 'g', 17); };
+    QVERIFY2(explanation.contains(QStringLiteral("On this row z = %1 at x_left and %2 at x_right: "
+                                                 "z + %3 a pixel")
+                                      .arg(digits(zLeft), digits(zRight), digits(dzdx))),
+             qPrintable(explanation));
+    QVERIFY2(explanation.contains(QStringLiteral("(2, 9): z = %1 + (2 \u2212 %2) \u00d7 %3 = %4.")
+                                      .arg(digits(zLeft), digits(x), digits(dzdx), digits(z))),
+             qPrintable(explanation));
+    QCOMPARE(view.model()->row->first->depth, static_cast<float>(z));
     inspection.seek(replay.atFragment(replay.rows()[k].fragmentBegin));
     QCOMPARE(view.model()->currentPixel, std::optional<int>(2));
 }

@@ -6538,118 +6538,118 @@
         <translation>Your renderer&apos;s colour here: (%1, %2, %3); ours (%4, %5, %6).</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="478"/>
+        <location filename="../views/pixel_inspector.cpp" line="484"/>
         <source>No triangle of ours holds this pixel.</source>
         <translation>No triangle of ours holds this pixel.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="481"/>
+        <location filename="../views/pixel_inspector.cpp" line="487"/>
         <source>The terms are worked out for the course&apos;s lighting in flat or Phong shading only.</source>
         <translation>The terms are worked out for the course&apos;s lighting in flat or Phong shading only.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="486"/>
+        <location filename="../views/pixel_inspector.cpp" line="492"/>
         <source>For your colour, each term alone:</source>
         <translation>For your colour, each term alone:</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="532"/>
+        <location filename="../views/pixel_inspector.cpp" line="538"/>
         <source>start</source>
         <translation>start</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="538"/>
-        <location filename="../views/pixel_inspector.cpp" line="748"/>
+        <location filename="../views/pixel_inspector.cpp" line="544"/>
+        <location filename="../views/pixel_inspector.cpp" line="754"/>
         <source>end</source>
         <translation>end</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="546"/>
+        <location filename="../views/pixel_inspector.cpp" line="552"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>holds the pixel at the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="547"/>
+        <location filename="../views/pixel_inspector.cpp" line="553"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>not reached yet by the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="562"/>
+        <location filename="../views/pixel_inspector.cpp" line="568"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="563"/>
+        <location filename="../views/pixel_inspector.cpp" line="569"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Without stepping, the colours of writes overwritten later are not kept.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="689"/>
+        <location filename="../views/pixel_inspector.cpp" line="695"/>
         <source>Before: %1</source>
         <translation>Before: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="729"/>
+        <location filename="../views/pixel_inspector.cpp" line="735"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="732"/>
+        <location filename="../views/pixel_inspector.cpp" line="738"/>
         <source>The cleared pixel is not lit.</source>
         <translation>The cleared pixel is not lit.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="735"/>
+        <location filename="../views/pixel_inspector.cpp" line="741"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="747"/>
+        <location filename="../views/pixel_inspector.cpp" line="753"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Lighting of step %1, triangle %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="752"/>
+        <location filename="../views/pixel_inspector.cpp" line="758"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejected: this colour was never written)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="765"/>
+        <location filename="../views/pixel_inspector.cpp" line="771"/>
         <source>object colour</source>
         <translation>object colour</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="768"/>
+        <location filename="../views/pixel_inspector.cpp" line="774"/>
         <source>emission</source>
         <translation>emission</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="770"/>
+        <location filename="../views/pixel_inspector.cpp" line="776"/>
         <source>ambient</source>
         <translation>ambient</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="775"/>
+        <location filename="../views/pixel_inspector.cpp" line="781"/>
         <source>diffuse %1</source>
         <translation>diffuse %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="778"/>
+        <location filename="../views/pixel_inspector.cpp" line="784"/>
         <source>specular %1</source>
         <translation>specular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="782"/>
+        <location filename="../views/pixel_inspector.cpp" line="788"/>
         <source>diffuse</source>
         <translation>diffuse</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="784"/>
+        <location filename="../views/pixel_inspector.cpp" line="790"/>
         <source>specular</source>
         <translation>specular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="812"/>
+        <location filename="../views/pixel_inspector.cpp" line="818"/>
         <source>No special case: every term applies as written.</source>
         <translation>No special case: every term applies as written.</translation>
     </message>
@@ -7011,7 +7011,7 @@
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="773"/>
-        <location filename="../views/scanline_view.cpp" line="828"/>
+        <location filename="../views/scanline_view.cpp" line="827"/>
         <source>none</source>
         <translation>none</translation>
     </message>
@@ -7051,92 +7051,92 @@
         <translation>Here the additions are seed 001&apos;s DDA, in double: an edge that lands a hair below a row in double leaves that row to the triangle above, where an exact walk would find the edge through the row&apos;s samples.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="828"/>
+        <location filename="../views/scanline_view.cpp" line="827"/>
         <source>%1 to %2</source>
         <translation>%1 to %2</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="832"/>
+        <location filename="../views/scanline_view.cpp" line="831"/>
         <source>Your renderer: no pixel on this row (ours: %1).</source>
         <translation>Your renderer: no pixel on this row (ours: %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="837"/>
+        <location filename="../views/scanline_view.cpp" line="836"/>
         <source>Your renderer: pixels %1 to %2 (ours: %3).</source>
         <translation>Your renderer: pixels %1 to %2 (ours: %3).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="858"/>
+        <location filename="../views/scanline_view.cpp" line="857"/>
         <source>%1(%2) = %3, where the %4 edge crosses its first row</source>
         <translation>%1(%2) = %3, where the %4 edge crosses its first row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="864"/>
+        <location filename="../views/scanline_view.cpp" line="863"/>
         <source>%1(%2) = %3, where the %4 edge crosses the first row on the screen</source>
         <translation>%1(%2) = %3, where the %4 edge crosses the first row on the screen</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="872"/>
+        <location filename="../views/scanline_view.cpp" line="871"/>
         <source>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</source>
         <translation>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="887"/>
+        <location filename="../views/scanline_view.cpp" line="886"/>
         <source>Scanline y = %1</source>
         <translation>Scanline y = %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="889"/>
+        <location filename="../views/scanline_view.cpp" line="888"/>
         <source>(sampled at y = %1)</source>
         <translation>(sampled at y = %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="901"/>
+        <location filename="../views/scanline_view.cpp" line="900"/>
         <source>Seed 001&apos;s DDA: x_left and x_right are sums in double, one addition of dx/dy a row, the rounding of each carried along (no snapping). Pixels x = ceil(x_left) = %1 while x &amp;lt; x_right: up to ceil(x_right) &amp;minus; 1 = %2 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Seed 001&apos;s DDA: x_left and x_right are sums in double, one addition of dx/dy a row, the rounding of each carried along (no snapping). Pixels x = ceil(x_left) = %1 while x &amp;lt; x_right: up to ceil(x_right) &amp;minus; 1 = %2 (a sample exactly on the right edge belongs to the next triangle).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="908"/>
+        <location filename="../views/scanline_view.cpp" line="907"/>
         <source>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="915"/>
+        <location filename="../views/scanline_view.cpp" line="914"/>
         <source>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</source>
         <translation>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="923"/>
+        <location filename="../views/scanline_view.cpp" line="922"/>
         <source>No pixel on this row</source>
         <translation>No pixel on this row</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="924"/>
+        <location filename="../views/scanline_view.cpp" line="923"/>
         <source>the edges cross it between two samples.</source>
         <translation>the edges cross it between two samples.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="925"/>
+        <location filename="../views/scanline_view.cpp" line="924"/>
         <source>they are all off the screen.</source>
         <translation>they are all off the screen.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="928"/>
+        <location filename="../views/scanline_view.cpp" line="927"/>
         <source>Span [%1, %2): 1 pixel.</source>
         <translation>Span [%1, %2): 1 pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="929"/>
+        <location filename="../views/scanline_view.cpp" line="928"/>
         <source>Span [%1, %2): %3 pixels.</source>
         <translation>Span [%1, %2): %3 pixels.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="932"/>
+        <location filename="../views/scanline_view.cpp" line="931"/>
         <source>(cut to the screen&apos;s columns 0 to %1)</source>
         <translation>(cut to the screen&apos;s columns 0 to %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="935"/>
+        <location filename="../views/scanline_view.cpp" line="934"/>
         <source>The pixel at the cursor is x = %1.</source>
         <translation>The pixel at the cursor is x = %1.</translation>
     </message>
@@ -7157,21 +7157,25 @@
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="965"/>
+        <location filename="../views/scanline_view.cpp" line="1032"/>
         <source>depth</source>
         <translation>depth</translation>
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="965"/>
+        <location filename="../views/scanline_view.cpp" line="1032"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="971"/>
+        <location filename="../views/scanline_view.cpp" line="1036"/>
         <source>not computed (nothing is lit)</source>
         <translation>not computed (nothing is lit)</translation>
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="972"/>
+        <location filename="../views/scanline_view.cpp" line="1037"/>
         <source>zero</source>
         <translation>zero</translation>
     </message>
@@ -7194,6 +7198,26 @@
         <location filename="../views/scanline_view.cpp" line="996"/>
         <source>, with the barycentrics weighted by 1/w (perspective-correct)</source>
         <translation>, with the barycentrics weighted by 1/w (perspective-correct)</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="1020"/>
+        <source>Seed 001&apos;s DDA steps the depth and the weights (&amp;beta;, &amp;gamma;) of P2 and P3 as it steps x: down each edge by the edge&apos;s own increment a row, then along the row from their values at x_left by (value at x_right &amp;minus; value at x_left) / (x_right &amp;minus; x_left), one addition a pixel, in double. Every attribute (colour, normal, texture coordinates) is mixed with these weights.</source>
+        <translation>Seed 001's DDA steps the depth and the weights (&amp;beta;, &amp;gamma;) of P2 and P3 as it steps x: down each edge by the edge's own increment a row, then along the row from their values at x_left by (value at x_right &amp;minus; value at x_left) / (x_right &amp;minus; x_left), one addition a pixel, in double. Every attribute (colour, normal, texture coordinates) is mixed with these weights.</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="1026"/>
+        <source>On this row %1 = %2 at x_left and %3 at x_right: %1 + %4 a pixel; &amp;beta; + %5 and &amp;gamma; + %6 a pixel.</source>
+        <translation>On this row %1 = %2 at x_left and %3 at x_right: %1 + %4 a pixel; &amp;beta; + %5 and &amp;gamma; + %6 a pixel.</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="1048"/>
+        <source>(%1, %2): %3 = %4 + (%1 &amp;minus; %5) &amp;times; %6 = %7.</source>
+        <translation>(%1, %2): %3 = %4 + (%1 &amp;minus; %5) &amp;times; %6 = %7.</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="1057"/>
+        <source>(%1, %2): %3 after %4 additions of %5 = %6.</source>
+        <translation>(%1, %2): %3 after %4 additions of %5 = %6.</translation>
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="730"/>

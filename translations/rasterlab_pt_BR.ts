@@ -6538,118 +6538,118 @@
         <translation>A cor do seu renderizador aqui: (%1, %2, %3); a nossa (%4, %5, %6).</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="478"/>
+        <location filename="../views/pixel_inspector.cpp" line="484"/>
         <source>No triangle of ours holds this pixel.</source>
         <translation>Nenhum triângulo nosso ocupa este pixel.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="481"/>
+        <location filename="../views/pixel_inspector.cpp" line="487"/>
         <source>The terms are worked out for the course&apos;s lighting in flat or Phong shading only.</source>
         <translation>Os termos são calculados só para a iluminação do curso em sombreamento flat ou Phong.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="486"/>
+        <location filename="../views/pixel_inspector.cpp" line="492"/>
         <source>For your colour, each term alone:</source>
         <translation>Para a sua cor, cada termo sozinho:</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="532"/>
+        <location filename="../views/pixel_inspector.cpp" line="538"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="538"/>
-        <location filename="../views/pixel_inspector.cpp" line="748"/>
+        <location filename="../views/pixel_inspector.cpp" line="544"/>
+        <location filename="../views/pixel_inspector.cpp" line="754"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="546"/>
+        <location filename="../views/pixel_inspector.cpp" line="552"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>ocupa o pixel no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="547"/>
+        <location filename="../views/pixel_inspector.cpp" line="553"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>ainda não alcançado pelo cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="562"/>
+        <location filename="../views/pixel_inspector.cpp" line="568"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="563"/>
+        <location filename="../views/pixel_inspector.cpp" line="569"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Sem o passo a passo, as cores das escritas sobrescritas depois não são guardadas.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="689"/>
+        <location filename="../views/pixel_inspector.cpp" line="695"/>
         <source>Before: %1</source>
         <translation>Antes: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="729"/>
+        <location filename="../views/pixel_inspector.cpp" line="735"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Sem o passo a passo, só a iluminação do fragmento que ocupa o pixel no fim é registrada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="732"/>
+        <location filename="../views/pixel_inspector.cpp" line="738"/>
         <source>The cleared pixel is not lit.</source>
         <translation>O pixel limpo não é iluminado.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="735"/>
+        <location filename="../views/pixel_inspector.cpp" line="741"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>Nenhum fragmento ocupa o pixel no cursor: selecione uma linha do histórico para ver sua iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="747"/>
+        <location filename="../views/pixel_inspector.cpp" line="753"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Iluminação do passo %1, triângulo %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="752"/>
+        <location filename="../views/pixel_inspector.cpp" line="758"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejeitado: esta cor nunca foi escrita)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="765"/>
+        <location filename="../views/pixel_inspector.cpp" line="771"/>
         <source>object colour</source>
         <translation>cor do objeto</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="768"/>
+        <location filename="../views/pixel_inspector.cpp" line="774"/>
         <source>emission</source>
         <translation>emissão</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="770"/>
+        <location filename="../views/pixel_inspector.cpp" line="776"/>
         <source>ambient</source>
         <translation>ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="775"/>
+        <location filename="../views/pixel_inspector.cpp" line="781"/>
         <source>diffuse %1</source>
         <translation>difusa %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="778"/>
+        <location filename="../views/pixel_inspector.cpp" line="784"/>
         <source>specular %1</source>
         <translation>especular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="782"/>
+        <location filename="../views/pixel_inspector.cpp" line="788"/>
         <source>diffuse</source>
         <translation>difusa</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="784"/>
+        <location filename="../views/pixel_inspector.cpp" line="790"/>
         <source>specular</source>
         <translation>especular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="812"/>
+        <location filename="../views/pixel_inspector.cpp" line="818"/>
         <source>No special case: every term applies as written.</source>
         <translation>Nenhum caso especial: todos os termos valem como escritos.</translation>
     </message>
@@ -7011,7 +7011,7 @@
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="773"/>
-        <location filename="../views/scanline_view.cpp" line="828"/>
+        <location filename="../views/scanline_view.cpp" line="827"/>
         <source>none</source>
         <translation>nenhuma</translation>
     </message>
@@ -7051,92 +7051,92 @@
         <translation>Aqui as somas são o DDA da semente 001, em double: uma aresta que fica um fio abaixo de uma linha em double deixa essa linha para o triângulo de cima, onde um percurso exato acharia a aresta passando pelas amostras da linha.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="828"/>
+        <location filename="../views/scanline_view.cpp" line="827"/>
         <source>%1 to %2</source>
         <translation>%1 a %2</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="832"/>
+        <location filename="../views/scanline_view.cpp" line="831"/>
         <source>Your renderer: no pixel on this row (ours: %1).</source>
         <translation>O seu renderizador: nenhum pixel nesta linha (o nosso: %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="837"/>
+        <location filename="../views/scanline_view.cpp" line="836"/>
         <source>Your renderer: pixels %1 to %2 (ours: %3).</source>
         <translation>O seu renderizador: pixels %1 a %2 (o nosso: %3).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="858"/>
+        <location filename="../views/scanline_view.cpp" line="857"/>
         <source>%1(%2) = %3, where the %4 edge crosses its first row</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza sua primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="864"/>
+        <location filename="../views/scanline_view.cpp" line="863"/>
         <source>%1(%2) = %3, where the %4 edge crosses the first row on the screen</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza a primeira linha na tela</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="872"/>
+        <location filename="../views/scanline_view.cpp" line="871"/>
         <source>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</source>
         <translation>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 ao longo da aresta %7</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="887"/>
+        <location filename="../views/scanline_view.cpp" line="886"/>
         <source>Scanline y = %1</source>
         <translation>Linha de varredura y = %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="889"/>
+        <location filename="../views/scanline_view.cpp" line="888"/>
         <source>(sampled at y = %1)</source>
         <translation>(amostrada em y = %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="901"/>
+        <location filename="../views/scanline_view.cpp" line="900"/>
         <source>Seed 001&apos;s DDA: x_left and x_right are sums in double, one addition of dx/dy a row, the rounding of each carried along (no snapping). Pixels x = ceil(x_left) = %1 while x &amp;lt; x_right: up to ceil(x_right) &amp;minus; 1 = %2 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>DDA da semente 001: x_left e x_right são somas em double, uma soma de dx/dy por linha, o arredondamento de cada uma levado adiante (sem arredondar os vértices para a grade). Pixels x = ceil(x_left) = %1 enquanto x &amp;lt; x_right: até ceil(x_right) &amp;minus; 1 = %2 (uma amostra exatamente na aresta direita pertence ao triângulo seguinte).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="908"/>
+        <location filename="../views/scanline_view.cpp" line="907"/>
         <source>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Regra top-left: as amostras com x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 a ceil(x_right%2) &amp;minus; 1 = %4 (uma amostra exatamente na aresta direita pertence ao triângulo seguinte).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="915"/>
+        <location filename="../views/scanline_view.cpp" line="914"/>
         <source>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</source>
         <translation>Regra inclusiva: os pixels de ceil(x_left%1) = %2 a floor(x_right%1) = %3, as duas pontas incluídas (uma amostra exatamente sobre uma aresta está dentro).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="923"/>
+        <location filename="../views/scanline_view.cpp" line="922"/>
         <source>No pixel on this row</source>
         <translation>Nenhum pixel nesta linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="924"/>
+        <location filename="../views/scanline_view.cpp" line="923"/>
         <source>the edges cross it between two samples.</source>
         <translation>as arestas a cruzam entre duas amostras.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="925"/>
+        <location filename="../views/scanline_view.cpp" line="924"/>
         <source>they are all off the screen.</source>
         <translation>estão todos fora da tela.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="928"/>
+        <location filename="../views/scanline_view.cpp" line="927"/>
         <source>Span [%1, %2): 1 pixel.</source>
         <translation>Segmento [%1, %2): 1 pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="929"/>
+        <location filename="../views/scanline_view.cpp" line="928"/>
         <source>Span [%1, %2): %3 pixels.</source>
         <translation>Segmento [%1, %2): %3 pixels.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="932"/>
+        <location filename="../views/scanline_view.cpp" line="931"/>
         <source>(cut to the screen&apos;s columns 0 to %1)</source>
         <translation>(cortado às colunas 0 a %1 da tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="935"/>
+        <location filename="../views/scanline_view.cpp" line="934"/>
         <source>The pixel at the cursor is x = %1.</source>
         <translation>O pixel no cursor é x = %1.</translation>
     </message>
@@ -7157,21 +7157,25 @@
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="965"/>
+        <location filename="../views/scanline_view.cpp" line="1032"/>
         <source>depth</source>
         <translation>profundidade</translation>
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="965"/>
+        <location filename="../views/scanline_view.cpp" line="1032"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="971"/>
+        <location filename="../views/scanline_view.cpp" line="1036"/>
         <source>not computed (nothing is lit)</source>
         <translation>não calculada (nada é iluminado)</translation>
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="972"/>
+        <location filename="../views/scanline_view.cpp" line="1037"/>
         <source>zero</source>
         <translation>nula</translation>
     </message>
@@ -7194,6 +7198,26 @@
         <location filename="../views/scanline_view.cpp" line="996"/>
         <source>, with the barycentrics weighted by 1/w (perspective-correct)</source>
         <translation>, com as coordenadas baricêntricas ponderadas por 1/w (correção de perspectiva)</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="1020"/>
+        <source>Seed 001&apos;s DDA steps the depth and the weights (&amp;beta;, &amp;gamma;) of P2 and P3 as it steps x: down each edge by the edge&apos;s own increment a row, then along the row from their values at x_left by (value at x_right &amp;minus; value at x_left) / (x_right &amp;minus; x_left), one addition a pixel, in double. Every attribute (colour, normal, texture coordinates) is mixed with these weights.</source>
+        <translation>O DDA da semente 001 avança a profundidade e os pesos (&amp;beta;, &amp;gamma;) de P2 e P3 como avança x: descendo cada aresta pelo incremento da própria aresta a cada linha, depois ao longo da linha a partir dos seus valores em x_left por (valor em x_right &amp;minus; valor em x_left) / (x_right &amp;minus; x_left), uma soma por pixel, em double. Todo atributo (cor, normal, coordenadas de textura) é misturado com esses pesos.</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="1026"/>
+        <source>On this row %1 = %2 at x_left and %3 at x_right: %1 + %4 a pixel; &amp;beta; + %5 and &amp;gamma; + %6 a pixel.</source>
+        <translation>Nesta linha %1 = %2 em x_left e %3 em x_right: %1 + %4 por pixel; &amp;beta; + %5 e &amp;gamma; + %6 por pixel.</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="1048"/>
+        <source>(%1, %2): %3 = %4 + (%1 &amp;minus; %5) &amp;times; %6 = %7.</source>
+        <translation>(%1, %2): %3 = %4 + (%1 &amp;minus; %5) &amp;times; %6 = %7.</translation>
+    </message>
+    <message>
+        <location filename="../views/scanline_view.cpp" line="1057"/>
+        <source>(%1, %2): %3 after %4 additions of %5 = %6.</source>
+        <translation>(%1, %2): %3 depois de %4 somas de %5 = %6.</translation>
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="730"/>

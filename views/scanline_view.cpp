@@ -948,6 +948,7 @@ QString ScanlineView::spanEndsHtml(const ScanlineModel& m, const rl::FrameTrace&
     const bool perspective = rl::perspectiveDepth(scene);
     const float z1 = draw.depth[tri.v[0]], z2 = draw.depth[tri.v[1]], z3 = draw.depth[tri.v[2]];
     const std::array<rl::dvec2, 3> p = rl::screenVertices(*frame.projection, tri);
+    if (rules.scan == rl::RasterRules::Scan::Dda) return ddaSpanEndsHtml(m, frame);
     QString html = QStringLiteral("<p>") +
                    tr("At the ends of the span, the barycentrics (&alpha;, &beta;, &gamma;) of the "
                       "sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the "
@@ -996,6 +997,72 @@ QString ScanlineView::spanEndsHtml(const ScanlineModel& m, const rl::FrameTrace&
                          : QString()) +
             QStringLiteral("</p>");
     return html;
+}
+
+// Under seed 001's DDA the depth and the weights are stepped as x is: the values at the
+// row's crossings, their increment a pixel, and the sums at the ends of the span.
+QString ScanlineView::ddaSpanEndsHtml(const ScanlineModel& m, const rl::FrameTrace& frame) const {
+    const rl::Scene& scene = *frame.scene;
+    const ScanRowInfo& row = *m.row;
+    const bool perspective = rl::perspectiveDepth(scene);
+    const std::array<rl::DdaValues, 3> v =
+        rl::ddaVertexValues(scene, *frame.projection, m.triangle, m.setup);
+    const auto& s = m.setup.sorted;
+    const rl::DdaEdge longEdge = rl::ddaEdgeAtRow(s[0], s[2], row.y, v[0], v[2]);
+    const rl::DdaEdge shortEdge = row.upperPart ? rl::ddaEdgeAtRow(s[0], s[1], row.y, v[0], v[1])
+                                                : rl::ddaEdgeAtRow(s[1], s[2], row.y, v[1], v[2]);
+    const rl::DdaEdge& left = longEdge.x <= shortEdge.x ? longEdge : shortEdge;
+    const rl::DdaEdge& right = longEdge.x <= shortEdge.x ? shortEdge : longEdge;
+    const rl::DdaSpan span = rl::ddaSpan(longEdge, shortEdge, row.xBegin);
+    const QString z = perspective ? QStringLiteral("1/z") : QStringLiteral("z");
+    QString html =
+        QStringLiteral("<p>") +
+        tr("Seed 001's DDA steps the depth and the weights (&beta;, &gamma;) of P2 and P3 as it "
+           "steps x: down each edge by the edge's own increment a row, then along the row from "
+           "their values at x_left by (value at x_right &minus; value at x_left) / (x_right "
+           "&minus; x_left), one addition a pixel, in double. Every attribute (colour, normal, "
+           "texture coordinates) is mixed with these weights.") +
+        QStringLiteral("<br>") +
+        tr("On this row %1 = %2 at x_left and %3 at x_right: %1 + %4 a pixel; &beta; + %5 and "
+           "&gamma; + %6 a pixel.")
+            .arg(z, num(left.values.z, 17), num(right.values.z, 17), num(span.perPixel.z, 17),
+                 num(span.perPixel.beta, 17), num(span.perPixel.gamma, 17)) +
+        QStringLiteral(
+            "</p><table cellspacing='0' cellpadding='3' border='1'><tr><th></th>"
+            "<th>&alpha;, &beta;, &gamma;</th><th>") +
+        tr("depth") + QStringLiteral("</th><th>") + tr("normal") + QStringLiteral("</th></tr>");
+    std::vector<const SpanEnd*> ends{&*row.first};
+    if (row.xEnd - row.xBegin > 1) ends.push_back(&*row.last);
+    for (const SpanEnd* e : ends) {
+        const QString normal = !e->hasNormal                 ? tr("not computed (nothing is lit)")
+                               : e->normal == rl::vec3(0.0f) ? tr("zero")
+                                                             : vector(e->normal, 'g', 4);
+        html +=
+            QStringLiteral(
+                "<tr><th>(%1, %2)</th><td nowrap>%3, %4, %5</td><td><b>%6</b></td>"
+                "<td nowrap>%7</td></tr>")
+                .arg(e->x)
+                .arg(e->y)
+                .arg(num(e->alpha, 4), num(e->beta, 4), num(e->gamma, 4), num(e->depth), normal);
+    }
+    html +=
+        QStringLiteral("</table><p>") + tr("(%1, %2): %3 = %4 + (%1 &minus; %5) &times; %6 = %7.")
+                                            .arg(row.xBegin)
+                                            .arg(row.y)
+                                            .arg(z, num(left.values.z, 17), num(left.x, 17),
+                                                 num(span.perPixel.z, 17), num(span.values.z, 17));
+    if (row.xEnd - row.xBegin > 1) {
+        rl::DdaSpan stepped = span;
+        for (int x = row.xBegin; x < row.xEnd - 1; ++x) stepped.next();
+        html +=
+            QStringLiteral("<br>") + tr("(%1, %2): %3 after %4 additions of %5 = %6.")
+                                         .arg(row.xEnd - 1)
+                                         .arg(row.y)
+                                         .arg(z)
+                                         .arg(row.xEnd - 1 - row.xBegin)
+                                         .arg(num(span.perPixel.z, 17), num(stepped.values.z, 17));
+    }
+    return html + QStringLiteral("</p>");
 }
 
 }  // namespace rasterlab

@@ -118,6 +118,7 @@ private:
     QString edgeTableHtml(const ScanlineModel& m) const;
     QString scanlineHtml(const ScanlineModel& m, const rl::Scene& scene) const;
     QString spanEndsHtml(const ScanlineModel& m, const rl::FrameTrace& frame) const;
+    QString ddaSpanEndsHtml(const ScanlineModel& m, const rl::FrameTrace& frame) const;
     static std::array<QString, 3> edgeNames();  // long, upper, lower
 
     std::optional<ScanlineModel> m_model;

@@ -241,22 +241,39 @@ void clearRows(const DepthRows& first, int rows, std::size_t width, ColumnRange 
     }
 }
 
+// The DDA's attributes of triangle t's span on row y (its spans run down the rows, one a row).
+const DdaSpan& ddaSpanOfRow(const ScanConversion& scan, std::uint32_t t, std::int32_t y) {
+    const Span* first = scan.spans.data() + scan.spanStart[t];
+    const Span* last = scan.spans.data() + scan.spanStart[t + 1];
+    const Span* span =
+        std::lower_bound(first, last, y, [](const Span& s, std::int32_t row) { return s.y < row; });
+    return scan.ddaSpans[static_cast<std::size_t>(span - scan.spans.data())];
+}
+
 // The spans among [begin, end) (a chunk's, in triangle order) whose row is in [y0, y1),
-// tested into the rows from `first` (row y0) on.
-void testRows(const Scene& scene, const Projection& projection, const Entry* begin,
-              const Entry* end, int y0, int y1, const DepthRows& first, std::size_t width,
-              bool painted, DepthCounts& counts) {
+// tested into the rows from `first` (row y0) on. The DDA's spans (hw2 rules) take the
+// stage's own loop: their attributes are stepped one addition a pixel.
+void testRows(const Scene& scene, const DepthTestInput& in, const Entry* begin, const Entry* end,
+              int y0, int y1, const DepthRows& first, std::size_t width, bool painted,
+              DepthCounts& counts) {
     std::uint32_t current = kNoTriangle;
     std::optional<TrianglePlane> plane;
+    const bool dda = scene.rules.scan == RasterRules::Scan::Dda;
     for (const Entry* entry = begin; entry != end; ++entry) {
         const int y = entry->span.y;
         if (y < y0 || y >= y1) continue;
+        const DepthRows rows = rowOf(first, y - y0, width);
+        if (dda) {
+            NullProbe none;
+            testDdaSpanPixels(scene, ddaSpanOfRow(in.scan, entry->triangle, y), entry->triangle,
+                              entry->span, rows, painted, counts, none);
+            continue;
+        }
         if (entry->triangle != current) {
             current = entry->triangle;
-            plane.emplace(projection, current, perspectiveDepth(scene));
+            plane.emplace(in.projection, current, perspectiveDepth(scene));
         }
-        testSpanOnLanes(scene, *plane, current, entry->span, rowOf(first, y - y0, width), painted,
-                        counts);
+        testSpanOnLanes(scene, *plane, current, entry->span, rows, painted, counts);
     }
 }
 
@@ -283,7 +300,7 @@ void markVisible(DepthTest& out, int y0, int y1, ColumnRange touched) {
 // (depthTestInBands) the ids and barycentrics are in the band too, of bandRows rows: each
 // chunk is tested a band at a time, each band handed to the sink once tested, before the
 // next one overwrites it.
-DepthCounts testChunks(const Scene& scene, const Projection& projection, const SpansByChunk& sorted,
+DepthCounts testChunks(const Scene& scene, const DepthTestInput& in, const SpansByChunk& sorted,
                        DepthTest& out, int part, int parts,
                        const std::vector<ColumnRange>& previous, const BandSink* sink, int bandRows,
                        std::atomic<int>& nextChunk) {
@@ -341,7 +358,7 @@ DepthCounts testChunks(const Scene& scene, const Projection& projection, const S
             const DepthRows first = firstRow(b0);
             clearRows(first, b1 - b0, width, depthDirty, idDirty, scene.conventions.depthClear,
                       first.bary && !sink);
-            testRows(scene, projection, entries + start[c], entries + start[c + 1], b0, b1, first,
+            testRows(scene, in, entries + start[c], entries + start[c + 1], b0, b1, first,
                      width, out.painted, counts);
             if (sink) (*sink)(TestedBand{part, b0, b1, touched, first.ids, first.bary, width});
         }
@@ -424,7 +441,7 @@ DepthTest test(const DepthTestInput& in, int threads, DepthTest* recycled, bool 
     std::atomic<int> nextChunk{0};
     runParts(parts, [&](int part) {
         counts[static_cast<std::size_t>(part)] =
-            testChunks(scene, in.projection, sorted, out, part, parts, previous, sink,
+            testChunks(scene, in, sorted, out, part, parts, previous, sink,
                        bandRowsFor(bandRows), nextChunk);
     });
     for (const DepthCounts& c : counts) {

@@ -26,11 +26,13 @@ ScanConversion scanConversion(const ScanConversionInput& in, int threads) {
     std::size_t spans = 0;
     for (const ScanConversion& p : partial) spans += p.spans.size();
     out.spans.reserve(spans);
+    if (in.scene.rules.scan == RasterRules::Scan::Dda) out.ddaSpans.reserve(spans);
     out.spanStart.reserve(count + 1);
     for (const ScanConversion& p : partial) {
         const auto offset = static_cast<std::uint32_t>(out.spans.size());
         for (std::uint32_t start : p.spanStart) out.spanStart.push_back(start + offset);
         out.spans.insert(out.spans.end(), p.spans.begin(), p.spans.end());
+        out.ddaSpans.insert(out.ddaSpans.end(), p.ddaSpans.begin(), p.ddaSpans.end());
         out.degenerate += p.degenerate;
         out.offscreen += p.offscreen;
         out.pixels += p.pixels;

@@ -11,30 +11,36 @@ std::size_t DepthTest::coveredPixels() const {
     return n;
 }
 
-bool perspectiveDepth(const Scene& scene) {
-    return scene.rules.interpolation == RasterRules::Interpolation::PerspectiveCorrect &&
-           scene.conventions.depth == DepthSource::ViewZ;
+FragmentDepth ddaFragment(const DdaValues& v, bool reciprocal) {
+    return {static_cast<float>(v.beta), static_cast<float>(v.gamma),
+            static_cast<float>(reciprocal ? 1.0 / v.z : v.z)};
 }
 
 FragmentDepth fragmentDepth(const Scene& scene, const Projection& projection, std::uint32_t t,
                             std::int32_t y, std::int32_t xBegin, std::int32_t x) {
+    if (scene.rules.scan == RasterRules::Scan::Dda) {
+        DdaSpan dda = ddaSpanAt(scene, projection, t, y, xBegin);
+        for (std::int32_t i = xBegin; i < x; ++i) dda.next();
+        return ddaFragment(dda.values, perspectiveDepth(scene));
+    }
     const TrianglePlane plane(projection, t, perspectiveDepth(scene));
     double beta0 = 0.0, gamma0 = 0.0;
     plane.spanStart(xBegin, y, scene.rules.sampleOffset, beta0, gamma0);
     return plane.fragment(beta0, gamma0, x - xBegin);
 }
 
-template <typename Probe>
-void testSpanPixels(const Scene& scene, const TrianglePlane& plane, std::uint32_t id,
-                    const Span& span, const DepthRows& rows, bool painted, DepthCounts& counts,
-                    Probe& probe) {
+namespace {
+
+// The test of the fragments of one span, pixel by pixel, each from fragmentAt(i) for the
+// span's i-th pixel in order.
+template <typename Probe, typename Fragments>
+void testFragments(const Scene& scene, Fragments&& fragmentAt, std::uint32_t id, const Span& span,
+                   const DepthRows& rows, bool painted, DepthCounts& counts, Probe& probe) {
     const bool winsOnTie = scene.conventions.depthWinsOnTie;
     const bool rangeClip = scene.conventions.depthRangeClip;
-    double beta0 = 0.0, gamma0 = 0.0;
-    plane.spanStart(span.xBegin, span.y, scene.rules.sampleOffset, beta0, gamma0);
     counts.fragments += static_cast<std::size_t>(span.xEnd - span.xBegin);
     for (std::int32_t x = span.xBegin; x < span.xEnd; ++x) {
-        const FragmentDepth f = plane.fragment(beta0, gamma0, x - span.xBegin);
+        const FragmentDepth f = fragmentAt(x - span.xBegin);
         const float alpha = 1.0f - f.beta - f.gamma;
         if (rangeClip && !(f.depth >= 0.0f && f.depth <= 1.0f)) {  // per-pixel clipping (seed 001)
             ++counts.outsideDepthRange;
@@ -57,6 +63,29 @@ void testSpanPixels(const Scene& scene, const TrianglePlane& plane, std::uint32_
     }
 }
 
+}  // namespace
+
+template <typename Probe>
+void testSpanPixels(const Scene& scene, const TrianglePlane& plane, std::uint32_t id,
+                    const Span& span, const DepthRows& rows, bool painted, DepthCounts& counts,
+                    Probe& probe) {
+    double beta0 = 0.0, gamma0 = 0.0;
+    plane.spanStart(span.xBegin, span.y, scene.rules.sampleOffset, beta0, gamma0);
+    testFragments(
+        scene, [&](std::int32_t i) { return plane.fragment(beta0, gamma0, i); }, id, span, rows,
+        painted, counts, probe);
+}
+
+template <typename Probe>
+void testDdaSpanPixels(const Scene& scene, const DdaSpan& dda, std::uint32_t id, const Span& span,
+                       const DepthRows& rows, bool painted, DepthCounts& counts, Probe& probe) {
+    DdaSpan stepped = dda;
+    const bool reciprocal = perspectiveDepth(scene);
+    testFragments(
+        scene, [&](std::int32_t) { return ddaFragment(stepped.next(), reciprocal); }, id, span,
+        rows, painted, counts, probe);
+}
+
 template <typename Probe>
 DepthTest DepthTestStage::run(const DepthTestInput& in, Probe& probe) const {
     const Scene& scene = in.scene;
@@ -72,10 +101,21 @@ DepthTest DepthTestStage::run(const DepthTestInput& in, Probe& probe) const {
     for (std::size_t t = 0; t < in.projection.triangles.size(); ++t) {
         const std::uint32_t first = in.scan.spanStart[t], last = in.scan.spanStart[t + 1];
         if (first == last) continue;
+        const auto id = static_cast<std::uint32_t>(t);
+        if (scene.rules.scan == RasterRules::Scan::Dda) {  // seed 001's DDA stepped them
+            for (std::uint32_t k = first; k < last; ++k) {
+                const std::int32_t y = in.scan.spans[k].y;
+                testDdaSpanPixels(
+                    scene, in.scan.ddaSpans[k], id, in.scan.spans[k],
+                    DepthRows{out.depth.row(y), out.triangle.row(y), out.barycentric.row(y)},
+                    out.painted, counts, probe);
+            }
+            continue;
+        }
         const TrianglePlane plane(in.projection, t, reciprocal);
         for (std::uint32_t k = first; k < last; ++k) {
             const std::int32_t y = in.scan.spans[k].y;
-            testSpanPixels(scene, plane, static_cast<std::uint32_t>(t), in.scan.spans[k],
+            testSpanPixels(scene, plane, id, in.scan.spans[k],
                            DepthRows{out.depth.row(y), out.triangle.row(y), out.barycentric.row(y)},
                            out.painted, counts, probe);
         }
@@ -99,5 +139,7 @@ template DepthTest DepthTestStage::run<ReplayProbe>(const DepthTestInput&, Repla
 template void testSpanPixels<NullProbe>(const Scene&, const TrianglePlane&, std::uint32_t,
                                         const Span&, const DepthRows&, bool, DepthCounts&,
                                         NullProbe&);
+template void testDdaSpanPixels<NullProbe>(const Scene&, const DdaSpan&, std::uint32_t, const Span&,
+                                           const DepthRows&, bool, DepthCounts&, NullProbe&);
 
 }  // namespace rl

@@ -2,12 +2,14 @@
 // (alpha, beta, gamma) of its sample with respect to the triangle's screen vertices give
 // the fragment's depth, z = alpha z1 + beta z2 + gamma z3: for the course the z of
 // P' = alpha P1 + beta P2 + gamma P3 in view coordinates (seed 000), for command files the
-// NDC z (seed 001). Under perspective-correct rules (RasterRules::gpu, hw2) view z is found
-// as 1 / (alpha / z1 + beta / z2 + gamma / z3), the depth of the point on the triangle. The buffer
-// starts at the convention's clear value (+infinity, or 1) and the nearer fragment wins: z < stored
-// writes; on a tie the earlier triangle stays, unless the convention says z <= stored (seed 001).
-// Seed 001 also discards fragments whose z is outside [0, 1] (per-pixel clipping). Under the
-// painter's algorithm (paintersAlgorithm(scene)) there is no test: every fragment is written.
+// NDC z (seed 001). Under the hw2 rules' DDA the weights and z are those scan conversion
+// stepped to the pixel, one addition at a time (dda.h). Under perspective-correct rules
+// (RasterRules::gpu, hw2) view z is found as 1 / (alpha / z1 + beta / z2 + gamma / z3), the
+// depth of the point on the triangle. The buffer starts at the convention's clear value
+// (+infinity, or 1) and the nearer fragment wins: z < stored writes; on a tie the earlier
+// triangle stays, unless the convention says z <= stored (seed 001). Seed 001 also discards
+// fragments whose z is outside [0, 1] (per-pixel clipping). Under the painter's algorithm
+// (paintersAlgorithm(scene)) there is no test: every fragment is written.
 //
 // The buffer remembers, for each pixel, the winning triangle and its barycentrics, so
 // shading runs once per visible pixel: the image equals that of shading each fragment as
@@ -80,10 +82,6 @@ public:
     template <typename Probe>
     DepthTest run(const DepthTestInput& in, Probe& probe) const;
 };
-
-// Whether the depth test interpolates 1/z rather than z: view z under perspective-correct
-// rules (1/z is linear on the screen; NDC z already is).
-bool perspectiveDepth(const Scene& scene);
 
 // One fragment as the depth test works it out.
 struct FragmentDepth {
@@ -170,5 +168,12 @@ template <typename Probe>
 void testSpanPixels(const Scene& scene, const TrianglePlane& plane, std::uint32_t id,
                     const Span& span, const DepthRows& rows, bool painted, DepthCounts& counts,
                     Probe& probe);
+// The same loop for a span the DDA walked (dda.h): each pixel's weights and depth are the
+// span's attributes, stepped one addition a pixel from its first.
+template <typename Probe>
+void testDdaSpanPixels(const Scene& scene, const DdaSpan& dda, std::uint32_t id, const Span& span,
+                       const DepthRows& rows, bool painted, DepthCounts& counts, Probe& probe);
+// A DDA fragment: the span's attributes at a pixel as the depth test reads them.
+FragmentDepth ddaFragment(const DdaValues& v, bool reciprocal);
 
 }  // namespace rl

@@ -188,6 +188,35 @@ double edgeCrossing(const ScanEdge& e, const RasterRules& rules, std::int32_t y)
     return EdgeWalker(e, gridOf(rules), y).exactX();
 }
 
+bool perspectiveDepth(const Scene& scene) {
+    return scene.rules.interpolation == RasterRules::Interpolation::PerspectiveCorrect &&
+           scene.conventions.depth == DepthSource::ViewZ;
+}
+
+std::array<DdaValues, 3> ddaVertexValues(const Scene& scene, const Projection& projection,
+                                         std::size_t t, const TriangleSetup& s) {
+    const ScreenTriangle& tri = projection.triangles[t];
+    const auto& depth = projection.draws[tri.draw].depth;
+    const bool reciprocal = perspectiveDepth(scene);
+    const auto at = [&](int k) {
+        const double z = depth[tri.v[static_cast<std::size_t>(k)]];
+        return DdaValues{k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0, reciprocal ? 1.0 / z : z};
+    };
+    return {at(s.order[0]), at(s.order[1]), at(s.order[2])};
+}
+
+DdaSpan ddaSpanAt(const Scene& scene, const Projection& projection, std::size_t t, std::int32_t y,
+                  std::int32_t xBegin) {
+    const TriangleSetup s =
+        setupTriangle(screenVertices(projection, projection.triangles[t]), scene.rules);
+    const std::array<DdaValues, 3> v = ddaVertexValues(scene, projection, t, s);
+    const DdaEdge longEdge = ddaEdgeAtRow(s.sorted[0], s.sorted[2], y, v[0], v[2]);
+    const DdaEdge shortEdge = y <= lastUpperDdaRow(s)
+                                  ? ddaEdgeAtRow(s.sorted[0], s.sorted[1], y, v[0], v[1])
+                                  : ddaEdgeAtRow(s.sorted[1], s.sorted[2], y, v[1], v[2]);
+    return ddaSpan(longEdge, shortEdge, xBegin);
+}
+
 double ScanEdge::xAt(double y) const {
     const double scale = std::ldexp(1.0, -bits);
     const std::int64_t dy = yBottom - yTop;
@@ -297,16 +326,19 @@ void addRow(ScanConversion& out, Probe& probe, [[maybe_unused]] std::uint32_t tr
 }
 
 // Seed 001's DDA (dda.h) on rows [first, last] of the screen: the long edge in lock-step
-// with the upper edge, then with the lower one, each x stepped by its dx/dy.
+// with the upper edge, then with the lower one, each x and the attributes v at the sorted
+// vertices stepped by their increments; each span keeps its attributes for the depth test.
 template <typename Probe>
-void walkDda(const TriangleSetup& s, std::int32_t first, std::int32_t last, std::int64_t width,
-             std::uint32_t triangle, ScanConversion& out, Probe& probe) {
-    DdaEdge longEdge = ddaEdge(s.sorted[0], s.sorted[2]);
-    DdaEdge upper = ddaEdge(s.sorted[0], s.sorted[1]);
-    DdaEdge lower = ddaEdge(s.sorted[1], s.sorted[2]);
+void walkDda(const TriangleSetup& s, const std::array<DdaValues, 3>& v, std::int32_t first,
+             std::int32_t last, std::int64_t width, std::uint32_t triangle, ScanConversion& out,
+             Probe& probe) {
+    DdaEdge longEdge = ddaEdge(s.sorted[0], s.sorted[2], v[0], v[2]);
+    DdaEdge upper = ddaEdge(s.sorted[0], s.sorted[1], v[0], v[1]);
+    DdaEdge lower = ddaEdge(s.sorted[1], s.sorted[2], v[1], v[2]);
     for (std::int32_t y = first; y <= last; ++y) {
         DdaEdge& shortEdge = upper.done() ? lower : upper;
         const DdaPixels p = ddaPixels(longEdge.x, shortEdge.x, width);
+        if (p.begin < p.end) out.ddaSpans.push_back(ddaSpan(longEdge, shortEdge, p.begin));
         addRow(
             out, probe, triangle, y, {p.begin, p.end},
             [&] { return std::minmax(longEdge.x, shortEdge.x); }, width);
@@ -346,7 +378,8 @@ void scanTriangles(const ScanConversionInput& in, std::size_t firstTriangle,
         }
         const std::size_t spansBefore = out.spans.size();
         if (scene.rules.scan == RasterRules::Scan::Dda) {
-            walkDda(s, rowBegin, rowEnd, width, triangle, out, probe);
+            walkDda(s, ddaVertexValues(scene, projection, t, s), rowBegin, rowEnd, width, triangle,
+                    out, probe);
             if (out.spans.size() == spansBefore) ++out.offscreen;
             continue;
         }

@@ -27,6 +27,7 @@
 
 #include "pipeline/core/math.h"
 #include "pipeline/scene/scene.h"
+#include "pipeline/stages/dda.h"
 #include "pipeline/stages/projection.h"
 
 namespace rl {
@@ -94,9 +95,25 @@ ScanRow scanRow(const TriangleSetup& s, const RasterRules& rules, std::int32_t y
 // walk has it (pixels).
 double edgeCrossing(const ScanEdge& e, const RasterRules& rules, std::int32_t y);
 
+// Whether depth is interpolated as 1/z rather than z: view z under perspective-correct rules
+// (1/z is linear on the screen; NDC z already is). The DDA steps it, the depth test reads it.
+bool perspectiveDepth(const Scene& scene);
+// The attributes the DDA steps (dda.h) at the vertices of screen triangle t whose set-up is
+// s, in s's sorted order: the weights (0, 0), (1, 0), (0, 1) and each vertex's depth.
+std::array<DdaValues, 3> ddaVertexValues(const Scene& scene, const Projection& projection,
+                                         std::size_t t, const TriangleSetup& s);
+// The attributes of the span that starts at pixel xBegin on row y of screen triangle t,
+// stepped as the DDA's walk steps them (the same bits: the views and the stage check show
+// them).
+DdaSpan ddaSpanAt(const Scene& scene, const Projection& projection, std::size_t t, std::int32_t y,
+                  std::int32_t xBegin);
+
 struct ScanConversion {
     std::vector<std::uint32_t> spanStart;  // spans of triangle t: [spanStart[t], spanStart[t+1])
     std::vector<Span> spans;
+    // Under the DDA (RasterRules::Scan::Dda) only: span k's attributes at its first pixel and
+    // their increment a pixel, as the walk stepped them (dda.h); empty otherwise.
+    std::vector<DdaSpan> ddaSpans;
     std::size_t degenerate = 0;  // zero area on screen: not scanned
     std::size_t offscreen = 0;   // no sampled pixel on the screen
     std::size_t pixels = 0;      // covered samples, all triangles together
