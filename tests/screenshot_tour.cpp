@@ -726,6 +726,16 @@ int main(int argc, char* argv[]) {
         const QRect strip = window.findChild<QToolBar*>(QStringLiteral("stageToolBar"))->geometry();
         check(save(&window, file(QStringLiteral("strip-command-file")),
                    QRect(0, strip.top(), std::min(window.width(), 1100), strip.height())));
+        // Stepped by scanline past the middle: the scan dock shows seed 001's DDA, its sums of
+        // x and of the depth in double.
+        Inspection* in = window.inspection();
+        const rl::FrameReplay* r = in->replay();
+        in->setGranularity(rl::StepGranularity::Scanline);
+        rl::ReplayCursor row = r->atFragment(static_cast<std::uint32_t>(r->fragments().size() / 2));
+        for (int k = 0; k < 12; ++k) row = r->next(row, rl::StepGranularity::Scanline);
+        in->seek(row);
+        check(saveDock(dock(window, "scanlineDock"), file(QStringLiteral("scanlineDock-dda")),
+                       QSize(560, 1500)));
     }
 
     // Seed 002's animation on the default trefoil: paused at frame 30 (t = 1.25 s, 45

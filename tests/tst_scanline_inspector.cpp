@@ -428,11 +428,12 @@ void TestScanlineInspector::ddaStepsACommandFile() {
     const double dzdx = (zRight - zLeft) / (3.0 - x);
     const double z = zLeft + (2.0 - x) * dzdx;
     const auto digits = [](double v) { return QString::number(v, 'g', 17); };
+    QVERIFY(dzdx < 0.0);  // shown in brackets after a sign
     QVERIFY2(explanation.contains(QStringLiteral("On this row z = %1 at x_left and %2 at x_right: "
-                                                 "z + %3 a pixel")
+                                                 "z + (%3) a pixel")
                                       .arg(digits(zLeft), digits(zRight), digits(dzdx))),
              qPrintable(explanation));
-    QVERIFY2(explanation.contains(QStringLiteral("(2, 9): z = %1 + (2 \u2212 %2) \u00d7 %3 = %4.")
+    QVERIFY2(explanation.contains(QStringLiteral("(2, 9): z = %1 + (2 \u2212 %2) \u00d7 (%3) = %4.")
                                       .arg(digits(zLeft), digits(x), digits(dzdx), digits(z))),
              qPrintable(explanation));
     QCOMPARE(view.model()->row->first->depth, static_cast<float>(z));

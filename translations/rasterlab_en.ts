@@ -7157,25 +7157,25 @@
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="965"/>
-        <location filename="../views/scanline_view.cpp" line="1032"/>
+        <location filename="../views/scanline_view.cpp" line="1037"/>
         <source>depth</source>
         <translation>depth</translation>
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="965"/>
-        <location filename="../views/scanline_view.cpp" line="1032"/>
+        <location filename="../views/scanline_view.cpp" line="1037"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="971"/>
-        <location filename="../views/scanline_view.cpp" line="1036"/>
+        <location filename="../views/scanline_view.cpp" line="1041"/>
         <source>not computed (nothing is lit)</source>
         <translation>not computed (nothing is lit)</translation>
     </message>
     <message>
         <location filename="../views/scanline_view.cpp" line="972"/>
-        <location filename="../views/scanline_view.cpp" line="1037"/>
+        <location filename="../views/scanline_view.cpp" line="1042"/>
         <source>zero</source>
         <translation>zero</translation>
     </message>
@@ -7200,22 +7200,22 @@
         <translation>, with the barycentrics weighted by 1/w (perspective-correct)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="1020"/>
+        <location filename="../views/scanline_view.cpp" line="1024"/>
         <source>Seed 001&apos;s DDA steps the depth and the weights (&amp;beta;, &amp;gamma;) of P2 and P3 as it steps x: down each edge by the edge&apos;s own increment a row, then along the row from their values at x_left by (value at x_right &amp;minus; value at x_left) / (x_right &amp;minus; x_left), one addition a pixel, in double. Every attribute (colour, normal, texture coordinates) is mixed with these weights.</source>
-        <translation>Seed 001's DDA steps the depth and the weights (&amp;beta;, &amp;gamma;) of P2 and P3 as it steps x: down each edge by the edge's own increment a row, then along the row from their values at x_left by (value at x_right &amp;minus; value at x_left) / (x_right &amp;minus; x_left), one addition a pixel, in double. Every attribute (colour, normal, texture coordinates) is mixed with these weights.</translation>
+        <translation>Seed 001&apos;s DDA steps the depth and the weights (&amp;beta;, &amp;gamma;) of P2 and P3 as it steps x: down each edge by the edge&apos;s own increment a row, then along the row from their values at x_left by (value at x_right &amp;minus; value at x_left) / (x_right &amp;minus; x_left), one addition a pixel, in double. Every attribute (colour, normal, texture coordinates) is mixed with these weights.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="1026"/>
+        <location filename="../views/scanline_view.cpp" line="1030"/>
         <source>On this row %1 = %2 at x_left and %3 at x_right: %1 + %4 a pixel; &amp;beta; + %5 and &amp;gamma; + %6 a pixel.</source>
         <translation>On this row %1 = %2 at x_left and %3 at x_right: %1 + %4 a pixel; &amp;beta; + %5 and &amp;gamma; + %6 a pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="1048"/>
+        <location filename="../views/scanline_view.cpp" line="1053"/>
         <source>(%1, %2): %3 = %4 + (%1 &amp;minus; %5) &amp;times; %6 = %7.</source>
         <translation>(%1, %2): %3 = %4 + (%1 &amp;minus; %5) &amp;times; %6 = %7.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="1057"/>
+        <location filename="../views/scanline_view.cpp" line="1062"/>
         <source>(%1, %2): %3 after %4 additions of %5 = %6.</source>
         <translation>(%1, %2): %3 after %4 additions of %5 = %6.</translation>
     </message>

@@ -1015,6 +1015,10 @@ QString ScanlineView::ddaSpanEndsHtml(const ScanlineModel& m, const rl::FrameTra
     const rl::DdaEdge& right = longEdge.x <= shortEdge.x ? shortEdge : longEdge;
     const rl::DdaSpan span = rl::ddaSpan(longEdge, shortEdge, row.xBegin);
     const QString z = perspective ? QStringLiteral("1/z") : QStringLiteral("z");
+    const auto term = [](double increment) {  // an increment after "+", in brackets when negative
+        return increment < 0.0 ? QStringLiteral("(%1)").arg(num(increment, 17))
+                               : num(increment, 17);
+    };
     QString html =
         QStringLiteral("<p>") +
         tr("Seed 001's DDA steps the depth and the weights (&beta;, &gamma;) of P2 and P3 as it "
@@ -1025,8 +1029,8 @@ QString ScanlineView::ddaSpanEndsHtml(const ScanlineModel& m, const rl::FrameTra
         QStringLiteral("<br>") +
         tr("On this row %1 = %2 at x_left and %3 at x_right: %1 + %4 a pixel; &beta; + %5 and "
            "&gamma; + %6 a pixel.")
-            .arg(z, num(left.values.z, 17), num(right.values.z, 17), num(span.perPixel.z, 17),
-                 num(span.perPixel.beta, 17), num(span.perPixel.gamma, 17)) +
+            .arg(z, num(left.values.z, 17), num(right.values.z, 17), term(span.perPixel.z),
+                 term(span.perPixel.beta), term(span.perPixel.gamma)) +
         QStringLiteral(
             "</p><table cellspacing='0' cellpadding='3' border='1'><tr><th></th>"
             "<th>&alpha;, &beta;, &gamma;</th><th>") +
@@ -1050,7 +1054,7 @@ QString ScanlineView::ddaSpanEndsHtml(const ScanlineModel& m, const rl::FrameTra
                                             .arg(row.xBegin)
                                             .arg(row.y)
                                             .arg(z, num(left.values.z, 17), num(left.x, 17),
-                                                 num(span.perPixel.z, 17), num(span.values.z, 17));
+                                                 term(span.perPixel.z), num(span.values.z, 17));
     if (row.xEnd - row.xBegin > 1) {
         rl::DdaSpan stepped = span;
         for (int x = row.xBegin; x < row.xEnd - 1; ++x) stepped.next();
