@@ -148,6 +148,7 @@ private slots:
     void unknownMistakeIsUnexplained();
     void fittedLightingComposes();
     void fitsWhatTheirLightingUsed();
+    void namesAColourScaledBy255();
     void commandFileOfAnIndependentRenderer_data();
     void commandFileOfAnIndependentRenderer();
 };
@@ -376,6 +377,52 @@ void TestCompareStudents::fittedLightingComposes() {
 
 // The lighting fitted to their colours: where their light effectively was, and their ambient
 // term, against what the student's program was given.
+void TestCompareStudents::namesAColourScaledBy255() {
+    // Divided by 255, the goblet's colours truncate to 0 or 1: black where it covers, too far
+    // off for the least-squares scale, which leaves out the channels either side clamps.
+    {
+        COMPARE_STUDENT(result, QStringLiteral("goblet"),
+                        (QStringList{QStringLiteral("--color-scale"),
+                                     QString::number(1.0 / 255.0, 'g', 17)}));
+        qInfo("divided by 255: %s", qPrintable(ranking(result)));
+        const QJsonArray diagnosis = result[QStringLiteral("diagnosis")].toArray();
+        QVERIFY2(!diagnosis.isEmpty(), qPrintable(run.out));
+        QCOMPARE(diagnosis.first()[QStringLiteral("mistake")].toString(),
+                 QStringLiteral("colour-scale"));
+        QCOMPARE(diagnosis.first()[QStringLiteral("title")].toString(),
+                 QStringLiteral("every colour divided by 255: a colour scaled to 0..1 where the "
+                                "scene's are 0..255"));
+        QVERIFY2(diagnosis.first()[QStringLiteral("share")].toDouble() >= 0.99,
+                 qPrintable(ranking(result)));
+        QVERIFY2(result[QStringLiteral("unexplained")][QStringLiteral("share")].toDouble() <= 0.01,
+                 qPrintable(ranking(result)));
+    }
+    // Multiplied by 255, every covered channel saturates: one colour, white, which is also
+    // what an unlit program draws, so the summary says both.
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        QString problem;
+        const CourseScene course = lesson(QStringLiteral("goblet"));
+        const QString image = studentImage(
+            dir, course, {QStringLiteral("--color-scale"), QStringLiteral("255")}, problem);
+        QVERIFY2(!image.isEmpty(), qPrintable(problem));
+        CliRun run;
+        QVERIFY(runCli(QStringList{QStringLiteral("compare")} + course.options() +
+                           QStringList{QStringLiteral("--image"), image},
+                       dir.path(), run));
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.out.contains(QStringLiteral("your image is unlit: one colour (255, 255, 255, "
+                                                 "255) wherever it covers")),
+                 qPrintable(run.out));
+        QVERIFY2(run.out.contains(QStringLiteral(
+                     "  white wherever it covers is also what a lit image becomes with every "
+                     "colour multiplied by 255 (a colour scaled by 255 where it was already "
+                     "0..255)\n")),
+                 qPrintable(run.out));
+    }
+}
+
 void TestCompareStudents::fitsWhatTheirLightingUsed() {
     const auto fitOf = [](const QJsonObject& result) {
         QMap<QString, QJsonObject> values;

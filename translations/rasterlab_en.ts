@@ -2211,271 +2211,281 @@
     </message>
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
+        <source>every colour multiplied by 255: a colour scaled by 255 where it was already 0..255</source>
+        <translation>every colour multiplied by 255: a colour scaled by 255 where it was already 0..255</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
+        <source>every colour divided by 255: a colour scaled to 0..1 where the scene&apos;s are 0..255</source>
+        <translation>every colour divided by 255: a colour scaled to 0..1 where the scene's are 0..255</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
         <source>the scene rendered again with the light where that transform puts it gives their pixels</source>
         <translation>the scene rendered again with the light where that transform puts it gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
         <source>the scene rendered again with the farther fragment winning gives their pixels</source>
         <translation>the scene rendered again with the farther fragment winning gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
         <source>our bytes moved by that constant give their pixels</source>
         <translation>our bytes moved by that constant give their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="643"/>
         <source>our colours multiplied by that constant give their pixels</source>
         <translation>our colours multiplied by that constant give their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
         <source>seed 000: the light goes to view coordinates as the vertices do, Pl_view = [I](Pl - C)</source>
         <translation>seed 000: the light goes to view coordinates as the vertices do, Pl_view = [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
         <source>seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis</source>
         <translation>seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
         <source>V points from the surface to the camera: V = -P&apos; in view coordinates, and L = Pl - P&apos;</source>
         <translation>V points from the surface to the camera: V = -P&apos; in view coordinates, and L = Pl - P&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="643"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
         <source>seed 000&apos;s ambient term is Ia*ka</source>
         <translation>seed 000&apos;s ambient term is Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="648"/>
         <source>add the terms as real numbers and make a byte once, at the end</source>
         <translation>add the terms as real numbers and make a byte once, at the end</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
         <source>seed 000&apos;s special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</source>
         <translation>seed 000&apos;s special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
         <source>the z-buffer starts at +infinity and a fragment is written when its z is smaller</source>
         <translation>the z-buffer starts at +infinity and a fragment is written when its z is smaller</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="651"/>
         <source>look for a constant added to every colour, or bytes made with an offset</source>
         <translation>look for a constant added to every colour, or bytes made with an offset</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="648"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="652"/>
         <source>look for a factor on every colour: an intensity scaled, or another colour scale</source>
         <translation>look for a factor on every colour: an intensity scaled, or another colour scale</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="653"/>
         <source>%1; no pixel that matches now would change</source>
         <translation>%1; no pixel that matches now would change</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="654"/>
         <source>%2; %1 pixel that matches now would differ</source>
         <translation>%2; %1 pixel that matches now would differ</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="651"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="655"/>
         <source>%2; %1 pixels that match now would differ</source>
         <translation>%2; %1 pixels that match now would differ</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="653"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="657"/>
         <source>cannot read the texture %1: %2</source>
         <translation>cannot read the texture %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="655"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="659"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="664"/>
         <source>cannot open: %1</source>
         <translation>cannot open: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="661"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>the file has %1 MiB, more than the %2 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="663"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="667"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>the file has more than the %1 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="669"/>
         <source>not enough memory to read this file</source>
         <translation>not enough memory to read this file</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="666"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="670"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="669"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="673"/>
         <source>the object is not edited, so not saved</source>
         <translation>the object is not edited, so not saved</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="670"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="674"/>
         <source>cannot write into the built-in resources</source>
         <translation>cannot write into the built-in resources</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="675"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>the camera was not saved, as it would not load again: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="672"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="676"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>not saved: the text written does not read back as the same values</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="674"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="678"/>
         <source>cannot write the file: %1</source>
         <translation>cannot write the file: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="675"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="679"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>only %1 of %2 bytes could be written (is the disk full?)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="676"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="680"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>cannot write the file (it is left as it was): %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="678"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="682"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[rows, fragments], two whole numbers</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="679"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="683"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[width, height], whole numbers from %1 to %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="680"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
         <source>a list</source>
         <translation>a list</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="681"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
         <source>a list of %1 numbers</source>
         <translation>a list of %1 numbers</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="682"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="686"/>
         <source>a list of 1 to 8 lights</source>
         <translation>a list of 1 to 8 lights</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="683"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="687"/>
         <source>a list of dock names</source>
         <translation>a list of dock names</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="688"/>
         <source>a number</source>
         <translation>a number</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="689"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>a positive number or &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="686"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="690"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>a positive number or &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="687"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="691"/>
         <source>a whole number from %1</source>
         <translation>a whole number from %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="688"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="692"/>
         <source>an object</source>
         <translation>an object</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="689"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="693"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>expected %1 for &quot;%2&quot;, found %3</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="690"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="694"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="692"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="696"/>
         <source>not a lesson file: %1</source>
         <translation>not a lesson file: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="693"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="697"/>
         <source>nothing</source>
         <translation>nothing</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="694"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="698"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="695"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="699"/>
         <source>one of %1</source>
         <translation>one of %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="696"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="700"/>
         <source>text in quotes</source>
         <translation>text in quotes</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="697"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="701"/>
         <source>the text &apos;%1&apos;</source>
         <translation>the text &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="698"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="702"/>
         <source>true or false</source>
         <translation>true or false</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="699"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="703"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>unknown key &quot;%1&quot; ignored (known here: %2)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="734"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="738"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="740"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="744"/>
         <source>%1: warning: %2</source>
         <translation>%1: warning: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="741"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="745"/>
         <source>%1: note: %2</source>
         <translation>%1: note: %2</translation>
     </message>
@@ -3569,32 +3579,32 @@
         <translation>Their image is unlit: one colour %1 wherever it covers. Only coverage is compared (our covered pixels in that colour), and only projection and scan conversion mistakes are tried.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="470"/>
+        <location filename="../app/window/compare_panel.cpp" line="474"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Largest difference per channel: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="471"/>
+        <location filename="../app/window/compare_panel.cpp" line="475"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Mean difference per channel, over the differing pixels: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="473"/>
+        <location filename="../app/window/compare_panel.cpp" line="477"/>
         <source>Pixels covered: %1 by both, %2 only by ours (our depth buffer), %3 only by theirs (not the background).</source>
         <translation>Pixels covered: %1 by both, %2 only by ours (our depth buffer), %3 only by theirs (not the background).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="493"/>
+        <location filename="../app/window/compare_panel.cpp" line="497"/>
         <source>Diagnosis, each mistake applied before the next is ranked:</source>
         <translation>Diagnosis, each mistake applied before the next is ranked:</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="499"/>
+        <location filename="../app/window/compare_panel.cpp" line="503"/>
         <source>Removes %1% of the difference; makes %2 differing pixels match.</source>
         <translation>Removes %1% of the difference; makes %2 differing pixels match.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="480"/>
+        <location filename="../app/window/compare_panel.cpp" line="484"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</translation>
     </message>
@@ -3674,102 +3684,107 @@
         <translation>specular Il*ks B</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="487"/>
+        <location filename="../app/window/compare_panel.cpp" line="470"/>
+        <source>White wherever it covers is also what a lit image becomes with every colour multiplied by 255 (a colour scaled by 255 where it was already 0..255).</source>
+        <translation>White wherever it covers is also what a lit image becomes with every colour multiplied by 255 (a colour scaled by 255 where it was already 0..255).</translation>
+    </message>
+    <message>
+        <location filename="../app/window/compare_panel.cpp" line="491"/>
         <source>The images are the same.</source>
         <translation>The images are the same.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="489"/>
+        <location filename="../app/window/compare_panel.cpp" line="493"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnosis: none of the mistakes RasterLab knows explains these differences.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="504"/>
+        <location filename="../app/window/compare_panel.cpp" line="508"/>
         <source>Evidence: %1</source>
         <translation>Evidence: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="505"/>
+        <location filename="../app/window/compare_panel.cpp" line="509"/>
         <source>Check: %1</source>
         <translation>Check: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="507"/>
+        <location filename="../app/window/compare_panel.cpp" line="511"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>At (%1, %2): ours %3, theirs %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="517"/>
+        <location filename="../app/window/compare_panel.cpp" line="521"/>
         <source>Unexplained: %1% of the difference; %2 pixels still differ with every mistake above applied.</source>
         <translation>Unexplained: %1% of the difference; %2 pixels still differ with every mistake above applied.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="525"/>
+        <location filename="../app/window/compare_panel.cpp" line="529"/>
         <source>None of the known mistakes explains most of this difference.</source>
         <translation>None of the known mistakes explains most of this difference.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="530"/>
+        <location filename="../app/window/compare_panel.cpp" line="534"/>
         <source>Lighting fitted to their colours</source>
         <translation>Lighting fitted to their colours</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="531"/>
+        <location filename="../app/window/compare_panel.cpp" line="535"/>
         <source>%1 pixels inside triangles: rms %2 with ours, %3 fitted.</source>
         <translation>%1 pixels inside triangles: rms %2 with ours, %3 fitted.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="538"/>
+        <location filename="../app/window/compare_panel.cpp" line="542"/>
         <source>%1: theirs %2 ± %3, ours %4</source>
         <translation>%1: theirs %2 ± %3, ours %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="556"/>
+        <location filename="../app/window/compare_panel.cpp" line="560"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Pick a pixel (here or on the image) to see their colour beside ours.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="564"/>
+        <location filename="../app/window/compare_panel.cpp" line="568"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): theirs %3, ours %4.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="571"/>
+        <location filename="../app/window/compare_panel.cpp" line="575"/>
         <source>minus %1 in %2</source>
         <translation>minus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="572"/>
+        <location filename="../app/window/compare_panel.cpp" line="576"/>
         <source>plus %1 in %2</source>
         <translation>plus %1 in %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="575"/>
+        <location filename="../app/window/compare_panel.cpp" line="579"/>
         <source>Their colour is ours.</source>
         <translation>Their colour is ours.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="579"/>
+        <location filename="../app/window/compare_panel.cpp" line="583"/>
         <source>Their colour is ours %1.</source>
         <translation>Their colour is ours %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="581"/>
+        <location filename="../app/window/compare_panel.cpp" line="585"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>The scene has changed since the comparison: the lighting shown now is not the one compared.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="593"/>
+        <location filename="../app/window/compare_panel.cpp" line="597"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>No triangle of ours covers this pixel: it is the background.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="597"/>
+        <location filename="../app/window/compare_panel.cpp" line="601"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>The lighting of this pixel is not known.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="599"/>
+        <location filename="../app/window/compare_panel.cpp" line="603"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</translation>
     </message>

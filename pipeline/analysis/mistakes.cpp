@@ -177,6 +177,12 @@ Message titleOf(const OurFrame& ours, const Slip& slip) {
             return "every covered pixel's colour off by %1 (a constant offset)"_msg(
                 static_cast<int>(std::lround(slip.amount)));
         case Mistake::ColourScale:
+            if (slip.amount == 255.0)
+                return "every colour multiplied by 255: a colour scaled by 255 where it was "
+                       "already 0..255"_msg;
+            if (slip.amount == 1.0 / 255.0)
+                return "every colour divided by 255: a colour scaled to 0..1 where the scene's "
+                       "are 0..255"_msg;
             return "every colour multiplied by %1 (a constant scale)"_msg(formatNumber(slip.amount));
         case Mistake::VertexNormalsUnnormalised:
             return "the vertex normals left at the length of their sums (not normalised)"_msg;
@@ -508,6 +514,20 @@ public:
                     oursTheirs += (ours + half) * (theirs + half);
                     oursSquared += (ours + half) * (ours + half);
                 });
+                // Colours taken in 0..1 where the scene's are 0..255, or the other way: theirs
+                // all but black (at most 1) or all white where ours is neither; too far off
+                // for the fit below, which leaves out the channels either side clamps.
+                std::size_t mid = 0, black = 0, white = 0;
+                forCoveredChannels(current, [&](int ours, int theirs) {
+                    if (ours < 8 || ours > 247) return;
+                    ++mid;
+                    black += theirs <= 1 ? 1 : 0;
+                    white += theirs == 255 ? 1 : 0;
+                });
+                if (mid > 0 && std::max(black, white) * 10 >= mid * 9) {
+                    slip.amount = black > white ? 1.0 / 255.0 : 255.0;
+                    return {slip};
+                }
                 if (oursSquared == 0.0) return {};
                 const double estimate = std::round(oursTheirs / oursSquared * 1000.0) / 1000.0;
                 if (std::abs(estimate - 1.0) < 0.004) return {};

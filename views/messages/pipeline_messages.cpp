@@ -633,6 +633,10 @@ const char* const kCatalogue[] = {
     QT_TRANSLATE_NOOP("Messages", "the depth test reversed: the farther fragment wins (> against a buffer cleared to -infinity, or to 0)"),
     QT_TRANSLATE_NOOP("Messages", "every covered pixel's colour off by %1 (a constant offset)"),
     QT_TRANSLATE_NOOP("Messages", "every colour multiplied by %1 (a constant scale)"),
+    QT_TRANSLATE_NOOP("Messages", "every colour multiplied by 255: a colour scaled by 255 where it "
+                                  "was already 0..255"),
+    QT_TRANSLATE_NOOP("Messages", "every colour divided by 255: a colour scaled to 0..1 where the "
+                                  "scene's are 0..255"),
     QT_TRANSLATE_NOOP("Messages", "the scene rendered again with the light where that transform puts it gives their pixels"),
     QT_TRANSLATE_NOOP("Messages", "the scene rendered again with the farther fragment winning gives their pixels"),
     QT_TRANSLATE_NOOP("Messages", "our bytes moved by that constant give their pixels"),
