@@ -2217,7 +2217,7 @@
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
         <source>every colour divided by 255: a colour scaled to 0..1 where the scene&apos;s are 0..255</source>
-        <translation>every colour divided by 255: a colour scaled to 0..1 where the scene's are 0..255</translation>
+        <translation>every colour divided by 255: a colour scaled to 0..1 where the scene&apos;s are 0..255</translation>
     </message>
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
@@ -7602,41 +7602,46 @@
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="469"/>
+        <source>The depth test&apos;s z there: %1 (stepped by seed 001&apos;s DDA in double, then rounded to float).</source>
+        <translation>The depth test's z there: %1 (stepped by seed 001's DDA in double, then rounded to float).</translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="473"/>
         <source>z = 1 / (1/z) = %1; the depth test&apos;s z there: %2 (from the barycentrics, in float).</source>
         <translation>z = 1 / (1/z) = %1; the depth test&apos;s z there: %2 (from the barycentrics, in float).</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="472"/>
+        <location filename="../views/trapezoid_view.cpp" line="476"/>
         <source>The depth test&apos;s z there: %1 (from the barycentrics, in float).</source>
         <translation>The depth test&apos;s z there: %1 (from the barycentrics, in float).</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="480"/>
+        <location filename="../views/trapezoid_view.cpp" line="484"/>
         <source>The row through the middle vertex belongs to the lower trapezoid only, so no row is scanned twice.</source>
         <translation>The row through the middle vertex belongs to the lower trapezoid only, so no row is scanned twice.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="484"/>
+        <location filename="../views/trapezoid_view.cpp" line="488"/>
         <source>Pixel (i, j) is sampled at (i + %1, j + %1): t_j and t_i use those.</source>
         <translation>Pixel (i, j) is sampled at (i + %1, j + %1): t_j and t_i use those.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="486"/>
+        <location filename="../views/trapezoid_view.cpp" line="490"/>
         <source>Top-left rule: a sample exactly on the bottom vertex&apos;s row or on R belongs to the next triangle.</source>
         <translation>Top-left rule: a sample exactly on the bottom vertex&apos;s row or on R belongs to the next triangle.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="488"/>
+        <location filename="../views/trapezoid_view.cpp" line="492"/>
         <source>Inclusive rule: samples exactly on L, R or the bottom row are inside.</source>
         <translation>Inclusive rule: samples exactly on L, R or the bottom row are inside.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="491"/>
+        <location filename="../views/trapezoid_view.cpp" line="495"/>
         <source>These rules interpolate colours perspective-correctly (weights over w): the lerps of the seed, linear on the screen, are what the course rules do; the rows and pixels are the same either way.</source>
         <translation>These rules interpolate colours perspective-correctly (weights over w): the lerps of the seed, linear on the screen, are what the course rules do; the rows and pixels are the same either way.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="496"/>
+        <location filename="../views/trapezoid_view.cpp" line="500"/>
         <source>The same rows and pixels as the edge walk (scan conversion view): L_i and R_i are where the scanline crosses the triangle&apos;s edges.</source>
         <translation>The same rows and pixels as the edge walk (scan conversion view): L_i and R_i are where the scanline crosses the triangle&apos;s edges.</translation>
     </message>

@@ -7602,41 +7602,46 @@
     </message>
     <message>
         <location filename="../views/trapezoid_view.cpp" line="469"/>
+        <source>The depth test&apos;s z there: %1 (stepped by seed 001&apos;s DDA in double, then rounded to float).</source>
+        <translation>O z do teste de profundidade ali: %1 (avançado pelo DDA da semente 001 em double, depois arredondado para float).</translation>
+    </message>
+    <message>
+        <location filename="../views/trapezoid_view.cpp" line="473"/>
         <source>z = 1 / (1/z) = %1; the depth test&apos;s z there: %2 (from the barycentrics, in float).</source>
         <translation>z = 1 / (1/z) = %1; o z do teste de profundidade ali: %2 (a partir das coordenadas baricêntricas, em float).</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="472"/>
+        <location filename="../views/trapezoid_view.cpp" line="476"/>
         <source>The depth test&apos;s z there: %1 (from the barycentrics, in float).</source>
         <translation>O z do teste de profundidade ali: %1 (a partir das coordenadas baricêntricas, em float).</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="480"/>
+        <location filename="../views/trapezoid_view.cpp" line="484"/>
         <source>The row through the middle vertex belongs to the lower trapezoid only, so no row is scanned twice.</source>
         <translation>A linha que passa pelo vértice do meio pertence só ao trapézio inferior, então nenhuma linha é varrida duas vezes.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="484"/>
+        <location filename="../views/trapezoid_view.cpp" line="488"/>
         <source>Pixel (i, j) is sampled at (i + %1, j + %1): t_j and t_i use those.</source>
         <translation>O pixel (i, j) é amostrado em (i + %1, j + %1): t_j e t_i usam esses valores.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="486"/>
+        <location filename="../views/trapezoid_view.cpp" line="490"/>
         <source>Top-left rule: a sample exactly on the bottom vertex&apos;s row or on R belongs to the next triangle.</source>
         <translation>Regra top-left: uma amostra exatamente na linha do vértice da base ou sobre R pertence ao triângulo seguinte.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="488"/>
+        <location filename="../views/trapezoid_view.cpp" line="492"/>
         <source>Inclusive rule: samples exactly on L, R or the bottom row are inside.</source>
         <translation>Regra inclusiva: as amostras exatamente sobre L, sobre R ou na linha da base estão dentro.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="491"/>
+        <location filename="../views/trapezoid_view.cpp" line="495"/>
         <source>These rules interpolate colours perspective-correctly (weights over w): the lerps of the seed, linear on the screen, are what the course rules do; the rows and pixels are the same either way.</source>
         <translation>Estas regras interpolam as cores com correção de perspectiva (pesos divididos por w): os lerps da semente, lineares na tela, são o que fazem as regras do curso; as linhas e os pixels são os mesmos de todo modo.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="496"/>
+        <location filename="../views/trapezoid_view.cpp" line="500"/>
         <source>The same rows and pixels as the edge walk (scan conversion view): L_i and R_i are where the scanline crosses the triangle&apos;s edges.</source>
         <translation>As mesmas linhas e pixels do percurso das arestas (painel de conversão por varredura): L_i e R_i são onde a linha de varredura cruza as arestas do triângulo.</translation>
     </message>

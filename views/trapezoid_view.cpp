@@ -465,7 +465,11 @@ QString TrapezoidView::explanationHtml() const {
             const rl::FragmentDepth fragment = rl::fragmentDepth(
                 scene, *frame.projection, m.triangle, row.j, row.xBegin, *m.pixel);
             html += QStringLiteral("<br>") +
-                    (m.inverseDepth
+                    (rules.scan == rl::RasterRules::Scan::Dda
+                         ? tr("The depth test's z there: %1 (stepped by seed 001's DDA in "
+                              "double, then rounded to float).")
+                               .arg(number(fragment.depth))
+                     : m.inverseDepth
                          ? tr("z = 1 / (1/z) = %1; the depth test's z there: %2 (from the "
                               "barycentrics, in float).")
                                .arg(number(1.0 / p.pz), number(fragment.depth))

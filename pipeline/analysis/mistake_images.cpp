@@ -251,8 +251,12 @@ Result<FrameTrace> farthestFrame(std::shared_ptr<Scene> scene) {
     const bool range = scene->conventions.depthRangeClip;
     for (DrawProjection& draw : projection.draws)
         for (float& z : draw.depth) z = range ? 1.0f - z : -z;
+    // The DDA (hw2 rules) steps the depths as it scans: its spans carry the unflipped ones.
+    const bool dda = scene->rules.scan == RasterRules::Scan::Dda;
+    const ScanConversion flipped =
+        dda ? ScanConversionStage().run({*scene, projection}) : ScanConversion{};
     trace.depth = std::make_shared<const DepthTest>(
-        DepthTestStage().run({*scene, projection, *trace.scan}));
+        DepthTestStage().run({*scene, projection, dda ? flipped : *trace.scan}));
     trace.shading = std::make_shared<const Shading>(ShadingStage().run(
         {*scene, *trace.view, *trace.normals, *trace.projection, *trace.depth}));
     return trace;

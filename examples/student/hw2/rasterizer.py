@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """HW2: 3D Rasterizer, as a student writes it (Python 3.11, standard library).
 
-    python3 rasterizer.py FILE.txt [--ignore-multmv]
+    python3 rasterizer.py FILE.txt [--ignore-multmv] [--depth-reversed]
 
 Reads the command file and writes every PNG its `png` commands name, in the
 current folder.  Unsupported commands are reported as FILE:LINE and skipped.
@@ -141,10 +141,13 @@ def write_png(filename, width, height, rgba):
 
 
 class Image:
-    def __init__(self, width, height, filename):
+    def __init__(self, width, height, filename, depth_reversed=False):
         self.width, self.height, self.filename = width, height, filename
         self.rgba = bytearray(width * height * 4)
-        self.depth = [1.0] * (width * height)
+        # --depth-reversed: the classic slip, a buffer cleared to 0 and the
+        # farther fragment kept.
+        self.depth_reversed = depth_reversed
+        self.depth = [0.0 if depth_reversed else 1.0] * (width * height)
 
     def fragment(self, x, y, z, color):
         """Per-pixel clipping, depth test, then set the pixel."""
@@ -153,7 +156,7 @@ class Image:
         if not (0.0 <= z <= 1.0):
             return
         i = y * self.width + x
-        if z > self.depth[i]:
+        if (z < self.depth[i]) if self.depth_reversed else (z > self.depth[i]):
             return
         self.depth[i] = z
         self.rgba[4 * i:4 * i + 4] = bytes(to_byte(c) for c in color) + b'\xff'
@@ -235,8 +238,9 @@ def bezier_patch(grid, s, t):
 
 
 class Rasterizer:
-    def __init__(self, ignore_multmv=False):
+    def __init__(self, ignore_multmv=False, depth_reversed=False):
         self.ignore_multmv = ignore_multmv
+        self.depth_reversed = depth_reversed
         self.images = []
         self.image = None
         self.vertices = []        # [x, y, z, w, r, g, b]
@@ -317,7 +321,8 @@ class Rasterizer:
             raise ValueError(f'{self.ARGS[cmd]} arguments expected')
         nums = lambda: [float(a) for a in args]
         if cmd == 'png':
-            self.image = Image(int(args[0]), int(args[1]), args[2])
+            self.image = Image(int(args[0]), int(args[1]), args[2],
+                               self.depth_reversed)
             self.images.append(self.image)
         elif cmd == 'xyz':
             self.vertices.append(nums()[:3] + [1.0] + self.color)
@@ -366,12 +371,13 @@ class Rasterizer:
 
 def main(argv):
     ignore_multmv = '--ignore-multmv' in argv
+    depth_reversed = '--depth-reversed' in argv
     files = [a for a in argv[1:] if not a.startswith('--')]
     if len(files) != 1:
-        print('usage: rasterizer.py FILE.txt [--ignore-multmv]',
-              file=sys.stderr)
+        print('usage: rasterizer.py FILE.txt [--ignore-multmv] '
+              '[--depth-reversed]', file=sys.stderr)
         return 2
-    r = Rasterizer(ignore_multmv)
+    r = Rasterizer(ignore_multmv, depth_reversed)
     with open(files[0]) as f:
         lines = f.read().splitlines()
     status = 0
