@@ -516,7 +516,10 @@ public:
                 });
                 // Colours taken in 0..1 where the scene's are 0..255, or the other way: theirs
                 // all but black (at most 1) or all white where ours is neither; too far off
-                // for the fit below, which leaves out the channels either side clamps.
+                // for the fit below, which leaves out the channels either side clamps. Tried
+                // beside the fit's estimate (a large scale such as 10 saturates most channels
+                // too), for the difference to decide.
+                std::vector<Slip> out;
                 std::size_t mid = 0, black = 0, white = 0;
                 forCoveredChannels(current, [&](int ours, int theirs) {
                     if (ours < 8 || ours > 247) return;
@@ -526,11 +529,11 @@ public:
                 });
                 if (mid > 0 && std::max(black, white) * 10 >= mid * 9) {
                     slip.amount = black > white ? 1.0 / 255.0 : 255.0;
-                    return {slip};
+                    out.push_back(slip);
                 }
-                if (oursSquared == 0.0) return {};
+                if (oursSquared == 0.0) return out;
                 const double estimate = std::round(oursTheirs / oursSquared * 1000.0) / 1000.0;
-                if (std::abs(estimate - 1.0) < 0.004) return {};
+                if (std::abs(estimate - 1.0) < 0.004) return out;
                 // A scale when at least half those channels are within 2 of it.
                 std::size_t near = 0, all = 0;
                 forCoveredChannels(current, [&](int ours, int theirs) {
@@ -538,8 +541,7 @@ public:
                     ++all;
                     near += std::abs(theirs - ours * estimate) <= 2.0 ? 1 : 0;
                 });
-                if (near * 2 < all) return {};
-                std::vector<Slip> out;
+                if (near * 2 < all) return out;
                 for (double step : {0.0, -0.001, 0.001}) {
                     slip.amount = estimate + step;
                     out.push_back(slip);
