@@ -937,10 +937,40 @@ QString ScanlineView::scanlineHtml(const ScanlineModel& m, const rl::Scene& scen
     return html;
 }
 
+// The ends of a row's span: its first pixel, and its last when it has more than one.
+std::vector<const SpanEnd*> ScanlineView::spanEnds(const ScanRowInfo& row) {
+    std::vector<const SpanEnd*> ends{&*row.first};
+    if (row.xEnd - row.xBegin > 1) ends.push_back(&*row.last);
+    return ends;
+}
+
+// The table of the span's ends: each one's barycentrics, depth and normal.
+QString ScanlineView::spanEndsTable(const ScanRowInfo& row) const {
+    QString html = QStringLiteral(
+                       "<table cellspacing='0' cellpadding='3' border='1'><tr><th></th>"
+                       "<th>&alpha;, &beta;, &gamma;</th><th>") +
+                   tr("depth") + QStringLiteral("</th><th>") + tr("normal") +
+                   QStringLiteral("</th></tr>");
+    for (const SpanEnd* e : spanEnds(row)) {
+        const QString normal = !e->hasNormal                 ? tr("not computed (nothing is lit)")
+                               : e->normal == rl::vec3(0.0f) ? tr("zero")
+                                                             : vector(e->normal, 'g', 4);
+        html +=
+            QStringLiteral(
+                "<tr><th>(%1, %2)</th><td nowrap>%3, %4, %5</td><td><b>%6</b></td>"
+                "<td nowrap>%7</td></tr>")
+                .arg(e->x)
+                .arg(e->y)
+                .arg(num(e->alpha, 4), num(e->beta, 4), num(e->gamma, 4), num(e->depth), normal);
+    }
+    return html + QStringLiteral("</table>");
+}
+
 // The depth and the normal at both ends of the span, from the barycentrics of their samples.
 QString ScanlineView::spanEndsHtml(const ScanlineModel& m, const rl::FrameTrace& frame) const {
     const rl::Scene& scene = *frame.scene;
     const rl::RasterRules& rules = scene.rules;
+    if (rules.scan == rl::RasterRules::Scan::Dda) return ddaSpanEndsHtml(m, frame);
     const double offset = rules.sampleOffset;
     const ScanRowInfo& row = *m.row;
     const rl::ScreenTriangle& tri = frame.projection->triangles[m.triangle];
@@ -948,7 +978,6 @@ QString ScanlineView::spanEndsHtml(const ScanlineModel& m, const rl::FrameTrace&
     const bool perspective = rl::perspectiveDepth(scene);
     const float z1 = draw.depth[tri.v[0]], z2 = draw.depth[tri.v[1]], z3 = draw.depth[tri.v[2]];
     const std::array<rl::dvec2, 3> p = rl::screenVertices(*frame.projection, tri);
-    if (rules.scan == rl::RasterRules::Scan::Dda) return ddaSpanEndsHtml(m, frame);
     QString html = QStringLiteral("<p>") +
                    tr("At the ends of the span, the barycentrics (&alpha;, &beta;, &gamma;) of the "
                       "sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the "
@@ -959,23 +988,10 @@ QString ScanlineView::spanEndsHtml(const ScanlineModel& m, const rl::FrameTrace&
                               "1/z1) (perspective-correct: 1/z is linear on the screen)")
                          : tr("z = z1 + &beta; (z2 &minus; z1) + &gamma; (z3 &minus; z1)")) +
             QStringLiteral("</i></p>");
-    html += QStringLiteral(
-                "<table cellspacing='0' cellpadding='3' border='1'><tr><th></th>"
-                "<th>&alpha;, &beta;, &gamma;</th><th>") +
-            tr("depth") + QStringLiteral("</th><th>") + tr("normal") + QStringLiteral("</th></tr>");
-    std::vector<const SpanEnd*> ends{&*row.first};
-    if (row.xEnd - row.xBegin > 1) ends.push_back(&*row.last);
+    html += spanEndsTable(row);
     QString lines;
-    for (const SpanEnd* e : ends) {
+    for (const SpanEnd* e : spanEnds(row)) {
         const QString which = QStringLiteral("(%1, %2)").arg(e->x).arg(e->y);
-        const QString normal = !e->hasNormal                 ? tr("not computed (nothing is lit)")
-                               : e->normal == rl::vec3(0.0f) ? tr("zero")
-                                                             : vector(e->normal, 'g', 4);
-        html += QStringLiteral(
-                    "<tr><th>%1</th><td nowrap>%2, %3, %4</td><td><b>%5</b></td>"
-                    "<td nowrap>%6</td></tr>")
-                    .arg(which, num(e->alpha, 4), num(e->beta, 4), num(e->gamma, 4), num(e->depth),
-                         normal);
         if (perspective)
             lines += QStringLiteral("<br>%1: z = 1 / (%2 + %3 &times; %4 + %5 &times; %6) = %7")
                          .arg(which, num(1.0f / z1), num(e->beta), num(1.0f / z2 - 1.0f / z1),
@@ -985,7 +1001,7 @@ QString ScanlineView::spanEndsHtml(const ScanlineModel& m, const rl::FrameTrace&
                          .arg(which, num(z1), num(e->beta), num(z2 - z1), num(e->gamma),
                               num(z3 - z1), num(e->depth));
     }
-    html += QStringLiteral("</table><p>") +
+    html += QStringLiteral("<p>") +
             (offset == 0.0 ? tr("Pixel (x, y) is sampled at the point (x, y) itself.")
                            : tr("Pixel (x, y) is sampled at (x + %1, y + %1).").arg(num(offset))) +
             lines + QStringLiteral("</p>");
@@ -1005,12 +1021,8 @@ QString ScanlineView::ddaSpanEndsHtml(const ScanlineModel& m, const rl::FrameTra
     const rl::Scene& scene = *frame.scene;
     const ScanRowInfo& row = *m.row;
     const bool perspective = rl::perspectiveDepth(scene);
-    const std::array<rl::DdaValues, 3> v =
-        rl::ddaVertexValues(scene, *frame.projection, m.triangle, m.setup);
-    const auto& s = m.setup.sorted;
-    const rl::DdaEdge longEdge = rl::ddaEdgeAtRow(s[0], s[2], row.y, v[0], v[2]);
-    const rl::DdaEdge shortEdge = row.upperPart ? rl::ddaEdgeAtRow(s[0], s[1], row.y, v[0], v[1])
-                                                : rl::ddaEdgeAtRow(s[1], s[2], row.y, v[1], v[2]);
+    const auto [longEdge, shortEdge] = rl::ddaEdgesAtRow(
+        m.setup, rl::ddaVertexValues(scene, *frame.projection, m.triangle, m.setup), row.y);
     const rl::DdaEdge& left = longEdge.x <= shortEdge.x ? longEdge : shortEdge;
     const rl::DdaEdge& right = longEdge.x <= shortEdge.x ? shortEdge : longEdge;
     const rl::DdaSpan span = rl::ddaSpan(longEdge, shortEdge, row.xBegin);
@@ -1031,30 +1043,12 @@ QString ScanlineView::ddaSpanEndsHtml(const ScanlineModel& m, const rl::FrameTra
            "&gamma; + %6 a pixel.")
             .arg(z, num(left.values.z, 17), num(right.values.z, 17), term(span.perPixel.z),
                  term(span.perPixel.beta), term(span.perPixel.gamma)) +
-        QStringLiteral(
-            "</p><table cellspacing='0' cellpadding='3' border='1'><tr><th></th>"
-            "<th>&alpha;, &beta;, &gamma;</th><th>") +
-        tr("depth") + QStringLiteral("</th><th>") + tr("normal") + QStringLiteral("</th></tr>");
-    std::vector<const SpanEnd*> ends{&*row.first};
-    if (row.xEnd - row.xBegin > 1) ends.push_back(&*row.last);
-    for (const SpanEnd* e : ends) {
-        const QString normal = !e->hasNormal                 ? tr("not computed (nothing is lit)")
-                               : e->normal == rl::vec3(0.0f) ? tr("zero")
-                                                             : vector(e->normal, 'g', 4);
-        html +=
-            QStringLiteral(
-                "<tr><th>(%1, %2)</th><td nowrap>%3, %4, %5</td><td><b>%6</b></td>"
-                "<td nowrap>%7</td></tr>")
-                .arg(e->x)
-                .arg(e->y)
-                .arg(num(e->alpha, 4), num(e->beta, 4), num(e->gamma, 4), num(e->depth), normal);
-    }
-    html +=
-        QStringLiteral("</table><p>") + tr("(%1, %2): %3 = %4 + (%1 &minus; %5) &times; %6 = %7.")
-                                            .arg(row.xBegin)
-                                            .arg(row.y)
-                                            .arg(z, num(left.values.z, 17), num(left.x, 17),
-                                                 term(span.perPixel.z), num(span.values.z, 17));
+        QStringLiteral("</p>") + spanEndsTable(row);
+    html += QStringLiteral("<p>") + tr("(%1, %2): %3 = %4 + (%1 &minus; %5) &times; %6 = %7.")
+                                        .arg(row.xBegin)
+                                        .arg(row.y)
+                                        .arg(z, num(left.values.z, 17), num(left.x, 17),
+                                             term(span.perPixel.z), num(span.values.z, 17));
     if (row.xEnd - row.xBegin > 1) {
         rl::DdaSpan stepped = span;
         for (int x = row.xBegin; x < row.xEnd - 1; ++x) stepped.next();

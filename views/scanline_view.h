@@ -119,6 +119,8 @@ private:
     QString scanlineHtml(const ScanlineModel& m, const rl::Scene& scene) const;
     QString spanEndsHtml(const ScanlineModel& m, const rl::FrameTrace& frame) const;
     QString ddaSpanEndsHtml(const ScanlineModel& m, const rl::FrameTrace& frame) const;
+    static std::vector<const SpanEnd*> spanEnds(const ScanRowInfo& row);
+    QString spanEndsTable(const ScanRowInfo& row) const;
     static std::array<QString, 3> edgeNames();  // long, upper, lower
 
     std::optional<ScanlineModel> m_model;

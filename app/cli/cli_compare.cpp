@@ -106,7 +106,7 @@ void printText(const rl::ImageComparison& c, const QString& image, const QString
         out << "  your image is unlit: one colour " << bytesText(c.unlitColour)
             << " wherever it covers; only coverage is compared (our covered pixels in that "
                "colour), and only projection and scan conversion mistakes are tried\n";
-    if (c.unlit && c.unlitColour[0] == 255 && c.unlitColour[1] == 255 && c.unlitColour[2] == 255)
+    if (c.unlitWhite())
         out << "  white wherever it covers is also what a lit image becomes with every colour "
                "multiplied by 255 (a colour scaled by 255 where it was already 0..255)\n";
     out << "  " << c.compared << " pixels compared, " << c.differing << " differ ("

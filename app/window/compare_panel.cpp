@@ -466,7 +466,7 @@ void ComparePanel::refreshTexts() {
                       "compared (our covered pixels in that colour), and only projection and "
                       "scan conversion mistakes are tried.")
                        .arg(bytesText(c.unlitColour));
-    if (c.unlit && c.unlitColour[0] == 255 && c.unlitColour[1] == 255 && c.unlitColour[2] == 255)
+    if (c.unlitWhite())
         summary << tr("White wherever it covers is also what a lit image becomes with every "
                       "colour multiplied by 255 (a colour scaled by 255 where it was already "
                       "0..255).");

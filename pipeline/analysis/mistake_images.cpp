@@ -245,18 +245,16 @@ Result<FrameTrace> farthestFrame(std::shared_ptr<Scene> scene) {
         ViewTransformStage().run(*scene, *trace.cameraBasis));
     trace.normals = std::make_shared<const Normals>(NormalsStage().run({*scene, *trace.view}));
     Projection projection = ProjectionStage().run({*scene, *trace.view}, trace.diagnostics);
-    trace.scan = std::make_shared<const ScanConversion>(
-        ScanConversionStage().run({*scene, projection}));
     trace.projection = std::make_shared<const Projection>(projection);
     const bool range = scene->conventions.depthRangeClip;
     for (DrawProjection& draw : projection.draws)
         for (float& z : draw.depth) z = range ? 1.0f - z : -z;
-    // The DDA (hw2 rules) steps the depths as it scans: its spans carry the unflipped ones.
-    const bool dda = scene->rules.scan == RasterRules::Scan::Dda;
-    const ScanConversion flipped =
-        dda ? ScanConversionStage().run({*scene, projection}) : ScanConversion{};
+    // Scanned with the flipped depths: the same spans, and the DDA (hw2 rules) steps the depths
+    // as it scans.
+    trace.scan = std::make_shared<const ScanConversion>(
+        ScanConversionStage().run({*scene, projection}));
     trace.depth = std::make_shared<const DepthTest>(
-        DepthTestStage().run({*scene, projection, dda ? flipped : *trace.scan}));
+        DepthTestStage().run({*scene, projection, *trace.scan}));
     trace.shading = std::make_shared<const Shading>(ShadingStage().run(
         {*scene, *trace.view, *trace.normals, *trace.projection, *trace.depth}));
     return trace;

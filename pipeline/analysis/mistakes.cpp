@@ -508,25 +508,23 @@ public:
                 const bool truncated =
                     m_ours.trace->scene->conventions.rounding == ByteRounding::Truncate;
                 const double half = truncated ? 0.5 : 0.0;
+                // In the same pass, colours taken in 0..1 where the scene's are 0..255, or the
+                // other way: theirs all but black (at most 1) or all white where ours is
+                // neither; too far off for the fit, which leaves out the channels either side
+                // clamps. Tried beside the fit's estimate (a large scale such as 10 saturates
+                // most channels too), for the difference to decide.
                 double oursTheirs = 0.0, oursSquared = 0.0;
-                forCoveredChannels(current, [&](int ours, int theirs) {
-                    if (ours < 8 || ours > 247 || theirs == 0 || theirs == 255) return;
-                    oursTheirs += (ours + half) * (theirs + half);
-                    oursSquared += (ours + half) * (ours + half);
-                });
-                // Colours taken in 0..1 where the scene's are 0..255, or the other way: theirs
-                // all but black (at most 1) or all white where ours is neither; too far off
-                // for the fit below, which leaves out the channels either side clamps. Tried
-                // beside the fit's estimate (a large scale such as 10 saturates most channels
-                // too), for the difference to decide.
-                std::vector<Slip> out;
                 std::size_t mid = 0, black = 0, white = 0;
                 forCoveredChannels(current, [&](int ours, int theirs) {
                     if (ours < 8 || ours > 247) return;
                     ++mid;
                     black += theirs <= 1 ? 1 : 0;
                     white += theirs == 255 ? 1 : 0;
+                    if (theirs == 0 || theirs == 255) return;
+                    oursTheirs += (ours + half) * (theirs + half);
+                    oursSquared += (ours + half) * (ours + half);
                 });
+                std::vector<Slip> out;
                 if (mid > 0 && std::max(black, white) * 10 >= mid * 9) {
                     slip.amount = black > white ? 1.0 / 255.0 : 255.0;
                     out.push_back(slip);

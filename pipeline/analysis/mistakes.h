@@ -165,6 +165,10 @@ struct ImageComparison {
     // conversion mistakes alone.
     bool unlit = false;
     std::array<std::uint8_t, 4> unlitColour{};
+    // Unlit in white: also what a lit image becomes with every colour multiplied by 255.
+    bool unlitWhite() const {
+        return unlit && unlitColour[0] == 255 && unlitColour[1] == 255 && unlitColour[2] == 255;
+    }
     std::size_t coveredByBoth = 0;
     // Our image darkened, differing pixels from yellow (a small difference) to red (large),
     // magenta where only we cover a pixel, cyan where only they do.

@@ -150,9 +150,7 @@ ScanRow ddaRow(const TriangleSetup& s, std::int32_t y, std::int32_t width) {
     ScanRow row;
     row.y = y;
     row.upperPart = y <= lastUpperDdaRow(s);
-    const DdaEdge longEdge = ddaEdgeAtRow(s.sorted[0], s.sorted[2], y);
-    const DdaEdge shortEdge = row.upperPart ? ddaEdgeAtRow(s.sorted[0], s.sorted[1], y)
-                                            : ddaEdgeAtRow(s.sorted[1], s.sorted[2], y);
+    const auto [longEdge, shortEdge] = ddaEdgesAtRow(s, {}, y);
     row.xLeft = std::min(longEdge.x, shortEdge.x);
     row.xRight = std::max(longEdge.x, shortEdge.x);
     const DdaPixels p = ddaPixels(longEdge.x, shortEdge.x, width);
@@ -205,16 +203,20 @@ std::array<DdaValues, 3> ddaVertexValues(const Scene& scene, const Projection& p
     return {at(s.order[0]), at(s.order[1]), at(s.order[2])};
 }
 
+DdaRowEdges ddaEdgesAtRow(const TriangleSetup& s, const std::array<DdaValues, 3>& v,
+                          std::int32_t y) {
+    const auto& p = s.sorted;
+    return {ddaEdgeAtRow(p[0], p[2], y, v[0], v[2]), y <= lastUpperDdaRow(s)
+                                                         ? ddaEdgeAtRow(p[0], p[1], y, v[0], v[1])
+                                                         : ddaEdgeAtRow(p[1], p[2], y, v[1], v[2])};
+}
+
 DdaSpan ddaSpanAt(const Scene& scene, const Projection& projection, std::size_t t, std::int32_t y,
                   std::int32_t xBegin) {
     const TriangleSetup s =
         setupTriangle(screenVertices(projection, projection.triangles[t]), scene.rules);
-    const std::array<DdaValues, 3> v = ddaVertexValues(scene, projection, t, s);
-    const DdaEdge longEdge = ddaEdgeAtRow(s.sorted[0], s.sorted[2], y, v[0], v[2]);
-    const DdaEdge shortEdge = y <= lastUpperDdaRow(s)
-                                  ? ddaEdgeAtRow(s.sorted[0], s.sorted[1], y, v[0], v[1])
-                                  : ddaEdgeAtRow(s.sorted[1], s.sorted[2], y, v[1], v[2]);
-    return ddaSpan(longEdge, shortEdge, xBegin);
+    const DdaRowEdges e = ddaEdgesAtRow(s, ddaVertexValues(scene, projection, t, s), y);
+    return ddaSpan(e.longEdge, e.shortEdge, xBegin);
 }
 
 double ScanEdge::xAt(double y) const {

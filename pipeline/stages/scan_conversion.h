@@ -102,6 +102,14 @@ bool perspectiveDepth(const Scene& scene);
 // s, in s's sorted order: the weights (0, 0), (1, 0), (0, 1) and each vertex's depth.
 std::array<DdaValues, 3> ddaVertexValues(const Scene& scene, const Projection& projection,
                                          std::size_t t, const TriangleSetup& s);
+// Row y of a triangle the DDA walks (its set-up s, the attributes v at s's sorted vertices):
+// the long edge and the short edge that bounds the row, each stepped from its first row on
+// the screen to y, as the walk has them there.
+struct DdaRowEdges {
+    DdaEdge longEdge, shortEdge;
+};
+DdaRowEdges ddaEdgesAtRow(const TriangleSetup& s, const std::array<DdaValues, 3>& v,
+                          std::int32_t y);
 // The attributes of the span that starts at pixel xBegin on row y of screen triangle t,
 // stepped as the DDA's walk steps them (the same bits: the views and the stage check show
 // them).
