@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pipeline/analysis/screen_map.h"
 #include "tests/test_support.h"
 
 using testing::CliRun;
@@ -149,6 +150,9 @@ private slots:
     void fittedLightingComposes();
     void fitsWhatTheirLightingUsed();
     void namesAColourScaledBy255();
+    void fitsTheScreenMap_data();
+    void fitsTheScreenMap();
+    void fitsATurnedCoverage();
     void commandFileOfAnIndependentRenderer_data();
     void commandFileOfAnIndependentRenderer();
 };
@@ -167,6 +171,9 @@ void TestCompareStudents::oneMistake_data() {
                                          << "view-vector-reversed";
     QTest::newRow("goblet --l-reversed") << "goblet" << QStringList{"--l-reversed"}
                                          << "view-vector-reversed";
+    // x and y swapped in the pixel's index: the screen map, the whole of it.
+    QTest::newRow("goblet --pixels-transposed") << "goblet" << QStringList{"--pixels-transposed"}
+                                                << "screen-map";
     // The camera basis and the normals stage, rendered as the student's stages make them.
     QTest::newRow("goblet --u-v-cross-n") << "goblet" << QStringList{"--u-v-cross-n"}
                                           << "basis-u-reversed";
@@ -493,6 +500,95 @@ void TestCompareStudents::fitsWhatTheirLightingUsed() {
 // An HW2 command file drawn by examples/student/hw2's rasterizer, written from seed 001
 // alone: as written, it is our image to the byte; with multmv ignored, compare names the line
 // and the misreading, and leaves nothing unexplained.
+void TestCompareStudents::fitsTheScreenMap_data() {
+    QTest::addColumn<QString>("scene");
+    QTest::addColumn<QStringList>("switches");
+    QTest::addColumn<QStringList>("expected");  // in the order found
+    QTest::addColumn<QList<double>>("map");     // xx, xy, yx, yy
+    QTest::addColumn<double>("unexplained");    // at most
+    // y scaled by the width (240 / 180): the warp of ours samples the surface at the nearest
+    // pixel where theirs is drawn anew, so a few percent stay along the edges and the shading.
+    const QList<double> tall = {1.0, 0.0, 0.0, 4.0 / 3.0}, swapped = {0.0, 1.0, 1.0, 0.0};
+    QTest::newRow("goblet --width-for-height")
+        << "goblet" << QStringList{"--width-for-height"} << QStringList{"screen-map"} << tall
+        << 0.04;
+    QTest::newRow("default --width-for-height --ambient-times-od")
+        << "default" << QStringList{"--width-for-height", "--ambient-times-od"}
+        << QStringList{"screen-map", "ambient-times-od"} << tall << 0.04;
+    QTest::newRow("goblet --pixels-transposed --light-in-world")
+        << "goblet" << QStringList{"--pixels-transposed", "--light-in-world"}
+        << QStringList{"screen-map", "light-in-world"} << swapped << 0.01;
+    QTest::newRow("goblet unlit --width-for-height")
+        << "goblet" << QStringList{"--flat-color", "0,200,0", "--width-for-height"}
+        << QStringList{"screen-map"} << tall << 0.03;
+}
+
+// Their projection or pixel writing maps the screen another way: the map fitted to the
+// coverage is the one their program used (the numbers, and the words), ranked with the
+// other mistakes by what each removes.
+void TestCompareStudents::fitsTheScreenMap() {
+    QFETCH(QString, scene);
+    QFETCH(QStringList, switches);
+    QFETCH(QStringList, expected);
+    QFETCH(QList<double>, map);
+    QFETCH(double, unexplained);
+    COMPARE_STUDENT(result, scene, switches);
+    qInfo("%s: %s", QTest::currentDataTag(), qPrintable(ranking(result)));
+    const QJsonArray diagnosis = result[QStringLiteral("diagnosis")].toArray();
+    QStringList found;
+    for (const auto& d : diagnosis) found += d[QStringLiteral("mistake")].toString();
+    QCOMPARE(found, expected);
+    QVERIFY2(result[QStringLiteral("unexplained")][QStringLiteral("share")].toDouble() <= unexplained,
+             qPrintable(ranking(result)));
+    const QJsonObject fitted = diagnosis.first()[QStringLiteral("map")].toObject();
+    const char* const names[] = {"xx", "xy", "yx", "yy"};
+    for (int k = 0; k < 4; ++k)
+        QVERIFY2(std::abs(fitted[QLatin1String(names[k])].toDouble() - map[k]) < 1e-9,
+                 qPrintable(QStringLiteral("%1 = %2").arg(QLatin1String(names[k])).arg(
+                     fitted[QLatin1String(names[k])].toDouble())));
+    // Scaled from the top edge (y = (1 - y_ndc) * width / 2) or swapped about the corner:
+    // no shift but the nearest pixel's.
+    QVERIFY(std::abs(fitted[QStringLiteral("tx")].toDouble()) < 0.5);
+    QVERIFY(std::abs(fitted[QStringLiteral("ty")].toDouble()) < 0.5);
+    const QString title = diagnosis.first()[QStringLiteral("title")].toString();
+    if (map == QList<double>{1.0, 0.0, 0.0, 4.0 / 3.0})
+        QVERIFY2(title.contains(QStringLiteral("stretched 1.333 times up and down, the ratio of "
+                                               "the image's sides (one size used for both axes)")),
+                 qPrintable(title));
+    else
+        QVERIFY2(title.contains(QStringLiteral("x and y swapped (transposed)")), qPrintable(title));
+}
+
+// No student program here turns its image, so the fit is checked on coverage turned by hand:
+// an L shape (no symmetry to confuse it) turned 30 degrees, scaled by 0.8 and moved. The fit
+// finds the map within a hundredth and a pixel, and leaves almost nothing apart.
+void TestCompareStudents::fitsATurnedCoverage() {
+    const int w = 200, h = 150;
+    rl::Coverage ours(w, h), theirs(w, h);
+    const auto inL = [](double x, double y) {
+        return (x >= 40 && x < 70 && y >= 30 && y < 120) || (x >= 40 && x < 130 && y >= 90 && y < 120);
+    };
+    const double c = std::cos(M_PI / 6.0) * 0.8, s = std::sin(M_PI / 6.0) * 0.8;
+    const rl::ScreenMap turned{c, -s, s, c, 60.0, -20.0};
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            ours.at(x, y) = inL(x + 0.5, y + 0.5) ? 1 : 0;
+            const rl::dvec2 q = turned.ourPoint({x + 0.5, y + 0.5});
+            theirs.at(x, y) = inL(q.x, q.y) ? 1 : 0;
+        }
+    const auto fit = rl::fitScreenMap(ours, theirs);
+    QVERIFY(fit);
+    const rl::ScreenMap& m = fit->map;
+    qInfo("fitted %.4f %.4f %.2f / %.4f %.4f %.2f; apart %zu before, %zu after", m.xx, m.xy,
+          m.tx, m.yx, m.yy, m.ty, fit->apartBefore, fit->apartAfter);
+    QVERIFY(std::abs(m.xx - c) < 0.01 && std::abs(m.xy + s) < 0.01);
+    QVERIFY(std::abs(m.yx - s) < 0.01 && std::abs(m.yy - c) < 0.01);
+    // Where the L's corner goes.
+    QVERIFY(glm::length(m.theirPoint({40.0, 120.0}) - turned.theirPoint({40.0, 120.0})) < 1.0);
+    QVERIFY(fit->apartAfter * 20 < fit->apartBefore);
+    QVERIFY(!rl::isPlainMove(m, w, h));
+}
+
 void TestCompareStudents::commandFileOfAnIndependentRenderer_data() {
     QTest::addColumn<QStringList>("switches");
     QTest::addColumn<int>("differing");

@@ -14,7 +14,9 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QListWidget>
+#include <QProgressDialog>
 #include <QPushButton>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QUndoStack>
@@ -37,6 +39,15 @@ bool savePng(const rl::Rgba8Image& image, const QString& path) {
     return QImage(image.rgba.data(), image.width, image.height, image.width * 4,
                   QImage::Format_RGBA8888)
         .save(path, "PNG");
+}
+
+// Our render of the window's frame with these mistakes, saved as their image.
+bool saveWithMistakes(const MainWindow& window, const std::vector<rl::Slip>& slips,
+                      const QString& path) {
+    auto ours = rl::renderOurFrame(window.currentFrame()->scene);
+    if (!ours) return false;
+    auto theirs = rl::imageWithMistakes(ours.value(), slips);
+    return theirs && theirs->has_value() && savePng(**theirs, path);
 }
 
 bool ready(const MainWindow& window) {
@@ -65,9 +76,11 @@ private slots:
 
     void ranksTheMistakeFirst();
     void windowGoesOnDuringACompare();
+    void cancelKeepsTheComparisonBefore();
     void countsAsTheCommandLine();
     void thresholdAndFlicker();
     void pickedPixel();
+    void pickedPixelFollowsTheMove();
     void badImages_data();
     void badImages();
     void compareAgainAfterAChange();
@@ -123,6 +136,52 @@ void TestCompareWindow::windowGoesOnDuringACompare() {
           ticks);
     QVERIFY(ticks > 0);
     QVERIFY(panel()->comparison());
+}
+
+// A compare still running after a moment shows a dialog over the window; its Cancel stops
+// the worker within a few seconds (it checks between hypotheses), says so in the status bar
+// rather than as an error, and the comparison shown before stays. The next compare runs.
+void TestCompareWindow::cancelKeepsTheComparisonBefore() {
+    QVERIFY(m_window.compareWithImage(m_theirPath));
+    const rl::ImageComparison* before = panel()->comparison();
+    const std::size_t differing = before->differing;
+    // A long diagnosis: their goblet squeezed, its ambient times Od and its light in world
+    // coordinates, on a frame of the window's size.
+    std::vector<rl::Slip> slips(3);
+    slips[0].mistake = rl::Mistake::ScreenMap;
+    slips[0].map = rl::ScreenMap{0.9, 0.0, 0.0, 1.0, 30.0, 0.0};
+    slips[1].mistake = rl::Mistake::AmbientTimesOd;
+    slips[2].mistake = rl::Mistake::LightInWorld;
+    const QString path = m_dir.filePath(QStringLiteral("long.png"));
+    QVERIFY(saveWithMistakes(m_window, slips, path));
+    bool shown = false;
+    QElapsedTimer clock;
+    qint64 cancelledAt = -1;
+    QTimer::singleShot(ComparePanel::kProgressAfterMs + 300, this, [&] {
+        auto* progress = m_window.findChild<QProgressDialog*>(QStringLiteral("compareProgress"));
+        shown = progress && progress->isVisible();
+        auto* button = progress ? progress->findChild<QPushButton*>() : nullptr;
+        if (button) {
+            cancelledAt = clock.elapsed();
+            button->click();
+        }
+    });
+    clock.start();
+    const bool compared = m_window.compareWithImage(path);
+    const qint64 stopped = clock.elapsed() - cancelledAt;
+    QVERIFY(!compared);
+    qInfo("cancelled at %lld ms, stopped %lld ms later", cancelledAt, stopped);
+    QVERIFY2(cancelledAt >= 0, "no progress dialog while the compare ran");
+    QVERIFY(shown);
+    QVERIFY(panel()->wasCancelled());
+    QVERIFY2(stopped < 5000, qPrintable(QString::number(stopped)));
+    QCOMPARE(panel()->comparison(), before);
+    QCOMPARE(panel()->comparison()->differing, differing);
+    QCOMPARE(panel()->imagePath(), m_theirPath);
+    QVERIFY2(m_window.statusBar()->currentMessage().contains(QStringLiteral("cancelled")),
+             qPrintable(m_window.statusBar()->currentMessage()));
+    QVERIFY(m_window.compareWithImage(m_theirPath));
+    QVERIFY(!panel()->wasCancelled());
 }
 
 void TestCompareWindow::countsAsTheCommandLine() {
@@ -213,6 +272,39 @@ QString TestCompareWindow::cliError(const QString& image) {
                          m_dir.path(), run))
         return run.problem;
     return run.err.trimmed();
+}
+
+// Their goblet with x and y swapped and its ambient times Od: the move comes first, and the
+// picked pixel's colour is theirs at the point the move takes it to, where the ambient term
+// times Od gives it again.
+void TestCompareWindow::pickedPixelFollowsTheMove() {
+    std::vector<rl::Slip> slips(2);
+    slips[0].mistake = rl::Mistake::ScreenMap;
+    slips[0].map = rl::ScreenMap{0.0, 1.0, 1.0, 0.0, 0.0, 0.0};
+    slips[1].mistake = rl::Mistake::AmbientTimesOd;
+    const QString path = m_dir.filePath(QStringLiteral("swapped.png"));
+    QVERIFY(saveWithMistakes(m_window, slips, path));
+    QVERIFY(m_window.compareWithImage(path));
+    const std::vector<rl::Finding>& found = panel()->comparison()->diagnosis;
+    QCOMPARE(found.size(), std::size_t(2));
+    QCOMPARE(found.front().mistake, rl::Mistake::ScreenMap);
+    QCOMPARE(found.back().mistake, rl::Mistake::AmbientTimesOd);
+    QVERIFY(!found.back().examples.empty());
+    // An example of the ambient finding is a pixel of theirs; ours at (y, x) is its point.
+    const rl::PixelExample e = found.back().examples.front();
+    m_window.inspection()->pickPixel(QPoint(e.y, e.x));
+    QVERIFY(QTest::qWaitFor([&] { return ready(m_window); }, kTimeoutMs));
+    const QString text = panel()->pixelText();
+    QVERIFY2(text.contains(QStringLiteral("this pixel's point of the surface is their pixel "
+                                          "(%1, %2).")
+                               .arg(e.x)
+                               .arg(e.y)),
+             qPrintable(text));
+    QVERIFY2(text.contains(QRegularExpression(
+                 QStringLiteral("the ambient term Ia·ka would have to be .* instead of "
+                                "\\(14, 14, 16\\).*: that is the term times Od"))),
+             qPrintable(text));
+    QVERIFY(m_window.compareWithImage(m_theirPath));
 }
 
 void TestCompareWindow::badImages_data() {
@@ -311,8 +403,8 @@ void TestCompareWindow::everyMistakeInTheDock_data() {
 }
 
 // Each mistake the diagnosis knows, made by the diagnosis's own hypothesis on a shipped
-// lesson (an offset of -3, a scale of 0.8): the dock ranks it first, removing the whole
-// difference, and lists it first in its text.
+// lesson (an offset of -3, a scale of 0.8, x and y swapped): the dock ranks it first,
+// removing the whole difference, and lists it first in its text.
 void TestCompareWindow::everyMistakeInTheDock() {
     QFETCH(int, mistake);
     QFETCH(QString, lesson);
@@ -325,7 +417,9 @@ void TestCompareWindow::everyMistakeInTheDock() {
                                                   ? std::array<std::uint8_t, 4>{0, 0, 0, 128}
                                                   : std::array<std::uint8_t, 4>{40, 40, 40, 255};
     const double amount = kind == rl::Mistake::ColourScale ? 0.8 : -3.0;
-    auto theirs = rl::imageWithMistake(ours.value(), kind, rl::ivec2(0, 1), value, amount);
+    // The screen map: x and y swapped, as a program that writes pixel (x, y) at (y, x) does.
+    const rl::Slip slip{kind, rl::ivec2(0, 1), value, amount, rl::ScreenMap{0.0, 1.0, 1.0, 0.0, 0.0, 0.0}};
+    auto theirs = rl::imageWithMistakes(ours.value(), {slip});
     QVERIFY(theirs);
     QVERIFY2(theirs->has_value() && **theirs != ours->image, "the mistake changes nothing");
     const QString path = m_dir.filePath(QStringLiteral("mistake.png"));

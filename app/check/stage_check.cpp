@@ -984,7 +984,7 @@ StageResult StageCheck::judgeFrame(const std::vector<Record>& answer) const {
     if (result.differing == 0) return result;
     result.verdict = Verdict::Failed;
     // Handed to compare: the mistakes that explain their image, in the order they apply.
-    if (auto comparison = rl::compareWithOurs(m_data->frame, theirs, 1)) {
+    if (auto comparison = rl::compareWithOurs(m_data->frame, theirs, rl::CompareOptions{1})) {
         std::string causes;
         for (const rl::Finding& f : comparison->diagnosis) {
             if (!causes.empty()) causes += "; then ";

@@ -57,7 +57,9 @@ QString percent(double share) {
 
 void printFit(const rl::LightingFit& fit, QTextStream& out) {
     if (!fit.fitted) return;
-    out << "lighting fitted to their colours (" << fit.samples << " pixels inside triangles): "
+    out << "lighting fitted to their colours"
+        << (fit.carriedBack ? ", carried back onto ours by the move above" : "") << " ("
+        << fit.samples << " pixels inside triangles): "
         << "rms " << QString::number(fit.rmsOurs, 'f', 1) << " with ours, "
         << QString::number(fit.rmsFitted, 'f', 1) << " fitted\n";
     for (const rl::FittedValue& v : fit.values)
@@ -78,6 +80,7 @@ QJsonObject fitJson(const rl::LightingFit& fit) {
         return o;
     }
     o[lit("samples")] = qint64(fit.samples);
+    o[lit("carried_back")] = fit.carriedBack;
     o[lit("rmsOurs")] = fit.rmsOurs;
     o[lit("rmsFitted")] = fit.rmsFitted;
     QJsonArray values;
@@ -180,6 +183,11 @@ QJsonObject toJson(const rl::ImageComparison& c, const QString& image, const QSt
         d[lit("spoiled")] = qint64(f.spoiled);
         if (f.mistake == rl::Mistake::Shifted)
             d[lit("shift")] = QJsonArray{f.slip.shift.x, f.slip.shift.y};
+        if (f.mistake == rl::Mistake::ScreenMap) {
+            const rl::ScreenMap& m = f.slip.map;  // x' = xx x + xy y + tx, y' = yx x + yy y + ty
+            d[lit("map")] = QJsonObject{{lit("xx"), m.xx}, {lit("xy"), m.xy}, {lit("tx"), m.tx},
+                                        {lit("yx"), m.yx}, {lit("yy"), m.yy}, {lit("ty"), m.ty}};
+        }
         if (f.mistake == rl::Mistake::ColourOffset || f.mistake == rl::Mistake::ColourScale)
             d[lit("amount")] = f.slip.amount;
         if (f.mistake == rl::Mistake::CommandMisread) {

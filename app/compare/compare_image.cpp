@@ -210,22 +210,33 @@ rl::Result<CompareImage::Diagnosis> CompareImage::diagnose(const rl::OurFrame& o
                                                           const rl::Rgba8Image& theirs,
                                                           const Format& format,
                                                           const QString& commandFile,
-                                                          std::size_t imageIndex) {
+                                                          std::size_t imageIndex,
+                                                          const std::atomic<bool>* cancel) {
     std::optional<CommandFileText> text;
     if (!commandFile.isEmpty()) {
         auto read = readCommandFileText(commandFile);
         if (!read) return read.error();
         text = std::move(read.value());
     }
-    auto comparison = text ? rl::compareCommandFile(ours, theirs, format.tolerance(), text->text(),
+    rl::CompareOptions options;
+    options.tolerance = format.tolerance();
+    options.cancel = cancel;
+    auto comparison = text ? rl::compareCommandFile(ours, theirs, options, text->text(),
                                                     text->fileName, text->loader, imageIndex,
                                                     !format.alpha)
-                           : rl::compareWithOurs(ours, theirs, format.tolerance());
+                           : rl::compareWithOurs(ours, theirs, options);
     if (!comparison) return comparison.error();
     Diagnosis out;
-    if (comparison->differing > 0 && !comparison->unlit) out.fit = rl::fitLighting(ours, theirs);
-    auto withFit = rl::withFittedLighting(std::move(comparison.value()), ours, theirs,
-                                          format.tolerance(), out.fit);
+    if (comparison->differing > 0 && !comparison->unlit) {
+        // Their image moved (mirrored, shifted, mapped another way) first of all: its colours
+        // are fitted where they belong, carried back onto ours.
+        const auto move = rl::dominantMove(comparison.value());
+        out.fit = rl::fitLighting(ours, move ? rl::carriedBack(theirs, *move) : theirs);
+        out.fit.carriedBack = move.has_value();
+    }
+    if (options.cancelled()) return rl::makeError(rl::ErrorCode::Usage, {}, "comparison cancelled");
+    auto withFit = rl::withFittedLighting(std::move(comparison.value()), ours, theirs, options,
+                                          out.fit);
     if (!withFit) return withFit.error();
     out.comparison = std::move(withFit.value());
     return out;

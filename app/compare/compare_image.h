@@ -7,6 +7,7 @@
 #include <QCoreApplication>
 #include <QString>
 
+#include <atomic>
 #include <optional>
 
 #include "pipeline/analysis/lighting_fit.h"
@@ -49,9 +50,11 @@ public:
         rl::ImageComparison comparison;
         rl::LightingFit fit;
     };
+    // `cancel`, set from another thread, stops it with the error "comparison cancelled".
     static rl::Result<Diagnosis> diagnose(const rl::OurFrame& ours, const rl::Rgba8Image& theirs,
                                           const Format& format, const QString& commandFile,
-                                          std::size_t imageIndex);
+                                          std::size_t imageIndex,
+                                          const std::atomic<bool>* cancel = nullptr);
 };
 
 }  // namespace rasterlab

@@ -9,15 +9,18 @@
 #include <QLabel>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTextDocument>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 
 #include "app/compare/compare_image.h"
@@ -31,7 +34,8 @@
 namespace rasterlab {
 
 // The images side by side, each under its caption, scaled to fit without smoothing (a pixel
-// stays a square); a click picks the pixel under it, marked on every image.
+// stays a square); a click picks the pixel under it, marked on every image: on theirs where
+// their image holds that pixel's point of the surface (moved, when the diagnosis found it so).
 class CompareCanvas : public QWidget {
 public:
     explicit CompareCanvas(QWidget* parent = nullptr) : QWidget(parent) {
@@ -42,22 +46,30 @@ public:
         setSizePolicy(policy);
         setCursor(Qt::CrossCursor);
     }
-    void setImages(QList<QPair<QString, QImage>> images) {
+    struct Shown {
+        QString caption;
+        QImage image;
+        bool theirs = false;
+    };
+    void setImages(QList<Shown> images) {
         m_images = std::move(images);
         update();
     }
-    void setPicked(QPoint pixel) {
+    // Our pixel picked, and where their image holds its point.
+    void setPicked(QPoint pixel, QPoint theirs) {
         m_picked = pixel;
+        m_theirPicked = theirs;
         update();
     }
-    std::function<void(QPoint)> picked;
+    // A click: the pixel under it, and whether it is on their image.
+    std::function<void(QPoint, bool)> picked;
     QSize sizeHint() const override { return {520, heightForWidth(520)}; }
     // As tall as two images side by side need, whatever the mode: the texts below stay put.
     bool hasHeightForWidth() const override { return true; }
     int heightForWidth(int width) const override {
-        const QSize image = m_images.isEmpty() || m_images.front().second.isNull()
+        const QSize image = m_images.isEmpty() || m_images.front().image.isNull()
                                 ? QSize(4, 3)
-                                : m_images.front().second.size();
+                                : m_images.front().image.size();
         return fontMetrics().height() + 4 + (width - kGap) / 2 * image.height() / image.width();
     }
     static constexpr int kGap = 8;
@@ -71,10 +83,11 @@ protected:
         const int gap = kGap, caption = fontMetrics().height() + 4;
         const int slot = (width() - gap * (n - 1)) / n;
         for (int i = 0; i < n; ++i) {
-            const QImage& image = m_images[i].second;
+            const QImage& image = m_images[i].image;
+            const QPoint mark = m_images[i].theirs ? m_theirPicked : m_picked;
             const QRect area(i * (slot + gap), caption, slot, height() - caption);
             p.setPen(palette().color(QPalette::WindowText));
-            p.drawText(QRect(area.left(), 0, slot, caption), Qt::AlignCenter, m_images[i].first);
+            p.drawText(QRect(area.left(), 0, slot, caption), Qt::AlignCenter, m_images[i].caption);
             if (image.isNull() || area.width() <= 0 || area.height() <= 0) continue;
             QSize size = image.size().scaled(area.size(), Qt::KeepAspectRatio);
             QRect target(QPoint(0, 0), size);
@@ -82,12 +95,12 @@ protected:
             target.moveTop(area.top());
             p.drawImage(target, image);
             m_rects.append(target);
-            if (m_picked.x() >= 0 && m_picked.x() < image.width() &&
-                m_picked.y() < image.height()) {
+            if (mark.x() >= 0 && mark.x() < image.width() && mark.y() >= 0 &&
+                mark.y() < image.height()) {
                 const double sx = double(target.width()) / image.width();
                 const double sy = double(target.height()) / image.height();
-                const QPointF c(target.left() + (m_picked.x() + 0.5) * sx,
-                                target.top() + (m_picked.y() + 0.5) * sy);
+                const QPointF c(target.left() + (mark.x() + 0.5) * sx,
+                                target.top() + (mark.y() + 0.5) * sy);
                 const double r = std::max(4.0, sx);
                 p.setPen(QPen(Qt::black, 3));
                 p.drawRect(QRectF(c.x() - r, c.y() - r, 2 * r, 2 * r));
@@ -100,20 +113,20 @@ protected:
         for (int i = 0; i < m_rects.size() && i < m_images.size(); ++i) {
             const QRect& r = m_rects[i];
             if (!r.contains(event->position().toPoint())) continue;
-            const QSize s = m_images[i].second.size();
+            const QSize s = m_images[i].image.size();
             const QPointF at = event->position() - r.topLeft();
             const QPoint pixel(
                 std::clamp(int(at.x() * s.width() / r.width()), 0, s.width() - 1),
                 std::clamp(int(at.y() * s.height() / r.height()), 0, s.height() - 1));
-            if (picked) picked(pixel);
+            if (picked) picked(pixel, m_images[i].theirs);
             return;
         }
     }
 
 private:
-    QList<QPair<QString, QImage>> m_images;
+    QList<Shown> m_images;
     QList<QRect> m_rects;
-    QPoint m_picked{-1, -1};
+    QPoint m_picked{-1, -1}, m_theirPicked{-1, -1};
 };
 
 namespace {
@@ -184,7 +197,9 @@ ComparePanel::ComparePanel(Inspection* inspection, QWidget* parent)
     layout->addLayout(bar);
 
     m_canvas = new CompareCanvas;
-    m_canvas->picked = [this](QPoint pixel) { m_inspection->pickPixel(pixel); };
+    m_canvas->picked = [this](QPoint pixel, bool onTheirs) {
+        m_inspection->pickPixel(onTheirs ? ourPixelOf(pixel) : pixel);
+    };
     layout->addWidget(m_canvas);
 
     const auto textLabel = [layout](const char* name, Qt::TextFormat format) {
@@ -224,10 +239,10 @@ ComparePanel::ComparePanel(Inspection* inspection, QWidget* parent)
     });
     connect(m_again, &QPushButton::clicked, this, [this] {
         const QString problem = compare(m_path);
-        if (!problem.isEmpty()) m_summary->setText(problem);
+        if (!problem.isEmpty() && !m_cancelled) m_summary->setText(problem);
     });
     connect(m_inspection, &Inspection::pixelPicked, this, [this](QPoint pixel) {
-        m_canvas->setPicked(pixel);
+        m_canvas->setPicked(pixel, theirPixelOf(pixel));
         refreshPixel();
     });
     connect(m_inspection, &Inspection::frameChanged, this, [this] {
@@ -250,7 +265,8 @@ struct CompareOutcome {
 
 CompareOutcome compareOnWorker(const std::shared_ptr<const rl::Scene>& scene, const QString& path,
                                rl::Rgba8Image theirs, const CompareImage::Format& format,
-                               const QString& commandFile, int imageIndex) {
+                               const QString& commandFile, int imageIndex,
+                               const std::atomic<bool>* cancel) {
     CompareOutcome out;
     out.provenance = ComparePanel::tr("Their image: %1.").arg(format.describe());
     auto ours = rl::renderOurFrame(scene);
@@ -274,7 +290,7 @@ CompareOutcome compareOnWorker(const std::shared_ptr<const rl::Scene>& scene, co
     out.problem = CompareImage::sizeMismatch(path, theirs, ours->image);
     if (!out.problem.isEmpty()) return out;
     auto diagnosis = CompareImage::diagnose(ours.value(), theirs, format, commandFile,
-                                            static_cast<std::size_t>(imageIndex));
+                                            static_cast<std::size_t>(imageIndex), cancel);
     if (!diagnosis) {
         out.problem = QString::fromStdString(diagnosis.error().message);
         return out;
@@ -298,18 +314,53 @@ QString ComparePanel::compare(const QString& path) {
         m_commandFile ? m_commandFile() : std::pair<QString, int>();
     const std::shared_ptr<const rl::Scene> scene = frame->scene;
     // Our render and the diagnosis take seconds on a large image: they run on a worker, and
-    // the window keeps painting meanwhile; its input waits until they end.
+    // the window keeps painting meanwhile. Its input waits until they end; after a moment a
+    // dialog says what runs, with a Cancel that stops the worker and keeps the comparison
+    // shown before.
+    m_cancelled = false;
+    auto cancel = std::make_shared<std::atomic<bool>>(false);
     QApplication::setOverrideCursor(Qt::WaitCursor);
     QFutureWatcher<CompareOutcome> watcher;
     QEventLoop wait;
     connect(&watcher, &QFutureWatcherBase::finished, &wait, &QEventLoop::quit);
     watcher.setFuture(QtConcurrent::run(
-        [scene, path, theirs = std::move(theirs), format, commandFile, imageIndex]() mutable {
-            return compareOnWorker(scene, path, std::move(theirs), format, commandFile, imageIndex);
+        [scene, path, theirs = std::move(theirs), format, commandFile, imageIndex, cancel]() mutable {
+            return compareOnWorker(scene, path, std::move(theirs), format, commandFile, imageIndex,
+                                   cancel.get());
         }));
+    QProgressDialog progress(tr("Comparing %1 with our render...").arg(QFileInfo(path).fileName()),
+                             tr("Cancel"), 0, 0, window());
+    progress.setObjectName(QStringLiteral("compareProgress"));
+    progress.setWindowTitle(tr("Compare with Image"));
+    progress.setWindowModality(Qt::ApplicationModal);
+    progress.setMinimumDuration(std::numeric_limits<int>::max());  // shown below, not by itself
+    progress.reset();
+    connect(&progress, &QProgressDialog::canceled, this, [&] {
+        cancel->store(true);
+        wait.quit();
+    });
+    QTimer moment;
+    moment.setSingleShot(true);
+    connect(&moment, &QTimer::timeout, &wait, &QEventLoop::quit);
+    moment.start(kProgressAfterMs);
     if (!watcher.isFinished()) wait.exec(QEventLoop::ExcludeUserInputEvents);
+    if (!watcher.isFinished()) {
+        // Modal: the dialog takes input, the windows behind it none.
+        QApplication::restoreOverrideCursor();
+        progress.show();
+        wait.exec();
+        progress.hide();
+        QApplication::setOverrideCursor(Qt::WaitCursor);
+    }
+    // Cancelled: the worker stops at its next check; the window's input waits until then.
+    if (!watcher.isFinished()) wait.exec(QEventLoop::ExcludeUserInputEvents);
+    watcher.waitForFinished();
     CompareOutcome outcome = watcher.future().takeResult();
     QApplication::restoreOverrideCursor();
+    if (cancel->load()) {
+        m_cancelled = true;
+        return tr("The comparison with %1 was cancelled.").arg(QFileInfo(path).fileName());
+    }
     if (!outcome.problem.isEmpty()) return outcome.problem;
     m_path = path;
     m_provenance = outcome.provenance;
@@ -323,7 +374,7 @@ QString ComparePanel::compare(const QString& path) {
     refreshDifference();
     showImages();
     refreshTexts();
-    m_canvas->setPicked(m_inspection->pickedPixel());
+    m_canvas->setPicked(m_inspection->pickedPixel(), theirPixelOf(m_inspection->pickedPixel()));
     refreshPixel();
     emit compared();
     return {};
@@ -381,19 +432,33 @@ void ComparePanel::showImages() {
     }
     switch (mode()) {
         case Mode::SideBySide:
-            m_canvas->setImages({{tr("Theirs"), m_theirImage}, {tr("Ours"), m_ourImage}});
+            m_canvas->setImages({{tr("Theirs"), m_theirImage, true}, {tr("Ours"), m_ourImage, false}});
             break;
         case Mode::Flicker:
             m_canvas->setImages({{m_flickerTheirs ? tr("Theirs") : tr("Ours"),
-                                  m_flickerTheirs ? m_theirImage : m_ourImage}});
+                                  m_flickerTheirs ? m_theirImage : m_ourImage, m_flickerTheirs}});
             break;
         case Mode::Difference:
             m_canvas->setImages(
                 {{tr("%n pixel(s) differ by more than %1", "", int(m_aboveThreshold))
                       .arg(threshold()),
-                  m_difference}});
+                  m_difference, false}});
             break;
     }
+}
+
+QPoint ComparePanel::theirPixelOf(QPoint ours) const {
+    const auto move = m_comparison ? rl::dominantMove(*m_comparison) : std::nullopt;
+    if (!move) return ours;
+    const rl::dvec2 q = move->theirPoint({ours.x() + 0.5, ours.y() + 0.5});
+    return QPoint(int(std::floor(q.x)), int(std::floor(q.y)));
+}
+
+QPoint ComparePanel::ourPixelOf(QPoint theirs) const {
+    const auto move = m_comparison ? rl::dominantMove(*m_comparison) : std::nullopt;
+    if (!move || !(std::abs(move->determinant()) > 1e-12)) return theirs;
+    const rl::dvec2 q = move->ourPoint({theirs.x() + 0.5, theirs.y() + 0.5});
+    return QPoint(int(std::floor(q.x)), int(std::floor(q.y)));
 }
 
 QString ComparePanel::summaryText() const {
@@ -532,7 +597,10 @@ void ComparePanel::refreshTexts() {
     if (m_fit.fitted) {
         html += QStringLiteral("<p><b>%1</b><br>%2")
                     .arg(tr("Lighting fitted to their colours").toHtmlEscaped(),
-                         tr("%1 pixels inside triangles: rms %2 with ours, %3 fitted.")
+                         (m_fit.carriedBack
+                              ? tr("%1 pixels inside triangles, their image carried back onto "
+                                   "ours by the move above: rms %2 with ours, %3 fitted.")
+                              : tr("%1 pixels inside triangles: rms %2 with ours, %3 fitted."))
                              .arg(m_fit.samples)
                              .arg(m_fit.rmsOurs, 0, 'f', 1)
                              .arg(m_fit.rmsFitted, 0, 'f', 1)
@@ -563,8 +631,23 @@ void ComparePanel::refreshPixel() {
         return;
     }
     const auto ours = bytesAt(m_ours->image, p.x(), p.y());
-    const auto theirs = bytesAt(m_theirs, p.x(), p.y());
     QStringList lines;
+    // Their image moved first of all: their colour of this point of the surface is where the
+    // move takes it.
+    const QPoint there = theirPixelOf(p);
+    if (rl::dominantMove(*m_comparison)) {
+        if (there.x() < 0 || there.x() >= m_theirs.width || there.y() < 0 ||
+            there.y() >= m_theirs.height) {
+            m_pixel->setText(tr("Their image is moved (the first finding): this pixel's point of "
+                                "the surface is outside it."));
+            return;
+        }
+        lines << tr("Their image is moved (the first finding): this pixel's point of the surface "
+                    "is their pixel (%1, %2).")
+                     .arg(there.x())
+                     .arg(there.y());
+    }
+    const auto theirs = bytesAt(m_theirs, there.x(), there.y());
     lines << tr("Pixel (%1, %2): theirs %3, ours %4.")
                  .arg(p.x())
                  .arg(p.y())

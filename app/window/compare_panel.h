@@ -44,8 +44,12 @@ public:
     void setCommandFileSource(CommandFileSource source) { m_commandFile = std::move(source); }
 
     // Compares the PNG at `path` with our render of the frame shown: an empty string, or the
-    // message saying why it cannot be (the panel then keeps what it showed).
+    // message saying why it cannot be (the panel then keeps what it showed). A compare still
+    // running after kProgressAfterMs shows a dialog whose Cancel stops it.
     QString compare(const QString& path);
+    static constexpr int kProgressAfterMs = 400;
+    // The last compare was cancelled by the user (its message says so; not an error).
+    bool wasCancelled() const { return m_cancelled; }
     const rl::ImageComparison* comparison() const { return m_comparison.get(); }
     QString imagePath() const { return m_path; }
     // The scene shown is no longer the one compared (a file or value changed since).
@@ -86,6 +90,12 @@ signals:
     void useFittedLighting(const std::vector<ComparePanel::FittedSetting>& settings);
 
 private:
+    // Where their image holds our pixel's point of the surface: moved by the diagnosis's first
+    // finding when that is a move removing most of the difference (rl::dominantMove), else the
+    // same pixel; and the other way.
+    QPoint theirPixelOf(QPoint ours) const;
+    QPoint ourPixelOf(QPoint theirs) const;
+
     CommandFileSource m_commandFile;
     void showImages();
     void refreshDifference();
@@ -108,6 +118,7 @@ private:
     QComboBox* m_mode = nullptr;
     QSpinBox* m_threshold = nullptr;
     QPushButton* m_again = nullptr;
+    bool m_cancelled = false;
     QPushButton* m_useFit = nullptr;
     CompareCanvas* m_canvas = nullptr;
     QLabel* m_summary = nullptr;

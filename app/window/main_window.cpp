@@ -1038,6 +1038,10 @@ void MainWindow::compareDialog() {
 
 bool MainWindow::compareWithImage(const QString& path) {
     const QString problem = m_compare->compare(path);
+    if (!problem.isEmpty() && m_compare->wasCancelled()) {
+        statusBar()->showMessage(problem, 5000);
+        return false;
+    }
     if (!problem.isEmpty()) {
         showError(problem);
         return false;

@@ -402,7 +402,7 @@ std::shared_ptr<const Scene> sceneWithFit(const Scene& scene, const CameraBasis&
 }
 
 Result<ImageComparison> withFittedLighting(ImageComparison base, const OurFrame& ours,
-                                           const Rgba8Image& theirs, int tolerance,
+                                           const Rgba8Image& theirs, const CompareOptions& options,
                                            const LightingFit& fit) {
     if (!fit.explainsBetter() || fit.matches || base.differing == 0 || base.unlit) return base;
     const double whole = double(base.difference);
@@ -410,7 +410,7 @@ Result<ImageComparison> withFittedLighting(ImageComparison base, const OurFrame&
     if (base.unexplained * whole <= kLeastShare * whole) return base;
     auto frame = renderOurFrame(sceneWithFit(*ours.trace->scene, *ours.trace->cameraBasis, fit));
     if (!frame) return frame.error();
-    auto onIt = compareWithOurs(frame.value(), theirs, tolerance);
+    auto onIt = compareWithOurs(frame.value(), theirs, options);
     if (!onIt) return onIt.error();
     const double left = onIt->unexplained * double(onIt->difference);
     if (left + kLeastShare * whole >= base.unexplained * whole) return base;

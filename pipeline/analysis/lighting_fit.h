@@ -39,6 +39,10 @@ struct LightingFit {
     double rmsFitted = 0.0;   // the fitted parameters against their colours
     dvec3 lightOurs = dvec3(0.0), lightTheirs = dvec3(0.0);  // view coordinates
     std::vector<FittedValue> values;
+    // Fitted on their image carried back onto ours by the move (mirror, shift, screen map) the
+    // diagnosis found first, removing most of the difference: their colours at our pixels'
+    // points of the surface.
+    bool carriedBack = false;
     // The transform mistake the fitted light matches, when it does (LightInWorld,
     // LightWithoutC), else none; and the words for what the fitted values say.
     std::optional<Mistake> matches;
@@ -61,7 +65,7 @@ std::shared_ptr<const Scene> sceneWithFit(const Scene& scene, const CameraBasis&
 // than base by kLeastShare of the difference, and the fit matches no catalogued mistake (which
 // base finds itself); else base as it is.
 Result<ImageComparison> withFittedLighting(ImageComparison base, const OurFrame& ours,
-                                           const Rgba8Image& theirs, int tolerance,
+                                           const Rgba8Image& theirs, const CompareOptions& options,
                                            const LightingFit& fit);
 
 }  // namespace rl

@@ -555,6 +555,7 @@ Result<std::optional<Rgba8Image>> imageOnFrame(const OurFrame& ours, const Mista
     const Bytes fill = bg ? bg->value : background;
     for (Mistake move : {Mistake::MirroredLeftRight, Mistake::UpsideDown, Mistake::Shifted})
         if (const Slip* s = slipOf(slips, move)) out = movedImage(out, move, s->shift, fill);
+    if (const Slip* s = slipOf(slips, Mistake::ScreenMap)) out = mappedImage(out, s->map, fill);
     return Optional(std::move(out));
 }
 
@@ -569,7 +570,7 @@ Result<std::optional<Rgba8Image>> imageWithMistakes(const OurFrame& ours,
 Result<std::optional<Rgba8Image>> imageWithMistake(const OurFrame& ours, Mistake mistake,
                                                    ivec2 shift, std::array<std::uint8_t, 4> value,
                                                    double amount) {
-    return imageWithMistakes(ours, {Slip{mistake, shift, value, amount}});
+    return imageWithMistakes(ours, {Slip{mistake, shift, value, amount, {}}});
 }
 
 }  // namespace rl

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <numbers>
 #include <set>
 
 #include "pipeline/analysis/mistake_images.h"
@@ -51,6 +52,7 @@ constexpr std::array<const char*, kMistakeCount + 2> kIds = {
     "area-weighted-normals",
     "basis-n-not-normalised",
     "basis-u-reversed",
+    "screen-map",
     "command-misread",
     "fitted-lighting",
 };
@@ -80,6 +82,60 @@ const char* modelName(Mistake mistake) {
 
 Message bytesMessage(const Bytes& b) {
     return "(%1, %2, %3, %4)"_msg(int(b[0]), int(b[1]), int(b[2]), int(b[3]));
+}
+
+// A number of the map as the title shows it: `decimals` after the point at most.
+Message mapNumber(double value, int decimals) {
+    const double unit = std::pow(10.0, decimals);
+    const double shown = std::round(value * unit) / unit;
+    return Message::untranslated(formatNumber(shown == 0.0 ? 0.0 : shown));
+}
+
+// The fitted screen map in words (mirrored, swapped, turned, stretched, its centre moved)
+// and as its formula.
+Message screenMapTitle(const ScreenMap& m, int width, int height) {
+    std::vector<Message> parts;
+    const double size = std::sqrt(std::abs(m.determinant()));
+    double across = 1.0, down = 1.0;
+    if (std::abs(m.xy) + std::abs(m.yx) < 0.02 * size) {
+        if (m.xx < 0.0) parts.push_back("mirrored left-right"_msg);
+        if (m.yy < 0.0) parts.push_back("upside down"_msg);
+        across = std::abs(m.xx), down = std::abs(m.yy);
+    } else if (std::abs(m.xx) + std::abs(m.yy) < 0.02 * size) {
+        // Their x from our y, their y from our x; with y down, (1, 0) to (0, 1) turns clockwise.
+        parts.push_back(m.xy > 0.0 && m.yx > 0.0   ? "x and y swapped (transposed)"_msg
+                        : m.xy < 0.0 && m.yx < 0.0 ? "x and y swapped and both mirrored"_msg
+                        : m.yx > 0.0               ? "turned 90 degrees clockwise"_msg
+                                                   : "turned 90 degrees counter-clockwise"_msg);
+        across = std::abs(m.xy), down = std::abs(m.yx);
+    } else {
+        const double angle = std::atan2(m.yx, m.xx) * 180.0 / std::numbers::pi;
+        parts.push_back(angle > 0.0 ? "turned %1 degrees clockwise"_msg(mapNumber(angle, 1))
+                                    : "turned %1 degrees counter-clockwise"_msg(mapNumber(-angle, 1)));
+        across = std::hypot(m.xx, m.yx), down = std::hypot(m.xy, m.yy);
+    }
+    const bool wider = std::abs(across - 1.0) > 0.005, taller = std::abs(down - 1.0) > 0.005;
+    if (wider && taller)
+        parts.push_back("stretched %1 times across and %2 times up and down"_msg(
+            mapNumber(across, 3), mapNumber(down, 3)));
+    else if (wider || taller)
+        parts.push_back(wider ? "stretched %1 times across"_msg(mapNumber(across, 3))
+                              : "stretched %1 times up and down"_msg(mapNumber(down, 3)));
+    // One of the image's sides where the other belongs: the stretch is their ratio.
+    const double sides = double(width) / height, ratio = down / across;
+    if (width != height && (std::abs(ratio - sides) < 0.002 * sides ||
+                            std::abs(ratio - 1.0 / sides) < 0.002 / sides))
+        parts.push_back("the ratio of the image's sides (one size used for both axes)"_msg);
+    const dvec2 centre(width / 2.0, height / 2.0);
+    const dvec2 moved = m.theirPoint(centre) - centre;
+    if (glm::length(moved) > 0.5)
+        parts.push_back("its centre moved by (%1, %2) pixels"_msg(mapNumber(moved.x, 1),
+                                                                  mapNumber(moved.y, 1)));
+    Message words = parts.empty() ? Message() : parts.front();
+    for (std::size_t k = 1; k < parts.size(); ++k) words = "%1, %2"_msg(words, parts[k]);
+    return "the screen mapped another way: theirs is ours %1 (x' = %2 x + %3 y + %4, y' = %5 x + "
+           "%6 y + %7)"_msg(words, mapNumber(m.xx, 3), mapNumber(m.xy, 3), mapNumber(m.tx, 1),
+                            mapNumber(m.yx, 3), mapNumber(m.yy, 3), mapNumber(m.ty, 1));
 }
 
 Message titleOf(const OurFrame& ours, const Slip& slip) {
@@ -193,6 +249,8 @@ Message titleOf(const OurFrame& ours, const Slip& slip) {
             return "the camera's N not normalised before V - (V.N)N, nor after"_msg;
         case Mistake::BasisUReversed:
             return "the camera's U = V x N instead of N x V (x runs the other way)"_msg;
+        case Mistake::ScreenMap:
+            return screenMapTitle(slip.map, scene.width, scene.height);
         case Mistake::CommandMisread:
         case Mistake::FittedLighting:
             return {};  // titled where found, from the misreading or the fitted values
@@ -249,6 +307,9 @@ Message mechanismOf(Mistake mistake) {
         case Mistake::BasisUReversed:
             return "the scene rendered again in view coordinates made with that basis gives "
                    "their pixels"_msg;
+        case Mistake::ScreenMap:
+            return "our image carried by that map of the screen (each pixel from the nearest of "
+                   "ours) gives their pixels"_msg;
         case Mistake::CommandMisread:
             return "the command file read again with that command so gives their pixels"_msg;
         case Mistake::FittedLighting:
@@ -335,6 +396,10 @@ Message hintOf(Mistake mistake) {
                    "across N"_msg;
         case Mistake::BasisUReversed:
             return "seed 000: U = N x V, so that U, V, N is right-handed"_msg;
+        case Mistake::ScreenMap:
+            return "check the screen formulas, x = (x_ndc + 1) * width / 2 and y = (1 - y_ndc) * "
+                   "height / 2, each with its own size, and that pixel (x, y) is written at "
+                   "column x of row y"_msg;
         case Mistake::CommandMisread:
             return {};  // misreadingHint: it depends on how the command was misread
         case Mistake::FittedLighting:
@@ -402,6 +467,7 @@ bool changesCoverage(Mistake mistake) {
         case Mistake::SampleOffset:
         case Mistake::VertexSnap:
         case Mistake::FillRule:
+        case Mistake::ScreenMap:
             return true;
         default:
             return false;
@@ -414,9 +480,11 @@ std::string keyOf(std::vector<Slip> slips) {
               [](const Slip& a, const Slip& b) { return a.mistake < b.mistake; });
     std::string key;
     for (const Slip& s : slips) {
-        char text[96];
-        std::snprintf(text, sizeof text, "%s %d %d %d %d %d %d %g;", mistakeId(s.mistake), s.shift.x,
-                      s.shift.y, s.value[0], s.value[1], s.value[2], s.value[3], s.amount);
+        char text[192];
+        std::snprintf(text, sizeof text, "%s %d %d %d %d %d %d %g %g %g %g %g %g %g;",
+                      mistakeId(s.mistake), s.shift.x, s.shift.y, s.value[0], s.value[1],
+                      s.value[2], s.value[3], s.amount, s.map.xx, s.map.xy, s.map.yx, s.map.yy,
+                      s.map.tx, s.map.ty);
         key += text;
     }
     return key;
@@ -426,7 +494,11 @@ std::string keyOf(std::vector<Slip> slips) {
 // (each frame rendered once), their images scored by the difference to theirs.
 class Search {
 public:
-    Search(const OurFrame& ours, const Rgba8Image& theirs) : m_ours(ours), m_theirs(theirs) {}
+    Search(const OurFrame& ours, const Rgba8Image& theirs, int tolerance,
+           const CompareOptions& options)
+        : m_ours(ours), m_theirs(theirs), m_tolerance(tolerance), m_options(options) {}
+
+    bool cancelled() const { return m_options.cancelled(); }
 
     // Compare coverage only: an image's covered pixels in `colour`, the rest `background`.
     void coverageOnly(const Bytes& colour, const Bytes& background) {
@@ -467,15 +539,19 @@ public:
     // the findings so far: each shift, the background and alpha they use, the constant
     // offset or scale their bytes show.
     std::vector<Slip> variants(Mistake mistake, const Rgba8Image& current) const {
-        Slip slip{mistake};
+        Slip slip{mistake, ivec2(1, 0), {}, 0.0, {}};
         switch (mistake) {
             case Mistake::Shifted: {
                 std::vector<Slip> out;
                 for (ivec2 s : {ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1), ivec2(1, 1),
                                 ivec2(-1, -1), ivec2(1, -1), ivec2(-1, 1)})
-                    out.push_back({mistake, s});
+                    out.push_back({mistake, s, {}, 0.0, {}});
                 return out;
             }
+            case Mistake::ScreenMap:
+                if (!screenFit()) return {};
+                slip.map = screenFit()->map;
+                return {slip};
             case Mistake::Background:
             case Mistake::Alpha: {
                 const bool covered = mistake == Mistake::Alpha;
@@ -554,6 +630,32 @@ public:
     std::uint64_t differenceTo(const Rgba8Image& image) const { return differenceOf(image, m_theirs); }
     const Rgba8Image& theirs() const { return m_theirs; }
 
+    // The map of the screen that carries our coverage onto theirs (their pixels unlike their
+    // background), fitted once; none when it does not halve the pixels covered by one side
+    // only, or is one of the image's plain moves (mirrors, a shift of a pixel).
+    const std::optional<ScreenMapFit>& screenFit() const {
+        if (m_screenFitted) return m_screenFit;
+        m_screenFitted = true;
+        if (!m_options.screenMap) return m_screenFit;
+        const auto background =
+            m_flat ? std::optional(m_flat->second)
+                   : mostCommon(m_theirs, [&](int x, int y) { return !m_ours.covered(x, y); });
+        if (!background) return m_screenFit;
+        const int w = m_theirs.width, h = m_theirs.height;
+        Coverage ours(w, h), theirs(w, h);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                ours.at(x, y) = m_ours.covered(x, y) ? 1 : 0;
+                theirs.at(x, y) = distance(bytesAt(m_theirs, x, y), *background) > m_tolerance ? 1 : 0;
+            }
+        // Too few pixels apart for a map to be told from the rules of the scan.
+        if (pixelsApart(ours, theirs, ScreenMap{}) < 32) return m_screenFit;
+        auto fit = fitScreenMap(ours, theirs);
+        if (fit && fit->apartAfter * 2 <= fit->apartBefore && !isPlainMove(fit->map, w, h))
+            m_screenFit = fit;
+        return m_screenFit;
+    }
+
 private:
     template <typename Visit>
     void forCoveredChannels(const Rgba8Image& current, Visit visit) const {
@@ -566,7 +668,11 @@ private:
 
     const OurFrame& m_ours;
     const Rgba8Image& m_theirs;
+    int m_tolerance = 0;
+    const CompareOptions& m_options;
     std::optional<std::pair<Bytes, Bytes>> m_flat;
+    mutable bool m_screenFitted = false;
+    mutable std::optional<ScreenMapFit> m_screenFit;
     std::map<std::string, std::optional<MistakeFrame>> m_frames;
 };
 
@@ -691,6 +797,10 @@ struct Hypothesis {
     std::uint64_t difference = 0;
 };
 
+Error cancelledError() {
+    return makeError(ErrorCode::Usage, {}, "comparison cancelled"_msg);
+}
+
 // Greedy, as matching pursuit is, but keeping the kBeamWidth best hypotheses of each round
 // rather than one (a beam search): a mistake that imitates another (V reversed for the far
 // faces drawn) must not hide the pair that really made their image. A hypothesis grows by a
@@ -715,6 +825,7 @@ Result<Hypothesis> beamSearch(Search& search, Hypothesis start, double least, bo
                     std::any_of(parent.slips.begin(), parent.slips.end(),
                                 [&](const Slip& s) { return s.mistake == mistake; }))
                     continue;
+                if (search.cancelled()) return cancelledError();
                 for (const Slip& slip : search.variants(mistake, parent.image)) {
                     std::vector<Slip> trial = parent.slips;
                     trial.push_back(slip);
@@ -808,8 +919,13 @@ Result<std::vector<Finding>> findingsInOrder(Search& search, const OurFrame& our
         f.share = double(f.removed) / double(out.difference);
         countPixels(before, after, theirs, out.tolerance, f);
         f.title = titleOf(ours, f.slip);
+        const auto& fit = search.screenFit();
         f.evidence = f.mistake == Mistake::ColourOffset || f.mistake == Mistake::ColourScale
                          ? constantEvidence(ours, before, theirs, f)
+                     : f.mistake == Mistake::ScreenMap && fit
+                         ? "%1; pixels covered by one side only: %2 as ours is, %3 with ours "
+                           "carried by the map"_msg(evidenceOf(f), fit->apartBefore,
+                                                     fit->apartAfter)
                          : evidenceOf(f);
         f.advice = hintOf(f.mistake);
         findings.push_back(std::move(f));
@@ -822,13 +938,13 @@ Result<std::vector<Finding>> findingsInOrder(Search& search, const OurFrame& our
 }  // namespace
 
 Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& theirs,
-                                        int tolerance) {
+                                        const CompareOptions& options) {
     ImageComparison out;
     out.width = theirs.width;
     out.height = theirs.height;
-    out.tolerance = std::max(0, tolerance);
+    out.tolerance = std::max(0, options.tolerance);
     out.compared = static_cast<std::size_t>(theirs.width) * theirs.height;
-    Search search(ours, theirs);
+    Search search(ours, theirs, out.tolerance, options);
     Bytes theirBackground = backgroundBytes(ours.trace->scene->conventions);
     if (const auto unlit = unlitColours(ours, theirs, out.tolerance)) {
         out.unlit = true;
@@ -904,13 +1020,18 @@ Message misreadingHint(const Hw2Misreading& m) {
 }  // namespace
 
 Result<ImageComparison> compareCommandFile(const OurFrame& ours, const Rgba8Image& theirs,
-                                           int tolerance, std::string_view text,
+                                           const CompareOptions& options, std::string_view text,
                                            const std::string& fileName,
                                            const TextureLoader& loadTexture, std::size_t index,
                                            bool colourOnly) {
-    auto base = compareWithOurs(ours, theirs, tolerance);
+    // The commands misread are tried before the general screen map, which would take a
+    // translation ignored for a shift; the map is fitted when no command explains more.
+    CompareOptions noMap = options;
+    noMap.screenMap = false;
+    auto base = compareWithOurs(ours, theirs, noMap);
     if (!base || base->differing == 0 || base->unlit) return base;
     const double whole = double(base->difference);
+    const auto withMap = [&]() { return options.screenMap ? compareWithOurs(ours, theirs, options) : base; };
     // The catalogue explains all but what a finding must remove at least: nothing to gain.
     if (base->unexplained * whole <= kLeastShare * whole) return base;
     // The misreadings whose frames come nearest theirs; of the three nearest, the one that
@@ -922,6 +1043,7 @@ Result<ImageComparison> compareCommandFile(const OurFrame& ours, const Rgba8Imag
     };
     std::vector<Candidate> candidates;
     for (const Hw2Misreading& misreading : possibleMisreadings(text)) {
+        if (options.cancelled()) return cancelledError();
         Diagnostics quiet;
         auto file = readHw2(text, fileName, loadTexture, quiet, &misreading);
         if (!file || index >= file->images.size()) continue;
@@ -944,7 +1066,7 @@ Result<ImageComparison> compareCommandFile(const OurFrame& ours, const Rgba8Imag
     std::optional<ImageComparison> onIt;
     double left = base->unexplained * whole - kLeastShare * whole;  // one finding's worth less
     for (const Candidate& c : candidates) {
-        auto composed = compareWithOurs(c.frame, theirs, tolerance);
+        auto composed = compareWithOurs(c.frame, theirs, options);
         if (!composed) return composed.error();
         const double remains = composed->unexplained * double(composed->difference);
         if (remains < left) {
@@ -953,7 +1075,7 @@ Result<ImageComparison> compareCommandFile(const OurFrame& ours, const Rgba8Imag
             onIt = std::move(composed.value());
         }
     }
-    if (!best) return base;
+    if (!best) return withMap();
     Finding f;
     f.mistake = f.slip.mistake = Mistake::CommandMisread;
     f.command = best->misreading;
@@ -980,6 +1102,28 @@ ImageComparison firstFinding(ImageComparison base, const OurFrame& ours,
     base.unexplained = onAlternative.unexplained * double(onAlternative.difference) / whole;
     base.unexplainedPixels = onAlternative.unexplainedPixels;
     return base;
+}
+
+std::optional<ScreenMap> screenMapOf(const Finding& finding, int width, int height) {
+    const Slip& s = finding.slip;
+    switch (finding.mistake) {
+        case Mistake::MirroredLeftRight:
+            return ScreenMap{-1.0, 0.0, 0.0, 1.0, double(width), 0.0};
+        case Mistake::UpsideDown:
+            return ScreenMap{1.0, 0.0, 0.0, -1.0, 0.0, double(height)};
+        case Mistake::Shifted:
+            return ScreenMap{1.0, 0.0, 0.0, 1.0, double(s.shift.x), double(s.shift.y)};
+        case Mistake::ScreenMap:
+            return s.map;
+        default:
+            return std::nullopt;
+    }
+}
+
+std::optional<ScreenMap> dominantMove(const ImageComparison& comparison) {
+    const std::vector<Finding>& found = comparison.diagnosis;
+    if (found.empty() || found.front().share < 0.5) return std::nullopt;
+    return screenMapOf(found.front(), comparison.width, comparison.height);
 }
 
 std::optional<ivec2> findEmbedded(const Rgba8Image& ours, const Rgba8Image& theirs) {

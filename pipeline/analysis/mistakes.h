@@ -13,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -20,6 +21,7 @@
 #include <string_view>
 #include <vector>
 
+#include "pipeline/analysis/screen_map.h"
 #include "pipeline/core/diagnostics.h"
 #include "pipeline/core/math.h"
 #include "pipeline/core/message.h"
@@ -66,12 +68,13 @@ enum class Mistake : std::uint8_t {
     AreaWeightedNormals,        // triangle normals summed before they are normalised
     BasisNNotNormalised,        // N not normalised before V - (V.N) N, nor after
     BasisUReversed,             // U = V x N instead of N x V
+    ScreenMap,  // the screen mapped another way: stretched, flipped, turned, shifted (Slip::map)
     CommandMisread,  // a command file's command misread (compareCommandFile; Finding::command)
     FittedLighting,  // the lighting their colours say they used (lighting_fit.h)
 };
 
 // The mistakes the search composes (CommandMisread is found by compareCommandFile alone).
-inline constexpr std::size_t kMistakeCount = 33;
+inline constexpr std::size_t kMistakeCount = 34;
 
 // The small number a student tests the special cases against (EpsilonSpecialCases).
 inline constexpr float kSpecialCaseEpsilon = 1e-3f;
@@ -89,12 +92,13 @@ struct OurFrame {
 Result<OurFrame> renderOurFrame(std::shared_ptr<const Scene> scene);
 
 // One mistake with what it needs: Shifted its shift, Background and Alpha the colour or
-// alpha of `value`, ColourOffset (bytes) and ColourScale their amount.
+// alpha of `value`, ColourOffset (bytes) and ColourScale their amount, ScreenMap its map.
 struct Slip {
     Mistake mistake{};
     ivec2 shift = ivec2(1, 0);
     std::array<std::uint8_t, 4> value{};
     double amount = 0.0;
+    rl::ScreenMap map;
 };
 
 // Our image as it would be with all these mistakes at once; none when one of them cannot
@@ -175,10 +179,22 @@ struct ImageComparison {
     Rgba8Image differenceImage;
 };
 
-// Compares their image (our size) with our frame and ranks the mistakes. A lossy image (JPEG)
-// is compared with a tolerance: channels that differ by at most that much count as the same.
+// How a comparison runs.
+struct CompareOptions {
+    // A lossy image (JPEG) is compared with a tolerance: channels that differ by at most that
+    // much count as the same.
+    int tolerance = 0;
+    // Whether the general map of the screen is fitted (compareCommandFile tries the commands
+    // misread first: a translation ignored is a shift, better named by its line).
+    bool screenMap = true;
+    // Set from another thread, it stops the comparison with the error "comparison cancelled".
+    const std::atomic<bool>* cancel = nullptr;
+    bool cancelled() const { return cancel && cancel->load(); }
+};
+
+// Compares their image (our size) with our frame and ranks the mistakes.
 Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& theirs,
-                                        int tolerance = 0);
+                                        const CompareOptions& options = {});
 
 // A command file's image (image `index` of the text): the comparison as compareWithOurs
 // makes it, unless one command misread (each of possibleMisreadings in turn: ignored,
@@ -187,7 +203,7 @@ Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& 
 // command is the first finding, "line 12: 'multmv' ignored", and the rest are ranked on it.
 // colourOnly: their format has no alpha, so theirs holds ours and only colours count.
 Result<ImageComparison> compareCommandFile(const OurFrame& ours, const Rgba8Image& theirs,
-                                           int tolerance, std::string_view text,
+                                           const CompareOptions& options, std::string_view text,
                                            const std::string& fileName,
                                            const TextureLoader& loadTexture, std::size_t index,
                                            bool colourOnly);
@@ -199,6 +215,14 @@ Result<ImageComparison> compareCommandFile(const OurFrame& ours, const Rgba8Imag
 ImageComparison firstFinding(ImageComparison base, const OurFrame& ours,
                              const Rgba8Image& alternative, Finding first,
                              ImageComparison onAlternative, const Rgba8Image& theirs);
+
+// The map of the screen a finding moves our image by (a mirror, upside down, a shift, the
+// fitted screen map); none for the other mistakes.
+std::optional<rl::ScreenMap> screenMapOf(const Finding& finding, int width, int height);
+// Their image moved first of all: the first finding's map, when it is a move and removes at
+// least half the difference. Their colour of our pixel's point of the surface is then theirs
+// where the map takes it (a move found further down may stand in for something else).
+std::optional<rl::ScreenMap> dominantMove(const ImageComparison& comparison);
 
 // Where their larger image holds ours exactly (a screenshot with a window border): the
 // offset of our top-left pixel in theirs; none when no offset matches 95% of ours.

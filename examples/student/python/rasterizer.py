@@ -221,7 +221,9 @@ def project(P, camera, width, height, opts):
 
     The seed's formulas: ((d/hx) x/z, (d/hy) y/z) in [-1, 1], then
     x = (int)((x + 1) * width / 2), y = (int)((1 - y) * height / 2).
-    --flip-y writes (y + 1) for (1 - y).  A mirror of x in this formula
+    --flip-y writes (y + 1) for (1 - y); --width-for-height scales y by
+    width / 2 as x is (the image stretched down when it is wider than
+    tall).  A mirror of x in this formula
     would give exactly --u-v-cross-n's image, so --mirror-x mirrors the
     finished image instead (mirror_columns).  The two give one image while
     every a = (x + 1) * width / 2 lies in (0, width) and is not whole:
@@ -235,7 +237,8 @@ def project(P, camera, width, height, opts):
     sy = (camera["d"] / camera["hy"]) * (P[1] / P[2])
     fx = sx + 1
     fy = (sy + 1) if opts.flip_y else (1 - sy)
-    return (to_int(fx * width / 2, opts), to_int(fy * height / 2, opts))
+    rows = width if opts.width_for_height else height
+    return (to_int(fx * width / 2, opts), to_int(fy * rows / 2, opts))
 
 
 # ---------------------------------------------------------------------------
@@ -460,7 +463,22 @@ def render(camera, light, points, triangles, width, height, opts):
                       [normals[i] for i in tri], colors, light, Pl)
     if opts.mirror_x:
         mirror_columns(frame)
+    if opts.pixels_transposed:
+        transpose_pixels(frame)
     return frame
+
+
+def transpose_pixels(frame):
+    """--pixels-transposed: pixel (x, y) written at column y of row x, as
+    when a 2D array indexed [x][y] is written out row by row; what falls
+    outside a wider-than-tall image is lost, the rest stays black."""
+    w, h = frame.width, frame.height
+    old = bytes(frame.pixels)
+    frame.pixels[:] = bytes(3 * w * h)
+    for y in range(min(h, w)):
+        for x in range(min(w, h)):
+            i, j = 3 * (y * w + x), 3 * (x * w + y)
+            frame.pixels[j:j + 3] = old[i:i + 3]
 
 
 def mirror_columns(frame):
@@ -530,6 +548,10 @@ MISTAKES = [
     ("--mirror-x", "the finished image mirrored left-right (columns"
      " written in reverse)"),
     ("--flip-y", "screen y = (int)((y + 1) * height / 2): y grows upward"),
+    ("--width-for-height", "screen y = (int)((1 - y) * width / 2): the"
+     " width where the height belongs"),
+    ("--pixels-transposed", "pixel (x, y) written at (y, x): x and y"
+     " swapped in the pixel's index"),
     ("--no-flip-normal", "N not turned toward the viewer where V.N < 0"),
     ("--ambient-ia-only", "ambient term Ia instead of Ia*ka (changes the"
      " image only when ka != 1)"),

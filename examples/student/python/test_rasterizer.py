@@ -64,6 +64,14 @@ class HandComputed(unittest.TestCase):
         self.assertEqual(r.project((-3.0, 1.0, 10.0), TINY_CAMERA, 10, 10,
                                    options("--round-vertices")), (4, 5))
 
+    def test_width_for_height_scales_y_by_the_width(self):
+        # (-0.3, 0.1) on 20x10: x = (int)(0.7 * 10) = 7; y = (int)(0.9 * 5) = 4,
+        # with --width-for-height (int)(0.9 * 10) = 9.
+        self.assertEqual(r.project((-3.0, 1.0, 10.0), TINY_CAMERA, 20, 10,
+                                   options()), (7, 4))
+        self.assertEqual(r.project((-3.0, 1.0, 10.0), TINY_CAMERA, 20, 10,
+                                   options("--width-for-height")), (7, 9))
+
     def test_truncation_is_toward_zero_left_of_the_screen(self):
         # x/z = -1.1 on width 10: (int)(-0.1 * 5) = (int)(-0.5) = 0, a C cast.
         self.assertEqual(r.project((-11.0, 0.0, 10.0), TINY_CAMERA, 10, 10,
@@ -224,6 +232,16 @@ class Switches(unittest.TestCase):
             for x in range(w):
                 a, b = 3 * (y * w + x), 3 * (y * w + w - 1 - x)
                 self.assertEqual(mirrored[a:a + 3], plain[b:b + 3])
+
+    def test_pixels_transposed_swaps_x_and_y(self):
+        w, h, plain = self.plain["main"]
+        _, _, swapped = self.render("main", ["--pixels-transposed"])
+        for y in range(h):
+            for x in range(w):
+                a = 3 * (y * w + x)
+                b = 3 * (x * w + y) if x < h else None
+                expected = plain[b:b + 3] if b is not None else bytes(3)
+                self.assertEqual(swapped[a:a + 3], expected)
 
     def test_v_equals_p_gives_the_l_reversed_image(self):
         self.assertEqual(self.render("main", ["--v-equals-p"])[2],
