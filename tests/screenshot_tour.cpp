@@ -50,6 +50,7 @@
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTextEdit>
+#include <QTimer>
 #include <QCheckBox>
 #include <QCommandLineParser>
 #include <QDir>
@@ -60,6 +61,8 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QPolygonF>
+#include <QProgressDialog>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
@@ -76,6 +79,7 @@
 #include "app/image_io.h"
 #include "app/window/accuracy_panel.h"
 #include "app/window/animation_panel.h"
+#include "app/window/compare_panel.h"
 #include "app/window/edit_panel.h"
 #include "app/window/main_window.h"
 #include "app/window/replay_builder.h"
@@ -365,6 +369,44 @@ bool saveCompare(MainWindow& window, const QString& path) {
     const bool ok = saveDock(compare, path, QSize(900, 700));
     compare->close();
     return ok;
+}
+
+// The Compare dock on the goblet stretched a third down (their y scaled by the width, the
+// fitted screen map), and the dialog that says a compare runs, grabbed while it does; the
+// comparison is then cancelled and the dock closed.
+bool saveCompareScreenMap(MainWindow& window, const QString& path, const QString& progressPath) {
+    QTemporaryDir theirDir;
+    auto ours = rl::renderOurFrame(window.currentFrame()->scene);
+    if (!ours) return false;
+    rl::Slip tall;
+    tall.mistake = rl::Mistake::ScreenMap;
+    tall.map = rl::ScreenMap{1.0, 0.0, 0.0, 4.0 / 3.0, 0.0, 0.0};
+    rl::Slip light;
+    light.mistake = rl::Mistake::LightInWorld;
+    auto stretched = rl::imageWithMistakes(ours.value(), {tall});
+    auto longer = rl::imageWithMistakes(ours.value(), {tall, light});
+    const QString first = theirDir.filePath(QStringLiteral("tall.png")),
+                  second = theirDir.filePath(QStringLiteral("longer.png"));
+    if (!stretched || !stretched->has_value() || !longer || !longer->has_value() ||
+        !rasterlab::savePng(rasterlab::toQImage(**stretched), first, nullptr) ||
+        !rasterlab::savePng(rasterlab::toQImage(**longer), second, nullptr) ||
+        !window.compareWithImage(first)) {
+        std::fprintf(stderr, "FAILED: %s: the comparison could not be made\n", qPrintable(path));
+        return false;
+    }
+    QDockWidget* compare = dock(window, "compareDock");
+    bool ok = saveDock(compare, path, QSize(900, 700));
+    bool grabbed = false;
+    QTimer::singleShot(rasterlab::ComparePanel::kProgressAfterMs + 200, &window, [&] {
+        auto* progress = window.findChild<QProgressDialog*>(QStringLiteral("compareProgress"));
+        if (!progress || !progress->isVisible()) return;
+        grabbed = progress->grab().save(progressPath);
+        if (auto* button = progress->findChild<QPushButton*>()) button->click();
+    });
+    window.compareWithImage(second);
+    if (!grabbed) std::fprintf(stderr, "FAILED: %s: no dialog\n", qPrintable(progressPath));
+    compare->close();
+    return ok && grabbed;
 }
 
 int main(int argc, char* argv[]) {
@@ -718,6 +760,8 @@ int main(int argc, char* argv[]) {
     // Compare with Image on the goblet (the guide's worked example).
     if (!openExample(window, "goblet")) return 1;
     check(saveCompare(window, file(QStringLiteral("compare"))));
+    check(saveCompareScreenMap(window, file(QStringLiteral("compare-screenmap")),
+                               file(QStringLiteral("compare-progress"))));
 
     // A command file of the repository: no course camera, nothing lit; three stages skipped.
     if (!window.openPath(docs.filePath(QStringLiteral("examples/crossing.txt")))) return 1;
