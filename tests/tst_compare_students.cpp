@@ -153,6 +153,7 @@ private slots:
     void fitsTheScreenMap_data();
     void fitsTheScreenMap();
     void fitsATurnedCoverage();
+    void normalsSharedByPosition();
     void commandFileOfAnIndependentRenderer_data();
     void commandFileOfAnIndependentRenderer();
 };
@@ -587,6 +588,47 @@ void TestCompareStudents::fitsATurnedCoverage() {
     QVERIFY(glm::length(m.theirPoint({40.0, 120.0}) - turned.theirPoint({40.0, 120.0})) < 1.0);
     QVERIFY(fit->apartAfter * 20 < fit->apartBefore);
     QVERIFY(!rl::isPlainMove(m, w, h));
+}
+
+// The goblet faceted: each triangle with three vertices of its own, at the positions it
+// shares with its neighbours (as some course files are written). A normals stage that sums
+// over every vertex at one position draws it smooth where ours is faceted: found first, and
+// nearly all of the difference.
+void TestCompareStudents::normalsSharedByPosition() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    CourseScene scene = lesson(QStringLiteral("goblet"));
+    QFile shipped(scene.object);
+    QVERIFY(shipped.open(QIODevice::ReadOnly));
+    const QStringList lines = QString::fromUtf8(shipped.readAll()).split(u'\n', Qt::SkipEmptyParts);
+    const QStringList counts = lines[0].split(u' ', Qt::SkipEmptyParts);
+    const int vertices = counts[0].toInt(), triangles = counts[1].toInt();
+    QStringList faceted{QStringLiteral("%1 %2").arg(3 * triangles).arg(triangles)};
+    for (int t = 0; t < triangles; ++t)
+        for (const QString& index : lines[1 + vertices + t].split(u' ', Qt::SkipEmptyParts))
+            faceted << lines[std::abs(index.toInt())];
+    for (int t = 0; t < triangles; ++t)
+        faceted << QStringLiteral("%1 %2 %3").arg(3 * t + 1).arg(3 * t + 2).arg(3 * t + 3);
+    scene.object = dir.filePath(QStringLiteral("faceted.byu"));
+    QFile out(scene.object);
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write(faceted.join(u'\n').toUtf8() + '\n');
+    out.close();
+    QString problem;
+    const QString image = studentImage(dir, scene, {"--normals-shared-by-position"}, problem);
+    QVERIFY2(!image.isEmpty(), qPrintable(problem));
+    CliRun run;
+    const QJsonObject result = compareJson(dir, scene, image, run);
+    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    qInfo("faceted goblet --normals-shared-by-position: %lld differing; %s",
+          result[QStringLiteral("differing")].toInteger(), qPrintable(ranking(result)));
+    const QJsonArray diagnosis = result[QStringLiteral("diagnosis")].toArray();
+    QVERIFY2(!diagnosis.isEmpty(), qPrintable(run.out));
+    QCOMPARE(diagnosis.first()[QStringLiteral("mistake")].toString(),
+             QStringLiteral("normals-shared-by-position"));
+    QVERIFY2(diagnosis.first()[QStringLiteral("share")].toDouble() >= 0.9, qPrintable(ranking(result)));
+    QVERIFY2(result[QStringLiteral("unexplained")][QStringLiteral("share")].toDouble() <= 0.02,
+             qPrintable(ranking(result)));
 }
 
 void TestCompareStudents::commandFileOfAnIndependentRenderer_data() {

@@ -393,6 +393,9 @@ void TestCompareWindow::everyMistakeInTheDock_data() {
     QTest::addColumn<QString>("lesson");
     for (std::size_t m = 0; m < rl::kMistakeCount; ++m) {
         const auto kind = static_cast<rl::Mistake>(m);
+        // No lesson has two vertices at one position, where normals shared by position show:
+        // tst_compare_students finds it on a faceted goblet.
+        if (kind == rl::Mistake::NormalsSharedByPosition) continue;
         // The goblet is lit per pixel and has no two triangles at one depth: Phong and depth
         // ties show on the sphere lesson (flat shading, shared edges at equal depths).
         const bool sphere = kind == rl::Mistake::Phong || kind == rl::Mistake::DepthTies;

@@ -1811,771 +1811,781 @@
     </message>
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="531"/>
+        <source>the vertex normals summed over every vertex at the same position instead of by the vertex&apos;s index (a faceted mesh drawn smooth)</source>
+        <translation>as normais dos vértices somadas sobre todo vértice na mesma posição em vez de pelo índice do vértice (uma malha facetada desenhada lisa)</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="532"/>
+        <source>seed 000: a vertex&apos;s normal sums the normals of the triangles that use that vertex, by its index; vertices repeated at one position keep their own</source>
+        <translation>semente 000: a normal de um vértice soma as normais dos triângulos que usam aquele vértice, pelo seu índice; vértices repetidos numa posição ficam com a sua</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="533"/>
         <source>our image carried by that map of the screen (each pixel from the nearest of ours) gives their pixels</source>
         <translation>nossa imagem levada por esse mapa da tela (cada pixel do mais próximo dos nossos) dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="532"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="534"/>
         <source>stretched %1 times across</source>
         <translation>esticada %1 vezes na horizontal</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="533"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="535"/>
         <source>stretched %1 times across and %2 times up and down</source>
         <translation>esticada %1 vezes na horizontal e %2 vezes na vertical</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="534"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="536"/>
         <source>stretched %1 times up and down</source>
         <translation>esticada %1 vezes na vertical</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="535"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="537"/>
         <source>the ratio of the image&apos;s sides (one size used for both axes)</source>
         <translation>a razão entre os lados da imagem (um só tamanho usado para os dois eixos)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="536"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="538"/>
         <source>the screen mapped another way: theirs is ours %1 (x&apos; = %2 x + %3 y + %4, y&apos; = %5 x + %6 y + %7)</source>
         <translation>a tela mapeada de outro jeito: a deles é a nossa %1 (x&apos; = %2 x + %3 y + %4, y&apos; = %5 x + %6 y + %7)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="537"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="539"/>
         <source>turned %1 degrees clockwise</source>
         <translation>girada %1 graus no sentido horário</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="538"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="540"/>
         <source>turned %1 degrees counter-clockwise</source>
         <translation>girada %1 graus no sentido anti-horário</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="539"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="541"/>
         <source>turned 90 degrees clockwise</source>
         <translation>girada 90 graus no sentido horário</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="540"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="542"/>
         <source>turned 90 degrees counter-clockwise</source>
         <translation>girada 90 graus no sentido anti-horário</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="541"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="543"/>
         <source>upside down</source>
         <translation>de cabeça para baixo</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="542"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="544"/>
         <source>x and y swapped (transposed)</source>
         <translation>com x e y trocados (transposta)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="543"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="545"/>
         <source>x and y swapped and both mirrored</source>
         <translation>com x e y trocados e os dois espelhados</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="544"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="546"/>
         <source>pixels sampled at their centres (x + 0.5) instead of their corners</source>
         <translation>pixels amostrados nos centros (x + 0.5) em vez dos cantos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="546"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="548"/>
         <source>pixels sampled at their corners instead of their centres (x + 0.5)</source>
         <translation>pixels amostrados nos cantos em vez dos centros (x + 0.5)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="548"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="550"/>
         <source>vertex positions rounded instead of truncated to whole pixels</source>
         <translation>posições dos vértices arredondadas em vez de truncadas para pixels inteiros</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="549"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="551"/>
         <source>vertex positions truncated instead of rounded to whole pixels</source>
         <translation>posições dos vértices truncadas em vez de arredondadas para pixels inteiros</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="550"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="552"/>
         <source>vertex positions rounded instead of truncated to the sub-pixel grid</source>
         <translation>posições dos vértices arredondadas em vez de truncadas para a grade de subpixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="552"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="554"/>
         <source>vertex positions truncated instead of rounded to the sub-pixel grid</source>
         <translation>posições dos vértices truncadas em vez de arredondadas para a grade de subpixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="554"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="556"/>
         <source>vertex positions truncated to the sub-pixel grid instead of kept as computed</source>
         <translation>posições dos vértices truncadas para a grade de subpixels em vez de mantidas como calculadas</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="556"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="558"/>
         <source>the top-left fill rule where edges are inclusive</source>
         <translation>a regra de preenchimento top-left onde as arestas são inclusivas</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="557"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="559"/>
         <source>inclusive edges where the fill rule is top-left</source>
         <translation>arestas inclusivas onde a regra de preenchimento é top-left</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="558"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="560"/>
         <source>colour bytes rounded instead of truncated (off by one)</source>
         <translation>bytes de cor arredondados em vez de truncados (diferença de um)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="559"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="561"/>
         <source>colour bytes truncated instead of rounded (off by one)</source>
         <translation>bytes de cor truncados em vez de arredondados (diferença de um)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="560"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="562"/>
         <source>colours above 255 wrap around instead of clamping</source>
         <translation>cores acima de 255 dão a volta em vez de serem limitadas a 255</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="561"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="563"/>
         <source>the painter&apos;s order (far to near, no depth test) instead of the z-buffer</source>
         <translation>a ordem do pintor (do mais distante ao mais próximo, sem teste de profundidade) em vez do z-buffer</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="563"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="565"/>
         <source>z &lt; stored instead of z &lt;= stored in the depth test (ties keep the earlier triangle)</source>
         <translation>z &lt; guardado em vez de z &lt;= guardado no teste de profundidade (empates ficam com o triângulo anterior)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="566"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="568"/>
         <source>z &lt;= stored instead of z &lt; stored in the depth test (ties go to the later triangle)</source>
         <translation>z &lt;= guardado em vez de z &lt; guardado no teste de profundidade (empates vão para o triângulo posterior)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="569"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="571"/>
         <source>a different background: %1 where the scene&apos;s is %2</source>
         <translation>um fundo diferente: %1 onde o da cena é %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="570"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="572"/>
         <source>alpha %1 on covered pixels instead of 255</source>
         <translation>alfa %1 nos pixels cobertos em vez de 255</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="571"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="573"/>
         <source>our pixels lit again with that formula (the same triangles, barycentrics, P&apos;, N, lights and material) give theirs</source>
         <translation>nossos pixels iluminados de novo com essa fórmula (os mesmos triângulos, baricêntricas, P&apos;, N, luzes e material) dão os deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="574"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="576"/>
         <source>the scene rendered again in that shading model gives their pixels</source>
         <translation>a cena renderizada de novo nesse modelo de sombreamento dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="576"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="578"/>
         <source>our image moved that way gives their pixels</source>
         <translation>nossa imagem movida assim dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="577"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="579"/>
         <source>the scene rendered again with that rule gives their pixels</source>
         <translation>a cena renderizada de novo com essa regra dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="578"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="580"/>
         <source>our float colours made bytes that way give their pixels</source>
         <translation>nossas cores float convertidas em bytes desse jeito dão os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="579"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="581"/>
         <source>the scene painted far to near without a depth test gives their pixels</source>
         <translation>a cena pintada do mais distante ao mais próximo, sem teste de profundidade, dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="581"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="583"/>
         <source>their pixels where no triangle of ours is take that colour</source>
         <translation>os pixels deles onde não há triângulo nosso têm essa cor</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="582"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="584"/>
         <source>their pixels where a triangle of ours is take that alpha</source>
         <translation>os pixels deles onde há um triângulo nosso têm esse alfa</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="583"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="585"/>
         <source>seed 000&apos;s ambient term is Ia*ka, without the object colour Od</source>
         <translation>o termo ambiente da seed 000 é Ia*ka, sem a cor do objeto Od</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="584"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="586"/>
         <source>seed 000: if V.N &lt; 0, N := -N before the lighting</source>
         <translation>seed 000: se V.N &lt; 0, N := -N antes da iluminação</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="585"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="587"/>
         <source>seed 000: if R.V &lt; 0, no specular term</source>
         <translation>seed 000: se R.V &lt; 0, sem termo especular</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="586"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="588"/>
         <source>seed 000: if N.L &lt; 0, neither diffuse nor specular</source>
         <translation>seed 000: se N.L &lt; 0, nem termo difuso nem especular</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="587"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="589"/>
         <source>the interpolated N is shorter than 1: normalise it before N.L and R</source>
         <translation>a N interpolada é mais curta que 1: normalize-a antes de N.L e R</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="589"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="591"/>
         <source>check where the lighting is evaluated: per pixel, per vertex or per triangle</source>
         <translation>verifique onde a iluminação é avaliada: por pixel, por vértice ou por triângulo</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="592"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="594"/>
         <source>check the sign of x in the projection or the screen mapping</source>
         <translation>verifique o sinal de x na projeção ou no mapeamento para a tela</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="593"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="595"/>
         <source>screen row 0 is the top: y = (1 - y_ndc) * height / 2</source>
         <translation>a linha 0 da tela é a de cima: y = (1 - y_ndc) * altura / 2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="594"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="596"/>
         <source>check the screen mapping&apos;s offsets and the first pixel of each span</source>
         <translation>verifique os deslocamentos do mapeamento para a tela e o primeiro pixel de cada segmento</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="596"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="598"/>
         <source>where a pixel is sampled decides which pixels an edge covers (--rules)</source>
         <translation>onde um pixel é amostrado decide quais pixels uma aresta cobre (--rules)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="598"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="600"/>
         <source>check how screen coordinates become whole pixels ((int) truncates)</source>
         <translation>verifique como as coordenadas de tela viram pixels inteiros ((int) trunca)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="600"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
         <source>the pixels exactly on an edge: which triangle (or both) covers them</source>
         <translation>os pixels exatamente sobre uma aresta: qual triângulo (ou ambos) os cobre</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
         <source>check how the colour becomes a byte: (int) truncates, + 0.5 rounds</source>
         <translation>verifique como a cor vira um byte: (int) trunca, + 0.5 arredonda</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
         <source>clamp each channel to 255 before writing it as a byte</source>
         <translation>limite cada canal a 255 antes de escrevê-lo como byte</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="605"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
         <source>keep a depth buffer and write a pixel only when the fragment is nearer</source>
         <translation>mantenha um buffer de profundidade e escreva um pixel só quando o fragmento estiver mais perto</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
         <source>the comparison of the depth test: &lt; keeps the first of two equal depths</source>
         <translation>a comparação do teste de profundidade: &lt; fica com o primeiro de duas profundidades iguais</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
         <source>the colour (and alpha) of the pixels no triangle covers</source>
         <translation>a cor (e o alfa) dos pixels que nenhum triângulo cobre</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="610"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
         <source>the alpha written with each shaded pixel</source>
         <translation>o alfa escrito com cada pixel sombreado</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
         <source>theirs - ours is %1 in %2 of the %3 covered channels that differ</source>
         <translation>deles - nosso é %1 em %2 dos %3 canais cobertos que diferem</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
         <source>theirs is within 2 of %1 times ours in %2 of the %3 covered channels that differ</source>
         <translation>o deles está a até 2 de %1 vezes o nosso em %2 dos %3 canais cobertos que diferem</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
         <source>the scene rendered again with the fitted lighting gives their pixels</source>
         <translation>a cena renderizada de novo com a iluminação ajustada dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
         <source>compare the light&apos;s position, the intensities and the coefficients your program uses with the fitted ones</source>
         <translation>compare a posição da luz, as intensidades e os coeficientes que o seu programa usa com os ajustados</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
         <source>their lighting, fitted to their colours: %1</source>
         <translation>a iluminação deles, ajustada às cores deles: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
         <source>the lighting is fitted for a course camera and one positional light of the course&apos;s model</source>
         <translation>a iluminação é ajustada para uma câmera do curso e uma luz pontual do modelo do curso</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
         <source>the lighting is fitted for Phong-shaded draws of one material</source>
         <translation>a iluminação é ajustada para desenhos com sombreamento de Phong de um só material</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
         <source>too few unclamped pixels inside triangles to fit the lighting</source>
         <translation>pixels não saturados dentro de triângulos poucos demais para ajustar a iluminação</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
         <source>the fitted light is at the light&apos;s world position: it was not taken to view coordinates</source>
         <translation>a luz ajustada está na posição da luz no mundo: ela não foi levada a coordenadas de vista</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
         <source>the fitted light is at [I] Pl: C was not subtracted</source>
         <translation>a luz ajustada está em [I] Pl: C não foi subtraído</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
         <source>the fitted light is ours with %1 negated</source>
         <translation>a luz ajustada é a nossa com %1 negado</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
         <source>the fitted light is ours with %1 and %2 swapped</source>
         <translation>a luz ajustada é a nossa com %1 e %2 trocados</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
         <source>the fitted n is half of ours: n halved</source>
         <translation>o n ajustado é metade do nosso: n pela metade</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
         <source>the command file read again with that command so gives their pixels</source>
         <translation>o arquivo de comandos lido de novo com esse comando assim dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
         <source>line %1: &apos;%2&apos; ignored</source>
         <translation>linha %1: &apos;%2&apos; ignorado</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
         <source>line %1: &apos;%2&apos; multiplied on the other side (M = A M instead of M A)</source>
         <translation>linha %1: &apos;%2&apos; multiplicado do outro lado (M = A M em vez de M A)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
         <source>line %1: &apos;%2&apos; read column by column (the matrix transposed)</source>
         <translation>linha %1: &apos;%2&apos; lido coluna por coluna (a matriz transposta)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
         <source>line %1: &apos;%2&apos; with its angle taken as radians</source>
         <translation>linha %1: &apos;%2&apos; com o ângulo tomado em radianos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
         <source>line %1: &apos;%2&apos; with s = f x up not normalised (the image stretched across)</source>
         <translation>linha %1: &apos;%2&apos; com s = f x up não normalizado (a imagem esticada na horizontal)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="633"/>
         <source>check that your program reads &apos;%1&apos; and applies it</source>
         <translation>verifique se o seu programa lê &apos;%1&apos; e o aplica</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
         <source>seed 001: a transform multiplies the model/view on the right, M = M A</source>
         <translation>semente 001: uma transformação multiplica a model/view pela direita, M = M A</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="633"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
         <source>seed 001 writes a matrix row by row: the first four numbers are its first row</source>
         <translation>a semente 001 escreve uma matriz linha por linha: os quatro primeiros números são a primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
         <source>seed 001&apos;s angles are in degrees: convert them before sin and cos</source>
         <translation>os ângulos da semente 001 estão em graus: converta-os antes de sin e cos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
         <source>lookat: normalise s = f x up before it goes into the matrix</source>
         <translation>lookat: normalize s = f x up antes de pô-lo na matriz</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
         <source>the camera&apos;s N not normalised before V - (V.N)N, nor after</source>
         <translation>o N da câmera não normalizado antes de V - (V.N)N, nem depois</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
         <source>the camera&apos;s U = V x N instead of N x V (x runs the other way)</source>
         <translation>o U da câmera = V x N em vez de N x V (x corre no outro sentido)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
         <source>the scene rendered again in view coordinates made with that basis gives their pixels</source>
         <translation>a cena renderizada de novo em coordenadas de vista feitas com essa base dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
         <source>seed 000&apos;s Gram-Schmidt: normalise N first, then V - (V.N)N is V&apos;s part across N</source>
         <translation>o Gram-Schmidt da semente 000: normalize N primeiro, então V - (V.N)N é a parte de V transversal a N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
         <source>seed 000: U = N x V, so that U, V, N is right-handed</source>
         <translation>semente 000: U = N x V, para que U, V, N seja uma base dextrógira</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="643"/>
         <source>the vertex normals left at the length of their sums (not normalised)</source>
         <translation>as normais dos vértices deixadas com o comprimento das suas somas (não normalizadas)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
         <source>the triangle normals summed at their length (area-weighted) instead of normalised first</source>
         <translation>as normais dos triângulos somadas com o seu comprimento (pesadas pela área) em vez de normalizadas antes</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="643"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
         <source>seed 000: each vertex normal is the normalised sum of its triangles&apos; normals</source>
         <translation>semente 000: a normal de cada vértice é a soma normalizada das normais dos seus triângulos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
         <source>normalise each triangle&apos;s normal before adding it to its vertices</source>
         <translation>normalize a normal de cada triângulo antes de somá-la aos seus vértices</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
         <source>the light not taken to view coordinates: its world position used as Pl_view</source>
         <translation>a luz não levada a coordenadas de vista: sua posição no mundo usada como Pl_vista</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="648"/>
         <source>the light taken to view coordinates without subtracting C: [I] Pl instead of [I](Pl - C)</source>
         <translation>a luz levada a coordenadas de vista sem subtrair C: [I] Pl em vez de [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
         <source>V = P&apos; instead of -P&apos; (L = P&apos; - Pl gives the same image)</source>
         <translation>V = P&apos; em vez de -P&apos; (L = P&apos; - Pl dá a mesma imagem)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="648"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
         <source>the ambient term Ia instead of Ia*ka</source>
         <translation>o termo ambiente Ia em vez de Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="651"/>
         <source>each Phong term truncated to a whole byte before the sum</source>
         <translation>cada termo de Phong truncado para um byte inteiro antes da soma</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="652"/>
         <source>V.N, N.L and R.V tested against %1 instead of 0</source>
         <translation>V.N, N.L e R.V testados contra %1 em vez de 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="651"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="653"/>
         <source>the depth test reversed: the farther fragment wins (&gt; against a buffer cleared to -infinity, or to 0)</source>
         <translation>o teste de profundidade invertido: o fragmento mais distante vence (&gt; contra um buffer iniciado com -infinito, ou com 0)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="652"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="654"/>
         <source>every covered pixel&apos;s colour off by %1 (a constant offset)</source>
         <translation>a cor de cada pixel coberto deslocada de %1 (um deslocamento constante)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="653"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="655"/>
         <source>every colour multiplied by %1 (a constant scale)</source>
         <translation>cada cor multiplicada por %1 (uma escala constante)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="654"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="656"/>
         <source>every colour multiplied by 255: a colour scaled by 255 where it was already 0..255</source>
         <translation>cada cor multiplicada por 255: uma cor escalada por 255 onde já era 0..255</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="656"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="658"/>
         <source>every colour divided by 255: a colour scaled to 0..1 where the scene&apos;s are 0..255</source>
         <translation>cada cor dividida por 255: uma cor escalada para 0..1 onde as da cena são 0..255</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="658"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
         <source>the scene rendered again with the light where that transform puts it gives their pixels</source>
         <translation>a cena renderizada de novo com a luz onde essa transformação a coloca dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="659"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="661"/>
         <source>the scene rendered again with the farther fragment winning gives their pixels</source>
         <translation>a cena renderizada de novo com o fragmento mais distante vencendo dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="662"/>
         <source>our bytes moved by that constant give their pixels</source>
         <translation>os nossos bytes deslocados dessa constante dão os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="661"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="663"/>
         <source>our colours multiplied by that constant give their pixels</source>
         <translation>as nossas cores multiplicadas por essa constante dão os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="662"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="664"/>
         <source>seed 000: the light goes to view coordinates as the vertices do, Pl_view = [I](Pl - C)</source>
         <translation>semente 000: a luz vai para coordenadas de vista como os vértices, Pl_vista = [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="663"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
         <source>seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis</source>
         <translation>semente 000: Pl_vista = [I](Pl - C): subtraia C antes da mudança de base</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="664"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="666"/>
         <source>V points from the surface to the camera: V = -P&apos; in view coordinates, and L = Pl - P&apos;</source>
         <translation>V aponta da superfície para a câmera: V = -P&apos; em coordenadas de vista, e L = Pl - P&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="667"/>
         <source>seed 000&apos;s ambient term is Ia*ka</source>
         <translation>o termo ambiente da semente 000 é Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="666"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="668"/>
         <source>add the terms as real numbers and make a byte once, at the end</source>
         <translation>some os termos como números reais e faça um byte uma vez, no fim</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="667"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="669"/>
         <source>seed 000&apos;s special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</source>
         <translation>os casos especiais da semente 000 testam contra 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="668"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="670"/>
         <source>the z-buffer starts at +infinity and a fragment is written when its z is smaller</source>
         <translation>o z-buffer começa em +infinito e um fragmento é escrito quando seu z é menor</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="669"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
         <source>look for a constant added to every colour, or bytes made with an offset</source>
         <translation>procure uma constante somada a cada cor, ou bytes feitos com um deslocamento</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="670"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="672"/>
         <source>look for a factor on every colour: an intensity scaled, or another colour scale</source>
         <translation>procure um fator em cada cor: uma intensidade escalada, ou outra escala de cor</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="673"/>
         <source>%1; no pixel that matches now would change</source>
         <translation>%1; nenhum pixel que coincide agora mudaria</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="672"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="674"/>
         <source>%2; %1 pixel that matches now would differ</source>
         <translation>%2; %1 pixel que coincide agora passaria a diferir</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="673"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="675"/>
         <source>%2; %1 pixels that match now would differ</source>
         <translation>%2; %1 pixels que coincidem agora passariam a diferir</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="675"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="677"/>
         <source>cannot read the texture %1: %2</source>
         <translation>não é possível ler a textura %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="677"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="679"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V está a %1 graus da reta de N: Gram-Schmidt guarda só isso de V, e a base é ortonormal só até %2, menos que a precisão de um float; escolha um V mais longe de N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="682"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
         <source>cannot open: %1</source>
         <translation>não é possível abrir: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="683"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>o arquivo tem %1 MiB, mais que os %2 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="687"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>o arquivo tem mais que os %1 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="687"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="689"/>
         <source>not enough memory to read this file</source>
         <translation>não há memória suficiente para ler este arquivo</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="688"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="690"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>os arquivos da cena embutida não podem ser gravados: salve-a num arquivo seu (Salvar como)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="691"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="693"/>
         <source>the object is not edited, so not saved</source>
         <translation>o objeto não é editado, então não é salvo</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="692"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="694"/>
         <source>cannot write into the built-in resources</source>
         <translation>não é possível gravar nos recursos embutidos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="693"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="695"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>a câmera não foi salva, pois não carregaria de novo: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="694"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="696"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>não salvo: o texto gravado não é lido de volta com os mesmos valores</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="696"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="698"/>
         <source>cannot write the file: %1</source>
         <translation>não é possível gravar o arquivo: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="697"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="699"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>só %1 de %2 bytes puderam ser gravados (o disco está cheio?)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="698"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="700"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>não é possível gravar o arquivo (ele fica como estava): %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="700"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="702"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[linhas, fragmentos], dois números inteiros</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="701"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="703"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[largura, altura], números inteiros de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="702"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="704"/>
         <source>a list</source>
         <translation>uma lista</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="703"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="705"/>
         <source>a list of %1 numbers</source>
         <translation>uma lista de %1 números</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="704"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="706"/>
         <source>a list of 1 to 8 lights</source>
         <translation>uma lista de 1 a 8 luzes</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="705"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="707"/>
         <source>a list of dock names</source>
         <translation>uma lista de nomes de painéis</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="706"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="708"/>
         <source>a number</source>
         <translation>um número</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="707"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="709"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>um número positivo ou &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="708"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="710"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>um número positivo ou &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="709"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="711"/>
         <source>a whole number from %1</source>
         <translation>um número inteiro a partir de %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="710"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="712"/>
         <source>an object</source>
         <translation>um objeto</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="711"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="713"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>esperava %1 para &quot;%2&quot;, encontrou %3</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="712"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="714"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>esperava um arquivo de aula: um objeto JSON com &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="714"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="716"/>
         <source>not a lesson file: %1</source>
         <translation>não é um arquivo de aula: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="715"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="717"/>
         <source>nothing</source>
         <translation>nada</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="716"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="718"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="717"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="719"/>
         <source>one of %1</source>
         <translation>um de %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="718"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="720"/>
         <source>text in quotes</source>
         <translation>um texto entre aspas</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="719"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="721"/>
         <source>the text &apos;%1&apos;</source>
         <translation>o texto &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="720"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="722"/>
         <source>true or false</source>
         <translation>true ou false</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="721"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="723"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>ignorou a chave desconhecida &quot;%1&quot; (as conhecidas aqui: %2)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="756"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="758"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="762"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="764"/>
         <source>%1: warning: %2</source>
         <translation>%1: aviso: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="763"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="765"/>
         <source>%1: note: %2</source>
         <translation>%1: nota: %2</translation>
     </message>
@@ -3548,8 +3558,8 @@
 <context>
     <name>rasterlab::ComparePanel</name>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="134"/>
-        <location filename="../app/window/compare_panel.cpp" line="138"/>
+        <location filename="../app/window/compare_panel.cpp" line="144"/>
+        <location filename="../app/window/compare_panel.cpp" line="148"/>
         <source>R %1, G %2, B %3, A %4</source>
         <translation>R %1, G %2, B %3, A %4</translation>
     </message>
@@ -3579,79 +3589,79 @@
         <translation>%1 e %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="153"/>
+        <location filename="../app/window/compare_panel.cpp" line="163"/>
         <source>Side by side</source>
         <translation>Lado a lado</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="154"/>
+        <location filename="../app/window/compare_panel.cpp" line="164"/>
         <source>Flicker</source>
         <translation>Alternar</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="155"/>
+        <location filename="../app/window/compare_panel.cpp" line="165"/>
         <source>Difference</source>
         <translation>Diferença</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="157"/>
+        <location filename="../app/window/compare_panel.cpp" line="167"/>
         <source>Theirs beside ours, one after the other twice a second, or the pixels that differ</source>
         <translation>A deles ao lado da nossa, uma depois da outra duas vezes por segundo, ou os pixels que diferem</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="160"/>
+        <location filename="../app/window/compare_panel.cpp" line="170"/>
         <source>Differ by more than</source>
         <translation>Diferem em mais de</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="166"/>
+        <location filename="../app/window/compare_panel.cpp" line="176"/>
         <source>The difference view shows the pixels where some channel differs by more than this (0: every difference)</source>
         <translation>A vista da diferença mostra os pixels em que algum canal difere em mais do que isto (0: toda diferença)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="171"/>
+        <location filename="../app/window/compare_panel.cpp" line="181"/>
         <source>Compare Again</source>
         <translation>Comparar de novo</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="174"/>
+        <location filename="../app/window/compare_panel.cpp" line="184"/>
         <source>The scene changed since the comparison: compare their image with the scene shown now</source>
         <translation>A cena mudou desde a comparação: comparar a imagem deles com a cena mostrada agora</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="207"/>
+        <location filename="../app/window/compare_panel.cpp" line="219"/>
         <source>File &gt; Compare with Image... compares a PNG of your own renderer with this scene&apos;s render.</source>
         <translation>Arquivo &gt; Comparar com imagem... compara um PNG do seu próprio renderizador com a renderização desta cena.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="296"/>
+        <location filename="../app/window/compare_panel.cpp" line="308"/>
         <source>There is no render to compare with yet.</source>
         <translation>Ainda não há renderização com que comparar.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="259"/>
+        <location filename="../app/window/compare_panel.cpp" line="271"/>
         <source>Their image: %1.</source>
         <translation>A imagem deles: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="270"/>
+        <location filename="../app/window/compare_panel.cpp" line="282"/>
         <source>Cropped to %1x%2 at (%3, %4) from %5x%6: the frame found inside it.</source>
         <translation>Recortada para %1x%2 em (%3, %4) a partir de %5x%6: o quadro encontrado dentro dela.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="423"/>
-        <location filename="../app/window/compare_panel.cpp" line="426"/>
+        <location filename="../app/window/compare_panel.cpp" line="435"/>
+        <location filename="../app/window/compare_panel.cpp" line="438"/>
         <source>Theirs</source>
         <translation>Deles</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="423"/>
-        <location filename="../app/window/compare_panel.cpp" line="426"/>
+        <location filename="../app/window/compare_panel.cpp" line="435"/>
+        <location filename="../app/window/compare_panel.cpp" line="438"/>
         <source>Ours</source>
         <translation>Nossa</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/compare_panel.cpp" line="431"/>
+        <location filename="../app/window/compare_panel.cpp" line="443"/>
         <source>%n pixel(s) differ by more than %1</source>
         <translation>
             <numerusform>%n pixel difere em mais de %1</numerusform>
@@ -3659,257 +3669,257 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="495"/>
+        <location filename="../app/window/compare_panel.cpp" line="521"/>
         <source>%1 against our render (%2x%3): %4 pixels compared, %5 differ (%6%).</source>
         <translation>%1 contra a nossa renderização (%2x%3): %4 pixels comparados, %5 diferem (%6%).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="504"/>
+        <location filename="../app/window/compare_panel.cpp" line="530"/>
         <source>Their image is unlit: one colour %1 wherever it covers. Only coverage is compared (our covered pixels in that colour), and only projection and scan conversion mistakes are tried.</source>
         <translation>A imagem deles não é iluminada: uma só cor %1 onde ela cobre. Só a cobertura é comparada (os nossos pixels cobertos nessa cor), e só erros de projeção e de conversão por varredura são tentados.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="513"/>
+        <location filename="../app/window/compare_panel.cpp" line="539"/>
         <source>Largest difference per channel: %1.</source>
         <translation>Maior diferença por canal: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="514"/>
+        <location filename="../app/window/compare_panel.cpp" line="540"/>
         <source>Mean difference per channel, over the differing pixels: %1.</source>
         <translation>Diferença média por canal, nos pixels que diferem: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="516"/>
+        <location filename="../app/window/compare_panel.cpp" line="542"/>
         <source>Pixels covered: %1 by both, %2 only by ours (our depth buffer), %3 only by theirs (not the background).</source>
         <translation>Pixels cobertos: %1 por ambas, %2 só pela nossa (o nosso buffer de profundidade), %3 só pela deles (não o fundo).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="536"/>
+        <location filename="../app/window/compare_panel.cpp" line="562"/>
         <source>Diagnosis, each mistake applied before the next is ranked:</source>
         <translation>Diagnóstico, cada erro aplicado antes de classificar o seguinte:</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="542"/>
+        <location filename="../app/window/compare_panel.cpp" line="568"/>
         <source>Removes %1% of the difference; makes %2 differing pixels match.</source>
         <translation>Remove %1% da diferença; faz %2 pixels diferentes coincidirem.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="523"/>
+        <location filename="../app/window/compare_panel.cpp" line="549"/>
         <source>The scene has changed since this comparison: Compare Again compares their image with the scene shown now.</source>
         <translation>A cena mudou desde esta comparação: Comparar de novo compara a imagem deles com a cena mostrada agora.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="178"/>
+        <location filename="../app/window/compare_panel.cpp" line="188"/>
         <source>Render Ours with the Fitted Lighting</source>
         <translation>Renderizar a Nossa com a Iluminação Ajustada</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="181"/>
+        <location filename="../app/window/compare_panel.cpp" line="191"/>
         <source>Set the light&apos;s position, Ia, Il, kd, ks and n to the values fitted to their colours (one edit, undoable), and render ours with them</source>
         <translation>Pôr a posição da luz, Ia, Il, kd, ks e n nos valores ajustados às cores deles (uma edição, que pode ser desfeita), e renderizar a nossa com eles</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="319"/>
+        <location filename="../app/window/compare_panel.cpp" line="331"/>
         <source>Comparing %1 with our render...</source>
         <translation>Comparando %1 com a nossa renderização...</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="320"/>
+        <location filename="../app/window/compare_panel.cpp" line="332"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="322"/>
+        <location filename="../app/window/compare_panel.cpp" line="334"/>
         <source>Compare with Image</source>
         <translation>Comparar com imagem</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="350"/>
+        <location filename="../app/window/compare_panel.cpp" line="362"/>
         <source>The comparison with %1 was cancelled.</source>
         <translation>A comparação com %1 foi cancelada.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="451"/>
+        <location filename="../app/window/compare_panel.cpp" line="477"/>
         <source>light x (view)</source>
         <translation>luz x (vista)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="451"/>
+        <location filename="../app/window/compare_panel.cpp" line="477"/>
         <source>light y (view)</source>
         <translation>luz y (vista)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="452"/>
+        <location filename="../app/window/compare_panel.cpp" line="478"/>
         <source>light z (view)</source>
         <translation>luz z (vista)</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="452"/>
+        <location filename="../app/window/compare_panel.cpp" line="478"/>
         <source>n</source>
         <translation>n</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="453"/>
+        <location filename="../app/window/compare_panel.cpp" line="479"/>
         <source>ambient Ia*ka R</source>
         <translation>ambiente Ia*ka R</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="453"/>
+        <location filename="../app/window/compare_panel.cpp" line="479"/>
         <source>ambient Ia*ka G</source>
         <translation>ambiente Ia*ka G</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="454"/>
+        <location filename="../app/window/compare_panel.cpp" line="480"/>
         <source>ambient Ia*ka B</source>
         <translation>ambiente Ia*ka B</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="454"/>
+        <location filename="../app/window/compare_panel.cpp" line="480"/>
         <source>diffuse Il*Od*kd R</source>
         <translation>difuso Il*Od*kd R</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="455"/>
+        <location filename="../app/window/compare_panel.cpp" line="481"/>
         <source>diffuse Il*Od*kd G</source>
         <translation>difuso Il*Od*kd G</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="455"/>
+        <location filename="../app/window/compare_panel.cpp" line="481"/>
         <source>diffuse Il*Od*kd B</source>
         <translation>difuso Il*Od*kd B</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="456"/>
+        <location filename="../app/window/compare_panel.cpp" line="482"/>
         <source>specular Il*ks R</source>
         <translation>especular Il*ks R</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="456"/>
+        <location filename="../app/window/compare_panel.cpp" line="482"/>
         <source>specular Il*ks G</source>
         <translation>especular Il*ks G</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="457"/>
+        <location filename="../app/window/compare_panel.cpp" line="483"/>
         <source>specular Il*ks B</source>
         <translation>especular Il*ks B</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="509"/>
+        <location filename="../app/window/compare_panel.cpp" line="535"/>
         <source>White wherever it covers is also what a lit image becomes with every colour multiplied by 255 (a colour scaled by 255 where it was already 0..255).</source>
         <translation>Branco onde quer que cubra é também o que uma imagem iluminada se torna com cada cor multiplicada por 255 (uma cor escalada por 255 onde já era 0..255).</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="530"/>
+        <location filename="../app/window/compare_panel.cpp" line="556"/>
         <source>The images are the same.</source>
         <translation>As imagens são iguais.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="532"/>
+        <location filename="../app/window/compare_panel.cpp" line="558"/>
         <source>Diagnosis: none of the mistakes RasterLab knows explains these differences.</source>
         <translation>Diagnóstico: nenhum dos erros que o RasterLab conhece explica estas diferenças.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="547"/>
+        <location filename="../app/window/compare_panel.cpp" line="573"/>
         <source>Evidence: %1</source>
         <translation>Evidência: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="548"/>
+        <location filename="../app/window/compare_panel.cpp" line="574"/>
         <source>Check: %1</source>
         <translation>Verifique: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="550"/>
+        <location filename="../app/window/compare_panel.cpp" line="576"/>
         <source>At (%1, %2): ours %3, theirs %4</source>
         <translation>Em (%1, %2): nossa %3, deles %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="560"/>
+        <location filename="../app/window/compare_panel.cpp" line="586"/>
         <source>Unexplained: %1% of the difference; %2 pixels still differ with every mistake above applied.</source>
         <translation>Sem explicação: %1% da diferença; %2 pixels ainda diferem com todos os erros acima aplicados.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="568"/>
+        <location filename="../app/window/compare_panel.cpp" line="594"/>
         <source>None of the known mistakes explains most of this difference.</source>
         <translation>Nenhum dos erros conhecidos explica a maior parte desta diferença.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="573"/>
+        <location filename="../app/window/compare_panel.cpp" line="599"/>
         <source>Lighting fitted to their colours</source>
         <translation>Iluminação ajustada às cores deles</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="575"/>
+        <location filename="../app/window/compare_panel.cpp" line="601"/>
         <source>%1 pixels inside triangles, their image carried back onto ours by the move above: rms %2 with ours, %3 fitted.</source>
         <translation>%1 pixels dentro de triângulos, a imagem deles trazida de volta para a nossa pelo movimento acima: rms %2 com a nossa, %3 ajustada.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="577"/>
+        <location filename="../app/window/compare_panel.cpp" line="603"/>
         <source>%1 pixels inside triangles: rms %2 with ours, %3 fitted.</source>
         <translation>%1 pixels dentro de triângulos: rms %2 com a nossa, %3 ajustada.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="584"/>
+        <location filename="../app/window/compare_panel.cpp" line="610"/>
         <source>%1: theirs %2 ± %3, ours %4</source>
         <translation>%1: deles %2 ± %3, nosso %4</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="602"/>
+        <location filename="../app/window/compare_panel.cpp" line="628"/>
         <source>Pick a pixel (here or on the image) to see their colour beside ours.</source>
         <translation>Escolha um pixel (aqui ou na imagem) para ver a cor deles ao lado da nossa.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="617"/>
+        <location filename="../app/window/compare_panel.cpp" line="641"/>
         <source>Their image is moved (the first finding): this pixel&apos;s point of the surface is outside it.</source>
         <translation>A imagem deles está movida (o primeiro achado): o ponto da superfície deste pixel fica fora dela.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="621"/>
+        <location filename="../app/window/compare_panel.cpp" line="645"/>
         <source>Their image is moved (the first finding): this pixel&apos;s point of the surface is their pixel (%1, %2).</source>
         <translation>A imagem deles está movida (o primeiro achado): o ponto da superfície deste pixel é o pixel (%1, %2) deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="627"/>
+        <location filename="../app/window/compare_panel.cpp" line="651"/>
         <source>Pixel (%1, %2): theirs %3, ours %4.</source>
         <translation>Pixel (%1, %2): deles %3, nossa %4.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="634"/>
+        <location filename="../app/window/compare_panel.cpp" line="658"/>
         <source>minus %1 in %2</source>
         <translation>menos %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="635"/>
+        <location filename="../app/window/compare_panel.cpp" line="659"/>
         <source>plus %1 in %2</source>
         <translation>mais %1 no %2</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="638"/>
+        <location filename="../app/window/compare_panel.cpp" line="662"/>
         <source>Their colour is ours.</source>
         <translation>A cor deles é a nossa.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="642"/>
+        <location filename="../app/window/compare_panel.cpp" line="666"/>
         <source>Their colour is ours %1.</source>
         <translation>A cor deles é a nossa %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="644"/>
+        <location filename="../app/window/compare_panel.cpp" line="668"/>
         <source>The scene has changed since the comparison: the lighting shown now is not the one compared.</source>
         <translation>A cena mudou desde a comparação: a iluminação mostrada agora não é a comparada.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="656"/>
+        <location filename="../app/window/compare_panel.cpp" line="680"/>
         <source>No triangle of ours covers this pixel: it is the background.</source>
         <translation>Nenhum triângulo nosso cobre este pixel: é o fundo.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="660"/>
+        <location filename="../app/window/compare_panel.cpp" line="684"/>
         <source>The lighting of this pixel is not known.</source>
         <translation>A iluminação deste pixel não é conhecida.</translation>
     </message>
     <message>
-        <location filename="../app/window/compare_panel.cpp" line="662"/>
+        <location filename="../app/window/compare_panel.cpp" line="686"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
         <translation>Os termos que teriam de mudar são calculados para o modelo de iluminação do curso em sombreamento flat ou Phong; este pixel é sombreado de outro modo (o inspetor de pixel mostra como).</translation>
     </message>

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "pipeline/analysis/painter.h"
 #include "pipeline/render/renderer.h"
@@ -67,16 +68,50 @@ struct Formulas {
     }
 };
 
-// Each draw's vertex normals as a student's normals stage may make them: the triangle
-// normals (P2 - P1) x (P3 - P1) summed at their length (area-weighted) or normalised, and
-// the sums left at their length or normalised. Draws whose file gives normals keep none.
+// Each vertex's first vertex at the same model position (itself when none comes before it).
+std::vector<std::uint32_t> firstAtPosition(const Mesh& mesh) {
+    std::map<std::array<double, 4>, std::uint32_t> first;
+    std::vector<std::uint32_t> key(mesh.positions.size());
+    for (std::uint32_t v = 0; v < key.size(); ++v) {
+        const dvec4& p = mesh.positions[v];
+        key[v] = first.emplace(std::array<double, 4>{p.x, p.y, p.z, p.w}, v).first->second;
+    }
+    return key;
+}
+
+// Whether a draw the normals stage computes normals for has two vertices at one position.
+bool sharesPositions(const Scene& scene) {
+    for (const Draw& draw : scene.draws) {
+        if (!draw.mesh || !draw.mesh->normals.empty()) continue;
+        const std::vector<std::uint32_t> key = firstAtPosition(*draw.mesh);
+        for (std::uint32_t v = 0; v < key.size(); ++v)
+            if (key[v] != v) return true;
+    }
+    return false;
+}
+
+// How a student's normals stage may make the vertex normals: the triangle normals
+// (P2 - P1) x (P3 - P1) summed at their length (area-weighted) or normalised; the sums left
+// at their length or normalised; summed over every vertex at the same position rather than
+// by the vertex's index.
+struct StudentNormals {
+    bool areaWeighted = false;
+    bool leftUnnormalised = false;
+    bool byPosition = false;
+    bool any() const { return areaWeighted || leftUnnormalised || byPosition; }
+};
+
+// Each draw's vertex normals made that way. Draws whose file gives normals keep none.
 std::vector<std::vector<vec3>> studentVertexNormals(const Scene& scene, const ViewTransform& view,
-                                                    bool areaWeighted, bool leftUnnormalised) {
+                                                    const StudentNormals& how) {
     std::vector<std::vector<vec3>> out(scene.draws.size());
     for (std::size_t d = 0; d < scene.draws.size(); ++d) {
         const Mesh* mesh = scene.draws[d].mesh.get();
         if (!mesh || !mesh->normals.empty()) continue;
         const std::vector<dvec4>& p = view.pView[d];
+        std::vector<std::uint32_t> key(p.size());
+        for (std::uint32_t v = 0; v < key.size(); ++v) key[v] = v;
+        if (how.byPosition) key = firstAtPosition(*mesh);
         std::vector<dvec3> sum(p.size(), dvec3(0.0));
         for (const auto& tri : mesh->triangles) {
             const dvec3 a = dvec3(p[tri[0]]) / p[tri[0]].w, b = dvec3(p[tri[1]]) / p[tri[1]].w,
@@ -84,13 +119,14 @@ std::vector<std::vector<vec3>> studentVertexNormals(const Scene& scene, const Vi
             dvec3 n = glm::cross(b - a, c - a);
             const double length = glm::length(n);
             if (!(length > 0.0)) continue;
-            if (!areaWeighted) n /= length;
-            for (std::uint32_t v : tri) sum[v] += n;
+            if (!how.areaWeighted) n /= length;
+            for (std::uint32_t v : tri) sum[key[v]] += n;
         }
         out[d].resize(p.size());
         for (std::size_t v = 0; v < p.size(); ++v) {
-            const double length = glm::length(sum[v]);
-            out[d][v] = vec3(leftUnnormalised || !(length > 0.0) ? sum[v] : sum[v] / length);
+            const dvec3& total = sum[key[v]];
+            const double length = glm::length(total);
+            out[d][v] = vec3(how.leftUnnormalised || !(length > 0.0) ? total : total / length);
         }
     }
     return out;
@@ -481,7 +517,10 @@ Result<std::optional<Rgba8Image>> imageOnFrame(const OurFrame& ours, const Mista
                 break;
             case Mistake::VertexNormalsUnnormalised:
             case Mistake::AreaWeightedNormals:
+            case Mistake::NormalsSharedByPosition:
                 if (!anyDraw(scene, ShadingModel::Phong) && !anyDraw(scene, ShadingModel::Gouraud))
+                    return Optional();
+                if (slip.mistake == Mistake::NormalsSharedByPosition && !sharesPositions(scene))
                     return Optional();
                 break;
             case Mistake::ByteRounding:
@@ -508,11 +547,12 @@ Result<std::optional<Rgba8Image>> imageOnFrame(const OurFrame& ours, const Mista
                 break;
         }
     }
-    const bool unnormalisedSums = slipOf(slips, Mistake::VertexNormalsUnnormalised) != nullptr;
-    const bool areaWeighted = slipOf(slips, Mistake::AreaWeightedNormals) != nullptr;
-    if ((unnormalisedSums || areaWeighted) && frame.view && !frame.normals->skipped)
-        f.vertexNormals =
-            studentVertexNormals(*frame.scene, *frame.view, areaWeighted, unnormalisedSums);
+    StudentNormals normals;
+    normals.leftUnnormalised = slipOf(slips, Mistake::VertexNormalsUnnormalised) != nullptr;
+    normals.areaWeighted = slipOf(slips, Mistake::AreaWeightedNormals) != nullptr;
+    normals.byPosition = slipOf(slips, Mistake::NormalsSharedByPosition) != nullptr;
+    if (normals.any() && frame.view && !frame.normals->skipped)
+        f.vertexNormals = studentVertexNormals(*frame.scene, *frame.view, normals);
     const Bytes background = backgroundBytes(scene.conventions);
     const DepthTest& depth = *frame.depth;
     const bool reshaded = f.any() || mframe.painted;

@@ -53,6 +53,7 @@ constexpr std::array<const char*, kMistakeCount + 2> kIds = {
     "basis-n-not-normalised",
     "basis-u-reversed",
     "screen-map",
+    "normals-shared-by-position",
     "command-misread",
     "fitted-lighting",
 };
@@ -251,6 +252,9 @@ Message titleOf(const OurFrame& ours, const Slip& slip) {
             return "the camera's U = V x N instead of N x V (x runs the other way)"_msg;
         case Mistake::ScreenMap:
             return screenMapTitle(slip.map, scene.width, scene.height);
+        case Mistake::NormalsSharedByPosition:
+            return "the vertex normals summed over every vertex at the same position instead of "
+                   "by the vertex's index (a faceted mesh drawn smooth)"_msg;
         case Mistake::CommandMisread:
         case Mistake::FittedLighting:
             return {};  // titled where found, from the misreading or the fitted values
@@ -272,6 +276,7 @@ Message mechanismOf(Mistake mistake) {
         case Mistake::EpsilonSpecialCases:
         case Mistake::VertexNormalsUnnormalised:
         case Mistake::AreaWeightedNormals:
+        case Mistake::NormalsSharedByPosition:
             return "our pixels lit again with that formula (the same triangles, barycentrics, "
                    "P', N, lights and material) give theirs"_msg;
         case Mistake::Gouraud:
@@ -396,6 +401,9 @@ Message hintOf(Mistake mistake) {
                    "across N"_msg;
         case Mistake::BasisUReversed:
             return "seed 000: U = N x V, so that U, V, N is right-handed"_msg;
+        case Mistake::NormalsSharedByPosition:
+            return "seed 000: a vertex's normal sums the normals of the triangles that use that "
+                   "vertex, by its index; vertices repeated at one position keep their own"_msg;
         case Mistake::ScreenMap:
             return "check the screen formulas, x = (x_ndc + 1) * width / 2 and y = (1 - y_ndc) * "
                    "height / 2, each with its own size, and that pixel (x, y) is written at "

@@ -69,12 +69,13 @@ enum class Mistake : std::uint8_t {
     BasisNNotNormalised,        // N not normalised before V - (V.N) N, nor after
     BasisUReversed,             // U = V x N instead of N x V
     ScreenMap,  // the screen mapped another way: stretched, flipped, turned, shifted (Slip::map)
+    NormalsSharedByPosition,  // vertex normals summed over every vertex at one position
     CommandMisread,  // a command file's command misread (compareCommandFile; Finding::command)
     FittedLighting,  // the lighting their colours say they used (lighting_fit.h)
 };
 
 // The mistakes the search composes (CommandMisread is found by compareCommandFile alone).
-inline constexpr std::size_t kMistakeCount = 34;
+inline constexpr std::size_t kMistakeCount = 35;
 
 // The small number a student tests the special cases against (EpsilonSpecialCases).
 inline constexpr float kSpecialCaseEpsilon = 1e-3f;

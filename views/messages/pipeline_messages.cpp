@@ -528,6 +528,8 @@ const char* const kCatalogue[] = {
     QT_TRANSLATE_NOOP("Messages", "its centre moved by (%1, %2) pixels"),
     QT_TRANSLATE_NOOP("Messages", "mirrored left-right"),
     QT_TRANSLATE_NOOP("Messages", "comparison cancelled"),
+    QT_TRANSLATE_NOOP("Messages", "the vertex normals summed over every vertex at the same position instead of by the vertex's index (a faceted mesh drawn smooth)"),
+    QT_TRANSLATE_NOOP("Messages", "seed 000: a vertex's normal sums the normals of the triangles that use that vertex, by its index; vertices repeated at one position keep their own"),
     QT_TRANSLATE_NOOP("Messages", "our image carried by that map of the screen (each pixel from the nearest of ours) gives their pixels"),
     QT_TRANSLATE_NOOP("Messages", "stretched %1 times across"),
     QT_TRANSLATE_NOOP("Messages", "stretched %1 times across and %2 times up and down"),
