@@ -139,6 +139,58 @@ Message screenMapTitle(const ScreenMap& m, int width, int height) {
                             mapNumber(m.yx, 3), mapNumber(m.yy, 3), mapNumber(m.ty, 1));
 }
 
+// The titles of the transform stages', the constants' and the normals' mistakes, and of the
+// screen map (the catalogue's later part); titleOf gives the others.
+Message laterTitleOf(const Scene& scene, const Slip& slip) {
+    switch (slip.mistake) {
+        case Mistake::LightInWorld:
+            return "the light not taken to view coordinates: its world position used as "
+                   "Pl_view"_msg;
+        case Mistake::LightWithoutC:
+            return "the light taken to view coordinates without subtracting C: [I] Pl instead "
+                   "of [I](Pl - C)"_msg;
+        case Mistake::ViewVectorReversed:
+            return "V = P' instead of -P' (L = P' - Pl gives the same image)"_msg;
+        case Mistake::AmbientIaOnly:
+            return "the ambient term Ia instead of Ia*ka"_msg;
+        case Mistake::TermsTruncated:
+            return "each Phong term truncated to a whole byte before the sum"_msg;
+        case Mistake::EpsilonSpecialCases:
+            return "V.N, N.L and R.V tested against %1 instead of 0"_msg(
+                formatNumber(kSpecialCaseEpsilon));
+        case Mistake::DepthReversed:
+            return "the depth test reversed: the farther fragment wins (> against a buffer "
+                   "cleared to -infinity, or to 0)"_msg;
+        case Mistake::ColourOffset:
+            return "every covered pixel's colour off by %1 (a constant offset)"_msg(
+                static_cast<int>(std::lround(slip.amount)));
+        case Mistake::ColourScale:
+            if (slip.amount == 255.0)
+                return "every colour multiplied by 255: a colour scaled by 255 where it was "
+                       "already 0..255"_msg;
+            if (slip.amount == 1.0 / 255.0)
+                return "every colour divided by 255: a colour scaled to 0..1 where the scene's "
+                       "are 0..255"_msg;
+            return "every colour multiplied by %1 (a constant scale)"_msg(formatNumber(slip.amount));
+        case Mistake::VertexNormalsUnnormalised:
+            return "the vertex normals left at the length of their sums (not normalised)"_msg;
+        case Mistake::AreaWeightedNormals:
+            return "the triangle normals summed at their length (area-weighted) instead of "
+                   "normalised first"_msg;
+        case Mistake::BasisNNotNormalised:
+            return "the camera's N not normalised before V - (V.N)N, nor after"_msg;
+        case Mistake::BasisUReversed:
+            return "the camera's U = V x N instead of N x V (x runs the other way)"_msg;
+        case Mistake::ScreenMap:
+            return screenMapTitle(slip.map, scene.width, scene.height);
+        case Mistake::NormalsSharedByPosition:
+            return "the vertex normals summed over every vertex at the same position instead of "
+                   "by the vertex's index (a faceted mesh drawn smooth)"_msg;
+        default:
+            return {};  // CommandMisread, FittedLighting: titled where found
+    }
+}
+
 Message titleOf(const OurFrame& ours, const Slip& slip) {
     const Mistake mistake = slip.mistake;
     const ivec2 shift = slip.shift;
@@ -212,52 +264,8 @@ Message titleOf(const OurFrame& ours, const Slip& slip) {
                 bytesMessage(value), bytesMessage(backgroundBytes(scene.conventions)));
         case Mistake::Alpha:
             return "alpha %1 on covered pixels instead of 255"_msg(int(value[3]));
-        case Mistake::LightInWorld:
-            return "the light not taken to view coordinates: its world position used as "
-                   "Pl_view"_msg;
-        case Mistake::LightWithoutC:
-            return "the light taken to view coordinates without subtracting C: [I] Pl instead "
-                   "of [I](Pl - C)"_msg;
-        case Mistake::ViewVectorReversed:
-            return "V = P' instead of -P' (L = P' - Pl gives the same image)"_msg;
-        case Mistake::AmbientIaOnly:
-            return "the ambient term Ia instead of Ia*ka"_msg;
-        case Mistake::TermsTruncated:
-            return "each Phong term truncated to a whole byte before the sum"_msg;
-        case Mistake::EpsilonSpecialCases:
-            return "V.N, N.L and R.V tested against %1 instead of 0"_msg(
-                formatNumber(kSpecialCaseEpsilon));
-        case Mistake::DepthReversed:
-            return "the depth test reversed: the farther fragment wins (> against a buffer "
-                   "cleared to -infinity, or to 0)"_msg;
-        case Mistake::ColourOffset:
-            return "every covered pixel's colour off by %1 (a constant offset)"_msg(
-                static_cast<int>(std::lround(slip.amount)));
-        case Mistake::ColourScale:
-            if (slip.amount == 255.0)
-                return "every colour multiplied by 255: a colour scaled by 255 where it was "
-                       "already 0..255"_msg;
-            if (slip.amount == 1.0 / 255.0)
-                return "every colour divided by 255: a colour scaled to 0..1 where the scene's "
-                       "are 0..255"_msg;
-            return "every colour multiplied by %1 (a constant scale)"_msg(formatNumber(slip.amount));
-        case Mistake::VertexNormalsUnnormalised:
-            return "the vertex normals left at the length of their sums (not normalised)"_msg;
-        case Mistake::AreaWeightedNormals:
-            return "the triangle normals summed at their length (area-weighted) instead of "
-                   "normalised first"_msg;
-        case Mistake::BasisNNotNormalised:
-            return "the camera's N not normalised before V - (V.N)N, nor after"_msg;
-        case Mistake::BasisUReversed:
-            return "the camera's U = V x N instead of N x V (x runs the other way)"_msg;
-        case Mistake::ScreenMap:
-            return screenMapTitle(slip.map, scene.width, scene.height);
-        case Mistake::NormalsSharedByPosition:
-            return "the vertex normals summed over every vertex at the same position instead of "
-                   "by the vertex's index (a faceted mesh drawn smooth)"_msg;
-        case Mistake::CommandMisread:
-        case Mistake::FittedLighting:
-            return {};  // titled where found, from the misreading or the fitted values
+        default:
+            return laterTitleOf(scene, slip);
     }
     return {};
 }

@@ -15,6 +15,13 @@ dvec2 ScreenMap::ourPoint(dvec2 p) const {
 
 namespace {
 
+// The pixel of a width x height image whose square holds point p; none outside the image.
+std::optional<ivec2> pixelAt(dvec2 p, int width, int height) {
+    const double fx = std::floor(p.x), fy = std::floor(p.y);
+    if (!(fx >= 0.0 && fy >= 0.0 && fx < width && fy < height)) return std::nullopt;
+    return ivec2(int(fx), int(fy));
+}
+
 // A coverage's area, centroid and second moments about the centroid (pixel centres).
 struct Moments {
     double count = 0.0;
@@ -130,10 +137,8 @@ Box mappedBox(const Box& b, const ScreenMap& map, int width, int height) {
 
 // Whether our pixel whose centre lands on their pixel (x, y)'s is covered.
 bool coveredAt(const Coverage& ours, const ScreenMap& map, int x, int y) {
-    const dvec2 q = map.ourPoint({x + 0.5, y + 0.5});
-    const double fx = std::floor(q.x), fy = std::floor(q.y);
-    if (!(fx >= 0.0 && fy >= 0.0 && fx < ours.width() && fy < ours.height())) return false;
-    return ours.at(int(fx), int(fy)) != 0;
+    const auto q = pixelAt(map.ourPoint({x + 0.5, y + 0.5}), ours.width(), ours.height());
+    return q && ours.at(q->x, q->y) != 0;
 }
 
 // The two coverages at one level of detail: blocks of `block` x `block` pixels, a block
@@ -285,11 +290,9 @@ Rgba8Image carriedBack(const Rgba8Image& theirs, const ScreenMap& map) {
     Rgba8Image out = theirs;
     for (int y = 0; y < theirs.height; ++y) {
         for (int x = 0; x < theirs.width; ++x) {
-            const dvec2 p = map.theirPoint({x + 0.5, y + 0.5});
-            const double fx = std::floor(p.x), fy = std::floor(p.y);
-            const bool inside = fx >= 0.0 && fy >= 0.0 && fx < theirs.width && fy < theirs.height;
+            const auto p = pixelAt(map.theirPoint({x + 0.5, y + 0.5}), theirs.width, theirs.height);
             const std::uint8_t none[4] = {0, 0, 0, 0};
-            const std::uint8_t* from = inside ? theirs.pixel(int(fx), int(fy)) : none;
+            const std::uint8_t* from = p ? theirs.pixel(p->x, p->y) : none;
             std::copy(from, from + 4, out.rgba.data() + (std::size_t(y) * theirs.width + x) * 4);
         }
     }
@@ -308,9 +311,8 @@ Rgba8Image mappedImage(const Rgba8Image& image, const ScreenMap& map,
         dvec2 q = invertible ? map.ourPoint({0.5, y + 0.5}) : dvec2(-1.0);
         std::uint8_t* to = out.rgba.data() + std::size_t(y) * image.width * 4;
         for (int x = 0; x < image.width; ++x, q += step, to += 4) {
-            const double fx = std::floor(q.x), fy = std::floor(q.y);
-            const bool inside = fx >= 0.0 && fy >= 0.0 && fx < image.width && fy < image.height;
-            const std::uint8_t* from = inside ? image.pixel(int(fx), int(fy)) : fill.data();
+            const auto p = pixelAt(q, image.width, image.height);
+            const std::uint8_t* from = p ? image.pixel(p->x, p->y) : fill.data();
             std::copy(from, from + 4, to);
         }
     }
