@@ -68,12 +68,135 @@ std::optional<std::size_t> binaryByte(const std::string& line) {
     return std::nullopt;
 }
 
+// The lines of the end of a text, the first one dropped when the text was cut inside it.
+std::vector<std::string> lastLines(const std::string& text, bool cut) {
+    std::vector<std::string> lines;
+    std::size_t start = 0;
+    if (cut) start = std::min(text.size(), text.find('\n') + 1);
+    while (start < text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        std::string line = text.substr(start, end - start);
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        lines.push_back(std::move(line));
+        start = end + 1;
+    }
+    while (!lines.empty() && lines.back().find_first_not_of(" \t") == std::string::npos)
+        lines.pop_back();
+    return lines;
+}
+
+// A line that opens a runtime's report of an error: a Java exception, a Python traceback, a
+// "Caused by", an error a runtime prints at its first column ("TypeError: ...").
+bool opensReport(const std::string& line) {
+    if (line.rfind("Exception in thread", 0) == 0 || line.rfind("Traceback (most recent", 0) == 0 ||
+        line.rfind("Caused by:", 0) == 0 || line.rfind("Error occurred during", 0) == 0 ||
+        line.rfind("Unhandled exception", 0) == 0)
+        return true;
+    const std::size_t colon = line.find(": ");
+    if (line.empty() || colon == std::string::npos || line[0] == ' ' || line[0] == '\t')
+        return false;
+    const std::string name = line.substr(0, colon);
+    return name.find(' ') == std::string::npos &&
+           (name.size() > 5 && (name.compare(name.size() - 5, 5, "Error") == 0 ||
+                                (name.size() > 9 &&
+                                 name.compare(name.size() - 9, 9, "Exception") == 0)));
+}
+
+std::string printable(const std::string& line) {
+    std::string s;
+    for (char c : line.substr(0, std::size_t(kErrorLineBytes)))
+        s += c == '\t' ? ' ' : (c >= 0x20 && c < 0x7f) ? c : '?';
+    if (line.size() > std::size_t(kErrorLineBytes)) s += "...";
+    return s;
+}
+
+// The last kErrorLines lines; where they begin inside a report whose opening line is in the
+// last hundred, that line and the next few come first, then "...", then the last lines.
+std::vector<std::string> reportLines(const std::vector<std::string>& lines) {
+    const std::size_t n = lines.size();
+    const std::size_t window = std::size_t(kErrorLines);
+    std::vector<std::string> out;
+    std::size_t first = n > window ? n - window : 0;
+    std::optional<std::size_t> opening;
+    for (std::size_t i = n; i-- > (n > 100 ? n - 100 : 0);)
+        if (opensReport(lines[i])) {
+            opening = i;
+            break;
+        }
+    if (opening && *opening < first) {
+        const std::size_t head = 4;
+        for (std::size_t i = *opening; i < *opening + head; ++i) out.push_back(printable(lines[i]));
+        out.push_back("...");
+        first = std::max(first + head + 1, *opening + head);
+    }
+    for (std::size_t i = first; i < n; ++i) out.push_back(printable(lines[i]));
+    return out;
+}
+
+// The line of standard error that says most in one line, quoted: the last report's opening
+// with its first frame (Java's "Exception in thread ..." and "at Scan.scan(Scan.java:57)"), a
+// Python traceback's exception line with the frame it was raised in, or else the last line.
+std::string errorHeadline(const std::vector<std::string>& lines) {
+    if (lines.empty()) return {};
+    std::size_t at = lines.size() - 1;
+    bool opening = false;
+    for (std::size_t i = lines.size(); i-- > 0;)
+        if (opensReport(lines[i]) && lines[i].rfind("Caused by:", 0) != 0) {
+            at = i;
+            opening = true;
+            break;
+        }
+    const auto trimmed = [](const std::string& line) {
+        const std::size_t text = line.find_first_not_of(" \t");
+        return text == std::string::npos ? std::string() : line.substr(text);
+    };
+    if (opening && lines[at].rfind("Traceback (most recent", 0) == 0) {
+        // The exception is the first line after the frames that is not indented.
+        std::string frame;
+        for (std::size_t i = at + 1; i < lines.size(); ++i) {
+            if (lines[i].empty() || lines[i][0] == ' ' || lines[i][0] == '\t') {
+                if (trimmed(lines[i]).rfind("File ", 0) == 0) frame = trimmed(lines[i]);
+                continue;
+            }
+            return "'" + lines[i] + "'" + (frame.empty() ? std::string() : ", from " + frame);
+        }
+    }
+    std::string line = lines[at];
+    if (opening && at + 1 < lines.size()) {
+        const std::string next = trimmed(lines[at + 1]);
+        if (next.rfind("at ", 0) == 0 || at + 2 == lines.size()) line += " " + next;
+    }
+    return "'" + line + "'";
+}
+
 void setLimit(int resource, rlim_t soft, rlim_t hard) {
     const struct rlimit limit { soft, hard };
     setrlimit(resource, &limit);
 }
 
 }  // namespace
+
+// The memory messages of the runtimes a student writes in, and what each means.
+std::string memoryHintOf(const std::vector<std::string>& lines, long long limit) {
+    static const char* const kMessages[] = {
+        "OutOfMemoryError",          "insufficient memory for the Java Runtime",
+        "Could not reserve enough",  "compressed class space",
+        "JavaScript heap out of memory", "MemoryError",
+        "std::bad_alloc",            "Cannot allocate memory",
+        "out of memory",             "Out of memory",
+        "OutOfMemoryException",
+    };
+    for (const std::string& line : lines)
+        for (const char* m : kMessages)
+            if (line.find(m) != std::string::npos)
+                return "this is the runtime running out of memory: the program may use " +
+                       (limit > 0 ? std::to_string(limit >> 20) + " MiB of data"
+                                  : std::string("all the memory there is")) +
+                       "; --memory MB gives it more, and a smaller data set or fewer copies "
+                       "need less";
+    return {};
+}
 
 bool sandboxUsable(std::string* reason) {
     static std::once_flag once;
@@ -163,7 +286,8 @@ std::vector<std::string> StudentProgram::arguments(const std::string& command,
     (m_limits.memoryBytes > 0 ? m_protections : m_missing)
         .push_back(m_limits.memoryBytes > 0
                        ? "memory: " + std::to_string(m_limits.memoryBytes >> 20) +
-                             " MiB of address space"
+                             " MiB of data (heap and private mappings; the address space a "
+                             "runtime reserves is free)"
                        : std::string("memory: not limited"));
     m_protections.push_back("files written: " + std::to_string(m_limits.fileBytes >> 20) +
                             " MiB each; answers: " + std::to_string(m_limits.answerBytes >> 20) +
@@ -244,7 +368,7 @@ void StudentProgram::startProcess(const std::string& command, const std::string&
         const auto cpu = rlim_t(m_limits.cpuSeconds);
         setLimit(RLIMIT_CPU, cpu, cpu + 2);
         if (m_limits.memoryBytes > 0)
-            setLimit(RLIMIT_AS, rlim_t(m_limits.memoryBytes), rlim_t(m_limits.memoryBytes));
+            setLimit(RLIMIT_DATA, rlim_t(m_limits.memoryBytes), rlim_t(m_limits.memoryBytes));
         setLimit(RLIMIT_FSIZE, rlim_t(m_limits.fileBytes), rlim_t(m_limits.fileBytes));
         setLimit(RLIMIT_NPROC, rlim_t(nproc), rlim_t(nproc));
         setLimit(RLIMIT_CORE, 0, 0);
@@ -275,8 +399,8 @@ bool StudentProgram::fail(const std::string& message) {
         if (m_talked)  // a program run on a file, not asked over the protocol, reads nothing
             m_error += m_lastLine.empty() ? "; nothing had been read before"
                                           : "; the last line read was " + shownText(m_lastLine);
-        const std::string tail = errorTail();
-        if (!tail.empty()) m_error += "; its standard error ends with " + shownText(tail);
+        const std::string line = errorHeadline(errorLines());
+        if (!line.empty()) m_error += "; its standard error says " + line;
     }
     return false;
 }
@@ -520,23 +644,23 @@ std::string StudentProgram::ending() {
     return "ended";
 }
 
-std::string StudentProgram::errorTail() const {
+std::vector<std::string> StudentProgram::errorLines() const {
     if (m_tempFolder.empty()) return {};
     FILE* f = std::fopen((m_tempFolder + "/stderr.txt").c_str(), "rb");
     if (!f) return {};
     std::fseek(f, 0, SEEK_END);
     const long size = std::ftell(f);
-    const long from = std::max(0L, size - 300);
+    const long from = std::max(0L, size - 16384);
     std::fseek(f, from, SEEK_SET);
-    std::string tail(std::size_t(size - from), '\0');
-    tail.resize(std::fread(tail.data(), 1, tail.size(), f));
+    std::string text(std::size_t(size - from), '\0');
+    text.resize(std::fread(text.data(), 1, text.size(), f));
     std::fclose(f);
-    while (!tail.empty() && (tail.back() == '\n' || tail.back() == '\r')) tail.pop_back();
-    const std::size_t cut = tail.rfind('\n', tail.size() > 200 ? tail.size() - 200 : 0);
-    if (from > 0 && cut != std::string::npos) tail.erase(0, cut + 1);
-    for (char& c : tail)
-        if (c == '\n') c = ' ';
-    return tail;
+    std::vector<std::string> lines = lastLines(text, from > 0);
+    return reportLines(lines);
+}
+
+std::string StudentProgram::memoryHint() const {
+    return memoryHintOf(errorLines(), m_limits.memoryBytes);
 }
 
 double StudentProgram::secondsUsed() const {

@@ -18,11 +18,17 @@ namespace rasterlab::check {
 
 class PidsCgroup;
 
+inline constexpr int kErrorLines = 12;
+inline constexpr int kErrorLineBytes = 200;
+
 struct Limits {
     double requestSeconds = 20.0;  // wall clock, for one request's answer
     double totalSeconds = 120.0;   // wall clock, for the whole run
     int cpuSeconds = 100;
-    long long memoryBytes = 2LL << 30;   // address space; 0: not limited
+    // Memory it may use (its data: heap and private writable mappings, RLIMIT_DATA), not its
+    // address space, which a runtime (a JVM, .NET, node) reserves far beyond what it uses;
+    // 0: not limited.
+    long long memoryBytes = 2LL << 30;
     long long fileBytes = 64LL << 20;    // any file it writes, its standard error included
     long long answerBytes = 64LL << 20;  // the bytes of one answer
     long long answerLines = 4LL << 20;   // its lines
@@ -58,8 +64,11 @@ public:
     // error() then says what happened and what was read last.
     std::optional<std::string> readLine();
     const std::string& error() const { return m_error; }
-    // The last lines of its standard error (at most a few hundred bytes).
-    std::string errorTail() const;
+    // The last lines of its standard error (at most kErrorLines lines of kErrorLineBytes),
+    // with the line that opens an exception's report where the last lines would cut it off.
+    std::vector<std::string> errorLines() const;
+    // When those lines are a runtime's out-of-memory message: a hint that names the limit.
+    std::string memoryHint() const;
     // Ends the program: closes its input, waits a moment, then kills its group.
     void stop();
     // A program that is not asked over the protocol (an HW2 renderer run on a command file):
@@ -101,6 +110,10 @@ private:
     long long m_answerBytes = 0, m_answerLines = 0;
     std::chrono::steady_clock::time_point m_started, m_requestDeadline, m_totalDeadline;
 };
+
+// When these lines (of a program's standard error or output) are a runtime's out-of-memory
+// message: a hint that names the limit (`memoryBytes`, 0 for none), else empty.
+std::string memoryHintOf(const std::vector<std::string>& lines, long long memoryBytes);
 
 // Whether bubblewrap is installed and can make a sandbox here (a user namespace may be
 // refused, inside a container); the reason when not.

@@ -30,9 +30,9 @@ struct CheckOptionSet {
     QCommandLineOption totalSeconds{
         lit("timeout"), lit("Seconds the program has in all (default 120)."), lit("S"), lit("120")};
     QCommandLineOption memory{lit("memory"),
-                              lit("Megabytes of address space the program may use (default "
-                                  "2048; 0: no limit, for a program built with "
-                                  "AddressSanitizer)."),
+                              lit("Megabytes of memory (data, not address space) the program "
+                                  "may use (default 2048; 0: no limit, for a program built "
+                                  "with AddressSanitizer)."),
                               lit("MB"), lit("2048")};
     QCommandLineOption noSandbox{
         lit("no-sandbox"),
