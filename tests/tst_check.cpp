@@ -3,11 +3,16 @@
 // passing every stage, one mutant of it per known stage mistake caught at the right stage and
 // element with its cause, and hostile programs stopped with a message.
 #include <QElapsedTimer>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
 
 #include <signal.h>
+
+#include <set>
 
 #include "app/check/check_session.h"
 #include "app/check/stage_mistakes.h"
@@ -175,8 +180,10 @@ private slots:
         QVERIFY(!report.passed());
     }
 
-    // The brute-force test of each pixel against the three edges (stage_mistakes.h), written
-    // apart from the lecture, gives the lecture's spans on every default scene.
+    // The spans of the scan's catalogue with no mistake (stage_mistakes.h: each row's crossings
+    // with the edges, written apart from the lecture's edge walk) are the lecture's spans on
+    // every default scene, so that a mistake's spans differ from the lecture's by that mistake
+    // alone.
     void edgeFunctionsGiveTheLecturesSpans() {
         for (const CheckScene& s : scenes()) {
             rl::Diagnostics diagnostics;
@@ -194,7 +201,7 @@ private slots:
                 for (std::uint32_t k = scan.spanStart[t]; k < scan.spanStart[t + 1]; ++k)
                     ours.push_back({double(t), double(scan.spans[k].y),
                                     double(scan.spans[k].xBegin), double(scan.spans[k].xEnd - 1)});
-            std::vector<Row> brute = scanSpans(triangles, s.scene->width, s.scene->height, false);
+            std::vector<Row> brute = scanAnswer(triangles, s.scene->width, s.scene->height, {});
             std::sort(brute.begin(), brute.end());
             std::sort(ours.begin(), ours.end());
             QVERIFY2(brute == ours, s.name.c_str());
@@ -213,10 +220,11 @@ private slots:
         qInfo("the Python example's check over the default scenes: %.2f s", report.seconds);
     }
 
-    // Chained, each stage given the program's own earlier answers: the example still passes,
-    // and one mistake in the basis now reaches every stage after it, where run apart it
-    // reaches none but the frame.
-    void chainedErrorsAddUp() {
+    // Chained, each stage given the program's own earlier answers: the example still passes.
+    // Each stage is judged on exactly what it was sent, so one mistake in the basis or the
+    // projection fails that stage and the frame alone; what it carries into the later stages
+    // is counted beside their verdicts (0 before the mistake, more after it).
+    void chainedStagesAreJudgedOnWhatTheyReceived() {
         const auto run = [&](const QString& switches, bool chain) {
             CheckOptions o;
             o.chain = chain;
@@ -233,14 +241,30 @@ private slots:
                     out << QString::fromStdString(std::string(stageName(st.stage)));
             return out.join(',');
         };
-        QCOMPARE(failing(run("--u-v-cross-n", false)), QStringLiteral("basis,frame"));
-        QCOMPARE(failing(run("--u-v-cross-n", true)),
-                 QStringLiteral("basis,view,normals,projection,scan,zbuffer,lighting,frame"));
-        QCOMPARE(failing(run("--round-vertices", true)),
-                 QStringLiteral("projection,scan,zbuffer,frame"));
-        QVERIFY(formatReport(run("--flip-y", true), "text")
-                    .find(", chained: each stage given the program's own earlier answers") !=
+        const auto carried = [](const CheckReport& r, Stage stage) {
+            for (const StageResult& st : r.scenes.front().stages)
+                if (st.stage == stage) return st.carried ? int(*st.carried) : -1;
+            return -2;
+        };
+        const CheckReport apart = run("--u-v-cross-n", false);
+        QCOMPARE(failing(apart), QStringLiteral("basis,frame"));
+        QCOMPARE(carried(apart, Stage::View), -1);
+        const CheckReport basis = run("--u-v-cross-n", true);
+        QCOMPARE(failing(basis), QStringLiteral("basis,frame"));
+        for (Stage s : {Stage::View, Stage::Normals, Stage::Projection, Stage::Scan,
+                        Stage::ZBuffer, Stage::Lighting})
+            QVERIFY2(carried(basis, s) > 0, stageName(s).data());
+        const CheckReport rounded = run("--round-vertices", true);
+        QCOMPARE(failing(rounded), QStringLiteral("projection,frame"));
+        QCOMPARE(carried(rounded, Stage::View), 0);
+        QCOMPARE(carried(rounded, Stage::Projection), 0);
+        QVERIFY(carried(rounded, Stage::Scan) > 0);
+        QVERIFY(carried(rounded, Stage::ZBuffer) > 0);
+        const std::string text = formatReport(run("--flip-y", true), "text");
+        QVERIFY(text.find(", chained: each stage given the program's own earlier answers") !=
                 std::string::npos);
+        QVERIFY(text.find("theirs: the program's answer; ours: the lecture's stage (RasterLab's) "
+                          "applied to exactly what the request sent") != std::string::npos);
     }
 
     // The second student's renderer, in C++, written apart from RasterLab and from the Python
@@ -296,7 +320,7 @@ private slots:
         row("--triangle-normal-reversed", Stage::Normals, "triangle 0",
             "the cross product in the other order: (Pc - Pa) x (Pb - Pa)");
         row("--sum-unnormalized-triangle-normals", Stage::Normals, "triangle 0",
-            "the triangle normals not normalised (and summed at their length)");
+            "the triangle normals not normalised");
         row("--vertex-normals-unnormalized", Stage::Normals, "vertex 0",
             "the vertex normals not normalised: the sum left at its length");
         row("--round-vertices", Stage::Projection, "vertex 0",
@@ -316,7 +340,8 @@ private slots:
         row("--l-reversed", Stage::Lighting, "sample 0",
             "V = P' instead of -P' (or L = P' - Pl: the same colours)");
         row("--epsilon-special-cases", Stage::Lighting, "sample 6",
-            "V.N, N.L and R.V compared with 1e-3 instead of 0");
+            "V.N, N.L and R.V compared with 0.001 instead of 0 (the special cases at a small "
+            "epsilon)");
         row("--truncate-terms", Stage::Lighting, "sample 0",
             "each term truncated to a whole number before the sum");
         row("--ambient-ia-only", Stage::Lighting, "sample 0",
@@ -325,9 +350,9 @@ private slots:
             "the ambient term Ia ka Od instead of Ia ka");
         row("--no-clamp", Stage::Lighting, "sample 0", "no clamp: channels above 255 kept");
         row("--gouraud", Stage::Frame, "pixel (72, 11)",
-            "compare: gouraud shading where phong was asked");
+            "gouraud shading where phong was asked");
         row("--mirror-x", Stage::Frame, "pixel (72, 10)",
-            "compare: the image mirrored left-right (x runs the other way)");
+            "the image mirrored left-right (x runs the other way)");
     }
 
     void mutantsAreCaughtWhereTheyAre() {
@@ -346,8 +371,84 @@ private slots:
         QCOMPARE(int(r->verdict), int(Verdict::Failed));
         QVERIFY(r->first);
         QCOMPARE(QString::fromStdString(r->first->element), element);
-        QCOMPARE(QString::fromStdString(r->likelyCause), cause);
+        QCOMPARE(QString::fromStdString(r->causes()), cause);
         QVERIFY(r->differing > 0 && r->differing <= r->elements);
+    }
+
+    // Several mistakes in one stage are each named, with what they explain; the Markdown and
+    // JSON reports carry each finding's share, the unexplained remainder and the largest error,
+    // and say what "theirs" and "ours" are.
+    void reportsCarryTheFindings() {
+        const CheckReport r = checkPython({"--truncate-terms", "--no-flip-normal"},
+                                          {Stage::Lighting});
+        const StageResult* lighting = r.result(Stage::Lighting);
+        QVERIFY(lighting);
+        std::set<std::string> ids;
+        for (const StageFinding& f : lighting->findings) ids.insert(f.id);
+        QCOMPARE(ids, (std::set<std::string>{"terms-truncated", "normal-not-flipped"}));
+        QCOMPARE(lighting->unexplained, std::size_t(0));
+        std::size_t explained = 0;
+        for (const StageFinding& f : lighting->findings) explained += f.explained - f.spoiled;
+        QCOMPARE(explained, lighting->differing);
+        const std::string md = formatReport(r, "md");
+        QVERIFY2(md.find("theirs: the program's answer; ours: the lecture's stage (RasterLab's) "
+                         "applied to the same request") != std::string::npos,
+                 md.c_str());
+        QVERIFY2(md.find("| finding | explains | spoils | share |") != std::string::npos, md.c_str());
+        QVERIFY2(md.find("| unexplained | 0 of " + std::to_string(lighting->differing) +
+                         " | | 0.0% |") != std::string::npos,
+                 md.c_str());
+        QVERIFY2(md.find("Largest error: ") != std::string::npos, md.c_str());
+        const QJsonObject json =
+            QJsonDocument::fromJson(QByteArray::fromStdString(formatReport(r, "json"))).object();
+        QVERIFY(json[QStringLiteral("legend")].toString().startsWith("theirs: the program's answer"));
+        const QJsonObject stage = json[QStringLiteral("scenes")]
+                                      .toArray()
+                                      .first()[QStringLiteral("stages")]
+                                      .toArray()
+                                      .first()
+                                      .toObject();
+        QCOMPARE(stage[QStringLiteral("unexplained")].toInt(), 0);
+        QVERIFY(stage[QStringLiteral("largestError")].toDouble() > 0.0);
+        double shares = 0.0;
+        for (const auto& f : stage[QStringLiteral("findings")].toArray())
+            shares += f[QStringLiteral("share")].toDouble();
+        QVERIFY2(std::abs(shares - 1.0) < 1e-9, qPrintable(QString::number(shares)));
+        QCOMPARE(json[QStringLiteral("stageCounts")][QStringLiteral("lighting")]
+                     [QStringLiteral("failed")]
+                         .toInt(),
+                 6);
+    }
+
+    // A program that runs out of memory breaks its stage with the last lines of its standard
+    // error and a hint that names the limit; the next stage is asked of it again.
+    void outOfMemoryGetsAHint() {
+        QTemporaryDir dir;
+        QFile file(dir.filePath("hog.py"));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("import sys\n"
+                   "print('speaks 1', flush=True)\n"
+                   "for line in sys.stdin:\n"
+                   "    if line.strip() == 'basis':\n"
+                   "        hoard = bytearray(1 << 30)\n");
+        file.close();
+        CheckOptions options;
+        options.limits.memoryBytes = 256LL << 20;
+        options.stages = {Stage::Basis, Stage::View};
+        const CheckReport r = runCheck((python() + " hog.py").toStdString(),
+                                       dir.path().toStdString(), {scenes().front()}, options);
+        const StageResult& basis = r.scenes.front().stages.front();
+        QCOMPARE(int(basis.verdict), int(Verdict::Broken));
+        QVERIFY2(!basis.standardError.empty() && basis.standardError.back() == "MemoryError",
+                 formatReport(r, "text").c_str());
+        QCOMPARE(basis.hint,
+                 std::string("this is the runtime running out of memory: the program may use "
+                             "256 MiB of data; --memory MB gives it more, and a smaller data set "
+                             "or fewer copies need less"));
+        QVERIFY2(basis.problem.find("its standard error says 'MemoryError'") != std::string::npos,
+                 basis.problem.c_str());
+        QCOMPARE(r.restarts, 1);  // asked the view again, after the basis broke
+        QVERIFY(formatReport(r, "text").find("stderr| MemoryError") != std::string::npos);
     }
 
     // A class of three: the example, one that hangs and one that floods; each gets its row,

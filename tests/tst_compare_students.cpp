@@ -87,6 +87,35 @@ QJsonObject compareJson(const QTemporaryDir& dir, const CourseScene& scene, cons
     const QJsonObject result = compareJson(dir, course, image, run);                   \
     QVERIFY2(run.exitCode == 0, qPrintable(run.err))
 
+// examples/student/hw2's program run in dir on a command file's text with the switches, and
+// its image compared with ours: compare's JSON (empty, with the problem in run, on a failure).
+QJsonObject hw2StudentCompared(const QTemporaryDir& dir, const QString& text,
+                               const QStringList& switches, CliRun& run) {
+    const QString hw2 = testing::sourceDir() + QStringLiteral("/examples/student/hw2/");
+    QFile file(dir.filePath(QStringLiteral("scene.txt")));
+    if (!file.open(QIODevice::WriteOnly)) return {};
+    file.write(text.toUtf8());
+    file.close();
+    QProcess python;
+    python.setWorkingDirectory(dir.path());
+    python.start(QStringLiteral(RASTERLAB_PYTHON),
+                 QStringList{hw2 + QStringLiteral("rasterizer.py"), QStringLiteral("scene.txt")} +
+                     switches);
+    if (!python.waitForFinished(120000) || python.exitCode() != 0) {
+        run.problem = QString::fromUtf8(python.readAllStandardError());
+        return {};
+    }
+    if (!runCli({"compare", "scene.txt", "--image", "scene.png", "--format", "json"}, dir.path(),
+                run))
+        return {};
+    return QJsonDocument::fromJson(run.out.toUtf8()).object();
+}
+
+QString hw2SceneText() {
+    return QString::fromUtf8(
+        testing::readFile(testing::sourceDir() + QStringLiteral("/examples/student/hw2/scene.txt")));
+}
+
 QString ranking(const QJsonObject& result) {
     QString text;
     for (const auto& d : result[QStringLiteral("diagnosis")].toArray())
@@ -156,6 +185,8 @@ private slots:
     void normalsSharedByPosition();
     void commandFileOfAnIndependentRenderer_data();
     void commandFileOfAnIndependentRenderer();
+    void commandNeverImplemented();
+    void coveredPixelsAfterTheBackground();
 };
 
 void TestCompareStudents::oneMistake_data() {
@@ -650,21 +681,9 @@ void TestCompareStudents::commandFileOfAnIndependentRenderer() {
     QFETCH(QString, mistake);
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
-    const QString hw2 = testing::sourceDir() + QStringLiteral("/examples/student/hw2/");
-    QVERIFY(QFile::copy(hw2 + QStringLiteral("scene.txt"),
-                        dir.filePath(QStringLiteral("scene.txt"))));
-    QProcess python;
-    python.setWorkingDirectory(dir.path());
-    python.start(QStringLiteral(RASTERLAB_PYTHON),
-                 QStringList{hw2 + QStringLiteral("rasterizer.py"), QStringLiteral("scene.txt")} +
-                     switches);
-    QVERIFY(python.waitForFinished(120000));
-    QVERIFY2(python.exitCode() == 0, python.readAllStandardError().constData());
     CliRun run;
-    QVERIFY(runCli({"compare", "scene.txt", "--image", "scene.png", "--format", "json"}, dir.path(),
-                   run));
-    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
-    const QJsonObject result = QJsonDocument::fromJson(run.out.toUtf8()).object();
+    const QJsonObject result = hw2StudentCompared(dir, hw2SceneText(), switches, run);
+    QVERIFY2(run.exitCode == 0, qPrintable(run.problem + run.err));
     QCOMPARE(result[QStringLiteral("differing")].toInt(), differing);
     const QJsonArray diagnosis = result[QStringLiteral("diagnosis")].toArray();
     if (differing == 0) {
@@ -679,6 +698,59 @@ void TestCompareStudents::commandFileOfAnIndependentRenderer() {
         QCOMPARE(first[QStringLiteral("variant")].toString(), QStringLiteral("ignored"));
     }
     QCOMPARE(result[QStringLiteral("unexplained")][QStringLiteral("share")].toDouble(), 0.0);
+}
+
+// A program that never implemented multmv ignores every one of them: one finding names the
+// command, all its occurrences, and nothing stays unexplained.
+void TestCompareStudents::commandNeverImplemented() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QString text = hw2SceneText();
+    text.replace(QStringLiteral("scale 1.2 1 1\n"),
+                 QStringLiteral("scale 1.2 1 1\nmultmv 1 0 0 0  0 0.9 -0.3 0  0 0.3 0.9 0  0 0 0 1\n"));
+    CliRun run;
+    const QJsonObject result =
+        hw2StudentCompared(dir, text, {QStringLiteral("--ignore-multmv")}, run);
+    QVERIFY2(run.exitCode == 0, qPrintable(run.problem + run.err));
+    const QJsonArray diagnosis = result[QStringLiteral("diagnosis")].toArray();
+    QVERIFY2(!diagnosis.isEmpty(), qPrintable(run.out));
+    const QJsonObject first = diagnosis.first().toObject();
+    QCOMPARE(first[QStringLiteral("mistake")].toString(), QStringLiteral("command-misread"));
+    QCOMPARE(first[QStringLiteral("variant")].toString(), QStringLiteral("ignored"));
+    QCOMPARE(first[QStringLiteral("occurrences")].toInt(), 2);
+    QCOMPARE(first[QStringLiteral("title")].toString(),
+             QStringLiteral("every 'multmv' ignored (2 of them, from line 17): the command never "
+                            "implemented"));
+    QVERIFY2(result[QStringLiteral("unexplained")][QStringLiteral("share")].toDouble() < 0.01,
+             qPrintable(ranking(result)));
+}
+
+// A window's grey background is almost all of the difference; the covered pixels that still
+// differ are ranked on what is left, so Gouraud shading is named after the background.
+void TestCompareStudents::coveredPixelsAfterTheBackground() {
+    COMPARE_STUDENT(plain, "goblet", QStringList{"--gouraud"});
+    QImage grey(image);
+    QVERIFY(!grey.isNull());
+    for (int y = 0; y < grey.height(); ++y)
+        for (int x = 0; x < grey.width(); ++x)
+            if (grey.pixelColor(x, y) == QColor(0, 0, 0)) grey.setPixelColor(x, y, QColor(238, 238, 238));
+    const QString windowed = dir.filePath(QStringLiteral("window.png"));
+    QVERIFY(grey.save(windowed));
+    CliRun again;
+    const QJsonObject result = compareJson(dir, course, windowed, again);
+    QVERIFY2(again.exitCode == 0, qPrintable(again.err));
+    const QJsonArray diagnosis = result[QStringLiteral("diagnosis")].toArray();
+    qInfo("%s", qPrintable(ranking(result)));
+    QVERIFY2(diagnosis.size() >= 2, qPrintable(ranking(result)));
+    QCOMPARE(diagnosis[0][QStringLiteral("mistake")].toString(), QStringLiteral("background"));
+    QVERIFY2(diagnosis[0][QStringLiteral("share")].toDouble() > 0.95, qPrintable(ranking(result)));
+    bool gouraud = false;
+    for (const auto& d : diagnosis)
+        gouraud = gouraud || d[QStringLiteral("mistake")].toString() == QLatin1String("gouraud");
+    QVERIFY2(gouraud, qPrintable(ranking(result)));
+    QVERIFY2(result[QStringLiteral("unexplained")][QStringLiteral("share")].toDouble() < 0.005,
+             qPrintable(ranking(result)));
+    (void)plain;
 }
 
 QTEST_GUILESS_MAIN(TestCompareStudents)

@@ -1812,12 +1812,12 @@
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="531"/>
         <source>the vertex normals summed over every vertex at the same position instead of by the vertex&apos;s index (a faceted mesh drawn smooth)</source>
-        <translation>the vertex normals summed over every vertex at the same position instead of by the vertex's index (a faceted mesh drawn smooth)</translation>
+        <translation>the vertex normals summed over every vertex at the same position instead of by the vertex&apos;s index (a faceted mesh drawn smooth)</translation>
     </message>
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="532"/>
         <source>seed 000: a vertex&apos;s normal sums the normals of the triangles that use that vertex, by its index; vertices repeated at one position keep their own</source>
-        <translation>seed 000: a vertex's normal sums the normals of the triangles that use that vertex, by its index; vertices repeated at one position keep their own</translation>
+        <translation>seed 000: a vertex&apos;s normal sums the normals of the triangles that use that vertex, by its index; vertices repeated at one position keep their own</translation>
     </message>
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="533"/>
@@ -1901,691 +1901,721 @@
     </message>
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="551"/>
+        <source>vertex positions kept fractional (never made whole) instead of truncated to whole pixels</source>
+        <translation>vertex positions kept fractional (never made whole) instead of truncated to whole pixels</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="553"/>
         <source>vertex positions truncated instead of rounded to whole pixels</source>
         <translation>vertex positions truncated instead of rounded to whole pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="552"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="554"/>
         <source>vertex positions rounded instead of truncated to the sub-pixel grid</source>
         <translation>vertex positions rounded instead of truncated to the sub-pixel grid</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="554"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="556"/>
         <source>vertex positions truncated instead of rounded to the sub-pixel grid</source>
         <translation>vertex positions truncated instead of rounded to the sub-pixel grid</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="556"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="558"/>
         <source>vertex positions truncated to the sub-pixel grid instead of kept as computed</source>
         <translation>vertex positions truncated to the sub-pixel grid instead of kept as computed</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="558"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="560"/>
         <source>the top-left fill rule where edges are inclusive</source>
         <translation>the top-left fill rule where edges are inclusive</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="559"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="561"/>
         <source>inclusive edges where the fill rule is top-left</source>
         <translation>inclusive edges where the fill rule is top-left</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="560"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="562"/>
         <source>colour bytes rounded instead of truncated (off by one)</source>
         <translation>colour bytes rounded instead of truncated (off by one)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="561"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="563"/>
         <source>colour bytes truncated instead of rounded (off by one)</source>
         <translation>colour bytes truncated instead of rounded (off by one)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="562"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="564"/>
         <source>colours above 255 wrap around instead of clamping</source>
         <translation>colours above 255 wrap around instead of clamping</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="563"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="565"/>
         <source>the painter&apos;s order (far to near, no depth test) instead of the z-buffer</source>
         <translation>the painter&apos;s order (far to near, no depth test) instead of the z-buffer</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="565"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="567"/>
         <source>z &lt; stored instead of z &lt;= stored in the depth test (ties keep the earlier triangle)</source>
         <translation>z &lt; stored instead of z &lt;= stored in the depth test (ties keep the earlier triangle)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="568"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="570"/>
         <source>z &lt;= stored instead of z &lt; stored in the depth test (ties go to the later triangle)</source>
         <translation>z &lt;= stored instead of z &lt; stored in the depth test (ties go to the later triangle)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="571"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="573"/>
         <source>a different background: %1 where the scene&apos;s is %2</source>
         <translation>a different background: %1 where the scene&apos;s is %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="572"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="574"/>
         <source>alpha %1 on covered pixels instead of 255</source>
         <translation>alpha %1 on covered pixels instead of 255</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="573"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="575"/>
         <source>our pixels lit again with that formula (the same triangles, barycentrics, P&apos;, N, lights and material) give theirs</source>
         <translation>our pixels lit again with that formula (the same triangles, barycentrics, P&apos;, N, lights and material) give theirs</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="576"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="578"/>
         <source>the scene rendered again in that shading model gives their pixels</source>
         <translation>the scene rendered again in that shading model gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="578"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="580"/>
         <source>our image moved that way gives their pixels</source>
         <translation>our image moved that way gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="579"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="581"/>
         <source>the scene rendered again with that rule gives their pixels</source>
         <translation>the scene rendered again with that rule gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="580"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="582"/>
         <source>our float colours made bytes that way give their pixels</source>
         <translation>our float colours made bytes that way give their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="581"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="583"/>
         <source>the scene painted far to near without a depth test gives their pixels</source>
         <translation>the scene painted far to near without a depth test gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="583"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="585"/>
         <source>their pixels where no triangle of ours is take that colour</source>
         <translation>their pixels where no triangle of ours is take that colour</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="584"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="586"/>
         <source>their pixels where a triangle of ours is take that alpha</source>
         <translation>their pixels where a triangle of ours is take that alpha</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="585"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="587"/>
         <source>seed 000&apos;s ambient term is Ia*ka, without the object colour Od</source>
         <translation>seed 000&apos;s ambient term is Ia*ka, without the object colour Od</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="586"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="588"/>
         <source>seed 000: if V.N &lt; 0, N := -N before the lighting</source>
         <translation>seed 000: if V.N &lt; 0, N := -N before the lighting</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="587"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="589"/>
         <source>seed 000: if R.V &lt; 0, no specular term</source>
         <translation>seed 000: if R.V &lt; 0, no specular term</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="588"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="590"/>
         <source>seed 000: if N.L &lt; 0, neither diffuse nor specular</source>
         <translation>seed 000: if N.L &lt; 0, neither diffuse nor specular</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="589"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="591"/>
         <source>the interpolated N is shorter than 1: normalise it before N.L and R</source>
         <translation>the interpolated N is shorter than 1: normalise it before N.L and R</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="591"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="593"/>
         <source>check where the lighting is evaluated: per pixel, per vertex or per triangle</source>
         <translation>check where the lighting is evaluated: per pixel, per vertex or per triangle</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="594"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="596"/>
         <source>check the sign of x in the projection or the screen mapping</source>
         <translation>check the sign of x in the projection or the screen mapping</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="595"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="597"/>
         <source>screen row 0 is the top: y = (1 - y_ndc) * height / 2</source>
         <translation>screen row 0 is the top: y = (1 - y_ndc) * height / 2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="596"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="598"/>
         <source>check the screen mapping&apos;s offsets and the first pixel of each span</source>
         <translation>check the screen mapping&apos;s offsets and the first pixel of each span</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="598"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="600"/>
         <source>where a pixel is sampled decides which pixels an edge covers (--rules)</source>
         <translation>where a pixel is sampled decides which pixels an edge covers (--rules)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="600"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
         <source>check how screen coordinates become whole pixels ((int) truncates)</source>
         <translation>check how screen coordinates become whole pixels ((int) truncates)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
         <source>the pixels exactly on an edge: which triangle (or both) covers them</source>
         <translation>the pixels exactly on an edge: which triangle (or both) covers them</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
         <source>check how the colour becomes a byte: (int) truncates, + 0.5 rounds</source>
         <translation>check how the colour becomes a byte: (int) truncates, + 0.5 rounds</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
         <source>clamp each channel to 255 before writing it as a byte</source>
         <translation>clamp each channel to 255 before writing it as a byte</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
         <source>keep a depth buffer and write a pixel only when the fragment is nearer</source>
         <translation>keep a depth buffer and write a pixel only when the fragment is nearer</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
         <source>the comparison of the depth test: &lt; keeps the first of two equal depths</source>
         <translation>the comparison of the depth test: &lt; keeps the first of two equal depths</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
         <source>the colour (and alpha) of the pixels no triangle covers</source>
         <translation>the colour (and alpha) of the pixels no triangle covers</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
         <source>the alpha written with each shaded pixel</source>
         <translation>the alpha written with each shaded pixel</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
         <source>theirs - ours is %1 in %2 of the %3 covered channels that differ</source>
         <translation>theirs - ours is %1 in %2 of the %3 covered channels that differ</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
         <source>theirs is within 2 of %1 times ours in %2 of the %3 covered channels that differ</source>
         <translation>theirs is within 2 of %1 times ours in %2 of the %3 covered channels that differ</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
         <source>the scene rendered again with the fitted lighting gives their pixels</source>
         <translation>the scene rendered again with the fitted lighting gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
         <source>compare the light&apos;s position, the intensities and the coefficients your program uses with the fitted ones</source>
         <translation>compare the light&apos;s position, the intensities and the coefficients your program uses with the fitted ones</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
         <source>their lighting, fitted to their colours: %1</source>
         <translation>their lighting, fitted to their colours: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
         <source>the lighting is fitted for a course camera and one positional light of the course&apos;s model</source>
         <translation>the lighting is fitted for a course camera and one positional light of the course&apos;s model</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
         <source>the lighting is fitted for Phong-shaded draws of one material</source>
         <translation>the lighting is fitted for Phong-shaded draws of one material</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
         <source>too few unclamped pixels inside triangles to fit the lighting</source>
         <translation>too few unclamped pixels inside triangles to fit the lighting</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
         <source>the fitted light is at the light&apos;s world position: it was not taken to view coordinates</source>
         <translation>the fitted light is at the light&apos;s world position: it was not taken to view coordinates</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
         <source>the fitted light is at [I] Pl: C was not subtracted</source>
         <translation>the fitted light is at [I] Pl: C was not subtracted</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
         <source>the fitted light is ours with %1 negated</source>
         <translation>the fitted light is ours with %1 negated</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
         <source>the fitted light is ours with %1 and %2 swapped</source>
         <translation>the fitted light is ours with %1 and %2 swapped</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
         <source>the fitted n is half of ours: n halved</source>
         <translation>the fitted n is half of ours: n halved</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
         <source>the command file read again with that command so gives their pixels</source>
         <translation>the command file read again with that command so gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
+        <source>every &apos;%1&apos; ignored (%2 of them, from line %3): the command never implemented</source>
+        <translation>every &apos;%1&apos; ignored (%2 of them, from line %3): the command never implemented</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
+        <source>every &apos;%1&apos; multiplied on the other side (M = A M instead of M A), from line %2</source>
+        <translation>every &apos;%1&apos; multiplied on the other side (M = A M instead of M A), from line %2</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
+        <source>every &apos;%1&apos; read column by column (the matrix transposed), from line %2</source>
+        <translation>every &apos;%1&apos; read column by column (the matrix transposed), from line %2</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
+        <source>every &apos;%1&apos; with its angle taken as radians, from line %2</source>
+        <translation>every &apos;%1&apos; with its angle taken as radians, from line %2</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
+        <source>every &apos;%1&apos; with s = f x up not normalised, from line %2</source>
+        <translation>every &apos;%1&apos; with s = f x up not normalised, from line %2</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
         <source>line %1: &apos;%2&apos; ignored</source>
         <translation>line %1: &apos;%2&apos; ignored</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
         <source>line %1: &apos;%2&apos; multiplied on the other side (M = A M instead of M A)</source>
         <translation>line %1: &apos;%2&apos; multiplied on the other side (M = A M instead of M A)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
         <source>line %1: &apos;%2&apos; read column by column (the matrix transposed)</source>
         <translation>line %1: &apos;%2&apos; read column by column (the matrix transposed)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
         <source>line %1: &apos;%2&apos; with its angle taken as radians</source>
         <translation>line %1: &apos;%2&apos; with its angle taken as radians</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
         <source>line %1: &apos;%2&apos; with s = f x up not normalised (the image stretched across)</source>
         <translation>line %1: &apos;%2&apos; with s = f x up not normalised (the image stretched across)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="633"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="643"/>
         <source>check that your program reads &apos;%1&apos; and applies it</source>
         <translation>check that your program reads &apos;%1&apos; and applies it</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
         <source>seed 001: a transform multiplies the model/view on the right, M = M A</source>
         <translation>seed 001: a transform multiplies the model/view on the right, M = M A</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
         <source>seed 001 writes a matrix row by row: the first four numbers are its first row</source>
         <translation>seed 001 writes a matrix row by row: the first four numbers are its first row</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
         <source>seed 001&apos;s angles are in degrees: convert them before sin and cos</source>
         <translation>seed 001&apos;s angles are in degrees: convert them before sin and cos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
         <source>lookat: normalise s = f x up before it goes into the matrix</source>
         <translation>lookat: normalise s = f x up before it goes into the matrix</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="648"/>
         <source>the camera&apos;s N not normalised before V - (V.N)N, nor after</source>
         <translation>the camera&apos;s N not normalised before V - (V.N)N, nor after</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
         <source>the camera&apos;s U = V x N instead of N x V (x runs the other way)</source>
         <translation>the camera&apos;s U = V x N instead of N x V (x runs the other way)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
         <source>the scene rendered again in view coordinates made with that basis gives their pixels</source>
         <translation>the scene rendered again in view coordinates made with that basis gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="651"/>
         <source>seed 000&apos;s Gram-Schmidt: normalise N first, then V - (V.N)N is V&apos;s part across N</source>
         <translation>seed 000&apos;s Gram-Schmidt: normalise N first, then V - (V.N)N is V&apos;s part across N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="652"/>
         <source>seed 000: U = N x V, so that U, V, N is right-handed</source>
         <translation>seed 000: U = N x V, so that U, V, N is right-handed</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="643"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="653"/>
         <source>the vertex normals left at the length of their sums (not normalised)</source>
         <translation>the vertex normals left at the length of their sums (not normalised)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="654"/>
         <source>the triangle normals summed at their length (area-weighted) instead of normalised first</source>
         <translation>the triangle normals summed at their length (area-weighted) instead of normalised first</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="655"/>
         <source>seed 000: each vertex normal is the normalised sum of its triangles&apos; normals</source>
         <translation>seed 000: each vertex normal is the normalised sum of its triangles&apos; normals</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="656"/>
         <source>normalise each triangle&apos;s normal before adding it to its vertices</source>
         <translation>normalise each triangle&apos;s normal before adding it to its vertices</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="657"/>
         <source>the light not taken to view coordinates: its world position used as Pl_view</source>
         <translation>the light not taken to view coordinates: its world position used as Pl_view</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="648"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="658"/>
         <source>the light taken to view coordinates without subtracting C: [I] Pl instead of [I](Pl - C)</source>
         <translation>the light taken to view coordinates without subtracting C: [I] Pl instead of [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="659"/>
         <source>V = P&apos; instead of -P&apos; (L = P&apos; - Pl gives the same image)</source>
         <translation>V = P&apos; instead of -P&apos; (L = P&apos; - Pl gives the same image)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
         <source>the ambient term Ia instead of Ia*ka</source>
         <translation>the ambient term Ia instead of Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="651"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="661"/>
         <source>each Phong term truncated to a whole byte before the sum</source>
         <translation>each Phong term truncated to a whole byte before the sum</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="652"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="662"/>
         <source>V.N, N.L and R.V tested against %1 instead of 0</source>
         <translation>V.N, N.L and R.V tested against %1 instead of 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="653"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="663"/>
         <source>the depth test reversed: the farther fragment wins (&gt; against a buffer cleared to -infinity, or to 0)</source>
         <translation>the depth test reversed: the farther fragment wins (&gt; against a buffer cleared to -infinity, or to 0)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="654"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="664"/>
         <source>every covered pixel&apos;s colour off by %1 (a constant offset)</source>
         <translation>every covered pixel&apos;s colour off by %1 (a constant offset)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="655"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
         <source>every colour multiplied by %1 (a constant scale)</source>
         <translation>every colour multiplied by %1 (a constant scale)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="656"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="666"/>
         <source>every colour multiplied by 255: a colour scaled by 255 where it was already 0..255</source>
         <translation>every colour multiplied by 255: a colour scaled by 255 where it was already 0..255</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="658"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="668"/>
         <source>every colour divided by 255: a colour scaled to 0..1 where the scene&apos;s are 0..255</source>
         <translation>every colour divided by 255: a colour scaled to 0..1 where the scene&apos;s are 0..255</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="670"/>
         <source>the scene rendered again with the light where that transform puts it gives their pixels</source>
         <translation>the scene rendered again with the light where that transform puts it gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="661"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
         <source>the scene rendered again with the farther fragment winning gives their pixels</source>
         <translation>the scene rendered again with the farther fragment winning gives their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="662"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="672"/>
         <source>our bytes moved by that constant give their pixels</source>
         <translation>our bytes moved by that constant give their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="663"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="673"/>
         <source>our colours multiplied by that constant give their pixels</source>
         <translation>our colours multiplied by that constant give their pixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="664"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="674"/>
         <source>seed 000: the light goes to view coordinates as the vertices do, Pl_view = [I](Pl - C)</source>
         <translation>seed 000: the light goes to view coordinates as the vertices do, Pl_view = [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="675"/>
         <source>seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis</source>
         <translation>seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="666"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="676"/>
         <source>V points from the surface to the camera: V = -P&apos; in view coordinates, and L = Pl - P&apos;</source>
         <translation>V points from the surface to the camera: V = -P&apos; in view coordinates, and L = Pl - P&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="667"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="677"/>
         <source>seed 000&apos;s ambient term is Ia*ka</source>
         <translation>seed 000&apos;s ambient term is Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="668"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="678"/>
         <source>add the terms as real numbers and make a byte once, at the end</source>
         <translation>add the terms as real numbers and make a byte once, at the end</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="669"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="679"/>
         <source>seed 000&apos;s special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</source>
         <translation>seed 000&apos;s special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="670"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="680"/>
         <source>the z-buffer starts at +infinity and a fragment is written when its z is smaller</source>
         <translation>the z-buffer starts at +infinity and a fragment is written when its z is smaller</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="681"/>
         <source>look for a constant added to every colour, or bytes made with an offset</source>
         <translation>look for a constant added to every colour, or bytes made with an offset</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="672"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="682"/>
         <source>look for a factor on every colour: an intensity scaled, or another colour scale</source>
         <translation>look for a factor on every colour: an intensity scaled, or another colour scale</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="673"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="683"/>
         <source>%1; no pixel that matches now would change</source>
         <translation>%1; no pixel that matches now would change</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="674"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
         <source>%2; %1 pixel that matches now would differ</source>
         <translation>%2; %1 pixel that matches now would differ</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="675"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
         <source>%2; %1 pixels that match now would differ</source>
         <translation>%2; %1 pixels that match now would differ</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="677"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="687"/>
         <source>cannot read the texture %1: %2</source>
         <translation>cannot read the texture %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="679"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="689"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="694"/>
         <source>cannot open: %1</source>
         <translation>cannot open: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="695"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>the file has %1 MiB, more than the %2 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="687"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="697"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>the file has more than the %1 MiB an input file may have</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="689"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="699"/>
         <source>not enough memory to read this file</source>
         <translation>not enough memory to read this file</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="690"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="700"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="693"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="703"/>
         <source>the object is not edited, so not saved</source>
         <translation>the object is not edited, so not saved</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="694"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="704"/>
         <source>cannot write into the built-in resources</source>
         <translation>cannot write into the built-in resources</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="695"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="705"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>the camera was not saved, as it would not load again: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="696"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="706"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>not saved: the text written does not read back as the same values</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="698"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="708"/>
         <source>cannot write the file: %1</source>
         <translation>cannot write the file: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="699"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="709"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>only %1 of %2 bytes could be written (is the disk full?)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="700"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="710"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>cannot write the file (it is left as it was): %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="702"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="712"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[rows, fragments], two whole numbers</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="703"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="713"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[width, height], whole numbers from %1 to %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="704"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="714"/>
         <source>a list</source>
         <translation>a list</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="705"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="715"/>
         <source>a list of %1 numbers</source>
         <translation>a list of %1 numbers</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="706"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="716"/>
         <source>a list of 1 to 8 lights</source>
         <translation>a list of 1 to 8 lights</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="707"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="717"/>
         <source>a list of dock names</source>
         <translation>a list of dock names</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="708"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="718"/>
         <source>a number</source>
         <translation>a number</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="709"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="719"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>a positive number or &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="710"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="720"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>a positive number or &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="711"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="721"/>
         <source>a whole number from %1</source>
         <translation>a whole number from %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="712"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="722"/>
         <source>an object</source>
         <translation>an object</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="713"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="723"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>expected %1 for &quot;%2&quot;, found %3</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="714"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="724"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="716"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="726"/>
         <source>not a lesson file: %1</source>
         <translation>not a lesson file: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="717"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="727"/>
         <source>nothing</source>
         <translation>nothing</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="718"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="728"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="719"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="729"/>
         <source>one of %1</source>
         <translation>one of %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="720"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="730"/>
         <source>text in quotes</source>
         <translation>text in quotes</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="721"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="731"/>
         <source>the text &apos;%1&apos;</source>
         <translation>the text &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="722"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="732"/>
         <source>true or false</source>
         <translation>true or false</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="723"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="733"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>unknown key &quot;%1&quot; ignored (known here: %2)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="758"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="768"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="764"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="774"/>
         <source>%1: warning: %2</source>
         <translation>%1: warning: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="765"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="775"/>
         <source>%1: note: %2</source>
         <translation>%1: note: %2</translation>
     </message>
@@ -3446,32 +3476,47 @@
         <translation>%1 of %2 differ</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="351"/>
+        <location filename="../app/window/check_panel.cpp" line="350"/>
         <source>Every stage passed (%1 s).</source>
         <translation>Every stage passed (%1 s).</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="385"/>
+        <location filename="../app/window/check_panel.cpp" line="384"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="389"/>
+        <location filename="../app/window/check_panel.cpp" line="388"/>
         <source>First departure: %1: theirs %2, ours %3</source>
         <translation>First departure: %1: theirs %2, ours %3</translation>
     </message>
     <message>
         <location filename="../app/window/check_panel.cpp" line="393"/>
-        <source>Likely cause: %1</source>
-        <translation>Likely cause: %1</translation>
+        <source>Likely cause: %1 (explains %2 of %3, %4% of the difference)</source>
+        <translation>Likely cause: %1 (explains %2 of %3, %4% of the difference)</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="395"/>
+        <location filename="../app/window/check_panel.cpp" line="399"/>
         <source>No known mistake of this stage gives their answer.</source>
         <translation>No known mistake of this stage gives their answer.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="396"/>
+        <location filename="../app/window/check_panel.cpp" line="401"/>
+        <source>Unexplained: %1 of %2.</source>
+        <translation>Unexplained: %1 of %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="402"/>
+        <source>In numbers: %1</source>
+        <translation>In numbers: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="404"/>
+        <source>Carried from the earlier stages: %1 elements of the lecture&apos;s answer change with what was sent.</source>
+        <translation>Carried from the earlier stages: %1 elements of the lecture&apos;s answer change with what was sent.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="409"/>
         <source>Tolerance: %1</source>
         <translation>Tolerance: %1</translation>
     </message>

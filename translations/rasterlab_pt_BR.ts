@@ -1901,691 +1901,721 @@
     </message>
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="551"/>
+        <source>vertex positions kept fractional (never made whole) instead of truncated to whole pixels</source>
+        <translation>posições dos vértices mantidas fracionárias (nunca tornadas inteiras) em vez de truncadas para pixels inteiros</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="553"/>
         <source>vertex positions truncated instead of rounded to whole pixels</source>
         <translation>posições dos vértices truncadas em vez de arredondadas para pixels inteiros</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="552"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="554"/>
         <source>vertex positions rounded instead of truncated to the sub-pixel grid</source>
         <translation>posições dos vértices arredondadas em vez de truncadas para a grade de subpixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="554"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="556"/>
         <source>vertex positions truncated instead of rounded to the sub-pixel grid</source>
         <translation>posições dos vértices truncadas em vez de arredondadas para a grade de subpixels</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="556"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="558"/>
         <source>vertex positions truncated to the sub-pixel grid instead of kept as computed</source>
         <translation>posições dos vértices truncadas para a grade de subpixels em vez de mantidas como calculadas</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="558"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="560"/>
         <source>the top-left fill rule where edges are inclusive</source>
         <translation>a regra de preenchimento top-left onde as arestas são inclusivas</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="559"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="561"/>
         <source>inclusive edges where the fill rule is top-left</source>
         <translation>arestas inclusivas onde a regra de preenchimento é top-left</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="560"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="562"/>
         <source>colour bytes rounded instead of truncated (off by one)</source>
         <translation>bytes de cor arredondados em vez de truncados (diferença de um)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="561"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="563"/>
         <source>colour bytes truncated instead of rounded (off by one)</source>
         <translation>bytes de cor truncados em vez de arredondados (diferença de um)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="562"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="564"/>
         <source>colours above 255 wrap around instead of clamping</source>
         <translation>cores acima de 255 dão a volta em vez de serem limitadas a 255</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="563"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="565"/>
         <source>the painter&apos;s order (far to near, no depth test) instead of the z-buffer</source>
         <translation>a ordem do pintor (do mais distante ao mais próximo, sem teste de profundidade) em vez do z-buffer</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="565"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="567"/>
         <source>z &lt; stored instead of z &lt;= stored in the depth test (ties keep the earlier triangle)</source>
         <translation>z &lt; guardado em vez de z &lt;= guardado no teste de profundidade (empates ficam com o triângulo anterior)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="568"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="570"/>
         <source>z &lt;= stored instead of z &lt; stored in the depth test (ties go to the later triangle)</source>
         <translation>z &lt;= guardado em vez de z &lt; guardado no teste de profundidade (empates vão para o triângulo posterior)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="571"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="573"/>
         <source>a different background: %1 where the scene&apos;s is %2</source>
         <translation>um fundo diferente: %1 onde o da cena é %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="572"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="574"/>
         <source>alpha %1 on covered pixels instead of 255</source>
         <translation>alfa %1 nos pixels cobertos em vez de 255</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="573"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="575"/>
         <source>our pixels lit again with that formula (the same triangles, barycentrics, P&apos;, N, lights and material) give theirs</source>
         <translation>nossos pixels iluminados de novo com essa fórmula (os mesmos triângulos, baricêntricas, P&apos;, N, luzes e material) dão os deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="576"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="578"/>
         <source>the scene rendered again in that shading model gives their pixels</source>
         <translation>a cena renderizada de novo nesse modelo de sombreamento dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="578"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="580"/>
         <source>our image moved that way gives their pixels</source>
         <translation>nossa imagem movida assim dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="579"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="581"/>
         <source>the scene rendered again with that rule gives their pixels</source>
         <translation>a cena renderizada de novo com essa regra dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="580"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="582"/>
         <source>our float colours made bytes that way give their pixels</source>
         <translation>nossas cores float convertidas em bytes desse jeito dão os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="581"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="583"/>
         <source>the scene painted far to near without a depth test gives their pixels</source>
         <translation>a cena pintada do mais distante ao mais próximo, sem teste de profundidade, dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="583"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="585"/>
         <source>their pixels where no triangle of ours is take that colour</source>
         <translation>os pixels deles onde não há triângulo nosso têm essa cor</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="584"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="586"/>
         <source>their pixels where a triangle of ours is take that alpha</source>
         <translation>os pixels deles onde há um triângulo nosso têm esse alfa</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="585"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="587"/>
         <source>seed 000&apos;s ambient term is Ia*ka, without the object colour Od</source>
         <translation>o termo ambiente da seed 000 é Ia*ka, sem a cor do objeto Od</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="586"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="588"/>
         <source>seed 000: if V.N &lt; 0, N := -N before the lighting</source>
         <translation>seed 000: se V.N &lt; 0, N := -N antes da iluminação</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="587"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="589"/>
         <source>seed 000: if R.V &lt; 0, no specular term</source>
         <translation>seed 000: se R.V &lt; 0, sem termo especular</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="588"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="590"/>
         <source>seed 000: if N.L &lt; 0, neither diffuse nor specular</source>
         <translation>seed 000: se N.L &lt; 0, nem termo difuso nem especular</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="589"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="591"/>
         <source>the interpolated N is shorter than 1: normalise it before N.L and R</source>
         <translation>a N interpolada é mais curta que 1: normalize-a antes de N.L e R</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="591"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="593"/>
         <source>check where the lighting is evaluated: per pixel, per vertex or per triangle</source>
         <translation>verifique onde a iluminação é avaliada: por pixel, por vértice ou por triângulo</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="594"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="596"/>
         <source>check the sign of x in the projection or the screen mapping</source>
         <translation>verifique o sinal de x na projeção ou no mapeamento para a tela</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="595"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="597"/>
         <source>screen row 0 is the top: y = (1 - y_ndc) * height / 2</source>
         <translation>a linha 0 da tela é a de cima: y = (1 - y_ndc) * altura / 2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="596"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="598"/>
         <source>check the screen mapping&apos;s offsets and the first pixel of each span</source>
         <translation>verifique os deslocamentos do mapeamento para a tela e o primeiro pixel de cada segmento</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="598"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="600"/>
         <source>where a pixel is sampled decides which pixels an edge covers (--rules)</source>
         <translation>onde um pixel é amostrado decide quais pixels uma aresta cobre (--rules)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="600"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
         <source>check how screen coordinates become whole pixels ((int) truncates)</source>
         <translation>verifique como as coordenadas de tela viram pixels inteiros ((int) trunca)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="602"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
         <source>the pixels exactly on an edge: which triangle (or both) covers them</source>
         <translation>os pixels exatamente sobre uma aresta: qual triângulo (ou ambos) os cobre</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="604"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
         <source>check how the colour becomes a byte: (int) truncates, + 0.5 rounds</source>
         <translation>verifique como a cor vira um byte: (int) trunca, + 0.5 arredonda</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="606"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="608"/>
         <source>clamp each channel to 255 before writing it as a byte</source>
         <translation>limite cada canal a 255 antes de escrevê-lo como byte</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="607"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
         <source>keep a depth buffer and write a pixel only when the fragment is nearer</source>
         <translation>mantenha um buffer de profundidade e escreva um pixel só quando o fragmento estiver mais perto</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="609"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
         <source>the comparison of the depth test: &lt; keeps the first of two equal depths</source>
         <translation>a comparação do teste de profundidade: &lt; fica com o primeiro de duas profundidades iguais</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="611"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
         <source>the colour (and alpha) of the pixels no triangle covers</source>
         <translation>a cor (e o alfa) dos pixels que nenhum triângulo cobre</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="612"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
         <source>the alpha written with each shaded pixel</source>
         <translation>o alfa escrito com cada pixel sombreado</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="613"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="615"/>
         <source>theirs - ours is %1 in %2 of the %3 covered channels that differ</source>
         <translation>deles - nosso é %1 em %2 dos %3 canais cobertos que diferem</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="614"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
         <source>theirs is within 2 of %1 times ours in %2 of the %3 covered channels that differ</source>
         <translation>o deles está a até 2 de %1 vezes o nosso em %2 dos %3 canais cobertos que diferem</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="616"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
         <source>the scene rendered again with the fitted lighting gives their pixels</source>
         <translation>a cena renderizada de novo com a iluminação ajustada dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="617"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
         <source>compare the light&apos;s position, the intensities and the coefficients your program uses with the fitted ones</source>
         <translation>compare a posição da luz, as intensidades e os coeficientes que o seu programa usa com os ajustados</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="618"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
         <source>their lighting, fitted to their colours: %1</source>
         <translation>a iluminação deles, ajustada às cores deles: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="619"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
         <source>the lighting is fitted for a course camera and one positional light of the course&apos;s model</source>
         <translation>a iluminação é ajustada para uma câmera do curso e uma luz pontual do modelo do curso</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="620"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
         <source>the lighting is fitted for Phong-shaded draws of one material</source>
         <translation>a iluminação é ajustada para desenhos com sombreamento de Phong de um só material</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="621"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
         <source>too few unclamped pixels inside triangles to fit the lighting</source>
         <translation>pixels não saturados dentro de triângulos poucos demais para ajustar a iluminação</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="622"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
         <source>the fitted light is at the light&apos;s world position: it was not taken to view coordinates</source>
         <translation>a luz ajustada está na posição da luz no mundo: ela não foi levada a coordenadas de vista</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="623"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
         <source>the fitted light is at [I] Pl: C was not subtracted</source>
         <translation>a luz ajustada está em [I] Pl: C não foi subtraído</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="624"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
         <source>the fitted light is ours with %1 negated</source>
         <translation>a luz ajustada é a nossa com %1 negado</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="625"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
         <source>the fitted light is ours with %1 and %2 swapped</source>
         <translation>a luz ajustada é a nossa com %1 e %2 trocados</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="626"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
         <source>the fitted n is half of ours: n halved</source>
         <translation>o n ajustado é metade do nosso: n pela metade</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="627"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
         <source>the command file read again with that command so gives their pixels</source>
         <translation>o arquivo de comandos lido de novo com esse comando assim dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="628"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
+        <source>every &apos;%1&apos; ignored (%2 of them, from line %3): the command never implemented</source>
+        <translation>todo &apos;%1&apos; ignorado (%2 deles, a partir da linha %3): o comando nunca foi implementado</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
+        <source>every &apos;%1&apos; multiplied on the other side (M = A M instead of M A), from line %2</source>
+        <translation>todo &apos;%1&apos; multiplicado do outro lado (M = A M em vez de M A), a partir da linha %2</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
+        <source>every &apos;%1&apos; read column by column (the matrix transposed), from line %2</source>
+        <translation>todo &apos;%1&apos; lido coluna por coluna (a matriz transposta), a partir da linha %2</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
+        <source>every &apos;%1&apos; with its angle taken as radians, from line %2</source>
+        <translation>todo &apos;%1&apos; com o ângulo tomado em radianos, a partir da linha %2</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
+        <source>every &apos;%1&apos; with s = f x up not normalised, from line %2</source>
+        <translation>todo &apos;%1&apos; com s = f x up não normalizado, a partir da linha %2</translation>
+    </message>
+    <message>
+        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
         <source>line %1: &apos;%2&apos; ignored</source>
         <translation>linha %1: &apos;%2&apos; ignorado</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="629"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
         <source>line %1: &apos;%2&apos; multiplied on the other side (M = A M instead of M A)</source>
         <translation>linha %1: &apos;%2&apos; multiplicado do outro lado (M = A M em vez de M A)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="630"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
         <source>line %1: &apos;%2&apos; read column by column (the matrix transposed)</source>
         <translation>linha %1: &apos;%2&apos; lido coluna por coluna (a matriz transposta)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="631"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
         <source>line %1: &apos;%2&apos; with its angle taken as radians</source>
         <translation>linha %1: &apos;%2&apos; com o ângulo tomado em radianos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="632"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
         <source>line %1: &apos;%2&apos; with s = f x up not normalised (the image stretched across)</source>
         <translation>linha %1: &apos;%2&apos; com s = f x up não normalizado (a imagem esticada na horizontal)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="633"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="643"/>
         <source>check that your program reads &apos;%1&apos; and applies it</source>
         <translation>verifique se o seu programa lê &apos;%1&apos; e o aplica</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="634"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
         <source>seed 001: a transform multiplies the model/view on the right, M = M A</source>
         <translation>semente 001: uma transformação multiplica a model/view pela direita, M = M A</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="635"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
         <source>seed 001 writes a matrix row by row: the first four numbers are its first row</source>
         <translation>a semente 001 escreve uma matriz linha por linha: os quatro primeiros números são a primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="636"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
         <source>seed 001&apos;s angles are in degrees: convert them before sin and cos</source>
         <translation>os ângulos da semente 001 estão em graus: converta-os antes de sin e cos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="637"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
         <source>lookat: normalise s = f x up before it goes into the matrix</source>
         <translation>lookat: normalize s = f x up antes de pô-lo na matriz</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="638"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="648"/>
         <source>the camera&apos;s N not normalised before V - (V.N)N, nor after</source>
         <translation>o N da câmera não normalizado antes de V - (V.N)N, nem depois</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="639"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
         <source>the camera&apos;s U = V x N instead of N x V (x runs the other way)</source>
         <translation>o U da câmera = V x N em vez de N x V (x corre no outro sentido)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="640"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
         <source>the scene rendered again in view coordinates made with that basis gives their pixels</source>
         <translation>a cena renderizada de novo em coordenadas de vista feitas com essa base dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="641"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="651"/>
         <source>seed 000&apos;s Gram-Schmidt: normalise N first, then V - (V.N)N is V&apos;s part across N</source>
         <translation>o Gram-Schmidt da semente 000: normalize N primeiro, então V - (V.N)N é a parte de V transversal a N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="642"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="652"/>
         <source>seed 000: U = N x V, so that U, V, N is right-handed</source>
         <translation>semente 000: U = N x V, para que U, V, N seja uma base dextrógira</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="643"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="653"/>
         <source>the vertex normals left at the length of their sums (not normalised)</source>
         <translation>as normais dos vértices deixadas com o comprimento das suas somas (não normalizadas)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="644"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="654"/>
         <source>the triangle normals summed at their length (area-weighted) instead of normalised first</source>
         <translation>as normais dos triângulos somadas com o seu comprimento (pesadas pela área) em vez de normalizadas antes</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="645"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="655"/>
         <source>seed 000: each vertex normal is the normalised sum of its triangles&apos; normals</source>
         <translation>semente 000: a normal de cada vértice é a soma normalizada das normais dos seus triângulos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="646"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="656"/>
         <source>normalise each triangle&apos;s normal before adding it to its vertices</source>
         <translation>normalize a normal de cada triângulo antes de somá-la aos seus vértices</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="647"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="657"/>
         <source>the light not taken to view coordinates: its world position used as Pl_view</source>
         <translation>a luz não levada a coordenadas de vista: sua posição no mundo usada como Pl_vista</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="648"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="658"/>
         <source>the light taken to view coordinates without subtracting C: [I] Pl instead of [I](Pl - C)</source>
         <translation>a luz levada a coordenadas de vista sem subtrair C: [I] Pl em vez de [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="649"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="659"/>
         <source>V = P&apos; instead of -P&apos; (L = P&apos; - Pl gives the same image)</source>
         <translation>V = P&apos; em vez de -P&apos; (L = P&apos; - Pl dá a mesma imagem)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="650"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
         <source>the ambient term Ia instead of Ia*ka</source>
         <translation>o termo ambiente Ia em vez de Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="651"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="661"/>
         <source>each Phong term truncated to a whole byte before the sum</source>
         <translation>cada termo de Phong truncado para um byte inteiro antes da soma</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="652"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="662"/>
         <source>V.N, N.L and R.V tested against %1 instead of 0</source>
         <translation>V.N, N.L e R.V testados contra %1 em vez de 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="653"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="663"/>
         <source>the depth test reversed: the farther fragment wins (&gt; against a buffer cleared to -infinity, or to 0)</source>
         <translation>o teste de profundidade invertido: o fragmento mais distante vence (&gt; contra um buffer iniciado com -infinito, ou com 0)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="654"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="664"/>
         <source>every covered pixel&apos;s colour off by %1 (a constant offset)</source>
         <translation>a cor de cada pixel coberto deslocada de %1 (um deslocamento constante)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="655"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
         <source>every colour multiplied by %1 (a constant scale)</source>
         <translation>cada cor multiplicada por %1 (uma escala constante)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="656"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="666"/>
         <source>every colour multiplied by 255: a colour scaled by 255 where it was already 0..255</source>
         <translation>cada cor multiplicada por 255: uma cor escalada por 255 onde já era 0..255</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="658"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="668"/>
         <source>every colour divided by 255: a colour scaled to 0..1 where the scene&apos;s are 0..255</source>
         <translation>cada cor dividida por 255: uma cor escalada para 0..1 onde as da cena são 0..255</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="660"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="670"/>
         <source>the scene rendered again with the light where that transform puts it gives their pixels</source>
         <translation>a cena renderizada de novo com a luz onde essa transformação a coloca dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="661"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
         <source>the scene rendered again with the farther fragment winning gives their pixels</source>
         <translation>a cena renderizada de novo com o fragmento mais distante vencendo dá os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="662"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="672"/>
         <source>our bytes moved by that constant give their pixels</source>
         <translation>os nossos bytes deslocados dessa constante dão os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="663"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="673"/>
         <source>our colours multiplied by that constant give their pixels</source>
         <translation>as nossas cores multiplicadas por essa constante dão os pixels deles</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="664"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="674"/>
         <source>seed 000: the light goes to view coordinates as the vertices do, Pl_view = [I](Pl - C)</source>
         <translation>semente 000: a luz vai para coordenadas de vista como os vértices, Pl_vista = [I](Pl - C)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="665"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="675"/>
         <source>seed 000: Pl_view = [I](Pl - C): subtract C before the change of basis</source>
         <translation>semente 000: Pl_vista = [I](Pl - C): subtraia C antes da mudança de base</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="666"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="676"/>
         <source>V points from the surface to the camera: V = -P&apos; in view coordinates, and L = Pl - P&apos;</source>
         <translation>V aponta da superfície para a câmera: V = -P&apos; em coordenadas de vista, e L = Pl - P&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="667"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="677"/>
         <source>seed 000&apos;s ambient term is Ia*ka</source>
         <translation>o termo ambiente da semente 000 é Ia*ka</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="668"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="678"/>
         <source>add the terms as real numbers and make a byte once, at the end</source>
         <translation>some os termos como números reais e faça um byte uma vez, no fim</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="669"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="679"/>
         <source>seed 000&apos;s special cases test against 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</source>
         <translation>os casos especiais da semente 000 testam contra 0: V.N &lt; 0, N.L &lt; 0, R.V &lt; 0</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="670"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="680"/>
         <source>the z-buffer starts at +infinity and a fragment is written when its z is smaller</source>
         <translation>o z-buffer começa em +infinito e um fragmento é escrito quando seu z é menor</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="671"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="681"/>
         <source>look for a constant added to every colour, or bytes made with an offset</source>
         <translation>procure uma constante somada a cada cor, ou bytes feitos com um deslocamento</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="672"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="682"/>
         <source>look for a factor on every colour: an intensity scaled, or another colour scale</source>
         <translation>procure um fator em cada cor: uma intensidade escalada, ou outra escala de cor</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="673"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="683"/>
         <source>%1; no pixel that matches now would change</source>
         <translation>%1; nenhum pixel que coincide agora mudaria</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="674"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
         <source>%2; %1 pixel that matches now would differ</source>
         <translation>%2; %1 pixel que coincide agora passaria a diferir</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="675"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
         <source>%2; %1 pixels that match now would differ</source>
         <translation>%2; %1 pixels que coincidem agora passariam a diferir</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="677"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="687"/>
         <source>cannot read the texture %1: %2</source>
         <translation>não é possível ler a textura %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="679"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="689"/>
         <source>V is %1 degrees from the line of N: Gram-Schmidt keeps only that much of V, and the basis is orthonormal only to %2, less than a float&apos;s precision; choose a V farther from N</source>
         <translation>V está a %1 graus da reta de N: Gram-Schmidt guarda só isso de V, e a base é ortonormal só até %2, menos que a precisão de um float; escolha um V mais longe de N</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="684"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="694"/>
         <source>cannot open: %1</source>
         <translation>não é possível abrir: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="685"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="695"/>
         <source>the file has %1 MiB, more than the %2 MiB an input file may have</source>
         <translation>o arquivo tem %1 MiB, mais que os %2 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="687"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="697"/>
         <source>the file has more than the %1 MiB an input file may have</source>
         <translation>o arquivo tem mais que os %1 MiB que um arquivo de entrada pode ter</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="689"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="699"/>
         <source>not enough memory to read this file</source>
         <translation>não há memória suficiente para ler este arquivo</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="690"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="700"/>
         <source>the built-in scene&apos;s files cannot be written: save it to a file of your own (Save As)</source>
         <translation>os arquivos da cena embutida não podem ser gravados: salve-a num arquivo seu (Salvar como)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="693"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="703"/>
         <source>the object is not edited, so not saved</source>
         <translation>o objeto não é editado, então não é salvo</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="694"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="704"/>
         <source>cannot write into the built-in resources</source>
         <translation>não é possível gravar nos recursos embutidos</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="695"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="705"/>
         <source>the camera was not saved, as it would not load again: %1</source>
         <translation>a câmera não foi salva, pois não carregaria de novo: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="696"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="706"/>
         <source>not saved: the text written does not read back as the same values</source>
         <translation>não salvo: o texto gravado não é lido de volta com os mesmos valores</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="698"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="708"/>
         <source>cannot write the file: %1</source>
         <translation>não é possível gravar o arquivo: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="699"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="709"/>
         <source>only %1 of %2 bytes could be written (is the disk full?)</source>
         <translation>só %1 de %2 bytes puderam ser gravados (o disco está cheio?)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="700"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="710"/>
         <source>cannot write the file (it is left as it was): %1</source>
         <translation>não é possível gravar o arquivo (ele fica como estava): %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="702"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="712"/>
         <source>[rows, fragments], two whole numbers</source>
         <translation>[linhas, fragmentos], dois números inteiros</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="703"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="713"/>
         <source>[width, height], whole numbers from %1 to %2</source>
         <translation>[largura, altura], números inteiros de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="704"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="714"/>
         <source>a list</source>
         <translation>uma lista</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="705"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="715"/>
         <source>a list of %1 numbers</source>
         <translation>uma lista de %1 números</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="706"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="716"/>
         <source>a list of 1 to 8 lights</source>
         <translation>uma lista de 1 a 8 luzes</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="707"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="717"/>
         <source>a list of dock names</source>
         <translation>uma lista de nomes de painéis</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="708"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="718"/>
         <source>a number</source>
         <translation>um número</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="709"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="719"/>
         <source>a positive number or &quot;auto&quot;</source>
         <translation>um número positivo ou &quot;auto&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="710"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="720"/>
         <source>a positive number or &quot;fit&quot;</source>
         <translation>um número positivo ou &quot;fit&quot;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="711"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="721"/>
         <source>a whole number from %1</source>
         <translation>um número inteiro a partir de %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="712"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="722"/>
         <source>an object</source>
         <translation>um objeto</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="713"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="723"/>
         <source>expected %1 for &quot;%2&quot;, found %3</source>
         <translation>esperava %1 para &quot;%2&quot;, encontrou %3</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="714"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="724"/>
         <source>expected a lesson file: a JSON object with &quot;rasterlab_lesson&quot;: %1</source>
         <translation>esperava um arquivo de aula: um objeto JSON com &quot;rasterlab_lesson&quot;: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="716"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="726"/>
         <source>not a lesson file: %1</source>
         <translation>não é um arquivo de aula: %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="717"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="727"/>
         <source>nothing</source>
         <translation>nada</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="718"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="728"/>
         <source>null</source>
         <translation>null</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="719"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="729"/>
         <source>one of %1</source>
         <translation>um de %1</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="720"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="730"/>
         <source>text in quotes</source>
         <translation>um texto entre aspas</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="721"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="731"/>
         <source>the text &apos;%1&apos;</source>
         <translation>o texto &apos;%1&apos;</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="722"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="732"/>
         <source>true or false</source>
         <translation>true ou false</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="723"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="733"/>
         <source>unknown key &quot;%1&quot; ignored (known here: %2)</source>
         <translation>ignorou a chave desconhecida &quot;%1&quot; (as conhecidas aqui: %2)</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="758"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="768"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="764"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="774"/>
         <source>%1: warning: %2</source>
         <translation>%1: aviso: %2</translation>
     </message>
     <message>
-        <location filename="../views/messages/pipeline_messages.cpp" line="765"/>
+        <location filename="../views/messages/pipeline_messages.cpp" line="775"/>
         <source>%1: note: %2</source>
         <translation>%1: nota: %2</translation>
     </message>
@@ -3446,32 +3476,47 @@
         <translation>%1 de %2 diferem</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="351"/>
+        <location filename="../app/window/check_panel.cpp" line="350"/>
         <source>Every stage passed (%1 s).</source>
         <translation>Todas as etapas passaram (%1 s).</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="385"/>
+        <location filename="../app/window/check_panel.cpp" line="384"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="389"/>
+        <location filename="../app/window/check_panel.cpp" line="388"/>
         <source>First departure: %1: theirs %2, ours %3</source>
         <translation>Primeiro desvio: %1: o deles %2, o nosso %3</translation>
     </message>
     <message>
         <location filename="../app/window/check_panel.cpp" line="393"/>
-        <source>Likely cause: %1</source>
-        <translation>Causa provável: %1</translation>
+        <source>Likely cause: %1 (explains %2 of %3, %4% of the difference)</source>
+        <translation>Causa provável: %1 (explica %2 de %3, %4% da diferença)</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="395"/>
+        <location filename="../app/window/check_panel.cpp" line="399"/>
         <source>No known mistake of this stage gives their answer.</source>
         <translation>Nenhum erro conhecido desta etapa dá a resposta deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="396"/>
+        <location filename="../app/window/check_panel.cpp" line="401"/>
+        <source>Unexplained: %1 of %2.</source>
+        <translation>Sem explicação: %1 de %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="402"/>
+        <source>In numbers: %1</source>
+        <translation>Em números: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="404"/>
+        <source>Carried from the earlier stages: %1 elements of the lecture&apos;s answer change with what was sent.</source>
+        <translation>Trazido das etapas anteriores: %1 elementos da resposta da aula mudam com o que foi enviado.</translation>
+    </message>
+    <message>
+        <location filename="../app/window/check_panel.cpp" line="409"/>
         <source>Tolerance: %1</source>
         <translation>Tolerância: %1</translation>
     </message>

@@ -43,16 +43,11 @@ public:
         : m_command(command), m_folder(folder), m_options(options), m_report(report) {}
 
     // A started program that has said which version it speaks, or null (report.failure
-    // says why when it never could).
+    // says why when it never could). After a break it is started again for every request,
+    // while the run's time lasts.
     StudentProgram* program() {
         if (m_program) return m_program.get();
         if (m_dead) return nullptr;
-        if (m_started > 0 && m_report.restarts >= m_options.maxRestarts) {
-            m_dead = true;
-            m_deadReason =
-                "not asked: the program broke " + std::to_string(m_report.restarts + 1) + " times";
-            return nullptr;
-        }
         Limits limits = m_options.limits;
         limits.totalSeconds = std::max(0.1, m_options.limits.totalSeconds - m_spent);
         m_program = std::make_unique<StudentProgram>(m_command, m_folder, limits);
@@ -63,8 +58,14 @@ public:
         }
         if (handshake()) return m_program.get();
         // A program that cannot even say its version is not started again.
-        if (m_report.failure.empty())
+        if (m_report.failure.empty()) {
             m_report.failure = "the program did not start the protocol: " + m_handshakeError;
+            m_report.failureError = m_program->errorLines();
+            if (m_report.failureError.empty() && !m_firstLine.empty())
+                m_report.failureError = {m_firstLine};
+            m_report.failureHint =
+                memoryHintOf(m_report.failureError, m_options.limits.memoryBytes);
+        }
         m_dead = true;
         m_deadReason = "not asked: the program did not start the protocol";
         finish();
@@ -73,10 +74,10 @@ public:
 
     // Asks one stage; the answer's lines (without "end"), or nullopt with `problem` set
     // ("unsupported" comes back as the single line "unsupported").
-    std::optional<std::vector<std::string>> ask(const Request& request, std::string& problem) {
+    std::optional<std::vector<std::string>> ask(const Request& request, StageResult& problem) {
         StudentProgram* p = program();
         if (!p) {
-            problem = m_deadReason;
+            problem.problem = m_deadReason;
             return std::nullopt;
         }
         p->beginRequest();
@@ -90,8 +91,10 @@ public:
                 lines.push_back(std::move(*line));
             }
         }
-        problem = "the program broke while answering '" + std::string(stageName(request.stage())) +
-                  "': " + p->error();
+        problem.problem = "the program broke while answering '" +
+                          std::string(stageName(request.stage())) + "': " + p->error();
+        problem.standardError = p->errorLines();
+        problem.hint = p->memoryHint();
         finish();
         return std::nullopt;
     }
@@ -125,9 +128,12 @@ private:
             return false;
         }
         const std::string t = trim(*line);
+        m_firstLine = t.substr(0, std::size_t(kErrorLineBytes));
         if (t.rfind("speaks ", 0) != 0) {
             m_handshakeError =
-                "expected 'speaks 1' as its first line, found '" + t.substr(0, 60) + "'";
+                "expected 'speaks 1' as its first line, found '" + t.substr(0, 120) + "'";
+            // A runtime that cannot start says so on its standard output: the rest of it.
+            p.stop();
             return false;
         }
         const std::string version = trim(t.substr(7));
@@ -156,7 +162,7 @@ private:
     std::unique_ptr<StudentProgram> m_program;
     int m_started = 0;
     bool m_dead = false;
-    std::string m_deadReason, m_handshakeError;
+    std::string m_deadReason, m_handshakeError, m_firstLine;
     double m_spent = 0.0;
 };
 
@@ -184,6 +190,14 @@ Verdict CheckReport::stageVerdict(Stage stage) const {
         for (const StageResult& r : s.stages)
             if (r.stage == stage && rank(r.verdict) > rank(worst)) worst = r.verdict;
     return worst;
+}
+
+std::map<Verdict, int> CheckReport::stageCounts(Stage stage) const {
+    std::map<Verdict, int> counts;
+    for (const SceneReport& s : scenes)
+        for (const StageResult& r : s.stages)
+            if (r.stage == stage) ++counts[r.verdict];
+    return counts;
 }
 
 bool CheckReport::anyBroken() const {
@@ -235,19 +249,17 @@ CheckReport runCheck(const std::string& command, const std::string& folder,
                 break;
             }
             ++done;
-            std::string problem;
+            StageResult result;
+            result.stage = stage;
             const auto lines = session.ask(
                 options.chain ? (*check)->chainedRequest(stage, answers) : (*check)->request(stage),
-                problem);
+                result);
             if (stopped()) {
                 report.cancelled = true;
                 break;
             }
-            StageResult result;
-            result.stage = stage;
             if (!lines) {
                 result.verdict = Verdict::Broken;
-                result.problem = problem;
             } else if (lines->size() == 1 && lines->front() == "unsupported") {
                 result.verdict = Verdict::Unsupported;
             } else {
@@ -257,7 +269,9 @@ CheckReport runCheck(const std::string& command, const std::string& folder,
                     result.verdict = Verdict::Broken;
                     result.problem = records.error().toString();
                 } else {
-                    result = (*check)->judge(stage, records.value());
+                    result = options.chain
+                                 ? (*check)->judgeChained(stage, records.value(), answers, sr.stages)
+                                 : (*check)->judge(stage, records.value(), sr.stages);
                     if (stage == Stage::Frame && result.verdict != Verdict::Broken)
                         sr.theirFrame = StageCheck::theirImage(records.value());
                     if (stage == Stage::Scan && result.verdict != Verdict::Broken)

@@ -2,10 +2,12 @@
 // of each scene over the stage protocol, each answer judged (stage_check.h), and the report
 // as text, Markdown or JSON. The program runs under the limits of student_program.h; when it
 // breaks in a stage (a bad answer, a timeout, a crash) that stage says so, with what was read
-// last, and the program is started again for the next one.
+// last and the end of its standard error, and the program is started again for the next one:
+// a crash costs one stage of one scene.
 #pragma once
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,6 +40,8 @@ struct CheckReport {
     std::vector<SceneReport> scenes;
     bool chained = false;
     std::string failure;  // why the program could not be checked at all, or empty
+    std::vector<std::string> failureError;  // then, the last lines of its standard error
+    std::string failureHint;                // and a runtime's memory message explained
     bool cancelled = false;
     double seconds = 0.0;
     int restarts = 0;
@@ -46,6 +50,8 @@ struct CheckReport {
     bool passed() const;
     // The worst verdict of a stage over the scenes (Passed when it never ran).
     Verdict stageVerdict(Stage stage) const;
+    // How many scenes gave a stage each verdict.
+    std::map<Verdict, int> stageCounts(Stage stage) const;
     bool anyBroken() const;
     // A stage's result in the first scene checked (the window checks one), or null.
     const StageResult* result(Stage stage) const;
@@ -60,7 +66,6 @@ struct CheckOptions {
     // gave them), to show how errors add up; otherwise RasterLab's, so none hides another.
     bool chain = false;
     Limits limits;
-    int maxRestarts = 3;
 };
 
 CheckReport runCheck(const std::string& command, const std::string& folder,

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "app/check/stage_findings.h"
 #include "app/check/stage_protocol.h"
 #include "pipeline/render/output_image.h"
 #include "pipeline/scene/scene.h"
@@ -49,10 +50,26 @@ struct StageResult {
     double largestError = 0.0;
     std::string tolerance;  // how close counts as equal, in words
     std::optional<Divergence> first;
-    std::string likelyCause;  // empty when no known mistake gives their answer
-    std::string problem;      // Broken: what went wrong (a bad answer, a timeout ...)
+    // The known mistakes that together explain their answer, in the order they apply (each
+    // with the elements it explains), and the differing elements none of them explains.
+    std::vector<StageFinding> findings;
+    std::vector<StageMistake> applied;  // the findings as the catalogue's mistakes
+    std::size_t unexplained = 0;
+    // What stays unexplained, in numbers a student can act on: on how many rows a span starts
+    // a pixel left, a colour's bias per channel and whether it follows N.L, an offset ...
+    std::vector<std::string> description;
+    // A chained run: how many elements of the lecture's answer to RasterLab's own inputs differ
+    // from the lecture's answer to what was sent (the error carried from the earlier stages);
+    // none when the request was RasterLab's own.
+    std::optional<std::size_t> carried;
+    std::string problem;  // Broken: what went wrong (a bad answer, a timeout ...)
+    std::vector<std::string> standardError;  // Broken: the last lines of its standard error
+    std::string hint;                        // Broken: a runtime's memory message explained
     // Projection, scan, z-buffer and frame: where they depart (the first kMostDepartures).
     std::vector<Departure> departures;
+
+    // The findings' causes in one line ("A; then B"), or empty.
+    std::string causes() const;
 };
 
 // The lecture's stages run over one course scene, and what the protocol asks of them.
@@ -71,8 +88,14 @@ public:
     // positions and normals for the lighting's samples), ours where they gave none.
     using Answers = std::map<Stage, std::vector<Record>>;
     Request chainedRequest(Stage stage, const Answers& theirs) const;
-    // Their answer (records as parsed) held to ours.
-    StageResult judge(Stage stage, const std::vector<Record>& answer) const;
+    // Their answer (records as parsed) to our request held to ours; `earlier` the scene's
+    // results of the stages asked before (the frame's diagnosis starts from their findings).
+    StageResult judge(Stage stage, const std::vector<Record>& answer,
+                      const std::vector<StageResult>& earlier = {}) const;
+    // Their answer to a chained request (made from `theirs`), held to the lecture's stage
+    // applied to exactly what was sent.
+    StageResult judgeChained(Stage stage, const std::vector<Record>& answer, const Answers& theirs,
+                             const std::vector<StageResult>& earlier = {}) const;
     // Our image of the scene (the frame stage's answer), and theirs from a frame answer.
     const rl::Rgba8Image& ourImage() const;
     static rl::Rgba8Image theirImage(const std::vector<Record>& answer);
@@ -85,14 +108,17 @@ public:
 private:
     Inputs chainedInputs(const Answers& theirs) const;
     Request request(Stage stage, const Inputs& in) const;
+    StageResult judge(Stage stage, const std::vector<Record>& answer, const Inputs& in,
+                      const std::vector<StageResult>& earlier) const;
     StageResult judgeBasis(const std::vector<Record>& answer) const;
-    StageResult judgeView(const std::vector<Record>& answer) const;
-    StageResult judgeNormals(const std::vector<Record>& answer) const;
-    StageResult judgeProjection(const std::vector<Record>& answer) const;
-    StageResult judgeScan(const std::vector<Record>& answer) const;
-    StageResult judgeZBuffer(const std::vector<Record>& answer) const;
-    StageResult judgeLighting(const std::vector<Record>& answer) const;
-    StageResult judgeFrame(const std::vector<Record>& answer) const;
+    StageResult judgeView(const std::vector<Record>& answer, const Inputs& in) const;
+    StageResult judgeNormals(const std::vector<Record>& answer, const Inputs& in) const;
+    StageResult judgeProjection(const std::vector<Record>& answer, const Inputs& in) const;
+    StageResult judgeScan(const std::vector<Record>& answer, const Inputs& in) const;
+    StageResult judgeZBuffer(const std::vector<Record>& answer, const Inputs& in) const;
+    StageResult judgeLighting(const std::vector<Record>& answer, const Inputs& in) const;
+    StageResult judgeFrame(const std::vector<Record>& answer,
+                           const std::vector<StageResult>& earlier) const;
 
     std::unique_ptr<Data> m_data;
 };

@@ -1,7 +1,9 @@
-// The known mistakes of each stage, as what they would answer: a student's answer that equals
-// one of these (within the stage's tolerance) names its likely cause. Written in double from
-// the formulas, beside the lecture's stages, not from them: each is the lecture's formula
-// with one step done the way students get it wrong.
+// The known mistakes of each stage, as what they would answer: each stage's catalogue of
+// mistakes (stage_findings.h composes them) and its answer made with any set of them at once.
+// Written in double from the formulas, beside the lecture's stages, not from them: with no
+// mistake each is the lecture's formula, and each mistake does one step the way students get
+// it wrong (the cross product's order, normals not normalised, rounding against truncation, y
+// not flipped, a span's end, the z-buffer's comparison, a Phong special case ...).
 #pragma once
 
 #include <array>
@@ -10,11 +12,13 @@
 #include <string>
 #include <vector>
 
+#include "app/check/stage_findings.h"
 #include "pipeline/core/math.h"
 
 namespace rasterlab::check {
 
 using Row = std::vector<double>;
+using Mistakes = std::vector<StageMistake>;
 
 struct Fragment {
     std::uint32_t t = 0;
@@ -40,35 +44,55 @@ struct Lighting {
     float ks = 0.0f, n = 1.0f;
 };
 
-// A mistake and the rows it answers with (in the stage's answer order).
-struct Alternative {
-    std::string cause;
-    std::vector<Row> rows;
-};
+// basis: rows U, V, N from the camera file's N and V.
+Mistakes basisCatalogue();
+std::vector<Row> basisAnswer(const rl::dvec3& n, const rl::dvec3& v, const Mistakes& applied);
 
-// basis: rows U, V, N.
-std::vector<Alternative> basisMistakes(const rl::dvec3& n, const rl::dvec3& v);
-// view: the light's row, then the vertices'.
-std::vector<Alternative> viewMistakes(const rl::dvec3& c, const std::array<rl::dvec3, 3>& uvn,
-                                      const rl::dvec3& light, const std::vector<Row>& vertices);
-// normals: the triangles' rows, then the vertices'.
-std::vector<Alternative> normalsMistakes(
-    const std::vector<Row>& vertices, const std::vector<std::array<std::uint32_t, 3>>& triangles);
+// view: the light's row, then the vertices', from the basis sent.
+Mistakes viewCatalogue();
+std::vector<Row> viewAnswer(const rl::dvec3& c, const std::array<rl::dvec3, 3>& uvn,
+                            const rl::dvec3& light, const std::vector<Row>& vertices,
+                            const Mistakes& applied);
+
+// normals: the triangles' rows, then the vertices'. `screen` (a row x y per vertex, or empty)
+// is where the vertices land on the screen, for the mistakes that leave out triangles of small
+// screen area; their areas are the fitted values.
+Mistakes normalsCatalogue(const std::vector<Row>& screen,
+                          const std::vector<std::array<std::uint32_t, 3>>& triangles);
+std::vector<Row> normalsAnswer(const std::vector<Row>& vertices,
+                               const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                               const std::vector<Row>& screen, const Mistakes& applied);
+
 // projection: rows x y.
-std::vector<Alternative> projectionMistakes(double d, double hx, double hy, int width, int height,
-                                            const std::vector<Row>& vertices);
+Mistakes projectionCatalogue();
+std::vector<Row> projectionAnswer(double d, double hx, double hy, int width, int height,
+                                  const std::vector<Row>& vertices, const Mistakes& applied);
 // The exact x and y before the (int) cast, of the seed's projection.
 std::array<double, 2> projectionExact(double d, double hx, double hy, int width, int height,
                                       const Row& vertex);
-// scan: rows t y first last, from the screen triangles (x1 y1 x2 y2 x3 y3 rows).
-std::vector<Alternative> scanMistakes(const std::vector<Row>& triangles, int width, int height);
-// The spans of the seed's rule with pixels sampled at (x, y): inside when every edge function
-// is >= 0 (strict: > 0), in exact integer arithmetic.
-std::vector<Row> scanSpans(const std::vector<Row>& triangles, int width, int height, bool strict);
+
+// scan: rows t y first last, from the screen triangles (x1 y1 x2 y2 x3 y3 rows, whole or not).
+Mistakes scanCatalogue();
+std::vector<Row> scanAnswer(const std::vector<Row>& triangles, int width, int height,
+                            const Mistakes& applied);
+
 // zbuffer: rows x y t z for every pixel reached.
-std::vector<Alternative> zbufferMistakes(const std::vector<Fragment>& fragments);
-// lighting: rows r g b.
-std::vector<Alternative> lightingMistakes(const Lighting& lighting,
-                                          const std::vector<Sample>& samples);
+Mistakes zbufferCatalogue();
+std::vector<Row> zbufferAnswer(const std::vector<Fragment>& fragments, const Mistakes& applied);
+
+// lighting: rows r g b; the epsilon of the special cases is fitted among `epsilons`.
+Mistakes lightingCatalogue(const std::vector<double>& epsilons);
+std::vector<Row> lightingAnswer(const Lighting& lighting, const std::vector<Sample>& samples,
+                                const Mistakes& applied);
+// The same at one point P' and its normal N, in double.
+Row lightingAt(const Lighting& lighting, const rl::dvec3& p, const rl::dvec3& n,
+               const Mistakes& applied);
+// The terms the lecture gives a sample (before the clamp), and its N.L and R.V with N turned
+// toward the viewer: what a bias in their colours is held against.
+struct PhongTerms {
+    rl::dvec3 ambient{0.0}, diffuse{0.0}, specular{0.0};
+    double nDotL = 0.0, rDotV = 0.0, vDotN = 0.0;
+};
+PhongTerms phongTerms(const Lighting& lighting, const Sample& sample);
 
 }  // namespace rasterlab::check

@@ -196,6 +196,7 @@ QJsonObject toJson(const rl::ImageComparison& c, const QString& image, const QSt
             d[lit("line")] = f.command.line;
             d[lit("command")] = QString::fromStdString(f.command.keyword);
             d[lit("variant")] = QString::fromLatin1(kinds[int(f.command.kind)]);
+            if (f.command.everywhere) d[lit("occurrences")] = f.command.count;
         }
         QJsonArray examples;
         for (const rl::PixelExample& e : f.examples)
@@ -213,6 +214,195 @@ QJsonObject toJson(const rl::ImageComparison& c, const QString& image, const QSt
     return o;
 }
 
+// What the comparison needs, loaded from the command line: the scene (a course scene or a
+// command file's image), their image, and our frame when it was rendered on the way.
+struct CompareInputs {
+    std::shared_ptr<const rl::Scene> scene;
+    std::size_t imageIndex = 0;  // of a command file's images
+    QString sceneLabel;
+    QString sizeFrom;  // where our size came from: the options, the lesson, the file, theirs
+    QString imagePath;
+    rl::Rgba8Image theirs;
+    CompareImage::Format theirFormat;
+    int theirWidth = 0, theirHeight = 0;  // before any crop
+    std::optional<rl::OurFrame> ours;
+    std::optional<rl::ivec2> croppedAt;  // where their screenshot held our frame
+};
+
+struct CompareOptionSet {
+    const SceneOptions scene;
+    const QCommandLineOption sceneName = SceneOptions::generatedSceneOption();
+    const QCommandLineOption image{
+        lit("image"),
+        lit("Your image (required): PNG, PPM (P3 or P6), BMP, TGA or JPEG (compared with a "
+            "tolerance). Without --size, ours is rendered at its size; a screenshot that holds "
+            "our frame is cropped to it."),
+        lit("THEIRS.png")};
+    const QCommandLineOption diffOutput{
+        lit("diff-output"),
+        lit("Write the difference image: ours darkened, differing pixels from yellow (off by "
+            "little) to red (by 64 or more), magenta where only we cover a pixel, cyan where "
+            "only you do."),
+        lit("FILE.png")};
+    const QCommandLineOption format{lit("format"), lit("text (default) or json."), lit("FORMAT"),
+                                    lit("text")};
+};
+
+bool readTheirImage(CompareInputs& in, QTextStream& err) {
+    const QString problem = CompareImage::read(in.imagePath, in.theirs, &in.theirFormat);
+    if (!problem.isEmpty()) {
+        err << problem << '\n';
+        err.flush();
+        return false;
+    }
+    in.theirWidth = in.theirs.width;
+    in.theirHeight = in.theirs.height;
+    return true;
+}
+
+// A command file's scene: the png named like their image, else the first.
+int loadCommandFileScene(const QCommandLineParser& parser, const CompareOptionSet& o,
+                         const QString& path, rl::Diagnostics& diagnostics, CompareInputs& in,
+                         QTextStream& err) {
+    const SceneOptions& so = o.scene;
+    for (const QCommandLineOption* option :
+         {&so.camera, &so.lighting, &so.object, &o.sceneName, &so.size, &so.shading, &so.rules,
+          &so.near, &so.naive, &so.backFaces})
+        if (parser.isSet(*option))
+            return usageError(err, lit("--%1 does not apply to a command file, which sets "
+                                       "its own scene")
+                                       .arg(option->names().first()));
+    qint64 pixelLimit = 0;
+    if (int code = readMaxPixels(parser, so.maxPixels, err, pixelLimit); code != ExitOk)
+        return code;
+    auto file = loadCommandFile(path, diagnostics);
+    if (!file) {
+        printDiagnostics(diagnostics, err);
+        return inputError(err, file.error());
+    }
+    if (file->images.empty()) {
+        err << path << ": the command file has no png command\n";
+        return ExitBadInput;
+    }
+    const std::string theirName = QFileInfo(in.imagePath).fileName().toStdString();
+    const rl::Hw2Image* chosen = &file->images.front();
+    for (const rl::Hw2Image& i : file->images)
+        if (i.fileName == theirName) chosen = &i;
+    if (file->images.size() > 1 && chosen->fileName != theirName)
+        err << "note: " << path << " names " << file->images.size()
+            << " images; comparing the first, " << QString::fromStdString(chosen->fileName)
+            << '\n';
+    if (int code = checkPixelLimit(*chosen, pixelLimit, err); code != ExitOk) return code;
+    in.imageIndex = static_cast<std::size_t>(chosen - file->images.data());
+    in.scene = std::make_shared<const rl::Scene>(chosen->scene);
+    in.sceneLabel = QString::fromStdString(chosen->fileName);
+    in.sizeFrom = lit("the command file's png command");
+    return ExitOk;
+}
+
+// A course scene, their image read first: without --size, ours is rendered at its size, or
+// at the scene's own when their image is a screenshot that holds our frame.
+int loadCourseScene(const QCommandLineParser& parser, const CompareOptionSet& o,
+                    rl::Diagnostics& diagnostics, CompareInputs& in, QTextStream& err) {
+    const SceneOptions& so = o.scene;
+    in.sizeFrom = parser.isSet(so.size) ? lit("--size") : lit("the scene's size");
+    if (!readTheirImage(in, err)) return ExitBadInput;
+    rl::CourseSceneSettings settings;
+    if (int code = so.settings(parser, err, settings); code != ExitOk) return code;
+    so.lessonSettings(parser, o.sceneName, settings);
+    if (int code = so.loadAny(parser, o.sceneName, settings, err, diagnostics, in.scene,
+                              in.sceneLabel);
+        code != ExitOk)
+        return code;
+    if (parser.isSet(so.size) ||
+        (in.theirs.width == settings.width && in.theirs.height == settings.height))
+        return ExitOk;
+    auto atOwnSize = rl::renderOurFrame(in.scene);
+    if (!atOwnSize) return inputError(err, atOwnSize.error());
+    in.croppedAt = CompareImage::cropToFrame(atOwnSize->image, in.theirs);
+    if (in.croppedAt) {
+        in.ours = std::move(atOwnSize.value());
+        return ExitOk;
+    }
+    qint64 pixelLimit = 0;
+    if (int code = readMaxPixels(parser, so.maxPixels, err, pixelLimit); code != ExitOk)
+        return code;
+    if (qint64(in.theirs.width) * in.theirs.height > pixelLimit) {
+        err << in.imagePath << ": the image is " << sizeText(in.theirs.width, in.theirs.height)
+            << ", more pixels than the limit of " << pixelLimit << " (raise it with --max-pixels)\n";
+        err.flush();
+        return ExitBadInput;
+    }
+    settings.width = in.theirs.width;
+    settings.height = in.theirs.height;
+    diagnostics = {};
+    if (int code = so.loadAny(parser, o.sceneName, settings, err, diagnostics, in.scene,
+                              in.sceneLabel);
+        code != ExitOk)
+        return code;
+    in.sizeFrom = lit("your image's size; --size overrides");
+    return ExitOk;
+}
+
+// Our frame, rendered unless it was on the way, and their image of its size (cropped from a
+// screenshot that holds it), or a bad input.
+int matchOurFrame(bool commandFile, CompareInputs& in, Provenance& provenance, QTextStream& err) {
+    if (!in.ours) {
+        auto rendered = rl::renderOurFrame(in.scene);
+        if (!rendered) return inputError(err, rendered.error());
+        in.ours = std::move(rendered.value());
+    }
+    printDiagnostics(in.ours->trace->diagnostics, err);
+    const rl::Rgba8Image& ourImage = in.ours->image;
+    if (!in.croppedAt) in.croppedAt = CompareImage::cropToFrame(ourImage, in.theirs);
+    if (const QString mismatch = CompareImage::sizeMismatch(in.imagePath, in.theirs, ourImage);
+        !mismatch.isEmpty()) {
+        err << mismatch << " ("
+            << (commandFile ? lit("its png command sets the size")
+                            : lit("no frame of ours found inside it at --size %1")
+                                  .arg(sizeText(ourImage.width, ourImage.height)))
+            << ")\n";
+        err.flush();
+        return ExitBadInput;
+    }
+    QString cropped;
+    if (in.croppedAt)
+        cropped = lit("cropped to %1 at (%2, %3) from %4, the frame found inside your image")
+                      .arg(sizeText(ourImage.width, ourImage.height))
+                      .arg(in.croppedAt->x)
+                      .arg(in.croppedAt->y)
+                      .arg(sizeText(in.theirWidth, in.theirHeight));
+    if (!in.theirFormat.alpha) CompareImage::takeAlpha(ourImage, in.theirs);
+    provenance = Provenance{in.theirFormat.describe(), in.sizeFrom, cropped};
+    return ExitOk;
+}
+
+// The diagnosis as text or JSON, and the difference image where asked.
+int printComparison(const CompareImage::Diagnosis& diagnosis, const CompareInputs& in,
+                    const Provenance& provenance, bool json, const QString& diffPath,
+                    QTextStream& out, QTextStream& err) {
+    const rl::ImageComparison& comparison = diagnosis.comparison;
+    QString sink;
+    QTextStream quiet(&sink);  // JSON keeps stdout to itself
+    const auto writeDiff = [&](QTextStream& to) {
+        return diffPath.isEmpty() ||
+               writePng(comparison.differenceImage, diffPath, to, err, lit("difference"));
+    };
+    if (json) {
+        if (!writeDiff(quiet)) return ExitBadInput;
+        QJsonObject o = toJson(comparison, in.imagePath, in.sceneLabel, provenance);
+        if (comparison.differing > 0 && !comparison.unlit) o[lit("lightingFit")] = fitJson(diagnosis.fit);
+        if (!diffPath.isEmpty()) o[lit("differenceImage")] = QFileInfo(diffPath).absoluteFilePath();
+        out << QJsonDocument(o).toJson(QJsonDocument::Indented);
+    } else {
+        printText(comparison, in.imagePath, in.sceneLabel, provenance, out);
+        printFit(diagnosis.fit, out);
+        if (!writeDiff(out)) return ExitBadInput;
+    }
+    out.flush();
+    return ExitOk;
+}
+
 }  // namespace
 
 int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err) {
@@ -224,25 +414,10 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
             "and what stays unexplained."));
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     const QCommandLineOption help({lit("h"), lit("help")}, lit("Show this help."));
-    const SceneOptions sceneOptions;
-    const QCommandLineOption sceneName = SceneOptions::generatedSceneOption();
-    const QCommandLineOption image(
-        lit("image"),
-        lit("Your image (required): PNG, PPM (P3 or P6), BMP, TGA or JPEG (compared with a "
-            "tolerance). Without --size, ours is rendered at its size; a screenshot that holds "
-            "our frame is cropped to it."),
-        lit("THEIRS.png"));
-    const QCommandLineOption diffOutput(
-        lit("diff-output"),
-        lit("Write the difference image: ours darkened, differing pixels from yellow (off by "
-            "little) to red (by 64 or more), magenta where only we cover a pixel, cyan where "
-            "only you do."),
-        lit("FILE.png"));
-    const QCommandLineOption format(lit("format"), lit("text (default) or json."), lit("FORMAT"),
-                                    lit("text"));
+    const CompareOptionSet o;
     parser.addOption(help);
-    sceneOptions.addTo(parser);
-    parser.addOptions({sceneName, image, diffOutput, format});
+    o.scene.addTo(parser);
+    parser.addOptions({o.sceneName, o.image, o.diffOutput, o.format});
     parser.addPositionalArgument(
         lit("FILE"), lit("A command file: its png image is compared (optional)."), lit("[FILE]"));
     if (!parser.parse(arguments)) return usageError(err, parser.errorText());
@@ -253,176 +428,32 @@ int runCompare(const QStringList& arguments, QTextStream& out, QTextStream& err)
     const QStringList files = parser.positionalArguments();
     if (files.size() > 1)
         return usageError(err, lit("compare takes one command file, found %1").arg(files.size()));
-    if (!parser.isSet(image)) return usageError(err, lit("compare needs --image THEIRS.png"));
-    const bool json = parser.value(format) == lit("json");
-    if (!json && parser.value(format) != lit("text"))
+    if (!parser.isSet(o.image)) return usageError(err, lit("compare needs --image THEIRS.png"));
+    const bool json = parser.value(o.format) == lit("json");
+    if (!json && parser.value(o.format) != lit("text"))
         return usageError(
-            err, lit("--format expects text or json, found '%1'").arg(parser.value(format)));
+            err, lit("--format expects text or json, found '%1'").arg(parser.value(o.format)));
 
     rl::Diagnostics diagnostics;
-    std::shared_ptr<const rl::Scene> scene;
-    std::size_t imageIndex = 0;  // of a command file's images
-    QString sceneLabel;
-    // Where our size came from: the options, the lesson, the command file, or their image.
-    QString sizeFrom = files.isEmpty() ? (parser.isSet(sceneOptions.size) ? lit("--size")
-                                                                          : lit("the scene's size"))
-                                       : lit("the command file's png command");
-    if (!files.isEmpty()) {
-        for (const QCommandLineOption* o :
-             {&sceneOptions.camera, &sceneOptions.lighting, &sceneOptions.object, &sceneName,
-              &sceneOptions.size, &sceneOptions.shading, &sceneOptions.rules, &sceneOptions.near,
-              &sceneOptions.naive, &sceneOptions.backFaces})
-            if (parser.isSet(*o))
-                return usageError(err, lit("--%1 does not apply to a command file, which sets "
-                                           "its own scene")
-                                           .arg(o->names().first()));
-        qint64 pixelLimit = 0;
-        if (int code = readMaxPixels(parser, sceneOptions.maxPixels, err, pixelLimit);
-            code != ExitOk)
-            return code;
-        auto file = loadCommandFile(files.first(), diagnostics);
-        if (!file) {
-            printDiagnostics(diagnostics, err);
-            return inputError(err, file.error());
-        }
-        if (file->images.empty()) {
-            err << files.first() << ": the command file has no png command\n";
-            return ExitBadInput;
-        }
-        // The png named like their image, else the first.
-        const std::string theirName = QFileInfo(parser.value(image)).fileName().toStdString();
-        const rl::Hw2Image* chosen = &file->images.front();
-        for (const rl::Hw2Image& i : file->images)
-            if (i.fileName == theirName) chosen = &i;
-        if (file->images.size() > 1 && chosen->fileName != theirName)
-            err << "note: " << files.first() << " names " << file->images.size()
-                << " images; comparing the first, " << QString::fromStdString(chosen->fileName)
-                << '\n';
-        if (int code = checkPixelLimit(*chosen, pixelLimit, err); code != ExitOk) return code;
-        imageIndex = static_cast<std::size_t>(chosen - file->images.data());
-        scene = std::make_shared<const rl::Scene>(chosen->scene);
-        sceneLabel = QString::fromStdString(chosen->fileName);
-    }
-
-    rl::Rgba8Image theirs;
-    CompareImage::Format theirFormat;
-    const QString imagePath = parser.value(image);
-    const auto readTheirs = [&] {
-        const QString problem = CompareImage::read(imagePath, theirs, &theirFormat);
-        if (!problem.isEmpty()) {
-            err << problem << '\n';
-            err.flush();
-        }
-        return problem.isEmpty();
-    };
-    std::optional<rl::OurFrame> ours;
-    std::optional<rl::ivec2> croppedAt;  // where their screenshot held our frame
-    int theirWidth = 0, theirHeight = 0;  // before any crop
-    if (files.isEmpty()) {
-        // Their image first: without --size, ours is rendered at its size.
-        if (!readTheirs()) return ExitBadInput;
-        theirWidth = theirs.width;
-        theirHeight = theirs.height;
-        rl::CourseSceneSettings settings;
-        if (int code = sceneOptions.settings(parser, err, settings); code != ExitOk) return code;
-        sceneOptions.lessonSettings(parser, sceneName, settings);
-        if (int code = sceneOptions.loadAny(parser, sceneName, settings, err, diagnostics, scene,
-                                            sceneLabel);
-            code != ExitOk)
-            return code;
-        if (!parser.isSet(sceneOptions.size) &&
-            (theirs.width != settings.width || theirs.height != settings.height)) {
-            // A screenshot that holds ours at the scene's own size is cropped to it; any other
-            // size is the size they rendered at.
-            auto atOwnSize = rl::renderOurFrame(scene);
-            if (!atOwnSize) return inputError(err, atOwnSize.error());
-            croppedAt = CompareImage::cropToFrame(atOwnSize->image, theirs);
-            if (croppedAt) {
-                ours = std::move(atOwnSize.value());
-            } else {
-                qint64 pixelLimit = 0;
-                if (int code = readMaxPixels(parser, sceneOptions.maxPixels, err, pixelLimit);
-                    code != ExitOk)
-                    return code;
-                if (qint64(theirs.width) * theirs.height > pixelLimit) {
-                    err << imagePath << ": the image is " << sizeText(theirs.width, theirs.height)
-                        << ", more pixels than the limit of " << pixelLimit
-                        << " (raise it with --max-pixels)\n";
-                    err.flush();
-                    return ExitBadInput;
-                }
-                settings.width = theirs.width;
-                settings.height = theirs.height;
-                diagnostics = {};
-                if (int code = sceneOptions.loadAny(parser, sceneName, settings, err, diagnostics,
-                                                    scene, sceneLabel);
-                    code != ExitOk)
-                    return code;
-                sizeFrom = lit("your image's size; --size overrides");
-            }
-        }
-    }
+    CompareInputs in;
+    in.imagePath = parser.value(o.image);
+    const bool commandFile = !files.isEmpty();
+    if (int code = commandFile ? loadCommandFileScene(parser, o, files.first(), diagnostics, in, err)
+                               : loadCourseScene(parser, o, diagnostics, in, err);
+        code != ExitOk)
+        return code;
     printDiagnostics(diagnostics, err);
-    if (!files.isEmpty()) {
-        if (!readTheirs()) return ExitBadInput;
-        theirWidth = theirs.width;
-        theirHeight = theirs.height;
-    }
-
-    if (!ours) {
-        auto rendered = rl::renderOurFrame(scene);
-        if (!rendered) return inputError(err, rendered.error());
-        ours = std::move(rendered.value());
-    }
-    printDiagnostics(ours->trace->diagnostics, err);
-    const rl::Rgba8Image& ourImage = ours->image;
-    if (!croppedAt) croppedAt = CompareImage::cropToFrame(ourImage, theirs);
-    if (const QString mismatch = CompareImage::sizeMismatch(imagePath, theirs, ourImage);
-        !mismatch.isEmpty()) {
-        err << mismatch << " ("
-            << (files.isEmpty() ? lit("no frame of ours found inside it at --size %1")
-                                      .arg(sizeText(ourImage.width, ourImage.height))
-                                : lit("its png command sets the size"))
-            << ")\n";
-        err.flush();
-        return ExitBadInput;
-    }
-    QString cropped;
-    if (croppedAt)
-        cropped = lit("cropped to %1 at (%2, %3) from %4, the frame found inside your image")
-                      .arg(sizeText(ourImage.width, ourImage.height))
-                      .arg(croppedAt->x)
-                      .arg(croppedAt->y)
-                      .arg(sizeText(theirWidth, theirHeight));
-    if (!theirFormat.alpha) CompareImage::takeAlpha(ourImage, theirs);
-    const Provenance provenance{theirFormat.describe(), sizeFrom, cropped};
+    if (commandFile && !readTheirImage(in, err)) return ExitBadInput;
+    Provenance provenance;
+    if (int code = matchOurFrame(commandFile, in, provenance, err); code != ExitOk) return code;
 
     // A command file's misread command, the catalogue, the lighting fitted to their colours.
-    auto diagnosis = CompareImage::diagnose(*ours, theirs, theirFormat,
-                                            files.isEmpty() ? QString() : files.first(), imageIndex);
+    auto diagnosis = CompareImage::diagnose(*in.ours, in.theirs, in.theirFormat,
+                                            commandFile ? files.first() : QString(), in.imageIndex);
     if (!diagnosis) return inputError(err, diagnosis.error());
-    const rl::ImageComparison* comparison = &diagnosis->comparison;
-    const rl::LightingFit& fit = diagnosis->fit;
-    QString sink;
-    QTextStream quiet(&sink);  // JSON keeps stdout to itself
-    if (json) {
-        if (parser.isSet(diffOutput) && !writePng(comparison->differenceImage, parser.value(diffOutput),
-                                                  quiet, err, lit("difference")))
-            return ExitBadInput;
-        QJsonObject o = toJson(*comparison, imagePath, sceneLabel, provenance);
-        if (comparison->differing > 0 && !comparison->unlit) o[lit("lightingFit")] = fitJson(fit);
-        if (parser.isSet(diffOutput))
-            o[lit("differenceImage")] = QFileInfo(parser.value(diffOutput)).absoluteFilePath();
-        out << QJsonDocument(o).toJson(QJsonDocument::Indented);
-    } else {
-        printText(*comparison, imagePath, sceneLabel, provenance, out);
-        printFit(fit, out);
-        if (parser.isSet(diffOutput) && !writePng(comparison->differenceImage, parser.value(diffOutput),
-                                                  out, err, lit("difference")))
-            return ExitBadInput;
-    }
-    out.flush();
-    return ExitOk;
+    return printComparison(diagnosis.value(), in, provenance, json,
+                           parser.isSet(o.diffOutput) ? parser.value(o.diffOutput) : QString(),
+                           out, err);
 }
 
 }  // namespace rasterlab::cli

@@ -333,8 +333,7 @@ void CheckPanel::showReport() {
             item->setText(1, verdictText(st.verdict));
             if (st.verdict == check::Verdict::Failed || st.verdict == check::Verdict::Passed)
                 item->setText(2, tr("%1 of %2 differ").arg(st.differing).arg(st.elements));
-            item->setText(3,
-                          text(st.verdict == check::Verdict::Broken ? st.problem : st.likelyCause));
+            item->setText(3, text(st.verdict == check::Verdict::Broken ? st.problem : st.causes()));
             item->setToolTip(3, item->text(3));
             item->setData(0, Qt::UserRole, int(st.stage));
             item->setForeground(1, st.verdict == check::Verdict::Passed ? QColor(20, 140, 40)
@@ -390,9 +389,23 @@ void CheckPanel::showSelected() {
                      .arg(text(r->first->element), text(r->first->theirs), text(r->first->ours));
         lines << text(r->first->formula);
     }
-    if (!r->likelyCause.empty()) lines << tr("Likely cause: %1").arg(text(r->likelyCause));
-    if (r->verdict == check::Verdict::Failed && r->likelyCause.empty())
+    for (const check::StageFinding& f : r->findings)
+        lines << tr("Likely cause: %1 (explains %2 of %3, %4% of the difference)")
+                     .arg(text(f.cause))
+                     .arg(f.explained)
+                     .arg(r->differing)
+                     .arg(100.0 * f.share, 0, 'f', 1);
+    if (r->verdict == check::Verdict::Failed && r->findings.empty())
         lines << tr("No known mistake of this stage gives their answer.");
+    if (r->verdict == check::Verdict::Failed && r->unexplained > 0 && !r->findings.empty())
+        lines << tr("Unexplained: %1 of %2.").arg(r->unexplained).arg(r->differing);
+    for (const std::string& d : r->description) lines << tr("In numbers: %1").arg(text(d));
+    if (r->carried)
+        lines << tr("Carried from the earlier stages: %1 elements of the lecture's answer change "
+                    "with what was sent.")
+                     .arg(*r->carried);
+    for (const std::string& e : r->standardError) lines << text(e);
+    if (!r->hint.empty()) lines << text(r->hint);
     if (!r->tolerance.empty()) lines << tr("Tolerance: %1").arg(text(r->tolerance));
     m_details->setText(lines.join(QLatin1Char('\n')));
     m_canvas->show(m_image, r->departures);

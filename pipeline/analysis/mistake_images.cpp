@@ -59,7 +59,8 @@ struct Formulas {
     bool unnormalised = false;    // the interpolated N at its own length
     bool vReversed = false;       // V = P' / |P'|
     bool truncated = false;       // each term truncated to a whole byte
-    bool epsilon = false;         // the special cases against kSpecialCaseEpsilon
+    bool epsilon = false;         // the special cases against `small`
+    float small = kSpecialCaseEpsilon;
     // Vertex normals made another way (per draw, per vertex of the mesh); empty: the frame's.
     std::vector<std::vector<vec3>> vertexNormals;
     bool any() const {
@@ -155,7 +156,7 @@ vec3 lightWith(const FrameLighting& lighting, const Draw& draw, const vec3& od, 
     // V = P'/|P'| is what orientNormal makes of -P'.
     if (!orientNormal(s, f.vReversed ? -p : p, n, flip)) return s.colour();
     if (f.unnormalised) s.n = s.flipped ? -n : n;
-    if (f.epsilon && flip && !s.flipped && glm::dot(s.v, s.n) < kSpecialCaseEpsilon) s.n = -s.n;
+    if (f.epsilon && flip && !s.flipped && glm::dot(s.v, s.n) < f.small) s.n = -s.n;
     const bool phongHighlight = m.ks != 0.0f && draw.specular == SpecularModel::Phong;
     for (std::size_t i = 0; i < count; ++i) {
         LightTerms t = lightTerms(m, od, lights[i], p, s.n, s.v, draw.specular);
@@ -177,8 +178,8 @@ vec3 lightWith(const FrameLighting& lighting, const Draw& draw, const vec3& od, 
             const float power = std::pow(t.rDotV, m.shininess);
             if (std::isfinite(power)) t.specular = il * m.ks * power;
         }
-        if (f.epsilon && t.nDotL < kSpecialCaseEpsilon) t.diffuse = t.specular = vec3(0.0f);
-        if (f.epsilon && t.rDotV < kSpecialCaseEpsilon) t.specular = vec3(0.0f);
+        if (f.epsilon && t.nDotL < f.small) t.diffuse = t.specular = vec3(0.0f);
+        if (f.epsilon && t.rDotV < f.small) t.specular = vec3(0.0f);
         if (!(t.nDotL >= 0.0f) && !behind) continue;
         s.diffuse += term(t.diffuse);
         const vec3 specular = term(t.specular);
@@ -429,6 +430,12 @@ Result<std::optional<MistakeFrame>> frameWithMistakes(const OurFrame& ours,
                 changed->rules.sampleOffset = scene.rules.sampleOffset == 0.0 ? 0.5 : 0.0;
                 break;
             case Mistake::VertexSnap:
+                if (slip.amount == kKeptFractional) {
+                    // Fractional, as near as the exact walk holds: a 1/65536-pixel grid.
+                    changed->rules.subpixelBits = 16;
+                    changed->rules.snap = RasterRules::VertexSnap::Nearest;
+                    break;
+                }
                 changed->rules.snap = scene.rules.snap == RasterRules::VertexSnap::Truncate
                                           ? RasterRules::VertexSnap::Nearest
                                           : RasterRules::VertexSnap::Truncate;
@@ -506,6 +513,8 @@ Result<std::optional<Rgba8Image>> imageOnFrame(const OurFrame& ours, const Mista
                 f.vReversed |= slip.mistake == Mistake::ViewVectorReversed;
                 f.truncated |= slip.mistake == Mistake::TermsTruncated;
                 f.epsilon |= slip.mistake == Mistake::EpsilonSpecialCases;
+                if (slip.mistake == Mistake::EpsilonSpecialCases && slip.amount > 0.0)
+                    f.small = static_cast<float>(slip.amount);
                 break;
             case Mistake::NormalNotFlipped:
                 if (!conv.flipNormalsTowardViewer) return Optional();

@@ -157,7 +157,7 @@ Message laterTitleOf(const Scene& scene, const Slip& slip) {
             return "each Phong term truncated to a whole byte before the sum"_msg;
         case Mistake::EpsilonSpecialCases:
             return "V.N, N.L and R.V tested against %1 instead of 0"_msg(
-                formatNumber(kSpecialCaseEpsilon));
+                formatNumber(slip.amount > 0.0 ? slip.amount : double(kSpecialCaseEpsilon)));
         case Mistake::DepthReversed:
             return "the depth test reversed: the farther fragment wins (> against a buffer "
                    "cleared to -infinity, or to 0)"_msg;
@@ -229,6 +229,9 @@ Message titleOf(const OurFrame& ours, const Slip& slip) {
                        ? "pixels sampled at their centres (x + 0.5) instead of their corners"_msg
                        : "pixels sampled at their corners instead of their centres (x + 0.5)"_msg;
         case Mistake::VertexSnap:
+            if (slip.amount == kKeptFractional)
+                return "vertex positions kept fractional (never made whole) instead of "
+                       "truncated to whole pixels"_msg;
             if (rules.snap == RasterRules::VertexSnap::None)
                 return "vertex positions truncated to the sub-pixel grid instead of kept as "
                        "computed"_msg;
@@ -535,7 +538,7 @@ public:
         std::vector<Slip> rendering;
         for (const Slip& slip : slips)
             if (changesTheRender(slip.mistake)) {
-                key += mistakeId(slip.mistake) + std::string(";");
+                key += mistakeId(slip.mistake) + (" " + std::to_string(slip.amount)) + ";";
                 rendering.push_back(slip);
             }
         auto found = m_frames.find(key);
@@ -562,6 +565,15 @@ public:
                 for (ivec2 s : {ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1), ivec2(1, 1),
                                 ivec2(-1, -1), ivec2(1, -1), ivec2(-1, 1)})
                     out.push_back({mistake, s, {}, 0.0, {}});
+                return out;
+            }
+            case Mistake::VertexSnap: {
+                // Rounded against truncated, and (where the rules snap to whole pixels) kept
+                // fractional, the (int) cast left out.
+                std::vector<Slip> out{slip};
+                const RasterRules& rules = m_ours.trace->scene->rules;
+                if (rules.snap != RasterRules::VertexSnap::None && rules.subpixelBits == 0)
+                    out.push_back({mistake, ivec2(1, 0), {}, kKeptFractional, {}});
                 return out;
             }
             case Mistake::ScreenMap:
@@ -822,10 +834,15 @@ Error cancelledError() {
 // faces drawn) must not hide the pair that really made their image. A hypothesis grows by a
 // mistake only when that removes at least `least`; the best is the one with the least
 // difference, each mistake counted as `least` more.
-Result<Hypothesis> beamSearch(Search& search, Hypothesis start, double least, bool unlit) {
-    const auto cost = [&](const Hypothesis& h) {
-        return double(h.difference) + least * double(h.slips.size());
-    };
+// What a finding must remove from a hypothesis whose difference is `left`: `least` (a share
+// of the whole), or kLaterShare of what is left, but never below kTinyShare of the whole.
+double enoughOf(double least, double left) {
+    return std::max(least * (kTinyShare / kLeastShare), std::min(least, kLaterShare * left));
+}
+
+Result<Hypothesis> beamSearch(Search& search, Hypothesis start, double least, bool unlit,
+                              const std::vector<Mistake>& excluded) {
+    const auto enough = [&](const Hypothesis& h) { return enoughOf(least, double(h.difference)); };
     const auto nearer = [](const Hypothesis& a, const Hypothesis& b) {
         return a.difference < b.difference;
     };
@@ -838,6 +855,7 @@ Result<Hypothesis> beamSearch(Search& search, Hypothesis start, double least, bo
             for (std::size_t i = 0; i < kMistakeCount; ++i) {
                 const Mistake mistake = static_cast<Mistake>(i);
                 if ((unlit && !changesCoverage(mistake)) ||
+                    std::find(excluded.begin(), excluded.end(), mistake) != excluded.end() ||
                     std::any_of(parent.slips.begin(), parent.slips.end(),
                                 [&](const Slip& s) { return s.mistake == mistake; }))
                     continue;
@@ -850,7 +868,8 @@ Result<Hypothesis> beamSearch(Search& search, Hypothesis start, double least, bo
                     if (!candidate) return candidate.error();
                     if (!candidate.value()) continue;
                     const std::uint64_t d = search.differenceTo(*candidate.value());
-                    if (d >= parent.difference || double(parent.difference - d) < least) continue;
+                    if (d >= parent.difference || double(parent.difference - d) < enough(parent))
+                        continue;
                     if (next.size() == kBeamWidth && d >= next.back().difference) continue;
                     Hypothesis h{std::move(trial), std::move(*candidate.value()), d};
                     next.insert(std::upper_bound(next.begin(), next.end(), h, nearer), std::move(h));
@@ -858,11 +877,26 @@ Result<Hypothesis> beamSearch(Search& search, Hypothesis start, double least, bo
                 }
             }
         }
-        if (!next.empty() && cost(next.front()) < cost(chosen)) chosen = next.front();
+        if (!next.empty() && next.front().difference < chosen.difference) chosen = next.front();
         if (chosen.difference == 0) break;  // their image made exactly: nothing left to find
         beam = std::move(next);
     }
     return chosen;
+}
+
+// The hypothesis the search starts from: each mistake found elsewhere, in order, kept when it
+// brings ours nearer theirs.
+Result<Hypothesis> withGiven(Search& search, Hypothesis h, const std::vector<Slip>& given) {
+    for (const Slip& slip : given) {
+        std::vector<Slip> trial = h.slips;
+        trial.push_back(slip);
+        auto image = search.image(trial);
+        if (!image) return image.error();
+        if (!image.value()) continue;
+        const std::uint64_t d = search.differenceTo(*image.value());
+        if (d < h.difference) h = {std::move(trial), std::move(*image.value()), d};
+    }
+    return h;
 }
 
 // An offset or scale was measured before the mistakes found after it: measured again with
@@ -905,7 +939,7 @@ Status dropRedundant(Search& search, Hypothesis& h, double least) {
             if (!image) return image.error();
             if (!image.value()) continue;
             const std::uint64_t d = search.differenceTo(*image.value());
-            if (double(d) >= double(h.difference) + least) continue;
+            if (double(d) >= double(h.difference) + enoughOf(least, double(d))) continue;
             h = {std::move(others), std::move(*image.value()), d};
             dropped = true;
         }
@@ -975,7 +1009,9 @@ Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& 
     if (out.differing == 0) return out;
 
     const double least = kLeastShare * double(out.difference);
-    auto found = beamSearch(search, {{}, start, out.difference}, least, out.unlit);
+    auto given = withGiven(search, {{}, start, out.difference}, options.given);
+    if (!given) return given.error();
+    auto found = beamSearch(search, std::move(given.value()), least, out.unlit, options.excluded);
     if (!found) return found.error();
     Hypothesis chosen = std::move(found.value());
     if (Status s = remeasureConstants(search, chosen); !s) return s.error();
@@ -983,6 +1019,9 @@ Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& 
     auto findings = findingsInOrder(search, ours, start, chosen.slips, out);
     if (!findings) return findings.error();
     out.diagnosis = std::move(findings.value());
+    for (Finding& f : out.diagnosis)
+        f.given = std::any_of(options.given.begin(), options.given.end(),
+                              [&](const Slip& g) { return g.mistake == f.mistake; });
     out.unexplained = double(chosen.difference) / double(out.difference);
     out.unexplainedPixels = 0;
     for (int y = 0; y < theirs.height; ++y)
@@ -994,9 +1033,33 @@ Result<ImageComparison> compareWithOurs(const OurFrame& ours, const Rgba8Image& 
 
 namespace {
 
+// How every occurrence of a command was misread.
+Message everywhereTitle(const Hw2Misreading& m) {
+    using Kind = Hw2Misreading::Kind;
+    switch (m.kind) {
+        case Kind::Ignored:
+            return "every '%1' ignored (%2 of them, from line %3): the command never "
+                   "implemented"_msg(m.keyword, m.count, m.line);
+        case Kind::OtherSide:
+            return "every '%1' multiplied on the other side (M = A M instead of M A), from line "
+                   "%2"_msg(m.keyword, m.line);
+        case Kind::Transposed:
+            return "every '%1' read column by column (the matrix transposed), from line %2"_msg(
+                m.keyword, m.line);
+        case Kind::Radians:
+            return "every '%1' with its angle taken as radians, from line %2"_msg(m.keyword,
+                                                                                 m.line);
+        case Kind::UnnormalisedSide:
+            return "every '%1' with s = f x up not normalised, from line %2"_msg(m.keyword,
+                                                                                m.line);
+    }
+    return {};
+}
+
 // How a command was misread, for the finding's title and advice.
 Message misreadingTitle(const Hw2Misreading& m) {
     using Kind = Hw2Misreading::Kind;
+    if (m.everywhere) return everywhereTitle(m);
     switch (m.kind) {
         case Kind::Ignored:
             return "line %1: '%2' ignored"_msg(m.line, m.keyword);

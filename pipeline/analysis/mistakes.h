@@ -46,7 +46,8 @@ enum class Mistake : std::uint8_t {
     UpsideDown,
     Shifted,       // by one pixel in some direction
     SampleOffset,  // pixel corners against pixel centres (half a pixel)
-    VertexSnap,    // vertices rounded against truncated
+    VertexSnap,    // vertices rounded against truncated (or, Slip::amount kKeptFractional,
+                   // kept fractional)
     FillRule,      // inclusive edges against top-left
     ByteRounding,  // bytes rounded against truncated: off by one
     ColourWrap,    // bytes wrap past 255 instead of clamping
@@ -60,7 +61,8 @@ enum class Mistake : std::uint8_t {
     ViewVectorReversed,     // V = P' instead of -P' (or L = P' - Pl: the same image)
     AmbientIaOnly,          // ambient Ia instead of Ia ka
     TermsTruncated,         // each Phong term truncated to a whole byte before the sum
-    EpsilonSpecialCases,    // V.N, N.L and R.V tested against kSpecialCaseEpsilon, not 0
+    EpsilonSpecialCases,    // V.N, N.L and R.V tested against Slip::amount (or
+                            // kSpecialCaseEpsilon), not 0
     DepthReversed,          // the farther fragment wins the depth test
     ColourOffset,           // every covered byte off by a constant (Slip::amount)
     ColourScale,            // every colour multiplied by a constant (Slip::amount)
@@ -76,6 +78,9 @@ enum class Mistake : std::uint8_t {
 
 // The mistakes the search composes (CommandMisread is found by compareCommandFile alone).
 inline constexpr std::size_t kMistakeCount = 35;
+
+// VertexSnap's amount for vertices never made whole: kept fractional.
+inline constexpr double kKeptFractional = 2.0;
 
 // The small number a student tests the special cases against (EpsilonSpecialCases).
 inline constexpr float kSpecialCaseEpsilon = 1e-3f;
@@ -135,11 +140,16 @@ struct Finding {
     double share = 0.0;
     std::vector<PixelExample> examples;
     Hw2Misreading command;  // CommandMisread: the line and how it was misread
+    bool given = false;     // one of CompareOptions::given
 };
 
 // A mistake that removes less than this share of the difference is not reported: chance, or
-// a rounding that another mistake's bytes happen to share.
+// a rounding that another mistake's bytes happen to share; unless it removes kLaterShare of
+// what the findings before it leave (covered pixels diagnosed after a background), and at
+// least kTinyShare of the whole.
 inline constexpr double kLeastShare = 0.005;
+inline constexpr double kLaterShare = 0.05;
+inline constexpr double kTinyShare = 0.0005;
 // The diagnosis composes at most this many mistakes, and keeps this many hypotheses at each
 // step of its search.
 inline constexpr std::size_t kMostFindings = 6;
@@ -188,6 +198,11 @@ struct CompareOptions {
     // Whether the general map of the screen is fitted (compareCommandFile tries the commands
     // misread first: a translation ignored is a shift, better named by its line).
     bool screenMap = true;
+    // Mistakes already found elsewhere (check's stages): each applied first, in this order,
+    // when it brings ours nearer theirs; and mistakes ruled out (a stage that passed
+    // contradicts them), never tried.
+    std::vector<Slip> given;
+    std::vector<Mistake> excluded;
     // Set from another thread, it stops the comparison with the error "comparison cancelled".
     const std::atomic<bool>* cancel = nullptr;
     bool cancelled() const { return cancel && cancel->load(); }

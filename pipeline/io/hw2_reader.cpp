@@ -132,7 +132,9 @@ private:
     const Hw2Misreading* m_misreading = nullptr;
     // Whether the command on this line is misread that way.
     bool misread(const TextLine& line, Hw2Misreading::Kind kind) const {
-        return m_misreading && m_misreading->line == line.number && m_misreading->kind == kind;
+        if (!m_misreading || m_misreading->kind != kind) return false;
+        return m_misreading->everywhere ? line.tokens[0].text == m_misreading->keyword
+                                        : m_misreading->line == line.number;
     }
     // An angle in degrees, or misread as radians (the number used as radians is that many
     // times 180/pi degrees).
@@ -761,6 +763,17 @@ std::vector<Hw2Misreading> possibleMisreadings(std::string_view text) {
         if (keyword.starts_with("rotate")) add(Kind::Radians);
         if (keyword == "lookat") add(Kind::UnnormalisedSide);
     }
+    // The same, command by command, for every occurrence at once.
+    std::map<std::pair<std::string, Kind>, Hw2Misreading> every;
+    for (const Hw2Misreading& m : out) {
+        auto [it, fresh] = every.try_emplace({m.keyword, m.kind}, m);
+        if (!fresh) ++it->second.count;
+    }
+    for (auto& [key, m] : every)
+        if (m.count > 1) {
+            m.everywhere = true;
+            out.push_back(m);
+        }
     return out;
 }
 

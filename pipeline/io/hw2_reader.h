@@ -40,11 +40,16 @@ using TextureLoader = std::function<Result<std::shared_ptr<const Texture>>(
 // the command behind their image: the command on `line` ignored; its matrix multiplied on
 // the other side (M = A M instead of M A); its sixteen numbers taken column by column; its
 // angle taken as radians; or lookat's side vector s = f x up left unnormalised.
+// With `everywhere`, every occurrence of the command is read that way (a command never
+// implemented is ignored wherever it stands); `line` is then its first line, `count` how many
+// there are.
 struct Hw2Misreading {
     enum class Kind : std::uint8_t { Ignored, OtherSide, Transposed, Radians, UnnormalisedSide };
     int line = 0;
     Kind kind = Kind::Ignored;
     std::string keyword;  // the command on that line
+    bool everywhere = false;
+    int count = 1;
 };
 
 // Reads the text; with a misreading, that one command as it says.
@@ -52,7 +57,8 @@ Result<Hw2File> readHw2(std::string_view text, const std::string& fileName,
                         const TextureLoader& loadTexture, Diagnostics& diagnostics,
                         const Hw2Misreading* misreading = nullptr);
 
-// Every misreading that changes a matrix command of the text, in line order.
+// Every misreading that changes a matrix command of the text, in line order; then, for each
+// such command that stands more than once, the same misreadings of all its occurrences.
 std::vector<Hw2Misreading> possibleMisreadings(std::string_view text);
 
 // Whether a text looks like a command file: its first command line starts with a known

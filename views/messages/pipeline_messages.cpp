@@ -548,6 +548,8 @@ const char* const kCatalogue[] = {
     QT_TRANSLATE_NOOP("Messages",
                       "pixels sampled at their corners instead of their centres (x + 0.5)"),
     QT_TRANSLATE_NOOP("Messages", "vertex positions rounded instead of truncated to whole pixels"),
+    QT_TRANSLATE_NOOP("Messages", "vertex positions kept fractional (never made whole) instead of "
+                                  "truncated to whole pixels"),
     QT_TRANSLATE_NOOP("Messages", "vertex positions truncated instead of rounded to whole pixels"),
     QT_TRANSLATE_NOOP("Messages",
                       "vertex positions rounded instead of truncated to the sub-pixel grid"),
@@ -625,6 +627,14 @@ const char* const kCatalogue[] = {
     QT_TRANSLATE_NOOP("Messages", "the fitted light is ours with %1 and %2 swapped"),
     QT_TRANSLATE_NOOP("Messages", "the fitted n is half of ours: n halved"),
     QT_TRANSLATE_NOOP("Messages", "the command file read again with that command so gives their pixels"),
+    QT_TRANSLATE_NOOP("Messages", "every '%1' ignored (%2 of them, from line %3): the command "
+                                  "never implemented"),
+    QT_TRANSLATE_NOOP("Messages", "every '%1' multiplied on the other side (M = A M instead of "
+                                  "M A), from line %2"),
+    QT_TRANSLATE_NOOP("Messages",
+                      "every '%1' read column by column (the matrix transposed), from line %2"),
+    QT_TRANSLATE_NOOP("Messages", "every '%1' with its angle taken as radians, from line %2"),
+    QT_TRANSLATE_NOOP("Messages", "every '%1' with s = f x up not normalised, from line %2"),
     QT_TRANSLATE_NOOP("Messages", "line %1: '%2' ignored"),
     QT_TRANSLATE_NOOP("Messages", "line %1: '%2' multiplied on the other side (M = A M instead of M A)"),
     QT_TRANSLATE_NOOP("Messages", "line %1: '%2' read column by column (the matrix transposed)"),
