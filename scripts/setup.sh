@@ -23,6 +23,7 @@ packages=(
     file                               # the PNG icons' sizes, checked
     qemu-user                          # other processors' kernels (scripts/other-cpus.sh)
     python3                            # the student renderer of examples/student, and its tests
+    gcc default-jdk-headless           # the C and Java students' programs check is tested on
     bubblewrap                         # bwrap: check runs a student's program in a sandbox
 )
 
