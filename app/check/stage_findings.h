@@ -50,12 +50,15 @@ struct Explanation {
 // or none when these mistakes cannot go together in this scene.
 using DifferingWith = std::function<std::optional<ElementKeys>(const std::vector<StageMistake>&)>;
 
-// At most this many mistakes are composed.
+// At most this many mistakes are composed, and this many hypotheses kept at each step.
 inline constexpr std::size_t kMostStageFindings = 6;
+inline constexpr std::size_t kStageBeam = 3;
 
-// The greedy search: `differing` the elements that differ from the lecture's answer, the
-// catalogue's mistakes tried one more at a time, each round taking the one that makes most
-// elements match net of those it spoils (at least one), the catalogue's order breaking ties.
+// The search: `differing` the elements that differ from the lecture's answer, the catalogue's
+// mistakes tried one more at a time, each making at least one element match net of those it
+// spoils; the kStageBeam hypotheses that leave fewest elements differing are kept each round,
+// the catalogue's order breaking ties, and the best of all is said as findings in the order
+// it applied them.
 Explanation explainStage(const std::vector<StageMistake>& catalogue, const ElementKeys& differing,
                          const DifferingWith& differingWith,
                          const std::function<std::string(std::uint64_t)>& elementName);

@@ -68,6 +68,9 @@ struct RowsJudge {
     std::function<std::vector<std::string>(const std::vector<Row>& theirs,
                                            const std::vector<Row>& best, const ElementKeys& left)>
         describe;
+    // Where the tolerance lets through values the lecture does not give (the projection's
+    // ties): equality to the digit, to name the rule their values follow even when they pass.
+    Equal exact;
 };
 
 ElementKeys differingRows(const Equal& equal, const std::vector<Row>& theirs,
@@ -99,16 +102,30 @@ StageResult judgeRows(const RowsJudge& j, const std::vector<Row>& theirs) {
                 Divergence{j.element(i), rowShown(theirs[i]), rowShown(j.ours[i]), j.formula(i)};
     }
     if (j.fromScratch) result.carried = differingRows(j.equal, *j.fromScratch, j.ours).size();
-    if (result.differing == 0) return result;
-    result.verdict = Verdict::Failed;
+    // Passed, but not to the digit: which rule their values follow, said without failing.
+    const bool byTolerance = result.differing == 0 && j.exact;
+    if (byTolerance) differing = differingRows(j.exact, theirs, j.ours);
+    if (differing.empty()) return result;
+    if (!byTolerance) result.verdict = Verdict::Failed;
+    const Equal& equal = byTolerance ? j.exact : j.equal;
     const Explanation e = explainStage(
         j.catalogue, differing,
         [&](const Mistakes& applied) -> std::optional<ElementKeys> {
             const std::vector<Row> rows = j.answer(applied);
             if (rows.size() != theirs.size()) return std::nullopt;
-            return differingRows(j.equal, theirs, rows);
+            return differingRows(equal, theirs, rows);
         },
         [&](std::uint64_t key) { return j.element(std::size_t(key)); });
+    if (byTolerance) {
+        if (e.findings.empty()) return result;
+        result.description.push_back(
+            "passed by the tolerance; to the digit, " + std::to_string(differing.size()) +
+            (differing.size() == 1 ? " element differs" : " elements differ") +
+            ", as this finding gives: it may show in the frame");
+        result.findings = e.findings;
+        result.applied = e.applied;
+        return result;
+    }
     takeExplanation(result, e);
     if (!e.unexplained.empty() && j.describe)
         result.description =
@@ -346,6 +363,10 @@ StageResult StageCheck::judgeProjection(const std::vector<Record>& answer, const
         return same;
     };
     j.tolerance = "exact whole pixels (either side where x or y is within 1e-9 of a whole number)";
+    j.exact = [](std::size_t, const Row& a, const Row& b, double& error) {
+        error = std::max(std::abs(a[0] - b[0]), std::abs(a[1] - b[1]));
+        return error == 0.0 || (b[0] != std::floor(b[0]) && error <= 1e-6 * std::max(1.0, std::abs(b[0])));
+    };
     j.catalogue = projectionCatalogue();
     j.answer = [cam, w, h, view](const Mistakes& a) {
         return projectionAnswer(cam.d, cam.hx, cam.hy, w, h, view, a);
