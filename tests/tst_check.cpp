@@ -12,9 +12,11 @@
 
 #include <signal.h>
 
+#include <map>
 #include <set>
 
 #include "app/check/check_session.h"
+#include "app/check/stage_findings.h"
 #include "app/check/stage_mistakes.h"
 #include "app/check/student_program.h"
 #include "pipeline/stages/camera_basis.h"
@@ -373,6 +375,125 @@ private slots:
         QCOMPARE(QString::fromStdString(r->first->element), element);
         QCOMPARE(QString::fromStdString(r->causes()), cause);
         QVERIFY(r->differing > 0 && r->differing <= r->elements);
+    }
+
+    // The search on a catalogue made by hand: ten elements; A makes 0..5 theirs, B makes 6..8
+    // theirs, C imitates most of both (0..7 theirs, and spoils 9). Their answer is A and B with
+    // element 9 matching: greedy would take C first (8 made, 1 spoiled, against A's 6) and then
+    // B, leaving 9; the beam names A then B, each with what it explains, and nothing left.
+    void findingsComposeByHand() {
+        const auto mistake = [](int code, const char* id) {
+            StageMistake m;
+            m.code = code;
+            m.id = id;
+            m.cause = id;
+            return m;
+        };
+        const std::vector<StageMistake> catalogue = {mistake(3, "C"), mistake(1, "A"),
+                                                     mistake(2, "B")};
+        const auto differingWith = [](const std::vector<StageMistake>& applied) {
+            std::set<std::uint64_t> made;
+            bool spoils = false;
+            for (const StageMistake& m : applied) {
+                const int first = m.code == 1 ? 0 : m.code == 2 ? 6 : 0;
+                const int last = m.code == 1 ? 5 : m.code == 2 ? 8 : 7;
+                for (int i = first; i <= last; ++i) made.insert(std::uint64_t(i));
+                spoils = spoils || m.code == 3;
+            }
+            ElementKeys differing;
+            for (std::uint64_t i = 0; i < 9; ++i)
+                if (!made.count(i)) differing.push_back(i);
+            if (spoils) differing.push_back(9);
+            return std::optional<ElementKeys>(differing);
+        };
+        const Explanation e = explainStage(catalogue, {0, 1, 2, 3, 4, 5, 6, 7, 8}, differingWith,
+                                           [](std::uint64_t k) { return std::to_string(k); });
+        QCOMPARE(e.findings.size(), std::size_t(2));
+        QCOMPARE(QString::fromStdString(e.findings[0].id), QStringLiteral("A"));
+        QCOMPARE(e.findings[0].explained, std::size_t(6));
+        QCOMPARE(e.findings[0].share, 6.0 / 9.0);
+        QCOMPARE(QString::fromStdString(e.findings[1].id), QStringLiteral("B"));
+        QCOMPARE(e.findings[1].explained, std::size_t(3));
+        QCOMPARE(e.findings[1].examples, (std::vector<std::string>{"6", "7", "8"}));
+        QVERIFY(e.unexplained.empty());
+    }
+
+    // The basis's forms of N not normalised, by hand: N = (0, 0, 2), V = (0, 1, 1). Used raw
+    // in V.N and unit after it, V - 2 (0, 0, 1) = (0, 1, -1), normalised (0, 0.7071, -0.7071);
+    // unit in V.N and raw after, V - 1 (0, 0, 2) = (0, 1, -1) likewise; the lecture's V is
+    // (0, 1, 0). Raw in both: V - 2 (0, 0, 2) = (0, 1, -3), normalised.
+    void basisFormsByHand() {
+        const rl::dvec3 n(0, 0, 2), v(0, 1, 1);
+        const auto formOf = [&](const char* id) {
+            for (const StageMistake& m : basisCatalogue())
+                if (m.id == id) return basisAnswer(n, v, {m});
+            return std::vector<Row>{};
+        };
+        const double h = 1.0 / std::sqrt(2.0), t = 1.0 / std::sqrt(10.0);
+        QCOMPARE(basisAnswer(n, v, {})[1], (Row{0, 1, 0}));
+        QCOMPARE(formOf("basis-n-not-normalised-in-dot")[1], (Row{0, h, -h}));
+        QCOMPARE(formOf("basis-n-not-normalised-in-scale")[1], (Row{0, h, -h}));
+        QCOMPARE(formOf("basis-n-not-normalised")[1], (Row{0, t, -3 * t}));
+        QCOMPARE(formOf("basis-n-not-normalised")[2], (Row{0, 0, 2}));
+        QCOMPARE(formOf("basis-n-normalised-after")[2], (Row{0, 0, 1}));
+        QCOMPARE(formOf("basis-n-answered-raw")[1], (Row{0, 1, 0}));
+        QCOMPARE(formOf("basis-n-answered-raw")[2], (Row{0, 0, 2}));
+    }
+
+    // The scan's rules by hand, on the triangle (1, 0) (6, 0) (3, 4) of an 8x8 screen. Row 1's
+    // edges cross at x = 1.5 and 5.25, row 2's at 2 and 4.5, row 0 runs from 1 to 6.
+    void scanRulesByHand() {
+        const std::vector<Row> triangle = {{1, 0, 6, 0, 3, 4}};
+        const auto rowsOf = [&](const char* id) {
+            Mistakes applied;
+            for (const StageMistake& m : scanCatalogue())
+                if (id && m.id == id) applied.push_back(m);
+            std::map<double, std::pair<double, double>> rows;
+            for (const Row& r : scanAnswer(triangle, 8, 8, applied)) rows[r[1]] = {r[2], r[3]};
+            return rows;
+        };
+        using Span = std::pair<double, double>;
+        const auto lecture = rowsOf(nullptr);
+        QCOMPARE(lecture.at(0), Span(1, 6));
+        QCOMPARE(lecture.at(1), Span(2, 5));
+        QCOMPARE(lecture.at(2), Span(2, 4));
+        QCOMPARE(lecture.at(4), Span(3, 3));
+        // From floor(1.5) = 1, floor(5.25 - 1.5) + 1 = 4 pixels.
+        QCOMPARE(rowsOf("span-unit-steps-from-left-x").at(1), Span(1, 4));
+        QCOMPARE(rowsOf("span-start-truncated").at(1), Span(1, 5));
+        QCOMPARE(rowsOf("span-start-rounded").at(1), Span(2, 5));
+        QCOMPARE(rowsOf("span-start-open").at(2), Span(3, 4));
+        QCOMPARE(rowsOf("span-start-open").at(1), Span(2, 5));
+        QCOMPARE(rowsOf("span-end-open").at(0), Span(1, 5));
+        QCOMPARE(rowsOf("span-end-dropped").at(1), Span(2, 4));
+        QCOMPARE(rowsOf("last-row-out").count(4), std::size_t(0));
+        QCOMPARE(rowsOf("edges-strict").count(0), std::size_t(0));  // the bottom edge is row 0
+    }
+
+    // The frame the stages' formulas make with no mistake is the lecture's, to within a byte on
+    // all but a few pixels of each default scene (the lecture's colours are floats, the
+    // stages' doubles), so that the frame's findings start from the lecture's image.
+    void stagesFrameIsTheLecturesFrame() {
+        for (const CheckScene& s : scenes()) {
+            const auto check = StageCheck::make(s.scene);
+            QVERIFY(check);
+            const rl::Rgba8Image ours = (*check)->ourImage();
+            const rl::Rgba8Image stages = (*check)->stagesFrame({});
+            QCOMPARE(stages.width, ours.width);
+            std::size_t apart = 0, covered = 0;
+            for (int y = 0; y < ours.height; ++y)
+                for (int x = 0; x < ours.width; ++x) {
+                    int most = 0;
+                    for (int k = 0; k < 3; ++k)
+                        most = std::max(most, std::abs(int(ours.pixel(x, y)[k]) -
+                                                       int(stages.pixel(x, y)[k])));
+                    apart += most > 1 ? 1 : 0;
+                    covered += ours.pixel(x, y)[0] + ours.pixel(x, y)[1] + ours.pixel(x, y)[2] > 0;
+                }
+            qInfo("%s: %zu of %zu covered pixels more than 1 apart", s.name.c_str(), apart, covered);
+            QVERIFY(covered > 100);
+            QVERIFY2(apart * 1000 <= covered, s.name.c_str());
+        }
     }
 
     // Several mistakes in one stage are each named, with what they explain; the Markdown and

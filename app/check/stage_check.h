@@ -98,6 +98,8 @@ public:
                              const std::vector<StageResult>& earlier = {}) const;
     // Our image of the scene (the frame stage's answer), and theirs from a frame answer.
     const rl::Rgba8Image& ourImage() const;
+    // The frame the stages' own formulas make with these mistakes (stage_frame.h).
+    rl::Rgba8Image stagesFrame(const std::map<Stage, std::vector<StageMistake>>& applied) const;
     static rl::Rgba8Image theirImage(const std::vector<Record>& answer);
 
     struct Inputs;  // what the requests carry: ours, or a chained run's

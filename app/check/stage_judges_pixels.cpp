@@ -492,6 +492,10 @@ FrameScene StageCheck::Data::frameScene() const {
     return s;
 }
 
+rl::Rgba8Image StageCheck::stagesFrame(const std::map<Stage, Mistakes>& applied) const {
+    return modelFrame(m_data->frameScene(), applied);
+}
+
 StageResult StageCheck::judgeFrame(const std::vector<Record>& answer,
                                    const std::vector<StageResult>& earlier) const {
     const rl::Rgba8Image& ours = m_data->frame.image;

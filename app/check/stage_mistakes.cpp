@@ -47,7 +47,18 @@ StageMistake mistake(int code, const char* id, const char* cause, unsigned group
 
 namespace {
 
-enum BasisCode { UReversed = 1, NNever, NAfter, NRawInCross, VAtLength, NoGramSchmidt, InFloat };
+enum BasisCode {
+    UReversed = 1,
+    NNever,
+    NAfter,
+    NRawInCross,
+    NRawInDot,
+    NRawInScale,
+    NRawAnswered,
+    VAtLength,
+    NoGramSchmidt,
+    InFloat,
+};
 constexpr unsigned kNForms = 1u;
 
 // The basis in the precision T, with the mistakes' steps.
@@ -60,10 +71,12 @@ std::vector<Row> basisIn(const dvec3& nGiven, const dvec3& vGiven, const Mistake
     };
     const V3 nRaw(nGiven), vRaw(vGiven);
     const V3 nUnit = unit(nRaw);
-    const V3 nForV = has(a, NNever) || has(a, NAfter) ? nRaw : nUnit;
-    V3 v = has(a, NoGramSchmidt) ? vRaw : vRaw - glm::dot(vRaw, nForV) * nForV;
+    const bool rawForV = has(a, NNever) || has(a, NAfter);
+    const V3 nInDot = rawForV || has(a, NRawInDot) ? nRaw : nUnit;
+    const V3 nInScale = rawForV || has(a, NRawInScale) ? nRaw : nUnit;
+    V3 v = has(a, NoGramSchmidt) ? vRaw : vRaw - glm::dot(vRaw, nInDot) * nInScale;
     if (!has(a, VAtLength)) v = unit(v);
-    const V3 nAnswer = has(a, NNever) ? nRaw : nUnit;
+    const V3 nAnswer = has(a, NNever) || has(a, NRawAnswered) ? nRaw : nUnit;
     const V3 nForU = has(a, NNever) || has(a, NRawInCross) ? nRaw : nUnit;
     const V3 u = has(a, UReversed) ? glm::cross(v, nForU) : glm::cross(nForU, v);
     return {rowOf(dvec3(u)), rowOf(dvec3(v)), rowOf(dvec3(nAnswer))};
@@ -79,6 +92,12 @@ Mistakes basisCatalogue() {
         mistake(NAfter, "basis-n-normalised-after", "N normalised only after V - (V.N)N", kNForms),
         mistake(NRawInCross, "basis-n-not-normalised-in-u",
                 "U = N x V with N not normalised (N normalised for V - (V.N)N only)", kNForms),
+        mistake(NRawInDot, "basis-n-not-normalised-in-dot",
+                "V - (V.N) N with the file's N in V.N and the unit N after it", kNForms),
+        mistake(NRawInScale, "basis-n-not-normalised-in-scale",
+                "V - (V.N) N with the unit N in V.N and the file's N after it", kNForms),
+        mistake(NRawAnswered, "basis-n-answered-raw",
+                "N answered as the file gives it, not normalised (the rest right)", kNForms),
         mistake(VAtLength, "basis-v-not-normalised", "V not normalised after V - (V.N)N"),
         mistake(NoGramSchmidt, "basis-no-gram-schmidt",
                 "V not made orthogonal to N (Gram-Schmidt left out)"),
