@@ -196,8 +196,9 @@ private slots:
         QFETCH(int, stage);
         QFETCH(QString, finding);
         QFETCH(int, scenes);
-        const CheckReport r =
-            check(student == "java" ? javaCommand(switches) : cCommand(switches));
+        // The stage and the frame, which starts from that stage's findings.
+        const CheckReport r = check(student == "java" ? javaCommand(switches) : cCommand(switches),
+                                    {Stage(stage), Stage::Frame});
         const Expected e{Stage(stage), finding.toStdString(), scenes};
         const int named = namedIn(r, e);
         QVERIFY2(named >= scenes, text(r).c_str());
