@@ -301,6 +301,17 @@ private slots:
                  qPrintable(run.out));
     }
 
+    // The sphere lesson opens in flat shading; the protocol's frame is seed 000's Phong, so a
+    // right program passes it whatever the lesson shows.
+    void theFrameIsPhongWhateverTheLessonShows() {
+        testing::CliRun run;
+        QVERIFY(testing::runCli({"check", "--program", python() + " stages.py", "--scene",
+                                 "sphere", "--size", "160x120", "--stages", "frame"},
+                                pythonFolder(), run));
+        QVERIFY2(run.exitCode == 0, qPrintable(run.out));
+        QVERIFY2(run.out.contains("frame      passed (19200 elements"), qPrintable(run.out));
+    }
+
     // One mutant of the Python example per known mistake: the stage and element where check
     // stops it, and the cause it names.
     void mutantsAreCaughtWhereTheyAre_data() {
