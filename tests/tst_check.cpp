@@ -587,6 +587,35 @@ private slots:
         QVERIFY(formatReport(r, "text").find("stderr| MemoryError") != std::string::npos);
     }
 
+    // A program that starts the protocol once, crashes, and then no longer starts: each
+    // stage after the crash breaks with the reason, and the run goes on to the end.
+    void aRestartThatFailsCostsItsStageAlone() {
+        QTemporaryDir dir;
+        QFile file(dir.filePath("once.sh"));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("if [ -e started ]; then echo 'no, not again'; exit 1; fi\n"
+                   "touch started; echo speaks 1; read line; read line; exit 3\n");
+        file.close();
+        CheckOptions options;
+        options.limits.sandbox = false;  // it keeps a file in its folder
+        options.stages = {Stage::Basis, Stage::View, Stage::Normals};
+        const CheckReport r =
+            runCheck("sh once.sh", dir.path().toStdString(), {scenes().front()}, options);
+        QVERIFY2(r.failure.empty(), r.failure.c_str());
+        const auto& stages = r.scenes.front().stages;
+        QCOMPARE(stages.size(), std::size_t(3));
+        for (const StageResult& st : stages) QCOMPARE(int(st.verdict), int(Verdict::Broken));
+        QVERIFY2(stages[0].problem.find("exit status 3") != std::string::npos,
+                 stages[0].problem.c_str());
+        for (std::size_t i = 1; i < 3; ++i) {
+            QCOMPARE(stages[i].problem,
+                     std::string("started again, the program did not start the protocol: "
+                                 "expected 'speaks 1' as its first line, found 'no, not again'"));
+            QCOMPARE(stages[i].standardError, std::vector<std::string>{"no, not again"});
+        }
+        QCOMPARE(r.restarts, 2);
+    }
+
     // A class of three: the example, one that hangs and one that floods; each gets its row,
     // and the two that misbehave cost their time limit and nothing more.
     void gradeWritesARowForEachSubmission() {

@@ -188,7 +188,10 @@ std::string markdown(const CheckReport& r) {
     out += "\nPer stage: " + stageCountsLine(r, "; ") + ".\n";
     for (const SceneReport& s : r.scenes)
         for (const StageResult& st : s.stages) {
-            if (st.verdict == Verdict::Passed) continue;
+            // A stage that passed is said only when it has something to say (a rule its
+            // values follow within the tolerance).
+            if (st.verdict == Verdict::Passed && st.findings.empty() && st.description.empty())
+                continue;
             out += "\n## " + s.name + ": " + std::string(stageName(st.stage)) + "\n\n" +
                    summary(st) + "\n";
             if (!st.findings.empty() || st.verdict == Verdict::Failed)

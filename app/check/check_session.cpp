@@ -56,16 +56,23 @@ public:
             m_report.protections = m_program->protections();
             m_report.missing = m_program->missingProtections();
         }
+        m_firstLines.clear();
         if (handshake()) return m_program.get();
-        // A program that cannot even say its version is not started again.
-        if (m_report.failure.empty()) {
-            m_report.failure = "the program did not start the protocol: " + m_handshakeError;
-            m_report.failureError = m_program->errorLines();
-            if (m_report.failureError.empty() && !m_firstLine.empty())
-                m_report.failureError = {m_firstLine};
-            m_report.failureHint =
-                memoryHintOf(m_report.failureError, m_options.limits.memoryBytes);
+        std::vector<std::string> lines = m_program->errorLines();
+        if (lines.empty()) lines = m_firstLines;  // a runtime may say why on its output
+        if (m_started > 1) {
+            // Started again after a break, it did not answer this time: this request breaks,
+            // and the next starts it again.
+            m_restartError = "started again, the program did not start the protocol: " +
+                             m_handshakeError;
+            m_restartLines = lines;
+            finish();
+            return nullptr;
         }
+        // A program that cannot even say its version the first time is not started again.
+        m_report.failure = "the program did not start the protocol: " + m_handshakeError;
+        m_report.failureError = lines;
+        m_report.failureHint = memoryHintOf(lines, m_options.limits.memoryBytes);
         m_dead = true;
         m_deadReason = "not asked: the program did not start the protocol";
         finish();
@@ -77,7 +84,11 @@ public:
     std::optional<std::vector<std::string>> ask(const Request& request, StageResult& problem) {
         StudentProgram* p = program();
         if (!p) {
-            problem.problem = m_deadReason;
+            problem.problem = m_dead ? m_deadReason : m_restartError;
+            if (!m_dead) {
+                problem.standardError = m_restartLines;
+                problem.hint = memoryHintOf(m_restartLines, m_options.limits.memoryBytes);
+            }
             return std::nullopt;
         }
         p->beginRequest();
@@ -128,12 +139,19 @@ private:
             return false;
         }
         const std::string t = trim(*line);
-        m_firstLine = t.substr(0, std::size_t(kErrorLineBytes));
         if (t.rfind("speaks ", 0) != 0) {
             m_handshakeError =
                 "expected 'speaks 1' as its first line, found '" + t.substr(0, 120) + "'";
-            // A runtime that cannot start says so on its standard output: the rest of it.
+            // A runtime that cannot start may say why on its standard output (a JVM does):
+            // what it wrote before it was stopped, a few lines.
+            m_firstLines.push_back(t.substr(0, std::size_t(kErrorLineBytes)));
             p.stop();
+            p.beginRequest();
+            for (int i = 1; i < kErrorLines; ++i) {
+                const auto more = p.readLine();
+                if (!more) break;
+                m_firstLines.push_back(more->substr(0, std::size_t(kErrorLineBytes)));
+            }
             return false;
         }
         const std::string version = trim(t.substr(7));
@@ -162,7 +180,8 @@ private:
     std::unique_ptr<StudentProgram> m_program;
     int m_started = 0;
     bool m_dead = false;
-    std::string m_deadReason, m_handshakeError, m_firstLine;
+    std::string m_deadReason, m_handshakeError, m_restartError;
+    std::vector<std::string> m_firstLines, m_restartLines;
     double m_spent = 0.0;
 };
 
@@ -251,8 +270,9 @@ CheckReport runCheck(const std::string& command, const std::string& folder,
             ++done;
             StageResult result;
             result.stage = stage;
+            const auto chained = options.chain ? (*check)->chainedInputs(answers) : nullptr;
             const auto lines = session.ask(
-                options.chain ? (*check)->chainedRequest(stage, answers) : (*check)->request(stage),
+                chained ? (*check)->chainedRequest(stage, *chained) : (*check)->request(stage),
                 result);
             if (stopped()) {
                 report.cancelled = true;
@@ -270,13 +290,16 @@ CheckReport runCheck(const std::string& command, const std::string& folder,
                     result.problem = records.error().toString();
                 } else {
                     result = options.chain
-                                 ? (*check)->judgeChained(stage, records.value(), answers, sr.stages)
+                                 ? (*check)->judgeChained(stage, records.value(), *chained,
+                                                          sr.stages)
                                  : (*check)->judge(stage, records.value(), sr.stages);
                     if (stage == Stage::Frame && result.verdict != Verdict::Broken)
                         sr.theirFrame = StageCheck::theirImage(records.value());
                     if (stage == Stage::Scan && result.verdict != Verdict::Broken)
                         sr.theirSpans = records.value()[0].rows;
-                    answers[stage] = std::move(records.value());
+                    // An answer the judge could not read as one is not sent on.
+                    if (result.verdict != Verdict::Broken)
+                        answers[stage] = std::move(records.value());
                 }
             }
             sr.stages.push_back(std::move(result));

@@ -23,14 +23,6 @@ namespace {
 
 constexpr std::size_t kMostSamples = 400;  // vertices lit by the lighting request, each twice
 
-Row rowOf(const dvec3& v) {
-    return {v.x, v.y, v.z};
-}
-
-Row rowOf(const vec3& v) {
-    return {double(v.x), double(v.y), double(v.z)};
-}
-
 // Why the protocol cannot carry a scene, or nothing.
 std::optional<std::string> notCarried(const rl::Scene& scene) {
     if (!scene.camera) return "the scene has no course camera (C, N, V, d, hx, hy)";
@@ -51,6 +43,8 @@ std::optional<std::string> notCarried(const rl::Scene& scene) {
     if (!(scene.rules == rl::RasterRules::course()))
         return "the protocol is seed 000's: use the course's rules (--rules course)";
     const rl::Draw& d = scene.draws[0];
+    if (d.mesh && d.mesh->triangles.size() >= (std::size_t(1) << 22))
+        return "the protocol carries at most 4,194,303 triangles";
     if (d.worldFromModel != rl::dmat4(1.0) || d.animation || !d.clipPlanes.empty() || d.cull ||
         !d.mesh->normals.empty() || !d.mesh->colours.empty())
         return "the object has more than seed 000's file gives (a transform, normals, colours, "
@@ -152,6 +146,19 @@ void computeSamples(StageCheck::Data& data) {
     }
 }
 
+// Two frames alike to a byte on all but 0.1% of their pixels.
+bool framesAgree(const rl::Rgba8Image& a, const rl::Rgba8Image& b) {
+    std::size_t apart = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x)
+            for (int k = 0; k < 3; ++k)
+                if (std::abs(int(a.pixel(x, y)[k]) - int(b.pixel(x, y)[k])) > 1) {
+                    ++apart;
+                    break;
+                }
+    return apart * 1000 <= std::size_t(a.width) * std::size_t(a.height);
+}
+
 // The basis, view coordinates and screen vertices of our inputs (the fragments and samples
 // are made with them, by computeFragments and computeSamples).
 void addOurGeometry(StageCheck::Data& d) {
@@ -233,6 +240,7 @@ rl::Result<std::shared_ptr<const StageCheck>> StageCheck::make(
     auto frame = rl::renderOurFrame(scene);
     if (!frame) return frame.error();
     data->frame = std::move(frame.value());
+    data->stagesFrameTrusted = framesAgree(modelFrame(data->frameScene(), {}), data->frame.image);
     return std::shared_ptr<const StageCheck>(std::make_shared<StageCheck>(std::move(data)));
 }
 
@@ -253,13 +261,16 @@ std::vector<Fragment> fragmentsOfSpans(std::vector<Row> spans, const rl::Scene& 
                                        const std::vector<bool>& oursToo) {
     std::sort(spans.begin(), spans.end());
     std::vector<Fragment> out;
-    for (const Row& s : spans) {
-        // Spans that are not whole pixels on a screen of sensible size are theirs to explain
-        // (the scan stage's judge does); no fragment is made of them.
-        const auto whole = [](double v) { return v == std::floor(v) && std::abs(v) <= 1e9; };
-        if (!(s[0] >= 0 && s[0] < double(projection.triangles.size())) || !whole(s[1]) ||
-            !whole(s[2]) || !whole(s[3]) || s[3] - s[2] > 1e6)
+    const double width = double(scene.width), height = double(scene.height);
+    for (Row s : spans) {
+        // Spans that are not whole pixels are theirs to explain (the scan stage's judge does);
+        // no fragment is made of them, nor of a pixel off the screen (the protocol sends none).
+        if (!whole(s[0], 0, double(projection.triangles.size()) - 1) ||
+            !whole(s[1], 0, height - 1) || !whole(s[2], -kFarthest, kFarthest) ||
+            !whole(s[3], -kFarthest, kFarthest))
             continue;
+        s[2] = std::max(s[2], 0.0);
+        s[3] = std::min(s[3], width - 1);
         const auto t = std::uint32_t(s[0]);
         const auto& v = projection.triangles[t].v;
         const Row &a = screen[v[0]], &b = screen[v[1]], &c = screen[v[2]];
@@ -287,9 +298,10 @@ std::vector<Fragment> fragmentsOfSpans(std::vector<Row> spans, const rl::Scene& 
 
 }  // namespace
 
-StageCheck::Inputs StageCheck::chainedInputs(const Answers& theirs) const {
+std::shared_ptr<const StageCheck::Inputs> StageCheck::chainedInputs(const Answers& theirs) const {
     const Data& d = *m_data;
-    Inputs in = d.ours;
+    auto made = std::make_shared<Inputs>(d.ours);
+    Inputs& in = *made;
     const auto answer = [&](Stage stage) -> const std::vector<Record>* {
         const auto it = theirs.find(stage);
         if (it == theirs.end()) return nullptr;
@@ -331,15 +343,15 @@ StageCheck::Inputs StageCheck::chainedInputs(const Answers& theirs) const {
             s.n = (s.reversed ? -1.0f : 1.0f) * vec3(toFloat(n[0]), toFloat(n[1]), toFloat(n[2]));
         }
     }
-    return in;
+    return made;
 }
 
 Request StageCheck::request(Stage stage) const {
     return request(stage, m_data->ours);
 }
 
-Request StageCheck::chainedRequest(Stage stage, const Answers& theirs) const {
-    return request(stage, chainedInputs(theirs));
+Request StageCheck::chainedRequest(Stage stage, const Inputs& in) const {
+    return request(stage, in);
 }
 
 Request StageCheck::request(Stage stage, const Inputs& in) const {
@@ -446,9 +458,9 @@ StageResult StageCheck::judge(Stage stage, const std::vector<Record>& answer,
 }
 
 StageResult StageCheck::judgeChained(Stage stage, const std::vector<Record>& answer,
-                                     const Answers& theirs,
+                                     const Inputs& in,
                                      const std::vector<StageResult>& earlier) const {
-    return judge(stage, answer, chainedInputs(theirs), earlier);
+    return judge(stage, answer, in, earlier);
 }
 
 StageResult StageCheck::judge(Stage stage, const std::vector<Record>& answer, const Inputs& in,

@@ -87,14 +87,17 @@ public:
     // their screen vertices for the scan, their spans for the z-buffer's fragments, their
     // positions and normals for the lighting's samples), ours where they gave none.
     using Answers = std::map<Stage, std::vector<Record>>;
-    Request chainedRequest(Stage stage, const Answers& theirs) const;
+    struct Inputs;  // what the requests carry: ours, or a chained run's
+    // A chained run's inputs, made once a stage for its request and its judge.
+    std::shared_ptr<const Inputs> chainedInputs(const Answers& theirs) const;
+    Request chainedRequest(Stage stage, const Inputs& in) const;
     // Their answer (records as parsed) to our request held to ours; `earlier` the scene's
     // results of the stages asked before (the frame's diagnosis starts from their findings).
     StageResult judge(Stage stage, const std::vector<Record>& answer,
                       const std::vector<StageResult>& earlier = {}) const;
-    // Their answer to a chained request (made from `theirs`), held to the lecture's stage
+    // Their answer to a chained request (made from those inputs), held to the lecture's stage
     // applied to exactly what was sent.
-    StageResult judgeChained(Stage stage, const std::vector<Record>& answer, const Answers& theirs,
+    StageResult judgeChained(Stage stage, const std::vector<Record>& answer, const Inputs& in,
                              const std::vector<StageResult>& earlier = {}) const;
     // Our image of the scene (the frame stage's answer), and theirs from a frame answer.
     const rl::Rgba8Image& ourImage() const;
@@ -102,13 +105,11 @@ public:
     rl::Rgba8Image stagesFrame(const std::map<Stage, std::vector<StageMistake>>& applied) const;
     static rl::Rgba8Image theirImage(const std::vector<Record>& answer);
 
-    struct Inputs;  // what the requests carry: ours, or a chained run's
     struct Data;
     explicit StageCheck(std::unique_ptr<Data> data);
     ~StageCheck();
 
 private:
-    Inputs chainedInputs(const Answers& theirs) const;
     Request request(Stage stage, const Inputs& in) const;
     StageResult judge(Stage stage, const std::vector<Record>& answer, const Inputs& in,
                       const std::vector<StageResult>& earlier) const;
@@ -121,6 +122,8 @@ private:
     StageResult judgeLighting(const std::vector<Record>& answer, const Inputs& in) const;
     StageResult judgeFrame(const std::vector<Record>& answer,
                            const std::vector<StageResult>& earlier) const;
+    bool compareFrame(const rl::Rgba8Image& theirs, const std::vector<StageResult>& earlier,
+                      StageResult& result) const;
 
     std::unique_ptr<Data> m_data;
 };

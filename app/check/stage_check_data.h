@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -49,6 +50,9 @@ struct StageCheck::Data {
     std::vector<Row> colours;  // ours for the samples, clamped
     rl::OurFrame frame;        // our render, for the frame stage and compare
     Lighting lighting;         // the scene's, in view coordinates
+    // The stages' formulas with no mistake give our frame (to a byte on all but 0.1% of it):
+    // the frame's findings may start from the stages' (stage_frame.h).
+    bool stagesFrameTrusted = false;
 
     const rl::Mesh& mesh() const { return *draw->mesh; }
     const rl::CourseCamera& camera() const { return *scene->camera; }
@@ -60,6 +64,13 @@ struct StageCheck::Data {
     // What the frame request carries, for the stages' own frame (stage_frame.h).
     FrameScene frameScene() const;
 };
+
+// How far off the screen an answer may list a pixel (as a span or a z-buffer's pixel), and
+// a number of a pixel's answer: whole and within those bounds.
+inline constexpr double kFarthest = 1000000;
+inline bool whole(double v, double low, double high) {
+    return v == std::floor(v) && v >= low && v <= high;
+}
 
 // A stage's findings and what stays unexplained, from the search's explanation.
 inline void takeExplanation(StageResult& result, const Explanation& e) {

@@ -14,16 +14,14 @@ using rl::formatNumber;
 
 namespace {
 
-dvec3 vecOf(const Row& r) {
-    return {r[0], r[1], r[2]};
-}
-
 std::string plural(std::size_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-// "+1 on 12, -1 on 3": the most common non-zero offsets of a histogram, largest first.
-std::string offsets(const std::map<long long, std::size_t>& histogram, const char* unit) {
+// "on 12 rows 1 pixel right, on 3 rows 1 pixel left": the most common non-zero offsets of a
+// histogram, largest first; `unit` and `units` name what is counted.
+std::string offsets(const std::map<long long, std::size_t>& histogram, const char* unit,
+                    const char* units) {
     std::vector<std::pair<std::size_t, long long>> order;
     for (const auto& [offset, count] : histogram)
         if (offset != 0) order.push_back({count, offset});
@@ -32,7 +30,7 @@ std::string offsets(const std::map<long long, std::size_t>& histogram, const cha
     for (std::size_t i = 0; i < order.size() && i < 3; ++i) {
         const long long k = order[i].second;
         if (i) out += ", ";
-        out += "on " + plural(order[i].first, unit, (std::string(unit) + "s").c_str()) + " " +
+        out += "on " + plural(order[i].first, unit, units) + " " +
                std::to_string(std::abs(k)) + (std::abs(k) == 1 ? " pixel " : " pixels ") +
                (k < 0 ? "left" : "right");
     }
@@ -127,7 +125,7 @@ std::vector<std::string> describeScreen(const std::vector<Row>& theirs,
     else
         out.push_back("their coordinates are whole on all " + plural(n, "vertex", "vertices") +
                       " left");
-    const std::string x = offsets(dx, "vertex"), y = offsets(dy, "vertex");
+    const std::string x = offsets(dx, "vertex", "vertices"), y = offsets(dy, "vertex", "vertices");
     if (!x.empty()) out.push_back("x: " + x);
     if (!y.empty()) {
         std::string line = "y: " + y;
@@ -210,7 +208,7 @@ std::vector<std::string> describeSpans(const std::vector<Row>& theirs,
     }
     for (const auto& [key, span] : b) onlyOurs += a.count(key) ? 0 : 1;
     std::vector<std::string> out;
-    const std::string s = offsets(starts, "row"), f = offsets(finishes, "row");
+    const std::string s = offsets(starts, "row", "rows"), f = offsets(finishes, "row", "rows");
     if (!s.empty()) out.push_back("their spans start " + s + " of ours");
     if (!f.empty()) out.push_back("their spans end " + f + " of ours");
     if (onlyTheirs)

@@ -1,6 +1,7 @@
 #include "app/check/stage_findings.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <iterator>
 #include <set>
 #include <tuple>
@@ -12,12 +13,6 @@ namespace rasterlab::check {
 namespace {
 
 constexpr std::size_t kExamples = 3;
-
-ElementKeys without(const ElementKeys& a, const ElementKeys& b) {
-    ElementKeys out;
-    std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
-    return out;
-}
 
 // A set of mistakes in the order they were applied, and the elements that differ with them.
 struct Hypothesis {
@@ -31,7 +26,11 @@ std::string keyOf(std::vector<StageMistake> applied) {
         return std::tie(a.code, a.value) < std::tie(b.code, b.value);
     });
     std::string key;
-    for (const StageMistake& m : applied) key += std::to_string(m.code) + ":" + std::to_string(m.value) + ";";
+    for (const StageMistake& m : applied) {
+        char text[48];
+        std::snprintf(text, sizeof text, "%d:%.17g;", m.code, m.value);
+        key += text;
+    }
     return key;
 }
 
@@ -89,6 +88,12 @@ Hypothesis search(const std::vector<StageMistake>& catalogue, const ElementKeys&
 }
 
 }  // namespace
+
+ElementKeys without(const ElementKeys& a, const ElementKeys& b) {
+    ElementKeys out;
+    std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
+    return out;
+}
 
 std::string causeWithValue(const StageMistake& mistake) {
     std::string cause = mistake.cause;

@@ -40,6 +40,9 @@ struct StageFinding {
 // The differing elements of an answer, each a key the stage makes (an index, a pixel), sorted.
 using ElementKeys = std::vector<std::uint64_t>;
 
+// The keys of a that are not in b (both sorted).
+ElementKeys without(const ElementKeys& a, const ElementKeys& b);
+
 struct Explanation {
     std::vector<StageFinding> findings;
     std::vector<StageMistake> applied;  // the same, as the catalogue's mistakes

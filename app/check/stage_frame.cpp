@@ -15,10 +15,6 @@ const Mistakes& of(const std::map<Stage, Mistakes>& applied, Stage stage) {
     return it == applied.end() ? none : it->second;
 }
 
-dvec3 vecOf(const Row& r) {
-    return {r[0], r[1], r[2]};
-}
-
 // Screen barycentrics of the sample (x, y) in the triangle t of the screen rows.
 std::array<double, 3> weights(const std::vector<Row>& screen, const std::array<std::uint32_t, 3>& t,
                               double x, double y) {

@@ -17,18 +17,6 @@ using rl::vec3;
 
 namespace {
 
-Row rowOf(const dvec3& v) {
-    return {v.x, v.y, v.z};
-}
-
-Row rowOf(const vec3& v) {
-    return {double(v.x), double(v.y), double(v.z)};
-}
-
-dvec3 vecOf(const Row& r) {
-    return {r[0], r[1], r[2]};
-}
-
 // A number of the request as it was sent, every digit.
 std::string sent(double v) {
     return protocolNumber(v);
@@ -133,20 +121,31 @@ StageResult judgeRows(const RowsJudge& j, const std::vector<Row>& theirs) {
     return result;
 }
 
+// A value that is not a number (a mistake's pow of a negative base, an overflow) equals
+// nothing.
 Equal absoluteWithin(double tolerance) {
     return [tolerance](std::size_t, const Row& a, const Row& b, double& error) {
         error = 0.0;
-        for (std::size_t k = 0; k < a.size(); ++k) error = std::max(error, std::abs(a[k] - b[k]));
-        return error <= tolerance;
+        bool same = true;
+        for (std::size_t k = 0; k < a.size(); ++k) {
+            const double d = std::abs(a[k] - b[k]);
+            same = same && d <= tolerance;
+            if (!std::isnan(d)) error = std::max(error, d);
+        }
+        return same;
     };
 }
 
 // Relative to the size of the coordinate (at least 1).
 bool relativelyEqual(std::size_t, const Row& a, const Row& b, double& error) {
     error = 0.0;
-    for (std::size_t k = 0; k < a.size(); ++k)
-        error = std::max(error, std::abs(a[k] - b[k]) / std::max(1.0, std::abs(b[k])));
-    return error <= 1e-6;
+    bool same = true;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        const double d = std::abs(a[k] - b[k]) / std::max(1.0, std::abs(b[k]));
+        same = same && d <= 1e-6;
+        if (!std::isnan(d)) error = std::max(error, d);
+    }
+    return same;
 }
 
 StageResult broken(Stage stage, std::string problem) {
@@ -364,8 +363,15 @@ StageResult StageCheck::judgeProjection(const std::vector<Record>& answer, const
     };
     j.tolerance = "exact whole pixels (either side where x or y is within 1e-9 of a whole number)";
     j.exact = [](std::size_t, const Row& a, const Row& b, double& error) {
-        error = std::max(std::abs(a[0] - b[0]), std::abs(a[1] - b[1]));
-        return error == 0.0 || (b[0] != std::floor(b[0]) && error <= 1e-6 * std::max(1.0, std::abs(b[0])));
+        error = 0.0;
+        bool same = true;
+        for (std::size_t k = 0; k < 2; ++k) {
+            const double apart = std::abs(a[k] - b[k]);
+            error = std::max(error, apart);
+            same = same && (apart == 0.0 || (b[k] != std::floor(b[k]) &&
+                                             apart <= 1e-6 * std::max(1.0, std::abs(b[k]))));
+        }
+        return same;
     };
     j.catalogue = projectionCatalogue();
     j.answer = [cam, w, h, view](const Mistakes& a) {

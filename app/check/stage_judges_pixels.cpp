@@ -21,7 +21,6 @@ using rl::formatNumber;
 namespace {
 
 using Pixel = std::tuple<std::uint32_t, std::int32_t, std::int32_t>;  // triangle, y, x
-constexpr double kFarthest = 1000000;  // pixels an answer may list off the screen
 
 std::uint64_t keyOf(const Pixel& p) {
     const auto& [t, y, x] = p;
@@ -34,10 +33,6 @@ Pixel pixelOf(std::uint64_t key) {
             std::int32_t(key & 0x1fffff) - (1 << 20)};
 }
 
-bool whole(double v, double low, double high) {
-    return v == std::floor(v) && v >= low && v <= high;
-}
-
 std::string rowText(const Row& r) {
     std::string s;
     for (std::size_t i = 0; i < r.size(); ++i) {
@@ -47,9 +42,10 @@ std::string rowText(const Row& r) {
     return s;
 }
 
-// The pixels of spans t y first last, as keys; an error names the first span that is not one.
+// The pixels of spans t y first last, as sorted keys; an error names the first span that is
+// not one, or says that they list more pixels than `most`.
 std::optional<std::string> pixelsOf(const std::vector<Row>& spans, std::size_t triangles, int width,
-                                    ElementKeys& pixels) {
+                                    std::size_t most, ElementKeys& pixels) {
     for (std::size_t k = 0; k < spans.size(); ++k) {
         const Row& s = spans[k];
         if (!whole(s[0], 0, double(triangles) - 1) || !whole(s[1], -kFarthest, kFarthest) ||
@@ -58,8 +54,11 @@ std::optional<std::string> pixelsOf(const std::vector<Row>& spans, std::size_t t
                    ") is not 't y first last' with whole numbers within 1000000 pixels of the "
                    "screen and t one of the " +
                    std::to_string(triangles) + " triangles";
-        if (s[3] - s[2] > double(width))
+        if (s[3] - s[2] >= double(width))
             return "span " + std::to_string(k) + " (" + rowText(s) + ") is wider than the screen";
+        if (pixels.size() + std::size_t(std::max(0.0, s[3] - s[2] + 1)) > most)
+            return "their spans list more than " + std::to_string(most) +
+                   " pixels, 64 times the screen";
         for (double x = s[2]; x <= s[3]; ++x)
             pixels.push_back(keyOf({std::uint32_t(s[0]), std::int32_t(s[1]), std::int32_t(x)}));
     }
@@ -79,9 +78,15 @@ ElementKeys symmetricDifference(const ElementKeys& a, const ElementKeys& b) {
     return out;
 }
 
+// The pixels of spans the lecture or a mistake of its catalogue makes: whole, on the screen,
+// each once.
 ElementKeys spanPixels(const std::vector<Row>& spans) {
     ElementKeys out;
-    pixelsOf(spans, std::numeric_limits<std::uint32_t>::max(), 1 << 21, out);
+    for (const Row& s : spans)
+        for (double x = s[2]; x <= s[3]; ++x)
+            out.push_back(keyOf({std::uint32_t(s[0]), std::int32_t(s[1]), std::int32_t(x)}));
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
 }
 
@@ -109,7 +114,8 @@ StageResult StageCheck::judgeScan(const std::vector<Record>& answer, const Input
     ElementKeys theirs;
     StageResult result;
     result.stage = Stage::Scan;
-    if (auto bad = pixelsOf(answer[0].rows, triangles.size(), w, theirs)) {
+    if (auto bad = pixelsOf(answer[0].rows, triangles.size(), w,
+                            64 * std::size_t(w) * std::size_t(h), theirs)) {
         result.verdict = Verdict::Broken;
         result.problem = *bad;
         return result;
@@ -443,12 +449,6 @@ ElementKeys differingPixels(const rl::Rgba8Image& a, const rl::Rgba8Image& b) {
     return out;
 }
 
-ElementKeys without(const ElementKeys& a, const ElementKeys& b) {
-    ElementKeys out;
-    std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
-    return out;
-}
-
 // Each earlier stage's findings rendered into the frame in the pipeline's order, each with the
 // pixels it makes match given those before it; what stays differing in `left`.
 std::vector<StageFinding> stagesInFrame(const FrameScene& scene,
@@ -496,100 +496,109 @@ rl::Rgba8Image StageCheck::stagesFrame(const std::map<Stage, Mistakes>& applied)
     return modelFrame(m_data->frameScene(), applied);
 }
 
-StageResult StageCheck::judgeFrame(const std::vector<Record>& answer,
-                                   const std::vector<StageResult>& earlier) const {
-    const rl::Rgba8Image& ours = m_data->frame.image;
-    const Record& image = answer[0];
-    StageResult result;
-    result.stage = Stage::Frame;
-    const auto broken = [&](std::string problem) {
-        result.verdict = Verdict::Broken;
-        result.problem = std::move(problem);
-        return result;
-    };
+namespace {
+
+// Their frame answer as an image, or why it is not one of our size.
+std::optional<std::string> frameProblem(const Record& image, const rl::Rgba8Image& ours) {
     if (image.numbers[0] != ours.width || image.numbers[1] != ours.height)
-        return broken("their image is " + formatNumber(image.numbers[0]) + "x" +
-                      formatNumber(image.numbers[1]) + ", the request asked for " +
-                      std::to_string(ours.width) + "x" + std::to_string(ours.height));
+        return "their image is " + formatNumber(image.numbers[0]) + "x" +
+               formatNumber(image.numbers[1]) + ", the request asked for " +
+               std::to_string(ours.width) + "x" + std::to_string(ours.height);
     for (std::size_t y = 0; y < image.rows.size(); ++y)
         for (std::size_t i = 0; i < image.rows[y].size(); ++i)
             if (!whole(image.rows[y][i], 0, 255))
-                return broken("row " + std::to_string(y) + " of their image holds " +
-                              formatNumber(image.rows[y][i]) + " (number " + std::to_string(i + 1) +
-                              "), not a whole 0..255");
+                return "row " + std::to_string(y) + " of their image holds " +
+                       formatNumber(image.rows[y][i]) + " (number " + std::to_string(i + 1) +
+                       "), not a whole 0..255";
+    return std::nullopt;
+}
+
+// The largest difference in a channel, the pixels that differ as departures, and the first.
+void framePixels(const rl::Rgba8Image& theirs, const rl::Rgba8Image& ours,
+                 const ElementKeys& differing, StageResult& result) {
+    for (int y = 0; y < ours.height; ++y)
+        for (int x = 0; x < ours.width; ++x)
+            for (int k = 0; k < 3; ++k)
+                result.largestError =
+                    std::max(result.largestError,
+                             double(std::abs(int(theirs.pixel(x, y)[k]) - int(ours.pixel(x, y)[k]))));
+    const auto at = [&](std::uint64_t key) {
+        return rl::dvec2(double(key % std::uint64_t(ours.width)),
+                         double(key / std::uint64_t(ours.width)));
+    };
+    for (std::uint64_t k : differing) {
+        if (result.departures.size() >= kMostDepartures) break;
+        result.departures.push_back({Departure::Kind::Different, at(k), at(k)});
+    }
+    if (differing.empty()) return;
+    const rl::dvec2 p = at(differing.front());
+    const auto rgb = [&](const rl::Rgba8Image& image) {
+        const std::uint8_t* c = image.pixel(int(p.x), int(p.y));
+        return std::to_string(c[0]) + " " + std::to_string(c[1]) + " " + std::to_string(c[2]);
+    };
+    result.first = Divergence{"pixel (" + formatNumber(p.x) + ", " + formatNumber(p.y) + ")",
+                              rgb(theirs), rgb(ours), "the lecture's render of the whole frame"};
+}
+
+}  // namespace
+
+// compare's diagnosis of their frame, starting from the stages' findings it can render and
+// never naming a mistake a stage rules out: taken when it leaves fewer pixels unexplained.
+bool StageCheck::compareFrame(const rl::Rgba8Image& theirs, const std::vector<StageResult>& earlier,
+                              StageResult& result) const {
+    const FrameMistakes stages = frameMistakes(earlier);
+    rl::CompareOptions options;
+    options.tolerance = 1;
+    options.given = stages.given;
+    options.excluded = stages.excluded;
+    auto comparison = rl::compareWithOurs(m_data->frame, theirs, options);
+    if (!comparison || comparison->unexplainedPixels >= result.unexplained) return false;
+    result.findings.clear();
+    for (const rl::Finding& f : comparison->diagnosis)
+        result.findings.push_back({rl::mistakeId(f.mistake),
+                                   f.title.english() + (f.given ? " (found by the stages)" : ""),
+                                   f.explained, f.spoiled, f.share, {}, f.slip.amount});
+    result.unexplained = comparison->unexplainedPixels;
+    if (!result.findings.empty() && comparison->mostlyUnexplained())
+        result.description.push_back("most of the difference stays unexplained (" +
+                                     formatNumber(100.0 * comparison->unexplained) + "%)");
+    return true;
+}
+
+StageResult StageCheck::judgeFrame(const std::vector<Record>& answer,
+                                   const std::vector<StageResult>& earlier) const {
+    const rl::Rgba8Image& ours = m_data->frame.image;
+    StageResult result;
+    result.stage = Stage::Frame;
+    if (auto problem = frameProblem(answer[0], ours)) {
+        result.verdict = Verdict::Broken;
+        result.problem = *problem;
+        return result;
+    }
     const rl::Rgba8Image theirs = theirImage(answer);
     result.tolerance =
         "1 in each channel (the lecture's colours are floats: a byte may fall the other side of a "
         "whole number)";
     result.elements = std::size_t(ours.width) * std::size_t(ours.height);
-    ElementKeys left = differingPixels(theirs, ours);
-    for (int y = 0; y < ours.height; ++y)
-        for (int x = 0; x < ours.width; ++x)
-            result.largestError = std::max(
-                result.largestError,
-                double(std::max({std::abs(int(theirs.pixel(x, y)[0]) - int(ours.pixel(x, y)[0])),
-                                 std::abs(int(theirs.pixel(x, y)[1]) - int(ours.pixel(x, y)[1])),
-                                 std::abs(int(theirs.pixel(x, y)[2]) - int(ours.pixel(x, y)[2]))})));
-    const auto blackOf = [&](const ElementKeys& keys) {
-        std::size_t n = 0;
-        for (std::uint64_t k : keys) {
-            const int x = int(k % std::uint64_t(ours.width)), y = int(k / std::uint64_t(ours.width));
-            const std::uint8_t* a = theirs.pixel(x, y);
-            n += a[0] == 0 && a[1] == 0 && a[2] == 0 && m_data->frame.covered(x, y) ? 1 : 0;
-        }
-        return n;
-    };
-    const ElementKeys all = left;
+    const ElementKeys differing = differingPixels(theirs, ours);
+    framePixels(theirs, ours, differing, result);
+    result.differing = differing.size();
+    if (differing.empty()) return result;
+    result.verdict = Verdict::Failed;
+    // The stages' own findings first, rendered into the frame by their answers' formulas;
+    // then, when they leave much unexplained, compare's diagnosis.
+    ElementKeys left = differing;
+    if (m_data->stagesFrameTrusted)
+        result.findings = stagesInFrame(m_data->frameScene(), earlier, theirs, left);
+    result.unexplained = left.size();
+    if ((result.findings.empty() || result.unexplained * 5 > result.differing) &&
+        compareFrame(theirs, earlier, result))
+        left = result.unexplained ? differing : ElementKeys();
+    std::size_t black = 0;
     for (std::uint64_t k : left) {
         const int x = int(k % std::uint64_t(ours.width)), y = int(k / std::uint64_t(ours.width));
-        if (result.departures.size() < kMostDepartures)
-            result.departures.push_back(
-                {Departure::Kind::Different, rl::dvec2(x, y), rl::dvec2(x, y)});
-    }
-    result.differing = left.size();
-    if (left.empty()) return result;
-    result.verdict = Verdict::Failed;
-    {
-        const int x = int(left.front() % std::uint64_t(ours.width));
-        const int y = int(left.front() / std::uint64_t(ours.width));
-        const auto rgb = [](const std::uint8_t* p) {
-            return std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]);
-        };
-        result.first = Divergence{"pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")",
-                                  rgb(theirs.pixel(x, y)), rgb(ours.pixel(x, y)),
-                                  "the lecture's render of the whole frame"};
-    }
-    // The stages' own findings first, rendered into the frame by their answers' formulas,
-    // when with no finding those formulas give our frame (to a byte on all but 0.1%).
-    const FrameScene scene = m_data->frameScene();
-    if (differingPixels(modelFrame(scene, {}), ours).size() * 1000 <= result.elements)
-        result.findings = stagesInFrame(scene, earlier, theirs, left);
-    result.unexplained = left.size();
-    std::size_t black = blackOf(left);
-    // Then, when they leave much unexplained, compare's diagnosis, which starts from the
-    // stages' findings it can render and never names a mistake a stage rules out: kept when
-    // it explains more.
-    if (result.findings.empty() || result.unexplained * 5 > result.differing) {
-        const FrameMistakes stages = frameMistakes(earlier);
-        rl::CompareOptions options;
-        options.tolerance = 1;
-        options.given = stages.given;
-        options.excluded = stages.excluded;
-        auto comparison = rl::compareWithOurs(m_data->frame, theirs, options);
-        if (comparison && comparison->unexplainedPixels < result.unexplained) {
-            result.findings.clear();
-            for (const rl::Finding& f : comparison->diagnosis)
-                result.findings.push_back(
-                    {rl::mistakeId(f.mistake),
-                     f.title.english() + (f.given ? " (found by the stages)" : ""), f.explained,
-                     f.spoiled, f.share, {}, f.slip.amount});
-            result.unexplained = comparison->unexplainedPixels;
-            black = result.unexplained ? blackOf(all) : 0;
-            if (!result.findings.empty() && comparison->mostlyUnexplained())
-                result.description.push_back("most of the difference stays unexplained (" +
-                                             formatNumber(100.0 * comparison->unexplained) +
-                                             "%)");
-        }
+        const std::uint8_t* a = theirs.pixel(x, y);
+        black += a[0] == 0 && a[1] == 0 && a[2] == 0 && m_data->frame.covered(x, y) ? 1 : 0;
     }
     if (black)
         result.description.push_back(

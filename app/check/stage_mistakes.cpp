@@ -17,14 +17,6 @@ dvec3 normalised(const dvec3& v) {
     return length > 0.0 ? v / length : dvec3(0.0);
 }
 
-Row rowOf(const dvec3& v) {
-    return {v.x, v.y, v.z};
-}
-
-dvec3 vecOf(const Row& r) {
-    return {r[0], r[1], r[2]};
-}
-
 const StageMistake* find(const Mistakes& applied, int code) {
     for (const StageMistake& m : applied)
         if (m.code == code) return &m;
@@ -186,7 +178,7 @@ Mistakes viewCatalogue() {
                 "the light moved in place: q = Pl - C, then q.x = U.q overwritten before V.q and "
                 "N.q read it",
                 kLightGroup),
-        mistake(LightInPlaceOnP, "light-in-place",
+        mistake(LightInPlaceOnP, "light-in-place-on-p",
                 "the light moved in place: Pl.x = U.(Pl - C) overwritten before V.(Pl - C) and "
                 "N.(Pl - C) read it",
                 kLightGroup),
@@ -200,7 +192,7 @@ Mistakes viewCatalogue() {
                 "each vertex moved in place: q = P - C, then q.x = U.q overwritten before V.q and "
                 "N.q read it",
                 kVertexGroup),
-        mistake(VerticesInPlaceOnP, "vertices-in-place",
+        mistake(VerticesInPlaceOnP, "vertices-in-place-on-p",
                 "each vertex moved in place: P.x = U.(P - C) overwritten before V.(P - C) and "
                 "N.(P - C) read it",
                 kVertexGroup),
@@ -230,7 +222,7 @@ enum NormalsCode {
     FrontFacingByZ,
 };
 constexpr unsigned kFinish = 1u, kFilter = 2u;
-constexpr std::size_t kMostAreas = 64;
+constexpr std::size_t kMostAreas = 32;
 
 double screenArea(const std::vector<Row>& screen, const std::array<std::uint32_t, 3>& t) {
     const Row &a = screen[t[0]], &b = screen[t[1]], &c = screen[t[2]];
@@ -266,7 +258,7 @@ Mistakes normalsCatalogue(const std::vector<Row>& screen,
         mistake(FrontFacingOnly, "vertex-normals-front-faces",
                 "the vertex normals sum only the triangles facing the camera (N.(-Pa) > 0)",
                 kFilter),
-        mistake(FrontFacingByZ, "vertex-normals-front-faces",
+        mistake(FrontFacingByZ, "vertex-normals-front-faces-by-z",
                 "the vertex normals sum only the triangles whose normal has z < 0", kFilter),
     };
     if (!screen.empty()) {
@@ -300,7 +292,7 @@ std::vector<Row> normalsAnswer(const std::vector<Row>& vertices,
         if (has(applied, Crossed)) cross = -cross;
         const dvec3 unit = normalised(cross);
         rows.push_back(rowOf(has(applied, TrianglesRaw) ? cross : unit));
-        if (!summed(applied, screen, t, a, has(applied, Crossed) ? -cross : cross)) continue;
+        if (!summed(applied, screen, t, a, cross)) continue;  // facing by their own normal
         for (std::uint32_t i : t) {
             sum[i] += has(applied, SumRaw) ? cross : unit;
             ++count[i];
@@ -508,7 +500,7 @@ Mistakes scanCatalogue() {
                 "edges found as y = a x + b, each row's x as (y - b) / a in floating point (a = "
                 "dy/dx from each edge's first vertex): x a hair off a whole pixel",
                 kCrossing),
-        mistake(YaxbFromTop, "edges-y-ax-b",
+        mistake(YaxbFromTop, "edges-y-ax-b-from-top",
                 "edges found as y = a x + b from the top vertex, each row's x as (y - b) / a in "
                 "floating point: x a hair off a whole pixel",
                 kCrossing),
@@ -542,7 +534,10 @@ std::vector<Row> scanAnswer(const std::vector<Row>& triangles, int width, int he
             const auto x = crossings(v, y, method);
             if (!x) continue;
             if (has(applied, StrictEdges)) {
-                double a = std::ceil(x->first), b = std::floor(x->second);
+                // Within the screen's columns: the crossings of a student's own vertices (a
+                // chained run) may lie anywhere.
+                double a = std::max(0.0, std::ceil(x->first));
+                double b = std::min(double(width - 1), std::floor(x->second));
                 while (a <= b && !strictlyInside(v, area, a, y)) ++a;
                 while (b >= a && !strictlyInside(v, area, b, y)) --b;
                 addSpan(spans, double(t), y, a, b, width);

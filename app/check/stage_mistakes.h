@@ -20,6 +20,16 @@ namespace rasterlab::check {
 using Row = std::vector<double>;
 using Mistakes = std::vector<StageMistake>;
 
+inline Row rowOf(const rl::dvec3& v) {
+    return {v.x, v.y, v.z};
+}
+inline Row rowOf(const rl::vec3& v) {
+    return {double(v.x), double(v.y), double(v.z)};
+}
+inline rl::dvec3 vecOf(const Row& r) {
+    return {r[0], r[1], r[2]};
+}
+
 struct Fragment {
     std::uint32_t t = 0;
     std::int32_t x = 0, y = 0;

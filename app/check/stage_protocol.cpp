@@ -7,6 +7,8 @@ namespace rasterlab::check {
 
 namespace {
 
+constexpr int kWidest = 1 << 20;  // pixels of a frame's row, far beyond any screen
+
 constexpr std::array<std::string_view, 8> kNames = {"basis", "view",    "normals",  "projection",
                                                     "scan",  "zbuffer", "lighting", "frame"};
 
@@ -121,6 +123,10 @@ private:
         const double count = image ? record.numbers[1] : record.numbers[0];
         const double width = image ? 3.0 * record.numbers[0] : double(shape.rowWidth);
         const std::size_t left = m_lines.size() - m_next;
+        if (image && !(width >= 0 && width == std::floor(width) && width <= 3.0 * kWidest))
+            return error(line, fields[1].column,
+                         "expected a whole width from 0 to " + std::to_string(kWidest) +
+                             " pixels after 'image'");
         if (count < 0 || count != std::floor(count) ||
             (image && (width < 0 || width != std::floor(width))))
             return error(line, fields[1].column,

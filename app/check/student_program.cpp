@@ -287,7 +287,8 @@ std::vector<std::string> StudentProgram::arguments(const std::string& command,
         .push_back(m_limits.memoryBytes > 0
                        ? "memory: " + std::to_string(m_limits.memoryBytes >> 20) +
                              " MiB of data (heap and private mappings; the address space a "
-                             "runtime reserves is free)"
+                             "runtime reserves is free; a JVM is told the limit by "
+                             "JAVA_TOOL_OPTIONS)"
                        : std::string("memory: not limited"));
     m_protections.push_back("files written: " + std::to_string(m_limits.fileBytes >> 20) +
                             " MiB each; answers: " + std::to_string(m_limits.answerBytes >> 20) +
@@ -348,6 +349,11 @@ void StudentProgram::startProcess(const std::string& command, const std::string&
             env.emplace_back(*e);
     env.push_back("TMPDIR=" + m_tempFolder);
     env.push_back("HOME=" + m_tempFolder);
+    // A JVM sizes its heap by the machine's memory (its first commit 1/64 of it): told of the
+    // limit, it sizes it by that, and starts on a machine of any size.
+    if (m_limits.memoryBytes > 0 && !std::getenv("JAVA_TOOL_OPTIONS"))
+        env.push_back("JAVA_TOOL_OPTIONS=-XX:MaxRAM=" + std::to_string(m_limits.memoryBytes >> 20) +
+                      "m");
     std::vector<char*> envp;
     for (std::string& e : env) envp.push_back(e.data());
     envp.push_back(nullptr);

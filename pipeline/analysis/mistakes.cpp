@@ -538,7 +538,9 @@ public:
         std::vector<Slip> rendering;
         for (const Slip& slip : slips)
             if (changesTheRender(slip.mistake)) {
-                key += mistakeId(slip.mistake) + (" " + std::to_string(slip.amount)) + ";";
+                char amount[32];
+                std::snprintf(amount, sizeof amount, " %.17g;", slip.amount);
+                key += mistakeId(slip.mistake) + std::string(amount);
                 rendering.push_back(slip);
             }
         auto found = m_frames.find(key);
