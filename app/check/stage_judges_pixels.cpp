@@ -450,7 +450,8 @@ ElementKeys differingPixels(const rl::Rgba8Image& a, const rl::Rgba8Image& b) {
 }
 
 // Each earlier stage's findings rendered into the frame in the pipeline's order, each with the
-// pixels it makes match given those before it; what stays differing in `left`.
+// pixels it makes match given those before it (a stage's that make none match are left out);
+// what stays differing in `left`.
 std::vector<StageFinding> stagesInFrame(const FrameScene& scene,
                                         const std::vector<StageResult>& earlier,
                                         const rl::Rgba8Image& theirs, ElementKeys& left) {
@@ -467,8 +468,14 @@ std::vector<StageFinding> stagesInFrame(const FrameScene& scene,
         f.explained = without(left, now).size();
         f.spoiled = without(now, left).size();
         f.share = first > 0 ? (double(f.explained) - double(f.spoiled)) / first : 0.0;
+        // Findings that make no pixel match, net, are left out of the frame (a truncated term
+        // lands within the frame's byte of tolerance).
+        if (f.explained <= f.spoiled) {
+            applied.erase(r.stage);
+            continue;
+        }
         left = now;
-        if (f.explained || f.spoiled) out.push_back(std::move(f));
+        out.push_back(std::move(f));
     }
     return out;
 }
