@@ -16,6 +16,7 @@
 #include <set>
 
 #include "app/check/check_session.h"
+#include "app/check/stage_description.h"
 #include "app/check/stage_findings.h"
 #include "app/check/stage_mistakes.h"
 #include "app/check/student_program.h"
@@ -509,6 +510,46 @@ private slots:
             QVERIFY(covered > 100);
             QVERIFY2(apart * 1000 <= covered, s.name.c_str());
         }
+    }
+
+    // What stays unexplained, in numbers, by hand: spans that start a pixel left on two rows;
+    // screen coordinates a pixel right, a constant offset; colours off by 10 N.L in red.
+    void descriptionsInNumbers() {
+        const std::vector<std::string> spans =
+            describeSpans({{0, 0, 1, 5}, {0, 1, 1, 4}, {0, 2, 3, 3}}, {{0, 0, 2, 5}, {0, 1, 2, 4}});
+        QCOMPARE(spans, (std::vector<std::string>{
+                            "their spans start on 2 rows 1 pixel left of ours",
+                            "1 row of a triangle only they cover"}));
+        const std::vector<Row> ours = {{10, 20}, {30, 40}, {50, 60}};
+        const std::vector<Row> moved = {{11, 20}, {31, 40}, {51, 60}};
+        QCOMPARE(describeScreen(moved, ours, {0, 1, 2}),
+                 (std::vector<std::string>{"their coordinates are whole on all 3 vertices left",
+                                           "x: on 3 vertices 1 pixel right",
+                                           "a constant offset of (1, 0) pixels"}));
+        Lighting lighting;
+        lighting.light = rl::dvec3(0, 0, 0);
+        std::vector<Sample> samples;
+        std::vector<Row> best, theirs;
+        ElementKeys left;
+        for (int i = 0; i < 5; ++i) {
+            // The light at the eye, P' on the axis: N.L = N.V = n_z for N = (s, 0, -c).
+            const double c = 0.3 + 0.15 * i;
+            const rl::vec3 n(float(std::sqrt(1.0 - c * c)), 0.0f, float(-c));
+            samples.push_back({rl::vec3(0, 0, 5), n, std::nullopt, false});
+            const PhongTerms t = phongTerms(lighting, samples.back());
+            best.push_back({100, 100, 100});
+            theirs.push_back({100 + 10 * t.nDotL, 100, 100});
+            left.push_back(std::uint64_t(i));
+        }
+        const std::vector<std::string> colours =
+            describeColours(theirs, best, left, lighting, samples);
+        QCOMPARE(colours.size(), std::size_t(3));
+        QVERIFY2(colours[0].rfind("5 samples left: theirs minus ours is (6, 0, 0) on average", 0) ==
+                     0,
+                 colours[0].c_str());
+        QCOMPARE(colours[1], std::string("the difference follows N.L (correlation 1)"));
+        // R.V = 2 (N.L)^2 - 1 with the light at the eye: below 0 for N.L of 0.3, 0.45, 0.6.
+        QCOMPARE(colours[2], std::string("of them 0 samples have N.L < 0 and 3 have R.V < 0"));
     }
 
     // Several mistakes in one stage are each named, with what they explain; the Markdown and
