@@ -449,33 +449,51 @@ ElementKeys differingPixels(const rl::Rgba8Image& a, const rl::Rgba8Image& b) {
     return out;
 }
 
-// Each earlier stage's findings rendered into the frame in the pipeline's order, each with the
-// pixels it makes match given those before it (a stage's that make none match are left out);
-// what stays differing in `left`.
-std::vector<StageFinding> stagesInFrame(const FrameScene& scene,
-                                        const std::vector<StageResult>& earlier,
-                                        const rl::Rgba8Image& theirs, ElementKeys& left) {
+// The findings of these stages rendered into the frame in the pipeline's order, each with the
+// pixels it makes match given those before it; what stays differing in `left`.
+std::vector<StageFinding> renderedInOrder(const FrameScene& scene,
+                                          const std::vector<const StageResult*>& stages,
+                                          const rl::Rgba8Image& theirs, ElementKeys& left) {
     std::vector<StageFinding> out;
     const double first = double(left.size());
     std::map<Stage, Mistakes> applied;
-    for (const StageResult& r : earlier) {
-        if (r.applied.empty()) continue;
-        applied[r.stage] = r.applied;
+    for (const StageResult* r : stages) {
+        applied[r->stage] = r->applied;
         const ElementKeys now = differingPixels(theirs, modelFrame(scene, applied));
         StageFinding f;
-        f.id = "stage-" + std::string(stageName(r.stage));
-        f.cause = "the " + std::string(stageName(r.stage)) + " stage's findings: " + r.causes();
+        f.id = "stage-" + std::string(stageName(r->stage));
+        f.cause = "the " + std::string(stageName(r->stage)) + " stage's findings: " + r->causes();
         f.explained = without(left, now).size();
         f.spoiled = without(now, left).size();
         f.share = first > 0 ? (double(f.explained) - double(f.spoiled)) / first : 0.0;
-        // Findings that make no pixel match, net, are left out of the frame (a truncated term
-        // lands within the frame's byte of tolerance).
-        if (f.explained <= f.spoiled) {
-            applied.erase(r.stage);
-            continue;
-        }
         left = now;
         out.push_back(std::move(f));
+    }
+    return out;
+}
+
+// Each earlier stage's findings rendered into the frame, as renderedInOrder; a stage whose
+// findings make no pixel match net (a truncated term within the frame's byte of tolerance)
+// is left out when the frame without it leaves no more pixels differing (two stages' findings
+// may match pixels only together: a rounding and the spans walked from it).
+std::vector<StageFinding> stagesInFrame(const FrameScene& scene,
+                                        const std::vector<StageResult>& earlier,
+                                        const rl::Rgba8Image& theirs, ElementKeys& left) {
+    std::vector<const StageResult*> stages;
+    for (const StageResult& r : earlier)
+        if (!r.applied.empty()) stages.push_back(&r);
+    const ElementKeys start = left;
+    std::vector<StageFinding> out = renderedInOrder(scene, stages, theirs, left);
+    for (std::size_t i = out.size(); i-- > 0;) {
+        if (out[i].explained > out[i].spoiled) continue;
+        std::vector<const StageResult*> fewer = stages;
+        fewer.erase(fewer.begin() + std::ptrdiff_t(i));
+        ElementKeys fewerLeft = start;
+        std::vector<StageFinding> without = renderedInOrder(scene, fewer, theirs, fewerLeft);
+        if (fewerLeft.size() > left.size()) continue;
+        stages = std::move(fewer);
+        out = std::move(without);
+        left = std::move(fewerLeft);
     }
     return out;
 }
