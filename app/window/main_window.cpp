@@ -172,6 +172,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
     createDocks();
     createActions();
+    keepKeysFromNumberBoxes();
+    // The lecture layout follows the stepping cursor from stage to stage.
+    connect(m_inspection, &Inspection::stageChanged, this, &MainWindow::scheduleLectureLayout);
+    connect(m_inspection, &Inspection::cursorChanged, this, &MainWindow::scheduleLectureLayout);
+    connect(m_inspection, &Inspection::frameChanged, this, &MainWindow::scheduleLectureLayout);
     m_adoptTimer.setSingleShot(true);
     m_adoptTimer.setInterval(kEditPauseMs);
     connect(&m_adoptTimer, &QTimer::timeout, this, [this] {
@@ -441,8 +446,14 @@ void MainWindow::setPresentationMode(bool on) {
         QApplication::setPalette(m_normalPalette);
     }
     m_inspection->setPresentation(on);
+    applyTextZoom();  // on top of the window's new text size
     updateClickerKeys();
-    if (on) QMetaObject::invokeMethod(this, &MainWindow::fitDocks, Qt::QueuedConnection);
+    if (on && lectureLayoutShown()) {
+        m_lectureShown = {};
+        applyLectureLayout();
+    } else if (on) {
+        QMetaObject::invokeMethod(this, &MainWindow::fitDocks, Qt::QueuedConnection);
+    }
 }
 
 void MainWindow::enterPresentationLayout() {
@@ -460,11 +471,18 @@ void MainWindow::enterPresentationLayout() {
         }
     if (const QScreen* shown = screen(); shown && shown->size().width() < kSidesBesideImageWidth)
         movePixelInspectorRight();
+    // Live edits keep the Edit dock on screen.
+    if (m_liveEdits)
+        if (auto* edit = findChild<QDockWidget*>(QStringLiteral("editDock"))) edit->show();
+    m_presentationOwnLayout = saveState(kLayoutVersion);  // the teacher's own, for F7
+    m_lectureShown = {};
 }
 
 void MainWindow::leavePresentationLayout() {
+    centralWidget()->show();  // the lecture layout may have given its room to a dock
     restoreState(m_layoutBeforePresentation, kLayoutVersion);
     m_hiddenByPresentation.clear();
+    m_lectureShown = {};
 }
 
 void MainWindow::movePixelInspectorRight() {

@@ -30,6 +30,7 @@
 
 class QDir;
 class QDockWidget;
+class QKeyEvent;
 class QLabel;
 class QMenu;
 class QListWidget;
@@ -181,6 +182,36 @@ public:
     // the image the rest.
     void fitDocks();
 
+    // ---- Teaching from a projector (main_window_lecture.cpp) ------------------------------
+    // The lecture layout, presentation mode's own (View > Lecture Layout, F7): the dock of the
+    // stage the stepping cursor is in takes the screen and changes as the cursor crosses into
+    // the next stage; the image is beside it (kLectureStageShare of the width to the dock)
+    // once it has something drawn, and gives its room to the dock while it is black (stages
+    // 1 to 4 at stage granularity). Every other dock is put away. Off, the teacher's own
+    // presentation layout, as it was left. The choice holds outside presentation mode too.
+    bool lectureLayout() const { return m_lectureLayout; }
+    void setLectureLayout(bool on);
+    // Presentation mode in the lecture layout.
+    bool lectureLayoutShown() const;
+    // The dock of the stage the cursor is in, and whether the image has something to show.
+    QDockWidget* lectureDock() const;
+    bool lectureShowsImage() const;
+    static QString stageDockName(rl::StageId stage);
+    static constexpr double kLectureStageShare = 0.62;
+    static constexpr double kLectureEditShare = 0.26;
+    // Live edits (F9): the Edit dock kept on screen in presentation mode (on the left of the
+    // lecture layout), so that the light and the material change in front of the class.
+    bool liveEdits() const { return m_liveEdits; }
+    void setLiveEdits(bool on);
+    // The text zoom of every dock's contents (View > Text Size: Ctrl++, Ctrl+-, Ctrl+0), on
+    // top of presentation mode's larger text; kept in lesson files.
+    double textZoom() const;
+    void setTextZoom(double zoom);
+    void zoomText(int steps);  // so many steps larger (negative: smaller)
+    // For the application's event filter: the window's keys refused to a number box with
+    // the focus (a ShortcutOverride), so that they act wherever the focus is.
+    bool filterNumberBoxKey(QObject* watched, QEvent* event);
+
     // ---- Lessons (main_window_lessons.cpp) -----------------------------------------------
     // Opens a lesson file (lesson_file.h): its scene, settings, stepping and window. A part
     // of the scene that cannot be read keeps the part shown, and the Messages dock says what
@@ -319,6 +350,15 @@ private:
     void about();
     void showShortcuts();
     void updateClickerKeys();
+    // The lecture layout (main_window_lecture.cpp): made for the cursor's stage now, or once
+    // the events in hand are handled; the docks' widths for the window.
+    void applyLectureLayout();
+    void scheduleLectureLayout();
+    void fitLectureDocks();
+    void applyTextZoom();
+    bool keyForWindow(const QKeyEvent* key) const;
+    void addTeachingActions(QMenu* view);
+    void keepKeysFromNumberBoxes();  // installs the application's filter (filterNumberBoxKey)
 
     SceneDocument m_document;
     RenderController* m_controller = nullptr;
@@ -401,6 +441,25 @@ private:
     QPointer<QDockWidget> m_filledDock;
     QAction* m_fillAction = nullptr;
     bool m_wasFullScreen = false;
+    // The lecture layout: chosen, what it shows now (laid out again only when that changes),
+    // and the teacher's own presentation layout to give back.
+    bool m_lectureLayout = true;
+    bool m_lectureQueued = false;
+    struct LectureShown {
+        QDockWidget* stage = nullptr;
+        QDockWidget* edit = nullptr;
+        bool image = false;
+        QSize window;
+        bool operator==(const LectureShown&) const = default;
+    };
+    LectureShown m_lectureShown;
+    QByteArray m_presentationOwnLayout;
+    QAction* m_lectureAction = nullptr;
+    bool m_liveEdits = false;
+    QAction* m_liveEditsAction = nullptr;
+    double m_textZoom = 1.0;
+    // The window's keys that act wherever the focus is, even in a number box.
+    QList<QAction*> m_alwaysActions;
     bool m_handingOver = false;
     QFont m_normalFont;
     QPalette m_normalPalette;

@@ -140,6 +140,7 @@ void MainWindow::addExportMenu(QMenu* file) {
     QAction* exportShown =
         exports->addAction(tr("Image as &Displayed..."), this, &MainWindow::exportDisplayedDialog);
     exportShown->setShortcut(QKeySequence(tr("Ctrl+Shift+E")));
+    m_alwaysActions << exportAction << exportShown;
     exports->addAction(tr("&Colour Buffer at the Cursor..."), this,
                        [this] { exportBufferDialog(0); });
     exports->addAction(tr("D&epth Buffer at the Cursor..."), this,
@@ -175,15 +176,24 @@ void MainWindow::createEditMenu() {
 
 void MainWindow::createViewMenu() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
-    QAction* fit = view->addAction(tr("&Fit to Window"), m_view, &FrameImageView::fitToWindow);
-    fit->setShortcut(QKeySequence(tr("Ctrl+0")));
+    // The image's zoom (the wheel zooms it too); Ctrl++, Ctrl+- and Ctrl+0 are the text's.
+    QMenu* image = view->addMenu(tr("Image &Zoom"));
+    image->setObjectName(QStringLiteral("imageZoomMenu"));
+    QAction* fit = image->addAction(tr("&Fit to Window"), m_view, &FrameImageView::fitToWindow);
+    fit->setShortcut(QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_0));
+    fit->setObjectName(QStringLiteral("imageFitAction"));
     QAction* actual =
-        view->addAction(tr("&Actual Size"), m_view, &FrameImageView::zoomToActualSize);
-    actual->setShortcut(QKeySequence(tr("Ctrl+1")));
-    QAction* zoomIn = view->addAction(tr("Zoom &In"), m_view, &FrameImageView::zoomIn);
-    zoomIn->setShortcut(QKeySequence::ZoomIn);
-    QAction* zoomOut = view->addAction(tr("Zoom &Out"), m_view, &FrameImageView::zoomOut);
-    zoomOut->setShortcut(QKeySequence::ZoomOut);
+        image->addAction(tr("&Actual Size"), m_view, &FrameImageView::zoomToActualSize);
+    actual->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_1));
+    QAction* zoomIn = image->addAction(tr("Zoom &In"), m_view, &FrameImageView::zoomIn);
+    zoomIn->setShortcuts({QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_Plus),
+                          QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_Equal)});
+    zoomIn->setObjectName(QStringLiteral("imageZoomInAction"));
+    QAction* zoomOut = image->addAction(tr("Zoom &Out"), m_view, &FrameImageView::zoomOut);
+    zoomOut->setShortcut(QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_Minus));
+    zoomOut->setObjectName(QStringLiteral("imageZoomOutAction"));
+    m_alwaysActions << fit << actual << zoomIn << zoomOut;
+    addTeachingActions(view);
     view->addSeparator();
     QMenu* panels = view->addMenu(tr("Pa&nels"));
     for (QDockWidget* dock : findChildren<QDockWidget*>())
@@ -210,11 +220,46 @@ void MainWindow::createViewMenu() {
     m_presentationAction->setToolTip(
         tr("Larger text, thicker overlays, high contrast; the clicker's keys step (F5 or Esc)"));
     connect(m_presentationAction, &QAction::toggled, this, &MainWindow::setPresentationMode);
+    m_lectureAction = view->addAction(tr("&Lecture Layout"));
+    m_lectureAction->setObjectName(QStringLiteral("lectureLayoutAction"));
+    m_lectureAction->setCheckable(true);
+    m_lectureAction->setChecked(m_lectureLayout);
+    m_lectureAction->setShortcut(QKeySequence(Qt::Key_F7));
+    m_lectureAction->setToolTip(
+        tr("In presentation mode, the stage being stepped fills the screen, the image beside "
+           "it once something is drawn; off, your own layout (F7)"));
+    connect(m_lectureAction, &QAction::toggled, this, &MainWindow::setLectureLayout);
+    m_liveEditsAction = view->addAction(tr("Live &Edits in Presentation"));
+    m_liveEditsAction->setObjectName(QStringLiteral("liveEditsAction"));
+    m_liveEditsAction->setCheckable(true);
+    m_liveEditsAction->setShortcut(QKeySequence(Qt::Key_F9));
+    m_liveEditsAction->setToolTip(
+        tr("The Edit panel stays on screen in presentation mode: the light and the material "
+           "change in front of the class (F9)"));
+    connect(m_liveEditsAction, &QAction::toggled, this, &MainWindow::setLiveEdits);
+    m_alwaysActions << m_fillAction << m_presentationAction << m_lectureAction
+                    << m_liveEditsAction;
     auto* leave = new QAction(this);
     leave->setShortcut(QKeySequence(Qt::Key_Escape));
     connect(leave, &QAction::triggered, this, [this] { setPresentationMode(false); });
     addAction(leave);
     addLanguageMenu(view);
+}
+
+// View > Text Size: the docks' text and numbers, larger for the back of the room.
+void MainWindow::addTeachingActions(QMenu* view) {
+    QMenu* text = view->addMenu(tr("&Text Size"));
+    text->setObjectName(QStringLiteral("textSizeMenu"));
+    QAction* larger = text->addAction(tr("&Larger"), this, [this] { zoomText(1); });
+    larger->setShortcuts({QKeySequence::ZoomIn, QKeySequence(Qt::CTRL | Qt::Key_Equal)});
+    larger->setObjectName(QStringLiteral("textLargerAction"));
+    QAction* smaller = text->addAction(tr("&Smaller"), this, [this] { zoomText(-1); });
+    smaller->setShortcut(QKeySequence::ZoomOut);
+    smaller->setObjectName(QStringLiteral("textSmallerAction"));
+    QAction* normal = text->addAction(tr("&Normal Size"), this, [this] { setTextZoom(1.0); });
+    normal->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_0));
+    normal->setObjectName(QStringLiteral("textNormalAction"));
+    m_alwaysActions << larger << smaller << normal;
 }
 
 void MainWindow::addLanguageMenu(QMenu* view) {
@@ -262,6 +307,10 @@ void MainWindow::createStepMenu() {
         connect(a, &QAction::triggered, this, [this, stage] { m_inspection->setStage(stage); });
     }
     addClickerKeys();
+    for (QAction* a : {m_steppingBar->toStartAction(), m_steppingBar->stepBackAction(),
+                       m_steppingBar->playAction(), m_steppingBar->stepForwardAction(),
+                       m_steppingBar->toEndAction(), m_steppingBar->continueAction()})
+        m_alwaysActions << a;
     QAction* goTo = step->addAction(tr("Pick the Pixel Under the &Mouse"));
     goTo->setShortcut(QKeySequence(tr("Ctrl+G")));
     connect(goTo, &QAction::triggered, this, [this] {

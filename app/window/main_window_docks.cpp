@@ -48,6 +48,10 @@ void MainWindow::showEvent(QShowEvent* event) {
 
 void MainWindow::resizeEvent(QResizeEvent* event) {
     QMainWindow::resizeEvent(event);
+    if (lectureLayoutShown()) {
+        QMetaObject::invokeMethod(this, &MainWindow::fitLectureDocks, Qt::QueuedConnection);
+        return;
+    }
     if (m_fitDocks && isVisible())
         QMetaObject::invokeMethod(this, &MainWindow::fitDocks, Qt::QueuedConnection);
 }
@@ -142,8 +146,8 @@ void MainWindow::fitDocks() {
     // inspector's table) and a third (right) of the window; the image takes the rest. The
     // left side also as wide as its docks' contents need, up to 45% (the pixel inspector's
     // table in presentation mode's large text); the stage views on the right scale their
-    // pictures instead. Each side's docks share its height.
-    if (isFilled()) return;
+    // pictures instead. Each side's docks share its height. The lecture layout has its own.
+    if (isFilled() || lectureLayoutShown()) return;
     constexpr int kFrame = 20;  // the dock area's frame and margins around its tab bar
     struct Side {
         Qt::DockWidgetArea area;
@@ -183,6 +187,8 @@ void MainWindow::toggleFill(QDockWidget* dock) {
         restoreFill();
         return;
     }
+    // In the lecture layout, the stage being stepped (else the panel under the pointer).
+    if (!dock && lectureLayoutShown()) dock = lectureDock();
     if (!dock) dock = fillTarget();
     m_layoutBeforeFill = saveState(kLayoutVersion);
     m_filledDock = dock;
@@ -209,21 +215,28 @@ void MainWindow::restoreFill() {
     m_filledDock = nullptr;
     const QSignalBlocker block(m_fillAction);
     m_fillAction->setChecked(false);
+    if (lectureLayoutShown()) {
+        m_lectureShown = {};
+        scheduleLectureLayout();  // the cursor may have moved on while the dock filled
+    }
 }
 
 QDockWidget* MainWindow::fillTarget() const {
-    // The dock holding the focus, else the one under the mouse; none (the image) when the
-    // image has the focus or nothing else says.
+    // The panel under the pointer (what the teacher points at), else the one holding the
+    // focus; none (the image) when the pointer is on the image, or nothing else says.
     const auto dockOf = [this](QWidget* w) -> QDockWidget* {
         for (; w && w != this; w = w->parentWidget())
             if (auto* dock = qobject_cast<QDockWidget*>(w)) return dock;
         return nullptr;
     };
+    QWidget* under = QApplication::widgetAt(QCursor::pos());
+    if (under && under->window() == this) {
+        if (under == m_view || m_view->isAncestorOf(under)) return nullptr;
+        if (QDockWidget* dock = dockOf(under)) return dock;
+    }
     QWidget* focus = QApplication::focusWidget();
-    if (focus && m_view->isAncestorOf(focus)) return nullptr;
-    if (focus == m_view) return nullptr;
-    if (QDockWidget* dock = dockOf(focus)) return dock;
-    return dockOf(QApplication::widgetAt(QCursor::pos()));
+    if (focus && (focus == m_view || m_view->isAncestorOf(focus))) return nullptr;
+    return dockOf(focus);
 }
 
 }  // namespace rasterlab
