@@ -403,6 +403,10 @@ void TestLessons::badLessonFiles_data() {
     QTest::newRow("zoom") << QByteArray("{\"rasterlab_lesson\": 1, \"window\": {\"zoom\": -2}}")
                           << QStringLiteral("l.rasterlab:1:36: expected a positive number or "
                                             "\"fit\" for \"zoom\", found a number");
+    QTest::newRow("text zoom")
+        << QByteArray("{\"rasterlab_lesson\": 1, \"window\": {\"text_zoom\": \"big\"}}")
+        << QStringLiteral("l.rasterlab:1:36: expected a number for \"text_zoom\", found the text "
+                          "'big'");
     QTest::newRow("breakpoint")
         << QByteArray("{\"rasterlab_lesson\": 1, \"stepping\": {\"breakpoints\": [{\"kind\": "
                       "\"pixel\"}]}}")

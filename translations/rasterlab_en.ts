@@ -68,76 +68,76 @@
     </message>
     <message>
         <location filename="../app/documents/examples.cpp" line="30"/>
-        <source>A single triangle in a 32 x 24 image, large enough to read from the back of the room. Step by pixel (Step menu, or the arrow keys) and watch the scanline fill from its left edge to its right; pick a pixel to see its barycentric coordinates, its interpolated P and N, and its Phong terms in the pixel inspector.</source>
-        <translation>A single triangle in a 32 x 24 image, large enough to read from the back of the room. Step by pixel (Step menu, or the arrow keys) and watch the scanline fill from its left edge to its right; pick a pixel to see its barycentric coordinates, its interpolated P and N, and its Phong terms in the pixel inspector.</translation>
+        <source>A single triangle in a 32 x 24 image, large enough to read from the back of the room. Step by pixel (Page Down, or Right and Left in presentation mode, F5) and watch the scanline fill from its left edge to its right; pick a pixel to see its barycentric coordinates, its interpolated P and N, and its Phong terms in the pixel inspector.</source>
+        <translation>A single triangle in a 32 x 24 image, large enough to read from the back of the room. Step by pixel (Page Down, or Right and Left in presentation mode, F5) and watch the scanline fill from its left edge to its right; pick a pixel to see its barycentric coordinates, its interpolated P and N, and its Phong terms in the pixel inspector.</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="38"/>
+        <location filename="../app/documents/examples.cpp" line="39"/>
         <source>Two triangles that cross (the z-buffer)</source>
         <translation>Two triangles that cross (the z-buffer)</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="39"/>
+        <location filename="../app/documents/examples.cpp" line="40"/>
         <source>Two triangles that pass through each other: each is nearer the camera over half of the other, so no order of whole triangles draws them right. It opens at the start of the frame with a breakpoint at the second triangle: Continue to Breakpoint (F8) draws the first, then step by scanline through the second and watch the z-buffer dock: its pixels are kept above the crossing line and rejected below it. Pick a pixel near the crossing to compare both depths.</source>
         <translation>Two triangles that pass through each other: each is nearer the camera over half of the other, so no order of whole triangles draws them right. It opens at the start of the frame with a breakpoint at the second triangle: Continue to Breakpoint (F8) draws the first, then step by scanline through the second and watch the z-buffer dock: its pixels are kept above the crossing line and rejected below it. Pick a pixel near the crossing to compare both depths.</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="50"/>
+        <location filename="../app/documents/examples.cpp" line="51"/>
         <source>A triangle through the near plane</source>
         <translation>A triangle through the near plane</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="51"/>
+        <location filename="../app/documents/examples.cpp" line="52"/>
         <source>A triangle on the floor whose far corner is behind the camera. The near-plane clipping dock shows it cut at the near plane into a quad, and the quad split into two triangles. Then choose Shading &gt; Projection &gt; Plain Divide: the corner behind the eye is divided by a negative z and lands above the horizon.</source>
         <translation>A triangle on the floor whose far corner is behind the camera. The near-plane clipping dock shows it cut at the near plane into a quad, and the quad split into two triangles. Then choose Shading &gt; Projection &gt; Plain Divide: the corner behind the eye is divided by a negative z and lands above the horizon.</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="59"/>
+        <location filename="../app/documents/examples.cpp" line="60"/>
         <source>A goblet turned from a profile</source>
         <translation>A goblet turned from a profile</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="60"/>
+        <location filename="../app/documents/examples.cpp" line="61"/>
         <source>A goblet made by turning a profile around the y axis (the course&apos;s chalice idea, 1,520 triangles of our own). Start at the camera basis dock, then follow the stages in order: view coordinates, normals, projection, scan conversion, z-buffer and lighting. Pick a pixel on the highlight of the bowl to see why it is bright.</source>
         <translation>A goblet made by turning a profile around the y axis (the course&apos;s chalice idea, 1,520 triangles of our own). Start at the camera basis dock, then follow the stages in order: view coordinates, normals, projection, scan conversion, z-buffer and lighting. Pick a pixel on the highlight of the bowl to see why it is bright.</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="68"/>
+        <location filename="../app/documents/examples.cpp" line="69"/>
         <source>A low-polygon sphere: flat, Gouraud, Phong</source>
         <translation>A low-polygon sphere: flat, Gouraud, Phong</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="69"/>
+        <location filename="../app/documents/examples.cpp" line="70"/>
         <source>A sphere of 168 triangles. It opens in flat shading, one colour per triangle; press the Shading menu&apos;s Gouraud and then Phong to compare (File &gt; Export More &gt; Shading Side by Side puts the three in one picture). Gouraud smooths the facets but blurs the highlight; Phong draws it round.</source>
         <translation>A sphere of 168 triangles. It opens in flat shading, one colour per triangle; press the Shading menu&apos;s Gouraud and then Phong to compare (File &gt; Export More &gt; Shading Side by Side puts the three in one picture). Gouraud smooths the facets but blurs the highlight; Phong draws it round.</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="77"/>
+        <location filename="../app/documents/examples.cpp" line="78"/>
         <source>Several lights: spot, directional, attenuated</source>
         <translation>Several lights: spot, directional, attenuated</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="78"/>
+        <location filename="../app/documents/examples.cpp" line="79"/>
         <source>A floor and a ball under three lights of the lecture slides: a yellow spot (the bright disc, with a soft edge from its exponent), a dim blue directional light from the right, and a red positional light whose strength falls with distance. Pick pixels inside and outside the spot&apos;s cone and compare the pixel inspector&apos;s terms light by light; change the lights in the Edit dock.</source>
         <translation>A floor and a ball under three lights of the lecture slides: a yellow spot (the bright disc, with a soft edge from its exponent), a dim blue directional light from the right, and a red positional light whose strength falls with distance. Pick pixels inside and outside the spot&apos;s cone and compare the pixel inspector&apos;s terms light by light; change the lights in the Edit dock.</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="87"/>
+        <location filename="../app/documents/examples.cpp" line="88"/>
         <source>Three triangles in a cycle (the painter)</source>
         <translation>Three triangles in a cycle (the painter)</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="88"/>
+        <location filename="../app/documents/examples.cpp" line="89"/>
         <source>Three triangles that each lie in front of the next: no order of whole triangles can draw them right, so the painter&apos;s algorithm (far to near by barycentre) must fail somewhere. Step by triangle and see one painted over a nearer one; the painter&apos;s algorithm dock marks the pixels that differ from the z-buffer&apos;s image.</source>
         <translation>Three triangles that each lie in front of the next: no order of whole triangles can draw them right, so the painter&apos;s algorithm (far to near by barycentre) must fail somewhere. Step by triangle and see one painted over a nearer one; the painter&apos;s algorithm dock marks the pixels that differ from the z-buffer&apos;s image.</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="96"/>
+        <location filename="../app/documents/examples.cpp" line="97"/>
         <source>Gouraud&apos;s faults: Mach bands, a missed highlight</source>
         <translation>Gouraud&apos;s faults: Mach bands, a missed highlight</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="97"/>
+        <location filename="../app/documents/examples.cpp" line="98"/>
         <source>Left, a coarse sphere in Gouraud shading: the brightness bends at every edge and the eye sees bands there (Mach bands). Right, a square of two triangles whose highlight falls between its corners: Gouraud lights only the corners and misses it. Switch to Phong shading and the highlight appears in the middle of the square.</source>
         <translation>Left, a coarse sphere in Gouraud shading: the brightness bends at every edge and the eye sees bands there (Mach bands). Right, a square of two triangles whose highlight falls between its corners: Gouraud lights only the corners and misses it. Switch to Phong shading and the highlight appears in the middle of the square.</translation>
     </message>
@@ -4480,32 +4480,32 @@
 <context>
     <name>rasterlab::MainWindow</name>
     <message>
-        <location filename="../app/window/main_window.cpp" line="66"/>
+        <location filename="../app/window/main_window.cpp" line="68"/>
         <source>Open Camera</source>
         <translation>Open Camera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="68"/>
+        <location filename="../app/window/main_window.cpp" line="70"/>
         <source>Open Lighting</source>
         <translation>Open Lighting</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="70"/>
+        <location filename="../app/window/main_window.cpp" line="72"/>
         <source>Open Object</source>
         <translation>Open Object</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="78"/>
+        <location filename="../app/window/main_window.cpp" line="80"/>
         <source>Camera files (*.cfg *.txt);;All files (*)</source>
         <translation>Camera files (*.cfg *.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="80"/>
+        <location filename="../app/window/main_window.cpp" line="82"/>
         <source>Lighting files (*.txt *.lux);;All files (*)</source>
         <translation>Lighting files (*.txt *.lux);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="82"/>
+        <location filename="../app/window/main_window.cpp" line="84"/>
         <source>Objects (*.byu *.txt);;All files (*)</source>
         <translation>Objects (*.byu *.txt);;All files (*)</translation>
     </message>
@@ -4515,116 +4515,116 @@
         <translation>Detect from the file</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="91"/>
+        <location filename="../app/window/main_window.cpp" line="93"/>
         <source>flat</source>
         <translation>flat</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="93"/>
+        <location filename="../app/window/main_window.cpp" line="95"/>
         <location filename="../app/window/main_window_export.cpp" line="70"/>
         <source>Gouraud</source>
         <translation>Gouraud</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="95"/>
+        <location filename="../app/window/main_window.cpp" line="97"/>
         <location filename="../app/window/main_window_export.cpp" line="70"/>
         <source>Phong</source>
         <translation>Phong</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="97"/>
+        <location filename="../app/window/main_window.cpp" line="99"/>
         <source>painter&apos;s-algorithm flat</source>
         <translation>painter&apos;s-algorithm flat</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="106"/>
+        <location filename="../app/window/main_window.cpp" line="108"/>
         <source>%1 (built in)</source>
         <translation>%1 (built in)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="114"/>
+        <location filename="../app/window/main_window.cpp" line="116"/>
         <source>RasterLab</source>
         <translation>RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="170"/>
+        <location filename="../app/window/main_window.cpp" line="172"/>
         <source>Stopped at a breakpoint: %1</source>
         <translation>Stopped at a breakpoint: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="203"/>
+        <location filename="../app/window/main_window.cpp" line="210"/>
         <location filename="../app/window/main_window_export.cpp" line="122"/>
         <location filename="../app/window/main_window_export.cpp" line="159"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="204"/>
+        <location filename="../app/window/main_window.cpp" line="211"/>
         <source>Stop preparing the stepping of this frame</source>
         <translation>Stop preparing the stepping of this frame</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="208"/>
+        <location filename="../app/window/main_window.cpp" line="215"/>
         <source>cancelled</source>
         <translation>cancelled</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="266"/>
+        <location filename="../app/window/main_window.cpp" line="273"/>
         <source>Stepping</source>
         <translation>Stepping</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="290"/>
+        <location filename="../app/window/main_window.cpp" line="297"/>
         <source>Edit</source>
         <translation>Edit</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="297"/>
+        <location filename="../app/window/main_window.cpp" line="304"/>
         <source>Breakpoints</source>
         <translation>Breakpoints</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="303"/>
+        <location filename="../app/window/main_window.cpp" line="310"/>
         <source>Animation</source>
         <translation>Animation</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="322"/>
+        <location filename="../app/window/main_window.cpp" line="329"/>
         <source>1 Camera basis</source>
         <translation>1 Camera basis</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="294"/>
+        <location filename="../app/window/main_window.cpp" line="301"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Pixel inspector (lighting)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="329"/>
+        <location filename="../app/window/main_window.cpp" line="336"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 View coordinates (vertices)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="331"/>
+        <location filename="../app/window/main_window.cpp" line="338"/>
         <source>3 Normals</source>
         <translation>3 Normals</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="333"/>
+        <location filename="../app/window/main_window.cpp" line="340"/>
         <source>4 Projection</source>
         <translation>4 Projection</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="325"/>
+        <location filename="../app/window/main_window.cpp" line="332"/>
         <source>5 Scan conversion</source>
         <translation>5 Scan conversion</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="339"/>
+        <location filename="../app/window/main_window.cpp" line="346"/>
         <source>5b Trapezoids</source>
         <translation>5b Trapezoids</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="343"/>
+        <location filename="../app/window/main_window.cpp" line="350"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
     </message>
@@ -4634,42 +4634,47 @@
         <translation>&amp;File</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="166"/>
+        <location filename="../app/window/main_window_actions.cpp" line="167"/>
         <source>&amp;Animation Frames...</source>
         <translation>&amp;Animation Frames...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="302"/>
+        <location filename="../app/window/main_window_actions.cpp" line="351"/>
         <source>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</source>
         <translation>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1102"/>
+        <location filename="../app/window/main_window.cpp" line="1122"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>step forward, back (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1104"/>
+        <location filename="../app/window/main_window.cpp" line="1124"/>
         <source>Space</source>
         <translation>Space</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1104"/>
+        <location filename="../app/window/main_window.cpp" line="1124"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>play / pause (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1110"/>
+        <location filename="../app/window/main_window.cpp" line="1130"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>let go of the picked pixel (on the image)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1111"/>
+        <location filename="../app/window/main_window.cpp" line="1131"/>
         <source>presentation mode on / off</source>
         <translation>presentation mode on / off</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1116"/>
+        <location filename="../app/window/main_window.cpp" line="1137"/>
+        <source>fill the window with the panel under the pointer (in the lecture layout, the stage&apos;s), and back</source>
+        <translation>fill the window with the panel under the pointer (in the lecture layout, the stage&apos;s), and back</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window.cpp" line="1141"/>
         <source>save, undo, redo</source>
         <translation>save, undo, redo</translation>
     </message>
@@ -4679,7 +4684,7 @@
         <translation>Open &amp;Camera...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="135"/>
+        <location filename="../app/window/main_window.cpp" line="137"/>
         <source>Draw with the Plain Divide</source>
         <translation>Draw with the Plain Divide</translation>
     </message>
@@ -4754,32 +4759,32 @@
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="143"/>
+        <location filename="../app/window/main_window_actions.cpp" line="144"/>
         <source>&amp;Colour Buffer at the Cursor...</source>
         <translation>&amp;Colour Buffer at the Cursor...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="145"/>
+        <location filename="../app/window/main_window_actions.cpp" line="146"/>
         <source>D&amp;epth Buffer at the Cursor...</source>
         <translation>D&amp;epth Buffer at the Cursor...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="147"/>
+        <location filename="../app/window/main_window_actions.cpp" line="148"/>
         <source>&amp;Normal Buffer...</source>
         <translation>&amp;Normal Buffer...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="148"/>
+        <location filename="../app/window/main_window_actions.cpp" line="149"/>
         <source>A &amp;View as Displayed</source>
         <translation>A &amp;View as Displayed</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="152"/>
+        <location filename="../app/window/main_window_actions.cpp" line="153"/>
         <source>Export View</source>
         <translation>Export View</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="164"/>
+        <location filename="../app/window/main_window_actions.cpp" line="165"/>
         <source>&amp;Stepping Sequence...</source>
         <translation>&amp;Stepping Sequence...</translation>
     </message>
@@ -4809,282 +4814,312 @@
         <translation>Your own renderer&apos;s stages, each held to the lecture&apos;s over the stage protocol</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="157"/>
+        <location filename="../app/window/main_window_actions.cpp" line="158"/>
         <source>Shading Side &amp;by Side...</source>
         <translation>Shading Side &amp;by Side...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="159"/>
+        <location filename="../app/window/main_window_actions.cpp" line="160"/>
         <source>Export Shading Side by Side</source>
         <translation>Export Shading Side by Side</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="171"/>
+        <location filename="../app/window/main_window_actions.cpp" line="172"/>
         <source>&amp;Edit</source>
         <translation>&amp;Edit</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="177"/>
+        <location filename="../app/window/main_window_actions.cpp" line="178"/>
         <source>&amp;View</source>
         <translation>&amp;View</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="178"/>
+        <location filename="../app/window/main_window_actions.cpp" line="182"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Fit to Window</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="179"/>
-        <source>Ctrl+0</source>
-        <translation>Ctrl+0</translation>
-    </message>
-    <message>
-        <location filename="../app/window/main_window_actions.cpp" line="181"/>
+        <location filename="../app/window/main_window_actions.cpp" line="186"/>
         <source>&amp;Actual Size</source>
         <translation>&amp;Actual Size</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="182"/>
-        <source>Ctrl+1</source>
-        <translation>Ctrl+1</translation>
-    </message>
-    <message>
-        <location filename="../app/window/main_window_actions.cpp" line="183"/>
+        <location filename="../app/window/main_window_actions.cpp" line="188"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;In</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="185"/>
+        <location filename="../app/window/main_window_actions.cpp" line="192"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom &amp;Out</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="192"/>
+        <location filename="../app/window/main_window_actions.cpp" line="202"/>
         <source>Reset &amp;Layout</source>
         <translation>Reset &amp;Layout</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="194"/>
+        <location filename="../app/window/main_window_actions.cpp" line="204"/>
         <source>Fill the &amp;Window with a Panel</source>
         <translation>Fill the &amp;Window with a Panel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="198"/>
+        <location filename="../app/window/main_window_actions.cpp" line="208"/>
         <source>The panel with the focus or under the mouse (the image, from the image) over the whole window; again, the layout back</source>
         <translation>The panel with the focus or under the mouse (the image, from the image) over the whole window; again, the layout back</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="206"/>
+        <location filename="../app/window/main_window_actions.cpp" line="216"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Presentation Mode</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="211"/>
+        <location filename="../app/window/main_window_actions.cpp" line="221"/>
         <source>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</source>
         <translation>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="226"/>
+        <location filename="../app/window/main_window_actions.cpp" line="223"/>
+        <source>&amp;Lecture Layout</source>
+        <translation>&amp;Lecture Layout</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="229"/>
+        <source>In presentation mode, the stage being stepped fills the screen, the image beside it once something is drawn; off, your own layout (F7)</source>
+        <translation>In presentation mode, the stage being stepped fills the screen, the image beside it once something is drawn; off, your own layout (F7)</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="232"/>
+        <source>Live &amp;Edits in Presentation</source>
+        <translation>Live &amp;Edits in Presentation</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="237"/>
+        <source>The Edit panel stays on screen in presentation mode: the light and the material change in front of the class (F9)</source>
+        <translation>The Edit panel stays on screen in presentation mode: the light and the material change in front of the class (F9)</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="251"/>
+        <source>&amp;Text Size</source>
+        <translation>&amp;Text Size</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="253"/>
+        <source>&amp;Larger</source>
+        <translation>&amp;Larger</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="256"/>
+        <source>&amp;Smaller</source>
+        <translation>&amp;Smaller</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="259"/>
+        <source>&amp;Normal Size</source>
+        <translation>&amp;Normal Size</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="271"/>
         <source>The System&apos;s</source>
         <translation>The System&apos;s</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="245"/>
+        <location filename="../app/window/main_window_actions.cpp" line="290"/>
         <source>S&amp;tep</source>
         <translation>S&amp;tep</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="265"/>
+        <location filename="../app/window/main_window_actions.cpp" line="314"/>
         <source>Pick the Pixel Under the &amp;Mouse</source>
         <translation>Pick the Pixel Under the &amp;Mouse</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="266"/>
+        <location filename="../app/window/main_window_actions.cpp" line="315"/>
         <source>Ctrl+G</source>
         <translation>Ctrl+G</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="295"/>
+        <location filename="../app/window/main_window_actions.cpp" line="344"/>
         <source>&amp;Shading</source>
         <translation>&amp;Shading</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="299"/>
+        <location filename="../app/window/main_window_actions.cpp" line="348"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (per pixel)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="300"/>
+        <location filename="../app/window/main_window_actions.cpp" line="349"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (per vertex)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="301"/>
+        <location filename="../app/window/main_window_actions.cpp" line="350"/>
         <source>&amp;Flat (per triangle)</source>
         <translation>&amp;Flat (per triangle)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="343"/>
+        <location filename="../app/window/main_window_actions.cpp" line="392"/>
         <source>Pro&amp;jection</source>
         <translation>Pro&amp;jection</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="348"/>
+        <location filename="../app/window/main_window_actions.cpp" line="397"/>
         <source>&amp;Clip at the Near Plane (nothing behind the eye is divided)</source>
         <translation>&amp;Clip at the Near Plane (nothing behind the eye is divided)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="350"/>
+        <location filename="../app/window/main_window_actions.cpp" line="399"/>
         <source>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</source>
         <translation>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="352"/>
+        <location filename="../app/window/main_window_actions.cpp" line="401"/>
         <source>&amp;Same Side (clip only triangles that cross the eye plane)</source>
         <translation>&amp;Same Side (clip only triangles that cross the eye plane)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="688"/>
+        <location filename="../app/window/main_window.cpp" line="708"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="993"/>
+        <location filename="../app/window/main_window.cpp" line="1013"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1085"/>
+        <location filename="../app/window/main_window.cpp" line="1105"/>
         <source>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</source>
         <translation>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1099"/>
+        <location filename="../app/window/main_window.cpp" line="1119"/>
         <source>step forward</source>
         <translation>step forward</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1100"/>
+        <location filename="../app/window/main_window.cpp" line="1120"/>
         <source>step back</source>
         <translation>step back</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1103"/>
+        <location filename="../app/window/main_window.cpp" line="1123"/>
         <source>play / pause</source>
         <translation>play / pause</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1105"/>
+        <location filename="../app/window/main_window.cpp" line="1125"/>
         <source>jump to the start / the end of the frame</source>
         <translation>jump to the start / the end of the frame</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1106"/>
+        <location filename="../app/window/main_window.cpp" line="1126"/>
         <source>continue to the next breakpoint</source>
         <translation>continue to the next breakpoint</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1107"/>
+        <location filename="../app/window/main_window.cpp" line="1127"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>step by stage, triangle, scanline, span, pixel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1108"/>
+        <location filename="../app/window/main_window.cpp" line="1128"/>
         <source>show a stage&apos;s view</source>
         <translation>show a stage&apos;s view</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1109"/>
+        <location filename="../app/window/main_window.cpp" line="1129"/>
         <source>Click, arrows</source>
         <translation>Click, arrows</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1109"/>
+        <location filename="../app/window/main_window.cpp" line="1129"/>
         <source>pick a pixel, move it by one</source>
         <translation>pick a pixel, move it by one</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1112"/>
+        <location filename="../app/window/main_window.cpp" line="1133"/>
+        <source>presentation mode: the lecture layout (the stage being stepped fills the screen) or your own layout</source>
+        <translation>presentation mode: the lecture layout (the stage being stepped fills the screen) or your own layout</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window.cpp" line="1135"/>
+        <source>presentation mode: the Edit panel on screen (live edits)</source>
+        <translation>presentation mode: the Edit panel on screen (live edits)</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window.cpp" line="1136"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, double-click on a panel&apos;s title</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1113"/>
-        <source>fill the window with the panel (the image, from the image), and back</source>
-        <translation>fill the window with the panel (the image, from the image), and back</translation>
-    </message>
-    <message>
-        <location filename="../app/window/main_window.cpp" line="1115"/>
+        <location filename="../app/window/main_window.cpp" line="1140"/>
         <source>open, export the image, export it as displayed</source>
         <translation>open, export the image, export it as displayed</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1118"/>
-        <source>fit, actual size, zoom in, zoom out</source>
-        <translation>fit, actual size, zoom in, zoom out</translation>
-    </message>
-    <message>
-        <location filename="../app/window/main_window.cpp" line="1120"/>
+        <location filename="../app/window/main_window.cpp" line="1166"/>
         <source>Keyboard Shortcuts</source>
         <translation>Keyboard Shortcuts</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="320"/>
+        <location filename="../app/window/main_window_actions.cpp" line="369"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Rasterization Rules</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="325"/>
+        <location filename="../app/window/main_window_actions.cpp" line="374"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="327"/>
+        <location filename="../app/window/main_window_actions.cpp" line="376"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="329"/>
+        <location filename="../app/window/main_window_actions.cpp" line="378"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (seed 001&apos;s reference images)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="366"/>
+        <location filename="../app/window/main_window_actions.cpp" line="415"/>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="372"/>
+        <location filename="../app/window/main_window_actions.cpp" line="421"/>
         <source>&amp;User Guide</source>
         <translation>&amp;User Guide</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="378"/>
+        <location filename="../app/window/main_window_actions.cpp" line="427"/>
         <source>The user guide is not installed</source>
         <translation>The user guide is not installed</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="380"/>
+        <location filename="../app/window/main_window_actions.cpp" line="429"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="275"/>
+        <location filename="../app/window/main_window.cpp" line="282"/>
         <source>Messages</source>
         <translation>Messages</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="280"/>
+        <location filename="../app/window/main_window.cpp" line="287"/>
         <source>Scene</source>
         <translation>Scene</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="300"/>
+        <location filename="../app/window/main_window.cpp" line="307"/>
         <source>Accuracy</source>
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="662"/>
+        <location filename="../app/window/main_window.cpp" line="682"/>
         <location filename="../app/window/main_window_export.cpp" line="35"/>
         <location filename="../app/window/main_window_export.cpp" line="133"/>
         <location filename="../app/window/main_window_export.cpp" line="175"/>
@@ -5103,18 +5138,18 @@
         <translation>Exported %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="715"/>
+        <location filename="../app/window/main_window.cpp" line="735"/>
         <source>rendering...</source>
         <translation>rendering...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="715"/>
+        <location filename="../app/window/main_window.cpp" line="735"/>
         <source>%1, rendering...</source>
         <translation>%1, rendering...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="713"/>
-        <location filename="../app/window/main_window.cpp" line="956"/>
+        <location filename="../app/window/main_window.cpp" line="733"/>
+        <location filename="../app/window/main_window.cpp" line="976"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -5144,262 +5179,267 @@
         <translation>Course File La&amp;youts</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="188"/>
+        <location filename="../app/window/main_window_actions.cpp" line="180"/>
+        <source>Image &amp;Zoom</source>
+        <translation>Image &amp;Zoom</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="198"/>
         <source>Pa&amp;nels</source>
         <translation>Pa&amp;nels</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="203"/>
+        <location filename="../app/window/main_window_actions.cpp" line="213"/>
         <source>I&amp;mage</source>
         <translation>I&amp;mage</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="221"/>
+        <location filename="../app/window/main_window_actions.cpp" line="266"/>
         <source>Lan&amp;guage</source>
         <translation>Lan&amp;guage</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="254"/>
+        <location filename="../app/window/main_window_actions.cpp" line="299"/>
         <source>Step B&amp;y</source>
         <translation>Step B&amp;y</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="256"/>
+        <location filename="../app/window/main_window_actions.cpp" line="301"/>
         <source>S&amp;tage</source>
         <translation>S&amp;tage</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="367"/>
+        <location filename="../app/window/main_window_actions.cpp" line="416"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Keyboard Shortcuts</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="394"/>
+        <location filename="../app/window/main_window.cpp" line="401"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="645"/>
+        <location filename="../app/window/main_window.cpp" line="665"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="723"/>
+        <location filename="../app/window/main_window.cpp" line="743"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparing the stepping of this frame</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="723"/>
+        <location filename="../app/window/main_window.cpp" line="743"/>
         <source>Rendering</source>
         <translation>Rendering</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="899"/>
+        <location filename="../app/window/main_window.cpp" line="919"/>
         <source>Error: %1</source>
         <translation>Error: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="923"/>
+        <location filename="../app/window/main_window.cpp" line="943"/>
         <source>Files</source>
         <translation>Files</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="926"/>
+        <location filename="../app/window/main_window.cpp" line="946"/>
         <source>Command file</source>
         <translation>Command file</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="927"/>
+        <location filename="../app/window/main_window.cpp" line="947"/>
         <source>Image</source>
         <translation>Image</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="929"/>
+        <location filename="../app/window/main_window.cpp" line="949"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="939"/>
+        <location filename="../app/window/main_window.cpp" line="959"/>
         <source>Camera</source>
         <translation>Camera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="940"/>
+        <location filename="../app/window/main_window.cpp" line="960"/>
         <source>Lighting</source>
         <translation>Lighting</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="941"/>
+        <location filename="../app/window/main_window.cpp" line="961"/>
         <source>Object</source>
         <translation>Object</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="943"/>
+        <location filename="../app/window/main_window.cpp" line="963"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="260"/>
-        <location filename="../app/window/main_window.cpp" line="950"/>
+        <location filename="../app/window/main_window.cpp" line="267"/>
+        <location filename="../app/window/main_window.cpp" line="970"/>
         <source>Stages</source>
         <translation>Stages</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="104"/>
+        <location filename="../app/window/main_window.cpp" line="106"/>
         <source>%1 (the %2 example)</source>
         <translation>%1 (the %2 example)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="293"/>
+        <location filename="../app/window/main_window.cpp" line="300"/>
         <source>7 Pixel inspector</source>
         <translation>7 Pixel inspector</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="322"/>
+        <location filename="../app/window/main_window.cpp" line="329"/>
         <source>1 Camera</source>
         <translation>1 Camera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="325"/>
+        <location filename="../app/window/main_window.cpp" line="332"/>
         <source>5 Scan</source>
         <translation>5 Scan</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="328"/>
+        <location filename="../app/window/main_window.cpp" line="335"/>
         <source>2 View</source>
         <translation>2 View</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="336"/>
+        <location filename="../app/window/main_window.cpp" line="343"/>
         <source>4b Clipping</source>
         <translation>4b Clipping</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="338"/>
+        <location filename="../app/window/main_window.cpp" line="345"/>
         <source>4b Near-plane clipping (seed 002)</source>
         <translation>4b Near-plane clipping (seed 002)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="341"/>
+        <location filename="../app/window/main_window.cpp" line="348"/>
         <source>5b Trapezoids: the scan of seed 002</source>
         <translation>5b Trapezoids: the scan of seed 002</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="346"/>
+        <location filename="../app/window/main_window.cpp" line="353"/>
         <source>Painter</source>
         <translation>Painter</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="347"/>
+        <location filename="../app/window/main_window.cpp" line="354"/>
         <source>Painter&apos;s algorithm (seed 004)</source>
         <translation>Painter&apos;s algorithm (seed 004)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="355"/>
+        <location filename="../app/window/main_window.cpp" line="362"/>
         <source>Use the Fitted Lighting</source>
         <translation>Use the Fitted Lighting</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="363"/>
+        <location filename="../app/window/main_window.cpp" line="370"/>
         <source>Compare</source>
         <translation>Compare</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="363"/>
+        <location filename="../app/window/main_window.cpp" line="370"/>
         <source>Compare with their image</source>
         <translation>Compare with their image</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="921"/>
+        <location filename="../app/window/main_window.cpp" line="941"/>
         <source>Lesson: %1</source>
         <translation>Lesson: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="957"/>
+        <location filename="../app/window/main_window.cpp" line="977"/>
         <source>skipped: %1</source>
         <translation>skipped: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="960"/>
+        <location filename="../app/window/main_window.cpp" line="980"/>
         <source>Counts</source>
         <translation>Counts</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="961"/>
+        <location filename="../app/window/main_window.cpp" line="981"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="964"/>
+        <location filename="../app/window/main_window.cpp" line="984"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="967"/>
+        <location filename="../app/window/main_window.cpp" line="987"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="971"/>
+        <location filename="../app/window/main_window.cpp" line="991"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="995"/>
+        <location filename="../app/window/main_window.cpp" line="1015"/>
         <source>empty (+inf)</source>
         <translation>empty (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="996"/>
+        <location filename="../app/window/main_window.cpp" line="1016"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   depth %6</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1012"/>
+        <location filename="../app/window/main_window.cpp" line="1032"/>
         <source>Open Command File</source>
         <translation>Open Command File</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1013"/>
+        <location filename="../app/window/main_window.cpp" line="1033"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Command files (*.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1019"/>
+        <location filename="../app/window/main_window.cpp" line="1039"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1019"/>
+        <location filename="../app/window/main_window.cpp" line="1039"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1029"/>
+        <location filename="../app/window/main_window.cpp" line="1049"/>
         <source>Export PNG</source>
         <translation>Export PNG</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1029"/>
-        <location filename="../app/window/main_window_actions.cpp" line="153"/>
-        <location filename="../app/window/main_window_actions.cpp" line="160"/>
+        <location filename="../app/window/main_window.cpp" line="1049"/>
+        <location filename="../app/window/main_window_actions.cpp" line="154"/>
+        <location filename="../app/window/main_window_actions.cpp" line="161"/>
         <location filename="../app/window/main_window_export.cpp" line="198"/>
         <location filename="../app/window/main_window_export.cpp" line="206"/>
         <source>PNG images (*.png)</source>
         <translation>PNG images (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1034"/>
+        <location filename="../app/window/main_window.cpp" line="1054"/>
         <source>Compare with Image</source>
         <translation>Compare with Image</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1035"/>
+        <location filename="../app/window/main_window.cpp" line="1055"/>
         <source>PNG images (*.png);;All files (*)</source>
         <translation>PNG images (*.png);;All files (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/main_window.cpp" line="1064"/>
+        <location filename="../app/window/main_window.cpp" line="1084"/>
         <source>Compared %1 with our render: %n pixel(s) differ</source>
         <translation>
             <numerusform>Compared %1 with our render: %n pixel differs</numerusform>
@@ -5407,24 +5447,39 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1072"/>
+        <location filename="../app/window/main_window.cpp" line="1092"/>
         <source>About RasterLab</source>
         <translation>About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1078"/>
+        <location filename="../app/window/main_window.cpp" line="1098"/>
         <source>Released under the MIT License, whose text is in %1.</source>
         <translation>Released under the MIT License, whose text is in %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1080"/>
+        <location filename="../app/window/main_window.cpp" line="1100"/>
         <source>Released under the MIT License.</source>
         <translation>Released under the MIT License.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1081"/>
+        <location filename="../app/window/main_window.cpp" line="1101"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window.cpp" line="1143"/>
+        <source>the panels&apos; text larger, smaller, its normal size</source>
+        <translation>the panels&apos; text larger, smaller, its normal size</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window.cpp" line="1145"/>
+        <source>the image: zoom in, zoom out, fit, actual size (and the wheel)</source>
+        <translation>the image: zoom in, zoom out, fit, actual size (and the wheel)</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window.cpp" line="1158"/>
+        <source>These keys act wherever the focus is, a number box included (it keeps its digits and its up and down arrows).</source>
+        <translation>These keys act wherever the focus is, a number box included (it keeps its digits and its up and down arrows).</translation>
     </message>
     <message>
         <location filename="../app/window/main_window_export.cpp" line="42"/>
@@ -5553,12 +5608,12 @@
         <translation>%1 changed on disk: read again</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_docks.cpp" line="199"/>
+        <location filename="../app/window/main_window_docks.cpp" line="205"/>
         <source>%1 fills the window: F11 or a double-click on its title gives the layout back</source>
         <translation>%1 fills the window: F11 or a double-click on its title gives the layout back</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_docks.cpp" line="200"/>
+        <location filename="../app/window/main_window_docks.cpp" line="206"/>
         <source>The image</source>
         <translation>The image</translation>
     </message>
@@ -5659,7 +5714,7 @@
         <translation>The lesson opened, but not all of it: see the Messages dock</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="359"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="368"/>
         <source>%1: cannot save the lesson: %2</source>
         <translation>%1: cannot save the lesson: %2</translation>
     </message>
@@ -5677,6 +5732,21 @@
         <location filename="../app/window/main_window_check.cpp" line="29"/>
         <source>Cannot write their frame to %1</source>
         <translation>Cannot write their frame to %1</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="98"/>
+        <source>Lecture layout: the stage being stepped fills the screen (F7: your own layout)</source>
+        <translation>Lecture layout: the stage being stepped fills the screen (F7: your own layout)</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="100"/>
+        <source>Your own layout (F7: the lecture layout again)</source>
+        <translation>Your own layout (F7: the lecture layout again)</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="199"/>
+        <source>Text size %1 %</source>
+        <translation>Text size %1 %</translation>
     </message>
 </context>
 <context>

@@ -68,76 +68,76 @@
     </message>
     <message>
         <location filename="../app/documents/examples.cpp" line="30"/>
-        <source>A single triangle in a 32 x 24 image, large enough to read from the back of the room. Step by pixel (Step menu, or the arrow keys) and watch the scanline fill from its left edge to its right; pick a pixel to see its barycentric coordinates, its interpolated P and N, and its Phong terms in the pixel inspector.</source>
-        <translation>Um único triângulo numa imagem de 32 x 24, grande o bastante para ser lido do fundo da sala. Avance por pixel (menu Passo a passo, ou as setas) e veja a linha de varredura se preencher da aresta esquerda até a direita; escolha um pixel para ver no inspetor de pixel as suas coordenadas baricêntricas, o P e o N interpolados e os termos de Phong.</translation>
+        <source>A single triangle in a 32 x 24 image, large enough to read from the back of the room. Step by pixel (Page Down, or Right and Left in presentation mode, F5) and watch the scanline fill from its left edge to its right; pick a pixel to see its barycentric coordinates, its interpolated P and N, and its Phong terms in the pixel inspector.</source>
+        <translation>Um único triângulo numa imagem de 32 x 24, grande o bastante para ser lido do fundo da sala. Avance por pixel (Page Down, ou as setas para a direita e a esquerda no modo de apresentação, F5) e veja a linha de varredura se preencher da aresta esquerda até a direita; escolha um pixel para ver no inspetor de pixel as suas coordenadas baricêntricas, o P e o N interpolados e os termos de Phong.</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="38"/>
+        <location filename="../app/documents/examples.cpp" line="39"/>
         <source>Two triangles that cross (the z-buffer)</source>
         <translation>Dois triângulos que se cruzam (o z-buffer)</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="39"/>
+        <location filename="../app/documents/examples.cpp" line="40"/>
         <source>Two triangles that pass through each other: each is nearer the camera over half of the other, so no order of whole triangles draws them right. It opens at the start of the frame with a breakpoint at the second triangle: Continue to Breakpoint (F8) draws the first, then step by scanline through the second and watch the z-buffer dock: its pixels are kept above the crossing line and rejected below it. Pick a pixel near the crossing to compare both depths.</source>
         <translation>Dois triângulos que se atravessam: cada um está mais perto da câmera em metade do outro, então nenhuma ordem de triângulos inteiros os desenha certo. Abre no início do quadro com um ponto de parada no segundo triângulo: Continuar até o ponto de parada (F8) desenha o primeiro; depois avance por linha de varredura pelo segundo e observe o painel do z-buffer: os seus pixels ficam acima da linha de cruzamento e são rejeitados abaixo dela. Escolha um pixel perto do cruzamento para comparar as duas profundidades.</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="50"/>
+        <location filename="../app/documents/examples.cpp" line="51"/>
         <source>A triangle through the near plane</source>
         <translation>Um triângulo que atravessa o plano próximo</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="51"/>
+        <location filename="../app/documents/examples.cpp" line="52"/>
         <source>A triangle on the floor whose far corner is behind the camera. The near-plane clipping dock shows it cut at the near plane into a quad, and the quad split into two triangles. Then choose Shading &gt; Projection &gt; Plain Divide: the corner behind the eye is divided by a negative z and lands above the horizon.</source>
         <translation>Um triângulo no chão com um vértice atrás da câmera. O painel de recorte no plano próximo mostra-o cortado no plano próximo num quadrilátero, e o quadrilátero dividido em dois triângulos. Depois escolha Sombreamento &gt; Projeção &gt; Divisão simples: o vértice atrás do olho é dividido por um z negativo e vai parar acima do horizonte.</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="59"/>
+        <location filename="../app/documents/examples.cpp" line="60"/>
         <source>A goblet turned from a profile</source>
         <translation>Uma taça torneada a partir de um perfil</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="60"/>
+        <location filename="../app/documents/examples.cpp" line="61"/>
         <source>A goblet made by turning a profile around the y axis (the course&apos;s chalice idea, 1,520 triangles of our own). Start at the camera basis dock, then follow the stages in order: view coordinates, normals, projection, scan conversion, z-buffer and lighting. Pick a pixel on the highlight of the bowl to see why it is bright.</source>
         <translation>Uma taça feita girando um perfil em torno do eixo y (a ideia do cálice do curso, com 1.520 triângulos nossos). Comece pelo painel da base da câmera e siga as etapas em ordem: coordenadas de vista, normais, projeção, conversão por varredura, z-buffer e iluminação. Escolha um pixel no brilho do bojo para ver por que ele é claro.</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="68"/>
-        <source>A low-polygon sphere: flat, Gouraud, Phong</source>
-        <translation>Uma esfera de poucos polígonos: flat, Gouraud, Phong</translation>
-    </message>
-    <message>
         <location filename="../app/documents/examples.cpp" line="69"/>
-        <source>A sphere of 168 triangles. It opens in flat shading, one colour per triangle; press the Shading menu&apos;s Gouraud and then Phong to compare (File &gt; Export More &gt; Shading Side by Side puts the three in one picture). Gouraud smooths the facets but blurs the highlight; Phong draws it round.</source>
-        <translation>Uma esfera de 168 triângulos. Abre em sombreamento flat, uma cor por triângulo; escolha Gouraud e depois Phong no menu Sombreamento para comparar (Arquivo &gt; Exportar mais &gt; Sombreamentos lado a lado põe os três numa só figura). Gouraud suaviza as faces mas borra o brilho; Phong o desenha redondo.</translation>
+        <source>A low-polygon sphere: flat, Gouraud, Phong</source>
+        <translation>Uma esfera de poucos polígonos: plano, Gouraud, Phong</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="77"/>
+        <location filename="../app/documents/examples.cpp" line="70"/>
+        <source>A sphere of 168 triangles. It opens in flat shading, one colour per triangle; press the Shading menu&apos;s Gouraud and then Phong to compare (File &gt; Export More &gt; Shading Side by Side puts the three in one picture). Gouraud smooths the facets but blurs the highlight; Phong draws it round.</source>
+        <translation>Uma esfera de 168 triângulos. Abre em sombreamento plano, uma cor por triângulo; escolha Gouraud e depois Phong no menu Sombreamento para comparar (Arquivo &gt; Exportar mais &gt; Sombreamentos lado a lado põe os três numa só figura). Gouraud suaviza as faces mas borra o brilho; Phong o desenha redondo.</translation>
+    </message>
+    <message>
+        <location filename="../app/documents/examples.cpp" line="78"/>
         <source>Several lights: spot, directional, attenuated</source>
         <translation>Várias luzes: spot, direcional, atenuada</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="78"/>
+        <location filename="../app/documents/examples.cpp" line="79"/>
         <source>A floor and a ball under three lights of the lecture slides: a yellow spot (the bright disc, with a soft edge from its exponent), a dim blue directional light from the right, and a red positional light whose strength falls with distance. Pick pixels inside and outside the spot&apos;s cone and compare the pixel inspector&apos;s terms light by light; change the lights in the Edit dock.</source>
         <translation>Um chão e uma bola sob três luzes dos slides da aula: um spot amarelo (o disco claro, com a borda suave do seu expoente), uma luz direcional azul e fraca vinda da direita e uma luz pontual vermelha cuja intensidade cai com a distância. Escolha pixels dentro e fora do cone do spot e compare os termos do inspetor de pixel luz a luz; mude as luzes no painel Edição.</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="87"/>
+        <location filename="../app/documents/examples.cpp" line="88"/>
         <source>Three triangles in a cycle (the painter)</source>
         <translation>Três triângulos em ciclo (o pintor)</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="88"/>
+        <location filename="../app/documents/examples.cpp" line="89"/>
         <source>Three triangles that each lie in front of the next: no order of whole triangles can draw them right, so the painter&apos;s algorithm (far to near by barycentre) must fail somewhere. Step by triangle and see one painted over a nearer one; the painter&apos;s algorithm dock marks the pixels that differ from the z-buffer&apos;s image.</source>
         <translation>Três triângulos, cada um à frente do seguinte: nenhuma ordem de triângulos inteiros consegue desenhá-los certo, então o algoritmo do pintor (do mais longe ao mais perto, pelo baricentro) tem de falhar em algum lugar. Avance por triângulo e veja um deles pintado sobre outro mais próximo; o painel do algoritmo do pintor marca os pixels que diferem da imagem do z-buffer.</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="96"/>
+        <location filename="../app/documents/examples.cpp" line="97"/>
         <source>Gouraud&apos;s faults: Mach bands, a missed highlight</source>
         <translation>Os defeitos de Gouraud: bandas de Mach, um brilho perdido</translation>
     </message>
     <message>
-        <location filename="../app/documents/examples.cpp" line="97"/>
+        <location filename="../app/documents/examples.cpp" line="98"/>
         <source>Left, a coarse sphere in Gouraud shading: the brightness bends at every edge and the eye sees bands there (Mach bands). Right, a square of two triangles whose highlight falls between its corners: Gouraud lights only the corners and misses it. Switch to Phong shading and the highlight appears in the middle of the square.</source>
         <translation>À esquerda, uma esfera grosseira em sombreamento Gouraud: o brilho muda de inclinação em cada aresta e o olho vê faixas ali (bandas de Mach). À direita, um quadrado de dois triângulos cujo brilho cai entre os vértices: Gouraud ilumina só os vértices e o perde. Mude para o sombreamento Phong e o brilho aparece no meio do quadrado.</translation>
     </message>
@@ -1722,7 +1722,7 @@
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="508"/>
         <source>%1 is lit with flat normals</source>
-        <translation>%1 é iluminado com normais flat</translation>
+        <translation>%1 é iluminado com normais planas</translation>
     </message>
     <message>
         <location filename="../views/messages/pipeline_messages.cpp" line="509"/>
@@ -3137,7 +3137,7 @@
     <message>
         <location filename="../views/camera_basis_view.cpp" line="424"/>
         <source>frustum</source>
-        <translation>frustum</translation>
+        <translation>volume de visão</translation>
     </message>
     <message>
         <location filename="../views/camera_basis_view.cpp" line="439"/>
@@ -3275,7 +3275,7 @@
     <message>
         <location filename="../views/camera_basis_view.cpp" line="763"/>
         <source>The basis is complete; the frustum is drawn with it.</source>
-        <translation>A base está completa; o frustum é desenhado com ela.</translation>
+        <translation>A base está completa; o volume de visão (o frustum, tronco de pirâmide que a câmera vê) é desenhado com ela.</translation>
     </message>
     <message>
         <location filename="../views/camera_basis_view.cpp" line="776"/>
@@ -3966,7 +3966,7 @@
     <message>
         <location filename="../app/window/compare_panel.cpp" line="686"/>
         <source>The terms that would have to change are worked out for the course&apos;s lighting model in flat or Phong shading; this pixel is shaded otherwise (the pixel inspector shows how).</source>
-        <translation>Os termos que teriam de mudar são calculados para o modelo de iluminação do curso em sombreamento flat ou Phong; este pixel é sombreado de outro modo (o inspetor de pixel mostra como).</translation>
+        <translation>Os termos que teriam de mudar são calculados para o modelo de iluminação do curso em sombreamento plano ou Phong; este pixel é sombreado de outro modo (o inspetor de pixel mostra como).</translation>
     </message>
     <message>
         <location filename="../views/their_colour.cpp" line="62"/>
@@ -4230,12 +4230,12 @@
     <message>
         <location filename="../app/window/edit_panel.cpp" line="361"/>
         <source>Flat (per triangle)</source>
-        <translation>Flat (por triângulo)</translation>
+        <translation>Plano (uma cor por triângulo)</translation>
     </message>
     <message>
         <location filename="../app/window/edit_panel.cpp" line="362"/>
         <source>Painter&apos;s algorithm (flat, no depth test)</source>
-        <translation>Algoritmo do pintor (flat, sem teste de profundidade)</translation>
+        <translation>Algoritmo do pintor (plano, sem teste de profundidade)</translation>
     </message>
     <message>
         <location filename="../app/window/edit_panel.cpp" line="372"/>
@@ -4480,32 +4480,32 @@
 <context>
     <name>rasterlab::MainWindow</name>
     <message>
-        <location filename="../app/window/main_window.cpp" line="66"/>
+        <location filename="../app/window/main_window.cpp" line="68"/>
         <source>Open Camera</source>
         <translation>Abrir câmera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="68"/>
+        <location filename="../app/window/main_window.cpp" line="70"/>
         <source>Open Lighting</source>
         <translation>Abrir iluminação</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="70"/>
+        <location filename="../app/window/main_window.cpp" line="72"/>
         <source>Open Object</source>
         <translation>Abrir objeto</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="78"/>
+        <location filename="../app/window/main_window.cpp" line="80"/>
         <source>Camera files (*.cfg *.txt);;All files (*)</source>
         <translation>Arquivos de câmera (*.cfg *.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="80"/>
+        <location filename="../app/window/main_window.cpp" line="82"/>
         <source>Lighting files (*.txt *.lux);;All files (*)</source>
         <translation>Arquivos de iluminação (*.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="82"/>
+        <location filename="../app/window/main_window.cpp" line="84"/>
         <source>Objects (*.byu *.txt);;All files (*)</source>
         <translation>Objetos (*.byu *.txt);;Todos os arquivos (*)</translation>
     </message>
@@ -4515,116 +4515,116 @@
         <translation>Detectar pelo arquivo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="91"/>
+        <location filename="../app/window/main_window.cpp" line="93"/>
         <source>flat</source>
-        <translation>flat</translation>
+        <translation>plano</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="93"/>
+        <location filename="../app/window/main_window.cpp" line="95"/>
         <location filename="../app/window/main_window_export.cpp" line="70"/>
         <source>Gouraud</source>
         <translation>Gouraud</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="95"/>
+        <location filename="../app/window/main_window.cpp" line="97"/>
         <location filename="../app/window/main_window_export.cpp" line="70"/>
         <source>Phong</source>
         <translation>Phong</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="97"/>
+        <location filename="../app/window/main_window.cpp" line="99"/>
         <source>painter&apos;s-algorithm flat</source>
-        <translation>flat do algoritmo do pintor</translation>
+        <translation>plano do algoritmo do pintor</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="106"/>
+        <location filename="../app/window/main_window.cpp" line="108"/>
         <source>%1 (built in)</source>
         <translation>%1 (embutido)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="114"/>
+        <location filename="../app/window/main_window.cpp" line="116"/>
         <source>RasterLab</source>
         <translation>RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="170"/>
+        <location filename="../app/window/main_window.cpp" line="172"/>
         <source>Stopped at a breakpoint: %1</source>
         <translation>Parado num ponto de parada: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="203"/>
+        <location filename="../app/window/main_window.cpp" line="210"/>
         <location filename="../app/window/main_window_export.cpp" line="122"/>
         <location filename="../app/window/main_window_export.cpp" line="159"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="204"/>
+        <location filename="../app/window/main_window.cpp" line="211"/>
         <source>Stop preparing the stepping of this frame</source>
         <translation>Parar a preparação do passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="208"/>
+        <location filename="../app/window/main_window.cpp" line="215"/>
         <source>cancelled</source>
         <translation>cancelado</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="266"/>
+        <location filename="../app/window/main_window.cpp" line="273"/>
         <source>Stepping</source>
         <translation>Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="290"/>
+        <location filename="../app/window/main_window.cpp" line="297"/>
         <source>Edit</source>
         <translation>Edição</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="297"/>
+        <location filename="../app/window/main_window.cpp" line="304"/>
         <source>Breakpoints</source>
         <translation>Pontos de parada</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="303"/>
+        <location filename="../app/window/main_window.cpp" line="310"/>
         <source>Animation</source>
         <translation>Animação</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="322"/>
+        <location filename="../app/window/main_window.cpp" line="329"/>
         <source>1 Camera basis</source>
         <translation>1 Base da câmera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="294"/>
+        <location filename="../app/window/main_window.cpp" line="301"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Inspetor de pixel (iluminação)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="329"/>
+        <location filename="../app/window/main_window.cpp" line="336"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 Coordenadas de vista (vértices)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="331"/>
+        <location filename="../app/window/main_window.cpp" line="338"/>
         <source>3 Normals</source>
         <translation>3 Normais</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="333"/>
+        <location filename="../app/window/main_window.cpp" line="340"/>
         <source>4 Projection</source>
         <translation>4 Projeção</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="325"/>
+        <location filename="../app/window/main_window.cpp" line="332"/>
         <source>5 Scan conversion</source>
         <translation>5 Conversão por varredura</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="339"/>
+        <location filename="../app/window/main_window.cpp" line="346"/>
         <source>5b Trapezoids</source>
         <translation>5b Trapézios</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="343"/>
+        <location filename="../app/window/main_window.cpp" line="350"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
     </message>
@@ -4634,42 +4634,47 @@
         <translation>&amp;Arquivo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="166"/>
+        <location filename="../app/window/main_window_actions.cpp" line="167"/>
         <source>&amp;Animation Frames...</source>
         <translation>&amp;Quadros da animação...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="302"/>
+        <location filename="../app/window/main_window_actions.cpp" line="351"/>
         <source>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</source>
-        <translation>&amp;Algoritmo do pintor (flat, do mais distante ao mais próximo, sem teste de profundidade)</translation>
+        <translation>&amp;Algoritmo do pintor (plano, do mais distante ao mais próximo, sem teste de profundidade)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1102"/>
+        <location filename="../app/window/main_window.cpp" line="1122"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>avançar, voltar um passo (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1104"/>
+        <location filename="../app/window/main_window.cpp" line="1124"/>
         <source>Space</source>
         <translation>Barra de espaço</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1104"/>
+        <location filename="../app/window/main_window.cpp" line="1124"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>reproduzir / pausar (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1110"/>
+        <location filename="../app/window/main_window.cpp" line="1130"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>soltar o pixel escolhido (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1111"/>
+        <location filename="../app/window/main_window.cpp" line="1131"/>
         <source>presentation mode on / off</source>
         <translation>ligar / desligar o modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1116"/>
+        <location filename="../app/window/main_window.cpp" line="1137"/>
+        <source>fill the window with the panel under the pointer (in the lecture layout, the stage&apos;s), and back</source>
+        <translation>preencher a janela com o painel sob o ponteiro (no layout de aula, o da etapa), e voltar</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window.cpp" line="1141"/>
         <source>save, undo, redo</source>
         <translation>salvar, desfazer, refazer</translation>
     </message>
@@ -4679,7 +4684,7 @@
         <translation>Abrir &amp;câmera...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="135"/>
+        <location filename="../app/window/main_window.cpp" line="137"/>
         <source>Draw with the Plain Divide</source>
         <translation>Desenhar com a divisão simples</translation>
     </message>
@@ -4754,32 +4759,32 @@
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="143"/>
+        <location filename="../app/window/main_window_actions.cpp" line="144"/>
         <source>&amp;Colour Buffer at the Cursor...</source>
         <translation>Buffer de &amp;cor no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="145"/>
+        <location filename="../app/window/main_window_actions.cpp" line="146"/>
         <source>D&amp;epth Buffer at the Cursor...</source>
         <translation>Buffer de pro&amp;fundidade no cursor...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="147"/>
+        <location filename="../app/window/main_window_actions.cpp" line="148"/>
         <source>&amp;Normal Buffer...</source>
         <translation>Buffer de &amp;normais...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="148"/>
+        <location filename="../app/window/main_window_actions.cpp" line="149"/>
         <source>A &amp;View as Displayed</source>
         <translation>Um &amp;painel como exibido</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="152"/>
+        <location filename="../app/window/main_window_actions.cpp" line="153"/>
         <source>Export View</source>
         <translation>Exportar painel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="164"/>
+        <location filename="../app/window/main_window_actions.cpp" line="165"/>
         <source>&amp;Stepping Sequence...</source>
         <translation>&amp;Sequência de passos...</translation>
     </message>
@@ -4809,282 +4814,312 @@
         <translation>As etapas do seu próprio renderizador, cada uma comparada à da aula pelo protocolo de etapas</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="157"/>
+        <location filename="../app/window/main_window_actions.cpp" line="158"/>
         <source>Shading Side &amp;by Side...</source>
         <translation>Sombreamentos &amp;lado a lado...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="159"/>
+        <location filename="../app/window/main_window_actions.cpp" line="160"/>
         <source>Export Shading Side by Side</source>
         <translation>Exportar os sombreamentos lado a lado</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="171"/>
+        <location filename="../app/window/main_window_actions.cpp" line="172"/>
         <source>&amp;Edit</source>
         <translation>&amp;Editar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="177"/>
+        <location filename="../app/window/main_window_actions.cpp" line="178"/>
         <source>&amp;View</source>
         <translation>E&amp;xibir</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="178"/>
+        <location filename="../app/window/main_window_actions.cpp" line="182"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Ajustar à janela</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="179"/>
-        <source>Ctrl+0</source>
-        <translation>Ctrl+0</translation>
-    </message>
-    <message>
-        <location filename="../app/window/main_window_actions.cpp" line="181"/>
+        <location filename="../app/window/main_window_actions.cpp" line="186"/>
         <source>&amp;Actual Size</source>
         <translation>&amp;Tamanho real</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="182"/>
-        <source>Ctrl+1</source>
-        <translation>Ctrl+1</translation>
-    </message>
-    <message>
-        <location filename="../app/window/main_window_actions.cpp" line="183"/>
+        <location filename="../app/window/main_window_actions.cpp" line="188"/>
         <source>Zoom &amp;In</source>
         <translation>A&amp;umentar zoom</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="185"/>
+        <location filename="../app/window/main_window_actions.cpp" line="192"/>
         <source>Zoom &amp;Out</source>
         <translation>&amp;Diminuir zoom</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="192"/>
+        <location filename="../app/window/main_window_actions.cpp" line="202"/>
         <source>Reset &amp;Layout</source>
         <translation>Restaurar &amp;layout</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="194"/>
+        <location filename="../app/window/main_window_actions.cpp" line="204"/>
         <source>Fill the &amp;Window with a Panel</source>
         <translation>&amp;Preencher a janela com um painel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="198"/>
+        <location filename="../app/window/main_window_actions.cpp" line="208"/>
         <source>The panel with the focus or under the mouse (the image, from the image) over the whole window; again, the layout back</source>
         <translation>O painel com o foco ou sob o mouse (a imagem, a partir da imagem) sobre a janela inteira; de novo, o layout de volta</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="206"/>
+        <location filename="../app/window/main_window_actions.cpp" line="216"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="211"/>
+        <location filename="../app/window/main_window_actions.cpp" line="221"/>
         <source>Larger text, thicker overlays, high contrast; the clicker&apos;s keys step (F5 or Esc)</source>
         <translation>Texto maior, sobreposições mais grossas, alto contraste; as teclas do passador de slides avançam os passos (F5 ou Esc)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="226"/>
+        <location filename="../app/window/main_window_actions.cpp" line="223"/>
+        <source>&amp;Lecture Layout</source>
+        <translation>Layout de &amp;aula</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="229"/>
+        <source>In presentation mode, the stage being stepped fills the screen, the image beside it once something is drawn; off, your own layout (F7)</source>
+        <translation>No modo de apresentação, a etapa em que se avança ocupa a tela, com a imagem ao lado assim que algo é desenhado; desligado, o seu próprio layout (F7)</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="232"/>
+        <source>Live &amp;Edits in Presentation</source>
+        <translation>&amp;Edição ao vivo na apresentação</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="237"/>
+        <source>The Edit panel stays on screen in presentation mode: the light and the material change in front of the class (F9)</source>
+        <translation>O painel Editar fica na tela no modo de apresentação: a luz e o material mudam diante da turma (F9)</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="251"/>
+        <source>&amp;Text Size</source>
+        <translation>&amp;Tamanho do texto</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="253"/>
+        <source>&amp;Larger</source>
+        <translation>&amp;Maior</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="256"/>
+        <source>&amp;Smaller</source>
+        <translation>Me&amp;nor</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="259"/>
+        <source>&amp;Normal Size</source>
+        <translation>Tamanho &amp;normal</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="271"/>
         <source>The System&apos;s</source>
         <translation>Do sistema</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="245"/>
+        <location filename="../app/window/main_window_actions.cpp" line="290"/>
         <source>S&amp;tep</source>
         <translation>&amp;Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="265"/>
+        <location filename="../app/window/main_window_actions.cpp" line="314"/>
         <source>Pick the Pixel Under the &amp;Mouse</source>
         <translation>Escolher o pixel sob o &amp;mouse</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="266"/>
+        <location filename="../app/window/main_window_actions.cpp" line="315"/>
         <source>Ctrl+G</source>
         <translation>Ctrl+G</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="295"/>
+        <location filename="../app/window/main_window_actions.cpp" line="344"/>
         <source>&amp;Shading</source>
         <translation>&amp;Sombreamento</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="299"/>
+        <location filename="../app/window/main_window_actions.cpp" line="348"/>
         <source>&amp;Phong (per pixel)</source>
         <translation>&amp;Phong (por pixel)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="300"/>
+        <location filename="../app/window/main_window_actions.cpp" line="349"/>
         <source>&amp;Gouraud (per vertex)</source>
         <translation>&amp;Gouraud (por vértice)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="301"/>
+        <location filename="../app/window/main_window_actions.cpp" line="350"/>
         <source>&amp;Flat (per triangle)</source>
-        <translation>&amp;Flat (por triângulo)</translation>
+        <translation>&amp;Plano (uma cor por triângulo)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="343"/>
+        <location filename="../app/window/main_window_actions.cpp" line="392"/>
         <source>Pro&amp;jection</source>
         <translation>Pro&amp;jeção</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="348"/>
+        <location filename="../app/window/main_window_actions.cpp" line="397"/>
         <source>&amp;Clip at the Near Plane (nothing behind the eye is divided)</source>
         <translation>&amp;Recortar no plano próximo (nada atrás do olho é dividido)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="350"/>
+        <location filename="../app/window/main_window_actions.cpp" line="399"/>
         <source>&amp;Plain Divide, No Clipping (seed 000 as written; seed 001&apos;s HW2)</source>
         <translation>&amp;Divisão simples, sem recorte (a seed 000 como escrita; o HW2 da seed 001)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="352"/>
+        <location filename="../app/window/main_window_actions.cpp" line="401"/>
         <source>&amp;Same Side (clip only triangles that cross the eye plane)</source>
         <translation>&amp;Mesmo lado (recortar só os triângulos que cruzam o plano do olho)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="688"/>
+        <location filename="../app/window/main_window.cpp" line="708"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Todos os triângulos estão atrás da câmera (N aponta para longe do objeto?), então o recorte no plano próximo não deixa nada para desenhar. A fórmula da seed 000 divide por z mesmo assim: desenharia %1 dos %2 triângulos como a reflexão do objeto pelo olho, girada meia volta na tela, e o z-buffer (que guarda o menor z) guardaria o lado mais distante da câmera. A vista lateral da projeção mostra o olho, N e o objeto.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="993"/>
+        <location filename="../app/window/main_window.cpp" line="1013"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1085"/>
+        <location filename="../app/window/main_window.cpp" line="1105"/>
         <source>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</source>
-        <translation>&lt;p&gt;Segue as disciplinas para as quais foi feito: os projetos da disciplina de computação gráfica da UFPE e da UFRPE (sombreamento de Phong com z-buffer, e sua variante com sombreamento flat e o algoritmo do pintor), o trabalho “HW2: 3D Rasterizer”, o pipeline de renderização por quadro de uma disciplina de animação, e os slides da aula do Prof. Jonh Edson R. de Carvalho sobre modelos de iluminação (“Modelos de Iluminação”).&lt;/p&gt;</translation>
+        <translation>&lt;p&gt;Segue as disciplinas para as quais foi feito: os projetos da disciplina de computação gráfica da UFPE e da UFRPE (sombreamento de Phong com z-buffer, e sua variante com sombreamento plano e o algoritmo do pintor), o trabalho “HW2: 3D Rasterizer”, o pipeline de renderização por quadro de uma disciplina de animação, e os slides da aula do Prof. Jonh Edson R. de Carvalho sobre modelos de iluminação (“Modelos de Iluminação”).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1099"/>
+        <location filename="../app/window/main_window.cpp" line="1119"/>
         <source>step forward</source>
         <translation>avançar um passo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1100"/>
+        <location filename="../app/window/main_window.cpp" line="1120"/>
         <source>step back</source>
         <translation>voltar um passo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1103"/>
+        <location filename="../app/window/main_window.cpp" line="1123"/>
         <source>play / pause</source>
         <translation>reproduzir / pausar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1105"/>
+        <location filename="../app/window/main_window.cpp" line="1125"/>
         <source>jump to the start / the end of the frame</source>
         <translation>ir ao início / ao fim do quadro</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1106"/>
+        <location filename="../app/window/main_window.cpp" line="1126"/>
         <source>continue to the next breakpoint</source>
         <translation>continuar até o próximo ponto de parada</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1107"/>
+        <location filename="../app/window/main_window.cpp" line="1127"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>avançar por etapa, triângulo, linha de varredura, segmento, pixel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1108"/>
+        <location filename="../app/window/main_window.cpp" line="1128"/>
         <source>show a stage&apos;s view</source>
         <translation>mostrar o painel de uma etapa</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1109"/>
+        <location filename="../app/window/main_window.cpp" line="1129"/>
         <source>Click, arrows</source>
         <translation>Clique, setas</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1109"/>
+        <location filename="../app/window/main_window.cpp" line="1129"/>
         <source>pick a pixel, move it by one</source>
         <translation>escolher um pixel, movê-lo de um em um</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1112"/>
+        <location filename="../app/window/main_window.cpp" line="1133"/>
+        <source>presentation mode: the lecture layout (the stage being stepped fills the screen) or your own layout</source>
+        <translation>modo de apresentação: o layout de aula (a etapa em que se avança ocupa a tela) ou o seu próprio layout</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window.cpp" line="1135"/>
+        <source>presentation mode: the Edit panel on screen (live edits)</source>
+        <translation>modo de apresentação: o painel Editar na tela (edição ao vivo)</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window.cpp" line="1136"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, duplo clique no título de um painel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1113"/>
-        <source>fill the window with the panel (the image, from the image), and back</source>
-        <translation>preencher a janela com o painel (a imagem, a partir da imagem), e voltar</translation>
-    </message>
-    <message>
-        <location filename="../app/window/main_window.cpp" line="1115"/>
+        <location filename="../app/window/main_window.cpp" line="1140"/>
         <source>open, export the image, export it as displayed</source>
         <translation>abrir, exportar a imagem, exportá-la como exibida</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1118"/>
-        <source>fit, actual size, zoom in, zoom out</source>
-        <translation>ajustar, tamanho real, aumentar zoom, diminuir zoom</translation>
-    </message>
-    <message>
-        <location filename="../app/window/main_window.cpp" line="1120"/>
+        <location filename="../app/window/main_window.cpp" line="1166"/>
         <source>Keyboard Shortcuts</source>
         <translation>Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="320"/>
+        <location filename="../app/window/main_window_actions.cpp" line="369"/>
         <source>&amp;Rasterization Rules</source>
         <translation>&amp;Regras de rasterização</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="325"/>
+        <location filename="../app/window/main_window_actions.cpp" line="374"/>
         <source>&amp;Course (seed 000: whole-pixel vertices, screen-space interpolation)</source>
         <translation>&amp;Curso (semente 000: vértices em pixels inteiros, interpolação no espaço da tela)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="327"/>
+        <location filename="../app/window/main_window_actions.cpp" line="376"/>
         <source>&amp;GPU-like (1/256-pixel vertices, pixel centres, top-left rule, perspective-correct)</source>
         <translation>Como uma &amp;GPU (vértices em 1/256 de pixel, centros dos pixels, regra top-left, correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="329"/>
+        <location filename="../app/window/main_window_actions.cpp" line="378"/>
         <source>&amp;HW2 (seed 001&apos;s reference images)</source>
         <translation>&amp;HW2 (as imagens de referência da semente 001)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="366"/>
+        <location filename="../app/window/main_window_actions.cpp" line="415"/>
         <source>&amp;Help</source>
         <translation>A&amp;juda</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="372"/>
+        <location filename="../app/window/main_window_actions.cpp" line="421"/>
         <source>&amp;User Guide</source>
         <translation>&amp;Guia do usuário</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="378"/>
+        <location filename="../app/window/main_window_actions.cpp" line="427"/>
         <source>The user guide is not installed</source>
         <translation>O guia do usuário não está instalado</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="380"/>
+        <location filename="../app/window/main_window_actions.cpp" line="429"/>
         <source>&amp;About RasterLab</source>
         <translation>&amp;Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="275"/>
+        <location filename="../app/window/main_window.cpp" line="282"/>
         <source>Messages</source>
         <translation>Mensagens</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="280"/>
+        <location filename="../app/window/main_window.cpp" line="287"/>
         <source>Scene</source>
         <translation>Cena</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="300"/>
+        <location filename="../app/window/main_window.cpp" line="307"/>
         <source>Accuracy</source>
         <translation>Exatidão</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="662"/>
+        <location filename="../app/window/main_window.cpp" line="682"/>
         <location filename="../app/window/main_window_export.cpp" line="35"/>
         <location filename="../app/window/main_window_export.cpp" line="133"/>
         <location filename="../app/window/main_window_export.cpp" line="175"/>
@@ -5103,18 +5138,18 @@
         <translation>Exportado %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="715"/>
+        <location filename="../app/window/main_window.cpp" line="735"/>
         <source>rendering...</source>
         <translation>renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="715"/>
+        <location filename="../app/window/main_window.cpp" line="735"/>
         <source>%1, rendering...</source>
         <translation>%1, renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="713"/>
-        <location filename="../app/window/main_window.cpp" line="956"/>
+        <location filename="../app/window/main_window.cpp" line="733"/>
+        <location filename="../app/window/main_window.cpp" line="976"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -5144,262 +5179,267 @@
         <translation>&amp;Formatos dos arquivos do curso</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="188"/>
+        <location filename="../app/window/main_window_actions.cpp" line="180"/>
+        <source>Image &amp;Zoom</source>
+        <translation>&amp;Zoom da imagem</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_actions.cpp" line="198"/>
         <source>Pa&amp;nels</source>
         <translation>&amp;Painéis</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="203"/>
+        <location filename="../app/window/main_window_actions.cpp" line="213"/>
         <source>I&amp;mage</source>
         <translation>&amp;Imagem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="221"/>
+        <location filename="../app/window/main_window_actions.cpp" line="266"/>
         <source>Lan&amp;guage</source>
         <translation>Idi&amp;oma</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="254"/>
+        <location filename="../app/window/main_window_actions.cpp" line="299"/>
         <source>Step B&amp;y</source>
         <translation>Avançar &amp;por</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="256"/>
+        <location filename="../app/window/main_window_actions.cpp" line="301"/>
         <source>S&amp;tage</source>
         <translation>&amp;Etapa</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_actions.cpp" line="367"/>
+        <location filename="../app/window/main_window_actions.cpp" line="416"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="394"/>
+        <location filename="../app/window/main_window.cpp" line="401"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Apresentação: F5 ou Esc sai; Page Down, → e Espaço avançam e reproduzem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="645"/>
+        <location filename="../app/window/main_window.cpp" line="665"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="723"/>
+        <location filename="../app/window/main_window.cpp" line="743"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparando o passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="723"/>
+        <location filename="../app/window/main_window.cpp" line="743"/>
         <source>Rendering</source>
         <translation>Renderizando</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="899"/>
+        <location filename="../app/window/main_window.cpp" line="919"/>
         <source>Error: %1</source>
         <translation>Erro: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="923"/>
+        <location filename="../app/window/main_window.cpp" line="943"/>
         <source>Files</source>
         <translation>Arquivos</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="926"/>
+        <location filename="../app/window/main_window.cpp" line="946"/>
         <source>Command file</source>
         <translation>Arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="927"/>
+        <location filename="../app/window/main_window.cpp" line="947"/>
         <source>Image</source>
         <translation>Imagem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="929"/>
+        <location filename="../app/window/main_window.cpp" line="949"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vértices, %2 triângulos em %3 desenhos; %4 x %5 pixels; %6 luzes</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="939"/>
+        <location filename="../app/window/main_window.cpp" line="959"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="940"/>
+        <location filename="../app/window/main_window.cpp" line="960"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="941"/>
+        <location filename="../app/window/main_window.cpp" line="961"/>
         <source>Object</source>
         <translation>Objeto</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="943"/>
+        <location filename="../app/window/main_window.cpp" line="963"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vértices, %2 triângulos; %3 x %4 pixels, sombreamento %5</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="260"/>
-        <location filename="../app/window/main_window.cpp" line="950"/>
+        <location filename="../app/window/main_window.cpp" line="267"/>
+        <location filename="../app/window/main_window.cpp" line="970"/>
         <source>Stages</source>
         <translation>Etapas</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="104"/>
+        <location filename="../app/window/main_window.cpp" line="106"/>
         <source>%1 (the %2 example)</source>
         <translation>%1 (o exemplo %2)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="293"/>
+        <location filename="../app/window/main_window.cpp" line="300"/>
         <source>7 Pixel inspector</source>
         <translation>7 Inspetor de pixel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="322"/>
+        <location filename="../app/window/main_window.cpp" line="329"/>
         <source>1 Camera</source>
         <translation>1 Câmera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="325"/>
+        <location filename="../app/window/main_window.cpp" line="332"/>
         <source>5 Scan</source>
         <translation>5 Varredura</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="328"/>
+        <location filename="../app/window/main_window.cpp" line="335"/>
         <source>2 View</source>
         <translation>2 Vista</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="336"/>
+        <location filename="../app/window/main_window.cpp" line="343"/>
         <source>4b Clipping</source>
         <translation>4b Recorte</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="338"/>
+        <location filename="../app/window/main_window.cpp" line="345"/>
         <source>4b Near-plane clipping (seed 002)</source>
         <translation>4b Recorte no plano próximo (semente 002)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="341"/>
+        <location filename="../app/window/main_window.cpp" line="348"/>
         <source>5b Trapezoids: the scan of seed 002</source>
         <translation>5b Trapézios: a varredura da semente 002</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="346"/>
+        <location filename="../app/window/main_window.cpp" line="353"/>
         <source>Painter</source>
         <translation>Pintor</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="347"/>
+        <location filename="../app/window/main_window.cpp" line="354"/>
         <source>Painter&apos;s algorithm (seed 004)</source>
         <translation>Algoritmo do pintor (semente 004)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="355"/>
+        <location filename="../app/window/main_window.cpp" line="362"/>
         <source>Use the Fitted Lighting</source>
         <translation>Usar a Iluminação Ajustada</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="363"/>
+        <location filename="../app/window/main_window.cpp" line="370"/>
         <source>Compare</source>
         <translation>Comparar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="363"/>
+        <location filename="../app/window/main_window.cpp" line="370"/>
         <source>Compare with their image</source>
         <translation>Comparar com a imagem deles</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="921"/>
+        <location filename="../app/window/main_window.cpp" line="941"/>
         <source>Lesson: %1</source>
         <translation>Aula: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="957"/>
+        <location filename="../app/window/main_window.cpp" line="977"/>
         <source>skipped: %1</source>
         <translation>omitida: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="960"/>
+        <location filename="../app/window/main_window.cpp" line="980"/>
         <source>Counts</source>
         <translation>Contagens</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="961"/>
+        <location filename="../app/window/main_window.cpp" line="981"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triângulos recortados no plano próximo: %1; atrás da câmera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="964"/>
+        <location filename="../app/window/main_window.cpp" line="984"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Triângulos de área zero: %1 no espaço de vista, %2 na tela&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="967"/>
+        <location filename="../app/window/main_window.cpp" line="987"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragmentos testados: %1; escritos: %2; rejeitados: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="971"/>
+        <location filename="../app/window/main_window.cpp" line="991"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels sombreados: %1; normais voltadas para o observador: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; limitados a 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="995"/>
+        <location filename="../app/window/main_window.cpp" line="1015"/>
         <source>empty (+inf)</source>
         <translation>vazio (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="996"/>
+        <location filename="../app/window/main_window.cpp" line="1016"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   profundidade %6</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1012"/>
+        <location filename="../app/window/main_window.cpp" line="1032"/>
         <source>Open Command File</source>
         <translation>Abrir arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1013"/>
+        <location filename="../app/window/main_window.cpp" line="1033"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Arquivos de comandos (*.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1019"/>
+        <location filename="../app/window/main_window.cpp" line="1039"/>
         <source>Open</source>
         <translation>Abrir</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1019"/>
+        <location filename="../app/window/main_window.cpp" line="1039"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Arquivos de cena (*.byu *.cfg *.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1029"/>
+        <location filename="../app/window/main_window.cpp" line="1049"/>
         <source>Export PNG</source>
         <translation>Exportar PNG</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1029"/>
-        <location filename="../app/window/main_window_actions.cpp" line="153"/>
-        <location filename="../app/window/main_window_actions.cpp" line="160"/>
+        <location filename="../app/window/main_window.cpp" line="1049"/>
+        <location filename="../app/window/main_window_actions.cpp" line="154"/>
+        <location filename="../app/window/main_window_actions.cpp" line="161"/>
         <location filename="../app/window/main_window_export.cpp" line="198"/>
         <location filename="../app/window/main_window_export.cpp" line="206"/>
         <source>PNG images (*.png)</source>
         <translation>Imagens PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1034"/>
+        <location filename="../app/window/main_window.cpp" line="1054"/>
         <source>Compare with Image</source>
         <translation>Comparar com imagem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1035"/>
+        <location filename="../app/window/main_window.cpp" line="1055"/>
         <source>PNG images (*.png);;All files (*)</source>
         <translation>Imagens PNG (*.png);;Todos os arquivos (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/main_window.cpp" line="1064"/>
+        <location filename="../app/window/main_window.cpp" line="1084"/>
         <source>Compared %1 with our render: %n pixel(s) differ</source>
         <translation>
             <numerusform>%1 comparada com a nossa renderização: %n pixel difere</numerusform>
@@ -5407,24 +5447,39 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1072"/>
+        <location filename="../app/window/main_window.cpp" line="1092"/>
         <source>About RasterLab</source>
         <translation>Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1078"/>
+        <location filename="../app/window/main_window.cpp" line="1098"/>
         <source>Released under the MIT License, whose text is in %1.</source>
         <translation>Distribuído sob a Licença MIT, cujo texto está em %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1080"/>
+        <location filename="../app/window/main_window.cpp" line="1100"/>
         <source>Released under the MIT License.</source>
         <translation>Distribuído sob a Licença MIT.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1081"/>
+        <location filename="../app/window/main_window.cpp" line="1101"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;O pipeline clássico de rasterização por software, etapa por etapa: base da câmera, coordenadas de vista, normais, projeção, conversão por varredura, teste de profundidade e sombreamento.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window.cpp" line="1143"/>
+        <source>the panels&apos; text larger, smaller, its normal size</source>
+        <translation>o texto dos painéis maior, menor, no tamanho normal</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window.cpp" line="1145"/>
+        <source>the image: zoom in, zoom out, fit, actual size (and the wheel)</source>
+        <translation>a imagem: aproximar, afastar, ajustar, tamanho real (e a roda do mouse)</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window.cpp" line="1158"/>
+        <source>These keys act wherever the focus is, a number box included (it keeps its digits and its up and down arrows).</source>
+        <translation>Estas teclas agem onde quer que esteja o foco, inclusive numa caixa de número (ela fica com os seus dígitos e as suas setas para cima e para baixo).</translation>
     </message>
     <message>
         <location filename="../app/window/main_window_export.cpp" line="42"/>
@@ -5449,7 +5504,7 @@
     <message>
         <location filename="../app/window/main_window_export.cpp" line="70"/>
         <source>Flat</source>
-        <translation>Flat</translation>
+        <translation>Plano</translation>
     </message>
     <message>
         <location filename="../app/window/main_window_export.cpp" line="104"/>
@@ -5553,12 +5608,12 @@
         <translation>%1 mudou no disco: lido de novo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_docks.cpp" line="199"/>
+        <location filename="../app/window/main_window_docks.cpp" line="205"/>
         <source>%1 fills the window: F11 or a double-click on its title gives the layout back</source>
         <translation>%1 preenche a janela: F11 ou um duplo clique no seu título devolve o layout</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_docks.cpp" line="200"/>
+        <location filename="../app/window/main_window_docks.cpp" line="206"/>
         <source>The image</source>
         <translation>A imagem</translation>
     </message>
@@ -5659,7 +5714,7 @@
         <translation>A aula abriu, mas não inteira: veja o painel Mensagens</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="359"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="368"/>
         <source>%1: cannot save the lesson: %2</source>
         <translation>%1: não é possível salvar a aula: %2</translation>
     </message>
@@ -5677,6 +5732,21 @@
         <location filename="../app/window/main_window_check.cpp" line="29"/>
         <source>Cannot write their frame to %1</source>
         <translation>Não é possível gravar o quadro deles em %1</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="98"/>
+        <source>Lecture layout: the stage being stepped fills the screen (F7: your own layout)</source>
+        <translation>Layout de aula: a etapa em que se avança ocupa a tela (F7: o seu próprio layout)</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="100"/>
+        <source>Your own layout (F7: the lecture layout again)</source>
+        <translation>O seu próprio layout (F7: o layout de aula de novo)</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="199"/>
+        <source>Text size %1 %</source>
+        <translation>Tamanho do texto %1 %</translation>
     </message>
 </context>
 <context>
@@ -5997,7 +6067,7 @@
     <message>
         <location filename="../views/normals_view.cpp" line="74"/>
         <source>Per pixel at the stepping cursor, the unit normal shading uses there: the vertex normals interpolated with the pixel&apos;s barycentrics and normalised (the triangle&apos;s normal for flat shading), turned toward the viewer as the course does before lighting; shown as RGB = (n + 1) / 2. Red grows to the right, green upward, blue away from the camera: turned normals face the camera, so blue is mostly below 128. Black: no triangle.</source>
-        <translation>Por pixel, no cursor de passo, a normal unitária que o sombreamento usa ali: as normais dos vértices interpoladas com as coordenadas baricêntricas do pixel e normalizadas (a normal do triângulo no sombreamento flat), voltadas para o observador como o curso faz antes da iluminação; mostrada como RGB = (n + 1) / 2. O vermelho cresce para a direita, o verde para cima, o azul para longe da câmera: as normais voltadas encaram a câmera, então o azul fica quase sempre abaixo de 128. Preto: nenhum triângulo.</translation>
+        <translation>Por pixel, no cursor de passo, a normal unitária que o sombreamento usa ali: as normais dos vértices interpoladas com as coordenadas baricêntricas do pixel e normalizadas (a normal do triângulo no sombreamento plano), voltadas para o observador como o curso faz antes da iluminação; mostrada como RGB = (n + 1) / 2. O vermelho cresce para a direita, o verde para cima, o azul para longe da câmera: as normais voltadas encaram a câmera, então o azul fica quase sempre abaixo de 128. Preto: nenhum triângulo.</translation>
     </message>
     <message>
         <location filename="../views/normals_view.cpp" line="88"/>
@@ -6178,7 +6248,7 @@
     <message>
         <location filename="../views/normals_view.cpp" line="412"/>
         <source>the triangle&apos;s normal (flat) %1</source>
-        <translation>a normal do triângulo (flat) %1</translation>
+        <translation>a normal do triângulo (plana) %1</translation>
     </message>
     <message>
         <location filename="../views/normals_view.cpp" line="414"/>
@@ -6665,7 +6735,7 @@
     <message>
         <location filename="../views/lighting_breakdown.cpp" line="251"/>
         <source>Painter&apos;s algorithm: lit as flat shading, once at the triangle&apos;s barycentre; the triangles are painted far to near without a depth test.</source>
-        <translation>Algoritmo do pintor: iluminado como no sombreamento flat, uma vez no baricentro do triângulo; os triângulos são pintados do mais distante ao mais próximo, sem teste de profundidade.</translation>
+        <translation>Algoritmo do pintor: iluminado como no sombreamento plano, uma vez no baricentro do triângulo; os triângulos são pintados do mais distante ao mais próximo, sem teste de profundidade.</translation>
     </message>
     <message>
         <location filename="../views/lighting_breakdown.cpp" line="256"/>
@@ -6740,7 +6810,7 @@
     <message>
         <location filename="../views/pixel_inspector.cpp" line="487"/>
         <source>The terms are worked out for the course&apos;s lighting in flat or Phong shading only.</source>
-        <translation>Os termos são calculados só para a iluminação do curso em sombreamento flat ou Phong.</translation>
+        <translation>Os termos são calculados só para a iluminação do curso em sombreamento plano ou Phong.</translation>
     </message>
     <message>
         <location filename="../views/pixel_inspector.cpp" line="492"/>
@@ -7000,7 +7070,7 @@
     <message>
         <location filename="../views/projection_view.cpp" line="889"/>
         <source>&lt;p&gt;&lt;b&gt;Projection.&lt;/b&gt; Every vertex goes to clip space, pClip = clipFromView · pView, and is divided by its w without any clipping, as seed 000 writes the formula and seed 001&apos;s HW2 does (&quot;frustum clipping happens here in OpenGL, but we won&apos;t add it&quot;): pNdc = pClip.xy / w. A vertex behind the eye (w &amp;lt; 0) lands mirrored through the centre; a triangle across the eye plane wraps through infinity. Clipping at the near plane (Shading &amp;gt; Projection) draws only what lies in front.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;Projeção.&lt;/b&gt; Cada vértice vai para o espaço de recorte, pClip = clipFromView · pView, e é dividido pelo seu w sem recorte algum, como a seed 000 escreve a fórmula e o HW2 da seed 001 faz (&quot;o recorte pelo frustum acontece aqui no OpenGL, mas não vamos adicioná-lo&quot;): pNdc = pClip.xy / w. Um vértice atrás do olho (w &amp;lt; 0) cai espelhado pelo centro; um triângulo que atravessa o plano do olho dá a volta pelo infinito. O recorte no plano próximo (Sombreamento &amp;gt; Projeção) desenha só o que está à frente.&lt;/p&gt;</translation>
+        <translation>&lt;p&gt;&lt;b&gt;Projeção.&lt;/b&gt; Cada vértice vai para o espaço de recorte, pClip = clipFromView · pView, e é dividido pelo seu w sem recorte algum, como a seed 000 escreve a fórmula e o HW2 da seed 001 faz (&quot;o recorte pelo volume de visão (frustum) acontece aqui no OpenGL, mas não vamos adicioná-lo&quot;): pNdc = pClip.xy / w. Um vértice atrás do olho (w &amp;lt; 0) cai espelhado pelo centro; um triângulo que atravessa o plano do olho dá a volta pelo infinito. O recorte no plano próximo (Sombreamento &amp;gt; Projeção) desenha só o que está à frente.&lt;/p&gt;</translation>
     </message>
     <message>
         <location filename="../views/projection_view.cpp" line="896"/>

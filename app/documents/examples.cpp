@@ -29,7 +29,8 @@ const std::vector<Example>& examples() {
         {"triangle", QT_TRANSLATE_NOOP("Lessons", "One triangle"),
          QT_TRANSLATE_NOOP("Lessons",
                            "A single triangle in a 32 x 24 image, large enough to read from the "
-                           "back of the room. Step by pixel (Step menu, or the arrow keys) and "
+                           "back of the room. Step by pixel (Page Down, or Right and Left in "
+                           "presentation mode, F5) and "
                            "watch the scanline fill from its left edge to its right; pick a "
                            "pixel to see its barycentric coordinates, its interpolated P and N, "
                            "and its Phong terms in the pixel inspector."),

@@ -425,7 +425,7 @@ QStringList stringList(Reader& r, const QJsonValue& value, const QStringList& pa
 void readWindow(Reader& r, const QJsonObject& w, Lesson& lesson) {
     const QStringList at{lit("window")};
     r.warnUnknown(w, at, {lit("zoom"), lit("centre"), lit("docks_shown"), lit("docks_raised"),
-                          lit("dock_state"), lit("presentation")});
+                          lit("dock_state"), lit("presentation"), lit("text_zoom")});
     if (w.contains(lit("zoom"))) {
         const QJsonValue zoom = w.value(lit("zoom"));
         if (zoom.toString() != lit("fit")) {
@@ -448,6 +448,13 @@ void readWindow(Reader& r, const QJsonObject& w, Lesson& lesson) {
             lesson.dockState = QByteArray::fromBase64(v->toLatin1());
     if (w.contains(lit("presentation")))
         lesson.presentation = r.flag(w.value(lit("presentation")), at + QStringList{lit("presentation")});
+    if (w.contains(lit("text_zoom"))) {
+        const QJsonValue zoom = w.value(lit("text_zoom"));
+        if (zoom.isDouble())
+            lesson.textZoom = zoom.toDouble();  // the window keeps it to its steps' range
+        else
+            r.expected(at + QStringList{lit("text_zoom")}, "a number"_msg, zoom);
+    }
 }
 
 // Check My Renderer's command and folder.
@@ -676,6 +683,7 @@ QJsonObject windowJson(const Lesson& lesson) {
         w[lit("docks_raised")] = QJsonArray::fromStringList(lesson.docksRaised);
     if (!lesson.dockState.isEmpty()) w[lit("dock_state")] = QString::fromLatin1(lesson.dockState.toBase64());
     if (lesson.presentation) w[lit("presentation")] = *lesson.presentation;
+    if (lesson.textZoom) w[lit("text_zoom")] = *lesson.textZoom;
     return w;
 }
 

@@ -2,8 +2,8 @@
 // and written by hand (docs/lesson-files.md describes every key). It holds the scene (an
 // example's name, or course or command files by paths relative to the lesson), the values
 // edited and not saved, shading, rules and projection, the image size, the stepping
-// granularity and cursor, the picked pixel, the breakpoints, zoom and pan, the docks and
-// presentation mode. Every key but "rasterlab_lesson" may be left out: what is absent keeps
+// granularity and cursor, the picked pixel, the breakpoints, zoom and pan, the docks,
+// presentation mode and the text zoom. Every key but "rasterlab_lesson" may be left out: what is absent keeps
 // the program's default.
 #pragma once
 
@@ -71,6 +71,7 @@ struct Lesson {
     QStringList docksRaised;        // the docks on top of their tab groups
     QByteArray dockState;           // QMainWindow::saveState, when saved by the program
     std::optional<bool> presentation;
+    std::optional<double> textZoom;  // the docks' text size, 1 the window's; absent: 1
 
     // ---- Check My Renderer: the student's program and its folder ----------------------
     QString checkCommand, checkFolder;

@@ -2,6 +2,8 @@
 
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
@@ -1109,11 +1111,11 @@ QString MainWindow::aboutText() {
            QStringLiteral("<p>Copyright © 2026 The RasterLab developers. %1</p>").arg(licence);
 }
 
-void MainWindow::showShortcuts() {
-    QString html = QStringLiteral("<table cellspacing='6'>");
-    auto row = [&](const QString& keys, const QString& what) {
-        html += QStringLiteral("<tr><td><b>%1</b></td><td>%2</td></tr>").arg(keys, what);
-    };
+QString MainWindow::shortcutsText() {
+    // Two columns of key and meaning, so that the table fits a 720-pixel screen in
+    // presentation mode's large text.
+    QList<std::pair<QString, QString>> rows;
+    const auto row = [&](const QString& keys, const QString& what) { rows.append({keys, what}); };
     row(QStringLiteral("F10, Page Down"), tr("step forward"));
     row(QStringLiteral("Shift+F10, Page Up"), tr("step back"));
     row(QStringLiteral("\u2192 \u2193, \u2190 \u2191"),
@@ -1127,18 +1129,61 @@ void MainWindow::showShortcuts() {
     row(tr("Click, arrows"), tr("pick a pixel, move it by one"));
     row(QStringLiteral("Esc"), tr("let go of the picked pixel (on the image)"));
     row(QStringLiteral("F5, Esc"), tr("presentation mode on / off"));
+    row(QStringLiteral("F7"),
+        tr("presentation mode: the lecture layout (the stage being stepped fills the screen) "
+           "or your own layout"));
+    row(QStringLiteral("F9"), tr("presentation mode: the Edit panel on screen (live edits)"));
     row(tr("F11, double-click on a panel's title"),
-        tr("fill the window with the panel (the image, from the image), and back"));
+        tr("fill the window with the panel under the pointer (in the lecture layout, the "
+           "stage's), and back"));
     row(QStringLiteral("Ctrl+O, Ctrl+E, Ctrl+Shift+E"),
         tr("open, export the image, export it as displayed"));
     row(QStringLiteral("Ctrl+S, Ctrl+Z, Ctrl+Shift+Z"), tr("save, undo, redo"));
-    row(QStringLiteral("Ctrl+0, Ctrl+1, Ctrl++, Ctrl+-"),
-        tr("fit, actual size, zoom in, zoom out"));
-    html += QStringLiteral("</table>");
-    QMessageBox box(QMessageBox::Information, tr("Keyboard Shortcuts"), html, QMessageBox::Close,
-                    this);
-    box.setTextFormat(Qt::RichText);
-    box.exec();
+    row(QStringLiteral("Ctrl++, Ctrl+-, Ctrl+0"),
+        tr("the panels' text larger, smaller, its normal size"));
+    row(QStringLiteral("Ctrl+Alt++, Ctrl+Alt+-, Ctrl+Alt+0, Ctrl+1"),
+        tr("the image: zoom in, zoom out, fit, actual size (and the wheel)"));
+    const int half = int(rows.size() + 1) / 2;
+    QString html = QStringLiteral("<table cellspacing='4'>");
+    for (int i = 0; i < half; ++i) {
+        html += QStringLiteral("<tr>");
+        for (int j : {i, i + half}) {
+            if (j >= rows.size()) break;
+            html += QStringLiteral("<td width='14%'><b>%1</b></td><td width='36%'>%2</td>")
+                        .arg(rows[j].first, rows[j].second);
+        }
+        html += QStringLiteral("</tr>");
+    }
+    html += QStringLiteral("</table><p>%1</p>")
+                .arg(tr("These keys act wherever the focus is, a number box included (it keeps "
+                        "its digits and its up and down arrows)."));
+    return html;
+}
+
+void MainWindow::showShortcuts() {
+    QDialog dialog(this);
+    dialog.setObjectName(QStringLiteral("shortcutsDialog"));
+    dialog.setWindowTitle(tr("Keyboard Shortcuts"));
+    auto* layout = new QVBoxLayout(&dialog);
+    auto* text = new QLabel(shortcutsText());
+    text->setObjectName(QStringLiteral("shortcutsText"));
+    text->setTextFormat(Qt::RichText);
+    text->setWordWrap(true);
+    // Scrolls rather than running off a small screen in large text.
+    auto* scroll = new QScrollArea(&dialog);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(text);
+    layout->addWidget(scroll);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, &dialog);
+    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    layout->addWidget(buttons);
+    const QRect free = screen() ? screen()->availableGeometry() : QRect(0, 0, 1280, 720);
+    const int width = std::min(free.width() - 40, 1100);
+    text->setFixedWidth(width - 60);
+    const int wanted = text->heightForWidth(width - 60) + buttons->sizeHint().height() + 60;
+    dialog.resize(width, std::min(wanted, free.height() - 60));
+    dialog.exec();
 }
 
 }  // namespace rasterlab

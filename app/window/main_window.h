@@ -222,6 +222,9 @@ public:
     bool openExample(const QString& name);
     // The About box's text: the version, the courses followed, the licence.
     static QString aboutText();
+    // Help > Keyboard Shortcuts (F1): the keys, in two columns, in a dialog that fits the
+    // screen (it scrolls when the text is too large for it).
+    static QString shortcutsText();
     // The setup on screen as a lesson file; false with the error shown when it cannot be
     // written.
     bool saveLesson(const QString& path);
@@ -419,6 +422,7 @@ private:
     QMenu* m_recentLessonsMenu = nullptr;
     // The lesson shown (its title and text), and what opening it could not restore.
     QString m_lessonTitle, m_lessonNotes, m_lessonExample;
+    bool m_lessonTitleIsExample = false, m_lessonNotesAreExample = false;  // the program's own
     QStringList m_lessonProblems;
     // A lesson's cursor, pixel and zoom, waiting for the first frame of its scene.
     struct PendingView {

@@ -238,6 +238,12 @@ bool MainWindow::filterNumberBoxKey(QObject* watched, QEvent* event) {
     auto* widget = qobject_cast<QWidget*>(watched);
     if (!widget || widget->window() != this || !isNumberBox(widget)) return false;
     auto* key = static_cast<QKeyEvent*>(event);
+    // Up and Down are the box's own, even where a clicker's arrows step.
+    if (key->modifiers() == Qt::NoModifier &&
+        (key->key() == Qt::Key_Up || key->key() == Qt::Key_Down)) {
+        key->accept();
+        return true;
+    }
     if (!keyForWindow(key)) return false;
     key->ignore();
     return true;

@@ -230,8 +230,10 @@ void MainWindow::restoreView(const Lesson& lesson) {
     // A shipped lesson's title and text are the program's, in the language shown.
     m_lessonExample = lesson.example;
     const bool example = isExample(lesson.example);
-    m_lessonTitle = example && lesson.title.isEmpty() ? exampleTitle(lesson.example) : lesson.title;
-    m_lessonNotes = example && lesson.notes.isEmpty() ? exampleNotes(lesson.example) : lesson.notes;
+    m_lessonTitleIsExample = example && lesson.title.isEmpty();
+    m_lessonNotesAreExample = example && lesson.notes.isEmpty();
+    m_lessonTitle = m_lessonTitleIsExample ? exampleTitle(lesson.example) : lesson.title;
+    m_lessonNotes = m_lessonNotesAreExample ? exampleNotes(lesson.example) : lesson.notes;
     if (!lesson.checkCommand.isEmpty() || !lesson.checkFolder.isEmpty()) {
         m_check->setCommand(lesson.checkCommand);
         m_check->setFolder(lesson.checkFolder);
@@ -250,6 +252,7 @@ void MainWindow::restoreView(const Lesson& lesson) {
         if (lesson.docksRaised.contains(dock->objectName())) dock->show();
     if (wasPresenting) enterPresentationLayout();
     setPresentationMode(lesson.presentation.value_or(wasPresenting));
+    setTextZoom(lesson.textZoom.value_or(1.0));
     // Raised last: entering presentation mode may move the pixel inspector among the tabs.
     for (QDockWidget* dock : docks)
         if (lesson.docksRaised.contains(dock->objectName()) && !dock->isHidden()) dock->raise();
@@ -297,9 +300,13 @@ Lesson MainWindow::currentLesson(const QDir& base) const {
             lesson.camera.clear();
             lesson.lighting.clear();
             lesson.object.clear();
-            // A shipped lesson's title and text come from the program, in the reader's language.
-            if (lesson.title == exampleTitle(*example)) lesson.title.clear();
-            if (lesson.notes == exampleNotes(*example)) lesson.notes.clear();
+            // A shipped lesson's title and text come from the program, in the reader's
+            // language: left out when they are the program's (in the language they were
+            // shown in, which may no longer be the one installed: a language switch).
+            if (m_lessonTitleIsExample || lesson.title == exampleTitle(*example))
+                lesson.title.clear();
+            if (m_lessonNotesAreExample || lesson.notes == exampleNotes(*example))
+                lesson.notes.clear();
         }
     }
     lesson.cameraLayout = d.cameraLayout();
@@ -336,6 +343,7 @@ Lesson MainWindow::currentLesson(const QDir& base) const {
     lesson.docksRaised.sort();
     lesson.dockState = presenting ? m_layoutBeforePresentation : saveState(kLayoutVersion);
     lesson.presentation = presenting;
+    if (m_textZoom != 1.0) lesson.textZoom = m_textZoom;
     lesson.checkCommand = m_check->command();
     lesson.checkFolder = m_check->folder();
     return lesson;
@@ -345,6 +353,7 @@ void MainWindow::leaveLesson() {
     m_lessonExample.clear();
     m_lessonTitle.clear();
     m_lessonNotes.clear();
+    m_lessonTitleIsExample = m_lessonNotesAreExample = false;
     m_lessonProblems.clear();
     m_pendingView.reset();
     m_document.setSize(800, 600);
