@@ -11,6 +11,7 @@
 #include <QLineEdit>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QScreen>
 #include <QTemporaryDir>
 #include <QTextBrowser>
@@ -121,6 +122,41 @@ private slots:
         QCOMPARE(
             QString::fromStdString(r->first->element),
             QStringLiteral("vertex %1").arg(m_window.inspection()->selectedVertices()[0].vertex));
+    }
+
+    // At 1280x720, after a check whose first departure is the lighting (the seventh of eight
+    // rows): its row, its explanation and its overlay in view without scrolling, and the
+    // progress text inside its bar.
+    void firstDepartureInView() {
+        m_window.showCheckDock();
+        CheckPanel* panel = m_window.checkPanel();
+        QVERIFY(checkWith(panel, "--ambient-times-od"));
+        QTest::qWait(50);
+        QTreeWidget* list = panel->stageList();
+        QTreeWidgetItem* current = list->currentItem();
+        QVERIFY(current);
+        QVERIFY2(list->indexOfTopLevelItem(current) >= 6,
+                 qPrintable(QString::number(list->indexOfTopLevelItem(current))));
+        const QRect row = list->visualItemRect(current);
+        QVERIFY2(list->viewport()->rect().contains(row),
+                 qPrintable(QStringLiteral("row %1,%2 %3x%4 in a viewport %5 high")
+                                .arg(row.x()).arg(row.y()).arg(row.width()).arg(row.height())
+                                .arg(list->viewport()->height())));
+        QVERIFY(!panel->detailsText().isEmpty());
+        // The words: at least three lines' height shown; the picture: at least 150 px.
+        const auto* scroll = panel->findChildren<QScrollArea*>().value(0);
+        QVERIFY(scroll);
+        QVERIFY2(scroll->viewport()->height() >= 3 * panel->fontMetrics().height(),
+                 qPrintable(QString::number(scroll->viewport()->height())));
+        QVERIFY2(panel->canvas()->height() >= 150,
+                 qPrintable(QString::number(panel->canvas()->height())));
+        QVERIFY(panel->canvas()->isVisible());
+        // "goblet.byu: frame", the longest progress text, fits the bar.
+        QProgressBar* bar = panel->progressBar();
+        QVERIFY2(bar->fontMetrics().horizontalAdvance(QStringLiteral("goblet.byu: frame")) + 16 <
+                     bar->width(),
+                 qPrintable(QString::number(bar->width())));
+        QVERIFY(panel->window()->height() <= 720);
     }
 
     // Their frame goes to the Compare dock, whose diagnosis names the mistake.

@@ -645,7 +645,8 @@ void TestLegibility::opensInsideTheScreen() {
 }
 
 void TestLegibility::presentationLeavesTheImageRoom() {
-    // Below 1600 pixels wide, the pixel inspector joins the scan view's tabs while presenting,
+    // In the teacher's own presentation layout (F7), below 1600 pixels wide, the pixel
+    // inspector joins the scan view's tabs while presenting,
     // so that the image has at least half the width; it comes back to the left afterwards.
     m_translators.install(QStringLiteral("en"));
     for (const QSize size : kScreenSizes) {
@@ -656,6 +657,7 @@ void TestLegibility::presentationLeavesTheImageRoom() {
         auto* scan = window.findChild<QDockWidget*>(QStringLiteral("scanlineDock"));
         QVERIFY(inspector && scan);
         const auto leave = qScopeGuard([&] { window.setPresentationMode(false); });
+        window.setLectureLayout(false);  // the teacher's own layout (the lecture's: tst_lecture)
         window.setPresentationMode(true);
         settle();
         const QString where = QStringLiteral("%1x%2").arg(size.width()).arg(size.height());

@@ -83,24 +83,32 @@ CheckPanel::CheckPanel(Inspection* inspection, QWidget* parent)
         tr("Give each stage your program's own earlier answers as its input, to "
            "see how errors add up (unticked, each stage gets RasterLab's, so no "
            "mistake hides another)"));
+    // Two rows of buttons and the progress on a row of its own, so that the dock fits a
+    // 1280x720 screen and the progress text ("goblet.byu: frame") its bar.
     buttons->addWidget(m_run);
     buttons->addWidget(m_chain);
     buttons->addWidget(m_cancel);
-    buttons->addWidget(m_progress, 1);
-    buttons->addWidget(m_stop);
+    buttons->addStretch(1);
+    layout->addLayout(buttons);
+    auto* after = new QHBoxLayout;
+    after->addWidget(m_stop);
     m_compare = new QPushButton(tr("Compare Their Frame"));
     m_compare->setToolTip(
         tr("Their whole frame in the Compare dock: each pixel's colour beside "
            "ours, and the Phong term that would have to change"));
     m_compare->setEnabled(false);
-    buttons->addWidget(m_compare);
-    layout->addLayout(buttons);
+    after->addWidget(m_compare);
+    after->addStretch(1);
+    layout->addLayout(after);
+    m_progress->setObjectName(QStringLiteral("checkProgress"));
+    layout->addWidget(m_progress);
 
     m_protections = new QLabel;
     m_protections->setWordWrap(true);
     layout->addWidget(m_protections);
     // The list, the selected stage's words, and its picture, one above the other, resizable.
     auto* split = new QSplitter(Qt::Vertical);
+    m_split = split;
     m_stages = new QTreeWidget;
     m_stages->setObjectName(QStringLiteral("checkStages"));
     m_stages->setHeaderLabels({tr("Stage"), tr("Verdict"), tr("Elements"), tr("Likely cause")});
@@ -340,14 +348,32 @@ void CheckPanel::showReport() {
                                                                         : QColor(200, 30, 30));
         }
     }
-    // The first stage that departs is shown first.
+    for (int column = 0; column < 3; ++column) m_stages->resizeColumnToContents(column);
+    fitSplit();
+    // The first stage that departs is shown first, its row in view.
     for (int i = 0; i < m_stages->topLevelItemCount(); ++i)
         if (m_stages->topLevelItem(i)->text(1) != verdictText(check::Verdict::Passed)) {
             m_stages->setCurrentItem(m_stages->topLevelItem(i));
+            m_stages->scrollToItem(m_stages->topLevelItem(i));
             return;
         }
     if (m_stages->topLevelItemCount() > 0) m_stages->setCurrentItem(m_stages->topLevelItem(0));
     if (r.passed()) m_details->setText(tr("Every stage passed (%1 s).").arg(r.seconds, 0, 'f', 1));
+}
+
+void CheckPanel::fitSplit() {
+    // The list as tall as its rows (at most 40 % of the height), the words and the picture
+    // sharing the rest: the first departure's row, explanation and overlay all in view.
+    const QList<int> sizes = m_split->sizes();
+    int total = 0;
+    for (int size : sizes) total += size;
+    if (total <= 0 || m_stages->topLevelItemCount() == 0) return;
+    const int rows = m_stages->topLevelItemCount();
+    const int needed = m_stages->header()->sizeHint().height() +
+                       rows * m_stages->sizeHintForRow(0) + 2 * m_stages->frameWidth() + 2;
+    const int list = std::min(needed, int(0.4 * total));
+    const int words = (total - list) * 9 / 20;
+    m_split->setSizes({list, words, total - list - words});
 }
 
 std::optional<check::Stage> CheckPanel::selectedStage() const {

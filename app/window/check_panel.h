@@ -23,6 +23,7 @@ class QCheckBox;
 class QLabel;
 class QLineEdit;
 class QProgressBar;
+class QSplitter;
 class QPushButton;
 class QTreeWidget;
 
@@ -92,6 +93,7 @@ private:
     void onFinished();
     void showReport();
     void showSelected();
+    void fitSplit();
     void setProgress(int done, int total, const QString& what);
 
     Inspection* m_inspection = nullptr;
@@ -106,6 +108,7 @@ private:
     QProgressBar* m_progress = nullptr;
     QLabel* m_protections = nullptr;
     QTreeWidget* m_stages = nullptr;
+    QSplitter* m_split = nullptr;  // the list, the words, the picture
     QLabel* m_details = nullptr;
     DepartureCanvas* m_canvas = nullptr;
     QLabel* m_legend = nullptr;
