@@ -9,11 +9,12 @@
 # The count of a step: the numbers tesseract reads, matching -?[0-9]+([.,][0-9]+)?, of at
 # least two characters (a lone digit is as often a misread mark as a number). The full-size
 # shot is read too, and its lines with a cut-off "…" (or "...") are listed.
+# --text-larger N presses Ctrl++ N times after F5 (the teacher's text size; default none).
 # usage: scripts/lecture-ocr.sh [--language en|pt_BR] [--bin PATH] [--out DIR] [--display :N]
-#                               [--top PX] [--bottom PX]
+#                               [--top PX] [--bottom PX] [--text-larger N]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-language=en bin=build/bin/rasterlab out=out/lecture-ocr display=:81 top=124 bottom=28
+language=en bin=build/bin/rasterlab out=out/lecture-ocr display=:81 top=124 bottom=28 larger=0
 while [ $# -gt 0 ]; do
     case "$1" in
         --language) language=$2; shift 2 ;;
@@ -22,6 +23,7 @@ while [ $# -gt 0 ]; do
         --display) display=$2; shift 2 ;;
         --top) top=$2; shift 2 ;;
         --bottom) bottom=$2; shift 2 ;;
+        --text-larger) larger=$2; shift 2 ;;
         *) echo "lecture-ocr: unknown argument $1" >&2; exit 2 ;;
     esac
 done
@@ -49,6 +51,7 @@ xdotool windowfocus --sync "$window" 2>/dev/null || true
 xdotool mousemove 640 100
 xdotool key F5
 sleep 2
+for ((k = 0; k < larger; ++k)); do xdotool key ctrl+plus; sleep 0.3; done
 xdotool key ctrl+Home
 sleep 1
 total=0 lowest=

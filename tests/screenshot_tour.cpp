@@ -16,7 +16,10 @@
 //   edit              the Edit dock after ka was set to 0 on the goblet
 //   inspector-black   the pixel inspector explaining a black pixel (N.L < 0, no ambient)
 //   image-black       the image zoomed around that pixel, picked
-//   presentation      presentation mode on the goblet
+//   presentation      presentation mode on the goblet, in the teacher's own layout (F7)
+//   lecture-1 ... lecture-7   the lecture layout at 1280x720 on the goblet, stepped by stage
+//                     from the start: each stage's dock over the screen, the image beside it
+//                     from the scan on
 //   fill              View > Fill the Window: the z-buffer dock over the whole window
 //   window-lighting, inspector-lighting, edit-lights   the lights lesson: the window, the
 //                     pixel inspector light by light, the Edit dock's lights
@@ -39,6 +42,8 @@
 // (scripts/screenshots.sh runs it in both languages from the repository's root; --docs is
 // the repository's docs folder, default "docs".) The settings are kept in a temporary
 // folder, so no earlier run (recent files, layout, language) changes what is shown.
+#include <functional>
+
 #include <QAbstractButton>
 #include <QAbstractItemView>
 #include <QApplication>
@@ -409,11 +414,43 @@ bool saveCompareScreenMap(MainWindow& window, const QString& path, const QString
     return ok && grabbed;
 }
 
+// The lecture layout on a 1280x720 projector: the goblet in presentation mode, stepped by
+// stage from the start (Ctrl+Home, then Page Down), a shot per stage.
+bool saveLecture(const std::function<QString(const QString&)>& file) {
+    QScreen* projector = nullptr;
+    for (QScreen* screen : QGuiApplication::screens())
+        if (screen->size() == QSize(1280, 720)) projector = screen;
+    if (!projector) {
+        std::fprintf(stderr, "FAILED: no 1280x720 screen\n");
+        return false;
+    }
+    MainWindow window;
+    window.setScreen(projector);
+    window.move(projector->geometry().topLeft());
+    window.resize(1280, 720);
+    window.show();
+    if (!waitForReplay(window) || !openExample(window, "goblet")) return false;
+    window.setPresentationMode(true);
+    Inspection* inspection = window.inspection();
+    inspection->setGranularity(rl::StepGranularity::Stage);
+    window.steppingBar()->toStartAction()->trigger();
+    bool ok = true;
+    for (int stage = 1; stage <= rl::kStageCount; ++stage) {
+        if (stage > 1) window.steppingBar()->stepForwardAction()->trigger();
+        QTest::qWait(150);
+        window.statusBar()->clearMessage();  // the hint on entering: the same in every shot
+        ok = save(&window, file(QStringLiteral("lecture-%1").arg(stage))) && ok;
+    }
+    window.setPresentationMode(false);
+    return ok;
+}
+
 int main(int argc, char* argv[]) {
     // Offscreen, a projector's 1600x1000 screen: presentation mode sizes its text and places
-    // its docks by the screen, and the window fits itself to it.
+    // its docks by the screen, and the window fits itself to it; and a 1280x720 one, the
+    // lecture layout's.
     QTemporaryDir screens;
-    if (!useOffscreenScreens(screens, {QSize(1600, 1000)})) return 1;
+    if (!useOffscreenScreens(screens, {QSize(1600, 1000), QSize(1280, 720)})) return 1;
     QApplication app(argc, argv);
     // Settings of this run only: no recent files, layout or language of an earlier one.
     QTemporaryDir settingsDir;
@@ -624,6 +661,7 @@ int main(int argc, char* argv[]) {
     inspection->seek(
         replay->next(replay->atFragment(static_cast<std::uint32_t>(replay->fragments().size() / 2)),
                      rl::StepGranularity::Scanline));
+    window.setLectureLayout(false);  // the teacher's own layout; the lecture's shots follow
     window.setPresentationMode(true);  // full screen: the projector's 1600x1000
     QTest::qWait(50);
     window.fitDocks();
@@ -635,6 +673,7 @@ int main(int argc, char* argv[]) {
     }
     check(save(&window, file(QStringLiteral("presentation"))));
     window.setPresentationMode(false);
+    window.setLectureLayout(true);
     window.resize(1500, 940);
     QTest::qWait(50);
 
@@ -826,6 +865,7 @@ int main(int argc, char* argv[]) {
         check(saveDock(dock(moving, "normalsDock"), file(QStringLiteral("normals-wrong")),
                        QSize(640, 1180)));
     }
+    check(saveLecture(file));
     if (failures > 0)
         std::fprintf(stderr, "FAILED: %d shots could not be made or show what they must not\n",
                      failures);

@@ -7,6 +7,7 @@
 #include <QApplication>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QSpinBox>
 #include <QTemporaryDir>
 
@@ -15,6 +16,9 @@
 #include "app/window/main_window.h"
 #include "app/window/translators.h"
 #include "tests/offscreen_screens.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/stages/depth_test.h"
+#include "pipeline/stages/scan_conversion.h"
 #include "views/frame_image_view.h"
 #include "views/inspection.h"
 #include "views/stepping_bar.h"
@@ -126,17 +130,34 @@ void TestLecture::lectureFollowsTheCursor() {
                                                   .arg(where).arg(share)));
         }
         QVERIFY2(dock->height() > 0.7 * window.height(), qPrintable(where));
+        // Its title: the stage's key numbers in large print.
+        auto* caption = qobject_cast<QLabel*>(dock->titleBarWidget());
+        QVERIFY2(caption && caption->isVisible(), qPrintable(where));
+        QVERIFY(caption->font().pointSizeF() > QApplication::font().pointSizeF() * 1.2);
+        const auto& frame = *window.currentFrame();
+        if (stage == rl::StageId::DepthTest)
+            QVERIFY2(caption->text().contains(QStringLiteral("%1 fragments tested, %2 written, %3 "
+                                                             "rejected")
+                                                  .arg(frame.depth->fragments)
+                                                  .arg(frame.depth->passed)
+                                                  .arg(frame.depth->rejected)),
+                     qPrintable(caption->text()));
+        if (stage == rl::StageId::ScanConversion)
+            QVERIFY2(caption->text().contains(QStringLiteral("%1 pixels covered").arg(frame.scan->pixels)),
+                     qPrintable(caption->text()));
         if (stage != rl::StageId::Shading) window.steppingBar()->stepForwardAction()->trigger();
     }
-    // Back a stage (Page Up): the z-buffer's dock again.
+    // Back a stage (Page Up): the z-buffer's dock again, and the pixel inspector's own title.
     window.steppingBar()->stepBackAction()->trigger();
     settle();
     QCOMPARE(shownDocks(window), QStringList{QStringLiteral("zbufferDock")});
+    QVERIFY(!window.findChild<QDockWidget*>(QStringLiteral("pixelInspectorDock"))->titleBarWidget());
     // Leaving gives back the docks as they were before presenting.
     window.setPresentationMode(false);
     settle();
     QVERIFY(window.centralWidget()->isVisible());
     QVERIFY(shownDocks(window).size() > 3);
+    QVERIFY(!window.findChild<QDockWidget*>(QStringLiteral("zbufferDock"))->titleBarWidget());
 }
 
 void TestLecture::ownLayoutAndBack() {

@@ -3341,182 +3341,182 @@
         <translation>Give each stage your program&apos;s own earlier answers as its input, to see how errors add up (unticked, each stage gets RasterLab&apos;s, so no mistake hides another)</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="91"/>
+        <location filename="../app/window/check_panel.cpp" line="95"/>
         <source>Compare Their Frame</source>
         <translation>Compare Their Frame</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="93"/>
+        <location filename="../app/window/check_panel.cpp" line="97"/>
         <source>Their whole frame in the Compare dock: each pixel&apos;s colour beside ours, and the Phong term that would have to change</source>
         <translation>Their whole frame in the Compare dock: each pixel&apos;s colour beside ours, and the Phong term that would have to change</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="106"/>
+        <location filename="../app/window/check_panel.cpp" line="114"/>
         <source>Stage</source>
         <translation>Stage</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="106"/>
+        <location filename="../app/window/check_panel.cpp" line="114"/>
         <source>Verdict</source>
         <translation>Verdict</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="106"/>
+        <location filename="../app/window/check_panel.cpp" line="114"/>
         <source>Elements</source>
         <translation>Elements</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="106"/>
+        <location filename="../app/window/check_panel.cpp" line="114"/>
         <source>Likely cause</source>
         <translation>Likely cause</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="143"/>
+        <location filename="../app/window/check_panel.cpp" line="151"/>
         <source>Your Program&apos;s Folder</source>
         <translation>Your Program&apos;s Folder</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="186"/>
+        <location filename="../app/window/check_panel.cpp" line="194"/>
         <source>A check is running.</source>
         <translation>A check is running.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="188"/>
+        <location filename="../app/window/check_panel.cpp" line="196"/>
         <source>Give the command that starts your program.</source>
         <translation>Give the command that starts your program.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="191"/>
+        <location filename="../app/window/check_panel.cpp" line="199"/>
         <source>The folder %1 does not exist.</source>
         <translation>The folder %1 does not exist.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="193"/>
+        <location filename="../app/window/check_panel.cpp" line="201"/>
         <source>There is no frame to check against.</source>
         <translation>There is no frame to check against.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="217"/>
+        <location filename="../app/window/check_panel.cpp" line="225"/>
         <source>Checking %1...</source>
         <translation>Checking %1...</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="235"/>
+        <location filename="../app/window/check_panel.cpp" line="243"/>
         <source>cancelled</source>
         <translation>cancelled</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="235"/>
+        <location filename="../app/window/check_panel.cpp" line="243"/>
         <source>done</source>
         <translation>done</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="245"/>
+        <location filename="../app/window/check_panel.cpp" line="253"/>
         <source>Over our image: each vertex that departs, ours a green dot, theirs a red cross, joined by a line.</source>
         <translation>Over our image: each vertex that departs, ours a green dot, theirs a red cross, joined by a line.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="249"/>
+        <location filename="../app/window/check_panel.cpp" line="257"/>
         <source>Over our image: magenta, pixels only we cover; cyan, pixels only they cover.</source>
         <translation>Over our image: magenta, pixels only we cover; cyan, pixels only they cover.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="253"/>
+        <location filename="../app/window/check_panel.cpp" line="261"/>
         <source>Over our image: red, pixels another triangle wins (or at another depth); magenta, only ours keeps one; cyan, only theirs.</source>
         <translation>Over our image: red, pixels another triangle wins (or at another depth); magenta, only ours keeps one; cyan, only theirs.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="257"/>
+        <location filename="../app/window/check_panel.cpp" line="265"/>
         <source>Over our image: red, pixels whose colour differs by more than 1.</source>
         <translation>Over our image: red, pixels whose colour differs by more than 1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="266"/>
+        <location filename="../app/window/check_panel.cpp" line="274"/>
         <source>passed</source>
         <translation>passed</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="268"/>
+        <location filename="../app/window/check_panel.cpp" line="276"/>
         <source>failed</source>
         <translation>failed</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="270"/>
+        <location filename="../app/window/check_panel.cpp" line="278"/>
         <source>unsupported</source>
         <translation>unsupported</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="272"/>
+        <location filename="../app/window/check_panel.cpp" line="280"/>
         <source>broken</source>
         <translation>broken</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="315"/>
+        <location filename="../app/window/check_panel.cpp" line="323"/>
         <source>not applied: %1</source>
         <translation>not applied: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="324"/>
+        <location filename="../app/window/check_panel.cpp" line="332"/>
         <source>Protected by: %1.</source>
         <translation>Protected by: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="325"/>
+        <location filename="../app/window/check_panel.cpp" line="333"/>
         <source>Protected by: %1. Not applied: %2.</source>
         <translation>Protected by: %1. Not applied: %2.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="329"/>
+        <location filename="../app/window/check_panel.cpp" line="337"/>
         <source>Not checked: %1</source>
         <translation>Not checked: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="335"/>
+        <location filename="../app/window/check_panel.cpp" line="343"/>
         <source>%1 of %2 differ</source>
         <translation>%1 of %2 differ</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="350"/>
+        <location filename="../app/window/check_panel.cpp" line="361"/>
         <source>Every stage passed (%1 s).</source>
         <translation>Every stage passed (%1 s).</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="384"/>
+        <location filename="../app/window/check_panel.cpp" line="410"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="388"/>
+        <location filename="../app/window/check_panel.cpp" line="414"/>
         <source>First departure: %1: theirs %2, ours %3</source>
         <translation>First departure: %1: theirs %2, ours %3</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="393"/>
+        <location filename="../app/window/check_panel.cpp" line="419"/>
         <source>Likely cause: %1 (explains %2 of %3, %4% of the difference)</source>
         <translation>Likely cause: %1 (explains %2 of %3, %4% of the difference)</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="399"/>
+        <location filename="../app/window/check_panel.cpp" line="425"/>
         <source>No known mistake of this stage gives their answer.</source>
         <translation>No known mistake of this stage gives their answer.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="401"/>
+        <location filename="../app/window/check_panel.cpp" line="427"/>
         <source>Unexplained: %1 of %2.</source>
         <translation>Unexplained: %1 of %2.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="402"/>
+        <location filename="../app/window/check_panel.cpp" line="428"/>
         <source>In numbers: %1</source>
         <translation>In numbers: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="404"/>
+        <location filename="../app/window/check_panel.cpp" line="430"/>
         <source>Carried from the earlier stages: %1 elements of the lecture&apos;s answer change with what was sent.</source>
         <translation>Carried from the earlier stages: %1 elements of the lecture&apos;s answer change with what was sent.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="409"/>
+        <location filename="../app/window/check_panel.cpp" line="435"/>
         <source>Tolerance: %1</source>
         <translation>Tolerance: %1</translation>
     </message>
@@ -4552,79 +4552,79 @@
         <translation>Stopped at a breakpoint: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="210"/>
+        <location filename="../app/window/main_window.cpp" line="211"/>
         <location filename="../app/window/main_window_export.cpp" line="122"/>
         <location filename="../app/window/main_window_export.cpp" line="159"/>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="211"/>
+        <location filename="../app/window/main_window.cpp" line="212"/>
         <source>Stop preparing the stepping of this frame</source>
         <translation>Stop preparing the stepping of this frame</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="215"/>
+        <location filename="../app/window/main_window.cpp" line="216"/>
         <source>cancelled</source>
         <translation>cancelled</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="273"/>
+        <location filename="../app/window/main_window.cpp" line="274"/>
         <source>Stepping</source>
         <translation>Stepping</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="297"/>
+        <location filename="../app/window/main_window.cpp" line="298"/>
         <source>Edit</source>
         <translation>Edit</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="304"/>
+        <location filename="../app/window/main_window.cpp" line="305"/>
         <source>Breakpoints</source>
         <translation>Breakpoints</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="310"/>
+        <location filename="../app/window/main_window.cpp" line="311"/>
         <source>Animation</source>
         <translation>Animation</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="329"/>
+        <location filename="../app/window/main_window.cpp" line="330"/>
         <source>1 Camera basis</source>
         <translation>1 Camera basis</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="301"/>
+        <location filename="../app/window/main_window.cpp" line="302"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Pixel inspector (lighting)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="336"/>
+        <location filename="../app/window/main_window.cpp" line="337"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 View coordinates (vertices)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="338"/>
+        <location filename="../app/window/main_window.cpp" line="339"/>
         <source>3 Normals</source>
         <translation>3 Normals</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="340"/>
+        <location filename="../app/window/main_window.cpp" line="341"/>
         <source>4 Projection</source>
         <translation>4 Projection</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="332"/>
+        <location filename="../app/window/main_window.cpp" line="333"/>
         <source>5 Scan conversion</source>
         <translation>5 Scan conversion</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="346"/>
+        <location filename="../app/window/main_window.cpp" line="347"/>
         <source>5b Trapezoids</source>
         <translation>5b Trapezoids</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="350"/>
+        <location filename="../app/window/main_window.cpp" line="351"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
     </message>
@@ -4644,37 +4644,37 @@
         <translation>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1122"/>
+        <location filename="../app/window/main_window.cpp" line="1124"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>step forward, back (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1124"/>
+        <location filename="../app/window/main_window.cpp" line="1126"/>
         <source>Space</source>
         <translation>Space</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1124"/>
+        <location filename="../app/window/main_window.cpp" line="1126"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>play / pause (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1130"/>
+        <location filename="../app/window/main_window.cpp" line="1132"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>let go of the picked pixel (on the image)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1131"/>
+        <location filename="../app/window/main_window.cpp" line="1133"/>
         <source>presentation mode on / off</source>
         <translation>presentation mode on / off</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1137"/>
+        <location filename="../app/window/main_window.cpp" line="1139"/>
         <source>fill the window with the panel under the pointer (in the lecture layout, the stage&apos;s), and back</source>
         <translation>fill the window with the panel under the pointer (in the lecture layout, the stage&apos;s), and back</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1141"/>
+        <location filename="../app/window/main_window.cpp" line="1143"/>
         <source>save, undo, redo</source>
         <translation>save, undo, redo</translation>
     </message>
@@ -4979,87 +4979,87 @@
         <translation>&amp;Same Side (clip only triangles that cross the eye plane)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="708"/>
+        <location filename="../app/window/main_window.cpp" line="710"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1013"/>
+        <location filename="../app/window/main_window.cpp" line="1015"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1105"/>
+        <location filename="../app/window/main_window.cpp" line="1107"/>
         <source>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</source>
         <translation>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1119"/>
+        <location filename="../app/window/main_window.cpp" line="1121"/>
         <source>step forward</source>
         <translation>step forward</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1120"/>
+        <location filename="../app/window/main_window.cpp" line="1122"/>
         <source>step back</source>
         <translation>step back</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1123"/>
+        <location filename="../app/window/main_window.cpp" line="1125"/>
         <source>play / pause</source>
         <translation>play / pause</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1125"/>
+        <location filename="../app/window/main_window.cpp" line="1127"/>
         <source>jump to the start / the end of the frame</source>
         <translation>jump to the start / the end of the frame</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1126"/>
+        <location filename="../app/window/main_window.cpp" line="1128"/>
         <source>continue to the next breakpoint</source>
         <translation>continue to the next breakpoint</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1127"/>
+        <location filename="../app/window/main_window.cpp" line="1129"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>step by stage, triangle, scanline, span, pixel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1128"/>
+        <location filename="../app/window/main_window.cpp" line="1130"/>
         <source>show a stage&apos;s view</source>
         <translation>show a stage&apos;s view</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1129"/>
+        <location filename="../app/window/main_window.cpp" line="1131"/>
         <source>Click, arrows</source>
         <translation>Click, arrows</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1129"/>
+        <location filename="../app/window/main_window.cpp" line="1131"/>
         <source>pick a pixel, move it by one</source>
         <translation>pick a pixel, move it by one</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1133"/>
+        <location filename="../app/window/main_window.cpp" line="1135"/>
         <source>presentation mode: the lecture layout (the stage being stepped fills the screen) or your own layout</source>
         <translation>presentation mode: the lecture layout (the stage being stepped fills the screen) or your own layout</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1135"/>
+        <location filename="../app/window/main_window.cpp" line="1137"/>
         <source>presentation mode: the Edit panel on screen (live edits)</source>
         <translation>presentation mode: the Edit panel on screen (live edits)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1136"/>
+        <location filename="../app/window/main_window.cpp" line="1138"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, double-click on a panel&apos;s title</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1140"/>
+        <location filename="../app/window/main_window.cpp" line="1142"/>
         <source>open, export the image, export it as displayed</source>
         <translation>open, export the image, export it as displayed</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1166"/>
+        <location filename="../app/window/main_window.cpp" line="1168"/>
         <source>Keyboard Shortcuts</source>
         <translation>Keyboard Shortcuts</translation>
     </message>
@@ -5104,22 +5104,22 @@
         <translation>&amp;About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="282"/>
+        <location filename="../app/window/main_window.cpp" line="283"/>
         <source>Messages</source>
         <translation>Messages</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="287"/>
+        <location filename="../app/window/main_window.cpp" line="288"/>
         <source>Scene</source>
         <translation>Scene</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="307"/>
+        <location filename="../app/window/main_window.cpp" line="308"/>
         <source>Accuracy</source>
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="682"/>
+        <location filename="../app/window/main_window.cpp" line="684"/>
         <location filename="../app/window/main_window_export.cpp" line="35"/>
         <location filename="../app/window/main_window_export.cpp" line="133"/>
         <location filename="../app/window/main_window_export.cpp" line="175"/>
@@ -5138,18 +5138,18 @@
         <translation>Exported %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="735"/>
+        <location filename="../app/window/main_window.cpp" line="737"/>
         <source>rendering...</source>
         <translation>rendering...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="735"/>
+        <location filename="../app/window/main_window.cpp" line="737"/>
         <source>%1, rendering...</source>
         <translation>%1, rendering...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="733"/>
-        <location filename="../app/window/main_window.cpp" line="976"/>
+        <location filename="../app/window/main_window.cpp" line="735"/>
+        <location filename="../app/window/main_window.cpp" line="978"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -5214,73 +5214,73 @@
         <translation>&amp;Keyboard Shortcuts</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="401"/>
+        <location filename="../app/window/main_window.cpp" line="402"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="665"/>
+        <location filename="../app/window/main_window.cpp" line="667"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="743"/>
+        <location filename="../app/window/main_window.cpp" line="745"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparing the stepping of this frame</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="743"/>
+        <location filename="../app/window/main_window.cpp" line="745"/>
         <source>Rendering</source>
         <translation>Rendering</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="919"/>
+        <location filename="../app/window/main_window.cpp" line="921"/>
         <source>Error: %1</source>
         <translation>Error: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="943"/>
+        <location filename="../app/window/main_window.cpp" line="945"/>
         <source>Files</source>
         <translation>Files</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="946"/>
+        <location filename="../app/window/main_window.cpp" line="948"/>
         <source>Command file</source>
         <translation>Command file</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="947"/>
+        <location filename="../app/window/main_window.cpp" line="949"/>
         <source>Image</source>
         <translation>Image</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="949"/>
+        <location filename="../app/window/main_window.cpp" line="951"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="959"/>
+        <location filename="../app/window/main_window.cpp" line="961"/>
         <source>Camera</source>
         <translation>Camera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="960"/>
+        <location filename="../app/window/main_window.cpp" line="962"/>
         <source>Lighting</source>
         <translation>Lighting</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="961"/>
+        <location filename="../app/window/main_window.cpp" line="963"/>
         <source>Object</source>
         <translation>Object</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="963"/>
+        <location filename="../app/window/main_window.cpp" line="965"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="267"/>
-        <location filename="../app/window/main_window.cpp" line="970"/>
+        <location filename="../app/window/main_window.cpp" line="268"/>
+        <location filename="../app/window/main_window.cpp" line="972"/>
         <source>Stages</source>
         <translation>Stages</translation>
     </message>
@@ -5290,137 +5290,137 @@
         <translation>%1 (the %2 example)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="300"/>
+        <location filename="../app/window/main_window.cpp" line="301"/>
         <source>7 Pixel inspector</source>
         <translation>7 Pixel inspector</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="329"/>
+        <location filename="../app/window/main_window.cpp" line="330"/>
         <source>1 Camera</source>
         <translation>1 Camera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="332"/>
+        <location filename="../app/window/main_window.cpp" line="333"/>
         <source>5 Scan</source>
         <translation>5 Scan</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="335"/>
+        <location filename="../app/window/main_window.cpp" line="336"/>
         <source>2 View</source>
         <translation>2 View</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="343"/>
+        <location filename="../app/window/main_window.cpp" line="344"/>
         <source>4b Clipping</source>
         <translation>4b Clipping</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="345"/>
+        <location filename="../app/window/main_window.cpp" line="346"/>
         <source>4b Near-plane clipping (seed 002)</source>
         <translation>4b Near-plane clipping (seed 002)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="348"/>
+        <location filename="../app/window/main_window.cpp" line="349"/>
         <source>5b Trapezoids: the scan of seed 002</source>
         <translation>5b Trapezoids: the scan of seed 002</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="353"/>
+        <location filename="../app/window/main_window.cpp" line="354"/>
         <source>Painter</source>
         <translation>Painter</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="354"/>
+        <location filename="../app/window/main_window.cpp" line="355"/>
         <source>Painter&apos;s algorithm (seed 004)</source>
         <translation>Painter&apos;s algorithm (seed 004)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="362"/>
+        <location filename="../app/window/main_window.cpp" line="363"/>
         <source>Use the Fitted Lighting</source>
         <translation>Use the Fitted Lighting</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="370"/>
+        <location filename="../app/window/main_window.cpp" line="371"/>
         <source>Compare</source>
         <translation>Compare</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="370"/>
+        <location filename="../app/window/main_window.cpp" line="371"/>
         <source>Compare with their image</source>
         <translation>Compare with their image</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="941"/>
+        <location filename="../app/window/main_window.cpp" line="943"/>
         <source>Lesson: %1</source>
         <translation>Lesson: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="977"/>
+        <location filename="../app/window/main_window.cpp" line="979"/>
         <source>skipped: %1</source>
         <translation>skipped: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="980"/>
+        <location filename="../app/window/main_window.cpp" line="982"/>
         <source>Counts</source>
         <translation>Counts</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="981"/>
+        <location filename="../app/window/main_window.cpp" line="983"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="984"/>
+        <location filename="../app/window/main_window.cpp" line="986"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="987"/>
+        <location filename="../app/window/main_window.cpp" line="989"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="991"/>
+        <location filename="../app/window/main_window.cpp" line="993"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1015"/>
+        <location filename="../app/window/main_window.cpp" line="1017"/>
         <source>empty (+inf)</source>
         <translation>empty (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1016"/>
+        <location filename="../app/window/main_window.cpp" line="1018"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   depth %6</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1032"/>
+        <location filename="../app/window/main_window.cpp" line="1034"/>
         <source>Open Command File</source>
         <translation>Open Command File</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1033"/>
+        <location filename="../app/window/main_window.cpp" line="1035"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Command files (*.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1039"/>
+        <location filename="../app/window/main_window.cpp" line="1041"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1039"/>
+        <location filename="../app/window/main_window.cpp" line="1041"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1049"/>
+        <location filename="../app/window/main_window.cpp" line="1051"/>
         <source>Export PNG</source>
         <translation>Export PNG</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1049"/>
+        <location filename="../app/window/main_window.cpp" line="1051"/>
         <location filename="../app/window/main_window_actions.cpp" line="154"/>
         <location filename="../app/window/main_window_actions.cpp" line="161"/>
         <location filename="../app/window/main_window_export.cpp" line="198"/>
@@ -5429,17 +5429,17 @@
         <translation>PNG images (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1054"/>
+        <location filename="../app/window/main_window.cpp" line="1056"/>
         <source>Compare with Image</source>
         <translation>Compare with Image</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1055"/>
+        <location filename="../app/window/main_window.cpp" line="1057"/>
         <source>PNG images (*.png);;All files (*)</source>
         <translation>PNG images (*.png);;All files (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/main_window.cpp" line="1084"/>
+        <location filename="../app/window/main_window.cpp" line="1086"/>
         <source>Compared %1 with our render: %n pixel(s) differ</source>
         <translation>
             <numerusform>Compared %1 with our render: %n pixel differs</numerusform>
@@ -5447,37 +5447,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1092"/>
+        <location filename="../app/window/main_window.cpp" line="1094"/>
         <source>About RasterLab</source>
         <translation>About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1098"/>
+        <location filename="../app/window/main_window.cpp" line="1100"/>
         <source>Released under the MIT License, whose text is in %1.</source>
         <translation>Released under the MIT License, whose text is in %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1100"/>
+        <location filename="../app/window/main_window.cpp" line="1102"/>
         <source>Released under the MIT License.</source>
         <translation>Released under the MIT License.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1101"/>
+        <location filename="../app/window/main_window.cpp" line="1103"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1143"/>
+        <location filename="../app/window/main_window.cpp" line="1145"/>
         <source>the panels&apos; text larger, smaller, its normal size</source>
         <translation>the panels&apos; text larger, smaller, its normal size</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1145"/>
+        <location filename="../app/window/main_window.cpp" line="1147"/>
         <source>the image: zoom in, zoom out, fit, actual size (and the wheel)</source>
         <translation>the image: zoom in, zoom out, fit, actual size (and the wheel)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1158"/>
+        <location filename="../app/window/main_window.cpp" line="1160"/>
         <source>These keys act wherever the focus is, a number box included (it keeps its digits and its up and down arrows).</source>
         <translation>These keys act wherever the focus is, a number box included (it keeps its digits and its up and down arrows).</translation>
     </message>
@@ -5734,17 +5734,62 @@
         <translation>Cannot write their frame to %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="98"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="110"/>
         <source>Lecture layout: the stage being stepped fills the screen (F7: your own layout)</source>
         <translation>Lecture layout: the stage being stepped fills the screen (F7: your own layout)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="100"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="112"/>
         <source>Your own layout (F7: the lecture layout again)</source>
         <translation>Your own layout (F7: the lecture layout again)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="199"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="208"/>
+        <source>|N| = %1 · U = %2 · V = %3 · N = %4</source>
+        <translation>|N| = %1 · U = %2 · V = %3 · N = %4</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="213"/>
+        <source>%1 vertices: %2 in front of the camera, %3 behind</source>
+        <translation>%1 vertices: %2 in front of the camera, %3 behind</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="222"/>
+        <source>%1 triangle normals: %2 front faces, %3 back faces · %4 vertex normals</source>
+        <translation>%1 triangle normals: %2 front faces, %3 back faces · %4 vertex normals</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="231"/>
+        <source> · triangle %1: n = %2</source>
+        <translation> · triangle %1: n = %2</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="237"/>
+        <source>%1 triangles: %2 inside, %3 clipped, %4 behind · near plane w = %5</source>
+        <translation>%1 triangles: %2 inside, %3 clipped, %4 behind · near plane w = %5</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="243"/>
+        <source>%1 triangles → %2 spans, %3 pixels covered</source>
+        <translation>%1 triangles → %2 spans, %3 pixels covered</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="248"/>
+        <source>%1 fragments tested, %2 written, %3 rejected</source>
+        <translation>%1 fragments tested, %2 written, %3 rejected</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="258"/>
+        <source> · z kept from %1 to %2</source>
+        <translation> · z kept from %1 to %2</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="262"/>
+        <source>%1 pixels shaded · N·L &lt; 0: %2 · R·V &lt; 0: %3 · clamped at 255: %4</source>
+        <translation>%1 pixels shaded · N·L &lt; 0: %2 · R·V &lt; 0: %3 · clamped at 255: %4</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="321"/>
         <source>Text size %1 %</source>
         <translation>Text size %1 %</translation>
     </message>

@@ -3341,182 +3341,182 @@
         <translation>Dá a cada etapa as respostas anteriores do seu próprio programa como entrada, para ver como os erros se somam (desmarcada, cada etapa recebe as do RasterLab, e nenhum erro esconde outro)</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="91"/>
+        <location filename="../app/window/check_panel.cpp" line="95"/>
         <source>Compare Their Frame</source>
         <translation>Comparar o Quadro Deles</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="93"/>
+        <location filename="../app/window/check_panel.cpp" line="97"/>
         <source>Their whole frame in the Compare dock: each pixel&apos;s colour beside ours, and the Phong term that would have to change</source>
         <translation>O quadro inteiro deles no painel Comparar: a cor de cada pixel ao lado da nossa, e o termo de Phong que teria de mudar</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="106"/>
+        <location filename="../app/window/check_panel.cpp" line="114"/>
         <source>Stage</source>
         <translation>Etapa</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="106"/>
+        <location filename="../app/window/check_panel.cpp" line="114"/>
         <source>Verdict</source>
         <translation>Veredito</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="106"/>
+        <location filename="../app/window/check_panel.cpp" line="114"/>
         <source>Elements</source>
         <translation>Elementos</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="106"/>
+        <location filename="../app/window/check_panel.cpp" line="114"/>
         <source>Likely cause</source>
         <translation>Causa provável</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="143"/>
+        <location filename="../app/window/check_panel.cpp" line="151"/>
         <source>Your Program&apos;s Folder</source>
         <translation>A Pasta do Seu Programa</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="186"/>
+        <location filename="../app/window/check_panel.cpp" line="194"/>
         <source>A check is running.</source>
         <translation>Uma verificação está em andamento.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="188"/>
+        <location filename="../app/window/check_panel.cpp" line="196"/>
         <source>Give the command that starts your program.</source>
         <translation>Informe o comando que inicia o seu programa.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="191"/>
+        <location filename="../app/window/check_panel.cpp" line="199"/>
         <source>The folder %1 does not exist.</source>
         <translation>A pasta %1 não existe.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="193"/>
+        <location filename="../app/window/check_panel.cpp" line="201"/>
         <source>There is no frame to check against.</source>
         <translation>Não há quadro com que comparar.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="217"/>
+        <location filename="../app/window/check_panel.cpp" line="225"/>
         <source>Checking %1...</source>
         <translation>Verificando %1...</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="235"/>
+        <location filename="../app/window/check_panel.cpp" line="243"/>
         <source>cancelled</source>
         <translation>cancelada</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="235"/>
+        <location filename="../app/window/check_panel.cpp" line="243"/>
         <source>done</source>
         <translation>concluída</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="245"/>
+        <location filename="../app/window/check_panel.cpp" line="253"/>
         <source>Over our image: each vertex that departs, ours a green dot, theirs a red cross, joined by a line.</source>
         <translation>Sobre a nossa imagem: cada vértice que se desvia, o nosso um ponto verde, o deles uma cruz vermelha, unidos por uma linha.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="249"/>
+        <location filename="../app/window/check_panel.cpp" line="257"/>
         <source>Over our image: magenta, pixels only we cover; cyan, pixels only they cover.</source>
         <translation>Sobre a nossa imagem: magenta, pixels que só nós cobrimos; ciano, pixels que só eles cobrem.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="253"/>
+        <location filename="../app/window/check_panel.cpp" line="261"/>
         <source>Over our image: red, pixels another triangle wins (or at another depth); magenta, only ours keeps one; cyan, only theirs.</source>
         <translation>Sobre a nossa imagem: vermelho, pixels que outro triângulo ganha (ou com outra profundidade); magenta, só o nosso guarda um; ciano, só o deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="257"/>
+        <location filename="../app/window/check_panel.cpp" line="265"/>
         <source>Over our image: red, pixels whose colour differs by more than 1.</source>
         <translation>Sobre a nossa imagem: vermelho, pixels cuja cor difere em mais de 1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="266"/>
+        <location filename="../app/window/check_panel.cpp" line="274"/>
         <source>passed</source>
         <translation>passou</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="268"/>
+        <location filename="../app/window/check_panel.cpp" line="276"/>
         <source>failed</source>
         <translation>falhou</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="270"/>
+        <location filename="../app/window/check_panel.cpp" line="278"/>
         <source>unsupported</source>
         <translation>não suportada</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="272"/>
+        <location filename="../app/window/check_panel.cpp" line="280"/>
         <source>broken</source>
         <translation>quebrou</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="315"/>
+        <location filename="../app/window/check_panel.cpp" line="323"/>
         <source>not applied: %1</source>
         <translation>não aplicado: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="324"/>
+        <location filename="../app/window/check_panel.cpp" line="332"/>
         <source>Protected by: %1.</source>
         <translation>Protegido por: %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="325"/>
+        <location filename="../app/window/check_panel.cpp" line="333"/>
         <source>Protected by: %1. Not applied: %2.</source>
         <translation>Protegido por: %1. Não aplicado: %2.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="329"/>
+        <location filename="../app/window/check_panel.cpp" line="337"/>
         <source>Not checked: %1</source>
         <translation>Não verificada: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="335"/>
+        <location filename="../app/window/check_panel.cpp" line="343"/>
         <source>%1 of %2 differ</source>
         <translation>%1 de %2 diferem</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="350"/>
+        <location filename="../app/window/check_panel.cpp" line="361"/>
         <source>Every stage passed (%1 s).</source>
         <translation>Todas as etapas passaram (%1 s).</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="384"/>
+        <location filename="../app/window/check_panel.cpp" line="410"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="388"/>
+        <location filename="../app/window/check_panel.cpp" line="414"/>
         <source>First departure: %1: theirs %2, ours %3</source>
         <translation>Primeiro desvio: %1: o deles %2, o nosso %3</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="393"/>
+        <location filename="../app/window/check_panel.cpp" line="419"/>
         <source>Likely cause: %1 (explains %2 of %3, %4% of the difference)</source>
         <translation>Causa provável: %1 (explica %2 de %3, %4% da diferença)</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="399"/>
+        <location filename="../app/window/check_panel.cpp" line="425"/>
         <source>No known mistake of this stage gives their answer.</source>
         <translation>Nenhum erro conhecido desta etapa dá a resposta deles.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="401"/>
+        <location filename="../app/window/check_panel.cpp" line="427"/>
         <source>Unexplained: %1 of %2.</source>
         <translation>Sem explicação: %1 de %2.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="402"/>
+        <location filename="../app/window/check_panel.cpp" line="428"/>
         <source>In numbers: %1</source>
         <translation>Em números: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="404"/>
+        <location filename="../app/window/check_panel.cpp" line="430"/>
         <source>Carried from the earlier stages: %1 elements of the lecture&apos;s answer change with what was sent.</source>
         <translation>Trazido das etapas anteriores: %1 elementos da resposta da aula mudam com o que foi enviado.</translation>
     </message>
     <message>
-        <location filename="../app/window/check_panel.cpp" line="409"/>
+        <location filename="../app/window/check_panel.cpp" line="435"/>
         <source>Tolerance: %1</source>
         <translation>Tolerância: %1</translation>
     </message>
@@ -4552,79 +4552,79 @@
         <translation>Parado num ponto de parada: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="210"/>
+        <location filename="../app/window/main_window.cpp" line="211"/>
         <location filename="../app/window/main_window_export.cpp" line="122"/>
         <location filename="../app/window/main_window_export.cpp" line="159"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="211"/>
+        <location filename="../app/window/main_window.cpp" line="212"/>
         <source>Stop preparing the stepping of this frame</source>
         <translation>Parar a preparação do passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="215"/>
+        <location filename="../app/window/main_window.cpp" line="216"/>
         <source>cancelled</source>
         <translation>cancelado</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="273"/>
+        <location filename="../app/window/main_window.cpp" line="274"/>
         <source>Stepping</source>
         <translation>Passo a passo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="297"/>
+        <location filename="../app/window/main_window.cpp" line="298"/>
         <source>Edit</source>
         <translation>Edição</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="304"/>
+        <location filename="../app/window/main_window.cpp" line="305"/>
         <source>Breakpoints</source>
         <translation>Pontos de parada</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="310"/>
+        <location filename="../app/window/main_window.cpp" line="311"/>
         <source>Animation</source>
         <translation>Animação</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="329"/>
+        <location filename="../app/window/main_window.cpp" line="330"/>
         <source>1 Camera basis</source>
         <translation>1 Base da câmera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="301"/>
+        <location filename="../app/window/main_window.cpp" line="302"/>
         <source>7 Pixel inspector (lighting)</source>
         <translation>7 Inspetor de pixel (iluminação)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="336"/>
+        <location filename="../app/window/main_window.cpp" line="337"/>
         <source>2 View coordinates (vertices)</source>
         <translation>2 Coordenadas de vista (vértices)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="338"/>
+        <location filename="../app/window/main_window.cpp" line="339"/>
         <source>3 Normals</source>
         <translation>3 Normais</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="340"/>
+        <location filename="../app/window/main_window.cpp" line="341"/>
         <source>4 Projection</source>
         <translation>4 Projeção</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="332"/>
+        <location filename="../app/window/main_window.cpp" line="333"/>
         <source>5 Scan conversion</source>
         <translation>5 Conversão por varredura</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="346"/>
+        <location filename="../app/window/main_window.cpp" line="347"/>
         <source>5b Trapezoids</source>
         <translation>5b Trapézios</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="350"/>
+        <location filename="../app/window/main_window.cpp" line="351"/>
         <source>6 Z-buffer</source>
         <translation>6 Z-buffer</translation>
     </message>
@@ -4644,37 +4644,37 @@
         <translation>&amp;Algoritmo do pintor (plano, do mais distante ao mais próximo, sem teste de profundidade)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1122"/>
+        <location filename="../app/window/main_window.cpp" line="1124"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>avançar, voltar um passo (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1124"/>
+        <location filename="../app/window/main_window.cpp" line="1126"/>
         <source>Space</source>
         <translation>Barra de espaço</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1124"/>
+        <location filename="../app/window/main_window.cpp" line="1126"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>reproduzir / pausar (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1130"/>
+        <location filename="../app/window/main_window.cpp" line="1132"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>soltar o pixel escolhido (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1131"/>
+        <location filename="../app/window/main_window.cpp" line="1133"/>
         <source>presentation mode on / off</source>
         <translation>ligar / desligar o modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1137"/>
+        <location filename="../app/window/main_window.cpp" line="1139"/>
         <source>fill the window with the panel under the pointer (in the lecture layout, the stage&apos;s), and back</source>
         <translation>preencher a janela com o painel sob o ponteiro (no layout de aula, o da etapa), e voltar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1141"/>
+        <location filename="../app/window/main_window.cpp" line="1143"/>
         <source>save, undo, redo</source>
         <translation>salvar, desfazer, refazer</translation>
     </message>
@@ -4896,7 +4896,7 @@
     <message>
         <location filename="../app/window/main_window_actions.cpp" line="237"/>
         <source>The Edit panel stays on screen in presentation mode: the light and the material change in front of the class (F9)</source>
-        <translation>O painel Editar fica na tela no modo de apresentação: a luz e o material mudam diante da turma (F9)</translation>
+        <translation>O painel Edição fica na tela no modo de apresentação: a luz e o material mudam diante da turma (F9)</translation>
     </message>
     <message>
         <location filename="../app/window/main_window_actions.cpp" line="251"/>
@@ -4979,87 +4979,87 @@
         <translation>&amp;Mesmo lado (recortar só os triângulos que cruzam o plano do olho)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="708"/>
+        <location filename="../app/window/main_window.cpp" line="710"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Todos os triângulos estão atrás da câmera (N aponta para longe do objeto?), então o recorte no plano próximo não deixa nada para desenhar. A fórmula da seed 000 divide por z mesmo assim: desenharia %1 dos %2 triângulos como a reflexão do objeto pelo olho, girada meia volta na tela, e o z-buffer (que guarda o menor z) guardaria o lado mais distante da câmera. A vista lateral da projeção mostra o olho, N e o objeto.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1013"/>
+        <location filename="../app/window/main_window.cpp" line="1015"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1105"/>
+        <location filename="../app/window/main_window.cpp" line="1107"/>
         <source>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</source>
         <translation>&lt;p&gt;Segue as disciplinas para as quais foi feito: os projetos da disciplina de computação gráfica da UFPE e da UFRPE (sombreamento de Phong com z-buffer, e sua variante com sombreamento plano e o algoritmo do pintor), o trabalho “HW2: 3D Rasterizer”, o pipeline de renderização por quadro de uma disciplina de animação, e os slides da aula do Prof. Jonh Edson R. de Carvalho sobre modelos de iluminação (“Modelos de Iluminação”).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1119"/>
+        <location filename="../app/window/main_window.cpp" line="1121"/>
         <source>step forward</source>
         <translation>avançar um passo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1120"/>
+        <location filename="../app/window/main_window.cpp" line="1122"/>
         <source>step back</source>
         <translation>voltar um passo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1123"/>
+        <location filename="../app/window/main_window.cpp" line="1125"/>
         <source>play / pause</source>
         <translation>reproduzir / pausar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1125"/>
+        <location filename="../app/window/main_window.cpp" line="1127"/>
         <source>jump to the start / the end of the frame</source>
         <translation>ir ao início / ao fim do quadro</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1126"/>
+        <location filename="../app/window/main_window.cpp" line="1128"/>
         <source>continue to the next breakpoint</source>
         <translation>continuar até o próximo ponto de parada</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1127"/>
+        <location filename="../app/window/main_window.cpp" line="1129"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>avançar por etapa, triângulo, linha de varredura, segmento, pixel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1128"/>
+        <location filename="../app/window/main_window.cpp" line="1130"/>
         <source>show a stage&apos;s view</source>
         <translation>mostrar o painel de uma etapa</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1129"/>
+        <location filename="../app/window/main_window.cpp" line="1131"/>
         <source>Click, arrows</source>
         <translation>Clique, setas</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1129"/>
+        <location filename="../app/window/main_window.cpp" line="1131"/>
         <source>pick a pixel, move it by one</source>
         <translation>escolher um pixel, movê-lo de um em um</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1133"/>
+        <location filename="../app/window/main_window.cpp" line="1135"/>
         <source>presentation mode: the lecture layout (the stage being stepped fills the screen) or your own layout</source>
         <translation>modo de apresentação: o layout de aula (a etapa em que se avança ocupa a tela) ou o seu próprio layout</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1135"/>
+        <location filename="../app/window/main_window.cpp" line="1137"/>
         <source>presentation mode: the Edit panel on screen (live edits)</source>
-        <translation>modo de apresentação: o painel Editar na tela (edição ao vivo)</translation>
+        <translation>modo de apresentação: o painel Edição na tela (edição ao vivo)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1136"/>
+        <location filename="../app/window/main_window.cpp" line="1138"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, duplo clique no título de um painel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1140"/>
+        <location filename="../app/window/main_window.cpp" line="1142"/>
         <source>open, export the image, export it as displayed</source>
         <translation>abrir, exportar a imagem, exportá-la como exibida</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1166"/>
+        <location filename="../app/window/main_window.cpp" line="1168"/>
         <source>Keyboard Shortcuts</source>
         <translation>Atalhos de teclado</translation>
     </message>
@@ -5104,22 +5104,22 @@
         <translation>&amp;Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="282"/>
+        <location filename="../app/window/main_window.cpp" line="283"/>
         <source>Messages</source>
         <translation>Mensagens</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="287"/>
+        <location filename="../app/window/main_window.cpp" line="288"/>
         <source>Scene</source>
         <translation>Cena</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="307"/>
+        <location filename="../app/window/main_window.cpp" line="308"/>
         <source>Accuracy</source>
         <translation>Exatidão</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="682"/>
+        <location filename="../app/window/main_window.cpp" line="684"/>
         <location filename="../app/window/main_window_export.cpp" line="35"/>
         <location filename="../app/window/main_window_export.cpp" line="133"/>
         <location filename="../app/window/main_window_export.cpp" line="175"/>
@@ -5138,18 +5138,18 @@
         <translation>Exportado %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="735"/>
+        <location filename="../app/window/main_window.cpp" line="737"/>
         <source>rendering...</source>
         <translation>renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="735"/>
+        <location filename="../app/window/main_window.cpp" line="737"/>
         <source>%1, rendering...</source>
         <translation>%1, renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="733"/>
-        <location filename="../app/window/main_window.cpp" line="976"/>
+        <location filename="../app/window/main_window.cpp" line="735"/>
+        <location filename="../app/window/main_window.cpp" line="978"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -5214,73 +5214,73 @@
         <translation>&amp;Atalhos de teclado</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="401"/>
+        <location filename="../app/window/main_window.cpp" line="402"/>
         <source>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</source>
         <translation>Apresentação: F5 ou Esc sai; Page Down, → e Espaço avançam e reproduzem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="665"/>
+        <location filename="../app/window/main_window.cpp" line="667"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="743"/>
+        <location filename="../app/window/main_window.cpp" line="745"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparando o passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="743"/>
+        <location filename="../app/window/main_window.cpp" line="745"/>
         <source>Rendering</source>
         <translation>Renderizando</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="919"/>
+        <location filename="../app/window/main_window.cpp" line="921"/>
         <source>Error: %1</source>
         <translation>Erro: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="943"/>
+        <location filename="../app/window/main_window.cpp" line="945"/>
         <source>Files</source>
         <translation>Arquivos</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="946"/>
+        <location filename="../app/window/main_window.cpp" line="948"/>
         <source>Command file</source>
         <translation>Arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="947"/>
+        <location filename="../app/window/main_window.cpp" line="949"/>
         <source>Image</source>
         <translation>Imagem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="949"/>
+        <location filename="../app/window/main_window.cpp" line="951"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vértices, %2 triângulos em %3 desenhos; %4 x %5 pixels; %6 luzes</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="959"/>
+        <location filename="../app/window/main_window.cpp" line="961"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="960"/>
+        <location filename="../app/window/main_window.cpp" line="962"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="961"/>
+        <location filename="../app/window/main_window.cpp" line="963"/>
         <source>Object</source>
         <translation>Objeto</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="963"/>
+        <location filename="../app/window/main_window.cpp" line="965"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vértices, %2 triângulos; %3 x %4 pixels, sombreamento %5</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="267"/>
-        <location filename="../app/window/main_window.cpp" line="970"/>
+        <location filename="../app/window/main_window.cpp" line="268"/>
+        <location filename="../app/window/main_window.cpp" line="972"/>
         <source>Stages</source>
         <translation>Etapas</translation>
     </message>
@@ -5290,137 +5290,137 @@
         <translation>%1 (o exemplo %2)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="300"/>
+        <location filename="../app/window/main_window.cpp" line="301"/>
         <source>7 Pixel inspector</source>
         <translation>7 Inspetor de pixel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="329"/>
+        <location filename="../app/window/main_window.cpp" line="330"/>
         <source>1 Camera</source>
         <translation>1 Câmera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="332"/>
+        <location filename="../app/window/main_window.cpp" line="333"/>
         <source>5 Scan</source>
         <translation>5 Varredura</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="335"/>
+        <location filename="../app/window/main_window.cpp" line="336"/>
         <source>2 View</source>
         <translation>2 Vista</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="343"/>
+        <location filename="../app/window/main_window.cpp" line="344"/>
         <source>4b Clipping</source>
         <translation>4b Recorte</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="345"/>
+        <location filename="../app/window/main_window.cpp" line="346"/>
         <source>4b Near-plane clipping (seed 002)</source>
         <translation>4b Recorte no plano próximo (semente 002)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="348"/>
+        <location filename="../app/window/main_window.cpp" line="349"/>
         <source>5b Trapezoids: the scan of seed 002</source>
         <translation>5b Trapézios: a varredura da semente 002</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="353"/>
+        <location filename="../app/window/main_window.cpp" line="354"/>
         <source>Painter</source>
         <translation>Pintor</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="354"/>
+        <location filename="../app/window/main_window.cpp" line="355"/>
         <source>Painter&apos;s algorithm (seed 004)</source>
         <translation>Algoritmo do pintor (semente 004)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="362"/>
+        <location filename="../app/window/main_window.cpp" line="363"/>
         <source>Use the Fitted Lighting</source>
         <translation>Usar a Iluminação Ajustada</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="370"/>
+        <location filename="../app/window/main_window.cpp" line="371"/>
         <source>Compare</source>
         <translation>Comparar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="370"/>
+        <location filename="../app/window/main_window.cpp" line="371"/>
         <source>Compare with their image</source>
         <translation>Comparar com a imagem deles</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="941"/>
+        <location filename="../app/window/main_window.cpp" line="943"/>
         <source>Lesson: %1</source>
         <translation>Aula: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="977"/>
+        <location filename="../app/window/main_window.cpp" line="979"/>
         <source>skipped: %1</source>
         <translation>omitida: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="980"/>
+        <location filename="../app/window/main_window.cpp" line="982"/>
         <source>Counts</source>
         <translation>Contagens</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="981"/>
+        <location filename="../app/window/main_window.cpp" line="983"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triângulos recortados no plano próximo: %1; atrás da câmera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="984"/>
+        <location filename="../app/window/main_window.cpp" line="986"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Triângulos de área zero: %1 no espaço de vista, %2 na tela&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="987"/>
+        <location filename="../app/window/main_window.cpp" line="989"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragmentos testados: %1; escritos: %2; rejeitados: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="991"/>
+        <location filename="../app/window/main_window.cpp" line="993"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels sombreados: %1; normais voltadas para o observador: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; limitados a 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1015"/>
+        <location filename="../app/window/main_window.cpp" line="1017"/>
         <source>empty (+inf)</source>
         <translation>vazio (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1016"/>
+        <location filename="../app/window/main_window.cpp" line="1018"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   profundidade %6</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1032"/>
+        <location filename="../app/window/main_window.cpp" line="1034"/>
         <source>Open Command File</source>
         <translation>Abrir arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1033"/>
+        <location filename="../app/window/main_window.cpp" line="1035"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Arquivos de comandos (*.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1039"/>
+        <location filename="../app/window/main_window.cpp" line="1041"/>
         <source>Open</source>
         <translation>Abrir</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1039"/>
+        <location filename="../app/window/main_window.cpp" line="1041"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Arquivos de cena (*.byu *.cfg *.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1049"/>
+        <location filename="../app/window/main_window.cpp" line="1051"/>
         <source>Export PNG</source>
         <translation>Exportar PNG</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1049"/>
+        <location filename="../app/window/main_window.cpp" line="1051"/>
         <location filename="../app/window/main_window_actions.cpp" line="154"/>
         <location filename="../app/window/main_window_actions.cpp" line="161"/>
         <location filename="../app/window/main_window_export.cpp" line="198"/>
@@ -5429,17 +5429,17 @@
         <translation>Imagens PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1054"/>
+        <location filename="../app/window/main_window.cpp" line="1056"/>
         <source>Compare with Image</source>
         <translation>Comparar com imagem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1055"/>
+        <location filename="../app/window/main_window.cpp" line="1057"/>
         <source>PNG images (*.png);;All files (*)</source>
         <translation>Imagens PNG (*.png);;Todos os arquivos (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/main_window.cpp" line="1084"/>
+        <location filename="../app/window/main_window.cpp" line="1086"/>
         <source>Compared %1 with our render: %n pixel(s) differ</source>
         <translation>
             <numerusform>%1 comparada com a nossa renderização: %n pixel difere</numerusform>
@@ -5447,37 +5447,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1092"/>
+        <location filename="../app/window/main_window.cpp" line="1094"/>
         <source>About RasterLab</source>
         <translation>Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1098"/>
+        <location filename="../app/window/main_window.cpp" line="1100"/>
         <source>Released under the MIT License, whose text is in %1.</source>
         <translation>Distribuído sob a Licença MIT, cujo texto está em %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1100"/>
+        <location filename="../app/window/main_window.cpp" line="1102"/>
         <source>Released under the MIT License.</source>
         <translation>Distribuído sob a Licença MIT.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1101"/>
+        <location filename="../app/window/main_window.cpp" line="1103"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;O pipeline clássico de rasterização por software, etapa por etapa: base da câmera, coordenadas de vista, normais, projeção, conversão por varredura, teste de profundidade e sombreamento.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1143"/>
+        <location filename="../app/window/main_window.cpp" line="1145"/>
         <source>the panels&apos; text larger, smaller, its normal size</source>
         <translation>o texto dos painéis maior, menor, no tamanho normal</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1145"/>
+        <location filename="../app/window/main_window.cpp" line="1147"/>
         <source>the image: zoom in, zoom out, fit, actual size (and the wheel)</source>
         <translation>a imagem: aproximar, afastar, ajustar, tamanho real (e a roda do mouse)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1158"/>
+        <location filename="../app/window/main_window.cpp" line="1160"/>
         <source>These keys act wherever the focus is, a number box included (it keeps its digits and its up and down arrows).</source>
         <translation>Estas teclas agem onde quer que esteja o foco, inclusive numa caixa de número (ela fica com os seus dígitos e as suas setas para cima e para baixo).</translation>
     </message>
@@ -5734,17 +5734,62 @@
         <translation>Não é possível gravar o quadro deles em %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="98"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="110"/>
         <source>Lecture layout: the stage being stepped fills the screen (F7: your own layout)</source>
         <translation>Layout de aula: a etapa em que se avança ocupa a tela (F7: o seu próprio layout)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="100"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="112"/>
         <source>Your own layout (F7: the lecture layout again)</source>
         <translation>O seu próprio layout (F7: o layout de aula de novo)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="199"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="208"/>
+        <source>|N| = %1 · U = %2 · V = %3 · N = %4</source>
+        <translation>|N| = %1 · U = %2 · V = %3 · N = %4</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="213"/>
+        <source>%1 vertices: %2 in front of the camera, %3 behind</source>
+        <translation>%1 vértices: %2 à frente da câmera, %3 atrás</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="222"/>
+        <source>%1 triangle normals: %2 front faces, %3 back faces · %4 vertex normals</source>
+        <translation>%1 normais de triângulo: %2 faces da frente, %3 faces de trás · %4 normais de vértice</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="231"/>
+        <source> · triangle %1: n = %2</source>
+        <translation> · triângulo %1: n = %2</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="237"/>
+        <source>%1 triangles: %2 inside, %3 clipped, %4 behind · near plane w = %5</source>
+        <translation>%1 triângulos: %2 dentro, %3 recortados, %4 atrás · plano próximo w = %5</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="243"/>
+        <source>%1 triangles → %2 spans, %3 pixels covered</source>
+        <translation>%1 triângulos → %2 segmentos, %3 pixels cobertos</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="248"/>
+        <source>%1 fragments tested, %2 written, %3 rejected</source>
+        <translation>%1 fragmentos testados, %2 escritos, %3 rejeitados</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="258"/>
+        <source> · z kept from %1 to %2</source>
+        <translation> · z guardado de %1 a %2</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="262"/>
+        <source>%1 pixels shaded · N·L &lt; 0: %2 · R·V &lt; 0: %3 · clamped at 255: %4</source>
+        <translation>%1 pixels sombreados · N·L &lt; 0: %2 · R·V &lt; 0: %3 · limitados a 255: %4</translation>
+    </message>
+    <message>
+        <location filename="../app/window/main_window_lecture.cpp" line="321"/>
         <source>Text size %1 %</source>
         <translation>Tamanho do texto %1 %</translation>
     </message>

@@ -179,6 +179,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_inspection, &Inspection::stageChanged, this, &MainWindow::scheduleLectureLayout);
     connect(m_inspection, &Inspection::cursorChanged, this, &MainWindow::scheduleLectureLayout);
     connect(m_inspection, &Inspection::frameChanged, this, &MainWindow::scheduleLectureLayout);
+    connect(m_inspection, &Inspection::selectionChanged, this, &MainWindow::scheduleLectureLayout);
     m_adoptTimer.setSingleShot(true);
     m_adoptTimer.setInterval(kEditPauseMs);
     connect(&m_adoptTimer, &QTimer::timeout, this, [this] {
@@ -481,6 +482,7 @@ void MainWindow::enterPresentationLayout() {
 }
 
 void MainWindow::leavePresentationLayout() {
+    showLectureCaption(nullptr);
     centralWidget()->show();  // the lecture layout may have given its room to a dock
     restoreState(m_layoutBeforePresentation, kLayoutVersion);
     m_hiddenByPresentation.clear();

@@ -199,6 +199,10 @@ public:
     static QString stageDockName(rl::StageId stage);
     static constexpr double kLectureStageShare = 0.62;
     static constexpr double kLectureEditShare = 0.26;
+    // The stage dock's title in the lecture layout: the stage and its key numbers for the
+    // frame (fragments tested, pixels shaded ...), this much larger than the window's text.
+    QString lectureCaption(rl::StageId stage) const;
+    static constexpr double kLectureCaptionScale = 1.3;
     // Live edits (F9): the Edit dock kept on screen in presentation mode (on the left of the
     // lecture layout), so that the light and the material change in front of the class.
     bool liveEdits() const { return m_liveEdits; }
@@ -359,6 +363,7 @@ private:
     void scheduleLectureLayout();
     void fitLectureDocks();
     void applyTextZoom();
+    void showLectureCaption(QDockWidget* dock);  // null: the caption taken away
     bool keyForWindow(const QKeyEvent* key) const;
     void addTeachingActions(QMenu* view);
     void keepKeysFromNumberBoxes();  // installs the application's filter (filterNumberBoxKey)
@@ -458,6 +463,15 @@ private:
     };
     LectureShown m_lectureShown;
     QByteArray m_presentationOwnLayout;
+    QLabel* m_lectureCaption = nullptr;
+    QPointer<QDockWidget> m_captionDock;
+    struct CaptionKey {  // what the caption was made for
+        quint64 frame = ~quint64(0);
+        rl::StageId stage = rl::StageId::CameraBasis;
+        qint64 triangle = -1;  // the selected one
+        bool operator==(const CaptionKey&) const = default;
+    };
+    CaptionKey m_captionKey;
     QAction* m_lectureAction = nullptr;
     bool m_liveEdits = false;
     QAction* m_liveEditsAction = nullptr;

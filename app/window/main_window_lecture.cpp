@@ -6,14 +6,25 @@
 #include <QApplication>
 #include <QDockWidget>
 #include <QKeyEvent>
+#include <QLabel>
 #include <QLineEdit>
 #include <QStatusBar>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "app/window/main_window.h"
+#include "pipeline/render/frame_trace.h"
+#include "pipeline/stages/camera_basis.h"
+#include "pipeline/stages/depth_test.h"
+#include "pipeline/stages/projection.h"
+#include "pipeline/stages/scan_conversion.h"
+#include "pipeline/stages/shading.h"
+#include "pipeline/stages/view_transform.h"
+#include "views/normals_model.h"
+#include "views/stage_strip.h"
 #include "views/frame_image_view.h"
 #include "views/stepping_bar.h"
 
@@ -91,6 +102,7 @@ void MainWindow::setLectureLayout(bool on) {
         applyLectureLayout();
     } else {
         m_lectureLayout = false;
+        showLectureCaption(nullptr);
         centralWidget()->show();
         restoreState(m_presentationOwnLayout, kLayoutVersion);
         QMetaObject::invokeMethod(this, &MainWindow::fitDocks, Qt::QueuedConnection);
@@ -134,6 +146,7 @@ void MainWindow::applyLectureLayout() {
     QDockWidget* stage = lectureDock();
     auto* edit = m_liveEdits ? findChild<QDockWidget*>(QStringLiteral("editDock")) : nullptr;
     const bool image = lectureShowsImage();
+    showLectureCaption(stage);  // the frame's numbers change with each new frame
     const LectureShown shown{stage, edit, image, size()};
     if (shown == m_lectureShown) return;  // stepping within a stage changes nothing here
     m_lectureShown = shown;
@@ -177,6 +190,115 @@ void MainWindow::fitLectureDocks() {
     if (!docks.isEmpty()) resizeDocks(docks, widths, Qt::Horizontal);
 }
 
+QString MainWindow::lectureCaption(rl::StageId stage) const {
+    // The stage's name and its key numbers for the whole frame, in the language shown.
+    const QString name = QStringLiteral("%1 %2").arg(int(stage) + 1).arg(StageStrip::stageName(stage));
+    const rl::FrameTrace* t = m_frame.trace.get();
+    if (!t || !t->skipReason(stage).empty()) return name;
+    // Written as the views write them (a point for decimals, no thousands separator), so
+    // that the caption's numbers read as the dock's.
+    const auto n = [](std::size_t count) { return QString::number(qulonglong(count)); };
+    const auto x = [](double v) { return QString::number(v, 'g', 4); };
+    const auto vec = [&](const rl::dvec3& v) {
+        return QStringLiteral("(%1, %2, %3)").arg(x(v.x), x(v.y), x(v.z));
+    };
+    QString numbers;
+    switch (stage) {
+        case rl::StageId::CameraBasis:
+            numbers = tr("|N| = %1 · U = %2 · V = %3 · N = %4")
+                          .arg(x(t->cameraBasis->nLength), vec(t->cameraBasis->u),
+                               vec(t->cameraBasis->v), vec(t->cameraBasis->n));
+            break;
+        case rl::StageId::ViewTransform:
+            numbers = tr("%1 vertices: %2 in front of the camera, %3 behind")
+                          .arg(n(t->scene->vertexCount()), n(t->view->verticesInFront),
+                               n(t->view->verticesBehind));
+            break;
+        case rl::StageId::Normals: {
+            std::size_t back = 0;  // facing away from the camera: n · pView > 0
+            for (std::size_t d = 0; d < t->scene->draws.size(); ++d)
+                if (const auto& mesh = t->scene->draws[d].mesh; mesh && d < t->projection->draws.size())
+                    for (std::uint8_t b : backFaces(t->projection->draws[d].pView, *mesh)) back += b;
+            numbers = tr("%1 triangle normals: %2 front faces, %3 back faces · %4 vertex normals")
+                          .arg(n(t->scene->triangleCount()), n(t->scene->triangleCount() - back),
+                               n(back), n(t->scene->vertexCount()));
+            // The selected triangle's (the picked pixel's), the one the view draws.
+            if (const auto s = m_inspection->selectedTriangle();
+                s && *s < t->projection->triangles.size()) {
+                const rl::ScreenTriangle& st = t->projection->triangles[*s];
+                const auto& normals = t->normals->draws.at(st.draw).triangle;
+                if (st.source < normals.size())
+                    numbers += tr(" · triangle %1: n = %2")
+                                   .arg(n(st.source + 1), vec(rl::dvec3(normals[st.source])));
+            }
+            break;
+        }
+        case rl::StageId::Projection:
+            numbers = tr("%1 triangles: %2 inside, %3 clipped, %4 behind · near plane w = %5")
+                          .arg(n(t->scene->triangleCount()), n(t->projection->inside),
+                               n(t->projection->clipped), n(t->projection->behind),
+                               x(t->projection->nearW));
+            break;
+        case rl::StageId::ScanConversion:
+            numbers = tr("%1 triangles → %2 spans, %3 pixels covered")
+                          .arg(n(t->scan->triangleCount()), n(t->scan->spans.size()),
+                               n(t->scan->pixels));
+            break;
+        case rl::StageId::DepthTest: {
+            numbers = tr("%1 fragments tested, %2 written, %3 rejected")
+                          .arg(n(t->depth->fragments), n(t->depth->passed), n(t->depth->rejected));
+            // The depths kept, nearest and farthest (empty pixels stay at +infinity).
+            float nearest = std::numeric_limits<float>::infinity(), farthest = -nearest;
+            for (float z : t->depth->depth.pixels())
+                if (std::isfinite(z)) {
+                    nearest = std::min(nearest, z);
+                    farthest = std::max(farthest, z);
+                }
+            if (nearest <= farthest)
+                numbers += tr(" · z kept from %1 to %2").arg(x(nearest), x(farthest));
+            break;
+        }
+        case rl::StageId::Shading:
+            numbers = tr("%1 pixels shaded · N·L < 0: %2 · R·V < 0: %3 · clamped at 255: %4")
+                          .arg(n(t->shading->shadedPixels), n(t->shading->lightBehind),
+                               n(t->shading->noSpecular), n(t->shading->clampedPixels));
+            break;
+    }
+    return QStringLiteral("<b>%1</b> &nbsp; %2").arg(name.toHtmlEscaped(), numbers.toHtmlEscaped());
+}
+
+void MainWindow::showLectureCaption(QDockWidget* dock) {
+    // The dock's title bar, in the lecture layout: its stage's numbers in large print.
+    if (m_captionDock && m_captionDock != dock) m_captionDock->setTitleBarWidget(nullptr);
+    m_captionDock = dock;
+    if (!dock) return;
+    if (!m_lectureCaption) {
+        m_lectureCaption = new QLabel(this);
+        m_lectureCaption->setObjectName(QStringLiteral("lectureCaption"));
+        m_lectureCaption->setWordWrap(true);
+        m_lectureCaption->setTextFormat(Qt::RichText);
+        m_lectureCaption->setContentsMargins(8, 4, 8, 4);
+        m_lectureCaption->setAutoFillBackground(true);
+    }
+    QFont font;
+    font.setPointSizeF(QApplication::font().pointSizeF() * kLectureCaptionScale * m_textZoom);
+    m_lectureCaption->setFont(font);
+    QPalette palette = m_lectureCaption->palette();
+    palette.setColor(QPalette::Window, QColor(40, 40, 40));
+    palette.setColor(QPalette::WindowText, QColor(255, 220, 0));
+    m_lectureCaption->setPalette(palette);
+    // Made again only for another frame or stage (this runs at every step).
+    const auto selected = m_inspection->selectedTriangle();
+    const CaptionKey key{m_frame.generation, m_inspection->stage(),
+                         selected ? qint64(*selected) : qint64(-1)};
+    if (key != m_captionKey) {
+        m_captionKey = key;
+        m_lectureCaption->setText(lectureCaption(key.stage));
+    }
+    if (dock->titleBarWidget() != m_lectureCaption) dock->setTitleBarWidget(m_lectureCaption);
+    m_lectureCaption->show();
+}
+
 double MainWindow::textZoom() const {
     return m_textZoom;
 }
@@ -214,6 +336,7 @@ void MainWindow::applyTextZoom() {
             content->setFont(font);
         }
     }
+    if (m_captionDock) showLectureCaption(m_captionDock);
 }
 
 bool MainWindow::keyForWindow(const QKeyEvent* key) const {
