@@ -188,6 +188,12 @@ void MainWindow::fitLectureDocks() {
         widths << int(share * w);
     }
     if (!docks.isEmpty()) resizeDocks(docks, widths, Qt::Horizontal);
+    // The caption as tall as its lines at the dock's width (a wrapped label's own size hint
+    // guesses a narrower width, and so more lines).
+    if (m_lectureCaption && stage && stage->titleBarWidget() == m_lectureCaption) {
+        const int width = stage->isFloating() || docks.isEmpty() ? stage->width() : widths.last();
+        m_lectureCaption->setFixedHeight(m_lectureCaption->heightForWidth(std::max(width, 100)));
+    }
 }
 
 QString MainWindow::lectureCaption(rl::StageId stage) const {
@@ -268,10 +274,13 @@ QString MainWindow::lectureCaption(rl::StageId stage) const {
 }
 
 void MainWindow::showLectureCaption(QDockWidget* dock) {
-    // The dock's title bar, in the lecture layout: its stage's numbers in large print.
+    // The dock's title bar, in the lecture layout: its stage's numbers in large print. This
+    // runs at every step: the label changes only for another dock, frame, stage, selection
+    // or text size.
     if (m_captionDock && m_captionDock != dock) m_captionDock->setTitleBarWidget(nullptr);
     m_captionDock = dock;
     if (!dock) return;
+    bool changed = false;
     if (!m_lectureCaption) {
         m_lectureCaption = new QLabel(this);
         m_lectureCaption->setObjectName(QStringLiteral("lectureCaption"));
@@ -279,24 +288,32 @@ void MainWindow::showLectureCaption(QDockWidget* dock) {
         m_lectureCaption->setTextFormat(Qt::RichText);
         m_lectureCaption->setContentsMargins(8, 4, 8, 4);
         m_lectureCaption->setAutoFillBackground(true);
+        QPalette palette = m_lectureCaption->palette();
+        palette.setColor(QPalette::Window, QColor(40, 40, 40));
+        palette.setColor(QPalette::WindowText, QColor(255, 220, 0));
+        m_lectureCaption->setPalette(palette);
     }
-    QFont font;
-    font.setPointSizeF(QApplication::font().pointSizeF() * kLectureCaptionScale * m_textZoom);
-    m_lectureCaption->setFont(font);
-    QPalette palette = m_lectureCaption->palette();
-    palette.setColor(QPalette::Window, QColor(40, 40, 40));
-    palette.setColor(QPalette::WindowText, QColor(255, 220, 0));
-    m_lectureCaption->setPalette(palette);
-    // Made again only for another frame or stage (this runs at every step).
+    const double size = QApplication::font().pointSizeF() * kLectureCaptionScale * m_textZoom;
+    if (m_lectureCaption->font().pointSizeF() != size) {
+        QFont font;
+        font.setPointSizeF(size);
+        m_lectureCaption->setFont(font);
+        changed = true;
+    }
     const auto selected = m_inspection->selectedTriangle();
     const CaptionKey key{m_frame.generation, m_inspection->stage(),
                          selected ? qint64(*selected) : qint64(-1)};
     if (key != m_captionKey) {
         m_captionKey = key;
         m_lectureCaption->setText(lectureCaption(key.stage));
+        changed = true;
     }
-    if (dock->titleBarWidget() != m_lectureCaption) dock->setTitleBarWidget(m_lectureCaption);
+    if (dock->titleBarWidget() != m_lectureCaption) {
+        dock->setTitleBarWidget(m_lectureCaption);
+        changed = true;
+    }
     m_lectureCaption->show();
+    if (changed) fitLectureDocks();  // its height for the new text and font
 }
 
 double MainWindow::textZoom() const {
