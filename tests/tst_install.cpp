@@ -169,6 +169,21 @@ private slots:
             2);
     }
 
+    // --language: en or pt_BR for the session; anything else is a wrong command line.
+    void windowTakesALanguage() {
+        const GuiRun wrong =
+            runGui({QStringLiteral("--language"), QStringLiteral("fr")}, m_dir.path());
+        QCOMPARE(wrong.exitCode, 2);
+        QVERIFY2(wrong.err.contains(QStringLiteral("--language expects en or pt_BR, found 'fr'")),
+                 qPrintable(wrong.err));
+        for (const char* language : {"en", "pt_BR"})
+            QCOMPARE(runGui({QStringLiteral("--language"), QLatin1String(language),
+                             QStringLiteral("--quit-after"), QStringLiteral("200")},
+                            m_dir.path())
+                         .exitCode,
+                     0);
+    }
+
     void aboutNamesVersionLicenceAndCourses() {
         const QString text = MainWindow::aboutText();
         QVERIFY(text.contains(QStringLiteral(RASTERLAB_VERSION)));

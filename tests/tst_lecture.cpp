@@ -3,6 +3,7 @@
 // text zoom kept in a lesson file, and a language switch retranslating the open lesson.
 #include <QtTest>
 
+#include <QAbstractButton>
 #include <QAbstractSpinBox>
 #include <QApplication>
 #include <QDockWidget>
@@ -86,6 +87,8 @@ private slots:
     void numberBoxKeepsItsOwnKeys();
     void textZoomKeptInALesson();
     void languageSwitchRetranslatesTheLesson();
+    void shortcutsDialogFitsTheScreen_data();
+    void shortcutsDialogFitsTheScreen();
 
 private:
     rasterlab::Translators m_translators;
@@ -211,7 +214,11 @@ void TestLecture::liveEditsStayInTheLecture() {
     QCOMPARE(shownDocks(window),
              (QStringList{QStringLiteral("editDock"), QStringLiteral("pixelInspectorDock")}));
     const double share = double(edit->width()) / window.width();
-    QVERIFY2(share > 0.2 && share < 0.32, qPrintable(QString::number(share)));
+    QVERIFY2(share > 0.26 && share < 0.34, qPrintable(QString::number(share)));
+    // The stage keeps the most of the rest, the image a fifth of the window.
+    auto* inspector = window.findChild<QDockWidget*>(QStringLiteral("pixelInspectorDock"));
+    QVERIFY2(inspector->width() > 0.45 * window.width(), qPrintable(QString::number(inspector->width())));
+    QVERIFY(window.centralWidget()->width() > 0.15 * window.width());
     // Still presenting, and the Edit dock's number boxes are there to change the scene.
     QVERIFY(window.presentationMode());
     QVERIFY(!edit->findChildren<QDoubleSpinBox*>().isEmpty());
@@ -410,6 +417,46 @@ void TestLecture::languageSwitchRetranslatesTheLesson() {
     QCOMPARE(window.lessonTitle(), QStringLiteral("Um triângulo"));
     QCOMPARE(window.lessonNotes(), rasterlab::exampleNotes(QStringLiteral("triangle")));
     QVERIFY(window.lessonNotes().startsWith(QStringLiteral("Um único triângulo")));
+}
+
+void TestLecture::shortcutsDialogFitsTheScreen_data() {
+    QTest::addColumn<QString>("language");
+    QTest::newRow("en") << QStringLiteral("en");
+    QTest::newRow("pt_BR") << QStringLiteral("pt_BR");
+}
+
+void TestLecture::shortcutsDialogFitsTheScreen() {
+    // F1 in presentation mode's large text at 1280x720: the dialog, its Close button
+    // included, inside the screen (it was 810 px tall).
+    QFETCH(QString, language);
+    m_translators.install(language);
+    const auto back = qScopeGuard([&] { m_translators.install(QStringLiteral("en")); });
+    MainWindow window;
+    QVERIFY(showAt1280x720(window));
+    const auto leave = qScopeGuard([&] { window.setPresentationMode(false); });
+    window.setPresentationMode(true);
+    settle();
+    QRect shown;
+    bool closeInside = false;
+    QTimer::singleShot(300, [&] {
+        QWidget* dialog = QApplication::activeModalWidget();
+        if (!dialog) return;
+        shown = dialog->frameGeometry();
+        if (auto* close = dialog->findChild<QAbstractButton*>())
+            closeInside = dialog->rect().contains(QRect(close->mapTo(dialog, QPoint()), close->size()));
+        dialog->close();
+    });
+    QTest::keyClick(&window, Qt::Key_F1);
+    QVERIFY(shown.isValid());
+    QVERIFY2(shown.height() <= 720 && shown.top() >= 0 && shown.bottom() < 720,
+             qPrintable(QStringLiteral("%1,%2 %3x%4").arg(shown.x()).arg(shown.y())
+                            .arg(shown.width()).arg(shown.height())));
+    QVERIFY(shown.width() <= 1280);
+    QVERIFY(closeInside);
+    // Every key the window has for a lecture is listed.
+    const QString text = MainWindow::shortcutsText();
+    for (const char* key : {"F7", "F9", "F11", "Ctrl++", "Ctrl+Alt+0"})
+        QVERIFY2(text.contains(QLatin1String(key)), key);
 }
 
 int main(int argc, char* argv[]) {

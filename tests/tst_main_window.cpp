@@ -673,6 +673,7 @@ void TestMainWindow::presentationAfterFillGivesTheLayoutBack() {
     QVERIFY(normals);
     window.toggleFill(normals);
     QVERIFY(window.isFilled());
+    window.setLectureLayout(false);  // the teacher's own layout: the image stays
     window.setPresentationMode(true);
     QVERIFY(!window.isFilled());
     QVERIFY(!window.centralWidget()->isHidden());

@@ -54,7 +54,21 @@ int main(int argc, char* argv[]) {
                        "if one of them could not be opened."),
         QStringLiteral("MS"));
     parser.addOption(quitAfter);
+    // This session's language, not kept (View > Language keeps its choice).
+    const QCommandLineOption languageOption(
+        QStringLiteral("language"),
+        QStringLiteral("The interface's language for this session: en or pt_BR (View > "
+                       "Language chooses one for every session)."),
+        QStringLiteral("LANG"));
+    parser.addOption(languageOption);
     parser.process(app);
+    const QString language = parser.value(languageOption);
+    if (parser.isSet(languageOption) && language != QLatin1String("en") &&
+        language != QLatin1String("pt_BR")) {
+        fprintf(stderr, "rasterlab: --language expects en or pt_BR, found '%s'\n",
+                qPrintable(language));
+        return 2;
+    }
     if (parser.isSet(scene) && !rasterlab::isExample(parser.value(scene))) {
         fprintf(stderr, "rasterlab: --scene expects one of %s, found '%s'\n",
                 qPrintable(rasterlab::exampleNames().join(QStringLiteral(", "))),
@@ -70,7 +84,9 @@ int main(int argc, char* argv[]) {
     }
 
     rasterlab::Translators translators;
-    translators.install(QSettings().value(QStringLiteral("language")).toString());
+    translators.install(parser.isSet(languageOption)
+                            ? language
+                            : QSettings().value(QStringLiteral("language")).toString());
 
     // A new language builds the window again (every string is set when a widget is made); the
     // new window takes the old one's document, with its unsaved edits, and its view: stepping,
@@ -81,8 +97,8 @@ int main(int argc, char* argv[]) {
             auto fresh = std::make_unique<rasterlab::MainWindow>();
             if (document) fresh->adoptDocument(*document);
             QObject::connect(fresh.get(), &rasterlab::MainWindow::languageChangeRequested,
-                             [&](const QString& language) {
-                                 translators.install(language);
+                             [&](const QString& chosen) {
+                                 translators.install(chosen);
                                  QMetaObject::invokeMethod(
                                      &app,
                                      [&] {

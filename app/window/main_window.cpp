@@ -1169,6 +1169,7 @@ void MainWindow::showShortcuts() {
     auto* layout = new QVBoxLayout(&dialog);
     auto* text = new QLabel(shortcutsText());
     text->setObjectName(QStringLiteral("shortcutsText"));
+    text->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     text->setTextFormat(Qt::RichText);
     text->setWordWrap(true);
     // Scrolls rather than running off a small screen in large text.

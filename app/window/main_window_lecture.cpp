@@ -3,12 +3,16 @@
 // the docks' contents, live edits in presentation mode, and the window's keys kept from the
 // number boxes that would swallow them.
 #include <QAbstractSpinBox>
+#include <QDoubleSpinBox>
 #include <QApplication>
 #include <QDockWidget>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QStatusBar>
+#include <QTimer>
 
 #include <algorithm>
 #include <array>
@@ -16,6 +20,7 @@
 #include <limits>
 
 #include "app/window/main_window.h"
+#include "app/window/edit_panel.h"
 #include "pipeline/render/frame_trace.h"
 #include "pipeline/stages/camera_basis.h"
 #include "pipeline/stages/depth_test.h"
@@ -105,6 +110,8 @@ void MainWindow::setLectureLayout(bool on) {
         showLectureCaption(nullptr);
         centralWidget()->show();
         restoreState(m_presentationOwnLayout, kLayoutVersion);
+        if (m_liveEdits)
+            if (auto* edit = findChild<QDockWidget*>(QStringLiteral("editDock"))) edit->show();
         QMetaObject::invokeMethod(this, &MainWindow::fitDocks, Qt::QueuedConnection);
     }
     statusBar()->showMessage(on ? tr("Lecture layout: the stage being stepped fills the screen "
@@ -127,6 +134,16 @@ void MainWindow::setLiveEdits(bool on) {
         edit->setVisible(on);
         if (on) edit->raise();
     }
+    // The light first in view (the camera's values above it are seldom changed in class),
+    // the material below it.
+    if (on)
+        if (auto* scroll = qobject_cast<QScrollArea*>(edit->widget()))
+            if (QWidget* light = m_edit->spinBox(SceneDocument::Field::LightPosition))
+                // Once the dock has its new size (laid out after the events in hand).
+                QTimer::singleShot(150, scroll, [scroll, light] {
+                    const int top = light->mapTo(scroll->widget(), QPoint()).y();
+                    scroll->verticalScrollBar()->setValue(top - 3 * light->height());
+                });
 }
 
 void MainWindow::scheduleLectureLayout() {
@@ -183,7 +200,11 @@ void MainWindow::fitLectureDocks() {
         widths << int(kLectureEditShare * w);
     }
     if (stage && !stage->isFloating()) {
-        const double share = centralWidget()->isVisible() ? kLectureStageShare : 1.0;
+        // With the edits beside it, the stage gives up their width, and the image keeps a
+        // fifth of the window.
+        const double image = centralWidget()->isVisible() ? 1.0 - kLectureStageShare : 0.0;
+        const double share =
+            widths.isEmpty() ? 1.0 - image : 1.0 - kLectureEditShare - std::min(image, 0.2);
         docks << stage;
         widths << int(share * w);
     }
