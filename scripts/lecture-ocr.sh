@@ -8,7 +8,9 @@
 # `tesseract half.png - --psm 11`.
 # The count of a step: the numbers tesseract reads, matching -?[0-9]+([.,][0-9]+)?, of at
 # least two characters (a lone digit is as often a misread mark as a number). The full-size
-# shot is read too, and its lines with a cut-off "…" (or "...") are listed.
+# shot is read too, and its lines with a cut-off "…" (or "...") are counted: only a hint,
+# since tesseract often reads a small "…" as "." or not at all; look at the shots
+# (OUT/LANG/stepN.png) for text cut off.
 # --text-larger N presses Ctrl++ N times after F5 (the teacher's text size; default none).
 # usage: scripts/lecture-ocr.sh [--language en|pt_BR] [--bin PATH] [--out DIR] [--display :N]
 #                               [--top PX] [--bottom PX] [--text-larger N]
