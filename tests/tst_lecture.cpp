@@ -87,6 +87,7 @@ private slots:
     void numberBoxKeepsItsOwnKeys();
     void textZoomKeptInALesson();
     void languageSwitchRetranslatesTheLesson();
+    void fillFollowsThePointerAndTheLecture();
     void shortcutsDialogFitsTheScreen_data();
     void shortcutsDialogFitsTheScreen();
 
@@ -417,6 +418,51 @@ void TestLecture::languageSwitchRetranslatesTheLesson() {
     QCOMPARE(window.lessonTitle(), QStringLiteral("Um triângulo"));
     QCOMPARE(window.lessonNotes(), rasterlab::exampleNotes(QStringLiteral("triangle")));
     QVERIFY(window.lessonNotes().startsWith(QStringLiteral("Um único triângulo")));
+}
+
+void TestLecture::fillFollowsThePointerAndTheLecture() {
+    // F11 with the image holding the focus and the pointer over the z-buffer dock: the dock
+    // fills the window (it was the image). In the lecture layout: the stage's dock, and F11
+    // again gives the lecture layout back.
+    m_translators.install(QStringLiteral("en"));
+    MainWindow window;
+    QVERIFY(showAt1280x720(window));
+    QVERIFY(waitUntilReady(window));
+    auto* zbuffer = window.findChild<QDockWidget*>(QStringLiteral("zbufferDock"));
+    zbuffer->show();
+    zbuffer->raise();
+    settle();
+    window.imageView()->setFocus();
+    QTRY_VERIFY(window.imageView()->hasFocus());
+    QCursor::setPos(zbuffer->mapToGlobal(zbuffer->rect().center()));
+    QTRY_COMPARE(QApplication::widgetAt(QCursor::pos()) &&
+                     zbuffer->isAncestorOf(QApplication::widgetAt(QCursor::pos())),
+                 true);
+    QTest::keyClick(window.imageView(), Qt::Key_F11);
+    QVERIFY(window.isFilled());
+    QCOMPARE(window.filledDock(), zbuffer);
+    QTest::keyClick(&window, Qt::Key_F11);
+    QVERIFY(!window.isFilled());
+    // Presenting, at the z-buffer: F11 fills with the stage's dock, the pointer on the image.
+    const auto leave = qScopeGuard([&] { window.setPresentationMode(false); });
+    window.setPresentationMode(true);
+    window.inspection()->setGranularity(rl::StepGranularity::Stage);
+    window.inspection()->setStage(rl::StageId::DepthTest);
+    settle();
+    QCOMPARE(shownDocks(window), QStringList{QStringLiteral("zbufferDock")});
+    QVERIFY(window.centralWidget()->isVisible());
+    QCursor::setPos(window.centralWidget()->mapToGlobal(window.centralWidget()->rect().center()));
+    QTest::keyClick(&window, Qt::Key_F11);
+    QCOMPARE(window.filledDock(), zbuffer);
+    QVERIFY(!window.centralWidget()->isVisible());
+    QTest::keyClick(&window, Qt::Key_F11);
+    settle();
+    QVERIFY(!window.isFilled());
+    QVERIFY(window.lectureLayoutShown());
+    QCOMPARE(shownDocks(window), QStringList{QStringLiteral("zbufferDock")});
+    QVERIFY(window.centralWidget()->isVisible());
+    const double share = double(zbuffer->width()) / window.width();
+    QVERIFY2(share > 0.58 && share < 0.66, qPrintable(QString::number(share)));
 }
 
 void TestLecture::shortcutsDialogFitsTheScreen_data() {
