@@ -87,6 +87,8 @@ private slots:
     void numberBoxKeepsItsOwnKeys();
     void textZoomKeptInALesson();
     void languageSwitchRetranslatesTheLesson();
+    void lessonsChooseTheStageDock_data();
+    void lessonsChooseTheStageDock();
     void fillFollowsThePointerAndTheLecture();
     void shortcutsDialogFitsTheScreen_data();
     void shortcutsDialogFitsTheScreen();
@@ -418,6 +420,46 @@ void TestLecture::languageSwitchRetranslatesTheLesson() {
     QCOMPARE(window.lessonTitle(), QStringLiteral("Um triângulo"));
     QCOMPARE(window.lessonNotes(), rasterlab::exampleNotes(QStringLiteral("triangle")));
     QVERIFY(window.lessonNotes().startsWith(QStringLiteral("Um único triângulo")));
+}
+
+void TestLecture::lessonsChooseTheStageDock_data() {
+    QTest::addColumn<QString>("lesson");
+    QTest::addColumn<int>("stage");
+    QTest::addColumn<QString>("dock");
+    QTest::addColumn<bool>("presentingFirst");
+    for (const bool first : {false, true}) {
+        const char* when = first ? "opened presenting" : "then presenting";
+        QTest::addRow("near-plane %s", when) << QStringLiteral("near-plane")
+                                              << int(rl::StageId::Projection)
+                                              << QStringLiteral("nearClipDock") << first;
+        QTest::addRow("painter-cycle %s", when) << QStringLiteral("painter-cycle")
+                                                 << int(rl::StageId::DepthTest)
+                                                 << QStringLiteral("painterDock") << first;
+        QTest::addRow("goblet %s", when) << QStringLiteral("goblet")
+                                          << int(rl::StageId::Projection)
+                                          << QStringLiteral("projectionDock") << first;
+    }
+}
+
+void TestLecture::lessonsChooseTheStageDock() {
+    // The near-plane lesson raises the clipping dock, the painter's the painter's: the lecture
+    // shows those for their stages.
+    QFETCH(QString, lesson);
+    QFETCH(int, stage);
+    QFETCH(QString, dock);
+    QFETCH(bool, presentingFirst);
+    m_translators.install(QStringLiteral("en"));
+    MainWindow window;
+    QVERIFY(showAt1280x720(window));
+    const auto leave = qScopeGuard([&] { window.setPresentationMode(false); });
+    if (presentingFirst) window.setPresentationMode(true);
+    QVERIFY(window.openExample(lesson));
+    QVERIFY(waitUntilReady(window));
+    window.setPresentationMode(true);
+    window.inspection()->setGranularity(rl::StepGranularity::Stage);
+    window.inspection()->setStage(rl::StageId(stage));
+    settle();
+    QCOMPARE(shownDocks(window), QStringList{dock});
 }
 
 void TestLecture::fillFollowsThePointerAndTheLecture() {

@@ -477,6 +477,7 @@ void MainWindow::enterPresentationLayout() {
     // Live edits keep the Edit dock on screen.
     if (m_liveEdits)
         if (auto* edit = findChild<QDockWidget*>(QStringLiteral("editDock"))) edit->show();
+    rememberLectureChoices();
     m_presentationOwnLayout = saveState(kLayoutVersion);  // the teacher's own, for F7
     m_lectureShown = {};
 }

@@ -193,7 +193,9 @@ public:
     void setLectureLayout(bool on);
     // Presentation mode in the lecture layout.
     bool lectureLayoutShown() const;
-    // The dock of the stage the cursor is in, and whether the image has something to show.
+    // The dock of the stage the cursor is in (seed 002's clipping or trapezoids, seed 004's
+    // painter when one was in front of its tabs on entering, or the painter's shading), and
+    // whether the image has something to show.
     QDockWidget* lectureDock() const;
     bool lectureShowsImage() const;
     static QString stageDockName(rl::StageId stage);
@@ -362,6 +364,7 @@ private:
     void applyLectureLayout();
     void scheduleLectureLayout();
     void fitLectureDocks();
+    void rememberLectureChoices();  // which dock shows a stage with two (m_lectureChoices)
     void applyTextZoom();
     void showLectureCaption(QDockWidget* dock);  // null: the caption taken away
     bool keyForWindow(const QKeyEvent* key) const;
@@ -463,6 +466,7 @@ private:
     };
     LectureShown m_lectureShown;
     QByteArray m_presentationOwnLayout;
+    QHash<int, QString> m_lectureChoices;  // stage: its other dock in front, when one was
     QLabel* m_lectureCaption = nullptr;
     QPointer<QDockWidget> m_captionDock;
     struct CaptionKey {  // what the caption was made for

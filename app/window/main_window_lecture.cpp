@@ -77,8 +77,31 @@ bool MainWindow::lectureLayoutShown() const {
     return m_inspection->presentation() && m_lectureLayout;
 }
 
+// Seed 002's and 004's presentations of a stage, tabbed with its own view.
+constexpr std::pair<rl::StageId, const char*> kOtherStageDocks[] = {
+    {rl::StageId::Projection, "nearClipDock"},
+    {rl::StageId::ScanConversion, "trapezoidDock"},
+    {rl::StageId::DepthTest, "painterDock"}};
+
 QDockWidget* MainWindow::lectureDock() const {
-    return findChild<QDockWidget*>(stageDockName(m_inspection->stage()));
+    const rl::StageId stage = m_inspection->stage();
+    if (const QString other = m_lectureChoices.value(int(stage)); !other.isEmpty())
+        if (auto* dock = findChild<QDockWidget*>(other)) return dock;
+    return findChild<QDockWidget*>(stageDockName(stage));
+}
+
+void MainWindow::rememberLectureChoices() {
+    // A stage's other presentation in front of its tab group (a lesson's: the near-plane
+    // lesson raises the clipping dock, the painter's lesson the painter's) is the one the
+    // lecture shows for that stage; the painter's algorithm shades without a z-buffer.
+    m_lectureChoices.clear();
+    for (const auto& [stage, name] : kOtherStageDocks) {
+        auto* dock = findChild<QDockWidget*>(QLatin1String(name));
+        if (dock && !dock->isHidden() && !dock->visibleRegion().isEmpty())
+            m_lectureChoices.insert(int(stage), QLatin1String(name));
+    }
+    if (m_document.settings().shading == rl::ShadingModel::Painter)
+        m_lectureChoices.insert(int(rl::StageId::DepthTest), QStringLiteral("painterDock"));
 }
 
 bool MainWindow::lectureShowsImage() const {
@@ -101,6 +124,7 @@ void MainWindow::setLectureLayout(bool on) {
     }
     restoreFill();
     if (on) {
+        rememberLectureChoices();
         m_presentationOwnLayout = saveState(kLayoutVersion);  // the teacher's, to come back to
         m_lectureLayout = true;
         m_lectureShown = {};

@@ -256,6 +256,14 @@ void MainWindow::restoreView(const Lesson& lesson) {
     // Raised last: entering presentation mode may move the pixel inspector among the tabs.
     for (QDockWidget* dock : docks)
         if (lesson.docksRaised.contains(dock->objectName()) && !dock->isHidden()) dock->raise();
+    if (lectureLayoutShown()) {
+        // The lesson's raised docks choose the lecture's (its clipping dock, say); the teacher's
+        // own layout is the lesson's.
+        rememberLectureChoices();
+        m_presentationOwnLayout = saveState(kLayoutVersion);
+        m_lectureShown = {};
+        scheduleLectureLayout();
+    }
     if (lesson.granularity) m_inspection->setGranularity(*lesson.granularity);
     if (lesson.breakpoints) m_breakpoints->setEntries(*lesson.breakpoints);
     if (lesson.stage) m_inspection->setStage(*lesson.stage);
