@@ -26,6 +26,7 @@
 
 class QCheckBox;
 class QLabel;
+class QSplitter;
 class QTabWidget;
 class QTextBrowser;
 
@@ -59,6 +60,7 @@ public:
 
 protected:
     void showEvent(QShowEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     void refreshGeometry();
@@ -86,6 +88,8 @@ private:
     WrappedLabel* m_legend = nullptr;
     QLabel* m_pixelValue = nullptr;
     QTextBrowser* m_explanation = nullptr;
+    QSplitter* m_splitter = nullptr;
+    bool m_splitMoved = false;  // the splitter's handle moved by hand
 };
 
 }  // namespace rasterlab

@@ -8,6 +8,9 @@
 #include <QLabel>
 #include <QLocale>
 #include <QPainter>
+#include <QResizeEvent>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
@@ -176,6 +179,9 @@ ZBufferView::ZBufferView(QWidget* parent) : QWidget(parent) {
     m_paletteBox->setObjectName(QStringLiteral("zbufferPalette"));
     m_paletteBox->addItem(tr("Grey (near white)"));
     m_paletteBox->addItem(tr("False colour (near red, far blue)"));
+    // Narrower than its longest entry, so that a docked view keeps the room for the image.
+    m_paletteBox->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_paletteBox->setMinimumContentsLength(10);
     m_rangeLabel = new QLabel(this);
     m_rangeLabel->setObjectName(QStringLiteral("zbufferRangeLabel"));
     m_rangeLabel->setWordWrap(true);
@@ -194,14 +200,34 @@ ZBufferView::ZBufferView(QWidget* parent) : QWidget(parent) {
     m_explanation->setObjectName(QStringLiteral("zbufferExplanation"));
     m_explanation->setWordWrap(true);
     m_explanation->setTextFormat(Qt::RichText);
-    auto* layout = new QVBoxLayout(this);
-    layout->addWidget(m_explanation);
-    layout->addWidget(m_view, 1);
-    layout->addWidget(m_histogramWidget);
-    layout->addWidget(m_rangeLabel);
-    layout->addWidget(m_automatic);  // outside the form, where its text can wrap
-    layout->addLayout(form);
-    layout->addWidget(m_valueLabel);
+    // The words and controls in a column of their own that scrolls, so that the image is
+    // always fitted whole to what is left of the view, however small the dock.
+    auto* panel = new QWidget;
+    panel->setObjectName(QStringLiteral("zbufferPanel"));
+    auto* panelLayout = new QVBoxLayout(panel);
+    panelLayout->setContentsMargins(0, 0, 0, 0);
+    panelLayout->addWidget(m_explanation);
+    panelLayout->addWidget(m_histogramWidget);
+    panelLayout->addWidget(m_rangeLabel);
+    panelLayout->addWidget(m_automatic);  // outside the form, where its text can wrap
+    panelLayout->addLayout(form);
+    panelLayout->addWidget(m_valueLabel);
+    panelLayout->addStretch(1);
+    m_panel = new QScrollArea(this);
+    m_panel->setObjectName(QStringLiteral("zbufferPanelScroll"));
+    m_panel->setFrameShape(QFrame::NoFrame);
+    m_panel->setWidgetResizable(true);
+    m_panel->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_panel->setWidget(panel);
+    // As wide as its narrowest controls: it scrolls up and down, never sideways.
+    m_panel->setMinimumWidth(panel->minimumSizeHint().width() +
+                             m_panel->verticalScrollBar()->sizeHint().width());
+    m_view->setPreferredSize(QSize(160, 120));
+    m_view->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+    m_layout = new QBoxLayout(QBoxLayout::LeftToRight, this);
+    m_layout->addWidget(m_view, 3);
+    m_layout->addWidget(m_panel, 2);
+    arrange();
 
     connect(m_automatic, &QCheckBox::toggled, this, &ZBufferView::setAutomaticRange);
     const auto manual = [this] {
@@ -252,6 +278,18 @@ void ZBufferView::refreshWhenShown() {
         refresh();
     else
         m_stale = true;
+}
+
+void ZBufferView::arrange() {
+    // Wider than tall (a dock, the window filled, the lecture layout): the column beside the
+    // image; taller: below it. The image takes three fifths either way.
+    const bool beside = width() >= height();
+    m_layout->setDirection(beside ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom);
+}
+
+void ZBufferView::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    arrange();
 }
 
 void ZBufferView::showEvent(QShowEvent* event) {

@@ -18,7 +18,9 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QBoxLayout;
 class QLabel;
+class QScrollArea;
 
 namespace rasterlab {
 
@@ -96,9 +98,11 @@ public:
 
 protected:
     void showEvent(QShowEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
     bool event(QEvent* event) override;  // kRaisedEvent (on_screen.h)
 
 private:
+    void arrange();  // the words beside the image or below it, by the view's shape
     void refresh();
     void refreshWhenShown();
     void showValue(QPoint pixel);
@@ -122,6 +126,8 @@ private:
     QComboBox* m_paletteBox = nullptr;
     QLabel* m_rangeLabel = nullptr;
     QLabel* m_valueLabel = nullptr;
+    QScrollArea* m_panel = nullptr;
+    QBoxLayout* m_layout = nullptr;
 };
 
 }  // namespace rasterlab

@@ -1,0 +1,230 @@
+// Every stage view laid out for the space it gets, on the goblet lesson: docked (a dock of
+// the 1280x720 window), filled to the window (F11) and in the lecture layout (most of a
+// 1280x720 window). Each view sits in a scroll area that resizes it, as the window's docks
+// hold them, and the same views are looked at in the window itself at 1280x720, docked
+// and filled: the z-buffer image and the normals drawing whole inside their widgets, and
+// those inside what the dock shows.
+#include <QtTest>
+
+#include <QDockWidget>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QTemporaryDir>
+#include <QWheelEvent>
+
+#include "app/window/main_window.h"
+#include "tests/offscreen_screens.h"
+#include "views/frame_image_view.h"
+#include "views/inspection.h"
+#include "views/normals_canvas.h"
+#include "views/normals_view.h"
+#include "views/zbuffer_view.h"
+
+using rasterlab::Inspection;
+using rasterlab::MainWindow;
+
+namespace {
+
+constexpr int kTimeoutMs = 20000;
+
+// Docked in the 1280x720 window (short and tall docks), the window filled by one dock, and
+// the lecture layout's range.
+const QSize kSizes[] = {{420, 190}, {420, 300}, {1264, 600}, {900, 560}, {1260, 600}};
+
+// A view in a scroll area that resizes it, the way the window's docks hold the stage views.
+struct Docked {
+    Docked(QWidget* view, QSize size) {
+        scroll.setWidgetResizable(true);
+        scroll.setFrameShape(QFrame::NoFrame);
+        scroll.setWidget(view);
+        scroll.resize(size);
+        scroll.show();
+    }
+    QScrollArea scroll;
+};
+
+void settle() {
+    for (int k = 0; k < 6; ++k) {
+        QCoreApplication::processEvents();
+        QTest::qWait(10);
+    }
+}
+
+QString text(const QRectF& r) {
+    return QStringLiteral("(%1, %2) %3 x %4").arg(r.x()).arg(r.y()).arg(r.width()).arg(r.height());
+}
+
+// The part of a widget its scroll area shows, in the widget's coordinates.
+QRect shownPart(const QWidget* w, const QScrollArea& scroll) {
+    const QPoint at = w->mapTo(scroll.viewport(), QPoint(0, 0));
+    return scroll.viewport()->rect().translated(-at).intersected(w->rect());
+}
+
+// The image's rectangle in its view: inside the view, and fitted (as wide or as high as the
+// view, within a pixel).
+void checkImageFitted(const rasterlab::FrameImageView* view, const QString& where) {
+    QVERIFY2(!view->image().isNull(), qPrintable(where));
+    const QRectF image(view->widgetPoint({0, 0}),
+                       view->widgetPoint(QPointF(view->image().width(), view->image().height())));
+    const QRectF inside = QRectF(view->rect()).adjusted(-0.5, -0.5, 0.5, 0.5);
+    QVERIFY2(inside.contains(image), qPrintable(QStringLiteral("%1: the image at %2 in %3")
+                                                    .arg(where, text(image), text(view->rect()))));
+    const bool fitted = image.width() >= view->width() - 1.0 || image.height() >= view->height() - 1.0;
+    QVERIFY2(fitted, qPrintable(QStringLiteral("%1: the image at %2 does not fill %3")
+                                    .arg(where, text(image), text(view->rect()))));
+}
+
+// The drawing's pixels (neither of the canvas's two backgrounds): their bounding box.
+QRect drawnBox(QWidget* canvas) {
+    const QImage image = canvas->grab().toImage().convertToFormat(QImage::Format_RGB32);
+    const QRgb outside = qRgb(40, 40, 44), screen = qRgb(22, 22, 26);
+    QRect box;
+    for (int y = 0; y < image.height(); ++y) {
+        const auto* line = reinterpret_cast<const QRgb*>(image.constScanLine(y));
+        for (int x = 0; x < image.width(); ++x)
+            if (line[x] != outside && line[x] != screen) box |= QRect(x, y, 1, 1);
+    }
+    return box;
+}
+
+// The normals drawing: inside the canvas with none of it on the canvas's edge (cut off),
+// using the canvas's width or height (the mesh's box fitted with 8 % on each side), and the canvas wholly
+// in what the scroll area shows.
+void checkNormalsDrawing(rasterlab::NormalsCanvas* canvas, const QString& where) {
+    const QRect box = drawnBox(canvas);
+    QVERIFY2(!box.isEmpty(), qPrintable(where + QStringLiteral(": nothing drawn")));
+    QVERIFY2(canvas->rect().adjusted(1, 1, -1, -1).contains(box),
+             qPrintable(QStringLiteral("%1: drawn over %2 in %3")
+                            .arg(where, text(box), text(canvas->rect()))));
+    QVERIFY2(box.width() >= canvas->width() * 0.8 || box.height() >= canvas->height() * 0.8,
+             qPrintable(QStringLiteral("%1: drawn over %2 of %3")
+                            .arg(where, text(box), text(canvas->rect()))));
+}
+
+}  // namespace
+
+class TestViewSizes : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void zbufferImageWhole_data();
+    void zbufferImageWhole();
+    void normalsUseTheHeight_data();
+    void normalsUseTheHeight();
+    void inTheWindow();
+
+private:
+    std::unique_ptr<MainWindow> m_window;
+};
+
+void TestViewSizes::initTestCase() {
+    m_window = std::make_unique<MainWindow>();
+    QVERIFY(m_window->openExample(QStringLiteral("goblet")));
+    QVERIFY(QTest::qWaitFor([&] { return m_window->isReadyToStep(); }, kTimeoutMs));
+    m_window->inspection()->pickPixel(QPoint(353, 157));
+}
+
+void TestViewSizes::zbufferImageWhole_data() {
+    QTest::addColumn<QSize>("size");
+    for (const QSize size : kSizes) QTest::addRow("%dx%d", size.width(), size.height()) << size;
+}
+
+void TestViewSizes::zbufferImageWhole() {
+    // The 800 x 600 depth image fitted whole, the view no taller than the dock: nothing to
+    // scroll to see it, and the image as large as the view's share allows.
+    QFETCH(QSize, size);
+    auto* view = new rasterlab::ZBufferView;
+    Docked docked(view, size);
+    view->setFrame(m_window->currentFrame());
+    settle();
+    const QString where = QStringLiteral("%1x%2").arg(size.width()).arg(size.height());
+    QCOMPARE(docked.scroll.verticalScrollBar()->maximum(), 0);
+    const rasterlab::FrameImageView* image = view->imageView();
+    QCOMPARE(image->image().size(), QSize(800, 600));
+    QCOMPARE(shownPart(image, docked.scroll), image->rect());
+    checkImageFitted(image, where);
+    // Beside the words in every one of these (wider than tall): at least half the width.
+    QVERIFY2(image->width() >= size.width() / 2,
+             qPrintable(QStringLiteral("%1: the image view %2 px wide").arg(where).arg(image->width())));
+    // The wheel still zooms, and the zoomed image is no longer fitted.
+    const double fitted = image->zoom();
+    QWheelEvent wheel(QPointF(image->rect().center()), image->mapToGlobal(image->rect().center()),
+                      QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase,
+                      false);
+    QCoreApplication::sendEvent(const_cast<rasterlab::FrameImageView*>(image), &wheel);
+    QCOMPARE(image->zoom(), fitted * 1.25);
+}
+
+void TestViewSizes::normalsUseTheHeight_data() {
+    zbufferImageWhole_data();
+}
+
+void TestViewSizes::normalsUseTheHeight() {
+    QFETCH(QSize, size);
+    auto* view = new rasterlab::NormalsView(m_window->inspection());
+    Docked docked(view, size);
+    settle();
+    const QString where = QStringLiteral("%1x%2").arg(size.width()).arg(size.height());
+    QCOMPARE(docked.scroll.verticalScrollBar()->maximum(), 0);
+    rasterlab::NormalsCanvas* canvas = view->canvas();
+    QCOMPARE(shownPart(canvas, docked.scroll), canvas->rect());
+    // The words beside the drawing: the canvas has the height less the tab bar and the
+    // switches (two rows), and three fifths of the width.
+    QVERIFY2(canvas->height() >= size.height() * 0.55,
+             qPrintable(QStringLiteral("%1: the canvas %2 px high").arg(where).arg(canvas->height())));
+    QVERIFY2(canvas->width() >= size.width() / 2,
+             qPrintable(QStringLiteral("%1: the canvas %2 px wide").arg(where).arg(canvas->width())));
+    checkNormalsDrawing(canvas, where);
+}
+
+void TestViewSizes::inTheWindow() {
+    // The window on a 1280x720 screen: the z-buffer and normals docks raised in turn, then each
+    // filling the window.
+    MainWindow window;
+    QScreen* screen = nullptr;
+    for (QScreen* s : QGuiApplication::screens())
+        if (s->geometry().size() == QSize(1280, 720)) screen = s;
+    QVERIFY2(screen, "no 1280x720 screen (tests/offscreen_screens.h)");
+    window.setScreen(screen);
+    window.move(screen->geometry().topLeft());
+    window.resize(1280, 720);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openExample(QStringLiteral("goblet")));
+    QVERIFY(QTest::qWaitFor([&] { return window.isReadyToStep(); }, kTimeoutMs));
+    for (const bool filled : {false, true}) {
+        for (const char* name : {"zbufferDock", "normalsDock"}) {
+            auto* dock = window.findChild<QDockWidget*>(QLatin1String(name));
+            QVERIFY(dock);
+            dock->raise();
+            settle();
+            if (filled) window.toggleFill(dock);
+            settle();
+            const QString where =
+                QStringLiteral("%1 %2").arg(QLatin1String(name), filled ? "filled" : "docked");
+            auto* scroll = qobject_cast<QScrollArea*>(dock->widget());
+            QVERIFY(scroll);
+            if (QLatin1String(name) == QLatin1String("zbufferDock")) {
+                rasterlab::FrameImageView* image = window.zbufferView()->imageView();
+                QCOMPARE(shownPart(image, *scroll), image->rect());
+                checkImageFitted(image, where);
+            } else {
+                auto* canvas = window.findChild<rasterlab::NormalsCanvas*>();
+                QVERIFY(canvas);
+                QCOMPARE(shownPart(canvas, *scroll), canvas->rect());
+                checkNormalsDrawing(canvas, where);
+            }
+            if (filled) window.toggleFill(dock);
+        }
+    }
+}
+
+int main(int argc, char** argv) {
+    const QTemporaryDir dir;
+    if (!useOffscreenScreens(dir, {QSize(1280, 720)})) return 1;
+    QApplication app(argc, argv);
+    TestViewSizes test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "tst_view_sizes.moc"
