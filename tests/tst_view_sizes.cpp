@@ -18,6 +18,8 @@
 #include "views/inspection.h"
 #include "views/normals_canvas.h"
 #include "views/normals_view.h"
+#include "views/painted_labels.h"
+#include "views/pixel_inspector.h"
 #include "views/zbuffer_view.h"
 
 using rasterlab::Inspection;
@@ -111,6 +113,9 @@ private slots:
     void zbufferImageWhole();
     void normalsUseTheHeight_data();
     void normalsUseTheHeight();
+    void phongBarsLabelled();
+    void inspectorFormulaInView_data();
+    void inspectorFormulaInView();
     void inTheWindow();
 
 private:
@@ -175,6 +180,85 @@ void TestViewSizes::normalsUseTheHeight() {
     QVERIFY2(canvas->width() >= size.width() / 2,
              qPrintable(QStringLiteral("%1: the canvas %2 px wide").arg(where).arg(canvas->width())));
     checkNormalsDrawing(canvas, where);
+}
+
+void TestViewSizes::phongBarsLabelled() {
+    // The goblet's highlight (docs/guide.en.md, section 5): red is 70 x 0.2 + 255 x 0.85 x
+    // 0.7 x 0.930058 + 255 x 0.7 x 0.999819^30 = 14 + 141.113 + 177.534 = 332.648; green
+    // 14 + 105.794 + 174.053 = 293.848; blue 16 + 39.0624 + 167.091 = 222.154 (six
+    // significant digits, as the formula writes them; the guide rounds 39.062). Each term's
+    // value is written under its part of its channel's bar, in the bar's row, left to right.
+    auto* inspector = new rasterlab::PixelInspector(m_window->inspection());
+    Docked docked(inspector, QSize(420, 600));
+    QTRY_VERIFY_WITH_TIMEOUT(inspector->breakdown().has_value(), kTimeoutMs);
+    settle();
+    auto* bars = inspector->findChild<QWidget*>(QStringLiteral("pixelTermBars"));
+    const auto* labels = dynamic_cast<const rasterlab::PaintedLabels*>(bars);
+    QVERIFY(bars && labels);
+    bars->grab();  // a paint, which records the labels
+    const QStringList texts = labels->labelTexts();
+    const QList<QRect> rects = labels->labelRects();
+    const QStringList expected[3] = {{QStringLiteral("14"), QStringLiteral("141.113"),
+                                      QStringLiteral("177.534"), QStringLiteral("332.6")},
+                                     {QStringLiteral("14"), QStringLiteral("105.794"),
+                                      QStringLiteral("174.053"), QStringLiteral("293.8")},
+                                     {QStringLiteral("16"), QStringLiteral("39.0624"),
+                                      QStringLiteral("167.091"), QStringLiteral("222.2")}};
+    // The channels' names, R, G and B, head the rows: each row's labels lie between its name's
+    // top and the next name's.
+    QList<int> rowTops;
+    for (const QString& name : {QStringLiteral("R"), QStringLiteral("G"), QStringLiteral("B")}) {
+        const qsizetype i = texts.indexOf(name);
+        QVERIFY2(i >= 0, qPrintable(texts.join(QStringLiteral(" | "))));
+        rowTops << rects[i].top();
+    }
+    rowTops << bars->height();
+    for (int c = 0; c < 3; ++c) {
+        QStringList row;
+        QList<int> lefts;
+        for (qsizetype i = 0; i < texts.size(); ++i)
+            if (rects[i].top() >= rowTops[c] && rects[i].bottom() < rowTops[c + 1] &&
+                texts[i].front().isDigit()) {
+                row << texts[i];
+                lefts << rects[i].left();
+            }
+        // The terms in order, then the total at the bar's end (four significant digits).
+        QCOMPARE(row.mid(0, 4), expected[c]);
+        QVERIFY(std::is_sorted(lefts.begin(), lefts.begin() + 3));
+        for (int k = 0; k < 3; ++k)
+            QVERIFY2(bars->rect().contains(rects[texts.indexOf(expected[c][k], 0)]),
+                     qPrintable(expected[c][k]));
+    }
+    // And the formula with the same numbers.
+    QVERIFY2(inspector->formulaText().contains(QStringLiteral("14 + 141.113 + 177.534 = 332.648")),
+             qPrintable(inspector->formulaText()));
+}
+
+void TestViewSizes::inspectorFormulaInView_data() {
+    QTest::addColumn<QSize>("size");
+    for (const QSize size : {QSize(900, 560), QSize(1260, 600), QSize(1264, 600)})
+        QTest::addRow("%dx%d", size.width(), size.height()) << size;
+}
+
+void TestViewSizes::inspectorFormulaInView() {
+    // With the lecture layout's room, the history beside the lighting: the bars and the
+    // formula's lines in view without scrolling.
+    QFETCH(QSize, size);
+    auto* inspector = new rasterlab::PixelInspector(m_window->inspection());
+    Docked docked(inspector, size);
+    QTRY_VERIFY_WITH_TIMEOUT(inspector->breakdown().has_value(), kTimeoutMs);
+    settle();
+    const QString where = QStringLiteral("%1x%2").arg(size.width()).arg(size.height());
+    for (const char* name : {"pixelFormula", "pixelTermBars", "pixelVectors", "pixelHistory"}) {
+        auto* w = inspector->findChild<QWidget*>(QLatin1String(name));
+        QVERIFY2(w, name);
+        QVERIFY2(w->isVisible(), name);
+        QVERIFY2(shownPart(w, docked.scroll) == w->rect(),
+                 qPrintable(QStringLiteral("%1: %2 at %3, shown %4")
+                                .arg(where, QLatin1String(name), text(w->geometry()),
+                                     text(shownPart(w, docked.scroll)))));
+    }
+    QVERIFY(inspector->formulaText().contains(QStringLiteral("332.648")));
 }
 
 void TestViewSizes::inTheWindow() {
