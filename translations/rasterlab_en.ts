@@ -5965,243 +5965,243 @@
         <translation>the interpolated normal is zero</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="33"/>
+        <location filename="../views/normals_view.cpp" line="35"/>
         <source>Triangle normals</source>
         <translation>Triangle normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="36"/>
+        <location filename="../views/normals_view.cpp" line="38"/>
         <source>Vertex normals</source>
         <translation>Vertex normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="39"/>
+        <location filename="../views/normals_view.cpp" line="41"/>
         <source>Only on triangles that are seen</source>
         <translation>Only on triangles that are seen</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="42"/>
+        <location filename="../views/normals_view.cpp" line="44"/>
         <source>Hairs only on the triangles that hold a pixel at the end of the frame, and on their corners</source>
         <translation>Hairs only on the triangles that hold a pixel at the end of the frame, and on their corners</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="45"/>
+        <location filename="../views/normals_view.cpp" line="47"/>
         <source>Normals by M (wrong)</source>
         <translation>Normals by M (wrong)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="48"/>
+        <location filename="../views/normals_view.cpp" line="50"/>
         <source>Beside each triangle normal, the model normal carried by viewFromModel itself instead of its inverse transpose: it leaves the surface under a non-uniform scale (set one in the Animation panel)</source>
         <translation>Beside each triangle normal, the model normal carried by viewFromModel itself instead of its inverse transpose: it leaves the surface under a non-uniform scale (set one in the Animation panel)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="74"/>
+        <location filename="../views/normals_view.cpp" line="72"/>
         <source>Per pixel at the stepping cursor, the unit normal shading uses there: the vertex normals interpolated with the pixel&apos;s barycentrics and normalised (the triangle&apos;s normal for flat shading), turned toward the viewer as the course does before lighting; shown as RGB = (n + 1) / 2. Red grows to the right, green upward, blue away from the camera: turned normals face the camera, so blue is mostly below 128. Black: no triangle.</source>
         <translation>Per pixel at the stepping cursor, the unit normal shading uses there: the vertex normals interpolated with the pixel&apos;s barycentrics and normalised (the triangle&apos;s normal for flat shading), turned toward the viewer as the course does before lighting; shown as RGB = (n + 1) / 2. Red grows to the right, green upward, blue away from the camera: turned normals face the camera, so blue is mostly below 128. Black: no triangle.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="88"/>
+        <location filename="../views/normals_view.cpp" line="87"/>
         <source>Mesh and normals</source>
         <translation>Mesh and normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="89"/>
+        <location filename="../views/normals_view.cpp" line="88"/>
         <source>Normal map</source>
         <translation>Normal map</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="238"/>
+        <location filename="../views/normals_view.cpp" line="280"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="244"/>
+        <location filename="../views/normals_view.cpp" line="286"/>
         <source>front faces %1</source>
         <translation>front faces %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="246"/>
-        <location filename="../views/normals_view.cpp" line="250"/>
+        <location filename="../views/normals_view.cpp" line="288"/>
+        <location filename="../views/normals_view.cpp" line="292"/>
         <source>(%1 hidden, left out by culling)</source>
         <translation>(%1 hidden, left out by culling)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="248"/>
+        <location filename="../views/normals_view.cpp" line="290"/>
         <source>back faces (n · pView &amp;gt; 0) %1</source>
         <translation>back faces (n · pView &amp;gt; 0) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="253"/>
+        <location filename="../views/normals_view.cpp" line="295"/>
         <source>inconsistent winding: %1 triangles, %2 edges run the same way by two triangles</source>
         <translation>inconsistent winding: %1 triangles, %2 edges run the same way by two triangles</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="260"/>
+        <location filename="../views/normals_view.cpp" line="302"/>
         <source>%1% of the pixels seen are back faces: the surface is closed and its normals point inward in view space (the course&apos;s [U; V; N] mirrors, so a file wound counter-clockwise seen from outside turns over). Shading turns every normal toward the viewer: the image does not change.</source>
         <translation>%1% of the pixels seen are back faces: the surface is closed and its normals point inward in view space (the course&apos;s [U; V; N] mirrors, so a file wound counter-clockwise seen from outside turns over). Shading turns every normal toward the viewer: the image does not change.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="267"/>
+        <location filename="../views/normals_view.cpp" line="309"/>
         <source>No normals: %1.</source>
         <translation>No normals: %1.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="272"/>
+        <location filename="../views/normals_view.cpp" line="314"/>
         <source>triangle normals</source>
         <translation>triangle normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="273"/>
+        <location filename="../views/normals_view.cpp" line="315"/>
         <source>vertex normals</source>
         <translation>vertex normals</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="275"/>
+        <location filename="../views/normals_view.cpp" line="317"/>
         <source>length L = %1 (%2% of the mesh&apos;s size)</source>
         <translation>length L = %1 (%2% of the mesh&apos;s size)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="280"/>
+        <location filename="../views/normals_view.cpp" line="322"/>
         <source>triangle normals carried by M itself (wrong)</source>
         <translation>triangle normals carried by M itself (wrong)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="283"/>
+        <location filename="../views/normals_view.cpp" line="325"/>
         <source>on the %1 triangles seen and their corners</source>
         <translation>on the %1 triangles seen and their corners</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="286"/>
+        <location filename="../views/normals_view.cpp" line="328"/>
         <source>Large mesh: one triangle normal in %1 and one vertex normal in %2 are drawn; the selected triangle&apos;s always.</source>
         <translation>Large mesh: one triangle normal in %1 and one vertex normal in %2 are drawn; the selected triangle&apos;s always.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="293"/>
+        <location filename="../views/normals_view.cpp" line="335"/>
         <source>One triangle in %1 of the wireframe is drawn.</source>
         <translation>One triangle in %1 of the wireframe is drawn.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="310"/>
+        <location filename="../views/normals_view.cpp" line="352"/>
         <source>&lt;p&gt;&lt;b&gt;Normals by M, right and wrong&lt;/b&gt;: A = viewFromModel = viewFromWorld · M(t) · worldFromModel (M: the animation matrix, the identity when the animation is off). The model-space normal n = %1, det A = %2; the carried edges, made unit: e1 = A (P2 − P1) / |…| = %3, e2 = A (P3 − P1) / |…| = %4.&lt;br&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Normals by M, right and wrong&lt;/b&gt;: A = viewFromModel = viewFromWorld · M(t) · worldFromModel (M: the animation matrix, the identity when the animation is off). The model-space normal n = %1, det A = %2; the carried edges, made unit: e1 = A (P2 − P1) / |…| = %3, e2 = A (P3 − P1) / |…| = %4.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="317"/>
+        <location filename="../views/normals_view.cpp" line="359"/>
         <source>Right: A&lt;sup&gt;−T&lt;/sup&gt; n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: perpendicular to the surface.&lt;br&gt;</source>
         <translation>Right: A&lt;sup&gt;−T&lt;/sup&gt; n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: perpendicular to the surface.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="321"/>
+        <location filename="../views/normals_view.cpp" line="363"/>
         <source>Wrong: A n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: %4° off the surface&apos;s normal.&lt;/p&gt;</source>
         <translation>Wrong: A n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: %4° off the surface&apos;s normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="327"/>
+        <location filename="../views/normals_view.cpp" line="369"/>
         <source>&lt;p&gt;Here both agree: A has no non-uniform scale. Set a scale such as (2, 1, 1) in the Animation panel to see them part.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Here both agree: A has no non-uniform scale. Set a scale such as (2, 1, 1) in the Animation panel to see them part.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="335"/>
+        <location filename="../views/normals_view.cpp" line="377"/>
         <source>&lt;p&gt;No frame yet.&lt;/p&gt;</source>
         <translation>&lt;p&gt;No frame yet.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="339"/>
+        <location filename="../views/normals_view.cpp" line="381"/>
         <source>&lt;p&gt;&lt;b&gt;Stage 3, normals&lt;/b&gt;, in view space: each triangle&apos;s normal n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, and each vertex&apos;s normal the normalised sum of the normals of the triangles around it. A triangle faces away from the camera (at the origin) when n · P1 &amp;gt; 0; the course turns such normals toward the viewer when it shades.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Stage 3, normals&lt;/b&gt;, in view space: each triangle&apos;s normal n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, and each vertex&apos;s normal the normalised sum of the normals of the triangles around it. A triangle faces away from the camera (at the origin) when n · P1 &amp;gt; 0; the course turns such normals toward the viewer when it shades.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="346"/>
+        <location filename="../views/normals_view.cpp" line="388"/>
         <source>&lt;p&gt;Skipped for this frame: %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Skipped for this frame: %1.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="361"/>
+        <location filename="../views/normals_view.cpp" line="403"/>
         <source>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (vertices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</source>
         <translation>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (vertices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="368"/>
+        <location filename="../views/normals_view.cpp" line="410"/>
         <source> = %1, length %2&lt;br&gt;</source>
         <translation> = %1, length %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="372"/>
+        <location filename="../views/normals_view.cpp" line="414"/>
         <source>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</source>
         <translation>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="374"/>
+        <location filename="../views/normals_view.cpp" line="416"/>
         <source>a back face, drawn in red</source>
         <translation>a back face, drawn in red</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="374"/>
+        <location filename="../views/normals_view.cpp" line="416"/>
         <source>a front face</source>
         <translation>a front face</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="376"/>
+        <location filename="../views/normals_view.cpp" line="418"/>
         <source>a degenerate triangle: no normal.&lt;/p&gt;</source>
         <translation>a degenerate triangle: no normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="380"/>
+        <location filename="../views/normals_view.cpp" line="422"/>
         <source>&lt;p&gt;It runs an edge in the same direction as a neighbour does: the two are wound inconsistently (magenta), and one of their normals points the wrong way.&lt;/p&gt;</source>
         <translation>&lt;p&gt;It runs an edge in the same direction as a neighbour does: the two are wound inconsistently (magenta), and one of their normals points the wrong way.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="387"/>
+        <location filename="../views/normals_view.cpp" line="429"/>
         <source>&lt;p&gt;Vertex normals: N1 = %1 (vertex %2), N2 = %3 (vertex %4), N3 = %5 (vertex %6)&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vertex normals: N1 = %1 (vertex %2), N2 = %3 (vertex %4), N3 = %5 (vertex %6)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="395"/>
+        <location filename="../views/normals_view.cpp" line="437"/>
         <source>&lt;p&gt;Pick a pixel (here or in any image) to select its triangle and see its normal worked out.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Pick a pixel (here or in any image) to select its triangle and see its normal worked out.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="405"/>
+        <location filename="../views/normals_view.cpp" line="447"/>
         <source>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </source>
         <translation>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="407"/>
+        <location filename="../views/normals_view.cpp" line="449"/>
         <source>no triangle holds it at the cursor (black in the normal map).&lt;/p&gt;</source>
         <translation>no triangle holds it at the cursor (black in the normal map).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="409"/>
+        <location filename="../views/normals_view.cpp" line="451"/>
         <source>no normal: %1 (grey in the normal map).&lt;/p&gt;</source>
         <translation>no normal: %1 (grey in the normal map).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="412"/>
+        <location filename="../views/normals_view.cpp" line="454"/>
         <source>the triangle&apos;s normal (flat) %1</source>
         <translation>the triangle&apos;s normal (flat) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="414"/>
+        <location filename="../views/normals_view.cpp" line="456"/>
         <source>N = α N1 + β N2 + γ N3 with (α, β, γ) = %1: %2, normalised %3</source>
         <translation>N = α N1 + β N2 + γ N3 with (α, β, γ) = %1: %2, normalised %3</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="418"/>
+        <location filename="../views/normals_view.cpp" line="460"/>
         <source>; V · N &amp;lt; 0, turned toward the viewer: &lt;b&gt;%1&lt;/b&gt;</source>
         <translation>; V · N &amp;lt; 0, turned toward the viewer: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="421"/>
+        <location filename="../views/normals_view.cpp" line="463"/>
         <source>. Colour (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</source>
         <translation>. Colour (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="440"/>
+        <location filename="../views/normals_view.cpp" line="482"/>
         <source>x %1, y %2: no triangle</source>
         <translation>x %1, y %2: no triangle</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="444"/>
+        <location filename="../views/normals_view.cpp" line="486"/>
         <source>x %1, y %2: triangle %3, N = %4, colour (%5, %6, %7)</source>
         <translation>x %1, y %2: triangle %3, N = %4, colour (%5, %6, %7)</translation>
     </message>
@@ -6313,52 +6313,52 @@
 <context>
     <name>rasterlab::PixelInspector</name>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="140"/>
+        <location filename="../views/pixel_inspector.cpp" line="154"/>
         <source>%1 = byte 255</source>
         <translation>%1 = byte 255</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="228"/>
+        <location filename="../views/pixel_inspector.cpp" line="245"/>
         <source>no normal</source>
         <translation>no normal</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="294"/>
+        <location filename="../views/pixel_inspector.cpp" line="311"/>
         <source>in the plane of N and L</source>
         <translation>in the plane of N and L</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="329"/>
+        <location filename="../views/pixel_inspector.cpp" line="345"/>
         <source>Step</source>
         <translation>Step</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="329"/>
+        <location filename="../views/pixel_inspector.cpp" line="345"/>
         <source>Triangle</source>
         <translation>Triangle</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="329"/>
+        <location filename="../views/pixel_inspector.cpp" line="345"/>
         <source>Depth test</source>
         <translation>Depth test</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="330"/>
+        <location filename="../views/pixel_inspector.cpp" line="346"/>
         <source>Before</source>
         <translation>Before</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="330"/>
+        <location filename="../views/pixel_inspector.cpp" line="346"/>
         <source>After</source>
         <translation>After</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="330"/>
+        <location filename="../views/pixel_inspector.cpp" line="346"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="345"/>
+        <location filename="../views/pixel_inspector.cpp" line="361"/>
         <source>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</source>
         <translation>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</translation>
     </message>
@@ -6728,123 +6728,123 @@
         <translation>Ke = %1: the material&apos;s own light</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="465"/>
+        <location filename="../views/pixel_inspector.cpp" line="522"/>
         <source>Your renderer&apos;s colour here: (%1, %2, %3); ours (%4, %5, %6).</source>
         <translation>Your renderer&apos;s colour here: (%1, %2, %3); ours (%4, %5, %6).</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="484"/>
+        <location filename="../views/pixel_inspector.cpp" line="541"/>
         <source>No triangle of ours holds this pixel.</source>
         <translation>No triangle of ours holds this pixel.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="487"/>
+        <location filename="../views/pixel_inspector.cpp" line="544"/>
         <source>The terms are worked out for the course&apos;s lighting in flat or Phong shading only.</source>
         <translation>The terms are worked out for the course&apos;s lighting in flat or Phong shading only.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="492"/>
+        <location filename="../views/pixel_inspector.cpp" line="549"/>
         <source>For your colour, each term alone:</source>
         <translation>For your colour, each term alone:</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="538"/>
+        <location filename="../views/pixel_inspector.cpp" line="595"/>
         <source>start</source>
         <translation>start</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="544"/>
-        <location filename="../views/pixel_inspector.cpp" line="754"/>
+        <location filename="../views/pixel_inspector.cpp" line="601"/>
+        <location filename="../views/pixel_inspector.cpp" line="812"/>
         <source>end</source>
         <translation>end</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="552"/>
+        <location filename="../views/pixel_inspector.cpp" line="609"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>holds the pixel at the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="553"/>
+        <location filename="../views/pixel_inspector.cpp" line="610"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>not reached yet by the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="568"/>
+        <location filename="../views/pixel_inspector.cpp" line="625"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="569"/>
+        <location filename="../views/pixel_inspector.cpp" line="626"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Without stepping, the colours of writes overwritten later are not kept.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="695"/>
+        <location filename="../views/pixel_inspector.cpp" line="753"/>
         <source>Before: %1</source>
         <translation>Before: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="735"/>
+        <location filename="../views/pixel_inspector.cpp" line="793"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="738"/>
+        <location filename="../views/pixel_inspector.cpp" line="796"/>
         <source>The cleared pixel is not lit.</source>
         <translation>The cleared pixel is not lit.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="741"/>
+        <location filename="../views/pixel_inspector.cpp" line="799"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="753"/>
+        <location filename="../views/pixel_inspector.cpp" line="811"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Lighting of step %1, triangle %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="758"/>
+        <location filename="../views/pixel_inspector.cpp" line="816"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejected: this colour was never written)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="771"/>
+        <location filename="../views/pixel_inspector.cpp" line="829"/>
         <source>object colour</source>
         <translation>object colour</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="774"/>
+        <location filename="../views/pixel_inspector.cpp" line="832"/>
         <source>emission</source>
         <translation>emission</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="776"/>
+        <location filename="../views/pixel_inspector.cpp" line="834"/>
         <source>ambient</source>
         <translation>ambient</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="781"/>
+        <location filename="../views/pixel_inspector.cpp" line="839"/>
         <source>diffuse %1</source>
         <translation>diffuse %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="784"/>
+        <location filename="../views/pixel_inspector.cpp" line="842"/>
         <source>specular %1</source>
         <translation>specular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="788"/>
+        <location filename="../views/pixel_inspector.cpp" line="846"/>
         <source>diffuse</source>
         <translation>diffuse</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="790"/>
+        <location filename="../views/pixel_inspector.cpp" line="848"/>
         <source>specular</source>
         <translation>specular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="818"/>
+        <location filename="../views/pixel_inspector.cpp" line="874"/>
         <source>No special case: every term applies as written.</source>
         <translation>No special case: every term applies as written.</translation>
     </message>
@@ -8072,87 +8072,87 @@
 <context>
     <name>rasterlab::ZBufferView</name>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="161"/>
+        <location filename="../views/zbuffer_view.cpp" line="164"/>
         <source>Automatic range (nearest to farthest drawn)</source>
         <translation>Automatic range (nearest to farthest drawn)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="177"/>
-        <source>Grey (near white)</source>
-        <translation>Grey (near white)</translation>
+        <location filename="../views/zbuffer_view.cpp" line="181"/>
+        <source>Grey</source>
+        <translation>Grey</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="178"/>
-        <source>False colour (near red, far blue)</source>
-        <translation>False colour (near red, far blue)</translation>
+        <location filename="../views/zbuffer_view.cpp" line="182"/>
+        <source>False colour</source>
+        <translation>False colour</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="190"/>
+        <location filename="../views/zbuffer_view.cpp" line="194"/>
         <source>Nearest (white / red):</source>
         <translation>Nearest (white / red):</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="191"/>
+        <location filename="../views/zbuffer_view.cpp" line="195"/>
         <source>Farthest (dark / blue):</source>
         <translation>Farthest (dark / blue):</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="192"/>
+        <location filename="../views/zbuffer_view.cpp" line="196"/>
         <source>Colours:</source>
         <translation>Colours:</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="279"/>
+        <location filename="../views/zbuffer_view.cpp" line="322"/>
         <source>+&amp;infin;</source>
         <translation>+&amp;infin;</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="283"/>
+        <location filename="../views/zbuffer_view.cpp" line="326"/>
         <source>the view-space z of P&apos;</source>
         <translation>the view-space z of P&apos;</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="283"/>
+        <location filename="../views/zbuffer_view.cpp" line="326"/>
         <source>the NDC z</source>
         <translation>the NDC z</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="291"/>
+        <location filename="../views/zbuffer_view.cpp" line="334"/>
         <source>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</source>
         <translation>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="346"/>
+        <location filename="../views/zbuffer_view.cpp" line="389"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="363"/>
+        <location filename="../views/zbuffer_view.cpp" line="406"/>
         <source>No pixel holds a triangle: the buffer is all clear value.</source>
         <translation>No pixel holds a triangle: the buffer is all clear value.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="366"/>
+        <location filename="../views/zbuffer_view.cpp" line="409"/>
         <source>Drawn depths from %1 to %2; shown from %3 to %4.</source>
         <translation>Drawn depths from %1 to %2; shown from %3 to %4.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="372"/>
+        <location filename="../views/zbuffer_view.cpp" line="415"/>
         <source>%1 pixels nearer and %2 farther than the range are drawn at its ends.</source>
         <translation>%1 pixels nearer and %2 farther than the range are drawn at its ends.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="386"/>
+        <location filename="../views/zbuffer_view.cpp" line="429"/>
         <source>+inf</source>
         <translation>+inf</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="387"/>
+        <location filename="../views/zbuffer_view.cpp" line="430"/>
         <source>x %1, y %2: no triangle; the depth stays at the clear value %3</source>
         <translation>x %1, y %2: no triangle; the depth stays at the clear value %3</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="392"/>
+        <location filename="../views/zbuffer_view.cpp" line="435"/>
         <source>x %1, y %2: depth %3, triangle %4</source>
         <translation>x %1, y %2: depth %3, triangle %4</translation>
     </message>

@@ -19,6 +19,7 @@
 #include "pipeline/render/frame_trace.h"
 #include "views/inspection.h"
 #include "views/number_text.h"
+#include "views/view_font.h"
 
 namespace rasterlab {
 
@@ -597,9 +598,7 @@ void CameraBasisView::resizeEvent(QResizeEvent* event) {
 
 void CameraBasisView::applyPresentation() {
     m_canvas->setLineWidth(m_inspection ? m_inspection->lineWidth() : 1.5);
-    QFont f = QWidget::font();
-    f.setPointSizeF(QFont().pointSizeF() * (m_inspection ? m_inspection->textScale(1.35) : 1.0));
-    setFont(f);
+    setFont(scaledFont(parentWidget(), m_inspection ? m_inspection->textScale(1.35) : 1.0));
 }
 
 void CameraBasisView::refresh() {

@@ -20,6 +20,7 @@
 #include "views/frame_image_view.h"
 #include "views/inspection.h"
 #include "views/number_text.h"
+#include "views/view_font.h"
 #include "views/wrapping_check_box.h"
 
 namespace rasterlab {
@@ -86,6 +87,7 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
     m_tabs->setObjectName(QStringLiteral("normalsTabs"));
     m_tabs->addTab(meshPage, tr("Mesh and normals"));
     m_tabs->addTab(mapPage, tr("Normal map"));
+    m_tabs->setUsesScrollButtons(false);  // both titles whole: the tabs are no narrower
     // The legend and the explanation in a column that scrolls, beside the drawing when the
     // view is wider than tall, below it otherwise: the drawing keeps the view's height or
     // width whatever the text's length.
@@ -107,7 +109,8 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
     wordsScroll->setWidgetResizable(true);
     wordsScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     wordsScroll->setWidget(words);
-    wordsScroll->setMinimumWidth(m_legend->fontMetrics().averageCharWidth() * 24);
+    wordsScroll->setMinimumWidth(m_legend->fontMetrics().averageCharWidth() * 18);
+    m_words = wordsScroll;
     m_splitter = new QSplitter(Qt::Horizontal, this);
     m_splitter->setObjectName(QStringLiteral("normalsSplitter"));
     m_splitter->addWidget(m_tabs);
@@ -162,8 +165,7 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
     });
     connect(m_inspection, &Inspection::presentationChanged, this, [this] {
         m_canvas->setLineWidth(m_inspection->lineWidth());
-        QFont f = QApplication::font(this);
-        f.setPointSizeF(f.pointSizeF() * m_inspection->textScale(1.4));
+        const QFont f = scaledFont(this, m_inspection->textScale(1.4));
         m_explanation->setFont(f);
         m_legend->setFont(f);
     });
@@ -172,7 +174,11 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
 
 void NormalsView::resizeEvent(QResizeEvent* event) {
     QWidget::resizeEvent(event);
-    const Qt::Orientation along = width() >= height() ? Qt::Horizontal : Qt::Vertical;
+    // Beside the drawing when the view is wider than tall and both fit across it.
+    const int across = m_tabs->minimumSizeHint().width() + m_words->minimumWidth() +
+                       m_splitter->handleWidth() + m_splitter->x() * 2;
+    const Qt::Orientation along =
+        width() >= height() && width() >= across ? Qt::Horizontal : Qt::Vertical;
     if (m_splitter->orientation() != along) {
         m_splitter->setOrientation(along);
         m_splitMoved = false;

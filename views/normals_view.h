@@ -89,6 +89,7 @@ private:
     QLabel* m_pixelValue = nullptr;
     QTextBrowser* m_explanation = nullptr;
     QSplitter* m_splitter = nullptr;
+    QWidget* m_words = nullptr;  // the switches, the legend and the explanation
     bool m_splitMoved = false;  // the splitter's handle moved by hand
 };
 

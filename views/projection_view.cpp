@@ -21,6 +21,7 @@
 #include "views/elided_label.h"
 #include "views/inspection.h"
 #include "views/number_text.h"
+#include "views/view_font.h"
 
 namespace rasterlab {
 
@@ -796,9 +797,7 @@ void ProjectionView::applyPresentation() {
     const double width = m_inspection ? m_inspection->lineWidth() : 1.5;
     m_canvas->setLineWidth(width);
     m_side->setLineWidth(width);
-    QFont f = QWidget::font();
-    f.setPointSizeF(QFont().pointSizeF() * (m_inspection ? m_inspection->textScale(1.35) : 1.0));
-    setFont(f);
+    setFont(scaledFont(parentWidget(), m_inspection ? m_inspection->textScale(1.35) : 1.0));
 }
 
 void ProjectionView::refresh() {

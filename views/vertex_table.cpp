@@ -18,6 +18,7 @@
 
 #include "pipeline/stages/shading.h"
 #include "views/number_text.h"
+#include "views/view_font.h"
 #include "views/wrapping_check_box.h"
 
 namespace rasterlab {
@@ -301,6 +302,15 @@ void VertexTableView::showEvent(QShowEvent* event) {
     followSelection();
 }
 
+void VertexTableView::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    // Another font (the dock's, presentation mode's): the rows and columns measured again,
+    // once the table has taken it.
+    if (event->type() == QEvent::FontChange)
+        QMetaObject::invokeMethod(this, &VertexTableView::applyPresentation,
+                                  Qt::QueuedConnection);
+}
+
 void VertexTableView::refreshFrame() {
     m_dirty = false;
     const auto& frame = m_inspection->frame();
@@ -562,11 +572,10 @@ QString VertexTableView::explanationHtml(VertexRef ref) const {
 }
 
 void VertexTableView::applyPresentation() {
-    QFont tableFont = QApplication::font(this);
-    tableFont.setPointSizeF(tableFont.pointSizeF() * m_inspection->textScale(1.4));
+    const QFont tableFont = scaledFont(this, m_inspection->textScale(1.4));
     m_table->setFont(tableFont);
     m_explanation->setFont(tableFont);
-    m_table->verticalHeader()->setDefaultSectionSize(QFontMetrics(tableFont).height() + 6);
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
     fitColumns();
 }
 

@@ -177,11 +177,9 @@ ZBufferView::ZBufferView(QWidget* parent) : QWidget(parent) {
     }
     m_paletteBox = new QComboBox(this);
     m_paletteBox->setObjectName(QStringLiteral("zbufferPalette"));
-    m_paletteBox->addItem(tr("Grey (near white)"));
-    m_paletteBox->addItem(tr("False colour (near red, far blue)"));
-    // Narrower than its longest entry, so that a docked view keeps the room for the image.
-    m_paletteBox->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_paletteBox->setMinimumContentsLength(10);
+    // Short names: the rows above them say which colour is near and which far.
+    m_paletteBox->addItem(tr("Grey"));
+    m_paletteBox->addItem(tr("False colour"));
     m_rangeLabel = new QLabel(this);
     m_rangeLabel->setObjectName(QStringLiteral("zbufferRangeLabel"));
     m_rangeLabel->setWordWrap(true);
@@ -219,9 +217,6 @@ ZBufferView::ZBufferView(QWidget* parent) : QWidget(parent) {
     m_panel->setWidgetResizable(true);
     m_panel->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_panel->setWidget(panel);
-    // As wide as its narrowest controls: it scrolls up and down, never sideways.
-    m_panel->setMinimumWidth(panel->minimumSizeHint().width() +
-                             m_panel->verticalScrollBar()->sizeHint().width());
     m_view->setPreferredSize(QSize(160, 120));
     m_view->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
     m_layout = new QBoxLayout(QBoxLayout::LeftToRight, this);
@@ -285,6 +280,16 @@ void ZBufferView::arrange() {
     // image; taller: below it. The image takes three fifths either way.
     const bool beside = width() >= height();
     m_layout->setDirection(beside ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom);
+    // The column as wide as its widest control (larger text, another language): it scrolls
+    // up and down, never sideways.
+    m_panel->setMinimumWidth(m_panel->widget()->minimumSizeHint().width() +
+                             m_panel->verticalScrollBar()->sizeHint().width());
+}
+
+void ZBufferView::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange || event->type() == QEvent::LanguageChange)
+        arrange();
 }
 
 void ZBufferView::resizeEvent(QResizeEvent* event) {
