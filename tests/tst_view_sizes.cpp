@@ -11,11 +11,13 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QTableView>
+#include <QTextBrowser>
 #include <QTemporaryDir>
 #include <QWheelEvent>
 
 #include "app/window/main_window.h"
 #include "tests/offscreen_screens.h"
+#include "views/camera_basis_view.h"
 #include "views/frame_image_view.h"
 #include "views/inspection.h"
 #include "views/normals_canvas.h"
@@ -118,6 +120,8 @@ private slots:
     void normalsUseTheHeight();
     void vertexTableColumnsInView_data();
     void vertexTableColumnsInView();
+    void gramSchmidtStepsInView_data();
+    void gramSchmidtStepsInView();
     void phongBarsLabelled();
     void inspectorFormulaInView_data();
     void inspectorFormulaInView();
@@ -235,6 +239,37 @@ void TestViewSizes::vertexTableColumnsInView() {
     QCOMPARE(table->model()->data(view494).toString(),
              size.width() < 900 ? QStringLiteral("-0.478976\n1.08283\n8.6901")
                                 : QStringLiteral("(-0.478976, 1.08283, 8.6901)"));
+}
+
+void TestViewSizes::gramSchmidtStepsInView_data() {
+    zbufferImageWhole_data();
+}
+
+void TestViewSizes::gramSchmidtStepsInView() {
+    // The steps beside the drawing: 34 characters a line, or half the width when that is
+    // less (a dock); with the lecture layout's room, the four steps in view without
+    // scrolling.
+    QFETCH(QSize, size);
+    auto* view = new rasterlab::CameraBasisView(m_window->inspection());
+    Docked docked(view, size);
+    settle();
+    view->setStep(4);
+    settle();
+    const QString where = QStringLiteral("%1x%2").arg(size.width()).arg(size.height());
+    auto* text = view->findChild<QTextBrowser*>(QStringLiteral("cameraBasisText"));
+    QVERIFY(text);
+    QCOMPARE(shownPart(text, docked.scroll), text->rect());
+    const int least = std::min(size.width() / 2, view->fontMetrics().averageCharWidth() * 34);
+    QVERIFY2(text->width() >= least - 12,  // less the splitter's handle and the margins
+             qPrintable(QStringLiteral("%1: the steps %2 px wide").arg(where).arg(text->width())));
+    QTextCursor last = text->document()->find(QStringLiteral("4. U := N"));
+    QVERIFY(!last.isNull());
+    if (size.height() >= 500) {
+        QCOMPARE(text->verticalScrollBar()->value(), 0);
+        const QRect at = text->cursorRect(last);
+        QVERIFY2(text->viewport()->rect().contains(at),
+                 qPrintable(QStringLiteral("%1: step 4 at %2").arg(where, ::text(at))));
+    }
 }
 
 void TestViewSizes::phongBarsLabelled() {

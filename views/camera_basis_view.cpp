@@ -586,12 +586,17 @@ void CameraBasisView::showEvent(QShowEvent* event) {
 void CameraBasisView::resizeEvent(QResizeEvent* event) {
     QWidget::resizeEvent(event);
     // Side by side when wide, one above the other when tall (a narrow dock); the drawing
-    // gets 60% when the orientation changes, then whatever the user drags it to.
+    // gets 60% when the orientation changes, then whatever the user drags it to. Side by
+    // side, the steps keep 34 characters a line, up to half the width (a docked view), so
+    // that each step's vectors do not break a number a line.
     const Qt::Orientation orientation = width() > 1.25 * height() ? Qt::Horizontal : Qt::Vertical;
     if (orientation != m_splitter->orientation() || !m_splitterPlaced) {
         m_splitter->setOrientation(orientation);
         const int total = orientation == Qt::Horizontal ? width() : height();
-        m_splitter->setSizes({total * 3 / 5, total - total * 3 / 5});
+        int text = total - total * 3 / 5;
+        if (orientation == Qt::Horizontal)
+            text = std::max(text, std::min(total / 2, fontMetrics().averageCharWidth() * 34));
+        m_splitter->setSizes({total - text, text});
         m_splitterPlaced = true;
     }
 }
