@@ -20,10 +20,15 @@
 #include "views/camera_basis_view.h"
 #include "views/frame_image_view.h"
 #include "views/inspection.h"
+#include "views/near_clip_view.h"
 #include "views/normals_canvas.h"
 #include "views/normals_view.h"
 #include "views/painted_labels.h"
+#include "views/painter_view.h"
 #include "views/pixel_inspector.h"
+#include "views/projection_view.h"
+#include "views/scanline_view.h"
+#include "views/trapezoid_view.h"
 #include "views/vertex_table.h"
 #include "views/zbuffer_view.h"
 
@@ -125,6 +130,8 @@ private slots:
     void phongBarsLabelled();
     void inspectorFormulaInView_data();
     void inspectorFormulaInView();
+    void textFollowsTheDocksFont_data();
+    void textFollowsTheDocksFont();
     void inTheWindow();
 
 private:
@@ -349,6 +356,75 @@ void TestViewSizes::inspectorFormulaInView() {
                                      text(shownPart(w, docked.scroll)))));
     }
     QVERIFY(inspector->formulaText().contains(QStringLiteral("332.648")));
+}
+
+void TestViewSizes::textFollowsTheDocksFont_data() {
+    QTest::addColumn<QString>("name");
+    for (const char* name : {"camera", "vertices", "normals", "projection", "clipping", "scan",
+                             "trapezoids", "zbuffer", "painter", "inspector"})
+        QTest::newRow(name) << QString::fromLatin1(name);
+}
+
+void TestViewSizes::textFollowsTheDocksFont() {
+    // The window sets a font on a dock's contents (presentation mode, the text zoom): every
+    // part of every view takes it, twice as large here, and the text a view paints itself
+    // (PaintedLabels) grows with it.
+    QFETCH(QString, name);
+    Inspection* inspection = m_window->inspection();
+    QWidget* view = nullptr;
+    if (name == QLatin1String("camera")) view = new rasterlab::CameraBasisView(inspection);
+    if (name == QLatin1String("vertices")) view = new rasterlab::VertexTableView(inspection);
+    if (name == QLatin1String("normals")) view = new rasterlab::NormalsView(inspection);
+    if (name == QLatin1String("projection")) view = new rasterlab::ProjectionView(inspection);
+    if (name == QLatin1String("clipping")) view = new rasterlab::NearClipView(inspection);
+    if (name == QLatin1String("scan")) view = new rasterlab::ScanlineView(inspection);
+    if (name == QLatin1String("trapezoids")) view = new rasterlab::TrapezoidView(inspection);
+    if (name == QLatin1String("painter")) view = new rasterlab::PainterView(inspection);
+    if (name == QLatin1String("inspector")) view = new rasterlab::PixelInspector(inspection);
+    if (name == QLatin1String("zbuffer")) {
+        auto* z = new rasterlab::ZBufferView;
+        z->setFrame(m_window->currentFrame());
+        view = z;
+    }
+    QVERIFY(view);
+    Docked docked(view, QSize(900, 560));
+    settle();
+    const auto paintedHeight = [&] {
+        int tallest = 0;
+        for (QWidget* w : view->findChildren<QWidget*>())
+            if (const auto* painted = dynamic_cast<const rasterlab::PaintedLabels*>(w);
+                painted && w->isVisible()) {
+                w->grab();
+                // Text labels only (a view records a button's place too, without text).
+                const QList<QRect> rects = painted->labelRects();
+                const QStringList texts = painted->labelTexts();
+                for (qsizetype i = 0; i < rects.size(); ++i)
+                    if (!texts[i].isEmpty()) tallest = std::max(tallest, rects[i].height());
+            }
+        return tallest;
+    };
+    const int paintedBefore = paintedHeight();
+    const double size = docked.scroll.font().pointSizeF();
+    QFont large = docked.scroll.font();
+    large.setPointSizeF(2 * size);
+    docked.scroll.setFont(large);
+    settle();
+    QList<QWidget*> parts = view->findChildren<QWidget*>();
+    parts.prepend(view);
+    for (const QWidget* w : parts) {
+        if (w->objectName().startsWith(QLatin1String("qt_"))) continue;  // Qt's own parts
+        QVERIFY2(std::abs(w->font().pointSizeF() - 2 * size) < 0.01,
+                 qPrintable(QStringLiteral("%1 %2: %3 pt, the dock's %4")
+                                .arg(QLatin1String(w->metaObject()->className()), w->objectName())
+                                .arg(w->font().pointSizeF())
+                                .arg(2 * size)));
+    }
+    const int paintedAfter = paintedHeight();
+    if (paintedBefore > 0)
+        QVERIFY2(paintedAfter >= 1.6 * paintedBefore,
+                 qPrintable(QStringLiteral("painted labels %1 px high, then %2")
+                                .arg(paintedBefore)
+                                .arg(paintedAfter)));
 }
 
 void TestViewSizes::inTheWindow() {

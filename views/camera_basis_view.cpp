@@ -292,7 +292,7 @@ void CameraBasisCanvas::placeLabel(const QFontMetricsF& metrics, const PendingLa
         }
         if (found) break;
     }
-    recordLabel(box);
+    recordLabel(box, text);
     m_placed.append({text, at, box, label.colour});
 }
 
