@@ -16,7 +16,6 @@
 #include <numbers>
 
 #include "pipeline/render/animation.h"
-#include "views/elided_label.h"
 #include "views/frame_image_view.h"
 #include "views/inspection.h"
 #include "views/number_text.h"
@@ -51,7 +50,8 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
         tr("Beside each triangle normal, the model normal carried by viewFromModel itself "
            "instead of its inverse transpose: it leaves the surface under a non-uniform scale "
            "(set one in the Animation panel)"));
-    m_legend = new WrappedLabel(this);
+    // A plain wrapped label: its column's layout gives it the height its lines need.
+    m_legend = new QLabel(this);
     m_legend->setObjectName(QStringLiteral("normalsLegend"));
     m_legend->setWordWrap(true);
     m_legend->setTextFormat(Qt::RichText);

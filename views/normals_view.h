@@ -20,7 +20,6 @@
 #include <memory>
 
 #include "pipeline/render/frame_trace.h"
-#include "views/elided_label.h"
 #include "views/normals_canvas.h"
 #include "views/normals_model.h"
 
@@ -85,7 +84,7 @@ private:
     QCheckBox* m_vertexHairs = nullptr;
     QCheckBox* m_onlyVisible = nullptr;
     QCheckBox* m_wrong = nullptr;
-    WrappedLabel* m_legend = nullptr;
+    QLabel* m_legend = nullptr;
     QLabel* m_pixelValue = nullptr;
     QTextBrowser* m_explanation = nullptr;
     QSplitter* m_splitter = nullptr;
