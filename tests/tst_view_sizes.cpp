@@ -20,6 +20,7 @@
 #include "views/camera_basis_view.h"
 #include "views/frame_image_view.h"
 #include "views/inspection.h"
+#include "views/key_figures.h"
 #include "views/near_clip_view.h"
 #include "views/normals_canvas.h"
 #include "views/normals_view.h"
@@ -132,6 +133,7 @@ private slots:
     void inspectorFormulaInView();
     void textFollowsTheDocksFont_data();
     void textFollowsTheDocksFont();
+    void keyFiguresLarge();
     void inTheWindow();
 
 private:
@@ -413,11 +415,14 @@ void TestViewSizes::textFollowsTheDocksFont() {
     parts.prepend(view);
     for (const QWidget* w : parts) {
         if (w->objectName().startsWith(QLatin1String("qt_"))) continue;  // Qt's own parts
-        QVERIFY2(std::abs(w->font().pointSizeF() - 2 * size) < 0.01,
+        // The key figures, half as large again as the rest.
+        const double expected =
+            w->objectName() == QLatin1String("keyFigures") ? 3 * size : 2 * size;
+        QVERIFY2(std::abs(w->font().pointSizeF() - expected) < 0.01,
                  qPrintable(QStringLiteral("%1 %2: %3 pt, the dock's %4")
                                 .arg(QLatin1String(w->metaObject()->className()), w->objectName())
                                 .arg(w->font().pointSizeF())
-                                .arg(2 * size)));
+                                .arg(expected)));
     }
     const int paintedAfter = paintedHeight();
     if (paintedBefore > 0)
@@ -425,6 +430,40 @@ void TestViewSizes::textFollowsTheDocksFont() {
                  qPrintable(QStringLiteral("painted labels %1 px high, then %2")
                                 .arg(paintedBefore)
                                 .arg(paintedAfter)));
+}
+
+void TestViewSizes::keyFiguresLarge() {
+    // Each stage's key numbers, half as large again as the view's text and bold, with the
+    // lecture layout's room; a short dock (190 px) leaves them out for its drawing.
+    Inspection* inspection = m_window->inspection();
+    auto* camera = new rasterlab::CameraBasisView(inspection);
+    auto* normals = new rasterlab::NormalsView(inspection);
+    auto* projection = new rasterlab::ProjectionView(inspection);
+    auto* zbuffer = new rasterlab::ZBufferView;
+    zbuffer->setFrame(m_window->currentFrame());
+    const std::pair<QWidget*, QString> views[] = {
+        {camera, QStringLiteral("U = (1, 0, 0)  V = (0, 0.937862, -0.347009)  "
+                                "N = (0, -0.347009, -0.937862)")},
+        {normals, QStringLiteral("n = (0.3819, 0.2616, 0.8864)  n · P1 = 7.803")},
+        {projection, QStringLiteral("1520 inside · 0 clipped · 0 culled · 0 behind")},
+        {zbuffer, QStringLiteral("241332 tested · 140068 written · 101264 rejected\n"
+                                 "z 8.38824 … 12.8632")}};
+    for (const auto& [view, expected] : views) {
+        Docked docked(view, QSize(900, 560));
+        settle();
+        const auto* figures = view->findChild<rasterlab::KeyFigures*>();
+        QVERIFY(figures);
+        QCOMPARE(figures->text(), expected);
+        QVERIFY2(figures->isVisible(), qPrintable(expected));
+        QCOMPARE(shownPart(figures, docked.scroll), figures->rect());
+        QCOMPARE(figures->font().pointSizeF(), 1.5 * view->font().pointSizeF());
+        QVERIFY(figures->font().bold());
+        docked.scroll.resize(420, 190);
+        settle();
+        QVERIFY2(!figures->isVisible(), qPrintable(expected));
+        docked.scroll.takeWidget();
+        delete view;
+    }
 }
 
 void TestViewSizes::inTheWindow() {

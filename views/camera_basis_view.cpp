@@ -18,6 +18,7 @@
 
 #include "pipeline/render/frame_trace.h"
 #include "views/inspection.h"
+#include "views/key_figures.h"
 #include "views/number_text.h"
 #include "views/view_font.h"
 
@@ -533,6 +534,9 @@ CameraBasisView::CameraBasisView(Inspection* inspection, QWidget* parent)
     auto* panelLayout = new QVBoxLayout(panel);
     panelLayout->setContentsMargins(4, 4, 4, 0);
     panelLayout->addLayout(controls);
+    m_figures = new KeyFigures(this);
+    m_figures->setParent(panel);
+    panelLayout->addWidget(m_figures);
     panelLayout->addWidget(m_text, 1);
 
     m_splitter = new QSplitter(Qt::Vertical, this);
@@ -615,6 +619,7 @@ void CameraBasisView::refresh() {
     const std::shared_ptr<const rl::FrameTrace> frame =
         m_inspection ? m_inspection->frame() : nullptr;
     m_allSteps.clear();
+    m_allFigures.clear();
     m_residualText.clear();
     m_matrixText.clear();
     m_statusText.clear();
@@ -658,6 +663,16 @@ void CameraBasisView::refresh() {
                           "a lot. Choose a V further from N.")
                            .arg(number(m_conditionRatio, 3), number(kIllConditionedRatio));
 
+    // The key numbers of each step, large: what it starts from and what it makes.
+    m_allFigures = {QStringLiteral("C = %1  N = %2  V = %3")
+                        .arg(vector(camera.c), vector(b.nGiven), vector(b.vGiven)),
+                    QStringLiteral("|N| = %1  N = %2").arg(number(b.nLength), vector(b.n)),
+                    QStringLiteral("V·N = %1  V − (V·N) N = %2")
+                        .arg(number(b.vDotN), vector(b.vOrthogonal)),
+                    QStringLiteral("|V| = %1  V = %2")
+                        .arg(number(b.vOrthogonalLength), vector(b.v)),
+                    QStringLiteral("U = %1  V = %2  N = %3")
+                        .arg(vector(b.u), vector(b.v), vector(b.n))};
     m_allSteps << tr("1. N := N / |N| = %1 / %2 = %3")
                       .arg(vector(b.nGiven), number(b.nLength), vector(b.n))
                << tr("2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3")
@@ -747,6 +762,7 @@ void CameraBasisView::showStep() {
     m_back->setEnabled(numbers && m_step > 0);
     m_forward->setEnabled(numbers && m_step < 4);
     m_stepLabel->setText(tr("Step %1 of 4").arg(m_step));
+    m_figures->setText(numbers ? m_allFigures.value(m_step) : QString());
     m_canvas->setStep(m_step);
 
     // One page: why to distrust the numbers, the steps revealed so far (the newest in

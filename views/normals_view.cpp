@@ -18,6 +18,7 @@
 #include "pipeline/render/animation.h"
 #include "views/frame_image_view.h"
 #include "views/inspection.h"
+#include "views/key_figures.h"
 #include "views/number_text.h"
 #include "views/view_font.h"
 #include "views/wrapping_check_box.h"
@@ -99,6 +100,9 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
     for (QCheckBox* toggle : {m_triangleHairs, m_vertexHairs, m_onlyVisible, m_wrong})
         wordsLayout->addWidget(toggle);
     wordsLayout->addSpacing(4);
+    m_figures = new KeyFigures(this);
+    m_figures->setParent(words);
+    wordsLayout->addWidget(m_figures);
     wordsLayout->addWidget(m_legend);
     wordsLayout->addWidget(m_explanation, 1);
     m_legend->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Minimum);
@@ -375,6 +379,7 @@ void NormalsView::refreshExplanation() {
     const auto& frame = m_inspection->frame();
     if (!frame || !frame->projection) {
         m_explanation->setHtml(tr("<p>No frame yet.</p>"));
+        m_figures->setText(QString());
         return;
     }
     QString html =
@@ -391,6 +396,7 @@ void NormalsView::refreshExplanation() {
                              .toHtmlEscaped());
 
     const std::optional<std::uint32_t> selected = m_inspection->selectedTriangle();
+    QString figures;  // the selected triangle's normal, large
     if (selected && *selected < frame->projection->triangles.size()) {
         const rl::ScreenTriangle& tri = frame->projection->triangles[*selected];
         const rl::Draw& draw = frame->scene->draws[tri.draw];
@@ -411,6 +417,7 @@ void NormalsView::refreshExplanation() {
         if (length > 0.0) {
             const rl::dvec3 n = cross / length;
             const double facing = glm::dot(n, p1);
+            figures = QStringLiteral("n = %1  n · P1 = %2").arg(vector(n, 'f', 4), number(facing, 4));
             html += tr("n = <b>%1</b>; n · P1 = %2: %3</p>")
                         .arg(vector(n, 'f', 4), number(facing, 4),
                              facing > 0.0 ? tr("a back face, drawn in red") : tr("a front face"));
@@ -467,6 +474,12 @@ void NormalsView::refreshExplanation() {
         }
     }
     m_explanation->setHtml(html);
+    const NormalsPicture& p = m_model.picture();
+    if (figures.isEmpty() && !p.normalsSkipped)
+        figures = tr("%1 front faces · %2 back faces")
+                      .arg(p.meshTriangles - p.backFaces)
+                      .arg(p.backFaces);
+    m_figures->setText(figures);
 }
 
 void NormalsView::showPixelValue(QPoint pixel) {

@@ -31,6 +31,8 @@ class QTextBrowser;
 
 namespace rasterlab {
 
+class KeyFigures;
+
 class FrameImageView;
 class Inspection;
 
@@ -87,6 +89,7 @@ private:
     QLabel* m_legend = nullptr;
     QLabel* m_pixelValue = nullptr;
     QTextBrowser* m_explanation = nullptr;
+    KeyFigures* m_figures = nullptr;  // the selected triangle's normal, large
     QSplitter* m_splitter = nullptr;
     QWidget* m_words = nullptr;  // the switches, the legend and the explanation
     bool m_splitMoved = false;  // the splitter's handle moved by hand

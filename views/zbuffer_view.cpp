@@ -20,6 +20,7 @@
 #include <limits>
 
 #include "views/frame_image_view.h"
+#include "views/key_figures.h"
 #include "views/on_screen.h"
 #include "views/wrapping_check_box.h"
 
@@ -204,6 +205,9 @@ ZBufferView::ZBufferView(QWidget* parent) : QWidget(parent) {
     panel->setObjectName(QStringLiteral("zbufferPanel"));
     auto* panelLayout = new QVBoxLayout(panel);
     panelLayout->setContentsMargins(0, 0, 0, 0);
+    m_figures = new KeyFigures(this);
+    m_figures->setParent(panel);
+    panelLayout->addWidget(m_figures);
     panelLayout->addWidget(m_explanation);
     panelLayout->addWidget(m_histogramWidget);
     panelLayout->addWidget(m_rangeLabel);
@@ -381,6 +385,10 @@ void ZBufferView::setPalette(DepthPalette palette) {
 void ZBufferView::refresh() {
     m_stale = false;
     m_explanation->setText(explanation());
+    m_figures->setText(tr("%1 tested · %2 written · %3 rejected")
+                           .arg(m_tested)
+                           .arg(m_written)
+                           .arg(m_tested - std::min(m_tested, m_written)));
     if (!m_frame || !m_frame->depth) {
         m_image = QImage();
         m_histogram = DepthHistogram{};
@@ -406,6 +414,10 @@ void ZBufferView::refresh() {
         m_rangeLabel->setText(tr("No pixel holds a triangle: the buffer is all clear value."));
         return;
     }
+    m_figures->setText(m_figures->text() + QLatin1Char('\n') +
+                       QStringLiteral("z %1 … %2")
+                           .arg(double(drawn.nearest), 0, 'g', 6)
+                           .arg(double(drawn.farthest), 0, 'g', 6));
     QString text = tr("Drawn depths from %1 to %2; shown from %3 to %4.")
                        .arg(double(drawn.nearest), 0, 'g', 6)
                        .arg(double(drawn.farthest), 0, 'g', 6)

@@ -24,6 +24,8 @@ class QScrollArea;
 
 namespace rasterlab {
 
+class KeyFigures;
+
 class FrameImageView;
 
 struct DepthRange {
@@ -127,6 +129,7 @@ private:
     QComboBox* m_paletteBox = nullptr;
     QLabel* m_rangeLabel = nullptr;
     QLabel* m_valueLabel = nullptr;
+    KeyFigures* m_figures = nullptr;  // the fragments' counts and the depths, large
     QScrollArea* m_panel = nullptr;
     QBoxLayout* m_layout = nullptr;
 };
