@@ -8,6 +8,9 @@ KeyFigures::KeyFigures(QWidget* view) : WrappedLabel(view), m_view(view) {
     setObjectName(QStringLiteral("keyFigures"));
     setTextFormat(Qt::PlainText);
     setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // The height of its lines, at the top: a column's spare height goes below it.
+    setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);
     m_view->installEventFilter(this);
     follow();
     setVisible(false);
