@@ -404,8 +404,20 @@ PixelInspector::PixelInspector(Inspection* inspection, QWidget* parent)
     pictures->setContentsMargins(0, 0, 0, 0);
     pictures->addWidget(m_bars, 1);
     pictures->addWidget(m_vectors, 0, Qt::AlignTop);
-    // One grid, which arrange() fills as one column, or as two: the history on the left, the
-    // lighting on the right.
+    // The history (verdict, table, legend) and the lighting (title, pictures, formula), each
+    // a column of its own, one above the other or side by side in a grid (arrange()).
+    m_historyBox = new QWidget(this);
+    m_historyLayout = new QVBoxLayout(m_historyBox);
+    m_historyLayout->setContentsMargins(0, 0, 0, 0);
+    for (QWidget* w : std::initializer_list<QWidget*>{m_verdictLabel, m_table, m_legend})
+        m_historyLayout->addWidget(w);
+    m_historyLayout->addStretch(1);
+    m_lightingBox = new QWidget(this);
+    m_lightingLayout = new QVBoxLayout(m_lightingBox);
+    m_lightingLayout->setContentsMargins(0, 0, 0, 0);
+    for (QWidget* w : std::initializer_list<QWidget*>{m_breakdownTitle, m_pictures, m_formula})
+        m_lightingLayout->addWidget(w);
+    m_lightingLayout->addStretch(1);
     m_grid = new QGridLayout(this);
     arrange();
     const auto follow = [this] {
@@ -441,29 +453,35 @@ void PixelInspector::arrange() {
     }
     const QSize size = room ? room->size() : this->size();
     const bool beside = size.width() >= 1.4 * size.height() && size.width() >= 2 * 380;
-    if (m_grid->count() > 0 && beside == m_beside) return;
+    if (m_grid->count() > 0 && beside == m_beside) {
+        widenHistory();
+        return;
+    }
     m_beside = beside;
-    const QList<QWidget*> history{m_verdictLabel, m_table, m_legend, m_flags};
-    const QList<QWidget*> lighting{m_breakdownTitle, m_pictures, m_formula};
-    for (QWidget* w : history + lighting) m_grid->removeWidget(w);
+    // The flags close the history's column side by side, the lighting's in one column.
+    m_historyLayout->removeWidget(m_flags);
+    m_lightingLayout->removeWidget(m_flags);
+    (beside ? m_historyLayout : m_lightingLayout)->insertWidget(3, m_flags);
+    m_grid->removeWidget(m_historyBox);
+    m_grid->removeWidget(m_lightingBox);
     for (int r = 0; r < m_grid->rowCount(); ++r) m_grid->setRowStretch(r, 0);
     for (int c = 0; c < m_grid->columnCount(); ++c) m_grid->setColumnStretch(c, 0);
-    int row = 0;
-    if (beside) {
-        for (QWidget* w : history) m_grid->addWidget(w, row++, 0);
-        row = 0;
-        for (QWidget* w : lighting) m_grid->addWidget(w, row++, 1);
-        m_grid->setColumnStretch(0, 1);
-        m_grid->setColumnStretch(1, 1);
-        row = int(std::max(history.size(), lighting.size()));
-    } else {
-        // The flags last, below the formula they qualify.
-        for (QWidget* w : history.mid(0, 3) + lighting + history.mid(3))
-            m_grid->addWidget(w, row++, 0);
-        m_grid->setColumnStretch(0, 1);
-    }
+    m_grid->addWidget(m_historyBox, 0, 0);
+    m_grid->addWidget(m_lightingBox, beside ? 0 : 1, beside ? 1 : 0);
+    m_grid->setColumnStretch(0, 1);
+    if (beside) m_grid->setColumnStretch(1, 1);
+    const int row = beside ? 1 : 2;
     // What is left of the height below the last row.
     m_grid->setRowStretch(row, 1);
+    widenHistory();
+}
+
+void PixelInspector::widenHistory() {
+    // Side by side, the history's columns whole when that leaves the lighting 38 % of the
+    // width; one column, no minimum.
+    const QWidget* room = m_room ? m_room.data() : this;
+    const int width = m_beside ? std::min(m_wholeTableWidth, room->width() * 62 / 100) : 0;
+    m_grid->setColumnMinimumWidth(0, width);
 }
 
 void PixelInspector::resizeEvent(QResizeEvent* event) {
@@ -751,6 +769,13 @@ void PixelInspector::fitColumns() {
     const bool before = sum(least, true) <= room;
     if (!before && sum(least, false) > room) least = fewest;
     m_table->setColumnHidden(kBefore, !before);
+    // Beside the lighting, the history asks for the width of every column whole.
+    const int wholeTable = sum(whole, true) + 2 * m_table->frameWidth() +
+                           m_table->verticalScrollBar()->sizeHint().width();
+    if (wholeTable != m_wholeTableWidth) {
+        m_wholeTableWidth = wholeTable;
+        widenHistory();
+    }
     const int wholeSum = sum(whole, before), leastSum = sum(least, before);
     const double shrink = wholeSum <= room   ? 0.0
                           : leastSum >= room ? 1.0

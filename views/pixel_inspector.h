@@ -29,6 +29,7 @@
 #include "views/pixel_history.h"
 
 class QGridLayout;
+class QVBoxLayout;
 class QLabel;
 class QTableWidget;
 
@@ -73,7 +74,8 @@ private:
     void refresh();
     void applyPresentation();  // the fonts, larger when presenting on its own
     void followFont();
-    void arrange();  // the history and the lighting side by side, or one above the other         // the bold and fixed-width parts at the inspector's size
+    void arrange();
+    void widenHistory();  // the history's column as wide as its table asks, side by side  // the history and the lighting side by side, or one above the other         // the bold and fixed-width parts at the inspector's size
     void updateBreakdown();
     void fillTable();
     void fitColumns();
@@ -104,7 +106,12 @@ private:
     TermBars* m_bars = nullptr;
     QGridLayout* m_grid = nullptr;
     QWidget* m_pictures = nullptr;  // the bars and the vectors
+    QWidget* m_historyBox = nullptr;
+    QWidget* m_lightingBox = nullptr;
+    QVBoxLayout* m_historyLayout = nullptr;
+    QVBoxLayout* m_lightingLayout = nullptr;
     bool m_beside = false;          // the history and the lighting side by side
+    int m_wholeTableWidth = 0;      // the history's table with every column whole
     QPointer<QWidget> m_room;  // the widget it is shown in, watched for its size
     LightingVectors* m_vectors = nullptr;
     QLabel* m_formula = nullptr;
