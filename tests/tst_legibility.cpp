@@ -315,11 +315,17 @@ public:
                 const QFontMetrics metrics(font);
                 int width = table->columnWidth(column) - margin;
                 if (!index.data(Qt::DecorationRole).isNull()) width -= table->iconSize().width() + 4;
-                const QRect need = table->wordWrap()
-                                       ? metrics.boundingRect(QRect(0, 0, width, 100000),
-                                                              Qt::TextWordWrap, text)
-                                       : QRect(0, 0, metrics.horizontalAdvance(text),
-                                               metrics.height());
+                // Without wrapping, the text's own lines (a table may write a vector's
+                // components one a line): the widest, and their height.
+                const QStringList lines = text.split(QLatin1Char('\n'));
+                int widest = 0;
+                for (const QString& line : lines)
+                    widest = std::max(widest, metrics.horizontalAdvance(line));
+                const QRect need =
+                    table->wordWrap()
+                        ? metrics.boundingRect(QRect(0, 0, width, 100000), Qt::TextWordWrap, text)
+                        : QRect(0, 0, widest,
+                                metrics.height() + int(lines.size() - 1) * metrics.lineSpacing());
                 const QString tip = index.data(Qt::ToolTipRole).toString();
                 if ((need.width() > width + kSlack || need.height() > table->rowHeight(row)) &&
                     !tip.contains(text) && ++failed <= 2)

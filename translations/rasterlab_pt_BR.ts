@@ -3115,37 +3115,37 @@
 <context>
     <name>rasterlab::CameraBasisCanvas</name>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="153"/>
+        <location filename="../views/camera_basis_view.cpp" line="155"/>
         <source>Drag to turn the scene, wheel to zoom, double-click to reset.</source>
         <translation>Arraste para girar a cena, use a roda para o zoom, clique duas vezes para restaurar.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="156"/>
+        <location filename="../views/camera_basis_view.cpp" line="158"/>
         <source>Reset view</source>
         <translation>Restaurar vista</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="157"/>
+        <location filename="../views/camera_basis_view.cpp" line="159"/>
         <source>Turn the 3D drawing back to where it started</source>
         <translation>Volta o desenho 3D à posição inicial</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="420"/>
+        <location filename="../views/camera_basis_view.cpp" line="422"/>
         <source>window (d = %1)</source>
         <translation>janela (d = %1)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="424"/>
+        <location filename="../views/camera_basis_view.cpp" line="426"/>
         <source>frustum</source>
         <translation>volume de visão</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="439"/>
+        <location filename="../views/camera_basis_view.cpp" line="441"/>
         <source>N given, |N| = %1</source>
         <translation>N dado, |N| = %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="442"/>
+        <location filename="../views/camera_basis_view.cpp" line="444"/>
         <source>V given, |V| = %1</source>
         <translation>V dado, |V| = %1</translation>
     </message>
@@ -3153,132 +3153,132 @@
 <context>
     <name>rasterlab::CameraBasisView</name>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="510"/>
+        <location filename="../views/camera_basis_view.cpp" line="512"/>
         <source>Previous step</source>
         <translation>Passo anterior</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="514"/>
+        <location filename="../views/camera_basis_view.cpp" line="516"/>
         <source>Next step</source>
         <translation>Próximo passo</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="625"/>
+        <location filename="../views/camera_basis_view.cpp" line="634"/>
         <source>The camera was rejected: %1</source>
         <translation>A câmera foi rejeitada: %1</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="628"/>
+        <location filename="../views/camera_basis_view.cpp" line="637"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="630"/>
+        <location filename="../views/camera_basis_view.cpp" line="639"/>
         <source>This stage is skipped: %1.</source>
         <translation>Esta etapa é omitida: %1.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="632"/>
+        <location filename="../views/camera_basis_view.cpp" line="641"/>
         <source>the frame has no camera basis</source>
         <translation>o quadro não tem base da câmera</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="639"/>
+        <location filename="../views/camera_basis_view.cpp" line="648"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; From the course camera (C, N, V) Gram-Schmidt makes the orthonormal basis U, V, N of view space. A scene whose draws carry their own model/view matrices (HW2 command files) has no course camera: this stage does nothing for it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Base da câmera.&lt;/b&gt; A partir da câmera do curso (C, N, V), Gram-Schmidt constrói a base ortonormal U, V, N do espaço de vista. Uma cena cujos desenhos trazem suas próprias matrizes de modelo/vista (arquivos de comandos HW2) não tem câmera do curso: esta etapa não faz nada para ela.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="652"/>
+        <location filename="../views/camera_basis_view.cpp" line="661"/>
         <source>N and V are nearly parallel: |V − (V·N) N| / |V| = %1, below %2. The basis is ill-conditioned: a tiny change of N or V turns U and V a lot. Choose a V further from N.</source>
         <translation>N e V são quase paralelos: |V − (V·N) N| / |V| = %1, abaixo de %2. A base é mal condicionada: uma mudança mínima de N ou V gira muito U e V. Escolha um V mais afastado de N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="657"/>
+        <location filename="../views/camera_basis_view.cpp" line="676"/>
         <source>1. N := N / |N| = %1 / %2 = %3</source>
         <translation>1. N := N / |N| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="659"/>
+        <location filename="../views/camera_basis_view.cpp" line="678"/>
         <source>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</source>
         <translation>2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="661"/>
+        <location filename="../views/camera_basis_view.cpp" line="680"/>
         <source>3. V := V / |V| = %1 / %2 = %3</source>
         <translation>3. V := V / |V| = %1 / %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="663"/>
+        <location filename="../views/camera_basis_view.cpp" line="682"/>
         <source>4. U := N × V = %1 × %2 = %3</source>
         <translation>4. U := N × V = %1 × %2 = %3</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="665"/>
+        <location filename="../views/camera_basis_view.cpp" line="684"/>
         <source>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; largest %7</source>
         <translation>U·V = %1, U·N = %2, V·N = %3, |U| − 1 = %4, |V| − 1 = %5, |N| − 1 = %6; maior %7</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="672"/>
+        <location filename="../views/camera_basis_view.cpp" line="691"/>
         <source>N and V %1 degrees apart (under %2 degrees from the line of N, the residuals pass a float&apos;s precision)</source>
         <translation>N e V a %1 graus um do outro (a menos de %2 graus da reta de N, os resíduos passam a precisão de um float)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="694"/>
+        <location filename="../views/camera_basis_view.cpp" line="713"/>
         <source>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): rows U, V, N, then (0 0 0 1); the last column is −U·C, −V·C, −N·C.</source>
         <translation>&lt;b&gt;viewFromWorld&lt;/b&gt; = [U; V; N] · translate(−C): linhas U, V, N e depois (0 0 0 1); a última coluna é −U·C, −V·C, −N·C.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="706"/>
+        <location filename="../views/camera_basis_view.cpp" line="725"/>
         <source>&lt;p&gt;Vertex 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vértice 1: P = %1, P − C = %2, pView = (U·(P − C), V·(P − C), N·(P − C)) = %3%4.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="709"/>
+        <location filename="../views/camera_basis_view.cpp" line="728"/>
         <source>, in front of the camera (z &gt; 0)</source>
         <translation>, à frente da câmera (z &gt; 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="710"/>
+        <location filename="../views/camera_basis_view.cpp" line="729"/>
         <source>, behind the camera (z ≤ 0)</source>
         <translation>, atrás da câmera (z ≤ 0)</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="713"/>
+        <location filename="../views/camera_basis_view.cpp" line="732"/>
         <source>&lt;p&gt;&lt;b&gt;Camera basis.&lt;/b&gt; Gram-Schmidt keeps the direction of N (where the camera looks), removes from V its part along N so that up is perpendicular to the view direction, and completes the frame with U = N × V, the image&apos;s right. viewFromWorld = [U; V; N] (P − C) puts the camera at the origin looking along +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Base da câmera.&lt;/b&gt; Gram-Schmidt mantém a direção de N (para onde a câmera olha), remove de V sua componente ao longo de N para que o &quot;para cima&quot; fique perpendicular à direção de visão, e completa o referencial com U = N × V, a direita da imagem. viewFromWorld = [U; V; N] (P − C) põe a câmera na origem olhando ao longo de +z.&lt;/p&gt;&lt;p&gt;C = %1, N = %2, V = %3, d = %4, hx = %5, hy = %6.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="745"/>
+        <location filename="../views/camera_basis_view.cpp" line="764"/>
         <source>Step %1 of 4</source>
         <translation>Passo %1 de 4</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="759"/>
+        <location filename="../views/camera_basis_view.cpp" line="779"/>
         <source>Step forward to normalise N.</source>
         <translation>Avance um passo para normalizar N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="760"/>
+        <location filename="../views/camera_basis_view.cpp" line="780"/>
         <source>Step forward to remove from V its part along N.</source>
         <translation>Avance um passo para remover de V sua componente ao longo de N.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="761"/>
+        <location filename="../views/camera_basis_view.cpp" line="781"/>
         <source>Step forward to normalise V.</source>
         <translation>Avance um passo para normalizar V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="762"/>
+        <location filename="../views/camera_basis_view.cpp" line="782"/>
         <source>Step forward to make U = N × V.</source>
         <translation>Avance um passo para obter U = N × V.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="763"/>
+        <location filename="../views/camera_basis_view.cpp" line="783"/>
         <source>The basis is complete; the frustum is drawn with it.</source>
         <translation>A base está completa; o volume de visão (o frustum, tronco de pirâmide que a câmera vê) é desenhado com ela.</translation>
     </message>
     <message>
-        <location filename="../views/camera_basis_view.cpp" line="776"/>
+        <location filename="../views/camera_basis_view.cpp" line="796"/>
         <source>&lt;b&gt;Orthonormality residuals&lt;/b&gt; (0 up to rounding): %1</source>
         <translation>&lt;b&gt;Resíduos de ortonormalidade&lt;/b&gt; (0 a menos de arredondamento): %1</translation>
     </message>
@@ -5797,272 +5797,272 @@
 <context>
     <name>rasterlab::NearClipView</name>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="76"/>
+        <location filename="../views/near_clip_view.cpp" line="77"/>
         <source>wholly in front</source>
         <translation>inteiramente à frente</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="78"/>
+        <location filename="../views/near_clip_view.cpp" line="79"/>
         <source>clipped</source>
         <translation>recortado</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="80"/>
+        <location filename="../views/near_clip_view.cpp" line="81"/>
         <source>wholly behind</source>
         <translation>inteiramente atrás</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="82"/>
+        <location filename="../views/near_clip_view.cpp" line="83"/>
         <source>outside a clip plane</source>
         <translation>fora de um plano de recorte</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="84"/>
+        <location filename="../views/near_clip_view.cpp" line="85"/>
         <source>culled</source>
         <translation>descartado</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="86"/>
+        <location filename="../views/near_clip_view.cpp" line="87"/>
         <source>hidden back face</source>
         <translation>face traseira oculta</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="88"/>
+        <location filename="../views/near_clip_view.cpp" line="89"/>
         <source>beyond the guard band</source>
         <translation>além da banda de guarda</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="90"/>
+        <location filename="../views/near_clip_view.cpp" line="91"/>
         <source>not finite</source>
         <translation>não finito</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="206"/>
+        <location filename="../views/near_clip_view.cpp" line="207"/>
         <source>No triangle to show: select one, step into the frame, or choose one in the list.</source>
         <translation>Nenhum triângulo para mostrar: selecione um, avance pelo quadro ou escolha um na lista.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="265"/>
+        <location filename="../views/near_clip_view.cpp" line="267"/>
         <source>side view: w across (view z for the course camera), view %1 up</source>
         <translation>vista lateral: w na horizontal (o z de vista, para a câmera do curso), %1 de vista para cima</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="392"/>
+        <location filename="../views/near_clip_view.cpp" line="394"/>
         <source>w = near = %1</source>
         <translation>w = near = %1</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="395"/>
+        <location filename="../views/near_clip_view.cpp" line="397"/>
         <source>the plane w = near = %1 is far to the left, out of the picture</source>
         <translation>o plano w = near = %1 está bem à esquerda, fora da figura</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="402"/>
+        <location filename="../views/near_clip_view.cpp" line="404"/>
         <source>eye</source>
         <translation>olho</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="405"/>
+        <location filename="../views/near_clip_view.cpp" line="407"/>
         <source>the eye (w = 0) is far to the left, out of the picture</source>
         <translation>o olho (w = 0) está bem à esquerda, fora da figura</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="413"/>
+        <location filename="../views/near_clip_view.cpp" line="415"/>
         <source>on the screen (pixels)</source>
         <translation>na tela (pixels)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="417"/>
+        <location filename="../views/near_clip_view.cpp" line="419"/>
         <source>The last step projects the triangles drawn.</source>
         <translation>O último passo projeta os triângulos desenhados.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="463"/>
+        <location filename="../views/near_clip_view.cpp" line="465"/>
         <source>zoomed: x %1 to %2, y %3 to %4</source>
         <translation>ampliado: x de %1 a %2, y de %3 a %4</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="496"/>
+        <location filename="../views/near_clip_view.cpp" line="498"/>
         <source>image %1 × %2</source>
         <translation>imagem %1 × %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="501"/>
+        <location filename="../views/near_clip_view.cpp" line="503"/>
         <source>Nothing drawn.</source>
         <translation>Nada desenhado.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="509"/>
+        <location filename="../views/near_clip_view.cpp" line="511"/>
         <source>The triangle shown: the one selected, or one the near plane cut</source>
         <translation>O triângulo mostrado: o selecionado, ou um que o plano próximo cortou</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="512"/>
+        <location filename="../views/near_clip_view.cpp" line="514"/>
         <source>y up</source>
         <translation>y para cima</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="513"/>
+        <location filename="../views/near_clip_view.cpp" line="515"/>
         <source>x up</source>
         <translation>x para cima</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="514"/>
+        <location filename="../views/near_clip_view.cpp" line="516"/>
         <source>Which view axis the side view draws upward</source>
         <translation>Qual eixo de vista a vista lateral desenha para cima</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="515"/>
+        <location filename="../views/near_clip_view.cpp" line="517"/>
         <source>Back</source>
         <translation>Voltar</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="517"/>
+        <location filename="../views/near_clip_view.cpp" line="519"/>
         <source>Next</source>
         <translation>Avançar</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="519"/>
+        <location filename="../views/near_clip_view.cpp" line="521"/>
         <source>All</source>
         <translation>Todos</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="585"/>
+        <location filename="../views/near_clip_view.cpp" line="587"/>
         <source>The triangle selected (or being drawn)</source>
         <translation>O triângulo selecionado (ou em desenho)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="593"/>
+        <location filename="../views/near_clip_view.cpp" line="595"/>
         <source>triangle %1: %2</source>
         <translation>triângulo %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="687"/>
+        <location filename="../views/near_clip_view.cpp" line="689"/>
         <source>step %1 of %2</source>
         <translation>passo %1 de %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="697"/>
+        <location filename="../views/near_clip_view.cpp" line="699"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="698"/>
+        <location filename="../views/near_clip_view.cpp" line="700"/>
         <source>No triangle to show: select one or step into the frame.</source>
         <translation>Nenhum triângulo para mostrar: selecione um ou avance pelo quadro.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="700"/>
+        <location filename="../views/near_clip_view.cpp" line="702"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2: %3</source>
         <translation>&lt;b&gt;Triângulo %1&lt;/b&gt; de %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="727"/>
+        <location filename="../views/near_clip_view.cpp" line="729"/>
         <source>The seed clips each triangle against the plane z = &amp;minus;&amp;epsilon;, P = [0, 0, &amp;minus;1, &amp;epsilon;], before the perspective divide (OpenGL&apos;s camera looks along &amp;minus;z). The projection stage clips against w = near in clip space, here near = %1, so P = %2 and a point A is kept when dot(P, A) = w &amp;minus; near &amp;ge; 0.</source>
         <translation>A semente recorta cada triângulo contra o plano z = &amp;minus;&amp;epsilon;, P = [0, 0, &amp;minus;1, &amp;epsilon;], antes da divisão perspectiva (a câmera do OpenGL olha ao longo de &amp;minus;z). A etapa de projeção recorta contra w = near no espaço de recorte, aqui near = %1, então P = %2 e um ponto A é mantido quando dot(P, A) = w &amp;minus; near &amp;ge; 0.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="734"/>
+        <location filename="../views/near_clip_view.cpp" line="736"/>
         <source>For the course camera w is the view z: the camera looks along +z, and the plane is z = near, P = [0, 0, 1, &amp;minus;near].</source>
         <translation>Para a câmera do curso, w é o z de vista: a câmera olha ao longo de +z, e o plano é z = near, P = [0, 0, 1, &amp;minus;near].</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="737"/>
+        <location filename="../views/near_clip_view.cpp" line="739"/>
         <source>(Written out, the seed&apos;s P keeps z &amp;le; &amp;epsilon;; the plane z = &amp;minus;&amp;epsilon; it names is P = [0, 0, &amp;minus;1, &amp;minus;&amp;epsilon;]. Either way the plane lies a little in front of the eye, so no vertex drawn is divided by w = 0.)</source>
         <translation>(Fazendo as contas, o P da semente mantém z &amp;le; &amp;epsilon;; o plano z = &amp;minus;&amp;epsilon; que ela cita é P = [0, 0, &amp;minus;1, &amp;minus;&amp;epsilon;]. De todo modo, o plano fica um pouco à frente do olho, então nenhum vértice desenhado é dividido por w = 0.)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="741"/>
+        <location filename="../views/near_clip_view.cpp" line="743"/>
         <source>A0 = %1, A1 = %2, A2 = %3 (view space).</source>
         <translation>A0 = %1, A1 = %2, A2 = %3 (espaço de vista).</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="745"/>
+        <location filename="../views/near_clip_view.cpp" line="747"/>
         <source>This scene does not clip against the near plane (the naive or same-side projection): the steps show what clipping would do.</source>
         <translation>Esta cena não recorta contra o plano próximo (a projeção ingênua ou a do mesmo lado): os passos mostram o que o recorte faria.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="750"/>
+        <location filename="../views/near_clip_view.cpp" line="752"/>
         <source>The draw&apos;s clip planes cut the triangle first; the polygon the stage drew may differ from the one here.</source>
         <translation>Os planos de recorte do desenho cortam o triângulo primeiro; o polígono que a etapa desenhou pode diferir do mostrado aqui.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="757"/>
+        <location filename="../views/near_clip_view.cpp" line="759"/>
         <source>Vertex %1: dot(P, %1) = %2</source>
         <translation>Vértice %1: dot(P, %1) = %2</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="760"/>
+        <location filename="../views/near_clip_view.cpp" line="762"/>
         <source>kept, added to the output polygon as q%1.</source>
         <translation>mantido, acrescentado ao polígono de saída como q%1.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="762"/>
+        <location filename="../views/near_clip_view.cpp" line="764"/>
         <source>behind the plane, left out.</source>
         <translation>atrás do plano, deixado de fora.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="766"/>
+        <location filename="../views/near_clip_view.cpp" line="768"/>
         <source>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 have the same sign: the edge does not cross the plane.</source>
         <translation>Aresta %1&amp;ndash;%2: dot(P, %1) = %3 e dot(P, %2) = %4 têm o mesmo sinal: a aresta não cruza o plano.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="770"/>
+        <location filename="../views/near_clip_view.cpp" line="772"/>
         <source>Edge %1&amp;ndash;%2: dot(P, %1) = %3 and dot(P, %2) = %4 differ in sign: t = (0 &amp;minus; %5) / (%6 &amp;minus; %5) = %7, C = lerp(t, %1, %2) = %8, added as q%9.</source>
         <translation>Aresta %1&amp;ndash;%2: dot(P, %1) = %3 e dot(P, %2) = %4 têm sinais opostos: t = (0 &amp;minus; %5) / (%6 &amp;minus; %5) = %7, C = lerp(t, %1, %2) = %8, acrescentado como q%9.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="778"/>
+        <location filename="../views/near_clip_view.cpp" line="780"/>
         <source>(The stage computes the same point from %1, the end in front, with t&apos; = 1 &amp;minus; t = %2, so that the two triangles sharing the edge get it bit for bit.)</source>
         <translation>(A etapa calcula o mesmo ponto a partir de %1, a ponta que está à frente, com t&apos; = 1 &amp;minus; t = %2, para que os dois triângulos que compartilham a aresta obtenham exatamente o mesmo ponto, bit a bit.)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="789"/>
+        <location filename="../views/near_clip_view.cpp" line="791"/>
         <source>Output polygon: empty. The triangle lies wholly behind the plane: nothing is drawn.</source>
         <translation>Polígono de saída: vazio. O triângulo fica inteiramente atrás do plano: nada é desenhado.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="795"/>
+        <location filename="../views/near_clip_view.cpp" line="797"/>
         <source>Output polygon, %1 vertices: %2.</source>
         <translation>Polígono de saída, %1 vértices: %2.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="799"/>
+        <location filename="../views/near_clip_view.cpp" line="801"/>
         <source>The triangle is wholly in front: untouched.</source>
         <translation>O triângulo está inteiramente à frente: fica intacto.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="806"/>
+        <location filename="../views/near_clip_view.cpp" line="808"/>
         <source>Four vertices: split along the diagonal q0&amp;ndash;q2 into the triangles q0 q1 q2 and q0 q2 q3, rendered separately.</source>
         <translation>Quatro vértices: dividido ao longo da diagonal q0&amp;ndash;q2 nos triângulos q0 q1 q2 e q0 q2 q3, renderizados separadamente.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="809"/>
+        <location filename="../views/near_clip_view.cpp" line="811"/>
         <source>Three vertices: one triangle, nothing to split.</source>
         <translation>Três vértices: um triângulo, nada a dividir.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="811"/>
+        <location filename="../views/near_clip_view.cpp" line="813"/>
         <source>Fewer than three vertices: no triangle.</source>
         <translation>Menos de três vértices: nenhum triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="814"/>
+        <location filename="../views/near_clip_view.cpp" line="816"/>
         <source>Then each vertex is projected and taken to pixels.</source>
         <translation>Depois, cada vértice é projetado e levado a pixels.</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="817"/>
+        <location filename="../views/near_clip_view.cpp" line="819"/>
         <source>Nothing was drawn from this triangle (%1).</source>
         <translation>Nada foi desenhado deste triângulo (%1).</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="821"/>
+        <location filename="../views/near_clip_view.cpp" line="823"/>
         <source>Triangle %1: %2, %3, %4 (pixels)</source>
         <translation>Triângulo %1: %2, %3, %4 (pixels)</translation>
     </message>
     <message>
-        <location filename="../views/near_clip_view.cpp" line="828"/>
+        <location filename="../views/near_clip_view.cpp" line="830"/>
         <source>(%1 of the %2 triangles were drawn: %3.)</source>
         <translation>(%1 dos %2 triângulos foram desenhados: %3.)</translation>
     </message>
@@ -6080,32 +6080,32 @@
         <translation>a normal interpolada é nula</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="33"/>
+        <location filename="../views/normals_view.cpp" line="36"/>
         <source>Triangle normals</source>
         <translation>Normais dos triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="36"/>
+        <location filename="../views/normals_view.cpp" line="39"/>
         <source>Vertex normals</source>
         <translation>Normais dos vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="39"/>
+        <location filename="../views/normals_view.cpp" line="42"/>
         <source>Only on triangles that are seen</source>
         <translation>Só nos triângulos visíveis</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="42"/>
+        <location filename="../views/normals_view.cpp" line="45"/>
         <source>Hairs only on the triangles that hold a pixel at the end of the frame, and on their corners</source>
         <translation>Segmentos de normal só nos triângulos que ocupam um pixel no fim do quadro, e nos seus vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="45"/>
+        <location filename="../views/normals_view.cpp" line="48"/>
         <source>Normals by M (wrong)</source>
         <translation>Normais por M (erradas)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="48"/>
+        <location filename="../views/normals_view.cpp" line="51"/>
         <source>Beside each triangle normal, the model normal carried by viewFromModel itself instead of its inverse transpose: it leaves the surface under a non-uniform scale (set one in the Animation panel)</source>
         <translation>Ao lado de cada normal de triângulo, a normal do modelo levada pela própria viewFromModel em vez da sua inversa transposta: sob uma escala não uniforme, ela deixa de ser perpendicular à superfície (defina uma no painel Animação)</translation>
     </message>
@@ -6115,208 +6115,213 @@
         <translation>Por pixel, no cursor de passo, a normal unitária que o sombreamento usa ali: as normais dos vértices interpoladas com as coordenadas baricêntricas do pixel e normalizadas (a normal do triângulo no sombreamento plano), voltadas para o observador como o curso faz antes da iluminação; mostrada como RGB = (n + 1) / 2. O vermelho cresce para a direita, o verde para cima, o azul para longe da câmera: as normais voltadas encaram a câmera, então o azul fica quase sempre abaixo de 128. Preto: nenhum triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="88"/>
+        <location filename="../views/normals_view.cpp" line="89"/>
         <source>Mesh and normals</source>
         <translation>Malha e normais</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="89"/>
+        <location filename="../views/normals_view.cpp" line="90"/>
         <source>Normal map</source>
         <translation>Mapa de normais</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="238"/>
+        <location filename="../views/normals_view.cpp" line="284"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="244"/>
+        <location filename="../views/normals_view.cpp" line="290"/>
         <source>front faces %1</source>
         <translation>faces frontais %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="246"/>
-        <location filename="../views/normals_view.cpp" line="250"/>
+        <location filename="../views/normals_view.cpp" line="292"/>
+        <location filename="../views/normals_view.cpp" line="296"/>
         <source>(%1 hidden, left out by culling)</source>
         <translation>(%1 ocultas, eliminadas pelo descarte)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="248"/>
+        <location filename="../views/normals_view.cpp" line="294"/>
         <source>back faces (n · pView &amp;gt; 0) %1</source>
         <translation>faces traseiras (n · pView &amp;gt; 0) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="253"/>
+        <location filename="../views/normals_view.cpp" line="299"/>
         <source>inconsistent winding: %1 triangles, %2 edges run the same way by two triangles</source>
         <translation>orientação inconsistente: %1 triângulos, %2 arestas percorridas no mesmo sentido por dois triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="260"/>
+        <location filename="../views/normals_view.cpp" line="306"/>
         <source>%1% of the pixels seen are back faces: the surface is closed and its normals point inward in view space (the course&apos;s [U; V; N] mirrors, so a file wound counter-clockwise seen from outside turns over). Shading turns every normal toward the viewer: the image does not change.</source>
         <translation>%1% dos pixels visíveis são faces traseiras: a superfície é fechada e suas normais apontam para dentro no espaço de vista (a matriz [U; V; N] do curso espelha, então um arquivo orientado no sentido anti-horário visto de fora fica invertido). O sombreamento volta toda normal para o observador: a imagem não muda.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="267"/>
+        <location filename="../views/normals_view.cpp" line="313"/>
         <source>No normals: %1.</source>
         <translation>Sem normais: %1.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="272"/>
+        <location filename="../views/normals_view.cpp" line="318"/>
         <source>triangle normals</source>
         <translation>normais dos triângulos</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="273"/>
+        <location filename="../views/normals_view.cpp" line="319"/>
         <source>vertex normals</source>
         <translation>normais dos vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="275"/>
+        <location filename="../views/normals_view.cpp" line="321"/>
         <source>length L = %1 (%2% of the mesh&apos;s size)</source>
         <translation>comprimento L = %1 (%2% do tamanho da malha)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="280"/>
+        <location filename="../views/normals_view.cpp" line="326"/>
         <source>triangle normals carried by M itself (wrong)</source>
         <translation>normais dos triângulos levadas pela própria M (errado)</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="283"/>
+        <location filename="../views/normals_view.cpp" line="329"/>
         <source>on the %1 triangles seen and their corners</source>
         <translation>nos %1 triângulos visíveis e seus vértices</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="286"/>
+        <location filename="../views/normals_view.cpp" line="332"/>
         <source>Large mesh: one triangle normal in %1 and one vertex normal in %2 are drawn; the selected triangle&apos;s always.</source>
         <translation>Malha grande: desenha-se uma normal de triângulo a cada %1 e uma normal de vértice a cada %2; as do triângulo selecionado, sempre.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="293"/>
+        <location filename="../views/normals_view.cpp" line="339"/>
         <source>One triangle in %1 of the wireframe is drawn.</source>
         <translation>Desenha-se um triângulo do aramado a cada %1.</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="310"/>
+        <location filename="../views/normals_view.cpp" line="356"/>
         <source>&lt;p&gt;&lt;b&gt;Normals by M, right and wrong&lt;/b&gt;: A = viewFromModel = viewFromWorld · M(t) · worldFromModel (M: the animation matrix, the identity when the animation is off). The model-space normal n = %1, det A = %2; the carried edges, made unit: e1 = A (P2 − P1) / |…| = %3, e2 = A (P3 − P1) / |…| = %4.&lt;br&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Normais por M, certo e errado&lt;/b&gt;: A = viewFromModel = viewFromWorld · M(t) · worldFromModel (M: a matriz de animação, a identidade quando a animação está desligada). A normal no espaço do modelo é n = %1, det A = %2; as arestas levadas, tornadas unitárias: e1 = A (P2 − P1) / |…| = %3, e2 = A (P3 − P1) / |…| = %4.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="317"/>
+        <location filename="../views/normals_view.cpp" line="363"/>
         <source>Right: A&lt;sup&gt;−T&lt;/sup&gt; n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: perpendicular to the surface.&lt;br&gt;</source>
         <translation>Certo: A&lt;sup&gt;−T&lt;/sup&gt; n, normalizada = &lt;b&gt;%1&lt;/b&gt;; seus produtos escalares com e1 e e2 valem %2 e %3: perpendicular à superfície.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="321"/>
+        <location filename="../views/normals_view.cpp" line="367"/>
         <source>Wrong: A n, normalised = &lt;b&gt;%1&lt;/b&gt;; its dots with e1 and e2 are %2 and %3: %4° off the surface&apos;s normal.&lt;/p&gt;</source>
         <translation>Errado: A n, normalizada = &lt;b&gt;%1&lt;/b&gt;; seus produtos escalares com e1 e e2 valem %2 e %3: desviada %4° da normal da superfície.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="327"/>
+        <location filename="../views/normals_view.cpp" line="373"/>
         <source>&lt;p&gt;Here both agree: A has no non-uniform scale. Set a scale such as (2, 1, 1) in the Animation panel to see them part.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Aqui as duas coincidem: A não tem escala não uniforme. Defina uma escala como (2, 1, 1) no painel Animação para vê-las se separarem.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="335"/>
+        <location filename="../views/normals_view.cpp" line="381"/>
         <source>&lt;p&gt;No frame yet.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Nenhum quadro ainda.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="339"/>
+        <location filename="../views/normals_view.cpp" line="386"/>
         <source>&lt;p&gt;&lt;b&gt;Stage 3, normals&lt;/b&gt;, in view space: each triangle&apos;s normal n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, and each vertex&apos;s normal the normalised sum of the normals of the triangles around it. A triangle faces away from the camera (at the origin) when n · P1 &amp;gt; 0; the course turns such normals toward the viewer when it shades.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Etapa 3, normais&lt;/b&gt;, no espaço de vista: a normal de cada triângulo é n = (P2 − P1) × (P3 − P1) / |(P2 − P1) × (P3 − P1)|, e a normal de cada vértice é a soma normalizada das normais dos triângulos ao seu redor. Um triângulo está de costas para a câmera (na origem) quando n · P1 &amp;gt; 0; o curso volta essas normais para o observador ao sombrear.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="346"/>
+        <location filename="../views/normals_view.cpp" line="393"/>
         <source>&lt;p&gt;Skipped for this frame: %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Omitida neste quadro: %1.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="361"/>
+        <location filename="../views/normals_view.cpp" line="409"/>
         <source>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (vertices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</source>
         <translation>&lt;p&gt;&lt;b&gt;Triângulo %1&lt;/b&gt; (vértices %2, %3, %4):&lt;br&gt;P1 = %5, P2 = %6, P3 = %7&lt;br&gt;(P2 − P1) × (P3 − P1) = %8 × %9</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="368"/>
+        <location filename="../views/normals_view.cpp" line="416"/>
         <source> = %1, length %2&lt;br&gt;</source>
         <translation> = %1, comprimento %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="372"/>
+        <location filename="../views/normals_view.cpp" line="421"/>
         <source>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</source>
         <translation>n = &lt;b&gt;%1&lt;/b&gt;; n · P1 = %2: %3&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="374"/>
+        <location filename="../views/normals_view.cpp" line="423"/>
         <source>a back face, drawn in red</source>
         <translation>uma face traseira, desenhada em vermelho</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="374"/>
+        <location filename="../views/normals_view.cpp" line="423"/>
         <source>a front face</source>
         <translation>uma face frontal</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="376"/>
+        <location filename="../views/normals_view.cpp" line="425"/>
         <source>a degenerate triangle: no normal.&lt;/p&gt;</source>
         <translation>um triângulo degenerado: sem normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="380"/>
+        <location filename="../views/normals_view.cpp" line="429"/>
         <source>&lt;p&gt;It runs an edge in the same direction as a neighbour does: the two are wound inconsistently (magenta), and one of their normals points the wrong way.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Ele percorre uma aresta no mesmo sentido que um vizinho: os dois têm orientações inconsistentes (magenta), e uma das suas normais aponta para o lado errado.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="387"/>
+        <location filename="../views/normals_view.cpp" line="436"/>
         <source>&lt;p&gt;Vertex normals: N1 = %1 (vertex %2), N2 = %3 (vertex %4), N3 = %5 (vertex %6)&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normais dos vértices: N1 = %1 (vértice %2), N2 = %3 (vértice %4), N3 = %5 (vértice %6)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="395"/>
+        <location filename="../views/normals_view.cpp" line="444"/>
         <source>&lt;p&gt;Pick a pixel (here or in any image) to select its triangle and see its normal worked out.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Escolha um pixel (aqui ou em qualquer imagem) para selecionar seu triângulo e ver o cálculo da sua normal.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="405"/>
+        <location filename="../views/normals_view.cpp" line="454"/>
         <source>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </source>
         <translation>&lt;p&gt;&lt;b&gt;Pixel (%1, %2)&lt;/b&gt;: </translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="407"/>
+        <location filename="../views/normals_view.cpp" line="456"/>
         <source>no triangle holds it at the cursor (black in the normal map).&lt;/p&gt;</source>
         <translation>nenhum triângulo o ocupa no cursor (preto no mapa de normais).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="409"/>
+        <location filename="../views/normals_view.cpp" line="458"/>
         <source>no normal: %1 (grey in the normal map).&lt;/p&gt;</source>
         <translation>sem normal: %1 (cinza no mapa de normais).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="412"/>
+        <location filename="../views/normals_view.cpp" line="461"/>
         <source>the triangle&apos;s normal (flat) %1</source>
         <translation>a normal do triângulo (plana) %1</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="414"/>
+        <location filename="../views/normals_view.cpp" line="463"/>
         <source>N = α N1 + β N2 + γ N3 with (α, β, γ) = %1: %2, normalised %3</source>
         <translation>N = α N1 + β N2 + γ N3 com (α, β, γ) = %1: %2, normalizada %3</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="418"/>
+        <location filename="../views/normals_view.cpp" line="467"/>
         <source>; V · N &amp;lt; 0, turned toward the viewer: &lt;b&gt;%1&lt;/b&gt;</source>
         <translation>; V · N &amp;lt; 0, voltada para o observador: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="421"/>
+        <location filename="../views/normals_view.cpp" line="470"/>
         <source>. Colour (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</source>
         <translation>. Cor (N + 1) / 2 = (%1, %2, %3).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="440"/>
+        <location filename="../views/normals_view.cpp" line="479"/>
+        <source>%1 front faces · %2 back faces</source>
+        <translation>%1 faces frontais · %2 faces traseiras</translation>
+    </message>
+    <message>
+        <location filename="../views/normals_view.cpp" line="495"/>
         <source>x %1, y %2: no triangle</source>
         <translation>x %1, y %2: nenhum triângulo</translation>
     </message>
     <message>
-        <location filename="../views/normals_view.cpp" line="444"/>
+        <location filename="../views/normals_view.cpp" line="499"/>
         <source>x %1, y %2: triangle %3, N = %4, colour (%5, %6, %7)</source>
         <translation>x %1, y %2: triângulo %3, N = %4, cor (%5, %6, %7)</translation>
     </message>
@@ -6324,67 +6329,67 @@
 <context>
     <name>rasterlab::PainterView</name>
     <message>
-        <location filename="../views/painter_view.cpp" line="72"/>
+        <location filename="../views/painter_view.cpp" line="73"/>
         <source>Painted</source>
         <translation>Ordem</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="74"/>
+        <location filename="../views/painter_view.cpp" line="75"/>
         <source>Draw</source>
         <translation>Desenho</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="76"/>
+        <location filename="../views/painter_view.cpp" line="77"/>
         <source>Triangle</source>
         <translation>Triângulo</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="78"/>
+        <location filename="../views/painter_view.cpp" line="79"/>
         <source>|b| (distance)</source>
         <translation>|b| (distância)</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="80"/>
+        <location filename="../views/painter_view.cpp" line="81"/>
         <source>Hidden wrongly</source>
         <translation>Ocultos por engano</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="137"/>
+        <location filename="../views/painter_view.cpp" line="138"/>
         <source>The triangles in the order the painter paints them: farthest barycentre first. Click a row to select its triangle.</source>
         <translation>Os triângulos na ordem em que o pintor os pinta: o baricentro mais distante primeiro. Clique numa linha para selecionar seu triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="142"/>
+        <location filename="../views/painter_view.cpp" line="143"/>
         <source>Painter&apos;s image</source>
         <translation>Imagem do pintor</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="143"/>
+        <location filename="../views/painter_view.cpp" line="144"/>
         <source>Painted order (first blue, last red)</source>
         <translation>Ordem de pintura (primeiro azul, último vermelho)</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="148"/>
+        <location filename="../views/painter_view.cpp" line="149"/>
         <source>Mark ties on shared edges</source>
         <translation>Marcar empates nas arestas compartilhadas</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="151"/>
+        <location filename="../views/painter_view.cpp" line="152"/>
         <source>Pixels on an edge two triangles share, at the same depth: the z-buffer keeps the first drawn, the painter the last.</source>
         <translation>Pixels numa aresta que dois triângulos compartilham, na mesma profundidade: o z-buffer mantém o primeiro desenhado, o pintor o último.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="340"/>
+        <location filename="../views/painter_view.cpp" line="341"/>
         <source>rank of the last triangle painted</source>
         <translation>ordem do último triângulo pintado</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="341"/>
+        <location filename="../views/painter_view.cpp" line="342"/>
         <source>painted far to near, no depth test</source>
         <translation>pintado do mais distante ao mais próximo, sem teste de profundidade</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/painter_view.cpp" line="343"/>
+        <location filename="../views/painter_view.cpp" line="344"/>
         <source>Z-buffer (the same flat colours): %n pixel(s) differ</source>
         <translation>
             <numerusform>Z-buffer (as mesmas cores flat): %n pixel difere</numerusform>
@@ -6392,17 +6397,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="383"/>
+        <location filename="../views/painter_view.cpp" line="384"/>
         <source>No frame.</source>
         <translation>Nenhum quadro.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="384"/>
+        <location filename="../views/painter_view.cpp" line="385"/>
         <source>Not worked out yet.</source>
         <translation>Ainda não calculado.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/painter_view.cpp" line="389"/>
+        <location filename="../views/painter_view.cpp" line="390"/>
         <source>&lt;b&gt;Painter&apos;s algorithm&lt;/b&gt; (seed 004): the %n triangle(s) are sorted by the distance |b| of their barycentre b (view space) to the camera, far to near, each lit once at b, and painted in that order &lt;i&gt;without a depth test&lt;/i&gt;: the last painted stays.</source>
         <translation>
             <numerusform>&lt;b&gt;Algoritmo do pintor&lt;/b&gt; (semente 004): o %n triângulo é ordenado pela distância |b| do seu baricentro b (espaço de vista) à câmera, do mais distante ao mais próximo, iluminado uma vez em b e pintado nessa ordem &lt;i&gt;sem teste de profundidade&lt;/i&gt;: o último pintado prevalece.</numerusform>
@@ -6410,17 +6415,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="394"/>
+        <location filename="../views/painter_view.cpp" line="395"/>
         <source>The frame shown uses the z-buffer; this view renders the scene again as the painter would.</source>
         <translation>O quadro exibido usa o z-buffer; este painel renderiza a cena de novo como o pintor faria.</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="397"/>
+        <location filename="../views/painter_view.cpp" line="398"/>
         <source>Against the z-buffer with the same colours, %1 pixels differ: &lt;span style=&apos;color:#d00000&apos;&gt;%2 where a farther triangle was painted after a nearer one&lt;/span&gt; (the order of whole triangles is not the order of their pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 on edges two triangles share at the same depth&lt;/span&gt; (the z-buffer keeps the first drawn, the painter the last).</source>
         <translation>Comparado ao z-buffer com as mesmas cores, %1 pixels diferem: &lt;span style=&apos;color:#d00000&apos;&gt;%2 onde um triângulo mais distante foi pintado depois de um mais próximo&lt;/span&gt; (a ordem dos triângulos inteiros não é a ordem dos seus pixels), &lt;span style=&apos;color:#b08800&apos;&gt;%3 em arestas que dois triângulos compartilham na mesma profundidade&lt;/span&gt; (o z-buffer mantém o primeiro desenhado, o pintor o último).</translation>
     </message>
     <message>
-        <location filename="../views/painter_view.cpp" line="412"/>
+        <location filename="../views/painter_view.cpp" line="413"/>
         <source>Triangle %1: b = %2, |b| = %3, painted %4 of %5. The z-buffer shows it at %6 pixels; a triangle painted after it covers %7 of them though it is farther there; it covers %8 pixels of nearer triangles painted before it.</source>
         <translation>Triângulo %1: b = %2, |b| = %3, pintado na posição %4 de %5. O z-buffer o mostra em %6 pixels; um triângulo pintado depois dele cobre %7 desses pixels, embora ali esteja mais distante; ele cobre %8 pixels de triângulos mais próximos pintados antes dele.</translation>
     </message>
@@ -6428,52 +6433,52 @@
 <context>
     <name>rasterlab::PixelInspector</name>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="140"/>
+        <location filename="../views/pixel_inspector.cpp" line="170"/>
         <source>%1 = byte 255</source>
         <translation>%1 = byte 255</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="228"/>
+        <location filename="../views/pixel_inspector.cpp" line="261"/>
         <source>no normal</source>
         <translation>sem normal</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="294"/>
+        <location filename="../views/pixel_inspector.cpp" line="327"/>
         <source>in the plane of N and L</source>
         <translation>no plano de N e L</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="329"/>
+        <location filename="../views/pixel_inspector.cpp" line="361"/>
         <source>Step</source>
         <translation>Passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="329"/>
+        <location filename="../views/pixel_inspector.cpp" line="361"/>
         <source>Triangle</source>
         <translation>Triângulo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="329"/>
+        <location filename="../views/pixel_inspector.cpp" line="361"/>
         <source>Depth test</source>
         <translation>Teste de profundidade</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="330"/>
+        <location filename="../views/pixel_inspector.cpp" line="362"/>
         <source>Before</source>
         <translation>Antes</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="330"/>
+        <location filename="../views/pixel_inspector.cpp" line="362"/>
         <source>After</source>
         <translation>Depois</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="330"/>
+        <location filename="../views/pixel_inspector.cpp" line="362"/>
         <source>Result</source>
         <translation>Resultado</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="345"/>
+        <location filename="../views/pixel_inspector.cpp" line="377"/>
         <source>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</source>
         <translation>▶ ocupa o pixel no cursor de passo; as linhas cinza ainda não foram alcançadas. Selecione uma linha para ver sua iluminação.</translation>
     </message>
@@ -6843,123 +6848,123 @@
         <translation>Ke = %1: a luz própria do material</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="465"/>
+        <location filename="../views/pixel_inspector.cpp" line="544"/>
         <source>Your renderer&apos;s colour here: (%1, %2, %3); ours (%4, %5, %6).</source>
         <translation>A cor do seu renderizador aqui: (%1, %2, %3); a nossa (%4, %5, %6).</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="484"/>
+        <location filename="../views/pixel_inspector.cpp" line="563"/>
         <source>No triangle of ours holds this pixel.</source>
         <translation>Nenhum triângulo nosso ocupa este pixel.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="487"/>
+        <location filename="../views/pixel_inspector.cpp" line="566"/>
         <source>The terms are worked out for the course&apos;s lighting in flat or Phong shading only.</source>
         <translation>Os termos são calculados só para a iluminação do curso em sombreamento plano ou Phong.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="492"/>
+        <location filename="../views/pixel_inspector.cpp" line="571"/>
         <source>For your colour, each term alone:</source>
         <translation>Para a sua cor, cada termo sozinho:</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="538"/>
+        <location filename="../views/pixel_inspector.cpp" line="617"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="544"/>
-        <location filename="../views/pixel_inspector.cpp" line="754"/>
+        <location filename="../views/pixel_inspector.cpp" line="623"/>
+        <location filename="../views/pixel_inspector.cpp" line="834"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="552"/>
+        <location filename="../views/pixel_inspector.cpp" line="631"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>ocupa o pixel no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="553"/>
+        <location filename="../views/pixel_inspector.cpp" line="632"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>ainda não alcançado pelo cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="568"/>
+        <location filename="../views/pixel_inspector.cpp" line="647"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="569"/>
+        <location filename="../views/pixel_inspector.cpp" line="648"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Sem o passo a passo, as cores das escritas sobrescritas depois não são guardadas.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="695"/>
+        <location filename="../views/pixel_inspector.cpp" line="775"/>
         <source>Before: %1</source>
         <translation>Antes: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="735"/>
+        <location filename="../views/pixel_inspector.cpp" line="815"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Sem o passo a passo, só a iluminação do fragmento que ocupa o pixel no fim é registrada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="738"/>
+        <location filename="../views/pixel_inspector.cpp" line="818"/>
         <source>The cleared pixel is not lit.</source>
         <translation>O pixel limpo não é iluminado.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="741"/>
+        <location filename="../views/pixel_inspector.cpp" line="821"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>Nenhum fragmento ocupa o pixel no cursor: selecione uma linha do histórico para ver sua iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="753"/>
+        <location filename="../views/pixel_inspector.cpp" line="833"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Iluminação do passo %1, triângulo %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="758"/>
+        <location filename="../views/pixel_inspector.cpp" line="838"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejeitado: esta cor nunca foi escrita)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="771"/>
+        <location filename="../views/pixel_inspector.cpp" line="851"/>
         <source>object colour</source>
         <translation>cor do objeto</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="774"/>
+        <location filename="../views/pixel_inspector.cpp" line="854"/>
         <source>emission</source>
         <translation>emissão</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="776"/>
+        <location filename="../views/pixel_inspector.cpp" line="856"/>
         <source>ambient</source>
         <translation>ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="781"/>
+        <location filename="../views/pixel_inspector.cpp" line="861"/>
         <source>diffuse %1</source>
         <translation>difusa %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="784"/>
+        <location filename="../views/pixel_inspector.cpp" line="864"/>
         <source>specular %1</source>
         <translation>especular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="788"/>
+        <location filename="../views/pixel_inspector.cpp" line="868"/>
         <source>diffuse</source>
         <translation>difusa</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="790"/>
+        <location filename="../views/pixel_inspector.cpp" line="870"/>
         <source>specular</source>
         <translation>especular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="818"/>
+        <location filename="../views/pixel_inspector.cpp" line="896"/>
         <source>No special case: every term applies as written.</source>
         <translation>Nenhum caso especial: todos os termos valem como escritos.</translation>
     </message>
@@ -6967,12 +6972,12 @@
 <context>
     <name>rasterlab::ProjectionCanvas</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="159"/>
+        <location filename="../views/projection_view.cpp" line="161"/>
         <source>Click a triangle to select it; wheel to zoom, drag to pan, double-click to fit.</source>
         <translation>Clique num triângulo para selecioná-lo; roda para o zoom, arraste para deslocar, clique duas vezes para ajustar.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="387"/>
+        <location filename="../views/projection_view.cpp" line="389"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
@@ -6980,37 +6985,37 @@
 <context>
     <name>rasterlab::ProjectionSideView</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="613"/>
+        <location filename="../views/projection_view.cpp" line="615"/>
         <source>view z (= w) →</source>
         <translation>z de vista (= w) →</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="613"/>
+        <location filename="../views/projection_view.cpp" line="615"/>
         <source>clip w →</source>
         <translation>w de recorte →</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="617"/>
+        <location filename="../views/projection_view.cpp" line="619"/>
         <source>y ↑</source>
         <translation>y ↑</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="628"/>
+        <location filename="../views/projection_view.cpp" line="630"/>
         <source>eye plane w = 0: the plain divide clips nothing</source>
         <translation>plano do olho w = 0: a divisão simples não recorta nada</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="629"/>
+        <location filename="../views/projection_view.cpp" line="631"/>
         <source>near plane w = %1</source>
         <translation>plano próximo w = %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="632"/>
+        <location filename="../views/projection_view.cpp" line="634"/>
         <source>the object lies behind the eye (w &lt; 0): N points away from it</source>
         <translation>o objeto está atrás do olho (w &lt; 0): N aponta para longe dele</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="636"/>
+        <location filename="../views/projection_view.cpp" line="638"/>
         <source>● made by clipping: %1</source>
         <translation>● criados pelo recorte: %1</translation>
     </message>
@@ -7018,157 +7023,162 @@
 <context>
     <name>rasterlab::ProjectionView</name>
     <message>
-        <location filename="../views/projection_view.cpp" line="677"/>
+        <location filename="../views/projection_view.cpp" line="679"/>
         <source>NDC</source>
         <translation>NDC</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="678"/>
+        <location filename="../views/projection_view.cpp" line="680"/>
         <source>Show the vertices in normalised device coordinates, [-1, 1]</source>
         <translation>Mostra os vértices em coordenadas normalizadas de dispositivo, [-1, 1]</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="681"/>
+        <location filename="../views/projection_view.cpp" line="683"/>
         <source>Pixels</source>
         <translation>Pixels</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="683"/>
+        <location filename="../views/projection_view.cpp" line="685"/>
         <source>Show the vertices in pixels, snapped as scan conversion receives them</source>
         <translation>Mostra os vértices em pixels, ajustados à grade como a conversão por varredura os recebe</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="692"/>
+        <location filename="../views/projection_view.cpp" line="694"/>
         <source>Fit</source>
         <translation>Ajustar</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="693"/>
+        <location filename="../views/projection_view.cpp" line="695"/>
         <source>Show the whole window and its margin</source>
         <translation>Mostra a janela inteira e sua margem</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="817"/>
+        <location filename="../views/projection_view.cpp" line="820"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="822"/>
+        <location filename="../views/projection_view.cpp" line="825"/>
         <source>inside %1, clipped %2 (%3 on screen), culled %4, back faces %5; behind %6, clipped away %7</source>
         <translation>dentro %1, recortados %2 (%3 na tela), descartados %4, faces traseiras %5; atrás %6, eliminados no recorte %7</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="833"/>
+        <location filename="../views/projection_view.cpp" line="836"/>
         <source>beyond the guard band %1</source>
         <translation>além da banda de guarda %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="835"/>
+        <location filename="../views/projection_view.cpp" line="838"/>
         <source>not finite %1</source>
         <translation>não finitos %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="837"/>
+        <location filename="../views/projection_view.cpp" line="839"/>
+        <source>%1 inside · %2 clipped · %3 culled · %4 behind</source>
+        <translation>%1 dentro · %2 recortados · %3 descartados · %4 atrás</translation>
+    </message>
+    <message>
+        <location filename="../views/projection_view.cpp" line="845"/>
         <source>%1 drawn whole (inside): %2&lt;br&gt;</source>
         <translation>%1 desenhados inteiros (dentro): %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="838"/>
+        <location filename="../views/projection_view.cpp" line="846"/>
         <source>%1 clipped: %2, drawn as %3 fan triangles&lt;br&gt;</source>
         <translation>%1 recortados: %2, desenhados como %3 triângulos em leque&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="842"/>
+        <location filename="../views/projection_view.cpp" line="850"/>
         <source>%1 culled (clockwise on screen): %2; hidden back faces: %3&lt;br&gt;</source>
         <translation>%1 descartados (sentido horário na tela): %2; faces traseiras ocultas: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="846"/>
+        <location filename="../views/projection_view.cpp" line="854"/>
         <source>Nothing on screen: behind the near plane %1; outside a clip plane %2</source>
         <translation>Nada na tela: atrás do plano próximo %1; fora de um plano de recorte %2</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="849"/>
+        <location filename="../views/projection_view.cpp" line="857"/>
         <source>; beyond the guard band %1</source>
         <translation>; além da banda de guarda %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="850"/>
+        <location filename="../views/projection_view.cpp" line="858"/>
         <source>; not finite %1</source>
         <translation>; não finitos %1</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="854"/>
+        <location filename="../views/projection_view.cpp" line="862"/>
         <source>%1 screen triangles go to scan conversion. The plain divide clips nothing (seed 000 as written; seed 001&apos;s HW2): %2 wholly behind the eye, drawn mirrored through the centre; %3 across the eye plane, drawn wrong.</source>
         <translation>%1 triângulos de tela vão para a conversão por varredura. A divisão simples não recorta nada (a seed 000 como escrita; o HW2 da seed 001): %2 inteiramente atrás do olho, desenhados espelhados pelo centro; %3 atravessando o plano do olho, desenhados errados.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="862"/>
+        <location filename="../views/projection_view.cpp" line="870"/>
         <source>%1 screen triangles go to scan conversion; the near plane is w = %2.</source>
         <translation>%1 triângulos de tela vão para a conversão por varredura; o plano próximo é w = %2.</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="867"/>
+        <location filename="../views/projection_view.cpp" line="875"/>
         <source>%1 selected, %2 being drawn</source>
         <translation>%1 selecionado, %2 em desenho</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="889"/>
+        <location filename="../views/projection_view.cpp" line="897"/>
         <source>&lt;p&gt;&lt;b&gt;Projection.&lt;/b&gt; Every vertex goes to clip space, pClip = clipFromView · pView, and is divided by its w without any clipping, as seed 000 writes the formula and seed 001&apos;s HW2 does (&quot;frustum clipping happens here in OpenGL, but we won&apos;t add it&quot;): pNdc = pClip.xy / w. A vertex behind the eye (w &amp;lt; 0) lands mirrored through the centre; a triangle across the eye plane wraps through infinity. Clipping at the near plane (Shading &amp;gt; Projection) draws only what lies in front.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Projeção.&lt;/b&gt; Cada vértice vai para o espaço de recorte, pClip = clipFromView · pView, e é dividido pelo seu w sem recorte algum, como a seed 000 escreve a fórmula e o HW2 da seed 001 faz (&quot;o recorte pelo volume de visão (frustum) acontece aqui no OpenGL, mas não vamos adicioná-lo&quot;): pNdc = pClip.xy / w. Um vértice atrás do olho (w &amp;lt; 0) cai espelhado pelo centro; um triângulo que atravessa o plano do olho dá a volta pelo infinito. O recorte no plano próximo (Sombreamento &amp;gt; Projeção) desenha só o que está à frente.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="896"/>
+        <location filename="../views/projection_view.cpp" line="904"/>
         <source>&lt;p&gt;&lt;b&gt;Projection.&lt;/b&gt; Every vertex goes to clip space, pClip = clipFromView · pView. A triangle crossing the near plane w = near is clipped (Sutherland-Hodgman) and its polygon cut into a fan, so nothing is divided by a w at or behind the camera. Then pNdc = pClip.xy / w, and the pixels are x = (x_ndc + 1) W/2, y = (1 − y_ndc) H/2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Projeção.&lt;/b&gt; Todo vértice vai para o espaço de recorte, pClip = clipFromView · pView. Um triângulo que cruza o plano próximo w = near é recortado (Sutherland-Hodgman) e seu polígono é dividido em leque, de modo que nada é dividido por um w na câmera ou atrás dela. Depois pNdc = pClip.xy / w, e os pixels são x = (x_ndc + 1) W/2, y = (1 − y_ndc) H/2.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="903"/>
+        <location filename="../views/projection_view.cpp" line="911"/>
         <source>&lt;p&gt;For the course camera pClip = ((d/hx) x, (d/hy) y, z, z): x_ndc = (d/hx) x/z, y_ndc = (d/hy) y/z, and the pixel coordinates are truncated.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Para a câmera do curso, pClip = ((d/hx) x, (d/hy) y, z, z): x_ndc = (d/hx) x/z, y_ndc = (d/hy) y/z, e as coordenadas de pixel são truncadas.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="911"/>
+        <location filename="../views/projection_view.cpp" line="919"/>
         <source>&lt;p&gt;Click a triangle to see the numbers of its first vertex.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Clique num triângulo para ver os números do seu primeiro vértice.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="931"/>
+        <location filename="../views/projection_view.cpp" line="939"/>
         <source>&lt;p&gt;&lt;b&gt;Triangle %1&lt;/b&gt; (mesh triangle %2%3), its first vertex, vertex %4:</source>
         <translation>&lt;p&gt;&lt;b&gt;Triângulo %1&lt;/b&gt; (triângulo %2 da malha%3), seu primeiro vértice, o vértice %4:</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="934"/>
+        <location filename="../views/projection_view.cpp" line="942"/>
         <source>, clipped</source>
         <translation>, recortado</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="939"/>
+        <location filename="../views/projection_view.cpp" line="947"/>
         <source>made by clipping, on the edge from vertex %1 to vertex %2 at t = %3</source>
         <translation>criado pelo recorte, na aresta do vértice %1 ao vértice %2, em t = %3</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="964"/>
+        <location filename="../views/projection_view.cpp" line="972"/>
         <source>not snapped</source>
         <translation>sem arredondamento para a grade</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="967"/>
+        <location filename="../views/projection_view.cpp" line="975"/>
         <source>truncated</source>
         <translation>truncado</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="967"/>
+        <location filename="../views/projection_view.cpp" line="975"/>
         <source>rounded</source>
         <translation>arredondado</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="970"/>
+        <location filename="../views/projection_view.cpp" line="978"/>
         <source>truncated to 1/%1 pixel</source>
         <translation>truncado para 1/%1 de pixel</translation>
     </message>
     <message>
-        <location filename="../views/projection_view.cpp" line="971"/>
+        <location filename="../views/projection_view.cpp" line="979"/>
         <source>rounded to 1/%1 pixel</source>
         <translation>arredondado para 1/%1 de pixel</translation>
     </message>
@@ -7176,357 +7186,357 @@
 <context>
     <name>rasterlab::ScanlineView</name>
     <message>
-        <location filename="../views/scanline_view.cpp" line="304"/>
+        <location filename="../views/scanline_view.cpp" line="305"/>
         <source>No triangle to show: step into the frame or pick a pixel.</source>
         <translation>Nenhum triângulo para mostrar: avance pelo quadro ou escolha um pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="257"/>
+        <location filename="../views/scanline_view.cpp" line="258"/>
         <source>long edge</source>
         <translation>aresta longa</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="257"/>
+        <location filename="../views/scanline_view.cpp" line="258"/>
         <source>upper edge</source>
         <translation>aresta superior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="258"/>
+        <location filename="../views/scanline_view.cpp" line="259"/>
         <source>lower edge</source>
         <translation>aresta inferior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="652"/>
+        <location filename="../views/scanline_view.cpp" line="654"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="655"/>
+        <location filename="../views/scanline_view.cpp" line="657"/>
         <source>Start of the frame: step forward to walk the first triangle, or pick a pixel to see the triangle holding it.</source>
         <translation>Início do quadro: avance para percorrer o primeiro triângulo, ou escolha um pixel para ver o triângulo que o ocupa.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="658"/>
+        <location filename="../views/scanline_view.cpp" line="660"/>
         <source>Pick a pixel, or step through the frame, to see a triangle scan converted.</source>
         <translation>Escolha um pixel, ou avance pelo quadro, para ver a conversão por varredura de um triângulo.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="663"/>
+        <location filename="../views/scanline_view.cpp" line="665"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</source>
         <translation>&lt;b&gt;Triângulo %1&lt;/b&gt; de %2</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="666"/>
+        <location filename="../views/scanline_view.cpp" line="668"/>
         <source>scanline %1</source>
         <translation>linha de varredura %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="668"/>
+        <location filename="../views/scanline_view.cpp" line="670"/>
         <source>pixel %1</source>
         <translation>pixel %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="671"/>
+        <location filename="../views/scanline_view.cpp" line="673"/>
         <source>at the stepping cursor</source>
         <translation>no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="672"/>
+        <location filename="../views/scanline_view.cpp" line="674"/>
         <source>the triangle selected (the cursor is at the %1 of the frame)</source>
         <translation>o triângulo selecionado (o cursor está no %1 do quadro)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="673"/>
+        <location filename="../views/scanline_view.cpp" line="675"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="674"/>
+        <location filename="../views/scanline_view.cpp" line="676"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="702"/>
+        <location filename="../views/scanline_view.cpp" line="704"/>
         <source>Vertices sorted by y: top %1, middle %2, bottom %3. The long edge runs from the top to the bottom; the two short edges meet at the middle vertex.</source>
         <translation>Vértices ordenados por y: topo %1, meio %2, base %3. A aresta longa vai do topo à base; as duas arestas curtas se encontram no vértice do meio.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="707"/>
+        <location filename="../views/scanline_view.cpp" line="709"/>
         <source>Its area on the screen is zero: it has no inside and is not scanned.</source>
         <translation>Sua área na tela é zero: ele não tem interior e não é varrido.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="712"/>
+        <location filename="../views/scanline_view.cpp" line="714"/>
         <source>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, so the middle vertex is %2 of the long edge: the long edge bounds the spans on the %3.</source>
         <translation>(s1 &amp;minus; s0) &amp;times; (s2 &amp;minus; s0) = %1, então o vértice do meio fica à %2 da aresta longa: a aresta longa limita os segmentos à %3.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="715"/>
-        <location filename="../views/scanline_view.cpp" line="716"/>
-        <location filename="../views/scanline_view.cpp" line="776"/>
+        <location filename="../views/scanline_view.cpp" line="717"/>
+        <location filename="../views/scanline_view.cpp" line="718"/>
+        <location filename="../views/scanline_view.cpp" line="778"/>
         <source>right</source>
         <translation>direita</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="715"/>
-        <location filename="../views/scanline_view.cpp" line="716"/>
-        <location filename="../views/scanline_view.cpp" line="776"/>
+        <location filename="../views/scanline_view.cpp" line="717"/>
+        <location filename="../views/scanline_view.cpp" line="718"/>
+        <location filename="../views/scanline_view.cpp" line="778"/>
         <source>left</source>
         <translation>esquerda</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="690"/>
+        <location filename="../views/scanline_view.cpp" line="692"/>
         <source>long</source>
         <translation>longa</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="690"/>
+        <location filename="../views/scanline_view.cpp" line="692"/>
         <source>upper</source>
         <translation>superior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="690"/>
+        <location filename="../views/scanline_view.cpp" line="692"/>
         <source>lower</source>
         <translation>inferior</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="763"/>
+        <location filename="../views/scanline_view.cpp" line="765"/>
         <source>from</source>
         <translation>de</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="764"/>
+        <location filename="../views/scanline_view.cpp" line="766"/>
         <source>to</source>
         <translation>até</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="765"/>
+        <location filename="../views/scanline_view.cpp" line="767"/>
         <source>x on its first row</source>
         <translation>x na sua primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="768"/>
+        <location filename="../views/scanline_view.cpp" line="770"/>
         <source>dx/dy</source>
         <translation>dx/dy</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="769"/>
+        <location filename="../views/scanline_view.cpp" line="771"/>
         <source>horizontal</source>
         <translation>horizontal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="771"/>
+        <location filename="../views/scanline_view.cpp" line="773"/>
         <source>rows</source>
         <translation>linhas</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="773"/>
-        <location filename="../views/scanline_view.cpp" line="827"/>
+        <location filename="../views/scanline_view.cpp" line="775"/>
+        <location filename="../views/scanline_view.cpp" line="829"/>
         <source>none</source>
         <translation>nenhuma</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="776"/>
+        <location filename="../views/scanline_view.cpp" line="778"/>
         <source>side</source>
         <translation>lado</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="780"/>
+        <location filename="../views/scanline_view.cpp" line="782"/>
         <source>Only rows %1 to %2 are on the screen: the walk starts and stops there.</source>
         <translation>Só as linhas %1 a %2 estão na tela: o percurso começa e termina ali.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="722"/>
+        <location filename="../views/scanline_view.cpp" line="724"/>
         <source>No row of this triangle is on the screen.</source>
         <translation>Nenhuma linha deste triângulo está na tela.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="266"/>
+        <location filename="../views/scanline_view.cpp" line="267"/>
         <source>your span</source>
         <translation>seu segmento</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="267"/>
+        <location filename="../views/scanline_view.cpp" line="268"/>
         <source>only yours</source>
         <translation>só seus</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="268"/>
+        <location filename="../views/scanline_view.cpp" line="269"/>
         <source>only ours</source>
         <translation>só nossos</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="736"/>
+        <location filename="../views/scanline_view.cpp" line="738"/>
         <source>Here the additions are seed 001&apos;s DDA, in double: an edge that lands a hair below a row in double leaves that row to the triangle above, where an exact walk would find the edge through the row&apos;s samples.</source>
         <translation>Aqui as somas são o DDA da semente 001, em double: uma aresta que fica um fio abaixo de uma linha em double deixa essa linha para o triângulo de cima, onde um percurso exato acharia a aresta passando pelas amostras da linha.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="827"/>
+        <location filename="../views/scanline_view.cpp" line="829"/>
         <source>%1 to %2</source>
         <translation>%1 a %2</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="831"/>
+        <location filename="../views/scanline_view.cpp" line="833"/>
         <source>Your renderer: no pixel on this row (ours: %1).</source>
         <translation>O seu renderizador: nenhum pixel nesta linha (o nosso: %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="836"/>
+        <location filename="../views/scanline_view.cpp" line="838"/>
         <source>Your renderer: pixels %1 to %2 (ours: %3).</source>
         <translation>O seu renderizador: pixels %1 a %2 (o nosso: %3).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="857"/>
+        <location filename="../views/scanline_view.cpp" line="859"/>
         <source>%1(%2) = %3, where the %4 edge crosses its first row</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza sua primeira linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="863"/>
+        <location filename="../views/scanline_view.cpp" line="865"/>
         <source>%1(%2) = %3, where the %4 edge crosses the first row on the screen</source>
         <translation>%1(%2) = %3, onde a aresta %4 cruza a primeira linha na tela</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="871"/>
+        <location filename="../views/scanline_view.cpp" line="873"/>
         <source>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 along the %7 edge</source>
         <translation>%1(%2) = %1(%3) + dx/dy = %4 + %5 = %6 ao longo da aresta %7</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="886"/>
+        <location filename="../views/scanline_view.cpp" line="888"/>
         <source>Scanline y = %1</source>
         <translation>Linha de varredura y = %1</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="888"/>
+        <location filename="../views/scanline_view.cpp" line="890"/>
         <source>(sampled at y = %1)</source>
         <translation>(amostrada em y = %1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="900"/>
+        <location filename="../views/scanline_view.cpp" line="902"/>
         <source>Seed 001&apos;s DDA: x_left and x_right are sums in double, one addition of dx/dy a row, the rounding of each carried along (no snapping). Pixels x = ceil(x_left) = %1 while x &amp;lt; x_right: up to ceil(x_right) &amp;minus; 1 = %2 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>DDA da semente 001: x_left e x_right são somas em double, uma soma de dx/dy por linha, o arredondamento de cada uma levado adiante (sem arredondar os vértices para a grade). Pixels x = ceil(x_left) = %1 enquanto x &amp;lt; x_right: até ceil(x_right) &amp;minus; 1 = %2 (uma amostra exatamente na aresta direita pertence ao triângulo seguinte).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="907"/>
+        <location filename="../views/scanline_view.cpp" line="909"/>
         <source>Top-left rule: the samples with x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 to ceil(x_right%2) &amp;minus; 1 = %4 (a sample exactly on the right edge belongs to the next triangle).</source>
         <translation>Regra top-left: as amostras com x_left &amp;le; x%1 &amp;lt; x_right, pixels ceil(x_left%2) = %3 a ceil(x_right%2) &amp;minus; 1 = %4 (uma amostra exatamente na aresta direita pertence ao triângulo seguinte).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="914"/>
+        <location filename="../views/scanline_view.cpp" line="916"/>
         <source>Inclusive rule: the pixels from ceil(x_left%1) = %2 to floor(x_right%1) = %3, both ends included (a sample exactly on an edge is inside).</source>
         <translation>Regra inclusiva: os pixels de ceil(x_left%1) = %2 a floor(x_right%1) = %3, as duas pontas incluídas (uma amostra exatamente sobre uma aresta está dentro).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="922"/>
+        <location filename="../views/scanline_view.cpp" line="924"/>
         <source>No pixel on this row</source>
         <translation>Nenhum pixel nesta linha</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="923"/>
+        <location filename="../views/scanline_view.cpp" line="925"/>
         <source>the edges cross it between two samples.</source>
         <translation>as arestas a cruzam entre duas amostras.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="924"/>
+        <location filename="../views/scanline_view.cpp" line="926"/>
         <source>they are all off the screen.</source>
         <translation>estão todos fora da tela.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="927"/>
+        <location filename="../views/scanline_view.cpp" line="929"/>
         <source>Span [%1, %2): 1 pixel.</source>
         <translation>Segmento [%1, %2): 1 pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="928"/>
+        <location filename="../views/scanline_view.cpp" line="930"/>
         <source>Span [%1, %2): %3 pixels.</source>
         <translation>Segmento [%1, %2): %3 pixels.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="931"/>
+        <location filename="../views/scanline_view.cpp" line="933"/>
         <source>(cut to the screen&apos;s columns 0 to %1)</source>
         <translation>(cortado às colunas 0 a %1 da tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="934"/>
+        <location filename="../views/scanline_view.cpp" line="936"/>
         <source>The pixel at the cursor is x = %1.</source>
         <translation>O pixel no cursor é x = %1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="982"/>
+        <location filename="../views/scanline_view.cpp" line="984"/>
         <source>At the ends of the span, the barycentrics (&amp;alpha;, &amp;beta;, &amp;gamma;) of the sample with respect to the screen triangle P1 %1, P2 %2, P3 %3 give the depth, from the vertices&apos; z1 = %4, z2 = %5, z3 = %6:</source>
         <translation>Nas pontas do segmento, as coordenadas baricêntricas (&amp;alpha;, &amp;beta;, &amp;gamma;) da amostra em relação ao triângulo de tela P1 %1, P2 %2, P3 %3 dão a profundidade, a partir dos z dos vértices, z1 = %4, z2 = %5, z3 = %6:</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="987"/>
+        <location filename="../views/scanline_view.cpp" line="989"/>
         <source>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (perspective-correct: 1/z is linear on the screen)</source>
         <translation>1/z = 1/z1 + &amp;beta; (1/z2 &amp;minus; 1/z1) + &amp;gamma; (1/z3 &amp;minus; 1/z1) (com correção de perspectiva: 1/z é linear na tela)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="989"/>
+        <location filename="../views/scanline_view.cpp" line="991"/>
         <source>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</source>
         <translation>z = z1 + &amp;beta; (z2 &amp;minus; z1) + &amp;gamma; (z3 &amp;minus; z1)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="952"/>
+        <location filename="../views/scanline_view.cpp" line="954"/>
         <source>depth</source>
         <translation>profundidade</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="952"/>
+        <location filename="../views/scanline_view.cpp" line="954"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="955"/>
+        <location filename="../views/scanline_view.cpp" line="957"/>
         <source>not computed (nothing is lit)</source>
         <translation>não calculada (nada é iluminado)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="956"/>
+        <location filename="../views/scanline_view.cpp" line="958"/>
         <source>zero</source>
         <translation>nula</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="1005"/>
+        <location filename="../views/scanline_view.cpp" line="1007"/>
         <source>Pixel (x, y) is sampled at the point (x, y) itself.</source>
         <translation>O pixel (x, y) é amostrado no próprio ponto (x, y).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="1006"/>
+        <location filename="../views/scanline_view.cpp" line="1008"/>
         <source>Pixel (x, y) is sampled at (x + %1, y + %1).</source>
         <translation>O pixel (x, y) é amostrado em (x + %1, y + %1).</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="1009"/>
+        <location filename="../views/scanline_view.cpp" line="1011"/>
         <source>The normal is N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1) from the vertex normals, normalised%1.</source>
         <translation>A normal é N1 + &amp;beta; (N2 &amp;minus; N1) + &amp;gamma; (N3 &amp;minus; N1), a partir das normais dos vértices, normalizada%1.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="1012"/>
+        <location filename="../views/scanline_view.cpp" line="1014"/>
         <source>, with the barycentrics weighted by 1/w (perspective-correct)</source>
         <translation>, com as coordenadas baricêntricas ponderadas por 1/w (correção de perspectiva)</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="1036"/>
+        <location filename="../views/scanline_view.cpp" line="1038"/>
         <source>Seed 001&apos;s DDA steps the depth and the weights (&amp;beta;, &amp;gamma;) of P2 and P3 as it steps x: down each edge by the edge&apos;s own increment a row, then along the row from their values at x_left by (value at x_right &amp;minus; value at x_left) / (x_right &amp;minus; x_left), one addition a pixel, in double. Every attribute (colour, normal, texture coordinates) is mixed with these weights.</source>
         <translation>O DDA da semente 001 avança a profundidade e os pesos (&amp;beta;, &amp;gamma;) de P2 e P3 como avança x: descendo cada aresta pelo incremento da própria aresta a cada linha, depois ao longo da linha a partir dos seus valores em x_left por (valor em x_right &amp;minus; valor em x_left) / (x_right &amp;minus; x_left), uma soma por pixel, em double. Todo atributo (cor, normal, coordenadas de textura) é misturado com esses pesos.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="1042"/>
+        <location filename="../views/scanline_view.cpp" line="1044"/>
         <source>On this row %1 = %2 at x_left and %3 at x_right: %1 + %4 a pixel; &amp;beta; + %5 and &amp;gamma; + %6 a pixel.</source>
         <translation>Nesta linha %1 = %2 em x_left e %3 em x_right: %1 + %4 por pixel; &amp;beta; + %5 e &amp;gamma; + %6 por pixel.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="1047"/>
+        <location filename="../views/scanline_view.cpp" line="1049"/>
         <source>(%1, %2): %3 = %4 + (%1 &amp;minus; %5) &amp;times; %6 = %7.</source>
         <translation>(%1, %2): %3 = %4 + (%1 &amp;minus; %5) &amp;times; %6 = %7.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="1056"/>
+        <location filename="../views/scanline_view.cpp" line="1058"/>
         <source>(%1, %2): %3 after %4 additions of %5 = %6.</source>
         <translation>(%1, %2): %3 depois de %4 somas de %5 = %6.</translation>
     </message>
     <message>
-        <location filename="../views/scanline_view.cpp" line="730"/>
+        <location filename="../views/scanline_view.cpp" line="732"/>
         <source>Edge walking: from one scanline to the next, each edge&apos;s x changes by its constant dx/dy, one addition per edge and row: x_left(y+1) = x_left(y) + dx/dy. The span between the two crossings is filled; the long edge bounds every row, the upper edge the rows above the middle vertex, the lower edge the rest.</source>
         <translation>Percurso das arestas: de uma linha de varredura à seguinte, o x de cada aresta muda pelo seu dx/dy constante, uma adição por aresta e por linha: x_left(y+1) = x_left(y) + dx/dy. O segmento entre os dois cruzamentos é preenchido; a aresta longa limita todas as linhas, a aresta superior as linhas acima do vértice do meio, a aresta inferior as demais.</translation>
     </message>
@@ -7750,189 +7760,189 @@
 <context>
     <name>rasterlab::TrapezoidView</name>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="101"/>
+        <location filename="../views/trapezoid_view.cpp" line="102"/>
         <source>No triangle to show: step into the frame or pick a pixel.</source>
         <translation>Nenhum triângulo para mostrar: avance pelo quadro ou escolha um pixel.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="253"/>
+        <location filename="../views/trapezoid_view.cpp" line="255"/>
         <source>upper trapezoid</source>
         <translation>trapézio superior</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="254"/>
+        <location filename="../views/trapezoid_view.cpp" line="256"/>
         <source>lower trapezoid</source>
         <translation>trapézio inferior</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="265"/>
+        <location filename="../views/trapezoid_view.cpp" line="267"/>
         <source>scanline j</source>
         <translation>linha de varredura j</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="315"/>
+        <location filename="../views/trapezoid_view.cpp" line="317"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="317"/>
+        <location filename="../views/trapezoid_view.cpp" line="319"/>
         <source>Pick a pixel, or step through the frame, to see a triangle split into trapezoids.</source>
         <translation>Escolha um pixel, ou avance pelo quadro, para ver um triângulo dividido em trapézios.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="323"/>
+        <location filename="../views/trapezoid_view.cpp" line="325"/>
         <source>&lt;b&gt;Triangle %1&lt;/b&gt; of %2</source>
         <translation>&lt;b&gt;Triângulo %1&lt;/b&gt; de %2</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="324"/>
+        <location filename="../views/trapezoid_view.cpp" line="326"/>
         <source>scanline %1</source>
         <translation>linha de varredura %1</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="325"/>
+        <location filename="../views/trapezoid_view.cpp" line="327"/>
         <source>pixel %1</source>
         <translation>pixel %1</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="327"/>
+        <location filename="../views/trapezoid_view.cpp" line="329"/>
         <source>at the stepping cursor</source>
         <translation>no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="327"/>
+        <location filename="../views/trapezoid_view.cpp" line="329"/>
         <source>the triangle selected</source>
         <translation>o triângulo selecionado</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="350"/>
+        <location filename="../views/trapezoid_view.cpp" line="352"/>
         <source>Its area on the screen is zero: it has no inside, no trapezoid, and is not scanned.</source>
         <translation>Sua área na tela é zero: ele não tem interior nem trapézio, e não é varrido.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="358"/>
+        <location filename="../views/trapezoid_view.cpp" line="360"/>
         <source>Vertices sorted by j: top %1, middle %2, bottom %3. The triangle is split at the middle vertex&apos;s row j = %4.</source>
         <translation>Vértices ordenados por j: topo %1, meio %2, base %3. O triângulo é dividido na linha do vértice do meio, j = %4.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="363"/>
+        <location filename="../views/trapezoid_view.cpp" line="365"/>
         <source>The long edge from top to bottom meets that row at s = (%1 &amp;minus; %2) / (%3 &amp;minus; %2) = %4: M&apos; = lerp(s, top, bottom) = %5, %6.</source>
         <translation>A aresta longa, do topo à base, encontra essa linha em s = (%1 &amp;minus; %2) / (%3 &amp;minus; %2) = %4: M&apos; = lerp(s, topo, base) = %5, %6.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="369"/>
+        <location filename="../views/trapezoid_view.cpp" line="371"/>
         <source>Two vertices share a row: the triangle is one trapezoid, two of whose corners are the same vertex.</source>
         <translation>Dois vértices estão na mesma linha: o triângulo é um só trapézio, com dois cantos no mesmo vértice.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="374"/>
+        <location filename="../views/trapezoid_view.cpp" line="376"/>
         <source>Each corner carries the colour Gouraud shading worked out at its vertex, and the depth.</source>
         <translation>Cada canto leva a cor que o sombreamento de Gouraud calculou no seu vértice, e a profundidade.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="380"/>
+        <location filename="../views/trapezoid_view.cpp" line="382"/>
         <source>Each corner carries the depth%1 (colours are carried under Gouraud shading, for a triangle with a pixel on the screen, once the frame&apos;s replay is built).</source>
         <translation>Cada canto leva a profundidade%1 (as cores são levadas no sombreamento de Gouraud, para um triângulo com algum pixel na tela, depois que o passo a passo do quadro estiver preparado).</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="382"/>
+        <location filename="../views/trapezoid_view.cpp" line="384"/>
         <source> as 1/z, which is linear on the screen</source>
         <translation> como 1/z, que é linear na tela</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="387"/>
+        <location filename="../views/trapezoid_view.cpp" line="389"/>
         <source>corner</source>
         <translation>canto</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="390"/>
+        <location filename="../views/trapezoid_view.cpp" line="392"/>
         <source>rows</source>
         <translation>linhas</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="398"/>
-        <location filename="../views/trapezoid_view.cpp" line="427"/>
+        <location filename="../views/trapezoid_view.cpp" line="400"/>
+        <location filename="../views/trapezoid_view.cpp" line="429"/>
         <source>upper</source>
         <translation>superior</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="398"/>
-        <location filename="../views/trapezoid_view.cpp" line="427"/>
+        <location filename="../views/trapezoid_view.cpp" line="400"/>
+        <location filename="../views/trapezoid_view.cpp" line="429"/>
         <source>lower</source>
         <translation>inferior</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="412"/>
+        <location filename="../views/trapezoid_view.cpp" line="414"/>
         <source>none</source>
         <translation>nenhuma</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="425"/>
+        <location filename="../views/trapezoid_view.cpp" line="427"/>
         <source>Scanline j = %1, in the %2 trapezoid</source>
         <translation>Linha de varredura j = %1, no trapézio %2</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="440"/>
+        <location filename="../views/trapezoid_view.cpp" line="442"/>
         <source>No pixel of this row lies between L and R on the screen.</source>
         <translation>Nenhum pixel desta linha fica entre L e R na tela.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="443"/>
+        <location filename="../views/trapezoid_view.cpp" line="445"/>
         <source>Pixels i with L_i &amp;le; i%1 &amp;lt; R_i: %2 to %3.</source>
         <translation>Pixels i com L_i &amp;le; i%1 &amp;lt; R_i: %2 a %3.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="448"/>
+        <location filename="../views/trapezoid_view.cpp" line="450"/>
         <source>Pixels i from ceil(L_i%1) to floor(R_i%1): %2 to %3.</source>
         <translation>Pixels i de ceil(L_i%1) a floor(R_i%1): %2 a %3.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="459"/>
+        <location filename="../views/trapezoid_view.cpp" line="461"/>
         <source>Pixel i = %1</source>
         <translation>Pixel i = %1</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="469"/>
+        <location filename="../views/trapezoid_view.cpp" line="471"/>
         <source>The depth test&apos;s z there: %1 (stepped by seed 001&apos;s DDA in double, then rounded to float).</source>
         <translation>O z do teste de profundidade ali: %1 (avançado pelo DDA da semente 001 em double, depois arredondado para float).</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="473"/>
+        <location filename="../views/trapezoid_view.cpp" line="475"/>
         <source>z = 1 / (1/z) = %1; the depth test&apos;s z there: %2 (from the barycentrics, in float).</source>
         <translation>z = 1 / (1/z) = %1; o z do teste de profundidade ali: %2 (a partir das coordenadas baricêntricas, em float).</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="476"/>
+        <location filename="../views/trapezoid_view.cpp" line="478"/>
         <source>The depth test&apos;s z there: %1 (from the barycentrics, in float).</source>
         <translation>O z do teste de profundidade ali: %1 (a partir das coordenadas baricêntricas, em float).</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="484"/>
+        <location filename="../views/trapezoid_view.cpp" line="486"/>
         <source>The row through the middle vertex belongs to the lower trapezoid only, so no row is scanned twice.</source>
         <translation>A linha que passa pelo vértice do meio pertence só ao trapézio inferior, então nenhuma linha é varrida duas vezes.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="488"/>
+        <location filename="../views/trapezoid_view.cpp" line="490"/>
         <source>Pixel (i, j) is sampled at (i + %1, j + %1): t_j and t_i use those.</source>
         <translation>O pixel (i, j) é amostrado em (i + %1, j + %1): t_j e t_i usam esses valores.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="490"/>
+        <location filename="../views/trapezoid_view.cpp" line="492"/>
         <source>Top-left rule: a sample exactly on the bottom vertex&apos;s row or on R belongs to the next triangle.</source>
         <translation>Regra top-left: uma amostra exatamente na linha do vértice da base ou sobre R pertence ao triângulo seguinte.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="492"/>
+        <location filename="../views/trapezoid_view.cpp" line="494"/>
         <source>Inclusive rule: samples exactly on L, R or the bottom row are inside.</source>
         <translation>Regra inclusiva: as amostras exatamente sobre L, sobre R ou na linha da base estão dentro.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="495"/>
+        <location filename="../views/trapezoid_view.cpp" line="497"/>
         <source>These rules interpolate colours perspective-correctly (weights over w): the lerps of the seed, linear on the screen, are what the course rules do; the rows and pixels are the same either way.</source>
         <translation>Estas regras interpolam as cores com correção de perspectiva (pesos divididos por w): os lerps da semente, lineares na tela, são o que fazem as regras do curso; as linhas e os pixels são os mesmos de todo modo.</translation>
     </message>
     <message>
-        <location filename="../views/trapezoid_view.cpp" line="500"/>
+        <location filename="../views/trapezoid_view.cpp" line="502"/>
         <source>The same rows and pixels as the edge walk (scan conversion view): L_i and R_i are where the scanline crosses the triangle&apos;s edges.</source>
         <translation>As mesmas linhas e pixels do percurso das arestas (painel de conversão por varredura): L_i e R_i são onde a linha de varredura cruza as arestas do triângulo.</translation>
     </message>
@@ -7940,103 +7950,103 @@
 <context>
     <name>rasterlab::VertexTableModel</name>
     <message>
-        <location filename="../views/vertex_table.cpp" line="127"/>
+        <location filename="../views/vertex_table.cpp" line="143"/>
         <source>%1 made by clipping (edge %2-%3, t = %4)</source>
         <translation>%1 criado pelo recorte (aresta %2-%3, t = %4)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="134"/>
+        <location filename="../views/vertex_table.cpp" line="150"/>
         <source>pView = pView(%1) + t (pView(%2) - pView(%1)), on the plane that cut the edge</source>
         <translation>pView = pView(%1) + t (pView(%2) - pView(%1)), no plano que cortou a aresta</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="147"/>
+        <location filename="../views/vertex_table.cpp" line="163"/>
         <source>At or behind the near plane: not projected; the triangles through it are clipped</source>
         <translation>No plano próximo ou atrás dele: não é projetado; os triângulos que passam por ele são recortados</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="150"/>
-        <location filename="../views/vertex_table.cpp" line="154"/>
+        <location filename="../views/vertex_table.cpp" line="166"/>
+        <location filename="../views/vertex_table.cpp" line="170"/>
         <source>behind</source>
         <translation>atrás</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="156"/>
+        <location filename="../views/vertex_table.cpp" line="172"/>
         <source>Exact: %1</source>
         <translation>Exato: %1</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="167"/>
+        <location filename="../views/vertex_table.cpp" line="183"/>
         <source>Mixed along the edge it was made on, as shading does (normalised per pixel)</source>
         <translation>Misturada ao longo da aresta em que o vértice foi criado, como faz o sombreamento (normalizada por pixel)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="183"/>
+        <location filename="../views/vertex_table.cpp" line="206"/>
         <source>Draw</source>
         <translation>Desenho</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="185"/>
+        <location filename="../views/vertex_table.cpp" line="208"/>
         <source>Vertex</source>
         <translation>Vértice</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="187"/>
+        <location filename="../views/vertex_table.cpp" line="210"/>
         <source>World (x, y, z)</source>
         <translation>Mundo (x, y, z)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="189"/>
+        <location filename="../views/vertex_table.cpp" line="212"/>
         <source>View pView</source>
         <translation>Vista pView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="191"/>
+        <location filename="../views/vertex_table.cpp" line="214"/>
         <source>NDC pNdc</source>
         <translation>NDC pNdc</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="193"/>
+        <location filename="../views/vertex_table.cpp" line="216"/>
         <source>Screen pScreen</source>
         <translation>Tela pScreen</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="195"/>
+        <location filename="../views/vertex_table.cpp" line="218"/>
         <source>Normal nView</source>
         <translation>Normal nView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="203"/>
+        <location filename="../views/vertex_table.cpp" line="226"/>
         <source>The draw (object) the vertex belongs to</source>
         <translation>O desenho (objeto) ao qual o vértice pertence</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="205"/>
+        <location filename="../views/vertex_table.cpp" line="228"/>
         <source>The vertex number as in the file (1-based); vertices made by clipping come after the draw&apos;s own</source>
         <translation>O número do vértice como no arquivo (a partir de 1); os vértices criados pelo recorte vêm depois dos do próprio desenho</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="209"/>
+        <location filename="../views/vertex_table.cpp" line="232"/>
         <source>P = worldFromModel · P_model</source>
         <translation>P = worldFromModel · P_model</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="211"/>
+        <location filename="../views/vertex_table.cpp" line="234"/>
         <source>pView = [U; V; N](P − C) for the course camera, or the draw&apos;s view matrix times P_model</source>
         <translation>pView = [U; V; N](P − C) para a câmera do curso, ou a matriz de vista do desenho vezes P_model</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="215"/>
+        <location filename="../views/vertex_table.cpp" line="238"/>
         <source>pNdc = ((d/hx) x/z, (d/hy) y/z) for the course camera, or pClip.xy / pClip.w with pClip = clipFromView · pView</source>
         <translation>pNdc = ((d/hx) x/z, (d/hy) y/z) para a câmera do curso, ou pClip.xy / pClip.w com pClip = clipFromView · pView</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="219"/>
+        <location filename="../views/vertex_table.cpp" line="242"/>
         <source>pScreen = ((x_ndc + 1) w/2, (1 − y_ndc) h/2), truncated (snapped to the rules&apos; grid); the tooltip holds the exact value</source>
         <translation>pScreen = ((x_ndc + 1) w/2, (1 − y_ndc) h/2), truncado (ajustado à grade das regras); a dica mostra o valor exato</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="223"/>
+        <location filename="../views/vertex_table.cpp" line="246"/>
         <source>The view-space vertex normal: the normalised sum of the normals of the triangles around it (stage 3)</source>
         <translation>A normal do vértice no espaço de vista: a soma normalizada das normais dos triângulos ao seu redor (etapa 3)</translation>
     </message>
@@ -8044,142 +8054,142 @@
 <context>
     <name>rasterlab::VertexTableView</name>
     <message>
-        <location filename="../views/vertex_table.cpp" line="258"/>
+        <location filename="../views/vertex_table.cpp" line="281"/>
         <source>Only the selected triangle&apos;s vertices</source>
         <translation>Só os vértices do triângulo selecionado</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="316"/>
+        <location filename="../views/vertex_table.cpp" line="348"/>
         <source>%1 vertices, %2 of them made by clipping</source>
         <translation>%1 vértices, %2 deles criados pelo recorte</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="317"/>
+        <location filename="../views/vertex_table.cpp" line="349"/>
         <source>%1 vertices</source>
         <translation>%1 vértices</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="411"/>
+        <location filename="../views/vertex_table.cpp" line="478"/>
         <source>&lt;p&gt;Select a row, or pick a pixel in the image: its triangle&apos;s three vertices are selected. The numbers of the selected vertex are worked through each formula here.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Selecione uma linha, ou escolha um pixel na imagem: os três vértices do seu triângulo são selecionados. Os números do vértice selecionado são calculados aqui, fórmula por fórmula.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="414"/>
+        <location filename="../views/vertex_table.cpp" line="481"/>
         <source>&lt;p&gt;No frame yet.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Nenhum quadro ainda.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="438"/>
+        <location filename="../views/vertex_table.cpp" line="505"/>
         <source>Vertex %1 of draw %2 (%3)</source>
         <translation>Vértice %1 do desenho %2 (%3)</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="439"/>
+        <location filename="../views/vertex_table.cpp" line="506"/>
         <source>Vertex %1 of %2</source>
         <translation>Vértice %1 de %2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="446"/>
+        <location filename="../views/vertex_table.cpp" line="513"/>
         <source>&lt;p&gt;Made by clipping the edge %1-%2 where it crosses a plane (the near plane or a clip plane), at t = %3:&lt;br&gt;pView = pView&lt;sub&gt;%1&lt;/sub&gt; + t (pView&lt;sub&gt;%2&lt;/sub&gt; − pView&lt;sub&gt;%1&lt;/sub&gt;) = %4 + %3 (%5 − %4) = &lt;b&gt;%6&lt;/b&gt;&lt;br&gt;World: P = %7 (the same interpolation).&lt;/p&gt;</source>
         <translation>&lt;p&gt;Criado ao recortar a aresta %1-%2 onde ela cruza um plano (o plano próximo ou um plano de recorte), em t = %3:&lt;br&gt;pView = pView&lt;sub&gt;%1&lt;/sub&gt; + t (pView&lt;sub&gt;%2&lt;/sub&gt; − pView&lt;sub&gt;%1&lt;/sub&gt;) = %4 + %3 (%5 − %4) = &lt;b&gt;%6&lt;/b&gt;&lt;br&gt;Mundo: P = %7 (a mesma interpolação).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="457"/>
+        <location filename="../views/vertex_table.cpp" line="524"/>
         <source>&lt;p&gt;World: P = M(t) · worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt; (M: the animation matrix at t = %3 s)&lt;/p&gt;</source>
         <translation>&lt;p&gt;Mundo: P = M(t) · worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt; (M: a matriz de animação em t = %3 s)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="462"/>
+        <location filename="../views/vertex_table.cpp" line="529"/>
         <source>&lt;p&gt;World: P = P&lt;sub&gt;model&lt;/sub&gt; = &lt;b&gt;%1&lt;/b&gt; (worldFromModel is the identity)&lt;/p&gt;</source>
         <translation>&lt;p&gt;Mundo: P = P&lt;sub&gt;model&lt;/sub&gt; = &lt;b&gt;%1&lt;/b&gt; (worldFromModel é a identidade)&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="466"/>
+        <location filename="../views/vertex_table.cpp" line="533"/>
         <source>&lt;p&gt;World: P = worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Mundo: P = worldFromModel · %1 = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="472"/>
+        <location filename="../views/vertex_table.cpp" line="539"/>
         <source>&lt;p&gt;View: pView = [U; V; N](P − C), with C = %1:&lt;br&gt;P − C = %2&lt;br&gt;x = U · (P − C) = %3 · %2 = %4&lt;br&gt;y = V · (P − C) = %5 · %2 = %6&lt;br&gt;z = N · (P − C) = %7 · %2 = %8&lt;br&gt;pView = &lt;b&gt;%9&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vista: pView = [U; V; N](P − C), com C = %1:&lt;br&gt;P − C = %2&lt;br&gt;x = U · (P − C) = %3 · %2 = %4&lt;br&gt;y = V · (P − C) = %5 · %2 = %6&lt;br&gt;z = N · (P − C) = %7 · %2 = %8&lt;br&gt;pView = &lt;b&gt;%9&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="480"/>
+        <location filename="../views/vertex_table.cpp" line="547"/>
         <source>&lt;p&gt;View: pView = viewFromModel · P&lt;sub&gt;model&lt;/sub&gt; (the draw&apos;s own view matrix) = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Vista: pView = viewFromModel · P&lt;sub&gt;model&lt;/sub&gt; (a matriz de vista do próprio desenho) = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="488"/>
+        <location filename="../views/vertex_table.cpp" line="555"/>
         <source>&lt;p&gt;z = %1 is not beyond the near plane (w = %2): the vertex is behind, not projected; the triangles through it are clipped there.&lt;/p&gt;</source>
         <translation>&lt;p&gt;z = %1 não está além do plano próximo (w = %2): o vértice está atrás e não é projetado; os triângulos que passam por ele são recortados ali.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="496"/>
+        <location filename="../views/vertex_table.cpp" line="563"/>
         <source>&lt;p&gt;NDC: pNdc = ((d/hx) x/z, (d/hy) y/z) = ((%1/%2) · %3/%4, (%1/%5) · %6/%4) = &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;NDC: pNdc = ((d/hx) x/z, (d/hy) y/z) = ((%1/%2) · %3/%4, (%1/%5) · %6/%4) = &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="501"/>
+        <location filename="../views/vertex_table.cpp" line="568"/>
         <source>&lt;p&gt;Clip: pClip = clipFromView · pView = %1&lt;br&gt;NDC: pNdc = pClip.xy / pClip.w = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Recorte: pClip = clipFromView · pView = %1&lt;br&gt;NDC: pNdc = pClip.xy / pClip.w = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="510"/>
+        <location filename="../views/vertex_table.cpp" line="577"/>
         <source>not snapped</source>
         <translation>sem arredondamento para a grade</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="512"/>
+        <location filename="../views/vertex_table.cpp" line="579"/>
         <source>truncated, as C&apos;s (int) does</source>
         <translation>truncado, como faz o (int) do C</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="514"/>
+        <location filename="../views/vertex_table.cpp" line="581"/>
         <source>truncated to a grid of 1/%1 pixel</source>
         <translation>truncado para uma grade de 1/%1 de pixel</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="516"/>
+        <location filename="../views/vertex_table.cpp" line="583"/>
         <source>rounded to the nearest 1/%1 pixel</source>
         <translation>arredondado para o 1/%1 de pixel mais próximo</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="517"/>
+        <location filename="../views/vertex_table.cpp" line="584"/>
         <source>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</source>
         <translation>(1 − y&lt;sub&gt;ndc&lt;/sub&gt;) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="518"/>
+        <location filename="../views/vertex_table.cpp" line="585"/>
         <source>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</source>
         <translation>(y&lt;sub&gt;ndc&lt;/sub&gt; + 1) h/2</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="524"/>
+        <location filename="../views/vertex_table.cpp" line="591"/>
         <source>&lt;p&gt;Screen: pScreen = (x&lt;sub&gt;ndc&lt;/sub&gt; w/2 + w/2, y&lt;sub&gt;ndc&lt;/sub&gt; h/2 + h/2) = (%1 · %2 + %2, %3 · %4 + %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Tela: pScreen = (x&lt;sub&gt;ndc&lt;/sub&gt; w/2 + w/2, y&lt;sub&gt;ndc&lt;/sub&gt; h/2 + h/2) = (%1 · %2 + %2, %3 · %4 + %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="530"/>
+        <location filename="../views/vertex_table.cpp" line="597"/>
         <source>&lt;p&gt;Screen: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Tela: pScreen = ((x&lt;sub&gt;ndc&lt;/sub&gt; + 1) w/2, %1) = ((%2 + 1) · %3, %4) = %5, %6: &lt;b&gt;%7&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="539"/>
+        <location filename="../views/vertex_table.cpp" line="606"/>
         <source>&lt;p&gt;Normal: mixed along the edge like pView, %1; shading normalises it per pixel.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: misturada ao longo da aresta como pView, %1; o sombreamento a normaliza por pixel.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="543"/>
+        <location filename="../views/vertex_table.cpp" line="610"/>
         <source>&lt;p&gt;Normal: the file&apos;s normal carried to view space by the inverse transpose of viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: a normal do arquivo levada ao espaço de vista pela inversa transposta de viewFromModel: nView = &lt;b&gt;%1&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="550"/>
+        <location filename="../views/vertex_table.cpp" line="617"/>
         <source>&lt;p&gt;Normal: the normalised sum of the normals of the %1 triangles around it: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: a soma normalizada das normais dos %1 triângulos ao seu redor: nView = &lt;b&gt;%2&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../views/vertex_table.cpp" line="556"/>
+        <location filename="../views/vertex_table.cpp" line="623"/>
         <source>&lt;p&gt;Normal: none, %1.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Normal: nenhuma, %1.&lt;/p&gt;</translation>
     </message>
@@ -8187,87 +8197,92 @@
 <context>
     <name>rasterlab::ZBufferView</name>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="161"/>
+        <location filename="../views/zbuffer_view.cpp" line="165"/>
         <source>Automatic range (nearest to farthest drawn)</source>
         <translation>Faixa automática (do mais próximo ao mais distante desenhado)</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="177"/>
-        <source>Grey (near white)</source>
-        <translation>Cinza (perto = branco)</translation>
+        <location filename="../views/zbuffer_view.cpp" line="182"/>
+        <source>Grey</source>
+        <translation>Cinza</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="178"/>
-        <source>False colour (near red, far blue)</source>
-        <translation>Cores falsas (perto vermelho, longe azul)</translation>
+        <location filename="../views/zbuffer_view.cpp" line="183"/>
+        <source>False colour</source>
+        <translation>Cores falsas</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="190"/>
+        <location filename="../views/zbuffer_view.cpp" line="195"/>
         <source>Nearest (white / red):</source>
         <translation>Mais próximo (branco / vermelho):</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="191"/>
+        <location filename="../views/zbuffer_view.cpp" line="196"/>
         <source>Farthest (dark / blue):</source>
         <translation>Mais distante (escuro / azul):</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="192"/>
+        <location filename="../views/zbuffer_view.cpp" line="197"/>
         <source>Colours:</source>
         <translation>Cores:</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="279"/>
+        <location filename="../views/zbuffer_view.cpp" line="326"/>
         <source>+&amp;infin;</source>
         <translation>+&amp;infin;</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="283"/>
+        <location filename="../views/zbuffer_view.cpp" line="330"/>
         <source>the view-space z of P&apos;</source>
         <translation>o z de P&apos; no espaço de vista</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="283"/>
+        <location filename="../views/zbuffer_view.cpp" line="330"/>
         <source>the NDC z</source>
         <translation>o z em NDC</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="291"/>
+        <location filename="../views/zbuffer_view.cpp" line="338"/>
         <source>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</source>
         <translation>&lt;b&gt;Z-buffer.&lt;/b&gt; Todo pixel começa em %1. A profundidade de cada fragmento, %2 (%3), é comparada com a armazenada; ela é escrita, com sua cor, só quando %4. Até agora: %5 fragmentos testados, %6 escritos, %7 rejeitados.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="346"/>
+        <location filename="../views/zbuffer_view.cpp" line="388"/>
+        <source>%1 tested · %2 written · %3 rejected</source>
+        <translation>%1 testados · %2 escritos · %3 rejeitados</translation>
+    </message>
+    <message>
+        <location filename="../views/zbuffer_view.cpp" line="397"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="363"/>
+        <location filename="../views/zbuffer_view.cpp" line="414"/>
         <source>No pixel holds a triangle: the buffer is all clear value.</source>
         <translation>Nenhum pixel contém um triângulo: o buffer inteiro está no valor de limpeza.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="366"/>
+        <location filename="../views/zbuffer_view.cpp" line="421"/>
         <source>Drawn depths from %1 to %2; shown from %3 to %4.</source>
         <translation>Profundidades desenhadas de %1 a %2; exibidas de %3 a %4.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="372"/>
+        <location filename="../views/zbuffer_view.cpp" line="427"/>
         <source>%1 pixels nearer and %2 farther than the range are drawn at its ends.</source>
         <translation>%1 pixels mais próximos e %2 mais distantes que a faixa aparecem nas suas extremidades.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="386"/>
+        <location filename="../views/zbuffer_view.cpp" line="441"/>
         <source>+inf</source>
         <translation>+inf</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="387"/>
+        <location filename="../views/zbuffer_view.cpp" line="442"/>
         <source>x %1, y %2: no triangle; the depth stays at the clear value %3</source>
         <translation>x %1, y %2: nenhum triângulo; a profundidade fica no valor de limpeza %3</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="392"/>
+        <location filename="../views/zbuffer_view.cpp" line="447"/>
         <source>x %1, y %2: depth %3, triangle %4</source>
         <translation>x %1, y %2: profundidade %3, triângulo %4</translation>
     </message>

@@ -18,7 +18,9 @@
 
 #include "pipeline/render/frame_trace.h"
 #include "views/inspection.h"
+#include "views/key_figures.h"
 #include "views/number_text.h"
+#include "views/view_font.h"
 
 namespace rasterlab {
 
@@ -291,7 +293,7 @@ void CameraBasisCanvas::placeLabel(const QFontMetricsF& metrics, const PendingLa
         }
         if (found) break;
     }
-    recordLabel(box);
+    recordLabel(box, text);
     m_placed.append({text, at, box, label.colour});
 }
 
@@ -532,6 +534,9 @@ CameraBasisView::CameraBasisView(Inspection* inspection, QWidget* parent)
     auto* panelLayout = new QVBoxLayout(panel);
     panelLayout->setContentsMargins(4, 4, 4, 0);
     panelLayout->addLayout(controls);
+    m_figures = new KeyFigures(this);
+    m_figures->setParent(panel);
+    panelLayout->addWidget(m_figures);
     panelLayout->addWidget(m_text, 1);
 
     m_splitter = new QSplitter(Qt::Vertical, this);
@@ -585,21 +590,24 @@ void CameraBasisView::showEvent(QShowEvent* event) {
 void CameraBasisView::resizeEvent(QResizeEvent* event) {
     QWidget::resizeEvent(event);
     // Side by side when wide, one above the other when tall (a narrow dock); the drawing
-    // gets 60% when the orientation changes, then whatever the user drags it to.
+    // gets 60% when the orientation changes, then whatever the user drags it to. Side by
+    // side, the steps keep 34 characters a line, up to half the width (a docked view), so
+    // that each step's vectors do not break a number a line.
     const Qt::Orientation orientation = width() > 1.25 * height() ? Qt::Horizontal : Qt::Vertical;
     if (orientation != m_splitter->orientation() || !m_splitterPlaced) {
         m_splitter->setOrientation(orientation);
         const int total = orientation == Qt::Horizontal ? width() : height();
-        m_splitter->setSizes({total * 3 / 5, total - total * 3 / 5});
+        int text = total - total * 3 / 5;
+        if (orientation == Qt::Horizontal)
+            text = std::max(text, std::min(total / 2, fontMetrics().averageCharWidth() * 34));
+        m_splitter->setSizes({total - text, text});
         m_splitterPlaced = true;
     }
 }
 
 void CameraBasisView::applyPresentation() {
     m_canvas->setLineWidth(m_inspection ? m_inspection->lineWidth() : 1.5);
-    QFont f = QWidget::font();
-    f.setPointSizeF(QFont().pointSizeF() * (m_inspection ? m_inspection->textScale(1.35) : 1.0));
-    setFont(f);
+    setFont(scaledFont(parentWidget(), m_inspection ? m_inspection->textScale(1.35) : 1.0));
 }
 
 void CameraBasisView::refresh() {
@@ -611,6 +619,7 @@ void CameraBasisView::refresh() {
     const std::shared_ptr<const rl::FrameTrace> frame =
         m_inspection ? m_inspection->frame() : nullptr;
     m_allSteps.clear();
+    m_allFigures.clear();
     m_residualText.clear();
     m_matrixText.clear();
     m_statusText.clear();
@@ -654,6 +663,16 @@ void CameraBasisView::refresh() {
                           "a lot. Choose a V further from N.")
                            .arg(number(m_conditionRatio, 3), number(kIllConditionedRatio));
 
+    // The key numbers of each step, large: what it starts from and what it makes.
+    m_allFigures = {QStringLiteral("C = %1  N = %2  V = %3")
+                        .arg(vector(camera.c), vector(b.nGiven), vector(b.vGiven)),
+                    QStringLiteral("|N| = %1  N = %2").arg(number(b.nLength), vector(b.n)),
+                    QStringLiteral("V·N = %1  V − (V·N) N = %2")
+                        .arg(number(b.vDotN), vector(b.vOrthogonal)),
+                    QStringLiteral("|V| = %1  V = %2")
+                        .arg(number(b.vOrthogonalLength), vector(b.v)),
+                    QStringLiteral("U = %1  V = %2  N = %3")
+                        .arg(vector(b.u), vector(b.v), vector(b.n))};
     m_allSteps << tr("1. N := N / |N| = %1 / %2 = %3")
                       .arg(vector(b.nGiven), number(b.nLength), vector(b.n))
                << tr("2. V := V − (V·N) N: V·N = %1, (V·N) N = %2, V − (V·N) N = %3")
@@ -743,6 +762,7 @@ void CameraBasisView::showStep() {
     m_back->setEnabled(numbers && m_step > 0);
     m_forward->setEnabled(numbers && m_step < 4);
     m_stepLabel->setText(tr("Step %1 of 4").arg(m_step));
+    m_figures->setText(numbers ? m_allFigures.value(m_step) : QString());
     m_canvas->setStep(m_step);
 
     // One page: why to distrust the numbers, the steps revealed so far (the newest in

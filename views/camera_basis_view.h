@@ -26,6 +26,7 @@ class QToolButton;
 namespace rasterlab {
 
 class Inspection;
+class KeyFigures;
 
 // Below this |V - (V.N) N| / |V|, what is left of V after removing its N part is so small
 // that rounding in V or N turns U and V noticeably: the basis is ill-conditioned.
@@ -193,6 +194,8 @@ private:
     QString m_matrixHtml;
     // The steps, the status, the matrix, the residuals and the explanation, in one page.
     QTextBrowser* m_text = nullptr;
+    KeyFigures* m_figures = nullptr;  // the step's numbers, large
+    QStringList m_allFigures;         // for each step, 0 to 4
 };
 
 }  // namespace rasterlab

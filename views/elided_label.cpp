@@ -73,8 +73,15 @@ void WrappedLabel::changeEvent(QEvent* event) {
 }
 
 void WrappedLabel::fitHeight() {
+    // QLabel::heightForWidth is never below the minimum height: without it for the measure,
+    // or a label made wider would keep the height of its narrower lines.
+    const int before = minimumHeight();
+    setMinimumHeight(0);
     const int height = width() > 0 ? heightForWidth(width()) : 0;
-    if (height <= 0 || height == minimumHeight()) return;
+    if (height <= 0 || height == before) {
+        setMinimumHeight(before);
+        return;
+    }
     setMinimumHeight(height);
     // A splitter above moves its handles for the new minimum only when told.
     for (QWidget* w = parentWidget(); w; w = w->parentWidget())

@@ -8,6 +8,7 @@
 #include "pipeline/stages/scan_conversion.h"
 #include "views/inspection.h"
 #include "views/on_screen.h"
+#include "views/view_font.h"
 
 namespace rasterlab {
 
@@ -71,8 +72,7 @@ bool ExplainedView::setExplanation(QString html) {
 }
 
 void ExplainedView::updateFonts() {
-    QFont font = m_text->font();
-    font.setPointSizeF(m_inspection->presentation() ? 14.0 : QWidget::font().pointSizeF());
+    const QFont font = scaledFont(this, m_inspection->textScale(1.5));
     m_text->setFont(font);
     m_title->setFont(font);
 }

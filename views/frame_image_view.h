@@ -55,7 +55,13 @@ public:
     // The image pixel under a widget position, or (-1, -1) outside the image.
     QPoint pixelAt(const QPointF& widgetPos) const;
 
-    QSize sizeHint() const override { return {800, 600}; }
+    QSize sizeHint() const override { return m_preferredSize; }
+    // The size asked of a layout (800 x 600 unless set): small where the view only takes
+    // the room that others leave.
+    void setPreferredSize(QSize size) {
+        m_preferredSize = size;
+        updateGeometry();
+    }
 
 public slots:
     void fitToWindow();
@@ -100,6 +106,7 @@ private:
     QPointF m_offsetAtDragStart;
     bool m_dragging = false;
     bool m_arrowsMovePick = true;
+    QSize m_preferredSize{800, 600};
 };
 
 }  // namespace rasterlab

@@ -17,6 +17,7 @@
 #include "views/inspection.h"
 #include "views/number_text.h"
 #include "views/painted_labels.h"
+#include "views/view_font.h"
 
 namespace rasterlab {
 
@@ -208,8 +209,9 @@ void NearClipCanvas::paintEvent(QPaintEvent*) {
         return;
     }
     painter.setRenderHint(QPainter::Antialiasing);
-    QFont font = painter.font();
-    font.setPointSizeF(m_presentation ? 12.0 : 8.5);
+    // The view's font (the dock's: larger when presenting or zoomed), a little smaller on
+    // the drawing unless presenting.
+    const QFont font = labelFont(this, m_presentation ? 1.0 : 0.95);
     painter.setFont(font);
     clearLabels();
     const double split = width() * 0.6;

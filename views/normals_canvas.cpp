@@ -14,7 +14,7 @@ namespace rasterlab {
 
 NormalsCanvas::NormalsCanvas(QWidget* parent) : QWidget(parent) {
     setMouseTracking(false);
-    setMinimumSize(160, 120);
+    setMinimumSize(120, 72);  // small: a short dock keeps its switches and the drawing
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
 }
 

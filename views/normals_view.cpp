@@ -4,6 +4,8 @@
 #include <QCheckBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QResizeEvent>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QTabWidget>
 #include <QTextBrowser>
@@ -14,10 +16,11 @@
 #include <numbers>
 
 #include "pipeline/render/animation.h"
-#include "views/elided_label.h"
 #include "views/frame_image_view.h"
 #include "views/inspection.h"
+#include "views/key_figures.h"
 #include "views/number_text.h"
+#include "views/view_font.h"
 #include "views/wrapping_check_box.h"
 
 namespace rasterlab {
@@ -48,7 +51,8 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
         tr("Beside each triangle normal, the model normal carried by viewFromModel itself "
            "instead of its inverse transpose: it leaves the surface under a non-uniform scale "
            "(set one in the Animation panel)"));
-    m_legend = new WrappedLabel(this);
+    // A plain wrapped label: its column's layout gives it the height its lines need.
+    m_legend = new QLabel(this);
     m_legend->setObjectName(QStringLiteral("normalsLegend"));
     m_legend->setWordWrap(true);
     m_legend->setTextFormat(Qt::RichText);
@@ -58,14 +62,10 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
     m_explanation = new QTextBrowser(this);
     m_explanation->setObjectName(QStringLiteral("normalsExplanation"));
 
+    // The drawing alone on its page; its switches head the column of words.
     auto* meshPage = new QWidget(this);
-    // A line each: side by side they made the dock wider than a small screen leaves it, and
-    // a tab page cannot grow for text that wraps.
     auto* meshLayout = new QVBoxLayout(meshPage);
     meshLayout->setContentsMargins(0, 0, 0, 0);
-    meshLayout->setSpacing(2);
-    for (QCheckBox* toggle : {m_triangleHairs, m_vertexHairs, m_onlyVisible, m_wrong})
-        meshLayout->addWidget(toggle);
     meshLayout->addWidget(m_canvas, 1);
     auto* mapPage = new QWidget(this);
     auto* mapLayout = new QVBoxLayout(mapPage);
@@ -80,6 +80,7 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
         this);
     caption->setObjectName(QStringLiteral("normalMapCaption"));
     caption->setWordWrap(true);
+    m_mapView->setPreferredSize(QSize(160, 120));
     mapLayout->addWidget(m_mapView, 1);
     mapLayout->addWidget(m_pixelValue);
     mapLayout->addWidget(caption);
@@ -87,20 +88,43 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
     m_tabs->setObjectName(QStringLiteral("normalsTabs"));
     m_tabs->addTab(meshPage, tr("Mesh and normals"));
     m_tabs->addTab(mapPage, tr("Normal map"));
-    // The legend below the tabs, where it always has the height its lines need.
-    auto* top = new QWidget(this);
-    auto* topLayout = new QVBoxLayout(top);
-    topLayout->setContentsMargins(0, 0, 0, 0);
-    topLayout->addWidget(m_tabs, 1);
-    topLayout->addWidget(m_legend);
+    m_tabs->setUsesScrollButtons(false);  // both titles whole: the tabs are no narrower
+    // The legend and the explanation in a column that scrolls, beside the drawing when the
+    // view is wider than tall, below it otherwise: the drawing keeps the view's height or
+    // width whatever the text's length.
+    auto* words = new QWidget;
+    words->setObjectName(QStringLiteral("normalsWords"));
+    auto* wordsLayout = new QVBoxLayout(words);
+    wordsLayout->setContentsMargins(0, 0, 0, 0);
+    wordsLayout->setSpacing(2);
+    for (QCheckBox* toggle : {m_triangleHairs, m_vertexHairs, m_onlyVisible, m_wrong})
+        wordsLayout->addWidget(toggle);
+    wordsLayout->addSpacing(4);
+    m_figures = new KeyFigures(this);
+    m_figures->setParent(words);
+    wordsLayout->addWidget(m_figures);
+    wordsLayout->addWidget(m_legend);
+    wordsLayout->addWidget(m_explanation, 1);
     m_legend->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Minimum);
-    auto* splitter = new QSplitter(Qt::Vertical, this);
-    splitter->addWidget(top);
-    splitter->addWidget(m_explanation);
-    splitter->setStretchFactor(0, 2);
-    splitter->setStretchFactor(1, 1);
+    m_explanation->setMinimumHeight(m_explanation->fontMetrics().lineSpacing() * 5);
+    auto* wordsScroll = new QScrollArea(this);
+    wordsScroll->setObjectName(QStringLiteral("normalsWordsScroll"));
+    wordsScroll->setFrameShape(QFrame::NoFrame);
+    wordsScroll->setWidgetResizable(true);
+    wordsScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    wordsScroll->setWidget(words);
+    wordsScroll->setMinimumWidth(m_legend->fontMetrics().averageCharWidth() * 18);
+    m_words = wordsScroll;
+    m_splitter = new QSplitter(Qt::Horizontal, this);
+    m_splitter->setObjectName(QStringLiteral("normalsSplitter"));
+    m_splitter->addWidget(m_tabs);
+    m_splitter->addWidget(wordsScroll);
+    m_splitter->setStretchFactor(0, 3);
+    m_splitter->setStretchFactor(1, 2);
+    m_splitter->setChildrenCollapsible(false);
     auto* layout = new QVBoxLayout(this);
-    layout->addWidget(splitter);
+    layout->addWidget(m_splitter);
+    connect(m_splitter, &QSplitter::splitterMoved, this, [this] { m_splitMoved = true; });
 
     const auto hairs = [this] {
         m_canvas->setHairs(m_triangleHairs->isChecked(), m_vertexHairs->isChecked());
@@ -118,7 +142,10 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
     });
     m_canvas->setHairs(true, false);
     connect(m_tabs, &QTabWidget::currentChanged, this, [this] {
-        m_legend->setVisible(!mapShown());  // it describes the mesh tab
+        // The legend and the switches are the mesh tab's.
+        for (QWidget* w : std::initializer_list<QWidget*>{m_legend, m_triangleHairs, m_vertexHairs,
+                                                         m_onlyVisible, m_wrong})
+            w->setVisible(!mapShown());
         if (mapShown() && m_mapDirty) refreshMap();
     });
     connect(m_canvas, &NormalsCanvas::pixelPicked, m_inspection, &Inspection::pickPixel);
@@ -142,12 +169,31 @@ NormalsView::NormalsView(Inspection* inspection, QWidget* parent)
     });
     connect(m_inspection, &Inspection::presentationChanged, this, [this] {
         m_canvas->setLineWidth(m_inspection->lineWidth());
-        QFont f = QApplication::font(this);
-        f.setPointSizeF(f.pointSizeF() * m_inspection->textScale(1.4));
+        const QFont f = scaledFont(this, m_inspection->textScale(1.4));
         m_explanation->setFont(f);
         m_legend->setFont(f);
     });
     m_canvas->setLineWidth(m_inspection->lineWidth());
+}
+
+void NormalsView::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    // Beside the drawing when the view is wider than tall and both fit across it.
+    const int across = m_tabs->minimumSizeHint().width() + m_words->minimumWidth() +
+                       m_splitter->handleWidth() + m_splitter->x() * 2;
+    const Qt::Orientation along =
+        width() >= height() && width() >= across ? Qt::Horizontal : Qt::Vertical;
+    if (m_splitter->orientation() != along) {
+        m_splitter->setOrientation(along);
+        m_splitMoved = false;
+    }
+    // Three fifths for the drawing, along the splitter, until its handle is moved by hand.
+    if (!m_splitMoved) {
+        const int length = (along == Qt::Horizontal ? event->size().width()
+                                                    : event->size().height()) -
+                           m_splitter->handleWidth();
+        m_splitter->setSizes({length * 3 / 5, length - length * 3 / 5});
+    }
 }
 
 void NormalsView::showEvent(QShowEvent* event) {
@@ -333,6 +379,7 @@ void NormalsView::refreshExplanation() {
     const auto& frame = m_inspection->frame();
     if (!frame || !frame->projection) {
         m_explanation->setHtml(tr("<p>No frame yet.</p>"));
+        m_figures->setText(QString());
         return;
     }
     QString html =
@@ -349,6 +396,7 @@ void NormalsView::refreshExplanation() {
                              .toHtmlEscaped());
 
     const std::optional<std::uint32_t> selected = m_inspection->selectedTriangle();
+    QString figures;  // the selected triangle's normal, large
     if (selected && *selected < frame->projection->triangles.size()) {
         const rl::ScreenTriangle& tri = frame->projection->triangles[*selected];
         const rl::Draw& draw = frame->scene->draws[tri.draw];
@@ -369,6 +417,7 @@ void NormalsView::refreshExplanation() {
         if (length > 0.0) {
             const rl::dvec3 n = cross / length;
             const double facing = glm::dot(n, p1);
+            figures = QStringLiteral("n = %1  n · P1 = %2").arg(vector(n, 'f', 4), number(facing, 4));
             html += tr("n = <b>%1</b>; n · P1 = %2: %3</p>")
                         .arg(vector(n, 'f', 4), number(facing, 4),
                              facing > 0.0 ? tr("a back face, drawn in red") : tr("a front face"));
@@ -425,6 +474,12 @@ void NormalsView::refreshExplanation() {
         }
     }
     m_explanation->setHtml(html);
+    const NormalsPicture& p = m_model.picture();
+    if (figures.isEmpty() && !p.normalsSkipped)
+        figures = tr("%1 front faces · %2 back faces")
+                      .arg(p.meshTriangles - p.backFaces)
+                      .arg(p.backFaces);
+    m_figures->setText(figures);
 }
 
 void NormalsView::showPixelValue(QPoint pixel) {

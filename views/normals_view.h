@@ -20,16 +20,18 @@
 #include <memory>
 
 #include "pipeline/render/frame_trace.h"
-#include "views/elided_label.h"
 #include "views/normals_canvas.h"
 #include "views/normals_model.h"
 
 class QCheckBox;
 class QLabel;
+class QSplitter;
 class QTabWidget;
 class QTextBrowser;
 
 namespace rasterlab {
+
+class KeyFigures;
 
 class FrameImageView;
 class Inspection;
@@ -59,6 +61,7 @@ public:
 
 protected:
     void showEvent(QShowEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     void refreshGeometry();
@@ -83,9 +86,13 @@ private:
     QCheckBox* m_vertexHairs = nullptr;
     QCheckBox* m_onlyVisible = nullptr;
     QCheckBox* m_wrong = nullptr;
-    WrappedLabel* m_legend = nullptr;
+    QLabel* m_legend = nullptr;
     QLabel* m_pixelValue = nullptr;
     QTextBrowser* m_explanation = nullptr;
+    KeyFigures* m_figures = nullptr;  // the selected triangle's normal, large
+    QSplitter* m_splitter = nullptr;
+    QWidget* m_words = nullptr;  // the switches, the legend and the explanation
+    bool m_splitMoved = false;  // the splitter's handle moved by hand
 };
 
 }  // namespace rasterlab

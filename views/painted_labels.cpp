@@ -14,7 +14,7 @@ QRectF textBox(const QPainter& painter, QPointF baseline, const QString& text) {
 QRectF PaintedLabels::drawLabel(QPainter& painter, QPointF baseline, const QString& text) {
     painter.drawText(baseline, text);
     const QRectF box = textBox(painter, baseline, text);
-    recordLabel(box);
+    recordLabel(box, text);
     return box;
 }
 
@@ -22,12 +22,14 @@ QRectF PaintedLabels::drawLabel(QPainter& painter, const QRectF& box, int flags,
                                 const QString& text) {
     QRectF covered;
     painter.drawText(box, flags, text, &covered);
-    recordLabel(covered);
+    recordLabel(covered, text);
     return covered;
 }
 
-void PaintedLabels::recordLabel(const QRectF& rect) {
-    if (!rect.isEmpty()) m_rects.append(rect.toRect());
+void PaintedLabels::recordLabel(const QRectF& rect, const QString& text) {
+    if (rect.isEmpty()) return;
+    m_rects.append(rect.toRect());
+    m_texts.append(text);
 }
 
 bool PaintedLabels::isFree(const QRectF& rect, const QRectF& bounds) const {

@@ -10,6 +10,7 @@
 #include <QRect>
 #include <QRectF>
 #include <QString>
+#include <QStringList>
 
 #include <initializer_list>
 #include <span>
@@ -25,15 +26,20 @@ public:
 
     // The rectangles of the text drawn on the last paint.
     QList<QRect> labelRects() const { return m_rects; }
+    // Their texts, in the same order (empty for text recorded without it).
+    QStringList labelTexts() const { return m_texts; }
 
 protected:
-    void clearLabels() { m_rects.clear(); }
+    void clearLabels() {
+        m_rects.clear();
+        m_texts.clear();
+    }
     // Text with its baseline starting at `baseline`; returns the rectangle it covers.
     QRectF drawLabel(QPainter& painter, QPointF baseline, const QString& text);
     // Text in `box` with Qt alignment and wrapping flags; the rectangle it covers.
     QRectF drawLabel(QPainter& painter, const QRectF& box, int flags, const QString& text);
     // Records text drawn some other way (a rich-text layout, a cached picture).
-    void recordLabel(const QRectF& rect);
+    void recordLabel(const QRectF& rect, const QString& text = {});
     // Whether `rect` would cover a label already drawn, or leave `bounds`.
     bool isFree(const QRectF& rect, const QRectF& bounds) const;
     // The first of `offsets` (added to `rect`) that is free within `bounds`; `rect` itself
@@ -43,6 +49,7 @@ protected:
 
 private:
     QList<QRect> m_rects;
+    QStringList m_texts;
 };
 
 // Items of the given widths laid out from `left`, `gap` apart, on a new line wherever the

@@ -18,6 +18,7 @@
 #include "views/messages/pipeline_messages.h"
 #include "views/number_text.h"
 #include "views/on_screen.h"
+#include "views/view_font.h"
 #include "views/wrapping_check_box.h"
 
 namespace rasterlab {
@@ -428,11 +429,18 @@ QString PainterView::explanation() const {
 }
 
 void PainterView::applyPresentation() {
-    QFont font = QWidget::font();
-    font.setPointSizeF(font.pointSizeF() * m_inspection->textScale(1.5));
+    const QFont font = scaledFont(this, m_inspection->textScale(1.5));
     m_explanation->setFont(font);
     m_table->setFont(font);
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
     showSelection();
+}
+
+void PainterView::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    // Another font (the dock's, presentation mode's): the rows as high as its lines.
+    if (event->type() == QEvent::FontChange)
+        QMetaObject::invokeMethod(this, &PainterView::applyPresentation, Qt::QueuedConnection);
 }
 
 }  // namespace rasterlab

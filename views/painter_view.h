@@ -52,6 +52,7 @@ public:
 
 protected:
     void showEvent(QShowEvent* event) override;
+    void changeEvent(QEvent* event) override;
     bool event(QEvent* event) override;  // kRaisedEvent (on_screen.h)
 
 private:

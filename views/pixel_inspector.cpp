@@ -6,7 +6,9 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QGridLayout>
 #include <QPainter>
+#include <QResizeEvent>
 #include <QPixmap>
 #include <QRegularExpression>
 #include <QSignalBlocker>
@@ -28,6 +30,7 @@
 #include "views/pixel_history.h"
 #include "views/pixel_text.h"
 #include "views/their_colour.h"
+#include "views/view_font.h"
 
 namespace rasterlab {
 
@@ -48,10 +51,12 @@ QPixmap swatch(const std::array<std::uint8_t, 4>& b, int size) {
 
 }  // namespace
 
-// Three stacked bars, one per channel: the terms side by side from 0, the colour scale (the
-// value that becomes byte 255) marked by a line, the total written at the bar's end.
-// The legend's names wrap onto more lines when the bars are narrow (beside the vectors in a
-// narrow dock), the bars' height growing with them.
+// Three stacked bars, one per channel: the terms side by side from 0, each term's value
+// written below its part of the bar (14  141.113  177.534: ambient, diffuse, specular), the
+// colour scale (the value that becomes byte 255) marked by a line, the total written at the
+// bar's end. The text is the widget's font, so it grows with the dock's. The legend's names
+// wrap onto more lines when the bars are narrow (beside the vectors in a narrow dock), the
+// bars' height growing with them.
 class TermBars : public QWidget, public PaintedLabels {
 public:
     struct Segment {
@@ -64,11 +69,10 @@ public:
         setMinimumSize(140, 120);
         setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     }
-    void setBars(std::vector<Segment> segments, rl::vec3 total, float scale, bool presentation) {
+    void setBars(std::vector<Segment> segments, rl::vec3 total, float scale) {
         m_segments = std::move(segments);
         m_total = total;
         m_scale = scale;
-        m_presentation = presentation;
         fitHeight();
         update();
     }
@@ -79,13 +83,17 @@ protected:
         QWidget::resizeEvent(event);
         fitHeight();
     }
+    void changeEvent(QEvent* event) override {
+        QWidget::changeEvent(event);
+        if (event->type() == QEvent::FontChange) fitHeight();
+    }
 
     void paintEvent(QPaintEvent*) override {
         QPainter painter(this);
         painter.fillRect(rect(), kBackground);
         clearLabels();
         if (m_segments.empty()) return;
-        const QFont f = barFont();
+        const QFont f = font();
         painter.setFont(f);
         const QFontMetrics metrics(f);
         const double line = metrics.height();
@@ -103,18 +111,34 @@ protected:
         const std::array<QColor, 3> channelColours{QColor(255, 110, 110), QColor(110, 220, 110),
                                                    QColor(120, 160, 255)};
         std::array<QPointF, 3> totalsAt;  // where each channel's total is written
+        struct Value {
+            QString text;
+            QColor colour;
+            QPointF baseline;
+        };
+        std::vector<Value> values;  // the terms' values, written once the scale is drawn
         for (int c = 0; c < 3; ++c) {
-            const double y = top + c * (barHeight + 6);
+            const double y = top + c * rowHeight(line);
             painter.setPen(channelColours[static_cast<std::size_t>(c)]);
             drawLabel(painter, QRectF(0, y, left - 4, barHeight), Qt::AlignRight | Qt::AlignVCenter,
                       channelNames()[static_cast<std::size_t>(c)]);
             double x = left;
+            double labelX = left;  // where the next term's value may start, below the bar
             for (const Segment& s : m_segments) {
                 const double w = std::max(0.0f, s.value[c]) * unit;
                 if (w <= 0.0) continue;
                 painter.fillRect(QRectF(x, y, w, barHeight), s.colour);
                 painter.setPen(QColor(20, 20, 20));
                 painter.drawLine(QPointF(x + w, y), QPointF(x + w, y + barHeight));
+                // The term's value under the start of its part of the bar, after the last.
+                const QString value = num(s.value[c]);
+                const double at = std::max(x, labelX);
+                // In the term's colour, lightened where it is dark on the background.
+                const QColor colour = s.colour.lightness() < 140 ? s.colour.lighter(150) : s.colour;
+                values.push_back({value, colour,
+                                  QPointF(at, y + barHeight + 1 + metrics.ascent())});
+                labelX = at + metrics.horizontalAdvance(value) + metrics.horizontalAdvance(
+                                                                     QStringLiteral("  "));
                 x += w;
             }
             totalsAt[static_cast<std::size_t>(c)] = QPointF(x + 4, y);
@@ -122,9 +146,15 @@ protected:
         // The colour scale: what reaches it or goes beyond becomes byte 255. The totals go
         // over it on the background's colour, so that the line never crosses their digits.
         const double scaleX = left + double(m_scale) * unit;
-        const double bottom = top + 3 * (barHeight + 6) - 6;
+        const double bottom = top + 3 * rowHeight(line) - 6;
         painter.setPen(QPen(QColor(255, 255, 255), 1.0, Qt::DashLine));
         painter.drawLine(QPointF(scaleX, top - 3), QPointF(scaleX, bottom + 3));
+        for (const Value& v : values) {
+            painter.fillRect(textBox(painter, v.baseline, v.text).adjusted(-2, -1, 2, 1),
+                             kBackground);
+            painter.setPen(v.colour);
+            drawLabel(painter, v.baseline, v.text);
+        }
         painter.setPen(QColor(230, 230, 230));
         for (int c = 0; c < 3; ++c) {
             const QString total = num(m_total[c], 4);
@@ -155,11 +185,8 @@ protected:
 private:
     static constexpr QColor kBackground{32, 32, 36};
 
-    QFont barFont() const {
-        QFont f = font();
-        f.setPointSizeF(m_presentation ? 12.0 : 8.0);
-        return f;
-    }
+    // A channel's bar, the line of its terms' values below it, and the gap to the next.
+    static double rowHeight(double line) { return line * 1.2 + 1 + line + 8; }
 
     // Each legend entry's top left: after the one before, or at the start of a new line.
     std::vector<std::pair<const Segment*, QPointF>> legendPlaces(const QFontMetrics& metrics,
@@ -178,9 +205,9 @@ private:
 
     // Room for the bars, and below them for the legend's lines at this width.
     void fitHeight() {
-        const QFontMetrics metrics(barFont());
+        const QFontMetrics metrics(font());
         const double line = metrics.height();
-        const double legendTop = line + 6 + 3 * (line * 1.2 + 6) - 6 + 8;
+        const double legendTop = line + 6 + 3 * rowHeight(line) - 6 + 8;
         const auto places = legendPlaces(metrics, legendTop);
         const double bottom = places.empty() ? legendTop + line : places.back().second.y() + line;
         const int height = std::max(int(std::ceil(bottom)) + 4, int(line * 6 + 20));
@@ -190,7 +217,6 @@ private:
     std::vector<Segment> m_segments;
     rl::vec3 m_total = rl::vec3(0.0f);
     float m_scale = 255.0f;
-    bool m_presentation = false;
 };
 
 // N, L, V and R (or H) from the surface point, drawn in the plane of incidence (the plane
@@ -199,26 +225,33 @@ private:
 // more than a little).
 class LightingVectors : public QWidget, public PaintedLabels {
 public:
-    explicit LightingVectors(QWidget* parent) : QWidget(parent) { setFixedSize(180, 160); }
+    explicit LightingVectors(QWidget* parent) : QWidget(parent) { fitSize(); }
     void setVectors(std::optional<std::array<rl::vec3, 4>> vectors, QString reflectionName,
-                    double lineWidth, bool presentation) {
+                    double lineWidth) {
         m_vectors = vectors;
         m_reflection = std::move(reflectionName);
         m_lineWidth = lineWidth;
-        m_presentation = presentation;
-        setFixedSize(presentation ? QSize(250, 220) : QSize(180, 160));
         update();
     }
 
 protected:
+    void changeEvent(QEvent* event) override {
+        QWidget::changeEvent(event);
+        if (event->type() == QEvent::FontChange) fitSize();
+    }
+    // The drawing grows with its labels' font: 12 by 11 lines.
+    void fitSize() {
+        const int line = fontMetrics().height();
+        setFixedSize(std::max(180, line * 12), std::max(160, line * 11));
+    }
+
     void paintEvent(QPaintEvent*) override {
         QPainter painter(this);
         painter.fillRect(rect(), QColor(32, 32, 36));
         clearLabels();
         if (!m_vectors) return;
         const auto& [n, l, v, r] = *m_vectors;
-        QFont f = painter.font();
-        f.setPointSizeF(m_presentation ? 12.0 : 8.0);
+        const QFont f = font();
         painter.setFont(f);
         const QFontMetrics metrics(f);
         painter.setRenderHint(QPainter::Antialiasing);
@@ -313,7 +346,6 @@ private:
     std::optional<std::array<rl::vec3, 4>> m_vectors;
     QString m_reflection;
     double m_lineWidth = 1.5;
-    bool m_presentation = false;
 };
 
 PixelInspector::PixelInspector(Inspection* inspection, QWidget* parent)
@@ -364,19 +396,30 @@ PixelInspector::PixelInspector(Inspection* inspection, QWidget* parent)
     m_flags->setWordWrap(true);
     m_flags->setTextFormat(Qt::RichText);
 
-    auto* pictures = new QHBoxLayout;
+    m_pictures = new QWidget(this);
+    m_pictures->setObjectName(QStringLiteral("pixelPictures"));
+    m_bars->setParent(m_pictures);
+    m_vectors->setParent(m_pictures);
+    auto* pictures = new QHBoxLayout(m_pictures);
+    pictures->setContentsMargins(0, 0, 0, 0);
     pictures->addWidget(m_bars, 1);
     pictures->addWidget(m_vectors, 0, Qt::AlignTop);
-    auto* layout = new QVBoxLayout(this);
-    layout->addWidget(m_verdictLabel);
-    layout->addWidget(m_table);
-    layout->addWidget(m_legend);
-    layout->addWidget(m_breakdownTitle);
-    layout->addLayout(pictures);
-    layout->addWidget(m_formula);
-    layout->addWidget(m_flags);
-    layout->addStretch(1);
-
+    // The history (verdict, table, legend) and the lighting (title, pictures, formula), each
+    // a column of its own, one above the other or side by side in a grid (arrange()).
+    m_historyBox = new QWidget(this);
+    m_historyLayout = new QVBoxLayout(m_historyBox);
+    m_historyLayout->setContentsMargins(0, 0, 0, 0);
+    for (QWidget* w : std::initializer_list<QWidget*>{m_verdictLabel, m_table, m_legend})
+        m_historyLayout->addWidget(w);
+    m_historyLayout->addStretch(1);
+    m_lightingBox = new QWidget(this);
+    m_lightingLayout = new QVBoxLayout(m_lightingBox);
+    m_lightingLayout->setContentsMargins(0, 0, 0, 0);
+    for (QWidget* w : std::initializer_list<QWidget*>{m_breakdownTitle, m_pictures, m_formula})
+        m_lightingLayout->addWidget(w);
+    m_lightingLayout->addStretch(1);
+    m_grid = new QGridLayout(this);
+    arrange();
     const auto follow = [this] {
         if (isVisible()) refresh();
     };
@@ -394,30 +437,84 @@ PixelInspector::PixelInspector(Inspection* inspection, QWidget* parent)
 
 void PixelInspector::showEvent(QShowEvent* event) {
     QWidget::showEvent(event);
+    arrange();
     refresh();
+}
+
+void PixelInspector::arrange() {
+    // The room it is shown in: a scroll area's viewport (a dock) makes it as tall as its
+    // column needs, so its own height says nothing. Side by side from 1.4 times as wide as
+    // tall, where both columns have a docked inspector's width.
+    QWidget* room = parentWidget();
+    if (room != m_room) {
+        if (m_room) m_room->removeEventFilter(this);
+        m_room = room;
+        if (m_room) m_room->installEventFilter(this);
+    }
+    const QSize size = room ? room->size() : this->size();
+    const bool beside = size.width() >= 1.4 * size.height() && size.width() >= 2 * 380;
+    if (m_grid->count() > 0 && beside == m_beside) {
+        widenHistory();
+        return;
+    }
+    m_beside = beside;
+    // The flags close the history's column side by side, the lighting's in one column.
+    m_historyLayout->removeWidget(m_flags);
+    m_lightingLayout->removeWidget(m_flags);
+    (beside ? m_historyLayout : m_lightingLayout)->insertWidget(3, m_flags);
+    m_grid->removeWidget(m_historyBox);
+    m_grid->removeWidget(m_lightingBox);
+    for (int r = 0; r < m_grid->rowCount(); ++r) m_grid->setRowStretch(r, 0);
+    for (int c = 0; c < m_grid->columnCount(); ++c) m_grid->setColumnStretch(c, 0);
+    m_grid->addWidget(m_historyBox, 0, 0);
+    m_grid->addWidget(m_lightingBox, beside ? 0 : 1, beside ? 1 : 0);
+    m_grid->setColumnStretch(0, 1);
+    if (beside) m_grid->setColumnStretch(1, 1);
+    const int row = beside ? 1 : 2;
+    // What is left of the height below the last row.
+    m_grid->setRowStretch(row, 1);
+    widenHistory();
+}
+
+void PixelInspector::widenHistory() {
+    // Side by side, the history's columns whole when that leaves the lighting 38 % of the
+    // width; one column, no minimum.
+    const QWidget* room = m_room ? m_room.data() : this;
+    const int width = m_beside ? std::min(m_wholeTableWidth, room->width() * 62 / 100) : 0;
+    m_grid->setColumnMinimumWidth(0, width);
+}
+
+void PixelInspector::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    arrange();
 }
 
 void PixelInspector::changeEvent(QEvent* event) {
     QWidget::changeEvent(event);
     // Another font (presentation mode): the table's height is worked out again once the
     // header has taken it.
-    if (event->type() == QEvent::FontChange)
+    if (event->type() == QEvent::FontChange) {
+        followFont();
         QMetaObject::invokeMethod(this, &PixelInspector::fitTableHeight, Qt::QueuedConnection);
+    }
 }
 
 void PixelInspector::applyPresentation() {
-    // Larger text when presenting, for the whole inspector.
+    // Larger text when presenting on its own; in the window, the dock's font (which the
+    // window enlarges itself), whatever its size.
     m_presenting = m_inspection->presentation();
-    QFont base = QApplication::font(this);
-    base.setPointSizeF(base.pointSizeF() * m_inspection->textScale(1.4));
-    setFont(base);
-    m_table->setFont(base);
-    QFont bold = base;
+    setFont(scaledFont(parentWidget(), m_inspection->textScale(1.4)));
+    followFont();
+}
+
+void PixelInspector::followFont() {
+    // Only the weight set: the size follows the inspector's font.
+    QFont bold;
     bold.setBold(true);
     m_verdictLabel->setFont(bold);
     m_breakdownTitle->setFont(bold);
     QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
-    mono.setPointSizeF(base.pointSizeF());
+    mono.setPointSizeF(font().pointSizeF());
     m_formula->setFont(mono);
 }
 
@@ -590,6 +687,7 @@ bool PixelInspector::eventFilter(QObject* watched, QEvent* event) {
     // resize comes before).
     if (watched == m_table->viewport() && event->type() == QEvent::Resize)
         QMetaObject::invokeMethod(this, &PixelInspector::fitColumns, Qt::QueuedConnection);
+    if (watched == m_room && event->type() == QEvent::Resize) arrange();
     return QWidget::eventFilter(watched, event);
 }
 
@@ -671,6 +769,13 @@ void PixelInspector::fitColumns() {
     const bool before = sum(least, true) <= room;
     if (!before && sum(least, false) > room) least = fewest;
     m_table->setColumnHidden(kBefore, !before);
+    // Beside the lighting, the history asks for the width of every column whole.
+    const int wholeTable = sum(whole, true) + 2 * m_table->frameWidth() +
+                           m_table->verticalScrollBar()->sizeHint().width();
+    if (wholeTable != m_wholeTableWidth) {
+        m_wholeTableWidth = wholeTable;
+        widenHistory();
+    }
     const int wholeSum = sum(whole, before), leastSum = sum(least, before);
     const double shrink = wholeSum <= room   ? 0.0
                           : leastSum >= room ? 1.0
@@ -790,8 +895,7 @@ void PixelInspector::showBreakdown() {
                 segments.push_back({tr("specular"), QColor(235, 235, 190), b.specular});
         }
     }
-    m_bars->setBars(std::move(segments), b.colour, frame.scene->conventions.colourScale,
-                    m_presenting);
+    m_bars->setBars(std::move(segments), b.colour, frame.scene->conventions.colourScale);
     m_bars->setVisible(true);
     const bool vectors =
         b.event.model != rl::ShadingModel::Gouraud && b.lighting != rl::LightingModel::Unlit;
@@ -802,8 +906,7 @@ void PixelInspector::showBreakdown() {
         const bool half = b.lighting != rl::LightingModel::CoursePhong ||
                           draw.specular == rl::SpecularModel::BlinnPhong;
         m_vectors->setVectors(std::array<rl::vec3, 4>{s.n, s.l, s.v, s.r},
-                              half ? QStringLiteral("H") : QStringLiteral("R"), lineWidth,
-                              m_presenting);
+                              half ? QStringLiteral("H") : QStringLiteral("R"), lineWidth);
     }
     m_vectors->setVisible(vectors);
     m_formula->setText(formulaText());

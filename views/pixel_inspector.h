@@ -12,6 +12,7 @@
 #pragma once
 
 #include <QImage>
+#include <QPointer>
 #include <QString>
 #include <QStringList>
 #include <QWidget>
@@ -27,6 +28,8 @@
 #include "views/lighting_breakdown.h"
 #include "views/pixel_history.h"
 
+class QGridLayout;
+class QVBoxLayout;
 class QLabel;
 class QTableWidget;
 
@@ -63,12 +66,16 @@ public:
 
 protected:
     void showEvent(QShowEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
     void changeEvent(QEvent* event) override;
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void refresh();
-    void applyPresentation();  // the fonts, larger when presenting
+    void applyPresentation();  // the fonts, larger when presenting on its own
+    void followFont();
+    void arrange();
+    void widenHistory();  // the history's column as wide as its table asks, side by side  // the history and the lighting side by side, or one above the other         // the bold and fixed-width parts at the inspector's size
     void updateBreakdown();
     void fillTable();
     void fitColumns();
@@ -97,6 +104,15 @@ private:
     QLabel* m_legend = nullptr;
     QLabel* m_breakdownTitle = nullptr;
     TermBars* m_bars = nullptr;
+    QGridLayout* m_grid = nullptr;
+    QWidget* m_pictures = nullptr;  // the bars and the vectors
+    QWidget* m_historyBox = nullptr;
+    QWidget* m_lightingBox = nullptr;
+    QVBoxLayout* m_historyLayout = nullptr;
+    QVBoxLayout* m_lightingLayout = nullptr;
+    bool m_beside = false;          // the history and the lighting side by side
+    int m_wholeTableWidth = 0;      // the history's table with every column whole
+    QPointer<QWidget> m_room;  // the widget it is shown in, watched for its size
     LightingVectors* m_vectors = nullptr;
     QLabel* m_formula = nullptr;
     QLabel* m_flags = nullptr;

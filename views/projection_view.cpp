@@ -20,7 +20,9 @@
 
 #include "views/elided_label.h"
 #include "views/inspection.h"
+#include "views/key_figures.h"
 #include "views/number_text.h"
+#include "views/view_font.h"
 
 namespace rasterlab {
 
@@ -692,6 +694,7 @@ ProjectionView::ProjectionView(Inspection* inspection, QWidget* parent)
     fitButton->setText(tr("Fit"));
     fitButton->setToolTip(tr("Show the whole window and its margin"));
 
+    m_figures = new KeyFigures(this);
     m_legend = new WrappedLabel(this);
     m_legend->setObjectName(QStringLiteral("projectionLegend"));
     m_legend->setWordWrap(true);
@@ -720,6 +723,7 @@ ProjectionView::ProjectionView(Inspection* inspection, QWidget* parent)
     auto* panel = new QWidget;
     auto* panelLayout = new QVBoxLayout(panel);
     panelLayout->setContentsMargins(4, 4, 4, 0);
+    panelLayout->addWidget(m_figures);
     panelLayout->addWidget(m_legend);
     panelLayout->addWidget(m_explanation, 1);
 
@@ -796,9 +800,7 @@ void ProjectionView::applyPresentation() {
     const double width = m_inspection ? m_inspection->lineWidth() : 1.5;
     m_canvas->setLineWidth(width);
     m_side->setLineWidth(width);
-    QFont f = QWidget::font();
-    f.setPointSizeF(QFont().pointSizeF() * (m_inspection ? m_inspection->textScale(1.35) : 1.0));
-    setFont(f);
+    setFont(scaledFont(parentWidget(), m_inspection ? m_inspection->textScale(1.35) : 1.0));
 }
 
 void ProjectionView::refresh() {
@@ -814,6 +816,7 @@ void ProjectionView::refresh() {
     m_counts = m_frame ? countFates(*m_frame->projection) : FateCounts{};
     if (!m_frame) {
         m_legendText.clear();
+        m_figures->setText(QString());
         m_legend->setText(tr("No frame yet."));
         refreshSelection();
         return;
@@ -833,6 +836,11 @@ void ProjectionView::refresh() {
             QStringLiteral(", ") + tr("beyond the guard band %1").arg(c.beyondGuardBand);
     if (c.nonFinite > 0)
         m_legendText += QStringLiteral(", ") + tr("not finite %1").arg(c.nonFinite);
+    m_figures->setText(tr("%1 inside · %2 clipped · %3 culled · %4 behind")
+                           .arg(c.inside)
+                           .arg(c.clipped)
+                           .arg(c.culled + c.backFaces)
+                           .arg(c.behind));
 
     QString html = tr("%1 drawn whole (inside): %2<br>").arg(swatch(kDrawnColour)).arg(c.inside);
     html += tr("%1 clipped: %2, drawn as %3 fan triangles<br>")

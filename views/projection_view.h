@@ -32,6 +32,8 @@ class QToolButton;
 
 namespace rasterlab {
 
+class KeyFigures;
+
 class Inspection;
 
 // What the wireframe's coordinates are: NDC as the projection divides (pNdc), or the pixels
@@ -194,6 +196,7 @@ private:
     bool m_dirty = true;
     FateCounts m_counts;
     QString m_legendText, m_explanationHtml;
+    KeyFigures* m_figures = nullptr;  // the fates' counts, large
 
     QSplitter* m_splitter = nullptr;
     bool m_splitterPlaced = false;

@@ -20,6 +20,7 @@
 #include "views/inspection.h"
 #include "views/number_text.h"
 #include "views/painted_labels.h"
+#include "views/view_font.h"
 
 namespace rasterlab {
 
@@ -305,8 +306,9 @@ void ScanlineCanvas::paintEvent(QPaintEvent*) {
         return;
     }
     painter.setRenderHint(QPainter::Antialiasing);
-    QFont font = painter.font();
-    font.setPointSizeF(m_presentation ? 12.0 : 8.0);
+    // The view's font (the dock's: larger when presenting or zoomed), a little smaller on
+    // the drawing unless presenting.
+    const QFont font = labelFont(this, m_presentation ? 1.0 : 0.95);
     painter.setFont(font);
     const QFontMetrics metrics(font);
     const int cols = m_window.width(), rows = m_window.height();

@@ -12,6 +12,7 @@
 #include "views/inspection.h"
 #include "views/near_clip_view.h"
 #include "views/number_text.h"
+#include "views/view_font.h"
 
 namespace rasterlab {
 
@@ -103,8 +104,9 @@ void TrapezoidCanvas::paintEvent(QPaintEvent*) {
         return;
     }
     painter.setRenderHint(QPainter::Antialiasing);
-    QFont font = painter.font();
-    font.setPointSizeF(m_presentation ? 12.0 : 8.5);
+    // The view's font (the dock's: larger when presenting or zoomed), a little smaller on
+    // the drawing unless presenting.
+    const QFont font = labelFont(this, m_presentation ? 1.0 : 0.95);
     painter.setFont(font);
     const QFontMetrics metrics(font);
     const TrapezoidModel& m = *m_model;

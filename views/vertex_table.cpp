@@ -6,6 +6,7 @@
 #include <QHeaderView>
 #include <QItemSelection>
 #include <QLabel>
+#include <QScrollBar>
 #include <QSortFilterProxyModel>
 #include <QSplitter>
 #include <QTableView>
@@ -18,6 +19,7 @@
 
 #include "pipeline/stages/shading.h"
 #include "views/number_text.h"
+#include "views/view_font.h"
 #include "views/wrapping_check_box.h"
 
 namespace rasterlab {
@@ -108,6 +110,20 @@ std::optional<rl::vec3> VertexTableModel::normalOf(VertexRef vertex) const {
                               m_frame->projection->draws[vertex.draw], vertex.vertex);
 }
 
+void VertexTableModel::setStacked(bool on) {
+    if (on == m_stacked) return;
+    m_stacked = on;
+    emit headerDataChanged(Qt::Horizontal, 0, ColumnCount - 1);
+    if (rowCount() > 0) emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1));
+}
+
+QString VertexTableModel::shown(const QString& vectorText, int role) const {
+    // "(x, y, z)" as x, y and z on three lines.
+    if (!m_stacked || role != Qt::DisplayRole || !vectorText.startsWith(QLatin1Char('(')))
+        return vectorText;
+    return vectorText.mid(1, vectorText.size() - 2).split(QStringLiteral(", ")).join(QLatin1Char('\n'));
+}
+
 QVariant VertexTableModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || !m_frame || index.row() >= rowCount()) return {};
     if (role != Qt::DisplayRole && role != Qt::ToolTipRole) return {};
@@ -138,9 +154,9 @@ QVariant VertexTableModel::data(const QModelIndex& index, int role) const {
             return text;
         }
         case World:
-            return vector(worldOf(ref));
+            return shown(vector(worldOf(ref)), role);
         case View:
-            return vector(rl::cartesian(proj.pView[v]));
+            return shown(vector(rl::cartesian(proj.pView[v])), role);
         case Ndc:
             if (!inFront) {
                 if (role == Qt::ToolTipRole)
@@ -149,12 +165,12 @@ QVariant VertexTableModel::data(const QModelIndex& index, int role) const {
                         "through it are clipped");
                 return tr("behind");
             }
-            return vector(proj.pNdc[v], 'f', 4);
+            return shown(vector(proj.pNdc[v], 'f', 4), role);
         case Screen:
             if (!inFront) return role == Qt::ToolTipRole ? QVariant() : QVariant(tr("behind"));
             if (role == Qt::ToolTipRole)
                 return tr("Exact: %1").arg(vector(proj.pScreenExact[v], 'g', 10));
-            return vector(proj.pScreen[v], 'g', 10);
+            return shown(vector(proj.pScreen[v], 'g', 10), role);
         case Normal: {
             const std::optional<rl::vec3> n = normalOf(ref);
             if (!n) {
@@ -167,7 +183,7 @@ QVariant VertexTableModel::data(const QModelIndex& index, int role) const {
                 return tr(
                     "Mixed along the edge it was made on, as shading does (normalised "
                     "per pixel)");
-            return vector(*n, 'f', 4);
+            return shown(vector(*n, 'f', 4), role);
         }
         default:
             return {};
@@ -177,7 +193,14 @@ QVariant VertexTableModel::data(const QModelIndex& index, int role) const {
 QVariant VertexTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
     if (orientation != Qt::Horizontal)
         return QAbstractTableModel::headerData(section, orientation, role);
-    if (role == Qt::DisplayRole) {
+    if (role == Qt::DisplayRole && m_stacked) {
+        // The name above its symbol.
+        QString title = headerData(section, orientation, Qt::UserRole).toString();
+        if (const qsizetype space = title.indexOf(QLatin1Char(' ')); space > 0)
+            title[space] = QLatin1Char('\n');
+        return title;
+    }
+    if (role == Qt::DisplayRole || role == Qt::UserRole) {
         switch (section) {
             case Draw:
                 return tr("Draw");
@@ -301,6 +324,15 @@ void VertexTableView::showEvent(QShowEvent* event) {
     followSelection();
 }
 
+void VertexTableView::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    // Another font (the dock's, presentation mode's): the rows and columns measured again,
+    // once the table has taken it.
+    if (event->type() == QEvent::FontChange)
+        QMetaObject::invokeMethod(this, &VertexTableView::applyPresentation,
+                                  Qt::QueuedConnection);
+}
+
 void VertexTableView::refreshFrame() {
     m_dirty = false;
     const auto& frame = m_inspection->frame();
@@ -319,19 +351,54 @@ void VertexTableView::refreshFrame() {
 }
 
 void VertexTableView::fitColumns() {
+    // One draw: its number is 1 on every row.
+    const auto& frame = m_model->frame();
+    m_table->setColumnHidden(VertexTableModel::Draw,
+                             frame && frame->scene && frame->scene->draws.size() <= 1);
+    // On one line when every column fits across the table, else each vector on three lines
+    // (a dock): every column in view, none scrolled out sideways.
+    m_table->horizontalHeader()->setStretchLastSection(false);  // measured as the others
+    m_model->setStacked(false);
+    // The room across, less a vertical scroll bar, shown or about to be.
+    const int across = m_table->width() - 2 * m_table->frameWidth() -
+                       m_table->verticalScrollBar()->sizeHint().width();
+    if (measureColumns() > across) {
+        m_model->setStacked(true);
+        measureColumns();
+    }
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    const int lines = m_model->stacked() ? 3 : 1;
+    m_table->verticalHeader()->setDefaultSectionSize(lines * m_table->fontMetrics().height() + 6);
+}
+
+int VertexTableView::measureColumns() {
     // The widths of a few rows, but at least those of wide values (negative, hundreds), so
     // that rows further down are not cut short.
     m_table->resizeColumnsToContents();
     const QFontMetrics metrics(m_table->font());
-    const auto atLeast = [&](int column, const QString& widest) {
-        const int w = metrics.horizontalAdvance(widest) + 16;
+    const bool stacked = m_model->stacked();
+    const auto atLeast = [&](int column, const QString& line, const QString& widest) {
+        const int w = metrics.horizontalAdvance(stacked ? widest : line) + 10;
         if (m_table->columnWidth(column) < w) m_table->setColumnWidth(column, w);
     };
-    atLeast(VertexTableModel::World, QStringLiteral("(-000.000, -000.000, -000.000)"));
-    atLeast(VertexTableModel::View, QStringLiteral("(-000.000, -000.000, -000.000)"));
-    atLeast(VertexTableModel::Ndc, QStringLiteral("(-0.0000, -0.0000)"));
-    atLeast(VertexTableModel::Screen, QStringLiteral("(0000, 0000)"));
-    atLeast(VertexTableModel::Normal, QStringLiteral("(-0.0000, -0.0000, -0.0000)"));
+    atLeast(VertexTableModel::World, QStringLiteral("(-000.000, -000.000, -000.000)"),
+            QStringLiteral("-000.000"));
+    atLeast(VertexTableModel::View, QStringLiteral("(-000.000, -000.000, -000.000)"),
+            QStringLiteral("-000.000"));
+    atLeast(VertexTableModel::Ndc, QStringLiteral("(-0.0000, -0.0000)"), QStringLiteral("-0.0000"));
+    atLeast(VertexTableModel::Screen, QStringLiteral("(0000, 0000)"), QStringLiteral("0000"));
+    atLeast(VertexTableModel::Normal, QStringLiteral("(-0.0000, -0.0000, -0.0000)"),
+            QStringLiteral("-0.0000"));
+    int sum = 0;
+    for (int c = 0; c < VertexTableModel::ColumnCount; ++c)
+        if (!m_table->isColumnHidden(c)) sum += m_table->columnWidth(c);
+    return sum;
+}
+
+void VertexTableView::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    // After the layout has given the table its new width.
+    QMetaObject::invokeMethod(this, &VertexTableView::fitColumns, Qt::QueuedConnection);
 }
 
 int VertexTableView::visibleRowCount() const {
@@ -562,11 +629,9 @@ QString VertexTableView::explanationHtml(VertexRef ref) const {
 }
 
 void VertexTableView::applyPresentation() {
-    QFont tableFont = QApplication::font(this);
-    tableFont.setPointSizeF(tableFont.pointSizeF() * m_inspection->textScale(1.4));
+    const QFont tableFont = scaledFont(this, m_inspection->textScale(1.4));
     m_table->setFont(tableFont);
     m_explanation->setFont(tableFont);
-    m_table->verticalHeader()->setDefaultSectionSize(QFontMetrics(tableFont).height() + 6);
     fitColumns();
 }
 

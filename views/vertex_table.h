@@ -41,6 +41,10 @@ public:
     QVariant headerData(int section, Qt::Orientation orientation,
                         int role = Qt::DisplayRole) const override;
 
+    // Vectors written one component a line, and the titles on two lines, for a narrow table.
+    void setStacked(bool on);
+    bool stacked() const { return m_stacked; }
+
     // Rows and vertices, both ways: -1 for a vertex the frame does not have.
     int rowOf(VertexRef vertex) const;
     VertexRef vertexAt(int row) const;  // row in [0, rowCount())
@@ -53,10 +57,12 @@ public:
     std::optional<rl::vec3> normalOf(VertexRef vertex) const;
 
 private:
+    QString shown(const QString& vectorText, int role) const;
     rl::dvec4 worldHomogeneous(std::uint32_t draw, std::uint32_t vertex) const;
 
     std::shared_ptr<const rl::FrameTrace> m_frame;
     std::vector<int> m_firstRow;  // per draw, then the total
+    bool m_stacked = false;
 };
 
 class VertexTableView : public QWidget {
@@ -77,6 +83,8 @@ public:
 
 protected:
     void showEvent(QShowEvent* event) override;
+    void changeEvent(QEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     void refreshFrame();
@@ -86,6 +94,7 @@ private:
     QString explanationHtml(VertexRef vertex) const;
     void applyPresentation();
     void fitColumns();
+    int measureColumns();  // the columns' widths for the model's layout, and their sum
 
     Inspection* m_inspection = nullptr;
     VertexTableModel* m_model = nullptr;

@@ -8,6 +8,9 @@
 #include <QLabel>
 #include <QLocale>
 #include <QPainter>
+#include <QResizeEvent>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
@@ -17,6 +20,7 @@
 #include <limits>
 
 #include "views/frame_image_view.h"
+#include "views/key_figures.h"
 #include "views/on_screen.h"
 #include "views/wrapping_check_box.h"
 
@@ -174,8 +178,9 @@ ZBufferView::ZBufferView(QWidget* parent) : QWidget(parent) {
     }
     m_paletteBox = new QComboBox(this);
     m_paletteBox->setObjectName(QStringLiteral("zbufferPalette"));
-    m_paletteBox->addItem(tr("Grey (near white)"));
-    m_paletteBox->addItem(tr("False colour (near red, far blue)"));
+    // Short names: the rows above them say which colour is near and which far.
+    m_paletteBox->addItem(tr("Grey"));
+    m_paletteBox->addItem(tr("False colour"));
     m_rangeLabel = new QLabel(this);
     m_rangeLabel->setObjectName(QStringLiteral("zbufferRangeLabel"));
     m_rangeLabel->setWordWrap(true);
@@ -194,14 +199,34 @@ ZBufferView::ZBufferView(QWidget* parent) : QWidget(parent) {
     m_explanation->setObjectName(QStringLiteral("zbufferExplanation"));
     m_explanation->setWordWrap(true);
     m_explanation->setTextFormat(Qt::RichText);
-    auto* layout = new QVBoxLayout(this);
-    layout->addWidget(m_explanation);
-    layout->addWidget(m_view, 1);
-    layout->addWidget(m_histogramWidget);
-    layout->addWidget(m_rangeLabel);
-    layout->addWidget(m_automatic);  // outside the form, where its text can wrap
-    layout->addLayout(form);
-    layout->addWidget(m_valueLabel);
+    // The words and controls in a column of their own that scrolls, so that the image is
+    // always fitted whole to what is left of the view, however small the dock.
+    auto* panel = new QWidget;
+    panel->setObjectName(QStringLiteral("zbufferPanel"));
+    auto* panelLayout = new QVBoxLayout(panel);
+    panelLayout->setContentsMargins(0, 0, 0, 0);
+    m_figures = new KeyFigures(this);
+    m_figures->setParent(panel);
+    panelLayout->addWidget(m_figures);
+    panelLayout->addWidget(m_explanation);
+    panelLayout->addWidget(m_histogramWidget);
+    panelLayout->addWidget(m_rangeLabel);
+    panelLayout->addWidget(m_automatic);  // outside the form, where its text can wrap
+    panelLayout->addLayout(form);
+    panelLayout->addWidget(m_valueLabel);
+    panelLayout->addStretch(1);
+    m_panel = new QScrollArea(this);
+    m_panel->setObjectName(QStringLiteral("zbufferPanelScroll"));
+    m_panel->setFrameShape(QFrame::NoFrame);
+    m_panel->setWidgetResizable(true);
+    m_panel->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_panel->setWidget(panel);
+    m_view->setPreferredSize(QSize(160, 120));
+    m_view->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+    m_layout = new QBoxLayout(QBoxLayout::LeftToRight, this);
+    m_layout->addWidget(m_view, 3);
+    m_layout->addWidget(m_panel, 2);
+    arrange();
 
     connect(m_automatic, &QCheckBox::toggled, this, &ZBufferView::setAutomaticRange);
     const auto manual = [this] {
@@ -252,6 +277,28 @@ void ZBufferView::refreshWhenShown() {
         refresh();
     else
         m_stale = true;
+}
+
+void ZBufferView::arrange() {
+    // Wider than tall (a dock, the window filled, the lecture layout): the column beside the
+    // image; taller: below it. The image takes three fifths either way.
+    const bool beside = width() >= height();
+    m_layout->setDirection(beside ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom);
+    // The column as wide as its widest control (larger text, another language): it scrolls
+    // up and down, never sideways.
+    m_panel->setMinimumWidth(m_panel->widget()->minimumSizeHint().width() +
+                             m_panel->verticalScrollBar()->sizeHint().width());
+}
+
+void ZBufferView::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange || event->type() == QEvent::LanguageChange)
+        arrange();
+}
+
+void ZBufferView::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    arrange();
 }
 
 void ZBufferView::showEvent(QShowEvent* event) {
@@ -338,6 +385,10 @@ void ZBufferView::setPalette(DepthPalette palette) {
 void ZBufferView::refresh() {
     m_stale = false;
     m_explanation->setText(explanation());
+    m_figures->setText(tr("%1 tested · %2 written · %3 rejected")
+                           .arg(m_tested)
+                           .arg(m_written)
+                           .arg(m_tested - std::min(m_tested, m_written)));
     if (!m_frame || !m_frame->depth) {
         m_image = QImage();
         m_histogram = DepthHistogram{};
@@ -363,6 +414,10 @@ void ZBufferView::refresh() {
         m_rangeLabel->setText(tr("No pixel holds a triangle: the buffer is all clear value."));
         return;
     }
+    m_figures->setText(m_figures->text() + QLatin1Char('\n') +
+                       QStringLiteral("z %1 … %2")
+                           .arg(double(drawn.nearest), 0, 'g', 6)
+                           .arg(double(drawn.farthest), 0, 'g', 6));
     QString text = tr("Drawn depths from %1 to %2; shown from %3 to %4.")
                        .arg(double(drawn.nearest), 0, 'g', 6)
                        .arg(double(drawn.farthest), 0, 'g', 6)

@@ -18,9 +18,13 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QBoxLayout;
 class QLabel;
+class QScrollArea;
 
 namespace rasterlab {
+
+class KeyFigures;
 
 class FrameImageView;
 
@@ -96,9 +100,12 @@ public:
 
 protected:
     void showEvent(QShowEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+    void changeEvent(QEvent* event) override;
     bool event(QEvent* event) override;  // kRaisedEvent (on_screen.h)
 
 private:
+    void arrange();  // the words beside the image or below it, by the view's shape
     void refresh();
     void refreshWhenShown();
     void showValue(QPoint pixel);
@@ -122,6 +129,9 @@ private:
     QComboBox* m_paletteBox = nullptr;
     QLabel* m_rangeLabel = nullptr;
     QLabel* m_valueLabel = nullptr;
+    KeyFigures* m_figures = nullptr;  // the fragments' counts and the depths, large
+    QScrollArea* m_panel = nullptr;
+    QBoxLayout* m_layout = nullptr;
 };
 
 }  // namespace rasterlab
