@@ -485,17 +485,25 @@ Result<std::optional<MistakeFrame>> frameWithMistakes(const OurFrame& ours,
     return Optional(out);
 }
 
-Result<std::optional<Rgba8Image>> imageOnFrame(const OurFrame& ours, const MistakeFrame& mframe,
-                                               const std::vector<Slip>& slips) {
-    using Optional = std::optional<Rgba8Image>;
-    const Scene& scene = *ours.trace->scene;
-    const FrameTrace& frame = *mframe.trace;
-    Conventions conv = scene.conventions;
-    const bool coursePhong = anyLit(scene, LightingModel::CoursePhong);
-    Formulas f;
-    bool bytes = false, wrap = false;
+namespace {
+
+// How a frame's colours become bytes under the colour slips, and the formulas the lighting slips
+// change. Empty when a slip asked cannot show in this scene (nothing of it to render).
+struct ColourSlips {
+    Formulas formulas;
+    Conventions conv;
+    bool bytes = false;  // the bytes are made again (rounding, wrap, offset or scale)
+    bool wrap = false;
     int offset = 0;
     float scale = 1.0f;
+};
+
+std::optional<ColourSlips> colourSlipsOf(const OurFrame& ours, const std::vector<Slip>& slips) {
+    const Scene& scene = *ours.trace->scene;
+    const bool coursePhong = anyLit(scene, LightingModel::CoursePhong);
+    ColourSlips c;
+    c.conv = scene.conventions;
+    Formulas& f = c.formulas;
     for (const Slip& slip : slips) {
         switch (slip.mistake) {
             case Mistake::AmbientTimesOd:
@@ -505,7 +513,7 @@ Result<std::optional<Rgba8Image>> imageOnFrame(const OurFrame& ours, const Mista
             case Mistake::ViewVectorReversed:
             case Mistake::TermsTruncated:
             case Mistake::EpsilonSpecialCases:
-                if (!coursePhong) return Optional();
+                if (!coursePhong) return std::nullopt;
                 f.ambientTimesOd |= slip.mistake == Mistake::AmbientTimesOd;
                 f.ambientIaOnly |= slip.mistake == Mistake::AmbientIaOnly;
                 f.specularRv |= slip.mistake == Mistake::SpecularWhereRvNegative;
@@ -517,45 +525,94 @@ Result<std::optional<Rgba8Image>> imageOnFrame(const OurFrame& ours, const Mista
                     f.small = static_cast<float>(slip.amount);
                 break;
             case Mistake::NormalNotFlipped:
-                if (!conv.flipNormalsTowardViewer) return Optional();
+                if (!c.conv.flipNormalsTowardViewer) return std::nullopt;
                 f.noFlip = true;
                 break;
             case Mistake::NormalNotNormalised:
-                if (!anyDraw(scene, ShadingModel::Phong)) return Optional();
+                if (!anyDraw(scene, ShadingModel::Phong)) return std::nullopt;
                 f.unnormalised = true;
                 break;
             case Mistake::VertexNormalsUnnormalised:
             case Mistake::AreaWeightedNormals:
             case Mistake::NormalsSharedByPosition:
                 if (!anyDraw(scene, ShadingModel::Phong) && !anyDraw(scene, ShadingModel::Gouraud))
-                    return Optional();
+                    return std::nullopt;
                 if (slip.mistake == Mistake::NormalsSharedByPosition && !sharesPositions(scene))
-                    return Optional();
+                    return std::nullopt;
                 break;
             case Mistake::ByteRounding:
-                conv.rounding = conv.rounding == ByteRounding::Truncate ? ByteRounding::Nearest
-                                                                        : ByteRounding::Truncate;
-                bytes = true;
+                c.conv.rounding = c.conv.rounding == ByteRounding::Truncate ? ByteRounding::Nearest
+                                                                            : ByteRounding::Truncate;
+                c.bytes = true;
                 break;
             case Mistake::ColourWrap:
                 if (ours.trace->shading->clampedPixels == 0 && !slipOf(slips, Mistake::ColourScale))
-                    return Optional();
-                wrap = bytes = true;
+                    return std::nullopt;
+                c.wrap = c.bytes = true;
                 break;
             case Mistake::ColourOffset:
-                offset = static_cast<int>(std::lround(slip.amount));
-                if (offset == 0) return Optional();
-                bytes = true;
+                c.offset = static_cast<int>(std::lround(slip.amount));
+                if (c.offset == 0) return std::nullopt;
+                c.bytes = true;
                 break;
             case Mistake::ColourScale:
-                scale = static_cast<float>(slip.amount);
-                if (!(scale > 0.0f) || scale == 1.0f) return Optional();
-                bytes = true;
+                c.scale = static_cast<float>(slip.amount);
+                if (!(c.scale > 0.0f) || c.scale == 1.0f) return std::nullopt;
+                c.bytes = true;
                 break;
             default:
                 break;
         }
     }
+    return c;
+}
+
+// The covered pixels' colours made bytes as the slips say; the rest the background.
+Rgba8Image bytesOf(const Image<vec3>& colours, const DepthTest& depth, const ColourSlips& c,
+                   Bytes background) {
+    Rgba8Image out;
+    out.width = depth.triangle.width();
+    out.height = depth.triangle.height();
+    out.rgba.resize(std::size_t(out.width) * out.height * 4);
+    for (int y = 0; y < out.height; ++y) {
+        for (int x = 0; x < out.width; ++x) {
+            Bytes b = background;
+            if (depth.triangle.at(x, y) != kNoTriangle) {
+                const vec3 v = colours.at(x, y) * c.scale;
+                b = c.wrap ? Bytes{wrappedByte(v.r, c.conv), wrappedByte(v.g, c.conv),
+                                   wrappedByte(v.b, c.conv), 255}
+                           : colourBytes(v, c.conv);
+                for (int k = 0; k < 3; ++k) b[k] = std::uint8_t(std::clamp(b[k] + c.offset, 0, 255));
+            }
+            std::copy(b.begin(), b.end(), out.rgba.data() + (std::size_t(y) * out.width + x) * 4);
+        }
+    }
+    return out;
+}
+
+// Another background on the uncovered pixels, another alpha on the covered ones.
+void paintBackgroundAndAlpha(Rgba8Image& out, const DepthTest& depth, const Slip* bg,
+                             const Slip* alpha) {
+    for (int y = 0; y < out.height; ++y) {
+        for (int x = 0; x < out.width; ++x) {
+            std::uint8_t* p = out.rgba.data() + (std::size_t(y) * out.width + x) * 4;
+            const bool covered = depth.triangle.at(x, y) != kNoTriangle;
+            if (!covered && bg) std::copy(bg->value.begin(), bg->value.end(), p);
+            if (covered && alpha) p[3] = alpha->value[3];
+        }
+    }
+}
+
+}  // namespace
+
+Result<std::optional<Rgba8Image>> imageOnFrame(const OurFrame& ours, const MistakeFrame& mframe,
+                                               const std::vector<Slip>& slips) {
+    using Optional = std::optional<Rgba8Image>;
+    const Scene& scene = *ours.trace->scene;
+    const FrameTrace& frame = *mframe.trace;
+    std::optional<ColourSlips> colour = colourSlipsOf(ours, slips);
+    if (!colour) return Optional();
+    Formulas& f = colour->formulas;
     StudentNormals normals;
     normals.leftUnnormalised = slipOf(slips, Mistake::VertexNormalsUnnormalised) != nullptr;
     normals.areaWeighted = slipOf(slips, Mistake::AreaWeightedNormals) != nullptr;
@@ -566,41 +623,16 @@ Result<std::optional<Rgba8Image>> imageOnFrame(const OurFrame& ours, const Mista
     const DepthTest& depth = *frame.depth;
     const bool reshaded = f.any() || mframe.painted;
     Rgba8Image out;
-    if (!reshaded && !bytes) {
+    if (reshaded)
+        out = bytesOf(reshade(frame, *mframe.asked, f), depth, *colour, background);
+    else if (colour->bytes)
+        out = bytesOf(frame.shading->colour, depth, *colour, background);
+    else
         out = colourImage(*frame.shading, depth, scene.conventions);
-    } else {
-        const Image<vec3> shaded = reshaded ? reshade(frame, *mframe.asked, f) : Image<vec3>();
-        const Image<vec3>& colours = reshaded ? shaded : frame.shading->colour;
-        out.width = scene.width;
-        out.height = scene.height;
-        out.rgba.resize(std::size_t(out.width) * out.height * 4);
-        for (int y = 0; y < out.height; ++y) {
-            for (int x = 0; x < out.width; ++x) {
-                Bytes b = background;
-                if (depth.triangle.at(x, y) != kNoTriangle) {
-                    const vec3 c = colours.at(x, y) * scale;
-                    b = wrap ? Bytes{wrappedByte(c.r, conv), wrappedByte(c.g, conv),
-                                     wrappedByte(c.b, conv), 255}
-                             : colourBytes(c, conv);
-                    for (int k = 0; k < 3; ++k) b[k] = std::uint8_t(std::clamp(b[k] + offset, 0, 255));
-                }
-                std::copy(b.begin(), b.end(), out.rgba.data() + (std::size_t(y) * out.width + x) * 4);
-            }
-        }
-    }
     const Slip* bg = slipOf(slips, Mistake::Background);
     const Slip* alpha = slipOf(slips, Mistake::Alpha);
     if ((bg && bg->value == background) || (alpha && alpha->value[3] == 255)) return Optional();
-    if (bg || alpha) {
-        for (int y = 0; y < out.height; ++y) {
-            for (int x = 0; x < out.width; ++x) {
-                std::uint8_t* p = out.rgba.data() + (std::size_t(y) * out.width + x) * 4;
-                const bool covered = depth.triangle.at(x, y) != kNoTriangle;
-                if (!covered && bg) std::copy(bg->value.begin(), bg->value.end(), p);
-                if (covered && alpha) p[3] = alpha->value[3];
-            }
-        }
-    }
+    if (bg || alpha) paintBackgroundAndAlpha(out, depth, bg, alpha);
     const Bytes fill = bg ? bg->value : background;
     for (Mistake move : {Mistake::MirroredLeftRight, Mistake::UpsideDown, Mistake::Shifted})
         if (const Slip* s = slipOf(slips, move)) out = movedImage(out, move, s->shift, fill);
