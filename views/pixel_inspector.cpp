@@ -480,7 +480,11 @@ void PixelInspector::widenHistory() {
     // Side by side, the history's columns whole when that leaves the lighting 38 % of the
     // width; one column, no minimum.
     const QWidget* room = m_room ? m_room.data() : this;
-    const int width = m_beside ? std::min(m_wholeTableWidth, room->width() * 62 / 100) : 0;
+    // Never so wide that the lighting's column falls below its own minimum (a scroll bar).
+    const int lighting = m_lightingBox->minimumSizeHint().width() + m_grid->horizontalSpacing();
+    const int width = m_beside ? std::min({m_wholeTableWidth, room->width() * 62 / 100,
+                                           room->width() - lighting})
+                               : 0;
     m_grid->setColumnMinimumWidth(0, width);
 }
 

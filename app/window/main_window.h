@@ -199,7 +199,7 @@ public:
     QDockWidget* lectureDock() const;
     bool lectureShowsImage() const;
     static QString stageDockName(rl::StageId stage);
-    static constexpr double kLectureStageShare = 0.62;
+    static constexpr double kLectureStageShare = 0.72;
     static constexpr double kLectureEditShare = 0.3;
     // The stage dock's title in the lecture layout: the stage and its key numbers for the
     // frame (fragments tested, pixels shaded ...), this much larger than the window's text.
