@@ -448,13 +448,9 @@ void readWindow(Reader& r, const QJsonObject& w, Lesson& lesson) {
             lesson.dockState = QByteArray::fromBase64(v->toLatin1());
     if (w.contains(lit("presentation")))
         lesson.presentation = r.flag(w.value(lit("presentation")), at + QStringList{lit("presentation")});
-    if (w.contains(lit("text_zoom"))) {
-        const QJsonValue zoom = w.value(lit("text_zoom"));
-        if (zoom.isDouble())
-            lesson.textZoom = zoom.toDouble();  // the window keeps it to its steps' range
-        else
-            r.expected(at + QStringList{lit("text_zoom")}, "a number"_msg, zoom);
-    }
+    // The window keeps the zoom to its steps' range.
+    if (w.contains(lit("text_zoom")))
+        lesson.textZoom = r.number(w.value(lit("text_zoom")), at + QStringList{lit("text_zoom")});
 }
 
 // Check My Renderer's command and folder.

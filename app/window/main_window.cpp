@@ -477,9 +477,7 @@ void MainWindow::enterPresentationLayout() {
     // Live edits keep the Edit dock on screen.
     if (m_liveEdits)
         if (auto* edit = findChild<QDockWidget*>(QStringLiteral("editDock"))) edit->show();
-    rememberLectureChoices();
-    m_presentationOwnLayout = saveState(kLayoutVersion);  // the teacher's own, for F7
-    m_lectureShown = {};
+    keepOwnLayout();
 }
 
 void MainWindow::leavePresentationLayout() {
@@ -901,10 +899,7 @@ void MainWindow::updateOverlay() {
 }
 
 void MainWindow::showStageView(rl::StageId stage) {
-    static const std::array<const char*, rl::kStageCount> docks = {
-        "cameraBasisDock", "vertexTableDock", "normalsDock",       "projectionDock",
-        "scanlineDock",    "zbufferDock",     "pixelInspectorDock"};
-    auto* dock = findChild<QDockWidget*>(QLatin1String(docks[static_cast<std::size_t>(stage)]));
+    auto* dock = findChild<QDockWidget*>(stageDockName(stage));
     if (!dock) return;
     dock->show();
     dock->raise();

@@ -365,6 +365,9 @@ private:
     void scheduleLectureLayout();
     void fitLectureDocks();
     void rememberLectureChoices();  // which dock shows a stage with two (m_lectureChoices)
+    // The teacher's own presentation layout kept (F7 gives it back), and the stages' views
+    // the lecture will show.
+    void keepOwnLayout();
     void applyTextZoom();
     void showLectureCaption(QDockWidget* dock);  // null: the caption taken away
     bool keyForWindow(const QKeyEvent* key) const;

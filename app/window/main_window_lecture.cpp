@@ -32,6 +32,7 @@
 #include "views/stage_strip.h"
 #include "views/frame_image_view.h"
 #include "views/stepping_bar.h"
+#include "views/zbuffer_view.h"
 
 namespace rasterlab {
 
@@ -90,6 +91,12 @@ QDockWidget* MainWindow::lectureDock() const {
     return findChild<QDockWidget*>(stageDockName(stage));
 }
 
+void MainWindow::keepOwnLayout() {
+    rememberLectureChoices();
+    m_presentationOwnLayout = saveState(kLayoutVersion);  // the teacher's own, for F7
+    m_lectureShown = {};  // the lecture's docks are placed again
+}
+
 void MainWindow::rememberLectureChoices() {
     // A stage's other presentation in front of its tab group (a lesson's: the near-plane
     // lesson raises the clipping dock, the painter's lesson the painter's) is the one the
@@ -124,10 +131,8 @@ void MainWindow::setLectureLayout(bool on) {
     }
     restoreFill();
     if (on) {
-        rememberLectureChoices();
-        m_presentationOwnLayout = saveState(kLayoutVersion);  // the teacher's, to come back to
+        keepOwnLayout();
         m_lectureLayout = true;
-        m_lectureShown = {};
         applyLectureLayout();
     } else {
         m_lectureLayout = false;
@@ -298,15 +303,9 @@ QString MainWindow::lectureCaption(rl::StageId stage) const {
         case rl::StageId::DepthTest: {
             numbers = tr("%1 fragments tested, %2 written, %3 rejected")
                           .arg(n(t->depth->fragments), n(t->depth->passed), n(t->depth->rejected));
-            // The depths kept, nearest and farthest (empty pixels stay at +infinity).
-            float nearest = std::numeric_limits<float>::infinity(), farthest = -nearest;
-            for (float z : t->depth->depth.pixels())
-                if (std::isfinite(z)) {
-                    nearest = std::min(nearest, z);
-                    farthest = std::max(farthest, z);
-                }
-            if (nearest <= farthest)
-                numbers += tr(" · z kept from %1 to %2").arg(x(nearest), x(farthest));
+            // The depths kept, nearest and farthest, as the z-buffer view finds them.
+            if (const DepthRange kept = coveredDepthRange(*t->depth); kept.valid)
+                numbers += tr(" · z kept from %1 to %2").arg(x(kept.nearest), x(kept.farthest));
             break;
         }
         case rl::StageId::Shading:

@@ -259,9 +259,7 @@ void MainWindow::restoreView(const Lesson& lesson) {
     if (lectureLayoutShown()) {
         // The lesson's raised docks choose the lecture's (its clipping dock, say); the teacher's
         // own layout is the lesson's.
-        rememberLectureChoices();
-        m_presentationOwnLayout = saveState(kLayoutVersion);
-        m_lectureShown = {};
+        keepOwnLayout();
         scheduleLectureLayout();
     }
     if (lesson.granularity) m_inspection->setGranularity(*lesson.granularity);
