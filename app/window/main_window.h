@@ -375,6 +375,7 @@ private:
     void keepKeysFromNumberBoxes();  // installs the application's filter (filterNumberBoxKey)
 
     SceneDocument m_document;
+    std::unique_ptr<QObject> m_numberBoxKeys;  // the application's filter, gone first
     RenderController* m_controller = nullptr;
     ReplayBuilder* m_replayBuilder = nullptr;
     Inspection* m_inspection = nullptr;

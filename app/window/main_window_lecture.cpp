@@ -52,12 +52,14 @@ bool isNumberBox(const QWidget* w) {
     return false;
 }
 
-// The application's filter that hands the window's keys back from number boxes.
+// The application's filter that hands the window's keys back from number boxes. The window
+// owns it outside Qt's children, so it is gone before the window's widgets are taken down.
 class NumberBoxKeys : public QObject {
 public:
-    explicit NumberBoxKeys(MainWindow* window) : QObject(window), m_window(window) {}
+    explicit NumberBoxKeys(MainWindow* window) : m_window(window) {}
     bool eventFilter(QObject* watched, QEvent* event) override {
-        return m_window->filterNumberBoxKey(watched, event);
+        return event->type() == QEvent::ShortcutOverride &&
+               m_window->filterNumberBoxKey(watched, event);
     }
 
 private:
@@ -67,7 +69,8 @@ private:
 }  // namespace
 
 void MainWindow::keepKeysFromNumberBoxes() {
-    qApp->installEventFilter(new NumberBoxKeys(this));
+    m_numberBoxKeys = std::make_unique<NumberBoxKeys>(this);
+    qApp->installEventFilter(m_numberBoxKeys.get());
 }
 
 QString MainWindow::stageDockName(rl::StageId stage) {
