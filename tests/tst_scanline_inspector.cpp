@@ -524,7 +524,7 @@ void TestScanlineInspector::historyOfAPixel() {
     QCOMPARE(inspector.selectedRow(), 3);
     QCOMPARE(inspector.historyTable()->rowCount(), 5);
     QVERIFY(inspector.historyTable()->item(3, 0)->text().startsWith(QStringLiteral("▶")));
-    QCOMPARE(inspector.historyTable()->item(2, 4)->text(), QStringLiteral("(133,157,34)"));
+    QCOMPARE(inspector.historyTable()->item(2, 4)->text(), QStringLiteral("(133, 157, 34)"));
     QCOMPARE(inspector.historyTable()->item(2, 5)->text(), QStringLiteral("rejected: farther"));
 }
 

@@ -36,8 +36,43 @@ namespace rasterlab {
 
 namespace {
 
+// The text on lines no wider than `width` where it has spaces to break at.
+QString wrapped(const QString& text, const QFontMetrics& metrics, int width) {
+    QStringList lines;
+    for (const QString& word : text.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+        const QString longer = lines.isEmpty() ? word : lines.back() + QLatin1Char(' ') + word;
+        if (!lines.isEmpty() && metrics.horizontalAdvance(longer) <= width)
+            lines.back() = longer;
+        else
+            lines << word;
+    }
+    return lines.join(QLatin1Char('\n'));
+}
+
+// The narrowest width, from `least` on, in which no line of `text` wraps onto more than
+// `most` lines.
+int widthForLines(const QString& text, const QFontMetrics& metrics, int least, int most) {
+    int widest = least;
+    for (const QString& line : text.split(QLatin1Char('\n')))
+        widest = std::max(widest, metrics.horizontalAdvance(line));
+    const auto fits = [&](int width) {
+        for (const QString& line : text.split(QLatin1Char('\n')))
+            if (wrapped(line, metrics, width).count(QLatin1Char('\n')) >= most) return false;
+        return true;
+    };
+    int low = least, high = widest;  // fits(high) holds: every line on one line
+    while (low < high) {
+        const int mid = (low + high) / 2;
+        if (fits(mid))
+            high = mid;
+        else
+            low = mid + 1;
+    }
+    return high;
+}
+
 QString bytesText(const std::array<std::uint8_t, 4>& b) {
-    return QStringLiteral("(%1,%2,%3)").arg(b[0]).arg(b[1]).arg(b[2]);
+    return QStringLiteral("(%1, %2, %3)").arg(b[0]).arg(b[1]).arg(b[2]);
 }
 
 QPixmap swatch(const std::array<std::uint8_t, 4>& b, int size) {
@@ -111,37 +146,31 @@ protected:
         const std::array<QColor, 3> channelColours{QColor(255, 110, 110), QColor(110, 220, 110),
                                                    QColor(120, 160, 255)};
         std::array<QPointF, 3> totalsAt;  // where each channel's total is written
-        struct Value {
-            QString text;
-            QColor colour;
-            QPointF baseline;
-        };
-        std::vector<Value> values;  // the terms' values, written once the scale is drawn
         for (int c = 0; c < 3; ++c) {
             const double y = top + c * rowHeight(line);
             painter.setPen(channelColours[static_cast<std::size_t>(c)]);
             drawLabel(painter, QRectF(0, y, left - 4, barHeight), Qt::AlignRight | Qt::AlignVCenter,
                       channelNames()[static_cast<std::size_t>(c)]);
             double x = left;
-            double labelX = left;  // where the next term's value may start, below the bar
             for (const Segment& s : m_segments) {
                 const double w = std::max(0.0f, s.value[c]) * unit;
                 if (w <= 0.0) continue;
                 painter.fillRect(QRectF(x, y, w, barHeight), s.colour);
                 painter.setPen(QColor(20, 20, 20));
                 painter.drawLine(QPointF(x + w, y), QPointF(x + w, y + barHeight));
-                // The term's value under the start of its part of the bar, after the last.
-                const QString value = num(s.value[c]);
-                const double at = std::max(x, labelX);
-                // In the term's colour, lightened where it is dark on the background.
-                const QColor colour = s.colour.lightness() < 140 ? s.colour.lighter(150) : s.colour;
-                values.push_back({value, colour,
-                                  QPointF(at, y + barHeight + 1 + metrics.ascent())});
-                labelX = at + metrics.horizontalAdvance(value) + metrics.horizontalAdvance(
-                                                                     QStringLiteral("  "));
                 x += w;
             }
             totalsAt[static_cast<std::size_t>(c)] = QPointF(x + 4, y);
+        }
+        // The terms' values, written once the scale is drawn: as many digits as the width
+        // lets every channel's values show whole (the formula below has them all).
+        std::vector<Value> values;
+        for (const int digits : {6, 4, 3}) {
+            values = termValues(metrics, left, unit, top, digits);
+            if (std::all_of(values.begin(), values.end(), [&](const Value& v) {
+                    return v.baseline.x() + metrics.horizontalAdvance(v.text) <= width() - 2;
+                }))
+                break;
         }
         // The colour scale: what reaches it or goes beyond becomes byte 255. The totals go
         // over it on the background's colour, so that the line never crosses their digits.
@@ -184,6 +213,37 @@ protected:
 
 private:
     static constexpr QColor kBackground{32, 32, 36};
+
+    struct Value {
+        QString text;
+        QColor colour;
+        QPointF baseline;
+    };
+
+    // Each term's value, under the start of its part of the bar or after the value before.
+    std::vector<Value> termValues(const QFontMetrics& metrics, double left, double unit,
+                                  double top, int digits) const {
+        std::vector<Value> values;
+        const double line = metrics.height();
+        for (int c = 0; c < 3; ++c) {
+            const double y = top + c * rowHeight(line) + line * 1.2 + 1 + metrics.ascent();
+            double x = left;
+            double labelX = left;  // where the next term's value may start
+            for (const Segment& s : m_segments) {
+                const double w = std::max(0.0f, s.value[c]) * unit;
+                if (w <= 0.0) continue;
+                const QString text = num(s.value[c], digits);
+                const double at = std::max(x, labelX);
+                // In the term's colour, lightened where it is dark on the background.
+                const QColor colour = s.colour.lightness() < 140 ? s.colour.lighter(150) : s.colour;
+                values.push_back({text, colour, QPointF(at, y)});
+                labelX = at + metrics.horizontalAdvance(text) +
+                         metrics.horizontalAdvance(QStringLiteral("  "));
+                x += w;
+            }
+        }
+        return values;
+    }
 
     // A channel's bar, the line of its terms' values below it, and the gap to the next.
     static double rowHeight(double line) { return line * 1.2 + 1 + line + 8; }
@@ -419,6 +479,10 @@ PixelInspector::PixelInspector(Inspection* inspection, QWidget* parent)
         m_lightingLayout->addWidget(w);
     m_lightingLayout->addStretch(1);
     m_grid = new QGridLayout(this);
+    // Narrow margins: in the lecture layout the lit pixel's formula takes the height to the
+    // last line.
+    m_grid->setContentsMargins(4, 4, 4, 4);
+    m_lightingLayout->setSpacing(4);
     arrange();
     const auto follow = [this] {
         if (isVisible()) refresh();
@@ -480,8 +544,13 @@ void PixelInspector::widenHistory() {
     // Side by side, the history's columns whole when that leaves the lighting 38 % of the
     // width; one column, no minimum.
     const QWidget* room = m_room ? m_room.data() : this;
-    // Never so wide that the lighting's column falls below its own minimum (a scroll bar).
-    const int lighting = m_lightingBox->minimumSizeHint().width() + m_grid->horizontalSpacing();
+    // Never so wide that the lighting's column falls below its own minimum (a scroll bar),
+    // nor below the width in which each line of the formula takes at most three lines.
+    const QMargins margins = m_grid->contentsMargins();
+    const int least = m_lightingBox->minimumSizeHint().width();
+    const int formula = widthForLines(m_formula->text(), m_formula->fontMetrics(), least, 3);
+    const int lighting =
+        formula + m_grid->horizontalSpacing() + margins.left() + margins.right();
     const int width = m_beside ? std::min({m_wholeTableWidth, room->width() * 62 / 100,
                                            room->width() - lighting})
                                : 0;
@@ -673,7 +742,7 @@ void PixelInspector::fillTable() {
             }
             QTableWidgetItem* cell = item(column, bytesText(*bytes));
             cell->setIcon(QIcon(swatch(*bytes, swatchSize)));
-            // The bytes whole when a narrow column elides them.
+            // The bytes whole when a narrow column shows only the swatch.
             cell->setToolTip(cell->toolTip().isEmpty()
                                  ? cell->text()
                                  : cell->text() + QLatin1Char('\n') + cell->toolTip());
@@ -695,23 +764,6 @@ bool PixelInspector::eventFilter(QObject* watched, QEvent* event) {
     return QWidget::eventFilter(watched, event);
 }
 
-namespace {
-
-// The text on lines no wider than `width` where it has spaces to break at.
-QString wrapped(const QString& text, const QFontMetrics& metrics, int width) {
-    QStringList lines;
-    for (const QString& word : text.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
-        const QString longer = lines.isEmpty() ? word : lines.back() + QLatin1Char(' ') + word;
-        if (!lines.isEmpty() && metrics.horizontalAdvance(longer) <= width)
-            lines.back() = longer;
-        else
-            lines << word;
-    }
-    return lines.join(QLatin1Char('\n'));
-}
-
-}  // namespace
-
 void PixelInspector::fitColumns() {
     // Each column as wide as its text when the table has the room; when not, the columns
     // shrink in proportion to what wrapping can save, down to their longest word (a cell
@@ -726,7 +778,7 @@ void PixelInspector::fitColumns() {
     const int margin =
         2 * (style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, m_table) + 1);
     static const QRegularExpression space(QStringLiteral("\\s+"));
-    // least: a colour down to a few digits ("(255…"); fewest: down to its swatch.
+    // least: a colour on two lines; fewest: down to its swatch.
     std::vector<int> whole(columns), least(columns), fewest(columns);
     QStyleOptionViewItem cellOption;
     cellOption.initFrom(m_table->viewport());
@@ -750,9 +802,9 @@ void PixelInspector::fitColumns() {
                                          .width()) +
                             2;
             whole[c] = std::max(whole[c], all);
-            if (icon) {  // the bytes whole in the cell's tooltip
+            if (icon) {  // on two lines at the least ("(255, 240," over "180)")
                 least[c] = std::max(
-                    least[c], std::min(all, cell.horizontalAdvance(QStringLiteral("(255\u2026")) +
+                    least[c], std::min(all, cell.horizontalAdvance(QStringLiteral("(255, 255,")) +
                                                 margin + icon + 2));
                 fewest[c] = std::max(fewest[c], margin + icon + 2);
                 continue;
@@ -914,6 +966,7 @@ void PixelInspector::showBreakdown() {
     }
     m_vectors->setVisible(vectors);
     m_formula->setText(formulaText());
+    widenHistory();  // the formula's lines may ask the lighting's column for more width
     if (!b.flagTexts.isEmpty()) {
         QString html;
         for (const QString& text : b.flagTexts)

@@ -200,6 +200,8 @@ public:
     bool lectureShowsImage() const;
     static QString stageDockName(rl::StageId stage);
     static constexpr double kLectureStageShare = 0.72;
+    // The lighting's: the lit pixel's history and its formula side by side need the room.
+    static constexpr double kLectureLightingShare = 0.76;
     static constexpr double kLectureEditShare = 0.3;
     // The stage dock's title in the lecture layout: the stage and its key numbers for the
     // frame (fragments tested, pixels shaded ...), this much larger than the window's text.

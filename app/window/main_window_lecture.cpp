@@ -66,6 +66,17 @@ private:
     MainWindow* m_window;
 };
 
+// The caption over the lecture's dock: the dock gives its title bar the height of the hint,
+// which for wrapped text would be that of a narrow label; the hint is the height it is given.
+class CaptionLabel : public QLabel {
+public:
+    using QLabel::QLabel;
+    QSize sizeHint() const override {
+        const QSize hint = QLabel::sizeHint();
+        return {hint.width(), minimumHeight() > 0 ? minimumHeight() : hint.height()};
+    }
+};
+
 }  // namespace
 
 void MainWindow::keepKeysFromNumberBoxes() {
@@ -234,7 +245,9 @@ void MainWindow::fitLectureDocks() {
     if (stage && !stage->isFloating()) {
         // With the edits beside it, the stage gives up their width, and the image keeps a
         // fifth of the window.
-        const double image = centralWidget()->isVisible() ? 1.0 - kLectureStageShare : 0.0;
+        const double own = m_inspection->stage() == rl::StageId::Shading ? kLectureLightingShare
+                                                                          : kLectureStageShare;
+        const double image = centralWidget()->isVisible() ? 1.0 - own : 0.0;
         const double share =
             widths.isEmpty() ? 1.0 - image : 1.0 - kLectureEditShare - std::min(image, 0.2);
         docks << stage;
@@ -329,7 +342,7 @@ void MainWindow::showLectureCaption(QDockWidget* dock) {
     if (!dock) return;
     bool changed = false;
     if (!m_lectureCaption) {
-        m_lectureCaption = new QLabel(this);
+        m_lectureCaption = new CaptionLabel(this);
         m_lectureCaption->setObjectName(QStringLiteral("lectureCaption"));
         m_lectureCaption->setWordWrap(true);
         m_lectureCaption->setTextFormat(Qt::RichText);
