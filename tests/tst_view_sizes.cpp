@@ -447,7 +447,7 @@ void TestViewSizes::keyFiguresLarge() {
         {normals, QStringLiteral("n = (0.3819, 0.2616, 0.8864)  n · P1 = 7.803")},
         {projection, QStringLiteral("1520 inside · 0 clipped · 0 culled · 0 behind")},
         {zbuffer, QStringLiteral("241332 tested · 140068 written · 101264 rejected\n"
-                                 "z 8.38824 … 12.8632")}};
+                                 "z 8.38824 – 12.8632")}};
     for (const auto& [view, expected] : views) {
         Docked docked(view, QSize(900, 560));
         settle();

@@ -4644,37 +4644,37 @@
         <translation>P&amp;ainter&apos;s algorithm (flat, far to near, no depth test)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1125"/>
+        <location filename="../app/window/main_window.cpp" line="1120"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>step forward, back (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1127"/>
+        <location filename="../app/window/main_window.cpp" line="1122"/>
         <source>Space</source>
         <translation>Space</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1127"/>
+        <location filename="../app/window/main_window.cpp" line="1122"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>play / pause (on the image, or anywhere in presentation mode)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1133"/>
+        <location filename="../app/window/main_window.cpp" line="1128"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>let go of the picked pixel (on the image)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1134"/>
+        <location filename="../app/window/main_window.cpp" line="1129"/>
         <source>presentation mode on / off</source>
         <translation>presentation mode on / off</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1140"/>
+        <location filename="../app/window/main_window.cpp" line="1135"/>
         <source>fill the window with the panel under the pointer (in the lecture layout, the stage&apos;s), and back</source>
         <translation>fill the window with the panel under the pointer (in the lecture layout, the stage&apos;s), and back</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1144"/>
+        <location filename="../app/window/main_window.cpp" line="1139"/>
         <source>save, undo, redo</source>
         <translation>save, undo, redo</translation>
     </message>
@@ -4979,87 +4979,87 @@
         <translation>&amp;Same Side (clip only triangles that cross the eye plane)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="711"/>
+        <location filename="../app/window/main_window.cpp" line="709"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1016"/>
+        <location filename="../app/window/main_window.cpp" line="1011"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1108"/>
+        <location filename="../app/window/main_window.cpp" line="1103"/>
         <source>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</source>
         <translation>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1122"/>
+        <location filename="../app/window/main_window.cpp" line="1117"/>
         <source>step forward</source>
         <translation>step forward</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1123"/>
+        <location filename="../app/window/main_window.cpp" line="1118"/>
         <source>step back</source>
         <translation>step back</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1126"/>
+        <location filename="../app/window/main_window.cpp" line="1121"/>
         <source>play / pause</source>
         <translation>play / pause</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1128"/>
+        <location filename="../app/window/main_window.cpp" line="1123"/>
         <source>jump to the start / the end of the frame</source>
         <translation>jump to the start / the end of the frame</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1129"/>
+        <location filename="../app/window/main_window.cpp" line="1124"/>
         <source>continue to the next breakpoint</source>
         <translation>continue to the next breakpoint</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1130"/>
+        <location filename="../app/window/main_window.cpp" line="1125"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>step by stage, triangle, scanline, span, pixel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1131"/>
+        <location filename="../app/window/main_window.cpp" line="1126"/>
         <source>show a stage&apos;s view</source>
         <translation>show a stage&apos;s view</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1132"/>
+        <location filename="../app/window/main_window.cpp" line="1127"/>
         <source>Click, arrows</source>
         <translation>Click, arrows</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1132"/>
+        <location filename="../app/window/main_window.cpp" line="1127"/>
         <source>pick a pixel, move it by one</source>
         <translation>pick a pixel, move it by one</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1136"/>
+        <location filename="../app/window/main_window.cpp" line="1131"/>
         <source>presentation mode: the lecture layout (the stage being stepped fills the screen) or your own layout</source>
         <translation>presentation mode: the lecture layout (the stage being stepped fills the screen) or your own layout</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1138"/>
+        <location filename="../app/window/main_window.cpp" line="1133"/>
         <source>presentation mode: the Edit panel on screen (live edits)</source>
         <translation>presentation mode: the Edit panel on screen (live edits)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1139"/>
+        <location filename="../app/window/main_window.cpp" line="1134"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, double-click on a panel&apos;s title</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1143"/>
+        <location filename="../app/window/main_window.cpp" line="1138"/>
         <source>open, export the image, export it as displayed</source>
         <translation>open, export the image, export it as displayed</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1169"/>
+        <location filename="../app/window/main_window.cpp" line="1164"/>
         <source>Keyboard Shortcuts</source>
         <translation>Keyboard Shortcuts</translation>
     </message>
@@ -5119,7 +5119,7 @@
         <translation>Accuracy</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="685"/>
+        <location filename="../app/window/main_window.cpp" line="683"/>
         <location filename="../app/window/main_window_export.cpp" line="35"/>
         <location filename="../app/window/main_window_export.cpp" line="133"/>
         <location filename="../app/window/main_window_export.cpp" line="175"/>
@@ -5138,18 +5138,18 @@
         <translation>Exported %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="738"/>
+        <location filename="../app/window/main_window.cpp" line="736"/>
         <source>rendering...</source>
         <translation>rendering...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="738"/>
+        <location filename="../app/window/main_window.cpp" line="736"/>
         <source>%1, rendering...</source>
         <translation>%1, rendering...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="736"/>
-        <location filename="../app/window/main_window.cpp" line="979"/>
+        <location filename="../app/window/main_window.cpp" line="734"/>
+        <location filename="../app/window/main_window.cpp" line="974"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -5219,68 +5219,68 @@
         <translation>Presentation mode: F5 or Esc to leave; Page Down, Right and Space step and play</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="668"/>
+        <location filename="../app/window/main_window.cpp" line="666"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="746"/>
+        <location filename="../app/window/main_window.cpp" line="744"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparing the stepping of this frame</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="746"/>
+        <location filename="../app/window/main_window.cpp" line="744"/>
         <source>Rendering</source>
         <translation>Rendering</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="922"/>
+        <location filename="../app/window/main_window.cpp" line="917"/>
         <source>Error: %1</source>
         <translation>Error: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="946"/>
+        <location filename="../app/window/main_window.cpp" line="941"/>
         <source>Files</source>
         <translation>Files</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="949"/>
+        <location filename="../app/window/main_window.cpp" line="944"/>
         <source>Command file</source>
         <translation>Command file</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="950"/>
+        <location filename="../app/window/main_window.cpp" line="945"/>
         <source>Image</source>
         <translation>Image</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="952"/>
+        <location filename="../app/window/main_window.cpp" line="947"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="962"/>
+        <location filename="../app/window/main_window.cpp" line="957"/>
         <source>Camera</source>
         <translation>Camera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="963"/>
+        <location filename="../app/window/main_window.cpp" line="958"/>
         <source>Lighting</source>
         <translation>Lighting</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="964"/>
+        <location filename="../app/window/main_window.cpp" line="959"/>
         <source>Object</source>
         <translation>Object</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="966"/>
+        <location filename="../app/window/main_window.cpp" line="961"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</translation>
     </message>
     <message>
         <location filename="../app/window/main_window.cpp" line="268"/>
-        <location filename="../app/window/main_window.cpp" line="973"/>
+        <location filename="../app/window/main_window.cpp" line="968"/>
         <source>Stages</source>
         <translation>Stages</translation>
     </message>
@@ -5350,77 +5350,77 @@
         <translation>Compare with their image</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="944"/>
+        <location filename="../app/window/main_window.cpp" line="939"/>
         <source>Lesson: %1</source>
         <translation>Lesson: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="980"/>
+        <location filename="../app/window/main_window.cpp" line="975"/>
         <source>skipped: %1</source>
         <translation>skipped: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="983"/>
+        <location filename="../app/window/main_window.cpp" line="978"/>
         <source>Counts</source>
         <translation>Counts</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="984"/>
+        <location filename="../app/window/main_window.cpp" line="979"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="987"/>
+        <location filename="../app/window/main_window.cpp" line="982"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="990"/>
+        <location filename="../app/window/main_window.cpp" line="985"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="994"/>
+        <location filename="../app/window/main_window.cpp" line="989"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1018"/>
+        <location filename="../app/window/main_window.cpp" line="1013"/>
         <source>empty (+inf)</source>
         <translation>empty (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1019"/>
+        <location filename="../app/window/main_window.cpp" line="1014"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   depth %6</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1035"/>
+        <location filename="../app/window/main_window.cpp" line="1030"/>
         <source>Open Command File</source>
         <translation>Open Command File</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1036"/>
+        <location filename="../app/window/main_window.cpp" line="1031"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Command files (*.txt);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1042"/>
+        <location filename="../app/window/main_window.cpp" line="1037"/>
         <source>Open</source>
         <translation>Open</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1042"/>
+        <location filename="../app/window/main_window.cpp" line="1037"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1052"/>
+        <location filename="../app/window/main_window.cpp" line="1047"/>
         <source>Export PNG</source>
         <translation>Export PNG</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1052"/>
+        <location filename="../app/window/main_window.cpp" line="1047"/>
         <location filename="../app/window/main_window_actions.cpp" line="154"/>
         <location filename="../app/window/main_window_actions.cpp" line="161"/>
         <location filename="../app/window/main_window_export.cpp" line="198"/>
@@ -5429,17 +5429,17 @@
         <translation>PNG images (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1057"/>
+        <location filename="../app/window/main_window.cpp" line="1052"/>
         <source>Compare with Image</source>
         <translation>Compare with Image</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1058"/>
+        <location filename="../app/window/main_window.cpp" line="1053"/>
         <source>PNG images (*.png);;All files (*)</source>
         <translation>PNG images (*.png);;All files (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/main_window.cpp" line="1087"/>
+        <location filename="../app/window/main_window.cpp" line="1082"/>
         <source>Compared %1 with our render: %n pixel(s) differ</source>
         <translation>
             <numerusform>Compared %1 with our render: %n pixel differs</numerusform>
@@ -5447,37 +5447,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1095"/>
+        <location filename="../app/window/main_window.cpp" line="1090"/>
         <source>About RasterLab</source>
         <translation>About RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1101"/>
+        <location filename="../app/window/main_window.cpp" line="1096"/>
         <source>Released under the MIT License, whose text is in %1.</source>
         <translation>Released under the MIT License, whose text is in %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1103"/>
+        <location filename="../app/window/main_window.cpp" line="1098"/>
         <source>Released under the MIT License.</source>
         <translation>Released under the MIT License.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1104"/>
+        <location filename="../app/window/main_window.cpp" line="1099"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1146"/>
+        <location filename="../app/window/main_window.cpp" line="1141"/>
         <source>the panels&apos; text larger, smaller, its normal size</source>
         <translation>the panels&apos; text larger, smaller, its normal size</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1148"/>
+        <location filename="../app/window/main_window.cpp" line="1143"/>
         <source>the image: zoom in, zoom out, fit, actual size (and the wheel)</source>
         <translation>the image: zoom in, zoom out, fit, actual size (and the wheel)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1161"/>
+        <location filename="../app/window/main_window.cpp" line="1156"/>
         <source>These keys act wherever the focus is, a number box included (it keeps its digits and its up and down arrows).</source>
         <translation>These keys act wherever the focus is, a number box included (it keeps its digits and its up and down arrows).</translation>
     </message>
@@ -5714,7 +5714,7 @@
         <translation>The lesson opened, but not all of it: see the Messages dock</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="376"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="374"/>
         <source>%1: cannot save the lesson: %2</source>
         <translation>%1: cannot save the lesson: %2</translation>
     </message>
@@ -5734,62 +5734,62 @@
         <translation>Cannot write their frame to %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="141"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="160"/>
         <source>Lecture layout: the stage being stepped fills the screen (F7: your own layout)</source>
         <translation>Lecture layout: the stage being stepped fills the screen (F7: your own layout)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="143"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="162"/>
         <source>Your own layout (F7: the lecture layout again)</source>
         <translation>Your own layout (F7: the lecture layout again)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="259"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="280"/>
         <source>|N| = %1 · U = %2 · V = %3 · N = %4</source>
         <translation>|N| = %1 · U = %2 · V = %3 · N = %4</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="264"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="285"/>
         <source>%1 vertices: %2 in front of the camera, %3 behind</source>
         <translation>%1 vertices: %2 in front of the camera, %3 behind</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="273"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="294"/>
         <source>%1 triangle normals: %2 front faces, %3 back faces · %4 vertex normals</source>
         <translation>%1 triangle normals: %2 front faces, %3 back faces · %4 vertex normals</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="282"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="303"/>
         <source> · triangle %1: n = %2</source>
         <translation> · triangle %1: n = %2</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="288"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="309"/>
         <source>%1 triangles: %2 inside, %3 clipped, %4 behind · near plane w = %5</source>
         <translation>%1 triangles: %2 inside, %3 clipped, %4 behind · near plane w = %5</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="294"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="315"/>
         <source>%1 triangles → %2 spans, %3 pixels covered</source>
         <translation>%1 triangles → %2 spans, %3 pixels covered</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="299"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="320"/>
         <source>%1 fragments tested, %2 written, %3 rejected</source>
         <translation>%1 fragments tested, %2 written, %3 rejected</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="309"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="324"/>
         <source> · z kept from %1 to %2</source>
         <translation> · z kept from %1 to %2</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="313"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="328"/>
         <source>%1 pixels shaded · N·L &lt; 0: %2 · R·V &lt; 0: %3 · clamped at 255: %4</source>
         <translation>%1 pixels shaded · N·L &lt; 0: %2 · R·V &lt; 0: %3 · clamped at 255: %4</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="383"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="398"/>
         <source>Text size %1 %</source>
         <translation>Text size %1 %</translation>
     </message>
@@ -6433,52 +6433,52 @@
 <context>
     <name>rasterlab::PixelInspector</name>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="170"/>
+        <location filename="../views/pixel_inspector.cpp" line="199"/>
         <source>%1 = byte 255</source>
         <translation>%1 = byte 255</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="261"/>
+        <location filename="../views/pixel_inspector.cpp" line="321"/>
         <source>no normal</source>
         <translation>no normal</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="327"/>
+        <location filename="../views/pixel_inspector.cpp" line="387"/>
         <source>in the plane of N and L</source>
         <translation>in the plane of N and L</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="361"/>
+        <location filename="../views/pixel_inspector.cpp" line="421"/>
         <source>Step</source>
         <translation>Step</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="361"/>
+        <location filename="../views/pixel_inspector.cpp" line="421"/>
         <source>Triangle</source>
         <translation>Triangle</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="361"/>
+        <location filename="../views/pixel_inspector.cpp" line="421"/>
         <source>Depth test</source>
         <translation>Depth test</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="362"/>
+        <location filename="../views/pixel_inspector.cpp" line="422"/>
         <source>Before</source>
         <translation>Before</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="362"/>
+        <location filename="../views/pixel_inspector.cpp" line="422"/>
         <source>After</source>
         <translation>After</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="362"/>
+        <location filename="../views/pixel_inspector.cpp" line="422"/>
         <source>Result</source>
         <translation>Result</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="377"/>
+        <location filename="../views/pixel_inspector.cpp" line="437"/>
         <source>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</source>
         <translation>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</translation>
     </message>
@@ -6848,123 +6848,123 @@
         <translation>Ke = %1: the material&apos;s own light</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="562"/>
+        <location filename="../views/pixel_inspector.cpp" line="635"/>
         <source>Your renderer&apos;s colour here: (%1, %2, %3); ours (%4, %5, %6).</source>
         <translation>Your renderer&apos;s colour here: (%1, %2, %3); ours (%4, %5, %6).</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="581"/>
+        <location filename="../views/pixel_inspector.cpp" line="654"/>
         <source>No triangle of ours holds this pixel.</source>
         <translation>No triangle of ours holds this pixel.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="584"/>
+        <location filename="../views/pixel_inspector.cpp" line="657"/>
         <source>The terms are worked out for the course&apos;s lighting in flat or Phong shading only.</source>
         <translation>The terms are worked out for the course&apos;s lighting in flat or Phong shading only.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="589"/>
+        <location filename="../views/pixel_inspector.cpp" line="662"/>
         <source>For your colour, each term alone:</source>
         <translation>For your colour, each term alone:</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="635"/>
+        <location filename="../views/pixel_inspector.cpp" line="708"/>
         <source>start</source>
         <translation>start</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="641"/>
-        <location filename="../views/pixel_inspector.cpp" line="859"/>
+        <location filename="../views/pixel_inspector.cpp" line="714"/>
+        <location filename="../views/pixel_inspector.cpp" line="915"/>
         <source>end</source>
         <translation>end</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="649"/>
+        <location filename="../views/pixel_inspector.cpp" line="722"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>holds the pixel at the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="650"/>
+        <location filename="../views/pixel_inspector.cpp" line="723"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>not reached yet by the stepping cursor</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="665"/>
+        <location filename="../views/pixel_inspector.cpp" line="738"/>
         <source>not kept</source>
         <translation>not kept</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="666"/>
+        <location filename="../views/pixel_inspector.cpp" line="739"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Without stepping, the colours of writes overwritten later are not kept.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="800"/>
+        <location filename="../views/pixel_inspector.cpp" line="856"/>
         <source>Before: %1</source>
         <translation>Before: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="840"/>
+        <location filename="../views/pixel_inspector.cpp" line="896"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="843"/>
+        <location filename="../views/pixel_inspector.cpp" line="899"/>
         <source>The cleared pixel is not lit.</source>
         <translation>The cleared pixel is not lit.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="846"/>
+        <location filename="../views/pixel_inspector.cpp" line="902"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="858"/>
+        <location filename="../views/pixel_inspector.cpp" line="914"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Lighting of step %1, triangle %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="863"/>
+        <location filename="../views/pixel_inspector.cpp" line="919"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejected: this colour was never written)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="876"/>
+        <location filename="../views/pixel_inspector.cpp" line="932"/>
         <source>object colour</source>
         <translation>object colour</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="879"/>
+        <location filename="../views/pixel_inspector.cpp" line="935"/>
         <source>emission</source>
         <translation>emission</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="881"/>
+        <location filename="../views/pixel_inspector.cpp" line="937"/>
         <source>ambient</source>
         <translation>ambient</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="886"/>
+        <location filename="../views/pixel_inspector.cpp" line="942"/>
         <source>diffuse %1</source>
         <translation>diffuse %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="889"/>
+        <location filename="../views/pixel_inspector.cpp" line="945"/>
         <source>specular %1</source>
         <translation>specular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="893"/>
+        <location filename="../views/pixel_inspector.cpp" line="949"/>
         <source>diffuse</source>
         <translation>diffuse</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="895"/>
+        <location filename="../views/pixel_inspector.cpp" line="951"/>
         <source>specular</source>
         <translation>specular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="921"/>
+        <location filename="../views/pixel_inspector.cpp" line="978"/>
         <source>No special case: every term applies as written.</source>
         <translation>No special case: every term applies as written.</translation>
     </message>
@@ -8232,57 +8232,63 @@
         <translation>+&amp;infin;</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="330"/>
+        <location filename="../views/zbuffer_view.cpp" line="328"/>
+        <source>stored</source>
+        <comment>subscript: the depth the z-buffer holds</comment>
+        <translation>stored</translation>
+    </message>
+    <message>
+        <location filename="../views/zbuffer_view.cpp" line="332"/>
         <source>the view-space z of P&apos;</source>
         <translation>the view-space z of P&apos;</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="330"/>
+        <location filename="../views/zbuffer_view.cpp" line="332"/>
         <source>the NDC z</source>
         <translation>the NDC z</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="338"/>
+        <location filename="../views/zbuffer_view.cpp" line="340"/>
         <source>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</source>
         <translation>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="388"/>
+        <location filename="../views/zbuffer_view.cpp" line="390"/>
         <source>%1 tested · %2 written · %3 rejected</source>
         <translation>%1 tested · %2 written · %3 rejected</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="397"/>
+        <location filename="../views/zbuffer_view.cpp" line="399"/>
         <source>No frame yet.</source>
         <translation>No frame yet.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="414"/>
+        <location filename="../views/zbuffer_view.cpp" line="416"/>
         <source>No pixel holds a triangle: the buffer is all clear value.</source>
         <translation>No pixel holds a triangle: the buffer is all clear value.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="421"/>
+        <location filename="../views/zbuffer_view.cpp" line="423"/>
         <source>Drawn depths from %1 to %2; shown from %3 to %4.</source>
         <translation>Drawn depths from %1 to %2; shown from %3 to %4.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="427"/>
+        <location filename="../views/zbuffer_view.cpp" line="429"/>
         <source>%1 pixels nearer and %2 farther than the range are drawn at its ends.</source>
         <translation>%1 pixels nearer and %2 farther than the range are drawn at its ends.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="441"/>
+        <location filename="../views/zbuffer_view.cpp" line="443"/>
         <source>+inf</source>
         <translation>+inf</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="442"/>
+        <location filename="../views/zbuffer_view.cpp" line="444"/>
         <source>x %1, y %2: no triangle; the depth stays at the clear value %3</source>
         <translation>x %1, y %2: no triangle; the depth stays at the clear value %3</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="447"/>
+        <location filename="../views/zbuffer_view.cpp" line="449"/>
         <source>x %1, y %2: depth %3, triangle %4</source>
         <translation>x %1, y %2: depth %3, triangle %4</translation>
     </message>

@@ -4644,37 +4644,37 @@
         <translation>&amp;Algoritmo do pintor (plano, do mais distante ao mais próximo, sem teste de profundidade)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1125"/>
+        <location filename="../app/window/main_window.cpp" line="1120"/>
         <source>step forward, back (on the image, or anywhere in presentation mode)</source>
         <translation>avançar, voltar um passo (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1127"/>
+        <location filename="../app/window/main_window.cpp" line="1122"/>
         <source>Space</source>
         <translation>Barra de espaço</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1127"/>
+        <location filename="../app/window/main_window.cpp" line="1122"/>
         <source>play / pause (on the image, or anywhere in presentation mode)</source>
         <translation>reproduzir / pausar (na imagem, ou em qualquer lugar no modo de apresentação)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1133"/>
+        <location filename="../app/window/main_window.cpp" line="1128"/>
         <source>let go of the picked pixel (on the image)</source>
         <translation>soltar o pixel escolhido (na imagem)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1134"/>
+        <location filename="../app/window/main_window.cpp" line="1129"/>
         <source>presentation mode on / off</source>
         <translation>ligar / desligar o modo de apresentação</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1140"/>
+        <location filename="../app/window/main_window.cpp" line="1135"/>
         <source>fill the window with the panel under the pointer (in the lecture layout, the stage&apos;s), and back</source>
         <translation>preencher a janela com o painel sob o ponteiro (no layout de aula, o da etapa), e voltar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1144"/>
+        <location filename="../app/window/main_window.cpp" line="1139"/>
         <source>save, undo, redo</source>
         <translation>salvar, desfazer, refazer</translation>
     </message>
@@ -4979,87 +4979,87 @@
         <translation>&amp;Mesmo lado (recortar só os triângulos que cruzam o plano do olho)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="711"/>
+        <location filename="../app/window/main_window.cpp" line="709"/>
         <source>Every triangle is behind the camera (is N pointing away from the object?), so clipping at the near plane leaves nothing to draw. Seed 000&apos;s formula divides by z anyway: it would draw %1 of the %2 triangles as the object&apos;s point reflection through the eye, turned half a turn on the screen, and the z-buffer (keeping the smallest z) would keep the side farthest from the camera. The projection view&apos;s side view shows the eye, N and the object.</source>
         <translation>Todos os triângulos estão atrás da câmera (N aponta para longe do objeto?), então o recorte no plano próximo não deixa nada para desenhar. A fórmula da seed 000 divide por z mesmo assim: desenharia %1 dos %2 triângulos como a reflexão do objeto pelo olho, girada meia volta na tela, e o z-buffer (que guarda o menor z) guardaria o lado mais distante da câmera. A vista lateral da projeção mostra o olho, N e o objeto.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1016"/>
+        <location filename="../app/window/main_window.cpp" line="1011"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1108"/>
+        <location filename="../app/window/main_window.cpp" line="1103"/>
         <source>&lt;p&gt;It follows the courses it was made for: the computer graphics course projects of UFPE and UFRPE (Phong shading with a z-buffer, and its flat-shading variant with the painter&apos;s algorithm), the assignment “HW2: 3D Rasterizer”, the per-frame rendering pipeline of an animation course, and Prof. Jonh Edson R. de Carvalho&apos;s lecture slides on illumination models (“Modelos de Iluminação”).&lt;/p&gt;</source>
         <translation>&lt;p&gt;Segue as disciplinas para as quais foi feito: os projetos da disciplina de computação gráfica da UFPE e da UFRPE (sombreamento de Phong com z-buffer, e sua variante com sombreamento plano e o algoritmo do pintor), o trabalho “HW2: 3D Rasterizer”, o pipeline de renderização por quadro de uma disciplina de animação, e os slides da aula do Prof. Jonh Edson R. de Carvalho sobre modelos de iluminação (“Modelos de Iluminação”).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1122"/>
+        <location filename="../app/window/main_window.cpp" line="1117"/>
         <source>step forward</source>
         <translation>avançar um passo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1123"/>
+        <location filename="../app/window/main_window.cpp" line="1118"/>
         <source>step back</source>
         <translation>voltar um passo</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1126"/>
+        <location filename="../app/window/main_window.cpp" line="1121"/>
         <source>play / pause</source>
         <translation>reproduzir / pausar</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1128"/>
+        <location filename="../app/window/main_window.cpp" line="1123"/>
         <source>jump to the start / the end of the frame</source>
         <translation>ir ao início / ao fim do quadro</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1129"/>
+        <location filename="../app/window/main_window.cpp" line="1124"/>
         <source>continue to the next breakpoint</source>
         <translation>continuar até o próximo ponto de parada</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1130"/>
+        <location filename="../app/window/main_window.cpp" line="1125"/>
         <source>step by stage, triangle, scanline, span, pixel</source>
         <translation>avançar por etapa, triângulo, linha de varredura, segmento, pixel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1131"/>
+        <location filename="../app/window/main_window.cpp" line="1126"/>
         <source>show a stage&apos;s view</source>
         <translation>mostrar o painel de uma etapa</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1132"/>
+        <location filename="../app/window/main_window.cpp" line="1127"/>
         <source>Click, arrows</source>
         <translation>Clique, setas</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1132"/>
+        <location filename="../app/window/main_window.cpp" line="1127"/>
         <source>pick a pixel, move it by one</source>
         <translation>escolher um pixel, movê-lo de um em um</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1136"/>
+        <location filename="../app/window/main_window.cpp" line="1131"/>
         <source>presentation mode: the lecture layout (the stage being stepped fills the screen) or your own layout</source>
         <translation>modo de apresentação: o layout de aula (a etapa em que se avança ocupa a tela) ou o seu próprio layout</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1138"/>
+        <location filename="../app/window/main_window.cpp" line="1133"/>
         <source>presentation mode: the Edit panel on screen (live edits)</source>
         <translation>modo de apresentação: o painel Edição na tela (edição ao vivo)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1139"/>
+        <location filename="../app/window/main_window.cpp" line="1134"/>
         <source>F11, double-click on a panel&apos;s title</source>
         <translation>F11, duplo clique no título de um painel</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1143"/>
+        <location filename="../app/window/main_window.cpp" line="1138"/>
         <source>open, export the image, export it as displayed</source>
         <translation>abrir, exportar a imagem, exportá-la como exibida</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1169"/>
+        <location filename="../app/window/main_window.cpp" line="1164"/>
         <source>Keyboard Shortcuts</source>
         <translation>Atalhos de teclado</translation>
     </message>
@@ -5119,7 +5119,7 @@
         <translation>Exatidão</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="685"/>
+        <location filename="../app/window/main_window.cpp" line="683"/>
         <location filename="../app/window/main_window_export.cpp" line="35"/>
         <location filename="../app/window/main_window_export.cpp" line="133"/>
         <location filename="../app/window/main_window_export.cpp" line="175"/>
@@ -5138,18 +5138,18 @@
         <translation>Exportado %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="738"/>
+        <location filename="../app/window/main_window.cpp" line="736"/>
         <source>rendering...</source>
         <translation>renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="738"/>
+        <location filename="../app/window/main_window.cpp" line="736"/>
         <source>%1, rendering...</source>
         <translation>%1, renderizando...</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="736"/>
-        <location filename="../app/window/main_window.cpp" line="979"/>
+        <location filename="../app/window/main_window.cpp" line="734"/>
+        <location filename="../app/window/main_window.cpp" line="974"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
@@ -5219,68 +5219,68 @@
         <translation>Apresentação: F5 ou Esc sai; Page Down, → e Espaço avançam e reproduzem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="668"/>
+        <location filename="../app/window/main_window.cpp" line="666"/>
         <source>%1[*] - RasterLab</source>
         <translation>%1[*] - RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="746"/>
+        <location filename="../app/window/main_window.cpp" line="744"/>
         <source>Preparing the stepping of this frame</source>
         <translation>Preparando o passo a passo deste quadro</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="746"/>
+        <location filename="../app/window/main_window.cpp" line="744"/>
         <source>Rendering</source>
         <translation>Renderizando</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="922"/>
+        <location filename="../app/window/main_window.cpp" line="917"/>
         <source>Error: %1</source>
         <translation>Erro: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="946"/>
+        <location filename="../app/window/main_window.cpp" line="941"/>
         <source>Files</source>
         <translation>Arquivos</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="949"/>
+        <location filename="../app/window/main_window.cpp" line="944"/>
         <source>Command file</source>
         <translation>Arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="950"/>
+        <location filename="../app/window/main_window.cpp" line="945"/>
         <source>Image</source>
         <translation>Imagem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="952"/>
+        <location filename="../app/window/main_window.cpp" line="947"/>
         <source>%1 vertices, %2 triangles in %3 draws; %4 x %5 pixels; %6 lights</source>
         <translation>%1 vértices, %2 triângulos em %3 desenhos; %4 x %5 pixels; %6 luzes</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="962"/>
+        <location filename="../app/window/main_window.cpp" line="957"/>
         <source>Camera</source>
         <translation>Câmera</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="963"/>
+        <location filename="../app/window/main_window.cpp" line="958"/>
         <source>Lighting</source>
         <translation>Iluminação</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="964"/>
+        <location filename="../app/window/main_window.cpp" line="959"/>
         <source>Object</source>
         <translation>Objeto</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="966"/>
+        <location filename="../app/window/main_window.cpp" line="961"/>
         <source>%1 vertices, %2 triangles; %3 x %4 pixels, %5 shading</source>
         <translation>%1 vértices, %2 triângulos; %3 x %4 pixels, sombreamento %5</translation>
     </message>
     <message>
         <location filename="../app/window/main_window.cpp" line="268"/>
-        <location filename="../app/window/main_window.cpp" line="973"/>
+        <location filename="../app/window/main_window.cpp" line="968"/>
         <source>Stages</source>
         <translation>Etapas</translation>
     </message>
@@ -5350,77 +5350,77 @@
         <translation>Comparar com a imagem deles</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="944"/>
+        <location filename="../app/window/main_window.cpp" line="939"/>
         <source>Lesson: %1</source>
         <translation>Aula: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="980"/>
+        <location filename="../app/window/main_window.cpp" line="975"/>
         <source>skipped: %1</source>
         <translation>omitida: %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="983"/>
+        <location filename="../app/window/main_window.cpp" line="978"/>
         <source>Counts</source>
         <translation>Contagens</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="984"/>
+        <location filename="../app/window/main_window.cpp" line="979"/>
         <source>Triangles clipped at the near plane: %1; behind the camera: %2&lt;br&gt;</source>
         <translation>Triângulos recortados no plano próximo: %1; atrás da câmera: %2&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="987"/>
+        <location filename="../app/window/main_window.cpp" line="982"/>
         <source>Zero-area triangles: %1 in view space, %2 on screen&lt;br&gt;</source>
         <translation>Triângulos de área zero: %1 no espaço de vista, %2 na tela&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="990"/>
+        <location filename="../app/window/main_window.cpp" line="985"/>
         <source>Fragments tested: %1; written: %2; rejected: %3&lt;br&gt;</source>
         <translation>Fragmentos testados: %1; escritos: %2; rejeitados: %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="994"/>
+        <location filename="../app/window/main_window.cpp" line="989"/>
         <source>Pixels shaded: %1; normals turned toward the viewer: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; clamped at 255: %5</source>
         <translation>Pixels sombreados: %1; normais voltadas para o observador: %2; N.L &amp;lt; 0: %3; R.V &amp;lt; 0: %4; limitados a 255: %5</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1018"/>
+        <location filename="../app/window/main_window.cpp" line="1013"/>
         <source>empty (+inf)</source>
         <translation>vazio (+inf)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1019"/>
+        <location filename="../app/window/main_window.cpp" line="1014"/>
         <source>x %1, y %2   RGB (%3, %4, %5)   depth %6</source>
         <translation>x %1, y %2   RGB (%3, %4, %5)   profundidade %6</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1035"/>
+        <location filename="../app/window/main_window.cpp" line="1030"/>
         <source>Open Command File</source>
         <translation>Abrir arquivo de comandos</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1036"/>
+        <location filename="../app/window/main_window.cpp" line="1031"/>
         <source>Command files (*.txt);;All files (*)</source>
         <translation>Arquivos de comandos (*.txt);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1042"/>
+        <location filename="../app/window/main_window.cpp" line="1037"/>
         <source>Open</source>
         <translation>Abrir</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1042"/>
+        <location filename="../app/window/main_window.cpp" line="1037"/>
         <source>Scene files (*.byu *.cfg *.txt *.lux);;All files (*)</source>
         <translation>Arquivos de cena (*.byu *.cfg *.txt *.lux);;Todos os arquivos (*)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1052"/>
+        <location filename="../app/window/main_window.cpp" line="1047"/>
         <source>Export PNG</source>
         <translation>Exportar PNG</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1052"/>
+        <location filename="../app/window/main_window.cpp" line="1047"/>
         <location filename="../app/window/main_window_actions.cpp" line="154"/>
         <location filename="../app/window/main_window_actions.cpp" line="161"/>
         <location filename="../app/window/main_window_export.cpp" line="198"/>
@@ -5429,17 +5429,17 @@
         <translation>Imagens PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1057"/>
+        <location filename="../app/window/main_window.cpp" line="1052"/>
         <source>Compare with Image</source>
         <translation>Comparar com imagem</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1058"/>
+        <location filename="../app/window/main_window.cpp" line="1053"/>
         <source>PNG images (*.png);;All files (*)</source>
         <translation>Imagens PNG (*.png);;Todos os arquivos (*)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/window/main_window.cpp" line="1087"/>
+        <location filename="../app/window/main_window.cpp" line="1082"/>
         <source>Compared %1 with our render: %n pixel(s) differ</source>
         <translation>
             <numerusform>%1 comparada com a nossa renderização: %n pixel difere</numerusform>
@@ -5447,37 +5447,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1095"/>
+        <location filename="../app/window/main_window.cpp" line="1090"/>
         <source>About RasterLab</source>
         <translation>Sobre o RasterLab</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1101"/>
+        <location filename="../app/window/main_window.cpp" line="1096"/>
         <source>Released under the MIT License, whose text is in %1.</source>
         <translation>Distribuído sob a Licença MIT, cujo texto está em %1.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1103"/>
+        <location filename="../app/window/main_window.cpp" line="1098"/>
         <source>Released under the MIT License.</source>
         <translation>Distribuído sob a Licença MIT.</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1104"/>
+        <location filename="../app/window/main_window.cpp" line="1099"/>
         <source>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;The classic software rasterization pipeline, stage by stage: camera basis, view transform, normals, projection, scan conversion, depth test and shading.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;RasterLab %1&lt;/h3&gt;&lt;p&gt;O pipeline clássico de rasterização por software, etapa por etapa: base da câmera, coordenadas de vista, normais, projeção, conversão por varredura, teste de profundidade e sombreamento.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1146"/>
+        <location filename="../app/window/main_window.cpp" line="1141"/>
         <source>the panels&apos; text larger, smaller, its normal size</source>
         <translation>o texto dos painéis maior, menor, no tamanho normal</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1148"/>
+        <location filename="../app/window/main_window.cpp" line="1143"/>
         <source>the image: zoom in, zoom out, fit, actual size (and the wheel)</source>
         <translation>a imagem: aproximar, afastar, ajustar, tamanho real (e a roda do mouse)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window.cpp" line="1161"/>
+        <location filename="../app/window/main_window.cpp" line="1156"/>
         <source>These keys act wherever the focus is, a number box included (it keeps its digits and its up and down arrows).</source>
         <translation>Estas teclas agem onde quer que esteja o foco, inclusive numa caixa de número (ela fica com os seus dígitos e as suas setas para cima e para baixo).</translation>
     </message>
@@ -5714,7 +5714,7 @@
         <translation>A aula abriu, mas não inteira: veja o painel Mensagens</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lessons.cpp" line="376"/>
+        <location filename="../app/window/main_window_lessons.cpp" line="374"/>
         <source>%1: cannot save the lesson: %2</source>
         <translation>%1: não é possível salvar a aula: %2</translation>
     </message>
@@ -5734,62 +5734,62 @@
         <translation>Não é possível gravar o quadro deles em %1</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="141"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="160"/>
         <source>Lecture layout: the stage being stepped fills the screen (F7: your own layout)</source>
         <translation>Layout de aula: a etapa em que se avança ocupa a tela (F7: o seu próprio layout)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="143"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="162"/>
         <source>Your own layout (F7: the lecture layout again)</source>
         <translation>O seu próprio layout (F7: o layout de aula de novo)</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="259"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="280"/>
         <source>|N| = %1 · U = %2 · V = %3 · N = %4</source>
         <translation>|N| = %1 · U = %2 · V = %3 · N = %4</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="264"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="285"/>
         <source>%1 vertices: %2 in front of the camera, %3 behind</source>
         <translation>%1 vértices: %2 à frente da câmera, %3 atrás</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="273"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="294"/>
         <source>%1 triangle normals: %2 front faces, %3 back faces · %4 vertex normals</source>
         <translation>%1 normais de triângulo: %2 faces da frente, %3 faces de trás · %4 normais de vértice</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="282"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="303"/>
         <source> · triangle %1: n = %2</source>
         <translation> · triângulo %1: n = %2</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="288"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="309"/>
         <source>%1 triangles: %2 inside, %3 clipped, %4 behind · near plane w = %5</source>
         <translation>%1 triângulos: %2 dentro, %3 recortados, %4 atrás · plano próximo w = %5</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="294"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="315"/>
         <source>%1 triangles → %2 spans, %3 pixels covered</source>
         <translation>%1 triângulos → %2 segmentos, %3 pixels cobertos</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="299"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="320"/>
         <source>%1 fragments tested, %2 written, %3 rejected</source>
         <translation>%1 fragmentos testados, %2 escritos, %3 rejeitados</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="309"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="324"/>
         <source> · z kept from %1 to %2</source>
         <translation> · z guardado de %1 a %2</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="313"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="328"/>
         <source>%1 pixels shaded · N·L &lt; 0: %2 · R·V &lt; 0: %3 · clamped at 255: %4</source>
         <translation>%1 pixels sombreados · N·L &lt; 0: %2 · R·V &lt; 0: %3 · limitados a 255: %4</translation>
     </message>
     <message>
-        <location filename="../app/window/main_window_lecture.cpp" line="383"/>
+        <location filename="../app/window/main_window_lecture.cpp" line="398"/>
         <source>Text size %1 %</source>
         <translation>Tamanho do texto %1 %</translation>
     </message>
@@ -6433,52 +6433,52 @@
 <context>
     <name>rasterlab::PixelInspector</name>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="170"/>
+        <location filename="../views/pixel_inspector.cpp" line="199"/>
         <source>%1 = byte 255</source>
         <translation>%1 = byte 255</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="261"/>
+        <location filename="../views/pixel_inspector.cpp" line="321"/>
         <source>no normal</source>
         <translation>sem normal</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="327"/>
+        <location filename="../views/pixel_inspector.cpp" line="387"/>
         <source>in the plane of N and L</source>
         <translation>no plano de N e L</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="361"/>
+        <location filename="../views/pixel_inspector.cpp" line="421"/>
         <source>Step</source>
         <translation>Passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="361"/>
+        <location filename="../views/pixel_inspector.cpp" line="421"/>
         <source>Triangle</source>
         <translation>Triângulo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="361"/>
+        <location filename="../views/pixel_inspector.cpp" line="421"/>
         <source>Depth test</source>
         <translation>Teste de profundidade</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="362"/>
+        <location filename="../views/pixel_inspector.cpp" line="422"/>
         <source>Before</source>
         <translation>Antes</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="362"/>
+        <location filename="../views/pixel_inspector.cpp" line="422"/>
         <source>After</source>
         <translation>Depois</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="362"/>
+        <location filename="../views/pixel_inspector.cpp" line="422"/>
         <source>Result</source>
         <translation>Resultado</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="377"/>
+        <location filename="../views/pixel_inspector.cpp" line="437"/>
         <source>▶ holds the pixel at the stepping cursor; grey rows are not reached yet. Select a row to see its lighting.</source>
         <translation>▶ ocupa o pixel no cursor de passo; as linhas cinza ainda não foram alcançadas. Selecione uma linha para ver sua iluminação.</translation>
     </message>
@@ -6848,123 +6848,123 @@
         <translation>Ke = %1: a luz própria do material</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="562"/>
+        <location filename="../views/pixel_inspector.cpp" line="635"/>
         <source>Your renderer&apos;s colour here: (%1, %2, %3); ours (%4, %5, %6).</source>
         <translation>A cor do seu renderizador aqui: (%1, %2, %3); a nossa (%4, %5, %6).</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="581"/>
+        <location filename="../views/pixel_inspector.cpp" line="654"/>
         <source>No triangle of ours holds this pixel.</source>
         <translation>Nenhum triângulo nosso ocupa este pixel.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="584"/>
+        <location filename="../views/pixel_inspector.cpp" line="657"/>
         <source>The terms are worked out for the course&apos;s lighting in flat or Phong shading only.</source>
         <translation>Os termos são calculados só para a iluminação do curso em sombreamento plano ou Phong.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="589"/>
+        <location filename="../views/pixel_inspector.cpp" line="662"/>
         <source>For your colour, each term alone:</source>
         <translation>Para a sua cor, cada termo sozinho:</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="635"/>
+        <location filename="../views/pixel_inspector.cpp" line="708"/>
         <source>start</source>
         <translation>início</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="641"/>
-        <location filename="../views/pixel_inspector.cpp" line="859"/>
+        <location filename="../views/pixel_inspector.cpp" line="714"/>
+        <location filename="../views/pixel_inspector.cpp" line="915"/>
         <source>end</source>
         <translation>fim</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="649"/>
+        <location filename="../views/pixel_inspector.cpp" line="722"/>
         <source>holds the pixel at the stepping cursor</source>
         <translation>ocupa o pixel no cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="650"/>
+        <location filename="../views/pixel_inspector.cpp" line="723"/>
         <source>not reached yet by the stepping cursor</source>
         <translation>ainda não alcançado pelo cursor de passo</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="665"/>
+        <location filename="../views/pixel_inspector.cpp" line="738"/>
         <source>not kept</source>
         <translation>não guardada</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="666"/>
+        <location filename="../views/pixel_inspector.cpp" line="739"/>
         <source>Without stepping, the colours of writes overwritten later are not kept.</source>
         <translation>Sem o passo a passo, as cores das escritas sobrescritas depois não são guardadas.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="800"/>
+        <location filename="../views/pixel_inspector.cpp" line="856"/>
         <source>Before: %1</source>
         <translation>Antes: %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="840"/>
+        <location filename="../views/pixel_inspector.cpp" line="896"/>
         <source>Without stepping, only the lighting of the fragment that holds the pixel at the end is recorded.</source>
         <translation>Sem o passo a passo, só a iluminação do fragmento que ocupa o pixel no fim é registrada.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="843"/>
+        <location filename="../views/pixel_inspector.cpp" line="899"/>
         <source>The cleared pixel is not lit.</source>
         <translation>O pixel limpo não é iluminado.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="846"/>
+        <location filename="../views/pixel_inspector.cpp" line="902"/>
         <source>No fragment holds the pixel at the cursor: select a row of the history to see its lighting.</source>
         <translation>Nenhum fragmento ocupa o pixel no cursor: selecione uma linha do histórico para ver sua iluminação.</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="858"/>
+        <location filename="../views/pixel_inspector.cpp" line="914"/>
         <source>Lighting of step %1, triangle %2: %3</source>
         <translation>Iluminação do passo %1, triângulo %2: %3</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="863"/>
+        <location filename="../views/pixel_inspector.cpp" line="919"/>
         <source>(rejected: this colour was never written)</source>
         <translation>(rejeitado: esta cor nunca foi escrita)</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="876"/>
+        <location filename="../views/pixel_inspector.cpp" line="932"/>
         <source>object colour</source>
         <translation>cor do objeto</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="879"/>
+        <location filename="../views/pixel_inspector.cpp" line="935"/>
         <source>emission</source>
         <translation>emissão</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="881"/>
+        <location filename="../views/pixel_inspector.cpp" line="937"/>
         <source>ambient</source>
         <translation>ambiente</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="886"/>
+        <location filename="../views/pixel_inspector.cpp" line="942"/>
         <source>diffuse %1</source>
         <translation>difusa %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="889"/>
+        <location filename="../views/pixel_inspector.cpp" line="945"/>
         <source>specular %1</source>
         <translation>especular %1</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="893"/>
+        <location filename="../views/pixel_inspector.cpp" line="949"/>
         <source>diffuse</source>
         <translation>difusa</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="895"/>
+        <location filename="../views/pixel_inspector.cpp" line="951"/>
         <source>specular</source>
         <translation>especular</translation>
     </message>
     <message>
-        <location filename="../views/pixel_inspector.cpp" line="921"/>
+        <location filename="../views/pixel_inspector.cpp" line="978"/>
         <source>No special case: every term applies as written.</source>
         <translation>Nenhum caso especial: todos os termos valem como escritos.</translation>
     </message>
@@ -8232,57 +8232,63 @@
         <translation>+&amp;infin;</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="330"/>
+        <location filename="../views/zbuffer_view.cpp" line="328"/>
+        <source>stored</source>
+        <comment>subscript: the depth the z-buffer holds</comment>
+        <translation>guardado</translation>
+    </message>
+    <message>
+        <location filename="../views/zbuffer_view.cpp" line="332"/>
         <source>the view-space z of P&apos;</source>
         <translation>o z de P&apos; no espaço de vista</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="330"/>
+        <location filename="../views/zbuffer_view.cpp" line="332"/>
         <source>the NDC z</source>
         <translation>o z em NDC</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="338"/>
+        <location filename="../views/zbuffer_view.cpp" line="340"/>
         <source>&lt;b&gt;Z-buffer.&lt;/b&gt; Every pixel starts at %1. Each fragment&apos;s depth %2 (%3) is compared with the stored one; it is written, with its colour, only when %4. So far: %5 fragments tested, %6 written, %7 rejected.</source>
         <translation>&lt;b&gt;Z-buffer.&lt;/b&gt; Todo pixel começa em %1. A profundidade de cada fragmento, %2 (%3), é comparada com a armazenada; ela é escrita, com sua cor, só quando %4. Até agora: %5 fragmentos testados, %6 escritos, %7 rejeitados.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="388"/>
+        <location filename="../views/zbuffer_view.cpp" line="390"/>
         <source>%1 tested · %2 written · %3 rejected</source>
         <translation>%1 testados · %2 escritos · %3 rejeitados</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="397"/>
+        <location filename="../views/zbuffer_view.cpp" line="399"/>
         <source>No frame yet.</source>
         <translation>Nenhum quadro ainda.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="414"/>
+        <location filename="../views/zbuffer_view.cpp" line="416"/>
         <source>No pixel holds a triangle: the buffer is all clear value.</source>
         <translation>Nenhum pixel contém um triângulo: o buffer inteiro está no valor de limpeza.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="421"/>
+        <location filename="../views/zbuffer_view.cpp" line="423"/>
         <source>Drawn depths from %1 to %2; shown from %3 to %4.</source>
         <translation>Profundidades desenhadas de %1 a %2; exibidas de %3 a %4.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="427"/>
+        <location filename="../views/zbuffer_view.cpp" line="429"/>
         <source>%1 pixels nearer and %2 farther than the range are drawn at its ends.</source>
         <translation>%1 pixels mais próximos e %2 mais distantes que a faixa aparecem nas suas extremidades.</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="441"/>
+        <location filename="../views/zbuffer_view.cpp" line="443"/>
         <source>+inf</source>
         <translation>+inf</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="442"/>
+        <location filename="../views/zbuffer_view.cpp" line="444"/>
         <source>x %1, y %2: no triangle; the depth stays at the clear value %3</source>
         <translation>x %1, y %2: nenhum triângulo; a profundidade fica no valor de limpeza %3</translation>
     </message>
     <message>
-        <location filename="../views/zbuffer_view.cpp" line="447"/>
+        <location filename="../views/zbuffer_view.cpp" line="449"/>
         <source>x %1, y %2: depth %3, triangle %4</source>
         <translation>x %1, y %2: profundidade %3, triângulo %4</translation>
     </message>

@@ -48,7 +48,10 @@ StageStrip::StageStrip(Inspection* inspection, QWidget* parent)
     connect(inspection, &Inspection::presentationChanged, this, &StageStrip::refresh);
     // A step changes only the note.
     connect(inspection, &Inspection::cursorChanged, this, &StageStrip::updateNote);
-    connect(inspection, &Inspection::granularityChanged, this, &StageStrip::updateNote);
+    connect(inspection, &Inspection::granularityChanged, this, [this] {
+        updateNote();
+        fitTexts();
+    });
     refresh();
 }
 
@@ -208,7 +211,14 @@ int StageStrip::textsWidth(const std::array<QString, rl::kStageCount>& texts) co
 }
 
 void StageStrip::fitTexts() {
-    const bool whole = width() >= textsWidth(m_longTexts) + m_note->minimumSizeHint().width();
+    // The long names while the note, whenever stepping finer than by stage may show it, has
+    // its whole width beside them.
+    int note = m_note->minimumSizeHint().width();
+    if (m_inspection->granularity() != rl::StepGranularity::Stage)
+        note = std::max(note, m_note->fontMetrics().horizontalAdvance(noteText()) +
+                                  m_note->contentsMargins().left() +
+                                  m_note->contentsMargins().right() + 2 * m_note->margin());
+    const bool whole = width() >= textsWidth(m_longTexts) + note;
     for (std::size_t i = 0; i < m_buttons.size(); ++i)
         m_buttons[i]->setText(whole ? m_longTexts[i] : m_shortTexts[i]);
 }
@@ -232,8 +242,11 @@ void StageStrip::updateNote() {
     const bool midFrame = m_inspection->canStep() && !m_inspection->atStart() &&
                           !m_inspection->atEnd() &&
                           m_inspection->granularity() != rl::StepGranularity::Stage;
-    m_note->setFullText(
-        midFrame ? tr("while stepping, stages 5-7 run together, fragment by fragment") : QString());
+    m_note->setFullText(midFrame ? noteText() : QString());
+}
+
+QString StageStrip::noteText() {
+    return tr("while stepping, stages 5-7 run together, fragment by fragment");
 }
 
 }  // namespace rasterlab

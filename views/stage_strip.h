@@ -57,6 +57,7 @@ protected:
 private:
     void refresh();
     void updateNote();  // the note beside the strip, which follows the cursor
+    static QString noteText();  // what the note says mid-frame, stepping finer than by stage
     // The stages' names, whole or short (number and first word), whichever the width holds.
     void fitTexts();
     int textsWidth(const std::array<QString, rl::kStageCount>& texts) const;

@@ -324,8 +324,10 @@ QString ZBufferView::explanation() const {
     const rl::Conventions& c = m_frame->scene->conventions;
     const QString clear =
         std::isinf(c.depthClear) ? tr("+&infin;") : QString::number(double(c.depthClear));
-    const QString test = c.depthWinsOnTie ? QStringLiteral("z &le; z<sub>stored</sub>")
-                                          : QStringLiteral("z &lt; z<sub>stored</sub>");
+    const QString stored =
+        QStringLiteral("z<sub>%1</sub>").arg(tr("stored", "subscript: the depth the z-buffer holds"));
+    const QString test =
+        (c.depthWinsOnTie ? QStringLiteral("z &le; %1") : QStringLiteral("z &lt; %1")).arg(stored);
     const QString what =
         c.depth == rl::DepthSource::ViewZ ? tr("the view-space z of P'") : tr("the NDC z");
     const bool reciprocal = rl::perspectiveDepth(*m_frame->scene);
@@ -415,7 +417,7 @@ void ZBufferView::refresh() {
         return;
     }
     m_figures->setText(m_figures->text() + QLatin1Char('\n') +
-                       QStringLiteral("z %1 … %2")
+                       QStringLiteral("z %1 – %2")
                            .arg(double(drawn.nearest), 0, 'g', 6)
                            .arg(double(drawn.farthest), 0, 'g', 6));
     QString text = tr("Drawn depths from %1 to %2; shown from %3 to %4.")
