@@ -185,6 +185,22 @@ private slots:
         QVERIFY(comparison);
         QVERIFY(!comparison->diagnosis.empty());
         QCOMPARE(comparison->diagnosis.front().mistake, rl::Mistake::AmbientTimesOd);
+        // At 1280x720 the Compare dock shows the first mistake found, unscrolled, under the
+        // images.
+        QTest::qWait(50);
+        auto* dock = m_window.findChild<QDockWidget*>(QStringLiteral("compareDock"));
+        auto* diagnosis = dock->findChild<QLabel*>(QStringLiteral("compareDiagnosis"));
+        auto* scroll = dock->findChild<QScrollArea*>();
+        QVERIFY(dock->isVisible() && diagnosis && scroll);
+        QVERIFY(diagnosis->text().contains(QStringLiteral("Ia*ka*Od")));
+        QVERIFY(dock->frameGeometry().bottom() < 720);
+        // The first finding's ten lines: the heading, its name, share, evidence (two lines),
+        // the course's rule and three pixels.
+        const QPoint top = diagnosis->mapTo(scroll->viewport(), QPoint(0, 0));
+        const int finding = 10 * diagnosis->fontMetrics().height();
+        QVERIFY2(top.y() >= 0 && top.y() + finding <= scroll->viewport()->height(),
+                 qPrintable(QStringLiteral("the diagnosis at %1 in a viewport %2 high")
+                                .arg(top.y()).arg(scroll->viewport()->height())));
     }
 
     // A departure at a pixel: the frame is stepped to the first fragment written there.

@@ -211,9 +211,11 @@ ComparePanel::ComparePanel(Inspection* inspection, QWidget* parent)
         layout->addWidget(label);
         return label;
     };
-    m_summary = textLabel("compareSummary", Qt::PlainText);
-    m_pixel = textLabel("comparePixel", Qt::PlainText);
+    // The diagnosis first, under the images: at 1280x720 the counts below it scroll, the
+    // mistake found does not.
     m_diagnosis = textLabel("compareDiagnosis", Qt::RichText);
+    m_pixel = textLabel("comparePixel", Qt::PlainText);
+    m_summary = textLabel("compareSummary", Qt::PlainText);
     layout->addStretch(1);
     m_summary->setText(
         tr("File > Compare with Image... compares a PNG of your own renderer "
