@@ -548,9 +548,13 @@ void PixelInspector::widenHistory() {
     // nor below the width in which each line of the formula takes at most three lines.
     const QMargins margins = m_grid->contentsMargins();
     const int least = m_lightingBox->minimumSizeHint().width();
-    const int formula = widthForLines(m_formula->text(), m_formula->fontMetrics(), least, 3);
-    const int lighting =
-        formula + m_grid->horizontalSpacing() + margins.left() + margins.right();
+    const QString key = m_formula->font().toString() + QLatin1Char('\n') + m_formula->text();
+    if (key != m_formulaWidthKey) {  // worked out again only for another formula or font
+        m_formulaWidthKey = key;
+        m_formulaWidth = widthForLines(m_formula->text(), m_formula->fontMetrics(), 0, 3);
+    }
+    const int lighting = std::max(least, m_formulaWidth) + m_grid->horizontalSpacing() +
+                         margins.left() + margins.right();
     const int width = m_beside ? std::min({m_wholeTableWidth, room->width() * 62 / 100,
                                            room->width() - lighting})
                                : 0;

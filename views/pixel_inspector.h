@@ -112,6 +112,8 @@ private:
     QVBoxLayout* m_lightingLayout = nullptr;
     bool m_beside = false;          // the history and the lighting side by side
     int m_wholeTableWidth = 0;      // the history's table with every column whole
+    QString m_formulaWidthKey;      // the formula's font and text m_formulaWidth is for
+    int m_formulaWidth = 0;         // the width its lines need to take three lines at most
     QPointer<QWidget> m_room;  // the widget it is shown in, watched for its size
     LightingVectors* m_vectors = nullptr;
     QLabel* m_formula = nullptr;
