@@ -17,9 +17,13 @@ void ElidedLabel::setFullText(const QString& text) {
     elide();
 }
 
-QSize ElidedLabel::sizeHint() const {
+int ElidedLabel::wholeWidth(const QString& text) const {
     const int margins = contentsMargins().left() + contentsMargins().right() + 2 * margin();
-    return {fontMetrics().horizontalAdvance(m_text) + margins, QLabel::minimumSizeHint().height()};
+    return fontMetrics().horizontalAdvance(text) + margins;
+}
+
+QSize ElidedLabel::sizeHint() const {
+    return {wholeWidth(m_text), QLabel::minimumSizeHint().height()};
 }
 
 QSize ElidedLabel::minimumSizeHint() const {

@@ -15,6 +15,7 @@ public:
 
     void setFullText(const QString& text);
     QString fullText() const { return m_text; }
+    int wholeWidth(const QString& text) const;  // the width that shows `text` unelided
     QSize minimumSizeHint() const override;
     QSize sizeHint() const override;
 

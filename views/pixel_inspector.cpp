@@ -49,18 +49,17 @@ QString wrapped(const QString& text, const QFontMetrics& metrics, int width) {
     return lines.join(QLatin1Char('\n'));
 }
 
-// The narrowest width, from `least` on, in which no line of `text` wraps onto more than
-// `most` lines.
-int widthForLines(const QString& text, const QFontMetrics& metrics, int least, int most) {
-    int widest = least;
-    for (const QString& line : text.split(QLatin1Char('\n')))
-        widest = std::max(widest, metrics.horizontalAdvance(line));
+// The narrowest width in which no line of `text` wraps onto more than `most` lines.
+int widthForLines(const QString& text, const QFontMetrics& metrics, int most) {
+    const QStringList lines = text.split(QLatin1Char('\n'));
+    int widest = 0;
+    for (const QString& line : lines) widest = std::max(widest, metrics.horizontalAdvance(line));
     const auto fits = [&](int width) {
-        for (const QString& line : text.split(QLatin1Char('\n')))
-            if (wrapped(line, metrics, width).count(QLatin1Char('\n')) >= most) return false;
-        return true;
+        return std::all_of(lines.begin(), lines.end(), [&](const QString& line) {
+            return wrapped(line, metrics, width).count(QLatin1Char('\n')) < most;
+        });
     };
-    int low = least, high = widest;  // fits(high) holds: every line on one line
+    int low = 0, high = widest;  // fits(high) holds: every line on one line
     while (low < high) {
         const int mid = (low + high) / 2;
         if (fits(mid))
@@ -141,7 +140,7 @@ protected:
         const double left = metrics.horizontalAdvance(QStringLiteral("G")) + 10;
         const double right = width() - metrics.horizontalAdvance(QStringLiteral("000.0")) - 10;
         const double unit = (right - left) / (double(most) * 1.05);
-        const double barHeight = line * 1.2;
+        const double barHeight = barHeightOf(line);
         const double top = line + 6;
         const std::array<QColor, 3> channelColours{QColor(255, 110, 110), QColor(110, 220, 110),
                                                    QColor(120, 160, 255)};
@@ -226,7 +225,7 @@ private:
         std::vector<Value> values;
         const double line = metrics.height();
         for (int c = 0; c < 3; ++c) {
-            const double y = top + c * rowHeight(line) + line * 1.2 + 1 + metrics.ascent();
+            const double y = top + c * rowHeight(line) + barHeightOf(line) + 1 + metrics.ascent();
             double x = left;
             double labelX = left;  // where the next term's value may start
             for (const Segment& s : m_segments) {
@@ -246,7 +245,8 @@ private:
     }
 
     // A channel's bar, the line of its terms' values below it, and the gap to the next.
-    static double rowHeight(double line) { return line * 1.2 + 1 + line + 8; }
+    static double barHeightOf(double line) { return line * 1.2; }
+    static double rowHeight(double line) { return barHeightOf(line) + 1 + line + 8; }
 
     // Each legend entry's top left: after the one before, or at the start of a new line.
     std::vector<std::pair<const Segment*, QPointF>> legendPlaces(const QFontMetrics& metrics,
@@ -551,7 +551,7 @@ void PixelInspector::widenHistory() {
     const QString key = m_formula->font().toString() + QLatin1Char('\n') + m_formula->text();
     if (key != m_formulaWidthKey) {  // worked out again only for another formula or font
         m_formulaWidthKey = key;
-        m_formulaWidth = widthForLines(m_formula->text(), m_formula->fontMetrics(), 0, 3);
+        m_formulaWidth = widthForLines(m_formula->text(), m_formula->fontMetrics(), 3);
     }
     const int lighting = std::max(least, m_formulaWidth) + m_grid->horizontalSpacing() +
                          margins.left() + margins.right();

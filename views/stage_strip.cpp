@@ -215,9 +215,7 @@ void StageStrip::fitTexts() {
     // its whole width beside them.
     int note = m_note->minimumSizeHint().width();
     if (m_inspection->granularity() != rl::StepGranularity::Stage)
-        note = std::max(note, m_note->fontMetrics().horizontalAdvance(noteText()) +
-                                  m_note->contentsMargins().left() +
-                                  m_note->contentsMargins().right() + 2 * m_note->margin());
+        note = std::max(note, m_note->wholeWidth(noteText()));
     const bool whole = width() >= textsWidth(m_longTexts) + note;
     for (std::size_t i = 0; i < m_buttons.size(); ++i)
         m_buttons[i]->setText(whole ? m_longTexts[i] : m_shortTexts[i]);
